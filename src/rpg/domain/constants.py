@@ -1,0 +1,226 @@
+"""Every number that defines the block domain, in one place.
+
+Units are SI throughout: metres (m), radians (rad), seconds (s), kilograms (kg).
+
+World frame (used by every relation and reading order in the project):
+    The robot stands at the origin looking along +x.  +z is up.
+    "left"  = +y,  "right"  = -y,
+    "in front of" = closer to the robot (smaller x), "behind" = larger x.
+    "From left to right" runs from +y to -y.
+    The default camera is fixed behind and above the robot looking along +x, so the
+    left of every snapshot is +y.
+
+Sources: "paper" is ``shared/paper/roboplayground.tex``; the section is named at each
+constant.  Values marked "project" are this project's own choices, documented here.
+"""
+
+from __future__ import annotations
+
+import math
+
+# ---------------------------------------------------------------------------
+# Table and workspace (paper, appendix "Simulation Configuration")
+# ---------------------------------------------------------------------------
+TABLE_TOP_Z: float = 0.95
+"""Height of the table surface above the floor, m (paper, Simulation Configuration)."""
+
+WORKSPACE_X: tuple[float, float] = (0.40, 0.70)
+"""Workspace bounds along x, m (paper, Simulation Configuration)."""
+
+WORKSPACE_Y: tuple[float, float] = (-0.25, 0.25)
+"""Workspace bounds along y, m (paper, Simulation Configuration)."""
+
+WORKSPACE_CENTER: tuple[float, float] = (
+    0.5 * (WORKSPACE_X[0] + WORKSPACE_X[1]),
+    0.5 * (WORKSPACE_Y[0] + WORKSPACE_Y[1]),
+)
+"""Centre of the workspace in the table plane, m."""
+
+TABLE_HALF_EXTENT: tuple[float, float, float] = (0.40, 0.60, 0.025)
+"""Half sizes of the table box (x, y, z), m (project).  Larger than the workspace."""
+
+TABLE_CENTER_XY: tuple[float, float] = (0.55, 0.0)
+"""Centre of the table box in the plane, m (project)."""
+
+BOUNDS_MARGIN: float = 0.005
+"""Slack on the workspace bounds for an object's centre in the bounds gate, m (project)."""
+
+# ---------------------------------------------------------------------------
+# Assets (project)
+# ---------------------------------------------------------------------------
+CUBE_EDGE: float = 0.04
+"""Default cube edge length, m (4 cm)."""
+
+CUBE_MASS: float = 0.05
+"""Mass of one cube, kg."""
+
+CUBE_FRICTION: tuple[float, float, float] = (1.0, 0.005, 0.0001)
+"""Sliding, torsional and rolling friction of cubes and table."""
+
+PATCH_SIZE: tuple[float, float] = (0.08, 0.08)
+"""Full extents (x, y) of a square goal patch, m."""
+
+LONG_PATCH_SIZE: tuple[float, float] = (0.08, 0.20)
+"""Full extents (x, y) of a "long" goal patch, m."""
+
+PATCH_THICKNESS: float = 0.001
+"""Full thickness of a goal patch, m.  Patches are visual only and never collide."""
+
+GLYPH_TEXTURE_PX: int = 128
+"""Side of one face image of a semantic cube's texture, pixels."""
+
+MAX_DISTINCT_LETTERS: int = 26
+"""Distinct letter labels available (A-Z) (paper, Task Proposal Feasibility Reasoning)."""
+
+MAX_DISTINCT_DIGITS: int = 10
+"""Distinct digit labels available (0-9) (paper, Task Proposal Feasibility Reasoning)."""
+
+MAX_OBJECTS: int = 64
+"""Most cubes one task may hold (project)."""
+
+MAX_TOWER_HEIGHT: float = 0.40
+"""Highest a structure may rise above the table, m: the reach of a tabletop arm (project)."""
+
+# ---------------------------------------------------------------------------
+# Physics, fixed globally and not per task (paper, Simulation Configuration)
+# ---------------------------------------------------------------------------
+TIMESTEP: float = 0.002
+"""Simulation time step, s."""
+
+IMPRATIO: float = 10.0
+"""Frictional-to-normal constraint impedance ratio (elliptic cones)."""
+
+GRAVITY: tuple[float, float, float] = (0.0, 0.0, -9.81)
+"""Gravity, m/s^2."""
+
+CONTACT_SOLREF: tuple[float, float] = (0.005, 1.0)
+"""Cube and table contact solref (time constant s, damping ratio).
+
+Measured to keep a 27-cube block within 0.1 mm over 5000 steps (project).
+"""
+
+CONTACT_SOLIMP: tuple[float, float, float, float, float] = (0.95, 0.99, 0.001, 0.5, 2.0)
+"""Cube and table contact solimp (dmin, dmax, width m, midpoint, power)."""
+
+# ---------------------------------------------------------------------------
+# Validation (paper, appendix "Validation Parameters and Stability Checks")
+# ---------------------------------------------------------------------------
+SETTLE_STEPS: int = 50
+"""Zero-action steps to settle a goal state before checking G (paper)."""
+
+STABILITY_STEPS: int = 50
+"""Further zero-action steps over which the goal state must stay stable (paper)."""
+
+SMOKE_STEPS: int = 10
+"""Zero-action steps of the smoke gate (project)."""
+
+MAX_DRIFT: float = 0.01
+"""Largest allowed displacement of an object during the stability window, m (paper)."""
+
+MAX_DROP: float = 0.02
+"""Largest allowed fall of an object (toppling) during the stability window, m (paper)."""
+
+NONTRIVIAL_SEEDS: int = 5
+"""Seeds on which the non-trivial gate resets the task (project)."""
+
+NONTRIVIAL_MIN_FALSE: int = 4
+"""Of NONTRIVIAL_SEEDS resets, at least this many must have G false (project)."""
+
+# ---------------------------------------------------------------------------
+# Initial-state distribution rho_0 (project)
+# ---------------------------------------------------------------------------
+MIN_SEPARATION: float = 0.07
+"""Default minimum centre distance between sampled objects, m."""
+
+DEFAULT_YAW_RANGE: float = math.pi / 4
+"""Default half-range of sampled yaw, rad (cubes are symmetric every pi/2)."""
+
+SPAWN_CLEARANCE: float = 0.0005
+"""Gap between a spawned cube and what it rests on, m."""
+
+MAX_SAMPLING_TRIES: int = 2000
+"""Rejection-sampling attempts before a layout is declared infeasible."""
+
+# ---------------------------------------------------------------------------
+# Predicate tolerances (project)
+# ---------------------------------------------------------------------------
+ON_XY_TOL: float = 0.5 * CUBE_EDGE
+"""`on(a, b)`: largest horizontal offset of a's centre from b's centre, m."""
+
+ON_Z_TOL: float = 0.008
+"""`on(a, b)`: tolerance on the vertical gap (a.z - b.z - contact height), m."""
+
+TABLE_Z_TOL: float = 0.008
+"""`on_table(a)`: tolerance on a's centre height above the table, m."""
+
+RELATION_MIN_GAP: float = 0.02
+"""`left_of` etc.: least separation along the relation's axis, m."""
+
+RELATION_MAX_OFF_AXIS: float = 0.10
+"""`left_of` etc.: largest offset across the relation's axis, m."""
+
+NEXT_TO_MAX_DIST: float = 0.08
+"""`next_to(a, b)`: largest centre distance in the plane, m."""
+
+LINE_TOL: float = 0.015
+"""`in_line`, `between`: largest offset of a centre from the fitted line, m."""
+
+LINE_MAX_GAP: float = 0.12
+"""`in_line`: largest centre spacing between neighbours in the line, m."""
+
+CIRCLE_RADIUS_TOL: float = 0.015
+"""`in_circle`: largest deviation of a centre from the mean radius, m."""
+
+CIRCLE_MIN_RADIUS: float = 0.04
+"""`in_circle`: smallest mean radius that counts as a circle, m."""
+
+GRID_TOL: float = 0.012
+"""`grid`, `pyramid`: largest offset of a centre from its lattice site, m."""
+
+PILE_RADIUS: float = 0.09
+"""`piles`: largest distance of a member from its pile's centroid, m."""
+
+PILE_SEPARATION: float = 0.10
+"""`piles`: least distance between the centroids of two piles, m."""
+
+PATCH_XY_MARGIN: float = 0.005
+"""`on_patch`: a centre may overhang the patch edge by this much, m."""
+
+UPRIGHT_COS: float = 0.97
+"""`upright(a)`: least cosine between the cube's local +z and world +z."""
+
+# ---------------------------------------------------------------------------
+# Visibility and readability (paper, appendix "Geometric Visibility and Face Readability")
+# ---------------------------------------------------------------------------
+VISIBILITY_SAMPLE_FRACTION: float = 0.8
+"""Face sample points sit at this fraction of the half extent from the centre (paper)."""
+
+VISIBILITY_MIN_RAYS: int = 3
+"""A face is visible if at least this many of its 5 rays are unobstructed (paper)."""
+
+READABLE_NORMAL_COS: float = 0.97
+"""Least cosine between a face normal and the expected viewing direction (~14 deg) (paper)."""
+
+READABLE_UP_COS: float = 0.94
+"""Least cosine between a glyph's up vector and the expected up (~20 deg) (paper)."""
+
+RAY_HIT_TOL: float = 0.002
+"""A ray reaches its sample point if it first hits the face within this distance, m."""
+
+# ---------------------------------------------------------------------------
+# Camera and snapshots (project)
+# ---------------------------------------------------------------------------
+CAMERA_NAME: str = "default"
+"""Name of the fixed default camera."""
+
+CAMERA_POS: tuple[float, float, float] = (0.05, 0.0, 1.42)
+"""Default camera position, m: behind and above the robot."""
+
+CAMERA_TARGET: tuple[float, float, float] = (0.56, 0.0, TABLE_TOP_Z)
+"""Point the default camera looks at, m."""
+
+CAMERA_FOVY: float = 45.0
+"""Vertical field of view of the default camera, degrees."""
+
+SNAPSHOT_SIZE: tuple[int, int] = (640, 480)
+"""Snapshot width and height, pixels."""

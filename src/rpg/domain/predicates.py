@@ -1,0 +1,1251 @@
+"""Goal predicates: the vocabulary success predicates G are written in.
+
+Each predicate is a small immutable object.  ``evaluate(state)`` returns a
+:class:`PredicateResult` that says whether it holds and explains why: which objects,
+the measured values and the tolerances (in the spirit of BDDL's satisfied / unsatisfied
+diagnostics).  Predicates are evaluated on a :class:`~rpg.domain.state.WorldState`, so
+they can be tested on constructed states.  All tolerances are named constants in
+:mod:`rpg.domain.constants`.
+
+Frame: see :mod:`rpg.domain.constants` ("left" = +y, "in front of" = smaller x).
+
+Indistinguishable objects (same kind, colour and labels) may be swapped by a policy
+without changing what the scene means, so :func:`evaluate_goal` accepts any assignment
+of interchangeable objects that satisfies the goal.
+
+Every predicate serialises to a plain dict (``to_dict``) and back (:func:`from_dict`), and
+its ``repr`` is the Python expression that builds it (used by code generation).
+"""
+
+from __future__ import annotations
+
+import ast
+import itertools
+import math
+import re
+from dataclasses import MISSING, dataclass, field, fields, replace
+from typing import Any, ClassVar
+
+import numpy as np
+
+from rpg.domain import constants as C
+from rpg.domain.palette import GRADIENT_ORDER
+from rpg.domain.state import DIRECTIONS, ObjectState, WorldState
+
+# ---------------------------------------------------------------------------
+# Results
+# ---------------------------------------------------------------------------
+
+
+def _clean(value: Any) -> Any:
+    if isinstance(value, float | np.floating):
+        v = float(value)
+        return round(v, 6) if math.isfinite(v) else None
+    if isinstance(value, np.ndarray):
+        return [_clean(v) for v in value.tolist()]
+    if isinstance(value, dict):
+        return {str(k): _clean(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [_clean(v) for v in value]
+    if isinstance(value, np.integer | np.bool_):
+        return value.item()
+    return value
+
+
+@dataclass
+class PredicateResult:
+    """Outcome of evaluating one predicate.
+
+    Attributes:
+        name: predicate name, e.g. ``"on"``.
+        args: the predicate's arguments (object names, parameters).
+        satisfied: whether it holds.
+        measured: the measured values behind the verdict (m, rad, cosines).
+        tolerance: the thresholds it was judged against.
+        reason: one line explaining the verdict.
+        children: results of sub-predicates (for composites).
+    """
+
+    name: str
+    args: dict
+    satisfied: bool
+    measured: dict = field(default_factory=dict)
+    tolerance: dict = field(default_factory=dict)
+    reason: str = ""
+    children: list[PredicateResult] = field(default_factory=list)
+
+    def __bool__(self) -> bool:
+        return self.satisfied
+
+    def leaves(self) -> list[PredicateResult]:
+        """All leaf results (composites flattened)."""
+        if not self.children:
+            return [self]
+        return [leaf for c in self.children for leaf in c.leaves()]
+
+    @property
+    def satisfied_list(self) -> list[PredicateResult]:
+        return [r for r in self.leaves() if r.satisfied]
+
+    @property
+    def unsatisfied_list(self) -> list[PredicateResult]:
+        return [r for r in self.leaves() if not r.satisfied]
+
+    def to_json(self) -> dict:
+        doc = {
+            "name": self.name,
+            "args": _clean(self.args),
+            "satisfied": bool(self.satisfied),
+            "measured": _clean(self.measured),
+            "tolerance": _clean(self.tolerance),
+            "reason": self.reason,
+        }
+        if self.children:
+            doc["children"] = [c.to_json() for c in self.children]
+        return doc
+
+
+# ---------------------------------------------------------------------------
+# Base classes and registry
+# ---------------------------------------------------------------------------
+
+PREDICATES: dict[str, type[Predicate]] = {}
+"""Predicate name -> class."""
+
+
+@dataclass(frozen=True)
+class Predicate:
+    """Base of all predicates.
+
+    Subclasses set ``name`` and implement ``_evaluate``.  Fields named in ``object_fields``
+    hold one object name; fields in ``list_fields`` hold a list of object names.
+    """
+
+    name: ClassVar[str] = "predicate"
+    object_fields: ClassVar[tuple[str, ...]] = ()
+    list_fields: ClassVar[tuple[str, ...]] = ()
+    semantic: ClassVar[bool] = False
+
+    def __post_init__(self) -> None:
+        for f in self.list_fields:
+            object.__setattr__(self, f, tuple(getattr(self, f)))
+        if hasattr(self, "groups"):
+            object.__setattr__(self, "groups", tuple(tuple(g) for g in self.groups))
+        if hasattr(self, "events"):
+            object.__setattr__(self, "events", tuple(self.events))
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        if "name" in cls.__dict__:
+            PREDICATES[cls.name] = cls
+
+    # -- evaluation ----------------------------------------------------------
+    def evaluate(self, state: WorldState) -> PredicateResult:
+        """Evaluate on a world state.
+
+        Raises:
+            KeyError: the predicate names an object the state lacks (message lists them).
+        """
+        return self._evaluate(state)
+
+    def _evaluate(self, state: WorldState) -> PredicateResult:
+        raise NotImplementedError
+
+    def _result(self, satisfied: bool, reason: str, measured=None, tolerance=None, children=None):
+        return PredicateResult(
+            self.name, self.args(), bool(satisfied), measured or {}, tolerance or {}, reason,
+            children or [],
+        )
+
+    # -- structure -----------------------------------------------------------
+    def args(self) -> dict:
+        return {f.name: getattr(self, f.name) for f in fields(self)}
+
+    def object_names(self) -> list[str]:
+        """Every object the predicate mentions, in order of appearance."""
+        names: list[str] = []
+        for f in self.object_fields:
+            names.append(getattr(self, f))
+        for f in self.list_fields:
+            names.extend(getattr(self, f))
+        for child in self.children():
+            names.extend(child.object_names())
+        return names
+
+    def children(self) -> list[Predicate]:
+        return []
+
+    def support_edges(self) -> list[tuple[str, str]]:
+        """(upper, lower) support relations this predicate asserts; ``"table"`` is ground."""
+        return [e for c in self.children() for e in c.support_edges()]
+
+    def semantic_faces(self, state: WorldState) -> list[tuple[str, str]]:
+        """(object, world direction) of faces whose labels this predicate reads."""
+        return [f for c in self.children() for f in c.semantic_faces(state)]
+
+    def rename(self, mapping: dict[str, str]) -> Predicate:
+        """A copy with object names substituted through ``mapping``."""
+        changes: dict[str, Any] = {}
+        for f in self.object_fields:
+            v = getattr(self, f)
+            changes[f] = mapping.get(v, v)
+        for f in self.list_fields:
+            changes[f] = tuple(mapping.get(v, v) for v in getattr(self, f))
+        return replace(self, **changes)
+
+    def to_dict(self) -> dict:
+        """Plain-data form: ``{"predicate": name, <field>: value, ...}``."""
+        doc: dict[str, Any] = {"predicate": self.name}
+        for f in fields(self):
+            v = getattr(self, f.name)
+            if isinstance(v, tuple) and v and isinstance(v[0], Predicate):
+                doc[f.name] = [c.to_dict() for c in v]
+            elif isinstance(v, Predicate):
+                doc[f.name] = v.to_dict()
+            elif isinstance(v, tuple):
+                doc[f.name] = [list(x) if isinstance(x, tuple) else x for x in v]
+            else:
+                doc[f.name] = v
+        return doc
+
+    def __repr__(self) -> str:
+        parts = []
+        for f in fields(self):
+            v = getattr(self, f.name)
+            if f.default is not MISSING and v == f.default:
+                continue
+            parts.append(f"{f.name}={_py(v)}")
+        return f"{type(self).__name__}({', '.join(parts)})"
+
+    def describe(self) -> str:
+        """Short natural-language description (used for goal summaries)."""
+        return repr(self)
+
+
+def _py(value: Any) -> str:
+    if isinstance(value, tuple):
+        inner = ", ".join(_py(v) for v in value)
+        return f"[{inner}]"
+    if isinstance(value, float):
+        return repr(round(value, 6))
+    return repr(value)
+
+
+def from_dict(doc: dict) -> Predicate:
+    """Build a predicate from its ``to_dict`` form.
+
+    Raises:
+        ValueError: unknown predicate name or bad arguments (message lists the known ones).
+    """
+    if not isinstance(doc, dict) or "predicate" not in doc:
+        raise ValueError("a predicate must be a mapping with a 'predicate' key")
+    kind = doc["predicate"]
+    cls = PREDICATES.get(kind)
+    if cls is None:
+        raise ValueError(f"unknown predicate {kind!r}; known: {', '.join(sorted(PREDICATES))}")
+    kwargs = {}
+    names = {f.name for f in fields(cls)} | ({"children"} if cls is And else set())
+    for key, value in doc.items():
+        if key == "predicate":
+            continue
+        if key not in names:
+            raise ValueError(f"predicate {kind!r} has no argument {key!r}")
+        if key in ("children", "events"):
+            kwargs[key] = tuple(from_dict(v) for v in value)
+        elif key == "child":
+            kwargs[key] = from_dict(value)
+        elif key == "groups":
+            kwargs[key] = tuple(tuple(g) for g in value)
+        elif isinstance(value, list):
+            kwargs[key] = tuple(value)
+        else:
+            kwargs[key] = value
+    try:
+        return cls(**kwargs)
+    except TypeError as exc:
+        raise ValueError(f"bad arguments for predicate {kind!r}: {exc}") from None
+
+
+def _planar(o: ObjectState) -> np.ndarray:
+    return np.asarray(o.pos[:2], float)
+
+
+def _signature(o: ObjectState) -> tuple:
+    return (o.kind, o.color, tuple(sorted((k, v or "") for k, v in o.face_labels.items())))
+
+
+def _table_gap(o: ObjectState) -> float:
+    return float(o.pos[2] - C.TABLE_TOP_Z - o.half_height)
+
+
+# ---------------------------------------------------------------------------
+# Support and placement
+# ---------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, repr=False)
+class On(Predicate):
+    """``a`` rests on top of ``b``: centred within ON_XY_TOL and touching within ON_Z_TOL."""
+
+    a: str
+    b: str
+    name: ClassVar[str] = "on"
+    object_fields: ClassVar[tuple[str, ...]] = ("a", "b")
+
+    def _evaluate(self, state):
+        a, b = state[self.a], state[self.b]
+        dxy = float(np.linalg.norm(_planar(a) - _planar(b)))
+        gap = float(a.pos[2] - b.pos[2] - a.half_height - b.half_height)
+        ok = dxy <= C.ON_XY_TOL and abs(gap) <= C.ON_Z_TOL
+        reason = f"{self.a} {'is' if ok else 'is not'} on {self.b} (offset {dxy * 100:.1f} cm, gap {gap * 1000:.1f} mm)"
+        return self._result(ok, reason, {"xy_offset": dxy, "z_gap": gap},
+                            {"xy_offset": C.ON_XY_TOL, "z_gap": C.ON_Z_TOL})
+
+    def support_edges(self):
+        return [(self.a, self.b)]
+
+    def describe(self):
+        return f"{self.a} on {self.b}"
+
+
+@dataclass(frozen=True, repr=False)
+class OnTable(Predicate):
+    """``a`` rests directly on the table surface."""
+
+    a: str
+    name: ClassVar[str] = "on_table"
+    object_fields: ClassVar[tuple[str, ...]] = ("a",)
+
+    def _evaluate(self, state):
+        a = state[self.a]
+        gap = _table_gap(a)
+        ok = abs(gap) <= C.TABLE_Z_TOL
+        return self._result(ok, f"{self.a} {'rests' if ok else 'does not rest'} on the table (gap {gap * 1000:.1f} mm)",
+                            {"z_gap": gap}, {"z_gap": C.TABLE_Z_TOL})
+
+    def support_edges(self):
+        return [(self.a, "table")]
+
+    def describe(self):
+        return f"{self.a} on the table"
+
+
+@dataclass(frozen=True, repr=False)
+class OnPatch(Predicate):
+    """``a`` rests on the table with its centre over goal patch ``patch``."""
+
+    a: str
+    patch: str
+    name: ClassVar[str] = "on_patch"
+    object_fields: ClassVar[tuple[str, ...]] = ("a", "patch")
+
+    def _evaluate(self, state):
+        a, p = state[self.a], state[self.patch]
+        local = p.rotation.T @ (np.asarray(a.pos) - np.asarray(p.pos))
+        half = np.asarray(p.size[:2]) / 2 + C.PATCH_XY_MARGIN
+        over = np.abs(local[:2]) - half
+        gap = _table_gap(a)
+        inside = bool(np.all(over <= 0))
+        ok = inside and abs(gap) <= C.TABLE_Z_TOL
+        why = "inside" if inside else f"outside by {max(over) * 100:.1f} cm"
+        return self._result(ok, f"{self.a} {'is' if ok else 'is not'} on {self.patch} ({why}, table gap {gap * 1000:.1f} mm)",
+                            {"overhang": float(max(over)), "z_gap": gap},
+                            {"overhang": 0.0, "z_gap": C.TABLE_Z_TOL, "margin": C.PATCH_XY_MARGIN})
+
+    def support_edges(self):
+        return [(self.a, "table")]
+
+    def describe(self):
+        return f"{self.a} on {self.patch}"
+
+
+@dataclass(frozen=True, repr=False)
+class Upright(Predicate):
+    """The cube's local +z points up (cosine >= UPRIGHT_COS)."""
+
+    a: str
+    name: ClassVar[str] = "upright"
+    object_fields: ClassVar[tuple[str, ...]] = ("a",)
+
+    def _evaluate(self, state):
+        cos = float(state[self.a].rotation[2, 2])
+        ok = cos >= C.UPRIGHT_COS
+        return self._result(ok, f"{self.a} {'is' if ok else 'is not'} upright (cos {cos:.3f})",
+                            {"cos": cos}, {"cos": C.UPRIGHT_COS})
+
+    def describe(self):
+        return f"{self.a} upright"
+
+
+# ---------------------------------------------------------------------------
+# Pairwise spatial relations
+# ---------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, repr=False)
+class _Relation(Predicate):
+    a: str
+    b: str
+    object_fields: ClassVar[tuple[str, ...]] = ("a", "b")
+    axis: ClassVar[int] = 1
+    sign: ClassVar[float] = 1.0
+    words: ClassVar[str] = ""
+
+    def _evaluate(self, state):
+        a, b = state[self.a], state[self.b]
+        d = np.asarray(a.pos) - np.asarray(b.pos)
+        along = float(self.sign * d[self.axis])
+        across = float(abs(d[1 - self.axis]))
+        ok = along >= C.RELATION_MIN_GAP and across <= C.RELATION_MAX_OFF_AXIS
+        return self._result(
+            ok,
+            f"{self.a} {'is' if ok else 'is not'} {self.words} {self.b} (along {along * 100:.1f} cm, across {across * 100:.1f} cm)",
+            {"along": along, "across": across},
+            {"min_along": C.RELATION_MIN_GAP, "max_across": C.RELATION_MAX_OFF_AXIS},
+        )
+
+    def describe(self):
+        return f"{self.a} {self.words} {self.b}"
+
+
+@dataclass(frozen=True, repr=False)
+class LeftOf(_Relation):
+    """``a`` is left of ``b`` (larger y), roughly level with it in x."""
+
+    name: ClassVar[str] = "left_of"
+    axis: ClassVar[int] = 1
+    sign: ClassVar[float] = 1.0
+    words: ClassVar[str] = "left of"
+
+
+@dataclass(frozen=True, repr=False)
+class RightOf(_Relation):
+    """``a`` is right of ``b`` (smaller y)."""
+
+    name: ClassVar[str] = "right_of"
+    axis: ClassVar[int] = 1
+    sign: ClassVar[float] = -1.0
+    words: ClassVar[str] = "right of"
+
+
+@dataclass(frozen=True, repr=False)
+class InFrontOf(_Relation):
+    """``a`` is in front of ``b``: closer to the robot (smaller x)."""
+
+    name: ClassVar[str] = "in_front_of"
+    axis: ClassVar[int] = 0
+    sign: ClassVar[float] = -1.0
+    words: ClassVar[str] = "in front of"
+
+
+@dataclass(frozen=True, repr=False)
+class Behind(_Relation):
+    """``a`` is behind ``b``: farther from the robot (larger x)."""
+
+    name: ClassVar[str] = "behind"
+    axis: ClassVar[int] = 0
+    sign: ClassVar[float] = 1.0
+    words: ClassVar[str] = "behind"
+
+
+@dataclass(frozen=True, repr=False)
+class NextTo(Predicate):
+    """``a`` is beside ``b`` at the same level, centres within NEXT_TO_MAX_DIST."""
+
+    a: str
+    b: str
+    name: ClassVar[str] = "next_to"
+    object_fields: ClassVar[tuple[str, ...]] = ("a", "b")
+
+    def _evaluate(self, state):
+        a, b = state[self.a], state[self.b]
+        dist = float(np.linalg.norm(_planar(a) - _planar(b)))
+        dz = float(abs(a.pos[2] - b.pos[2]))
+        ok = dist <= C.NEXT_TO_MAX_DIST and dz <= C.ON_Z_TOL
+        return self._result(ok, f"{self.a} {'is' if ok else 'is not'} next to {self.b} ({dist * 100:.1f} cm apart)",
+                            {"distance": dist, "dz": dz}, {"distance": C.NEXT_TO_MAX_DIST, "dz": C.ON_Z_TOL})
+
+    def describe(self):
+        return f"{self.a} next to {self.b}"
+
+
+@dataclass(frozen=True, repr=False)
+class Between(Predicate):
+    """``a`` lies between ``b`` and ``c``: on the segment b-c (within LINE_TOL*2), not at its ends."""
+
+    a: str
+    b: str
+    c: str
+    name: ClassVar[str] = "between"
+    object_fields: ClassVar[tuple[str, ...]] = ("a", "b", "c")
+
+    def _evaluate(self, state):
+        a, b, c = (_planar(state[n]) for n in (self.a, self.b, self.c))
+        seg = c - b
+        length = float(np.linalg.norm(seg))
+        if length < 1e-9:
+            return self._result(False, f"{self.b} and {self.c} coincide", {"length": length})
+        t = float((a - b) @ seg / length**2)
+        off = float(abs(np.cross(seg, a - b)) / length)
+        ok = 0.0 < t < 1.0 and off <= 2 * C.LINE_TOL
+        return self._result(ok, f"{self.a} {'is' if ok else 'is not'} between {self.b} and {self.c} (t={t:.2f}, off {off * 100:.1f} cm)",
+                            {"t": t, "off_line": off}, {"t": [0.0, 1.0], "off_line": 2 * C.LINE_TOL})
+
+    def describe(self):
+        return f"{self.a} between {self.b} and {self.c}"
+
+
+# ---------------------------------------------------------------------------
+# Structures
+# ---------------------------------------------------------------------------
+
+ORDER_KEYS: dict[str, tuple[int, float]] = {
+    "left_to_right": (1, -1.0),
+    "right_to_left": (1, 1.0),
+    "front_to_back": (0, 1.0),
+    "back_to_front": (0, -1.0),
+    "bottom_to_top": (2, 1.0),
+    "top_to_bottom": (2, -1.0),
+}
+"""Reading direction -> (world axis, sign): objects are ordered by sign * coordinate."""
+
+
+def order_objects(objs: list[ObjectState], direction: str) -> list[ObjectState]:
+    """Objects in reading order along a direction.
+
+    ``"reading"`` orders structures layer by layer from the bottom, each layer front to
+    back, each row left to right.
+
+    Raises:
+        ValueError: unknown direction.
+    """
+    if direction == "reading":
+        edge = C.CUBE_EDGE
+        return sorted(objs, key=lambda o: (round((o.pos[2] - C.TABLE_TOP_Z) / edge),
+                                           round(o.pos[0] / edge * 2), -o.pos[1]))
+    if direction not in ORDER_KEYS:
+        raise ValueError(f"unknown direction {direction!r}; use one of {', '.join(ORDER_KEYS)} or 'reading'")
+    axis, sign = ORDER_KEYS[direction]
+    return sorted(objs, key=lambda o: sign * o.pos[axis])
+
+
+@dataclass(frozen=True, repr=False)
+class Stack(Predicate):
+    """A vertical stack, ``objects`` listed bottom to top; the bottom rests on the table.
+
+    Interchangeable objects (same kind, colour, labels) may trade places.
+    """
+
+    objects: tuple[str, ...]
+    name: ClassVar[str] = "stack"
+    list_fields: ClassVar[tuple[str, ...]] = ("objects",)
+
+    def _evaluate(self, state):
+        listed = [state[n] for n in self.objects]
+        actual = sorted(listed, key=lambda o: o.pos[2])
+        children = [OnTable(actual[0].name).evaluate(state)]
+        for lower, upper in itertools.pairwise(actual):
+            children.append(On(upper.name, lower.name).evaluate(state))
+        order_ok = [_signature(x) for x in actual] == [_signature(x) for x in listed]
+        children.append(PredicateResult(
+            "stack_order", {"expected": list(self.objects)}, order_ok,
+            {"bottom_to_top": [o.name for o in actual]}, {},
+            "order matches" if order_ok else
+            f"order bottom to top is {', '.join(o.name for o in actual)}, expected {', '.join(self.objects)}"))
+        ok = all(c.satisfied for c in children)
+        return self._result(ok, f"stack {'/'.join(self.objects)} {'holds' if ok else 'fails'}", children=children)
+
+    def support_edges(self):
+        edges = [(self.objects[0], "table")]
+        edges += [(u, lo) for lo, u in itertools.pairwise(self.objects)]
+        return edges
+
+    def describe(self):
+        return "stack (bottom to top) " + ", ".join(self.objects)
+
+
+@dataclass(frozen=True, repr=False)
+class InLine(Predicate):
+    """``objects`` lie in one straight line on the table.
+
+    Args:
+        objects: the objects, listed in ``order`` when one is given.
+        axis: ``"y"`` for a left-right line, ``"x"`` for a front-back line.
+        order: optional direction (``"left_to_right"``...) in which the listed objects
+            must appear; interchangeable objects may trade places.
+    """
+
+    objects: tuple[str, ...]
+    axis: str = "y"
+    order: str | None = None
+    name: ClassVar[str] = "in_line"
+    list_fields: ClassVar[tuple[str, ...]] = ("objects",)
+
+    def _evaluate(self, state):
+        objs = [state[n] for n in self.objects]
+        along_i = 1 if self.axis == "y" else 0
+        across = np.array([o.pos[1 - along_i] for o in objs])
+        dev = float(np.max(np.abs(across - across.mean())))
+        gaps = np.array([abs(_table_gap(o)) for o in objs])
+        coords = np.sort(np.array([o.pos[along_i] for o in objs]))
+        spacing = np.diff(coords)
+        min_sp = float(spacing.min()) if len(spacing) else 0.0
+        max_sp = float(spacing.max()) if len(spacing) else 0.0
+        ok = dev <= C.LINE_TOL and gaps.max() <= C.TABLE_Z_TOL and min_sp >= 0.9 * C.CUBE_EDGE and max_sp <= C.LINE_MAX_GAP
+        measured = {"max_off_line": dev, "max_table_gap": float(gaps.max()), "min_spacing": min_sp, "max_spacing": max_sp}
+        reason = "objects in a line" if ok else "objects not in a straight line on the table"
+        if ok and self.order:
+            got = order_objects(objs, self.order)
+            order_ok = [_signature(o) for o in got] == [_signature(o) for o in objs]
+            measured["order"] = [o.name for o in got]
+            if not order_ok:
+                ok = False
+                reason = f"{self.order.replace('_', ' ')} order is {', '.join(o.name for o in got)}"
+        return self._result(ok, reason, measured,
+                            {"max_off_line": C.LINE_TOL, "max_table_gap": C.TABLE_Z_TOL,
+                             "min_spacing": 0.9 * C.CUBE_EDGE, "max_spacing": C.LINE_MAX_GAP})
+
+    def support_edges(self):
+        return [(n, "table") for n in self.objects]
+
+    def describe(self):
+        how = f" {self.order.replace('_', ' ')}" if self.order else ""
+        return f"line{how} of " + ", ".join(self.objects)
+
+
+@dataclass(frozen=True, repr=False)
+class InCircle(Predicate):
+    """``objects`` (3 or more) stand on the table evenly around a circle."""
+
+    objects: tuple[str, ...]
+    name: ClassVar[str] = "in_circle"
+    list_fields: ClassVar[tuple[str, ...]] = ("objects",)
+
+    def _evaluate(self, state):
+        objs = [state[n] for n in self.objects]
+        if len(objs) < 3:
+            return self._result(False, "a circle needs at least 3 objects", {"count": len(objs)})
+        xy = np.array([_planar(o) for o in objs])
+        center = xy.mean(axis=0)
+        r = np.linalg.norm(xy - center, axis=1)
+        dev = float(np.max(np.abs(r - r.mean())))
+        ang = np.sort(np.arctan2(xy[:, 1] - center[1], xy[:, 0] - center[0]))
+        gaps = np.diff(np.concatenate([ang, [ang[0] + 2 * math.pi]]))
+        max_gap = float(gaps.max())
+        allowed = 1.5 * 2 * math.pi / len(objs)
+        table = max(abs(_table_gap(o)) for o in objs)
+        ok = dev <= C.CIRCLE_RADIUS_TOL and r.mean() >= C.CIRCLE_MIN_RADIUS and max_gap <= allowed and table <= C.TABLE_Z_TOL
+        return self._result(ok, f"objects {'form' if ok else 'do not form'} a circle (radius {r.mean() * 100:.1f} cm, deviation {dev * 100:.1f} cm)",
+                            {"radius": float(r.mean()), "radius_deviation": dev, "max_angle_gap": max_gap, "max_table_gap": table},
+                            {"radius_deviation": C.CIRCLE_RADIUS_TOL, "min_radius": C.CIRCLE_MIN_RADIUS,
+                             "max_angle_gap": allowed, "max_table_gap": C.TABLE_Z_TOL})
+
+    def support_edges(self):
+        return [(n, "table") for n in self.objects]
+
+    def describe(self):
+        return "circle of " + ", ".join(self.objects)
+
+
+def _match_sites(objs: list[ObjectState], sites: np.ndarray) -> tuple[bool, float, list[str]]:
+    """Match each site to a distinct object within GRID_TOL; return (ok, worst error, unmatched)."""
+    remaining = {o.name: np.asarray(o.pos, float) for o in objs}
+    worst = 0.0
+    missing = []
+    for site in sites:
+        if not remaining:
+            missing.append(str(np.round(site, 3).tolist()))
+            continue
+        name, d = min(((n, float(np.linalg.norm(p - site))) for n, p in remaining.items()), key=lambda t: t[1])
+        if d <= C.GRID_TOL:
+            worst = max(worst, d)
+            del remaining[name]
+        else:
+            missing.append(str(np.round(site, 3).tolist()))
+    ok = not missing and not remaining
+    return ok, worst, missing + sorted(remaining)
+
+
+def _bottom_origin(objs: list[ObjectState]) -> tuple[np.ndarray, float]:
+    zmin = min(o.pos[2] for o in objs)
+    bottom = [o for o in objs if o.pos[2] - zmin < C.CUBE_EDGE / 2]
+    origin = np.array([min(o.pos[0] for o in bottom), max(o.pos[1] for o in bottom), zmin])
+    return origin, float(np.mean([o.size[2] for o in objs]))
+
+
+@dataclass(frozen=True, repr=False)
+class Grid(Predicate):
+    """``objects`` fill a rows x cols x layers lattice of touching cubes on the table.
+
+    Rows run along x (front to back), columns along y (left to right), layers along z.
+    Any object may fill any site (use other predicates for per-site properties).
+    """
+
+    objects: tuple[str, ...]
+    rows: int
+    cols: int
+    layers: int = 1
+    name: ClassVar[str] = "grid"
+    list_fields: ClassVar[tuple[str, ...]] = ("objects",)
+
+    def _evaluate(self, state):
+        objs = [state[n] for n in self.objects]
+        n = self.rows * self.cols * self.layers
+        if len(objs) != n:
+            return self._result(False, f"a {self.rows}x{self.cols}x{self.layers} grid needs {n} objects, got {len(objs)}",
+                                {"count": len(objs)}, {"count": n})
+        origin, pitch = _bottom_origin(objs)
+        sites = np.array([origin + [r * pitch, -c * pitch, l * pitch]
+                          for l in range(self.layers) for r in range(self.rows) for c in range(self.cols)])
+        ok, worst, missing = _match_sites(objs, sites)
+        table = abs(origin[2] - C.TABLE_TOP_Z - pitch / 2)
+        ok = ok and table <= C.TABLE_Z_TOL
+        return self._result(ok, f"{self.rows}x{self.cols}x{self.layers} grid {'complete' if ok else 'incomplete'}"
+                            + ("" if ok else f" (unfilled or stray: {', '.join(missing[:4])})"),
+                            {"worst_site_error": worst, "table_gap": float(table), "unmatched": missing},
+                            {"site_error": C.GRID_TOL, "table_gap": C.TABLE_Z_TOL})
+
+    def support_edges(self):
+        return [(n, "table") for n in self.objects[: self.rows * self.cols]]
+
+    def describe(self):
+        dims = f"{self.rows}x{self.cols}" + (f"x{self.layers}" if self.layers > 1 else "")
+        return f"{dims} grid of {len(self.objects)} cubes"
+
+
+@dataclass(frozen=True, repr=False)
+class Pyramid(Predicate):
+    """A pyramid of touching cubes with a ``base`` of N.
+
+    ``dims=2``: a wall facing the camera, layers of N, N-1, ... 1 cubes along y, each cube
+    resting on the two below it.  ``dims=3``: layers of NxN, (N-1)x(N-1), ... 1, each cube
+    resting on the four below it.
+    """
+
+    objects: tuple[str, ...]
+    base: int
+    dims: int = 2
+    name: ClassVar[str] = "pyramid"
+    list_fields: ClassVar[tuple[str, ...]] = ("objects",)
+
+    def expected_count(self) -> int:
+        return sum((self.base - k) ** (self.dims - 1) for k in range(self.base))
+
+    def _evaluate(self, state):
+        objs = [state[n] for n in self.objects]
+        n = self.expected_count()
+        if len(objs) != n:
+            return self._result(False, f"a {self.dims}D pyramid with base {self.base} needs {n} cubes, got {len(objs)}",
+                                {"count": len(objs)}, {"count": n})
+        origin, p = _bottom_origin(objs)
+        sites = []
+        for k in range(self.base):
+            m = self.base - k
+            rows = range(m) if self.dims == 3 else range(1)
+            for r in rows:
+                for c in range(m):
+                    dx = (k / 2 + r) * p if self.dims == 3 else 0.0
+                    sites.append(origin + [dx, -(k / 2 + c) * p, k * p])
+        ok, worst, missing = _match_sites(objs, np.array(sites))
+        table = abs(origin[2] - C.TABLE_TOP_Z - p / 2)
+        ok = ok and table <= C.TABLE_Z_TOL
+        return self._result(ok, f"{self.dims}D pyramid (base {self.base}) {'complete' if ok else 'incomplete'}"
+                            + ("" if ok else f" (unfilled or stray: {', '.join(missing[:4])})"),
+                            {"worst_site_error": worst, "table_gap": float(table), "unmatched": missing},
+                            {"site_error": C.GRID_TOL, "table_gap": C.TABLE_Z_TOL})
+
+    def support_edges(self):
+        return [(n, "table") for n in self.objects[: self.base ** (self.dims - 1)]]
+
+    def describe(self):
+        base = f"{self.base}x{self.base}" if self.dims == 3 else str(self.base)
+        return f"{self.dims}D pyramid with a base of {base}"
+
+
+@dataclass(frozen=True, repr=False)
+class Piles(Predicate):
+    """Objects gathered in separate piles on the table.
+
+    Either ``by`` an attribute (``color``, ``label``, ``kind`` or ``type``, where type is
+    letter / digit / operator / colored_cube) or with explicit ``groups`` of names.  Each
+    pile's members lie within PILE_RADIUS of its centroid; centroids are at least
+    PILE_SEPARATION apart.
+    """
+
+    objects: tuple[str, ...] = ()
+    by: str | None = None
+    groups: tuple[tuple[str, ...], ...] = ()
+    name: ClassVar[str] = "piles"
+    list_fields: ClassVar[tuple[str, ...]] = ("objects",)
+
+    def rename(self, mapping):
+        new = super().rename(mapping)
+        return replace(new, groups=tuple(tuple(mapping.get(n, n) for n in g) for g in self.groups))
+
+    def object_names(self):
+        return list(self.objects) + [n for g in self.groups for n in g]
+
+    def resolve_groups(self, state: WorldState) -> list[list[str]]:
+        if self.groups:
+            return [list(g) for g in self.groups]
+        buckets: dict[str, list[str]] = {}
+        for n in self.objects:
+            buckets.setdefault(str(state[n].attribute(self.by or "color")), []).append(n)
+        return [buckets[k] for k in sorted(buckets)]
+
+    def _evaluate(self, state):
+        groups = self.resolve_groups(state)
+        if len(groups) < 2:
+            return self._result(False, "piles need at least two groups", {"groups": groups})
+        cents = []
+        spread = []
+        for g in groups:
+            xy = np.array([_planar(state[n]) for n in g])
+            c = xy.mean(axis=0)
+            cents.append(c)
+            spread.append(float(np.max(np.linalg.norm(xy - c, axis=1))))
+        seps = [float(np.linalg.norm(a - b)) for a, b in itertools.combinations(cents, 2)]
+        ok = max(spread) <= C.PILE_RADIUS and min(seps) >= C.PILE_SEPARATION
+        return self._result(ok, f"{len(groups)} piles {'separated' if ok else 'not separated'} (largest spread {max(spread) * 100:.1f} cm, closest piles {min(seps) * 100:.1f} cm)",
+                            {"groups": groups, "spread": spread, "min_separation": min(seps)},
+                            {"spread": C.PILE_RADIUS, "min_separation": C.PILE_SEPARATION})
+
+    def support_edges(self):
+        return []
+
+    def describe(self):
+        if self.groups:
+            return f"{len(self.groups)} separate piles"
+        return f"piles sorted by {self.by}"
+
+
+@dataclass(frozen=True, repr=False)
+class LayersUniform(Predicate):
+    """Within a structure, each layer (or row) along ``axis`` shares one value of ``by``,
+    and different layers have different values (e.g. "each row a different color")."""
+
+    objects: tuple[str, ...]
+    by: str = "color"
+    axis: str = "z"
+    name: ClassVar[str] = "layers_uniform"
+    list_fields: ClassVar[tuple[str, ...]] = ("objects",)
+
+    def _evaluate(self, state):
+        i = "xyz".index(self.axis)
+        levels: dict[int, set] = {}
+        for n in self.objects:
+            o = state[n]
+            levels.setdefault(round(o.pos[i] / C.CUBE_EDGE), set()).add(o.attribute(self.by))
+        values = [sorted(map(str, v)) for _, v in sorted(levels.items())]
+        uniform = all(len(v) == 1 for v in values)
+        distinct = len({v[0] for v in values}) == len(values) if uniform else False
+        ok = uniform and distinct
+        return self._result(ok, f"each layer along {self.axis} {'has' if ok else 'does not have'} its own {self.by}",
+                            {"layers": values})
+
+    def describe(self):
+        return f"each layer a different {self.by}"
+
+
+# ---------------------------------------------------------------------------
+# Semantic predicates (labels, ordering)
+# ---------------------------------------------------------------------------
+
+
+def _read_label(state: WorldState, o: ObjectState, face_dir: str) -> tuple[str | None, bool]:
+    """Label shown toward ``face_dir`` and whether it is readable and visible."""
+    face, _ = o.face_toward(face_dir)
+    readable, _, _ = o.readable(face, face_dir)
+    visible = state.is_visible(o.name, face)
+    return o.face_labels.get(face), bool(readable and visible)
+
+
+@dataclass(frozen=True, repr=False)
+class Reads(Predicate):
+    """The ``face`` labels of ``objects``, in ``direction`` order, spell ``text``.
+
+    Every label must be readable (upright toward ``face``) and visible.
+    """
+
+    objects: tuple[str, ...]
+    text: str
+    direction: str = "left_to_right"
+    face: str = "up"
+    name: ClassVar[str] = "reads"
+    list_fields: ClassVar[tuple[str, ...]] = ("objects",)
+    semantic: ClassVar[bool] = True
+
+    def _evaluate(self, state):
+        objs = order_objects([state[n] for n in self.objects], self.direction)
+        labels, unreadable = [], []
+        for o in objs:
+            label, ok = _read_label(state, o, self.face)
+            labels.append(label or "?")
+            if not ok:
+                unreadable.append(o.name)
+        got = "".join(labels)
+        want = self.text.replace(" ", "").upper().replace("*", "x").replace("X", "X")
+        ok = not unreadable and _same_text(got, want)
+        reason = f"reads {got!r}" + ("" if ok else f", expected {self.text!r}") + (f"; unreadable: {', '.join(unreadable)}" if unreadable else "")
+        return self._result(ok, reason, {"read": got, "unreadable": unreadable}, {"text": self.text})
+
+    def semantic_faces(self, state):
+        return [(n, self.face) for n in self.objects]
+
+    def describe(self):
+        return f"reads {self.text!r} {self.direction.replace('_', ' ')}"
+
+
+def _same_text(got: str, want: str) -> bool:
+    return got.upper() == want.upper()
+
+
+_EQ_RE = re.compile(r"^[0-9+\-x=]+$")
+
+
+def _eval_side(expr: str) -> int | None:
+    expr = expr.replace("x", "*")
+    if not expr or not re.fullmatch(r"\d+([+\-*]\d+)*", expr):
+        return None
+    node = ast.parse(expr, mode="eval").body
+
+    def ev(n):
+        if isinstance(n, ast.Constant):
+            return int(n.value)
+        if isinstance(n, ast.BinOp):
+            a, b = ev(n.left), ev(n.right)
+            if isinstance(n.op, ast.Add):
+                return a + b
+            if isinstance(n.op, ast.Sub):
+                return a - b
+            if isinstance(n.op, ast.Mult):
+                return a * b
+        raise ValueError("bad expression")
+
+    return ev(node)
+
+
+def equation_holds(text: str) -> bool:
+    """Whether a string such as ``"3+4=7"`` is a correct equation (``x`` is times)."""
+    if not _EQ_RE.match(text) or text.count("=") != 1:
+        return False
+    left, right = text.split("=")
+    a, b = _eval_side(left), _eval_side(right)
+    return a is not None and b is not None and a == b
+
+
+@dataclass(frozen=True, repr=False)
+class Equation(Predicate):
+    """The ``face`` labels of ``objects`` in ``direction`` order form a correct equation."""
+
+    objects: tuple[str, ...]
+    direction: str = "left_to_right"
+    face: str = "up"
+    name: ClassVar[str] = "equation"
+    list_fields: ClassVar[tuple[str, ...]] = ("objects",)
+    semantic: ClassVar[bool] = True
+
+    def _evaluate(self, state):
+        objs = order_objects([state[n] for n in self.objects], self.direction)
+        labels = []
+        unreadable = []
+        for o in objs:
+            label, ok = _read_label(state, o, self.face)
+            labels.append(label or "?")
+            if not ok:
+                unreadable.append(o.name)
+        got = "".join(labels)
+        ok = not unreadable and equation_holds(got)
+        return self._result(ok, f"reads {got!r}, {'a correct' if ok else 'not a correct'} equation",
+                            {"read": got, "unreadable": unreadable})
+
+    def semantic_faces(self, state):
+        return [(n, self.face) for n in self.objects]
+
+    def describe(self):
+        return f"correct equation {self.direction.replace('_', ' ')}"
+
+
+def sort_key(o: ObjectState, key: str, label: str | None) -> float | None:
+    """Numeric sort key of an object: ``label`` (alphabetical), ``number``, ``color`` (gradient)."""
+    if key == "color":
+        return float(GRADIENT_ORDER.index(o.color)) if o.color in GRADIENT_ORDER else None
+    if label is None:
+        return None
+    if key == "number":
+        return float(label) if label.isdigit() else None
+    if key == "label":
+        return float(ord(label)) if label.isalnum() else None
+    raise ValueError(f"unknown sort key {key!r}; use 'label', 'number' or 'color'")
+
+
+@dataclass(frozen=True, repr=False)
+class SortedBy(Predicate):
+    """``objects`` in ``direction`` order are sorted by ``key``.
+
+    Args:
+        key: ``"label"`` (alphabetical), ``"number"`` (numerical) or ``"color"`` (colour
+            gradient, :data:`~rpg.domain.palette.GRADIENT_ORDER`).
+        direction: reading direction (``"left_to_right"``, ``"reading"``...).
+        descending: reverse order.
+        strict: require strictly increasing keys.
+        face: which face's label is read (labels only); only visible, readable faces
+            carry the requirement (paper, Geometric Visibility), at least two must.
+    """
+
+    objects: tuple[str, ...]
+    key: str = "label"
+    direction: str = "left_to_right"
+    descending: bool = False
+    strict: bool = True
+    face: str = "up"
+    name: ClassVar[str] = "sorted_by"
+    list_fields: ClassVar[tuple[str, ...]] = ("objects",)
+    semantic: ClassVar[bool] = True
+
+    def _evaluate(self, state):
+        objs = order_objects([state[n] for n in self.objects], self.direction)
+        keys, seen = [], []
+        for o in objs:
+            if self.key == "color":
+                keys.append(sort_key(o, "color", None))
+                seen.append(o.name)
+                continue
+            label, ok = _read_label(state, o, self.face)
+            if ok:
+                keys.append(sort_key(o, self.key, label))
+                seen.append(o.name)
+        if len(keys) < 2 or any(k is None for k in keys):
+            return self._result(False, f"fewer than two readable {self.key} keys", {"readable": seen})
+        sign = -1 if self.descending else 1
+        diffs = [sign * (b - a) for a, b in itertools.pairwise(keys)]
+        ok = all(d > 0 for d in diffs) if self.strict else all(d >= 0 for d in diffs)
+        return self._result(ok, f"{'sorted' if ok else 'not sorted'} by {self.key} {self.direction.replace('_', ' ')}",
+                            {"order": seen, "keys": keys})
+
+    def semantic_faces(self, state):
+        return [] if self.key == "color" else [(n, self.face) for n in self.objects]
+
+    def describe(self):
+        rev = " descending" if self.descending else ""
+        return f"sorted by {self.key}{rev} {self.direction.replace('_', ' ')}"
+
+
+@dataclass(frozen=True, repr=False)
+class LabelFacing(Predicate):
+    """Cube ``a`` shows ``label`` toward ``direction`` (``"up"`` or ``"front"``...), upright."""
+
+    a: str
+    label: str
+    direction: str = "up"
+    name: ClassVar[str] = "label_facing"
+    object_fields: ClassVar[tuple[str, ...]] = ("a",)
+    semantic: ClassVar[bool] = True
+
+    def _evaluate(self, state):
+        if self.direction not in DIRECTIONS:
+            raise ValueError(f"unknown direction {self.direction!r}; use one of {', '.join(DIRECTIONS)}")
+        o = state[self.a]
+        best = None
+        for face, lab in sorted(o.face_labels.items()):
+            if lab != self.label:
+                continue
+            ok, ncos, ucos = o.readable(face, self.direction)
+            ok = ok and state.is_visible(o.name, face)
+            cand = (ok, ncos, ucos, face)
+            if best is None or cand > best:
+                best = cand
+        if best is None:
+            return self._result(False, f"{self.a} has no face labelled {self.label!r}")
+        ok, ncos, ucos, face = best
+        return self._result(ok, f"{self.a} {'shows' if ok else 'does not show'} {self.label!r} {self.direction} (face {face}, normal cos {ncos:.3f}, up cos {ucos:.3f})",
+                            {"face": face, "normal_cos": ncos, "up_cos": ucos},
+                            {"normal_cos": C.READABLE_NORMAL_COS, "up_cos": C.READABLE_UP_COS})
+
+    def semantic_faces(self, state):
+        return [(self.a, self.direction)]
+
+    def describe(self):
+        return f"{self.a} shows {self.label!r} facing {self.direction}"
+
+
+# ---------------------------------------------------------------------------
+# Composites and temporal order
+# ---------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, repr=False)
+class And(Predicate):
+    """All children hold."""
+
+    children_: tuple[Predicate, ...] = field(default=(), metadata={"alias": "children"})
+    name: ClassVar[str] = "and"
+
+    def __init__(self, children=()):
+        object.__setattr__(self, "children_", tuple(children))
+
+    def children(self):
+        return list(self.children_)
+
+    def args(self):
+        return {}
+
+    def to_dict(self):
+        return {"predicate": self.name, "children": [c.to_dict() for c in self.children_]}
+
+    def rename(self, mapping):
+        return And(tuple(c.rename(mapping) for c in self.children_))
+
+    def _evaluate(self, state):
+        results = [c.evaluate(state) for c in self.children_]
+        ok = all(r.satisfied for r in results)
+        n_bad = sum(not r.satisfied for r in results)
+        return self._result(ok, "all hold" if ok else f"{n_bad} of {len(results)} do not hold", children=results)
+
+    def __repr__(self):
+        inner = ",\n        ".join(repr(c) for c in self.children_)
+        return f"And([\n        {inner},\n    ])"
+
+    def describe(self):
+        return "; ".join(c.describe() for c in self.children_)
+
+
+@dataclass(frozen=True, repr=False)
+class Not(Predicate):
+    """The child does not hold."""
+
+    child: Predicate
+    name: ClassVar[str] = "not"
+
+    def children(self):
+        return [self.child]
+
+    def args(self):
+        return {}
+
+    def support_edges(self):
+        return []
+
+    def rename(self, mapping):
+        return Not(self.child.rename(mapping))
+
+    def _evaluate(self, state):
+        r = self.child.evaluate(state)
+        return self._result(not r.satisfied, f"not ({r.reason})", children=[r])
+
+    def describe(self):
+        return f"not ({self.child.describe()})"
+
+
+@dataclass(frozen=True, repr=False)
+class InOrder(Predicate):
+    """Temporal goal: ``events`` become true in the listed order ("first A, then B").
+
+    On a single state it checks that every event holds (the terminal condition); the order
+    in which they became true is judged by :class:`TemporalMonitor` over an episode.
+    """
+
+    events: tuple[Predicate, ...]
+    name: ClassVar[str] = "in_order"
+
+    def children(self):
+        return list(self.events)
+
+    def args(self):
+        return {"events": [e.describe() for e in self.events]}
+
+    def rename(self, mapping):
+        return InOrder(tuple(e.rename(mapping) for e in self.events))
+
+    def to_dict(self):
+        return {"predicate": self.name, "events": [e.to_dict() for e in self.events]}
+
+    def _evaluate(self, state):
+        results = [e.evaluate(state) for e in self.events]
+        ok = all(r.satisfied for r in results)
+        return self._result(ok, "all events hold (order judged by the episode monitor)" if ok else "not all events hold", children=results)
+
+    def monitor(self) -> TemporalMonitor:
+        return TemporalMonitor(self)
+
+    def __repr__(self):
+        inner = ", ".join(repr(e) for e in self.events)
+        return f"InOrder(events=[{inner}])"
+
+    def describe(self):
+        return "first " + ", then ".join(e.describe() for e in self.events)
+
+
+class TemporalMonitor:
+    """Tracks when each event of an :class:`InOrder` first holds over an episode.
+
+    Call :meth:`update` with each state (in time order); :meth:`result` says whether the
+    events first became true in the required order and all hold at the end.
+    """
+
+    def __init__(self, goal: InOrder):
+        self.goal = goal
+        self.first_true: list[int | None] = [None] * len(goal.events)
+        self.steps = 0
+        self._last: list[bool] = [False] * len(goal.events)
+
+    def update(self, state: WorldState) -> None:
+        for i, e in enumerate(self.goal.events):
+            ok = e.evaluate(state).satisfied
+            if ok and self.first_true[i] is None:
+                self.first_true[i] = self.steps
+            self._last[i] = ok
+        self.steps += 1
+
+    def result(self) -> PredicateResult:
+        firsts = self.first_true
+        happened = all(f is not None for f in firsts)
+        ordered = happened and all(a < b for a, b in itertools.pairwise(firsts))
+        ok = ordered and all(self._last)
+        reason = ("events happened in order" if ok else
+                  "an event never happened" if not happened else
+                  "events happened out of order" if not ordered else "an event no longer holds")
+        return PredicateResult("in_order", self.goal.args(), ok, {"first_true_step": firsts, "holds_now": list(self._last)}, {}, reason)
+
+
+# ---------------------------------------------------------------------------
+# Goal evaluation with interchangeable objects
+# ---------------------------------------------------------------------------
+
+MAX_ASSIGNMENTS = 5040
+"""Most object assignments tried when interchangeable objects could satisfy the goal."""
+
+
+def evaluate_goal(goal: Predicate, state: WorldState) -> PredicateResult:
+    """Evaluate ``goal``, accepting any swap of indistinguishable objects that satisfies it.
+
+    Objects with the same kind, colour and labels are interchangeable: a goal naming
+    ``red_1`` and ``red_2`` holds if it holds with the two swapped.  At most
+    :data:`MAX_ASSIGNMENTS` assignments are tried; the literal result is returned if none
+    satisfies the goal.
+    """
+    result = goal.evaluate(state)
+    if result.satisfied:
+        return result
+    mentioned = sorted(set(goal.object_names()))
+    classes: dict[tuple, list[str]] = {}
+    for n in mentioned:
+        if n in state.objects and state[n].is_cube:
+            classes.setdefault(_signature(state[n]), []).append(n)
+    groups = [g for g in classes.values() if len(g) > 1]
+    if not groups:
+        return result
+    per_group = [list(itertools.permutations(g)) for g in groups]
+    total = math.prod(len(p) for p in per_group)
+    if total > MAX_ASSIGNMENTS:
+        return result
+    for combo in itertools.product(*per_group):
+        mapping = {}
+        for g, perm in zip(groups, combo, strict=True):
+            mapping.update(dict(zip(g, perm, strict=True)))
+        if all(k == v for k, v in mapping.items()):
+            continue
+        alt = goal.rename(mapping).evaluate(state)
+        if alt.satisfied:
+            return alt
+    return result

@@ -1,0 +1,78 @@
+"""Headless PNG snapshots from the default camera through ``mujoco.Renderer``.
+
+The OpenGL backend is EGL first, then OSMesa.  ``rpg`` sets ``MUJOCO_GL=egl`` when it is
+imported unless the variable is already set.  Rendering needs the system's EGL (Debian:
+``libegl1``, ``libgl1``, ``libgles2``; Mesa works without a GPU) or OSMesa (Debian:
+``libosmesa6``).  Where neither loads, :func:`render_snapshot` returns None with a
+warning and nothing else fails.
+"""
+
+from __future__ import annotations
+
+import logging
+import warnings
+from pathlib import Path
+
+import mujoco
+import numpy as np
+
+from rpg.domain import constants as C
+from rpg.domain.scene import Scene
+
+log = logging.getLogger(__name__)
+
+_BACKEND_FAILED = False
+
+
+class RenderUnavailable(RuntimeWarning):
+    """Warned when no headless OpenGL backend could be loaded; snapshots are skipped."""
+
+
+def _make_renderer(model: mujoco.MjModel, width: int, height: int) -> mujoco.Renderer | None:
+    global _BACKEND_FAILED
+    if _BACKEND_FAILED:
+        return None
+    try:
+        return mujoco.Renderer(model, height=height, width=width)
+    except Exception as first:  # noqa: BLE001 - any backend failure means: try the next one
+        try:
+            from mujoco.osmesa import GLContext as OSMesaContext
+            from mujoco.rendering.classic import gl_context
+
+            gl_context.GLContext = OSMesaContext
+            return mujoco.Renderer(model, height=height, width=width)
+        except Exception as second:  # noqa: BLE001
+            _BACKEND_FAILED = True
+            warnings.warn(
+                f"snapshots skipped: no headless OpenGL (EGL: {first}; OSMesa: {second}). "
+                "Install libegl1 or libosmesa6 to get snapshots.",
+                RenderUnavailable,
+                stacklevel=3,
+            )
+            return None
+
+
+def render_image(scene: Scene, width: int = C.SNAPSHOT_SIZE[0], height: int = C.SNAPSHOT_SIZE[1],
+                 camera: str = C.CAMERA_NAME) -> np.ndarray | None:
+    """RGB image (height, width, 3) uint8 of the scene from ``camera``, or None without OpenGL."""
+    renderer = _make_renderer(scene.model, width, height)
+    if renderer is None:
+        return None
+    try:
+        scene.forward()
+        renderer.update_scene(scene.data, camera=camera)
+        return renderer.render().copy()
+    finally:
+        renderer.close()
+
+
+def render_snapshot(scene: Scene, path: str | Path, **kwargs) -> Path | None:
+    """Write a PNG snapshot of the scene to ``path``; None (and a warning) without OpenGL."""
+    from PIL import Image
+
+    img = render_image(scene, **kwargs)
+    if img is None:
+        return None
+    path = Path(path)
+    Image.fromarray(img).save(path, format="PNG", optimize=False)
+    return path

@@ -1,0 +1,109 @@
+"""The fixed task interface that every generated ``code.py`` extends.
+
+Loading is separate from initialising an episode (as in ManiSkill3): the constructor
+builds and compiles the scene once; :meth:`BlockTask.reset` samples an initial state
+from rho_0 with a seeded ``numpy.random.Generator`` and sets it.
+
+A task subclass documents itself in three parts (Task Description, Randomizations,
+Success Conditions) and implements three methods:
+
+* ``assets()`` -> list of :mod:`rpg.domain.assets` objects,
+* ``initial_state(rng)`` -> name -> :class:`~rpg.domain.state.Pose`,
+* ``goal()`` -> a :class:`~rpg.domain.predicates.Predicate` (the success predicate G).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import numpy as np
+
+from rpg.domain import constants as C
+from rpg.domain.assets import Asset
+from rpg.domain.predicates import Predicate, PredicateResult, evaluate_goal
+from rpg.domain.scene import Scene
+from rpg.domain.state import Pose, WorldState
+from rpg.domain.visibility import visible_faces
+
+
+class BlockTask:
+    """Base class of block-domain tasks: T = (assets, rho_0, G, instruction, paraphrases).
+
+    Class attributes:
+        NAME: task name (snake_case).
+        INSTRUCTION: the canonical instruction.
+        PARAPHRASES: alternative phrasings for robustness testing.
+    """
+
+    NAME: str = "task"
+    INSTRUCTION: str = ""
+    PARAPHRASES: tuple[str, ...] = ()
+
+    def __init__(self) -> None:
+        self.scene = Scene(self.assets())
+        self._goal = self.goal()
+
+    # -- to implement ----------------------------------------------------------
+    def assets(self) -> list[Asset]:
+        """The task's assets."""
+        raise NotImplementedError
+
+    def initial_state(self, rng: np.random.Generator) -> dict[str, Pose]:
+        """Sample one initial state from rho_0 (all objects) with ``rng``."""
+        raise NotImplementedError
+
+    def goal(self) -> Predicate:
+        """The success predicate G as a predicate tree."""
+        raise NotImplementedError
+
+    # -- episode ---------------------------------------------------------------
+    def reset(self, seed: int = 0) -> dict[str, Pose]:
+        """Start an episode: sample rho_0 with ``numpy.random.default_rng(seed)`` and set it.
+
+        Returns:
+            The sampled poses, by name.
+        """
+        rng = np.random.default_rng(seed)
+        poses = self.initial_state(rng)
+        self.set_state(poses)
+        return poses
+
+    def set_state(self, poses: Mapping[str, Pose]) -> None:
+        """Set object poses, zero velocities and time."""
+        self.scene.set_poses(poses)
+        self.scene.reset_time()
+
+    def step(self, steps: int = 1) -> None:
+        """Advance the physics under zero action."""
+        self.scene.settle(steps)
+
+    def world_state(self) -> WorldState:
+        """Current state, with face visibility when the goal reads labels."""
+        vis = visible_faces(self.scene) if self._needs_visibility() else None
+        return self.scene.world_state(vis)
+
+    def _needs_visibility(self) -> bool:
+        stack = [self._goal]
+        while stack:
+            p = stack.pop()
+            if p.semantic:
+                return True
+            stack.extend(p.children())
+        return False
+
+    def evaluate(self) -> PredicateResult:
+        """Evaluate G on the current state, with per-predicate diagnostics."""
+        return evaluate_goal(self._goal, self.world_state())
+
+    def success(self) -> bool:
+        """Whether G holds in the current state."""
+        return self.evaluate().satisfied
+
+    @property
+    def goal_predicate(self) -> Predicate:
+        return self._goal
+
+    @staticmethod
+    def table_height() -> float:
+        """Table top height, m."""
+        return C.TABLE_TOP_Z
