@@ -204,6 +204,10 @@ READABLE_NORMAL_COS: float = 0.97
 READABLE_UP_COS: float = 0.94
 """Least cosine between a glyph's up vector and the expected up (~20 deg) (paper)."""
 
+VISIBILITY_MIN_FACING_COS: float = 0.1
+"""A face seen edge-on (cosine between its normal and the direction to the camera below
+this) is not visible, whatever its rays hit (project)."""
+
 RAY_HIT_TOL: float = 0.002
 """A ray reaches its sample point if it first hits the face within this distance, m."""
 

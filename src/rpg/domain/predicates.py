@@ -486,7 +486,8 @@ class Between(Predicate):
         if length < 1e-9:
             return self._result(False, f"{self.b} and {self.c} coincide", {"length": length})
         t = float((a - b) @ seg / length**2)
-        off = float(abs(np.cross(seg, a - b)) / length)
+        rel = a - b
+        off = float(abs(seg[0] * rel[1] - seg[1] * rel[0]) / length)
         ok = 0.0 < t < 1.0 and off <= 2 * C.LINE_TOL
         return self._result(ok, f"{self.a} {'is' if ok else 'is not'} between {self.b} and {self.c} (t={t:.2f}, off {off * 100:.1f} cm)",
                             {"t": t, "off_line": off}, {"t": [0.0, 1.0], "off_line": 2 * C.LINE_TOL})

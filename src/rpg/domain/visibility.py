@@ -31,7 +31,8 @@ class FaceVisibility:
         name: object name.
         face: local face (``"+x"``...).
         rays_clear: how many of the 5 rays reached the face.
-        visible: ``rays_clear >= VISIBILITY_MIN_RAYS`` and the face points toward the camera.
+        visible: ``rays_clear >= VISIBILITY_MIN_RAYS`` and the face turns toward the camera
+            (cosine at least ``VISIBILITY_MIN_FACING_COS``).
     """
 
     name: str
@@ -76,7 +77,8 @@ def face_visibility(scene: Scene, name: str, face: str, camera: str = C.CAMERA_N
     pts, normal = face_sample_points(scene, name, face)
     vec = pts - cam
     dist_target = np.linalg.norm(vec, axis=1)
-    if float(normal @ (cam - pts[0])) <= 0:
+    to_cam = cam - pts[0]
+    if float(normal @ to_cam) / float(np.linalg.norm(to_cam)) < C.VISIBILITY_MIN_FACING_COS:
         return FaceVisibility(name, face, 0, False)
     dirs = vec / dist_target[:, None]
     geomid = np.full(5, -1, dtype=np.int32)

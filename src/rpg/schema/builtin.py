@@ -1,0 +1,915 @@
+"""The builtin front end: a deterministic, offline semantic parser for the block domain.
+
+It reads the language of the domain (colours, counts in words or digits, quoted words,
+letters, digits and operators; relations; structures; orderings; patches; temporal order;
+orientation; equations) and builds a :class:`~rpg.schema.model.TaskSchema` through
+:class:`~rpg.schema.builder.Builder`.  Words it does not know are refused, quoted, with a
+suggestion to use ``--model``; it never guesses silently.
+
+Frame conventions: see :mod:`rpg.domain.constants`.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+
+from rapidfuzz import fuzz, process
+
+from rpg.domain import constants as C
+from rpg.domain.layouts import (
+    circle_layout,
+    circle_radius,
+    cluster_layout,
+    grid_layout,
+    line_layout,
+    pyramid_layout,
+    pyramid_sites,
+    stack_layout,
+)
+from rpg.domain.palette import COLOR_ALIASES, GRADIENT_ORDER, PALETTE
+from rpg.domain.predicates import (
+    Behind, Between, Equation, Grid, InCircle, InFrontOf, InLine, InOrder, LabelFacing,
+    LayersUniform, LeftOf, NextTo, On, OnPatch, OnTable, Piles, Pyramid, Reads, RightOf,
+    SortedBy, Stack,
+)
+from rpg.domain.state import Pose
+from rpg.schema.builder import DEFAULT_COLORS, DEFAULT_PATCH_COLOR, Builder
+from rpg.schema.model import RepairRecord, TaskSchema
+
+
+class ParseError(ValueError):
+    """The builtin front end cannot read the instruction; the message says which part."""
+
+
+MAX_INSTRUCTION_CHARS = 2000
+"""Longest instruction accepted, characters."""
+
+NUMBER_WORDS = {
+    "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
+    "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "both": 2, "pair": 2, "couple": 2,
+    "single": 1, "thirteen": 13, "fourteen": 14, "fifteen": 15, "twenty": 20, "thirty": 30,
+}
+COLORS = sorted(set(PALETTE) | set(COLOR_ALIASES), key=len, reverse=True)
+COLOR_RE = "|".join(COLORS)
+
+VOCAB = set("""
+a an the this that these those it its them they their each every all some any both of to in into on onto at
+by with and or but then first second third next after before finally also so such as from for is are be
+being been was were will should must can could would please you your me i we us our make build create
+form put place set move stack stacks stacked stacking tower towers arrange arranged arranging arrangement align
+aligned line lines row rows column columns sort sorted sorting order ordered ordering spell spelling spells
+word words using use used block blocks cube cubes cubic box boxes piece pieces object objects item items
+table surface top bottom base left right side front behind back middle center centre near next beside
+between under below beneath underneath above over atop adjacent alongside other another simple small
+big large tall single straight horizontal vertical circle circular ring round shape square squares grid
+rectangle rectangular array pyramid pyramids layer layers level levels cube-shaped pile piles group groups
+bunch bunches cluster clusters heap heaps separate separated apart together same different matching match
+matches color colors colour colours colored coloured gradient rainbow hue letter letters alphabet alphabetical
+alphabetically number numbers numeric numerical numerically digit digits increasing decreasing ascending
+descending reverse reversed strictly order equation math maths correct single-digit semantic label labels
+labelled labeled face faces facing up upward upwards camera robot visible rotate rotated turn flip show shows
+showing so read reads reading goal target patch patches long designated specific respective temporal exact
+exactly sequence sequential sequentially one outlier mixed assorted various random two three four five six
+seven eight nine ten many several wide high tall height x can build starts start starting initially
+begin begins beginning initial there where which who has have how shape shaped form forms do does
+shown kind type types by-color own its corresponding respectively per contain containing made consisting
+plus minus equals times operator operators symbol symbols mixed upright hold holds just only now want like
+""".split())
+"""Words the builtin front end understands (besides colours, numbers and labels)."""
+
+
+@dataclass
+class Features:
+    text: str
+    original: str
+    colors: list[tuple[int, str]] = field(default_factory=list)
+    quoted: list[str] = field(default_factory=list)
+
+    def has(self, *words: str) -> bool:
+        return any(re.search(rf"\b{w}\b", self.text) for w in words)
+
+    def color_list(self) -> list[str]:
+        return [c for _, c in self.colors]
+
+
+# ---------------------------------------------------------------------------
+# Normalisation
+# ---------------------------------------------------------------------------
+
+
+def _canon_color(word: str) -> str:
+    return COLOR_ALIASES.get(word, word)
+
+
+def normalize(instruction: str) -> tuple[str, str]:
+    """Lower-case, number words to digits, typos corrected.  Returns (text, original).
+
+    Raises:
+        ParseError: empty, too long, or containing words the parser does not know.
+    """
+    original = instruction.strip()
+    if not original:
+        raise ParseError("the instruction is empty; describe a task, e.g. \"stack the red block on the blue block\"")
+    if len(original) > MAX_INSTRUCTION_CHARS:
+        raise ParseError(f"the instruction has {len(original)} characters; the limit is {MAX_INSTRUCTION_CHARS}")
+    text = original.lower()
+    text = re.sub(r"[\u2018\u2019\u201c\u201d`]", "'", text)
+    text = text.replace('"', "'")
+    text = re.sub(r"(\d)\s*[x\u00d7]\s*(?=\d)", r"\1x", text)
+    text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall)", r"\1 \2", text)
+    unknown = []
+    caps = {w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)}
+    caps |= {q.lower() for q in re.findall(r"'([A-Za-z]+)'", text)}
+    words = re.findall(r"[a-z][a-z\-]*|\d+x\d+(?:x\d+)?|\d+|'[^']*'|[+=*]", text)
+    fixed = {}
+    for w in words:
+        if w.startswith("'") or w[0].isdigit() or w in "+=*" or w in NUMBER_WORDS or w in COLORS:
+            continue
+        base = w[:-1] if w.endswith("s") and w[:-1] in VOCAB else w
+        if base in VOCAB or len(w) == 1 or w in caps:
+            continue
+        if "-" in w and all(p in VOCAB or p in COLORS or p in NUMBER_WORDS for p in w.split("-") if p):
+            continue
+        match = process.extractOne(w, list(VOCAB) + COLORS, scorer=fuzz.ratio, score_cutoff=84) if len(w) >= 4 else None
+        if match:
+            fixed[w] = match[0]
+        else:
+            unknown.append(w)
+    if unknown:
+        shown = ", ".join(f"'{w}'" for w in dict.fromkeys(unknown))
+        raise ParseError(
+            f"could not parse {shown} in \"{original[:80]}\"; the builtin parser reads the block domain "
+            "(colors, letters, digits, stacks, lines, circles, grids, pyramids, piles, patches, relations). "
+            "Rephrase, or use --model to let a language model read it"
+        )
+    for w, r in fixed.items():
+        text = re.sub(rf"\b{re.escape(w)}\b", r, text)
+    for w, n in NUMBER_WORDS.items():
+        text = re.sub(rf"\b{w}\b", str(n), text)
+    text = re.sub(r"\bgrey\b", "gray", text)
+    return " ".join(text.split()), original
+
+
+def features(instruction: str) -> Features:
+    text, original = normalize(instruction)
+    f = Features(text, original)
+    f.colors = [(m.start(), _canon_color(m.group(0))) for m in re.finditer(rf"\b({COLOR_RE})\b", text)
+                if not re.match(r"\s+(order|gradient|sort)", text[m.end():])]
+    f.quoted = re.findall(r"['\u2018\u2019\u201c\u201d\"]([^'\u2018\u2019\u201c\u201d\"]+)['\u2018\u2019\u201c\u201d\"]", original)
+    return f
+
+
+# ---------------------------------------------------------------------------
+# Shared helpers
+# ---------------------------------------------------------------------------
+
+
+def _count(f: Features, nouns: str = "block|cube|box|piece|object", default: int | None = None) -> int | None:
+    m = re.search(rf"\b(\d+)\s+(?:[a-z\-]+\s+){{0,3}}?(?:{nouns})s?\b", f.text)
+    if m:
+        return int(m.group(1))
+    return default
+
+
+def _slug(text: str) -> str:
+    words = re.findall(r"[a-z0-9]+", text.lower())
+    return "_".join(words[:8]) or "task"
+
+
+def _colors_for(n: int, f: Features, prefer: list[str] | None = None) -> list[str]:
+    given = prefer if prefer is not None else list(dict.fromkeys(f.color_list()))
+    if len(given) >= n:
+        return given[:n]
+    rest = [c for c in DEFAULT_COLORS if c not in given]
+    return given + rest[: n - len(given)]
+
+
+def _material(f: Features) -> str:
+    """``letters``, ``digits``, ``mixed`` (letters, digits and colours) or ``colors``."""
+    letters = f.has("letter", "letters", "alphabet", "alphabetical", "alphabetically")
+    digits = f.has("number", "numbers", "digit", "digits", "numerical", "numerically", "numeric")
+    if letters and digits:
+        return "mixed"
+    if letters or f.has("semantic"):
+        return "letters"
+    if digits:
+        return "digits"
+    return "colors"
+
+
+def label_sequence(kind: str, n: int, b: Builder, ordered: bool = True) -> tuple[list[str], bool]:
+    """``n`` labels of a kind (letters A.., digits 1..); repairs when distinct labels run out.
+
+    Returns:
+        (labels, strict): strict is False when labels had to repeat.
+
+    Raises:
+        ParseError: more labels than the domain has and the geometry cannot be kept.
+    """
+    pool = [chr(ord("A") + i) for i in range(C.MAX_DISTINCT_LETTERS)] if kind == "letters" else [str(d) for d in range(C.MAX_DISTINCT_DIGITS)]
+    if kind == "digits" and n < C.MAX_DISTINCT_DIGITS:
+        pool = pool[1:] + pool[:1]
+    if n <= len(pool):
+        return pool[:n], True
+    b.repairs.append(RepairRecord(
+        operator="REDUCE_LABELS_PRESERVE_GEOMETRY", stage="feasibility",
+        reason=f"{n} cubes but only {len(pool)} distinct {kind}; labels repeat, the structure is kept"))
+    if ordered:
+        b.repairs.append(RepairRecord(
+            operator="SWITCH_ORDERING_PATTERN", stage="feasibility",
+            reason="strictly increasing order is impossible with repeated labels; non-decreasing order is required"))
+    base = sorted(pool)
+    return [base[i * len(base) // n] for i in range(n)], False
+
+
+def _mention_color(text: str) -> str | None:
+    m = re.search(rf"\b({COLOR_RE})\b", text)
+    return _canon_color(m.group(1)) if m else None
+
+
+# ---------------------------------------------------------------------------
+# Recognisers: each returns True when it built the task into the builder
+# ---------------------------------------------------------------------------
+
+
+INITIAL_RE = re.compile(
+    rf"[,;.]?\s*(?:with\s+|where\s+|and\s+)?(?:the\s+)?({COLOR_RE})\s+(?:block\s+|cube\s+)?"
+    rf"(?:starts|starting|begins|is initially|initially|starts out)\s+(?:stacked\s+)?(?:on top of|on)\s+"
+    rf"(?:the\s+)?({COLOR_RE})(?:\s+block|\s+cube)?"
+)
+
+
+def _initial_clause(text: str) -> tuple[int, int, str, str] | None:
+    """Find "yellow starts stacked on red": (start, end, bottom colour, top colour)."""
+    m = INITIAL_RE.search(text)
+    if not m:
+        return None
+    return m.start(), m.end(), _canon_color(m.group(2)), _canon_color(m.group(1))
+
+
+def recognize_temporal(f: Features, b: Builder) -> bool:
+    if not (f.has("first") and f.has("then")) and not f.has("temporal", "sequentially"):
+        return False
+    if not f.has("patch", "patches", "target", "targets"):
+        return False
+    order_part = f.text[f.text.find("first") - 20 if "first" in f.text else 0:]
+    order = list(dict.fromkeys(c for _, c in features_colors(order_part)))
+    if len(order) < 2:
+        order = _colors_for(2, f)
+    centers = b.unit_centers(len(order), 0.14)
+    events = []
+    for color, (x, y) in zip(order, centers, strict=True):
+        cube = b.cube(color)
+        patch = b.patch(color)
+        b.place({patch: Pose((x, y, C.TABLE_TOP_Z + C.PATCH_THICKNESS / 2)), cube: stack_layout([cube], (x, y))[cube]})
+        events.append(OnPatch(cube, patch))
+    b.preds.append(InOrder(tuple(events)))
+    b.primitives += ["place"]
+    b.summary.append("first " + ", then ".join(f"the {c} cube on the {c} patch" for c in order))
+    b.min_separation = 0.10
+    return True
+
+
+def features_colors(text: str) -> list[tuple[int, str]]:
+    return [(m.start(), _canon_color(m.group(0))) for m in re.finditer(rf"\b({COLOR_RE})\b", text)]
+
+
+def _single_label(f: Features) -> str | None:
+    m = re.search(r"\b(?:letter|number|digit|label)\s+'?([A-Za-z0-9])'?(?![A-Za-z0-9])", f.original, re.IGNORECASE)
+    if m:
+        return m.group(1).upper()
+    for q in f.quoted:
+        if len(q.strip()) == 1:
+            return q.strip().upper()
+    return None
+
+
+def recognize_rotate(f: Features, b: Builder) -> bool:
+    m = re.search(r"\b(faces?|facing|shows?|showing|points?|pointing)\s+(up|upward|upwards|the camera|the robot|front|forward|toward the robot|toward the camera)", f.text)
+    if not m and not f.has("rotate", "rotated", "turn", "flip"):
+        return False
+    label = _single_label(f)
+    if label is None:
+        return False
+    direction = "up" if (m is None or m.group(2).startswith("up")) else "front"
+    others = [ch for ch in "ABCDEFGHIJKLMNOPQRSTUVWXYZ" if ch != label][:5] if label.isalpha() else [d for d in "0123456789" if d != label][:5]
+    faces = {"-x": label, "+x": others[0], "+y": others[1], "-y": others[2], "+z": others[3], "-z": others[4]}
+    if direction == "front":
+        faces = {"+z": label, "+x": others[0], "+y": others[1], "-y": others[2], "-x": others[3], "-z": others[4]}
+    name = b.semantic(label, faces)
+    face = "-x" if direction == "up" else "+z"
+    quat = orientation_showing(face, direction)
+    b.place({name: Pose((*C.WORKSPACE_CENTER, C.TABLE_TOP_Z + C.CUBE_EDGE / 2 + C.SPAWN_CLEARANCE), quat)})
+    b.preds.append(LabelFacing(name, label, direction))
+    b.primitives += ["rotate"]
+    b.summary.append(f"the cube shows {label!r} facing {direction}, upright")
+    return True
+
+
+def orientation_showing(face: str, direction: str) -> tuple[float, float, float, float]:
+    """Quaternion that turns a cube's local ``face`` toward ``direction``, glyph upright."""
+    import mujoco
+    import numpy as np
+
+    from rpg.domain.glyphs import FACE_NORMALS, GLYPH_UP
+    from rpg.domain.state import DIRECTIONS, READING_UP
+
+    n, u = np.array(FACE_NORMALS[face]), np.array(GLYPH_UP[face])
+    dn, du = np.array(DIRECTIONS[direction]), np.array(READING_UP[direction])
+    local = np.stack([n, u, np.cross(n, u)], axis=1)
+    world = np.stack([dn, du, np.cross(dn, du)], axis=1)
+    R = world @ local.T
+    q = np.zeros(4)
+    mujoco.mju_mat2Quat(q, R.flatten())
+    return tuple(round(float(v), 9) for v in q)
+
+
+def recognize_equation(f: Features, b: Builder) -> bool:
+    if not f.has("equation", "math", "maths", "arithmetic", "sum"):
+        return False
+    m = re.search(r"(\d\s*[+\-x*]\s*\d\s*=\s*\d+)", f.original)
+    text = re.sub(r"\s+", "", m.group(1)).replace("*", "x") if m else "3+4=7"
+    names = [b.semantic(ch) for ch in text]
+    b.place(line_layout(names))
+    b.preds += [InLine(tuple(names), order="left_to_right"), Equation(tuple(names))]
+    b.primitives += ["arrange"]
+    b.summary.append(f"the cubes read a correct equation left to right (e.g. {text})")
+    return True
+
+
+def _direction(f: Features, default: str = "left_to_right") -> str:
+    if f.has("right to left"):
+        return "right_to_left"
+    if re.search(r"\bfront to back\b", f.text):
+        return "front_to_back"
+    if re.search(r"\bback to front\b", f.text):
+        return "back_to_front"
+    return default
+
+
+def _word(f: Features) -> str | None:
+    for q in f.quoted:
+        if re.fullmatch(r"[A-Za-z]{2,}", q.strip()):
+            return q.strip().upper()
+    m = re.search(r"\b(?:spell|spells|spelling|spelled|spelt)\s+(?:out\s+)?(?:the\s+)?(?:word\s+)?'?([A-Za-z]{2,})'?", f.original, re.IGNORECASE)
+    if m and m.group(1).lower() not in VOCAB:
+        return m.group(1).upper()
+    m = re.search(r"\bword\s+'?([A-Za-z]{2,})'?", f.original, re.IGNORECASE)
+    if m:
+        return m.group(1).upper()
+    return None
+
+
+def recognize_spell(f: Features, b: Builder) -> bool:
+    word = _word(f)
+    if word is None or not f.has("spell", "spells", "spelling", "word", "read", "reads"):
+        return False
+    names = [b.semantic(ch) for ch in word]
+    if f.has("tower", "stack", "vertical", "vertically"):
+        b.place(stack_layout(list(reversed(names)), C.WORKSPACE_CENTER))
+        b.preds += [Stack(tuple(reversed(names))), Reads(tuple(names), word, "top_to_bottom", "front")]
+        b.summary.append(f"a tower whose front faces read {word!r} from top to bottom")
+        b.primitives += ["stack"]
+    else:
+        direction = _direction(f)
+        order = names if direction == "left_to_right" else list(reversed(names))
+        b.place(line_layout(order))
+        b.preds += [InLine(tuple(names), order=direction), Reads(tuple(names), word, direction)]
+        b.summary.append(f"the cubes spell {word!r} {direction.replace('_', ' ')} in a line")
+        b.primitives += ["arrange"]
+    return True
+
+
+def _explicit_labels(f: Features) -> list[str]:
+    m = re.search(r"\b([A-Z0-9])((?:\s*,\s*(?:and\s+)?[A-Z0-9]){2,})", f.original)
+    if not m:
+        return []
+    return [m.group(1)] + re.findall(r"[A-Z0-9]", m.group(2))
+
+
+def _ordering(f: Features) -> tuple[str, bool] | None:
+    """(sort key, descending) asked for, if any."""
+    desc = f.has("reverse", "reversed", "descending", "decreasing", "backwards")
+    if f.has("alphabetical", "alphabetically", "alphabet"):
+        return "label", desc
+    if f.has("numerical", "numerically", "increasing", "ascending", "decreasing", "descending", "numeric"):
+        return "number", desc
+    if f.has("gradient", "rainbow", "hue"):
+        return "color", desc
+    return None
+
+
+def recognize_pyramid(f: Features, b: Builder) -> bool:
+    if not f.has("pyramid", "pyramids"):
+        return False
+    dims_m = re.search(r"\b(\d+)x(\d+)\b", f.text)
+    if dims_m:
+        base, dims = int(dims_m.group(1)), 3
+    else:
+        m = re.search(r"base\s+(?:of\s+|is\s+|with\s+)?(\d+)", f.text) or re.search(r"(\d+)\s+(?:[a-z]+\s+){0,2}(?:block|cube)s?\s+(?:on|at|as|in)\s+(?:the\s+)?(?:base|bottom)", f.text)
+        base, dims = (int(m.group(1)) if m else 3), 2
+    if base < 2:
+        raise ParseError("a pyramid needs a base of at least 2")
+    n = sum((base - k) ** (dims - 1) for k in range(base))
+    if n > C.MAX_OBJECTS:
+        raise ParseError(f"a pyramid with base {base} needs {n} cubes; the most a task holds is {C.MAX_OBJECTS}")
+    material = _material(f)
+    order = _ordering(f)
+    _fill_structure(f, b, n, material, order, lambda names: pyramid_layout(names, base, dims))
+    names = [a.name for a in b.assets]
+    b.preds.insert(0, Pyramid(tuple(names), base=base, dims=dims))
+    b.primitives += ["stack"]
+    shape = f"{base}x{base}" if dims == 3 else str(base)
+    b.summary.insert(0, f"a {dims}D pyramid with a base of {shape} ({n} cubes)")
+    return True
+
+
+def _fill_structure(f, b, n, material, order, layout_fn, face="up"):
+    """Create n cubes of a material in reading order, lay them out, add ordering predicates."""
+    if material in ("letters", "digits"):
+        labels, strict = label_sequence(material, n, b, ordered=order is not None)
+        if order and order[1]:
+            labels = list(reversed(labels))
+        names = [b.semantic(lab) for lab in labels]
+        b.place(layout_fn(names))
+        if order:
+            key = "label" if material == "letters" else "number"
+            b.preds.append(SortedBy(tuple(names), key=key, direction="reading", descending=order[1], strict=strict, face=face))
+            b.summary.append(f"{'letters' if key == 'label' else 'digits'} {'descending' if order[1] else 'ascending'} in reading order (visible faces)")
+        return names
+    colors = list(dict.fromkeys(f.color_list()))
+    if order and order[0] == "color" or f.has("different", "assorted", "various", "mixed", "rainbow"):
+        palette = colors or list(GRADIENT_ORDER)
+        cols = [palette[i % len(palette)] for i in range(n)] if len(colors) != 1 else colors * n
+    else:
+        cols = (colors or ["red"]) * n if len(colors) <= 1 else [colors[i % len(colors)] for i in range(n)]
+    names = [b.cube(c) for c in cols[:n]]
+    b.place(layout_fn(names))
+    return names
+
+
+def recognize_cube_block(f: Features, b: Builder) -> bool:
+    m = re.search(r"\b(\d+)x(\d+)x(\d+)\b", f.text)
+    if not m:
+        return False
+    r, c, layers = (int(g) for g in m.groups())
+    n = r * c * layers
+    if n > C.MAX_OBJECTS:
+        raise ParseError(f"a {r}x{c}x{layers} block needs {n} cubes; the most a task holds is {C.MAX_OBJECTS}")
+    per_layer = f.has("row", "rows", "layer", "layers", "level", "levels") and f.has("different", "each")
+    if per_layer:
+        cols = _colors_for(layers, f, prefer=[c for c in dict.fromkeys(f.color_list())])
+        colors = [cols[lay] for lay in range(layers) for _ in range(r * c)]
+        names = [b.cube(col) for col in colors]
+    else:
+        names = _fill_structure(f, b, n, _material(f), _ordering(f), lambda ns: ns and {})
+    b.place(grid_layout(names, r, c, layers))
+    b.preds.insert(0, Grid(tuple(names), r, c, layers))
+    if per_layer:
+        b.preds.append(LayersUniform(tuple(names), by="color", axis="z"))
+        b.summary.append("each layer a different color")
+    b.primitives += ["stack"]
+    b.summary.insert(0, f"a {r}x{c}x{layers} block of {n} cubes")
+    return True
+
+
+def recognize_grid(f: Features, b: Builder) -> bool:
+    m = re.search(r"\b(\d+)x(\d+)\b", f.text)
+    if not m or not f.has("square", "grid", "rectangle", "rectangular", "array", "block", "blocks", "cubes", "arrangement", "formation"):
+        return False
+    r, c = int(m.group(1)), int(m.group(2))
+    n = r * c
+    if n > C.MAX_OBJECTS:
+        raise ParseError(f"a {r}x{c} grid needs {n} cubes; the most a task holds is {C.MAX_OBJECTS}")
+    names = _fill_structure(f, b, n, _material(f), _ordering(f), lambda ns: grid_layout(ns, r, c))
+    b.preds.insert(0, Grid(tuple(names), r, c))
+    b.primitives += ["arrange"]
+    b.summary.insert(0, f"a {r}x{c} grid of {n} touching cubes")
+    return True
+
+
+def recognize_circle(f: Features, b: Builder) -> bool:
+    if not f.has("circle", "circular", "ring", "round", "circles"):
+        return False
+    n = _count(f, default=6)
+    if n < 3:
+        raise ParseError("a circle needs at least 3 cubes")
+    names = _fill_structure(f, b, n, _material(f), None, lambda ns: circle_layout(ns))
+    b.preds.insert(0, InCircle(tuple(names)))
+    b.primitives += ["arrange"]
+    b.summary.insert(0, f"{n} cubes evenly spaced on a circle of radius {circle_radius(n) * 100:.0f} cm")
+    return True
+
+
+def recognize_piles(f: Features, b: Builder) -> bool:
+    if not f.has("pile", "piles", "bunch", "bunches", "group", "groups", "cluster", "clusters", "heap", "heaps"):
+        return False
+    material = _material(f)
+    groups: list[list[str]] = []
+    if material == "mixed" or f.has("type", "types", "kind"):
+        labels_l, _ = label_sequence("letters", 3, b, ordered=False)
+        labels_d, _ = label_sequence("digits", 3, b, ordered=False)
+        groups = [[b.semantic(lab) for lab in labels_l], [b.semantic(lab) for lab in labels_d],
+                  [b.cube(c) for c in ("red", "blue", "green")]]
+        by = "type"
+    else:
+        k = _count(f, "pile|bunch|group|cluster|heap", default=None)
+        colors = list(dict.fromkeys(f.color_list())) or _colors_for(k or 3, f, prefer=[])
+        per = _count(f, default=None)
+        per = max(2, per // len(colors)) if per else 3
+        groups = [[b.cube(c) for _ in range(per)] for c in colors]
+        by = "color"
+    centers = b.unit_centers(len(groups), 0.16)
+    b.place(cluster_layout(groups, centers))
+    names = tuple(n for g in groups for n in g)
+    b.preds.append(Piles(names, by=by))
+    b.primitives += ["arrange"]
+    b.summary.append(f"{len(groups)} separate piles, one per {'type (letters, digits, colors)' if by == 'type' else by}")
+    b.min_separation = 0.06
+    return True
+
+
+def recognize_ordered_line(f: Features, b: Builder) -> bool:
+    order = _ordering(f)
+    explicit = re.search(r"\border\s+((?:(?:" + COLOR_RE + r")\s*,?\s*(?:and\s+|then\s+)?){2,})", f.text)
+    labels = _explicit_labels(f)
+    is_line = f.has("align", "aligned", "line", "row", "arrange", "arranged", "order", "sort", "sorted") or order
+    if not is_line or f.has("stack", "tower", "on top"):
+        return False
+    direction = _direction(f)
+    if explicit:
+        colors = [_canon_color(c) for c in re.findall(COLOR_RE, explicit.group(1))]
+        names = [b.cube(c) for c in colors]
+        order_names = names if direction == "left_to_right" else list(reversed(names))
+        b.place(line_layout(order_names))
+        b.preds.append(InLine(tuple(names), order=direction))
+        b.summary.append(f"cubes in a line {direction.replace('_', ' ')}: {', '.join(colors)}")
+    elif labels:
+        names = [b.semantic(lab) for lab in labels]
+        b.place(line_layout(names if direction == "left_to_right" else list(reversed(names))))
+        b.preds += [InLine(tuple(names), order=direction), Reads(tuple(names), "".join(labels), direction)]
+        if order:
+            b.preds.append(SortedBy(tuple(names), key=order[0] if order[0] != "color" else "label", direction=direction, descending=order[1]))
+        b.summary.append(f"up faces read {', '.join(labels)} {direction.replace('_', ' ')}")
+    elif order:
+        key, desc = order
+        n = _count(f, default=4 if key != "color" else 5)
+        if key == "color":
+            colors = [c for c in dict.fromkeys(f.color_list()) if c in GRADIENT_ORDER] or list(GRADIENT_ORDER)
+            if len(colors) < n:
+                colors = list(GRADIENT_ORDER)
+            colors = sorted(colors[:n], key=GRADIENT_ORDER.index, reverse=desc)
+            names = [b.cube(c) for c in colors]
+        else:
+            material = "letters" if key == "label" else "digits"
+            labels, strict = label_sequence(material, n, b)
+            if desc:
+                labels = list(reversed(labels))
+            names = [b.semantic(lab) for lab in labels]
+        b.place(line_layout(names if direction == "left_to_right" else list(reversed(names))))
+        b.preds += [InLine(tuple(names), order=direction),
+                    SortedBy(tuple(names), key=key, direction=direction, descending=desc)]
+        what = {"label": "alphabetical", "number": "increasing numerical", "color": "color-gradient"}[key]
+        b.summary.append(f"{n} cubes in a line in {'reverse ' if desc else ''}{what} order {direction.replace('_', ' ')}")
+    else:
+        n = _count(f, default=4)
+        names = [b.cube(c) for c in _colors_for(n, f)]
+        axis = "x" if f.has("vertical", "front to back", "depth") else "y"
+        b.place(line_layout(names, axis=axis))
+        b.preds.append(InLine(tuple(names), axis=axis))
+        b.summary.append(f"{n} cubes in one straight {'left-right' if axis == 'y' else 'front-back'} line")
+    b.primitives += ["arrange"]
+    return True
+
+
+# -- relational: stacks, patches, pairwise relations ------------------------------
+
+REL_PATTERNS: list[tuple[str, str]] = [
+    (r"on (?:the )?left(?: hand)? side of|to the left of|on the left of|left of", "left_of"),
+    (r"on (?:the )?right(?: hand)? side of|to the right of|on the right of|right of", "right_of"),
+    (r"in front of", "in_front_of"),
+    (r"behind|in back of|at the back of", "behind"),
+    (r"next to|beside|adjacent to|alongside", "next_to"),
+    (r"between", "between"),
+    (r"under|underneath|beneath|below", "under"),
+    (r"on top of|onto|on to|atop|above|on", "on"),
+]
+
+
+@dataclass
+class Mention:
+    start: int
+    end: int
+    color: str | None
+    label: str | None
+    count: int
+    patch: bool = False
+    shape: str = "square"
+    each_other: bool = False
+
+
+MENTION_RE = re.compile(
+    r"(?:\b(?P<count>\d+)\s+)?(?:\b(?:the|a|an|another|one)\s+)?"
+    r"(?:(?P<color>" + COLOR_RE + r")\s+)?"
+    r"(?:(?P<pre>long|square|target|goal|designated|color-specific|colored|matching)\s+){0,3}"
+    r"(?:(?:letter|number|digit|semantic)\s+'?(?P<label>[a-z0-9])'?\s+(?:semantic\s+)?)?"
+    r"(?P<noun>patch(?:es)?|blocks?|cubes?|boxes?)\b"
+    r"|\b(?P<bare>" + COLOR_RE + r")\b(?!\s+(?:block|cube|box|patch|long|square|goal|target))"
+)
+
+
+def _mentions(text: str) -> list[Mention]:
+    out = []
+    for m in MENTION_RE.finditer(text):
+        if m.group("bare"):
+            out.append(Mention(m.start(), m.end(), _canon_color(m.group("bare")), None, 1))
+            continue
+        noun = m.group("noun")
+        plural = noun.endswith("s") and not noun.endswith("ss") or noun.endswith("es")
+        count = int(m.group("count")) if m.group("count") else (2 if plural else 1)
+        pre = m.group(0)
+        out.append(Mention(
+            m.start(), m.end(), _canon_color(m.group("color")) if m.group("color") else None,
+            m.group("label").upper() if m.group("label") else None, count,
+            patch=noun.startswith("patch"), shape="long" if "long" in pre else "square",
+        ))
+    return out
+
+
+def recognize_relational(f: Features, b: Builder) -> bool:
+    initial = _initial_clause(f.text)
+    text = f.text if initial is None else (f.text[: initial[0]] + f.text[initial[1]:]).strip()
+    stackish = f.has("stack", "stacks", "stacked", "tower", "towers", "pile up")
+    if not (stackish or any(re.search(rf"\b(?:{p})\b", text) for p, _ in REL_PATTERNS)):
+        return False
+    # towers of several stacks: "two towers", "two stacks of red blocks", "stacks on matching patches"
+    multi = re.search(r"\b(\d+)\s+(?:[a-z\-]+\s+)?(?:towers|stacks)\b", text)
+    if multi or (stackish and f.has("each stack", "matching", "color-specific", "respective", "patches", "towers", "stacks")):
+        return _multi_stacks(f, b, int(multi.group(1)) if multi else 2)
+    clauses = re.split(r"\bthen\b|;|,\s*(?:and\s+)?then\b|\.\s", text)
+    f = Features(text, f.original, features_colors(text), f.quoted)
+    objects: dict[tuple, list[str]] = {}
+    patch_names: dict[tuple, str] = {}
+    on_edges: list[tuple[str, str]] = []
+    rels: list[Predicate] = []
+    onpatch: list[tuple[str, str]] = []
+    bottom_top: dict[str, str] = {}
+
+    def obj(mn: Mention, i: int = 0) -> str:
+        if mn.patch:
+            key = ("patch", mn.color, mn.shape)
+            if key not in patch_names:
+                patch_names[key] = b.patch(mn.color or DEFAULT_PATCH_COLOR, mn.shape)
+            return patch_names[key]
+        key = ("cube", mn.color, mn.label) if (mn.color or mn.label) else ("cube", None, None, i)
+        lst = objects.setdefault(key, [])
+        if len(key) == 4:
+            i = 0
+        while len(lst) <= i:
+            lst.append(b.semantic(mn.label) if mn.label else b.cube(mn.color or _next_default(b, objects)))
+        return lst[i]
+
+    for clause in clauses:
+        ms = _mentions(clause)
+        # "with a red block on bottom and blue on top"
+        for mn in ms:
+            tail = clause[mn.end: mn.end + 22]
+            if re.match(r"\s+(?:block\s+|cube\s+)?(?:on|at)\s+(?:the\s+)?(?:bottom|base)\b", tail):
+                bottom_top.setdefault("bottom", obj(mn))
+            elif re.match(r"\s+(?:block\s+|cube\s+)?(?:on|at)\s+(?:the\s+)?top\b(?!\s+of)", tail):
+                bottom_top.setdefault("top", obj(mn))
+        rel_re = "|".join(f"(?P<r{i}>\\b(?:{p})\\b)" for i, (p, _) in enumerate(REL_PATTERNS))
+        for rm in re.finditer(rel_re, clause):
+            kind = next(REL_PATTERNS[i][1] for i in range(len(REL_PATTERNS)) if rm.group(f"r{i}"))
+            left = [m for m in ms if m.end <= rm.start() and not m.patch]
+            right = [m for m in ms if m.start >= rm.end()]
+            after = clause[rm.end():].strip()
+            if kind == "on" and re.match(r"(?:the\s+)?(?:table|bottom|base|top\b(?!\s+of))", after):
+                continue
+            if kind == "on" and re.match(r"each other|one another|top of each other|itself", after):
+                if left:
+                    mn = left[-1]
+                    n = max(mn.count, 2)
+                    names = [obj(mn, i) for i in range(n)]
+                    on_edges += [(u, lo) for lo, u in zip(names, names[1:], strict=False)]
+                continue
+            if not left or not right:
+                if kind == "on" and stackish and right and right[0].patch:
+                    onpatch.append(("*", obj(right[0])))
+                continue
+            a_m, b_m = left[-1], right[0]
+            if kind == "on" and b_m.patch and stackish:
+                onpatch.append(("*", obj(b_m)))
+                continue
+            if kind == "on" and b_m.patch:
+                for i in range(a_m.count):
+                    onpatch.append((obj(a_m, i), obj(b_m)))
+                continue
+            a, c = obj(a_m), obj(b_m)
+            if kind == "on":
+                on_edges.append((a, c))
+            elif kind == "under":
+                on_edges.append((c, a))
+            elif kind == "between":
+                if len(right) < 2:
+                    continue
+                rels.append(Between(a, c, obj(right[1])))
+            else:
+                cls = {"left_of": LeftOf, "right_of": RightOf, "in_front_of": InFrontOf, "behind": Behind, "next_to": NextTo}[kind]
+                rels.append(cls(a, c))
+    if "bottom" in bottom_top and "top" in bottom_top:
+        on_edges.append((bottom_top["top"], bottom_top["bottom"]))
+    # a bare "stack N blocks" / "stack blocks on the patch"
+    if stackish and not on_edges:
+        ms = [m for m in _mentions(text) if not m.patch]
+        n = _count(f, default=None) or (max(m.count for m in ms) if ms else 2)
+        n = max(n, 2)
+        if ms and ms[0].color and all(m.color == ms[0].color for m in ms):
+            names = [obj(ms[0], i) for i in range(n)]
+        else:
+            cols = _colors_for(n, f)
+            names = [obj(Mention(0, 0, c, None, 1)) for c in cols]
+        on_edges += [(u, lo) for lo, u in zip(names, names[1:], strict=False)]
+    if not on_edges and not rels and not onpatch:
+        return False
+    if any(a == "*" for a, _ in onpatch) or (stackish and onpatch):
+        target = onpatch[0][1]
+        onpatch = [(a, p) for a, p in onpatch if a != "*"]
+        chains = _chains(on_edges)
+        if chains:
+            onpatch.append((chains[0][0], target))
+    # cubes that are only on patches (place both blocks onto the patch)
+    chains = _chains(on_edges)
+    if chains is None:
+        raise ParseError("the stacking relations contradict each other (a cycle: something would be on itself)")
+    _layout_relational(b, chains, rels, onpatch)
+    for ch in chains:
+        b.preds.append(Stack(tuple(ch)) if len(ch) > 1 else OnTable(ch[0]))
+        if len(ch) > 1:
+            b.summary.append("tower bottom to top: " + ", ".join(ch))
+    b.preds += rels
+    for a, p in onpatch:
+        b.preds.append(OnPatch(a, p))
+        b.summary.append(f"{a} on {p}")
+    b.summary += [r.describe() for r in rels]
+    b.primitives += ["stack"] if any(len(c) > 1 for c in chains) else ["place"]
+    if initial is not None:
+        by_color = {a.color: a.name for a in b.assets if a.kind == "colored_cube"}
+        bottom, top = initial[2], initial[3]
+        if bottom not in by_color or top not in by_color:
+            raise ParseError(f"the initial state names a {top if top not in by_color else bottom} cube the task does not have")
+        b.structures.append([by_color[bottom], by_color[top]])
+        b.summary.append(f"initially {top} is stacked on {bottom}")
+    return True
+
+
+def _next_default(b: Builder, objects: dict) -> str:
+    used = {k[1] for k in objects if k[0] == "cube"} | {a.color for a in b.assets}
+    return next(c for c in DEFAULT_COLORS if c not in used)
+
+
+def _chains(edges: list[tuple[str, str]]) -> list[list[str]] | None:
+    """Support chains bottom to top from (upper, lower) edges; None if they contradict."""
+    import networkx as nx
+
+    g = nx.DiGraph()
+    for up, lo in edges:
+        if up == lo:
+            return None
+        g.add_edge(lo, up)
+    if not nx.is_directed_acyclic_graph(g) or any(g.out_degree(n) > 1 or g.in_degree(n) > 1 for n in g):
+        return None
+    chains = []
+    for n in sorted(g.nodes):
+        if g.in_degree(n) == 0:
+            ch = [n]
+            while g.out_degree(ch[-1]):
+                ch.append(next(iter(g.successors(ch[-1]))))
+            chains.append(ch)
+    return chains
+
+
+def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch: list[tuple[str, str]]) -> None:
+    """Place stacks, related cubes and patches so every relation holds."""
+    placed: dict[str, tuple[float, float]] = {}
+    base_of = {n: ch[0] for ch in chains for n in ch}
+    cube_names = [a.name for a in b.assets if a.kind != "goal_patch"]
+    for n in cube_names:
+        base_of.setdefault(n, n)
+    offset = {"left_of": (0.0, 0.10), "right_of": (0.0, -0.10), "in_front_of": (-0.10, 0.0), "behind": (0.10, 0.0), "next_to": (0.0, 0.06)}
+    cx, cy = C.WORKSPACE_CENTER
+    for r in rels:
+        a, c = base_of[r.a], base_of[r.b]
+        if isinstance(r, Between):
+            c2 = base_of[r.c]
+            placed.setdefault(a, (cx, cy))
+            ax, ay = placed[a]
+            placed.setdefault(c, (ax, ay + 0.08))
+            placed.setdefault(c2, (ax, ay - 0.08))
+            continue
+        dx, dy = offset[r.name]
+        if c not in placed and a not in placed:
+            placed[c] = (cx - dx / 2, cy - dy / 2)
+        if c in placed and a not in placed:
+            placed[a] = (placed[c][0] + dx, placed[c][1] + dy)
+        elif a in placed and c not in placed:
+            placed[c] = (placed[a][0] - dx, placed[a][1] - dy)
+    patches = sorted({p for _, p in onpatch})
+    patch_xy = {}
+    pc = b.unit_centers(len(patches), 0.16) if patches else []
+    for p, xy in zip(patches, pc, strict=True):
+        patch_xy[p] = xy
+        b.place({p: Pose((xy[0], xy[1], C.TABLE_TOP_Z + C.PATCH_THICKNESS / 2))})
+    on_patch_by: dict[str, list[str]] = {}
+    for a, p in onpatch:
+        on_patch_by.setdefault(p, []).append(base_of[a])
+    for p, members in on_patch_by.items():
+        members = list(dict.fromkeys(members))
+        px, py = patch_xy[p]
+        shape = next(a.shape for a in b.assets if a.name == p)
+        span = (C.LONG_PATCH_SIZE[1] if shape == "long" else C.PATCH_SIZE[1]) - C.CUBE_EDGE
+        for i, m in enumerate(members):
+            off = 0.0 if len(members) == 1 else (i / (len(members) - 1) - 0.5) * min(span, C.CUBE_EDGE * 1.2 * (len(members) - 1))
+            placed[m] = (px, py + off)
+    free = [n for n in dict.fromkeys(base_of[n] for n in cube_names) if n not in placed]
+    spots = iter(_free_spots(list(placed.values()) + list(patch_xy.values()), len(free)))
+    for n in free:
+        placed[n] = next(spots)
+    for ch in chains:
+        b.place(stack_layout(ch, placed[ch[0]]))
+    for n in cube_names:
+        if n not in b.layout:
+            b.place(stack_layout([n], placed[base_of[n]]))
+
+
+def _free_spots(occupied: list[tuple[float, float]], n: int) -> list[tuple[float, float]]:
+    cands = [(x, y) for x in (0.55, 0.47, 0.63) for y in (0.0, 0.12, -0.12, 0.2, -0.2, 0.06, -0.06)]
+    out = []
+    for x, y in cands:
+        if all(math.hypot(x - ox, y - oy) >= 0.09 for ox, oy in occupied + out):
+            out.append((x, y))
+        if len(out) == n:
+            break
+    if len(out) < n:
+        raise ParseError("too many objects to lay out on the table")
+    return out
+
+
+def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
+    colors = list(dict.fromkeys(f.color_list()))
+    height = _count(f, "block|cube", default=None)
+    matching = f.has("matching", "same color", "color-specific", "respective", "each stack is the same", "colored goal")
+    with_patches = f.has("patch", "patches", "target", "targets")
+    if height and height >= 2 * k:
+        height = height // k
+    height = height if height and height >= 2 else 2
+    if len(colors) == 1 and not with_patches:
+        stack_colors = [[colors[0]] * height for _ in range(k)]
+    else:
+        palette = _colors_for(k, f, prefer=colors)
+        stack_colors = [[c] * height for c in palette] if (matching or with_patches or len(colors) <= 1) else [
+            _colors_for(height, f) for _ in range(k)]
+    centers = b.unit_centers(k, 0.16)
+    for cols, xy in zip(stack_colors, centers, strict=True):
+        names = [b.cube(c) for c in cols]
+        b.place(stack_layout(names, xy))
+        b.preds.append(Stack(tuple(names)))
+        if with_patches:
+            p = b.patch(cols[0])
+            b.place({p: Pose((xy[0], xy[1], C.TABLE_TOP_Z + C.PATCH_THICKNESS / 2))})
+            b.preds.append(OnPatch(names[0], p))
+    b.primitives += ["stack"]
+    b.summary.append(f"{k} towers of {height} cubes" + (", each on the patch of its color" if with_patches else ""))
+    return True
+
+
+RECOGNIZERS = (
+    recognize_temporal, recognize_rotate, recognize_equation, recognize_spell, recognize_pyramid,
+    recognize_cube_block, recognize_grid, recognize_circle, recognize_piles, recognize_ordered_line,
+    recognize_relational,
+)
+
+
+def parse(instruction: str) -> TaskSchema:
+    """Read an instruction into a TaskSchema.
+
+    Raises:
+        ParseError: the instruction is empty, too long, has words outside the domain, or
+            describes no task the parser knows (message quotes the problem, suggests --model).
+        UnknownColorError / UnknownLabelError: an unknown colour or label.
+    """
+    f = features(instruction)
+    for recognize in RECOGNIZERS:
+        b = Builder(f.original)
+        b.repairs = []
+        if recognize(f, b):
+            schema = b.schema(_slug(f.original))
+            schema.repairs = b.repairs
+            return schema
+    raise ParseError(
+        f"could not find a task in \"{f.original[:80]}\": name a structure (tower, line, circle, grid, "
+        "pyramid, piles), a relation (on, left of, behind...) or a goal (spell, sort, rotate); "
+        "or use --model to let a language model read it"
+    )

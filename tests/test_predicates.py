@@ -1,0 +1,240 @@
+"""Each predicate satisfied and violated on constructed states."""
+
+import math
+
+import pytest
+
+from rpg.domain import constants as C
+from rpg.domain.predicates import (
+    And, Behind, Between, Equation, Grid, InCircle, InFrontOf, InLine, InOrder, LabelFacing,
+    LayersUniform, LeftOf, NextTo, Not, On, OnPatch, OnTable, Piles, Pyramid, Reads, RightOf,
+    SortedBy, Stack, Upright, equation_holds, evaluate_goal, from_dict,
+)
+from rpg.domain.state import ObjectState, yaw_quat
+from tests.helpers import E, Z0, cube, state
+import numpy as np
+
+
+def patch(name, x, y, size=(0.08, 0.08)):
+    return ObjectState(name=name, kind="goal_patch", pos=np.array([x, y, C.TABLE_TOP_Z]), size=(*size, 0.001), color="green")
+
+
+def test_on_and_on_table():
+    s = state(cube("a", 0.5, 0, Z0 + E), cube("b", 0.5, 0.005))
+    assert On("a", "b").evaluate(s)
+    assert OnTable("b").evaluate(s)
+    assert not OnTable("a").evaluate(s)
+    r = On("b", "a").evaluate(s)
+    assert not r and r.measured["z_gap"] < 0
+    off = state(cube("a", 0.5 + 0.03, 0, Z0 + E), cube("b", 0.5, 0))
+    assert not On("a", "b").evaluate(off)
+
+
+def test_on_patch():
+    s = state(cube("a", 0.6, 0.1), patch("p", 0.61, 0.11))
+    assert OnPatch("a", "p").evaluate(s)
+    s2 = state(cube("a", 0.6, 0.0), patch("p", 0.61, 0.11))
+    r = OnPatch("a", "p").evaluate(s2)
+    assert not r and r.measured["overhang"] > 0
+    lifted = state(cube("a", 0.6, 0.1, Z0 + E), patch("p", 0.6, 0.1))
+    assert not OnPatch("a", "p").evaluate(lifted)
+
+
+@pytest.mark.parametrize("pred,good,bad", [
+    (LeftOf, (0.5, 0.1), (0.5, -0.1)),
+    (RightOf, (0.5, -0.1), (0.5, 0.1)),
+    (InFrontOf, (0.42, 0.0), (0.6, 0.0)),
+    (Behind, (0.6, 0.0), (0.42, 0.0)),
+])
+def test_pairwise_relations(pred, good, bad):
+    ref = cube("b", 0.5, 0.0)
+    assert pred("a", "b").evaluate(state(cube("a", *good), ref))
+    assert not pred("a", "b").evaluate(state(cube("a", *bad), ref))
+
+
+def test_left_is_plus_y():
+    assert LeftOf("a", "b").evaluate(state(cube("a", 0.5, 0.2), cube("b", 0.5, -0.2)))
+
+
+def test_next_to_and_between():
+    s = state(cube("a", 0.5, 0.0), cube("b", 0.5, 0.05), cube("c", 0.5, 0.1))
+    assert NextTo("a", "b").evaluate(s)
+    assert not NextTo("a", "c").evaluate(state(cube("a", 0.5, 0.0), cube("c", 0.5, 0.2)))
+    assert Between("b", "a", "c").evaluate(s)
+    assert not Between("a", "b", "c").evaluate(s)
+
+
+def test_in_line_with_order():
+    objs = [cube("r", 0.55, 0.1), cube("g", 0.55, 0.0, color="green"), cube("b", 0.55, -0.1, color="blue")]
+    s = state(*objs)
+    assert InLine(("r", "g", "b"), order="left_to_right").evaluate(s)
+    assert not InLine(("b", "g", "r"), order="left_to_right").evaluate(s)
+    assert InLine(("b", "g", "r"), order="right_to_left").evaluate(s)
+    bent = state(cube("r", 0.55, 0.1), cube("g", 0.6, 0.0, color="green"), cube("b", 0.55, -0.1, color="blue"))
+    assert not InLine(("r", "g", "b")).evaluate(bent)
+
+
+def test_in_circle():
+    pts = [cube(f"c{i}", 0.55 + 0.08 * math.cos(a), 0.08 * math.sin(a)) for i, a in enumerate(np.linspace(0, 2 * math.pi, 6, endpoint=False))]
+    names = tuple(o.name for o in pts)
+    assert InCircle(names).evaluate(state(*pts))
+    line = [cube(f"c{i}", 0.55, -0.1 + 0.05 * i) for i in range(6)]
+    assert not InCircle(names).evaluate(state(*line))
+
+
+def test_stack_accepts_interchangeable_cubes_only():
+    s = state(cube("r", 0.5, 0), cube("b", 0.5, 0, Z0 + E, color="blue"), cube("g", 0.5, 0, Z0 + 2 * E, color="green"))
+    assert Stack(("r", "b", "g")).evaluate(s)
+    r = Stack(("b", "r", "g")).evaluate(s)
+    assert not r and any(c.name == "stack_order" and not c.satisfied for c in r.children)
+    same = state(cube("r1", 0.5, 0), cube("r2", 0.5, 0, Z0 + E))
+    assert Stack(("r2", "r1")).evaluate(same)  # two red cubes may trade places
+
+
+def test_grid_and_cube_block():
+    objs = [cube(f"c{i}", 0.5 + (i // 3) * E, (i % 3) * E) for i in range(9)]
+    names = tuple(o.name for o in objs)
+    assert Grid(names, 3, 3).evaluate(state(*objs))
+    moved = objs[:8] + [cube("c8", 0.65, 0.2)]
+    assert not Grid(names, 3, 3).evaluate(state(*moved))
+    block = [cube(f"k{i}", 0.5 + (i // 3 % 3) * E, (i % 3) * E, Z0 + (i // 9) * E) for i in range(27)]
+    bn = tuple(o.name for o in block)
+    assert Grid(bn, 3, 3, 3).evaluate(state(*block))
+    assert not Grid(bn, 3, 3, 2).evaluate(state(*block))
+
+
+def _pyramid3(base=3):
+    objs = []
+    for k in range(base):
+        m = base - k
+        for r in range(m):
+            for c in range(m):
+                objs.append(cube(f"p{len(objs)}", 0.5 + (k / 2 + r) * E, -(k / 2 + c) * E, Z0 + k * E))
+    return objs
+
+
+def test_pyramid_2d_and_3d():
+    wall = []
+    for k in range(3):
+        for c in range(3 - k):
+            wall.append(cube(f"w{len(wall)}", 0.55, -(k / 2 + c) * E, Z0 + k * E))
+    assert Pyramid(tuple(o.name for o in wall), base=3, dims=2).evaluate(state(*wall))
+    flat = [cube(o.name, 0.55, -0.05 * i) for i, o in enumerate(wall)]
+    assert not Pyramid(tuple(o.name for o in wall), base=3, dims=2).evaluate(state(*flat))
+    p3 = _pyramid3()
+    assert len(p3) == 14
+    assert Pyramid(tuple(o.name for o in p3), base=3, dims=3).evaluate(state(*p3))
+    assert not Pyramid(tuple(o.name for o in p3), base=3, dims=2).evaluate(state(*p3))
+
+
+def test_piles_by_color_and_groups():
+    objs = [cube("r1", 0.45, 0.15), cube("r2", 0.45, 0.2), cube("b1", 0.65, -0.15, color="blue"), cube("b2", 0.65, -0.2, color="blue")]
+    names = tuple(o.name for o in objs)
+    assert Piles(names, by="color").evaluate(state(*objs))
+    mixed = [cube("r1", 0.45, 0.15), cube("r2", 0.65, -0.2), cube("b1", 0.65, -0.15, color="blue"), cube("b2", 0.45, 0.2, color="blue")]
+    assert not Piles(names, by="color").evaluate(state(*mixed))
+    assert Piles(groups=(("r1", "b2"), ("r2", "b1"))).evaluate(state(*mixed))
+
+
+def test_layers_uniform():
+    objs = [cube(f"c{i}", 0.5, 0.0 - E * (i % 2), Z0 + E * (i // 2), color=["red", "blue"][i // 2]) for i in range(4)]
+    names = tuple(o.name for o in objs)
+    assert LayersUniform(names).evaluate(state(*objs))
+    objs[0] = cube("c0", 0.5, 0.0, color="blue")
+    assert not LayersUniform(names).evaluate(state(*objs))
+
+
+def test_reads_and_visibility():
+    word = [cube(f"l{i}", 0.55, 0.1 - 0.05 * i, label=ch) for i, ch in enumerate("CAT")]
+    names = tuple(o.name for o in word)
+    s = state(*word)
+    assert Reads(names, "CAT").evaluate(s)
+    assert not Reads(names, "TAC").evaluate(s)
+    assert Reads(names, "TAC", direction="right_to_left").evaluate(s)
+    hidden = {(o.name, f): True for o in word for f in ("+x", "-x", "+y", "-y", "-z")}
+    assert not Reads(names, "CAT").evaluate(state(*word, visible=hidden))  # top faces occluded
+    turned = [cube(o.name, *o.pos[:2], label=o.label, quat=yaw_quat(math.pi)) for o in word]
+    r = Reads(names, "CAT").evaluate(state(*turned))
+    assert not r and len(r.measured["unreadable"]) == 3  # glyphs upside down from the camera
+
+
+def test_equation():
+    eq = [cube(f"e{i}", 0.55, 0.12 - 0.05 * i, label=ch) for i, ch in enumerate("8-3=5")]
+    names = tuple(o.name for o in eq)
+    assert Equation(names).evaluate(state(*eq))
+    assert not Equation(names, direction="right_to_left").evaluate(state(*eq))
+    assert equation_holds("2x3=6") and not equation_holds("2+2=5") and not equation_holds("==")
+
+
+def test_sorted_by_label_number_color():
+    letters = [cube(f"l{i}", 0.55, 0.1 - 0.05 * i, label=ch) for i, ch in enumerate("ABD")]
+    names = tuple(o.name for o in letters)
+    assert SortedBy(names).evaluate(state(*letters))
+    assert SortedBy(names, descending=True, direction="right_to_left").evaluate(state(*letters))
+    assert not SortedBy(names, descending=True).evaluate(state(*letters))
+    digits = [cube(f"d{i}", 0.55, 0.1 - 0.05 * i, label=ch) for i, ch in enumerate("192")]
+    assert not SortedBy(tuple(o.name for o in digits), key="number").evaluate(state(*digits))
+    colors = [cube(c, 0.55, 0.1 - 0.05 * i, color=c) for i, c in enumerate(["red", "yellow", "blue"])]
+    assert SortedBy(("red", "yellow", "blue"), key="color").evaluate(state(*colors))
+    assert not SortedBy(("red", "yellow", "blue"), key="color", direction="right_to_left").evaluate(state(*colors))
+
+
+def test_label_facing_and_upright():
+    faces = {"+x": "A", "-x": "C", "+y": "D", "-y": "E", "+z": "F", "-z": "B"}
+    o = ObjectState("c", "semantic_cube", np.array([0.5, 0, Z0]), face_labels=faces, label="A")
+    assert LabelFacing("c", "F", "up").evaluate(state(o))
+    assert LabelFacing("c", "C", "front").evaluate(state(o))
+    assert not LabelFacing("c", "B", "up").evaluate(state(o))
+    flipped = ObjectState("c", "semantic_cube", np.array([0.5, 0, Z0]), quat=np.array([0.0, 1.0, 0.0, 0.0]), face_labels=faces, label="A")
+    r = LabelFacing("c", "B", "up").evaluate(state(flipped))
+    assert r, r.reason  # rotating pi about x brings -z up with its glyph up still along +x
+    assert Upright("c").evaluate(state(o)) and not Upright("c").evaluate(state(flipped))
+
+
+def test_composites_and_temporal_monitor():
+    a_on_b = On("a", "b")
+    s_apart = state(cube("a", 0.5, 0.1), cube("b", 0.5, 0.0))
+    s_on = state(cube("a", 0.5, 0.0, Z0 + E), cube("b", 0.5, 0.0))
+    assert Not(a_on_b).evaluate(s_apart) and not Not(a_on_b).evaluate(s_on)
+    r = And([a_on_b, OnTable("b")]).evaluate(s_apart)
+    assert not r and [x.name for x in r.unsatisfied_list] == ["on"] and [x.name for x in r.satisfied_list] == ["on_table"]
+    first = OnPatch("a", "p1")
+    then = OnPatch("b", "p2")
+    goal = InOrder((first, then))
+    p1, p2 = patch("p1", 0.45, 0.15), patch("p2", 0.65, -0.15)
+    frames = [
+        state(cube("a", 0.55, 0.0), cube("b", 0.55, 0.1), p1, p2),
+        state(cube("a", 0.45, 0.15), cube("b", 0.55, 0.1), p1, p2),
+        state(cube("a", 0.45, 0.15), cube("b", 0.65, -0.15), p1, p2),
+    ]
+    mon = goal.monitor()
+    for f in frames:
+        mon.update(f)
+    assert mon.result()
+    wrong = goal.monitor()
+    for f in [frames[0], state(cube("a", 0.55, 0.0), cube("b", 0.65, -0.15), p1, p2), frames[2]]:
+        wrong.update(f)
+    assert not wrong.result() and goal.evaluate(frames[2])
+
+
+def test_evaluate_goal_swaps_interchangeable_objects():
+    objs = [cube("r1", 0.45, 0.1), cube("r2", 0.45, 0.1, Z0 + E), cube("r3", 0.6, -0.1), cube("r4", 0.6, -0.1, Z0 + E)]
+    goal = And([Stack(("r1", "r3")), Stack(("r2", "r4"))])
+    assert not goal.evaluate(state(*objs))
+    assert evaluate_goal(goal, state(*objs))
+    blue = [cube("r1", 0.45, 0.1), cube("r2", 0.45, 0.1, Z0 + E, color="blue"), cube("r3", 0.6, -0.1), cube("r4", 0.6, -0.1, Z0 + E, color="blue")]
+    assert not evaluate_goal(And([Stack(("r1", "r3")), Stack(("r2", "r4"))]), state(*blue))
+
+
+def test_round_trip_and_diagnostics_are_json():
+    g = And([Stack(("a", "b")), InOrder((OnPatch("a", "p"),)), Piles(groups=(("a",), ("b",))), SortedBy(("a", "b"), key="color")])
+    assert from_dict(g.to_dict()) == g
+    assert eval(repr(g), {**{c.__name__: c for c in (And, Stack, InOrder, OnPatch, Piles, SortedBy)}}) == g
+    import json
+    r = On("a", "b").evaluate(state(cube("a", 0.5, 0, Z0 + E), cube("b", 0.5, 0)))
+    doc = json.loads(json.dumps(r.to_json()))
+    assert doc["satisfied"] and doc["tolerance"]["xy_offset"] == C.ON_XY_TOL
+    with pytest.raises(ValueError, match="unknown predicate"):
+        from_dict({"predicate": "levitate"})
+    with pytest.raises(KeyError, match="objects are"):
+        On("zz", "b").evaluate(state(cube("b", 0.5, 0)))
