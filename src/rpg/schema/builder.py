@@ -121,6 +121,6 @@ def make_paraphrases(summary: str) -> list[str]:
     low = s[0].lower() + s[1:] if s else s
     return [
         f"{s[0].upper() + s[1:]}.",
-        f"Your task: {low}.",
-        f"Could you make it so that {low}?",
+        f"Goal: {low}.",
+        f"Arrange the cubes so that the final scene shows {low}.",
     ]

@@ -174,8 +174,9 @@ def _count(f: Features, nouns: str = "block|cube|box|piece|object", default: int
 
 
 def _slug(text: str) -> str:
-    words = re.findall(r"[a-z0-9]+", text.lower())
-    return "_".join(words[:8]) or "task"
+    drop = {"a", "an", "the", "can", "you", "please", "so", "that", "of", "this", "it", "its", "is"}
+    words = [w for w in re.findall(r"[a-z0-9]+", text.lower()) if w not in drop]
+    return ("_".join(words[:7]) or "task").lstrip("0123456789_") or "task"
 
 
 def _colors_for(n: int, f: Features, prefer: list[str] | None = None) -> list[str]:

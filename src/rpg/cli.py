@@ -1,0 +1,215 @@
+"""The ``rpg`` command line: a thin layer over :mod:`rpg.compiler`.
+
+Exit codes: 0 success; 1 validation failed after repair; 2 bad input or usage;
+3 model provider error.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+from pathlib import Path
+from typing import Annotated
+
+import typer
+from rich.console import Console
+
+from rpg._version import __version__
+
+EXIT_OK, EXIT_INVALID, EXIT_BAD_INPUT, EXIT_PROVIDER = 0, 1, 2, 3
+
+app = typer.Typer(
+    add_completion=False,
+    no_args_is_help=True,
+    help=(
+        "rpg: compile natural-language instructions into reproducible MuJoCo block-manipulation tasks.\n\n"
+        "Exit codes: 0 success, 1 validation failed after repair, 2 bad input or usage, 3 model provider error."
+    ),
+)
+out = Console()
+err = Console(stderr=True)
+
+
+def _fail(message: str, code: int = EXIT_BAD_INPUT) -> None:
+    err.print(f"[bold red]error:[/] {message}", highlight=False, soft_wrap=True)
+    raise typer.Exit(code)
+
+
+def _version(value: bool) -> None:
+    if value:
+        out.print(f"rpg {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def main_options(
+    version: Annotated[bool, typer.Option("--version", callback=_version, is_eager=True, help="Show the version.")] = False,
+) -> None:
+    """rpg command line."""
+
+
+def _bad_input_errors():
+    from rpg.compiler import ArtifactError
+    from rpg.domain.glyphs import UnknownLabelError
+    from rpg.domain.palette import UnknownColorError
+    from rpg.domain.scene import SceneError
+    from rpg.schema.builtin import ParseError
+    from rpg.schema.feasibility import InfeasibleTask
+
+    return (ParseError, InfeasibleTask, UnknownColorError, UnknownLabelError, ArtifactError, SceneError, ValueError)
+
+
+@app.command("compile")
+def compile_cmd(
+    instruction: Annotated[str, typer.Argument(help="The task, in plain language.")],
+    output: Annotated[Path, typer.Option("-o", "--output", help="Library directory to write the task into.")] = Path("out"),
+    seed: Annotated[int, typer.Option("--seed", help="Seed of the episode shown in the snapshots and checks.")] = 0,
+    model: Annotated[str | None, typer.Option("--model", help="'builtin' (default) or a litellm model name.")] = None,
+    disable: Annotated[list[str], typer.Option("--disable", help="Switch a gate off (ablation).")] = [],  # noqa: B006
+    as_json: Annotated[bool, typer.Option("--json", help="Print one JSON document.")] = False,
+) -> None:
+    """Compile INSTRUCTION into a validated task artifact OUTPUT/<slug>/."""
+    from rpg.compiler import compile_instruction
+
+    model = model or os.environ.get("RPG_MODEL") or None
+    try:
+        result = compile_instruction(instruction, output, seed, frozenset(disable), model)
+    except NotImplementedError as exc:
+        _fail(str(exc))
+    except _bad_input_errors() as exc:
+        _fail(str(exc))
+    if as_json:
+        print(json.dumps(result.to_json(), indent=2))
+    else:
+        status = "[green]valid[/]" if result.valid else "[red]rejected[/]"
+        out.print(f"{status} task [bold]{result.schema.name}[/]: {result.schema.goal_summary}", highlight=False)
+        for g in result.gates:
+            mark = {"pass": "[green]pass[/]", "fail": "[red]FAIL[/]", "skipped": "[yellow]skip[/]"}[g["status"]]
+            out.print(f"  {g['gate']:<11} {mark} {g.get('message', '')}", highlight=False)
+        for r in result.schema.repairs:
+            out.print(f"  repair {r.operator}: {r.reason}", highlight=False)
+        out.print(f"artifact:  {result.path}")
+        for k in ("initial", "goal"):
+            if (result.path / f"{k}.png").exists():
+                out.print(f"snapshot:  {result.path / (k + '.png')}")
+    raise typer.Exit(EXIT_OK if result.valid else EXIT_INVALID)
+
+
+@app.command("validate")
+def validate_cmd(
+    directory: Annotated[Path, typer.Argument(help="A task artifact directory.")],
+    disable: Annotated[list[str], typer.Option("--disable", help="Switch a gate off.")] = [],  # noqa: B006
+    as_json: Annotated[bool, typer.Option("--json")] = False,
+) -> None:
+    """Re-run every gate on an artifact (e.g. after a hand edit)."""
+    from rpg.compiler import revalidate
+
+    try:
+        result = revalidate(directory, frozenset(disable))
+    except _bad_input_errors() as exc:
+        _fail(str(exc))
+    if as_json:
+        print(json.dumps(result.to_json(), indent=2))
+    else:
+        for line in result.log:
+            out.print(line, highlight=False)
+    raise typer.Exit(EXIT_OK if result.valid else EXIT_INVALID)
+
+
+def _worker(req: dict) -> dict:
+    from rpg.compiler import load_artifact
+    from rpg.validate.sandbox import WorkerError, run_worker
+    from rpg.validate.static import StaticViolation, check_source
+
+    d = Path(req["dir"])
+    try:
+        load_artifact(d)
+        for fname in ("code.py", "goal_state_code.py"):
+            check_source((d / fname).read_text(), fname)
+        doc = run_worker({**req, "dir": str(d.resolve())})
+    except StaticViolation as exc:
+        _fail(f"task code rejected: {exc}", EXIT_INVALID)
+    except WorkerError as exc:
+        _fail(str(exc), EXIT_INVALID)
+    except _bad_input_errors() as exc:
+        _fail(str(exc))
+    if not doc["ok"]:
+        if "SceneError" in doc["error"] or "KeyError" in doc["error"]:
+            _fail(doc["error"].split(": ", 1)[-1])
+        _fail(f"task code failed: {doc['error']}", EXIT_INVALID)
+    return doc["result"]
+
+
+def _print_block(block: dict, as_json: bool) -> None:
+    if as_json:
+        print(json.dumps(block, indent=2))
+        return
+    out.print(f"success: {block['success']}")
+    for o in block["objects"]:
+        pos = ", ".join(f"{v:.3f}" for v in o["position"])
+        out.print(f"  {o['name']:<16} {o['kind']:<14} ({pos})", highlight=False)
+    for p in block["predicates"]:
+        mark = "[green]ok[/]" if p["satisfied"] else "[red]no[/]"
+        out.print(f"  {mark} {p['reason']}", highlight=False)
+
+
+@app.command("inspect")
+def inspect_cmd(
+    directory: Annotated[Path, typer.Argument(help="A task artifact directory.")],
+    state: Annotated[str, typer.Option("--state", help="initial or goal")] = "initial",
+    seed: Annotated[int, typer.Option("--seed")] = 0,
+    settle: Annotated[int, typer.Option("--settle", help="Zero-action steps before reading the state.")] = 50,
+    as_json: Annotated[bool, typer.Option("--json")] = False,
+) -> None:
+    """Print objects, success and predicates of the initial or goal state."""
+    if state not in ("initial", "goal"):
+        _fail("--state must be 'initial' or 'goal'")
+    _print_block(_worker({"op": "inspect", "dir": str(directory), "state": state, "seed": seed, "settle": settle}), as_json)
+
+
+@app.command("check")
+def check_cmd(
+    directory: Annotated[Path, typer.Argument(help="A task artifact directory.")],
+    poses: Annotated[Path, typer.Option("--poses", help="JSON: object name -> {position, quaternion}.")],
+    settle: Annotated[int, typer.Option("--settle")] = 0,
+    as_json: Annotated[bool, typer.Option("--json")] = False,
+) -> None:
+    """Evaluate the success predicate on given poses."""
+    try:
+        doc = json.loads(poses.read_text())
+    except (OSError, json.JSONDecodeError) as exc:
+        _fail(f"cannot read poses from {poses}: {exc}")
+    objects = doc.get("objects", doc) if isinstance(doc, dict) else None
+    if not isinstance(objects, dict):
+        _fail(f"{poses} must map object names to {{'position': [x, y, z], 'quaternion': [w, x, y, z]}}")
+    _print_block(_worker({"op": "check", "dir": str(directory), "poses": objects, "settle": settle}), as_json)
+
+
+@app.command("render")
+def render_cmd(
+    directory: Annotated[Path, typer.Argument(help="A task artifact directory.")],
+    seed: Annotated[int, typer.Option("--seed")] = 0,
+) -> None:
+    """Re-render initial.png and goal.png."""
+    res = _worker({"op": "render", "dir": str(directory), "seed": seed})
+    for k, v in res.items():
+        out.print(f"{k}: {v or 'skipped (no headless OpenGL)'}")
+
+
+@app.command("schema")
+def schema_cmd(
+    output: Annotated[Path, typer.Option("-o", "--output")] = Path("schemas/task.schema.json"),
+) -> None:
+    """Write the TaskSchema JSON Schema."""
+    from rpg.schema.model import export_json_schema
+
+    output.write_text(export_json_schema())
+    out.print(f"wrote {output}")
+
+
+def main() -> None:
+    try:
+        app()
+    except KeyboardInterrupt:
+        sys.exit(130)

@@ -1,0 +1,257 @@
+"""The compiler: instruction -> schema -> code -> validate -> repair -> task artifact.
+
+Python API::
+
+    from rpg.compiler import compile_instruction
+    result = compile_instruction("Stack the red block on the blue block", out_dir="library")
+    result.path, result.valid
+
+An artifact directory holds ``task.yaml``, ``code.py``, ``goal_state_code.py``,
+``validation.log``, ``validation.json``, ``initial.png`` and ``goal.png``.  It appears whole
+or not at all: it is written to a temporary directory and renamed into place.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import shutil
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import yaml
+
+from rpg._version import __version__
+from rpg.codegen import generate
+from rpg.repair import route
+from rpg.schema.builtin import parse
+from rpg.schema.feasibility import check_feasibility
+from rpg.schema.model import RepairRecord, TaskSchema
+from rpg.validate.sandbox import run_worker
+from rpg.validate.static import StaticViolation, check_source
+from rpg.validate.worker import GATES
+
+MAX_CYCLES = 5
+"""Validate-repair cycles before a task is rejected (paper, Iterative Repair)."""
+
+MAX_ATTEMPTS_PER_OPERATOR = 3
+"""Attempts per repair operator (paper, Iterative Repair)."""
+
+
+class ArtifactError(ValueError):
+    """A task artifact is missing, malformed or truncated."""
+
+
+@dataclass
+class CompileResult:
+    """Outcome of one compilation."""
+
+    valid: bool
+    path: Path
+    schema: TaskSchema
+    gates: list[dict]
+    log: list[str] = field(default_factory=list)
+    content_hash: str = ""
+
+    def to_json(self) -> dict:
+        return {"valid": self.valid, "path": str(self.path), "name": self.schema.name,
+                "content_hash": self.content_hash, "repairs": [r.model_dump() for r in self.schema.repairs],
+                "gates": [{"gate": g["gate"], "status": g["status"], **({"message": g["message"]} if "message" in g else {})}
+                          for g in self.gates],
+                "snapshots": {k: str(self.path / f"{k}.png") for k in ("initial", "goal") if (self.path / f"{k}.png").exists()}}
+
+
+def validate_files(directory: Path, seed: int = 0, disabled: frozenset[str] = frozenset(),
+                   snapshots: bool = False, tolerances: dict | None = None) -> list[dict]:
+    """Run every gate on the code files in ``directory``; return the gate results in order."""
+    results = []
+    if "text" in disabled:
+        results.append({"gate": "text", "status": "skipped", "duration_s": 0.0, "details": {}})
+    else:
+        t0 = time.perf_counter()
+        try:
+            for fname in ("code.py", "goal_state_code.py"):
+                check_source((directory / fname).read_text(), fname)
+            results.append({"gate": "text", "status": "pass", "duration_s": time.perf_counter() - t0, "details": {}})
+        except StaticViolation as exc:
+            results.append({"gate": "text", "status": "fail", "kind": exc.kind, "message": str(exc),
+                            "duration_s": time.perf_counter() - t0, "details": {"line": exc.line}})
+            return results
+    from rpg.validate.sandbox import WorkerError
+
+    try:
+        doc = run_worker({"op": "validate", "dir": str(directory.resolve()), "seed": seed, "disabled": sorted(disabled),
+                          "snapshots": snapshots, "tolerances": tolerances or {}})
+    except WorkerError as exc:
+        return results + [{"gate": "compile", "status": "fail", "kind": "runtime", "message": str(exc), "duration_s": 0.0, "details": {}}]
+    if not doc["ok"]:
+        return results + [{"gate": "compile", "status": "fail", "kind": doc.get("kind", "runtime"), "message": doc["error"],
+                           "duration_s": 0.0, "details": {"traceback": doc.get("traceback", "")}}]
+    return results + doc["result"]["gates"]
+
+
+def gates_passed(gates: list[dict]) -> bool:
+    ran = {g["gate"]: g["status"] for g in gates}
+    return all(ran.get(name) in ("pass", "skipped") for name in GATES)
+
+
+def first_failure(gates: list[dict]) -> dict | None:
+    return next((g for g in gates if g["status"] == "fail"), None)
+
+
+def _log_line(g: dict) -> str:
+    msg = f" - {g['message']}" if g.get("message") else ""
+    return f"gate {g['gate']:<11} {g['status'].upper():<7} {g.get('duration_s', 0.0) * 1000:7.1f} ms{msg}"
+
+
+def content_hash(task_doc: dict, code: str, goal_code: str) -> str:
+    """SHA-256 over the canonical task.yaml fields (no hash, no timings) and the two code files."""
+    doc = {k: v for k, v in task_doc.items() if k != "content_hash"}
+    h = hashlib.sha256()
+    h.update(json.dumps(doc, sort_keys=True, separators=(",", ":")).encode())
+    h.update(b"\0" + code.encode() + b"\0" + goal_code.encode())
+    return h.hexdigest()
+
+
+def task_document(schema: TaskSchema, seed: int, backend: str, model: str | None, gates: list[dict]) -> dict:
+    doc = {
+        "schema": json.loads(schema.model_dump_json()),
+        "provenance": {
+            "instruction": schema.instruction,
+            "compiler_version": __version__,
+            "backend": backend,
+            "model": model,
+            "seed": seed,
+            "repairs": [r.model_dump() for r in schema.repairs],
+            "gates": {g["gate"]: g["status"] for g in gates},
+        },
+    }
+    return doc
+
+
+def write_artifact_files(directory: Path, schema: TaskSchema, seed: int, backend: str, model: str | None,
+                         gates: list[dict], log: list[str]) -> str:
+    """Write task.yaml, validation.log and validation.json beside the code; return the content hash."""
+    code = (directory / "code.py").read_text()
+    goal_code = (directory / "goal_state_code.py").read_text()
+    doc = task_document(schema, seed, backend, model, gates)
+    digest = content_hash(doc, code, goal_code)
+    doc["content_hash"] = digest
+    (directory / "task.yaml").write_text(yaml.safe_dump(doc, sort_keys=False, allow_unicode=True, width=100))
+    (directory / "validation.log").write_text("\n".join(log) + "\n")
+    (directory / "validation.json").write_text(json.dumps(
+        {"created": time.strftime("%Y-%m-%dT%H:%M:%S%z"), "valid": gates_passed(gates), "log": log, "gates": gates},
+        indent=2, default=str) + "\n")
+    return digest
+
+
+def _atomic_replace(tmp: Path, target: Path) -> None:
+    target.parent.mkdir(parents=True, exist_ok=True)
+    if target.exists():
+        trash = target.parent / f".trash-{target.name}-{os.getpid()}"
+        os.rename(target, trash)
+        os.rename(tmp, target)
+        shutil.rmtree(trash, ignore_errors=True)
+    else:
+        os.rename(tmp, target)
+
+
+def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[str] = frozenset(),
+          backend: str = "builtin", model: str | None = None, name: str | None = None) -> CompileResult:
+    """Passes 2-4 on a schema: generate, validate, repair; write the artifact atomically."""
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    log: list[str] = [f"rpg {__version__} compile {schema.name!r} (backend {backend}, seed {seed})"]
+    log += [f"feasibility repair {r.operator}: {r.reason}" for r in schema.repairs if r.stage == "feasibility"]
+    attempts: dict[str, int] = {}
+    tmp = Path(tempfile.mkdtemp(prefix=f".tmp-{schema.name[:40]}-", dir=out_dir))
+    gates: list[dict] = []
+    try:
+        for cycle in range(1, MAX_CYCLES + 1):
+            code = generate(schema)
+            (tmp / "code.py").write_text(code.code)
+            (tmp / "goal_state_code.py").write_text(code.goal_state_code)
+            gates = validate_files(tmp, seed, disabled, snapshots=True, tolerances=schema.tolerances.model_dump())
+            log.append(f"cycle {cycle}:")
+            log += ["  " + _log_line(g) for g in gates]
+            failure = first_failure(gates)
+            if failure is None and gates_passed(gates):
+                break
+            routed = route(failure or {})
+            if routed is None:
+                break
+            kind, op = routed
+            attempts[op.__name__] = attempts.get(op.__name__, 0) + 1
+            if attempts[op.__name__] > MAX_ATTEMPTS_PER_OPERATOR:
+                log.append(f"  repair {op.__name__}: attempt budget exhausted")
+                break
+            repaired = op(schema, failure)
+            if repaired is None:
+                log.append(f"  repair attempt {attempts[op.__name__]}: {op.__name__} ({kind}) has no fix")
+                break
+            log.append(f"  repair attempt {attempts[op.__name__]}: {op.__name__} ({kind}) -> {repaired.repairs[-1].reason}")
+            schema = repaired
+        valid = gates_passed(gates)
+        log.append("result: VALID" if valid else "result: REJECTED")
+        digest = write_artifact_files(tmp, schema, seed, backend, model, gates, log)
+        slug = name or schema.name
+        target = out_dir / slug if valid else out_dir / ".rejected" / slug
+        _atomic_replace(tmp, target)
+        return CompileResult(valid, target, schema, gates, log, digest)
+    finally:
+        if tmp.exists():
+            shutil.rmtree(tmp, ignore_errors=True)
+
+
+def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int = 0,
+                        disabled: frozenset[str] = frozenset(), model: str | None = None) -> CompileResult:
+    """Compile an instruction into a task artifact under ``out_dir/<slug>/``.
+
+    Raises:
+        ParseError: the builtin front end cannot read the instruction.
+        InfeasibleTask: the task cannot be realised and cannot be repaired.
+        ValueError: unknown colour, label or gate name.
+    """
+    unknown = set(disabled) - set(GATES)
+    if unknown:
+        raise ValueError(f"unknown gate(s) {sorted(unknown)}; gates are {', '.join(GATES)}")
+    if model not in (None, "builtin"):
+        raise NotImplementedError(f"model backend {model!r} is not available in this build; use the builtin parser")
+    schema = check_feasibility(parse(instruction))
+    return build(schema, Path(out_dir), seed, frozenset(disabled))
+
+
+def load_artifact(directory: str | Path) -> tuple[TaskSchema, dict]:
+    """Read an artifact's schema and provenance.
+
+    Raises:
+        ArtifactError: missing files, malformed YAML or an invalid schema.
+    """
+    d = Path(directory)
+    for fname in ("task.yaml", "code.py", "goal_state_code.py"):
+        if not (d / fname).is_file():
+            raise ArtifactError(f"{d} is not a task artifact: {fname} is missing")
+    try:
+        doc = yaml.safe_load((d / "task.yaml").read_text())
+        schema = TaskSchema.model_validate(doc["schema"])
+    except Exception as exc:  # noqa: BLE001 - any parse problem means a malformed artifact
+        raise ArtifactError(f"{d / 'task.yaml'} is malformed: {str(exc).splitlines()[0][:200]}") from None
+    return schema, doc
+
+
+def revalidate(directory: str | Path, disabled: frozenset[str] = frozenset()) -> CompileResult:
+    """Re-run every gate on an artifact as it is (e.g. after a hand edit); rewrite its logs."""
+    d = Path(directory)
+    schema, doc = load_artifact(d)
+    seed = int(doc.get("provenance", {}).get("seed", 0))
+    gates = validate_files(d, seed, disabled, snapshots=False, tolerances=schema.tolerances.model_dump())
+    log = [f"rpg {__version__} validate {d}"] + [_log_line(g) for g in gates]
+    valid = gates_passed(gates)
+    log.append("result: VALID" if valid else "result: INVALID")
+    (d / "validation.log").write_text("\n".join(log) + "\n")
+    code = (d / "code.py").read_text()
+    goal_code = (d / "goal_state_code.py").read_text()
+    return CompileResult(valid, d, schema, gates, log, content_hash({k: v for k, v in doc.items()}, code, goal_code))
