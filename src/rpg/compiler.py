@@ -183,16 +183,21 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
             routed = route(failure or {})
             if routed is None:
                 break
-            kind, op = routed
-            attempts[op.__name__] = attempts.get(op.__name__, 0) + 1
-            if attempts[op.__name__] > MAX_ATTEMPTS_PER_OPERATOR:
-                log.append(f"  repair {op.__name__}: attempt budget exhausted")
+            kind, ops = routed
+            repaired = None
+            for op in ops:
+                attempts[op.__name__] = attempts.get(op.__name__, 0) + 1
+                if attempts[op.__name__] > MAX_ATTEMPTS_PER_OPERATOR:
+                    log.append(f"  repair {op.__name__}: attempt budget exhausted")
+                    continue
+                repaired = op(schema, failure)
+                if repaired is None:
+                    log.append(f"  repair attempt {attempts[op.__name__]}: {op.__name__} ({kind}) has no fix")
+                    continue
+                log.append(f"  repair attempt {attempts[op.__name__]}: {op.__name__} ({kind}) -> {repaired.repairs[-1].reason}")
                 break
-            repaired = op(schema, failure)
             if repaired is None:
-                log.append(f"  repair attempt {attempts[op.__name__]}: {op.__name__} ({kind}) has no fix")
                 break
-            log.append(f"  repair attempt {attempts[op.__name__]}: {op.__name__} ({kind}) -> {repaired.repairs[-1].reason}")
             schema = repaired
         valid = gates_passed(gates)
         log.append("result: VALID" if valid else "result: REJECTED")

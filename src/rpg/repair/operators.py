@@ -144,22 +144,22 @@ def widen_separation(schema: TaskSchema, failure: dict) -> TaskSchema | None:
                  repairs=_record(schema, "WIDEN_INITIAL_SEPARATION", failure.get("message", "")[:200]))
 
 
-OPERATORS: dict[str, Operator] = {
-    "syntax": regenerate_code,
-    "api_usage": regenerate_code,
-    "runtime": regenerate_code,
-    "success_check": restack_layout,
-    "stability": restack_layout,
-    "bounds": move_into_workspace,
-    "constraint": reorder_support_chain,
-    "visibility": switch_readable_face,
-    "nontrivial": widen_separation,
+OPERATORS: dict[str, tuple[Operator, ...]] = {
+    "syntax": (regenerate_code,),
+    "api_usage": (regenerate_code,),
+    "runtime": (regenerate_code,),
+    "success_check": (restack_layout, switch_readable_face),
+    "stability": (restack_layout,),
+    "bounds": (move_into_workspace,),
+    "constraint": (reorder_support_chain,),
+    "visibility": (switch_readable_face,),
+    "nontrivial": (widen_separation,),
 }
-"""Failure class -> repair operator."""
+"""Failure class -> repair operators, tried in order until one offers a fix."""
 
 
-def route(failure: dict) -> tuple[str, Operator] | None:
-    """Pick the operator for a failing gate result (``kind``; the non-trivial gate has its own)."""
+def route(failure: dict) -> tuple[str, tuple[Operator, ...]] | None:
+    """Pick the operators for a failing gate result (by ``kind``; the non-trivial gate has its own)."""
     kind = "nontrivial" if failure.get("gate") == "nontrivial" else failure.get("kind", "runtime")
-    op = OPERATORS.get(kind)
-    return (kind, op) if op else None
+    ops = OPERATORS.get(kind)
+    return (kind, ops) if ops else None

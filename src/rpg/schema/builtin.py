@@ -176,7 +176,12 @@ def _count(f: Features, nouns: str = "block|cube|box|piece|object", default: int
 def _slug(text: str) -> str:
     drop = {"a", "an", "the", "can", "you", "please", "so", "that", "of", "this", "it", "its", "is"}
     words = [w for w in re.findall(r"[a-z0-9]+", text.lower()) if w not in drop]
-    return ("_".join(words[:7]) or "task").lstrip("0123456789_") or "task"
+    slug = ("_".join(words[:7]) or "task").lstrip("0123456789_") or "task"
+    if len(words) > 7:
+        import hashlib
+
+        slug += "_" + hashlib.sha256(text.strip().encode()).hexdigest()[:6]
+    return slug
 
 
 def _colors_for(n: int, f: Features, prefer: list[str] | None = None) -> list[str]:

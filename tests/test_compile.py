@@ -1,0 +1,201 @@
+"""End to end: compile real instructions, break artifacts per gate, repair, CLI exit codes."""
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import yaml
+
+from rpg.compiler import build, compile_instruction, load_artifact, revalidate
+from rpg.domain.predicates import And, On, Reads, from_dict
+from rpg.schema.builtin import ParseError, parse
+from rpg.schema.feasibility import InfeasibleTask, check_feasibility
+from rpg.schema.model import export_json_schema
+from rpg.validate.sandbox import run_worker
+
+ROOT = Path(__file__).resolve().parents[1]
+SEEDS = ROOT.parent / "shared" / "seed-cases.yaml"
+RPG = [sys.executable, "-m", "rpg.cli"]
+
+
+def seed_instructions():
+    if not SEEDS.exists():
+        return []
+    d = yaml.safe_load(SEEDS.read_text())
+    out = [s["steps"][0]["instruction"] for s in d["benchmark_sessions"]]
+    for k in ("reference_tasks", "training_tasks", "evaluation_tasks"):
+        for t in d[k]:
+            out.append(t["instruction"] + (f"; {t['initial_state']}" if t.get("initial_state") else ""))
+    return out
+
+
+def rpg(*args, cwd=None):
+    return subprocess.run([*RPG, *args], capture_output=True, text=True, cwd=cwd, env={**os.environ, "COLUMNS": "200"})
+
+
+def test_json_schema_file_in_sync():
+    assert (ROOT / "schemas" / "task.schema.json").read_text() == export_json_schema()
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("instruction", seed_instructions())
+def test_paper_instruction_compiles_and_goal_holds(instruction, tmp_path):
+    result = compile_instruction(instruction, tmp_path)
+    assert result.valid, result.log
+    assert {g["gate"] for g in result.gates if g["status"] == "pass"} == {
+        "text", "compile", "smoke", "nontrivial", "constraint", "goal_state", "bounds", "visibility"}
+    for f in ("task.yaml", "code.py", "goal_state_code.py", "validation.log", "validation.json", "initial.png", "goal.png"):
+        assert (result.path / f).is_file(), f
+    goal = run_worker({"op": "inspect", "dir": str(result.path), "state": "goal", "settle": 50})["result"]
+    assert goal["success"]
+    initial = run_worker({"op": "inspect", "dir": str(result.path), "state": "initial", "seed": 1, "settle": 50})["result"]
+    assert not initial["success"]
+
+
+def test_tower_order_read_from_object_positions(tmp_path):
+    r = compile_instruction("Make a simple 2-block tower with a red block on bottom and blue on top", tmp_path)
+    proc = rpg("inspect", str(r.path), "--state", "goal", "--json")
+    assert proc.returncode == 0, proc.stderr
+    objs = json.loads(proc.stdout)["objects"]
+    by_height = [o["color"] for o in sorted(objs, key=lambda o: o["position"][2])]
+    assert by_height == ["red", "blue"]
+    assert abs(objs[0]["position"][0] - objs[1]["position"][0]) < 0.01
+
+
+@pytest.fixture(scope="module")
+def tower(tmp_path_factory):
+    return compile_instruction("Place a blue cube on top of a red cube on the table", tmp_path_factory.mktemp("lib")).path
+
+
+def _broken(tower, tmp_path, fname, old, new):
+    d = tmp_path / "broken"
+    shutil.copytree(tower, d)
+    text = (d / fname).read_text()
+    assert old in text
+    (d / fname).write_text(text.replace(old, new, 1))
+    return d
+
+
+@pytest.mark.parametrize("fname,old,new,gate", [
+    ("code.py", "def goal(self):", "def goal(self)", "text"),
+    ("code.py", "from rpg.task_api import (", "import os\nfrom rpg.task_api import (", "text"),
+    ("code.py", "return Stack(objects=['red', 'blue'])", "return Stack(objects=['red'])", "nontrivial"),
+    ("code.py", "return Stack(objects=['red', 'blue'])", "return And([On(a='red', b='blue'), On(a='blue', b='red')])", "constraint"),
+    ("goal_state_code.py", "'blue': Pose((0.55, 0.0, ", "'blue': Pose((0.585, 0.0, ", "goal_state"),
+    ("goal_state_code.py", "'blue': Pose((0.55,", "'blue': Pose((0.75,", "goal_state"),
+])
+def test_each_gate_catches_a_broken_artifact(tower, tmp_path, fname, old, new, gate):
+    if "And(" in new:
+        (tmp_path / "x").mkdir()
+    d = _broken(tower, tmp_path, fname, old, new)
+    if "And(" in new:
+        (d / "code.py").write_text((d / "code.py").read_text().replace("    Stack,", "    Stack,\n    And,\n    On,"))
+    result = revalidate(d)
+    assert not result.valid
+    failed = [g["gate"] for g in result.gates if g["status"] == "fail"]
+    assert failed[0] == gate, result.log
+    assert "FAIL" in (d / "validation.log").read_text()
+    assert rpg("validate", str(d)).returncode == 1
+
+
+def test_bounds_gate_catches_object_outside_workspace(tower, tmp_path):
+    d = tmp_path / "b"
+    shutil.copytree(tower, d)
+    g = (d / "goal_state_code.py").read_text()
+    (d / "goal_state_code.py").write_text(g.replace("(0.55, 0.0,", "(0.69, 0.0,"))
+    (d / "goal_state_code.py").write_text((d / "goal_state_code.py").read_text().replace("(0.69, 0.0,", "(0.745, 0.0,"))
+    result = revalidate(d)
+    assert [x["gate"] for x in result.gates if x["status"] == "fail"] == ["bounds"], result.log
+
+
+def test_visibility_gate_catches_occluded_label_and_repair_switches_face(tmp_path):
+    schema = parse("Spell the word 'CAT' with cubes stacked in a tower")
+    goal = schema.goal_predicate()
+    broken = And([c if not isinstance(c, Reads) else Reads(c.objects, c.text, c.direction, "up") for c in goal.children()])
+    bad = schema.model_copy(update={"goal": broken.to_dict()})
+    result = build(bad, tmp_path, disabled=frozenset())
+    assert result.valid, result.log
+    assert "SWITCH_READABLE_FACE" in [r.operator for r in result.schema.repairs]
+    assert any("FAIL" in line for line in result.log)
+    no_repair = build(bad, tmp_path / "noop", disabled=frozenset({"goal_state"}))
+    assert no_repair.valid and [r.operator for r in no_repair.schema.repairs] == ["SWITCH_READABLE_FACE"]
+
+
+def test_repair_moves_layout_into_workspace_and_breaks_cycles(tmp_path):
+    schema = parse("Place the red block on the left side of the yellow block")
+    shifted = {n: {"position": (p.position[0] + 0.2, p.position[1], p.position[2]), "quaternion": p.quaternion}
+               for n, p in schema.goal_layout.items()}
+    result = build(schema.model_copy(update={"goal_layout": {n: type(schema.goal_layout[n])(**v) for n, v in shifted.items()}}), tmp_path)
+    assert result.valid and result.schema.repairs[-1].operator == "MOVE_INTO_WORKSPACE", result.log
+    tower = parse("Place a blue cube on top of a red cube")
+    cyclic = And([from_dict(tower.goal), On("red", "blue")])
+    result = build(tower.model_copy(update={"goal": cyclic.to_dict()}), tmp_path / "c")
+    assert result.valid and result.schema.repairs[-1].operator == "REORDER_SUPPORT_CHAIN", result.log
+
+
+def test_unrepairable_task_is_rejected_with_logs(tmp_path):
+    schema = parse("Stack the red block on top of the yellow block")
+    goal = And([from_dict(schema.goal), On("yellow", "red")])
+    bad = schema.model_copy(update={"goal": goal.to_dict(), "name": "impossible"})
+    result = build(bad, tmp_path, disabled=frozenset({"constraint"}))
+    assert not result.valid
+    assert result.path == tmp_path / ".rejected" / "impossible"
+    assert (result.path / "validation.log").read_text().strip().endswith("REJECTED")
+    assert not (tmp_path / "impossible").exists()
+
+
+def test_feasibility_refuses_and_repairs():
+    with pytest.raises(InfeasibleTask, match="reach"):
+        check_feasibility(parse("Stack 30 red blocks on top of each other"))
+    s = check_feasibility(parse("Build a pyramid of digit blocks sorted numerically with a 3x3 base"))
+    assert {"REDUCE_LABELS_PRESERVE_GEOMETRY", "SWITCH_ORDERING_PATTERN"} <= {r.operator for r in s.repairs}
+
+
+@pytest.mark.parametrize("text,needle", [
+    ("", "empty"),
+    ("   ", "empty"),
+    ("florp the wizzle", "'florp'"),
+    ("x" * 2100, "limit"),
+    ("put red on blue and blue on red", "contradict"),
+    ("Stack the chartreuse block on the red block", "chartreuse"),
+])
+def test_builtin_parser_refuses_clearly(text, needle):
+    with pytest.raises(ParseError, match=needle):
+        parse(text)
+
+
+def test_cli_exit_codes_and_messages(tmp_path):
+    assert rpg("--version").stdout.startswith("rpg ")
+    assert "Exit codes" in rpg("--help").stdout
+    bad = rpg("compile", "florp the wizzle", "-o", str(tmp_path))
+    assert bad.returncode == 2 and "florp" in bad.stderr and "Traceback" not in bad.stderr
+    assert list(tmp_path.iterdir()) == []
+    ok = rpg("compile", "Stack the green block on top of the blue block", "-o", str(tmp_path), "--json")
+    assert ok.returncode == 0, ok.stderr
+    doc = json.loads(ok.stdout)
+    assert doc["valid"] and Path(doc["snapshots"]["goal"]).is_file()
+    poses = tmp_path / "poses.json"
+    poses.write_text(json.dumps({"ghost": {"position": [0.5, 0, 1]}}))
+    r = rpg("check", doc["path"], "--poses", str(poses), "--json")
+    assert r.returncode == 2 and "ghost" in r.stderr
+    poses.write_text(json.dumps({"blue": {"position": [0.55, 0.0, 0.97]}, "green": {"position": [0.55, 0.0, 1.0105]}}))
+    r = rpg("check", doc["path"], "--poses", str(poses), "--settle", "20", "--json")
+    assert r.returncode == 0 and json.loads(r.stdout)["success"] is True
+    assert rpg("validate", str(tmp_path / "nope")).returncode == 2
+
+
+def test_same_instruction_same_artifact_across_processes(tmp_path):
+    code = ("import sys; from rpg.compiler import compile_instruction; "
+            "print(compile_instruction('Align 4 cubic blocks in a single straight horizontal line.', sys.argv[1]).content_hash)")
+    a = subprocess.run([sys.executable, "-c", code, str(tmp_path / "a")], capture_output=True, text=True,
+                       env={**os.environ, "PYTHONHASHSEED": "1"})
+    b = subprocess.run([sys.executable, "-c", code, str(tmp_path / "b")], capture_output=True, text=True,
+                       env={**os.environ, "PYTHONHASHSEED": "2"})
+    assert a.returncode == 0, a.stderr
+    assert a.stdout == b.stdout and len(a.stdout.strip()) == 64
+    schema, doc = load_artifact(next((tmp_path / "a").iterdir()))
+    assert doc["content_hash"] == a.stdout.strip()
