@@ -35,21 +35,23 @@ def _make_renderer(model: mujoco.MjModel, width: int, height: int) -> mujoco.Ren
     try:
         return mujoco.Renderer(model, height=height, width=width)
     except Exception as first:  # noqa: BLE001 - any backend failure means: try the next one
-        try:
-            from mujoco.osmesa import GLContext as OSMesaContext
-            from mujoco.rendering.classic import gl_context
+        from mujoco.rendering.classic import gl_context
 
-            gl_context.GLContext = OSMesaContext
-            return mujoco.Renderer(model, height=height, width=width)
-        except Exception as second:  # noqa: BLE001
-            _BACKEND_FAILED = True
-            warnings.warn(
-                f"snapshots skipped: no headless OpenGL (EGL: {first}; OSMesa: {second}). "
-                "Install libegl1 or libosmesa6 to get snapshots.",
-                RenderUnavailable,
-                stacklevel=3,
-            )
-            return None
+        errors = [f"{gl_context.GLContext.__module__}: {first}"]
+        for module in ("mujoco.egl", "mujoco.osmesa"):
+            try:
+                gl_context.GLContext = __import__(module, fromlist=["GLContext"]).GLContext
+                return mujoco.Renderer(model, height=height, width=width)
+            except Exception as exc:  # noqa: BLE001
+                errors.append(f"{module}: {exc}")
+        _BACKEND_FAILED = True
+        warnings.warn(
+            "snapshots skipped: no headless OpenGL (" + "; ".join(errors) + "). "
+            "Install libegl1 (EGL) or libosmesa6 (OSMesa) to get snapshots.",
+            RenderUnavailable,
+            stacklevel=3,
+        )
+        return None
 
 
 def render_image(scene: Scene, width: int = C.SNAPSHOT_SIZE[0], height: int = C.SNAPSHOT_SIZE[1],

@@ -1,0 +1,40 @@
+"""Compile benchmark: per-pass and end-to-end time over the paper's instructions, and a fresh-process compile."""
+
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import yaml
+
+from rpg.codegen import generate
+from rpg.compiler import build
+from rpg.schema.builtin import parse
+from rpg.schema.feasibility import check_feasibility
+
+seeds = Path(__file__).resolve().parents[2] / "shared" / "seed-cases.yaml"
+d = yaml.safe_load(seeds.read_text())
+instructions = [s["steps"][0]["instruction"] for s in d["benchmark_sessions"]]
+instructions += [t["instruction"] for k in ("reference_tasks", "training_tasks", "evaluation_tasks") for t in d[k]]
+schema_t, codegen_t, e2e_t = [], [], []
+with tempfile.TemporaryDirectory() as tmp:
+    for i, text in enumerate(instructions):
+        t0 = time.perf_counter()
+        schema = check_feasibility(parse(text))
+        t1 = time.perf_counter()
+        generate(schema)
+        t2 = time.perf_counter()
+        build(schema, Path(tmp), name=f"t{i}")
+        t3 = time.perf_counter()
+        schema_t.append(t1 - t0)
+        codegen_t.append(t2 - t1)
+        e2e_t.append(t3 - t0)
+    print(f"{len(instructions)} instructions (in-process, validation in a worker process)")
+    print(f"  schema   median {statistics.median(schema_t) * 1000:7.1f} ms")
+    print(f"  codegen  median {statistics.median(codegen_t) * 1000:7.1f} ms")
+    print(f"  end2end  median {statistics.median(e2e_t) * 1000:7.1f} ms  (target <= 500 ms)")
+    t = time.perf_counter()
+    subprocess.run([sys.executable, "-m", "rpg.cli", "compile", instructions[0], "-o", tmp], check=True, capture_output=True)
+    print(f"  rpg compile, fresh process: {time.perf_counter() - t:.2f} s  (target <= 1.5 s)")
