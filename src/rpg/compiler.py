@@ -29,7 +29,7 @@ from rpg.codegen import generate
 from rpg.repair import route
 from rpg.schema.builtin import parse
 from rpg.schema.feasibility import check_feasibility
-from rpg.schema.model import RepairRecord, TaskSchema
+from rpg.schema.model import TaskSchema
 from rpg.validate.sandbox import run_worker
 from rpg.validate.static import StaticViolation, check_source
 from rpg.validate.worker import GATES

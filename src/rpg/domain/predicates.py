@@ -853,6 +853,17 @@ class LayersUniform(Predicate):
 # ---------------------------------------------------------------------------
 
 
+def _read_sequence(state: WorldState, names, direction: str, face: str) -> tuple[str, list[str]]:
+    """Labels shown toward ``face`` in ``direction`` order ("?" where none), and the unreadable objects."""
+    labels, unreadable = [], []
+    for o in order_objects([state[n] for n in names], direction):
+        label, ok = _read_label(state, o, face)
+        labels.append(label or "?")
+        if not ok:
+            unreadable.append(o.name)
+    return "".join(labels), unreadable
+
+
 def _read_label(state: WorldState, o: ObjectState, face_dir: str) -> tuple[str | None, bool]:
     """Label shown toward ``face_dir`` and whether it is readable and visible."""
     face, _ = o.face_toward(face_dir)
@@ -877,16 +888,8 @@ class Reads(Predicate):
     semantic: ClassVar[bool] = True
 
     def _evaluate(self, state):
-        objs = order_objects([state[n] for n in self.objects], self.direction)
-        labels, unreadable = [], []
-        for o in objs:
-            label, ok = _read_label(state, o, self.face)
-            labels.append(label or "?")
-            if not ok:
-                unreadable.append(o.name)
-        got = "".join(labels)
-        want = self.text.replace(" ", "").upper().replace("*", "x").replace("X", "X")
-        ok = not unreadable and _same_text(got, want)
+        got, unreadable = _read_sequence(state, self.objects, self.direction, self.face)
+        ok = not unreadable and got.upper() == self.text.replace(" ", "").upper()
         reason = f"reads {got!r}" + ("" if ok else f", expected {self.text!r}") + (f"; unreadable: {', '.join(unreadable)}" if unreadable else "")
         return self._result(ok, reason, {"read": got, "unreadable": unreadable}, {"text": self.text})
 
@@ -895,10 +898,6 @@ class Reads(Predicate):
 
     def describe(self):
         return f"reads {self.text!r} {self.direction.replace('_', ' ')}"
-
-
-def _same_text(got: str, want: str) -> bool:
-    return got.upper() == want.upper()
 
 
 _EQ_RE = re.compile(r"^[0-9+\-x=]+$")
@@ -947,15 +946,7 @@ class Equation(Predicate):
     semantic: ClassVar[bool] = True
 
     def _evaluate(self, state):
-        objs = order_objects([state[n] for n in self.objects], self.direction)
-        labels = []
-        unreadable = []
-        for o in objs:
-            label, ok = _read_label(state, o, self.face)
-            labels.append(label or "?")
-            if not ok:
-                unreadable.append(o.name)
-        got = "".join(labels)
+        got, unreadable = _read_sequence(state, self.objects, self.direction, self.face)
         ok = not unreadable and equation_holds(got)
         return self._result(ok, f"reads {got!r}, {'a correct' if ok else 'not a correct'} equation",
                             {"read": got, "unreadable": unreadable})

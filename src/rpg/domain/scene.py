@@ -8,7 +8,6 @@ then set per episode.  The physics options are fixed globally (paper, appendix
 from __future__ import annotations
 
 import json
-import math
 from collections.abc import Iterable, Mapping, Sequence
 
 import mujoco
@@ -278,7 +277,3 @@ def drift_report(before: Mapping[str, Pose], after: Mapping[str, Pose]) -> dict[
         }
     return report
 
-
-def degrees(rad: float) -> float:
-    """Radians to degrees (for messages)."""
-    return rad * 180.0 / math.pi

@@ -25,13 +25,12 @@ from rpg.domain.layouts import (
     grid_layout,
     line_layout,
     pyramid_layout,
-    pyramid_sites,
     stack_layout,
 )
 from rpg.domain.palette import COLOR_ALIASES, GRADIENT_ORDER, PALETTE
 from rpg.domain.predicates import (
     Behind, Between, Equation, Grid, InCircle, InFrontOf, InLine, InOrder, LabelFacing,
-    LayersUniform, LeftOf, NextTo, On, OnPatch, OnTable, Piles, Pyramid, Reads, RightOf,
+    LayersUniform, LeftOf, NextTo, OnPatch, OnTable, Piles, Pyramid, Reads, RightOf,
     SortedBy, Stack,
 )
 from rpg.domain.state import Pose
@@ -228,11 +227,6 @@ def label_sequence(kind: str, n: int, b: Builder, ordered: bool = True) -> tuple
             reason="strictly increasing order is impossible with repeated labels; non-decreasing order is required"))
     base = sorted(pool)
     return [base[i * len(base) // n] for i in range(n)], False
-
-
-def _mention_color(text: str) -> str | None:
-    m = re.search(rf"\b({COLOR_RE})\b", text)
-    return _canon_color(m.group(1)) if m else None
 
 
 # ---------------------------------------------------------------------------
@@ -659,7 +653,7 @@ def recognize_relational(f: Features, b: Builder) -> bool:
     objects: dict[tuple, list[str]] = {}
     patch_names: dict[tuple, str] = {}
     on_edges: list[tuple[str, str]] = []
-    rels: list[Predicate] = []
+    rels: list = []
     onpatch: list[tuple[str, str]] = []
     bottom_top: dict[str, str] = {}
 

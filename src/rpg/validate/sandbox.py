@@ -51,6 +51,7 @@ def run_worker(request: dict, timeout: float = WORKER_TIMEOUT_S) -> dict:
     env = {k: os.environ[k] for k in _KEEP_ENV if k in os.environ}
     env.setdefault("MUJOCO_GL", "egl")
     env["PYTHONHASHSEED"] = "0"
+    env["PYTHONDONTWRITEBYTECODE"] = "1"  # task files are rewritten in place; stale .pyc must never be used
     with tempfile.TemporaryDirectory(prefix="rpg-worker-") as cwd:
         try:
             proc = subprocess.run(

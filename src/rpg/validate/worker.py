@@ -40,6 +40,7 @@ class GateFailure(Exception):
 
 
 def _load(path: Path, name: str):
+    sys.dont_write_bytecode = True  # never cache task code: it is rewritten in place between repair cycles
     spec = importlib.util.spec_from_file_location(name, path)
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
