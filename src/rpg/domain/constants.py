@@ -183,6 +183,10 @@ PILE_RADIUS: float = 0.09
 PILE_SEPARATION: float = 0.10
 """`piles`: least distance between the centroids of two piles, m."""
 
+PILE_LINK: float = 0.075
+"""`piles` with explicit groups: two cubes closer than this (centres, m) belong to the same
+pile (single linkage); cubes in a pile touch (~0.05 m apart), piles are >= PILE_SEPARATION apart."""
+
 PATCH_XY_MARGIN: float = 0.005
 """`on_patch`: a centre may overhang the patch edge by this much, m."""
 

@@ -26,6 +26,7 @@ import re
 from dataclasses import MISSING, dataclass, field, fields, replace
 from typing import Any, ClassVar
 
+import networkx as nx
 import numpy as np
 
 from rpg.domain import constants as C
@@ -787,12 +788,32 @@ class Piles(Predicate):
         return list(self.objects) + [n for g in self.groups for n in g]
 
     def resolve_groups(self, state: WorldState) -> list[list[str]]:
+        """The piles to check: by attribute, or the explicit groups matched to the piles on
+        the table, where interchangeable cubes (same kind, colour, labels) may trade places."""
         if self.groups:
-            return [list(g) for g in self.groups]
+            return self._match_groups(state)
         buckets: dict[str, list[str]] = {}
         for n in self.objects:
             buckets.setdefault(str(state[n].attribute(self.by or "color")), []).append(n)
         return [buckets[k] for k in sorted(buckets)]
+
+    def _match_groups(self, state: WorldState) -> list[list[str]]:
+        names = sorted({n for g in self.groups for n in g})
+        xy = np.array([_planar(state[n]) for n in names])
+        g = nx.Graph()
+        g.add_nodes_from(range(len(names)))
+        for i, j in itertools.combinations(range(len(names)), 2):
+            if np.linalg.norm(xy[i] - xy[j]) <= C.PILE_LINK:
+                g.add_edge(i, j)
+        clusters = sorted(sorted(names[i] for i in comp) for comp in nx.connected_components(g))
+
+        def content(members):
+            return sorted(_signature(state[n]) for n in members)
+
+        wanted = sorted(content(grp) for grp in self.groups)
+        if sorted(content(c) for c in clusters) == wanted:
+            return clusters
+        return [list(grp) for grp in self.groups]
 
     def _evaluate(self, state):
         groups = self.resolve_groups(state)

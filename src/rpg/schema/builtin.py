@@ -417,7 +417,15 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
         raise ParseError(f"a pyramid with base {base} needs {n} cubes; the most a task holds is {C.MAX_OBJECTS}")
     material = _material(f)
     order = _ordering(f)
-    _fill_structure(f, b, n, material, order, lambda names: pyramid_layout(names, base, dims))
+    if material == "colors" and _per_layer(f):
+        sizes = [(base - k) ** (dims - 1) for k in range(base)]
+        cols = _colors_for(base, f, prefer=list(dict.fromkeys(f.color_list())))
+        names = [b.cube(cols[k]) for k, size in enumerate(sizes) for _ in range(size)]
+        b.place(pyramid_layout(names, base, dims))
+        b.preds.append(LayersUniform(tuple(names), by="color", axis="z"))
+        b.summary.append("each layer a different color")
+    else:
+        _fill_structure(f, b, n, material, order, lambda names: pyramid_layout(names, base, dims))
     names = [a.name for a in b.assets]
     b.preds.insert(0, Pyramid(tuple(names), base=base, dims=dims))
     b.primitives += ["stack"]
@@ -450,6 +458,11 @@ def _fill_structure(f, b, n, material, order, layout_fn, face="up"):
     return names
 
 
+def _per_layer(f: Features) -> bool:
+    """"each layer (row, level) a different color"."""
+    return f.has("row", "rows", "layer", "layers", "level", "levels") and f.has("different", "each")
+
+
 def recognize_cube_block(f: Features, b: Builder) -> bool:
     m = re.search(r"\b(\d+)x(\d+)x(\d+)\b", f.text)
     if not m:
@@ -458,7 +471,7 @@ def recognize_cube_block(f: Features, b: Builder) -> bool:
     n = r * c * layers
     if n > C.MAX_OBJECTS:
         raise ParseError(f"a {r}x{c}x{layers} block needs {n} cubes; the most a task holds is {C.MAX_OBJECTS}")
-    per_layer = f.has("row", "rows", "layer", "layers", "level", "levels") and f.has("different", "each")
+    per_layer = _per_layer(f)
     if per_layer:
         cols = _colors_for(layers, f, prefer=[c for c in dict.fromkeys(f.color_list())])
         colors = [cols[lay] for lay in range(layers) for _ in range(r * c)]
@@ -521,14 +534,34 @@ def recognize_piles(f: Features, b: Builder) -> bool:
         per = max(2, per // len(colors)) if per else 3
         groups = [[b.cube(c) for _ in range(per)] for c in colors]
         by = "color"
+    outliers = _outliers(f)
+    if outliers:
+        if any(len(g) <= outliers for g in groups):
+            raise ParseError(f"each pile needs more than {outliers} cube(s) to hold {outliers} outlier(s)")
+        # the last `outliers` members of each pile move to the next pile
+        moved = [g[-outliers:] for g in groups]
+        groups = [g[:-outliers] + moved[i - 1] for i, g in enumerate(groups)]
     centers = b.unit_centers(len(groups), 0.16)
     b.place(cluster_layout(groups, centers))
     names = tuple(n for g in groups for n in g)
-    b.preds.append(Piles(names, by=by))
+    what = "type (letters, digits, colors)" if by == "type" else by
+    if outliers:
+        b.preds.append(Piles(groups=tuple(tuple(g) for g in groups)))
+        b.summary.append(f"{len(groups)} separate piles, one per {what}, each with {outliers} outlier(s) from another pile")
+    else:
+        b.preds.append(Piles(names, by=by))
+        b.summary.append(f"{len(groups)} separate piles, one per {what}")
     b.primitives += ["arrange"]
-    b.summary.append(f"{len(groups)} separate piles, one per {'type (letters, digits, colors)' if by == 'type' else by}")
     b.min_separation = 0.06
     return True
+
+
+def _outliers(f: Features) -> int:
+    """Outliers per pile asked for ("so each has one outlier"), 0 if none."""
+    if not f.has("outlier", "outliers"):
+        return 0
+    m = re.search(r"\b(\d+)\s+outliers?\b", f.text)
+    return int(m.group(1)) if m else 1
 
 
 def recognize_ordered_line(f: Features, b: Builder) -> bool:
@@ -885,10 +918,45 @@ def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
     return True
 
 
+ITEM_RE = re.compile(
+    r"\b(?:letter|digit|number|label)\s+'?(?P<label>[a-z0-9])'?(?![a-z0-9])(?:\s+(?:semantic\s+)?(?:cube|block)s?)?"
+    r"|\b(?P<color>" + COLOR_RE + r")\b(?:\s+(?:cube|block)s?)?"
+)
+
+
+def item_sequence(text: str) -> list[tuple[str | None, str | None]]:
+    """Cubes named in order in ``text``: (colour, None) or (None, label) per mention."""
+    out = []
+    for m in ITEM_RE.finditer(text):
+        if m.group("label"):
+            out.append((None, m.group("label").upper()))
+        else:
+            out.append((_canon_color(m.group("color")), None))
+    return out
+
+
+def recognize_tower_sequence(f: Features, b: Builder) -> bool:
+    """A tower given as a sequence: "a tower from bottom to top: red, blue, letter 'A'"."""
+    m = re.search(r"\b(?:from\s+)?(bottom to top|top to bottom)\b", f.text)
+    if not m or not f.has("stack", "tower", "stacked"):
+        return False
+    items = item_sequence(f.text)
+    if len(items) < 2:
+        return False
+    if m.group(1) == "top to bottom":
+        items.reverse()
+    names = [b.semantic(label) if label else b.cube(color) for color, label in items]
+    b.place(stack_layout(names, C.WORKSPACE_CENTER))
+    b.preds.append(Stack(tuple(names)))
+    b.primitives += ["stack"]
+    b.summary.append("tower bottom to top: " + ", ".join(names))
+    return True
+
+
 RECOGNIZERS = (
     recognize_temporal, recognize_rotate, recognize_equation, recognize_spell, recognize_pyramid,
     recognize_cube_block, recognize_grid, recognize_circle, recognize_piles, recognize_ordered_line,
-    recognize_relational,
+    recognize_tower_sequence, recognize_relational,
 )
 
 
