@@ -212,8 +212,9 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
 
 
 def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int = 0,
-                        disabled: frozenset[str] = frozenset(), model: str | None = None) -> CompileResult:
-    """Compile an instruction into a task artifact under ``out_dir/<slug>/``.
+                        disabled: frozenset[str] = frozenset(), model: str | None = None,
+                        name: str | None = None) -> CompileResult:
+    """Compile an instruction into a task artifact under ``out_dir/<slug>/`` (or ``out_dir/<name>/``).
 
     Raises:
         ParseError: the builtin front end cannot read the instruction.
@@ -226,7 +227,7 @@ def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int
     if model not in (None, "builtin"):
         raise NotImplementedError(f"model backend {model!r} is not available in this build; use the builtin parser")
     schema = check_feasibility(parse(instruction))
-    return build(schema, Path(out_dir), seed, frozenset(disabled))
+    return build(schema, Path(out_dir), seed, frozenset(disabled), name=name)
 
 
 def load_artifact(directory: str | Path) -> tuple[TaskSchema, dict]:

@@ -1248,11 +1248,10 @@ def evaluate_goal(goal: Predicate, state: WorldState) -> PredicateResult:
     groups = [g for g in classes.values() if len(g) > 1]
     if not groups:
         return result
-    per_group = [list(itertools.permutations(g)) for g in groups]
-    total = math.prod(len(p) for p in per_group)
-    if total > MAX_ASSIGNMENTS:
+    total = math.prod(math.factorial(len(g)) for g in groups)
+    if total > MAX_ASSIGNMENTS:  # checked before any permutation is built: 14 identical cubes have 14! of them
         return result
-    for combo in itertools.product(*per_group):
+    for combo in itertools.product(*(itertools.permutations(g) for g in groups)):
         mapping = {}
         for g, perm in zip(groups, combo, strict=True):
             mapping.update(dict(zip(g, perm, strict=True)))

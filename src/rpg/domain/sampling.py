@@ -48,9 +48,59 @@ def sample_footprints(
     apart, and away from ``occupied`` discs (x, y, radius).  Centres stay inside the
     bounds shrunk by each radius.
 
+    Crowded scenes, where sequential rejection sampling runs out of tries, fall back to
+    :func:`lattice_footprints` (a random subset of a jittered lattice, same spacing rule).
+
     Raises:
-        InfeasibleLayout: no layout found within MAX_SAMPLING_TRIES draws per object.
+        InfeasibleLayout: the objects do not fit even on the lattice.
     """
+    try:
+        return _rejection_footprints(rng, radii, min_separation, bounds_x, bounds_y, occupied)
+    except InfeasibleLayout:
+        return lattice_footprints(rng, radii, min_separation, bounds_x, bounds_y, occupied)
+
+
+def lattice_footprints(
+    rng: np.random.Generator,
+    radii: Sequence[float],
+    min_separation: float = C.MIN_SEPARATION,
+    bounds_x: tuple[float, float] = C.WORKSPACE_X,
+    bounds_y: tuple[float, float] = C.WORKSPACE_Y,
+    occupied: Sequence[tuple[float, float, float]] = (),
+) -> list[tuple[float, float]]:
+    """Planar centres (m) on a lattice whose pitch keeps every pair apart as
+    :func:`sample_footprints` requires: cells are drawn without replacement and jittered
+    within the slack the bounds leave.
+
+    Raises:
+        InfeasibleLayout: fewer free lattice cells than objects.
+    """
+    if not radii:
+        return []
+    r = max(radii)
+    pitch = max(min_separation, 2 * r + 0.01)
+    lo = np.array([bounds_x[0] + r, bounds_y[0] + r])
+    hi = np.array([bounds_x[1] - r, bounds_y[1] - r])
+    counts = np.floor((hi - lo) / pitch).astype(int) + 1
+    if np.any(hi < lo):
+        raise InfeasibleLayout(f"an object of radius {r:.3f} m does not fit in the workspace")
+    # spread the cells over the bounds; each may move by half the spacing beyond the pitch
+    step = np.where(counts > 1, (hi - lo) / np.maximum(counts - 1, 1), 0.0)
+    half_extra = np.where(counts > 1, (step - pitch) / 2, (hi - lo) / 2)
+    start = np.where(counts > 1, lo, (lo + hi) / 2)
+    cells = [start + np.array([i, j]) * step for i in range(counts[0]) for j in range(counts[1])]
+    cells = [c for c in cells if all(math.hypot(c[0] - px, c[1] - py) >= max(min_separation, r + pr + 0.01)
+                                     for px, py, pr in occupied)]
+    if len(cells) < len(radii):
+        raise InfeasibleLayout(
+            f"could not place {len(radii)} objects {min_separation:.2f} m apart in the workspace; "
+            "use fewer objects or a smaller separation")
+    chosen = rng.choice(len(cells), size=len(radii), replace=False)
+    jitter = rng.uniform(-1.0, 1.0, size=(len(radii), 2)) * half_extra
+    return [(float(cells[k][0] + dx), float(cells[k][1] + dy)) for k, (dx, dy) in zip(chosen, jitter, strict=True)]
+
+
+def _rejection_footprints(rng, radii, min_separation, bounds_x, bounds_y, occupied) -> list[tuple[float, float]]:
     placed: list[tuple[float, float, float]] = list(occupied)
     out = []
     for r in radii:

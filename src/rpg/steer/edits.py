@@ -1,0 +1,502 @@
+"""The builtin edit interpreter: intent, parameters and reference cues of a steering edit.
+
+Paper, "Controlled Task Modifications" and appendix "Version History Representation".  An
+edit is read into
+
+* a :class:`RefCue`: which version it builds on ("go back to when it was just red and
+  blue", "version 2", "the letter version"; otherwise the current version);
+* a list of :class:`Op` (add cubes, recolor, remove, change material, ordering, reverse,
+  dimensions, count, outliers, structure), or a whole task stated anew (``standalone``);
+* an intent: Tweak (colours, counts, dimensions), Extend (additions), Modify (material,
+  ordering, properties within the structure), Pivot (a different structure) or Fresh
+  (explicitly a new, unrelated task).
+
+Deterministic and offline; the same rules for every edit, no per-sentence cases.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import asdict, dataclass, field, replace
+
+from rpg.schema.builder import DEFAULT_COLORS
+from rpg.schema.builtin import COLOR_RE, NUMBER_WORDS, _canon_color, item_sequence
+from rpg.steer.spec import Item, TaskSpec
+
+INTENTS = ("tweak", "extend", "modify", "pivot", "fresh")
+"""Steering categories, weakest to strongest change."""
+
+PRESERVATION: dict[str, dict[str, bool]] = {
+    "tweak": {"preserve_assets": True, "preserve_positions": True, "preserve_goals": True},
+    "extend": {"preserve_assets": True, "preserve_positions": True, "preserve_goals": True},
+    "modify": {"preserve_assets": False, "preserve_positions": True, "preserve_goals": True},
+    "pivot": {"preserve_assets": True, "preserve_positions": False, "preserve_goals": False},
+    "fresh": {"preserve_assets": False, "preserve_positions": False, "preserve_goals": False},
+}
+"""Preservation flags per intent: Tweak and Extend keep the reference's assets, rho_0 and
+success predicate apart from the change (directly comparable versions); Modify substitutes
+assets within the structure; Pivot keeps the reference's cubes but rewrites the goal;
+Fresh keeps nothing."""
+
+OP_INTENT = {
+    "add": "extend", "recolor": "tweak", "remove": "tweak", "count": "tweak", "dims": "tweak",
+    "material": "modify", "ordering": "modify", "reverse": "modify", "outliers": "modify",
+    "relabel": "modify", "structure": "pivot",
+}
+"""The intent each operation implies; an edit's intent is the strongest of its operations."""
+
+LETTERS = [chr(ord("A") + i) for i in range(26)]
+DIGITS = [str(d) for d in (1, 2, 3, 4, 5, 6, 7, 8, 9, 0)]
+
+
+class SteerError(ValueError):
+    """An edit that cannot be interpreted or applied; the message says why and what works."""
+
+
+@dataclass
+class Op:
+    """One edit operation with its parameters (recorded in the version history)."""
+
+    op: str
+    params: dict = field(default_factory=dict)
+
+
+@dataclass
+class RefCue:
+    """What the edit says about the version it builds on."""
+
+    kind: str = "current"  # current | version | original | previous | search
+    version: int | None = None
+    colors: tuple[str, ...] = ()
+    exact: bool = False
+    material: str | None = None
+    structure: str | None = None
+    count: int | None = None
+    phrase: str = ""
+
+
+@dataclass
+class EditPlan:
+    """An interpreted edit."""
+
+    text: str
+    cue: RefCue
+    ops: list[Op] = field(default_factory=list)
+    standalone: bool = False
+    fresh: bool = False
+
+    def parameters(self) -> dict:
+        return {"ops": [asdict(o) for o in self.ops], "reference_cue": {k: v for k, v in asdict(self.cue).items() if v not in (None, (), False, "")},
+                "standalone": self.standalone}
+
+
+# ---------------------------------------------------------------------------
+# Reading
+# ---------------------------------------------------------------------------
+
+STRUCTURE_WORDS = {
+    "tower": "tower", "stack": "tower", "line": "line", "row": "line", "circle": "circle", "ring": "circle",
+    "pyramid": "pyramid", "grid": "grid", "square": "grid", "piles": "piles", "pile": "piles",
+}
+STRUCTURE_RE = r"\b(towers?|stacks?|lines?|rows?|circles?|rings?|pyramids?|grids?|squares?|piles?)\b"
+FRESH_RE = re.compile(r"\b(?:new task|another task|start over|start fresh|from scratch|unrelated|something (?:completely |totally )?(?:different|else)|forget (?:it|that|this|everything|about it))\b[:,.!]?")
+ANAPHORA_RE = re.compile(r"\b(?:it|them|they|its|their|those|these|instead|back|again|now)\b|\b(?:add|change|replace|swap|remove|delete|flip|reverse|invert|keep|undo|revert|turn)\b")
+CUT_RE = re.compile(r"\band (?:then|instead|now|also)\b|\binstead\b|\bthen\b|\bbut\b|[;,.]")
+MATERIAL_WORDS = (("letters", r"\bletters?\b|\balphabet\b"), ("digits", r"\bnumbers?\b|\bdigits?\b"), ("colors", r"\bcolou?r(?:s|ed)?\b"))
+ORDERING_PHRASES = (
+    r"\b(?:sort(?:ed)?|order(?:ed)?|arrange[ds]?)?\s*(?:them\s+)?by\s+(?:different\s+|their\s+)?colou?rs?\b",
+    r"\bcolou?r\s+(?:order|gradient|sequence)\b", r"\bdifferent\s+colou?rs?\b", r"\balphabetic(?:al)?(?:ly)?\b",
+    r"\bnumeric(?:al)?(?:ly)?\b", r"\b(?:each|every)\s+(?:row|layer|level)\b",
+)
+LABELLED_RE = r"\b(?:letter|digit|number|label)\s+'?[a-z0-9]'?(?![a-z0-9])"
+
+
+def normalize_edit(text: str) -> str:
+    """Lower-case, quotes unified, number words as digits."""
+    t = text.strip().lower()
+    t = re.sub(r"[\u2018\u2019\u201c\u201d`\"]", "'", t)
+    for w, n in NUMBER_WORDS.items():
+        if w not in ("single", "pair", "couple", "both"):
+            t = re.sub(rf"\b{w}\b", str(n), t)
+    return " ".join(t.split())
+
+
+def _materials(text: str) -> list[str]:
+    t = text
+    for p in ORDERING_PHRASES:
+        t = re.sub(p, " ", t)
+    t = re.sub(LABELLED_RE, " ", t)
+    return [m for m, pat in MATERIAL_WORDS if re.search(pat, t)]
+
+
+def find_reference(t: str) -> RefCue:
+    """The reference cue of a normalised edit."""
+    m = re.search(r"\b(?:version|v)\s*#?(\d+)\b", t)
+    if m:
+        return RefCue("version", version=int(m.group(1)), phrase=m.group(0))
+    m = re.search(r"\b(?:the original|first version|base (?:task|version)|very first|initial version|the beginning|the start)\b", t)
+    if m:
+        return RefCue("original", phrase=m.group(0))
+    this = re.search(r"\bth(?:is|e current|e latest)\s+(?:[a-z]+\s+)?version\b|\bcurrent\b", t)
+    back = re.search(r"\b(?:go(?:ing)? back|back to|revert|return to|undo|earlier|previous|prior|older|used to)\b", t)
+    if not back or this:
+        return RefCue("current", phrase=this.group(0) if this else "")
+    region = t[back.end():]
+    cut = CUT_RE.search(region)
+    region = region[: cut.start()] if cut else region
+    colors = tuple(dict.fromkeys(_canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", region)))
+    mats = _materials(region)
+    s = re.search(STRUCTURE_RE, region)
+    n = re.search(r"\b(\d+)[- ](?:blocks?|cubes?)\b", region)
+    cue = RefCue("search", colors=colors, exact=bool(re.search(r"\b(?:just|only)\b", region)),
+                 material=mats[0] if len(mats) == 1 else None,
+                 structure=STRUCTURE_WORDS[s.group(1).rstrip("s")] if s else None,
+                 count=int(n.group(1)) if n else None, phrase=(back.group(0) + region).strip())
+    if not (cue.colors or cue.material or cue.structure or cue.count):
+        return RefCue("previous", phrase=back.group(0))
+    return cue
+
+
+def _selector(text: str) -> dict | None:
+    """Which cubes a phrase names: a position, a colour, a label, or all of them."""
+    text = text.strip()
+    if re.search(r"\b(?:all|every|everything|each)\b|\bthe (?:blocks|cubes)\b|^(?:them|the tower|the stack)\b", text):
+        return {"all": True}
+    m = re.search(r"\b(base|bottom|first|lowest|top|last|highest|upper|middle|center|centre|second|third)\b", text)
+    if m:
+        return {"position": {"lowest": "bottom", "base": "bottom", "first": "bottom", "highest": "top", "last": "top",
+                             "upper": "top", "centre": "middle", "center": "middle"}.get(m.group(1), m.group(1))}
+    items = item_sequence(text)
+    if items:
+        color, label = items[0]
+        return {"color": color} if color else {"label": label}
+    return None
+
+
+def _new_item(text: str) -> dict | None:
+    items = item_sequence(text)
+    if not items:
+        return None
+    color, label = items[0]
+    return {"color": color} if color else {"label": label}
+
+
+def read_ops(t: str) -> list[Op]:
+    """The operations of a normalised partial edit (empty when it names none)."""
+    ops: list[Op] = []
+    substitution = re.search(r"\b(?:instead of|rather than|in place of)\b(.*)", t)
+    source = _materials(substitution.group(1)) if substitution else []
+    mats = [m for m in _materials(t[: substitution.start()] if substitution else t) if m not in source]
+    if re.search(r"\boutliers?\b", t):
+        m = re.search(r"\b(\d+)\s+outliers?\b", t)
+        ops.append(Op("outliers", {"per_pile": int(m.group(1)) if m else 1}))
+    reverse = re.search(r"\b(?:flip|reverse|invert|mirror|swap)\b[^.;]*\border\b|\bupside down\b|\breverse(?:d)? order\b|\b(?:flip|reverse|invert)\s+(?:it|them|the (?:tower|stack|line|row))\b", t)
+    if reverse:
+        keep = re.search(r"\bkeep(?:ing)?\s+(?:the\s+)?(.+?)\s+(?:on top|at the top|in place|where it is|at the bottom|fixed)\b", t)
+        ops.append(Op("reverse", {"colors_only": bool(re.search(r"\bcolou?r order\b", t)),
+                                  **({"keep": _selector(keep.group(1))} if keep else {})}))
+    if re.search(r"\balphabetic(?:al)?(?:ly)?\b", t):
+        ops.append(Op("ordering", {"key": "label", "descending": bool(re.search(r"\b(?:reverse|descending|backwards?|z to a)\b", t))}))
+    elif re.search(r"\bnumeric(?:al)?(?:ly)?\b|\b(?:increasing|ascending|decreasing|descending) order\b", t):
+        ops.append(Op("ordering", {"key": "number", "descending": bool(re.search(r"\b(?:decreasing|descending|reverse)\b", t))}))
+    elif re.search(r"\b(?:sort|order|arrange|group)\w*\s+(?:them\s+|it\s+)?by\s+(?:different\s+|their\s+)?colou?rs?\b|\bcolou?r gradient\b|\b(?:each|every)\s+(?:row|layer|level)\b[^.;]*\bdifferent colou?r", t):
+        ops.append(Op("ordering", {"key": "color", "descending": False}))
+    if mats and not reverse:
+        ops.append(Op("material", {"to": mats[0] if len(mats) == 1 else "mixed", **({"from": source[0]} if source else {})}))
+    add = None if substitution and mats else re.search(
+        r"\b(?:add|append|include|put)\b(?P<what>.*?)(?P<where>\bon top\b|\bat the (?:top|bottom|base|end|start|beginning)\b|"
+        r"\b(?:under|underneath|beneath|below)\b|\bto the (?:left|right|end|start)\b|\bon the (?:left|right)\b|[;,.]|\band\b|$)", t)
+    if add and (item_sequence(add.group("what")) or re.search(r"\b(?:blocks?|cubes?)\b", add.group("what"))):
+        what = add.group("what")
+        m = re.search(r"\b(\d+)\b", re.sub(LABELLED_RE, " ", what))
+        n = int(m.group(1)) if m else 1
+        items = [{"color": c} if c else {"label": lab} for c, lab in item_sequence(what)]
+        where = add.group("where")
+        at = "bottom" if re.search(r"bottom|base|under|beneath|below|start|beginning|left", where) else "top"
+        ops.append(Op("add", {"items": items * (n if len(items) == 1 else 1) if items else [], "count": n if not items else None, "at": at}))
+    repl = re.search(r"\b(?:replace|substitute|swap)\s+(?:the\s+)?(?P<old>.+?)\s+(?:with|for|by)\s+(?:an?\s+|the\s+)?(?P<new>.+)", t) or \
+        re.search(r"\b(?:change|turn|make|paint|recolou?r|colou?r)\s+(?:the\s+)?(?P<old>.+?)\s+(?:to|into)\s+(?:an?\s+|be\s+)?(?P<new>.+)", t) or \
+        re.search(rf"\b(?:make|paint)\s+(?:the\s+)?(?P<old>.+?)\s+(?P<new>(?:{COLOR_RE}))\b", t)
+    if repl and not reverse:
+        sel, new = _selector(repl.group("old")), _new_item(repl.group("new"))
+        if sel and new:
+            ops.append(Op("recolor" if "color" in new else "relabel", {"select": sel, "to": new}))
+    rm = re.search(r"\b(?:remove|delete|take away|take off|drop|get rid of)\s+(?:the\s+)?(?P<sel>.+?)(?:[;,.]|\band\b|$)", t)
+    if rm and _selector(rm.group("sel")):
+        ops.append(Op("remove", {"select": _selector(rm.group("sel"))}))
+    dims = re.search(r"\b(\d+)x(\d+)(?:x(\d+))?\b", t)
+    base = re.search(r"\bbase\s+(?:of\s+|to\s+|is\s+|to be\s+)?(\d+)\b|\b(\d+)[- ]wide base\b", t)
+    if dims:
+        ops.append(Op("dims", {"dims": [int(g) for g in dims.groups() if g]}))
+    elif base:
+        ops.append(Op("dims", {"base": int(base.group(1) or base.group(2))}))
+    count = re.search(r"\b(?:use|with|make it|make (?:the|it) (?:tower|line|circle|row)|have|to)\s+(?:only\s+)?(\d+)\s+(?:[a-z]+\s+)?(?:blocks?|cubes?)\b", t)
+    if count and not any(o.op in ("add", "dims") for o in ops):
+        ops.append(Op("count", {"count": int(count.group(1))}))
+    elif re.search(r"\b(?:taller|higher|longer|bigger)\b", t) and not ops:
+        ops.append(Op("count", {"delta": 1}))
+    elif re.search(r"\b(?:shorter|smaller|lower)\b", t) and not ops:
+        ops.append(Op("count", {"delta": -1}))
+    shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape)\b[^.;]*?\b(?:into|as|in|to)?\s*(?:an?\s+|the\s+)?"
+                      r"(tower|stack|line|row|circle|ring|pyramid|grid|square)\b", t)
+    if shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
+        ops.append(Op("structure", {"to": STRUCTURE_WORDS[shape.group(1)]}))
+    return ops
+
+
+def looks_standalone(t: str) -> bool:
+    """True when a normalised edit reads as a whole task rather than a change to one."""
+    return not ANAPHORA_RE.search(t)
+
+
+def intent_of_ops(ops: list[Op]) -> str:
+    return max((OP_INTENT[o.op] for o in ops), key=INTENTS.index, default="tweak")
+
+
+def intent_of_standalone(new: TaskSpec | None, ref: TaskSpec | None) -> str:
+    """Tweak, Modify or Pivot for a whole task stated as an edit, compared with its reference."""
+    if new is None or ref is None or new.structure != ref.structure:
+        return "pivot"
+    if (new.material, new.ordering, new.descending, new.layer_colors, new.piles_by, new.outliers, new.word) != \
+            (ref.material, ref.ordering, ref.descending, ref.layer_colors, ref.piles_by, ref.outliers, ref.word):
+        return "modify"
+    return "tweak"
+
+
+def interpret(edit: str) -> EditPlan:
+    """Read an edit into a plan (reference cue, operations or a whole new task).
+
+    Raises:
+        SteerError: empty edit.
+    """
+    if not edit or not edit.strip():
+        raise SteerError("the edit is empty; say what to change, e.g. \"add a green block on top\"")
+    t = normalize_edit(edit)
+    cue = find_reference(t)
+    fresh = FRESH_RE.search(t)
+    if fresh:
+        return EditPlan(edit, RefCue("none", phrase=fresh.group(0)), standalone=True, fresh=True)
+    ops = [] if looks_standalone(t) else read_ops(t)
+    return EditPlan(edit, cue, ops, standalone=not ops)
+
+
+def strip_edit_words(edit: str) -> str:
+    """The task part of a whole-task edit ("Start over: stack ..." -> "stack ...")."""
+    t = FRESH_RE.sub(" ", edit, count=1) if FRESH_RE.search(edit.lower()) else edit
+    t = re.sub(r"^\s*(?:now|ok(?:ay)?|actually|instead|then|next|and)\b[,:]?\s*", "", t.strip(), flags=re.IGNORECASE)
+    return t.strip(" ,:;.") or edit
+
+
+# ---------------------------------------------------------------------------
+# Applying operations to a spec
+# ---------------------------------------------------------------------------
+
+
+def _material_items(material: str, n: int, colors: list[str]) -> list[Item]:
+    if material == "letters":
+        return [Item(label=LETTERS[i % 26]) for i in range(n)]
+    if material == "digits":
+        return [Item(label=DIGITS[i % 10]) for i in range(n)]
+    if material == "mixed":
+        cycle = [Item(label="A"), Item(label="1"), Item(color="red")]
+        out = []
+        for i in range(n):
+            k = i % 3
+            out.append(Item(label=LETTERS[i // 3]) if k == 0 else Item(label=DIGITS[i // 3]) if k == 1 else
+                       Item(color=DEFAULT_COLORS[i // 3 % len(DEFAULT_COLORS)]))
+        return out or cycle[:n]
+    palette = colors or list(DEFAULT_COLORS)
+    return [Item(color=palette[i % len(palette)]) for i in range(n)]
+
+
+def _next_item(spec: TaskSpec) -> Item:
+    """A cube that continues the spec's material: the next letter or digit, or an unused colour."""
+    labels = [i.label for i in spec.items if i.label]
+    if spec.material == "letters" and labels:
+        return Item(label=next((c for c in LETTERS if c not in labels), "A"))
+    if spec.material == "digits" and labels:
+        return Item(label=next((d for d in DIGITS if d not in labels), "1"))
+    used = set(spec.colors())
+    return Item(color=next((c for c in DEFAULT_COLORS if c not in used), "red"))
+
+
+def _indices(spec: TaskSpec, sel: dict) -> list[int]:
+    n = len(spec.items)
+    if sel.get("all"):
+        return list(range(n))
+    if "position" in sel:
+        pos = {"bottom": 0, "top": n - 1, "middle": n // 2, "second": 1, "third": 2}[sel["position"]]
+        if spec.structure == "line" and sel["position"] in ("bottom", "top"):
+            pos = 0 if sel["position"] == "bottom" else n - 1
+        return [pos] if 0 <= pos < n else []
+    if "color" in sel:
+        return [i for i, it in enumerate(spec.items) if it.color == sel["color"]]
+    return [i for i, it in enumerate(spec.items) if it.label == sel.get("label")]
+
+
+def _resize(spec: TaskSpec, n: int) -> TaskSpec:
+    items = list(spec.items[:n])
+    while len(items) < n:
+        grow = replace(spec, items=tuple(items))
+        same = len(set(items)) == 1 and items and items[0].label is None
+        items.append(items[0] if same else _next_item(grow))
+    return spec.with_items(items)
+
+
+def _pyramid_count(base: int, dims: int) -> int:
+    return sum((base - k) ** (dims - 1) for k in range(base))
+
+
+def _layer_sizes(spec: TaskSpec) -> list[int]:
+    if spec.structure == "pyramid":
+        base, dims = spec.dims
+        return [(base - k) ** (dims - 1) for k in range(base)]
+    if spec.structure == "block":
+        r, c, layers = spec.dims
+        return [r * c] * layers
+    return [len(spec.items)]
+
+
+def _with_layer_colors(spec: TaskSpec) -> TaskSpec:
+    sizes = _layer_sizes(spec)
+    palette = list(dict.fromkeys(spec.colors())) + [c for c in DEFAULT_COLORS if c not in spec.colors()]
+    items = [Item(color=palette[k]) for k, size in enumerate(sizes) for _ in range(size)]
+    return replace(spec, items=tuple(items), layer_colors=True, ordering=None, descending=False)
+
+
+def _fit_structure(spec: TaskSpec, target: str) -> TaskSpec:
+    n = len(spec.items)
+    base = dict(ordering=spec.ordering if target in ("line", "grid", "pyramid") else None, descending=spec.descending)
+    if target == "tower":
+        if n < 2:
+            raise SteerError("a tower needs at least two cubes")
+        return TaskSpec("tower", spec.items)
+    if target == "line":
+        return TaskSpec("line", spec.items, direction="left_to_right", **base)
+    if target == "circle":
+        if n < 3:
+            raise SteerError("a circle needs at least three cubes")
+        return TaskSpec("circle", spec.items)
+    if target == "pyramid":
+        for b in range(2, 8):
+            if _pyramid_count(b, 2) >= n:
+                return _resize(TaskSpec("pyramid", spec.items, (b, 2), **base), _pyramid_count(b, 2))
+    if target == "grid":
+        side = max(2, round(n ** 0.5))
+        return _resize(TaskSpec("grid", spec.items, (side, side), **base), side * side)
+    if target == "piles":
+        return TaskSpec("piles", spec.items, piles_by="type" if spec.material == "mixed" else "color")
+    raise SteerError(f"cannot turn a {spec.structure} into a {target}")
+
+
+APPLY_ORDER = ("structure", "material", "dims", "count", "remove", "recolor", "relabel", "add", "reverse", "ordering", "outliers")
+"""Order in which an edit's operations are applied to the spec."""
+
+
+def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
+    """The spec after the edit's operations, in order.
+
+    Operations apply in :data:`APPLY_ORDER` (material before ordering, and so on), whatever
+    the order of the words.
+
+    Raises:
+        SteerError: an operation does not fit the structure (the message says what would).
+    """
+    for o in sorted(ops, key=lambda o: APPLY_ORDER.index(o.op)):
+        p = o.params
+        if o.op == "structure":
+            if p["to"] != spec.structure:
+                spec = _fit_structure(spec, p["to"])
+        elif o.op == "material":
+            if p["to"] == spec.material:
+                continue
+            if spec.structure == "piles":
+                spec = replace(spec, piles_by="type" if p["to"] == "mixed" else spec.piles_by)
+            spec = spec.with_items(_material_items(p["to"], len(spec.items), []))
+            if spec.ordering == "label" and spec.material == "digits":
+                spec = replace(spec, ordering="number")
+            elif spec.ordering == "number" and spec.material == "letters":
+                spec = replace(spec, ordering="label")
+            elif spec.ordering in ("label", "number") and spec.material == "colors":
+                spec = replace(spec, ordering=None)
+            spec = replace(spec, word=None, layer_colors=spec.layer_colors and spec.material == "colors")
+        elif o.op == "ordering":
+            key = p["key"]
+            if spec.structure == "piles":
+                spec = replace(spec, piles_by="color" if key == "color" else "type")
+                continue
+            if key == "color" and spec.structure in ("pyramid", "block"):
+                spec = _with_layer_colors(spec)
+                continue
+            need = {"label": "letters", "number": "digits", "color": "colors"}[key]
+            if spec.material != need:
+                spec = spec.with_items(_material_items(need, len(spec.items), spec.colors()))
+            if key == "color" and spec.structure == "line":
+                spec = spec.with_items(_material_items("colors", len(spec.items), [c for c in DEFAULT_COLORS]))
+            spec = replace(spec, ordering=key, descending=p.get("descending", False), word=None, layer_colors=False,
+                           direction=spec.direction or "left_to_right")
+        elif o.op == "reverse":
+            keep = set(_indices(spec, p["keep"])) if p.get("keep") else set()
+            idx = [i for i, it in enumerate(spec.items) if i not in keep and (not p.get("colors_only") or it.label is None)]
+            items = list(spec.items)
+            for i, j in zip(idx, reversed(idx), strict=True):
+                items[i] = spec.items[j]
+            spec = spec.with_items(items)
+            if spec.ordering:
+                spec = replace(spec, descending=not spec.descending)
+        elif o.op == "add":
+            if spec.structure not in ("tower", "line", "circle", "piles"):
+                raise SteerError(f"cubes cannot be added one by one to a {spec.structure}; change its size instead "
+                                 "(e.g. \"make the base 4\")")
+            new = [Item(**d) for d in p["items"]] or []
+            grow = spec
+            for _ in range(p.get("count") or 0):
+                item = _next_item(grow)
+                new.append(item)
+                grow = grow.with_items(list(grow.items) + [item])
+            items = new + list(spec.items) if p.get("at") == "bottom" else list(spec.items) + new
+            spec = spec.with_items(items)
+            if spec.word:
+                spec = replace(spec, word=None)
+        elif o.op in ("recolor", "relabel"):
+            idx = _indices(spec, p["select"])
+            if not idx:
+                raise SteerError(f"the task has no cube matching {p['select']}; it has "
+                                 f"{', '.join(i.phrase() for i in spec.items)}")
+            items = list(spec.items)
+            for i in idx:
+                items[i] = Item(**p["to"])
+            spec = replace(spec.with_items(items), layer_colors=False if spec.layer_colors and len(idx) < len(items) else spec.layer_colors)
+        elif o.op == "remove":
+            idx = set(_indices(spec, p["select"]))
+            if not idx:
+                raise SteerError(f"the task has no cube matching {p['select']}")
+            spec = spec.with_items([it for i, it in enumerate(spec.items) if i not in idx])
+        elif o.op == "dims":
+            if "base" in p:
+                if spec.structure != "pyramid":
+                    raise SteerError(f"a {spec.structure} has no base size; name its dimensions instead")
+                dims = (p["base"], spec.dims[1])
+                spec = _resize(replace(spec, dims=dims), _pyramid_count(*dims))
+            else:
+                d = tuple(p["dims"])
+                if spec.structure == "pyramid" and len(d) == 2 and d[0] == d[1]:
+                    spec = _resize(replace(spec, dims=(d[0], 3)), _pyramid_count(d[0], 3))
+                elif spec.structure in ("grid", "block"):
+                    structure = "block" if len(d) == 3 else "grid"
+                    n = d[0] * d[1] * (d[2] if len(d) == 3 else 1)
+                    spec = _resize(replace(spec, structure=structure, dims=d), n)
+                else:
+                    raise SteerError(f"dimensions {'x'.join(map(str, d))} do not fit a {spec.structure}")
+            if spec.layer_colors:
+                spec = _with_layer_colors(spec)
+        elif o.op == "count":
+            if spec.structure not in ("tower", "line", "circle", "piles"):
+                raise SteerError(f"the size of a {spec.structure} is set by its dimensions (e.g. \"a 3x3 base\")")
+            n = p.get("count") or len(spec.items) + p.get("delta", 0)
+            spec = _resize(spec, n)
+        elif o.op == "outliers":
+            if spec.structure != "piles":
+                raise SteerError("outliers apply to piles; this task has a " + spec.structure)
+            spec = replace(spec, outliers=p["per_pile"])
+    return spec

@@ -1,0 +1,205 @@
+"""``rpg steer``: interpret an edit, pick the version it builds on, recompile, record.
+
+Python API::
+
+    from rpg.steer import steer
+    r = steer("library/place_blue_cube", "Add a green cube on top of the blue")
+    r.version, r.intent, r.reference, r.valid
+
+Steps (paper, "Controlled Task Modifications"): 1. intent and parameters
+(:mod:`rpg.steer.edits`); 2. reference version: explicit back-references, history search
+by colours, asset material, structure and count, and asset compatibility (an ordering that
+needs letter or digit cubes prefers an earlier version that has them); 3. preservation
+flags from the intent; 4. the edit applied to the reference's :class:`TaskSpec`, rendered
+as a canonical instruction and compiled through all four passes.  A version is recorded
+only if every gate passes; an edit whose task equals an existing version's (same code
+hash) moves the head back to that version instead of duplicating it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from rpg.compiler import CompileResult, build, load_artifact
+from rpg.schema.builtin import parse
+from rpg.schema.feasibility import check_feasibility
+from rpg.schema.model import TaskSchema
+from rpg.steer.edits import (
+    PRESERVATION,
+    EditPlan,
+    SteerError,
+    apply_ops,
+    intent_of_ops,
+    intent_of_standalone,
+    interpret,
+    strip_edit_words,
+)
+from rpg.steer.family import Family, FamilyHistory, code_hash, create_family, is_family, snapshot_of
+from rpg.steer.spec import TaskSpec, extract, render
+
+
+@dataclass
+class SteerResult:
+    """Outcome of one steering edit."""
+
+    family: Path
+    edit: str
+    intent: str
+    reference: int | None
+    version: int | None
+    valid: bool
+    reused: bool = False
+    instruction: str = ""
+    notes: list[str] = field(default_factory=list)
+    compile: CompileResult | None = None
+    parameters: dict = field(default_factory=dict)
+
+    def to_json(self) -> dict:
+        doc = {"family": str(self.family), "edit": self.edit, "intent": self.intent,
+               "reference": None if self.reference is None else f"v{self.reference}",
+               "version": None if self.version is None else f"v{self.version}", "valid": self.valid,
+               "reused": self.reused, "instruction": self.instruction, "notes": self.notes,
+               "parameters": self.parameters}
+        if self.compile is not None:
+            doc["gates"] = self.compile.to_json()["gates"]
+            doc["path"] = str(self.compile.path)
+        return doc
+
+
+def _spec_of(fam: Family, version_id: int) -> tuple[TaskSchema, TaskSpec | None]:
+    schema = fam.schema(version_id)
+    return schema, extract(schema)
+
+
+def _matches(fam: Family, version_id: int, cue) -> bool:
+    schema, spec = _spec_of(fam, version_id)
+    cubes = [a for a in schema.assets if a.kind != "goal_patch"]
+    colors = {a.color for a in cubes if a.kind == "colored_cube"}
+    if cue.colors and (colors != set(cue.colors) if cue.exact else not set(cue.colors) <= colors):
+        return False
+    if cue.material:
+        have = spec.material if spec else ("colors" if all(a.kind == "colored_cube" for a in cubes) else "mixed")
+        if have != cue.material:
+            return False
+    if cue.structure and (spec is None or spec.structure != cue.structure):
+        return False
+    return not (cue.count and len(cubes) != cue.count)
+
+
+def resolve_reference(plan: EditPlan, hist: FamilyHistory, fam: Family) -> tuple[int | None, list[str]]:
+    """The version an edit builds on, and notes on how it was chosen.
+
+    Raises:
+        SteerError: an explicit reference that names no version.
+    """
+    cue, head = plan.cue, hist.head
+    notes: list[str] = []
+    if plan.fresh:
+        return None, ["fresh task: no reference"]
+    if cue.kind == "version":
+        if cue.version >= len(hist.versions):
+            raise SteerError(f"{cue.phrase!r}: the family has versions v0..v{len(hist.versions) - 1}")
+        return cue.version, [f"explicit reference {cue.phrase!r}"]
+    if cue.kind == "original":
+        return 0, [f"explicit reference {cue.phrase!r}"]
+    if cue.kind == "previous":
+        parent = hist.get(head).parent
+        ref = parent if parent is not None else max(head - 1, 0)
+        return ref, [f"back-reference {cue.phrase!r}: the version before v{head}"]
+    if cue.kind == "search":
+        for v in reversed(hist.versions):
+            if v.version_id != head and _matches(fam, v.version_id, cue):
+                return v.version_id, [f"back-reference {cue.phrase!r} matched v{v.version_id} ({v.goal_summary})"]
+        if cue.colors or cue.structure or cue.count:
+            raise SteerError(f"no earlier version matches {cue.phrase!r}; versions: " +
+                             "; ".join(f"v{v.version_id}: {v.goal_summary}" for v in hist.versions))
+        notes.append(f"no earlier version matches {cue.phrase!r}; building on the current version")
+        return head, notes
+    # current, unless an ordering needs labels the current cubes lack and no material change is asked
+    need = {"label": "letters", "number": "digits"}
+    wants = [need[o.params["key"]] for o in plan.ops if o.op == "ordering" and o.params["key"] in need]
+    if wants and not any(o.op == "material" for o in plan.ops):
+        _, spec = _spec_of(fam, head)
+        if spec is not None and spec.material != wants[0]:
+            for v in reversed(hist.versions):
+                if v.version_id == head:
+                    continue
+                _, other = _spec_of(fam, v.version_id)
+                if other is not None and other.material == wants[0] and other.structure == spec.structure:
+                    return v.version_id, [f"asset compatibility: v{v.version_id} has {wants[0]} cubes"]
+            notes.append(f"no earlier version has {wants[0]} cubes; the current version's cubes are replaced")
+    return head, notes
+
+
+def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[TaskSchema, str, str]:
+    """The new version's schema, its canonical instruction and the intent.
+
+    Raises:
+        SteerError: the edit does not apply to the reference task.
+        ParseError / InfeasibleTask: the resulting task cannot be read or realised.
+    """
+    if plan.standalone:
+        text = strip_edit_words(plan.text)
+        schema = parse(text)
+        if plan.fresh:
+            return schema, text, "fresh"
+        ref_spec = _spec_of(fam, reference)[1]
+        return schema, text, intent_of_standalone(extract(schema), ref_spec)
+    ref_schema, ref_spec = _spec_of(fam, reference)
+    if ref_spec is None:
+        raise SteerError(f"v{reference} ({ref_schema.goal_summary}) is not a structure the builtin steering edits in place; "
+                         "state the whole new task in the edit, or use --model")
+    spec = apply_ops(ref_spec, plan.ops)
+    try:
+        instruction = render(spec)
+    except ValueError as exc:
+        raise SteerError(str(exc)) from None
+    return parse(instruction), instruction, intent_of_ops(plan.ops)
+
+
+def steer(family: str | Path, edit: str, seed: int | None = None, disabled: frozenset[str] = frozenset()) -> SteerResult:
+    """Apply an edit to a family (a compiled task becomes v0 of a new family first).
+
+    Raises:
+        SteerError: the edit cannot be interpreted or applied (the family is unchanged).
+        FamilyError / ArtifactError: not a family or artifact, or a corrupt history.
+        ParseError / InfeasibleTask: the edited task cannot be read or realised.
+    """
+    path = Path(family)
+    if not is_family(path):
+        load_artifact(path)
+        create_family(path)
+    fam = Family(path)
+    with fam.lock():
+        hist = fam.load()
+        fam.remove_orphans(hist)
+        plan = interpret(edit)
+        reference, notes = resolve_reference(plan, hist, fam)
+        schema, instruction, intent = plan_schema(plan, fam, reference)
+        schema = check_feasibility(schema)
+        if seed is None:
+            seed = int(load_artifact(fam.version_dir(hist.head))[1].get("provenance", {}).get("seed", 0))
+        result = SteerResult(path, edit, intent, reference, None, False, instruction=instruction, notes=notes,
+                             parameters=plan.parameters())
+        digest = code_hash(schema)
+        same = next((v for v in hist.versions if v.code_hash == digest), None)
+        if same is not None:
+            hist.head = same.version_id
+            fam.save(hist)
+            result.version, result.valid, result.reused = same.version_id, True, True
+            result.notes.append(f"the edit loops back to v{same.version_id}; reusing it (no new version)")
+            return result
+        vid = len(hist.versions)
+        compiled = build(schema, path, seed, disabled, name=f"v{vid}")
+        result.compile = compiled
+        if not compiled.valid:
+            result.notes.append(f"validation failed after repair; the attempt is in {compiled.path}")
+            return result
+        parent = hist.get(reference if reference is not None else hist.head)
+        snap = snapshot_of(compiled.path, vid, edit, parent, reference, intent, plan.parameters(), PRESERVATION[intent])
+        hist.versions.append(snap)
+        hist.head = vid
+        fam.save(hist)
+        result.version, result.valid = vid, True
+        return result
