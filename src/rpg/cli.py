@@ -56,8 +56,11 @@ def _bad_input_errors():
     from rpg.domain.scene import SceneError
     from rpg.schema.builtin import ParseError
     from rpg.schema.feasibility import InfeasibleTask
+    from rpg.steer.edits import SteerError
+    from rpg.steer.family import FamilyError
 
-    return (ParseError, InfeasibleTask, UnknownColorError, UnknownLabelError, ArtifactError, SceneError, ValueError)
+    return (ParseError, InfeasibleTask, UnknownColorError, UnknownLabelError, ArtifactError, SceneError,
+            SteerError, FamilyError, ValueError)
 
 
 @app.command("compile")
@@ -67,6 +70,7 @@ def compile_cmd(
     seed: Annotated[int, typer.Option("--seed", help="Seed of the episode shown in the snapshots and checks.")] = 0,
     model: Annotated[str | None, typer.Option("--model", help="'builtin' (default) or a litellm model name.")] = None,
     disable: Annotated[list[str], typer.Option("--disable", help="Switch a gate off (ablation).")] = [],  # noqa: B006
+    family: Annotated[bool, typer.Option("--family", help="Start a task family: the task becomes its v0.")] = False,
     as_json: Annotated[bool, typer.Option("--json", help="Print one JSON document.")] = False,
 ) -> None:
     """Compile INSTRUCTION into a validated task artifact OUTPUT/<slug>/."""
@@ -75,6 +79,11 @@ def compile_cmd(
     model = model or os.environ.get("RPG_MODEL") or None
     try:
         result = compile_instruction(instruction, output, seed, frozenset(disable), model)
+        if family and result.valid:
+            from rpg.steer.family import create_family
+
+            create_family(result.path)
+            result.path = result.path / "v0"
     except NotImplementedError as exc:
         _fail(str(exc))
     except _bad_input_errors() as exc:
@@ -82,18 +91,171 @@ def compile_cmd(
     if as_json:
         print(json.dumps(result.to_json(), indent=2))
     else:
-        status = "[green]valid[/]" if result.valid else "[red]rejected[/]"
-        out.print(f"{status} task [bold]{result.schema.name}[/]: {result.schema.goal_summary}", highlight=False)
-        for g in result.gates:
-            mark = {"pass": "[green]pass[/]", "fail": "[red]FAIL[/]", "skipped": "[yellow]skip[/]"}[g["status"]]
-            out.print(f"  {g['gate']:<11} {mark} {g.get('message', '')}", highlight=False)
-        for r in result.schema.repairs:
-            out.print(f"  repair {r.operator}: {r.reason}", highlight=False)
-        out.print(f"artifact:  {result.path}")
-        for k in ("initial", "goal"):
-            if (result.path / f"{k}.png").exists():
-                out.print(f"snapshot:  {result.path / (k + '.png')}")
+        _print_compile(result)
+        if family and result.valid:
+            out.print(f"family:    {result.path.parent}")
     raise typer.Exit(EXIT_OK if result.valid else EXIT_INVALID)
+
+
+def _print_compile(result) -> None:
+    status = "[green]valid[/]" if result.valid else "[red]rejected[/]"
+    out.print(f"{status} task [bold]{result.schema.name}[/]: {result.schema.goal_summary}", highlight=False)
+    for g in result.gates:
+        mark = {"pass": "[green]pass[/]", "fail": "[red]FAIL[/]", "skipped": "[yellow]skip[/]"}[g["status"]]
+        out.print(f"  {g['gate']:<11} {mark} {g.get('message', '')}", highlight=False)
+    for r in result.schema.repairs:
+        out.print(f"  repair {r.operator}: {r.reason}", highlight=False)
+    out.print(f"artifact:  {result.path}")
+    for k in ("initial", "goal"):
+        if (result.path / f"{k}.png").exists():
+            out.print(f"snapshot:  {result.path / (k + '.png')}")
+
+
+@app.command("steer")
+def steer_cmd(
+    family: Annotated[Path, typer.Argument(help="A task family (or a compiled task, which becomes v0 of one).")],
+    edit: Annotated[str, typer.Argument(help="The change, in plain language.")],
+    seed: Annotated[int | None, typer.Option("--seed", help="Seed of the checks (default: the family's).")] = None,
+    model: Annotated[str | None, typer.Option("--model", help="'builtin' (default) or a litellm model name.")] = None,
+    disable: Annotated[list[str], typer.Option("--disable", help="Switch a gate off (ablation).")] = [],  # noqa: B006
+    as_json: Annotated[bool, typer.Option("--json", help="Print one JSON document.")] = False,
+) -> None:
+    """Classify EDIT, pick the version it builds on, recompile and record a new version."""
+    from rpg.steer import steer
+
+    model = model or os.environ.get("RPG_MODEL") or None
+    if model not in (None, "builtin"):
+        _fail(f"model backend {model!r} is not available for steering in this build; use the builtin interpreter")
+    try:
+        r = steer(family, edit, seed, frozenset(disable))
+    except _bad_input_errors() as exc:
+        _fail(str(exc))
+    if as_json:
+        print(json.dumps(r.to_json(), indent=2))
+    else:
+        ref = "none" if r.reference is None else f"v{r.reference}"
+        out.print(f"intent [bold]{r.intent}[/], reference {ref}", highlight=False)
+        for note in r.notes:
+            out.print(f"  {note}", highlight=False)
+        out.print(f"  instruction: {r.instruction}", highlight=False)
+        if r.compile is not None:
+            _print_compile(r.compile)
+        if r.valid:
+            out.print(f"[green]{'reused' if r.reused else 'recorded'}[/] v{r.version} in {r.family}", highlight=False)
+    raise typer.Exit(EXIT_OK if r.valid else EXIT_INVALID)
+
+
+def _family(path: Path):
+    from rpg.steer.family import Family
+
+    fam = Family(path)
+    try:
+        return fam, fam.load()
+    except _bad_input_errors() as exc:
+        _fail(str(exc))
+
+
+@app.command("log")
+def log_cmd(
+    family: Annotated[Path, typer.Argument(help="A task family.")],
+    as_json: Annotated[bool, typer.Option("--json")] = False,
+) -> None:
+    """Print a family's history as a tree of versions."""
+    from rich.tree import Tree
+
+    _, hist = _family(family)
+    if as_json:
+        print(json.dumps(hist.model_dump(), indent=2))
+        return
+    children: dict[int | None, list] = {}
+    for v in hist.versions:
+        children.setdefault(v.parent, []).append(v)
+
+    def label(v) -> str:
+        head = " [bold cyan](head)[/]" if v.version_id == hist.head else ""
+        return (f"[bold]v{v.version_id}[/] {v.lineage_hash[:10]} [magenta]{v.intent}[/]{head}: {v.description}\n"
+                f"[dim]{v.goal_summary}[/]")
+
+    tree = Tree(f"[bold]{hist.name}[/] ({len(hist.versions)} versions)")
+
+    def add(node, parent):
+        for v in children.get(parent, []):
+            add(node.add(label(v)), v.version_id)
+
+    add(tree, None)
+    out.print(tree, highlight=False)
+
+
+@app.command("verify")
+def verify_cmd(
+    family: Annotated[Path, typer.Argument(help="A task family.")],
+    as_json: Annotated[bool, typer.Option("--json")] = False,
+) -> None:
+    """Recompute every hash of a family; exit 1 if any version's files or history were altered."""
+    fam, _ = _family(family)
+    report = fam.verify()
+    ok = all(r["ok"] for r in report)
+    if as_json:
+        print(json.dumps({"ok": ok, "versions": report}, indent=2))
+    else:
+        for r in report:
+            mark = "[green]ok[/]" if r["ok"] else "[red]ALTERED[/]"
+            out.print(f"v{r['version']:<3} {mark} {'; '.join(r['problems'])}", highlight=False)
+    raise typer.Exit(EXIT_OK if ok else EXIT_INVALID)
+
+
+@app.command("show")
+def show_cmd(
+    target: Annotated[str, typer.Argument(help="FAMILY@v3, FAMILY@<hash prefix> or FAMILY (the head).")],
+    as_json: Annotated[bool, typer.Option("--json")] = False,
+) -> None:
+    """Resolve and print one version of a family."""
+    path, _, ref = target.rpartition("@") if "@" in target else (target, "", "")
+    fam, _ = _family(Path(path))
+    try:
+        v = fam.resolve(ref or None)
+    except _bad_input_errors() as exc:
+        _fail(str(exc))
+    doc = {**v.model_dump(), "path": str(fam.version_dir(v.version_id))}
+    if as_json:
+        print(json.dumps(doc, indent=2))
+        return
+    for k, val in doc.items():
+        out.print(f"{k:<18} {val}", highlight=False)
+
+
+session_app = typer.Typer(help="Scripted steering sessions.", no_args_is_help=True)
+app.add_typer(session_app, name="session")
+
+
+@session_app.command("run")
+def session_run_cmd(
+    session: Annotated[Path, typer.Argument(help="Session YAML: name, steps (instruction, then edits).")],
+    output: Annotated[Path, typer.Option("-o", "--output", help="Directory to write the family into.")] = Path("out"),
+    seed: Annotated[int, typer.Option("--seed")] = 0,
+    as_json: Annotated[bool, typer.Option("--json")] = False,
+) -> None:
+    """Run an instruction and its edits; exit 1 if any step fails or misses its expectations."""
+    from rpg.steer.session import SessionError, run_session
+
+    try:
+        fam, steps = run_session(session, output, seed)
+    except (SessionError, *_bad_input_errors()) as exc:
+        _fail(str(exc))
+    ok = all(s.ok for s in steps)
+    if as_json:
+        print(json.dumps({"family": str(fam), "ok": ok, "steps": [s.to_json() for s in steps]}, indent=2))
+    else:
+        from rich.table import Table
+
+        table = Table(title=f"session {session.stem} -> {fam}")
+        for col in ("step", "text", "intent", "reference", "version", "result"):
+            table.add_column(col)
+        for s in steps:
+            table.add_row(str(s.index), s.text, s.intent, s.reference or "-", s.version or "-",
+                          "[green]ok[/]" if s.ok else "[red]" + "; ".join(s.problems) + "[/]")
+        out.print(table)
+    raise typer.Exit(EXIT_OK if ok else EXIT_INVALID)
 
 
 @app.command("validate")

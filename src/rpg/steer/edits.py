@@ -100,7 +100,9 @@ STRUCTURE_WORDS = {
 }
 STRUCTURE_RE = r"\b(towers?|stacks?|lines?|rows?|circles?|rings?|pyramids?|grids?|squares?|piles?)\b"
 FRESH_RE = re.compile(r"\b(?:new task|another task|start over|start fresh|from scratch|unrelated|something (?:completely |totally )?(?:different|else)|forget (?:it|that|this|everything|about it))\b[:,.!]?")
-ANAPHORA_RE = re.compile(r"\b(?:it|them|they|its|their|those|these|instead|back|again|now)\b|\b(?:add|change|replace|swap|remove|delete|flip|reverse|invert|keep|undo|revert|turn)\b")
+ANAPHORA_RE = re.compile(r"\b(?:it|them|they|its|their|those|these|instead|back|again|now|also|more|rather)\b"
+                         r"|\b(?:add|append|change|replace|swap|substitute|remove|delete|flip|reverse|invert|keep|undo|revert|turn|paint|recolou?r)\b|\bmake (?:the|it|them)\b")
+"""Words that make an edit a change to the current task rather than a whole new one."""
 CUT_RE = re.compile(r"\band (?:then|instead|now|also)\b|\binstead\b|\bthen\b|\bbut\b|[;,.]")
 MATERIAL_WORDS = (("letters", r"\bletters?\b|\balphabet\b"), ("digits", r"\bnumbers?\b|\bdigits?\b"), ("colors", r"\bcolou?r(?:s|ed)?\b"))
 ORDERING_PHRASES = (

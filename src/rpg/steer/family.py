@@ -11,8 +11,9 @@ Paper, appendix "Version History Representation".  Hashes:
 
 * ``content_hash``: the artifact's hash (task.yaml fields and both code files).
 * ``code_hash``: SHA-256 of the code generated from the version's schema with its language
-  (name, instruction, paraphrases, summary) blanked, so two versions that define the same
-  task share it whatever words produced them; steering uses it to detect loops.
+  (name, instruction, paraphrases, summary) blanked and its assets in name order, so two
+  versions that define the same task share it whatever words produced them; steering uses
+  it to detect loops.
 * ``lineage_hash``: SHA-256 over the content hash, the parent's lineage hash and the
   snapshot's own recorded fields, so a changed file *or* a changed history entry breaks
   the chain from that version on (:meth:`Family.verify`).
@@ -104,7 +105,8 @@ def code_hash(schema: TaskSchema) -> str:
     from rpg.codegen import generate
 
     bare = schema.model_copy(update={"name": "task", "instruction": "", "paraphrases": ["", "", ""],
-                                     "goal_summary": "", "repairs": []})
+                                     "goal_summary": "", "repairs": [],
+                                     "assets": sorted(schema.assets, key=lambda a: a.name)})
     code = generate(bare)
     return hashlib.sha256((code.code + "\0" + code.goal_state_code).encode()).hexdigest()
 

@@ -1,0 +1,226 @@
+"""Steering: intents, references, lineage, loops, asset compatibility, sessions, CLI."""
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import yaml
+
+from rpg.compiler import compile_instruction
+from rpg.steer import Family, SteerError, create_family, steer
+from rpg.steer.edits import apply_ops, interpret
+from rpg.steer.session import goal_tower, run_session
+from rpg.steer.spec import Item, TaskSpec, extract, render
+from rpg.schema.builtin import parse
+
+ROOT = Path(__file__).resolve().parents[1]
+SEEDS = ROOT.parent / "shared" / "seed-cases.yaml"
+RPG = [sys.executable, "-m", "rpg.cli"]
+
+
+def rpg(*args):
+    return subprocess.run([*RPG, *args], capture_output=True, text=True, env={**os.environ, "COLUMNS": "200"})
+
+
+def sessions():
+    if not SEEDS.exists():
+        return []
+    return yaml.safe_load(SEEDS.read_text())["benchmark_sessions"]
+
+
+# -- the paper's ten benchmark sessions --------------------------------------------
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("session", sessions(), ids=lambda s: s["name"])
+def test_benchmark_session_runs_with_expected_intents_and_references(session, tmp_path):
+    f = tmp_path / "s.yaml"
+    f.write_text(yaml.safe_dump(session))
+    fam, steps = run_session(f, tmp_path / "out")
+    assert len(steps) == len(session["steps"])
+    for step, want in zip(steps, session["steps"], strict=True):
+        assert step.ok, (step.text, step.problems)
+        if "expected_intent" in want:
+            assert step.intent == want["expected_intent"]
+    assert all(r["ok"] for r in Family(fam).verify())
+
+
+def test_examples_hold_the_ten_benchmark_sessions():
+    names = sorted(p.stem for p in (ROOT / "examples").glob("*.yaml"))
+    assert len(names) == 10
+    if SEEDS.exists():
+        assert names == sorted(s["name"] for s in sessions())
+        for s in sessions():
+            assert yaml.safe_load((ROOT / "examples" / f"{s['name']}.yaml").read_text()) == s
+
+
+@pytest.fixture()
+def evolution(tmp_path):
+    """evolution_revert_and_extend, steered through the API."""
+    r = compile_instruction("Make a simple 2-block tower with a red block on bottom and blue on top", tmp_path, name="fam")
+    fam = create_family(r.path)
+    return fam
+
+
+@pytest.mark.slow
+def test_revert_and_extend_then_letters_from_goal_positions(evolution):
+    fam = evolution
+    assert steer(fam.path, "Add a green block on top").reference == 0
+    assert steer(fam.path, "Add a yellow block on top of that").reference == 1
+    r = steer(fam.path, "Actually, go back to when it was just red and blue and instead add a purple block")
+    assert (r.intent, r.reference, r.version) == ("extend", 0, 3)
+    assert goal_tower(fam.version_dir(3)) == ["red", "blue", "purple"]
+    r = steer(fam.path, "Now from this simpler version, add letter cubes instead of colored ones")
+    assert (r.intent, r.reference) == ("modify", 3)
+    tower = goal_tower(fam.version_dir(r.version))
+    assert len(tower) == 3 and all(t.startswith("letter ") for t in tower)
+    hist = fam.load()
+    assert [v.parent for v in hist.versions] == [None, 0, 1, 0, 3]
+
+
+def test_lineage_catches_edited_code_and_history(evolution, tmp_path):
+    fam = evolution
+    steer(fam.path, "Add a green block on top")
+    assert all(r["ok"] for r in fam.verify())
+    assert rpg("verify", str(fam.path)).returncode == 0
+    code = fam.version_dir(1) / "code.py"
+    original = code.read_text()
+    code.write_text(original.replace("'green'", "'yellow'"))
+    report = {r["version"]: r for r in fam.verify()}
+    assert report[0]["ok"] and not report[1]["ok"]
+    assert "content hash" in report[1]["problems"][0]
+    proc = rpg("verify", str(fam.path))
+    assert proc.returncode == 1 and "ALTERED" in proc.stdout
+    code.write_text(original)
+    hist_file = fam.path / "family.yaml"
+    text = hist_file.read_text()
+    hist_file.write_text(text.replace("intent: extend", "intent: tweak"))
+    report = {r["version"]: r for r in fam.verify()}
+    assert report[0]["ok"] and not report[1]["ok"]
+    assert "lineage" in report[1]["problems"][0]
+
+
+def test_loop_back_reuses_the_earlier_version(evolution):
+    fam = evolution
+    steer(fam.path, "Add a green block on top")
+    r = steer(fam.path, "Remove the top block")
+    assert r.reused and r.version == 0 and r.valid
+    hist = fam.load()
+    assert len(hist.versions) == 2 and hist.head == 0
+    assert not (fam.path / "v2").exists()
+
+
+def test_asset_incompatible_edit_finds_compatible_earlier_version(tmp_path):
+    r = compile_instruction("Arrange 4 letter cubes in alphabetical order from left to right", tmp_path, name="fam")
+    fam = create_family(r.path)
+    blue = steer(fam.path, "Arrange the blocks in order red, yellow, green, blue from left to right")
+    assert blue.valid and blue.version == 1
+    again = steer(fam.path, "Now sort them alphabetically")
+    assert again.reference == 0
+    assert any("asset compatibility" in n for n in again.notes)
+
+
+def test_fresh_edit_has_no_reference(evolution):
+    r = steer(evolution.path, "Start over with a new task: place the red block behind the yellow block")
+    assert (r.intent, r.reference, r.valid) == ("fresh", None, True)
+    snap = evolution.load().get(r.version)
+    assert snap.reference is None and snap.parent == 0
+    assert not any([snap.preserve_assets, snap.preserve_positions, snap.preserve_goals])
+
+
+def test_uninterpretable_edit_is_refused_and_family_unchanged(evolution):
+    before = (evolution.path / "family.yaml").read_bytes()
+    with pytest.raises(SteerError):
+        steer(evolution.path, "   ")
+    proc = rpg("steer", str(evolution.path), "florp the wizzle")
+    assert proc.returncode == 2 and "florp" in proc.stderr and "Traceback" not in proc.stderr
+    proc = rpg("steer", str(evolution.path), "go back to when it was just cyan and pink and add a red block")
+    assert proc.returncode == 2 and "no earlier version" in proc.stderr
+    assert (evolution.path / "family.yaml").read_bytes() == before
+    assert sorted(p.name for p in evolution.path.iterdir() if not p.name.startswith(".")) == ["family.yaml", "v0"]
+
+
+# -- the interpreter on edits beyond the paper's -----------------------------------------
+
+
+@pytest.mark.parametrize("edit,intent,ops", [
+    ("make it 5 blocks tall", "tweak", ["count"]),
+    ("Turn it into a circle", "pivot", ["structure"]),
+    ("use digit cubes instead of letters", "modify", ["material"]),
+    ("paint the top block orange", "tweak", ["recolor"]),
+    ("put two more blue cubes on top", "extend", ["add"]),
+    ("reverse the order", "modify", ["reverse"]),
+    ("make the base 4", "tweak", ["dims"]),
+    ("Stack the red block on top of the yellow block", None, []),
+])
+def test_interpreter_reads_edits_of_the_domain(edit, intent, ops):
+    from rpg.steer.edits import intent_of_ops
+
+    plan = interpret(edit)
+    assert [o.op for o in plan.ops] == ops
+    if intent:
+        assert intent_of_ops(plan.ops) == intent
+    else:
+        assert plan.standalone
+
+
+@pytest.mark.parametrize("edit,cue", [
+    ("go back to version 1 and add a red block", ("version", 1)),
+    ("use the original but with 4 blocks", ("original", None)),
+    ("undo that", ("previous", None)),
+    ("go back to the 3-block version", ("search", None)),
+    ("also add a red cube", ("current", None)),
+])
+def test_reference_cues(edit, cue):
+    plan = interpret(edit)
+    assert (plan.cue.kind, plan.cue.version) == cue
+
+
+def test_ops_apply_to_specs():
+    tower = TaskSpec("tower", (Item("red"), Item("blue"), Item("yellow"), Item(label="A")))
+    flipped = apply_ops(tower, interpret("Flip the color order of the tower but keep the letter 'A' on top").ops)
+    assert [i.phrase() for i in flipped.items] == ["yellow", "blue", "red", "letter 'A'"]
+    circle = apply_ops(tower, interpret("turn it into a circle").ops)
+    assert circle.structure == "circle" and circle.items == tower.items
+    pyramid = extract(parse("Build a pyramid of letter blocks alphabetically with a 3x3 base"))
+    bigger = apply_ops(pyramid, interpret("make the base 4").ops)
+    assert bigger.dims == (4, 3) and len(bigger.items) == 30
+    with pytest.raises(SteerError, match="base"):
+        apply_ops(pyramid, interpret("add a red block on top").ops)
+
+
+def test_every_editable_seed_task_round_trips_through_its_canonical_instruction():
+    if not SEEDS.exists():
+        pytest.skip("seed cases not present")
+    d = yaml.safe_load(SEEDS.read_text())
+    texts = [s["steps"][0]["instruction"] for s in d["benchmark_sessions"]]
+    texts += [t["instruction"] for k in ("reference_tasks", "training_tasks", "evaluation_tasks") for t in d[k]]
+    editable = 0
+    for t in texts:
+        spec = extract(parse(t))
+        if spec is None:
+            continue
+        editable += 1
+        assert extract(parse(render(spec))) == spec, t
+    assert editable >= 20
+
+
+def test_cli_steer_log_show_and_session(tmp_path):
+    proc = rpg("session", "run", str(ROOT / "examples" / "progressive_tower.yaml"), "-o", str(tmp_path), "--json")
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    doc = json.loads(proc.stdout)
+    assert doc["ok"] and [s["intent"] for s in doc["steps"]] == ["base", "extend", "tweak", "extend", "modify", "tweak"]
+    fam = doc["family"]
+    log = rpg("log", fam)
+    assert log.returncode == 0 and "v5" in log.stdout and "(head)" in log.stdout
+    shown = json.loads(rpg("show", f"{fam}@v2", "--json").stdout)
+    assert shown["intent"] == "tweak" and shown["reference"] == 1
+    by_hash = json.loads(rpg("show", f"{fam}@{shown['lineage_hash'][:8]}", "--json").stdout)
+    assert by_hash["version_id"] == 2
+    assert rpg("show", f"{fam}@v9").returncode == 2
+    r = rpg("steer", fam, "Change the base cube to yellow", "--json")
+    assert r.returncode == 0, r.stderr
+    assert json.loads(r.stdout)["reused"] is True  # yellow, blue, red, A is v4
