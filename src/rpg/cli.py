@@ -63,6 +63,16 @@ def _bad_input_errors():
             SteerError, FamilyError, ValueError)
 
 
+def make_llm_client(model: str | None):
+    """The model client for ``--model`` (None for the builtin front end); tests replace it
+    with a client that holds litellm mock responses."""
+    if model in (None, "builtin"):
+        return None
+    from rpg.schema.llm import LLMClient
+
+    return LLMClient(model)
+
+
 @app.command("compile")
 def compile_cmd(
     instruction: Annotated[str, typer.Argument(help="The task, in plain language.")],
@@ -71,20 +81,28 @@ def compile_cmd(
     model: Annotated[str | None, typer.Option("--model", help="'builtin' (default) or a litellm model name.")] = None,
     disable: Annotated[list[str], typer.Option("--disable", help="Switch a gate off (ablation).")] = [],  # noqa: B006
     family: Annotated[bool, typer.Option("--family", help="Start a task family: the task becomes its v0.")] = False,
+    replay: Annotated[Path | None, typer.Option("--replay", help="Recompile offline from an artifact's llm_log.jsonl.")] = None,
+    builtin_first: Annotated[bool, typer.Option("--builtin-first", help="With --model: ask the model only for what the builtin parser cannot read.")] = False,
     as_json: Annotated[bool, typer.Option("--json", help="Print one JSON document.")] = False,
 ) -> None:
     """Compile INSTRUCTION into a validated task artifact OUTPUT/<slug>/."""
     from rpg.compiler import compile_instruction
+    from rpg.schema.llm import ModelOutputError, ProviderError, ReplayError
 
     model = model or os.environ.get("RPG_MODEL") or None
     try:
-        result = compile_instruction(instruction, output, seed, frozenset(disable), model)
+        result = compile_instruction(instruction, output, seed, frozenset(disable), model, replay=replay,
+                                     builtin_first=builtin_first, llm=make_llm_client(model))
         if family and result.valid:
             from rpg.steer.family import create_family
 
             create_family(result.path)
             result.path = result.path / "v0"
-    except NotImplementedError as exc:
+    except ProviderError as exc:
+        _fail(str(exc), EXIT_PROVIDER)
+    except ModelOutputError as exc:
+        _fail(str(exc), EXIT_INVALID)
+    except ReplayError as exc:
         _fail(str(exc))
     except _bad_input_errors() as exc:
         _fail(str(exc))

@@ -160,8 +160,13 @@ def _atomic_replace(tmp: Path, target: Path) -> None:
 
 
 def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[str] = frozenset(),
-          backend: str = "builtin", model: str | None = None, name: str | None = None) -> CompileResult:
-    """Passes 2-4 on a schema: generate, validate, repair; write the artifact atomically."""
+          backend: str = "builtin", model: str | None = None, name: str | None = None,
+          extra_files: dict[str, str] | None = None) -> CompileResult:
+    """Passes 2-4 on a schema: generate, validate, repair; write the artifact atomically.
+
+    ``extra_files`` (name -> text, e.g. the model record ``llm_log.jsonl``) are written into
+    the artifact too; they are not part of its content hash.
+    """
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     log: list[str] = [f"rpg {__version__} compile {schema.name!r} (backend {backend}, seed {seed})"]
@@ -202,6 +207,8 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
         valid = gates_passed(gates)
         log.append("result: VALID" if valid else "result: REJECTED")
         digest = write_artifact_files(tmp, schema, seed, backend, model, gates, log)
+        for fname, text in sorted((extra_files or {}).items()):
+            (tmp / fname).write_text(text)
         slug = name or schema.name
         target = out_dir / slug if valid else out_dir / ".rejected" / slug
         _atomic_replace(tmp, target)
@@ -213,21 +220,60 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
 
 def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int = 0,
                         disabled: frozenset[str] = frozenset(), model: str | None = None,
-                        name: str | None = None) -> CompileResult:
+                        name: str | None = None, llm=None, replay: str | Path | None = None,
+                        builtin_first: bool = False) -> CompileResult:
     """Compile an instruction into a task artifact under ``out_dir/<slug>/`` (or ``out_dir/<name>/``).
+
+    Args:
+        instruction: the task in plain language (ignored when replaying).
+        model: ``None``/``"builtin"`` for the offline parser, or a litellm model name.
+        llm: an :class:`rpg.schema.llm.LLMClient` to use instead of a new one (tests, dry runs).
+        replay: an artifact directory or ``llm_log.jsonl`` to recompile from, offline.
+        builtin_first: with a model, read with the builtin parser first and ask the model
+            only for what the builtin parser cannot read.
 
     Raises:
         ParseError: the builtin front end cannot read the instruction.
         InfeasibleTask: the task cannot be realised and cannot be repaired.
+        ProviderError: the model provider failed.
+        ModelOutputError: the model gave no valid TaskSchema within its retries.
+        ReplayError: the replay record is missing, malformed or does not match.
         ValueError: unknown colour, label or gate name.
     """
+    from rpg.schema.builtin import ParseError
+
     unknown = set(disabled) - set(GATES)
     if unknown:
         raise ValueError(f"unknown gate(s) {sorted(unknown)}; gates are {', '.join(GATES)}")
-    if model not in (None, "builtin"):
-        raise NotImplementedError(f"model backend {model!r} is not available in this build; use the builtin parser")
-    schema = check_feasibility(parse(instruction))
-    return build(schema, Path(out_dir), seed, frozenset(disabled), name=name)
+    if replay is not None:
+        from rpg.schema.llm import LLMClient, load_record
+
+        header, exchanges = load_record(replay)
+        instruction, model = header["instruction"], header["model"]
+        llm = LLMClient(model, replay=exchanges)
+    elif llm is None and model not in (None, "builtin"):
+        from rpg.schema.llm import LLMClient
+
+        llm = LLMClient(model)
+    backend = "builtin"
+    if llm is None:
+        schema = parse(instruction)
+    else:
+        from rpg.schema.llm import llm_parse
+
+        schema = None
+        if builtin_first:
+            try:
+                schema = parse(instruction)
+            except ParseError:
+                schema = None
+        if schema is None:
+            schema = llm_parse(instruction, llm)
+            backend = "litellm"
+    schema = check_feasibility(schema)
+    extra = {"llm_log.jsonl": llm.log_text(instruction)} if llm is not None and llm.records else None
+    return build(schema, Path(out_dir), seed, frozenset(disabled), backend=backend,
+                 model=llm.model if llm is not None else None, name=name, extra_files=extra)
 
 
 def load_artifact(directory: str | Path) -> tuple[TaskSchema, dict]:
