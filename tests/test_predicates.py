@@ -238,3 +238,12 @@ def test_round_trip_and_diagnostics_are_json():
         from_dict({"predicate": "levitate"})
     with pytest.raises(KeyError, match="objects are"):
         On("zz", "b").evaluate(state(cube("b", 0.5, 0)))
+
+
+def test_swap_search_is_skipped_only_when_no_swap_can_matter():
+    from rpg.domain.predicates import _swaps_matter
+
+    ring = InCircle(("r1", "r2", "r3"))
+    assert not _swaps_matter(ring, [["r1", "r2", "r3"]])
+    assert _swaps_matter(And([Stack(("r1", "r3")), Stack(("r2", "r4"))]), [["r1", "r2", "r3", "r4"]])
+    assert _swaps_matter(And([ring, OnTable("r1")]), [["r1", "r2", "r3"]])

@@ -126,6 +126,9 @@ class Predicate:
     object_fields: ClassVar[tuple[str, ...]] = ()
     list_fields: ClassVar[tuple[str, ...]] = ()
     semantic: ClassVar[bool] = False
+    swap_invariant: ClassVar[bool] = False
+    """True when the result cannot change by swapping interchangeable objects (the predicate
+    compares positions, signatures or labels, never object identities)."""
 
     def __post_init__(self) -> None:
         for f in self.list_fields:
@@ -540,6 +543,7 @@ class Stack(Predicate):
 
     objects: tuple[str, ...]
     name: ClassVar[str] = "stack"
+    swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
 
     def _evaluate(self, state):
@@ -581,6 +585,7 @@ class InLine(Predicate):
     axis: str = "y"
     order: str | None = None
     name: ClassVar[str] = "in_line"
+    swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
 
     def _evaluate(self, state):
@@ -621,6 +626,7 @@ class InCircle(Predicate):
 
     objects: tuple[str, ...]
     name: ClassVar[str] = "in_circle"
+    swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
 
     def _evaluate(self, state):
@@ -688,6 +694,7 @@ class Grid(Predicate):
     cols: int
     layers: int = 1
     name: ClassVar[str] = "grid"
+    swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
 
     def _evaluate(self, state):
@@ -728,6 +735,7 @@ class Pyramid(Predicate):
     base: int
     dims: int = 2
     name: ClassVar[str] = "pyramid"
+    swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
 
     def expected_count(self) -> int:
@@ -778,6 +786,7 @@ class Piles(Predicate):
     by: str | None = None
     groups: tuple[tuple[str, ...], ...] = ()
     name: ClassVar[str] = "piles"
+    swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
 
     def rename(self, mapping):
@@ -850,6 +859,7 @@ class LayersUniform(Predicate):
     by: str = "color"
     axis: str = "z"
     name: ClassVar[str] = "layers_uniform"
+    swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
 
     def _evaluate(self, state):
@@ -905,6 +915,7 @@ class Reads(Predicate):
     direction: str = "left_to_right"
     face: str = "up"
     name: ClassVar[str] = "reads"
+    swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
     semantic: ClassVar[bool] = True
 
@@ -963,6 +974,7 @@ class Equation(Predicate):
     direction: str = "left_to_right"
     face: str = "up"
     name: ClassVar[str] = "equation"
+    swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
     semantic: ClassVar[bool] = True
 
@@ -1013,6 +1025,7 @@ class SortedBy(Predicate):
     strict: bool = True
     face: str = "up"
     name: ClassVar[str] = "sorted_by"
+    swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
     semantic: ClassVar[bool] = True
 
@@ -1229,11 +1242,36 @@ MAX_ASSIGNMENTS = 5040
 """Most object assignments tried when interchangeable objects could satisfy the goal."""
 
 
+def _swaps_matter(goal: Predicate, groups: list[list[str]]) -> bool:
+    """Whether swapping interchangeable objects can change the goal's result.
+
+    It cannot when every leaf predicate is ``swap_invariant`` and holds either all or none
+    of each group of interchangeable objects (a circle of six red cubes: no swap matters;
+    two stacks of red cubes: which cube is in which stack does).
+    """
+    leaves, stack = [], [goal]
+    while stack:
+        p = stack.pop()
+        kids = p.children()
+        if kids:
+            stack.extend(kids)
+        else:
+            leaves.append(p)
+    for leaf in leaves:
+        names = set(leaf.object_names())
+        for g in groups:
+            inside = names.intersection(g)
+            if inside and (not leaf.swap_invariant or len(inside) != len(g)):
+                return True
+    return False
+
+
 def evaluate_goal(goal: Predicate, state: WorldState) -> PredicateResult:
     """Evaluate ``goal``, accepting any swap of indistinguishable objects that satisfies it.
 
     Objects with the same kind, colour and labels are interchangeable: a goal naming
-    ``red_1`` and ``red_2`` holds if it holds with the two swapped.  At most
+    ``red_1`` and ``red_2`` holds if it holds with the two swapped (when a swap can matter
+    at all, see :func:`_swaps_matter`).  At most
     :data:`MAX_ASSIGNMENTS` assignments are tried; the literal result is returned if none
     satisfies the goal.
     """
@@ -1246,7 +1284,7 @@ def evaluate_goal(goal: Predicate, state: WorldState) -> PredicateResult:
         if n in state.objects and state[n].is_cube:
             classes.setdefault(_signature(state[n]), []).append(n)
     groups = [g for g in classes.values() if len(g) > 1]
-    if not groups:
+    if not groups or not _swaps_matter(goal, groups):
         return result
     total = math.prod(math.factorial(len(g)) for g in groups)
     if total > MAX_ASSIGNMENTS:  # checked before any permutation is built: 14 identical cubes have 14! of them

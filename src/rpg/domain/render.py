@@ -70,11 +70,37 @@ def render_image(scene: Scene, width: int = C.SNAPSHOT_SIZE[0], height: int = C.
 
 def render_snapshot(scene: Scene, path: str | Path, **kwargs) -> Path | None:
     """Write a PNG snapshot of the scene to ``path``; None (and a warning) without OpenGL."""
-    from PIL import Image
+    with Snapshotter(scene, **kwargs) as snap:
+        return snap.save(path)
 
-    img = render_image(scene, **kwargs)
-    if img is None:
-        return None
-    path = Path(path)
-    Image.fromarray(img).save(path, format="PNG", optimize=False)
-    return path
+
+class Snapshotter:
+    """Several snapshots of one scene through one renderer (one OpenGL context).
+
+    Use as a context manager; :meth:`save` writes the scene as it is now.
+    """
+
+    def __init__(self, scene: Scene, width: int = C.SNAPSHOT_SIZE[0], height: int = C.SNAPSHOT_SIZE[1],
+                 camera: str = C.CAMERA_NAME):
+        self.scene, self.camera = scene, camera
+        self.renderer = _make_renderer(scene.model, width, height)
+
+    def __enter__(self) -> Snapshotter:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        if self.renderer is not None:
+            self.renderer.close()
+            self.renderer = None
+
+    def save(self, path: str | Path) -> Path | None:
+        """Write a PNG of the scene's current state; None without OpenGL."""
+        from PIL import Image
+
+        if self.renderer is None:
+            return None
+        self.scene.forward()
+        self.renderer.update_scene(self.scene.data, camera=self.camera)
+        path = Path(path)
+        Image.fromarray(self.renderer.render()).save(path, format="PNG", optimize=False)
+        return path

@@ -7,11 +7,15 @@ timeout.  Its output is treated as data: bounded in size and parsed as JSON.
 
 from __future__ import annotations
 
+import atexit
 import json
 import os
+import select
+import shutil
 import subprocess
 import sys
 import tempfile
+import threading
 
 WORKER_TIMEOUT_S = 120.0
 """Wall-clock limit for one worker run, s."""
@@ -42,26 +46,16 @@ def _limits() -> None:  # pragma: no cover - runs in the child
     resource.setrlimit(resource.RLIMIT_NOFILE, (256, 256))
 
 
-def run_worker(request: dict, timeout: float = WORKER_TIMEOUT_S) -> dict:
-    """Run one worker request and return its parsed result.
-
-    Raises:
-        WorkerError: timeout, crash, oversize or malformed output.
-    """
+def _worker_env() -> dict[str, str]:
     env = {k: os.environ[k] for k in _KEEP_ENV if k in os.environ}
     env.setdefault("MUJOCO_GL", "egl")
     env["PYTHONHASHSEED"] = "0"
     env["PYTHONDONTWRITEBYTECODE"] = "1"  # task files are rewritten in place; stale .pyc must never be used
-    with tempfile.TemporaryDirectory(prefix="rpg-worker-") as cwd:
-        try:
-            proc = subprocess.run(
-                [sys.executable, "-m", "rpg.validate.worker"],
-                input=json.dumps(request).encode(), capture_output=True, timeout=timeout, cwd=cwd, env=env,
-                preexec_fn=_limits,
-            )
-        except subprocess.TimeoutExpired:
-            raise WorkerError(f"task code ran past the {timeout:.0f} s limit") from None
-    out = proc.stdout[:WORKER_MAX_OUTPUT + 1]
+    env["OPENBLAS_NUM_THREADS"] = "1"  # no BLAS threads in a process that forks
+    return env
+
+
+def _parse(out: bytes, stderr: bytes = b"", returncode: int | None = None) -> dict:
     if len(out) > WORKER_MAX_OUTPUT:
         raise WorkerError("task code produced more output than allowed")
     try:
@@ -69,6 +63,96 @@ def run_worker(request: dict, timeout: float = WORKER_TIMEOUT_S) -> dict:
     except json.JSONDecodeError:
         doc = None
     if not isinstance(doc, dict) or "ok" not in doc:
-        tail = proc.stderr.decode("utf-8", "replace").strip().splitlines()[-1:] or [f"exit code {proc.returncode}"]
+        tail = stderr.decode("utf-8", "replace").strip().splitlines()[-1:] or [f"exit code {returncode}"]
         raise WorkerError(f"task worker failed: {tail[0][:300]}")
+    if doc.get("contained") and not doc["ok"]:
+        raise WorkerError(doc["error"])
     return doc
+
+
+class _ForkServer:
+    """A long-lived :mod:`rpg.validate.forkserver` process owned by this process."""
+
+    def __init__(self):
+        self.owner = os.getpid()
+        self.cwd = tempfile.mkdtemp(prefix="rpg-forkserver-")
+        self.proc = subprocess.Popen(
+            [sys.executable, "-m", "rpg.validate.forkserver"], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+            stderr=subprocess.DEVNULL, cwd=self.cwd, env=_worker_env())
+
+    def alive(self) -> bool:
+        return self.owner == os.getpid() and self.proc.poll() is None
+
+    def run(self, request: dict, timeout: float) -> dict:
+        payload = json.dumps({**request, "_timeout": timeout}).encode()
+        try:
+            self.proc.stdin.write(f"{len(payload)}\n".encode() + payload)
+            self.proc.stdin.flush()
+            ready, _, _ = select.select([self.proc.stdout], [], [], timeout + SERVER_GRACE_S)
+            if not ready:
+                raise OSError("the fork server did not answer")
+            n = int(self.proc.stdout.readline())
+            return _parse(self.proc.stdout.read(n))
+        except (OSError, ValueError) as exc:
+            self.close()
+            raise _ServerDown(str(exc)) from None
+
+    def close(self) -> None:
+        if self.proc.poll() is None:
+            self.proc.kill()
+            self.proc.wait()
+        shutil.rmtree(self.cwd, ignore_errors=True)
+
+
+class _ServerDown(RuntimeError):
+    pass
+
+
+SERVER_GRACE_S = 30.0
+"""Extra wait for the fork server beyond a request's own timeout, s."""
+
+_server: _ForkServer | None = None
+_server_lock = threading.Lock()
+
+
+def _close_server() -> None:
+    if _server is not None and _server.owner == os.getpid():
+        _server.close()
+
+
+atexit.register(_close_server)
+
+
+def run_worker(request: dict, timeout: float = WORKER_TIMEOUT_S) -> dict:
+    """Run one worker request in a fresh, limited child process and return its parsed result.
+
+    Children are forked from a fork server that has imported the domain once (set
+    ``RPG_FORKSERVER=0`` to start a whole interpreter per request instead).
+
+    Raises:
+        WorkerError: timeout, crash, oversize or malformed output.
+    """
+    global _server
+    if os.environ.get("RPG_FORKSERVER", "1") != "0" and hasattr(os, "fork"):
+        with _server_lock:
+            for _ in range(2):
+                if _server is None or not _server.alive():
+                    _server = _ForkServer()
+                try:
+                    return _server.run(request, timeout)
+                except _ServerDown:
+                    _server = None
+    return _run_once(request, timeout)
+
+
+def _run_once(request: dict, timeout: float) -> dict:
+    with tempfile.TemporaryDirectory(prefix="rpg-worker-") as cwd:
+        try:
+            proc = subprocess.run(
+                [sys.executable, "-m", "rpg.validate.worker"],
+                input=json.dumps(request).encode(), capture_output=True, timeout=timeout, cwd=cwd, env=_worker_env(),
+                preexec_fn=_limits,
+            )
+        except subprocess.TimeoutExpired:
+            raise WorkerError(f"task code ran past the {timeout:.0f} s limit") from None
+    return _parse(proc.stdout[:WORKER_MAX_OUTPUT + 1], proc.stderr, proc.returncode)

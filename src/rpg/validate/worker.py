@@ -23,7 +23,7 @@ import networkx as nx
 import numpy as np
 
 from rpg.domain import constants as C
-from rpg.domain.render import render_snapshot
+from rpg.domain.render import Snapshotter
 from rpg.domain.scene import drift_report
 from rpg.domain.task import BlockTask
 from rpg.domain.visibility import face_visibility
@@ -251,11 +251,12 @@ def validate(req: dict) -> dict:
 
 
 def _snapshots(task, goal_mod, directory: Path, seed: int, tol: dict) -> dict:
-    task.reset(seed)
-    a = render_snapshot(task.scene, directory / "initial.png")
-    goal_mod.goal_state(task)
-    task.step(tol.get("settle_steps", C.SETTLE_STEPS))
-    b = render_snapshot(task.scene, directory / "goal.png")
+    with Snapshotter(task.scene) as snap:
+        task.reset(seed)
+        a = snap.save(directory / "initial.png")
+        goal_mod.goal_state(task)
+        task.step(tol.get("settle_steps", C.SETTLE_STEPS))
+        b = snap.save(directory / "goal.png")
     return {"initial": str(a) if a else None, "goal": str(b) if b else None}
 
 
@@ -307,15 +308,19 @@ def render(req: dict) -> dict:
 OPS = {"validate": validate, "inspect": inspect, "check": check, "render": render}
 
 
-def main() -> None:
-    req = json.loads(sys.stdin.read())
+def handle(req: dict) -> str:
+    """Run one request; the JSON document for the parent (errors are data too)."""
     try:
         out = OPS[req["op"]](req)
         doc = {"ok": True, "result": out}
     except Exception as exc:  # noqa: BLE001 - reported to the parent as data
         doc = {"ok": False, "kind": _classify(exc), "error": f"{type(exc).__name__}: {exc}",
                "traceback": traceback.format_exc(limit=6)[-4000:]}
-    sys.stdout.write(json.dumps(doc, default=lambda v: float(v) if isinstance(v, np.floating) else str(v)))
+    return json.dumps(doc, default=lambda v: float(v) if isinstance(v, np.floating) else str(v))
+
+
+def main() -> None:
+    sys.stdout.write(handle(json.loads(sys.stdin.read())))
 
 
 if __name__ == "__main__":

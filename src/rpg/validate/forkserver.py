@@ -1,0 +1,120 @@
+"""The fork server: a worker process that imports the domain once and forks a fresh child
+per request, so each task still runs in its own process without paying interpreter and
+MuJoCo start-up each time.
+
+Started only by :mod:`rpg.validate.sandbox`, with the same stripped environment as a
+one-shot worker.  Protocol on stdin/stdout: a line with the byte length, then that many
+bytes of JSON; the request carries ``_timeout`` (s).  Each child: new session, resource
+limits, a fresh temporary working directory, stdout and stderr away from the protocol
+channel; it writes its JSON document to a pipe.  The server enforces the wall-clock limit
+(SIGKILL to the child's process group) and the output bound, and answers with a document
+even when the child dies.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import select
+import shutil
+import signal
+import sys
+import tempfile
+import time
+
+from rpg.validate.sandbox import WORKER_MAX_OUTPUT, _limits
+
+
+def _read_child(fd: int, timeout: float) -> tuple[bytes, str | None]:
+    """Everything the child writes to ``fd`` until EOF; (data, problem)."""
+    chunks, size = [], 0
+    deadline = time.monotonic() + timeout
+    while True:
+        left = deadline - time.monotonic()
+        if left <= 0:
+            return b"", f"task code ran past the {timeout:.0f} s limit"
+        ready, _, _ = select.select([fd], [], [], left)
+        if not ready:
+            continue
+        chunk = os.read(fd, 1 << 16)
+        if not chunk:
+            return b"".join(chunks), None
+        size += len(chunk)
+        if size > WORKER_MAX_OUTPUT:
+            return b"", "task code produced more output than allowed"
+        chunks.append(chunk)
+
+
+def _run_child(req: dict, cwd: str, wfd: int) -> None:  # pragma: no cover - runs in the forked child
+    try:
+        os.setsid()
+        devnull = os.open(os.devnull, os.O_RDWR)
+        os.dup2(devnull, 0)
+        os.dup2(devnull, 1)
+        err = os.open(os.path.join(cwd, ".stderr"), os.O_WRONLY | os.O_CREAT, 0o600)
+        os.dup2(err, 2)
+        os.chdir(cwd)
+        _limits()
+        from rpg.validate.worker import handle
+
+        data = handle(req).encode()
+        view = memoryview(data)
+        while view:
+            n = os.write(wfd, view)
+            view = view[n:]
+    finally:
+        os._exit(0)
+
+
+def serve_one(req: dict) -> bytes:
+    timeout = float(req.pop("_timeout", 120.0))
+    cwd = tempfile.mkdtemp(prefix="rpg-worker-")
+    rfd, wfd = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # pragma: no cover - child
+        os.close(rfd)
+        _run_child(req, cwd, wfd)
+    os.close(wfd)
+    try:
+        data, problem = _read_child(rfd, timeout)
+    finally:
+        os.close(rfd)
+    if problem:
+        try:
+            os.killpg(pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+    _, status = os.waitpid(pid, 0)
+    stderr_tail = ""
+    try:
+        with open(os.path.join(cwd, ".stderr"), "rb") as fh:
+            stderr_tail = fh.read()[-2000:].decode("utf-8", "replace").strip().splitlines()[-1:]
+            stderr_tail = stderr_tail[0] if stderr_tail else ""
+    except OSError:
+        pass
+    shutil.rmtree(cwd, ignore_errors=True)
+    if problem or not data:
+        if not problem:
+            sig = os.WTERMSIG(status) if os.WIFSIGNALED(status) else None
+            problem = (f"task worker died ({signal.Signals(sig).name})" if sig else
+                       f"task worker failed: {stderr_tail or 'exit code ' + str(os.WEXITSTATUS(status))}")
+        return json.dumps({"ok": False, "kind": "runtime", "error": problem, "contained": True}).encode()
+    return data
+
+
+def main() -> None:
+    import rpg.validate.worker  # noqa: F401 - preload: this is the point of the server
+
+    inp, out = sys.stdin.buffer, sys.stdout.buffer
+    while True:
+        header = inp.readline()
+        if not header:
+            return
+        req = json.loads(inp.read(int(header)))
+        payload = serve_one(req)
+        out.write(f"{len(payload)}\n".encode() + payload)
+        out.flush()
+
+
+if __name__ == "__main__":
+    main()
