@@ -372,8 +372,10 @@ def render_cmd(
     seed: Annotated[int, typer.Option("--seed")] = 0,
 ) -> None:
     """Re-render initial.png and goal.png."""
+    from rpg.compiler import save_snapshots
+
     res = _worker({"op": "render", "dir": str(directory), "seed": seed})
-    for k, v in res.items():
+    for k, v in save_snapshots(directory, res.get("snapshots") or {}).items():
         out.print(f"{k}: {v or 'skipped (no headless OpenGL)'}")
 
 

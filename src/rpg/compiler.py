@@ -90,7 +90,24 @@ def validate_files(directory: Path, seed: int = 0, disabled: frozenset[str] = fr
     if not doc["ok"]:
         return results + [{"gate": "compile", "status": "fail", "kind": doc.get("kind", "runtime"), "message": doc["error"],
                            "duration_s": 0.0, "details": {"traceback": doc.get("traceback", "")}}]
+    if snapshots:
+        save_snapshots(directory, doc["result"].get("snapshots") or {})
     return results + doc["result"]["gates"]
+
+
+def save_snapshots(directory: Path, images: dict) -> dict[str, Path | None]:
+    """Write the worker's base64 PNGs as ``directory/<key>.png``; key -> path (None if not rendered)."""
+    import base64
+
+    out: dict[str, Path | None] = {}
+    for key in ("initial", "goal"):
+        data = images.get(key)
+        out[key] = None
+        if isinstance(data, str):
+            path = Path(directory) / f"{key}.png"
+            path.write_bytes(base64.b64decode(data, validate=True))
+            out[key] = path
+    return out
 
 
 def gates_passed(gates: list[dict]) -> bool:
@@ -141,11 +158,16 @@ def write_artifact_files(directory: Path, schema: TaskSchema, seed: int, backend
     digest = content_hash(doc, code, goal_code)
     doc["content_hash"] = digest
     (directory / "task.yaml").write_text(yaml.safe_dump(doc, sort_keys=False, allow_unicode=True, width=100))
+    write_logs(directory, log, gates)
+    return digest
+
+
+def write_logs(directory: Path, log: list[str], gates: list[dict]) -> None:
+    """``validation.log`` (one line per gate and repair attempt) and ``validation.json``."""
     (directory / "validation.log").write_text("\n".join(log) + "\n")
     (directory / "validation.json").write_text(json.dumps(
         {"created": time.strftime("%Y-%m-%dT%H:%M:%S%z"), "valid": gates_passed(gates), "log": log, "gates": gates},
         indent=2, default=str) + "\n")
-    return digest
 
 
 def _atomic_replace(tmp: Path, target: Path) -> None:
@@ -303,7 +325,7 @@ def revalidate(directory: str | Path, disabled: frozenset[str] = frozenset()) ->
     log = [f"rpg {__version__} validate {d}"] + [_log_line(g) for g in gates]
     valid = gates_passed(gates)
     log.append("result: VALID" if valid else "result: INVALID")
-    (d / "validation.log").write_text("\n".join(log) + "\n")
+    write_logs(d, log, gates)
     code = (d / "code.py").read_text()
     goal_code = (d / "goal_state_code.py").read_text()
     return CompileResult(valid, d, schema, gates, log, content_hash({k: v for k, v in doc.items()}, code, goal_code))

@@ -55,7 +55,10 @@ def _run_child(req: dict, cwd: str, wfd: int) -> None:  # pragma: no cover - run
         os.dup2(err, 2)
         os.chdir(cwd)
         _limits()
+        from rpg.validate.guard import install
         from rpg.validate.worker import handle
+
+        install(cwd)
 
         data = handle(req).encode()
         view = memoryview(data)

@@ -123,7 +123,15 @@ def _close_server() -> None:
 atexit.register(_close_server)
 
 
-def run_worker(request: dict, timeout: float = WORKER_TIMEOUT_S) -> dict:
+def worker_timeout() -> float:
+    """The wall-clock limit of one worker run, s: ``RPG_WORKER_TIMEOUT_S`` or :data:`WORKER_TIMEOUT_S`."""
+    try:
+        return float(os.environ.get("RPG_WORKER_TIMEOUT_S", WORKER_TIMEOUT_S))
+    except ValueError:
+        return WORKER_TIMEOUT_S
+
+
+def run_worker(request: dict, timeout: float | None = None) -> dict:
     """Run one worker request in a fresh, limited child process and return its parsed result.
 
     Children are forked from a fork server that has imported the domain once (set
@@ -133,6 +141,7 @@ def run_worker(request: dict, timeout: float = WORKER_TIMEOUT_S) -> dict:
         WorkerError: timeout, crash, oversize or malformed output.
     """
     global _server
+    timeout = worker_timeout() if timeout is None else timeout
     if os.environ.get("RPG_FORKSERVER", "1") != "0" and hasattr(os, "fork"):
         with _server_lock:
             for _ in range(2):

@@ -2,8 +2,9 @@
 
 Allowed imports: :mod:`rpg.task_api`, numpy, math.  Forbidden: exec/eval/compile/open/
 ``__import__``/getattr-family calls, any dunder attribute or name (``__class__``,
-``__subclasses__``, ``__builtins__``, ``__globals__``...), and the modules os, sys,
-subprocess, socket, importlib, ctypes, pickle (among others).
+``__subclasses__``, ``__builtins__``, ``__globals__``...), the modules os, sys,
+subprocess, socket, importlib, ctypes, pickle (among others), and file I/O attributes such
+as ``np.save``/``np.load``/``tofile`` (:data:`FORBIDDEN_ATTRIBUTES`).
 """
 
 from __future__ import annotations
@@ -18,6 +19,12 @@ FORBIDDEN_NAMES = frozenset({
     "marshal", "signal", "threading", "multiprocessing", "io", "pathlib",
 })
 ALLOWED_DUNDERS = frozenset({"__init__", "__name__", "__doc__"})
+FORBIDDEN_ATTRIBUTES = frozenset({
+    "save", "savez", "savez_compressed", "savetxt", "load", "loadtxt", "genfromtxt", "fromfile", "tofile",
+    "memmap", "open_memmap", "ctypeslib", "ctypes", "lib", "DataSource", "f2py", "distutils", "testing",
+    "fromregex", "dump", "dumps", "system", "popen", "environ", "getenv", "modules", "builtins",
+})
+"""Attribute names task code may not use: file I/O and escape hatches of numpy and friends."""
 
 
 class StaticViolation(ValueError):
@@ -57,6 +64,8 @@ def check_source(source: str, filename: str) -> None:
         elif isinstance(node, ast.Attribute):
             if node.attr.startswith("__") and node.attr not in ALLOWED_DUNDERS:
                 raise StaticViolation(f"{where}: dunder attribute {node.attr!r} is forbidden in task code", line=line)
+            if node.attr in FORBIDDEN_ATTRIBUTES:
+                raise StaticViolation(f"{where}: attribute {node.attr!r} (file I/O or an escape hatch) is forbidden in task code", line=line)
             if node.attr.startswith("_") and node.attr not in ("_goal",):
                 raise StaticViolation(f"{where}: private attribute {node.attr!r} is not part of the task API", line=line)
         elif isinstance(node, ast.Constant) and isinstance(node.value, str) and "__" in node.value:

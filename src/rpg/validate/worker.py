@@ -12,8 +12,10 @@ it gets here.  Requests:
 
 from __future__ import annotations
 
+import base64
 import importlib.util
 import json
+import os
 import sys
 import time
 import traceback
@@ -245,19 +247,31 @@ def validate(req: dict) -> dict:
                      ("goal_state", goal_state), ("bounds", bounds), ("visibility", visibility)):
         if not gate(name, fn) and name in ("smoke",):
             break
+    out = {"gates": results}
     if req.get("snapshots"):
-        _snapshots(task, goal_mod, directory, seed, tol)
-    return {"gates": results}
+        try:
+            out["snapshots"] = _snapshots(task, goal_mod, seed, tol)
+        except Exception:  # noqa: BLE001 - a task that cannot be shown still has its gate results
+            out["snapshots"] = {}
+    return out
 
 
-def _snapshots(task, goal_mod, directory: Path, seed: int, tol: dict) -> dict:
+def _snapshots(task, goal_mod, seed: int, tol: dict) -> dict[str, str | None]:
+    """``initial`` and ``goal`` PNGs as base64 (None without OpenGL).  They are written in
+    the worker's own directory and handed to the parent as data: task code never needs
+    write access to the artifact."""
+    images: dict[str, str | None] = {}
     with Snapshotter(task.scene) as snap:
         task.reset(seed)
-        a = snap.save(directory / "initial.png")
-        goal_mod.goal_state(task)
-        task.step(tol.get("settle_steps", C.SETTLE_STEPS))
-        b = snap.save(directory / "goal.png")
-    return {"initial": str(a) if a else None, "goal": str(b) if b else None}
+        for key in ("initial", "goal"):
+            if key == "goal":
+                goal_mod.goal_state(task)
+                task.step(tol.get("settle_steps", C.SETTLE_STEPS))
+            path = snap.save(Path.cwd() / f"{key}.png")
+            images[key] = base64.b64encode(path.read_bytes()).decode() if path else None
+            if path:
+                path.unlink()
+    return images
 
 
 def _object_json(task: BlockTask) -> list[dict]:
@@ -302,7 +316,7 @@ def check(req: dict) -> dict:
 
 def render(req: dict) -> dict:
     task, goal_mod = load_task(Path(req["dir"]))
-    return _snapshots(task, goal_mod, Path(req["dir"]), int(req.get("seed", 0)), {})
+    return {"snapshots": _snapshots(task, goal_mod, int(req.get("seed", 0)), {})}
 
 
 OPS = {"validate": validate, "inspect": inspect, "check": check, "render": render}
@@ -320,7 +334,11 @@ def handle(req: dict) -> str:
 
 
 def main() -> None:
-    sys.stdout.write(handle(json.loads(sys.stdin.read())))
+    from rpg.validate.guard import install
+
+    req = json.loads(sys.stdin.read())
+    install(os.getcwd())
+    sys.stdout.write(handle(req))
 
 
 if __name__ == "__main__":
