@@ -14,6 +14,7 @@ from typing import Annotated
 
 import typer
 from rich.console import Console
+from rich.markup import escape as esc
 
 from rpg._version import __version__
 
@@ -32,7 +33,7 @@ err = Console(stderr=True)
 
 
 def _fail(message: str, code: int = EXIT_BAD_INPUT) -> None:
-    err.print(f"[bold red]error:[/] {message}", highlight=False, soft_wrap=True)
+    err.print(f"[bold red]error:[/] {esc(' '.join(str(message).split()))}", highlight=False, soft_wrap=True)
     raise typer.Exit(code)
 
 
@@ -117,12 +118,12 @@ def compile_cmd(
 
 def _print_compile(result) -> None:
     status = "[green]valid[/]" if result.valid else "[red]rejected[/]"
-    out.print(f"{status} task [bold]{result.schema.name}[/]: {result.schema.goal_summary}", highlight=False)
+    out.print(f"{status} task [bold]{result.schema.name}[/]: {esc(result.schema.goal_summary)}", highlight=False)
     for g in result.gates:
         mark = {"pass": "[green]pass[/]", "fail": "[red]FAIL[/]", "skipped": "[yellow]skip[/]"}[g["status"]]
-        out.print(f"  {g['gate']:<11} {mark} {g.get('message', '')}", highlight=False)
+        out.print(f"  {g['gate']:<11} {mark} {esc(g.get('message', ''))}", highlight=False)
     for r in result.schema.repairs:
-        out.print(f"  repair {r.operator}: {r.reason}", highlight=False)
+        out.print(f"  repair {r.operator}: {esc(r.reason)}", highlight=False)
     out.print(f"artifact:  {result.path}")
     for k in ("initial", "goal"):
         if (result.path / f"{k}.png").exists():
@@ -154,8 +155,8 @@ def steer_cmd(
         ref = "none" if r.reference is None else f"v{r.reference}"
         out.print(f"intent [bold]{r.intent}[/], reference {ref}", highlight=False)
         for note in r.notes:
-            out.print(f"  {note}", highlight=False)
-        out.print(f"  instruction: {r.instruction}", highlight=False)
+            out.print(f"  {esc(note)}", highlight=False)
+        out.print(f"  instruction: {esc(r.instruction)}", highlight=False)
         if r.compile is not None:
             _print_compile(r.compile)
         if r.valid:
@@ -191,8 +192,8 @@ def log_cmd(
 
     def label(v) -> str:
         head = " [bold cyan](head)[/]" if v.version_id == hist.head else ""
-        return (f"[bold]v{v.version_id}[/] {v.lineage_hash[:10]} [magenta]{v.intent}[/]{head}: {v.description}\n"
-                f"[dim]{v.goal_summary}[/]")
+        return (f"[bold]v{v.version_id}[/] {v.lineage_hash[:10]} [magenta]{v.intent}[/]{head}: {esc(v.description)}\n"
+                f"[dim]{esc(v.goal_summary)}[/]")
 
     tree = Tree(f"[bold]{hist.name}[/] ({len(hist.versions)} versions)")
 
@@ -218,7 +219,7 @@ def verify_cmd(
     else:
         for r in report:
             mark = "[green]ok[/]" if r["ok"] else "[red]ALTERED[/]"
-            out.print(f"v{r['version']:<3} {mark} {'; '.join(r['problems'])}", highlight=False)
+            out.print(f"v{r['version']:<3} {mark} {esc('; '.join(r['problems']))}", highlight=False)
     raise typer.Exit(EXIT_OK if ok else EXIT_INVALID)
 
 
@@ -239,7 +240,7 @@ def show_cmd(
         print(json.dumps(doc, indent=2))
         return
     for k, val in doc.items():
-        out.print(f"{k:<18} {val}", highlight=False)
+        out.print(f"{k:<18} {esc(str(val))}", highlight=False)
 
 
 session_app = typer.Typer(help="Scripted steering sessions.", no_args_is_help=True)
@@ -270,8 +271,8 @@ def session_run_cmd(
         for col in ("step", "text", "intent", "reference", "version", "result"):
             table.add_column(col)
         for s in steps:
-            table.add_row(str(s.index), s.text, s.intent, s.reference or "-", s.version or "-",
-                          "[green]ok[/]" if s.ok else "[red]" + "; ".join(s.problems) + "[/]")
+            table.add_row(str(s.index), esc(s.text), s.intent, s.reference or "-", s.version or "-",
+                          "[green]ok[/]" if s.ok else "[red]" + esc("; ".join(s.problems)) + "[/]")
         out.print(table)
     raise typer.Exit(EXIT_OK if ok else EXIT_INVALID)
 
@@ -293,7 +294,7 @@ def validate_cmd(
         print(json.dumps(result.to_json(), indent=2))
     else:
         for line in result.log:
-            out.print(line, highlight=False)
+            out.print(esc(line), highlight=False)
     raise typer.Exit(EXIT_OK if result.valid else EXIT_INVALID)
 
 
@@ -331,7 +332,7 @@ def _print_block(block: dict, as_json: bool) -> None:
         out.print(f"  {o['name']:<16} {o['kind']:<14} ({pos})", highlight=False)
     for p in block["predicates"]:
         mark = "[green]ok[/]" if p["satisfied"] else "[red]no[/]"
-        out.print(f"  {mark} {p['reason']}", highlight=False)
+        out.print(f"  {mark} {esc(p['reason'])}", highlight=False)
 
 
 @app.command("inspect")

@@ -170,15 +170,30 @@ def write_logs(directory: Path, log: list[str], gates: list[dict]) -> None:
         indent=2, default=str) + "\n")
 
 
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+LIBRARY_LOCK = ".rpg.lock"
+"""Lock file in a library directory: serializes the renames that publish task directories."""
+
+
 def _atomic_replace(tmp: Path, target: Path) -> None:
+    """Publish ``tmp`` as ``target`` by rename (the old ``target``, if any, goes to the
+    trash first), under the directory's file lock so concurrent writers never interleave."""
+    from filelock import FileLock
+
     target.parent.mkdir(parents=True, exist_ok=True)
-    if target.exists():
-        trash = target.parent / f".trash-{target.name}-{os.getpid()}"
-        os.rename(target, trash)
-        os.rename(tmp, target)
-        shutil.rmtree(trash, ignore_errors=True)
-    else:
-        os.rename(tmp, target)
+    with FileLock(str(target.parent / LIBRARY_LOCK), timeout=600):
+        if target.exists():
+            trash = target.parent / f".trash-{target.name}-{os.getpid()}"
+            os.rename(target, trash)
+            os.rename(tmp, target)
+            shutil.rmtree(trash, ignore_errors=True)
+        else:
+            os.rename(tmp, target)
 
 
 def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[str] = frozenset(),
@@ -195,6 +210,7 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
     log += [f"feasibility repair {r.operator}: {r.reason}" for r in schema.repairs if r.stage == "feasibility"]
     attempts: dict[str, int] = {}
     tmp = Path(tempfile.mkdtemp(prefix=f".tmp-{schema.name[:40]}-", dir=out_dir))
+    os.chmod(tmp, 0o777 & ~_umask())
     gates: list[dict] = []
     try:
         for cycle in range(1, MAX_CYCLES + 1):
