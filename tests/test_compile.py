@@ -198,5 +198,5 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
                        env={**os.environ, "PYTHONHASHSEED": "2"})
     assert a.returncode == 0, a.stderr
     assert a.stdout == b.stdout and len(a.stdout.strip()) == 64
-    schema, doc = load_artifact(next((tmp_path / "a").iterdir()))
+    schema, doc = load_artifact(next(p for p in (tmp_path / "a").iterdir() if not p.name.startswith(".")))
     assert doc["content_hash"] == a.stdout.strip()
