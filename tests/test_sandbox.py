@@ -136,3 +136,15 @@ def test_sandbox_contains_code_that_bypasses_the_text_gate(base, tmp_path, paylo
 
 def test_corpus_has_at_least_thirty_hostile_artifacts():
     assert len(TEXT_GATE) + len(RUNTIME) + 2 + len(SANDBOX) >= 30
+
+
+def test_worker_results_are_schema_checked():
+    from rpg.validate.sandbox import WorkerError, checked_validate_result
+
+    ok = {"gates": [{"gate": "smoke", "status": "pass", "duration_s": 0.01, "details": {}}]}
+    assert checked_validate_result(ok)["gates"][0]["gate"] == "smoke"
+    for bad in ({"gates": [{"gate": "smoke", "status": "pass", "duration_s": -1.0}]},
+                {"gates": [{"gate": "rm -rf", "status": "pass", "duration_s": 0.0}]},
+                {"gates": [], "extra": 1}, "not a dict", {"gates": [{"gate": "smoke", "status": "maybe", "duration_s": 0}]}):
+        with pytest.raises(WorkerError, match="malformed"):
+            checked_validate_result(bad)

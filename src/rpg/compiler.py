@@ -30,7 +30,7 @@ from rpg.repair import route
 from rpg.schema.builtin import parse
 from rpg.schema.feasibility import check_feasibility
 from rpg.schema.model import TaskSchema
-from rpg.validate.sandbox import run_worker
+from rpg.validate.sandbox import checked_validate_result, run_worker
 from rpg.validate.static import StaticViolation, check_source
 from rpg.validate.worker import GATES
 
@@ -85,14 +85,16 @@ def validate_files(directory: Path, seed: int = 0, disabled: frozenset[str] = fr
     try:
         doc = run_worker({"op": "validate", "dir": str(directory.resolve()), "seed": seed, "disabled": sorted(disabled),
                           "snapshots": snapshots, "tolerances": tolerances or {}})
+        if not doc["ok"]:
+            return results + [{"gate": "compile", "status": "fail", "kind": doc.get("kind", "runtime"),
+                               "message": str(doc.get("error"))[:2000], "duration_s": 0.0,
+                               "details": {"traceback": str(doc.get("traceback", ""))[:4000]}}]
+        result = checked_validate_result(doc.get("result"))
     except WorkerError as exc:
         return results + [{"gate": "compile", "status": "fail", "kind": "runtime", "message": str(exc), "duration_s": 0.0, "details": {}}]
-    if not doc["ok"]:
-        return results + [{"gate": "compile", "status": "fail", "kind": doc.get("kind", "runtime"), "message": doc["error"],
-                           "duration_s": 0.0, "details": {"traceback": doc.get("traceback", "")}}]
     if snapshots:
-        save_snapshots(directory, doc["result"].get("snapshots") or {})
-    return results + doc["result"]["gates"]
+        save_snapshots(directory, result.get("snapshots") or {})
+    return results + result["gates"]
 
 
 def save_snapshots(directory: Path, images: dict) -> dict[str, Path | None]:
