@@ -44,7 +44,7 @@ def test_validation_errors_are_fed_back_then_retried(tmp_path):
     assert schema.goal_predicate().describe().startswith("stack")
     assert len(client.records) == 3
     feedback = client.records[2]["request"]["messages"][-1]["content"]
-    assert "goal_layout" in feedback and "not a valid TaskSchema" in feedback
+    assert "goal_layout" in feedback and "not a valid answer" in feedback
     with pytest.raises(ModelOutputError, match="4 tries"):
         llm_parse("x", LLMClient(MODEL, mock_responses=["{}"] * 4))
 
@@ -80,7 +80,7 @@ def test_cli_model_exit_codes_and_replay(tmp_path, monkeypatch):
             assert res.exit_code == 3 and "provider" in res.output
             assert not (tmp_path / case).exists() or not any((tmp_path / case).iterdir())
         else:
-            assert res.exit_code == 1 and "no valid TaskSchema" in res.output
+            assert res.exit_code == 1 and "no valid schema answer" in res.output
     env = {**os.environ, "OPENAI_API_KEY": ""}
     proc = subprocess.run([sys.executable, "-m", "rpg.cli", "compile", "", "--replay", path, "-o", str(tmp_path / "r"), "--json"],
                           capture_output=True, text=True, env=env)
@@ -103,3 +103,42 @@ def test_litellm_is_not_imported_by_a_builtin_compile(tmp_path):
             "print('litellm' in sys.modules)")
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert proc.stdout.strip() == "False", proc.stderr
+
+
+def test_model_steering_is_recorded_and_replays(tmp_path):
+    from rpg.steer import Family, create_family, steer
+
+    base = compile_instruction("Place a blue cube on top of a red cube on the table", tmp_path, name="fam")
+    fam = create_family(base.path)
+    route = json.dumps({"intent": "extend", "reference": 0, "parameters": {"add": "green on top"}})
+    new = schema_json("Build a tower from bottom to top: red, blue, green")
+    client = LLMClient(MODEL, mock_responses=[json.dumps({"intent": "extend", "reference": 7}), route, new])
+    r = steer(fam.path, "crown it with something verdant", llm=client)
+    assert (r.intent, r.reference, r.version, r.valid) == ("extend", 0, 1, True)
+    snap = Family(fam.path).load().get(1)
+    assert snap.parameters == {"add": "green on top"} and snap.intent == "extend"
+    header, exchanges = load_record(fam.version_dir(1))
+    assert header["command"] == "steer" and [e["purpose"] for e in exchanges] == ["route", "route", "schema"]
+    assert "reference must be a version id" in exchanges[1]["request"]["messages"][-1]["content"]
+    # replay on a copy of the family before the edit reproduces the same version offline
+    other = compile_instruction("Place a blue cube on top of a red cube on the table", tmp_path / "o", name="fam")
+    fam2 = create_family(other.path)
+    again = steer(fam2.path, None, replay=fam.version_dir(1))
+    assert again.valid and Family(fam2.path).load().get(1).content_hash == snap.content_hash
+
+
+def test_cli_steer_with_a_model(tmp_path, monkeypatch):
+    from rpg.steer import create_family
+
+    base = compile_instruction("Place a blue cube on top of a red cube on the table", tmp_path, name="fam")
+    create_family(base.path)
+    runner = CliRunner()
+    monkeypatch.setattr(cli, "make_llm_client", lambda model: LLMClient(model, mock_responses=["litellm.RateLimitError"]))
+    res = runner.invoke(cli.app, ["steer", str(base.path), "add a green block", "--model", MODEL])
+    assert res.exit_code == 3 and "provider" in res.output
+    fresh = [json.dumps({"intent": "fresh", "reference": None}), schema_json("Place the red block behind the yellow block")]
+    monkeypatch.setattr(cli, "make_llm_client", lambda model: LLMClient(model, mock_responses=fresh))
+    res = runner.invoke(cli.app, ["steer", str(base.path), "something else: red behind yellow", "--model", MODEL, "--json"])
+    assert res.exit_code == 0, res.output
+    doc = json.loads(res.stdout)
+    assert doc["intent"] == "fresh" and doc["reference"] is None and doc["version"] == "v1"

@@ -133,20 +133,27 @@ def _print_compile(result) -> None:
 @app.command("steer")
 def steer_cmd(
     family: Annotated[Path, typer.Argument(help="A task family (or a compiled task, which becomes v0 of one).")],
-    edit: Annotated[str, typer.Argument(help="The change, in plain language.")],
+    edit: Annotated[str, typer.Argument(help="The change, in plain language.")] = "",
     seed: Annotated[int | None, typer.Option("--seed", help="Seed of the checks (default: the family's).")] = None,
     model: Annotated[str | None, typer.Option("--model", help="'builtin' (default) or a litellm model name.")] = None,
+    replay: Annotated[Path | None, typer.Option("--replay", help="Re-apply a recorded model edit (llm_log.jsonl) offline.")] = None,
     disable: Annotated[list[str], typer.Option("--disable", help="Switch a gate off (ablation).")] = [],  # noqa: B006
     as_json: Annotated[bool, typer.Option("--json", help="Print one JSON document.")] = False,
 ) -> None:
     """Classify EDIT, pick the version it builds on, recompile and record a new version."""
+    from rpg.schema.llm import ModelOutputError, ProviderError, ReplayError
     from rpg.steer import steer
 
     model = model or os.environ.get("RPG_MODEL") or None
-    if model not in (None, "builtin"):
-        _fail(f"model backend {model!r} is not available for steering in this build; use the builtin interpreter")
     try:
-        r = steer(family, edit, seed, frozenset(disable))
+        r = steer(family, edit, seed, frozenset(disable), llm=make_llm_client(model) if replay is None else None,
+                  replay=replay)
+    except ProviderError as exc:
+        _fail(str(exc), EXIT_PROVIDER)
+    except ModelOutputError as exc:
+        _fail(str(exc), EXIT_INVALID)
+    except ReplayError as exc:
+        _fail(str(exc))
     except _bad_input_errors() as exc:
         _fail(str(exc))
     if as_json:

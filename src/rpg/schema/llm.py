@@ -106,9 +106,11 @@ class LLMClient:
         })
         return text
 
-    def log_text(self, instruction: str) -> str:
-        """The ``llm_log.jsonl`` record: a header line, then one line per exchange."""
-        head = {"type": "header", "rpg_version": __version__, "model": self.model, "instruction": instruction}
+    def log_text(self, instruction: str, command: str = "compile") -> str:
+        """The ``llm_log.jsonl`` record: a header line (the command and its input text), then
+        one line per exchange."""
+        head = {"type": "header", "rpg_version": __version__, "model": self.model, "instruction": instruction,
+                "command": command}
         lines = [json.dumps(head, sort_keys=True)] + [json.dumps({"type": "exchange", **r}, sort_keys=True) for r in self.records]
         return "\n".join(lines) + "\n"
 
@@ -207,6 +209,27 @@ def _errors(exc: Exception) -> str:
     return str(exc).splitlines()[0][:500]
 
 
+def ask_validated(client: LLMClient, messages: list[dict], purpose: str, validate, max_retries: int = MAX_SCHEMA_RETRIES):
+    """Ask until ``validate(json_object)`` accepts the answer; feed its errors back.
+
+    Raises:
+        ProviderError: the provider failed.
+        ModelOutputError: no acceptable answer within ``max_retries`` extra tries.
+    """
+    last = ""
+    for _ in range(max_retries + 1):
+        answer = client.complete(messages, purpose)
+        try:
+            return validate(_json_object(answer))
+        except (ValueError, ValidationError) as exc:
+            last = _errors(exc)
+            messages = messages + [
+                {"role": "assistant", "content": answer},
+                {"role": "user", "content": f"That is not a valid answer: {last}. Answer with the corrected JSON object only."},
+            ]
+    raise ModelOutputError(f"the model gave no valid {purpose} answer in {max_retries + 1} tries; last error: {last}")
+
+
 def llm_parse(instruction: str, client: LLMClient, max_retries: int = MAX_SCHEMA_RETRIES) -> TaskSchema:
     """Ask the model for a TaskSchema; feed validation errors back up to ``max_retries`` times.
 
@@ -215,17 +238,9 @@ def llm_parse(instruction: str, client: LLMClient, max_retries: int = MAX_SCHEMA
         ModelOutputError: no valid TaskSchema within the budget (message has the last error).
     """
     messages = [{"role": "system", "content": system_prompt()}, {"role": "user", "content": instruction}]
-    last = ""
-    for _ in range(max_retries + 1):
-        answer = client.complete(messages, "schema")
-        try:
-            doc = _json_object(answer)
-            doc["instruction"] = instruction
-            return TaskSchema.model_validate(doc)
-        except (ValueError, ValidationError) as exc:
-            last = _errors(exc)
-            messages = messages + [
-                {"role": "assistant", "content": answer},
-                {"role": "user", "content": f"That is not a valid TaskSchema: {last}. Answer with the corrected JSON object only."},
-            ]
-    raise ModelOutputError(f"the model gave no valid TaskSchema in {max_retries + 1} tries; last error: {last}")
+
+    def validate(doc: dict) -> TaskSchema:
+        doc["instruction"] = instruction
+        return TaskSchema.model_validate(doc)
+
+    return ask_validated(client, messages, "schema", validate, max_retries)

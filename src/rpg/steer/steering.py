@@ -20,6 +20,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Literal
+
+from pydantic import BaseModel, ConfigDict, Field
 
 from rpg.compiler import CompileResult, build, load_artifact
 from rpg.schema.builtin import parse
@@ -158,14 +161,85 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     return parse(instruction), instruction, intent_of_ops(plan.ops)
 
 
-def steer(family: str | Path, edit: str, seed: int | None = None, disabled: frozenset[str] = frozenset()) -> SteerResult:
+class RouteAnswer(BaseModel):
+    """The model's reading of an edit: intent, reference version, extracted parameters."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    intent: Literal["tweak", "extend", "modify", "pivot", "fresh"]
+    reference: int | None = None
+    parameters: dict = Field(default_factory=dict)
+
+
+ROUTE_PROMPT = """You route edits of a robot-manipulation task family (paper: RoboPlayground, steering).
+Classify the edit into one intent:
+- tweak: parameter changes only (colors, counts, sizes); builds on the current version
+- extend: additive changes (add cubes or goals); builds on the current version
+- modify: property changes within the existing structure (asset material, ordering); current version
+- pivot: a structural rewrite that overwrites the goals; current version
+- fresh: an unrelated new task; no reference
+The reference is the version the edit builds on: the current (head) version unless the edit refers back
+("go back to", "the earlier version", "version 2", "the letter version", "when it was just red and blue"),
+or unless it needs assets (letter or digit cubes) that only an earlier version has.
+Answer with one JSON object: {"intent": ..., "reference": <version id or null>, "parameters": {...}}.
+
+Versions (id, intent, description, goal summary, assets):
+"""
+
+
+def llm_route(edit: str, hist: FamilyHistory, client) -> RouteAnswer:
+    """Ask the model for the edit's intent and reference version (validated, with retries)."""
+    from rpg.schema.llm import ask_validated
+
+    listing = "\n".join(f"v{v.version_id} [{v.intent}] {v.description} | {v.goal_summary} | {', '.join(v.assets_used)}"
+                        for v in hist.versions)
+    messages = [{"role": "system", "content": ROUTE_PROMPT + listing + f"\nCurrent version: v{hist.head}\n"},
+                {"role": "user", "content": edit}]
+
+    def validate(doc: dict) -> RouteAnswer:
+        ans = RouteAnswer.model_validate(doc)
+        if ans.intent == "fresh":
+            ans.reference = None
+        elif ans.reference is None or not 0 <= ans.reference < len(hist.versions):
+            raise ValueError(f"reference must be a version id from 0 to {len(hist.versions) - 1} for intent {ans.intent}")
+        return ans
+
+    return ask_validated(client, messages, "route", validate)
+
+
+def llm_edit_schema(edit: str, intent: str, reference: TaskSchema, client) -> TaskSchema:
+    """Ask the model for the new version's TaskSchema: the reference's schema with the edit applied."""
+    from rpg.schema.llm import ask_validated, system_prompt
+
+    flags = ", ".join(k for k, v in PRESERVATION[intent].items() if v) or "nothing"
+    messages = [{"role": "system", "content": system_prompt()},
+                {"role": "user", "content": f"Reference task (TaskSchema JSON):\n{reference.model_dump_json()}\n\n"
+                                            f"Edit ({intent}; preserve {flags}): {edit}\n"
+                                            "Answer with the complete TaskSchema of the edited task."}]
+    return ask_validated(client, messages, "schema", TaskSchema.model_validate)
+
+
+def steer(family: str | Path, edit: str | None, seed: int | None = None, disabled: frozenset[str] = frozenset(),
+          llm=None, replay: str | Path | None = None) -> SteerResult:
     """Apply an edit to a family (a compiled task becomes v0 of a new family first).
+
+    With ``llm`` (an :class:`rpg.schema.llm.LLMClient`) the model classifies the edit and
+    writes the new schema; its exchanges are recorded in the version's ``llm_log.jsonl``,
+    and ``replay`` (that file or the version directory) re-applies them offline.
 
     Raises:
         SteerError: the edit cannot be interpreted or applied (the family is unchanged).
         FamilyError / ArtifactError: not a family or artifact, or a corrupt history.
         ParseError / InfeasibleTask: the edited task cannot be read or realised.
+        ProviderError / ModelOutputError / ReplayError: as for ``compile_instruction``.
     """
+    if replay is not None:
+        from rpg.schema.llm import LLMClient, load_record
+
+        header, exchanges = load_record(replay)
+        edit, llm = header["instruction"], LLMClient(header["model"], replay=exchanges)
+    if not edit or not edit.strip():
+        raise SteerError("the edit is empty; say what to change, e.g. \"add a green block on top\"")
     path = Path(family)
     if not is_family(path):
         load_artifact(path)
@@ -174,14 +248,28 @@ def steer(family: str | Path, edit: str, seed: int | None = None, disabled: froz
     with fam.lock():
         hist = fam.load()
         fam.remove_orphans(hist)
-        plan = interpret(edit)
-        reference, notes = resolve_reference(plan, hist, fam)
-        schema, instruction, intent = plan_schema(plan, fam, reference)
+        extra, backend = None, "builtin"
+        if llm is None:
+            plan = interpret(edit)
+            reference, notes = resolve_reference(plan, hist, fam)
+            schema, instruction, intent = plan_schema(plan, fam, reference)
+            parameters = plan.parameters()
+        else:
+            from rpg.schema.llm import llm_parse
+
+            route = llm_route(edit, hist, llm)
+            intent, reference, parameters = route.intent, route.reference, route.parameters
+            notes = [f"model {llm.model}: {intent}, reference {'none' if reference is None else f'v{reference}'}"]
+            schema = (llm_parse(edit, llm) if intent == "fresh"
+                      else llm_edit_schema(edit, intent, fam.schema(reference), llm))
+            instruction, backend = schema.instruction, "litellm"
         schema = check_feasibility(schema)
+        if llm is not None:
+            extra = {"llm_log.jsonl": llm.log_text(edit, "steer")}
         if seed is None:
             seed = int(load_artifact(fam.version_dir(hist.head))[1].get("provenance", {}).get("seed", 0))
         result = SteerResult(path, edit, intent, reference, None, False, instruction=instruction, notes=notes,
-                             parameters=plan.parameters())
+                             parameters=parameters)
         digest = code_hash(schema)
         same = next((v for v in hist.versions if v.code_hash == digest), None)
         if same is not None:
@@ -191,13 +279,14 @@ def steer(family: str | Path, edit: str, seed: int | None = None, disabled: froz
             result.notes.append(f"the edit loops back to v{same.version_id}; reusing it (no new version)")
             return result
         vid = len(hist.versions)
-        compiled = build(schema, path, seed, disabled, name=f"v{vid}")
+        compiled = build(schema, path, seed, disabled, backend=backend, model=llm.model if llm else None,
+                         name=f"v{vid}", extra_files=extra)
         result.compile = compiled
         if not compiled.valid:
             result.notes.append(f"validation failed after repair; the attempt is in {compiled.path}")
             return result
         parent = hist.get(reference if reference is not None else hist.head)
-        snap = snapshot_of(compiled.path, vid, edit, parent, reference, intent, plan.parameters(), PRESERVATION[intent])
+        snap = snapshot_of(compiled.path, vid, edit, parent, reference, intent, parameters, PRESERVATION[intent])
         hist.versions.append(snap)
         hist.head = vid
         fam.save(hist)
