@@ -250,6 +250,52 @@ def show_cmd(
         out.print(f"{k:<18} {esc(str(val))}", highlight=False)
 
 
+@app.command("build")
+def build_cmd(
+    manifest: Annotated[Path, typer.Argument(help="A library manifest (library/manifest.yaml).")],
+    jobs: Annotated[int, typer.Option("--jobs", "-j", help="Parallel workers.")] = 1,
+    backend: Annotated[str, typer.Option("--backend", help="local (process pool) or ray.")] = "local",
+    address: Annotated[str | None, typer.Option("--address", help="Ray cluster address ('auto'); default a local Ray.")] = None,
+    check: Annotated[bool, typer.Option("--check", help="Regenerate in a temporary directory; exit 1 if any hash differs.")] = False,
+    report: Annotated[Path | None, typer.Option("--json", help="Write a JSON report here.")] = None,
+) -> None:
+    """Compile and steer every manifest entry in parallel (or check that they regenerate unchanged)."""
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+    from rich.table import Table
+
+    from rpg.library import ManifestError, build_library, load_manifest
+
+    if backend not in ("local", "ray"):
+        _fail("--backend must be 'local' or 'ray'")
+    if jobs < 1:
+        _fail("--jobs must be at least 1")
+    try:
+        total = len(load_manifest(manifest).entries)
+        with Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
+                      console=err, transient=True) as bar:
+            task = bar.add_task("check" if check else "build", total=total)
+            reports, seconds = build_library(manifest, jobs, backend, check, address,
+                                             progress=lambda r: bar.update(task, advance=1, description=r["name"]))
+    except ManifestError as exc:
+        _fail(str(exc))
+    changed = [r for r in reports if r["changed"]]
+    failed = [r for r in reports if r["status"] != "valid"]
+    table = Table(title=f"{'check' if check else 'build'} {manifest}")
+    for col in ("entries", "valid", "repaired", "rejected", "changed", "time"):
+        table.add_column(col)
+    table.add_row(str(len(reports)), str(sum(r["status"] == "valid" for r in reports)),
+                  str(sum(bool(r.get("repairs")) for r in reports)), str(len(failed)), str(len(changed)), f"{seconds:.1f} s")
+    out.print(table)
+    for r in failed:
+        out.print(f"[red]{r['status']}[/] {r['name']}: {esc(r.get('error') or '; '.join(r.get('problems') or []) or 'validation failed')}")
+    if check:
+        for r in changed:
+            out.print(f"[red]changed[/] {r['name']}: expected {r['expected']}, got {r.get('content_hash')}")
+    if report is not None:
+        report.write_text(json.dumps({"manifest": str(manifest), "check": check, "seconds": seconds, "entries": reports}, indent=2))
+    raise typer.Exit(EXIT_INVALID if failed or (check and changed) else EXIT_OK)
+
+
 session_app = typer.Typer(help="Scripted steering sessions.", no_args_is_help=True)
 app.add_typer(session_app, name="session")
 

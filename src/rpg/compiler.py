@@ -138,6 +138,7 @@ def content_hash(task_doc: dict, code: str, goal_code: str) -> str:
 def task_document(schema: TaskSchema, seed: int, backend: str, model: str | None, gates: list[dict]) -> dict:
     doc = {
         "schema": json.loads(schema.model_dump_json()),
+        "tags": schema.tags(),
         "provenance": {
             "instruction": schema.instruction,
             "compiler_version": __version__,

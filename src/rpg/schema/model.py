@@ -135,6 +135,22 @@ class TaskSchema(_Model):
     def built_assets(self):
         return [a.build() for a in self.assets]
 
+    def tags(self) -> dict:
+        """Retrieval tags (paper, appendix "In-Context Examples"): asset class, reasoning type
+        (semantic or spatial), complexity (atomic: one predicate; compositional: a
+        conjunction; hierarchical: staged sub-goals in temporal order) and action primitives."""
+        from rpg.domain.predicates import And, InOrder
+
+        goal = self.goal_predicate()
+        stack, temporal = [goal], False
+        while stack:
+            p = stack.pop()
+            temporal = temporal or isinstance(p, InOrder)
+            stack.extend(p.children())
+        complexity = "hierarchical" if temporal else "compositional" if isinstance(goal, And) else "atomic"
+        return {"asset_class": self.assets_used(), "reasoning": self.reasoning, "complexity": complexity,
+                "primitives": list(self.primitives)}
+
     def assets_used(self) -> list[str]:
         """Asset class names used, e.g. ``["ColoredCube", "SemanticCube"]``."""
         return sorted({type(a.build()).__name__ for a in self.assets})

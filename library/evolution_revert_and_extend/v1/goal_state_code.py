@@ -1,0 +1,14 @@
+"""Goal configuration of build_tower_from_bottom_to_top_red_ca5e53: poses (m; quaternion w, x, y, z) that satisfy G."""
+
+from rpg.task_api import Pose
+
+GOAL_POSES = {
+    'blue': Pose((0.55, 0.0, 1.0105), (1.0, 0.0, 0.0, 0.0)),
+    'green': Pose((0.55, 0.0, 1.051), (1.0, 0.0, 0.0, 0.0)),
+    'red': Pose((0.55, 0.0, 0.97), (1.0, 0.0, 0.0, 0.0)),
+}
+
+
+def goal_state(task):
+    """Put the task's objects in the goal configuration."""
+    task.set_state(GOAL_POSES)

@@ -1,0 +1,20 @@
+"""Goal configuration of make_3x3_square_red_blocks: poses (m; quaternion w, x, y, z) that satisfy G."""
+
+from rpg.task_api import Pose
+
+GOAL_POSES = {
+    'red_1': Pose((0.5095, 0.0405, 0.97), (1.0, 0.0, 0.0, 0.0)),
+    'red_2': Pose((0.5095, 0.0, 0.97), (1.0, 0.0, 0.0, 0.0)),
+    'red_3': Pose((0.5095, -0.0405, 0.97), (1.0, 0.0, 0.0, 0.0)),
+    'red_4': Pose((0.55, 0.0405, 0.97), (1.0, 0.0, 0.0, 0.0)),
+    'red_5': Pose((0.55, 0.0, 0.97), (1.0, 0.0, 0.0, 0.0)),
+    'red_6': Pose((0.55, -0.0405, 0.97), (1.0, 0.0, 0.0, 0.0)),
+    'red_7': Pose((0.5905, 0.0405, 0.97), (1.0, 0.0, 0.0, 0.0)),
+    'red_8': Pose((0.5905, 0.0, 0.97), (1.0, 0.0, 0.0, 0.0)),
+    'red_9': Pose((0.5905, -0.0405, 0.97), (1.0, 0.0, 0.0, 0.0)),
+}
+
+
+def goal_state(task):
+    """Put the task's objects in the goal configuration."""
+    task.set_state(GOAL_POSES)

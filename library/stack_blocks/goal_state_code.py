@@ -1,0 +1,13 @@
+"""Goal configuration of stack_two_blocks_on_top_each_other: poses (m; quaternion w, x, y, z) that satisfy G."""
+
+from rpg.task_api import Pose
+
+GOAL_POSES = {
+    'blue': Pose((0.55, 0.0, 1.0105), (1.0, 0.0, 0.0, 0.0)),
+    'red': Pose((0.55, 0.0, 0.97), (1.0, 0.0, 0.0, 0.0)),
+}
+
+
+def goal_state(task):
+    """Put the task's objects in the goal configuration."""
+    task.set_state(GOAL_POSES)

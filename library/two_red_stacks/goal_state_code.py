@@ -1,0 +1,15 @@
+"""Goal configuration of make_two_stacks_red_blocks: poses (m; quaternion w, x, y, z) that satisfy G."""
+
+from rpg.task_api import Pose
+
+GOAL_POSES = {
+    'red_1': Pose((0.55, 0.08, 0.97), (1.0, 0.0, 0.0, 0.0)),
+    'red_2': Pose((0.55, 0.08, 1.0105), (1.0, 0.0, 0.0, 0.0)),
+    'red_3': Pose((0.55, -0.08, 0.97), (1.0, 0.0, 0.0, 0.0)),
+    'red_4': Pose((0.55, -0.08, 1.0105), (1.0, 0.0, 0.0, 0.0)),
+}
+
+
+def goal_state(task):
+    """Put the task's objects in the goal configuration."""
+    task.set_state(GOAL_POSES)

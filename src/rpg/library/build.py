@@ -1,0 +1,202 @@
+"""``rpg build``: (re)generate a task library from its manifest, in parallel.
+
+A manifest (``library/manifest.yaml``) lists entries; each is a task (an instruction) or
+a family (a session file, run as ``rpg session run`` does), with a seed and the content
+hash it must regenerate to (for a family: the lineage hash of its last version, which
+chains every version's content hash).  Entries are built in the manifest's directory, or,
+with ``check``, in a temporary directory whose hashes are compared with the manifest's.
+
+Backends: ``local`` (a process pool; each worker process keeps its fork server, so MuJoCo
+and the domain are imported once per worker, not once per task) and ``ray`` (the same
+work as Ray tasks, on a running cluster with ``address="auto"`` or a local one; ``pip
+install rpg[ray]``).
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+import time
+from collections.abc import Callable, Iterator
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from pathlib import Path
+from typing import Literal
+
+import yaml
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+
+
+class ManifestError(ValueError):
+    """A manifest that cannot be read; the message says what is wrong."""
+
+
+class Entry(BaseModel):
+    """One library entry."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    name: str = Field(pattern=r"^[a-z][a-z0-9_]*$")
+    instruction: str | None = None
+    session: str | None = Field(None, description="Session YAML, relative to the manifest.")
+    seed: int = 0
+    content_hash: str | None = None
+
+    @model_validator(mode="after")
+    def _one_source(self) -> Entry:
+        if (self.instruction is None) == (self.session is None):
+            raise ValueError(f"entry {self.name!r} needs exactly one of 'instruction' or 'session'")
+        return self
+
+    @property
+    def kind(self) -> str:
+        return "family" if self.session else "task"
+
+
+class Manifest(BaseModel):
+    """``manifest.yaml``: the entries of a library."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    entries: list[Entry]
+
+    @model_validator(mode="after")
+    def _unique(self) -> Manifest:
+        names = [e.name for e in self.entries]
+        dup = sorted({n for n in names if names.count(n) > 1})
+        if dup:
+            raise ValueError(f"duplicate entry names: {', '.join(dup)}")
+        return self
+
+
+def load_manifest(path: str | Path) -> Manifest:
+    """Read and check a manifest.
+
+    Raises:
+        ManifestError: unreadable YAML or entries that do not validate.
+    """
+    try:
+        return Manifest.model_validate(yaml.safe_load(Path(path).read_text()))
+    except ValidationError as exc:
+        where = "; ".join(f"{'.'.join(map(str, e['loc']))}: {e['msg']}" for e in exc.errors()[:3])
+        raise ManifestError(f"manifest {path} is invalid: {where}") from None
+    except (OSError, yaml.YAMLError, TypeError) as exc:
+        raise ManifestError(f"cannot read manifest {path}: {str(exc).splitlines()[0][:300]}") from None
+
+
+def save_manifest(path: str | Path, manifest: Manifest, header: str = "") -> None:
+    """Write the manifest atomically."""
+    path = Path(path)
+    text = header + yaml.safe_dump(manifest.model_dump(exclude_none=True), sort_keys=False, width=120)
+    tmp = path.with_name(f".{path.name}.tmp-{os.getpid()}")
+    tmp.write_text(text)
+    os.replace(tmp, path)
+
+
+def build_entry(entry: dict, out_dir: str, base_dir: str) -> dict:
+    """Build one entry into ``out_dir``; a JSON-ready report (never raises)."""
+    from rpg.compiler import compile_instruction, load_artifact
+
+    e = Entry.model_validate(entry)
+    t0 = time.perf_counter()
+    report: dict = {"name": e.name, "kind": e.kind, "expected": e.content_hash}
+    try:
+        if e.kind == "task":
+            r = compile_instruction(e.instruction, out_dir, e.seed, name=e.name)
+            report.update(status="valid" if r.valid else "rejected", content_hash=r.content_hash,
+                          repairs=[x.operator for x in r.schema.repairs],
+                          gates={g["gate"]: g["status"] for g in r.gates}, path=str(r.path))
+        else:
+            from rpg.steer.family import Family
+            from rpg.steer.session import run_session
+
+            fam, steps = run_session(Path(base_dir) / e.session, out_dir, e.seed)
+            hist = Family(fam).load()
+            repairs = []
+            for v in hist.versions:
+                repairs += [x.operator for x in load_artifact(Family(fam).version_dir(v.version_id))[0].repairs]
+            ok = all(s.ok for s in steps)
+            report.update(status="valid" if ok else "rejected", content_hash=hist.versions[-1].lineage_hash,
+                          repairs=repairs, versions=len(hist.versions), path=str(fam),
+                          problems=[p for s in steps for p in s.problems])
+    except Exception as exc:  # noqa: BLE001 - one entry's failure is reported, the batch goes on
+        report.update(status="error", content_hash=None, error=f"{type(exc).__name__}: {exc}")
+    report["duration_s"] = round(time.perf_counter() - t0, 3)
+    report["changed"] = bool(e.content_hash) and report.get("content_hash") != e.content_hash
+    return report
+
+
+def _local(entries: list[dict], out_dir: str, base_dir: str, jobs: int) -> Iterator[dict]:
+    if jobs <= 1:
+        for e in entries:
+            yield build_entry(e, out_dir, base_dir)
+        return
+    with ProcessPoolExecutor(max_workers=jobs) as pool:
+        futures = [pool.submit(build_entry, e, out_dir, base_dir) for e in entries]
+        for f in as_completed(futures):
+            yield f.result()
+
+
+def _ray(entries: list[dict], out_dir: str, base_dir: str, jobs: int, address: str | None) -> Iterator[dict]:
+    try:
+        import ray
+    except ImportError:
+        raise ManifestError("the ray backend needs Ray: pip install 'rpg[ray]'") from None
+    started = not ray.is_initialized()
+    if started:
+        if address:
+            ray.init(address=address, include_dashboard=False, log_to_driver=False)
+        else:
+            ray.init(num_cpus=jobs, include_dashboard=False, log_to_driver=False)
+    try:
+        task = ray.remote(num_cpus=1)(build_entry)
+        pending = [task.remote(e, out_dir, base_dir) for e in entries]
+        while pending:
+            done, pending = ray.wait(pending, num_returns=1)
+            yield ray.get(done[0])
+    finally:
+        if started:
+            ray.shutdown()
+
+
+def build_library(manifest_path: str | Path, jobs: int = 1, backend: Literal["local", "ray"] = "local",
+                  check: bool = False, address: str | None = None,
+                  progress: Callable[[dict], None] | None = None) -> tuple[list[dict], float]:
+    """Build (or, with ``check``, regenerate and compare) every entry; (reports, seconds).
+
+    Without ``check`` the artifacts are written beside the manifest and the manifest's
+    hashes are updated to what was built.  With ``check`` nothing in the library changes.
+
+    Raises:
+        ManifestError: an unreadable manifest or an unavailable backend.
+    """
+    manifest_path = Path(manifest_path)
+    manifest = load_manifest(manifest_path)
+    base = manifest_path.resolve().parent
+    entries = [e.model_dump() for e in manifest.entries]
+    t0 = time.perf_counter()
+    with tempfile.TemporaryDirectory(prefix="rpg-check-") as tmp:
+        out = tmp if check else str(base)
+        runner = _ray(entries, out, str(base), jobs, address) if backend == "ray" else _local(entries, out, str(base), jobs)
+        reports = []
+        for rep in runner:
+            reports.append(rep)
+            if progress:
+                progress(rep)
+    order = {e["name"]: i for i, e in enumerate(entries)}
+    reports.sort(key=lambda r: order[r["name"]])
+    if not check:
+        by_name = {r["name"]: r for r in reports}
+        for e in manifest.entries:
+            if by_name[e.name]["status"] == "valid":
+                e.content_hash = by_name[e.name]["content_hash"]
+        save_manifest(manifest_path, manifest, _header(manifest_path))
+    return reports, time.perf_counter() - t0
+
+
+def _header(path: Path) -> str:
+    lines = []
+    for line in path.read_text().splitlines():
+        if not line.startswith("#"):
+            break
+        lines.append(line)
+    return "\n".join(lines) + "\n" if lines else ""
