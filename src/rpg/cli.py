@@ -296,6 +296,21 @@ def build_cmd(
     raise typer.Exit(EXIT_INVALID if failed or (check and changed) else EXIT_OK)
 
 
+@app.command("report")
+def report_cmd(
+    library: Annotated[Path, typer.Argument(help="A library directory (tasks and families).")],
+    output: Annotated[Path, typer.Option("-o", "--output", help="Site directory to write.")] = Path("site"),
+) -> None:
+    """Write a static HTML gallery: one card per task and family version."""
+    from rpg.library.report import write_report
+
+    try:
+        page = write_report(library, output)
+    except ValueError as exc:
+        _fail(str(exc))
+    out.print(f"wrote {page}")
+
+
 session_app = typer.Typer(help="Scripted steering sessions.", no_args_is_help=True)
 app.add_typer(session_app, name="session")
 

@@ -1,0 +1,107 @@
+"""``rpg report``: a static HTML gallery of a task library.
+
+One card per task artifact and per family version (like the paper's task figures): the
+instruction, the initial and goal snapshots, the gate results, the repairs applied, and
+for family versions the intent, reference, parent and lineage hash.  Snapshots are copied
+next to the page, so the site directory is self-contained.
+"""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import jinja2
+import yaml
+
+from rpg.compiler import ArtifactError, load_artifact
+
+PAGE = jinja2.Template("""<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>{{ title }}</title>
+<style>
+body{font-family:system-ui,sans-serif;margin:1.5rem;background:#fafafa;color:#222}
+.grid{display:grid;grid-template-columns:repeat(auto-fill,minmax(420px,1fr));gap:1rem}
+.card{background:#fff;border:1px solid #ddd;border-radius:8px;padding:.8rem}
+.card h2{font-size:1rem;margin:.2rem 0}.shots{display:flex;gap:.4rem}.shots figure{margin:0;flex:1}
+.shots img{width:100%;border-radius:4px}figcaption{font-size:.75rem;color:#666;text-align:center}
+.instr{font-style:italic}.gates{display:flex;flex-wrap:wrap;gap:2px}.gates span{font-size:.7rem;padding:1px 4px;border-radius:3px;margin-right:2px}
+.pass{background:#d4f4d4}.fail{background:#f8d0d0}.skipped{background:#eee}.meta{font-size:.75rem;color:#555}
+h1 small{font-weight:normal;color:#666;font-size:.9rem}
+</style></head>
+<body><h1>{{ title }} <small>{{ cards|length }} cards</small></h1>
+<div class="grid">
+{% for c in cards %}<section class="card" id="{{ c.id }}" data-kind="{{ c.kind }}">
+<h2>{{ c.title }}</h2>
+<p class="instr">{{ c.instruction }}</p>
+<div class="shots">{% for key in ("initial", "goal") %}{% if c.images[key] %}
+<figure><img src="{{ c.images[key] }}" alt="{{ key }} state of {{ c.title }}"><figcaption>{{ key }} state</figcaption></figure>
+{% endif %}{% endfor %}</div>
+<p class="gates">{% for g, st in c.gates.items() %}<span class="{{ st }}">{{ g }}</span>{% endfor %}</p>
+<p class="meta">{{ c.summary }}</p>
+{% if c.repairs %}<p class="meta">repairs: {{ c.repairs|join(", ") }}</p>{% endif %}
+{% if c.lineage %}<p class="meta">{{ c.lineage }}</p>{% endif %}
+</section>
+{% endfor %}</div>
+<script>
+window.addEventListener("load", function () {
+  var imgs = Array.from(document.images);
+  document.body.dataset.imagesLoaded = imgs.filter(function (i) { return i.complete && i.naturalWidth > 0; }).length;
+  document.body.dataset.images = imgs.length;
+});
+</script>
+</body></html>
+""", autoescape=True)
+
+
+def _card(directory: Path, site: Path, card_id: str, title: str, kind: str, lineage: str = "") -> dict:
+    schema, doc = load_artifact(directory)
+    images = {}
+    for key in ("initial", "goal"):
+        src = directory / f"{key}.png"
+        if src.is_file():
+            dst = site / "img" / f"{card_id}-{key}.png"
+            shutil.copyfile(src, dst)
+            images[key] = f"img/{dst.name}"
+        else:
+            images[key] = None
+    prov = doc.get("provenance", {})
+    return {"id": card_id, "title": title, "kind": kind, "instruction": schema.instruction,
+            "summary": schema.goal_summary, "images": images, "gates": prov.get("gates", {}),
+            "repairs": [r["operator"] for r in prov.get("repairs", [])], "lineage": lineage}
+
+
+def collect_cards(library: Path, site: Path) -> list[dict]:
+    """Cards for every task artifact and family version directly under ``library``."""
+    cards = []
+    for d in sorted(p for p in Path(library).iterdir() if p.is_dir() and not p.name.startswith(".")):
+        if (d / "family.yaml").is_file():
+            hist = yaml.safe_load((d / "family.yaml").read_text())
+            for v in hist["versions"]:
+                ref = "none" if v["reference"] is None else f"v{v['reference']}"
+                parent = "none" if v["parent"] is None else f"v{v['parent']}"
+                lineage = (f"{v['intent']}; reference {ref}; parent {parent}; lineage {v['lineage_hash'][:12]}"
+                           + (f"; edit: {v['description']}" if v["version_id"] else ""))
+                cards.append(_card(d / f"v{v['version_id']}", site, f"{d.name}-v{v['version_id']}",
+                                   f"{d.name} v{v['version_id']}", "family_version", lineage))
+        elif (d / "task.yaml").is_file():
+            try:
+                cards.append(_card(d, site, d.name, d.name, "task"))
+            except ArtifactError:
+                continue
+    return cards
+
+
+def write_report(library: str | Path, site: str | Path, title: str | None = None) -> Path:
+    """Write ``site/index.html`` (and ``site/img/``); return the page's path.
+
+    Raises:
+        ValueError: ``library`` is not a directory.
+    """
+    library, site = Path(library), Path(site)
+    if not library.is_dir():
+        raise ValueError(f"{library} is not a directory")
+    (site / "img").mkdir(parents=True, exist_ok=True)
+    cards = collect_cards(library, site)
+    page = site / "index.html"
+    page.write_text(PAGE.render(title=title or f"rpg task library: {library.resolve().name}", cards=cards))
+    return page

@@ -1,0 +1,47 @@
+"""rpg report: the gallery loads in headless Chromium with every card and image present."""
+
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import yaml
+
+ROOT = Path(__file__).resolve().parents[1]
+CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+                  "--disable-background-networking", "--disable-component-update", "--disable-sync"]
+
+
+@pytest.fixture(scope="session")
+def chromium():
+    """Debian's chromium, installed by the test set-up when missing."""
+    exe = shutil.which("chromium")
+    if exe is None and shutil.which("apt-get"):
+        subprocess.run(["apt-get", "update", "-q"], capture_output=True, timeout=600)
+        subprocess.run(["apt-get", "install", "-y", "-q", "chromium"], capture_output=True, timeout=900)
+        exe = shutil.which("chromium")
+    if exe is None:
+        pytest.fail("chromium is not installed and could not be installed with apt-get")
+    return exe
+
+
+@pytest.mark.slow
+def test_gallery_has_every_card_and_image(chromium, tmp_path):
+    site = tmp_path / "site"
+    proc = subprocess.run([sys.executable, "-m", "rpg.cli", "report", str(ROOT / "library"), "-o", str(site)],
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    lib = ROOT / "library"
+    expected = {d.name for d in lib.iterdir() if (d / "task.yaml").is_file()}
+    for fam in (d for d in lib.iterdir() if (d / "family.yaml").is_file()):
+        expected |= {f"{fam.name}-v{v['version_id']}" for v in yaml.safe_load((fam / "family.yaml").read_text())["versions"]}
+    dom = subprocess.run([chromium, *CHROMIUM_FLAGS, f"--user-data-dir={tmp_path / 'profile'}", "--virtual-time-budget=10000",
+                          "--dump-dom", (site / "index.html").as_uri()], capture_output=True, text=True, timeout=120).stdout
+    cards = set(re.findall(r'<section class="card" id="([^"]+)"', dom))
+    assert cards == expected
+    m = re.search(r'<body data-images-loaded="(\d+)" data-images="(\d+)"', dom)
+    assert m, dom[:500]
+    assert int(m.group(1)) == int(m.group(2)) == 2 * len(expected)
+    assert dom.count("class=\"pass\"") >= 8 * len(expected)
