@@ -24,6 +24,7 @@ test: install
 bench: install
 	$(PY) benchmarks/bench_domain.py
 	$(PY) benchmarks/bench_compile.py
+	$(PY) benchmarks/bench_library.py
 
 lint: install
 	$(VENV)/bin/ruff check src tests benchmarks

@@ -2,6 +2,8 @@
 
 import time
 
+from _report import report
+
 import rpg  # noqa: F401  (sets MUJOCO_GL=egl before mujoco loads)
 import mujoco
 
@@ -14,7 +16,7 @@ assets = [ColoredCube(f"c{i}", color="red") for i in range(10)]
 t = time.perf_counter()
 for _ in range(20):
     scene = Scene(assets)
-print(f"scene build+compile, 10 cubes: {(time.perf_counter() - t) / 20 * 1000:.1f} ms")
+build_ms = (time.perf_counter() - t) / 20 * 1000
 scene.set_poses(grid_layout([f"c{i}" for i in range(9)], 3, 3) | {"c9": ((0.45, 0.2, 0.97), None)})
 N = 5000
 t = time.perf_counter()
@@ -24,7 +26,14 @@ t = time.perf_counter()
 for _ in range(N):
     mujoco.mj_step(scene.model, scene.data)
 raw = time.perf_counter() - t
-print(f"settle: {N / settle:.0f} steps/s, raw mj_step loop: {N / raw:.0f} steps/s, overhead ratio {settle / raw:.2f} (target <= 1.2)")
+
 t = time.perf_counter()
 img = render_image(scene)
-print(f"render 640x480 snapshot: {(time.perf_counter() - t) * 1000:.1f} ms" if img is not None else "render: skipped (no OpenGL)")
+render_ms = (time.perf_counter() - t) * 1000 if img is not None else float("nan")
+report("domain", [
+    ("scene build+compile, 10 cubes", build_ms, "ms", ""),
+    ("settle loop", N / settle, "steps/s", ""),
+    ("raw mj_step loop", N / raw, "steps/s", ""),
+    ("settle overhead vs raw mj_step", settle / raw, "x", "<= 1.2"),
+    ("640x480 snapshot (new renderer)", render_ms, "ms", ""),
+])

@@ -139,7 +139,8 @@ def test_corpus_has_at_least_thirty_hostile_artifacts():
 
 
 def test_worker_results_are_schema_checked():
-    from rpg.validate.sandbox import WorkerError, checked_validate_result
+    from rpg.validate.results import checked_validate_result
+    from rpg.validate.sandbox import WorkerError
 
     ok = {"gates": [{"gate": "smoke", "status": "pass", "duration_s": 0.01, "details": {}}]}
     assert checked_validate_result(ok)["gates"][0]["gate"] == "smoke"

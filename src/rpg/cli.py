@@ -87,6 +87,7 @@ def compile_cmd(
     as_json: Annotated[bool, typer.Option("--json", help="Print one JSON document.")] = False,
 ) -> None:
     """Compile INSTRUCTION into a validated task artifact OUTPUT/<slug>/."""
+    _prestart_worker()
     from rpg.compiler import compile_instruction
     from rpg.schema.llm import ModelOutputError, ProviderError, ReplayError
 
@@ -141,6 +142,7 @@ def steer_cmd(
     as_json: Annotated[bool, typer.Option("--json", help="Print one JSON document.")] = False,
 ) -> None:
     """Classify EDIT, pick the version it builds on, recompile and record a new version."""
+    _prestart_worker()
     from rpg.schema.llm import ModelOutputError, ProviderError, ReplayError
     from rpg.steer import steer
 
@@ -352,6 +354,7 @@ def validate_cmd(
     as_json: Annotated[bool, typer.Option("--json")] = False,
 ) -> None:
     """Re-run every gate on an artifact (e.g. after a hand edit)."""
+    _prestart_worker()
     from rpg.compiler import revalidate
 
     try:
@@ -364,6 +367,12 @@ def validate_cmd(
         for line in result.log:
             out.print(esc(line), highlight=False)
     raise typer.Exit(EXIT_OK if result.valid else EXIT_INVALID)
+
+
+def _prestart_worker() -> None:
+    from rpg.validate.sandbox import prestart
+
+    prestart()
 
 
 def _worker(req: dict) -> dict:

@@ -9,19 +9,26 @@ affecting the physics.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import ClassVar
-
-import mujoco
+from typing import TYPE_CHECKING, ClassVar
 
 from rpg.domain import constants as C
 from rpg.domain.glyphs import FACES, canonical_label, cube_texture, label_type
 from rpg.domain.palette import DEFAULT_SEMANTIC_COLOR, PALETTE, canonical_color, rgba
+
+if TYPE_CHECKING:  # mujoco is imported where a scene is built, not when a schema is read
+    import mujoco
 
 CUBE_GEOM_GROUP = 0
 """Geom group of cubes and the table: seen by rays and cameras."""
 
 PATCH_GEOM_GROUP = 2
 """Geom group of goal patches: rendered (groups 0-2 are shown by default), ignored by visibility rays."""
+
+
+def _mj():
+    import mujoco
+
+    return mujoco
 
 
 def _contact_params(geom: mujoco.MjsGeom) -> None:
@@ -83,7 +90,7 @@ class _Cube(Asset):
         half = self.size / 2
         geom = body.add_geom(
             name=self.name,
-            type=mujoco.mjtGeom.mjGEOM_BOX,
+            type=_mj().mjtGeom.mjGEOM_BOX,
             size=[half, half, half],
             mass=C.CUBE_MASS,
             group=CUBE_GEOM_GROUP,
@@ -174,14 +181,14 @@ class SemanticCube(_Cube):
         background = tuple(int(round(255 * c)) for c in PALETTE[self.color])
         tex = spec.add_texture(
             name=f"{self.name}_tex",
-            type=mujoco.mjtTexture.mjTEXTURE_CUBE,
+            type=_mj().mjtTexture.mjTEXTURE_CUBE,
             width=C.GLYPH_TEXTURE_PX,
             height=6 * C.GLYPH_TEXTURE_PX,
             nchannel=3,
         )
         tex.data = cube_texture(self.face_labels(), background)
         mat = spec.add_material(name=f"{self.name}_mat")
-        mat.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = tex.name
+        mat.textures[_mj().mjtTextureRole.mjTEXROLE_RGB] = tex.name
         self._cube_geom(body, material=mat.name)
 
 
@@ -223,7 +230,7 @@ class GoalPatch(Asset):
         sx, sy, sz = self.extents
         body.add_geom(
             name=self.name,
-            type=mujoco.mjtGeom.mjGEOM_BOX,
+            type=_mj().mjtGeom.mjGEOM_BOX,
             size=[sx / 2, sy / 2, sz / 2],
             rgba=rgba(self.color, 0.9),
             contype=0,

@@ -26,7 +26,6 @@ import re
 from dataclasses import MISSING, dataclass, field, fields, replace
 from typing import Any, ClassVar
 
-import networkx as nx
 import numpy as np
 
 from rpg.domain import constants as C
@@ -809,6 +808,8 @@ class Piles(Predicate):
     def _match_groups(self, state: WorldState) -> list[list[str]]:
         names = sorted({n for g in self.groups for n in g})
         xy = np.array([_planar(state[n]) for n in names])
+        import networkx as nx  # lazy: only piles with explicit groups need it
+
         g = nx.Graph()
         g.add_nodes_from(range(len(names)))
         for i, j in itertools.combinations(range(len(names)), 2):

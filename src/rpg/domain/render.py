@@ -102,5 +102,5 @@ class Snapshotter:
         self.scene.forward()
         self.renderer.update_scene(self.scene.data, camera=self.camera)
         path = Path(path)
-        Image.fromarray(self.renderer.render()).save(path, format="PNG", optimize=False)
+        Image.fromarray(self.renderer.render()).save(path, format="PNG", compress_level=1)
         return path

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-import networkx as nx
 import numpy as np
 
 from rpg.domain import constants as C
@@ -97,6 +96,8 @@ def reorder_support_chain(schema: TaskSchema, failure: dict) -> TaskSchema | Non
     """Cyclic or ungrounded support: drop the support predicates that close a cycle."""
     goal = schema.goal_predicate()
     children = goal.children() if isinstance(goal, And) else [goal]
+    import networkx as nx
+
     g = nx.DiGraph()
     kept: list[Predicate] = []
     dropped = []

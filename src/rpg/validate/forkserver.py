@@ -105,8 +105,25 @@ def serve_one(req: dict) -> bytes:
     return data
 
 
+def preload() -> None:
+    """Import what every child needs, once: the domain, PIL's PNG codec and the OpenGL
+    bindings of the configured backend (modules and shared libraries only: no OpenGL
+    context and no threads exist before a fork)."""
+    import importlib
+
+    import rpg.validate.worker  # noqa: F401
+    from PIL import Image, PngImagePlugin  # noqa: F401
+
+    backend = os.environ.get("MUJOCO_GL", "egl")
+    if backend in ("egl", "osmesa"):
+        try:
+            importlib.import_module(f"mujoco.{backend}")
+        except Exception:  # noqa: BLE001 - no OpenGL here: children skip snapshots as before
+            pass
+
+
 def main() -> None:
-    import rpg.validate.worker  # noqa: F401 - preload: this is the point of the server
+    preload()
 
     inp, out = sys.stdin.buffer, sys.stdout.buffer
     while True:

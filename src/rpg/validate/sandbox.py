@@ -16,9 +16,6 @@ import subprocess
 import sys
 import tempfile
 import threading
-from typing import Literal
-
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 WORKER_TIMEOUT_S = 120.0
 """Wall-clock limit for one worker run, s."""
@@ -38,40 +35,6 @@ _KEEP_ENV = ("PATH", "HOME", "LANG", "LC_ALL", "MUJOCO_GL", "PYTHONPATH", "VIRTU
 
 class WorkerError(RuntimeError):
     """The worker crashed, timed out or wrote something that is not a result."""
-
-
-class GateResult(BaseModel):
-    """One gate result as the worker reports it; anything else is refused as malformed."""
-
-    model_config = ConfigDict(extra="forbid")
-
-    gate: Literal["compile", "smoke", "nontrivial", "constraint", "goal_state", "bounds", "visibility"]
-    status: Literal["pass", "fail", "skipped"]
-    kind: Literal["syntax", "api_usage", "runtime", "success_check", "stability", "bounds", "constraint", "visibility"] | None = None
-    message: str | None = Field(None, max_length=20000)
-    duration_s: float = Field(ge=0.0)
-    details: dict = Field(default_factory=dict)
-
-
-class ValidateResult(BaseModel):
-    """The worker's answer to a ``validate`` request."""
-
-    model_config = ConfigDict(extra="forbid")
-
-    gates: list[GateResult] = Field(max_length=16)
-    snapshots: dict[Literal["initial", "goal"], str | None] | None = None
-
-
-def checked_validate_result(result: object) -> dict:
-    """The worker's validate result, schema-checked.
-
-    Raises:
-        WorkerError: it does not match :class:`ValidateResult`.
-    """
-    try:
-        return ValidateResult.model_validate(result).model_dump(exclude_none=True)
-    except ValidationError as exc:
-        raise WorkerError(f"task worker returned a malformed result: {str(exc).splitlines()[0][:200]}") from None
 
 
 def _limits() -> None:  # pragma: no cover - runs in the child
@@ -168,6 +131,20 @@ def worker_timeout() -> float:
         return WORKER_TIMEOUT_S
 
 
+def _forkserver_enabled() -> bool:
+    return os.environ.get("RPG_FORKSERVER", "1") != "0" and hasattr(os, "fork")
+
+
+def prestart() -> None:
+    """Start the fork server now (without waiting for it), so that its imports overlap the
+    caller's own start-up; :func:`run_worker` uses it when it is ready."""
+    global _server
+    if _forkserver_enabled():
+        with _server_lock:
+            if _server is None or not _server.alive():
+                _server = _ForkServer()
+
+
 def run_worker(request: dict, timeout: float | None = None) -> dict:
     """Run one worker request in a fresh, limited child process and return its parsed result.
 
@@ -179,7 +156,7 @@ def run_worker(request: dict, timeout: float | None = None) -> dict:
     """
     global _server
     timeout = worker_timeout() if timeout is None else timeout
-    if os.environ.get("RPG_FORKSERVER", "1") != "0" and hasattr(os, "fork"):
+    if _forkserver_enabled():
         with _server_lock:
             for _ in range(2):
                 if _server is None or not _server.alive():

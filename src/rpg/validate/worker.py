@@ -30,8 +30,7 @@ from rpg.domain.scene import drift_report
 from rpg.domain.task import BlockTask
 from rpg.domain.visibility import face_visibility
 
-GATES = ("text", "compile", "smoke", "nontrivial", "constraint", "goal_state", "bounds", "visibility")
-"""Validation gates, in the order they run."""
+from rpg.validate.gates import GATES  # noqa: E402,F401 - re-exported
 
 
 class GateFailure(Exception):
