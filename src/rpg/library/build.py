@@ -125,13 +125,34 @@ def build_entry(entry: dict, out_dir: str, base_dir: str) -> dict:
     return report
 
 
+PARALLEL_RENDER_THREADS = "1"
+"""llvmpipe threads per worker when workers run in parallel (``LP_NUM_THREADS``): the
+workers already keep the cores busy, extra render threads only contend."""
+
+
+def _init_worker() -> None:
+    """Pool worker start: one render thread, and the fork server started at once."""
+    os.environ.setdefault("LP_NUM_THREADS", PARALLEL_RENDER_THREADS)
+    from rpg.validate.sandbox import prestart
+
+    prestart()
+
+
+def _longest_first(entries: list[dict]) -> list[dict]:
+    """Families (several compiles each) before single tasks, so no long entry starts last."""
+    return sorted(entries, key=lambda e: e.get("session") is None)
+
+
 def _local(entries: list[dict], out_dir: str, base_dir: str, jobs: int) -> Iterator[dict]:
     if jobs <= 1:
         for e in entries:
             yield build_entry(e, out_dir, base_dir)
         return
-    with ProcessPoolExecutor(max_workers=jobs) as pool:
-        futures = [pool.submit(build_entry, e, out_dir, base_dir) for e in entries]
+    import rpg.compiler  # noqa: F401 - imported once here, inherited by forked pool workers
+    import rpg.steer.session  # noqa: F401
+
+    with ProcessPoolExecutor(max_workers=jobs, initializer=_init_worker) as pool:
+        futures = [pool.submit(build_entry, e, out_dir, base_dir) for e in _longest_first(entries)]
         for f in as_completed(futures):
             yield f.result()
 
@@ -148,8 +169,8 @@ def _ray(entries: list[dict], out_dir: str, base_dir: str, jobs: int, address: s
         else:
             ray.init(num_cpus=jobs, include_dashboard=False, log_to_driver=False)
     try:
-        task = ray.remote(num_cpus=1)(build_entry)
-        pending = [task.remote(e, out_dir, base_dir) for e in entries]
+        task = ray.remote(num_cpus=1, runtime_env={"env_vars": {"LP_NUM_THREADS": PARALLEL_RENDER_THREADS}})(build_entry)
+        pending = [task.remote(e, out_dir, base_dir) for e in _longest_first(entries)]
         while pending:
             done, pending = ray.wait(pending, num_returns=1)
             yield ray.get(done[0])

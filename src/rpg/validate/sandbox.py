@@ -30,7 +30,7 @@ WORKER_MAX_OUTPUT = 16 * 1024**2
 """Largest worker output accepted, bytes."""
 
 _KEEP_ENV = ("PATH", "HOME", "LANG", "LC_ALL", "MUJOCO_GL", "PYTHONPATH", "VIRTUAL_ENV", "LD_LIBRARY_PATH",
-             "PYOPENGL_PLATFORM", "EGL_PLATFORM", "TMPDIR")
+             "PYOPENGL_PLATFORM", "EGL_PLATFORM", "TMPDIR", "LP_NUM_THREADS")
 
 
 class WorkerError(RuntimeError):
