@@ -200,3 +200,26 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     assert a.stdout == b.stdout and len(a.stdout.strip()) == 64
     schema, doc = load_artifact(next(p for p in (tmp_path / "a").iterdir() if not p.name.startswith(".")))
     assert doc["content_hash"] == a.stdout.strip()
+
+
+@pytest.mark.parametrize("text,summary", [
+    ("Stack three blocks: red at the bottom, then green, then blue on top", "tower bottom to top: red, green, blue"),
+    ("Build a tower of red, green and blue blocks", "tower bottom to top: red, green, blue"),
+    ("Stack the letters A, B, C into a tower with A at the bottom", "tower bottom to top: letter_a, letter_b, letter_c"),
+    ("Make a tower of the blue, red and yellow cubes with yellow at the bottom", "tower bottom to top: yellow, blue, red"),
+    ("Stack four blocks in rainbow order", "tower bottom to top: red, orange, yellow, green"),
+    ("Line up the red, green and blue blocks from right to left", "cubes in a line right to left: red, green, blue"),
+    ("Place the red cube on the left and the blue cube on the right", "red left of blue"),
+    ("Arrange the digits 1 to 5 in ascending order", "up faces read 1, 2, 3, 4, 5 left to right"),
+    ("Make a 3 by 3 grid of blocks", "a 3x3 grid of 9 touching cubes"),
+    ("Place the red block behind the blue patch", "red behind blue_patch"),
+])
+def test_parser_reads_phrasings_beyond_the_paper(text, summary):
+    assert parse(text).goal_summary == summary
+
+
+def test_parser_refuses_rather_than_drop_a_named_cube():
+    with pytest.raises(ParseError, match="purple"):
+        parse("Put the purple cube behind the tower of red and blue")
+    schema = parse("Form a straight line of four blue blocks")
+    assert [a.color for a in schema.assets] == ["blue"] * 4

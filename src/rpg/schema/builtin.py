@@ -11,6 +11,7 @@ Frame conventions: see :mod:`rpg.domain.constants`.
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 from dataclasses import dataclass, field
@@ -117,6 +118,7 @@ def normalize(instruction: str) -> tuple[str, str]:
     text = re.sub(r"[\u2018\u2019\u201c\u201d`]", "'", text)
     text = text.replace('"', "'")
     text = re.sub(r"(\d)\s*[x\u00d7]\s*(?=\d)", r"\1x", text)
+    text = re.sub(r"\b(\d+)\s+by\s+(?=\d)", r"\1x", text)
     text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall)", r"\1 \2", text)
     unknown = []
     caps = {w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)}
@@ -383,10 +385,14 @@ def recognize_spell(f: Features, b: Builder) -> bool:
 
 
 def _explicit_labels(f: Features) -> list[str]:
-    m = re.search(r"\b([A-Z0-9])((?:\s*,\s*(?:and\s+)?[A-Z0-9]){2,})", f.original)
-    if not m:
-        return []
-    return [m.group(1)] + re.findall(r"[A-Z0-9]", m.group(2))
+    """Labels listed ("A, B, C, D") or given as a range ("A to E", "digits 1 to 5")."""
+    m = re.search(r"\b([A-Z0-9])((?:\s*,\s*(?:and\s+)?[A-Z0-9]){2,})\b", f.original)
+    if m:
+        return [m.group(1)] + re.findall(r"[A-Z0-9]", m.group(2))
+    r = re.search(r"\b([A-Z]|\d)\s+(?:to|through|thru)\s+([A-Z]|\d)\b", f.original)
+    if r and r.group(1).isdigit() == r.group(2).isdigit() and ord(r.group(1)) < ord(r.group(2)):
+        return [chr(c) for c in range(ord(r.group(1)), ord(r.group(2)) + 1)]
+    return []
 
 
 def _ordering(f: Features) -> tuple[str, bool] | None:
@@ -572,8 +578,11 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
     if not is_line or f.has("stack", "tower", "on top"):
         return False
     direction = _direction(f)
+    listed = re.search(rf"\b((?:{COLOR_RE})(?:\s*(?:,\s*and|,|and|then)\s+(?:the\s+)?(?:{COLOR_RE})\b)+)", f.text)
+    if not explicit and not order and listed and re.search(r"\b(?:left to right|right to left|front to back|back to front)\b", f.text):
+        explicit = listed
     if explicit:
-        colors = [_canon_color(c) for c in re.findall(COLOR_RE, explicit.group(1))]
+        colors = [_canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", explicit.group(1))]
         names = [b.cube(c) for c in colors]
         order_names = names if direction == "left_to_right" else list(reversed(names))
         b.place(line_layout(order_names))
@@ -608,7 +617,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         b.summary.append(f"{n} cubes in a line in {'reverse ' if desc else ''}{what} order {direction.replace('_', ' ')}")
     else:
         n = _count(f, default=4)
-        names = [b.cube(c) for c in _colors_for(n, f)]
+        distinct = list(dict.fromkeys(f.color_list()))
+        names = [b.cube(c) for c in (distinct * n if len(distinct) == 1 else _colors_for(n, f))]
         axis = "x" if f.has("vertical", "front to back", "depth") else "y"
         b.place(line_layout(names, axis=axis))
         b.preds.append(InLine(tuple(names), axis=axis))
@@ -689,6 +699,7 @@ def recognize_relational(f: Features, b: Builder) -> bool:
     rels: list = []
     onpatch: list[tuple[str, str]] = []
     bottom_top: dict[str, str] = {}
+    sides: dict[str, str] = {}
 
     def obj(mn: Mention, i: int = 0) -> str:
         if mn.patch:
@@ -719,6 +730,11 @@ def recognize_relational(f: Features, b: Builder) -> bool:
             left = [m for m in ms if m.end <= rm.start() and not m.patch]
             right = [m for m in ms if m.start >= rm.end()]
             after = clause[rm.end():].strip()
+            side = re.match(r"(?:the\s+)?(left|right)(?:\s+(?:hand\s+)?side)?\b(?!\s+(?:hand\s+)?(?:side\s+)?of)", after)
+            if kind == "on" and side:
+                if left:
+                    sides[side.group(1)] = obj(left[-1])
+                continue
             if kind == "on" and re.match(r"(?:the\s+)?(?:table|bottom|base|top\b(?!\s+of))", after):
                 continue
             if kind == "on" and re.match(r"each other|one another|top of each other|itself", after):
@@ -754,6 +770,8 @@ def recognize_relational(f: Features, b: Builder) -> bool:
                 rels.append(cls(a, c))
     if "bottom" in bottom_top and "top" in bottom_top:
         on_edges.append((bottom_top["top"], bottom_top["bottom"]))
+    if "left" in sides and "right" in sides and sides["left"] != sides["right"]:
+        rels.append(LeftOf(sides["left"], sides["right"]))
     # a bare "stack N blocks" / "stack blocks on the patch"
     if stackish and not on_edges:
         ms = [m for m in _mentions(text) if not m.patch]
@@ -829,7 +847,7 @@ def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch:
     placed: dict[str, tuple[float, float]] = {}
     base_of = {n: ch[0] for ch in chains for n in ch}
     cube_names = [a.name for a in b.assets if a.kind != "goal_patch"]
-    for n in cube_names:
+    for n in [a.name for a in b.assets]:
         base_of.setdefault(n, n)
     offset = {"left_of": (0.0, 0.10), "right_of": (0.0, -0.10), "in_front_of": (-0.10, 0.0), "behind": (0.10, 0.0), "next_to": (0.0, 0.06)}
     cx, cy = C.WORKSPACE_CENTER
@@ -849,11 +867,12 @@ def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch:
             placed[a] = (placed[c][0] + dx, placed[c][1] + dy)
         elif a in placed and c not in placed:
             placed[c] = (placed[a][0] - dx, placed[a][1] - dy)
-    patches = sorted({p for _, p in onpatch})
-    patch_xy = {}
+    all_patches = {a.name for a in b.assets if a.kind == "goal_patch"}
+    patches = sorted({p for _, p in onpatch} - set(placed))
+    patch_xy = {p: placed[p] for p in sorted(all_patches & set(placed))}  # placed by a relation ("behind the patch")
     pc = b.unit_centers(len(patches), 0.16) if patches else []
-    for p, xy in zip(patches, pc, strict=True):
-        patch_xy[p] = xy
+    patch_xy.update(zip(patches, pc, strict=True))
+    for p, xy in sorted(patch_xy.items()):
         b.place({p: Pose((xy[0], xy[1], C.TABLE_TOP_Z + C.PATCH_THICKNESS / 2))})
     on_patch_by: dict[str, list[str]] = {}
     for a, p in onpatch:
@@ -935,16 +954,53 @@ def item_sequence(text: str) -> list[tuple[str | None, str | None]]:
     return out
 
 
+SEQ_RELATION_RE = re.compile(r"\b(?:on top of|onto|on|atop|above|over|under|underneath|beneath|below|left|right|"
+                             r"behind|front|next|beside|between|near|patch|patches)\b")
+SEQ_HINT_RE = re.compile(r"\b(?:on|at|as)\s+(?:the\s+)?(?:very\s+)?(bottom|base|top)\b(?!\s+of)")
+
+
 def recognize_tower_sequence(f: Features, b: Builder) -> bool:
-    """A tower given as a sequence: "a tower from bottom to top: red, blue, letter 'A'"."""
-    m = re.search(r"\b(?:from\s+)?(bottom to top|top to bottom)\b", f.text)
-    if not m or not f.has("stack", "tower", "stacked"):
+    """One tower given as a sequence of cubes: "a tower from bottom to top: red, blue,
+    letter 'A'", "a tower of red, green and blue blocks", "red at the bottom, then green,
+    then blue on top", "the letters A, B, C in a tower", "four blocks in rainbow order".
+    Listing order is bottom to top unless the text says "top to bottom" or marks a cube
+    "on top" / "at the bottom"."""
+    if not f.has("stack", "tower", "stacked") or f.has("towers", "stacks", "each other", "patch", "patches", "pyramid"):
         return False
-    items = item_sequence(f.text)
+    text = SEQ_HINT_RE.sub(lambda m: f" <{m.group(1)}> ", f.text)
+    mentions = list(ITEM_RE.finditer(text))
+    for a, c in itertools.pairwise(mentions):
+        if SEQ_RELATION_RE.search(text[a.end():c.start()]):
+            return False
+    items: list[tuple[str | None, str | None]] = []
+    hints: dict[int, str] = {}
+    for m in mentions:
+        item = (None, m.group("label").upper()) if m.group("label") else (_canon_color(m.group("color")), None)
+        hint = re.match(r"\s*(?:(?:block|cube)s?\s*)?<(bottom|base|top)>", text[m.end():])
+        if hint and item in items:  # "... with yellow at the bottom": a hint about a listed cube
+            hints[items.index(item)] = hint.group(1)
+            continue
+        if hint:
+            hints[len(items)] = hint.group(1)
+        items.append(item)
+    labels = _explicit_labels(f)
+    if not items and labels:
+        items = [(None, lab) for lab in labels]
+        for lab, where in re.findall(r"\b([A-Z0-9])\s+(?:on|at|as)\s+(?:the\s+)?(bottom|base|top)\b", f.original):
+            if (None, lab) in items:
+                hints[items.index((None, lab))] = where
+    if len(items) < 2 and f.has("rainbow", "gradient"):
+        n = _count(f, default=None)
+        if n:
+            items = [(c, None) for c in sorted(GRADIENT_ORDER[:n], key=GRADIENT_ORDER.index, reverse=f.has("reverse"))]
     if len(items) < 2:
         return False
-    if m.group(1) == "top to bottom":
+    if re.search(r"\btop to bottom\b", f.text):
         items.reverse()
+    else:
+        bottom = [items[i] for i, h in hints.items() if h in ("bottom", "base")]
+        top = [items[i] for i, h in hints.items() if h == "top"]
+        items = bottom + [it for it in items if it not in bottom and it not in top] + top
     names = [b.semantic(label) if label else b.cube(color) for color, label in items]
     b.place(stack_layout(names, C.WORKSPACE_CENTER))
     b.preds.append(Stack(tuple(names)))
@@ -975,6 +1031,11 @@ def parse(instruction: str) -> TaskSchema:
         if recognize(f, b):
             schema = b.schema(_slug(f.original))
             schema.repairs = b.repairs
+            missing = sorted({c for c in f.color_list()} - {a.color for a in schema.assets})
+            if missing:
+                raise ParseError(
+                    f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the {', '.join(missing)} "
+                    f"cube(s) it names have no place in that task. Rephrase, or use --model")
             return schema
     raise ParseError(
         f"could not find a task in \"{f.original[:80]}\": name a structure (tower, line, circle, grid, "
