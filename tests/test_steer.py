@@ -224,3 +224,34 @@ def test_cli_steer_log_show_and_session(tmp_path):
     r = rpg("steer", fam, "Change the base cube to yellow", "--json")
     assert r.returncode == 0, r.stderr
     assert json.loads(r.stdout)["reused"] is True  # yellow, blue, red, A is v4
+
+
+def test_edits_beyond_the_paper_on_a_tower(tmp_path):
+    r = compile_instruction("Stack the red block on top of the yellow block", tmp_path, name="fam")
+    fam = create_family(r.path)
+    steps = [
+        ("Make the tower taller", "tweak", ["yellow", "red", "blue"]),
+        ("Use green instead of yellow", "tweak", ["green", "red", "blue"]),
+        ("Swap the top and bottom blocks", "modify", ["blue", "red", "green"]),
+        ("Put a letter B cube at the bottom", "extend", ["letter B", "blue", "red", "green"]),
+    ]
+    for edit, intent, tower in steps:
+        s = steer(fam.path, edit)
+        assert (s.intent, s.valid) == (intent, True), (edit, s.notes)
+        assert goal_tower(fam.version_dir(s.version)) == tower, edit
+    back = steer(fam.path, "Go back to the first version")
+    assert back.reused and back.version == 0 and fam.load().head == 0
+
+
+def test_colour_tweak_on_a_relational_task_and_growing_a_pyramid(tmp_path):
+    r = compile_instruction("Place the red block behind the yellow block", tmp_path, name="rel")
+    fam = create_family(r.path)
+    s = steer(fam.path, "Change red to blue")
+    assert (s.intent, s.valid) == ("tweak", True)
+    schema = fam.schema(s.version)
+    assert sorted(a.color for a in schema.assets) == ["blue", "yellow"]
+    assert schema.goal_predicate().describe() == "blue behind yellow"
+    p = compile_instruction("Build a pyramid with a base of 3", tmp_path, name="pyr")
+    pyr = create_family(p.path)
+    g = steer(pyr.path, "Make it bigger")
+    assert g.intent == "tweak" and extract(pyr.schema(g.version)).dims == (4, 2)

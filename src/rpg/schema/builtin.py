@@ -454,6 +454,10 @@ def _fill_structure(f, b, n, material, order, layout_fn, face="up"):
             b.summary.append(f"{'letters' if key == 'label' else 'digits'} {'descending' if order[1] else 'ascending'} in reading order (visible faces)")
         return names
     colors = list(dict.fromkeys(f.color_list()))
+    if len(f.color_list()) == n and len(colors) > 1 and not (order and order[0] == "color"):
+        names = [b.cube(c) for c in f.color_list()]  # one colour named per cube: use them as listed
+        b.place(layout_fn(names))
+        return names
     if order and order[0] == "color" or f.has("different", "assorted", "various", "mixed", "rainbow"):
         palette = colors or list(GRADIENT_ORDER)
         cols = [palette[i % len(palette)] for i in range(n)] if len(colors) != 1 else colors * n
@@ -581,7 +585,14 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
     listed = re.search(rf"\b((?:{COLOR_RE})(?:\s*(?:,\s*and|,|and|then)\s+(?:the\s+)?(?:{COLOR_RE})\b)+)", f.text)
     if not explicit and not order and listed and re.search(r"\b(?:left to right|right to left|front to back|back to front)\b", f.text):
         explicit = listed
-    if explicit:
+    in_order = re.search(r"\bin (?:the )?order\b(.*)", f.text)
+    listed_items = item_sequence(in_order.group(1)) if in_order else []
+    if in_order and any(label for _, label in listed_items) and len(listed_items) >= 2:
+        names = [b.semantic(label) if label else b.cube(color) for color, label in listed_items]
+        b.place(line_layout(names if direction == "left_to_right" else list(reversed(names))))
+        b.preds.append(InLine(tuple(names), order=direction))
+        b.summary.append(f"cubes in a line {direction.replace('_', ' ')}: {', '.join(names)}")
+    elif explicit:
         colors = [_canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", explicit.group(1))]
         names = [b.cube(c) for c in colors]
         order_names = names if direction == "left_to_right" else list(reversed(names))

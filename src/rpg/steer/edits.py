@@ -16,6 +16,7 @@ Deterministic and offline; the same rules for every edit, no per-sentence cases.
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import asdict, dataclass, field, replace
 
@@ -41,7 +42,7 @@ Fresh keeps nothing."""
 OP_INTENT = {
     "add": "extend", "recolor": "tweak", "remove": "tweak", "count": "tweak", "dims": "tweak",
     "material": "modify", "ordering": "modify", "reverse": "modify", "outliers": "modify",
-    "relabel": "modify", "structure": "pivot",
+    "relabel": "modify", "swap": "modify", "structure": "pivot",
 }
 """The intent each operation implies; an edit's intent is the strongest of its operations."""
 
@@ -99,7 +100,7 @@ STRUCTURE_WORDS = {
     "pyramid": "pyramid", "grid": "grid", "square": "grid", "piles": "piles", "pile": "piles",
 }
 STRUCTURE_RE = r"\b(towers?|stacks?|lines?|rows?|circles?|rings?|pyramids?|grids?|squares?|piles?)\b"
-FRESH_RE = re.compile(r"\b(?:new task|another task|start over|start fresh|from scratch|unrelated|something (?:completely |totally )?(?:different|else)|forget (?:it|that|this|everything|about it))\b[:,.!]?")
+FRESH_RE = re.compile(r"(?i)\b(?:new task|another task|start over|start fresh|from scratch|unrelated|something (?:completely |totally )?(?:different|else)|forget (?:it|that|this|everything|about it))\b[:,.!]?")
 ANAPHORA_RE = re.compile(r"\b(?:it|them|they|its|their|those|these|instead|back|again|now|also|more|rather)\b"
                          r"|\b(?:add|append|change|replace|swap|substitute|remove|delete|flip|reverse|invert|keep|undo|revert|turn|paint|recolou?r)\b|\bmake (?:the|it|them)\b")
 """Words that make an edit a change to the current task rather than a whole new one."""
@@ -162,7 +163,7 @@ def find_reference(t: str) -> RefCue:
 def _selector(text: str) -> dict | None:
     """Which cubes a phrase names: a position, a colour, a label, or all of them."""
     text = text.strip()
-    if re.search(r"\b(?:all|every|everything|each)\b|\bthe (?:blocks|cubes)\b|^(?:them|the tower|the stack)\b", text):
+    if re.search(r"\b(?:all|every|everything|each)\b|^(?:the\s+)?(?:blocks|cubes|them|tower|stack|line|circle|grid|pyramid)\b", text):
         return {"all": True}
     m = re.search(r"\b(base|bottom|first|lowest|top|last|highest|upper|middle|center|centre|second|third)\b", text)
     if m:
@@ -216,7 +217,13 @@ def read_ops(t: str) -> list[Op]:
         where = add.group("where")
         at = "bottom" if re.search(r"bottom|base|under|beneath|below|start|beginning|left", where) else "top"
         ops.append(Op("add", {"items": items * (n if len(items) == 1 else 1) if items else [], "count": n if not items else None, "at": at}))
-    repl = re.search(r"\b(?:replace|substitute|swap)\s+(?:the\s+)?(?P<old>.+?)\s+(?:with|for|by)\s+(?:an?\s+|the\s+)?(?P<new>.+)", t) or \
+    swap = re.search(r"\bswap\s+(?:the\s+)?(?P<a>[a-z0-9' ]+?)\s+(?:block\s+|cube\s+)?and\s+(?:the\s+)?(?P<b>[a-z0-9' ]+?)(?:\s+(?:blocks?|cubes?))?(?:\s*$|[;,.])", t)
+    if swap and _selector(swap.group("a")) and _selector(swap.group("b")) and not reverse:
+        ops.append(Op("swap", {"a": _selector(swap.group("a")), "b": _selector(swap.group("b"))}))
+    instead = re.search(rf"\b(?:use\s+)?(?:an?\s+|the\s+)?(?P<new>{COLOR_RE})(?:\s+(?:block|cube)s?)?\s+(?:instead of|rather than|in place of)\s+(?:the\s+)?(?P<old>{COLOR_RE})\b", t)
+    if instead:
+        ops.append(Op("recolor", {"select": {"color": _canon_color(instead.group("old"))}, "to": {"color": _canon_color(instead.group("new"))}}))
+    repl = None if instead or swap else re.search(r"\b(?:replace|substitute|swap)\s+(?:the\s+)?(?P<old>.+?)\s+(?:with|for|by)\s+(?:an?\s+|the\s+)?(?P<new>.+)", t) or \
         re.search(r"\b(?:change|turn|make|paint|recolou?r|colou?r)\s+(?:the\s+)?(?P<old>.+?)\s+(?:to|into)\s+(?:an?\s+|be\s+)?(?P<new>.+)", t) or \
         re.search(rf"\b(?:make|paint)\s+(?:the\s+)?(?P<old>.+?)\s+(?P<new>(?:{COLOR_RE}))\b", t)
     if repl and not reverse:
@@ -235,23 +242,32 @@ def read_ops(t: str) -> list[Op]:
     count = re.search(r"\b(?:use|with|make it|make (?:the|it) (?:tower|line|circle|row)|have|to)\s+(?:only\s+)?(\d+)\s+(?:[a-z]+\s+)?(?:blocks?|cubes?)\b", t)
     if count and not any(o.op in ("add", "dims") for o in ops):
         ops.append(Op("count", {"count": int(count.group(1))}))
-    elif re.search(r"\b(?:taller|higher|longer|bigger)\b", t) and not ops:
+    elif re.search(r"\b(?:taller|higher|longer|bigger|larger)\b", t) and not any(o.op in ("add", "dims") for o in ops):
         ops.append(Op("count", {"delta": 1}))
-    elif re.search(r"\b(?:shorter|smaller|lower)\b", t) and not ops:
+    elif re.search(r"\b(?:shorter|smaller|lower)\b", t) and not any(o.op in ("remove", "dims") for o in ops):
         ops.append(Op("count", {"delta": -1}))
-    shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape)\b[^.;]*?\b(?:into|as|in|to)?\s*(?:an?\s+|the\s+)?"
+    shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+)"
                       r"(tower|stack|line|row|circle|ring|pyramid|grid|square)\b", t)
     if shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
         ops.append(Op("structure", {"to": STRUCTURE_WORDS[shape.group(1)]}))
     return ops
 
 
+TASK_NOUN_RE = re.compile(r"\b(?:towers?|stacks?|stacked|lines?|rows?|circles?|circular|rings?|pyramids?|grids?|squares?|"
+                          r"piles?|bunch(?:es)?|groups?|spell|word|equation|patch(?:es)?|order|on top of|onto|left|right|"
+                          r"behind|front|between|next to|beside|rotate|faces?)\b|\b\d+x\d+\b")
+"""A whole task names a structure, a goal or a relation; an edit may name none."""
+
+
 def looks_standalone(t: str) -> bool:
     """True when a normalised edit reads as a whole task rather than a change to one."""
-    return not ANAPHORA_RE.search(t)
+    return not ANAPHORA_RE.search(t) and bool(TASK_NOUN_RE.search(t))
 
 
-def intent_of_ops(ops: list[Op]) -> str:
+def intent_of_ops(ops: list[Op], spec: TaskSpec | None = None) -> str:
+    """The strongest intent of the operations (a structure op to the reference's own
+    structure changes nothing and does not count)."""
+    ops = [o for o in ops if not (spec is not None and o.op == "structure" and o.params["to"] == spec.structure)]
     return max((OP_INTENT[o.op] for o in ops), key=INTENTS.index, default="tweak")
 
 
@@ -278,14 +294,30 @@ def interpret(edit: str) -> EditPlan:
     fresh = FRESH_RE.search(t)
     if fresh:
         return EditPlan(edit, RefCue("none", phrase=fresh.group(0)), standalone=True, fresh=True)
-    ops = [] if looks_standalone(t) else read_ops(t)
-    return EditPlan(edit, cue, ops, standalone=not ops)
+    if looks_standalone(t):
+        from rpg.schema.builtin import ParseError, parse
+
+        try:
+            parse(strip_edit_words(edit))
+            return EditPlan(edit, cue, standalone=True)
+        except (ParseError, ValueError):
+            pass  # not a whole task after all: read it as a change
+    ops = read_ops(t)
+    if ops or cue.kind != "current":
+        return EditPlan(edit, cue, ops)  # no ops with a back-reference: return to that version
+    return EditPlan(edit, cue, standalone=True)
 
 
 def strip_edit_words(edit: str) -> str:
     """The task part of a whole-task edit ("Start over: stack ..." -> "stack ...")."""
-    t = FRESH_RE.sub(" ", edit, count=1) if FRESH_RE.search(edit.lower()) else edit
-    t = re.sub(r"^\s*(?:now|ok(?:ay)?|actually|instead|then|next|and)\b[,:]?\s*", "", t.strip(), flags=re.IGNORECASE)
+    marks = list(FRESH_RE.finditer(edit))
+    t = edit
+    if marks:
+        after = edit[marks[-1].end():].strip(" :,.;-")
+        t = after if len(after.split()) >= 2 else FRESH_RE.sub(" ", edit)
+    for _ in range(3):
+        t = re.sub(r"^\s*(?:now|ok(?:ay)?|actually|instead|then|next|and|with|so|please)\b[,:]?\s*", "", t.strip(),
+                   flags=re.IGNORECASE)
     return t.strip(" ,:;.") or edit
 
 
@@ -391,7 +423,8 @@ def _fit_structure(spec: TaskSpec, target: str) -> TaskSpec:
     raise SteerError(f"cannot turn a {spec.structure} into a {target}")
 
 
-APPLY_ORDER = ("structure", "material", "dims", "count", "remove", "recolor", "relabel", "add", "reverse", "ordering", "outliers")
+APPLY_ORDER = ("structure", "material", "dims", "count", "remove", "recolor", "relabel", "add", "swap", "reverse", "ordering",
+               "outliers")
 """Order in which an edit's operations are applied to the spec."""
 
 
@@ -490,6 +523,22 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
                     spec = _resize(replace(spec, structure=structure, dims=d), n)
                 else:
                     raise SteerError(f"dimensions {'x'.join(map(str, d))} do not fit a {spec.structure}")
+            if spec.layer_colors:
+                spec = _with_layer_colors(spec)
+        elif o.op == "swap":
+            ia, ib = _indices(spec, p["a"]), _indices(spec, p["b"])
+            if not ia or not ib:
+                raise SteerError(f"the task has no cube matching {p['a'] if not ia else p['b']}")
+            items = list(spec.items)
+            items[ia[0]], items[ib[0]] = items[ib[0]], items[ia[0]]
+            spec = spec.with_items(items)
+        elif o.op == "count" and "delta" in p and spec.structure in ("pyramid", "grid", "block"):
+            d = p["delta"]
+            dims = (spec.dims[0] + d, spec.dims[1]) if spec.structure == "pyramid" else tuple(x + d for x in spec.dims)
+            if min(dims) < 2:
+                raise SteerError(f"a {spec.structure} cannot be made smaller than {'x'.join(map(str, spec.dims))}")
+            n = _pyramid_count(*dims) if spec.structure == "pyramid" else math.prod(dims)
+            spec = _resize(replace(spec, dims=dims), n)
             if spec.layer_colors:
                 spec = _with_layer_colors(spec)
         elif o.op == "count":

@@ -192,6 +192,13 @@ def _direction_phrase(direction: str) -> str:
     return "from " + direction.replace("_", " ")
 
 
+def _color_list(spec: TaskSpec) -> str:
+    """``": red, red, blue"`` when coloured cubes are not all alike (the exact sequence)."""
+    if spec.material != "colors" or len(set(spec.colors())) <= 1:
+        return ""
+    return ": " + ", ".join(spec.colors())
+
+
 def render(spec: TaskSpec) -> str:
     """The canonical instruction of a spec: the builtin parser compiles it to the spec's task.
 
@@ -215,14 +222,16 @@ def render(spec: TaskSpec) -> str:
         return text + _ordering_phrase(spec)
     if s == "grid":
         r, c = spec.dims
-        return f"Make a {r}x{c} grid of {_material_phrase(spec)}" + _ordering_phrase(spec)
+        listed = _color_list(spec)
+        return f"Make a {r}x{c} grid of {'blocks' if listed else _material_phrase(spec)}" + _ordering_phrase(spec) + listed
     if s == "block":
         r, c, layers = spec.dims
         if spec.layer_colors:
             return f"Make a {r}x{c}x{layers} cube of blocks where each layer is a different color: {_join(list(dict.fromkeys(spec.colors())))}"
         return f"Make a {r}x{c}x{layers} cube of {_material_phrase(spec)}" + _ordering_phrase(spec)
     if s == "circle":
-        return f"Place {n} {_material_phrase(spec)} in a circle"
+        listed = _color_list(spec)
+        return f"Place {n} {'blocks' if listed else _material_phrase(spec)} in a circle" + listed
     if s == "piles":
         tail = f" so that each pile has {spec.outliers} outlier{'s' if spec.outliers > 1 else ''}" if spec.outliers else ""
         if spec.piles_by == "type" or spec.material == "mixed":
@@ -236,15 +245,15 @@ def render(spec: TaskSpec) -> str:
                 return f"Align {n} blocks in a single straight line{where}: {', '.join(spec.colors())}"
             return f"Align {n} {_material_phrase(spec)} in a single straight line{where}"
         d = _direction_phrase(spec.direction)
-        if spec.word:
-            return f"Spell the word '{spec.word}' using letter cubes arranged in a line {d}"
+        word = "".join(i.label or "" for i in spec.items)
+        if spec.word and word.isalpha() and len(word) == n:  # the word follows the cubes (reversed, relabelled...)
+            return f"Spell the word '{word}' using letter cubes arranged in a line {d}"
         if spec.ordering == "color":
             return f"Align the {_join(spec.colors())} blocks in a color gradient {d}"
         if spec.ordering:
             what = {"label": "letter cubes in alphabetical", "number": "digit cubes in increasing numerical"}[spec.ordering]
             return f"Arrange {n} {what} order {d}" + (" in reverse" if spec.descending else "")
-        if spec.material != "colors" and n >= 3:
+        if spec.material in ("letters", "digits") and n >= 3:
             return f"Arrange cubes so that their up-faces read {', '.join(i.label or '' for i in spec.items)} {d}"
-        if spec.material == "colors":
-            return f"Arrange the blocks in order {', '.join(spec.colors())} {d}"
+        return f"Arrange the blocks in order {', '.join(i.phrase() for i in spec.items)} {d}"
     raise ValueError(f"cannot state a {s} of {spec.material} as an instruction")

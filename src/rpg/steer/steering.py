@@ -150,6 +150,11 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         ref_spec = _spec_of(fam, reference)[1]
         return schema, text, intent_of_standalone(extract(schema), ref_spec)
     ref_schema, ref_spec = _spec_of(fam, reference)
+    if ref_spec is None and plan.ops and all(o.op == "recolor" and "color" in o.params["select"] for o in plan.ops):
+        schema = ref_schema
+        for o in plan.ops:
+            schema = recolor_schema(schema, o.params["select"]["color"], o.params["to"]["color"])
+        return schema, schema.instruction, "tweak"
     if ref_spec is None:
         raise SteerError(f"v{reference} ({ref_schema.goal_summary}) is not a structure the builtin steering edits in place; "
                          "state the whole new task in the edit, or use --model")
@@ -158,7 +163,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         instruction = render(spec)
     except ValueError as exc:
         raise SteerError(str(exc)) from None
-    return parse(instruction), instruction, intent_of_ops(plan.ops)
+    return parse(instruction), instruction, intent_of_ops(plan.ops, ref_spec)
 
 
 class RouteAnswer(BaseModel):
@@ -217,6 +222,44 @@ def llm_edit_schema(edit: str, intent: str, reference: TaskSchema, client) -> Ta
                                             f"Edit ({intent}; preserve {flags}): {edit}\n"
                                             "Answer with the complete TaskSchema of the edited task."}]
     return ask_validated(client, messages, "schema", TaskSchema.model_validate)
+
+
+def recolor_schema(schema: TaskSchema, old: str, new: str) -> TaskSchema:
+    """A colour tweak applied to any task (relations, patches, temporal order): every asset
+    of colour ``old`` becomes ``new``, renamed consistently in the goal, layout and rho_0.
+
+    Raises:
+        SteerError: the task has nothing of colour ``old``, or already uses ``new``.
+    """
+    import re
+
+    names = {a.name for a in schema.assets}
+    hits = [a for a in schema.assets if a.color == old]
+    if not hits:
+        raise SteerError(f"the task has no {old} object; its colours are "
+                         f"{', '.join(sorted({a.color for a in schema.assets if a.color}))}")
+    if any(a.color == new for a in schema.assets):
+        raise SteerError(f"the task already has a {new} object; name the object to change more precisely")
+    mapping = {}
+    for a in hits:
+        renamed = re.sub(rf"^{re.escape(old)}(?=_|$)", new, a.name)
+        mapping[a.name] = renamed if renamed not in names else f"{new}_{a.name}"
+    doc = schema.model_dump()
+    for a in doc["assets"]:
+        if a["color"] == old:
+            a["color"], a["name"] = new, mapping[a["name"]]
+    doc["goal"] = schema.goal_predicate().rename(mapping).to_dict()
+    doc["goal_layout"] = {mapping.get(k, k): v for k, v in doc["goal_layout"].items()}
+    init = doc["initial_state"]
+    init["structures"] = [[mapping.get(n, n) for n in st] for st in init["structures"]]
+    init["fixed"] = {mapping.get(k, k): v for k, v in init["fixed"].items()}
+    init["orientations"] = {mapping.get(k, k): v for k, v in init["orientations"].items()}
+    word = re.compile(rf"\b{re.escape(old)}\b")
+    for key in ("instruction", "goal_summary"):
+        doc[key] = word.sub(new, doc[key])
+    doc["paraphrases"] = [word.sub(new, x) for x in doc["paraphrases"]]
+    doc["name"] = word.sub(new, doc["name"])
+    return TaskSchema.model_validate(doc)
 
 
 def steer(family: str | Path, edit: str | None, seed: int | None = None, disabled: frozenset[str] = frozenset(),
