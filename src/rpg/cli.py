@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import os
 import sys
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Annotated
 
@@ -64,6 +65,22 @@ def _bad_input_errors():
             SteerError, FamilyError, ValueError)
 
 
+@contextmanager
+def _reported_errors():
+    """Map the API's errors to one line and an exit code: provider 3, a model that gave no
+    valid answer 1, bad input (and bad replay records) 2."""
+    from rpg.schema.llm import ModelOutputError, ProviderError, ReplayError
+
+    try:
+        yield
+    except ProviderError as exc:
+        _fail(str(exc), EXIT_PROVIDER)
+    except ModelOutputError as exc:
+        _fail(str(exc), EXIT_INVALID)
+    except (ReplayError, *_bad_input_errors()) as exc:
+        _fail(str(exc))
+
+
 def make_llm_client(model: str | None):
     """The model client for ``--model`` (None for the builtin front end); tests replace it
     with a client that holds litellm mock responses."""
@@ -89,10 +106,9 @@ def compile_cmd(
     """Compile INSTRUCTION into a validated task artifact OUTPUT/<slug>/."""
     _prestart_worker()
     from rpg.compiler import compile_instruction
-    from rpg.schema.llm import ModelOutputError, ProviderError, ReplayError
 
     model = model or os.environ.get("RPG_MODEL") or None
-    try:
+    with _reported_errors():
         result = compile_instruction(instruction, output, seed, frozenset(disable), model, replay=replay,
                                      builtin_first=builtin_first, llm=make_llm_client(model))
         if family and result.valid:
@@ -100,14 +116,6 @@ def compile_cmd(
 
             create_family(result.path)
             result.path = result.path / "v0"
-    except ProviderError as exc:
-        _fail(str(exc), EXIT_PROVIDER)
-    except ModelOutputError as exc:
-        _fail(str(exc), EXIT_INVALID)
-    except ReplayError as exc:
-        _fail(str(exc))
-    except _bad_input_errors() as exc:
-        _fail(str(exc))
     if as_json:
         print(json.dumps(result.to_json(), indent=2))
     else:
@@ -143,21 +151,12 @@ def steer_cmd(
 ) -> None:
     """Classify EDIT, pick the version it builds on, recompile and record a new version."""
     _prestart_worker()
-    from rpg.schema.llm import ModelOutputError, ProviderError, ReplayError
     from rpg.steer import steer
 
     model = model or os.environ.get("RPG_MODEL") or None
-    try:
+    with _reported_errors():
         r = steer(family, edit, seed, frozenset(disable), llm=make_llm_client(model) if replay is None else None,
                   replay=replay)
-    except ProviderError as exc:
-        _fail(str(exc), EXIT_PROVIDER)
-    except ModelOutputError as exc:
-        _fail(str(exc), EXIT_INVALID)
-    except ReplayError as exc:
-        _fail(str(exc))
-    except _bad_input_errors() as exc:
-        _fail(str(exc))
     if as_json:
         print(json.dumps(r.to_json(), indent=2))
     else:
