@@ -327,18 +327,16 @@ def strip_edit_words(edit: str) -> str:
 
 
 def _material_items(material: str, n: int, colors: list[str]) -> list[Item]:
+    """``n`` cubes of a material: letters A.., digits 1..9,0, colours (``colors`` cycled, else
+    the default palette), or ``mixed`` (letter, digit, colour in turn)."""
     if material == "letters":
         return [Item(label=LETTERS[i % 26]) for i in range(n)]
     if material == "digits":
         return [Item(label=DIGITS[i % 10]) for i in range(n)]
     if material == "mixed":
-        cycle = [Item(label="A"), Item(label="1"), Item(color="red")]
-        out = []
-        for i in range(n):
-            k = i % 3
-            out.append(Item(label=LETTERS[i // 3]) if k == 0 else Item(label=DIGITS[i // 3]) if k == 1 else
-                       Item(color=DEFAULT_COLORS[i // 3 % len(DEFAULT_COLORS)]))
-        return out or cycle[:n]
+        kinds = (lambda k: Item(label=LETTERS[k % 26]), lambda k: Item(label=DIGITS[k % 10]),
+                 lambda k: Item(color=DEFAULT_COLORS[k % len(DEFAULT_COLORS)]))
+        return [kinds[i % 3](i // 3) for i in range(n)]
     palette = colors or list(DEFAULT_COLORS)
     return [Item(color=palette[i % len(palette)]) for i in range(n)]
 
