@@ -213,6 +213,11 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     ("Arrange the digits 1 to 5 in ascending order", "up faces read 1, 2, 3, 4, 5 left to right"),
     ("Make a 3 by 3 grid of blocks", "a 3x3 grid of 9 touching cubes"),
     ("Place the red block behind the blue patch", "red behind blue_patch"),
+    ("Arrange the numbers 3, 1, 2 in increasing order", "up faces read 1, 2, 3 left to right"),
+    ("Sort the letters A, B and C alphabetically from left to right", "up faces read A, B, C left to right"),
+    ("Place each block on the patch of the same color", "each cube on the patch of its colour: red, blue"),
+    ("Build a tower three blocks high with a yellow block on top", "tower bottom to top: red, blue, yellow"),
+    ("Spell ROBOT vertically in a tower", "a tower whose front faces read 'ROBOT' from top to bottom"),
 ])
 def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     assert parse(text).goal_summary == summary

@@ -274,6 +274,27 @@ def recognize_temporal(f: Features, b: Builder) -> bool:
     return True
 
 
+def recognize_matching_patches(f: Features, b: Builder) -> bool:
+    """Each cube on the goal patch of its own colour ("place each block on the patch of the
+    same color", "put the red and blue blocks on their matching patches")."""
+    if not f.has("patch", "patches", "target", "targets") or f.has("stack", "stacks", "tower", "towers", "first"):
+        return False
+    if not re.search(r"\b(?:same colou?r|matching|its colou?r|their colou?r|respective|own colou?r|corresponding)\b", f.text):
+        return False
+    colors = list(dict.fromkeys(f.color_list()))
+    n = max(_count(f, default=None) or 0, len(colors), 2)
+    colors = _colors_for(n, f, prefer=colors)
+    centers = b.unit_centers(len(colors), 0.14)
+    for color, (x, y) in zip(colors, centers, strict=True):
+        cube, patch = b.cube(color), b.patch(color)
+        b.place({patch: Pose((x, y, C.TABLE_TOP_Z + C.PATCH_THICKNESS / 2)), cube: stack_layout([cube], (x, y))[cube]})
+        b.preds.append(OnPatch(cube, patch))
+    b.primitives += ["place"]
+    b.summary.append("each cube on the patch of its colour: " + ", ".join(colors))
+    b.min_separation = 0.10
+    return True
+
+
 def features_colors(text: str) -> list[tuple[int, str]]:
     return [(m.start(), _canon_color(m.group(0))) for m in re.finditer(rf"\b({COLOR_RE})\b", text)]
 
@@ -356,7 +377,7 @@ def _word(f: Features) -> str | None:
         if re.fullmatch(r"[A-Za-z]{2,}", q.strip()):
             return q.strip().upper()
     m = re.search(r"\b(?:spell|spells|spelling|spelled|spelt)\s+(?:out\s+)?(?:the\s+)?(?:word\s+)?'?([A-Za-z]{2,})'?", f.original, re.IGNORECASE)
-    if m and m.group(1).lower() not in VOCAB:
+    if m and (m.group(1).lower() not in VOCAB or m.group(1).isupper()):
         return m.group(1).upper()
     m = re.search(r"\bword\s+'?([A-Za-z]{2,})'?", f.original, re.IGNORECASE)
     if m:
@@ -387,6 +408,8 @@ def recognize_spell(f: Features, b: Builder) -> bool:
 def _explicit_labels(f: Features) -> list[str]:
     """Labels listed ("A, B, C, D") or given as a range ("A to E", "digits 1 to 5")."""
     m = re.search(r"\b([A-Z0-9])((?:\s*,\s*(?:and\s+)?[A-Z0-9]){2,})\b", f.original)
+    if not m and f.has("letter", "letters", "number", "numbers", "digit", "digits", "label", "labels", "faces"):
+        m = re.search(r"\b([A-Z0-9])((?:(?:\s*,\s*|\s+and\s+|\s*,\s*and\s+)[A-Z0-9]){1,})\b", f.original)
     if m:
         return [m.group(1)] + re.findall(r"[A-Z0-9]", m.group(2))
     r = re.search(r"\b([A-Z]|\d)\s+(?:to|through|thru)\s+([A-Z]|\d)\b", f.original)
@@ -600,6 +623,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         b.preds.append(InLine(tuple(names), order=direction))
         b.summary.append(f"cubes in a line {direction.replace('_', ' ')}: {', '.join(colors)}")
     elif labels:
+        if order:  # the listed labels are the set; the ordering arranges them
+            labels = sorted(labels, key=lambda lab: (not lab.isdigit(), lab), reverse=order[1])
         names = [b.semantic(lab) for lab in labels]
         b.place(line_layout(names if direction == "left_to_right" else list(reversed(names))))
         b.preds += [InLine(tuple(names), order=direction), Reads(tuple(names), "".join(labels), direction)]
@@ -1000,10 +1025,12 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         for lab, where in re.findall(r"\b([A-Z0-9])\s+(?:on|at|as)\s+(?:the\s+)?(bottom|base|top)\b", f.original):
             if (None, lab) in items:
                 hints[items.index((None, lab))] = where
-    if len(items) < 2 and f.has("rainbow", "gradient"):
-        n = _count(f, default=None)
-        if n:
-            items = [(c, None) for c in sorted(GRADIENT_ORDER[:n], key=GRADIENT_ORDER.index, reverse=f.has("reverse"))]
+    n = _count(f, default=None)
+    if len(items) < 2 and f.has("rainbow", "gradient") and n:
+        items = [(c, None) for c in sorted(GRADIENT_ORDER[:n], key=GRADIENT_ORDER.index, reverse=f.has("reverse"))]
+    elif 1 <= len(items) < (n or 0) and hints:  # "three blocks high with a yellow block on top"
+        used = {c for c, _ in items}
+        items += [(c, None) for c in DEFAULT_COLORS if c not in used][: n - len(items)]
     if len(items) < 2:
         return False
     if re.search(r"\btop to bottom\b", f.text):
@@ -1021,7 +1048,7 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
 
 
 RECOGNIZERS = (
-    recognize_temporal, recognize_rotate, recognize_equation, recognize_spell, recognize_pyramid,
+    recognize_temporal, recognize_matching_patches, recognize_rotate, recognize_equation, recognize_spell, recognize_pyramid,
     recognize_cube_block, recognize_grid, recognize_circle, recognize_piles, recognize_ordered_line,
     recognize_tower_sequence, recognize_relational,
 )
