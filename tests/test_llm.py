@@ -14,6 +14,7 @@ from rpg.schema.builtin import parse
 from rpg.schema.llm import LLMClient, ModelOutputError, ProviderError, ReplayError, llm_parse, load_record
 
 MODEL = "openai/gpt-4o-mini"
+ROOT_LIBRARY = __import__("pathlib").Path(__file__).resolve().parents[1] / "library"
 
 
 def schema_json(instruction: str) -> str:
@@ -142,3 +143,31 @@ def test_cli_steer_with_a_model(tmp_path, monkeypatch):
     assert res.exit_code == 0, res.output
     doc = json.loads(res.stdout)
     assert doc["intent"] == "fresh" and doc["reference"] is None and doc["version"] == "v1"
+
+
+def test_llm_codegen_is_grounded_and_its_failures_go_to_fix_agents(tmp_path):
+    from rpg.codegen import generate
+
+    text = "Stack the green block on top of the blue block"
+    good = generate(parse(text))
+    bad_goal = good.goal_state_code.replace("(0.55, 0.0, 0.97", "(0.55, 0.2, 0.97", 1)  # green no longer on blue
+    assert bad_goal != good.goal_state_code
+    answers = [schema_json(text),
+               json.dumps({"code": "import os\n", "goal_state_code": good.goal_state_code}),  # refused before running
+               json.dumps({"code": good.code, "goal_state_code": bad_goal}),
+               json.dumps({"code": good.code, "goal_state_code": good.goal_state_code})]
+    client = LLMClient(MODEL, mock_responses=answers)
+    r = compile_instruction(text, tmp_path, llm=client, codegen="llm", library=ROOT_LIBRARY)
+    assert r.valid, r.log
+    purposes = [x["purpose"] for x in client.records]
+    assert purposes[0] == "schema" and purposes[1:3] == ["codegen", "codegen"] and purposes[3].startswith("repair:")
+    first = client.records[1]["request"]["messages"][0]["content"]
+    assert "BlockTask.goal" in first and "Common errors" in first and first.count("### Reference task") == 3
+    assert "stack" in first.split("### Reference task")[1].split("\n")[0]  # retrieved by tags: a stacking task first
+    assert "import of 'os' is not allowed" in client.records[2]["request"]["messages"][-1]["content"]
+    fix = client.records[3]["request"]["messages"][-1]["content"]
+    assert "SuccessCheckFixAgent" in fix and "attempt 1 failed gate goal_state" in fix
+    assert any("repair attempt 1: SuccessCheckFixAgent" in line for line in r.log)
+    assert len(load_record(r.path)[1]) == 4
+    with pytest.raises(ValueError, match="needs a model"):
+        compile_instruction(text, tmp_path / "x", codegen="llm")

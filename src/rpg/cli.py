@@ -101,6 +101,8 @@ def compile_cmd(
     family: Annotated[bool, typer.Option("--family", help="Start a task family: the task becomes its v0.")] = False,
     replay: Annotated[Path | None, typer.Option("--replay", help="Recompile offline from an artifact's llm_log.jsonl.")] = None,
     builtin_first: Annotated[bool, typer.Option("--builtin-first", help="With --model: ask the model only for what the builtin parser cannot read.")] = False,
+    codegen: Annotated[str, typer.Option("--codegen", help="builtin (the emitter) or llm (the model writes the code; needs --model).")] = "builtin",
+    library: Annotated[Path, typer.Option("--library", help="Task library that --codegen llm retrieves reference tasks from.")] = Path("library"),
     as_json: Annotated[bool, typer.Option("--json", help="Print one JSON document.")] = False,
 ) -> None:
     """Compile INSTRUCTION into a validated task artifact OUTPUT/<slug>/."""
@@ -110,7 +112,8 @@ def compile_cmd(
     model = model or os.environ.get("RPG_MODEL") or None
     with _reported_errors():
         result = compile_instruction(instruction, output, seed, frozenset(disable), model, replay=replay,
-                                     builtin_first=builtin_first, llm=make_llm_client(model))
+                                     builtin_first=builtin_first, llm=make_llm_client(model), codegen=codegen,
+                                     library=library)
         if family and result.valid:
             from rpg.steer.family import create_family
 

@@ -202,11 +202,13 @@ def _atomic_replace(tmp: Path, target: Path) -> None:
 
 def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[str] = frozenset(),
           backend: str = "builtin", model: str | None = None, name: str | None = None,
-          extra_files: dict[str, str] | None = None) -> CompileResult:
+          extra_files=None, coder=None) -> CompileResult:
     """Passes 2-4 on a schema: generate, validate, repair; write the artifact atomically.
 
-    ``extra_files`` (name -> text, e.g. the model record ``llm_log.jsonl``) are written into
-    the artifact too; they are not part of its content hash.
+    ``extra_files`` (name -> text, or a callable returning that once the code exists, e.g.
+    the model record ``llm_log.jsonl``) are written into the artifact too; they are not part
+    of its content hash.  ``coder`` (an :class:`rpg.codegen.llm.LLMCoder`) writes the code
+    instead of the builtin emitter, and its fix agents repair it.
     """
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
@@ -217,8 +219,9 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
     os.chmod(tmp, 0o777 & ~_umask())
     gates: list[dict] = []
     try:
+        failure = None
         for cycle in range(1, MAX_CYCLES + 1):
-            code = generate(schema)
+            code = generate(schema) if coder is None else coder(schema, failure)
             (tmp / "code.py").write_text(code.code)
             (tmp / "goal_state_code.py").write_text(code.goal_state_code)
             gates = validate_files(tmp, seed, disabled, snapshots=True, tolerances=schema.tolerances.model_dump())
@@ -227,6 +230,19 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
             failure = first_failure(gates)
             if failure is None and gates_passed(gates):
                 break
+            if coder is not None:
+                from rpg.codegen.llm import FIX_AGENTS
+
+                if failure is None:
+                    break
+                agent = FIX_AGENTS.get(failure.get("kind", "runtime"), "RuntimeFixAgent")
+                attempts[agent] = attempts.get(agent, 0) + 1
+                if attempts[agent] > MAX_ATTEMPTS_PER_OPERATOR:
+                    log.append(f"  repair {agent}: attempt budget exhausted")
+                    break
+                log.append(f"  repair attempt {attempts[agent]}: {agent} ({failure.get('kind')}) -> model rewrite, "
+                           f"shown the failure and {len(coder.attempts)} earlier failed attempt(s)")
+                continue
             routed = route(failure or {})
             if routed is None:
                 break
@@ -249,7 +265,8 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
         valid = gates_passed(gates)
         log.append("result: VALID" if valid else "result: REJECTED")
         digest = write_artifact_files(tmp, schema, seed, backend, model, gates, log)
-        for fname, text in sorted((extra_files or {}).items()):
+        extras = extra_files() if callable(extra_files) else extra_files
+        for fname, text in sorted((extras or {}).items()):
             (tmp / fname).write_text(text)
         slug = name or schema.name
         target = out_dir / slug if valid else out_dir / ".rejected" / slug
@@ -263,7 +280,8 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
 def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int = 0,
                         disabled: frozenset[str] = frozenset(), model: str | None = None,
                         name: str | None = None, llm=None, replay: str | Path | None = None,
-                        builtin_first: bool = False) -> CompileResult:
+                        builtin_first: bool = False, codegen: str = "builtin",
+                        library: str | Path | None = "library") -> CompileResult:
     """Compile an instruction into a task artifact under ``out_dir/<slug>/`` (or ``out_dir/<name>/``).
 
     Args:
@@ -273,6 +291,8 @@ def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int
         replay: an artifact directory or ``llm_log.jsonl`` to recompile from, offline.
         builtin_first: with a model, read with the builtin parser first and ask the model
             only for what the builtin parser cannot read.
+        codegen: ``builtin`` (the emitter) or ``llm`` (the model writes the code, grounded
+            in the API docs, common errors and reference tasks from ``library``).
 
     Raises:
         ParseError: the builtin front end cannot read the instruction.
@@ -287,6 +307,8 @@ def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int
     unknown = set(disabled) - set(GATES)
     if unknown:
         raise ValueError(f"unknown gate(s) {sorted(unknown)}; gates are {', '.join(GATES)}")
+    if codegen not in ("builtin", "llm"):
+        raise ValueError(f"codegen must be 'builtin' or 'llm', not {codegen!r}")
     if replay is not None:
         from rpg.schema.llm import LLMClient, load_record
 
@@ -313,9 +335,19 @@ def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int
             schema = llm_parse(instruction, llm)
             backend = "litellm"
     schema = check_feasibility(schema)
-    extra = {"llm_log.jsonl": llm.log_text(instruction)} if llm is not None and llm.records else None
+    coder = None
+    if codegen == "llm":
+        if llm is None:
+            raise ValueError("--codegen llm needs a model: add --model MODEL (any litellm model name)")
+        from rpg.codegen.llm import LLMCoder
+
+        coder = LLMCoder(llm, library)
+
+    def extra() -> dict | None:
+        return {"llm_log.jsonl": llm.log_text(instruction)} if llm is not None and llm.records else None
+
     return build(schema, Path(out_dir), seed, frozenset(disabled), backend=backend,
-                 model=llm.model if llm is not None else None, name=name, extra_files=extra)
+                 model=llm.model if llm is not None else None, name=name, extra_files=extra, coder=coder)
 
 
 def load_artifact(directory: str | Path) -> tuple[TaskSchema, dict]:
