@@ -228,3 +228,19 @@ def test_parser_refuses_rather_than_drop_a_named_cube():
         parse("Put the purple cube behind the tower of red and blue")
     schema = parse("Form a straight line of four blue blocks")
     assert [a.color for a in schema.assets] == ["blue"] * 4
+
+
+def test_feasibility_switches_face_or_to_spatial_only_when_labels_are_covered():
+    from rpg.domain.predicates import Grid
+
+    cube = parse("Make a 2x2x2 cube of letter blocks")
+    names = tuple(a.name for a in cube.assets)
+    hidden = cube.model_copy(update={"goal": And([Grid(names, 2, 2, 2), Reads(names, "ABCDEFGH")]).to_dict()})
+    s = check_feasibility(hidden)
+    assert [r.operator for r in s.repairs] == ["SWITCH_TO_SPATIAL_ONLY"]
+    assert s.goal_predicate().describe() == "2x2x2 grid of 8 cubes" and s.reasoning == "spatial"
+    tower = parse("Spell the word 'CAT' with cubes stacked in a tower")
+    up = And([c if not isinstance(c, Reads) else Reads(c.objects, c.text, c.direction, "up") for c in tower.goal_predicate().children()])
+    s = check_feasibility(tower.model_copy(update={"goal": up.to_dict()}))
+    assert [r.operator for r in s.repairs] == ["SWITCH_READABLE_FACE"]
+    assert next(c for c in s.goal_predicate().children() if isinstance(c, Reads)).face == "front"

@@ -14,7 +14,7 @@ from rpg.domain import constants as C
 from rpg.domain.sampling import InfeasibleLayout, sample_scattered
 from rpg.domain.state import Pose
 from rpg.repair.operators import layout_extent, move_into_workspace
-from rpg.schema.model import TaskSchema
+from rpg.schema.model import RepairRecord, TaskSchema
 
 
 class InfeasibleTask(ValueError):
@@ -45,6 +45,7 @@ def check_feasibility(schema: TaskSchema) -> TaskSchema:
     moved = move_into_workspace(schema, stage="feasibility")
     if moved is not None:
         schema = moved
+    schema = _readable_labels(schema)
     assets = schema.built_assets()
     fixed = {n: Pose(tuple(p.position), tuple(p.quaternion)) for n, p in schema.initial_state.fixed.items()}
     for sep in (schema.initial_state.min_separation, 0.055, C.CUBE_EDGE * 1.2):
@@ -63,3 +64,68 @@ def check_feasibility(schema: TaskSchema) -> TaskSchema:
                                            f"{len(assets)} objects need a separation of {sep:.3f} m to fit", "feasibility"))
         return schema
     raise InfeasibleTask(f"{len(cubes)} cubes cannot be scattered in the workspace at reset; use fewer cubes")
+
+
+def uncovered_faces(schema: TaskSchema) -> dict[str, set[str]]:
+    """Per cube, the faces (``up``, ``front``) no other cube covers in the goal layout.
+
+    A cube covers the up face of one whose centre is one level below it and within half
+    an edge in the plane; it covers the front face of one one edge nearer the robot (smaller
+    x) at the same height.  An analytic estimate before any physics (paper, "Geometric
+    Visibility": occluded faces carry no semantic requirement); the visibility gate then
+    checks the settled goal state with rays.
+    """
+    cubes = {a.name: (np.asarray(schema.goal_layout[a.name].position), a.size) for a in schema.assets
+             if a.kind != "goal_patch"}
+    out = {}
+    for n, (p, e) in cubes.items():
+        faces = {"up", "front"}
+        for m, (q, _) in cubes.items():
+            if m == n:
+                continue
+            d = q - p
+            if abs(d[0]) < e / 2 and abs(d[1]) < e / 2 and 0.5 * e < d[2] < 1.5 * e:
+                faces.discard("up")
+            if -1.5 * e < d[0] < -0.5 * e and abs(d[1]) < e / 2 and abs(d[2]) < e / 2:
+                faces.discard("front")
+        out[n] = faces
+    return out
+
+
+def _readable_labels(schema: TaskSchema) -> TaskSchema:
+    """Label requirements on covered faces: read the other face, or, when neither face can be
+    read, drop the semantic requirement and keep the structure (SWITCH_TO_SPATIAL_ONLY)."""
+    from rpg.domain.predicates import And, from_dict
+    from rpg.repair.operators import _with
+
+    goal = schema.goal_predicate()
+    parts = list(goal.children()) if isinstance(goal, And) else [goal]
+    faces = uncovered_faces(schema)
+
+    def readable(p, face: str) -> bool:
+        seen = [n for n in p.objects if face in faces.get(n, set())]
+        return len(seen) >= 2 if p.name == "sorted_by" else len(seen) == len(p.objects)
+
+    kept, repairs = [], []
+    for p in parts:
+        face = getattr(p, "face", None)
+        if not p.semantic or face not in ("up", "front") or readable(p, face):
+            kept.append(p)
+            continue
+        other = "front" if face == "up" else "up"
+        if readable(p, other):
+            kept.append(from_dict({**p.to_dict(), "face": other}))
+            repairs.append(("SWITCH_READABLE_FACE", f"{p.describe()}: the {face} faces are covered in the goal layout; "
+                                                    f"the {other} faces are read instead"))
+        else:
+            repairs.append(("SWITCH_TO_SPATIAL_ONLY", f"{p.describe()}: too few labels can be seen in the goal layout "
+                                                      "(up or front); the structure is kept without the label requirement"))
+    if not repairs:
+        return schema
+    if not kept:
+        raise InfeasibleTask("no requirement of the task can be checked on visible faces; use fewer or flatter cubes")
+    new_goal = kept[0] if len(kept) == 1 else And(kept)
+    records = [r.model_dump() for r in schema.repairs]
+    records += [RepairRecord(operator=op, stage="feasibility", reason=reason).model_dump() for op, reason in repairs]
+    reasoning = "semantic" if any(p.semantic for p in kept) else "spatial"
+    return _with(schema, goal=new_goal.to_dict(), reasoning=reasoning, repairs=records)
