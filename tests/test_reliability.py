@@ -168,3 +168,23 @@ def test_concurrent_compiles_into_one_library(tmp_path):
     assert len(tasks) == 2
     for d in tasks:
         assert rpg("validate", str(lib / d)).returncode == 0
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("delay", [1.0, 2.5])
+def test_kill_9_during_a_batch_build_leaves_entries_whole(tmp_path, delay):
+    manifest = tmp_path / "manifest.yaml"
+    manifest.write_text("entries:\n"
+                        "- {name: a, instruction: Stack two blocks on top of each other.}\n"
+                        "- {name: b, instruction: Place the red block behind the yellow block}\n"
+                        "- {name: c, instruction: Make a 3x3 square of red blocks}\n")
+    before = manifest.read_text()
+    proc = subprocess.Popen([*RPG, "build", str(manifest), "--jobs", "2"], stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL, start_new_session=True)
+    time.sleep(delay)
+    os.killpg(proc.pid, signal.SIGKILL)
+    proc.wait()
+    assert manifest.read_text() == before  # the manifest is rewritten only when the batch is done
+    for d in tmp_path.iterdir():
+        if d.is_dir() and not d.name.startswith("."):
+            assert rpg("validate", str(d)).returncode == 0

@@ -255,3 +255,15 @@ def test_colour_tweak_on_a_relational_task_and_growing_a_pyramid(tmp_path):
     pyr = create_family(p.path)
     g = steer(pyr.path, "Make it bigger")
     assert g.intent == "tweak" and extract(pyr.schema(g.version)).dims == (4, 2)
+
+
+def test_steering_a_plain_artifact_makes_it_v0_of_a_family(tmp_path):
+    r = compile_instruction("Place a blue cube on top of a red cube on the table", tmp_path)
+    proc = rpg("steer", str(r.path), "Add a green cube on top", "--json")
+    assert proc.returncode == 0, proc.stderr
+    doc = json.loads(proc.stdout)
+    assert (doc["intent"], doc["reference"], doc["version"]) == ("extend", "v0", "v1")
+    hist = Family(r.path).load()
+    assert [v.intent for v in hist.versions] == ["base", "extend"]
+    assert (r.path / "v0" / "task.yaml").is_file() and not (r.path / "task.yaml").exists()
+    assert all(x["ok"] for x in Family(r.path).verify())
