@@ -267,3 +267,20 @@ def test_steering_a_plain_artifact_makes_it_v0_of_a_family(tmp_path):
     assert [v.intent for v in hist.versions] == ["base", "extend"]
     assert (r.path / "v0" / "task.yaml").is_file() and not (r.path / "task.yaml").exists()
     assert all(x["ok"] for x in Family(r.path).verify())
+
+
+@pytest.mark.parametrize("edit,op", [
+    ("Reverse the gradient", "reverse"), ("Change the word to DOG", "word"), ("Use four colors", "colors"),
+    ("Stack them into a tower instead", "structure"),
+])
+def test_more_edit_operations(edit, op):
+    assert [o.op for o in interpret(edit).ops] == [op]
+
+
+def test_word_and_gradient_edits_apply_to_lines():
+    word = extract(parse("Spell CAT with letter cubes in a line"))
+    dog = apply_ops(word, interpret("Change the word to DOG").ops)
+    assert render(dog) == "Spell the word 'DOG' using letter cubes arranged in a line from left to right"
+    grad = extract(parse("Arrange five blocks in a line from left to right in a color gradient"))
+    more = apply_ops(grad, interpret("Add two more blocks").ops)
+    assert len(extract(parse(render(more))).items) == 7

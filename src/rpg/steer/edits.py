@@ -20,6 +20,7 @@ import math
 import re
 from dataclasses import asdict, dataclass, field, replace
 
+from rpg.domain.palette import GRADIENT_ORDER
 from rpg.schema.builder import DEFAULT_COLORS
 from rpg.schema.builtin import COLOR_RE, NUMBER_WORDS, _canon_color, item_sequence
 from rpg.steer.spec import Item, TaskSpec
@@ -42,7 +43,7 @@ Fresh keeps nothing."""
 OP_INTENT = {
     "add": "extend", "recolor": "tweak", "remove": "tweak", "count": "tweak", "dims": "tweak",
     "material": "modify", "ordering": "modify", "reverse": "modify", "outliers": "modify",
-    "relabel": "modify", "swap": "modify", "structure": "pivot",
+    "relabel": "modify", "swap": "modify", "word": "modify", "colors": "tweak", "structure": "pivot",
 }
 """The intent each operation implies; an edit's intent is the strongest of its operations."""
 
@@ -190,10 +191,17 @@ def read_ops(t: str) -> list[Op]:
     substitution = re.search(r"\b(?:instead of|rather than|in place of)\b(.*)", t)
     source = _materials(substitution.group(1)) if substitution else []
     mats = [m for m in _materials(t[: substitution.start()] if substitution else t) if m not in source]
+    word = re.search(r"\b(?:change|make|turn|set)\s+(?:the\s+)?word\s+(?:to|into)\s+'?([a-z]{2,})'?|\bspell\s+'?([a-z]{2,})'?\s+instead\b", t)
+    if word:
+        ops.append(Op("word", {"word": (word.group(1) or word.group(2)).upper()}))
+    ncolors = re.search(r"\b(?:use|with|have|make it|in)\s+(\d+)\s+(?:different\s+)?colou?rs\b", t)
+    if ncolors:
+        ops.append(Op("colors", {"count": int(ncolors.group(1))}))
     if re.search(r"\boutliers?\b", t):
         m = re.search(r"\b(\d+)\s+outliers?\b", t)
         ops.append(Op("outliers", {"per_pile": int(m.group(1)) if m else 1}))
-    reverse = re.search(r"\b(?:flip|reverse|invert|mirror|swap)\b[^.;]*\border\b|\bupside down\b|\breverse(?:d)? order\b|\b(?:flip|reverse|invert)\s+(?:it|them|the (?:tower|stack|line|row))\b", t)
+    reverse = re.search(r"\b(?:flip|reverse|invert|mirror|swap)\b[^.;]*\border\b|\bupside down\b|\breverse(?:d)? order\b|"
+                        r"\b(?:flip|reverse|invert)\s+(?:it|them|the\s+(?:tower|stack|line|row|gradient|sequence|colou?rs|word))\b", t)
     if reverse:
         keep = re.search(r"\bkeep(?:ing)?\s+(?:the\s+)?(.+?)\s+(?:on top|at the top|in place|where it is|at the bottom|fixed)\b", t)
         ops.append(Op("reverse", {"colors_only": bool(re.search(r"\bcolou?r order\b", t)),
@@ -204,7 +212,7 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("ordering", {"key": "number", "descending": bool(re.search(r"\b(?:decreasing|descending|reverse)\b", t))}))
     elif re.search(r"\b(?:sort|order|arrange|group)\w*\s+(?:them\s+|it\s+)?by\s+(?:different\s+|their\s+)?colou?rs?\b|\bcolou?r gradient\b|\b(?:each|every)\s+(?:row|layer|level)\b[^.;]*\bdifferent colou?r", t):
         ops.append(Op("ordering", {"key": "color", "descending": False}))
-    if mats and not reverse:
+    if mats and not reverse and not ncolors:
         ops.append(Op("material", {"to": mats[0] if len(mats) == 1 else "mixed", **({"from": source[0]} if source else {})}))
     add = None if substitution and mats else re.search(
         r"\b(?:add|append|include|put)\b(?P<what>.*?)(?P<where>\bon top\b|\bat the (?:top|bottom|base|end|start|beginning)\b|"
@@ -246,7 +254,7 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("count", {"delta": 1}))
     elif re.search(r"\b(?:shorter|smaller|lower)\b", t) and not any(o.op in ("remove", "dims") for o in ops):
         ops.append(Op("count", {"delta": -1}))
-    shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+)"
+    shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+)"
                       r"(tower|stack|line|row|circle|ring|pyramid|grid|square)\b", t)
     if shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
         ops.append(Op("structure", {"to": STRUCTURE_WORDS[shape.group(1)]}))
@@ -421,8 +429,8 @@ def _fit_structure(spec: TaskSpec, target: str) -> TaskSpec:
     raise SteerError(f"cannot turn a {spec.structure} into a {target}")
 
 
-APPLY_ORDER = ("structure", "material", "dims", "count", "remove", "recolor", "relabel", "add", "swap", "reverse", "ordering",
-               "outliers")
+APPLY_ORDER = ("structure", "material", "word", "dims", "count", "colors", "remove", "recolor", "relabel", "add", "swap",
+               "reverse", "ordering", "outliers")
 """Order in which an edit's operations are applied to the spec."""
 
 
@@ -484,7 +492,8 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
             new = [Item(**d) for d in p["items"]] or []
             grow = spec
             for _ in range(p.get("count") or 0):
-                item = _next_item(grow)
+                unused = [c for c in GRADIENT_ORDER if c not in grow.colors()]
+                item = Item(color=unused[0]) if spec.ordering == "color" and unused else _next_item(grow)
                 new.append(item)
                 grow = grow.with_items(list(grow.items) + [item])
             items = new + list(spec.items) if p.get("at") == "bottom" else list(spec.items) + new
@@ -544,6 +553,21 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
                 raise SteerError(f"the size of a {spec.structure} is set by its dimensions (e.g. \"a 3x3 base\")")
             n = p.get("count") or len(spec.items) + p.get("delta", 0)
             spec = _resize(spec, n)
+        elif o.op == "word":
+            if spec.structure not in ("line", "tower"):
+                raise SteerError(f"a {spec.structure} does not spell a word; say e.g. \"spell {p['word']} in a line\"")
+            spec = replace(spec.with_items([Item(label=ch) for ch in p["word"]]), word=p["word"], ordering=None,
+                           direction=spec.direction or "left_to_right")
+        elif o.op == "colors":
+            k = p["count"]
+            if not 1 <= k <= len(DEFAULT_COLORS):
+                raise SteerError(f"between 1 and {len(DEFAULT_COLORS)} colours are available")
+            palette = (list(dict.fromkeys(spec.colors())) + [c for c in DEFAULT_COLORS if c not in spec.colors()])[:k]
+            if spec.structure == "piles":
+                per = max(2, len(spec.items) // max(len(set(spec.colors())), 1))
+                spec = replace(spec.with_items([Item(color=c) for c in palette for _ in range(per)]), piles_by="color")
+            else:
+                spec = spec.with_items([Item(color=palette[i % k]) for i in range(len(spec.items))])
         elif o.op == "outliers":
             if spec.structure != "piles":
                 raise SteerError("outliers apply to piles; this task has a " + spec.structure)

@@ -249,7 +249,8 @@ def render(spec: TaskSpec) -> str:
         if spec.word and word.isalpha() and len(word) == n:  # the word follows the cubes (reversed, relabelled...)
             return f"Spell the word '{word}' using letter cubes arranged in a line {d}"
         if spec.ordering == "color":
-            return f"Align the {_join(spec.colors())} blocks in a color gradient {d}"
+            reverse = " in reverse order" if spec.descending else ""
+            return f"Align {n} blocks in a color gradient {d}{reverse}: {', '.join(spec.colors())}"
         if spec.ordering:
             what = {"label": "letter cubes in alphabetical", "number": "digit cubes in increasing numerical"}[spec.ordering]
             return f"Arrange {n} {what} order {d}" + (" in reverse" if spec.descending else "")
