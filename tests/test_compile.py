@@ -218,6 +218,11 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     ("Place each block on the patch of the same color", "each cube on the patch of its colour: red, blue"),
     ("Build a tower three blocks high with a yellow block on top", "tower bottom to top: red, blue, yellow"),
     ("Spell ROBOT vertically in a tower", "a tower whose front faces read 'ROBOT' from top to bottom"),
+    ("Stack the cubes so the letters read ABC from top to bottom", "a tower whose front faces read 'ABC' from top to bottom"),
+    ("Put the block with the letter A on top of the block with the letter B", "tower bottom to top: letter_b, letter_a"),
+    ("Arrange the blocks in a square", "a 2x2 grid of 4 touching cubes"),
+    ("Create a 2 by 2 square out of yellow cubes", "a 2x2 grid of 4 touching cubes"),
+    ("Sort the number cubes from smallest to largest", "4 cubes in a line in increasing numerical order left to right"),
 ])
 def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     assert parse(text).goal_summary == summary

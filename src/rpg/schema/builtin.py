@@ -76,6 +76,7 @@ seven eight nine ten many several wide high tall height x can build starts start
 begin begins beginning initial there where which who has have how shape shaped form forms do does
 shown kind type types by-color own its corresponding respectively per contain containing made consisting
 plus minus equals times operator operators symbol symbols mixed upright hold holds just only now want like
+out smallest largest lowest highest biggest least greatest marked labelled labeled showing
 """.split())
 """Words the builtin front end understands (besides colours, numbers and labels)."""
 
@@ -382,6 +383,9 @@ def _word(f: Features) -> str | None:
     m = re.search(r"\bword\s+'?([A-Za-z]{2,})'?", f.original, re.IGNORECASE)
     if m:
         return m.group(1).upper()
+    m = re.search(r"\b(?:read|reads|reading|show|shows|showing)\s+'?([A-Z]{2,})'?(?![A-Za-z])", f.original)
+    if m:
+        return m.group(1)
     return None
 
 
@@ -420,10 +424,12 @@ def _explicit_labels(f: Features) -> list[str]:
 
 def _ordering(f: Features) -> tuple[str, bool] | None:
     """(sort key, descending) asked for, if any."""
-    desc = f.has("reverse", "reversed", "descending", "decreasing", "backwards")
+    desc = f.has("reverse", "reversed", "descending", "decreasing", "backwards") or bool(
+        re.search(r"\b(?:largest|highest|biggest|greatest) to (?:smallest|lowest|least)\b", f.text))
     if f.has("alphabetical", "alphabetically", "alphabet"):
         return "label", desc
-    if f.has("numerical", "numerically", "increasing", "ascending", "decreasing", "descending", "numeric"):
+    if f.has("numerical", "numerically", "increasing", "ascending", "decreasing", "descending", "numeric") or re.search(
+            r"\b(?:smallest|lowest|least|largest|highest|biggest|greatest) to (?:largest|highest|biggest|greatest|smallest|lowest|least)\b", f.text):
         return "number", desc
     if f.has("gradient", "rainbow", "hue"):
         return "color", desc
@@ -523,6 +529,9 @@ def recognize_cube_block(f: Features, b: Builder) -> bool:
 
 def recognize_grid(f: Features, b: Builder) -> bool:
     m = re.search(r"\b(\d+)x(\d+)\b", f.text)
+    if m is None and re.search(r"\b(?:a|the)\s+(?:[a-z]+\s+)?(?:square|grid)\b(?!\s+patch)", f.text) and not f.has("patch", "patches"):
+        side = max(2, round(math.sqrt(_count(f, default=4))))
+        m = re.search(r"(\d+)x(\d+)", f"{side}x{side}")
     if not m or not f.has("square", "grid", "rectangle", "rectangular", "array", "block", "blocks", "cubes", "arrangement", "formation"):
         return False
     r, c = int(m.group(1)), int(m.group(2))
@@ -695,6 +704,7 @@ MENTION_RE = re.compile(
     r"(?:(?P<pre>long|square|target|goal|designated|color-specific|colored|matching)\s+){0,3}"
     r"(?:(?:letter|number|digit|semantic)\s+'?(?P<label>[a-z0-9])'?\s+(?:semantic\s+)?)?"
     r"(?P<noun>patch(?:es)?|blocks?|cubes?|boxes?)\b"
+    r"(?:\s+(?:with|showing|marked|labell?ed)\s+(?:with\s+)?(?:the\s+|an?\s+)?(?:letter|digit|number|label)\s+'?(?P<label2>[a-z0-9])'?(?![a-z0-9]))?"
     r"|\b(?P<bare>" + COLOR_RE + r")\b(?!\s+(?:block|cube|box|patch|long|square|goal|target))"
 )
 
@@ -711,7 +721,7 @@ def _mentions(text: str) -> list[Mention]:
         pre = m.group(0)
         out.append(Mention(
             m.start(), m.end(), _canon_color(m.group("color")) if m.group("color") else None,
-            m.group("label").upper() if m.group("label") else None, count,
+            (m.group("label") or m.group("label2") or "").upper() or None, count,
             patch=noun.startswith("patch"), shape="long" if "long" in pre else "square",
         ))
     return out
@@ -1069,6 +1079,12 @@ def parse(instruction: str) -> TaskSchema:
         if recognize(f, b):
             schema = b.schema(_slug(f.original))
             schema.repairs = b.repairs
+            labels = "".join(a.label or "" for a in schema.assets)
+            caps = [w for w in re.findall(r"\b[A-Z]{2,}\b", f.original)
+                    if w.lower() not in VOCAB and w.lower() not in COLORS and not set(w) <= set(labels)]
+            if caps:
+                raise ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {caps[0]!r} has no place in "
+                                 "that task. Rephrase (e.g. \"spell the word ...\"), or use --model")
             missing = sorted({c for c in f.color_list()} - {a.color for a in schema.assets})
             if missing:
                 raise ParseError(
