@@ -30,10 +30,10 @@ from rpg.repair import route
 from rpg.schema.builtin import parse
 from rpg.schema.feasibility import check_feasibility
 from rpg.schema.model import TaskSchema
+from rpg.validate.gates import GATES
 from rpg.validate.results import checked_validate_result
 from rpg.validate.sandbox import run_worker
 from rpg.validate.static import StaticViolation, check_source
-from rpg.validate.gates import GATES
 
 MAX_CYCLES = 5
 """Validate-repair cycles before a task is rejected (paper, Iterative Repair)."""

@@ -111,8 +111,9 @@ def preload() -> None:
     context and no threads exist before a fork)."""
     import importlib
 
-    import rpg.validate.worker  # noqa: F401
     from PIL import Image, PngImagePlugin  # noqa: F401
+
+    import rpg.validate.worker  # noqa: F401
 
     backend = os.environ.get("MUJOCO_GL", "egl")
     if backend in ("egl", "osmesa"):
