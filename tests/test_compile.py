@@ -223,6 +223,8 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     ("Arrange the blocks in a square", "a 2x2 grid of 4 touching cubes"),
     ("Create a 2 by 2 square out of yellow cubes", "a 2x2 grid of 4 touching cubes"),
     ("Sort the number cubes from smallest to largest", "4 cubes in a line in increasing numerical order left to right"),
+    ("Arrange 4 cubes in a row alternating red and white", "cubes in a line left to right: red_1, white_1, red_2, white_2"),
+    ("Build a tower of 5 blocks alternating green and yellow", "tower bottom to top: green_1, yellow_1, green_2, yellow_2, green_3"),
 ])
 def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     assert parse(text).goal_summary == summary

@@ -77,6 +77,7 @@ begin begins beginning initial there where which who has have how shape shaped f
 shown kind type types by-color own its corresponding respectively per contain containing made consisting
 plus minus equals times operator operators symbol symbols mixed upright hold holds just only now want like
 out smallest largest lowest highest biggest least greatest marked labelled labeled showing
+alternating alternate alternately alternates
 """.split())
 """Words the builtin front end understands (besides colours, numbers and labels)."""
 
@@ -606,6 +607,15 @@ def _outliers(f: Features) -> int:
     return int(m.group(1)) if m else 1
 
 
+def _alternating(f: Features, default: int) -> list[str] | None:
+    """``n`` colours cycling through the named ones for "alternating red and blue ..."."""
+    colors = list(dict.fromkeys(f.color_list()))
+    if not f.has("alternating", "alternate", "alternately", "alternates") or len(colors) < 2:
+        return None
+    n = max(_count(f, default=default), len(colors))
+    return [colors[i % len(colors)] for i in range(n)]
+
+
 def recognize_ordered_line(f: Features, b: Builder) -> bool:
     order = _ordering(f)
     explicit = re.search(r"\border\s+((?:(?:" + COLOR_RE + r")\s*,?\s*(?:and\s+|then\s+)?){2,})", f.text)
@@ -617,6 +627,9 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
     listed = re.search(rf"\b((?:{COLOR_RE})(?:\s*(?:,\s*and|,|and|then)\s+(?:the\s+)?(?:{COLOR_RE})\b)+)", f.text)
     if not explicit and not order and listed and re.search(r"\b(?:left to right|right to left|front to back|back to front)\b", f.text):
         explicit = listed
+    alternating = _alternating(f, 6)
+    if alternating and not explicit:
+        explicit = re.search(r"(.+)", ", ".join(alternating))
     in_order = re.search(r"\bin (?:the )?order\b(.*)", f.text)
     listed_items = item_sequence(in_order.group(1)) if in_order else []
     if in_order and any(label for _, label in listed_items) and len(listed_items) >= 2:
@@ -630,7 +643,7 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         order_names = names if direction == "left_to_right" else list(reversed(names))
         b.place(line_layout(order_names))
         b.preds.append(InLine(tuple(names), order=direction))
-        b.summary.append(f"cubes in a line {direction.replace('_', ' ')}: {', '.join(colors)}")
+        b.summary.append(f"cubes in a line {direction.replace('_', ' ')}: {', '.join(names)}")
     elif labels:
         if order:  # the listed labels are the set; the ordering arranges them
             labels = sorted(labels, key=lambda lab: (not lab.isdigit(), lab), reverse=order[1])
@@ -1036,6 +1049,9 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
             if (None, lab) in items:
                 hints[items.index((None, lab))] = where
     n = _count(f, default=None)
+    alternating = _alternating(f, 4)
+    if alternating:
+        items, hints = [(c, None) for c in alternating], {}
     if len(items) < 2 and f.has("rainbow", "gradient") and n:
         items = [(c, None) for c in sorted(GRADIENT_ORDER[:n], key=GRADIENT_ORDER.index, reverse=f.has("reverse"))]
     elif 1 <= len(items) < (n or 0) and hints:  # "three blocks high with a yellow block on top"
