@@ -284,3 +284,15 @@ def test_word_and_gradient_edits_apply_to_lines():
     grad = extract(parse("Arrange five blocks in a line from left to right in a color gradient"))
     more = apply_ops(grad, interpret("Add two more blocks").ops)
     assert len(extract(parse(render(more))).items) == 7
+
+
+@pytest.mark.parametrize("base,edit,expected", [
+    ("Stack the red block on top of the yellow block", "Double the number of blocks", "Build a tower from bottom to top: yellow, red, blue, green"),
+    ("Stack the red block on top of the yellow block", "Change the colors to a rainbow", "Build a tower from bottom to top: red, orange"),
+    ("Stack the red block on top of the yellow block", "Add another red block to the bottom", "Build a tower from bottom to top: red, yellow, red"),
+    ("Build a pyramid with a base of 3", "Make the pyramid 3D", "Build a pyramid of red blocks with a 3x3 base"),
+    ("Arrange 4 letter cubes in alphabetical order from left to right", "Instead of letters use numbers",
+     "Arrange 4 digit cubes in increasing numerical order from left to right"),
+])
+def test_edit_phrasings_render_the_expected_task(base, edit, expected):
+    assert render(apply_ops(extract(parse(base)), interpret(edit).ops)) == expected

@@ -110,7 +110,7 @@ MATERIAL_WORDS = (("letters", r"\bletters?\b|\balphabet\b"), ("digits", r"\bnumb
 ORDERING_PHRASES = (
     r"\b(?:sort(?:ed)?|order(?:ed)?|arrange[ds]?)?\s*(?:them\s+)?by\s+(?:different\s+|their\s+)?colou?rs?\b",
     r"\bcolou?r\s+(?:order|gradient|sequence)\b", r"\bdifferent\s+colou?rs?\b", r"\balphabetic(?:al)?(?:ly)?\b",
-    r"\bnumeric(?:al)?(?:ly)?\b", r"\b(?:each|every)\s+(?:row|layer|level)\b",
+    r"\bnumeric(?:al)?(?:ly)?\b", r"\b(?:each|every)\s+(?:row|layer|level)\b", r"\bcolou?rs?\s+(?:to|into)\s+(?:a\s+)?rainbow\b",
 )
 LABELLED_RE = r"\b(?:letter|digit|number|label)\s+'?[a-z0-9]'?(?![a-z0-9])"
 
@@ -126,7 +126,7 @@ def normalize_edit(text: str) -> str:
 
 
 def _materials(text: str) -> list[str]:
-    t = text
+    t = re.sub(r"\bnumber of\b", " ", text)
     for p in ORDERING_PHRASES:
         t = re.sub(p, " ", t)
     t = re.sub(LABELLED_RE, " ", t)
@@ -188,9 +188,9 @@ def _new_item(text: str) -> dict | None:
 def read_ops(t: str) -> list[Op]:
     """The operations of a normalised partial edit (empty when it names none)."""
     ops: list[Op] = []
-    substitution = re.search(r"\b(?:instead of|rather than|in place of)\b(.*)", t)
+    substitution = re.search(r"\b(?:instead of|rather than|in place of)\b(.*?)(?=[,;.]|\buse\b|\bwith\b|\bmake\b|\band\b|$)", t)
     source = _materials(substitution.group(1)) if substitution else []
-    mats = [m for m in _materials(t[: substitution.start()] if substitution else t) if m not in source]
+    mats = [m for m in _materials(t) if m not in source]
     word = re.search(r"\b(?:change|make|turn|set)\s+(?:the\s+)?word\s+(?:to|into)\s+'?([a-z]{2,})'?|\bspell\s+'?([a-z]{2,})'?\s+instead\b", t)
     if word:
         ops.append(Op("word", {"word": (word.group(1) or word.group(2)).upper()}))
@@ -210,12 +210,12 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("ordering", {"key": "label", "descending": bool(re.search(r"\b(?:reverse|descending|backwards?|z to a)\b", t))}))
     elif re.search(r"\bnumeric(?:al)?(?:ly)?\b|\b(?:increasing|ascending|decreasing|descending) order\b", t):
         ops.append(Op("ordering", {"key": "number", "descending": bool(re.search(r"\b(?:decreasing|descending|reverse)\b", t))}))
-    elif re.search(r"\b(?:sort|order|arrange|group)\w*\s+(?:them\s+|it\s+)?by\s+(?:different\s+|their\s+)?colou?rs?\b|\bcolou?r gradient\b|\b(?:each|every)\s+(?:row|layer|level)\b[^.;]*\bdifferent colou?r", t):
+    elif re.search(r"\b(?:sort|order|arrange|group)\w*\s+(?:them\s+|it\s+)?by\s+(?:different\s+|their\s+)?colou?rs?\b|\bcolou?r gradient\b|\brainbow\b|\b(?:each|every)\s+(?:row|layer|level)\b[^.;]*\bdifferent colou?r", t):
         ops.append(Op("ordering", {"key": "color", "descending": False}))
     if mats and not reverse and not ncolors:
         ops.append(Op("material", {"to": mats[0] if len(mats) == 1 else "mixed", **({"from": source[0]} if source else {})}))
     add = None if substitution and mats else re.search(
-        r"\b(?:add|append|include|put)\b(?P<what>.*?)(?P<where>\bon top\b|\bat the (?:top|bottom|base|end|start|beginning)\b|"
+        r"\b(?:add|append|include|put)\b(?P<what>.*?)(?P<where>\bon top\b|\b(?:at|to|on) (?:the )?(?:very )?(?:top|bottom|base|end|start|beginning)\b|"
         r"\b(?:under|underneath|beneath|below)\b|\bto the (?:left|right|end|start)\b|\bon the (?:left|right)\b|[;,.]|\band\b|$)", t)
     if add and (item_sequence(add.group("what")) or re.search(r"\b(?:blocks?|cubes?)\b", add.group("what"))):
         what = add.group("what")
@@ -241,15 +241,21 @@ def read_ops(t: str) -> list[Op]:
     rm = re.search(r"\b(?:remove|delete|take away|take off|drop|get rid of)\s+(?:the\s+)?(?P<sel>.+?)(?:[;,.]|\band\b|$)", t)
     if rm and _selector(rm.group("sel")):
         ops.append(Op("remove", {"select": _selector(rm.group("sel"))}))
-    dims = re.search(r"\b(\d+)x(\d+)(?:x(\d+))?\b", t)
+    flat = re.search(r"\b([23])d\b|\b(flat)\b", t)
+    if flat:
+        ops.append(Op("dims", {"pyramid_dims": 2 if flat.group(2) else int(flat.group(1))}))
+    dims = None if flat else re.search(r"\b(\d+)x(\d+)(?:x(\d+))?\b", t)
     base = re.search(r"\bbase\s+(?:of\s+|to\s+|is\s+|to be\s+)?(\d+)\b|\b(\d+)[- ]wide base\b", t)
     if dims:
         ops.append(Op("dims", {"dims": [int(g) for g in dims.groups() if g]}))
-    elif base:
+    elif base and not flat:
         ops.append(Op("dims", {"base": int(base.group(1) or base.group(2))}))
     count = re.search(r"\b(?:use|with|make it|make (?:the|it) (?:tower|line|circle|row)|have|to)\s+(?:only\s+)?(\d+)\s+(?:[a-z]+\s+)?(?:blocks?|cubes?)\b", t)
     if count and not any(o.op in ("add", "dims") for o in ops):
         ops.append(Op("count", {"count": int(count.group(1))}))
+    elif re.search(r"\b(?:double|triple|halve)\b", t) and not any(o.op in ("add", "dims", "remove") for o in ops):
+        factor = {"double": 2.0, "triple": 3.0, "halve": 0.5}[re.search(r"\b(double|triple|halve)\b", t).group(1)]
+        ops.append(Op("count", {"factor": factor}))
     elif re.search(r"\b(?:taller|higher|longer|bigger|larger)\b", t) and not any(o.op in ("add", "dims") for o in ops):
         ops.append(Op("count", {"delta": 1}))
     elif re.search(r"\b(?:shorter|smaller|lower)\b", t) and not any(o.op in ("remove", "dims") for o in ops):
@@ -469,6 +475,9 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
             if key == "color" and spec.structure in ("pyramid", "block"):
                 spec = _with_layer_colors(spec)
                 continue
+            if key == "color" and spec.structure in ("tower", "circle"):  # a rainbow: gradient colours in structure order
+                spec = spec.with_items([Item(color=GRADIENT_ORDER[i % len(GRADIENT_ORDER)]) for i in range(len(spec.items))])
+                continue
             need = {"label": "letters", "number": "digits", "color": "colors"}[key]
             if spec.material != need:
                 spec = spec.with_items(_material_items(need, len(spec.items), spec.colors()))
@@ -514,6 +523,13 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
             if not idx:
                 raise SteerError(f"the task has no cube matching {p['select']}")
             spec = spec.with_items([it for i, it in enumerate(spec.items) if i not in idx])
+        elif o.op == "dims" and "pyramid_dims" in p:
+            if spec.structure != "pyramid":
+                raise SteerError(f"only a pyramid is 2D or 3D; this task has a {spec.structure}")
+            dims = (spec.dims[0], p["pyramid_dims"])
+            spec = _resize(replace(spec, dims=dims), _pyramid_count(*dims))
+            if spec.layer_colors:
+                spec = _with_layer_colors(spec)
         elif o.op == "dims":
             if "base" in p:
                 if spec.structure != "pyramid":
@@ -551,7 +567,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
         elif o.op == "count":
             if spec.structure not in ("tower", "line", "circle", "piles"):
                 raise SteerError(f"the size of a {spec.structure} is set by its dimensions (e.g. \"a 3x3 base\")")
-            n = p.get("count") or len(spec.items) + p.get("delta", 0)
+            n = p.get("count") or (round(len(spec.items) * p["factor"]) if "factor" in p else len(spec.items) + p.get("delta", 0))
             spec = _resize(spec, n)
         elif o.op == "word":
             if spec.structure not in ("line", "tower"):
