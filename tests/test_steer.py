@@ -296,3 +296,14 @@ def test_word_and_gradient_edits_apply_to_lines():
 ])
 def test_edit_phrasings_render_the_expected_task(base, edit, expected):
     assert render(apply_ops(extract(parse(base)), interpret(edit).ops)) == expected
+
+
+def test_a_version_named_by_its_content(tmp_path):
+    r = compile_instruction("Build a pyramid of letter blocks alphabetically with a base of 3", tmp_path, name="fam")
+    fam = create_family(r.path)
+    assert steer(fam.path, "Build a pyramid of blue blocks with a base of 3").version == 1
+    s = steer(fam.path, "Take the letter version and make the base 4")
+    assert (s.reference, s.intent, s.valid) == (0, "tweak", True)
+    assert extract(fam.schema(s.version)).material == "letters"
+    plan = interpret("Use the 3-block version but make it blue")
+    assert (plan.cue.kind, plan.cue.count, [o.op for o in plan.ops]) == ("search", 3, ["recolor"])

@@ -143,9 +143,13 @@ def find_reference(t: str) -> RefCue:
         return RefCue("original", phrase=m.group(0))
     this = re.search(r"\bth(?:is|e current|e latest)\s+(?:[a-z]+\s+)?version\b|\bcurrent\b", t)
     back = re.search(r"\b(?:go(?:ing)? back|back to|revert|return to|undo|earlier|previous|prior|older|used to)\b", t)
+    named = re.search(r"\b(?:the|that)\s+((?:[a-z0-9'-]+\s+){1,5}?)(?:version|variant)\b", t)
+    if named and not back and not this and (_materials(named.group(1)) or re.search(
+            rf"\b(?:{COLOR_RE})\b|{STRUCTURE_RE}|\b\d+[- ](?:blocks?|cubes?)\b", named.group(1))):
+        back = named  # "the letter version", "the 3-block version": a version named by its content
     if not back or this:
         return RefCue("current", phrase=this.group(0) if this else "")
-    region = t[back.end():]
+    region = t[back.start():] if back is named else t[back.end():]
     cut = CUT_RE.search(region)
     region = region[: cut.start()] if cut else region
     colors = tuple(dict.fromkeys(_canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", region)))
@@ -164,7 +168,7 @@ def find_reference(t: str) -> RefCue:
 def _selector(text: str) -> dict | None:
     """Which cubes a phrase names: a position, a colour, a label, or all of them."""
     text = text.strip()
-    if re.search(r"\b(?:all|every|everything|each)\b|^(?:the\s+)?(?:blocks|cubes|them|tower|stack|line|circle|grid|pyramid)\b", text):
+    if re.search(r"\b(?:all|every|everything|each)\b|^(?:the\s+)?(?:blocks|cubes|them|it|tower|stack|line|circle|grid|pyramid)\b", text):
         return {"all": True}
     m = re.search(r"\b(base|bottom|first|lowest|top|last|highest|upper|middle|center|centre|second|third)\b", text)
     if m:
@@ -187,6 +191,7 @@ def _new_item(text: str) -> dict | None:
 
 def read_ops(t: str) -> list[Op]:
     """The operations of a normalised partial edit (empty when it names none)."""
+    t = re.sub(r"\b(?:the|that|this)\s+(?:[a-z0-9'-]+\s+){0,5}?(?:version|variant)\b", " ", t)  # names a version, changes nothing
     ops: list[Op] = []
     substitution = re.search(r"\b(?:instead of|rather than|in place of)\b(.*?)(?=[,;.]|\buse\b|\bwith\b|\bmake\b|\band\b|$)", t)
     source = _materials(substitution.group(1)) if substitution else []
