@@ -307,3 +307,11 @@ def test_a_version_named_by_its_content(tmp_path):
     assert extract(fam.schema(s.version)).material == "letters"
     plan = interpret("Use the 3-block version but make it blue")
     assert (plan.cue.kind, plan.cue.count, [o.op for o in plan.ops]) == ("search", 3, ["recolor"])
+
+
+def test_paraphrased_benchmark_edits():
+    tower = TaskSpec("tower", (Item("red"), Item("blue"), Item("yellow"), Item(label="A")))
+    flipped = apply_ops(tower, interpret("Flip the order of the colors but keep A on top").ops)
+    assert [i.phrase() for i in flipped.items] == ["yellow", "blue", "red", "letter 'A'"]
+    revert = interpret("Revert to the red and blue tower and add a purple block")
+    assert (revert.cue.kind, revert.cue.colors, [o.op for o in revert.ops]) == ("search", ("red", "blue"), ["add"])

@@ -105,7 +105,8 @@ FRESH_RE = re.compile(r"(?i)\b(?:new task|another task|start over|start fresh|fr
 ANAPHORA_RE = re.compile(r"\b(?:it|them|they|its|their|those|these|instead|back|again|now|also|more|rather)\b"
                          r"|\b(?:add|append|change|replace|swap|substitute|remove|delete|flip|reverse|invert|keep|undo|revert|turn|paint|recolou?r)\b|\bmake (?:the|it|them)\b")
 """Words that make an edit a change to the current task rather than a whole new one."""
-CUT_RE = re.compile(r"\band (?:then|instead|now|also)\b|\binstead\b|\bthen\b|\bbut\b|[;,.]")
+CUT_RE = re.compile(r"\band (?:then|instead|now|also|add|put|make|change|use|replace|remove|sort|swap|flip|turn)\b"
+                    r"|\binstead\b|\bthen\b|\bbut\b|[;,.]")
 MATERIAL_WORDS = (("letters", r"\bletters?\b|\balphabet\b"), ("digits", r"\bnumbers?\b|\bdigits?\b"), ("colors", r"\bcolou?r(?:s|ed)?\b"))
 ORDERING_PHRASES = (
     r"\b(?:sort(?:ed)?|order(?:ed)?|arrange[ds]?)?\s*(?:them\s+)?by\s+(?:different\s+|their\s+)?colou?rs?\b",
@@ -209,8 +210,12 @@ def read_ops(t: str) -> list[Op]:
                         r"\b(?:flip|reverse|invert)\s+(?:it|them|the\s+(?:tower|stack|line|row|gradient|sequence|colou?rs|word))\b", t)
     if reverse:
         keep = re.search(r"\bkeep(?:ing)?\s+(?:the\s+)?(.+?)\s+(?:on top|at the top|in place|where it is|at the bottom|fixed)\b", t)
-        ops.append(Op("reverse", {"colors_only": bool(re.search(r"\bcolou?r order\b", t)),
-                                  **({"keep": _selector(keep.group(1))} if keep else {})}))
+        kept = None
+        if keep:  # "keep the letter 'A' on top", "keep A on top"
+            lone = re.fullmatch(r"'?([a-z0-9])'?", keep.group(1).strip())
+            kept = _selector(keep.group(1)) or ({"label": lone.group(1).upper()} if lone else None)
+        ops.append(Op("reverse", {"colors_only": bool(re.search(r"\bcolou?r order\b|\border of (?:the )?colou?rs\b", t)),
+                                  **({"keep": kept} if kept else {})}))
     if re.search(r"\balphabetic(?:al)?(?:ly)?\b", t):
         ops.append(Op("ordering", {"key": "label", "descending": bool(re.search(r"\b(?:reverse|descending|backwards?|z to a)\b", t))}))
     elif re.search(r"\bnumeric(?:al)?(?:ly)?\b|\b(?:increasing|ascending|decreasing|descending) order\b", t):
