@@ -184,7 +184,7 @@ LIBRARY_LOCK = ".rpg.lock"
 """Lock file in a library directory: serializes the renames that publish task directories."""
 
 
-def _atomic_replace(tmp: Path, target: Path) -> None:
+def atomic_replace(tmp: Path, target: Path) -> None:
     """Publish ``tmp`` as ``target`` by rename (the old ``target``, if any, goes to the
     trash first), under the directory's file lock so concurrent writers never interleave."""
     from filelock import FileLock
@@ -270,7 +270,7 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
             (tmp / fname).write_text(text)
         slug = name or schema.name
         target = out_dir / slug if valid else out_dir / ".rejected" / slug
-        _atomic_replace(tmp, target)
+        atomic_replace(tmp, target)
         return CompileResult(valid, target, schema, gates, log, digest)
     finally:
         if tmp.exists():

@@ -37,7 +37,7 @@ import yaml
 from filelock import FileLock
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
-from rpg.compiler import ArtifactError, _atomic_replace, content_hash, load_artifact
+from rpg.compiler import ArtifactError, atomic_replace, content_hash, load_artifact
 from rpg.schema.model import TaskSchema
 
 HISTORY_FILE = "family.yaml"
@@ -261,7 +261,7 @@ def create_family(artifact: str | Path) -> Family:
         snap = snapshot_of(tmp / "v0", 0, schema.instruction, None, None, "base", {}, {})
         fam = Family(tmp)
         fam.save(FamilyHistory(name=artifact.name, head=0, versions=[snap]))
-        _atomic_replace(tmp, artifact)
+        atomic_replace(tmp, artifact)
     finally:
         if tmp.exists():
             shutil.rmtree(tmp, ignore_errors=True)

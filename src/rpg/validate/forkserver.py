@@ -22,7 +22,7 @@ import sys
 import tempfile
 import time
 
-from rpg.validate.sandbox import WORKER_MAX_OUTPUT, _limits
+from rpg.validate.sandbox import WORKER_MAX_OUTPUT, apply_limits
 
 
 def _read_child(fd: int, timeout: float) -> tuple[bytes, str | None]:
@@ -54,7 +54,7 @@ def _run_child(req: dict, cwd: str, wfd: int) -> None:  # pragma: no cover - run
         err = os.open(os.path.join(cwd, ".stderr"), os.O_WRONLY | os.O_CREAT, 0o600)
         os.dup2(err, 2)
         os.chdir(cwd)
-        _limits()
+        apply_limits()
         from rpg.validate.guard import install
         from rpg.validate.worker import handle
 

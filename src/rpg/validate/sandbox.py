@@ -37,7 +37,8 @@ class WorkerError(RuntimeError):
     """The worker crashed, timed out or wrote something that is not a result."""
 
 
-def _limits() -> None:  # pragma: no cover - runs in the child
+def apply_limits() -> None:  # pragma: no cover - runs in the child
+    """Resource limits of a worker process: CPU seconds, address space, no core files, open files."""
     import resource
 
     resource.setrlimit(resource.RLIMIT_CPU, (WORKER_CPU_S, WORKER_CPU_S))
@@ -174,7 +175,7 @@ def _run_once(request: dict, timeout: float) -> dict:
             proc = subprocess.run(
                 [sys.executable, "-m", "rpg.validate.worker"],
                 input=json.dumps(request).encode(), capture_output=True, timeout=timeout, cwd=cwd, env=_worker_env(),
-                preexec_fn=_limits,
+                preexec_fn=apply_limits,
             )
         except subprocess.TimeoutExpired:
             raise WorkerError(f"task code ran past the {timeout:.0f} s limit") from None

@@ -29,7 +29,6 @@ from rpg.domain.render import Snapshotter
 from rpg.domain.scene import drift_report
 from rpg.domain.task import BlockTask
 from rpg.domain.visibility import face_visibility
-from rpg.validate.gates import GATES  # noqa: F401 - re-exported for callers of the worker module
 
 
 class GateFailure(Exception):
