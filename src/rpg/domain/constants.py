@@ -232,3 +232,8 @@ CAMERA_FOVY: float = 45.0
 
 SNAPSHOT_SIZE: tuple[int, int] = (640, 480)
 """Snapshot width and height, pixels."""
+
+SNAPSHOT_SHADOW_SIZE: int = 1024
+"""Side of the shadow map used for snapshots, texels (MuJoCo's default is 4096).  On a
+software renderer (Mesa llvmpipe) a 4096 map doubles the CPU time of a snapshot; at
+640x480 the two images differ by < 0.05 grey levels on average."""

@@ -53,6 +53,7 @@ def physics_spec() -> mujoco.MjSpec:
     spec.visual.headlight.diffuse = [0.5, 0.5, 0.5]
     spec.visual.global_.offwidth = C.SNAPSHOT_SIZE[0]
     spec.visual.global_.offheight = C.SNAPSHOT_SIZE[1]
+    spec.visual.quality.shadowsize = C.SNAPSHOT_SHADOW_SIZE
 
     world = spec.worldbody
     world.add_geom(
