@@ -33,6 +33,12 @@ _KEEP_ENV = ("PATH", "HOME", "LANG", "LC_ALL", "MUJOCO_GL", "PYTHONPATH", "VIRTU
              "PYOPENGL_PLATFORM", "EGL_PLATFORM", "TMPDIR", "LP_NUM_THREADS")
 
 
+FORK_SAFE_GL_ENV = {"LP_NUM_THREADS": "0", "MESA_SHADER_CACHE_DISABLE": "true"}
+"""Environment of the fork server: Mesa llvmpipe renders in the calling thread and keeps
+no shader-cache thread, so the server stays single-threaded and can fork with a warm
+OpenGL context (see :func:`rpg.domain.render.warm_shared_context`)."""
+
+
 class WorkerError(RuntimeError):
     """The worker crashed, timed out or wrote something that is not a result."""
 
@@ -79,7 +85,7 @@ class _ForkServer:
         self.cwd = tempfile.mkdtemp(prefix="rpg-forkserver-")
         self.proc = subprocess.Popen(
             [sys.executable, "-m", "rpg.validate.forkserver"], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-            stderr=subprocess.DEVNULL, cwd=self.cwd, env=_worker_env())
+            stderr=subprocess.DEVNULL, cwd=self.cwd, env={**_worker_env(), **FORK_SAFE_GL_ENV})
 
     def alive(self) -> bool:
         return self.owner == os.getpid() and self.proc.poll() is None
