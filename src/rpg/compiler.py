@@ -24,6 +24,7 @@ from pathlib import Path
 
 import yaml
 
+from rpg import yamlio
 from rpg._version import __version__
 from rpg.codegen import generate
 from rpg.repair import route
@@ -361,7 +362,7 @@ def load_artifact(directory: str | Path) -> tuple[TaskSchema, dict]:
         if not (d / fname).is_file():
             raise ArtifactError(f"{d} is not a task artifact: {fname} is missing")
     try:
-        doc = yaml.safe_load((d / "task.yaml").read_text())
+        doc = yamlio.load((d / "task.yaml").read_text())
         schema = TaskSchema.model_validate(doc["schema"])
     except Exception as exc:  # noqa: BLE001 - any parse problem means a malformed artifact
         raise ArtifactError(f"{d / 'task.yaml'} is malformed: {str(exc).splitlines()[0][:200]}") from None

@@ -25,6 +25,8 @@ from typing import Literal
 import yaml
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
+from rpg import yamlio
+
 
 class ManifestError(ValueError):
     """A manifest that cannot be read; the message says what is wrong."""
@@ -75,7 +77,7 @@ def load_manifest(path: str | Path) -> Manifest:
         ManifestError: unreadable YAML or entries that do not validate.
     """
     try:
-        return Manifest.model_validate(yaml.safe_load(Path(path).read_text()))
+        return Manifest.model_validate(yamlio.load(Path(path).read_text()))
     except ValidationError as exc:
         where = "; ".join(f"{'.'.join(map(str, e['loc']))}: {e['msg']}" for e in exc.errors()[:3])
         raise ManifestError(f"manifest {path} is invalid: {where}") from None

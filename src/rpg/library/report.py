@@ -12,8 +12,8 @@ import shutil
 from pathlib import Path
 
 import jinja2
-import yaml
 
+from rpg import yamlio
 from rpg.compiler import ArtifactError, load_artifact
 
 PAGE = jinja2.Template("""<!doctype html>
@@ -75,7 +75,7 @@ def collect_cards(library: Path, site: Path) -> list[dict]:
     cards = []
     for d in sorted(p for p in Path(library).iterdir() if p.is_dir() and not p.name.startswith(".")):
         if (d / "family.yaml").is_file():
-            hist = yaml.safe_load((d / "family.yaml").read_text())
+            hist = yamlio.load((d / "family.yaml").read_text())
             for v in hist["versions"]:
                 ref = "none" if v["reference"] is None else f"v{v['reference']}"
                 parent = "none" if v["parent"] is None else f"v{v['parent']}"

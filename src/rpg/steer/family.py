@@ -37,6 +37,7 @@ import yaml
 from filelock import FileLock
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
+from rpg import yamlio
 from rpg.compiler import ArtifactError, atomic_replace, content_hash, load_artifact
 from rpg.schema.model import TaskSchema
 
@@ -137,7 +138,7 @@ class Family:
             raise FamilyError(f"{self.path} is not a task family ({HISTORY_FILE} is missing); "
                               "create one with 'rpg compile ... --family' or steer a compiled task")
         try:
-            hist = FamilyHistory.model_validate(yaml.safe_load(f.read_text()))
+            hist = FamilyHistory.model_validate(yamlio.load(f.read_text()))
         except (yaml.YAMLError, ValidationError, TypeError) as exc:
             first = str(exc).splitlines()[0][:200]
             raise FamilyError(f"{f} is corrupt: {first}") from None

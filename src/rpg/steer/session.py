@@ -23,6 +23,7 @@ from pathlib import Path
 
 import yaml
 
+from rpg import yamlio
 from rpg.compiler import compile_instruction
 from rpg.steer.edits import SteerError
 from rpg.steer.family import Family, create_family
@@ -55,7 +56,7 @@ def load_session(path: str | Path) -> dict:
         SessionError: unreadable, or not ``{name, steps: [{instruction}, {edit, ...}, ...]}``.
     """
     try:
-        doc = yaml.safe_load(Path(path).read_text())
+        doc = yamlio.load(Path(path).read_text())
     except (OSError, yaml.YAMLError) as exc:
         raise SessionError(f"cannot read session {path}: {str(exc).splitlines()[0]}") from None
     steps = doc.get("steps") if isinstance(doc, dict) else None
