@@ -225,14 +225,57 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     ("Sort the number cubes from smallest to largest", "4 cubes in a line in increasing numerical order left to right"),
     ("Arrange 4 cubes in a row alternating red and white", "cubes in a line left to right: red_1, white_1, red_2, white_2"),
     ("Build a tower of 5 blocks alternating green and yellow", "tower bottom to top: green_1, yellow_1, green_2, yellow_2, green_3"),
+    # references back to a stack or to the previous relation's object
+    ("Put the blue cube on top of the stack", "tower bottom to top: red, green, blue"),
+    ("Place the red block next to the tower", "tower bottom to top: blue, green; red next to blue"),
+    ("Stack two green blocks and place a red block beside the stack",
+     "tower bottom to top: green_1, green_2; red next to green_1"),
+    ("Stack the red block on the blue block and the green block next to them", "tower bottom to top: blue, red; green next to blue"),
+    ("Place the yellow block to the left of the green block and the red block to the right of it",
+     "yellow left of green; red right of green"),
+    ("Put the green block behind the blue block and the red block in front of it", "green behind blue; red in front of blue"),
+    ("Build a tower of red, green and blue blocks and place the yellow block behind it",
+     "tower bottom to top: red, green, blue; yellow behind red"),
+    ("Put the purple cube behind the tower of red and blue", "tower bottom to top: red, blue; purple behind red"),
+    ("Put the yellow block on the goal patch and stack the red block on it", "tower bottom to top: yellow, red; yellow on gray_patch"),
+    # sorted towers of letters and digits
+    ("Stack the number blocks in increasing order from bottom to top", "a tower of digits ascending from bottom to top: 1, 2, 3, 4"),
+    ("Stack the blocks from largest number to smallest number going up",
+     "a tower of digits descending from bottom to top: 4, 3, 2, 1"),
+    ("Stack the letter blocks in alphabetical order with A at the bottom",
+     "a tower of letters ascending from bottom to top: A, B, C, D"),
+    ("Build a tower of 3 digit cubes with the smallest on top", "a tower of digits descending from bottom to top: 3, 2, 1"),
+    # walls, columns, patches, piles, nearness, typos
+    ("Build a wall of six blocks, three wide and two high", "a wall 3 cubes wide and 2 high (6 cubes)"),
+    ("Build a wall 4 blocks wide and 2 blocks high", "a wall 4 cubes wide and 2 high (8 cubes)"),
+    ("Place the blocks in a vertical column", "tower bottom to top: red, blue"),
+    ("Place a block on each of the three goal patches",
+     "one cube on each of the 3 goal patches (red_1, red_2, red_3, any cube on any patch)"),
+    ("Separate the red blocks from the blue blocks", "2 separate piles, one per color"),
+    ("Put the green block close to the yellow block", "green next to yellow"),
+    ("Put teh red block on the blue block", "tower bottom to top: blue, red"),
 ])
 def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     assert parse(text).goal_summary == summary
 
 
+@pytest.mark.parametrize("text", [
+    "Stack two green blocks and place a red block beside the stack",
+    "Put the green block behind the blue block and the red block in front of it",
+    "Build a wall 4 blocks wide and 2 blocks high",
+    "Stack the letter blocks in alphabetical order with A at the bottom",
+    "Place a block on each of the three goal patches",
+])
+def test_new_phrasings_compile_to_valid_tasks(text, tmp_path):
+    r = compile_instruction(text, tmp_path)
+    assert r.valid, [g for g in r.gates if g["status"] == "fail"]
+
+
 def test_parser_refuses_rather_than_drop_a_named_cube():
     with pytest.raises(ParseError, match="purple"):
-        parse("Put the purple cube behind the tower of red and blue")
+        parse("Stack the red block on the blue block and the purple block")
+    with pytest.raises(ParseError, match="wall 4 wide and 2 high has 8 cubes, not 6"):
+        parse("Build a wall of 6 blocks, 4 wide and 2 high")
     schema = parse("Form a straight line of four blue blocks")
     assert [a.color for a in schema.assets] == ["blue"] * 4
 

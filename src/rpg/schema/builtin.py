@@ -77,7 +77,8 @@ begin begins beginning initial there where which who has have how shape shaped f
 shown kind type types by-color own its corresponding respectively per contain containing made consisting
 plus minus equals times operator operators symbol symbols mixed upright hold holds just only now want like
 out smallest largest lowest highest biggest least greatest marked labelled labeled showing
-alternating alternate alternately alternates
+alternating alternate alternately alternates going goes go way up down upward downward stand standing
+wall walls wide deep long split divide pillar column close far
 """.split())
 """Words the builtin front end understands (besides colours, numbers and labels)."""
 
@@ -103,6 +104,14 @@ class Features:
 
 def _canon_color(word: str) -> str:
     return COLOR_ALIASES.get(word, word)
+
+
+def _transposition(word: str) -> tuple[str] | None:
+    """The one known word that ``word`` (a short typo) becomes by swapping two adjacent
+    letters ("teh" -> "the", "rde" -> "red"), as a 1-tuple; None if none or several."""
+    found = {word[:i] + word[i + 1] + word[i] + word[i + 2:] for i in range(len(word) - 1)}
+    known = sorted(w for w in found if w != word and (w in VOCAB or w in COLORS))
+    return (known[0],) if len(known) == 1 else None
 
 
 def normalize(instruction: str) -> tuple[str, str]:
@@ -135,7 +144,8 @@ def normalize(instruction: str) -> tuple[str, str]:
             continue
         if "-" in w and all(p in VOCAB or p in COLORS or p in NUMBER_WORDS for p in w.split("-") if p):
             continue
-        match = process.extractOne(w, list(VOCAB) + COLORS, scorer=fuzz.ratio, score_cutoff=84) if len(w) >= 4 else None
+        match = (process.extractOne(w, list(VOCAB) + COLORS, scorer=fuzz.ratio, score_cutoff=84) if len(w) >= 4
+                 else _transposition(w))
         if match:
             fixed[w] = match[0]
         else:
@@ -149,6 +159,7 @@ def normalize(instruction: str) -> tuple[str, str]:
         )
     for w, r in fixed.items():
         text = re.sub(rf"\b{re.escape(w)}\b", r, text)
+    text = re.sub(r"\bvertical (?:column|stack)\b|\bpillar\b", "tower", text)
     for w, n in NUMBER_WORDS.items():
         text = re.sub(rf"\b{w}\b", str(n), text)
     text = re.sub(r"\bgrey\b", "gray", text)
@@ -297,6 +308,38 @@ def recognize_matching_patches(f: Features, b: Builder) -> bool:
     return True
 
 
+EACH_PATCH_RE = re.compile(
+    r"\b(?:a|one|1)\s+(?:(?P<color>" + COLOR_RE + r")\s+)?(?:block|cube|box)\s+(?:on|onto|in|into|to)\s+"
+    r"(?:each|every)\s+(?:one\s+)?(?:of\s+the\s+)?(?:(?P<n>\d+)\s+)?(?:(?P<pcolor>" + COLOR_RE + r")\s+)?"
+    r"(?:goal\s+|target\s+)?(?:patch|patches|target|targets)\b"
+    r"|\b(?:one|1)\s+(?:(?P<color2>" + COLOR_RE + r")\s+)?(?:block|cube)\s+per\s+(?:goal\s+|target\s+)?patch\b")
+
+
+def recognize_each_patch(f: Features, b: Builder) -> bool:
+    """One cube on each of several goal patches ("place a block on each of the three goal
+    patches", "one cube per patch").  The cubes share a colour, so any cube may take any
+    patch."""
+    m = EACH_PATCH_RE.search(f.text)
+    if not m:
+        return False
+    n = int(m.group("n")) if m.group("n") else (_count(f, "patch|patche|target", default=None) or 3)
+    if not 2 <= n <= 6:
+        raise ParseError(f"one cube on each of {n} patches: use 2 to 6 patches")
+    color = _canon_color(m.group("color") or m.group("color2") or "red")
+    pcolor = _canon_color(m.group("pcolor")) if m.group("pcolor") else DEFAULT_PATCH_COLOR
+    centers = b.unit_centers(n, 0.14)
+    cubes = []
+    for x, y in centers:
+        cube, patch = b.cube(color), b.patch(pcolor)
+        b.place({patch: Pose((x, y, C.TABLE_TOP_Z + C.PATCH_THICKNESS / 2)), cube: stack_layout([cube], (x, y))[cube]})
+        b.preds.append(OnPatch(cube, patch))
+        cubes.append(cube)
+    b.primitives += ["place"]
+    b.summary.append(f"one cube on each of the {n} goal patches ({', '.join(cubes)}, any cube on any patch)")
+    b.min_separation = 0.10
+    return True
+
+
 def features_colors(text: str) -> list[tuple[int, str]]:
     return [(m.start(), _canon_color(m.group(0))) for m in re.finditer(rf"\b({COLOR_RE})\b", text)]
 
@@ -426,11 +469,12 @@ def _explicit_labels(f: Features) -> list[str]:
 def _ordering(f: Features) -> tuple[str, bool] | None:
     """(sort key, descending) asked for, if any."""
     desc = f.has("reverse", "reversed", "descending", "decreasing", "backwards") or bool(
-        re.search(r"\b(?:largest|highest|biggest|greatest) to (?:smallest|lowest|least)\b", f.text))
+        re.search(r"\b(?:largest|highest|biggest|greatest)(?: number| digit| value)? to (?:smallest|lowest|least)\b", f.text))
     if f.has("alphabetical", "alphabetically", "alphabet"):
         return "label", desc
     if f.has("numerical", "numerically", "increasing", "ascending", "decreasing", "descending", "numeric") or re.search(
-            r"\b(?:smallest|lowest|least|largest|highest|biggest|greatest) to (?:largest|highest|biggest|greatest|smallest|lowest|least)\b", f.text):
+            r"\b(?:smallest|lowest|least|largest|highest|biggest|greatest)(?: number| digit| value)? to "
+            r"(?:largest|highest|biggest|greatest|smallest|lowest|least)\b", f.text):
         return "number", desc
     if f.has("gradient", "rainbow", "hue"):
         return "color", desc
@@ -508,9 +552,46 @@ def recognize_cube_block(f: Features, b: Builder) -> bool:
     if not m:
         return False
     r, c, layers = (int(g) for g in m.groups())
+    _lattice(f, b, r, c, layers, f"a {r}x{c}x{layers} block of {r * c * layers} cubes")
+    return True
+
+
+WALL_DIMS = (3, 2)
+"""Width and height of a wall when the instruction gives neither, cubes."""
+
+
+def recognize_wall(f: Features, b: Builder) -> bool:
+    """A wall: one row of cubes ``width`` long (left to right) and ``height`` layers high
+    ("a wall three blocks wide and two high", "a 4x2 wall", "a wall of six blocks")."""
+    if not f.has("wall"):
+        return False
+    wide = re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+)?(?:wide|long|across)\b", f.text)
+    high = re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+|layers?\s+|rows?\s+|levels?\s+)?(?:high|tall)\b", f.text)
+    dims = re.search(r"\b(\d+)x(\d+)\b", f.text)
+    width = int(wide.group(1)) if wide else (int(dims.group(1)) if dims else None)
+    height = int(high.group(1)) if high else (int(dims.group(2)) if dims else None)
+    count = re.search(r"\b(\d+)\s+(?:[a-z]+\s+)?(?:blocks|cubes)\b(?!\s+(?:wide|long|across|high|tall))", f.text)
+    total = int(count.group(1)) if count else None
+    if width is None and height is None:
+        height = WALL_DIMS[1]
+        width = max(2, total // height) if total else WALL_DIMS[0]
+    elif width is None:
+        width = max(2, total // height) if total and total > height else WALL_DIMS[0]
+    elif height is None:
+        height = max(1, total // width) if total and total > width else WALL_DIMS[1]
+    if total and total != width * height and (wide or high or dims):
+        raise ParseError(f"a wall {width} wide and {height} high has {width * height} cubes, not {total}")
+    _lattice(f, b, 1, width, height, f"a wall {width} cubes wide and {height} high ({width * height} cubes)")
+    return True
+
+
+def _lattice(f: Features, b: Builder, r: int, c: int, layers: int, what: str) -> None:
+    """A rows x cols x layers lattice of touching cubes (a 3D block, a wall)."""
     n = r * c * layers
     if n > C.MAX_OBJECTS:
-        raise ParseError(f"a {r}x{c}x{layers} block needs {n} cubes; the most a task holds is {C.MAX_OBJECTS}")
+        raise ParseError(f"{what.split(' (')[0].split(' of ')[0]} needs {n} cubes; the most a task holds is {C.MAX_OBJECTS}")
+    if n < 2:
+        raise ParseError("a structure of fewer than two cubes: give a larger size")
     per_layer = _per_layer(f)
     if per_layer:
         cols = _colors_for(layers, f, prefer=[c for c in dict.fromkeys(f.color_list())])
@@ -524,8 +605,7 @@ def recognize_cube_block(f: Features, b: Builder) -> bool:
         b.preds.append(LayersUniform(tuple(names), by="color", axis="z"))
         b.summary.append("each layer a different color")
     b.primitives += ["stack"]
-    b.summary.insert(0, f"a {r}x{c}x{layers} block of {n} cubes")
-    return True
+    b.summary.insert(0, what)
 
 
 def recognize_grid(f: Features, b: Builder) -> bool:
@@ -560,7 +640,9 @@ def recognize_circle(f: Features, b: Builder) -> bool:
 
 
 def recognize_piles(f: Features, b: Builder) -> bool:
-    if not f.has("pile", "piles", "bunch", "bunches", "group", "groups", "cluster", "clusters", "heap", "heaps"):
+    separate = re.search(r"\b(?:separate|split|divide)\b.*\b(?:from|by colou?r|into)\b", f.text)
+    if not (f.has("pile", "piles", "bunch", "bunches", "group", "groups", "cluster", "clusters", "heap", "heaps")
+            or separate):
         return False
     material = _material(f)
     groups: list[list[str]] = []
@@ -692,7 +774,7 @@ REL_PATTERNS: list[tuple[str, str]] = [
     (r"on (?:the )?right(?: hand)? side of|to the right of|on the right of|right of", "right_of"),
     (r"in front of", "in_front_of"),
     (r"behind|in back of|at the back of", "behind"),
-    (r"next to|beside|adjacent to|alongside", "next_to"),
+    (r"next to|beside|adjacent to|alongside|near|close to", "next_to"),
     (r"between", "between"),
     (r"under|underneath|beneath|below", "under"),
     (r"on top of|onto|on to|atop|above|on", "on"),
@@ -709,6 +791,37 @@ class Mention:
     patch: bool = False
     shape: str = "square"
     each_other: bool = False
+    ref: str | None = None
+    """``@s`` (the stack/tower the task builds), ``@it`` or ``@them`` (the previous
+    relation's object): a reference, resolved by :func:`recognize_relational`."""
+
+
+REF_PREP = r"\b(of|on|onto|to|beside|behind|near|under|below|beneath|above|atop|by|from|alongside|against)\s+"
+STRUCTURE_REF_RE = re.compile(
+    REF_PREP + r"(?:the|that|this|your)\s+(?:(?:same|new|finished|first|whole)\s+)?(?:stack|tower|pile|structure)\b"
+    r"(?:\s+of\s+(?:the\s+)?(?P<colors>(?:(?:" + COLOR_RE + r")(?:\s*,\s*(?:and\s+)?|\s+and\s+|\s+))*(?:"
+    + COLOR_RE + r"))(?:\s+(?:blocks|cubes))?\b)?")
+PRONOUN_REF_RE = re.compile(REF_PREP + r"(it|them)\b")
+REF_TOKEN_RE = re.compile(r"@(?:s|it|them)\b(?:\{[a-z,]*\})?")
+
+
+def _references(text: str) -> str:
+    """Mark the objects that refer back: "beside the stack" -> "beside @s", "in front of
+    it" -> "in front of @it" (only after a relation word, so "make it" stays as it is).
+    A described stack ("behind the tower of red and blue") keeps its colours as
+    ``@s{red,blue}``."""
+    def structure(m: re.Match) -> str:
+        colors = [_canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", m.group("colors") or "")]
+        return f"{m.group(1)} @s" + ("{" + ",".join(colors) + "}" if colors else "")
+
+    text = STRUCTURE_REF_RE.sub(structure, text)
+    return PRONOUN_REF_RE.sub(lambda m: f"{m.group(1)} @{m.group(2)}", text)
+
+
+def _structure_colors(text: str) -> list[str]:
+    """The colours of a described stack in marked text (``@s{red,blue}``), bottom to top."""
+    m = re.search(r"@s\{([a-z,]+)\}", text)
+    return m.group(1).split(",") if m else []
 
 
 MENTION_RE = re.compile(
@@ -723,7 +836,7 @@ MENTION_RE = re.compile(
 
 
 def _mentions(text: str) -> list[Mention]:
-    out = []
+    out = [Mention(m.start(), m.end(), None, None, 1, ref=m.group(0).split("{")[0]) for m in REF_TOKEN_RE.finditer(text)]
     for m in MENTION_RE.finditer(text):
         if m.group("bare"):
             out.append(Mention(m.start(), m.end(), _canon_color(m.group("bare")), None, 1))
@@ -737,13 +850,14 @@ def _mentions(text: str) -> list[Mention]:
             (m.group("label") or m.group("label2") or "").upper() or None, count,
             patch=noun.startswith("patch"), shape="long" if "long" in pre else "square",
         ))
-    return out
+    return sorted(out, key=lambda mn: mn.start)
 
 
 def recognize_relational(f: Features, b: Builder) -> bool:
     initial = _initial_clause(f.text)
     text = f.text if initial is None else (f.text[: initial[0]] + f.text[initial[1]:]).strip()
-    stackish = f.has("stack", "stacks", "stacked", "tower", "towers", "pile up")
+    text = _references(text)
+    stackish = bool(re.search(r"\b(?:stack|stacks|stacked|tower|towers|pile up)\b", text))
     if not (stackish or any(re.search(rf"\b(?:{p})\b", text) for p, _ in REL_PATTERNS)):
         return False
     # towers of several stacks: "two towers", "two stacks of red blocks", "stacks on matching patches"
@@ -759,6 +873,10 @@ def recognize_relational(f: Features, b: Builder) -> bool:
     onpatch: list[tuple[str, str]] = []
     bottom_top: dict[str, str] = {}
     sides: dict[str, str] = {}
+    on_structure: list[str] = []  # cubes put on the stack the task builds ("on top of the stack")
+    by_structure: list[tuple[str, str]] = []  # (relation, cube) relative to that stack ("beside the tower")
+    subjects: set[tuple] = set()  # (colour, label) of cubes placed by a relation
+    previous: list[str] = []  # [subject, object] of the last relation: what "it" refers to
 
     def obj(mn: Mention, i: int = 0) -> str:
         if mn.patch:
@@ -808,14 +926,49 @@ def recognize_relational(f: Features, b: Builder) -> bool:
                     onpatch.append(("*", obj(right[0])))
                 continue
             a_m, b_m = left[-1], right[0]
+            if a_m.ref:
+                continue
+            if b_m.ref == "@them" and not on_edges and previous:
+                b_m = Mention(b_m.start, b_m.end, None, None, 1, ref="@it")
+            elif b_m.ref == "@it" and not previous and stackish:  # "build a tower ... and put X behind it"
+                b_m = Mention(b_m.start, b_m.end, None, None, 1, ref="@s")
+            if b_m.ref in ("@s", "@them"):
+                if kind == "on":
+                    on_structure.append(obj(a_m))
+                elif kind not in ("under", "between"):
+                    by_structure.append((kind, obj(a_m)))
+                subjects.add((a_m.color, a_m.label))
+                continue
+            if b_m.ref == "@it":
+                if not previous:
+                    continue
+                referent = previous[0] if (kind == "on" and previous[1] in patch_names.values()) else previous[1]
+                a = obj(a_m)
+                subjects.add((a_m.color, a_m.label))
+                if referent in patch_names.values():
+                    onpatch.append((a, referent))
+                elif kind == "on":
+                    on_edges.append((a, referent))
+                elif kind == "under":
+                    on_edges.append((referent, a))
+                elif kind != "between":
+                    rels.append(_RELATIONS[kind](a, referent))
+                previous[:] = [a, referent]
+                continue
             if kind == "on" and b_m.patch and stackish:
                 onpatch.append(("*", obj(b_m)))
+                if a_m.color or a_m.label:  # a named cube that "it" may refer to next
+                    previous[:] = [obj(a_m), obj(b_m)]
                 continue
             if kind == "on" and b_m.patch:
                 for i in range(a_m.count):
                     onpatch.append((obj(a_m, i), obj(b_m)))
+                previous[:] = [obj(a_m), obj(b_m)]
                 continue
             a, c = obj(a_m), obj(b_m)
+            previous[:] = [a, c]
+            if kind != "on":
+                subjects.add((a_m.color, a_m.label))
             if kind == "on":
                 on_edges.append((a, c))
             elif kind == "under":
@@ -825,23 +978,26 @@ def recognize_relational(f: Features, b: Builder) -> bool:
                     continue
                 rels.append(Between(a, c, obj(right[1])))
             else:
-                cls = {"left_of": LeftOf, "right_of": RightOf, "in_front_of": InFrontOf, "behind": Behind, "next_to": NextTo}[kind]
-                rels.append(cls(a, c))
+                rels.append(_RELATIONS[kind](a, c))
     if "bottom" in bottom_top and "top" in bottom_top:
         on_edges.append((bottom_top["top"], bottom_top["bottom"]))
     if "left" in sides and "right" in sides and sides["left"] != sides["right"]:
         rels.append(LeftOf(sides["left"], sides["right"]))
     # a bare "stack N blocks" / "stack blocks on the patch"
     if stackish and not on_edges:
-        ms = [m for m in _mentions(text) if not m.patch]
+        ms = [m for m in _mentions(text) if not m.patch and not m.ref and (m.color, m.label) not in subjects]
         n = _count(f, default=None) or (max(m.count for m in ms) if ms else 2)
         n = max(n, 2)
         if ms and ms[0].color and all(m.color == ms[0].color for m in ms):
             names = [obj(ms[0], i) for i in range(n)]
+        elif len(ms) > n and len({(m.color, m.label) for m in ms}) == len(ms):  # "a tower of red, green and blue"
+            names = [obj(m) for m in ms]
         else:
             cols = _colors_for(n, f)
             names = [obj(Mention(0, 0, c, None, 1)) for c in cols]
         on_edges += [(u, lo) for lo, u in zip(names, names[1:], strict=False)]
+    if on_structure or by_structure:
+        _resolve_structure(b, objects, on_edges, rels, on_structure, by_structure, _structure_colors(text))
     if not on_edges and not rels and not onpatch:
         return False
     if any(a == "*" for a, _ in onpatch) or (stackish and onpatch):
@@ -873,6 +1029,34 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         b.structures.append([by_color[bottom], by_color[top]])
         b.summary.append(f"initially {top} is stacked on {bottom}")
     return True
+
+
+_RELATIONS = {"left_of": LeftOf, "right_of": RightOf, "in_front_of": InFrontOf, "behind": Behind, "next_to": NextTo}
+
+
+def _resolve_structure(b: Builder, objects: dict, on_edges: list, rels: list, on_structure: list[str],
+                       by_structure: list[tuple[str, str]], colors: list[str]) -> None:
+    """Resolve "the stack" / "the tower": the tallest tower the instruction builds, or,
+    when it builds none, the tower it describes ("the tower of red and blue", bottom to
+    top), or else a two-cube tower of colours it does not use (the stack the sentence
+    takes for granted).  Cubes put "on the stack" go on its top, in order; relations
+    "beside the tower" are taken to its base."""
+    chains = _chains(on_edges) or []
+    subjects = set(on_structure) | {c for _, c in by_structure}
+    tall = sorted((ch for ch in chains if len(ch) > 1 and not subjects & set(ch)), key=len, reverse=True)
+    if tall:
+        tower = tall[0]
+    else:
+        tower = [b.cube(c) for c in colors] if len(colors) >= 2 else []
+        while len(tower) < 2:
+            tower.append(b.cube(colors[0] if colors and not tower else _next_default(b, objects)))
+        on_edges += [(up, lo) for lo, up in itertools.pairwise(tower)]
+    top = tower[-1]
+    for cube in on_structure:
+        on_edges.append((cube, top))
+        top = cube
+    for kind, cube in by_structure:
+        rels.append(_RELATIONS[kind](cube, tower[0]))
 
 
 def _next_default(b: Builder, objects: dict) -> str:
@@ -1018,6 +1202,52 @@ SEQ_RELATION_RE = re.compile(r"\b(?:on top of|onto|on|atop|above|over|under|unde
 SEQ_HINT_RE = re.compile(r"\b(?:on|at|as)\s+(?:the\s+)?(?:very\s+)?(bottom|base|top)\b(?!\s+of)")
 
 
+SORTED_TOWER_DEFAULT = 4
+"""Cubes in a sorted tower of letters or digits when the instruction gives no count."""
+
+
+def _tower_order(f: Features) -> bool | None:
+    """Whether a sorted tower descends from the bottom up (largest at the bottom); None
+    when the text gives no order.  Reads "in increasing order", "from largest to smallest
+    going up", "with the smallest at the bottom", "A on the bottom", "1 on top"."""
+    small = r"(?:smallest|lowest|least|first|a|1|0)"
+    large = r"(?:largest|highest|biggest|greatest|last|z|9)"
+    where = r"\s+(?:\w+\s+){0,2}?(?:on|at)\s+(?:the\s+)?(?:very\s+)?"
+    for pattern, desc in ((small + where + r"(?:bottom|base)\b", False), (large + where + r"(?:bottom|base)\b", True),
+                          (small + where + r"top\b", True), (large + where + r"top\b", False)):
+        if re.search(r"\b" + pattern, f.text):
+            return desc
+    order = _ordering(f)
+    if order is None:
+        return None
+    return order[1] != bool(re.search(r"\btop to bottom\b|\bgoing down\b|\bdownwards?\b", f.text))
+
+
+def recognize_sorted_tower(f: Features, b: Builder) -> bool:
+    """A tower of letter or digit cubes in sorted order ("stack the number blocks in
+    increasing order from bottom to top", "a tower of letters with A at the bottom").
+    The order is bottom to top; labels face every side, so the front reads it."""
+    if not f.has("stack", "tower", "stacked") or f.has("towers", "stacks", "patch", "patches", "pyramid", "each other"):
+        return False
+    material = _material(f)
+    if material not in ("letters", "digits") or _explicit_labels(f) or _word(f):
+        return False
+    descending = _tower_order(f)
+    if descending is None:
+        return False
+    n = _count(f, default=None) or SORTED_TOWER_DEFAULT
+    labels, strict = label_sequence(material, n, b, ordered=True)
+    if descending:
+        labels.reverse()
+    names = [b.semantic(lab) for lab in labels]
+    b.place(stack_layout(names, C.WORKSPACE_CENTER))
+    b.preds.append(Stack(tuple(names)))
+    b.primitives += ["stack"]
+    kind = "letters" if material == "letters" else "digits"
+    b.summary.append(f"a tower of {kind} {'descending' if descending else 'ascending'} from bottom to top: " + ", ".join(labels))
+    return True
+
+
 def recognize_tower_sequence(f: Features, b: Builder) -> bool:
     """One tower given as a sequence of cubes: "a tower from bottom to top: red, blue,
     letter 'A'", "a tower of red, green and blue blocks", "red at the bottom, then green,
@@ -1025,6 +1255,8 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
     Listing order is bottom to top unless the text says "top to bottom" or marks a cube
     "on top" / "at the bottom"."""
     if not f.has("stack", "tower", "stacked") or f.has("towers", "stacks", "each other", "patch", "patches", "pyramid"):
+        return False
+    if "@" in _references(f.text):  # "... and a red block beside the stack": relations, not one tower
         return False
     text = SEQ_HINT_RE.sub(lambda m: f" <{m.group(1)}> ", f.text)
     mentions = list(ITEM_RE.finditer(text))
@@ -1074,9 +1306,9 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
 
 
 RECOGNIZERS = (
-    recognize_temporal, recognize_matching_patches, recognize_rotate, recognize_equation, recognize_spell, recognize_pyramid,
-    recognize_cube_block, recognize_grid, recognize_circle, recognize_piles, recognize_ordered_line,
-    recognize_tower_sequence, recognize_relational,
+    recognize_temporal, recognize_each_patch, recognize_matching_patches, recognize_rotate, recognize_equation, recognize_spell, recognize_pyramid,
+    recognize_cube_block, recognize_wall, recognize_grid, recognize_circle, recognize_piles, recognize_ordered_line,
+    recognize_sorted_tower, recognize_tower_sequence, recognize_relational,
 )
 
 
