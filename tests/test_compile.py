@@ -254,6 +254,17 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     ("Separate the red blocks from the blue blocks", "2 separate piles, one per color"),
     ("Put the green block close to the yellow block", "green next to yellow"),
     ("Put teh red block on the blue block", "tower bottom to top: blue, red"),
+    ("Build a three-block tower", "tower bottom to top: red, blue, green"),
+    ("Build a tower of two blue blocks and one red block on top", "tower bottom to top: blue_1, blue_2, red"),
+    ("Make a triangle out of three blocks", "a 2D pyramid with a base of 2 (3 cubes)"),
+    ("Build a 4-layer pyramid", "a 2D pyramid with a base of 4 (10 cubes)"),
+    ("Use letter cubes to write the word SUN", "the cubes spell 'SUN' left to right in a line"),
+    ("Line the digit cubes up from 9 down to 5", "up faces read 9, 8, 7, 6, 5 left to right"),
+    ("Place the cube labeled 7 on the red patch", "digit_7 on red_patch"),
+    ("Arrange the red, blue and green blocks in a line with blue in the middle",
+     "3 cubes in one straight left-right line with blue in the middle"),
+    ("Arrange the cubes so the numbers increase from left to right",
+     "4 cubes in a line in increasing numerical order left to right"),
 ])
 def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     assert parse(text).goal_summary == summary

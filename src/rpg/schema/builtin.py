@@ -78,7 +78,8 @@ shown kind type types by-color own its corresponding respectively per contain co
 plus minus equals times operator operators symbol symbols mixed upright hold holds just only now want like
 out smallest largest lowest highest biggest least greatest marked labelled labeled showing
 alternating alternate alternately alternates going goes go way up down upward downward stand standing
-wall walls wide deep long split divide pillar column close far
+wall walls wide deep long split divide pillar column close far triangle triangular formation write writes
+writing addition subtraction multiplication increase increases decrease decreases tier tiers
 """.split())
 """Words the builtin front end understands (besides colours, numbers and labels)."""
 
@@ -163,6 +164,7 @@ def normalize(instruction: str) -> tuple[str, str]:
     for w, n in NUMBER_WORDS.items():
         text = re.sub(rf"\b{w}\b", str(n), text)
     text = re.sub(r"\bgrey\b", "gray", text)
+    text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall|tier)", r"\1 \2", text)
     return " ".join(text.split()), original
 
 
@@ -460,19 +462,24 @@ def _explicit_labels(f: Features) -> list[str]:
         m = re.search(r"\b([A-Z0-9])((?:(?:\s*,\s*|\s+and\s+|\s*,\s*and\s+)[A-Z0-9]){1,})\b", f.original)
     if m:
         return [m.group(1)] + re.findall(r"[A-Z0-9]", m.group(2))
-    r = re.search(r"\b([A-Z]|\d)\s+(?:to|through|thru)\s+([A-Z]|\d)\b", f.original)
-    if r and r.group(1).isdigit() == r.group(2).isdigit() and ord(r.group(1)) < ord(r.group(2)):
-        return [chr(c) for c in range(ord(r.group(1)), ord(r.group(2)) + 1)]
+    r = re.search(r"\b([A-Z]|\d)\s+(?:down\s+|up\s+)?(?:to|through|thru)\s+([A-Z]|\d)\b", f.original)
+    if r and r.group(1).isdigit() == r.group(2).isdigit():
+        lo, hi = ord(r.group(1)), ord(r.group(2))
+        if lo < hi:
+            return [chr(c) for c in range(lo, hi + 1)]
+        if lo > hi and f.has("letter", "letters", "number", "numbers", "digit", "digits", "label", "labels"):
+            return [chr(c) for c in range(lo, hi - 1, -1)]  # "from 9 down to 5"
     return []
 
 
 def _ordering(f: Features) -> tuple[str, bool] | None:
     """(sort key, descending) asked for, if any."""
-    desc = f.has("reverse", "reversed", "descending", "decreasing", "backwards") or bool(
+    desc = f.has("reverse", "reversed", "descending", "decreasing", "decrease", "decreases", "backwards") or bool(
         re.search(r"\b(?:largest|highest|biggest|greatest)(?: number| digit| value)? to (?:smallest|lowest|least)\b", f.text))
     if f.has("alphabetical", "alphabetically", "alphabet"):
         return "label", desc
-    if f.has("numerical", "numerically", "increasing", "ascending", "decreasing", "descending", "numeric") or re.search(
+    if f.has("numerical", "numerically", "increasing", "ascending", "decreasing", "descending", "numeric",
+             "increase", "increases", "decrease", "decreases") or re.search(
             r"\b(?:smallest|lowest|least|largest|highest|biggest|greatest)(?: number| digit| value)? to "
             r"(?:largest|highest|biggest|greatest|smallest|lowest|least)\b", f.text):
         return "number", desc
@@ -482,14 +489,18 @@ def _ordering(f: Features) -> tuple[str, bool] | None:
 
 
 def recognize_pyramid(f: Features, b: Builder) -> bool:
-    if not f.has("pyramid", "pyramids"):
+    if not f.has("pyramid", "pyramids", "triangle", "triangular"):
         return False
     dims_m = re.search(r"\b(\d+)x(\d+)\b", f.text)
     if dims_m:
         base, dims = int(dims_m.group(1)), 3
     else:
         m = re.search(r"base\s+(?:of\s+|is\s+|with\s+)?(\d+)", f.text) or re.search(r"(\d+)\s+(?:[a-z]+\s+){0,2}(?:block|cube)s?\s+(?:on|at|as|in)\s+(?:the\s+)?(?:base|bottom)", f.text)
-        base, dims = (int(m.group(1)) if m else 3), 2
+        layers = re.search(r"\b(\d+)\s+(?:layers?|levels?|tiers?|stor(?:y|ey|ies|eys))\b", f.text)
+        m = m or layers
+        total = _count(f, default=None)
+        from_total = next((k for k in range(2, 8) if k * (k + 1) // 2 == total), None) if total else None
+        base, dims = (int(m.group(1)) if m else from_total or 3), 2
     if base < 2:
         raise ParseError("a pyramid needs a base of at least 2")
     n = sum((base - k) ** (dims - 1) for k in range(base))
@@ -756,13 +767,20 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         what = {"label": "alphabetical", "number": "increasing numerical", "color": "color-gradient"}[key]
         b.summary.append(f"{n} cubes in a line in {'reverse ' if desc else ''}{what} order {direction.replace('_', ' ')}")
     else:
-        n = _count(f, default=4)
         distinct = list(dict.fromkeys(f.color_list()))
+        n = _count(f, default=len(distinct) if len(distinct) >= 2 else 4)
         names = [b.cube(c) for c in (distinct * n if len(distinct) == 1 else _colors_for(n, f))]
+        middle = re.search(rf"\b({COLOR_RE})\s+(?:block\s+|cube\s+)?(?:is\s+)?(?:in|at)\s+the\s+(?:middle|center|centre)\b", f.text)
+        mid = _canon_color(middle.group(1)) if middle else None
+        if mid and n == 3 and mid in distinct and len(distinct) == 3:  # "red, blue and green with blue in the middle"
+            ends = [nm for nm, c in zip(names, distinct, strict=True) if c != mid]
+            names = [ends[0], names[distinct.index(mid)], ends[1]]
+            b.preds.append(Between(names[1], names[0], names[2]))
         axis = "x" if f.has("vertical", "front to back", "depth") else "y"
         b.place(line_layout(names, axis=axis))
-        b.preds.append(InLine(tuple(names), axis=axis))
-        b.summary.append(f"{n} cubes in one straight {'left-right' if axis == 'y' else 'front-back'} line")
+        b.preds.insert(0, InLine(tuple(names), axis=axis))
+        b.summary.append(f"{n} cubes in one straight {'left-right' if axis == 'y' else 'front-back'} line"
+                         + (f" with {names[1]} in the middle" if len(b.preds) > 1 else ""))
     b.primitives += ["arrange"]
     return True
 
@@ -830,7 +848,8 @@ MENTION_RE = re.compile(
     r"(?:(?P<pre>long|square|target|goal|designated|color-specific|colored|matching)\s+){0,3}"
     r"(?:(?:letter|number|digit|semantic)\s+'?(?P<label>[a-z0-9])'?\s+(?:semantic\s+)?)?"
     r"(?P<noun>patch(?:es)?|blocks?|cubes?|boxes?)\b"
-    r"(?:\s+(?:with|showing|marked|labell?ed)\s+(?:with\s+)?(?:the\s+|an?\s+)?(?:letter|digit|number|label)\s+'?(?P<label2>[a-z0-9])'?(?![a-z0-9]))?"
+    r"(?:\s+(?:with|showing|marked|labell?ed)\s+(?:with\s+)?(?:the\s+|an?\s+)?(?:letter|digit|number|label)\s+'?(?P<label2>[a-z0-9])'?(?![a-z0-9])"
+    r"|\s+(?:labell?ed|marked)\s+(?:with\s+)?'?(?P<label3>[a-z0-9])'?(?![a-z0-9]))?"
     r"|\b(?P<bare>" + COLOR_RE + r")\b(?!\s+(?:block|cube|box|patch|long|square|goal|target))"
 )
 
@@ -847,7 +866,7 @@ def _mentions(text: str) -> list[Mention]:
         pre = m.group(0)
         out.append(Mention(
             m.start(), m.end(), _canon_color(m.group("color")) if m.group("color") else None,
-            (m.group("label") or m.group("label2") or "").upper() or None, count,
+            (m.group("label") or m.group("label2") or m.group("label3") or "").upper() or None, count,
             patch=noun.startswith("patch"), shape="long" if "long" in pre else "square",
         ))
     return sorted(out, key=lambda mn: mn.start)
@@ -1271,6 +1290,9 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         if hint and item in items:  # "... with yellow at the bottom": a hint about a listed cube
             hints[items.index(item)] = hint.group(1)
             continue
+        count = re.search(r"\b(\d+)\s+$", text[max(0, m.start() - 4): m.start()]) if not m.group("label") else None
+        for _ in range(int(count.group(1)) - 1 if count and 1 < int(count.group(1)) <= 6 else 0):
+            items.append(item)  # "two blue blocks and one red block on top"
         if hint:
             hints[len(items)] = hint.group(1)
         items.append(item)
