@@ -10,11 +10,11 @@ import pytest
 import yaml
 
 from rpg.compiler import compile_instruction
+from rpg.schema.builtin import parse
 from rpg.steer import Family, SteerError, create_family, steer
 from rpg.steer.edits import apply_ops, interpret
 from rpg.steer.session import goal_tower, run_session
 from rpg.steer.spec import Item, TaskSpec, extract, render
-from rpg.schema.builtin import parse
 
 ROOT = Path(__file__).resolve().parents[1]
 SEEDS = ROOT.parent / "shared" / "seed-cases.yaml"
@@ -315,3 +315,27 @@ def test_paraphrased_benchmark_edits():
     assert [i.phrase() for i in flipped.items] == ["yellow", "blue", "red", "letter 'A'"]
     revert = interpret("Revert to the red and blue tower and add a purple block")
     assert (revert.cue.kind, revert.cue.colors, [o.op for o in revert.ops]) == ("search", ("red", "blue"), ["add"])
+
+
+def test_edits_of_a_relation_task_change_the_relation(tmp_path):
+    """A pairwise-relation task steered in its own terms: "it", "instead", "the other side",
+    "swap them"; a relation change of the same cubes is a Modify."""
+    fam = compile_instruction("Place the red block behind the yellow block", tmp_path).path
+    steps = [("Put it in front instead", "red in front of yellow"),
+             ("Move it to the left", "red left of yellow"),
+             ("Swap them", "yellow left of red"),
+             ("Move it to the other side", "yellow right of red"),
+             ("Put the yellow block on top of the red block", "tower bottom to top: red, yellow")]
+    for edit, summary in steps:
+        r = steer(fam, edit)
+        assert r.valid and r.intent == "modify", (edit, r.intent, r.notes)
+        assert r.compile.schema.goal_summary == summary, edit
+    r = steer(fam, "Put it next to the red block instead")  # "it": the yellow block on top
+    assert r.compile.schema.goal_summary == "yellow next to red"
+    r = steer(fam, "Add a green block behind it")  # brings in a cube: an Extend
+    assert (r.intent, r.valid) == ("extend", True)
+    assert r.compile.schema.goal_summary == "yellow next to red; green behind yellow"
+    fam2 = compile_instruction("Stack the red block on top of the yellow block", tmp_path / "stack").path
+    r = steer(fam2, "Add a blue block to the left of them")
+    assert (r.intent, r.valid) == ("extend", True), r.notes
+    assert r.compile.schema.goal_summary == "tower bottom to top: yellow, red; blue left of yellow"

@@ -79,7 +79,8 @@ plus minus equals times operator operators symbol symbols mixed upright hold hol
 out smallest largest lowest highest biggest least greatest marked labelled labeled showing
 alternating alternate alternately alternates going goes go way up down upward downward stand standing
 wall walls wide deep long split divide pillar column close far triangle triangular formation write writes
-writing addition subtraction multiplication increase increases decrease decreases tier tiers
+writing addition subtraction multiplication increase increases decrease decreases tier tiers instead actually
+rather
 """.split())
 """Words the builtin front end understands (besides colours, numbers and labels)."""
 

@@ -39,6 +39,8 @@ from rpg.steer.edits import (
     strip_edit_words,
 )
 from rpg.steer.family import Family, FamilyHistory, code_hash, create_family, is_family, snapshot_of
+from rpg.steer.relations import relation_of, same_assets
+from rpg.steer.relations import rewrite as rewrite_relation
 from rpg.steer.spec import TaskSpec, extract, render
 
 
@@ -142,13 +144,20 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         SteerError: the edit does not apply to the reference task.
         ParseError / InfeasibleTask: the resulting task cannot be read or realised.
     """
+    relational = None if plan.fresh or reference is None else rewrite_relation(plan.text, fam.schema(reference))
+    if relational is not None:  # "put it in front instead", "swap them": the reference's relation, changed
+        instruction, intent = relational
+        return parse(instruction), instruction, intent
     if plan.standalone:
         text = strip_edit_words(plan.text)
         schema = parse(text)
         if plan.fresh:
             return schema, text, "fresh"
-        ref_spec = _spec_of(fam, reference)[1]
-        return schema, text, intent_of_standalone(extract(schema), ref_spec)
+        ref_schema, ref_spec = _spec_of(fam, reference)
+        new_spec = extract(schema)
+        if relation_of(schema) and relation_of(ref_schema) and same_assets(schema, ref_schema):
+            return schema, text, "modify"  # the same cubes in another relation
+        return schema, text, intent_of_standalone(new_spec, ref_spec)
     ref_schema, ref_spec = _spec_of(fam, reference)
     if ref_spec is None and plan.ops and all(o.op == "recolor" and "color" in o.params["select"] for o in plan.ops):
         schema = ref_schema

@@ -1,0 +1,147 @@
+"""Edits of pairwise-relation tasks ("place the red block behind the yellow block").
+
+A relation task has no :class:`~rpg.steer.spec.TaskSpec`; its edits usually speak in
+its own terms: "put it in front instead", "move it to the other side", "swap them",
+"put the red block on top of it".  :func:`rewrite` reads the reference task's relation
+(subject, relation, object) and states the edited task as a whole instruction, which
+the builtin parser then compiles like any other.  Paper: Methods, steering (Modify edits
+change a relation within the same assets).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from rpg.domain.predicates import And, Behind, InFrontOf, LeftOf, NextTo, Predicate, RightOf, Stack
+from rpg.schema.model import TaskSchema
+
+PHRASES = {"left_of": "to the left of", "right_of": "to the right of", "in_front_of": "in front of",
+           "behind": "behind", "next_to": "next to", "on": "on top of"}
+"""How a canonical instruction states each relation."""
+
+OPPOSITE = {"left_of": "right_of", "right_of": "left_of", "in_front_of": "behind", "behind": "in_front_of",
+            "on": "under", "under": "on"}
+
+EDIT_RELATIONS = (  # the relation an edit names, most specific first
+    (r"\b(?:to the |on the )?left\b", "left_of"),
+    (r"\b(?:to the |on the )?right\b", "right_of"),
+    (r"\bin front\b|\bfront\b", "in_front_of"),
+    (r"\bbehind\b|\bin back\b|\bto the back\b", "behind"),
+    (r"\bnext to\b|\bbeside\b|\badjacent\b|\bnear\b|\bclose to\b", "next_to"),
+    (r"\bunder(?:neath)?\b|\bbelow\b|\bbeneath\b", "under"),
+    (r"\bon top\b|\bonto\b|\batop\b|\bstack(?:ed|ing)?\b|\bon (?:it|them|the \w+ (?:block|cube))\b", "on"),
+)
+
+
+ADDS_RE = re.compile(r"\b(?:add|another|new|extra|more|one more|also)\b|\ban? (?:\w+ )?(?:block|cube)\b")
+"""An edit that brings in a cube (an Extend): not a change of the relation."""
+
+
+def same_assets(a: TaskSchema, b: TaskSchema) -> bool:
+    """Whether two tasks use the same cubes and patches (kinds, colours, labels)."""
+    def sig(s: TaskSchema) -> list[tuple]:
+        return sorted((x.kind, x.color or "", x.label or "") for x in s.assets)
+
+    return sig(a) == sig(b)
+
+
+@dataclass(frozen=True)
+class Relation:
+    """The reference task's one relation: ``subject`` REL ``object`` (asset names)."""
+
+    subject: str
+    kind: str
+    object: str
+
+
+def relation_of(schema: TaskSchema) -> Relation | None:
+    """The single pairwise relation a task is about (a two-cube stack counts as ``on``);
+    None when the task has none or several."""
+    goal = schema.goal_predicate()
+    parts: list[Predicate] = list(goal.children()) if isinstance(goal, And) else [goal]
+    kinds = {LeftOf: "left_of", RightOf: "right_of", InFrontOf: "in_front_of", Behind: "behind", NextTo: "next_to"}
+    found = []
+    for p in parts:
+        if type(p) in kinds:
+            found.append(Relation(p.a, kinds[type(p)], p.b))
+        elif isinstance(p, Stack) and len(p.objects) == 2:
+            found.append(Relation(p.objects[1], "on", p.objects[0]))
+        else:
+            return None
+    return found[0] if len(found) == 1 else None
+
+
+def _phrase(schema: TaskSchema, name: str) -> str:
+    asset = next(a for a in schema.assets if a.name == name)
+    if asset.kind == "semantic_cube":
+        return f"the block with the {'digit' if (asset.label or '').isdigit() else 'letter'} {asset.label}"
+    return f"the {asset.color} block"
+
+
+def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
+    """The whole-task instruction an edit of a relation task means and its intent, or None
+    when the edit is not about that relation.
+
+    Reads: a new relation for the same cubes ("put it in front instead", "move the red
+    block to the left"), "the other side" / "the opposite side", and "swap them" /
+    "switch places" (Modify); and a cube added in relation to one of the two ("add a
+    green block next to it", Extend).  "it" is the reference's subject; a relation
+    without an object ("in front") is taken relative to the reference's object.
+    """
+    rel = relation_of(schema)
+    t = " " + edit.lower().strip().rstrip(".!") + " "
+    if rel is None:
+        return None
+    if ADDS_RE.search(t):
+        return _added(t, schema, rel)
+    subject, obj = rel.subject, rel.object
+    if re.search(r"\b(?:swap|switch|exchange|trade)\b.*\b(?:them|places|positions|roles|blocks|cubes|the two)\b", t):
+        subject, obj = obj, subject
+        kind = rel.kind
+    elif re.search(r"\b(?:other|opposite)\s+side\b", t):
+        kind = OPPOSITE.get(rel.kind)
+        if kind is None:
+            return None
+    else:
+        kind = next((k for pattern, k in EDIT_RELATIONS if re.search(pattern, t)), None)
+        named = re.findall(r"\bthe (\w+) (?:block|cube)\b", t)
+        by_color = {a.color: a.name for a in schema.assets if a.kind == "colored_cube"}
+        if kind is None or len(named) > 1 or (named and named[0] not in by_color):
+            return None  # no relation, or cubes of its own: a whole task, not an edit of this one
+        pronoun = re.search(r"\b(?:it|them)\b", t)
+        if named and not pronoun and by_color[named[0]] == obj:  # "move the yellow block behind": the subject now
+            subject, obj = obj, subject
+        if (subject, kind) == (rel.subject, rel.kind):
+            return None
+    if kind == "under":
+        subject, obj, kind = obj, subject, "on"
+    return f"Place {_phrase(schema, subject)} {PHRASES[kind]} {_phrase(schema, obj)}", "modify"
+
+
+def _added(t: str, schema: TaskSchema, rel: Relation) -> tuple[str, str] | None:
+    """"Add a green block next to it": the reference's relation, then the new cube's."""
+    from rpg.schema.builtin import COLOR_RE, _canon_color
+
+    m = re.search(rf"\b(?:an?|another|one more|a new|an extra)\s+(?:new\s+|extra\s+)?({COLOR_RE})\s+(?:block|cube)\b(.*)", t)
+    if m is None:
+        return None
+    color, rest = _canon_color(m.group(1)), m.group(2)
+    if any(a.color == color for a in schema.assets):
+        return None  # a second cube of a colour the task has: left to the whole-task reading
+    kind = next((k for pattern, k in EDIT_RELATIONS if re.search(pattern, rest)), None)
+    if kind is None:
+        return None
+    by_color = {a.color: a.name for a in schema.assets if a.kind == "colored_cube"}
+    named = re.findall(r"\bthe (\w+) (?:block|cube)\b", rest)
+    if named:
+        if named[0] not in by_color:
+            return None
+        target = by_color[named[0]]
+    else:
+        target = rel.object if re.search(r"\bthem\b", rest) and rel.kind == "on" else rel.subject
+    first = (f"Place {_phrase(schema, rel.subject)} {PHRASES[rel.kind]} {_phrase(schema, rel.object)}"
+             if rel.kind != "on" else f"Stack {_phrase(schema, rel.subject)} on {_phrase(schema, rel.object)}")
+    if kind == "under" or (kind == "on" and rel.kind == "on"):
+        return None  # growing a tower is the tower's own edit (its spec)
+    return f"{first}, then place the {color} block {PHRASES[kind]} {_phrase(schema, target)}", "extend"
