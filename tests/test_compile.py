@@ -265,6 +265,8 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
      "3 cubes in one straight left-right line with blue in the middle"),
     ("Arrange the cubes so the numbers increase from left to right",
      "4 cubes in a line in increasing numerical order left to right"),
+    ("Place the red block and the blue block onto the gray goal patch", "red on gray_patch; blue on gray_patch"),
+    ("Place the red block onto the long green goal patch", "red on green_long_patch"),
 ])
 def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     assert parse(text).goal_summary == summary
@@ -276,6 +278,8 @@ def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     "Build a wall 4 blocks wide and 2 blocks high",
     "Stack the letter blocks in alphabetical order with A at the bottom",
     "Place a block on each of the three goal patches",
+    "Place three blocks onto the goal patch",  # two rows on a square patch
+    "Put 7 blocks on the long goal patch",
 ])
 def test_new_phrasings_compile_to_valid_tasks(text, tmp_path):
     r = compile_instruction(text, tmp_path)
@@ -285,6 +289,8 @@ def test_new_phrasings_compile_to_valid_tasks(text, tmp_path):
 def test_parser_refuses_rather_than_drop_a_named_cube():
     with pytest.raises(ParseError, match="purple"):
         parse("Stack the red block on the blue block and the purple block")
+    with pytest.raises(ParseError, match="5 cubes do not fit on one square goal patch"):
+        parse("Put 5 blocks on the goal patch")
     with pytest.raises(ParseError, match="wall 4 wide and 2 high has 8 cubes, not 6"):
         parse("Build a wall of 6 blocks, 4 wide and 2 high")
     schema = parse("Form a straight line of four blue blocks")

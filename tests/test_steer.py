@@ -339,3 +339,25 @@ def test_edits_of_a_relation_task_change_the_relation(tmp_path):
     r = steer(fam2, "Add a blue block to the left of them")
     assert (r.intent, r.valid) == ("extend", True), r.notes
     assert r.compile.schema.goal_summary == "tower bottom to top: yellow, red; blue left of yellow"
+
+
+def test_edits_of_a_patch_task(tmp_path):
+    """Cubes on one goal patch, steered in its own terms: the patch's colour and shape, the
+    number of cubes (Tweak), a named cube added (Extend); the cubes keep their colours."""
+    fam = compile_instruction("Place both blocks onto the goal patch", tmp_path).path
+    steps = [("Make the patch green", "tweak", "red on green_patch; blue on green_patch"),
+             ("Use three blocks", "tweak", "red on green_patch; blue on green_patch; green on green_patch"),
+             ("Make the patch long", "tweak", "red on green_long_patch; blue on green_long_patch; green on green_long_patch"),
+             ("Add a purple block", "extend",
+              "red on green_long_patch; blue on green_long_patch; green on green_long_patch; purple on green_long_patch")]
+    for edit, intent, summary in steps:
+        r = steer(fam, edit)
+        assert (r.intent, r.valid) == (intent, True), (edit, r.intent, r.notes)
+        assert r.compile.schema.goal_summary == summary, edit
+
+
+def test_a_spelled_word_reversed_by_an_edit(tmp_path):
+    fam = compile_instruction("Spell CAT with letter cubes", tmp_path).path
+    r = steer(fam, "Spell it backwards")
+    assert (r.intent, r.valid) == ("modify", True)
+    assert r.compile.schema.goal_summary == "the cubes spell 'TAC' left to right in a line"

@@ -80,7 +80,7 @@ out smallest largest lowest highest biggest least greatest marked labelled label
 alternating alternate alternately alternates going goes go way up down upward downward stand standing
 wall walls wide deep long split divide pillar column close far triangle triangular formation write writes
 writing addition subtraction multiplication increase increases decrease decreases tier tiers instead actually
-rather
+rather backwards backward
 """.split())
 """Words the builtin front end understands (besides colours, numbers and labels)."""
 
@@ -844,7 +844,7 @@ def _structure_colors(text: str) -> list[str]:
 
 
 MENTION_RE = re.compile(
-    r"(?:\b(?P<count>\d+)\s+)?(?:\b(?:the|a|an|another|one)\s+)?"
+    r"(?:\b(?P<count>\d+)\s+)?(?:\b(?:the|a|an|another|one)\s+)?(?:long\s+(?=(?:" + COLOR_RE + r")\s+(?:goal\s+|target\s+)?patch))?"
     r"(?:(?P<color>" + COLOR_RE + r")\s+)?"
     r"(?:(?P<pre>long|square|target|goal|designated|color-specific|colored|matching)\s+){0,3}"
     r"(?:(?:letter|number|digit|semantic)\s+'?(?P<label>[a-z0-9])'?\s+(?:semantic\s+)?)?"
@@ -981,8 +981,14 @@ def recognize_relational(f: Features, b: Builder) -> bool:
                     previous[:] = [obj(a_m), obj(b_m)]
                 continue
             if kind == "on" and b_m.patch:
-                for i in range(a_m.count):
-                    onpatch.append((obj(a_m, i), obj(b_m)))
+                group = [a_m]
+                for mn in reversed(left[:-1]):  # "the red block, the blue block and the green block onto ..."
+                    if not re.fullmatch(r"\s*(?:,\s*and|,|and)\s*", clause[mn.end: group[0].start]) or mn.ref:
+                        break
+                    group.insert(0, mn)
+                for member in group:
+                    for i in range(member.count):
+                        onpatch.append((obj(member, i), obj(b_m)))
                 previous[:] = [obj(a_m), obj(b_m)]
                 continue
             a, c = obj(a_m), obj(b_m)
@@ -1144,10 +1150,8 @@ def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch:
         members = list(dict.fromkeys(members))
         px, py = patch_xy[p]
         shape = next(a.shape for a in b.assets if a.name == p)
-        span = (C.LONG_PATCH_SIZE[1] if shape == "long" else C.PATCH_SIZE[1]) - C.CUBE_EDGE
-        for i, m in enumerate(members):
-            off = 0.0 if len(members) == 1 else (i / (len(members) - 1) - 0.5) * min(span, C.CUBE_EDGE * 1.2 * (len(members) - 1))
-            placed[m] = (px, py + off)
+        for m, xy in zip(members, _patch_spots((px, py), shape, len(members)), strict=True):
+            placed[m] = xy
     free = [n for n in dict.fromkeys(base_of[n] for n in cube_names) if n not in placed]
     spots = iter(_free_spots(list(placed.values()) + list(patch_xy.values()), len(free)))
     for n in free:
@@ -1157,6 +1161,34 @@ def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch:
     for n in cube_names:
         if n not in b.layout:
             b.place(stack_layout([n], placed[base_of[n]]))
+
+
+PATCH_PITCH = 1.05 * C.CUBE_EDGE
+"""Centre spacing of cubes that share a goal patch in the goal layout, m (5% gap)."""
+
+
+def _patch_spots(center: tuple[float, float], shape: str, n: int) -> list[tuple[float, float]]:
+    """Goal positions of ``n`` cubes on one patch: a row along the patch's length while
+    they fit, else two rows (a square patch holds 2x2 cubes with their centres inside).
+
+    Raises:
+        ParseError: more cubes than the patch holds (the message says to use a long patch).
+    """
+    px, py = center
+    length = C.LONG_PATCH_SIZE[1] if shape == "long" else C.PATCH_SIZE[1]
+    per_row = int((length - C.CUBE_EDGE) / C.CUBE_EDGE + 1e-9) + 1  # one row: touching cubes end to end
+    rows = 1 if n <= per_row else 2
+    if n > 2 * per_row:
+        raise ParseError(f"{n} cubes do not fit on one {shape} goal patch (it holds {2 * per_row}); "
+                         "use a long patch or fewer cubes")
+    cols = -(-n // rows)
+    if n == 1:
+        return [(px, py)]
+    if rows == 1:
+        span = min(length - C.CUBE_EDGE, 1.2 * C.CUBE_EDGE * (n - 1))
+        return [(px, py + (i / (n - 1) - 0.5) * span) for i in range(n)]
+    return [(px + (r - 0.5) * PATCH_PITCH, py + (c - (cols - 1) / 2) * PATCH_PITCH)
+            for r in range(rows) for c in range(cols)][:n]
 
 
 def _free_spots(occupied: list[tuple[float, float]], n: int) -> list[tuple[float, float]]:

@@ -207,7 +207,8 @@ def read_ops(t: str) -> list[Op]:
         m = re.search(r"\b(\d+)\s+outliers?\b", t)
         ops.append(Op("outliers", {"per_pile": int(m.group(1)) if m else 1}))
     reverse = re.search(r"\b(?:flip|reverse|invert|mirror|swap)\b[^.;]*\border\b|\bupside down\b|\breverse(?:d)? order\b|"
-                        r"\b(?:flip|reverse|invert)\s+(?:it|them|the\s+(?:tower|stack|line|row|gradient|sequence|colou?rs|word))\b", t)
+                        r"\b(?:flip|reverse|invert)\s+(?:it|them|the\s+(?:tower|stack|line|row|gradient|sequence|colou?rs|word))\b"
+                        r"|\b(?:spell|write|read|arrange|put|place)\s+(?:it|them|the\s+word)\s+backwards?\b", t)
     if reverse:
         keep = re.search(r"\bkeep(?:ing)?\s+(?:the\s+)?(.+?)\s+(?:on top|at the top|in place|where it is|at the bottom|fixed)\b", t)
         kept = None

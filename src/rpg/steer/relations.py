@@ -145,3 +145,59 @@ def _added(t: str, schema: TaskSchema, rel: Relation) -> tuple[str, str] | None:
     if kind == "under" or (kind == "on" and rel.kind == "on"):
         return None  # growing a tower is the tower's own edit (its spec)
     return f"{first}, then place the {color} block {PHRASES[kind]} {_phrase(schema, target)}", "extend"
+
+
+def _patch_task(schema: TaskSchema) -> tuple[list[str], str, str] | None:
+    """(cube colours, patch colour, patch shape) of a task that puts coloured cubes on one
+    goal patch; None for any other task."""
+    from rpg.domain.predicates import OnPatch
+
+    goal = schema.goal_predicate()
+    parts = list(goal.children()) if isinstance(goal, And) else [goal]
+    patches = [a for a in schema.assets if a.kind == "goal_patch"]
+    if len(patches) != 1 or not parts or not all(isinstance(p, OnPatch) for p in parts):
+        return None
+    cubes = [a for a in schema.assets if a.kind != "goal_patch"]
+    if any(a.kind != "colored_cube" for a in cubes) or {p.a for p in parts} != {a.name for a in cubes}:
+        return None
+    return [a.color for a in cubes], patches[0].color, patches[0].shape
+
+
+def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
+    """Edits of a cubes-on-a-patch task in its own terms: the patch's colour ("make the
+    patch green") or shape ("make the patch long"), the number of cubes ("use three
+    blocks", Tweak) or a named cube added ("add a yellow block", Extend).  Returns the
+    whole-task instruction and the intent, or None."""
+    from rpg.schema.builder import DEFAULT_COLORS
+    from rpg.schema.builtin import COLOR_RE, _canon_color
+
+    task = _patch_task(schema)
+    if task is None:
+        return None
+    colors, pcolor, shape = task
+    t = " " + edit.lower().strip().rstrip(".!") + " "
+    intent = None
+    recolor = re.search(rf"\bpatch\b[^.;]*?\b(?:to|into|be|is)?\s*({COLOR_RE})\b|\b({COLOR_RE})\s+(?:goal\s+|target\s+)?patch\b", t)
+    if recolor and re.search(r"\b(?:make|change|turn|use|paint|color|colour|switch)\b", t):
+        new = _canon_color(recolor.group(1) or recolor.group(2))
+        if new != pcolor:
+            pcolor, intent = new, "tweak"
+    if re.search(r"\blong(?:er)?\b", t) and shape != "long":
+        shape, intent = "long", "tweak"
+    elif re.search(r"\b(?:square|short(?:er)?|small(?:er)?)\b", t) and shape != "square":
+        shape, intent = "square", "tweak"
+    count = re.search(r"\b(\d+|two|three|four|five|six)\s+(?:blocks|cubes)\b", t)
+    added = re.search(rf"\badd\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b", t)
+    if count:
+        n = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6}.get(count.group(1)) or int(count.group(1))
+        if not 1 <= n <= 6:
+            return None
+        spare = [c for c in DEFAULT_COLORS if c not in colors]
+        colors, intent = (colors + spare)[:n] if n > len(colors) else colors[:n], "tweak"
+    elif added:
+        colors, intent = colors + [_canon_color(added.group(1))], "extend"
+    if intent is None:
+        return None
+    cubes = [f"the {c} block" for c in colors]
+    listed = cubes[0] if len(cubes) == 1 else ", ".join(cubes[:-1]) + " and " + cubes[-1]
+    return f"Place {listed} onto the {pcolor}{' long' if shape == 'long' else ''} goal patch", intent

@@ -39,7 +39,7 @@ from rpg.steer.edits import (
     strip_edit_words,
 )
 from rpg.steer.family import Family, FamilyHistory, code_hash, create_family, is_family, snapshot_of
-from rpg.steer.relations import relation_of, same_assets
+from rpg.steer.relations import relation_of, rewrite_patch, same_assets
 from rpg.steer.relations import rewrite as rewrite_relation
 from rpg.steer.spec import TaskSpec, extract, render
 
@@ -144,7 +144,10 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         SteerError: the edit does not apply to the reference task.
         ParseError / InfeasibleTask: the resulting task cannot be read or realised.
     """
-    relational = None if plan.fresh or reference is None else rewrite_relation(plan.text, fam.schema(reference))
+    relational = None
+    if not plan.fresh and reference is not None:
+        ref = fam.schema(reference)
+        relational = rewrite_relation(plan.text, ref) or rewrite_patch(plan.text, ref)
     if relational is not None:  # "put it in front instead", "swap them": the reference's relation, changed
         instruction, intent = relational
         return parse(instruction), instruction, intent
