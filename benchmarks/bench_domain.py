@@ -2,11 +2,10 @@
 
 import time
 
+import mujoco
 from _report import report
 
 import rpg  # noqa: F401  (sets MUJOCO_GL=egl before mujoco loads)
-import mujoco
-
 from rpg.domain.assets import ColoredCube
 from rpg.domain.layouts import grid_layout
 from rpg.domain.render import render_image

@@ -9,7 +9,7 @@ from rpg.domain import constants as C
 from rpg.domain.assets import SemanticCube
 from rpg.domain.glyphs import FACE_NORMALS, FACES, GLYPH_UP, canonical_label, face_image
 from rpg.domain.render import render_image
-from rpg.domain.scene import Scene, look_at_quat
+from rpg.domain.scene import Scene
 
 LABELS = {"+x": "F", "-x": "R", "+y": "G", "-y": "J", "+z": "P", "-z": "L"}  # all asymmetric
 

@@ -11,7 +11,14 @@ from typer.testing import CliRunner
 from rpg import cli
 from rpg.compiler import compile_instruction, load_artifact
 from rpg.schema.builtin import parse
-from rpg.schema.llm import LLMClient, ModelOutputError, ProviderError, ReplayError, llm_parse, load_record
+from rpg.schema.llm import (
+    LLMClient,
+    ModelOutputError,
+    ProviderError,
+    ReplayError,
+    llm_parse,
+    load_record,
+)
 
 MODEL = "openai/gpt-4o-mini"
 ROOT_LIBRARY = __import__("pathlib").Path(__file__).resolve().parents[1] / "library"

@@ -2,17 +2,41 @@
 
 import math
 
+import numpy as np
 import pytest
 
 from rpg.domain import constants as C
 from rpg.domain.predicates import (
-    And, Behind, Between, Equation, Grid, InCircle, InFrontOf, InLine, InOrder, LabelFacing,
-    LayersUniform, LeftOf, NextTo, Not, On, OnPatch, OnTable, Piles, Pyramid, Reads, RightOf,
-    SortedBy, Stack, Upright, equation_holds, evaluate_goal, from_dict,
+    And,
+    Behind,
+    Between,
+    Equation,
+    Grid,
+    InCircle,
+    InFrontOf,
+    InLine,
+    InOrder,
+    LabelFacing,
+    LayersUniform,
+    LeftOf,
+    NextTo,
+    Not,
+    On,
+    OnPatch,
+    OnTable,
+    Piles,
+    Pyramid,
+    Reads,
+    RightOf,
+    SortedBy,
+    Stack,
+    Upright,
+    equation_holds,
+    evaluate_goal,
+    from_dict,
 )
 from rpg.domain.state import ObjectState, yaw_quat
-from tests.helpers import E, Z0, cube, state
-import numpy as np
+from tests.helpers import Z0, E, cube, state
 
 
 def patch(name, x, y, size=(0.08, 0.08)):

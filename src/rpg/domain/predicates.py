@@ -703,8 +703,8 @@ class Grid(Predicate):
             return self._result(False, f"a {self.rows}x{self.cols}x{self.layers} grid needs {n} objects, got {len(objs)}",
                                 {"count": len(objs)}, {"count": n})
         origin, pitch = _bottom_origin(objs)
-        sites = np.array([origin + [r * pitch, -c * pitch, l * pitch]
-                          for l in range(self.layers) for r in range(self.rows) for c in range(self.cols)])
+        sites = np.array([origin + [r * pitch, -c * pitch, layer * pitch]
+                          for layer in range(self.layers) for r in range(self.rows) for c in range(self.cols)])
         ok, worst, missing = _match_sites(objs, sites)
         table = abs(origin[2] - C.TABLE_TOP_Z - pitch / 2)
         ok = ok and table <= C.TABLE_Z_TOL

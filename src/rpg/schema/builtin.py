@@ -30,9 +30,26 @@ from rpg.domain.layouts import (
 )
 from rpg.domain.palette import COLOR_ALIASES, GRADIENT_ORDER, PALETTE
 from rpg.domain.predicates import (
-    Behind, Between, Equation, Grid, InCircle, InFrontOf, InLine, InOrder, LabelFacing,
-    LayersUniform, LeftOf, NextTo, OnPatch, OnTable, Piles, Pyramid, Reads, RightOf,
-    SortedBy, Stack,
+    Behind,
+    Between,
+    Equation,
+    Grid,
+    InCircle,
+    InFrontOf,
+    InLine,
+    InOrder,
+    LabelFacing,
+    LayersUniform,
+    LeftOf,
+    NextTo,
+    OnPatch,
+    OnTable,
+    Piles,
+    Pyramid,
+    Reads,
+    RightOf,
+    SortedBy,
+    Stack,
 )
 from rpg.domain.state import Pose
 from rpg.schema.builder import DEFAULT_COLORS, DEFAULT_PATCH_COLOR, Builder
