@@ -267,6 +267,12 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
      "4 cubes in a line in increasing numerical order left to right"),
     ("Place the red block and the blue block onto the gray goal patch", "red on gray_patch; blue on gray_patch"),
     ("Place the red block onto the long green goal patch", "red on green_long_patch"),
+    ("Pick up the red block and place it on the blue block.", "tower bottom to top: blue, red"),
+    ("Grab the yellow cube and put it on the green patch.", "yellow on green_patch"),
+    ("Place the blocks side by side", "red next to blue"),
+    ("Put the red and green blocks on top of each other", "tower bottom to top: red, green"),
+    ("Place the cubes in two rows of three", "a 2x3 grid of 6 touching cubes"),
+    ("Make a small pyramid", "a 2D pyramid with a base of 2 (3 cubes)"),
 ])
 def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     assert parse(text).goal_summary == summary

@@ -97,7 +97,7 @@ out smallest largest lowest highest biggest least greatest marked labelled label
 alternating alternate alternately alternates going goes go way up down upward downward stand standing
 wall walls wide deep long split divide pillar column close far triangle triangular formation write writes
 writing addition subtraction multiplication increase increases decrease decreases tier tiers instead actually
-rather backwards backward
+rather backwards backward pick grab take lift get lay drop small little tiny mini huge one
 """.split())
 """Words the builtin front end understands (besides colours, numbers and labels)."""
 
@@ -179,6 +179,9 @@ def normalize(instruction: str) -> tuple[str, str]:
     for w, r in fixed.items():
         text = re.sub(rf"\b{re.escape(w)}\b", r, text)
     text = re.sub(r"\bvertical (?:column|stack)\b|\bpillar\b", "tower", text)
+    text = re.sub(r"\b(?:pick up|grab|take|lift|get|pick)\s+(the\s+(?:[a-z0-9']+\s+){0,4}?(?:block|cube|box|one))\s+(?:up\s+)?"
+                  r"and\s+(?:then\s+)?(place|put|set|stack|move|drop|lay)\s+it\b", r"\2 \1", text)
+    text = re.sub(r"\bside by side\b", "next to each other", text)
     for w, n in NUMBER_WORDS.items():
         text = re.sub(rf"\b{w}\b", str(n), text)
     text = re.sub(r"\bgrey\b", "gray", text)
@@ -518,7 +521,8 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
         m = m or layers
         total = _count(f, default=None)
         from_total = next((k for k in range(2, 8) if k * (k + 1) // 2 == total), None) if total else None
-        base, dims = (int(m.group(1)) if m else from_total or 3), 2
+        size = 2 if f.has("small", "little", "tiny", "mini") else 4 if f.has("big", "large", "tall", "huge") else 3
+        base, dims = (int(m.group(1)) if m else from_total or size), 2
     if base < 2:
         raise ParseError("a pyramid needs a base of at least 2")
     n = sum((base - k) ** (dims - 1) for k in range(base))
@@ -639,10 +643,14 @@ def _lattice(f: Features, b: Builder, r: int, c: int, layers: int, what: str) ->
 
 def recognize_grid(f: Features, b: Builder) -> bool:
     m = re.search(r"\b(\d+)x(\d+)\b", f.text)
+    rows = re.search(r"\b(\d+)\s+rows\s+of\s+(\d+)\b", f.text)
+    if m is None and rows:
+        m = re.search(r"(\d+)x(\d+)", f"{rows.group(1)}x{rows.group(2)}")
     if m is None and re.search(r"\b(?:a|the)\s+(?:[a-z]+\s+)?(?:square|grid)\b(?!\s+patch)", f.text) and not f.has("patch", "patches"):
         side = max(2, round(math.sqrt(_count(f, default=4))))
         m = re.search(r"(\d+)x(\d+)", f"{side}x{side}")
-    if not m or not f.has("square", "grid", "rectangle", "rectangular", "array", "block", "blocks", "cubes", "arrangement", "formation"):
+    if not m or not (rows or f.has("square", "grid", "rectangle", "rectangular", "array", "block", "blocks", "cubes", "arrangement",
+                                   "formation")):
         return False
     r, c = int(m.group(1)), int(m.group(2))
     n = r * c
@@ -951,12 +959,18 @@ def recognize_relational(f: Features, b: Builder) -> bool:
                 continue
             if kind == "on" and re.match(r"(?:the\s+)?(?:table|bottom|base|top\b(?!\s+of))", after):
                 continue
-            if kind == "on" and re.match(r"each other|one another|top of each other|itself", after):
+            if kind in ("on", "next_to") and re.match(r"each other|one another|top of each other|itself", after):
                 if left:
-                    mn = left[-1]
-                    n = max(mn.count, 2)
-                    names = [obj(mn, i) for i in range(n)]
-                    on_edges += [(u, lo) for lo, u in zip(names, names[1:], strict=False)]
+                    group = _listed_group(clause, left)
+                    if len(group) > 1:  # "the red and green blocks": one cube per colour, as listed
+                        names = [obj(mn) for mn in group]
+                    else:
+                        names = [obj(left[-1], i) for i in range(max(left[-1].count, 2))]
+                    if kind == "on":
+                        on_edges += [(u, lo) for lo, u in itertools.pairwise(names)]
+                    else:
+                        rels += [NextTo(a, c) for a, c in itertools.pairwise(names)]
+                        subjects.update((mn.color, mn.label) for mn in group)
                 continue
             if not left or not right:
                 if kind == "on" and stackish and right and right[0].patch:
@@ -998,11 +1012,7 @@ def recognize_relational(f: Features, b: Builder) -> bool:
                     previous[:] = [obj(a_m), obj(b_m)]
                 continue
             if kind == "on" and b_m.patch:
-                group = [a_m]
-                for mn in reversed(left[:-1]):  # "the red block, the blue block and the green block onto ..."
-                    if not re.fullmatch(r"\s*(?:,\s*and|,|and)\s*", clause[mn.end: group[0].start]) or mn.ref:
-                        break
-                    group.insert(0, mn)
+                group = _listed_group(clause, left)  # "the red block, the blue block and the green block onto ..."
                 for member in group:
                     for i in range(member.count):
                         onpatch.append((obj(member, i), obj(b_m)))
@@ -1072,6 +1082,18 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         b.structures.append([by_color[bottom], by_color[top]])
         b.summary.append(f"initially {top} is stacked on {bottom}")
     return True
+
+
+def _listed_group(clause: str, left: list[Mention]) -> list[Mention]:
+    """The mentions listed together just before a relation ("the red, the blue and the
+    green block", "the red and green blocks"): the last one and those joined to it by
+    commas or "and"."""
+    group = [left[-1]]
+    for mn in reversed(left[:-1]):
+        if mn.ref or not re.fullmatch(r"\s*(?:,\s*and|,|and)\s*(?:the\s+)?", clause[mn.end: group[0].start]):
+            break
+        group.insert(0, mn)
+    return group
 
 
 _RELATIONS = {"left_of": LeftOf, "right_of": RightOf, "in_front_of": InFrontOf, "behind": Behind, "next_to": NextTo}
