@@ -361,3 +361,19 @@ def test_a_spelled_word_reversed_by_an_edit(tmp_path):
     r = steer(fam, "Spell it backwards")
     assert (r.intent, r.valid) == ("modify", True)
     assert r.compile.schema.goal_summary == "the cubes spell 'TAC' left to right in a line"
+
+
+def test_moving_a_cube_alternating_colours_and_removing_cubes(tmp_path):
+    """'Put the blue one at the bottom' moves the cube the tower has (it adds none);
+    'alternating' repaints in a pattern; 'remove one block' shrinks by one."""
+    fam = compile_instruction("Build a tower of red, green and blue blocks", tmp_path / "t").path
+    s = steer(fam, "Put the blue one at the bottom")
+    assert (s.intent, s.valid) == ("modify", True)
+    assert s.compile.schema.goal_summary == "tower bottom to top: blue, red, green"
+    line = compile_instruction("Align 4 cubic blocks in a single straight horizontal line.", tmp_path / "l").path
+    s = steer(line, "Use red and blue alternating")
+    assert (s.intent, s.valid) == ("tweak", True)
+    assert s.compile.schema.goal_summary == "cubes in a line left to right: red_1, blue_1, red_2, blue_2"
+    s = steer(line, "Remove one block")
+    assert (s.intent, s.valid) == ("tweak", True)
+    assert s.compile.schema.goal_summary == "cubes in a line left to right: red_1, blue, red_2"

@@ -44,6 +44,7 @@ OP_INTENT = {
     "add": "extend", "recolor": "tweak", "remove": "tweak", "count": "tweak", "dims": "tweak",
     "material": "modify", "ordering": "modify", "reverse": "modify", "outliers": "modify",
     "relabel": "modify", "swap": "modify", "word": "modify", "colors": "tweak", "structure": "pivot",
+    "move": "modify", "pattern": "tweak",
 }
 """The intent each operation implies; an edit's intent is the strongest of its operations."""
 
@@ -225,7 +226,21 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("ordering", {"key": "color", "descending": False}))
     if mats and not reverse and not ncolors:
         ops.append(Op("material", {"to": mats[0] if len(mats) == 1 else "mixed", **({"from": source[0]} if source else {})}))
-    add = None if substitution and mats else re.search(
+    move = re.search(r"\b(?:put|move|place|bring)\s+the\s+(?P<sel>[a-z0-9' ]+?)\s+(?:one|block|cube)?\s*(?:at|to|on)\s+(?:the\s+)?"
+                     r"(?:very\s+)?(?P<where>top|bottom|base|start|end|beginning|front|back)\b", t)
+    if move and _selector(move.group("sel")):
+        at = "bottom" if move.group("where") in ("bottom", "base", "start", "beginning") else "top"
+        ops.append(Op("move", {"select": _selector(move.group("sel")), "at": at}))
+    pattern = re.search(rf"\balternat\w*\b", t)
+    pattern_colors = [_canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", t)] if pattern else []
+    if len(dict.fromkeys(pattern_colors)) >= 2:
+        ops.append(Op("pattern", {"colors": list(dict.fromkeys(pattern_colors))}))
+    fewer = re.search(r"\b(?:remove|delete|take away|take off|drop|get rid of)\s+(\d+|an?|one)\s+(?:more\s+)?(?:of the\s+)?(?:blocks?|cubes?)\b"
+                      r"|\b(\d+|one)\s+(?:fewer|less)\s+(?:blocks?|cubes?)\b", t)
+    if fewer:
+        k = next(g for g in fewer.groups() if g)
+        ops.append(Op("count", {"delta": -(int(k) if k.isdigit() else 1)}))
+    add = None if (substitution and mats) or any(o.op in ("move", "pattern") for o in ops) else re.search(
         r"\b(?:add|append|include|put)\b(?P<what>.*?)(?P<where>\bon top\b|\b(?:at|to|on) (?:the )?(?:very )?(?:top|bottom|base|end|start|beginning)\b|"
         r"\b(?:under|underneath|beneath|below)\b|\bto the (?:left|right|end|start)\b|\bon the (?:left|right)\b|[;,.]|\band\b|$)", t)
     if add and (item_sequence(add.group("what")) or re.search(r"\b(?:blocks?|cubes?)\b", add.group("what"))):
@@ -262,14 +277,14 @@ def read_ops(t: str) -> list[Op]:
     elif base and not flat:
         ops.append(Op("dims", {"base": int(base.group(1) or base.group(2))}))
     count = re.search(r"\b(?:use|with|make it|make (?:the|it) (?:tower|line|circle|row)|have|to)\s+(?:only\s+)?(\d+)\s+(?:[a-z]+\s+)?(?:blocks?|cubes?)\b", t)
-    if count and not any(o.op in ("add", "dims") for o in ops):
+    if count and not any(o.op in ("add", "dims", "count") for o in ops):
         ops.append(Op("count", {"count": int(count.group(1))}))
-    elif re.search(r"\b(?:double|triple|halve)\b", t) and not any(o.op in ("add", "dims", "remove") for o in ops):
+    elif re.search(r"\b(?:double|triple|halve)\b", t) and not any(o.op in ("add", "dims", "remove", "count") for o in ops):
         factor = {"double": 2.0, "triple": 3.0, "halve": 0.5}[re.search(r"\b(double|triple|halve)\b", t).group(1)]
         ops.append(Op("count", {"factor": factor}))
-    elif re.search(r"\b(?:taller|higher|longer|bigger|larger)\b", t) and not any(o.op in ("add", "dims") for o in ops):
+    elif re.search(r"\b(?:taller|higher|longer|bigger|larger)\b", t) and not any(o.op in ("add", "dims", "count") for o in ops):
         ops.append(Op("count", {"delta": 1}))
-    elif re.search(r"\b(?:shorter|smaller|lower)\b", t) and not any(o.op in ("remove", "dims") for o in ops):
+    elif re.search(r"\b(?:shorter|smaller|lower)\b", t) and not any(o.op in ("remove", "dims", "count") for o in ops):
         ops.append(Op("count", {"delta": -1}))
     shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+)"
                       r"(tower|stack|line|row|circle|ring|pyramid|grid|square)\b", t)
@@ -446,8 +461,8 @@ def _fit_structure(spec: TaskSpec, target: str) -> TaskSpec:
     raise SteerError(f"cannot turn a {spec.structure} into a {target}")
 
 
-APPLY_ORDER = ("structure", "material", "word", "dims", "count", "colors", "remove", "recolor", "relabel", "add", "swap",
-               "reverse", "ordering", "outliers")
+APPLY_ORDER = ("structure", "material", "word", "dims", "count", "colors", "remove", "recolor", "relabel", "pattern", "add",
+               "move", "swap", "reverse", "ordering", "outliers")
 """Order in which an edit's operations are applied to the spec."""
 
 
@@ -520,6 +535,24 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
             spec = spec.with_items(items)
             if spec.word:
                 spec = replace(spec, word=None)
+        elif o.op == "move":
+            idx = _indices(spec, p["select"])
+            if not idx:
+                raise SteerError(f"the task has no cube matching {p['select']} to move; it has "
+                                 f"{', '.join(i.phrase() for i in spec.items)}")
+            items = list(spec.items)
+            moved = items.pop(idx[0])
+            spec = spec.with_items([moved] + items if p["at"] == "bottom" else items + [moved])
+            if spec.ordering:
+                spec = replace(spec, ordering=None)
+        elif o.op == "pattern":
+            if spec.material != "colors":
+                spec = spec.with_items(_material_items("colors", len(spec.items), []))
+            colors = p["colors"]
+            spec = replace(spec.with_items([Item(color=colors[i % len(colors)]) for i in range(len(spec.items))]),
+                           layer_colors=False, ordering=None if spec.ordering == "color" else spec.ordering)
+            if spec.structure == "line" and spec.direction is None:
+                spec = replace(spec, direction="left_to_right")
         elif o.op in ("recolor", "relabel"):
             idx = _indices(spec, p["select"])
             if not idx:
