@@ -231,7 +231,7 @@ def read_ops(t: str) -> list[Op]:
     if move and _selector(move.group("sel")):
         at = "bottom" if move.group("where") in ("bottom", "base", "start", "beginning") else "top"
         ops.append(Op("move", {"select": _selector(move.group("sel")), "at": at}))
-    pattern = re.search(rf"\balternat\w*\b", t)
+    pattern = re.search(r"\balternat\w*\b", t)
     pattern_colors = [_canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", t)] if pattern else []
     if len(dict.fromkeys(pattern_colors)) >= 2:
         ops.append(Op("pattern", {"colors": list(dict.fromkeys(pattern_colors))}))
