@@ -273,6 +273,16 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     ("Put the red and green blocks on top of each other", "tower bottom to top: red, green"),
     ("Place the cubes in two rows of three", "a 2x3 grid of 6 touching cubes"),
     ("Make a small pyramid", "a 2D pyramid with a base of 2 (3 cubes)"),
+    ("Put the A block to the left of the B block", "letter_a left of letter_b"),
+    ("Place the 3 cube in front of the 7 cube", "digit_3 in front of digit_7"),
+    ("Arrange the blocks so that red is left of green and green is left of blue", "red left of green; green left of blue"),
+    ("Place the blue cube in between the two red cubes", "blue between red_1 and red_2"),
+    ("Starting from a stack of red on blue, unstack them and put the red block to the right of the blue block",
+     "red right of blue; initially red is stacked on blue"),
+    ("Build a stack of 2 red blocks and a stack of 2 blue blocks",
+     "tower bottom to top: red_1, red_2; tower bottom to top: blue_1, blue_2"),
+    ("Make a tower of 3 red blocks next to a tower of 3 blue blocks",
+     "tower bottom to top: red_1, red_2, red_3; tower bottom to top: blue_1, blue_2, blue_3; red_1 next to blue_1"),
 ])
 def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     assert parse(text).goal_summary == summary
@@ -286,6 +296,8 @@ def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     "Place a block on each of the three goal patches",
     "Place three blocks onto the goal patch",  # two rows on a square patch
     "Put 7 blocks on the long goal patch",
+    "Make a tower of 3 red blocks next to a tower of 3 blue blocks",
+    "Starting from a stack of red on blue, unstack them and put the red block to the right of the blue block",
 ])
 def test_new_phrasings_compile_to_valid_tasks(text, tmp_path):
     r = compile_instruction(text, tmp_path)

@@ -97,7 +97,7 @@ out smallest largest lowest highest biggest least greatest marked labelled label
 alternating alternate alternately alternates going goes go way up down upward downward stand standing
 wall walls wide deep long split divide pillar column close far triangle triangular formation write writes
 writing addition subtraction multiplication increase increases decrease decreases tier tiers instead actually
-rather backwards backward pick grab take lift get lay drop small little tiny mini huge one
+rather backwards backward pick grab take lift get lay drop small little tiny mini huge one unstack unstacked
 """.split())
 """Words the builtin front end understands (besides colours, numbers and labels)."""
 
@@ -144,7 +144,9 @@ def normalize(instruction: str) -> tuple[str, str]:
         raise ParseError("the instruction is empty; describe a task, e.g. \"stack the red block on the blue block\"")
     if len(original) > MAX_INSTRUCTION_CHARS:
         raise ParseError(f"the instruction has {len(original)} characters; the limit is {MAX_INSTRUCTION_CHARS}")
-    text = original.lower()
+    labelled = re.sub(r"\b(the|a|an)\s+([A-Z])\s+(block|cube)\b", r"\1 letter \2 \3", original)  # "the A block"
+    labelled = re.sub(r"\b(the)\s+(\d)\s+(block|cube)\b(?!s)", r"\1 digit \2 \3", labelled)  # "the 3 cube"
+    text = labelled.lower()
     text = re.sub(r"[\u2018\u2019\u201c\u201d`]", "'", text)
     text = text.replace('"', "'")
     text = re.sub(r"(\d)\s*[x\u00d7]\s*(?=\d)", r"\1x", text)
@@ -279,12 +281,22 @@ INITIAL_RE = re.compile(
 )
 
 
+INITIAL_STACK_RE = re.compile(
+    rf"\b(?:starting|start|beginning|begin)\s+(?:from|with)\s+(?:a\s+|the\s+)?(?:stack|tower)\s+of\s+(?:the\s+)?"
+    rf"({COLOR_RE})\s+(?:block\s+|cube\s+)?(?:on top of|on)\s+(?:the\s+)?({COLOR_RE})(?:\s+block|\s+cube)?"
+    rf"(?:\s*,\s*|\s+)(?:then\s+)?(?:(?:unstack|separate|take)\s+(?:them|it|the\s+stack)(?:\s+apart)?\s*(?:,\s*)?(?:and\s+)?(?:then\s+)?)?")
+
+
 def _initial_clause(text: str) -> tuple[int, int, str, str] | None:
-    """Find "yellow starts stacked on red": (start, end, bottom colour, top colour)."""
+    """Find "yellow starts stacked on red" or "starting from a stack of yellow on red,
+    unstack them and ...": (start, end, bottom colour, top colour)."""
     m = INITIAL_RE.search(text)
-    if not m:
-        return None
-    return m.start(), m.end(), _canon_color(m.group(2)), _canon_color(m.group(1))
+    if m:
+        return m.start(), m.end(), _canon_color(m.group(2)), _canon_color(m.group(1))
+    m = INITIAL_STACK_RE.search(text)
+    if m:
+        return m.start(), m.end(), _canon_color(m.group(2)), _canon_color(m.group(1))
+    return None
 
 
 def recognize_temporal(f: Features, b: Builder) -> bool:
@@ -740,6 +752,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
     explicit = re.search(r"\border\s+((?:(?:" + COLOR_RE + r")\s*,?\s*(?:and\s+|then\s+)?){2,})", f.text)
     labels = _explicit_labels(f)
     is_line = f.has("align", "aligned", "line", "row", "arrange", "arranged", "order", "sort", "sorted") or order
+    if not order and not labels and len(f.colors) >= 2 and re.search(r"\b(?:left|right) of\b|\bin front of\b|\bbehind\b", f.text):
+        return False  # "so that red is left of green": pairwise relations (recognize_relational)
     if not is_line or f.has("stack", "tower", "on top"):
         return False
     direction = _direction(f)
@@ -905,6 +919,9 @@ def recognize_relational(f: Features, b: Builder) -> bool:
     stackish = bool(re.search(r"\b(?:stack|stacks|stacked|tower|towers|pile up)\b", text))
     if not (stackish or any(re.search(rf"\b(?:{p})\b", text) for p, _ in REL_PATTERNS)):
         return False
+    described = list(DESCRIBED_TOWER_RE.finditer(text))
+    if len(described) >= 2:  # "a tower of 3 red blocks next to a tower of 3 blue blocks"
+        return _described_towers(text, described, b)
     # towers of several stacks: "two towers", "two stacks of red blocks", "stacks on matching patches"
     multi = re.search(r"\b(\d+)\s+(?:[a-z\-]+\s+)?(?:towers|stacks)\b", text)
     if multi or (stackish and f.has("each stack", "matching", "color-specific", "respective", "patches", "towers", "stacks")):
@@ -929,9 +946,9 @@ def recognize_relational(f: Features, b: Builder) -> bool:
             if key not in patch_names:
                 patch_names[key] = b.patch(mn.color or DEFAULT_PATCH_COLOR, mn.shape)
             return patch_names[key]
-        key = ("cube", mn.color, mn.label) if (mn.color or mn.label) else ("cube", None, None, i)
+        key = ("cube", mn.color, mn.label) if (mn.color or mn.label) else ("cube", None, None, i, mn.start)
         lst = objects.setdefault(key, [])
-        if len(key) == 4:
+        if len(key) == 5:
             i = 0
         while len(lst) <= i:
             lst.append(b.semantic(mn.label) if mn.label else b.cube(mn.color or _next_default(b, objects)))
@@ -1027,9 +1044,9 @@ def recognize_relational(f: Features, b: Builder) -> bool:
             elif kind == "under":
                 on_edges.append((c, a))
             elif kind == "between":
-                if len(right) < 2:
+                if len(right) < 2 and b_m.count < 2:
                     continue
-                rels.append(Between(a, c, obj(right[1])))
+                rels.append(Between(a, c, obj(right[1]) if len(right) >= 2 and b_m.count < 2 else obj(b_m, 1)))
             else:
                 rels.append(_RELATIONS[kind](a, c))
     if "bottom" in bottom_top and "top" in bottom_top:
@@ -1081,6 +1098,35 @@ def recognize_relational(f: Features, b: Builder) -> bool:
             raise ParseError(f"the initial state names a {top if top not in by_color else bottom} cube the task does not have")
         b.structures.append([by_color[bottom], by_color[top]])
         b.summary.append(f"initially {top} is stacked on {bottom}")
+    return True
+
+
+DESCRIBED_TOWER_RE = re.compile(rf"\b(?:a|an|one|another)\s+(?:tower|stack)\s+of\s+(\d+)\s+({COLOR_RE})\s+(?:blocks|cubes)\b")
+
+
+def _described_towers(text: str, described: list[re.Match], b: Builder) -> bool:
+    """Several towers each described by height and colour, side by side or in a stated
+    relation to each other ("a tower of 3 red blocks next to a tower of 3 blue blocks",
+    "... to the left of ...")."""
+    towers = []
+    for m in described:
+        height = int(m.group(1))
+        if height < 2:
+            raise ParseError("a tower needs at least two cubes")
+        towers.append([b.cube(_canon_color(m.group(2))) for _ in range(height)])
+    rels = []
+    for (m1, t1), (m2, t2) in itertools.pairwise(zip(described, towers, strict=True)):
+        between = text[m1.end(): m2.start()]
+        kind = next((k for p, k in REL_PATTERNS if k not in ("on", "under", "between") and re.search(rf"\b(?:{p})\b", between)), None)
+        if kind:
+            rels.append(_RELATIONS[kind](t1[0], t2[0]))
+    _layout_relational(b, towers, rels, [])
+    for t in towers:
+        b.preds.append(Stack(tuple(t)))
+        b.summary.append("tower bottom to top: " + ", ".join(t))
+    b.preds += rels
+    b.summary += [r.describe() for r in rels]
+    b.primitives += ["stack"]
     return True
 
 
@@ -1347,7 +1393,7 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
     "on top" / "at the bottom"."""
     if not f.has("stack", "tower", "stacked") or f.has("towers", "stacks", "each other", "patch", "patches", "pyramid"):
         return False
-    if "@" in _references(f.text):  # "... and a red block beside the stack": relations, not one tower
+    if "@" in _references(f.text) or len(DESCRIBED_TOWER_RE.findall(f.text)) >= 2:  # relations, or several towers
         return False
     text = SEQ_HINT_RE.sub(lambda m: f" <{m.group(1)}> ", f.text)
     mentions = list(ITEM_RE.finditer(text))
