@@ -283,6 +283,11 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
      "tower bottom to top: red_1, red_2; tower bottom to top: blue_1, blue_2"),
     ("Make a tower of 3 red blocks next to a tower of 3 blue blocks",
      "tower bottom to top: red_1, red_2, red_3; tower bottom to top: blue_1, blue_2, blue_3; red_1 next to blue_1"),
+    ("Stack the red blocks on the red patch and the blue blocks on the blue patch",
+     "2 towers of 2 cubes, each on the patch of its color"),
+    ("Put the green block to the left of the red block and behind the blue block", "green left of red; green behind blue"),
+    ("Build a tower with the blue block in the middle", "tower bottom to top: red, blue, green"),
+    ("Make a line of digits 1 through 4 from front to back", "up faces read 1, 2, 3, 4 front to back"),
 ])
 def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     assert parse(text).goal_summary == summary
@@ -298,6 +303,8 @@ def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     "Put 7 blocks on the long goal patch",
     "Make a tower of 3 red blocks next to a tower of 3 blue blocks",
     "Starting from a stack of red on blue, unstack them and put the red block to the right of the blue block",
+    "Arrange the digits 1 to 4 from front to back",  # laid out along x (it was along y: the order was luck)
+    "Stack the red blocks on the red patch and the blue blocks on the blue patch",
 ])
 def test_new_phrasings_compile_to_valid_tasks(text, tmp_path):
     r = compile_instruction(text, tmp_path)
@@ -307,6 +314,10 @@ def test_new_phrasings_compile_to_valid_tasks(text, tmp_path):
 def test_parser_refuses_rather_than_drop_a_named_cube():
     with pytest.raises(ParseError, match="purple"):
         parse("Stack the red block on the blue block and the purple block")
+    with pytest.raises(ParseError, match="two or more piles"):
+        parse("Put all blocks in one pile")
+    with pytest.raises(ParseError, match="could not find a task"):
+        parse("Arrange the blocks in a plus shape")  # a shape it does not build is refused, not read as a line
     with pytest.raises(ParseError, match="5 cubes do not fit on one square goal patch"):
         parse("Put 5 blocks on the goal patch")
     with pytest.raises(ParseError, match="wall 4 wide and 2 high has 8 cubes, not 6"):

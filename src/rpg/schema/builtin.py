@@ -98,6 +98,7 @@ alternating alternate alternately alternates going goes go way up down upward do
 wall walls wide deep long split divide pillar column close far triangle triangular formation write writes
 writing addition subtraction multiplication increase increases decrease decreases tier tiers instead actually
 rather backwards backward pick grab take lift get lay drop small little tiny mini huge one unstack unstacked
+through corner corners
 """.split())
 """Words the builtin front end understands (besides colours, numbers and labels)."""
 
@@ -480,9 +481,8 @@ def recognize_spell(f: Features, b: Builder) -> bool:
         b.primitives += ["stack"]
     else:
         direction = _direction(f)
-        order = names if direction == "left_to_right" else list(reversed(names))
-        b.place(line_layout(order))
-        b.preds += [InLine(tuple(names), order=direction), Reads(tuple(names), word, direction)]
+        b.place(_directed_line(names, direction))
+        b.preds += [InLine(tuple(names), axis=_line_axis(direction), order=direction), Reads(tuple(names), word, direction)]
         b.summary.append(f"the cubes spell {word!r} {direction.replace('_', ' ')} in a line")
         b.primitives += ["arrange"]
     return True
@@ -676,9 +676,10 @@ def recognize_grid(f: Features, b: Builder) -> bool:
 
 
 def recognize_circle(f: Features, b: Builder) -> bool:
-    if not f.has("circle", "circular", "ring", "round", "circles"):
+    corners = re.search(r"\bcorners of (?:a|the) square\b", f.text)
+    if not f.has("circle", "circular", "ring", "round", "circles") and not corners:
         return False
-    n = _count(f, default=6)
+    n = _count(f, default=4 if corners else 6)
     if n < 3:
         raise ParseError("a circle needs at least 3 cubes")
     names = _fill_structure(f, b, n, _material(f), None, lambda ns: circle_layout(ns))
@@ -703,6 +704,9 @@ def recognize_piles(f: Features, b: Builder) -> bool:
         by = "type"
     else:
         k = _count(f, "pile|bunch|group|cluster|heap", default=None)
+        if k == 1 or re.search(r"\b(?:a|one|single)\s+(?:single\s+)?(?:pile|heap|bunch|cluster|group)\b", f.text):
+            raise ParseError("a pile task sorts cubes into two or more piles; for all cubes together, "
+                             "say \"stack all the blocks\" or name the piles")
         colors = list(dict.fromkeys(f.color_list())) or _colors_for(k or 3, f, prefer=[])
         per = _count(f, default=None)
         per = max(2, per // len(colors)) if per else 3
@@ -747,11 +751,26 @@ def _alternating(f: Features, default: int) -> list[str] | None:
     return [colors[i % len(colors)] for i in range(n)]
 
 
+def _line_axis(direction: str) -> str:
+    """The table axis a line read in ``direction`` runs along: ``x`` front-back, else ``y``."""
+    return "x" if direction in ("front_to_back", "back_to_front") else "y"
+
+
+def _directed_line(names: list[str], direction: str) -> dict[str, Pose]:
+    """A line layout whose cubes read ``names`` in ``direction`` (left to right, right to
+    left, front to back or back to front)."""
+    forward = direction in ("left_to_right", "front_to_back")
+    return line_layout(names if forward else list(reversed(names)), axis=_line_axis(direction))
+
+
 def recognize_ordered_line(f: Features, b: Builder) -> bool:
     order = _ordering(f)
     explicit = re.search(r"\border\s+((?:(?:" + COLOR_RE + r")\s*,?\s*(?:and\s+|then\s+)?){2,})", f.text)
     labels = _explicit_labels(f)
     is_line = f.has("align", "aligned", "line", "row", "arrange", "arranged", "order", "sort", "sorted") or order
+    shape = re.search(r"\b(?:in|into|as)\s+(?:a|an|the)\s+([a-z]+)\s+(?:shape|pattern|formation)\b", f.text)
+    if shape and shape.group(1) not in ("line", "row", "straight", "linear", "horizontal", "single"):
+        return False  # "in a plus shape": a shape the parser does not build
     if not order and not labels and len(f.colors) >= 2 and re.search(r"\b(?:left|right) of\b|\bin front of\b|\bbehind\b", f.text):
         return False  # "so that red is left of green": pairwise relations (recognize_relational)
     if not is_line or f.has("stack", "tower", "on top"):
@@ -767,22 +786,22 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
     listed_items = item_sequence(in_order.group(1)) if in_order else []
     if in_order and any(label for _, label in listed_items) and len(listed_items) >= 2:
         names = [b.semantic(label) if label else b.cube(color) for color, label in listed_items]
-        b.place(line_layout(names if direction == "left_to_right" else list(reversed(names))))
-        b.preds.append(InLine(tuple(names), order=direction))
+        b.place(_directed_line(names, direction))
+        b.preds.append(InLine(tuple(names), axis=_line_axis(direction), order=direction))
         b.summary.append(f"cubes in a line {direction.replace('_', ' ')}: {', '.join(names)}")
     elif explicit:
         colors = [_canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", explicit.group(1))]
         names = [b.cube(c) for c in colors]
-        order_names = names if direction == "left_to_right" else list(reversed(names))
-        b.place(line_layout(order_names))
-        b.preds.append(InLine(tuple(names), order=direction))
+        b.place(_directed_line(names, direction))
+        b.preds.append(InLine(tuple(names), axis=_line_axis(direction), order=direction))
         b.summary.append(f"cubes in a line {direction.replace('_', ' ')}: {', '.join(names)}")
     elif labels:
         if order:  # the listed labels are the set; the ordering arranges them
             labels = sorted(labels, key=lambda lab: (not lab.isdigit(), lab), reverse=order[1])
         names = [b.semantic(lab) for lab in labels]
-        b.place(line_layout(names if direction == "left_to_right" else list(reversed(names))))
-        b.preds += [InLine(tuple(names), order=direction), Reads(tuple(names), "".join(labels), direction)]
+        b.place(_directed_line(names, direction))
+        b.preds += [InLine(tuple(names), axis=_line_axis(direction), order=direction),
+                    Reads(tuple(names), "".join(labels), direction)]
         if order:
             b.preds.append(SortedBy(tuple(names), key=order[0] if order[0] != "color" else "label", direction=direction, descending=order[1]))
         b.summary.append(f"up faces read {', '.join(labels)} {direction.replace('_', ' ')}")
@@ -801,8 +820,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
             if desc:
                 labels = list(reversed(labels))
             names = [b.semantic(lab) for lab in labels]
-        b.place(line_layout(names if direction == "left_to_right" else list(reversed(names))))
-        b.preds += [InLine(tuple(names), order=direction),
+        b.place(_directed_line(names, direction))
+        b.preds += [InLine(tuple(names), axis=_line_axis(direction), order=direction),
                     SortedBy(tuple(names), key=key, direction=direction, descending=desc)]
         what = {"label": "alphabetical", "number": "increasing numerical", "color": "color-gradient"}[key]
         b.summary.append(f"{n} cubes in a line in {'reverse ' if desc else ''}{what} order {direction.replace('_', ' ')}")
@@ -924,6 +943,9 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         return _described_towers(text, described, b)
     # towers of several stacks: "two towers", "two stacks of red blocks", "stacks on matching patches"
     multi = re.search(r"\b(\d+)\s+(?:[a-z\-]+\s+)?(?:towers|stacks)\b", text)
+    patch_count = len({m.group(1) for m in re.finditer(rf"\b({COLOR_RE})\s+(?:goal\s+|target\s+)?patch\b", text)})
+    if stackish and patch_count >= 2 and not multi:  # "stack the red blocks on the red patch and the blue ... on the blue patch"
+        return _multi_stacks(f, b, patch_count)
     if multi or (stackish and f.has("each stack", "matching", "color-specific", "respective", "patches", "towers", "stacks")):
         return _multi_stacks(f, b, int(multi.group(1)) if multi else 2)
     clauses = re.split(r"\bthen\b|;|,\s*(?:and\s+)?then\b|\.\s", text)
@@ -939,6 +961,7 @@ def recognize_relational(f: Features, b: Builder) -> bool:
     by_structure: list[tuple[str, str]] = []  # (relation, cube) relative to that stack ("beside the tower")
     subjects: set[tuple] = set()  # (colour, label) of cubes placed by a relation
     previous: list[str] = []  # [subject, object] of the last relation: what "it" refers to
+    last_pair: list[Mention] = []  # the last relation's subject and object mentions
 
     def obj(mn: Mention, i: int = 0) -> str:
         if mn.patch:
@@ -994,6 +1017,10 @@ def recognize_relational(f: Features, b: Builder) -> bool:
                     onpatch.append(("*", obj(right[0])))
                 continue
             a_m, b_m = left[-1], right[0]
+            if last_pair and a_m is last_pair[1] and re.fullmatch(r"\s*,?\s*and\s+(?:also\s+)?",
+                                                                    clause[a_m.end: rm.start()]):
+                a_m = last_pair[0]  # "X left of Y and behind Z": X is behind Z
+            last_pair[:] = [a_m, b_m]
             if a_m.ref:
                 continue
             if b_m.ref == "@them" and not on_edges and previous:
@@ -1070,6 +1097,8 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         _resolve_structure(b, objects, on_edges, rels, on_structure, by_structure, _structure_colors(text))
     if not on_edges and not rels and not onpatch:
         return False
+    if len({p for a, p in onpatch if a == "*"}) > 1:
+        raise ParseError("one stack cannot stand on several patches; say which cubes go on which patch")
     if any(a == "*" for a, _ in onpatch) or (stackish and onpatch):
         target = onpatch[0][1]
         onpatch = [(a, p) for a, p in onpatch if a != "*"]
@@ -1336,7 +1365,7 @@ def item_sequence(text: str) -> list[tuple[str | None, str | None]]:
 
 SEQ_RELATION_RE = re.compile(r"\b(?:on top of|onto|on|atop|above|over|under|underneath|beneath|below|left|right|"
                              r"behind|front|next|beside|between|near|patch|patches)\b")
-SEQ_HINT_RE = re.compile(r"\b(?:on|at|as)\s+(?:the\s+)?(?:very\s+)?(bottom|base|top)\b(?!\s+of)")
+SEQ_HINT_RE = re.compile(r"\b(?:on|at|as|in)\s+(?:the\s+)?(?:very\s+)?(bottom|base|top|middle|center|centre)\b(?!\s+of)")
 
 
 SORTED_TOWER_DEFAULT = 4
@@ -1404,7 +1433,7 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
     hints: dict[int, str] = {}
     for m in mentions:
         item = (None, m.group("label").upper()) if m.group("label") else (_canon_color(m.group("color")), None)
-        hint = re.match(r"\s*(?:(?:block|cube)s?\s*)?<(bottom|base|top)>", text[m.end():])
+        hint = re.match(r"\s*(?:(?:block|cube)s?\s*)?<(bottom|base|top|middle|center|centre)>", text[m.end():])
         if hint and item in items:  # "... with yellow at the bottom": a hint about a listed cube
             hints[items.index(item)] = hint.group(1)
             continue
@@ -1429,6 +1458,11 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
     elif 1 <= len(items) < (n or 0) and hints:  # "three blocks high with a yellow block on top"
         used = {c for c, _ in items}
         items += [(c, None) for c in DEFAULT_COLORS if c not in used][: n - len(items)]
+    elif len(items) == 1 and set(hints.values()) & {"middle", "center", "centre"}:  # "a tower with blue in the middle"
+        used = {c for c, _ in items}
+        items = [(c, None) for c in DEFAULT_COLORS if c not in used][:1] + items + \
+            [(c, None) for c in DEFAULT_COLORS if c not in used][1:(n or 3) - 1]
+        hints = {}  # the listed cube is already in the middle
     if len(items) < 2:
         return False
     if re.search(r"\btop to bottom\b", f.text):
@@ -1436,7 +1470,10 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
     else:
         bottom = [items[i] for i, h in hints.items() if h in ("bottom", "base")]
         top = [items[i] for i, h in hints.items() if h == "top"]
-        items = bottom + [it for it in items if it not in bottom and it not in top] + top
+        middle = [items[i] for i, h in hints.items() if h in ("middle", "center", "centre") and i < len(items)]
+        rest = [it for it in items if it not in bottom and it not in top and it not in middle]
+        half = len(rest) // 2
+        items = bottom + rest[:half] + middle + rest[half:] + top
     names = [b.semantic(label) if label else b.cube(color) for color, label in items]
     b.place(stack_layout(names, C.WORKSPACE_CENTER))
     b.preds.append(Stack(tuple(names)))
