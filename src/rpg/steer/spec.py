@@ -9,7 +9,8 @@ task a user would get by typing its canonical instruction, which is recorded wit
 Structures with an editable spec: ``tower``, ``line``, ``pyramid``, ``grid``, ``block``
 (3D grid), ``circle`` and ``piles``.  Other tasks (relations between named cubes, goal
 patches, temporal order, equations) return ``None`` from :func:`extract`; steering then
-accepts only edits that state a whole task.
+accepts colour tweaks, the edits :mod:`rpg.steer.relations` reads (one relation between
+two cubes, cubes on one patch) and edits that state a whole task.
 """
 
 from __future__ import annotations
