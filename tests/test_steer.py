@@ -377,3 +377,15 @@ def test_moving_a_cube_alternating_colours_and_removing_cubes(tmp_path):
     s = steer(line, "Remove one block")
     assert (s.intent, s.valid) == ("tweak", True)
     assert s.compile.schema.goal_summary == "cubes in a line left to right: red_1, blue, red_2"
+
+
+def test_reading_direction_tower_of_a_word_and_back_to_a_named_word(tmp_path):
+    fam = compile_instruction("Spell the word 'DOG' using semantic cubes arranged in a line", tmp_path).path
+    steer(fam, "Change the word to 'CAT'")
+    s = steer(fam, "Make it read right to left")
+    assert (s.intent, s.valid) == ("modify", True)
+    assert s.compile.schema.goal_summary == "the cubes spell 'CAT' right to left in a line"
+    s = steer(fam, "Use a tower instead")  # the letters stay
+    assert s.compile.schema.goal_summary == "tower bottom to top: letter_c, letter_a, letter_t"
+    s = steer(fam, "Go back to DOG")  # a version named by the word it spells
+    assert s.reused and s.version == 0

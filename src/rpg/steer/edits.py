@@ -22,7 +22,7 @@ from dataclasses import asdict, dataclass, field, replace
 
 from rpg.domain.palette import GRADIENT_ORDER
 from rpg.schema.builder import DEFAULT_COLORS
-from rpg.schema.builtin import COLOR_RE, NUMBER_WORDS, _canon_color, item_sequence
+from rpg.schema.builtin import COLOR_RE, NUMBER_WORDS, VOCAB, _canon_color, item_sequence
 from rpg.steer.spec import Item, TaskSpec
 
 INTENTS = ("tweak", "extend", "modify", "pivot", "fresh")
@@ -44,7 +44,7 @@ OP_INTENT = {
     "add": "extend", "recolor": "tweak", "remove": "tweak", "count": "tweak", "dims": "tweak",
     "material": "modify", "ordering": "modify", "reverse": "modify", "outliers": "modify",
     "relabel": "modify", "swap": "modify", "word": "modify", "colors": "tweak", "structure": "pivot",
-    "move": "modify", "pattern": "tweak",
+    "move": "modify", "pattern": "tweak", "direction": "modify",
 }
 """The intent each operation implies; an edit's intent is the strongest of its operations."""
 
@@ -75,6 +75,7 @@ class RefCue:
     material: str | None = None
     structure: str | None = None
     count: int | None = None
+    word: str | None = None
     phrase: str = ""
 
 
@@ -135,6 +136,11 @@ def _materials(text: str) -> list[str]:
     return [m for m, pat in MATERIAL_WORDS if re.search(pat, t)]
 
 
+NON_WORDS = frozenset("""go going went back when was were version spelled spelling said read had just only
+again previous earlier older one""".split())
+"""Words of a back-reference that are not the spelled word it may name ("go back to DOG")."""
+
+
 def find_reference(t: str) -> RefCue:
     """The reference cue of a normalised edit."""
     m = re.search(r"\b(?:version|v)\s*#?(\d+)\b", t)
@@ -158,11 +164,14 @@ def find_reference(t: str) -> RefCue:
     mats = _materials(region)
     s = re.search(STRUCTURE_RE, region)
     n = re.search(r"\b(\d+)[- ](?:blocks?|cubes?)\b", region)
+    words = [w.strip("'") for w in re.findall(r"'?\b[a-z]{2,}\b'?", region)]
+    spelled = [w for w in words if w not in VOCAB and w not in NON_WORDS and not re.fullmatch(COLOR_RE, w)]
     cue = RefCue("search", colors=colors, exact=bool(re.search(r"\b(?:just|only)\b", region)),
                  material=mats[0] if len(mats) == 1 else None,
                  structure=STRUCTURE_WORDS[s.group(1).rstrip("s")] if s else None,
-                 count=int(n.group(1)) if n else None, phrase=(back.group(0) + region).strip())
-    if not (cue.colors or cue.material or cue.structure or cue.count):
+                 count=int(n.group(1)) if n else None, word=spelled[0].upper() if len(spelled) == 1 else None,
+                 phrase=(back.group(0) + region).strip())
+    if not (cue.colors or cue.material or cue.structure or cue.count or cue.word):
         return RefCue("previous", phrase=back.group(0))
     return cue
 
@@ -267,6 +276,10 @@ def read_ops(t: str) -> list[Op]:
     rm = re.search(r"\b(?:remove|delete|take away|take off|drop|get rid of)\s+(?:the\s+)?(?P<sel>.+?)(?:[;,.]|\band\b|$)", t)
     if rm and _selector(rm.group("sel")):
         ops.append(Op("remove", {"select": _selector(rm.group("sel"))}))
+    direction = re.search(r"\b(?:read|reads|go|goes|run|runs|order|arrange\w*|spell\w*|from|it)\s+(?:from\s+)?"
+                          r"(left to right|right to left|front to back|back to front)\b", t)
+    if direction and not any(o.op in ("ordering", "reverse") for o in ops):
+        ops.append(Op("direction", {"to": direction.group(1).replace(" ", "_")}))
     flat = re.search(r"\b([23])d\b|\b(flat)\b", t)
     if flat:
         ops.append(Op("dims", {"pyramid_dims": 2 if flat.group(2) else int(flat.group(1))}))
@@ -286,7 +299,7 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("count", {"delta": 1}))
     elif re.search(r"\b(?:shorter|smaller|lower)\b", t) and not any(o.op in ("remove", "dims", "count") for o in ops):
         ops.append(Op("count", {"delta": -1}))
-    shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+)"
+    shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out|use|do)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+)"
                       r"(tower|stack|line|row|circle|ring|pyramid|grid|square)\b", t)
     if shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
         ops.append(Op("structure", {"to": STRUCTURE_WORDS[shape.group(1)]}))
@@ -462,7 +475,7 @@ def _fit_structure(spec: TaskSpec, target: str) -> TaskSpec:
 
 
 APPLY_ORDER = ("structure", "material", "word", "dims", "count", "colors", "remove", "recolor", "relabel", "pattern", "add",
-               "move", "swap", "reverse", "ordering", "outliers")
+               "move", "swap", "reverse", "ordering", "direction", "outliers")
 """Order in which an edit's operations are applied to the spec."""
 
 
@@ -535,6 +548,10 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
             spec = spec.with_items(items)
             if spec.word:
                 spec = replace(spec, word=None)
+        elif o.op == "direction":
+            if spec.structure != "line":
+                raise SteerError(f"a reading direction applies to a line; this task has a {spec.structure}")
+            spec = replace(spec, direction=p["to"], axis=None)
         elif o.op == "move":
             idx = _indices(spec, p["select"])
             if not idx:

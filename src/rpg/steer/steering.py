@@ -89,6 +89,8 @@ def _matches(fam: Family, version_id: int, cue) -> bool:
             return False
     if cue.structure and (spec is None or spec.structure != cue.structure):
         return False
+    if cue.word and (spec is None or (spec.word or "".join(i.label or "" for i in spec.items)) != cue.word):
+        return False
     return not (cue.count and len(cubes) != cue.count)
 
 
