@@ -288,6 +288,7 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     ("Put the green block to the left of the red block and behind the blue block", "green left of red; green behind blue"),
     ("Build a tower with the blue block in the middle", "tower bottom to top: red, blue, green"),
     ("Make a line of digits 1 through 4 from front to back", "up faces read 1, 2, 3, 4 front to back"),
+    ("Line up four letter cubes", "4 letter cubes in one straight left-right line"),
 ])
 def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     assert parse(text).goal_summary == summary
@@ -314,6 +315,8 @@ def test_new_phrasings_compile_to_valid_tasks(text, tmp_path):
 def test_parser_refuses_rather_than_drop_a_named_cube():
     with pytest.raises(ParseError, match="purple"):
         parse("Stack the red block on the blue block and the purple block")
+    with pytest.raises(ParseError, match="mixing letters and digits"):
+        parse("Make a row of alternating letters and numbers")  # was read as a line of coloured cubes
     with pytest.raises(ParseError, match="two or more piles"):
         parse("Put all blocks in one pile")
     with pytest.raises(ParseError, match="could not find a task"):

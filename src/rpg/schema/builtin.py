@@ -828,7 +828,15 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
     else:
         distinct = list(dict.fromkeys(f.color_list()))
         n = _count(f, default=len(distinct) if len(distinct) >= 2 else 4)
-        names = [b.cube(c) for c in (distinct * n if len(distinct) == 1 else _colors_for(n, f))]
+        material = _material(f)
+        if material == "mixed" or (material != "colors" and f.has("alternating", "alternate", "alternately")):
+            raise ParseError("a line mixing letters and digits in a pattern is beyond the builtin parser; "
+                             "list the labels (\"arrange A, 1, B, 2 from left to right\") or use --model")
+        if material in ("letters", "digits") and not distinct:  # "line up four letter cubes": labels, any order
+            labels, _ = label_sequence(material, n, b, ordered=False)
+            names = [b.semantic(lab) for lab in labels]
+        else:
+            names = [b.cube(c) for c in (distinct * n if len(distinct) == 1 else _colors_for(n, f))]
         middle = re.search(rf"\b({COLOR_RE})\s+(?:block\s+|cube\s+)?(?:is\s+)?(?:in|at)\s+the\s+(?:middle|center|centre)\b", f.text)
         mid = _canon_color(middle.group(1)) if middle else None
         if mid and n == 3 and mid in distinct and len(distinct) == 3:  # "red, blue and green with blue in the middle"
@@ -838,7 +846,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         axis = "x" if f.has("vertical", "front to back", "depth") else "y"
         b.place(line_layout(names, axis=axis))
         b.preds.insert(0, InLine(tuple(names), axis=axis))
-        b.summary.append(f"{n} cubes in one straight {'left-right' if axis == 'y' else 'front-back'} line"
+        kind = {"letters": "letter ", "digits": "digit "}.get(material, "") if not distinct else ""
+        b.summary.append(f"{n} {kind}cubes in one straight {'left-right' if axis == 'y' else 'front-back'} line"
                          + (f" with {names[1]} in the middle" if len(b.preds) > 1 else ""))
     b.primitives += ["arrange"]
     return True
