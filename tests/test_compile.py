@@ -289,6 +289,7 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     ("Build a tower with the blue block in the middle", "tower bottom to top: red, blue, green"),
     ("Make a line of digits 1 through 4 from front to back", "up faces read 1, 2, 3, 4 front to back"),
     ("Line up four letter cubes", "4 letter cubes in one straight left-right line"),
+    ("Put two blocks on each patch", "2 cubes on each of the 2 goal patches (red_1, red_2, red_3, red_4, any cube on any patch)"),
 ])
 def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     assert parse(text).goal_summary == summary
@@ -306,6 +307,7 @@ def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     "Starting from a stack of red on blue, unstack them and put the red block to the right of the blue block",
     "Arrange the digits 1 to 4 from front to back",  # laid out along x (it was along y: the order was luck)
     "Stack the red blocks on the red patch and the blue blocks on the blue patch",
+    "Place 2 red cubes on each of the 3 blue patches",
 ])
 def test_new_phrasings_compile_to_valid_tasks(text, tmp_path):
     r = compile_instruction(text, tmp_path)

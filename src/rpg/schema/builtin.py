@@ -345,7 +345,7 @@ def recognize_matching_patches(f: Features, b: Builder) -> bool:
 
 
 EACH_PATCH_RE = re.compile(
-    r"\b(?:a|one|1)\s+(?:(?P<color>" + COLOR_RE + r")\s+)?(?:block|cube|box)\s+(?:on|onto|in|into|to)\s+"
+    r"\b(?:a|one|(?P<k>\d+))\s+(?:(?P<color>" + COLOR_RE + r")\s+)?(?:block|cube|box)e?s?\s+(?:on|onto|in|into|to)\s+"
     r"(?:each|every)\s+(?:one\s+)?(?:of\s+the\s+)?(?:(?P<n>\d+)\s+)?(?:(?P<pcolor>" + COLOR_RE + r")\s+)?"
     r"(?:goal\s+|target\s+)?(?:patch|patches|target|targets)\b"
     r"|\b(?:one|1)\s+(?:(?P<color2>" + COLOR_RE + r")\s+)?(?:block|cube)\s+per\s+(?:goal\s+|target\s+)?patch\b")
@@ -358,20 +358,25 @@ def recognize_each_patch(f: Features, b: Builder) -> bool:
     m = EACH_PATCH_RE.search(f.text)
     if not m:
         return False
-    n = int(m.group("n")) if m.group("n") else (_count(f, "patch|patche|target", default=None) or 3)
+    per = int(m.group("k")) if m.group("k") else 1  # "two blocks on each patch"
+    n = int(m.group("n")) if m.group("n") else (_count(f, "patch|patche|target", default=None) or (3 if per == 1 else 2))
     if not 2 <= n <= 6:
-        raise ParseError(f"one cube on each of {n} patches: use 2 to 6 patches")
+        raise ParseError(f"cubes on each of {n} patches: use 2 to 6 patches")
     color = _canon_color(m.group("color") or m.group("color2") or "red")
     pcolor = _canon_color(m.group("pcolor")) if m.group("pcolor") else DEFAULT_PATCH_COLOR
-    centers = b.unit_centers(n, 0.14)
+    centers = b.unit_centers(n, 0.14 if per == 1 else 0.16)
     cubes = []
     for x, y in centers:
-        cube, patch = b.cube(color), b.patch(pcolor)
-        b.place({patch: Pose((x, y, C.TABLE_TOP_Z + C.PATCH_THICKNESS / 2)), cube: stack_layout([cube], (x, y))[cube]})
-        b.preds.append(OnPatch(cube, patch))
-        cubes.append(cube)
+        patch = b.patch(pcolor)
+        b.place({patch: Pose((x, y, C.TABLE_TOP_Z + C.PATCH_THICKNESS / 2))})
+        for spot in _patch_spots((x, y), "square", per):
+            cube = b.cube(color)
+            b.place(stack_layout([cube], spot))
+            b.preds.append(OnPatch(cube, patch))
+            cubes.append(cube)
     b.primitives += ["place"]
-    b.summary.append(f"one cube on each of the {n} goal patches ({', '.join(cubes)}, any cube on any patch)")
+    what = "one cube" if per == 1 else f"{per} cubes"
+    b.summary.append(f"{what} on each of the {n} goal patches ({', '.join(cubes)}, any cube on any patch)")
     b.min_separation = 0.10
     return True
 
