@@ -377,6 +377,9 @@ def test_moving_a_cube_alternating_colours_and_removing_cubes(tmp_path):
     s = steer(line, "Remove one block")
     assert (s.intent, s.valid) == ("tweak", True)
     assert s.compile.schema.goal_summary == "cubes in a line left to right: red_1, blue, red_2"
+    s = steer(fam, "Make it 5 blocks tall")
+    s = steer(fam, "Remove the top two blocks")  # back to the 3-block tower of v1: reused
+    assert s.reused and s.version == 1
 
 
 def test_reading_direction_tower_of_a_word_and_back_to_a_named_word(tmp_path):

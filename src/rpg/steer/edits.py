@@ -274,7 +274,10 @@ def read_ops(t: str) -> list[Op]:
         if sel and new:
             ops.append(Op("recolor" if "color" in new else "relabel", {"select": sel, "to": new}))
     rm = re.search(r"\b(?:remove|delete|take away|take off|drop|get rid of)\s+(?:the\s+)?(?P<sel>.+?)(?:[;,.]|\band\b|$)", t)
-    if rm and _selector(rm.group("sel")):
+    top_n = re.search(r"\b(?:remove|delete|take away|take off|drop|get rid of)\s+(?:the\s+)?(?:top|last)\s+(\d+)\s+(?:blocks?|cubes?)\b", t)
+    if top_n:  # "remove the top two blocks": the structure shrinks from its end
+        ops.append(Op("count", {"delta": -int(top_n.group(1))}))
+    elif rm and _selector(rm.group("sel")):
         ops.append(Op("remove", {"select": _selector(rm.group("sel"))}))
     direction = re.search(r"\b(?:read|reads|go|goes|run|runs|order|arrange\w*|spell\w*|from|it)\s+(?:from\s+)?"
                           r"(left to right|right to left|front to back|back to front)\b", t)
