@@ -87,6 +87,10 @@ class Builder:
     def place(self, poses: dict[str, Pose]) -> None:
         self.layout.update(poses)
 
+    def place_patch(self, name: str, xy: tuple[float, float]) -> None:
+        """Put goal patch ``name`` on the table with its centre at ``xy`` (m, world frame)."""
+        self.place({name: Pose((xy[0], xy[1], C.TABLE_TOP_Z + C.PATCH_THICKNESS / 2))})
+
     def unit_centers(self, count: int, spacing: float = 0.12) -> list[tuple[float, float]]:
         return spread_centers(count, spacing)
 

@@ -314,7 +314,8 @@ def recognize_temporal(f: Features, b: Builder) -> bool:
     for color, (x, y) in zip(order, centers, strict=True):
         cube = b.cube(color)
         patch = b.patch(color)
-        b.place({patch: Pose((x, y, C.TABLE_TOP_Z + C.PATCH_THICKNESS / 2)), cube: stack_layout([cube], (x, y))[cube]})
+        b.place_patch(patch, (x, y))
+        b.place(stack_layout([cube], (x, y)))
         events.append(OnPatch(cube, patch))
     b.preds.append(InOrder(tuple(events)))
     b.primitives += ["place"]
@@ -336,7 +337,8 @@ def recognize_matching_patches(f: Features, b: Builder) -> bool:
     centers = b.unit_centers(len(colors), 0.14)
     for color, (x, y) in zip(colors, centers, strict=True):
         cube, patch = b.cube(color), b.patch(color)
-        b.place({patch: Pose((x, y, C.TABLE_TOP_Z + C.PATCH_THICKNESS / 2)), cube: stack_layout([cube], (x, y))[cube]})
+        b.place_patch(patch, (x, y))
+        b.place(stack_layout([cube], (x, y)))
         b.preds.append(OnPatch(cube, patch))
     b.primitives += ["place"]
     b.summary.append("each cube on the patch of its colour: " + ", ".join(colors))
@@ -368,7 +370,7 @@ def recognize_each_patch(f: Features, b: Builder) -> bool:
     cubes = []
     for x, y in centers:
         patch = b.patch(pcolor)
-        b.place({patch: Pose((x, y, C.TABLE_TOP_Z + C.PATCH_THICKNESS / 2))})
+        b.place_patch(patch, (x, y))
         for spot in _patch_spots((x, y), "square", per):
             cube = b.cube(color)
             b.place(stack_layout([cube], spot))
@@ -1270,7 +1272,7 @@ def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch:
     pc = b.unit_centers(len(patches), 0.16) if patches else []
     patch_xy.update(zip(patches, pc, strict=True))
     for p, xy in sorted(patch_xy.items()):
-        b.place({p: Pose((xy[0], xy[1], C.TABLE_TOP_Z + C.PATCH_THICKNESS / 2))})
+        b.place_patch(p, xy)
     on_patch_by: dict[str, list[str]] = {}
     for a, p in onpatch:
         on_patch_by.setdefault(p, []).append(base_of[a])
@@ -1353,7 +1355,7 @@ def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
         b.preds.append(Stack(tuple(names)))
         if with_patches:
             p = b.patch(cols[0])
-            b.place({p: Pose((xy[0], xy[1], C.TABLE_TOP_Z + C.PATCH_THICKNESS / 2))})
+            b.place_patch(p, xy)
             b.preds.append(OnPatch(names[0], p))
     b.primitives += ["stack"]
     b.summary.append(f"{k} towers of {height} cubes" + (", each on the patch of its color" if with_patches else ""))

@@ -13,7 +13,19 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from rpg.domain.predicates import And, Behind, InFrontOf, LeftOf, NextTo, Predicate, RightOf, Stack
+from rpg.domain.predicates import (
+    And,
+    Behind,
+    InFrontOf,
+    LeftOf,
+    NextTo,
+    OnPatch,
+    Predicate,
+    RightOf,
+    Stack,
+)
+from rpg.schema.builder import DEFAULT_COLORS
+from rpg.schema.builtin import COLOR_RE, _canon_color
 from rpg.schema.model import TaskSchema
 
 PHRASES = {"left_of": "to the left of", "right_of": "to the right of", "in_front_of": "in front of",
@@ -121,8 +133,6 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
 
 def _added(t: str, schema: TaskSchema, rel: Relation) -> tuple[str, str] | None:
     """"Add a green block next to it": the reference's relation, then the new cube's."""
-    from rpg.schema.builtin import COLOR_RE, _canon_color
-
     m = re.search(rf"\b(?:an?|another|one more|a new|an extra)\s+(?:new\s+|extra\s+)?({COLOR_RE})\s+(?:block|cube)\b(.*)", t)
     if m is None:
         return None
@@ -150,8 +160,6 @@ def _added(t: str, schema: TaskSchema, rel: Relation) -> tuple[str, str] | None:
 def _patch_task(schema: TaskSchema) -> tuple[list[str], str, str] | None:
     """(cube colours, patch colour, patch shape) of a task that puts coloured cubes on one
     goal patch; None for any other task."""
-    from rpg.domain.predicates import OnPatch
-
     goal = schema.goal_predicate()
     parts = list(goal.children()) if isinstance(goal, And) else [goal]
     patches = [a for a in schema.assets if a.kind == "goal_patch"]
@@ -168,9 +176,6 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     patch green") or shape ("make the patch long"), the number of cubes ("use three
     blocks", Tweak) or a named cube added ("add a yellow block", Extend).  Returns the
     whole-task instruction and the intent, or None."""
-    from rpg.schema.builder import DEFAULT_COLORS
-    from rpg.schema.builtin import COLOR_RE, _canon_color
-
     task = _patch_task(schema)
     if task is None:
         return None

@@ -18,6 +18,7 @@ hash) moves the head back to that version instead of duplicating it.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Literal
@@ -146,24 +147,22 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         SteerError: the edit does not apply to the reference task.
         ParseError / InfeasibleTask: the resulting task cannot be read or realised.
     """
-    relational = None
-    if not plan.fresh and reference is not None:
-        ref = fam.schema(reference)
-        relational = rewrite_relation(plan.text, ref) or rewrite_patch(plan.text, ref)
-    if relational is not None:  # "put it in front instead", "swap them": the reference's relation, changed
-        instruction, intent = relational
-        return parse(instruction), instruction, intent
+    ref_schema = None if plan.fresh or reference is None else fam.schema(reference)  # read once
+    if ref_schema is not None:
+        relational = rewrite_relation(plan.text, ref_schema) or rewrite_patch(plan.text, ref_schema)
+        if relational is not None:  # "put it in front instead", "swap them": the reference's relation, changed
+            instruction, intent = relational
+            return parse(instruction), instruction, intent
     if plan.standalone:
         text = strip_edit_words(plan.text)
         schema = parse(text)
         if plan.fresh:
             return schema, text, "fresh"
-        ref_schema, ref_spec = _spec_of(fam, reference)
-        new_spec = extract(schema)
+    ref_schema, ref_spec = (ref_schema, extract(ref_schema)) if ref_schema is not None else _spec_of(fam, reference)
+    if plan.standalone:
         if relation_of(schema) and relation_of(ref_schema) and same_assets(schema, ref_schema):
             return schema, text, "modify"  # the same cubes in another relation
-        return schema, text, intent_of_standalone(new_spec, ref_spec)
-    ref_schema, ref_spec = _spec_of(fam, reference)
+        return schema, text, intent_of_standalone(extract(schema), ref_spec)
     if ref_spec is None and plan.ops and all(o.op == "recolor" and "color" in o.params["select"] for o in plan.ops):
         schema = ref_schema
         for o in plan.ops:
@@ -245,8 +244,6 @@ def recolor_schema(schema: TaskSchema, old: str, new: str) -> TaskSchema:
     Raises:
         SteerError: the task has nothing of colour ``old``, or already uses ``new``.
     """
-    import re
-
     names = {a.name for a in schema.assets}
     hits = [a for a in schema.assets if a.color == old]
     if not hits:

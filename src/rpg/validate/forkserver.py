@@ -113,7 +113,7 @@ def preload() -> None:
     """Import what every child needs, once: the domain, PIL's PNG codec and the OpenGL
     bindings of the configured backend; then, unless ``RPG_WARM_GL=0``, create the shared
     OpenGL context and compile its shaders (:func:`rpg.domain.render.warm_shared_context`)
-    so that a child's two snapshots cost ~70 ms instead of ~250 ms.
+    so that a child's two snapshots cost ~95 ms instead of ~250 ms.
 
     The server must stay single-threaded, since it forks: when the renderer started
     threads after all, the server re-executes itself without the warm context.
