@@ -88,3 +88,57 @@ def test_fork_server_drops_the_warm_context_when_the_renderer_starts_threads(let
     finally:
         proc.kill()
         proc.wait()
+
+
+def _children(pid: int) -> list[int]:
+    kids = []
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                stat = open(f"/proc/{entry}/stat").read()
+            except OSError:
+                continue
+            if int(stat.rsplit(")", 1)[1].split()[1]) == pid:
+                kids.append(int(entry))
+    return sorted(kids)
+
+
+@pytest.mark.skipif(not os.path.isdir("/proc/self/task"), reason="needs Linux /proc")
+def test_template_gives_each_worker_a_warm_clone_of_one_server(letters):
+    reference = run_worker({"op": "render", "dir": str(letters), "seed": 2})
+    with sandbox.ForkServerTemplate() as template:
+        clients = [sandbox._ForkServer(template.address) for _ in range(2)]
+        try:
+            docs = [c.run({"op": "render", "dir": str(letters), "seed": 2}, 60) for c in clients]
+            clones = _children(template.proc.pid)
+            assert len(clones) == 2, "one clone per connection, forked by the template"
+            for pid in clones:
+                assert _threads(pid) == 1
+                assert b"RPG_WARM_GL=0" not in open(f"/proc/{pid}/environ", "rb").read().split(b"\0")
+                maps = open(f"/proc/{pid}/maps").read()
+                assert any(d in maps for d in ("_dri.so", "libgallium", "libnvidia-eglcore")), "clone has no warm context"
+            for doc in docs:
+                assert doc["ok"], doc
+                for key in ("initial", "goal"):
+                    assert np.abs(_image(doc, key) - _image(reference, key)).mean() < 0.05
+            clients[0].close()  # a worker that goes away ends its clone
+            deadline = time.monotonic() + 10
+            while len(_children(template.proc.pid)) > 1 and time.monotonic() < deadline:
+                time.sleep(0.05)
+            left = _children(template.proc.pid)
+            assert len(left) == 1 and left[0] in clones
+            assert clients[1].run({"op": "render", "dir": str(letters), "seed": 2}, 60)["ok"]
+        finally:
+            for c in clients:
+                c.close()
+    assert template.proc.poll() is not None and not os.path.exists(template.dir)
+
+
+def test_unreachable_template_falls_back_to_an_own_server(letters, tmp_path, monkeypatch):
+    monkeypatch.setattr(sandbox, "_server", None)
+    sandbox.prestart(str(tmp_path / "no-such.sock"))
+    try:
+        assert sandbox._server.proc is not None  # started its own server instead
+        assert run_worker({"op": "render", "dir": str(letters), "seed": 0})["ok"]
+    finally:
+        sandbox._server.close()

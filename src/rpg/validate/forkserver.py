@@ -3,8 +3,9 @@ per request, so each task still runs in its own process without paying interpret
 MuJoCo start-up each time.
 
 Started only by :mod:`rpg.validate.sandbox`, with the same stripped environment as a
-one-shot worker.  Protocol on stdin/stdout: a line with the byte length, then that many
-bytes of JSON; the request carries ``_timeout`` (s).  Each child: new session, resource
+one-shot worker.  Protocol on stdin/stdout (or, for a clone of a template server, on its
+Unix-socket connection): a line with the byte length, then that many bytes of JSON; the
+request carries ``_timeout`` (s).  Each child: new session, resource
 limits, a fresh temporary working directory, stdout and stderr away from the protocol
 channel; it writes its JSON document to a pipe.  The server enforces the wall-clock limit
 (SIGKILL to the child's process group) and the output bound, and answers with a document
@@ -135,13 +136,12 @@ def preload() -> None:
     from rpg.domain.render import shared_context_fork_safe, warm_shared_context
 
     if warm_shared_context() and not shared_context_fork_safe():
-        os.execve(sys.executable, [sys.executable, "-m", "rpg.validate.forkserver"], {**os.environ, WARM_GL_ENV: "0"})
+        os.execve(sys.executable, [sys.executable, "-m", "rpg.validate.forkserver", *sys.argv[1:]],
+                  {**os.environ, WARM_GL_ENV: "0"})
 
 
-def main() -> None:
-    preload()
-
-    inp, out = sys.stdin.buffer, sys.stdout.buffer
+def serve(inp, out) -> None:
+    """Answer requests from ``inp`` on ``out`` (binary files) until ``inp`` ends."""
     while True:
         header = inp.readline()
         if not header:
@@ -150,6 +150,39 @@ def main() -> None:
         payload = serve_one(req)
         out.write(f"{len(payload)}\n".encode() + payload)
         out.flush()
+
+
+def serve_clones(listen_fd: int) -> None:
+    """Template mode: accept connections on the listening Unix socket ``listen_fd`` and
+    fork, for each, a clone that serves that connection as :func:`serve` serves stdin.
+
+    A clone inherits the preloaded modules and the warm OpenGL context, so N workers get N
+    fork servers for the start-up cost of one.  A clone exits when its connection closes.
+    """
+    import socket
+
+    listener = socket.socket(fileno=listen_fd)
+    signal.signal(signal.SIGCHLD, signal.SIG_IGN)  # clones that end are reaped by the kernel
+    while True:
+        conn, _ = listener.accept()
+        pid = os.fork()
+        if pid == 0:  # pragma: no cover - runs in the clone
+            try:
+                signal.signal(signal.SIGCHLD, signal.SIG_DFL)  # serve_one waits for its own children
+                listener.close()
+                stream = conn.makefile("rwb")
+                serve(stream, stream)
+            finally:
+                os._exit(0)
+        conn.close()
+
+
+def main() -> None:
+    preload()
+    if sys.argv[1:2] == ["--listen-fd"]:
+        serve_clones(int(sys.argv[2]))
+    else:
+        serve(sys.stdin.buffer, sys.stdout.buffer)
 
 
 if __name__ == "__main__":

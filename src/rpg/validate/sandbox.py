@@ -12,6 +12,7 @@ import json
 import os
 import select
 import shutil
+import socket
 import subprocess
 import sys
 import tempfile
@@ -78,37 +79,110 @@ def _parse(out: bytes, stderr: bytes = b"", returncode: int | None = None) -> di
 
 
 class _ForkServer:
-    """A long-lived :mod:`rpg.validate.forkserver` process owned by this process."""
+    """A long-lived :mod:`rpg.validate.forkserver` this process talks to: its own child
+    (over stdin/stdout), or, given a template's ``address``, a clone of that template (over
+    a Unix-socket connection; see :class:`ForkServerTemplate`).
 
-    def __init__(self):
+    Raises:
+        OSError: the template cannot be reached.
+    """
+
+    def __init__(self, address: str | None = None):
         self.owner = os.getpid()
-        self.cwd = tempfile.mkdtemp(prefix="rpg-forkserver-")
-        self.proc = subprocess.Popen(
-            [sys.executable, "-m", "rpg.validate.forkserver"], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-            stderr=subprocess.DEVNULL, cwd=self.cwd, env={**_worker_env(), **FORK_SAFE_GL_ENV})
+        self.proc = self.sock = self.cwd = None
+        if address:
+            self.sock = socket.socket(socket.AF_UNIX)
+            try:
+                self.sock.connect(address)
+            except OSError:
+                self.sock.close()
+                raise
+            self.rfile = self.wfile = self.sock.makefile("rwb")
+            self.ready = self.sock
+        else:
+            self.cwd = tempfile.mkdtemp(prefix="rpg-forkserver-")
+            self.proc = subprocess.Popen(
+                [sys.executable, "-m", "rpg.validate.forkserver"], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                stderr=subprocess.DEVNULL, cwd=self.cwd, env=_server_env())
+            self.wfile, self.rfile = self.proc.stdin, self.proc.stdout
+            self.ready = self.rfile
 
     def alive(self) -> bool:
-        return self.owner == os.getpid() and self.proc.poll() is None
+        if self.owner != os.getpid():
+            return False
+        return self.proc.poll() is None if self.proc else self.sock.fileno() != -1
 
     def run(self, request: dict, timeout: float) -> dict:
         payload = json.dumps({**request, "_timeout": timeout}).encode()
         try:
-            self.proc.stdin.write(f"{len(payload)}\n".encode() + payload)
-            self.proc.stdin.flush()
-            ready, _, _ = select.select([self.proc.stdout], [], [], timeout + SERVER_GRACE_S)
+            self.wfile.write(f"{len(payload)}\n".encode() + payload)
+            self.wfile.flush()
+            ready, _, _ = select.select([self.ready], [], [], timeout + SERVER_GRACE_S)
             if not ready:
                 raise OSError("the fork server did not answer")
-            n = int(self.proc.stdout.readline())
-            return _parse(self.proc.stdout.read(n))
+            n = int(self.rfile.readline())
+            return _parse(self.rfile.read(n))
         except (OSError, ValueError) as exc:
             self.close()
             raise _ServerDown(str(exc)) from None
 
     def close(self) -> None:
+        if self.sock is not None:
+            self.rfile.close()
+            self.sock.close()
+            return
         if self.proc.poll() is None:
             self.proc.kill()
             self.proc.wait()
         shutil.rmtree(self.cwd, ignore_errors=True)
+
+
+class ForkServerTemplate:
+    """A fork server that only clones itself: each connection to :attr:`address` gets its
+    own fork server, forked from this one after its imports and OpenGL warm-up.
+
+    A process that is about to fork N workers starts one template and has each worker call
+    :func:`prestart` with its address: the N workers then share one start-up (~0.7 s of
+    imports and shader compilation) instead of paying it N times on the same cores.  Workers
+    can connect at once; the template accepts when it is ready.  Use as a context manager.
+
+    Raises:
+        OSError: no Unix socket can be made here (the caller then starts servers as usual).
+    """
+
+    def __init__(self):
+        self.dir = tempfile.mkdtemp(prefix="rpg-forkserver-")  # mode 0700: only this user can connect
+        self.address = os.path.join(self.dir, "template.sock")
+        listener = socket.socket(socket.AF_UNIX)
+        try:
+            listener.bind(self.address)
+            listener.listen(64)
+            self.proc = subprocess.Popen(
+                [sys.executable, "-m", "rpg.validate.forkserver", "--listen-fd", str(listener.fileno())],
+                stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, cwd=self.dir,
+                env=_server_env(), pass_fds=(listener.fileno(),))
+        except (OSError, ValueError) as exc:
+            shutil.rmtree(self.dir, ignore_errors=True)
+            raise OSError(f"cannot start a fork-server template: {exc}") from None
+        finally:
+            listener.close()
+
+    def close(self) -> None:
+        """Stop the template; clones end when their workers close their connections."""
+        if self.proc.poll() is None:
+            self.proc.kill()
+            self.proc.wait()
+        shutil.rmtree(self.dir, ignore_errors=True)
+
+    def __enter__(self) -> ForkServerTemplate:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+
+def _server_env() -> dict[str, str]:
+    return {**_worker_env(), **FORK_SAFE_GL_ENV}
 
 
 class _ServerDown(RuntimeError):
@@ -138,18 +212,28 @@ def worker_timeout() -> float:
         return WORKER_TIMEOUT_S
 
 
-def _forkserver_enabled() -> bool:
+def forkserver_enabled() -> bool:
+    """Whether task code runs in children of a fork server (set ``RPG_FORKSERVER=0`` for a
+    whole interpreter per request)."""
     return os.environ.get("RPG_FORKSERVER", "1") != "0" and hasattr(os, "fork")
 
 
-def prestart() -> None:
+def prestart(template: str | None = None) -> None:
     """Start the fork server now (without waiting for it), so that its imports overlap the
-    caller's own start-up; :func:`run_worker` uses it when it is ready."""
+    caller's own start-up; :func:`run_worker` uses it when it is ready.
+
+    Args:
+        template: address of a :class:`ForkServerTemplate` to clone instead of starting a
+            new server (when it cannot be reached, a new server is started).
+    """
     global _server
-    if _forkserver_enabled():
+    if forkserver_enabled():
         with _server_lock:
             if _server is None or not _server.alive():
-                _server = _ForkServer()
+                try:
+                    _server = _ForkServer(template)
+                except OSError:
+                    _server = _ForkServer()
 
 
 def run_worker(request: dict, timeout: float | None = None) -> dict:
@@ -163,7 +247,7 @@ def run_worker(request: dict, timeout: float | None = None) -> dict:
     """
     global _server
     timeout = worker_timeout() if timeout is None else timeout
-    if _forkserver_enabled():
+    if forkserver_enabled():
         with _server_lock:
             for _ in range(2):
                 if _server is None or not _server.alive():
