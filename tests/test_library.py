@@ -67,6 +67,33 @@ def test_build_records_hashes_and_check_catches_a_change(mini, tmp_path):
     assert bad.returncode == 1 and "changed place_left" in bad.stdout
 
 
+def _mtimes(root: Path) -> dict:
+    return {p: p.stat().st_mtime_ns for p in root.rglob("*") if p.is_file() and p.suffix != ".json" and p.name != "manifest.yaml"}
+
+
+def test_rebuild_leaves_unchanged_entries_alone_and_restores_altered_ones(mini, tmp_path):
+    assert rpg("build", str(mini)).returncode == 0
+    built = _mtimes(tmp_path)
+    assert rpg("build", str(mini), "--jobs", "2", "--json", str(tmp_path / "r1.json")).returncode == 0
+    assert _mtimes(tmp_path) == built, "an unchanged entry's files (logs with timings, snapshots) were rewritten"
+    assert not any(e["written"] for e in json.loads((tmp_path / "r1.json").read_text())["entries"])
+
+    code = tmp_path / "stack_blocks" / "code.py"
+    pristine = code.read_text()
+    code.write_text(pristine + "\n# edited by hand\n")
+    history = tmp_path / "tower" / "v1" / "goal_state_code.py"
+    history.write_text(history.read_text() + "\n# edited by hand\n")
+    r = rpg("build", str(mini), "--json", str(tmp_path / "r2.json"))
+    assert r.returncode == 0, r.stdout + r.stderr
+    written = {e["name"]: e["written"] for e in json.loads((tmp_path / "r2.json").read_text())["entries"]}
+    assert written == {"stack_blocks": True, "place_left": False, "tower": True}
+    assert code.read_text() == pristine and "edited" not in history.read_text()
+    assert not list(tmp_path.glob(".rpg-build-*")) and not list(tmp_path.glob(".trash-*"))
+
+    assert rpg("build", str(mini), "--force", "--json", str(tmp_path / "r3.json")).returncode == 0
+    assert all(e["written"] for e in json.loads((tmp_path / "r3.json").read_text())["entries"])
+
+
 def test_bad_manifests_exit_2(tmp_path):
     f = tmp_path / "m.yaml"
     for text in ("entries: [{name: x}]", "entries: [{name: Bad Name, instruction: stack two blocks}]", "nope: 1", ": :"):

@@ -262,8 +262,12 @@ def build_cmd(
     address: Annotated[str | None, typer.Option("--address", help="Ray cluster address ('auto'); default a local Ray.")] = None,
     check: Annotated[bool, typer.Option("--check", help="Regenerate in a temporary directory; exit 1 if any hash differs.")] = False,
     report: Annotated[Path | None, typer.Option("--json", help="Write a JSON report here.")] = None,
+    force: Annotated[bool, typer.Option("--force", help="Rewrite entries whose hash did not change too (e.g. to refresh snapshots).")] = False,
 ) -> None:
-    """Compile and steer every manifest entry in parallel (or check that they regenerate unchanged)."""
+    """Compile and steer every manifest entry in parallel (or check that they regenerate unchanged).
+
+    Entries the library already holds with the same hash keep their files, unless --force.
+    """
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
     from rich.table import Table
 
@@ -278,17 +282,19 @@ def build_cmd(
         with Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
                       console=err, transient=True) as bar:
             task = bar.add_task("check" if check else "build", total=total)
-            reports, seconds = build_library(manifest, jobs, backend, check, address,
+            reports, seconds = build_library(manifest, jobs, backend, check, address, force=force,
                                              progress=lambda r: bar.update(task, advance=1, description=r["name"]))
     except ManifestError as exc:
         _fail(str(exc))
     changed = [r for r in reports if r["changed"]]
     failed = [r for r in reports if r["status"] != "valid"]
     table = Table(title=f"{'check' if check else 'build'} {manifest}")
-    for col in ("entries", "valid", "repaired", "rejected", "changed", "time"):
+    cols = ("entries", "valid", "repaired", "rejected", "changed", *(() if check else ("written",)), "time")
+    for col in cols:
         table.add_column(col)
     table.add_row(str(len(reports)), str(sum(r["status"] == "valid" for r in reports)),
-                  str(sum(bool(r.get("repairs")) for r in reports)), str(len(failed)), str(len(changed)), f"{seconds:.1f} s")
+                  str(sum(bool(r.get("repairs")) for r in reports)), str(len(failed)), str(len(changed)),
+                  *(() if check else (str(sum(r.get("written", False) for r in reports)),)), f"{seconds:.1f} s")
     out.print(table)
     for r in failed:
         out.print(f"[red]{r['status']}[/] {r['name']}: {esc(r.get('error') or '; '.join(r.get('problems') or []) or 'validation failed')}")

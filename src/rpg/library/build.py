@@ -209,11 +209,16 @@ def _ray(entries: list[dict], out_dir: str, base_dir: str, jobs: int, address: s
 
 def build_library(manifest_path: str | Path, jobs: int = 1, backend: Literal["local", "ray"] = "local",
                   check: bool = False, address: str | None = None,
-                  progress: Callable[[dict], None] | None = None) -> tuple[list[dict], float]:
+                  progress: Callable[[dict], None] | None = None, force: bool = False) -> tuple[list[dict], float]:
     """Build (or, with ``check``, regenerate and compare) every entry; (reports, seconds).
 
-    Without ``check`` the artifacts are written beside the manifest and the manifest's
-    hashes are updated to what was built.  With ``check`` nothing in the library changes.
+    Entries are built in a temporary directory.  Without ``check``, each built entry is then
+    published beside the manifest (one atomic rename) unless the library already holds it
+    with the same hash, recomputed from its files: an unchanged entry keeps its files, so a
+    rebuild after a compiler change touches, in git, only what changed (``force`` rewrites
+    them all, e.g. to refresh snapshots after a renderer change).  Rejected tasks go to
+    ``.rejected/``.  The manifest's hashes are updated to what was built.  With ``check``
+    nothing in the library changes.  Each report says whether the entry was ``written``.
 
     Raises:
         ManifestError: an unreadable manifest or an unavailable backend.
@@ -223,11 +228,13 @@ def build_library(manifest_path: str | Path, jobs: int = 1, backend: Literal["lo
     base = manifest_path.resolve().parent
     entries = [e.model_dump() for e in manifest.entries]
     t0 = time.perf_counter()
-    with tempfile.TemporaryDirectory(prefix="rpg-check-") as tmp:
-        out = tmp if check else str(base)
-        runner = _ray(entries, out, str(base), jobs, address) if backend == "ray" else _local(entries, out, str(base), jobs)
+    # In place, the build directory sits in the library so that publishing is a rename.
+    with tempfile.TemporaryDirectory(prefix=".rpg-build-", dir=None if check else base) as tmp:
+        runner = _ray(entries, tmp, str(base), jobs, address) if backend == "ray" else _local(entries, tmp, str(base), jobs)
         reports = []
         for rep in runner:
+            if not check:
+                _publish(rep, Path(tmp), base, force)
             reports.append(rep)
             if progress:
                 progress(rep)
@@ -240,6 +247,41 @@ def build_library(manifest_path: str | Path, jobs: int = 1, backend: Literal["lo
                 e.content_hash = by_name[e.name]["content_hash"]
         save_manifest(manifest_path, manifest, _header(manifest_path))
     return reports, time.perf_counter() - t0
+
+
+def _publish(report: dict, tmp: Path, base: Path, force: bool) -> None:
+    """Move one built entry from ``tmp`` into the library ``base`` unless the library holds
+    it unchanged; sets ``report["written"]`` and points ``report["path"]`` at the library."""
+    from rpg.compiler import atomic_replace
+
+    report["written"] = False
+    if not report.get("path"):
+        return
+    rel = Path(report["path"]).relative_to(tmp)
+    target = base / rel
+    report["path"] = str(target)
+    if report["status"] == "valid" and not force and _recorded_hash(target) == report["content_hash"]:
+        return
+    atomic_replace(tmp / rel, target)
+    report["written"] = True
+
+
+def _recorded_hash(path: Path) -> str | None:
+    """The hash of the task artifact or family at ``path``, recomputed from its files; None
+    when there is none or its files no longer match their recorded hashes."""
+    from rpg.compiler import ArtifactError, content_hash, load_artifact
+    from rpg.steer.family import Family, is_family
+
+    try:
+        if is_family(path):
+            family = Family(path)
+            intact = all(v["ok"] for v in family.verify())
+            return family.load().versions[-1].lineage_hash if intact else None
+        _, doc = load_artifact(path)
+        digest = content_hash(doc, (path / "code.py").read_text(), (path / "goal_state_code.py").read_text())
+        return digest if digest == doc.get("content_hash") else None
+    except (ArtifactError, OSError, ValueError, KeyError, IndexError):
+        return None
 
 
 def _header(path: Path) -> str:
