@@ -290,6 +290,17 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     ("Make a line of digits 1 through 4 from front to back", "up faces read 1, 2, 3, 4 front to back"),
     ("Line up four letter cubes", "4 letter cubes in one straight left-right line"),
     ("Put two blocks on each patch", "2 cubes on each of the 2 goal patches (red_1, red_2, red_3, red_4, any cube on any patch)"),
+    ("Move the yellow cube onto the blue target.", "yellow on blue_patch"),
+    ("Place the red block in the green goal area.", "red on green_patch"),
+    ("Put the blue cube on the red mat.", "blue on red_patch"),
+    ("Put three blocks in a column.", "tower bottom to top: red, blue, green"),
+    ("Arrange the blocks so that 2 + 3 = 5 reads from left to right.",
+     "the cubes read a correct equation left to right (e.g. 2+3=5)"),
+    ("Create a row of four blocks with colors red, blue, red, blue.", "cubes in a line left to right: red_1, blue_1, red_2, blue_2"),
+    ("Arrange 6 blocks in two stacks of three.", "2 towers of 3 cubes"),
+    ("Build 3 stacks, 2 blocks high.", "3 towers of 2 cubes"),
+    ("Separate the letters from the numbers.", "2 separate piles, one per type (letters, digits)"),
+    ("Place the red, green and blue blocks in a triangle.", "a 2D pyramid with a base of 2 (3 cubes)"),
 ])
 def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     assert parse(text).goal_summary == summary
@@ -308,6 +319,8 @@ def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     "Arrange the digits 1 to 4 from front to back",  # laid out along x (it was along y: the order was luck)
     "Stack the red blocks on the red patch and the blue blocks on the blue patch",
     "Place 2 red cubes on each of the 3 blue patches",
+    "Lay out 3 x 3 = 9 with cubes",
+    "Arrange 6 blocks in two stacks of three",
 ])
 def test_new_phrasings_compile_to_valid_tasks(text, tmp_path):
     r = compile_instruction(text, tmp_path)
@@ -327,6 +340,8 @@ def test_parser_refuses_rather_than_drop_a_named_cube():
         parse("Put 5 blocks on the goal patch")
     with pytest.raises(ParseError, match="wall 4 wide and 2 high has 8 cubes, not 6"):
         parse("Build a wall of 6 blocks, 4 wide and 2 high")
+    with pytest.raises(ParseError, match="2\\+2=5 is not a correct equation"):
+        parse("Arrange the cubes to show 2 + 2 = 5.")
     schema = parse("Form a straight line of four blue blocks")
     assert [a.color for a in schema.assets] == ["blue"] * 4
 

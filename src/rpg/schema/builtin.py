@@ -98,7 +98,8 @@ alternating alternate alternately alternates going goes go way up down upward do
 wall walls wide deep long split divide pillar column close far triangle triangular formation write writes
 writing addition subtraction multiplication increase increases decrease decreases tier tiers instead actually
 rather backwards backward pick grab take lift get lay drop small little tiny mini huge one unstack unstacked
-through corner corners
+through corner corners sum area areas zone zones region regions spot spots location pad pads mat mats
+marker markers
 """.split())
 """Words the builtin front end understands (besides colours, numbers and labels)."""
 
@@ -182,6 +183,10 @@ def normalize(instruction: str) -> tuple[str, str]:
     for w, r in fixed.items():
         text = re.sub(rf"\b{re.escape(w)}\b", r, text)
     text = re.sub(r"\bvertical (?:column|stack)\b|\bpillar\b", "tower", text)
+    text = re.sub(r"\b(a|one|single|the same)\s+column\b", r"\1 tower", text)  # "in a column"; "2 columns" stay grids
+    text = re.sub(r"\b(?:goal|target)\s+(?:area|zone|region|spot|location|pad|mat|marker)(s?)\b", r"goal patch\1", text)
+    text = re.sub(rf"\b({COLOR_RE})\s+(?:pad|mat|marker|zone|area|region)(s?)\b", r"\1 patch\2", text)
+    text = re.sub(r"\btarget(s?)\b(?!\s+(?:goal\s+)?patch)", r"patch\1", text)  # "onto the blue target"
     text = re.sub(r"\b(?:pick up|grab|take|lift|get|pick)\s+(the\s+(?:[a-z0-9']+\s+){0,4}?(?:block|cube|box|one))\s+(?:up\s+)?"
                   r"and\s+(?:then\s+)?(place|put|set|stack|move|drop|lay)\s+it\b", r"\2 \1", text)
     text = re.sub(r"\bside by side\b", "next to each other", text)
@@ -437,11 +442,19 @@ def orientation_showing(face: str, direction: str) -> tuple[float, float, float,
     return tuple(round(float(v), 9) for v in q)
 
 
+EQUATION_RE = re.compile(r"(?<!\d)(?<!\d\.)(\d\s*[+\-x*\u00d7]\s*\d\s*=\s*\d+)(?!\d|\.\d)")
+
+
 def recognize_equation(f: Features, b: Builder) -> bool:
-    if not f.has("equation", "math", "maths", "arithmetic", "sum"):
+    m = EQUATION_RE.search(f.original)
+    if not (m or f.has("equation", "math", "maths", "arithmetic", "sum")):
         return False
-    m = re.search(r"(\d\s*[+\-x*]\s*\d\s*=\s*\d+)", f.original)
-    text = re.sub(r"\s+", "", m.group(1)).replace("*", "x") if m else "3+4=7"
+    text = re.sub(r"\s+", "", m.group(1)).replace("*", "x").replace("\u00d7", "x") if m else "3+4=7"
+    left, result = text.split("=")
+    a, op, c = int(left[0]), left[1], int(left[2])
+    if {"+": a + c, "-": a - c, "x": a * c}[op] != int(result):
+        raise ParseError(f"{text} is not a correct equation, so no arrangement of it can succeed; "
+                         "give a true one (e.g. 2+3=5)")
     names = [b.semantic(ch) for ch in text]
     b.place(line_layout(names))
     b.preds += [InLine(tuple(names), order="left_to_right"), Equation(tuple(names))]
@@ -541,7 +554,9 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
         total = _count(f, default=None)
         from_total = next((k for k in range(2, 8) if k * (k + 1) // 2 == total), None) if total else None
         size = 2 if f.has("small", "little", "tiny", "mini") else 4 if f.has("big", "large", "tall", "huge") else 3
-        base, dims = (int(m.group(1)) if m else from_total or size), 2
+        named = len(set(f.color_list()))  # "the red, green and blue blocks in a triangle": 3 cubes
+        from_named = next((k for k in range(2, 8) if k * (k + 1) // 2 == named), None) if named >= 3 else None
+        base, dims = (int(m.group(1)) if m else from_total or from_named or size), 2
     if base < 2:
         raise ParseError("a pyramid needs a base of at least 2")
     n = sum((base - k) ** (dims - 1) for k in range(base))
@@ -706,8 +721,9 @@ def recognize_piles(f: Features, b: Builder) -> bool:
     if material == "mixed" or f.has("type", "types", "kind"):
         labels_l, _ = label_sequence("letters", 3, b, ordered=False)
         labels_d, _ = label_sequence("digits", 3, b, ordered=False)
-        groups = [[b.semantic(lab) for lab in labels_l], [b.semantic(lab) for lab in labels_d],
-                  [b.cube(c) for c in ("red", "blue", "green")]]
+        groups = [[b.semantic(lab) for lab in labels_l], [b.semantic(lab) for lab in labels_d]]
+        if f.colors or f.has("color", "colors", "colour", "colours", "colored", "coloured") or material != "mixed":
+            groups.append([b.cube(c) for c in ("red", "blue", "green")])
         by = "type"
     else:
         k = _count(f, "pile|bunch|group|cluster|heap", default=None)
@@ -729,7 +745,7 @@ def recognize_piles(f: Features, b: Builder) -> bool:
     centers = b.unit_centers(len(groups), 0.16)
     b.place(cluster_layout(groups, centers))
     names = tuple(n for g in groups for n in g)
-    what = "type (letters, digits, colors)" if by == "type" else by
+    what = f"type ({', '.join(['letters', 'digits', 'colors'][:len(groups)])})" if by == "type" else by
     if outliers:
         b.preds.append(Piles(groups=tuple(tuple(g) for g in groups)))
         b.summary.append(f"{len(groups)} separate piles, one per {what}, each with {outliers} outlier(s) from another pile")
@@ -780,12 +796,15 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         return False  # "in a plus shape": a shape the parser does not build
     if not order and not labels and len(f.colors) >= 2 and re.search(r"\b(?:left|right) of\b|\bin front of\b|\bbehind\b", f.text):
         return False  # "so that red is left of green": pairwise relations (recognize_relational)
-    if not is_line or f.has("stack", "tower", "on top"):
+    if not is_line or f.has("stack", "stacks", "tower", "towers", "on top"):
         return False
     direction = _direction(f)
     listed = re.search(rf"\b((?:{COLOR_RE})(?:\s*(?:,\s*and|,|and|then)\s+(?:the\s+)?(?:{COLOR_RE})\b)+)", f.text)
-    if not explicit and not order and listed and re.search(r"\b(?:left to right|right to left|front to back|back to front)\b", f.text):
-        explicit = listed
+    if not explicit and not order and listed:
+        seq = re.findall(rf"\b(?:{COLOR_RE})\b", listed.group(1))
+        if re.search(r"\b(?:left to right|right to left|front to back|back to front)\b", f.text) or \
+                len(set(seq)) < len(seq):  # "red, blue, red, blue": a repeated colour only makes sense as an order
+            explicit = listed
     alternating = _alternating(f, 6)
     if alternating and not explicit:
         explicit = re.search(r"(.+)", ", ".join(alternating))
@@ -871,6 +890,7 @@ REL_PATTERNS: list[tuple[str, str]] = [
     (r"between", "between"),
     (r"under|underneath|beneath|below", "under"),
     (r"on top of|onto|on to|atop|above|on", "on"),
+    (r"(?:inside|within|into|in)(?=\s+(?:the\s+|a\s+)?(?:[a-z]+\s+){0,2}patch)", "on"),  # "in the green goal area"
 ]
 
 
@@ -1336,7 +1356,8 @@ def _free_spots(occupied: list[tuple[float, float]], n: int) -> list[tuple[float
 
 def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
     colors = list(dict.fromkeys(f.color_list()))
-    height = _count(f, "block|cube", default=None)
+    each = re.search(r"\b(?:towers|stacks)\s+(?:of|with)\s+(\d+)\b|\b(\d+)\s+(?:blocks?|cubes?)\s+(?:high|tall|each)\b", f.text)
+    height = int(each.group(1) or each.group(2)) * k if each else _count(f, "block|cube", default=None)
     matching = f.has("matching", "same color", "color-specific", "respective", "each stack is the same", "colored goal")
     with_patches = f.has("patch", "patches", "target", "targets")
     if height and height >= 2 * k:
