@@ -301,6 +301,13 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     ("Build 3 stacks, 2 blocks high.", "3 towers of 2 cubes"),
     ("Separate the letters from the numbers.", "2 separate piles, one per type (letters, digits)"),
     ("Place the red, green and blue blocks in a triangle.", "a 2D pyramid with a base of 2 (3 cubes)"),
+    ("Place the red cube in the middle of the table.", "red in the center of the workspace"),
+    ("Put the blue block in the far left corner of the table.", "blue in the back left corner of the workspace"),
+    ("Put the red block on the left side of the table and the blue one on the right side of the table.",
+     "red on the left side of the workspace; blue on the right side of the workspace"),
+    ("Place the red block to the left of the blue block, in the back of the table.",
+     "red on the back side of the workspace; red left of blue"),
+    ("Put the red block on the left and the blue block on the right.", "red left of blue"),  # relative, not a region
 ])
 def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     assert parse(text).goal_summary == summary
@@ -321,10 +328,22 @@ def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     "Place 2 red cubes on each of the 3 blue patches",
     "Lay out 3 x 3 = 9 with cubes",
     "Arrange 6 blocks in two stacks of three",
+    "Build a tower of three blocks in the center of the workspace",
+    "Move the purple block to the back right corner and the orange block to the front left corner",
+    "Place four cubes in the front right corner",
 ])
 def test_new_phrasings_compile_to_valid_tasks(text, tmp_path):
     r = compile_instruction(text, tmp_path)
     assert r.valid, [g for g in r.gates if g["status"] == "fail"]
+
+
+def test_region_tasks_start_outside_their_regions(tmp_path):
+    r = compile_instruction("Move the green cube to the left side of the table", tmp_path)
+    assert r.valid
+    code = (r.path / "code.py").read_text()
+    assert "avoid={'green': 'left'}" in code and "starting outside its goal region: green (left)" in code
+    nontrivial = next(g for g in r.gates if g["gate"] == "nontrivial")
+    assert nontrivial["status"] == "pass"
 
 
 def test_parser_refuses_rather_than_drop_a_named_cube():
@@ -342,6 +361,8 @@ def test_parser_refuses_rather_than_drop_a_named_cube():
         parse("Build a wall of 6 blocks, 4 wide and 2 high")
     with pytest.raises(ParseError, match="2\\+2=5 is not a correct equation"):
         parse("Arrange the cubes to show 2 + 2 = 5.")
+    with pytest.raises(ParseError, match="8 cubes do not fit in the center"):
+        parse("Put 8 blocks in the center of the table")
     schema = parse("Form a straight line of four blue blocks")
     assert [a.color for a in schema.assets] == ["blue"] * 4
 

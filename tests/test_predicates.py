@@ -11,11 +11,13 @@ from rpg.domain.predicates import (
     Behind,
     Between,
     Equation,
+    FarFrom,
     Grid,
     InCircle,
     InFrontOf,
     InLine,
     InOrder,
+    InRegion,
     LabelFacing,
     LayersUniform,
     LeftOf,
@@ -34,6 +36,7 @@ from rpg.domain.predicates import (
     equation_holds,
     evaluate_goal,
     from_dict,
+    region_bounds,
 )
 from rpg.domain.state import ObjectState, yaw_quat
 from tests.helpers import Z0, E, cube, state
@@ -86,6 +89,27 @@ def test_next_to_and_between():
     assert not NextTo("a", "c").evaluate(state(cube("a", 0.5, 0.0), cube("c", 0.5, 0.2)))
     assert Between("b", "a", "c").evaluate(s)
     assert not Between("a", "b", "c").evaluate(s)
+
+
+def test_far_from():
+    assert FarFrom("a", "b").evaluate(state(cube("a", 0.5, 0.12), cube("b", 0.5, -0.12)))
+    r = FarFrom("a", "b").evaluate(state(cube("a", 0.5, 0.05), cube("b", 0.5, -0.05)))
+    assert not r and abs(r.measured["distance"] - 0.10) < 1e-9 and "not far" in r.reason
+
+
+def test_regions_split_the_workspace_in_thirds():
+    (x0, x1), (y0, y1) = region_bounds("center")
+    assert (x0, x1) == pytest.approx((0.5, 0.6)) and (y0, y1) == pytest.approx((-1 / 12, 1 / 12))
+    assert [pytest.approx(b) for b in region_bounds("left")] == [(0.4, 0.7), (1 / 12, 0.25)]
+    assert [pytest.approx(b) for b in region_bounds("back_right")] == [(0.6, 0.7), (-0.25, -1 / 12)]
+    assert InRegion("a", "center").evaluate(state(cube("a", 0.55, 0.0)))
+    assert InRegion("a", "front_left").evaluate(state(cube("a", 0.45, 0.2)))
+    assert InRegion("a", "front").evaluate(state(cube("a", 0.45, -0.2)))
+    r = InRegion("a", "back").evaluate(state(cube("a", 0.55, 0.0)))
+    assert not r and "not in the back" in r.reason and r.tolerance["x"] == pytest.approx([0.6, 0.7])
+    assert from_dict(InRegion("a", "back_left").to_dict()) == InRegion("a", "back_left")
+    with pytest.raises(ValueError, match="unknown region 'top'"):
+        InRegion("a", "top")
 
 
 def test_in_line_with_order():

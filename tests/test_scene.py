@@ -67,6 +67,26 @@ def test_initial_structure_and_infeasible_layout():
         sample_scattered(np.random.default_rng(0), many, min_separation=0.1)
 
 
+def test_cubes_with_a_goal_region_start_outside_it():
+    from rpg.domain.predicates import region_bounds
+
+    assets = [ColoredCube("red", color="red"), ColoredCube("blue", color="blue"), ColoredCube("green", color="green")]
+    avoid = {"red": "center", "blue": "left"}
+    seen = {"red": [], "blue": []}
+    for seed in range(60):
+        poses = sample_scattered(np.random.default_rng(seed), assets, avoid=avoid)
+        assert poses == sample_scattered(np.random.default_rng(seed), assets, avoid=avoid)
+        for name, region in avoid.items():
+            (x0, x1), (y0, y1) = region_bounds(region)
+            x, y = poses[name].pos[:2]
+            assert not (x0 <= x <= x1 and y0 <= y <= y1), (seed, name)
+            seen[name].append(y)
+    plain = [sample_scattered(np.random.default_rng(s), assets)["blue"].pos[1] for s in range(60)]
+    assert max(plain) > region_bounds("left")[1][0], "without avoid the left third is sampled (the test would be vacuous)"
+    with pytest.raises(InfeasibleLayout, match="outside its goal region"):
+        sample_scattered(np.random.default_rng(0), assets[:2], avoid={"red": "left", "blue": "left"}, min_separation=0.40)
+
+
 def test_state_json_round_trip_and_errors():
     s = Scene(_assets())
     s.set_poses(sample_scattered(np.random.default_rng(3), list(s.assets.values())))

@@ -20,11 +20,13 @@ from rpg.domain.predicates import (
     Behind,
     Between,
     Equation,
+    FarFrom,
     Grid,
     InCircle,
     InFrontOf,
     InLine,
     InOrder,
+    InRegion,
     LabelFacing,
     LayersUniform,
     LeftOf,
@@ -47,8 +49,8 @@ from rpg.domain.state import Pose, quat_mul, yaw_quat
 from rpg.domain.task import BlockTask
 
 __all__ = [
-    "And", "Behind", "Between", "BlockTask", "ColoredCube", "Equation", "GoalPatch", "Grid",
-    "InCircle", "InFrontOf", "InLine", "InOrder", "LabelFacing", "LayersUniform", "LeftOf",
+    "And", "Behind", "Between", "BlockTask", "ColoredCube", "Equation", "FarFrom", "GoalPatch", "Grid",
+    "InCircle", "InFrontOf", "InLine", "InOrder", "InRegion", "LabelFacing", "LayersUniform", "LeftOf",
     "NextTo", "Not", "On", "OnPatch", "OnTable", "Piles", "Pose", "Pyramid", "Reads",
     "RightOf", "SemanticCube", "SortedBy", "Stack", "TemporalMonitor", "Upright",
     "circle_layout", "cluster_layout", "constants", "grid_layout", "line_layout",

@@ -141,6 +141,9 @@ SPAWN_CLEARANCE: float = 0.0005
 MAX_SAMPLING_TRIES: int = 2000
 """Rejection-sampling attempts before a layout is declared infeasible."""
 
+MAX_REGION_REDRAWS: int = 200
+"""Whole layouts drawn at most to keep cubes outside their goal regions (``avoid``)."""
+
 # ---------------------------------------------------------------------------
 # Predicate tolerances (project)
 # ---------------------------------------------------------------------------
@@ -161,6 +164,16 @@ RELATION_MAX_OFF_AXIS: float = 0.10
 
 NEXT_TO_MAX_DIST: float = 0.08
 """`next_to(a, b)`: largest centre distance in the plane, m."""
+
+FAR_FROM_MIN_DIST: float = 0.20
+"""`far_from(a, b)`: least centre distance in the plane, m (two thirds of the workspace depth)."""
+
+REGION_NAMES: tuple[str, ...] = ("center", "front", "back", "left", "right",
+                                 "front_left", "front_right", "back_left", "back_right")
+"""Named regions of the workspace for `in_region`: the workspace split in thirds along x
+(front = near the robot, smaller x; back) and along y (left = +y; right); ``center`` is the
+middle third both ways, a side (``left``) is its whole third, a corner (``back_left``) is
+where two thirds meet (project)."""
 
 LINE_TOL: float = 0.015
 """`in_line`, `between`: largest offset of a centre from the fitted line, m."""

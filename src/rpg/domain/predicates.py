@@ -473,6 +473,72 @@ class NextTo(Predicate):
 
 
 @dataclass(frozen=True, repr=False)
+class FarFrom(Predicate):
+    """``a`` and ``b`` are at least FAR_FROM_MIN_DIST apart in the plane."""
+
+    a: str
+    b: str
+    name: ClassVar[str] = "far_from"
+    object_fields: ClassVar[tuple[str, ...]] = ("a", "b")
+
+    def _evaluate(self, state):
+        dist = float(np.linalg.norm(_planar(state[self.a]) - _planar(state[self.b])))
+        ok = dist >= C.FAR_FROM_MIN_DIST
+        return self._result(ok, f"{self.a} {'is' if ok else 'is not'} far from {self.b} ({dist * 100:.1f} cm apart)",
+                            {"distance": dist}, {"min_distance": C.FAR_FROM_MIN_DIST})
+
+    def describe(self):
+        return f"{self.a} far from {self.b}"
+
+
+def region_bounds(region: str) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The ((x_min, x_max), (y_min, y_max)) of a named workspace region, m, world frame.
+
+    Raises:
+        ValueError: ``region`` is not one of :data:`constants.REGION_NAMES`.
+    """
+    if region not in C.REGION_NAMES:
+        raise ValueError(f"unknown region {region!r}; known: {', '.join(C.REGION_NAMES)}")
+    (x0, x1), (y0, y1) = C.WORKSPACE_X, C.WORKSPACE_Y
+    dx, dy = (x1 - x0) / 3, (y1 - y0) / 3
+    xs = {"front": (x0, x0 + dx), "back": (x1 - dx, x1), "mid": (x0 + dx, x1 - dx), "any": (x0, x1)}
+    ys = {"right": (y0, y0 + dy), "left": (y1 - dy, y1), "mid": (y0 + dy, y1 - dy), "any": (y0, y1)}
+    parts = region.split("_")
+    fb = next((p for p in parts if p in ("front", "back")), "mid" if region == "center" else "any")
+    lr = next((p for p in parts if p in ("left", "right")), "mid" if region == "center" else "any")
+    return xs[fb], ys[lr]
+
+
+@dataclass(frozen=True, repr=False)
+class InRegion(Predicate):
+    """``a``'s centre lies in a named region of the workspace (see :func:`region_bounds`)."""
+
+    a: str
+    region: str
+    name: ClassVar[str] = "in_region"
+    object_fields: ClassVar[tuple[str, ...]] = ("a",)
+
+    def __post_init__(self) -> None:
+        super().__post_init__()
+        region_bounds(self.region)  # raises on an unknown region
+
+    def _evaluate(self, state):
+        (x0, x1), (y0, y1) = region_bounds(self.region)
+        x, y = (float(v) for v in state[self.a].pos[:2])
+        ok = x0 <= x <= x1 and y0 <= y <= y1
+        where = self.region.replace("_", " ")
+        return self._result(ok, f"{self.a} {'is' if ok else 'is not'} in the {where} of the workspace "
+                                f"(at x {x:.3f}, y {y:.3f}; region x {x0:.3f}..{x1:.3f}, y {y0:.3f}..{y1:.3f})",
+                            {"x": x, "y": y}, {"x": [x0, x1], "y": [y0, y1]})
+
+    def describe(self):
+        where = self.region.replace("_", " ")
+        if self.region in ("left", "right", "front", "back"):
+            return f"{self.a} on the {where} side of the workspace"
+        return f"{self.a} in the {where}{' corner' if '_' in self.region else ''} of the workspace"
+
+
+@dataclass(frozen=True, repr=False)
 class Between(Predicate):
     """``a`` lies between ``b`` and ``c``: on the segment b-c (within LINE_TOL*2), not at its ends."""
 

@@ -123,6 +123,16 @@ def _rejection_footprints(rng, radii, min_separation, bounds_x, bounds_y, occupi
     return out
 
 
+def _outside(units: list[list[str]], avoid: Mapping[str, str]):
+    """Per unit, a test of a planar centre: outside every region one of its objects avoids."""
+    from rpg.domain.predicates import region_bounds
+
+    def test(boxes):
+        return lambda xy: not any(x0 <= xy[0] <= x1 and y0 <= xy[1] <= y1 for (x0, x1), (y0, y1) in boxes)
+
+    return [test([region_bounds(avoid[n]) for n in unit if n in avoid]) for unit in units]
+
+
 def sample_scattered(
     rng: np.random.Generator,
     assets: Sequence[Asset],
@@ -130,6 +140,7 @@ def sample_scattered(
     yaw_range: float = C.DEFAULT_YAW_RANGE,
     structures: Sequence[Sequence[str]] = (),
     fixed: Mapping[str, Pose] | None = None,
+    avoid: Mapping[str, str] | None = None,
 ) -> dict[str, Pose]:
     """Sample a scattered initial state: every asset upright on the table, apart.
 
@@ -141,12 +152,15 @@ def sample_scattered(
         structures: initial stacks, each a list of names bottom to top ("yellow starts
             stacked on red" is ``[["red", "yellow"]]``); a stack takes one footprint.
         fixed: poses that are not sampled (e.g. patches placed by the goal layout).
+        avoid: object name -> a workspace region (:data:`constants.REGION_NAMES`) its centre
+            must start outside: a cube whose goal is a region never starts in it.  Layouts
+            are redrawn until it holds (at most :data:`constants.MAX_REGION_REDRAWS` draws).
 
     Returns:
         name -> :class:`Pose`, sorted by name.
 
     Raises:
-        InfeasibleLayout: the objects do not fit.
+        InfeasibleLayout: the objects do not fit (or never fit outside their regions).
     """
     fixed = dict(fixed or {})
     by_name = {a.name: a for a in assets}
@@ -156,7 +170,14 @@ def sample_scattered(
               if a.name not in stacked and a.name not in fixed]
     occupied = [(p.pos[0], p.pos[1], footprint_radius(by_name[n])) for n, p in sorted(fixed.items())]
     radii = [max(footprint_radius(by_name[n]) for n in unit) for unit in units]
-    centres = sample_footprints(rng, radii, min_separation, occupied=occupied)
+    outside = _outside(units, avoid or {})
+    for _ in range(C.MAX_REGION_REDRAWS if avoid else 1):
+        centres = sample_footprints(rng, radii, min_separation, occupied=occupied)
+        if all(ok(xy) for ok, xy in zip(outside, centres, strict=True)):
+            break
+    else:
+        raise InfeasibleLayout("could not sample a layout with every cube outside its goal region; "
+                               "use fewer cubes or smaller regions")
     poses: dict[str, Pose] = dict(fixed)
     for unit, (x, y) in zip(units, centres, strict=True):
         movable = by_name[unit[0]].movable

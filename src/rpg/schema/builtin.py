@@ -38,6 +38,7 @@ from rpg.domain.predicates import (
     InFrontOf,
     InLine,
     InOrder,
+    InRegion,
     LabelFacing,
     LayersUniform,
     LeftOf,
@@ -50,6 +51,7 @@ from rpg.domain.predicates import (
     RightOf,
     SortedBy,
     Stack,
+    region_bounds,
 )
 from rpg.domain.state import Pose
 from rpg.schema.builder import DEFAULT_COLORS, DEFAULT_PATCH_COLOR, Builder
@@ -99,7 +101,7 @@ wall walls wide deep long split divide pillar column close far triangle triangul
 writing addition subtraction multiplication increase increases decrease decreases tier tiers instead actually
 rather backwards backward pick grab take lift get lay drop small little tiny mini huge one unstack unstacked
 through corner corners sum area areas zone zones region regions spot spots location pad pads mat mats
-marker markers
+marker markers away distant opposite rear edge edges end ends half part workspace robot
 """.split())
 """Words the builtin front end understands (besides colours, numbers and labels)."""
 
@@ -891,6 +893,7 @@ REL_PATTERNS: list[tuple[str, str]] = [
     (r"under|underneath|beneath|below", "under"),
     (r"on top of|onto|on to|atop|above|on", "on"),
     (r"(?:inside|within|into|in)(?=\s+(?:the\s+|a\s+)?(?:[a-z]+\s+){0,2}patch)", "on"),  # "in the green goal area"
+    (r"region_[a-z_]+", "region"),  # "@region_center": "in the middle of the table" (see _regions)
 ]
 
 
@@ -967,10 +970,36 @@ def _mentions(text: str) -> list[Mention]:
     return sorted(out, key=lambda mn: mn.start)
 
 
+REGION_RE = re.compile(
+    r"\b(?:in|at|on|to|into|onto|toward|towards)\s+the\s+(?:(?P<far>very|far)\s+(?=(?:front|back|rear|left|right)))?"
+    r"(?:(?P<fb>front|back|rear)(?:(?:\s*-\s*|\s+)(?P<lr>left|right|middle|center|centre))?"
+    r"|(?P<lr2>left|right|middle|center|centre))"
+    r"(?P<part>(?:\s*-?\s*(?:hand\s+)?(?:side|corner|half|part|edge|end|area|region))?)"
+    r"(?P<tail>\s+of\s+the\s+(?:table|workspace))?(?!\s*of\b)")
+REGION_WORDS = {"rear": "back", "middle": "center", "centre": "center"}
+
+
+def _regions(text: str) -> str:
+    """Replace places on the table ("in the middle of the table", "at the back left corner",
+    "on the right side of the workspace") with ``@region_<name>`` tokens (names as in
+    :data:`constants.REGION_NAMES`).  A bare side ("on the left") stays: it is relative."""
+    def sub(m: re.Match) -> str:
+        corner = "corner" in m.group("part")
+        fb = REGION_WORDS.get(m.group("fb"), m.group("fb")) or ("back" if m.group("far") == "far" and corner else None)
+        word = m.group("lr") or m.group("lr2")
+        lr = REGION_WORDS.get(word, word)
+        if not (m.group("tail") or corner or (lr == "center" and m.group(0).split()[0] in ("in", "at") and word != "middle")):
+            return m.group(0)
+        if lr == "center" and fb:
+            lr = None
+        return f" @region_{'_'.join(p for p in (fb, lr) if p)} "
+    return " ".join(REGION_RE.sub(sub, text).split())
+
+
 def recognize_relational(f: Features, b: Builder) -> bool:
     initial = _initial_clause(f.text)
     text = f.text if initial is None else (f.text[: initial[0]] + f.text[initial[1]:]).strip()
-    text = _references(text)
+    text = _regions(_references(text))
     stackish = bool(re.search(r"\b(?:stack|stacks|stacked|tower|towers|pile up)\b", text))
     if not (stackish or any(re.search(rf"\b(?:{p})\b", text) for p, _ in REL_PATTERNS)):
         return False
@@ -998,6 +1027,7 @@ def recognize_relational(f: Features, b: Builder) -> bool:
     subjects: set[tuple] = set()  # (colour, label) of cubes placed by a relation
     previous: list[str] = []  # [subject, object] of the last relation: what "it" refers to
     last_pair: list[Mention] = []  # the last relation's subject and object mentions
+    regions: list[tuple[list[Mention], str]] = []  # (subject mentions, region name): places on the table
 
     def obj(mn: Mention, i: int = 0) -> str:
         if mn.patch:
@@ -1015,6 +1045,7 @@ def recognize_relational(f: Features, b: Builder) -> bool:
 
     for clause in clauses:
         ms = _mentions(clause)
+        related: list[Mention] = []  # the subject of this clause's relation, if it has one
         # "with a red block on bottom and blue on top"
         for mn in ms:
             tail = clause[mn.end: mn.end + 22]
@@ -1027,6 +1058,10 @@ def recognize_relational(f: Features, b: Builder) -> bool:
             kind = next(REL_PATTERNS[i][1] for i in range(len(REL_PATTERNS)) if rm.group(f"r{i}"))
             left = [m for m in ms if m.end <= rm.start() and not m.patch]
             right = [m for m in ms if m.start >= rm.end()]
+            if kind == "region":  # resolved once the stacks are known
+                group = related[:1] or (_listed_group(clause, left) if left else [])
+                regions.append((group, rm.group(0)[len("region_"):]))
+                continue
             after = clause[rm.end():].strip()
             side = re.match(r"(?:the\s+)?(left|right)(?:\s+(?:hand\s+)?side)?\b(?!\s+(?:hand\s+)?(?:side\s+)?of)", after)
             if kind == "on" and side:
@@ -1057,6 +1092,7 @@ def recognize_relational(f: Features, b: Builder) -> bool:
                                                                     clause[a_m.end: rm.start()]):
                 a_m = last_pair[0]  # "X left of Y and behind Z": X is behind Z
             last_pair[:] = [a_m, b_m]
+            related[:] = [a_m]
             if a_m.ref:
                 continue
             if b_m.ref == "@them" and not on_edges and previous:
@@ -1131,7 +1167,8 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         on_edges += [(u, lo) for lo, u in zip(names, names[1:], strict=False)]
     if on_structure or by_structure:
         _resolve_structure(b, objects, on_edges, rels, on_structure, by_structure, _structure_colors(text))
-    if not on_edges and not rels and not onpatch:
+    placed_in = _resolve_regions(regions, on_edges, obj, stackish, previous)
+    if not on_edges and not rels and not onpatch and not placed_in:
         return False
     if len({p for a, p in onpatch if a == "*"}) > 1:
         raise ParseError("one stack cannot stand on several patches; say which cubes go on which patch")
@@ -1145,12 +1182,15 @@ def recognize_relational(f: Features, b: Builder) -> bool:
     chains = _chains(on_edges)
     if chains is None:
         raise ParseError("the stacking relations contradict each other (a cycle: something would be on itself)")
-    _layout_relational(b, chains, rels, onpatch)
+    _layout_relational(b, chains, rels, onpatch, placed_in)
     for ch in chains:
         b.preds.append(Stack(tuple(ch)) if len(ch) > 1 else OnTable(ch[0]))
         if len(ch) > 1:
             b.summary.append("tower bottom to top: " + ", ".join(ch))
     b.preds += rels
+    for a, region in placed_in:
+        b.preds.append(InRegion(a, region))
+        b.summary.append(InRegion(a, region).describe())
     for a, p in onpatch:
         b.preds.append(OnPatch(a, p))
         b.summary.append(f"{a} on {p}")
@@ -1210,6 +1250,27 @@ def _listed_group(clause: str, left: list[Mention]) -> list[Mention]:
 _RELATIONS = {"left_of": LeftOf, "right_of": RightOf, "in_front_of": InFrontOf, "behind": Behind, "next_to": NextTo}
 
 
+def _resolve_regions(regions: list[tuple[list[Mention], str]], on_edges: list, obj, stackish: bool,
+                     previous: list[str]) -> list[tuple[str, str]]:
+    """(cube, region) for each place on the table: the cubes named before it, or, for "the
+    stack" / "it" / a tower of unnamed cubes, the base of the tallest tower."""
+    out = []
+    for group, region in regions:
+        named = [m for m in group if (m.color or m.label) and not m.ref]
+        if named:
+            single = len(named) == 1
+            out += [(obj(m, i), region) for m in named for i in range(m.count if single else 1)]
+            continue
+        chains = sorted(_chains(on_edges) or [], key=len, reverse=True)
+        if group and group[-1].ref in ("@it", "@them") and previous and not stackish:
+            out.append((previous[0], region))
+        elif chains and len(chains[0]) > 1:
+            out.append((chains[0][0], region))
+        elif group and not group[-1].ref:
+            out += [(obj(group[-1], i), region) for i in range(group[-1].count)]
+    return out
+
+
 def _resolve_structure(b: Builder, objects: dict, on_edges: list, rels: list, on_structure: list[str],
                        by_structure: list[tuple[str, str]], colors: list[str]) -> None:
     """Resolve "the stack" / "the tower": the tallest tower the instruction builds, or,
@@ -1261,14 +1322,24 @@ def _chains(edges: list[tuple[str, str]]) -> list[list[str]] | None:
     return chains
 
 
-def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch: list[tuple[str, str]]) -> None:
-    """Place stacks, related cubes and patches so every relation holds."""
+def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch: list[tuple[str, str]],
+                       regions: list[tuple[str, str]] = ()) -> None:
+    """Place stacks, related cubes and patches so every relation holds; cubes given a
+    region of the table go to its centre first (side by side when several share one)."""
     placed: dict[str, tuple[float, float]] = {}
     base_of = {n: ch[0] for ch in chains for n in ch}
     cube_names = [a.name for a in b.assets if a.kind != "goal_patch"]
     for n in [a.name for a in b.assets]:
         base_of.setdefault(n, n)
-    offset = {"left_of": (0.0, 0.10), "right_of": (0.0, -0.10), "in_front_of": (-0.10, 0.0), "behind": (0.10, 0.0), "next_to": (0.0, 0.06)}
+    by_region: dict[str, list[str]] = {}
+    for a, region in regions:
+        if base_of[a] not in by_region.setdefault(region, []):
+            by_region[region].append(base_of[a])
+    for region, members in by_region.items():
+        for m, xy in zip(members, _region_spots(region, len(members)), strict=True):
+            placed[m] = xy
+    offset = {"left_of": (0.0, 0.10), "right_of": (0.0, -0.10), "in_front_of": (-0.10, 0.0), "behind": (0.10, 0.0),
+              "next_to": (0.0, 0.06)}
     cx, cy = C.WORKSPACE_CENTER
     for r in rels:
         a, c = base_of[r.a], base_of[r.b]
@@ -1311,6 +1382,26 @@ def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch:
     for n in cube_names:
         if n not in b.layout:
             b.place(stack_layout([n], placed[base_of[n]]))
+
+
+REGION_PITCH = 0.06
+"""Centre spacing of cubes placed together in one region of the table, m."""
+
+
+def _region_spots(region: str, n: int) -> list[tuple[float, float]]:
+    """``n`` goal positions in a region of the workspace: rows along y about its centre.
+
+    Raises:
+        ParseError: the region cannot hold ``n`` cubes.
+    """
+    (x0, x1), (y0, y1) = region_bounds(region)
+    per_row = max(1, min(n, int((y1 - y0 - C.CUBE_EDGE) // REGION_PITCH) + 1))
+    rows = -(-n // per_row)
+    if (rows - 1) * REGION_PITCH + C.CUBE_EDGE > x1 - x0 + 1e-9:
+        raise ParseError(f"{n} cubes do not fit in the {region.replace('_', ' ')} of the table; use fewer or a larger region")
+    cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+    return [(cx + (k // per_row - (rows - 1) / 2) * REGION_PITCH,
+             cy + (k % per_row - (min(per_row, n - (k // per_row) * per_row) - 1) / 2) * REGION_PITCH) for k in range(n)]
 
 
 PATCH_PITCH = 1.05 * C.CUBE_EDGE
