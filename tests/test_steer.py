@@ -356,6 +356,26 @@ def test_edits_of_a_patch_task(tmp_path):
         assert r.compile.schema.goal_summary == summary, edit
 
 
+def test_edits_of_a_region_task(tmp_path):
+    """Cubes placed in regions of the table, steered in their own terms: another region or
+    "swap them" (Modify), a colour (Tweak), a cube added by a region or a cube (Extend)."""
+    fam = compile_instruction("Place the red cube in the middle of the table", tmp_path).path
+    steps = [("Make it green", "tweak", "green in the center of the workspace"),
+             ("Move it to the back left corner instead", "modify", "green in the back left corner of the workspace"),
+             ("Add a blue block on the right side of the table", "extend",
+              "green in the back left corner of the workspace; blue on the right side of the workspace"),
+             ("Swap them", "modify", "green on the right side of the workspace; blue in the back left corner of the workspace"),
+             ("Add a yellow block next to the blue one", "extend",
+              "green on the right side of the workspace; blue in the back left corner of the workspace; yellow next to blue")]
+    for edit, intent, summary in steps:
+        r = steer(fam, edit)
+        assert (r.intent, r.valid) == (intent, True), (edit, r.intent, r.notes)
+        assert r.compile.schema.goal_summary == summary, edit
+    fam2 = compile_instruction("Move the yellow cube onto the blue target", tmp_path / "patch").path
+    r = steer(fam2, "Make the target green")
+    assert (r.intent, r.valid, r.compile.schema.goal_summary) == ("tweak", True, "yellow on green_patch")
+
+
 def test_a_spelled_word_reversed_by_an_edit(tmp_path):
     fam = compile_instruction("Spell CAT with letter cubes", tmp_path).path
     r = steer(fam, "Spell it backwards")

@@ -17,6 +17,7 @@ from rpg.domain.predicates import (
     And,
     Behind,
     InFrontOf,
+    InRegion,
     LeftOf,
     NextTo,
     OnPatch,
@@ -182,6 +183,7 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     colors, pcolor, shape = task
     t = " " + edit.lower().strip().rstrip(".!") + " "
     intent = None
+    t = re.sub(r"\btarget\b(?!\s+patch)", "patch", t)  # "make the target green"
     recolor = re.search(rf"\bpatch\b[^.;]*?\b(?:to|into|be|is)?\s*({COLOR_RE})\b|\b({COLOR_RE})\s+(?:goal\s+|target\s+)?patch\b", t)
     if recolor and re.search(r"\b(?:make|change|turn|use|paint|color|colour|switch)\b", t):
         new = _canon_color(recolor.group(1) or recolor.group(2))
@@ -206,3 +208,85 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     cubes = [f"the {c} block" for c in colors]
     listed = cubes[0] if len(cubes) == 1 else ", ".join(cubes[:-1]) + " and " + cubes[-1]
     return f"Place {listed} onto the {pcolor}{' long' if shape == 'long' else ''} goal patch", intent
+
+
+REGION_PHRASES = {"center": "in the center of the table", "left": "on the left side of the table",
+                  "right": "on the right side of the table", "front": "at the front of the table",
+                  "back": "at the back of the table"}
+"""How a canonical instruction states each region (corners: "in the back left corner of the table")."""
+
+EDIT_REGION_RE = re.compile(
+    r"\b(?:to|in|at|into|toward|towards|on)\s+the\s+(?:(?P<fb>front|back|rear|far|near)[\s-]+)?"
+    r"(?P<lr>left|right|middle|center|centre)?(?:[\s-]*(?:hand\s+)?(?P<part>side|corner|half|edge|end|part))?\b")
+
+
+def _region_phrase(region: str) -> str:
+    return REGION_PHRASES.get(region) or f"in the {region.replace('_', ' ')} corner of the table"
+
+
+def _edit_region(t: str) -> str | None:
+    """The workspace region an edit names ("to the back left corner", "to the left side")."""
+    for m in EDIT_REGION_RE.finditer(t):
+        fb, lr = m.group("fb"), m.group("lr")
+        if not (fb or lr) or (fb and not lr and not m.group("part") and not re.match(r"\s+of the (?:table|workspace)", t[m.end():])):
+            continue
+        fb = {"rear": "back", "far": "back", "near": "front"}.get(fb, fb)
+        lr = {"middle": "center", "centre": "center"}.get(lr, lr)
+        if lr == "center" and fb:
+            lr = None
+        return "_".join(x for x in (fb, lr) if x)
+    return None
+
+
+def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
+    """Edits of a task that puts coloured cubes in regions of the table ("place the red
+    cube in the middle of the table"), in its own terms: another region ("move it to the
+    back left corner", Modify), "swap them" (Modify), another colour for a one-cube task
+    ("make it green", Tweak), or a cube added by a region or next to a cube ("add a blue
+    block next to it", Extend).  Returns the whole-task instruction and intent, or None."""
+    goal = schema.goal_predicate()
+    parts = list(goal.children()) if isinstance(goal, And) else [goal]
+    if not parts or not all(isinstance(p, InRegion) for p in parts):
+        return None
+    assets = {a.name: a for a in schema.assets}
+    if any(assets[p.a].kind != "colored_cube" for p in parts) or len({p.a for p in parts}) != len(parts):
+        return None
+    placed = [(assets[p.a].color, p.region) for p in parts]
+    t = " " + edit.lower().strip().rstrip(".!") + " "
+    region = _edit_region(t)
+    added = re.search(rf"\b(?:add|put|place)\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b(.*)", t)
+    named = [_canon_color(c) for c in re.findall(rf"\bthe ({COLOR_RE}) (?:block|cube|one)\b", t)]
+    colors = [c for c, _ in placed]
+    extra = ""
+    if added:
+        color, rest = _canon_color(added.group(1)), added.group(2)
+        if color in colors:
+            return None
+        rel = next((k for pattern, k in EDIT_RELATIONS if re.search(pattern, rest)), None) if _edit_region(rest) is None else None
+        if _edit_region(rest):
+            placed.append((color, _edit_region(rest)))
+        elif rel in PHRASES and rel != "on":
+            target = next((c for c in named if c in colors), colors[0]) if (named or len(colors) == 1) else None
+            if target is None:
+                return None
+            extra = f", then place the {color} block {PHRASES[rel]} the {target} block"
+        else:
+            return None
+        intent = "extend"
+    elif re.search(r"\b(?:swap|switch|exchange|trade)\b", t) and len(placed) == 2:
+        placed = [(placed[0][0], placed[1][1]), (placed[1][0], placed[0][1])]
+        intent = "modify"
+    elif region is not None:
+        which = [i for i, (c, _) in enumerate(placed) if c in named] or ([0] if len(placed) == 1 else [])
+        if len(which) != 1 or placed[which[0]][1] == region:
+            return None
+        placed[which[0]] = (placed[which[0]][0], region)
+        intent = "modify"
+    else:
+        recolor = re.search(rf"\b(?:make|turn|change|paint|color|colour)\b.*\b({COLOR_RE})\b", t)
+        if not recolor or len(placed) != 1 or _canon_color(recolor.group(1)) == placed[0][0]:
+            return None
+        placed, intent = [(_canon_color(recolor.group(1)), placed[0][1])], "tweak"
+    clauses = [f"place the {c} block {_region_phrase(r)}" for c, r in placed]
+    text = ", then ".join(clauses) + extra
+    return text[0].upper() + text[1:], intent

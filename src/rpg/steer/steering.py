@@ -40,7 +40,7 @@ from rpg.steer.edits import (
     strip_edit_words,
 )
 from rpg.steer.family import Family, FamilyHistory, code_hash, create_family, is_family, snapshot_of
-from rpg.steer.relations import relation_of, rewrite_patch, same_assets
+from rpg.steer.relations import relation_of, rewrite_patch, rewrite_region, same_assets
 from rpg.steer.relations import rewrite as rewrite_relation
 from rpg.steer.spec import TaskSpec, extract, render
 
@@ -149,7 +149,8 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     """
     ref_schema = None if plan.fresh or reference is None else fam.schema(reference)  # read once
     if ref_schema is not None:
-        relational = rewrite_relation(plan.text, ref_schema) or rewrite_patch(plan.text, ref_schema)
+        relational = (rewrite_relation(plan.text, ref_schema) or rewrite_patch(plan.text, ref_schema)
+                      or rewrite_region(plan.text, ref_schema))
         if relational is not None:  # "put it in front instead", "swap them": the reference's relation, changed
             instruction, intent = relational
             return parse(instruction), instruction, intent
