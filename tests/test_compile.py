@@ -308,6 +308,12 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     ("Place the red block to the left of the blue block, in the back of the table.",
      "red on the back side of the workspace; red left of blue"),
     ("Put the red block on the left and the blue block on the right.", "red left of blue"),  # relative, not a region
+    ("Stack the blocks in rainbow order.", "tower bottom to top: red, orange, yellow, green, cyan"),
+    ("Arrange the digits 1, 2, 3 so that they read 321.", "up faces read 3, 2, 1 left to right"),
+    ("Stack two red blocks and two blue blocks alternately.", "tower bottom to top: red_1, blue_1, red_2, blue_2"),
+    ("Stack the cubes so that the colors alternate.", "tower bottom to top: red_1, blue_1, red_2, blue_2"),
+    ("Build a tower and then place a green block next to it.", "tower bottom to top: red, blue; green next to red"),
+    ("Turn the letter cube so that the letter faces the camera.", "the cube shows 'A' facing front, upright"),
 ])
 def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     assert parse(text).goal_summary == summary

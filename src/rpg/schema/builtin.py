@@ -401,6 +401,8 @@ def _single_label(f: Features) -> str | None:
     for q in f.quoted:
         if len(q.strip()) == 1:
             return q.strip().upper()
+    if re.search(r"\b(?:the|a)\s+(?:letter|digit|number)\s+(?:block|cube)\b", f.text):  # "turn the letter cube"
+        return "A" if re.search(r"\bletter\s+(?:block|cube)\b", f.text) else "1"
     return None
 
 
@@ -770,9 +772,11 @@ def _outliers(f: Features) -> int:
 def _alternating(f: Features, default: int) -> list[str] | None:
     """``n`` colours cycling through the named ones for "alternating red and blue ..."."""
     colors = list(dict.fromkeys(f.color_list()))
-    if not f.has("alternating", "alternate", "alternately", "alternates") or len(colors) < 2:
+    if not f.has("alternating", "alternate", "alternately", "alternates") or len(colors) == 1 or _material(f) != "colors":
         return None
-    n = max(_count(f, default=default), len(colors))
+    colors = colors or list(DEFAULT_COLORS[:2])  # "so that the colors alternate"
+    counts = [int(c) for c in re.findall(rf"\b(\d+)\s+(?:{COLOR_RE})\s+(?:blocks|cubes)\b", f.text)]
+    n = sum(counts) if len(counts) >= 2 else max(_count(f, default=default), len(colors))  # "two red and two blue"
     return [colors[i % len(colors)] for i in range(n)]
 
 
@@ -824,7 +828,10 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         b.preds.append(InLine(tuple(names), axis=_line_axis(direction), order=direction))
         b.summary.append(f"cubes in a line {direction.replace('_', ' ')}: {', '.join(names)}")
     elif labels:
-        if order:  # the listed labels are the set; the ordering arranges them
+        reads = re.search(r"\b(?:reads?|read as|shows?|spells?)\s+'?([A-Za-z0-9]{2,})'?", f.original, re.IGNORECASE)
+        if reads and sorted(reads.group(1).upper()) == sorted(labels):  # "the digits 1, 2, 3 so that they read 321"
+            labels = list(reads.group(1).upper())
+        elif order:  # the listed labels are the set; the ordering arranges them
             labels = sorted(labels, key=lambda lab: (not lab.isdigit(), lab), reverse=order[1])
         names = [b.semantic(lab) for lab in labels]
         b.place(_directed_line(names, direction))
@@ -1162,8 +1169,10 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         elif len(ms) > n and len({(m.color, m.label) for m in ms}) == len(ms):  # "a tower of red, green and blue"
             names = [obj(m) for m in ms]
         else:
-            cols = _colors_for(n, f)
-            names = [obj(Mention(0, 0, c, None, 1)) for c in cols]
+            named = [c for c in dict.fromkeys(f.color_list()) if (c, None) not in subjects]
+            cols = _colors_for(n, f, prefer=named)  # not the colours of cubes placed beside it
+            cols += [c for c in DEFAULT_COLORS if c not in cols and (c, None) not in subjects][: n - len(cols)]
+            names = [obj(Mention(0, 0, c, None, 1)) for c in cols[:n]]
         on_edges += [(u, lo) for lo, u in zip(names, names[1:], strict=False)]
     if on_structure or by_structure:
         _resolve_structure(b, objects, on_edges, rels, on_structure, by_structure, _structure_colors(text))
@@ -1542,6 +1551,10 @@ def recognize_sorted_tower(f: Features, b: Builder) -> bool:
     return True
 
 
+RAINBOW_TOWER = 5
+"""Cubes in a rainbow-order tower when the instruction gives no count."""
+
+
 def recognize_tower_sequence(f: Features, b: Builder) -> bool:
     """One tower given as a sequence of cubes: "a tower from bottom to top: red, blue,
     letter 'A'", "a tower of red, green and blue blocks", "red at the bottom, then green,
@@ -1581,7 +1594,8 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
     alternating = _alternating(f, 4)
     if alternating:
         items, hints = [(c, None) for c in alternating], {}
-    if len(items) < 2 and f.has("rainbow", "gradient") and n:
+    if len(items) < 2 and f.has("rainbow", "gradient"):
+        n = n or RAINBOW_TOWER
         items = [(c, None) for c in sorted(GRADIENT_ORDER[:n], key=GRADIENT_ORDER.index, reverse=f.has("reverse"))]
     elif 1 <= len(items) < (n or 0) and hints:  # "three blocks high with a yellow block on top"
         used = {c for c, _ in items}
