@@ -314,6 +314,9 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     ("Stack the cubes so that the colors alternate.", "tower bottom to top: red_1, blue_1, red_2, blue_2"),
     ("Build a tower and then place a green block next to it.", "tower bottom to top: red, blue; green next to red"),
     ("Turn the letter cube so that the letter faces the camera.", "the cube shows 'A' facing front, upright"),
+    ("Stack the letter A on the letter B.", "tower bottom to top: letter_b, letter_a"),
+    ("Put the number 4 to the left of the number 2.", "digit_4 left of digit_2"),
+    ("Put the cube with the letter Z on the red patch.", "letter_z on red_patch"),
 ])
 def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     assert parse(text).goal_summary == summary
@@ -367,6 +370,8 @@ def test_parser_refuses_rather_than_drop_a_named_cube():
         parse("Build a wall of 6 blocks, 4 wide and 2 high")
     with pytest.raises(ParseError, match="2\\+2=5 is not a correct equation"):
         parse("Arrange the cubes to show 2 + 2 = 5.")
+    with pytest.raises(ParseError, match="labelled '1' has no place"):  # it built a tower of 2 and 4 only
+        parse("Place the numbers 1 to 3 in a row, then stack the number 4 on top of the number 2")
     with pytest.raises(ParseError, match="8 cubes do not fit in the center"):
         parse("Put 8 blocks in the center of the table")
     schema = parse("Form a straight line of four blue blocks")

@@ -192,6 +192,9 @@ def normalize(instruction: str) -> tuple[str, str]:
     text = re.sub(r"\b(?:pick up|grab|take|lift|get|pick)\s+(the\s+(?:[a-z0-9']+\s+){0,4}?(?:block|cube|box|one))\s+(?:up\s+)?"
                   r"and\s+(?:then\s+)?(place|put|set|stack|move|drop|lay)\s+it\b", r"\2 \1", text)
     text = re.sub(r"\bside by side\b", "next to each other", text)
+    text = re.sub(r"\b(?:(\w+)\s+)?((?:the|a|an)\s+(?:letter|digit|number)\s+'?[a-z0-9]'?)(?=\s|[.,;!]|$)(?!\s+(?:block|cube|box))",
+                  lambda m: m.group(0) if m.group(1) in ("with", "showing", "labeled", "labelled", "marked", "bearing")
+                  else m.group(0) + " block", text)  # "stack the letter A on the letter B": those are cubes
     for w, n in NUMBER_WORDS.items():
         text = re.sub(rf"\b{w}\b", str(n), text)
     text = re.sub(r"\bgrey\b", "gray", text)
@@ -1652,6 +1655,13 @@ def parse(instruction: str) -> TaskSchema:
             if caps:
                 raise ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {caps[0]!r} has no place in "
                                  "that task. Rephrase (e.g. \"spell the word ...\"), or use --model")
+            named_labels = {m.upper() for m in re.findall(r"\b(?:letter|number|digit)\s+'?([A-Za-z0-9])'?(?![A-Za-z0-9'])",
+                                                          f.original, re.IGNORECASE)}
+            if f.has("letter", "letters", "number", "numbers", "digit", "digits"):
+                named_labels |= set(_explicit_labels(f))  # "the numbers 1 to 3 in a row, then ..."
+            if named_labels - set(labels):
+                raise ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the cube labelled "
+                                 f"{sorted(named_labels - set(labels))[0]!r} has no place in that task. Rephrase, or use --model")
             missing = sorted({c for c in f.color_list()} - {a.color for a in schema.assets})
             if missing:
                 raise ParseError(
