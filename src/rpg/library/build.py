@@ -3,8 +3,9 @@
 A manifest (``library/manifest.yaml``) lists entries; each is a task (an instruction) or
 a family (a session file, run as ``rpg session run`` does), with a seed and the content
 hash it must regenerate to (for a family: the lineage hash of its last version, which
-chains every version's content hash).  Entries are built in the manifest's directory, or,
-with ``check``, in a temporary directory whose hashes are compared with the manifest's.
+chains every version's content hash).  Entries are built in a temporary directory; with
+``check`` their hashes are compared with the manifest's, otherwise the changed ones are
+moved into the manifest's directory (see :func:`build_library`).
 
 Backends: ``local`` (a process pool; each worker process keeps its fork server, so MuJoCo,
 the domain and a warm OpenGL context are loaded once per worker, not once per task; with

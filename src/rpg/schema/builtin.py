@@ -986,7 +986,19 @@ REGION_RE = re.compile(
     r"|(?P<lr2>left|right|middle|center|centre))"
     r"(?P<part>(?:\s*-?\s*(?:hand\s+)?(?:side|corner|half|part|edge|end|area|region))?)"
     r"(?P<tail>\s+of\s+the\s+(?:table|workspace))?(?!\s*of\b)")
-REGION_WORDS = {"rear": "back", "middle": "center", "centre": "center"}
+REGION_WORDS = {"rear": "back", "far": "back", "near": "front", "middle": "center", "centre": "center"}
+"""Words for a place on the table -> the words of :data:`constants.REGION_NAMES`."""
+
+
+def region_name(front_back: str | None, left_right: str | None) -> str | None:
+    """The region (:data:`constants.REGION_NAMES`) that a front/back word and a
+    left/right/centre word name together ("back", "left" -> ``back_left``; "front",
+    "middle" -> ``front``); None when both are missing."""
+    fb = REGION_WORDS.get(front_back, front_back)
+    lr = REGION_WORDS.get(left_right, left_right)
+    if lr == "center" and fb:
+        lr = None
+    return "_".join(p for p in (fb, lr) if p) or None
 
 
 def _regions(text: str) -> str:
@@ -995,14 +1007,12 @@ def _regions(text: str) -> str:
     :data:`constants.REGION_NAMES`).  A bare side ("on the left") stays: it is relative."""
     def sub(m: re.Match) -> str:
         corner = "corner" in m.group("part")
-        fb = REGION_WORDS.get(m.group("fb"), m.group("fb")) or ("back" if m.group("far") == "far" and corner else None)
         word = m.group("lr") or m.group("lr2")
-        lr = REGION_WORDS.get(word, word)
-        if not (m.group("tail") or corner or (lr == "center" and m.group(0).split()[0] in ("in", "at") and word != "middle")):
+        bare_center = word in ("center", "centre") and m.group(0).split()[0] in ("in", "at")  # "in the center"
+        if not (m.group("tail") or corner or bare_center):
             return m.group(0)
-        if lr == "center" and fb:
-            lr = None
-        return f" @region_{'_'.join(p for p in (fb, lr) if p)} "
+        fb = m.group("fb") or ("far" if m.group("far") == "far" and corner else None)  # "the far left corner"
+        return f" @region_{region_name(fb, word)} "
     return " ".join(REGION_RE.sub(sub, text).split())
 
 
@@ -1202,7 +1212,7 @@ def recognize_relational(f: Features, b: Builder) -> bool:
     b.preds += rels
     for a, region in placed_in:
         b.preds.append(InRegion(a, region))
-        b.summary.append(InRegion(a, region).describe())
+        b.summary.append(b.preds[-1].describe())
     for a, p in onpatch:
         b.preds.append(OnPatch(a, p))
         b.summary.append(f"{a} on {p}")

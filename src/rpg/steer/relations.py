@@ -26,7 +26,7 @@ from rpg.domain.predicates import (
     Stack,
 )
 from rpg.schema.builder import DEFAULT_COLORS
-from rpg.schema.builtin import COLOR_RE, _canon_color
+from rpg.schema.builtin import COLOR_RE, _canon_color, region_name
 from rpg.schema.model import TaskSchema
 
 PHRASES = {"left_of": "to the left of", "right_of": "to the right of", "in_front_of": "in front of",
@@ -230,11 +230,7 @@ def _edit_region(t: str) -> str | None:
         fb, lr = m.group("fb"), m.group("lr")
         if not (fb or lr) or (fb and not lr and not m.group("part") and not re.match(r"\s+of the (?:table|workspace)", t[m.end():])):
             continue
-        fb = {"rear": "back", "far": "back", "near": "front"}.get(fb, fb)
-        lr = {"middle": "center", "centre": "center"}.get(lr, lr)
-        if lr == "center" and fb:
-            lr = None
-        return "_".join(x for x in (fb, lr) if x)
+        return region_name(fb, lr)
     return None
 
 
@@ -262,9 +258,10 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         color, rest = _canon_color(added.group(1)), added.group(2)
         if color in colors:
             return None
-        rel = next((k for pattern, k in EDIT_RELATIONS if re.search(pattern, rest)), None) if _edit_region(rest) is None else None
-        if _edit_region(rest):
-            placed.append((color, _edit_region(rest)))
+        where = _edit_region(rest)
+        rel = next((k for pattern, k in EDIT_RELATIONS if re.search(pattern, rest)), None)
+        if where:
+            placed.append((color, where))
         elif rel in PHRASES and rel != "on":
             target = next((c for c in named if c in colors), colors[0]) if (named or len(colors) == 1) else None
             if target is None:

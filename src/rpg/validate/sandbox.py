@@ -130,11 +130,8 @@ class _ForkServer:
         if self.sock is not None:
             self.rfile.close()
             self.sock.close()
-            return
-        if self.proc.poll() is None:
-            self.proc.kill()
-            self.proc.wait()
-        shutil.rmtree(self.cwd, ignore_errors=True)
+        else:
+            _stop(self.proc, self.cwd)
 
 
 class ForkServerTemplate:
@@ -169,10 +166,7 @@ class ForkServerTemplate:
 
     def close(self) -> None:
         """Stop the template; clones end when their workers close their connections."""
-        if self.proc.poll() is None:
-            self.proc.kill()
-            self.proc.wait()
-        shutil.rmtree(self.dir, ignore_errors=True)
+        _stop(self.proc, self.dir)
 
     def __enter__(self) -> ForkServerTemplate:
         return self
@@ -183,6 +177,14 @@ class ForkServerTemplate:
 
 def _server_env() -> dict[str, str]:
     return {**_worker_env(), **FORK_SAFE_GL_ENV}
+
+
+def _stop(proc: subprocess.Popen, directory: str) -> None:
+    """Kill a server process if it still runs and remove its working directory."""
+    if proc.poll() is None:
+        proc.kill()
+        proc.wait()
+    shutil.rmtree(directory, ignore_errors=True)
 
 
 class _ServerDown(RuntimeError):
