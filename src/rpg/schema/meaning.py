@@ -1,0 +1,163 @@
+"""A compact, readable statement of what a task means: its goal as atoms over object descriptors.
+
+A task's meaning abstracts away object names and poses: each atom names a goal relation and
+the objects it relates by what a person would call them (a coloured cube by its colour, a
+letter/digit cube by its label, a goal patch as ``patch:<colour>``).  Examples::
+
+    stack(red,blue,green)                 a tower, bottom to top
+    stack(yellow,yellow)@back_left        a tower standing in a region of the table
+    on_patch(red,red,patch:green)         left_of(red,blue)    next_to(blue,red)
+    line(green,green,green)               line[left_to_right](red,green,blue)
+    wall(red,red,red|blue,blue,blue)      layers bottom to top (rows, walls, 3D blocks)
+    pyramid(blue,green,red|yellow)        layers bottom to top, each layer sorted
+
+The development corpus (``tests/corpus/instructions.yaml``) states each instruction's
+expected meaning in this notation, with two wildcards: ``?`` for any one object and ``red*``
+for one or more red cubes.  :func:`matches` compares an expected meaning with a schema's.
+"""
+
+from __future__ import annotations
+
+import re
+from collections import Counter
+
+from rpg.domain import predicates as P
+from rpg.schema.model import TaskSchema
+
+_SKIP = (P.OnTable, P.Upright)
+_SYMMETRIC = (P.NextTo, P.FarFrom)
+
+
+def descriptor(asset) -> str:
+    """What a person calls an object: its colour, its label, or ``patch:<colour>``."""
+    if asset.kind == "goal_patch":
+        return f"patch:{asset.color or 'gray'}"
+    if asset.kind == "semantic_cube":
+        return str(asset.label)
+    return str(asset.color)
+
+
+def _conjuncts(p: P.Predicate) -> list[P.Predicate]:
+    if isinstance(p, (P.And, P.InOrder)):
+        return [q for c in p.children() for q in _conjuncts(c)]
+    return [p]
+
+
+def _layers(names, layout) -> list[list[str]]:
+    """Names grouped by goal height (bottom first), each group in name order."""
+    levels: dict[int, list[str]] = {}
+    for n in names:
+        levels.setdefault(round(layout[n].position[2] / 0.02), []).append(n)
+    return [levels[k] for k in sorted(levels)]
+
+
+def meaning(schema: TaskSchema) -> list[str]:
+    """The task's goal as a sorted list of atoms (see the module docstring).
+
+    Every object of the task appears in some atom: an object the goal does not mention is
+    reported as ``extra(<descriptor>)``, so a task with a stray cube never reads as meant.
+    """
+    d = {a.name: descriptor(a) for a in schema.assets}
+    layout = schema.goal_layout
+    atoms: list[str] = []
+    used: set[str] = set()
+    chains: list[list[str]] = []
+    regions: dict[str, str] = {}
+    on_edges: list[tuple[str, str]] = []
+    on_patch: dict[str, list[str]] = {}
+
+    def names(ns):
+        used.update(ns)
+        return ",".join(d[n] for n in ns)
+
+    def sorted_names(ns):
+        used.update(ns)
+        return ",".join(sorted(d[n] for n in ns))
+
+    for p in _conjuncts(schema.goal_predicate()):
+        if isinstance(p, _SKIP):
+            used.update(p.object_names())
+        elif isinstance(p, P.Stack):
+            chains.append(list(p.objects))
+        elif isinstance(p, P.On):
+            on_edges.append((p.b, p.a))
+        elif isinstance(p, P.InRegion):
+            regions[p.a] = p.region
+            used.add(p.a)
+        elif isinstance(p, P.OnPatch):
+            on_patch.setdefault(p.patch, []).append(p.a)
+        elif isinstance(p, _SYMMETRIC):
+            atoms.append(f"{p.name}({sorted_names([p.a, p.b])})")
+        elif isinstance(p, P.Between):
+            atoms.append(f"between({names([p.a])};{sorted_names([p.b, p.c])})")
+        elif isinstance(p, P.InLine):
+            order = f"[{p.order}]" if p.order else ""
+            body = names(p.objects) if p.order else sorted_names(p.objects)
+            atoms.append(f"line{order}({body})")
+        elif isinstance(p, (P.Grid, P.Pyramid)):
+            kind = "pyramid" if isinstance(p, P.Pyramid) else ("wall" if getattr(p, "layers", 1) > 1 else "grid")
+            layers = _layers(p.objects, layout)
+            body = "|".join(sorted_names(layer) for layer in layers)
+            if kind == "grid":
+                body = f"{p.rows}x{p.cols}:{body}"
+            atoms.append(f"{kind}({body})")
+        elif isinstance(p, P.InCircle):
+            atoms.append(f"circle({sorted_names(p.objects)})")
+        else:
+            objs = p.object_names()
+            used.update(objs)
+            extra = {k: v for k, v in p.args().items() if not isinstance(v, (list, tuple)) and k not in p.object_fields}
+            arg = ",".join(d.get(n, n) for n in objs)
+            atoms.append(f"{p.name}({arg}{';' if extra and arg else ''}{','.join(f'{k}={v}' for k, v in sorted(extra.items()))})")
+    # On edges become towers: follow b -> a links from each cube that supports but is not supported.
+    above = dict(on_edges)
+    below = {a: b for b, a in on_edges}
+    for base in sorted(b for b, _ in on_edges if b not in below):
+        chain = [base]
+        while chain[-1] in above and above[chain[-1]] not in chain:
+            chain.append(above[chain[-1]])
+        chains.append(chain)
+    for chain in chains:
+        where = sorted({regions.pop(n) for n in chain if n in regions})
+        atoms.append(f"stack({names(chain)})" + (f"@{where[0]}" if len(where) == 1 else ""))
+    for patch, cubes in sorted(on_patch.items()):
+        used.update(cubes + [patch])
+        atoms.append(f"on_patch({','.join(sorted(d[c] for c in cubes))},{d[patch]})")
+    for n, region in sorted(regions.items()):
+        atoms.append(f"in_region({d[n]},{region})")
+    for n in sorted(set(d) - used):
+        atoms.append(f"extra({d[n]})")
+    return sorted(atoms)
+
+
+def _pattern(atom: str) -> re.Pattern:
+    """A regular expression for one expected atom (``?`` and ``X*`` wildcards)."""
+    out = []
+    for tok in re.split(r"([(),;|@\[\]])", atom.strip()):
+        if tok == "?":
+            out.append(r"[^(),;|@]+")
+        elif tok.endswith("*") and tok[:-1]:
+            t = re.escape(tok[:-1])
+            out.append(rf"{t}(?:[,|]{t})*")
+        else:
+            out.append(re.escape(tok))
+    return re.compile("".join(out) + r"\Z")
+
+
+def matches(expected: str, actual: list[str]) -> bool:
+    """Whether a corpus meaning (atoms separated by ``; `` outside brackets) equals ``actual``.
+
+    Each expected atom must match a distinct actual atom and no actual atom may be left over.
+    """
+    wanted = [a.strip() for a in re.split(r";\s+(?![^()]*\))", expected) if a.strip()]
+    if len(wanted) != len(actual):
+        return False
+    left = Counter(actual)
+    # most specific patterns first, so a wildcard does not take an atom a literal needs
+    for w in sorted(wanted, key=lambda a: (a.count("?") + a.count("*"), a)):
+        pat = _pattern(w)
+        hit = next((a for a in sorted(left) if left[a] and pat.match(a)), None)
+        if hit is None:
+            return False
+        left[hit] -= 1
+    return True
