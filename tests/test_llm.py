@@ -178,3 +178,17 @@ def test_llm_codegen_is_grounded_and_its_failures_go_to_fix_agents(tmp_path):
     assert len(load_record(r.path)[1]) == 4
     with pytest.raises(ValueError, match="needs a model"):
         compile_instruction(text, tmp_path / "x", codegen="llm")
+
+
+def test_a_schema_that_drops_a_named_count_goes_back_to_the_model():
+    text = "Stack three blue blocks on top of the red block"
+    short = schema_json("Stack the blue block on top of the red block")  # one blue, not three
+    client = LLMClient(MODEL, mock_responses=[short, schema_json(text)])
+    schema = llm_parse(text, client)
+    assert sorted(a.color for a in schema.assets) == ["blue", "blue", "blue", "red"]
+    feedback = client.records[1]["request"]["messages"][-1]["content"]
+    assert "3 blue" in feedback and "does not match the instruction" in feedback
+    dropped = schema_json("Stack the blue block on top of the red block")
+    with pytest.raises(ModelOutputError, match="green"):  # a named colour missing from every answer
+        llm_parse("Stack the blue block on the red block, then the green block on top",
+                  LLMClient(MODEL, mock_responses=[dropped] * 4))

@@ -30,6 +30,8 @@ def classify(entry: dict) -> tuple[str, str]:
         schema = check_feasibility(parse(entry["text"]))
     except (ParseError, InfeasibleTask) as exc:
         return "refused", str(exc).splitlines()[0][:160]
+    except Exception as exc:  # a crash is neither a refusal nor a task: count it as wrong
+        return "wrong", f"crash: {type(exc).__name__}: {exc}"[:160]
     got = meaning(schema)
     return ("correct" if matches(entry["meaning"], got) else "wrong"), "; ".join(got)
 

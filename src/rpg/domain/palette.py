@@ -29,6 +29,11 @@ GRADIENT_ORDER: tuple[str, ...] = (
 )
 """Chromatic colours in hue order; a colour gradient follows this order."""
 
+RAINBOW_ORDER: tuple[str, ...] = ("red", "orange", "yellow", "green", "blue", "purple")
+"""The colours of a rainbow as people name them (ROYGBV; indigo and violet are both purple
+here): "rainbow order" uses these; a rainbow of more cubes continues with :data:`GRADIENT_ORDER`'s
+remaining colours (cyan, pink)."""
+
 COLOR_ALIASES: dict[str, str] = {
     "grey": "gray",
     "violet": "purple",

@@ -28,7 +28,7 @@ from rpg.domain.layouts import (
     pyramid_layout,
     stack_layout,
 )
-from rpg.domain.palette import COLOR_ALIASES, GRADIENT_ORDER, PALETTE
+from rpg.domain.palette import COLOR_ALIASES, GRADIENT_ORDER, PALETTE, RAINBOW_ORDER
 from rpg.domain.predicates import (
     Behind,
     Between,
@@ -54,6 +54,8 @@ from rpg.domain.predicates import (
     region_bounds,
 )
 from rpg.domain.state import Pose
+from rpg.schema import clauses, lexicon
+from rpg.schema.accounting import UnaccountedMention, account
 from rpg.schema.builder import DEFAULT_COLORS, DEFAULT_PATCH_COLOR, Builder
 from rpg.schema.model import RepairRecord, TaskSchema
 
@@ -74,7 +76,7 @@ COLORS = sorted(set(PALETTE) | set(COLOR_ALIASES), key=len, reverse=True)
 COLOR_RE = "|".join(COLORS)
 
 VOCAB = set("""
-a an the this that these those it its them they their each every all some any both of to in into on onto at
+more additional extra a an the this that these those it its them they their each every all some any both of to in into on onto at
 by with and or but then first second third next after before finally also so such as from for is are be
 being been was were will should must can could would please you your me i we us our make build create
 form put place set move stack stacks stacked stacking tower towers arrange arranged arranging arrangement align
@@ -104,6 +106,27 @@ through corner corners sum area areas zone zones region regions spot spots locat
 marker markers away distant opposite rear edge edges end ends half part workspace robot
 """.split())
 """Words the builtin front end understands (besides colours, numbers and labels)."""
+
+
+IGNORABLE_HERE = lexicon.IGNORABLE - VOCAB
+"""Ignorable words (:data:`lexicon.IGNORABLE`) the parser's vocabulary does not use itself."""
+
+COMPASS_CORNER_RE = re.compile(r"\b(?:the\s+)?(nw|ne|sw|se|north[- ]?west|north[- ]?east|south[- ]?west|south[- ]?east)\s+corner\b")
+COMPASS_REL_RE = re.compile(r"\b(?:to\s+the\s+|on\s+the\s+)?(north|south|east|west)(?:\s+side)?\s+of\b")
+COMPASS_SIDE_RE = re.compile(r"\b(?:the\s+)?(north|south|east|west)(?:ern)?\s+(side|edge|half|part|end)\b")
+
+
+def _compass(text: str) -> str:
+    """Compass words in the frame of :mod:`rpg.schema.lexicon`: "the NW corner" -> "the back
+    left corner", "to the north of" -> "behind", "the east side" -> "the right side"."""
+    def corner(m: re.Match) -> str:
+        key = re.sub(r"[- ]", "", m.group(1))
+        key = {"northwest": "nw", "northeast": "ne", "southwest": "sw", "southeast": "se"}.get(key, key)
+        return "the " + lexicon.COMPASS_CORNERS[key].replace("_", " ") + " corner"
+    text = COMPASS_CORNER_RE.sub(corner, text)
+    text = COMPASS_REL_RE.sub(lambda m: lexicon.COMPASS_RELATIONS[m.group(1)] + (" of" if m.group(1) in ("east", "west") else ""), text)
+    text = re.sub(r"\b(left|right) of of\b", r"\1 of", text)
+    return COMPASS_SIDE_RE.sub(lambda m: f"the {lexicon.COMPASS[m.group(1)]} {m.group(2)}", text)
 
 
 @dataclass
@@ -137,11 +160,15 @@ def _transposition(word: str) -> tuple[str] | None:
     return (known[0],) if len(known) == 1 else None
 
 
-def normalize(instruction: str) -> tuple[str, str]:
+def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
     """Lower-case, number words to digits, typos corrected.  Returns (text, original).
 
+    Args:
+        strict: refuse words the parser does not know (``False``: keep them, for reading the
+            mentions of an instruction a language model reads).
+
     Raises:
-        ParseError: empty, too long, or containing words the parser does not know.
+        ParseError: empty, too long, or (strict) containing words the parser does not know.
     """
     original = instruction.strip()
     if not original:
@@ -156,6 +183,16 @@ def normalize(instruction: str) -> tuple[str, str]:
     text = re.sub(r"(\d)\s*[x\u00d7]\s*(?=\d)", r"\1x", text)
     text = re.sub(r"\b(\d+)\s+by\s+(?=\d)", r"\1x", text)
     text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall)", r"\1 \2", text)
+    text = _compass(text)
+    text = re.sub(r"\b(?:to|onto)\s+the\s+top\s+of\b", "on top of", text)
+    text = re.sub(r"\btoward(?:s)?\b", "to", text)
+    text = re.sub(r"\bfollowed\s+by\b|\btopped\s+(?:off\s+)?(?:with|by)\b", "then", text)
+    text = re.sub(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+of\s+the\s+(?=\w+\s+(?:blocks|cubes|boxes)\b)", r"\1 ", text)
+    text = re.sub(r"\bto\s+the\s+(left|right)(?:\s+hand)?\s+side\s+of\b", r"to the \1 of", text)
+    text = re.sub(r"\bon\s+top\s+(?=the\b)", "on top of ", text)
+    text = " ".join(w for w in re.split(r"(?<=\S)\s+(?=\S)", text)
+                    if re.sub(r"[.,;:!?]+$", "", w) not in IGNORABLE_HERE)
+    text = re.sub(r"\s+([.,;:!?])", r"\1", text)
     unknown = []
     caps = {w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)}
     caps |= {q.lower() for q in re.findall(r"'([A-Za-z]+)'", text)}
@@ -169,13 +206,19 @@ def normalize(instruction: str) -> tuple[str, str]:
             continue
         if "-" in w and all(p in VOCAB or p in COLORS or p in NUMBER_WORDS for p in w.split("-") if p):
             continue
+        lemma = next((x for x in lexicon.lemmas(w) if x in VOCAB or x in lexicon.PLACEMENT_VERBS), None)
+        if lemma is not None:  # an inflection of a known word: "built" -> build, "constructs" -> build
+            fixed[w] = lemma if lemma in VOCAB else lexicon.PLACEMENT_VERBS[lemma]
+            continue
         match = (process.extractOne(w, list(VOCAB) + COLORS, scorer=fuzz.ratio, score_cutoff=84) if len(w) >= 4
                  else _transposition(w))
+        if match and lexicon.is_dictionary_word(w) and not w.startswith(match[0]):
+            match = None  # a real word is never "corrected" into another ("bring" is not "ring"); "vertically" -> "vertical"
         if match:
             fixed[w] = match[0]
         else:
             unknown.append(w)
-    if unknown:
+    if unknown and strict:
         shown = ", ".join(f"'{w}'" for w in dict.fromkeys(unknown))
         raise ParseError(
             f"could not parse {shown} in \"{original[:80]}\"; the builtin parser reads the block domain "
@@ -195,11 +238,31 @@ def normalize(instruction: str) -> tuple[str, str]:
     text = re.sub(r"\b(?:(\w+)\s+)?((?:the|a|an)\s+(?:letter|digit|number)\s+'?[a-z0-9]'?)(?=\s|[.,;!]|$)(?!\s+(?:block|cube|box))",
                   lambda m: m.group(0) if m.group(1) in ("with", "showing", "labeled", "labelled", "marked", "bearing")
                   else m.group(0) + " block", text)  # "stack the letter A on the letter B": those are cubes
+    text = re.sub(rf"\b({COLOR_RE})\s+one(s?)\b", lambda m: f"{m.group(1)} block{'s' if m.group(2) else ''}", text)
     for w, n in NUMBER_WORDS.items():
         text = re.sub(rf"\b{w}\b", str(n), text)
     text = re.sub(r"\bgrey\b", "gray", text)
     text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall|tier)", r"\1 \2", text)
     return " ".join(text.split()), original
+
+
+def check_mentions(instruction: str, schema: TaskSchema) -> list[dict]:
+    """Check that ``schema`` accounts for the colours, counts, goal patches and places that
+    ``instruction`` names, whoever wrote the schema (the builtin parser or a model).
+
+    Returns:
+        The accounting record (see :func:`rpg.schema.accounting.account`).
+
+    Raises:
+        UnaccountedMention: a named colour, count, patch or place has no part in the schema.
+    """
+    text, _ = normalize(instruction, strict=False)
+    named = {_canon_color(m.group(0)) for m in re.finditer(rf"\b({COLOR_RE})\b", text)
+             if not re.match(r"\s+(order|gradient|sort)", text[m.end():])}
+    missing = sorted(named - {a.color for a in schema.assets})
+    if missing:
+        raise UnaccountedMention(f"the {', '.join(missing)} object(s) it names have no place in the task")
+    return account(_regions(text), schema, COLOR_RE, _canon_color)
 
 
 def features(instruction: str) -> Features:
@@ -588,6 +651,14 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
     return True
 
 
+def _spectrum(f: Features) -> list[str]:
+    """Colours in hue order: a rainbow's (:data:`palette.RAINBOW_ORDER`, then the rest of the
+    gradient) when the text says "rainbow", else :data:`palette.GRADIENT_ORDER`."""
+    if f.has("rainbow"):
+        return list(RAINBOW_ORDER) + [c for c in GRADIENT_ORDER if c not in RAINBOW_ORDER]
+    return list(GRADIENT_ORDER)
+
+
 def _fill_structure(f, b, n, material, order, layout_fn, face="up"):
     """Create n cubes of a material in reading order, lay them out, add ordering predicates."""
     if material in ("letters", "digits"):
@@ -607,7 +678,7 @@ def _fill_structure(f, b, n, material, order, layout_fn, face="up"):
         b.place(layout_fn(names))
         return names
     if order and order[0] == "color" or f.has("different", "assorted", "various", "mixed", "rainbow"):
-        palette = colors or list(GRADIENT_ORDER)
+        palette = colors or _spectrum(f)
         cols = [palette[i % len(palette)] for i in range(n)] if len(colors) != 1 else colors * n
     else:
         cols = (colors or ["red"]) * n if len(colors) <= 1 else [colors[i % len(colors)] for i in range(n)]
@@ -1203,7 +1274,9 @@ def recognize_relational(f: Features, b: Builder) -> bool:
     # cubes that are only on patches (place both blocks onto the patch)
     chains = _chains(on_edges)
     if chains is None:
-        raise ParseError("the stacking relations contradict each other (a cycle: something would be on itself)")
+        cycle = ", ".join(f"{a} on {b_}" for a, b_ in on_edges)
+        raise ParseError(f"the stacking relations of \"{f.original[:80]}\" contradict each other ({cycle}: "
+                         "something would be on itself); say once which cube goes on which, or use --model")
     _layout_relational(b, chains, rels, onpatch, placed_in)
     for ch in chains:
         b.preds.append(Stack(tuple(ch)) if len(ch) > 1 else OnTable(ch[0]))
@@ -1245,6 +1318,9 @@ def _described_towers(text: str, described: list[re.Match], b: Builder) -> bool:
     for (m1, t1), (m2, t2) in itertools.pairwise(zip(described, towers, strict=True)):
         between = text[m1.end(): m2.start()]
         kind = next((k for p, k in REL_PATTERNS if k not in ("on", "under", "between") and re.search(rf"\b(?:{p})\b", between)), None)
+        if kind is not None and kind not in _RELATIONS:
+            raise ParseError(f"cannot read how the towers in \"{text[:80]}\" relate ({kind.replace('_', ' ')}); "
+                             "describe each tower and one relation between them, or use --model")
         if kind:
             rels.append(_RELATIONS[kind](t1[0], t2[0]))
     _layout_relational(b, towers, rels, [])
@@ -1609,7 +1685,8 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         items, hints = [(c, None) for c in alternating], {}
     if len(items) < 2 and f.has("rainbow", "gradient"):
         n = n or RAINBOW_TOWER
-        items = [(c, None) for c in sorted(GRADIENT_ORDER[:n], key=GRADIENT_ORDER.index, reverse=f.has("reverse"))]
+        spectrum = _spectrum(f)
+        items = [(c, None) for c in sorted(spectrum[:n], key=spectrum.index, reverse=f.has("reverse"))]
     elif 1 <= len(items) < (n or 0) and hints:  # "three blocks high with a yellow block on top"
         used = {c for c, _ in items}
         items += [(c, None) for c in DEFAULT_COLORS if c not in used][: n - len(items)]
@@ -1637,7 +1714,70 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
     return True
 
 
+def recognize_tower_clauses(f: Features, b: Builder) -> bool:
+    """Towers described placement by placement (:mod:`rpg.schema.clauses`): "place a green
+    block on the red block. place two more green blocks on the green block", "3 blue blocks on
+    top of the 3 red blocks", "in the NW corner place a column of 3 green blocks", a row of
+    cubes on top of a row (a wall)."""
+    plan = clauses.read(_regions(f.text), COLOR_RE, _canon_color)
+    if plan is None:
+        return False
+    if plan.wall:
+        layers, width = len(plan.wall), len(plan.wall[0])
+        names = [b.cube(col) for layer in plan.wall for col in layer]
+        b.place(grid_layout(names, 1, width, layers))
+        b.preds.append(Grid(tuple(names), 1, width, layers))
+        b.preds.append(LayersUniform(tuple(names), by="color", axis="z"))
+        b.primitives += ["stack"]
+        b.summary.append(f"a wall {width} cubes wide and {layers} high, layers bottom to top: "
+                         + ", ".join(layer[0] for layer in plan.wall))
+        return True
+    spots: list[tuple[float, float] | None] = []
+    unplaced = sum(r is None for r in plan.regions)
+    free = iter(b.unit_centers(unplaced, 0.16) if unplaced else [])
+    for region in plan.regions:
+        spots.append(_region_spots(region, 1)[0] if region else next(free))
+    for colors, region, xy in zip(plan.towers, plan.regions, spots, strict=True):
+        names = [b.cube(col) for col in colors]
+        b.place(stack_layout(names, xy))
+        b.preds.append(Stack(tuple(names)))
+        b.summary.append("tower bottom to top: " + ", ".join(names))
+        if region:
+            b.preds.append(InRegion(names[0], region))
+            b.summary.append(f"{names[0]} in the {region.replace('_', ' ')} of the table")
+    b.primitives += ["stack"]
+    return True
+
+
+MOVE_TO_REGION_RE = re.compile(
+    rf"(?:go\s+)?(?:place|put|move|push|slide|sweep|shift|bring|set|drop)\s+(?:(?P<p>left|right)\s+)?the\s+(?P<c>{COLOR_RE})\s+"
+    r"(?:block|cube|box)(?:\s+(?:to|into|onto)\s+the\s+(?:(?P<fb>front|back|rear)\s+)?(?P<d>left|right|center|centre|middle|front|back)"
+    r"(?:\s+(?:hand\s+)?(?:side|half|part|edge|end|area|corner))?(?:\s+of\s+the\s+(?:table|workspace))?)?\s*[.!]?")
+
+
+def recognize_move_to_region(f: Features, b: Builder) -> bool:
+    """One cube moved to a place on the table, said without a second object: "push the red
+    block to the left", "slide right the blue block", "move the green block to the center".
+    The goal is the cube in that region (:data:`constants.REGION_NAMES`); rho_0 starts it
+    outside (the emitter derives that from G)."""
+    m = MOVE_TO_REGION_RE.fullmatch(f.text)
+    if not m or bool(m.group("p")) == bool(m.group("d")):
+        return False
+    word = m.group("p") or m.group("d")
+    fb = m.group("fb") or (word if word in ("front", "back") else None)
+    region = region_name(fb, None if word in ("front", "back") else word)
+    color = _canon_color(m.group("c"))
+    name = b.cube(color)
+    b.place({name: Pose((*_region_spots(region, 1)[0], C.TABLE_TOP_Z + C.CUBE_EDGE / 2))})
+    b.preds.append(InRegion(name, region))
+    b.primitives += ["push" if re.match(r"(?:go\s+)?(?:push|slide|sweep)", f.text) else "place"]
+    b.summary.append(f"{name} in the {region.replace('_', ' ')} of the table")
+    return True
+
+
 RECOGNIZERS = (
+    recognize_move_to_region,
+    recognize_tower_clauses,
     recognize_temporal, recognize_each_patch, recognize_matching_patches, recognize_rotate, recognize_equation, recognize_spell, recognize_pyramid,
     recognize_cube_block, recognize_wall, recognize_grid, recognize_circle, recognize_piles, recognize_ordered_line,
     recognize_sorted_tower, recognize_tower_sequence, recognize_relational,
@@ -1660,8 +1800,10 @@ def parse(instruction: str) -> TaskSchema:
             schema = b.schema(_slug(f.original))
             schema.repairs = b.repairs
             labels = "".join(a.label or "" for a in schema.assets)
+            compass = {m.group(1) for m in COMPASS_CORNER_RE.finditer(f.original.lower())}
             caps = [w for w in re.findall(r"\b[A-Z]{2,}\b", f.original)
-                    if w.lower() not in VOCAB and w.lower() not in COLORS and not set(w) <= set(labels)]
+                    if w.lower() not in VOCAB and w.lower() not in COLORS and not set(w) <= set(labels)
+                    and w.lower() not in compass]
             if caps:
                 raise ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {caps[0]!r} has no place in "
                                  "that task. Rephrase (e.g. \"spell the word ...\"), or use --model")
@@ -1677,6 +1819,11 @@ def parse(instruction: str) -> TaskSchema:
                 raise ParseError(
                     f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the {', '.join(missing)} "
                     f"cube(s) it names have no place in that task. Rephrase, or use --model")
+            try:
+                account(_regions(f.text), schema, COLOR_RE, _canon_color)
+            except UnaccountedMention as exc:
+                raise ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {exc}. "
+                                 "Rephrase (one sentence per structure helps), or use --model") from None
             return schema
     raise ParseError(
         f"could not find a task in \"{f.original[:80]}\": name a structure (tower, line, circle, grid, "

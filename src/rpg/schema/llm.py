@@ -240,7 +240,14 @@ def llm_parse(instruction: str, client: LLMClient, max_retries: int = MAX_SCHEMA
     messages = [{"role": "system", "content": system_prompt()}, {"role": "user", "content": instruction}]
 
     def validate(doc: dict) -> TaskSchema:
+        from rpg.schema.builtin import check_mentions
+
         doc["instruction"] = instruction
-        return TaskSchema.model_validate(doc)
+        schema = TaskSchema.model_validate(doc)
+        try:
+            check_mentions(instruction, schema)  # the same accounting as the builtin parser's
+        except ValueError as exc:
+            raise ValueError(f"the schema does not match the instruction: {exc}") from None
+        return schema
 
     return ask_validated(client, messages, "schema", validate, max_retries)

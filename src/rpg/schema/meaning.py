@@ -24,7 +24,7 @@ from collections import Counter
 from rpg.domain import predicates as P
 from rpg.schema.model import TaskSchema
 
-_SKIP = (P.OnTable, P.Upright)
+_SKIP = (P.OnTable, P.Upright, P.LayersUniform)  # layers' colours show in the layer breakdown
 _SYMMETRIC = (P.NextTo, P.FarFrom)
 
 
@@ -134,8 +134,8 @@ def _pattern(atom: str) -> re.Pattern:
     """A regular expression for one expected atom (``?`` and ``X*`` wildcards)."""
     out = []
     for tok in re.split(r"([(),;|@\[\]])", atom.strip()):
-        if tok == "?":
-            out.append(r"[^(),;|@]+")
+        if "?" in tok and not tok.endswith("*"):
+            out.append(r"[^(),;|@]+".join(re.escape(part) for part in tok.split("?")))
         elif tok.endswith("*") and tok[:-1]:
             t = re.escape(tok[:-1])
             out.append(rf"{t}(?:[,|]{t})*")

@@ -1,0 +1,123 @@
+"""Mention accounting: every count and place an instruction names must be in its task.
+
+The builtin front end reads an instruction with recognizers; a recognizer that reads part
+of a sentence could leave a count ("three green blocks") or a place ("in each of the four
+corners") out of the task it builds and still produce a valid task that means something
+else.  This pass lists the content mentions of the normalised instruction and checks each
+against the schema; a mention the schema does not consume makes the compile refuse, with a
+message naming it (refuse rather than guess).  The record of what consumed what is stored
+in ``task.yaml`` (``schema.accounting``) so a reader can see which words made which part.
+
+Colours and labels are accounted for in :func:`rpg.schema.builtin.parse` itself.
+"""
+
+from __future__ import annotations
+
+import re
+from collections import Counter
+from dataclasses import dataclass
+
+from rpg.domain import predicates as P
+from rpg.schema.model import TaskSchema
+
+CUBE_NOUNS = r"(?:block|cube|box|piece|object|one)s?"
+
+
+@dataclass(frozen=True)
+class Mention:
+    """A content mention: its words, kind (count, place) and what it requires."""
+
+    words: str
+    kind: str
+    count: int = 0
+    color: str | None = None
+    region: str | None = None
+
+
+class UnaccountedMention(ValueError):
+    """A mention of the instruction has no place in the task that was read."""
+
+
+def _count_re(colors: str) -> re.Pattern:
+    return re.compile(
+        rf"(?<![a-z'@])(?<!letter )(?<!digit )(?<!number )(?<!labeled )(?<!labelled )(?<!label )"
+        rf"(?P<n>\d+)\s+(?:(?:more|additional|extra|other|separate|of\s+the|of|identical|same)\s+)*"
+        rf"(?P<colors>(?:(?:{colors})(?:\s*,\s*|\s+and\s+|\s+or\s+))*(?:{colors})\s+)?"
+        rf"(?:(?!(?:with|of|on|in|to|for|from|and|or|by|at|the|a|an|than)\b)[a-z\-]+\s+){{0,2}}?{CUBE_NOUNS}\b"
+        rf"|(?<![a-z'@])(?P<n3>\d+)\s+(?P<color3>{colors})\b(?!\s+(?:goal\s+)?patch)"
+        rf"|\b(?:tower|stack|column|pile|row|line|pillar)\s+of\s+(?P<n2>\d+)\s+(?:(?P<color2>{colors})\b)?")
+
+
+def mentions(text: str, colors: str, canon) -> list[Mention]:
+    """Counts and places named in normalised text (``@region_<name>`` tokens for places).
+
+    Args:
+        text: the parser's normalised instruction (numbers as digits, places as tokens).
+        colors: regular-expression alternation of colour words.
+        canon: maps a colour word to its palette name.
+    """
+    out: list[Mention] = []
+    for m in _count_re(colors).finditer(text):
+        n = int(m.group("n") or m.group("n2") or m.group("n3"))
+        listed = (re.findall(rf"\b(?:{colors})\b", m.group("colors") or "")
+                  or [c for c in [m.group("color2"), m.group("color3")] if c])
+        named = tuple(sorted({canon(c) for c in listed}))
+        out.append(Mention(m.group(0).strip(), "count", count=n, color=",".join(named) or None))
+    for m in re.finditer(rf"\b(?P<c>{colors})\s+(?:goal\s+)?patch(?:es)?\b", text):
+        out.append(Mention(m.group(0), "patch", color=canon(m.group("c"))))
+    for m in re.finditer(r"@region_([a-z_]+)", text):
+        out.append(Mention(m.group(0), "place", region=m.group(1)))
+    each = re.search(r"\b(?:each|every|all)\s+(?:of\s+the\s+)?(?:(\d+)\s+)?corners?\b", text)
+    if each:
+        out.append(Mention(each.group(0), "place", count=int(each.group(1) or 4), region="corners"))
+    return out
+
+
+def _regions(schema: TaskSchema) -> set[str]:
+    found = set()
+    stack = [schema.goal_predicate()]
+    while stack:
+        p = stack.pop()
+        if isinstance(p, P.InRegion):
+            found.add(p.region)
+        stack.extend(p.children())
+    return found
+
+
+def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
+    """Check every count and place mention of ``text`` against ``schema``.
+
+    Returns:
+        The accounting record: one ``{"mention", "kind", "consumed_by"}`` per mention.
+
+    Raises:
+        UnaccountedMention: a mention with no place in the task; the message names it.
+    """
+    cubes = [a for a in schema.assets if a.kind != "goal_patch"]
+    by_color = Counter(a.color for a in cubes if a.color)
+    regions = _regions(schema)
+    patches = {a.color or "gray" for a in schema.assets if a.kind == "goal_patch"}
+    record = []
+    for m in mentions(text, colors, canon):
+        if m.kind == "patch":
+            if m.color not in patches:
+                raise UnaccountedMention(f"the {m.words} has no part in the task read")
+            record.append({"mention": m.words, "kind": "patch", "consumed_by": f"goal patch {m.color}"})
+        elif m.kind == "count":
+            have = sum(by_color[c] for c in m.color.split(",")) if m.color else len(cubes)
+            what = f"{m.color} cubes" if m.color else "cubes"
+            if have < m.count:
+                raise UnaccountedMention(f"'{m.words}' asks for {m.count} {what} but the task read has {have}")
+            record.append({"mention": m.words, "kind": "count", "consumed_by": f"{have} {what}"})
+        elif m.region == "corners":
+            corners = sorted(r for r in regions if r.count("_") == 1)
+            if len(corners) < m.count:
+                raise UnaccountedMention(f"'{m.words}' names {m.count} corners but the task read uses "
+                                         f"{len(corners) or 'no'} corner(s)")
+            record.append({"mention": m.words, "kind": "place", "consumed_by": "in_region " + ", ".join(corners)})
+        else:
+            if m.region not in regions:
+                place = m.region.replace("_", " ")
+                raise UnaccountedMention(f"the place '{place}' has no part in the task read")
+            record.append({"mention": m.region.replace("_", " "), "kind": "place", "consumed_by": f"in_region {m.region}"})
+    return record
