@@ -308,7 +308,7 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     ("Place the red block to the left of the blue block, in the back of the table.",
      "red on the back side of the workspace; red left of blue"),
     ("Put the red block on the left and the blue block on the right.", "red left of blue"),  # relative, not a region
-    ("Stack the blocks in rainbow order.", "tower bottom to top: red, orange, yellow, green, cyan"),
+    ("Stack the blocks in rainbow order.", "tower bottom to top: red, orange, yellow, green, blue"),
     ("Arrange the digits 1, 2, 3 so that they read 321.", "up faces read 3, 2, 1 left to right"),
     ("Stack two red blocks and two blue blocks alternately.", "tower bottom to top: red_1, blue_1, red_2, blue_2"),
     ("Stack the cubes so that the colors alternate.", "tower bottom to top: red_1, blue_1, red_2, blue_2"),

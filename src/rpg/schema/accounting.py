@@ -67,6 +67,14 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
         out.append(Mention(m.group(0), "patch", color=canon(m.group("c"))))
     for m in re.finditer(r"@region_([a-z_]+)", text):
         out.append(Mention(m.group(0), "place", region=m.group(1)))
+    towers = len(re.findall(r"\b(?:a|an|1|another)\s+(?:[a-z0-9\-]+\s+){0,2}?(?:tower|stack|column|pillar)\b", text))
+    towers += len(re.findall(r"\b(?:tower|stack|column|pillar)\s+of\s+\w+\s+and\s+(?:1|another)\b(?!\s+(?:[a-z]+\s+)?"
+                             r"(?:block|cube|tower|stack|column|pillar))", text))  # "one tower of red and one of green"
+    if re.search(r"\b(?:on|onto|above|atop|over|under|below|beneath|underneath)\b", text):
+        towers = 0  # a stack put on a stack is one tower: leave counting them to the structure's reader
+    towers += sum(int(n) for n in re.findall(r"\b(\d+)\s+(?:[a-z\-]+\s+){0,2}?(?:towers|stacks|columns|pillars)\b", text))
+    if towers > 1:
+        out.append(Mention(f"{towers} towers", "towers", count=towers))
     each = re.search(r"\b(?:each|every|all)\s+(?:of\s+the\s+)?(?:(\d+)\s+)?corners?\b", text)
     if each:
         out.append(Mention(each.group(0), "place", count=int(each.group(1) or 4), region="corners"))
@@ -82,6 +90,23 @@ def _regions(schema: TaskSchema) -> set[str]:
             found.add(p.region)
         stack.extend(p.children())
     return found
+
+
+def _count_towers(schema: TaskSchema) -> int:
+    """Stacks in the goal: Stack predicates, and chains of On over distinct bases."""
+    n, bases, tops = 0, set(), set()
+    todo = [schema.goal_predicate()]
+    while todo:
+        p = todo.pop()
+        if isinstance(p, P.Stack):
+            n += 1
+        elif isinstance(p, P.On):
+            bases.add(p.b)
+            tops.add(p.a)
+        elif isinstance(p, P.Pyramid | P.Grid):
+            n += 1  # a structure of layers holds the count as one
+        todo.extend(p.children())
+    return n + len(bases - tops)
 
 
 def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
@@ -109,6 +134,11 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
             if have < m.count:
                 raise UnaccountedMention(f"'{m.words}' asks for {m.count} {what} but the task read has {have}")
             record.append({"mention": m.words, "kind": "count", "consumed_by": f"{have} {what}"})
+        elif m.kind == "towers":
+            have = _count_towers(schema)
+            if have < m.count:
+                raise UnaccountedMention(f"it names {m.count} towers but the task read has {have}")
+            record.append({"mention": m.words, "kind": "towers", "consumed_by": f"{have} stacks"})
         elif m.region == "corners":
             corners = sorted(r for r in regions if r.count("_") == 1)
             if len(corners) < m.count:

@@ -175,7 +175,9 @@ def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
         raise ParseError("the instruction is empty; describe a task, e.g. \"stack the red block on the blue block\"")
     if len(original) > MAX_INSTRUCTION_CHARS:
         raise ParseError(f"the instruction has {len(original)} characters; the limit is {MAX_INSTRUCTION_CHARS}")
-    labelled = re.sub(r"\b(the|a|an)\s+([A-Z])\s+(block|cube)\b", r"\1 letter \2 \3", original)  # "the A block"
+    labelled = re.sub(r"\b(block|cube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))",
+                      lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1)}", original)  # "block 4"
+    labelled = re.sub(r"\b(the|a|an)\s+([A-Z])\s+(block|cube)\b", r"\1 letter \2 \3", labelled)  # "the A block"
     labelled = re.sub(r"\b(the)\s+(\d)\s+(block|cube)\b(?!s)", r"\1 digit \2 \3", labelled)  # "the 3 cube"
     text = labelled.lower()
     text = re.sub(r"[\u2018\u2019\u201c\u201d`]", "'", text)
@@ -186,6 +188,7 @@ def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
     text = _compass(text)
     text = re.sub(r"\b(?:to|onto)\s+the\s+top\s+of\b", "on top of", text)
     text = re.sub(r"\btoward(?:s)?\b", "to", text)
+    text = re.sub(r"\b(?:so\s+(?:that\s+)?it(?:'s|\s+is)\s+)?touch(?:ing|es)?\b", "next to", text)
     text = re.sub(r"\bfollowed\s+by\b|\btopped\s+(?:off\s+)?(?:with|by)\b", "then", text)
     text = re.sub(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+of\s+the\s+(?=\w+\s+(?:blocks|cubes|boxes)\b)", r"\1 ", text)
     text = re.sub(r"\bto\s+the\s+(left|right)(?:\s+hand)?\s+side\s+of\b", r"to the \1 of", text)
@@ -1737,8 +1740,13 @@ def recognize_tower_clauses(f: Features, b: Builder) -> bool:
     free = iter(b.unit_centers(unplaced, 0.16) if unplaced else [])
     for region in plan.regions:
         spots.append(_region_spots(region, 1)[0] if region else next(free))
-    for colors, region, xy in zip(plan.towers, plan.regions, spots, strict=True):
-        names = [b.cube(col) for col in colors]
+    made: dict[tuple[int, int], str] = {}  # cubes are created in the order the text names them
+    order = plan.order or [[0] * len(t) for t in plan.towers]
+    cells = sorted((order[t][i], t, i) for t, tower in enumerate(plan.towers) for i in range(len(tower)))
+    for _, t, i in cells:
+        made[t, i] = b.cube(plan.towers[t][i])
+    for t, (region, xy) in enumerate(zip(plan.regions, spots, strict=True)):
+        names = [made[t, i] for i in range(len(plan.towers[t]))]
         b.place(stack_layout(names, xy))
         b.preds.append(Stack(tuple(names)))
         b.summary.append("tower bottom to top: " + ", ".join(names))
@@ -1784,6 +1792,36 @@ RECOGNIZERS = (
 )
 
 
+def _unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
+    """The first word or mention of the instruction that ``schema`` has no place for, as the
+    ParseError to raise; None when every label, colour, count, patch and place is in it."""
+    labels = "".join(a.label or "" for a in schema.assets)
+    compass = {m.group(1) for m in COMPASS_CORNER_RE.finditer(f.original.lower())}
+    caps = [w for w in re.findall(r"\b[A-Z]{2,}\b", f.original)
+            if w.lower() not in VOCAB and w.lower() not in COLORS and not set(w) <= set(labels)
+            and w.lower() not in compass]
+    if caps:
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {caps[0]!r} has no place in "
+                          "that task. Rephrase (e.g. \"spell the word ...\"), or use --model")
+    named_labels = {m.upper() for m in re.findall(r"\b(?:letter|number|digit)\s+'?([A-Za-z0-9])'?(?![A-Za-z0-9'])",
+                                                  f.original, re.IGNORECASE)}
+    if f.has("letter", "letters", "number", "numbers", "digit", "digits"):
+        named_labels |= set(_explicit_labels(f))  # "the numbers 1 to 3 in a row, then ..."
+    if named_labels - set(labels):
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the cube labelled "
+                          f"{sorted(named_labels - set(labels))[0]!r} has no place in that task. Rephrase, or use --model")
+    missing = sorted({c for c in f.color_list()} - {a.color for a in schema.assets})
+    if missing:
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the {', '.join(missing)} "
+                          "cube(s) it names have no place in that task. Rephrase, or use --model")
+    try:
+        account(_regions(f.text), schema, COLOR_RE, _canon_color)
+    except UnaccountedMention as exc:
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {exc}. "
+                          "Rephrase (one sentence per structure helps), or use --model")
+    return None
+
+
 def parse(instruction: str) -> TaskSchema:
     """Read an instruction into a TaskSchema.
 
@@ -1793,38 +1831,19 @@ def parse(instruction: str) -> TaskSchema:
         UnknownColorError / UnknownLabelError: an unknown colour or label.
     """
     f = features(instruction)
+    first_gap: ParseError | None = None
     for recognize in RECOGNIZERS:
         b = Builder(f.original)
         b.repairs = []
         if recognize(f, b):
             schema = b.schema(_slug(f.original))
             schema.repairs = b.repairs
-            labels = "".join(a.label or "" for a in schema.assets)
-            compass = {m.group(1) for m in COMPASS_CORNER_RE.finditer(f.original.lower())}
-            caps = [w for w in re.findall(r"\b[A-Z]{2,}\b", f.original)
-                    if w.lower() not in VOCAB and w.lower() not in COLORS and not set(w) <= set(labels)
-                    and w.lower() not in compass]
-            if caps:
-                raise ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {caps[0]!r} has no place in "
-                                 "that task. Rephrase (e.g. \"spell the word ...\"), or use --model")
-            named_labels = {m.upper() for m in re.findall(r"\b(?:letter|number|digit)\s+'?([A-Za-z0-9])'?(?![A-Za-z0-9'])",
-                                                          f.original, re.IGNORECASE)}
-            if f.has("letter", "letters", "number", "numbers", "digit", "digits"):
-                named_labels |= set(_explicit_labels(f))  # "the numbers 1 to 3 in a row, then ..."
-            if named_labels - set(labels):
-                raise ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the cube labelled "
-                                 f"{sorted(named_labels - set(labels))[0]!r} has no place in that task. Rephrase, or use --model")
-            missing = sorted({c for c in f.color_list()} - {a.color for a in schema.assets})
-            if missing:
-                raise ParseError(
-                    f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the {', '.join(missing)} "
-                    f"cube(s) it names have no place in that task. Rephrase, or use --model")
-            try:
-                account(_regions(f.text), schema, COLOR_RE, _canon_color)
-            except UnaccountedMention as exc:
-                raise ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {exc}. "
-                                 "Rephrase (one sentence per structure helps), or use --model") from None
-            return schema
+            gap = _unaccounted(f, schema)
+            if gap is None:
+                return schema
+            first_gap = first_gap or gap  # a reading that drops a mention: try the next reader
+    if first_gap is not None:
+        raise first_gap
     raise ParseError(
         f"could not find a task in \"{f.original[:80]}\": name a structure (tower, line, circle, grid, "
         "pyramid, piles), a relation (on, left of, behind...) or a goal (spell, sort, rotate); "

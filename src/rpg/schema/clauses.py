@@ -33,7 +33,7 @@ VERBS = r"place|put|stack|add|build|set|lay|make|create|construct|position|move|
 FILLER = re.compile(
     rf"\b(?:{VERBS}|on\s+top\s+of\s+(?:it|that)|then|and|also|more|additional|extra|stacked|vertically|it|that|in\s+a\s+stack|"
     rf"to\s+make\s+a\s+(?:stack|tower|column)|making\s+a\s+(?:longer\s+|taller\s+)?(?:stack|tower|pillar|column)|"
-    r"on\s+the\s+table|straight\s+up|up|spot|horizontal|horizontally|vertical|vertically|the)\b|[.,;!]")
+    r"on\s+the\s+table|straight\s+up|up|spot|horizontal|horizontally|vertical|vertically|(?:a|the)\s+(?:tower|stack|column)(?=\s*[:,])|the)\b|[.,;:!]")
 """Words a placement clause may carry besides its cubes, relation and reference."""
 
 
@@ -50,6 +50,8 @@ class Plan:
     towers: list[list[str]] = field(default_factory=list)
     regions: list[str | None] = field(default_factory=list)
     wall: list[list[str]] = field(default_factory=list)
+    order: list[list[int]] = field(default_factory=list)
+    """For each tower's cubes, the order in which the text first names them (empty: tower order)."""
 
 
 @dataclass
@@ -62,6 +64,8 @@ class _Clause:
     row: int = 0             # items form a row of this many cubes
     ref_row: int = 0
     definite: set[str] = field(default_factory=set)  # colours named as "red" / "the red block"
+    start: int = 0           # offset of the clause in the text
+    fronted: bool = False    # the reference comes before the cubes ("on top of the red block place ...")
 
 
 def _num(word: str | None) -> int:
@@ -86,7 +90,7 @@ class _Grammar:
         bare = re.sub(r"\(\?P<[a-z0-9]+>", "(?:", self.items.pattern)
         ref = (rf"(?:(?:the|a|an)\s+)?(?:(?P<rcount>\d+)\s+)?(?:single\s+|only\s+|first\s+)?(?P<rcol>{c})"
                rf"(?:\s+(?:{NOUN}|{CONTAINER}))?(?:\s+{CONTAINER})?"
-               rf"|(?P<rrow>the\s+(?:horizontal\s+)?(?:row|line)\s+of\s+(?:the\s+)?(?P<rrn>\d+)\s+(?P<rrc>{c})(?:\s+{NOUN})?)"
+               rf"|(?P<rrow>(?:the|a)\s+(?:horizontal\s+)?(?:row|line)\s+of\s+(?:the\s+)?(?P<rrn>\d+)\s+(?P<rrc>{c})(?:\s+{NOUN})?)"
                rf"|(?P<pron>it|that|them|the\s+(?:{CONTAINER}|top))\b")
         rel = rf"(?P<rel>{ABOVE}|{BELOW})"
         region = r"(?:\s*(?P<region>@region_[a-z_]+|(?:in|on|at|to)\s+(?:each|every|all)\s+(?:of\s+the\s+)?(?:\d+\s+)?corners?(?:\s+of\s+the\s+table)?))"
@@ -128,7 +132,8 @@ def _clauses(text: str, g: _Grammar) -> list[_Clause] | None:
             if not items:
                 continue
             region = m.groupdict().get("region")
-            cl = _Clause(items, None, None, region=region.strip() if region else None, row=row, definite=set(g.definite))
+            cl = _Clause(items, None, None, region=region.strip() if region else None, row=row, definite=set(g.definite),
+                         start=m.start(), fronted=kind == "fronted")
             if kind == "top":  # "then a red block", "add one red block on top": on the top of the tower
                 cl.rel, cl.ref = "above", "top"
             elif kind != "alone":
@@ -177,6 +182,7 @@ def read(text: str, colors: str, canon) -> Plan | None:
         per = len(cl.items) // k
         return Plan(towers=[[cl.ref] + cl.items[i * per:(i + 1) * per] for i in range(k)], regions=[None] * k)
     towers: list[list[str]] = []
+    keys: list[list[tuple[int, int]]] = []  # where the text names each cube: (clause offset, position)
     regions: list[str | None] = []
     prev_ref: tuple[int, int] | None = None   # (tower, index) of the last clause's reference
     prev_items: tuple[int, int] | None = None  # (tower, index of its top cube)
@@ -187,6 +193,7 @@ def read(text: str, colors: str, canon) -> Plan | None:
             if towers and not cl.region:
                 return None
             towers.append(list(cl.items))
+            keys.append([(cl.start, k) for k in range(len(cl.items))])
             regions.append(cl.region)
             prev_ref, prev_items = None, (len(towers) - 1, len(cl.items) - 1)
             continue
@@ -202,6 +209,7 @@ def read(text: str, colors: str, canon) -> Plan | None:
                 if towers and not cl.region:
                     return None
                 towers.append([cl.ref])
+                keys.append([(cl.start, 0 if cl.fronted else len(cl.items))])
                 regions.append(cl.region)
                 anchor = (len(towers) - 1, 0)
             else:
@@ -214,6 +222,7 @@ def read(text: str, colors: str, canon) -> Plan | None:
         regions[t] = regions[t] or cl.region
         at = i + 1 if cl.rel == "above" else i
         towers[t][at:at] = cl.items
+        keys[t][at:at] = [(cl.start, k + (1 if cl.fronted else 0)) for k in range(len(cl.items))]
         shift = len(cl.items) if cl.rel == "below" else 0
         prev_ref = (t, i + shift)
         prev_items = (t, at + len(cl.items) - 1)
@@ -224,4 +233,6 @@ def read(text: str, colors: str, canon) -> Plan | None:
                     regions=["back_left", "back_right", "front_left", "front_right"])
     if any(_corners(r) for r in regions):
         return None
-    return Plan(towers=towers, regions=[r[len("@region_"):] if r else None for r in regions])
+    ranks = {k: r for r, k in enumerate(sorted(k for ks in keys for k in ks))}
+    return Plan(towers=towers, regions=[r[len("@region_"):] if r else None for r in regions],
+                order=[[ranks[k] for k in ks] for ks in keys])
