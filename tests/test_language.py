@@ -61,3 +61,15 @@ def test_a_real_word_is_not_corrected_into_another():
 def test_new_readings_compile_to_valid_tasks(tmp_path, text):
     result = compile_instruction(text, tmp_path)
     assert result.valid, result.log
+
+
+def test_relation_words_must_be_in_the_task():
+    from rpg.schema.accounting import UnaccountedMention, account
+    from rpg.schema.builtin import COLOR_RE, _canon_color
+
+    schema = parse("stack the red block on the blue block")
+    with pytest.raises(UnaccountedMention, match="left of"):
+        account("stack the red block on the blue block left of the green block", schema, COLOR_RE, _canon_color)
+    record = account("put the red block left of the blue block", parse("put the red block left of the blue block"),
+                     COLOR_RE, _canon_color)
+    assert {"mention": "left of", "kind": "relation", "consumed_by": "left_of"} in record

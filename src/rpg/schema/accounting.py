@@ -34,6 +34,14 @@ class Mention:
     region: str | None = None
 
 
+RELATION_WORDS: tuple[tuple[str, str], ...] = (
+    (r"\b(?:to\s+the\s+)?(?:left|right)\s+of\b", "left_of right_of in_line between sorted_by reads equation"),
+    (r"\bin\s+front\s+of\b|\bbehind\b", "in_front_of behind in_line between"),
+    (r"\bbetween\b", "between in_line"),
+)
+"""Relation words (normalised text) -> the goal predicates that can carry them (project)."""
+
+
 class UnaccountedMention(ValueError):
     """A mention of the instruction has no place in the task that was read."""
 
@@ -75,6 +83,10 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
     towers += sum(int(n) for n in re.findall(r"\b(\d+)\s+(?:[a-z\-]+\s+){0,2}?(?:towers|stacks|columns|pillars)\b", text))
     if towers > 1:
         out.append(Mention(f"{towers} towers", "towers", count=towers))
+    for words, kinds in RELATION_WORDS:
+        m = re.search(words, text)
+        if m:
+            out.append(Mention(m.group(0), "relation", region=kinds))
     each = re.search(r"\b(?:each|every|all)\s+(?:of\s+the\s+)?(?:(\d+)\s+)?corners?\b", text)
     if each:
         out.append(Mention(each.group(0), "place", count=int(each.group(1) or 4), region="corners"))
@@ -90,6 +102,15 @@ def _regions(schema: TaskSchema) -> set[str]:
             found.add(p.region)
         stack.extend(p.children())
     return found
+
+
+def _predicate_names(schema: TaskSchema) -> set[str]:
+    names, todo = set(), [schema.goal_predicate()]
+    while todo:
+        p = todo.pop()
+        names.add(p.name)
+        todo.extend(p.children())
+    return names
 
 
 def _count_towers(schema: TaskSchema) -> int:
@@ -134,6 +155,11 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
             if have < m.count:
                 raise UnaccountedMention(f"'{m.words}' asks for {m.count} {what} but the task read has {have}")
             record.append({"mention": m.words, "kind": "count", "consumed_by": f"{have} {what}"})
+        elif m.kind == "relation":
+            used = sorted(_predicate_names(schema) & set(m.region.split()))
+            if not used:
+                raise UnaccountedMention(f"the relation '{m.words}' has no part in the task read")
+            record.append({"mention": m.words, "kind": "relation", "consumed_by": ", ".join(used)})
         elif m.kind == "towers":
             have = _count_towers(schema)
             if have < m.count:
