@@ -340,6 +340,11 @@ def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     "Build a tower of three blocks in the center of the workspace",
     "Move the purple block to the back right corner and the orange block to the front left corner",
     "Place four cubes in the front right corner",
+    # readings of the clause reader and the move-to-a-place recognizer (test_language.py)
+    "Place a column of 2 yellow blocks in each of the four corners.",
+    "push the red block to the right",
+    "Build a horizontal row of 3 purple blocks on top of the horizontal row of 3 red blocks.",
+    "Add one blue block under the red block. Then add 3 green blocks on top of red block.",
 ])
 def test_new_phrasings_compile_to_valid_tasks(text, tmp_path):
     r = compile_instruction(text, tmp_path)

@@ -178,6 +178,12 @@ class Predicate:
     def children(self) -> list[Predicate]:
         return []
 
+    def walk(self):
+        """This predicate and every predicate below it, depth first (yields Predicate)."""
+        yield self
+        for child in self.children():
+            yield from child.walk()
+
     def support_edges(self) -> list[tuple[str, str]]:
         """(upper, lower) support relations this predicate asserts; ``"table"`` is ground."""
         return [e for c in self.children() for e in c.support_edges()]

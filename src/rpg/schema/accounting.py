@@ -1,14 +1,15 @@
-"""Mention accounting: every count and place an instruction names must be in its task.
+"""Mention accounting: every count, patch, place and relation an instruction names must be in its task.
 
 The builtin front end reads an instruction with recognizers; a recognizer that reads part
 of a sentence could leave a count ("three green blocks") or a place ("in each of the four
 corners") out of the task it builds and still produce a valid task that means something
 else.  This pass lists the content mentions of the normalised instruction and checks each
 against the schema; a mention the schema does not consume makes the compile refuse, with a
-message naming it (refuse rather than guess).  The record of what consumed what is stored
-in ``task.yaml`` (``schema.accounting``) so a reader can see which words made which part.
+message naming it (refuse rather than guess).  :func:`account` also returns the record of
+which part of the task consumed each mention (not yet written to ``task.yaml``).
 
-Colours and labels are accounted for in :func:`rpg.schema.builtin.parse` itself.
+Colours and labels are checked by the builtin front end (``builtin._unaccounted`` and
+``builtin.check_mentions``), which call :func:`account` for the rest.
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ from __future__ import annotations
 import re
 from collections import Counter
 from dataclasses import dataclass
+from functools import lru_cache
 
 from rpg.domain import predicates as P
 from rpg.schema.model import TaskSchema
@@ -25,13 +27,14 @@ CUBE_NOUNS = r"(?:block|cube|box|piece|object|one)s?"
 
 @dataclass(frozen=True)
 class Mention:
-    """A content mention: its words, kind (count, place) and what it requires."""
+    """A content mention: its words, kind (count, patch, place, towers, relation) and what it requires."""
 
     words: str
     kind: str
     count: int = 0
     color: str | None = None
     region: str | None = None
+    predicates: tuple[str, ...] = ()  # relation: the goal predicates that can carry it
 
 
 RELATION_WORDS: tuple[tuple[str, str], ...] = (
@@ -46,6 +49,7 @@ class UnaccountedMention(ValueError):
     """A mention of the instruction has no place in the task that was read."""
 
 
+@lru_cache(maxsize=4)
 def _count_re(colors: str) -> re.Pattern:
     return re.compile(
         rf"(?<![a-z'@])(?<!letter )(?<!digit )(?<!number )(?<!labeled )(?<!labelled )(?<!label )"
@@ -86,52 +90,23 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
     for words, kinds in RELATION_WORDS:
         m = re.search(words, text)
         if m:
-            out.append(Mention(m.group(0), "relation", region=kinds))
+            out.append(Mention(m.group(0), "relation", predicates=tuple(kinds.split())))
     each = re.search(r"\b(?:each|every|all)\s+(?:of\s+the\s+)?(?:(\d+)\s+)?corners?\b", text)
     if each:
         out.append(Mention(each.group(0), "place", count=int(each.group(1) or 4), region="corners"))
     return out
 
 
-def _regions(schema: TaskSchema) -> set[str]:
-    found = set()
-    stack = [schema.goal_predicate()]
-    while stack:
-        p = stack.pop()
-        if isinstance(p, P.InRegion):
-            found.add(p.region)
-        stack.extend(p.children())
-    return found
-
-
-def _predicate_names(schema: TaskSchema) -> set[str]:
-    names, todo = set(), [schema.goal_predicate()]
-    while todo:
-        p = todo.pop()
-        names.add(p.name)
-        todo.extend(p.children())
-    return names
-
-
-def _count_towers(schema: TaskSchema) -> int:
-    """Stacks in the goal: Stack predicates, and chains of On over distinct bases."""
-    n, bases, tops = 0, set(), set()
-    todo = [schema.goal_predicate()]
-    while todo:
-        p = todo.pop()
-        if isinstance(p, P.Stack):
-            n += 1
-        elif isinstance(p, P.On):
-            bases.add(p.b)
-            tops.add(p.a)
-        elif isinstance(p, P.Pyramid | P.Grid):
-            n += 1  # a structure of layers holds the count as one
-        todo.extend(p.children())
+def _count_towers(goal: list[P.Predicate]) -> int:
+    """Stacks in the goal: Stack predicates and layered structures, and chains of On over distinct bases."""
+    n = sum(isinstance(p, P.Stack | P.Pyramid | P.Grid) for p in goal)  # a layered structure counts as one
+    bases = {p.b for p in goal if isinstance(p, P.On)}
+    tops = {p.a for p in goal if isinstance(p, P.On)}
     return n + len(bases - tops)
 
 
 def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
-    """Check every count and place mention of ``text`` against ``schema``.
+    """Check every count, patch, place and relation mention of ``text`` against ``schema``.
 
     Returns:
         The accounting record: one ``{"mention", "kind", "consumed_by"}`` per mention.
@@ -141,7 +116,8 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
     """
     cubes = [a for a in schema.assets if a.kind != "goal_patch"]
     by_color = Counter(a.color for a in cubes if a.color)
-    regions = _regions(schema)
+    goal = list(schema.goal_predicate().walk())
+    regions = {p.region for p in goal if isinstance(p, P.InRegion)}
     patches = {a.color or "gray" for a in schema.assets if a.kind == "goal_patch"}
     record = []
     for m in mentions(text, colors, canon):
@@ -156,12 +132,12 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                 raise UnaccountedMention(f"'{m.words}' asks for {m.count} {what} but the task read has {have}")
             record.append({"mention": m.words, "kind": "count", "consumed_by": f"{have} {what}"})
         elif m.kind == "relation":
-            used = sorted(_predicate_names(schema) & set(m.region.split()))
+            used = sorted({p.name for p in goal} & set(m.predicates))
             if not used:
                 raise UnaccountedMention(f"the relation '{m.words}' has no part in the task read")
             record.append({"mention": m.words, "kind": "relation", "consumed_by": ", ".join(used)})
         elif m.kind == "towers":
-            have = _count_towers(schema)
+            have = _count_towers(goal)
             if have < m.count:
                 raise UnaccountedMention(f"it names {m.count} towers but the task read has {have}")
             record.append({"mention": m.words, "kind": "towers", "consumed_by": f"{have} stacks"})

@@ -249,30 +249,43 @@ def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
     return " ".join(text.split()), original
 
 
+def _color_mentions(text: str) -> list[tuple[int, str]]:
+    """(offset, palette colour) of each colour word of normalised text that names an object
+    (not "color order" / "color gradient")."""
+    return [(m.start(), _canon_color(m.group(0))) for m in re.finditer(rf"\b({COLOR_RE})\b", text)
+            if not re.match(r"\s+(order|gradient|sort)", text[m.end():])]
+
+
+def _account_named(text: str, schema: TaskSchema) -> list[dict]:
+    """Colours, then counts, patches, places and relations of normalised ``text`` against
+    ``schema`` (:func:`rpg.schema.accounting.account`).
+
+    Raises:
+        UnaccountedMention: the first mention with no part in the schema.
+    """
+    missing = sorted({c for _, c in _color_mentions(text)} - {a.color for a in schema.assets})
+    if missing:
+        raise UnaccountedMention(f"the {', '.join(missing)} cube(s) it names have no place in that task")
+    return account(_regions(text), schema, COLOR_RE, _canon_color)
+
+
 def check_mentions(instruction: str, schema: TaskSchema) -> list[dict]:
-    """Check that ``schema`` accounts for the colours, counts, goal patches and places that
-    ``instruction`` names, whoever wrote the schema (the builtin parser or a model).
+    """Check that ``schema`` accounts for the colours, counts, goal patches, places and
+    relations that ``instruction`` names, whoever wrote the schema (the builtin parser or a model).
 
     Returns:
         The accounting record (see :func:`rpg.schema.accounting.account`).
 
     Raises:
-        UnaccountedMention: a named colour, count, patch or place has no part in the schema.
+        UnaccountedMention: a named colour, count, patch, place or relation has no part in the schema.
     """
-    text, _ = normalize(instruction, strict=False)
-    named = {_canon_color(m.group(0)) for m in re.finditer(rf"\b({COLOR_RE})\b", text)
-             if not re.match(r"\s+(order|gradient|sort)", text[m.end():])}
-    missing = sorted(named - {a.color for a in schema.assets})
-    if missing:
-        raise UnaccountedMention(f"the {', '.join(missing)} object(s) it names have no place in the task")
-    return account(_regions(text), schema, COLOR_RE, _canon_color)
+    return _account_named(normalize(instruction, strict=False)[0], schema)
 
 
 def features(instruction: str) -> Features:
     text, original = normalize(instruction)
     f = Features(text, original)
-    f.colors = [(m.start(), _canon_color(m.group(0))) for m in re.finditer(rf"\b({COLOR_RE})\b", text)
-                if not re.match(r"\s+(order|gradient|sort)", text[m.end():])]
+    f.colors = _color_mentions(text)
     f.quoted = re.findall(r"['\u2018\u2019\u201c\u201d\"]([^'\u2018\u2019\u201c\u201d\"]+)['\u2018\u2019\u201c\u201d\"]", original)
     return f
 
@@ -1794,7 +1807,7 @@ RECOGNIZERS = (
 
 def _unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     """The first word or mention of the instruction that ``schema`` has no place for, as the
-    ParseError to raise; None when every label, colour, count, patch and place is in it."""
+    ParseError to raise; None when every label, colour, count, patch, place and relation is in it."""
     labels = "".join(a.label or "" for a in schema.assets)
     compass = {m.group(1) for m in COMPASS_CORNER_RE.finditer(f.original.lower())}
     caps = [w for w in re.findall(r"\b[A-Z]{2,}\b", f.original)
@@ -1810,12 +1823,8 @@ def _unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     if named_labels - set(labels):
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the cube labelled "
                           f"{sorted(named_labels - set(labels))[0]!r} has no place in that task. Rephrase, or use --model")
-    missing = sorted({c for c in f.color_list()} - {a.color for a in schema.assets})
-    if missing:
-        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the {', '.join(missing)} "
-                          "cube(s) it names have no place in that task. Rephrase, or use --model")
     try:
-        account(_regions(f.text), schema, COLOR_RE, _canon_color)
+        _account_named(f.text, schema)
     except UnaccountedMention as exc:
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {exc}. "
                           "Rephrase (one sentence per structure helps), or use --model")

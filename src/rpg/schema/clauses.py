@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 ABOVE = r"on\s+top\s+of|on|onto|atop|above|over"
 BELOW = r"under|underneath|below|beneath"
@@ -77,7 +78,6 @@ def _num(word: str | None) -> int:
 class _Grammar:
     def __init__(self, colors: str, canon):
         c = rf"(?:{colors})"
-        self.definite: set[str] = set()  # colours of groups named without a count or article
         self.canon = canon
         group = rf"(?:(?P<q>a|an|one|another|\d+)\s+)?(?:(?:more|additional|extra)\s+)?(?P<c>{c})(?:\s+{NOUN})?"
         self.group = re.compile(group)
@@ -101,21 +101,27 @@ class _Grammar:
         self.on_top = re.compile(rf"(?:(?<=then\s)|(?<=then,\s))(?:(?:{VERBS})\s+)?(?P<items>{bare})(?!\s+(?:{ABOVE}|{BELOW})\b)"
                                  rf"|(?P<items_top>{bare})\s+on\s+top\b(?!\s+of)")
 
-    def colors_of(self, m: re.Match, key: str = "items") -> tuple[list[str], int]:
+    def colors_of(self, m: re.Match, key: str = "items") -> tuple[list[str], int, set[str]]:
+        """(colours of the group's cubes, row length or 0, colours named without a count or article)."""
         text = m.group(key)
         im = self.items.fullmatch(text)
         if im is None:
-            return [], 0
+            return [], 0, set()
         if im.group("bn"):
-            return [self.canon(im.group("bc"))] * int(im.group("bn")), 0
+            return [self.canon(im.group("bc"))] * int(im.group("bn")), 0, set()
         if im.group("rn"):
-            return [self.canon(im.group("rc"))] * int(im.group("rn")), int(im.group("rn"))
-        out = []
+            return [self.canon(im.group("rc"))] * int(im.group("rn")), int(im.group("rn")), set()
+        out, definite = [], set()
         for g in self.group.finditer(im.group("list")):
             if g.group("q") is None and not re.search(rf"\b(?:more|additional|extra)\s+{g.group('c')}\b", g.group(0)):
-                self.definite.add(self.canon(g.group("c")))
+                definite.add(self.canon(g.group("c")))
             out += [self.canon(g.group("c"))] * _num(g.group("q"))
-        return out, 0
+        return out, 0, definite
+
+
+@lru_cache(maxsize=4)
+def _grammar(colors: str, canon) -> _Grammar:
+    return _Grammar(colors, canon)
 
 
 def _clauses(text: str, g: _Grammar) -> list[_Clause] | None:
@@ -127,12 +133,11 @@ def _clauses(text: str, g: _Grammar) -> list[_Clause] | None:
         for m in pat.finditer(text):
             if any(taken[m.start():m.end()]):
                 continue
-            g.definite = set()
-            items, row = g.colors_of(m, "items_top" if m.groupdict().get("items_top") else "items")
+            items, row, definite = g.colors_of(m, "items_top" if m.groupdict().get("items_top") else "items")
             if not items:
                 continue
             region = m.groupdict().get("region")
-            cl = _Clause(items, None, None, region=region.strip() if region else None, row=row, definite=set(g.definite),
+            cl = _Clause(items, None, None, region=region.strip() if region else None, row=row, definite=definite,
                          start=m.start(), fronted=kind == "fronted")
             if kind == "top":  # "then a red block", "add one red block on top": on the top of the tower
                 cl.rel, cl.ref = "above", "top"
@@ -165,8 +170,7 @@ def read(text: str, colors: str, canon) -> Plan | None:
         colors: regular-expression alternation of colour words.
         canon: maps a colour word to its palette name.
     """
-    g = _Grammar(colors, canon)
-    clauses = _clauses(text, g)
+    clauses = _clauses(text, _grammar(colors, canon))
     if not clauses:
         return None
     if any(cl.row or cl.ref_row for cl in clauses):  # rows on rows: a wall

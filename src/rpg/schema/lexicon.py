@@ -44,10 +44,6 @@ COMPASS_CORNERS: dict[str, str] = {"nw": "back_left", "ne": "back_right", "sw": 
 COMPASS_RELATIONS: dict[str, str] = {"north": "behind", "south": "in front of", "east": "right of", "west": "left of"}
 """'to the north of X' -> the relation words the parser reads."""
 
-TABLE_WORDS: frozenset[str] = frozenset({"table", "tabletop", "workspace", "surface"})
-"""Words that name the table itself ("in the middle of the table")."""
-
-
 @lru_cache(maxsize=4096)
 def lemmas(word: str) -> tuple[str, ...]:
     """Dictionary lemmas of ``word`` for any part of speech (empty if lemminflect does not
