@@ -190,3 +190,30 @@ def test_kill_9_during_a_batch_build_leaves_entries_whole(tmp_path, delay):
     for d in tmp_path.iterdir():
         if d.is_dir() and not d.name.startswith("."):
             assert rpg("validate", str(d)).returncode == 0
+
+
+def test_every_error_class_of_the_package_is_an_rpg_error_with_its_exit_code():
+    """The CLI maps errors to exit codes through ``RpgError.exit_code`` alone, so every
+    public error class the package defines must derive from it (rpg.errors)."""
+    import importlib
+    import inspect
+    import pkgutil
+
+    import rpg
+    from rpg.errors import EXIT_BAD_INPUT, EXIT_INVALID, EXIT_PROVIDER, RpgError
+    from rpg.schema.llm import ModelOutputError, ProviderError
+
+    found = {}
+    for mod in pkgutil.walk_packages(rpg.__path__, "rpg."):
+        if mod.name.startswith(("rpg.validate.worker", "rpg.library.ray")):
+            continue
+        module = importlib.import_module(mod.name)
+        for name, cls in inspect.getmembers(module, inspect.isclass):
+            if (cls.__module__ == mod.name and issubclass(cls, Exception) and not issubclass(cls, Warning)
+                    and not name.startswith("_")
+                    and name not in ("GateFailure", "SandboxViolation")):  # internal to the worker
+                found[name] = cls
+    assert {"ParseError", "SteerError", "ArtifactError", "UnaccountedMention", "ManifestError"} <= set(found)
+    assert [n for n, c in found.items() if not issubclass(c, RpgError)] == []
+    assert ParseError.exit_code == EXIT_BAD_INPUT and ProviderError.exit_code == EXIT_PROVIDER
+    assert ModelOutputError.exit_code == EXIT_INVALID

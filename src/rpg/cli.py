@@ -18,8 +18,7 @@ from rich.console import Console
 from rich.markup import escape as esc
 
 from rpg._version import __version__
-
-EXIT_OK, EXIT_INVALID, EXIT_BAD_INPUT, EXIT_PROVIDER = 0, 1, 2, 3
+from rpg.errors import EXIT_BAD_INPUT, EXIT_INVALID, EXIT_OK
 
 app = typer.Typer(
     add_completion=False,
@@ -51,33 +50,17 @@ def main_options(
     """rpg command line."""
 
 
-def _bad_input_errors():
-    from rpg.compiler import ArtifactError
-    from rpg.domain.glyphs import UnknownLabelError
-    from rpg.domain.palette import UnknownColorError
-    from rpg.domain.scene import SceneError
-    from rpg.schema.builtin import ParseError
-    from rpg.schema.feasibility import InfeasibleTask
-    from rpg.steer.edits import SteerError
-    from rpg.steer.family import FamilyError
-
-    return (ParseError, InfeasibleTask, UnknownColorError, UnknownLabelError, ArtifactError, SceneError,
-            SteerError, FamilyError, ValueError)
-
-
 @contextmanager
 def _reported_errors():
-    """Map the API's errors to one line and an exit code: provider 3, a model that gave no
-    valid answer 1, bad input (and bad replay records) 2."""
-    from rpg.schema.llm import ModelOutputError, ProviderError, ReplayError
+    """Map the API's errors to one line and an exit code: every :class:`rpg.errors.RpgError`
+    carries its own (see :mod:`rpg.errors`); any other ``ValueError`` is bad input (2)."""
+    from rpg.errors import RpgError
 
     try:
         yield
-    except ProviderError as exc:
-        _fail(str(exc), EXIT_PROVIDER)
-    except ModelOutputError as exc:
-        _fail(str(exc), EXIT_INVALID)
-    except (ReplayError, *_bad_input_errors()) as exc:
+    except RpgError as exc:
+        _fail(str(exc), exc.exit_code)
+    except ValueError as exc:
         _fail(str(exc))
 
 
@@ -179,10 +162,8 @@ def _family(path: Path):
     from rpg.steer.family import Family
 
     fam = Family(path)
-    try:
+    with _reported_errors():
         return fam, fam.load()
-    except _bad_input_errors() as exc:
-        _fail(str(exc))
 
 
 @app.command("log")
@@ -242,10 +223,8 @@ def show_cmd(
     """Resolve and print one version of a family."""
     path, _, ref = target.rpartition("@") if "@" in target else (target, "", "")
     fam, _ = _family(Path(path))
-    try:
+    with _reported_errors():
         v = fam.resolve(ref or None)
-    except _bad_input_errors() as exc:
-        _fail(str(exc))
     doc = {**v.model_dump(), "path": str(fam.version_dir(v.version_id))}
     if as_json:
         print(json.dumps(doc, indent=2))
@@ -271,21 +250,19 @@ def build_cmd(
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
     from rich.table import Table
 
-    from rpg.library import ManifestError, build_library, load_manifest
+    from rpg.library import build_library, load_manifest
 
     if backend not in ("local", "ray"):
         _fail("--backend must be 'local' or 'ray'")
     if jobs < 1:
         _fail("--jobs must be at least 1")
-    try:
+    with _reported_errors():
         total = len(load_manifest(manifest).entries)
         with Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
                       console=err, transient=True) as bar:
             task = bar.add_task("check" if check else "build", total=total)
             reports, seconds = build_library(manifest, jobs, backend, check, address, force=force,
                                              progress=lambda r: bar.update(task, advance=1, description=r["name"]))
-    except ManifestError as exc:
-        _fail(str(exc))
     changed = [r for r in reports if r["changed"]]
     failed = [r for r in reports if r["status"] != "valid"]
     table = Table(title=f"{'check' if check else 'build'} {manifest}")
@@ -314,10 +291,8 @@ def report_cmd(
     """Write a static HTML gallery: one card per task and family version."""
     from rpg.library.report import write_report
 
-    try:
+    with _reported_errors():
         page = write_report(library, output)
-    except ValueError as exc:
-        _fail(str(exc))
     out.print(f"wrote {page}")
 
 
@@ -333,12 +308,10 @@ def session_run_cmd(
     as_json: Annotated[bool, typer.Option("--json")] = False,
 ) -> None:
     """Run an instruction and its edits; exit 1 if any step fails or misses its expectations."""
-    from rpg.steer.session import SessionError, run_session
+    from rpg.steer.session import run_session
 
-    try:
+    with _reported_errors():
         fam, steps = run_session(session, output, seed)
-    except (SessionError, *_bad_input_errors()) as exc:
-        _fail(str(exc))
     ok = all(s.ok for s in steps)
     if as_json:
         print(json.dumps({"family": str(fam), "ok": ok, "steps": [s.to_json() for s in steps]}, indent=2))
@@ -365,10 +338,8 @@ def validate_cmd(
     _prestart_worker()
     from rpg.compiler import revalidate
 
-    try:
+    with _reported_errors():
         result = revalidate(directory, frozenset(disable))
-    except _bad_input_errors() as exc:
-        _fail(str(exc))
     if as_json:
         print(json.dumps(result.to_json(), indent=2))
     else:
@@ -385,21 +356,18 @@ def _prestart_worker() -> None:
 
 def _worker(req: dict) -> dict:
     from rpg.compiler import load_artifact
-    from rpg.validate.sandbox import WorkerError, run_worker
+    from rpg.validate.sandbox import run_worker
     from rpg.validate.static import StaticViolation, check_source
 
     d = Path(req["dir"])
-    try:
+    with _reported_errors():
         load_artifact(d)
         for fname in ("code.py", "goal_state_code.py"):
-            check_source((d / fname).read_text(), fname)
+            try:
+                check_source((d / fname).read_text(), fname)
+            except StaticViolation as exc:
+                _fail(f"task code rejected: {exc}", exc.exit_code)
         doc = run_worker({**req, "dir": str(d.resolve())})
-    except StaticViolation as exc:
-        _fail(f"task code rejected: {exc}", EXIT_INVALID)
-    except WorkerError as exc:
-        _fail(str(exc), EXIT_INVALID)
-    except _bad_input_errors() as exc:
-        _fail(str(exc))
     if not doc["ok"]:
         if "SceneError" in doc["error"] or "KeyError" in doc["error"]:
             _fail(doc["error"].split(": ", 1)[-1])

@@ -27,6 +27,7 @@ import yaml
 from rpg import yamlio
 from rpg._version import __version__
 from rpg.codegen import generate
+from rpg.errors import BadInput
 from rpg.repair import route
 from rpg.schema.builtin import parse
 from rpg.schema.feasibility import check_feasibility
@@ -43,7 +44,7 @@ MAX_ATTEMPTS_PER_OPERATOR = 3
 """Attempts per repair operator (paper, Iterative Repair)."""
 
 
-class ArtifactError(ValueError):
+class ArtifactError(BadInput):
     """A task artifact is missing, malformed or truncated."""
 
 

@@ -17,6 +17,7 @@ import numpy as np
 from PIL import Image, ImageDraw, ImageFont
 
 from rpg.domain.constants import GLYPH_TEXTURE_PX
+from rpg.errors import BadInput
 
 FACES: tuple[str, ...] = ("+x", "-x", "+y", "-y", "+z", "-z")
 """Local face names of a cube, in MuJoCo's cube-texture order."""
@@ -48,7 +49,7 @@ OPERATORS: tuple[str, ...] = ("+", "-", "=", "x")
 _DRAWN: dict[str, str] = {"x": "\u00d7", "-": "\u2212"}
 
 
-class UnknownLabelError(ValueError):
+class UnknownLabelError(BadInput):
     """Raised for a label that is not a letter A-Z, a digit 0-9 or an operator."""
 
 

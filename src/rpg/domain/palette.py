@@ -8,6 +8,8 @@ purple -> pink.
 
 from __future__ import annotations
 
+from rpg.errors import BadInput
+
 PALETTE: dict[str, tuple[float, float, float]] = {
     "red": (0.85, 0.10, 0.10),
     "orange": (0.95, 0.50, 0.05),
@@ -47,7 +49,7 @@ DEFAULT_SEMANTIC_COLOR: str = "white"
 """Body colour of a semantic (letter/number) cube; its glyphs are drawn in black."""
 
 
-class UnknownColorError(ValueError):
+class UnknownColorError(BadInput):
     """Raised when a colour is not in :data:`PALETTE`."""
 
 

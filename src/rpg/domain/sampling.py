@@ -14,9 +14,10 @@ import numpy as np
 from rpg.domain import constants as C
 from rpg.domain.assets import Asset
 from rpg.domain.state import Pose, yaw_quat
+from rpg.errors import BadInput
 
 
-class InfeasibleLayout(ValueError):
+class InfeasibleLayout(BadInput):
     """Raised when objects cannot be placed with the requested separation in the workspace."""
 
 

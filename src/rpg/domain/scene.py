@@ -16,9 +16,10 @@ import numpy as np
 from rpg.domain import constants as C
 from rpg.domain.assets import CUBE_GEOM_GROUP, Asset
 from rpg.domain.state import ObjectState, Pose, WorldState
+from rpg.errors import BadInput
 
 
-class SceneError(ValueError):
+class SceneError(BadInput):
     """Raised for an invalid scene or state (unknown object, non-finite pose, bad JSON)."""
 
 

@@ -20,6 +20,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from rpg.domain import predicates as P
+from rpg.errors import BadInput
 from rpg.schema.model import TaskSchema
 
 CUBE_NOUNS = r"(?:block|cube|box|piece|object|one)s?"
@@ -45,7 +46,7 @@ RELATION_WORDS: tuple[tuple[str, str], ...] = (
 """Relation words (normalised text) -> the goal predicates that can carry them (project)."""
 
 
-class UnaccountedMention(ValueError):
+class UnaccountedMention(BadInput):
     """A mention of the instruction has no place in the task that was read."""
 
 

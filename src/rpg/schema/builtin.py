@@ -54,13 +54,14 @@ from rpg.domain.predicates import (
     region_bounds,
 )
 from rpg.domain.state import Pose
+from rpg.errors import BadInput
 from rpg.schema import clauses, lexicon
 from rpg.schema.accounting import UnaccountedMention, account
 from rpg.schema.builder import DEFAULT_COLORS, DEFAULT_PATCH_COLOR, Builder
 from rpg.schema.model import RepairRecord, TaskSchema
 
 
-class ParseError(ValueError):
+class ParseError(BadInput):
     """The builtin front end cannot read the instruction; the message says which part."""
 
 

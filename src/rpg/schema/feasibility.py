@@ -13,11 +13,12 @@ import numpy as np
 from rpg.domain import constants as C
 from rpg.domain.sampling import InfeasibleLayout, sample_scattered
 from rpg.domain.state import Pose
+from rpg.errors import BadInput
 from rpg.repair.operators import layout_extent, move_into_workspace
 from rpg.schema.model import RepairRecord, TaskSchema
 
 
-class InfeasibleTask(ValueError):
+class InfeasibleTask(BadInput):
     """The task cannot be realised in the domain; the message says why and what would work."""
 
 

@@ -23,6 +23,7 @@ from pathlib import Path
 from pydantic import ValidationError
 
 from rpg._version import __version__
+from rpg.errors import BadInput, ProviderFailure, TaskInvalid
 from rpg.schema.model import TaskSchema
 
 MAX_SCHEMA_RETRIES = 3
@@ -34,18 +35,18 @@ REQUEST_TIMEOUT_S = 120.0
 LOG_FILE = "llm_log.jsonl"
 
 
-class ProviderError(RuntimeError):
+class ProviderError(ProviderFailure):
     """The model provider failed (network, authentication, rate limit, unknown model).
 
     Never a task failure: the CLI reports it with exit code 3.
     """
 
 
-class ModelOutputError(ValueError):
+class ModelOutputError(TaskInvalid, ValueError):
     """The model did not produce a valid TaskSchema within the retry budget."""
 
 
-class ReplayError(ValueError):
+class ReplayError(BadInput):
     """A replay record is missing, malformed or exhausted."""
 
 

@@ -21,6 +21,7 @@ import re
 from dataclasses import asdict, dataclass, field, replace
 
 from rpg.domain.palette import GRADIENT_ORDER
+from rpg.errors import BadInput
 from rpg.schema.builder import DEFAULT_COLORS
 from rpg.schema.builtin import COLOR_RE, NUMBER_WORDS, VOCAB, _canon_color, item_sequence
 from rpg.steer.spec import Item, TaskSpec
@@ -52,7 +53,7 @@ LETTERS = [chr(ord("A") + i) for i in range(26)]
 DIGITS = [str(d) for d in (1, 2, 3, 4, 5, 6, 7, 8, 9, 0)]
 
 
-class SteerError(ValueError):
+class SteerError(BadInput):
     """An edit that cannot be interpreted or applied; the message says why and what works."""
 
 

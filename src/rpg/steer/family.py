@@ -39,6 +39,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from rpg import yamlio
 from rpg.compiler import ArtifactError, atomic_replace, content_hash, load_artifact
+from rpg.errors import BadInput
 from rpg.schema.model import TaskSchema
 
 HISTORY_FILE = "family.yaml"
@@ -47,7 +48,7 @@ LOCK_TIMEOUT_S = 600.0
 """Longest wait for another process steering the same family, s."""
 
 
-class FamilyError(ValueError):
+class FamilyError(BadInput):
     """A family directory or its history is missing, corrupt or does not verify."""
 
 

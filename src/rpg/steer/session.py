@@ -25,12 +25,13 @@ import yaml
 
 from rpg import yamlio
 from rpg.compiler import compile_instruction
+from rpg.errors import BadInput
 from rpg.steer.edits import SteerError
 from rpg.steer.family import Family, create_family
 from rpg.steer.steering import steer
 
 
-class SessionError(ValueError):
+class SessionError(BadInput):
     """A malformed session file."""
 
 

@@ -18,6 +18,8 @@ import sys
 import tempfile
 import threading
 
+from rpg.errors import TaskInvalid
+
 WORKER_TIMEOUT_S = 120.0
 """Wall-clock limit for one worker run, s."""
 
@@ -40,7 +42,7 @@ no shader-cache thread, so the server stays single-threaded and can fork with a 
 OpenGL context (see :func:`rpg.domain.render.warm_shared_context`)."""
 
 
-class WorkerError(RuntimeError):
+class WorkerError(TaskInvalid, RuntimeError):
     """The worker crashed, timed out or wrote something that is not a result."""
 
 

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import ast
 
+from rpg.errors import TaskInvalid
+
 ALLOWED_IMPORTS = frozenset({"rpg.task_api", "numpy", "math"})
 FORBIDDEN_NAMES = frozenset({
     "exec", "eval", "compile", "open", "__import__", "getattr", "setattr", "delattr", "globals",
@@ -27,7 +29,7 @@ FORBIDDEN_ATTRIBUTES = frozenset({
 """Attribute names task code may not use: file I/O and escape hatches of numpy and friends."""
 
 
-class StaticViolation(ValueError):
+class StaticViolation(TaskInvalid, ValueError):
     """Task code failed the text gate; ``kind`` is ``syntax`` or ``api_usage``."""
 
     def __init__(self, message: str, kind: str = "api_usage", line: int | None = None):
