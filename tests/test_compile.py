@@ -11,7 +11,7 @@ import pytest
 import yaml
 
 from rpg.compiler import build, compile_instruction, load_artifact, revalidate
-from rpg.domain.predicates import And, On, Reads, from_dict
+from rpg.domain.predicates import And, On, Reads
 from rpg.schema.builtin import ParseError, parse
 from rpg.schema.feasibility import InfeasibleTask, check_feasibility
 from rpg.schema.model import export_json_schema
@@ -39,6 +39,23 @@ def rpg(*args, cwd=None):
 
 def test_json_schema_file_in_sync():
     assert (ROOT / "schemas" / "task.schema.json").read_text() == export_json_schema()
+
+
+def test_every_library_schema_validates_against_the_exported_json_schema():
+    """The JSON Schema a model is shown (goal tree included) accepts every committed task
+    and rejects a goal with an unknown argument, as pydantic does."""
+    import jsonschema
+    import yaml
+
+    doc = json.loads(export_json_schema())
+    tasks = sorted((ROOT / "library").rglob("task.yaml"))
+    assert len(tasks) >= 40
+    for t in tasks:
+        jsonschema.validate(yaml.safe_load(t.read_text())["schema"], doc)
+    schema = yaml.safe_load(tasks[0].read_text())["schema"]
+    schema["goal"] = {"predicate": "on", "a": "x", "b": "y", "height": 3}
+    with pytest.raises(jsonschema.ValidationError):
+        jsonschema.validate(schema, doc)
 
 
 @pytest.mark.slow
@@ -117,7 +134,7 @@ def test_visibility_gate_catches_occluded_label_and_repair_switches_face(tmp_pat
     schema = parse("Spell the word 'CAT' with cubes stacked in a tower")
     goal = schema.goal_predicate()
     broken = And([c if not isinstance(c, Reads) else Reads(c.objects, c.text, c.direction, "up") for c in goal.children()])
-    bad = schema.model_copy(update={"goal": broken.to_dict()})
+    bad = schema.model_copy(update={"goal": broken})
     result = build(bad, tmp_path, disabled=frozenset())
     assert result.valid, result.log
     assert "SWITCH_READABLE_FACE" in [r.operator for r in result.schema.repairs]
@@ -133,15 +150,15 @@ def test_repair_moves_layout_into_workspace_and_breaks_cycles(tmp_path):
     result = build(schema.model_copy(update={"goal_layout": {n: type(schema.goal_layout[n])(**v) for n, v in shifted.items()}}), tmp_path)
     assert result.valid and result.schema.repairs[-1].operator == "MOVE_INTO_WORKSPACE", result.log
     tower = parse("Place a blue cube on top of a red cube")
-    cyclic = And([from_dict(tower.goal), On("red", "blue")])
-    result = build(tower.model_copy(update={"goal": cyclic.to_dict()}), tmp_path / "c")
+    cyclic = And([tower.goal, On("red", "blue")])
+    result = build(tower.model_copy(update={"goal": cyclic}), tmp_path / "c")
     assert result.valid and result.schema.repairs[-1].operator == "REORDER_SUPPORT_CHAIN", result.log
 
 
 def test_unrepairable_task_is_rejected_with_logs(tmp_path):
     schema = parse("Stack the red block on top of the yellow block")
-    goal = And([from_dict(schema.goal), On("yellow", "red")])
-    bad = schema.model_copy(update={"goal": goal.to_dict(), "name": "impossible"})
+    goal = And([schema.goal, On("yellow", "red")])
+    bad = schema.model_copy(update={"goal": goal, "name": "impossible"})
     result = build(bad, tmp_path, disabled=frozenset({"constraint"}))
     assert not result.valid
     assert result.path == tmp_path / ".rejected" / "impossible"
@@ -388,12 +405,12 @@ def test_feasibility_switches_face_or_to_spatial_only_when_labels_are_covered():
 
     cube = parse("Make a 2x2x2 cube of letter blocks")
     names = tuple(a.name for a in cube.assets)
-    hidden = cube.model_copy(update={"goal": And([Grid(names, 2, 2, 2), Reads(names, "ABCDEFGH")]).to_dict()})
+    hidden = cube.model_copy(update={"goal": And([Grid(names, 2, 2, 2), Reads(names, "ABCDEFGH")])})
     s = check_feasibility(hidden)
     assert [r.operator for r in s.repairs] == ["SWITCH_TO_SPATIAL_ONLY"]
     assert s.goal_predicate().describe() == "2x2x2 grid of 8 cubes" and s.reasoning == "spatial"
     tower = parse("Spell the word 'CAT' with cubes stacked in a tower")
     up = And([c if not isinstance(c, Reads) else Reads(c.objects, c.text, c.direction, "up") for c in tower.goal_predicate().children()])
-    s = check_feasibility(tower.model_copy(update={"goal": up.to_dict()}))
+    s = check_feasibility(tower.model_copy(update={"goal": up}))
     assert [r.operator for r in s.repairs] == ["SWITCH_READABLE_FACE"]
     assert next(c for c in s.goal_predicate().children() if isinstance(c, Reads)).face == "front"

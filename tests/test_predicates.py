@@ -295,3 +295,26 @@ def test_swap_search_is_skipped_only_when_no_swap_can_matter():
     assert not _swaps_matter(ring, [["r1", "r2", "r3"]])
     assert _swaps_matter(And([Stack(("r1", "r3")), Stack(("r2", "r4"))]), [["r1", "r2", "r3", "r4"]])
     assert _swaps_matter(And([ring, OnTable("r1")]), [["r1", "r2", "r3"]])
+
+
+def test_goal_is_a_typed_predicate_tree_in_the_schema():
+    """TaskSchema.goal is a Predicate in Python and its to_dict form on disk; conjuncts()
+    flattens nested conjunctions; a bad tree is a validation error naming the argument."""
+    import pydantic
+
+    from rpg.domain.predicates import And, On, Stack
+    from rpg.schema.builtin import parse
+    from rpg.schema.model import TaskSchema
+
+    schema = parse("stack the red block on the blue block, and put the green block left of the blue block")
+    assert isinstance(schema.goal, And)
+    doc = schema.model_dump()
+    assert doc["goal"]["predicate"] == "and" and isinstance(doc["goal"]["children"], list)
+    again = TaskSchema.model_validate_json(schema.model_dump_json())
+    assert again.goal == schema.goal and again == schema
+    nested = And([On("a", "b"), And([Stack(("b", "c")), On("d", "e")])])
+    assert [p.name for p in nested.conjuncts()] == ["on", "stack", "on"]
+    assert On("a", "b").conjuncts() == [On("a", "b")]
+    doc["goal"] = {"predicate": "on", "a": doc["assets"][0]["name"], "b": doc["assets"][1]["name"], "height": 2}
+    with pytest.raises(pydantic.ValidationError, match="no argument 'height'"):
+        TaskSchema.model_validate(doc)

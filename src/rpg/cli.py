@@ -355,7 +355,7 @@ def _prestart_worker() -> None:
 
 
 def _worker(req: dict) -> dict:
-    from rpg.compiler import load_artifact
+    from rpg.artifact import load_artifact
     from rpg.validate.sandbox import run_worker
     from rpg.validate.static import StaticViolation, check_source
 
@@ -426,7 +426,7 @@ def render_cmd(
     seed: Annotated[int, typer.Option("--seed")] = 0,
 ) -> None:
     """Re-render initial.png and goal.png."""
-    from rpg.compiler import save_snapshots
+    from rpg.artifact import save_snapshots
 
     res = _worker({"op": "render", "dir": str(directory), "seed": seed})
     for k, v in save_snapshots(directory, res.get("snapshots") or {}).items():

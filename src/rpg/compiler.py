@@ -13,21 +13,26 @@ or not at all: it is written to a temporary directory and renamed into place.
 
 from __future__ import annotations
 
-import hashlib
-import json
-import os
 import shutil
-import tempfile
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-import yaml
-
-from rpg import yamlio
 from rpg._version import __version__
+from rpg.artifact import (
+    LIBRARY_LOCK,  # noqa: F401 - part of the compiler's API
+    ArtifactError,  # noqa: F401
+    atomic_replace,
+    content_hash,  # noqa: F401
+    gates_passed,
+    load_artifact,
+    save_snapshots,
+    staging_dir,
+    task_document,  # noqa: F401
+    write_artifact_files,
+    write_logs,
+)
 from rpg.codegen import generate
-from rpg.errors import BadInput
 from rpg.repair import route
 from rpg.schema.builtin import parse
 from rpg.schema.feasibility import check_feasibility
@@ -42,10 +47,6 @@ MAX_CYCLES = 5
 
 MAX_ATTEMPTS_PER_OPERATOR = 3
 """Attempts per repair operator (paper, Iterative Repair)."""
-
-
-class ArtifactError(BadInput):
-    """A task artifact is missing, malformed or truncated."""
 
 
 @dataclass
@@ -100,26 +101,6 @@ def validate_files(directory: Path, seed: int = 0, disabled: frozenset[str] = fr
     return results + result["gates"]
 
 
-def save_snapshots(directory: Path, images: dict) -> dict[str, Path | None]:
-    """Write the worker's base64 PNGs as ``directory/<key>.png``; key -> path (None if not rendered)."""
-    import base64
-
-    out: dict[str, Path | None] = {}
-    for key in ("initial", "goal"):
-        data = images.get(key)
-        out[key] = None
-        if isinstance(data, str):
-            path = Path(directory) / f"{key}.png"
-            path.write_bytes(base64.b64decode(data, validate=True))
-            out[key] = path
-    return out
-
-
-def gates_passed(gates: list[dict]) -> bool:
-    ran = {g["gate"]: g["status"] for g in gates}
-    return all(ran.get(name) in ("pass", "skipped") for name in GATES)
-
-
 def first_failure(gates: list[dict]) -> dict | None:
     return next((g for g in gates if g["status"] == "fail"), None)
 
@@ -127,79 +108,6 @@ def first_failure(gates: list[dict]) -> dict | None:
 def _log_line(g: dict) -> str:
     msg = f" - {g['message']}" if g.get("message") else ""
     return f"gate {g['gate']:<11} {g['status'].upper():<7} {g.get('duration_s', 0.0) * 1000:7.1f} ms{msg}"
-
-
-def content_hash(task_doc: dict, code: str, goal_code: str) -> str:
-    """SHA-256 over the canonical task.yaml fields (no hash, no timings) and the two code files."""
-    doc = {k: v for k, v in task_doc.items() if k != "content_hash"}
-    h = hashlib.sha256()
-    h.update(json.dumps(doc, sort_keys=True, separators=(",", ":")).encode())
-    h.update(b"\0" + code.encode() + b"\0" + goal_code.encode())
-    return h.hexdigest()
-
-
-def task_document(schema: TaskSchema, seed: int, backend: str, model: str | None, gates: list[dict]) -> dict:
-    doc = {
-        "schema": json.loads(schema.model_dump_json()),
-        "tags": schema.tags(),
-        "provenance": {
-            "instruction": schema.instruction,
-            "compiler_version": __version__,
-            "backend": backend,
-            "model": model,
-            "seed": seed,
-            "repairs": [r.model_dump() for r in schema.repairs],
-            "gates": {g["gate"]: g["status"] for g in gates},
-        },
-    }
-    return doc
-
-
-def write_artifact_files(directory: Path, schema: TaskSchema, seed: int, backend: str, model: str | None,
-                         gates: list[dict], log: list[str]) -> str:
-    """Write task.yaml, validation.log and validation.json beside the code; return the content hash."""
-    code = (directory / "code.py").read_text()
-    goal_code = (directory / "goal_state_code.py").read_text()
-    doc = task_document(schema, seed, backend, model, gates)
-    digest = content_hash(doc, code, goal_code)
-    doc["content_hash"] = digest
-    (directory / "task.yaml").write_text(yaml.safe_dump(doc, sort_keys=False, allow_unicode=True, width=100))
-    write_logs(directory, log, gates)
-    return digest
-
-
-def write_logs(directory: Path, log: list[str], gates: list[dict]) -> None:
-    """``validation.log`` (one line per gate and repair attempt) and ``validation.json``."""
-    (directory / "validation.log").write_text("\n".join(log) + "\n")
-    (directory / "validation.json").write_text(json.dumps(
-        {"created": time.strftime("%Y-%m-%dT%H:%M:%S%z"), "valid": gates_passed(gates), "log": log, "gates": gates},
-        indent=2, default=str) + "\n")
-
-
-def _umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
-
-
-LIBRARY_LOCK = ".rpg.lock"
-"""Lock file in a library directory: serializes the renames that publish task directories."""
-
-
-def atomic_replace(tmp: Path, target: Path) -> None:
-    """Publish ``tmp`` as ``target`` by rename (the old ``target``, if any, goes to the
-    trash first), under the directory's file lock so concurrent writers never interleave."""
-    from filelock import FileLock
-
-    target.parent.mkdir(parents=True, exist_ok=True)
-    with FileLock(str(target.parent / LIBRARY_LOCK), timeout=600):
-        if target.exists():
-            trash = target.parent / f".trash-{target.name}-{os.getpid()}"
-            os.rename(target, trash)
-            os.rename(tmp, target)
-            shutil.rmtree(trash, ignore_errors=True)
-        else:
-            os.rename(tmp, target)
 
 
 def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[str] = frozenset(),
@@ -217,8 +125,7 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
     log: list[str] = [f"rpg {__version__} compile {schema.name!r} (backend {backend}, seed {seed})"]
     log += [f"feasibility repair {r.operator}: {r.reason}" for r in schema.repairs if r.stage == "feasibility"]
     attempts: dict[str, int] = {}
-    tmp = Path(tempfile.mkdtemp(prefix=f".tmp-{schema.name[:40]}-", dir=out_dir))
-    os.chmod(tmp, 0o777 & ~_umask())
+    tmp = staging_dir(out_dir, schema.name)
     gates: list[dict] = []
     try:
         failure = None
@@ -350,24 +257,6 @@ def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int
 
     return build(schema, Path(out_dir), seed, frozenset(disabled), backend=backend,
                  model=llm.model if llm is not None else None, name=name, extra_files=extra, coder=coder)
-
-
-def load_artifact(directory: str | Path) -> tuple[TaskSchema, dict]:
-    """Read an artifact's schema and provenance.
-
-    Raises:
-        ArtifactError: missing files, malformed YAML or an invalid schema.
-    """
-    d = Path(directory)
-    for fname in ("task.yaml", "code.py", "goal_state_code.py"):
-        if not (d / fname).is_file():
-            raise ArtifactError(f"{d} is not a task artifact: {fname} is missing")
-    try:
-        doc = yamlio.load((d / "task.yaml").read_text())
-        schema = TaskSchema.model_validate(doc["schema"])
-    except Exception as exc:  # noqa: BLE001 - any parse problem means a malformed artifact
-        raise ArtifactError(f"{d / 'task.yaml'} is malformed: {str(exc).splitlines()[0][:200]}") from None
-    return schema, doc
 
 
 def revalidate(directory: str | Path, disabled: frozenset[str] = frozenset()) -> CompileResult:

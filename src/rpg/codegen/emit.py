@@ -47,21 +47,14 @@ def _goal_lines(goal: Predicate) -> list[str]:
 
 
 def _describe_goal(goal: Predicate) -> list[str]:
-    from rpg.domain.predicates import And
-
-    parts = goal.children() if isinstance(goal, And) else [goal]
-    return [f"- {p.describe()}" for p in parts]
+    return [f"- {p.describe()}" for p in goal.conjuncts()]
 
 
 def _imports(schema: TaskSchema, goal: Predicate) -> list[str]:
     names = {"BlockTask", "sample_scattered"}
     names |= {{"colored_cube": "ColoredCube", "semantic_cube": "SemanticCube", "goal_patch": "GoalPatch"}[a.kind]
               for a in schema.assets}
-    stack = [goal]
-    while stack:
-        p = stack.pop()
-        names.add(type(p).__name__)
-        stack.extend(p.children())
+    names |= {type(p).__name__ for p in goal.walk()}
     if schema.initial_state.fixed or schema.initial_state.orientations:
         names.add("Pose")
     if schema.initial_state.orientations:
@@ -72,16 +65,12 @@ def _imports(schema: TaskSchema, goal: Predicate) -> list[str]:
 def _goal_regions(goal: Predicate) -> dict[str, str]:
     """Object -> region for each ``InRegion`` the goal asserts (not under ``Not``): rho_0
     keeps those objects out of their regions, or G could hold at reset by chance."""
-    from rpg.domain.predicates import And, InRegion
+    from rpg.domain.predicates import InRegion
 
     out: dict[str, str] = {}
-    stack = [goal]
-    while stack:
-        p = stack.pop()
+    for p in reversed(goal.conjuncts()):
         if isinstance(p, InRegion):
             out.setdefault(p.a, p.region)
-        elif isinstance(p, And):
-            stack.extend(p.children())
     return dict(sorted(out.items()))
 
 

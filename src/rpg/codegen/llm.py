@@ -82,7 +82,7 @@ def _tags_score(want: dict, have: dict) -> tuple:
 def retrieve_references(schema: TaskSchema, library: str | Path | None, k: int = REFERENCES_PER_PROMPT) -> list[dict]:
     """The ``k`` library tasks closest to the schema by asset class, reasoning type,
     complexity and action primitives (ties by name); each ``{"name", "tags", "code", "goal_state_code"}``."""
-    from rpg.compiler import ArtifactError, load_artifact
+    from rpg.artifact import ArtifactError, load_artifact
 
     if library is None or not Path(library).is_dir():
         return []

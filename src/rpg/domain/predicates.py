@@ -184,6 +184,10 @@ class Predicate:
         for child in self.children():
             yield from child.walk()
 
+    def conjuncts(self) -> list[Predicate]:
+        """The parts that must all hold: an ``and`` flattened (nested ``and`` too), else ``[self]``."""
+        return [self]
+
     def support_edges(self) -> list[tuple[str, str]]:
         """(upper, lower) support relations this predicate asserts; ``"table"`` is ground."""
         return [e for c in self.children() for e in c.support_edges()]
@@ -1185,6 +1189,9 @@ class And(Predicate):
 
     def children(self):
         return list(self.children_)
+
+    def conjuncts(self):
+        return [c for child in self.children_ for c in child.conjuncts()]
 
     def args(self):
         return {}

@@ -83,13 +83,7 @@ class BlockTask:
         return self.scene.world_state(vis)
 
     def _needs_visibility(self) -> bool:
-        stack = [self._goal]
-        while stack:
-            p = stack.pop()
-            if p.semantic:
-                return True
-            stack.extend(p.children())
-        return False
+        return any(p.semantic for p in self._goal.walk())
 
     def evaluate(self) -> PredicateResult:
         """Evaluate G on the current state, with per-predicate diagnostics."""

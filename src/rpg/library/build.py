@@ -101,7 +101,8 @@ def save_manifest(path: str | Path, manifest: Manifest, header: str = "") -> Non
 
 def build_entry(entry: dict, out_dir: str, base_dir: str) -> dict:
     """Build one entry into ``out_dir``; a JSON-ready report (never raises)."""
-    from rpg.compiler import compile_instruction, load_artifact
+    from rpg.artifact import load_artifact
+    from rpg.compiler import compile_instruction
 
     e = Entry.model_validate(entry)
     t0 = time.perf_counter()
@@ -254,7 +255,7 @@ def build_library(manifest_path: str | Path, jobs: int = 1, backend: Literal["lo
 def _publish(report: dict, tmp: Path, base: Path, force: bool) -> None:
     """Move one built entry from ``tmp`` into the library ``base`` unless the library holds
     it unchanged; sets ``report["written"]`` and points ``report["path"]`` at the library."""
-    from rpg.compiler import atomic_replace
+    from rpg.artifact import atomic_replace
 
     report["written"] = False
     if not report.get("path"):
@@ -271,7 +272,7 @@ def _publish(report: dict, tmp: Path, base: Path, force: bool) -> None:
 def _recorded_hash(path: Path) -> str | None:
     """The hash of the task artifact or family at ``path``, recomputed from its files; None
     when there is none or its files no longer match their recorded hashes."""
-    from rpg.compiler import ArtifactError, content_hash, load_artifact
+    from rpg.artifact import ArtifactError, content_hash, load_artifact
     from rpg.steer.family import Family, is_family
 
     try:

@@ -14,7 +14,7 @@ from pathlib import Path
 import jinja2
 
 from rpg import yamlio
-from rpg.compiler import ArtifactError, load_artifact
+from rpg.artifact import ArtifactError, load_artifact
 
 PAGE = jinja2.Template("""<!doctype html>
 <html lang="en"><head><meta charset="utf-8"><title>{{ title }}</title>

@@ -11,62 +11,19 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-import numpy as np
-
 from rpg.domain import constants as C
 from rpg.domain.predicates import And, Predicate, Stack, from_dict
-from rpg.schema.model import PoseSpec, RepairRecord, TaskSchema
+from rpg.schema.edits import add_repair, move_into_workspace, with_changes
+from rpg.schema.model import TaskSchema
+
+__all__ = ["OPERATORS", "move_into_workspace", "route"]
 
 Operator = Callable[[TaskSchema, dict], TaskSchema | None]
 
 
-def _with(schema: TaskSchema, **changes) -> TaskSchema:
-    doc = schema.model_dump()
-    doc.update(changes)
-    return TaskSchema.model_validate(doc)
-
-
-def _record(schema: TaskSchema, op: str, reason: str, stage: str = "validation") -> list[dict]:
-    return [r.model_dump() for r in schema.repairs] + [RepairRecord(operator=op, stage=stage, reason=reason).model_dump()]
-
-
 def regenerate_code(schema: TaskSchema, failure: dict) -> TaskSchema | None:
     """Syntax / API / runtime failures in hand-edited or model code: re-emit from the schema."""
-    return _with(schema, repairs=_record(schema, "REGENERATE_CODE", failure.get("message", "")[:200]))
-
-
-def layout_extent(schema: TaskSchema) -> tuple[np.ndarray, np.ndarray]:
-    """Min and max corners (x, y) of the goal layout's footprints, m."""
-    pts = []
-    for a in schema.assets:
-        p = np.asarray(schema.goal_layout[a.name].position[:2])
-        half = np.array([a.size / 2, a.size / 2]) if a.kind != "goal_patch" else np.array(a.build().extents[:2]) / 2
-        pts += [p - half, p + half]
-    pts = np.array(pts)
-    return pts.min(axis=0), pts.max(axis=0)
-
-
-def move_into_workspace(schema: TaskSchema, failure: dict | None = None, stage: str = "validation") -> TaskSchema | None:
-    """Translate the whole goal layout so its footprint lies inside the workspace.
-
-    Returns None if the layout is wider than the workspace (nothing to translate into).
-    """
-    lo, hi = layout_extent(schema)
-    ws_lo = np.array([C.WORKSPACE_X[0], C.WORKSPACE_Y[0]])
-    ws_hi = np.array([C.WORKSPACE_X[1], C.WORKSPACE_Y[1]])
-    if np.any(hi - lo > ws_hi - ws_lo):
-        return None
-    shift = np.maximum(ws_lo - lo, 0) - np.maximum(hi - ws_hi, 0)
-    if np.allclose(shift, 0):
-        return None
-    layout = {}
-    for n, p in schema.goal_layout.items():
-        x, y, z = p.position
-        layout[n] = PoseSpec(position=(round(x + shift[0], 6), round(y + shift[1], 6), z), quaternion=p.quaternion)
-    fixed = {n: layout[n] for n in schema.initial_state.fixed}
-    init = schema.initial_state.model_copy(update={"fixed": fixed})
-    return _with(schema, goal_layout={n: v.model_dump() for n, v in layout.items()}, initial_state=init.model_dump(),
-                 repairs=_record(schema, "MOVE_INTO_WORKSPACE", f"shifted the goal layout by {np.round(shift, 3).tolist()} m", stage))
+    return with_changes(schema, repairs=add_repair(schema, "REGENERATE_CODE", failure.get("message", "")[:200]))
 
 
 def restack_layout(schema: TaskSchema, failure: dict) -> TaskSchema | None:
@@ -75,10 +32,7 @@ def restack_layout(schema: TaskSchema, failure: dict) -> TaskSchema | None:
     goal = schema.goal_predicate()
     layout = {n: p.model_dump() for n, p in schema.goal_layout.items()}
     changed = False
-    stack = [goal]
-    while stack:
-        p = stack.pop()
-        stack.extend(p.children())
+    for p in goal.walk():
         if isinstance(p, Stack):
             base = schema.goal_layout[p.objects[0]].position
             for level, n in enumerate(p.objects):
@@ -89,13 +43,13 @@ def restack_layout(schema: TaskSchema, failure: dict) -> TaskSchema | None:
                     changed = True
     if not changed:
         return None
-    return _with(schema, goal_layout=layout, repairs=_record(schema, "RESTACK_SUPPORT_CHAIN", failure.get("message", "")[:200]))
+    return with_changes(schema, goal_layout=layout, repairs=add_repair(schema, "RESTACK_SUPPORT_CHAIN", failure.get("message", "")[:200]))
 
 
 def reorder_support_chain(schema: TaskSchema, failure: dict) -> TaskSchema | None:
     """Cyclic or ungrounded support: drop the support predicates that close a cycle."""
     goal = schema.goal_predicate()
-    children = goal.children() if isinstance(goal, And) else [goal]
+    children = goal.conjuncts()
     import networkx as nx
 
     g = nx.DiGraph()
@@ -113,8 +67,8 @@ def reorder_support_chain(schema: TaskSchema, failure: dict) -> TaskSchema | Non
     if not dropped:
         return None
     new_goal = kept[0] if len(kept) == 1 else And(kept)
-    return _with(schema, goal=new_goal.to_dict(),
-                 repairs=_record(schema, "REORDER_SUPPORT_CHAIN", f"removed conflicting relation(s): {'; '.join(dropped)}"))
+    return with_changes(schema, goal=new_goal,
+                 repairs=add_repair(schema, "REORDER_SUPPORT_CHAIN", f"removed conflicting relation(s): {'; '.join(dropped)}"))
 
 
 def switch_readable_face(schema: TaskSchema, failure: dict) -> TaskSchema | None:
@@ -132,7 +86,7 @@ def switch_readable_face(schema: TaskSchema, failure: dict) -> TaskSchema | None
     new = swap(goal)
     if new == goal:
         return None
-    return _with(schema, goal=new.to_dict(), repairs=_record(schema, "SWITCH_READABLE_FACE", failure.get("message", "")[:200]))
+    return with_changes(schema, goal=new, repairs=add_repair(schema, "SWITCH_READABLE_FACE", failure.get("message", "")[:200]))
 
 
 def widen_separation(schema: TaskSchema, failure: dict) -> TaskSchema | None:
@@ -141,8 +95,8 @@ def widen_separation(schema: TaskSchema, failure: dict) -> TaskSchema | None:
     if init.min_separation >= 0.12:
         return None
     new = init.model_copy(update={"min_separation": round(init.min_separation + 0.02, 3)})
-    return _with(schema, initial_state=new.model_dump(),
-                 repairs=_record(schema, "WIDEN_INITIAL_SEPARATION", failure.get("message", "")[:200]))
+    return with_changes(schema, initial_state=new.model_dump(),
+                 repairs=add_repair(schema, "WIDEN_INITIAL_SEPARATION", failure.get("message", "")[:200]))
 
 
 OPERATORS: dict[str, tuple[Operator, ...]] = {

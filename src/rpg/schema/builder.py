@@ -111,7 +111,7 @@ class Builder:
                 fixed={n: PoseSpec.of(self.layout[n]) for n in sorted(patches)},
                 orientations=self.orientations,
             ),
-            goal=goal.to_dict(),
+            goal=goal,
             goal_layout={n: PoseSpec.of(self.layout[n]) for n in sorted(self.layout)},
             goal_summary=summary,
             reasoning=self.reasoning,

@@ -14,7 +14,7 @@ from rpg.domain import constants as C
 from rpg.domain.sampling import InfeasibleLayout, sample_scattered
 from rpg.domain.state import Pose
 from rpg.errors import BadInput
-from rpg.repair.operators import layout_extent, move_into_workspace
+from rpg.schema.edits import add_repair, layout_extent, move_into_workspace, with_changes
 from rpg.schema.model import RepairRecord, TaskSchema
 
 
@@ -57,11 +57,9 @@ def check_feasibility(schema: TaskSchema) -> TaskSchema:
         except InfeasibleLayout:
             continue
         if sep != schema.initial_state.min_separation:
-            from rpg.repair.operators import _record, _with
-
             init = schema.initial_state.model_copy(update={"min_separation": sep})
-            schema = _with(schema, initial_state=init.model_dump(),
-                           repairs=_record(schema, "REDUCE_INITIAL_SEPARATION",
+            schema = with_changes(schema, initial_state=init.model_dump(),
+                           repairs=add_repair(schema, "REDUCE_INITIAL_SEPARATION",
                                            f"{len(assets)} objects need a separation of {sep:.3f} m to fit", "feasibility"))
         return schema
     raise InfeasibleTask(f"{len(cubes)} cubes cannot be scattered in the workspace at reset; use fewer cubes")
@@ -97,10 +95,9 @@ def _readable_labels(schema: TaskSchema) -> TaskSchema:
     """Label requirements on covered faces: read the other face, or, when neither face can be
     read, drop the semantic requirement and keep the structure (SWITCH_TO_SPATIAL_ONLY)."""
     from rpg.domain.predicates import And, from_dict
-    from rpg.repair.operators import _with
 
     goal = schema.goal_predicate()
-    parts = list(goal.children()) if isinstance(goal, And) else [goal]
+    parts = goal.conjuncts()
     faces = uncovered_faces(schema)
 
     def readable(p, face: str) -> bool:
@@ -129,4 +126,4 @@ def _readable_labels(schema: TaskSchema) -> TaskSchema:
     records = [r.model_dump() for r in schema.repairs]
     records += [RepairRecord(operator=op, stage="feasibility", reason=reason).model_dump() for op, reason in repairs]
     reasoning = "semantic" if any(p.semantic for p in kept) else "spatial"
-    return _with(schema, goal=new_goal.to_dict(), reasoning=reasoning, repairs=records)
+    return with_changes(schema, goal=new_goal, reasoning=reasoning, repairs=records)

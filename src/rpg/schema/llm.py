@@ -24,7 +24,7 @@ from pydantic import ValidationError
 
 from rpg._version import __version__
 from rpg.errors import BadInput, ProviderFailure, TaskInvalid
-from rpg.schema.model import TaskSchema
+from rpg.schema.model import TaskSchema, json_schema
 
 MAX_SCHEMA_RETRIES = 3
 """Extra tries after the model's first answer fails validation."""
@@ -165,7 +165,7 @@ def system_prompt() -> str:
 
     catalog = _predicate_catalog()
     example = _example()
-    schema = json.dumps(TaskSchema.model_json_schema(), sort_keys=True)
+    schema = json.dumps(json_schema(), sort_keys=True)
     z0 = C.TABLE_TOP_Z + C.CUBE_EDGE / 2
     return textwrap.dedent(f"""\
         You turn a robot-manipulation instruction into a TaskSchema for rpg, a MuJoCo block domain.

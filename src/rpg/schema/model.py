@@ -9,14 +9,64 @@ realises G.
 from __future__ import annotations
 
 import json
-from typing import Any, Literal
+from dataclasses import MISSING, fields
+from typing import Annotated, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    Field,
+    PlainSerializer,
+    PlainValidator,
+    WithJsonSchema,
+    field_validator,
+    model_validator,
+)
 
 from rpg.domain import constants as C
 from rpg.domain.assets import ColoredCube, GoalPatch, SemanticCube
-from rpg.domain.predicates import Predicate, from_dict
+from rpg.domain.predicates import PREDICATES, And, Predicate, from_dict
 from rpg.domain.state import Pose
+
+_JSON_TYPES = {"str": {"type": "string"}, "int": {"type": "integer"}, "float": {"type": "number"},
+               "bool": {"type": "boolean"}, "str | None": {"type": ["string", "null"]},
+               "tuple[str, ...]": {"type": "array", "items": {"type": "string"}},
+               "tuple[tuple[str, ...], ...]": {"type": "array", "items": {"type": "array", "items": {"type": "string"}}},
+               "Predicate": {"$ref": "#/$defs/Goal"},
+               "tuple[Predicate, ...]": {"type": "array", "items": {"$ref": "#/$defs/Goal"}}}
+
+
+def goal_json_schema() -> dict:
+    """JSON Schema of a goal predicate tree: one alternative per registered predicate, with
+    its argument names and types (from the predicate dataclasses, so it cannot drift)."""
+    alternatives = []
+    for name, cls in sorted(PREDICATES.items()):
+        props: dict = {"predicate": {"const": name}}
+        required = ["predicate"]
+        for f in fields(cls):
+            key = "children" if cls is And else f.name
+            props[key] = dict(_JSON_TYPES.get(str(f.type), {}))
+            if f.default is MISSING and f.default_factory is MISSING or cls is And:
+                required.append(key)
+        alternatives.append({"type": "object", "title": name, "description": (cls.__doc__ or "").split("\n")[0],
+                             "properties": props, "required": required, "additionalProperties": False})
+    return {"oneOf": alternatives}
+
+
+def _goal(value) -> Predicate:
+    if isinstance(value, Predicate):
+        return value
+    return from_dict(value)  # ValueError names the unknown predicate or argument
+
+
+GoalTree = Annotated[
+    Predicate,
+    PlainValidator(_goal),
+    PlainSerializer(lambda p: p.to_dict(), return_type=dict),
+    WithJsonSchema({"type": "object"}),  # json_schema() points it at $defs/Goal
+]
+"""A goal predicate tree: a :class:`rpg.domain.predicates.Predicate` in Python, its
+``to_dict`` form (``{"predicate": name, ...arguments}``) in YAML and JSON."""
 
 
 class _Model(BaseModel):
@@ -98,7 +148,7 @@ class TaskSchema(_Model):
     paraphrases: list[str] = Field(min_length=3)
     assets: list[AssetSpec] = Field(min_length=1)
     initial_state: InitialStateSpec = Field(default_factory=InitialStateSpec)
-    goal: dict[str, Any] = Field(description="Predicate tree (see rpg.domain.predicates.from_dict).")
+    goal: GoalTree = Field(description="Success predicate G as a predicate tree (rpg.domain.predicates).")
     goal_layout: dict[str, PoseSpec] = Field(description="Concrete poses that satisfy the goal.")
     goal_summary: str = Field("", description="Natural-language summary of the success condition.")
     reasoning: Literal["spatial", "semantic"] = "spatial"
@@ -118,8 +168,7 @@ class TaskSchema(_Model):
         names = [a.name for a in self.assets]
         if len(set(names)) != len(names):
             raise ValueError("asset names must be unique")
-        goal = self.goal_predicate()
-        unknown = sorted(set(goal.object_names()) - set(names))
+        unknown = sorted(set(self.goal.object_names()) - set(names))
         if unknown:
             raise ValueError(f"goal names unknown objects {unknown}; assets are {names}")
         missing = sorted(set(names) - set(self.goal_layout))
@@ -130,7 +179,8 @@ class TaskSchema(_Model):
         return self
 
     def goal_predicate(self) -> Predicate:
-        return from_dict(self.goal)
+        """The success predicate G (the same object as :attr:`goal`)."""
+        return self.goal
 
     def built_assets(self):
         return [a.build() for a in self.assets]
@@ -139,15 +189,10 @@ class TaskSchema(_Model):
         """Retrieval tags (paper, appendix "In-Context Examples"): asset class, reasoning type
         (semantic or spatial), complexity (atomic: one predicate; compositional: a
         conjunction; hierarchical: staged sub-goals in temporal order) and action primitives."""
-        from rpg.domain.predicates import And, InOrder
+        from rpg.domain.predicates import InOrder
 
-        goal = self.goal_predicate()
-        stack, temporal = [goal], False
-        while stack:
-            p = stack.pop()
-            temporal = temporal or isinstance(p, InOrder)
-            stack.extend(p.children())
-        complexity = "hierarchical" if temporal else "compositional" if isinstance(goal, And) else "atomic"
+        temporal = any(isinstance(p, InOrder) for p in self.goal.walk())
+        complexity = "hierarchical" if temporal else "compositional" if isinstance(self.goal, And) else "atomic"
         return {"asset_class": self.assets_used(), "reasoning": self.reasoning, "complexity": complexity,
                 "primitives": list(self.primitives)}
 
@@ -156,6 +201,14 @@ class TaskSchema(_Model):
         return sorted({type(a.build()).__name__ for a in self.assets})
 
 
+def json_schema() -> dict:
+    """The JSON Schema of :class:`TaskSchema`, the goal tree included (``$defs/Goal``)."""
+    doc = TaskSchema.model_json_schema()
+    doc["properties"]["goal"] = {"$ref": "#/$defs/Goal", "description": doc["properties"]["goal"].get("description", "")}
+    doc.setdefault("$defs", {})["Goal"] = goal_json_schema()
+    return doc
+
+
 def export_json_schema() -> str:
     """The JSON Schema of :class:`TaskSchema`, as written to ``schemas/task.schema.json``."""
-    return json.dumps(TaskSchema.model_json_schema(), indent=2, sort_keys=True) + "\n"
+    return json.dumps(json_schema(), indent=2, sort_keys=True) + "\n"

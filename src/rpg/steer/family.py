@@ -38,7 +38,7 @@ from filelock import FileLock
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from rpg import yamlio
-from rpg.compiler import ArtifactError, atomic_replace, content_hash, load_artifact
+from rpg.artifact import ArtifactError, atomic_replace, content_hash, load_artifact, staging_dir
 from rpg.errors import BadInput
 from rpg.schema.model import TaskSchema
 
@@ -257,7 +257,7 @@ def create_family(artifact: str | Path) -> Family:
     """
     artifact = Path(artifact)
     schema, _ = load_artifact(artifact)
-    tmp = Path(tempfile.mkdtemp(prefix=f".tmp-family-{artifact.name[:40]}-", dir=artifact.parent))
+    tmp = staging_dir(artifact.parent, f"family-{artifact.name}")
     try:
         shutil.copytree(artifact, tmp / "v0", ignore=shutil.ignore_patterns("__pycache__"))
         snap = snapshot_of(tmp / "v0", 0, schema.instruction, None, None, "base", {}, {})

@@ -14,7 +14,6 @@ import re
 from dataclasses import dataclass
 
 from rpg.domain.predicates import (
-    And,
     Behind,
     InFrontOf,
     InRegion,
@@ -72,7 +71,7 @@ def relation_of(schema: TaskSchema) -> Relation | None:
     """The single pairwise relation a task is about (a two-cube stack counts as ``on``);
     None when the task has none or several."""
     goal = schema.goal_predicate()
-    parts: list[Predicate] = list(goal.children()) if isinstance(goal, And) else [goal]
+    parts: list[Predicate] = goal.conjuncts()
     kinds = {LeftOf: "left_of", RightOf: "right_of", InFrontOf: "in_front_of", Behind: "behind", NextTo: "next_to"}
     found = []
     for p in parts:
@@ -162,7 +161,7 @@ def _patch_task(schema: TaskSchema) -> tuple[list[str], str, str] | None:
     """(cube colours, patch colour, patch shape) of a task that puts coloured cubes on one
     goal patch; None for any other task."""
     goal = schema.goal_predicate()
-    parts = list(goal.children()) if isinstance(goal, And) else [goal]
+    parts = goal.conjuncts()
     patches = [a for a in schema.assets if a.kind == "goal_patch"]
     if len(patches) != 1 or not parts or not all(isinstance(p, OnPatch) for p in parts):
         return None
@@ -241,7 +240,7 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     ("make it green", Tweak), or a cube added by a region or next to a cube ("add a blue
     block next to it", Extend).  Returns the whole-task instruction and intent, or None."""
     goal = schema.goal_predicate()
-    parts = list(goal.children()) if isinstance(goal, And) else [goal]
+    parts = goal.conjuncts()
     if not parts or not all(isinstance(p, InRegion) for p in parts):
         return None
     assets = {a.name: a for a in schema.assets}

@@ -18,7 +18,6 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 
 from rpg.domain.predicates import (
-    And,
     Grid,
     InCircle,
     InLine,
@@ -108,7 +107,7 @@ class TaskSpec:
 
 
 def _parts(goal: Predicate) -> list[Predicate]:
-    return list(goal.children()) if isinstance(goal, And) else [goal]
+    return goal.conjuncts()
 
 
 def extract(schema: TaskSchema) -> TaskSpec | None:

@@ -25,7 +25,8 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
-from rpg.compiler import CompileResult, build, load_artifact
+from rpg.artifact import load_artifact
+from rpg.compiler import CompileResult, build
 from rpg.schema.builtin import parse
 from rpg.schema.feasibility import check_feasibility
 from rpg.schema.model import TaskSchema

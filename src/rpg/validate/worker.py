@@ -110,10 +110,7 @@ def _visibility(task: BlockTask) -> dict:
     state = task.world_state()
     checks = []
     failures = []
-    stack = [task.goal_predicate]
-    while stack:
-        p = stack.pop()
-        stack.extend(p.children())
+    for p in task.goal_predicate.walk():
         if not p.semantic:
             continue
         faces = p.semantic_faces(state)

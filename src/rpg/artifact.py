@@ -1,0 +1,148 @@
+"""Task artifacts on disk: reading, writing, hashing and publishing a task directory.
+
+An artifact directory holds ``task.yaml`` (the schema, tags, provenance, mention accounting
+and content hash), ``code.py``, ``goal_state_code.py``, ``validation.log``,
+``validation.json``, ``initial.png`` and ``goal.png``.  Every pass that reads or writes one
+goes through this module; it imports nothing from the compiler or the steering layer.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import shutil
+import tempfile
+import time
+from pathlib import Path
+
+import yaml
+
+from rpg import yamlio
+from rpg._version import __version__
+from rpg.errors import BadInput
+from rpg.schema.model import TaskSchema
+from rpg.validate.gates import GATES
+
+
+class ArtifactError(BadInput):
+    """A task artifact is missing, malformed or truncated."""
+
+
+def save_snapshots(directory: Path, images: dict) -> dict[str, Path | None]:
+    """Write the worker's base64 PNGs as ``directory/<key>.png``; key -> path (None if not rendered)."""
+    import base64
+
+    out: dict[str, Path | None] = {}
+    for key in ("initial", "goal"):
+        data = images.get(key)
+        out[key] = None
+        if isinstance(data, str):
+            path = Path(directory) / f"{key}.png"
+            path.write_bytes(base64.b64decode(data, validate=True))
+            out[key] = path
+    return out
+
+
+def gates_passed(gates: list[dict]) -> bool:
+    ran = {g["gate"]: g["status"] for g in gates}
+    return all(ran.get(name) in ("pass", "skipped") for name in GATES)
+
+
+def content_hash(task_doc: dict, code: str, goal_code: str) -> str:
+    """SHA-256 over the canonical task.yaml fields (no hash, no timings) and the two code files."""
+    doc = {k: v for k, v in task_doc.items() if k != "content_hash"}
+    h = hashlib.sha256()
+    h.update(json.dumps(doc, sort_keys=True, separators=(",", ":")).encode())
+    h.update(b"\0" + code.encode() + b"\0" + goal_code.encode())
+    return h.hexdigest()
+
+
+def task_document(schema: TaskSchema, seed: int, backend: str, model: str | None, gates: list[dict]) -> dict:
+    doc = {
+        "schema": json.loads(schema.model_dump_json()),
+        "tags": schema.tags(),
+        "provenance": {
+            "instruction": schema.instruction,
+            "compiler_version": __version__,
+            "backend": backend,
+            "model": model,
+            "seed": seed,
+            "repairs": [r.model_dump() for r in schema.repairs],
+            "gates": {g["gate"]: g["status"] for g in gates},
+        },
+    }
+    return doc
+
+
+def write_artifact_files(directory: Path, schema: TaskSchema, seed: int, backend: str, model: str | None,
+                         gates: list[dict], log: list[str]) -> str:
+    """Write task.yaml, validation.log and validation.json beside the code; return the content hash."""
+    code = (directory / "code.py").read_text()
+    goal_code = (directory / "goal_state_code.py").read_text()
+    doc = task_document(schema, seed, backend, model, gates)
+    digest = content_hash(doc, code, goal_code)
+    doc["content_hash"] = digest
+    (directory / "task.yaml").write_text(yaml.safe_dump(doc, sort_keys=False, allow_unicode=True, width=100))
+    write_logs(directory, log, gates)
+    return digest
+
+
+def write_logs(directory: Path, log: list[str], gates: list[dict]) -> None:
+    """``validation.log`` (one line per gate and repair attempt) and ``validation.json``."""
+    (directory / "validation.log").write_text("\n".join(log) + "\n")
+    (directory / "validation.json").write_text(json.dumps(
+        {"created": time.strftime("%Y-%m-%dT%H:%M:%S%z"), "valid": gates_passed(gates), "log": log, "gates": gates},
+        indent=2, default=str) + "\n")
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+def staging_dir(parent: Path, name: str) -> Path:
+    """A new hidden directory ``parent/.tmp-<name>-*`` to write an artifact into before it is
+    published with :func:`atomic_replace`; its mode follows the umask like a plain mkdir."""
+    tmp = Path(tempfile.mkdtemp(prefix=f".tmp-{name[:40]}-", dir=parent))
+    os.chmod(tmp, 0o777 & ~_umask())
+    return tmp
+
+
+LIBRARY_LOCK = ".rpg.lock"
+"""Lock file in a library directory: serializes the renames that publish task directories."""
+
+
+def atomic_replace(tmp: Path, target: Path) -> None:
+    """Publish ``tmp`` as ``target`` by rename (the old ``target``, if any, goes to the
+    trash first), under the directory's file lock so concurrent writers never interleave."""
+    from filelock import FileLock
+
+    target.parent.mkdir(parents=True, exist_ok=True)
+    with FileLock(str(target.parent / LIBRARY_LOCK), timeout=600):
+        if target.exists():
+            trash = target.parent / f".trash-{target.name}-{os.getpid()}"
+            os.rename(target, trash)
+            os.rename(tmp, target)
+            shutil.rmtree(trash, ignore_errors=True)
+        else:
+            os.rename(tmp, target)
+
+
+def load_artifact(directory: str | Path) -> tuple[TaskSchema, dict]:
+    """Read an artifact's schema and provenance.
+
+    Raises:
+        ArtifactError: missing files, malformed YAML or an invalid schema.
+    """
+    d = Path(directory)
+    for fname in ("task.yaml", "code.py", "goal_state_code.py"):
+        if not (d / fname).is_file():
+            raise ArtifactError(f"{d} is not a task artifact: {fname} is missing")
+    try:
+        doc = yamlio.load((d / "task.yaml").read_text())
+        schema = TaskSchema.model_validate(doc["schema"])
+    except Exception as exc:  # noqa: BLE001 - any parse problem means a malformed artifact
+        raise ArtifactError(f"{d / 'task.yaml'} is malformed: {str(exc).splitlines()[0][:200]}") from None
+    return schema, doc

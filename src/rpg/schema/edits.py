@@ -1,0 +1,68 @@
+"""Edits of a TaskSchema shared by the feasibility pass and the repair pass.
+
+A schema is immutable in practice: every edit returns a new, re-validated
+:class:`~rpg.schema.model.TaskSchema` and records why in ``repairs``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rpg.domain import constants as C
+from rpg.schema.model import PoseSpec, RepairRecord, TaskSchema
+
+
+def with_changes(schema: TaskSchema, **changes) -> TaskSchema:
+    """A copy of ``schema`` with top-level fields replaced, validated again.
+
+    Raises:
+        pydantic.ValidationError: the changed schema is inconsistent.
+    """
+    doc = schema.model_dump()
+    doc.update(changes)
+    return TaskSchema.model_validate(doc)
+
+
+def add_repair(schema: TaskSchema, operator: str, reason: str, stage: str = "validation") -> list[dict]:
+    """``schema.repairs`` plus one record, as plain data for :func:`with_changes`."""
+    return ([r.model_dump() for r in schema.repairs]
+            + [RepairRecord(operator=operator, stage=stage, reason=reason).model_dump()])
+
+
+def layout_extent(schema: TaskSchema) -> tuple[np.ndarray, np.ndarray]:
+    """Min and max corners (x, y) of the goal layout's footprints, m, world frame."""
+    pts = []
+    for a in schema.assets:
+        p = np.asarray(schema.goal_layout[a.name].position[:2])
+        half = np.array([a.size / 2, a.size / 2]) if a.kind != "goal_patch" else np.array(a.build().extents[:2]) / 2
+        pts += [p - half, p + half]
+    pts = np.array(pts)
+    return pts.min(axis=0), pts.max(axis=0)
+
+
+def move_into_workspace(schema: TaskSchema, failure: dict | None = None, stage: str = "validation") -> TaskSchema | None:
+    """Translate the whole goal layout (and the fixed goal patches) so its footprint lies
+    inside the workspace (:data:`rpg.domain.constants.WORKSPACE_X` / ``WORKSPACE_Y``).
+
+    Returns:
+        The moved schema with a MOVE_INTO_WORKSPACE record, or None when the layout already
+        fits or is wider than the workspace (nothing to translate into).
+    """
+    lo, hi = layout_extent(schema)
+    ws_lo = np.array([C.WORKSPACE_X[0], C.WORKSPACE_Y[0]])
+    ws_hi = np.array([C.WORKSPACE_X[1], C.WORKSPACE_Y[1]])
+    if np.any(hi - lo > ws_hi - ws_lo):
+        return None
+    shift = np.maximum(ws_lo - lo, 0) - np.maximum(hi - ws_hi, 0)
+    if np.allclose(shift, 0):
+        return None
+    layout = {}
+    for n, p in schema.goal_layout.items():
+        x, y, z = p.position
+        layout[n] = PoseSpec(position=(round(x + shift[0], 6), round(y + shift[1], 6), z), quaternion=p.quaternion)
+    fixed = {n: layout[n] for n in schema.initial_state.fixed}
+    init = schema.initial_state.model_copy(update={"fixed": fixed})
+    return with_changes(schema, goal_layout={n: v.model_dump() for n, v in layout.items()},
+                        initial_state=init.model_dump(),
+                        repairs=add_repair(schema, "MOVE_INTO_WORKSPACE",
+                                           f"shifted the goal layout by {np.round(shift, 3).tolist()} m", stage))
