@@ -412,3 +412,60 @@ def test_reading_direction_tower_of_a_word_and_back_to_a_named_word(tmp_path):
     assert s.compile.schema.goal_summary == "tower bottom to top: letter_c, letter_a, letter_t"
     s = steer(fam, "Go back to DOG")  # a version named by the word it spells
     assert s.reused and s.version == 0
+
+
+def test_structure_registry_drives_parser_steering_and_edits():
+    """Each structure kind names a recognizer the parser runs, states a spec that the
+    parser reads back to the same spec, and is what its words name in an edit."""
+    from rpg.schema import builtin
+    from rpg.schema.structures import STRUCTURE_KINDS, STRUCTURE_WORDS, structure_of_word
+
+    recognizers = {r.__name__ for r in builtin.RECOGNIZERS}
+    samples = {
+        "tower": TaskSpec("tower", (Item("red"), Item("red"), Item("blue"))),
+        "line": TaskSpec("line", (Item("red"), Item("green"), Item("blue"))),
+        "pyramid": TaskSpec("pyramid", tuple(Item("yellow") for _ in range(6)), (3, 2)),
+        "grid": TaskSpec("grid", (Item("red"), Item("blue"), Item("blue"), Item("red")), (2, 2)),
+        "block": TaskSpec("block", tuple(Item("green") for _ in range(8)), (2, 2, 2)),
+        "circle": TaskSpec("circle", (Item("red"), Item("blue"), Item("green"), Item("blue"))),
+        "piles": TaskSpec("piles", (Item("red"), Item("red"), Item("blue"), Item("blue")), piles_by="color"),
+    }
+    assert set(samples) == set(STRUCTURE_KINDS)
+    for name, kind in STRUCTURE_KINDS.items():
+        assert kind.recognizer in recognizers, name
+        text = render(samples[name])
+        schema = parse(text)
+        assert extract(schema) == samples[name], (name, text)
+        assert any(isinstance(p, kind.predicate) for p in schema.goal.walk()), name
+        for w in kind.words:
+            assert structure_of_word(w) == structure_of_word(w + "s") == name
+    assert STRUCTURE_WORDS["stack"] == "tower"
+    assert interpret("make it a ring").ops[-1].params == {"to": "circle"}
+
+
+@pytest.mark.parametrize("colors", [["green", "green"], ["green", "red", "green"], ["blue", "blue", "blue", "red"]])
+def test_canonical_instructions_never_name_one_cube_twice(colors):
+    """Steering a patch task whose cubes share a colour states them counted ("two green
+    blocks"), and the parser reads back as many cubes as the task has (issue: "the green
+    block and the green block" was merged into one cube)."""
+    from rpg.schema.structures import cube_list
+    from rpg.steer.relations import rewrite_patch
+
+    ref = parse(f"Place {cube_list(colors, 'a')} onto the blue goal patch")
+    assert sorted(a.color for a in ref.assets if a.kind == "colored_cube") == sorted(colors)
+    text, intent = rewrite_patch("make the patch yellow", ref)
+    assert intent == "tweak" and not any(text.count(f"the {c} block") > 1 for c in colors), text
+    got = parse(text)
+    assert sorted(a.color for a in got.assets if a.kind == "colored_cube") == sorted(colors)
+    assert len(got.goal.conjuncts()) == len(colors)
+
+
+@pytest.mark.parametrize("text,needle", [
+    ("Place the green block and the green block onto the blue goal patch", "twice"),
+    ("Put the red block to the left of the red block", "itself"),
+])
+def test_an_instruction_naming_one_cube_twice_is_refused(text, needle):
+    from rpg.schema.builtin import ParseError
+
+    with pytest.raises(ParseError, match=needle):
+        parse(text)

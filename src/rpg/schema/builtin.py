@@ -16,6 +16,7 @@ import math
 import re
 from dataclasses import dataclass, field
 
+from pydantic import ValidationError
 from rapidfuzz import fuzz, process
 
 from rpg.domain import constants as C
@@ -1846,7 +1847,13 @@ def parse(instruction: str) -> TaskSchema:
         b = Builder(f.original)
         b.repairs = []
         if recognize(f, b):
-            schema = b.schema(_slug(f.original))
+            try:
+                schema = b.schema(_slug(f.original))
+            except ValidationError as exc:  # e.g. "the red block left of the red block"
+                reason = str(exc.errors()[0]["msg"]).removeprefix("Value error, ")
+                first_gap = first_gap or ParseError(f"read \"{f.original[:80]}\" as a task in which {reason}. "
+                                                    "Rephrase (e.g. \"two red blocks\"), or use --model")
+                continue
             schema.repairs = b.repairs
             gap = _unaccounted(f, schema)
             if gap is None:

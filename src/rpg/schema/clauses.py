@@ -37,6 +37,10 @@ FILLER = re.compile(
     r"on\s+the\s+table|straight\s+up|up|spot|horizontal|horizontally|vertical|vertically|(?:a|the)\s+(?:tower|stack|column)(?=\s*[:,])|the)\b|[.,;:!]")
 """Words a placement clause may carry besides its cubes, relation and reference."""
 
+STACKED = re.compile(r"\b(?:stack|stacks|stacked|tower|towers|column|columns|pillar|vertical|vertically|"
+                     r"on\s+top\s+of\s+(?:each\s+other|one\s+another))\b")
+"""Words that say a group of cubes named on its own stands one on another."""
+
 
 @dataclass
 class Plan:
@@ -196,6 +200,8 @@ def read(text: str, colors: str, canon) -> Plan | None:
         if cl.rel is None:  # a group standing on its own: a new tower (in a place, or the first)
             if towers and not cl.region:
                 return None
+            if len(cl.items) > 1 and not STACKED.search(text):
+                return None  # "two red blocks in the corner": side by side or stacked is not said
             towers.append(list(cl.items))
             keys.append([(cl.start, k) for k in range(len(cl.items))])
             regions.append(cl.region)

@@ -168,6 +168,15 @@ class TaskSchema(_Model):
         names = [a.name for a in self.assets]
         if len(set(names)) != len(names):
             raise ValueError("asset names must be unique")
+        for p in self.goal.walk():
+            refs = p.object_names() if not p.children() else []
+            twice = sorted({n for n in refs if refs.count(n) > 1})
+            if twice:
+                raise ValueError(f"the goal relates {twice[0]} to itself ({p.describe()}); name two different objects")
+        parts = self.goal.conjuncts()
+        if len(set(parts)) != len(parts):
+            same = next(q for k, q in enumerate(parts) if q in parts[:k])
+            raise ValueError(f"the goal states '{same.describe()}' twice; a repeated object needs its own asset")
         unknown = sorted(set(self.goal.object_names()) - set(names))
         if unknown:
             raise ValueError(f"goal names unknown objects {unknown}; assets are {names}")

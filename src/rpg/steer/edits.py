@@ -16,7 +16,6 @@ Deterministic and offline; the same rules for every edit, no per-sentence cases.
 
 from __future__ import annotations
 
-import math
 import re
 from dataclasses import asdict, dataclass, field, replace
 
@@ -24,6 +23,7 @@ from rpg.domain.palette import GRADIENT_ORDER
 from rpg.errors import BadInput
 from rpg.schema.builder import DEFAULT_COLORS
 from rpg.schema.builtin import COLOR_RE, NUMBER_WORDS, VOCAB, _canon_color, item_sequence
+from rpg.schema.structures import STRUCTURE_KINDS, STRUCTURE_RE, pyramid_count, structure_of_word
 from rpg.steer.spec import Item, TaskSpec
 
 INTENTS = ("tweak", "extend", "modify", "pivot", "fresh")
@@ -99,11 +99,6 @@ class EditPlan:
 # Reading
 # ---------------------------------------------------------------------------
 
-STRUCTURE_WORDS = {
-    "tower": "tower", "stack": "tower", "line": "line", "row": "line", "circle": "circle", "ring": "circle",
-    "pyramid": "pyramid", "grid": "grid", "square": "grid", "piles": "piles", "pile": "piles",
-}
-STRUCTURE_RE = r"\b(towers?|stacks?|lines?|rows?|circles?|rings?|pyramids?|grids?|squares?|piles?)\b"
 FRESH_RE = re.compile(r"(?i)\b(?:new task|another task|start over|start fresh|from scratch|unrelated|something (?:completely |totally )?(?:different|else)|forget (?:it|that|this|everything|about it))\b[:,.!]?")
 ANAPHORA_RE = re.compile(r"\b(?:it|them|they|its|their|those|these|instead|back|again|now|also|more|rather)\b"
                          r"|\b(?:add|append|change|replace|swap|substitute|remove|delete|flip|reverse|invert|keep|undo|revert|turn|paint|recolou?r)\b|\bmake (?:the|it|them)\b")
@@ -169,7 +164,7 @@ def find_reference(t: str) -> RefCue:
     spelled = [w for w in words if w not in VOCAB and w not in NON_WORDS and not re.fullmatch(COLOR_RE, w)]
     cue = RefCue("search", colors=colors, exact=bool(re.search(r"\b(?:just|only)\b", region)),
                  material=mats[0] if len(mats) == 1 else None,
-                 structure=STRUCTURE_WORDS[s.group(1).rstrip("s")] if s else None,
+                 structure=structure_of_word(s.group(1)) if s else None,
                  count=int(n.group(1)) if n else None, word=spelled[0].upper() if len(spelled) == 1 else None,
                  phrase=(back.group(0) + region).strip())
     if not (cue.colors or cue.material or cue.structure or cue.count or cue.word):
@@ -304,9 +299,9 @@ def read_ops(t: str) -> list[Op]:
     elif re.search(r"\b(?:shorter|smaller|lower)\b", t) and not any(o.op in ("remove", "dims", "count") for o in ops):
         ops.append(Op("count", {"delta": -1}))
     shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out|use|do)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+)"
-                      r"(tower|stack|line|row|circle|ring|pyramid|grid|square)\b", t)
+                      rf"{STRUCTURE_RE}", t)
     if shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
-        ops.append(Op("structure", {"to": STRUCTURE_WORDS[shape.group(1)]}))
+        ops.append(Op("structure", {"to": structure_of_word(shape.group(1))}))
     return ops
 
 
@@ -432,18 +427,8 @@ def _resize(spec: TaskSpec, n: int) -> TaskSpec:
     return spec.with_items(items)
 
 
-def _pyramid_count(base: int, dims: int) -> int:
-    return sum((base - k) ** (dims - 1) for k in range(base))
-
-
 def _layer_sizes(spec: TaskSpec) -> list[int]:
-    if spec.structure == "pyramid":
-        base, dims = spec.dims
-        return [(base - k) ** (dims - 1) for k in range(base)]
-    if spec.structure == "block":
-        r, c, layers = spec.dims
-        return [r * c] * layers
-    return [len(spec.items)]
+    return spec.kind.layer_sizes(spec)
 
 
 def _with_layer_colors(spec: TaskSpec) -> TaskSpec:
@@ -454,28 +439,10 @@ def _with_layer_colors(spec: TaskSpec) -> TaskSpec:
 
 
 def _fit_structure(spec: TaskSpec, target: str) -> TaskSpec:
-    n = len(spec.items)
-    base = dict(ordering=spec.ordering if target in ("line", "grid", "pyramid") else None, descending=spec.descending)
-    if target == "tower":
-        if n < 2:
-            raise SteerError("a tower needs at least two cubes")
-        return TaskSpec("tower", spec.items)
-    if target == "line":
-        return TaskSpec("line", spec.items, direction="left_to_right", **base)
-    if target == "circle":
-        if n < 3:
-            raise SteerError("a circle needs at least three cubes")
-        return TaskSpec("circle", spec.items)
-    if target == "pyramid":
-        for b in range(2, 8):
-            if _pyramid_count(b, 2) >= n:
-                return _resize(TaskSpec("pyramid", spec.items, (b, 2), **base), _pyramid_count(b, 2))
-    if target == "grid":
-        side = max(2, round(n ** 0.5))
-        return _resize(TaskSpec("grid", spec.items, (side, side), **base), side * side)
-    if target == "piles":
-        return TaskSpec("piles", spec.items, piles_by="type" if spec.material == "mixed" else "color")
-    raise SteerError(f"cannot turn a {spec.structure} into a {target}")
+    try:
+        return STRUCTURE_KINDS[target].fit(spec, _resize)
+    except BadInput as exc:
+        raise SteerError(f"cannot turn a {spec.structure} into a {target}: {exc}") from None
 
 
 APPLY_ORDER = ("structure", "material", "word", "dims", "count", "colors", "remove", "recolor", "relabel", "pattern", "add",
@@ -500,7 +467,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
         elif o.op == "material":
             if p["to"] == spec.material:
                 continue
-            if spec.structure == "piles":
+            if spec.kind.grouped:
                 spec = replace(spec, piles_by="type" if p["to"] == "mixed" else spec.piles_by)
             spec = spec.with_items(_material_items(p["to"], len(spec.items), []))
             if spec.ordering == "label" and spec.material == "digits":
@@ -512,13 +479,13 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
             spec = replace(spec, word=None, layer_colors=spec.layer_colors and spec.material == "colors")
         elif o.op == "ordering":
             key = p["key"]
-            if spec.structure == "piles":
+            if spec.kind.grouped:
                 spec = replace(spec, piles_by="color" if key == "color" else "type")
                 continue
-            if key == "color" and spec.structure in ("pyramid", "block"):
+            if key == "color" and spec.kind.layered:
                 spec = _with_layer_colors(spec)
                 continue
-            if key == "color" and spec.structure in ("tower", "circle"):  # a rainbow: gradient colours in structure order
+            if key == "color" and spec.kind.rainbow:  # a rainbow: gradient colours in structure order
                 spec = spec.with_items([Item(color=GRADIENT_ORDER[i % len(GRADIENT_ORDER)]) for i in range(len(spec.items))])
                 continue
             need = {"label": "letters", "number": "digits", "color": "colors"}[key]
@@ -538,7 +505,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
             if spec.ordering:
                 spec = replace(spec, descending=not spec.descending)
         elif o.op == "add":
-            if spec.structure not in ("tower", "line", "circle", "piles"):
+            if not spec.kind.sized_by_count:
                 raise SteerError(f"cubes cannot be added one by one to a {spec.structure}; change its size instead "
                                  "(e.g. \"make the base 4\")")
             new = [Item(**d) for d in p["items"]] or []
@@ -592,7 +559,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
             if spec.structure != "pyramid":
                 raise SteerError(f"only a pyramid is 2D or 3D; this task has a {spec.structure}")
             dims = (spec.dims[0], p["pyramid_dims"])
-            spec = _resize(replace(spec, dims=dims), _pyramid_count(*dims))
+            spec = _resize(replace(spec, dims=dims), pyramid_count(*dims))
             if spec.layer_colors:
                 spec = _with_layer_colors(spec)
         elif o.op == "dims":
@@ -600,11 +567,11 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
                 if spec.structure != "pyramid":
                     raise SteerError(f"a {spec.structure} has no base size; name its dimensions instead")
                 dims = (p["base"], spec.dims[1])
-                spec = _resize(replace(spec, dims=dims), _pyramid_count(*dims))
+                spec = _resize(replace(spec, dims=dims), pyramid_count(*dims))
             else:
                 d = tuple(p["dims"])
                 if spec.structure == "pyramid" and len(d) == 2 and d[0] == d[1]:
-                    spec = _resize(replace(spec, dims=(d[0], 3)), _pyramid_count(d[0], 3))
+                    spec = _resize(replace(spec, dims=(d[0], 3)), pyramid_count(d[0], 3))
                 elif spec.structure in ("grid", "block"):
                     structure = "block" if len(d) == 3 else "grid"
                     n = d[0] * d[1] * (d[2] if len(d) == 3 else 1)
@@ -620,22 +587,20 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
             items = list(spec.items)
             items[ia[0]], items[ib[0]] = items[ib[0]], items[ia[0]]
             spec = spec.with_items(items)
-        elif o.op == "count" and "delta" in p and spec.structure in ("pyramid", "grid", "block"):
-            d = p["delta"]
-            dims = (spec.dims[0] + d, spec.dims[1]) if spec.structure == "pyramid" else tuple(x + d for x in spec.dims)
+        elif o.op == "count" and "delta" in p and not spec.kind.sized_by_count:
+            dims = spec.kind.grown(spec.dims, p["delta"])
             if min(dims) < 2:
                 raise SteerError(f"a {spec.structure} cannot be made smaller than {'x'.join(map(str, spec.dims))}")
-            n = _pyramid_count(*dims) if spec.structure == "pyramid" else math.prod(dims)
-            spec = _resize(replace(spec, dims=dims), n)
+            spec = _resize(replace(spec, dims=dims), spec.kind.cube_count(dims))
             if spec.layer_colors:
                 spec = _with_layer_colors(spec)
         elif o.op == "count":
-            if spec.structure not in ("tower", "line", "circle", "piles"):
+            if not spec.kind.sized_by_count:
                 raise SteerError(f"the size of a {spec.structure} is set by its dimensions (e.g. \"a 3x3 base\")")
             n = p.get("count") or (round(len(spec.items) * p["factor"]) if "factor" in p else len(spec.items) + p.get("delta", 0))
             spec = _resize(spec, n)
         elif o.op == "word":
-            if spec.structure not in ("line", "tower"):
+            if not spec.kind.spells:
                 raise SteerError(f"a {spec.structure} does not spell a word; say e.g. \"spell {p['word']} in a line\"")
             spec = replace(spec.with_items([Item(label=ch) for ch in p["word"]]), word=p["word"], ordering=None,
                            direction=spec.direction or "left_to_right")

@@ -27,6 +27,7 @@ from rpg.domain.predicates import (
 from rpg.schema.builder import DEFAULT_COLORS
 from rpg.schema.builtin import COLOR_RE, _canon_color, region_name
 from rpg.schema.model import TaskSchema
+from rpg.schema.structures import cube_list
 
 PHRASES = {"left_of": "to the left of", "right_of": "to the right of", "in_front_of": "in front of",
            "behind": "behind", "next_to": "next to", "on": "on top of"}
@@ -204,9 +205,7 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         colors, intent = colors + [_canon_color(added.group(1))], "extend"
     if intent is None:
         return None
-    cubes = [f"the {c} block" for c in colors]
-    listed = cubes[0] if len(cubes) == 1 else ", ".join(cubes[:-1]) + " and " + cubes[-1]
-    return f"Place {listed} onto the {pcolor}{' long' if shape == 'long' else ''} goal patch", intent
+    return f"Place {cube_list(colors)} onto the {pcolor}{' long' if shape == 'long' else ''} goal patch", intent
 
 
 REGION_PHRASES = {"center": "in the center of the table", "left": "on the left side of the table",
@@ -247,6 +246,8 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     if any(assets[p.a].kind != "colored_cube" for p in parts) or len({p.a for p in parts}) != len(parts):
         return None
     placed = [(assets[p.a].color, p.region) for p in parts]
+    if len({c for c, _ in placed}) != len(placed):
+        return None  # two cubes of one colour cannot be told apart by name in an edit or a clause
     t = " " + edit.lower().strip().rstrip(".!") + " "
     region = _edit_region(t)
     added = re.search(rf"\b(?:add|put|place)\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b(.*)", t)
