@@ -26,6 +26,14 @@ from rpg.schema.meaning import meaning
     ("Place a row of 3 blue blocks on top of a row of 3 green blocks.", ["wall(green,green,green|blue,blue,blue)"]),
     ("slide left the blue block", ["in_region(blue,left)"]),
     ("move the green block to the center of the table", ["in_region(green,center)"]),
+    # a structure placed relative to a cube: the structure's own clause, then the relation for each of its cubes
+    ("Build a tower of 3 green blocks to the left of the red block",
+     ["left_of(green,red)", "left_of(green,red)", "left_of(green,red)", "stack(green,green,green)"]),
+    ("build a tower of three blocks to the left of the green block",
+     ["left_of(blue,green)", "left_of(red,green)", "left_of(yellow,green)", "stack(red,blue,yellow)"]),
+    ("put three blue blocks in a row in front of the yellow block",
+     ["in_front_of(blue,yellow)", "in_front_of(blue,yellow)", "in_front_of(blue,yellow)", "line(blue,blue,blue)"]),
+    ("build a stack of red, green and blue blocks next to the yellow block", ["next_to(red,yellow)", "stack(red,green,blue)"]),
 ])
 def test_reads(text, expected):
     assert meaning(parse(text)) == sorted(expected)
@@ -38,6 +46,9 @@ def test_reads(text, expected):
     ("a column of two in each corner", "each corner"),
     ("put red on blue and blue on red", "contradict"),
     ("push the red block until it is sitting on the target", "until"),
+    # silent errors found by review: each compiled to a task that meant something else
+    ("build a tower of three blocks to the left of the green block and stack them", "one green cube"),
+    ("stack 3 red blocks and put 2 red blocks in a line", "line"),
 ])
 def test_refuses_naming_what_it_could_not_place(text, named):
     with pytest.raises(ParseError, match=named):
@@ -61,3 +72,20 @@ def test_relation_words_must_be_in_the_task():
     record = account("put the red block left of the blue block", parse("put the red block left of the blue block"),
                      COLOR_RE, _canon_color)
     assert {"mention": "left of", "kind": "relation", "consumed_by": "left_of"} in record
+
+
+def test_a_group_named_on_its_own_is_not_read_as_a_tower():
+    """"Two red blocks in the corner" says where, not that they stand on each other."""
+    assert meaning(parse("place two red blocks in the back left corner of the table")) == [
+        "in_region(red,back_left)", "in_region(red,back_left)"]
+    assert meaning(parse("place a stack of two red blocks in the back left corner")) == ["stack(red,red)@back_left"]
+
+
+def test_the_accounting_record_says_which_words_produced_which_part():
+    from rpg.schema.builtin import check_mentions
+
+    schema = parse("Put three green blocks in a row to the left of the red block")
+    record = {(r["kind"], r["mention"]): r["consumed_by"] for r in check_mentions(schema.instruction, schema)}
+    assert record[("color", "green")].count("green") == 3 and record[("color", "red")] == "red"
+    assert record[("structure", "row")] == "in_line"
+    assert ("relation", "to the left of") in record and ("count", "3 green blocks") in record

@@ -124,3 +124,19 @@ def test_repository_library_holds_every_manifest_entry_with_tags():
             hist = yaml.safe_load((d / "family.yaml").read_text())
             assert hist["versions"][-1]["lineage_hash"] == e.content_hash
             assert (ROOT / "library" / e.session).resolve().parent == ROOT / "examples"
+
+
+def test_every_library_task_records_its_mention_accounting():
+    """task.yaml says which words produced which part of the goal; in the committed
+    library every mention of every instruction (steering's canonical ones included) has a part."""
+    import yaml
+
+    tasks = sorted((Path(__file__).resolve().parents[1] / "library").rglob("task.yaml"))
+    assert len(tasks) >= 40
+    kinds, empty = set(), 0
+    for t in tasks:
+        record = yaml.safe_load(t.read_text())["accounting"]
+        assert isinstance(record, list) and all(r["kind"] != "unaccounted" for r in record), t
+        kinds |= {r["kind"] for r in record}
+        empty += not record  # "Place cubes in a circular arrangement" names no colour, count or structure word
+    assert {"color", "count", "structure", "relation"} <= kinds and empty <= 3

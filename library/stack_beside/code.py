@@ -23,14 +23,14 @@ from rpg.task_api import (
 
 
 class StackGreenBlockOnYellowBlockBeside02b1e2Task(BlockTask):
-    """tower bottom to top: yellow, green; yellow next to red"""
+    """tower bottom to top: yellow, green; yellow beside red"""
 
     NAME = 'stack_green_block_on_yellow_block_beside_02b1e2'
     INSTRUCTION = 'Stack the green block on the yellow block beside the red block'
     PARAPHRASES = (
-        'Tower bottom to top: yellow, green; yellow next to red.',
-        'Goal: tower bottom to top: yellow, green; yellow next to red.',
-        'Arrange the cubes so that the final scene shows tower bottom to top: yellow, green; yellow next to red.',
+        'Tower bottom to top: yellow, green; yellow beside red.',
+        'Goal: tower bottom to top: yellow, green; yellow beside red.',
+        'Arrange the cubes so that the final scene shows tower bottom to top: yellow, green; yellow beside red.',
     )
 
     def assets(self):

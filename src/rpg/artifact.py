@@ -58,10 +58,28 @@ def content_hash(task_doc: dict, code: str, goal_code: str) -> str:
     return h.hexdigest()
 
 
+def mention_accounting(schema: TaskSchema) -> list[dict]:
+    """Which words of the instruction produced which part of the task: one
+    ``{"mention", "kind", "consumed_by"}`` per colour, label, count, patch, place, structure
+    and relation the instruction names (:func:`rpg.schema.builtin.check_mentions`).  A
+    mention the task has no part for (possible only for a schema edited by hand) is
+    recorded with kind ``unaccounted``."""
+    from rpg.schema.accounting import UnaccountedMention
+    from rpg.schema.builtin import check_mentions
+
+    try:
+        return check_mentions(schema.instruction, schema)
+    except UnaccountedMention as exc:
+        return [{"mention": schema.instruction[:200], "kind": "unaccounted", "consumed_by": str(exc)}]
+
+
 def task_document(schema: TaskSchema, seed: int, backend: str, model: str | None, gates: list[dict]) -> dict:
+    """The content of ``task.yaml`` (without its hash): the schema, retrieval tags, the
+    mention accounting (:func:`mention_accounting`) and provenance."""
     doc = {
         "schema": json.loads(schema.model_dump_json()),
         "tags": schema.tags(),
+        "accounting": mention_accounting(schema),
         "provenance": {
             "instruction": schema.instruction,
             "compiler_version": __version__,

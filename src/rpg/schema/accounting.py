@@ -6,7 +6,8 @@ corners") out of the task it builds and still produce a valid task that means so
 else.  This pass lists the content mentions of the normalised instruction and checks each
 against the schema; a mention the schema does not consume makes the compile refuse, with a
 message naming it (refuse rather than guess).  :func:`account` also returns the record of
-which part of the task consumed each mention (not yet written to ``task.yaml``).
+which part of the task consumed each mention; the compiler writes it to ``task.yaml``
+under ``accounting``.
 
 Colours and labels are checked by the builtin front end (``builtin._unaccounted`` and
 ``builtin.check_mentions``), which call :func:`account` for the rest.
@@ -22,28 +23,46 @@ from functools import lru_cache
 from rpg.domain import predicates as P
 from rpg.errors import BadInput
 from rpg.schema.model import TaskSchema
+from rpg.schema.structures import STRUCTURE_RE, structure_of_word
 
 CUBE_NOUNS = r"(?:block|cube|box|piece|object|one)s?"
 
 
 @dataclass(frozen=True)
 class Mention:
-    """A content mention: its words, kind (count, patch, place, towers, relation) and what it requires."""
+    """A content mention: its words, kind (count, patch, place, towers, relation, structure) and what it requires."""
 
     words: str
     kind: str
     count: int = 0
     color: str | None = None
     region: str | None = None
-    predicates: tuple[str, ...] = ()  # relation: the goal predicates that can carry it
+    predicates: tuple[str, ...] = ()  # relation, structure: the goal predicates that can carry it
 
 
 RELATION_WORDS: tuple[tuple[str, str], ...] = (
     (r"\b(?:to\s+the\s+)?(?:left|right)\s+of\b", "left_of right_of in_line between sorted_by reads equation"),
     (r"\bin\s+front\s+of\b|\bbehind\b", "in_front_of behind in_line between"),
     (r"\bbetween\b", "between in_line"),
+    (r"\bnext\s+to\b|\bnear(?:by)?\b|\bbeside\b|\badjacent\b|\bclose\s+to\b",
+     "next_to in_line grid pyramid in_region on_patch between left_of right_of in_front_of behind"),
+    (r"\bfar\s+(?:away\s+)?from\b|\bapart\b", "far_from"),
 )
 """Relation words (normalised text) -> the goal predicates that can carry them (project)."""
+
+
+STRUCTURE_PREDICATES: dict[str, tuple[str, ...]] = {
+    "tower": ("stack", "on", "pyramid", "grid"),
+    "line": ("in_line", "reads", "sorted_by", "equation", "grid"),
+    "pyramid": ("pyramid",),
+    "grid": ("grid", "on_patch"),  # "square" also names a square goal patch
+    "block": ("grid",),
+    "circle": ("in_circle",),
+    "piles": ("piles",),
+}
+"""Structure kind a word names (:data:`rpg.schema.structures.STRUCTURE_WORDS`) -> the goal
+predicates that can carry it (a tower word is carried by any stacked structure; a row by a
+line, a sequence or a grid's row)."""
 
 
 class UnaccountedMention(BadInput):
@@ -92,6 +111,10 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
         m = re.search(words, text)
         if m:
             out.append(Mention(m.group(0), "relation", predicates=tuple(kinds.split())))
+    for m in re.finditer(STRUCTURE_RE, text):
+        if re.search(r"\b(?:the|that|this|its|their)\s+(?:[a-z]+\s+)?$", text[:m.start()]):
+            continue  # "push the pile of red blocks": a reference to cubes, not a structure to build
+        out.append(Mention(m.group(0), "structure", predicates=STRUCTURE_PREDICATES[structure_of_word(m.group(1))]))
     each = re.search(r"\b(?:each|every|all)\s+(?:of\s+the\s+)?(?:(\d+)\s+)?corners?\b", text)
     if each:
         out.append(Mention(each.group(0), "place", count=int(each.group(1) or 4), region="corners"))
@@ -132,6 +155,13 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
             if have < m.count:
                 raise UnaccountedMention(f"'{m.words}' asks for {m.count} {what} but the task read has {have}")
             record.append({"mention": m.words, "kind": "count", "consumed_by": f"{have} {what}"})
+        elif m.kind == "structure":
+            used = sorted({p.name for p in goal} & set(m.predicates))
+            if not used and "stack" in m.predicates and schema.initial_state.structures:
+                used = ["initial_state.structures"]  # "starting from a stack of red on blue"
+            if not used:
+                raise UnaccountedMention(f"the {m.words} it names has no part in the task read")
+            record.append({"mention": m.words, "kind": "structure", "consumed_by": ", ".join(used)})
         elif m.kind == "relation":
             used = sorted({p.name for p in goal} & set(m.predicates))
             if not used:

@@ -14,8 +14,10 @@ from __future__ import annotations
 import itertools
 import math
 import re
+from collections import Counter
 from dataclasses import dataclass, field
 
+import numpy as np
 from pydantic import ValidationError
 from rapidfuzz import fuzz, process
 
@@ -60,6 +62,7 @@ from rpg.schema import clauses, lexicon
 from rpg.schema.accounting import UnaccountedMention, account
 from rpg.schema.builder import DEFAULT_COLORS, DEFAULT_PATCH_COLOR, Builder
 from rpg.schema.model import RepairRecord, TaskSchema
+from rpg.schema.structures import STRUCTURE_RE
 
 
 class ParseError(BadInput):
@@ -258,9 +261,26 @@ def _color_mentions(text: str) -> list[tuple[int, str]]:
             if not re.match(r"\s+(order|gradient|sort)", text[m.end():])]
 
 
+SINGLE_CUBE_RE = re.compile(rf"\b(?:the|a|an|one|that|this|your|my)\s+(?:single\s+|same\s+|other\s+)?({COLOR_RE})"
+                            rf"\s+(?:block|cube|box|one)\b(?!\s+(?:tower|stack|column|pile|row|line))")
+"""A colour named as exactly one cube: "the green block", "a red cube"."""
+
+
+def _single_color_bounds(text: str) -> dict[str, int]:
+    """Colours that normalised ``text`` names only as single cubes ("the green block"),
+    mapped to how many times it names them: the task may hold no more cubes of that colour."""
+    colors = Counter(c for _, c in _color_mentions(text))
+    single = Counter(_canon_color(m.group(1)) for m in SINGLE_CUBE_RE.finditer(text))
+    return {c: n for c, n in sorted(single.items()) if colors[c] == n}
+
+
 def _account_named(text: str, schema: TaskSchema) -> list[dict]:
     """Colours, then counts, patches, places and relations of normalised ``text`` against
     ``schema`` (:func:`rpg.schema.accounting.account`).
+
+    Returns:
+        The accounting record: one ``{"mention", "kind", "consumed_by"}`` per mention, the
+        colours first.
 
     Raises:
         UnaccountedMention: the first mention with no part in the schema.
@@ -268,7 +288,17 @@ def _account_named(text: str, schema: TaskSchema) -> list[dict]:
     missing = sorted({c for _, c in _color_mentions(text)} - {a.color for a in schema.assets})
     if missing:
         raise UnaccountedMention(f"the {', '.join(missing)} cube(s) it names have no place in that task")
-    return account(_regions(text), schema, COLOR_RE, _canon_color)
+    cubes = Counter(a.color for a in schema.assets if a.kind != "goal_patch" and a.color)
+    for color, n in _single_color_bounds(text).items():
+        if cubes[color] > n:
+            raise UnaccountedMention(f"it names {'one' if n == 1 else n} {color} cube{'s' if n > 1 else ''} but the task "
+                                     f"read has {cubes[color]}")
+    named = dict.fromkeys(c for _, c in _color_mentions(text))
+    record = [{"mention": c, "kind": "color",
+               "consumed_by": ", ".join(a.name for a in schema.assets if a.color == c)} for c in named]
+    record += [{"mention": a.label, "kind": "label", "consumed_by": a.name}
+               for a in schema.assets if a.kind == "semantic_cube" and a.label]
+    return record + account(_regions(text), schema, COLOR_RE, _canon_color)
 
 
 def check_mentions(instruction: str, schema: TaskSchema) -> list[dict]:
@@ -1798,12 +1828,95 @@ def recognize_move_to_region(f: Features, b: Builder) -> bool:
     return True
 
 
+STRUCTURE_BY_CUBE_RE = re.compile(
+    rf"(?P<head>.+?)\s+(?P<rel>(?:to\s+the\s+)?left\s+of|(?:to\s+the\s+)?right\s+of|in\s+front\s+of|behind|next\s+to|beside)"
+    rf"\s+the\s+(?P<c>{COLOR_RE})\s+(?:block|cube)(?:\s+on\s+the\s+table)?\s*[.!]?")
+"""A structure placed relative to one named cube: "build a tower of 3 green blocks to the left of the red block"."""
+
+_SIDE = {"left": (LeftOf, 1, -1.0), "right": (RightOf, 1, 1.0), "front": (InFrontOf, 0, 1.0), "behind": (Behind, 0, -1.0)}
+"""Relation word -> (predicate, axis, side of the structure the reference cube goes to: +1 larger coordinate)."""
+
+
+def _recolored(schema: TaskSchema, color: str) -> TaskSchema:
+    """``schema`` with its cubes of ``color`` (a colour its text left open) given the next
+    default colour it does not use, renamed consistently."""
+    used = {a.color for a in schema.assets}
+    spare = iter(c for c in DEFAULT_COLORS if c not in used and c != color)
+    mapping, doc = {}, schema.model_dump()
+    for a in doc["assets"]:
+        if a["color"] == color:
+            a["color"] = next(spare)
+            mapping[a["name"]] = a["name"].replace(color, a["color"], 1)
+            a["name"] = mapping[a["name"]]
+    if not mapping:
+        return schema
+    doc["goal"] = schema.goal.rename(mapping)
+    doc["goal_layout"] = {mapping.get(k, k): v for k, v in doc["goal_layout"].items()}
+    init = doc["initial_state"]
+    init["structures"] = [[mapping.get(n, n) for n in st] for st in init["structures"]]
+    init["orientations"] = {mapping.get(k, k): v for k, v in init["orientations"].items()}
+    doc["goal_summary"] = re.sub(r"\b(" + "|".join(map(re.escape, mapping)) + r")\b", lambda m: mapping[m.group(1)],
+                                 doc["goal_summary"])
+    return TaskSchema.model_validate(doc)
+
+
+def recognize_structure_by_cube(f: Features, b: Builder) -> bool:
+    """A structure stated on its own, then placed relative to a cube the structure does not
+    contain ("a tower of three green blocks to the left of the red block", "put 3 blue
+    blocks in a line behind the yellow block").  The structure is read by the whole parser
+    (its own clause); every cube of it must stand in the relation to the reference cube
+    (next to: a tower's base beside it).  Clauses compose: nothing of either part is
+    dropped or merged."""
+    m = STRUCTURE_BY_CUBE_RE.fullmatch(f.text)
+    if m is None or not re.search(STRUCTURE_RE, m.group("head")) or re.search(
+            r"\b(?:left|right|front|behind|back|next|beside|between|near|around|@region_[a-z_]+)\b", m.group("head")):
+        return False
+    try:
+        head = parse(m.group("head"))
+    except BadInput:
+        return False
+    ref_color = _canon_color(m.group("c"))
+    if any(a.kind == "goal_patch" for a in head.assets) or ref_color in {c for _, c in _color_mentions(m.group("head"))}:
+        return False  # the reference would be one of the structure's own cubes
+    head = _recolored(head, ref_color)
+    cubes = [a for a in head.assets if a.kind != "goal_patch"]
+    xy = np.array([head.goal_layout[a.name].position[:2] for a in cubes])
+    rel = m.group("rel")
+    word = next((w for w in ("left", "right", "front", "behind") if w in rel), "next")
+    gap = C.CUBE_EDGE + 0.03
+    if word == "next":
+        if np.ptp(xy, axis=0).max() > 1e-6:
+            return False  # "a line next to the red block": which of its cubes is not said
+        ref_xy = (xy[0][0], xy[0][1] - gap)
+        base = min(cubes, key=lambda a: head.goal_layout[a.name].position[2]).name
+        rels = [NextTo(base, "@ref")]
+    else:
+        cls, axis, side = _SIDE[word]
+        ref_xy = xy.mean(axis=0)
+        ref_xy[axis] = (xy[:, axis].max() + gap) if side > 0 else (xy[:, axis].min() - gap)
+        if np.abs(xy[:, 1 - axis] - ref_xy[1 - axis]).max() > C.RELATION_MAX_OFF_AXIS - 0.02:
+            return False  # a structure too wide to stand wholly on one side of one cube
+        rels = [cls(a.name, "@ref") for a in cubes]
+    for a in head.assets:
+        b._names[a.name] += 1
+        b.assets.append(a.model_copy())
+    b.place({n: p.pose() for n, p in head.goal_layout.items()})
+    ref = b.cube(ref_color)
+    b.place({ref: Pose((float(ref_xy[0]), float(ref_xy[1]), C.TABLE_TOP_Z + C.CUBE_EDGE / 2))})
+    b.preds.extend(head.goal.conjuncts() + [r.rename({"@ref": ref}) for r in rels])
+    b.structures, b.orientations = [list(x) for x in head.initial_state.structures], dict(head.initial_state.orientations)
+    b.reasoning, b.primitives = head.reasoning, list(head.primitives) + ["place"]
+    b.summary = [head.goal_summary, f"{rels[0].a} {rel.removeprefix('to the ')} {ref}" if word == "next"
+                 else f"every cube of it {rel.removeprefix('to the ')} {ref}"]
+    return True
+
+
 RECOGNIZERS = (
     recognize_move_to_region,
     recognize_tower_clauses,
     recognize_temporal, recognize_each_patch, recognize_matching_patches, recognize_rotate, recognize_equation, recognize_spell, recognize_pyramid,
     recognize_cube_block, recognize_wall, recognize_grid, recognize_circle, recognize_piles, recognize_ordered_line,
-    recognize_sorted_tower, recognize_tower_sequence, recognize_relational,
+    recognize_sorted_tower, recognize_tower_sequence, recognize_structure_by_cube, recognize_relational,
 )
 
 
