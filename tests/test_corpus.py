@@ -8,6 +8,7 @@ not place.
 
 from __future__ import annotations
 
+import re
 import sys
 from collections import Counter
 from pathlib import Path
@@ -53,6 +54,7 @@ def test_corpus_no_silent_errors_and_90_percent_correct(capsys):
     assert outcomes["correct"] / n >= 0.90
     for msg in refusals:  # a refusal names the word or mention it could not place, and a way out
         assert "'" in msg or '"' in msg, msg
+        assert re.search(r"\b(?:[Rr]ephrase|say|name a|use --model)\b", msg), msg
 
 
 @pytest.mark.parametrize("expected,actual,ok", [

@@ -29,7 +29,7 @@ def classify(entry: dict) -> tuple[str, str]:
     try:
         schema = check_feasibility(parse(entry["text"]))
     except (ParseError, InfeasibleTask) as exc:
-        return "refused", str(exc).splitlines()[0][:160]
+        return "refused", str(exc).splitlines()[0]
     except Exception as exc:  # a crash is neither a refusal nor a task: count it as wrong
         return "wrong", f"crash: {type(exc).__name__}: {exc}"[:160]
     got = meaning(schema)
@@ -45,7 +45,7 @@ def run(show: str = "wrong") -> Counter:
         counts[outcome] += 1
         by_source.setdefault(e["source"], Counter())[outcome] += 1
         if show in (outcome, "all"):
-            print(f"[{outcome}] {e['text']}\n    expected: {e['meaning']}\n    got:      {detail}")
+            print(f"[{outcome}] {e['text']}\n    expected: {e['meaning']}\n    got:      {detail[:160]}")
     n = sum(counts.values())
     print(f"\n{'source':16s} {'n':>4s} {'correct':>8s} {'refused':>8s} {'wrong':>6s}")
     for src, c in sorted(by_source.items()):
