@@ -433,6 +433,48 @@ def render_cmd(
         out.print(f"{k}: {v or 'skipped (no headless OpenGL)'}")
 
 
+@app.command("diversity")
+def diversity_cmd(
+    library: Annotated[Path, typer.Argument(help="A library directory or manifest.")],
+    by: Annotated[str, typer.Option("--by", help="Contributor groups: author, family or tag:KEY (e.g. tag:complexity).")] = "author",
+    embedding: Annotated[str, typer.Option("--embedding", help="wordllama (offline, default), tfidf, or st:PATH (a local sentence-transformers model).")] = "wordllama",
+    output: Annotated[Path | None, typer.Option("-o", "--output", help="Directory for summary.json and the plots.")] = None,
+    suggest: Annotated[bool, typer.Option("--suggest", help="List what the library covers least.")] = False,
+    seed: Annotated[int, typer.Option("--seed", help="Seed of the contributor orderings and the t-SNE map.")] = 0,
+    as_json: Annotated[bool, typer.Option("--json", help="Print the summary as JSON.")] = False,
+) -> None:
+    """How much of the task space a library covers, by contributor (offline)."""
+    from rich.table import Table
+
+    from rpg.diversity import analyze
+
+    with _reported_errors():
+        s = analyze(library, by=by, embedding=embedding, out_dir=output, seed=seed)
+    if as_json:
+        print(json.dumps(s, indent=2, sort_keys=True))
+        return
+    table = Table(title=f"diversity of {library} by {by} ({embedding}): {s['tasks']} tasks, "
+                        f"mean pairwise cosine distance {s['mean_pairwise_distance']}")
+    for col in ("group", "tasks", "diversity"):
+        table.add_column(col)
+    for g, n in s["groups"].items():
+        d = s["per_group"][g]
+        table.add_row(esc(g), str(n), "-" if d is None else f"{d:.3f}")
+    out.print(table)
+    pooled = s["pooled"]
+    out.print(f"pooled: 1 {by} {pooled[0]['mean']} -> {pooled[-1]['contributors']} {pooled[-1]['mean']} "
+              f"(95% interval {pooled[-1]['lo']}..{pooled[-1]['hi']})", highlight=False)
+    st = s["structural"]
+    for key in ("goal_kinds", "predicate_types", "asset_classes"):
+        out.print(f"{key.replace('_', ' ')}: entropy {st[key]['entropy_bits']:.2f} bits, "
+                  f"coverage {st[key]['coverage'] * 100:.0f}%", highlight=False)
+    if suggest:
+        for key, values in s["suggest"].items():
+            out.print(f"least covered {key.replace('_', ' ')}: {', '.join(values)}", highlight=False)
+    if output is not None:
+        out.print(f"wrote {output / 'summary.json'} and {', '.join(s['plots'].values())}")
+
+
 @app.command("schema")
 def schema_cmd(
     output: Annotated[Path, typer.Option("-o", "--output")] = Path("schemas/task.schema.json"),

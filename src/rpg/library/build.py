@@ -46,6 +46,7 @@ class Entry(BaseModel):
     instruction: str | None = None
     session: str | None = Field(None, description="Session YAML, relative to the manifest.")
     seed: int = 0
+    author: str | None = Field(None, description="Who wrote the entry (groups `rpg diversity --by author`).")
     content_hash: str | None = None
 
     @model_validator(mode="after")
