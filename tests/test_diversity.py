@@ -115,3 +115,23 @@ def test_cli_diversity_and_bad_grouping(tmp_path):
     assert bad.returncode == 2 and "--by must be" in bad.stderr and "Traceback" not in bad.stderr
     bad = subprocess.run([*rpg, "--embedding", "bert"], capture_output=True, text=True, env=env)
     assert bad.returncode == 2 and "unknown embedding" in bad.stderr
+
+
+def test_authors_recorded_by_compile_group_a_library_directory(tmp_path):
+    """`rpg compile --author` (or RPG_AUTHOR) records the author in task.yaml provenance;
+    `rpg diversity DIR --by author` groups by it; without any author nothing is recorded."""
+    env = {**os.environ, "COLUMNS": "200", "GIT_CONFIG_GLOBAL": os.devnull, "GIT_CONFIG_SYSTEM": os.devnull}
+    env.pop("RPG_AUTHOR", None)
+    lib = tmp_path / "lib"
+    runs = [("Stack the red block on the blue block", ["--author", "ada"], {}),
+            ("Build a tower of 3 green blocks", [], {"RPG_AUTHOR": "bo"}),
+            ("Arrange 3 blocks in a line from left to right: red, green, blue", [], {})]
+    for text, args, extra in runs:
+        proc = subprocess.run([sys.executable, "-m", "rpg.cli", "compile", text, "-o", str(lib), *args],
+                              capture_output=True, text=True, env={**env, **extra}, cwd=tmp_path)
+        assert proc.returncode == 0, proc.stderr
+    authors = {r.schema.instruction: r.author for r in collect(lib)}
+    assert authors == {runs[0][0]: "ada", runs[1][0]: "bo", runs[2][0]: "unknown"}
+    docs = [yaml.safe_load(p.read_text()) for p in sorted(lib.rglob("task.yaml"))]
+    assert sum("author" in d["provenance"] for d in docs) == 2
+    assert analyze(lib, by="author", embedding="tfidf", orderings=10)["groups"] == {"ada": 1, "bo": 1, "unknown": 1}

@@ -73,7 +73,8 @@ def mention_accounting(schema: TaskSchema) -> list[dict]:
         return [{"mention": schema.instruction[:200], "kind": "unaccounted", "consumed_by": str(exc)}]
 
 
-def task_document(schema: TaskSchema, seed: int, backend: str, model: str | None, gates: list[dict]) -> dict:
+def task_document(schema: TaskSchema, seed: int, backend: str, model: str | None, gates: list[dict],
+                  author: str | None = None) -> dict:
     """The content of ``task.yaml`` (without its hash): the schema, retrieval tags, the
     mention accounting (:func:`mention_accounting`) and provenance."""
     doc = {
@@ -90,15 +91,17 @@ def task_document(schema: TaskSchema, seed: int, backend: str, model: str | None
             "gates": {g["gate"]: g["status"] for g in gates},
         },
     }
+    if author:  # recorded only when known, so a library built without authors keeps its hashes
+        doc["provenance"]["author"] = author
     return doc
 
 
 def write_artifact_files(directory: Path, schema: TaskSchema, seed: int, backend: str, model: str | None,
-                         gates: list[dict], log: list[str]) -> str:
+                         gates: list[dict], log: list[str], author: str | None = None) -> str:
     """Write task.yaml, validation.log and validation.json beside the code; return the content hash."""
     code = (directory / "code.py").read_text()
     goal_code = (directory / "goal_state_code.py").read_text()
-    doc = task_document(schema, seed, backend, model, gates)
+    doc = task_document(schema, seed, backend, model, gates, author)
     digest = content_hash(doc, code, goal_code)
     doc["content_hash"] = digest
     (directory / "task.yaml").write_text(yaml.safe_dump(doc, sort_keys=False, allow_unicode=True, width=100))

@@ -64,6 +64,24 @@ def _reported_errors():
         _fail(str(exc))
 
 
+def default_author(author: str | None) -> str | None:
+    """Who is authoring: ``--author``, else ``RPG_AUTHOR``, else git's ``user.name``, else None."""
+    if author:
+        return author
+    if os.environ.get("RPG_AUTHOR"):
+        return os.environ["RPG_AUTHOR"]
+    import subprocess
+
+    try:
+        name = subprocess.run(["git", "config", "user.name"], capture_output=True, text=True, timeout=5).stdout.strip()
+    except (OSError, subprocess.SubprocessError):
+        return None
+    return name or None
+
+
+AUTHOR_HELP = "Who wrote it (recorded in task.yaml provenance); default RPG_AUTHOR, else git's user.name."
+
+
 def make_llm_client(model: str | None):
     """The model client for ``--model`` (None for the builtin front end); tests replace it
     with a client that holds litellm mock responses."""
@@ -87,6 +105,7 @@ def compile_cmd(
     codegen: Annotated[str, typer.Option("--codegen", help="builtin (the emitter) or llm (the model writes the code; needs --model).")] = "builtin",
     library: Annotated[Path, typer.Option("--library", help="Task library that --codegen llm retrieves reference tasks from.")] = Path("library"),
     as_json: Annotated[bool, typer.Option("--json", help="Print one JSON document.")] = False,
+    author: Annotated[str | None, typer.Option("--author", help=AUTHOR_HELP)] = None,
 ) -> None:
     """Compile INSTRUCTION into a validated task artifact OUTPUT/<slug>/."""
     _prestart_worker()
@@ -96,7 +115,7 @@ def compile_cmd(
     with _reported_errors():
         result = compile_instruction(instruction, output, seed, frozenset(disable), model, replay=replay,
                                      builtin_first=builtin_first, llm=make_llm_client(model), codegen=codegen,
-                                     library=library)
+                                     library=library, author=default_author(author))
         if family and result.valid:
             from rpg.steer.family import create_family
 
@@ -134,6 +153,7 @@ def steer_cmd(
     replay: Annotated[Path | None, typer.Option("--replay", help="Re-apply a recorded model edit (llm_log.jsonl) offline.")] = None,
     disable: Annotated[list[str], typer.Option("--disable", help="Switch a gate off (ablation).")] = [],  # noqa: B006
     as_json: Annotated[bool, typer.Option("--json", help="Print one JSON document.")] = False,
+    author: Annotated[str | None, typer.Option("--author", help=AUTHOR_HELP)] = None,
 ) -> None:
     """Classify EDIT, pick the version it builds on, recompile and record a new version."""
     _prestart_worker()
@@ -142,7 +162,7 @@ def steer_cmd(
     model = model or os.environ.get("RPG_MODEL") or None
     with _reported_errors():
         r = steer(family, edit, seed, frozenset(disable), llm=make_llm_client(model) if replay is None else None,
-                  replay=replay)
+                  replay=replay, author=default_author(author))
     if as_json:
         print(json.dumps(r.to_json(), indent=2))
     else:

@@ -112,13 +112,14 @@ def _log_line(g: dict) -> str:
 
 def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[str] = frozenset(),
           backend: str = "builtin", model: str | None = None, name: str | None = None,
-          extra_files=None, coder=None) -> CompileResult:
+          extra_files=None, coder=None, author: str | None = None) -> CompileResult:
     """Passes 2-4 on a schema: generate, validate, repair; write the artifact atomically.
 
     ``extra_files`` (name -> text, or a callable returning that once the code exists, e.g.
     the model record ``llm_log.jsonl``) are written into the artifact too; they are not part
     of its content hash.  ``coder`` (an :class:`rpg.codegen.llm.LLMCoder`) writes the code
-    instead of the builtin emitter, and its fix agents repair it.
+    instead of the builtin emitter, and its fix agents repair it.  ``author`` (who wrote the
+    task) is recorded in the provenance when given.
     """
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
@@ -173,7 +174,7 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
             schema = repaired
         valid = gates_passed(gates)
         log.append("result: VALID" if valid else "result: REJECTED")
-        digest = write_artifact_files(tmp, schema, seed, backend, model, gates, log)
+        digest = write_artifact_files(tmp, schema, seed, backend, model, gates, log, author)
         extras = extra_files() if callable(extra_files) else extra_files
         for fname, text in sorted((extras or {}).items()):
             (tmp / fname).write_text(text)
@@ -190,7 +191,7 @@ def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int
                         disabled: frozenset[str] = frozenset(), model: str | None = None,
                         name: str | None = None, llm=None, replay: str | Path | None = None,
                         builtin_first: bool = False, codegen: str = "builtin",
-                        library: str | Path | None = "library") -> CompileResult:
+                        library: str | Path | None = "library", author: str | None = None) -> CompileResult:
     """Compile an instruction into a task artifact under ``out_dir/<slug>/`` (or ``out_dir/<name>/``).
 
     Args:
@@ -202,6 +203,8 @@ def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int
             only for what the builtin parser cannot read.
         codegen: ``builtin`` (the emitter) or ``llm`` (the model writes the code, grounded
             in the API docs, common errors and reference tasks from ``library``).
+        author: who wrote the instruction, recorded in ``task.yaml`` provenance (groups
+            ``rpg diversity --by author``); None records nothing.
 
     Raises:
         ParseError: the builtin front end cannot read the instruction.
@@ -256,7 +259,8 @@ def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int
         return {"llm_log.jsonl": llm.log_text(instruction)} if llm is not None and llm.records else None
 
     return build(schema, Path(out_dir), seed, frozenset(disabled), backend=backend,
-                 model=llm.model if llm is not None else None, name=name, extra_files=extra, coder=coder)
+                 model=llm.model if llm is not None else None, name=name, extra_files=extra, coder=coder,
+                 author=author)
 
 
 def revalidate(directory: str | Path, disabled: frozenset[str] = frozenset()) -> CompileResult:

@@ -136,6 +136,6 @@ def suggestions(structural: dict, k: int = 5) -> dict[str, list[str]]:
     first, then the rarest): what a curator could author next."""
     out = {}
     for key in ("goal_kinds", "predicate_types", "asset_classes"):
-        counts = structural[key]["counts"]
+        counts = {v: n for v, n in structural[key]["counts"].items() if v != "other"}  # "other" is no kind to author
         out[key] = sorted(counts, key=lambda v: (counts[v], v))[:k]
     return out

@@ -110,7 +110,7 @@ def build_entry(entry: dict, out_dir: str, base_dir: str) -> dict:
     report: dict = {"name": e.name, "kind": e.kind, "expected": e.content_hash}
     try:
         if e.kind == "task":
-            r = compile_instruction(e.instruction, out_dir, e.seed, name=e.name)
+            r = compile_instruction(e.instruction, out_dir, e.seed, name=e.name, author=e.author)
             report.update(status="valid" if r.valid else "rejected", content_hash=r.content_hash,
                           repairs=[x.operator for x in r.schema.repairs],
                           gates={g["gate"]: g["status"] for g in r.gates}, path=str(r.path))

@@ -276,7 +276,7 @@ def recolor_schema(schema: TaskSchema, old: str, new: str) -> TaskSchema:
 
 
 def steer(family: str | Path, edit: str | None, seed: int | None = None, disabled: frozenset[str] = frozenset(),
-          llm=None, replay: str | Path | None = None) -> SteerResult:
+          llm=None, replay: str | Path | None = None, author: str | None = None) -> SteerResult:
     """Apply an edit to a family (a compiled task becomes v0 of a new family first).
 
     With ``llm`` (an :class:`rpg.schema.llm.LLMClient`) the model classifies the edit and
@@ -336,7 +336,7 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
             return result
         vid = len(hist.versions)
         compiled = build(schema, path, seed, disabled, backend=backend, model=llm.model if llm else None,
-                         name=f"v{vid}", extra_files=extra)
+                         name=f"v{vid}", extra_files=extra, author=author)
         result.compile = compiled
         if not compiled.valid:
             result.notes.append(f"validation failed after repair; the attempt is in {compiled.path}")
