@@ -30,8 +30,8 @@ def chromium():
 @pytest.mark.slow
 def test_gallery_has_every_card_and_image(chromium, tmp_path):
     site = tmp_path / "site"
-    proc = subprocess.run([sys.executable, "-m", "rpg.cli", "report", str(ROOT / "library"), "-o", str(site)],
-                          capture_output=True, text=True)
+    proc = subprocess.run([sys.executable, "-m", "rpg.cli", "report", str(ROOT / "library"), "-o", str(site),
+                           "--diversity", "family"], capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
     lib = ROOT / "library"
     expected = {d.name for d in lib.iterdir() if (d / "task.yaml").is_file()}
@@ -45,3 +45,8 @@ def test_gallery_has_every_card_and_image(chromium, tmp_path):
     assert m, dom[:500]
     assert int(m.group(1)) == int(m.group(2)) == 2 * len(expected)
     assert dom.count("class=\"pass\"") >= 8 * len(expected)
+    page = subprocess.run([chromium, *CHROMIUM_FLAGS, f"--user-data-dir={tmp_path / 'profile2'}", "--virtual-time-budget=10000",
+                           "--dump-dom", (site / "diversity.html").as_uri()], capture_output=True, text=True, timeout=120).stdout
+    assert 'id="diversity-link"' in dom and 'id="overall"' in page
+    assert len(re.findall(r"<tr><td>", page)) == len({c.split("-v")[0] for c in cards})
+    assert {p.name for p in (site / "diversity").iterdir()} >= {"summary.json", "pooled.png", "cumulative.png", "tsne.png"}

@@ -307,12 +307,13 @@ def build_cmd(
 def report_cmd(
     library: Annotated[Path, typer.Argument(help="A library directory (tasks and families).")],
     output: Annotated[Path, typer.Option("-o", "--output", help="Site directory to write.")] = Path("site"),
+    diversity: Annotated[str | None, typer.Option("--diversity", help="Add a diversity page grouped by author, family or tag:KEY.")] = None,
 ) -> None:
     """Write a static HTML gallery: one card per task and family version."""
     from rpg.library.report import write_report
 
     with _reported_errors():
-        page = write_report(library, output)
+        page = write_report(library, output, diversity=diversity)
     out.print(f"wrote {page}")
 
 

@@ -29,6 +29,7 @@ body{font-family:system-ui,sans-serif;margin:1.5rem;background:#fafafa;color:#22
 h1 small{font-weight:normal;color:#666;font-size:.9rem}
 </style></head>
 <body><h1>{{ title }} <small>{{ cards|length }} cards</small></h1>
+{% if diversity %}<p><a id="diversity-link" href="diversity.html">Task diversity by {{ diversity }}</a></p>{% endif %}
 <div class="grid">
 {% for c in cards %}<section class="card" id="{{ c.id }}" data-kind="{{ c.kind }}">
 <h2>{{ c.title }}</h2>
@@ -49,6 +50,25 @@ window.addEventListener("load", function () {
   document.body.dataset.images = imgs.length;
 });
 </script>
+</body></html>
+""", autoescape=True)
+
+
+DIVERSITY_PAGE = jinja2.Template("""<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>{{ title }}: diversity</title>
+<style>body{font-family:system-ui,sans-serif;margin:1.5rem;color:#222}table{border-collapse:collapse}
+td,th{border:1px solid #ddd;padding:2px 8px;text-align:left}img{max-width:48%;margin:.3rem}</style></head>
+<body><h1>{{ title }}: task diversity by {{ s.by }}</h1>
+<p><a href="index.html">back to the gallery</a></p>
+<p>{{ s.tasks }} tasks, embedding {{ s.embedding }}: mean pairwise cosine distance
+<b id="overall">{{ s.mean_pairwise_distance }}</b>; all {{ s.pooled[-1].contributors }} groups pooled
+{{ s.pooled[-1].mean }}, one group {{ s.pooled[0].mean }} (95% interval {{ s.pooled[0].lo }}..{{ s.pooled[0].hi }}).</p>
+<table id="groups"><tr><th>{{ s.by }}</th><th>tasks</th><th>diversity</th></tr>
+{% for g, n in s.groups.items() %}<tr><td>{{ g }}</td><td>{{ n }}</td><td>{{ s.per_group[g] if s.per_group[g] is not none else "-" }}</td></tr>
+{% endfor %}</table>
+<p>{% for key, f in structural %}{{ key }}: entropy {{ "%.2f"|format(f.entropy_bits) }} bits, coverage {{ "%.0f"|format(f.coverage * 100) }}%<br>{% endfor %}</p>
+<p>least covered: {% for key, vals in s.suggest.items() %}{{ key }}: {{ vals|join(", ") }}; {% endfor %}</p>
+<div>{% for name, file in s.plots.items() %}<img src="diversity/{{ file }}" alt="{{ name }} plot">{% endfor %}</div>
 </body></html>
 """, autoescape=True)
 
@@ -91,8 +111,12 @@ def collect_cards(library: Path, site: Path) -> list[dict]:
     return cards
 
 
-def write_report(library: str | Path, site: str | Path, title: str | None = None) -> Path:
+def write_report(library: str | Path, site: str | Path, title: str | None = None, diversity: str | None = None,
+                 embedding: str = "wordllama") -> Path:
     """Write ``site/index.html`` (and ``site/img/``); return the page's path.
+
+    With ``diversity`` (a grouping: ``author``, ``family`` or ``tag:KEY``) also write
+    ``site/diversity.html`` and its plots under ``site/diversity/`` (:func:`rpg.diversity.analyze`).
 
     Raises:
         ValueError: ``library`` is not a directory.
@@ -102,6 +126,13 @@ def write_report(library: str | Path, site: str | Path, title: str | None = None
         raise ValueError(f"{library} is not a directory")
     (site / "img").mkdir(parents=True, exist_ok=True)
     cards = collect_cards(library, site)
+    title = title or f"rpg task library: {library.resolve().name}"
+    if diversity:
+        from rpg.diversity import analyze
+
+        summary = analyze(library, by=diversity, embedding=embedding, out_dir=site / "diversity")
+        structural = [(k.replace("_", " "), summary["structural"][k]) for k in ("goal_kinds", "predicate_types", "asset_classes")]
+        (site / "diversity.html").write_text(DIVERSITY_PAGE.render(title=title, s=summary, structural=structural))
     page = site / "index.html"
-    page.write_text(PAGE.render(title=title or f"rpg task library: {library.resolve().name}", cards=cards))
+    page.write_text(PAGE.render(title=title, cards=cards, diversity=diversity))
     return page
