@@ -135,3 +135,21 @@ def test_authors_recorded_by_compile_group_a_library_directory(tmp_path):
     docs = [yaml.safe_load(p.read_text()) for p in sorted(lib.rglob("task.yaml"))]
     assert sum("author" in d["provenance"] for d in docs) == 2
     assert analyze(lib, by="author", embedding="tfidf", orderings=10)["groups"] == {"ada": 1, "bo": 1, "unknown": 1}
+
+
+def test_steer_records_the_author_in_the_family_history(tmp_path):
+    """An edit's author goes into the new version's task.yaml and its history entry (and its
+    lineage hash); versions without an author keep the history format and hashes they had."""
+    from rpg.compiler import compile_instruction
+    from rpg.steer import Family, steer
+
+    art = compile_instruction("Build a tower of 3 green blocks", tmp_path).path
+    r = steer(art, "make it 4 blocks tall", author="ada")
+    assert r.valid
+    fam = Family(art)
+    hist = fam.load()
+    assert [v.author for v in hist.versions] == [None, "ada"]
+    text = (art / "family.yaml").read_text()
+    assert text.count("author:") == 1
+    assert all(v["ok"] for v in fam.verify())
+    assert {r.name: r.author for r in collect(tmp_path)} == {f"{art.name}@v0": "unknown", f"{art.name}@v1": "ada"}

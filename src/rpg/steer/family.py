@@ -73,9 +73,11 @@ class TaskSnapshot(BaseModel):
     preserve_goals: bool = False
     lineage_hash: str = ""
     created: str = Field("", description="UTC time recorded (not hashed).")
+    author: str | None = Field(None, description="Who wrote the edit (from the version's task.yaml provenance); "
+                                                 "hashed when known, absent when not.")
 
     def record_digest(self) -> str:
-        doc = self.model_dump(exclude={"lineage_hash", "created"})
+        doc = self.model_dump(exclude={"lineage_hash", "created"} | (set() if self.author else {"author"}))
         return hashlib.sha256(json.dumps(doc, sort_keys=True, separators=(",", ":")).encode()).hexdigest()
 
 
@@ -183,7 +185,11 @@ class Family:
 
     def save(self, hist: FamilyHistory) -> None:
         """Write the history atomically."""
-        text = yaml.safe_dump(hist.model_dump(), sort_keys=False, allow_unicode=True, width=100)
+        doc = hist.model_dump()
+        for v in doc["versions"]:
+            if v.get("author") is None:
+                v.pop("author", None)  # histories without authors read as before
+        text = yaml.safe_dump(doc, sort_keys=False, allow_unicode=True, width=100)
         fd, tmp = tempfile.mkstemp(prefix=".family-", suffix=".yaml", dir=self.path)
         with os.fdopen(fd, "w") as fh:
             fh.write(text)
@@ -244,7 +250,8 @@ def snapshot_of(directory: Path, version_id: int, description: str, parent: Task
         version_id=version_id, description=description, instruction=schema.instruction,
         assets_used=schema.assets_used(), goal_summary=schema.goal_summary, code_hash=code_hash(schema),
         content_hash=doc["content_hash"], parent=parent.version_id if parent else None, reference=reference,
-        intent=intent, parameters=parameters, **flags, created=_now())
+        intent=intent, parameters=parameters, **flags, created=_now(),
+        author=(doc.get("provenance") or {}).get("author"))
     snap.lineage_hash = lineage_hash(snap, parent.lineage_hash if parent else None)
     return snap
 
