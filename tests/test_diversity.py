@@ -153,3 +153,11 @@ def test_steer_records_the_author_in_the_family_history(tmp_path):
     assert text.count("author:") == 1
     assert all(v["ok"] for v in fam.verify())
     assert {r.name: r.author for r in collect(tmp_path)} == {f"{art.name}@v0": "unknown", f"{art.name}@v1": "ada"}
+
+
+def test_a_sentence_transformers_path_that_is_not_a_model_is_bad_input(tmp_path):
+    from rpg.diversity.embeddings import embed
+    from rpg.errors import BadInput
+
+    with pytest.raises(BadInput, match="not a sentence-transformers model directory"):
+        embed(["stack the red block"], f"st:{tmp_path / 'missing'}")
