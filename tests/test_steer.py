@@ -341,6 +341,14 @@ def test_edits_of_a_relation_task_change_the_relation(tmp_path):
     assert r.compile.schema.goal_summary == "tower bottom to top: yellow, red; blue left of yellow"
 
 
+def _steer_through(fam, steps):
+    """Apply (edit, expected intent, expected goal summary) steps in turn; each must be valid."""
+    for edit, intent, summary in steps:
+        r = steer(fam, edit)
+        assert (r.intent, r.valid) == (intent, True), (edit, r.intent, r.notes)
+        assert r.compile.schema.goal_summary == summary, edit
+
+
 def test_edits_of_a_patch_task(tmp_path):
     """Cubes on one goal patch, steered in its own terms: the patch's colour and shape, the
     number of cubes (Tweak), a named cube added (Extend); the cubes keep their colours."""
@@ -350,10 +358,7 @@ def test_edits_of_a_patch_task(tmp_path):
              ("Make the patch long", "tweak", "red on green_long_patch; blue on green_long_patch; green on green_long_patch"),
              ("Add a purple block", "extend",
               "red on green_long_patch; blue on green_long_patch; green on green_long_patch; purple on green_long_patch")]
-    for edit, intent, summary in steps:
-        r = steer(fam, edit)
-        assert (r.intent, r.valid) == (intent, True), (edit, r.intent, r.notes)
-        assert r.compile.schema.goal_summary == summary, edit
+    _steer_through(fam, steps)
 
 
 def test_edits_of_a_region_task(tmp_path):
@@ -367,10 +372,7 @@ def test_edits_of_a_region_task(tmp_path):
              ("Swap them", "modify", "green on the right side of the workspace; blue in the back left corner of the workspace"),
              ("Add a yellow block next to the blue one", "extend",
               "green on the right side of the workspace; blue in the back left corner of the workspace; yellow next to blue")]
-    for edit, intent, summary in steps:
-        r = steer(fam, edit)
-        assert (r.intent, r.valid) == (intent, True), (edit, r.intent, r.notes)
-        assert r.compile.schema.goal_summary == summary, edit
+    _steer_through(fam, steps)
     fam2 = compile_instruction("Move the yellow cube onto the blue target", tmp_path / "patch").path
     r = steer(fam2, "Make the target green")
     assert (r.intent, r.valid, r.compile.schema.goal_summary) == ("tweak", True, "yellow on green_patch")

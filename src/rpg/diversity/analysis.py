@@ -8,7 +8,6 @@ t-SNE map of the task embeddings coloured by contributor).
 from __future__ import annotations
 
 import json
-import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -52,11 +51,6 @@ class TaskRecord:
         raise BadInput(f"--by must be author, family or tag:KEY, not {by!r}")
 
 
-def _versions(d: Path) -> list[Path]:
-    vs = [p for p in d.iterdir() if p.is_dir() and re.fullmatch(r"v\d+", p.name) and (p / "task.yaml").is_file()]
-    return sorted(vs, key=lambda p: int(p.name[1:]))
-
-
 def _record(path: Path, name: str, author: str | None) -> TaskRecord:
     schema, doc = load_artifact(path)
     who = author or (doc.get("provenance") or {}).get("author") or UNKNOWN_AUTHOR
@@ -64,36 +58,31 @@ def _record(path: Path, name: str, author: str | None) -> TaskRecord:
 
 
 def collect(target: str | Path) -> list[TaskRecord]:
-    """Every task of a library directory or manifest, in library order (a family's
-    versions in order), with its author (the manifest entry's ``author``, else the task's
-    provenance, else ``unknown``).
+    """Every task of a library directory (directories by name) or manifest (its order), a
+    family's versions in order (:func:`rpg.library.report.library_entries`), with its author
+    (the manifest entry's ``author``, else the task's provenance, else ``unknown``).
 
     Raises:
         BadInput: the target is neither, or holds no task.
     """
+    from rpg.library.report import library_entries
+
     target = Path(target)
-    out: list[TaskRecord] = []
     if target.is_file():
         from rpg.library.build import load_manifest
 
-        manifest = load_manifest(target)
+        authors = {e.name: e.author for e in load_manifest(target).entries}
         base = target.parent
-        for e in manifest.entries:
-            d = base / e.name
-            if not d.is_dir():
-                raise BadInput(f"{d} is listed in {target} but not built; run 'rpg build {target}'")
-            dirs = _versions(d) if e.session else [d]
-            out += [_record(p, f"{e.name}@{p.name}" if e.session else e.name, e.author) for p in dirs]
+        missing = sorted(n for n in authors if not (base / n).is_dir())
+        if missing:
+            raise BadInput(f"{base / missing[0]} is listed in {target} but not built; run 'rpg build {target}'")
+        order = {n: i for i, n in enumerate(authors)}  # manifest order; a family's versions stay in order
+        entries = sorted((e for e in library_entries(base) if e[0] in order), key=lambda e: order[e[0]])
     elif target.is_dir():
-        for t in sorted(target.rglob("task.yaml")):
-            rel = t.parent.relative_to(target)
-            if any(part.startswith(".") for part in rel.parts):
-                continue  # .rejected/, staging and trash directories
-            name = "@".join(rel.parts) if re.fullmatch(r"v\d+", rel.name) else "/".join(rel.parts)
-            out.append(_record(t.parent, name, None))
-        out.sort(key=lambda r: (r.name.split("@")[0], int(r.name.split("@v")[1]) if "@v" in r.name else -1))
+        authors, entries = {}, library_entries(target)
     else:
         raise BadInput(f"{target} is neither a library directory nor a manifest")
+    out = [_record(d, name if v is None else f"{name}@v{v['version_id']}", authors.get(name)) for name, d, v in entries]
     if not out:
         raise BadInput(f"{target} holds no task")
     return out

@@ -90,22 +90,34 @@ def _card(directory: Path, site: Path, card_id: str, title: str, kind: str, line
             "repairs": [r["operator"] for r in prov.get("repairs", [])], "lineage": lineage}
 
 
-def collect_cards(library: Path, site: Path) -> list[dict]:
-    """Cards for every task artifact and family version directly under ``library``."""
-    cards = []
+def library_entries(library: Path) -> list[tuple[str, Path, dict | None]]:
+    """Every task artifact and family version directly under ``library``, in library order
+    (directories by name, a family's versions as its history lists them):
+    ``(entry name, version directory, history record or None for a plain task)``."""
+    out = []
     for d in sorted(p for p in Path(library).iterdir() if p.is_dir() and not p.name.startswith(".")):
         if (d / "family.yaml").is_file():
             hist = yamlio.load((d / "family.yaml").read_text())
-            for v in hist["versions"]:
-                ref = "none" if v["reference"] is None else f"v{v['reference']}"
-                parent = "none" if v["parent"] is None else f"v{v['parent']}"
-                lineage = (f"{v['intent']}; reference {ref}; parent {parent}; lineage {v['lineage_hash'][:12]}"
-                           + (f"; edit: {v['description']}" if v["version_id"] else ""))
-                cards.append(_card(d / f"v{v['version_id']}", site, f"{d.name}-v{v['version_id']}",
-                                   f"{d.name} v{v['version_id']}", "family_version", lineage))
+            out += [(d.name, d / f"v{v['version_id']}", v) for v in hist["versions"]]
         elif (d / "task.yaml").is_file():
+            out.append((d.name, d, None))
+    return out
+
+
+def collect_cards(library: Path, site: Path) -> list[dict]:
+    """Cards for every task artifact and family version directly under ``library``."""
+    cards = []
+    for name, d, v in library_entries(library):
+        if v is not None:
+            ref = "none" if v["reference"] is None else f"v{v['reference']}"
+            parent = "none" if v["parent"] is None else f"v{v['parent']}"
+            lineage = (f"{v['intent']}; reference {ref}; parent {parent}; lineage {v['lineage_hash'][:12]}"
+                       + (f"; edit: {v['description']}" if v["version_id"] else ""))
+            cards.append(_card(d, site, f"{name}-v{v['version_id']}", f"{name} v{v['version_id']}", "family_version",
+                               lineage))
+        else:
             try:
-                cards.append(_card(d, site, d.name, d.name, "task"))
+                cards.append(_card(d, site, name, name, "task"))
             except ArtifactError:
                 continue
     return cards

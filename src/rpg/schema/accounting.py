@@ -23,7 +23,7 @@ from functools import lru_cache
 from rpg.domain import predicates as P
 from rpg.errors import BadInput
 from rpg.schema.model import TaskSchema
-from rpg.schema.structures import STRUCTURE_RE, structure_of_word
+from rpg.schema.structures import STRUCTURE_KINDS, STRUCTURE_RE, structure_of_word
 
 CUBE_NOUNS = r"(?:block|cube|box|piece|object|one)s?"
 
@@ -49,20 +49,6 @@ RELATION_WORDS: tuple[tuple[str, str], ...] = (
     (r"\bfar\s+(?:away\s+)?from\b|\bapart\b", "far_from"),
 )
 """Relation words (normalised text) -> the goal predicates that can carry them (project)."""
-
-
-STRUCTURE_PREDICATES: dict[str, tuple[str, ...]] = {
-    "tower": ("stack", "on", "pyramid", "grid"),
-    "line": ("in_line", "reads", "sorted_by", "equation", "grid"),
-    "pyramid": ("pyramid",),
-    "grid": ("grid", "on_patch"),  # "square" also names a square goal patch
-    "block": ("grid",),
-    "circle": ("in_circle",),
-    "piles": ("piles",),
-}
-"""Structure kind a word names (:data:`rpg.schema.structures.STRUCTURE_WORDS`) -> the goal
-predicates that can carry it (a tower word is carried by any stacked structure; a row by a
-line, a sequence or a grid's row)."""
 
 
 class UnaccountedMention(BadInput):
@@ -114,7 +100,7 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
     for m in re.finditer(STRUCTURE_RE, text):
         if re.search(r"\b(?:the|that|this|its|their)\s+(?:[a-z]+\s+)?$", text[:m.start()]):
             continue  # "push the pile of red blocks": a reference to cubes, not a structure to build
-        out.append(Mention(m.group(0), "structure", predicates=STRUCTURE_PREDICATES[structure_of_word(m.group(1))]))
+        out.append(Mention(m.group(0), "structure", predicates=STRUCTURE_KINDS[structure_of_word(m.group(1))].carriers))
     each = re.search(r"\b(?:each|every|all)\s+(?:of\s+the\s+)?(?:(\d+)\s+)?corners?\b", text)
     if each:
         out.append(Mention(each.group(0), "place", count=int(each.group(1) or 4), region="corners"))

@@ -61,6 +61,7 @@ from rpg.errors import BadInput
 from rpg.schema import clauses, lexicon
 from rpg.schema.accounting import UnaccountedMention, account
 from rpg.schema.builder import DEFAULT_COLORS, DEFAULT_PATCH_COLOR, Builder
+from rpg.schema.edits import recolor
 from rpg.schema.model import RepairRecord, TaskSchema
 from rpg.schema.structures import STRUCTURE_RE
 
@@ -1837,29 +1838,6 @@ _SIDE = {"left": (LeftOf, 1, -1.0), "right": (RightOf, 1, 1.0), "front": (InFron
 """Relation word -> (predicate, axis, side of the structure the reference cube goes to: +1 larger coordinate)."""
 
 
-def _recolored(schema: TaskSchema, color: str) -> TaskSchema:
-    """``schema`` with its cubes of ``color`` (a colour its text left open) given the next
-    default colour it does not use, renamed consistently."""
-    used = {a.color for a in schema.assets}
-    spare = iter(c for c in DEFAULT_COLORS if c not in used and c != color)
-    mapping, doc = {}, schema.model_dump()
-    for a in doc["assets"]:
-        if a["color"] == color:
-            a["color"] = next(spare)
-            mapping[a["name"]] = a["name"].replace(color, a["color"], 1)
-            a["name"] = mapping[a["name"]]
-    if not mapping:
-        return schema
-    doc["goal"] = schema.goal.rename(mapping)
-    doc["goal_layout"] = {mapping.get(k, k): v for k, v in doc["goal_layout"].items()}
-    init = doc["initial_state"]
-    init["structures"] = [[mapping.get(n, n) for n in st] for st in init["structures"]]
-    init["orientations"] = {mapping.get(k, k): v for k, v in init["orientations"].items()}
-    doc["goal_summary"] = re.sub(r"\b(" + "|".join(map(re.escape, mapping)) + r")\b", lambda m: mapping[m.group(1)],
-                                 doc["goal_summary"])
-    return TaskSchema.model_validate(doc)
-
-
 def recognize_structure_by_cube(f: Features, b: Builder) -> bool:
     """A structure stated on its own, then placed relative to a cube the structure does not
     contain ("a tower of three green blocks to the left of the red block", "put 3 blue
@@ -1878,7 +1856,9 @@ def recognize_structure_by_cube(f: Features, b: Builder) -> bool:
     ref_color = _canon_color(m.group("c"))
     if any(a.kind == "goal_patch" for a in head.assets) or ref_color in {c for _, c in _color_mentions(m.group("head"))}:
         return False  # the reference would be one of the structure's own cubes
-    head = _recolored(head, ref_color)
+    if any(a.color == ref_color for a in head.assets):  # an open colour the parser chose: give it a spare one
+        used = {a.color for a in head.assets}
+        head = recolor(head, ref_color, next(c for c in DEFAULT_COLORS if c not in used))
     cubes = [a for a in head.assets if a.kind != "goal_patch"]
     xy = np.array([head.goal_layout[a.name].position[:2] for a in cubes])
     rel = m.group("rel")

@@ -6,9 +6,12 @@ A schema is immutable in practice: every edit returns a new, re-validated
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 from rpg.domain import constants as C
+from rpg.errors import BadInput
 from rpg.schema.model import PoseSpec, RepairRecord, TaskSchema
 
 
@@ -66,3 +69,39 @@ def move_into_workspace(schema: TaskSchema, failure: dict | None = None, stage: 
                         initial_state=init.model_dump(),
                         repairs=add_repair(schema, "MOVE_INTO_WORKSPACE",
                                            f"shifted the goal layout by {np.round(shift, 3).tolist()} m", stage))
+
+
+def recolor(schema: TaskSchema, old: str, new: str) -> TaskSchema:
+    """A colour tweak applied to any task (relations, patches, temporal order): every asset
+    of colour ``old`` becomes ``new``, renamed consistently in the goal, layout and rho_0.
+
+    Raises:
+        BadInput: the task has nothing of colour ``old``, or already uses ``new``.
+    """
+    names = {a.name for a in schema.assets}
+    hits = [a for a in schema.assets if a.color == old]
+    if not hits:
+        raise BadInput(f"the task has no {old} object; its colours are "
+                         f"{', '.join(sorted({a.color for a in schema.assets if a.color}))}")
+    if any(a.color == new for a in schema.assets):
+        raise BadInput(f"the task already has a {new} object; name the object to change more precisely")
+    mapping = {}
+    for a in hits:
+        renamed = re.sub(rf"^{re.escape(old)}(?=_|$)", new, a.name)
+        mapping[a.name] = renamed if renamed not in names else f"{new}_{a.name}"
+    doc = schema.model_dump()
+    for a in doc["assets"]:
+        if a["color"] == old:
+            a["color"], a["name"] = new, mapping[a["name"]]
+    doc["goal"] = schema.goal.rename(mapping)
+    doc["goal_layout"] = {mapping.get(k, k): v for k, v in doc["goal_layout"].items()}
+    init = doc["initial_state"]
+    init["structures"] = [[mapping.get(n, n) for n in st] for st in init["structures"]]
+    init["fixed"] = {mapping.get(k, k): v for k, v in init["fixed"].items()}
+    init["orientations"] = {mapping.get(k, k): v for k, v in init["orientations"].items()}
+    word = re.compile(rf"\b{re.escape(old)}\b")
+    for key in ("instruction", "goal_summary"):
+        doc[key] = word.sub(new, doc[key])
+    doc["paraphrases"] = [word.sub(new, x) for x in doc["paraphrases"]]
+    doc["name"] = word.sub(new, doc["name"])
+    return TaskSchema.model_validate(doc)

@@ -199,6 +199,9 @@ class StructureKind:
         spells: its cubes can spell a word.
         rainbow: a colour ordering of it recolours its cubes in gradient order.
         grouped: its cubes form groups (piles) that an ordering key sorts them into.
+        carriers: goal predicates that carry a mention of the kind's words (mention accounting:
+            a tower word is carried by any stacked structure, a row by a line, a sequence or a
+            grid's rows).
     """
 
     name: ClassVar[str]
@@ -213,6 +216,7 @@ class StructureKind:
     spells: ClassVar[bool] = False
     rainbow: ClassVar[bool] = False
     grouped: ClassVar[bool] = False
+    carriers: ClassVar[tuple[str, ...]] = ()
 
     def extract(self, parts: Parts, seq: Callable) -> TaskSpec | None:
         """The spec of a goal whose main predicate is this kind's, or None."""
@@ -253,6 +257,7 @@ class Tower(StructureKind):
     layout = staticmethod(layouts.stack_layout)
     min_cubes = 2
     sized_by_count = spells = rainbow = True
+    carriers = ("stack", "on", "pyramid", "grid")
 
     def extract(self, parts, seq):
         if parts.kinds == {Stack} and len(parts.all) == 1:
@@ -273,6 +278,7 @@ class Line(StructureKind):
     name, words, predicate, recognizer = "line", ("line", "row"), InLine, "recognize_ordered_line"
     layout = staticmethod(layouts.line_layout)
     keeps_ordering = sized_by_count = spells = True
+    carriers = ("in_line", "reads", "sorted_by", "equation", "grid")
 
     def extract(self, parts, seq):
         if not isinstance(parts.main, InLine) or not parts.kinds <= {InLine, SortedBy, Reads}:
@@ -313,6 +319,7 @@ class PyramidKind(StructureKind):
     name, words, predicate, recognizer = "pyramid", ("pyramid",), Pyramid, "recognize_pyramid"
     layout = staticmethod(layouts.pyramid_layout)
     keeps_ordering = layered = True
+    carriers = ("pyramid",)
 
     def extract(self, parts, seq):
         if isinstance(parts.main, Pyramid) and parts.kinds <= {Pyramid, SortedBy, LayersUniform}:
@@ -349,6 +356,7 @@ class GridKind(StructureKind):
     name, words, predicate, recognizer = "grid", ("grid", "square"), Grid, "recognize_grid"
     layout = staticmethod(layouts.grid_layout)
     keeps_ordering = True
+    carriers = ("grid", "on_patch")  # "square" also names a square goal patch
 
     def extract(self, parts, seq):
         m = parts.main
@@ -372,6 +380,7 @@ class Block(StructureKind):
     name, words, predicate, recognizer = "block", (), Grid, "recognize_cube_block"
     layout = staticmethod(layouts.grid_layout)
     layered = True
+    carriers = ("grid",)
 
     def extract(self, parts, seq):
         m = parts.main
@@ -400,6 +409,7 @@ class Circle(StructureKind):
     layout = staticmethod(layouts.circle_layout)
     min_cubes = 3
     sized_by_count = rainbow = True
+    carriers = ("in_circle",)
 
     def extract(self, parts, seq):
         if isinstance(parts.main, InCircle) and parts.kinds <= {InCircle, SortedBy}:
@@ -419,6 +429,7 @@ class PilesKind(StructureKind):
     name, words, predicate, recognizer = "piles", ("pile",), Piles, "recognize_piles"
     layout = staticmethod(layouts.cluster_layout)
     sized_by_count = grouped = True
+    carriers = ("piles",)
 
     def extract(self, parts, seq):
         m = parts.main

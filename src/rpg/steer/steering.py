@@ -18,7 +18,6 @@ hash) moves the head back to that version instead of duplicating it.
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Literal
@@ -27,7 +26,9 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from rpg.artifact import load_artifact
 from rpg.compiler import CompileResult, build
+from rpg.errors import BadInput
 from rpg.schema.builtin import parse
+from rpg.schema.edits import recolor
 from rpg.schema.feasibility import check_feasibility
 from rpg.schema.model import TaskSchema
 from rpg.steer.edits import (
@@ -168,7 +169,10 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     if ref_spec is None and plan.ops and all(o.op == "recolor" and "color" in o.params["select"] for o in plan.ops):
         schema = ref_schema
         for o in plan.ops:
-            schema = recolor_schema(schema, o.params["select"]["color"], o.params["to"]["color"])
+            try:
+                schema = recolor(schema, o.params["select"]["color"], o.params["to"]["color"])
+            except BadInput as exc:
+                raise SteerError(str(exc)) from None
         return schema, schema.instruction, "tweak"
     if ref_spec is None:
         raise SteerError(f"v{reference} ({ref_schema.goal_summary}) is not a structure the builtin steering edits in place; "
@@ -237,42 +241,6 @@ def llm_edit_schema(edit: str, intent: str, reference: TaskSchema, client) -> Ta
                                             f"Edit ({intent}; preserve {flags}): {edit}\n"
                                             "Answer with the complete TaskSchema of the edited task."}]
     return ask_validated(client, messages, "schema", TaskSchema.model_validate)
-
-
-def recolor_schema(schema: TaskSchema, old: str, new: str) -> TaskSchema:
-    """A colour tweak applied to any task (relations, patches, temporal order): every asset
-    of colour ``old`` becomes ``new``, renamed consistently in the goal, layout and rho_0.
-
-    Raises:
-        SteerError: the task has nothing of colour ``old``, or already uses ``new``.
-    """
-    names = {a.name for a in schema.assets}
-    hits = [a for a in schema.assets if a.color == old]
-    if not hits:
-        raise SteerError(f"the task has no {old} object; its colours are "
-                         f"{', '.join(sorted({a.color for a in schema.assets if a.color}))}")
-    if any(a.color == new for a in schema.assets):
-        raise SteerError(f"the task already has a {new} object; name the object to change more precisely")
-    mapping = {}
-    for a in hits:
-        renamed = re.sub(rf"^{re.escape(old)}(?=_|$)", new, a.name)
-        mapping[a.name] = renamed if renamed not in names else f"{new}_{a.name}"
-    doc = schema.model_dump()
-    for a in doc["assets"]:
-        if a["color"] == old:
-            a["color"], a["name"] = new, mapping[a["name"]]
-    doc["goal"] = schema.goal_predicate().rename(mapping).to_dict()
-    doc["goal_layout"] = {mapping.get(k, k): v for k, v in doc["goal_layout"].items()}
-    init = doc["initial_state"]
-    init["structures"] = [[mapping.get(n, n) for n in st] for st in init["structures"]]
-    init["fixed"] = {mapping.get(k, k): v for k, v in init["fixed"].items()}
-    init["orientations"] = {mapping.get(k, k): v for k, v in init["orientations"].items()}
-    word = re.compile(rf"\b{re.escape(old)}\b")
-    for key in ("instruction", "goal_summary"):
-        doc[key] = word.sub(new, doc[key])
-    doc["paraphrases"] = [word.sub(new, x) for x in doc["paraphrases"]]
-    doc["name"] = word.sub(new, doc["name"])
-    return TaskSchema.model_validate(doc)
 
 
 def steer(family: str | Path, edit: str | None, seed: int | None = None, disabled: frozenset[str] = frozenset(),
