@@ -115,6 +115,11 @@ def test_cli_diversity_and_bad_grouping(tmp_path):
     assert bad.returncode == 2 and "--by must be" in bad.stderr and "Traceback" not in bad.stderr
     bad = subprocess.run([*rpg, "--embedding", "bert"], capture_output=True, text=True, env=env)
     assert bad.returncode == 2 and "unknown embedding" in bad.stderr
+    (tmp_path / "afile").write_text("")
+    for cmd in ([*rpg, "-o", str(tmp_path / "afile")],
+                [sys.executable, "-m", "rpg.cli", "report", str(manifest.parent), "-o", str(tmp_path / "afile")]):
+        bad = subprocess.run(cmd, capture_output=True, text=True, env=env)
+        assert bad.returncode == 2 and "is a file" in bad.stderr and "Traceback" not in bad.stderr, bad.stderr
 
 
 def test_authors_recorded_by_compile_group_a_library_directory(tmp_path):

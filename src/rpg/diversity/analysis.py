@@ -8,6 +8,7 @@ t-SNE map of the task embeddings coloured by contributor).
 from __future__ import annotations
 
 import json
+import os
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -106,6 +107,8 @@ def analyze(target: str | Path, by: str = "author", embedding: str = "wordllama"
     """
     from rpg.diversity.measures import POOL_ORDERINGS
 
+    if out_dir is not None and Path(out_dir).exists() and not Path(out_dir).is_dir():
+        raise BadInput(f"{out_dir} is a file; -o needs a directory for summary.json and the plots")
     records = collect(target)
     groups = [r.group(by) for r in records]
     x = embed([r.schema.instruction for r in records], embedding)
@@ -129,7 +132,9 @@ def analyze(target: str | Path, by: str = "author", embedding: str = "wordllama"
         out = Path(out_dir)
         out.mkdir(parents=True, exist_ok=True)
         summary["plots"] = _plots(summary, x, groups, out, seed)
-        (out / "summary.json").write_text(json.dumps(summary, indent=2, sort_keys=True) + "\n")
+        tmp = out / ".summary.json.tmp"  # written last and renamed: a summary.json is never half-written
+        tmp.write_text(json.dumps(summary, indent=2, sort_keys=True) + "\n")
+        os.replace(tmp, out / "summary.json")
     return summary
 
 

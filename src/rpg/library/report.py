@@ -136,6 +136,8 @@ def write_report(library: str | Path, site: str | Path, title: str | None = None
     library, site = Path(library), Path(site)
     if not library.is_dir():
         raise ValueError(f"{library} is not a directory")
+    if site.exists() and not site.is_dir():
+        raise ValueError(f"{site} is a file; -o needs a directory for the site")
     (site / "img").mkdir(parents=True, exist_ok=True)
     cards = collect_cards(library, site)
     title = title or f"rpg task library: {library.resolve().name}"
