@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 from PIL import Image
 
+from rpg.artifact import task_sources
 from rpg.compiler import compile_instruction
 from rpg.validate import sandbox
 from rpg.validate.sandbox import FORK_SAFE_GL_ENV, run_worker
@@ -62,7 +63,7 @@ def test_fork_server_keeps_a_warm_context_and_one_thread(letters):
     sandbox.prestart()
     assert run_worker({"op": "render", "dir": str(letters), "seed": 0})["ok"]
     server = sandbox._server
-    pid = server.proc.pid
+    pid = _python_server(server.proc.pid)
     assert _threads(pid) == 1
     environ = open(f"/proc/{pid}/environ", "rb").read().split(b"\0")
     assert b"RPG_WARM_GL=0" not in environ  # no fallback was needed here
@@ -78,7 +79,7 @@ def test_fork_server_drops_the_warm_context_when_the_renderer_starts_threads(let
     proc = subprocess.Popen([sys.executable, "-m", "rpg.validate.forkserver"], stdin=subprocess.PIPE,
                             stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, cwd=tmp_path, env=env)
     try:
-        doc = _ask(proc, {"op": "render", "dir": str(letters), "seed": 0})
+        doc = _ask(proc, {"op": "render", "sources": task_sources(letters), "seed": 0})
         assert doc["ok"], doc
         _image(doc, "goal")
         environ = open(f"/proc/{proc.pid}/environ", "rb").read().split(b"\0")
@@ -88,6 +89,19 @@ def test_fork_server_drops_the_warm_context_when_the_renderer_starts_threads(let
     finally:
         proc.kill()
         proc.wait()
+
+
+def _python_server(pid: int) -> int:
+    """The fork server's own process: ``pid`` itself, or, when the server runs inside
+    bubblewrap's namespaces, the descendant of ``pid`` that runs the server."""
+    todo = [pid]
+    while todo:
+        p = todo.pop(0)
+        cmd = open(f"/proc/{p}/cmdline", "rb").read().split(b"\0")
+        if b"rpg.validate.forkserver" in cmd and b"bwrap" not in os.path.basename(cmd[0]):
+            return p
+        todo += _children(p)
+    raise AssertionError(f"no fork server under {pid}")
 
 
 def _children(pid: int) -> list[int]:
@@ -110,7 +124,8 @@ def test_template_gives_each_worker_a_warm_clone_of_one_server(letters):
         clients = [sandbox._ForkServer(template.address) for _ in range(2)]
         try:
             docs = [c.run({"op": "render", "dir": str(letters), "seed": 2}, 60) for c in clients]
-            clones = _children(template.proc.pid)
+            server = _python_server(template.proc.pid)
+            clones = _children(server)
             assert len(clones) == 2, "one clone per connection, forked by the template"
             for pid in clones:
                 assert _threads(pid) == 1
@@ -123,9 +138,9 @@ def test_template_gives_each_worker_a_warm_clone_of_one_server(letters):
                     assert np.abs(_image(doc, key) - _image(reference, key)).mean() < 0.05
             clients[0].close()  # a worker that goes away ends its clone
             deadline = time.monotonic() + 10
-            while len(_children(template.proc.pid)) > 1 and time.monotonic() < deadline:
+            while len(_children(server)) > 1 and time.monotonic() < deadline:
                 time.sleep(0.05)
-            left = _children(template.proc.pid)
+            left = _children(server)
             assert len(left) == 1 and left[0] in clones
             assert clients[1].run({"op": "render", "dir": str(letters), "seed": 2}, 60)["ok"]
         finally:

@@ -8,15 +8,15 @@ goes through this module; it imports nothing from the compiler or the steering l
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import json
 import os
 import shutil
+import stat
 import tempfile
 import time
 from pathlib import Path
-
-import yaml
 
 from rpg import yamlio
 from rpg._version import __version__
@@ -29,6 +29,78 @@ class ArtifactError(BadInput):
     """A task artifact is missing, malformed or truncated."""
 
 
+MAX_ARTIFACT_FILE = 4 * 1024**2
+"""Largest artifact text file read (task.yaml, code files, family.yaml), bytes."""
+
+TASK_CODE_FILES = ("code.py", "goal_state_code.py")
+
+
+def read_bytes(path: Path, limit: int = MAX_ARTIFACT_FILE) -> bytes:
+    """Read a regular file without following a symbolic link at ``path``.
+
+    Raises:
+        ArtifactError: missing, a symlink, not a regular file, or larger than ``limit`` bytes.
+    """
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_CLOEXEC | os.O_NONBLOCK)
+    except FileNotFoundError:
+        raise ArtifactError(f"{path} is missing") from None
+    except OSError as exc:
+        if os.path.islink(path):
+            raise ArtifactError(f"{path} is a symbolic link; artifact files must be regular files") from None
+        raise ArtifactError(f"cannot read {path}: {exc.strerror}") from None
+    with os.fdopen(fd, "rb") as fh:
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            raise ArtifactError(f"{path} is not a regular file")
+        data = fh.read(limit + 1)
+    if len(data) > limit:
+        raise ArtifactError(f"{path} is larger than {limit} bytes")
+    return data
+
+
+def read_text(path: Path, limit: int = MAX_ARTIFACT_FILE) -> str:
+    """:func:`read_bytes` decoded as UTF-8.
+
+    Raises:
+        ArtifactError: as :func:`read_bytes`, or the bytes are not UTF-8.
+    """
+    try:
+        return read_bytes(path, limit).decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise ArtifactError(f"{path} is not UTF-8 text (byte {exc.start})") from None
+
+
+def task_sources(directory: Path) -> dict[str, str]:
+    """The text of ``code.py`` and ``goal_state_code.py``, read once: the text the text gate
+    checks is the text the worker runs.
+
+    Raises:
+        ArtifactError: a file is missing, a link, oversized or not UTF-8.
+    """
+    return {f: read_text(Path(directory) / f) for f in TASK_CODE_FILES}
+
+
+def write_file(path: Path, data: str | bytes) -> None:
+    """Write ``path`` through a new file renamed over it: a symbolic link at ``path`` is
+    replaced, never written through, and readers never see a half-written file.
+
+    Raises:
+        OSError: the directory is not writable or the disk is full (nothing is left behind).
+    """
+    path = Path(path)
+    raw = data.encode() if isinstance(data, str) else data
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(raw)
+        os.chmod(tmp, 0o666 & ~_umask())
+        os.replace(tmp, path)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        raise
+
+
 def save_snapshots(directory: Path, images: dict) -> dict[str, Path | None]:
     """Write the worker's base64 PNGs as ``directory/<key>.png``; key -> path (None if not rendered)."""
     import base64
@@ -39,7 +111,7 @@ def save_snapshots(directory: Path, images: dict) -> dict[str, Path | None]:
         out[key] = None
         if isinstance(data, str):
             path = Path(directory) / f"{key}.png"
-            path.write_bytes(base64.b64decode(data, validate=True))
+            write_file(path, base64.b64decode(data, validate=True))
             out[key] = path
     return out
 
@@ -99,20 +171,19 @@ def task_document(schema: TaskSchema, seed: int, backend: str, model: str | None
 def write_artifact_files(directory: Path, schema: TaskSchema, seed: int, backend: str, model: str | None,
                          gates: list[dict], log: list[str], author: str | None = None) -> str:
     """Write task.yaml, validation.log and validation.json beside the code; return the content hash."""
-    code = (directory / "code.py").read_text()
-    goal_code = (directory / "goal_state_code.py").read_text()
+    sources = task_sources(directory)
     doc = task_document(schema, seed, backend, model, gates, author)
-    digest = content_hash(doc, code, goal_code)
+    digest = content_hash(doc, sources["code.py"], sources["goal_state_code.py"])
     doc["content_hash"] = digest
-    (directory / "task.yaml").write_text(yaml.safe_dump(doc, sort_keys=False, allow_unicode=True, width=100))
+    write_file(directory / "task.yaml", yamlio.dump(doc))
     write_logs(directory, log, gates)
     return digest
 
 
 def write_logs(directory: Path, log: list[str], gates: list[dict]) -> None:
     """``validation.log`` (one line per gate and repair attempt) and ``validation.json``."""
-    (directory / "validation.log").write_text("\n".join(log) + "\n")
-    (directory / "validation.json").write_text(json.dumps(
+    write_file(directory / "validation.log", "\n".join(log) + "\n")
+    write_file(directory / "validation.json", json.dumps(
         {"created": time.strftime("%Y-%m-%dT%H:%M:%S%z"), "valid": gates_passed(gates), "log": log, "gates": gates},
         indent=2, default=str) + "\n")
 
@@ -159,10 +230,11 @@ def load_artifact(directory: str | Path) -> tuple[TaskSchema, dict]:
     """
     d = Path(directory)
     for fname in ("task.yaml", "code.py", "goal_state_code.py"):
-        if not (d / fname).is_file():
+        if not (d / fname).is_file() and not (d / fname).is_symlink():
             raise ArtifactError(f"{d} is not a task artifact: {fname} is missing")
+    text = read_text(d / "task.yaml")
     try:
-        doc = yamlio.load((d / "task.yaml").read_text())
+        doc = yamlio.load(text)
         schema = TaskSchema.model_validate(doc["schema"])
     except Exception as exc:  # noqa: BLE001 - any parse problem means a malformed artifact
         raise ArtifactError(f"{d / 'task.yaml'} is malformed: {str(exc).splitlines()[0][:200]}") from None

@@ -376,19 +376,20 @@ def _prestart_worker() -> None:
 
 
 def _worker(req: dict) -> dict:
-    from rpg.artifact import load_artifact
+    from rpg.artifact import load_artifact, task_sources
     from rpg.validate.sandbox import run_worker
     from rpg.validate.static import StaticViolation, check_source
 
-    d = Path(req["dir"])
+    d = Path(req.pop("dir"))
     with _reported_errors():
         load_artifact(d)
-        for fname in ("code.py", "goal_state_code.py"):
+        sources = task_sources(d)
+        for fname, text in sources.items():
             try:
-                check_source((d / fname).read_text(), fname)
+                check_source(text, fname)
             except StaticViolation as exc:
                 _fail(f"task code rejected: {exc}", exc.exit_code)
-        doc = run_worker({**req, "dir": str(d.resolve())})
+        doc = run_worker({**req, "sources": sources})
     if not doc["ok"]:
         if "SceneError" in doc["error"] or "KeyError" in doc["error"]:
             _fail(doc["error"].split(": ", 1)[-1])

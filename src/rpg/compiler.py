@@ -23,12 +23,13 @@ from rpg.artifact import (
     LIBRARY_LOCK,  # noqa: F401 - part of the compiler's API
     ArtifactError,  # noqa: F401
     atomic_replace,
-    content_hash,  # noqa: F401
+    content_hash,
     gates_passed,
     load_artifact,
     save_snapshots,
     staging_dir,
     task_document,  # noqa: F401
+    task_sources,
     write_artifact_files,
     write_logs,
 )
@@ -69,16 +70,25 @@ class CompileResult:
 
 
 def validate_files(directory: Path, seed: int = 0, disabled: frozenset[str] = frozenset(),
-                   snapshots: bool = False, tolerances: dict | None = None) -> list[dict]:
-    """Run every gate on the code files in ``directory``; return the gate results in order."""
+                   snapshots: bool = False, tolerances: dict | None = None,
+                   sources: dict[str, str] | None = None) -> list[dict]:
+    """Run every gate on the code files in ``directory``; return the gate results in order.
+
+    ``sources`` (file name -> text, as read once by :func:`rpg.artifact.task_sources`) is
+    what the gates check and the worker runs; read from ``directory`` when not given.
+    """
     results = []
+    try:
+        sources = task_sources(directory) if sources is None else sources
+    except ArtifactError as exc:
+        return [{"gate": "text", "status": "fail", "kind": "api_usage", "message": str(exc), "duration_s": 0.0, "details": {}}]
     if "text" in disabled:
         results.append({"gate": "text", "status": "skipped", "duration_s": 0.0, "details": {}})
     else:
         t0 = time.perf_counter()
         try:
-            for fname in ("code.py", "goal_state_code.py"):
-                check_source((directory / fname).read_text(), fname)
+            for fname, text in sources.items():
+                check_source(text, fname)
             results.append({"gate": "text", "status": "pass", "duration_s": time.perf_counter() - t0, "details": {}})
         except StaticViolation as exc:
             results.append({"gate": "text", "status": "fail", "kind": exc.kind, "message": str(exc),
@@ -87,7 +97,7 @@ def validate_files(directory: Path, seed: int = 0, disabled: frozenset[str] = fr
     from rpg.validate.sandbox import WorkerError
 
     try:
-        doc = run_worker({"op": "validate", "dir": str(directory.resolve()), "seed": seed, "disabled": sorted(disabled),
+        doc = run_worker({"op": "validate", "sources": sources, "seed": seed, "disabled": sorted(disabled),
                           "snapshots": snapshots, "tolerances": tolerances or {}})
         if not doc["ok"]:
             return results + [{"gate": "compile", "status": "fail", "kind": doc.get("kind", "runtime"),
@@ -268,11 +278,11 @@ def revalidate(directory: str | Path, disabled: frozenset[str] = frozenset()) ->
     d = Path(directory)
     schema, doc = load_artifact(d)
     seed = int(doc.get("provenance", {}).get("seed", 0))
-    gates = validate_files(d, seed, disabled, snapshots=False, tolerances=schema.tolerances.model_dump())
+    sources = task_sources(d)
+    gates = validate_files(d, seed, disabled, snapshots=False, tolerances=schema.tolerances.model_dump(), sources=sources)
     log = [f"rpg {__version__} validate {d}"] + [_log_line(g) for g in gates]
     valid = gates_passed(gates)
     log.append("result: VALID" if valid else "result: INVALID")
     write_logs(d, log, gates)
-    code = (d / "code.py").read_text()
-    goal_code = (d / "goal_state_code.py").read_text()
-    return CompileResult(valid, d, schema, gates, log, content_hash({k: v for k, v in doc.items()}, code, goal_code))
+    return CompileResult(valid, d, schema, gates, log,
+                         content_hash({k: v for k, v in doc.items()}, sources["code.py"], sources["goal_state_code.py"]))

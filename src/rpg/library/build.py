@@ -94,7 +94,7 @@ def load_manifest(path: str | Path) -> Manifest:
 def save_manifest(path: str | Path, manifest: Manifest, header: str = "") -> None:
     """Write the manifest atomically."""
     path = Path(path)
-    text = header + yaml.safe_dump(manifest.model_dump(exclude_none=True), sort_keys=False, width=120)
+    text = header + yamlio.dump(manifest.model_dump(exclude_none=True), width=120)
     tmp = path.with_name(f".{path.name}.tmp-{os.getpid()}")
     tmp.write_text(text)
     os.replace(tmp, path)
@@ -273,7 +273,7 @@ def _publish(report: dict, tmp: Path, base: Path, force: bool) -> None:
 def _recorded_hash(path: Path) -> str | None:
     """The hash of the task artifact or family at ``path``, recomputed from its files; None
     when there is none or its files no longer match their recorded hashes."""
-    from rpg.artifact import ArtifactError, content_hash, load_artifact
+    from rpg.artifact import ArtifactError, content_hash, load_artifact, task_sources
     from rpg.steer.family import Family, is_family
 
     try:
@@ -282,7 +282,8 @@ def _recorded_hash(path: Path) -> str | None:
             intact = all(v["ok"] for v in family.verify())
             return family.load().versions[-1].lineage_hash if intact else None
         _, doc = load_artifact(path)
-        digest = content_hash(doc, (path / "code.py").read_text(), (path / "goal_state_code.py").read_text())
+        sources = task_sources(path)
+        digest = content_hash(doc, sources["code.py"], sources["goal_state_code.py"])
         return digest if digest == doc.get("content_hash") else None
     except (ArtifactError, OSError, ValueError, KeyError, IndexError):
         return None

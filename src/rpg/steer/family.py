@@ -38,7 +38,14 @@ from filelock import FileLock
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from rpg import yamlio
-from rpg.artifact import ArtifactError, atomic_replace, content_hash, load_artifact, staging_dir
+from rpg.artifact import (
+    ArtifactError,
+    atomic_replace,
+    content_hash,
+    load_artifact,
+    staging_dir,
+    task_sources,
+)
 from rpg.errors import BadInput
 from rpg.schema.model import TaskSchema
 
@@ -189,7 +196,7 @@ class Family:
         for v in doc["versions"]:
             if v.get("author") is None:
                 v.pop("author", None)  # histories without authors read as before
-        text = yaml.safe_dump(doc, sort_keys=False, allow_unicode=True, width=100)
+        text = yamlio.dump(doc)
         fd, tmp = tempfile.mkstemp(prefix=".family-", suffix=".yaml", dir=self.path)
         with os.fdopen(fd, "w") as fh:
             fh.write(text)
@@ -222,9 +229,8 @@ class Family:
             d = self.version_dir(v.version_id)
             try:
                 schema, doc = load_artifact(d)
-                code = (d / "code.py").read_text()
-                goal = (d / "goal_state_code.py").read_text()
-                actual = content_hash(doc, code, goal)
+                sources = task_sources(d)
+                actual = content_hash(doc, sources["code.py"], sources["goal_state_code.py"])
                 if actual != doc.get("content_hash"):
                     problems.append("artifact files changed since they were written (content hash differs from task.yaml)")
                 if actual != v.content_hash:

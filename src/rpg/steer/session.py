@@ -72,9 +72,10 @@ def load_session(path: str | Path) -> dict:
 
 def goal_tower(directory: Path) -> list[str]:
     """Cubes of the settled goal state bottom to top, as ``red`` or ``letter A`` (by height)."""
+    from rpg.artifact import task_sources
     from rpg.validate.sandbox import run_worker
 
-    doc = run_worker({"op": "inspect", "dir": str(directory), "state": "goal", "settle": 50})
+    doc = run_worker({"op": "inspect", "sources": task_sources(directory), "state": "goal", "settle": 50})
     if not doc.get("ok"):
         raise SessionError(f"cannot inspect {directory}: {doc.get('error')}")
     objs = [o for o in doc["result"]["objects"] if o["kind"] != "goal_patch"]

@@ -57,9 +57,11 @@ def _run_child(req: dict, cwd: str, wfd: int) -> None:  # pragma: no cover - run
         os.chdir(cwd)
         apply_limits()
         from rpg.validate.guard import install
+        from rpg.validate.isolation import install_seccomp
         from rpg.validate.worker import handle
 
         install(cwd)
+        install_seccomp()
 
         data = handle(req).encode()
         view = memoryview(data)
@@ -92,7 +94,8 @@ def serve_one(req: dict) -> bytes:
     stderr_tail = ""
     try:
         with open(os.path.join(cwd, ".stderr"), "rb") as fh:
-            stderr_tail = fh.read()[-2000:].decode("utf-8", "replace").strip().splitlines()[-1:]
+            fh.seek(max(0, os.fstat(fh.fileno()).st_size - 2000))
+            stderr_tail = fh.read(2000).decode("utf-8", "replace").strip().splitlines()[-1:]
             stderr_tail = stderr_tail[0] if stderr_tail else ""
     except OSError:
         pass

@@ -1,8 +1,10 @@
-"""Runs task code in a separate worker process with limits.
+"""Runs task code in a separate worker process with limits, isolated from the machine.
 
 The worker gets a stripped environment (no API keys or secrets), a temporary working
-directory, CPU-time, address-space, core-file and open-file limits, and a wall-clock
-timeout.  Its output is treated as data: bounded in size and parsed as JSON.
+directory, CPU-time, address-space, file-size, core-file, process and open-file limits, and
+a wall-clock timeout; it runs inside the namespaces and under the seccomp filter of
+:mod:`rpg.validate.isolation`.  Its output is treated as data: bounded in size and parsed as
+JSON.
 """
 
 from __future__ import annotations
@@ -19,6 +21,7 @@ import tempfile
 import threading
 
 from rpg.errors import TaskInvalid
+from rpg.validate.isolation import die_with_parent, wrap
 
 WORKER_TIMEOUT_S = 120.0
 """Wall-clock limit for one worker run, s."""
@@ -31,6 +34,13 @@ WORKER_ADDRESS_SPACE = 8 * 1024**3
 
 WORKER_MAX_OUTPUT = 16 * 1024**2
 """Largest worker output accepted, bytes."""
+
+WORKER_FILE_SIZE = 64 * 1024**2
+"""Largest file a worker may write (RLIMIT_FSIZE), bytes: bounds its stderr file too."""
+
+WORKER_PROCESSES = 64
+"""RLIMIT_NPROC of a worker inside its user namespace (threads count; new processes are
+refused by seccomp anyway)."""
 
 _KEEP_ENV = ("PATH", "HOME", "LANG", "LC_ALL", "MUJOCO_GL", "PYTHONPATH", "VIRTUAL_ENV", "LD_LIBRARY_PATH",
              "PYOPENGL_PLATFORM", "EGL_PLATFORM", "TMPDIR", "LP_NUM_THREADS")
@@ -47,13 +57,17 @@ class WorkerError(TaskInvalid, RuntimeError):
 
 
 def apply_limits() -> None:  # pragma: no cover - runs in the child
-    """Resource limits of a worker process: CPU seconds, address space, no core files, open files."""
+    """Resource limits of a worker process: CPU seconds, address space, file size, no core
+    files, open files and, inside a user namespace, processes."""
     import resource
 
     resource.setrlimit(resource.RLIMIT_CPU, (WORKER_CPU_S, WORKER_CPU_S))
     resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
     resource.setrlimit(resource.RLIMIT_AS, (WORKER_ADDRESS_SPACE, WORKER_ADDRESS_SPACE))
     resource.setrlimit(resource.RLIMIT_NOFILE, (256, 256))
+    resource.setrlimit(resource.RLIMIT_FSIZE, (WORKER_FILE_SIZE, WORKER_FILE_SIZE))
+    if os.environ.get("RPG_SANDBOXED") == "1":  # inside a user namespace: counted per namespace
+        resource.setrlimit(resource.RLIMIT_NPROC, (WORKER_PROCESSES, WORKER_PROCESSES))
 
 
 def _worker_env() -> dict[str, str]:
@@ -103,9 +117,10 @@ class _ForkServer:
             self.ready = self.sock
         else:
             self.cwd = tempfile.mkdtemp(prefix="rpg-forkserver-")
+            env = _server_env()
             self.proc = subprocess.Popen(
-                [sys.executable, "-m", "rpg.validate.forkserver"], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                stderr=subprocess.DEVNULL, cwd=self.cwd, env=_server_env())
+                wrap([sys.executable, "-m", "rpg.validate.forkserver"], env), stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                stderr=subprocess.DEVNULL, cwd=self.cwd, env=env, preexec_fn=die_with_parent)
             self.wfile, self.rfile = self.proc.stdin, self.proc.stdout
             self.ready = self.rfile
 
@@ -115,7 +130,7 @@ class _ForkServer:
         return self.proc.poll() is None if self.proc else self.sock.fileno() != -1
 
     def run(self, request: dict, timeout: float) -> dict:
-        payload = json.dumps({**request, "_timeout": timeout}).encode()
+        payload = json.dumps({**_with_sources(request), "_timeout": timeout}).encode()
         try:
             self.wfile.write(f"{len(payload)}\n".encode() + payload)
             self.wfile.flush()
@@ -156,10 +171,11 @@ class ForkServerTemplate:
         try:
             listener.bind(self.address)
             listener.listen(64)
+            env = _server_env()
             self.proc = subprocess.Popen(
-                [sys.executable, "-m", "rpg.validate.forkserver", "--listen-fd", str(listener.fileno())],
+                wrap([sys.executable, "-m", "rpg.validate.forkserver", "--listen-fd", str(listener.fileno())], env),
                 stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, cwd=self.dir,
-                env=_server_env(), pass_fds=(listener.fileno(),))
+                env=env, pass_fds=(listener.fileno(),), preexec_fn=die_with_parent)
         except (OSError, ValueError) as exc:
             shutil.rmtree(self.dir, ignore_errors=True)
             raise OSError(f"cannot start a fork-server template: {exc}") from None
@@ -241,16 +257,21 @@ def prestart(template: str | None = None) -> None:
 
 
 def run_worker(request: dict, timeout: float | None = None) -> dict:
-    """Run one worker request in a fresh, limited child process and return its parsed result.
+    """Run one worker request in a fresh, limited, isolated child process and return its parsed result.
+
+    ``request`` names the task code by ``sources`` (file name -> text) or by ``dir`` (an
+    artifact directory, read once here with :func:`rpg.artifact.task_sources`).
 
     Children are forked from a fork server that has imported the domain once (set
     ``RPG_FORKSERVER=0`` to start a whole interpreter per request instead).
 
     Raises:
         WorkerError: timeout, crash, oversize or malformed output.
+        ArtifactError: ``dir`` holds no readable task code.
     """
     global _server
     timeout = worker_timeout() if timeout is None else timeout
+    request = _with_sources(request)
     if forkserver_enabled():
         with _server_lock:
             for _ in range(2):
@@ -263,14 +284,38 @@ def run_worker(request: dict, timeout: float | None = None) -> dict:
     return _run_once(request, timeout)
 
 
+def _with_sources(request: dict) -> dict:
+    """``request`` with an artifact ``dir`` replaced by its code's text, read once here: the
+    worker gates and runs exactly this text."""
+    if "dir" not in request:
+        return request
+    from rpg.artifact import task_sources
+
+    return {k: v for k, v in request.items() if k != "dir"} | {"sources": task_sources(request["dir"])}
+
+
 def _run_once(request: dict, timeout: float) -> dict:
+    """One whole interpreter for one request; its output goes to files (bounded by
+    RLIMIT_FSIZE) of which at most :data:`WORKER_MAX_OUTPUT` bytes are read."""
     with tempfile.TemporaryDirectory(prefix="rpg-worker-") as cwd:
-        try:
-            proc = subprocess.run(
-                [sys.executable, "-m", "rpg.validate.worker"],
-                input=json.dumps(request).encode(), capture_output=True, timeout=timeout, cwd=cwd, env=_worker_env(),
-                preexec_fn=apply_limits,
-            )
-        except subprocess.TimeoutExpired:
-            raise WorkerError(f"task code ran past the {timeout:.0f} s limit") from None
-    return _parse(proc.stdout[:WORKER_MAX_OUTPUT + 1], proc.stderr, proc.returncode)
+        env = _worker_env()
+        out_path, err_path = os.path.join(cwd, ".stdout"), os.path.join(cwd, ".stderr")
+        with open(out_path, "wb") as out, open(err_path, "wb") as err:
+            try:
+                proc = subprocess.run(
+                    wrap([sys.executable, "-m", "rpg.validate.worker"], env, writable=cwd),
+                    input=json.dumps(_with_sources(request)).encode(), stdout=out, stderr=err, timeout=timeout, cwd=cwd, env=env,
+                    preexec_fn=_one_shot_child, start_new_session=True,
+                )
+            except subprocess.TimeoutExpired:
+                raise WorkerError(f"task code ran past the {timeout:.0f} s limit") from None
+        with open(out_path, "rb") as fh:
+            stdout = fh.read(WORKER_MAX_OUTPUT + 1)
+        with open(err_path, "rb") as fh:
+            fh.seek(max(0, os.path.getsize(err_path) - 4096))
+            stderr = fh.read()
+    return _parse(stdout, stderr, proc.returncode)
+
+
+def _one_shot_child() -> None:  # pragma: no cover - runs in the child (bwrap or the worker)
+    die_with_parent()

@@ -4,16 +4,15 @@ Run only through :func:`rpg.validate.sandbox.run_worker`; it reads a request as 
 stdin and writes one JSON document to stdout.  Task code has passed the text gate before
 it gets here.  Requests:
 
-``{"op": "validate", "dir": ..., "seed": 0, "disabled": [...], "snapshots": true, "tolerances": {...}}``
-``{"op": "inspect", "dir": ..., "state": "initial"|"goal", "seed": 0, "settle": 50}``
-``{"op": "check", "dir": ..., "poses": {...}, "settle": 0}``
-``{"op": "render", "dir": ..., "seed": 0}``
+``{"op": "validate", "sources": {"code.py": ..., "goal_state_code.py": ...}, "seed": 0, "disabled": [...], "snapshots": true, "tolerances": {...}}``
+``{"op": "inspect", "sources": ..., "state": "initial"|"goal", "seed": 0, "settle": 50}``
+``{"op": "check", "sources": ..., "poses": {...}, "settle": 0}``
+``{"op": "render", "sources": ..., "seed": 0}``
 """
 
 from __future__ import annotations
 
 import base64
-import importlib.util
 import json
 import os
 import sys
@@ -29,6 +28,12 @@ from rpg.domain.render import Snapshotter
 from rpg.domain.scene import drift_report
 from rpg.domain.task import BlockTask
 from rpg.domain.visibility import face_visibility
+from rpg.validate.restricted import RestrictedAccess, exec_task_source
+from rpg.validate.static import StaticViolation
+
+
+WORKER_MAX_REQUEST = 64 * 1024**2
+"""Largest request a one-shot worker reads, characters."""
 
 
 class GateFailure(Exception):
@@ -38,32 +43,64 @@ class GateFailure(Exception):
         self.details = details or {}
 
 
-def _load(path: Path, name: str):
-    sys.dont_write_bytecode = True  # never cache task code: it is rewritten in place between repair cycles
-    spec = importlib.util.spec_from_file_location(name, path)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-
-
 def _classify(exc: BaseException) -> str:
     if isinstance(exc, SyntaxError):
         return "syntax"
+    if isinstance(exc, StaticViolation):
+        return exc.kind
+    if isinstance(exc, RestrictedAccess):
+        return "api_usage"
     if isinstance(exc, ImportError | AttributeError | NameError | TypeError):
         return "api_usage"
     return "runtime"
 
 
-def load_task(directory: Path) -> tuple[BlockTask, object]:
-    """Import code.py and goal_state_code.py and instantiate the one BlockTask subclass."""
-    mod = _load(directory / "code.py", "rpg_task_code")
-    goal_mod = _load(directory / "goal_state_code.py", "rpg_goal_state_code")
+TEMPLATE_MEMBERS = frozenset({"assets", "initial_state", "goal", "NAME", "INSTRUCTION", "PARAPHRASES"})
+"""Members of :class:`BlockTask` a task class may define; any other member it defines must
+not shadow one of BlockTask's (a task cannot redefine ``success`` or ``evaluate``)."""
+
+
+def _check_task_class(cls: type) -> None:
+    shadowed = sorted(n for n in vars(cls) if not n.startswith("__") and n not in TEMPLATE_MEMBERS and hasattr(BlockTask, n))
+    if shadowed:
+        raise GateFailure("api_usage", f"code.py redefines BlockTask.{shadowed[0]}; a task defines only "
+                                       f"{', '.join(sorted(TEMPLATE_MEMBERS))} and its own helpers")
+
+
+def _check_domain_objects(task: BlockTask) -> None:
+    """The goal and assets must be the domain's own classes, not task-made subclasses."""
+    for node in task.goal_predicate.walk():
+        if type(node).__module__ != "rpg.domain.predicates":
+            raise GateFailure("api_usage", f"goal() returned a {type(node).__name__}: only rpg.task_api predicates may be used")
+    for asset in task.scene.assets.values():
+        if type(asset).__module__ != "rpg.domain.assets":
+            raise GateFailure("api_usage", f"assets() returned a {type(asset).__name__}: only rpg.task_api assets may be used")
+
+
+def load_task(sources: dict[str, str], restricted: bool = True) -> tuple[BlockTask, object]:
+    """Run code.py and goal_state_code.py (their text, as gated) and instantiate the one BlockTask subclass.
+
+    Args:
+        sources: file name -> text of ``code.py`` and ``goal_state_code.py``; the text gate
+            checks this very text again before it runs (no second read from disk).
+
+    Raises:
+        GateFailure: not exactly one task class, a task class that redefines BlockTask's
+            behaviour, foreign predicate or asset classes, or no ``goal_state(task)``.
+        StaticViolation: the text fails the text gate.
+    """
+    mod = exec_task_source(str(sources["code.py"]), "code.py", "rpg_task_code", restricted=restricted)
+    goal_mod = exec_task_source(str(sources["goal_state_code.py"]), "goal_state_code.py", "rpg_goal_state_code",
+                                restricted=restricted)
     classes = [v for v in vars(mod).values() if isinstance(v, type) and issubclass(v, BlockTask) and v is not BlockTask]
     if len(classes) != 1:
         raise GateFailure("api_usage", f"code.py must define exactly one BlockTask subclass, found {len(classes)}")
+    _check_task_class(classes[0])
     if not callable(getattr(goal_mod, "goal_state", None)):
         raise GateFailure("api_usage", "goal_state_code.py must define goal_state(task)")
-    return classes[0](), goal_mod
+    task = classes[0]()
+    _check_domain_objects(task)
+    return task, goal_mod
 
 
 def _poses_json(task: BlockTask) -> dict:
@@ -134,7 +171,7 @@ def _visibility(task: BlockTask) -> dict:
 
 
 def validate(req: dict) -> dict:
-    directory = Path(req["dir"])
+    sources = req["sources"]
     disabled = set(req.get("disabled", []))
     seed = int(req.get("seed", 0))
     tol = {"settle_steps": C.SETTLE_STEPS, "stability_steps": C.STABILITY_STEPS,
@@ -162,7 +199,7 @@ def validate(req: dict) -> dict:
 
     def compile_gate():
         nonlocal task, goal_mod
-        task, goal_mod = load_task(directory)
+        task, goal_mod = load_task(sources, restricted="text" not in disabled)
         return {"class": type(task).__name__, "objects": task.scene.names}
 
     if not gate("compile", compile_gate):
@@ -291,7 +328,7 @@ def _result_block(task: BlockTask) -> dict:
 
 
 def inspect(req: dict) -> dict:
-    task, goal_mod = load_task(Path(req["dir"]))
+    task, goal_mod = load_task(req["sources"])
     if req.get("state", "initial") == "goal":
         goal_mod.goal_state(task)
     else:
@@ -301,7 +338,7 @@ def inspect(req: dict) -> dict:
 
 
 def check(req: dict) -> dict:
-    task, _ = load_task(Path(req["dir"]))
+    task, _ = load_task(req["sources"])
     task.scene.load_json(json.dumps({"objects": req["poses"]}))
     task.scene.reset_time()
     task.step(int(req.get("settle", 0)))
@@ -309,7 +346,7 @@ def check(req: dict) -> dict:
 
 
 def render(req: dict) -> dict:
-    task, goal_mod = load_task(Path(req["dir"]))
+    task, goal_mod = load_task(req["sources"])
     return {"snapshots": _snapshots(task, goal_mod, int(req.get("seed", 0)), {})}
 
 
@@ -329,9 +366,13 @@ def handle(req: dict) -> str:
 
 def main() -> None:
     from rpg.validate.guard import install
+    from rpg.validate.isolation import install_seccomp
+    from rpg.validate.sandbox import apply_limits
 
-    req = json.loads(sys.stdin.read())
+    req = json.loads(sys.stdin.read(WORKER_MAX_REQUEST))
+    apply_limits()
     install(os.getcwd())
+    install_seccomp()
     sys.stdout.write(handle(req))
 
 
