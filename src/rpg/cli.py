@@ -497,6 +497,23 @@ def diversity_cmd(
         out.print(f"wrote {output / 'summary.json'} and {', '.join(s['plots'].values())}")
 
 
+@app.command("doctor")
+def doctor_cmd(
+    as_json: bool = typer.Option(False, "--json", help="Print the layers as JSON."),
+) -> None:
+    """Show which sandbox layers protect this machine from task code (exit 0 when all are active, 1 otherwise)."""
+    from rpg.validate.isolation import layers
+
+    found = layers()
+    if as_json:
+        typer.echo(json.dumps([{"layer": x.name, "active": x.active, "detail": x.detail} for x in found], indent=2))
+    else:
+        for x in found:
+            typer.echo(f"{'active ' if x.active else 'MISSING'}  {x.name:<21} {x.detail}")
+    if not all(x.active for x in found):
+        raise typer.Exit(EXIT_INVALID)
+
+
 @app.command("schema")
 def schema_cmd(
     output: Annotated[Path, typer.Option("-o", "--output")] = Path("schemas/task.schema.json"),

@@ -111,6 +111,14 @@ def validate_files(directory: Path, seed: int = 0, disabled: frozenset[str] = fr
     return results + result["gates"]
 
 
+def _isolation_note() -> list[str]:
+    """The sandbox layers missing here, said once on stderr and in every validation.log."""
+    from rpg.validate.isolation import warn_once
+
+    note = warn_once()
+    return [note] if note else []
+
+
 def first_failure(gates: list[dict]) -> dict | None:
     return next((g for g in gates if g["status"] == "fail"), None)
 
@@ -133,7 +141,7 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
     """
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
-    log: list[str] = [f"rpg {__version__} compile {schema.name!r} (backend {backend}, seed {seed})"]
+    log: list[str] = [f"rpg {__version__} compile {schema.name!r} (backend {backend}, seed {seed})", *_isolation_note()]
     log += [f"feasibility repair {r.operator}: {r.reason}" for r in schema.repairs if r.stage == "feasibility"]
     attempts: dict[str, int] = {}
     tmp = staging_dir(out_dir, schema.name)
@@ -280,7 +288,7 @@ def revalidate(directory: str | Path, disabled: frozenset[str] = frozenset()) ->
     seed = int(doc.get("provenance", {}).get("seed", 0))
     sources = task_sources(d)
     gates = validate_files(d, seed, disabled, snapshots=False, tolerances=schema.tolerances.model_dump(), sources=sources)
-    log = [f"rpg {__version__} validate {d}"] + [_log_line(g) for g in gates]
+    log = [f"rpg {__version__} validate {d}", *_isolation_note()] + [_log_line(g) for g in gates]
     valid = gates_passed(gates)
     log.append("result: VALID" if valid else "result: INVALID")
     write_logs(d, log, gates)

@@ -60,8 +60,8 @@ def _run_child(req: dict, cwd: str, wfd: int) -> None:  # pragma: no cover - run
         from rpg.validate.isolation import install_seccomp
         from rpg.validate.worker import handle
 
-        install(cwd)
         install_seccomp()
+        install(cwd)
 
         data = handle(req).encode()
         view = memoryview(data)
@@ -127,6 +127,9 @@ def preload() -> None:
     from PIL import Image, PngImagePlugin  # noqa: F401
 
     import rpg.validate.worker  # noqa: F401
+    from rpg.validate.isolation import seccomp_layer
+
+    seccomp_layer()  # loads libseccomp now: a child cannot look for it once its limits are on
 
     backend = os.environ.get("MUJOCO_GL", "egl")
     if backend in ("egl", "osmesa"):

@@ -121,7 +121,7 @@ def namespaces_layer() -> Layer:
     if not shutil.which("bwrap"):
         return Layer("namespaces", False, "bubblewrap (bwrap) is not installed; install Debian's 'bubblewrap' package")
     try:
-        proc = subprocess.run([*bwrap_argv({"PATH": "/usr/bin"}), sys.executable, "-c", "pass"],
+        proc = subprocess.run([*bwrap_argv({"PATH": "/usr/bin"}), "/usr/bin/true"],
                               capture_output=True, timeout=30)
     except (OSError, subprocess.TimeoutExpired) as exc:
         return Layer("namespaces", False, f"bwrap failed: {exc}")
@@ -192,9 +192,23 @@ def die_with_parent() -> None:  # pragma: no cover - runs in a child before exec
 
 
 def install_seccomp() -> bool:  # pragma: no cover - runs in the child that runs task code
-    """Load the seccomp filter into this process (irrevocable); False when unavailable."""
+    """Load the seccomp filter into this process (irrevocable); False when the layer is
+    unavailable here (:func:`seccomp_layer`).
+
+    Raises:
+        RuntimeError: the layer is available but the filter could not be loaded (the
+            request then fails: a sandbox layer never fails open silently).
+    """
     if not seccomp_layer().active:
         return False
+    try:
+        _load_filter()
+    except Exception as exc:  # noqa: BLE001 - fail closed with the reason
+        raise RuntimeError(f"sandbox: the seccomp filter could not be loaded: {exc}") from None
+    return True
+
+
+def _load_filter() -> None:  # pragma: no cover - runs in the child that runs task code
     import pyseccomp as sc
 
     f = sc.SyscallFilter(defaction=sc.ALLOW)
@@ -211,4 +225,3 @@ def install_seccomp() -> bool:  # pragma: no cover - runs in the child that runs
         f.add_rule(deny, name, sc.Arg(0, sc.NE, me))
     f.add_rule(deny, "tkill")
     f.load()
-    return True

@@ -371,8 +371,8 @@ def main() -> None:
 
     req = json.loads(sys.stdin.read(WORKER_MAX_REQUEST))
     apply_limits()
-    install(os.getcwd())
     install_seccomp()
+    install(os.getcwd())
     sys.stdout.write(handle(req))
 
 
