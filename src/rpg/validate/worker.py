@@ -31,7 +31,6 @@ from rpg.domain.visibility import face_visibility
 from rpg.validate.restricted import RestrictedAccess, exec_task_source
 from rpg.validate.static import StaticViolation
 
-
 WORKER_MAX_REQUEST = 64 * 1024**2
 """Largest request a one-shot worker reads, characters."""
 
