@@ -121,8 +121,9 @@ def test_repository_library_holds_every_manifest_entry_with_tags():
             _, doc = load_artifact(d)
             assert doc["content_hash"] == e.content_hash and doc["tags"]["reasoning"] in ("spatial", "semantic")
         else:
-            hist = yaml.safe_load((d / "family.yaml").read_text())
-            assert hist["versions"][-1]["lineage_hash"] == e.content_hash
+            from rpg.steer.family import Family
+
+            assert Family(d).load().digest() == e.content_hash
             assert (ROOT / "library" / e.session).resolve().parent == ROOT / "examples"
 
 

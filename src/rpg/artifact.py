@@ -29,6 +29,25 @@ class ArtifactError(BadInput):
     """A task artifact is missing, malformed or truncated."""
 
 
+NAME_PATTERN = r"^[a-z][a-z0-9_]{0,99}$"
+"""Every name that becomes a path (task, session, manifest entry): snake_case, at most 100 characters."""
+
+
+def check_name(name: object, what: str) -> str:
+    """``name`` if it is a valid task/family name (:data:`NAME_PATTERN`): one path component,
+    no separators, no ``..``.
+
+    Raises:
+        BadInput: anything else, with the name and the rule.
+    """
+    import re
+
+    if not isinstance(name, str) or not re.fullmatch(NAME_PATTERN, name):
+        raise BadInput(f"{what} {name!r} is not a valid name: use snake_case letters, digits and underscores "
+                       "(it becomes a directory name)")
+    return name
+
+
 MAX_ARTIFACT_FILE = 4 * 1024**2
 """Largest artifact text file read (task.yaml, code files, family.yaml), bytes."""
 

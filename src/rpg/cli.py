@@ -219,20 +219,26 @@ def log_cmd(
 
 @app.command("verify")
 def verify_cmd(
-    family: Annotated[Path, typer.Argument(help="A task family.")],
+    target: Annotated[Path, typer.Argument(help="A task family or a task artifact.")],
+    expect: Annotated[str | None, typer.Option("--expect", help="The trusted hash (e.g. the library manifest's) it must have.")] = None,
     as_json: Annotated[bool, typer.Option("--json")] = False,
 ) -> None:
-    """Recompute every hash of a family; exit 1 if any version's files or history were altered."""
-    fam, _ = _family(family)
-    report = fam.verify()
-    ok = all(r["ok"] for r in report)
+    """Recompute every hash of a family (every version's files, the history, head and name) or
+    of a task artifact; exit 1 if anything was altered or differs from --expect."""
+    from rpg.steer.family import verify_target
+
+    with _reported_errors():
+        report = verify_target(target, expect)
     if as_json:
-        print(json.dumps({"ok": ok, "versions": report}, indent=2))
+        print(json.dumps(report, indent=2))
     else:
-        for r in report:
+        for r in report["versions"]:
             mark = "[green]ok[/]" if r["ok"] else "[red]ALTERED[/]"
             out.print(f"v{r['version']:<3} {mark} {esc('; '.join(r['problems']))}", highlight=False)
-    raise typer.Exit(EXIT_OK if ok else EXIT_INVALID)
+        for p in report["problems"]:
+            out.print(f"[red]ALTERED[/] {esc(p)}", highlight=False)
+        out.print(f"{report['kind']} hash {report['hash']}", highlight=False)
+    raise typer.Exit(EXIT_OK if report["ok"] else EXIT_INVALID)
 
 
 @app.command("show")
@@ -297,7 +303,9 @@ def build_cmd(
         out.print(f"[red]{r['status']}[/] {r['name']}: {esc(r.get('error') or '; '.join(r.get('problems') or []) or 'validation failed')}")
     if check:
         for r in changed:
-            out.print(f"[red]changed[/] {r['name']}: expected {r['expected']}, got {r.get('content_hash')}")
+            why = "; ".join(r.get("problems") or []) if r.get("content_hash") == r["expected"] else ""
+            out.print(f"[red]changed[/] {r['name']}: expected {r['expected']}, got {r.get('content_hash')}"
+                      + (f" ({esc(why)})" if why else ""), highlight=False)
     if report is not None:
         report.write_text(json.dumps({"manifest": str(manifest), "check": check, "seconds": seconds, "entries": reports}, indent=2))
     raise typer.Exit(EXIT_INVALID if failed or (check and changed) else EXIT_OK)

@@ -118,13 +118,13 @@ def build_entry(entry: dict, out_dir: str, base_dir: str) -> dict:
             from rpg.steer.family import Family
             from rpg.steer.session import run_session
 
-            fam, steps = run_session(Path(base_dir) / e.session, out_dir, e.seed)
+            fam, steps = run_session(Path(base_dir) / e.session, out_dir, e.seed, name=e.name)
             hist = Family(fam).load()
             repairs = []
             for v in hist.versions:
                 repairs += [x.operator for x in load_artifact(Family(fam).version_dir(v.version_id))[0].repairs]
             ok = all(s.ok for s in steps)
-            report.update(status="valid" if ok else "rejected", content_hash=hist.versions[-1].lineage_hash,
+            report.update(status="valid" if ok else "rejected", content_hash=hist.digest(),
                           repairs=repairs, versions=len(hist.versions), path=str(fam),
                           problems=[p for s in steps for p in s.problems])
     except Exception as exc:  # noqa: BLE001 - one entry's failure is reported, the batch goes on
@@ -222,7 +222,9 @@ def build_library(manifest_path: str | Path, jobs: int = 1, backend: Literal["lo
     rebuild after a compiler change touches, in git, only what changed (``force`` rewrites
     them all, e.g. to refresh snapshots after a renderer change).  Rejected tasks go to
     ``.rejected/``.  The manifest's hashes are updated to what was built.  With ``check``
-    nothing in the library changes.  Each report says whether the entry was ``written``.
+    nothing in the library changes, and each committed entry is hashed from its files too
+    (``library_hash``): an entry edited in place is ``changed`` even when it regenerates
+    to the manifest's hash.  Each report says whether the entry was ``written``.
 
     Raises:
         ManifestError: an unreadable manifest or an unavailable backend.
@@ -244,6 +246,13 @@ def build_library(manifest_path: str | Path, jobs: int = 1, backend: Literal["lo
                 progress(rep)
     order = {e["name"]: i for i, e in enumerate(entries)}
     reports.sort(key=lambda r: order[r["name"]])
+    if check:  # the committed library itself must still be what the manifest says
+        for rep in reports:
+            rep["library_hash"] = _recorded_hash(base / rep["name"])
+            if rep.get("expected") and rep["library_hash"] != rep["expected"]:
+                rep["changed"] = True
+                rep.setdefault("problems", []).append(
+                    "the committed library entry differs from the manifest (files edited, or hashes no longer match)")
     if not check:
         by_name = {r["name"]: r for r in reports}
         for e in manifest.entries:
@@ -262,6 +271,8 @@ def _publish(report: dict, tmp: Path, base: Path, force: bool) -> None:
     if not report.get("path"):
         return
     rel = Path(report["path"]).relative_to(tmp)
+    if rel.parts != (report["name"],) and rel.parts != (".rejected", report["name"]):
+        raise ManifestError(f"entry {report['name']!r} was built at {rel}, outside its own directory")
     target = base / rel
     report["path"] = str(target)
     if report["status"] == "valid" and not force and _recorded_hash(target) == report["content_hash"]:
@@ -280,7 +291,7 @@ def _recorded_hash(path: Path) -> str | None:
         if is_family(path):
             family = Family(path)
             intact = all(v["ok"] for v in family.verify())
-            return family.load().versions[-1].lineage_hash if intact else None
+            return family.load().digest() if intact else None
         _, doc = load_artifact(path)
         sources = task_sources(path)
         digest = content_hash(doc, sources["code.py"], sources["goal_state_code.py"])

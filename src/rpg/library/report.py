@@ -8,13 +8,12 @@ next to the page, so the site directory is self-contained.
 
 from __future__ import annotations
 
-import shutil
 from pathlib import Path
 
 import jinja2
 
 from rpg import yamlio
-from rpg.artifact import ArtifactError, load_artifact
+from rpg.artifact import ArtifactError, load_artifact, read_bytes, write_file
 
 PAGE = jinja2.Template("""<!doctype html>
 <html lang="en"><head><meta charset="utf-8"><title>{{ title }}</title>
@@ -78,9 +77,9 @@ def _card(directory: Path, site: Path, card_id: str, title: str, kind: str, line
     images = {}
     for key in ("initial", "goal"):
         src = directory / f"{key}.png"
-        if src.is_file():
+        if src.is_file() and not src.is_symlink():  # a gallery never publishes what a link points at
             dst = site / "img" / f"{card_id}-{key}.png"
-            shutil.copyfile(src, dst)
+            write_file(dst, read_bytes(src, 64 * 1024**2))
             images[key] = f"img/{dst.name}"
         else:
             images[key] = None

@@ -10,13 +10,26 @@ A family is a directory::
 Paper, appendix "Version History Representation".  Hashes:
 
 * ``content_hash``: the artifact's hash (task.yaml fields and both code files).
-* ``code_hash``: SHA-256 of the code generated from the version's schema with its language
+* ``code_hash``: SHA-256 of the version's code files as they are on disk (``code.py``, a
+  NUL byte, ``goal_state_code.py``).
+* ``task_hash``: SHA-256 of the code generated from the version's schema with its language
   (name, instruction, paraphrases, summary) blanked and its assets in name order, so two
   versions that define the same task share it whatever words produced them; steering uses
-  it to detect loops.
+  it to detect loops.  (Histories written before it existed kept this hash in
+  ``code_hash``; they still verify.)
 * ``lineage_hash``: SHA-256 over the content hash, the parent's lineage hash and the
   snapshot's own recorded fields, so a changed file *or* a changed history entry breaks
   the chain from that version on (:meth:`Family.verify`).
+* ``files``: SHA-256 of every file of the version (logs, snapshots, model records too),
+  checked by :meth:`Family.verify` but not chained (logs carry times; snapshots depend on
+  the renderer).
+* :meth:`FamilyHistory.digest`: SHA-256 over the family's name, head and every lineage
+  hash: the one hash a library manifest records and ``rpg verify --expect`` compares, so
+  a dropped newest version, a moved head or a renamed family are caught too.
+
+What a hash chain without a key proves: that the files and the history agree with each
+other.  Whoever can write the family can recompute every hash, so a forgery is caught only
+against a hash kept elsewhere (``rpg verify --expect HASH`` with the manifest's value).
 
 Writes are atomic (temporary file or directory, then rename) and serialized by a file lock.
 """
@@ -43,6 +56,8 @@ from rpg.artifact import (
     atomic_replace,
     content_hash,
     load_artifact,
+    read_bytes,
+    read_text,
     staging_dir,
     task_sources,
 )
@@ -79,12 +94,15 @@ class TaskSnapshot(BaseModel):
     preserve_positions: bool = False
     preserve_goals: bool = False
     lineage_hash: str = ""
+    task_hash: str = Field("", description="Language-blanked task hash (loop detection); hashed when set.")
+    files: dict[str, str] = Field(default_factory=dict, description="File name -> SHA-256 (verified, not chained).")
     created: str = Field("", description="UTC time recorded (not hashed).")
     author: str | None = Field(None, description="Who wrote the edit (from the version's task.yaml provenance); "
                                                  "hashed when known, absent when not.")
 
     def record_digest(self) -> str:
-        doc = self.model_dump(exclude={"lineage_hash", "created"} | (set() if self.author else {"author"}))
+        doc = self.model_dump(exclude={"lineage_hash", "created", "files"} | (set() if self.author else {"author"})
+                              | (set() if self.task_hash else {"task_hash"}))
         return hashlib.sha256(json.dumps(doc, sort_keys=True, separators=(",", ":")).encode()).hexdigest()
 
 
@@ -97,6 +115,11 @@ class FamilyHistory(BaseModel):
     name: str
     head: int = Field(ge=0, description="The current version: the latest one steered to or looped back to.")
     versions: list[TaskSnapshot]
+
+    def digest(self) -> str:
+        """SHA-256 over the name, the head and every version's lineage hash, in order."""
+        doc = {"name": self.name, "head": self.head, "lineage": [v.lineage_hash for v in self.versions]}
+        return hashlib.sha256(json.dumps(doc, sort_keys=True, separators=(",", ":")).encode()).hexdigest()
 
     def get(self, version_id: int) -> TaskSnapshot:
         for v in self.versions:
@@ -111,7 +134,30 @@ def lineage_hash(snapshot: TaskSnapshot, parent_lineage: str | None) -> str:
     return hashlib.sha256(payload.encode()).hexdigest()
 
 
-def code_hash(schema: TaskSchema) -> str:
+def code_hash(sources: dict[str, str]) -> str:
+    """SHA-256 of a version's code files as read (see module doc)."""
+    return hashlib.sha256((sources["code.py"] + "\0" + sources["goal_state_code.py"]).encode()).hexdigest()
+
+
+def file_hashes(directory: Path) -> dict[str, str]:
+    """SHA-256 of every regular file of a version directory, by name (links refused).
+
+    Raises:
+        ArtifactError: a link or an unreadable file.
+    """
+    out = {}
+    for f in sorted(Path(directory).iterdir()):
+        if f.is_symlink() or f.is_dir():
+            if f.is_symlink():
+                raise ArtifactError(f"{f} is a symbolic link; artifact files must be regular files")
+            continue
+        if f.name.startswith("."):
+            continue
+        out[f.name] = hashlib.sha256(read_bytes(f, 256 * 1024**2)).hexdigest()
+    return out
+
+
+def task_hash(schema: TaskSchema) -> str:
     """SHA-256 of the code generated for a schema's task, its language blanked (see module doc)."""
     from rpg.codegen import generate
 
@@ -148,8 +194,8 @@ class Family:
             raise FamilyError(f"{self.path} is not a task family ({HISTORY_FILE} is missing); "
                               "create one with 'rpg compile ... --family' or steer a compiled task")
         try:
-            hist = FamilyHistory.model_validate(yamlio.load(f.read_text()))
-        except (yaml.YAMLError, ValidationError, TypeError) as exc:
+            hist = FamilyHistory.model_validate(yamlio.load(read_text(f)))
+        except (yaml.YAMLError, ValidationError, TypeError, ArtifactError) as exc:
             first = str(exc).splitlines()[0][:200]
             raise FamilyError(f"{f} is corrupt: {first}") from None
         if [v.version_id for v in hist.versions] != list(range(len(hist.versions))) or not hist.versions:
@@ -235,8 +281,18 @@ class Family:
                     problems.append("artifact files changed since they were written (content hash differs from task.yaml)")
                 if actual != v.content_hash:
                     problems.append("artifact does not match the content hash recorded in the history")
-                if code_hash(schema) != v.code_hash:
+                if v.task_hash:
+                    if code_hash(sources) != v.code_hash:
+                        problems.append("code files do not match the recorded code hash")
+                    if task_hash(schema) != v.task_hash:
+                        problems.append("task schema does not match the recorded task hash")
+                elif task_hash(schema) != v.code_hash:  # a history from before task_hash
                     problems.append("task schema does not match the recorded code hash")
+                if v.files:
+                    current = file_hashes(d)
+                    changed = sorted(n for n in set(v.files) | set(current) if v.files.get(n) != current.get(n))
+                    if changed:
+                        problems.append(f"files changed, added or removed since the version was recorded: {', '.join(changed)}")
             except (ArtifactError, OSError) as exc:
                 problems.append(str(exc))
             parent = by_id.get(v.parent) if v.parent is not None else None
@@ -248,13 +304,45 @@ class Family:
         return out
 
 
+def verify_target(path: Path, expect: str | None = None) -> dict:
+    """Verify a family or a plain task artifact; against ``expect`` (a manifest's hash) too.
+
+    Returns:
+        ``{"ok", "kind", "hash", "expected", "problems", "versions"}``: ``hash`` is the
+        family's :meth:`FamilyHistory.digest` or the artifact's recomputed content hash.
+
+    Raises:
+        FamilyError / ArtifactError: not a family or artifact, or an unreadable history.
+    """
+    path = Path(path)
+    problems: list[str] = []
+    if is_family(path):
+        fam = Family(path)
+        versions = fam.verify()
+        digest = fam.load().digest()
+        kind = "family"
+    else:
+        schema, doc = load_artifact(path)
+        sources = task_sources(path)
+        digest = content_hash(doc, sources["code.py"], sources["goal_state_code.py"])
+        if digest != doc.get("content_hash"):
+            problems.append("artifact files changed since they were written (content hash differs from task.yaml)")
+        versions, kind = [], "task"
+    if expect is not None and digest != expect.strip().lower():
+        problems.append(f"hash {digest[:16]}... differs from the expected {expect.strip()[:16]}... "
+                        "(the history, head, name or files differ from the trusted copy)")
+    ok = not problems and all(v["ok"] for v in versions)
+    return {"ok": ok, "kind": kind, "hash": digest, "expected": expect, "problems": problems, "versions": versions}
+
+
 def snapshot_of(directory: Path, version_id: int, description: str, parent: TaskSnapshot | None,
                 reference: int | None, intent: str, parameters: dict, flags: dict[str, bool]) -> TaskSnapshot:
     """The TaskSnapshot of a compiled version directory, with its lineage hash."""
     schema, doc = load_artifact(directory)
     snap = TaskSnapshot(
         version_id=version_id, description=description, instruction=schema.instruction,
-        assets_used=schema.assets_used(), goal_summary=schema.goal_summary, code_hash=code_hash(schema),
+        assets_used=schema.assets_used(), goal_summary=schema.goal_summary,
+        code_hash=code_hash(task_sources(directory)), task_hash=task_hash(schema), files=file_hashes(directory),
         content_hash=doc["content_hash"], parent=parent.version_id if parent else None, reference=reference,
         intent=intent, parameters=parameters, **flags, created=_now(),
         author=(doc.get("provenance") or {}).get("author"))

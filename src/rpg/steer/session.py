@@ -24,6 +24,7 @@ from pathlib import Path
 import yaml
 
 from rpg import yamlio
+from rpg.artifact import ArtifactError, check_name, read_text
 from rpg.compiler import compile_instruction
 from rpg.errors import BadInput
 from rpg.steer.edits import SteerError
@@ -57,16 +58,20 @@ def load_session(path: str | Path) -> dict:
         SessionError: unreadable, or not ``{name, steps: [{instruction}, {edit, ...}, ...]}``.
     """
     try:
-        doc = yamlio.load(Path(path).read_text())
-    except (OSError, yaml.YAMLError) as exc:
+        doc = yamlio.load(read_text(Path(path)))
+    except (ArtifactError, yaml.YAMLError) as exc:
         raise SessionError(f"cannot read session {path}: {str(exc).splitlines()[0]}") from None
     steps = doc.get("steps") if isinstance(doc, dict) else None
-    if not isinstance(steps, list) or not steps or not isinstance(steps[0], dict) or "instruction" not in steps[0]:
-        raise SessionError(f"{path}: a session needs 'steps', the first with an 'instruction'")
+    if not isinstance(steps, list) or not steps or not isinstance(steps[0], dict) or not isinstance(steps[0].get("instruction"), str):
+        raise SessionError(f"{path}: a session needs 'steps', the first with an 'instruction' (text)")
     for i, s in enumerate(steps[1:], 1):
         if not isinstance(s, dict) or not isinstance(s.get("edit"), str):
-            raise SessionError(f"{path}: step {i} needs an 'edit'")
-    doc.setdefault("name", Path(path).stem)
+            raise SessionError(f"{path}: step {i} needs an 'edit' (text)")
+    doc.setdefault("name", re.sub(r"[^a-z0-9_]", "_", Path(path).stem.lower()))
+    try:
+        check_name(doc["name"], "session name")
+    except BadInput as exc:
+        raise SessionError(f"{path}: {exc}") from None
     return doc
 
 
@@ -92,9 +97,18 @@ def check_final(directory: Path, expected: str) -> list[str]:
     return [] if got == want else [f"goal tower is {', '.join(got)}, expected {', '.join(want)}"]
 
 
-def run_session(path: str | Path, out_dir: str | Path, seed: int = 0) -> tuple[Path, list[StepResult]]:
-    """Run a session into ``out_dir/<name>/`` (a family); return it and one result per step."""
+def run_session(path: str | Path, out_dir: str | Path, seed: int = 0,
+                name: str | None = None) -> tuple[Path, list[StepResult]]:
+    """Run a session into ``out_dir/<name>/`` (a family); return it and one result per step.
+
+    ``name`` (e.g. the library entry's) overrides the session file's own ``name``.
+
+    Raises:
+        SessionError: an unreadable session or an invalid name.
+    """
     doc = load_session(path)
+    if name is not None:
+        doc["name"] = check_name(name, "family name")
     out_dir = Path(out_dir)
     first = doc["steps"][0]
     results: list[StepResult] = []

@@ -41,7 +41,15 @@ from rpg.steer.edits import (
     interpret,
     strip_edit_words,
 )
-from rpg.steer.family import Family, FamilyHistory, code_hash, create_family, is_family, snapshot_of
+from rpg.steer.family import (
+    LOCK_TIMEOUT_S,
+    Family,
+    FamilyHistory,
+    create_family,
+    is_family,
+    snapshot_of,
+    task_hash,
+)
 from rpg.steer.relations import relation_of, rewrite_patch, rewrite_region, same_assets
 from rpg.steer.relations import rewrite as rewrite_relation
 from rpg.steer.spec import TaskSpec, extract, render
@@ -266,8 +274,13 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
         raise SteerError("the edit is empty; say what to change, e.g. \"add a green block on top\"")
     path = Path(family)
     if not is_family(path):
-        load_artifact(path)
-        create_family(path)
+        from filelock import FileLock
+
+        # the first steer turns the artifact into a family: once, even when two steer at once
+        with FileLock(str(path.parent / f".{path.name}.family.lock"), timeout=LOCK_TIMEOUT_S):
+            if not is_family(path):
+                load_artifact(path)
+                create_family(path)
     fam = Family(path)
     with fam.lock():
         hist = fam.load()
@@ -294,8 +307,8 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
             seed = int(load_artifact(fam.version_dir(hist.head))[1].get("provenance", {}).get("seed", 0))
         result = SteerResult(path, edit, intent, reference, None, False, instruction=instruction, notes=notes,
                              parameters=parameters)
-        digest = code_hash(schema)
-        same = next((v for v in hist.versions if v.code_hash == digest), None)
+        digest = task_hash(schema)
+        same = next((v for v in hist.versions if (v.task_hash or v.code_hash) == digest), None)
         if same is not None:
             hist.head = same.version_id
             fam.save(hist)
