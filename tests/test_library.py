@@ -130,7 +130,6 @@ def test_repository_library_holds_every_manifest_entry_with_tags():
 def test_every_library_task_records_its_mention_accounting():
     """task.yaml says which words produced which part of the goal; in the committed
     library every mention of every instruction (steering's canonical ones included) has a part."""
-    import yaml
 
     tasks = sorted((Path(__file__).resolve().parents[1] / "library").rglob("task.yaml"))
     assert len(tasks) >= 40
