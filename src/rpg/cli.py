@@ -18,7 +18,7 @@ from rich.console import Console
 from rich.markup import escape as esc
 
 from rpg._version import __version__
-from rpg.errors import EXIT_BAD_INPUT, EXIT_INVALID, EXIT_OK
+from rpg.errors import EXIT_BAD_INPUT, EXIT_INVALID, EXIT_OK, EXIT_SYSTEM
 
 app = typer.Typer(
     add_completion=False,
@@ -53,7 +53,8 @@ def main_options(
 @contextmanager
 def _reported_errors():
     """Map the API's errors to one line and an exit code: every :class:`rpg.errors.RpgError`
-    carries its own (see :mod:`rpg.errors`); any other ``ValueError`` is bad input (2)."""
+    carries its own (see :mod:`rpg.errors`); any other ``ValueError`` is bad input (2), an
+    ``OSError`` (disk full, permission denied) a failure of the machine (4)."""
     from rpg.errors import RpgError
 
     try:
@@ -62,6 +63,19 @@ def _reported_errors():
         _fail(str(exc), exc.exit_code)
     except ValueError as exc:
         _fail(str(exc))
+    except OSError as exc:  # disk full, permissions: the machine, not the input
+        where = f": {exc.filename}" if exc.filename else ""
+        _fail(f"{exc.strerror or exc}{where}", EXIT_SYSTEM)
+
+
+def _known_gates(names: list[str]) -> None:
+    """Refuse a ``--disable`` that names no gate (a typo would silently run every gate)."""
+    from rpg.errors import BadInput
+    from rpg.validate.gates import GATES
+
+    unknown = sorted(set(names) - set(GATES))
+    if unknown:
+        raise BadInput(f"--disable {unknown[0]!r} is not a gate; gates: {', '.join(GATES)}")
 
 
 def default_author(author: str | None) -> str | None:
@@ -96,7 +110,7 @@ def make_llm_client(model: str | None):
 def compile_cmd(
     instruction: Annotated[str, typer.Argument(help="The task, in plain language.")],
     output: Annotated[Path, typer.Option("-o", "--output", help="Library directory to write the task into.")] = Path("out"),
-    seed: Annotated[int, typer.Option("--seed", help="Seed of the episode shown in the snapshots and checks.")] = 0,
+    seed: Annotated[int, typer.Option("--seed", min=0, help="Seed of the episode shown in the snapshots and checks.")] = 0,
     model: Annotated[str | None, typer.Option("--model", help="'builtin' (default) or a litellm model name.")] = None,
     disable: Annotated[list[str], typer.Option("--disable", help="Switch a gate off (ablation).")] = [],  # noqa: B006
     family: Annotated[bool, typer.Option("--family", help="Start a task family: the task becomes its v0.")] = False,
@@ -113,6 +127,7 @@ def compile_cmd(
 
     model = model or os.environ.get("RPG_MODEL") or None
     with _reported_errors():
+        _known_gates(disable)
         result = compile_instruction(instruction, output, seed, frozenset(disable), model, replay=replay,
                                      builtin_first=builtin_first, llm=make_llm_client(model), codegen=codegen,
                                      library=library, author=default_author(author))
@@ -148,7 +163,7 @@ def _print_compile(result) -> None:
 def steer_cmd(
     family: Annotated[Path, typer.Argument(help="A task family (or a compiled task, which becomes v0 of one).")],
     edit: Annotated[str, typer.Argument(help="The change, in plain language.")] = "",
-    seed: Annotated[int | None, typer.Option("--seed", help="Seed of the checks (default: the family's).")] = None,
+    seed: Annotated[int | None, typer.Option("--seed", min=0, help="Seed of the checks (default: the family's).")] = None,
     model: Annotated[str | None, typer.Option("--model", help="'builtin' (default) or a litellm model name.")] = None,
     replay: Annotated[Path | None, typer.Option("--replay", help="Re-apply a recorded model edit (llm_log.jsonl) offline.")] = None,
     disable: Annotated[list[str], typer.Option("--disable", help="Switch a gate off (ablation).")] = [],  # noqa: B006
@@ -161,6 +176,7 @@ def steer_cmd(
 
     model = model or os.environ.get("RPG_MODEL") or None
     with _reported_errors():
+        _known_gates(disable)
         r = steer(family, edit, seed, frozenset(disable), llm=make_llm_client(model) if replay is None else None,
                   replay=replay, author=default_author(author))
     if as_json:
@@ -262,7 +278,7 @@ def show_cmd(
 @app.command("build")
 def build_cmd(
     manifest: Annotated[Path, typer.Argument(help="A library manifest (library/manifest.yaml).")],
-    jobs: Annotated[int, typer.Option("--jobs", "-j", help="Parallel workers.")] = 1,
+    jobs: Annotated[int, typer.Option("--jobs", "-j", min=1, help="Parallel workers.")] = 1,
     backend: Annotated[str, typer.Option("--backend", help="local (process pool) or ray.")] = "local",
     address: Annotated[str | None, typer.Option("--address", help="Ray cluster address ('auto'); default a local Ray.")] = None,
     check: Annotated[bool, typer.Option("--check", help="Regenerate in a temporary directory; exit 1 if any hash differs.")] = False,
@@ -333,7 +349,7 @@ app.add_typer(session_app, name="session")
 def session_run_cmd(
     session: Annotated[Path, typer.Argument(help="Session YAML: name, steps (instruction, then edits).")],
     output: Annotated[Path, typer.Option("-o", "--output", help="Directory to write the family into.")] = Path("out"),
-    seed: Annotated[int, typer.Option("--seed")] = 0,
+    seed: Annotated[int, typer.Option("--seed", min=0)] = 0,
     as_json: Annotated[bool, typer.Option("--json")] = False,
 ) -> None:
     """Run an instruction and its edits; exit 1 if any step fails or misses its expectations."""
@@ -368,6 +384,7 @@ def validate_cmd(
     from rpg.compiler import revalidate
 
     with _reported_errors():
+        _known_gates(disable)
         result = revalidate(directory, frozenset(disable))
     if as_json:
         print(json.dumps(result.to_json(), indent=2))
@@ -422,8 +439,8 @@ def _print_block(block: dict, as_json: bool) -> None:
 def inspect_cmd(
     directory: Annotated[Path, typer.Argument(help="A task artifact directory.")],
     state: Annotated[str, typer.Option("--state", help="initial or goal")] = "initial",
-    seed: Annotated[int, typer.Option("--seed")] = 0,
-    settle: Annotated[int, typer.Option("--settle", help="Zero-action steps before reading the state.")] = 50,
+    seed: Annotated[int, typer.Option("--seed", min=0)] = 0,
+    settle: Annotated[int, typer.Option("--settle", min=0, help="Zero-action steps before reading the state.")] = 50,
     as_json: Annotated[bool, typer.Option("--json")] = False,
 ) -> None:
     """Print objects, success and predicates of the initial or goal state."""
@@ -436,14 +453,16 @@ def inspect_cmd(
 def check_cmd(
     directory: Annotated[Path, typer.Argument(help="A task artifact directory.")],
     poses: Annotated[Path, typer.Option("--poses", help="JSON: object name -> {position, quaternion}.")],
-    settle: Annotated[int, typer.Option("--settle")] = 0,
+    settle: Annotated[int, typer.Option("--settle", min=0)] = 0,
     as_json: Annotated[bool, typer.Option("--json")] = False,
 ) -> None:
     """Evaluate the success predicate on given poses."""
+    from rpg.artifact import ArtifactError, read_text
+
     try:
-        doc = json.loads(poses.read_text())
-    except (OSError, json.JSONDecodeError) as exc:
-        _fail(f"cannot read poses from {poses}: {exc}")
+        doc = json.loads(read_text(poses, 16 * 1024**2))
+    except (ArtifactError, ValueError, RecursionError) as exc:
+        _fail(f"cannot read poses from {poses}: {str(exc).splitlines()[0][:200] if str(exc) else type(exc).__name__}")
     objects = doc.get("objects", doc) if isinstance(doc, dict) else None
     if not isinstance(objects, dict):
         _fail(f"{poses} must map object names to {{'position': [x, y, z], 'quaternion': [w, x, y, z]}}")
@@ -453,7 +472,7 @@ def check_cmd(
 @app.command("render")
 def render_cmd(
     directory: Annotated[Path, typer.Argument(help="A task artifact directory.")],
-    seed: Annotated[int, typer.Option("--seed")] = 0,
+    seed: Annotated[int, typer.Option("--seed", min=0)] = 0,
 ) -> None:
     """Re-render initial.png and goal.png."""
     from rpg.artifact import save_snapshots
@@ -470,7 +489,7 @@ def diversity_cmd(
     embedding: Annotated[str, typer.Option("--embedding", help="wordllama (offline, default), tfidf, or st:PATH (a local sentence-transformers model).")] = "wordllama",
     output: Annotated[Path | None, typer.Option("-o", "--output", help="Directory for summary.json and the plots.")] = None,
     suggest: Annotated[bool, typer.Option("--suggest", help="List what the library covers least.")] = False,
-    seed: Annotated[int, typer.Option("--seed", help="Seed of the contributor orderings and the t-SNE map.")] = 0,
+    seed: Annotated[int, typer.Option("--seed", min=0, help="Seed of the contributor orderings and the t-SNE map.")] = 0,
     as_json: Annotated[bool, typer.Option("--json", help="Print the summary as JSON.")] = False,
 ) -> None:
     """How much of the task space a library covers, by contributor (offline)."""
@@ -527,9 +546,14 @@ def schema_cmd(
     output: Annotated[Path, typer.Option("-o", "--output")] = Path("schemas/task.schema.json"),
 ) -> None:
     """Write the TaskSchema JSON Schema."""
+    from rpg.artifact import write_file
     from rpg.schema.model import export_json_schema
 
-    output.write_text(export_json_schema())
+    if output.is_dir():
+        _fail(f"{output} is a directory; give the JSON Schema's file name, e.g. {output / 'task.schema.json'}")
+    with _reported_errors():
+        output.parent.mkdir(parents=True, exist_ok=True)
+        write_file(output, export_json_schema())
     out.print(f"wrote {output}")
 
 

@@ -34,6 +34,7 @@ from rpg.artifact import (
     write_logs,
 )
 from rpg.codegen import generate
+from rpg.errors import BadInput
 from rpg.repair import route
 from rpg.schema.builtin import parse
 from rpg.schema.feasibility import check_feasibility
@@ -205,6 +206,29 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
             shutil.rmtree(tmp, ignore_errors=True)
 
 
+def check_output_dir(out_dir: Path) -> None:
+    """Refuse an output path that exists and is not a directory.
+
+    Raises:
+        BadInput: ``out_dir`` is a file (or another non-directory).
+    """
+    if out_dir.exists() and not out_dir.is_dir():
+        raise BadInput(f"output {out_dir} exists and is not a directory; give a directory (it is created if missing)")
+
+
+def check_text(text: str, what: str) -> str:
+    """``text`` if it can be written as UTF-8 (no lone surrogates from undecodable bytes).
+
+    Raises:
+        BadInput: the text holds bytes that are not UTF-8.
+    """
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        raise BadInput(f"{what} is not valid UTF-8 text") from None
+    return text
+
+
 def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int = 0,
                         disabled: frozenset[str] = frozenset(), model: str | None = None,
                         name: str | None = None, llm=None, replay: str | Path | None = None,
@@ -237,6 +261,9 @@ def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int
     unknown = set(disabled) - set(GATES)
     if unknown:
         raise ValueError(f"unknown gate(s) {sorted(unknown)}; gates are {', '.join(GATES)}")
+    check_output_dir(Path(out_dir))
+    if isinstance(instruction, str):
+        check_text(instruction, "the instruction")
     if codegen not in ("builtin", "llm"):
         raise ValueError(f"codegen must be 'builtin' or 'llm', not {codegen!r}")
     if replay is not None:

@@ -12,6 +12,8 @@ code  meaning
 2     bad input or usage: an instruction the front end cannot read, an edit that
       cannot be applied, a malformed artifact, family, manifest or session (:class:`BadInput`)
 3     the model provider failed: network, authentication, rate limit (:class:`ProviderFailure`)
+4     the machine failed: disk full, permission denied, a file system error (``OSError``);
+      nothing half-written is left in place
 ====  ===============================================================================
 
 The message of every error is one line that says what is wrong and, where it can, how to
@@ -20,7 +22,7 @@ fix it; the CLI prints it after ``error:`` and never a traceback.
 
 from __future__ import annotations
 
-EXIT_OK, EXIT_INVALID, EXIT_BAD_INPUT, EXIT_PROVIDER = 0, 1, 2, 3
+EXIT_OK, EXIT_INVALID, EXIT_BAD_INPUT, EXIT_PROVIDER, EXIT_SYSTEM = 0, 1, 2, 3, 4
 
 
 class RpgError(Exception):

@@ -20,7 +20,8 @@ SafeLoader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 
 
 class AliasRefused(BadInput, yaml.YAMLError):
-    """A YAML document uses an anchor or an alias, which rpg's files never contain."""
+    """A YAML document uses an anchor or an alias (which rpg's files never contain) or
+    nests deeper than :data:`MAX_DEPTH`."""
 
 
 class _NoAliasDumper(yaml.SafeDumper):
@@ -28,19 +29,31 @@ class _NoAliasDumper(yaml.SafeDumper):
         return True
 
 
+MAX_DEPTH = 64
+"""Deepest nesting of lists and mappings accepted (rpg's own files nest fewer than 10 levels)."""
+
+
 def load(text: str) -> Any:
-    """Parse one YAML document with the safe loader, refusing anchors and aliases.
+    """Parse one YAML document with the safe loader, refusing anchors, aliases and nesting
+    deeper than :data:`MAX_DEPTH` (checked first on libyaml's event stream, which is
+    iterative: a deeply nested document never reaches the recursive composer).
 
     Raises:
-        AliasRefused: the document has an anchor or alias.
+        AliasRefused: the document has an anchor or alias, or nests too deep.
         yaml.YAMLError: malformed YAML.
     """
-    if "&" in text or "*" in text:  # only then can the document hold an anchor or an alias
-        for event in yaml.parse(text, Loader=SafeLoader):
-            if isinstance(event, yaml.AliasEvent) or getattr(event, "anchor", None):
-                mark = getattr(event, "start_mark", None)
-                where = f" (line {mark.line + 1})" if mark else ""
-                raise AliasRefused(f"YAML anchors and aliases are not allowed{where}")
+    depth = 0
+    for event in yaml.parse(text, Loader=SafeLoader):
+        if isinstance(event, yaml.AliasEvent) or getattr(event, "anchor", None):
+            mark = getattr(event, "start_mark", None)
+            where = f" (line {mark.line + 1})" if mark else ""
+            raise AliasRefused(f"YAML anchors and aliases are not allowed{where}")
+        if isinstance(event, yaml.CollectionStartEvent):
+            depth += 1
+            if depth > MAX_DEPTH:
+                raise AliasRefused(f"YAML nested deeper than {MAX_DEPTH} levels is not allowed")
+        elif isinstance(event, yaml.CollectionEndEvent):
+            depth -= 1
     return yaml.load(text, Loader=SafeLoader)  # noqa: S506 - a safe loader (C or Python)
 
 

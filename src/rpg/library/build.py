@@ -145,10 +145,13 @@ def _start_worker() -> None:
 
 
 def _join_template(address: str | None) -> None:
-    """Pool-worker initializer: this worker's fork server is a clone of the parent's
-    template (or, without one, a server of its own)."""
+    """Pool-worker initializer: this worker dies with the build (kill -9 of ``rpg build``
+    leaves no worker behind); its fork server is a clone of the parent's template (or,
+    without one, a server of its own)."""
+    from rpg.validate.isolation import die_with_parent
     from rpg.validate.sandbox import prestart
 
+    die_with_parent()
     prestart(address)
 
 
@@ -199,7 +202,12 @@ def _ray(entries: list[dict], out_dir: str, base_dir: str, jobs: int, address: s
         if address:
             ray.init(address=address, include_dashboard=False, log_to_driver=False)
         else:
-            ray.init(num_cpus=jobs, include_dashboard=False, log_to_driver=False)
+            # A local instance: node address 127.0.0.1 and Ray's token authentication on, so
+            # what Ray still opens on other interfaces answers only to this session's token.
+            if os.environ.get("RAY_AUTH_MODE", "token") != "token":  # Ray's default: a per-session token
+                raise ManifestError("a local Ray instance needs RAY_AUTH_MODE=token (Ray's token authentication); "
+                                    "unset RAY_AUTH_MODE or pass --address to use a cluster you secured yourself")
+            ray.init(num_cpus=jobs, include_dashboard=False, log_to_driver=False, _node_ip_address="127.0.0.1")
     try:
         task = ray.remote(num_cpus=1)(build_entry)
         pending = [task.remote(e, out_dir, base_dir) for e in _longest_first(entries)]
@@ -209,6 +217,27 @@ def _ray(entries: list[dict], out_dir: str, base_dir: str, jobs: int, address: s
     finally:
         if started:
             ray.shutdown()
+
+
+STALE_TEMPORARY_S = 6 * 3600.0
+"""Age after which a build's leftover temporary directory (its process killed) is removed, s."""
+
+
+def remove_stale_temporaries(base: Path, max_age_s: float = STALE_TEMPORARY_S) -> list[str]:
+    """Delete ``.rpg-build-*``, ``.tmp-*`` and ``.trash-*`` directories in ``base`` (left by
+    killed builds) that are older than ``max_age_s``; their names."""
+    import shutil
+
+    gone = []
+    now = time.time()
+    for d in sorted(base.glob(".rpg-build-*")) + sorted(base.glob(".tmp-*")) + sorted(base.glob(".trash-*")):
+        try:
+            if d.is_dir() and not d.is_symlink() and now - d.stat().st_mtime > max_age_s:
+                shutil.rmtree(d, ignore_errors=True)
+                gone.append(d.name)
+        except OSError:
+            continue
+    return gone
 
 
 def build_library(manifest_path: str | Path, jobs: int = 1, backend: Literal["local", "ray"] = "local",
@@ -232,6 +261,8 @@ def build_library(manifest_path: str | Path, jobs: int = 1, backend: Literal["lo
     manifest_path = Path(manifest_path)
     manifest = load_manifest(manifest_path)
     base = manifest_path.resolve().parent
+    if not check:
+        remove_stale_temporaries(base)
     entries = [e.model_dump() for e in manifest.entries]
     t0 = time.perf_counter()
     # In place, the build directory sits in the library so that publishing is a rename.

@@ -272,10 +272,14 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
         edit, llm = header["instruction"], LLMClient(header["model"], replay=exchanges)
     if not edit or not edit.strip():
         raise SteerError("the edit is empty; say what to change, e.g. \"add a green block on top\"")
+    from rpg.compiler import check_text
+
+    check_text(edit, "the edit")
     path = Path(family)
     if not is_family(path):
         from filelock import FileLock
 
+        load_artifact(path)  # refuse a path that is no artifact before anything is written beside it
         # the first steer turns the artifact into a family: once, even when two steer at once
         with FileLock(str(path.parent / f".{path.name}.family.lock"), timeout=LOCK_TIMEOUT_S):
             if not is_family(path):
