@@ -238,6 +238,33 @@ def forkserver_enabled() -> bool:
     return os.environ.get("RPG_FORKSERVER", "1") != "0" and hasattr(os, "fork")
 
 
+STALE_SERVER_DIR_S = 6 * 3600.0
+"""Age after which a fork server's leftover directory (its rpg killed) is removed, s."""
+
+_swept = False
+
+
+def _remove_stale_server_dirs() -> None:
+    """Once per process: delete this user's ``rpg-forkserver-*`` / ``rpg-worker-*`` temporary
+    directories older than :data:`STALE_SERVER_DIR_S` (left behind by a killed ``rpg``)."""
+    global _swept
+    if _swept:
+        return
+    _swept = True
+    import glob
+    import time
+
+    now = time.time()
+    for d in glob.glob(os.path.join(tempfile.gettempdir(), "rpg-forkserver-*")) + \
+            glob.glob(os.path.join(tempfile.gettempdir(), "rpg-worker-*")):
+        try:
+            st = os.lstat(d)
+            if st.st_uid == os.getuid() and os.path.isdir(d) and not os.path.islink(d) and now - st.st_mtime > STALE_SERVER_DIR_S:
+                shutil.rmtree(d, ignore_errors=True)
+        except OSError:
+            continue
+
+
 def prestart(template: str | None = None) -> None:
     """Start the fork server now (without waiting for it), so that its imports overlap the
     caller's own start-up; :func:`run_worker` uses it when it is ready.
@@ -248,6 +275,7 @@ def prestart(template: str | None = None) -> None:
     """
     global _server
     if forkserver_enabled():
+        _remove_stale_server_dirs()
         with _server_lock:
             if _server is None or not _server.alive():
                 try:
