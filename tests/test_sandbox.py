@@ -310,3 +310,17 @@ def test_worker_results_are_schema_checked():
                 {"gates": [], "extra": 1}, "not a dict", {"gates": [{"gate": "smoke", "status": "maybe", "duration_s": 0}]}):
         with pytest.raises(WorkerError, match="malformed"):
             checked_validate_result(bad)
+
+
+def test_sandbox_mounts_tmp_before_the_interpreter_and_packages(monkeypatch, tmp_path):
+    """bwrap applies mounts in order: an interpreter, a virtual environment or a checkout
+    under /tmp (as on CI machines) must be bound after the sandbox's tmpfs /tmp, or the
+    server cannot even start."""
+    from rpg.validate import isolation
+
+    monkeypatch.setattr(isolation, "_python_roots", lambda: [str(tmp_path / "venv"), "/opt/python"])
+    argv = isolation.bwrap_argv({"PATH": "/usr/bin"}, writable=str(tmp_path / "work"))
+    tmpfs = argv.index("--tmpfs")
+    binds = [i for i, a in enumerate(argv) if a in ("--ro-bind", "--bind") and argv[i + 1] != "/usr"]
+    assert binds and all(i > tmpfs for i in binds)
+    assert argv[argv.index("--bind") + 1] == str(tmp_path / "work")

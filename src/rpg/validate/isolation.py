@@ -102,9 +102,10 @@ def bwrap_argv(env: dict[str, str], writable: str | None = None) -> list[str]:
         elif os.path.isdir(path):
             argv += ["--ro-bind", path, path]
     argv += ["--ro-bind-try", "/etc/ld.so.cache", "/etc/ld.so.cache"]
+    # mounts apply in order: the tmpfs first, so an interpreter or checkout under /tmp stays visible
+    argv += ["--proc", "/proc", "--dev", "/dev", "--size", str(TMPFS_BYTES), "--tmpfs", "/tmp"]
     for root in _python_roots():
         argv += ["--ro-bind", root, root]
-    argv += ["--proc", "/proc", "--dev", "/dev", "--size", str(TMPFS_BYTES), "--tmpfs", "/tmp"]
     if writable:
         argv += ["--bind", writable, writable]
     argv += ["--chdir", writable or "/tmp", "--clearenv"]
