@@ -165,7 +165,7 @@ def test_sandbox_contains_code_that_bypasses_the_text_gate(base, tmp_path, paylo
     assert SECRET not in text
     assert not marker.exists() and (d / "code.py").exists() and os.path.isdir("/tmp")
     assert json.loads((d / "validation.json").read_text())["valid"] is result.valid
-    assert subprocess.run(["pgrep", "-f", "sleep 4242.5"], capture_output=True).returncode == 1, "a process escaped"
+    assert subprocess.run(["pgrep", "-f", "^sleep 4242[.]5"], capture_output=True).returncode == 1, "a process escaped"
 
 
 needs_namespaces = pytest.mark.skipif(not namespaces_layer().active, reason=f"needs the namespace layer: {namespaces_layer().detail}")
@@ -292,7 +292,7 @@ def test_rpg_validate_as_a_process_survives_and_leaves_nothing(base, tmp_path):
     everything = out + err + (d / "validation.log").read_bytes() + (d / "validation.json").read_bytes()
     assert SECRET.encode() not in everything and b"root:x:0:0" not in everything
     time.sleep(0.2)
-    assert subprocess.run(["pgrep", "-f", "sleep 4242.5"], capture_output=True).returncode == 1, "a process escaped"
+    assert subprocess.run(["pgrep", "-f", "^sleep 4242[.]5"], capture_output=True).returncode == 1, "a process escaped"
 
 
 def test_corpus_has_at_least_thirty_hostile_artifacts():
