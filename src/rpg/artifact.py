@@ -99,6 +99,21 @@ def task_sources(directory: Path) -> dict[str, str]:
     return {f: read_text(Path(directory) / f) for f in TASK_CODE_FILES}
 
 
+FILES_CHANGED = "artifact files changed since they were written (content hash differs from task.yaml)"
+
+
+def rehash(directory: Path) -> tuple[TaskSchema, dict, dict[str, str], str]:
+    """An artifact as it is on disk: its schema, task.yaml document, code text (read once)
+    and the content hash recomputed from them (compare with ``doc["content_hash"]``).
+
+    Raises:
+        ArtifactError: a missing, linked, oversized, non-UTF-8 or malformed file.
+    """
+    schema, doc = load_artifact(directory)
+    sources = task_sources(directory)
+    return schema, doc, sources, content_hash(doc, sources["code.py"], sources["goal_state_code.py"])
+
+
 def write_file(path: Path, data: str | bytes) -> None:
     """Write ``path`` through a new file renamed over it: a symbolic link at ``path`` is
     replaced, never written through, and readers never see a half-written file.

@@ -68,16 +68,6 @@ def _reported_errors():
         _fail(f"{exc.strerror or exc}{where}", EXIT_SYSTEM)
 
 
-def _known_gates(names: list[str]) -> None:
-    """Refuse a ``--disable`` that names no gate (a typo would silently run every gate)."""
-    from rpg.errors import BadInput
-    from rpg.validate.gates import GATES
-
-    unknown = sorted(set(names) - set(GATES))
-    if unknown:
-        raise BadInput(f"--disable {unknown[0]!r} is not a gate; gates: {', '.join(GATES)}")
-
-
 def default_author(author: str | None) -> str | None:
     """Who is authoring: ``--author``, else ``RPG_AUTHOR``, else git's ``user.name``, else None."""
     if author:
@@ -127,7 +117,6 @@ def compile_cmd(
 
     model = model or os.environ.get("RPG_MODEL") or None
     with _reported_errors():
-        _known_gates(disable)
         result = compile_instruction(instruction, output, seed, frozenset(disable), model, replay=replay,
                                      builtin_first=builtin_first, llm=make_llm_client(model), codegen=codegen,
                                      library=library, author=default_author(author))
@@ -176,7 +165,6 @@ def steer_cmd(
 
     model = model or os.environ.get("RPG_MODEL") or None
     with _reported_errors():
-        _known_gates(disable)
         r = steer(family, edit, seed, frozenset(disable), llm=make_llm_client(model) if replay is None else None,
                   replay=replay, author=default_author(author))
     if as_json:
@@ -384,7 +372,6 @@ def validate_cmd(
     from rpg.compiler import revalidate
 
     with _reported_errors():
-        _known_gates(disable)
         result = revalidate(directory, frozenset(disable))
     if as_json:
         print(json.dumps(result.to_json(), indent=2))

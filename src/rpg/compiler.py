@@ -23,9 +23,10 @@ from rpg.artifact import (
     LIBRARY_LOCK,  # noqa: F401 - part of the compiler's API
     ArtifactError,  # noqa: F401
     atomic_replace,
-    content_hash,
+    content_hash,  # noqa: F401
     gates_passed,
-    load_artifact,
+    load_artifact,  # noqa: F401
+    rehash,
     save_snapshots,
     staging_dir,
     task_document,  # noqa: F401
@@ -39,7 +40,7 @@ from rpg.repair import route
 from rpg.schema.builtin import parse
 from rpg.schema.feasibility import check_feasibility
 from rpg.schema.model import TaskSchema
-from rpg.validate.gates import GATES
+from rpg.validate.gates import check_gate_names
 from rpg.validate.results import checked_validate_result
 from rpg.validate.sandbox import run_worker
 from rpg.validate.static import StaticViolation, check_source
@@ -254,13 +255,12 @@ def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int
         ProviderError: the model provider failed.
         ModelOutputError: the model gave no valid TaskSchema within its retries.
         ReplayError: the replay record is missing, malformed or does not match.
-        ValueError: unknown colour, label or gate name.
+        ValueError: unknown colour or label.
+        BadInput: an unknown gate name in ``disabled``.
     """
     from rpg.schema.builtin import ParseError
 
-    unknown = set(disabled) - set(GATES)
-    if unknown:
-        raise ValueError(f"unknown gate(s) {sorted(unknown)}; gates are {', '.join(GATES)}")
+    disabled = check_gate_names(disabled)
     check_output_dir(Path(out_dir))
     if isinstance(instruction, str):
         check_text(instruction, "the instruction")
@@ -310,14 +310,13 @@ def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int
 
 def revalidate(directory: str | Path, disabled: frozenset[str] = frozenset()) -> CompileResult:
     """Re-run every gate on an artifact as it is (e.g. after a hand edit); rewrite its logs."""
+    disabled = check_gate_names(disabled)
     d = Path(directory)
-    schema, doc = load_artifact(d)
+    schema, doc, sources, digest = rehash(d)
     seed = int(doc.get("provenance", {}).get("seed", 0))
-    sources = task_sources(d)
     gates = validate_files(d, seed, disabled, snapshots=False, tolerances=schema.tolerances.model_dump(), sources=sources)
     log = [f"rpg {__version__} validate {d}", *_isolation_note()] + [_log_line(g) for g in gates]
     valid = gates_passed(gates)
     log.append("result: VALID" if valid else "result: INVALID")
     write_logs(d, log, gates)
-    return CompileResult(valid, d, schema, gates, log,
-                         content_hash({k: v for k, v in doc.items()}, sources["code.py"], sources["goal_state_code.py"]))
+    return CompileResult(valid, d, schema, gates, log, digest)

@@ -26,7 +26,8 @@ REFERENCES_PER_PROMPT = 3
 """Reference tasks retrieved for one prompt (paper: 2-3)."""
 
 COMMON_ERRORS: tuple[str, ...] = (
-    "Import only from rpg.task_api, numpy and math; os, sys, subprocess, open(), eval/exec and dunder names are rejected.",
+    "Import only with 'from rpg.task_api import NAME', 'import numpy as np' and 'import math'; os, sys, subprocess, "
+    "open(), eval/exec, type(), and any name or attribute starting with '_' are rejected.",
     "code.py defines exactly one subclass of BlockTask with assets(), initial_state(rng) and goal().",
     "Every name in goal() must be the name of an asset returned by assets().",
     "initial_state(rng) draws only from rng (a numpy Generator); use sample_scattered for rho_0.",

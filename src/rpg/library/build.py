@@ -315,7 +315,7 @@ def _publish(report: dict, tmp: Path, base: Path, force: bool) -> None:
 def _recorded_hash(path: Path) -> str | None:
     """The hash of the task artifact or family at ``path``, recomputed from its files; None
     when there is none or its files no longer match their recorded hashes."""
-    from rpg.artifact import ArtifactError, content_hash, load_artifact, task_sources
+    from rpg.artifact import ArtifactError, rehash
     from rpg.steer.family import Family, is_family
 
     try:
@@ -323,9 +323,7 @@ def _recorded_hash(path: Path) -> str | None:
             family = Family(path)
             intact = all(v["ok"] for v in family.verify())
             return family.load().digest() if intact else None
-        _, doc = load_artifact(path)
-        sources = task_sources(path)
-        digest = content_hash(doc, sources["code.py"], sources["goal_state_code.py"])
+        _, doc, _, digest = rehash(path)
         return digest if digest == doc.get("content_hash") else None
     except (ArtifactError, OSError, ValueError, KeyError, IndexError):
         return None

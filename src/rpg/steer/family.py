@@ -52,12 +52,13 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from rpg import yamlio
 from rpg.artifact import (
+    FILES_CHANGED,
     ArtifactError,
     atomic_replace,
-    content_hash,
     load_artifact,
     read_bytes,
     read_text,
+    rehash,
     staging_dir,
     task_sources,
 )
@@ -274,11 +275,9 @@ class Family:
             problems = []
             d = self.version_dir(v.version_id)
             try:
-                schema, doc = load_artifact(d)
-                sources = task_sources(d)
-                actual = content_hash(doc, sources["code.py"], sources["goal_state_code.py"])
+                schema, doc, sources, actual = rehash(d)
                 if actual != doc.get("content_hash"):
-                    problems.append("artifact files changed since they were written (content hash differs from task.yaml)")
+                    problems.append(FILES_CHANGED)
                 if actual != v.content_hash:
                     problems.append("artifact does not match the content hash recorded in the history")
                 if v.task_hash:
@@ -322,11 +321,9 @@ def verify_target(path: Path, expect: str | None = None) -> dict:
         digest = fam.load().digest()
         kind = "family"
     else:
-        schema, doc = load_artifact(path)
-        sources = task_sources(path)
-        digest = content_hash(doc, sources["code.py"], sources["goal_state_code.py"])
+        _, doc, _, digest = rehash(path)
         if digest != doc.get("content_hash"):
-            problems.append("artifact files changed since they were written (content hash differs from task.yaml)")
+            problems.append(FILES_CHANGED)
         versions, kind = [], "task"
     if expect is not None and digest != expect.strip().lower():
         problems.append(f"hash {digest[:16]}... differs from the expected {expect.strip()[:16]}... "

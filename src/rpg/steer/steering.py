@@ -273,8 +273,10 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
     if not edit or not edit.strip():
         raise SteerError("the edit is empty; say what to change, e.g. \"add a green block on top\"")
     from rpg.compiler import check_text
+    from rpg.validate.gates import check_gate_names
 
     check_text(edit, "the edit")
+    disabled = check_gate_names(disabled)
     path = Path(family)
     if not is_family(path):
         from filelock import FileLock

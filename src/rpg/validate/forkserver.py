@@ -5,9 +5,11 @@ MuJoCo start-up each time.
 Started only by :mod:`rpg.validate.sandbox`, with the same stripped environment as a
 one-shot worker.  Protocol on stdin/stdout (or, for a clone of a template server, on its
 Unix-socket connection): a line with the byte length, then that many bytes of JSON; the
-request carries ``_timeout`` (s).  Each child: new session, resource
-limits, a fresh temporary working directory, stdout and stderr away from the protocol
-channel; it writes its JSON document to a pipe.  The server enforces the wall-clock limit
+request carries ``_timeout`` (s) and the task code's text.  The server itself runs inside
+the namespaces of :mod:`rpg.validate.isolation` when they are available.  Each child: new
+session, resource limits, the seccomp filter, the audit hook, a fresh temporary working
+directory, stdout and stderr away from the protocol channel; it writes its JSON document to
+a pipe.  The server enforces the wall-clock limit
 (SIGKILL to the child's process group) and the output bound, and answers with a document
 even when the child dies.
 """

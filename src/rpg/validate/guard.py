@@ -3,8 +3,9 @@
 Installed (irrevocably) in each worker child before task code is imported.  It refuses:
 file writes, renames and deletions outside the worker's temporary directory; sockets;
 subprocesses, ``os.system``, ``exec*``/``spawn*``, ``fork``; signals to other processes;
-changes to the environment.  It is one layer: the text gate rejects such code before it
-runs, and the resource limits and the stripped environment hold whatever gets through.
+changes to the environment.  It is the innermost of the sandbox's layers and sees only
+Python-level calls; native calls are held by the seccomp filter and the namespaces of
+:mod:`rpg.validate.isolation` (the text gate and restricted execution come first).
 """
 
 from __future__ import annotations

@@ -299,7 +299,6 @@ def run_worker(request: dict, timeout: float | None = None) -> dict:
     """
     global _server
     timeout = worker_timeout() if timeout is None else timeout
-    request = _with_sources(request)
     if forkserver_enabled():
         with _server_lock:
             for _ in range(2):

@@ -1,8 +1,9 @@
 """The worker process that runs task code (gates 2-8, inspect, check, render).
 
 Run only through :func:`rpg.validate.sandbox.run_worker`; it reads a request as JSON on
-stdin and writes one JSON document to stdout.  Task code has passed the text gate before
-it gets here.  Requests:
+stdin and writes one JSON document to stdout.  Requests carry the task code's text, which
+passed the text gate in the parent and is gated again here, the very text that then runs
+(restricted, see :mod:`rpg.validate.restricted`).  Requests:
 
 ``{"op": "validate", "sources": {"code.py": ..., "goal_state_code.py": ...}, "seed": 0, "disabled": [...], "snapshots": true, "tolerances": {...}}``
 ``{"op": "inspect", "sources": ..., "state": "initial"|"goal", "seed": 0, "settle": 50}``
