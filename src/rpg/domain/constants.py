@@ -250,3 +250,85 @@ SNAPSHOT_SHADOW_SIZE: int = 1024
 """Side of the shadow map used for snapshots, texels (MuJoCo's default is 4096).  On a
 software renderer (Mesa llvmpipe) a 4096 map doubles the CPU time of a snapshot; at
 640x480 the two images differ by < 0.05 grey levels on average."""
+
+# ---------------------------------------------------------------------------
+# Robot, control and episodes (project, issue 14; defaults follow robosuite / LIBERO)
+# ---------------------------------------------------------------------------
+ROBOT_BASE_POS: tuple[float, float, float] = (0.0, 0.0, TABLE_TOP_Z)
+"""Panda base (``link0``) position, m: at the world origin, mounted at table height, facing
++x.  Every point of the workspace is within 0.75 m of it, inside the arm's reach (project)."""
+
+CONTROL_HZ: float = 20.0
+"""Control frequency of the environment, Hz (robosuite, LIBERO, ManiSkill3 defaults)."""
+
+CONTROL_SUBSTEPS: int = round(1.0 / (CONTROL_HZ * TIMESTEP))
+"""Physics steps per control step (25 at 2 ms)."""
+
+TCP_OFFSET: float = 0.1034
+"""Tool centre point (between the finger pads) along the hand's +z from the hand frame, m
+(Franka Emika's flange-to-TCP distance)."""
+
+HOME_QPOS: tuple[float, ...] = (0.0, -0.3389, 0.0, -2.649, 0.0, 2.310, 0.785398)
+"""Panda joint angles (rad) of the home pose: TCP at (0.40, 0, table + HOME_TCP_HEIGHT),
+gripper pointing down, fingers closing along y (solved with the IK, project)."""
+
+HOME_TCP_HEIGHT: float = 0.25
+"""Height of the TCP above the table at home (both embodiments), m (project)."""
+
+GRIPPER_CTRL_OPEN: float = 255.0
+"""Menagerie hand actuator command of a fully open gripper (its ``ctrlrange`` is 0-255)."""
+
+GRIPPER_RELEASE_CTRL: float = 180.0
+"""Least actuator command that releases a held 4 cm cube, measured (issue 14)."""
+
+GRIPPER_GAIN: float = 5.0
+"""Gain multiplier of the hand's finger actuator, both embodiments.  The stock Menagerie gain
+squeezes ~2 N (a real Panda hand holds 70 N): a 4 cm cube slipped out of the floating hand
+12/100 times at 1x and 0/100 at 5x (issue 14), and out of the Panda's hand when a policy
+lifts at full speed (1 m/s) at 1x (measured: 2 of 12 scripted stacks)."""
+
+FINGER_PAD_FRICTION: tuple[float, float, float] = (1.0, 0.005, 0.0001)
+"""Sliding, torsional and rolling friction of the finger pads (condim 4: torsional
+friction keeps a held cube from twisting; measured 100/100 stacks vs 83/100 at condim 3)."""
+
+FINGER_PAD_CONDIM: int = 4
+"""Contact dimensionality of finger-pad contacts (see FINGER_PAD_FRICTION)."""
+
+EE_DELTA_POS_LIMIT: float = 0.05
+"""``ee_delta`` control: largest TCP translation per control step, m (an action of 1.0;
+robosuite's OSC default output limit)."""
+
+EE_DELTA_ROT_LIMIT: float = 0.5
+"""``ee_delta`` control: largest TCP rotation per control step, rad (robosuite's default)."""
+
+MOCAP_WELD_SOLREF: tuple[float, float] = (0.02, 1.0)
+"""solref of the weld between the floating hand and its mocap target (time constant s,
+damping ratio): stiff enough to lift, soft enough not to fling a cube it touches (project)."""
+
+RESET_SETTLE_STEPS: int = 50
+"""Physics steps after placing rho_0's sample and the robot's home pose, before the first
+observation of an episode (project)."""
+
+EPISODE_BASE_STEPS: int = 80
+"""Control steps of every episode before the per-cube allowance (project)."""
+
+EPISODE_STEPS_PER_CUBE: int = 120
+"""Control steps added per movable cube: one pick and place at 20 Hz takes ~100 (project).
+``max_episode_steps = EPISODE_BASE_STEPS + EPISODE_STEPS_PER_CUBE * cubes``."""
+
+AGENTVIEW_POS: tuple[float, float, float] = (1.15, 0.0, 1.50)
+"""Agentview camera position, m: across the table, facing the robot (LIBERO's agentview).
+From behind the robot the arm hides the workspace; from here nothing does.  Its image's
+left is the robot's right (-y)."""
+
+AGENTVIEW_TARGET: tuple[float, float, float] = (0.50, 0.0, TABLE_TOP_Z + 0.05)
+"""Point the agentview camera looks at, m."""
+
+AGENTVIEW_FOVY: float = 48.0
+"""Vertical field of view of the agentview camera, degrees."""
+
+WRIST_CAMERA_FOVY: float = 75.0
+"""Vertical field of view of the wrist camera, degrees."""
+
+ENV_IMAGE_SIZE: tuple[int, int] = (256, 256)
+"""Default (height, width) of camera observations, pixels (LIBERO, openpi)."""

@@ -56,10 +56,19 @@ def physics_spec() -> mujoco.MjSpec:
     spec.visual.global_.offheight = C.SNAPSHOT_SIZE[1]
     spec.visual.quality.shadowsize = C.SNAPSHOT_SHADOW_SIZE
 
+    # A gradient sky and a wide checkered floor: nothing in a camera's view is the black
+    # background (the snapshots had a black band above the table).
+    spec.add_texture(name="sky", type=mujoco.mjtTexture.mjTEXTURE_SKYBOX, builtin=mujoco.mjtBuiltin.mjBUILTIN_GRADIENT,
+                     rgb1=[0.78, 0.84, 0.90], rgb2=[0.36, 0.42, 0.50], width=512, height=3072)
+    spec.add_texture(name="floor", type=mujoco.mjtTexture.mjTEXTURE_2D, builtin=mujoco.mjtBuiltin.mjBUILTIN_CHECKER,
+                     rgb1=[0.34, 0.36, 0.39], rgb2=[0.29, 0.31, 0.34], width=256, height=256)
+    floor_mat = spec.add_material(name="floor", texrepeat=[8.0, 8.0], texuniform=True)
+    floor_mat.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = "floor"
+
     world = spec.worldbody
     world.add_geom(
-        name="floor", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[2.0, 2.0, 0.05],
-        rgba=[0.30, 0.32, 0.35, 1.0], group=1,
+        name="floor", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[6.0, 6.0, 0.05],
+        material="floor", group=1,
     )
     hx, hy, hz = C.TABLE_HALF_EXTENT
     table = world.add_geom(
@@ -75,6 +84,10 @@ def physics_spec() -> mujoco.MjSpec:
         name=C.CAMERA_NAME, pos=list(C.CAMERA_POS),
         quat=list(look_at_quat(C.CAMERA_POS, C.CAMERA_TARGET)), fovy=C.CAMERA_FOVY,
     )
+    world.add_camera(
+        name="agentview", pos=list(C.AGENTVIEW_POS),
+        quat=list(look_at_quat(C.AGENTVIEW_POS, C.AGENTVIEW_TARGET)), fovy=C.AGENTVIEW_FOVY,
+    )
     return spec
 
 
@@ -83,12 +96,14 @@ class Scene:
 
     Args:
         assets: the task's assets; names must be unique.
+        robot: an :class:`rpg.env.embodiments.Embodiment` to add to the scene (None: the
+            block-only scene that validation uses).
 
     Raises:
         SceneError: duplicate or invalid names.
     """
 
-    def __init__(self, assets: Iterable[Asset]):
+    def __init__(self, assets: Iterable[Asset], robot=None):
         self.assets: dict[str, Asset] = {}
         for asset in assets:
             if asset.name in self.assets or asset.name in ("table", "floor"):
@@ -97,8 +112,13 @@ class Scene:
         self.spec = physics_spec()
         for name in sorted(self.assets):
             self.assets[name].attach(self.spec)
+        self.robot = robot
+        if robot is not None:
+            robot.attach(self.spec)
         self.model: mujoco.MjModel = self.spec.compile()
         self.data = mujoco.MjData(self.model)
+        if robot is not None:
+            robot.bind(self.model, self.data)
         self._qpos_adr: dict[str, int] = {}
         self._qvel_adr: dict[str, int] = {}
         self._mocap_id: dict[str, int] = {}
@@ -197,9 +217,10 @@ class Scene:
         mujoco.mj_forward(self.model, self.data)
 
     def settle(self, steps: int = C.SETTLE_STEPS) -> None:
-        """Advance ``steps`` physics steps under zero action (no actuators are driven)."""
+        """Advance ``steps`` physics steps under zero action: a block-only scene has no
+        actuators; a robot's actuators hold their current targets (``ctrl`` is left as it
+        is: zero would drive a Panda's joints to zero)."""
         if steps > 0:
-            self.data.ctrl[:] = 0.0
             mujoco.mj_step(self.model, self.data, nstep=int(steps))
 
     def reset_time(self) -> None:

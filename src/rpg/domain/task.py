@@ -39,8 +39,14 @@ class BlockTask:
     INSTRUCTION: str = ""
     PARAPHRASES: tuple[str, ...] = ()
 
-    def __init__(self) -> None:
-        self.scene = Scene(self.assets())
+    def __init__(self, robot=None) -> None:
+        """Build and compile the scene once.
+
+        Args:
+            robot: an embodiment (:mod:`rpg.env.embodiments`) to add to the scene; None for
+                the block-only scene that validation uses.
+        """
+        self.scene = Scene(self.assets(), robot=robot)
         self._goal = self.goal()
 
     # -- to implement ----------------------------------------------------------

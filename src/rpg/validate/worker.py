@@ -77,12 +77,14 @@ def _check_domain_objects(task: BlockTask) -> None:
             raise GateFailure("api_usage", f"assets() returned a {type(asset).__name__}: only rpg.task_api assets may be used")
 
 
-def load_task(sources: dict[str, str], restricted: bool = True) -> tuple[BlockTask, object]:
+def load_task(sources: dict[str, str], restricted: bool = True, robot=None) -> tuple[BlockTask, object]:
     """Run code.py and goal_state_code.py (their text, as gated) and instantiate the one BlockTask subclass.
 
     Args:
         sources: file name -> text of ``code.py`` and ``goal_state_code.py``; the text gate
             checks this very text again before it runs (no second read from disk).
+        restricted: run it under RestrictedPython's guards (False only for the ablation).
+        robot: an embodiment to add to the task's scene (an environment's; None here).
 
     Raises:
         GateFailure: not exactly one task class, a task class that redefines BlockTask's
@@ -98,7 +100,7 @@ def load_task(sources: dict[str, str], restricted: bool = True) -> tuple[BlockTa
     _check_task_class(classes[0])
     if not callable(getattr(goal_mod, "goal_state", None)):
         raise GateFailure("api_usage", "goal_state_code.py must define goal_state(task)")
-    task = classes[0]()
+    task = classes[0](robot=robot)
     _check_domain_objects(task)
     return task, goal_mod
 

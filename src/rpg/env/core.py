@@ -1,0 +1,278 @@
+"""``rpg/BlockTask-v0``: every compiled task as a Gymnasium environment with a robot.
+
+    import gymnasium as gym
+    import rpg.env  # registers rpg/BlockTask-v0
+
+    env = gym.make("rpg/BlockTask-v0", task="library/stack_blocks", embodiment="panda",
+                   control_mode="ee_delta", cameras=("agentview", "wrist"), image_size=(256, 256))
+    obs, info = env.reset(seed=0)
+    obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
+
+**Task Description.**  The compiled task's instruction (canonical, or paraphrase K with
+``instruction="paraphrase:K"``), over the task's cubes and goal patches on the table, with a
+robot (``embodiment``): ``panda`` (Menagerie Franka Panda on a fixed base) or
+``floating_gripper`` (the Franka hand on a mocap weld).
+
+**Randomizations.**  ``reset(seed=s)`` samples the task's initial-state distribution rho_0
+with ``numpy.random.default_rng(s)``: the same initial state ``rpg inspect --seed s``,
+validation and every other ``rpg`` command use for seed ``s``.  The robot starts at its
+home pose (TCP above the front of the workspace, gripper open, pointing down); then
+:data:`~rpg.domain.constants.RESET_SETTLE_STEPS` physics steps settle the scene.
+``reset()`` without a seed draws one from the environment's generator.
+
+**Success Conditions.**  ``info["success"]``: the task's success predicate G holds and the
+gripper holds no cube (both fingers touching it), as ManiSkill3 defines success.  The
+episode terminates on success (``terminate_on_success``) and is truncated after
+``max_episode_steps = EPISODE_BASE_STEPS + EPISODE_STEPS_PER_CUBE * movable cubes`` control
+steps.  Reward: 1.0 on a successful step, else 0.0 (sparse).
+
+**Control** at :data:`~rpg.domain.constants.CONTROL_HZ` (20 Hz; 25 physics steps of 2 ms).
+Actions are float32 and apply to the *measured* TCP pose (not to the last target):
+
+- ``ee_delta`` (7,): ``[dx, dy, dz, droll, dpitch, dyaw, gripper]`` in [-1, 1].  Position
+  moves ``EE_DELTA_POS_LIMIT`` (0.05 m) per unit along world axes; rotation is a rotation
+  vector of ``EE_DELTA_ROT_LIMIT`` (0.5 rad) per unit about world axes, applied on the left
+  of the measured orientation.  As in robosuite and LIBERO.
+- ``ee_abs`` (7,): ``[x, y, z, rx, ry, rz, gripper]``: TCP position in the world frame (m)
+  and orientation as an axis-angle vector (rad).
+- ``joint_pos`` (8,, Panda only): seven joint targets (rad) and the gripper.
+
+``gripper``: -1 open, +1 closed (actuator command ``255 * (1 - g) / 2``; a held cube is
+released at ``g <= 0.41``, command >= 180).
+
+**Observations** (a dict; the world frame of :mod:`rpg.domain.constants`):
+
+- ``<camera>_image``: uint8 (H, W, 3) for each of ``cameras`` (``agentview``: over the
+  robot's shoulder; ``wrist``: on the hand, looking along the approach axis; ``default``:
+  the snapshot camera);
+- ``state``: float64 (8,): TCP position (m), TCP orientation as axis-angle (rad), the two
+  finger openings (m): LIBERO's ``[eef_pos, eef_axis_angle, gripper_qpos]``;
+- ``qpos`` / ``qvel``: float64, the robot's joint positions and velocities (Panda: 7 arm +
+  2 fingers, (9,) and (9,); floating gripper: free joint + 2 fingers, (9,) and (8,));
+- ``object_poses`` (only with ``privileged=True``): float64 (N, 7), each object's position
+  and quaternion (w, x, y, z), objects in sorted name order (``env.unwrapped.object_names``);
+- ``instruction``: the instruction text the policy is given.
+
+**info**: ``success``, ``goal_satisfied`` (G alone), ``is_grasped``, ``grasped`` (object
+name or ""), ``diagnostics`` (``{"satisfied": [...], "unsatisfied": [...]}``: one line per
+leaf predicate, BDDL-style), ``elapsed_steps``, ``seed``, ``task_hash``, ``instruction``.
+"""
+
+from __future__ import annotations
+
+import string
+from collections.abc import Sequence
+from pathlib import Path
+
+import gymnasium as gym
+import mujoco
+import numpy as np
+from gymnasium import spaces
+
+from rpg.domain import constants as C
+from rpg.env.embodiments import make_embodiment
+from rpg.env.embodiments.base import PREFIX, EmbodimentError, quat_to_axis_angle
+from rpg.env.loading import TaskSource, load_env_task
+
+CAMERAS = ("agentview", "wrist", "default")
+"""Cameras an environment can observe."""
+
+
+def episode_step_limit(n_cubes: int) -> int:
+    """Control steps of an episode of a task with ``n_cubes`` movable cubes (documented rule)."""
+    return C.EPISODE_BASE_STEPS + C.EPISODE_STEPS_PER_CUBE * max(1, n_cubes)
+
+
+def _instruction(source: TaskSource, which: str) -> str:
+    if which in ("canonical", "", None):
+        return source.instruction
+    head, _, k = str(which).partition(":")
+    if head != "paraphrase" or not k.isdigit():
+        raise EmbodimentError(f"instruction must be 'canonical' or 'paraphrase:K', not {which!r}")
+    if int(k) >= len(source.paraphrases):
+        raise EmbodimentError(f"{source.name} has {len(source.paraphrases)} paraphrases; "
+                              f"'paraphrase:{k}' does not exist (they count from 0)")
+    return source.paraphrases[int(k)]
+
+
+class BlockTaskEnv(gym.Env):
+    """A compiled block-domain task with a robot, as a :class:`gymnasium.Env`.
+
+    Args:
+        task: a task directory, family directory (its head) or ``FAMILY@vN``; loaded through
+            the checks of :mod:`rpg.env.loading`.
+        embodiment: ``"panda"`` or ``"floating_gripper"``.
+        control_mode: ``"ee_delta"``, ``"ee_abs"`` or ``"joint_pos"`` (Panda only).
+        cameras: camera observations to render (``()`` for state only).
+        image_size: (height, width) of camera images, pixels.
+        instruction: ``"canonical"`` or ``"paraphrase:K"``.
+        privileged: add ``object_poses`` to the observation.
+        render_mode: None or ``"rgb_array"`` (``render()`` returns the agentview image).
+        terminate_on_success: end the episode on the first successful step.
+        max_episode_steps: override the task-size rule.
+
+    Raises:
+        EmbodimentError: unknown embodiment, camera, control mode or instruction.
+        BadInput / ArtifactError / TaskInvalid: the task cannot be loaded (see
+            :func:`rpg.env.loading.load_env_task`).
+    """
+
+    metadata = {"render_modes": ["rgb_array"], "render_fps": int(C.CONTROL_HZ)}
+
+    def __init__(self, task: str | Path, embodiment: str = "panda", control_mode: str = "ee_delta",
+                 cameras: Sequence[str] = ("agentview", "wrist"), image_size: tuple[int, int] = C.ENV_IMAGE_SIZE,
+                 instruction: str = "canonical", privileged: bool = False, render_mode: str | None = None,
+                 terminate_on_success: bool = True, max_episode_steps: int | None = None):
+        self.robot = make_embodiment(embodiment)
+        if control_mode not in self.robot.CONTROL_MODES:
+            raise EmbodimentError(f"{embodiment} has no control mode {control_mode!r}; "
+                                  f"it has {', '.join(self.robot.CONTROL_MODES)}")
+        bad = [c for c in cameras if c not in CAMERAS]
+        if bad:
+            raise EmbodimentError(f"unknown camera {bad[0]!r}; cameras are {', '.join(CAMERAS)}")
+        if render_mode not in (None, "rgb_array"):
+            raise EmbodimentError(f"render_mode must be None or 'rgb_array', not {render_mode!r}")
+        height, width = (int(v) for v in image_size)
+        if not (16 <= height <= 2048 and 16 <= width <= 2048):
+            raise EmbodimentError(f"image_size must be (height, width) between 16 and 2048 pixels, not {image_size}")
+        self.task, self.source = load_env_task(task, robot=self.robot)
+        self.scene = self.task.scene
+        self.model, self.data = self.scene.model, self.scene.data
+        self.control_mode = control_mode
+        self.cameras = tuple(cameras)
+        self.image_size = (height, width)
+        self.instruction = _instruction(self.source, instruction)
+        self.privileged = bool(privileged)
+        self.render_mode = render_mode
+        self.terminate_on_success = bool(terminate_on_success)
+        self.object_names = self.scene.names
+        cubes = sum(1 for a in self.scene.assets.values() if a.movable)
+        self.max_episode_steps = int(max_episode_steps or episode_step_limit(cubes))
+        self._body_names = {self.model.body(n).id: n for n in self.object_names}
+        self._renderer = None
+        self._elapsed = 0
+        self._seed: int | None = None
+        self.action_space = self._make_action_space()
+        self.observation_space = self._make_observation_space()
+
+    # -- spaces --------------------------------------------------------------------
+    def _make_action_space(self) -> spaces.Box:
+        if self.control_mode == "ee_delta":
+            return spaces.Box(-1.0, 1.0, (7,), np.float32)
+        if self.control_mode == "ee_abs":
+            low = np.array([C.WORKSPACE_X[0] - 0.2, C.WORKSPACE_Y[0] - 0.2, C.TABLE_TOP_Z, -np.pi, -np.pi, -np.pi, -1.0])
+            high = np.array([C.WORKSPACE_X[1] + 0.2, C.WORKSPACE_Y[1] + 0.2, C.TABLE_TOP_Z + C.MAX_TOWER_HEIGHT + 0.2,
+                             np.pi, np.pi, np.pi, 1.0])
+            return spaces.Box(low.astype(np.float32), high.astype(np.float32), (7,), np.float32)
+        low = np.append(self.robot.joint_low, -1.0).astype(np.float32)
+        high = np.append(self.robot.joint_high, 1.0).astype(np.float32)
+        return spaces.Box(low, high, (8,), np.float32)
+
+    def _make_observation_space(self) -> spaces.Dict:
+        h, w = self.image_size
+        inf = np.inf
+        obs = {f"{c}_image": spaces.Box(0, 255, (h, w, 3), np.uint8) for c in self.cameras}
+        obs["state"] = spaces.Box(-inf, inf, (8,), np.float64)
+        obs["qpos"] = spaces.Box(-inf, inf, self.robot.robot_qpos().shape, np.float64)
+        obs["qvel"] = spaces.Box(-inf, inf, self.robot.robot_qvel().shape, np.float64)
+        if self.privileged:
+            obs["object_poses"] = spaces.Box(-inf, inf, (len(self.object_names), 7), np.float64)
+        texts = (self.source.instruction, *self.source.paraphrases)
+        charset = "".join(sorted(set(string.printable) | set("".join(texts))))
+        obs["instruction"] = spaces.Text(max_length=max(256, *(len(t) for t in texts)), charset=charset)
+        return spaces.Dict(obs)
+
+    # -- episode -------------------------------------------------------------------
+    def reset(self, *, seed: int | None = None, options: dict | None = None):
+        """Start an episode from rho_0's sample for ``seed`` (see the class docstring)."""
+        super().reset(seed=seed)
+        if seed is None:
+            seed = int(self.np_random.integers(0, 2**31 - 1))
+        self._seed = int(seed)
+        mujoco.mj_resetData(self.model, self.data)
+        self.task.reset(self._seed)
+        self.robot.home()
+        self.scene.forward()
+        mujoco.mj_step(self.model, self.data, nstep=C.RESET_SETTLE_STEPS)
+        self._elapsed = 0
+        return self._observation(), self._info()
+
+    def step(self, action):
+        """One control step: the action's targets, then CONTROL_SUBSTEPS physics steps.
+
+        Raises:
+            ValueError: an action of the wrong shape or with non-finite values.
+        """
+        a = np.asarray(action, dtype=np.float64).reshape(-1)
+        if a.shape != self.action_space.shape or not np.all(np.isfinite(a)):
+            raise ValueError(f"action must be {self.action_space.shape[0]} finite numbers for "
+                             f"control_mode={self.control_mode!r}, got shape {np.shape(action)}")
+        self.robot.command(self.control_mode, a)
+        n = C.CONTROL_SUBSTEPS
+        if self.robot.INTERPOLATES:
+            for k in range(n):
+                self.robot.substep(k, n)
+                mujoco.mj_step(self.model, self.data)
+        else:
+            mujoco.mj_step(self.model, self.data, nstep=n)
+        self._elapsed += 1
+        info = self._info()
+        terminated = bool(info["success"]) and self.terminate_on_success
+        truncated = self._elapsed >= self.max_episode_steps and not terminated
+        return self._observation(), float(info["success"]), terminated, truncated, info
+
+    # -- reading -------------------------------------------------------------------
+    def _state(self) -> np.ndarray:
+        tcp = self.robot.tcp_pose()
+        return np.concatenate([tcp.pos, quat_to_axis_angle(tcp.quat), self.robot.finger_positions()])
+
+    def _observation(self) -> dict:
+        obs = {}
+        for cam in self.cameras:
+            obs[f"{cam}_image"] = self._render_camera(cam)
+        obs["state"] = self._state()
+        obs["qpos"] = self.robot.robot_qpos()
+        obs["qvel"] = self.robot.robot_qvel()
+        if self.privileged:
+            obs["object_poses"] = np.array([[*p.pos, *p.quat] for p in self.scene.poses().values()], dtype=np.float64)
+        obs["instruction"] = self.instruction
+        return obs
+
+    def _info(self) -> dict:
+        result = self.task.evaluate()
+        body = self.robot.grasped_body()
+        grasped = self._body_names.get(body, "") if body is not None else ""
+        return {
+            "success": bool(result.satisfied and body is None),
+            "goal_satisfied": bool(result.satisfied),
+            "is_grasped": body is not None,
+            "grasped": grasped,
+            "diagnostics": {"satisfied": [r.reason for r in result.satisfied_list],
+                            "unsatisfied": [r.reason for r in result.unsatisfied_list]},
+            "elapsed_steps": self._elapsed,
+            "seed": self._seed,
+            "task_hash": self.source.content_hash,
+            "instruction": self.instruction,
+        }
+
+    # -- rendering -----------------------------------------------------------------
+    def _render_camera(self, camera: str) -> np.ndarray:
+        if self._renderer is None:
+            h, w = self.image_size
+            vis = self.model.vis.global_
+            vis.offwidth, vis.offheight = max(vis.offwidth, w), max(vis.offheight, h)
+            self._renderer = mujoco.Renderer(self.model, height=h, width=w)
+        self._renderer.update_scene(self.data, camera=PREFIX + camera if camera == "wrist" else camera)
+        return self._renderer.render().copy()
+
+    def render(self):
+        """The agentview image (H, W, 3) uint8 (``render_mode="rgb_array"``), else None."""
+        if self.render_mode != "rgb_array":
+            return None
+        return self._render_camera("agentview")
+
+    def close(self) -> None:
+        if self._renderer is not None:
+            self._renderer.close()
+            self._renderer = None
+        super().close()

@@ -1,0 +1,212 @@
+"""The embodiment interface: what the environment asks of a robot.
+
+An :class:`Embodiment` is loaded in two steps, like a task (ManiSkill3's split of loading
+from episode initialisation): :meth:`Embodiment.attach` adds the robot to the scene's
+``MjSpec`` before it compiles, :meth:`Embodiment.bind` looks up its ids in the compiled
+model; then each episode calls :meth:`Embodiment.home` and each control step
+:meth:`Embodiment.command` followed by :meth:`Embodiment.substep` around the physics.
+
+Both embodiments carry the MuJoCo Menagerie's Franka hand (Apache-2.0, vendored under
+``assets/franka_emika_panda`` with its LICENSE).  Frames: world frame as in
+:mod:`rpg.domain.constants`; the TCP site sits ``TCP_OFFSET`` along the hand's +z (the
+approach direction), between the finger pads.  All robot names start with ``robot/``
+(object names are slugs and cannot).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import mujoco
+import numpy as np
+
+from rpg.domain import constants as C
+from rpg.errors import BadInput
+
+ASSET_DIR = Path(__file__).parent / "assets" / "franka_emika_panda"
+"""The vendored Menagerie Franka Emika Panda (MJCF and meshes, Apache-2.0)."""
+
+PREFIX = "robot/"
+"""Prefix of every robot element's name in the scene."""
+
+ROBOT_VISUAL_GROUP = 2
+"""Geom group of robot visuals (rendered; never hit by visibility rays, which see group 0)."""
+
+ROBOT_COLLISION_GROUP = 3
+"""Geom group of robot collision geoms (not rendered, not seen by visibility rays)."""
+
+CONTROL_MODES = ("ee_delta", "ee_abs", "joint_pos")
+"""Action spaces (see :mod:`rpg.env.core`)."""
+
+
+class EmbodimentError(BadInput):
+    """Raised for an unknown embodiment or a control mode the embodiment does not have."""
+
+
+def load_robot_spec(filename: str) -> mujoco.MjSpec:
+    """A Menagerie MJCF as an ``MjSpec`` with absolute mesh paths (so it can be attached to a
+    spec built in memory), no lights and no keyframes."""
+    spec = mujoco.MjSpec.from_file(str(ASSET_DIR / filename))
+    meshdir = ASSET_DIR / (spec.compiler.meshdir or "")
+    for mesh in spec.meshes:
+        mesh.file = str(meshdir / mesh.file)
+    spec.compiler.meshdir = ""
+    for light in list(spec.lights):
+        spec.delete(light)
+    for key in list(spec.keys):
+        spec.delete(key)
+    return spec
+
+
+def prepare_hand(spec: mujoco.MjSpec, gripper_gain: float = 1.0) -> None:
+    """Add the TCP site and wrist camera to the hand, set finger-pad contacts (condim 4,
+    :data:`~rpg.domain.constants.FINGER_PAD_FRICTION`) and scale the finger actuator's gain."""
+    hand = spec.body("hand")
+    hand.add_site(name="tcp", pos=[0.0, 0.0, C.TCP_OFFSET], size=[0.005, 0, 0], group=5)
+    # Looks along the hand's +z (a camera looks along its local -z) with image up along the
+    # hand's +x, from 6 cm off the axis: the fingers show at the bottom of the image.
+    hand.add_camera(name="wrist", pos=[0.06, 0.0, 0.02], quat=[0.0, math.sqrt(0.5), math.sqrt(0.5), 0.0],
+                    fovy=C.WRIST_CAMERA_FOVY)
+    for finger in ("left_finger", "right_finger"):
+        for geom in spec.body(finger).geoms:
+            if geom.type == mujoco.mjtGeom.mjGEOM_BOX:  # the five pads of each finger
+                geom.condim = C.FINGER_PAD_CONDIM
+                geom.friction = list(C.FINGER_PAD_FRICTION)
+    for body in spec.bodies:
+        body.gravcomp = 1.0
+    act = spec.actuator("actuator8")
+    act.gainprm[0] *= gripper_gain
+    act.biasprm[1] *= gripper_gain
+    act.biasprm[2] *= gripper_gain
+    act.forcerange = [v * gripper_gain for v in act.forcerange]
+
+
+def quat_to_axis_angle(quat: np.ndarray) -> np.ndarray:
+    """Axis-angle vector (3,) of a unit quaternion (w, x, y, z); angle in [0, pi] rad."""
+    q = np.asarray(quat, float)
+    if q[0] < 0:
+        q = -q
+    out = np.zeros(3)
+    mujoco.mju_quat2Vel(out, q, 1.0)
+    return out
+
+
+def axis_angle_to_quat(vec: np.ndarray) -> np.ndarray:
+    """Unit quaternion (w, x, y, z) of an axis-angle vector (3,), rad."""
+    v = np.asarray(vec, float)
+    angle = float(np.linalg.norm(v))
+    q = np.array([1.0, 0.0, 0.0, 0.0])
+    if angle > 1e-12:
+        mujoco.mju_axisAngle2Quat(q, v / angle, angle)
+    return q
+
+
+def mat_to_quat(mat: np.ndarray) -> np.ndarray:
+    q = np.zeros(4)
+    mujoco.mju_mat2Quat(q, np.asarray(mat, float).reshape(9))
+    return q
+
+
+@dataclass(frozen=True)
+class TcpPose:
+    """A TCP pose in the world frame: position (3,) m and quaternion (4,) (w, x, y, z)."""
+
+    pos: np.ndarray
+    quat: np.ndarray
+
+
+class Embodiment:
+    """A robot in the block domain.  Subclasses implement the template methods below.
+
+    Class attributes:
+        NAME: registry name.
+        CONTROL_MODES: the action spaces it supports.
+        INTERPOLATES: see below.
+    """
+
+    NAME = "embodiment"
+    CONTROL_MODES: tuple[str, ...] = ("ee_delta", "ee_abs")
+    INTERPOLATES = False
+    """Whether :meth:`substep` must run before every physics step (else the control step's
+    physics steps run in one ``mj_step`` call)."""
+
+    def __init__(self) -> None:
+        self.model: mujoco.MjModel | None = None
+        self.data: mujoco.MjData | None = None
+
+    # -- loading -----------------------------------------------------------------
+    def attach(self, spec: mujoco.MjSpec) -> None:
+        """Add the robot to the scene's spec (before it compiles)."""
+        raise NotImplementedError
+
+    def bind(self, model: mujoco.MjModel, data: mujoco.MjData) -> None:
+        """Look up the robot's ids in the compiled scene."""
+        self.model, self.data = model, data
+        self.tcp_site = model.site(PREFIX + "tcp").id
+        self.finger_qpos = np.array([model.jnt_qposadr[model.joint(PREFIX + j).id]
+                                     for j in ("finger_joint1", "finger_joint2")])
+        self.gripper_act = model.actuator(PREFIX + "actuator8").id
+        body_of = model.geom_bodyid
+        self.left_geoms = np.flatnonzero(body_of == model.body(PREFIX + "left_finger").id)
+        self.right_geoms = np.flatnonzero(body_of == model.body(PREFIX + "right_finger").id)
+        robot_bodies = [i for i in range(model.nbody) if model.body(i).name.startswith(PREFIX)]
+        self.robot_geoms = np.flatnonzero(np.isin(body_of, robot_bodies))
+        self._bind()
+
+    def _bind(self) -> None:
+        raise NotImplementedError
+
+    # -- episode -----------------------------------------------------------------
+    def home(self) -> None:
+        """Put the robot in its home pose, gripper open, holding that pose (qpos and ctrl)."""
+        raise NotImplementedError
+
+    def command(self, mode: str, action: np.ndarray) -> None:
+        """Turn one control step's action into targets (applied to the measured pose)."""
+        raise NotImplementedError
+
+    def substep(self, k: int, n: int) -> None:
+        """Called before physics step ``k`` of ``n`` in a control step (interpolation)."""
+
+    # -- reading -----------------------------------------------------------------
+    def tcp_pose(self) -> TcpPose:
+        """Measured TCP pose in the world frame."""
+        return TcpPose(self.data.site_xpos[self.tcp_site].copy(), mat_to_quat(self.data.site_xmat[self.tcp_site]))
+
+    def finger_positions(self) -> np.ndarray:
+        """Opening of each finger (2,), m (0 closed, 0.04 open)."""
+        return self.data.qpos[self.finger_qpos].copy()
+
+    def robot_qpos(self) -> np.ndarray:
+        raise NotImplementedError
+
+    def robot_qvel(self) -> np.ndarray:
+        raise NotImplementedError
+
+    def gripper_ctrl(self, g: float) -> float:
+        """Finger actuator command of a gripper action ``g`` in [-1, 1]: -1 open (255), +1 closed (0)."""
+        g = float(np.clip(g, -1.0, 1.0))
+        return C.GRIPPER_CTRL_OPEN * (1.0 - g) / 2.0
+
+    def touching(self) -> dict[str, set[int]]:
+        """Bodies each finger touches now: ``{"left": {body ids}, "right": {...}}``."""
+        out = {"left": set(), "right": set()}
+        n = self.data.ncon
+        if n == 0:
+            return out
+        geoms = self.data.contact.geom[:n]
+        body_of = self.model.geom_bodyid
+        for side, fingers in (("left", self.left_geoms), ("right", self.right_geoms)):
+            for col in (0, 1):
+                hit = np.isin(geoms[:, col], fingers)
+                out[side].update(int(b) for b in body_of[geoms[hit, 1 - col]])
+        return out
+
+    def grasped_body(self) -> int | None:
+        """Id of the body both fingers touch (a grasped cube), or None."""
+        t = self.touching()
+        both = sorted(t["left"] & t["right"])
+        both = [b for b in both if not self.model.body(b).name.startswith(PREFIX) and b != 0]
+        return both[0] if both else None

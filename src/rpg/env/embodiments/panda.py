@@ -1,0 +1,138 @@
+"""The MuJoCo Menagerie Franka Emika Panda, driven by differential inverse kinematics.
+
+Cartesian actions (``ee_delta``, ``ee_abs``) become joint targets through ``mink``: a
+:class:`mink.FrameTask` on the TCP site, a :class:`mink.PostureTask` toward the home pose
+(it resolves the arm's redundancy) and :class:`mink.ConfigurationLimit`, solved with
+``daqp`` on a separate robot-only model, integrated over one control period.  The arm's
+position actuators (Menagerie gains) then track those targets for the control step, with
+gravity compensation on every link.  Measured with these settings (issue 14): two 4 cm
+cubes stacked 100/100.
+"""
+
+from __future__ import annotations
+
+import mujoco
+import numpy as np
+
+from rpg.domain import constants as C
+from rpg.env.embodiments.base import (
+    PREFIX,
+    Embodiment,
+    TcpPose,
+    axis_angle_to_quat,
+    load_robot_spec,
+    prepare_hand,
+)
+
+ARM_JOINTS = tuple(f"joint{i}" for i in range(1, 8))
+"""The arm's seven revolute joints, base to wrist."""
+
+IK_POSTURE_COST = 1e-2
+"""Weight of the posture task relative to the TCP task (mink units: per rad)."""
+
+IK_DAMPING = 1e-3
+"""Levenberg-Marquardt damping of the IK least squares."""
+
+
+def _robot_spec() -> mujoco.MjSpec:
+    spec = load_robot_spec("panda.xml")
+    prepare_hand(spec, C.GRIPPER_GAIN)
+    spec.body("link0").pos = list(C.ROBOT_BASE_POS)
+    return spec
+
+
+class Panda(Embodiment):
+    """Franka Emika Panda (7 joints, Menagerie hand) on a fixed base at
+    :data:`~rpg.domain.constants.ROBOT_BASE_POS`.
+
+    Control modes: ``ee_delta``, ``ee_abs`` (through IK) and ``joint_pos`` (7 joint
+    targets, rad, plus the gripper).
+    """
+
+    NAME = "panda"
+    CONTROL_MODES = ("ee_delta", "ee_abs", "joint_pos")
+
+    def __init__(self) -> None:
+        super().__init__()
+        import mink
+
+        ik_spec = _robot_spec()
+        for geom in list(ik_spec.geoms):  # the IK model needs kinematics only
+            if geom.contype == 0 and geom.conaffinity == 0:
+                ik_spec.delete(geom)
+        self.ik_model = ik_spec.compile()
+        self._mink = mink
+        self.configuration = mink.Configuration(self.ik_model)
+        self.tcp_task = mink.FrameTask("tcp", "site", position_cost=1.0, orientation_cost=1.0, lm_damping=1e-6)
+        self.posture = mink.PostureTask(self.ik_model, cost=IK_POSTURE_COST)
+        q_home = np.concatenate([C.HOME_QPOS, [0.04, 0.04]])
+        self.posture.set_target(q_home)
+        self.limits = [mink.ConfigurationLimit(self.ik_model)]
+        self.joint_low = self.ik_model.jnt_range[:7, 0].copy()
+        self.joint_high = self.ik_model.jnt_range[:7, 1].copy()
+
+    def attach(self, spec: mujoco.MjSpec) -> None:
+        frame = spec.worldbody.add_frame()
+        spec.attach(_robot_spec(), prefix=PREFIX, frame=frame)
+
+    def _bind(self) -> None:
+        m = self.model
+        self.arm_qpos = np.array([m.jnt_qposadr[m.joint(PREFIX + j).id] for j in ARM_JOINTS])
+        self.arm_qvel = np.array([m.jnt_dofadr[m.joint(PREFIX + j).id] for j in ARM_JOINTS])
+        self.arm_act = np.array([m.actuator(PREFIX + f"actuator{i}").id for i in range(1, 8)])
+        self.finger_qvel = np.array([m.jnt_dofadr[m.joint(PREFIX + j).id] for j in ("finger_joint1", "finger_joint2")])
+
+    def home(self) -> None:
+        d = self.data
+        d.qpos[self.arm_qpos] = C.HOME_QPOS
+        d.qpos[self.finger_qpos] = 0.04
+        d.qvel[self.arm_qvel] = 0.0
+        d.qvel[self.finger_qvel] = 0.0
+        d.ctrl[self.arm_act] = C.HOME_QPOS
+        d.ctrl[self.gripper_act] = C.GRIPPER_CTRL_OPEN
+
+    def robot_qpos(self) -> np.ndarray:
+        return np.concatenate([self.data.qpos[self.arm_qpos], self.data.qpos[self.finger_qpos]])
+
+    def robot_qvel(self) -> np.ndarray:
+        return np.concatenate([self.data.qvel[self.arm_qvel], self.data.qvel[self.finger_qvel]])
+
+    def solve_ik(self, target: TcpPose) -> np.ndarray:
+        """Joint targets (7,) rad that move the TCP toward ``target`` within one control period."""
+        mink = self._mink
+        self.configuration.update(self.robot_qpos())
+        self.tcp_task.set_target(mink.SE3.from_rotation_and_translation(mink.SO3(target.quat), target.pos))
+        dt = 1.0 / C.CONTROL_HZ
+        vel = mink.solve_ik(self.configuration, [self.tcp_task, self.posture], dt, solver="daqp",
+                            damping=IK_DAMPING, limits=self.limits)
+        self.configuration.integrate_inplace(vel, dt)
+        return self.configuration.q[:7].copy()
+
+    def command(self, mode: str, action: np.ndarray) -> None:
+        if mode == "joint_pos":
+            q = np.clip(action[:7], self.joint_low, self.joint_high)
+        else:
+            q = self.solve_ik(self.target_pose(mode, action))
+        self.data.ctrl[self.arm_act] = q
+        self.data.ctrl[self.gripper_act] = self.gripper_ctrl(action[-1])
+
+    def target_pose(self, mode: str, action: np.ndarray) -> TcpPose:
+        """The TCP target of a Cartesian action (see :mod:`rpg.env.core` for the conventions)."""
+        return cartesian_target(self.tcp_pose(), mode, action)
+
+
+def cartesian_target(measured: TcpPose, mode: str, action: np.ndarray) -> TcpPose:
+    """The TCP target of an ``ee_delta`` or ``ee_abs`` action, world frame.
+
+    ``ee_delta``: position ``measured.pos + EE_DELTA_POS_LIMIT * a[0:3]`` (m); orientation
+    ``exp(EE_DELTA_ROT_LIMIT * a[3:6]) * measured.quat`` (a rotation about world axes).
+    ``ee_abs``: position ``a[0:3]`` (m) and orientation ``exp(a[3:6])`` (axis-angle, rad).
+    """
+    a = np.asarray(action, float)
+    if mode == "ee_abs":
+        return TcpPose(a[0:3].copy(), axis_angle_to_quat(a[3:6]))
+    pos = measured.pos + C.EE_DELTA_POS_LIMIT * np.clip(a[0:3], -1.0, 1.0)
+    dq = axis_angle_to_quat(C.EE_DELTA_ROT_LIMIT * np.clip(a[3:6], -1.0, 1.0))
+    quat = np.zeros(4)
+    mujoco.mju_mulQuat(quat, dq, measured.quat)
+    return TcpPose(pos, quat)
