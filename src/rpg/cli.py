@@ -458,15 +458,61 @@ def check_cmd(
 
 @app.command("render")
 def render_cmd(
-    directory: Annotated[Path, typer.Argument(help="A task artifact directory.")],
+    directory: Annotated[Path, typer.Argument(help="A task artifact directory (or FAMILY@vN with --embodiment).")],
     seed: Annotated[int, typer.Option("--seed", min=0)] = 0,
+    embodiment: Annotated[str | None, typer.Option(
+        "--embodiment", help="Show a robot (panda or floating_gripper): writes initial_<embodiment>.png and "
+                             "goal_<embodiment>.png from the agentview camera.")] = None,
+    output: Annotated[Path | None, typer.Option("-o", "--output", help="Directory for the robot snapshots "
+                                                                       "(default: the task directory).")] = None,
 ) -> None:
-    """Re-render initial.png and goal.png."""
+    """Re-render initial.png and goal.png (or, with --embodiment, snapshots with the robot)."""
     from rpg.artifact import save_snapshots
 
+    if embodiment is not None:
+        from rpg.env.loading import resolve_target
+        from rpg.env.rollout import robot_snapshots
+
+        with _reported_errors():
+            out_dir = output or resolve_target(directory)
+            if not out_dir.is_dir():
+                _fail(f"{out_dir} is not a directory")
+            paths = robot_snapshots(directory, embodiment, seed, out_dir)
+        for k, v in paths.items():
+            out.print(f"{k}: {v}")
+        return
+    if output is not None:
+        _fail("-o is for robot snapshots; give --embodiment too")
     res = _worker({"op": "render", "dir": str(directory), "seed": seed})
     for k, v in save_snapshots(directory, res.get("snapshots") or {}).items():
         out.print(f"{k}: {v or 'skipped (no headless OpenGL)'}")
+
+
+@app.command("play")
+def play_cmd(
+    task: Annotated[str, typer.Argument(help="A task directory, family directory or FAMILY@vN.")],
+    embodiment: Annotated[str, typer.Option("--embodiment", help="panda or floating_gripper.")] = "panda",
+    policy: Annotated[str, typer.Option("--policy", help="random or noop.")] = "random",
+    seed: Annotated[int, typer.Option("--seed", min=0, help="Episode seed (rho_0's sample).")] = 0,
+    video: Annotated[Path | None, typer.Option("--video", help="Write an MP4 (agentview | wrist).")] = None,
+    steps: Annotated[int | None, typer.Option("--steps", min=1, help="Episode length (default: the task's limit).")] = None,
+    as_json: Annotated[bool, typer.Option("--json")] = False,
+) -> None:
+    """Run one episode of a policy in the task's environment (ee_delta control, 20 Hz)."""
+    from rpg.env.rollout import play
+
+    if video is not None and (video.is_dir() or not video.parent.is_dir()):
+        _fail(f"--video {video}: give a file name in an existing directory")
+    with _reported_errors():
+        summary = play(task, embodiment=embodiment, policy=policy, seed=seed, video=video, max_steps=steps)
+    if as_json:
+        print(json.dumps(summary.to_json(), indent=2))
+    else:
+        mark = "[green]success[/]" if summary.success else "[red]no success[/]"
+        out.print(f"{esc(summary.task)} {summary.embodiment} {summary.policy} seed {summary.seed}: {mark} "
+                  f"after {summary.steps} steps", highlight=False)
+        if summary.video:
+            out.print(f"video: {esc(summary.video)} ({summary.frames} frames)", highlight=False)
 
 
 @app.command("diversity")

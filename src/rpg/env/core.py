@@ -135,7 +135,7 @@ class BlockTaskEnv(gym.Env):
         height, width = (int(v) for v in image_size)
         if not (16 <= height <= 2048 and 16 <= width <= 2048):
             raise EmbodimentError(f"image_size must be (height, width) between 16 and 2048 pixels, not {image_size}")
-        self.task, self.source = load_env_task(task, robot=self.robot)
+        self.task, self.source, self._goal_module = load_env_task(task, robot=self.robot)
         self.scene = self.task.scene
         self.model, self.data = self.scene.model, self.scene.data
         self.control_mode = control_mode
@@ -220,6 +220,13 @@ class BlockTaskEnv(gym.Env):
         terminated = bool(info["success"]) and self.terminate_on_success
         truncated = self._elapsed >= self.max_episode_steps and not terminated
         return self._observation(), float(info["success"]), terminated, truncated, info
+
+    def set_goal_state(self) -> None:
+        """Put the objects in the task's goal configuration (``goal_state_code.py``), robot at
+        home, velocities zero; no physics step (for snapshots and tests, not for policies)."""
+        self._goal_module.goal_state(self.task)
+        self.robot.home()
+        self.scene.forward()
 
     # -- reading -------------------------------------------------------------------
     def _state(self) -> np.ndarray:

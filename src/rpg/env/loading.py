@@ -75,7 +75,7 @@ def resolve_target(target: str | Path) -> Path:
     return path
 
 
-def load_env_task(target: str | Path, robot=None) -> tuple[BlockTask, TaskSource]:
+def load_env_task(target: str | Path, robot=None) -> tuple[BlockTask, TaskSource, object]:
     """Check and load a task for an environment (see the module docstring for the checks).
 
     Args:
@@ -83,7 +83,8 @@ def load_env_task(target: str | Path, robot=None) -> tuple[BlockTask, TaskSource
         robot: the embodiment to add to the task's scene.
 
     Returns:
-        The task instance (scene compiled with the robot) and where it came from.
+        The task instance (scene compiled with the robot), where it came from, and the
+        executed ``goal_state_code.py`` (its ``goal_state(task)`` sets the goal configuration).
 
     Raises:
         BadInput / ArtifactError: unreadable target or files changed since compilation.
@@ -106,11 +107,11 @@ def load_env_task(target: str | Path, robot=None) -> tuple[BlockTask, TaskSource
     try:
         for fname, text in sources.items():
             check_source(text, fname)
-        task, _ = load_task(sources, restricted=True, robot=robot)
+        task, goal_module = load_task(sources, restricted=True, robot=robot)
     except StaticViolation as exc:
         raise TaskInvalid(f"task code rejected: {exc}") from None
     except GateFailure as exc:
         raise TaskInvalid(f"task code rejected: {exc}") from None
     source = TaskSource(directory=directory, target=str(target), content_hash=digest, name=schema.name,
                         instruction=schema.instruction, paraphrases=tuple(schema.paraphrases))
-    return task, source
+    return task, source, goal_module

@@ -1,0 +1,253 @@
+"""rpg/BlockTask-v0: Gymnasium API, determinism, scripted pick-and-stack with both embodiments,
+loading through the validation checks, and the play / render commands."""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import gymnasium as gym
+import numpy as np
+import pytest
+from gymnasium.utils.env_checker import check_env
+
+import rpg.env  # noqa: F401  (registers rpg/BlockTask-v0)
+from rpg.domain import constants as C
+from rpg.env import ENV_ID, BlockTaskEnv, episode_step_limit
+from rpg.env.embodiments import EmbodimentError
+from rpg.env.scripted import cube_yaw, follow, pick_place_waypoints
+from rpg.errors import BadInput, TaskInvalid
+
+LIBRARY = Path(__file__).resolve().parents[1] / "library"
+STACK = LIBRARY / "stack_blocks"  # G: stack red (bottom), blue
+EMBODIMENTS = ("floating_gripper", "panda")
+
+
+def _env(embodiment: str, **kw) -> BlockTaskEnv:
+    kw.setdefault("cameras", ())
+    return gym.make(ENV_ID, task=str(kw.pop("task", STACK)), embodiment=embodiment, **kw)
+
+
+@pytest.mark.parametrize("embodiment", EMBODIMENTS)
+def test_check_env_passes(embodiment):
+    env = _env(embodiment, cameras=("agentview", "wrist"), image_size=(48, 64), privileged=True)
+    check_env(env.unwrapped, skip_render_check=True)
+    obs, info = env.reset(seed=3)
+    assert obs["agentview_image"].shape == (48, 64, 3) and obs["agentview_image"].dtype == np.uint8
+    assert obs["wrist_image"].shape == (48, 64, 3)
+    assert obs["agentview_image"].std() > 5  # a rendered scene, not a blank frame
+    assert obs["state"].shape == (8,) and obs["object_poses"].shape == (2, 7)
+    assert obs["instruction"] == "Stack two blocks on top of each other."
+    assert info["success"] is False and info["is_grasped"] is False
+    assert info["diagnostics"]["unsatisfied"], "G is false at rho_0 (non-trivial gate)"
+    env.close()
+
+
+@pytest.mark.parametrize("embodiment", EMBODIMENTS)
+def test_reset_samples_rho0_of_the_seed_and_starts_at_home(embodiment):
+    env = _env(embodiment, privileged=True)
+    obs, _ = env.reset(seed=7)
+    task = env.unwrapped.task
+    sampled = task.initial_state(np.random.default_rng(7))  # what every rpg command uses for seed 7
+    for row, name in zip(obs["object_poses"], env.unwrapped.object_names, strict=True):
+        assert np.allclose(row[:2], sampled[name].pos[:2], atol=2e-3), name
+    # TCP at the home pose: above the front of the workspace, pointing down
+    assert np.allclose(obs["state"][:3], [C.WORKSPACE_X[0], 0.0, C.TABLE_TOP_Z + C.HOME_TCP_HEIGHT], atol=5e-3)
+    assert np.allclose(obs["state"][6:], 0.04, atol=1e-3)  # gripper open
+    other, _ = env.reset(seed=8)
+    assert not np.allclose(other["object_poses"], obs["object_poses"])
+    env.close()
+
+
+@pytest.mark.parametrize("embodiment", EMBODIMENTS)
+def test_same_seed_and_actions_give_identical_bytes(embodiment):
+    runs = []
+    for _ in range(2):
+        env = _env(embodiment, cameras=("agentview",), image_size=(32, 32), privileged=True)
+        env.action_space.seed(11)
+        actions = [env.action_space.sample() for _ in range(15)]
+        obs, _ = env.reset(seed=5)
+        frames = [obs]
+        for a in actions:
+            frames.append(env.step(a)[0])
+        runs.append((frames, env.unwrapped.data.qpos.copy(), env.unwrapped.data.qvel.copy()))
+        env.close()
+    (fa, qa, va), (fb, qb, vb) = runs
+    assert qa.tobytes() == qb.tobytes() and va.tobytes() == vb.tobytes()
+    for oa, ob in zip(fa, fb, strict=True):
+        for key in oa:
+            if key != "instruction":
+                assert oa[key].tobytes() == ob[key].tobytes(), key
+
+
+def test_async_vector_env_with_two_envs():
+    # "rpg.env:" imports the module that registers the id in each spawned worker
+    envs = gym.vector.AsyncVectorEnv([lambda: gym.make(f"rpg.env:{ENV_ID}", task=str(STACK), embodiment="floating_gripper",
+                                                       cameras=("agentview",), image_size=(32, 32))] * 2,
+                                  context="spawn")  # forking a process that rendered with EGL can hang
+    try:
+        obs, infos = envs.reset(seed=[0, 1])
+        assert obs["state"].shape == (2, 8) and obs["agentview_image"].shape == (2, 32, 32, 3)
+        assert not np.allclose(obs["agentview_image"][0], obs["agentview_image"][1])
+        for _ in range(3):
+            obs, rew, term, trunc, infos = envs.step(envs.action_space.sample())
+        assert rew.shape == (2,) and list(infos["elapsed_steps"]) == [3, 3]
+    finally:
+        envs.close()
+
+
+def _stack_episode(embodiment: str, seed: int) -> list[dict]:
+    """Pick blue and put it on red through ee_delta actions only; the infos of every step."""
+    env = _env(embodiment, privileged=True)
+    obs, _ = env.reset(seed=seed)
+    poses = dict(zip(env.unwrapped.object_names, obs["object_poses"], strict=True))
+    blue, red = poses["blue"], poses["red"]
+    wps = pick_place_waypoints(blue[:3], cube_yaw(blue[3:]), red[:3] + np.array([0, 0, C.CUBE_EDGE]), cube_yaw(red[3:]))
+    infos = [out[4] for out in follow(env, wps)]
+    env.close()
+    return infos
+
+
+@pytest.mark.parametrize("embodiment", EMBODIMENTS)
+@pytest.mark.parametrize("seed", [0, 3])
+def test_scripted_pick_and_stack_succeeds_only_after_release(embodiment, seed):
+    infos = _stack_episode(embodiment, seed)
+    assert infos[-1]["success"], infos[-1]["diagnostics"]
+    first = next(i for i, info in enumerate(infos) if info["success"])
+    assert any(info["is_grasped"] and info["grasped"] == "blue" for info in infos[:first]), "blue was carried"
+    # while the gripper still held blue, G could hold but success could not
+    assert all(not info["success"] for info in infos if info["is_grasped"])
+    assert any(info["goal_satisfied"] and info["is_grasped"] for info in infos[:first])
+    assert not infos[first]["is_grasped"]
+
+
+def test_episode_is_truncated_at_the_limit_and_the_rule_is_documented():
+    env = _env("floating_gripper")
+    assert env.unwrapped.max_episode_steps == episode_step_limit(2) == C.EPISODE_BASE_STEPS + 2 * C.EPISODE_STEPS_PER_CUBE
+    short = _env("floating_gripper", max_episode_steps=3)
+    short.reset(seed=0)
+    noop = np.array([0, 0, 0, 0, 0, 0, -1], np.float32)
+    assert short.step(noop)[3] is False and short.step(noop)[3] is False
+    _, _, terminated, truncated, info = short.step(noop)
+    assert truncated is True and terminated is False and info["elapsed_steps"] == 3
+
+
+def test_joint_pos_control_moves_the_panda_to_the_commanded_joints():
+    env = _env("panda", control_mode="joint_pos")
+    assert env.action_space.shape == (8,)
+    obs, _ = env.reset(seed=0)
+    target = obs["qpos"][:7].copy()
+    target[0] += 0.3
+    for _ in range(20):
+        obs = env.step(np.append(target, -1.0).astype(np.float32))[0]
+    assert np.allclose(obs["qpos"][:7], target, atol=0.02)
+    with pytest.raises(EmbodimentError, match="no control mode 'joint_pos'"):
+        _env("floating_gripper", control_mode="joint_pos")
+
+
+def test_ee_abs_control_reaches_a_pose():
+    env = _env("floating_gripper", control_mode="ee_abs")
+    env.reset(seed=0)
+    goal = np.array([0.55, 0.10, C.TABLE_TOP_Z + 0.15, np.pi, 0.0, 0.0, -1.0], np.float32)  # pointing down
+    for _ in range(30):
+        obs = env.step(goal)[0]
+    assert np.allclose(obs["state"][:3], goal[:3], atol=3e-3)
+
+
+def test_paraphrase_instruction_and_bad_arguments():
+    env = _env("floating_gripper", instruction="paraphrase:1")
+    obs, info = env.reset(seed=0)
+    assert obs["instruction"] == info["instruction"] == "Goal: tower bottom to top: red, blue."
+    for kwargs, message in [({"instruction": "paraphrase:9"}, "paraphrases"), ({"embodiment": "ur5"}, "unknown embodiment"),
+                            ({"cameras": ("top",)}, "unknown camera"), ({"image_size": (0, 10)}, "image_size")]:
+        kw = {"embodiment": "floating_gripper", **kwargs}
+        with pytest.raises(EmbodimentError, match=message):
+            gym.make(ENV_ID, task=str(STACK), **kw)
+    with pytest.raises(ValueError, match="action must be 7"):
+        env.step(np.zeros(3, np.float32))
+
+
+def test_loading_goes_through_the_validation_checks(tmp_path):
+    task = tmp_path / "stack"
+    shutil.copytree(STACK, task)
+    code = task / "code.py"
+    code.write_text(code.read_text().replace("Stack(objects=['red', 'blue'])", "Stack(objects=['blue', 'red'])"))
+    with pytest.raises(BadInput, match="content hash differs"):
+        BlockTaskEnv(task, embodiment="floating_gripper", cameras=())
+    with pytest.raises(BadInput, match="no task at"):
+        BlockTaskEnv(tmp_path / "missing", embodiment="floating_gripper", cameras=())
+    # an artifact whose hash matches but whose code the text gate refuses
+    from rpg.artifact import content_hash, load_artifact, task_sources
+    from rpg.yamlio import dump, load
+
+    shutil.copy(STACK / "code.py", code)
+    code.write_text(code.read_text() + "\nimport os\n")
+    doc = load((task / "task.yaml").read_text())
+    doc["content_hash"] = content_hash(doc, code.read_text(), (task / "goal_state_code.py").read_text())
+    (task / "task.yaml").write_text(dump(doc))
+    load_artifact(task)
+    assert task_sources(task)["code.py"].endswith("import os\n")
+    with pytest.raises(TaskInvalid, match="task code rejected"):
+        BlockTaskEnv(task, embodiment="floating_gripper", cameras=())
+
+
+def test_family_version_targets(tmp_path):
+    fam = LIBRARY / "progressive_tower"
+    history = load_history(fam)
+    env = BlockTaskEnv(f"{fam}@v0", embodiment="floating_gripper", cameras=())
+    assert env.source.directory == fam / "v0"
+    assert env.source.content_hash == history["versions"][0]["content_hash"]
+    head = BlockTaskEnv(fam, embodiment="floating_gripper", cameras=())
+    assert head.source.directory == fam / f"v{history['head']}"
+    with pytest.raises(BadInput, match="names a version of a family only"):
+        BlockTaskEnv(f"{STACK}@v1", embodiment="floating_gripper", cameras=())
+
+
+def load_history(fam: Path) -> dict:
+    from rpg.yamlio import load
+
+    return load((fam / "family.yaml").read_text())
+
+
+def test_visibility_rays_ignore_the_robot():
+    """A semantic task's G (readability rays from the default camera) is the same with a robot."""
+    env = _env("panda", task=LIBRARY / "arrange_word")
+    env.reset(seed=0)
+    env.unwrapped.set_goal_state()
+    assert env.unwrapped.task.evaluate().satisfied
+
+
+def _rpg(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "rpg.cli", *args], capture_output=True, text=True, cwd=cwd, timeout=600)
+
+
+def test_play_writes_a_video_and_render_shows_the_robot(tmp_path):
+    import av
+
+    video = tmp_path / "out.mp4"
+    r = _rpg("play", str(STACK), "--embodiment", "floating_gripper", "--policy", "random", "--steps", "6",
+             "--video", str(video), "--json")
+    assert r.returncode == 0, r.stderr
+    summary = json.loads(r.stdout)
+    assert summary["steps"] == 6 and summary["frames"] == 7 and summary["success"] is False
+    with av.open(str(video)) as container:
+        frames = [f.to_ndarray(format="rgb24") for f in container.decode(video=0)]
+    assert len(frames) == 7 and frames[0].shape == (256, 512, 3)
+    for embodiment in EMBODIMENTS:
+        r = _rpg("render", str(STACK), "--embodiment", embodiment, "-o", str(tmp_path))
+        assert r.returncode == 0, r.stderr
+    from PIL import Image
+
+    panda = np.asarray(Image.open(tmp_path / "goal_panda.png")).astype(int)
+    hand = np.asarray(Image.open(tmp_path / "goal_floating_gripper.png")).astype(int)
+    assert panda.shape == (480, 640, 3)
+    # the same goal scene; the Panda's arm rises behind its hand, the floating hand has none
+    assert (np.abs(panda - hand).sum(axis=2) > 30).mean() > 0.01
+    assert np.abs(np.asarray(Image.open(tmp_path / "initial_panda.png")).astype(int) - panda).max() > 0
+    bad = _rpg("play", str(STACK), "--policy", "smart")
+    assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "unknown policy" in bad.stderr
+    bad = _rpg("play", str(STACK), "--video", str(tmp_path / "no" / "out.mp4"))
+    assert bad.returncode == 2 and "existing directory" in bad.stderr
