@@ -25,6 +25,7 @@ bench: install
 	$(PY) benchmarks/bench_domain.py
 	$(PY) benchmarks/bench_compile.py
 	$(PY) benchmarks/bench_library.py
+	$(PY) benchmarks/bench_env.py
 
 lint: install
 	$(VENV)/bin/ruff check src tests benchmarks

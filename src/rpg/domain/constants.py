@@ -305,6 +305,11 @@ MOCAP_WELD_SOLREF: tuple[float, float] = (0.02, 1.0)
 """solref of the weld between the floating hand and its mocap target (time constant s,
 damping ratio): stiff enough to lift, soft enough not to fling a cube it touches (project)."""
 
+MOCAP_INTERPOLATION_POINTS: int = 5
+"""Increments in which the floating hand's mocap target moves to a control step's target
+(every CONTROL_SUBSTEPS / 5 = 5 physics steps, 10 ms): at most 1 cm and 0.1 rad at a time
+(project)."""
+
 RESET_SETTLE_STEPS: int = 50
 """Physics steps after placing rho_0's sample and the robot's home pose, before the first
 observation of an episode (project)."""

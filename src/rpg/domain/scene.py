@@ -119,6 +119,7 @@ class Scene:
         self.data = mujoco.MjData(self.model)
         if robot is not None:
             robot.bind(self.model, self.data)
+        self._static: dict[str, dict] | None = None
         self._qpos_adr: dict[str, int] = {}
         self._qvel_adr: dict[str, int] = {}
         self._mocap_id: dict[str, int] = {}
@@ -237,20 +238,22 @@ class Scene:
     # -- state -----------------------------------------------------------------
     def world_state(self, visible_faces: dict | None = None) -> WorldState:
         """The current state as predicates see it."""
+        if self._static is None:  # what an object is does not change within a scene
+            self._static = {
+                name: {"kind": a.kind, "size": a.extents, "color": getattr(a, "color", None),
+                       "label": getattr(a, "label", None),
+                       "face_labels": a.face_labels() if hasattr(a, "face_labels") else {}}
+                for name, a in self.assets.items()
+            }
         objects = {}
         for name in self.names:
-            asset = self.assets[name]
-            pose = self.pose(name)
-            objects[name] = ObjectState(
-                name=name,
-                kind=asset.kind,
-                pos=np.array(pose.pos),
-                quat=np.array(pose.quat),
-                size=asset.extents,
-                color=getattr(asset, "color", None),
-                label=getattr(asset, "label", None),
-                face_labels=asset.face_labels() if hasattr(asset, "face_labels") else {},
-            )
+            if name in self._qpos_adr:
+                a = self._qpos_adr[name]
+                pos, quat = self.data.qpos[a:a + 3].copy(), self.data.qpos[a + 3:a + 7].copy()
+            else:
+                m = self._mocap_id[name]
+                pos, quat = self.data.mocap_pos[m].copy(), self.data.mocap_quat[m].copy()
+            objects[name] = ObjectState(name=name, pos=pos, quat=quat, **self._static[name])
         return WorldState(objects, visible_faces)
 
     def to_json(self) -> str:

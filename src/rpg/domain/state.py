@@ -7,6 +7,7 @@ on constructed states and evaluated on states read from any simulator.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -109,9 +110,9 @@ class ObjectState:
     def is_cube(self) -> bool:
         return self.kind != "goal_patch"
 
-    @property
+    @cached_property
     def rotation(self) -> np.ndarray:
-        """Local-to-world rotation, shape (3, 3)."""
+        """Local-to-world rotation, shape (3, 3) (computed once: the state is frozen)."""
         return quat_to_mat(self.quat)
 
     @property

@@ -208,13 +208,10 @@ class BlockTaskEnv(gym.Env):
             raise ValueError(f"action must be {self.action_space.shape[0]} finite numbers for "
                              f"control_mode={self.control_mode!r}, got shape {np.shape(action)}")
         self.robot.command(self.control_mode, a)
-        n = C.CONTROL_SUBSTEPS
-        if self.robot.INTERPOLATES:
-            for k in range(n):
-                self.robot.substep(k, n)
-                mujoco.mj_step(self.model, self.data)
-        else:
-            mujoco.mj_step(self.model, self.data, nstep=n)
+        parts = self.robot.INTERPOLATION_POINTS
+        for k in range(parts):
+            self.robot.substep(k, parts)
+            mujoco.mj_step(self.model, self.data, nstep=C.CONTROL_SUBSTEPS // parts)
         self._elapsed += 1
         info = self._info()
         terminated = bool(info["success"]) and self.terminate_on_success

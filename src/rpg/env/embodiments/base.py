@@ -123,14 +123,14 @@ class Embodiment:
     Class attributes:
         NAME: registry name.
         CONTROL_MODES: the action spaces it supports.
-        INTERPOLATES: see below.
+        INTERPOLATION_POINTS: see below.
     """
 
     NAME = "embodiment"
     CONTROL_MODES: tuple[str, ...] = ("ee_delta", "ee_abs")
-    INTERPOLATES = False
-    """Whether :meth:`substep` must run before every physics step (else the control step's
-    physics steps run in one ``mj_step`` call)."""
+    INTERPOLATION_POINTS = 1
+    """In how many equal parts a control step's physics steps run; :meth:`substep` is called
+    before each (1: one ``mj_step`` call)."""
 
     def __init__(self) -> None:
         self.model: mujoco.MjModel | None = None
@@ -149,10 +149,11 @@ class Embodiment:
                                      for j in ("finger_joint1", "finger_joint2")])
         self.gripper_act = model.actuator(PREFIX + "actuator8").id
         body_of = model.geom_bodyid
-        self.left_geoms = np.flatnonzero(body_of == model.body(PREFIX + "left_finger").id)
-        self.right_geoms = np.flatnonzero(body_of == model.body(PREFIX + "right_finger").id)
-        robot_bodies = [i for i in range(model.nbody) if model.body(i).name.startswith(PREFIX)]
-        self.robot_geoms = np.flatnonzero(np.isin(body_of, robot_bodies))
+        # per geom: 1 on the left finger, 2 on the right finger, 0 elsewhere
+        self.finger_side = np.zeros(model.ngeom, np.int8)
+        self.finger_side[body_of == model.body(PREFIX + "left_finger").id] = 1
+        self.finger_side[body_of == model.body(PREFIX + "right_finger").id] = 2
+        self.is_robot_body = np.array([model.body(i).name.startswith(PREFIX) for i in range(model.nbody)])
         self._bind()
 
     def _bind(self) -> None:
@@ -168,7 +169,7 @@ class Embodiment:
         raise NotImplementedError
 
     def substep(self, k: int, n: int) -> None:
-        """Called before physics step ``k`` of ``n`` in a control step (interpolation)."""
+        """Called before part ``k`` of ``n`` of a control step's physics steps (interpolation)."""
 
     # -- reading -----------------------------------------------------------------
     def tcp_pose(self) -> TcpPose:
@@ -197,16 +198,19 @@ class Embodiment:
         if n == 0:
             return out
         geoms = self.data.contact.geom[:n]
+        side = self.finger_side[geoms]  # (n, 2)
+        if not side.any():
+            return out
         body_of = self.model.geom_bodyid
-        for side, fingers in (("left", self.left_geoms), ("right", self.right_geoms)):
-            for col in (0, 1):
-                hit = np.isin(geoms[:, col], fingers)
-                out[side].update(int(b) for b in body_of[geoms[hit, 1 - col]])
+        for col in (0, 1):
+            for k, name in ((1, "left"), (2, "right")):
+                hit = side[:, col] == k
+                if hit.any():
+                    out[name].update(int(b) for b in body_of[geoms[hit, 1 - col]])
         return out
 
     def grasped_body(self) -> int | None:
-        """Id of the body both fingers touch (a grasped cube), or None."""
+        """Id of the lowest-numbered non-robot body both fingers touch (a grasped cube), or None."""
         t = self.touching()
-        both = sorted(t["left"] & t["right"])
-        both = [b for b in both if not self.model.body(b).name.startswith(PREFIX) and b != 0]
+        both = sorted(b for b in t["left"] & t["right"] if b != 0 and not self.is_robot_body[b])
         return both[0] if both else None

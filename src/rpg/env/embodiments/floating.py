@@ -2,7 +2,8 @@
 
 The hand is a free body held to a mocap body by a weld constraint
 (:data:`~rpg.domain.constants.MOCAP_WELD_SOLREF`); each control step moves the mocap body
-from the hand's measured pose to the step's target in equal increments, linear in position
+from the hand's measured pose to the step's target in
+:data:`~rpg.domain.constants.MOCAP_INTERPOLATION_POINTS` equal increments, linear in position
 and spherical-linear (slerp) in orientation, so that a large action does not jump the
 target and fling a cube the hand touches.  The finger actuator's gain is
 :data:`~rpg.domain.constants.GRIPPER_GAIN` times the stock one, as on the Panda.
@@ -34,7 +35,7 @@ class FloatingGripper(Embodiment):
 
     NAME = "floating_gripper"
     CONTROL_MODES = ("ee_delta", "ee_abs")
-    INTERPOLATES = True
+    INTERPOLATION_POINTS = C.MOCAP_INTERPOLATION_POINTS
 
     def attach(self, spec: mujoco.MjSpec) -> None:
         robot = load_robot_spec("hand.xml")

@@ -41,6 +41,19 @@ def _robot_spec() -> mujoco.MjSpec:
     return spec
 
 
+def _ik_model() -> mujoco.MjModel:
+    """The arm alone (7 joints, the hand as a rigid end with its TCP site, no fingers, no
+    geoms): what the IK needs, at the same base pose as in the scene."""
+    spec = _robot_spec()
+    for el in [*spec.actuators, *spec.tendons, *spec.equalities, *spec.excludes]:
+        spec.delete(el)
+    for finger in ("left_finger", "right_finger"):
+        spec.delete(spec.body(finger))
+    for el in [*spec.geoms, *spec.meshes]:
+        spec.delete(el)
+    return spec.compile()
+
+
 class Panda(Embodiment):
     """Franka Emika Panda (7 joints, Menagerie hand) on a fixed base at
     :data:`~rpg.domain.constants.ROBOT_BASE_POS`.
@@ -56,17 +69,12 @@ class Panda(Embodiment):
         super().__init__()
         import mink
 
-        ik_spec = _robot_spec()
-        for geom in list(ik_spec.geoms):  # the IK model needs kinematics only
-            if geom.contype == 0 and geom.conaffinity == 0:
-                ik_spec.delete(geom)
-        self.ik_model = ik_spec.compile()
+        self.ik_model = _ik_model()
         self._mink = mink
         self.configuration = mink.Configuration(self.ik_model)
         self.tcp_task = mink.FrameTask("tcp", "site", position_cost=1.0, orientation_cost=1.0, lm_damping=1e-6)
         self.posture = mink.PostureTask(self.ik_model, cost=IK_POSTURE_COST)
-        q_home = np.concatenate([C.HOME_QPOS, [0.04, 0.04]])
-        self.posture.set_target(q_home)
+        self.posture.set_target(np.array(C.HOME_QPOS))
         self.limits = [mink.ConfigurationLimit(self.ik_model)]
         self.joint_low = self.ik_model.jnt_range[:7, 0].copy()
         self.joint_high = self.ik_model.jnt_range[:7, 1].copy()
@@ -100,13 +108,13 @@ class Panda(Embodiment):
     def solve_ik(self, target: TcpPose) -> np.ndarray:
         """Joint targets (7,) rad that move the TCP toward ``target`` within one control period."""
         mink = self._mink
-        self.configuration.update(self.robot_qpos())
+        self.configuration.update(self.data.qpos[self.arm_qpos])
         self.tcp_task.set_target(mink.SE3.from_rotation_and_translation(mink.SO3(target.quat), target.pos))
         dt = 1.0 / C.CONTROL_HZ
         vel = mink.solve_ik(self.configuration, [self.tcp_task, self.posture], dt, solver="daqp",
                             damping=IK_DAMPING, limits=self.limits)
         self.configuration.integrate_inplace(vel, dt)
-        return self.configuration.q[:7].copy()
+        return self.configuration.q.copy()
 
     def command(self, mode: str, action: np.ndarray) -> None:
         if mode == "joint_pos":
