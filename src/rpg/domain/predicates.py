@@ -52,6 +52,10 @@ def _clean(value: Any) -> Any:
     return value
 
 
+_FIELD_NAMES: dict[type, tuple[str, ...]] = {}
+"""Field names of each predicate class (``dataclasses.fields`` is slow for a per-step call)."""
+
+
 @dataclass
 class PredicateResult:
     """Outcome of evaluating one predicate.
@@ -162,7 +166,10 @@ class Predicate:
 
     # -- structure -----------------------------------------------------------
     def args(self) -> dict:
-        return {f.name: getattr(self, f.name) for f in fields(self)}
+        names = _FIELD_NAMES.get(type(self))
+        if names is None:
+            names = _FIELD_NAMES.setdefault(type(self), tuple(f.name for f in fields(self)))
+        return {n: getattr(self, n) for n in names}
 
     def object_names(self) -> list[str]:
         """Every object the predicate mentions, in order of appearance."""
@@ -284,7 +291,7 @@ def _planar(o: ObjectState) -> np.ndarray:
 
 
 def _signature(o: ObjectState) -> tuple:
-    return (o.kind, o.color, tuple(sorted((k, v or "") for k, v in o.face_labels.items())))
+    return o.signature
 
 
 def _table_gap(o: ObjectState) -> float:

@@ -111,6 +111,11 @@ class ObjectState:
         return self.kind != "goal_patch"
 
     @cached_property
+    def signature(self) -> tuple:
+        """What makes two objects interchangeable in a goal: kind, colour and face labels."""
+        return (self.kind, self.color, tuple(sorted((k, v or "") for k, v in self.face_labels.items())))
+
+    @cached_property
     def rotation(self) -> np.ndarray:
         """Local-to-world rotation, shape (3, 3) (computed once: the state is frozen)."""
         return quat_to_mat(self.quat)

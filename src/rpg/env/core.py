@@ -233,7 +233,7 @@ class BlockTaskEnv(gym.Env):
     def _observation(self) -> dict:
         obs = {}
         for cam in self.cameras:
-            obs[f"{cam}_image"] = self._render_camera(cam)
+            obs[f"{cam}_image"] = self.render_camera(cam)
         obs["state"] = self._state()
         obs["qpos"] = self.robot.robot_qpos()
         obs["qvel"] = self.robot.robot_qvel()
@@ -260,7 +260,11 @@ class BlockTaskEnv(gym.Env):
         }
 
     # -- rendering -----------------------------------------------------------------
-    def _render_camera(self, camera: str) -> np.ndarray:
+    def render_camera(self, camera: str) -> np.ndarray:
+        """An image (H, W, 3) uint8 of the current state from ``camera`` (one of CAMERAS), at
+        ``image_size``; the first call creates the renderer (one per environment)."""
+        if camera not in CAMERAS:
+            raise EmbodimentError(f"unknown camera {camera!r}; cameras are {', '.join(CAMERAS)}")
         if self._renderer is None:
             h, w = self.image_size
             vis = self.model.vis.global_
@@ -273,7 +277,7 @@ class BlockTaskEnv(gym.Env):
         """The agentview image (H, W, 3) uint8 (``render_mode="rgb_array"``), else None."""
         if self.render_mode != "rgb_array":
             return None
-        return self._render_camera("agentview")
+        return self.render_camera("agentview")
 
     def close(self) -> None:
         if self._renderer is not None:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import io
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -105,17 +106,15 @@ def robot_snapshots(task: str | Path, embodiment: str, seed: int, out_dir: str |
     env = BlockTaskEnv(task, embodiment=embodiment, cameras=(), image_size=size)
     try:
         env.reset(seed=seed)
-        images = {"initial": env._render_camera("agentview")}
+        images = {"initial": env.render_camera("agentview")}
         env.set_goal_state()
         env.scene.settle(C.SETTLE_STEPS)
-        images["goal"] = env._render_camera("agentview")
+        images["goal"] = env.render_camera("agentview")
     finally:
         env.close()
     out = {}
     for key, img in images.items():
         path = Path(out_dir) / f"{key}_{embodiment}.png"
-        import io
-
         buf = io.BytesIO()
         Image.fromarray(img).save(buf, format="PNG")
         write_file(path, buf.getvalue())
