@@ -251,3 +251,19 @@ def test_play_writes_a_video_and_render_shows_the_robot(tmp_path):
     assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "unknown policy" in bad.stderr
     bad = _rpg("play", str(STACK), "--video", str(tmp_path / "no" / "out.mp4"))
     assert bad.returncode == 2 and "existing directory" in bad.stderr
+
+
+def test_snapshots_have_no_black_band_and_agentview_sees_past_the_arm():
+    from rpg.domain.render import render_image
+
+    env = _env("panda", cameras=("agentview", "default"), image_size=(120, 160))
+    obs, _ = env.reset(seed=0)
+    for key in ("agentview_image", "default_image"):
+        top = obs[key][:12].astype(float)  # what lies beyond the table: floor or sky, never black
+        assert top.mean() > 40, key
+    block_only = render_image(env.unwrapped.task.__class__().scene, 160, 120)
+    assert block_only is not None and block_only[:12].mean() > 40
+    # the Panda at home hides little of the workspace from agentview: compare with the floating hand
+    hand = _env("floating_gripper", cameras=("agentview",), image_size=(120, 160)).reset(seed=0)[0]
+    differs = np.abs(obs["agentview_image"].astype(int) - hand["agentview_image"].astype(int)).sum(axis=2) > 30
+    assert differs[40:].mean() < 0.1  # the table and cubes (lower two thirds) look the same but for shadows
