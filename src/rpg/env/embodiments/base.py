@@ -117,6 +117,23 @@ class TcpPose:
     quat: np.ndarray
 
 
+def cartesian_target(measured: TcpPose, mode: str, action: np.ndarray) -> TcpPose:
+    """The TCP target of an ``ee_delta`` or ``ee_abs`` action, world frame.
+
+    ``ee_delta``: position ``measured.pos + EE_DELTA_POS_LIMIT * a[0:3]`` (m); orientation
+    ``exp(EE_DELTA_ROT_LIMIT * a[3:6]) * measured.quat`` (a rotation about world axes).
+    ``ee_abs``: position ``a[0:3]`` (m) and orientation ``exp(a[3:6])`` (axis-angle, rad).
+    """
+    a = np.asarray(action, float)
+    if mode == "ee_abs":
+        return TcpPose(a[0:3].copy(), axis_angle_to_quat(a[3:6]))
+    pos = measured.pos + C.EE_DELTA_POS_LIMIT * np.clip(a[0:3], -1.0, 1.0)
+    dq = axis_angle_to_quat(C.EE_DELTA_ROT_LIMIT * np.clip(a[3:6], -1.0, 1.0))
+    quat = np.zeros(4)
+    mujoco.mju_mulQuat(quat, dq, measured.quat)
+    return TcpPose(pos, quat)
+
+
 class Embodiment:
     """A robot in the block domain.  Subclasses implement the template methods below.
 

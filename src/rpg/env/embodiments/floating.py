@@ -15,8 +15,14 @@ import mujoco
 import numpy as np
 
 from rpg.domain import constants as C
-from rpg.env.embodiments.base import PREFIX, Embodiment, TcpPose, load_robot_spec, prepare_hand
-from rpg.env.embodiments.panda import cartesian_target
+from rpg.env.embodiments.base import (
+    PREFIX,
+    Embodiment,
+    TcpPose,
+    cartesian_target,
+    load_robot_spec,
+    prepare_hand,
+)
 
 HOME_HAND_QUAT: tuple[float, float, float, float] = (0.0, 1.0, 0.0, 0.0)
 """Hand orientation at home, as the Panda's: approach axis (+z of the hand) pointing down,

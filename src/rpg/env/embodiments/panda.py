@@ -11,6 +11,7 @@ cubes stacked 100/100.
 
 from __future__ import annotations
 
+import mink
 import mujoco
 import numpy as np
 
@@ -19,7 +20,7 @@ from rpg.env.embodiments.base import (
     PREFIX,
     Embodiment,
     TcpPose,
-    axis_angle_to_quat,
+    cartesian_target,
     load_robot_spec,
     prepare_hand,
 )
@@ -67,10 +68,7 @@ class Panda(Embodiment):
 
     def __init__(self) -> None:
         super().__init__()
-        import mink
-
         self.ik_model = _ik_model()
-        self._mink = mink
         self.configuration = mink.Configuration(self.ik_model)
         self.tcp_task = mink.FrameTask("tcp", "site", position_cost=1.0, orientation_cost=1.0, lm_damping=1e-6)
         self.posture = mink.PostureTask(self.ik_model, cost=IK_POSTURE_COST)
@@ -106,13 +104,21 @@ class Panda(Embodiment):
         return np.concatenate([self.data.qvel[self.arm_qvel], self.data.qvel[self.finger_qvel]])
 
     def solve_ik(self, target: TcpPose) -> np.ndarray:
-        """Joint targets (7,) rad that move the TCP toward ``target`` within one control period."""
-        mink = self._mink
-        self.configuration.update(self.data.qpos[self.arm_qpos])
+        """Joint targets (7,) rad that move the TCP toward ``target`` within one control period.
+
+        The measured joints are clipped into their limits first (contact can push a joint a
+        hair past one, which the QP would reject); where the QP has no solution the arm keeps
+        its current targets.
+        """
+        q = np.clip(self.data.qpos[self.arm_qpos], self.joint_low + 1e-6, self.joint_high - 1e-6)
+        self.configuration.update(q)
         self.tcp_task.set_target(mink.SE3.from_rotation_and_translation(mink.SO3(target.quat), target.pos))
         dt = 1.0 / C.CONTROL_HZ
-        vel = mink.solve_ik(self.configuration, [self.tcp_task, self.posture], dt, solver="daqp",
-                            damping=IK_DAMPING, limits=self.limits)
+        try:
+            vel = mink.solve_ik(self.configuration, [self.tcp_task, self.posture], dt, solver="daqp",
+                                damping=IK_DAMPING, limits=self.limits)
+        except mink.NoSolutionFound:
+            return self.data.ctrl[self.arm_act].copy()
         self.configuration.integrate_inplace(vel, dt)
         return self.configuration.q.copy()
 
@@ -127,20 +133,3 @@ class Panda(Embodiment):
     def target_pose(self, mode: str, action: np.ndarray) -> TcpPose:
         """The TCP target of a Cartesian action (see :mod:`rpg.env.core` for the conventions)."""
         return cartesian_target(self.tcp_pose(), mode, action)
-
-
-def cartesian_target(measured: TcpPose, mode: str, action: np.ndarray) -> TcpPose:
-    """The TCP target of an ``ee_delta`` or ``ee_abs`` action, world frame.
-
-    ``ee_delta``: position ``measured.pos + EE_DELTA_POS_LIMIT * a[0:3]`` (m); orientation
-    ``exp(EE_DELTA_ROT_LIMIT * a[3:6]) * measured.quat`` (a rotation about world axes).
-    ``ee_abs``: position ``a[0:3]`` (m) and orientation ``exp(a[3:6])`` (axis-angle, rad).
-    """
-    a = np.asarray(action, float)
-    if mode == "ee_abs":
-        return TcpPose(a[0:3].copy(), axis_angle_to_quat(a[3:6]))
-    pos = measured.pos + C.EE_DELTA_POS_LIMIT * np.clip(a[0:3], -1.0, 1.0)
-    dq = axis_angle_to_quat(C.EE_DELTA_ROT_LIMIT * np.clip(a[3:6], -1.0, 1.0))
-    quat = np.zeros(4)
-    mujoco.mju_mulQuat(quat, dq, measured.quat)
-    return TcpPose(pos, quat)
