@@ -244,6 +244,7 @@ class BlockTaskEnv(gym.Env):
 
     def _info(self) -> dict:
         result = self.task.evaluate()
+        leaves = result.leaves()
         body = self.robot.grasped_body()
         grasped = self._body_names.get(body, "") if body is not None else ""
         return {
@@ -251,8 +252,8 @@ class BlockTaskEnv(gym.Env):
             "goal_satisfied": bool(result.satisfied),
             "is_grasped": body is not None,
             "grasped": grasped,
-            "diagnostics": {"satisfied": [r.reason for r in result.satisfied_list],
-                            "unsatisfied": [r.reason for r in result.unsatisfied_list]},
+            "diagnostics": {"satisfied": [r.reason for r in leaves if r.satisfied],
+                            "unsatisfied": [r.reason for r in leaves if not r.satisfied]},
             "elapsed_steps": self._elapsed,
             "seed": self._seed,
             "task_hash": self.source.content_hash,
