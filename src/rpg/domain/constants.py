@@ -272,6 +272,11 @@ HOME_QPOS: tuple[float, ...] = (0.0, -0.3389, 0.0, -2.649, 0.0, 2.310, 0.785398)
 """Panda joint angles (rad) of the home pose: TCP at (0.40, 0, table + HOME_TCP_HEIGHT),
 gripper pointing down, fingers closing along y (solved with the IK, project)."""
 
+HOME_TCP_QUAT: tuple[float, float, float, float] = (0.0, 1.0, 0.0, 0.0)
+"""TCP (and hand) orientation at home, w, x, y, z: approach axis (the hand's +z) pointing
+down, fingers closing along world y (a half turn about world x).  Top-down grasps turn it
+about world z (project)."""
+
 HOME_TCP_HEIGHT: float = 0.25
 """Height of the TCP above the table at home (both embodiments), m (project)."""
 

@@ -151,15 +151,16 @@ class Scene:
             SceneError: unknown name.
         """
         self._check(name)
+        pos, quat = self._pose_arrays(name)
+        return Pose(tuple(float(v) for v in pos), tuple(float(v) for v in quat))
+
+    def _pose_arrays(self, name: str) -> tuple[np.ndarray, np.ndarray]:
+        """Views of an object's position (3,) and quaternion (4,) in ``data`` (no copy)."""
         if name in self._qpos_adr:
             a = self._qpos_adr[name]
-            q = self.data.qpos[a : a + 7]
-            return Pose(tuple(float(v) for v in q[:3]), tuple(float(v) for v in q[3:7]))
+            return self.data.qpos[a : a + 3], self.data.qpos[a + 3 : a + 7]
         m = self._mocap_id[name]
-        return Pose(
-            tuple(float(v) for v in self.data.mocap_pos[m]),
-            tuple(float(v) for v in self.data.mocap_quat[m]),
-        )
+        return self.data.mocap_pos[m], self.data.mocap_quat[m]
 
     def poses(self) -> dict[str, Pose]:
         """Poses of all objects, by name (sorted)."""
@@ -247,13 +248,8 @@ class Scene:
             }
         objects = {}
         for name in self.names:
-            if name in self._qpos_adr:
-                a = self._qpos_adr[name]
-                pos, quat = self.data.qpos[a:a + 3].copy(), self.data.qpos[a + 3:a + 7].copy()
-            else:
-                m = self._mocap_id[name]
-                pos, quat = self.data.mocap_pos[m].copy(), self.data.mocap_quat[m].copy()
-            objects[name] = ObjectState(name=name, pos=pos, quat=quat, **self._static[name])
+            pos, quat = self._pose_arrays(name)
+            objects[name] = ObjectState(name=name, pos=pos.copy(), quat=quat.copy(), **self._static[name])
         return WorldState(objects, visible_faces)
 
     def to_json(self) -> str:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import io
 from dataclasses import dataclass
 from pathlib import Path
@@ -67,9 +68,8 @@ def play(task: str | Path, embodiment: str = "panda", policy: str = "random", se
     try:
         act = _policy(policy, env, seed)
         obs, info = env.reset(seed=seed)
-        frames = 0
-        writer = VideoWriter(video, env.metadata["render_fps"]) if video else None
-        try:
+        # the video appears only if the episode ends without an error (nothing half-written)
+        with VideoWriter(video, env.metadata["render_fps"]) if video else contextlib.nullcontext() as writer:
             def record(o):
                 if writer is not None:
                     writer.write(np.concatenate([o["agentview_image"], o["wrist_image"]], axis=1))
@@ -79,13 +79,10 @@ def play(task: str | Path, embodiment: str = "panda", policy: str = "random", se
             while not (terminated or truncated):
                 obs, _, terminated, truncated, info = env.step(act(obs))
                 record(obs)
-        finally:
-            if writer is not None:
-                writer.__exit__(None, None, None)
-                frames = writer.frames
         return EpisodeSummary(task=str(task), embodiment=embodiment, policy=policy, seed=seed,
                               steps=info["elapsed_steps"], success=info["success"], truncated=truncated,
-                              instruction=env.instruction, video=str(video) if video else None, frames=frames)
+                              instruction=env.instruction, video=str(video) if video else None,
+                              frames=writer.frames if writer is not None else 0)
     finally:
         env.close()
 

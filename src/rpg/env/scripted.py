@@ -17,7 +17,6 @@ import numpy as np
 
 from rpg.domain import constants as C
 from rpg.env.embodiments.base import TcpPose
-from rpg.env.embodiments.floating import HOME_HAND_QUAT
 
 APPROACH_HEIGHT = 0.10
 """Height of the approach and retreat waypoints above a grasp or place point, m."""
@@ -57,7 +56,7 @@ def cube_yaw(quat) -> float:
 def top_down_quat(yaw: float) -> np.ndarray:
     """TCP orientation pointing down, turned by ``yaw`` about world z (home has yaw 0)."""
     q = np.zeros(4)
-    mujoco.mju_mulQuat(q, np.array([np.cos(yaw / 2), 0.0, 0.0, np.sin(yaw / 2)]), np.array(HOME_HAND_QUAT))
+    mujoco.mju_mulQuat(q, np.array([np.cos(yaw / 2), 0.0, 0.0, np.sin(yaw / 2)]), np.array(C.HOME_TCP_QUAT))
     return q
 
 

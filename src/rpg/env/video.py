@@ -71,10 +71,3 @@ class VideoWriter:
             with contextlib.suppress(OSError):
                 self._tmp.unlink()
 
-
-def count_frames(path: str | Path) -> int:
-    """Frames decoded from a video file."""
-    import av
-
-    with av.open(str(path)) as container:
-        return sum(1 for _ in container.decode(video=0))

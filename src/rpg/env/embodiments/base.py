@@ -10,7 +10,8 @@ Both embodiments carry the MuJoCo Menagerie's Franka hand (Apache-2.0, vendored 
 ``assets/franka_emika_panda`` with its LICENSE).  Frames: world frame as in
 :mod:`rpg.domain.constants`; the TCP site sits ``TCP_OFFSET`` along the hand's +z (the
 approach direction), between the finger pads.  All robot names start with ``robot/``
-(object names are slugs and cannot).
+(object names are slugs and cannot).  Robot geoms keep the Menagerie's groups (visuals 2,
+collision 3), so visibility rays, which see group 0 only, pass through the robot.
 """
 
 from __future__ import annotations
@@ -30,12 +31,6 @@ ASSET_DIR = Path(__file__).parent / "assets" / "franka_emika_panda"
 
 PREFIX = "robot/"
 """Prefix of every robot element's name in the scene."""
-
-ROBOT_VISUAL_GROUP = 2
-"""Geom group of robot visuals (rendered; never hit by visibility rays, which see group 0)."""
-
-ROBOT_COLLISION_GROUP = 3
-"""Geom group of robot collision geoms (not rendered, not seen by visibility rays)."""
 
 CONTROL_MODES = ("ee_delta", "ee_abs", "joint_pos")
 """Action spaces (see :mod:`rpg.env.core`)."""
@@ -162,8 +157,10 @@ class Embodiment:
         """Look up the robot's ids in the compiled scene."""
         self.model, self.data = model, data
         self.tcp_site = model.site(PREFIX + "tcp").id
-        self.finger_qpos = np.array([model.jnt_qposadr[model.joint(PREFIX + j).id]
-                                     for j in ("finger_joint1", "finger_joint2")])
+        fingers = [model.joint(PREFIX + j).id for j in ("finger_joint1", "finger_joint2")]
+        self.finger_qpos = model.jnt_qposadr[fingers].copy()
+        self.finger_qvel = model.jnt_dofadr[fingers].copy()
+        self.finger_open = float(model.jnt_range[fingers[0], 1])  # 0.04 m
         self.gripper_act = model.actuator(PREFIX + "actuator8").id
         body_of = model.geom_bodyid
         # per geom: 1 on the left finger, 2 on the right finger, 0 elsewhere
@@ -184,6 +181,12 @@ class Embodiment:
     def command(self, mode: str, action: np.ndarray) -> None:
         """Turn one control step's action into targets (applied to the measured pose)."""
         raise NotImplementedError
+
+    def _open_gripper(self) -> None:
+        """Fingers fully open and at rest, the actuator commanding open (part of :meth:`home`)."""
+        self.data.qpos[self.finger_qpos] = self.finger_open
+        self.data.qvel[self.finger_qvel] = 0.0
+        self.data.ctrl[self.gripper_act] = C.GRIPPER_CTRL_OPEN
 
     def substep(self, k: int, n: int) -> None:
         """Called before part ``k`` of ``n`` of a control step's physics steps (interpolation)."""

@@ -24,10 +24,6 @@ from rpg.env.embodiments.base import (
     prepare_hand,
 )
 
-HOME_HAND_QUAT: tuple[float, float, float, float] = (0.0, 1.0, 0.0, 0.0)
-"""Hand orientation at home, as the Panda's: approach axis (+z of the hand) pointing down,
-fingers closing along world y (a half turn about world x)."""
-
 
 def _tcp_to_hand(tcp: TcpPose) -> tuple[np.ndarray, np.ndarray]:
     """Hand-frame position and quaternion of a TCP pose (the TCP is TCP_OFFSET along hand +z)."""
@@ -62,7 +58,7 @@ class FloatingGripper(Embodiment):
     @staticmethod
     def home_hand_pose() -> tuple[np.ndarray, np.ndarray]:
         """Hand position (m) and quaternion at home: TCP HOME_TCP_HEIGHT above the front of the workspace."""
-        tcp = TcpPose(np.array([C.WORKSPACE_X[0], 0.0, C.TABLE_TOP_Z + C.HOME_TCP_HEIGHT]), np.array(HOME_HAND_QUAT))
+        tcp = TcpPose(np.array([C.WORKSPACE_X[0], 0.0, C.TABLE_TOP_Z + C.HOME_TCP_HEIGHT]), np.array(C.HOME_TCP_QUAT))
         return _tcp_to_hand(tcp)
 
     def _bind(self) -> None:
@@ -72,7 +68,6 @@ class FloatingGripper(Embodiment):
         self.hand_qvel = int(m.jnt_dofadr[jnt])
         self.hand_body = m.body(PREFIX + "hand").id
         self.mocap = int(m.body_mocapid[m.body(PREFIX + "target").id])
-        self.finger_qvel = np.array([m.jnt_dofadr[m.joint(PREFIX + j).id] for j in ("finger_joint1", "finger_joint2")])
         self._from = self._to = None
 
     def home(self) -> None:
@@ -81,11 +76,9 @@ class FloatingGripper(Embodiment):
         d.qpos[self.hand_qpos:self.hand_qpos + 3] = pos
         d.qpos[self.hand_qpos + 3:self.hand_qpos + 7] = quat
         d.qvel[self.hand_qvel:self.hand_qvel + 6] = 0.0
-        d.qpos[self.finger_qpos] = 0.04
-        d.qvel[self.finger_qvel] = 0.0
         d.mocap_pos[self.mocap] = pos
         d.mocap_quat[self.mocap] = quat
-        d.ctrl[self.gripper_act] = C.GRIPPER_CTRL_OPEN
+        self._open_gripper()
         self._from = self._to = None
 
     def robot_qpos(self) -> np.ndarray:

@@ -89,16 +89,13 @@ class Panda(Embodiment):
         self.arm_qpos = np.array([m.jnt_qposadr[m.joint(PREFIX + j).id] for j in ARM_JOINTS])
         self.arm_qvel = np.array([m.jnt_dofadr[m.joint(PREFIX + j).id] for j in ARM_JOINTS])
         self.arm_act = np.array([m.actuator(PREFIX + f"actuator{i}").id for i in range(1, 8)])
-        self.finger_qvel = np.array([m.jnt_dofadr[m.joint(PREFIX + j).id] for j in ("finger_joint1", "finger_joint2")])
 
     def home(self) -> None:
         d = self.data
         d.qpos[self.arm_qpos] = C.HOME_QPOS
-        d.qpos[self.finger_qpos] = 0.04
         d.qvel[self.arm_qvel] = 0.0
-        d.qvel[self.finger_qvel] = 0.0
         d.ctrl[self.arm_act] = C.HOME_QPOS
-        d.ctrl[self.gripper_act] = C.GRIPPER_CTRL_OPEN
+        self._open_gripper()
 
     def robot_qpos(self) -> np.ndarray:
         return np.concatenate([self.data.qpos[self.arm_qpos], self.data.qpos[self.finger_qpos]])
@@ -135,10 +132,6 @@ class Panda(Embodiment):
         if mode == "joint_pos":
             q = np.clip(action[:7], self.joint_low, self.joint_high)
         else:
-            q = self.solve_ik(self.target_pose(mode, action))
+            q = self.solve_ik(cartesian_target(self.tcp_pose(), mode, action))
         self.data.ctrl[self.arm_act] = q
         self.data.ctrl[self.gripper_act] = self.gripper_ctrl(action[-1])
-
-    def target_pose(self, mode: str, action: np.ndarray) -> TcpPose:
-        """The TCP target of a Cartesian action (see :mod:`rpg.env.core` for the conventions)."""
-        return cartesian_target(self.tcp_pose(), mode, action)
