@@ -180,18 +180,9 @@ def test_loading_goes_through_the_validation_checks(tmp_path):
     with pytest.raises(BadInput, match="no task at"):
         BlockTaskEnv(tmp_path / "missing", embodiment="floating_gripper", cameras=())
     # an artifact whose hash matches but whose code the text gate refuses
-    from rpg.artifact import content_hash, load_artifact, task_sources
-    from rpg.yamlio import dump, load
-
-    shutil.copy(STACK / "code.py", code)
-    code.write_text(code.read_text() + "\nimport os\n")
-    doc = load((task / "task.yaml").read_text())
-    doc["content_hash"] = content_hash(doc, code.read_text(), (task / "goal_state_code.py").read_text())
-    (task / "task.yaml").write_text(dump(doc))
-    load_artifact(task)
-    assert task_sources(task)["code.py"].endswith("import os\n")
+    forged = _rehashed_copy(tmp_path, "class ", "import os\n\n\nclass ")
     with pytest.raises(TaskInvalid, match="task code rejected"):
-        BlockTaskEnv(task, embodiment="floating_gripper", cameras=())
+        BlockTaskEnv(forged, embodiment="floating_gripper", cameras=())
 
 
 def test_family_version_targets(tmp_path):
@@ -283,3 +274,52 @@ def test_every_library_entry_is_an_environment(embodiment):
         for row, name in zip(obs["object_poses"], env.object_names, strict=True):
             assert np.allclose(row[:2], sampled[name].pos[:2], atol=3e-3), (entry.name, name)  # the robot hit nothing
         env.step(np.zeros(7, np.float32))
+
+
+def _rehashed_copy(tmp_path: Path, old: str, new: str) -> Path:
+    """A copy of stack_blocks whose code.py has ``old`` replaced by ``new`` and whose recorded
+    content hash matches again (as a forger who recomputes it would leave it)."""
+    from rpg.artifact import content_hash
+    from rpg.yamlio import dump, load
+
+    task = tmp_path / "forged"
+    shutil.copytree(STACK, task)
+    code = task / "code.py"
+    text = code.read_text()
+    assert old in text
+    code.write_text(text.replace(old, new))
+    doc = load((task / "task.yaml").read_text())
+    doc["content_hash"] = content_hash(doc, code.read_text(), (task / "goal_state_code.py").read_text())
+    (task / "task.yaml").write_text(dump(doc))
+    return task
+
+
+@pytest.mark.parametrize("attack", [
+    "self.scene.robot.home = self.assets",      # patch the robot's method
+    "self.scene.robot.command = None",          # or its controller
+    "BlockTask.evaluate = self.assets",         # or success itself
+])
+def test_task_code_in_an_environment_cannot_patch_the_robot_or_the_interface(tmp_path, attack):
+    from rpg.validate.restricted import RestrictedAccess
+
+    task = _rehashed_copy(tmp_path, "    def initial_state(self, rng):\n",
+                          f"    def initial_state(self, rng):\n        {attack}\n")
+    env = BlockTaskEnv(task, embodiment="floating_gripper", cameras=())
+    with pytest.raises(RestrictedAccess):
+        env.reset(seed=0)
+    from rpg.domain.task import BlockTask
+
+    assert BlockTask.evaluate.__module__ == "rpg.domain.task" and callable(env.robot.command)
+
+
+def test_a_video_interrupted_by_an_error_leaves_no_file(tmp_path):
+    from rpg.env.video import VideoWriter
+
+    path = tmp_path / "v.mp4"
+    with pytest.raises(RuntimeError), VideoWriter(path, 20) as writer:
+        writer.write(np.zeros((32, 32, 3), np.uint8))
+        raise RuntimeError("policy crashed")
+    assert list(tmp_path.iterdir()) == []
+    with pytest.raises(ValueError, match="even"), VideoWriter(path, 20) as writer:
+        writer.write(np.zeros((31, 32, 3), np.uint8))
+    assert list(tmp_path.iterdir()) == []
