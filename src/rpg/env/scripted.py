@@ -33,8 +33,11 @@ YAW_TOL = 0.04
 
 @dataclass(frozen=True)
 class Waypoint:
-    """A TCP target: position (m, world), yaw about world z (rad), gripper (-1 open, +1 closed),
-    tolerance (m) and the most control steps to spend on it."""
+    """A TCP target: position (m, world), yaw about world z (rad) of a top-down TCP, gripper
+    (-1 open, +1 closed), tolerance (m) and the most control steps to spend on it.
+
+    ``quat`` (w, x, y, z), when given, is the TCP orientation instead of top-down at ``yaw``.
+    """
 
     pos: tuple[float, float, float]
     yaw: float
@@ -42,6 +45,11 @@ class Waypoint:
     tol: float = REACH_TOL
     max_steps: int = 60
     min_steps: int = 0
+    quat: tuple[float, float, float, float] | None = None
+
+    def orientation(self) -> np.ndarray:
+        """The target TCP quaternion (4,)."""
+        return np.asarray(self.quat, float) if self.quat is not None else top_down_quat(self.yaw)
 
 
 def cube_yaw(quat) -> float:
@@ -60,9 +68,10 @@ def top_down_quat(yaw: float) -> np.ndarray:
     return q
 
 
-def rotation_error(tcp: TcpPose, yaw: float) -> np.ndarray:
-    """Rotation vector (3,) rad, world frame, from the TCP's orientation to top-down at ``yaw``."""
-    target = top_down_quat(yaw)
+def rotation_error(tcp: TcpPose, target) -> np.ndarray:
+    """Rotation vector (3,) rad, world frame, from the TCP's orientation to ``target``: a
+    quaternion (4,), or a yaw (rad) of the top-down orientation."""
+    target = top_down_quat(target) if np.ndim(target) == 0 else np.asarray(target, float)
     inv = np.zeros(4)
     mujoco.mju_negQuat(inv, tcp.quat)
     err = np.zeros(4)
@@ -77,7 +86,7 @@ def rotation_error(tcp: TcpPose, yaw: float) -> np.ndarray:
 def delta_action(tcp: TcpPose, wp: Waypoint) -> np.ndarray:
     """The ``ee_delta`` action (7,) float32 that steps the TCP toward ``wp``."""
     dpos = (np.asarray(wp.pos) - tcp.pos) / C.EE_DELTA_POS_LIMIT
-    drot = rotation_error(tcp, wp.yaw) / C.EE_DELTA_ROT_LIMIT
+    drot = rotation_error(tcp, wp.orientation()) / C.EE_DELTA_ROT_LIMIT
     return np.clip(np.concatenate([dpos, drot, [wp.gripper]]), -1.0, 1.0).astype(np.float32)
 
 
@@ -99,17 +108,28 @@ def pick_place_waypoints(grasp: np.ndarray, grasp_yaw: float, place: np.ndarray,
     ]
 
 
-def follow(env, waypoints: list[Waypoint]) -> Iterator[tuple]:
-    """Step ``env`` (a :class:`rpg.env.BlockTaskEnv` in ``ee_delta`` mode) through the
-    waypoints; yields each step's ``(obs, reward, terminated, truncated, info)``."""
-    robot = env.unwrapped.robot
+def reached(tcp: TcpPose, wp: Waypoint) -> bool:
+    """Whether the TCP is within the waypoint's position and orientation tolerances."""
+    return (np.linalg.norm(tcp.pos - np.asarray(wp.pos)) < wp.tol
+            and np.linalg.norm(rotation_error(tcp, wp.orientation())) < YAW_TOL)
+
+
+def waypoint_actions(robot, waypoints: list[Waypoint]) -> Iterator[np.ndarray]:
+    """``ee_delta`` actions (7,) that take ``robot``'s TCP through the waypoints, one per control
+    step; the caller steps the environment between them (the TCP is measured each time)."""
     for wp in waypoints:
         for k in range(wp.max_steps):
             tcp = robot.tcp_pose()
-            if (k >= wp.min_steps and np.linalg.norm(tcp.pos - np.asarray(wp.pos)) < wp.tol
-                    and np.linalg.norm(rotation_error(tcp, wp.yaw)) < YAW_TOL):
+            if k >= wp.min_steps and reached(tcp, wp):
                 break
-            out = env.step(delta_action(tcp, wp))
-            yield out
-            if out[2] or out[3]:
-                return
+            yield delta_action(tcp, wp)
+
+
+def follow(env, waypoints: list[Waypoint]) -> Iterator[tuple]:
+    """Step ``env`` (a :class:`rpg.env.BlockTaskEnv` in ``ee_delta`` mode) through the
+    waypoints; yields each step's ``(obs, reward, terminated, truncated, info)``."""
+    for action in waypoint_actions(env.unwrapped.robot, waypoints):
+        out = env.step(action)
+        yield out
+        if out[2] or out[3]:
+            return

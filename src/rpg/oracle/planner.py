@@ -1,0 +1,372 @@
+"""The oracle: a task-and-motion planner for the block domain that acts through ``env.step``.
+
+:class:`Oracle` is a policy (``reset(obs)``, ``act(obs)``) with privileged access to the
+environment's state.  Each time it needs to decide, it reads where the cubes are, picks the
+next action of the plan, and turns it into waypoints that the scripted controller
+(:mod:`rpg.env.scripted`) follows with ``ee_delta`` actions:
+
+1. the goal: :func:`rpg.oracle.goal.plan_goal` (targets, bottom-up / temporal order);
+2. for the first cube in order that is not at its target:
+   - a cube lying on it is moved to a free spot first (unstacking an initial stack);
+   - a cube standing where it must go is moved to a free spot;
+   - a semantic cube whose goal face is not up is flipped (a regrasp on the table: grasp
+     across the axis to turn about, lift, turn the hand 90 degrees, put down), once or twice;
+   - then it is picked and placed, with a grasp yaw that respects the cube's symmetry
+     (coloured cubes modulo pi/2; semantic cubes turned to their exact yaw) and a finger
+     axis chosen away from neighbours, opening only as wide as the neighbours allow;
+3. after every move the state is read again (verification): a cube that did not land, or a
+   neighbour that was knocked, is simply not at its target and is handled again, up to
+   :data:`MAX_ATTEMPTS` times per cube.
+
+Its actions are a valid demonstration: nothing but ``env.step`` changes the state.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+
+import numpy as np
+
+from rpg.domain import constants as C
+from rpg.env.embodiments.base import mat_to_quat
+from rpg.env.scripted import GRIPPER_STEPS, Waypoint, top_down_quat, waypoint_actions
+from rpg.oracle.goal import GoalPlan, OracleError, Target, plan_goal, pose_matches, rot, up_axis
+
+MAX_ATTEMPTS = 3
+"""Most pick-and-place attempts per cube before the oracle gives up."""
+
+CLEARANCE = 0.035
+"""Height (m) the held cube's bottom keeps above the tallest cube while travelling."""
+
+TRAVEL_MIN = 0.10
+"""Lowest travel height of the TCP above the table, m."""
+
+PLACE_DROP = 0.003
+"""A cube is released this far (m) above its resting height."""
+
+FLIP_HEIGHT = 0.14
+"""TCP height above the table (m) at which the hand turns a cube over."""
+
+FLIP_DROP = 0.012
+"""A flipped cube is released this far (m) above the table (the sideways hand must clear it)."""
+
+FINGER_REACH = 0.016
+"""How far (m) an open finger reaches beyond the face of the cube it grasps."""
+
+YAW_LIMIT = math.pi / 2 + 0.35
+"""Largest TCP yaw (rad) from the home orientation the oracle asks for (the Panda's wrist)."""
+
+GRIPPER_OPEN = -1.0
+GRIPPER_CLOSED = 1.0
+GRIPPER_NARROW = -0.5
+"""Gripper command that releases a cube while opening only part way (dense layouts)."""
+
+BUFFER_STEP = 0.02
+"""Grid step (m) of candidate spots for cubes moved out of the way."""
+
+
+def _wrap(a: float) -> float:
+    return (a + math.pi) % (2 * math.pi) - math.pi
+
+
+def cube_yaw(quat, up: int | None = None) -> float:
+    """Yaw (rad) of a cube's horizontal face axes, reduced to [-pi/4, pi/4)."""
+    r = rot(quat)
+    k = up_axis(quat)[0] if up is None else up
+    axis = r[:, (k + 1) % 3]
+    yaw = math.atan2(axis[1], axis[0])
+    return (yaw + math.pi / 4) % (math.pi / 2) - math.pi / 4
+
+
+def finger_axis(yaw: float) -> np.ndarray:
+    """World direction (2,) along which the fingers open at a top-down TCP yaw."""
+    return np.array([math.sin(yaw), -math.cos(yaw)])
+
+
+class Oracle:
+    """The block domain's planner as a policy for a :class:`rpg.env.BlockTaskEnv`.
+
+    Args:
+        env: the environment (``ee_delta`` control); the oracle reads its state (privileged).
+
+    Raises:
+        OracleError: the environment is not in ``ee_delta`` mode.
+    """
+
+    name = "oracle"
+
+    def __init__(self, env):
+        self.env = env.unwrapped
+        if self.env.control_mode != "ee_delta":
+            raise OracleError(f"the oracle acts in ee_delta mode, not {self.env.control_mode!r}")
+        self.robot = self.env.robot
+        self.task = self.env.task
+        self.scene = self.task.scene
+        self.sizes = {n: a.extents[0] for n, a in self.scene.assets.items() if a.movable}
+        self._scratch = None
+        self._gen: Iterator[np.ndarray] | None = None
+        self.plan: GoalPlan | None = None
+        self.attempts: dict[str, int] = {}
+        self.failure: str | None = None
+
+    # -- policy interface -----------------------------------------------------------
+    def reset(self, obs=None) -> None:
+        """Plan for the episode the environment has just reset to."""
+        self.plan, self.failure = None, None
+        self.attempts = {}
+        self._gen = self._run()
+
+    def act(self, obs=None) -> np.ndarray:
+        """The next ``ee_delta`` action (7,) float32."""
+        if self._gen is None:
+            self.reset(obs)
+        try:
+            return next(self._gen)
+        except StopIteration:
+            return self._hold()
+
+    def _hold(self) -> np.ndarray:
+        a = np.zeros(7, np.float32)
+        a[6] = GRIPPER_OPEN
+        return a
+
+    # -- reading the state ----------------------------------------------------------
+    def _scratch_task(self):
+        if self._scratch is None:
+            self._scratch = type(self.task)()
+        return self._scratch
+
+    def poses(self):
+        return self.scene.poses()
+
+    def _at_target(self, name: str, poses=None) -> bool:
+        p = (poses or self.poses())[name]
+        return pose_matches(self.plan.targets[name], p.pos, p.quat)
+
+    def _on_top_of(self, name: str, poses) -> list[str]:
+        """Cubes resting on ``name`` now (highest first)."""
+        base = poses[name]
+        size = self.sizes[name]
+        out = [n for n in self.sizes if n != name
+               and math.dist(poses[n].pos[:2], base.pos[:2]) < 0.8 * size
+               and poses[n].pos[2] > base.pos[2] + 0.5 * size]
+        return sorted(out, key=lambda n: -poses[n].pos[2])
+
+    def _blocking(self, target: Target, poses) -> list[str]:
+        """Cubes standing in ``target``'s place (not its supports, not the cube itself)."""
+        out = []
+        for n in sorted(self.sizes):
+            if n == target.name or n in target.supports or (n in self.plan.targets and self._at_target(n, poses)):
+                continue
+            p = poses[n].pos
+            reach = 0.5 * (self.sizes[n] + target.size) + 0.004
+            if (abs(p[2] - target.pos[2]) < 0.75 * target.size
+                    and math.dist(p[:2], target.pos[:2]) < reach * 1.2):
+                out.append(n)
+        return out
+
+    # -- the plan -------------------------------------------------------------------
+    def _run(self) -> Iterator[np.ndarray]:
+        poses = self.poses()
+        try:
+            self.plan = plan_goal(self._scratch_task(), self.env._goal_module, poses, self.sizes)
+        except OracleError as exc:
+            self.failure = str(exc)
+            return
+        for _ in range(MAX_ATTEMPTS * (len(self.sizes) + 2) + 4):
+            poses = self.poses()
+            pending = [n for n in self.plan.order if not self._at_target(n, poses)]
+            if not pending:
+                yield from self._retreat()
+                return
+            name = pending[0]
+            target = self._placement(self.plan.targets[name], poses)
+            above = self._on_top_of(name, poses)
+            if above:
+                yield from self._move_aside(above[0], poses)
+                continue
+            blockers = self._blocking(target, poses)
+            if blockers:
+                yield from self._move_aside(blockers[0], poses)
+                continue
+            self.attempts[name] = self.attempts.get(name, 0) + 1
+            if self.attempts[name] > MAX_ATTEMPTS:
+                self.failure = f"{name} did not reach its target in {MAX_ATTEMPTS} attempts"
+                return
+            if target.exact and not self._face_up_ok(name, target, poses):
+                yield from self._flip(name, target, poses)
+                continue
+            yield from self._pick_place(name, target, poses)
+        self.failure = self.failure or "the plan did not converge"
+
+    def _placement(self, target: Target, poses) -> Target:
+        """``target`` adjusted to where its supports actually stand now (stacks), m."""
+        if not target.supports:
+            return target
+        base = self.plan.targets[target.supports[0]]
+        actual = poses[target.supports[0]]
+        dx = np.subtract(target.pos, base.pos)
+        pos = np.asarray(actual.pos) + dx
+        return Target(target.name, tuple(pos), target.quat, target.size, target.exact, target.supports)
+
+    # -- primitives -----------------------------------------------------------------
+    def _travel_z(self, held: str, *points) -> float:
+        tops = [p.pos[2] + 0.5 * self.sizes[n] for n, p in self.poses().items() if n in self.sizes and n != held]
+        top = max(tops, default=C.TABLE_TOP_Z)
+        z = max(C.TABLE_TOP_Z + TRAVEL_MIN, top + CLEARANCE + self.sizes[held] * 0.5,
+                *(pt[2] + 0.06 for pt in points))
+        return float(z)
+
+    def _free_room(self, center, axis: np.ndarray, ignore: set[str], poses) -> float:
+        """Gap (m) between a cube at ``center`` and its nearest neighbour along ``axis``."""
+        room = 1.0
+        for n, p in poses.items():
+            if n not in self.sizes or n in ignore:
+                continue
+            r = np.subtract(p.pos[:2], center[:2])
+            if abs(p.pos[2] - center[2]) > 0.75 * self.sizes[n]:
+                continue
+            along, lateral = abs(float(r @ axis)), abs(float(r[0] * axis[1] - r[1] * axis[0]))
+            if lateral < self.sizes[n] + 0.012:
+                room = min(room, along - self.sizes[n])
+        return room
+
+    def _grasp_yaws(self, name: str, pick_quat, target: Target, poses) -> tuple[float, float, float]:
+        """(pick yaw, place yaw, gripper command at release), rad."""
+        psi = cube_yaw(pick_quat)
+        if target.exact:
+            r = rot(target.quat) @ rot(pick_quat).T
+            delta = math.atan2(r[1, 0], r[0, 0])
+        ignore = {name, *target.supports}
+        best = None
+        for k in range(-4, 5):
+            g_pick = psi + k * math.pi / 2
+            if abs(g_pick) > YAW_LIMIT:
+                continue
+            if target.exact:
+                places = [_wrap(g_pick + delta)]
+            else:
+                psi_t = cube_yaw(target.quat)
+                places = [psi_t + j * math.pi / 2 for j in range(-4, 5)]
+            for g_place in places:
+                if abs(g_place) > YAW_LIMIT:
+                    continue
+                room_pick = self._free_room(poses[name].pos, finger_axis(g_pick), {name}, poses)
+                room_place = self._free_room(target.pos, finger_axis(g_place), ignore, poses)
+                score = (min(room_place, 0.05) + 0.5 * min(room_pick, 0.05)
+                         - 0.01 * abs(g_place - g_pick) - 0.005 * (abs(g_pick) + abs(g_place)))
+                if best is None or score > best[0]:
+                    best = (score, g_pick, g_place, room_place)
+        if best is None:
+            raise OracleError(f"no grasp of {name} within the wrist's yaw range")
+        _, g_pick, g_place, room = best
+        release = GRIPPER_OPEN if room > 2 * FINGER_REACH else GRIPPER_NARROW
+        return g_pick, g_place, release
+
+    def _pick_place(self, name: str, target: Target, poses) -> Iterator[np.ndarray]:
+        src = np.asarray(poses[name].pos, float)
+        dst = np.asarray(target.pos, float)
+        g_pick, g_place, release = self._grasp_yaws(name, poses[name].quat, target, poses)
+        travel = self._travel_z(name, src, dst)
+        yield from self._pick(src, g_pick, travel)
+        wps = [
+            Waypoint((dst[0], dst[1], travel), g_place, GRIPPER_CLOSED, tol=0.008, max_steps=80),
+            Waypoint((dst[0], dst[1], dst[2] + 0.03), g_place, GRIPPER_CLOSED, tol=0.006),
+            Waypoint((dst[0], dst[1], dst[2] + PLACE_DROP), g_place, GRIPPER_CLOSED, max_steps=40),
+            Waypoint((dst[0], dst[1], dst[2] + PLACE_DROP), g_place, release, tol=1.0,
+                     max_steps=GRIPPER_STEPS, min_steps=GRIPPER_STEPS),
+            Waypoint((dst[0], dst[1], travel), g_place, release, tol=0.01),
+        ]
+        yield from waypoint_actions(self.robot, wps)
+
+    def _pick(self, src: np.ndarray, yaw: float, travel: float, quat=None) -> Iterator[np.ndarray]:
+        wps = [
+            Waypoint((src[0], src[1], travel), yaw, GRIPPER_OPEN, tol=0.008, max_steps=80),
+            Waypoint((src[0], src[1], src[2] + 0.03), yaw, GRIPPER_OPEN, tol=0.006),
+            Waypoint(tuple(src), yaw, GRIPPER_OPEN, max_steps=40),
+            Waypoint(tuple(src), yaw, GRIPPER_CLOSED, tol=1.0, max_steps=GRIPPER_STEPS, min_steps=GRIPPER_STEPS),
+            Waypoint((src[0], src[1], travel), yaw, GRIPPER_CLOSED, tol=0.01),
+        ]
+        yield from waypoint_actions(self.robot, wps)
+
+    def _retreat(self) -> Iterator[np.ndarray]:
+        tcp = self.robot.tcp_pose().pos
+        z = max(tcp[2], C.TABLE_TOP_Z + TRAVEL_MIN)
+        yield from waypoint_actions(self.robot, [
+            Waypoint((tcp[0], tcp[1], tcp[2]), 0.0, GRIPPER_OPEN, tol=1.0, max_steps=4, min_steps=4),
+            Waypoint((tcp[0], tcp[1], z + 0.05), 0.0, GRIPPER_OPEN, tol=0.01, max_steps=30)])
+
+    def _free_spot(self, name: str, poses, keepout: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)):
+        """A free place on the table for ``name`` (m): far from every other cube and every
+        target, nearest to where it is.  ``keepout`` (-x, +x, -y, +y) widens what must stay
+        clear around the spot (the sideways hand of a flip)."""
+        others = [np.asarray(p.pos[:2]) for n, p in poses.items() if n in self.sizes and n != name]
+        others += [np.asarray(t.pos[:2]) for n, t in self.plan.targets.items() if n != name]
+        best = None
+        here = np.asarray(poses[name].pos[:2])
+        margin = 0.06
+        for x in np.arange(C.WORKSPACE_X[0] + 0.02, C.WORKSPACE_X[1] - 0.02 + 1e-9, BUFFER_STEP):
+            for y in np.arange(C.WORKSPACE_Y[0] + 0.02, C.WORKSPACE_Y[1] - 0.02 + 1e-9, BUFFER_STEP):
+                gap = 1.0
+                for o in others:
+                    dx = max(x - keepout[0] - o[0], o[0] - x - keepout[1], 0.0) if any(keepout) else abs(x - o[0])
+                    dy = max(y - keepout[2] - o[1], o[1] - y - keepout[3], 0.0) if any(keepout) else abs(y - o[1])
+                    gap = min(gap, math.hypot(dx, dy) if any(keepout) else math.hypot(x - o[0], y - o[1]))
+                key = (min(gap, 0.12) >= margin, min(gap, 0.12), -math.dist((x, y), here))
+                if best is None or key > best[0]:
+                    best = (key, (float(x), float(y)))
+        return best[1]
+
+    def _move_aside(self, name: str, poses) -> Iterator[np.ndarray]:
+        x, y = self._free_spot(name, poses)
+        z = C.TABLE_TOP_Z + 0.5 * self.sizes[name]
+        q = poses[name].quat
+        aside = Target(name, (x, y, z), tuple(q), self.sizes[name], False)
+        yield from self._pick_place(name, aside, poses)
+
+    # -- flipping -------------------------------------------------------------------
+    def _face_up_ok(self, name: str, target: Target, poses) -> bool:
+        want = up_axis(target.quat)
+        have = up_axis(poses[name].quat)
+        return want[0] == have[0] and np.sign(want[1]) == np.sign(have[1]) and abs(have[1]) > 0.8
+
+    def _flip(self, name: str, target: Target, poses) -> Iterator[np.ndarray]:
+        """Turn ``name`` 90 degrees about a horizontal axis toward ``target``'s up face: grasp
+        across that axis, lift, turn the hand, put the cube down at a free spot, back off."""
+        r_now = rot(poses[name].quat)
+        k, s = up_axis(target.quat)
+        n = r_now[:, k] * np.sign(s)  # world direction of the face that must end up
+        if n[2] < -0.5:  # face down: any side face comes up first, turning n sideways
+            side = r_now[:, (k + 1) % 3]
+            n = side / np.linalg.norm(side)
+        n = np.array([n[0], n[1], 0.0])
+        n /= np.linalg.norm(n)
+        z = np.array([0.0, 0.0, 1.0])
+        a = np.cross(n, z)  # the axis to turn about: fingers open along it
+        g = math.atan2(a[0], -a[1])
+        g = min((g + j * math.pi for j in (-1, 0, 1)), key=abs)
+        q0 = top_down_quat(g)
+        # M maps n -> z (the face comes up) and z -> -x (the hand ends on the robot's side)
+        src_basis = np.column_stack([n, z, np.cross(n, z)])
+        dst_basis = np.column_stack([z, [-1.0, 0.0, 0.0], [0.0, -1.0, 0.0]])
+        m = dst_basis @ src_basis.T
+        q_flip = mat_to_quat(m @ rot(q0))
+        src = np.asarray(poses[name].pos, float)
+        x, y = self._free_spot(name, poses, keepout=(0.17, 0.04, 0.11, 0.11))
+        half = 0.5 * self.sizes[name]
+        high = C.TABLE_TOP_Z + FLIP_HEIGHT
+        low = C.TABLE_TOP_Z + half + FLIP_DROP
+        travel = self._travel_z(name, src)
+        yield from self._pick(src, g, max(travel, high))
+        qf = tuple(q_flip)
+        wps = [
+            Waypoint((x, y, high), g, GRIPPER_CLOSED, tol=0.01, max_steps=80),
+            Waypoint((x, y, high), g, GRIPPER_CLOSED, tol=0.01, max_steps=80, quat=qf),
+            Waypoint((x, y, low), g, GRIPPER_CLOSED, tol=0.005, max_steps=60, quat=qf),
+            Waypoint((x, y, low), g, GRIPPER_OPEN, tol=1.0, max_steps=GRIPPER_STEPS, min_steps=GRIPPER_STEPS, quat=qf),
+            Waypoint((x - 0.10, y, low), g, GRIPPER_OPEN, tol=0.01, max_steps=40, quat=qf),
+            Waypoint((x - 0.10, y, high), g, GRIPPER_OPEN, tol=0.01, max_steps=40, quat=qf),
+            Waypoint((x - 0.05, y, high), 0.0, GRIPPER_OPEN, tol=0.02, max_steps=60),
+        ]
+        yield from waypoint_actions(self.robot, wps)
