@@ -492,7 +492,7 @@ def render_cmd(
 def play_cmd(
     task: Annotated[str, typer.Argument(help="A task directory, family directory or FAMILY@vN.")],
     embodiment: Annotated[str, typer.Option("--embodiment", help="panda or floating_gripper.")] = "panda",
-    policy: Annotated[str, typer.Option("--policy", help="random or noop.")] = "random",
+    policy: Annotated[str, typer.Option("--policy", help="oracle, random or noop.")] = "random",
     seed: Annotated[int, typer.Option("--seed", min=0, help="Episode seed (rho_0's sample).")] = 0,
     video: Annotated[Path | None, typer.Option("--video", help="Write an MP4 (agentview | wrist).")] = None,
     steps: Annotated[int | None, typer.Option("--steps", min=1, help="Episode length (default: the task's limit).")] = None,
@@ -513,6 +513,53 @@ def play_cmd(
                   f"after {summary.steps} steps", highlight=False)
         if summary.video:
             out.print(f"video: {esc(summary.video)} ({summary.frames} frames)", highlight=False)
+
+
+@app.command("demos")
+def demos_cmd(
+    target: Annotated[str | None, typer.Argument(help="A task, family, FAMILY@vN or library manifest.")] = None,
+    out_dir: Annotated[Path | None, typer.Option("--out", "-o", help="Dataset directory (created; resumed if it exists).")] = None,
+    episodes: Annotated[int, typer.Option("--episodes", "-n", min=1, help="Successful episodes per task.")] = 10,
+    embodiment: Annotated[str, typer.Option("--embodiment", help="panda or floating_gripper.")] = "floating_gripper",
+    fmt: Annotated[str, typer.Option("--format", help="lerobot (v2.1).")] = "lerobot",
+    jobs: Annotated[int, typer.Option("--jobs", "-j", min=1, help="Episodes run in parallel processes.")] = 1,
+    cameras: Annotated[str, typer.Option("--cameras", help="Comma-separated cameras recorded as videos ('' for none).")] = "agentview,wrist",
+    image_size: Annotated[int, typer.Option("--image-size", min=16, max=2048, help="Square video size, pixels.")] = 256,
+    instruction: Annotated[str, typer.Option("--instruction", help="canonical or paraphrase:K.")] = "canonical",
+    replay: Annotated[Path | None, typer.Option("--replay", help="Replay a dataset and check every episode.")] = None,
+) -> None:
+    """Record oracle demonstrations (successful episodes only) as a dataset, or replay one."""
+    from rpg.demos import collect_demos, replay_dataset
+
+    if replay is not None:
+        with _reported_errors():
+            results = replay_dataset(replay, progress=lambda r: out.print(
+                f"episode {r.episode_index}: {'ok' if r.ok else 'MISMATCH'} (success {r.success}, "
+                f"pose error {r.max_pose_error:.2e})", highlight=False))
+        bad = [r for r in results if not r.ok]
+        out.print(f"replayed {len(results)} episodes, {len(bad)} mismatched", highlight=False)
+        raise typer.Exit(EXIT_INVALID if bad or not results else EXIT_OK)
+    if target is None or out_dir is None:
+        _fail("give a TARGET and --out DIR (or --replay DATASET)")
+    cams = tuple(c for c in cameras.split(",") if c)
+    from rich.progress import Progress
+
+    with _reported_errors(), Progress(console=err, transient=True) as bar:
+        tick = bar.add_task("episodes", total=None)
+
+        def progress(ep, index):
+            bar.advance(tick)
+            mark = f"kept as {index}" if index is not None else f"failed ({ep.failure or 'goal not reached'})"
+            err.print(f"{esc(ep.task_name)} seed {ep.seed}: {ep.length} steps, {mark}", highlight=False)
+
+        summary = collect_demos(target, out_dir, episodes=episodes, embodiment=embodiment, fmt=fmt, jobs=jobs,
+                                cameras=cams, image_size=(image_size, image_size), instruction=instruction,
+                                progress=progress)
+    short = {t: v for t, v in summary["per_task"].items() if v["success"] < episodes}
+    out.print(f"{out_dir}: {summary['episodes']} episodes ({summary['attempts']} run now)", highlight=False)
+    for t, v in short.items():
+        out.print(f"[yellow]{esc(t)}: only {v['success']} successful of {v['attempts']} attempts[/]", highlight=False)
+    raise typer.Exit(EXIT_INVALID if short else EXIT_OK)
 
 
 @app.command("diversity")

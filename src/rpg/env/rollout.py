@@ -12,9 +12,9 @@ import numpy as np
 from rpg.env.core import BlockTaskEnv
 from rpg.env.embodiments.base import EmbodimentError
 
-BUILTIN_POLICIES = ("random", "noop")
-"""Policies ``rpg play`` knows by name: uniform random actions (seeded with the episode's
-seed), and the zero ``ee_delta`` action with the gripper open."""
+BUILTIN_POLICIES = ("oracle", "random", "noop")
+"""Policies ``rpg play`` knows by name: the planner of :mod:`rpg.oracle`, uniform random
+actions (seeded with the episode's seed), and the zero ``ee_delta`` action with the gripper open."""
 
 
 @dataclass(frozen=True)
@@ -37,6 +37,11 @@ class EpisodeSummary:
 
 
 def _policy(name: str, env: BlockTaskEnv, seed: int):
+    if name == "oracle":
+        from rpg.oracle import Oracle
+
+        oracle = Oracle(env)
+        return oracle.act  # plans at its first call, after reset
     if name == "random":
         env.action_space.seed(seed)
         return lambda obs: env.action_space.sample()

@@ -37,6 +37,17 @@ SUPPORT_XY_TOL = 0.75
 """A goal cube rests on another when their centres are closer than this many cube edges in xy
 and it is higher by at least half an edge."""
 
+ROBUSTNESS_SETTLE_STEPS = 500
+"""Physics steps the planned goal configuration settles before G is checked again (a goal that
+holds only before contacts settle is fragile: a robot cannot reproduce it)."""
+
+DENSE_GAP = 0.015
+"""A goal layout is dense around a cube when a neighbour's face is closer than this (m): the
+fingers cannot go between them."""
+
+DENSE_YAW_TOL = 0.1
+"""Yaw error (rad, modulo pi/2) a cube in a dense layout may have."""
+
 WORKSPACE_MARGIN = 0.01
 """How far outside the workspace (m) a translated goal layout may reach."""
 
@@ -47,7 +58,8 @@ class Target:
 
     ``exact``: the cube's full orientation matters (a semantic goal reads its faces);
     otherwise any orientation that is a symmetry of the cube will do (upright, yaw modulo
-    pi/2).  ``supports``: the cubes its goal rests on.
+    pi/2; in a ``dense`` layout, where a neighbour's face is within DENSE_GAP, the yaw too).
+    ``supports``: the cubes its goal rests on.
     """
 
     name: str
@@ -56,6 +68,7 @@ class Target:
     size: float
     exact: bool
     supports: tuple[str, ...] = ()
+    dense: bool = False
 
 
 @dataclass
@@ -94,7 +107,17 @@ def pose_matches(target: Target, pos, quat, xy_tol: float = 0.012, z_tol: float 
         r = rot(target.quat).T @ rot(quat)
         return math.acos(max(-1.0, min(1.0, (np.trace(r) - 1) / 2))) < angle_tol
     _, cos = up_axis(quat)
+    if target.dense and abs(_yaw_mod(quat) - _yaw_mod(target.quat) + math.pi / 4) % (math.pi / 2) - math.pi / 4 > DENSE_YAW_TOL:
+        return False
     return abs(cos) > math.cos(angle_tol)
+
+
+def _yaw_mod(quat) -> float:
+    """Yaw (rad) of a cube's horizontal face axes modulo pi/2."""
+    r = rot(quat)
+    k = up_axis(quat)[0]
+    axis = r[:, (k + 1) % 3]
+    return math.atan2(axis[1], axis[0]) % (math.pi / 2)
 
 
 def semantic_objects(goal) -> set[str]:
@@ -180,6 +203,9 @@ def plan_goal(scratch, goal_module, current: dict[str, Pose], movable: dict[str,
     patches = [n for n in goal if n not in movable]
     patch_shift = {p: np.subtract(current[p].pos, goal[p].pos)[:2] for p in patches}
     supports = _supports({n: goal[n] for n in movable}, movable)
+    dense = {n for n in movable for m in movable if m != n
+             and abs(goal[n].pos[2] - goal[m].pos[2]) < 0.5 * movable[n]
+             and math.dist(goal[n].pos[:2], goal[m].pos[:2]) < 0.5 * (movable[n] + movable[m]) + DENSE_GAP}
 
     def shift_of(name: str, default: np.ndarray) -> np.ndarray:
         """The shift of the patch under ``name``'s goal (or under its bottom support)."""
@@ -208,10 +234,10 @@ def plan_goal(scratch, goal_module, current: dict[str, Pose], movable: dict[str,
             if not _inside_workspace(pos):
                 ok = False
                 break
-            t = Target(n, pos, tuple(goal[n].quat), movable[n], n in exact, supports[n])
+            t = Target(n, pos, tuple(goal[n].quat), movable[n], n in exact, supports[n], n in dense)
             if pose_matches(t, current[n].pos, current[n].quat, xy_tol=0.004):
                 pos, quat = tuple(current[n].pos), tuple(current[n].quat)
-                t = Target(n, pos, quat, movable[n], n in exact, supports[n])
+                t = Target(n, pos, quat, movable[n], n in exact, supports[n], n in dense)
             targets[n] = t
             config[n] = Pose(t.pos, t.quat)
         if not ok:
@@ -230,4 +256,13 @@ def plan_goal(scratch, goal_module, current: dict[str, Pose], movable: dict[str,
                           "(goal patches moved the layout out of the workspace?)")
     _, targets, offset, moves = best
     order = placement_order(targets, temporal_events(scratch.goal_predicate))
-    return GoalPlan(targets, order, (float(offset[0]), float(offset[1])), moves)
+    plan = GoalPlan(targets, order, (float(offset[0]), float(offset[1])), moves)
+    config = {n: Pose(t.pos, t.quat) for n, t in targets.items()} | {p: current[p] for p in patches}
+    scratch.set_state(config)
+    scratch.step(ROBUSTNESS_SETTLE_STEPS)
+    result = scratch.evaluate()
+    if not result.satisfied:
+        why = "; ".join(r.reason for r in result.leaves() if not r.satisfied)
+        plan.notes.append(f"G fails once the goal configuration has settled for "
+                          f"{ROBUSTNESS_SETTLE_STEPS * C.TIMESTEP:.1f} s ({why}): a fragile goal")
+    return plan

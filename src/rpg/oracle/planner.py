@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -51,8 +52,28 @@ FLIP_HEIGHT = 0.14
 FLIP_DROP = 0.012
 """A flipped cube is released this far (m) above the table (the sideways hand must clear it)."""
 
-FINGER_REACH = 0.016
-"""How far (m) an open finger reaches beyond the face of the cube it grasps."""
+FINGER_REACH = 0.03
+"""How far (m) a finger reaches beyond the face of a 4 cm cube it holds, with the small opening
+that releases it (the finger's collision box, measured on the Menagerie hand)."""
+
+FINGER_REACH_OPEN = 0.048
+"""How far (m) a fully open finger reaches beyond the face of a 4 cm cube."""
+
+FINGER_HALF_WIDTH = 0.0105
+"""Half the width (m) of a finger across its opening axis (collision box)."""
+
+PUSHER_HALF_THICKNESS = 0.0105
+"""Half the thickness (m) of the closed fingers along a push made across the finger axis."""
+
+PUSHER_ROOM = 0.035
+"""Room (m) the closed fingers need beside a cube to push it."""
+
+LATERAL_GAP = 0.004
+"""Gap (m) kept to a neighbour across the finger axis when placing (the placement's
+precision is ~2 mm); dense layouts' predicates tolerate it (GRID_TOL)."""
+
+PUSH_OVERSHOOT = 0.0
+"""How far (m) past the goal face the pusher's face is driven."""
 
 YAW_LIMIT = math.pi / 2 + 0.35
 """Largest TCP yaw (rad) from the home orientation the oracle asks for (the Panda's wrist)."""
@@ -64,6 +85,19 @@ GRIPPER_NARROW = -0.5
 
 BUFFER_STEP = 0.02
 """Grid step (m) of candidate spots for cubes moved out of the way."""
+
+
+@dataclass(frozen=True)
+class Grasp:
+    """How a cube is moved: TCP yaws at pick and place (rad), the gripper command that releases
+    it, and for dense layouts the shift (m) beside the goal along ``out`` (2,) it is released at
+    before being pushed into place."""
+
+    pick_yaw: float
+    place_yaw: float
+    release: float
+    shift: float = 0.0
+    out: np.ndarray = field(default_factory=lambda: np.zeros(2))
 
 
 def _wrap(a: float) -> float:
@@ -218,8 +252,9 @@ class Oracle:
                 *(pt[2] + 0.06 for pt in points))
         return float(z)
 
-    def _free_room(self, center, axis: np.ndarray, ignore: set[str], poses) -> float:
-        """Gap (m) between a cube at ``center`` and its nearest neighbour along ``axis``."""
+    def _room(self, center, direction: np.ndarray, ignore: set[str], poses) -> float:
+        """Gap (m) between a cube at ``center`` and its nearest neighbour on the ``direction``
+        side (2,) in the finger's path (neighbours at the same height)."""
         room = 1.0
         for n, p in poses.items():
             if n not in self.sizes or n in ignore:
@@ -227,14 +262,17 @@ class Oracle:
             r = np.subtract(p.pos[:2], center[:2])
             if abs(p.pos[2] - center[2]) > 0.75 * self.sizes[n]:
                 continue
-            along, lateral = abs(float(r @ axis)), abs(float(r[0] * axis[1] - r[1] * axis[0]))
-            if lateral < self.sizes[n] + 0.012:
+            along, lateral = float(r @ direction), abs(float(r[0] * direction[1] - r[1] * direction[0]))
+            if along > 0 and lateral < 0.5 * self.sizes[n] + FINGER_HALF_WIDTH:
                 room = min(room, along - self.sizes[n])
         return room
 
-    def _grasp_yaws(self, name: str, pick_quat, target: Target, poses) -> tuple[float, float, float]:
-        """(pick yaw, place yaw, gripper command at release), rad."""
+    def _grasp(self, name: str, pick_quat, target: Target, poses) -> Grasp:
+        """The grasp that moves ``name`` to ``target``: yaws that respect the cube's symmetry,
+        a finger axis away from neighbours, and a place-then-push when the fingers have no room
+        on either axis."""
         psi = cube_yaw(pick_quat)
+        delta = 0.0
         if target.exact:
             r = rot(target.quat) @ rot(pick_quat).T
             delta = math.atan2(r[1, 0], r[0, 0])
@@ -249,36 +287,72 @@ class Oracle:
             else:
                 psi_t = cube_yaw(target.quat)
                 places = [psi_t + j * math.pi / 2 for j in range(-4, 5)]
+            f_pick = finger_axis(g_pick)
+            room_pick = min(self._room(poses[name].pos, f_pick, {name}, poses),
+                            self._room(poses[name].pos, -f_pick, {name}, poses))
             for g_place in places:
                 if abs(g_place) > YAW_LIMIT:
                     continue
-                room_pick = self._free_room(poses[name].pos, finger_axis(g_pick), {name}, poses)
-                room_place = self._free_room(target.pos, finger_axis(g_place), ignore, poses)
-                score = (min(room_place, 0.05) + 0.5 * min(room_pick, 0.05)
+                f = finger_axis(g_place)
+                plus, minus = self._room(target.pos, f, ignore, poses), self._room(target.pos, -f, ignore, poses)
+                low, high, out = (minus, plus, f) if minus < plus else (plus, minus, -f)
+                shift = max(0.0, FINGER_REACH - low)
+                if shift > 0 and high < FINGER_REACH + shift + PUSHER_ROOM:
+                    continue  # no room to place beside and push
+                score = (-10.0 * shift + 0.5 * min(room_pick, 0.05) + min(low, 0.05)
                          - 0.01 * abs(g_place - g_pick) - 0.005 * (abs(g_pick) + abs(g_place)))
                 if best is None or score > best[0]:
-                    best = (score, g_pick, g_place, room_place)
+                    release = GRIPPER_OPEN if low - shift > FINGER_REACH_OPEN else GRIPPER_NARROW
+                    best = (score, Grasp(g_pick, g_place, release, shift, out))
         if best is None:
             raise OracleError(f"no grasp of {name} within the wrist's yaw range")
-        _, g_pick, g_place, room = best
-        release = GRIPPER_OPEN if room > 2 * FINGER_REACH else GRIPPER_NARROW
-        return g_pick, g_place, release
+        return best[1]
 
     def _pick_place(self, name: str, target: Target, poses) -> Iterator[np.ndarray]:
         src = np.asarray(poses[name].pos, float)
         dst = np.asarray(target.pos, float)
-        g_pick, g_place, release = self._grasp_yaws(name, poses[name].quat, target, poses)
+        grasp = self._grasp(name, poses[name].quat, target, poses)
+        g_place, release = grasp.place_yaw, grasp.release
+        spot = dst.copy()
+        spot[:2] += grasp.shift * grasp.out
+        side = np.array([-grasp.out[1], grasp.out[0]]) if grasp.shift > 0 else finger_axis(g_place + math.pi / 2)
+        ignore = {name, *target.supports}
+        for d in (side, -side):  # keep a gap to neighbours across the finger axis
+            room = self._room(dst, d, ignore, poses)
+            if room < LATERAL_GAP and self._room(dst, -d, ignore, poses) > 2 * LATERAL_GAP:
+                spot[:2] -= d * (LATERAL_GAP - room)
         travel = self._travel_z(name, src, dst)
-        yield from self._pick(src, g_pick, travel)
+        yield from self._pick(src, grasp.pick_yaw, travel)
         wps = [
-            Waypoint((dst[0], dst[1], travel), g_place, GRIPPER_CLOSED, tol=0.008, max_steps=80),
-            Waypoint((dst[0], dst[1], dst[2] + 0.03), g_place, GRIPPER_CLOSED, tol=0.006),
-            Waypoint((dst[0], dst[1], dst[2] + PLACE_DROP), g_place, GRIPPER_CLOSED, max_steps=40),
-            Waypoint((dst[0], dst[1], dst[2] + PLACE_DROP), g_place, release, tol=1.0,
+            Waypoint((spot[0], spot[1], travel), g_place, GRIPPER_CLOSED, tol=0.008, max_steps=80),
+            Waypoint((spot[0], spot[1], spot[2] + 0.03), g_place, GRIPPER_CLOSED, tol=0.006),
+            Waypoint((spot[0], spot[1], spot[2] + PLACE_DROP), g_place, GRIPPER_CLOSED, max_steps=40),
+            Waypoint((spot[0], spot[1], spot[2] + PLACE_DROP), g_place, release, tol=1.0,
                      max_steps=GRIPPER_STEPS, min_steps=GRIPPER_STEPS),
-            Waypoint((dst[0], dst[1], travel), g_place, release, tol=0.01),
+            Waypoint((spot[0], spot[1], travel), g_place, release, tol=0.01),
         ]
         yield from waypoint_actions(self.robot, wps)
+        if grasp.shift > 0:
+            yield from self._push(name, dst, grasp, travel)
+
+    def _push(self, name: str, dst: np.ndarray, grasp: Grasp, travel: float) -> Iterator[np.ndarray]:
+        """Slide ``name`` (released ``grasp.shift`` beside ``dst``) into place with the closed
+        fingers, pushing across its outer face."""
+        half = 0.5 * self.sizes[name]
+        yaw = _wrap(grasp.place_yaw + math.pi / 2)  # fingers across the push direction
+        if abs(yaw) > YAW_LIMIT:
+            yaw = _wrap(yaw + math.pi)
+        standoff = half + PUSHER_HALF_THICKNESS
+        start = dst[:2] + grasp.out * (grasp.shift + standoff + 0.008)
+        end = dst[:2] + grasp.out * (standoff + PUSH_OVERSHOOT)
+        z = dst[2] + 0.002
+        yield from waypoint_actions(self.robot, [
+            Waypoint((start[0], start[1], travel), yaw, GRIPPER_CLOSED, tol=0.008, max_steps=60),
+            Waypoint((start[0], start[1], z), yaw, GRIPPER_CLOSED, tol=0.004, max_steps=40),
+            Waypoint((end[0], end[1], z), yaw, GRIPPER_CLOSED, tol=0.002, max_steps=40),
+            Waypoint((start[0], start[1], z + 0.002), yaw, GRIPPER_CLOSED, tol=0.006, max_steps=20),
+            Waypoint((start[0], start[1], travel), yaw, GRIPPER_OPEN, tol=0.01, max_steps=40),
+        ])
 
     def _pick(self, src: np.ndarray, yaw: float, travel: float, quat=None) -> Iterator[np.ndarray]:
         wps = [

@@ -1,0 +1,146 @@
+"""One oracle episode, recorded: what a demonstration dataset stores about it.
+
+:func:`record_episode` runs the oracle (:class:`rpg.oracle.Oracle`) on a task from a seed,
+through ``env.step`` only, and returns the per-step observation state and action, the
+camera videos (written to ``video_dir`` while the episode runs, so frames never pile up in
+memory), and what a replay needs to check it: the task's content hash, the seed, the
+embodiment, the instruction and the final object poses.
+"""
+
+from __future__ import annotations
+
+import contextlib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from rpg.domain import constants as C
+from rpg.env.core import BlockTaskEnv
+from rpg.env.video import VideoWriter
+from rpg.oracle import Oracle
+
+STATE_NAMES = ["eef_x", "eef_y", "eef_z", "eef_axis_angle_x", "eef_axis_angle_y", "eef_axis_angle_z",
+               "finger_left", "finger_right"]
+"""Names of the 8 ``observation.state`` values (LIBERO's layout; m and rad)."""
+
+ACTION_NAMES = ["dx", "dy", "dz", "droll", "dpitch", "dyaw", "gripper"]
+"""Names of the 7 ``ee_delta`` action values (normalised to [-1, 1]; see rpg.env)."""
+
+
+@dataclass
+class Episode:
+    """A recorded episode.  ``states`` (T, 8) float32 and ``actions`` (T, 7) float32: the
+    observation before each step and the action taken; ``videos``: camera -> MP4 path
+    (T frames each); ``image_stats``: camera -> per-channel min/max/mean/std in [0, 1]."""
+
+    task: str
+    task_hash: str
+    task_name: str
+    seed: int
+    embodiment: str
+    instruction: str
+    paraphrase: int | None
+    success: bool
+    states: np.ndarray
+    actions: np.ndarray
+    final_poses: dict[str, list[float]]
+    videos: dict[str, str] = field(default_factory=dict)
+    image_stats: dict[str, dict] = field(default_factory=dict)
+    failure: str | None = None
+
+    @property
+    def length(self) -> int:
+        return int(len(self.actions))
+
+
+class _ChannelStats:
+    """Running per-channel statistics of uint8 images, in [0, 1]."""
+
+    def __init__(self) -> None:
+        self.n = 0
+        self.sum = np.zeros(3)
+        self.sumsq = np.zeros(3)
+        self.min = np.full(3, 255)
+        self.max = np.zeros(3, int)
+
+    def add(self, img: np.ndarray) -> None:
+        px = img.reshape(-1, 3)
+        f = px.astype(np.float64)
+        self.n += len(px)
+        self.sum += f.sum(0)
+        self.sumsq += (f * f).sum(0)
+        self.min = np.minimum(self.min, px.min(0))
+        self.max = np.maximum(self.max, px.max(0))
+
+    def result(self, frames: int) -> dict:
+        mean = self.sum / max(self.n, 1)
+        std = np.sqrt(np.maximum(self.sumsq / max(self.n, 1) - mean ** 2, 0.0))
+
+        def chw(v):  # LeRobot keeps image stats as (3, 1, 1)
+            return [[[float(x)]] for x in v]
+
+        return {"min": chw(self.min / 255.0), "max": chw(self.max / 255.0), "mean": chw(mean / 255.0),
+                "std": chw(std / 255.0), "count": [frames]}
+
+
+def _paraphrase_index(instruction: str) -> int | None:
+    head, _, k = instruction.partition(":")
+    return int(k) if head == "paraphrase" and k.isdigit() else None
+
+
+def record_episode(task: str, seed: int, embodiment: str = "floating_gripper",
+                   cameras: tuple[str, ...] = ("agentview", "wrist"), image_size: tuple[int, int] = (256, 256),
+                   instruction: str = "canonical", video_dir: str | Path | None = None,
+                   max_steps: int | None = None) -> Episode:
+    """Run the oracle for one episode and record it.
+
+    Args:
+        task: task directory, family or ``FAMILY@vN`` (loaded through the environment's checks).
+        seed: the episode's seed (rho_0's sample).
+        embodiment: ``"panda"`` or ``"floating_gripper"``.
+        cameras: cameras to record as videos (``()`` for none).
+        image_size: (height, width) of the videos, pixels.
+        instruction: ``"canonical"`` or ``"paraphrase:K"``.
+        video_dir: where the videos go (``<camera>.mp4``); required when ``cameras``.
+        max_steps: episode step limit (default: the environment's rule).
+
+    Returns:
+        The :class:`Episode` (``success`` false when the oracle failed; its videos are then
+        still written, the caller discards them).
+    """
+    env = BlockTaskEnv(task, embodiment=embodiment, control_mode="ee_delta", cameras=tuple(cameras),
+                       image_size=image_size, instruction=instruction, max_episode_steps=max_steps)
+    try:
+        oracle = Oracle(env)
+        obs, info = env.reset(seed=seed)
+        oracle.reset(obs)
+        stats = {c: _ChannelStats() for c in cameras}
+        states, actions = [], []
+        with contextlib.ExitStack() as stack:  # videos are published only if the episode ends cleanly
+            writers = {}
+            if cameras:
+                video_dir = Path(video_dir)
+                video_dir.mkdir(parents=True, exist_ok=True)
+                writers = {c: stack.enter_context(VideoWriter(video_dir / f"{c}.mp4", C.CONTROL_HZ)) for c in cameras}
+            done = False
+            while not done:
+                for c in cameras:
+                    writers[c].write(obs[f"{c}_image"])
+                    stats[c].add(obs[f"{c}_image"])
+                action = oracle.act(obs)
+                states.append(obs["state"].astype(np.float32))
+                actions.append(np.asarray(action, np.float32))
+                obs, _, terminated, truncated, info = env.step(action)
+                done = terminated or truncated
+        poses = {n: [*map(float, p.pos), *map(float, p.quat)] for n, p in env.scene.poses().items()}
+        return Episode(task=str(task), task_hash=env.source.content_hash, task_name=env.source.name, seed=int(seed),
+                       embodiment=embodiment, instruction=env.instruction,
+                       paraphrase=_paraphrase_index(instruction), success=bool(info["success"]),
+                       states=np.array(states, np.float32).reshape(-1, 8),
+                       actions=np.array(actions, np.float32).reshape(-1, 7), final_poses=poses,
+                       videos={c: str(writers[c].path) for c in cameras},
+                       image_stats={c: stats[c].result(len(actions)) for c in cameras},
+                       failure=oracle.failure)
+    finally:
+        env.close()
