@@ -31,8 +31,8 @@ import pyarrow.parquet as pq
 
 from rpg.demos.record import ACTION_NAMES, STATE_NAMES, Episode
 from rpg.domain import constants as C
-from rpg.errors import BadInput
 from rpg.env.video import VIDEO_CODEC
+from rpg.errors import BadInput
 
 CODEBASE_VERSION = "v2.1"
 CHUNK_SIZE = 1000
