@@ -21,7 +21,9 @@ home pose (TCP above the front of the workspace, gripper open, pointing down); t
 ``reset()`` without a seed draws one from the environment's generator.
 
 **Success Conditions.**  ``info["success"]``: the task's success predicate G holds and the
-gripper holds no cube (both fingers touching it), as ManiSkill3 defines success.  The
+gripper holds no cube (both fingers touching it), as ManiSkill3 defines success.  A temporal
+goal ("first A, then B") also needs its events to have first held in that order during the
+episode (:class:`~rpg.domain.predicates.TemporalMonitor`, updated every step).  The
 episode terminates on success (``terminate_on_success``) and is truncated after
 ``max_episode_steps = EPISODE_BASE_STEPS + EPISODE_STEPS_PER_CUBE * movable cubes`` control
 steps.  Reward: 1.0 on a successful step, else 0.0 (sparse).
@@ -38,7 +40,7 @@ Actions are float32 and apply to the *measured* TCP pose (not to the last target
 - ``joint_pos`` (8,, Panda only): seven joint targets (rad) and the gripper.
 
 ``gripper``: -1 open, +1 closed (actuator command ``255 * (1 - g) / 2``; a held cube is
-released at ``g <= 0.41``, command >= 180).
+released at ``g <= -0.41``, command >= 180).
 
 **Observations** (a dict; the world frame of :mod:`rpg.domain.constants`):
 
@@ -70,6 +72,7 @@ import numpy as np
 from gymnasium import spaces
 
 from rpg.domain import constants as C
+from rpg.domain.predicates import InOrder
 from rpg.env.embodiments import make_embodiment
 from rpg.env.embodiments.base import PREFIX, EmbodimentError, quat_to_axis_angle
 from rpg.env.loading import TaskSource, load_env_task
@@ -152,6 +155,7 @@ class BlockTaskEnv(gym.Env):
         self._renderer = None
         self._elapsed = 0
         self._seed: int | None = None
+        self._monitors: list = []
         self.action_space = self._make_action_space()
         self.observation_space = self._make_observation_space()
 
@@ -195,6 +199,7 @@ class BlockTaskEnv(gym.Env):
         self.scene.forward()
         mujoco.mj_step(self.model, self.data, nstep=C.RESET_SETTLE_STEPS)
         self._elapsed = 0
+        self._monitors = [p.monitor() for p in self.task.goal_predicate.walk() if isinstance(p, InOrder)]
         return self._observation(), self._info()
 
     def step(self, action):
@@ -245,11 +250,20 @@ class BlockTaskEnv(gym.Env):
     def _info(self) -> dict:
         result = self.task.evaluate()
         leaves = result.leaves()
+        satisfied = result.satisfied
+        if self._monitors:  # a temporal goal: its events must have happened in order
+            state = self.task.world_state()
+            for m in self._monitors:
+                m.update(state)
+                order = m.result()
+                satisfied = satisfied and order.satisfied
+                if not order.satisfied:
+                    leaves = [*leaves, order]
         body = self.robot.grasped_body()
         grasped = self._body_names.get(body, "") if body is not None else ""
         return {
-            "success": bool(result.satisfied and body is None),
-            "goal_satisfied": bool(result.satisfied),
+            "success": bool(satisfied and body is None),
+            "goal_satisfied": bool(satisfied),
             "is_grasped": body is not None,
             "grasped": grasped,
             "diagnostics": {"satisfied": [r.reason for r in leaves if r.satisfied],
