@@ -26,6 +26,7 @@ bench: install
 	$(PY) benchmarks/bench_compile.py
 	$(PY) benchmarks/bench_library.py
 	$(PY) benchmarks/bench_env.py
+	$(PY) benchmarks/bench_oracle.py
 
 lint: install
 	$(VENV)/bin/ruff check src tests benchmarks

@@ -1,0 +1,96 @@
+"""Oracle success per library task (issue: >= 0.9 with the floating gripper on >= 90% of the
+library, >= 0.8 with the Panda on >= 80%), with the reason for every task below that, and
+demonstration throughput (episodes per minute, two 256x256 cameras, 1 vs 2 jobs).
+
+    python benchmarks/bench_oracle.py [--seeds 20] [--embodiment floating_gripper|panda|both]
+                                      [--jobs 2] [--throughput-episodes 6]
+"""
+
+from __future__ import annotations
+
+import argparse
+import concurrent.futures as cf
+import multiprocessing
+import shutil
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+MANIFEST = ROOT / "library" / "manifest.yaml"
+
+
+def task_success(args: tuple[str, str, int]) -> dict:
+    """Oracle success of one task over seeds 0..n-1, with its notes and failures."""
+    task, embodiment, seeds = args
+    from rpg.env import BlockTaskEnv
+    from rpg.oracle import Oracle
+
+    env = BlockTaskEnv(task, embodiment=embodiment, cameras=())
+    oracle = Oracle(env)
+    ok, reasons = 0, set()
+    for seed in range(seeds):
+        obs, info = env.reset(seed=seed)
+        oracle.reset(obs)
+        done = False
+        while not done:
+            obs, _, terminated, truncated, info = env.step(oracle.act(obs))
+            done = terminated or truncated
+        ok += bool(info["success"])
+        if not info["success"]:
+            reasons.update(oracle.plan.notes if oracle.plan else [])
+            reasons.add(oracle.failure or ("episode step limit reached" if truncated else "G not reached")
+                        + ": " + "; ".join(info["diagnostics"]["unsatisfied"][:1]))
+    env.close()
+    return {"task": Path(task).name, "rate": ok / seeds, "reasons": sorted(reasons)[:3]}
+
+
+def success_table(embodiment: str, seeds: int, jobs: int, threshold: float) -> None:
+    from rpg.demos import expand_targets
+
+    tasks = expand_targets(MANIFEST)
+    with cf.ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
+        rows = list(pool.map(task_success, [(t, embodiment, seeds) for t in tasks]))
+    good = sum(r["rate"] >= threshold for r in rows)
+    print(f"\noracle success, {embodiment}, {seeds} seeds per task (threshold {threshold}):")
+    for r in rows:
+        mark = "" if r["rate"] >= threshold else "   <-- " + " | ".join(r["reasons"])
+        print(f"  {r['task']:40s} {r['rate']:.2f}{mark}")
+    print(f"  {good}/{len(rows)} tasks ({good / len(rows):.0%}) at >= {threshold}")
+
+
+def throughput(episodes: int) -> None:
+    from rpg.demos import collect_demos
+
+    rates = {}
+    for jobs in (1, 2):
+        out = Path(tempfile.mkdtemp(prefix="rpg-bench-demos-"))
+        try:
+            t0 = time.perf_counter()
+            summary = collect_demos(ROOT / "library" / "stack_blocks", out / "ds", episodes=episodes,
+                                    jobs=jobs, cameras=("agentview", "wrist"), image_size=(256, 256))
+            dt = time.perf_counter() - t0
+        finally:
+            shutil.rmtree(out, ignore_errors=True)
+        rates[jobs] = summary["attempts"] / dt * 60
+        print(f"demos, 2 cameras 256x256, stack_blocks, {jobs} job(s): {rates[jobs]:.1f} episodes/min")
+    print(f"speed-up 2 jobs vs 1: {rates[2] / rates[1]:.2f}x (target >= 1.7x)")
+
+
+def main() -> None:
+    p = argparse.ArgumentParser()
+    p.add_argument("--seeds", type=int, default=20)
+    p.add_argument("--embodiment", default="both")
+    p.add_argument("--jobs", type=int, default=2)
+    p.add_argument("--throughput-episodes", type=int, default=6)
+    a = p.parse_args()
+    if a.embodiment in ("floating_gripper", "both"):
+        success_table("floating_gripper", a.seeds, a.jobs, 0.9)
+    if a.embodiment in ("panda", "both"):
+        success_table("panda", a.seeds, a.jobs, 0.8)
+    if a.throughput_episodes:
+        throughput(a.throughput_episodes)
+
+
+if __name__ == "__main__":
+    main()
