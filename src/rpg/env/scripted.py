@@ -53,10 +53,13 @@ class Waypoint:
 
 
 def cube_yaw(quat) -> float:
-    """Yaw of an upright cube about world z, reduced to [-pi/4, pi/4) (a cube's symmetry), rad."""
+    """Yaw (rad) about world z of a cube's horizontal face axes, reduced to [-pi/4, pi/4) (a
+    cube's symmetry); for a cube on any face (the local axis nearest vertical is skipped)."""
     mat = np.zeros(9)
     mujoco.mju_quat2Mat(mat, np.asarray(quat, float))
-    x = mat.reshape(3, 3)[:, 0]
+    r = mat.reshape(3, 3)
+    up = int(np.argmax(np.abs(r[2])))
+    x = r[:, (up + 1) % 3]
     yaw = float(np.arctan2(x[1], x[0]))
     return (yaw + np.pi / 4) % (np.pi / 2) - np.pi / 4
 

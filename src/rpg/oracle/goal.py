@@ -27,6 +27,7 @@ import numpy as np
 from rpg.domain import constants as C
 from rpg.domain.predicates import InOrder
 from rpg.domain.state import Pose
+from rpg.env.scripted import cube_yaw
 
 
 class OracleError(RuntimeError):
@@ -107,17 +108,9 @@ def pose_matches(target: Target, pos, quat, xy_tol: float = 0.012, z_tol: float 
         r = rot(target.quat).T @ rot(quat)
         return math.acos(max(-1.0, min(1.0, (np.trace(r) - 1) / 2))) < angle_tol
     _, cos = up_axis(quat)
-    if target.dense and abs(_yaw_mod(quat) - _yaw_mod(target.quat) + math.pi / 4) % (math.pi / 2) - math.pi / 4 > DENSE_YAW_TOL:
+    if target.dense and abs((cube_yaw(quat) - cube_yaw(target.quat) + math.pi / 4) % (math.pi / 2) - math.pi / 4) > DENSE_YAW_TOL:
         return False
     return abs(cos) > math.cos(angle_tol)
-
-
-def _yaw_mod(quat) -> float:
-    """Yaw (rad) of a cube's horizontal face axes modulo pi/2."""
-    r = rot(quat)
-    k = up_axis(quat)[0]
-    axis = r[:, (k + 1) % 3]
-    return math.atan2(axis[1], axis[0]) % (math.pi / 2)
 
 
 def semantic_objects(goal) -> set[str]:

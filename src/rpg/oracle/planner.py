@@ -31,7 +31,7 @@ import numpy as np
 
 from rpg.domain import constants as C
 from rpg.env.embodiments.base import mat_to_quat
-from rpg.env.scripted import GRIPPER_STEPS, Waypoint, top_down_quat, waypoint_actions
+from rpg.env.scripted import GRIPPER_STEPS, Waypoint, cube_yaw, top_down_quat, waypoint_actions
 from rpg.oracle.goal import GoalPlan, OracleError, Target, plan_goal, pose_matches, rot, up_axis
 
 MAX_ATTEMPTS = 3
@@ -102,15 +102,6 @@ class Grasp:
 
 def _wrap(a: float) -> float:
     return (a + math.pi) % (2 * math.pi) - math.pi
-
-
-def cube_yaw(quat, up: int | None = None) -> float:
-    """Yaw (rad) of a cube's horizontal face axes, reduced to [-pi/4, pi/4)."""
-    r = rot(quat)
-    k = up_axis(quat)[0] if up is None else up
-    axis = r[:, (k + 1) % 3]
-    yaw = math.atan2(axis[1], axis[0])
-    return (yaw + math.pi / 4) % (math.pi / 2) - math.pi / 4
 
 
 def finger_axis(yaw: float) -> np.ndarray:
