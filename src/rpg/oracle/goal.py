@@ -28,10 +28,12 @@ from rpg.domain import constants as C
 from rpg.domain.predicates import InOrder
 from rpg.domain.state import Pose
 from rpg.env.scripted import cube_yaw
+from rpg.errors import TaskInvalid
 
 
-class OracleError(RuntimeError):
-    """The oracle cannot plan for this task (no goal configuration, or none that satisfies G)."""
+class OracleError(TaskInvalid):
+    """The oracle cannot plan for this task (no goal configuration, or none that satisfies G,
+    or an environment it cannot drive); exit code 1 on the command line."""
 
 
 SUPPORT_XY_TOL = 0.75
