@@ -150,7 +150,7 @@ class LeRobotWriter:
         n = len(self.episodes)
         for rel in ("data", "videos"):
             for f in sorted((self.root / rel).rglob("episode_*")):
-                if int(f.stem.split("_")[1]) >= n or f.name.startswith("."):
+                if int(f.stem.split("_")[1]) >= n:
                     f.unlink()
         for f in sorted(self.root.rglob(".*tmp*")):
             f.unlink()

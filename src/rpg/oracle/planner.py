@@ -374,10 +374,10 @@ class Oracle:
         for x in np.arange(C.WORKSPACE_X[0] + 0.02, C.WORKSPACE_X[1] - 0.02 + 1e-9, BUFFER_STEP):
             for y in np.arange(C.WORKSPACE_Y[0] + 0.02, C.WORKSPACE_Y[1] - 0.02 + 1e-9, BUFFER_STEP):
                 gap = 1.0
-                for o in others:
-                    dx = max(x - keepout[0] - o[0], o[0] - x - keepout[1], 0.0) if any(keepout) else abs(x - o[0])
-                    dy = max(y - keepout[2] - o[1], o[1] - y - keepout[3], 0.0) if any(keepout) else abs(y - o[1])
-                    gap = min(gap, math.hypot(dx, dy) if any(keepout) else math.hypot(x - o[0], y - o[1]))
+                for o in others:  # distance from o to the keep-out box around (x, y)
+                    dx = max(x - keepout[0] - o[0], o[0] - x - keepout[1], 0.0)
+                    dy = max(y - keepout[2] - o[1], o[1] - y - keepout[3], 0.0)
+                    gap = min(gap, math.hypot(dx, dy))
                 key = (min(gap, 0.12) >= margin, min(gap, 0.12), -math.dist((x, y), here))
                 if best is None or key > best[0]:
                     best = (key, (float(x), float(y)))
