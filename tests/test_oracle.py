@@ -125,3 +125,90 @@ def test_the_oracle_needs_ee_delta_control():
     env = BlockTaskEnv(LIBRARY / "stack_blocks", embodiment="floating_gripper", cameras=(), control_mode="ee_abs")
     with pytest.raises(OracleError, match="ee_delta"):
         Oracle(env)
+
+
+# -- the solvable gate -------------------------------------------------------------------
+def _rpg(*args, cwd=None):
+    import os
+    import subprocess
+    import sys
+
+    env = {**os.environ, "MUJOCO_GL": os.environ.get("MUJOCO_GL", "egl"), "LITELLM_LOCAL_MODEL_COST_MAP": "True"}
+    return subprocess.run([sys.executable, "-m", "rpg.cli", *args], capture_output=True, text=True, env=env,
+                          cwd=cwd, timeout=600)
+
+
+def test_the_solvable_gate_records_the_oracle_success_rate(tmp_path):
+    import json
+
+    import yaml
+
+    r = _rpg("compile", "Put the red block on the blue block", "-o", str(tmp_path), "--gate", "solvable")
+    assert r.returncode == 0, r.stdout + r.stderr
+    (task,) = [p for p in tmp_path.iterdir() if p.is_dir() and not p.name.startswith(".")]
+    gates = {g["gate"]: g for g in json.loads((task / "validation.json").read_text())["gates"]}
+    solvable = gates["solvable"]
+    assert solvable["status"] == "pass"
+    assert solvable["details"]["embodiment"] == "floating_gripper"
+    assert solvable["details"]["episodes"] == 5 and solvable["details"]["successes"] >= 3
+    assert solvable["details"]["rate"] == solvable["details"]["successes"] / 5
+    assert yaml.safe_load((task / "task.yaml").read_text())["provenance"]["gates"]["solvable"] == "pass"
+    # without --gate the optional gate does not run
+    r = _rpg("compile", "Put the red block on the blue block", "-o", str(tmp_path / "plain"))
+    assert r.returncode == 0
+    (plain,) = [p for p in (tmp_path / "plain").iterdir() if p.is_dir() and not p.name.startswith(".")]
+    assert "solvable" not in {g["gate"] for g in json.loads((plain / "validation.json").read_text())["gates"]}
+
+
+@pytest.mark.slow
+def test_a_task_the_oracle_cannot_build_is_rejected_and_no_environment_loads_it(tmp_path):
+    """A 3x3-base pyramid of touching cubes is stable and valid, but the oracle cannot yet
+    place touching cubes: with --gate solvable the compile is refused, naming the gate."""
+    import json
+
+    from rpg.errors import TaskInvalid
+
+    r = _rpg("compile", "Build a pyramid of blue blocks with a 3x3 base", "-o", str(tmp_path), "--gate", "solvable",
+             "--json")
+    assert r.returncode == 1, r.stdout + r.stderr
+    gates = {g["gate"]: g for g in json.loads(r.stdout)["gates"]}
+    assert gates["goal_state"]["status"] == "pass"
+    assert gates["solvable"]["status"] == "fail" and "the oracle solved" in gates["solvable"]["message"]
+    (rejected,) = list((tmp_path / ".rejected").iterdir())
+    with pytest.raises(TaskInvalid, match="solvable"):
+        BlockTaskEnv(rejected, embodiment="floating_gripper", cameras=())
+
+
+def test_gate_names_are_checked(tmp_path):
+    r = _rpg("compile", "Put the red block on the blue block", "-o", str(tmp_path), "--gate", "visibility")
+    assert r.returncode == 2 and "always runs" in r.stderr and "Traceback" not in r.stderr
+    r = _rpg("validate", str(LIBRARY / "stack_blocks"), "--gate", "solveable")
+    assert r.returncode == 2 and "not an optional gate" in r.stderr
+    assert not any(tmp_path.iterdir())
+
+
+def test_a_manifest_waiver_names_an_optional_gate_and_a_reason(tmp_path):
+    from rpg.library.build import ManifestError, load_manifest
+
+    for waive, msg in (({"visibility": "x"}, "not an optional gate"), ({"solvable": " "}, "needs its reason")):
+        (tmp_path / "m.yaml").write_text(
+            __import__("yaml").safe_dump({"entries": [{"name": "a", "instruction": "stack two blocks",
+                                                         "waive": waive}]}))
+        with pytest.raises(ManifestError, match=msg):
+            load_manifest(tmp_path / "m.yaml")
+
+
+def test_the_library_passed_the_solvable_gate_or_says_why_not():
+    import json
+
+    from rpg.library.build import load_manifest
+
+    for e in load_manifest(LIBRARY / "manifest.yaml").entries:
+        dirs = [LIBRARY / e.name] if e.kind == "task" else sorted((LIBRARY / e.name).glob("v*"))
+        for d in dirs:
+            gates = {g["gate"]: g for g in json.loads((d / "validation.json").read_text())["gates"]}
+            if "solvable" in e.waive:
+                assert "solvable" not in gates
+            else:
+                assert gates["solvable"]["status"] == "pass", d
+                assert gates["solvable"]["details"]["successes"] >= 3

@@ -45,6 +45,11 @@ def test_gallery_has_every_card_and_image(chromium, tmp_path):
     assert m, dom[:500]
     assert int(m.group(1)) == int(m.group(2)) == 2 * len(expected)
     assert dom.count("class=\"pass\"") >= 8 * len(expected)
+    # every card says what the oracle did: its success rate, or why the solvable gate was waived
+    rates = re.findall(r"oracle \(solvable gate\): (\d)/5 episodes with the floating gripper", dom)
+    waived = dom.count("solvable gate waived: the oracle cannot yet place touching cubes")
+    assert len(rates) + waived == len(expected) and waived >= 2
+    assert all(int(k) >= 3 for k in rates)
     page = subprocess.run([chromium, *CHROMIUM_FLAGS, f"--user-data-dir={tmp_path / 'profile2'}", "--virtual-time-budget=10000",
                            "--dump-dom", (site / "diversity.html").as_uri()], capture_output=True, text=True, timeout=120).stdout
     assert 'id="diversity-link"' in dom and 'id="overall"' in page

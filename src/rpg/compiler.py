@@ -40,7 +40,7 @@ from rpg.repair import route
 from rpg.schema.builtin import parse
 from rpg.schema.feasibility import check_feasibility
 from rpg.schema.model import TaskSchema
-from rpg.validate.gates import check_gate_names
+from rpg.validate.gates import check_gate_names, check_optional_gates
 from rpg.validate.results import checked_validate_result
 from rpg.validate.sandbox import run_worker
 from rpg.validate.static import StaticViolation, check_source
@@ -73,11 +73,14 @@ class CompileResult:
 
 def validate_files(directory: Path, seed: int = 0, disabled: frozenset[str] = frozenset(),
                    snapshots: bool = False, tolerances: dict | None = None,
-                   sources: dict[str, str] | None = None) -> list[dict]:
+                   sources: dict[str, str] | None = None, enabled: frozenset[str] = frozenset(),
+                   name: str = "task") -> list[dict]:
     """Run every gate on the code files in ``directory``; return the gate results in order.
 
     ``sources`` (file name -> text, as read once by :func:`rpg.artifact.task_sources`) is
     what the gates check and the worker runs; read from ``directory`` when not given.
+    ``enabled`` names optional gates (:data:`rpg.validate.gates.OPTIONAL_GATES`) to run after
+    the others, when they all passed.
     """
     results = []
     try:
@@ -100,6 +103,7 @@ def validate_files(directory: Path, seed: int = 0, disabled: frozenset[str] = fr
 
     try:
         doc = run_worker({"op": "validate", "sources": sources, "seed": seed, "disabled": sorted(disabled),
+                          "enabled": sorted(enabled), "name": name,
                           "snapshots": snapshots, "tolerances": tolerances or {}})
         if not doc["ok"]:
             return results + [{"gate": "compile", "status": "fail", "kind": doc.get("kind", "runtime"),
@@ -132,14 +136,16 @@ def _log_line(g: dict) -> str:
 
 def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[str] = frozenset(),
           backend: str = "builtin", model: str | None = None, name: str | None = None,
-          extra_files=None, coder=None, author: str | None = None) -> CompileResult:
+          extra_files=None, coder=None, author: str | None = None,
+          enabled: frozenset[str] = frozenset()) -> CompileResult:
     """Passes 2-4 on a schema: generate, validate, repair; write the artifact atomically.
 
     ``extra_files`` (name -> text, or a callable returning that once the code exists, e.g.
     the model record ``llm_log.jsonl``) are written into the artifact too; they are not part
     of its content hash.  ``coder`` (an :class:`rpg.codegen.llm.LLMCoder`) writes the code
     instead of the builtin emitter, and its fix agents repair it.  ``author`` (who wrote the
-    task) is recorded in the provenance when given.
+    task) is recorded in the provenance when given.  ``enabled`` names optional gates to run
+    (:data:`rpg.validate.gates.OPTIONAL_GATES`).
     """
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
@@ -154,7 +160,8 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
             code = generate(schema) if coder is None else coder(schema, failure)
             (tmp / "code.py").write_text(code.code)
             (tmp / "goal_state_code.py").write_text(code.goal_state_code)
-            gates = validate_files(tmp, seed, disabled, snapshots=True, tolerances=schema.tolerances.model_dump())
+            gates = validate_files(tmp, seed, disabled, snapshots=True, tolerances=schema.tolerances.model_dump(),
+                                   enabled=enabled, name=schema.name)
             log.append(f"cycle {cycle}:")
             log += ["  " + _log_line(g) for g in gates]
             failure = first_failure(gates)
@@ -234,7 +241,8 @@ def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int
                         disabled: frozenset[str] = frozenset(), model: str | None = None,
                         name: str | None = None, llm=None, replay: str | Path | None = None,
                         builtin_first: bool = False, codegen: str = "builtin",
-                        library: str | Path | None = "library", author: str | None = None) -> CompileResult:
+                        library: str | Path | None = "library", author: str | None = None,
+                        enabled: frozenset[str] = frozenset()) -> CompileResult:
     """Compile an instruction into a task artifact under ``out_dir/<slug>/`` (or ``out_dir/<name>/``).
 
     Args:
@@ -248,6 +256,8 @@ def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int
             in the API docs, common errors and reference tasks from ``library``).
         author: who wrote the instruction, recorded in ``task.yaml`` provenance (groups
             ``rpg diversity --by author``); None records nothing.
+        enabled: optional gates to run too (``{"solvable"}``; see
+            :data:`rpg.validate.gates.OPTIONAL_GATES`).
 
     Raises:
         ParseError: the builtin front end cannot read the instruction.
@@ -256,11 +266,12 @@ def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int
         ModelOutputError: the model gave no valid TaskSchema within its retries.
         ReplayError: the replay record is missing, malformed or does not match.
         ValueError: unknown colour or label.
-        BadInput: an unknown gate name in ``disabled``.
+        BadInput: an unknown gate name in ``disabled`` or ``enabled``.
     """
     from rpg.schema.builtin import ParseError
 
     disabled = check_gate_names(disabled)
+    enabled = check_optional_gates(enabled)
     check_output_dir(Path(out_dir))
     if isinstance(instruction, str):
         check_text(instruction, "the instruction")
@@ -305,16 +316,24 @@ def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int
 
     return build(schema, Path(out_dir), seed, frozenset(disabled), backend=backend,
                  model=llm.model if llm is not None else None, name=name, extra_files=extra, coder=coder,
-                 author=author)
+                 author=author, enabled=enabled)
 
 
-def revalidate(directory: str | Path, disabled: frozenset[str] = frozenset()) -> CompileResult:
-    """Re-run every gate on an artifact as it is (e.g. after a hand edit); rewrite its logs."""
+def revalidate(directory: str | Path, disabled: frozenset[str] = frozenset(),
+               enabled: frozenset[str] = frozenset()) -> CompileResult:
+    """Re-run every gate (and the optional ones in ``enabled``) on an artifact as it is (e.g.
+    after a hand edit); rewrite its logs.
+
+    Raises:
+        BadInput: an unknown gate name.
+    """
     disabled = check_gate_names(disabled)
+    enabled = check_optional_gates(enabled)
     d = Path(directory)
     schema, doc, sources, digest = rehash(d)
     seed = int(doc.get("provenance", {}).get("seed", 0))
-    gates = validate_files(d, seed, disabled, snapshots=False, tolerances=schema.tolerances.model_dump(), sources=sources)
+    gates = validate_files(d, seed, disabled, snapshots=False, tolerances=schema.tolerances.model_dump(), sources=sources,
+                           enabled=enabled, name=schema.name)
     log = [f"rpg {__version__} validate {d}", *_isolation_note()] + [_log_line(g) for g in gates]
     valid = gates_passed(gates)
     log.append("result: VALID" if valid else "result: INVALID")

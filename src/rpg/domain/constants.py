@@ -126,6 +126,17 @@ NONTRIVIAL_SEEDS: int = 5
 NONTRIVIAL_MIN_FALSE: int = 4
 """Of NONTRIVIAL_SEEDS resets, at least this many must have G false (project)."""
 
+SOLVABLE_SEEDS: int = 5
+"""Episodes (seeds seed, seed+1, ...) the oracle runs in the optional ``solvable`` gate (project;
+issue "oracle ... and a solvable gate")."""
+
+SOLVABLE_MIN_SUCCESS: int = 3
+"""Of SOLVABLE_SEEDS oracle episodes, at least this many must succeed (project)."""
+
+SOLVABLE_EMBODIMENT: str = "floating_gripper"
+"""The embodiment the ``solvable`` gate's oracle drives (project: the gate asks whether a
+gripper can build the goal at all, not whether one arm reaches it)."""
+
 # ---------------------------------------------------------------------------
 # Initial-state distribution rho_0 (project)
 # ---------------------------------------------------------------------------

@@ -75,7 +75,7 @@ from rpg.domain import constants as C
 from rpg.domain.predicates import InOrder
 from rpg.env.embodiments import make_embodiment
 from rpg.env.embodiments.base import PREFIX, EmbodimentError, quat_to_axis_angle
-from rpg.env.loading import TaskSource, load_env_task
+from rpg.env.loading import TaskCode, TaskSource, load_env_task
 
 CAMERAS = ("agentview", "wrist", "default")
 """Cameras an environment can observe."""
@@ -102,8 +102,8 @@ class BlockTaskEnv(gym.Env):
     """A compiled block-domain task with a robot, as a :class:`gymnasium.Env`.
 
     Args:
-        task: a task directory, family directory (its head) or ``FAMILY@vN``; loaded through
-            the checks of :mod:`rpg.env.loading`.
+        task: a task directory, family directory (its head) or ``FAMILY@vN``, or a
+            :class:`rpg.env.loading.TaskCode`; loaded through the checks of :mod:`rpg.env.loading`.
         embodiment: ``"panda"`` or ``"floating_gripper"``.
         control_mode: ``"ee_delta"``, ``"ee_abs"`` or ``"joint_pos"`` (Panda only).
         cameras: camera observations to render (``()`` for state only).
@@ -122,7 +122,7 @@ class BlockTaskEnv(gym.Env):
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": int(C.CONTROL_HZ)}
 
-    def __init__(self, task: str | Path, embodiment: str = "panda", control_mode: str = "ee_delta",
+    def __init__(self, task: str | Path | TaskCode, embodiment: str = "panda", control_mode: str = "ee_delta",
                  cameras: Sequence[str] = ("agentview", "wrist"), image_size: tuple[int, int] = C.ENV_IMAGE_SIZE,
                  instruction: str = "canonical", privileged: bool = False, render_mode: str | None = None,
                  terminate_on_success: bool = True, max_episode_steps: int | None = None):

@@ -6,7 +6,7 @@ loads an artifact only after:
 1. its files are read once, without following links (:func:`rpg.artifact.rehash`);
 2. the content hash recomputed from them equals the one ``task.yaml`` records (a hand edit
    since compilation is refused: re-run ``rpg validate`` or recompile);
-3. ``task.yaml`` records that every validation gate passed;
+3. ``task.yaml`` records that every validation gate passed (and every optional gate that ran);
 4. the text gate accepts that very text (:func:`rpg.validate.static.check_source`);
 5. it is executed restricted (RestrictedPython guards, :mod:`rpg.validate.restricted`),
    and the task class and its goal and assets are checked as the validation worker checks
@@ -19,7 +19,8 @@ have them.  See the README, "Running untrusted task code".
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from rpg.artifact import FILES_CHANGED, ArtifactError, rehash
@@ -41,12 +42,32 @@ class TaskSource:
         paraphrases: its paraphrases (``instruction="paraphrase:K"`` picks one).
     """
 
-    directory: Path
+    directory: Path | None
     target: str
     content_hash: str
     name: str
     instruction: str
     paraphrases: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class TaskCode:
+    """A task's code held in memory rather than in an artifact directory: what the validation
+    worker runs the ``solvable`` gate on, before the artifact exists.  It has no content
+    hash and no recorded gates; its text still goes through the text gate and restricted
+    loading (steps 4 and 5 of the module docstring).
+
+    Attributes:
+        sources: ``code.py`` and ``goal_state_code.py`` text.
+        name: the task's name.
+        instruction: its canonical instruction.
+        paraphrases: its paraphrases.
+    """
+
+    sources: Mapping[str, str]
+    name: str = "task"
+    instruction: str = ""
+    paraphrases: tuple[str, ...] = field(default=())
 
 
 def resolve_target(target: str | Path) -> Path:
@@ -75,11 +96,11 @@ def resolve_target(target: str | Path) -> Path:
     return path
 
 
-def load_env_task(target: str | Path, robot=None) -> tuple[BlockTask, TaskSource, object]:
+def load_env_task(target: str | Path | TaskCode, robot=None) -> tuple[BlockTask, TaskSource, object]:
     """Check and load a task for an environment (see the module docstring for the checks).
 
     Args:
-        target: a task directory, family directory or ``FAMILY@vN``.
+        target: a task directory, family directory or ``FAMILY@vN``, or a :class:`TaskCode`.
         robot: the embodiment to add to the task's scene.
 
     Returns:
@@ -91,27 +112,39 @@ def load_env_task(target: str | Path, robot=None) -> tuple[BlockTask, TaskSource
         TaskInvalid: the artifact did not pass validation, or its code fails the text gate
             or the loading checks.
     """
-    from rpg.validate.static import StaticViolation, check_source
-    from rpg.validate.worker import GateFailure, load_task
-
+    if isinstance(target, TaskCode):
+        task, goal_module = _load_checked(dict(target.sources), robot)
+        return task, TaskSource(directory=None, target=target.name, content_hash="", name=target.name,
+                                instruction=target.instruction, paraphrases=tuple(target.paraphrases)), goal_module
     directory = resolve_target(target)
     schema, doc, sources, digest = rehash(directory)
     if digest != doc.get("content_hash"):
         raise ArtifactError(f"{directory}: {FILES_CHANGED}; run 'rpg validate {directory}' or recompile it")
     gates = (doc.get("provenance") or {}).get("gates") or {}
-    failed = sorted(g for g in GATES if gates.get(g) not in ("pass", "skipped"))
+    failed = sorted({g for g in GATES if gates.get(g) not in ("pass", "skipped")}
+                    | {g for g, status in gates.items() if status not in ("pass", "skipped")})
     if failed:
         raise TaskInvalid(f"{directory} did not pass validation (gate {failed[0]}: "
                           f"{gates.get(failed[0], 'not run')}); an environment loads only valid tasks "
                           "(see its validation.log)")
-    try:
-        for fname, text in sources.items():
-            check_source(text, fname)
-        task, goal_module = load_task(sources, restricted=True, robot=robot)
-    except StaticViolation as exc:
-        raise TaskInvalid(f"task code rejected: {exc}") from None
-    except GateFailure as exc:
-        raise TaskInvalid(f"task code rejected: {exc}") from None
+    task, goal_module = _load_checked(sources, robot)
     source = TaskSource(directory=directory, target=str(target), content_hash=digest, name=schema.name,
                         instruction=schema.instruction, paraphrases=tuple(schema.paraphrases))
     return task, source, goal_module
+
+
+def _load_checked(sources: dict[str, str], robot) -> tuple[BlockTask, object]:
+    """Steps 4 and 5 of the module docstring on ``sources``.
+
+    Raises:
+        TaskInvalid: the text gate or the loading checks refuse the code.
+    """
+    from rpg.validate.static import StaticViolation, check_source
+    from rpg.validate.worker import GateFailure, load_task
+
+    try:
+        for fname, text in sources.items():
+            check_source(text, fname)
+        return load_task(sources, restricted=True, robot=robot)
+    except (StaticViolation, GateFailure) as exc:
+        raise TaskInvalid(f"task code rejected: {exc}") from None

@@ -48,12 +48,33 @@ class Entry(BaseModel):
     seed: int = 0
     author: str | None = Field(None, description="Who wrote the entry (groups `rpg diversity --by author`).")
     content_hash: str | None = None
+    split: str | None = Field(None, pattern=r"^[a-z][a-z0-9_-]*$", description=(
+        "Evaluation split (e.g. train / eval, the paper's training and generalization tasks); "
+        "`rpg eval` groups by it and selects it with split=NAME."))
+    waive: dict[str, str] = Field(default_factory=dict, description=(
+        "Optional gates this entry is built without, each with the reason (e.g. solvable: the "
+        "oracle lacks the primitive); shown by `rpg build` and the gallery."))
 
     @model_validator(mode="after")
     def _one_source(self) -> Entry:
         if (self.instruction is None) == (self.session is None):
             raise ValueError(f"entry {self.name!r} needs exactly one of 'instruction' or 'session'")
+        from rpg.validate.gates import OPTIONAL_GATES
+
+        unknown = sorted(set(self.waive) - set(OPTIONAL_GATES))
+        if unknown:
+            raise ValueError(f"entry {self.name!r} waives {unknown[0]!r}, which is not an optional gate "
+                             f"({', '.join(OPTIONAL_GATES)})")
+        if any(not str(why).strip() for why in self.waive.values()):
+            raise ValueError(f"entry {self.name!r}: a waived gate needs its reason")
         return self
+
+    @property
+    def gates(self) -> frozenset[str]:
+        """The optional gates this entry is built with: all but the waived ones."""
+        from rpg.validate.gates import OPTIONAL_GATES
+
+        return frozenset(g for g in OPTIONAL_GATES if g not in self.waive)
 
     @property
     def kind(self) -> str:
@@ -94,23 +115,28 @@ def load_manifest(path: str | Path) -> Manifest:
 def save_manifest(path: str | Path, manifest: Manifest, header: str = "") -> None:
     """Write the manifest atomically."""
     path = Path(path)
-    text = header + yamlio.dump(manifest.model_dump(exclude_none=True), width=120)
+    doc = manifest.model_dump(exclude_none=True)
+    for entry in doc["entries"]:
+        if not entry.get("waive"):
+            entry.pop("waive", None)
+    text = header + yamlio.dump(doc, width=120)
     tmp = path.with_name(f".{path.name}.tmp-{os.getpid()}")
     tmp.write_text(text)
     os.replace(tmp, path)
 
 
 def build_entry(entry: dict, out_dir: str, base_dir: str) -> dict:
-    """Build one entry into ``out_dir``; a JSON-ready report (never raises)."""
+    """Build one entry into ``out_dir`` with every optional gate on but those the entry waives
+    (a library task must be solvable by the oracle); a JSON-ready report (never raises)."""
     from rpg.artifact import load_artifact
     from rpg.compiler import compile_instruction
 
     e = Entry.model_validate(entry)
     t0 = time.perf_counter()
-    report: dict = {"name": e.name, "kind": e.kind, "expected": e.content_hash}
+    report: dict = {"name": e.name, "kind": e.kind, "expected": e.content_hash, "waived": dict(e.waive)}
     try:
         if e.kind == "task":
-            r = compile_instruction(e.instruction, out_dir, e.seed, name=e.name, author=e.author)
+            r = compile_instruction(e.instruction, out_dir, e.seed, name=e.name, author=e.author, enabled=e.gates)
             report.update(status="valid" if r.valid else "rejected", content_hash=r.content_hash,
                           repairs=[x.operator for x in r.schema.repairs],
                           gates={g["gate"]: g["status"] for g in r.gates}, path=str(r.path))
@@ -118,7 +144,7 @@ def build_entry(entry: dict, out_dir: str, base_dir: str) -> dict:
             from rpg.steer.family import Family
             from rpg.steer.session import run_session
 
-            fam, steps = run_session(Path(base_dir) / e.session, out_dir, e.seed, name=e.name)
+            fam, steps = run_session(Path(base_dir) / e.session, out_dir, e.seed, name=e.name, enabled=e.gates)
             hist = Family(fam).load()
             repairs = []
             for v in hist.versions:

@@ -38,6 +38,7 @@ h1 small{font-weight:normal;color:#666;font-size:.9rem}
 {% endif %}{% endfor %}</div>
 <p class="gates">{% for g, st in c.gates.items() %}<span class="{{ st }}">{{ g }}</span>{% endfor %}</p>
 <p class="meta">{{ c.summary }}</p>
+<p class="meta oracle">{% if c.oracle %}oracle (solvable gate): {{ c.oracle.successes }}/{{ c.oracle.episodes }} episodes with the {{ c.oracle.embodiment|replace("_", " ") }}{% elif c.waived %}solvable gate waived: {{ c.waived }}{% else %}solvable gate not run{% endif %}</p>
 {% if c.repairs %}<p class="meta">repairs: {{ c.repairs|join(", ") }}</p>{% endif %}
 {% if c.lineage %}<p class="meta">{{ c.lineage }}</p>{% endif %}
 </section>
@@ -72,7 +73,32 @@ td,th{border:1px solid #ddd;padding:2px 8px;text-align:left}img{max-width:48%;ma
 """, autoescape=True)
 
 
-def _card(directory: Path, site: Path, card_id: str, title: str, kind: str, lineage: str = "") -> dict:
+def _oracle_rate(directory: Path) -> dict | None:
+    """The ``solvable`` gate's details from ``validation.json`` (None when it did not run)."""
+    import json
+
+    try:
+        gates = json.loads((directory / "validation.json").read_text()).get("gates", [])
+    except (OSError, ValueError, AttributeError):
+        return None
+    found = [g for g in gates if isinstance(g, dict) and g.get("gate") == "solvable"]
+    details = found[0].get("details") if found else None
+    return details if isinstance(details, dict) and "successes" in details else None
+
+
+def _waivers(library: Path) -> dict[str, str]:
+    """Entry name -> why its ``solvable`` gate is waived, from the library's manifest if any."""
+    from rpg.library.build import ManifestError, load_manifest
+
+    try:
+        manifest = load_manifest(library / "manifest.yaml")
+    except ManifestError:
+        return {}
+    return {e.name: e.waive["solvable"] for e in manifest.entries if "solvable" in e.waive}
+
+
+def _card(directory: Path, site: Path, card_id: str, title: str, kind: str, lineage: str = "",
+          waived: str | None = None) -> dict:
     schema, doc = load_artifact(directory)
     images = {}
     for key in ("initial", "goal"):
@@ -86,7 +112,8 @@ def _card(directory: Path, site: Path, card_id: str, title: str, kind: str, line
     prov = doc.get("provenance", {})
     return {"id": card_id, "title": title, "kind": kind, "instruction": schema.instruction,
             "summary": schema.goal_summary, "images": images, "gates": prov.get("gates", {}),
-            "repairs": [r["operator"] for r in prov.get("repairs", [])], "lineage": lineage}
+            "repairs": [r["operator"] for r in prov.get("repairs", [])], "lineage": lineage,
+            "oracle": _oracle_rate(directory), "waived": waived}
 
 
 def library_entries(library: Path) -> list[tuple[str, Path, dict | None]]:
@@ -106,6 +133,7 @@ def library_entries(library: Path) -> list[tuple[str, Path, dict | None]]:
 def collect_cards(library: Path, site: Path) -> list[dict]:
     """Cards for every task artifact and family version directly under ``library``."""
     cards = []
+    waivers = _waivers(Path(library))
     for name, d, v in library_entries(library):
         if v is not None:
             ref = "none" if v["reference"] is None else f"v{v['reference']}"
@@ -113,10 +141,10 @@ def collect_cards(library: Path, site: Path) -> list[dict]:
             lineage = (f"{v['intent']}; reference {ref}; parent {parent}; lineage {v['lineage_hash'][:12]}"
                        + (f"; edit: {v['description']}" if v["version_id"] else ""))
             cards.append(_card(d, site, f"{name}-v{v['version_id']}", f"{name} v{v['version_id']}", "family_version",
-                               lineage))
+                               lineage, waivers.get(name)))
         else:
             try:
-                cards.append(_card(d, site, name, name, "task"))
+                cards.append(_card(d, site, name, name, "task", waived=waivers.get(name)))
             except ArtifactError:
                 continue
     return cards

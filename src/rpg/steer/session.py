@@ -98,10 +98,11 @@ def check_final(directory: Path, expected: str) -> list[str]:
 
 
 def run_session(path: str | Path, out_dir: str | Path, seed: int = 0,
-                name: str | None = None) -> tuple[Path, list[StepResult]]:
+                name: str | None = None, enabled: frozenset[str] = frozenset()) -> tuple[Path, list[StepResult]]:
     """Run a session into ``out_dir/<name>/`` (a family); return it and one result per step.
 
-    ``name`` (e.g. the library entry's) overrides the session file's own ``name``.
+    ``name`` (e.g. the library entry's) overrides the session file's own ``name``;
+    ``enabled`` names optional gates every version must pass too (``rpg build``: all).
 
     Raises:
         SessionError: an unreadable session or an invalid name.
@@ -112,7 +113,7 @@ def run_session(path: str | Path, out_dir: str | Path, seed: int = 0,
     out_dir = Path(out_dir)
     first = doc["steps"][0]
     results: list[StepResult] = []
-    compiled = compile_instruction(first["instruction"], out_dir, seed, name=doc["name"])
+    compiled = compile_instruction(first["instruction"], out_dir, seed, name=doc["name"], enabled=enabled)
     if not compiled.valid:
         return compiled.path, [StepResult(0, first["instruction"], False, problems=["validation failed after repair"])]
     fam = create_family(compiled.path)
@@ -120,7 +121,7 @@ def run_session(path: str | Path, out_dir: str | Path, seed: int = 0,
     for i, step in enumerate(doc["steps"][1:], 1):
         head = fam.load().head
         try:
-            r = steer(fam.path, step["edit"], seed)
+            r = steer(fam.path, step["edit"], seed, enabled=enabled)
         except (SteerError, ValueError) as exc:
             results.append(StepResult(i, step["edit"], False, problems=[str(exc)]))
             break

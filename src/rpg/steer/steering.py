@@ -252,8 +252,11 @@ def llm_edit_schema(edit: str, intent: str, reference: TaskSchema, client) -> Ta
 
 
 def steer(family: str | Path, edit: str | None, seed: int | None = None, disabled: frozenset[str] = frozenset(),
-          llm=None, replay: str | Path | None = None, author: str | None = None) -> SteerResult:
+          llm=None, replay: str | Path | None = None, author: str | None = None,
+          enabled: frozenset[str] = frozenset()) -> SteerResult:
     """Apply an edit to a family (a compiled task becomes v0 of a new family first).
+
+    ``enabled`` names optional gates the new version must pass too (e.g. ``{"solvable"}``).
 
     With ``llm`` (an :class:`rpg.schema.llm.LLMClient`) the model classifies the edit and
     writes the new schema; its exchanges are recorded in the version's ``llm_log.jsonl``,
@@ -273,10 +276,11 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
     if not edit or not edit.strip():
         raise SteerError("the edit is empty; say what to change, e.g. \"add a green block on top\"")
     from rpg.compiler import check_text
-    from rpg.validate.gates import check_gate_names
+    from rpg.validate.gates import check_gate_names, check_optional_gates
 
     check_text(edit, "the edit")
     disabled = check_gate_names(disabled)
+    enabled = check_optional_gates(enabled)
     path = Path(family)
     if not is_family(path):
         from filelock import FileLock
@@ -323,7 +327,7 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
             return result
         vid = len(hist.versions)
         compiled = build(schema, path, seed, disabled, backend=backend, model=llm.model if llm else None,
-                         name=f"v{vid}", extra_files=extra, author=author)
+                         name=f"v{vid}", extra_files=extra, author=author, enabled=enabled)
         result.compile = compiled
         if not compiled.valid:
             result.notes.append(f"validation failed after repair; the attempt is in {compiled.path}")

@@ -128,6 +128,8 @@ def preload() -> None:
 
     from PIL import Image, PngImagePlugin  # noqa: F401
 
+    import rpg.oracle.planner  # noqa: F401 - environment variables on import, which a child may not)
+    import rpg.oracle.solvable  # noqa: F401 - the solvable gate's environment and oracle (gymnasium sets
     import rpg.validate.worker  # noqa: F401
     from rpg.validate.isolation import seccomp_layer
 

@@ -14,9 +14,10 @@ class GateResult(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
 
-    gate: Literal["compile", "smoke", "nontrivial", "constraint", "goal_state", "bounds", "visibility"]
+    gate: Literal["compile", "smoke", "nontrivial", "constraint", "goal_state", "bounds", "visibility", "solvable"]
     status: Literal["pass", "fail", "skipped"]
-    kind: Literal["syntax", "api_usage", "runtime", "success_check", "stability", "bounds", "constraint", "visibility"] | None = None
+    kind: Literal["syntax", "api_usage", "runtime", "success_check", "stability", "bounds", "constraint", "visibility",
+                  "solvability"] | None = None
     message: str | None = Field(None, max_length=20000)
     duration_s: float = Field(ge=0.0)
     details: dict = Field(default_factory=dict)

@@ -276,10 +276,24 @@ def validate(req: dict) -> dict:
         task.step(tol["settle_steps"])
         return _visibility(task)
 
+    def solvable():
+        from rpg.env.loading import TaskCode
+        from rpg.oracle.solvable import solvability
+
+        details = solvability(TaskCode(sources, name=str(req.get("name", "task"))), seed)
+        if details["successes"] < C.SOLVABLE_MIN_SUCCESS:
+            first = details["failures"][0]
+            raise GateFailure("solvability", f"the oracle solved {details['successes']} of {details['episodes']} "
+                              f"episodes with the {details['embodiment']} (needs {C.SOLVABLE_MIN_SUCCESS}); "
+                              f"seed {first['seed']}: {first['reason']}", details)
+        return details
+
     for name, fn in (("smoke", smoke), ("nontrivial", nontrivial), ("constraint", lambda: _constraint_graph(task)),
                      ("goal_state", goal_state), ("bounds", bounds), ("visibility", visibility)):
         if not gate(name, fn) and name in ("smoke",):
             break
+    if "solvable" in req.get("enabled", ()) and all(r["status"] != "fail" for r in results):
+        gate("solvable", solvable)
     out = {"gates": results}
     if req.get("snapshots"):
         try:
@@ -372,6 +386,9 @@ def main() -> None:
     from rpg.validate.sandbox import apply_limits
 
     req = json.loads(sys.stdin.read(WORKER_MAX_REQUEST))
+    if "solvable" in req.get("enabled", ()):  # imported before the guard: gymnasium sets environment variables
+        import rpg.oracle.planner  # noqa: F401
+        import rpg.oracle.solvable  # noqa: F401
     apply_limits()
     install_seccomp()
     install(os.getcwd())

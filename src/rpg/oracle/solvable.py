@@ -1,0 +1,69 @@
+"""Oracle episodes and the optional ``solvable`` validation gate (issue "oracle ... and a
+``solvable`` gate": a task whose goal is stable but that no robot can build is a bad
+evaluation task)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from rpg.domain import constants as C
+
+
+@dataclass(frozen=True)
+class OracleEpisode:
+    """One oracle episode.
+
+    Attributes:
+        seed: the episode's seed (rho_0 sample).
+        success: G held at the end (or the episode ended on success).
+        steps: control steps taken.
+        reason: why it failed (the oracle's own failure, a fragile-goal note, or the first
+            unsatisfied predicate); None on success.
+    """
+
+    seed: int
+    success: bool
+    steps: int
+    reason: str | None
+
+
+def oracle_episode(env, oracle, seed: int) -> OracleEpisode:
+    """Run ``oracle`` (an :class:`rpg.oracle.Oracle` of ``env``) for one episode from ``seed``."""
+    obs, info = env.reset(seed=int(seed))
+    oracle.reset(obs)
+    done, steps, truncated = False, 0, False
+    while not done:
+        obs, _, terminated, truncated, info = env.step(oracle.act(obs))
+        steps += 1
+        done = terminated or truncated
+    if info["success"]:
+        return OracleEpisode(int(seed), True, steps, None)
+    notes = list(oracle.plan.notes) if oracle.plan else []
+    first = "; ".join(info["diagnostics"]["unsatisfied"][:1])
+    reason = oracle.failure or ("episode step limit reached" if truncated else "G not reached")
+    return OracleEpisode(int(seed), False, steps, "; ".join([*notes, f"{reason}: {first}" if first else reason]))
+
+
+def solvability(task, seed: int = 0, episodes: int = C.SOLVABLE_SEEDS,
+                embodiment: str = C.SOLVABLE_EMBODIMENT) -> dict:
+    """The oracle's success on ``episodes`` seeds from ``seed``: the ``solvable`` gate's details.
+
+    Args:
+        task: what :class:`rpg.env.BlockTaskEnv` loads (a directory or a
+            :class:`rpg.env.loading.TaskCode`).
+
+    Returns:
+        ``{"embodiment", "episodes", "successes", "rate", "failures": [{"seed", "reason"}]}``.
+    """
+    from rpg.env import BlockTaskEnv
+    from rpg.oracle.planner import Oracle
+
+    env = BlockTaskEnv(task, embodiment=embodiment, cameras=())
+    try:
+        oracle = Oracle(env)
+        runs = [oracle_episode(env, oracle, seed + k) for k in range(episodes)]
+    finally:
+        env.close()
+    ok = sum(r.success for r in runs)
+    return {"embodiment": embodiment, "episodes": len(runs), "successes": ok, "rate": ok / max(1, len(runs)),
+            "failures": [{"seed": r.seed, "reason": r.reason} for r in runs if not r.success]}
