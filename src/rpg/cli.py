@@ -85,6 +85,9 @@ def default_author(author: str | None) -> str | None:
 
 AUTHOR_HELP = "Who wrote it (recorded in task.yaml provenance); default RPG_AUTHOR, else git's user.name."
 
+GATE_HELP = ("Run an optional gate too: solvable (the oracle must solve 3 of 5 episodes with the floating "
+             "gripper; rpg build always runs it).")
+
 
 def make_llm_client(model: str | None):
     """The model client for ``--model`` (None for the builtin front end); tests replace it
@@ -103,6 +106,7 @@ def compile_cmd(
     seed: Annotated[int, typer.Option("--seed", min=0, help="Seed of the episode shown in the snapshots and checks.")] = 0,
     model: Annotated[str | None, typer.Option("--model", help="'builtin' (default) or a litellm model name.")] = None,
     disable: Annotated[list[str], typer.Option("--disable", help="Switch a gate off (ablation).")] = [],  # noqa: B006
+    gate: Annotated[list[str], typer.Option("--gate", help=GATE_HELP)] = [],  # noqa: B006
     family: Annotated[bool, typer.Option("--family", help="Start a task family: the task becomes its v0.")] = False,
     replay: Annotated[Path | None, typer.Option("--replay", help="Recompile offline from an artifact's llm_log.jsonl.")] = None,
     builtin_first: Annotated[bool, typer.Option("--builtin-first", help="With --model: ask the model only for what the builtin parser cannot read.")] = False,
@@ -119,7 +123,7 @@ def compile_cmd(
     with _reported_errors():
         result = compile_instruction(instruction, output, seed, frozenset(disable), model, replay=replay,
                                      builtin_first=builtin_first, llm=make_llm_client(model), codegen=codegen,
-                                     library=library, author=default_author(author))
+                                     library=library, author=default_author(author), enabled=frozenset(gate))
         if family and result.valid:
             from rpg.steer.family import create_family
 
@@ -156,6 +160,7 @@ def steer_cmd(
     model: Annotated[str | None, typer.Option("--model", help="'builtin' (default) or a litellm model name.")] = None,
     replay: Annotated[Path | None, typer.Option("--replay", help="Re-apply a recorded model edit (llm_log.jsonl) offline.")] = None,
     disable: Annotated[list[str], typer.Option("--disable", help="Switch a gate off (ablation).")] = [],  # noqa: B006
+    gate: Annotated[list[str], typer.Option("--gate", help=GATE_HELP)] = [],  # noqa: B006
     as_json: Annotated[bool, typer.Option("--json", help="Print one JSON document.")] = False,
     author: Annotated[str | None, typer.Option("--author", help=AUTHOR_HELP)] = None,
 ) -> None:
@@ -166,7 +171,7 @@ def steer_cmd(
     model = model or os.environ.get("RPG_MODEL") or None
     with _reported_errors():
         r = steer(family, edit, seed, frozenset(disable), llm=make_llm_client(model) if replay is None else None,
-                  replay=replay, author=default_author(author))
+                  replay=replay, author=default_author(author), enabled=frozenset(gate))
     if as_json:
         print(json.dumps(r.to_json(), indent=2))
     else:
@@ -305,6 +310,9 @@ def build_cmd(
     out.print(table)
     for r in failed:
         out.print(f"[red]{r['status']}[/] {r['name']}: {esc(r.get('error') or '; '.join(r.get('problems') or []) or 'validation failed')}")
+    for r in reports:
+        for gate_name, why in sorted((r.get("waived") or {}).items()):
+            out.print(f"[yellow]waived[/] {r['name']}: gate {gate_name} ({esc(why)})", highlight=False)
     if check:
         for r in changed:
             why = "; ".join(r.get("problems") or []) if r.get("content_hash") == r["expected"] else ""
@@ -317,16 +325,132 @@ def build_cmd(
 
 @app.command("report")
 def report_cmd(
-    library: Annotated[Path, typer.Argument(help="A library directory (tasks and families).")],
+    library: Annotated[Path, typer.Argument(help="A library directory (tasks and families), or an rpg eval run directory.")],
     output: Annotated[Path, typer.Option("-o", "--output", help="Site directory to write.")] = Path("site"),
     diversity: Annotated[str | None, typer.Option("--diversity", help="Add a diversity page grouped by author, family or tag:KEY.")] = None,
 ) -> None:
-    """Write a static HTML gallery: one card per task and family version."""
+    """Write a static HTML gallery: one card per task and family version; for an `rpg eval` run
+    directory, its evaluation page (table, chart with error bars, videos, failed predicates)."""
+    from rpg.eval.report import is_run_dir, write_eval_report
     from rpg.library.report import write_report
 
     with _reported_errors():
-        page = write_report(library, output, diversity=diversity)
+        if is_run_dir(library):
+            page = write_eval_report(library, output)
+        else:
+            page = write_report(library, output, diversity=diversity)
     out.print(f"wrote {page}")
+
+
+def _parse_seeds(episodes: int | None, seeds: str | None) -> tuple[int, ...]:
+    if episodes is not None and seeds is not None:
+        _fail("give --episodes N or --seeds LIST, not both")
+    if seeds is None:
+        return tuple(range(episodes if episodes is not None else 20))
+    out = []
+    for part in seeds.split(","):
+        lo, dash, hi = part.strip().partition("-")
+        if not (lo.isdigit() and (not dash or hi.isdigit())):
+            _fail(f"--seeds takes non-negative integers and ranges like 0-9,20, not {seeds!r}")
+        out += list(range(int(lo), int(hi) + 1)) if dash else [int(lo)]
+    if not out or len(set(out)) != len(out):
+        _fail(f"--seeds must list distinct seeds, got {seeds!r}")
+    return tuple(out)
+
+
+@app.command("eval", context_settings={"allow_interspersed_args": True})
+def eval_cmd(
+    target: Annotated[str, typer.Argument(help="A task, family (all versions), FAMILY@vN, manifest or KEY=VALUE filter; "
+                                               "or 'compare' followed by two run directories.")],
+    runs: Annotated[list[Path] | None, typer.Argument(help="With 'compare': RUN_A RUN_B.")] = None,
+    policy: Annotated[str, typer.Option("--policy", help="oracle, random, noop, module:Class, file.py:Class or ws://host:port.")] = "oracle",
+    episodes: Annotated[int | None, typer.Option("--episodes", "-n", min=1, help="Seeds 0..N-1 per task (default 20).")] = None,
+    seeds: Annotated[str | None, typer.Option("--seeds", help="Seeds, e.g. 0-9,42.")] = None,
+    embodiment: Annotated[str, typer.Option("--embodiment", help="panda or floating_gripper.")] = "panda",
+    instruction: Annotated[str, typer.Option("--instruction", help="canonical, paraphrase:K or all.")] = "canonical",
+    jobs: Annotated[int, typer.Option("--jobs", "-j", min=1, help="Episodes run in parallel processes.")] = 1,
+    video: Annotated[bool, typer.Option("--video", help="Write an agentview MP4 per episode.")] = False,
+    replan: Annotated[int | None, typer.Option("--replan", min=1, help="Actions of a chunk executed before asking again.")] = None,
+    cameras: Annotated[str | None, typer.Option("--cameras", help="Comma-separated camera observations (default: none for built-ins, agentview,wrist otherwise).")] = None,
+    image_size: Annotated[int, typer.Option("--image-size", min=16, max=2048, help="Square camera observations, pixels.")] = 224,
+    library: Annotated[Path, typer.Option("--library", help="Manifest a KEY=VALUE filter selects from.")] = Path("library/manifest.yaml"),
+    output: Annotated[Path | None, typer.Option("-o", "--output", help="Run directory (created; resumed if it holds the same run).")] = None,
+    as_json: Annotated[bool, typer.Option("--json", help="Print the summary (or comparison) as JSON.")] = False,
+) -> None:
+    """Run a policy on tasks: success per task, family version, steering intent and split, with
+    standard errors and Wilson 95% intervals.  `rpg eval compare RUN_A RUN_B` tests differences."""
+    from rpg.eval import EvalConfig, run_eval
+
+    if target == "compare":
+        _eval_compare(runs or [], as_json)
+        return
+    if runs:
+        _fail(f"unexpected argument {runs[0]}; rpg eval takes one TARGET (or: rpg eval compare RUN_A RUN_B)")
+    if output is None:
+        _fail("give -o RUN_DIR for the run's episodes.jsonl and summary.json")
+    cams = None if cameras is None else tuple(c for c in cameras.split(",") if c)
+    config = EvalConfig(target=target, policy=policy, seeds=_parse_seeds(episodes, seeds), embodiment=embodiment,
+                        instruction=instruction, cameras=cams, image_size=(image_size, image_size), replan=replan,
+                        video=video, library=str(library))
+    from rich.progress import Progress
+
+    with _reported_errors(), Progress(console=err, transient=True) as bar:
+        tick = bar.add_task("episodes", total=None)
+        summary = run_eval(config, output, jobs=jobs, progress=lambda rec: bar.advance(tick))
+    if as_json:
+        print(json.dumps(summary, indent=2, sort_keys=True))
+        return
+    from rich.table import Table
+
+    table = Table(title=f"{esc(policy)} on {esc(target)} ({embodiment})")
+    for col in ("task", "success", "stderr", "95% Wilson", "n"):
+        table.add_column(col, justify="left" if col == "task" else "right")
+    for name, r in summary["tasks"].items():
+        table.add_row(esc(name), f"{100 * r['mean']:.1f}%", f"{100 * r['stderr']:.1f}",
+                      f"{100 * r['wilson95'][0]:.0f}-{100 * r['wilson95'][1]:.0f}%", str(r["n"]))
+    o = summary["overall"]
+    table.add_row("[bold]overall[/]", f"{100 * o['mean']:.1f}%", f"{100 * o['stderr']:.1f}",
+                  f"{100 * o['wilson95'][0]:.0f}-{100 * o['wilson95'][1]:.0f}%", str(o["n"]))
+    out.print(table)
+    for group in ("intents", "splits"):
+        parts = [f"{k} {100 * r['mean']:.0f}% (n {r['n']})" for k, r in summary[group].items() if k != "none"]
+        if parts:
+            out.print(f"per {group[:-1]}: " + ", ".join(parts), highlight=False)
+    out.print(f"run: {output}")
+
+
+def _eval_compare(runs: list[Path], as_json: bool) -> None:
+    from rpg.eval.stats import SIGNIFICANCE, compare_runs
+
+    if len(runs) != 2:
+        _fail("rpg eval compare takes two run directories: RUN_A RUN_B")
+    docs = []
+    for r in runs:
+        try:
+            docs.append(json.loads((r / "summary.json").read_text()))
+        except (OSError, ValueError):
+            _fail(f"{r} holds no readable summary.json (an rpg eval run directory)")
+    rows = compare_runs(*docs)
+    if as_json:
+        print(json.dumps(rows, indent=2))
+        return
+    from rich.table import Table
+
+    table = Table(title=f"{esc(str(runs[0]))} (A) vs {esc(str(runs[1]))} (B): two-proportion z-test")
+    for col in ("task", "A", "B", "B - A", "p", ""):
+        table.add_column(col, justify="left" if col == "task" else "right")
+    def cell(r: dict | None) -> str:
+        return "-" if r is None else f"{r['successes']}/{r['n']} ({100 * r['mean']:.0f}%)"
+
+    for row in rows:
+        a, b = row["a"], row["b"]
+        table.add_row(esc(row["task"]), cell(a), cell(b),
+                      "-" if row["diff"] is None else f"{100 * row['diff']:+.0f} pts",
+                      "-" if row["p_value"] is None else f"{row['p_value']:.3g}",
+                      "[bold]real[/]" if row["significant"] else "")
+    out.print(table)
+    out.print(f"{sum(r['significant'] for r in rows)} of {len(rows)} differences are real at p < {SIGNIFICANCE}",
+              highlight=False)
 
 
 session_app = typer.Typer(help="Scripted steering sessions.", no_args_is_help=True)
@@ -365,6 +489,7 @@ def session_run_cmd(
 def validate_cmd(
     directory: Annotated[Path, typer.Argument(help="A task artifact directory.")],
     disable: Annotated[list[str], typer.Option("--disable", help="Switch a gate off.")] = [],  # noqa: B006
+    gate: Annotated[list[str], typer.Option("--gate", help=GATE_HELP)] = [],  # noqa: B006
     as_json: Annotated[bool, typer.Option("--json")] = False,
 ) -> None:
     """Re-run every gate on an artifact (e.g. after a hand edit)."""
@@ -372,7 +497,7 @@ def validate_cmd(
     from rpg.compiler import revalidate
 
     with _reported_errors():
-        result = revalidate(directory, frozenset(disable))
+        result = revalidate(directory, frozenset(disable), frozenset(gate))
     if as_json:
         print(json.dumps(result.to_json(), indent=2))
     else:

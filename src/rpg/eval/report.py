@@ -1,0 +1,100 @@
+"""The evaluation page of ``rpg report RUN_DIR``: the success table with Wilson intervals, a
+bar chart with error bars (matplotlib PNG), per-episode videos and the failed predicates of
+failed episodes."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+
+import jinja2
+
+from rpg.errors import BadInput
+from rpg.eval.runner import read_episodes
+from rpg.eval.stats import task_key
+
+PAGE = jinja2.Template("""<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>rpg eval: {{ cfg.policy }} on {{ cfg.target }}</title>
+<style>body{font-family:system-ui,sans-serif;margin:1.5rem;color:#222}table{border-collapse:collapse;margin:.5rem 0}
+td,th{border:1px solid #ddd;padding:2px 8px;text-align:left}td.num{text-align:right}img.chart{max-width:100%}
+video{width:256px;margin:.2rem}.fail{color:#a00}details{margin:.3rem 0}</style></head>
+<body><h1>{{ cfg.policy }} on {{ cfg.target }}</h1>
+<p>embodiment {{ cfg.embodiment }}, instruction {{ cfg.instruction }}, seeds {{ cfg.seeds|length }} per task
+({{ cfg.seeds[0] }}..{{ cfg.seeds[-1] }}); overall <b id="overall">{{ pct(s.overall.mean) }}</b>
+(n {{ s.overall.n }}, 95% {{ pct(s.overall.wilson95[0]) }}..{{ pct(s.overall.wilson95[1]) }}).</p>
+<img class="chart" src="eval/success.png" alt="success rate per task with 95% Wilson intervals">
+{% for title, group in groups %}{% if group %}<h2>per {{ title }}</h2>
+<table id="{{ title|replace(' ', '-') }}"><tr><th>{{ title }}</th><th>success</th><th>stderr</th><th>95% Wilson</th><th>n</th></tr>
+{% for k, r in group.items() %}<tr><td>{{ k }}</td><td class="num">{{ pct(r.mean) }}</td><td class="num">{{ pct(r.stderr) }}</td>
+<td class="num">{{ pct(r.wilson95[0]) }}..{{ pct(r.wilson95[1]) }}</td><td class="num">{{ r.n }}</td></tr>
+{% endfor %}</table>{% endif %}{% endfor %}
+<h2>episodes</h2>
+{% for key, eps in episodes %}<details{% if loop.first %} open{% endif %}><summary>{{ key }}: {{ eps|selectattr("success")|list|length }}/{{ eps|length }}</summary>
+{% for e in eps %}<div class="episode" data-success="{{ e.success|lower }}">seed {{ e.seed }} ({{ e.instruction_variant }}): {% if e.success %}success in {{ e.steps }} steps{% else %}<span class="fail">failed after {{ e.steps }} steps: {{ e.unsatisfied|join("; ") }}</span>{% endif %}
+{% if e.video %}<br><video controls muted preload="metadata" src="eval/{{ e.video }}"></video>{% endif %}</div>
+{% endfor %}</details>{% endfor %}
+</body></html>
+""", autoescape=True)
+
+
+def _pct(v: float) -> str:
+    return f"{100 * v:.1f}%"
+
+
+def _chart(summary: dict, path: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    tasks = summary["tasks"]
+    names = list(tasks)
+    means = [tasks[n]["mean"] * 100 for n in names]
+    lo = [max(0.0, (tasks[n]["mean"] - tasks[n]["wilson95"][0]) * 100) for n in names]
+    hi = [max(0.0, (tasks[n]["wilson95"][1] - tasks[n]["mean"]) * 100) for n in names]
+    fig, ax = plt.subplots(figsize=(max(4.0, 0.35 * len(names) + 2), 4.0), dpi=100)
+    ax.bar(range(len(names)), means, yerr=[lo, hi], capsize=3, color="#4c72b0")
+    ax.set_xticks(range(len(names)), names, rotation=70, ha="right", fontsize=7)
+    ax.set_ylabel("success (%), 95% Wilson interval")
+    ax.set_ylim(0, 105)
+    ax.set_title(f"{summary['config']['policy']}: success per task")
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+
+
+def is_run_dir(path: Path) -> bool:
+    """``path`` holds an ``rpg eval`` run (``run.json`` and ``summary.json``)."""
+    return (Path(path) / "run.json").is_file() and (Path(path) / "summary.json").is_file()
+
+
+def write_eval_report(run_dir: str | Path, site: str | Path) -> Path:
+    """Write ``site/eval.html`` (with ``site/eval/``) for a run; return the page's path.
+
+    Raises:
+        BadInput: ``run_dir`` holds no finished run, or ``site`` is a file.
+    """
+    run_dir, site = Path(run_dir), Path(site)
+    if not is_run_dir(run_dir):
+        raise BadInput(f"{run_dir} holds no rpg eval run (run.json and summary.json)")
+    if site.exists() and not site.is_dir():
+        raise BadInput(f"{site} is a file; -o needs a directory for the site")
+    summary = json.loads((run_dir / "summary.json").read_text())
+    (site / "eval").mkdir(parents=True, exist_ok=True)
+    _chart(summary, site / "eval" / "success.png")
+    by_task: dict[str, list[dict]] = {}
+    for e in sorted(read_episodes(run_dir / "episodes.jsonl"), key=lambda e: (task_key(e), e["instruction_variant"], e["seed"])):
+        by_task.setdefault(task_key(e), []).append(e)
+        video = e.get("video")
+        if video and (run_dir / video).is_file() and not (run_dir / video).is_symlink():
+            dst = site / "eval" / video
+            dst.parent.mkdir(parents=True, exist_ok=True)
+            shutil.copyfile(run_dir / video, dst)
+        elif video:
+            e["video"] = None
+    groups = [("task", summary["tasks"]), ("family", summary["families"]), ("intent", summary["intents"]),
+              ("split", summary["splits"]), ("instruction", summary["instructions"])]
+    page = site / "eval.html"
+    page.write_text(PAGE.render(cfg=summary["config"], s=summary, groups=groups, episodes=list(by_task.items()), pct=_pct))
+    return page

@@ -1,0 +1,407 @@
+"""Running a policy over the episodes of a target and recording them (``rpg eval``).
+
+A run directory holds ``run.json`` (the settings), ``episodes.jsonl`` (one line per finished
+episode: the run's commit log), ``summary.json`` (:func:`rpg.eval.stats.summarize`) and, with
+``video``, ``videos/``.  A run killed at any point resumes: finished episodes are kept and
+only the missing ones run; a torn last line is discarded.  Episodes run in ``jobs`` spawned
+processes; every episode is determined by (task, seed, instruction) and the policy, so a
+deterministic policy gives the same ``summary.json``, byte for byte, for any job count.
+"""
+
+from __future__ import annotations
+
+import concurrent.futures as cf
+import hashlib
+import json
+import multiprocessing
+import os
+from collections.abc import Callable
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from rpg.errors import BadInput
+from rpg.eval.policies import BUILTIN, PolicyError, action_chunk, load_policy
+
+SEEDS_PER_UNIT = 5
+"""Episodes of one task a worker runs per work unit (its environment is built once per
+process and reused)."""
+
+DEFAULT_IMAGE_SIZE = (224, 224)
+"""Camera images (height, width) sent to learned policies, pixels (openpi's input size)."""
+
+VIDEO_SIZE = (256, 256)
+"""Agentview video frames (height, width) with ``video``, pixels."""
+
+
+@dataclass(frozen=True)
+class EvalTask:
+    """One task of a target: its artifact directory and where it sits in the library."""
+
+    path: str
+    name: str
+    family: str | None = None
+    version: int | None = None
+    intent: str | None = None
+    split: str | None = None
+    paraphrases: int = 0
+
+    @property
+    def key(self) -> str:
+        return f"{self.family}@v{self.version}" if self.family else self.name
+
+
+@dataclass(frozen=True)
+class EvalConfig:
+    """The settings of a run (recorded in ``run.json``; a resumed run must have the same).
+
+    Attributes:
+        target: what to evaluate (see :func:`eval_tasks`).
+        policy: the policy SPEC (:func:`rpg.eval.policies.load_policy`).
+        seeds: episode seeds, the same for every task (rho_0 samples).
+        embodiment: ``panda`` or ``floating_gripper``.
+        instruction: ``canonical``, ``paraphrase:K`` or ``all`` (canonical and every paraphrase).
+        cameras: camera observations; None: none for built-in policies, agentview and
+            wrist for the others.
+        image_size: (height, width) of camera observations, pixels.
+        replan: actions of a returned chunk executed before the policy is asked again
+            (None: the whole chunk).
+        video: write an agentview MP4 per episode.
+        library: the manifest a ``KEY=VALUE`` target filters.
+    """
+
+    target: str
+    policy: str
+    seeds: tuple[int, ...]
+    embodiment: str = "panda"
+    instruction: str = "canonical"
+    cameras: tuple[str, ...] | None = None
+    image_size: tuple[int, int] = DEFAULT_IMAGE_SIZE
+    replan: int | None = None
+    video: bool = False
+    library: str = "library/manifest.yaml"
+    extra: dict = field(default_factory=dict)
+
+    def camera_list(self) -> tuple[str, ...]:
+        if self.cameras is not None:
+            return tuple(self.cameras)
+        return () if self.policy in BUILTIN else ("agentview", "wrist")
+
+    def to_json(self) -> dict:
+        doc = asdict(self)
+        doc["seeds"] = list(self.seeds)
+        doc["image_size"] = list(self.image_size)
+        doc["cameras"] = list(self.camera_list())
+        doc.pop("extra")
+        return doc
+
+
+# -- targets -----------------------------------------------------------------------
+def _family_tasks(path: Path, name: str, split: str | None, only: int | None = None) -> list[EvalTask]:
+    from rpg.artifact import load_artifact
+    from rpg.steer.family import Family
+
+    fam = Family(path)
+    out = []
+    for v in fam.load().versions:
+        if only is not None and v.version_id != only:
+            continue
+        d = fam.version_dir(v.version_id)
+        schema, _ = load_artifact(d)
+        out.append(EvalTask(str(d), schema.name, name, v.version_id, v.intent, split, len(schema.paraphrases)))
+    return out
+
+
+def _plain_task(path: Path, split: str | None = None, name: str | None = None) -> EvalTask:
+    from rpg.artifact import load_artifact
+
+    schema, _ = load_artifact(path)
+    return EvalTask(str(path), name or path.name, split=split, paraphrases=len(schema.paraphrases))
+
+
+def _manifest_tasks(manifest_path: Path) -> list[EvalTask]:
+    from rpg.library.build import load_manifest
+
+    manifest = load_manifest(manifest_path)
+    base = manifest_path.parent
+    out: list[EvalTask] = []
+    for e in manifest.entries:
+        if e.kind == "family":
+            out += _family_tasks(base / e.name, e.name, e.split)
+        else:
+            out.append(_plain_task(base / e.name, e.split, e.name))
+    return out
+
+
+def _tag_matches(directory: str, key: str, value: str) -> bool:
+    from rpg.artifact import load_artifact
+
+    _, doc = load_artifact(Path(directory))
+    have = (doc.get("tags") or {}).get(key)
+    values = have if isinstance(have, list) else [have]
+    return value in [str(v) for v in values]
+
+
+def eval_tasks(target: str, library: str | Path = "library/manifest.yaml") -> list[EvalTask]:
+    """The tasks a target names, in a fixed order.
+
+    ``target``: a task directory; a family directory (every version) or ``FAMILY@vN`` (one);
+    a library manifest (every entry, a family's every version); or a filter ``KEY=VALUE``
+    over ``library``'s manifest: ``split=NAME`` (the manifest's split) or a tag of
+    ``task.yaml`` (``reasoning=semantic``, ``complexity=hierarchical``, ``asset_class=SemanticCube``...).
+
+    Raises:
+        BadInput: no such target, an unreadable manifest, or a filter that selects nothing.
+    """
+    from rpg.steer.family import Family, is_family
+
+    text = str(target)
+    path = Path(text)
+    if path.is_file() and path.suffix in (".yaml", ".yml"):
+        return _manifest_tasks(path)
+    if "=" in text and not path.exists():
+        key, _, value = text.partition("=")
+        key, value = key.strip(), value.strip()
+        lib = Path(library)
+        if not lib.is_file():
+            raise BadInput(f"filter {text!r} needs a library manifest; {lib} does not exist (give --library)")
+        tasks = _manifest_tasks(lib)
+        chosen = [t for t in tasks if (t.split == value if key == "split" else _tag_matches(t.path, key, value))]
+        if not chosen:
+            raise BadInput(f"filter {text!r} selects no task of {lib}")
+        return chosen
+    if "@" in text and not path.exists():
+        fam_text, _, ref = text.rpartition("@")
+        if is_family(Path(fam_text)):
+            version = Family(Path(fam_text)).resolve(ref).version_id
+            return _family_tasks(Path(fam_text), Path(fam_text).name, None, only=version)
+    if is_family(path):
+        return _family_tasks(path, path.name, None)
+    if (path / "task.yaml").is_file():
+        return [_plain_task(path)]
+    raise BadInput(f"no task at {text!r}: give a task directory, a family (or FAMILY@vN), a library manifest "
+                   "or a filter KEY=VALUE")
+
+
+def instruction_variants(mode: str, task: EvalTask) -> list[str]:
+    """The instructions a task is evaluated with: ``canonical``, ``paraphrase:K``, or for
+    ``all`` the canonical one and every paraphrase.
+
+    Raises:
+        BadInput: an unknown mode.
+    """
+    if mode == "all":
+        return ["canonical", *(f"paraphrase:{k}" for k in range(task.paraphrases))]
+    head, _, k = mode.partition(":")
+    if mode == "canonical" or (head == "paraphrase" and k.isdigit()):
+        return [mode]
+    raise BadInput(f"--instruction must be canonical, paraphrase:K or all, not {mode!r}")
+
+
+# -- episodes ------------------------------------------------------------------------
+def _initial_state_hash(env) -> str:
+    poses = env.unwrapped.scene.poses()
+    flat = np.array([[*p.pos, *p.quat] for _, p in sorted(poses.items())]).round(6)
+    return hashlib.sha256(flat.tobytes()).hexdigest()[:16]
+
+
+def run_episode(env, policy, seed: int, replan: int | None, video_path: Path | None = None) -> dict:
+    """One episode of ``policy`` from ``seed``; the record's outcome fields.
+
+    Raises:
+        PolicyError: the policy answered with something that is not an action (chunk).
+    """
+    from rpg.env.video import VideoWriter
+
+    obs, info = env.reset(seed=int(seed))
+    initial = _initial_state_hash(env)
+    policy.reset(env.unwrapped.instruction)
+    dim = env.action_space.shape[0]
+    writer = VideoWriter(video_path, fps=env.metadata["render_fps"]) if video_path else None
+    steps, queue, done, truncated = 0, [], False, False
+    try:
+        if writer:
+            writer.write(env.unwrapped.render_camera("agentview"))
+        while not done:
+            if not queue:
+                chunk = action_chunk(policy.act(obs), dim)
+                queue = list(chunk[: replan or len(chunk)])
+            obs, _, terminated, truncated, info = env.step(queue.pop(0))
+            steps += 1
+            done = terminated or truncated
+            if writer:
+                writer.write(env.unwrapped.render_camera("agentview"))
+    finally:
+        if writer:
+            writer.__exit__(None)
+    return {"success": bool(info["success"]), "steps": steps, "truncated": bool(truncated),
+            "initial_state": initial, "instruction": env.unwrapped.instruction,
+            "unsatisfied": list(info["diagnostics"]["unsatisfied"]),
+            "satisfied": list(info["diagnostics"]["satisfied"])}
+
+
+@dataclass(frozen=True)
+class Unit:
+    """Work for one process: some seeds of one task with one instruction."""
+
+    task: EvalTask
+    variant: str
+    seeds: tuple[int, ...]
+    config: EvalConfig
+    run_dir: str
+
+
+_ENVS: dict = {}
+"""This process's environments by (task path, instruction variant)."""
+_POLICY: dict = {}
+"""This process's policies by SPEC: [policy, the environment it is bound to]."""
+
+
+def _env_for(unit: Unit):
+    from rpg.env import BlockTaskEnv
+
+    key = (unit.task.path, unit.variant)
+    if key not in _ENVS:
+        cfg = unit.config
+        size = VIDEO_SIZE if cfg.video and not cfg.camera_list() else tuple(cfg.image_size)
+        env = BlockTaskEnv(unit.task.path, embodiment=cfg.embodiment, cameras=cfg.camera_list(),
+                           image_size=size, instruction=unit.variant)
+        _ENVS[key] = (env, env.source.content_hash)
+    return _ENVS[key]
+
+
+def _policy_for(spec: str, env):
+    """This process's policy for ``spec``, bound to ``env`` (``bind`` again when the
+    environment changes)."""
+    if spec not in _POLICY:
+        _POLICY[spec] = [load_policy(spec), None]
+    entry = _POLICY[spec]
+    if entry[1] is not env and callable(getattr(entry[0], "bind", None)):
+        entry[0].bind(env)
+    entry[1] = env
+    return entry[0]
+
+
+def run_unit(unit: Unit) -> list[dict]:
+    """Run a unit's episodes; their ``episodes.jsonl`` records."""
+    env, content_hash = _env_for(unit)
+    policy = _policy_for(unit.config.policy, env)
+    out = []
+    for seed in unit.seeds:
+        video = None
+        if unit.config.video:
+            video = Path(unit.run_dir) / "videos" / f"{unit.task.key.replace('@', '-')}-{unit.variant.replace(':', '')}-s{seed}.mp4"
+            video.parent.mkdir(parents=True, exist_ok=True)
+        result = run_episode(env, policy, seed, unit.config.replan, video)
+        out.append({"task": unit.task.name, "task_path": unit.task.path, "task_hash": content_hash,
+                    "family": unit.task.family, "version": unit.task.version, "intent": unit.task.intent,
+                    "split": unit.task.split, "seed": int(seed), "instruction_variant": unit.variant,
+                    "embodiment": unit.config.embodiment, "policy": unit.config.policy, **result,
+                    "video": str(video.relative_to(unit.run_dir)) if video else None})
+    return out
+
+
+def _episode_key(rec: dict) -> tuple:
+    return rec["task_path"], rec["instruction_variant"], int(rec["seed"])
+
+
+def read_episodes(path: Path) -> list[dict]:
+    """The complete lines of ``episodes.jsonl``; a torn last line (a kill mid-write) is cut off."""
+    if not path.is_file():
+        return []
+    raw = path.read_bytes()
+    records, good = [], 0
+    for line in raw.split(b"\n"):
+        if not line.strip():
+            good += len(line) + 1
+            continue
+        try:
+            records.append(json.loads(line))
+        except ValueError:
+            break
+        good += len(line) + 1
+    if good < len(raw):
+        with open(path, "r+b") as fh:
+            fh.truncate(min(good, len(raw)))
+    return records
+
+
+def _check_run_dir(run_dir: Path, config: EvalConfig) -> None:
+    settings = run_dir / "run.json"
+    if run_dir.exists() and not run_dir.is_dir():
+        raise BadInput(f"-o {run_dir} exists and is not a directory")
+    if settings.is_file():
+        try:
+            before = json.loads(settings.read_text())
+        except ValueError:
+            raise BadInput(f"{settings} is not readable JSON; give a new -o directory") from None
+        if before != config.to_json():
+            changed = sorted(k for k in set(before) | set(config.to_json()) if before.get(k) != config.to_json().get(k))
+            raise BadInput(f"{run_dir} holds a run with other settings ({', '.join(changed)}); give a new -o "
+                           "directory, or the same settings to resume it")
+    elif run_dir.is_dir() and any(run_dir.iterdir()):
+        raise BadInput(f"{run_dir} is not empty and holds no run.json; give a new -o directory")
+
+
+def run_eval(config: EvalConfig, run_dir: str | Path, jobs: int = 1,
+             progress: Callable[[dict], None] | None = None) -> dict:
+    """Run ``config`` into ``run_dir`` (resuming what is there); return the summary.
+
+    Raises:
+        BadInput: a bad target, policy, instruction mode or run directory.
+        PolicyError: the policy failed (the episodes finished before it are kept).
+    """
+    from rpg.artifact import write_file
+    from rpg.eval.stats import summarize
+
+    if not config.seeds:
+        raise BadInput("no seeds: give --episodes N (N >= 1) or --seeds LIST")
+    if config.replan is not None and config.replan < 1:
+        raise BadInput("--replan must be at least 1")
+    run_dir = Path(run_dir)
+    _check_run_dir(run_dir, config)
+    tasks = eval_tasks(config.target, config.library)
+    work = [(t, v) for t in tasks for v in instruction_variants(config.instruction, t)]
+    if config.policy not in BUILTIN:
+        load_policy(config.policy)  # fail before anything is written: a bad module or an unreachable server
+    run_dir.mkdir(parents=True, exist_ok=True)
+    write_file(run_dir / "run.json", json.dumps(config.to_json(), indent=2, sort_keys=True) + "\n")
+    log = run_dir / "episodes.jsonl"
+    records = read_episodes(log)
+    done = {_episode_key(r) for r in records}
+    units = []
+    for task, variant in work:
+        todo = [s for s in config.seeds if (task.path, variant, int(s)) not in done]
+        for i in range(0, len(todo), SEEDS_PER_UNIT):
+            units.append(Unit(task, variant, tuple(todo[i:i + SEEDS_PER_UNIT]), config, str(run_dir)))
+    with open(log, "ab") as fh:
+        def commit(batch: list[dict]) -> None:
+            for rec in batch:
+                fh.write((json.dumps(rec, sort_keys=True) + "\n").encode())
+                records.append(rec)
+                if progress:
+                    progress(rec)
+            fh.flush()
+            os.fsync(fh.fileno())
+
+        if jobs <= 1:
+            for unit in units:
+                commit(run_unit(unit))
+        else:
+            with cf.ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
+                futures = [pool.submit(run_unit, u) for u in units]
+                try:
+                    for fut in cf.as_completed(futures):
+                        commit(fut.result())
+                except BaseException:
+                    for f in futures:
+                        f.cancel()
+                    raise
+    wanted = {(t.path, v, int(s)) for t, v in work for s in config.seeds}
+    summary = summarize([r for r in records if _episode_key(r) in wanted], config.to_json())
+    write_file(run_dir / "summary.json", json.dumps(summary, indent=2, sort_keys=True) + "\n")
+    return summary
+
+
+__all__ = ["EvalConfig", "EvalTask", "PolicyError", "eval_tasks", "read_episodes", "run_eval", "run_episode"]
