@@ -152,6 +152,10 @@ SPAWN_CLEARANCE: float = 0.0005
 MAX_SAMPLING_TRIES: int = 2000
 """Rejection-sampling attempts before a layout is declared infeasible."""
 
+MAX_TRIVIAL_REDRAWS: int = 50
+"""Times a rho_0 sample in which G already holds is drawn again at reset (project; issue
+"rpg eval": a policy that does nothing must score 0)."""
+
 MAX_REGION_REDRAWS: int = 200
 """Whole layouts drawn at most to keep cubes outside their goal regions (``avoid``)."""
 

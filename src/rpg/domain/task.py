@@ -66,12 +66,20 @@ class BlockTask:
     def reset(self, seed: int = 0) -> dict[str, Pose]:
         """Start an episode: sample rho_0 with ``numpy.random.default_rng(seed)`` and set it.
 
+        rho_0 is conditioned on G being false: a sample in which the goal already holds is
+        drawn again from the same generator, up to :data:`~rpg.domain.constants.MAX_TRIVIAL_REDRAWS`
+        times (so a policy that does nothing scores 0; the non-trivial gate rejects a task
+        whose samples keep satisfying G).
+
         Returns:
             The sampled poses, by name.
         """
         rng = np.random.default_rng(seed)
-        poses = self.initial_state(rng)
-        self.set_state(poses)
+        for _ in range(C.MAX_TRIVIAL_REDRAWS + 1):
+            poses = self.initial_state(rng)
+            self.set_state(poses)
+            if not self.success():
+                break
         return poses
 
     def set_state(self, poses: Mapping[str, Pose]) -> None:

@@ -30,7 +30,8 @@ OBSERVATION_KEYS = {
 }
 """openpi observation key -> :class:`rpg.env.BlockTaskEnv` observation key.  ``state`` is the
 TCP position (3, m, world frame), its orientation as an axis-angle (3, rad) and the two finger
-positions (2, m), sent as float32; images are (H, W, 3) uint8."""
+positions (2, m), float64 as the environment gives it (a server casts what it needs); images
+are (H, W, 3) uint8."""
 
 
 def pack_array(obj):
@@ -64,9 +65,4 @@ unpackb = functools.partial(msgpack.unpackb, object_hook=unpack_array)
 
 def openpi_observation(obs: dict) -> dict:
     """The openpi observation map of an environment observation (keys present only)."""
-    out = {}
-    for key, ours in OBSERVATION_KEYS.items():
-        if ours in obs:
-            value = obs[ours]
-            out[key] = np.asarray(value, np.float32) if ours == "state" else value
-    return out
+    return {key: obs[ours] for key, ours in OBSERVATION_KEYS.items() if ours in obs}

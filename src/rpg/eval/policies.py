@@ -17,6 +17,7 @@ policy server, :mod:`rpg.eval.openpi`).
 
 from __future__ import annotations
 
+import contextlib
 import importlib
 import importlib.util
 import re
@@ -106,8 +107,10 @@ class WebsocketPolicy:
         from rpg.eval.openpi import unpackb
 
         self.url = url
+        self._stack = contextlib.ExitStack()
         try:
-            self._ws = connect(url, compression=None, max_size=None, open_timeout=CONNECT_TIMEOUT_S)
+            self._ws = self._stack.enter_context(
+                connect(url, compression=None, max_size=None, open_timeout=CONNECT_TIMEOUT_S))
             self.metadata = unpackb(self._ws.recv(timeout=CONNECT_TIMEOUT_S))
         except (OSError, TimeoutError, ValueError) as exc:
             raise PolicyError(f"cannot reach the policy server at {url}: {exc}") from None
@@ -134,7 +137,7 @@ class WebsocketPolicy:
         return np.asarray(doc["actions"])
 
     def close(self) -> None:
-        self._ws.close()
+        self._stack.close()
 
 
 def _load_class(spec: str):

@@ -200,7 +200,8 @@ def instruction_variants(mode: str, task: EvalTask) -> list[str]:
 
 
 # -- episodes ------------------------------------------------------------------------
-def _initial_state_hash(env) -> str:
+def _state_hash(env) -> str:
+    """A short hash of every object's pose (rounded to 1e-6): tells episodes' states apart."""
     poses = env.unwrapped.scene.poses()
     flat = np.array([[*p.pos, *p.quat] for _, p in sorted(poses.items())]).round(6)
     return hashlib.sha256(flat.tobytes()).hexdigest()[:16]
@@ -215,7 +216,7 @@ def run_episode(env, policy, seed: int, replan: int | None, video_path: Path | N
     from rpg.env.video import VideoWriter
 
     obs, info = env.reset(seed=int(seed))
-    initial = _initial_state_hash(env)
+    initial = _state_hash(env)
     policy.reset(env.unwrapped.instruction)
     dim = env.action_space.shape[0]
     writer = VideoWriter(video_path, fps=env.metadata["render_fps"]) if video_path else None
@@ -236,7 +237,7 @@ def run_episode(env, policy, seed: int, replan: int | None, video_path: Path | N
         if writer:
             writer.__exit__(None)
     return {"success": bool(info["success"]), "steps": steps, "truncated": bool(truncated),
-            "initial_state": initial, "instruction": env.unwrapped.instruction,
+            "initial_state": initial, "final_state": _state_hash(env), "instruction": env.unwrapped.instruction,
             "unsatisfied": list(info["diagnostics"]["unsatisfied"]),
             "satisfied": list(info["diagnostics"]["satisfied"])}
 
@@ -281,6 +282,17 @@ def _policy_for(spec: str, env):
         entry[0].bind(env)
     entry[1] = env
     return entry[0]
+
+
+def close_workers() -> None:
+    """Close this process's environments and policies (a remote policy's connection)."""
+    for env, _ in _ENVS.values():
+        env.close()
+    for policy, _ in _POLICY.values():
+        if callable(getattr(policy, "close", None)):
+            policy.close()
+    _ENVS.clear()
+    _POLICY.clear()
 
 
 def run_unit(unit: Unit) -> list[dict]:
@@ -386,8 +398,11 @@ def run_eval(config: EvalConfig, run_dir: str | Path, jobs: int = 1,
             os.fsync(fh.fileno())
 
         if jobs <= 1:
-            for unit in units:
-                commit(run_unit(unit))
+            try:
+                for unit in units:
+                    commit(run_unit(unit))
+            finally:
+                close_workers()
         else:
             with cf.ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
                 futures = [pool.submit(run_unit, u) for u in units]

@@ -1,0 +1,239 @@
+"""rpg eval on real library tasks: built-in, plug-in and remote (openpi websocket) policies,
+summary statistics, determinism over job counts, resuming after kill -9, comparison of runs,
+and the evaluation page in headless Chromium."""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import signal
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import msgpack
+import numpy as np
+import pytest
+
+from rpg.eval import EvalConfig, run_eval, wilson_interval
+from rpg.eval.openpi import openpi_observation, packb, unpackb
+from rpg.eval.runner import eval_tasks
+from rpg.eval.stats import two_proportion_test
+
+ROOT = Path(__file__).resolve().parents[1]
+LIBRARY = ROOT / "library"
+FLOAT = "floating_gripper"
+
+
+def _rpg(*args, cwd=ROOT, timeout=600):
+    env = {**os.environ, "MUJOCO_GL": os.environ.get("MUJOCO_GL", "egl"), "LITELLM_LOCAL_MODEL_COST_MAP": "True"}
+    return subprocess.run([sys.executable, "-m", "rpg.cli", *args], capture_output=True, text=True, env=env,
+                          cwd=cwd, timeout=timeout)
+
+
+def _lines(path: Path) -> list[dict]:
+    return [json.loads(x) for x in path.read_text().splitlines() if x.strip()]
+
+
+def test_wilson_interval_and_two_proportion_test_match_published_values():
+    # Wilson score intervals at 95% (Newcombe 1998, Table I: 0/10 -> 0-0.2775, 81/263 -> 0.2553-0.3662)
+    lo, hi = wilson_interval(0, 10)
+    assert lo == 0.0 and hi == pytest.approx(0.2775, abs=1e-4)
+    lo, hi = wilson_interval(81, 263)
+    assert (lo, hi) == (pytest.approx(0.2553, abs=1e-4), pytest.approx(0.3662, abs=1e-4))
+    assert two_proportion_test(5, 5, 0, 5) == pytest.approx(0.001565, abs=1e-5)  # z = sqrt(10)
+    assert two_proportion_test(3, 5, 3, 5) == 1.0
+
+
+def test_oracle_is_the_upper_bound_noop_scores_zero_and_seeds_give_distinct_initial_states(tmp_path):
+    runs = {}
+    for policy in ("oracle", "noop", "random"):
+        runs[policy] = run_eval(EvalConfig("split=train", policy, tuple(range(3)), embodiment=FLOAT,
+                                           library=str(LIBRARY / "manifest.yaml")), tmp_path / policy)
+    tasks = runs["oracle"]["tasks"]
+    assert len(tasks) == 10 and set(runs["oracle"]["splits"]) == {"train"}
+    assert runs["noop"]["overall"]["successes"] == 0
+    assert runs["oracle"]["overall"]["mean"] >= 0.9
+    for name in tasks:
+        assert runs["oracle"]["tasks"][name]["mean"] >= runs["random"]["tasks"][name]["mean"]
+        r = runs["oracle"]["tasks"][name]
+        assert r["n"] == 3 and r["wilson95"][0] <= r["mean"] <= r["wilson95"][1]
+        assert r["stderr"] == pytest.approx((r["mean"] * (1 - r["mean"]) / 3) ** 0.5, abs=1e-6)
+    eps = _lines(tmp_path / "noop" / "episodes.jsonl")
+    assert len(eps) == 30
+    for name in tasks:  # every seed starts from its own sample of rho_0
+        starts = [e["initial_state"] for e in eps if e["task"] == name]
+        assert len(set(starts)) == 3, name
+    failed = [e for e in eps if not e["success"]]
+    assert all(e["unsatisfied"] for e in failed)  # failed predicates are recorded
+    assert all(e["instruction"] for e in eps)  # the exact prompt is recorded
+
+
+def test_summary_is_byte_identical_for_one_and_two_jobs_and_groups_family_versions_by_intent(tmp_path):
+    a = _rpg("eval", "library/pile_sorting", "--policy", "oracle", "-n", "3", "--embodiment", FLOAT,
+             "-o", str(tmp_path / "a"))
+    b = _rpg("eval", "library/pile_sorting", "--policy", "oracle", "-n", "3", "--embodiment", FLOAT,
+             "-o", str(tmp_path / "b"), "--jobs", "2")
+    assert a.returncode == 0 and b.returncode == 0, a.stderr + b.stderr
+    assert (tmp_path / "a" / "summary.json").read_bytes() == (tmp_path / "b" / "summary.json").read_bytes()
+    s = json.loads((tmp_path / "a" / "summary.json").read_text())
+    assert set(s["tasks"]) == {"pile_sorting@v0", "pile_sorting@v1", "pile_sorting@v2"}
+    assert set(s["intents"]) == {"base", "modify"} and s["intents"]["modify"]["n"] == 6
+    assert s["families"]["pile_sorting"]["n"] == 9
+
+
+def test_a_killed_run_resumes_keeping_finished_episodes(tmp_path):
+    run = tmp_path / "run"
+    args = [sys.executable, "-m", "rpg.cli", "eval", "library/three_block_stack", "--policy", "oracle",
+            "-n", "10", "--embodiment", FLOAT, "-o", str(run)]
+    proc = subprocess.Popen(args, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                            env={**os.environ, "MUJOCO_GL": os.environ.get("MUJOCO_GL", "egl")})
+    log = run / "episodes.jsonl"
+    deadline = time.time() + 120
+    while time.time() < deadline and (not log.is_file() or len(log.read_text().splitlines()) < 3):
+        time.sleep(0.05)
+    os.kill(proc.pid, signal.SIGKILL)
+    proc.wait()
+    kept = log.read_text().splitlines()
+    assert 3 <= len(kept) < 10
+    with open(log, "a") as fh:  # a line torn by the kill
+        fh.write('{"task": "three_block_stack", "seed": 9')
+    r = _rpg("eval", "library/three_block_stack", "--policy", "oracle", "-n", "10", "--embodiment", FLOAT, "-o", str(run))
+    assert r.returncode == 0, r.stderr
+    lines = log.read_text().splitlines()
+    assert lines[:len(kept)] == kept and len(lines) == 10
+    assert sorted(json.loads(x)["seed"] for x in lines) == list(range(10))
+    fresh = _rpg("eval", "library/three_block_stack", "--policy", "oracle", "-n", "10", "--embodiment", FLOAT,
+                 "-o", str(tmp_path / "fresh"))
+    assert fresh.returncode == 0
+    assert (run / "summary.json").read_bytes() == (tmp_path / "fresh" / "summary.json").read_bytes()
+    # the same directory with other settings is refused, not mixed
+    r = _rpg("eval", "library/three_block_stack", "--policy", "noop", "-n", "10", "--embodiment", FLOAT, "-o", str(run))
+    assert r.returncode == 2 and "other settings (policy)" in r.stderr
+
+
+def test_packed_bytes_follow_openpi_msgpack_numpy():
+    """openpi-client's msgpack_numpy packs an array as the map {__ndarray__, data, dtype, shape}
+    with bytes keys and a numpy scalar as {__npgeneric__, data, dtype}; the bytes must be the
+    same as packing that map by hand with plain msgpack."""
+    img = np.arange(12, dtype=np.uint8).reshape(2, 2, 3)
+    state = np.array([0.5, -0.25], dtype=np.float64)
+    ours = packb({"observation/image": img, "observation/state": state, "prompt": "stack", "k": np.float32(1.5)})
+    by_hand = msgpack.packb({
+        "observation/image": {b"__ndarray__": True, b"data": img.tobytes(), b"dtype": "|u1", b"shape": (2, 2, 3)},
+        "observation/state": {b"__ndarray__": True, b"data": state.tobytes(), b"dtype": "<f8", b"shape": (2,)},
+        "prompt": "stack",
+        "k": {b"__npgeneric__": True, b"data": 1.5, b"dtype": "<f4"}})
+    assert ours == by_hand
+    back = unpackb(ours)
+    assert np.array_equal(back["observation/image"], img) and back["observation/image"].dtype == np.uint8
+    assert back["k"] == np.float32(1.5)
+    mapped = openpi_observation({"agentview_image": img, "wrist_image": img, "state": state, "instruction": "x",
+                                 "qpos": state})
+    assert set(mapped) == {"observation/image", "observation/wrist_image", "observation/state", "prompt"}
+
+
+def _serve_openpi(policy):
+    """An openpi-protocol server for ``policy`` on a free local port (metadata first, then one
+    action chunk per observation); returns (url, server)."""
+    from websockets.sync.server import serve
+
+    sys.path.insert(0, str(ROOT / "tests"))
+
+    def handler(ws):
+        ws.send(packb({"policy": "scripted", "action_dim": 7}))
+        for message in ws:
+            obs = unpackb(message)
+            ours = {"state": obs["observation/state"], "agentview_image": obs["observation/image"]}
+            ws.send(packb({"actions": policy.act(ours)}))
+
+    server = serve(handler, "127.0.0.1", 0, compression=None, max_size=None)
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    return f"ws://127.0.0.1:{server.socket.getsockname()[1]}", server
+
+
+def test_a_websocket_policy_gives_the_same_results_as_the_same_policy_in_process(tmp_path):
+    sys.path.insert(0, str(ROOT / "tests"))
+    from eval_policies import Scripted
+
+    url, server = _serve_openpi(Scripted())
+    try:
+        common = dict(target=str(LIBRARY / "stack_blocks"), seeds=(0, 1), embodiment=FLOAT, replan=2,
+                      image_size=(32, 32))
+        remote = run_eval(EvalConfig(policy=url, **common), tmp_path / "remote")
+        local = run_eval(EvalConfig(policy=str(ROOT / "tests" / "eval_policies.py") + ":Scripted", **common),
+                         tmp_path / "local")
+    finally:
+        server.shutdown()
+    keys = ("seed", "success", "steps", "initial_state", "final_state", "unsatisfied", "instruction")
+    r = [{k: e[k] for k in keys} for e in _lines(tmp_path / "remote" / "episodes.jsonl")]
+    l_ = [{k: e[k] for k in keys} for e in _lines(tmp_path / "local" / "episodes.jsonl")]
+    assert r == l_
+    assert any(e["final_state"] != e["initial_state"] for e in r) or all(e["steps"] > 1 for e in r)
+    assert remote["tasks"] == local["tasks"]
+
+
+def test_bad_input_is_one_line_and_writes_nothing(tmp_path):
+    out = tmp_path / "run"
+    for args, msg in (
+        (["library/stack_blocks", "--policy", "nosuch:Policy"], "cannot be imported"),
+        (["library/stack_blocks", "--policy", "gpt"], "unknown policy"),
+        (["library/stack_blocks", "-n", "3", "--seeds", "1,2"], "not both"),
+        (["library/stack_blocks", "--seeds", "1,x"], "--seeds takes"),
+        (["library/nope"], "no task at"),
+        (["reasoning=nonsense", "--library", str(LIBRARY / "manifest.yaml")], "selects no task"),
+        (["library/stack_blocks", "--instruction", "paraphrase"], "--instruction must be"),
+        (["library/stack_blocks", "--policy", "ws://127.0.0.1:9"], "cannot reach the policy server"),
+    ):
+        r = _rpg("eval", *args, "-o", str(out))
+        assert r.returncode == 2, (args, r.stderr)
+        assert msg in r.stderr and "Traceback" not in r.stderr, (args, r.stderr)
+        assert not out.exists(), args
+    r = _rpg("eval", "compare", str(tmp_path))
+    assert r.returncode == 2 and "two run directories" in r.stderr
+
+
+def test_targets_tag_filters_and_splits():
+    manifest = LIBRARY / "manifest.yaml"
+    semantic = eval_tasks("reasoning=semantic", manifest)
+    assert semantic and all(t.name in {"arrange_letters", "arrange_word", "arrange_numbers", "arrange_equation",
+                                       "arrange_shapes", "rotate_cube", "semantic_spelling"} or t.family
+                            for t in semantic)
+    assert {t.name for t in eval_tasks("split=eval", manifest)} >= {"stack_green_on_blue", "yellow_on_red_unstack_restack"}
+    assert len(eval_tasks("split=eval", manifest)) == 12
+    one = eval_tasks(str(LIBRARY / "pile_sorting") + "@v1", manifest)
+    assert [(t.family, t.version, t.intent) for t in one] == [("pile_sorting", 1, "modify")]
+
+
+def test_compare_calls_a_large_difference_real(tmp_path):
+    for policy in ("oracle", "noop"):
+        run_eval(EvalConfig(str(LIBRARY / "stack_blocks"), policy, tuple(range(8)), embodiment=FLOAT), tmp_path / policy)
+    r = _rpg("eval", "compare", str(tmp_path / "oracle"), str(tmp_path / "noop"), "--json")
+    assert r.returncode == 0, r.stderr
+    (row,) = json.loads(r.stdout)
+    assert row["task"] == "stack_blocks" and row["diff"] == -1.0 and row["significant"] and row["p_value"] < 0.001
+
+
+@pytest.mark.slow
+def test_the_evaluation_page_loads_in_chromium(tmp_path):
+    from test_report import CHROMIUM_FLAGS, chromium  # noqa: F401 - the fixture, shared
+
+    run = tmp_path / "run"
+    r = _rpg("eval", "library/stack_blocks", "--policy", "random", "-n", "2", "--embodiment", FLOAT, "--video",
+             "-o", str(run))
+    assert r.returncode == 0, r.stderr
+    site = tmp_path / "site"
+    r = _rpg("report", str(run), "-o", str(site))
+    assert r.returncode == 0, r.stderr
+    exe = subprocess.run(["which", "chromium"], capture_output=True, text=True).stdout.strip()
+    if not exe:
+        pytest.fail("chromium is not installed (the gallery test installs it)")
+    dom = subprocess.run([exe, *CHROMIUM_FLAGS, f"--user-data-dir={tmp_path / 'profile'}", "--virtual-time-budget=10000",
+                          "--dump-dom", (site / "eval.html").as_uri()], capture_output=True, text=True, timeout=120).stdout
+    assert 'id="overall"' in dom and "<table" in dom
+    assert len(re.findall(r'<div class="episode" data-success="(true|false)"', dom)) == 2
+    assert dom.count("<video") == 2 and all((site / "eval" / v).is_file() for v in re.findall(r'src="eval/([^"]+\.mp4)"', dom))
+    assert (site / "eval" / "success.png").stat().st_size > 1000
