@@ -27,6 +27,7 @@ bench: install
 	$(PY) benchmarks/bench_library.py
 	$(PY) benchmarks/bench_env.py
 	$(PY) benchmarks/bench_oracle.py
+	$(PY) benchmarks/bench_eval.py
 
 lint: install
 	$(VENV)/bin/ruff check src tests benchmarks
