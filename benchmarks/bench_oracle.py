@@ -23,26 +23,11 @@ MANIFEST = ROOT / "library" / "manifest.yaml"
 def task_success(args: tuple[str, str, int]) -> dict:
     """Oracle success of one task over seeds 0..n-1, with its notes and failures."""
     task, embodiment, seeds = args
-    from rpg.env import BlockTaskEnv
-    from rpg.oracle import Oracle
+    from rpg.oracle.solvable import solvability
 
-    env = BlockTaskEnv(task, embodiment=embodiment, cameras=())
-    oracle = Oracle(env)
-    ok, reasons = 0, set()
-    for seed in range(seeds):
-        obs, info = env.reset(seed=seed)
-        oracle.reset(obs)
-        done = False
-        while not done:
-            obs, _, terminated, truncated, info = env.step(oracle.act(obs))
-            done = terminated or truncated
-        ok += bool(info["success"])
-        if not info["success"]:
-            reasons.update(oracle.plan.notes if oracle.plan else [])
-            reasons.add(oracle.failure or ("episode step limit reached" if truncated else "G not reached")
-                        + ": " + "; ".join(info["diagnostics"]["unsatisfied"][:1]))
-    env.close()
-    return {"task": Path(task).name, "rate": ok / seeds, "reasons": sorted(reasons)[:3]}
+    result = solvability(task, seed=0, episodes=seeds, embodiment=embodiment)
+    reasons = sorted({f["reason"] for f in result["failures"]})
+    return {"task": Path(task).name, "rate": result["rate"], "reasons": reasons[:3]}
 
 
 def success_table(embodiment: str, seeds: int, jobs: int, threshold: float) -> None:
