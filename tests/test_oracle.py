@@ -174,7 +174,7 @@ def test_a_task_the_oracle_cannot_build_is_rejected_and_no_environment_loads_it(
     gates = {g["gate"]: g for g in json.loads(r.stdout)["gates"]}
     assert gates["goal_state"]["status"] == "pass"
     assert gates["solvable"]["status"] == "fail" and "the oracle solved" in gates["solvable"]["message"]
-    (rejected,) = list((tmp_path / ".rejected").iterdir())
+    (rejected,) = [p for p in (tmp_path / ".rejected").iterdir() if p.is_dir()]
     with pytest.raises(TaskInvalid, match="solvable"):
         BlockTaskEnv(rejected, embodiment="floating_gripper", cameras=())
 

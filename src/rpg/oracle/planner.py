@@ -143,12 +143,17 @@ class Oracle:
         self._gen = self._run()
 
     def act(self, obs=None) -> np.ndarray:
-        """The next ``ee_delta`` action (7,) float32."""
+        """The next ``ee_delta`` action (7,) float32; once the plan is done or has failed
+        (``failure`` says why), it holds still with the gripper open."""
         if self._gen is None:
             self.reset(obs)
         try:
             return next(self._gen)
         except StopIteration:
+            return self._hold()
+        except OracleError as exc:  # a primitive found no way (e.g. no grasp): the episode fails, reported
+            self.failure = self.failure or str(exc)
+            self._gen = iter(())
             return self._hold()
 
     def _hold(self) -> np.ndarray:
