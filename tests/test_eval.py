@@ -17,6 +17,7 @@ from pathlib import Path
 import msgpack
 import numpy as np
 import pytest
+from conftest import CHROMIUM_FLAGS
 
 from rpg.eval import EvalConfig, run_eval, wilson_interval
 from rpg.eval.openpi import openpi_observation, packb, unpackb
@@ -141,8 +142,6 @@ def _serve_openpi(policy):
     action chunk per observation); returns (url, server)."""
     from websockets.sync.server import serve
 
-    sys.path.insert(0, str(ROOT / "tests"))
-
     def handler(ws):
         ws.send(packb({"policy": "scripted", "action_dim": 7}))
         for message in ws:
@@ -218,8 +217,7 @@ def test_compare_calls_a_large_difference_real(tmp_path):
 
 
 @pytest.mark.slow
-def test_the_evaluation_page_loads_in_chromium(tmp_path):
-    from test_report import CHROMIUM_FLAGS, chromium  # noqa: F401 - the fixture, shared
+def test_the_evaluation_page_loads_in_chromium(chromium, tmp_path):
 
     run = tmp_path / "run"
     r = _rpg("eval", "library/stack_blocks", "--policy", "random", "-n", "2", "--embodiment", FLOAT, "--video",
@@ -228,10 +226,7 @@ def test_the_evaluation_page_loads_in_chromium(tmp_path):
     site = tmp_path / "site"
     r = _rpg("report", str(run), "-o", str(site))
     assert r.returncode == 0, r.stderr
-    exe = subprocess.run(["which", "chromium"], capture_output=True, text=True).stdout.strip()
-    if not exe:
-        pytest.fail("chromium is not installed (the gallery test installs it)")
-    dom = subprocess.run([exe, *CHROMIUM_FLAGS, f"--user-data-dir={tmp_path / 'profile'}", "--virtual-time-budget=10000",
+    dom = subprocess.run([chromium, *CHROMIUM_FLAGS, f"--user-data-dir={tmp_path / 'profile'}", "--virtual-time-budget=10000",
                           "--dump-dom", (site / "eval.html").as_uri()], capture_output=True, text=True, timeout=120).stdout
     assert 'id="overall"' in dom and "<table" in dom
     assert len(re.findall(r'<div class="episode" data-success="(true|false)"', dom)) == 2

@@ -1,32 +1,15 @@
 """rpg report: the gallery loads in headless Chromium with every card and image present."""
 
 import re
-import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 import yaml
+from conftest import CHROMIUM_FLAGS
 
 ROOT = Path(__file__).resolve().parents[1]
-CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-                  "--disable-background-networking", "--disable-component-update", "--disable-sync"]
-
-
-@pytest.fixture(scope="session")
-def chromium():
-    """Debian's chromium, installed by the test set-up when missing."""
-    exe = shutil.which("chromium")
-    if exe is None and shutil.which("apt-get"):
-        subprocess.run(["apt-get", "update", "-q"], capture_output=True, timeout=600)
-        subprocess.run(["apt-get", "install", "-y", "-q", "chromium"], capture_output=True, timeout=900)
-        exe = shutil.which("chromium")
-    if exe is None:
-        pytest.fail("chromium is not installed and could not be installed with apt-get")
-    return exe
-
-
 @pytest.mark.slow
 def test_gallery_has_every_card_and_image(chromium, tmp_path):
     site = tmp_path / "site"

@@ -11,12 +11,13 @@ deterministic policy gives the same ``summary.json``, byte for byte, for any job
 from __future__ import annotations
 
 import concurrent.futures as cf
+import contextlib
 import hashlib
 import json
 import multiprocessing
 import os
 from collections.abc import Callable
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import numpy as np
@@ -81,7 +82,6 @@ class EvalConfig:
     replan: int | None = None
     video: bool = False
     library: str = "library/manifest.yaml"
-    extra: dict = field(default_factory=dict)
 
     def camera_list(self) -> tuple[str, ...]:
         if self.cameras is not None:
@@ -93,7 +93,6 @@ class EvalConfig:
         doc["seeds"] = list(self.seeds)
         doc["image_size"] = list(self.image_size)
         doc["cameras"] = list(self.camera_list())
-        doc.pop("extra")
         return doc
 
 
@@ -219,9 +218,9 @@ def run_episode(env, policy, seed: int, replan: int | None, video_path: Path | N
     initial = _state_hash(env)
     policy.reset(env.unwrapped.instruction)
     dim = env.action_space.shape[0]
-    writer = VideoWriter(video_path, fps=env.metadata["render_fps"]) if video_path else None
     steps, queue, done, truncated = 0, [], False, False
-    try:
+    # the video appears only when the episode ends without error (VideoWriter discards a torn one)
+    with VideoWriter(video_path, fps=env.metadata["render_fps"]) if video_path else contextlib.nullcontext() as writer:
         if writer:
             writer.write(env.unwrapped.render_camera("agentview"))
         while not done:
@@ -233,9 +232,6 @@ def run_episode(env, policy, seed: int, replan: int | None, video_path: Path | N
             done = terminated or truncated
             if writer:
                 writer.write(env.unwrapped.render_camera("agentview"))
-    finally:
-        if writer:
-            writer.__exit__(None)
     return {"success": bool(info["success"]), "steps": steps, "truncated": bool(truncated),
             "initial_state": initial, "final_state": _state_hash(env), "instruction": env.unwrapped.instruction,
             "unsatisfied": list(info["diagnostics"]["unsatisfied"]),
@@ -319,9 +315,24 @@ def _episode_key(rec: dict) -> tuple:
 
 
 def read_episodes(path: Path) -> list[dict]:
-    """The complete lines of ``episodes.jsonl``; a torn last line (a kill mid-write) is cut off."""
+    """The complete lines of ``episodes.jsonl`` (a torn last line, from a kill mid-write, is
+    not read; :func:`_cut_torn_line` removes it before a resumed run appends)."""
+    return _complete_lines(path)[0]
+
+
+def _cut_torn_line(path: Path) -> list[dict]:
+    """Read ``episodes.jsonl`` and truncate it after its last complete line."""
+    records, good = _complete_lines(path)
+    if path.is_file() and good < path.stat().st_size:
+        with open(path, "r+b") as fh:
+            fh.truncate(good)
+    return records
+
+
+def _complete_lines(path: Path) -> tuple[list[dict], int]:
+    """The records of the complete lines and the byte length they span."""
     if not path.is_file():
-        return []
+        return [], 0
     raw = path.read_bytes()
     records, good = [], 0
     for line in raw.split(b"\n"):
@@ -333,10 +344,7 @@ def read_episodes(path: Path) -> list[dict]:
         except ValueError:
             break
         good += len(line) + 1
-    if good < len(raw):
-        with open(path, "r+b") as fh:
-            fh.truncate(min(good, len(raw)))
-    return records
+    return records, min(good, len(raw))
 
 
 def _check_run_dir(run_dir: Path, config: EvalConfig) -> None:
@@ -380,7 +388,7 @@ def run_eval(config: EvalConfig, run_dir: str | Path, jobs: int = 1,
     run_dir.mkdir(parents=True, exist_ok=True)
     write_file(run_dir / "run.json", json.dumps(config.to_json(), indent=2, sort_keys=True) + "\n")
     log = run_dir / "episodes.jsonl"
-    records = read_episodes(log)
+    records = _cut_torn_line(log)
     done = {_episode_key(r) for r in records}
     units = []
     for task, variant in work:
