@@ -116,6 +116,20 @@ def test_a_killed_run_resumes_keeping_finished_episodes(tmp_path):
     assert r.returncode == 2 and "other settings (policy)" in r.stderr
 
 
+def test_a_second_writer_of_the_same_run_is_refused(tmp_path):
+    from filelock import FileLock
+
+    run = tmp_path / "run"
+    run.mkdir()
+    with FileLock(str(run / ".rpg-eval.lock")):  # as a running rpg eval holds it
+        r = _rpg("eval", "library/stack_blocks", "--policy", "noop", "-n", "2", "--embodiment", FLOAT, "-o", str(run))
+    assert r.returncode == 2 and "another rpg eval is writing" in r.stderr
+    assert not (run / "episodes.jsonl").exists()
+    r = _rpg("eval", "library/stack_blocks", "--policy", "noop", "-n", "2", "--embodiment", FLOAT, "-o", str(run))
+    assert r.returncode == 0, r.stderr  # the lock file alone does not make the directory foreign
+    assert len(_lines(run / "episodes.jsonl")) == 2
+
+
 def test_packed_bytes_follow_openpi_msgpack_numpy():
     """openpi-client's msgpack_numpy packs an array as the map {__ndarray__, data, dtype, shape}
     with bytes keys and a numpy scalar as {__npgeneric__, data, dtype}; the bytes must be the

@@ -21,6 +21,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import numpy as np
+from filelock import FileLock, Timeout
 
 from rpg.errors import BadInput
 from rpg.eval.policies import BUILTIN, PolicyError, action_chunk, load_policy
@@ -31,6 +32,9 @@ process and reused)."""
 
 DEFAULT_IMAGE_SIZE = (224, 224)
 """Camera images (height, width) sent to learned policies, pixels (openpi's input size)."""
+
+LOCK_NAME = ".rpg-eval.lock"
+"""The lock file that keeps a second ``rpg eval`` from writing the same run directory."""
 
 VIDEO_SIZE = (256, 256)
 """Agentview video frames (height, width) with ``video``, pixels."""
@@ -360,7 +364,7 @@ def _check_run_dir(run_dir: Path, config: EvalConfig) -> None:
             changed = sorted(k for k in set(before) | set(config.to_json()) if before.get(k) != config.to_json().get(k))
             raise BadInput(f"{run_dir} holds a run with other settings ({', '.join(changed)}); give a new -o "
                            "directory, or the same settings to resume it")
-    elif run_dir.is_dir() and any(run_dir.iterdir()):
+    elif run_dir.is_dir() and any(p.name != LOCK_NAME for p in run_dir.iterdir()):
         raise BadInput(f"{run_dir} is not empty and holds no run.json; give a new -o directory")
 
 
@@ -370,11 +374,9 @@ def run_eval(config: EvalConfig, run_dir: str | Path, jobs: int = 1,
 
     Raises:
         BadInput: a bad target, policy, instruction mode or run directory.
+        BadInput: also when another ``rpg eval`` is writing ``run_dir``.
         PolicyError: the policy failed (the episodes finished before it are kept).
     """
-    from rpg.artifact import write_file
-    from rpg.eval.stats import summarize
-
     if not config.seeds:
         raise BadInput("no seeds: give --episodes N (N >= 1) or --seeds LIST")
     if config.replan is not None and config.replan < 1:
@@ -386,6 +388,22 @@ def run_eval(config: EvalConfig, run_dir: str | Path, jobs: int = 1,
     if config.policy not in BUILTIN:
         load_policy(config.policy)  # fail before anything is written: a bad module or an unreachable server
     run_dir.mkdir(parents=True, exist_ok=True)
+    lock = FileLock(str(run_dir / LOCK_NAME))
+    try:
+        lock.acquire(timeout=0)
+    except Timeout:
+        raise BadInput(f"another rpg eval is writing {run_dir}; wait for it to finish or give a new -o directory") from None
+    try:
+        return _run_locked(config, run_dir, work, jobs, progress)
+    finally:
+        lock.release()
+
+
+def _run_locked(config: EvalConfig, run_dir: Path, work: list, jobs: int, progress) -> dict:
+    """The part of :func:`run_eval` that writes the run directory (its lock held)."""
+    from rpg.artifact import write_file
+    from rpg.eval.stats import summarize
+
     write_file(run_dir / "run.json", json.dumps(config.to_json(), indent=2, sort_keys=True) + "\n")
     log = run_dir / "episodes.jsonl"
     records = _cut_torn_line(log)
