@@ -1,7 +1,7 @@
 """rpg eval throughput (issue "rpg eval": episodes per second, oracle, floating gripper, no
 video, 1 vs 2 jobs; target speed-up >= 1.7x).
 
-    python benchmarks/bench_eval.py [--seeds 10] [--target library/manifest.yaml]
+    python benchmarks/bench_eval.py [--seeds 20] [--target library/manifest.yaml]
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ def main() -> None:
     from rpg.eval import EvalConfig, run_eval
 
     ap = argparse.ArgumentParser()
-    ap.add_argument("--seeds", type=int, default=10)
+    ap.add_argument("--seeds", type=int, default=20)
     ap.add_argument("--target", default="split=train")
     args = ap.parse_args()
     rates = {}

@@ -118,10 +118,99 @@ def test_two_jobs_write_the_same_dataset_as_one(tmp_path):
 
 
 def test_bad_input_is_one_line_and_exit_2(tmp_path):
-    r = _rpg("demos", STACK, "--out", tmp_path / "x", "--format", "hdf5")
+    r = _rpg("demos", STACK, "--out", tmp_path / "x", "--format", "zarr")
     assert r.returncode == 2 and "not supported" in r.stderr and "Traceback" not in r.stderr
     r = _rpg("demos", "--replay", tmp_path)
     assert r.returncode == 2 and "not a dataset" in r.stderr
     r = _rpg("demos", str(tmp_path / "missing"), "--out", tmp_path / "y")
     assert r.returncode == 2 and "no task" in r.stderr
     assert not (tmp_path / "y").exists() and not (tmp_path / "x").exists()
+
+
+# -- robomimic HDF5 ----------------------------------------------------------------------
+def _read_like_robomimic(path: Path) -> dict:
+    """What robomimic's SequenceDataset and FileUtils read from a dataset (robomimic
+    docs/datasets/overview.md, "Dataset Structure"): env_args, total, per-demo num_samples,
+    obs / next_obs / actions / rewards / dones, filter keys under mask/."""
+    import h5py
+
+    with h5py.File(path, "r") as f:
+        data = f["data"]
+        demos = sorted(data, key=lambda n: int(n[5:]))
+        out = {"env_args": json.loads(data.attrs["env_args"]), "total": int(data.attrs["total"]), "demos": {},
+               "masks": {k: [d.decode() for d in f["mask"][k][:]] for k in f["mask"]}}
+        for name in demos:
+            g = data[name]
+            out["demos"][name] = {
+                "n": int(g.attrs["num_samples"]), "seed": int(g.attrs["seed"]),
+                "obs": {k: g["obs"][k][()] for k in g["obs"]}, "next_obs": {k: g["next_obs"][k][()] for k in g["next_obs"]},
+                **{k: g[k][()] for k in ("actions", "rewards", "dones", "states")}}
+    return out
+
+
+def test_hdf5_dataset_has_robomimic_layout_and_replays(tmp_path):
+    out = tmp_path / "ds"
+    r = _rpg("demos", STACK, "--out", out, "-n", "2", "--image-size", "32", "--format", "hdf5")
+    assert r.returncode == 0, r.stderr
+    assert not list((out / "parts").iterdir())  # gathered into demo.hdf5
+    ds = _read_like_robomimic(out / "demo.hdf5")
+    assert ds["env_args"]["type"] == 2 and ds["env_args"]["env_name"] == "rpg/BlockTask-v0"
+    assert ds["env_args"]["env_kwargs"]["embodiment"] == "floating_gripper"
+    assert list(ds["demos"]) == ["demo_0", "demo_1"] and ds["total"] == sum(d["n"] for d in ds["demos"].values())
+    assert ds["masks"] == {"stack_two_blocks_on_top_each_other": ["demo_0", "demo_1"]}
+    for d in ds["demos"].values():
+        n = d["n"]
+        assert d["actions"].shape == (n, 7) and d["actions"].dtype == np.float32 and np.abs(d["actions"]).max() <= 1
+        assert d["rewards"].shape == (n,) and d["rewards"][-1] == 1.0 and d["dones"].tolist() == [0] * (n - 1) + [1]
+        assert d["states"].shape[0] == n
+        assert sorted(d["obs"]) == sorted(d["next_obs"]) == sorted(
+            ["agentview_image", "robot0_eye_in_hand_image", "robot0_eef_pos", "robot0_eef_quat",
+             "robot0_gripper_qpos", "robot0_joint_pos", "object"])
+        assert d["obs"]["agentview_image"].shape == (n, 32, 32, 3) and d["obs"]["agentview_image"].dtype == np.uint8
+        for k, v in d["obs"].items():  # next_obs is obs one step later
+            assert len(v) == len(d["next_obs"][k]) == n
+            assert np.array_equal(v[1:], d["next_obs"][k][:-1]), k
+        assert np.allclose(np.linalg.norm(d["obs"]["robot0_eef_quat"], axis=1), 1.0)
+        assert d["obs"]["object"].shape == (n, 14)  # two cubes, position + quaternion
+    assert not np.array_equal(ds["demos"]["demo_0"]["states"][0], ds["demos"]["demo_1"]["states"][0])
+    r = _rpg("demos", "--replay", out / "demo.hdf5")
+    assert r.returncode == 0 and "replayed 2 episodes, 0 mismatched" in r.stdout, r.stdout + r.stderr
+
+
+def test_hdf5_replay_detects_a_changed_action_and_formats_do_not_mix(tmp_path):
+    import h5py
+
+    out = tmp_path / "ds"
+    assert _rpg("demos", STACK, "--out", out, "-n", "1", "--cameras", "", "--format", "hdf5").returncode == 0
+    with h5py.File(out / "demo.hdf5", "r+") as f:
+        f["data/demo_0/actions"][5:15, 0] = 1.0
+    r = _rpg("demos", "--replay", out)
+    assert r.returncode == 1 and "MISMATCH" in r.stdout
+    r = _rpg("demos", STACK, "--out", out, "-n", "1", "--cameras", "")  # a LeRobot run into it
+    assert r.returncode == 2 and "robomimic" in r.stderr and not (out / "meta" / "info.json").exists()
+
+
+def test_hdf5_run_killed_mid_way_resumes_keeping_finished_episodes(tmp_path):
+    out = tmp_path / "ds"
+    env = dict(os.environ, MUJOCO_GL="egl", LITELLM_LOCAL_MODEL_COST_MAP="True")
+    args = ["demos", STACK, "--out", str(out), "-n", "4", "--image-size", "32", "--format", "hdf5"]
+    proc = subprocess.Popen([sys.executable, "-m", "rpg.cli", *args], env=env,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    log = out / "meta" / "episodes.jsonl"
+    deadline = time.time() + 300
+    while time.time() < deadline and not (log.is_file() and log.read_text().count("\n") >= 1):
+        time.sleep(0.05)
+    os.kill(proc.pid, signal.SIGKILL)
+    proc.wait()
+    kept = _lines(log)
+    assert 1 <= len(kept) < 4 and (out / "parts" / "demo_0.hdf5").is_file()
+    torn = out / "parts" / "demo_9.hdf5"  # a part written but never committed
+    torn.write_bytes(b"\x89HDF torn")
+    r = _rpg(*args)
+    assert r.returncode == 0, r.stderr
+    assert [e["episode_index"] for e in _lines(log)] == [0, 1, 2, 3] and not torn.exists()
+    ds = _read_like_robomimic(out / "demo.hdf5")
+    assert sorted(d["seed"] for d in ds["demos"].values()) == [0, 1, 2, 3]
+    assert _rpg("demos", "--replay", out).returncode == 0
+    r = _rpg(*args[:-2])  # the same directory as LeRobot: refused, nothing written
+    assert r.returncode == 2 and not (out / "meta" / "info.json").exists()

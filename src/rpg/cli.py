@@ -646,7 +646,7 @@ def demos_cmd(
     out_dir: Annotated[Path | None, typer.Option("--out", "-o", help="Dataset directory (created; resumed if it exists).")] = None,
     episodes: Annotated[int, typer.Option("--episodes", "-n", min=1, help="Successful episodes per task.")] = 10,
     embodiment: Annotated[str, typer.Option("--embodiment", help="panda or floating_gripper.")] = "floating_gripper",
-    fmt: Annotated[str, typer.Option("--format", help="lerobot (v2.1).")] = "lerobot",
+    fmt: Annotated[str, typer.Option("--format", help="lerobot (LeRobot v2.1: parquet + MP4) or hdf5 (robomimic).")] = "lerobot",
     jobs: Annotated[int, typer.Option("--jobs", "-j", min=1, help="Episodes run in parallel processes.")] = 1,
     cameras: Annotated[str, typer.Option("--cameras", help="Comma-separated cameras recorded as videos ('' for none).")] = "agentview,wrist",
     image_size: Annotated[int, typer.Option("--image-size", min=16, max=2048, help="Square video size, pixels.")] = 256,

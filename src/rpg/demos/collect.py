@@ -26,8 +26,9 @@ from rpg.errors import BadInput
 MAX_SEED_FACTOR = 3
 """At most this many times ``episodes`` seeds are tried per task."""
 
-FORMATS = ("lerobot",)
-"""Dataset formats written (robomimic HDF5 is not written yet)."""
+FORMATS = ("lerobot", "hdf5")
+"""Dataset formats written: LeRobot v2.1 (:mod:`rpg.demos.lerobot`) and robomimic's HDF5
+(:mod:`rpg.demos.robomimic`)."""
 
 REPLAY_POSE_TOL = 1e-6
 """Largest difference (m, or quaternion units) between a replay's final poses and the recorded ones."""
@@ -61,11 +62,12 @@ class Job:
     image_size: tuple[int, int]
     instruction: str
     staging: str
+    frames: str = "mp4"
 
 
 def _run(job: Job) -> Episode:
     return record_episode(job.task, job.seed, job.embodiment, job.cameras, job.image_size, job.instruction,
-                          video_dir=Path(job.staging) / f"{Path(job.task).name}-{job.seed}")
+                          video_dir=Path(job.staging) / f"{Path(job.task).name}-{job.seed}", frames=job.frames)
 
 
 def _task_hash(task: str) -> str:
@@ -94,7 +96,12 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
     if episodes < 1 or jobs < 1:
         raise BadInput("--episodes and --jobs must be at least 1")
     tasks = expand_targets(target)
-    writer = LeRobotWriter(out, cameras, image_size, embodiment)
+    if fmt == "hdf5":
+        from rpg.demos.robomimic import RobomimicWriter
+
+        writer = RobomimicWriter(out, cameras, image_size, embodiment)
+    else:
+        writer = LeRobotWriter(out, cameras, image_size, embodiment)
     writer.open()
     staging = Path(out) / ".staging"
     shutil.rmtree(staging, ignore_errors=True)
@@ -112,8 +119,8 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
             seed = max((a["seed"] for a in tried), default=-1) + 1
             last = MAX_SEED_FACTOR * episodes
             while made < episodes and seed < last:
-                batch = []
-                batch = [Job(task, s, embodiment, tuple(cameras), tuple(image_size), instruction, str(staging))
+                batch = [Job(task, s, embodiment, tuple(cameras), tuple(image_size), instruction, str(staging),
+                             "hdf5" if fmt == "hdf5" else "mp4")
                          for s in range(seed, min(seed + episodes - made, last))]
                 seed += len(batch)
                 results = pool.map(_run, batch) if pool else map(_run, batch)
@@ -129,6 +136,8 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
         if pool:
             pool.shutdown(cancel_futures=True)
         shutil.rmtree(staging, ignore_errors=True)
+        if fmt == "hdf5":
+            writer.finalize()  # every committed episode, also after an error
     return {"episodes": len(writer.episodes), "attempts": ran, "per_task": per_task}
 
 
@@ -182,8 +191,19 @@ def replay_dataset(root: str | Path, progress: Callable[[ReplayResult], None] | 
     Raises:
         BadInput: not a dataset, or a task changed since recording.
     """
+    from rpg.demos.robomimic import dataset_file, read_demos
+
     root = Path(root)
     out = []
+    h5 = dataset_file(root)
+    if h5 is not None:
+        for demo in read_demos(h5):
+            ok, err = replay_actions(demo["task"], demo["task_hash"], demo["seed"], demo["embodiment"],
+                                     demo["instruction"], demo["actions"], demo["final_poses"])
+            out.append(ReplayResult(demo["episode_index"], ok, err))
+            if progress:
+                progress(out[-1])
+        return out
     if (root / "meta" / "info.json").is_file():
         rows = read_jsonl(root / "meta" / "episodes.jsonl")
         for row in rows:
@@ -194,4 +214,4 @@ def replay_dataset(root: str | Path, progress: Callable[[ReplayResult], None] | 
             if progress:
                 progress(out[-1])
         return out
-    raise BadInput(f"{root} is not a dataset written by rpg demos (no meta/info.json)")
+    raise BadInput(f"{root} is not a dataset written by rpg demos (no meta/info.json or demo.hdf5)")

@@ -136,6 +136,8 @@ class LeRobotWriter:
     def open(self) -> set[tuple[str, int, str]]:
         """Read what a previous run committed, remove torn episodes' files, and return the
         attempts already made as ``(task_hash, seed, instruction)``."""
+        if (self.meta / "rpg_robomimic.json").is_file():
+            raise BadInput(f"{self.root} holds a robomimic (HDF5) dataset; give a new --out directory for --format lerobot")
         self.meta.mkdir(parents=True, exist_ok=True)
         info = self.meta / "info.json"
         if info.is_file():

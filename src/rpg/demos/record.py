@@ -2,9 +2,10 @@
 
 :func:`record_episode` runs the oracle (:class:`rpg.oracle.Oracle`) on a task from a seed,
 through ``env.step`` only, and returns the per-step observation state and action, the
-camera videos (written to ``video_dir`` while the episode runs, so frames never pile up in
-memory), and what a replay needs to check it: the task's content hash, the seed, the
-embodiment, the instruction and the final object poses.
+robomimic low-dimensional observations and MuJoCo states, the camera frames (written to
+``video_dir`` while the episode runs, so frames never pile up in memory: MP4 videos, or
+HDF5 frame stores for the robomimic format), and what a replay needs to check it: the
+task's content hash, the seed, the embodiment, the instruction and the final object poses.
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ import contextlib
 from dataclasses import dataclass, field
 from pathlib import Path
 
+import mujoco
 import numpy as np
 
 from rpg.domain import constants as C
@@ -27,12 +29,28 @@ STATE_NAMES = ["eef_x", "eef_y", "eef_z", "eef_axis_angle_x", "eef_axis_angle_y"
 ACTION_NAMES = ["dx", "dy", "dz", "droll", "dpitch", "dyaw", "gripper"]
 """Names of the 7 ``ee_delta`` action values (normalised to [-1, 1]; see rpg.env)."""
 
+LOW_DIM_KEYS = ("robot0_eef_pos", "robot0_eef_quat", "robot0_gripper_qpos", "robot0_joint_pos", "object")
+"""robomimic's names of the low-dimensional observations recorded per step: TCP position (3,
+m, world frame), TCP orientation (4, quaternion x, y, z, w: robosuite's order), finger
+openings (2, m), the robot's joint positions (``qpos`` of :class:`rpg.env.BlockTaskEnv`), and
+every object's position and quaternion (x, y, z, w) in sorted name order (7 per object)."""
+
+SIM_STATE = mujoco.mjtState.mjSTATE_FULLPHYSICS
+"""What a recorded MuJoCo state holds (``mj_getState``: time, qpos, qvel, act, ...)."""
+
+FRAME_FORMATS = ("mp4", "hdf5")
+"""How camera frames are recorded: MP4 videos (LeRobot) or HDF5 frame stores (robomimic)."""
+
 
 @dataclass
 class Episode:
     """A recorded episode.  ``states`` (T, 8) float32 and ``actions`` (T, 7) float32: the
-    observation before each step and the action taken; ``videos``: camera -> MP4 path
-    (T frames each); ``image_stats``: camera -> per-channel min/max/mean/std in [0, 1]."""
+    observation before each step and the action taken; ``rewards`` (T,): the environment's
+    reward after each step; ``low_dim``: :data:`LOW_DIM_KEYS` -> (T + 1, d) float64 and
+    ``sim_states`` (T + 1, S) float64 (:data:`SIM_STATE`): before each step and after the
+    last; ``videos``: camera -> frame file (an MP4 of T frames, or with ``frames="hdf5"`` an
+    HDF5 frame store of T + 1); ``image_stats``: camera -> per-channel min/max/mean/std in
+    [0, 1] over the first T frames."""
 
     task: str
     task_hash: str
@@ -48,6 +66,9 @@ class Episode:
     videos: dict[str, str] = field(default_factory=dict)
     image_stats: dict[str, dict] = field(default_factory=dict)
     failure: str | None = None
+    rewards: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    low_dim: dict[str, np.ndarray] = field(default_factory=dict)
+    sim_states: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))
 
     @property
     def length(self) -> int:
@@ -89,10 +110,37 @@ def _paraphrase_index(instruction: str) -> int | None:
     return int(k) if head == "paraphrase" and k.isdigit() else None
 
 
+def _xyzw(wxyz) -> list[float]:
+    return [float(wxyz[1]), float(wxyz[2]), float(wxyz[3]), float(wxyz[0])]
+
+
+def _low_dim(env) -> dict[str, np.ndarray]:
+    """The :data:`LOW_DIM_KEYS` observations of ``env``'s current state."""
+    tcp = env.robot.tcp_pose()
+    poses = env.scene.poses()
+    return {"robot0_eef_pos": np.asarray(tcp.pos, np.float64), "robot0_eef_quat": np.array(_xyzw(tcp.quat)),
+            "robot0_gripper_qpos": env.robot.finger_positions(), "robot0_joint_pos": env.robot.robot_qpos(),
+            "object": np.array([v for name in sorted(poses) for v in (*poses[name].pos, *_xyzw(poses[name].quat))])}
+
+
+def _sim_state(env) -> np.ndarray:
+    out = np.empty(mujoco.mj_stateSize(env.model, SIM_STATE))
+    mujoco.mj_getState(env.model, env.data, out, SIM_STATE)
+    return out
+
+
+def _frame_sink(frames: str, path: Path):
+    if frames == "hdf5":
+        from rpg.demos.robomimic import FrameStore
+
+        return FrameStore(path.with_suffix(".h5"))
+    return VideoWriter(path, C.CONTROL_HZ)
+
+
 def record_episode(task: str, seed: int, embodiment: str = "floating_gripper",
                    cameras: tuple[str, ...] = ("agentview", "wrist"), image_size: tuple[int, int] = (256, 256),
                    instruction: str = "canonical", video_dir: str | Path | None = None,
-                   max_steps: int | None = None) -> Episode:
+                   max_steps: int | None = None, frames: str = "mp4") -> Episode:
     """Run the oracle for one episode and record it.
 
     Args:
@@ -104,11 +152,18 @@ def record_episode(task: str, seed: int, embodiment: str = "floating_gripper",
         instruction: ``"canonical"`` or ``"paraphrase:K"``.
         video_dir: where the videos go (``<camera>.mp4``); required when ``cameras``.
         max_steps: episode step limit (default: the environment's rule).
+        frames: ``"mp4"`` (a video of T frames per camera) or ``"hdf5"`` (a frame store of
+            T + 1 frames: the observation after the last step too, robomimic's ``next_obs``).
 
     Returns:
         The :class:`Episode` (``success`` false when the oracle failed; its videos are then
         still written, the caller discards them).
+
+    Raises:
+        ValueError: an unknown ``frames``.
     """
+    if frames not in FRAME_FORMATS:
+        raise ValueError(f"frames must be one of {FRAME_FORMATS}, not {frames!r}")
     env = BlockTaskEnv(task, embodiment=embodiment, control_mode="ee_delta", cameras=tuple(cameras),
                        image_size=image_size, instruction=instruction, max_episode_steps=max_steps)
     try:
@@ -116,23 +171,31 @@ def record_episode(task: str, seed: int, embodiment: str = "floating_gripper",
         obs, info = env.reset(seed=seed)
         oracle.reset(obs)
         stats = {c: _ChannelStats() for c in cameras}
-        states, actions = [], []
+        states, actions, rewards, low_dim, sims = [], [], [], [], []
         with contextlib.ExitStack() as stack:  # videos are published only if the episode ends cleanly
             writers = {}
             if cameras:
                 video_dir = Path(video_dir)
                 video_dir.mkdir(parents=True, exist_ok=True)
-                writers = {c: stack.enter_context(VideoWriter(video_dir / f"{c}.mp4", C.CONTROL_HZ)) for c in cameras}
+                writers = {c: stack.enter_context(_frame_sink(frames, video_dir / f"{c}.mp4")) for c in cameras}
             done = False
             while not done:
                 for c in cameras:
                     writers[c].write(obs[f"{c}_image"])
                     stats[c].add(obs[f"{c}_image"])
+                low_dim.append(_low_dim(env))
+                sims.append(_sim_state(env))
                 action = oracle.act(obs)
                 states.append(obs["state"].astype(np.float32))
                 actions.append(np.asarray(action, np.float32))
-                obs, _, terminated, truncated, info = env.step(action)
+                obs, reward, terminated, truncated, info = env.step(action)
+                rewards.append(reward)
                 done = terminated or truncated
+            low_dim.append(_low_dim(env))
+            sims.append(_sim_state(env))
+            if frames == "hdf5":
+                for c in cameras:
+                    writers[c].write(obs[f"{c}_image"])
         poses = {n: [*map(float, p.pos), *map(float, p.quat)] for n, p in env.scene.poses().items()}
         return Episode(task=str(task), task_hash=env.source.content_hash, task_name=env.source.name, seed=int(seed),
                        embodiment=embodiment, instruction=env.instruction,
@@ -141,6 +204,8 @@ def record_episode(task: str, seed: int, embodiment: str = "floating_gripper",
                        actions=np.array(actions, np.float32).reshape(-1, 7), final_poses=poses,
                        videos={c: str(writers[c].path) for c in cameras},
                        image_stats={c: stats[c].result(len(actions)) for c in cameras},
-                       failure=oracle.failure)
+                       failure=oracle.failure, rewards=np.array(rewards, np.float64),
+                       low_dim={k: np.array([d[k] for d in low_dim]) for k in LOW_DIM_KEYS},
+                       sim_states=np.array(sims))
     finally:
         env.close()

@@ -1,0 +1,337 @@
+"""Demonstrations in robomimic's HDF5 layout (``rpg demos --format hdf5``), written with h5py::
+
+    DIR/demo.hdf5
+      data/                     attrs: total (steps of all demos), env_args (JSON: env_name,
+                                type 2 = a Gym environment, env_kwargs)
+        demo_<i>/               attrs: num_samples (T), and rpg's provenance: task, task_hash,
+                                task_name, seed, embodiment, instruction, paraphrase (-1: none),
+                                final_poses (JSON)
+          actions               (T, 7) float32, ee_delta actions in [-1, 1]
+          rewards               (T,) float64, the environment's reward after each step
+          dones                 (T,) int64, 1 at the last step
+          states                (T, S) float64, the MuJoCo state before each step
+                                (``mj_getState`` with :data:`rpg.demos.record.SIM_STATE`)
+          obs/<key>, next_obs/<key>   the observation before / after each step (T rows each)
+      mask/<task_name>          robomimic filter keys: the demos of each task (bytes)
+
+Observation keys: :data:`rpg.demos.record.LOW_DIM_KEYS` (float64) and one uint8 (T, H, W, 3)
+image per camera (:data:`IMAGE_KEYS`: ``agentview_image``, ``robot0_eye_in_hand_image`` for
+the wrist camera), gzip-compressed one frame per chunk.  This is what robomimic's
+``SequenceDataset`` loads (``obs``, ``next_obs``, ``actions``, ``rewards``, ``dones``, the
+``env_args`` attribute and filter keys).
+
+Crash safety: HDF5 files are not safe to append to across a kill, so each committed episode
+is first a file of its own, ``DIR/parts/demo_<i>.hdf5`` (written to a temporary name, then
+renamed), and its line in ``DIR/meta/episodes.jsonl`` is the commit (``meta/rpg_attempts.jsonl``
+records failed attempts too).  :meth:`RobomimicWriter.finalize` gathers the parts and the
+demos of an existing ``demo.hdf5`` into a new file, renames it over ``demo.hdf5`` and then
+removes the parts; a kill at any point leaves every committed episode in a part or in
+``demo.hdf5``, and the next run resumes from there.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+
+import h5py
+import numpy as np
+
+from rpg.demos.record import LOW_DIM_KEYS, Episode
+from rpg.errors import BadInput
+
+DATASET_NAME = "demo.hdf5"
+"""The robomimic file inside a dataset directory."""
+
+ENV_NAME = "rpg/BlockTask-v0"
+"""``env_args["env_name"]``: the Gymnasium id the demos were recorded in."""
+
+GYM_ENV_TYPE = 2
+"""``env_args["type"]``: robomimic's ``EnvType.GYM_TYPE``."""
+
+IMAGE_KEYS = {"agentview": "agentview_image", "wrist": "robot0_eye_in_hand_image", "default": "default_image"}
+"""robomimic's observation key of each camera's images."""
+
+IMAGE_COMPRESSION = {"compression": "gzip", "compression_opts": 4}
+"""h5py filter of image datasets (gzip: readable by every HDF5 library)."""
+
+SETTINGS = "rpg_robomimic.json"
+"""``meta/`` file with the dataset's embodiment, cameras and image size (a resumed run must match)."""
+
+
+def _jsonl(path: Path) -> list[dict]:
+    if not path.is_file():
+        return []
+    out = []
+    for line in path.read_text().splitlines():
+        try:
+            out.append(json.loads(line))
+        except json.JSONDecodeError:
+            break
+    return out
+
+
+def _append(path: Path, obj: dict) -> None:
+    with open(path, "a") as fh:
+        fh.write(json.dumps(obj, sort_keys=True) + "\n")
+        fh.flush()
+        os.fsync(fh.fileno())
+
+
+class FrameStore:
+    """One camera's frames of an episode in an HDF5 file, written as they come: frame k goes
+    to ``obs`` and, for k >= 1, to ``next_obs`` (so neither is rewritten when the episode is
+    committed).  On close ``obs`` drops its last frame, so both hold T frames for T + 1
+    written.  Like :class:`rpg.env.video.VideoWriter`, the file appears only when closed
+    without error.
+
+    Raises:
+        ValueError: a frame that is not (H, W, 3) uint8-convertible, or of another shape than the first.
+    """
+
+    def __init__(self, path: str | Path):
+        self.path = Path(path)
+        self._tmp = self.path.with_name(f".{self.path.name}.tmp-{os.getpid()}")
+        self._file: h5py.File | None = None
+        self.frames = 0
+
+    def __enter__(self) -> FrameStore:
+        return self
+
+    def write(self, frame: np.ndarray) -> None:
+        frame = np.ascontiguousarray(frame, dtype=np.uint8)
+        if self._file is None:
+            if frame.ndim != 3 or frame.shape[2] != 3:
+                raise ValueError(f"frames must be (H, W, 3), got {frame.shape}")
+            self._file = h5py.File(self._tmp, "w")
+            for name in ("obs", "next_obs"):
+                self._file.create_dataset(name, shape=(0, *frame.shape), maxshape=(None, *frame.shape), dtype=np.uint8,
+                                          chunks=(1, *frame.shape), **IMAGE_COMPRESSION)
+        obs = self._file["obs"]
+        if frame.shape != obs.shape[1:]:
+            raise ValueError(f"frame shape {frame.shape} differs from the first frame's {obs.shape[1:]}")
+        targets = [obs] + ([self._file["next_obs"]] if self.frames else [])
+        for ds in targets:
+            ds.resize(ds.shape[0] + 1, axis=0)
+            ds[-1] = frame
+        self.frames += 1
+
+    def __exit__(self, exc_type, *exc) -> None:
+        try:
+            if self._file is not None:
+                if exc_type is None:
+                    self._file["obs"].resize(max(self.frames - 1, 0), axis=0)
+                self._file.close()
+            if exc_type is None and self.frames:
+                os.replace(self._tmp, self.path)
+        finally:
+            self._tmp.unlink(missing_ok=True)
+
+
+class RobomimicWriter:
+    """Appends recorded episodes to a robomimic dataset directory (resumable); the same
+    interface as :class:`rpg.demos.lerobot.LeRobotWriter`, plus :meth:`finalize`.
+
+    Args:
+        root: the dataset directory (created).
+        cameras: cameras recorded as images.
+        image_size: (height, width) of the images.
+        robot_type: the embodiment.
+    """
+
+    def __init__(self, root: str | Path, cameras: tuple[str, ...], image_size: tuple[int, int], robot_type: str):
+        self.root = Path(root)
+        self.cameras = tuple(cameras)
+        self.image_size = tuple(image_size)
+        self.robot_type = robot_type
+        self.episodes: list[dict] = []
+        self.attempts: list[dict] = []
+
+    @property
+    def meta(self) -> Path:
+        return self.root / "meta"
+
+    @property
+    def parts(self) -> Path:
+        return self.root / "parts"
+
+    def _settings(self) -> dict:
+        return {"format": "robomimic", "robot_type": self.robot_type, "cameras": list(self.cameras),
+                "image_size": list(self.image_size)}
+
+    def open(self) -> None:
+        """Read what a previous run committed and remove what a kill left half-written.
+
+        Raises:
+            BadInput: the directory holds another kind of dataset, or one of another
+                embodiment, cameras or image size.
+        """
+        if (self.meta / "info.json").is_file():
+            raise BadInput(f"{self.root} holds a LeRobot dataset; give a new --out directory for --format hdf5")
+        settings = self.meta / SETTINGS
+        if settings.is_file():
+            if json.loads(settings.read_text()) != self._settings():
+                raise BadInput(f"{self.root} holds a dataset of another embodiment, cameras or image size; "
+                               "give a new --out directory")
+        elif self.root.is_dir() and any(p.name != ".staging" for p in self.root.iterdir()):
+            raise BadInput(f"{self.root} is not empty and holds no rpg robomimic dataset; give a new --out directory")
+        self.meta.mkdir(parents=True, exist_ok=True)
+        self.parts.mkdir(exist_ok=True)
+        settings.write_text(json.dumps(self._settings(), indent=2, sort_keys=True) + "\n")
+        self.episodes = _jsonl(self.meta / "episodes.jsonl")
+        self.attempts = _jsonl(self.meta / "rpg_attempts.jsonl")
+        n = len(self.episodes)
+        for f in sorted(self.parts.glob("demo_*.hdf5")):
+            if int(f.stem.split("_")[1]) >= n:  # written, never committed
+                f.unlink()
+        for f in sorted(self.root.rglob(".*tmp*")):
+            f.unlink()
+        for name, rows in (("episodes.jsonl", self.episodes), ("rpg_attempts.jsonl", self.attempts)):
+            tmp = self.meta / f".{name}.tmp-{os.getpid()}"
+            tmp.write_text("".join(json.dumps(r, sort_keys=True) + "\n" for r in rows))
+            os.replace(tmp, self.meta / name)
+
+    def add(self, ep: Episode) -> int | None:
+        """Commit a successful episode as a part file; record any attempt.
+
+        Returns:
+            The episode index, or None for a failed episode (its frame stores are deleted).
+        """
+        attempt = {"task_hash": ep.task_hash, "seed": ep.seed, "instruction": ep.instruction,
+                   "success": ep.success, "steps": ep.length, "failure": ep.failure}
+        if not ep.success:
+            for v in ep.videos.values():
+                Path(v).unlink(missing_ok=True)
+            _append(self.meta / "rpg_attempts.jsonl", attempt)
+            self.attempts.append(attempt)
+            return None
+        index = len(self.episodes)
+        line = {"episode_index": index, "length": ep.length, "task": ep.task, "task_hash": ep.task_hash,
+                "task_name": ep.task_name, "seed": ep.seed, "embodiment": ep.embodiment,
+                "instruction": ep.instruction, "paraphrase": ep.paraphrase, "final_poses": ep.final_poses}
+        part = self.parts / f"demo_{index}.hdf5"
+        tmp = part.with_name(f".{part.name}.tmp-{os.getpid()}")
+        try:
+            with h5py.File(tmp, "w") as f:
+                _write_demo(f.create_group("demo"), ep, line)
+            os.replace(tmp, part)
+        finally:
+            tmp.unlink(missing_ok=True)
+        for v in ep.videos.values():
+            Path(v).unlink(missing_ok=True)
+        _append(self.meta / "episodes.jsonl", line)  # the commit
+        self.episodes.append(line)
+        _append(self.meta / "rpg_attempts.jsonl", attempt)
+        self.attempts.append(attempt)
+        return index
+
+    def finalize(self) -> Path:
+        """Gather every committed episode into ``demo.hdf5`` (a new file renamed over the old
+        one), then remove the parts.
+
+        Raises:
+            BadInput: a committed episode is in neither a part nor ``demo.hdf5`` (the
+                directory was changed by hand).
+        """
+        target = self.root / DATASET_NAME
+        parts = sorted(self.parts.glob("demo_*.hdf5")) if self.parts.is_dir() else []
+        if target.is_file() and not parts:
+            return target
+        tmp = target.with_name(f".{target.name}.tmp-{os.getpid()}")
+        old = h5py.File(target, "r") if target.is_file() else None
+        try:
+            with h5py.File(tmp, "w") as dst:
+                data = dst.create_group("data")
+                masks: dict[str, list[str]] = {}
+                for line in self.episodes:
+                    name = f"demo_{line['episode_index']}"
+                    part = self.parts / f"{name}.hdf5"
+                    if part.is_file():
+                        with h5py.File(part, "r") as src:
+                            src.copy(src["demo"], data, name=name)
+                    elif old is not None and name in old.get("data", {}):
+                        old.copy(old["data"][name], data, name=name)
+                    else:
+                        raise BadInput(f"{self.root}: committed episode {name} is missing (parts/ or {DATASET_NAME} "
+                                       "was changed); give a new --out directory")
+                    masks.setdefault(line["task_name"], []).append(name)
+                data.attrs["total"] = int(sum(e["length"] for e in self.episodes))
+                data.attrs["env_args"] = json.dumps({
+                    "env_name": ENV_NAME, "type": GYM_ENV_TYPE,
+                    "env_kwargs": {"embodiment": self.robot_type, "control_mode": "ee_delta",
+                                   "cameras": list(self.cameras), "image_size": list(self.image_size)}},
+                    sort_keys=True)
+                mask = dst.create_group("mask")
+                for task_name in sorted(masks):
+                    mask.create_dataset(task_name, data=np.array(masks[task_name], dtype="S"))
+        except BaseException:
+            tmp.unlink(missing_ok=True)
+            raise
+        finally:
+            if old is not None:
+                old.close()
+        os.replace(tmp, target)
+        for p in parts:
+            p.unlink()
+        return target
+
+
+def _write_demo(g: h5py.Group, ep: Episode, line: dict) -> None:
+    """One episode into group ``g`` (robomimic's ``data/demo_<i>`` layout)."""
+    t = ep.length
+    g.attrs["num_samples"] = t
+    for key in ("task", "task_hash", "task_name", "seed", "embodiment", "instruction"):
+        g.attrs[key] = line[key]
+    g.attrs["paraphrase"] = -1 if ep.paraphrase is None else int(ep.paraphrase)
+    g.attrs["final_poses"] = json.dumps(ep.final_poses, sort_keys=True)
+    g.create_dataset("actions", data=np.asarray(ep.actions, np.float32))
+    g.create_dataset("rewards", data=np.asarray(ep.rewards, np.float64))
+    dones = np.zeros(t, np.int64)
+    dones[-1:] = 1
+    g.create_dataset("dones", data=dones)
+    g.create_dataset("states", data=np.asarray(ep.sim_states[:t], np.float64))
+    obs, nxt = g.create_group("obs"), g.create_group("next_obs")
+    for key in LOW_DIM_KEYS:
+        values = np.asarray(ep.low_dim[key], np.float64)
+        obs.create_dataset(key, data=values[:t])
+        nxt.create_dataset(key, data=values[1:t + 1])
+    for cam, path in sorted(ep.videos.items()):
+        with h5py.File(path, "r") as src:  # raw chunk copies: no recompression
+            src.copy(src["obs"], obs, name=IMAGE_KEYS[cam])
+            src.copy(src["next_obs"], nxt, name=IMAGE_KEYS[cam])
+
+
+def dataset_file(root: str | Path) -> Path | None:
+    """The robomimic file of a dataset directory (or the file itself), None if there is none."""
+    root = Path(root)
+    if root.is_file() and h5py.is_hdf5(root):
+        return root
+    f = root / DATASET_NAME
+    return f if f.is_file() else None
+
+
+def read_demos(path: str | Path) -> list[dict]:
+    """Every demo of a robomimic file written by rpg: its provenance and actions, in demo order.
+
+    Returns:
+        Dicts with ``episode_index``, ``task``, ``task_hash``, ``seed``, ``embodiment``,
+        ``instruction``, ``final_poses`` and ``actions`` (T, 7) float32.
+
+    Raises:
+        BadInput: not an rpg robomimic file.
+    """
+    out = []
+    try:
+        with h5py.File(path, "r") as f:
+            names = sorted(f["data"], key=lambda n: int(n.split("_")[1]))
+            for name in names:
+                g = f["data"][name]
+                a = g.attrs
+                out.append({"episode_index": int(name.split("_")[1]), "task": str(a["task"]),
+                            "task_hash": str(a["task_hash"]), "seed": int(a["seed"]),
+                            "embodiment": str(a["embodiment"]), "instruction": str(a["instruction"]),
+                            "final_poses": json.loads(a["final_poses"]), "actions": g["actions"][()]})
+    except (KeyError, ValueError, OSError) as exc:
+        raise BadInput(f"{path} is not a robomimic dataset written by rpg demos ({exc})") from None
+    return out
