@@ -12,9 +12,13 @@ from conftest import CHROMIUM_FLAGS
 ROOT = Path(__file__).resolve().parents[1]
 @pytest.mark.slow
 def test_gallery_has_every_card_and_image(chromium, tmp_path):
-    site = tmp_path / "site"
+    site, run = tmp_path / "site", tmp_path / "run"
+    proc = subprocess.run([sys.executable, "-m", "rpg.cli", "eval", "split=train", "--library", str(ROOT / "library" / "manifest.yaml"),
+                           "--policy", "oracle", "-n", "2", "--embodiment", "floating_gripper", "-o", str(run)],
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
     proc = subprocess.run([sys.executable, "-m", "rpg.cli", "report", str(ROOT / "library"), "-o", str(site),
-                           "--diversity", "family"], capture_output=True, text=True)
+                           "--diversity", "family", "--eval", str(run)], capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
     lib = ROOT / "library"
     expected = {d.name for d in lib.iterdir() if (d / "task.yaml").is_file()}
@@ -33,6 +37,15 @@ def test_gallery_has_every_card_and_image(chromium, tmp_path):
     waived = dom.count("solvable gate waived: the oracle cannot yet place touching cubes")
     assert len(rates) + waived == len(expected) and waived >= 2
     assert all(int(k) >= 3 for k in rates)
+    # the evaluation run: its page is linked, and each evaluated task's card shows its rate
+    train = [e["name"] for e in yaml.safe_load((lib / "manifest.yaml").read_text())["entries"] if e.get("split") == "train"]
+    evals = {}
+    for section in dom.split('<section class="card" id="')[1:]:
+        m = re.search(r'data-run="eval-0">oracle \(floating gripper\): (\d/\d) episodes', section.split("</section>")[0])
+        if m:
+            evals[section.split('"')[0]] = m.group(1)
+    assert len(train) == 10 and sorted(evals) == sorted(train) and set(evals.values()) <= {"2/2", "1/2", "0/2"}
+    assert 'href="eval-0.html"' in dom and (site / "eval-0.html").is_file() and (site / "eval-0" / "success.png").is_file()
     page = subprocess.run([chromium, *CHROMIUM_FLAGS, f"--user-data-dir={tmp_path / 'profile2'}", "--virtual-time-budget=10000",
                            "--dump-dom", (site / "diversity.html").as_uri()], capture_output=True, text=True, timeout=120).stdout
     assert 'id="diversity-link"' in dom and 'id="overall"' in page

@@ -328,6 +328,7 @@ def report_cmd(
     library: Annotated[Path, typer.Argument(help="A library directory (tasks and families), or an rpg eval run directory.")],
     output: Annotated[Path, typer.Option("-o", "--output", help="Site directory to write.")] = Path("site"),
     diversity: Annotated[str | None, typer.Option("--diversity", help="Add a diversity page grouped by author, family or tag:KEY.")] = None,
+    runs: Annotated[list[Path] | None, typer.Option("--eval", help="An rpg eval run directory: its page, and its success rate on each task's card (repeatable).")] = None,
 ) -> None:
     """Write a static HTML gallery: one card per task and family version; for an `rpg eval` run
     directory, its evaluation page (table, chart with error bars, videos, failed predicates)."""
@@ -338,7 +339,7 @@ def report_cmd(
         if is_run_dir(library):
             page = write_eval_report(library, output)
         else:
-            page = write_report(library, output, diversity=diversity)
+            page = write_report(library, output, diversity=diversity, runs=runs or [])
     out.print(f"wrote {page}")
 
 

@@ -23,7 +23,7 @@ video{width:256px;margin:.2rem}.fail{color:#a00}details{margin:.3rem 0}</style><
 <p>embodiment {{ cfg.embodiment }}, instruction {{ cfg.instruction }}, seeds {{ cfg.seeds|length }} per task
 ({{ cfg.seeds[0] }}..{{ cfg.seeds[-1] }}); overall <b id="overall">{{ pct(s.overall.mean) }}</b>
 (n {{ s.overall.n }}, 95% {{ pct(s.overall.wilson95[0]) }}..{{ pct(s.overall.wilson95[1]) }}).</p>
-<img class="chart" src="eval/success.png" alt="success rate per task with 95% Wilson intervals">
+<img class="chart" src="{{ name }}/success.png" alt="success rate per task with 95% Wilson intervals">
 {% for title, group in groups %}{% if group %}<h2>per {{ title }}</h2>
 <table id="{{ title|replace(' ', '-') }}"><tr><th>{{ title }}</th><th>success</th><th>stderr</th><th>95% Wilson</th><th>n</th></tr>
 {% for k, r in group.items() %}<tr><td>{{ k }}</td><td class="num">{{ pct(r.mean) }}</td><td class="num">{{ pct(r.stderr) }}</td>
@@ -32,7 +32,7 @@ video{width:256px;margin:.2rem}.fail{color:#a00}details{margin:.3rem 0}</style><
 <h2>episodes</h2>
 {% for key, eps in episodes %}<details{% if loop.first %} open{% endif %}><summary>{{ key }}: {{ eps|selectattr("success")|list|length }}/{{ eps|length }}</summary>
 {% for e in eps %}<div class="episode" data-success="{{ e.success|lower }}">seed {{ e.seed }} ({{ e.instruction_variant }}): {% if e.success %}success in {{ e.steps }} steps{% else %}<span class="fail">failed after {{ e.steps }} steps: {{ e.unsatisfied|join("; ") }}</span>{% endif %}
-{% if e.video %}<br><video controls muted preload="metadata" src="eval/{{ e.video }}"></video>{% endif %}</div>
+{% if e.video %}<br><video controls muted preload="metadata" src="{{ name }}/{{ e.video }}"></video>{% endif %}</div>
 {% endfor %}</details>{% endfor %}
 </body></html>
 """, autoescape=True)
@@ -64,13 +64,23 @@ def _chart(summary: dict, path: Path) -> None:
     plt.close(fig)
 
 
+def task_rates(run_dir: str | Path) -> dict[str, tuple[int, int]]:
+    """Successes and episodes of a run per task content hash: ``{hash: (k, n)}``."""
+    out: dict[str, tuple[int, int]] = {}
+    for e in read_episodes(Path(run_dir) / "episodes.jsonl"):
+        k, n = out.get(e["task_hash"], (0, 0))
+        out[e["task_hash"]] = (k + bool(e["success"]), n + 1)
+    return out
+
+
 def is_run_dir(path: Path) -> bool:
     """``path`` holds an ``rpg eval`` run (``run.json`` and ``summary.json``)."""
     return (Path(path) / "run.json").is_file() and (Path(path) / "summary.json").is_file()
 
 
-def write_eval_report(run_dir: str | Path, site: str | Path) -> Path:
-    """Write ``site/eval.html`` (with ``site/eval/``) for a run; return the page's path.
+def write_eval_report(run_dir: str | Path, site: str | Path, name: str = "eval") -> Path:
+    """Write ``site/<name>.html`` (with ``site/<name>/``: the chart and videos) for a run;
+    return the page's path.
 
     Raises:
         BadInput: ``run_dir`` holds no finished run, or ``site`` is a file.
@@ -81,20 +91,22 @@ def write_eval_report(run_dir: str | Path, site: str | Path) -> Path:
     if site.exists() and not site.is_dir():
         raise BadInput(f"{site} is a file; -o needs a directory for the site")
     summary = json.loads((run_dir / "summary.json").read_text())
-    (site / "eval").mkdir(parents=True, exist_ok=True)
-    _chart(summary, site / "eval" / "success.png")
+    assets = site / name
+    assets.mkdir(parents=True, exist_ok=True)
+    _chart(summary, assets / "success.png")
     by_task: dict[str, list[dict]] = {}
     for e in sorted(read_episodes(run_dir / "episodes.jsonl"), key=lambda e: (task_key(e), e["instruction_variant"], e["seed"])):
         by_task.setdefault(task_key(e), []).append(e)
         video = e.get("video")
         if video and (run_dir / video).is_file() and not (run_dir / video).is_symlink():
-            dst = site / "eval" / video
+            dst = assets / video
             dst.parent.mkdir(parents=True, exist_ok=True)
             shutil.copyfile(run_dir / video, dst)
         elif video:
             e["video"] = None
     groups = [("task", summary["tasks"]), ("family", summary["families"]), ("intent", summary["intents"]),
               ("split", summary["splits"]), ("instruction", summary["instructions"])]
-    page = site / "eval.html"
-    page.write_text(PAGE.render(cfg=summary["config"], s=summary, groups=groups, episodes=list(by_task.items()), pct=_pct))
+    page = site / f"{name}.html"
+    page.write_text(PAGE.render(cfg=summary["config"], s=summary, groups=groups, episodes=list(by_task.items()),
+                                pct=_pct, name=name))
     return page

@@ -8,6 +8,7 @@ next to the page, so the site directory is self-contained.
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import jinja2
@@ -29,6 +30,7 @@ h1 small{font-weight:normal;color:#666;font-size:.9rem}
 </style></head>
 <body><h1>{{ title }} <small>{{ cards|length }} cards</small></h1>
 {% if diversity %}<p><a id="diversity-link" href="diversity.html">Task diversity by {{ diversity }}</a></p>{% endif %}
+{% for r in runs %}<p class="run"><a id="{{ r.page }}-link" href="{{ r.page }}.html">Evaluation: {{ r.label }}</a> ({{ r.episodes }} episodes per task)</p>{% endfor %}
 <div class="grid">
 {% for c in cards %}<section class="card" id="{{ c.id }}" data-kind="{{ c.kind }}">
 <h2>{{ c.title }}</h2>
@@ -39,6 +41,7 @@ h1 small{font-weight:normal;color:#666;font-size:.9rem}
 <p class="gates">{% for g, st in c.gates.items() %}<span class="{{ st }}">{{ g }}</span>{% endfor %}</p>
 <p class="meta">{{ c.summary }}</p>
 <p class="meta oracle">{% if c.oracle %}oracle (solvable gate): {{ c.oracle.successes }}/{{ c.oracle.episodes }} episodes with the {{ c.oracle.embodiment|replace("_", " ") }}{% elif c.waived %}solvable gate waived: {{ c.waived }}{% else %}solvable gate not run{% endif %}</p>
+{% for r in c.evals %}<p class="meta eval" data-run="{{ r.page }}">{{ r.label }}: {{ r.k }}/{{ r.n }} episodes ({{ "%.0f"|format(100 * r.mean) }}%, 95% Wilson {{ "%.0f"|format(100 * r.lo) }}..{{ "%.0f"|format(100 * r.hi) }}%)</p>{% endfor %}
 {% if c.repairs %}<p class="meta">repairs: {{ c.repairs|join(", ") }}</p>{% endif %}
 {% if c.lineage %}<p class="meta">{{ c.lineage }}</p>{% endif %}
 </section>
@@ -113,7 +116,7 @@ def _card(directory: Path, site: Path, card_id: str, title: str, kind: str, line
     return {"id": card_id, "title": title, "kind": kind, "instruction": schema.instruction,
             "summary": schema.goal_summary, "images": images, "gates": prov.get("gates", {}),
             "repairs": [r["operator"] for r in prov.get("repairs", [])], "lineage": lineage,
-            "oracle": _oracle_rate(directory), "waived": waived}
+            "oracle": _oracle_rate(directory), "waived": waived, "hash": doc.get("content_hash"), "evals": []}
 
 
 def library_entries(library: Path) -> list[tuple[str, Path, dict | None]]:
@@ -150,23 +153,55 @@ def collect_cards(library: Path, site: Path) -> list[dict]:
     return cards
 
 
+def _add_runs(cards: list[dict], runs: list[Path], site: Path) -> list[dict]:
+    """Write each ``rpg eval`` run's page (``site/eval-<i>.html``) and put its success rate
+    on every card whose task content hash it evaluated; the runs' header lines."""
+    from rpg.eval.report import task_rates, write_eval_report
+    from rpg.eval.stats import rate
+
+    out = []
+    for i, run in enumerate(runs):
+        page = f"eval-{i}"
+        write_eval_report(run, site, name=page)
+        cfg = json.loads((Path(run) / "run.json").read_text())
+        label = f"{cfg['policy']} ({cfg['embodiment'].replace('_', ' ')})"
+        rates = task_rates(run)
+        for c in cards:
+            if c["hash"] in rates:
+                k, n = rates[c["hash"]]
+                r = rate(k, n)
+                c["evals"].append({"page": page, "label": label, "k": k, "n": n, "mean": r["mean"],
+                                   "lo": r["wilson95"][0], "hi": r["wilson95"][1]})
+        out.append({"page": page, "label": label, "episodes": len(cfg["seeds"])})
+    return out
+
+
 def write_report(library: str | Path, site: str | Path, title: str | None = None, diversity: str | None = None,
-                 embedding: str = "wordllama") -> Path:
+                 embedding: str = "wordllama", runs: list[str | Path] = ()) -> Path:
     """Write ``site/index.html`` (and ``site/img/``); return the page's path.
 
     With ``diversity`` (a grouping: ``author``, ``family`` or ``tag:KEY``) also write
     ``site/diversity.html`` and its plots under ``site/diversity/`` (:func:`rpg.diversity.analyze`).
+    With ``runs`` (``rpg eval`` run directories) also write each run's evaluation page
+    (``site/eval-<i>.html``) and show its success rate, with the Wilson 95% interval, on the
+    card of every task it evaluated (matched by content hash).
 
     Raises:
-        ValueError: ``library`` is not a directory.
+        ValueError: ``library`` is not a directory, or a run directory holds no finished run.
     """
     library, site = Path(library), Path(site)
     if not library.is_dir():
         raise ValueError(f"{library} is not a directory")
     if site.exists() and not site.is_dir():
         raise ValueError(f"{site} is a file; -o needs a directory for the site")
+    from rpg.eval.report import is_run_dir
+
+    for run in runs:
+        if not is_run_dir(Path(run)):
+            raise ValueError(f"--eval {run} holds no finished rpg eval run (run.json and summary.json)")
     (site / "img").mkdir(parents=True, exist_ok=True)
     cards = collect_cards(library, site)
+    run_lines = _add_runs(cards, [Path(r) for r in runs], site)
     title = title or f"rpg task library: {library.resolve().name}"
     if diversity:
         from rpg.diversity import analyze
@@ -175,5 +210,5 @@ def write_report(library: str | Path, site: str | Path, title: str | None = None
         structural = [(k.replace("_", " "), summary["structural"][k]) for k in ("goal_kinds", "predicate_types", "asset_classes")]
         (site / "diversity.html").write_text(DIVERSITY_PAGE.render(title=title, s=summary, structural=structural))
     page = site / "index.html"
-    page.write_text(PAGE.render(title=title, cards=cards, diversity=diversity))
+    page.write_text(PAGE.render(title=title, cards=cards, diversity=diversity, runs=run_lines))
     return page
