@@ -246,3 +246,45 @@ def test_the_evaluation_page_loads_in_chromium(chromium, tmp_path):
     assert len(re.findall(r'<div class="episode" data-success="(true|false)"', dom)) == 2
     assert dom.count("<video") == 2 and all((site / "eval" / v).is_file() for v in re.findall(r'src="eval/([^"]+\.mp4)"', dom))
     assert (site / "eval" / "success.png").stat().st_size > 1000
+
+
+def _alive(pid: int) -> bool:
+    try:
+        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except OSError:
+        return False
+    return state != "Z"
+
+
+def test_killing_a_parallel_run_takes_its_workers_with_it(tmp_path):
+    run = tmp_path / "run"
+    proc = subprocess.Popen([sys.executable, "-m", "rpg.cli", "eval", "library/three_block_stack", "--policy", "oracle",
+                             "-n", "40", "--jobs", "2", "--embodiment", FLOAT, "-o", str(run)], cwd=ROOT,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    log = run / "episodes.jsonl"
+    deadline = time.time() + 120
+    while time.time() < deadline and (not log.is_file() or not log.read_text()):
+        time.sleep(0.05)
+    children = [int(p) for p in Path(f"/proc/{proc.pid}/task/{proc.pid}/children").read_text().split()]
+    assert len(children) >= 2  # the pool's workers (and its resource tracker)
+    os.kill(proc.pid, signal.SIGKILL)
+    proc.wait()
+    deadline = time.time() + 20
+    while time.time() < deadline and any(_alive(c) for c in children):
+        time.sleep(0.1)
+    assert not any(_alive(c) for c in children)
+
+
+def test_a_process_keeps_few_environments_open():
+    from rpg.eval import runner
+
+    cfg = runner.EvalConfig("x", "noop", (0,), embodiment=FLOAT)
+    names = ["stack_blocks", "three_block_stack", "align_blocks"]
+    envs = [runner._env_for(runner.Unit(runner.EvalTask(str(ROOT / "library" / n), n), "canonical", (0,), cfg, "."))[0]
+            for n in names]
+    try:
+        assert len(runner._ENVS) == runner.ENV_CACHE_SIZE == 2
+        assert [k[0] for k in runner._ENVS] == [str(ROOT / "library" / n) for n in names[1:]]
+        assert envs[0].unwrapped.scene is not None and envs[0] not in [e for e, _ in runner._ENVS.values()]
+    finally:
+        runner.close_workers()

@@ -111,7 +111,10 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
     ran = 0
     pool = None
     if jobs > 1:
-        pool = cf.ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("spawn"))
+        from rpg.validate.isolation import die_with_parent
+
+        pool = cf.ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("spawn"),
+                                      initializer=die_with_parent)  # no orphans after a kill
     try:
         for task in tasks:
             made = sum(1 for e in writer.episodes if e["task_hash"] == hashes[task])

@@ -16,6 +16,7 @@ import hashlib
 import json
 import multiprocessing
 import os
+from collections import OrderedDict
 from collections.abc import Callable
 from dataclasses import asdict, dataclass
 from pathlib import Path
@@ -25,6 +26,7 @@ from filelock import FileLock, Timeout
 
 from rpg.errors import BadInput
 from rpg.eval.policies import BUILTIN, PolicyError, action_chunk, load_policy
+from rpg.validate.isolation import die_with_parent
 
 SEEDS_PER_UNIT = 5
 """Episodes of one task a worker runs per work unit (its environment is built once per
@@ -253,8 +255,13 @@ class Unit:
     run_dir: str
 
 
-_ENVS: dict = {}
-"""This process's environments by (task path, instruction variant)."""
+ENV_CACHE_SIZE = 2
+"""Environments a process keeps open (least recently used closed first): a Panda scene is
+~115 MB (its meshes), and a process that ran every task of a library kept all of them
+(6 GB per worker for 58 tasks)."""
+
+_ENVS: OrderedDict = OrderedDict()
+"""This process's environments by (task path, instruction variant), least recently used first."""
 _POLICY: dict = {}
 """This process's policies by SPEC: [policy, the environment it is bound to]."""
 
@@ -264,11 +271,14 @@ def _env_for(unit: Unit):
 
     key = (unit.task.path, unit.variant)
     if key not in _ENVS:
+        while len(_ENVS) >= ENV_CACHE_SIZE:
+            _ENVS.popitem(last=False)[1][0].close()
         cfg = unit.config
         size = VIDEO_SIZE if cfg.video and not cfg.camera_list() else tuple(cfg.image_size)
         env = BlockTaskEnv(unit.task.path, embodiment=cfg.embodiment, cameras=cfg.camera_list(),
                            image_size=size, instruction=unit.variant)
         _ENVS[key] = (env, env.source.content_hash)
+    _ENVS.move_to_end(key)
     return _ENVS[key]
 
 
@@ -430,7 +440,8 @@ def _run_locked(config: EvalConfig, run_dir: Path, work: list, jobs: int, progre
             finally:
                 close_workers()
         else:
-            with cf.ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
+            with cf.ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("spawn"),
+                                        initializer=die_with_parent) as pool:  # no orphans after a kill
                 futures = [pool.submit(run_unit, u) for u in units]
                 try:
                     for fut in cf.as_completed(futures):
