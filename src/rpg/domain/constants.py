@@ -330,6 +330,12 @@ MOCAP_INTERPOLATION_POINTS: int = 5
 (every CONTROL_SUBSTEPS / 5 = 5 physics steps, 10 ms): at most 1 cm and 0.1 rad at a time
 (project)."""
 
+GOAL_REEVALUATE_TOL: float = 1e-9
+"""An environment re-evaluates G after a step only when some object's position (m) or
+quaternion component moved more than this since G was last evaluated (objects at rest
+drift ~1e-13 per control step; every predicate tolerance is millimetres or more), which
+takes the predicates off most control steps (project)."""
+
 RESET_SETTLE_STEPS: int = 50
 """Physics steps after placing rho_0's sample and the robot's home pose, before the first
 observation of an episode (project)."""

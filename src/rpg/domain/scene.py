@@ -131,6 +131,8 @@ class Scene:
                 self._qvel_adr[name] = int(jnt.dofadr[0])
             else:
                 self._mocap_id[name] = int(body.mocapid[0])
+        self._free_qpos = np.array([a + k for _, a in sorted(self._qpos_adr.items()) for k in range(7)], dtype=int)
+        self._mocap_ids = np.array([m for _, m in sorted(self._mocap_id.items())], dtype=int)
         self._park_all()
 
     # -- poses -----------------------------------------------------------------
@@ -161,6 +163,13 @@ class Scene:
             return self.data.qpos[a : a + 3], self.data.qpos[a + 3 : a + 7]
         m = self._mocap_id[name]
         return self.data.mocap_pos[m], self.data.mocap_quat[m]
+
+    def pose_vector(self) -> np.ndarray:
+        """Every object's position (m) and quaternion in one array (7N,) float64 (a copy;
+        movable objects first, then fixed ones, each in name order): a cheap fingerprint of
+        the state that predicates read."""
+        return np.concatenate([self.data.qpos[self._free_qpos], self.data.mocap_pos[self._mocap_ids].ravel(),
+                               self.data.mocap_quat[self._mocap_ids].ravel()])
 
     def poses(self) -> dict[str, Pose]:
         """Poses of all objects, by name (sorted)."""

@@ -156,6 +156,7 @@ class BlockTaskEnv(gym.Env):
         self._elapsed = 0
         self._seed: int | None = None
         self._monitors: list = []
+        self._goal_cache: tuple[np.ndarray, object] | None = None
         self.action_space = self._make_action_space()
         self.observation_space = self._make_observation_space()
 
@@ -200,6 +201,7 @@ class BlockTaskEnv(gym.Env):
         mujoco.mj_step(self.model, self.data, nstep=C.RESET_SETTLE_STEPS)
         self._elapsed = 0
         self._monitors = [p.monitor() for p in self.task.goal_predicate.walk() if isinstance(p, InOrder)]
+        self._goal_cache = None
         return self._observation(), self._info()
 
     def step(self, action):
@@ -247,10 +249,25 @@ class BlockTaskEnv(gym.Env):
         obs["instruction"] = self.instruction
         return obs
 
-    def _info(self) -> dict:
+    def _evaluate_goal(self) -> tuple[bool, list[str], list[str]]:
+        """G on the current state (:meth:`rpg.domain.task.BlockTask.evaluate`): whether it holds,
+        and the reasons of its satisfied and unsatisfied leaf predicates.  G reads only object
+        poses, so the last result is reused while no object has moved more than
+        :data:`~rpg.domain.constants.GOAL_REEVALUATE_TOL` since it was computed."""
+        poses = self.scene.pose_vector()
+        cache = self._goal_cache
+        if cache is not None and np.max(np.abs(poses - cache[0]), initial=0.0) <= C.GOAL_REEVALUATE_TOL:
+            return cache[1]
         result = self.task.evaluate()
         leaves = result.leaves()
-        satisfied = result.satisfied
+        out = (bool(result.satisfied), [r.reason for r in leaves if r.satisfied],
+               [r.reason for r in leaves if not r.satisfied])
+        self._goal_cache = (poses, out)
+        return out
+
+    def _info(self) -> dict:
+        satisfied, good, bad = self._evaluate_goal()
+        good, bad = list(good), list(bad)
         if self._monitors:  # a temporal goal: its events must have happened in order
             state = self.task.world_state()
             for m in self._monitors:
@@ -258,7 +275,7 @@ class BlockTaskEnv(gym.Env):
                 order = m.result()
                 satisfied = satisfied and order.satisfied
                 if not order.satisfied:
-                    leaves = [*leaves, order]
+                    bad.append(order.reason)
         body = self.robot.grasped_body()
         grasped = self._body_names.get(body, "") if body is not None else ""
         return {
@@ -266,8 +283,7 @@ class BlockTaskEnv(gym.Env):
             "goal_satisfied": bool(satisfied),
             "is_grasped": body is not None,
             "grasped": grasped,
-            "diagnostics": {"satisfied": [r.reason for r in leaves if r.satisfied],
-                            "unsatisfied": [r.reason for r in leaves if not r.satisfied]},
+            "diagnostics": {"satisfied": good, "unsatisfied": bad},
             "elapsed_steps": self._elapsed,
             "seed": self._seed,
             "task_hash": self.source.content_hash,
