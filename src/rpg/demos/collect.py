@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 
 from rpg.demos.lerobot import LeRobotWriter, read_episode_actions, read_jsonl
-from rpg.demos.record import Episode, record_episode
+from rpg.demos.record import Episode, close_cached_env, record_episode
 from rpg.errors import BadInput
 
 MAX_SEED_FACTOR = 3
@@ -67,7 +67,8 @@ class Job:
 
 def _run(job: Job) -> Episode:
     return record_episode(job.task, job.seed, job.embodiment, job.cameras, job.image_size, job.instruction,
-                          video_dir=Path(job.staging) / f"{Path(job.task).name}-{job.seed}", frames=job.frames)
+                          video_dir=Path(job.staging) / f"{Path(job.task).name}-{job.seed}", frames=job.frames,
+                          reuse_env=True)
 
 
 def _task_hash(task: str) -> str:
@@ -138,6 +139,7 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
     finally:
         if pool:
             pool.shutdown(cancel_futures=True)
+        close_cached_env()
         shutil.rmtree(staging, ignore_errors=True)
         if fmt == "hdf5":
             writer.finalize()  # every committed episode, also after an error

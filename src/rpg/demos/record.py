@@ -137,10 +137,34 @@ def _frame_sink(frames: str, path: Path):
     return VideoWriter(path, C.CONTROL_HZ)
 
 
+_CACHED: dict = {}
+"""The environment :func:`record_episode` keeps open between episodes with ``reuse_env``
+(one: building a Panda scene takes longer than a short episode)."""
+
+
+def _environment(key: tuple, reuse: bool) -> BlockTaskEnv:
+    if reuse and key in _CACHED:
+        return _CACHED[key]
+    close_cached_env()
+    task, embodiment, cameras, image_size, instruction, max_steps = key
+    env = BlockTaskEnv(task, embodiment=embodiment, control_mode="ee_delta", cameras=cameras,
+                       image_size=image_size, instruction=instruction, max_episode_steps=max_steps)
+    if reuse:
+        _CACHED[key] = env
+    return env
+
+
+def close_cached_env() -> None:
+    """Close the environment kept open by ``record_episode(..., reuse_env=True)``."""
+    for env in _CACHED.values():
+        env.close()
+    _CACHED.clear()
+
+
 def record_episode(task: str, seed: int, embodiment: str = "floating_gripper",
                    cameras: tuple[str, ...] = ("agentview", "wrist"), image_size: tuple[int, int] = (256, 256),
                    instruction: str = "canonical", video_dir: str | Path | None = None,
-                   max_steps: int | None = None, frames: str = "mp4") -> Episode:
+                   max_steps: int | None = None, frames: str = "mp4", reuse_env: bool = False) -> Episode:
     """Run the oracle for one episode and record it.
 
     Args:
@@ -154,6 +178,9 @@ def record_episode(task: str, seed: int, embodiment: str = "floating_gripper",
         max_steps: episode step limit (default: the environment's rule).
         frames: ``"mp4"`` (a video of T frames per camera) or ``"hdf5"`` (a frame store of
             T + 1 frames: the observation after the last step too, robomimic's ``next_obs``).
+        reuse_env: keep the environment open for the next episode with the same arguments
+            (:func:`close_cached_env` closes it); an episode depends only on its seed, so
+            this changes nothing but the time.
 
     Returns:
         The :class:`Episode` (``success`` false when the oracle failed; its videos are then
@@ -164,8 +191,7 @@ def record_episode(task: str, seed: int, embodiment: str = "floating_gripper",
     """
     if frames not in FRAME_FORMATS:
         raise ValueError(f"frames must be one of {FRAME_FORMATS}, not {frames!r}")
-    env = BlockTaskEnv(task, embodiment=embodiment, control_mode="ee_delta", cameras=tuple(cameras),
-                       image_size=image_size, instruction=instruction, max_episode_steps=max_steps)
+    env = _environment((str(task), embodiment, tuple(cameras), tuple(image_size), instruction, max_steps), reuse_env)
     try:
         oracle = Oracle(env)
         obs, info = env.reset(seed=seed)
@@ -208,4 +234,5 @@ def record_episode(task: str, seed: int, embodiment: str = "floating_gripper",
                        low_dim={k: np.array([d[k] for d in low_dim]) for k in LOW_DIM_KEYS},
                        sim_states=np.array(sims))
     finally:
-        env.close()
+        if not reuse_env:
+            env.close()
