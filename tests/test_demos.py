@@ -14,6 +14,7 @@ from pathlib import Path
 import av
 import numpy as np
 import pyarrow.parquet as pq
+import pytest
 
 LIBRARY = Path(__file__).resolve().parents[1] / "library"
 STACK = str(LIBRARY / "stack_blocks")
@@ -81,18 +82,24 @@ def test_replay_detects_a_changed_action(tmp_path):
     assert r.returncode == 1 and "MISMATCH" in r.stdout
 
 
-def test_a_run_killed_mid_way_resumes_keeping_finished_episodes(tmp_path):
-    out = tmp_path / "ds"
+def _kill_after_first_episode(args: list[str], out: Path) -> list[dict]:
+    """Run ``rpg ARGS``, SIGKILL it once ``out`` has committed an episode; the committed lines."""
     env = dict(os.environ, MUJOCO_GL="egl", LITELLM_LOCAL_MODEL_COST_MAP="True")
-    proc = subprocess.Popen([sys.executable, "-m", "rpg.cli", "demos", STACK, "--out", str(out), "-n", "4",
-                             "--image-size", "32"], env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    proc = subprocess.Popen([sys.executable, "-m", "rpg.cli", *args], env=env,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     log = out / "meta" / "episodes.jsonl"
     deadline = time.time() + 300
     while time.time() < deadline and not (log.is_file() and log.read_text().count("\n") >= 1):
         time.sleep(0.05)
     os.kill(proc.pid, signal.SIGKILL)
     proc.wait()
-    kept = len(_lines(log))
+    return _lines(log)
+
+
+def test_a_run_killed_mid_way_resumes_keeping_finished_episodes(tmp_path):
+    out = tmp_path / "ds"
+    log = out / "meta" / "episodes.jsonl"
+    kept = len(_kill_after_first_episode(["demos", STACK, "--out", str(out), "-n", "4", "--image-size", "32"], out))
     assert 1 <= kept < 4
     torn = out / "data" / "chunk-000" / "episode_000009.parquet"  # what a kill during writing leaves
     torn.write_bytes(b"PAR1 torn")
@@ -105,6 +112,19 @@ def test_a_run_killed_mid_way_resumes_keeping_finished_episodes(tmp_path):
     assert len(list((out / "data").rglob("*.parquet"))) == 4
     assert len(list((out / "videos").rglob("*.mp4"))) == 8
     assert _rpg("demos", "--replay", out).returncode == 0
+
+
+@pytest.mark.parametrize("fmt", ["lerobot", "hdf5"])
+def test_a_kill_between_the_commit_and_the_attempt_line_does_not_record_a_seed_twice(tmp_path, fmt):
+    out = tmp_path / "ds"
+    args = ["demos", STACK, "--out", out, "--cameras", "", "--format", fmt]
+    assert _rpg(*args, "-n", "2").returncode == 0
+    attempts = out / "meta" / "rpg_attempts.jsonl"
+    lines = attempts.read_text().splitlines(keepends=True)
+    attempts.write_text("".join(lines[:-1]))  # what a kill right after the last commit line leaves
+    r = _rpg(*args, "-n", "3")
+    assert r.returncode == 0, r.stderr
+    assert sorted(e["seed"] for e in _lines(out / "meta" / "episodes.jsonl")) == [0, 1, 2]
 
 
 def test_two_jobs_write_the_same_dataset_as_one(tmp_path):
@@ -192,17 +212,9 @@ def test_hdf5_replay_detects_a_changed_action_and_formats_do_not_mix(tmp_path):
 
 def test_hdf5_run_killed_mid_way_resumes_keeping_finished_episodes(tmp_path):
     out = tmp_path / "ds"
-    env = dict(os.environ, MUJOCO_GL="egl", LITELLM_LOCAL_MODEL_COST_MAP="True")
     args = ["demos", STACK, "--out", str(out), "-n", "4", "--image-size", "32", "--format", "hdf5"]
-    proc = subprocess.Popen([sys.executable, "-m", "rpg.cli", *args], env=env,
-                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     log = out / "meta" / "episodes.jsonl"
-    deadline = time.time() + 300
-    while time.time() < deadline and not (log.is_file() and log.read_text().count("\n") >= 1):
-        time.sleep(0.05)
-    os.kill(proc.pid, signal.SIGKILL)
-    proc.wait()
-    kept = _lines(log)
+    kept = _kill_after_first_episode(args, out)
     assert 1 <= len(kept) < 4 and (out / "parts" / "demo_0.hdf5").is_file()
     torn = out / "parts" / "demo_9.hdf5"  # a part written but never committed
     torn.write_bytes(b"\x89HDF torn")

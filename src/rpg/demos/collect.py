@@ -19,7 +19,8 @@ from pathlib import Path
 
 import numpy as np
 
-from rpg.demos.lerobot import LeRobotWriter, read_episode_actions, read_jsonl
+from rpg.demos.lerobot import LeRobotWriter, read_episode_actions
+from rpg.demos.log import read_jsonl
 from rpg.demos.record import Episode, close_cached_env, record_episode
 from rpg.errors import BadInput
 
@@ -119,8 +120,9 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
     try:
         for task in tasks:
             made = sum(1 for e in writer.episodes if e["task_hash"] == hashes[task])
-            tried = [a for a in writer.attempts if a["task_hash"] == hashes[task]]
-            seed = max((a["seed"] for a in tried), default=-1) + 1
+            # a kill between an episode's commit line and its attempt line leaves it only in episodes
+            tried = [a["seed"] for a in (*writer.attempts, *writer.episodes) if a["task_hash"] == hashes[task]]
+            seed = max(tried, default=-1) + 1
             last = MAX_SEED_FACTOR * episodes
             while made < episodes and seed < last:
                 batch = [Job(task, s, embodiment, tuple(cameras), tuple(image_size), instruction, str(staging),
