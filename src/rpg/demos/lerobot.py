@@ -29,6 +29,7 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.parquet as pq
 
+from rpg.demos.log import append_jsonl, attempt_record, read_jsonl, rewrite_jsonl
 from rpg.demos.record import ACTION_NAMES, STATE_NAMES, Episode
 from rpg.domain import constants as C
 from rpg.env.video import VIDEO_CODEC
@@ -89,26 +90,6 @@ def _write_json(path: Path, obj) -> None:
     os.replace(tmp, path)
 
 
-def _append_line(path: Path, obj) -> None:
-    with open(path, "a") as fh:
-        fh.write(json.dumps(obj, sort_keys=True) + "\n")
-        fh.flush()
-        os.fsync(fh.fileno())
-
-
-def read_jsonl(path: Path) -> list[dict]:
-    """Complete JSON lines of a file (a torn last line is ignored)."""
-    if not path.is_file():
-        return []
-    out = []
-    for line in path.read_text().splitlines():
-        try:
-            out.append(json.loads(line))
-        except json.JSONDecodeError:
-            break
-    return out
-
-
 class LeRobotWriter:
     """Appends recorded episodes to a LeRobot v2.1 dataset directory (resumable).
 
@@ -157,18 +138,12 @@ class LeRobotWriter:
         for f in sorted(self.root.rglob(".*tmp*")):
             f.unlink()
         stats = read_jsonl(self.meta / "episodes_stats.jsonl")[:n]
-        self._rewrite_jsonl("episodes_stats.jsonl", stats)
-        self._rewrite_jsonl("episodes.jsonl", self.episodes)
+        rewrite_jsonl(self.meta / "episodes_stats.jsonl", stats)
+        rewrite_jsonl(self.meta / "episodes.jsonl", self.episodes)
         self._write_info()
         done = {(a["task_hash"], a["seed"], a["instruction"]) for a in self.attempts}
         done |= {(e["task_hash"], e["seed"], e["instruction"]) for e in self.episodes}
         return done
-
-    def _rewrite_jsonl(self, name: str, rows: list[dict]) -> None:
-        path = self.meta / name
-        tmp = path.with_name(f".{name}.tmp-{os.getpid()}")
-        tmp.write_text("".join(json.dumps(r, sort_keys=True) + "\n" for r in rows))
-        os.replace(tmp, path)
 
     def _path(self, template: str, index: int, **kw) -> Path:
         return self.root / template.format(episode_chunk=index // CHUNK_SIZE, episode_index=index, **kw)
@@ -179,18 +154,17 @@ class LeRobotWriter:
         Returns:
             The episode index, or None for a failed episode (its videos are deleted).
         """
-        attempt = {"task_hash": ep.task_hash, "seed": ep.seed, "instruction": ep.instruction,
-                   "success": ep.success, "steps": ep.length, "failure": ep.failure}
+        attempt = attempt_record(ep)
         if not ep.success:
             for v in ep.videos.values():
                 Path(v).unlink(missing_ok=True)
-            _append_line(self.meta / "rpg_attempts.jsonl", attempt)
+            append_jsonl(self.meta / "rpg_attempts.jsonl", attempt)
             self.attempts.append(attempt)
             return None
         index = len(self.episodes)
         if ep.instruction not in self.tasks:
             self.tasks.append(ep.instruction)
-            self._rewrite_jsonl("tasks.jsonl", [{"task_index": i, "task": t} for i, t in enumerate(self.tasks)])
+            rewrite_jsonl(self.meta / "tasks.jsonl", [{"task_index": i, "task": t} for i, t in enumerate(self.tasks)])
         task_index = self.tasks.index(ep.instruction)
         start = sum(e["length"] for e in self.episodes)
         n = ep.length
@@ -216,14 +190,14 @@ class LeRobotWriter:
                  "episode_index": _stats(np.full(n, index)), "index": _stats(start + frame),
                  "task_index": _stats(np.full(n, task_index))}
         stats |= {video_key(c): ep.image_stats[c] for c in self.cameras}
-        _append_line(self.meta / "episodes_stats.jsonl", {"episode_index": index, "stats": stats})
+        append_jsonl(self.meta / "episodes_stats.jsonl", {"episode_index": index, "stats": stats})
         line = {"episode_index": index, "tasks": [ep.instruction], "length": n, "task": ep.task,
                 "task_hash": ep.task_hash, "task_name": ep.task_name, "seed": ep.seed,
                 "embodiment": ep.embodiment, "instruction": ep.instruction, "paraphrase": ep.paraphrase,
                 "final_poses": ep.final_poses}
-        _append_line(self.meta / "episodes.jsonl", line)  # the commit
+        append_jsonl(self.meta / "episodes.jsonl", line)  # the commit
         self.episodes.append(line)
-        _append_line(self.meta / "rpg_attempts.jsonl", attempt)
+        append_jsonl(self.meta / "rpg_attempts.jsonl", attempt)
         self.attempts.append(attempt)
         self._write_info()
         return index

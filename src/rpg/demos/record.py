@@ -143,9 +143,10 @@ _CACHED: dict = {}
 
 
 def _environment(key: tuple, reuse: bool) -> BlockTaskEnv:
-    if reuse and key in _CACHED:
-        return _CACHED[key]
-    close_cached_env()
+    if reuse:
+        if key in _CACHED:
+            return _CACHED[key]
+        close_cached_env()
     task, embodiment, cameras, image_size, instruction, max_steps = key
     env = BlockTaskEnv(task, embodiment=embodiment, control_mode="ee_delta", cameras=cameras,
                        image_size=image_size, instruction=instruction, max_episode_steps=max_steps)

@@ -38,6 +38,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 
+from rpg.demos.log import append_jsonl, attempt_record, read_jsonl, rewrite_jsonl
 from rpg.demos.record import LOW_DIM_KEYS, Episode
 from rpg.errors import BadInput
 
@@ -58,25 +59,6 @@ IMAGE_COMPRESSION = {"compression": "gzip", "compression_opts": 4}
 
 SETTINGS = "rpg_robomimic.json"
 """``meta/`` file with the dataset's embodiment, cameras and image size (a resumed run must match)."""
-
-
-def _jsonl(path: Path) -> list[dict]:
-    if not path.is_file():
-        return []
-    out = []
-    for line in path.read_text().splitlines():
-        try:
-            out.append(json.loads(line))
-        except json.JSONDecodeError:
-            break
-    return out
-
-
-def _append(path: Path, obj: dict) -> None:
-    with open(path, "a") as fh:
-        fh.write(json.dumps(obj, sort_keys=True) + "\n")
-        fh.flush()
-        os.fsync(fh.fileno())
 
 
 class FrameStore:
@@ -179,18 +161,16 @@ class RobomimicWriter:
         self.meta.mkdir(parents=True, exist_ok=True)
         self.parts.mkdir(exist_ok=True)
         settings.write_text(json.dumps(self._settings(), indent=2, sort_keys=True) + "\n")
-        self.episodes = _jsonl(self.meta / "episodes.jsonl")
-        self.attempts = _jsonl(self.meta / "rpg_attempts.jsonl")
+        self.episodes = read_jsonl(self.meta / "episodes.jsonl")
+        self.attempts = read_jsonl(self.meta / "rpg_attempts.jsonl")
         n = len(self.episodes)
         for f in sorted(self.parts.glob("demo_*.hdf5")):
             if int(f.stem.split("_")[1]) >= n:  # written, never committed
                 f.unlink()
         for f in sorted(self.root.rglob(".*tmp*")):
             f.unlink()
-        for name, rows in (("episodes.jsonl", self.episodes), ("rpg_attempts.jsonl", self.attempts)):
-            tmp = self.meta / f".{name}.tmp-{os.getpid()}"
-            tmp.write_text("".join(json.dumps(r, sort_keys=True) + "\n" for r in rows))
-            os.replace(tmp, self.meta / name)
+        rewrite_jsonl(self.meta / "episodes.jsonl", self.episodes)
+        rewrite_jsonl(self.meta / "rpg_attempts.jsonl", self.attempts)
 
     def add(self, ep: Episode) -> int | None:
         """Commit a successful episode as a part file; record any attempt.
@@ -198,12 +178,11 @@ class RobomimicWriter:
         Returns:
             The episode index, or None for a failed episode (its frame stores are deleted).
         """
-        attempt = {"task_hash": ep.task_hash, "seed": ep.seed, "instruction": ep.instruction,
-                   "success": ep.success, "steps": ep.length, "failure": ep.failure}
+        attempt = attempt_record(ep)
         if not ep.success:
             for v in ep.videos.values():
                 Path(v).unlink(missing_ok=True)
-            _append(self.meta / "rpg_attempts.jsonl", attempt)
+            append_jsonl(self.meta / "rpg_attempts.jsonl", attempt)
             self.attempts.append(attempt)
             return None
         index = len(self.episodes)
@@ -220,9 +199,9 @@ class RobomimicWriter:
             tmp.unlink(missing_ok=True)
         for v in ep.videos.values():
             Path(v).unlink(missing_ok=True)
-        _append(self.meta / "episodes.jsonl", line)  # the commit
+        append_jsonl(self.meta / "episodes.jsonl", line)  # the commit
         self.episodes.append(line)
-        _append(self.meta / "rpg_attempts.jsonl", attempt)
+        append_jsonl(self.meta / "rpg_attempts.jsonl", attempt)
         self.attempts.append(attempt)
         return index
 
