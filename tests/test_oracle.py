@@ -162,14 +162,14 @@ def test_the_solvable_gate_records_the_oracle_success_rate(tmp_path):
 
 @pytest.mark.slow
 def test_a_task_the_oracle_cannot_build_is_rejected_and_no_environment_loads_it(tmp_path):
-    """A 3x3-base pyramid of touching cubes is stable and valid, but the oracle cannot yet
-    place touching cubes: with --gate solvable the compile is refused, naming the gate."""
+    """A 3x3x3 cube of touching cubes is stable and valid, but the oracle cannot build its
+    upper layers (the last cube of a layer has no side to be released beside and pushed in
+    from): with --gate solvable the compile is refused, naming the gate."""
     import json
 
     from rpg.errors import TaskInvalid
 
-    r = _rpg("compile", "Build a pyramid of blue blocks with a 3x3 base", "-o", str(tmp_path), "--gate", "solvable",
-             "--json")
+    r = _rpg("compile", "Make a 3x3x3 cube of blue blocks", "-o", str(tmp_path), "--gate", "solvable", "--json")
     assert r.returncode == 1, r.stdout + r.stderr
     gates = {g["gate"]: g for g in json.loads(r.stdout)["gates"]}
     assert gates["goal_state"]["status"] == "pass"

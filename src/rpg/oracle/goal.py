@@ -142,9 +142,20 @@ def _supports(poses: dict[str, Pose], sizes: dict[str, float]) -> dict[str, tupl
     return out
 
 
+def _order_key(t: Target) -> tuple:
+    """Tie-break between cubes free to be placed next: by name, except that a dense layout
+    (cubes touching) is filled layer by layer, each layer from the far row (high x) to the
+    near one and each row from +y to -y, so that a cube's placed neighbours stand only on its
+    +x and +y sides and it can be pushed against them from the free sides."""
+    if not t.dense:
+        return (0, 0.0, 0.0, 0.0, t.name)
+    return (1, round(t.pos[2], 3), round(-t.pos[0], 3), round(-t.pos[1], 3), t.name)
+
+
 def placement_order(targets: dict[str, Target], events: list[list[str]]) -> list[str]:
     """Cubes in placement order: supports first; a temporal goal's events in their order;
-    ties broken by name (deterministic).
+    ties broken by name, and dense layouts layer by layer in a sweep (``_order_key``);
+    deterministic.
 
     Raises:
         OracleError: the constraints form a cycle.
@@ -161,7 +172,7 @@ def placement_order(targets: dict[str, Target], events: list[list[str]]) -> list
                 if a in targets and b in targets and a != b:
                     g.add_edge(a, b)
     try:
-        return list(nx.lexicographical_topological_sort(g))
+        return list(nx.lexicographical_topological_sort(g, key=lambda n: _order_key(targets[n])))
     except nx.NetworkXUnfeasible as exc:
         raise OracleError("the goal's support and temporal order form a cycle") from exc
 
@@ -215,9 +226,12 @@ def plan_goal(scratch, goal_module, current: dict[str, Pose], movable: dict[str,
 
     candidates = [np.zeros(2)]
     if not patches:
-        for n in sorted(movable):
-            if not supports[n]:
-                candidates.append(np.subtract(current[n].pos[:2], goal[n].pos[:2]))
+        anchors = [n for n in sorted(movable) if not supports[n]]
+        if dense:  # a dense layout grows from its first cube (the sweep's corner), which may stay
+            anchors = [min((n for n in anchors if n in dense),
+                           key=lambda n: (goal[n].pos[2], -goal[n].pos[0], -goal[n].pos[1], n))]
+        for n in anchors:
+            candidates.append(np.subtract(current[n].pos[:2], goal[n].pos[:2]))
 
     best = None
     for offset in candidates:

@@ -25,8 +25,9 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
+import mujoco
 import numpy as np
 
 from rpg.domain import constants as C
@@ -62,15 +63,53 @@ FINGER_REACH_OPEN = 0.048
 FINGER_HALF_WIDTH = 0.0105
 """Half the width (m) of a finger across its opening axis (collision box)."""
 
-PUSHER_HALF_THICKNESS = 0.0105
-"""Half the thickness (m) of the closed fingers along a push made across the finger axis."""
+PUSHER_HALF_THICKNESS = 0.0095
+"""How far (m) the tilted, closed fingers' face leads the TCP along a push made across the
+finger axis, low on the pushed cube (see PUSH_TILT)."""
+
+PUSHER_HALF_SPAN = 0.025
+"""Half the span (m) of the closed fingers along their axis, at its widest within a cube's
+height above the fingertips (the Menagerie finger mesh widens upward)."""
+
+PUSH_CONTACT_TOL = 0.0015
+"""How far (m) a neighbour beside the pushed cube may stand proud of the face the pusher stops
+at: where the fingers are wider than a cube (2 cm and more above the fingertips) the tilted
+pusher trails its leading edge by 1.5 mm or more (see PUSH_TILT)."""
 
 PUSHER_ROOM = 0.035
 """Room (m) the closed fingers need beside a cube to push it."""
 
-LATERAL_GAP = 0.004
+LATERAL_GAP = 0.0025
 """Gap (m) kept to a neighbour across the finger axis when placing (the placement's
 precision is ~2 mm); dense layouts' predicates tolerate it (GRID_TOL)."""
+
+GAP_CLOSE_MIN = 0.0015
+"""A dense layout's cube is pushed against a placed goal neighbour when the gap between their
+faces is wider than this (m) ..."""
+
+GAP_CLOSE_LEFT = 0.0005
+"""... until this gap (m) is left (the goal layouts' own clearance)."""
+
+DENSE_GAP_CLOSE = 0.008
+"""Widest gap (m) the oracle closes by a push (a wider one is a misplacement, placed again)."""
+
+SHIFT_MIN = 0.003
+"""A finger short of room by less than this (m) is released in place (FINGER_REACH has that
+margin), not beside the goal and pushed."""
+
+PUSH_TILT = math.radians(8.0)
+"""Tilt (rad) of the pushing hand about the horizontal axis across the push, fingertips
+leading: the Menagerie fingers' faces widen ~2 mm upward, so an upright pusher meets a cube at
+its top edge; tilted 8 degrees, the face leads 9.5 mm from the TCP axis 5 mm above the
+fingertips and 7 mm at 35 mm (measured on the collision meshes)."""
+
+PUSH_TOL = 0.0007
+"""How close (m) the pusher gets to the end of a push (the gaps it closes are ~2 mm)."""
+
+PUSH_HEIGHT = 0.012
+"""TCP height (m) above a pushed cube's bottom: the closed fingertips (0.009 m below the TCP)
+just clear its support, and the fingers' faces press the cube's lower half (a push high on
+the face tips it over)."""
 
 PUSH_OVERSHOOT = 0.0
 """How far (m) past the goal face the pusher's face is driven."""
@@ -82,6 +121,14 @@ GRIPPER_OPEN = -1.0
 GRIPPER_CLOSED = 1.0
 GRIPPER_NARROW = -0.5
 """Gripper command that releases a cube while opening only part way (dense layouts)."""
+
+ZONE_RADIUS = 0.15
+"""Loose cubes within this distance (m) of a dense layout's next goal are candidates to move
+away when they leave no room to place it."""
+
+SUPPORT_MARGIN = 0.01
+"""A cube released beside its goal on the layer below (to be pushed into place) keeps its
+centre this far (m) inside the footprint of the cubes it rests on."""
 
 BUFFER_STEP = 0.02
 """Grid step (m) of candidate spots for cubes moved out of the way."""
@@ -133,13 +180,15 @@ class Oracle:
         self._gen: Iterator[np.ndarray] | None = None
         self.plan: GoalPlan | None = None
         self.attempts: dict[str, int] = {}
+        self.gap_pushes: dict[str, int] = {}
+        self._avoid: list[np.ndarray] | tuple = ()
         self.failure: str | None = None
 
     # -- policy interface -----------------------------------------------------------
     def reset(self, obs=None) -> None:
         """Plan for the episode the environment has just reset to."""
         self.plan, self.failure = None, None
-        self.attempts = {}
+        self.attempts, self.gap_pushes = {}, {}
         self._gen = self._run()
 
     def act(self, obs=None) -> np.ndarray:
@@ -216,9 +265,19 @@ class Oracle:
             if above:
                 yield from self._move_aside(above[0], poses)
                 continue
-            blockers = self._blocking(target, poses)
+            if target.dense:
+                tidy = self._tidy(name, poses)
+                if tidy is not None:
+                    yield from tidy
+                    continue
+            blockers, self._avoid = self._blocking(target, poses), ()
+            if not blockers and target.dense:
+                try:
+                    self._grasp(name, poses[name].quat, target, poses)
+                except OracleError:
+                    blockers = self._zone_blockers(name, target, poses)
             if blockers:
-                yield from self._move_aside(blockers[0], poses)
+                yield from self._move_aside(blockers[0], poses, avoid=self._avoid)
                 continue
             self.attempts[name] = self.attempts.get(name, 0) + 1
             if self.attempts[name] > MAX_ATTEMPTS:
@@ -238,7 +297,7 @@ class Oracle:
         actual = poses[target.supports[0]]
         dx = np.subtract(target.pos, base.pos)
         pos = np.asarray(actual.pos) + dx
-        return Target(target.name, tuple(pos), target.quat, target.size, target.exact, target.supports)
+        return replace(target, pos=tuple(pos))
 
     # -- primitives -----------------------------------------------------------------
     def _travel_z(self, held: str, *points) -> float:
@@ -263,16 +322,21 @@ class Oracle:
                 room = min(room, along - self.sizes[n])
         return room
 
-    def _grasp(self, name: str, pick_quat, target: Target, poses) -> Grasp:
+    def _grasp(self, name: str, pick_quat, target: Target, poses, place_poses=None) -> Grasp:
         """The grasp that moves ``name`` to ``target``: yaws that respect the cube's symmetry,
         a finger axis away from neighbours, and a place-then-push when the fingers have no room
-        on either axis."""
+        on either axis.  ``place_poses`` (default ``poses``) are the cubes the placement must
+        clear (a dense layout's planner leaves out loose cubes it will move away).
+
+        Raises:
+            OracleError: no grasp within the wrist's yaw range has room.
+        """
+        place_poses = poses if place_poses is None else place_poses
         psi = cube_yaw(pick_quat)
         delta = 0.0
         if target.exact:
             r = rot(target.quat) @ rot(pick_quat).T
             delta = math.atan2(r[1, 0], r[0, 0])
-        ignore = {name, *target.supports}
         best = None
         for k in range(-4, 5):
             g_pick = psi + k * math.pi / 2
@@ -289,12 +353,9 @@ class Oracle:
             for g_place in places:
                 if abs(g_place) > YAW_LIMIT:
                     continue
-                f = finger_axis(g_place)
-                plus, minus = self._room(target.pos, f, ignore, poses), self._room(target.pos, -f, ignore, poses)
-                low, high, out = (minus, plus, f) if minus < plus else (plus, minus, -f)
-                shift = max(0.0, FINGER_REACH - low)
-                if shift > 0 and high < FINGER_REACH + shift + PUSHER_ROOM:
-                    continue  # no room to place beside and push
+                low, out, shift = self._release_side(name, target, finger_axis(g_place), place_poses)
+                if not self._place_ok(name, target, out, shift, place_poses):
+                    continue
                 score = (-10.0 * shift + 0.5 * min(room_pick, 0.05) + min(low, 0.05)
                          - 0.01 * abs(g_place - g_pick) - 0.005 * (abs(g_pick) + abs(g_place)))
                 if best is None or score > best[0]:
@@ -303,6 +364,97 @@ class Oracle:
         if best is None:
             raise OracleError(f"no grasp of {name} within the wrist's yaw range")
         return best[1]
+
+    def _release_side(self, name: str, target: Target, f: np.ndarray, poses) -> tuple[float, np.ndarray, float]:
+        """For fingers along ``f`` (2,) at ``target``: the room (m) on the tighter side, the
+        direction ``out`` (2,) away from it, and the shift (m) along ``out`` the cube must be
+        released at for the finger on that side to fit (0 when it fits)."""
+        ignore = {name, *target.supports}
+        plus, minus = self._room(target.pos, f, ignore, poses), self._room(target.pos, -f, ignore, poses)
+        low, out = (minus, f) if minus < plus else (plus, -f)
+        shift = FINGER_REACH - low if FINGER_REACH - low > SHIFT_MIN else 0.0
+        return low, out, shift
+
+    def _place_ok(self, name: str, target: Target, out: np.ndarray, shift: float, poses) -> bool:
+        """Whether ``name`` can be released ``shift`` (m) beside ``target`` along ``out`` (2,)
+        with the fingers along ``out`` and, when shifted, pushed into place: room for the far
+        finger and the pusher, something to rest on, a clear path for the pusher."""
+        if shift == 0:
+            return True
+        ignore = {name, *target.supports}
+        return (self._room(target.pos, out, ignore, poses) >= FINGER_REACH + shift + PUSHER_ROOM
+                and self._supported(name, target, np.asarray(target.pos[:2]) + shift * out, poses)
+                and not self._push_blockers(name, target, out, shift, poses))
+
+    def _work_points(self, target: Target, out: np.ndarray, shift: float) -> list[np.ndarray]:
+        """Points (xy, m) the fingers pass over placing ``target`` ``shift`` beside along ``out``
+        and pushing it in: a cube moved out of their way must not be put back there."""
+        reach = 0.5 * target.size + shift + FINGER_REACH_OPEN + PUSHER_ROOM
+        return [np.asarray(target.pos[:2]) + a * out for a in np.arange(0.0, reach + 1e-9, 0.02)]
+
+    def _zone_blockers(self, name: str, target: Target, poses) -> list[str]:
+        """Loose cubes (not at their goal) in the way of placing ``name`` in a dense layout:
+        those without which a grasp exists that does not exist with them, nearest first."""
+        settled = {n: p for n, p in poses.items()
+                   if n == name or n not in self.sizes or (n in self.plan.targets and self._at_target(n, poses))}
+        try:
+            grasp = self._grasp(name, poses[name].quat, target, poses, settled)
+        except OracleError:
+            return []
+        loose = sorted((n for n in poses if n not in settled),
+                       key=lambda n: math.dist(poses[n].pos[:2], target.pos[:2]))
+        self._avoid = self._work_points(target, grasp.out, grasp.shift)
+        out = []
+        for n in loose:
+            if math.dist(poses[n].pos[:2], target.pos[:2]) > ZONE_RADIUS:
+                break
+            with_n = settled | {n: poses[n]}
+            f = finger_axis(grasp.place_yaw)
+            low, o, shift = self._release_side(name, target, f, with_n)
+            if not (math.isclose(shift, grasp.shift, abs_tol=1e-3) and self._place_ok(name, target, o, shift, with_n)):
+                out.append(n)
+        return out
+
+    def _push_blockers(self, name: str, target: Target, out: np.ndarray, shift: float, poses) -> list[str]:
+        """The cubes the closed fingers would touch pushing ``name`` from ``shift`` (m) beside
+        ``target`` along ``-out`` (2,), nearest first: the fingers are PUSHER_HALF_SPAN wide across
+        the push (wider than a cube near their top), PUSHER_HALF_THICKNESS thick along it."""
+        half = 0.5 * self.sizes[name]
+        side = np.array([-out[1], out[0]])
+        near = half  # the pusher's face at the end of the push, from the target's centre
+        far = half + shift + 0.008 + 2 * PUSHER_HALF_THICKNESS
+        hit = []
+        for n, p in poses.items():
+            if n == name or n not in self.sizes or abs(p.pos[2] - target.pos[2]) > 0.75 * self.sizes[n]:
+                continue
+            r = np.subtract(p.pos[:2], target.pos[:2])
+            yaw = cube_yaw(p.quat) - math.atan2(out[1], out[0])
+            reach = 0.5 * self.sizes[n] * (abs(math.cos(yaw)) + abs(math.sin(yaw))) - PUSH_CONTACT_TOL
+            along, across = float(r @ out), abs(float(r @ side))
+            if near - reach < along < far + reach and across < PUSHER_HALF_SPAN + reach:
+                hit.append((along, n))
+        return [n for _, n in sorted(hit)]
+
+    def _supported(self, name: str, target: Target, xy, poses) -> bool:
+        """Whether ``name`` released at ``xy`` (2,) m at ``target``'s height would rest there: on
+        the table, or with its centre SUPPORT_MARGIN inside the footprint it shares with the
+        cubes whose tops are at its bottom (the layer below; in ``target``'s yaw frame)."""
+        half = 0.5 * self.sizes[name]
+        bottom = target.pos[2] - half
+        if bottom - C.TABLE_TOP_Z < 0.5 * half:
+            return True
+        yaw = cube_yaw(target.quat)
+        axes = np.array([[math.cos(yaw), math.sin(yaw)], [-math.sin(yaw), math.cos(yaw)]])
+        centre = axes @ np.asarray(xy, float)
+        lo, hi = np.full(2, np.inf), np.full(2, -np.inf)
+        for n, p in poses.items():
+            if n == name or n not in self.sizes or abs(p.pos[2] + 0.5 * self.sizes[n] - bottom) > 0.006:
+                continue
+            c = axes @ np.asarray(p.pos[:2], float)
+            a, b = np.maximum(c - 0.5 * self.sizes[n], centre - half), np.minimum(c + 0.5 * self.sizes[n], centre + half)
+            if np.all(a < b):  # the footprints overlap
+                lo, hi = np.minimum(lo, a), np.maximum(hi, b)
+        return bool(np.all(centre >= lo + SUPPORT_MARGIN) and np.all(centre <= hi - SUPPORT_MARGIN))
 
     def _pick_place(self, name: str, target: Target, poses) -> Iterator[np.ndarray]:
         src = np.asarray(poses[name].pos, float)
@@ -329,24 +481,70 @@ class Oracle:
         ]
         yield from waypoint_actions(self.robot, wps)
         if grasp.shift > 0:
-            yield from self._push(name, dst, grasp, travel)
+            yield from self._push(name, dst, grasp.out, grasp.shift, travel)
 
-    def _push(self, name: str, dst: np.ndarray, grasp: Grasp, travel: float) -> Iterator[np.ndarray]:
-        """Slide ``name`` (released ``grasp.shift`` beside ``dst``) into place with the closed
-        fingers, pushing across its outer face."""
+    def _open_gap(self, name: str, poses) -> tuple[np.ndarray, float] | None:
+        """A gap (direction (2,) toward the neighbour, width to close in m) between a placed cube
+        of a dense layout and a goal neighbour placed before it, or None: released LATERAL_GAP
+        apart, the gaps would add up along a row."""
+        target = self.plan.targets[name]
+        for other in self.plan.order[:self.plan.order.index(name)]:
+            t = self.plan.targets[other]
+            d = np.subtract(t.pos[:2], target.pos[:2])
+            dist = float(np.linalg.norm(d))
+            touching = 0.5 * (t.size + target.size)
+            if (not t.dense or abs(t.pos[2] - target.pos[2]) > 0.25 * target.size
+                    or not touching - 0.002 < dist < touching + DENSE_GAP_CLOSE or not self._at_target(other, poses)):
+                continue
+            d = d / dist
+            gap = self._room(poses[name].pos, d, {name}, poses)
+            if GAP_CLOSE_MIN < gap < DENSE_GAP_CLOSE:
+                return d, gap - GAP_CLOSE_LEFT
+        return None
+
+    def _tidy(self, before: str, poses) -> Iterator[np.ndarray] | None:
+        """The next step closing the open gaps of a dense layout's cubes placed before
+        ``before``: a push, or a loose cube moved out of the pusher's way; None when none is left."""
+        for name in self.plan.order[:self.plan.order.index(before)]:
+            if not self.plan.targets[name].dense or not self._at_target(name, poses) or self.gap_pushes.get(name, 0) >= 2:
+                continue
+            gap = self._open_gap(name, poses)
+            if gap is None:
+                continue
+            d, shift = gap
+            here = np.asarray(poses[name].pos, float)
+            moved = replace(self.plan.targets[name], pos=(*(here[:2] + shift * d), here[2]), quat=tuple(poses[name].quat))
+            blockers = self._push_blockers(name, moved, -d, shift, poses)
+            if not blockers:
+                self.gap_pushes[name] = self.gap_pushes.get(name, 0) + 1
+                return self._push(name, np.asarray(moved.pos), -d, shift, self._travel_z(name, here))
+            if not any(self._at_target(b, poses) for b in blockers if b in self.plan.targets):
+                return self._move_aside(blockers[0], poses, avoid=self._work_points(moved, -d, shift))
+        return None
+
+    def _push(self, name: str, dst: np.ndarray, out: np.ndarray, shift: float, travel: float) -> Iterator[np.ndarray]:
+        """Slide ``name``, standing ``shift`` (m) beside ``dst`` (3,) along ``out`` (2,), to ``dst``
+        with the closed fingers held across the push, low on its outer face."""
         half = 0.5 * self.sizes[name]
-        yaw = _wrap(grasp.place_yaw + math.pi / 2)  # fingers across the push direction
+        side = np.array([-out[1], out[0]])
+        yaw = math.atan2(side[0], -side[1])  # finger_axis(yaw) == side
         if abs(yaw) > YAW_LIMIT:
             yaw = _wrap(yaw + math.pi)
         standoff = half + PUSHER_HALF_THICKNESS
-        start = dst[:2] + grasp.out * (grasp.shift + standoff + 0.008)
-        end = dst[:2] + grasp.out * (standoff + PUSH_OVERSHOOT)
-        z = dst[2] + 0.002
+        start = dst[:2] + out * (shift + standoff + 0.008)
+        end = dst[:2] + out * (standoff + PUSH_OVERSHOOT)
+        z = dst[2] - half + PUSH_HEIGHT
+        # tilt the hand about the side axis so the fingertips lead: the fingers' faces widen
+        # upward, and a push high on the cube's face tips it over
+        tilt = np.array([math.cos(PUSH_TILT / 2), *(math.sin(PUSH_TILT / 2) * np.array([side[0], side[1], 0.0]))])
+        q = np.zeros(4)
+        mujoco.mju_mulQuat(q, tilt, top_down_quat(yaw))
+        q = tuple(q)
         yield from waypoint_actions(self.robot, [
-            Waypoint((start[0], start[1], travel), yaw, GRIPPER_CLOSED, tol=0.008, max_steps=60),
-            Waypoint((start[0], start[1], z), yaw, GRIPPER_CLOSED, tol=0.004, max_steps=40),
-            Waypoint((end[0], end[1], z), yaw, GRIPPER_CLOSED, tol=0.002, max_steps=40),
-            Waypoint((start[0], start[1], z + 0.002), yaw, GRIPPER_CLOSED, tol=0.006, max_steps=20),
+            Waypoint((start[0], start[1], travel), yaw, GRIPPER_CLOSED, tol=0.008, max_steps=60, quat=q),
+            Waypoint((start[0], start[1], z), yaw, GRIPPER_CLOSED, tol=0.003, max_steps=40, quat=q),
+            Waypoint((end[0], end[1], z), yaw, GRIPPER_CLOSED, tol=PUSH_TOL, max_steps=40, quat=q),
+            Waypoint((start[0], start[1], z + 0.002), yaw, GRIPPER_CLOSED, tol=0.006, max_steps=20, quat=q),
             Waypoint((start[0], start[1], travel), yaw, GRIPPER_OPEN, tol=0.01, max_steps=40),
         ])
 
@@ -367,12 +565,14 @@ class Oracle:
             Waypoint((tcp[0], tcp[1], tcp[2]), 0.0, GRIPPER_OPEN, tol=1.0, max_steps=4, min_steps=4),
             Waypoint((tcp[0], tcp[1], z + 0.05), 0.0, GRIPPER_OPEN, tol=0.01, max_steps=30)])
 
-    def _free_spot(self, name: str, poses, keepout: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)):
-        """A free place on the table for ``name`` (m): far from every other cube and every
-        target, nearest to where it is.  ``keepout`` (-x, +x, -y, +y) widens what must stay
-        clear around the spot (the sideways hand of a flip)."""
+    def _free_spot(self, name: str, poses, keepout: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0),
+                   avoid=()):
+        """A free place on the table for ``name`` (m): far from every other cube, every target
+        and the points ``avoid`` (xy), nearest to where it is.  ``keepout`` (-x, +x, -y, +y)
+        widens what must stay clear around the spot (the sideways hand of a flip)."""
         others = [np.asarray(p.pos[:2]) for n, p in poses.items() if n in self.sizes and n != name]
         others += [np.asarray(t.pos[:2]) for n, t in self.plan.targets.items() if n != name]
+        others += [np.asarray(a[:2], float) for a in avoid]
         best = None
         here = np.asarray(poses[name].pos[:2])
         margin = 0.06
@@ -388,8 +588,8 @@ class Oracle:
                     best = (key, (float(x), float(y)))
         return best[1]
 
-    def _move_aside(self, name: str, poses) -> Iterator[np.ndarray]:
-        x, y = self._free_spot(name, poses)
+    def _move_aside(self, name: str, poses, avoid=()) -> Iterator[np.ndarray]:
+        x, y = self._free_spot(name, poses, avoid=avoid)
         z = C.TABLE_TOP_Z + 0.5 * self.sizes[name]
         q = poses[name].quat
         aside = Target(name, (x, y, z), tuple(q), self.sizes[name], False)
