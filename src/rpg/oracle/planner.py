@@ -32,7 +32,14 @@ import numpy as np
 
 from rpg.domain import constants as C
 from rpg.env.embodiments.base import mat_to_quat
-from rpg.env.scripted import GRIPPER_STEPS, Waypoint, cube_yaw, top_down_quat, waypoint_actions
+from rpg.env.scripted import (
+    GRIPPER_STEPS,
+    Waypoint,
+    cube_yaw,
+    delta_action,
+    top_down_quat,
+    waypoint_actions,
+)
 from rpg.oracle.goal import GoalPlan, OracleError, Target, plan_goal, pose_matches, rot, up_axis
 
 MAX_ATTEMPTS = 3
@@ -63,7 +70,7 @@ FINGER_REACH_OPEN = 0.048
 FINGER_HALF_WIDTH = 0.0105
 """Half the width (m) of a finger across its opening axis (collision box)."""
 
-PUSHER_HALF_THICKNESS = 0.0095
+PUSHER_HALF_THICKNESS = 0.0096
 """How far (m) the tilted, closed fingers' face leads the TCP along a push made across the
 finger axis, low on the pushed cube (see PUSH_TILT)."""
 
@@ -71,10 +78,10 @@ PUSHER_HALF_SPAN = 0.025
 """Half the span (m) of the closed fingers along their axis, at its widest within a cube's
 height above the fingertips (the Menagerie finger mesh widens upward)."""
 
-PUSH_CONTACT_TOL = 0.0015
+PUSH_CONTACT_TOL = 0.002
 """How far (m) a neighbour beside the pushed cube may stand proud of the face the pusher stops
 at: where the fingers are wider than a cube (2 cm and more above the fingertips) the tilted
-pusher trails its leading edge by 1.5 mm or more (see PUSH_TILT)."""
+pusher trails its leading edge by 2 mm or more (see PUSH_TILT)."""
 
 PUSHER_ROOM = 0.035
 """Room (m) the closed fingers need beside a cube to push it."""
@@ -97,14 +104,28 @@ SHIFT_MIN = 0.003
 """A finger short of room by less than this (m) is released in place (FINGER_REACH has that
 margin), not beside the goal and pushed."""
 
-PUSH_TILT = math.radians(8.0)
+PUSH_TILT = math.radians(10.0)
 """Tilt (rad) of the pushing hand about the horizontal axis across the push, fingertips
 leading: the Menagerie fingers' faces widen ~2 mm upward, so an upright pusher meets a cube at
-its top edge; tilted 8 degrees, the face leads 9.5 mm from the TCP axis 5 mm above the
-fingertips and 7 mm at 35 mm (measured on the collision meshes)."""
+its top edge; tilted 10 degrees, the face leads the TCP axis by 9.6 mm 5 mm above the
+fingertips, 7.6 mm at 20 mm and 6.1 mm at 35 mm (measured on the collision meshes)."""
 
-PUSH_TOL = 0.0007
-"""How close (m) the pusher gets to the end of a push (the gaps it closes are ~2 mm)."""
+HOVER_REACH = 0.07
+"""Cubes within this distance (m, xy) of a short low move set its height (see HOVER_CLEARANCE)."""
+
+HOVER_CLEARANCE = 0.022
+"""TCP height (m) above the tallest cube near a short low move: the fingertips reach 0.01 m
+below the TCP (tilted pusher included), leaving ~1 cm."""
+
+PUSH_TOL = 0.0005
+"""How close (m), along the push, the pusher gets to the end of a push (the gaps it closes are
+~2 mm)."""
+
+PUSH_LEAD = 0.002
+"""How far past the end of a push (m) the pusher is aimed (see :meth:`Oracle._push`)."""
+
+PUSH_STEPS = 40
+"""Most control steps of a push stroke."""
 
 PUSH_HEIGHT = 0.012
 """TCP height (m) above a pushed cube's bottom: the closed fingertips (0.009 m below the TCP)
@@ -129,6 +150,10 @@ away when they leave no room to place it."""
 SUPPORT_MARGIN = 0.01
 """A cube released beside its goal on the layer below (to be pushed into place) keeps its
 centre this far (m) inside the footprint of the cubes it rests on."""
+
+DENSE_KEEPOUT = 0.05
+"""A cube moved out of the way keeps this much farther (m) from a dense layout's goals than
+from other goals: the fingers release cubes beside the layout and push them in."""
 
 BUFFER_STEP = 0.02
 """Grid step (m) of candidate spots for cubes moved out of the way."""
@@ -477,11 +502,16 @@ class Oracle:
             Waypoint((spot[0], spot[1], spot[2] + PLACE_DROP), g_place, GRIPPER_CLOSED, max_steps=40),
             Waypoint((spot[0], spot[1], spot[2] + PLACE_DROP), g_place, release, tol=1.0,
                      max_steps=GRIPPER_STEPS, min_steps=GRIPPER_STEPS),
-            Waypoint((spot[0], spot[1], travel), g_place, release, tol=0.01),
         ]
-        yield from waypoint_actions(self.robot, wps)
-        if grasp.shift > 0:
-            yield from self._push(name, dst, grasp.out, grasp.shift, travel)
+        if grasp.shift > 0:  # up just clear of the cubes around, then the push
+            start = self._push_start(name, dst, grasp.out, grasp.shift)
+            hover = self._hover_z(name, spot, spot, start)
+            wps.append(Waypoint((spot[0], spot[1], hover), g_place, release, tol=0.006))
+            yield from waypoint_actions(self.robot, wps)
+            yield from self._push(name, dst, grasp.out, grasp.shift, travel, hover)
+        else:
+            wps.append(Waypoint((spot[0], spot[1], travel), g_place, release, tol=0.01))
+            yield from waypoint_actions(self.robot, wps)
 
     def _open_gap(self, name: str, poses) -> tuple[np.ndarray, float] | None:
         """A gap (direction (2,) toward the neighbour, width to close in m) between a placed cube
@@ -522,17 +552,32 @@ class Oracle:
                 return self._move_aside(blockers[0], poses, avoid=self._work_points(moved, -d, shift))
         return None
 
-    def _push(self, name: str, dst: np.ndarray, out: np.ndarray, shift: float, travel: float) -> Iterator[np.ndarray]:
+    def _push_start(self, name: str, dst: np.ndarray, out: np.ndarray, shift: float) -> np.ndarray:
+        """Where (xy, m) the pusher comes down to push ``name`` from ``shift`` beside ``dst``."""
+        return np.asarray(dst[:2]) + out * (shift + 0.5 * self.sizes[name] + PUSHER_HALF_THICKNESS + 0.008)
+
+    def _hover_z(self, name: str, dst, *points) -> float:
+        """TCP height (m) at which the open or closed fingertips clear ``name`` standing at
+        ``dst`` (3,) and every other cube within HOVER_REACH of the ``points`` (xy): for short
+        moves low over a layout."""
+        tops = [p.pos[2] + 0.5 * self.sizes[n] for n, p in self.poses().items() if n in self.sizes and n != name
+                and min(math.dist(p.pos[:2], pt[:2]) for pt in points) < HOVER_REACH]
+        return float(max([dst[2] + 0.5 * self.sizes[name], *tops]) + HOVER_CLEARANCE)
+
+    def _push(self, name: str, dst: np.ndarray, out: np.ndarray, shift: float, travel: float,
+              hover: float | None = None) -> Iterator[np.ndarray]:
         """Slide ``name``, standing ``shift`` (m) beside ``dst`` (3,) along ``out`` (2,), to ``dst``
-        with the closed fingers held across the push, low on its outer face."""
+        with the closed fingers held across the push, low on its outer face; the hand comes
+        from ``hover`` (m, TCP height; default ``travel``) and leaves at ``travel``."""
         half = 0.5 * self.sizes[name]
         side = np.array([-out[1], out[0]])
         yaw = math.atan2(side[0], -side[1])  # finger_axis(yaw) == side
         if abs(yaw) > YAW_LIMIT:
             yaw = _wrap(yaw + math.pi)
         standoff = half + PUSHER_HALF_THICKNESS
-        start = dst[:2] + out * (shift + standoff + 0.008)
+        start = self._push_start(name, dst, out, shift)
         end = dst[:2] + out * (standoff + PUSH_OVERSHOOT)
+        hover = travel if hover is None else hover
         z = dst[2] - half + PUSH_HEIGHT
         # tilt the hand about the side axis so the fingertips lead: the fingers' faces widen
         # upward, and a push high on the cube's face tips it over
@@ -541,9 +586,17 @@ class Oracle:
         mujoco.mju_mulQuat(q, tilt, top_down_quat(yaw))
         q = tuple(q)
         yield from waypoint_actions(self.robot, [
-            Waypoint((start[0], start[1], travel), yaw, GRIPPER_CLOSED, tol=0.008, max_steps=60, quat=q),
-            Waypoint((start[0], start[1], z), yaw, GRIPPER_CLOSED, tol=0.003, max_steps=40, quat=q),
-            Waypoint((end[0], end[1], z), yaw, GRIPPER_CLOSED, tol=PUSH_TOL, max_steps=40, quat=q),
+            Waypoint((start[0], start[1], hover), yaw, GRIPPER_CLOSED, tol=0.008, max_steps=60, quat=q),
+            Waypoint((start[0], start[1], z), yaw, GRIPPER_CLOSED, tol=0.003, max_steps=40, quat=q)])
+        # the stroke: aim PUSH_LEAD past the end (the cube's friction holds the hand back on its
+        # compliant weld or arm) and stop once the TCP is within PUSH_TOL of the end along the push
+        aim = Waypoint((end[0] - PUSH_LEAD * out[0], end[1] - PUSH_LEAD * out[1], z), yaw, GRIPPER_CLOSED, quat=q)
+        for _ in range(PUSH_STEPS):
+            tcp = self.robot.tcp_pose()
+            if float(np.subtract(tcp.pos[:2], end) @ out) < PUSH_TOL:
+                break
+            yield delta_action(tcp, aim)
+        yield from waypoint_actions(self.robot, [
             Waypoint((start[0], start[1], z + 0.002), yaw, GRIPPER_CLOSED, tol=0.006, max_steps=20, quat=q),
             Waypoint((start[0], start[1], travel), yaw, GRIPPER_OPEN, tol=0.01, max_steps=40),
         ])
@@ -568,21 +621,23 @@ class Oracle:
     def _free_spot(self, name: str, poses, keepout: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0),
                    avoid=()):
         """A free place on the table for ``name`` (m): far from every other cube, every target
-        and the points ``avoid`` (xy), nearest to where it is.  ``keepout`` (-x, +x, -y, +y)
-        widens what must stay clear around the spot (the sideways hand of a flip)."""
-        others = [np.asarray(p.pos[:2]) for n, p in poses.items() if n in self.sizes and n != name]
-        others += [np.asarray(t.pos[:2]) for n, t in self.plan.targets.items() if n != name]
-        others += [np.asarray(a[:2], float) for a in avoid]
+        (farther from a dense layout's: DENSE_KEEPOUT) and the points ``avoid`` (xy), nearest to
+        where it is.  ``keepout`` (-x, +x, -y, +y) widens what must stay clear around the spot
+        (the sideways hand of a flip)."""
+        others = [(np.asarray(p.pos[:2]), 0.0) for n, p in poses.items() if n in self.sizes and n != name]
+        others += [(np.asarray(t.pos[:2]), DENSE_KEEPOUT if t.dense else 0.0)
+                   for n, t in self.plan.targets.items() if n != name]
+        others += [(np.asarray(a[:2], float), 0.0) for a in avoid]
         best = None
         here = np.asarray(poses[name].pos[:2])
         margin = 0.06
         for x in np.arange(C.WORKSPACE_X[0] + 0.02, C.WORKSPACE_X[1] - 0.02 + 1e-9, BUFFER_STEP):
             for y in np.arange(C.WORKSPACE_Y[0] + 0.02, C.WORKSPACE_Y[1] - 0.02 + 1e-9, BUFFER_STEP):
                 gap = 1.0
-                for o in others:  # distance from o to the keep-out box around (x, y)
+                for o, extra in others:  # distance from o to the keep-out box around (x, y)
                     dx = max(x - keepout[0] - o[0], o[0] - x - keepout[1], 0.0)
                     dy = max(y - keepout[2] - o[1], o[1] - y - keepout[3], 0.0)
-                    gap = min(gap, math.hypot(dx, dy))
+                    gap = min(gap, math.hypot(dx, dy) - extra)
                 key = (min(gap, 0.12) >= margin, min(gap, 0.12), -math.dist((x, y), here))
                 if best is None or key > best[0]:
                     best = (key, (float(x), float(y)))
