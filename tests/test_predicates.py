@@ -318,3 +318,22 @@ def test_goal_is_a_typed_predicate_tree_in_the_schema():
     doc["goal"] = {"predicate": "on", "a": doc["assets"][0]["name"], "b": doc["assets"][1]["name"], "height": 2}
     with pytest.raises(pydantic.ValidationError, match="no argument 'height'"):
         TaskSchema.model_validate(doc)
+
+
+def test_reading_order_groups_rows_and_layers_by_proximity_not_by_bins():
+    """Reading order (layer, row front to back, left to right) of a 3x3 base: centres jitter by a
+    millimetre around what used to be a rounding boundary (x at 0.51 m, z at 0.97 m), as
+    settled cubes do; the rows and layers stay whole."""
+    from rpg.domain.predicates import order_objects
+
+    labels = iter("ABCDEFGHIJ")
+    base = []
+    for r, x in enumerate((0.5095, 0.55, 0.5905)):
+        for c in range(3):
+            jitter = 0.0008 * (-1) ** (r + c)
+            base.append(cube(f"c{r}{c}", x + jitter, 0.0405 - 0.0405 * c, Z0 + jitter / 4, label=next(labels)))
+    top = cube("top", 0.55, 0.0, Z0 + E, label=next(labels))
+    ordered = order_objects([top, *reversed(base)], "reading")
+    assert [o.label for o in ordered] == list("ABCDEFGHIJ")
+    names = tuple(o.name for o in [*base, top])
+    assert SortedBy(names, direction="reading").evaluate(state(*base, top))

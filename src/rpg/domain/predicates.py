@@ -608,8 +608,20 @@ def order_objects(objs: list[ObjectState], direction: str) -> list[ObjectState]:
     """
     if direction == "reading":
         edge = C.CUBE_EDGE
-        return sorted(objs, key=lambda o: (round((o.pos[2] - C.TABLE_TOP_Z) / edge),
-                                           round(o.pos[0] / edge * 2), -o.pos[1]))
+        layers: dict[int, list[ObjectState]] = {}
+        for o in objs:  # layer k has its centres at k + 1/2 edges above the table
+            layers.setdefault(round((o.pos[2] - C.TABLE_TOP_Z) / edge - 0.5), []).append(o)
+        out = []
+        for k in sorted(layers):
+            rows: list[list[ObjectState]] = []
+            for o in sorted(layers[k], key=lambda o: o.pos[0]):  # a row: centres chained < edge/2 apart in x
+                if rows and o.pos[0] - rows[-1][-1].pos[0] < edge / 2:
+                    rows[-1].append(o)
+                else:
+                    rows.append([o])
+            for row in rows:
+                out.extend(sorted(row, key=lambda o: -o.pos[1]))
+        return out
     if direction not in ORDER_KEYS:
         raise ValueError(f"unknown direction {direction!r}; use one of {', '.join(ORDER_KEYS)} or 'reading'")
     axis, sign = ORDER_KEYS[direction]
