@@ -170,6 +170,7 @@ class Grasp:
     release: float
     shift: float = 0.0
     out: np.ndarray = field(default_factory=lambda: np.zeros(2))
+    pick_open: float = -1.0
 
 
 def _wrap(a: float) -> float:
@@ -248,6 +249,19 @@ class Oracle:
         p = (poses or self.poses())[name]
         return pose_matches(self.plan.targets[name], p.pos, p.quat)
 
+    def _done(self, poses) -> set[str]:
+        """Cubes at their targets, except a dense layout's cube that stands there before the
+        cubes ahead of it in the placement order (by chance, from rho_0): the sweep has not
+        reached it, and it is moved when in the way and placed again in its turn."""
+        done, gap = set(), False
+        for n in self.plan.order:
+            at = self._at_target(n, poses)
+            if self.plan.targets[n].dense:
+                at, gap = at and not gap, gap or not at
+            if at:
+                done.add(n)
+        return done
+
     def _on_top_of(self, name: str, poses) -> list[str]:
         """Cubes resting on ``name`` now (highest first)."""
         base = poses[name]
@@ -261,7 +275,7 @@ class Oracle:
         """Cubes standing in ``target``'s place (not its supports, not the cube itself)."""
         out = []
         for n in sorted(self.sizes):
-            if n == target.name or n in target.supports or (n in self.plan.targets and self._at_target(n, poses)):
+            if n == target.name or n in target.supports or n in self._done(poses):
                 continue
             p = poses[n].pos
             reach = 0.5 * (self.sizes[n] + target.size) + 0.004
@@ -280,7 +294,8 @@ class Oracle:
             return
         for _ in range(MAX_ATTEMPTS * (len(self.sizes) + 2) + 4):
             poses = self.poses()
-            pending = [n for n in self.plan.order if not self._at_target(n, poses)]
+            done = self._done(poses)
+            pending = [n for n in self.plan.order if n not in done]
             if not pending:
                 yield from self._retreat()
                 return
@@ -382,10 +397,12 @@ class Oracle:
                 if not self._place_ok(name, target, out, shift, place_poses):
                     continue
                 score = (-10.0 * shift + 0.5 * min(room_pick, 0.05) + min(low, 0.05)
-                         - 0.01 * abs(g_place - g_pick) - 0.005 * (abs(g_pick) + abs(g_place)))
+                         - 0.01 * abs(g_place - g_pick) - 0.005 * (abs(g_pick) + abs(g_place))
+                         - (5.0 if room_pick < FINGER_REACH else 0.0))  # a finger lands on a neighbour
                 if best is None or score > best[0]:
                     release = GRIPPER_OPEN if low - shift > FINGER_REACH_OPEN else GRIPPER_NARROW
-                    best = (score, Grasp(g_pick, g_place, release, shift, out))
+                    pick_open = GRIPPER_OPEN if room_pick > FINGER_REACH_OPEN else GRIPPER_NARROW
+                    best = (score, Grasp(g_pick, g_place, release, shift, out, pick_open))
         if best is None:
             raise OracleError(f"no grasp of {name} within the wrist's yaw range")
         return best[1]
@@ -420,8 +437,9 @@ class Oracle:
     def _zone_blockers(self, name: str, target: Target, poses) -> list[str]:
         """Loose cubes (not at their goal) in the way of placing ``name`` in a dense layout:
         those without which a grasp exists that does not exist with them, nearest first."""
+        done = self._done(poses)
         settled = {n: p for n, p in poses.items()
-                   if n == name or n not in self.sizes or (n in self.plan.targets and self._at_target(n, poses))}
+                   if n == name or n not in self.sizes or n in done}
         try:
             grasp = self._grasp(name, poses[name].quat, target, poses, settled)
         except OracleError:
@@ -495,7 +513,7 @@ class Oracle:
             if room < LATERAL_GAP and self._room(dst, -d, ignore, poses) > 2 * LATERAL_GAP:
                 spot[:2] -= d * (LATERAL_GAP - room)
         travel = self._travel_z(name, src, dst)
-        yield from self._pick(src, grasp.pick_yaw, travel)
+        yield from self._pick(src, grasp.pick_yaw, travel, opening=grasp.pick_open)
         wps = [
             Waypoint((spot[0], spot[1], travel), g_place, GRIPPER_CLOSED, tol=0.008, max_steps=80),
             Waypoint((spot[0], spot[1], spot[2] + 0.03), g_place, GRIPPER_CLOSED, tol=0.006),
@@ -513,7 +531,7 @@ class Oracle:
             wps.append(Waypoint((spot[0], spot[1], travel), g_place, release, tol=0.01))
             yield from waypoint_actions(self.robot, wps)
 
-    def _open_gap(self, name: str, poses) -> tuple[np.ndarray, float] | None:
+    def _open_gap(self, name: str, poses, done: set[str]) -> tuple[np.ndarray, float] | None:
         """A gap (direction (2,) toward the neighbour, width to close in m) between a placed cube
         of a dense layout and a goal neighbour placed before it, or None: released LATERAL_GAP
         apart, the gaps would add up along a row."""
@@ -524,7 +542,7 @@ class Oracle:
             dist = float(np.linalg.norm(d))
             touching = 0.5 * (t.size + target.size)
             if (not t.dense or abs(t.pos[2] - target.pos[2]) > 0.25 * target.size
-                    or not touching - 0.002 < dist < touching + DENSE_GAP_CLOSE or not self._at_target(other, poses)):
+                    or not touching - 0.002 < dist < touching + DENSE_GAP_CLOSE or other not in done):
                 continue
             d = d / dist
             gap = self._room(poses[name].pos, d, {name}, poses)
@@ -535,10 +553,11 @@ class Oracle:
     def _tidy(self, before: str, poses) -> Iterator[np.ndarray] | None:
         """The next step closing the open gaps of a dense layout's cubes placed before
         ``before``: a push, or a loose cube moved out of the pusher's way; None when none is left."""
+        done = self._done(poses)
         for name in self.plan.order[:self.plan.order.index(before)]:
-            if not self.plan.targets[name].dense or not self._at_target(name, poses) or self.gap_pushes.get(name, 0) >= 2:
+            if not self.plan.targets[name].dense or name not in done or self.gap_pushes.get(name, 0) >= 2:
                 continue
-            gap = self._open_gap(name, poses)
+            gap = self._open_gap(name, poses, done)
             if gap is None:
                 continue
             d, shift = gap
@@ -548,7 +567,7 @@ class Oracle:
             if not blockers:
                 self.gap_pushes[name] = self.gap_pushes.get(name, 0) + 1
                 return self._push(name, np.asarray(moved.pos), -d, shift, self._travel_z(name, here))
-            if not any(self._at_target(b, poses) for b in blockers if b in self.plan.targets):
+            if not any(b in done for b in blockers):
                 return self._move_aside(blockers[0], poses, avoid=self._work_points(moved, -d, shift))
         return None
 
@@ -575,6 +594,8 @@ class Oracle:
         if abs(yaw) > YAW_LIMIT:
             yaw = _wrap(yaw + math.pi)
         standoff = half + PUSHER_HALF_THICKNESS
+        # from where the cube stands now (a released cube may have slid or turned a little)
+        shift = max(shift, float(np.subtract(self.poses()[name].pos[:2], dst[:2]) @ out))
         start = self._push_start(name, dst, out, shift)
         end = dst[:2] + out * (standoff + PUSH_OVERSHOOT)
         hover = travel if hover is None else hover
@@ -601,11 +622,12 @@ class Oracle:
             Waypoint((start[0], start[1], travel), yaw, GRIPPER_OPEN, tol=0.01, max_steps=40),
         ])
 
-    def _pick(self, src: np.ndarray, yaw: float, travel: float, quat=None) -> Iterator[np.ndarray]:
+    def _pick(self, src: np.ndarray, yaw: float, travel: float, quat=None,
+              opening: float = GRIPPER_OPEN) -> Iterator[np.ndarray]:
         wps = [
-            Waypoint((src[0], src[1], travel), yaw, GRIPPER_OPEN, tol=0.008, max_steps=80),
-            Waypoint((src[0], src[1], src[2] + 0.03), yaw, GRIPPER_OPEN, tol=0.006),
-            Waypoint(tuple(src), yaw, GRIPPER_OPEN, max_steps=40),
+            Waypoint((src[0], src[1], travel), yaw, opening, tol=0.008, max_steps=80),
+            Waypoint((src[0], src[1], src[2] + 0.03), yaw, opening, tol=0.006),
+            Waypoint(tuple(src), yaw, opening, max_steps=40),
             Waypoint(tuple(src), yaw, GRIPPER_CLOSED, tol=1.0, max_steps=GRIPPER_STEPS, min_steps=GRIPPER_STEPS),
             Waypoint((src[0], src[1], travel), yaw, GRIPPER_CLOSED, tol=0.01),
         ]
