@@ -51,6 +51,11 @@ fingers cannot go between them."""
 DENSE_YAW_TOL = 0.1
 """Yaw error (rad, modulo pi/2) a cube in a dense layout may have."""
 
+DENSE_ANCHOR_ANGLE_TOL = 0.03
+"""A dense layout's cube stays where rho_0 put it (the layout is built around it) only when it
+is turned less than this (rad) from the layout: a turned cube's corner narrows its neighbours'
+gaps."""
+
 WORKSPACE_MARGIN = 0.01
 """How far outside the workspace (m) a translated goal layout may reach."""
 
@@ -100,8 +105,9 @@ def up_axis(quat) -> tuple[int, float]:
 
 
 def pose_matches(target: Target, pos, quat, xy_tol: float = 0.012, z_tol: float = 0.01,
-                 angle_tol: float = 0.25) -> bool:
-    """Whether a cube at ``pos``/``quat`` is at ``target`` (tolerances in m and rad)."""
+                 angle_tol: float = 0.25, yaw_tol: float = DENSE_YAW_TOL) -> bool:
+    """Whether a cube at ``pos``/``quat`` is at ``target`` (tolerances in m and rad; ``yaw_tol``
+    for a dense layout's coloured cube)."""
     p = np.asarray(pos, float)
     t = np.asarray(target.pos, float)
     if np.linalg.norm(p[:2] - t[:2]) > xy_tol or abs(p[2] - t[2]) > z_tol:
@@ -110,7 +116,7 @@ def pose_matches(target: Target, pos, quat, xy_tol: float = 0.012, z_tol: float 
         r = rot(target.quat).T @ rot(quat)
         return math.acos(max(-1.0, min(1.0, (np.trace(r) - 1) / 2))) < angle_tol
     _, cos = up_axis(quat)
-    if target.dense and abs((cube_yaw(quat) - cube_yaw(target.quat) + math.pi / 4) % (math.pi / 2) - math.pi / 4) > DENSE_YAW_TOL:
+    if target.dense and abs((cube_yaw(quat) - cube_yaw(target.quat) + math.pi / 4) % (math.pi / 2) - math.pi / 4) > yaw_tol:
         return False
     return abs(cos) > math.cos(angle_tol)
 
@@ -244,7 +250,9 @@ def plan_goal(scratch, goal_module, current: dict[str, Pose], movable: dict[str,
                 ok = False
                 break
             t = Target(n, pos, tuple(goal[n].quat), movable[n], n in exact, supports[n], n in dense)
-            if pose_matches(t, current[n].pos, current[n].quat, xy_tol=0.004):
+            anchor_tol = DENSE_ANCHOR_ANGLE_TOL if n in dense else 0.25
+            if pose_matches(t, current[n].pos, current[n].quat, xy_tol=0.004,
+                            angle_tol=anchor_tol, yaw_tol=min(anchor_tol, DENSE_YAW_TOL)):
                 pos, quat = tuple(current[n].pos), tuple(current[n].quat)
                 t = Target(n, pos, quat, movable[n], n in exact, supports[n], n in dense)
             targets[n] = t

@@ -348,9 +348,11 @@ class Oracle:
         return float(z)
 
     def _room(self, center, direction: np.ndarray, ignore: set[str], poses) -> float:
-        """Gap (m) between a cube at ``center`` and its nearest neighbour on the ``direction``
-        side (2,) in the finger's path (neighbours at the same height)."""
+        """Gap (m) between a cube at ``center`` (its faces across ``direction``) and its nearest
+        neighbour on the ``direction`` side (2,) in the finger's path (neighbours at the same
+        height; a turned neighbour reaches farther by its corner)."""
         room = 1.0
+        heading = math.atan2(direction[1], direction[0])
         for n, p in poses.items():
             if n not in self.sizes or n in ignore:
                 continue
@@ -358,8 +360,10 @@ class Oracle:
             if abs(p.pos[2] - center[2]) > 0.75 * self.sizes[n]:
                 continue
             along, lateral = float(r @ direction), abs(float(r[0] * direction[1] - r[1] * direction[0]))
+            turn = cube_yaw(p.quat) - heading
+            reach = 0.5 * self.sizes[n] * (abs(math.cos(turn)) + abs(math.sin(turn)))
             if along > 0 and lateral < 0.5 * self.sizes[n] + FINGER_HALF_WIDTH:
-                room = min(room, along - self.sizes[n])
+                room = min(room, along - reach - 0.5 * self.sizes[n])
         return room
 
     def _grasp(self, name: str, pick_quat, target: Target, poses, place_poses=None) -> Grasp:
