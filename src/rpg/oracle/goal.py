@@ -114,7 +114,8 @@ def pose_matches(target: Target, pos, quat, xy_tol: float = 0.012, z_tol: float 
         return False
     if target.exact:
         r = rot(target.quat).T @ rot(quat)
-        return math.acos(max(-1.0, min(1.0, (np.trace(r) - 1) / 2))) < angle_tol
+        tol = min(angle_tol, yaw_tol) if target.dense else angle_tol
+        return math.acos(max(-1.0, min(1.0, (np.trace(r) - 1) / 2))) < tol
     _, cos = up_axis(quat)
     if target.dense and abs((cube_yaw(quat) - cube_yaw(target.quat) + math.pi / 4) % (math.pi / 2) - math.pi / 4) > yaw_tol:
         return False

@@ -127,10 +127,10 @@ PUSH_LEAD = 0.002
 PUSH_STEPS = 40
 """Most control steps of a push stroke."""
 
-PUSH_HEIGHT = 0.012
-"""TCP height (m) above a pushed cube's bottom: the closed fingertips (0.009 m below the TCP)
-just clear its support, and the fingers' faces press the cube's lower half (a push high on
-the face tips it over)."""
+PUSH_HEIGHT = 0.015
+"""TCP height (m) above a pushed cube's bottom: the tilted, closed fingertips (0.0097 m below
+the TCP) clear its support by 5 mm (a pusher grazing the layer below caught its cubes), and the
+fingers' faces press the cube's lower half (a push high on the face tips it over)."""
 
 PUSH_OVERSHOOT = 0.0
 """How far (m) past the goal face the pusher's face is driven."""
