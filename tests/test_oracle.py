@@ -92,11 +92,49 @@ def test_temporal_order_is_followed_and_the_environment_judges_it():
 
 
 def test_a_fragile_goal_is_reported():
-    env = BlockTaskEnv(LIBRARY / "block_stacking_to_pyramid_building", embodiment="floating_gripper", cameras=())
+    """A goal configuration that satisfies G only until it settles: each cube of a three-cube
+    stack 19 mm off the one below (On allows 20 mm), so the top two together overhang and fall."""
+    from types import SimpleNamespace
+
+    from rpg.domain.state import Pose
+    from rpg.oracle.goal import plan_goal
+
+    env = BlockTaskEnv(LIBRARY / "three_block_stack", embodiment="floating_gripper", cameras=())
     env.reset(seed=0)
-    oracle = Oracle(env)
-    oracle.act()
-    assert any("fragile" in n and "label" in n for n in oracle.plan.notes)
+    leaning = {"red": Pose((0.55, 0.0, 0.97), (1, 0, 0, 0)), "green": Pose((0.569, 0.0, 1.0105), (1, 0, 0, 0)),
+               "yellow": Pose((0.588, 0.0, 1.051), (1, 0, 0, 0))}
+    goal = SimpleNamespace(goal_state=lambda task: task.set_state(leaning))
+    sizes = {n: 0.04 for n in leaning}
+    plan = plan_goal(type(env.task)(), goal, env.scene.poses(), sizes)
+    assert any("fragile" in n and "on" in n for n in plan.notes), plan.notes
+    upright = SimpleNamespace(goal_state=lambda task: task.set_state(
+        {n: Pose((0.55, 0.0, p.pos[2]), p.quat) for n, p in leaning.items()}))
+    assert not plan_goal(type(env.task)(), upright, env.scene.poses(), sizes).notes
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("task, seed", [("pyramid_construction/v1", 0), ("stack_and_modify/v0", 1)])
+def test_the_oracle_builds_layouts_of_touching_cubes_by_placing_beside_and_pushing(task, seed):
+    """A 3x3-base pyramid and a 3x3 square of touching cubes (0.5 mm apart): no finger fits
+    between two cubes, so most cubes are released beside their goal and pushed in (floating
+    gripper; issue 15's dense placement primitive)."""
+    import rpg.oracle.planner as planner
+
+    pushes = []
+    push = planner.Oracle._push
+
+    def counting(self, name, *args, **kw):
+        pushes.append(name)
+        yield from push(self, name, *args, **kw)
+
+    planner.Oracle._push = counting
+    try:
+        info, oracle, before = _solve(task, "floating_gripper", seed=seed)
+    finally:
+        planner.Oracle._push = push
+    assert before and info["success"], (oracle.failure, info["diagnostics"]["unsatisfied"])
+    assert sum(t.dense for t in oracle.plan.targets.values()) >= 9
+    assert len(set(pushes)) >= 4, pushes  # most of the base went in by a push
 
 
 def test_placement_order_is_bottom_up_then_temporal_and_refuses_cycles():
@@ -108,6 +146,11 @@ def test_placement_order_is_bottom_up_then_temporal_and_refuses_cycles():
     assert placement_order(t, [["c"], ["a"]]) == ["c", "a", "b"]
     with pytest.raises(OracleError, match="cycle"):
         placement_order(t, [["b"], ["a"]])
+    # a dense layout: layer by layer, far row (high x) first, each row from +y to -y
+    grid = {f"c{r}{c}": Target(f"c{r}{c}", (0.5 + 0.0405 * r, -0.0405 * c, 0.97), (1, 0, 0, 0), 0.04, False, (), True)
+            for r in range(2) for c in range(2)}
+    grid["top"] = Target("top", (0.52, -0.02, 1.0105), (1, 0, 0, 0), 0.04, False, tuple(grid), True)
+    assert placement_order(grid, []) == ["c10", "c11", "c00", "c01", "top"]
 
 
 def test_pose_matches_respects_cube_symmetry():
