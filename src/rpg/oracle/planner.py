@@ -14,6 +14,12 @@ next action of the plan, and turns it into waypoints that the scripted controlle
    - then it is picked and placed, with a grasp yaw that respects the cube's symmetry
      (coloured cubes modulo pi/2; semantic cubes turned to their exact yaw) and a finger
      axis chosen away from neighbours, opening only as wide as the neighbours allow;
+   - in a dense layout (touching cubes: grids, pyramids), filled layer by layer from the
+     far row, where a finger would not fit beside a placed neighbour the cube is released
+     ``shift`` beside its goal and pushed in by the closed fingers, tilted so that their
+     tips lead low on its face (:meth:`Oracle._push`); the gaps it was released with are
+     closed by pushes against the neighbours placed before it, and loose cubes in the
+     fingers' way are moved off first;
 3. after every move the state is read again (verification): a cube that did not land, or a
    neighbour that was knocked, is simply not at its target and is handled again, up to
    :data:`MAX_ATTEMPTS` times per cube.
@@ -207,7 +213,6 @@ class Oracle:
         self.plan: GoalPlan | None = None
         self.attempts: dict[str, int] = {}
         self.gap_pushes: dict[str, int] = {}
-        self._avoid: list[np.ndarray] | tuple = ()
         self.failure: str | None = None
 
     # -- policy interface -----------------------------------------------------------
@@ -310,14 +315,14 @@ class Oracle:
                 if tidy is not None:
                     yield from tidy
                     continue
-            blockers, self._avoid = self._blocking(target, poses), ()
+            blockers, avoid = self._blocking(target, poses), ()
             if not blockers and target.dense:
                 try:
                     self._grasp(name, poses[name].quat, target, poses)
                 except OracleError:
-                    blockers = self._zone_blockers(name, target, poses)
+                    blockers, avoid = self._zone_blockers(name, target, poses)
             if blockers:
-                yield from self._move_aside(blockers[0], poses, avoid=self._avoid)
+                yield from self._move_aside(blockers[0], poses, avoid=avoid)
                 continue
             self.attempts[name] = self.attempts.get(name, 0) + 1
             if self.attempts[name] > MAX_ATTEMPTS:
@@ -438,19 +443,19 @@ class Oracle:
         reach = 0.5 * target.size + shift + FINGER_REACH_OPEN + PUSHER_ROOM
         return [np.asarray(target.pos[:2]) + a * out for a in np.arange(0.0, reach + 1e-9, 0.02)]
 
-    def _zone_blockers(self, name: str, target: Target, poses) -> list[str]:
-        """Loose cubes (not at their goal) in the way of placing ``name`` in a dense layout:
-        those without which a grasp exists that does not exist with them, nearest first."""
+    def _zone_blockers(self, name: str, target: Target, poses) -> tuple[list[str], list[np.ndarray]]:
+        """Loose cubes (not at their goal) in the way of placing ``name`` in a dense layout,
+        those without which a grasp exists that does not exist with them, nearest first; and
+        the points (xy) that grasp's fingers pass over (what moved cubes must keep clear of)."""
         done = self._done(poses)
         settled = {n: p for n, p in poses.items()
                    if n == name or n not in self.sizes or n in done}
         try:
             grasp = self._grasp(name, poses[name].quat, target, poses, settled)
         except OracleError:
-            return []
+            return [], []
         loose = sorted((n for n in poses if n not in settled),
                        key=lambda n: math.dist(poses[n].pos[:2], target.pos[:2]))
-        self._avoid = self._work_points(target, grasp.out, grasp.shift)
         out = []
         for n in loose:
             if math.dist(poses[n].pos[:2], target.pos[:2]) > ZONE_RADIUS:
@@ -460,7 +465,7 @@ class Oracle:
             low, o, shift = self._release_side(name, target, f, with_n)
             if not (math.isclose(shift, grasp.shift, abs_tol=1e-3) and self._place_ok(name, target, o, shift, with_n)):
                 out.append(n)
-        return out
+        return out, self._work_points(target, grasp.out, grasp.shift)
 
     def _push_blockers(self, name: str, target: Target, out: np.ndarray, shift: float, poses) -> list[str]:
         """The cubes the closed fingers would touch pushing ``name`` from ``shift`` (m) beside
