@@ -218,6 +218,33 @@ def test_concurrent_first_steers_lose_no_edit(artifact, tmp_path):
         assert all(v["ok"] for v in Family(d).verify())
 
 
+def test_a_steer_waits_while_another_first_steer_moves_the_artifact(artifact, tmp_path):
+    """The moment of the race above, made to last: while one steer holds the family lock and
+    has moved the plain artifact out of its path (turning it into v0), a second steer waits
+    for the lock and then steers the family; it does not fail on the half-moved artifact."""
+    from filelock import FileLock
+
+    from rpg.steer.family import create_family
+
+    d = tmp_path / "t"
+    shutil.copytree(artifact, d)
+    script = ("import sys\nfrom rpg.steer.steering import steer\nprint('ready', flush=True)\n"
+              "r = steer(sys.argv[1], sys.argv[2])\nprint(r.version)\n")
+    with FileLock(str(d.parent / f".{d.name}.family.lock")):
+        aside = tmp_path / "aside"
+        d.rename(aside)
+        proc = subprocess.Popen([sys.executable, "-c", script, str(d), "make the top block green"],
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        assert proc.stdout.readline().strip() == "ready"
+        time.sleep(1.5)
+        assert proc.poll() is None, proc.stderr.read()  # waiting for the lock, not failed
+        aside.rename(d)
+        create_family(d)
+    out, err = proc.communicate(timeout=300)
+    assert proc.returncode == 0, err
+    assert [v.description for v in Family(d).load().versions[1:]] == ["make the top block green"]
+
+
 def _descendants(pid: int) -> set[int]:
     kids: dict[int, list[int]] = {}
     for entry in os.listdir("/proc"):

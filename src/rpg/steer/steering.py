@@ -24,7 +24,7 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
-from rpg.artifact import load_artifact
+from rpg.artifact import ArtifactError, load_artifact
 from rpg.compiler import CompileResult, build
 from rpg.errors import BadInput
 from rpg.schema.builtin import parse
@@ -285,9 +285,16 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
     if not is_family(path):
         from filelock import FileLock
 
-        load_artifact(path)  # refuse a path that is no artifact before anything is written beside it
+        lock_file = path.parent / f".{path.name}.family.lock"
+        try:  # refuse a path that is no artifact before anything is written beside it ...
+            load_artifact(path)
+        except ArtifactError:
+            if not lock_file.exists():
+                raise
+            # ... unless another steer holds the lock and is moving it into v0 right now: its
+            # files are half moved; the check under the lock below decides
         # the first steer turns the artifact into a family: once, even when two steer at once
-        with FileLock(str(path.parent / f".{path.name}.family.lock"), timeout=LOCK_TIMEOUT_S):
+        with FileLock(str(lock_file), timeout=LOCK_TIMEOUT_S):
             if not is_family(path):
                 load_artifact(path)
                 create_family(path)
