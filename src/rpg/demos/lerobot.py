@@ -29,7 +29,7 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.parquet as pq
 
-from rpg.demos.log import append_jsonl, attempt_record, read_jsonl, rewrite_jsonl
+from rpg.demos.log import append_jsonl, discard_failed, log_attempt, read_jsonl, rewrite_jsonl
 from rpg.demos.record import ACTION_NAMES, STATE_NAMES, Episode
 from rpg.domain import constants as C
 from rpg.env.video import VIDEO_CODEC
@@ -154,12 +154,7 @@ class LeRobotWriter:
         Returns:
             The episode index, or None for a failed episode (its videos are deleted).
         """
-        attempt = attempt_record(ep)
-        if not ep.success:
-            for v in ep.videos.values():
-                Path(v).unlink(missing_ok=True)
-            append_jsonl(self.meta / "rpg_attempts.jsonl", attempt)
-            self.attempts.append(attempt)
+        if discard_failed(self.meta, self.attempts, ep):
             return None
         index = len(self.episodes)
         if ep.instruction not in self.tasks:
@@ -197,8 +192,7 @@ class LeRobotWriter:
                 "final_poses": ep.final_poses}
         append_jsonl(self.meta / "episodes.jsonl", line)  # the commit
         self.episodes.append(line)
-        append_jsonl(self.meta / "rpg_attempts.jsonl", attempt)
-        self.attempts.append(attempt)
+        log_attempt(self.meta, self.attempts, ep)
         self._write_info()
         return index
 

@@ -38,7 +38,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from rpg.demos.log import append_jsonl, attempt_record, read_jsonl, rewrite_jsonl
+from rpg.demos.log import append_jsonl, discard_failed, log_attempt, read_jsonl, rewrite_jsonl
 from rpg.demos.record import LOW_DIM_KEYS, Episode
 from rpg.errors import BadInput
 
@@ -178,12 +178,7 @@ class RobomimicWriter:
         Returns:
             The episode index, or None for a failed episode (its frame stores are deleted).
         """
-        attempt = attempt_record(ep)
-        if not ep.success:
-            for v in ep.videos.values():
-                Path(v).unlink(missing_ok=True)
-            append_jsonl(self.meta / "rpg_attempts.jsonl", attempt)
-            self.attempts.append(attempt)
+        if discard_failed(self.meta, self.attempts, ep):
             return None
         index = len(self.episodes)
         line = {"episode_index": index, "length": ep.length, "task": ep.task, "task_hash": ep.task_hash,
@@ -201,8 +196,7 @@ class RobomimicWriter:
             Path(v).unlink(missing_ok=True)
         append_jsonl(self.meta / "episodes.jsonl", line)  # the commit
         self.episodes.append(line)
-        append_jsonl(self.meta / "rpg_attempts.jsonl", attempt)
-        self.attempts.append(attempt)
+        log_attempt(self.meta, self.attempts, ep)
         return index
 
     def finalize(self) -> Path:
