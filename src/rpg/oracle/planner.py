@@ -94,7 +94,10 @@ PUSHER_ROOM = 0.035
 
 LATERAL_GAP = 0.0025
 """Gap (m) kept to a neighbour across the finger axis when placing (the placement's
-precision is ~2 mm); dense layouts' predicates tolerate it (GRID_TOL)."""
+precision is ~2 mm); in a dense layout it is then closed by a push (GAP_CLOSE_MIN)."""
+
+PUSH_APPROACH_GAP = 0.008
+"""Gap (m) between the pusher's face and the cube where the pusher comes down."""
 
 GAP_CLOSE_MIN = 0.0015
 """A dense layout's cube is pushed against a placed goal neighbour when the gap between their
@@ -278,9 +281,9 @@ class Oracle:
 
     def _blocking(self, target: Target, poses) -> list[str]:
         """Cubes standing in ``target``'s place (not its supports, not the cube itself)."""
-        out = []
+        out, done = [], self._done(poses)
         for n in sorted(self.sizes):
-            if n == target.name or n in target.supports or n in self._done(poses):
+            if n == target.name or n in target.supports or n in done:
                 continue
             p = poses[n].pos
             reach = 0.5 * (self.sizes[n] + target.size) + 0.004
@@ -315,10 +318,10 @@ class Oracle:
                 if tidy is not None:
                     yield from tidy
                     continue
-            blockers, avoid = self._blocking(target, poses), ()
+            blockers, avoid, grasp = self._blocking(target, poses), (), None
             if not blockers and target.dense:
                 try:
-                    self._grasp(name, poses[name].quat, target, poses)
+                    grasp = self._grasp(name, poses[name].quat, target, poses)
                 except OracleError:
                     blockers, avoid = self._zone_blockers(name, target, poses)
             if blockers:
@@ -331,7 +334,7 @@ class Oracle:
             if target.exact and not self._face_up_ok(name, target, poses):
                 yield from self._flip(name, target, poses)
                 continue
-            yield from self._pick_place(name, target, poses)
+            yield from self._pick_place(name, target, poses, grasp)
         self.failure = self.failure or "the plan did not converge"
 
     def _placement(self, target: Target, poses) -> Target:
@@ -456,13 +459,12 @@ class Oracle:
             return [], []
         loose = sorted((n for n in poses if n not in settled),
                        key=lambda n: math.dist(poses[n].pos[:2], target.pos[:2]))
-        out = []
+        out, f = [], finger_axis(grasp.place_yaw)
         for n in loose:
             if math.dist(poses[n].pos[:2], target.pos[:2]) > ZONE_RADIUS:
                 break
             with_n = settled | {n: poses[n]}
-            f = finger_axis(grasp.place_yaw)
-            low, o, shift = self._release_side(name, target, f, with_n)
+            _, o, shift = self._release_side(name, target, f, with_n)
             if not (math.isclose(shift, grasp.shift, abs_tol=1e-3) and self._place_ok(name, target, o, shift, with_n)):
                 out.append(n)
         return out, self._work_points(target, grasp.out, grasp.shift)
@@ -474,7 +476,7 @@ class Oracle:
         half = 0.5 * self.sizes[name]
         side = np.array([-out[1], out[0]])
         near = half  # the pusher's face at the end of the push, from the target's centre
-        far = half + shift + 0.008 + 2 * PUSHER_HALF_THICKNESS
+        far = half + shift + PUSH_APPROACH_GAP + 2 * PUSHER_HALF_THICKNESS
         hit = []
         for n, p in poses.items():
             if n == name or n not in self.sizes or abs(p.pos[2] - target.pos[2]) > 0.75 * self.sizes[n]:
@@ -508,10 +510,11 @@ class Oracle:
                 lo, hi = np.minimum(lo, a), np.maximum(hi, b)
         return bool(np.all(centre >= lo + SUPPORT_MARGIN) and np.all(centre <= hi - SUPPORT_MARGIN))
 
-    def _pick_place(self, name: str, target: Target, poses) -> Iterator[np.ndarray]:
+    def _pick_place(self, name: str, target: Target, poses, grasp: Grasp | None = None) -> Iterator[np.ndarray]:
+        """Move ``name`` to ``target`` with ``grasp`` (default: the best for the state ``poses``)."""
         src = np.asarray(poses[name].pos, float)
         dst = np.asarray(target.pos, float)
-        grasp = self._grasp(name, poses[name].quat, target, poses)
+        grasp = grasp or self._grasp(name, poses[name].quat, target, poses)
         g_place, release = grasp.place_yaw, grasp.release
         spot = dst.copy()
         spot[:2] += grasp.shift * grasp.out
@@ -582,7 +585,7 @@ class Oracle:
 
     def _push_start(self, name: str, dst: np.ndarray, out: np.ndarray, shift: float) -> np.ndarray:
         """Where (xy, m) the pusher comes down to push ``name`` from ``shift`` beside ``dst``."""
-        return np.asarray(dst[:2]) + out * (shift + 0.5 * self.sizes[name] + PUSHER_HALF_THICKNESS + 0.008)
+        return np.asarray(dst[:2]) + out * (shift + 0.5 * self.sizes[name] + PUSHER_HALF_THICKNESS + PUSH_APPROACH_GAP)
 
     def _hover_z(self, name: str, dst, *points) -> float:
         """TCP height (m) at which the open or closed fingertips clear ``name`` standing at
