@@ -330,6 +330,11 @@ MOCAP_INTERPOLATION_POINTS: int = 5
 (every CONTROL_SUBSTEPS / 5 = 5 physics steps, 10 ms): at most 1 cm and 0.1 rad at a time
 (project)."""
 
+JOINT_INTERPOLATION_POINTS: int = 5
+"""Increments in which the Panda's joint targets move to a control step's targets (every
+CONTROL_SUBSTEPS / 5 = 5 physics steps, 10 ms), as a robot's controller interpolates a
+20 Hz policy's commands (project)."""
+
 GOAL_REEVALUATE_TOL: float = 1e-9
 """An environment re-evaluates G after a step only when some object's position (m) or
 quaternion component moved more than this since G was last evaluated (objects at rest

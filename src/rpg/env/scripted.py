@@ -30,6 +30,9 @@ REACH_TOL = 0.004
 YAW_TOL = 0.04
 """Orientation error under which a waypoint counts as reached, rad."""
 
+HEADING_TILT = 0.5
+"""A TCP tilted more than this (rad) from top-down turns the shortest way (see :func:`heading`)."""
+
 
 @dataclass(frozen=True)
 class Waypoint:
@@ -86,10 +89,33 @@ def rotation_error(tcp: TcpPose, target) -> np.ndarray:
     return rot
 
 
+def tcp_yaw(quat) -> float:
+    """Yaw (rad) of a TCP orientation (4,) about world z from the home orientation, in (-pi, pi]."""
+    r = np.zeros(4)
+    inv = np.zeros(4)
+    mujoco.mju_negQuat(inv, np.array(C.HOME_TCP_QUAT))
+    mujoco.mju_mulQuat(r, np.asarray(quat, float), inv)
+    mat = np.zeros(9)
+    mujoco.mju_quat2Mat(mat, r)
+    return float(np.arctan2(mat[3], mat[0]))
+
+
+def heading(tcp: TcpPose, wp: Waypoint) -> np.ndarray:
+    """The orientation (4,) the TCP turns toward this step: ``wp``'s, except that a top-down
+    waypoint's yaw more than a quarter turn away is approached in quarter turns through the
+    yaws between (not the shortest way, which for a turn of more than pi from home crosses
+    the back and runs the Panda's wrist into its joint limit)."""
+    if wp.quat is not None or np.linalg.norm(rotation_error(tcp, tcp_yaw(tcp.quat))) > HEADING_TILT:
+        return wp.orientation()  # a tilted or sideways hand (a push, a flip) has no yaw to turn from
+    now = tcp_yaw(tcp.quat)
+    turn = float(np.clip(wp.yaw - now, -np.pi / 2, np.pi / 2))
+    return top_down_quat(now + turn)
+
+
 def delta_action(tcp: TcpPose, wp: Waypoint) -> np.ndarray:
     """The ``ee_delta`` action (7,) float32 that steps the TCP toward ``wp``."""
     dpos = (np.asarray(wp.pos) - tcp.pos) / C.EE_DELTA_POS_LIMIT
-    drot = rotation_error(tcp, wp.orientation()) / C.EE_DELTA_ROT_LIMIT
+    drot = rotation_error(tcp, heading(tcp, wp)) / C.EE_DELTA_ROT_LIMIT
     return np.clip(np.concatenate([dpos, drot, [wp.gripper]]), -1.0, 1.0).astype(np.float32)
 
 

@@ -164,6 +164,18 @@ DENSE_KEEPOUT = 0.05
 """A cube moved out of the way keeps this much farther (m) from a dense layout's goals than
 from other goals: the fingers release cubes beside the layout and push them in."""
 
+PLACE_ABOVE = 0.008
+"""Height (m) of the held cube's bottom above the tops of the placement's layer where the hand
+settles before the last, straight descent."""
+
+PLACE_SETTLE_TOL = 0.0015
+"""How close (m) the TCP comes to its point above a placement (PLACE_ABOVE) before the last
+descent: an arm that arrives fast overshoots by ~6 mm (the Panda), and a held cube came down
+on a neighbour placed 2.5 mm away (LATERAL_GAP)."""
+
+HELD_OFFSET_MAX = 0.012
+"""Largest offset (m, horizontal) of a held cube from the TCP that placing corrects for."""
+
 BUFFER_STEP = 0.02
 """Grid step (m) of candidate spots for cubes moved out of the way."""
 
@@ -338,14 +350,33 @@ class Oracle:
         self.failure = self.failure or "the plan did not converge"
 
     def _placement(self, target: Target, poses) -> Target:
-        """``target`` adjusted to where its supports actually stand now (stacks), m."""
-        if not target.supports:
+        """``target`` adjusted to where the cubes it is placed against actually stand now, m: in
+        a stack, its support; in a dense layout, the mean offset of its supports and of the
+        goal neighbours in its layer placed before it (a layout placed a few mm off as a whole
+        is built on as it stands: its neighbours' faces are where the pusher stops)."""
+        if not target.dense:
+            if not target.supports:
+                return target
+            base = self.plan.targets[target.supports[0]]
+            dx = np.subtract(target.pos, base.pos)
+            return replace(target, pos=tuple(np.asarray(poses[target.supports[0]].pos) + dx))
+        done = self._done(poses)
+        beside = [n for n in self.plan.order[:self.plan.order.index(target.name)]
+                  if n in done and self._goal_neighbours(n, target)]
+        anchors = [*target.supports, *beside]
+        if not anchors:
             return target
-        base = self.plan.targets[target.supports[0]]
-        actual = poses[target.supports[0]]
-        dx = np.subtract(target.pos, base.pos)
-        pos = np.asarray(actual.pos) + dx
-        return replace(target, pos=tuple(pos))
+        off = np.mean([np.subtract(poses[n].pos, self.plan.targets[n].pos) for n in anchors], axis=0)
+        if not target.supports:
+            off[2] = 0.0
+        return replace(target, pos=tuple(np.asarray(target.pos) + off))
+
+    def _goal_neighbours(self, name: str, target: Target) -> bool:
+        """Whether ``name``'s goal touches ``target``'s face to face in the same layer."""
+        t = self.plan.targets[name]
+        dist = math.dist(t.pos[:2], target.pos[:2])
+        touching = 0.5 * (t.size + target.size)
+        return abs(t.pos[2] - target.pos[2]) < 0.25 * target.size and dist < touching + DENSE_GAP_CLOSE
 
     # -- primitives -----------------------------------------------------------------
     def _travel_z(self, held: str, *points) -> float:
@@ -526,12 +557,17 @@ class Oracle:
                 spot[:2] -= d * (LATERAL_GAP - room)
         travel = self._travel_z(name, src, dst)
         yield from self._pick(src, grasp.pick_yaw, travel, opening=grasp.pick_open)
+        yield from waypoint_actions(self.robot, [
+            Waypoint((spot[0], spot[1], travel), g_place, GRIPPER_CLOSED, tol=0.008, max_steps=80)])
+        # the cube may have slid in the fingers on the way: aim the cube, not the TCP
+        above = spot + (0.0, 0.0, self.sizes[name] + PLACE_ABOVE)
+        yield from waypoint_actions(self.robot, [
+            Waypoint(self._held_tcp(name, above), g_place, GRIPPER_CLOSED, tol=0.006),
+            Waypoint(self._held_tcp(name, above), g_place, GRIPPER_CLOSED, tol=PLACE_SETTLE_TOL, max_steps=30)])
+        tcp = self._held_tcp(name, spot + (0.0, 0.0, PLACE_DROP))
         wps = [
-            Waypoint((spot[0], spot[1], travel), g_place, GRIPPER_CLOSED, tol=0.008, max_steps=80),
-            Waypoint((spot[0], spot[1], spot[2] + 0.03), g_place, GRIPPER_CLOSED, tol=0.006),
-            Waypoint((spot[0], spot[1], spot[2] + PLACE_DROP), g_place, GRIPPER_CLOSED, max_steps=40),
-            Waypoint((spot[0], spot[1], spot[2] + PLACE_DROP), g_place, release, tol=1.0,
-                     max_steps=GRIPPER_STEPS, min_steps=GRIPPER_STEPS),
+            Waypoint(tcp, g_place, GRIPPER_CLOSED, max_steps=40),
+            Waypoint(tcp, g_place, release, tol=1.0, max_steps=GRIPPER_STEPS, min_steps=GRIPPER_STEPS),
         ]
         if grasp.shift > 0:  # up just clear of the cubes around, then the push
             start = self._push_start(name, dst, grasp.out, grasp.shift)
@@ -542,6 +578,18 @@ class Oracle:
         else:
             wps.append(Waypoint((spot[0], spot[1], travel), g_place, release, tol=0.01))
             yield from waypoint_actions(self.robot, wps)
+
+    def _held_tcp(self, name: str, cube_pos: np.ndarray) -> tuple[float, float, float]:
+        """The TCP position (m) that brings the held cube ``name``'s centre to ``cube_pos`` (3,),
+        from where the cube sits in the fingers now: it slides along the finger pads when the arm
+        accelerates (the Panda: ~5 mm across the fingers).  Only an offset within
+        HELD_OFFSET_MAX is corrected (a larger one is a cube not held), and the TCP is never
+        lowered for a cube that rides high in the fingers (the fingertips would reach lower)."""
+        off = np.subtract(self.poses()[name].pos, self.robot.tcp_pose().pos)
+        if np.linalg.norm(off[:2]) > HELD_OFFSET_MAX:
+            off[:] = 0.0
+        off[2] = min(off[2], 0.0)
+        return tuple(float(v) for v in np.asarray(cube_pos, float) - off)
 
     def _open_gap(self, name: str, poses, done: set[str]) -> tuple[np.ndarray, float] | None:
         """A gap (direction (2,) toward the neighbour, width to close in m) between a placed cube
@@ -618,8 +666,11 @@ class Oracle:
         q = np.zeros(4)
         mujoco.mju_mulQuat(q, tilt, top_down_quat(yaw))
         q = tuple(q)
+        # turn top-down first, then tilt: an arm asked for both at once in one rotation (up to
+        # ~180 degrees) swung its wrist into a joint limit and stalled (the Panda)
         yield from waypoint_actions(self.robot, [
-            Waypoint((start[0], start[1], hover), yaw, GRIPPER_CLOSED, tol=0.008, max_steps=60, quat=q),
+            Waypoint((start[0], start[1], hover), yaw, GRIPPER_CLOSED, tol=0.01, max_steps=60),
+            Waypoint((start[0], start[1], hover), yaw, GRIPPER_CLOSED, tol=0.008, max_steps=30, quat=q),
             Waypoint((start[0], start[1], z), yaw, GRIPPER_CLOSED, tol=0.003, max_steps=40, quat=q)])
         # the stroke: aim PUSH_LEAD past the end (the cube's friction holds the hand back on its
         # compliant weld or arm) and stop once the TCP is within PUSH_TOL of the end along the push
