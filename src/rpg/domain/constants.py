@@ -348,8 +348,10 @@ observation of an episode (project)."""
 EPISODE_BASE_STEPS: int = 80
 """Control steps of every episode before the per-cube allowance (project)."""
 
-EPISODE_STEPS_PER_CUBE: int = 120
-"""Control steps added per movable cube: one pick and place at 20 Hz takes ~100 (project).
+EPISODE_STEPS_PER_CUBE: int = 150
+"""Control steps added per movable cube: one pick and place at 20 Hz takes ~100 with the
+floating gripper and ~130 with the Panda, and a dense layout's cube adds a ~30-step push
+(the oracle, measured; project).
 ``max_episode_steps = EPISODE_BASE_STEPS + EPISODE_STEPS_PER_CUBE * cubes``."""
 
 AGENTVIEW_POS: tuple[float, float, float] = (1.15, 0.0, 1.50)

@@ -170,8 +170,9 @@ settles before the last, straight descent."""
 
 PLACE_SETTLE_TOL = 0.0015
 """How close (m) the TCP comes to its point above a placement (PLACE_ABOVE) before the last
-descent: an arm that arrives fast overshoots by ~6 mm (the Panda), and a held cube came down
-on a neighbour placed 2.5 mm away (LATERAL_GAP)."""
+descent, and to the release point before the fingers open: an arm that arrives fast
+overshoots by ~6 mm (the Panda) and a held cube came down on a neighbour placed 2.5 mm away
+(LATERAL_GAP); after a fast descent the Panda's TCP still lags ~1.5 mm across."""
 
 HELD_OFFSET_MAX = 0.012
 """Largest offset (m, horizontal) of a held cube from the TCP that placing corrects for."""
@@ -566,7 +567,7 @@ class Oracle:
             Waypoint(self._held_tcp(name, above), g_place, GRIPPER_CLOSED, tol=PLACE_SETTLE_TOL, max_steps=30)])
         tcp = self._held_tcp(name, spot + (0.0, 0.0, PLACE_DROP))
         wps = [
-            Waypoint(tcp, g_place, GRIPPER_CLOSED, max_steps=40),
+            Waypoint(tcp, g_place, GRIPPER_CLOSED, tol=PLACE_SETTLE_TOL, max_steps=40),
             Waypoint(tcp, g_place, release, tol=1.0, max_steps=GRIPPER_STEPS, min_steps=GRIPPER_STEPS),
         ]
         if grasp.shift > 0:  # up just clear of the cubes around, then the push
