@@ -13,7 +13,9 @@ next action of the plan, and turns it into waypoints that the scripted controlle
      across the axis to turn about, lift, turn the hand 90 degrees, put down), once or twice;
    - then it is picked and placed, with a grasp yaw that respects the cube's symmetry
      (coloured cubes modulo pi/2; semantic cubes turned to their exact yaw) and a finger
-     axis chosen away from neighbours, opening only as wide as the neighbours allow;
+     axis chosen away from neighbours, opening only as wide as the neighbours allow; the
+     held cube is aimed where it sits in the fingers now (it slides along the pads), and the
+     hand settles just above the placement's layer before its last, straight descent;
    - in a dense layout (touching cubes: grids, pyramids), filled layer by layer from the
      far row, where a finger would not fit beside a placed neighbour the cube is released
      ``shift`` beside its goal and pushed in by the closed fingers, tilted so that their
