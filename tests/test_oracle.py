@@ -75,6 +75,65 @@ def test_a_letter_cube_is_flipped_to_show_its_face():
     assert not up_before and info["success"], oracle.failure
 
 
+@pytest.mark.slow
+@pytest.mark.parametrize("seed", [0, 5])
+def test_the_panda_flips_a_letter_cube_within_the_episode_budget(seed):
+    """B starts on a side face pointing back at the robot (rho_0): the grasp tilts the hand,
+    the swing and the turn after it keep the wrist in range (the old flip's sideways hand
+    flung the cube off the table: 0 of 20 episodes)."""
+    info, oracle, before = _solve("rotate_cube", "panda", seed=seed)
+    assert before and info["success"], (oracle.failure, info["diagnostics"])
+
+
+def test_a_face_down_letter_cube_comes_up_in_two_flips():
+    env = BlockTaskEnv(LIBRARY / "rotate_cube", embodiment="floating_gripper", cameras=(), max_episode_steps=400)
+    env.reset(seed=1)
+    pos = env.scene.pose("letter_b").pos
+    env.scene.set_poses({"letter_b": (pos, (np.sqrt(0.5), 0.0, -np.sqrt(0.5), 0.0))})  # local -x (B) down
+    obs, *_ = env.step(np.array([0, 0, 0, 0, 0, 0, -1], np.float32))
+    oracle = Oracle(env)
+    flips = []
+    original = oracle._flip
+    oracle._flip = lambda *a: (flips.append(a[0]), (yield from original(*a)))[1]
+    oracle.reset(obs)
+    done = False
+    while not done:
+        obs, _, terminated, truncated, info = env.step(oracle.act(obs))
+        done = terminated or truncated
+    assert info["success"], (oracle.failure, info["diagnostics"])
+    assert flips == ["letter_b", "letter_b"]
+
+
+def test_a_flip_keeps_the_hand_in_the_wrist_range_and_ends_at_the_target_orientation():
+    """For every direction the face may point, the planned flip (grasp yaw, turn, 90-degree
+    swing, turn after) brings the face up with the hand's yaw within range and no forward tilt
+    beyond the Panda's, and it says whether the cube ends at the target's orientation: 15 of 24
+    directions do (the others need a pick and place to turn it further than the wrist can)."""
+    from rpg.oracle.goal import rot
+    from rpg.oracle.planner import FLIP_FORWARD_MAX, YAW_LIMIT, _swing, _wrap, _yaw_matrix
+
+    env = BlockTaskEnv(LIBRARY / "rotate_cube", embodiment="floating_gripper", cameras=())
+    env.reset(seed=0)
+    oracle = Oracle(env)
+    oracle.act()
+    target = oracle.plan.targets["letter_b"]
+    ends = 0
+    for yaw in np.linspace(-np.pi, np.pi, 24, endpoint=False):
+        r_now = _yaw_matrix(yaw)  # upright: B (-x) points at yaw + pi
+        theta = _wrap(yaw + np.pi)
+        aim, grasp_yaw, tilt, settle, last = oracle._flip_aim(theta, r_now, target)
+        after = _yaw_matrix(settle) @ _swing(aim, np.pi / 2) @ _yaw_matrix(_wrap(aim - theta)) @ r_now
+        assert after[:, 0] @ (0.0, 0.0, -1.0) > 0.999  # B (-x) up
+        assert np.allclose(after, rot(target.quat), atol=0.05) == last
+        assert last or abs(yaw) > np.pi / 4  # rho_0 of rotate_cube (yaw within 45 degrees): one move
+        ends += last
+        turned = grasp_yaw + _wrap(aim - theta)
+        assert max(abs(grasp_yaw), abs(turned), abs(turned + settle)) <= YAW_LIMIT
+        assert tilt * max(0.0, -np.cos(theta)) <= FLIP_FORWARD_MAX + 1e-9
+        assert (np.pi / 2 - tilt) * max(0.0, np.cos(aim)) <= FLIP_FORWARD_MAX + 1e-9
+    assert ends >= 12, ends
+
+
 def test_temporal_order_is_followed_and_the_environment_judges_it():
     info, oracle, _ = _solve("sequential_place_on_target", "floating_gripper", seed=2)
     assert info["success"]

@@ -39,7 +39,9 @@ class Waypoint:
     """A TCP target: position (m, world), yaw about world z (rad) of a top-down TCP, gripper
     (-1 open, +1 closed), tolerance (m) and the most control steps to spend on it.
 
-    ``quat`` (w, x, y, z), when given, is the TCP orientation instead of top-down at ``yaw``.
+    ``quat`` (w, x, y, z), when given, is the TCP orientation instead of top-down at ``yaw``;
+    ``turn_rate`` (rad per control step), when given, caps how fast the TCP turns toward it
+    (an arm swinging a held cube fast about the TCP flings it).
     """
 
     pos: tuple[float, float, float]
@@ -49,6 +51,7 @@ class Waypoint:
     max_steps: int = 60
     min_steps: int = 0
     quat: tuple[float, float, float, float] | None = None
+    turn_rate: float | None = None
 
     def orientation(self) -> np.ndarray:
         """The target TCP quaternion (4,)."""
@@ -115,7 +118,10 @@ def heading(tcp: TcpPose, wp: Waypoint) -> np.ndarray:
 def delta_action(tcp: TcpPose, wp: Waypoint) -> np.ndarray:
     """The ``ee_delta`` action (7,) float32 that steps the TCP toward ``wp``."""
     dpos = (np.asarray(wp.pos) - tcp.pos) / C.EE_DELTA_POS_LIMIT
-    drot = rotation_error(tcp, heading(tcp, wp)) / C.EE_DELTA_ROT_LIMIT
+    drot = rotation_error(tcp, heading(tcp, wp))
+    if wp.turn_rate is not None and np.linalg.norm(drot) > wp.turn_rate:
+        drot *= wp.turn_rate / np.linalg.norm(drot)
+    drot = drot / C.EE_DELTA_ROT_LIMIT
     return np.clip(np.concatenate([dpos, drot, [wp.gripper]]), -1.0, 1.0).astype(np.float32)
 
 

@@ -66,7 +66,36 @@ FLIP_HEIGHT = 0.14
 """TCP height above the table (m) at which the hand turns a cube over."""
 
 FLIP_DROP = 0.012
-"""A flipped cube is released this far (m) above the table (the sideways hand must clear it)."""
+"""A flipped cube is released this far (m) above the table (the tilted fingers must clear it)."""
+
+FLIP_AIM_MAX = math.radians(90.0)
+"""Largest angle (rad) from +x (away from the robot) of the direction a flipped cube's face
+points as the hand swings it up: the hand swings from the robot's side or sideways, never
+toward the robot (the Panda's IK lost the TCP by 5-70 cm there)."""
+
+FLIP_TILT = math.radians(45.0)
+"""How far (rad) the hand's approach tilts from top-down, away from the face that comes up,
+when it grasps a cube to flip (it ends tilted 90 degrees minus that the other way), unless
+FLIP_FORWARD_MAX asks for another split."""
+
+FLIP_FORWARD_MAX = math.radians(35.0)
+"""Largest tilt (rad) of the hand's approach forward (+x, away from the robot) in a flip: the
+Panda's sixth joint reaches its limit ~45 degrees forward at x = 0.56 m, less farther out."""
+
+FLIP_SPOT = (0.52, 0.0)
+"""Where on the table (m, xy) a flip puts a cube down, when free: the Panda's wrist swings a
+cube over in every direction there (x 0.46-0.60 m; farther out it lost the TCP)."""
+
+FLIP_YAW_TOL = 0.05
+"""A flip whose result is within this angle (rad) of a target's orientation ends there."""
+
+FLIP_TURN_RATE = 0.1
+"""Fastest turn (rad per control step) of the hand that swings a held cube over: the Panda's
+arm, asked for the action space's fastest turn (EE_DELTA_ROT_LIMIT), swung its TCP 17 cm off
+the point it turns about and flung the cube."""
+
+FLIP_BACK_OFF = 0.10
+"""How far (m) the tilted hand backs off a flipped cube, along its approach, before it rises."""
 
 FINGER_REACH = 0.03
 """How far (m) a finger reaches beyond the face of a 4 cm cube it holds, with the small opening
@@ -199,6 +228,30 @@ class Grasp:
 
 def _wrap(a: float) -> float:
     return (a + math.pi) % (2 * math.pi) - math.pi
+
+
+def _yaw_matrix(yaw: float) -> np.ndarray:
+    """Rotation (3, 3) by ``yaw`` (rad) about world z."""
+    c, s = math.cos(yaw), math.sin(yaw)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+def _swing(aim: float, angle: float) -> np.ndarray:
+    """Rotation (3, 3) by ``angle`` (rad) about the horizontal axis across world yaw ``aim``
+    (rad): a positive angle turns the direction at ``aim`` up (at pi/2 it points up, and a
+    top-down approach points along ``aim``)."""
+    axis = np.cross((math.cos(aim), math.sin(aim), 0.0), (0.0, 0.0, 1.0))
+    q = np.zeros(4)
+    mujoco.mju_axisAngle2Quat(q, axis, angle)
+    m = np.zeros(9)
+    mujoco.mju_quat2Mat(m, q)
+    return m.reshape(3, 3)
+
+
+def _tilted(aim: float, yaw: float, tilt: float) -> tuple[float, float, float, float]:
+    """TCP orientation (w, x, y, z): top-down at ``yaw`` (rad), then swung by ``tilt`` (rad)
+    across world yaw ``aim`` (a positive tilt points the approach toward ``aim``)."""
+    return tuple(mat_to_quat(_swing(aim, tilt) @ rot(top_down_quat(yaw))))
 
 
 def finger_axis(yaw: float) -> np.ndarray:
@@ -707,28 +760,29 @@ class Oracle:
             Waypoint((tcp[0], tcp[1], z + 0.05), 0.0, GRIPPER_OPEN, tol=0.01, max_steps=30)])
 
     def _free_spot(self, name: str, poses, keepout: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0),
-                   avoid=()):
+                   avoid=(), near=None):
         """A free place on the table for ``name`` (m): far from every other cube, every target
         (farther from a dense layout's: DENSE_KEEPOUT) and the points ``avoid`` (xy), nearest to
-        where it is.  ``keepout`` (-x, +x, -y, +y) widens what must stay clear around the spot
-        (the sideways hand of a flip)."""
+        ``near`` (xy; default where it is), which is itself a candidate.  ``keepout`` (-x, +x,
+        -y, +y) widens what must stay clear around the spot (the sideways hand of a flip)."""
         others = [(np.asarray(p.pos[:2]), 0.0) for n, p in poses.items() if n in self.sizes and n != name]
         others += [(np.asarray(t.pos[:2]), DENSE_KEEPOUT if t.dense else 0.0)
                    for n, t in self.plan.targets.items() if n != name]
         others += [(np.asarray(a[:2], float), 0.0) for a in avoid]
         best = None
-        here = np.asarray(poses[name].pos[:2])
+        here = np.asarray(poses[name].pos[:2] if near is None else near[:2], float)
         margin = 0.06
-        for x in np.arange(C.WORKSPACE_X[0] + 0.02, C.WORKSPACE_X[1] - 0.02 + 1e-9, BUFFER_STEP):
-            for y in np.arange(C.WORKSPACE_Y[0] + 0.02, C.WORKSPACE_Y[1] - 0.02 + 1e-9, BUFFER_STEP):
-                gap = 1.0
-                for o, extra in others:  # distance from o to the keep-out box around (x, y)
-                    dx = max(x - keepout[0] - o[0], o[0] - x - keepout[1], 0.0)
-                    dy = max(y - keepout[2] - o[1], o[1] - y - keepout[3], 0.0)
-                    gap = min(gap, math.hypot(dx, dy) - extra)
-                key = (min(gap, 0.12) >= margin, min(gap, 0.12), -math.dist((x, y), here))
-                if best is None or key > best[0]:
-                    best = (key, (float(x), float(y)))
+        grid = [(x, y) for x in np.arange(C.WORKSPACE_X[0] + 0.02, C.WORKSPACE_X[1] - 0.02 + 1e-9, BUFFER_STEP)
+                for y in np.arange(C.WORKSPACE_Y[0] + 0.02, C.WORKSPACE_Y[1] - 0.02 + 1e-9, BUFFER_STEP)]
+        for x, y in ([tuple(here)] if near is not None else []) + grid:
+            gap = 1.0
+            for o, extra in others:  # distance from o to the keep-out box around (x, y)
+                dx = max(x - keepout[0] - o[0], o[0] - x - keepout[1], 0.0)
+                dy = max(y - keepout[2] - o[1], o[1] - y - keepout[3], 0.0)
+                gap = min(gap, math.hypot(dx, dy) - extra)
+            key = (min(gap, 0.12) >= margin, min(gap, 0.12), -math.dist((x, y), here))
+            if best is None or key > best[0]:
+                best = (key, (float(x), float(y)))
         return best[1]
 
     def _move_aside(self, name: str, poses, avoid=()) -> Iterator[np.ndarray]:
@@ -745,41 +799,84 @@ class Oracle:
         return want[0] == have[0] and np.sign(want[1]) == np.sign(have[1]) and abs(have[1]) > 0.8
 
     def _flip(self, name: str, target: Target, poses) -> Iterator[np.ndarray]:
-        """Turn ``name`` 90 degrees about a horizontal axis toward ``target``'s up face: grasp
-        across that axis, lift, turn the hand, put the cube down at a free spot, back off."""
+        """Turn ``name`` 90 degrees about a horizontal axis toward ``target``'s up face (a face
+        that is down comes up in two flips).
+
+        The hand grasps the cube across the turning axis with its approach tilted away from
+        the face that must come up (FLIP_TILT), lifts it, turns about the vertical to the
+        flip's aim, swings 90 degrees about the finger axis (it ends tilted the other way),
+        turns to the target's yaw where the wrist allows (:meth:`_flip_aim`) and puts the cube
+        down: at its target when the flip ends at the target's orientation and the spot is
+        free, else at a free spot nearest FLIP_SPOT.  Neither tilt nor swing takes the hand
+        far from top-down: the Panda's wrist cannot point the hand forward (FLIP_FORWARD_MAX),
+        and an earlier flip's swing to a horizontal hand ran its IK 17 cm off the point it
+        turns about and flung the cube off the table."""
         r_now = rot(poses[name].quat)
         k, s = up_axis(target.quat)
         n = r_now[:, k] * np.sign(s)  # world direction of the face that must end up
-        if n[2] < -0.5:  # face down: any side face comes up first, turning n sideways
-            side = r_now[:, (k + 1) % 3]
-            n = side / np.linalg.norm(side)
-        n = np.array([n[0], n[1], 0.0])
-        n /= np.linalg.norm(n)
-        z = np.array([0.0, 0.0, 1.0])
-        a = np.cross(n, z)  # the axis to turn about: fingers open along it
-        g = math.atan2(a[0], -a[1])
-        g = min((g + j * math.pi for j in (-1, 0, 1)), key=abs)
-        q0 = top_down_quat(g)
-        # M maps n -> z (the face comes up) and z -> -x (the hand ends on the robot's side)
-        src_basis = np.column_stack([n, z, np.cross(n, z)])
-        dst_basis = np.column_stack([z, [-1.0, 0.0, 0.0], [0.0, -1.0, 0.0]])
-        m = dst_basis @ src_basis.T
-        q_flip = mat_to_quat(m @ rot(q0))
+        if n[2] < -0.5:  # face down: the side face nearest sideways comes up first
+            n = max((r_now[:, j] * sg for j in range(3) if j != k for sg in (1.0, -1.0)), key=lambda v: abs(v[1]))
+        theta = math.atan2(n[1], n[0])
+        aim, yaw, tilt, settle, last = self._flip_aim(theta, r_now, target)
+        q_pick = _tilted(theta, yaw, -tilt)
+        q_turned = _tilted(aim, yaw + _wrap(aim - theta), -tilt)
+        q_swung = _tilted(aim, yaw + _wrap(aim - theta), math.pi / 2 - tilt)
+        q_put = tuple(mat_to_quat(_yaw_matrix(settle) @ rot(q_swung)))
         src = np.asarray(poses[name].pos, float)
-        x, y = self._free_spot(name, poses, keepout=(0.17, 0.04, 0.11, 0.11))
+        near = target.pos if last else FLIP_SPOT  # a flip that ends at the target's pose puts it there
+        x, y = self._free_spot(name, poses, keepout=(0.1, 0.1, 0.1, 0.1), near=near)
         half = 0.5 * self.sizes[name]
         high = C.TABLE_TOP_Z + FLIP_HEIGHT
         low = C.TABLE_TOP_Z + half + FLIP_DROP
-        travel = self._travel_z(name, src)
-        yield from self._pick(src, g, max(travel, high))
-        qf = tuple(q_flip)
-        wps = [
-            Waypoint((x, y, high), g, GRIPPER_CLOSED, tol=0.01, max_steps=80),
-            Waypoint((x, y, high), g, GRIPPER_CLOSED, tol=0.01, max_steps=80, quat=qf),
-            Waypoint((x, y, low), g, GRIPPER_CLOSED, tol=0.005, max_steps=60, quat=qf),
-            Waypoint((x, y, low), g, GRIPPER_OPEN, tol=1.0, max_steps=GRIPPER_STEPS, min_steps=GRIPPER_STEPS, quat=qf),
-            Waypoint((x - 0.10, y, low), g, GRIPPER_OPEN, tol=0.01, max_steps=40, quat=qf),
-            Waypoint((x - 0.10, y, high), g, GRIPPER_OPEN, tol=0.01, max_steps=40, quat=qf),
-            Waypoint((x - 0.05, y, high), 0.0, GRIPPER_OPEN, tol=0.02, max_steps=60),
-        ]
-        yield from waypoint_actions(self.robot, wps)
+        travel = max(self._travel_z(name, src), high)
+        back = np.array([x, y, low]) - FLIP_BACK_OFF * (rot(q_put) @ np.array([0.0, 0.0, 1.0]))
+        rate = FLIP_TURN_RATE
+        yield from waypoint_actions(self.robot, [
+            Waypoint((src[0], src[1], travel), yaw, GRIPPER_OPEN, tol=0.008, max_steps=80, quat=q_pick),
+            Waypoint((src[0], src[1], src[2] + 0.03), yaw, GRIPPER_OPEN, tol=0.006, quat=q_pick),
+            Waypoint(tuple(src), yaw, GRIPPER_OPEN, max_steps=40, quat=q_pick),
+            Waypoint(tuple(src), yaw, GRIPPER_CLOSED, tol=1.0, max_steps=GRIPPER_STEPS, min_steps=GRIPPER_STEPS, quat=q_pick),
+            Waypoint((src[0], src[1], travel), yaw, GRIPPER_CLOSED, tol=0.01, quat=q_pick),
+            Waypoint((x, y, high), yaw, GRIPPER_CLOSED, tol=0.01, max_steps=80, quat=q_turned, turn_rate=rate),
+            Waypoint((x, y, high), yaw, GRIPPER_CLOSED, tol=0.01, max_steps=80, quat=q_swung, turn_rate=rate),
+            Waypoint((x, y, high), yaw, GRIPPER_CLOSED, tol=0.01, max_steps=60, quat=q_put, turn_rate=rate),
+            Waypoint((x, y, low), yaw, GRIPPER_CLOSED, tol=0.005, max_steps=60, quat=q_put),
+            Waypoint((x, y, low), yaw, GRIPPER_OPEN, tol=1.0, max_steps=GRIPPER_STEPS, min_steps=GRIPPER_STEPS, quat=q_put),
+            Waypoint(tuple(back), yaw, GRIPPER_OPEN, tol=0.01, max_steps=40, quat=q_put),
+            Waypoint((back[0], back[1], high), yaw, GRIPPER_OPEN, tol=0.02, max_steps=40, quat=q_put),
+        ])
+
+    def _flip_aim(self, theta: float, r_now: np.ndarray, target: Target) -> tuple[float, float, float, float, bool]:
+        """Plan a flip of a cube at orientation ``r_now`` (3, 3) whose face pointing at
+        ``theta`` (rad, world yaw) comes up: the aim (rad, world yaw within FLIP_AIM_MAX of +x)
+        the face points at when the hand swings it up, the top-down yaw (rad) of the hand that
+        grasps it, its tilt (rad) at the grasp, the turn (rad) about the vertical after the
+        swing, and whether the cube then ends at ``target``'s orientation (the turn sets its
+        yaw).  The hand's yaw stays within the wrist's range and it tilts forward at most
+        FLIP_FORWARD_MAX; a flip that ends at the target is preferred (where the wrist cannot
+        turn the cube that far, a pick and place sets its yaw after), then the least turning.
+
+        Raises:
+            OracleError: no aim keeps the hand within the wrist's range.
+        """
+        best = None
+        for aim in np.linspace(-FLIP_AIM_MAX, FLIP_AIM_MAX, 121):
+            turn = _wrap(aim - theta)
+            swung = _swing(aim, math.pi / 2) @ _yaw_matrix(turn) @ r_now
+            err = rot(target.quat) @ swung.T  # a turn about the vertical when the face is up
+            # the grasp tilts the approach toward -theta by `tilt`, the swing ends it toward aim
+            low = math.pi / 2 - FLIP_FORWARD_MAX / max(math.cos(aim), 1e-9)
+            high = FLIP_FORWARD_MAX / max(-math.cos(theta), 1e-9)
+            options = [(0.0, False)]  # the swing alone: a pick and place sets the yaw after
+            if err[2, 2] > math.cos(FLIP_YAW_TOL):
+                options.append((math.atan2(err[1, 0], err[0, 0]), True))
+            for settle, last in options:
+                yaws = [y for y in (theta + j * math.pi for j in range(-3, 4))
+                        if max(abs(y), abs(y + turn), abs(y + turn + settle)) <= YAW_LIMIT]
+                key = (not last, abs(turn) + abs(settle))
+                if yaws and low <= high and (best is None or key < best[0]):
+                    tilt = float(np.clip(FLIP_TILT, low, high))
+                    best = (key, float(aim), float(min(yaws, key=abs)), tilt, float(settle), last)
+        if best is None:
+            raise OracleError(f"no flip of a cube whose face points at yaw {theta:.2f} rad within the wrist's range")
+        return best[1:]
