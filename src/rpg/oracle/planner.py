@@ -39,6 +39,7 @@ import mujoco
 import numpy as np
 
 from rpg.domain import constants as C
+from rpg.domain.state import yaw_quat
 from rpg.env.embodiments.base import mat_to_quat
 from rpg.env.scripted import (
     GRIPPER_STEPS,
@@ -228,12 +229,6 @@ class Grasp:
 
 def _wrap(a: float) -> float:
     return (a + math.pi) % (2 * math.pi) - math.pi
-
-
-def _yaw_matrix(yaw: float) -> np.ndarray:
-    """Rotation (3, 3) by ``yaw`` (rad) about world z."""
-    c, s = math.cos(yaw), math.sin(yaw)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
 
 
 def _swing(aim: float, angle: float) -> np.ndarray:
@@ -764,7 +759,7 @@ class Oracle:
         """A free place on the table for ``name`` (m): far from every other cube, every target
         (farther from a dense layout's: DENSE_KEEPOUT) and the points ``avoid`` (xy), nearest to
         ``near`` (xy; default where it is), which is itself a candidate.  ``keepout`` (-x, +x,
-        -y, +y) widens what must stay clear around the spot (the sideways hand of a flip)."""
+        -y, +y) widens what must stay clear around the spot (the tilted hand of a flip)."""
         others = [(np.asarray(p.pos[:2]), 0.0) for n, p in poses.items() if n in self.sizes and n != name]
         others += [(np.asarray(t.pos[:2]), DENSE_KEEPOUT if t.dense else 0.0)
                    for n, t in self.plan.targets.items() if n != name]
@@ -821,7 +816,7 @@ class Oracle:
         q_pick = _tilted(theta, yaw, -tilt)
         q_turned = _tilted(aim, yaw + _wrap(aim - theta), -tilt)
         q_swung = _tilted(aim, yaw + _wrap(aim - theta), math.pi / 2 - tilt)
-        q_put = tuple(mat_to_quat(_yaw_matrix(settle) @ rot(q_swung)))
+        q_put = tuple(mat_to_quat(rot(yaw_quat(settle)) @ rot(q_swung)))
         src = np.asarray(poses[name].pos, float)
         near = target.pos if last else FLIP_SPOT  # a flip that ends at the target's pose puts it there
         x, y = self._free_spot(name, poses, keepout=(0.1, 0.1, 0.1, 0.1), near=near)
@@ -862,7 +857,7 @@ class Oracle:
         best = None
         for aim in np.linspace(-FLIP_AIM_MAX, FLIP_AIM_MAX, 121):
             turn = _wrap(aim - theta)
-            swung = _swing(aim, math.pi / 2) @ _yaw_matrix(turn) @ r_now
+            swung = _swing(aim, math.pi / 2) @ rot(yaw_quat(turn)) @ r_now
             err = rot(target.quat) @ swung.T  # a turn about the vertical when the face is up
             # the grasp tilts the approach toward -theta by `tilt`, the swing ends it toward aim
             low = math.pi / 2 - FLIP_FORWARD_MAX / max(math.cos(aim), 1e-9)
