@@ -39,7 +39,7 @@ import mujoco
 import numpy as np
 
 from rpg.domain import constants as C
-from rpg.domain.state import yaw_quat
+from rpg.domain.state import Pose, yaw_quat
 from rpg.env.embodiments.base import mat_to_quat
 from rpg.env.scripted import (
     GRIPPER_STEPS,
@@ -49,7 +49,16 @@ from rpg.env.scripted import (
     top_down_quat,
     waypoint_actions,
 )
-from rpg.oracle.goal import GoalPlan, OracleError, Target, plan_goal, pose_matches, rot, up_axis
+from rpg.oracle.goal import (
+    DENSE_YAW_TOL,
+    GoalPlan,
+    OracleError,
+    Target,
+    plan_goal,
+    pose_matches,
+    rot,
+    up_axis,
+)
 
 MAX_ATTEMPTS = 3
 """Most pick-and-place attempts per cube before the oracle gives up."""
@@ -212,6 +221,17 @@ HELD_OFFSET_MAX = 0.012
 BUFFER_STEP = 0.02
 """Grid step (m) of candidate spots for cubes moved out of the way."""
 
+NUDGE_REACH = 0.025
+"""A dense layout's cube standing upright within this distance (m) of its goal, in its layer,
+is pushed there (:meth:`Oracle._nudge`) rather than picked again: a pick from between touching
+neighbours knocks them (the Panda), and a knocked cube stands a few mm off."""
+
+NUDGE_MIN = 0.002
+"""Smallest offset (m, along a face normal) a nudge corrects."""
+
+NUDGE_MAX = 3
+"""Nudges per cube and episode before it is picked and placed again."""
+
 
 @dataclass(frozen=True)
 class Grasp:
@@ -279,13 +299,14 @@ class Oracle:
         self.plan: GoalPlan | None = None
         self.attempts: dict[str, int] = {}
         self.gap_pushes: dict[str, int] = {}
+        self.nudges: dict[str, int] = {}
         self.failure: str | None = None
 
     # -- policy interface -----------------------------------------------------------
     def reset(self, obs=None) -> None:
         """Plan for the episode the environment has just reset to."""
         self.plan, self.failure = None, None
-        self.attempts, self.gap_pushes = {}, {}
+        self.attempts, self.gap_pushes, self.nudges = {}, {}, {}
         self._gen = self._run()
 
     def act(self, obs=None) -> np.ndarray:
@@ -333,6 +354,11 @@ class Oracle:
                 done.add(n)
         return done
 
+    def _at_targets(self, poses) -> set[str]:
+        """Cubes at their targets now, in order or not (``_done`` leaves out a dense layout's
+        cubes after a gap; a knocked neighbour makes such a gap, and they must stay)."""
+        return {n for n in self.plan.order if self._at_target(n, poses)}
+
     def _on_top_of(self, name: str, poses) -> list[str]:
         """Cubes resting on ``name`` now (highest first)."""
         base = poses[name]
@@ -343,10 +369,11 @@ class Oracle:
         return sorted(out, key=lambda n: -poses[n].pos[2])
 
     def _blocking(self, target: Target, poses) -> list[str]:
-        """Cubes standing in ``target``'s place (not its supports, not the cube itself)."""
+        """Cubes standing in ``target``'s place (not its supports, not the cube itself, not a cube
+        at its own target: goals do not overlap)."""
         out, done = [], self._done(poses)
         for n in sorted(self.sizes):
-            if n == target.name or n in target.supports or n in done:
+            if n == target.name or n in target.supports or n in done or self._at_target(n, poses):
                 continue
             p = poses[n].pos
             reach = 0.5 * (self.sizes[n] + target.size) + 0.004
@@ -376,8 +403,8 @@ class Oracle:
             if above:
                 yield from self._move_aside(above[0], poses)
                 continue
-            if target.dense:
-                tidy = self._tidy(name, poses)
+            if target.dense:  # a cube a few mm off (knocked, short of a push) is pushed back
+                tidy = self._nudge(name, target, poses) or self._tidy(name, poses)
                 if tidy is not None:
                     yield from tidy
                     continue
@@ -531,13 +558,18 @@ class Oracle:
     def _zone_blockers(self, name: str, target: Target, poses) -> tuple[list[str], list[np.ndarray]]:
         """Loose cubes (not at their goal) in the way of placing ``name`` in a dense layout,
         those without which a grasp exists that does not exist with them, nearest first; and
-        the points (xy) that grasp's fingers pass over (what moved cubes must keep clear of)."""
+        the points (xy) that grasp's fingers pass over (what moved cubes must keep clear of).
+        Cubes at their own targets stay where they are unless no grasp exists without moving
+        them too."""
         done = self._done(poses)
-        settled = {n: p for n, p in poses.items()
-                   if n == name or n not in self.sizes or n in done}
-        try:
-            grasp = self._grasp(name, poses[name].quat, target, poses, settled)
-        except OracleError:
+        for keep in (done | self._at_targets(poses), done):  # cubes at their targets stay, if they can
+            settled = {n: p for n, p in poses.items() if n == name or n not in self.sizes or n in keep}
+            try:
+                grasp = self._grasp(name, poses[name].quat, target, poses, settled)
+                break
+            except OracleError:
+                continue
+        else:
             return [], []
         loose = sorted((n for n in poses if n not in settled),
                        key=lambda n: math.dist(poses[n].pos[:2], target.pos[:2]))
@@ -678,8 +710,43 @@ class Oracle:
             if not blockers:
                 self.gap_pushes[name] = self.gap_pushes.get(name, 0) + 1
                 return self._push(name, np.asarray(moved.pos), -d, shift, self._travel_z(name, here))
-            if not any(b in done for b in blockers):
+            if not any(b in done or self._at_target(b, poses) for b in blockers):
                 return self._move_aside(blockers[0], poses, avoid=self._work_points(moved, -d, shift))
+        return None
+
+    def _nudge(self, name: str, target: Target, poses) -> Iterator[np.ndarray] | None:
+        """A push that moves ``name``, upright in ``target``'s layer and within NUDGE_REACH of
+        it, to ``target`` along a face normal: the one of its larger offset, else the other
+        (the remaining offset is the next nudge); a cube turned more than DENSE_YAW_TOL is
+        pushed even when in place, the pusher's face turning it square.  None when it is
+        farther, in place, every such pusher path is blocked, or NUDGE_MAX nudges were spent
+        on it."""
+        here = np.asarray(poses[name].pos, float)
+        if (self.nudges.get(name, 0) >= NUDGE_MAX or abs(here[2] - target.pos[2]) > 0.005
+                or abs(up_axis(poses[name].quat)[1]) < 0.95):
+            return None
+        miss = np.subtract(target.pos[:2], here[:2])
+        if np.linalg.norm(miss) > NUDGE_REACH:
+            return None
+        yaw = cube_yaw(target.quat)
+        turn = (cube_yaw(poses[name].quat) - yaw + math.pi / 4) % (math.pi / 2) - math.pi / 4
+        turned = abs(turn) > DENSE_YAW_TOL
+        # a neighbour at its target but standing out a few mm past the line the pusher stops
+        # at is pushed back into line, not in the way: it is tested where its target is
+        at = self._at_targets(poses)
+        lined_up = {n: Pose(self.plan.targets[n].pos, self.plan.targets[n].quat) if n in at else p
+                    for n, p in poses.items()}
+        normals = [np.array([math.cos(yaw + k * math.pi / 2), math.sin(yaw + k * math.pi / 2)]) for k in range(4)]
+        for move in sorted(normals, key=lambda n: -float(miss @ n)):
+            shift = float(miss @ move)
+            if shift < NUDGE_MIN and not (turned and shift > -NUDGE_MIN):
+                break
+            shift = max(shift, 0.0)
+            dst = np.array([here[0] + shift * move[0], here[1] + shift * move[1], target.pos[2]])
+            if self._push_blockers(name, replace(target, pos=tuple(dst)), -move, shift, lined_up):
+                continue
+            self.nudges[name] = self.nudges.get(name, 0) + 1
+            return self._push(name, dst, -move, shift, self._travel_z(name, here))
         return None
 
     def _push_start(self, name: str, dst: np.ndarray, out: np.ndarray, shift: float) -> np.ndarray:
@@ -731,9 +798,12 @@ class Oracle:
             if float(np.subtract(tcp.pos[:2], end) @ out) < PUSH_TOL:
                 break
             yield delta_action(tcp, aim)
+        # back and up with the fingers closed: opened low beside a layout, a finger reaching
+        # ~5 cm along the row knocked the cubes placed there (the Panda, by up to 12 mm); the
+        # next primitive opens them at travel height
         yield from waypoint_actions(self.robot, [
             Waypoint((start[0], start[1], z + 0.002), yaw, GRIPPER_CLOSED, tol=0.006, max_steps=20, quat=q),
-            Waypoint((start[0], start[1], travel), yaw, GRIPPER_OPEN, tol=0.01, max_steps=40),
+            Waypoint((start[0], start[1], travel), yaw, GRIPPER_CLOSED, tol=0.01, max_steps=40),
         ])
 
     def _pick(self, src: np.ndarray, yaw: float, travel: float, quat=None,
