@@ -363,3 +363,50 @@ def test_the_library_passed_the_solvable_gate_or_says_why_not():
             else:
                 assert gates["solvable"]["status"] == "pass", d
                 assert gates["solvable"]["details"]["successes"] >= 3
+
+
+def test_a_knocked_cube_in_a_dense_layout_is_pushed_back_not_picked_again():
+    """A 3x3 base of touching cubes with one cube knocked 15 mm out of its row and turned
+    0.1 rad: the oracle pushes it back square (Oracle._nudge) instead of picking it from
+    between its neighbours, and the neighbours stay at their goals (the Panda)."""
+    from rpg.domain.state import yaw_quat
+    from rpg.oracle.goal import rot
+
+    task = LIBRARY / "pyramid_construction/v1"
+    env = BlockTaskEnv(task, embodiment="panda", cameras=(), max_episode_steps=400)
+    env.reset(seed=0)
+    goal = env._goal_module.GOAL_POSES
+    base = {n: p for n, p in goal.items() if abs(p.pos[2] - 0.97) < 1e-3}
+    assert len(base) == 9
+    poses = {n: (p.pos, p.quat) for n, p in base.items()}
+    aside = [(0.66, -0.2), (0.66, -0.12), (0.66, 0.12), (0.66, 0.2), (0.42, 0.2)]
+    for (x, y), n in zip(aside, sorted(set(goal) - set(base)), strict=True):
+        poses[n] = ((x, y, 0.97), (1.0, 0.0, 0.0, 0.0))
+    knocked = min(base, key=lambda n: (base[n].pos[0], abs(base[n].pos[1])))  # the near row's middle
+    x, y, z = base[knocked].pos
+    poses[knocked] = ((x - 0.015, y, z), tuple(yaw_quat(0.1)))
+    env.scene.set_poses(poses)
+    obs, *_ = env.step(np.array([0, 0, 0, 0, 0, 0, -1], np.float32))
+    oracle = Oracle(env)
+    calls = []
+    oracle.reset(obs)
+    oracle.act(obs)  # plans
+    assert not oracle._at_target(knocked)
+    for method in ("_nudge", "_pick_place"):
+        original = getattr(oracle, method)
+
+        def recorded(name, *args, _original=original, _method=method):
+            calls.append((_method, name))
+            return _original(name, *args)
+        setattr(oracle, method, recorded)
+    oracle.reset(obs)
+    for _ in range(120):
+        obs, *_ = env.step(oracle.act(obs))
+        if calls and calls[0][0] == "_nudge" and oracle._at_target(knocked):
+            break
+    assert calls[0] == ("_nudge", knocked), calls
+    assert ("_pick_place", knocked) not in calls
+    assert oracle._at_target(knocked), np.subtract(env.scene.pose(knocked).pos, base[knocked].pos)
+    assert abs(np.arctan2(*rot(env.scene.pose(knocked).quat)[1::-1, 0])) < 0.1
+    moved = [n for n in base if n != knocked and not oracle._at_target(n)]
+    assert not moved, moved
