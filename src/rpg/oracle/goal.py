@@ -104,6 +104,12 @@ def up_axis(quat) -> tuple[int, float]:
     return k, float(z[k])
 
 
+def yaw_offset(quat, target_quat) -> float:
+    """Yaw (rad) of a cube at ``quat`` from one at ``target_quat`` (w, x, y, z), modulo a
+    cube's quarter-turn symmetry: in [-pi/4, pi/4)."""
+    return (cube_yaw(quat) - cube_yaw(target_quat) + math.pi / 4) % (math.pi / 2) - math.pi / 4
+
+
 def pose_matches(target: Target, pos, quat, xy_tol: float = 0.012, z_tol: float = 0.01,
                  angle_tol: float = 0.25, yaw_tol: float = DENSE_YAW_TOL) -> bool:
     """Whether a cube at ``pos``/``quat`` is at ``target`` (tolerances in m and rad; ``yaw_tol``
@@ -117,7 +123,7 @@ def pose_matches(target: Target, pos, quat, xy_tol: float = 0.012, z_tol: float 
         tol = min(angle_tol, yaw_tol) if target.dense else angle_tol
         return math.acos(max(-1.0, min(1.0, (np.trace(r) - 1) / 2))) < tol
     _, cos = up_axis(quat)
-    if target.dense and abs((cube_yaw(quat) - cube_yaw(target.quat) + math.pi / 4) % (math.pi / 2) - math.pi / 4) > yaw_tol:
+    if target.dense and abs(yaw_offset(quat, target.quat)) > yaw_tol:
         return False
     return abs(cos) > math.cos(angle_tol)
 

@@ -58,6 +58,7 @@ from rpg.oracle.goal import (
     pose_matches,
     rot,
     up_axis,
+    yaw_offset,
 )
 
 MAX_ATTEMPTS = 3
@@ -729,8 +730,7 @@ class Oracle:
         if np.linalg.norm(miss) > NUDGE_REACH:
             return None
         yaw = cube_yaw(target.quat)
-        turn = (cube_yaw(poses[name].quat) - yaw + math.pi / 4) % (math.pi / 2) - math.pi / 4
-        turned = abs(turn) > DENSE_YAW_TOL
+        turned = abs(yaw_offset(poses[name].quat, target.quat)) > DENSE_YAW_TOL
         # a neighbour at its target but standing out a few mm past the line the pusher stops
         # at is pushed back into line, not in the way: it is tested where its target is
         at = self._at_targets(poses)
