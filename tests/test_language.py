@@ -34,6 +34,11 @@ from rpg.schema.meaning import meaning
     ("put three blue blocks in a row in front of the yellow block",
      ["in_front_of(blue,yellow)", "in_front_of(blue,yellow)", "in_front_of(blue,yellow)", "line(blue,blue,blue)"]),
     ("build a stack of red, green and blue blocks next to the yellow block", ["next_to(red,yellow)", "stack(red,green,blue)"]),
+    # taking a cube off: rho_0 starts the stack, G is the top cube on the table (PlanBench's
+    # "unstack ... from on top of ..." once compiled to the very stack it takes apart)
+    ("unstack the blue block from on top of the red block", ["start:stack(red,blue)", "on_table(blue)"]),
+    ("take the green block off the yellow block and put it on the table", ["start:stack(yellow,green)", "on_table(green)"]),
+    ("build the tallest tower you can with 4 blocks", ["stack(red,blue,green,yellow)"]),
 ])
 def test_reads(text, expected):
     assert meaning(parse(text)) == sorted(expected)
@@ -49,6 +54,12 @@ def test_reads(text, expected):
     # silent errors found by review: each compiled to a task that meant something else
     ("build a tower of three blocks to the left of the green block and stack them", "one green cube"),
     ("stack 3 red blocks and put 2 red blocks in a line", "line"),
+    # a superlative structure with no count (SayCan's "make the highest block stack" compiled to
+    # two cubes), and a cube taken off a stack the task does not start with
+    ("make the highest block stack.", "as many cubes as there are"),
+    ("build the tallest tower you can", "no count"),
+    ("stack the blocks as high as you can", "as high as you can"),
+    ("unstack the red block and put it left of the blue block", "'unstack' takes a cube off a stack"),
 ])
 def test_refuses_naming_what_it_could_not_place(text, named):
     with pytest.raises(ParseError, match=named):

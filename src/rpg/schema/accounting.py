@@ -51,6 +51,18 @@ RELATION_WORDS: tuple[tuple[str, str], ...] = (
 """Relation words (normalised text) -> the goal predicates that can carry them (project)."""
 
 
+UNDO_RE = re.compile(r"\bunstack(?:s|ed|ing)?\b|\bremov(?:e|es|ed|ing)\b|\boff\b")
+"""Words that take a cube off where it starts (project): only a task whose rho_0 starts a
+stack (``initial_state.structures``) can mean them."""
+
+SUPERLATIVE_RE = re.compile(
+    r"\b(?:make|build|create|form|construct|assemble|erect|stack|pile)\s+(?:up\s+)?(?:me\s+|us\s+)?(?:the|a)\s+"
+    r"(?:tallest|highest|biggest|largest|longest|widest|greatest)\b"
+    r"|\bas\s+(?:tall|high|big|large|long|wide)\s+as\s+(?:possible|you\s+can|it\s+can|can\s+be)\b")
+"""A structure asked for at its largest ("build the tallest tower you can"): as many cubes as
+there are, which only a stated count makes a task (project)."""
+
+
 class UnaccountedMention(BadInput):
     """A mention of the instruction has no place in the task that was read."""
 
@@ -101,6 +113,10 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
         if re.search(r"\b(?:the|that|this|its|their)\s+(?:[a-z]+\s+)?$", text[:m.start()]):
             continue  # "push the pile of red blocks": a reference to cubes, not a structure to build
         out.append(Mention(m.group(0), "structure", predicates=STRUCTURE_KINDS[structure_of_word(m.group(1))].carriers))
+    for m in UNDO_RE.finditer(text):
+        out.append(Mention(m.group(0), "undo"))
+    for m in SUPERLATIVE_RE.finditer(text):
+        out.append(Mention(m.group(0), "superlative"))
     each = re.search(r"\b(?:each|every|all)\s+(?:of\s+the\s+)?(?:(\d+)\s+)?corners?\b", text)
     if each:
         out.append(Mention(each.group(0), "place", count=int(each.group(1) or 4), region="corners"))
@@ -153,6 +169,18 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
             if not used:
                 raise UnaccountedMention(f"the relation '{m.words}' has no part in the task read")
             record.append({"mention": m.words, "kind": "relation", "consumed_by": ", ".join(used)})
+        elif m.kind == "undo":
+            if not schema.initial_state.structures:
+                raise UnaccountedMention(f"'{m.words}' takes a cube off a stack and the task read starts "
+                                         "with none (say which cube starts on which)")
+            record.append({"mention": m.words, "kind": "undo", "consumed_by": "initial_state.structures"})
+        elif m.kind == "superlative":
+            counted = [r for r in record if r["kind"] == "count"] or [
+                n for n in mentions(text, colors, canon) if n.kind == "count"]
+            if not counted:
+                raise UnaccountedMention(f"'{m.words}' asks for as many cubes as there are and no count "
+                                         "is given (e.g. 'a tower of 5 cubes')")
+            record.append({"mention": m.words, "kind": "superlative", "consumed_by": "the count named"})
         elif m.kind == "towers":
             have = _count_towers(goal)
             if have < m.count:

@@ -103,11 +103,11 @@ seven eight nine ten many several wide high tall height x can build starts start
 begin begins beginning initial there where which who has have how shape shaped form forms do does
 shown kind type types by-color own its corresponding respectively per contain containing made consisting
 plus minus equals times operator operators symbol symbols mixed upright hold holds just only now want like
-out smallest largest lowest highest biggest least greatest marked labelled labeled showing
+out smallest largest lowest highest biggest least greatest tallest longest widest marked labelled labeled showing
 alternating alternate alternately alternates going goes go way up down upward downward stand standing
 wall walls wide deep long split divide pillar column close far triangle triangular formation write writes
 writing addition subtraction multiplication increase increases decrease decreases tier tiers instead actually
-rather backwards backward pick grab take lift get lay drop small little tiny mini huge one unstack unstacked
+rather backwards backward pick grab take lift get lay drop small little tiny mini huge one unstack unstacked off remove
 through corner corners sum area areas zone zones region regions spot spots location pad pads mat mats
 marker markers away distant opposite rear edge edges end ends half part workspace robot
 """.split())
@@ -1891,8 +1891,33 @@ def recognize_structure_by_cube(f: Features, b: Builder) -> bool:
     return True
 
 
+UNSTACK_RE = re.compile(
+    rf"(?:unstack|take|lift|remove|pick\s+up|get)\s+the\s+(?P<top>{COLOR_RE})\s+(?:block|cube|box)\s+"
+    rf"(?:off|from)\s+(?:of\s+)?(?:on\s+)?(?:the\s+)?(?:top\s+of\s+)?the\s+(?P<bottom>{COLOR_RE})\s+(?:block|cube|box)"
+    r"(?:\s*,?\s*(?:and\s+)?(?:then\s+)?(?:put|place|set|lay)\s+it\s+(?:down\s+)?on\s+the\s+table)?\s*[.!]?")
+"""One cube taken off another: "unstack the blue block from on top of the red block", "take
+the blue block off the red block (and put it on the table)"."""
+
+
+def recognize_unstack(f: Features, b: Builder) -> bool:
+    """A cube taken off the cube it starts stacked on: rho_0 starts the stack (bottom, top),
+    G is the top cube on the table (so no longer on the other)."""
+    m = UNSTACK_RE.fullmatch(f.text)
+    if not m:
+        return False
+    bottom, top = _canon_color(m.group("bottom")), _canon_color(m.group("top"))
+    low, high = b.cube(bottom), b.cube(top)
+    (x0, y0), (x1, y1) = b.unit_centers(2, 0.12)
+    b.place(stack_layout([low], (x0, y0)) | stack_layout([high], (x1, y1)))
+    b.structures.append([low, high])
+    b.preds.append(OnTable(high))
+    b.primitives += ["place"]
+    b.summary += [f"initially {high} is stacked on {low}", f"{high} on the table"]
+    return True
+
+
 RECOGNIZERS = (
-    recognize_move_to_region,
+    recognize_move_to_region, recognize_unstack,
     recognize_tower_clauses,
     recognize_temporal, recognize_each_patch, recognize_matching_patches, recognize_rotate, recognize_equation, recognize_spell, recognize_pyramid,
     recognize_cube_block, recognize_wall, recognize_grid, recognize_circle, recognize_piles, recognize_ordered_line,

@@ -10,6 +10,7 @@ letter/digit cube by its label, a goal patch as ``patch:<colour>``).  Examples::
     line(green,green,green)               line[left_to_right](red,green,blue)
     wall(red,red,red|blue,blue,blue)      layers bottom to top (rows, walls, 3D blocks)
     pyramid(blue,green,red|yellow)        layers bottom to top, each layer sorted
+    start:stack(red,blue); on_table(blue) a stack rho_0 starts, and its top cube taken off
 
 The development corpus (``tests/corpus/instructions.yaml``) states each instruction's
 expected meaning in this notation, with two wildcards: ``?`` for any one object and ``red*``
@@ -74,8 +75,12 @@ def meaning(schema: TaskSchema) -> list[str]:
         used.update(ns)
         return ",".join(sorted(d[n] for n in ns))
 
+    starts = [list(s) for s in schema.initial_state.structures]
+    started_on = {n for s in starts for n in s[1:]}  # cubes rho_0 stacks on another
     for p in _conjuncts(schema.goal_predicate()):
-        if isinstance(p, _SKIP):
+        if isinstance(p, P.OnTable) and p.a in started_on:
+            atoms.append(f"on_table({names([p.a])})")
+        elif isinstance(p, _SKIP):
             used.update(p.object_names())
         elif isinstance(p, P.Stack):
             chains.append(list(p.objects))
@@ -125,6 +130,8 @@ def meaning(schema: TaskSchema) -> list[str]:
         atoms.append(f"on_patch({','.join(sorted(d[c] for c in cubes))},{d[patch]})")
     for n, region in sorted(regions.items()):
         atoms.append(f"in_region({d[n]},{region})")
+    for s in starts:
+        atoms.append(f"start:stack({names(s)})")
     for n in sorted(set(d) - used):
         atoms.append(f"extra({d[n]})")
     return sorted(atoms)
