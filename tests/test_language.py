@@ -26,6 +26,8 @@ from rpg.schema.meaning import meaning
     ("Place a row of 3 blue blocks on top of a row of 3 green blocks.", ["wall(green,green,green|blue,blue,blue)"]),
     ("slide left the blue block", ["in_region(blue,left)"]),
     ("move the green block to the center of the table", ["in_region(green,center)"]),
+    ("place the green block in the middle", ["in_region(green,center)"]),
+    ("put the red block at the back of the table", ["in_region(red,back)"]),
     # a structure placed relative to a cube: the structure's own clause, then the relation for each of its cubes
     ("Build a tower of 3 green blocks to the left of the red block",
      ["left_of(green,red)", "left_of(green,red)", "left_of(green,red)", "stack(green,green,green)"]),

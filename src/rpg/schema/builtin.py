@@ -1805,13 +1805,14 @@ def recognize_tower_clauses(f: Features, b: Builder) -> bool:
 
 MOVE_TO_REGION_RE = re.compile(
     rf"(?:go\s+)?(?:place|put|move|push|slide|sweep|shift|bring|set|drop)\s+(?:(?P<p>left|right)\s+)?the\s+(?P<c>{COLOR_RE})\s+"
-    r"(?:block|cube|box)(?:\s+(?:to|into|onto)\s+the\s+(?:(?P<fb>front|back|rear)\s+)?(?P<d>left|right|center|centre|middle|front|back)"
+    r"(?:block|cube|box)(?:\s+(?:to|into|onto|in|at)\s+the\s+(?:(?P<fb>front|back|rear)\s+)?(?P<d>left|right|center|centre|middle|front|back)"
     r"(?:\s+(?:hand\s+)?(?:side|half|part|edge|end|area|corner))?(?:\s+of\s+the\s+(?:table|workspace))?)?\s*[.!]?")
 
 
 def recognize_move_to_region(f: Features, b: Builder) -> bool:
     """One cube moved to a place on the table, said without a second object: "push the red
-    block to the left", "slide right the blue block", "move the green block to the center".
+    block to the left", "slide right the blue block", "move the green block to the center",
+    "place the green block in the middle".
     The goal is the cube in that region (:data:`constants.REGION_NAMES`); rho_0 starts it
     outside (the emitter derives that from G)."""
     m = MOVE_TO_REGION_RE.fullmatch(f.text)
