@@ -20,9 +20,9 @@ from pathlib import Path
 import numpy as np
 
 from rpg.demos.lerobot import LeRobotWriter, read_episode_actions
-from rpg.demos.log import read_jsonl
 from rpg.demos.record import Episode, close_cached_env, record_episode
 from rpg.errors import BadInput
+from rpg.jsonl import read_jsonl
 
 MAX_SEED_FACTOR = 3
 """At most this many times ``episodes`` seeds are tried per task."""

@@ -29,11 +29,12 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.parquet as pq
 
-from rpg.demos.log import append_jsonl, discard_failed, log_attempt, read_jsonl, rewrite_jsonl
+from rpg.demos.log import discard_failed, log_attempt
 from rpg.demos.record import ACTION_NAMES, STATE_NAMES, Episode
 from rpg.domain import constants as C
 from rpg.env.video import VIDEO_CODEC
 from rpg.errors import BadInput
+from rpg.jsonl import append_jsonl, read_jsonl, rewrite_jsonl
 
 CODEBASE_VERSION = "v2.1"
 CHUNK_SIZE = 1000

@@ -38,9 +38,10 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from rpg.demos.log import append_jsonl, discard_failed, log_attempt, read_jsonl, rewrite_jsonl
+from rpg.demos.log import discard_failed, log_attempt
 from rpg.demos.record import LOW_DIM_KEYS, Episode
 from rpg.errors import BadInput
+from rpg.jsonl import append_jsonl, read_jsonl, rewrite_jsonl
 
 DATASET_NAME = "demo.hdf5"
 """The robomimic file inside a dataset directory."""

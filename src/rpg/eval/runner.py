@@ -26,6 +26,7 @@ from filelock import FileLock, Timeout
 
 from rpg.errors import BadInput
 from rpg.eval.policies import BUILTIN, PolicyError, action_chunk, load_policy
+from rpg.jsonl import cut_torn_line, read_jsonl
 from rpg.validate.isolation import die_with_parent
 
 SEEDS_PER_UNIT = 5
@@ -330,35 +331,8 @@ def _episode_key(rec: dict) -> tuple:
 
 def read_episodes(path: Path) -> list[dict]:
     """The complete lines of ``episodes.jsonl`` (a torn last line, from a kill mid-write, is
-    not read; :func:`_cut_torn_line` removes it before a resumed run appends)."""
-    return _complete_lines(path)[0]
-
-
-def _cut_torn_line(path: Path) -> list[dict]:
-    """Read ``episodes.jsonl`` and truncate it after its last complete line."""
-    records, good = _complete_lines(path)
-    if path.is_file() and good < path.stat().st_size:
-        with open(path, "r+b") as fh:
-            fh.truncate(good)
-    return records
-
-
-def _complete_lines(path: Path) -> tuple[list[dict], int]:
-    """The records of the complete lines and the byte length they span."""
-    if not path.is_file():
-        return [], 0
-    raw = path.read_bytes()
-    records, good = [], 0
-    for line in raw.split(b"\n"):
-        if not line.strip():
-            good += len(line) + 1
-            continue
-        try:
-            records.append(json.loads(line))
-        except ValueError:
-            break
-        good += len(line) + 1
-    return records, min(good, len(raw))
+    not read; :func:`rpg.jsonl.cut_torn_line` removes it before a resumed run appends)."""
+    return read_jsonl(path)
 
 
 def _check_run_dir(run_dir: Path, config: EvalConfig) -> None:
@@ -416,7 +390,7 @@ def _run_locked(config: EvalConfig, run_dir: Path, work: list, jobs: int, progre
 
     write_file(run_dir / "run.json", json.dumps(config.to_json(), indent=2, sort_keys=True) + "\n")
     log = run_dir / "episodes.jsonl"
-    records = _cut_torn_line(log)
+    records = cut_torn_line(log)
     done = {_episode_key(r) for r in records}
     units = []
     for task, variant in work:
