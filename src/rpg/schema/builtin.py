@@ -1826,7 +1826,7 @@ def recognize_move_to_region(f: Features, b: Builder) -> bool:
     b.place({name: Pose((*_region_spots(region, 1)[0], C.TABLE_TOP_Z + C.CUBE_EDGE / 2))})
     b.preds.append(InRegion(name, region))
     b.primitives += ["push" if re.match(r"(?:go\s+)?(?:push|slide|sweep)", f.text) else "place"]
-    b.summary.append(f"{name} in the {region.replace('_', ' ')} of the table")
+    b.summary.append(b.preds[-1].describe())
     return True
 
 
