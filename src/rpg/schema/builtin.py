@@ -1893,11 +1893,12 @@ def recognize_structure_by_cube(f: Features, b: Builder) -> bool:
 
 
 UNSTACK_RE = re.compile(
-    rf"(?:unstack|take|lift|remove|pick\s+up|get)\s+the\s+(?P<top>{COLOR_RE})\s+(?:block|cube|box)\s+"
+    rf"(?:unstack|take|remove)\s+the\s+(?P<top>{COLOR_RE})\s+(?:block|cube|box)\s+"
     rf"(?:off|from)\s+(?:of\s+)?(?:on\s+)?(?:the\s+)?(?:top\s+of\s+)?the\s+(?P<bottom>{COLOR_RE})\s+(?:block|cube|box)"
     r"(?:\s*,?\s*(?:and\s+)?(?:then\s+)?(?:put|place|set|lay)\s+it\s+(?:down\s+)?on\s+the\s+table)?\s*[.!]?")
 """One cube taken off another: "unstack the blue block from on top of the red block", "take
-the blue block off the red block (and put it on the table)"."""
+the blue block off the red block (and put it on the table)".  Not "pick up" or "lift": those
+end with the cube in the hand, which no task ends with."""
 
 
 def recognize_unstack(f: Features, b: Builder) -> bool:
