@@ -152,6 +152,12 @@ def test_reused_goal_evaluations_equal_fresh_ones_at_every_step():
 def test_episode_is_truncated_at_the_limit_and_the_rule_is_documented():
     env = _env("floating_gripper")
     assert env.unwrapped.max_episode_steps == episode_step_limit(2) == C.EPISODE_BASE_STEPS + 2 * C.EPISODE_STEPS_PER_CUBE
+    # a 14-cube pyramid on a 3x3 base: 13 of its goals touch a neighbour in their layer (not the
+    # top cube), and each of those is pushed into place
+    pyramid = BlockTaskEnv(LIBRARY / "pyramid_construction" / "v1", embodiment="floating_gripper", cameras=())
+    assert pyramid.max_episode_steps == episode_step_limit(14, 13) == (
+        C.EPISODE_BASE_STEPS + 14 * C.EPISODE_STEPS_PER_CUBE + 13 * C.EPISODE_STEPS_PER_PUSH)
+    pyramid.close()
     short = _env("floating_gripper", max_episode_steps=3)
     short.reset(seed=0)
     noop = np.array([0, 0, 0, 0, 0, 0, -1], np.float32)

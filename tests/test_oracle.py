@@ -219,7 +219,7 @@ def test_the_panda_builds_a_pyramid_of_touching_letter_cubes(seed):
 def test_the_panda_builds_a_14_cube_pyramid_on_a_3x3_base(seed):
     """pyramid_construction v1 with the Panda, two seeds that failed before two fixes: the
     last cube of the second layer, pushed over the base at full rate, caught on its seams and
-    dragged its rows 9 mm (the stroke now moves 3 mm per step over cubes), and knocked cubes
+    dragged its rows 9 mm (the stroke over cubes now asks for at most 15 mm a step), and knocked cubes
     were picked from between their neighbours (they are now pushed back)."""
     info, oracle, before = _solve("pyramid_construction/v1", "panda", seed=seed)
     assert before and info["success"], (oracle.failure, info["diagnostics"]["unsatisfied"])

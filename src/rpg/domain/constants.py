@@ -350,9 +350,19 @@ EPISODE_BASE_STEPS: int = 80
 
 EPISODE_STEPS_PER_CUBE: int = 150
 """Control steps added per movable cube: one pick and place at 20 Hz takes ~100 with the
-floating gripper and ~130 with the Panda, and a dense layout's cube adds a ~30-step push
-(the oracle, measured; project).
-``max_episode_steps = EPISODE_BASE_STEPS + EPISODE_STEPS_PER_CUBE * cubes``."""
+floating gripper and ~130 with the Panda (the oracle, measured; project)."""
+
+DENSE_GAP: float = 0.015
+"""A goal layout is dense around a cube when a neighbour in its layer stands closer than
+this (m, face to face): no finger fits between them (project)."""
+
+EPISODE_STEPS_PER_PUSH: int = 50
+"""Control steps added per cube whose goal is dense (:data:`DENSE_GAP`): it is released
+beside its goal and pushed in, a push of ~40 steps with the Panda (the oracle, measured;
+project).  A 14-cube pyramid got 2180 steps without it, and the Panda's oracle needed
+1730-2180 (project).
+``max_episode_steps = EPISODE_BASE_STEPS + EPISODE_STEPS_PER_CUBE * cubes
++ EPISODE_STEPS_PER_PUSH * dense cubes``."""
 
 AGENTVIEW_POS: tuple[float, float, float] = (1.15, 0.0, 1.50)
 """Agentview camera position, m: across the table, facing the robot (LIBERO's agentview).

@@ -151,3 +151,12 @@ def spread_centers(count: int, spacing: float, center: tuple[float, float] = C.W
         in_row = min(per_row, count - r * per_row)
         out.append((center[0] + (r - (rows - 1) / 2) * spacing, center[1] + ((in_row - 1) / 2 - c) * spacing))
     return out
+
+
+def dense_cubes(poses: dict[str, Pose], edges: dict[str, float], gap: float = C.DENSE_GAP) -> set[str]:
+    """Cubes of ``edges`` (name -> edge length, m) that have a neighbour in their layer whose
+    face is closer than ``gap`` (m) in ``poses``: no finger fits between them."""
+    names = sorted(edges)
+    return {n for n in names for m in names if m != n
+            and abs(poses[n].pos[2] - poses[m].pos[2]) < 0.5 * edges[n]
+            and math.dist(poses[n].pos[:2], poses[m].pos[:2]) < 0.5 * (edges[n] + edges[m]) + gap}

@@ -25,8 +25,9 @@ gripper holds no cube (both fingers touching it), as ManiSkill3 defines success.
 goal ("first A, then B") also needs its events to have first held in that order during the
 episode (:class:`~rpg.domain.predicates.TemporalMonitor`, updated every step).  The
 episode terminates on success (``terminate_on_success``) and is truncated after
-``max_episode_steps = EPISODE_BASE_STEPS + EPISODE_STEPS_PER_CUBE * movable cubes`` control
-steps.  Reward: 1.0 on a successful step, else 0.0 (sparse).
+``max_episode_steps = EPISODE_BASE_STEPS + EPISODE_STEPS_PER_CUBE * movable cubes
++ EPISODE_STEPS_PER_PUSH * dense cubes`` control steps (a dense cube's goal touches a neighbour
+in its layer: it is pushed into place).  Reward: 1.0 on a successful step, else 0.0 (sparse).
 
 **Control** at :data:`~rpg.domain.constants.CONTROL_HZ` (20 Hz; 25 physics steps of 2 ms).
 Actions are float32 and apply to the *measured* TCP pose (not to the last target):
@@ -72,6 +73,7 @@ import numpy as np
 from gymnasium import spaces
 
 from rpg.domain import constants as C
+from rpg.domain.layouts import dense_cubes
 from rpg.domain.predicates import InOrder
 from rpg.env.embodiments import make_embodiment
 from rpg.env.embodiments.base import PREFIX, EmbodimentError, quat_to_axis_angle
@@ -81,9 +83,10 @@ CAMERAS = ("agentview", "wrist", "default")
 """Cameras an environment can observe."""
 
 
-def episode_step_limit(n_cubes: int) -> int:
-    """Control steps of an episode of a task with ``n_cubes`` movable cubes (documented rule)."""
-    return C.EPISODE_BASE_STEPS + C.EPISODE_STEPS_PER_CUBE * max(1, n_cubes)
+def episode_step_limit(n_cubes: int, n_dense: int = 0) -> int:
+    """Control steps of an episode of a task with ``n_cubes`` movable cubes, ``n_dense`` of them
+    in a dense goal layout (documented rule, :data:`~rpg.domain.constants.EPISODE_STEPS_PER_PUSH`)."""
+    return C.EPISODE_BASE_STEPS + C.EPISODE_STEPS_PER_CUBE * max(1, n_cubes) + C.EPISODE_STEPS_PER_PUSH * n_dense
 
 
 def _instruction(source: TaskSource, which: str) -> str:
@@ -149,8 +152,8 @@ class BlockTaskEnv(gym.Env):
         self.render_mode = render_mode
         self.terminate_on_success = bool(terminate_on_success)
         self.object_names = self.scene.names
-        cubes = sum(1 for a in self.scene.assets.values() if a.movable)
-        self.max_episode_steps = int(max_episode_steps or episode_step_limit(cubes))
+        edges = {n: a.extents[0] for n, a in self.scene.assets.items() if a.movable}
+        self.max_episode_steps = int(max_episode_steps or episode_step_limit(len(edges), self._dense_goal_cubes(edges)))
         self._body_names = {self.model.body(n).id: n for n in self.object_names}
         self._renderer = None
         self._elapsed = 0
@@ -159,6 +162,12 @@ class BlockTaskEnv(gym.Env):
         self._goal_cache: tuple[np.ndarray, object] | None = None
         self.action_space = self._make_action_space()
         self.observation_space = self._make_observation_space()
+
+    def _dense_goal_cubes(self, edges: dict[str, float]) -> int:
+        """How many cubes stand in a dense layout in the task's goal configuration (the scene is
+        left there; ``reset`` samples rho_0)."""
+        self._goal_module.goal_state(self.task)
+        return len(dense_cubes(self.scene.poses(), edges))
 
     # -- spaces --------------------------------------------------------------------
     def _make_action_space(self) -> spaces.Box:

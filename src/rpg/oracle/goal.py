@@ -25,6 +25,7 @@ import networkx as nx
 import numpy as np
 
 from rpg.domain import constants as C
+from rpg.domain.layouts import dense_cubes
 from rpg.domain.predicates import InOrder
 from rpg.domain.state import Pose
 from rpg.env.scripted import cube_yaw
@@ -44,10 +45,6 @@ ROBUSTNESS_SETTLE_STEPS = 500
 """Physics steps the planned goal configuration settles before G is checked again (a goal that
 holds only before contacts settle is fragile: a robot cannot reproduce it)."""
 
-DENSE_GAP = 0.015
-"""A goal layout is dense around a cube when a neighbour's face is closer than this (m): the
-fingers cannot go between them."""
-
 DENSE_YAW_TOL = 0.1
 """Yaw error (rad, modulo pi/2) a cube in a dense layout may have."""
 
@@ -66,7 +63,7 @@ class Target:
 
     ``exact``: the cube's full orientation matters (a semantic goal reads its faces);
     otherwise any orientation that is a symmetry of the cube will do (upright, yaw modulo
-    pi/2; in a ``dense`` layout, where a neighbour's face is within DENSE_GAP, the yaw too).
+    pi/2; in a ``dense`` layout, where a neighbour's face is within C.DENSE_GAP, the yaw too).
     ``supports``: the cubes its goal rests on.
     """
 
@@ -222,9 +219,7 @@ def plan_goal(scratch, goal_module, current: dict[str, Pose], movable: dict[str,
     patches = [n for n in goal if n not in movable]
     patch_shift = {p: np.subtract(current[p].pos, goal[p].pos)[:2] for p in patches}
     supports = _supports({n: goal[n] for n in movable}, movable)
-    dense = {n for n in movable for m in movable if m != n
-             and abs(goal[n].pos[2] - goal[m].pos[2]) < 0.5 * movable[n]
-             and math.dist(goal[n].pos[:2], goal[m].pos[:2]) < 0.5 * (movable[n] + movable[m]) + DENSE_GAP}
+    dense = dense_cubes(goal, movable)
 
     def shift_of(name: str, default: np.ndarray) -> np.ndarray:
         """The shift of the patch under ``name``'s goal (or under its bottom support)."""

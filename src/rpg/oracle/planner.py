@@ -179,10 +179,11 @@ PUSH_STEPS = 40
 """Most control steps of a push stroke."""
 
 PUSH_RATE_ON_CUBES = 0.3
-"""Largest translation of the stroke's action (ee_delta units: 0.3 is 3 mm per control step)
-when the pushed cube slides over cubes, not the table.  At full rate (1 cm) the Panda's
-pushed cube caught on the seams of the layer it slid over and dragged that layer along (a
-3x3 base's rows, by 9 mm); slower, 6 of 8 such failed pyramid episodes succeeded."""
+"""Largest translation of the stroke's action (ee_delta units, 0.05 m each: at most 15 mm
+ahead of the TCP) when the pushed cube slides over cubes, not the table.  Unclipped, the
+stroke's first steps asked for the whole 3-4 cm at once, and the Panda's pushed cube caught
+on the seams of the layer it slid over and dragged that layer along (a 3x3 base's rows, by
+9 mm)."""
 
 PUSH_HEIGHT = 0.015
 """TCP height (m) above a pushed cube's bottom: the tilted, closed fingertips (0.0097 m below
