@@ -215,14 +215,14 @@ def test_the_panda_builds_a_pyramid_of_touching_letter_cubes(seed):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("seed", [2, 12])
-def test_the_panda_builds_a_14_cube_pyramid_on_a_3x3_base(seed):
-    """pyramid_construction v1 with the Panda, two seeds that failed before two fixes: the
-    last cube of the second layer, pushed over the base at full rate, caught on its seams and
-    dragged its rows 9 mm (the stroke over cubes now asks for at most 15 mm a step), and knocked cubes
-    were picked from between their neighbours (they are now pushed back)."""
-    info, oracle, before = _solve("pyramid_construction/v1", "panda", seed=seed)
+@pytest.mark.parametrize("task, seed", [("pyramid_construction/v1", 17), ("pyramid_construction/v0", 13)])
+def test_the_panda_builds_a_14_cube_pyramid_on_a_3x3_base_within_the_budget(task, seed):
+    """Two pyramids of 14 touching cubes with the Panda that needed more than the 2180 steps
+    the budget gave before it counted pushes (2229-2275 of 2830 now): 13 of the cubes are
+    released beside their goal and pushed in."""
+    info, oracle, before = _solve(task, "panda", seed=seed)
     assert before and info["success"], (oracle.failure, info["diagnostics"]["unsatisfied"])
+    assert info["elapsed_steps"] > 2180
     assert sum(t.dense for t in oracle.plan.targets.values()) == 13  # the top cube has no neighbour
 
 

@@ -178,13 +178,6 @@ PUSH_LEAD = 0.002
 PUSH_STEPS = 40
 """Most control steps of a push stroke."""
 
-PUSH_RATE_ON_CUBES = 0.3
-"""Largest translation of the stroke's action (ee_delta units, 0.05 m each: at most 15 mm
-ahead of the TCP) when the pushed cube slides over cubes, not the table.  Unclipped, the
-stroke's first steps asked for the whole 3-4 cm at once, and the Panda's pushed cube caught
-on the seams of the layer it slid over and dragged that layer along (a 3x3 base's rows, by
-9 mm)."""
-
 PUSH_HEIGHT = 0.015
 """TCP height (m) above a pushed cube's bottom: the tilted, closed fingertips (0.0097 m below
 the TCP) clear its support by 5 mm (a pusher grazing the layer below caught its cubes), and the
@@ -800,15 +793,11 @@ class Oracle:
         # the stroke: aim PUSH_LEAD past the end (the cube's friction holds the hand back on its
         # compliant weld or arm) and stop once the TCP is within PUSH_TOL of the end along the push
         aim = Waypoint((end[0] - PUSH_LEAD * out[0], end[1] - PUSH_LEAD * out[1], z), yaw, GRIPPER_CLOSED, quat=q)
-        on_cubes = dst[2] - half - C.TABLE_TOP_Z > 0.5 * half  # it slides over a layer of cubes
         for _ in range(PUSH_STEPS):
             tcp = self.robot.tcp_pose()
             if float(np.subtract(tcp.pos[:2], end) @ out) < PUSH_TOL:
                 break
-            a = delta_action(tcp, aim)
-            if on_cubes:
-                a[:3] *= min(1.0, PUSH_RATE_ON_CUBES / max(float(np.abs(a[:3]).max()), 1e-9))
-            yield a
+            yield delta_action(tcp, aim)
         # back and up with the fingers closed: opened low beside a layout, a finger reaching
         # ~5 cm along the row knocked the cubes placed there (the Panda, by up to 12 mm); the
         # next primitive opens them at travel height
