@@ -28,14 +28,19 @@ class OracleEpisode:
 
 
 def oracle_episode(env, oracle, seed: int) -> OracleEpisode:
-    """Run ``oracle`` (an :class:`rpg.oracle.Oracle` of ``env``) for one episode from ``seed``."""
+    """Run ``oracle`` (an :class:`rpg.oracle.Oracle` of ``env``) for one episode from ``seed``.
+
+    The episode ends on success, at the step limit, or as soon as the oracle reports that it
+    gave up (``oracle.failure``): from then on it only holds still with the hand open, and a
+    27-cube task would otherwise spend thousands of steps there (the ``solvable`` gate runs
+    within the task worker's time limit)."""
     obs, info = env.reset(seed=int(seed))
     oracle.reset(obs)
     done, steps, truncated = False, 0, False
     while not done:
         obs, _, terminated, truncated, info = env.step(oracle.act(obs))
         steps += 1
-        done = terminated or truncated
+        done = terminated or truncated or oracle.failure is not None
     if info["success"]:
         return OracleEpisode(int(seed), True, steps, None)
     notes = list(oracle.plan.notes) if oracle.plan else []
