@@ -344,8 +344,9 @@ class Oracle:
 
     def _done(self, poses) -> set[str]:
         """Cubes at their targets, except a dense layout's cube that stands there before the
-        cubes ahead of it in the placement order (by chance, from rho_0): the sweep has not
-        reached it, and it is moved when in the way and placed again in its turn."""
+        cubes ahead of it in the placement order (by chance, from rho_0, or because one ahead
+        was knocked): the sweep has not reached it.  It is a subset of :meth:`_at_targets`;
+        such a cube is not moved out of another's way unless no grasp exists without that."""
         done, gap = set(), False
         for n in self.plan.order:
             at = self._at_target(n, poses)
@@ -372,9 +373,9 @@ class Oracle:
     def _blocking(self, target: Target, poses) -> list[str]:
         """Cubes standing in ``target``'s place (not its supports, not the cube itself, not a cube
         at its own target: goals do not overlap)."""
-        out, done = [], self._done(poses)
+        out = []
         for n in sorted(self.sizes):
-            if n == target.name or n in target.supports or n in done or self._at_target(n, poses):
+            if n == target.name or n in target.supports or self._at_target(n, poses):
                 continue
             p = poses[n].pos
             reach = 0.5 * (self.sizes[n] + target.size) + 0.004
@@ -563,7 +564,7 @@ class Oracle:
         Cubes at their own targets stay where they are unless no grasp exists without moving
         them too."""
         done = self._done(poses)
-        for keep in (done | self._at_targets(poses), done):  # cubes at their targets stay, if they can
+        for keep in (self._at_targets(poses), done):  # cubes at their targets stay, if they can
             settled = {n: p for n, p in poses.items() if n == name or n not in self.sizes or n in keep}
             try:
                 grasp = self._grasp(name, poses[name].quat, target, poses, settled)
@@ -711,7 +712,7 @@ class Oracle:
             if not blockers:
                 self.gap_pushes[name] = self.gap_pushes.get(name, 0) + 1
                 return self._push(name, np.asarray(moved.pos), -d, shift, self._travel_z(name, here))
-            if not any(b in done or self._at_target(b, poses) for b in blockers):
+            if not any(self._at_target(b, poses) for b in blockers):
                 return self._move_aside(blockers[0], poses, avoid=self._work_points(moved, -d, shift))
         return None
 

@@ -146,7 +146,8 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
     regions = {p.region for p in goal if isinstance(p, P.InRegion)}
     patches = {a.color or "gray" for a in schema.assets if a.kind == "goal_patch"}
     record = []
-    for m in mentions(text, colors, canon):
+    named = mentions(text, colors, canon)
+    for m in named:
         if m.kind == "patch":
             if m.color not in patches:
                 raise UnaccountedMention(f"the {m.words} has no part in the task read")
@@ -175,9 +176,7 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                                          "with none (say which cube starts on which)")
             record.append({"mention": m.words, "kind": "undo", "consumed_by": "initial_state.structures"})
         elif m.kind == "superlative":
-            counted = [r for r in record if r["kind"] == "count"] or [
-                n for n in mentions(text, colors, canon) if n.kind == "count"]
-            if not counted:
+            if not any(n.kind == "count" for n in named):
                 raise UnaccountedMention(f"'{m.words}' asks for as many cubes as there are and no count "
                                          "is given (e.g. 'a tower of 5 cubes')")
             record.append({"mention": m.words, "kind": "superlative", "consumed_by": "the count named"})
