@@ -299,17 +299,35 @@ def test_corpus_has_at_least_thirty_hostile_artifacts():
     assert len(TEXT_GATE) + len(RUNTIME) + 2 + len(SANDBOX) + 4 >= 60
 
 
-def test_worker_results_are_schema_checked():
-    from rpg.validate.results import checked_validate_result
-    from rpg.validate.sandbox import WorkerError
+def test_child_answers_are_schema_checked_data(monkeypatch):
+    """What the sandboxed child answers is data checked against a schema: extra keys, wrong
+    types, oversized lists and poses that are not 7 finite numbers are refused."""
+    from rpg.validate import data as data_mod
 
-    ok = {"gates": [{"gate": "smoke", "status": "pass", "duration_s": 0.01, "details": {}}]}
-    assert checked_validate_result(ok)["gates"][0]["gate"] == "smoke"
-    for bad in ({"gates": [{"gate": "smoke", "status": "pass", "duration_s": -1.0}]},
-                {"gates": [{"gate": "rm -rf", "status": "pass", "duration_s": 0.0}]},
-                {"gates": [], "extra": 1}, "not a dict", {"gates": [{"gate": "smoke", "status": "maybe", "duration_s": 0}]}):
-        with pytest.raises(WorkerError, match="malformed"):
-            checked_validate_result(bad)
+    good = {"class": "T", "assets": [{"kind": "colored_cube", "name": "red", "color": "red"},
+                                     {"kind": "colored_cube", "name": "blue", "color": "blue"}],
+            "goal": {"predicate": "stack", "objects": ["red", "blue"]},
+            "goal_poses": {"red": [0.55, 0, 0.97, 1, 0, 0, 0], "blue": [0.55, 0, 1.0105, 1, 0, 0, 0]},
+            "rho0": {}, "errors": {}}
+    answers = []
+    monkeypatch.setattr("rpg.validate.sandbox.run_child", lambda req, timeout=None: {"ok": True, "result": answers[-1]})
+    answers.append(good)
+    assert data_mod.fetch_task_data({"code.py": "", "goal_state_code.py": ""}).goal.name == "stack"
+    for bad, why in [({**good, "verdict": "pass"}, "malformed"), ({**good, "assets": "x"}, "malformed"),
+                     ({**good, "goal": {"predicate": "always_true"}}, "unknown predicate"),
+                     ({**good, "goal": {"predicate": "stack", "objects": ["red", "ghost"]}}, "not an asset"),
+                     ({**good, "assets": [{"kind": "colored_cube", "name": "red", "color": "red", "size": 5.0}]}, "edge"),
+                     ({**good, "assets": [{"kind": "colored_cube", "name": "../x", "color": "red"}]}, "invalid object name"),
+                     ({**good, "assets": [{"kind": "colored_cube", "name": f"c{i}", "color": "red"} for i in range(65)]},
+                      "malformed")]:
+        answers.append(bad)
+        with pytest.raises(data_mod.DataError, match=why):
+            data_mod.fetch_task_data({"code.py": "", "goal_state_code.py": ""})
+    for poses in ({"red": [0.5, 0, 1, 1, 0, 0, 0]}, {"red": [float("nan")] * 7, "blue": [0.5, 0, 1, 1, 0, 0, 0]},
+                  {"red": [0.5, 0, 1, 0, 0, 0, 0], "blue": [0.5, 0, 1, 1, 0, 0, 0]}):
+        answers.append({**good, "goal_poses": poses})
+        got = data_mod.fetch_task_data({"code.py": "", "goal_state_code.py": ""})
+        assert got.goal_poses is None and got.goal_error is not None
 
 
 def test_sandbox_mounts_tmp_before_the_interpreter_and_packages(monkeypatch, tmp_path):

@@ -116,7 +116,6 @@ def compile_cmd(
     author: Annotated[str | None, typer.Option("--author", help=AUTHOR_HELP)] = None,
 ) -> None:
     """Compile INSTRUCTION into a validated task artifact OUTPUT/<slug>/."""
-    _prestart_worker()
     from rpg.compiler import compile_instruction
 
     model = model or os.environ.get("RPG_MODEL") or None
@@ -165,7 +164,6 @@ def steer_cmd(
     author: Annotated[str | None, typer.Option("--author", help=AUTHOR_HELP)] = None,
 ) -> None:
     """Classify EDIT, pick the version it builds on, recompile and record a new version."""
-    _prestart_worker()
     from rpg.steer import steer
 
     model = model or os.environ.get("RPG_MODEL") or None
@@ -494,7 +492,6 @@ def validate_cmd(
     as_json: Annotated[bool, typer.Option("--json")] = False,
 ) -> None:
     """Re-run every gate on an artifact (e.g. after a hand edit)."""
-    _prestart_worker()
     from rpg.compiler import revalidate
 
     with _reported_errors():
@@ -507,32 +504,31 @@ def validate_cmd(
     raise typer.Exit(EXIT_OK if result.valid else EXIT_INVALID)
 
 
-def _prestart_worker() -> None:
-    from rpg.validate.sandbox import prestart
-
-    prestart()
-
-
-def _worker(req: dict) -> dict:
+def _artifact_task(directory: Path):
+    """The task of an artifact directory, rebuilt from its code's data (the text gate, then
+    the sandbox; nothing of the task runs here)."""
     from rpg.artifact import load_artifact, task_sources
-    from rpg.validate.sandbox import run_worker
-    from rpg.validate.static import StaticViolation, check_source
+    from rpg.domain.task import Task
+    from rpg.env.loading import task_data
 
-    d = Path(req.pop("dir"))
     with _reported_errors():
-        load_artifact(d)
-        sources = task_sources(d)
-        for fname, text in sources.items():
-            try:
-                check_source(text, fname)
-            except StaticViolation as exc:
-                _fail(f"task code rejected: {exc}", exc.exit_code)
-        doc = run_worker({**req, "sources": sources})
-    if not doc["ok"]:
-        if "SceneError" in doc["error"] or "KeyError" in doc["error"]:
-            _fail(doc["error"].split(": ", 1)[-1])
-        _fail(f"task code failed: {doc['error']}", EXIT_INVALID)
-    return doc["result"]
+        load_artifact(directory)
+        return Task(task_data(task_sources(directory), where=str(directory)))
+
+
+def _inspect_block(task, *, state: str = "initial", seed: int = 0, settle: int = 0, poses: dict | None = None) -> dict:
+    from rpg.validate.verdicts import result_block
+
+    with _reported_errors():
+        if poses is not None:
+            task.scene.load_json(json.dumps({"objects": poses}))
+            task.scene.reset_time()
+        elif state == "goal":
+            task.set_goal_state()
+        else:
+            task.reset(seed)
+        task.step(settle)
+        return result_block(task)
 
 
 def _print_block(block: dict, as_json: bool) -> None:
@@ -559,7 +555,7 @@ def inspect_cmd(
     """Print objects, success and predicates of the initial or goal state."""
     if state not in ("initial", "goal"):
         _fail("--state must be 'initial' or 'goal'")
-    _print_block(_worker({"op": "inspect", "dir": str(directory), "state": state, "seed": seed, "settle": settle}), as_json)
+    _print_block(_inspect_block(_artifact_task(directory), state=state, seed=seed, settle=settle), as_json)
 
 
 @app.command("check")
@@ -579,7 +575,7 @@ def check_cmd(
     objects = doc.get("objects", doc) if isinstance(doc, dict) else None
     if not isinstance(objects, dict):
         _fail(f"{poses} must map object names to {{'position': [x, y, z], 'quaternion': [w, x, y, z]}}")
-    _print_block(_worker({"op": "check", "dir": str(directory), "poses": objects, "settle": settle}), as_json)
+    _print_block(_inspect_block(_artifact_task(directory), poses=objects, settle=settle), as_json)
 
 
 @app.command("render")
@@ -593,8 +589,6 @@ def render_cmd(
                                                                        "(default: the task directory).")] = None,
 ) -> None:
     """Re-render initial.png and goal.png (or, with --embodiment, snapshots with the robot)."""
-    from rpg.artifact import save_snapshots
-
     if embodiment is not None:
         from rpg.env.loading import resolve_target
         from rpg.env.rollout import robot_snapshots
@@ -609,8 +603,9 @@ def render_cmd(
         return
     if output is not None:
         _fail("-o is for robot snapshots; give --embodiment too")
-    res = _worker({"op": "render", "dir": str(directory), "seed": seed})
-    for k, v in save_snapshots(directory, res.get("snapshots") or {}).items():
+    from rpg.validate.verdicts import write_snapshots
+
+    for k, v in write_snapshots(_artifact_task(directory), seed, directory).items():
         out.print(f"{k}: {v or 'skipped (no headless OpenGL)'}")
 
 

@@ -27,7 +27,6 @@ from rpg.artifact import (
     gates_passed,
     load_artifact,  # noqa: F401
     rehash,
-    save_snapshots,
     staging_dir,
     task_document,  # noqa: F401
     task_sources,
@@ -41,8 +40,6 @@ from rpg.schema.builtin import parse
 from rpg.schema.feasibility import check_feasibility
 from rpg.schema.model import TaskSchema
 from rpg.validate.gates import check_gate_names, check_optional_gates
-from rpg.validate.results import checked_validate_result
-from rpg.validate.sandbox import run_worker
 from rpg.validate.static import StaticViolation, check_source
 
 MAX_CYCLES = 5
@@ -99,22 +96,10 @@ def validate_files(directory: Path, seed: int = 0, disabled: frozenset[str] = fr
             results.append({"gate": "text", "status": "fail", "kind": exc.kind, "message": str(exc),
                             "duration_s": time.perf_counter() - t0, "details": {"line": exc.line}})
             return results
-    from rpg.validate.sandbox import WorkerError
+    from rpg.validate.verdicts import run_gates
 
-    try:
-        doc = run_worker({"op": "validate", "sources": sources, "seed": seed, "disabled": sorted(disabled),
-                          "enabled": sorted(enabled), "name": name,
-                          "snapshots": snapshots, "tolerances": tolerances or {}})
-        if not doc["ok"]:
-            return results + [{"gate": "compile", "status": "fail", "kind": doc.get("kind", "runtime"),
-                               "message": str(doc.get("error"))[:2000], "duration_s": 0.0,
-                               "details": {"traceback": str(doc.get("traceback", ""))[:4000]}}]
-        result = checked_validate_result(doc.get("result"))
-    except WorkerError as exc:
-        return results + [{"gate": "compile", "status": "fail", "kind": "runtime", "message": str(exc), "duration_s": 0.0, "details": {}}]
-    if snapshots:
-        save_snapshots(directory, result.get("snapshots") or {})
-    return results + result["gates"]
+    return results + run_gates(sources, seed, disabled, enabled, tolerances,
+                               snapshots_to=Path(directory) if snapshots else None, name=name)
 
 
 def _isolation_note() -> list[str]:

@@ -46,7 +46,7 @@ from rpg.domain.predicates import (
 )
 from rpg.domain.sampling import sample_scattered
 from rpg.domain.state import Pose, quat_mul, yaw_quat
-from rpg.domain.task import BlockTask
+from rpg.domain.task_code import BlockTask
 
 __all__ = [
     "And", "Behind", "Between", "BlockTask", "ColoredCube", "Equation", "FarFrom", "GoalPatch", "Grid",

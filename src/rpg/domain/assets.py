@@ -8,12 +8,13 @@ affecting the physics.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from typing import TYPE_CHECKING, ClassVar
 
 from rpg.domain import constants as C
 from rpg.domain.glyphs import FACES, canonical_label, cube_texture, label_type
 from rpg.domain.palette import DEFAULT_SEMANTIC_COLOR, PALETTE, canonical_color, rgba
+from rpg.errors import BadInput
 
 if TYPE_CHECKING:  # mujoco is imported where a scene is built, not when a schema is read
     import mujoco
@@ -63,6 +64,11 @@ class Asset:
     def describe(self) -> str:
         """Short human description, e.g. ``"red cube"``."""
         raise NotImplementedError
+
+    def to_dict(self) -> dict:
+        """Plain-data form: ``{"kind": kind, <field>: value, ...}`` (:func:`asset_from_dict` rebuilds it)."""
+        return {"kind": self.kind, **{f.name: (dict(v) if isinstance(v := getattr(self, f.name), dict) else v)
+                                      for f in fields(self)}}
 
     def attach(self, spec: mujoco.MjSpec) -> mujoco.MjsBody:
         """Add the asset's body to ``spec`` (template method: body, joint, geoms)."""
@@ -243,3 +249,30 @@ ASSET_KINDS: dict[str, type[Asset]] = {
     cls.kind: cls for cls in (ColoredCube, SemanticCube, GoalPatch)
 }
 """Asset kind name -> class."""
+
+
+def asset_from_dict(doc: dict) -> Asset:
+    """Rebuild an asset from its :meth:`Asset.to_dict` form with the domain's own classes.
+
+    Raises:
+        ValueError: not a mapping, an unknown kind or field, or a field the class refuses
+            (a name that is not a slug, an unknown colour or label, a size outside
+            :data:`~rpg.domain.constants.CUBE_EDGE_RANGE`).
+    """
+    if not isinstance(doc, dict):
+        raise ValueError("an asset must be a mapping with a 'kind' key")
+    cls = ASSET_KINDS.get(doc.get("kind"))
+    if cls is None:
+        raise ValueError(f"unknown asset kind {doc.get('kind')!r}; known: {', '.join(sorted(ASSET_KINDS))}")
+    names = {f.name for f in fields(cls)}
+    unknown = sorted(set(doc) - names - {"kind"})
+    if unknown:
+        raise ValueError(f"asset kind {cls.kind!r} has no field {unknown[0]!r}")
+    try:
+        asset = cls(**{k: v for k, v in doc.items() if k != "kind"})
+    except (TypeError, BadInput) as exc:
+        raise ValueError(f"bad {cls.kind} {doc.get('name')!r}: {exc}") from None
+    size = getattr(asset, "size", None)
+    if size is not None and not (isinstance(size, int | float) and C.CUBE_EDGE_RANGE[0] <= size <= C.CUBE_EDGE_RANGE[1]):
+        raise ValueError(f"cube {asset.name!r} has edge {size!r} m; edges are within {C.CUBE_EDGE_RANGE} m")
+    return asset

@@ -51,6 +51,10 @@ BOUNDS_MARGIN: float = 0.005
 CUBE_EDGE: float = 0.04
 """Default cube edge length, m (4 cm)."""
 
+CUBE_EDGE_RANGE: tuple[float, float] = (0.02, 0.08)
+"""Cube edges (m) the trusted side accepts from task code's data (project: half to twice
+:data:`CUBE_EDGE`; every builtin cube is :data:`CUBE_EDGE`)."""
+
 CUBE_MASS: float = 0.05
 """Mass of one cube, kg."""
 
@@ -155,6 +159,11 @@ MAX_SAMPLING_TRIES: int = 2000
 MAX_TRIVIAL_REDRAWS: int = 50
 """Times a rho_0 sample in which G already holds is drawn again at reset (project; issue
 "rpg eval": a policy that does nothing must score 0)."""
+
+INITIAL_DRAWS: int = 3
+"""Samples of rho_0 the sandbox returns per seed at first; the rest of the
+MAX_TRIVIAL_REDRAWS + 1 are asked for only when all of these satisfy G (project: a cost
+bound, it does not change which sample a seed gets)."""
 
 MAX_REGION_REDRAWS: int = 200
 """Whole layouts drawn at most to keep cubes outside their goal regions (``avoid``)."""

@@ -14,7 +14,6 @@ from __future__ import annotations
 from functools import lru_cache
 
 import numpy as np
-from PIL import Image, ImageDraw, ImageFont
 
 from rpg.domain.constants import GLYPH_TEXTURE_PX
 from rpg.errors import BadInput
@@ -85,6 +84,8 @@ def face_image(label: str, background: tuple[int, int, int], px: int = GLYPH_TEX
     The glyph is black, centred, drawn with Pillow's bundled FreeType font (no system font).
     A bar under the glyph marks its baseline so that 6/9 and M/W stay distinguishable.
     """
+    from PIL import Image, ImageDraw, ImageFont  # only where a texture is drawn: the sandboxed child draws none
+
     img = Image.new("RGB", (px, px), background)
     draw = ImageDraw.Draw(img)
     font = ImageFont.load_default(size=int(px * 0.62))

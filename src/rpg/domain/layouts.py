@@ -160,3 +160,24 @@ def dense_cubes(poses: dict[str, Pose], edges: dict[str, float], gap: float = C.
     return {n for n in names for m in names if m != n
             and abs(poses[n].pos[2] - poses[m].pos[2]) < 0.5 * edges[n]
             and math.dist(poses[n].pos[:2], poses[m].pos[:2]) < 0.5 * (edges[n] + edges[m]) + gap}
+
+
+def out_of_bounds(poses) -> list[dict]:
+    """Objects whose centre lies outside the workspace (x, y within
+    :data:`~rpg.domain.constants.BOUNDS_MARGIN` of it) or below the table top: the bounds
+    gate's rule, applied to rho_0's samples and the settled goal configuration.
+
+    Args:
+        poses: name -> :class:`~rpg.domain.state.Pose`.
+
+    Returns:
+        ``[{"object": name, "position": [x, y, z]}]`` (m, rounded to 0.1 mm), sorted by name.
+    """
+    out = []
+    m = C.BOUNDS_MARGIN
+    for n in sorted(poses):
+        x, y, z = poses[n].pos
+        if not (C.WORKSPACE_X[0] - m <= x <= C.WORKSPACE_X[1] + m and C.WORKSPACE_Y[0] - m <= y <= C.WORKSPACE_Y[1] + m
+                and z >= C.TABLE_TOP_Z - m):
+            out.append({"object": n, "position": [round(float(v), 4) for v in poses[n].pos]})
+    return out

@@ -203,6 +203,19 @@ class Snapshotter:
         self.renderer.update_scene(self.scene.data, camera=self.camera)
         return self.renderer.render()
 
+    def png(self) -> bytes | None:
+        """The scene's current state as PNG bytes; None without OpenGL."""
+        import io
+
+        from PIL import Image
+
+        img = self.image()
+        if img is None:
+            return None
+        buf = io.BytesIO()
+        Image.fromarray(img).save(buf, format="PNG", compress_level=1)
+        return buf.getvalue()
+
     def save(self, path: str | Path) -> Path | None:
         """Write a PNG of the scene's current state; None without OpenGL."""
         from PIL import Image

@@ -1,22 +1,20 @@
-"""The fixed task interface that every generated ``code.py`` extends.
+"""A task as the trusted side runs it: rebuilt from data, with rpg's own classes.
+
+Task code (``code.py``, :mod:`rpg.domain.task_code`) runs only in the sandbox and answers
+with data (:mod:`rpg.validate.data` checks it): the assets, samples of rho_0 for requested
+seeds, the goal as the predicate registry's dict and the goal configuration's poses.
+:class:`TaskData` holds that data rebuilt with the domain's own classes; :class:`Task`
+puts it in a MuJoCo scene (with a robot, for an environment) and evaluates G with rpg's
+own predicates.  Nothing here calls an object that task code made.
 
 Loading is separate from initialising an episode (as in ManiSkill3): the constructor
-builds and compiles the scene once; :meth:`BlockTask.reset` samples an initial state
-from rho_0 with a seeded ``numpy.random.Generator`` and sets it.
-
-A task subclass documents itself in three parts (Task Description, Randomizations,
-Success Conditions) and implements three methods:
-
-* ``assets()`` -> list of :mod:`rpg.domain.assets` objects,
-* ``initial_state(rng)`` -> name -> :class:`~rpg.domain.state.Pose`,
-* ``goal()`` -> a :class:`~rpg.domain.predicates.Predicate` (the success predicate G).
+builds and compiles the scene once; :meth:`Task.reset` sets rho_0's sample for a seed.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
-
-import numpy as np
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
 
 from rpg.domain import constants as C
 from rpg.domain.assets import Asset
@@ -25,67 +23,85 @@ from rpg.domain.scene import Scene
 from rpg.domain.state import Pose, WorldState
 from rpg.domain.visibility import visible_faces
 
+DrawSource = Callable[[int, int], list[dict[str, Pose]]]
+"""``(seed, n) -> the first n samples`` that task code's ``initial_state(rng)`` draws from
+``numpy.random.default_rng(seed)``, in order, as checked data."""
 
-class BlockTask:
-    """Base class of block-domain tasks: T = (assets, rho_0, G, instruction, paraphrases).
 
-    Class attributes:
-        NAME: task name (snake_case).
-        INSTRUCTION: the canonical instruction.
-        PARAPHRASES: alternative phrasings for robustness testing.
+@dataclass
+class TaskData:
+    """What task code returned, checked and rebuilt with the domain's own classes.
+
+    Attributes:
+        assets: the task's assets.
+        goal: the success predicate G (built by :func:`rpg.domain.predicates.from_dict`).
+        goal_poses: the goal configuration (every object's pose, by name); None when
+            ``goal_state`` failed (``goal_error`` says why).
+        draws: the source of rho_0's samples (see :data:`DrawSource`).
+        digest: SHA-256 of the code's text (what the samples are cached under).
+        class_name: the task class's name (for messages).
+        goal_error: why there is no goal configuration (an :class:`rpg.errors.RpgError`).
     """
 
-    NAME: str = "task"
-    INSTRUCTION: str = ""
-    PARAPHRASES: tuple[str, ...] = ()
+    assets: tuple[Asset, ...]
+    goal: Predicate
+    goal_poses: dict[str, Pose] | None
+    draws: DrawSource
+    digest: str = ""
+    class_name: str = "task"
+    goal_error: Exception | None = None
 
-    def __init__(self, robot=None) -> None:
-        """Build and compile the scene once.
 
-        Args:
-            robot: an embodiment (:mod:`rpg.env.embodiments`) to add to the scene; None for
-                the block-only scene that validation uses.
-        """
-        self.scene = Scene(self.assets(), robot=robot)
-        self._goal = self.goal()
+class Task:
+    """A task's scene, rho_0 and G, from :class:`TaskData`.
 
-    # -- to implement ----------------------------------------------------------
-    def assets(self) -> list[Asset]:
-        """The task's assets."""
-        raise NotImplementedError
+    Args:
+        data: the checked data of the task's code.
+        robot: an embodiment (:mod:`rpg.env.embodiments`) to add to the scene; None for
+            the block-only scene that validation uses.
+    """
 
-    def initial_state(self, rng: np.random.Generator) -> dict[str, Pose]:
-        """Sample one initial state from rho_0 (all objects) with ``rng``."""
-        raise NotImplementedError
-
-    def goal(self) -> Predicate:
-        """The success predicate G as a predicate tree."""
-        raise NotImplementedError
+    def __init__(self, data: TaskData, robot=None) -> None:
+        self.data = data
+        self.scene = Scene(data.assets, robot=robot)
+        self._goal = data.goal
 
     # -- episode ---------------------------------------------------------------
     def reset(self, seed: int = 0) -> dict[str, Pose]:
-        """Start an episode: sample rho_0 with ``numpy.random.default_rng(seed)`` and set it.
+        """Start an episode: set rho_0's sample for ``seed``.
 
         rho_0 is conditioned on G being false: a sample in which the goal already holds is
         drawn again from the same generator, up to :data:`~rpg.domain.constants.MAX_TRIVIAL_REDRAWS`
         times (so a policy that does nothing scores 0; the non-trivial gate rejects a task
-        whose samples keep satisfying G).
+        whose samples keep satisfying G).  When every draw satisfies G, the last one is set.
 
         Returns:
             The sampled poses, by name.
         """
-        rng = np.random.default_rng(seed)
-        for _ in range(C.MAX_TRIVIAL_REDRAWS + 1):
-            poses = self.initial_state(rng)
-            self.set_state(poses)
-            if not self.success():
-                break
+        poses: dict[str, Pose] = {}
+        seen = 0
+        for n in (C.INITIAL_DRAWS, C.MAX_TRIVIAL_REDRAWS + 1):
+            for poses in self.data.draws(seed, n)[seen:]:
+                self.set_state(poses)
+                if not self.success():
+                    return poses
+            seen = n
         return poses
 
     def set_state(self, poses: Mapping[str, Pose]) -> None:
         """Set object poses, zero velocities and time."""
         self.scene.set_poses(poses)
         self.scene.reset_time()
+
+    def set_goal_state(self) -> None:
+        """Put every object in the goal configuration (``goal_state_code.py``'s poses).
+
+        Raises:
+            RpgError: the task's ``goal_state`` failed (``TaskData.goal_error``).
+        """
+        if self.data.goal_poses is None:
+            raise self.data.goal_error or ValueError("the task has no goal configuration")
+        self.set_state(self.data.goal_poses)
 
     def step(self, steps: int = 1) -> None:
         """Advance the physics under zero action."""
@@ -110,6 +126,10 @@ class BlockTask:
     @property
     def goal_predicate(self) -> Predicate:
         return self._goal
+
+    def scratch(self) -> Task:
+        """A robot-free copy of this task (for evaluating G on candidate configurations)."""
+        return Task(self.data)
 
     @staticmethod
     def table_height() -> float:

@@ -73,11 +73,12 @@ import numpy as np
 from gymnasium import spaces
 
 from rpg.domain import constants as C
-from rpg.domain.layouts import dense_cubes
+from rpg.domain.layouts import dense_cubes, out_of_bounds
 from rpg.domain.predicates import InOrder
 from rpg.env.embodiments import make_embodiment
 from rpg.env.embodiments.base import PREFIX, EmbodimentError, quat_to_axis_angle
-from rpg.env.loading import TaskCode, TaskSource, load_env_task
+from rpg.env.loading import PreparedTask, TaskSource, load_env_task
+from rpg.errors import TaskInvalid
 
 CAMERAS = ("agentview", "wrist", "default")
 """Cameras an environment can observe."""
@@ -106,7 +107,8 @@ class BlockTaskEnv(gym.Env):
 
     Args:
         task: a task directory, family directory (its head) or ``FAMILY@vN``, or a
-            :class:`rpg.env.loading.TaskCode`; loaded through the checks of :mod:`rpg.env.loading`.
+            :class:`rpg.env.loading.PreparedTask`; loaded through the checks of
+            :mod:`rpg.env.loading` (task code runs only in the sandbox; G is rpg's own).
         embodiment: ``"panda"`` or ``"floating_gripper"``.
         control_mode: ``"ee_delta"``, ``"ee_abs"`` or ``"joint_pos"`` (Panda only).
         cameras: camera observations to render (``()`` for state only).
@@ -125,7 +127,7 @@ class BlockTaskEnv(gym.Env):
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": int(C.CONTROL_HZ)}
 
-    def __init__(self, task: str | Path | TaskCode, embodiment: str = "panda", control_mode: str = "ee_delta",
+    def __init__(self, task: str | Path | PreparedTask, embodiment: str = "panda", control_mode: str = "ee_delta",
                  cameras: Sequence[str] = ("agentview", "wrist"), image_size: tuple[int, int] = C.ENV_IMAGE_SIZE,
                  instruction: str = "canonical", privileged: bool = False, render_mode: str | None = None,
                  terminate_on_success: bool = True, max_episode_steps: int | None = None):
@@ -141,7 +143,7 @@ class BlockTaskEnv(gym.Env):
         height, width = (int(v) for v in image_size)
         if not (16 <= height <= 2048 and 16 <= width <= 2048):
             raise EmbodimentError(f"image_size must be (height, width) between 16 and 2048 pixels, not {image_size}")
-        self.task, self.source, self._goal_module = load_env_task(task, robot=self.robot)
+        self.task, self.source = load_env_task(task, robot=self.robot)
         self.scene = self.task.scene
         self.model, self.data = self.scene.model, self.scene.data
         self.control_mode = control_mode
@@ -153,7 +155,8 @@ class BlockTaskEnv(gym.Env):
         self.terminate_on_success = bool(terminate_on_success)
         self.object_names = self.scene.names
         edges = {n: a.extents[0] for n, a in self.scene.assets.items() if a.movable}
-        self.max_episode_steps = int(max_episode_steps or episode_step_limit(len(edges), self._dense_goal_cubes(edges)))
+        self.max_episode_steps = int(max_episode_steps or episode_step_limit(
+            len(edges), len(dense_cubes(self.task.data.goal_poses, edges))))
         self._body_names = {self.model.body(n).id: n for n in self.object_names}
         self._renderer = None
         self._elapsed = 0
@@ -162,12 +165,6 @@ class BlockTaskEnv(gym.Env):
         self._goal_cache: tuple[np.ndarray, object] | None = None
         self.action_space = self._make_action_space()
         self.observation_space = self._make_observation_space()
-
-    def _dense_goal_cubes(self, edges: dict[str, float]) -> int:
-        """How many cubes stand in a dense layout in the task's goal configuration (the scene is
-        left there; ``reset`` samples rho_0)."""
-        self._goal_module.goal_state(self.task)
-        return len(dense_cubes(self.scene.poses(), edges))
 
     # -- spaces --------------------------------------------------------------------
     def _make_action_space(self) -> spaces.Box:
@@ -204,7 +201,8 @@ class BlockTaskEnv(gym.Env):
             seed = int(self.np_random.integers(0, 2**31 - 1))
         self._seed = int(seed)
         mujoco.mj_resetData(self.model, self.data)
-        self.task.reset(self._seed)
+        poses = self.task.reset(self._seed)
+        self._check_sample(poses)
         self.robot.home()
         self.scene.forward()
         mujoco.mj_step(self.model, self.data, nstep=C.RESET_SETTLE_STEPS)
@@ -234,10 +232,26 @@ class BlockTaskEnv(gym.Env):
         truncated = self._elapsed >= self.max_episode_steps and not terminated
         return self._observation(), float(info["success"]), terminated, truncated, info
 
+    def _check_sample(self, poses) -> None:
+        """rho_0's sample for this seed, as the validation gates require of it: every object
+        in the workspace, and G false (a task solved at reset would score a policy that does
+        nothing).
+
+        Raises:
+            TaskInvalid: the sample breaks either rule.
+        """
+        outside = out_of_bounds(poses)
+        if outside:
+            raise TaskInvalid(f"{self.source.name}: rho_0's sample for seed {self._seed} puts {outside[0]['object']} "
+                              f"outside the workspace at {outside[0]['position']}")
+        if self.task.success():
+            raise TaskInvalid(f"{self.source.name}: G holds in every rho_0 sample drawn for seed {self._seed} "
+                              f"({C.MAX_TRIVIAL_REDRAWS + 1} draws); an episode that starts solved is not scored")
+
     def set_goal_state(self) -> None:
         """Put the objects in the task's goal configuration (``goal_state_code.py``), robot at
         home, velocities zero; no physics step (for snapshots and tests, not for policies)."""
-        self._goal_module.goal_state(self.task)
+        self.task.set_goal_state()
         self.robot.home()
         self.scene.forward()
 

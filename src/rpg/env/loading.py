@@ -1,30 +1,29 @@
-"""Loading a compiled task into an environment, through the checks ``rpg validate`` makes.
+"""Loading a compiled task into an environment: task code runs only in the sandbox.
 
-An environment runs task code (``assets()``, ``initial_state(rng)``, ``goal()``), so it
-loads an artifact only after:
+An environment never imports or calls task code.  It loads an artifact after:
 
 1. its files are read once, without following links (:func:`rpg.artifact.rehash`);
 2. the content hash recomputed from them equals the one ``task.yaml`` records (a hand edit
    since compilation is refused: re-run ``rpg validate`` or recompile);
 3. ``task.yaml`` records that every validation gate passed (and every optional gate that ran);
 4. the text gate accepts that very text (:func:`rpg.validate.static.check_source`);
-5. it is executed restricted (RestrictedPython guards, :mod:`rpg.validate.restricted`),
-   and the task class and its goal and assets are checked as the validation worker checks
-   them (:func:`rpg.validate.worker.load_task`).
+5. the sandbox runs it and returns data (:func:`rpg.validate.data.fetch_task_data`: assets,
+   the goal as the predicate registry's dict, the goal configuration, rho_0's samples per
+   seed, fetched and cached as episodes ask for them), which rpg rebuilds with its own
+   classes into a :class:`rpg.domain.task.Task`.  G is always rpg's own predicates.
 
-The OS layers of the sandbox (namespaces, seccomp, resource limits) belong to the
-short-lived validation worker; an environment lives in the caller's process and does not
-have them.  See the README, "Running untrusted task code".
+Steps 1-3 say the artifact is the one that was validated; step 5 makes that matter less:
+whatever the code does, it does in the sandbox, and what comes back is checked data.  See
+the README, "Running untrusted task code".
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from rpg.artifact import FILES_CHANGED, ArtifactError, rehash
-from rpg.domain.task import BlockTask
+from rpg.domain.task import Task, TaskData
 from rpg.errors import BadInput, TaskInvalid
 from rpg.validate.gates import GATES
 
@@ -51,20 +50,19 @@ class TaskSource:
 
 
 @dataclass(frozen=True)
-class TaskCode:
-    """A task's code held in memory rather than in an artifact directory: what the validation
-    worker runs the ``solvable`` gate on, before the artifact exists.  It has no content
-    hash and no recorded gates; its text still goes through the text gate and restricted
-    loading (steps 4 and 5 of the module docstring).
+class PreparedTask:
+    """A task's checked data held in memory rather than in an artifact directory: what the
+    ``solvable`` gate runs the oracle on, before the artifact exists (no content hash, no
+    recorded gates).
 
     Attributes:
-        sources: ``code.py`` and ``goal_state_code.py`` text.
+        data: the task code's checked data (:func:`rpg.validate.data.fetch_task_data`).
         name: the task's name.
         instruction: its canonical instruction.
         paraphrases: its paraphrases.
     """
 
-    sources: Mapping[str, str]
+    data: TaskData
     name: str = "task"
     instruction: str = ""
     paraphrases: tuple[str, ...] = field(default=())
@@ -96,26 +94,25 @@ def resolve_target(target: str | Path) -> Path:
     return path
 
 
-def load_env_task(target: str | Path | TaskCode, robot=None) -> tuple[BlockTask, TaskSource, object]:
+def load_env_task(target: str | Path | PreparedTask, robot=None) -> tuple[Task, TaskSource]:
     """Check and load a task for an environment (see the module docstring for the checks).
 
     Args:
-        target: a task directory, family directory or ``FAMILY@vN``, or a :class:`TaskCode`.
+        target: a task directory, family directory or ``FAMILY@vN``, or a :class:`PreparedTask`.
         robot: the embodiment to add to the task's scene.
 
     Returns:
-        The task instance (scene compiled with the robot), where it came from, and the
-        executed ``goal_state_code.py`` (its ``goal_state(task)`` sets the goal configuration).
+        The task (scene compiled with the robot) and where it came from.
 
     Raises:
         BadInput / ArtifactError: unreadable target or files changed since compilation.
-        TaskInvalid: the artifact did not pass validation, or its code fails the text gate
-            or the loading checks.
+        TaskInvalid: the artifact did not pass validation, or its code fails the text gate,
+            fails in the sandbox or returns data that does not check.
     """
-    if isinstance(target, TaskCode):
-        task, goal_module = _load_checked(dict(target.sources), robot)
-        return task, TaskSource(directory=None, target=target.name, content_hash="", name=target.name,
-                                instruction=target.instruction, paraphrases=tuple(target.paraphrases)), goal_module
+    if isinstance(target, PreparedTask):
+        return Task(target.data, robot=robot), TaskSource(
+            directory=None, target=target.name, content_hash="", name=target.name,
+            instruction=target.instruction, paraphrases=tuple(target.paraphrases))
     directory = resolve_target(target)
     schema, doc, sources, digest = rehash(directory)
     if digest != doc.get("content_hash"):
@@ -127,24 +124,29 @@ def load_env_task(target: str | Path | TaskCode, robot=None) -> tuple[BlockTask,
         raise TaskInvalid(f"{directory} did not pass validation (gate {failed[0]}: "
                           f"{gates.get(failed[0], 'not run')}); an environment loads only valid tasks "
                           "(see its validation.log)")
-    task, goal_module = _load_checked(sources, robot)
+    task = Task(task_data(sources, where=str(directory)), robot=robot)
     source = TaskSource(directory=directory, target=str(target), content_hash=digest, name=schema.name,
                         instruction=schema.instruction, paraphrases=tuple(schema.paraphrases))
-    return task, source, goal_module
+    return task, source
 
 
-def _load_checked(sources: dict[str, str], robot) -> tuple[BlockTask, object]:
-    """Steps 4 and 5 of the module docstring on ``sources``.
+def task_data(sources: dict[str, str], where: str = "task") -> TaskData:
+    """Steps 4 and 5 of the module docstring on ``sources``: the text gate, then the task
+    code's data from the sandbox.
 
     Raises:
-        TaskInvalid: the text gate or the loading checks refuse the code.
+        TaskInvalid: the text gate refuses the code, or the sandbox run fails or returns
+            data that does not check (its goal configuration too).
     """
+    from rpg.validate.data import fetch_task_data
     from rpg.validate.static import StaticViolation, check_source
-    from rpg.validate.worker import GateFailure, load_task
 
     try:
         for fname, text in sources.items():
             check_source(text, fname)
-        return load_task(sources, restricted=True, robot=robot)
-    except (StaticViolation, GateFailure) as exc:
-        raise TaskInvalid(f"task code rejected: {exc}") from None
+    except StaticViolation as exc:
+        raise TaskInvalid(f"{where}: task code rejected: {exc}") from None
+    data = fetch_task_data(sources)
+    if data.goal_poses is None:
+        raise TaskInvalid(f"{where}: {data.goal_error}")
+    return data

@@ -7,11 +7,8 @@ chains every version's content hash).  Entries are built in a temporary director
 ``check`` their hashes are compared with the manifest's, otherwise the changed ones are
 moved into the manifest's directory (see :func:`build_library`).
 
-Backends: ``local`` (a process pool; each worker process keeps its fork server, so MuJoCo,
-the domain and a warm OpenGL context are loaded once per worker, not once per task; with
-several workers, those servers are clones of one template that warmed up once (see
-:class:`rpg.validate.sandbox.ForkServerTemplate`); the fork server renders single-threaded,
-so workers do not contend for cores) and ``ray`` (the same
+Backends: ``local`` (a process pool; each worker process imports the compiler once and
+starts a fresh sandboxed child per task-code run, :mod:`rpg.validate.sandbox`) and ``ray`` (the same
 work as Ray tasks, on a running cluster with ``address="auto"`` or a local one; ``pip
 install rpg[ray]``).
 """
@@ -161,24 +158,13 @@ def build_entry(entry: dict, out_dir: str, base_dir: str) -> dict:
 
 
 def _start_worker() -> None:
-    """Start this process's fork server, then import the compiler while it starts (the
-    two overlap: ~0.4 s of imports against ~0.8 s of server start-up)."""
-    from rpg.validate.sandbox import prestart
-
-    prestart()
-    import rpg.compiler  # noqa: F401
-    import rpg.steer.session  # noqa: F401
-
-
-def _join_template(address: str | None) -> None:
     """Pool-worker initializer: this worker dies with the build (kill -9 of ``rpg build``
-    leaves no worker behind); its fork server is a clone of the parent's template (or,
-    without one, a server of its own)."""
+    leaves no worker behind) and imports the compiler once."""
     from rpg.validate.isolation import die_with_parent
-    from rpg.validate.sandbox import prestart
 
     die_with_parent()
-    prestart(address)
+    import rpg.compiler  # noqa: F401
+    import rpg.steer.session  # noqa: F401
 
 
 def _longest_first(entries: list[dict]) -> list[dict]:
@@ -188,34 +174,16 @@ def _longest_first(entries: list[dict]) -> list[dict]:
 
 def _local(entries: list[dict], out_dir: str, base_dir: str, jobs: int) -> Iterator[dict]:
     if jobs <= 1:
-        _start_worker()
         for e in entries:
             yield build_entry(e, out_dir, base_dir)
         return
-    # One fork-server template warms up (imports, OpenGL shaders) while this process imports
-    # the compiler; the workers, forked afterwards, inherit the imports and each gets a
-    # clone of the template as its own fork server.  Measured faster than each worker
-    # starting its own server, and than one server shared by all workers.
-    from rpg.validate.sandbox import ForkServerTemplate, forkserver_enabled
+    import rpg.compiler  # noqa: F401 - imported once here, inherited by the forked workers
+    import rpg.steer.session  # noqa: F401
 
-    template = None
-    if forkserver_enabled():
-        try:
-            template = ForkServerTemplate()
-        except OSError:
-            pass
-    try:
-        import rpg.compiler  # noqa: F401
-        import rpg.steer.session  # noqa: F401
-
-        with ProcessPoolExecutor(max_workers=jobs, initializer=_join_template,
-                                 initargs=(template.address if template else None,)) as pool:
-            futures = [pool.submit(build_entry, e, out_dir, base_dir) for e in _longest_first(entries)]
-            for f in as_completed(futures):
-                yield f.result()
-    finally:
-        if template is not None:
-            template.close()
+    with ProcessPoolExecutor(max_workers=jobs, initializer=_start_worker) as pool:
+        futures = [pool.submit(build_entry, e, out_dir, base_dir) for e in _longest_first(entries)]
+        for f in as_completed(futures):
+            yield f.result()
 
 
 def _ray(entries: list[dict], out_dir: str, base_dir: str, jobs: int, address: str | None) -> Iterator[dict]:

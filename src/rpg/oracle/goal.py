@@ -192,13 +192,12 @@ def _inside_workspace(pos, margin: float = WORKSPACE_MARGIN) -> bool:
             and C.WORKSPACE_Y[0] - margin <= pos[1] <= C.WORKSPACE_Y[1] + margin)
 
 
-def plan_goal(scratch, goal_module, current: dict[str, Pose], movable: dict[str, float]) -> GoalPlan:
+def plan_goal(scratch, current: dict[str, Pose], movable: dict[str, float]) -> GoalPlan:
     """Adapt the task's goal configuration to the episode's state.
 
     Args:
-        scratch: a robot-free instance of the task class (its scene is used to evaluate G
+        scratch: a robot-free :class:`rpg.domain.task.Task` (its scene is used to evaluate G
             on candidate configurations; its state is overwritten).
-        goal_module: the task's loaded ``goal_state_code`` module (``goal_state(task)``).
         current: every object's pose now, by name.
         movable: edge length (m) of each movable cube, by name.
 
@@ -207,14 +206,12 @@ def plan_goal(scratch, goal_module, current: dict[str, Pose], movable: dict[str,
         ones that stay), their order and the chosen offset.
 
     Raises:
-        OracleError: ``goal_state`` fails, or no candidate configuration satisfies G.
+        OracleError: the task has no goal configuration, or no candidate configuration
+            satisfies G.
     """
-    scratch.set_state(current)
-    try:
-        goal_module.goal_state(scratch)
-    except Exception as exc:  # task code: report, do not crash the caller
-        raise OracleError(f"goal_state() failed: {type(exc).__name__}: {exc}") from exc
-    goal = scratch.scene.poses()
+    if scratch.data.goal_poses is None:
+        raise OracleError(f"the task has no goal configuration: {scratch.data.goal_error}")
+    goal = dict(scratch.data.goal_poses)
     exact = semantic_objects(scratch.goal_predicate)
     patches = [n for n in goal if n not in movable]
     patch_shift = {p: np.subtract(current[p].pos, goal[p].pos)[:2] for p in patches}

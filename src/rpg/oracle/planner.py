@@ -332,7 +332,7 @@ class Oracle:
     # -- reading the state ----------------------------------------------------------
     def _scratch_task(self):
         if self._scratch is None:
-            self._scratch = type(self.task)()
+            self._scratch = self.task.scratch()
         return self._scratch
 
     def poses(self):
@@ -388,7 +388,7 @@ class Oracle:
     def _run(self) -> Iterator[np.ndarray]:
         poses = self.poses()
         try:
-            self.plan = plan_goal(self._scratch_task(), self.env._goal_module, poses, self.sizes)
+            self.plan = plan_goal(self._scratch_task(), poses, self.sizes)
         except OracleError as exc:
             self.failure = str(exc)
             return

@@ -78,12 +78,18 @@ def load_session(path: str | Path) -> dict:
 def goal_tower(directory: Path) -> list[str]:
     """Cubes of the settled goal state bottom to top, as ``red`` or ``letter A`` (by height)."""
     from rpg.artifact import task_sources
-    from rpg.validate.sandbox import run_worker
+    from rpg.domain.task import Task
+    from rpg.env.loading import task_data
+    from rpg.errors import TaskInvalid
+    from rpg.validate.verdicts import object_json
 
-    doc = run_worker({"op": "inspect", "sources": task_sources(directory), "state": "goal", "settle": 50})
-    if not doc.get("ok"):
-        raise SessionError(f"cannot inspect {directory}: {doc.get('error')}")
-    objs = [o for o in doc["result"]["objects"] if o["kind"] != "goal_patch"]
+    try:
+        task = Task(task_data(task_sources(directory), where=str(directory)))
+    except TaskInvalid as exc:
+        raise SessionError(f"cannot inspect {directory}: {exc}") from None
+    task.set_goal_state()
+    task.step(50)
+    objs = [o for o in object_json(task) if o["kind"] != "goal_patch"]
     return [f"letter {o['label']}" if o["kind"] == "semantic_cube" else o["color"]
             for o in sorted(objs, key=lambda o: o["position"][2])]
 

@@ -1,0 +1,226 @@
+"""Task code's answers as the trusted side accepts them: bounded, schema-checked data.
+
+The sandboxed child (:mod:`rpg.validate.child`) runs task code and returns plain data.
+This module asks for it (:func:`fetch_task_data`), checks it against a schema with hard
+bounds (sizes, counts, finite numbers, known names) and rebuilds it with rpg's own classes
+(:func:`rpg.domain.assets.asset_from_dict`, :func:`rpg.domain.predicates.from_dict`) into a
+:class:`rpg.domain.task.TaskData`.  Samples of rho_0 are cached per process by the code's
+SHA-256 and the seed; a seed not yet asked for is fetched together with the next
+:data:`PREFETCH_SEEDS` seeds in one sandboxed run.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+import threading
+from collections import OrderedDict
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
+
+from rpg.domain import constants as C
+from rpg.domain.state import Pose
+from rpg.errors import TaskInvalid
+
+MAX_OBJECTS = 64
+"""Most assets a task may have (the largest library task has 27 cubes)."""
+
+MAX_COORD = 10.0
+"""Largest absolute pose component accepted from task code (m, or quaternion units)."""
+
+PREFETCH_SEEDS = 20
+"""Seeds fetched in one sandboxed run when an environment asks for one it has not seen
+(``rpg eval``'s default is 20 seeds per task)."""
+
+CACHE_ENTRIES = 4096
+"""(code, seed) entries of rho_0 samples kept per process."""
+
+PoseList = list[float]
+
+
+class ChildError(BaseModel):
+    model_config = ConfigDict(extra="ignore")
+
+    kind: str = Field("runtime", max_length=40)
+    message: str = Field("", max_length=4000)
+    traceback: str = Field("", max_length=8000)
+    seed: int | None = None
+
+
+class ChildResult(BaseModel):
+    """The child's answer to a ``data`` request; anything else is refused as malformed."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    class_: str = Field(alias="class", max_length=200)
+    assets: list[dict] = Field(max_length=MAX_OBJECTS)
+    goal: dict
+    goal_poses: dict[str, PoseList] | None = None
+    rho0: dict[str, list[dict[str, PoseList]]] = Field(default_factory=dict)
+    errors: dict[str, ChildError] = Field(default_factory=dict)
+
+
+class DataError(TaskInvalid):
+    """Task code's data is malformed, out of bounds or inconsistent.
+
+    Attributes:
+        kind: the repair kind (``api_usage``, ``runtime``, ``syntax``...).
+        stage: ``compile`` (the code's description of the task), ``initial_state`` or
+            ``goal_state``.
+    """
+
+    def __init__(self, message: str, kind: str = "api_usage", stage: str = "compile", details: dict | None = None):
+        super().__init__(message)
+        self.kind = kind
+        self.stage = stage
+        self.details = details or {}
+
+
+def code_digest(sources: dict[str, str]) -> str:
+    """SHA-256 over the code files' names and text (what rho_0's samples are cached under)."""
+    h = hashlib.sha256()
+    for name in sorted(sources):
+        h.update(name.encode() + b"\0" + str(sources[name]).encode() + b"\0")
+    return h.hexdigest()
+
+
+def _pose(name: str, values: PoseList, what: str) -> Pose:
+    if len(values) != 7 or not all(isinstance(v, int | float) and math.isfinite(v) and abs(v) <= MAX_COORD
+                                   for v in values):
+        raise DataError(f"{what}: the pose of {name!r} must be 7 finite numbers (x, y, z m; quaternion w, x, y, z)",
+                        stage=what)
+    if math.sqrt(sum(v * v for v in values[3:])) < 1e-6:  # MuJoCo normalises the rest
+        raise DataError(f"{what}: {name!r} has a zero quaternion", stage=what)
+    return Pose(tuple(float(v) for v in values[:3]), tuple(float(v) for v in values[3:]))
+
+
+def _poses(doc: dict[str, PoseList], names: list[str], what: str) -> dict[str, Pose]:
+    missing, extra = sorted(set(names) - set(doc)), sorted(set(doc) - set(names))
+    if missing or extra:
+        which = f"lacks {missing[0]!r}" if missing else f"names {extra[0]!r}, which is not an asset of the task"
+        raise DataError(f"{what} must give every object's pose and no other: it {which}", stage=what)
+    return {n: _pose(n, doc[n], what) for n in sorted(names)}
+
+
+class _Samples:
+    """rho_0's samples of one task's code: a per-process cache in front of the sandbox."""
+
+    _cache: OrderedDict[tuple[str, int], list[dict[str, Pose]]] = OrderedDict()
+    _lock = threading.Lock()
+
+    def __init__(self, sources: dict[str, str], digest: str, names: list[str], restricted: bool):
+        self.sources, self.digest, self.names, self.restricted = sources, digest, names, restricted
+        self.errors: dict[int, DataError] = {}
+
+    def store(self, result: ChildResult) -> None:
+        """Keep the samples of a child's answer; a seed whose samples are malformed, or the
+        seed at which ``initial_state`` raised, keeps its error instead."""
+        err = result.errors.get("initial_state")
+        if err is not None and err.seed is not None:
+            self.errors[err.seed] = DataError(f"initial_state (seed {err.seed}): {err.message}", kind=err.kind,
+                                              stage="initial_state", details={"traceback": err.traceback})
+        for key, draws in result.rho0.items():
+            seed = int(key)
+            try:
+                poses = [_poses(d, self.names, "initial_state") for d in draws]
+            except DataError as exc:
+                self.errors[seed] = exc
+                continue
+            with self._lock:
+                self._cache[(self.digest, seed)] = poses
+                self._cache.move_to_end((self.digest, seed))
+                while len(self._cache) > CACHE_ENTRIES:
+                    self._cache.popitem(last=False)
+
+    def __call__(self, seed: int, n: int) -> list[dict[str, Pose]]:
+        seed = int(seed)
+        if seed in self.errors:
+            raise self.errors[seed]
+        with self._lock:
+            have = self._cache.get((self.digest, seed))
+        if have is None or len(have) < n:
+            seeds = [seed] if have is not None else list(range(seed, seed + PREFETCH_SEEDS))
+            seeds = [s for s in seeds if 0 <= s < 2**63]
+            result = _request(self.sources, seeds, n, goal_state=False, restricted=self.restricted)
+            self.store(result)
+            if seed in self.errors:
+                raise self.errors[seed]
+            with self._lock:
+                have = self._cache.get((self.digest, seed), [])
+            if len(have) < n:
+                raise DataError(f"initial_state returned {len(have)} samples for seed {seed}, not {n}",
+                                stage="initial_state")
+        return have[:n]
+
+
+def _request(sources: dict[str, str], seeds: list[int], draws: int, goal_state: bool, restricted: bool) -> ChildResult:
+    from rpg.validate.sandbox import run_child
+
+    doc = run_child({"op": "data", "sources": dict(sources), "seeds": seeds, "draws": draws,
+                     "goal_state": goal_state, "restricted": restricted})
+    if not isinstance(doc, dict) or not doc.get("ok"):
+        raise DataError(str((doc or {}).get("message", "the task code could not be loaded"))[:2000],
+                        kind=str((doc or {}).get("kind", "runtime"))[:40],
+                        details={"traceback": str((doc or {}).get("traceback", ""))[:4000]})
+    try:
+        result = ChildResult.model_validate(doc.get("result"))
+    except ValidationError as exc:
+        raise DataError(f"task code returned malformed data: {str(exc).splitlines()[0][:200]}") from None
+    return result
+
+
+def fetch_task_data(sources: dict[str, str], seeds=(), restricted: bool = True):
+    """Run task code in the sandbox and return its checked data.
+
+    Args:
+        sources: ``code.py`` and ``goal_state_code.py`` text (gated by the caller's text gate;
+            the child gates it again).
+        seeds: seeds whose rho_0 samples to fetch now (more are fetched on demand).
+        restricted: run the code under RestrictedPython (False only for ``--disable text``).
+
+    Returns:
+        :class:`rpg.domain.task.TaskData`.
+
+    Raises:
+        DataError: the code cannot be loaded, or its description of the task (assets,
+            goal) is malformed or inconsistent.  An error of ``goal_state`` is kept in the
+            data's ``goal_error``; one of ``initial_state`` is raised when that seed's samples
+            are asked for.
+        WorkerError: the sandboxed run crashed, ran out of time or wrote too much.
+    """
+    from rpg.domain.assets import asset_from_dict
+    from rpg.domain.predicates import from_dict
+    from rpg.domain.task import TaskData
+
+    digest = code_digest(sources)
+    result = _request(sources, list(seeds), C.INITIAL_DRAWS, goal_state=True, restricted=restricted)
+    try:
+        assets = tuple(asset_from_dict(a) for a in result.assets)
+    except ValueError as exc:
+        raise DataError(f"assets(): {exc}") from None
+    names = [a.name for a in assets]
+    if len(set(names)) != len(names) or {"table", "floor"} & set(names):
+        raise DataError("assets() must name each object once (and not 'table' or 'floor')")
+    if not any(a.movable for a in assets):
+        raise DataError("assets() has no cube to move")
+    try:
+        goal = from_dict(result.goal)
+    except (ValueError, TypeError, KeyError, RecursionError) as exc:
+        raise DataError(f"goal(): {exc}"[:2000]) from None
+    unknown = sorted(set(goal.object_names()) - set(names) - {"table"})
+    if unknown:
+        raise DataError(f"goal() names {unknown[0]!r}, which is not an asset of the task")
+    samples = _Samples(dict(sources), digest, names, restricted)
+    samples.store(result)
+    err = result.errors.get("goal_state")
+    goal_poses, goal_error = None, None
+    if err is not None:
+        goal_error = DataError(f"goal_state: {err.message}", kind=err.kind, stage="goal_state",
+                               details={"traceback": err.traceback})
+    else:
+        try:
+            goal_poses = _poses(result.goal_poses or {}, names, "goal_state")
+        except DataError as exc:
+            goal_error = exc
+    return TaskData(assets=assets, goal=goal, goal_poses=goal_poses, draws=samples, digest=digest,
+                    class_name=result.class_, goal_error=goal_error)
