@@ -10,12 +10,14 @@ from pathlib import Path
 import pytest
 import yaml
 
+from rpg.artifact import task_sources
 from rpg.compiler import build, compile_instruction, load_artifact, revalidate
 from rpg.domain.predicates import And, On, Reads
+from rpg.domain.task import Task
+from rpg.env.loading import task_data
 from rpg.schema.builtin import ParseError, parse
 from rpg.schema.feasibility import InfeasibleTask, check_feasibility
 from rpg.schema.model import export_json_schema
-from rpg.validate.sandbox import run_worker
 
 ROOT = Path(__file__).resolve().parents[1]
 SEEDS = ROOT.parent / "shared" / "seed-cases.yaml"
@@ -67,10 +69,14 @@ def test_paper_instruction_compiles_and_goal_holds(instruction, tmp_path):
         "text", "compile", "smoke", "nontrivial", "constraint", "goal_state", "bounds", "visibility"}
     for f in ("task.yaml", "code.py", "goal_state_code.py", "validation.log", "validation.json", "initial.png", "goal.png"):
         assert (result.path / f).is_file(), f
-    goal = run_worker({"op": "inspect", "dir": str(result.path), "state": "goal", "settle": 50})["result"]
-    assert goal["success"]
-    falses = [not run_worker({"op": "inspect", "dir": str(result.path), "state": "initial", "seed": s, "settle": 0})["result"]["success"]
-              for s in (0, 2)]
+    task = Task(task_data(task_sources(result.path)))
+    task.set_goal_state()
+    task.step(50)
+    assert task.success()
+    falses = []
+    for s in (0, 2):
+        task.reset(s)
+        falses.append(not task.success())
     assert any(falses)
 
 

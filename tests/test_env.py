@@ -301,7 +301,7 @@ def test_every_library_entry_is_an_environment(embodiment):
         env = BlockTaskEnv(LIBRARY / entry.name, embodiment=embodiment, cameras=(), privileged=True)
         obs, info = env.reset(seed=0)
         assert not info["success"], entry.name  # the non-trivial gate's guarantee holds with a robot too
-        sampled = env.task.initial_state(np.random.default_rng(0))
+        sampled = env.task.data.draws(0, 1)[0]
         for row, name in zip(obs["object_poses"], env.object_names, strict=True):
             assert np.allclose(row[:2], sampled[name].pos[:2], atol=3e-3), (entry.name, name)  # the robot hit nothing
         env.step(np.zeros(7, np.float32))
@@ -331,16 +331,18 @@ def _rehashed_copy(tmp_path: Path, old: str, new: str) -> Path:
     "BlockTask.evaluate = self.assets",         # or success itself
 ])
 def test_task_code_in_an_environment_cannot_patch_the_robot_or_the_interface(tmp_path, attack):
-    from rpg.validate.restricted import RestrictedAccess
+    """Task code runs in the sandboxed child, which has no robot and no trusted task: the
+    attack fails there, and the environment refuses the seed as invalid task data."""
+    from rpg.errors import TaskInvalid
 
     task = _rehashed_copy(tmp_path, "    def initial_state(self, rng):\n",
                           f"    def initial_state(self, rng):\n        {attack}\n")
     env = BlockTaskEnv(task, embodiment="floating_gripper", cameras=())
-    with pytest.raises(RestrictedAccess):
+    with pytest.raises(TaskInvalid, match="initial_state"):
         env.reset(seed=0)
-    from rpg.domain.task import BlockTask
+    from rpg.domain.task import Task
 
-    assert BlockTask.evaluate.__module__ == "rpg.domain.task" and callable(env.robot.command)
+    assert Task.evaluate.__module__ == "rpg.domain.task" and callable(env.robot.command)
 
 
 def test_a_video_interrupted_by_an_error_leaves_no_file(tmp_path):

@@ -387,7 +387,7 @@ def test_a_knocked_cube_in_a_dense_layout_is_pushed_back_not_picked_again():
     task = LIBRARY / "pyramid_construction/v1"
     env = BlockTaskEnv(task, embodiment="panda", cameras=(), max_episode_steps=400)
     env.reset(seed=0)
-    goal = env._goal_module.GOAL_POSES
+    goal = env.task.data.goal_poses
     base = {n: p for n, p in goal.items() if abs(p.pos[2] - 0.97) < 1e-3}
     assert len(base) == 9
     poses = {n: (p.pos, p.quat) for n, p in base.items()}

@@ -205,13 +205,13 @@ def test_every_error_class_of_the_package_is_an_rpg_error_with_its_exit_code():
 
     found = {}
     for mod in pkgutil.walk_packages(rpg.__path__, "rpg."):
-        if mod.name.startswith(("rpg.validate.worker", "rpg.library.ray")):
+        if mod.name.startswith(("rpg.validate.child", "rpg.library.ray")):
             continue
         module = importlib.import_module(mod.name)
         for name, cls in inspect.getmembers(module, inspect.isclass):
             if (cls.__module__ == mod.name and issubclass(cls, Exception) and not issubclass(cls, Warning)
                     and not name.startswith("_")
-                    and name not in ("GateFailure", "SandboxViolation", "RestrictedAccess")):  # internal to the worker
+                    and name not in ("GateFailure", "SandboxViolation", "RestrictedAccess", "LoadError")):  # internal to the gates
                 found[name] = cls
     assert {"ParseError", "SteerError", "ArtifactError", "UnaccountedMention", "ManifestError"} <= set(found)
     assert [n for n, c in found.items() if not issubclass(c, RpgError)] == []

@@ -71,7 +71,7 @@ TEXT_GATE = [
     "global x", "import math as m, os", "import builtins",
     "BlockTask.__init__.__globals__", "from rpg import task_api",
     # module-object reach-through (the attack review's remote code execution)
-    "import rpg.task_api\nrpg.validate.worker.importlib.import_module('ctyp' + 'es')",
+    "import rpg.task_api\nrpg.validate.child.json.sys.modules",
     "import numpy as np\nnp.matrixlib.defmatrix.sys.modules", "import numpy as np\nnp.ctypeslib",
     "from rpg.task_api import constants", "from numpy import ctypeslib", "from numpy import random",
     "import numpy as np\nnp.random.mtrand", "x = type(1)", "raise SystemExit(0)", "raise KeyboardInterrupt",
@@ -217,11 +217,9 @@ def test_bombs_and_floods_are_bounded(base, tmp_path, payload, reason):
     assert reason in fail["message"] or reason in fail.get("details", {}).get("traceback", ""), fail
 
 
-@pytest.mark.parametrize("forkserver", ["1", "0"], ids=["fork-server", "one-shot"])
-def test_the_worker_runs_with_every_active_layer(base, tmp_path, monkeypatch, forkserver):
+def test_the_worker_runs_with_every_active_layer(base, tmp_path):
     """What ``rpg doctor`` claims is what the process that runs task code has: a seccomp
     filter, its own PID namespace (it is a low PID and sees few processes), no network."""
-    monkeypatch.setenv("RPG_FORKSERVER", forkserver)
     probe = ("import os, socket\nstatus = open('/proc/self/status').read()\n"
              "seccomp = status.split('Seccomp:')[1].split()[0]\n"
              "try:\n    socket.create_connection(('1.1.1.1', 53), timeout=1)\n    net = 'up'\n"

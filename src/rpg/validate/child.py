@@ -156,7 +156,8 @@ def handle(req: dict) -> str:
 
 
 def main() -> None:
-    import numpy  # noqa: F401 - imported before the filters: numpy opens its libraries at import
+    import numpy.linalg  # noqa: F401 - imported before the filters: numpy opens its libraries at import
+    import numpy.random  # noqa: F401
 
     import rpg.task_api  # noqa: F401
     import rpg.validate.restricted  # noqa: F401

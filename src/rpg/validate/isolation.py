@@ -2,20 +2,19 @@
 
 Layers, outermost first (``rpg doctor`` prints which are active here):
 
-1. **namespaces** (bubblewrap, ``bwrap``: Debian's ``bubblewrap`` package): the fork server
-   (and a one-shot worker) starts inside new user, PID, network, IPC, UTS and mount
+1. **namespaces** (bubblewrap, ``bwrap``: Debian's ``bubblewrap`` package): each child
+   that runs task code starts inside new user, PID, network, IPC, UTS and mount
    namespaces.  Its file system is a read-only view of the interpreter, the installed
    packages and the system libraries (``/usr``), with a size-limited tmpfs ``/tmp`` as the
    only writable place; no ``/etc`` beyond the loader cache, no ``/home``, no ``/root``, no
    network, its own ``/proc`` (no other process is visible, so no ``/proc/<pid>/environ``,
-   no signals or ptrace outside), and the whole namespace dies with the request's server
-   and with ``rpg`` (``--die-with-parent``).  The server is isolated once and forks each
-   request inside, so isolation costs one ``bwrap`` start per server.
-2. **seccomp** (libseccomp through ``pyseccomp``), in each child that runs task code:
-   no new processes (``fork``, ``vfork``, ``clone`` without ``CLONE_THREAD``, ``clone3``,
-   ``execve``), no signals except to itself, no ptrace or cross-process memory access, no
-   sockets, no ``mknod``/``mkfifo``, extended attributes, mounts, namespaces, keyrings,
-   BPF, perf events, kernel modules, and no raising of resource limits.
+   no signals or ptrace outside), and the whole namespace dies with ``rpg``
+   (``--die-with-parent``).  Each request is a fresh ``bwrap`` and a fresh child: no
+   process outlives its request or serves another.
+2. **seccomp** (libseccomp through ``pyseccomp``), in each child that runs task code: an
+   allowlist (:data:`ALLOWED_SYSCALLS`), every other system call denied: no new processes
+   or threads, no sockets or io_uring, no signals except to itself, no ptrace, no opening
+   a file for writing, no changes to resource limits.
 3. **resource limits** (:func:`rpg.validate.sandbox.apply_limits`): CPU time, address
    space, file size, open files, processes, no core files; the wall-clock limit is the
    server's.
@@ -40,18 +39,28 @@ from dataclasses import dataclass
 TMPFS_BYTES = 256 * 1024**2
 """Size of the sandbox's writable tmpfs ``/tmp``, bytes."""
 
-DENIED_SYSCALLS = (
-    "fork", "vfork", "execve", "execveat", "ptrace", "process_vm_readv", "process_vm_writev", "kcmp",
-    "pidfd_open", "pidfd_send_signal", "pidfd_getfd", "socket", "socketpair", "mknod", "mknodat",
-    "setxattr", "lsetxattr", "fsetxattr", "removexattr", "lremovexattr", "fremovexattr",
-    "mount", "umount2", "pivot_root", "chroot", "unshare", "setns", "keyctl", "add_key", "request_key",
-    "bpf", "perf_event_open", "userfaultfd", "init_module", "finit_module", "delete_module", "kexec_load",
-    "kexec_file_load", "reboot", "swapon", "swapoff", "setrlimit", "prlimit64", "acct", "quotactl",
-    "setuid", "setgid", "setreuid", "setregid", "setresuid", "setresgid", "setgroups", "setsid", "setpgid",
-    "ioperm", "iopl", "open_by_handle_at", "name_to_handle_at", "fanotify_init", "move_mount", "fsopen",
-    "fsmount", "open_tree",
+ALLOWED_SYSCALLS = (
+    "read", "readv", "pread64", "write", "writev", "close", "fstat", "newfstatat", "statx", "stat", "lstat",
+    "lseek", "fcntl", "dup", "getdents64", "getcwd", "readlink", "readlinkat", "access", "faccessat",
+    "faccessat2", "mmap", "munmap", "mprotect", "mremap", "madvise", "brk", "futex", "rt_sigaction",
+    "rt_sigprocmask", "rt_sigreturn", "sigaltstack", "getrandom", "clock_gettime", "clock_getres",
+    "gettimeofday", "nanosleep", "clock_nanosleep", "sched_yield", "sched_getaffinity", "getpid", "gettid",
+    "getuid", "geteuid", "getgid", "getegid", "uname", "sysinfo", "rseq", "set_robust_list", "exit", "exit_group",
 )
-"""System calls a task-code process gets EPERM for (with new processes and foreign signals)."""
+"""System calls the child that runs task code may make once its filter is loaded; every
+other one fails with EPERM (default deny: new processes and threads, io_uring, sockets,
+queued and foreign signals, ptrace, namespaces, BPF...).  Its imports are done before the
+filter is loaded; what remains is memory, reading what it can see, writing to the file
+descriptors it already holds, and the clock.  Further allowed with argument checks:
+``openat``/``open`` only without write flags, ``ioctl`` only ``TCGETS`` (``isatty``),
+``prlimit64`` only to read a limit, ``kill``/``tgkill`` only to this process (``abort``)."""
+
+OPEN_WRITE_FLAGS = os.O_WRONLY | os.O_RDWR | os.O_CREAT | os.O_TRUNC | os.O_APPEND
+"""Flags an ``open``/``openat`` of the filtered child may not carry (``O_TMPFILE`` needs a
+write mode, so it is covered)."""
+
+TCGETS = 0x5401
+"""The ``ioctl`` request behind ``isatty`` (Linux)."""
 
 
 @dataclass(frozen=True)
@@ -142,7 +151,8 @@ def seccomp_layer() -> Layer:
         pyseccomp.SyscallFilter(defaction=pyseccomp.ALLOW)
     except Exception as exc:  # noqa: BLE001 - libseccomp missing or unusable: report the layer as absent
         return Layer("seccomp", False, f"libseccomp is not usable: {str(exc)[:200]}")
-    return Layer("seccomp", True, f"libseccomp via pyseccomp: {len(DENIED_SYSCALLS)} system calls denied, no new processes")
+    return Layer("seccomp", True, f"libseccomp via pyseccomp: an allowlist of {len(ALLOWED_SYSCALLS) + 6} system calls, "
+                                  "default deny (no processes, threads, sockets, io_uring or signals to others)")
 
 
 def layers() -> list[Layer]:
@@ -212,17 +222,20 @@ def install_seccomp() -> bool:  # pragma: no cover - runs in the child that runs
 def _load_filter() -> None:  # pragma: no cover - runs in the child that runs task code
     import pyseccomp as sc
 
-    f = sc.SyscallFilter(defaction=sc.ALLOW)
-    deny = sc.ERRNO(errno.EPERM)
-    for name in DENIED_SYSCALLS:
+    f = sc.SyscallFilter(defaction=sc.ERRNO(errno.EPERM))
+    for name in ALLOWED_SYSCALLS:
         try:
-            f.add_rule(deny, name)
+            f.add_rule(sc.ALLOW, name)
         except (OSError, ValueError, RuntimeError):
             continue  # not a system call on this architecture
-    f.add_rule(deny, "clone", sc.Arg(0, sc.MASKED_EQ, 0x00010000, 0))  # clone without CLONE_THREAD: a new process
-    f.add_rule(sc.ERRNO(errno.ENOSYS), "clone3")  # arguments in memory: libc falls back to clone
+    f.add_rule(sc.ALLOW, "openat", sc.Arg(2, sc.MASKED_EQ, OPEN_WRITE_FLAGS, 0))
+    try:
+        f.add_rule(sc.ALLOW, "open", sc.Arg(1, sc.MASKED_EQ, OPEN_WRITE_FLAGS, 0))
+    except (OSError, ValueError, RuntimeError):
+        pass
+    f.add_rule(sc.ALLOW, "ioctl", sc.Arg(1, sc.EQ, TCGETS))
+    f.add_rule(sc.ALLOW, "prlimit64", sc.Arg(2, sc.EQ, 0))  # new_limit NULL: read only
     me = os.getpid()
-    for name in ("kill", "tgkill"):
-        f.add_rule(deny, name, sc.Arg(0, sc.NE, me))
-    f.add_rule(deny, "tkill")
+    f.add_rule(sc.ALLOW, "kill", sc.Arg(0, sc.EQ, me))
+    f.add_rule(sc.ALLOW, "tgkill", sc.Arg(0, sc.EQ, me))
     f.load()
