@@ -11,6 +11,13 @@ DEMO_INSTRUCTION ?= Make a simple 2-block tower with a red block on bottom and b
 install: $(VENV)/.installed
 
 $(VENV)/.installed: pyproject.toml
+	@# The sandbox's namespace layer is Debian's bubblewrap: installed here where we can (root
+	@# with apt-get); otherwise rpg runs with its other layers and `rpg doctor` says how to add it.
+	@command -v bwrap >/dev/null || { [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null && \
+	  { apt-get install -y -q bubblewrap >/dev/null 2>&1 || { apt-get update -q >/dev/null 2>&1 && \
+	    apt-get install -y -q bubblewrap >/dev/null 2>&1; }; }; } || \
+	  echo "note: bubblewrap (bwrap) is not installed; the sandbox runs without its namespace layer." \
+	       "Install Debian's 'bubblewrap' package (sudo apt-get install bubblewrap) to add it."
 	test -x $(PY) || python3 -m venv $(VENV)
 	$(PY) -m pip install -q -e '.[dev,ray]'
 	touch $@

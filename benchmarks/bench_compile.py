@@ -47,6 +47,26 @@ with tempfile.TemporaryDirectory() as tmp:
 
     fresh_off = fresh_compile("0")
     fresh = fresh_compile("1")
+
+    def floor_vs_compile(rounds: int = 7) -> tuple[float, float]:
+        """Medians of the raw-MuJoCo floor (``../shared/bench/floor_compile.py``: import mujoco,
+        a table with three cubes, settle initial and goal layouts 1 s each, render both at
+        640x480, write two PNGs) and of ``rpg compile`` of a three-cube stack as a fresh
+        process, run alternately in the same loop so both see the same machine."""
+        floor = Path(__file__).resolve().parents[2] / "shared" / "bench" / "floor_compile.py"
+        fl, rc = [], []
+        for i in range(rounds):
+            with tempfile.TemporaryDirectory() as out:
+                t = time.perf_counter()
+                subprocess.run([sys.executable, str(floor), out], check=True, capture_output=True)
+                fl.append(time.perf_counter() - t)
+                t = time.perf_counter()
+                subprocess.run([sys.executable, "-m", "rpg.cli", "compile", "Stack the red block on the green block "
+                                "and the yellow block on the red block", "-o", out], check=True, capture_output=True)
+                rc.append(time.perf_counter() - t)
+        return statistics.median(fl), statistics.median(rc)
+
+    floor_s, compile_s = floor_vs_compile() if (Path(__file__).resolve().parents[2] / "shared").is_dir() else (0.0, 0.0)
 report("compile", [
     ("instructions", len(instructions), "", ""),
     ("pass 1 schema (parse + feasibility), median", statistics.median(schema_t) * 1000, "ms", ""),
@@ -56,4 +76,7 @@ report("compile", [
     ("rpg compile as a fresh process, median of 5 (sandbox: every layer rpg doctor lists)", fresh, "s", "<= 1.5"),
     ("the same without namespaces and seccomp (RPG_ISOLATION=0)", fresh_off, "s", ""),
     ("cost of OS isolation on a fresh compile", (fresh / fresh_off - 1) * 100, "%", "<= 10"),
+    ("raw-MuJoCo floor of the same physical work, median of 7", floor_s, "s", ""),
+    ("rpg compile of a 3-cube stack, fresh process, same rounds", compile_s, "s", ""),
+    ("rpg compile / floor", compile_s / floor_s if floor_s else float("nan"), "x", "<= 2.0"),
 ])

@@ -19,7 +19,7 @@ from rpg.artifact import content_hash
 from rpg.compiler import revalidate
 from rpg.env import BlockTaskEnv
 from rpg.errors import TaskInvalid
-from rpg.validate.isolation import seccomp_layer
+from rpg.validate.isolation import landlock_layer, seccomp_layer
 from rpg.yamlio import dump, load
 
 STACK = Path(__file__).resolve().parents[1] / "library" / "stack_blocks"
@@ -194,3 +194,33 @@ def test_the_host_process_never_loads_task_code(tmp_path):
     gc.collect()
     assert not [c for c in BlockTask.__subclasses__() if c.__module__.startswith("rpg_")]
     assert type(env.task).__module__ == "rpg.domain.task"
+
+
+@pytest.mark.skipif(not landlock_layer().active, reason=f"needs the Landlock layer: {landlock_layer().detail}")
+def test_landlock_alone_keeps_the_child_from_the_files_of_the_machine(tmp_path, monkeypatch):
+    """Without bubblewrap's namespaces (as on a machine without the package), Landlock still
+    keeps task code from reading the user's files or another process's environment, and
+    from writing anywhere."""
+    from rpg.validate import isolation
+
+    monkeypatch.setattr(isolation, "namespaces_layer", lambda: isolation.Layer("namespaces", False, "off for this test"))
+    secret = tmp_path / "secret.txt"
+    secret.write_text("TOP-SECRET")
+    probe = f"""
+out = []
+for path in ({str(secret)!r}, '/proc/{os.getpid()}/environ', '/etc/hostname'):
+    try:
+        open(path).read()
+        out.append((path, 'read'))
+    except OSError as e:
+        out.append((path, type(e).__name__))
+raise RuntimeError('PROBE ' + repr(out))
+"""
+    task = forged(tmp_path, "goal_state_code.py", "\n\ndef goal_state(task):", "\n\ndef goal_state(task):")
+    gs = task / "goal_state_code.py"
+    gs.write_text(gs.read_text() + probe)
+    result = revalidate(task, disabled=frozenset({"text"}))
+    message = next(g for g in result.gates if g["status"] == "fail")["message"]
+    assert "PROBE" in message and "TOP-SECRET" not in message, message
+    got = dict(eval(message.split("PROBE ", 1)[1]))  # noqa: S307 - our own probe's repr
+    assert all(v == "PermissionError" for v in got.values()), got

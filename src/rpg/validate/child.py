@@ -162,7 +162,7 @@ def main() -> None:
     import rpg.task_api  # noqa: F401
     import rpg.validate.restricted  # noqa: F401
     from rpg.validate.guard import install
-    from rpg.validate.isolation import install_seccomp
+    from rpg.validate.isolation import install_landlock, install_seccomp
     from rpg.validate.sandbox import apply_limits
 
     req = json.loads(sys.stdin.read(CHILD_MAX_REQUEST))
@@ -171,6 +171,7 @@ def main() -> None:
     os.dup2(null, 1)
     sys.stdout = open(1, "w", closefd=False)  # noqa: SIM115 - fd 1 now /dev/null
     apply_limits()
+    install_landlock()
     install_seccomp()
     install(os.getcwd())
     reply.write(handle(req))

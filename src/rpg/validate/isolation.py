@@ -155,6 +155,98 @@ def seccomp_layer() -> Layer:
                                   "default deny (no processes, threads, sockets, io_uring or signals to others)")
 
 
+# -- Landlock (the kernel's unprivileged access control, Linux >= 5.13) -------------------
+_LANDLOCK_CREATE_RULESET, _LANDLOCK_ADD_RULE, _LANDLOCK_RESTRICT_SELF = 444, 445, 446
+_LANDLOCK_RULE_PATH_BENEATH = 1
+_FS_EXECUTE, _FS_WRITE_FILE, _FS_READ_FILE, _FS_READ_DIR = 1, 2, 4, 8
+_FS_RIGHTS_BY_ABI = {1: (1 << 13) - 1, 2: (1 << 14) - 1, 3: (1 << 15) - 1, 5: (1 << 16) - 1}
+"""Every file-system right Landlock knows at each ABI version (bits 0-12 at ABI 1; REFER,
+TRUNCATE, IOCTL_DEV added at 2, 3, 5): all are handled, so all are denied but those granted."""
+
+
+def _landlock_abi() -> int:
+    import ctypes
+
+    libc = ctypes.CDLL(None, use_errno=True)
+    libc.syscall.restype = ctypes.c_long
+    abi = libc.syscall(_LANDLOCK_CREATE_RULESET, None, ctypes.c_size_t(0), ctypes.c_uint32(1))  # ..._VERSION
+    return int(abi) if abi > 0 else 0
+
+
+@functools.lru_cache(maxsize=1)
+def landlock_layer() -> Layer:
+    """Whether the kernel has Landlock (probed once per process)."""
+    if not enabled():
+        return Layer("landlock", False, "switched off (RPG_ISOLATION=0)")
+    try:
+        abi = _landlock_abi()
+    except (OSError, AttributeError) as exc:
+        return Layer("landlock", False, f"cannot probe Landlock: {exc}")
+    if abi < 1:
+        return Layer("landlock", False, "the kernel has no Landlock (Linux >= 5.13 with landlock in its LSM list)")
+    extra = "; no TCP" if abi >= 4 else ""
+    extra += "; no signals or abstract sockets outside" if abi >= 6 else ""
+    return Layer("landlock", True, f"ABI {abi}: read-only view of the interpreter and libraries, no file opened for "
+                                   f"writing but /dev/null{extra}")
+
+
+def readable_roots() -> list[str]:
+    """What the filtered child may read: the interpreter, the installed packages, the
+    system libraries and the loader cache."""
+    roots = set(_python_roots()) | {"/usr", "/etc/ld.so.cache"}
+    for name in ("lib", "lib64", "lib32", "libx32", "bin"):
+        if os.path.isdir(f"/{name}"):
+            roots.add(os.path.realpath(f"/{name}"))
+    return sorted(r for r in roots if os.path.exists(r))
+
+
+def install_landlock() -> bool:  # pragma: no cover - runs in the child that runs task code
+    """Confine this process with Landlock (irrevocable): read and execute only beneath
+    :func:`readable_roots`, write only ``/dev/null``; no TCP (ABI 4), no signals or abstract
+    Unix sockets beyond its own domain (ABI 6).  False when the kernel lacks Landlock.
+
+    Raises:
+        RuntimeError: Landlock is there but the rules could not be applied (fail closed).
+    """
+    import ctypes
+
+    if not landlock_layer().active:
+        return False
+    abi = _landlock_abi()
+    libc = ctypes.CDLL(None, use_errno=True)
+    libc.syscall.restype = ctypes.c_long
+    fs = _FS_RIGHTS_BY_ABI[max(a for a in _FS_RIGHTS_BY_ABI if a <= abi)]
+    attr = (ctypes.c_uint64 * 3)(fs, 3 if abi >= 4 else 0, 3 if abi >= 6 else 0)
+    size = 8 * (1 + (abi >= 4) + (abi >= 6))
+    ruleset = libc.syscall(_LANDLOCK_CREATE_RULESET, ctypes.byref(attr), ctypes.c_size_t(size), ctypes.c_uint32(0))
+    if ruleset < 0:
+        raise RuntimeError(f"sandbox: landlock_create_ruleset failed: {os.strerror(ctypes.get_errno())}")
+
+    class PathBeneath(ctypes.Structure):
+        _pack_ = 1
+        _fields_ = [("allowed_access", ctypes.c_uint64), ("parent_fd", ctypes.c_int32)]
+
+    try:
+        read = _FS_EXECUTE | _FS_READ_FILE
+        for path, rights in [*((r, read | (0 if os.path.isfile(r) else _FS_READ_DIR)) for r in readable_roots()),
+                             (os.devnull, _FS_WRITE_FILE | _FS_READ_FILE)]:
+            fd = os.open(path, os.O_PATH | os.O_CLOEXEC)
+            try:
+                rule = PathBeneath(rights, fd)
+                if libc.syscall(_LANDLOCK_ADD_RULE, ruleset, _LANDLOCK_RULE_PATH_BENEATH, ctypes.byref(rule),
+                                ctypes.c_uint32(0)) < 0:
+                    raise RuntimeError(f"sandbox: landlock_add_rule({path}) failed: {os.strerror(ctypes.get_errno())}")
+            finally:
+                os.close(fd)
+        if libc.prctl(38, 1, 0, 0, 0) != 0:  # PR_SET_NO_NEW_PRIVS
+            raise RuntimeError("sandbox: PR_SET_NO_NEW_PRIVS failed")
+        if libc.syscall(_LANDLOCK_RESTRICT_SELF, ruleset, ctypes.c_uint32(0)) < 0:
+            raise RuntimeError(f"sandbox: landlock_restrict_self failed: {os.strerror(ctypes.get_errno())}")
+    finally:
+        os.close(ruleset)
+    return True
+
+
 def layers() -> list[Layer]:
     """Every isolation layer and whether it is active here."""
     return [
@@ -162,6 +254,7 @@ def layers() -> list[Layer]:
         Layer("audit-hook", True, "no writes outside the work dir, no subprocesses, sockets or signals"),
         Layer("resource-limits", True, "CPU, address space, file size, open files, processes, no core"),
         seccomp_layer(),
+        landlock_layer(),
         namespaces_layer(),
     ]
 
