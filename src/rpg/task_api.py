@@ -42,6 +42,7 @@ from rpg.domain.predicates import (
     SortedBy,
     Stack,
     TemporalMonitor,
+    UnorderedStack,
     Upright,
 )
 from rpg.domain.sampling import sample_scattered
@@ -52,7 +53,7 @@ __all__ = [
     "And", "Behind", "Between", "BlockTask", "ColoredCube", "Equation", "FarFrom", "GoalPatch", "Grid",
     "InCircle", "InFrontOf", "InLine", "InOrder", "InRegion", "LabelFacing", "LayersUniform", "LeftOf",
     "NextTo", "Not", "On", "OnPatch", "OnTable", "Piles", "Pose", "Pyramid", "Reads",
-    "RightOf", "SemanticCube", "SortedBy", "Stack", "TemporalMonitor", "Upright",
+    "RightOf", "SemanticCube", "SortedBy", "Stack", "TemporalMonitor", "UnorderedStack", "Upright",
     "circle_layout", "cluster_layout", "constants", "grid_layout", "line_layout",
     "pyramid_layout", "quat_mul", "sample_scattered", "stack_layout", "yaw_quat",
 ]

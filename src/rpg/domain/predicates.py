@@ -639,6 +639,7 @@ class Stack(Predicate):
     name: ClassVar[str] = "stack"
     swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
+    ordered: ClassVar[bool] = True
 
     def _evaluate(self, state):
         listed = [state[n] for n in self.objects]
@@ -646,6 +647,10 @@ class Stack(Predicate):
         children = [OnTable(actual[0].name).evaluate(state)]
         for lower, upper in itertools.pairwise(actual):
             children.append(On(upper.name, lower.name).evaluate(state))
+        if not self.ordered:
+            ok = all(c.satisfied for c in children)
+            return self._result(ok, f"stack of {', '.join(self.objects)} in any order {'holds' if ok else 'fails'}",
+                                children=children)
         order_ok = [_signature(x) for x in actual] == [_signature(x) for x in listed]
         children.append(PredicateResult(
             "stack_order", {"expected": list(self.objects)}, order_ok,
@@ -662,6 +667,23 @@ class Stack(Predicate):
 
     def describe(self):
         return "stack (bottom to top) " + ", ".join(self.objects)
+
+
+@dataclass(frozen=True, repr=False)
+class UnorderedStack(Stack):
+    """One vertical stack of ``objects`` in any order; the bottom rests on the table.
+
+    What "stack two blocks" or "a tower of three blocks" asks when the instruction names no
+    cube: which cube stands where is free (the issue "the front end ... exactly what was
+    said": a goal may not demand an order the words do not).  ``objects`` lists one order
+    that satisfies it (the goal configuration's), used to plan, never to judge.
+    """
+
+    name: ClassVar[str] = "unordered_stack"
+    ordered: ClassVar[bool] = False
+
+    def describe(self):
+        return "a stack of " + ", ".join(self.objects) + " in any order"
 
 
 @dataclass(frozen=True, repr=False)

@@ -33,6 +33,7 @@ from rpg.domain.layouts import (
 )
 from rpg.domain.palette import COLOR_ALIASES, GRADIENT_ORDER, PALETTE, RAINBOW_ORDER
 from rpg.domain.predicates import (
+    And,
     Behind,
     Between,
     Equation,
@@ -54,13 +55,14 @@ from rpg.domain.predicates import (
     RightOf,
     SortedBy,
     Stack,
+    UnorderedStack,
     region_bounds,
 )
 from rpg.domain.state import Pose
 from rpg.errors import BadInput
 from rpg.schema import clauses, lexicon
 from rpg.schema.accounting import UnaccountedMention, account
-from rpg.schema.builder import DEFAULT_COLORS, DEFAULT_PATCH_COLOR, Builder
+from rpg.schema.builder import DEFAULT_COLORS, DEFAULT_PATCH_COLOR, Builder, make_paraphrases
 from rpg.schema.edits import recolor
 from rpg.schema.model import RepairRecord, TaskSchema
 from rpg.schema.structures import STRUCTURE_RE
@@ -1953,6 +1955,32 @@ def _unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     return None
 
 
+def _free_unnamed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
+    """A stack none of whose cubes the instruction names by colour becomes an
+    :class:`~rpg.domain.predicates.UnorderedStack`: "stack two blocks on top of each other"
+    says nothing of which goes on top, so G may not demand an order (a policy that stacks
+    them the other way has done what it was told).  The summary and paraphrases then say
+    "in any order" too, so no instruction the policy is given states an order G lacks."""
+    named = {c for _, c in _color_mentions(f.text)}
+    colors = {a.name: a.color for a in schema.assets if a.kind == "colored_cube"}
+
+    def free(p):
+        if (type(p) is Stack and len(p.objects) > 1
+                and all(n in colors and colors[n] not in named for n in p.objects)):
+            return UnorderedStack(objects=p.objects)
+        return p
+
+    goal = schema.goal_predicate()
+    parts = goal.children() if isinstance(goal, And) else [goal]
+    freed = [free(p) for p in parts]
+    if freed == parts:
+        return schema
+    new_goal = And(freed) if isinstance(goal, And) else freed[0]
+    summary = "; ".join(p.describe() for p in freed)
+    return schema.model_copy(update={"goal": new_goal, "goal_summary": summary,
+                                     "paraphrases": make_paraphrases(summary)})
+
+
 def parse(instruction: str) -> TaskSchema:
     """Read an instruction into a TaskSchema.
 
@@ -1977,7 +2005,7 @@ def parse(instruction: str) -> TaskSchema:
             schema.repairs = b.repairs
             gap = _unaccounted(f, schema)
             if gap is None:
-                return schema
+                return _free_unnamed_orders(f, schema)
             first_gap = first_gap or gap  # a reading that drops a mention: try the next reader
     if first_gap is not None:
         raise first_gap
