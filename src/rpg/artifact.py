@@ -1,9 +1,21 @@
 """Task artifacts on disk: reading, writing, hashing and publishing a task directory.
 
-An artifact directory holds ``task.yaml`` (the schema, tags, provenance, mention accounting
-and content hash), ``code.py``, ``goal_state_code.py``, ``validation.log``,
-``validation.json``, ``initial.png`` and ``goal.png``.  Every pass that reads or writes one
-goes through this module; it imports nothing from the compiler or the steering layer.
+An artifact directory holds ``task.yaml`` (the schema, tags, provenance, mention accounting,
+file manifest and content hash), ``code.py``, ``goal_state_code.py``, ``validation.log``,
+``validation.json``, ``initial.png``, ``goal.png`` and, for a model's task, its record
+``llm_log.jsonl``.  Every pass that reads or writes one goes through this module; it imports
+nothing from the compiler or the steering layer.
+
+Two hashes cover the files:
+
+* ``content_hash``: task.yaml's fields, both code files and the model record (what the task
+  *is*, and what ``--replay`` rebuilds it from).  Reproducible: the same compile gives the
+  same hash, so a library manifest records it and ``rpg verify --expect`` compares it.
+* ``files`` in task.yaml (:func:`file_manifest`): the SHA-256 of every other file of the
+  directory, snapshots and validation logs included, which ``rpg verify`` checks
+  (:func:`check_files`: a changed, missing or unexpected file is named).  It is outside the
+  content hash, because snapshots depend on the renderer and logs carry times; nothing is
+  built or run from those files, and ``rpg validate`` / ``rpg render`` rewrite them.
 """
 
 from __future__ import annotations
@@ -52,6 +64,13 @@ MAX_ARTIFACT_FILE = 4 * 1024**2
 """Largest artifact text file read (task.yaml, code files, family.yaml), bytes."""
 
 TASK_CODE_FILES = ("code.py", "goal_state_code.py")
+TASK_FILE = "task.yaml"
+MODEL_RECORD = "llm_log.jsonl"
+"""The model's exchanges (:mod:`rpg.schema.llm`), part of the content hash when present."""
+MANIFEST_KEY = "files"
+"""task.yaml's file manifest: name -> SHA-256 of every file of the artifact but task.yaml."""
+MAX_MANIFEST_FILE = 256 * 1024**2
+"""Largest artifact file hashed for the manifest (snapshots included), bytes."""
 
 
 def read_bytes(path: Path, limit: int = MAX_ARTIFACT_FILE) -> bytes:
@@ -102,16 +121,143 @@ def task_sources(directory: Path) -> dict[str, str]:
 FILES_CHANGED = "artifact files changed since they were written (content hash differs from task.yaml)"
 
 
+def model_record(directory: Path) -> bytes | None:
+    """The bytes of the artifact's ``llm_log.jsonl``, or None when it has none.
+
+    Raises:
+        ArtifactError: the record is a link, not a regular file or oversized.
+    """
+    path = Path(directory) / MODEL_RECORD
+    return read_bytes(path, MAX_MANIFEST_FILE) if os.path.lexists(path) else None
+
+
 def rehash(directory: Path) -> tuple[TaskSchema, dict, dict[str, str], str]:
     """An artifact as it is on disk: its schema, task.yaml document, code text (read once)
-    and the content hash recomputed from them (compare with ``doc["content_hash"]``).
+    and the content hash recomputed from them and the model record, if any (compare with
+    ``doc["content_hash"]``).
 
     Raises:
         ArtifactError: a missing, linked, oversized, non-UTF-8 or malformed file.
     """
     schema, doc = load_artifact(directory)
     sources = task_sources(directory)
-    return schema, doc, sources, content_hash(doc, sources["code.py"], sources["goal_state_code.py"])
+    return schema, doc, sources, content_hash(doc, sources["code.py"], sources["goal_state_code.py"],
+                                              model_record(directory))
+
+
+def _sha256(data: bytes) -> str:
+    return hashlib.sha256(data).hexdigest()
+
+
+def _scan(directory: Path) -> tuple[dict[str, str], list[str]]:
+    """(name -> SHA-256 of every regular file but task.yaml, names of the entries that are
+    not regular files: links, directories, devices)."""
+    files: dict[str, str] = {}
+    odd: list[str] = []
+    with os.scandir(directory) as it:
+        entries = sorted(it, key=lambda e: e.name)
+    for entry in entries:
+        if entry.name == TASK_FILE:
+            continue
+        if entry.is_symlink() or not entry.is_file(follow_symlinks=False):
+            odd.append(entry.name)
+            continue
+        files[entry.name] = _sha256(read_bytes(Path(entry.path), MAX_MANIFEST_FILE))
+    return files, odd
+
+
+def file_manifest(directory: Path) -> dict[str, str]:
+    """SHA-256 of every file of an artifact directory except task.yaml, by name.
+
+    Raises:
+        ArtifactError: an entry is a link, a directory or another non-regular file, or a
+            file is unreadable or larger than :data:`MAX_MANIFEST_FILE`.
+    """
+    files, odd = _scan(Path(directory))
+    if odd:
+        raise ArtifactError(f"{Path(directory) / odd[0]} is not a regular file; an artifact holds only files")
+    return files
+
+
+def check_files(directory: Path, doc: dict) -> list[str]:
+    """Compare an artifact's files with the manifest its task.yaml ``doc`` records; one
+    problem per kind of difference, each naming the files (empty when they agree)."""
+    directory = Path(directory)
+    recorded = doc.get(MANIFEST_KEY)
+    if not isinstance(recorded, dict) or not all(isinstance(k, str) and isinstance(v, str) for k, v in recorded.items()):
+        return [f"{TASK_FILE} records no file manifest ('{MANIFEST_KEY}'), so no file beside it is covered: "
+                "recompile, or run 'rpg validate' on a copy you trust to record the files as they are"]
+    try:
+        current, odd = _scan(directory)
+    except (ArtifactError, OSError) as exc:
+        return [f"cannot hash the artifact's files: {exc}"]
+    problems = []
+    changed = sorted(n for n in set(recorded) & set(current) if recorded[n] != current[n])
+    missing = sorted(set(recorded) - set(current) - set(odd))
+    extra = sorted(set(current) - set(recorded))
+    if changed:
+        problems.append(f"changed since the artifact was written (SHA-256 differs from {TASK_FILE}'s manifest): {', '.join(changed)}")
+    if missing:
+        problems.append(f"missing (recorded in {TASK_FILE}'s manifest): {', '.join(missing)}")
+    if extra:
+        problems.append(f"unexpected files (not in {TASK_FILE}'s manifest): {', '.join(extra)}")
+    if odd:
+        problems.append(f"not regular files (links or directories; an artifact holds only files): {', '.join(odd)}")
+    return problems
+
+
+def record_files(directory: Path, names: list[str] | None = None) -> None:
+    """Re-record files of an artifact in task.yaml's manifest after rpg rewrote them
+    (``rpg validate``'s logs, ``rpg render``'s snapshots): only ``names``, or every file
+    when ``names`` is None or task.yaml has no manifest yet.  The content hash is unchanged.
+
+    Raises:
+        ArtifactError: task.yaml or a named file is missing, linked, oversized or malformed.
+    """
+    directory = Path(directory)
+    doc = yamlio.load(read_text(directory / TASK_FILE))
+    if not isinstance(doc, dict):
+        raise ArtifactError(f"{directory / TASK_FILE} is malformed: not a mapping")
+    recorded = doc.get(MANIFEST_KEY)
+    if names is None or not isinstance(recorded, dict):
+        files = file_manifest(directory)
+    else:
+        files = dict(recorded)
+        for name in names:
+            files[name] = _sha256(read_bytes(directory / name, MAX_MANIFEST_FILE))
+    write_file(directory / TASK_FILE, yamlio.dump(_with_manifest(doc, dict(sorted(files.items())))))
+
+
+def _with_manifest(doc: dict, files: dict[str, str]) -> dict:
+    """``doc`` with its manifest set, placed just before the content hash."""
+    out = {k: v for k, v in doc.items() if k not in (MANIFEST_KEY, "content_hash")}
+    out[MANIFEST_KEY] = files
+    if "content_hash" in doc:
+        out["content_hash"] = doc["content_hash"]
+    return out
+
+
+def check_model_record(directory: Path, name: str, data: bytes) -> None:
+    """Refuse a model record read from an artifact directory unless it is the artifact's own,
+    unchanged: ``llm_log.jsonl``, its SHA-256 the one task.yaml's manifest records and the
+    content hash (which covers it) intact.  ``data`` is the bytes as read, once.
+
+    Raises:
+        ArtifactError: anything else (one line naming the file).
+    """
+    directory = Path(directory)
+    where = directory / name
+    _, doc = load_artifact(directory)
+    recorded = doc.get(MANIFEST_KEY)
+    if name != MODEL_RECORD or not isinstance(recorded, dict) or name not in recorded:
+        raise ArtifactError(f"{where} is not the model record in {TASK_FILE}'s file manifest; refusing to replay it")
+    if _sha256(data) != recorded[name]:
+        raise ArtifactError(f"{where} was changed since the artifact was written (its SHA-256 differs from "
+                            f"{TASK_FILE}'s manifest); refusing to replay it")
+    sources = task_sources(directory)
+    if content_hash(doc, sources["code.py"], sources["goal_state_code.py"], data) != doc.get("content_hash"):
+        raise ArtifactError(f"{directory} does not match its content hash ({TASK_FILE}, the code or {name} "
+                            "changed since it was written); refusing to replay its model record")
 
 
 def write_file(path: Path, data: str | bytes) -> None:
@@ -158,12 +304,16 @@ def gates_passed(gates: list[dict]) -> bool:
             and all(status in ("pass", "skipped") for status in ran.values()))
 
 
-def content_hash(task_doc: dict, code: str, goal_code: str) -> str:
-    """SHA-256 over the canonical task.yaml fields (no hash, no timings) and the two code files."""
-    doc = {k: v for k, v in task_doc.items() if k != "content_hash"}
+def content_hash(task_doc: dict, code: str, goal_code: str, record: bytes | None = None) -> str:
+    """SHA-256 over the canonical task.yaml fields (not the hash itself, not the file
+    manifest), the two code files and the model record's bytes when there is one (an
+    artifact without one hashes as before the record was covered)."""
+    doc = {k: v for k, v in task_doc.items() if k not in ("content_hash", MANIFEST_KEY)}
     h = hashlib.sha256()
     h.update(json.dumps(doc, sort_keys=True, separators=(",", ":")).encode())
     h.update(b"\0" + code.encode() + b"\0" + goal_code.encode())
+    if record is not None:
+        h.update(b"\0" + MODEL_RECORD.encode() + b"\0" + _sha256(record).encode())
     return h.hexdigest()
 
 
@@ -206,18 +356,34 @@ def task_document(schema: TaskSchema, seed: int, backend: str, model: str | None
 
 
 def write_artifact_files(directory: Path, schema: TaskSchema, seed: int, backend: str, model: str | None,
-                         gates: list[dict], log: list[str], author: str | None = None) -> str:
-    """Write task.yaml, validation.log and validation.json beside the code; return the content hash."""
+                         gates: list[dict], log: list[str], author: str | None = None,
+                         extra_files: dict[str, str] | None = None) -> str:
+    """Write the ``extra_files`` (name -> text: the model record ``llm_log.jsonl``),
+    validation.log and validation.json beside the code, then task.yaml with the manifest of
+    every file (written last); return the content hash (it covers the model record)."""
+    directory = Path(directory)
+    for fname, text in sorted((extra_files or {}).items()):
+        if fname == TASK_FILE or Path(fname).name != fname:
+            raise ValueError(f"an extra artifact file must be a plain name other than {TASK_FILE}, not {fname!r}")
+        write_file(directory / fname, text)
+    _write_logs(directory, log, gates)
     sources = task_sources(directory)
     doc = task_document(schema, seed, backend, model, gates, author)
-    digest = content_hash(doc, sources["code.py"], sources["goal_state_code.py"])
+    digest = content_hash(doc, sources["code.py"], sources["goal_state_code.py"], model_record(directory))
+    doc[MANIFEST_KEY] = file_manifest(directory)
     doc["content_hash"] = digest
-    write_file(directory / "task.yaml", yamlio.dump(doc))
-    write_logs(directory, log, gates)
+    write_file(directory / TASK_FILE, yamlio.dump(doc))
     return digest
 
 
 def write_logs(directory: Path, log: list[str], gates: list[dict]) -> None:
+    """Rewrite an artifact's ``validation.log`` and ``validation.json`` (``rpg validate``)
+    and record them in task.yaml's manifest."""
+    _write_logs(directory, log, gates)
+    record_files(directory, ["validation.log", "validation.json"])
+
+
+def _write_logs(directory: Path, log: list[str], gates: list[dict]) -> None:
     """``validation.log`` (one line per gate and repair attempt) and ``validation.json``."""
     write_file(directory / "validation.log", "\n".join(log) + "\n")
     write_file(directory / "validation.json", json.dumps(

@@ -598,6 +598,7 @@ def render_cmd(
             if not out_dir.is_dir():
                 _fail(f"{out_dir} is not a directory")
             paths = robot_snapshots(directory, embodiment, seed, out_dir)
+            _record_written(out_dir, paths.values())
         for k, v in paths.items():
             out.print(f"{k}: {v}")
         return
@@ -605,8 +606,20 @@ def render_cmd(
         _fail("-o is for robot snapshots; give --embodiment too")
     from rpg.validate.verdicts import write_snapshots
 
-    for k, v in write_snapshots(_artifact_task(directory), seed, directory).items():
+    written = write_snapshots(_artifact_task(directory), seed, directory)
+    with _reported_errors():
+        _record_written(directory, written.values())
+    for k, v in written.items():
         out.print(f"{k}: {v or 'skipped (no headless OpenGL)'}")
+
+
+def _record_written(directory: Path, paths) -> None:
+    """Record files rpg just wrote into a task artifact in its task.yaml file manifest."""
+    from rpg.artifact import TASK_FILE, record_files
+
+    names = [Path(p).name for p in paths if p and Path(p).parent == Path(directory)]
+    if names and (Path(directory) / TASK_FILE).is_file():
+        record_files(directory, names)
 
 
 @app.command("play")

@@ -126,10 +126,11 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
     """Passes 2-4 on a schema: generate, validate, repair; write the artifact atomically.
 
     ``extra_files`` (name -> text, or a callable returning that once the code exists, e.g.
-    the model record ``llm_log.jsonl``) are written into the artifact too; they are not part
-    of its content hash.  ``coder`` (an :class:`rpg.codegen.llm.LLMCoder`) writes the code
-    instead of the builtin emitter, and its fix agents repair it.  ``author`` (who wrote the
-    task) is recorded in the provenance when given.  ``enabled`` names optional gates to run
+    the model record ``llm_log.jsonl``) are written into the artifact too, in its file
+    manifest (the model record in its content hash too).  ``coder`` (an
+    :class:`rpg.codegen.llm.LLMCoder`) writes the code instead of the builtin emitter, and
+    its fix agents repair it.  ``author`` (who wrote the task) is recorded in the provenance
+    when given.  ``enabled`` names optional gates to run
     (:data:`rpg.validate.gates.OPTIONAL_GATES`).
     """
     out_dir = Path(out_dir)
@@ -186,10 +187,8 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
             schema = repaired
         valid = gates_passed(gates)
         log.append("result: VALID" if valid else "result: REJECTED")
-        digest = write_artifact_files(tmp, schema, seed, backend, model, gates, log, author)
         extras = extra_files() if callable(extra_files) else extra_files
-        for fname, text in sorted((extras or {}).items()):
-            (tmp / fname).write_text(text)
+        digest = write_artifact_files(tmp, schema, seed, backend, model, gates, log, author, extras)
         slug = name or schema.name
         target = out_dir / slug if valid else out_dir / ".rejected" / slug
         atomic_replace(tmp, target)

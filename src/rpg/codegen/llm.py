@@ -82,8 +82,10 @@ def _tags_score(want: dict, have: dict) -> tuple:
 
 def retrieve_references(schema: TaskSchema, library: str | Path | None, k: int = REFERENCES_PER_PROMPT) -> list[dict]:
     """The ``k`` library tasks closest to the schema by asset class, reasoning type,
-    complexity and action primitives (ties by name); each ``{"name", "tags", "code", "goal_state_code"}``."""
-    from rpg.artifact import ArtifactError, load_artifact
+    complexity and action primitives (ties by name); each ``{"name", "tags", "code", "goal_state_code"}``.
+    Only artifacts whose files match their content hash are shown, their code as hashed
+    (read once, no links)."""
+    from rpg.artifact import ArtifactError, rehash
 
     if library is None or not Path(library).is_dir():
         return []
@@ -94,14 +96,16 @@ def retrieve_references(schema: TaskSchema, library: str | Path | None, k: int =
         if not (artifact / "task.yaml").is_file():
             continue
         try:
-            _, doc = load_artifact(artifact)
+            _, doc, sources, digest = rehash(artifact)
         except ArtifactError:
             continue
+        if digest != doc.get("content_hash"):
+            continue
         tags = doc.get("tags", {})
-        found.append((_tags_score(want, tags), d.name, artifact, tags))
+        found.append((_tags_score(want, tags), d.name, sources, tags))
     found.sort(key=lambda t: (tuple(-x for x in t[0]), t[1]))
-    return [{"name": name, "tags": tags, "code": (a / "code.py").read_text(), "goal_state_code": (a / "goal_state_code.py").read_text()}
-            for _, name, a, tags in found[:k]]
+    return [{"name": name, "tags": tags, "code": src["code.py"], "goal_state_code": src["goal_state_code.py"]}
+            for _, name, src, tags in found[:k]]
 
 
 def _prompt(schema: TaskSchema, references: list[dict]) -> str:

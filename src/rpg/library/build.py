@@ -308,8 +308,9 @@ def _publish(report: dict, tmp: Path, base: Path, force: bool) -> None:
 
 def _recorded_hash(path: Path) -> str | None:
     """The hash of the task artifact or family at ``path``, recomputed from its files; None
-    when there is none or its files no longer match their recorded hashes."""
-    from rpg.artifact import ArtifactError, rehash
+    when there is none or its files no longer match their recorded hashes (the content hash
+    or the file manifest)."""
+    from rpg.artifact import ArtifactError, check_files, rehash
     from rpg.steer.family import Family, is_family
 
     try:
@@ -318,7 +319,7 @@ def _recorded_hash(path: Path) -> str | None:
             intact = all(v["ok"] for v in family.verify())
             return family.load().digest() if intact else None
         _, doc, _, digest = rehash(path)
-        return digest if digest == doc.get("content_hash") else None
+        return digest if digest == doc.get("content_hash") and not check_files(path, doc) else None
     except (ArtifactError, OSError, ValueError, KeyError, IndexError):
         return None
 

@@ -15,6 +15,7 @@ litellm is imported only when a model is actually called.
 from __future__ import annotations
 
 import json
+import os
 import re
 import textwrap
 from dataclasses import dataclass, field
@@ -23,6 +24,7 @@ from pathlib import Path
 from pydantic import ValidationError
 
 from rpg._version import __version__
+from rpg.artifact import MODEL_RECORD
 from rpg.errors import BadInput, ProviderFailure, TaskInvalid
 from rpg.schema.model import TaskSchema, json_schema
 
@@ -32,7 +34,8 @@ MAX_SCHEMA_RETRIES = 3
 REQUEST_TIMEOUT_S = 120.0
 """Timeout of one model request, s."""
 
-LOG_FILE = "llm_log.jsonl"
+LOG_FILE = MODEL_RECORD
+"""The record's name in an artifact (in its content hash and file manifest: :mod:`rpg.artifact`)."""
 
 
 class ProviderError(ProviderFailure):
@@ -119,15 +122,28 @@ class LLMClient:
 def load_record(path: str | Path) -> tuple[dict, list[dict]]:
     """Read ``llm_log.jsonl`` (or the artifact directory holding it): (header, exchanges).
 
+    A record inside a task artifact (a directory with ``task.yaml``) is replayed only if it
+    is that artifact's own, unchanged (:func:`rpg.artifact.check_model_record`: its SHA-256
+    in task.yaml's file manifest, the content hash intact), so a tampered record is refused
+    before anything is built from it.  A record file outside any artifact is replayed as
+    given: it is the caller's own.
+
     Raises:
-        ReplayError: missing or malformed.
+        ReplayError: missing, malformed, or not the artifact's recorded model record.
     """
+    from rpg.artifact import MAX_MANIFEST_FILE, ArtifactError, check_model_record, read_bytes
+
     p = Path(path)
     if p.is_dir():
         p = p / LOG_FILE
     try:
-        rows = [json.loads(line) for line in p.read_text().splitlines() if line.strip()]
-    except (OSError, json.JSONDecodeError) as exc:
+        data = read_bytes(p, MAX_MANIFEST_FILE)
+        if os.path.lexists(p.parent / "task.yaml"):
+            check_model_record(p.parent, p.name, data)
+        rows = [json.loads(line) for line in data.decode("utf-8").splitlines() if line.strip()]
+    except ArtifactError as exc:
+        raise ReplayError(str(exc)) from None
+    except (OSError, ValueError) as exc:
         raise ReplayError(f"cannot read the model record {p}: {str(exc).splitlines()[0]}") from None
     if not rows or rows[0].get("type") != "header" or "instruction" not in rows[0]:
         raise ReplayError(f"{p} is not an rpg model record (no header line)")

@@ -9,7 +9,8 @@ A family is a directory::
 
 Paper, appendix "Version History Representation".  Hashes:
 
-* ``content_hash``: the artifact's hash (task.yaml fields and both code files).
+* ``content_hash``: the artifact's hash (task.yaml fields, both code files and the model
+  record ``llm_log.jsonl`` when there is one), chained by the lineage hash.
 * ``code_hash``: SHA-256 of the version's code files as they are on disk (``code.py``, a
   NUL byte, ``goal_state_code.py``).
 * ``task_hash``: SHA-256 of the code generated from the version's schema with its language
@@ -22,7 +23,10 @@ Paper, appendix "Version History Representation".  Hashes:
   the chain from that version on (:meth:`Family.verify`).
 * ``files``: SHA-256 of every file of the version (logs, snapshots, model records too),
   checked by :meth:`Family.verify` but not chained (logs carry times; snapshots depend on
-  the renderer).
+  the renderer).  Each version's task.yaml records the same files in its own manifest
+  (:func:`rpg.artifact.check_files`), which :meth:`Family.verify` checks too: a changed,
+  missing or unexpected file is named.  What is chained, the content hash, covers every
+  file anything is built or run from (task.yaml, the code, the model record).
 * :meth:`FamilyHistory.digest`: SHA-256 over the family's name, head and every lineage
   hash: the one hash a library manifest records and ``rpg verify --expect`` compares, so
   a dropped newest version, a moved head or a renamed family are caught too.
@@ -55,6 +59,7 @@ from rpg.artifact import (
     FILES_CHANGED,
     ArtifactError,
     atomic_replace,
+    check_files,
     load_artifact,
     read_bytes,
     read_text,
@@ -278,6 +283,7 @@ class Family:
                 schema, doc, sources, actual = rehash(d)
                 if actual != doc.get("content_hash"):
                     problems.append(FILES_CHANGED)
+                problems += check_files(d, doc)
                 if actual != v.content_hash:
                     problems.append("artifact does not match the content hash recorded in the history")
                 if v.task_hash:
@@ -324,6 +330,7 @@ def verify_target(path: Path, expect: str | None = None) -> dict:
         _, doc, _, digest = rehash(path)
         if digest != doc.get("content_hash"):
             problems.append(FILES_CHANGED)
+        problems += check_files(path, doc)
         versions, kind = [], "task"
     if expect is not None and digest != expect.strip().lower():
         problems.append(f"hash {digest[:16]}... differs from the expected {expect.strip()[:16]}... "
