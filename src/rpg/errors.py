@@ -10,7 +10,9 @@ code  meaning
 1     the task is invalid: validation failed after repair, task code was rejected or
       crashed, a model gave no valid answer within its retry budget (:class:`TaskInvalid`)
 2     bad input or usage: an instruction the front end cannot read, an edit that
-      cannot be applied, a malformed artifact, family, manifest or session (:class:`BadInput`)
+      cannot be applied, a malformed artifact, family, manifest or session (:class:`BadInput`);
+      data from a peer rpg reads but does not trust (a policy server's message, a dataset,
+      a run directory) that is malformed, too large or not what was asked for (:class:`PeerError`)
 3     the model provider failed: network, authentication, rate limit (:class:`ProviderFailure`)
 4     the machine failed: disk full, permission denied, a file system error (``OSError``);
       nothing half-written is left in place
@@ -33,6 +35,14 @@ class RpgError(Exception):
 
 class BadInput(RpgError, ValueError):
     """The user's input (instruction, edit, file, option) cannot be used (exit code 2)."""
+
+    exit_code = EXIT_BAD_INPUT
+
+
+class PeerError(BadInput):
+    """What a peer sent is refused (exit code 2): a policy server's message, a dataset file or
+    a run directory that is malformed, declares more than a bound allows, or is not what rpg
+    asked for.  Raised before anything is allocated or written on the peer's word."""
 
     exit_code = EXIT_BAD_INPUT
 

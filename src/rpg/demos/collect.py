@@ -6,12 +6,23 @@ successful episodes, ``episodes`` per task (seeds 0, 1, ... are tried in order, 
 committed in (task, seed) order, so the dataset is the same for any number of jobs.
 :func:`replay_dataset` re-runs every recorded episode's actions from its seed and checks
 that it succeeds again and ends in the recorded state.
+
+A dataset to replay is a peer's data, not a program: the task path recorded in it is never
+loaded.  Each episode's task is found by its recorded content hash among the tasks and family
+versions of a library the user names (:func:`library_tasks`; ``rpg demos --replay DATASET
+--library DIR``), loading it recomputes that hash, and an episode whose hash no task of the
+library has is refused before anything is replayed.  The readers check what the dataset
+declares before reading it (:mod:`rpg.demos.robomimic`: shapes, dtypes and storage of the
+HDF5 datasets; :mod:`rpg.demos.lerobot`: the parquet file's size, row count and columns), and
+every episode's provenance (:func:`check_provenance`) against bounds.
 """
 
 from __future__ import annotations
 
 import concurrent.futures as cf
+import math
 import multiprocessing
+import re
 import shutil
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -19,10 +30,9 @@ from pathlib import Path
 
 import numpy as np
 
-from rpg.demos.lerobot import LeRobotWriter, read_episode_actions
+from rpg.demos.lerobot import LeRobotWriter
 from rpg.demos.record import Episode, close_cached_env, record_episode
-from rpg.errors import BadInput
-from rpg.jsonl import read_jsonl
+from rpg.errors import BadInput, PeerError
 
 MAX_SEED_FACTOR = 3
 """At most this many times ``episodes`` seeds are tried per task."""
@@ -33,6 +43,21 @@ FORMATS = ("lerobot", "hdf5")
 
 REPLAY_POSE_TOL = 1e-6
 """Largest difference (m, or quaternion units) between a replay's final poses and the recorded ones."""
+
+MAX_EPISODE_STEPS = 100_000
+"""Most actions a replayed episode may hold (T); the longest step limit of a library task
+(:func:`rpg.env.core.episode_step_limit`) is a few thousand."""
+
+MAX_EPISODES = 100_000
+"""Most episodes a replayed dataset may hold."""
+
+MAX_TEXT = 10_000
+"""Longest recorded instruction, embodiment or task name replay accepts, characters."""
+
+MAX_POSES = 1_000
+"""Most bodies in an episode's recorded final poses."""
+
+_HASH = re.compile(r"[0-9a-f]{64}")
 
 
 def expand_targets(target: str | Path) -> list[str]:
@@ -159,12 +184,84 @@ class ReplayResult:
         return self.success and self.max_pose_error <= REPLAY_POSE_TOL
 
 
-def replay_actions(task: str, task_hash: str, seed: int, embodiment: str, instruction: str,
-                   actions: np.ndarray, final_poses: dict) -> tuple[bool, float]:
-    """Re-run recorded ``actions`` from ``seed``; (success, largest final-pose difference).
+def library_tasks(library: str | Path) -> dict[str, Path]:
+    """Content hash -> task directory, for every task and family version directly under
+    ``library`` (a directory, or a manifest file: its directory).
+
+    A plain task is indexed by the ``content_hash`` its ``task.yaml`` records, a family's
+    versions by the hashes its ``family.yaml`` records (each version in ``vN/``).  This is
+    only an index: loading a task recomputes its hash (:func:`replay_actions` refuses a
+    mismatch).  Entries that cannot be read are skipped.
 
     Raises:
-        BadInput: the task's content hash differs from the recorded one.
+        BadInput: ``library`` is not a directory (nor a manifest in one).
+    """
+    from rpg import yamlio
+    from rpg.artifact import ArtifactError, read_text
+    from rpg.steer.family import Family, is_family
+
+    root = Path(library)
+    if root.is_file() and root.suffix in (".yaml", ".yml"):
+        root = root.parent
+    if not root.is_dir():
+        raise BadInput(f"--library {library} is not a directory of tasks and families")
+    out: dict[str, Path] = {}
+    for d in sorted(p for p in root.iterdir() if p.is_dir() and not p.is_symlink() and not p.name.startswith(".")):
+        try:
+            if is_family(d):
+                fam = Family(d)
+                for v in fam.load().versions:
+                    out.setdefault(v.content_hash, fam.version_dir(v.version_id))
+            elif (d / "task.yaml").is_file():
+                doc = yamlio.load(read_text(d / "task.yaml"))
+                if isinstance(doc, dict) and isinstance(doc.get("content_hash"), str):
+                    out.setdefault(doc["content_hash"], d)
+        except (BadInput, ArtifactError, OSError, ValueError):
+            continue
+    return out
+
+
+def check_provenance(doc: object, where: str) -> dict:
+    """One episode's provenance as a dataset records it, checked against bounds: ``task_hash``
+    (64 hex digits), ``seed`` (an integer in [0, 2**32)), ``embodiment``, ``instruction`` and
+    ``task_name`` (strings of at most :data:`MAX_TEXT` characters; ``task_name`` optional),
+    ``final_poses`` (at most :data:`MAX_POSES` names, each 7 finite numbers: position, m, and
+    quaternion).  The recorded ``task`` path is ignored.
+
+    Returns:
+        The checked fields (``task_name`` defaults to ``"?"``).
+
+    Raises:
+        PeerError: a field missing, of another type, or out of bounds (``where`` names the episode).
+    """
+    if not isinstance(doc, dict):
+        raise PeerError(f"{where}: the episode record is not a map")
+    h, seed = doc.get("task_hash"), doc.get("seed")
+    if not isinstance(h, str) or not _HASH.fullmatch(h):
+        raise PeerError(f"{where}: task_hash is not a content hash (64 hex digits)")
+    if type(seed) is not int or not 0 <= seed < 2**32:
+        raise PeerError(f"{where}: seed is not an integer in [0, 2**32)")
+    for key in ("embodiment", "instruction", "task_name"):
+        value = doc.get(key, "?" if key == "task_name" else None)
+        if not isinstance(value, str) or len(value) > MAX_TEXT:
+            raise PeerError(f"{where}: {key} is not a string of at most {MAX_TEXT} characters")
+    poses = doc.get("final_poses")
+    if (not isinstance(poses, dict) or len(poses) > MAX_POSES
+            or not all(isinstance(k, str) and len(k) <= MAX_TEXT and isinstance(v, list) and len(v) == 7
+                       and all(type(x) in (int, float) and math.isfinite(x) for x in v) for k, v in poses.items())):
+        raise PeerError(f"{where}: final_poses is not a map of at most {MAX_POSES} names to 7 finite numbers")
+    return {"task_hash": h, "seed": seed, "embodiment": doc["embodiment"], "instruction": doc["instruction"],
+            "task_name": doc.get("task_name", "?"), "final_poses": poses}
+
+
+def replay_actions(task: str | Path, task_hash: str, seed: int, embodiment: str, instruction: str,
+                   actions: np.ndarray, final_poses: dict) -> tuple[bool, float]:
+    """Re-run recorded ``actions`` from ``seed`` in the task at ``task`` (a directory rpg
+    chose, never one a dataset names); (success, largest final-pose difference).
+
+    Raises:
+        BadInput: the task's content hash differs from the recorded one, or the recorded
+            instruction is not one of the task's.
     """
     from rpg.env.core import BlockTaskEnv
 
@@ -192,33 +289,58 @@ def replay_actions(task: str, task_hash: str, seed: int, embodiment: str, instru
         env.close()
 
 
-def replay_dataset(root: str | Path, progress: Callable[[ReplayResult], None] | None = None) -> list[ReplayResult]:
-    """Replay every episode of a dataset written by :func:`collect_demos`.
+def replay_dataset(root: str | Path, progress: Callable[[ReplayResult], None] | None = None,
+                   library: str | Path = "library") -> list[ReplayResult]:
+    """Replay every episode of a dataset written by :func:`collect_demos`, each in the task of
+    ``library`` with its recorded content hash (:func:`library_tasks`); the task path the
+    dataset records is not used.
+
+    Every episode's provenance is read and checked, and its task found, before the first is
+    replayed; its actions are read (bounded: at most :data:`MAX_EPISODE_STEPS` by 7 floats)
+    just before it is.
 
     Raises:
-        BadInput: not a dataset, or a task changed since recording.
+        BadInput: not a dataset, ``library`` is not a directory, no task of ``library`` has an
+            episode's content hash, or a task changed since recording.
+        PeerError: the dataset declares something out of bounds or malformed.
     """
-    from rpg.demos.robomimic import dataset_file, read_demos
+    from rpg.demos.lerobot import read_episode_actions, read_episodes
+    from rpg.demos.robomimic import dataset_file, read_demo_actions, read_demos
 
     root = Path(root)
-    out = []
     h5 = dataset_file(root)
     if h5 is not None:
-        for demo in read_demos(h5):
-            ok, err = replay_actions(demo["task"], demo["task_hash"], demo["seed"], demo["embodiment"],
-                                     demo["instruction"], demo["actions"], demo["final_poses"])
-            out.append(ReplayResult(demo["episode_index"], ok, err))
-            if progress:
-                progress(out[-1])
-        return out
-    if (root / "meta" / "info.json").is_file():
-        rows = read_jsonl(root / "meta" / "episodes.jsonl")
-        for row in rows:
-            actions = read_episode_actions(root, row["episode_index"])
-            ok, err = replay_actions(row["task"], row["task_hash"], row["seed"], row["embodiment"],
-                                     row["instruction"], actions, row["final_poses"])
-            out.append(ReplayResult(row["episode_index"], ok, err))
-            if progress:
-                progress(out[-1])
-        return out
-    raise BadInput(f"{root} is not a dataset written by rpg demos (no meta/info.json or demo.hdf5)")
+        episodes = read_demos(h5, max_episodes=MAX_EPISODES, max_steps=MAX_EPISODE_STEPS)
+        where = str(h5)
+
+        def actions_of(number: int) -> np.ndarray:
+            return read_demo_actions(h5, number, max_steps=MAX_EPISODE_STEPS)
+    elif (root / "meta" / "info.json").is_file():
+        episodes = read_episodes(root, max_episodes=MAX_EPISODES)
+        where = str(root)
+
+        def actions_of(number: int) -> np.ndarray:
+            return read_episode_actions(root, number, max_steps=MAX_EPISODE_STEPS)
+    else:
+        raise BadInput(f"{root} is not a dataset written by rpg demos (no meta/info.json or demo.hdf5)")
+    index = library_tasks(library)
+    plan = []
+    for i, ep in enumerate(episodes):
+        number = ep.get("episode_index") if isinstance(ep, dict) else None
+        if type(number) is not int or number < 0:
+            raise PeerError(f"{where}: episode record {i} has no non-negative episode_index")
+        prov = check_provenance(ep, f"{where} episode {number}")
+        task = index.get(prov["task_hash"])
+        if task is None:
+            raise BadInput(f"no task in {library} has content hash {prov['task_hash'][:12]} (episode {number} of "
+                           f"{where}, recorded as {prov['task_name'][:80]!r}); give the library it was recorded "
+                           "from with --library")
+        plan.append((number, task, prov))
+    out = []
+    for number, task, prov in plan:
+        ok, err = replay_actions(task, prov["task_hash"], prov["seed"], prov["embodiment"], prov["instruction"],
+                                 actions_of(number), prov["final_poses"])
+        out.append(ReplayResult(number, ok, err))
+        if progress:
+            progress(out[-1])
+    return out

@@ -16,6 +16,11 @@ appended to ``meta/episodes.jsonl``; that line is the commit.  :meth:`LeRobotWri
 removes the files of an episode without a line (torn by a kill), so a run resumes where the
 last committed episode ended.  ``meta/rpg_attempts.jsonl`` records every attempt (failed
 ones too) so a resumed run does not retry them.
+
+Replay reads a dataset as a peer's data (:func:`read_episodes`, :func:`read_episode_actions`):
+no symbolic links below the dataset directory, sizes checked before reading, and an
+episode's parquet footer (row count, ``action`` column type and declared size) checked
+before its actions are materialised.
 """
 
 from __future__ import annotations
@@ -33,7 +38,7 @@ from rpg.demos.log import discard_failed, log_attempt
 from rpg.demos.record import ACTION_NAMES, STATE_NAMES, Episode
 from rpg.domain import constants as C
 from rpg.env.video import VIDEO_CODEC
-from rpg.errors import BadInput
+from rpg.errors import BadInput, PeerError
 from rpg.jsonl import append_jsonl, read_jsonl, rewrite_jsonl
 
 CODEBASE_VERSION = "v2.1"
@@ -210,7 +215,100 @@ class LeRobotWriter:
         })
 
 
-def read_episode_actions(root: str | Path, index: int) -> np.ndarray:
-    """The recorded actions (T, 7) float32 of episode ``index``."""
-    table = pq.read_table(Path(root) / DATA_PATH.format(episode_chunk=index // CHUNK_SIZE, episode_index=index))
-    return np.array(table.column("action").to_pylist(), np.float32).reshape(-1, len(ACTION_NAMES))
+MAX_META_BYTES = 256 * 1024**2
+"""Largest ``meta/episodes.jsonl`` replay reads, bytes (a line is ~1 KB)."""
+
+MAX_PARQUET_BYTES = 64 * 1024**2
+"""Largest episode parquet file replay reads, and most bytes its ``action`` column may
+declare uncompressed (an episode of 100000 steps is ~10 MB), bytes."""
+
+
+def _peer_file(root: Path, rel: str, limit: int) -> bytes:
+    """The bytes of ``root/rel``, a regular file of at most ``limit`` bytes reached through no
+    symbolic link below ``root``.
+
+    Raises:
+        PeerError: a symbolic link on the way, not a regular file, or too large.
+    """
+    from rpg.artifact import ArtifactError, read_bytes
+
+    here = root
+    for part in Path(rel).parts:
+        here = here / part
+        if here.is_symlink():
+            raise PeerError(f"{here} is a symbolic link; replay reads a dataset's own files only")
+    try:
+        return read_bytes(here, limit)
+    except ArtifactError as exc:
+        raise PeerError(str(exc)) from None
+
+
+def read_episodes(root: str | Path, max_episodes: int = 100_000) -> list[dict]:
+    """The committed episode lines of a dataset's ``meta/episodes.jsonl`` (up to a torn last
+    line), read only if the file is at most :data:`MAX_META_BYTES`; none when it is missing.
+
+    Raises:
+        PeerError: a symbolic link, too large, a line that is not a map, or more than
+            ``max_episodes`` lines.
+    """
+    root = Path(root)
+    if not (root / "meta" / "episodes.jsonl").exists():
+        return []
+    raw = _peer_file(root, "meta/episodes.jsonl", MAX_META_BYTES)
+    out = []
+    for line in raw.split(b"\n"):
+        if not line.strip():
+            continue
+        try:
+            doc = json.loads(line)
+        except ValueError:
+            break  # a torn last line (jsonl.read_complete)
+        if not isinstance(doc, dict):
+            raise PeerError(f"{root}/meta/episodes.jsonl: line {len(out) + 1} is not a map")
+        out.append(doc)
+        if len(out) > max_episodes:
+            raise PeerError(f"{root}/meta/episodes.jsonl lists more than {max_episodes} episodes")
+    return out
+
+
+def read_episode_actions(root: str | Path, index: int, max_steps: int = 100_000) -> np.ndarray:
+    """The recorded actions (T, 7) float32 of episode ``index``, materialised only after the
+    parquet file's size (:data:`MAX_PARQUET_BYTES`), row count (1 <= T <= ``max_steps``) and
+    ``action`` column (7 floats a row, no nulls, declared size bounded) are checked.
+
+    Raises:
+        PeerError: the file is missing, a symbolic link, too large, not parquet, or its
+            rows or ``action`` column are out of bounds.
+    """
+    root = Path(root)
+    rel = DATA_PATH.format(episode_chunk=int(index) // CHUNK_SIZE, episode_index=int(index))
+    raw = _peer_file(root, rel, MAX_PARQUET_BYTES)
+    where = root / rel
+    try:
+        pf = pq.ParquetFile(pa.BufferReader(raw))
+        meta = pf.metadata
+        rows = meta.num_rows
+        if not 1 <= rows <= max_steps:
+            raise PeerError(f"{where} declares {rows} rows; an episode has 1 to {max_steps} steps")
+        field = pf.schema_arrow.field("action") if "action" in pf.schema_arrow.names else None
+        if (field is None or not pa.types.is_fixed_size_list(field.type) or field.type.list_size != len(ACTION_NAMES)
+                or not pa.types.is_floating(field.type.value_type)):
+            raise PeerError(f"{where}: the action column is not {len(ACTION_NAMES)} floats a row")
+        chunks = [meta.row_group(i).column(j) for i in range(meta.num_row_groups) for j in range(meta.num_columns)]
+        declared = sum(c.total_uncompressed_size for c in chunks
+                       if c.path_in_schema == "action" or c.path_in_schema.startswith("action."))
+        if declared > MAX_PARQUET_BYTES:
+            raise PeerError(f"{where}: the action column declares {declared} bytes, over {MAX_PARQUET_BYTES}")
+        actions = pf.read(columns=["action"]).column("action").combine_chunks()
+    except PeerError:
+        raise
+    except (pa.ArrowException, OSError, ValueError, TypeError, KeyError) as exc:
+        raise PeerError(f"{where} is not an episode parquet file ({type(exc).__name__}: "
+                        f"{' '.join(str(exc).split())[:200]})") from None
+    values = actions.flatten()
+    if len(actions) != rows or actions.null_count or values.null_count:
+        raise PeerError(f"{where}: the action column has {len(actions)} rows for {rows} declared, or nulls")
+    values = values.to_numpy(zero_copy_only=False)
+    if values.shape != (rows * len(ACTION_NAMES),):
+        raise PeerError(f"{where}: the action column holds {values.shape[0]} numbers for {rows} rows")
+    return values.astype(np.float32).reshape(rows, len(ACTION_NAMES))

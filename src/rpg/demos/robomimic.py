@@ -27,12 +27,20 @@ records failed attempts too).  :meth:`RobomimicWriter.finalize` gathers the part
 demos of an existing ``demo.hdf5`` into a new file, renames it over ``demo.hdf5`` and then
 removes the parts; a kill at any point leaves every committed episode in a part or in
 ``demo.hdf5``, and the next run resumes from there.
+
+Reading for replay (:func:`read_demos`, :func:`read_demo_actions`) treats the file as a
+peer's: links must be hard links, provenance attributes scalars of bounded size, and an
+``actions`` dataset is checked (float, (T, 7) with T bounded, stored in the file in bounded
+chunks) before any of it is read, so an 8 KB file declaring a (10**9, 7) dataset is refused
+without allocating.
 """
 
 from __future__ import annotations
 
 import json
+import math
 import os
+import re
 from pathlib import Path
 
 import h5py
@@ -40,7 +48,7 @@ import numpy as np
 
 from rpg.demos.log import discard_failed, log_attempt
 from rpg.demos.record import LOW_DIM_KEYS, Episode
-from rpg.errors import BadInput
+from rpg.errors import BadInput, PeerError
 from rpg.jsonl import append_jsonl, read_jsonl, rewrite_jsonl
 
 DATASET_NAME = "demo.hdf5"
@@ -285,27 +293,135 @@ def dataset_file(root: str | Path) -> Path | None:
     return f if f.is_file() else None
 
 
-def read_demos(path: str | Path) -> list[dict]:
-    """Every demo of a robomimic file written by rpg: its provenance and actions, in demo order.
+MAX_ATTR_BYTES = 1024**2
+"""Largest provenance attribute replay reads (``final_poses`` is the longest: ~100 bytes a body), bytes."""
+
+MAX_CHUNK_BYTES = 64 * 1024**2
+"""Largest HDF5 chunk of an ``actions`` dataset replay reads (a chunk is decompressed whole), bytes."""
+
+_PROVENANCE = ("task_hash", "task_name", "seed", "embodiment", "instruction", "final_poses")
+_DEMO = re.compile(r"demo_([0-9]{1,9})")
+
+
+def _refuse(path, why: str) -> PeerError:
+    return PeerError(f"{path} is refused: {why}")
+
+
+def _hard_child(group: h5py.Group, name: str, path, kind: type):
+    """``group[name]`` if it is a hard link to a ``kind`` (a soft or external link could name
+    another object or another file)."""
+    link = group.get(name, getlink=True)
+    if link is None:
+        raise _refuse(path, f"{group.name}/{name} is missing")
+    if not isinstance(link, h5py.HardLink):
+        raise _refuse(path, f"{group.name}/{name} is a {type(link).__name__}, not a hard link")
+    obj = group[name]
+    if not isinstance(obj, kind):
+        raise _refuse(path, f"{group.name}/{name} is not a {kind.__name__}")
+    return obj
+
+
+def _attr(g: h5py.Group, key: str, path):
+    """Attribute ``key`` of ``g``, read only once its declared shape (a scalar), dtype (a
+    string or an integer) and storage (at most :data:`MAX_ATTR_BYTES`) are checked."""
+    if key not in g.attrs:
+        raise _refuse(path, f"{g.name} has no attribute {key!r}")
+    aid = g.attrs.get_id(key)
+    dt = aid.dtype
+    is_str = h5py.check_string_dtype(dt) is not None
+    if aid.shape not in ((), None) or not (is_str or dt.kind in "iu") or aid.get_storage_size() > MAX_ATTR_BYTES:
+        raise _refuse(path, f"attribute {key!r} of {g.name} is not a scalar string or integer of at most "
+                            f"{MAX_ATTR_BYTES} bytes")
+    value = g.attrs[key]
+    if isinstance(value, bytes):
+        value = value.decode("utf-8")
+    if isinstance(value, np.integer):
+        value = int(value)
+    if isinstance(value, str) and len(value) > MAX_ATTR_BYTES:
+        raise _refuse(path, f"attribute {key!r} of {g.name} is longer than {MAX_ATTR_BYTES} characters")
+    return value
+
+
+def _actions(g: h5py.Group, path, max_steps: int) -> h5py.Dataset:
+    """``g/actions``, checked before any of it is read: a float dataset (T, 7) with
+    1 <= T <= ``max_steps``, stored in the file itself (not external, not virtual) in chunks of
+    at most :data:`MAX_CHUNK_BYTES`."""
+    ds = _hard_child(g, "actions", path, h5py.Dataset)
+    dt = ds.dtype
+    if dt.kind != "f" or dt.fields is not None or dt.subdtype is not None or dt.itemsize > 8:
+        raise _refuse(path, f"{ds.name} has dtype {dt}; actions must be float")
+    if len(ds.shape) != 2 or ds.shape[1] != 7 or not 1 <= ds.shape[0] <= max_steps:
+        raise _refuse(path, f"{ds.name} declares shape {ds.shape}; actions must be (T, 7) with 1 <= T <= {max_steps}")
+    if ds.is_virtual or ds.external:
+        raise _refuse(path, f"{ds.name} is stored outside the file (virtual or external)")
+    if ds.chunks is not None and math.prod(ds.chunks) * dt.itemsize > MAX_CHUNK_BYTES:
+        raise _refuse(path, f"{ds.name} declares chunks {ds.chunks}, over {MAX_CHUNK_BYTES} bytes")
+    return ds
+
+
+def _demos(f: h5py.File, path, max_episodes: int) -> list[tuple[int, h5py.Group]]:
+    data = _hard_child(f, "data", path, h5py.Group)
+    if len(data) > max_episodes:
+        raise _refuse(path, f"it holds {len(data)} demos, more than {max_episodes}")
+    out = []
+    for name in data:
+        m = _DEMO.fullmatch(name)
+        if m is None:
+            raise _refuse(path, f"data/{name[:60]!r} is not named demo_<i>")
+        out.append((int(m.group(1)), _hard_child(data, name, path, h5py.Group)))
+    return sorted(out, key=lambda x: x[0])
+
+
+def read_demos(path: str | Path, max_episodes: int = 100_000, max_steps: int = 100_000) -> list[dict]:
+    """Every demo of a robomimic file written by rpg: its provenance, in demo order.  Each
+    demo's ``actions`` dataset is checked (:func:`read_demo_actions`'s bounds) but not read.
 
     Returns:
-        Dicts with ``episode_index``, ``task``, ``task_hash``, ``seed``, ``embodiment``,
-        ``instruction``, ``final_poses`` and ``actions`` (T, 7) float32.
+        Dicts with ``episode_index``, ``task_hash``, ``task_name``, ``seed``, ``embodiment``,
+        ``instruction`` and ``final_poses`` (JSON-decoded); the recorded ``task`` path is
+        not read.
 
     Raises:
-        BadInput: not an rpg robomimic file.
+        BadInput: not an HDF5 file.
+        PeerError: more than ``max_episodes`` demos, a demo not named ``demo_<i>``, a link
+            that is not a hard link, a provenance attribute that is missing or not a scalar
+            string or integer of at most :data:`MAX_ATTR_BYTES`, or an ``actions`` dataset
+            out of bounds.
     """
     out = []
     try:
         with h5py.File(path, "r") as f:
-            names = sorted(f["data"], key=lambda n: int(n.split("_")[1]))
-            for name in names:
-                g = f["data"][name]
-                a = g.attrs
-                out.append({"episode_index": int(name.split("_")[1]), "task": str(a["task"]),
-                            "task_hash": str(a["task_hash"]), "seed": int(a["seed"]),
-                            "embodiment": str(a["embodiment"]), "instruction": str(a["instruction"]),
-                            "final_poses": json.loads(a["final_poses"]), "actions": g["actions"][()]})
-    except (KeyError, ValueError, OSError) as exc:
+            for index, g in _demos(f, path, max_episodes):
+                _actions(g, path, max_steps)
+                doc = {"episode_index": index, **{k: _attr(g, k, path) for k in _PROVENANCE}}
+                try:
+                    doc["final_poses"] = json.loads(doc["final_poses"])
+                except (TypeError, ValueError):
+                    raise _refuse(path, f"final_poses of {g.name} is not JSON") from None
+                out.append(doc)
+    except PeerError:
+        raise
+    except (KeyError, ValueError, OSError, TypeError) as exc:
         raise BadInput(f"{path} is not a robomimic dataset written by rpg demos ({exc})") from None
     return out
+
+
+def read_demo_actions(path: str | Path, index: int, max_steps: int = 100_000) -> np.ndarray:
+    """The actions (T, 7) float32 of ``data/demo_<index>``, read only after the dataset's
+    shape (1 <= T <= ``max_steps``), dtype (float) and storage (in the file, chunks of at
+    most :data:`MAX_CHUNK_BYTES`) are checked, so a small file cannot make this allocate more
+    than ``max_steps`` x 7 x 8 bytes.
+
+    Raises:
+        BadInput: not an HDF5 file.
+        PeerError: no such demo, or its actions are out of bounds.
+    """
+    try:
+        with h5py.File(path, "r") as f:
+            data = _hard_child(f, "data", path, h5py.Group)
+            ds = _actions(_hard_child(data, f"demo_{int(index)}", path, h5py.Group), path, max_steps)
+            return np.asarray(ds[()], np.float32)
+    except PeerError:
+        raise
+    except (KeyError, ValueError, OSError, TypeError) as exc:
+        raise BadInput(f"{path} is not a robomimic dataset written by rpg demos ({exc})") from None

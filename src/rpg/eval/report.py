@@ -1,16 +1,26 @@
 """The evaluation page of ``rpg report RUN_DIR``: the success table with Wilson intervals, a
 bar chart with error bars (matplotlib PNG), per-episode videos and the failed predicates of
-failed episodes."""
+failed episodes.
+
+A run directory may come from someone else, so what it names is checked before anything is
+written (:func:`check_run`): its ``run.json``, ``summary.json`` and ``episodes.jsonl`` must
+be regular files, and every episode's ``video`` a relative path without ``..`` that reaches a
+regular file inside the run directory through no symbolic link (checked component by
+component, then the resolved path).  One bad path refuses the whole page (one line, nothing
+written); a video that is simply missing is left off the page.
+"""
 
 from __future__ import annotations
 
 import json
+import os
 import shutil
+import stat
 from pathlib import Path
 
 import jinja2
 
-from rpg.errors import BadInput
+from rpg.errors import BadInput, PeerError
 from rpg.eval.runner import read_episodes
 from rpg.eval.stats import task_key
 
@@ -78,32 +88,96 @@ def is_run_dir(path: Path) -> bool:
     return (Path(path) / "run.json").is_file() and (Path(path) / "summary.json").is_file()
 
 
+RUN_FILES = ("run.json", "summary.json", "episodes.jsonl")
+"""The files of a finished run a page is made from."""
+
+
+def _run_video(run_dir: Path, video: object) -> Path | None:
+    """The file an episode's ``video`` names inside ``run_dir``, None if it does not exist.
+
+    Raises:
+        PeerError: not a relative path of plain names, a symbolic link at any component, not
+            a regular file, or a resolved path outside ``run_dir``.
+    """
+    if not isinstance(video, str) or not video or "\0" in video:
+        raise PeerError(f"{run_dir}: an episode's video {str(video)[:80]!r} is not a path")
+    rel = Path(video)
+    if rel.is_absolute() or ".." in rel.parts or rel.as_posix() != video:
+        raise PeerError(f"{run_dir}: the video path {video[:200]!r} is not a plain path inside the run directory")
+    here = run_dir
+    for part in rel.parts:
+        here = here / part
+        try:
+            st = os.lstat(here)
+        except (FileNotFoundError, NotADirectoryError):
+            return None
+        if stat.S_ISLNK(st.st_mode):
+            raise PeerError(f"{here} is a symbolic link; rpg report copies only a run directory's own files")
+    if not stat.S_ISREG(st.st_mode):
+        raise PeerError(f"{here} is not a regular file")
+    if not here.resolve().is_relative_to(run_dir.resolve()):
+        raise PeerError(f"{here} resolves outside the run directory {run_dir}")
+    return here
+
+
+def check_run(run_dir: str | Path) -> tuple[dict, list[dict], dict[str, Path]]:
+    """Read a finished run and check every file its page would copy, writing nothing.
+
+    Returns:
+        (summary, episodes, {video path as recorded: the file to copy}); an episode whose
+        video is missing has it set to None.
+
+    Raises:
+        BadInput: ``run_dir`` holds no finished run.
+        PeerError: a run file that is a symbolic link or not a regular file, or a video path
+            :func:`_run_video` refuses.
+    """
+    run_dir = Path(run_dir)
+    if not is_run_dir(run_dir):
+        raise BadInput(f"{run_dir} holds no rpg eval run (run.json and summary.json)")
+    for name in RUN_FILES:
+        f = run_dir / name
+        if f.is_symlink() or (f.exists() and not f.is_file()):
+            raise PeerError(f"{f} is a symbolic link or not a regular file; rpg report reads a run's own files only")
+    summary = json.loads((run_dir / "summary.json").read_text())
+    episodes = read_episodes(run_dir / "episodes.jsonl")
+    copies: dict[str, Path] = {}
+    for e in episodes:
+        video = e.get("video")
+        if video is None:
+            continue
+        src = _run_video(run_dir, video)
+        if src is None:
+            e["video"] = None
+        else:
+            copies[video] = src
+    return summary, episodes, copies
+
+
 def write_eval_report(run_dir: str | Path, site: str | Path, name: str = "eval") -> Path:
     """Write ``site/<name>.html`` (with ``site/<name>/``: the chart and videos) for a run;
-    return the page's path.
+    return the page's path.  Every video is checked (:func:`check_run`) before anything is
+    written.
 
     Raises:
         BadInput: ``run_dir`` holds no finished run, or ``site`` is a file.
+        PeerError: a run file or video path :func:`check_run` refuses (nothing is written).
     """
     run_dir, site = Path(run_dir), Path(site)
-    if not is_run_dir(run_dir):
-        raise BadInput(f"{run_dir} holds no rpg eval run (run.json and summary.json)")
+    summary, episodes, copies = check_run(run_dir)
     if site.exists() and not site.is_dir():
         raise BadInput(f"{site} is a file; -o needs a directory for the site")
-    summary = json.loads((run_dir / "summary.json").read_text())
     assets = site / name
     assets.mkdir(parents=True, exist_ok=True)
     _chart(summary, assets / "success.png")
+    for video, src in copies.items():
+        dst = assets / video
+        dst.parent.mkdir(parents=True, exist_ok=True)
+        with open(src, "rb", opener=lambda p, f: os.open(p, f | os.O_NOFOLLOW)) as fin, open(dst, "wb") as fout:
+            shutil.copyfileobj(fin, fout)
     by_task: dict[str, list[dict]] = {}
-    for e in sorted(read_episodes(run_dir / "episodes.jsonl"), key=lambda e: (task_key(e), e["instruction_variant"], e["seed"])):
+    for e in sorted(episodes, key=lambda e: (task_key(e), e["instruction_variant"], e["seed"])):
         by_task.setdefault(task_key(e), []).append(e)
-        video = e.get("video")
-        if video and (run_dir / video).is_file() and not (run_dir / video).is_symlink():
-            dst = assets / video
-            dst.parent.mkdir(parents=True, exist_ok=True)
-            shutil.copyfile(run_dir / video, dst)
-        elif video:
-            e["video"] = None
     groups = [("task", summary["tasks"]), ("family", summary["families"]), ("intent", summary["intents"]),
               ("split", summary["splits"]), ("instruction", summary["instructions"])]
     page = site / f"{name}.html"

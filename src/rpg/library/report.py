@@ -184,21 +184,25 @@ def write_report(library: str | Path, site: str | Path, title: str | None = None
     ``site/diversity.html`` and its plots under ``site/diversity/`` (:func:`rpg.diversity.analyze`).
     With ``runs`` (``rpg eval`` run directories) also write each run's evaluation page
     (``site/eval-<i>.html``) and show its success rate, with the Wilson 95% interval, on the
-    card of every task it evaluated (matched by content hash).
+    card of every task it evaluated (matched by content hash).  Every run's files and video
+    paths are checked (:func:`rpg.eval.report.check_run`) before anything is written.
 
     Raises:
         ValueError: ``library`` is not a directory, or a run directory holds no finished run.
+        PeerError: a run's file or video path is a symbolic link or leaves the run directory
+            (nothing is written).
     """
     library, site = Path(library), Path(site)
     if not library.is_dir():
         raise ValueError(f"{library} is not a directory")
     if site.exists() and not site.is_dir():
         raise ValueError(f"{site} is a file; -o needs a directory for the site")
-    from rpg.eval.report import is_run_dir
+    from rpg.eval.report import check_run, is_run_dir
 
     for run in runs:
         if not is_run_dir(Path(run)):
             raise ValueError(f"--eval {run} holds no finished rpg eval run (run.json and summary.json)")
+        check_run(run)  # every video path of every run, before anything is written
     (site / "img").mkdir(parents=True, exist_ok=True)
     cards = collect_cards(library, site)
     run_lines = _add_runs(cards, [Path(r) for r in runs], site)
