@@ -661,13 +661,15 @@ def demos_cmd(
     image_size: Annotated[int, typer.Option("--image-size", min=16, max=2048, help="Square video size, pixels.")] = 256,
     instruction: Annotated[str, typer.Option("--instruction", help="canonical or paraphrase:K.")] = "canonical",
     replay: Annotated[Path | None, typer.Option("--replay", help="Replay a dataset and check every episode.")] = None,
+    library: Annotated[Path, typer.Option("--library", help="With --replay: the library whose tasks are found by "
+                                                            "content hash (a directory or its manifest).")] = Path("library"),
 ) -> None:
     """Record oracle demonstrations (successful episodes only) as a dataset, or replay one."""
     from rpg.demos import collect_demos, replay_dataset
 
     if replay is not None:
         with _reported_errors():
-            results = replay_dataset(replay, progress=lambda r: out.print(
+            results = replay_dataset(replay, library=library, progress=lambda r: out.print(
                 f"episode {r.episode_index}: {'ok' if r.ok else 'MISMATCH'} (success {r.success}, "
                 f"pose error {r.max_pose_error:.2e})", highlight=False))
         bad = [r for r in results if not r.ok]
