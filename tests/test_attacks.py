@@ -374,14 +374,14 @@ def test_bad_arguments_exit_2_with_one_line_and_write_nothing(args, junk, artifa
 
 
 def test_disk_full_exits_4_with_one_line(tmp_path):
-    """A compile onto a full file system (a 120 KB tmpfs in a private mount namespace) ends
+    """A compile onto a full file system (a 24 KB tmpfs in a private mount namespace) ends
     with one line and exit 4, and no half-written artifact."""
     probe = subprocess.run(["unshare", "--mount", "true"], capture_output=True)
     if probe.returncode != 0:
         pytest.skip("needs mount namespaces (unshare --mount) to make a small file system")
     mnt = tmp_path / "small"
     mnt.mkdir()
-    cmd = (f"mount -t tmpfs -o size=120k tmpfs {mnt} && {sys.executable} -m rpg.cli compile 'stack two blocks' "
+    cmd = (f"mount -t tmpfs -o size=24k tmpfs {mnt} && {sys.executable} -m rpg.cli compile 'stack two blocks' "
            f"-o {mnt}/out; rc=$?; find {mnt} -type f; exit $rc")
     r = subprocess.run(["unshare", "--mount", "sh", "-c", cmd], capture_output=True, text=True, timeout=300)
     assert r.returncode == 4, (r.stdout, r.stderr)

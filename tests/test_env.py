@@ -51,7 +51,7 @@ def test_reset_samples_rho0_of_the_seed_and_starts_at_home(embodiment):
     env = _env(embodiment, privileged=True)
     obs, _ = env.reset(seed=7)
     task = env.unwrapped.task
-    sampled = task.initial_state(np.random.default_rng(7))  # what every rpg command uses for seed 7
+    sampled = task.data.draws(7, 1)[0]  # rho_0 sample 0 of seed 7, as the sandbox drew it: what every rpg command uses
     for row, name in zip(obs["object_poses"], env.unwrapped.object_names, strict=True):
         assert np.allclose(row[:2], sampled[name].pos[:2], atol=2e-3), name
     # TCP at the home pose: above the front of the workspace, pointing down
@@ -283,7 +283,7 @@ def test_snapshots_have_no_black_band_and_agentview_sees_past_the_arm():
     for key in ("agentview_image", "default_image"):
         top = obs[key][:12].astype(float)  # what lies beyond the table: floor or sky, never black
         assert top.mean() > 40, key
-    block_only = render_image(env.unwrapped.task.__class__().scene, 160, 120)
+    block_only = render_image(env.unwrapped.task.scratch().scene, 160, 120)
     assert block_only is not None and block_only[:12].mean() > 40
     # the Panda at home hides little of the workspace from agentview: compare with the floating hand
     hand = _env("floating_gripper", cameras=("agentview",), image_size=(120, 160)).reset(seed=0)[0]

@@ -159,22 +159,21 @@ def test_temporal_order_is_followed_and_the_environment_judges_it():
 def test_a_fragile_goal_is_reported():
     """A goal configuration that satisfies G only until it settles: each cube of a three-cube
     stack 19 mm off the one below (On allows 20 mm), so the top two together overhang and fall."""
-    from types import SimpleNamespace
+    from dataclasses import replace
 
     from rpg.domain.state import Pose
+    from rpg.domain.task import Task
     from rpg.oracle.goal import plan_goal
 
     env = BlockTaskEnv(LIBRARY / "three_block_stack", embodiment="floating_gripper", cameras=())
     env.reset(seed=0)
     leaning = {"red": Pose((0.55, 0.0, 0.97), (1, 0, 0, 0)), "green": Pose((0.569, 0.0, 1.0105), (1, 0, 0, 0)),
                "yellow": Pose((0.588, 0.0, 1.051), (1, 0, 0, 0))}
-    goal = SimpleNamespace(goal_state=lambda task: task.set_state(leaning))
     sizes = {n: 0.04 for n in leaning}
-    plan = plan_goal(type(env.task)(), goal, env.scene.poses(), sizes)
+    plan = plan_goal(Task(replace(env.task.data, goal_poses=leaning)), env.scene.poses(), sizes)
     assert any("fragile" in n and "on" in n for n in plan.notes), plan.notes
-    upright = SimpleNamespace(goal_state=lambda task: task.set_state(
-        {n: Pose((0.55, 0.0, p.pos[2]), p.quat) for n, p in leaning.items()}))
-    assert not plan_goal(type(env.task)(), upright, env.scene.poses(), sizes).notes
+    upright = {n: Pose((0.55, 0.0, p.pos[2]), p.quat) for n, p in leaning.items()}
+    assert not plan_goal(Task(replace(env.task.data, goal_poses=upright)), env.scene.poses(), sizes).notes
 
 
 @pytest.mark.slow

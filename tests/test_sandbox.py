@@ -197,14 +197,16 @@ def test_task_code_sees_no_secret_and_no_system_file(base, tmp_path, disabled):
     text = (d / "validation.log").read_text() + (d / "validation.json").read_text()
     assert SECRET not in text and "root:x:0:0" not in text
     if disabled:
-        assert not result.valid and "FileNotFoundError" in text  # /etc/passwd is not there at all
+        # /etc/passwd is not there at all (namespaces), or not readable (Landlock)
+        assert not result.valid and ("FileNotFoundError" in text or "PermissionError" in text)
 
 
 @needs_seccomp
 @pytest.mark.parametrize("payload,reason", [
     ("import ctypes\nlibc = ctypes.CDLL(None)\nwhile True:\n    if libc.fork() < 0:\n        raise RuntimeError('fork refused')",
      "fork refused"),
-    ("f = open('big', 'wb')\nwhile True:\n    f.write(b'x' * 1048576)\n    f.flush()", "File too large"),
+    # no file can be opened for writing (seccomp, Landlock); where one could, RLIMIT_FSIZE bounds it
+    ("f = open('big', 'wb')\nwhile True:\n    f.write(b'x' * 1048576)\n    f.flush()", "Operation not permitted|File too large"),
     ("import sys\nwhile True:\n    sys.stderr.write('x' * 1048576)\n    sys.stderr.flush()", "File too large"),
     ("import sys\nfor i in range(2000):\n    sys.stdout.write('x' * 1048576)\nraise RuntimeError('flooded')", "flooded"),
 ], ids=["fork-bomb", "file-size-bomb", "stderr-flood", "stdout-flood"])
@@ -214,17 +216,17 @@ def test_bombs_and_floods_are_bounded(base, tmp_path, payload, reason):
     result = revalidate(d, disabled=frozenset({"text"}))
     assert not result.valid and time.monotonic() - t0 < 30
     fail = next(g for g in result.gates if g["status"] == "fail")
-    assert reason in fail["message"] or reason in fail.get("details", {}).get("traceback", ""), fail
+    assert any(r in fail["message"] or r in fail.get("details", {}).get("traceback", "") for r in reason.split("|")), fail
 
 
 def test_the_worker_runs_with_every_active_layer(base, tmp_path):
     """What ``rpg doctor`` claims is what the process that runs task code has: a seccomp
     filter, its own PID namespace (it is a low PID and sees few processes), no network."""
-    probe = ("import os, socket\nstatus = open('/proc/self/status').read()\n"
-             "seccomp = status.split('Seccomp:')[1].split()[0]\n"
+    probe = ("import os, socket, ctypes\n"
+             "seccomp = '2' if ctypes.CDLL(None).prctl(21, 0, 0, 0, 0) != 0 else '0'\n"  # PR_GET_SECCOMP: itself denied
              "try:\n    socket.create_connection(('1.1.1.1', 53), timeout=1)\n    net = 'up'\n"
              "except OSError as e:\n    net = 'down'\n"
-             "raise RuntimeError('PROBE seccomp=%s pids=%d net=%s' % (seccomp, len([p for p in os.listdir('/proc') if p.isdigit()]), net))")
+             "raise RuntimeError('PROBE seccomp=%s pids=%d net=%s' % (seccomp, os.getpid(), net))")
     d, _ = hostile(base, tmp_path, probe)
     result = revalidate(d, disabled=frozenset({"text"}))
     message = next(g for g in result.gates if g["status"] == "fail")["message"]
@@ -234,7 +236,7 @@ def test_the_worker_runs_with_every_active_layer(base, tmp_path):
     if seccomp_layer().active:
         assert fields["seccomp"] == "2"
     if namespaces_layer().active:
-        assert int(fields["pids"]) < 10, "the worker should see only its own sandbox's processes"
+        assert int(fields["pids"]) < 10, "the worker should be a low PID of its own PID namespace"
 
 
 def test_swapping_the_code_during_validation_never_runs_ungated_text(base, tmp_path):

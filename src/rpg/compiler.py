@@ -96,10 +96,19 @@ def validate_files(directory: Path, seed: int = 0, disabled: frozenset[str] = fr
             results.append({"gate": "text", "status": "fail", "kind": exc.kind, "message": str(exc),
                             "duration_s": time.perf_counter() - t0, "details": {"line": exc.line}})
             return results
+    from rpg.domain import constants as C
+    from rpg.validate.data import start_task_data
+    from rpg.validate.sandbox import WorkerError
+
+    try:  # the child runs while the simulator side is imported
+        pending = start_task_data(sources, range(seed, seed + max(C.NONTRIVIAL_SEEDS, C.SOLVABLE_SEEDS)),
+                                  restricted="text" not in disabled)
+    except WorkerError:
+        pending = None
     from rpg.validate.verdicts import run_gates
 
     return results + run_gates(sources, seed, disabled, enabled, tolerances,
-                               snapshots_to=Path(directory) if snapshots else None, name=name)
+                               snapshots_to=Path(directory) if snapshots else None, name=name, pending=pending)
 
 
 def _isolation_note() -> list[str]:

@@ -153,11 +153,17 @@ class _Samples:
         return have[:n]
 
 
-def _request(sources: dict[str, str], seeds: list[int], draws: int, goal_state: bool, restricted: bool) -> ChildResult:
-    from rpg.validate.sandbox import run_child
+def _start(sources: dict[str, str], seeds: list[int], draws: int, goal_state: bool, restricted: bool):
+    from rpg.validate.sandbox import ChildRun
 
-    doc = run_child({"op": "data", "sources": dict(sources), "seeds": seeds, "draws": draws,
+    return ChildRun({"op": "data", "sources": dict(sources), "seeds": seeds, "draws": draws,
                      "goal_state": goal_state, "restricted": restricted})
+
+
+def _request(sources: dict[str, str], seeds: list[int], draws: int, goal_state: bool, restricted: bool,
+             run=None) -> ChildResult:
+    run = run or _start(sources, seeds, draws, goal_state, restricted)
+    doc = run.wait()
     if not isinstance(doc, dict) or not doc.get("ok"):
         raise DataError(str((doc or {}).get("message", "the task code could not be loaded"))[:2000],
                         kind=str((doc or {}).get("kind", "runtime"))[:40],
@@ -169,7 +175,20 @@ def _request(sources: dict[str, str], seeds: list[int], draws: int, goal_state: 
     return result
 
 
-def fetch_task_data(sources: dict[str, str], seeds=(), restricted: bool = True):
+def start_task_data(sources: dict[str, str], seeds=(), restricted: bool = True):
+    """Start :func:`fetch_task_data`'s sandboxed run and return a function that waits for
+    it and returns the checked data (the caller works while the child runs).
+
+    Raises:
+        WorkerError: the child could not be started (the returned function raises what
+            :func:`fetch_task_data` raises).
+    """
+    seeds = list(seeds)
+    run = _start(sources, seeds, C.INITIAL_DRAWS, goal_state=True, restricted=restricted)
+    return lambda: fetch_task_data(sources, seeds, restricted, _run=run)
+
+
+def fetch_task_data(sources: dict[str, str], seeds=(), restricted: bool = True, _run=None):
     """Run task code in the sandbox and return its checked data.
 
     Args:
@@ -193,7 +212,7 @@ def fetch_task_data(sources: dict[str, str], seeds=(), restricted: bool = True):
     from rpg.domain.task import TaskData
 
     digest = code_digest(sources)
-    result = _request(sources, list(seeds), C.INITIAL_DRAWS, goal_state=True, restricted=restricted)
+    result = _request(sources, list(seeds), C.INITIAL_DRAWS, goal_state=True, restricted=restricted, run=_run)
     try:
         assets = tuple(asset_from_dict(a) for a in result.assets)
     except ValueError as exc:

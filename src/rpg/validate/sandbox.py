@@ -16,6 +16,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import time
 
 from rpg.errors import TaskInvalid
 from rpg.validate.isolation import die_with_parent, wrap
@@ -90,6 +91,59 @@ def worker_timeout() -> float:
         return WORKER_TIMEOUT_S
 
 
+class ChildRun:
+    """One request's child, started and not yet waited for (so the caller can work while it
+    runs).  Use :meth:`wait` exactly once.
+
+    Raises:
+        WorkerError: the child could not be started.
+    """
+
+    def __init__(self, request: dict, timeout: float | None = None):
+        self.timeout = worker_timeout() if timeout is None else timeout
+        self._dir = tempfile.TemporaryDirectory(prefix="rpg-worker-")
+        cwd = self._dir.name
+        env = _worker_env()
+        self._out_path, self._err_path = os.path.join(cwd, ".stdout"), os.path.join(cwd, ".stderr")
+        payload = json.dumps(request).encode()
+        with open(os.path.join(cwd, ".stdin"), "wb") as fh:
+            fh.write(payload)
+        try:
+            with open(os.path.join(cwd, ".stdin"), "rb") as stdin, open(self._out_path, "wb") as out, \
+                    open(self._err_path, "wb") as err:
+                self.proc = subprocess.Popen(
+                    wrap([sys.executable, "-I", "-m", "rpg.validate.child"], env, writable=cwd),
+                    stdin=stdin, stdout=out, stderr=err, cwd=cwd, env=env,
+                    preexec_fn=die_with_parent, start_new_session=True)
+        except OSError as exc:
+            self._dir.cleanup()
+            raise WorkerError(f"cannot start the sandboxed child: {exc}") from None
+        os.unlink(os.path.join(cwd, ".stdin"))
+        self.started = time.monotonic()
+
+    def wait(self) -> dict:
+        """The child's parsed JSON document.
+
+        Raises:
+            WorkerError: timeout (the child is killed), crash, oversize or malformed output.
+        """
+        try:
+            try:
+                self.proc.wait(timeout=max(0.0, self.timeout - (time.monotonic() - self.started)))
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait()
+                raise WorkerError(f"task code ran past the {self.timeout:.0f} s limit") from None
+            with open(self._out_path, "rb") as fh:
+                stdout = fh.read(WORKER_MAX_OUTPUT + 1)
+            with open(self._err_path, "rb") as fh:
+                fh.seek(max(0, os.path.getsize(self._err_path) - 4096))
+                stderr = fh.read()
+            return _parse(stdout, stderr, self.proc.returncode)
+        finally:
+            self._dir.cleanup()
+
+
 def run_child(request: dict, timeout: float | None = None) -> dict:
     """Run one request in a fresh, limited, isolated child process and return its parsed
     JSON document (see :mod:`rpg.validate.child`; the caller schema-checks it).
@@ -97,22 +151,4 @@ def run_child(request: dict, timeout: float | None = None) -> dict:
     Raises:
         WorkerError: timeout, crash, oversize or malformed output.
     """
-    timeout = worker_timeout() if timeout is None else timeout
-    with tempfile.TemporaryDirectory(prefix="rpg-worker-") as cwd:
-        env = _worker_env()
-        out_path, err_path = os.path.join(cwd, ".stdout"), os.path.join(cwd, ".stderr")
-        with open(out_path, "wb") as out, open(err_path, "wb") as err:
-            try:
-                proc = subprocess.run(
-                    wrap([sys.executable, "-I", "-m", "rpg.validate.child"], env, writable=cwd),
-                    input=json.dumps(request).encode(), stdout=out, stderr=err, timeout=timeout, cwd=cwd, env=env,
-                    preexec_fn=die_with_parent, start_new_session=True,
-                )
-            except subprocess.TimeoutExpired:
-                raise WorkerError(f"task code ran past the {timeout:.0f} s limit") from None
-        with open(out_path, "rb") as fh:
-            stdout = fh.read(WORKER_MAX_OUTPUT + 1)
-        with open(err_path, "rb") as fh:
-            fh.seek(max(0, os.path.getsize(err_path) - 4096))
-            stderr = fh.read()
-    return _parse(stdout, stderr, proc.returncode)
+    return ChildRun(request, timeout).wait()

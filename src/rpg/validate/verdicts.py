@@ -15,8 +15,6 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
-import networkx as nx
-
 from rpg.domain import constants as C
 from rpg.domain.layouts import out_of_bounds
 from rpg.domain.scene import drift_report
@@ -44,6 +42,8 @@ def constraint_graph(task: Task) -> dict:
     Raises:
         GateFailure: a cycle, or a chain that does not end on the table.
     """
+    import networkx as nx
+
     goal = task.goal_predicate
     edges = sorted(set(goal.support_edges()))
     g = nx.DiGraph()
@@ -106,8 +106,15 @@ def _failure(name: str, exc: BaseException, t0: float) -> dict:
             "duration_s": time.perf_counter() - t0, "details": dict(getattr(exc, "details", {}) or {})}
 
 
+def gate_seeds(seed: int, enabled=frozenset()) -> range:
+    """The seeds whose rho_0 samples the gates read (non-trivial and bounds; solvable when
+    asked for)."""
+    return range(seed, seed + max(C.NONTRIVIAL_SEEDS, C.SOLVABLE_SEEDS if "solvable" in enabled else 0))
+
+
 def run_gates(sources: dict[str, str], seed: int = 0, disabled=frozenset(), enabled=frozenset(),
-              tolerances: dict | None = None, snapshots_to: Path | None = None, name: str = "task") -> list[dict]:
+              tolerances: dict | None = None, snapshots_to: Path | None = None, name: str = "task",
+              pending=None) -> list[dict]:
     """The gates after the text gate, in order, on ``sources`` (``code.py`` and
     ``goal_state_code.py`` text).
 
@@ -118,6 +125,8 @@ def run_gates(sources: dict[str, str], seed: int = 0, disabled=frozenset(), enab
         tolerances: the schema's settle and stability tolerances (steps, m).
         snapshots_to: a directory to write ``initial.png`` and ``goal.png`` into.
         name: the task's name (for the solvable gate's episodes).
+        pending: :func:`rpg.validate.data.start_task_data`'s waiter for these sources and
+            :func:`gate_seeds`, when the caller started the sandboxed run already.
 
     Returns:
         ``[{"gate", "status", "kind"?, "message"?, "duration_s", "details"}]``.
@@ -147,8 +156,10 @@ def run_gates(sources: dict[str, str], seed: int = 0, disabled=frozenset(), enab
 
     def compile_gate():
         nonlocal task
-        seeds = range(seed, seed + max(C.NONTRIVIAL_SEEDS, C.SOLVABLE_SEEDS if "solvable" in enabled else 0))
-        data = fetch_task_data(sources, seeds, restricted="text" not in disabled)
+        if pending is not None:
+            data = pending()
+        else:
+            data = fetch_task_data(sources, gate_seeds(seed, enabled), restricted="text" not in disabled)
         task = Task(data)
         return {"class": data.class_name, "objects": task.scene.names}
 
