@@ -191,7 +191,7 @@ def test_ee_abs_control_reaches_a_pose():
 def test_paraphrase_instruction_and_bad_arguments():
     env = _env("floating_gripper", instruction="paraphrase:1")
     obs, info = env.reset(seed=0)
-    assert obs["instruction"] == info["instruction"] == "Goal: tower bottom to top: red, blue."
+    assert obs["instruction"] == info["instruction"] == "Goal: a stack of red, blue in any order."
     for kwargs, message in [({"instruction": "paraphrase:9"}, "paraphrases"), ({"embodiment": "ur5"}, "unknown embodiment"),
                             ({"cameras": ("top",)}, "unknown camera"), ({"image_size": (0, 10)}, "image_size")]:
         kw = {"embodiment": "floating_gripper", **kwargs}

@@ -21,7 +21,7 @@ SECRET = "sk-rpg-test-secret-7f3a"
 
 @pytest.fixture(scope="module")
 def base(tmp_path_factory):
-    return compile_instruction("Stack two blocks on top of each other.", tmp_path_factory.mktemp("base")).path
+    return compile_instruction("Stack the blue block on top of the red block.", tmp_path_factory.mktemp("base")).path
 
 
 @pytest.fixture(autouse=True)
@@ -310,7 +310,9 @@ def test_child_answers_are_schema_checked_data(monkeypatch):
             "goal_poses": {"red": [0.55, 0, 0.97, 1, 0, 0, 0], "blue": [0.55, 0, 1.0105, 1, 0, 0, 0]},
             "rho0": {}, "errors": {}}
     answers = []
-    monkeypatch.setattr("rpg.validate.sandbox.run_child", lambda req, timeout=None: {"ok": True, "result": answers[-1]})
+    from types import SimpleNamespace
+
+    monkeypatch.setattr(data_mod, "_start", lambda *a, **k: SimpleNamespace(wait=lambda: {"ok": True, "result": answers[-1]}))
     answers.append(good)
     assert data_mod.fetch_task_data({"code.py": "", "goal_state_code.py": ""}).goal.name == "stack"
     for bad, why in [({**good, "verdict": "pass"}, "malformed"), ({**good, "assets": "x"}, "malformed"),

@@ -31,6 +31,7 @@ from rpg.domain.predicates import (
     Reads,
     SortedBy,
     Stack,
+    UnorderedStack,
 )
 from rpg.errors import BadInput
 from rpg.schema.model import TaskSchema
@@ -260,8 +261,8 @@ class Tower(StructureKind):
     carriers = ("stack", "on", "pyramid", "grid")
 
     def extract(self, parts, seq):
-        if parts.kinds == {Stack} and len(parts.all) == 1:
-            return TaskSpec("tower", seq(parts.main.objects))
+        if len(parts.kinds) == 1 and parts.kinds <= {Stack, UnorderedStack} and len(parts.all) == 1:
+            return TaskSpec("tower", seq(parts.main.objects))  # steered, it is rendered bottom to top
         return None
 
     def render(self, spec):

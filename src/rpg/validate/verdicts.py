@@ -259,7 +259,7 @@ def write_snapshots(task: Task, seed: int, directory: Path, settle_steps: int = 
     from rpg.artifact import write_file
     from rpg.domain.render import Snapshotter
 
-    out: dict[str, Path | None] = {"initial": None, "goal": None}
+    pngs: dict[str, bytes | None] = {"initial": None, "goal": None}
     try:
         with Snapshotter(task.scene) as snap:
             task.reset(seed)
@@ -267,12 +267,14 @@ def write_snapshots(task: Task, seed: int, directory: Path, settle_steps: int = 
                 if key == "goal":
                     task.set_goal_state()
                     task.step(settle_steps)
-                png = snap.png()
-                if png is not None:
-                    out[key] = directory / f"{key}.png"
-                    write_file(out[key], png)
+                pngs[key] = snap.png()
     except Exception:  # noqa: BLE001 - a task that cannot be shown still has its gate results
         pass
+    out: dict[str, Path | None] = {}
+    for key, png in pngs.items():  # a write that fails (disk full) is the machine's failure: raised
+        out[key] = directory / f"{key}.png" if png is not None else None
+        if png is not None:
+            write_file(out[key], png)
     return out
 
 
