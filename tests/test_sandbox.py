@@ -97,7 +97,7 @@ RUNTIME = [
     # past the text gate, stopped by the restricted runtime (guards on attributes, writes, imports)
     ("import numpy as np\nr = np.random\nr.mtrand", "module", "not available"),
     ("import numpy as np\nl = [np]\nl[0].matrixlib.defmatrix", "module", "not available"),
-    ("import numpy as np\nnp.ones(3).tofile('MARKER')", "module", "Error"),
+    ("import numpy as np\nnp.ones(3).tofile('MARKER')", "module", "not available"),
     ("Stack.evaluate = None", "module", "may not modify"),
     ("BlockTask.success = None", "module", "may not modify"),
     ("def success(self):\n    return True", "class", "redefines BlockTask.success"),
@@ -317,7 +317,7 @@ def test_child_answers_are_schema_checked_data(monkeypatch):
     assert data_mod.fetch_task_data({"code.py": "", "goal_state_code.py": ""}).goal.name == "stack"
     for bad, why in [({**good, "verdict": "pass"}, "malformed"), ({**good, "assets": "x"}, "malformed"),
                      ({**good, "goal": {"predicate": "always_true"}}, "unknown predicate"),
-                     ({**good, "goal": {"predicate": "stack", "objects": ["red", "ghost"]}}, "not an asset"),
+                     ({**good, "goal": {"predicate": "stack", "objects": ["red", "ghost"]}}, "objects of the task"),
                      ({**good, "assets": [{"kind": "colored_cube", "name": "red", "color": "red", "size": 5.0}]}, "edge"),
                      ({**good, "assets": [{"kind": "colored_cube", "name": "../x", "color": "red"}]}, "invalid object name"),
                      ({**good, "assets": [{"kind": "colored_cube", "name": f"c{i}", "color": "red"} for i in range(65)]},

@@ -224,3 +224,38 @@ raise RuntimeError('PROBE ' + repr(out))
     assert "PROBE" in message and "TOP-SECRET" not in message, message
     got = dict(eval(message.split("PROBE ", 1)[1]))  # noqa: S307 - our own probe's repr
     assert all(v == "PermissionError" for v in got.values()), got
+
+
+GOAL = "        return UnorderedStack(objects=['red', 'blue'])\n"
+
+
+@pytest.mark.parametrize("old,new,why", [
+    # a goal whose evaluation would loop or allocate without end in rpg's process
+    (GOAL, "        return Pyramid(objects=['red', 'blue'], base=10**12)\n", "out of range"),
+    (GOAL, "        return Pyramid(objects=['red', 'blue'], base=2, dims=10**10)\n", "out of range|must be"),
+    (GOAL, "        return And([OnTable('red')] * 3000 + [On('red', 'blue')])\n", "predicates; at most"),
+    # arguments of the wrong type: a traceback in rpg before
+    (GOAL, "        return On(a=[['blue']], b='red')\n", "must name an object"),
+    # a cube held 3 cm in the air over the other falls into the goal while the episode settles
+    (INIT, "        return {'red': Pose((0.55, 0.0, 0.97), (1.0, 0.0, 0.0, 0.0)),"
+           " 'blue': Pose((0.55, 0.0, 1.05), (1.0, 0.0, 0.0, 0.0))}\n", "already true after reset"),
+    # a native function pointer reached through the seeded generator
+    (INIT, "        rng.bit_generator.ctypes.next_uint64(4096)\n        return poses\n", "not available"),
+    # an unseeded generator: the same seed would not give the same data
+    (INIT, "        poses = sample_scattered(np.random.default_rng(), list(self.scene.assets.values()))\n"
+           "        return poses\n", "Error"),
+    # str.format reads attributes with the real getattr
+    (INIT, "        ('{0.' + '_' * 2 + 'class' + '_' * 2 + '}').format(rng)\n        return poses\n", "not available"),
+])
+def test_what_the_red_team_found_is_refused(tmp_path, old, new, why):
+    task = forged(tmp_path, "code.py", old, new)
+    code = task / "code.py"
+    code.write_text(code.read_text().replace("from rpg.task_api import (", "from rpg.task_api import (\n    And,\n"
+                                             "    On,\n    OnTable,\n    Pose,\n    Pyramid,", 1)
+                    .replace("\n\nclass ", "\n\nimport numpy as np\n\n\nclass ", 1))
+    t0 = time.monotonic()
+    result = revalidate(task)
+    assert not result.valid and time.monotonic() - t0 < 60
+    fail = next(g for g in result.gates if g["status"] == "fail")
+    import re
+    assert re.search(why, fail["message"]), fail

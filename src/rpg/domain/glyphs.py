@@ -84,7 +84,11 @@ def face_image(label: str, background: tuple[int, int, int], px: int = GLYPH_TEX
     The glyph is black, centred, drawn with Pillow's bundled FreeType font (no system font).
     A bar under the glyph marks its baseline so that 6/9 and M/W stay distinguishable.
     """
-    from PIL import Image, ImageDraw, ImageFont  # only where a texture is drawn: the sandboxed child draws none
+    from PIL import (  # only where a texture is drawn: the sandboxed child draws none
+        Image,
+        ImageDraw,
+        ImageFont,
+    )
 
     img = Image.new("RGB", (px, px), background)
     draw = ImageDraw.Draw(img)

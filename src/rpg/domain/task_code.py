@@ -23,7 +23,6 @@ from types import MappingProxyType
 
 from rpg.domain import constants as C
 
-
 TRUSTED_MEMBERS = ("reset", "step", "evaluate", "success", "world_state", "goal_predicate", "set_goal_state",
                    "scratch", "data")
 """Members of the trusted :class:`rpg.domain.task.Task`.  A task class that defines one is

@@ -209,7 +209,11 @@ class BlockTaskEnv(gym.Env):
         self._elapsed = 0
         self._monitors = [p.monitor() for p in self.task.goal_predicate.walk() if isinstance(p, InOrder)]
         self._goal_cache = None
-        return self._observation(), self._info()
+        info = self._info()
+        if info["goal_satisfied"]:  # e.g. a cube rho_0 held in the air fell into place while settling
+            raise TaskInvalid(f"{self.source.name}: G holds once rho_0's sample for seed {self._seed} has settled; "
+                              "an episode that starts solved is not scored")
+        return self._observation(), info
 
     def step(self, action):
         """One control step: the action's targets, then CONTROL_SUBSTEPS physics steps.
@@ -281,7 +285,10 @@ class BlockTaskEnv(gym.Env):
         cache = self._goal_cache
         if cache is not None and np.max(np.abs(poses - cache[0]), initial=0.0) <= C.GOAL_REEVALUATE_TOL:
             return cache[1]
-        result = self.task.evaluate()
+        try:
+            result = self.task.evaluate()
+        except (ValueError, TypeError, KeyError, ArithmeticError, IndexError) as exc:
+            raise TaskInvalid(f"{self.source.name}: its goal cannot be evaluated on this state: {exc}") from None
         leaves = result.leaves()
         out = (bool(result.satisfied), [r.reason for r in leaves if r.satisfied],
                [r.reason for r in leaves if not r.satisfied])

@@ -158,8 +158,8 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
             if have < m.count:
                 raise UnaccountedMention(f"'{m.words}' asks for {m.count} {what} but the task read has {have}")
             record.append({"mention": m.words, "kind": "count", "consumed_by": f"{have} {what}"})
-        elif m.kind == "structure":
-            used = sorted({p.name for p in goal} & set(m.predicates))
+        elif m.kind == "structure":  # a predicate counts as each registered class it derives from
+            used = sorted({c.name for p in goal for c in type(p).__mro__ if "name" in vars(c)} & set(m.predicates))
             if not used and "stack" in m.predicates and schema.initial_state.structures:
                 used = ["initial_state.structures"]  # "starting from a stack of red on blue"
             if not used:

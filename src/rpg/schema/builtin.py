@@ -1955,23 +1955,34 @@ def _unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     return None
 
 
+ORDER_WORDS = re.compile(r"\b(rainbow|alternat\w*|order\w*|sequence|gradient|sort\w*|ascending|descending|"
+                         r"bottom|base|first|last|then|lightest|darkest|top(?! of (each other|one another)))\b")
+"""Words that give a stack's cubes places (an order, a role): a stack read with any of them
+keeps its order."""
+
+
 def _free_unnamed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
-    """A stack none of whose cubes the instruction names by colour becomes an
-    :class:`~rpg.domain.predicates.UnorderedStack`: "stack two blocks on top of each other"
-    says nothing of which goes on top, so G may not demand an order (a policy that stacks
-    them the other way has done what it was told).  The summary and paraphrases then say
-    "in any order" too, so no instruction the policy is given states an order G lacks."""
+    """A stack none of whose cubes the instruction names, gives a role or relates to anything
+    else becomes an :class:`~rpg.domain.predicates.UnorderedStack`: "stack two blocks on top
+    of each other" says nothing of which goes on top, so G may not demand an order (a policy
+    that stacks them the other way has done what it was told).  The summary and paraphrases
+    then say "in any order" too, so no instruction the policy is given states an order G
+    lacks.  A colour named, an order word (:data:`ORDER_WORDS`) or a cube of the stack in
+    another part of the goal keeps the order."""
+    if ORDER_WORDS.search(f.text.lower()):
+        return schema
     named = {c for _, c in _color_mentions(f.text)}
     colors = {a.name: a.color for a in schema.assets if a.kind == "colored_cube"}
+    goal = schema.goal_predicate()
+    parts = goal.children() if isinstance(goal, And) else [goal]
 
     def free(p):
-        if (type(p) is Stack and len(p.objects) > 1
+        elsewhere = {n for q in parts if q is not p for n in q.object_names()}
+        if (type(p) is Stack and len(p.objects) > 1 and not set(p.objects) & elsewhere
                 and all(n in colors and colors[n] not in named for n in p.objects)):
             return UnorderedStack(objects=p.objects)
         return p
 
-    goal = schema.goal_predicate()
-    parts = goal.children() if isinstance(goal, And) else [goal]
     freed = [free(p) for p in parts]
     if freed == parts:
         return schema

@@ -28,6 +28,13 @@ MAX_OBJECTS = 64
 MAX_COORD = 10.0
 """Largest absolute pose component accepted from task code (m, or quaternion units)."""
 
+MAX_GOAL_NODES = 256
+"""Most predicates a goal tree may have (the largest library goal has ~60)."""
+
+MAX_GOAL_INT = 64
+"""Largest absolute integer argument of a predicate (counts, layers, sizes are at most
+the number of objects)."""
+
 PREFETCH_SEEDS = 20
 """Seeds fetched in one sandboxed run when an environment asks for one it has not seen
 (``rpg eval``'s default is 20 seeds per task)."""
@@ -82,6 +89,70 @@ def code_digest(sources: dict[str, str]) -> str:
     for name in sorted(sources):
         h.update(name.encode() + b"\0" + str(sources[name]).encode() + b"\0")
     return h.hexdigest()
+
+
+def _check_goal_value(node, field_name: str, value, names: set[str]) -> None:
+    """One argument of a goal predicate as the trusted side accepts it.
+
+    Raises:
+        DataError: an object name that is not an asset, a list of the wrong shape, an
+            integer beyond :data:`MAX_GOAL_INT`, a float that is not finite or beyond
+            :data:`MAX_COORD`, a string over 200 characters, or another type.
+    """
+    from rpg.domain.predicates import Predicate
+
+    where = f"goal(): {node.name}.{field_name}"
+    if field_name in node.object_fields:
+        if not isinstance(value, str) or value not in names:
+            raise DataError(f"{where} must name an object of the task, not {str(value)[:60]!r}")
+    elif field_name in node.list_fields:
+        if not (isinstance(value, tuple) and len(value) <= MAX_OBJECTS and all(isinstance(v, str) and v in names for v in value)):
+            raise DataError(f"{where} must list objects of the task")
+    elif isinstance(value, Predicate):
+        return
+    elif isinstance(value, tuple):
+        if len(value) > MAX_GOAL_NODES:
+            raise DataError(f"{where} is too long")
+        for v in value:
+            _check_goal_value(node, field_name + "[]", v, names)
+    elif isinstance(value, bool) or value is None:
+        return
+    elif isinstance(value, int):
+        if abs(value) > MAX_GOAL_INT:
+            raise DataError(f"{where} = {value} is out of range (|n| <= {MAX_GOAL_INT})")
+    elif isinstance(value, float):
+        if not (math.isfinite(value) and abs(value) <= MAX_COORD):
+            raise DataError(f"{where} = {value} is not a finite number within {MAX_COORD}")
+    elif isinstance(value, str):
+        if len(value) > 200:
+            raise DataError(f"{where} is longer than 200 characters")
+    else:
+        raise DataError(f"{where} has a {type(value).__name__}, which no predicate takes")
+
+
+def check_goal(goal, names) -> None:
+    """The rebuilt goal's size and every argument (:func:`_check_goal_value`), and that
+    each field has the type of its declared default: what a predicate is given decides how
+    long evaluating it takes, so it is bounded before anything evaluates it.
+
+    Raises:
+        DataError: too many predicates, or an argument out of bounds or of the wrong type.
+    """
+    from dataclasses import MISSING, fields
+
+    nodes = list(goal.walk())
+    if len(nodes) > MAX_GOAL_NODES:
+        raise DataError(f"goal() has {len(nodes)} predicates; at most {MAX_GOAL_NODES}")
+    names = set(names) | {"table"}
+    for node in nodes:
+        for f in fields(node):
+            value = getattr(node, f.name)
+            default = f.default
+            if default not in (MISSING, None) and value is not None and not isinstance(default, tuple):
+                want = (int, float) if isinstance(default, int | float) and not isinstance(default, bool) else type(default)
+                if not isinstance(value, want) or (isinstance(value, bool) and not isinstance(default, bool)):
+                    raise DataError(f"goal(): {node.name}.{f.name} must be a {type(default).__name__}")
+            _check_goal_value(node, f.name, value, names)
 
 
 def _pose(name: str, values: PoseList, what: str) -> Pose:
@@ -226,9 +297,7 @@ def fetch_task_data(sources: dict[str, str], seeds=(), restricted: bool = True, 
         goal = from_dict(result.goal)
     except (ValueError, TypeError, KeyError, RecursionError) as exc:
         raise DataError(f"goal(): {exc}"[:2000]) from None
-    unknown = sorted(set(goal.object_names()) - set(names) - {"table"})
-    if unknown:
-        raise DataError(f"goal() names {unknown[0]!r}, which is not an asset of the task")
+    check_goal(goal, names)
     samples = _Samples(dict(sources), digest, names, restricted)
     samples.store(result)
     err = result.errors.get("goal_state")

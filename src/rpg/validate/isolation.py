@@ -43,7 +43,7 @@ ALLOWED_SYSCALLS = (
     "read", "readv", "pread64", "write", "writev", "close", "fstat", "newfstatat", "statx", "stat", "lstat",
     "lseek", "fcntl", "dup", "getdents64", "getcwd", "readlink", "readlinkat", "access", "faccessat",
     "faccessat2", "mmap", "munmap", "mprotect", "mremap", "madvise", "brk", "futex", "rt_sigaction",
-    "rt_sigprocmask", "rt_sigreturn", "sigaltstack", "getrandom", "clock_gettime", "clock_getres",
+    "rt_sigprocmask", "rt_sigreturn", "sigaltstack", "clock_gettime", "clock_getres",
     "gettimeofday", "nanosleep", "clock_nanosleep", "sched_yield", "sched_getaffinity", "getpid", "gettid",
     "getuid", "geteuid", "getgid", "getegid", "uname", "sysinfo", "rseq", "set_robust_list", "exit", "exit_group",
 )
@@ -51,7 +51,9 @@ ALLOWED_SYSCALLS = (
 other one fails with EPERM (default deny: new processes and threads, io_uring, sockets,
 queued and foreign signals, ptrace, namespaces, BPF...).  Its imports are done before the
 filter is loaded; what remains is memory, reading what it can see, writing to the file
-descriptors it already holds, and the clock.  Further allowed with argument checks:
+descriptors it already holds, and the clock.  No ``getrandom``: task code draws only from
+the seeded generator it is given (an unseeded one fails), so the same seed gives the same
+data in validation and in every episode.  Further allowed with argument checks:
 ``openat``/``open`` only without write flags, ``ioctl`` only ``TCGETS`` (``isatty``),
 ``prlimit64`` only to read a limit, ``kill``/``tgkill`` only to this process (``abort``)."""
 

@@ -33,6 +33,12 @@ from rpg.validate.static import (
     task_api_names,
 )
 
+NATIVE_BRIDGES = frozenset({"ctypes", "cffi", "ctypeslib", "format", "format_map", "tofile", "dump", "dumps",
+                            "data", "base", "view", "getfield", "setfield", "frombuffer", "from_dlpack"})
+"""Attribute names refused whatever the object: numpy's ways to native memory and files (a
+bit generator's ``ctypes``/``cffi`` function pointers, ``tofile``/``dump``, raw buffers and
+views) and ``str.format``, whose fields read attributes with the real ``getattr``."""
+
 
 class RestrictedAccess(PermissionError):
     """Task code reached for something outside its API (raised at run time)."""
@@ -62,7 +68,7 @@ class _Guards:
         self.api = task_api_names()
 
     def getattr_(self, obj, name: str, *default):
-        if not isinstance(name, str) or name.startswith("_"):
+        if not isinstance(name, str) or name.startswith("_") or name in NATIVE_BRIDGES:
             raise RestrictedAccess(f"attribute {name!r} is not available to task code")
         if isinstance(obj, types.ModuleType):
             allowed = self.modules.get(obj)
