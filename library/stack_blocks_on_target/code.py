@@ -9,7 +9,7 @@ Randomizations:
     - fixed (not sampled): gray_patch
 
 Success Conditions:
-    - a stack of red, blue in any order
+    - stack (bottom to top) red, blue
     - red on gray_patch
 """
 
@@ -20,20 +20,20 @@ from rpg.task_api import (
     GoalPatch,
     OnPatch,
     Pose,
-    UnorderedStack,
+    Stack,
     sample_scattered,
 )
 
 
 class StackBlocksOnTargetSquarePatchDesignatedD37e00Task(BlockTask):
-    """Success: a stack of red, blue in any order; red on gray_patch"""
+    """Success: stack (bottom to top) red, blue; red on gray_patch"""
 
     NAME = 'stack_blocks_on_target_square_patch_designated_d37e00'
     INSTRUCTION = 'Stack blocks on the target square patch designated on the table.'
     PARAPHRASES = (
-        'A stack of red, blue in any order; red on gray_patch.',
-        'Goal: a stack of red, blue in any order; red on gray_patch.',
-        'Arrange the cubes so that the final scene shows a stack of red, blue in any order; red on gray_patch.',
+        'Tower bottom to top: red, blue; red on gray_patch.',
+        'Goal: tower bottom to top: red, blue; red on gray_patch.',
+        'Arrange the cubes so that the final scene shows tower bottom to top: red, blue; red on gray_patch.',
     )
 
     def assets(self):
@@ -56,6 +56,6 @@ class StackBlocksOnTargetSquarePatchDesignatedD37e00Task(BlockTask):
 
     def goal(self):
         return And([
-            UnorderedStack(objects=['red', 'blue']),
+            Stack(objects=['red', 'blue']),
             OnPatch(a='red', patch='gray_patch'),
         ])

@@ -9,9 +9,9 @@ Randomizations:
     - fixed (not sampled): blue_patch, red_patch
 
 Success Conditions:
-    - a stack of red_1, red_2 in any order
+    - stack (bottom to top) red_1, red_2
     - red_1 on red_patch
-    - a stack of blue_1, blue_2 in any order
+    - stack (bottom to top) blue_1, blue_2
     - blue_1 on blue_patch
 """
 
@@ -22,20 +22,20 @@ from rpg.task_api import (
     GoalPatch,
     OnPatch,
     Pose,
-    UnorderedStack,
+    Stack,
     sample_scattered,
 )
 
 
 class StackTwoTowersBlocksOnColorSpecific43976dTask(BlockTask):
-    """Success: a stack of red_1, red_2 in any order; red_1 on red_patch; a stack of blue_1, blue_2 in ..."""
+    """Success: stack (bottom to top) red_1, red_2; red_1 on red_patch; stack (bottom to top) blue_1, ..."""
 
     NAME = 'stack_two_towers_blocks_on_color_specific_43976d'
     INSTRUCTION = 'Stack two towers of blocks on color-specific goal patches on the table'
     PARAPHRASES = (
-        'A stack of red_1, red_2 in any order; red_1 on red_patch; a stack of blue_1, blue_2 in any order; blue_1 on blue_patch.',
-        'Goal: a stack of red_1, red_2 in any order; red_1 on red_patch; a stack of blue_1, blue_2 in any order; blue_1 on blue_patch.',
-        'Arrange the cubes so that the final scene shows a stack of red_1, red_2 in any order; red_1 on red_patch; a stack of blue_1, blue_2 in any order; blue_1 on blue_patch.',
+        '2 towers of 2 cubes, each on the patch of its color.',
+        'Goal: 2 towers of 2 cubes, each on the patch of its color.',
+        'Arrange the cubes so that the final scene shows 2 towers of 2 cubes, each on the patch of its color.',
     )
 
     def assets(self):
@@ -61,8 +61,8 @@ class StackTwoTowersBlocksOnColorSpecific43976dTask(BlockTask):
 
     def goal(self):
         return And([
-            UnorderedStack(objects=['red_1', 'red_2']),
+            Stack(objects=['red_1', 'red_2']),
             OnPatch(a='red_1', patch='red_patch'),
-            UnorderedStack(objects=['blue_1', 'blue_2']),
+            Stack(objects=['blue_1', 'blue_2']),
             OnPatch(a='blue_1', patch='blue_patch'),
         ])
