@@ -43,6 +43,18 @@ def forged(tmp_path: Path, fname: str, old: str, new: str) -> Path:
 INIT = "        return poses\n"
 
 
+def run_probe(tmp_path: Path, probe: str) -> dict:
+    """Append ``probe`` (code that ends raising ``RuntimeError('PROBE ' + repr(pairs))``) to
+    goal_state_code.py, validate with the text gate off, and return the pairs it reported."""
+    task = forged(tmp_path, "goal_state_code.py", "\n\ndef goal_state(task):", "\n\ndef goal_state(task):")
+    gs = task / "goal_state_code.py"
+    gs.write_text(gs.read_text() + probe)
+    result = revalidate(task, disabled=frozenset({"text"}))
+    message = next(g for g in result.gates if g["status"] == "fail")["message"]
+    assert "PROBE" in message and "TOP-SECRET" not in message, message
+    return dict(eval(message.split("PROBE ", 1)[1]))  # noqa: S307 - our own probe's repr of pairs
+
+
 def test_rho0_that_is_solved_only_after_the_validated_seeds_is_not_scored(tmp_path):
     """From seed 5 on, initial_state returns the goal configuration: validation's seeds 0-4
     pass, but an episode there would score a policy that does nothing.  The environment
@@ -148,13 +160,7 @@ except RuntimeError:
     out.append(('thread', -1))
 raise RuntimeError('PROBE ' + repr(out))
 """
-    task = forged(tmp_path, "goal_state_code.py", "\n\ndef goal_state(task):", "\n\ndef goal_state(task):")
-    gs = task / "goal_state_code.py"
-    gs.write_text(gs.read_text() + probe)
-    result = revalidate(task, disabled=frozenset({"text"}))
-    message = next(g for g in result.gates if g["status"] == "fail")["message"]
-    assert "PROBE" in message, message
-    got = dict(eval(message.split("PROBE ", 1)[1]))  # noqa: S307 - our own probe's repr of (name, int) pairs
+    got = run_probe(tmp_path, probe)
     assert set(got) == {"io_uring_setup", "rt_sigqueueinfo", "clone", "socket", "openat_write", "thread"}
     assert all(v == -1 for v in got.values()), got
     assert not os.path.exists("/tmp/x") or os.path.getmtime("/tmp/x") < time.time() - 60
@@ -216,13 +222,7 @@ for path in ({str(secret)!r}, '/proc/{os.getpid()}/environ', '/etc/hostname'):
         out.append((path, type(e).__name__))
 raise RuntimeError('PROBE ' + repr(out))
 """
-    task = forged(tmp_path, "goal_state_code.py", "\n\ndef goal_state(task):", "\n\ndef goal_state(task):")
-    gs = task / "goal_state_code.py"
-    gs.write_text(gs.read_text() + probe)
-    result = revalidate(task, disabled=frozenset({"text"}))
-    message = next(g for g in result.gates if g["status"] == "fail")["message"]
-    assert "PROBE" in message and "TOP-SECRET" not in message, message
-    got = dict(eval(message.split("PROBE ", 1)[1]))  # noqa: S307 - our own probe's repr
+    got = run_probe(tmp_path, probe)
     assert all(v == "PermissionError" for v in got.values()), got
 
 
