@@ -55,7 +55,7 @@ with tempfile.TemporaryDirectory() as tmp:
         process, run alternately in the same loop so both see the same machine."""
         floor = Path(__file__).resolve().parents[2] / "shared" / "bench" / "floor_compile.py"
         fl, rc = [], []
-        for i in range(rounds):
+        for _ in range(rounds):
             with tempfile.TemporaryDirectory() as out:
                 t = time.perf_counter()
                 subprocess.run([sys.executable, str(floor), out], check=True, capture_output=True)

@@ -281,21 +281,6 @@ def write_file(path: Path, data: str | bytes) -> None:
         raise
 
 
-def save_snapshots(directory: Path, images: dict) -> dict[str, Path | None]:
-    """Write the worker's base64 PNGs as ``directory/<key>.png``; key -> path (None if not rendered)."""
-    import base64
-
-    out: dict[str, Path | None] = {}
-    for key in ("initial", "goal"):
-        data = images.get(key)
-        out[key] = None
-        if isinstance(data, str):
-            path = Path(directory) / f"{key}.png"
-            write_file(path, base64.b64decode(data, validate=True))
-            out[key] = path
-    return out
-
-
 def gates_passed(gates: list[dict]) -> bool:
     """Every gate of :data:`~rpg.validate.gates.GATES` passed or was switched off, and every
     other gate that ran (an optional one) passed."""

@@ -100,8 +100,8 @@ def bwrap_argv(env: dict[str, str], writable: str | None = None) -> list[str]:
 
     Args:
         env: the complete environment of the sandboxed command.
-        writable: a host directory bound read-write at the same path (the one-shot worker's
-            work directory); the fork server needs none.
+        writable: a host directory bound read-write at the same path (the child's work
+            directory).
     """
     argv = [shutil.which("bwrap") or "bwrap", "--unshare-user", "--unshare-pid", "--unshare-net", "--unshare-ipc",
             "--unshare-uts", "--unshare-cgroup-try", "--die-with-parent", "--new-session", "--cap-drop", "ALL",
