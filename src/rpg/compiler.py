@@ -96,13 +96,11 @@ def validate_files(directory: Path, seed: int = 0, disabled: frozenset[str] = fr
             results.append({"gate": "text", "status": "fail", "kind": exc.kind, "message": str(exc),
                             "duration_s": time.perf_counter() - t0, "details": {"line": exc.line}})
             return results
-    from rpg.domain import constants as C
-    from rpg.validate.data import start_task_data
+    from rpg.validate.data import gate_seeds, start_task_data
     from rpg.validate.sandbox import WorkerError
 
     try:  # the child runs while the simulator side is imported
-        pending = start_task_data(sources, range(seed, seed + max(C.NONTRIVIAL_SEEDS, C.SOLVABLE_SEEDS)),
-                                  restricted="text" not in disabled)
+        pending = start_task_data(sources, gate_seeds(seed, enabled), restricted="text" not in disabled)
     except WorkerError:
         pending = None
     from rpg.validate.verdicts import run_gates

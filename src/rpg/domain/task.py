@@ -38,7 +38,6 @@ class TaskData:
         goal_poses: the goal configuration (every object's pose, by name); None when
             ``goal_state`` failed (``goal_error`` says why).
         draws: the source of rho_0's samples (see :data:`DrawSource`).
-        digest: SHA-256 of the code's text (what the samples are cached under).
         class_name: the task class's name (for messages).
         goal_error: why there is no goal configuration (an :class:`rpg.errors.RpgError`).
     """
@@ -47,7 +46,6 @@ class TaskData:
     goal: Predicate
     goal_poses: dict[str, Pose] | None
     draws: DrawSource
-    digest: str = ""
     class_name: str = "task"
     goal_error: Exception | None = None
 

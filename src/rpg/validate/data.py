@@ -246,6 +246,12 @@ def _request(sources: dict[str, str], seeds: list[int], draws: int, goal_state: 
     return result
 
 
+def gate_seeds(seed: int, enabled=frozenset()) -> range:
+    """The seeds whose rho_0 samples the validation gates read (non-trivial and bounds;
+    solvable when asked for)."""
+    return range(seed, seed + max(C.NONTRIVIAL_SEEDS, C.SOLVABLE_SEEDS if "solvable" in enabled else 0))
+
+
 def start_task_data(sources: dict[str, str], seeds=(), restricted: bool = True):
     """Start :func:`fetch_task_data`'s sandboxed run and return a function that waits for
     it and returns the checked data (the caller works while the child runs).
@@ -310,5 +316,5 @@ def fetch_task_data(sources: dict[str, str], seeds=(), restricted: bool = True, 
             goal_poses = _poses(result.goal_poses or {}, names, "goal_state")
         except DataError as exc:
             goal_error = exc
-    return TaskData(assets=assets, goal=goal, goal_poses=goal_poses, draws=samples, digest=digest,
+    return TaskData(assets=assets, goal=goal, goal_poses=goal_poses, draws=samples,
                     class_name=result.class_, goal_error=goal_error)

@@ -106,12 +106,6 @@ def _failure(name: str, exc: BaseException, t0: float) -> dict:
             "duration_s": time.perf_counter() - t0, "details": dict(getattr(exc, "details", {}) or {})}
 
 
-def gate_seeds(seed: int, enabled=frozenset()) -> range:
-    """The seeds whose rho_0 samples the gates read (non-trivial and bounds; solvable when
-    asked for)."""
-    return range(seed, seed + max(C.NONTRIVIAL_SEEDS, C.SOLVABLE_SEEDS if "solvable" in enabled else 0))
-
-
 def run_gates(sources: dict[str, str], seed: int = 0, disabled=frozenset(), enabled=frozenset(),
               tolerances: dict | None = None, snapshots_to: Path | None = None, name: str = "task",
               pending=None) -> list[dict]:
@@ -126,12 +120,12 @@ def run_gates(sources: dict[str, str], seed: int = 0, disabled=frozenset(), enab
         snapshots_to: a directory to write ``initial.png`` and ``goal.png`` into.
         name: the task's name (for the solvable gate's episodes).
         pending: :func:`rpg.validate.data.start_task_data`'s waiter for these sources and
-            :func:`gate_seeds`, when the caller started the sandboxed run already.
+            :func:`rpg.validate.data.gate_seeds`, when the caller started the sandboxed run already.
 
     Returns:
         ``[{"gate", "status", "kind"?, "message"?, "duration_s", "details"}]``.
     """
-    from rpg.validate.data import fetch_task_data
+    from rpg.validate.data import fetch_task_data, gate_seeds
 
     tol = {"settle_steps": C.SETTLE_STEPS, "stability_steps": C.STABILITY_STEPS,
            "max_drift": C.MAX_DRIFT, "max_drop": C.MAX_DROP, **(tolerances or {})}
