@@ -1,16 +1,21 @@
-"""The development corpus: instructions written by people (tests/corpus/instructions.yaml).
+"""The corpus: instructions written by people, in a development and an UNSEEN split (tests/corpus).
 
-Each entry is compiled through the schema pass and compared with its expected meaning; the
-table of correct / refused / wrong is printed (``pytest -s``) and the issue's targets are
-asserted: no silently wrong task, at least 90% read right, every refusal says what it could
-not place.
+Each development entry (instructions.yaml) is compiled through the schema pass and compared
+with its expected meaning; the table of correct / refused / wrong is printed (``pytest -s``)
+and the issue's targets are asserted: no silently wrong task, at least 90% read right, every
+refusal says what it could not place. The unseen split (unseen.yaml) is only checked to be
+the frozen file (its SHA-256 in splits.yaml) and to be reported in aggregate only: its figures
+are measured, not asserted, and no test looks at its individual entries' outcomes.
 """
 
 from __future__ import annotations
 
+import hashlib
+import io
 import re
 import sys
 from collections import Counter
+from contextlib import redirect_stdout
 from pathlib import Path
 
 import pytest
@@ -22,6 +27,7 @@ import run_corpus  # noqa: E402
 from rpg.schema.meaning import matches  # noqa: E402
 
 DOC = yaml.safe_load(run_corpus.CORPUS.read_text())
+SPLITS = yaml.safe_load(run_corpus.SPLITS.read_text())
 
 
 def test_every_entry_cites_a_public_source_with_a_licence():
@@ -70,3 +76,41 @@ def test_corpus_no_silent_errors_and_90_percent_correct(capsys):
 ])
 def test_meaning_matcher(expected, actual, ok):
     assert matches(expected, actual) is ok
+
+
+def test_unseen_split_is_the_frozen_file_and_a_third_of_the_corpus():
+    assert hashlib.sha256(run_corpus.UNSEEN.read_bytes()).hexdigest() == SPLITS["unseen"]["sha256"], \
+        "unseen.yaml changed after it was frozen: an edited split is no longer unseen (see splits.yaml)"
+    unseen = yaml.safe_load(run_corpus.UNSEEN.read_text())
+    dev_sources, unseen_sources = set(SPLITS["development"]["sources"]), set(SPLITS["unseen"]["sources"])
+    assert dev_sources == set(DOC["sources"]) and unseen_sources == set(unseen["sources"])
+    assert not dev_sources & unseen_sources  # whole sources only
+    assert {e["source"] for e in unseen["instructions"]} == unseen_sources
+    for key, src in unseen["sources"].items():
+        assert src["repo"] and src["licence"] and src["file"] and src["kind"], key
+    n_unseen, n_dev = len(unseen["instructions"]), len(DOC["instructions"])
+    assert n_unseen >= 0.30 * (n_unseen + n_dev)
+    for e in DOC["instructions"] + unseen["instructions"]:
+        if e["meaning"].startswith("none"):
+            assert e.get("refuse") in run_corpus.REASON_WORDS, e  # must-refuse entries name their reason class
+
+
+def test_runner_refuses_an_edited_unseen_file(tmp_path, monkeypatch):
+    edited = tmp_path / "unseen.yaml"
+    edited.write_text(run_corpus.UNSEEN.read_text() + "# edited\n")
+    monkeypatch.setattr(run_corpus, "UNSEEN", edited)
+    assert run_corpus.main(["--split", "unseen"]) == 2
+
+
+def test_runner_reports_the_unseen_split_in_aggregate_only():
+    unseen = yaml.safe_load(run_corpus.UNSEEN.read_text())["instructions"]
+    out = io.StringIO()
+    with redirect_stdout(out):
+        run_corpus.main(["--split", "unseen"])
+    text = out.getvalue()
+    assert "UNSEEN split" in text and "failure classes" in text and "must-refuse" in text
+    for e in unseen:  # no instruction text, whole or in part, and no expected meaning
+        assert e["text"] not in text and e["text"][:30] not in text and e["meaning"] not in text
+    assert not re.search(r"could not|\bread \"|expected:|got:", text)  # no parser message either
+    with pytest.raises(SystemExit):
+        run_corpus.main(["--split", "unseen", "--show", "wrong"])

@@ -1,23 +1,76 @@
-"""Run the development corpus through the builtin front end and print correct / refused / wrong.
+"""Run the corpus through the builtin front end and print correct / refused / wrong, per split.
 
-Usage: ``.venv/bin/python tests/corpus/run_corpus.py [--show wrong|refused|correct|all]``
+Usage: ``.venv/bin/python tests/corpus/run_corpus.py [--split dev|unseen|all] [--show wrong|refused|correct|all|none]``
 
 An instruction is *correct* when the schema pass (parser + feasibility) gives a task whose
 meaning (:func:`rpg.schema.meaning.meaning`) matches the corpus entry, *refused* when it
 raises ParseError / InfeasibleTask (the message names what it could not place), and *wrong*
 when it gives a task that means something else: the outcome this product must never have.
+
+Two splits (``splits.yaml``): the development split (``instructions.yaml``) and the UNSEEN split
+(``unseen.yaml``), frozen by source before the parser's output on it was looked at. For the
+unseen split the runner checks the file's SHA-256 against ``splits.yaml`` (it refuses to report
+when they differ, so a later edit shows) and prints only counts per source and failure
+*classes*, never an instruction's text or the parser's message (``--show`` is for the
+development split only).
+
+Must-refuse entries (``meaning: none (...)``, with ``refuse: <class>``) are counted apart:
+refused for the right reason (the message names the class of problem, not just an unknown
+word), refused for another reason, or compiled (a silent error).
 """
 
 from __future__ import annotations
 
 import argparse
+import hashlib
+import re
 import sys
 from collections import Counter
 from pathlib import Path
 
 import yaml
 
-CORPUS = Path(__file__).with_name("instructions.yaml")
+HERE = Path(__file__).parent
+CORPUS = HERE / "instructions.yaml"  # the development split
+UNSEEN = HERE / "unseen.yaml"
+SPLITS = HERE / "splits.yaml"
+
+# What a refusal message must say to be refused "for the right reason", per must-refuse class.
+REASON_WORDS = {
+    "no_goal": r"no goal|without a goal|goal place|says? (?:where|what)|no end state",
+    "question": r"question|ask",
+    "action": r"action|cannot (?:rotate|cut|hide|sweep|turn)|verb",
+    "object": r"has no|lacks|no such|does not have|not (?:in|part of) (?:the|this) (?:domain|task|table)|only (?:cubes|blocks)",
+    "shape": r"shape|has no|lacks|does not have|only (?:cubes|blocks)",
+    "size": r"\bsizes?\b|larger|smaller|all (?:cubes|blocks) are the same",
+    "negation": r"negat",
+    "quantity": r"quantit|distance|amount|measure",
+    "reference": r"refer|earlier|previous|current (?:scene|state)|history|before",
+    "condition": r"condition",
+    "contradiction": r"contradict|cannot (?:both|end in)",
+    "colour": r"colou?r",
+}
+UNKNOWN_WORD = re.compile(r"^could not parse ")
+
+
+class SplitFrozenError(RuntimeError):
+    """unseen.yaml does not have the SHA-256 that splits.yaml recorded when the split was frozen."""
+
+
+def sha256(path: Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def load_split(name: str) -> list[dict]:
+    """The entries of one split ('dev' or 'unseen'); the unseen file must match its frozen hash."""
+    if name == "dev":
+        return yaml.safe_load(CORPUS.read_text())["instructions"]
+    splits = yaml.safe_load(SPLITS.read_text())
+    want, got = splits["unseen"]["sha256"], sha256(UNSEEN)
+    if want != got:
+        raise SplitFrozenError(f"unseen.yaml has SHA-256 {got}, splits.yaml froze {want}: the unseen split was edited; "
+                               "an edited split is no longer unseen (see splits.yaml)")
+    return yaml.safe_load(UNSEEN.read_text())["instructions"]
 
 
 def classify(entry: dict) -> tuple[str, str]:
@@ -36,26 +89,153 @@ def classify(entry: dict) -> tuple[str, str]:
     return ("correct" if matches(entry["meaning"], got) else "wrong"), "; ".join(got)
 
 
-def run(show: str = "wrong") -> Counter:
-    doc = yaml.safe_load(CORPUS.read_text())
+def must_refuse(entry: dict) -> bool:
+    return entry["meaning"].strip().startswith("none")
+
+
+def refusal_reason_ok(entry: dict, message: str) -> bool:
+    """Whether a refusal of a must-refuse entry names its real reason (not only an unknown word)."""
+    words = REASON_WORDS.get(entry.get("refuse", ""), r"(?!)")
+    return not UNKNOWN_WORD.search(message) and re.search(words, message, re.IGNORECASE) is not None
+
+
+def _atoms(text: str) -> list[str]:
+    return [a.strip() for a in re.split(r";\s+(?![^()]*\))", text) if a.strip()]
+
+
+def _objects(atoms: list[str]) -> list[str]:
+    """The object descriptors of some atoms (wildcards kept as written)."""
+    out = []
+    for a in atoms:
+        body = a[a.find("(") + 1:a.rfind(")")] if "(" in a else ""
+        body = re.sub(r"^\d+x\d+:", "", body)
+        out += [t for t in re.split(r"[,;|]", body) if t and "=" not in t]
+    return out
+
+
+def failure_class(entry: dict, outcome: str, detail: str) -> str | None:
+    """A failure's class, worded so that it never repeats the instruction or the parser's message."""
+    if outcome == "correct":
+        return None
+    if outcome == "refused":
+        if must_refuse(entry):
+            return "refused (must-refuse): right reason" if refusal_reason_ok(entry, detail) else \
+                "refused (must-refuse): other reason"
+        if UNKNOWN_WORD.search(detail):
+            return "refused: unknown word"
+        if detail.startswith("could not find a task"):
+            return "refused: no task found"
+        if "contradict" in detail:
+            return "refused: read as a contradiction"
+        if re.search(r"the most a task holds|do not fit|too many objects|needs \d+ cubes", detail):
+            return "refused: size limit"
+        if re.search(r"has no place in|read \"", detail):
+            return "refused: read, but a mention had no place"
+        if re.search(r"reach|feasib|stable|support|collid", detail, re.IGNORECASE):
+            return "refused: infeasible"
+        return "refused: other"
+    if detail.startswith("crash"):
+        return "crash"
+    if must_refuse(entry):
+        return "wrong: compiled a must-refuse text"
+    want, got = _atoms(entry["meaning"]), _atoms(detail)
+    if any(a.startswith("extra(") for a in got):
+        return "wrong: content invented (extra object)"
+    heads = sorted(a.split("(")[0] for a in want)
+    if heads != sorted(a.split("(")[0] for a in got):
+        if len(want) != len(got):
+            return "wrong: relation/structure count"
+        return "wrong: relation/structure kind"
+    if any("@" in a for a in want) != any("@" in a for a in got) or \
+            sorted(re.findall(r"@(\w+)", entry["meaning"])) != sorted(re.findall(r"@(\w+)", detail)):
+        return "wrong: place lost or changed"
+    ow, og = _objects(want), _objects(got)
+    if len(ow) != len(og) and not any("*" in o for o in ow):
+        return "wrong: count"
+    concrete = [o for o in ow if "?" not in o and "*" not in o]
+    if not (Counter(concrete) <= Counter(og)):
+        return "wrong: colour/label lost or changed"
+    if Counter(concrete) == Counter(og) or any("?" in o for o in ow):
+        return "wrong: order or roles"
+    return "wrong: other"
+
+
+def _table(title: str, rows: dict[str, Counter], total: Counter) -> None:
+    print(f"\n{title}")
+    print(f"{'source':18s} {'n':>4s} {'correct':>8s} {'refused':>8s} {'wrong':>6s} {'% correct':>10s}")
+    for src, c in sorted(rows.items()):
+        n = sum(c[k] for k in ("correct", "refused", "wrong"))
+        print(f"{src:18s} {n:4d} {c['correct']:8d} {c['refused']:8d} {c['wrong']:6d} {100 * c['correct'] / n:9.0f}%")
+    n = sum(total[k] for k in ("correct", "refused", "wrong"))
+    if n:
+        print(f"{'total':18s} {n:4d} {total['correct']:8d} {total['refused']:8d} {total['wrong']:6d}"
+              f" {100 * total['correct'] / n:9.0f}%")
+
+
+def run_split(name: str, show: str = "none") -> Counter:
+    """Run one split and print its tables; returns outcome counts (plus must-refuse and class counts)."""
+    entries = load_split(name)
+    if name == "unseen":
+        show = "none"  # never print an unseen instruction or message
     counts: Counter = Counter()
     by_source: dict[str, Counter] = {}
-    for e in doc["instructions"]:
+    classes: Counter = Counter()
+    mr: Counter = Counter()
+    for e in entries:
         outcome, detail = classify(e)
         counts[outcome] += 1
         by_source.setdefault(e["source"], Counter())[outcome] += 1
+        cls = failure_class(e, outcome, detail)
+        if cls:
+            classes[cls] += 1
+        if must_refuse(e):
+            mr["n"] += 1
+            if outcome == "refused":
+                mr["right reason" if refusal_reason_ok(e, detail) else "other reason"] += 1
+            else:
+                mr["compiled"] += 1
         if show in (outcome, "all"):
-            print(f"[{outcome}] {e['text']}\n    expected: {e['meaning']}\n    got:      {detail[:160]}")
-    n = sum(counts.values())
-    print(f"\n{'source':16s} {'n':>4s} {'correct':>8s} {'refused':>8s} {'wrong':>6s}")
-    for src, c in sorted(by_source.items()):
-        print(f"{src:16s} {sum(c.values()):4d} {c['correct']:8d} {c['refused']:8d} {c['wrong']:6d}")
-    print(f"{'total':16s} {n:4d} {counts['correct']:8d} {counts['refused']:8d} {counts['wrong']:6d}"
-          f"   ({100 * counts['correct'] / n:.0f}% correct)")
+            print(f"[{outcome}] {e['text']}\n    expected: {e['meaning']}\n    got:      {detail[:160]}"
+                  + (f"\n    class:    {cls}" if cls else ""))
+    label = {"dev": "DEVELOPMENT split (instructions.yaml)", "unseen": "UNSEEN split (unseen.yaml, frozen)"}[name]
+    _table(f"{label}: {len(by_source)} sources", by_source, counts)
+    print(f"must-refuse: {mr['n']} texts; refused for the right reason {mr['right reason']}, "
+          f"for another reason {mr['other reason']}, compiled {mr['compiled']}")
+    print("failure classes:" + ("" if classes else " none"))
+    for cls, k in sorted(classes.items(), key=lambda kv: (-kv[1], kv[0])):
+        print(f"  {k:4d}  {cls}")
+    counts.update({f"must-refuse {k}": v for k, v in mr.items()})
+    counts.update({f"class {k}": v for k, v in classes.items()})
     return counts
 
 
+def run(show: str = "wrong", split: str = "dev") -> Counter:
+    totals: Counter = Counter()
+    for name in (["dev", "unseen"] if split == "all" else [split]):
+        c = run_split(name, show)
+        totals.update({k: v for k, v in c.items() if k in ("correct", "refused", "wrong")})
+    if split == "all":
+        n = sum(totals.values())
+        print(f"\nall splits: {n} instructions, {totals['correct']} correct, {totals['refused']} refused, "
+              f"{totals['wrong']} wrong ({100 * totals['correct'] / n:.0f}% correct)")
+    return totals
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--split", default="dev", choices=["dev", "unseen", "all"])
+    ap.add_argument("--show", default=None, choices=["wrong", "refused", "correct", "all", "none"],
+                    help="print these development-split instructions (default: wrong); not allowed for --split unseen")
+    args = ap.parse_args(argv)
+    if args.split == "unseen" and args.show not in (None, "none"):
+        ap.error("--show is for the development split: the unseen split reports aggregates only")
+    try:
+        counts = run(args.show or "wrong", args.split)
+    except SplitFrozenError as exc:
+        print(f"refusing to report the unseen split: {exc}", file=sys.stderr)
+        return 2
+    return 1 if counts["wrong"] else 0
+
+
 if __name__ == "__main__":
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--show", default="wrong", choices=["wrong", "refused", "correct", "all", "none"])
-    sys.exit(1 if run(ap.parse_args().show)["wrong"] else 0)
+    sys.exit(main())
