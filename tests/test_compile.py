@@ -420,3 +420,27 @@ def test_feasibility_switches_face_or_to_spatial_only_when_labels_are_covered():
     s = check_feasibility(tower.model_copy(update={"goal": up}))
     assert [r.operator for r in s.repairs] == ["SWITCH_READABLE_FACE"]
     assert next(c for c in s.goal_predicate().children() if isinstance(c, Reads)).face == "front"
+
+
+def test_constraint_gate_names_the_cycle_the_ungrounded_chain_and_redundant_edges():
+    from types import SimpleNamespace
+
+    from rpg.domain.predicates import OnPatch, OnTable
+    from rpg.validate.verdicts import GateFailure, constraint_graph
+
+    kinds = {"red": "cube", "blue": "cube", "green": "cube", "pad": "goal_patch"}
+    scene = SimpleNamespace(assets={n: SimpleNamespace(kind=k) for n, k in kinds.items()})
+
+    def gate(*preds):
+        return constraint_graph(SimpleNamespace(goal_predicate=And(list(preds)), scene=scene))
+
+    with pytest.raises(GateFailure, match=r"cycle: (red -> blue -> green -> red|blue -> green -> red -> blue"
+                                          r"|green -> red -> blue -> green)"):
+        gate(On(a="red", b="blue"), On(a="blue", b="green"), On(a="green", b="red"))
+    with pytest.raises(GateFailure, match="support chain of blue, red does not end at the table"):
+        gate(On(a="red", b="blue"), On(a="blue", b="green"))
+    grounded = gate(On(a="red", b="blue"), On(a="blue", b="green"), OnTable(a="green"))
+    assert grounded["redundant"] == []
+    assert gate(On(a="red", b="blue"), OnPatch(a="blue", patch="pad"))["edges"] == [("blue", "table"), ("red", "blue")]
+    assert gate(On(a="red", b="blue"), On(a="blue", b="green"), On(a="red", b="green"),
+                OnTable(a="green"))["redundant"] == [["red", "green"]]

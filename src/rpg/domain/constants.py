@@ -42,6 +42,15 @@ TABLE_HALF_EXTENT: tuple[float, float, float] = (0.40, 0.60, 0.025)
 TABLE_CENTER_XY: tuple[float, float] = (0.55, 0.0)
 """Centre of the table box in the plane, m (project)."""
 
+FLOOR_RGBA: tuple[float, float, float, float] = (0.315, 0.335, 0.365, 1.0)
+"""Colour of the untextured floor of the validation scene (the mean of the environments'
+checker squares), RGBA in [0, 1] (project)."""
+
+FLOOR_GRID: float = 0.5
+"""Spacing of the floor plane's rendering grid, m (MuJoCo draws a plane as quads of this
+side, twice with shadows: at 0.05 m the 12 m floor was 57,600 quads and half of a
+snapshot's rendering time).  Physics does not read it (project)."""
+
 BOUNDS_MARGIN: float = 0.005
 """Slack on the workspace bounds for an object's centre in the bounds gate, m (project)."""
 

@@ -10,6 +10,7 @@ warning and nothing else fails.
 from __future__ import annotations
 
 import logging
+import threading
 import warnings
 from pathlib import Path
 
@@ -22,6 +23,8 @@ from rpg.domain.scene import Scene
 log = logging.getLogger(__name__)
 
 _BACKEND_FAILED = False
+_WARM_UP: threading.Thread | None = None
+"""The thread :func:`warm_up` started; a renderer waits for it (one backend start at a time)."""
 
 
 class RenderUnavailable(RuntimeWarning):
@@ -30,6 +33,8 @@ class RenderUnavailable(RuntimeWarning):
 
 def _make_renderer(model: mujoco.MjModel, width: int, height: int) -> mujoco.Renderer | None:
     global _BACKEND_FAILED
+    if _WARM_UP is not None:
+        _WARM_UP.join()
     if _BACKEND_FAILED:
         return None
     try:
@@ -52,6 +57,29 @@ def _make_renderer(model: mujoco.MjModel, width: int, height: int) -> mujoco.Ren
             stacklevel=3,
         )
         return None
+
+
+def warm_up() -> threading.Thread:
+    """Start the OpenGL backend (EGL's display, ~60-90 ms with Mesa) in a background thread.
+
+    Call it before waiting on something else (the validation child): the thread spends its
+    time in the driver with the GIL released, and the next :class:`Snapshotter` starts
+    faster.  A backend that fails here fails again, with its warning, in the snapshot.
+    """
+
+    def start() -> None:
+        try:
+            from mujoco.rendering.classic import gl_context
+
+            gl_context.GLContext(1, 1).free()
+        except Exception:  # noqa: BLE001 - reported by _make_renderer when it matters
+            pass
+
+    global _WARM_UP
+    thread = threading.Thread(target=start, name="rpg-gl-warm-up", daemon=True)
+    thread.start()
+    _WARM_UP = thread
+    return thread
 
 
 def render_image(scene: Scene, width: int = C.SNAPSHOT_SIZE[0], height: int = C.SNAPSHOT_SIZE[1],

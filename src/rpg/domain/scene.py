@@ -39,8 +39,15 @@ def look_at_quat(pos: Sequence[float], target: Sequence[float]) -> np.ndarray:
     return quat
 
 
-def physics_spec() -> mujoco.MjSpec:
-    """An MjSpec with the global physics options, floor, table, lights and default camera."""
+def physics_spec(backdrop: bool = True) -> mujoco.MjSpec:
+    """An MjSpec with the global physics options, floor, table, lights and default camera.
+
+    ``backdrop``: a gradient sky and a checkered floor (two textures) for the cameras of an
+    environment, whose views reach past the table.  Without it the floor is one flat colour
+    and there is no sky: the validation scene's snapshot camera sees only the table and the
+    floor, and every texture costs Mesa's software renderer ~60 ms to set up (a third of a
+    compile's rendering; ``benchmarks/bench_compile.py``).
+    """
     spec = mujoco.MjSpec()
     spec.modelname = "rpg_block_domain"
     opt = spec.option
@@ -56,18 +63,22 @@ def physics_spec() -> mujoco.MjSpec:
     spec.visual.global_.offheight = C.SNAPSHOT_SIZE[1]
     spec.visual.quality.shadowsize = C.SNAPSHOT_SHADOW_SIZE
 
-    # A gradient sky and a wide checkered floor: nothing in a camera's view is the black
-    # background (the snapshots had a black band above the table).
-    spec.add_texture(name="sky", type=mujoco.mjtTexture.mjTEXTURE_SKYBOX, builtin=mujoco.mjtBuiltin.mjBUILTIN_GRADIENT,
-                     rgb1=[0.78, 0.84, 0.90], rgb2=[0.36, 0.42, 0.50], width=512, height=3072)
-    spec.add_texture(name="floor", type=mujoco.mjtTexture.mjTEXTURE_2D, builtin=mujoco.mjtBuiltin.mjBUILTIN_CHECKER,
-                     rgb1=[0.34, 0.36, 0.39], rgb2=[0.29, 0.31, 0.34], width=256, height=256)
-    floor_mat = spec.add_material(name="floor", texrepeat=[8.0, 8.0], texuniform=True)
-    floor_mat.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = "floor"
+    floor_material = {"rgba": list(C.FLOOR_RGBA)}
+    if backdrop:
+        # A gradient sky and a wide checkered floor: nothing in a camera's view is the black
+        # background (the snapshots had a black band above the table).
+        spec.add_texture(name="sky", type=mujoco.mjtTexture.mjTEXTURE_SKYBOX, builtin=mujoco.mjtBuiltin.mjBUILTIN_GRADIENT,
+                         rgb1=[0.78, 0.84, 0.90], rgb2=[0.36, 0.42, 0.50], width=512, height=3072)
+        spec.add_texture(name="floor", type=mujoco.mjtTexture.mjTEXTURE_2D, builtin=mujoco.mjtBuiltin.mjBUILTIN_CHECKER,
+                         rgb1=[0.34, 0.36, 0.39], rgb2=[0.29, 0.31, 0.34], width=256, height=256)
+        floor_material = {"texrepeat": [8.0, 8.0], "texuniform": True}
+    floor_mat = spec.add_material(name="floor", **floor_material)
+    if backdrop:
+        floor_mat.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = "floor"
 
     world = spec.worldbody
     world.add_geom(
-        name="floor", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[6.0, 6.0, 0.05],
+        name="floor", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[6.0, 6.0, C.FLOOR_GRID],
         material="floor", group=1,
     )
     hx, hy, hz = C.TABLE_HALF_EXTENT
@@ -109,7 +120,7 @@ class Scene:
             if asset.name in self.assets or asset.name in ("table", "floor"):
                 raise SceneError(f"duplicate object name {asset.name!r}")
             self.assets[asset.name] = asset
-        self.spec = physics_spec()
+        self.spec = physics_spec(backdrop=robot is not None)
         for name in sorted(self.assets):
             self.assets[name].attach(self.spec)
         self.robot = robot

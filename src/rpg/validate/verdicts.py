@@ -36,35 +36,51 @@ def _poses_json(task: Task) -> dict:
     return {n: p.to_json() for n, p in task.scene.poses().items()}
 
 
+def _reaches(succ: dict[str, set[str]], start: str, goal: set[str], skip: tuple[str, str] | None = None) -> bool:
+    """Whether a path of one or more edges leads from ``start`` to a node of ``goal``
+    (``skip``: an edge left out)."""
+    seen, stack = set(), [start]
+    while stack:
+        node = stack.pop()
+        for nxt in sorted(succ.get(node, ())):
+            if (node, nxt) == skip or nxt in seen:
+                continue
+            if nxt in goal:
+                return True
+            seen.add(nxt)
+            stack.append(nxt)
+    return False
+
+
 def constraint_graph(task: Task) -> dict:
     """The support graph of G: no cycle, every chain grounded on the table or a patch.
+
+    The graph is small (one node per asset), so the standard library's ``graphlib`` finds a
+    cycle and a depth-first walk answers reachability (networkx cost a compile 80 ms to import).
 
     Raises:
         GateFailure: a cycle, or a chain that does not end on the table.
     """
-    import networkx as nx
+    import graphlib
 
     goal = task.goal_predicate
     edges = sorted(set(goal.support_edges()))
-    g = nx.DiGraph()
-    g.add_node("table")
+    succ: dict[str, set[str]] = {"table": set()}
     for up, lo in edges:
-        g.add_edge(up, lo)
-    cycles = list(nx.simple_cycles(g))
-    if cycles:
-        raise GateFailure("constraint", f"support relations form a cycle: {' -> '.join(cycles[0] + [cycles[0][0]])}",
-                          {"cycles": cycles, "edges": edges})
+        succ.setdefault(up, set()).add(lo)
+        succ.setdefault(lo, set())
+    try:
+        graphlib.TopologicalSorter({n: sorted(s) for n, s in sorted(succ.items())}).prepare()
+    except graphlib.CycleError as exc:
+        cycle = list(reversed(exc.args[1]))
+        raise GateFailure("constraint", f"support relations form a cycle: {' -> '.join(cycle)}",
+                          {"cycles": [cycle[:-1]], "edges": edges}) from None
     patches = {n for n, a in task.scene.assets.items() if a.kind == "goal_patch"}
-    ungrounded = sorted(n for n in g.nodes if n not in ("table",) and n not in patches
-                        and not any(t in ("table", *patches) for t in nx.descendants(g, n)) and g.out_degree(n) > 0)
+    grounds = {"table", *patches}
+    ungrounded = sorted(n for n in succ if n not in grounds and succ[n] and not _reaches(succ, n, grounds))
     if ungrounded:
         raise GateFailure("constraint", f"support chain of {', '.join(ungrounded)} does not end at the table", {"edges": edges})
-    redundant = []
-    for up, lo in edges:
-        h = g.copy()
-        h.remove_edge(up, lo)
-        if lo != "table" and nx.has_path(h, up, lo):
-            redundant.append([up, lo])
+    redundant = [[up, lo] for up, lo in edges if lo != "table" and _reaches(succ, up, {lo}, skip=(up, lo))]
     return {"edges": edges, "redundant": redundant}
 
 
@@ -150,6 +166,10 @@ def run_gates(sources: dict[str, str], seed: int = 0, disabled=frozenset(), enab
 
     def compile_gate():
         nonlocal task
+        if snapshots_to is not None:  # OpenGL starts while the child runs
+            from rpg.domain.render import warm_up
+
+            warm_up()
         if pending is not None:
             data = pending()
         else:
