@@ -6,7 +6,7 @@ export MUJOCO_GL ?= egl
 export LITELLM_LOCAL_MODEL_COST_MAP := True
 DEMO_INSTRUCTION ?= Make a simple 2-block tower with a red block on bottom and blue on top
 
-.PHONY: install demo test bench lint clean
+.PHONY: install demo test bench lint clean baseline
 
 install: $(VENV)/.installed
 
@@ -19,7 +19,7 @@ $(VENV)/.installed: pyproject.toml
 	  echo "note: bubblewrap (bwrap) is not installed; the sandbox runs without its namespace layer." \
 	       "Install Debian's 'bubblewrap' package (sudo apt-get install bubblewrap) to add it."
 	test -x $(PY) || python3 -m venv $(VENV)
-	$(PY) -m pip install -q -e '.[dev,ray]'
+	$(PY) -m pip install -q -e '.[dev,ray,baseline]'
 	touch $@
 
 demo: install
@@ -36,8 +36,13 @@ bench: install
 	$(PY) benchmarks/bench_oracle.py
 	$(PY) benchmarks/bench_eval.py
 
+baseline: install
+	@# examples/baseline: oracle demos of the training split -> BC training -> rpg eval of the baseline,
+	@# the oracle and random on the training, steered and evaluation tasks -> build/baseline/results.md
+	nice -n 10 $(PY) examples/baseline/run.py --out build/baseline
+
 lint: install
-	$(VENV)/bin/ruff check src tests benchmarks
+	$(VENV)/bin/ruff check src tests benchmarks examples
 
 clean:
 	rm -rf out .pytest_cache
