@@ -22,7 +22,7 @@ from conftest import CHROMIUM_FLAGS
 from rpg.eval import EvalConfig, run_eval, wilson_interval
 from rpg.eval.openpi import openpi_observation, packb, unpackb
 from rpg.eval.runner import eval_tasks
-from rpg.eval.stats import two_proportion_test
+from rpg.eval.stats import fisher_exact, holm, mcnemar_exact
 
 ROOT = Path(__file__).resolve().parents[1]
 LIBRARY = ROOT / "library"
@@ -39,14 +39,23 @@ def _lines(path: Path) -> list[dict]:
     return [json.loads(x) for x in path.read_text().splitlines() if x.strip()]
 
 
-def test_wilson_interval_and_two_proportion_test_match_published_values():
+def test_wilson_interval_and_exact_tests_match_published_values():
     # Wilson score intervals at 95% (Newcombe 1998, Table I: 0/10 -> 0-0.2775, 81/263 -> 0.2553-0.3662)
     lo, hi = wilson_interval(0, 10)
     assert lo == 0.0 and hi == pytest.approx(0.2775, abs=1e-4)
     lo, hi = wilson_interval(81, 263)
     assert (lo, hi) == (pytest.approx(0.2553, abs=1e-4), pytest.approx(0.3662, abs=1e-4))
-    assert two_proportion_test(5, 5, 0, 5) == pytest.approx(0.001565, abs=1e-5)  # z = sqrt(10)
-    assert two_proportion_test(3, 5, 3, 5) == 1.0
+    assert fisher_exact(3, 3, 0, 3) == pytest.approx(0.1)  # 2 / C(6, 3), two-sided
+    assert fisher_exact(3, 5, 3, 5) == 1.0
+    assert mcnemar_exact(5, 0) == pytest.approx(0.0625)  # 2 * 0.5^5
+    assert mcnemar_exact(0, 0) == 1.0
+    assert holm([0.01, 0.04, 0.03]) == pytest.approx([0.03, 0.06, 0.06])
+
+
+def _without_timing(path: Path) -> dict:
+    doc = json.loads(path.read_text())
+    doc.pop("timing")
+    return doc
 
 
 def test_oracle_is_the_upper_bound_noop_scores_zero_and_seeds_give_distinct_initial_states(tmp_path):
@@ -79,7 +88,7 @@ def test_summary_is_byte_identical_for_one_and_two_jobs_and_groups_family_versio
     b = _rpg("eval", "library/pile_sorting", "--policy", "oracle", "-n", "3", "--embodiment", FLOAT,
              "-o", str(tmp_path / "b"), "--jobs", "2")
     assert a.returncode == 0 and b.returncode == 0, a.stderr + b.stderr
-    assert (tmp_path / "a" / "summary.json").read_bytes() == (tmp_path / "b" / "summary.json").read_bytes()
+    assert _without_timing(tmp_path / "a" / "summary.json") == _without_timing(tmp_path / "b" / "summary.json")
     s = json.loads((tmp_path / "a" / "summary.json").read_text())
     assert set(s["tasks"]) == {"pile_sorting@v0", "pile_sorting@v1", "pile_sorting@v2"}
     assert set(s["intents"]) == {"base", "modify"} and s["intents"]["modify"]["n"] == 6
@@ -110,7 +119,7 @@ def test_a_killed_run_resumes_keeping_finished_episodes(tmp_path):
     fresh = _rpg("eval", "library/three_block_stack", "--policy", "oracle", "-n", "10", "--embodiment", FLOAT,
                  "-o", str(tmp_path / "fresh"))
     assert fresh.returncode == 0
-    assert (run / "summary.json").read_bytes() == (tmp_path / "fresh" / "summary.json").read_bytes()
+    assert _without_timing(run / "summary.json") == _without_timing(tmp_path / "fresh" / "summary.json")
     # the same directory with other settings is refused, not mixed
     r = _rpg("eval", "library/three_block_stack", "--policy", "noop", "-n", "10", "--embodiment", FLOAT, "-o", str(run))
     assert r.returncode == 2 and "other settings (policy)" in r.stderr
@@ -226,8 +235,113 @@ def test_compare_calls_a_large_difference_real(tmp_path):
         run_eval(EvalConfig(str(LIBRARY / "stack_blocks"), policy, tuple(range(8)), embodiment=FLOAT), tmp_path / policy)
     r = _rpg("eval", "compare", str(tmp_path / "oracle"), str(tmp_path / "noop"), "--json")
     assert r.returncode == 0, r.stderr
-    (row,) = json.loads(r.stdout)
-    assert row["task"] == "stack_blocks" and row["diff"] == -1.0 and row["significant"] and row["p_value"] < 0.001
+    doc = json.loads(r.stdout)
+    (row,) = doc["rows"]
+    assert row["task"] == "stack_blocks" and row["diff"] == -1.0 and row["significant"]
+    assert row["test"] == "mcnemar_exact" and row["p_value"] == pytest.approx(2 * 0.5**8, abs=1e-6)  # same seeds: paired
+    assert doc["same_seeds"] and doc["correction"] == "holm" and row["progress_diff"] < 0
+
+
+def test_compare_on_other_seeds_is_fisher_and_other_settings_are_refused(tmp_path):
+    run_eval(EvalConfig(str(LIBRARY / "stack_blocks"), "oracle", (5, 6, 7), embodiment=FLOAT), tmp_path / "a")
+    run_eval(EvalConfig(str(LIBRARY / "stack_blocks"), "noop", (0, 1, 2), embodiment=FLOAT), tmp_path / "b")
+    r = _rpg("eval", "compare", str(tmp_path / "a"), str(tmp_path / "b"), "--json")
+    assert r.returncode == 0, r.stderr
+    doc = json.loads(r.stdout)
+    (row,) = doc["rows"]
+    assert row["test"] == "fisher_exact" and row["p_value"] == pytest.approx(0.1) and not row["significant"]
+    assert not doc["same_seeds"]
+    text = _rpg("eval", "compare", str(tmp_path / "a"), str(tmp_path / "b"))
+    assert "different seeds" in text.stdout and "Fisher" in text.stdout
+    run_eval(EvalConfig(str(LIBRARY / "stack_blocks"), "noop", (5, 6, 7), embodiment="panda"), tmp_path / "panda")
+    r = _rpg("eval", "compare", str(tmp_path / "a"), str(tmp_path / "panda"))
+    assert r.returncode == 2 and "embodiment: 'floating_gripper' vs 'panda'" in r.stderr, r.stderr
+    r = _rpg("eval", "compare", str(tmp_path / "a"), str(tmp_path / "panda"), "--allow-mismatch")
+    assert r.returncode == 0 and "--allow-mismatch" in r.stdout
+
+
+def test_a_failing_plugin_keeps_every_episode_and_the_run_goes_on(tmp_path):
+    plugin = tmp_path / "flaky.py"
+    plugin.write_text(
+        "import numpy as np\n"
+        "class Flaky:\n"
+        "    episodes = 0\n"
+        "    def reset(self, instruction):\n"
+        "        type(self).episodes += 1\n"
+        "    def act(self, obs):\n"
+        "        if type(self).episodes == 3:\n"
+        "            raise RuntimeError('the model crashed')\n"
+        "        return np.zeros(7, np.float32)\n")
+    run = tmp_path / "run"
+    r = _rpg("eval", "library/stack_blocks", "--policy", f"{plugin}:Flaky", "-n", "5", "--embodiment", FLOAT, "-o", str(run))
+    assert r.returncode == 0, r.stderr
+    eps = _lines(run / "episodes.jsonl")
+    assert len(eps) == 5 and [e["seed"] for e in eps] == [0, 1, 2, 3, 4]
+    (bad,) = [e for e in eps if e["error"]]
+    assert bad["seed"] == 2 and "RuntimeError: the model crashed" in bad["error"] and not bad["success"]
+    s = json.loads((run / "summary.json").read_text())
+    assert s["overall"]["errors"] == 1 and s["errors"][0]["seed"] == 2
+    assert "the model crashed" in r.stdout
+    fast = _rpg("eval", "library/stack_blocks", "--policy", f"{plugin}:Flaky", "-n", "5", "--embodiment", FLOAT,
+                "--fail-fast", "-o", str(tmp_path / "fast"))
+    assert fast.returncode == 2 and "--fail-fast" in fast.stderr and "Traceback" not in fast.stderr
+    assert len(_lines(tmp_path / "fast" / "episodes.jsonl")) == 3
+
+
+def test_a_plugin_that_hangs_fails_its_episode_at_the_inference_timeout(tmp_path):
+    plugin = tmp_path / "slow.py"
+    plugin.write_text("import time\nclass Slow:\n    def reset(self, instruction):\n        pass\n"
+                      "    def act(self, obs):\n        time.sleep(3600)\n")
+    t = time.monotonic()
+    r = _rpg("eval", "library/stack_blocks", "--policy", f"{plugin}:Slow", "-n", "2", "--embodiment", FLOAT,
+             "--inference-timeout", "1", "-o", str(tmp_path / "run"))
+    assert r.returncode == 0, r.stderr
+    assert time.monotonic() - t < 60
+    eps = _lines(tmp_path / "run" / "episodes.jsonl")
+    assert len(eps) == 2 and all("within 1 s (inference timeout)" in e["error"] for e in eps)
+
+
+@pytest.mark.slow
+def test_a_silent_server_fails_each_episode_within_the_default_timeouts(tmp_path):
+    from websockets.sync.server import serve
+
+    stop = threading.Event()
+
+    def handler(ws):  # metadata, then silence
+        ws.send(packb({"policy": "silent"}))
+        stop.wait(600)
+
+    server = serve(handler, "127.0.0.1", 0, compression=None, max_size=None)
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    url = f"ws://127.0.0.1:{server.socket.getsockname()[1]}"
+    try:
+        t = time.monotonic()
+        r = _rpg("eval", "library/stack_blocks", "--policy", url, "-n", "2", "--embodiment", FLOAT,
+                 "-o", str(tmp_path / "run"), timeout=300)
+        took = time.monotonic() - t
+    finally:
+        stop.set()
+        server.shutdown()
+    assert r.returncode == 0, r.stderr
+    eps = _lines(tmp_path / "run" / "episodes.jsonl")
+    assert len(eps) == 2 and all("inference timeout" in e["error"] for e in eps)
+    assert took < 240
+
+
+def test_a_refused_setting_leaves_the_run_directory_as_it_was(tmp_path):
+    run = tmp_path / "run"
+    for args, msg in ((["--cameras", "agentview,fisheye"], "unknown camera 'fisheye'"),
+                      (["--instruction", "paraphrase:9"], "has 3 paraphrases"),
+                      (["--inference-timeout", "0"], "--inference-timeout must be a positive"),
+                      (["--control-mode", "torque"], "no control mode 'torque'")):
+        r = _rpg("eval", "library/stack_blocks", "--policy", "noop", "-n", "1", "--embodiment", FLOAT, *args, "-o", str(run))
+        assert r.returncode == 2 and msg in r.stderr and "Traceback" not in r.stderr, (args, r.stderr)
+        assert not run.exists(), args
+    r = _rpg("eval", "library/stack_blocks", "--policy", "noop", "-n", "1", "--embodiment", FLOAT, "-o", str(run))
+    assert r.returncode == 0, r.stderr
+    s = json.loads((run / "summary.json").read_text())
+    assert 0.0 <= s["tasks"]["stack_blocks"]["progress"] < 1.0 and "progress_stderr" in s["overall"]
+    assert s["timing"]["stack_blocks"]["calls"] > 0 and s["timing"]["stack_blocks"]["latency_p95_s"] is not None
 
 
 @pytest.mark.slow
@@ -280,7 +394,7 @@ def test_a_process_keeps_few_environments_open():
 
     cfg = runner.EvalConfig("x", "noop", (0,), embodiment=FLOAT)
     names = ["stack_blocks", "three_block_stack", "align_blocks"]
-    envs = [runner._env_for(runner.Unit(runner.EvalTask(str(ROOT / "library" / n), n), "canonical", (0,), cfg, "."))[0]
+    envs = [runner._env_for(runner.Unit(runner.EvalTask(str(ROOT / "library" / n), n), "canonical", 0, cfg, "."))[0]
             for n in names]
     try:
         assert len(runner._ENVS) == runner.ENV_CACHE_SIZE == 2

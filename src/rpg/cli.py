@@ -375,13 +375,21 @@ def eval_cmd(
     library: Annotated[Path, typer.Option("--library", help="Manifest a KEY=VALUE filter selects from.")] = Path("library/manifest.yaml"),
     output: Annotated[Path | None, typer.Option("-o", "--output", help="Run directory (created; resumed if it holds the same run).")] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print the summary (or comparison) as JSON.")] = False,
+    control_mode: Annotated[str, typer.Option("--control-mode", help="ee_delta, ee_abs or joint_pos (Panda).")] = "ee_delta",
+    inference_timeout: Annotated[float, typer.Option("--inference-timeout", help="Seconds one policy call may take.")] = 30.0,
+    episode_timeout: Annotated[float, typer.Option("--episode-timeout", help="Seconds one episode may take.")] = 600.0,
+    fail_fast: Annotated[bool, typer.Option("--fail-fast", help="Stop at the first episode whose policy fails.")] = False,
+    allow_mismatch: Annotated[bool, typer.Option("--allow-mismatch", help="compare: compare runs whose settings or "
+                                                 "task contents differ (the output says so).")] = False,
 ) -> None:
-    """Run a policy on tasks: success per task, family version, steering intent and split, with
-    standard errors and Wilson 95% intervals.  `rpg eval compare RUN_A RUN_B` tests differences."""
+    """Run a policy on tasks: success and progress per task, family version, steering intent and
+    split, with standard errors and Wilson 95% intervals.  An episode whose policy fails or times
+    out is kept with its error and counts as a failure.  `rpg eval compare RUN_A RUN_B` tests
+    differences (McNemar paired, Fisher unpaired, Holm-corrected)."""
     from rpg.eval import EvalConfig, run_eval
 
     if target == "compare":
-        _eval_compare(runs or [], as_json)
+        _eval_compare(runs or [], as_json, allow_mismatch)
         return
     if runs:
         _fail(f"unexpected argument {runs[0]}; rpg eval takes one TARGET (or: rpg eval compare RUN_A RUN_B)")
@@ -390,27 +398,41 @@ def eval_cmd(
     cams = None if cameras is None else tuple(c for c in cameras.split(",") if c)
     config = EvalConfig(target=target, policy=policy, seeds=_parse_seeds(episodes, seeds), embodiment=embodiment,
                         instruction=instruction, cameras=cams, image_size=(image_size, image_size), replan=replan,
-                        video=video, library=str(library))
+                        video=video, library=str(library), control_mode=control_mode,
+                        inference_timeout=inference_timeout, episode_timeout=episode_timeout)
     from rich.progress import Progress
 
     with _reported_errors(), Progress(console=err, transient=True) as bar:
         tick = bar.add_task("episodes", total=None)
-        summary = run_eval(config, output, jobs=jobs, progress=lambda rec: bar.advance(tick))
+        summary = run_eval(config, output, jobs=jobs, progress=lambda rec: bar.advance(tick), fail_fast=fail_fast)
     if as_json:
         print(json.dumps(summary, indent=2, sort_keys=True))
         return
     from rich.table import Table
 
     table = Table(title=f"{esc(policy)} on {esc(target)} ({embodiment})")
-    for col in ("task", "success", "stderr", "95% Wilson", "n"):
+    for col in ("task", "success", "stderr", "95% Wilson", "progress", "n", "errors", "latency p50/p95"):
         table.add_column(col, justify="left" if col == "task" else "right")
     for name, r in summary["tasks"].items():
+        t = summary["timing"].get(name, {})
+        lat = ("-" if t.get("latency_median_s") is None else
+               f"{1000 * t['latency_median_s']:.0f}/{1000 * t['latency_p95_s']:.0f} ms")
         table.add_row(esc(name), f"{100 * r['mean']:.1f}%", f"{100 * r['stderr']:.1f}",
-                      f"{100 * r['wilson95'][0]:.0f}-{100 * r['wilson95'][1]:.0f}%", str(r["n"]))
-    o = summary["overall"]
+                      f"{100 * r['wilson95'][0]:.0f}-{100 * r['wilson95'][1]:.0f}%",
+                      f"{100 * r['progress']:.0f}% ± {100 * r['progress_stderr']:.0f}", str(r["n"]), str(r["errors"]), lat)
+    o, ot = summary["overall"], summary["over_tasks"]
     table.add_row("[bold]overall[/]", f"{100 * o['mean']:.1f}%", f"{100 * o['stderr']:.1f}",
-                  f"{100 * o['wilson95'][0]:.0f}-{100 * o['wilson95'][1]:.0f}%", str(o["n"]))
+                  f"{100 * o['wilson95'][0]:.0f}-{100 * o['wilson95'][1]:.0f}%",
+                  f"{100 * o['progress']:.0f}% ± {100 * o['progress_stderr']:.0f}", str(o["n"]), str(o["errors"]), "")
     out.print(table)
+    out.print(f"mean over {ot['tasks']} tasks: success {100 * ot['mean']:.1f}% ± {100 * ot['stderr']:.1f}, "
+              f"progress {100 * ot['progress']:.1f}% ± {100 * ot['progress_stderr']:.1f} (standard error over tasks)",
+              highlight=False)
+    for e in summary["errors"][:10]:
+        out.print(f"error: {esc(e['task'])} seed {e['seed']} ({e['instruction_variant']}): {esc(e['error'])}",
+                  highlight=False)
+    if len(summary["errors"]) > 10:
+        out.print(f"... and {len(summary['errors']) - 10} more episodes with errors (summary.json)", highlight=False)
     for group in ("intents", "splits"):
         parts = [f"{k} {100 * r['mean']:.0f}% (n {r['n']})" for k, r in summary[group].items() if k != "none"]
         if parts:
@@ -418,38 +440,64 @@ def eval_cmd(
     out.print(f"run: {output}")
 
 
-def _eval_compare(runs: list[Path], as_json: bool) -> None:
-    from rpg.eval.stats import SIGNIFICANCE, compare_runs
+def _eval_compare(runs: list[Path], as_json: bool, allow_mismatch: bool = False) -> None:
+    from rpg.eval.runner import read_episodes
+    from rpg.eval.stats import SIGNIFICANCE, compare_runs, mismatches
 
     if len(runs) != 2:
         _fail("rpg eval compare takes two run directories: RUN_A RUN_B")
-    docs = []
+    docs, episodes = [], []
     for r in runs:
         try:
             docs.append(json.loads((r / "summary.json").read_text()))
         except (OSError, ValueError):
             _fail(f"{r} holds no readable summary.json (an rpg eval run directory)")
-    rows = compare_runs(*docs)
+        if "task_hashes" not in docs[-1]:
+            _fail(f"{r}'s summary.json was written by an older rpg (no task hashes); run rpg eval on it again to "
+                  "update it")
+        episodes.append(read_episodes(r / "episodes.jsonl") if (r / "episodes.jsonl").is_file() else [])
+    differ = mismatches(*docs)
+    if differ and not allow_mismatch:
+        _fail(f"the runs differ in {'; '.join(differ)}: their numbers are not comparable (--allow-mismatch compares "
+              "them anyway)")
+    result = compare_runs(docs[0], docs[1], episodes[0], episodes[1])
+    result["mismatch_overridden"] = differ
+    seeds = [d["config"].get("seeds") for d in docs]
+    result["same_seeds"] = seeds[0] == seeds[1]
     if as_json:
-        print(json.dumps(rows, indent=2))
+        print(json.dumps(result, indent=2))
         return
     from rich.table import Table
 
-    table = Table(title=f"{esc(str(runs[0]))} (A) vs {esc(str(runs[1]))} (B): two-proportion z-test")
-    for col in ("task", "A", "B", "B - A", "p", ""):
+    table = Table(title=f"{esc(str(runs[0]))} (A) vs {esc(str(runs[1]))} (B)")
+    for col in ("task", "A", "B", "B - A", "progress B - A", "test", "p", "p (Holm)", ""):
         table.add_column(col, justify="left" if col == "task" else "right")
+
     def cell(r: dict | None) -> str:
         return "-" if r is None else f"{r['successes']}/{r['n']} ({100 * r['mean']:.0f}%)"
 
-    for row in rows:
-        a, b = row["a"], row["b"]
-        table.add_row(esc(row["task"]), cell(a), cell(b),
+    for row in result["rows"]:
+        table.add_row(esc(row["task"]), cell(row["a"]), cell(row["b"]),
                       "-" if row["diff"] is None else f"{100 * row['diff']:+.0f} pts",
+                      "-" if row["progress_diff"] is None else f"{100 * row['progress_diff']:+.0f} pts",
+                      {"mcnemar_exact": "McNemar (paired)", "fisher_exact": "Fisher"}.get(row["test"], "-"),
                       "-" if row["p_value"] is None else f"{row['p_value']:.3g}",
+                      "-" if row["p_holm"] is None else f"{row['p_holm']:.3g}",
                       "[bold]real[/]" if row["significant"] else "")
+    ov = result["overall"]
+    if ov["a"] and ov["b"]:
+        table.add_row("[bold]mean over tasks[/]", f"{100 * ov['a']['mean']:.1f}% ± {100 * ov['a']['stderr']:.1f}",
+                      f"{100 * ov['b']['mean']:.1f}% ± {100 * ov['b']['stderr']:.1f}", f"{100 * ov['diff']:+.1f} pts",
+                      f"{100 * (ov['b']['progress'] - ov['a']['progress']):+.1f} pts", "", "", "", "")
     out.print(table)
-    out.print(f"{sum(r['significant'] for r in rows)} of {len(rows)} differences are real at p < {SIGNIFICANCE}",
-              highlight=False)
+    rows = result["rows"]
+    out.print(f"{sum(r['significant'] for r in rows)} of {len(rows)} differences are real at Holm-adjusted p < "
+              f"{SIGNIFICANCE} ({result['paired_tasks']} tasks paired by seed: McNemar's exact test; "
+              f"{result['unpaired_tasks']} unpaired: Fisher's exact test)", highlight=False)
+    if not result["same_seeds"]:
+        out.print("the runs used different seeds: their tasks are compared unpaired", highlight=False)
+    if differ:
+        out.print(f"[bold]compared although the runs differ (--allow-mismatch)[/]: {esc('; '.join(differ))}")
 
 
 session_app = typer.Typer(help="Scripted steering sessions.", no_args_is_help=True)

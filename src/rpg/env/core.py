@@ -58,7 +58,13 @@ released at ``g <= -0.41``, command >= 180).
 
 **info**: ``success``, ``goal_satisfied`` (G alone), ``is_grasped``, ``grasped`` (object
 name or ""), ``diagnostics`` (``{"satisfied": [...], "unsatisfied": [...]}``: one line per
-leaf predicate, BDDL-style), ``elapsed_steps``, ``seed``, ``task_hash``, ``instruction``.
+leaf predicate, BDDL-style), ``progress`` (the fraction of those leaves that hold, in [0, 1]:
+a structure's leaves are its members, e.g. one per cube of a stack, so a tower with 5 of 6
+cubes placed scores 5/6; a temporal goal's order counts as one more leaf), ``elapsed_steps``,
+``seed``, ``task_hash``, ``instruction``.
+
+``env.spec.max_episode_steps`` is the task's own limit (it depends on the task, so the
+registered id has none); the environment truncates the episode itself.
 """
 
 from __future__ import annotations
@@ -126,6 +132,20 @@ class BlockTaskEnv(gym.Env):
     """
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": int(C.CONTROL_HZ)}
+
+    @property
+    def spec(self):
+        """The registered spec with this task's ``max_episode_steps`` (None outside ``gym.make``)."""
+        import dataclasses
+
+        base = self.__dict__.get("_spec")
+        if base is None or "max_episode_steps" not in self.__dict__:
+            return base
+        return dataclasses.replace(base, max_episode_steps=self.max_episode_steps)
+
+    @spec.setter
+    def spec(self, value) -> None:
+        self.__dict__["_spec"] = value
 
     def __init__(self, task: str | Path | PreparedTask, embodiment: str = "panda", control_mode: str = "ee_delta",
                  cameras: Sequence[str] = ("agentview", "wrist"), image_size: tuple[int, int] = C.ENV_IMAGE_SIZE,
@@ -304,13 +324,14 @@ class BlockTaskEnv(gym.Env):
                 m.update(state)
                 order = m.result()
                 satisfied = satisfied and order.satisfied
-                if not order.satisfied:
-                    bad.append(order.reason)
+                (good if order.satisfied else bad).append(order.reason)
         body = self.robot.grasped_body()
         grasped = self._body_names.get(body, "") if body is not None else ""
+        leaves = len(good) + len(bad)
         return {
             "success": bool(satisfied and body is None),
             "goal_satisfied": bool(satisfied),
+            "progress": len(good) / leaves if leaves else float(bool(satisfied)),
             "is_grasped": body is not None,
             "grasped": grasped,
             "diagnostics": {"satisfied": good, "unsatisfied": bad},

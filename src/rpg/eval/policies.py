@@ -38,8 +38,9 @@ CONNECT_TIMEOUT_S = 10.0
 """Default time a remote policy server has to accept the connection and send its metadata, s."""
 
 INFERENCE_TIMEOUT_S = 30.0
-"""Default time a remote policy server has to answer one observation, s (sending the
-observation included)."""
+"""Default time one ``policy.act`` may take, s: a remote policy server's time to answer one
+observation (sending it included), and the alarm ``rpg eval`` sets around a Python plug-in's
+call.  With the connect timeout, a silent server fails each episode within 40 s."""
 
 CLOSE_TIMEOUT_S = 2.0
 """How long closing the connection waits for the server's closing handshake, s."""
@@ -322,8 +323,9 @@ def _load_class(spec: str):
     return cls
 
 
-def load_policy(spec: str):
-    """The policy a ``--policy`` SPEC names (see the module docstring).
+def load_policy(spec: str, inference_timeout: float = INFERENCE_TIMEOUT_S, connect_timeout: float = CONNECT_TIMEOUT_S):
+    """The policy a ``--policy`` SPEC names (see the module docstring); a remote server gets
+    ``connect_timeout`` and ``inference_timeout`` (s).
 
     Raises:
         PolicyError: an unknown name, a module or class that cannot be loaded, a class
@@ -337,7 +339,7 @@ def load_policy(spec: str):
     if spec == "noop":
         return NoopPolicy()
     if spec.startswith(("ws://", "wss://")):
-        return WebsocketPolicy(spec)
+        return WebsocketPolicy(spec, connect_timeout=connect_timeout, inference_timeout=inference_timeout)
     if ":" not in spec or spec.endswith(":"):
         raise PolicyError(f"unknown policy {spec!r}: give {', '.join(BUILTIN)}, module:Class, "
                           "path/to/file.py:Class or ws://host:port")

@@ -32,16 +32,19 @@ video{width:256px;margin:.2rem}.fail{color:#a00}details{margin:.3rem 0}</style><
 <body><h1>{{ cfg.policy }} on {{ cfg.target }}</h1>
 <p>embodiment {{ cfg.embodiment }}, instruction {{ cfg.instruction }}, seeds {{ cfg.seeds|length }} per task
 ({{ cfg.seeds[0] }}..{{ cfg.seeds[-1] }}); overall <b id="overall">{{ pct(s.overall.mean) }}</b>
-(n {{ s.overall.n }}, 95% {{ pct(s.overall.wilson95[0]) }}..{{ pct(s.overall.wilson95[1]) }}).</p>
+(n {{ s.overall.n }}, 95% {{ pct(s.overall.wilson95[0]) }}..{{ pct(s.overall.wilson95[1]) }}), progress
+<b id="progress">{{ pct(s.overall.progress or 0) }}</b> ± {{ pct(s.overall.progress_stderr or 0) }}{% if s.over_tasks %};
+mean over {{ s.over_tasks.tasks }} tasks {{ pct(s.over_tasks.mean) }} ± {{ pct(s.over_tasks.stderr) }} (standard error over tasks){% endif %}.
+{% if s.errors %}<span class="fail">{{ s.errors|length }} episodes ended with a policy error (counted as failures).</span>{% endif %}</p>
 <img class="chart" src="{{ name }}/success.png" alt="success rate per task with 95% Wilson intervals">
 {% for title, group in groups %}{% if group %}<h2>per {{ title }}</h2>
-<table id="{{ title|replace(' ', '-') }}"><tr><th>{{ title }}</th><th>success</th><th>stderr</th><th>95% Wilson</th><th>n</th></tr>
+<table id="{{ title|replace(' ', '-') }}"><tr><th>{{ title }}</th><th>success</th><th>stderr</th><th>95% Wilson</th><th>progress</th><th>n</th></tr>
 {% for k, r in group.items() %}<tr><td>{{ k }}</td><td class="num">{{ pct(r.mean) }}</td><td class="num">{{ pct(r.stderr) }}</td>
-<td class="num">{{ pct(r.wilson95[0]) }}..{{ pct(r.wilson95[1]) }}</td><td class="num">{{ r.n }}</td></tr>
+<td class="num">{{ pct(r.wilson95[0]) }}..{{ pct(r.wilson95[1]) }}</td><td class="num">{{ pct(r.progress or 0) }} ± {{ pct(r.progress_stderr or 0) }}</td><td class="num">{{ r.n }}</td></tr>
 {% endfor %}</table>{% endif %}{% endfor %}
 <h2>episodes</h2>
 {% for key, eps in episodes %}<details{% if loop.first %} open{% endif %}><summary>{{ key }}: {{ eps|selectattr("success")|list|length }}/{{ eps|length }}</summary>
-{% for e in eps %}<div class="episode" data-success="{{ e.success|lower }}">seed {{ e.seed }} ({{ e.instruction_variant }}): {% if e.success %}success in {{ e.steps }} steps{% else %}<span class="fail">failed after {{ e.steps }} steps: {{ e.unsatisfied|join("; ") }}</span>{% endif %}
+{% for e in eps %}<div class="episode" data-success="{{ e.success|lower }}">seed {{ e.seed }} ({{ e.instruction_variant }}): {% if e.error %}<span class="fail">policy error: {{ e.error }}</span>{% elif e.success %}success in {{ e.steps }} steps{% else %}<span class="fail">failed after {{ e.steps }} steps (progress {{ pct(e.progress or 0) }}): {{ e.unsatisfied|join("; ") }}</span>{% endif %}
 {% if e.video %}<br><video controls muted preload="metadata" src="{{ name }}/{{ e.video }}"></video>{% endif %}</div>
 {% endfor %}</details>{% endfor %}
 </body></html>

@@ -1,11 +1,21 @@
 """Running a policy over the episodes of a target and recording them (``rpg eval``).
 
 A run directory holds ``run.json`` (the settings), ``episodes.jsonl`` (one line per finished
-episode: the run's commit log), ``summary.json`` (:func:`rpg.eval.stats.summarize`) and, with
-``video``, ``videos/``.  A run killed at any point resumes: finished episodes are kept and
-only the missing ones run; a torn last line is discarded.  Episodes run in ``jobs`` spawned
-processes; every episode is determined by (task, seed, instruction) and the policy, so a
-deterministic policy gives the same ``summary.json``, byte for byte, for any job count.
+episode, appended and fsynced as the episode ends: the run's commit log), ``summary.json``
+(:func:`rpg.eval.stats.summarize`) and, with ``video``, ``videos/``.  A run killed at any
+point resumes: committed episodes are kept and only the missing ones run; a torn last line is
+discarded.  Settings are checked before anything is written: a refused setting leaves the
+run directory as it was.
+
+An episode whose policy raises, answers with something that is not an action, or exceeds a
+timeout (``inference_timeout`` per call, ``episode_timeout`` per episode; a remote server's
+connect timeout when it is loaded) is committed with an ``error`` field and counts as a
+failure; the run goes on (``fail_fast`` stops it) and the next episode gets a fresh policy
+(a remote one reconnects).
+
+Episodes run in ``jobs`` spawned processes, one episode per work unit; every episode is
+determined by (task, seed, instruction) and the policy, so a deterministic policy gives the
+same ``summary.json`` for any job count, byte for byte apart from its ``timing`` block.
 """
 
 from __future__ import annotations
@@ -16,6 +26,9 @@ import hashlib
 import json
 import multiprocessing
 import os
+import signal
+import threading
+import time
 from collections import OrderedDict
 from collections.abc import Callable
 from dataclasses import asdict, dataclass
@@ -25,13 +38,12 @@ import numpy as np
 from filelock import FileLock, Timeout
 
 from rpg.errors import BadInput
-from rpg.eval.policies import BUILTIN, PolicyError, action_chunk, load_policy
+from rpg.eval.policies import BUILTIN, INFERENCE_TIMEOUT_S, PolicyError, action_chunk, load_policy
 from rpg.jsonl import cut_torn_line, read_jsonl
 from rpg.validate.isolation import die_with_parent
 
-SEEDS_PER_UNIT = 5
-"""Episodes of one task a worker runs per work unit (its environment is built once per
-process and reused)."""
+EPISODE_TIMEOUT_S = 600.0
+"""Default wall-clock time one episode may take, policy calls and simulation together, s."""
 
 DEFAULT_IMAGE_SIZE = (224, 224)
 """Camera images (height, width) sent to learned policies, pixels (openpi's input size)."""
@@ -77,6 +89,9 @@ class EvalConfig:
             (None: the whole chunk).
         video: write an agentview MP4 per episode.
         library: the manifest a ``KEY=VALUE`` target filters.
+        control_mode: the action space (``ee_delta``, ``ee_abs``, ``joint_pos``).
+        inference_timeout: seconds one ``policy.act`` may take (> 0).
+        episode_timeout: seconds one episode may take (> 0).
     """
 
     target: str
@@ -89,6 +104,9 @@ class EvalConfig:
     replan: int | None = None
     video: bool = False
     library: str = "library/manifest.yaml"
+    control_mode: str = "ee_delta"
+    inference_timeout: float = INFERENCE_TIMEOUT_S
+    episode_timeout: float = EPISODE_TIMEOUT_S
 
     def camera_list(self) -> tuple[str, ...]:
         if self.cameras is not None:
@@ -195,17 +213,26 @@ def instruction_variants(mode: str, task: EvalTask) -> list[str]:
     ``all`` the canonical one and every paraphrase.
 
     Raises:
-        BadInput: an unknown mode.
+        BadInput: an unknown mode, or a paraphrase the task does not have.
     """
     if mode == "all":
         return ["canonical", *(f"paraphrase:{k}" for k in range(task.paraphrases))]
     head, _, k = mode.partition(":")
-    if mode == "canonical" or (head == "paraphrase" and k.isdigit()):
+    if mode == "canonical":
+        return [mode]
+    if head == "paraphrase" and k.isdigit():
+        if int(k) >= task.paraphrases:
+            raise BadInput(f"--instruction {mode}: {task.key} has {task.paraphrases} paraphrases "
+                           f"(they count from 0)")
         return [mode]
     raise BadInput(f"--instruction must be canonical, paraphrase:K or all, not {mode!r}")
 
 
 # -- episodes ------------------------------------------------------------------------
+class EpisodeTimeout(PolicyError):
+    """A policy call or an episode that ran past its timeout."""
+
+
 def _state_hash(env) -> str:
     """A short hash of every object's pose (rounded to 1e-6): tells episodes' states apart."""
     poses = env.unwrapped.scene.poses()
@@ -213,45 +240,93 @@ def _state_hash(env) -> str:
     return hashlib.sha256(flat.tobytes()).hexdigest()[:16]
 
 
-def run_episode(env, policy, seed: int, replan: int | None, video_path: Path | None = None) -> dict:
+@contextlib.contextmanager
+def _alarm(seconds: float, what: str):
+    """Raise :class:`EpisodeTimeout` (``what``) in this thread after ``seconds``: a Python
+    policy's call cannot be stopped otherwise.  Only the main thread receives signals; in any
+    other thread this does nothing (a remote policy keeps its own timeouts)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def fire(signum, frame):
+        raise EpisodeTimeout(what)
+
+    before = signal.signal(signal.SIGALRM, fire)
+    signal.setitimer(signal.ITIMER_REAL, max(seconds, 1e-3))
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, before)
+
+
+def _one_line(exc: BaseException) -> str:
+    text = " ".join(str(exc).split())[:300]
+    return text if isinstance(exc, PolicyError) else f"{type(exc).__name__}: {text}"
+
+
+def run_episode(env, policy, seed: int, replan: int | None, video_path: Path | None = None,
+                inference_timeout: float = INFERENCE_TIMEOUT_S, episode_timeout: float = EPISODE_TIMEOUT_S) -> dict:
     """One episode of ``policy`` from ``seed``; the record's outcome fields.
+
+    ``progress`` is the fraction of G's leaves that hold at the end (``info["progress"]``),
+    ``progress_max`` its maximum over the episode; ``latency_s`` the duration of each
+    ``policy.act`` call (s); ``wall_s`` the episode's wall-clock time (s).
 
     Raises:
         PolicyError: the policy answered with something that is not an action (chunk).
+        EpisodeTimeout: a call ran past ``inference_timeout`` or the episode past ``episode_timeout``.
     """
     from rpg.env.video import VideoWriter
 
+    t0 = time.monotonic()
+    deadline = t0 + episode_timeout
     obs, info = env.reset(seed=int(seed))
     initial = _state_hash(env)
     policy.reset(env.unwrapped.instruction)
     dim = env.action_space.shape[0]
     steps, queue, done, truncated = 0, [], False, False
+    progress_max = float(info["progress"])
+    latency: list[float] = []
     # the video appears only when the episode ends without error (VideoWriter discards a torn one)
     with VideoWriter(video_path, fps=env.metadata["render_fps"]) if video_path else contextlib.nullcontext() as writer:
         if writer:
             writer.write(env.unwrapped.render_camera("agentview"))
         while not done:
             if not queue:
-                chunk = action_chunk(policy.act(obs), dim)
+                left = deadline - time.monotonic()
+                if left <= 0:
+                    raise EpisodeTimeout(f"the episode ran past its {episode_timeout:g} s (episode timeout)")
+                which = "inference" if inference_timeout <= left else "episode"
+                limit = min(inference_timeout, left)
+                t = time.monotonic()
+                with _alarm(limit, f"the policy did not answer within {limit:g} s ({which} timeout)"):
+                    answer = policy.act(obs)
+                latency.append(time.monotonic() - t)
+                chunk = action_chunk(answer, dim)
                 queue = list(chunk[: replan or len(chunk)])
             obs, _, terminated, truncated, info = env.step(queue.pop(0))
             steps += 1
+            progress_max = max(progress_max, float(info["progress"]))
             done = terminated or truncated
             if writer:
                 writer.write(env.unwrapped.render_camera("agentview"))
     return {"success": bool(info["success"]), "steps": steps, "truncated": bool(truncated),
             "initial_state": initial, "final_state": _state_hash(env), "instruction": env.unwrapped.instruction,
             "unsatisfied": list(info["diagnostics"]["unsatisfied"]),
-            "satisfied": list(info["diagnostics"]["satisfied"])}
+            "satisfied": list(info["diagnostics"]["satisfied"]),
+            "progress": round(float(info["progress"]), 6), "progress_max": round(progress_max, 6),
+            "latency_s": [round(x, 6) for x in latency], "wall_s": round(time.monotonic() - t0, 3), "error": None}
 
 
 @dataclass(frozen=True)
 class Unit:
-    """Work for one process: some seeds of one task with one instruction."""
+    """Work for one process: one episode (a seed of one task with one instruction)."""
 
     task: EvalTask
     variant: str
-    seeds: tuple[int, ...]
+    seed: int
     config: EvalConfig
     run_dir: str
 
@@ -276,18 +351,19 @@ def _env_for(unit: Unit):
             _ENVS.popitem(last=False)[1][0].close()
         cfg = unit.config
         size = VIDEO_SIZE if cfg.video and not cfg.camera_list() else tuple(cfg.image_size)
-        env = BlockTaskEnv(unit.task.path, embodiment=cfg.embodiment, cameras=cfg.camera_list(),
-                           image_size=size, instruction=unit.variant)
+        env = BlockTaskEnv(unit.task.path, embodiment=cfg.embodiment, control_mode=cfg.control_mode,
+                           cameras=cfg.camera_list(), image_size=size, instruction=unit.variant)
         _ENVS[key] = (env, env.source.content_hash)
     _ENVS.move_to_end(key)
     return _ENVS[key]
 
 
-def _policy_for(spec: str, env):
-    """This process's policy for ``spec``, bound to ``env`` (``bind`` again when the
+def _policy_for(config: EvalConfig, env):
+    """This process's policy for ``config.policy``, bound to ``env`` (``bind`` again when the
     environment changes)."""
+    spec = config.policy
     if spec not in _POLICY:
-        _POLICY[spec] = [load_policy(spec), None]
+        _POLICY[spec] = [load_policy(spec, inference_timeout=config.inference_timeout), None]
     entry = _POLICY[spec]
     if entry[1] is not env and callable(getattr(entry[0], "bind", None)):
         entry[0].bind(env)
@@ -295,34 +371,50 @@ def _policy_for(spec: str, env):
     return entry[0]
 
 
+def _drop_policy(spec: str) -> None:
+    """Forget this process's policy for ``spec`` after a failed episode: the next episode gets
+    a fresh one (a remote server is connected again; a late answer is never read)."""
+    entry = _POLICY.pop(spec, None)
+    if entry is not None and callable(getattr(entry[0], "close", None)):
+        with contextlib.suppress(Exception):
+            entry[0].close()
+
+
 def close_workers() -> None:
     """Close this process's environments and policies (a remote policy's connection)."""
     for env, _ in _ENVS.values():
         env.close()
-    for policy, _ in _POLICY.values():
-        if callable(getattr(policy, "close", None)):
-            policy.close()
+    for spec in list(_POLICY):
+        _drop_policy(spec)
     _ENVS.clear()
-    _POLICY.clear()
 
 
-def run_unit(unit: Unit) -> list[dict]:
-    """Run a unit's episodes; their ``episodes.jsonl`` records."""
+def run_unit(unit: Unit) -> dict:
+    """Run a unit's episode; its ``episodes.jsonl`` record.  A failure of the policy (an
+    exception, a timeout, a refused answer, a server that cannot be reached) is the record's
+    ``error``, with ``success`` false."""
+    cfg = unit.config
     env, content_hash = _env_for(unit)
-    policy = _policy_for(unit.config.policy, env)
-    out = []
-    for seed in unit.seeds:
+    video = None
+    if cfg.video:
+        video = Path(unit.run_dir) / "videos" / f"{unit.task.key.replace('@', '-')}-{unit.variant.replace(':', '')}-s{unit.seed}.mp4"
+        video.parent.mkdir(parents=True, exist_ok=True)
+    t0 = time.monotonic()
+    try:
+        policy = _policy_for(cfg, env)
+        result = run_episode(env, policy, unit.seed, cfg.replan, video, cfg.inference_timeout, cfg.episode_timeout)
+    except Exception as exc:  # noqa: BLE001 - the policy's failure is this episode's outcome
+        _drop_policy(cfg.policy)
+        result = {"success": False, "steps": None, "truncated": False, "initial_state": None, "final_state": None,
+                  "instruction": env.unwrapped.instruction, "unsatisfied": [], "satisfied": [],
+                  "progress": 0.0, "progress_max": 0.0, "latency_s": [],
+                  "wall_s": round(time.monotonic() - t0, 3), "error": _one_line(exc)}
         video = None
-        if unit.config.video:
-            video = Path(unit.run_dir) / "videos" / f"{unit.task.key.replace('@', '-')}-{unit.variant.replace(':', '')}-s{seed}.mp4"
-            video.parent.mkdir(parents=True, exist_ok=True)
-        result = run_episode(env, policy, seed, unit.config.replan, video)
-        out.append({"task": unit.task.name, "task_path": unit.task.path, "task_hash": content_hash,
-                    "family": unit.task.family, "version": unit.task.version, "intent": unit.task.intent,
-                    "split": unit.task.split, "seed": int(seed), "instruction_variant": unit.variant,
-                    "embodiment": unit.config.embodiment, "policy": unit.config.policy, **result,
-                    "video": str(video.relative_to(unit.run_dir)) if video else None})
-    return out
+    return {"task": unit.task.name, "task_path": unit.task.path, "task_hash": content_hash,
+            "family": unit.task.family, "version": unit.task.version, "intent": unit.task.intent,
+            "split": unit.task.split, "seed": int(unit.seed), "instruction_variant": unit.variant,
+            "embodiment": cfg.embodiment, "policy": cfg.policy, **result,
+            "video": str(video.relative_to(unit.run_dir)) if video and video.exists() else None}
 
 
 def _episode_key(rec: dict) -> tuple:
@@ -352,25 +444,55 @@ def _check_run_dir(run_dir: Path, config: EvalConfig) -> None:
         raise BadInput(f"{run_dir} is not empty and holds no run.json; give a new -o directory")
 
 
-def run_eval(config: EvalConfig, run_dir: str | Path, jobs: int = 1,
-             progress: Callable[[dict], None] | None = None) -> dict:
-    """Run ``config`` into ``run_dir`` (resuming what is there); return the summary.
+def check_settings(config: EvalConfig) -> list[tuple[EvalTask, str]]:
+    """Every setting of ``config`` checked, before anything is written; the (task, instruction
+    variant) pairs it runs.
 
     Raises:
-        BadInput: a bad target, policy, instruction mode or run directory.
-        BadInput: also when another ``rpg eval`` is writing ``run_dir``.
-        PolicyError: the policy failed (the episodes finished before it are kept).
+        BadInput: no seeds, a bad replan, timeout, embodiment, control mode, camera, image
+            size, target, instruction mode or paraphrase, or a policy that cannot be loaded.
     """
+    from rpg.env.core import CAMERAS
+    from rpg.env.embodiments import make_embodiment
+
     if not config.seeds:
         raise BadInput("no seeds: give --episodes N (N >= 1) or --seeds LIST")
     if config.replan is not None and config.replan < 1:
         raise BadInput("--replan must be at least 1")
-    run_dir = Path(run_dir)
-    _check_run_dir(run_dir, config)
+    for name, value in (("--inference-timeout", config.inference_timeout), ("--episode-timeout", config.episode_timeout)):
+        if not (isinstance(value, int | float) and value > 0 and value == value and value != float("inf")):
+            raise BadInput(f"{name} must be a positive number of seconds, not {value!r}")
+    modes = make_embodiment(config.embodiment).CONTROL_MODES  # EmbodimentError (BadInput) for an unknown one
+    if config.control_mode not in modes:
+        raise BadInput(f"{config.embodiment} has no control mode {config.control_mode!r}; it has {', '.join(modes)}")
+    bad = [c for c in config.camera_list() if c not in CAMERAS]
+    if bad:
+        raise BadInput(f"unknown camera {bad[0]!r} in --cameras; cameras are {', '.join(CAMERAS)}")
+    h, w = config.image_size
+    if not (16 <= h <= 2048 and 16 <= w <= 2048):
+        raise BadInput(f"image size must be between 16 and 2048 pixels, not {h}x{w}")
     tasks = eval_tasks(config.target, config.library)
     work = [(t, v) for t in tasks for v in instruction_variants(config.instruction, t)]
     if config.policy not in BUILTIN:
-        load_policy(config.policy)  # fail before anything is written: a bad module or an unreachable server
+        close = getattr(load_policy(config.policy), "close", None)  # a bad module or an unreachable server
+        if callable(close):
+            close()
+    return work
+
+
+def run_eval(config: EvalConfig, run_dir: str | Path, jobs: int = 1,
+             progress: Callable[[dict], None] | None = None, fail_fast: bool = False) -> dict:
+    """Run ``config`` into ``run_dir`` (resuming what is there); return the summary.
+
+    Raises:
+        BadInput: a bad setting (:func:`check_settings`) or run directory, or another
+            ``rpg eval`` writing ``run_dir``; nothing is written then.
+        PolicyError: with ``fail_fast``, the first episode that failed (the episodes
+            committed before it are kept).
+    """
+    run_dir = Path(run_dir)
+    _check_run_dir(run_dir, config)
+    work = check_settings(config)
     run_dir.mkdir(parents=True, exist_ok=True)
     lock = FileLock(str(run_dir / LOCK_NAME))
     try:
@@ -378,12 +500,12 @@ def run_eval(config: EvalConfig, run_dir: str | Path, jobs: int = 1,
     except Timeout:
         raise BadInput(f"another rpg eval is writing {run_dir}; wait for it to finish or give a new -o directory") from None
     try:
-        return _run_locked(config, run_dir, work, jobs, progress)
+        return _run_locked(config, run_dir, work, jobs, progress, fail_fast)
     finally:
         lock.release()
 
 
-def _run_locked(config: EvalConfig, run_dir: Path, work: list, jobs: int, progress) -> dict:
+def _run_locked(config: EvalConfig, run_dir: Path, work: list, jobs: int, progress, fail_fast: bool) -> dict:
     """The part of :func:`run_eval` that writes the run directory (its lock held)."""
     from rpg.artifact import write_file
     from rpg.eval.stats import summarize
@@ -392,20 +514,19 @@ def _run_locked(config: EvalConfig, run_dir: Path, work: list, jobs: int, progre
     log = run_dir / "episodes.jsonl"
     records = cut_torn_line(log)
     done = {_episode_key(r) for r in records}
-    units = []
-    for task, variant in work:
-        todo = [s for s in config.seeds if (task.path, variant, int(s)) not in done]
-        for i in range(0, len(todo), SEEDS_PER_UNIT):
-            units.append(Unit(task, variant, tuple(todo[i:i + SEEDS_PER_UNIT]), config, str(run_dir)))
+    units = [Unit(task, variant, int(s), config, str(run_dir)) for task, variant in work for s in config.seeds
+             if (task.path, variant, int(s)) not in done]
     with open(log, "ab") as fh:
-        def commit(batch: list[dict]) -> None:
-            for rec in batch:
-                fh.write((json.dumps(rec, sort_keys=True) + "\n").encode())
-                records.append(rec)
-                if progress:
-                    progress(rec)
+        def commit(rec: dict) -> None:
+            fh.write((json.dumps(rec, sort_keys=True) + "\n").encode())
             fh.flush()
             os.fsync(fh.fileno())
+            records.append(rec)
+            if progress:
+                progress(rec)
+            if fail_fast and rec["error"]:
+                raise PolicyError(f"{rec['task']} seed {rec['seed']} ({rec['instruction_variant']}) failed: "
+                                  f"{rec['error']}; the run stopped (--fail-fast); the finished episodes are kept")
 
         if jobs <= 1:
             try:
@@ -430,4 +551,5 @@ def _run_locked(config: EvalConfig, run_dir: Path, work: list, jobs: int, progre
     return summary
 
 
-__all__ = ["EvalConfig", "EvalTask", "PolicyError", "eval_tasks", "read_episodes", "run_eval", "run_episode"]
+__all__ = ["EpisodeTimeout", "EvalConfig", "EvalTask", "PolicyError", "check_settings", "eval_tasks", "read_episodes",
+           "run_eval", "run_episode"]
