@@ -32,7 +32,7 @@ def _lines(path: Path) -> list[dict]:
 
 def test_dataset_matches_its_metadata_and_replays(tmp_path):
     out = tmp_path / "ds"
-    r = _rpg("demos", STACK, "--out", out, "-n", "2", "--image-size", "64")
+    r = _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", out, "-n", "2", "--image-size", "64")
     assert r.returncode == 0, r.stderr
     info = json.loads((out / "meta" / "info.json").read_text())
     assert info["codebase_version"] == "v2.1" and info["total_episodes"] == 2 and info["fps"] == 20.0
@@ -68,7 +68,7 @@ def test_dataset_matches_its_metadata_and_replays(tmp_path):
 
 def test_replay_detects_a_changed_action(tmp_path):
     out = tmp_path / "ds"
-    assert _rpg("demos", STACK, "--out", out, "-n", "1", "--cameras", "").returncode == 0
+    assert _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", out, "-n", "1", "--cameras", "").returncode == 0
     path = out / "data" / "chunk-000" / "episode_000000.parquet"
     table = pq.read_table(path)
     actions = np.array(table.column("action").to_pylist(), np.float32)
@@ -99,11 +99,11 @@ def _kill_after_first_episode(args: list[str], out: Path) -> list[dict]:
 def test_a_run_killed_mid_way_resumes_keeping_finished_episodes(tmp_path):
     out = tmp_path / "ds"
     log = out / "meta" / "episodes.jsonl"
-    kept = len(_kill_after_first_episode(["demos", STACK, "--out", str(out), "-n", "4", "--image-size", "32"], out))
+    kept = len(_kill_after_first_episode(["demos", STACK, "--embodiment", "floating_gripper", "--out", str(out), "-n", "4", "--image-size", "32"], out))
     assert 1 <= kept < 4
     torn = out / "data" / "chunk-000" / "episode_000009.parquet"  # what a kill during writing leaves
     torn.write_bytes(b"PAR1 torn")
-    r = _rpg("demos", STACK, "--out", out, "-n", "4", "--image-size", "32")
+    r = _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", out, "-n", "4", "--image-size", "32")
     assert r.returncode == 0, r.stderr
     episodes = _lines(log)
     assert [e["episode_index"] for e in episodes] == [0, 1, 2, 3]
@@ -117,7 +117,7 @@ def test_a_run_killed_mid_way_resumes_keeping_finished_episodes(tmp_path):
 @pytest.mark.parametrize("fmt", ["lerobot", "hdf5"])
 def test_a_kill_between_the_commit_and_the_attempt_line_does_not_record_a_seed_twice(tmp_path, fmt):
     out = tmp_path / "ds"
-    args = ["demos", STACK, "--out", out, "--cameras", "", "--format", fmt]
+    args = ["demos", STACK, "--embodiment", "floating_gripper", "--out", out, "--cameras", "", "--format", fmt]
     assert _rpg(*args, "-n", "2").returncode == 0
     attempts = out / "meta" / "rpg_attempts.jsonl"
     lines = attempts.read_text().splitlines(keepends=True)
@@ -129,7 +129,7 @@ def test_a_kill_between_the_commit_and_the_attempt_line_does_not_record_a_seed_t
 
 def test_two_jobs_write_the_same_dataset_as_one(tmp_path):
     for jobs in (1, 2):
-        r = _rpg("demos", STACK, "--out", tmp_path / f"j{jobs}", "-n", "3", "--cameras", "", "--jobs", jobs)
+        r = _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", tmp_path / f"j{jobs}", "-n", "3", "--cameras", "", "--jobs", jobs)
         assert r.returncode == 0, r.stderr
     one, two = (tmp_path / "j1", tmp_path / "j2")
     assert (one / "meta" / "episodes.jsonl").read_text() == (two / "meta" / "episodes.jsonl").read_text()
@@ -138,7 +138,7 @@ def test_two_jobs_write_the_same_dataset_as_one(tmp_path):
 
 
 def test_bad_input_is_one_line_and_exit_2(tmp_path):
-    r = _rpg("demos", STACK, "--out", tmp_path / "x", "--format", "zarr")
+    r = _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", tmp_path / "x", "--format", "zarr")
     assert r.returncode == 2 and "not supported" in r.stderr and "Traceback" not in r.stderr
     r = _rpg("demos", "--replay", tmp_path)
     assert r.returncode == 2 and "not a dataset" in r.stderr
@@ -170,7 +170,7 @@ def _read_like_robomimic(path: Path) -> dict:
 
 def test_hdf5_dataset_has_robomimic_layout_and_replays(tmp_path):
     out = tmp_path / "ds"
-    r = _rpg("demos", STACK, "--out", out, "-n", "2", "--image-size", "32", "--format", "hdf5")
+    r = _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", out, "-n", "2", "--image-size", "32", "--format", "hdf5")
     assert r.returncode == 0, r.stderr
     assert not list((out / "parts").iterdir())  # gathered into demo.hdf5
     ds = _read_like_robomimic(out / "demo.hdf5")
@@ -201,18 +201,18 @@ def test_hdf5_replay_detects_a_changed_action_and_formats_do_not_mix(tmp_path):
     import h5py
 
     out = tmp_path / "ds"
-    assert _rpg("demos", STACK, "--out", out, "-n", "1", "--cameras", "", "--format", "hdf5").returncode == 0
+    assert _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", out, "-n", "1", "--cameras", "", "--format", "hdf5").returncode == 0
     with h5py.File(out / "demo.hdf5", "r+") as f:
         f["data/demo_0/actions"][5:15, 0] = 1.0
     r = _rpg("demos", "--replay", out)
     assert r.returncode == 1 and "MISMATCH" in r.stdout
-    r = _rpg("demos", STACK, "--out", out, "-n", "1", "--cameras", "")  # a LeRobot run into it
+    r = _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", out, "-n", "1", "--cameras", "")  # a LeRobot run into it
     assert r.returncode == 2 and "robomimic" in r.stderr and not (out / "meta" / "info.json").exists()
 
 
 def test_hdf5_run_killed_mid_way_resumes_keeping_finished_episodes(tmp_path):
     out = tmp_path / "ds"
-    args = ["demos", STACK, "--out", str(out), "-n", "4", "--image-size", "32", "--format", "hdf5"]
+    args = ["demos", STACK, "--embodiment", "floating_gripper", "--out", str(out), "-n", "4", "--image-size", "32", "--format", "hdf5"]
     log = out / "meta" / "episodes.jsonl"
     kept = _kill_after_first_episode(args, out)
     assert 1 <= len(kept) < 4 and (out / "parts" / "demo_0.hdf5").is_file()

@@ -258,17 +258,23 @@ def test_play_writes_a_video_and_render_shows_the_robot(tmp_path):
     with av.open(str(video)) as container:
         frames = [f.to_ndarray(format="rgb24") for f in container.decode(video=0)]
     assert len(frames) == 7 and frames[0].shape == (256, 512, 3)
+    shots = tmp_path / "new" / "shots"  # -o creates the directory
     for embodiment in EMBODIMENTS:
-        r = _rpg("render", str(STACK), "--embodiment", embodiment, "-o", str(tmp_path))
+        r = _rpg("render", str(STACK), "--embodiment", embodiment, "-o", str(shots))
         assert r.returncode == 0, r.stderr
     from PIL import Image
 
-    panda = np.asarray(Image.open(tmp_path / "goal_panda.png")).astype(int)
-    hand = np.asarray(Image.open(tmp_path / "goal_floating_gripper.png")).astype(int)
+    panda = np.asarray(Image.open(shots / "goal_panda.png")).astype(int)
+    hand = np.asarray(Image.open(shots / "goal_floating_gripper.png")).astype(int)
     assert panda.shape == (480, 640, 3)
     # the same goal scene; the Panda's arm rises behind its hand, the floating hand has none
     assert (np.abs(panda - hand).sum(axis=2) > 30).mean() > 0.01
-    assert np.abs(np.asarray(Image.open(tmp_path / "initial_panda.png")).astype(int) - panda).max() > 0
+    assert np.abs(np.asarray(Image.open(shots / "initial_panda.png")).astype(int) - panda).max() > 0
+    plugin = Path(__file__).with_name("eval_policies.py")
+    r = _rpg("play", str(STACK), "--embodiment", "floating_gripper", "--policy", f"{plugin}:Scripted", "--steps", "5",
+             "--json")
+    assert r.returncode == 0, r.stderr
+    assert json.loads(r.stdout)["policy"] == "Scripted" and json.loads(r.stdout)["steps"] == 5
     bad = _rpg("play", str(STACK), "--policy", "smart")
     assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "unknown policy" in bad.stderr
     bad = _rpg("play", str(STACK), "--video", str(tmp_path / "no" / "out.mp4"))

@@ -182,7 +182,7 @@ def test_replay_finds_tasks_by_hash_in_the_library_and_never_loads_the_recorded_
     import h5py
 
     out = tmp_path / "ds"
-    assert _rpg("demos", STACK, "--out", out, "-n", "1", "--cameras", "", "--format", fmt).returncode == 0
+    assert _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", out, "-n", "1", "--cameras", "", "--format", fmt).returncode == 0
     trap = tmp_path / "trap"  # a task that must never load: its marker would appear
     shutil.copytree(STACK, trap)
     (trap / "code.py").write_text((trap / "code.py").read_text() + f"\nopen({str(tmp_path / 'LOADED')!r}, 'w')\n")
@@ -253,7 +253,7 @@ def test_a_lerobot_dataset_out_of_bounds_is_refused(tmp_path):
     from rpg.demos.lerobot import read_episode_actions, read_episodes
 
     out = tmp_path / "ds"
-    assert _rpg("demos", STACK, "--out", out, "-n", "1", "--cameras", "").returncode == 0
+    assert _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", out, "-n", "1", "--cameras", "").returncode == 0
     data = out / "data" / "chunk-000" / "episode_000000.parquet"
     good = read_episode_actions(out, 0)
     assert good.shape[1] == 7 and good.dtype == np.float32

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 import sys
 from contextlib import contextmanager
 from pathlib import Path
@@ -643,9 +644,16 @@ def render_cmd(
 
         with _reported_errors():
             out_dir = output or resolve_target(directory)
-            if not out_dir.is_dir():
+            if out_dir.exists() and not out_dir.is_dir():
                 _fail(f"{out_dir} is not a directory")
-            paths = robot_snapshots(directory, embodiment, seed, out_dir)
+            created = not out_dir.exists()
+            out_dir.mkdir(parents=True, exist_ok=True)
+            try:
+                paths = robot_snapshots(directory, embodiment, seed, out_dir)
+            except BaseException:
+                if created:
+                    shutil.rmtree(out_dir, ignore_errors=True)  # nothing half-written
+                raise
             _record_written(out_dir, paths.values())
         for k, v in paths.items():
             out.print(f"{k}: {v}")
@@ -674,7 +682,8 @@ def _record_written(directory: Path, paths) -> None:
 def play_cmd(
     task: Annotated[str, typer.Argument(help="A task directory, family directory or FAMILY@vN.")],
     embodiment: Annotated[str, typer.Option("--embodiment", help="panda or floating_gripper.")] = "panda",
-    policy: Annotated[str, typer.Option("--policy", help="oracle, random or noop.")] = "random",
+    policy: Annotated[str, typer.Option("--policy", help="oracle, random, noop, module:Class, file.py:Class or "
+                                                          "ws://host:port (as rpg eval).")] = "random",
     seed: Annotated[int, typer.Option("--seed", min=0, help="Episode seed (rho_0's sample).")] = 0,
     video: Annotated[Path | None, typer.Option("--video", help="Write an MP4 (agentview | wrist).")] = None,
     steps: Annotated[int | None, typer.Option("--steps", min=1, help="Episode length (default: the task's limit).")] = None,
@@ -685,8 +694,19 @@ def play_cmd(
 
     if video is not None and (video.is_dir() or not video.parent.is_dir()):
         _fail(f"--video {video}: give a file name in an existing directory")
+    from rpg.env.rollout import BUILTIN_POLICIES
+
     with _reported_errors():
-        summary = play(task, embodiment=embodiment, policy=policy, seed=seed, video=video, max_steps=steps)
+        chosen = policy
+        if policy not in BUILTIN_POLICIES:
+            from rpg.eval.policies import load_policy
+
+            chosen = load_policy(policy)
+        try:
+            summary = play(task, embodiment=embodiment, policy=chosen, seed=seed, video=video, max_steps=steps)
+        finally:
+            if callable(getattr(chosen, "close", None)):
+                chosen.close()
     if as_json:
         print(json.dumps(summary.to_json(), indent=2))
     else:
@@ -702,7 +722,8 @@ def demos_cmd(
     target: Annotated[str | None, typer.Argument(help="A task, family, FAMILY@vN or library manifest.")] = None,
     out_dir: Annotated[Path | None, typer.Option("--out", "-o", help="Dataset directory (created; resumed if it exists).")] = None,
     episodes: Annotated[int, typer.Option("--episodes", "-n", min=1, help="Successful episodes per task.")] = 10,
-    embodiment: Annotated[str, typer.Option("--embodiment", help="panda or floating_gripper.")] = "floating_gripper",
+    embodiment: Annotated[str, typer.Option("--embodiment", help="panda or floating_gripper (rpg eval's default "
+                                                                 "is the Panda too).")] = "panda",
     fmt: Annotated[str, typer.Option("--format", help="lerobot (LeRobot v2.1: parquet + MP4) or hdf5 (robomimic).")] = "lerobot",
     jobs: Annotated[int, typer.Option("--jobs", "-j", min=1, help="Episodes run in parallel processes.")] = 1,
     cameras: Annotated[str, typer.Option("--cameras", help="Comma-separated cameras recorded as videos ('' for none).")] = "agentview,wrist",

@@ -104,7 +104,7 @@ def _task_hash(task: str) -> str:
     return rehash(resolve_target(task))[3]
 
 
-def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embodiment: str = "floating_gripper",
+def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embodiment: str = "panda",
                   fmt: str = "lerobot", jobs: int = 1, cameras: tuple[str, ...] = ("agentview", "wrist"),
                   image_size: tuple[int, int] = (256, 256), instruction: str = "canonical",
                   progress: Callable[[Episode, int | None], None] | None = None) -> dict:

@@ -36,7 +36,30 @@ class EpisodeSummary:
         return dict(self.__dict__)
 
 
-def _policy(name: str, env: BlockTaskEnv, seed: int):
+def _plugin(policy, env: BlockTaskEnv):
+    """``act`` for a policy object (``reset(instruction)``, ``act(obs)`` answering one action
+    or a chunk (H, action_dim), optional ``bind(env)``): the chunk's actions are executed in
+    turn before the policy is asked again."""
+    if callable(getattr(policy, "bind", None)):
+        policy.bind(env)
+    queue: list[np.ndarray] = []
+    started = []
+
+    def act(obs):
+        if not started:
+            policy.reset(env.instruction)
+            started.append(True)
+        if not queue:
+            answer = np.asarray(policy.act(obs), dtype=np.float32)
+            queue.extend(answer if answer.ndim == 2 else [answer])
+        return queue.pop(0)
+
+    return act
+
+
+def _policy(name, env: BlockTaskEnv, seed: int):
+    if not isinstance(name, str):
+        return _plugin(name, env)
     if name == "oracle":
         from rpg.oracle import Oracle
 
@@ -52,11 +75,15 @@ def _policy(name: str, env: BlockTaskEnv, seed: int):
     raise EmbodimentError(f"unknown policy {name!r}; built-in policies are {', '.join(BUILTIN_POLICIES)}")
 
 
-def play(task: str | Path, embodiment: str = "panda", policy: str = "random", seed: int = 0,
+def play(task: str | Path, embodiment: str = "panda", policy="random", seed: int = 0,
          video: str | Path | None = None, max_steps: int | None = None,
          image_size: tuple[int, int] = (256, 256)) -> EpisodeSummary:
     """Run one ``ee_delta`` episode of ``policy`` and write the agentview and wrist images side
     by side to ``video`` (MP4, 20 fps) when given.
+
+    ``policy``: a built-in name (:data:`BUILTIN_POLICIES`) or a policy object as ``rpg eval``
+    runs them (``reset``, ``act``, optional ``bind``; :mod:`rpg.eval.policies` loads plug-ins and
+    openpi servers).  A policy object is given the camera observations.
 
     Raises:
         EmbodimentError: unknown embodiment or policy.
@@ -67,7 +94,7 @@ def play(task: str | Path, embodiment: str = "panda", policy: str = "random", se
 
     if max_steps is not None and max_steps < 1:
         raise ValueError("max_steps must be at least 1")
-    cameras = ("agentview", "wrist") if video else ()
+    cameras = ("agentview", "wrist") if video or not isinstance(policy, str) else ()
     env = BlockTaskEnv(task, embodiment=embodiment, cameras=cameras, image_size=image_size,
                        max_episode_steps=max_steps)
     try:
@@ -84,7 +111,7 @@ def play(task: str | Path, embodiment: str = "panda", policy: str = "random", se
             while not (terminated or truncated):
                 obs, _, terminated, truncated, info = env.step(act(obs))
                 record(obs)
-        return EpisodeSummary(task=str(task), embodiment=embodiment, policy=policy, seed=seed,
+        return EpisodeSummary(task=str(task), embodiment=embodiment, policy=policy if isinstance(policy, str) else type(policy).__name__, seed=seed,
                               steps=info["elapsed_steps"], success=info["success"], truncated=truncated,
                               instruction=env.instruction, video=str(video) if video else None,
                               frames=writer.frames if writer is not None else 0)
