@@ -317,14 +317,24 @@ def mention_accounting(schema: TaskSchema) -> list[dict]:
         return [{"mention": schema.instruction[:200], "kind": "unaccounted", "consumed_by": str(exc)}]
 
 
+def constraint_citations(schema: TaskSchema) -> list[dict]:
+    """Reverse accounting: each constraint of G with the mentions of the instruction that
+    demand it (:func:`rpg.schema.citations.citations`)."""
+    from rpg.schema.citations import citations
+
+    return citations(schema)
+
+
 def task_document(schema: TaskSchema, seed: int, backend: str, model: str | None, gates: list[dict],
                   author: str | None = None) -> dict:
     """The content of ``task.yaml`` (without its hash): the schema, retrieval tags, the
-    mention accounting (:func:`mention_accounting`) and provenance."""
+    mention accounting (:func:`mention_accounting`), the constraints of G with the mentions
+    that demand them (:func:`constraint_citations`) and provenance."""
     doc = {
         "schema": json.loads(schema.model_dump_json()),
         "tags": schema.tags(),
         "accounting": mention_accounting(schema),
+        "citations": constraint_citations(schema),
         "provenance": {
             "instruction": schema.instruction,
             "compiler_version": __version__,

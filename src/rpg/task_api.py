@@ -41,6 +41,7 @@ from rpg.domain.predicates import (
     RightOf,
     SortedBy,
     Stack,
+    StackOnPatch,
     TemporalMonitor,
     UnorderedStack,
     Upright,
@@ -53,7 +54,7 @@ __all__ = [
     "And", "Behind", "Between", "BlockTask", "ColoredCube", "Equation", "FarFrom", "GoalPatch", "Grid",
     "InCircle", "InFrontOf", "InLine", "InOrder", "InRegion", "LabelFacing", "LayersUniform", "LeftOf",
     "NextTo", "Not", "On", "OnPatch", "OnTable", "Piles", "Pose", "Pyramid", "Reads",
-    "RightOf", "SemanticCube", "SortedBy", "Stack", "TemporalMonitor", "UnorderedStack", "Upright",
+    "RightOf", "SemanticCube", "SortedBy", "Stack", "StackOnPatch", "TemporalMonitor", "UnorderedStack", "Upright",
     "circle_layout", "cluster_layout", "constants", "grid_layout", "line_layout",
     "pyramid_layout", "quat_mul", "sample_scattered", "stack_layout", "yaw_quat",
 ]

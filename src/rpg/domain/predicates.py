@@ -132,6 +132,12 @@ class Predicate:
     swap_invariant: ClassVar[bool] = False
     """True when the result cannot change by swapping interchangeable objects (the predicate
     compares positions, signatures or labels, never object identities)."""
+    cue: ClassVar[str] = ""
+    """Regular expression over the parser's normalised text: words that ask for this
+    predicate (reverse accounting, :mod:`rpg.schema.citations`, cites them for its
+    ``structure`` constraint when mention accounting did not consume a word for it)."""
+    opaque: ClassVar[bool] = False
+    """True when the children are not demands of their own (a negation)."""
 
     def __post_init__(self) -> None:
         for f in self.list_fields:
@@ -184,6 +190,45 @@ class Predicate:
 
     def children(self) -> list[Predicate]:
         return []
+
+    # -- what it demands (reverse accounting, rpg.schema.citations) -----------
+    def params(self) -> dict:
+        """Arguments other than objects and sub-predicates (an axis, a region, a text)."""
+        skip = set(self.object_fields) | set(self.list_fields)
+        return {k: v for k, v in self.args().items()
+                if k not in skip and (v is None or isinstance(v, str | int | float | bool))}
+
+    def constraints(self) -> list[tuple[str, dict]]:
+        """What this predicate demands, part by part, as ``(kind, fields)`` pairs:
+
+        - ``("structure", {"predicate": name, **params})``: the relation or structure itself;
+        - ``("count", {"predicate": name, "objects": names})``: how many objects it holds;
+        - ``("members", {"objects": names})``: which objects take part (their identity);
+        - ``("order", {"relation": r, "pairs": ((x, y), ...)})``: roles or a sequence, each
+          pair "x r y" (``on``: x rests on y; a direction: x comes before y);
+        - ``("place", {"object": name, "region": r} | {"object": name, "patch": name})``.
+
+        Composites return ``[]`` (their leaves speak for themselves).  Subclasses declare
+        their own; this default is a structure over a set of objects.
+        """
+        if self.children():
+            return []
+        objs = tuple(dict.fromkeys(self.object_names()))
+        out: list[tuple[str, dict]] = [("structure", {"predicate": self.name, **self.params()})]
+        if self.list_fields:
+            out.append(("count", {"predicate": self.name, "objects": objs}))
+        return out + [("members", {"objects": objs})]
+
+    def relax(self, kind: str, goal: Predicate | None = None) -> Predicate | None:
+        """This predicate without its constraint of ``kind`` (accepting every configuration
+        it did and those that differ only there), or None when the domain has no such
+        predicate (then a constraint of that kind nobody stated makes the compile refuse).
+        ``goal`` is the whole goal it is part of."""
+        return None
+
+    def map_children(self, fn) -> Predicate:
+        """A copy with ``fn`` applied to each child (composites); leaves return themselves."""
+        return self
 
     def walk(self):
         """This predicate and every predicate below it, depth first (yields Predicate)."""
@@ -310,6 +355,7 @@ class On(Predicate):
     a: str
     b: str
     name: ClassVar[str] = "on"
+    cue: ClassVar[str] = r"\b(?:stack\w*|tower\w*|pile\w*|on\s+top|onto|atop|upon|on|above|over|under|below|beneath|underneath)\b"
     object_fields: ClassVar[tuple[str, ...]] = ("a", "b")
 
     def _evaluate(self, state):
@@ -323,6 +369,10 @@ class On(Predicate):
 
     def support_edges(self):
         return [(self.a, self.b)]
+
+    def constraints(self):
+        return [("structure", {"predicate": "stack"}), ("members", {"objects": (self.a, self.b)}),
+                ("order", {"relation": "on", "pairs": ((self.a, self.b),)})]
 
     def describe(self):
         return f"{self.a} on {self.b}"
@@ -345,6 +395,9 @@ class OnTable(Predicate):
 
     def support_edges(self):
         return [(self.a, "table")]
+
+    def constraints(self):
+        return [("place", {"object": self.a, "region": "table"})]
 
     def describe(self):
         return f"{self.a} on the table"
@@ -375,8 +428,58 @@ class OnPatch(Predicate):
     def support_edges(self):
         return [(self.a, "table")]
 
+    def constraints(self):
+        return [("members", {"objects": (self.a,)}), ("place", {"object": self.a, "patch": self.patch})]
+
+    def relax(self, kind, goal=None):
+        """Which cube of a stack rests on the patch, when nobody said: any of them
+        (:class:`StackOnPatch`, "stack the blocks on the goal patch")."""
+        if kind != "identity" or goal is None:
+            return None
+        edges = [(u, lo) for u, lo in goal.support_edges() if lo != "table"]
+        tower, grew = {self.a}, True
+        while grew:
+            grew = False
+            for u, lo in edges:
+                if (u in tower) != (lo in tower):
+                    tower |= {u, lo}
+                    grew = True
+        if len(tower) < 2:
+            return None
+        return StackOnPatch(self.a, self.patch, tuple(sorted(tower)))
+
     def describe(self):
         return f"{self.a} on {self.patch}"
+
+
+@dataclass(frozen=True, repr=False)
+class StackOnPatch(OnPatch):
+    """The bottom cube of a stack of ``among`` rests on goal patch ``patch``, whichever cube
+    that is ("stack the blocks on the goal patch" names none); ``a`` is the one the goal
+    configuration puts there (a plan, never a requirement)."""
+
+    among: tuple[str, ...] = ()
+    name: ClassVar[str] = "stack_on_patch"
+    list_fields: ClassVar[tuple[str, ...]] = ("among",)
+    swap_invariant: ClassVar[bool] = True
+
+    def _evaluate(self, state):
+        results = [OnPatch(n, self.patch).evaluate(state) for n in self.among]
+        ok = any(r.satisfied for r in results)
+        return self._result(ok, f"{'a' if ok else 'no'} cube of {', '.join(self.among)} rests on {self.patch}",
+                            children=results)
+
+    def object_names(self):
+        return list(dict.fromkeys([*self.among, self.a, self.patch]))
+
+    def constraints(self):
+        return [("members", {"objects": self.among}), ("place", {"object": self.among, "patch": self.patch})]
+
+    def relax(self, kind, goal=None):
+        return None
+
+    def describe(self):
+        return f"the stack of {', '.join(self.among)} on {self.patch}"
 
 
 @dataclass(frozen=True, repr=False)
@@ -392,6 +495,9 @@ class Upright(Predicate):
         ok = cos >= C.UPRIGHT_COS
         return self._result(ok, f"{self.a} {'is' if ok else 'is not'} upright (cos {cos:.3f})",
                             {"cos": cos}, {"cos": C.UPRIGHT_COS})
+
+    def constraints(self):
+        return []  # every cube of every goal stands upright; no word asks it
 
     def describe(self):
         return f"{self.a} upright"
@@ -424,6 +530,10 @@ class _Relation(Predicate):
             {"min_along": C.RELATION_MIN_GAP, "max_across": C.RELATION_MAX_OFF_AXIS},
         )
 
+    def constraints(self):
+        return [("structure", {"predicate": self.name}), ("members", {"objects": (self.a, self.b)}),
+                ("order", {"relation": self.name, "pairs": ((self.a, self.b),)})]
+
     def describe(self):
         return f"{self.a} {self.words} {self.b}"
 
@@ -433,6 +543,7 @@ class LeftOf(_Relation):
     """``a`` is left of ``b`` (larger y), roughly level with it in x."""
 
     name: ClassVar[str] = "left_of"
+    cue: ClassVar[str] = r"\bleft\b|\bwest\b"
     axis: ClassVar[int] = 1
     sign: ClassVar[float] = 1.0
     words: ClassVar[str] = "left of"
@@ -443,6 +554,7 @@ class RightOf(_Relation):
     """``a`` is right of ``b`` (smaller y)."""
 
     name: ClassVar[str] = "right_of"
+    cue: ClassVar[str] = r"\bright\b|\beast\b"
     axis: ClassVar[int] = 1
     sign: ClassVar[float] = -1.0
     words: ClassVar[str] = "right of"
@@ -453,6 +565,7 @@ class InFrontOf(_Relation):
     """``a`` is in front of ``b``: closer to the robot (smaller x)."""
 
     name: ClassVar[str] = "in_front_of"
+    cue: ClassVar[str] = r"\bfront\b|\bsouth\b"
     axis: ClassVar[int] = 0
     sign: ClassVar[float] = -1.0
     words: ClassVar[str] = "in front of"
@@ -463,6 +576,7 @@ class Behind(_Relation):
     """``a`` is behind ``b``: farther from the robot (larger x)."""
 
     name: ClassVar[str] = "behind"
+    cue: ClassVar[str] = r"\bbehind\b|\bback\b|\bnorth\b"
     axis: ClassVar[int] = 0
     sign: ClassVar[float] = 1.0
     words: ClassVar[str] = "behind"
@@ -475,6 +589,7 @@ class NextTo(Predicate):
     a: str
     b: str
     name: ClassVar[str] = "next_to"
+    cue: ClassVar[str] = r"\b(?:next\s+to|beside|adjacent|near\w*|close|touch\w*|together|side\s+by\s+side|alongside)\b"
     object_fields: ClassVar[tuple[str, ...]] = ("a", "b")
 
     def _evaluate(self, state):
@@ -496,6 +611,7 @@ class FarFrom(Predicate):
     a: str
     b: str
     name: ClassVar[str] = "far_from"
+    cue: ClassVar[str] = r"\b(?:far|apart|away|distant|separat\w*)\b"
     object_fields: ClassVar[tuple[str, ...]] = ("a", "b")
 
     def _evaluate(self, state):
@@ -548,6 +664,9 @@ class InRegion(Predicate):
                                 f"(at x {x:.3f}, y {y:.3f}; region x {x0:.3f}..{x1:.3f}, y {y0:.3f}..{y1:.3f})",
                             {"x": x, "y": y}, {"x": [x0, x1], "y": [y0, y1]})
 
+    def constraints(self):
+        return [("members", {"objects": (self.a,)}), ("place", {"object": self.a, "region": self.region})]
+
     def describe(self):
         where = self.region.replace("_", " ")
         if self.region in ("left", "right", "front", "back"):
@@ -563,6 +682,7 @@ class Between(Predicate):
     b: str
     c: str
     name: ClassVar[str] = "between"
+    cue: ClassVar[str] = r"\b(?:between|middle)\b"
     object_fields: ClassVar[tuple[str, ...]] = ("a", "b", "c")
 
     def _evaluate(self, state):
@@ -577,6 +697,10 @@ class Between(Predicate):
         ok = 0.0 < t < 1.0 and off <= 2 * C.LINE_TOL
         return self._result(ok, f"{self.a} {'is' if ok else 'is not'} between {self.b} and {self.c} (t={t:.2f}, off {off * 100:.1f} cm)",
                             {"t": t, "off_line": off}, {"t": [0.0, 1.0], "off_line": 2 * C.LINE_TOL})
+
+    def constraints(self):
+        return [("structure", {"predicate": self.name}), ("members", {"objects": (self.a, self.b, self.c)}),
+                ("order", {"relation": self.name, "pairs": ((self.a, self.b), (self.a, self.c))})]
 
     def describe(self):
         return f"{self.a} between {self.b} and {self.c}"
@@ -637,6 +761,7 @@ class Stack(Predicate):
 
     objects: tuple[str, ...]
     name: ClassVar[str] = "stack"
+    cue: ClassVar[str] = r"\b(?:stack\w*|tower\w*|pile\w*|columns?|pillars?|on\s+top|onto|atop|upon|on|above|over|under|below|beneath|underneath|high|tall)\b"
     swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
     ordered: ClassVar[bool] = True
@@ -664,6 +789,16 @@ class Stack(Predicate):
         edges = [(self.objects[0], "table")]
         edges += [(u, lo) for lo, u in itertools.pairwise(self.objects)]
         return edges
+
+    def constraints(self):
+        out = [("structure", {"predicate": "stack"}), ("count", {"predicate": "stack", "objects": self.objects}),
+               ("members", {"objects": self.objects})]
+        if self.ordered:
+            out.append(("order", {"relation": "on", "pairs": tuple((u, lo) for lo, u in itertools.pairwise(self.objects))}))
+        return out
+
+    def relax(self, kind, goal=None):
+        return UnorderedStack(objects=self.objects) if kind == "order" else None
 
     def describe(self):
         return "stack (bottom to top) " + ", ".join(self.objects)
@@ -701,6 +836,7 @@ class InLine(Predicate):
     axis: str = "y"
     order: str | None = None
     name: ClassVar[str] = "in_line"
+    cue: ClassVar[str] = r"\b(?:lines?|rows?|align\w*|lined|columns?|side\s+by\s+side|sequence|order\w*|left\s+to\s+right|right\s+to\s+left|spell\w*|word|sort\w*)\b"
     swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
 
@@ -731,6 +867,16 @@ class InLine(Predicate):
     def support_edges(self):
         return [(n, "table") for n in self.objects]
 
+    def constraints(self):
+        out = [("structure", {"predicate": self.name, "axis": self.axis}),
+               ("count", {"predicate": self.name, "objects": self.objects}), ("members", {"objects": self.objects})]
+        if self.order:
+            out.append(("order", {"relation": self.order, "pairs": tuple(itertools.pairwise(self.objects))}))
+        return out
+
+    def relax(self, kind, goal=None):
+        return replace(self, order=None) if kind == "order" else None
+
     def describe(self):
         how = f" {self.order.replace('_', ' ')}" if self.order else ""
         return f"line{how} of " + ", ".join(self.objects)
@@ -742,6 +888,7 @@ class InCircle(Predicate):
 
     objects: tuple[str, ...]
     name: ClassVar[str] = "in_circle"
+    cue: ClassVar[str] = r"\b(?:circle\w*|circular|ring|round)\b"
     swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
 
@@ -810,6 +957,7 @@ class Grid(Predicate):
     cols: int
     layers: int = 1
     name: ClassVar[str] = "grid"
+    cue: ClassVar[str] = r"\b(?:grid|squares?|rectangle\w*|rectangular|array|walls?|layers?|\d+x\d+(?:x\d+)?|rows?|cube|block)\b"
     swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
 
@@ -851,6 +999,7 @@ class Pyramid(Predicate):
     base: int
     dims: int = 2
     name: ClassVar[str] = "pyramid"
+    cue: ClassVar[str] = r"\b(?:pyramids?|triangle|triangular)\b"
     swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
 
@@ -902,6 +1051,7 @@ class Piles(Predicate):
     by: str | None = None
     groups: tuple[tuple[str, ...], ...] = ()
     name: ClassVar[str] = "piles"
+    cue: ClassVar[str] = r"\b(?:piles?|groups?|bunch\w*|clusters?|heaps?|sort\w*|separat\w*)\b"
     swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
 
@@ -977,6 +1127,7 @@ class LayersUniform(Predicate):
     by: str = "color"
     axis: str = "z"
     name: ClassVar[str] = "layers_uniform"
+    cue: ClassVar[str] = r"\b(?:layers?|levels?|tiers?|rows?|each|different|colou?r\w*)\b"
     swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
 
@@ -1033,6 +1184,7 @@ class Reads(Predicate):
     direction: str = "left_to_right"
     face: str = "up"
     name: ClassVar[str] = "reads"
+    cue: ClassVar[str] = r"\b(?:spell\w*|words?|reads?|writ\w*|letters?)\b"
     swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
     semantic: ClassVar[bool] = True
@@ -1092,6 +1244,7 @@ class Equation(Predicate):
     direction: str = "left_to_right"
     face: str = "up"
     name: ClassVar[str] = "equation"
+    cue: ClassVar[str] = r"\b(?:equation|math\w*|sum|addition|subtraction|multiplication|plus|minus|equals|times|correct)\b|="
     swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
     semantic: ClassVar[bool] = True
@@ -1143,6 +1296,7 @@ class SortedBy(Predicate):
     strict: bool = True
     face: str = "up"
     name: ClassVar[str] = "sorted_by"
+    cue: ClassVar[str] = r"\b(?:sort\w*|order\w*|alphabet\w*|ascending|descending|increasing|decreasing|gradient|rainbow|numeric\w*)\b"
     swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
     semantic: ClassVar[bool] = True
@@ -1183,6 +1337,7 @@ class LabelFacing(Predicate):
     label: str
     direction: str = "up"
     name: ClassVar[str] = "label_facing"
+    cue: ClassVar[str] = r"\b(?:fac\w*|show\w*|up|upward\w*|rotat\w*|turn\w*|flip\w*|visible|camera)\b"
     object_fields: ClassVar[tuple[str, ...]] = ("a",)
     semantic: ClassVar[bool] = True
 
@@ -1243,6 +1398,9 @@ class And(Predicate):
     def rename(self, mapping):
         return And(tuple(c.rename(mapping) for c in self.children_))
 
+    def map_children(self, fn):
+        return And(tuple(fn(c) for c in self.children_))
+
     def _evaluate(self, state):
         results = [c.evaluate(state) for c in self.children_]
         ok = all(r.satisfied for r in results)
@@ -1263,6 +1421,8 @@ class Not(Predicate):
 
     child: Predicate
     name: ClassVar[str] = "not"
+    cue: ClassVar[str] = r"\b(?:not|no|never)\b|n't\b"
+    opaque: ClassVar[bool] = True
 
     def children(self):
         return [self.child]
@@ -1275,6 +1435,10 @@ class Not(Predicate):
 
     def rename(self, mapping):
         return Not(self.child.rename(mapping))
+
+    def constraints(self):
+        return [("structure", {"predicate": self.name, "child": self.child.describe()}),
+                ("members", {"objects": tuple(dict.fromkeys(self.child.object_names()))})]
 
     def _evaluate(self, state):
         r = self.child.evaluate(state)
@@ -1303,6 +1467,12 @@ class InOrder(Predicate):
 
     def rename(self, mapping):
         return InOrder(tuple(e.rename(mapping) for e in self.events))
+
+    def map_children(self, fn):
+        return InOrder(tuple(fn(e) for e in self.events))
+
+    def constraints(self):
+        return [("order", {"relation": "temporal", "events": self.events})]
 
     def to_dict(self):
         return {"predicate": self.name, "events": [e.to_dict() for e in self.events]}

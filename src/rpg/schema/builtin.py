@@ -60,7 +60,7 @@ from rpg.domain.predicates import (
 )
 from rpg.domain.state import Pose
 from rpg.errors import BadInput
-from rpg.schema import clauses, lexicon
+from rpg.schema import citations, clauses, lexicon
 from rpg.schema.accounting import UnaccountedMention, account
 from rpg.schema.builder import DEFAULT_COLORS, DEFAULT_PATCH_COLOR, Builder, make_paraphrases
 from rpg.schema.edits import recolor
@@ -2016,7 +2016,9 @@ def parse(instruction: str) -> TaskSchema:
             schema.repairs = b.repairs
             gap = _unaccounted(f, schema)
             if gap is None:
-                return _free_unnamed_orders(f, schema)
+                # reverse accounting: a part of G nobody stated is dropped where a weaker goal
+                # exists; the rest is recorded as uncited in task.yaml (issue 30, not yet refused)
+                return citations.enforce(_free_unnamed_orders(f, schema), refuse=False)
             first_gap = first_gap or gap  # a reading that drops a mention: try the next reader
     if first_gap is not None:
         raise first_gap

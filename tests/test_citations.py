@@ -1,0 +1,233 @@
+"""Reverse accounting (rpg.schema.citations): every constraint of G cites the words that demand it.
+
+Property tests evaluate G with the real predicates on states built from each task's goal
+layout: G holds under every change the words do not distinguish (permuting cubes the
+instruction does not name, moving a structure it places nowhere) and fails under changes
+they do (swapping named roles, moving a structure it places).
+"""
+
+from __future__ import annotations
+
+import glob
+import os
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+
+from rpg.artifact import load_artifact, task_document
+from rpg.domain.predicates import Stack, evaluate_goal
+from rpg.domain.state import ObjectState, WorldState
+from rpg.errors import BadInput
+from rpg.schema.builtin import parse
+from rpg.schema.citations import canonical_instruction, cite, goal_constraints, unstated
+from rpg.schema.feasibility import check_feasibility
+
+ROOT = Path(__file__).resolve().parents[1]
+SEED = ROOT.parent / "shared" / "seed-cases.yaml"
+
+
+def _texts() -> list[str]:
+    entries = yaml.safe_load((ROOT / "tests" / "corpus" / "instructions.yaml").read_text())
+    entries = entries["instructions"] if isinstance(entries, dict) else entries
+    texts = [e["text"] for e in entries]
+    if SEED.exists():
+        def walk(o):
+            if isinstance(o, dict):
+                for k, v in o.items():
+                    if k == "instruction" and isinstance(v, str):
+                        texts.append(v)
+                    else:
+                        walk(v)
+            elif isinstance(o, list):
+                for v in o:
+                    walk(v)
+        walk(yaml.safe_load(SEED.read_text()))
+    return list(dict.fromkeys(texts))
+
+
+@lru_cache(maxsize=1)
+def _compiled() -> list[tuple[str, object]]:
+    out = []
+    for t in _texts():
+        try:
+            out.append((t, check_feasibility(parse(t))))
+        except (BadInput, ValueError):
+            continue
+    return out
+
+
+def goal_world(schema, poses=None) -> WorldState:
+    """The goal configuration as a world state (every face visible)."""
+    objects = {}
+    for spec in schema.assets:
+        a = spec.build()
+        p = (poses or {}).get(spec.name) or schema.goal_layout[spec.name]
+        objects[spec.name] = ObjectState(
+            name=spec.name, kind=a.kind, pos=np.array(p.position, float), quat=np.array(p.quaternion, float),
+            size=a.extents, color=getattr(a, "color", None), label=getattr(a, "label", None),
+            face_labels=a.face_labels() if hasattr(a, "face_labels") else {})
+    return WorldState(objects, None)
+
+
+def _moved(schema, names, dx=0.0, dy=0.0):
+    return {n: p.model_copy(update={"position": (p.position[0] + dx, p.position[1] + dy, p.position[2])})
+            for n, p in schema.goal_layout.items() if n in names}
+
+
+def _cited_descriptors(schema) -> set[str]:
+    return {c.key[1] for c, cites in cite(schema) if c.kind == "identity" and cites}
+
+
+# ---------------------------------------------------------------------------
+# unstated / canonical_instruction
+# ---------------------------------------------------------------------------
+
+
+def test_the_papers_first_task_states_its_goal():
+    schema = parse("Stack two blocks on top of each other.")
+    assert unstated(schema, "Stack two blocks on top of each other.") == []
+    assert unstated(schema, "Stack two blocks") == []
+
+
+def test_a_goal_stricter_than_the_text_names_the_order():
+    schema = parse("Stack two blocks on top of each other.")
+    strict = schema.model_copy(update={"goal": Stack(("red", "blue"))})  # red under blue, as it used to compile
+    assert unstated(strict, "Stack two blocks") == ["the order red under blue"]
+    assert unstated(strict, "Stack the blue block on top of the red block") == []
+    assert unstated(strict, canonical_instruction(strict)) == []
+
+
+def test_a_named_colour_or_place_is_stated_only_when_said():
+    schema = parse("Stack the red block on top of the yellow block")
+    assert unstated(schema, "Put the red block on the yellow block") == []
+    assert unstated(schema, "Stack the yellow block on top of the red block") == ["the order yellow under red"]
+    moved = parse("push the red block to the left")
+    assert unstated(moved, "push the red block to the right") == ["red cube in the left of the table"]
+    assert unstated(moved, "gibberish words nobody can read") == ["red cube in the left of the table"]
+
+
+def test_canonical_instruction_states_every_compiled_goal():
+    for text, schema in _compiled():
+        assert unstated(schema, canonical_instruction(schema)) == [], text
+
+
+@pytest.mark.skipif(not glob.glob(str(ROOT / "library" / "*" / "task.yaml")), reason="no library")
+def test_canonical_instruction_states_every_library_goal():
+    for path in sorted(glob.glob(str(ROOT / "library" / "*" / "task.yaml"))):
+        schema, _ = load_artifact(os.path.dirname(path))
+        assert unstated(schema, canonical_instruction(schema)) == [], path
+
+
+# ---------------------------------------------------------------------------
+# citations in task.yaml; refusal
+# ---------------------------------------------------------------------------
+
+
+def test_task_yaml_records_a_citation_for_every_constraint():
+    schema = parse("Stack the green block on top of the blue block")
+    doc = task_document(schema, 0, "builtin", None, [])
+    assert list(doc)[:4] == ["schema", "tags", "accounting", "citations"]
+    kinds = {c["kind"] for c in doc["citations"]}
+    assert {"structure", "order"} <= kinds
+    order = next(c for c in doc["citations"] if c["kind"] == "order")
+    assert order["constraint"] == "the order blue under green"
+    assert {"green", "blue"} <= set(order["cites"])
+    assert all(c["cites"] for c in doc["citations"])
+
+
+UNCITED_AT_MOST = 12
+"""Compiled corpus and paper tasks whose G still holds a constraint no mention demands (a
+tower "in the center" whose base cube nobody named, which cubes share one of several
+towers): recorded with ``cites: []`` in task.yaml and reported by ``unstated``; this figure
+may only fall."""
+
+
+def test_constraints_nobody_stated_are_few_and_recorded():
+    left = []
+    for text, schema in _compiled():
+        missing = [c.line for c, cites in cite(schema) if not cites and not c.vacuous]
+        if missing:
+            left.append((text, missing))
+            doc = task_document(schema, 0, "builtin", None, [])
+            assert any(c["constraint"] == missing[0] and c["cites"] == [] for c in doc["citations"])
+            assert missing[0] in unstated(schema, schema.instruction)
+    assert len(left) <= UNCITED_AT_MOST, left
+
+
+def test_an_unnamed_order_is_dropped_and_a_named_one_kept():
+    assert type(parse("place the block on top of another block").goal).__name__ == "UnorderedStack"
+    patch = parse("Stack the blocks on the goal patch")  # whichever cube is at the bottom
+    assert "in any order" in patch.goal_summary and "stack_on_patch" in str(patch.goal.to_dict())
+    assert parse("Build a tower three blocks high with a yellow block on top").goal.name == "stack"
+    towers = parse("build two towers of two blocks")  # which cubes share a tower is not said
+    assert "cube colour: red" in unstated(towers, towers.instruction)
+
+
+# ---------------------------------------------------------------------------
+# property tests: G under changes the words do / do not distinguish
+# ---------------------------------------------------------------------------
+
+
+def test_goal_holds_in_its_goal_layout():
+    for text, schema in _compiled():
+        assert evaluate_goal(schema.goal_predicate(), goal_world(schema)).satisfied, text
+
+
+def test_goal_holds_when_unnamed_cubes_trade_places():
+    checked = 0
+    for text, schema in _compiled():
+        named = _cited_descriptors(schema)
+        by_name = {a.name: a for a in schema.assets}
+        from rpg.schema.meaning import descriptor
+        ordered = {n for c, cites in cite(schema) if cites and (c.kind == "order" or "color" in c.leaf.params().values())
+                   for n in c.leaf.object_names()}  # a cited order or "by colour" makes colours matter
+        free = [a.name for a in schema.assets
+                if a.kind != "goal_patch" and descriptor(a) not in named and a.name not in ordered]
+        if len({descriptor(by_name[n]) for n in free}) < 2:
+            continue
+        rotated = dict(zip(free, [schema.goal_layout[n] for n in free[1:] + free[:1]], strict=True))
+        assert evaluate_goal(schema.goal_predicate(), goal_world(schema, rotated)).satisfied, text
+        checked += 1
+    assert checked >= 10
+
+
+def test_goal_holds_when_an_unplaced_structure_moves():
+    checked = 0
+    for text, schema in _compiled():
+        if any(c.kind == "place" for c in goal_constraints(schema)):
+            continue
+        moved = _moved(schema, set(schema.goal_layout), dx=0.04, dy=-0.05)
+        assert evaluate_goal(schema.goal_predicate(), goal_world(schema, moved)).satisfied, text
+        checked += 1
+    assert checked >= 100
+
+
+def test_goal_fails_when_a_placed_structure_moves():
+    checked = 0
+    for text, schema in _compiled():
+        places = [c for c in goal_constraints(schema) if c.kind == "place" and c.key[2] != "table"]
+        if not places:
+            continue
+        cubes = {a.name for a in schema.assets if a.kind != "goal_patch"}
+        moved = _moved(schema, cubes, dx=0.6, dy=0.6)  # off every region and patch
+        assert not evaluate_goal(schema.goal_predicate(), goal_world(schema, moved)).satisfied, text
+        checked += 1
+    assert checked >= 30
+
+
+def test_goal_fails_when_named_roles_swap():
+    checked = 0
+    for text, schema in _compiled():
+        named = _cited_descriptors(schema)
+        for c, cites in cite(schema):
+            if c.kind != "order" or c.key[1] == "temporal" or not set(c.key[2]) <= named or not cites:
+                continue
+            x, y = c.names
+            swapped = {x: schema.goal_layout[y], y: schema.goal_layout[x]}
+            assert not evaluate_goal(schema.goal_predicate(), goal_world(schema, swapped)).satisfied, (text, c.line)
+            checked += 1
+            break
+    assert checked >= 30
