@@ -402,3 +402,30 @@ def test_a_process_keeps_few_environments_open():
         assert envs[0].unwrapped.scene is not None and envs[0] not in [e for e, _ in runner._ENVS.values()]
     finally:
         runner.close_workers()
+
+
+def test_eval_refuses_to_score_a_goal_its_instruction_does_not_state(tmp_path):
+    """G demands red under blue; the instruction sent says only "stack two blocks": refused,
+    naming the order; --instruction canonical states G and runs; --allow-unstated records it."""
+    from rpg.compiler import build
+    from rpg.schema.builtin import parse
+    from rpg.schema.feasibility import check_feasibility
+
+    schema = check_feasibility(parse("Put the blue block on top of the red block."))
+    secret = schema.model_copy(update={"instruction": "Stack two blocks on top of each other."})
+    task = build(secret, tmp_path / "lib", name="secret").path
+    r = _rpg("eval", str(task), "--policy", "noop", "-n", "1", "--embodiment", FLOAT, "-o", str(tmp_path / "run"))
+    assert r.returncode == 2 and "does not state" in r.stderr and "order red under blue" in r.stderr, r.stderr
+    assert not (tmp_path / "run").exists()
+    r = _rpg("eval", str(task), "--policy", "oracle", "-n", "1", "--embodiment", FLOAT, "--instruction", "canonical",
+             "-o", str(tmp_path / "canonical"))
+    assert r.returncode == 0, r.stderr
+    (ep,) = _lines(tmp_path / "canonical" / "episodes.jsonl")
+    assert "red" in ep["instruction"] and "blue" in ep["instruction"] and ep["success"]
+    s = json.loads((tmp_path / "canonical" / "summary.json").read_text())
+    assert s["instruction_check"] == {"secret canonical": []}
+    r = _rpg("eval", str(task), "--policy", "noop", "-n", "1", "--embodiment", FLOAT, "--allow-unstated",
+             "-o", str(tmp_path / "allowed"))
+    assert r.returncode == 0, r.stderr
+    s = json.loads((tmp_path / "allowed" / "summary.json").read_text())
+    assert any("order red under blue" in c for c in s["instruction_check"]["secret original"])

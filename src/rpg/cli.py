@@ -367,7 +367,10 @@ def eval_cmd(
     episodes: Annotated[int | None, typer.Option("--episodes", "-n", min=1, help="Seeds 0..N-1 per task (default 20).")] = None,
     seeds: Annotated[str | None, typer.Option("--seeds", help="Seeds, e.g. 0-9,42.")] = None,
     embodiment: Annotated[str, typer.Option("--embodiment", help="panda or floating_gripper.")] = "panda",
-    instruction: Annotated[str, typer.Option("--instruction", help="canonical, paraphrase:K or all.")] = "canonical",
+    instruction: Annotated[str, typer.Option("--instruction", help="original (as written), canonical (G stated "
+                                                                  "exactly), paraphrase:K or all.")] = "original",
+    allow_unstated: Annotated[bool, typer.Option("--allow-unstated", help="Score tasks whose sent instruction does not "
+                                                 "state every constraint G checks (recorded in summary.json).")] = False,
     jobs: Annotated[int, typer.Option("--jobs", "-j", min=1, help="Episodes run in parallel processes.")] = 1,
     video: Annotated[bool, typer.Option("--video", help="Write an agentview MP4 per episode.")] = False,
     replan: Annotated[int | None, typer.Option("--replan", min=1, help="Actions of a chunk executed before asking again.")] = None,
@@ -400,7 +403,8 @@ def eval_cmd(
     config = EvalConfig(target=target, policy=policy, seeds=_parse_seeds(episodes, seeds), embodiment=embodiment,
                         instruction=instruction, cameras=cams, image_size=(image_size, image_size), replan=replan,
                         video=video, library=str(library), control_mode=control_mode,
-                        inference_timeout=inference_timeout, episode_timeout=episode_timeout)
+                        inference_timeout=inference_timeout, episode_timeout=episode_timeout,
+                        allow_unstated=allow_unstated)
     from rich.progress import Progress
 
     with _reported_errors(), Progress(console=err, transient=True) as bar:
@@ -728,7 +732,8 @@ def demos_cmd(
     jobs: Annotated[int, typer.Option("--jobs", "-j", min=1, help="Episodes run in parallel processes.")] = 1,
     cameras: Annotated[str, typer.Option("--cameras", help="Comma-separated cameras recorded as videos ('' for none).")] = "agentview,wrist",
     image_size: Annotated[int, typer.Option("--image-size", min=16, max=2048, help="Square video size, pixels.")] = 256,
-    instruction: Annotated[str, typer.Option("--instruction", help="canonical or paraphrase:K.")] = "canonical",
+    instruction: Annotated[str, typer.Option("--instruction", help="original (as written), canonical (G stated "
+                                                                  "exactly) or paraphrase:K.")] = "original",
     replay: Annotated[Path | None, typer.Option("--replay", help="Replay a dataset and check every episode.")] = None,
     library: Annotated[Path, typer.Option("--library", help="With --replay: the library whose tasks are found by "
                                                             "content hash (a directory or its manifest).")] = Path("library"),

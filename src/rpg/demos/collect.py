@@ -106,7 +106,7 @@ def _task_hash(task: str) -> str:
 
 def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embodiment: str = "panda",
                   fmt: str = "lerobot", jobs: int = 1, cameras: tuple[str, ...] = ("agentview", "wrist"),
-                  image_size: tuple[int, int] = (256, 256), instruction: str = "canonical",
+                  image_size: tuple[int, int] = (256, 256), instruction: str = "original",
                   progress: Callable[[Episode, int | None], None] | None = None) -> dict:
     """Record ``episodes`` successful oracle demonstrations per task of ``target`` into ``out``.
 
@@ -270,7 +270,7 @@ def replay_actions(task: str | Path, task_hash: str, seed: int, embodiment: str,
         if env.source.content_hash != task_hash:
             raise BadInput(f"{task} has changed since the dataset was recorded (content hash "
                            f"{env.source.content_hash[:12]}, recorded {task_hash[:12]})")
-        if instruction != env.instruction and instruction not in env.source.paraphrases:
+        if instruction not in (env.instruction, env.source.canonical, *env.source.paraphrases):
             raise BadInput(f"the recorded instruction is not one of {task}'s")
         env.reset(seed=seed)
         info = {"success": False}

@@ -164,7 +164,7 @@ def close_cached_env() -> None:
 
 def record_episode(task: str, seed: int, embodiment: str = "floating_gripper",
                    cameras: tuple[str, ...] = ("agentview", "wrist"), image_size: tuple[int, int] = (256, 256),
-                   instruction: str = "canonical", video_dir: str | Path | None = None,
+                   instruction: str = "original", video_dir: str | Path | None = None,
                    max_steps: int | None = None, frames: str = "mp4", reuse_env: bool = False) -> Episode:
     """Run the oracle for one episode and record it.
 
@@ -174,7 +174,7 @@ def record_episode(task: str, seed: int, embodiment: str = "floating_gripper",
         embodiment: ``"panda"`` or ``"floating_gripper"``.
         cameras: cameras to record as videos (``()`` for none).
         image_size: (height, width) of the videos, pixels.
-        instruction: ``"canonical"`` or ``"paraphrase:K"``.
+        instruction: ``"original"``, ``"canonical"`` or ``"paraphrase:K"``.
         video_dir: where the videos go (``<camera>.mp4``); required when ``cameras``.
         max_steps: episode step limit (default: the environment's rule).
         frames: ``"mp4"`` (a video of T frames per camera) or ``"hdf5"`` (a frame store of

@@ -8,8 +8,8 @@
     obs, info = env.reset(seed=0)
     obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
 
-**Task Description.**  The compiled task's instruction (canonical, or paraphrase K with
-``instruction="paraphrase:K"``), over the task's cubes and goal patches on the table, with a
+**Task Description.**  The compiled task's instruction (as written; the canonical statement
+of G with ``instruction="canonical"``; paraphrase K with ``instruction="paraphrase:K"``), over the task's cubes and goal patches on the table, with a
 robot (``embodiment``): ``panda`` (Menagerie Franka Panda on a fixed base) or
 ``floating_gripper`` (the Franka hand on a mocap weld).
 
@@ -96,12 +96,19 @@ def episode_step_limit(n_cubes: int, n_dense: int = 0) -> int:
     return C.EPISODE_BASE_STEPS + C.EPISODE_STEPS_PER_CUBE * max(1, n_cubes) + C.EPISODE_STEPS_PER_PUSH * n_dense
 
 
+INSTRUCTION_MODES = ("original", "canonical", "paraphrase:K")
+"""What ``instruction=`` picks: the instruction as written, the canonical statement of G
+(generated from G, it states exactly what G checks), or paraphrase K."""
+
+
 def _instruction(source: TaskSource, which: str) -> str:
-    if which in ("canonical", "", None):
+    if which in ("original", "", None):
         return source.instruction
+    if which == "canonical":
+        return source.canonical or source.instruction
     head, _, k = str(which).partition(":")
     if head != "paraphrase" or not k.isdigit():
-        raise EmbodimentError(f"instruction must be 'canonical' or 'paraphrase:K', not {which!r}")
+        raise EmbodimentError(f"instruction must be 'original', 'canonical' or 'paraphrase:K', not {which!r}")
     if int(k) >= len(source.paraphrases):
         raise EmbodimentError(f"{source.name} has {len(source.paraphrases)} paraphrases; "
                               f"'paraphrase:{k}' does not exist (they count from 0)")
@@ -119,7 +126,7 @@ class BlockTaskEnv(gym.Env):
         control_mode: ``"ee_delta"``, ``"ee_abs"`` or ``"joint_pos"`` (Panda only).
         cameras: camera observations to render (``()`` for state only).
         image_size: (height, width) of camera images, pixels.
-        instruction: ``"canonical"`` or ``"paraphrase:K"``.
+        instruction: ``"original"``, ``"canonical"`` or ``"paraphrase:K"`` (:data:`INSTRUCTION_MODES`).
         privileged: add ``object_poses`` to the observation.
         render_mode: None or ``"rgb_array"`` (``render()`` returns the agentview image).
         terminate_on_success: end the episode on the first successful step.
@@ -149,7 +156,7 @@ class BlockTaskEnv(gym.Env):
 
     def __init__(self, task: str | Path | PreparedTask, embodiment: str = "panda", control_mode: str = "ee_delta",
                  cameras: Sequence[str] = ("agentview", "wrist"), image_size: tuple[int, int] = C.ENV_IMAGE_SIZE,
-                 instruction: str = "canonical", privileged: bool = False, render_mode: str | None = None,
+                 instruction: str = "original", privileged: bool = False, render_mode: str | None = None,
                  terminate_on_success: bool = True, max_episode_steps: int | None = None):
         self.robot = make_embodiment(embodiment)
         if control_mode not in self.robot.CONTROL_MODES:
@@ -208,7 +215,7 @@ class BlockTaskEnv(gym.Env):
         obs["qvel"] = spaces.Box(-inf, inf, self.robot.robot_qvel().shape, np.float64)
         if self.privileged:
             obs["object_poses"] = spaces.Box(-inf, inf, (len(self.object_names), 7), np.float64)
-        texts = (self.source.instruction, *self.source.paraphrases)
+        texts = (self.source.instruction, self.source.canonical, *self.source.paraphrases)
         charset = "".join(sorted(set(string.printable) | set("".join(texts))))
         obs["instruction"] = spaces.Text(max_length=max(256, *(len(t) for t in texts)), charset=charset)
         return spaces.Dict(obs)

@@ -37,8 +37,10 @@ class TaskSource:
         target: the target as given.
         content_hash: the artifact's content hash (verified).
         name: the task's name.
-        instruction: the canonical instruction.
+        instruction: the instruction as written (``instruction="original"``).
         paraphrases: its paraphrases (``instruction="paraphrase:K"`` picks one).
+        canonical: a text generated from G that states exactly what G checks
+            (``instruction="canonical"``; :func:`rpg.schema.citations.canonical_instruction`).
     """
 
     directory: Path | None
@@ -47,6 +49,7 @@ class TaskSource:
     name: str
     instruction: str
     paraphrases: tuple[str, ...]
+    canonical: str = ""
 
 
 @dataclass(frozen=True)
@@ -112,7 +115,7 @@ def load_env_task(target: str | Path | PreparedTask, robot=None) -> tuple[Task, 
     if isinstance(target, PreparedTask):
         return Task(target.data, robot=robot), TaskSource(
             directory=None, target=target.name, content_hash="", name=target.name,
-            instruction=target.instruction, paraphrases=tuple(target.paraphrases))
+            instruction=target.instruction, paraphrases=tuple(target.paraphrases), canonical=target.instruction)
     directory = resolve_target(target)
     schema, doc, sources, digest = rehash(directory)
     if digest != doc.get("content_hash"):
@@ -125,8 +128,11 @@ def load_env_task(target: str | Path | PreparedTask, robot=None) -> tuple[Task, 
                           f"{gates.get(failed[0], 'not run')}); an environment loads only valid tasks "
                           "(see its validation.log)")
     task = Task(task_data(sources, where=str(directory)), robot=robot)
+    from rpg.schema.citations import canonical_instruction
+
     source = TaskSource(directory=directory, target=str(target), content_hash=digest, name=schema.name,
-                        instruction=schema.instruction, paraphrases=tuple(schema.paraphrases))
+                        instruction=schema.instruction, paraphrases=tuple(schema.paraphrases),
+                        canonical=canonical_instruction(schema))
     return task, source
 
 

@@ -81,7 +81,8 @@ class EvalConfig:
         policy: the policy SPEC (:func:`rpg.eval.policies.load_policy`).
         seeds: episode seeds, the same for every task (rho_0 samples).
         embodiment: ``panda`` or ``floating_gripper``.
-        instruction: ``canonical``, ``paraphrase:K`` or ``all`` (canonical and every paraphrase).
+        instruction: ``original`` (as written), ``canonical`` (G stated exactly),
+            ``paraphrase:K`` or ``all`` (the original and every paraphrase).
         cameras: camera observations; None: none for built-in policies, agentview and
             wrist for the others.
         image_size: (height, width) of camera observations, pixels.
@@ -92,13 +93,15 @@ class EvalConfig:
         control_mode: the action space (``ee_delta``, ``ee_abs``, ``joint_pos``).
         inference_timeout: seconds one ``policy.act`` may take (> 0).
         episode_timeout: seconds one episode may take (> 0).
+        allow_unstated: score tasks whose sent instruction does not state every constraint
+            of G (:func:`instruction_check`); refused otherwise.
     """
 
     target: str
     policy: str
     seeds: tuple[int, ...]
     embodiment: str = "panda"
-    instruction: str = "canonical"
+    instruction: str = "original"
     cameras: tuple[str, ...] | None = None
     image_size: tuple[int, int] = DEFAULT_IMAGE_SIZE
     replan: int | None = None
@@ -107,6 +110,7 @@ class EvalConfig:
     control_mode: str = "ee_delta"
     inference_timeout: float = INFERENCE_TIMEOUT_S
     episode_timeout: float = EPISODE_TIMEOUT_S
+    allow_unstated: bool = False
 
     def camera_list(self) -> tuple[str, ...]:
         if self.cameras is not None:
@@ -209,23 +213,55 @@ def eval_tasks(target: str, library: str | Path = "library/manifest.yaml") -> li
 
 
 def instruction_variants(mode: str, task: EvalTask) -> list[str]:
-    """The instructions a task is evaluated with: ``canonical``, ``paraphrase:K``, or for
-    ``all`` the canonical one and every paraphrase.
+    """The instructions a task is evaluated with: ``original``, ``canonical``, ``paraphrase:K``,
+    or for ``all`` the original and every paraphrase.
 
     Raises:
         BadInput: an unknown mode, or a paraphrase the task does not have.
     """
     if mode == "all":
-        return ["canonical", *(f"paraphrase:{k}" for k in range(task.paraphrases))]
+        return ["original", *(f"paraphrase:{k}" for k in range(task.paraphrases))]
     head, _, k = mode.partition(":")
-    if mode == "canonical":
+    if mode in ("original", "canonical"):
         return [mode]
     if head == "paraphrase" and k.isdigit():
         if int(k) >= task.paraphrases:
             raise BadInput(f"--instruction {mode}: {task.key} has {task.paraphrases} paraphrases "
                            f"(they count from 0)")
         return [mode]
-    raise BadInput(f"--instruction must be canonical, paraphrase:K or all, not {mode!r}")
+    raise BadInput(f"--instruction must be original, canonical, paraphrase:K or all, not {mode!r}")
+
+
+def sent_instruction(task: EvalTask, variant: str) -> str:
+    """The text a policy is sent for ``variant`` of ``task`` (what the environment sends)."""
+    from rpg.artifact import load_artifact
+    from rpg.schema.citations import canonical_instruction
+
+    schema, _ = load_artifact(Path(task.path))
+    if variant == "original":
+        return schema.instruction
+    if variant == "canonical":
+        return canonical_instruction(schema)
+    return schema.paraphrases[int(variant.partition(":")[2])]
+
+
+def instruction_check(work: list[tuple[EvalTask, str]]) -> dict[str, list[str]]:
+    """For every (task, instruction variant) of a run, the constraints of G that the sent
+    instruction does not state (:func:`rpg.schema.citations.unstated`): ``"KEY VARIANT" ->
+    [constraint, ...]``, sorted; empty lists where the instruction states all of G.
+
+    A paraphrase's frame (:data:`rpg.schema.builder.PARAPHRASE_FRAMES`) adds nothing to what
+    it states, so the goal summary inside it is what is read."""
+    from rpg.artifact import load_artifact
+    from rpg.schema.builder import unframe
+    from rpg.schema.citations import unstated
+
+    out = {}
+    for task, variant in work:
+        schema, _ = load_artifact(Path(task.path))
+        text = sent_instruction(task, variant)
+        out[f"{task.key} {variant}"] = unstated(schema, unframe(text))
+    return dict(sorted(out.items()))
 
 
 # -- episodes ------------------------------------------------------------------------
@@ -473,6 +509,13 @@ def check_settings(config: EvalConfig) -> list[tuple[EvalTask, str]]:
         raise BadInput(f"image size must be between 16 and 2048 pixels, not {h}x{w}")
     tasks = eval_tasks(config.target, config.library)
     work = [(t, v) for t in tasks for v in instruction_variants(config.instruction, t)]
+    unstated = {k: v for k, v in instruction_check(work).items() if v}
+    if unstated and not config.allow_unstated:
+        key, missing = next(iter(unstated.items()))
+        more = f" (and {len(unstated) - 1} more task instructions)" if len(unstated) > 1 else ""
+        raise BadInput(f"{key}: the instruction sent does not state {'; '.join(missing)}, which G checks: a policy "
+                       f"would be scored on what it was not told{more}. Send --instruction canonical (G stated "
+                       "exactly), or give --allow-unstated to score it anyway (recorded in summary.json)")
     if config.policy not in BUILTIN:
         close = getattr(load_policy(config.policy), "close", None)  # a bad module or an unreachable server
         if callable(close):
@@ -547,6 +590,7 @@ def _run_locked(config: EvalConfig, run_dir: Path, work: list, jobs: int, progre
                     raise
     wanted = {(t.path, v, int(s)) for t, v in work for s in config.seeds}
     summary = summarize([r for r in records if _episode_key(r) in wanted], config.to_json())
+    summary["instruction_check"] = instruction_check(work)
     write_file(run_dir / "summary.json", json.dumps(summary, indent=2, sort_keys=True) + "\n")
     return summary
 

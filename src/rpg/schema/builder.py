@@ -119,12 +119,22 @@ class Builder:
         )
 
 
+PARAPHRASE_FRAMES = ("Goal: ", "Arrange the cubes so that the final scene shows ")
+"""The frames :func:`make_paraphrases` puts around a goal summary (they state nothing more)."""
+
+
 def make_paraphrases(summary: str) -> list[str]:
-    """Three deterministic paraphrases of a goal summary."""
+    """Three deterministic paraphrases of a goal summary: itself and inside each frame of
+    :data:`PARAPHRASE_FRAMES`."""
     s = summary.strip().rstrip(".")
     low = s[0].lower() + s[1:] if s else s
-    return [
-        f"{s[0].upper() + s[1:]}.",
-        f"Goal: {low}.",
-        f"Arrange the cubes so that the final scene shows {low}.",
-    ]
+    return [f"{s[0].upper() + s[1:]}.", *(f"{frame}{low}." for frame in PARAPHRASE_FRAMES)]
+
+
+def unframe(text: str) -> str:
+    """``text`` without a leading frame of :data:`PARAPHRASE_FRAMES` (the summary inside it)."""
+    for frame in PARAPHRASE_FRAMES:
+        if text.startswith(frame):
+            rest = text[len(frame):]
+            return rest[:1].upper() + rest[1:]
+    return text
