@@ -9,8 +9,8 @@ Randomizations:
     - fixed (not sampled): gray_patch
 
 Success Conditions:
-    - stack (bottom to top) red, blue
-    - red on gray_patch
+    - a stack of red, blue in any order
+    - the stack of blue, red on gray_patch
 """
 
 from rpg.task_api import (
@@ -18,22 +18,22 @@ from rpg.task_api import (
     BlockTask,
     ColoredCube,
     GoalPatch,
-    OnPatch,
     Pose,
-    Stack,
+    StackOnPatch,
+    UnorderedStack,
     sample_scattered,
 )
 
 
 class StackBlocksOnGoalPatchTask(BlockTask):
-    """Success: stack (bottom to top) red, blue; red on gray_patch"""
+    """Success: a stack of red, blue in any order; the stack of blue, red on gray_patch"""
 
     NAME = 'stack_blocks_on_goal_patch'
     INSTRUCTION = 'Stack the blocks on the goal patch'
     PARAPHRASES = (
-        'Tower bottom to top: red, blue; red on gray_patch.',
-        'Goal: tower bottom to top: red, blue; red on gray_patch.',
-        'Arrange the cubes so that the final scene shows tower bottom to top: red, blue; red on gray_patch.',
+        'A stack of red, blue in any order; the stack of blue, red on gray_patch.',
+        'Goal: a stack of red, blue in any order; the stack of blue, red on gray_patch.',
+        'Arrange the cubes so that the final scene shows a stack of red, blue in any order; the stack of blue, red on gray_patch.',
     )
 
     def assets(self):
@@ -56,6 +56,6 @@ class StackBlocksOnGoalPatchTask(BlockTask):
 
     def goal(self):
         return And([
-            Stack(objects=['red', 'blue']),
-            OnPatch(a='red', patch='gray_patch'),
+            UnorderedStack(objects=['red', 'blue']),
+            StackOnPatch(a='red', patch='gray_patch', among=['blue', 'red']),
         ])
