@@ -37,7 +37,7 @@ from pathlib import Path
 import numpy as np
 from filelock import FileLock, Timeout
 
-from rpg.errors import BadInput
+from rpg.errors import BadInput, TaskInvalid
 from rpg.eval.policies import BUILTIN, INFERENCE_TIMEOUT_S, PolicyError, action_chunk, load_policy
 from rpg.jsonl import cut_torn_line, read_jsonl
 from rpg.validate.isolation import die_with_parent
@@ -232,12 +232,14 @@ def instruction_variants(mode: str, task: EvalTask) -> list[str]:
     raise BadInput(f"--instruction must be original, canonical, paraphrase:K or all, not {mode!r}")
 
 
-def sent_instruction(task: EvalTask, variant: str) -> str:
-    """The text a policy is sent for ``variant`` of ``task`` (what the environment sends)."""
+def sent_instruction(task: EvalTask, variant: str, schema=None) -> str:
+    """The text a policy is sent for ``variant`` of ``task`` (what the environment sends);
+    ``schema``: the task's, when the caller has read it already."""
     from rpg.artifact import load_artifact
     from rpg.schema.citations import canonical_instruction
 
-    schema, _ = load_artifact(Path(task.path))
+    if schema is None:
+        schema, _ = load_artifact(Path(task.path))
     if variant == "original":
         return schema.instruction
     if variant == "canonical":
@@ -259,7 +261,7 @@ def instruction_check(work: list[tuple[EvalTask, str]]) -> dict[str, list[str]]:
     out = {}
     for task, variant in work:
         schema, _ = load_artifact(Path(task.path))
-        text = sent_instruction(task, variant)
+        text = sent_instruction(task, variant, schema)
         out[f"{task.key} {variant}"] = unstated(schema, unframe(text))
     return dict(sorted(out.items()))
 
@@ -439,6 +441,8 @@ def run_unit(unit: Unit) -> dict:
     try:
         policy = _policy_for(cfg, env)
         result = run_episode(env, policy, unit.seed, cfg.replan, video, cfg.inference_timeout, cfg.episode_timeout)
+    except TaskInvalid:
+        raise  # the task's failure (a seed whose sample is refused), not the policy's: the run stops
     except Exception as exc:  # noqa: BLE001 - the policy's failure is this episode's outcome
         _drop_policy(cfg.policy)
         result = {"success": False, "steps": None, "truncated": False, "initial_state": None, "final_state": None,
