@@ -5,7 +5,15 @@ from __future__ import annotations
 
 from rpg.env.embodiments.base import CONTROL_MODES, Embodiment, EmbodimentError
 
-EMBODIMENTS = ("panda", "floating_gripper")
+REGISTRY = {
+    "panda": "rpg.env.embodiments.panda:Panda",
+    "floating_gripper": "rpg.env.embodiments.floating:FloatingGripper",
+}
+"""Embodiment name -> ``module:Class`` (imported when first made: the Panda brings mink and
+the Menagerie's meshes, which the floating gripper does not need).  Adding an embodiment is
+one line here and its module."""
+
+EMBODIMENTS = tuple(REGISTRY)
 """Embodiment names, for ``embodiment=`` and ``--embodiment``."""
 
 
@@ -15,15 +23,12 @@ def make_embodiment(name: str) -> Embodiment:
     Raises:
         EmbodimentError: unknown name.
     """
-    if name == "panda":
-        from rpg.env.embodiments.panda import Panda
+    import importlib
 
-        return Panda()
-    if name == "floating_gripper":
-        from rpg.env.embodiments.floating import FloatingGripper
-
-        return FloatingGripper()
-    raise EmbodimentError(f"unknown embodiment {name!r}; embodiments are {', '.join(EMBODIMENTS)}")
+    if name not in REGISTRY:
+        raise EmbodimentError(f"unknown embodiment {name!r}; embodiments are {', '.join(EMBODIMENTS)}")
+    module, _, cls = REGISTRY[name].partition(":")
+    return getattr(importlib.import_module(module), cls)()
 
 
-__all__ = ["CONTROL_MODES", "EMBODIMENTS", "Embodiment", "EmbodimentError", "make_embodiment"]
+__all__ = ["CONTROL_MODES", "EMBODIMENTS", "REGISTRY", "Embodiment", "EmbodimentError", "make_embodiment"]
