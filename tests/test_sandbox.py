@@ -344,3 +344,61 @@ def test_sandbox_mounts_tmp_before_the_interpreter_and_packages(monkeypatch, tmp
     binds = [i for i, a in enumerate(argv) if a in ("--ro-bind", "--bind") and argv[i + 1] != "/usr"]
     assert binds and all(i > tmpfs for i in binds)
     assert argv[argv.index("--bind") + 1] == str(tmp_path / "work")
+
+
+def _children_of(pid: int) -> set[int]:
+    out = subprocess.run(["pgrep", "-P", str(pid)], capture_output=True, text=True).stdout
+    return {int(p) for p in out.split()}
+
+
+def test_a_prepared_child_serves_one_request_and_an_unused_one_dies_with_rpg(base, tmp_path):
+    """prepare() starts the next request's child early; that child answers exactly one request
+    (the next request starts its own), and one prepared but never used is gone when rpg exits."""
+    from rpg.artifact import task_sources
+    from rpg.validate import sandbox
+
+    sources = task_sources(base)
+    request = {"op": "data", "sources": sources, "seeds": [0], "draws": 1, "goal_state": False, "restricted": True}
+    sandbox.prepare()
+    prepared = sandbox._spare.proc.pid
+    first = sandbox.ChildRun(request)
+    assert first.proc.pid == prepared and sandbox._spare is None
+    second = sandbox.ChildRun(request)
+    assert second.proc.pid != prepared
+    assert first.wait()["ok"] and second.wait()["ok"]
+    assert first.proc.returncode == 0 and second.proc.returncode == 0
+
+    code = ("import sys, time\nfrom rpg.validate import sandbox\nsandbox.prepare()\n"
+            "print(sandbox._spare.proc.pid, flush=True)\ntime.sleep(0.5)\n")
+    script = tmp_path / "prepare_and_exit.py"
+    script.write_text(code)
+    proc = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0, proc.stderr
+    pid = int(proc.stdout.split()[0])
+    time.sleep(0.2)
+    with pytest.raises(ProcessLookupError):
+        os.kill(pid, 0)
+
+
+def test_a_process_forked_after_prepare_neither_takes_nor_holds_the_parents_child(base):
+    """A pool worker forked while a child is prepared must not use it, and must not keep its
+    request pipe open: the parent's request still ends and is answered."""
+    from rpg.artifact import task_sources
+    from rpg.validate import sandbox
+
+    sandbox.prepare()
+    prepared = sandbox._spare.proc.pid
+    pid = os.fork()
+    if pid == 0:  # the forked worker: no spare of its own; stays alive while the parent asks
+        ok = sandbox._spare is None
+        time.sleep(3)
+        os._exit(0 if ok else 3)
+    try:
+        request = {"op": "data", "sources": task_sources(base), "seeds": [0], "draws": 1, "goal_state": False,
+                   "restricted": True}
+        run = sandbox.ChildRun(request, timeout=2.5)
+        assert run.proc.pid == prepared
+        assert run.wait()["ok"]
+    finally:
+        _, status = os.waitpid(pid, 0)
+    assert os.waitstatus_to_exitcode(status) == 0

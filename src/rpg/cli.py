@@ -117,7 +117,12 @@ def compile_cmd(
     author: Annotated[str | None, typer.Option("--author", help=AUTHOR_HELP)] = None,
 ) -> None:
     """Compile INSTRUCTION into a validated task artifact OUTPUT/<slug>/."""
+    from rpg.validate.sandbox import prepare
+
+    prepare()  # the validation child starts up while the compiler is imported
     from rpg.compiler import compile_instruction
+
+    _freeze_imports()
 
     model = model or os.environ.get("RPG_MODEL") or None
     with _reported_errors():
@@ -847,11 +852,24 @@ def schema_cmd(
     out.print(f"wrote {output}")
 
 
+def _freeze_imports() -> None:
+    """Move what the imports allocated (modules, classes, tables: live until exit) out of the
+    garbage collector's reach, so a one-shot command's collections walk only its own work."""
+    import gc
+
+    gc.freeze()
+
+
 def main() -> None:
     try:
         app()
     except KeyboardInterrupt:
         sys.exit(130)
+    finally:
+        # Exiting: the interpreter's last collection would walk every object of the imported
+        # libraries (~80 ms of a one-shot command's ~0.9 s). Files are written and synced
+        # explicitly; atexit handlers (temporary directories, a spare sandbox child) still run.
+        _freeze_imports()
 
 
 if __name__ == "__main__":

@@ -259,6 +259,9 @@ def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int
         ValueError: unknown colour or label.
         BadInput: an unknown gate name in ``disabled`` or ``enabled``.
     """
+    from rpg.validate.sandbox import prepare
+
+    prepare()  # the validation child starts up while the instruction is read
     from rpg.schema.builtin import ParseError
 
     disabled = check_gate_names(disabled)

@@ -1,6 +1,7 @@
 """Runs task code in a fresh, limited, isolated process per request, and reads back data.
 
-Each request starts its own child (:mod:`rpg.validate.child`): a stripped environment (no
+Each request has its own child (:mod:`rpg.validate.child`), started for it or, with
+:func:`prepare`, started ahead so that its start-up overlaps the caller's work: a stripped environment (no
 API keys or secrets), its own temporary working directory, CPU-time, address-space,
 file-size, core-file, process and open-file limits, a wall-clock timeout, and the
 namespaces and seccomp filter of :mod:`rpg.validate.isolation`.  No process serves two
@@ -11,11 +12,14 @@ parsed as JSON; the caller checks it against a schema (:mod:`rpg.validate.data`)
 
 from __future__ import annotations
 
+import atexit
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 
 from rpg.errors import TaskInvalid
@@ -91,9 +95,106 @@ def worker_timeout() -> float:
         return WORKER_TIMEOUT_S
 
 
+class _Child:
+    """A started child of :mod:`rpg.validate.child`, in its own temporary working directory,
+    waiting for its one request on stdin (it reads the request before it applies its limits
+    and filters, so nothing of the task runs before then)."""
+
+    def __init__(self):
+        self._owner = os.getpid()  # a forked copy of this object never removes the directory
+        self._dir = cwd = tempfile.mkdtemp(prefix="rpg-worker-")
+        env = _worker_env()
+        self.out_path, self.err_path = os.path.join(cwd, ".stdout"), os.path.join(cwd, ".stderr")
+        try:
+            with open(self.out_path, "wb") as out, open(self.err_path, "wb") as err:
+                self.proc = subprocess.Popen(
+                    wrap([sys.executable, "-I", "-m", "rpg.validate.child"], env, writable=cwd),
+                    stdin=subprocess.PIPE, stdout=out, stderr=err, cwd=cwd, env=env,
+                    preexec_fn=die_with_parent, start_new_session=True)
+        except OSError as exc:
+            self.cleanup()
+            raise WorkerError(f"cannot start the sandboxed child: {exc}") from None
+
+    def send(self, payload: bytes) -> None:
+        """Write the request and close stdin (the child starts on end of file)."""
+        try:
+            self.proc.stdin.write(payload)
+            self.proc.stdin.close()
+        except OSError:  # the child died before reading: its exit code and stderr say why
+            pass
+
+    def discard(self) -> None:
+        """Kill the child (if it still runs) and remove its directory."""
+        if self.proc.poll() is None:
+            self.proc.kill()
+        self.proc.wait()
+        if self.proc.stdin and not self.proc.stdin.closed:
+            self.proc.stdin.close()
+        self.cleanup()
+
+    def cleanup(self) -> None:
+        """Remove the child's directory (only in the process that made it)."""
+        if os.getpid() == self._owner:
+            shutil.rmtree(self._dir, ignore_errors=True)
+
+
+_spare: _Child | None = None
+_spare_lock = threading.Lock()
+
+
+def prepare() -> None:
+    """Start the next request's child now, so that its start-up (the interpreter, its
+    imports, the namespaces) overlaps the caller's own work; :class:`ChildRun` uses it for
+    its request.  Still one child per request: a prepared child serves exactly one.  An
+    unused one is killed at exit.  A child that cannot start is left for the request to
+    report."""
+    global _spare
+    with _spare_lock:
+        if _spare is not None and _spare.proc.poll() is None:
+            return
+        try:
+            _spare = _Child()
+        except WorkerError:
+            _spare = None
+
+
+def _take() -> _Child:
+    """The prepared child if it still waits, else a new one."""
+    global _spare
+    with _spare_lock:
+        child, _spare = _spare, None
+    if child is not None and child.proc.poll() is None:
+        return child
+    if child is not None:
+        child.discard()
+    return _Child()
+
+
+def _forget_spare_after_fork() -> None:
+    """In a forked process: the parent's prepared child is not ours to use, and our copy of its
+    request pipe would keep it from ever seeing the end of its request."""
+    global _spare, _spare_lock
+    child, _spare, _spare_lock = _spare, None, threading.Lock()
+    if child is not None and child.proc.stdin is not None:
+        child.proc.stdin.close()
+
+
+os.register_at_fork(after_in_child=_forget_spare_after_fork)
+
+
+@atexit.register
+def _discard_spare() -> None:
+    global _spare
+    with _spare_lock:
+        child, _spare = _spare, None
+    if child is not None:
+        child.discard()
+
+
 class ChildRun:
     """One request's child, started and not yet waited for (so the caller can work while it
-    runs).  Use :meth:`wait` exactly once.
+    runs).  Use :meth:`wait` exactly once.  The child is the one :func:`prepare` started, if
+    it still waits, or a new one.
 
     Raises:
         WorkerError: the child could not be started.
@@ -101,25 +202,11 @@ class ChildRun:
 
     def __init__(self, request: dict, timeout: float | None = None):
         self.timeout = worker_timeout() if timeout is None else timeout
-        self._dir = tempfile.TemporaryDirectory(prefix="rpg-worker-")
-        cwd = self._dir.name
-        env = _worker_env()
-        self._out_path, self._err_path = os.path.join(cwd, ".stdout"), os.path.join(cwd, ".stderr")
         payload = json.dumps(request).encode()
-        with open(os.path.join(cwd, ".stdin"), "wb") as fh:
-            fh.write(payload)
-        try:
-            with open(os.path.join(cwd, ".stdin"), "rb") as stdin, open(self._out_path, "wb") as out, \
-                    open(self._err_path, "wb") as err:
-                self.proc = subprocess.Popen(
-                    wrap([sys.executable, "-I", "-m", "rpg.validate.child"], env, writable=cwd),
-                    stdin=stdin, stdout=out, stderr=err, cwd=cwd, env=env,
-                    preexec_fn=die_with_parent, start_new_session=True)
-        except OSError as exc:
-            self._dir.cleanup()
-            raise WorkerError(f"cannot start the sandboxed child: {exc}") from None
-        os.unlink(os.path.join(cwd, ".stdin"))
+        self._child = _take()
+        self.proc = self._child.proc
         self.started = time.monotonic()
+        self._child.send(payload)
 
     def wait(self) -> dict:
         """The child's parsed JSON document.
@@ -134,14 +221,14 @@ class ChildRun:
                 self.proc.kill()
                 self.proc.wait()
                 raise WorkerError(f"task code ran past the {self.timeout:.0f} s limit") from None
-            with open(self._out_path, "rb") as fh:
+            with open(self._child.out_path, "rb") as fh:
                 stdout = fh.read(WORKER_MAX_OUTPUT + 1)
-            with open(self._err_path, "rb") as fh:
-                fh.seek(max(0, os.path.getsize(self._err_path) - 4096))
+            with open(self._child.err_path, "rb") as fh:
+                fh.seek(max(0, os.path.getsize(self._child.err_path) - 4096))
                 stderr = fh.read()
             return _parse(stdout, stderr, self.proc.returncode)
         finally:
-            self._dir.cleanup()
+            self._child.cleanup()
 
 
 def run_child(request: dict, timeout: float | None = None) -> dict:
