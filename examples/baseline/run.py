@@ -58,7 +58,7 @@ def main(argv: list[str] | None = None) -> None:
         t0 = time.monotonic()
         print(f"== {name}", flush=True)
         fn()
-        cost[name] = round(time.monotonic() - t0, 1)
+        cost[name] = round(cost.get(name, 0.0) + time.monotonic() - t0, 1)  # summed over resumed invocations
         cost_path.write_text(json.dumps(cost, indent=2) + "\n")
 
     def run(cmd: list[str]) -> None:
