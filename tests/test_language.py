@@ -102,3 +102,40 @@ def test_the_accounting_record_says_which_words_produced_which_part():
     assert record[("color", "green")].count("green") == 3 and record[("color", "red")] == "red"
     assert record[("structure", "row")] == "in_line"
     assert ("relation", "to the left of") in record and ("count", "3 green blocks") in record
+
+
+@pytest.mark.parametrize("text,kind,word", [
+    ("Do not put the red block on the blue block", "negation", "not"),
+    ("Don't stack the green block on the red block", "negation", "don't"),
+    ("Build a tower without the yellow block", "negation", "without"),
+    ("If the red block is on the table, stack it on the blue block", "condition", "if"),
+    ("Put the big block on the small block", "size", "big block"),
+    ("Place the red ball on the blue block", "object", "ball"),
+    ("Put the red block 10 cm to the left of the blue block", "quantity", "10 cm"),
+    ("Stack the red block on the blue block for 5 seconds", "time", "5 seconds"),
+])
+def test_meaning_the_domain_lacks_is_refused_naming_the_word_and_why(text, kind, word):
+    from rpg.schema.builtin import Inexpressible
+
+    with pytest.raises(Inexpressible) as exc:
+        parse(text)
+    assert exc.value.kind == kind
+    assert f"'{word}'" in str(exc.value)
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("Stack the red brick on the blue brick", ["stack(blue,red)"]),
+    ("We'll need a tower of three blue blocks.", ["stack(blue,blue,blue)"]),
+    ("Let's stack the red block on the blue one.", ["stack(blue,red)"]),
+    ("Maybe put the red block on top of the blue block, that would be nice", ["stack(blue,red)"]),
+    ("I need the green block on the yellow block", ["stack(yellow,green)"]),
+    ("Put the green block anywhere on the left side of the table", ["in_region(green,left)"]),
+    ("Move the red cube to the back leftmost corner", ["in_region(red,back_left)"]),
+])
+def test_harmless_words_and_curated_synonyms_are_read(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_corner_needs_both_of_its_sides():
+    with pytest.raises(ParseError, match="names no one corner"):
+        parse("Move the red cube to the right corner")

@@ -116,7 +116,7 @@ marker markers away distant opposite rear edge edges end ends half part workspac
 """Words the builtin front end understands (besides colours, numbers and labels)."""
 
 
-IGNORABLE_HERE = lexicon.IGNORABLE - VOCAB
+IGNORABLE_HERE = (lexicon.IGNORABLE | lexicon.IGNORABLE_MORE) - VOCAB
 """Ignorable words (:data:`lexicon.IGNORABLE`) the parser's vocabulary does not use itself."""
 
 COMPASS_CORNER_RE = re.compile(r"\b(?:the\s+)?(nw|ne|sw|se|north[- ]?west|north[- ]?east|south[- ]?west|south[- ]?east)\s+corner\b")
@@ -168,6 +168,29 @@ def _transposition(word: str) -> tuple[str] | None:
     return (known[0],) if len(known) == 1 else None
 
 
+class Inexpressible(ParseError):
+    """The instruction says something the domain cannot express (a negation, a condition, a
+    time, a measured quantity, a size, an object it lacks): :data:`lexicon.INEXPRESSIBLE`."""
+
+    def __init__(self, kind: str, words: list[str], why: str, original: str):
+        shown = ", ".join(f"'{w}'" for w in words)
+        super().__init__(f"cannot make a task of \"{original[:80]}\": {shown} {why}")
+        self.kind = kind
+
+
+_INEXPRESSIBLE = tuple((kind, re.compile(pattern), why) for kind, pattern, why in lexicon.INEXPRESSIBLE)
+_SYNONYM_RE = re.compile(r"\b(?:" + "|".join(sorted(lexicon.SYNONYMS, key=len, reverse=True)) + r")\b")
+
+
+def _refuse_inexpressible(text: str, original: str) -> None:
+    """Raise :class:`Inexpressible` for the first class of :data:`lexicon.INEXPRESSIBLE` that
+    lower-cased ``text`` says, naming its words."""
+    for kind, pattern, why in _INEXPRESSIBLE:
+        words = list(dict.fromkeys(m.group(0).strip() for m in pattern.finditer(text)))
+        if words:
+            raise Inexpressible(kind, words, why, original)
+
+
 def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
     """Lower-case, number words to digits, typos corrected.  Returns (text, original).
 
@@ -190,6 +213,10 @@ def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
     text = labelled.lower()
     text = re.sub(r"[\u2018\u2019\u201c\u201d`]", "'", text)
     text = text.replace('"', "'")
+    _refuse_inexpressible(text, original)
+    for pattern, full in lexicon.CONTRACTIONS:
+        text = re.sub(pattern, full, text)
+    text = _SYNONYM_RE.sub(lambda m: lexicon.SYNONYMS[m.group(0)], text)
     text = re.sub(r"(\d)\s*[x\u00d7]\s*(?=\d)", r"\1x", text)
     text = re.sub(r"\b(\d+)\s+by\s+(?=\d)", r"\1x", text)
     text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall)", r"\1 \2", text)
@@ -1134,6 +1161,9 @@ def _regions(text: str) -> str:
         if not (m.group("tail") or corner or bare_center):
             return m.group(0)
         fb = m.group("fb") or ("far" if m.group("far") == "far" and corner else None)  # "the far left corner"
+        if corner and not (fb and word in ("left", "right")):  # "the right corner": back right or front right?
+            raise ParseError(f"'{m.group(0).strip()}' names no one corner: a corner of the table is front or back and "
+                             "left or right (e.g. 'the back right corner')")
         return f" @region_{region_name(fb, word)} "
     return " ".join(REGION_RE.sub(sub, text).split())
 

@@ -26,6 +26,55 @@ gingerly cautiously immediately sequentially successively very grasped held
 """.split())
 """Fillers, politeness, manner adverbs and possessives: no meaning for the goal (dropped)."""
 
+IGNORABLE_MORE: frozenset[str] = frozenset("""
+nice nicely neat tidy tidily maybe perhaps possibly need needs needed want wants wanted let am
+try trying attempt anywhere somewhere flat flatly thanks thank cool great gonna wanna um uh yeah alright
+help
+""".split())
+"""Further words with no meaning for the goal, each checked not to change what a task asks:
+hedges ("maybe"), wishes ("I need", "we'll", "let's"), praise ("nice"), "anywhere", "lay it
+flat" (every cube rests on a face). Dropped, and listed in the task's accounting."""
+
+CONTRACTIONS: tuple[tuple[str, str], ...] = (
+    (r"\blet's\b", "let us"), (r"\b(it|that|there|here|what)'s\b", r"\1 is"), (r"'ll\b", " will"),
+    (r"'d\b", " would"), (r"'ve\b", " have"), (r"'re\b", " are"), (r"\bi'm\b", "i am"),
+)
+"""Contractions written out (negated ones, "don't", are refused first: :data:`INEXPRESSIBLE`)."""
+
+SYNONYMS: dict[str, str] = {
+    "brick": "block", "bricks": "blocks", "ground": "table", "floor": "table", "tabletop": "table",
+    "desk": "table", "rightmost": "right", "leftmost": "left", "frontmost": "front", "backmost": "back",
+    "furthest": "far", "farthest": "far",
+}
+"""Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
+the table the cubes stand on; "the rightmost corner" is a corner on the right."""
+
+INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
+    ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none)\b|n't\b"
+                 r"|\b(?:don|doesn|didn|isn|aren|shouldn|mustn|won|wouldn)\s*'?\s*t\b"
+                 r"|\bno\s+(?:\w+\s+){0,2}?(?:blocks?|cubes?|boxes|one|other|longer)\b",
+     "is a negation: a task's goal says what must hold at the end, and rpg does not check that something is absent; "
+     "say what should be true instead"),
+    ("condition", r"\b(?:if|unless|whenever|otherwise|provided)\b",
+     "makes the goal conditional: a task has one goal, checked at the end of the episode; say the goal for one scene"),
+    ("time", r"\b(?:\d+\s+(?:seconds?|minutes?|hours?)|seconds|minutes?|hours?|until|meanwhile|forever)\b",
+     "is about time: a task's goal is checked once, at the end of the episode, with no clock or duration"),
+    ("quantity", r"\b(?:\d+(?:\.\d+)?\s*(?:cm|mm)\b|(?:centi|milli)?(?:meters?|metres?)|inch(?:es)?|feet|foot"
+                 r"|cms?|few|fewer|most|majority|percent)\b",
+     "is a measured or vague quantity: rpg's relations are qualitative (next to, left of, far from) and "
+     "its counts exact"),
+    ("size", r"\b(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge|giant|mini|heavy|heavier"
+             r"|heaviest|wider|narrow|thin|thick)\s+(?:(?!(?:number|digit|letter|label)\b)[a-z]+\s+)?(?:blocks?|cubes?|boxes|box|ones?)\b",
+     "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
+    ("object", r"\b(?:balls?|spheres?|cylinders?|cones?|cups?|mugs?|bottles?|plates?|bowls?|pens?|toys?|books?"
+               r"|drawers?|shelf|shelves|baskets?|bins?|trays?|doors?|triangles?\s+(?:block|piece)s?|rods?)\b",
+     "names an object the domain does not have: it has only 5 cm cubes (coloured, optionally labelled) "
+     "and flat coloured patches on the table"),
+)
+"""Meaning the domain cannot express, by class: (class, pattern over the lower-cased text,
+why).  An instruction that says one is refused naming the words and why (refuse rather than
+guess); none of these words may be dropped as a filler."""
+
 PLACEMENT_VERBS: dict[str, str] = {
     "put": "place", "place": "place", "set": "place", "move": "place", "push": "place", "slide": "place",
     "bring": "place", "shift": "place", "transfer": "place", "relocate": "place", "sweep": "place",
