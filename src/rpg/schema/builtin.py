@@ -174,7 +174,7 @@ class Inexpressible(ParseError):
 
     def __init__(self, kind: str, words: list[str], why: str, original: str):
         shown = ", ".join(f"'{w}'" for w in words)
-        super().__init__(f"cannot make a task of \"{original[:80]}\": {shown} {why}")
+        super().__init__(f"cannot make a task of \"{original[:80]}\": {shown} {why}. Rephrase, or use --model")
         self.kind = kind
 
 

@@ -57,7 +57,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "say what should be true instead"),
     ("condition", r"\b(?:if|unless|whenever|otherwise|provided)\b",
      "makes the goal conditional: a task has one goal, checked at the end of the episode; say the goal for one scene"),
-    ("time", r"\b(?:\d+\s+(?:seconds?|minutes?|hours?)|seconds|minutes?|hours?|until|meanwhile|forever)\b",
+    ("time", r"\b(?:\d+\s+(?:seconds?|minutes?|hours?)|seconds|minutes?|hours?|meanwhile|forever)\b",
      "is about time: a task's goal is checked once, at the end of the episode, with no clock or duration"),
     ("quantity", r"\b(?:\d+(?:\.\d+)?\s*(?:cm|mm)\b|(?:centi|milli)?(?:meters?|metres?)|inch(?:es)?|feet|foot"
                  r"|cms?|few|fewer|most|majority|percent)\b",
