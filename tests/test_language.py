@@ -139,3 +139,33 @@ def test_harmless_words_and_curated_synonyms_are_read(text, expected):
 def test_a_corner_needs_both_of_its_sides():
     with pytest.raises(ParseError, match="names no one corner"):
         parse("Move the red cube to the right corner")
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a count or colour before the structure noun is the whole structure's
+    ("build a four-high white stack", ["stack(white,white,white,white)"]),
+    ("Make a 3 block tall cyan tower", ["stack(cyan,cyan,cyan)"]),
+    ("build a blue tower of 3 blocks", ["stack(blue,blue,blue)"]),
+    ("build a four-story white tower", ["stack(white,white,white,white)"]),
+    # a group after "one of" is one tower's
+    ("one tower of two pink and one of two brown", ["stack(brown,brown)", "stack(pink,pink)"]),
+    ("make two towers: one of two pink blocks and one of two brown blocks", ["stack(brown,brown)", "stack(pink,pink)"]),
+    # a role binds to its end of the tower
+    ("a tower of four where the top one is white", ["stack(red,blue,green,white)"]),
+    ("build a tower of four blocks, the bottom block is black", ["stack(black,red,blue,green)"]),
+    # a place named alone is kept
+    ("build a four-high white stack right in the middle", ["stack(white,white,white,white)@center"]),
+])
+def test_structure_phrases_keep_their_count_colour_role_and_place(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "put two black cubes next to each other at the front",
+    "two black cubes side by side near the front edge",
+    "make a row of three red blocks on the left",
+    "build a tower of three blocks with the red one in the middle",
+])
+def test_a_place_the_reading_cannot_use_is_refused_not_dropped(text):
+    with pytest.raises(ParseError, match="place '"):
+        parse(text)

@@ -63,6 +63,17 @@ SUPERLATIVE_RE = re.compile(
 there are, which only a stated count makes a task (project)."""
 
 
+BARE_PLACE_RE = re.compile(
+    r"\b(?:in|at|on|to|into|onto|near|by|along)\s+the\s+(?:very\s+|far\s+)?(?P<side>front|back|rear|left|right|middle|center|centre)"
+    r"(?:\s*-?\s*(?:hand\s+)?(?:side|half|part|edge|end|area|region))?\b(?!\s*(?:of\b|-|corner|left|right|middle))")
+"""A side of the table named alone ("at the front", "on the left", "in the middle"), not a
+relation ("to the left of"): a place the task must use (project)."""
+
+BARE_PLACES = {"front": "front", "back": "back", "rear": "back", "left": "left", "right": "right",
+               "middle": "center", "center": "center", "centre": "center"}
+"""Side words -> regions (:data:`rpg.domain.constants.REGION_NAMES`)."""
+
+
 class UnaccountedMention(BadInput):
     """A mention of the instruction has no place in the task that was read."""
 
@@ -97,6 +108,9 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
         out.append(Mention(m.group(0), "patch", color=canon(m.group("c"))))
     for m in re.finditer(r"@region_([a-z_]+)", text):
         out.append(Mention(m.group(0), "place", region=m.group(1)))
+    for m in BARE_PLACE_RE.finditer(text):  # "at the front", "in the middle": a place, unless something faces it
+        if not re.search(r"\bfac\w*\s+(?:\w+\s+){0,2}$", text[:m.start()]):
+            out.append(Mention(m.group(0), "place", region=BARE_PLACES[m.group("side")]))
     towers = len(re.findall(r"\b(?:a|an|1|another)\s+(?:[a-z0-9\-]+\s+){0,2}?(?:tower|stack|column|pillar)\b", text))
     towers += len(re.findall(r"\b(?:tower|stack|column|pillar)\s+of\s+\w+\s+and\s+(?:1|another)\b(?!\s+(?:[a-z]+\s+)?"
                              r"(?:block|cube|tower|stack|column|pillar))", text))  # "one tower of red and one of green"

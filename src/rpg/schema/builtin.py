@@ -108,7 +108,7 @@ plus minus equals times operator operators symbol symbols mixed upright hold hol
 out smallest largest lowest highest biggest least greatest tallest longest widest marked labelled labeled showing
 alternating alternate alternately alternates going goes go way up down upward downward stand standing
 wall walls wide deep long split divide pillar column close far triangle triangular formation write writes
-writing addition subtraction multiplication increase increases decrease decreases tier tiers instead actually
+writing addition subtraction multiplication increase increases decrease decreases tier tiers story storey stories storeys instead actually
 rather backwards backward pick grab take lift get lay drop small little tiny mini huge one unstack unstacked off remove
 through corner corners sum area areas zone zones region regions spot spots location pad pads mat mats
 marker markers away distant opposite rear edge edges end ends half part workspace robot
@@ -281,7 +281,45 @@ def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
         text = re.sub(rf"\b{w}\b", str(n), text)
     text = re.sub(r"\bgrey\b", "gray", text)
     text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall|tier)", r"\1 \2", text)
-    return " ".join(text.split()), original
+    return " ".join(_structure_phrases(" ".join(text.split())).split()), original
+
+
+_TOWER = r"(?:tower|stack|column|pile|pillar)"
+_HEIGHT = r"(?:(?:blocks?|cubes?|stor(?:y|ey|ies|eys)|levels?|tiers?|layers?)(?:\s+(?:high|tall))?|high|tall)"
+_GROUP = rf"(?P<n{{i}}>\d+)\s+(?P<c{{i}}>{COLOR_RE})(?:\s+(?:blocks|cubes))?"
+STRUCTURE_PHRASES: tuple[tuple[re.Pattern, str], ...] = (
+    # "a 4-high white stack", "a 3 block tall cyan tower", "a four-story tower": the count and
+    # the colour are the whole tower's
+    (re.compile(rf"\b(a|an|one|1|the)\s+(\d+)\s+{_HEIGHT}\s+(?:({COLOR_RE})\s+)?({_TOWER})\b"),
+     r"\1 \4 of \2 \3 blocks"),
+    # "a tower 3 blocks high"
+    (re.compile(rf"\b({_TOWER})\s+(\d+)\s+(?:(?:blocks?|cubes?|levels?|stor(?:ies|eys)|tiers?|layers?)\s+)?(?:high|tall)\b"),
+     r"\1 of \2 blocks"),
+    # "a blue tower of 3 blocks"
+    (re.compile(rf"\b(a|an|one|1|the)\s+({COLOR_RE})\s+({_TOWER})\s+of\s+(\d+)(?:\s+(?:blocks|cubes))?\b"),
+     r"\1 \3 of \4 \2 blocks"),
+    # "two towers: one of 2 pink blocks and one of 2 brown": a tower per group
+    (re.compile(r"\b\d+\s+(tower|stack|column|pile)s\s*[:,;\-]?\s*(?:one|1)\s+(?=of\s+\d)"), r"1 \1 "),
+    (re.compile(rf"\b(?:one|1)\s+(?:({_TOWER})\s+)?of\s+{_GROUP.format(i=1)}\s*,?\s+and\s+(?:one|1|another|the\s+other)"
+                rf"(?:\s+{_TOWER})?\s+of\s+{_GROUP.format(i=2)}"),
+     r"a \1 of \g<n1> \g<c1> blocks and a \1 of \g<n2> \g<c2> blocks"),
+    # roles: "the top one is white", "the bottom block black"
+    (re.compile(rf"(?:\s*,\s*|\s+(?:with|where|and|in\s+which)\s+)the\s+(?:top|topmost|uppermost|highest)"
+                rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|should\s+be\s+|must\s+be\s+)?({COLOR_RE})"
+                rf"(?:\s+(?:block|cube|one|1))?\b"), r" with a \1 block on top"),
+    (re.compile(rf"(?:\s*,\s*|\s+(?:with|where|and|in\s+which)\s+)the\s+(?:bottom|lowest|base|bottommost)"
+                rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|should\s+be\s+|must\s+be\s+)?({COLOR_RE})"
+                rf"(?:\s+(?:block|cube|one|1))?\b"), r" with a \1 block at the bottom"),
+)
+"""Ways of describing a tower, rewritten to the form the readers take ("a tower of N <colour>
+blocks"): a count or colour before the structure noun is the whole structure's, a group
+after "one of" is one tower's, "the top one is white" is the top cube's colour."""
+
+
+def _structure_phrases(text: str) -> str:
+    for pattern, replacement in STRUCTURE_PHRASES:
+        text = pattern.sub(lambda m, r=replacement: m.expand(r).replace("None ", "").replace(" of  ", " of "), text)
+    return text
 
 
 def _color_mentions(text: str) -> list[tuple[int, str]]:
@@ -1157,7 +1195,8 @@ def _regions(text: str) -> str:
     def sub(m: re.Match) -> str:
         corner = "corner" in m.group("part")
         word = m.group("lr") or m.group("lr2")
-        bare_center = word in ("center", "centre") and m.group(0).split()[0] in ("in", "at")  # "in the center"
+        bare_center = (word in ("center", "centre", "middle") and m.group(0).split()[0] in ("in", "at")  # "in the center"
+                       and not re.search(r"\bwith\s+the\s+\w+\s+(?:one|block|cube)\s*$", m.string[:m.start()]))
         if not (m.group("tail") or corner or bare_center):
             return m.group(0)
         fb = m.group("fb") or ("far" if m.group("far") == "far" and corner else None)  # "the far left corner"
