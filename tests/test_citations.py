@@ -161,7 +161,8 @@ def test_an_unnamed_order_is_dropped_and_a_named_one_kept():
     assert type(parse("place the block on top of another block").goal).__name__ == "UnorderedStack"
     patch = parse("Stack the blocks on the goal patch")  # whichever cube is at the bottom
     assert "in any order" in patch.goal_summary and "stack_on_patch" in str(patch.goal.to_dict())
-    assert parse("Build a tower three blocks high with a yellow block on top").goal.name == "stack"
+    yellow_top = parse("Build a tower three blocks high with a yellow block on top").goal  # only the named end
+    assert yellow_top.name == "anchored_stack" and yellow_top.top and not yellow_top.bottom
     towers = parse("build two towers of two blocks")  # which cubes share a tower is not said
     assert "cube colour: red" in unstated(towers, towers.instruction)
 
@@ -231,3 +232,27 @@ def test_goal_fails_when_named_roles_swap():
             checked += 1
             break
     assert checked >= 30
+
+
+@pytest.mark.parametrize("text,end", [
+    ("build a tower of four blocks with a black block at the bottom", 0),
+    ("a tower of four where the top one is white", -1),
+])
+def test_a_named_end_is_judged_and_the_unnamed_cubes_are_free(text, end):
+    """G of a tower with one named end: it holds when the unnamed cubes trade places, and
+    fails when the named cube leaves its end (the words distinguish that)."""
+    schema = check_feasibility(parse(text))
+    goal = schema.goal_predicate()
+    assert goal.name == "anchored_stack"
+    objs = list(goal.objects)
+    anchor = objs[end]
+    free = [n for n in objs if n != anchor]
+    layout = schema.goal_layout
+    rotated = dict(zip(free, [layout[n] for n in free[1:] + free[:1]], strict=True))
+    assert evaluate_goal(goal, goal_world(schema, rotated)).satisfied
+    swapped = {anchor: layout[free[1]], free[1]: layout[anchor]}
+    result = evaluate_goal(goal, goal_world(schema, swapped))
+    assert not result.satisfied
+    citations = {c.line: cites for c, cites in cite(schema)}
+    assert any(line.endswith("of the stack") and cites for line, cites in citations.items())
+    assert not any(line.startswith("the order") for line in citations)

@@ -239,7 +239,8 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     ("Arrange the numbers 3, 1, 2 in increasing order", "up faces read 1, 2, 3 left to right"),
     ("Sort the letters A, B and C alphabetically from left to right", "up faces read A, B, C left to right"),
     ("Place each block on the patch of the same color", "each cube on the patch of its colour: red, blue"),
-    ("Build a tower three blocks high with a yellow block on top", "tower bottom to top: red, blue, yellow"),
+    ("Build a tower three blocks high with a yellow block on top",
+     "a stack of red, blue, yellow with yellow on top, the rest in any order"),
     ("Spell ROBOT vertically in a tower", "a tower whose front faces read 'ROBOT' from top to bottom"),
     ("Stack the cubes so the letters read ABC from top to bottom", "a tower whose front faces read 'ABC' from top to bottom"),
     ("Put the block with the letter A on top of the block with the letter B", "tower bottom to top: letter_b, letter_a"),
@@ -249,7 +250,7 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     ("Arrange 4 cubes in a row alternating red and white", "cubes in a line left to right: red_1, white_1, red_2, white_2"),
     ("Build a tower of 5 blocks alternating green and yellow", "tower bottom to top: green_1, yellow_1, green_2, yellow_2, green_3"),
     # references back to a stack or to the previous relation's object
-    ("Put the blue cube on top of the stack", "tower bottom to top: red, green, blue"),
+    ("Put the blue cube on top of the stack", "a stack of red, green, blue with blue on top, the rest in any order"),
     ("Place the red block next to the tower", "tower bottom to top: blue, green; red next to blue"),
     ("Stack two green blocks and place a red block beside the stack",
      "tower bottom to top: green_1, green_2; red next to green_1"),

@@ -16,6 +16,7 @@ from rpg.domain.layouts import (
     stack_layout,
 )
 from rpg.domain.predicates import (
+    AnchoredStack,
     And,
     Behind,
     Between,
@@ -51,7 +52,7 @@ from rpg.domain.state import Pose, quat_mul, yaw_quat
 from rpg.domain.task_code import BlockTask
 
 __all__ = [
-    "And", "Behind", "Between", "BlockTask", "ColoredCube", "Equation", "FarFrom", "GoalPatch", "Grid",
+    "AnchoredStack", "And", "Behind", "Between", "BlockTask", "ColoredCube", "Equation", "FarFrom", "GoalPatch", "Grid",
     "InCircle", "InFrontOf", "InLine", "InOrder", "InRegion", "LabelFacing", "LayersUniform", "LeftOf",
     "NextTo", "Not", "On", "OnPatch", "OnTable", "Piles", "Pose", "Pyramid", "Reads",
     "RightOf", "SemanticCube", "SortedBy", "Stack", "StackOnPatch", "TemporalMonitor", "UnorderedStack", "Upright",

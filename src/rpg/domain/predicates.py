@@ -822,6 +822,53 @@ class UnorderedStack(Stack):
 
 
 @dataclass(frozen=True, repr=False)
+class AnchoredStack(Stack):
+    """One vertical stack of ``objects`` in any order but at its ends: with ``bottom`` the
+    first object (or one interchangeable with it) rests on the table under all the others,
+    with ``top`` the last stands above them all.
+
+    What "a tower of four blocks with the black one at the bottom" asks: the black cube's
+    place is said, the other three's is not (a goal may not demand what the words do not;
+    the issue "the front end ... exactly what was said").  ``objects`` lists one order that
+    satisfies it (the goal configuration's), used to plan; only the ends are judged.
+    """
+
+    bottom: bool = False
+    top: bool = False
+    name: ClassVar[str] = "anchored_stack"
+    ordered: ClassVar[bool] = False
+
+    def _evaluate(self, state):
+        whole = super()._evaluate(state)
+        actual = sorted((state[n] for n in self.objects), key=lambda o: o.pos[2])
+        children = list(whole.children)
+        for flag, role, index in ((self.bottom, "bottom", 0), (self.top, "top", -1)):
+            if flag:
+                want = state[self.objects[index]]
+                ok = _signature(actual[index]) == _signature(want)
+                children.append(PredicateResult(
+                    f"stack_{role}", {"expected": want.name}, ok, {role: actual[index].name}, {},
+                    f"{actual[index].name} is at the {role}" + ("" if ok else f", expected {want.name}")))
+        ok = all(c.satisfied for c in children)
+        return self._result(ok, f"{self.describe()} {'holds' if ok else 'fails'}", children=children)
+
+    def constraints(self):
+        out = super().constraints()
+        if self.bottom:
+            out.append(("order", {"relation": "bottom", "pairs": ((self.objects[0], "table"),)}))
+        if self.top:
+            out.append(("order", {"relation": "top", "pairs": ((self.objects[-1], "top"),)}))
+        return out
+
+    def relax(self, kind, goal=None):
+        return UnorderedStack(objects=self.objects) if kind == "order" else None
+
+    def describe(self):
+        ends = [f"{self.objects[0]} at the bottom"] * self.bottom + [f"{self.objects[-1]} on top"] * self.top
+        return "a stack of " + ", ".join(self.objects) + " with " + " and ".join(ends) + ", the rest in any order"
+
+
+@dataclass(frozen=True, repr=False)
 class InLine(Predicate):
     """``objects`` lie in one straight line on the table.
 

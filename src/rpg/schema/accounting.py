@@ -74,6 +74,16 @@ BARE_PLACES = {"front": "front", "back": "back", "rear": "back", "left": "left",
 """Side words -> regions (:data:`rpg.domain.constants.REGION_NAMES`)."""
 
 
+ROLE_BEFORE = re.compile(r"\bwith\s+(?:the\s+)?[a-z0-9]+(?:\s+(?:block|cube|one|digit|letter))?\s*$")
+"""Text before "in the middle" that makes it a cube's role in a structure ("with blue in the
+middle"), not a place on the table."""
+
+SIDE_RELATIONS = {"left": ("left_of", "right_of"), "right": ("left_of", "right_of"),
+                  "front": ("in_front_of", "behind"), "back": ("in_front_of", "behind")}
+"""A side named alone can be one end of a relation between cubes ("the red cube on the left and
+the blue one on the right"): the goal predicates that consume it then."""
+
+
 class UnaccountedMention(BadInput):
     """A mention of the instruction has no place in the task that was read."""
 
@@ -108,9 +118,11 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
         out.append(Mention(m.group(0), "patch", color=canon(m.group("c"))))
     for m in re.finditer(r"@region_([a-z_]+)", text):
         out.append(Mention(m.group(0), "place", region=m.group(1)))
-    for m in BARE_PLACE_RE.finditer(text):  # "at the front", "in the middle": a place, unless something faces it
-        if not re.search(r"\bfac\w*\s+(?:\w+\s+){0,2}$", text[:m.start()]):
-            out.append(Mention(m.group(0), "place", region=BARE_PLACES[m.group("side")]))
+    for m in BARE_PLACE_RE.finditer(text):  # "at the front", "in the middle": a place, unless a face or a role
+        before = text[:m.start()]
+        if not (re.search(r"\bfac\w*\s+(?:\w+\s+){0,2}$", before)
+                or ROLE_BEFORE.search(before)):
+            out.append(Mention(m.group(0), "bare place", region=BARE_PLACES[m.group("side")]))
     towers = len(re.findall(r"\b(?:a|an|1|another)\s+(?:[a-z0-9\-]+\s+){0,2}?(?:tower|stack|column|pillar)\b", text))
     towers += len(re.findall(r"\b(?:tower|stack|column|pillar)\s+of\s+\w+\s+and\s+(?:1|another)\b(?!\s+(?:[a-z]+\s+)?"
                              r"(?:block|cube|tower|stack|column|pillar))", text))  # "one tower of red and one of green"
@@ -199,6 +211,12 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
             if have < m.count:
                 raise UnaccountedMention(f"it names {m.count} towers but the task read has {have}")
             record.append({"mention": m.words, "kind": "towers", "consumed_by": f"{have} stacks"})
+        elif m.kind == "bare place":  # a side of the table, or the sides of a relation ("red on the left, blue on the right")
+            sides = {r for r in regions if m.region in r.split("_")} | {
+                name for p in goal for name in SIDE_RELATIONS.get(m.region, ()) if p.name == name}
+            if not sides:
+                raise UnaccountedMention(f"the place '{m.region}' has no part in the task read")
+            record.append({"mention": m.words, "kind": "place", "consumed_by": ", ".join(sorted(sides))})
         elif m.region == "corners":
             corners = sorted(r for r in regions if r.count("_") == 1)
             if len(corners) < m.count:

@@ -56,6 +56,12 @@ SELF_ORDERING = re.compile(r"\b(?:rainbow|gradient|alternat\w*|alphabet\w*|sort\
                            r"increasing|decreasing|reverse\w*|spell\w*|words?|equation)\b")
 """Words that fix an order of their own, without naming each cube's place."""
 
+ROLE_CUES = {
+    "bottom": re.compile(r"\b(?:bottom|base|lowest|bottommost|foundation|start\w*|begin\w*)\b"),
+    "top": re.compile(r"\b(?:top|topmost|highest|uppermost|end\w*|finish\w*)\b"),
+}
+"""Words that put a cube at an end of a stack (:class:`~rpg.domain.predicates.AnchoredStack`)."""
+
 TEMPORAL_CUE = re.compile(r"\b(?:then|first|after|afterwards|before|finally|next|once|later|second|last)\b")
 
 TABLE_CUE = re.compile(r"\b(?:table|unstack\w*|off|remov\w*|down|ground|floor)\b")
@@ -207,6 +213,11 @@ def _order(leaf, fields, scene) -> list[Constraint]:
         line = "first " + ", then ".join(events)
         return [Constraint("order", ("order", "temporal", tuple(events)), f"the order in time: {line}",
                            line[0].upper() + line[1:] + ".", leaf, tuple(leaf.object_names()))]
+    if rel in ROLE_CUES:  # an end of a stack
+        dx = scene.d(fields["pairs"][0][0])
+        where = "at the bottom" if rel == "bottom" else "on top"
+        return [Constraint("order", ("order", rel, (dx,)), f"{dx} {where} of the stack",
+                           f"Put {_phrase(dx)} {where} of the stack.", leaf, (fields["pairs"][0][0],))]
     out = []
     for x, y in fields["pairs"]:
         dx, dy = scene.d(x), scene.d(y)
@@ -317,6 +328,21 @@ class _Reading:
         m = re.search(pattern, self.text) if pattern else None
         return m.group(0) if m else None
 
+    def member(self, name: str, other: str) -> str | None:
+        """The mention of a structure of G that ``name`` is one of and ``other`` is not ("a
+        tower of three blocks to the left of the green block": each cube of the tower is left
+        of it), or None."""
+        for leaf in _leaves(self.scene.goal):
+            if name in leaf.object_names() and other not in leaf.object_names() \
+                    and any(k == "structure" for k, _ in leaf.constraints()) \
+                    and len(leaf.object_names()) > 1 and not leaf.object_fields:
+                hit = next((x["mention"] for x in self.record if x["kind"] == "structure"
+                            and str(x["consumed_by"]).split(", ")[0] in
+                            {sub.name for sub in type(leaf).__mro__ if "name" in vars(sub)}), None)
+                if hit:
+                    return hit
+        return None
+
 
 def _cite_structure(c: Constraint, r: _Reading) -> list[str]:
     pred = c.key[1]
@@ -352,13 +378,18 @@ def _cite_identity(c: Constraint, r: _Reading) -> list[str]:
 
 def _cite_order(c: Constraint, r: _Reading) -> list[str]:
     rel = c.key[1]
+    if rel in ROLE_CUES:
+        who, word = r.determined(c.key[2][0]), r.cue(ROLE_CUES[rel])
+        return [who, word] if who and word else []
     if rel == "temporal":
         word = r.cue(TEMPORAL_CUE)
         return [word] if word else []
     own = r.cue(SELF_ORDERING)
     if own:
         return [own]
-    who = [r.determined(d) for d in c.key[2]]
+    pair = tuple(c.names)
+    who = [r.determined(d) or (r.member(n, pair[1 - i]) if len(pair) == 2 else None)
+           for i, (d, n) in enumerate(zip(c.key[2], pair, strict=True))]
     cls = P.PREDICATES.get(rel)
     word = (r.cue(cls.cue) if cls is not None and cls.cue else None) or r.cue(ORDER_CUE)
     if all(who) and word:
@@ -448,7 +479,26 @@ def _tied(leaf: P.Predicate, goal: P.Predicate) -> bool:
                for q in _leaves(goal) if not q.children())
 
 
-def enforce(schema: TaskSchema, refuse: bool = True) -> TaskSchema:
+def _anchor(leaf: P.Predicate, reading: _Reading) -> tuple[P.Predicate, P.Predicate] | None:
+    """(leaf, its anchored form) for an ordered stack whose named cubes all stand at its
+    ends: each keeps its end, the order of the others is dropped; None otherwise."""
+    if type(leaf) is not P.Stack or len(leaf.objects) < 3:
+        return None
+    objs = leaf.objects
+    named = [i for i, n in enumerate(objs) if n in reading.scene.cubes and reading.named(reading.scene.d(n))]
+    if not named or any(0 < i < len(objs) - 1 for i in named):
+        return None
+    return leaf, P.AnchoredStack(objects=objs, bottom=0 in named, top=len(objs) - 1 in named)
+
+
+REFUSED_WHEN_UNCITED = frozenset({"order", "place", "count", "structure"})
+"""Constraints of G that make the compile refuse when nobody stated them and they cannot be
+weakened.  An identity ("cube colour: red") is recorded uncited instead: the scene's cubes are
+the task's assets, so a goal over all of them asks nothing a policy could do otherwise."""
+
+
+def enforce(schema: TaskSchema, refuse: bool = True,
+            refuse_kinds: frozenset[str] = REFUSED_WHEN_UNCITED) -> TaskSchema:
     """``schema`` with every constraint nobody stated dropped (the predicate's weaker form).
 
     A leaf is only weakened when it names no cube the instruction names (weakening it must
@@ -456,8 +506,9 @@ def enforce(schema: TaskSchema, refuse: bool = True) -> TaskSchema:
     order, whose pairs this module cannot cite one by one).
 
     Args:
-        refuse: raise on a constraint nobody stated that cannot be weakened; ``False``
-            leaves it in G (``task.yaml``'s ``citations`` then shows it citing nothing).
+        refuse: raise on a constraint of ``refuse_kinds`` nobody stated that cannot be
+            weakened; the others (and all, with ``False``) stay in G (``task.yaml``'s
+            ``citations`` then shows them citing nothing).
 
     Raises:
         UncitedConstraint: a constraint nobody stated whose predicate has no weaker form;
@@ -474,15 +525,20 @@ def enforce(schema: TaskSchema, refuse: bool = True) -> TaskSchema:
         reading = _reading(current, current.instruction)
         for c in missing:
             leaves = dict.fromkeys(x.leaf for x in goal_constraints(current) if x.key == c.key)
+            anchored = next((a for leaf in leaves if c.kind == "order" and (a := _anchor(leaf, reading)) is not None), None)
+            if anchored is not None:  # the named cubes keep the ends they were given, the rest are free
+                goal, changed = _replace_leaf(goal, *anchored), True
+                break
             weaker = next(((leaf, w) for leaf in leaves
-                           if not any(reading.named(reading.scene.d(n)) for n in leaf.object_names()
-                                      if n in reading.scene.cubes)
+                           if (isinstance(leaf, P.AnchoredStack)
+                               or not any(reading.named(reading.scene.d(n)) for n in leaf.object_names()
+                                          if n in reading.scene.cubes))
                            and not (c.kind == "order" and _tied(leaf, goal))
                            and (w := leaf.relax(c.kind, goal)) is not None), None)
             if weaker is not None:
                 goal, changed = _replace_leaf(goal, *weaker), True
                 break
-            if refuse:
+            if refuse and c.kind in refuse_kinds:
                 raise UncitedConstraint(f"the goal it reads demands {c.line}, which the instruction does not say")
         else:
             break
