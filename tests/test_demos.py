@@ -1,5 +1,6 @@
 """rpg demos: a LeRobot v2.1 dataset of oracle episodes (schema, videos, provenance), replay,
-resuming after kill -9, and the same dataset for any number of jobs."""
+resuming after kill -9, and the same dataset for any number of jobs; robomimic's HDF5.
+LeRobot v3.0 (the default format) and the frame layout: tests/test_datasets.py."""
 
 from __future__ import annotations
 
@@ -32,7 +33,8 @@ def _lines(path: Path) -> list[dict]:
 
 def test_dataset_matches_its_metadata_and_replays(tmp_path):
     out = tmp_path / "ds"
-    r = _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", out, "-n", "2", "--image-size", "64")
+    r = _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", out, "-n", "2", "--image-size", "64",
+             "--format", "lerobot-v2.1")
     assert r.returncode == 0, r.stderr
     info = json.loads((out / "meta" / "info.json").read_text())
     assert info["codebase_version"] == "v2.1" and info["total_episodes"] == 2 and info["fps"] == 20.0
@@ -68,7 +70,8 @@ def test_dataset_matches_its_metadata_and_replays(tmp_path):
 
 def test_replay_detects_a_changed_action(tmp_path):
     out = tmp_path / "ds"
-    assert _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", out, "-n", "1", "--cameras", "").returncode == 0
+    assert _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", out, "-n", "1", "--cameras", "",
+                "--format", "lerobot-v2.1").returncode == 0
     path = out / "data" / "chunk-000" / "episode_000000.parquet"
     table = pq.read_table(path)
     actions = np.array(table.column("action").to_pylist(), np.float32)
@@ -99,11 +102,13 @@ def _kill_after_first_episode(args: list[str], out: Path) -> list[dict]:
 def test_a_run_killed_mid_way_resumes_keeping_finished_episodes(tmp_path):
     out = tmp_path / "ds"
     log = out / "meta" / "episodes.jsonl"
-    kept = len(_kill_after_first_episode(["demos", STACK, "--embodiment", "floating_gripper", "--out", str(out), "-n", "4", "--image-size", "32"], out))
+    args = ["demos", STACK, "--embodiment", "floating_gripper", "--out", str(out), "-n", "4", "--image-size", "32",
+            "--format", "lerobot-v2.1"]
+    kept = len(_kill_after_first_episode(args, out))
     assert 1 <= kept < 4
     torn = out / "data" / "chunk-000" / "episode_000009.parquet"  # what a kill during writing leaves
     torn.write_bytes(b"PAR1 torn")
-    r = _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", out, "-n", "4", "--image-size", "32")
+    r = _rpg(*args)
     assert r.returncode == 0, r.stderr
     episodes = _lines(log)
     assert [e["episode_index"] for e in episodes] == [0, 1, 2, 3]
@@ -114,26 +119,37 @@ def test_a_run_killed_mid_way_resumes_keeping_finished_episodes(tmp_path):
     assert _rpg("demos", "--replay", out).returncode == 0
 
 
-@pytest.mark.parametrize("fmt", ["lerobot", "hdf5"])
+def _committed(out: Path) -> list[dict]:
+    """The committed episode records of a dataset of any format."""
+    if (out / "meta" / "episodes").is_dir():  # LeRobot v3.0
+        return [r for f in sorted((out / "meta" / "episodes").rglob("*.parquet")) for r in pq.read_table(f).to_pylist()]
+    return _lines(out / "meta" / "episodes.jsonl")
+
+
+@pytest.mark.parametrize("fmt", ["lerobot", "lerobot-v2.1", "hdf5"])
 def test_a_kill_between_the_commit_and_the_attempt_line_does_not_record_a_seed_twice(tmp_path, fmt):
     out = tmp_path / "ds"
     args = ["demos", STACK, "--embodiment", "floating_gripper", "--out", out, "--cameras", "", "--format", fmt]
     assert _rpg(*args, "-n", "2").returncode == 0
     attempts = out / "meta" / "rpg_attempts.jsonl"
     lines = attempts.read_text().splitlines(keepends=True)
-    attempts.write_text("".join(lines[:-1]))  # what a kill right after the last commit line leaves
+    attempts.write_text("".join(lines[:-1]))  # what a kill right after the last commit leaves
     r = _rpg(*args, "-n", "3")
     assert r.returncode == 0, r.stderr
-    assert sorted(e["seed"] for e in _lines(out / "meta" / "episodes.jsonl")) == [0, 1, 2]
+    assert sorted(e["seed"] for e in _committed(out)) == [0, 1, 2]
 
 
-def test_two_jobs_write_the_same_dataset_as_one(tmp_path):
+@pytest.mark.parametrize("fmt", ["lerobot", "lerobot-v2.1"])
+def test_two_jobs_write_the_same_dataset_as_one(tmp_path, fmt):
     for jobs in (1, 2):
-        r = _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", tmp_path / f"j{jobs}", "-n", "3", "--cameras", "", "--jobs", jobs)
+        r = _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", tmp_path / f"j{jobs}", "-n", "3",
+                 "--cameras", "", "--jobs", jobs, "--format", fmt)
         assert r.returncode == 0, r.stderr
     one, two = (tmp_path / "j1", tmp_path / "j2")
-    assert (one / "meta" / "episodes.jsonl").read_text() == (two / "meta" / "episodes.jsonl").read_text()
-    for f in sorted((one / "data").rglob("*.parquet")):
+    assert _committed(one) == _committed(two) and len(_committed(one)) == 3
+    files = sorted((one / "data").rglob("*.parquet"))
+    assert files
+    for f in files:
         assert pq.read_table(f).equals(pq.read_table(two / f.relative_to(one)))
 
 
@@ -177,7 +193,8 @@ def test_hdf5_dataset_has_robomimic_layout_and_replays(tmp_path):
     assert ds["env_args"]["type"] == 2 and ds["env_args"]["env_name"] == "rpg/BlockTask-v0"
     assert ds["env_args"]["env_kwargs"]["embodiment"] == "floating_gripper"
     assert list(ds["demos"]) == ["demo_0", "demo_1"] and ds["total"] == sum(d["n"] for d in ds["demos"].values())
-    assert ds["masks"] == {"stack_two_blocks_on_top_each_other": ["demo_0", "demo_1"]}
+    assert ds["masks"] == {"stack_two_blocks_on_top_each_other": ["demo_0", "demo_1"], "train": ["demo_0", "demo_1"],
+                           "valid": [], "failed": []}
     for d in ds["demos"].values():
         n = d["n"]
         assert d["actions"].shape == (n, 7) and d["actions"].dtype == np.float32 and np.abs(d["actions"]).max() <= 1
@@ -185,7 +202,7 @@ def test_hdf5_dataset_has_robomimic_layout_and_replays(tmp_path):
         assert d["states"].shape[0] == n
         assert sorted(d["obs"]) == sorted(d["next_obs"]) == sorted(
             ["agentview_image", "robot0_eye_in_hand_image", "robot0_eef_pos", "robot0_eef_quat",
-             "robot0_gripper_qpos", "robot0_joint_pos", "object"])
+             "robot0_gripper_qpos", "robot0_hand_pos", "robot0_hand_quat", "object"])  # a free joint: no joint_pos
         assert d["obs"]["agentview_image"].shape == (n, 32, 32, 3) and d["obs"]["agentview_image"].dtype == np.uint8
         for k, v in d["obs"].items():  # next_obs is obs one step later
             assert len(v) == len(d["next_obs"][k]) == n

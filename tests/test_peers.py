@@ -177,7 +177,7 @@ def _one_line_error(r, code: int = 2) -> str:
     return r.stderr
 
 
-@pytest.mark.parametrize("fmt", ["lerobot", "hdf5"])
+@pytest.mark.parametrize("fmt", ["lerobot-v2.1", "hdf5"])  # LeRobot v3.0: tests/test_datasets.py
 def test_replay_finds_tasks_by_hash_in_the_library_and_never_loads_the_recorded_path(tmp_path, fmt):
     import h5py
 
@@ -253,7 +253,8 @@ def test_a_lerobot_dataset_out_of_bounds_is_refused(tmp_path):
     from rpg.demos.lerobot import read_episode_actions, read_episodes
 
     out = tmp_path / "ds"
-    assert _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", out, "-n", "1", "--cameras", "").returncode == 0
+    assert _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", out, "-n", "1", "--cameras", "",
+                "--format", "lerobot-v2.1").returncode == 0
     data = out / "data" / "chunk-000" / "episode_000000.parquet"
     good = read_episode_actions(out, 0)
     assert good.shape[1] == 7 and good.dtype == np.float32

@@ -64,7 +64,7 @@ def load_demos(roots: list[Path], horizon: int) -> dict:
                 text = P.embed_instruction(str(g.attrs["instruction"]))
                 pos = g["obs/robot0_eef_pos"][()]
                 quat = _xyzw_to_wxyz(g["obs/robot0_eef_quat"][()])
-                fingers = g["obs/robot0_gripper_qpos"][()]
+                fingers = np.abs(g["obs/robot0_gripper_qpos"][()])  # openings (the file has robosuite's signs: +, -)
                 obj = g["obs/object"][()].reshape(len(pos), len(names), 7)
                 obj = np.concatenate([obj[..., :3], _xyzw_to_wxyz(obj[..., 3:])], axis=-1)
                 actions = g["actions"][()].astype(np.float32)

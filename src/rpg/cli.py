@@ -733,17 +733,26 @@ def demos_cmd(
     episodes: Annotated[int, typer.Option("--episodes", "-n", min=1, help="Successful episodes per task.")] = 10,
     embodiment: Annotated[str, typer.Option("--embodiment", help="panda or floating_gripper (rpg eval's default "
                                                                  "is the Panda too).")] = "panda",
-    fmt: Annotated[str, typer.Option("--format", help="lerobot (LeRobot v2.1: parquet + MP4) or hdf5 (robomimic).")] = "lerobot",
+    fmt: Annotated[str, typer.Option("--format", help="lerobot (LeRobot v3.0: parquet + MP4, episodes concatenated), "
+                                                      "lerobot-v2.1 (a file per episode) or hdf5 (robomimic).")] = "lerobot",
     jobs: Annotated[int, typer.Option("--jobs", "-j", min=1, help="Episodes run in parallel processes.")] = 1,
     cameras: Annotated[str, typer.Option("--cameras", help="Comma-separated cameras recorded as videos ('' for none).")] = "agentview,wrist",
     image_size: Annotated[int, typer.Option("--image-size", min=16, max=2048, help="Square video size, pixels.")] = 256,
     instruction: Annotated[str, typer.Option("--instruction", help="original (as written), canonical (G stated "
                                                                   "exactly) or paraphrase:K.")] = "original",
+    gop: Annotated[int, typer.Option("--gop", min=1, help="Most frames between keyframes of the MP4s (LeRobot's "
+                                                          "default 2: reading frame t decodes at most 2 frames).")] = 2,
+    columns: Annotated[str, typer.Option("--columns", help="Optional LeRobot columns, comma-separated ('' for none): "
+                                                           "joint_pos, object_poses, next (next.reward, "
+                                                           "next.success, next.done).")] = "joint_pos,object_poses,next",
+    keep_failed: Annotated[bool, typer.Option("--keep-failed", help="Keep failed episodes too, marked success "
+                                                                    "false (they do not count toward -n).")] = False,
     replay: Annotated[Path | None, typer.Option("--replay", help="Replay a dataset and check every episode.")] = None,
     library: Annotated[Path, typer.Option("--library", help="With --replay: the library whose tasks are found by "
                                                             "content hash (a directory or its manifest).")] = Path("library"),
 ) -> None:
-    """Record oracle demonstrations (successful episodes only) as a dataset, or replay one."""
+    """Record oracle demonstrations (successful episodes; failed ones too with --keep-failed) as a
+    dataset, or replay one."""
     from rpg.demos import collect_demos, replay_dataset
 
     if replay is not None:
@@ -764,12 +773,14 @@ def demos_cmd(
 
         def progress(ep, index):
             bar.advance(tick)
-            mark = f"kept as {index}" if index is not None else f"failed ({ep.failure or 'goal not reached'})"
+            mark = f"failed ({ep.failure or 'goal not reached'})" if not ep.success else ""
+            mark = f"kept as {index}{' ' + mark if mark else ''}" if index is not None else mark
             err.print(f"{esc(ep.task_name)} seed {ep.seed}: {ep.length} steps, {mark}", highlight=False)
 
         summary = collect_demos(target, out_dir, episodes=episodes, embodiment=embodiment, fmt=fmt, jobs=jobs,
                                 cameras=cams, image_size=(image_size, image_size), instruction=instruction,
-                                progress=progress)
+                                progress=progress, gop=gop, columns=tuple(c for c in columns.split(",") if c),
+                                keep_failed=keep_failed)
     short = {t: v for t, v in summary["per_task"].items() if v["success"] < episodes}
     out.print(f"{out_dir}: {summary['episodes']} episodes ({summary['attempts']} run now)", highlight=False)
     for t, v in short.items():

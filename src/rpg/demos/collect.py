@@ -30,16 +30,16 @@ from pathlib import Path
 
 import numpy as np
 
-from rpg.demos.lerobot import LeRobotWriter
+from rpg.demos.layout import COLUMNS, Layout, check_columns
 from rpg.demos.record import Episode, close_cached_env, record_episode
 from rpg.errors import BadInput, PeerError
 
 MAX_SEED_FACTOR = 3
 """At most this many times ``episodes`` seeds are tried per task."""
 
-FORMATS = ("lerobot", "hdf5")
-"""Dataset formats written: LeRobot v2.1 (:mod:`rpg.demos.lerobot`) and robomimic's HDF5
-(:mod:`rpg.demos.robomimic`)."""
+FORMATS = ("lerobot", "lerobot-v2.1", "hdf5")
+"""Dataset formats written: LeRobot v3.0 (:mod:`rpg.demos.lerobot3`, the default), LeRobot
+v2.1 (:mod:`rpg.demos.lerobot`) and robomimic's HDF5 (:mod:`rpg.demos.robomimic`)."""
 
 REPLAY_POSE_TOL = 1e-6
 """Largest difference (m, or quaternion units) between a replay's final poses and the recorded ones."""
@@ -89,12 +89,13 @@ class Job:
     instruction: str
     staging: str
     frames: str = "mp4"
+    gop: int | None = None
 
 
 def _run(job: Job) -> Episode:
     return record_episode(job.task, job.seed, job.embodiment, job.cameras, job.image_size, job.instruction,
                           video_dir=Path(job.staging) / f"{Path(job.task).name}-{job.seed}", frames=job.frames,
-                          reuse_env=True)
+                          reuse_env=True, gop=job.gop)
 
 
 def _task_hash(task: str) -> str:
@@ -104,31 +105,92 @@ def _task_hash(task: str) -> str:
     return rehash(resolve_target(task))[3]
 
 
+def object_slots(tasks: list[str]) -> tuple[str, ...]:
+    """Names of the ``observation.object_poses`` slots for ``tasks``: their objects' names
+    (sorted) when every task has the same objects, else ``object_0`` ... for the largest
+    number of objects a task has."""
+    from rpg.artifact import load_artifact
+    from rpg.env.loading import resolve_target
+
+    names = {tuple(sorted(a.name for a in load_artifact(resolve_target(t))[0].assets)) for t in tasks}
+    if len(names) == 1:
+        return next(iter(names))
+    return tuple(f"object_{k}" for k in range(max(len(n) for n in names)))
+
+
+def library_path(task: str, target: str | Path) -> str:
+    """Where ``task`` lies in its library, as a relative path: relative to the manifest's
+    directory when ``target`` is a manifest, else the task directory's name (``FAMILY/vN`` for
+    a family's version).  A hint for people; rpg finds tasks by content hash."""
+    from rpg.env.loading import resolve_target
+
+    directory = resolve_target(task).resolve()
+    base = Path(str(target))
+    if base.is_file():
+        try:
+            return directory.relative_to(base.parent.resolve()).as_posix()
+        except ValueError:
+            pass
+    parts = directory.parts
+    return "/".join(parts[-2:]) if len(parts) > 1 and parts[-1].startswith("v") and parts[-1][1:].isdigit() else parts[-1]
+
+
+def make_writer(fmt: str, out: str | Path, layout: Layout, keep_failed: bool = False, task_paths: dict | None = None,
+                **options):
+    """The dataset writer of a format (:data:`FORMATS`); ``options`` go to the LeRobot v3.0 writer
+    (``data_files_size_in_mb``, ``video_files_size_in_mb``)."""
+    if fmt == "hdf5":
+        from rpg.demos.robomimic import RobomimicWriter
+
+        return RobomimicWriter(out, layout.cameras, layout.image_size, layout.robot_type, keep_failed=keep_failed,
+                               task_paths=task_paths)
+    if fmt == "lerobot-v2.1":
+        from rpg.demos.lerobot import LeRobotWriter
+
+        return LeRobotWriter(out, layout, keep_failed=keep_failed)
+    from rpg.demos.lerobot3 import LeRobotV3Writer
+
+    return LeRobotV3Writer(out, layout, keep_failed=keep_failed, **options)
+
+
 def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embodiment: str = "panda",
                   fmt: str = "lerobot", jobs: int = 1, cameras: tuple[str, ...] = ("agentview", "wrist"),
                   image_size: tuple[int, int] = (256, 256), instruction: str = "original",
-                  progress: Callable[[Episode, int | None], None] | None = None) -> dict:
+                  progress: Callable[[Episode, int | None], None] | None = None, gop: int | None = None,
+                  columns: tuple[str, ...] = COLUMNS, keep_failed: bool = False, **writer_options) -> dict:
     """Record ``episodes`` successful oracle demonstrations per task of ``target`` into ``out``.
+
+    Args:
+        gop: most frames between keyframes of the MP4s (default 2, LeRobot's).
+        columns: the optional LeRobot column groups (:data:`rpg.demos.layout.COLUMNS`).
+        keep_failed: commit failed episodes too (marked ``success`` false; they do not count
+            toward ``episodes``).
+        writer_options: for the LeRobot v3.0 writer, ``data_files_size_in_mb`` and
+            ``video_files_size_in_mb``.
 
     Returns:
         A summary: ``{"episodes": committed in total, "attempts": run now, "per_task":
         {task: {"success": n, "attempts": m}}}``.
 
     Raises:
-        BadInput: unknown target or format, ``episodes`` or ``jobs`` < 1, or ``out`` holds a
-            dataset of another kind.
+        BadInput: unknown target, format or column group, ``episodes`` or ``jobs`` < 1,
+            ``gop`` < 1, or ``out`` holds a dataset of another kind.
     """
+    from rpg.demos.mp4 import DEFAULT_GOP
+
     if fmt not in FORMATS:
         raise BadInput(f"format {fmt!r} is not supported; rpg demos writes {', '.join(FORMATS)}")
     if episodes < 1 or jobs < 1:
         raise BadInput("--episodes and --jobs must be at least 1")
+    gop = DEFAULT_GOP if gop is None else int(gop)
+    if gop < 1:
+        raise BadInput("--gop must be at least 1")
+    columns = check_columns(columns)
     tasks = expand_targets(target)
-    if fmt == "hdf5":
-        from rpg.demos.robomimic import RobomimicWriter
-
-        writer = RobomimicWriter(out, cameras, image_size, embodiment)
-    else:
-        writer = LeRobotWriter(out, cameras, image_size, embodiment)
+    slots = object_slots(tasks) if "object_poses" in columns and fmt != "hdf5" else ()
+    layout = Layout(embodiment, tuple(cameras), tuple(image_size), columns, slots, gop)
+    paths = {_task_hash(t): library_path(t, target) for t in tasks}
+    writer = make_writer(fmt, out, layout, keep_failed=keep_failed, task_paths=paths, **writer_options)
     writer.open()
     staging = Path(out) / ".staging"
     shutil.rmtree(staging, ignore_errors=True)
@@ -144,21 +206,21 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
                                       initializer=die_with_parent)  # no orphans after a kill
     try:
         for task in tasks:
-            made = sum(1 for e in writer.episodes if e["task_hash"] == hashes[task])
+            made = sum(1 for e in writer.episodes if e["task_hash"] == hashes[task] and e.get("success", True))
             # a kill between an episode's commit line and its attempt line leaves it only in episodes
             tried = [a["seed"] for a in (*writer.attempts, *writer.episodes) if a["task_hash"] == hashes[task]]
             seed = max(tried, default=-1) + 1
             last = MAX_SEED_FACTOR * episodes
             while made < episodes and seed < last:
                 batch = [Job(task, s, embodiment, tuple(cameras), tuple(image_size), instruction, str(staging),
-                             "hdf5" if fmt == "hdf5" else "mp4")
+                             "hdf5" if fmt == "hdf5" else "mp4", gop)
                          for s in range(seed, min(seed + episodes - made, last))]
                 seed += len(batch)
                 results = pool.map(_run, batch) if pool else map(_run, batch)
                 for ep in results:  # committed in seed order: the same dataset for any --jobs
                     ran += 1
                     index = writer.add(ep)
-                    made += index is not None
+                    made += index is not None and ep.success
                     if progress:
                         progress(ep, index)
             per_task[task] = {"success": made, "attempts": sum(1 for a in writer.attempts
@@ -178,10 +240,13 @@ class ReplayResult:
     episode_index: int
     success: bool
     max_pose_error: float
+    recorded_success: bool = True
 
     @property
     def ok(self) -> bool:
-        return self.success and self.max_pose_error <= REPLAY_POSE_TOL
+        """The replay ends as recorded: the same success (true, or false for a failed
+        episode kept with ``--keep-failed``) and the same final poses."""
+        return self.success == self.recorded_success and self.max_pose_error <= REPLAY_POSE_TOL
 
 
 def library_tasks(library: str | Path) -> dict[str, Path]:
@@ -226,10 +291,10 @@ def check_provenance(doc: object, where: str) -> dict:
     (64 hex digits), ``seed`` (an integer in [0, 2**32)), ``embodiment``, ``instruction`` and
     ``task_name`` (strings of at most :data:`MAX_TEXT` characters; ``task_name`` optional),
     ``final_poses`` (at most :data:`MAX_POSES` names, each 7 finite numbers: position, m, and
-    quaternion).  The recorded ``task`` path is ignored.
+    quaternion), ``success`` (optional, a boolean).  The recorded ``task`` path is ignored.
 
     Returns:
-        The checked fields (``task_name`` defaults to ``"?"``).
+        The checked fields (``task_name`` defaults to ``"?"``, ``success`` to true).
 
     Raises:
         PeerError: a field missing, of another type, or out of bounds (``where`` names the episode).
@@ -250,7 +315,10 @@ def check_provenance(doc: object, where: str) -> dict:
             or not all(isinstance(k, str) and len(k) <= MAX_TEXT and isinstance(v, list) and len(v) == 7
                        and all(type(x) in (int, float) and math.isfinite(x) for x in v) for k, v in poses.items())):
         raise PeerError(f"{where}: final_poses is not a map of at most {MAX_POSES} names to 7 finite numbers")
-    return {"task_hash": h, "seed": seed, "embodiment": doc["embodiment"], "instruction": doc["instruction"],
+    success = doc.get("success", True)
+    if type(success) not in (bool, np.bool_):
+        raise PeerError(f"{where}: success is not a boolean")
+    return {"success": bool(success), "task_hash": h, "seed": seed, "embodiment": doc["embodiment"], "instruction": doc["instruction"],
             "task_name": doc.get("task_name", "?"), "final_poses": poses}
 
 
@@ -304,7 +372,7 @@ def replay_dataset(root: str | Path, progress: Callable[[ReplayResult], None] | 
             episode's content hash, or a task changed since recording.
         PeerError: the dataset declares something out of bounds or malformed.
     """
-    from rpg.demos.lerobot import read_episode_actions, read_episodes
+    from rpg.demos import lerobot, lerobot3
     from rpg.demos.robomimic import dataset_file, read_demo_actions, read_demos
 
     root = Path(root)
@@ -315,12 +383,19 @@ def replay_dataset(root: str | Path, progress: Callable[[ReplayResult], None] | 
 
         def actions_of(number: int) -> np.ndarray:
             return read_demo_actions(h5, number, max_steps=MAX_EPISODE_STEPS)
+    elif lerobot3.is_v3(root):
+        episodes = lerobot3.read_episodes(root, max_episodes=MAX_EPISODES)
+        where = str(root)
+        rows = {e.get("episode_index"): e for e in episodes}
+
+        def actions_of(number: int) -> np.ndarray:
+            return lerobot3.read_episode_actions(root, rows[number], max_steps=MAX_EPISODE_STEPS)
     elif (root / "meta" / "info.json").is_file():
-        episodes = read_episodes(root, max_episodes=MAX_EPISODES)
+        episodes = lerobot.read_episodes(root, max_episodes=MAX_EPISODES)
         where = str(root)
 
         def actions_of(number: int) -> np.ndarray:
-            return read_episode_actions(root, number, max_steps=MAX_EPISODE_STEPS)
+            return lerobot.read_episode_actions(root, number, max_steps=MAX_EPISODE_STEPS)
     else:
         raise BadInput(f"{root} is not a dataset written by rpg demos (no meta/info.json or demo.hdf5)")
     index = library_tasks(library)
@@ -340,7 +415,7 @@ def replay_dataset(root: str | Path, progress: Callable[[ReplayResult], None] | 
     for number, task, prov in plan:
         ok, err = replay_actions(task, prov["task_hash"], prov["seed"], prov["embodiment"], prov["instruction"],
                                  actions_of(number), prov["final_poses"])
-        out.append(ReplayResult(number, ok, err))
+        out.append(ReplayResult(number, ok, err, prov["success"]))
         if progress:
             progress(out[-1])
     return out

@@ -1,15 +1,18 @@
-"""Demonstrations as a LeRobot dataset, format v2.1 (what openpi, GR00T and most VLA
-fine-tuning code load), written with pyarrow and PyAV without the ``lerobot`` package::
+"""Demonstrations as a LeRobot dataset, format v2.1 (``rpg demos --format lerobot-v2.1``;
+what openpi's and GR00T's older loaders read; the default is v3.0, :mod:`rpg.demos.lerobot3`),
+written with pyarrow and PyAV without the ``lerobot`` package::
 
     DIR/data/chunk-000/episode_000000.parquet      one row per step
     DIR/videos/chunk-000/observation.images.<camera>/episode_000000.mp4
     DIR/meta/info.json  meta/episodes.jsonl  meta/tasks.jsonl  meta/episodes_stats.jsonl
 
-Parquet columns: ``observation.state`` (8 float32), ``action`` (7 float32), ``timestamp``
-(float32, s), ``frame_index``, ``episode_index``, ``index`` (global), ``task_index`` (int64).
-Each line of ``episodes.jsonl`` carries LeRobot's ``episode_index``, ``tasks`` and ``length``
-and rpg's provenance: ``task`` (where it was loaded from), ``task_hash`` (content hash),
-``seed``, ``embodiment``, ``instruction``, ``paraphrase`` and ``final_poses``.
+Parquet columns: :mod:`rpg.demos.layout` (``observation.state`` 11, ``action`` 7, the optional
+joint positions, object poses and ``next.*`` columns, ``timestamp``, indices).  Each line of
+``episodes.jsonl`` carries LeRobot's ``episode_index``, ``tasks`` and ``length`` and rpg's
+provenance: ``task`` (where it was loaded from), ``task_hash`` (content hash), ``seed``,
+``embodiment``, ``instruction``, ``paraphrase``, ``final_poses``, ``object_names`` (the
+object slots' names) and ``success`` (false only for a failed episode kept with
+``--keep-failed``).
 
 Crash safety: an episode's files are written first (each atomically), then its line is
 appended to ``meta/episodes.jsonl``; that line is the commit.  :meth:`LeRobotWriter.open`
@@ -34,10 +37,9 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.parquet as pq
 
+from rpg.demos.layout import Layout, video_key
 from rpg.demos.log import discard_failed, log_attempt
-from rpg.demos.record import ACTION_NAMES, STATE_NAMES, Episode
-from rpg.domain import constants as C
-from rpg.env.video import VIDEO_CODEC
+from rpg.demos.record import ACTION_NAMES, Episode
 from rpg.errors import BadInput, PeerError
 from rpg.jsonl import append_jsonl, read_jsonl, rewrite_jsonl
 
@@ -46,48 +48,7 @@ CHUNK_SIZE = 1000
 DATA_PATH = "data/chunk-{episode_chunk:03d}/episode_{episode_index:06d}.parquet"
 VIDEO_PATH = "videos/chunk-{episode_chunk:03d}/{video_key}/episode_{episode_index:06d}.mp4"
 
-
-def video_key(camera: str) -> str:
-    """LeRobot's feature name of a camera's video."""
-    return f"observation.images.{camera}"
-
-
-def parquet_schema() -> pa.Schema:
-    """The schema of every episode's parquet file."""
-    return pa.schema([
-        ("observation.state", pa.list_(pa.float32(), len(STATE_NAMES))),
-        ("action", pa.list_(pa.float32(), len(ACTION_NAMES))),
-        ("timestamp", pa.float32()),
-        ("frame_index", pa.int64()),
-        ("episode_index", pa.int64()),
-        ("index", pa.int64()),
-        ("task_index", pa.int64()),
-    ])
-
-
-def features(cameras: tuple[str, ...], image_size: tuple[int, int], fps: float) -> dict:
-    """``meta/info.json``'s feature table."""
-    h, w = image_size
-    out = {}
-    for cam in cameras:
-        out[video_key(cam)] = {
-            "dtype": "video", "shape": [h, w, 3], "names": ["height", "width", "channel"],
-            "info": {"video.height": h, "video.width": w, "video.codec": "h264", "video.pix_fmt": "yuv420p",
-                     "video.is_depth_map": False, "video.fps": fps, "video.channels": 3, "has_audio": False,
-                     "encoder": VIDEO_CODEC},
-        }
-    out["observation.state"] = {"dtype": "float32", "shape": [len(STATE_NAMES)], "names": STATE_NAMES}
-    out["action"] = {"dtype": "float32", "shape": [len(ACTION_NAMES)], "names": ACTION_NAMES}
-    for name, dtype in (("timestamp", "float32"), ("frame_index", "int64"), ("episode_index", "int64"),
-                        ("index", "int64"), ("task_index", "int64")):
-        out[name] = {"dtype": dtype, "shape": [1], "names": None}
-    return out
-
-
-def _stats(values: np.ndarray) -> dict:
-    v = np.asarray(values, np.float64).reshape(len(values), -1)
-    return {"min": v.min(0).tolist(), "max": v.max(0).tolist(), "mean": v.mean(0).tolist(),
-            "std": v.std(0).tolist(), "count": [len(v)]}
+__all__ = ["CODEBASE_VERSION", "LeRobotWriter", "read_episode_actions", "read_episodes", "video_key"]
 
 
 def _write_json(path: Path, obj) -> None:
@@ -96,22 +57,28 @@ def _write_json(path: Path, obj) -> None:
     os.replace(tmp, path)
 
 
+def provenance(ep: Episode) -> dict:
+    """rpg's record of an episode, as both LeRobot versions store it (``final_poses`` as a map)."""
+    return {"task": ep.task, "task_hash": ep.task_hash, "task_name": ep.task_name, "seed": ep.seed,
+            "embodiment": ep.embodiment, "instruction": ep.instruction, "paraphrase": ep.paraphrase,
+            "final_poses": ep.final_poses, "object_names": list(ep.object_names), "success": bool(ep.success)}
+
+
 class LeRobotWriter:
     """Appends recorded episodes to a LeRobot v2.1 dataset directory (resumable).
 
     Args:
         root: the dataset directory (created).
-        cameras: camera names recorded as videos.
-        image_size: (height, width) of the videos.
-        robot_type: ``info.json``'s ``robot_type`` (the embodiment).
+        layout: what a frame holds (:class:`rpg.demos.layout.Layout`).
+        keep_failed: commit failed episodes too (``success`` false) instead of discarding them.
     """
 
-    def __init__(self, root: str | Path, cameras: tuple[str, ...], image_size: tuple[int, int], robot_type: str):
+    version = CODEBASE_VERSION
+
+    def __init__(self, root: str | Path, layout: Layout, keep_failed: bool = False):
         self.root = Path(root)
-        self.cameras = tuple(cameras)
-        self.image_size = tuple(image_size)
-        self.robot_type = robot_type
-        self.fps = float(C.CONTROL_HZ)
+        self.layout = layout
+        self.keep_failed = keep_failed
         self.episodes: list[dict] = []
         self.tasks: list[str] = []
         self.attempts: list[dict] = []
@@ -122,17 +89,25 @@ class LeRobotWriter:
 
     def open(self) -> set[tuple[str, int, str]]:
         """Read what a previous run committed, remove torn episodes' files, and return the
-        attempts already made as ``(task_hash, seed, instruction)``."""
+        attempts already made as ``(task_hash, seed, instruction)``.
+
+        Raises:
+            BadInput: the directory holds another kind of dataset, another LeRobot version, or
+                one of another embodiment, cameras, image size or columns.
+        """
         if (self.meta / "rpg_robomimic.json").is_file():
             raise BadInput(f"{self.root} holds a robomimic (HDF5) dataset; give a new --out directory for --format lerobot")
         self.meta.mkdir(parents=True, exist_ok=True)
         info = self.meta / "info.json"
         if info.is_file():
             old = json.loads(info.read_text())
-            new = json.loads(json.dumps(features(self.cameras, self.image_size, self.fps)))
-            if old.get("robot_type") != self.robot_type or old.get("features") != new:
-                raise BadInput(f"{self.root} holds a dataset of another embodiment, cameras or image size; "
-                               "give a new --out directory")
+            if old.get("codebase_version") != CODEBASE_VERSION:
+                raise BadInput(f"{self.root} holds a LeRobot {old.get('codebase_version')} dataset; write it with "
+                               "--format lerobot (v3.0) or give a new --out directory")
+            new = json.loads(json.dumps(self.layout.features(CODEBASE_VERSION)))
+            if old.get("robot_type") != self.layout.robot_type or old.get("features") != new:
+                raise BadInput(f"{self.root} holds a dataset of another embodiment, cameras, image size, columns "
+                               "or keyframe interval; give a new --out directory")
         self.episodes = read_jsonl(self.meta / "episodes.jsonl")
         self.tasks = [t["task"] for t in read_jsonl(self.meta / "tasks.jsonl")]
         self.attempts = read_jsonl(self.meta / "rpg_attempts.jsonl")
@@ -155,12 +130,12 @@ class LeRobotWriter:
         return self.root / template.format(episode_chunk=index // CHUNK_SIZE, episode_index=index, **kw)
 
     def add(self, ep: Episode) -> int | None:
-        """Commit a successful episode (its videos are moved in); record any attempt.
+        """Commit an episode (its videos are moved in); record any attempt.
 
         Returns:
-            The episode index, or None for a failed episode (its videos are deleted).
+            The episode index, or None for a failed episode not kept (its videos are deleted).
         """
-        if discard_failed(self.meta, self.attempts, ep):
+        if not self.keep_failed and discard_failed(self.meta, self.attempts, ep):
             return None
         index = len(self.episodes)
         if ep.instruction not in self.tasks:
@@ -168,34 +143,19 @@ class LeRobotWriter:
             rewrite_jsonl(self.meta / "tasks.jsonl", [{"task_index": i, "task": t} for i, t in enumerate(self.tasks)])
         task_index = self.tasks.index(ep.instruction)
         start = sum(e["length"] for e in self.episodes)
-        n = ep.length
-        frame = np.arange(n, dtype=np.int64)
-        table = pa.Table.from_arrays([
-            pa.array(list(ep.states), type=pa.list_(pa.float32(), len(STATE_NAMES))),
-            pa.array(list(ep.actions), type=pa.list_(pa.float32(), len(ACTION_NAMES))),
-            pa.array((frame / self.fps).astype(np.float32)),
-            pa.array(frame), pa.array(np.full(n, index, np.int64)), pa.array(start + frame),
-            pa.array(np.full(n, task_index, np.int64)),
-        ], schema=parquet_schema())
+        table = self.layout.table(ep, index, start, task_index)
         data = self._path(DATA_PATH, index)
         data.parent.mkdir(parents=True, exist_ok=True)
         tmp = data.with_name(f".{data.name}.tmp")
         pq.write_table(table, tmp)
         os.replace(tmp, data)
-        for cam in self.cameras:
+        for cam in self.layout.cameras:
             dst = self._path(VIDEO_PATH, index, video_key=video_key(cam))
             dst.parent.mkdir(parents=True, exist_ok=True)
             shutil.move(ep.videos[cam], dst)
-        stats = {"observation.state": _stats(ep.states), "action": _stats(ep.actions),
-                 "timestamp": _stats(frame / self.fps), "frame_index": _stats(frame),
-                 "episode_index": _stats(np.full(n, index)), "index": _stats(start + frame),
-                 "task_index": _stats(np.full(n, task_index))}
-        stats |= {video_key(c): ep.image_stats[c] for c in self.cameras}
+        stats = self.layout.stats(ep, index, start, task_index)
         append_jsonl(self.meta / "episodes_stats.jsonl", {"episode_index": index, "stats": stats})
-        line = {"episode_index": index, "tasks": [ep.instruction], "length": n, "task": ep.task,
-                "task_hash": ep.task_hash, "task_name": ep.task_name, "seed": ep.seed,
-                "embodiment": ep.embodiment, "instruction": ep.instruction, "paraphrase": ep.paraphrase,
-                "final_poses": ep.final_poses}
+        line = {"episode_index": index, "tasks": [ep.instruction], "length": ep.length, **provenance(ep)}
         append_jsonl(self.meta / "episodes.jsonl", line)  # the commit
         self.episodes.append(line)
         log_attempt(self.meta, self.attempts, ep)
@@ -204,14 +164,15 @@ class LeRobotWriter:
 
     def _write_info(self) -> None:
         n = len(self.episodes)
+        cams = self.layout.cameras
         _write_json(self.meta / "info.json", {
-            "codebase_version": CODEBASE_VERSION, "robot_type": self.robot_type,
+            "codebase_version": CODEBASE_VERSION, "robot_type": self.layout.robot_type,
             "total_episodes": n, "total_frames": sum(e["length"] for e in self.episodes),
-            "total_tasks": len(self.tasks), "total_videos": n * len(self.cameras),
+            "total_tasks": len(self.tasks), "total_videos": n * len(cams),
             "total_chunks": (n + CHUNK_SIZE - 1) // CHUNK_SIZE if n else 0, "chunks_size": CHUNK_SIZE,
-            "fps": self.fps, "splits": {"train": f"0:{n}"}, "data_path": DATA_PATH,
-            "video_path": VIDEO_PATH if self.cameras else None,
-            "features": features(self.cameras, self.image_size, self.fps),
+            "fps": float(self.layout.fps), "splits": {"train": f"0:{n}"}, "data_path": DATA_PATH,
+            "video_path": VIDEO_PATH if cams else None,
+            "features": self.layout.features(CODEBASE_VERSION),
         })
 
 

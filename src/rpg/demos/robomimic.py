@@ -2,23 +2,37 @@
 
     DIR/demo.hdf5
       data/                     attrs: total (steps of all demos), env_args (JSON: env_name,
-                                type 2 = a Gym environment, env_kwargs)
+                                type 2 = a Gym environment, env_kwargs: below)
         demo_<i>/               attrs: num_samples (T), and rpg's provenance: task, task_hash,
                                 task_name, seed, embodiment, instruction, paraphrase (-1: none),
-                                final_poses (JSON)
+                                final_poses (JSON), success (1, or 0 for a failed episode kept
+                                with --keep-failed)
           actions               (T, 7) float32, ee_delta actions in [-1, 1]
           rewards               (T,) float64, the environment's reward after each step
           dones                 (T,) int64, 1 at the last step
           states                (T, S) float64, the MuJoCo state before each step
                                 (``mj_getState`` with :data:`rpg.demos.record.SIM_STATE`)
           obs/<key>, next_obs/<key>   the observation before / after each step (T rows each)
-      mask/<task_name>          robomimic filter keys: the demos of each task (bytes)
+      mask/train, mask/valid    robomimic's filter keys of a 90/10 split by episode: of each
+                                task's successful demos in recording order, every tenth
+                                (the 10th, 20th, ...) is in valid, the others in train
+      mask/failed               failed demos kept with --keep-failed (in neither split)
+      mask/<task_name>          the demos of each task (bytes)
 
-Observation keys: :data:`rpg.demos.record.LOW_DIM_KEYS` (float64) and one uint8 (T, H, W, 3)
-image per camera (:data:`IMAGE_KEYS`: ``agentview_image``, ``robot0_eye_in_hand_image`` for
-the wrist camera), gzip-compressed one frame per chunk.  This is what robomimic's
-``SequenceDataset`` loads (``obs``, ``next_obs``, ``actions``, ``rewards``, ``dones``, the
-``env_args`` attribute and filter keys).
+Observation keys: the embodiment's :data:`rpg.demos.record.LOW_DIM_KEYS` (float64: the Panda's
+``robot0_joint_pos`` holds its seven arm joints, as robosuite's; the floating gripper has no
+arm joints and its free joint's pose is ``robot0_hand_pos`` and ``robot0_hand_quat``;
+``robot0_gripper_qpos`` has robosuite's PandaGripper signs, (0.04, -0.04) open) and one uint8
+(T, H, W, 3) image per camera (:data:`IMAGE_KEYS`: ``agentview_image``,
+``robot0_eye_in_hand_image`` for the wrist camera), gzip-compressed one frame per chunk.  This
+is what robomimic's ``SequenceDataset`` loads (``obs``, ``next_obs``, ``actions``, ``rewards``,
+``dones``, the ``env_args`` attribute and filter keys).
+
+``env_kwargs`` says how to rebuild the environment: ``embodiment``, ``control_mode``,
+``cameras``, ``image_size``, ``tasks`` (every task's content hash -> its path in the library
+it was recorded from, a hint), and for a file of one task ``task_hash`` and ``task`` (that
+path).  :func:`make_env_from_metadata` rebuilds it, finding the task by its content hash in a
+library the caller names (a path recorded in a file is never loaded).
 
 Crash safety: HDF5 files are not safe to append to across a kill, so each committed episode
 is first a file of its own, ``DIR/parts/demo_<i>.hdf5`` (written to a temporary name, then
@@ -47,7 +61,7 @@ import h5py
 import numpy as np
 
 from rpg.demos.log import discard_failed, log_attempt
-from rpg.demos.record import LOW_DIM_KEYS, Episode
+from rpg.demos.record import Episode
 from rpg.errors import BadInput, PeerError
 from rpg.jsonl import append_jsonl, read_jsonl, rewrite_jsonl
 
@@ -131,11 +145,14 @@ class RobomimicWriter:
         robot_type: the embodiment.
     """
 
-    def __init__(self, root: str | Path, cameras: tuple[str, ...], image_size: tuple[int, int], robot_type: str):
+    def __init__(self, root: str | Path, cameras: tuple[str, ...], image_size: tuple[int, int], robot_type: str,
+                 keep_failed: bool = False, task_paths: dict[str, str] | None = None):
         self.root = Path(root)
         self.cameras = tuple(cameras)
         self.image_size = tuple(image_size)
         self.robot_type = robot_type
+        self.keep_failed = keep_failed
+        self.task_paths = dict(task_paths or {})
         self.episodes: list[dict] = []
         self.attempts: list[dict] = []
 
@@ -182,17 +199,18 @@ class RobomimicWriter:
         rewrite_jsonl(self.meta / "rpg_attempts.jsonl", self.attempts)
 
     def add(self, ep: Episode) -> int | None:
-        """Commit a successful episode as a part file; record any attempt.
+        """Commit an episode as a part file; record any attempt.
 
         Returns:
-            The episode index, or None for a failed episode (its frame stores are deleted).
+            The episode index, or None for a failed episode not kept (its frame stores are deleted).
         """
-        if discard_failed(self.meta, self.attempts, ep):
+        if not self.keep_failed and discard_failed(self.meta, self.attempts, ep):
             return None
         index = len(self.episodes)
         line = {"episode_index": index, "length": ep.length, "task": ep.task, "task_hash": ep.task_hash,
                 "task_name": ep.task_name, "seed": ep.seed, "embodiment": ep.embodiment,
-                "instruction": ep.instruction, "paraphrase": ep.paraphrase, "final_poses": ep.final_poses}
+                "instruction": ep.instruction, "paraphrase": ep.paraphrase, "final_poses": ep.final_poses,
+                "success": bool(ep.success), "task_path": self.task_paths.get(ep.task_hash)}
         part = self.parts / f"demo_{index}.hdf5"
         tmp = part.with_name(f".{part.name}.tmp-{os.getpid()}")
         try:
@@ -239,14 +257,15 @@ class RobomimicWriter:
                                        "was changed); give a new --out directory")
                     masks.setdefault(line["task_name"], []).append(name)
                 data.attrs["total"] = int(sum(e["length"] for e in self.episodes))
-                data.attrs["env_args"] = json.dumps({
-                    "env_name": ENV_NAME, "type": GYM_ENV_TYPE,
-                    "env_kwargs": {"embodiment": self.robot_type, "control_mode": "ee_delta",
-                                   "cameras": list(self.cameras), "image_size": list(self.image_size)}},
-                    sort_keys=True)
+                data.attrs["env_args"] = json.dumps(self.env_args(), sort_keys=True)
+                split = split_train_valid(self.episodes)
+                for key in ("train", "valid", "failed"):
+                    if key in masks:
+                        raise BadInput(f"a task is named {key!r}, robomimic's name of a filter key; rename it")
+                    masks[key] = split[key]
                 mask = dst.create_group("mask")
-                for task_name in sorted(masks):
-                    mask.create_dataset(task_name, data=np.array(masks[task_name], dtype="S"))
+                for name in sorted(masks):
+                    mask.create_dataset(name, data=np.array(masks[name], dtype="S"))
         except BaseException:
             tmp.unlink(missing_ok=True)
             raise
@@ -259,6 +278,41 @@ class RobomimicWriter:
         return target
 
 
+    def env_args(self) -> dict:
+        """robomimic's ``env_args``: the environment and how to rebuild it (module docstring)."""
+        tasks = {}
+        for e in self.episodes:
+            tasks.setdefault(e["task_hash"], e.get("task_path") or self.task_paths.get(e["task_hash"]))
+        kwargs = {"embodiment": self.robot_type, "control_mode": "ee_delta", "cameras": list(self.cameras),
+                  "image_size": list(self.image_size), "tasks": tasks}
+        if len(tasks) == 1:
+            (h, p), = tasks.items()
+            kwargs |= {"task_hash": h, "task": p}
+        return {"env_name": ENV_NAME, "type": GYM_ENV_TYPE, "env_kwargs": kwargs}
+
+
+VALID_EVERY = 10
+"""Of each task's successful demos in recording order, the 10th, 20th, ... are in ``mask/valid``."""
+
+
+def split_train_valid(episodes: list[dict]) -> dict[str, list[str]]:
+    """robomimic's ``train`` / ``valid`` filter keys (and ``failed``) of committed episode
+    records (``episode_index``, ``task_hash``, ``success``): per task, its successful demos in
+    index order, every :data:`VALID_EVERY`-th in ``valid`` and the rest in ``train`` (a 90/10
+    split that a resumed run only extends); failed ones in ``failed``."""
+    out: dict[str, list[str]] = {"train": [], "valid": [], "failed": []}
+    seen: dict[str, int] = {}
+    for e in sorted(episodes, key=lambda e: e["episode_index"]):
+        name = f"demo_{e['episode_index']}"
+        if not e.get("success", True):
+            out["failed"].append(name)
+            continue
+        k = seen.get(e["task_hash"], 0)
+        seen[e["task_hash"]] = k + 1
+        out["valid" if k % VALID_EVERY == VALID_EVERY - 1 else "train"].append(name)
+    return out
+
+
 def _write_demo(g: h5py.Group, ep: Episode, line: dict) -> None:
     """One episode into group ``g`` (robomimic's ``data/demo_<i>`` layout)."""
     t = ep.length
@@ -267,6 +321,7 @@ def _write_demo(g: h5py.Group, ep: Episode, line: dict) -> None:
         g.attrs[key] = line[key]
     g.attrs["paraphrase"] = -1 if ep.paraphrase is None else int(ep.paraphrase)
     g.attrs["final_poses"] = json.dumps(ep.final_poses, sort_keys=True)
+    g.attrs["success"] = int(bool(ep.success))
     g.create_dataset("actions", data=np.asarray(ep.actions, np.float32))
     g.create_dataset("rewards", data=np.asarray(ep.rewards, np.float64))
     dones = np.zeros(t, np.int64)
@@ -274,7 +329,7 @@ def _write_demo(g: h5py.Group, ep: Episode, line: dict) -> None:
     g.create_dataset("dones", data=dones)
     g.create_dataset("states", data=np.asarray(ep.sim_states[:t], np.float64))
     obs, nxt = g.create_group("obs"), g.create_group("next_obs")
-    for key in LOW_DIM_KEYS:
+    for key in ep.low_dim:
         values = np.asarray(ep.low_dim[key], np.float64)
         obs.create_dataset(key, data=values[:t])
         nxt.create_dataset(key, data=values[1:t + 1])
@@ -394,6 +449,11 @@ def read_demos(path: str | Path, max_episodes: int = 100_000, max_steps: int = 1
             for index, g in _demos(f, path, max_episodes):
                 _actions(g, path, max_steps)
                 doc = {"episode_index": index, **{k: _attr(g, k, path) for k in _PROVENANCE}}
+                if "success" in g.attrs:
+                    success = _attr(g, "success", path)
+                    if success not in (0, 1):
+                        raise _refuse(path, f"attribute 'success' of {g.name} is not 0 or 1")
+                    doc["success"] = bool(success)
                 try:
                     doc["final_poses"] = json.loads(doc["final_poses"])
                 except (TypeError, ValueError):
@@ -425,3 +485,89 @@ def read_demo_actions(path: str | Path, index: int, max_steps: int = 100_000) ->
         raise
     except (KeyError, ValueError, OSError, TypeError) as exc:
         raise BadInput(f"{path} is not a robomimic dataset written by rpg demos ({exc})") from None
+
+
+def read_env_args(path: str | Path) -> dict:
+    """The ``env_args`` of a robomimic file written by rpg, read as a peer's (a scalar
+    string attribute of at most :data:`MAX_ATTR_BYTES`, a JSON map with a map ``env_kwargs``).
+
+    Raises:
+        BadInput: not an HDF5 file.
+        PeerError: ``env_args`` missing, too large or malformed.
+    """
+    try:
+        with h5py.File(path, "r") as f:
+            text = _attr(_hard_child(f, "data", path, h5py.Group), "env_args", path)
+    except PeerError:
+        raise
+    except (KeyError, ValueError, OSError, TypeError) as exc:
+        raise BadInput(f"{path} is not a robomimic dataset written by rpg demos ({exc})") from None
+    try:
+        args = json.loads(text) if isinstance(text, str) else None
+    except ValueError:
+        args = None
+    if not isinstance(args, dict) or not isinstance(args.get("env_kwargs"), dict):
+        raise _refuse(path, "env_args is not a JSON map with env_kwargs")
+    return args
+
+
+def make_env_from_metadata(path: str | Path, library: str | Path, demo: int | None = None, **overrides):
+    """The environment a robomimic file's demos were recorded in, rebuilt from its
+    ``env_args`` (robomimic's ``EnvUtils.create_env_from_metadata`` for rpg files).
+
+    The task is found by its recorded content hash among the tasks of ``library``
+    (:func:`rpg.demos.collect.library_tasks`); the path the file records is never loaded.
+    The instruction is the one demo ``demo`` (default: the first) was recorded with.
+
+    Args:
+        path: the dataset directory or its ``demo.hdf5``.
+        library: the library the demos were recorded from (a directory or its manifest).
+        demo: whose task and instruction; required when the file holds demos of several tasks.
+        overrides: more keyword arguments of :class:`rpg.env.BlockTaskEnv` (e.g. ``cameras``).
+
+    Returns:
+        A :class:`rpg.env.BlockTaskEnv` (its ``reset(seed=...)`` with a demo's recorded seed
+        starts that demo's episode).
+
+    Raises:
+        BadInput: not an rpg robomimic file, several tasks and no ``demo``, no task of
+            ``library`` with the content hash, or the task changed since.
+        PeerError: the file's metadata is out of bounds.
+    """
+    from rpg.demos.collect import check_provenance, library_tasks
+    from rpg.env.core import BlockTaskEnv
+
+    h5 = dataset_file(path)
+    if h5 is None:
+        raise BadInput(f"{path} holds no {DATASET_NAME}")
+    kwargs = read_env_args(h5)["env_kwargs"]
+    demos = {d["episode_index"]: d for d in read_demos(h5)}
+    if demo is None:
+        if len(kwargs.get("tasks") or {}) > 1:
+            raise BadInput(f"{h5} holds demos of {len(kwargs['tasks'])} tasks; say which demo's environment (demo=)")
+        if not demos:
+            raise BadInput(f"{h5} holds no demos")
+        demo = min(demos)
+    if demo not in demos:
+        raise BadInput(f"{h5} has no demo_{demo}")
+    prov = check_provenance(demos[demo], f"{h5} demo_{demo}")
+    task = library_tasks(library).get(prov["task_hash"])
+    if task is None:
+        raise BadInput(f"no task in {library} has content hash {prov['task_hash'][:12]} (demo_{demo} of {h5}); give "
+                       "the library it was recorded from")
+    settings = {"embodiment": prov["embodiment"], "control_mode": kwargs.get("control_mode", "ee_delta")}
+    for key in ("cameras", "image_size"):
+        if key in kwargs:
+            settings[key] = tuple(kwargs[key])
+    settings |= overrides
+    env = BlockTaskEnv(task, **settings)
+    if env.source.content_hash != prov["task_hash"]:
+        env.close()
+        raise BadInput(f"{task} has changed since the demos were recorded")
+    src = env.source
+    mode = ("canonical" if prov["instruction"] == src.canonical and prov["instruction"] != src.instruction
+            else next((f"paraphrase:{k}" for k, p in enumerate(src.paraphrases) if p == prov["instruction"]), "original"))
+    if mode != "original":
+        env.close()
+        env = BlockTaskEnv(task, instruction=mode, **settings)
+    return env

@@ -1,0 +1,214 @@
+"""MP4 videos of demonstrations, with PyAV: an episode's frames encoded with a short keyframe
+interval, episodes concatenated into one file without re-encoding (LeRobot v3.0's video
+files), and frames read back by index or timestamp.
+
+Encoding: H.264 (``libx264``), yuv420p, no B-frames, a keyframe at least every ``gop`` frames
+(:data:`DEFAULT_GOP` = 2, LeRobot's own default ``g=2``).  libx264's default puts a single
+keyframe at the start of an episode, so reading frame t decodes t frames; with ``gop`` = 2 a
+reader seeks to a keyframe at most one frame before t, and the cost of a sample does not grow
+with t.  Without B-frames every packet's decode order is its presentation order, so a file
+can be cut after any packet and episodes can be joined packet by packet: each episode's
+first frame is a keyframe (an IDR frame), and its timestamps are shifted by the duration of
+the episodes before it in the file.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import tempfile
+from fractions import Fraction
+from pathlib import Path
+
+import numpy as np
+
+from rpg.env.video import VIDEO_CODEC
+
+DEFAULT_GOP = 2
+"""Frames between keyframes at most (LeRobot's ``g=2``)."""
+
+
+def encoder_options(gop: int) -> dict[str, str]:
+    """libx264 options of :class:`EpisodeVideo`: keyframe interval ``gop`` and no B-frames."""
+    if int(gop) < 1:
+        raise ValueError(f"gop must be at least 1, not {gop}")
+    return {"g": str(int(gop)), "bf": "0"}
+
+
+class EpisodeVideo:
+    """Frames (H, W, 3) uint8 RGB to an MP4 at ``fps`` with a keyframe at least every ``gop``
+    frames; the file appears only when closed without error (a temporary file in the same
+    directory, renamed).  The interface of :class:`rpg.env.video.VideoWriter`.
+
+    Raises:
+        ValueError: a frame of another shape than the first, or an odd width or height.
+    """
+
+    def __init__(self, path: str | Path, fps: float, gop: int = DEFAULT_GOP):
+        self.path = Path(path)
+        self.fps = fps
+        self.options = encoder_options(gop)
+        self._container = None
+        self._stream = None
+        self._shape: tuple[int, ...] | None = None
+        self.frames = 0
+        fd, tmp = tempfile.mkstemp(prefix=f".{self.path.name}.", suffix=".tmp", dir=self.path.parent or ".")
+        os.close(fd)
+        self._tmp = Path(tmp)
+
+    def __enter__(self) -> EpisodeVideo:
+        return self
+
+    def write(self, frame: np.ndarray) -> None:
+        import av
+
+        frame = np.ascontiguousarray(frame, dtype=np.uint8)
+        if self._container is None:
+            h, w = frame.shape[:2]
+            if frame.ndim != 3 or frame.shape[2] != 3 or h % 2 or w % 2:
+                raise ValueError(f"video frames must be (H, W, 3) with even H and W, got {frame.shape}")
+            self._shape = frame.shape
+            self._container = av.open(str(self._tmp), mode="w", format="mp4")
+            self._stream = self._container.add_stream(VIDEO_CODEC, rate=round(self.fps), options=self.options)
+            self._stream.width, self._stream.height = w, h
+            self._stream.pix_fmt = "yuv420p"
+        elif frame.shape != self._shape:
+            raise ValueError(f"frame shape {frame.shape} differs from the first frame's {self._shape}")
+        for packet in self._stream.encode(av.VideoFrame.from_ndarray(frame, format="rgb24")):
+            self._container.mux(packet)
+        self.frames += 1
+
+    def __exit__(self, exc_type, *exc) -> None:
+        try:
+            if self._container is not None:
+                if exc_type is None:
+                    for packet in self._stream.encode():
+                        self._container.mux(packet)
+                self._container.close()
+            if exc_type is None and self.frames:
+                umask = os.umask(0)
+                os.umask(umask)
+                os.chmod(self._tmp, 0o666 & ~umask)
+                os.replace(self._tmp, self.path)
+        finally:
+            with contextlib.suppress(OSError):
+                self._tmp.unlink()
+
+
+def _packets(container):
+    stream = container.streams.video[0]
+    for packet in container.demux(stream):
+        if packet.dts is not None and packet.size:
+            yield packet
+
+
+def stream_signature(path: str | Path) -> tuple:
+    """What must agree for two MP4s to be joined packet by packet: codec, size, pixel format,
+    time base, frame rate and the decoder configuration (SPS/PPS)."""
+    import av
+
+    with av.open(str(path)) as c:
+        s = c.streams.video[0]
+        cc = s.codec_context
+        return (cc.name, cc.width, cc.height, str(cc.pix_fmt), s.time_base, s.average_rate, bytes(cc.extradata or b""))
+
+
+def join(parts: list[tuple[Path, int | None]], out: Path) -> int:
+    """Write ``out``: the first ``n`` packets (frames) of each ``(path, n)`` in order (every
+    packet when ``n`` is None), timestamps shifted so the frames follow each other at the
+    files' frame rate.  No re-encoding; ``out`` is written in place (callers write a temporary
+    name and rename it).
+
+    Returns:
+        The number of frames written.
+
+    Raises:
+        ValueError: the parts do not share :func:`stream_signature`, a part has B-frames
+            (decode order differs from presentation order) or fewer packets than asked.
+    """
+    import av
+
+    if not parts:
+        raise ValueError("nothing to join")
+    signature = stream_signature(parts[0][0])
+    written = 0
+    offset = 0  # in the output stream's time base
+    with av.open(str(out), mode="w", format="mp4") as dst:
+        ost = None
+        for path, keep in parts:
+            if stream_signature(path) != signature:
+                raise ValueError(f"{path} was encoded differently from {parts[0][0]}; it cannot be joined to it")
+            with av.open(str(path)) as src:
+                ist = src.streams.video[0]
+                if ost is None:
+                    ost = dst.add_stream_from_template(ist)
+                    ost.time_base = ist.time_base
+                tick = int(round(1 / (float(ist.average_rate) * float(ist.time_base))))
+                n = 0
+                for packet in _packets(src):
+                    if keep is not None and n >= keep:
+                        break
+                    if packet.pts != packet.dts or packet.pts != n * tick:
+                        raise ValueError(f"{path}: packet {n} has pts {packet.pts}, dts {packet.dts}; expected "
+                                         f"{n * tick} (a constant frame rate, no B-frames)")
+                    packet.pts = packet.dts = offset + n * tick
+                    packet.stream = ost
+                    dst.mux(packet)
+                    n += 1
+                if keep is not None and n < keep:
+                    raise ValueError(f"{path} holds {n} frames, fewer than the {keep} asked")
+                offset += n * tick
+                written += n
+    return written
+
+
+def frame_count(path: str | Path) -> int:
+    """Frames (packets) of an MP4's video stream, counted without decoding."""
+    import av
+
+    with av.open(str(path)) as c:
+        return sum(1 for _ in _packets(c))
+
+
+def keyframes(path: str | Path) -> list[int]:
+    """Indices of the keyframes of an MP4's video stream (in presentation order), without decoding."""
+    import av
+
+    with av.open(str(path)) as c:
+        return [i for i, p in enumerate(_packets(c)) if p.is_keyframe]
+
+
+def read_frames(path: str | Path) -> list[np.ndarray]:
+    """Every frame of an MP4, (H, W, 3) uint8 RGB."""
+    import av
+
+    with av.open(str(path)) as c:
+        return [f.to_ndarray(format="rgb24") for f in c.decode(video=0)]
+
+
+def read_frame_at(path: str | Path, timestamp: float) -> tuple[np.ndarray, int]:
+    """The frame shown at ``timestamp`` (s) as a reader that seeks does it: seek to the last
+    keyframe at or before it, then decode forward.
+
+    Returns:
+        The frame (H, W, 3) uint8 RGB and the number of frames decoded to reach it.
+
+    Raises:
+        ValueError: no frame within half a frame of ``timestamp``.
+    """
+    import av
+
+    with av.open(str(path)) as c:
+        s = c.streams.video[0]
+        half = Fraction(1, 2) / Fraction(s.average_rate)
+        target = Fraction(timestamp).limit_denominator(10**6)
+        c.seek(max(int(round(target / s.time_base)), 0), stream=s, backward=True, any_frame=False)
+        decoded = 0
+        for frame in c.decode(s):
+            decoded += 1
+            t = frame.pts * s.time_base
+            if abs(t - target) <= half:
+                return frame.to_ndarray(format="rgb24"), decoded
+            if t > target:
+                break
+    raise ValueError(f"{path} has no frame at {timestamp} s")
