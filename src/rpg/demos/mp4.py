@@ -14,15 +14,12 @@ the episodes before it in the file.
 
 from __future__ import annotations
 
-import contextlib
-import os
-import tempfile
 from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
 
-from rpg.env.video import VIDEO_CODEC
+from rpg.env.video import VideoWriter
 
 DEFAULT_GOP = 2
 """Frames between keyframes at most (LeRobot's ``g=2``)."""
@@ -35,64 +32,18 @@ def encoder_options(gop: int) -> dict[str, str]:
     return {"g": str(int(gop)), "bf": "0"}
 
 
-class EpisodeVideo:
+class EpisodeVideo(VideoWriter):
     """Frames (H, W, 3) uint8 RGB to an MP4 at ``fps`` with a keyframe at least every ``gop``
-    frames; the file appears only when closed without error (a temporary file in the same
-    directory, renamed).  The interface of :class:`rpg.env.video.VideoWriter`.
+    frames and no B-frames (:func:`encoder_options`); the file appears only when closed
+    without error, as :class:`rpg.env.video.VideoWriter`'s.
 
     Raises:
-        ValueError: a frame of another shape than the first, or an odd width or height.
+        ValueError: a frame of another shape than the first, an odd width or height, or
+            ``gop`` < 1.
     """
 
     def __init__(self, path: str | Path, fps: float, gop: int = DEFAULT_GOP):
-        self.path = Path(path)
-        self.fps = fps
-        self.options = encoder_options(gop)
-        self._container = None
-        self._stream = None
-        self._shape: tuple[int, ...] | None = None
-        self.frames = 0
-        fd, tmp = tempfile.mkstemp(prefix=f".{self.path.name}.", suffix=".tmp", dir=self.path.parent or ".")
-        os.close(fd)
-        self._tmp = Path(tmp)
-
-    def __enter__(self) -> EpisodeVideo:
-        return self
-
-    def write(self, frame: np.ndarray) -> None:
-        import av
-
-        frame = np.ascontiguousarray(frame, dtype=np.uint8)
-        if self._container is None:
-            h, w = frame.shape[:2]
-            if frame.ndim != 3 or frame.shape[2] != 3 or h % 2 or w % 2:
-                raise ValueError(f"video frames must be (H, W, 3) with even H and W, got {frame.shape}")
-            self._shape = frame.shape
-            self._container = av.open(str(self._tmp), mode="w", format="mp4")
-            self._stream = self._container.add_stream(VIDEO_CODEC, rate=round(self.fps), options=self.options)
-            self._stream.width, self._stream.height = w, h
-            self._stream.pix_fmt = "yuv420p"
-        elif frame.shape != self._shape:
-            raise ValueError(f"frame shape {frame.shape} differs from the first frame's {self._shape}")
-        for packet in self._stream.encode(av.VideoFrame.from_ndarray(frame, format="rgb24")):
-            self._container.mux(packet)
-        self.frames += 1
-
-    def __exit__(self, exc_type, *exc) -> None:
-        try:
-            if self._container is not None:
-                if exc_type is None:
-                    for packet in self._stream.encode():
-                        self._container.mux(packet)
-                self._container.close()
-            if exc_type is None and self.frames:
-                umask = os.umask(0)
-                os.umask(umask)
-                os.chmod(self._tmp, 0o666 & ~umask)
-                os.replace(self._tmp, self.path)
-        finally:
-            with contextlib.suppress(OSError):
-                self._tmp.unlink()
+        super().__init__(path, fps, encoder_options(gop))
 
 
 def _packets(container):

@@ -22,9 +22,10 @@ class VideoWriter:
             (yuv420p needs even sides).
     """
 
-    def __init__(self, path: str | Path, fps: float):
+    def __init__(self, path: str | Path, fps: float, options: dict[str, str] | None = None):
         self.path = Path(path)
         self.fps = fps
+        self.options = dict(options or {})  # the encoder's (libx264's) options, e.g. {"g": "2"}
         self._container = None
         self._stream = None
         self._shape: tuple[int, ...] | None = None
@@ -46,7 +47,7 @@ class VideoWriter:
                 raise ValueError(f"video frames must be (H, W, 3) with even H and W, got {frame.shape}")
             self._shape = frame.shape
             self._container = av.open(str(self._tmp), mode="w", format="mp4")
-            self._stream = self._container.add_stream(VIDEO_CODEC, rate=round(self.fps))
+            self._stream = self._container.add_stream(VIDEO_CODEC, rate=round(self.fps), options=self.options)
             self._stream.width, self._stream.height = w, h
             self._stream.pix_fmt = "yuv420p"
         elif frame.shape != self._shape:
