@@ -19,6 +19,8 @@ validation and every other ``rpg`` command use for seed ``s``.  The robot starts
 home pose (TCP above the front of the workspace, gripper open, pointing down); then
 :data:`~rpg.domain.constants.RESET_SETTLE_STEPS` physics steps settle the scene.
 ``reset()`` without a seed draws one from the environment's generator.
+``reset(options={"state": s})`` starts instead from a state ``env.get_state()`` returned or
+``rpg demos`` recorded (:mod:`rpg.env.state`): a policy evaluated from a dataset's states.
 
 **Success Conditions.**  ``info["success"]``: the task's success predicate G holds and the
 gripper holds no cube (both fingers touching it), as ManiSkill3 defines success.  A temporal
@@ -206,6 +208,12 @@ class BlockTaskEnv(gym.Env):
         high = np.append(self.robot.joint_high, 1.0).astype(np.float32)
         return spaces.Box(low, high, (8,), np.float32)
 
+    @property
+    def instructions(self) -> tuple[str, ...]:
+        """The task's instruction texts: as written, the canonical statement of G, then each
+        paraphrase (``instruction=`` picks one; the Text space's charset covers them all)."""
+        return (self.source.instruction, self.source.canonical or self.source.instruction, *self.source.paraphrases)
+
     def _make_observation_space(self) -> spaces.Dict:
         h, w = self.image_size
         inf = np.inf
@@ -215,14 +223,35 @@ class BlockTaskEnv(gym.Env):
         obs["qvel"] = spaces.Box(-inf, inf, self.robot.robot_qvel().shape, np.float64)
         if self.privileged:
             obs["object_poses"] = spaces.Box(-inf, inf, (len(self.object_names), 7), np.float64)
-        texts = (self.source.instruction, self.source.canonical, *self.source.paraphrases)
+        texts = self.instructions
         charset = "".join(sorted(set(string.printable) | set("".join(texts))))
         obs["instruction"] = spaces.Text(max_length=max(256, *(len(t) for t in texts)), charset=charset)
         return spaces.Dict(obs)
 
     # -- episode -------------------------------------------------------------------
     def reset(self, *, seed: int | None = None, options: dict | None = None):
-        """Start an episode from rho_0's sample for ``seed`` (see the class docstring)."""
+        """Start an episode from rho_0's sample for ``seed`` (see the class docstring), or
+        with ``options={"state": s}`` from a saved or recorded state ``s``
+        (:meth:`get_state`, robomimic's ``states[t]`` of ``rpg demos``, or a dict of the
+        observation's ``qpos``/``qvel``/``object_poses``: :mod:`rpg.env.state`); ``seed``
+        then only seeds ``np_random`` and ``info["seed"]`` is None unless given.
+
+        Raises:
+            ValueError: ``options`` with a key other than ``state``, or a malformed state.
+            TaskInvalid: rho_0's sample for ``seed`` breaks the validation gates' rules.
+        """
+        options = {} if options is None else options
+        unknown = sorted(map(str, set(options) - {"state"}))
+        if unknown:
+            raise ValueError(f"reset options: unknown key(s) {', '.join(map(repr, unknown))}; the only option is "
+                             "'state' (a saved or recorded state to start from, see rpg.env.state)")
+        if options.get("state") is not None:
+            from rpg.env.state import restore
+
+            restore(self, options["state"])  # checks the state before changing anything
+            super().reset(seed=seed)
+            self._seed = None if seed is None else int(seed)
+            return self._start_episode()
         super().reset(seed=seed)
         if seed is None:
             seed = int(self.np_random.integers(0, 2**31 - 1))
@@ -233,14 +262,28 @@ class BlockTaskEnv(gym.Env):
         self.robot.home()
         self.scene.forward()
         mujoco.mj_step(self.model, self.data, nstep=C.RESET_SETTLE_STEPS)
+        obs, info = self._start_episode()
+        if info["goal_satisfied"]:  # e.g. a cube rho_0 held in the air fell into place while settling
+            raise TaskInvalid(f"{self.source.name}: G holds once rho_0's sample for seed {self._seed} has settled; "
+                              "an episode that starts solved is not scored")
+        return obs, info
+
+    def _start_episode(self) -> tuple[dict, dict]:
+        """Step count, temporal monitors and G's cache for a new episode from the current state."""
         self._elapsed = 0
         self._monitors = [p.monitor() for p in self.task.goal_predicate.walk() if isinstance(p, InOrder)]
         self._goal_cache = None
         info = self._info()
-        if info["goal_satisfied"]:  # e.g. a cube rho_0 held in the air fell into place while settling
-            raise TaskInvalid(f"{self.source.name}: G holds once rho_0's sample for seed {self._seed} has settled; "
-                              "an episode that starts solved is not scored")
         return self._observation(), info
+
+    def get_state(self) -> np.ndarray:
+        """The simulation's state, float64 (S,): ``mj_getState`` with
+        :data:`rpg.env.state.ENV_STATE` (qpos, qvel, mocap poses, actuator commands, warm
+        start...); ``reset(options={"state": it})`` restores it exactly (a replay of the
+        same actions from it reproduces the episode)."""
+        from rpg.env.state import capture
+
+        return capture(self)
 
     def step(self, action):
         """One control step: the action's targets, then CONTROL_SUBSTEPS physics steps.

@@ -192,6 +192,28 @@ class Embodiment:
     def substep(self, k: int, n: int) -> None:
         """Called before part ``k`` of ``n`` of a control step's physics steps (interpolation)."""
 
+    # -- restoring a state -------------------------------------------------------
+    def state_index(self) -> tuple[np.ndarray, np.ndarray]:
+        """Where :meth:`robot_qpos` and :meth:`robot_qvel` sit in ``data.qpos`` and
+        ``data.qvel``: two int arrays, in the same order as those observations."""
+        raise NotImplementedError
+
+    def hold_targets(self) -> None:
+        """Forget the last control step's targets and make the actuators hold the measured
+        pose: what a restored state that holds no actuator commands needs (a MuJoCo physics
+        state has no ``ctrl``).  The gripper's command comes with the next action."""
+        self._from = self._to = None
+
+    def set_robot_state(self, qpos: np.ndarray, qvel: np.ndarray | None = None) -> None:
+        """Put the robot at ``qpos`` (laid out as :meth:`robot_qpos`) moving at ``qvel`` (as
+        :meth:`robot_qvel`; None: at rest), its actuators holding that pose
+        (:meth:`hold_targets`).  The caller runs ``mj_forward`` after; shapes are the caller's
+        to check."""
+        qi, vi = self.state_index()
+        self.data.qpos[qi] = qpos
+        self.data.qvel[vi] = 0.0 if qvel is None else qvel
+        self.hold_targets()
+
     # -- reading -----------------------------------------------------------------
     def tcp_pose(self) -> TcpPose:
         """Measured TCP pose in the world frame."""

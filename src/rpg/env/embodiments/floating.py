@@ -89,6 +89,17 @@ class FloatingGripper(Embodiment):
         a = self.hand_qvel
         return np.concatenate([self.data.qvel[a:a + 6], self.data.qvel[self.finger_qvel]])
 
+    def state_index(self) -> tuple[np.ndarray, np.ndarray]:
+        return (np.concatenate([np.arange(self.hand_qpos, self.hand_qpos + 7), self.finger_qpos]),
+                np.concatenate([np.arange(self.hand_qvel, self.hand_qvel + 6), self.finger_qvel]))
+
+    def set_robot_state(self, qpos: np.ndarray, qvel: np.ndarray | None = None) -> None:
+        """As :meth:`Embodiment.set_robot_state`, the mocap target on the hand (the weld holds it there)."""
+        super().set_robot_state(qpos, qvel)
+        a = self.hand_qpos
+        self.data.mocap_pos[self.mocap] = self.data.qpos[a:a + 3]
+        self.data.mocap_quat[self.mocap] = self.data.qpos[a + 3:a + 7]
+
     def command(self, mode: str, action: np.ndarray) -> None:
         target = cartesian_target(self.tcp_pose(), mode, action)
         a = self.hand_qpos
