@@ -301,7 +301,7 @@ STRUCTURE_PHRASES: tuple[tuple[re.Pattern, str], ...] = (
      r"\1 \3 of \4 \2 blocks"),
     # "two towers: one of 2 pink blocks and one of 2 brown": a tower per group
     (re.compile(r"\b\d+\s+(tower|stack|column|pile)s\s*[:,;\-]?\s*(?:one|1)\s+(?=of\s+\d)"), r"1 \1 "),
-    (re.compile(rf"\b(?:one|1)\s+(?:({_TOWER})\s+)?of\s+{_GROUP.format(i=1)}\s*,?\s+and\s+(?:one|1|another|the\s+other)"
+    (re.compile(rf"\b(?:one|1)\s+({_TOWER})\s+of\s+{_GROUP.format(i=1)}\s*,?\s+and\s+(?:one|1|another|the\s+other)"
                 rf"(?:\s+{_TOWER})?\s+of\s+{_GROUP.format(i=2)}"),
      r"a \1 of \g<n1> \g<c1> blocks and a \1 of \g<n2> \g<c2> blocks"),
     # roles: "the top one is white", "the bottom block black"
@@ -319,7 +319,7 @@ after "one of" is one tower's, "the top one is white" is the top cube's colour."
 
 def _structure_phrases(text: str) -> str:
     for pattern, replacement in STRUCTURE_PHRASES:
-        text = pattern.sub(lambda m, r=replacement: m.expand(r).replace("None ", "").replace(" of  ", " of "), text)
+        text = pattern.sub(replacement, text)  # an unmatched group (no colour) expands to ""
     return text
 
 
