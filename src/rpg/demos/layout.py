@@ -23,7 +23,9 @@ Columns, in order (float32 unless said):
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 import pyarrow as pa
@@ -201,3 +203,30 @@ class Layout:
         out = {name: stats_of(v) for name, v in cols.items()}
         out |= {video_key(c): ep.image_stats[c] for c in self.cameras}
         return out
+
+
+def check_existing(root: Path, layout: Layout, version: str, other_format: str) -> dict | None:
+    """The ``meta/info.json`` of a LeRobot dataset already in ``root`` (None if there is none),
+    checked to be one this writer can append to: format ``version``, the same robot, cameras,
+    image size, columns and keyframe interval.
+
+    Raises:
+        BadInput: a robomimic dataset, another LeRobot version (``other_format`` is the
+            ``--format`` that writes it), or another embodiment, cameras, image size, columns
+            or keyframe interval.
+    """
+    meta = root / "meta"
+    if (meta / "rpg_robomimic.json").is_file():
+        raise BadInput(f"{root} holds a robomimic (HDF5) dataset; give a new --out directory for --format lerobot")
+    info = meta / "info.json"
+    if not info.is_file():
+        return None
+    old = json.loads(info.read_text())
+    if old.get("codebase_version") != version:
+        raise BadInput(f"{root} holds a LeRobot {old.get('codebase_version')} dataset; write it with "
+                       f"--format {other_format} or give a new --out directory")
+    new = json.loads(json.dumps(layout.features(version)))
+    if old.get("robot_type") != layout.robot_type or old.get("features") != new:
+        raise BadInput(f"{root} holds a dataset of another embodiment, cameras, image size, columns "
+                       "or keyframe interval; give a new --out directory")
+    return old

@@ -37,10 +37,10 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.parquet as pq
 
-from rpg.demos.layout import Layout, video_key
+from rpg.demos.layout import Layout, check_existing, video_key
 from rpg.demos.log import discard_failed, log_attempt
 from rpg.demos.record import ACTION_NAMES, Episode
-from rpg.errors import BadInput, PeerError
+from rpg.errors import PeerError
 from rpg.jsonl import append_jsonl, read_jsonl, rewrite_jsonl
 
 CODEBASE_VERSION = "v2.1"
@@ -95,19 +95,8 @@ class LeRobotWriter:
             BadInput: the directory holds another kind of dataset, another LeRobot version, or
                 one of another embodiment, cameras, image size or columns.
         """
-        if (self.meta / "rpg_robomimic.json").is_file():
-            raise BadInput(f"{self.root} holds a robomimic (HDF5) dataset; give a new --out directory for --format lerobot")
+        check_existing(self.root, self.layout, CODEBASE_VERSION, "lerobot (v3.0)")
         self.meta.mkdir(parents=True, exist_ok=True)
-        info = self.meta / "info.json"
-        if info.is_file():
-            old = json.loads(info.read_text())
-            if old.get("codebase_version") != CODEBASE_VERSION:
-                raise BadInput(f"{self.root} holds a LeRobot {old.get('codebase_version')} dataset; write it with "
-                               "--format lerobot (v3.0) or give a new --out directory")
-            new = json.loads(json.dumps(self.layout.features(CODEBASE_VERSION)))
-            if old.get("robot_type") != self.layout.robot_type or old.get("features") != new:
-                raise BadInput(f"{self.root} holds a dataset of another embodiment, cameras, image size, columns "
-                               "or keyframe interval; give a new --out directory")
         self.episodes = read_jsonl(self.meta / "episodes.jsonl")
         self.tasks = [t["task"] for t in read_jsonl(self.meta / "tasks.jsonl")]
         self.attempts = read_jsonl(self.meta / "rpg_attempts.jsonl")

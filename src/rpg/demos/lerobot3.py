@@ -48,7 +48,7 @@ import pyarrow.compute as pc
 import pyarrow.parquet as pq
 
 from rpg.demos import mp4
-from rpg.demos.layout import INDEX_FEATURES, Layout, aggregate_stats, video_key
+from rpg.demos.layout import INDEX_FEATURES, Layout, aggregate_stats, check_existing, video_key
 from rpg.demos.lerobot import _write_json, provenance
 from rpg.demos.log import discard_failed, log_attempt
 from rpg.demos.record import ACTION_NAMES, Episode
@@ -191,18 +191,8 @@ class LeRobotV3Writer:
         """
         from rpg.jsonl import read_jsonl, rewrite_jsonl
 
-        if (self.meta / "rpg_robomimic.json").is_file():
-            raise BadInput(f"{self.root} holds a robomimic (HDF5) dataset; give a new --out directory for --format lerobot")
-        info = self.meta / "info.json"
-        if info.is_file():
-            old = json.loads(info.read_text())
-            if old.get("codebase_version") != CODEBASE_VERSION:
-                raise BadInput(f"{self.root} holds a LeRobot {old.get('codebase_version')} dataset; write it with "
-                               "--format lerobot-v2.1 or give a new --out directory")
-            new = json.loads(json.dumps(self.layout.features(CODEBASE_VERSION)))
-            if old.get("robot_type") != self.layout.robot_type or old.get("features") != new:
-                raise BadInput(f"{self.root} holds a dataset of another embodiment, cameras, image size, columns "
-                               "or keyframe interval; give a new --out directory")
+        old = check_existing(self.root, self.layout, CODEBASE_VERSION, "lerobot-v2.1")
+        if old is not None:
             if type(old.get("chunks_size")) is int and old["chunks_size"] > 0:
                 self.chunks_size = old["chunks_size"]  # the files already written are numbered with it
         elif (self.meta / "episodes.jsonl").is_file():
