@@ -505,6 +505,48 @@ def test_robomimic_metadata_rebuilds_the_environment_and_splits_train_valid(tmp_
         make_env_from_metadata(out, library=other)
 
 
+def test_robomimic_env_kwargs_rebuild_the_same_visual_cameras_and_image_size(tmp_path):
+    """A non-default ``--visual stock``, one camera and a non-default size: ``env_kwargs`` records
+    every one, and the rebuilt environment's first observation is the recorded first frame
+    byte for byte (the decimated meshes' frame differs)."""
+    import h5py
+
+    from rpg.demos.robomimic import ENV_KEYWORDS, make_env_from_metadata
+    from rpg.env import BlockTaskEnv
+
+    out = tmp_path / "ds"
+    _demos(out, "-n", "1", "--cameras", "agentview", "--image-size", "40", "--format", "hdf5", "--visual", "stock")
+    with h5py.File(out / "demo.hdf5") as f:
+        kw = json.loads(f["data"].attrs["env_args"])["env_kwargs"]
+        seed = int(f["data/demo_0"].attrs["seed"])
+        first = f["data/demo_0/obs/agentview_image"][0]
+    assert set(ENV_KEYWORDS) <= set(kw)
+    assert (kw["visual"], kw["cameras"], kw["image_size"], kw["embodiment"]) == \
+        ("stock", ["agentview"], [40, 40], "floating_gripper")
+    assert (kw["privileged"], kw["terminate_on_success"], kw["max_episode_steps"]) == (False, True, None)
+    env = make_env_from_metadata(out, library=LIBRARY)
+    try:
+        assert (env.robot.visual, env.cameras, env.image_size) == ("stock", ("agentview",), (40, 40))
+        obs, _ = env.reset(seed=seed)
+        assert set(k for k in obs if k.endswith("_image")) == {"agentview_image"}
+        assert np.array_equal(obs["agentview_image"], first)
+    finally:
+        env.close()
+    decimated = BlockTaskEnv(STACK, embodiment="floating_gripper", cameras=("agentview",), image_size=(40, 40))
+    try:
+        assert not np.array_equal(decimated.reset(seed=seed)[0]["agentview_image"], first)
+    finally:
+        decimated.close()
+    # resuming with other meshes is refused; a LeRobot format cannot record the setting
+    r = _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", out, "--image-size", "40", "--cameras",
+             "agentview", "--format", "hdf5", "-n", "2")
+    assert r.returncode == 2 and "visual" in r.stderr and "Traceback" not in r.stderr
+    r = _rpg("demos", STACK, "--out", tmp_path / "le", "--visual", "stock")
+    assert r.returncode == 2 and "--format hdf5" in r.stderr and len(r.stderr.strip().splitlines()) == 1
+    r = _rpg("demos", STACK, "--out", tmp_path / "bad", "--format", "hdf5", "--visual", "fine")
+    assert r.returncode == 2 and "decimated, stock" in r.stderr and "Traceback" not in r.stderr
+
+
 def test_train_valid_split_is_every_tenth_successful_demo_per_task():
     from rpg.demos.robomimic import split_train_valid
 

@@ -755,6 +755,9 @@ def demos_cmd(
                                                            "next.success, next.done).")] = "joint_pos,object_poses,next",
     keep_failed: Annotated[bool, typer.Option("--keep-failed", help="Keep failed episodes too, marked success "
                                                                     "false (they do not count toward -n).")] = False,
+    visual: Annotated[str, typer.Option("--visual", help="The robot's meshes in the images: decimated (default) or "
+                                                         "stock (the Menagerie's; --format hdf5 only, recorded in "
+                                                         "env_kwargs).")] = "decimated",
     replay: Annotated[Path | None, typer.Option("--replay", help="Replay a dataset and check every episode.")] = None,
     library: Annotated[Path, typer.Option("--library", help="With --replay: the library whose tasks are found by "
                                                             "content hash (a directory or its manifest).")] = Path("library"),
@@ -788,7 +791,7 @@ def demos_cmd(
         summary = collect_demos(target, out_dir, episodes=episodes, embodiment=embodiment, fmt=fmt, jobs=jobs,
                                 cameras=cams, image_size=(image_size, image_size), instruction=instruction,
                                 progress=progress, gop=gop, columns=tuple(c for c in columns.split(",") if c),
-                                keep_failed=keep_failed, backend=backend, address=address)
+                                keep_failed=keep_failed, backend=backend, address=address, visual=visual)
     short = {t: v for t, v in summary["per_task"].items() if v["success"] < episodes}
     out.print(f"{out_dir}: {summary['episodes']} episodes ({summary['attempts']} run now)", highlight=False)
     for t, v in short.items():

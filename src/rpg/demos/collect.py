@@ -91,12 +91,13 @@ class Job:
     staging: str
     frames: str = "mp4"
     gop: int | None = None
+    visual: str = "decimated"
 
 
 def _run(job: Job) -> Episode:
     return record_episode(job.task, job.seed, job.embodiment, job.cameras, job.image_size, job.instruction,
                           video_dir=Path(job.staging) / f"{Path(job.task).name}-{job.seed}", frames=job.frames,
-                          reuse_env=True, gop=job.gop)
+                          reuse_env=True, gop=job.gop, visual=job.visual)
 
 
 def _task_hash(task: str) -> str:
@@ -137,14 +138,15 @@ def library_path(task: str, target: str | Path) -> str:
 
 
 def make_writer(fmt: str, out: str | Path, layout: Layout, keep_failed: bool = False, task_paths: dict | None = None,
-                **options):
-    """The dataset writer of a format (:data:`FORMATS`); ``options`` go to the LeRobot v3.0 writer
-    (``data_files_size_in_mb``, ``video_files_size_in_mb``)."""
+                visual: str = "decimated", **options):
+    """The dataset writer of a format (:data:`FORMATS`); ``visual`` is recorded by the robomimic
+    writer; ``options`` go to the LeRobot v3.0 writer (``data_files_size_in_mb``,
+    ``video_files_size_in_mb``)."""
     if fmt == "hdf5":
         from rpg.demos.robomimic import RobomimicWriter
 
         return RobomimicWriter(out, layout.cameras, layout.image_size, layout.robot_type, keep_failed=keep_failed,
-                               task_paths=task_paths)
+                               task_paths=task_paths, visual=visual)
     if fmt == "lerobot-v2.1":
         from rpg.demos.lerobot import LeRobotWriter
 
@@ -159,7 +161,7 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
                   image_size: tuple[int, int] = (256, 256), instruction: str = "original",
                   progress: Callable[[Episode, int | None], None] | None = None, gop: int | None = None,
                   columns: tuple[str, ...] = COLUMNS, keep_failed: bool = False, backend: str = "local",
-                  address: str | None = None, **writer_options) -> dict:
+                  address: str | None = None, visual: str = "decimated", **writer_options) -> dict:
     """Record ``episodes`` successful oracle demonstrations per task of ``target`` into ``out``.
 
     Args:
@@ -169,6 +171,9 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
             toward ``episodes``).
         backend: ``local`` (``jobs`` spawned processes) or ``ray`` (Ray tasks on a local
             instance with ``jobs`` CPUs, or on the cluster at ``address``).
+        visual: the robot's meshes in the images, ``decimated`` (default) or ``stock``
+            (:mod:`rpg.env.embodiments.visuals`); recorded in robomimic's ``env_kwargs``.  The
+            LeRobot formats record no such setting, so they take only the default.
         writer_options: for the LeRobot v3.0 writer, ``data_files_size_in_mb`` and
             ``video_files_size_in_mb``.
 
@@ -177,8 +182,9 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
         {task: {"success": n, "attempts": m}}}``.
 
     Raises:
-        BadInput: unknown target, format or column group, ``episodes`` or ``jobs`` < 1,
-            ``gop`` < 1, or ``out`` holds a dataset of another kind.
+        BadInput: unknown target, format, column group or visual, ``episodes`` or ``jobs`` < 1,
+            ``gop`` < 1, a non-default ``visual`` with a LeRobot format, or ``out`` holds a
+            dataset of another kind.
         rpg.parallel.BackendError: an unknown backend, Ray not installed or its cluster
             unreachable (before anything is written).
         rpg.parallel.WorkerLost: a worker died (the episodes committed before are kept).
@@ -194,21 +200,28 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
     if gop < 1:
         raise BadInput("--gop must be at least 1")
     columns = check_columns(columns)
+    from rpg.env.embodiments.visuals import VISUALS
+
+    if visual not in VISUALS:
+        raise BadInput(f"--visual must be one of {', '.join(VISUALS)}, not {visual!r}")
+    if visual != VISUALS[0] and fmt != "hdf5":
+        raise BadInput(f"--visual {visual} is recorded only by --format hdf5 (robomimic's env_kwargs); "
+                       "a LeRobot dataset records no such setting")
     tasks = expand_targets(target)
     slots = object_slots(tasks) if "object_poses" in columns and fmt != "hdf5" else ()
     layout = Layout(embodiment, tuple(cameras), tuple(image_size), columns, slots, gop)
     paths = {_task_hash(t): library_path(t, target) for t in tasks}
     with open_backend(backend, jobs, address) as runner:
         return _collect(runner, tasks, target, out, episodes, embodiment, fmt, tuple(cameras), tuple(image_size),
-                        instruction, progress, gop, layout, paths, keep_failed, writer_options)
+                        instruction, progress, gop, layout, paths, keep_failed, writer_options, visual)
 
 
 def _collect(runner, tasks: list[str], target, out, episodes: int, embodiment: str, fmt: str,
              cameras: tuple[str, ...], image_size: tuple[int, int], instruction: str, progress, gop: int,
-             layout: Layout, paths: dict, keep_failed: bool, writer_options: dict) -> dict:
+             layout: Layout, paths: dict, keep_failed: bool, writer_options: dict, visual: str = "decimated") -> dict:
     """The part of :func:`collect_demos` that writes the dataset; ``runner`` an open
     :class:`rpg.parallel.Backend`."""
-    writer = make_writer(fmt, out, layout, keep_failed=keep_failed, task_paths=paths, **writer_options)
+    writer = make_writer(fmt, out, layout, keep_failed=keep_failed, task_paths=paths, visual=visual, **writer_options)
     writer.open()
     staging = Path(out) / ".staging"
     shutil.rmtree(staging, ignore_errors=True)
@@ -225,7 +238,7 @@ def _collect(runner, tasks: list[str], target, out, episodes: int, embodiment: s
             last = MAX_SEED_FACTOR * episodes
             while made < episodes and seed < last:
                 batch = [Job(task, s, embodiment, cameras, image_size, instruction, str(staging),
-                             "hdf5" if fmt == "hdf5" else "mp4", gop)
+                             "hdf5" if fmt == "hdf5" else "mp4", gop, visual)
                          for s in range(seed, min(seed + episodes - made, last))]
                 seed += len(batch)
                 # committed in seed order, however they finish: the same dataset for any --jobs and backend

@@ -221,9 +221,9 @@ def _environment(key: tuple, reuse: bool) -> BlockTaskEnv:
         if key in _CACHED:
             return _CACHED[key]
         close_cached_env()
-    task, embodiment, cameras, image_size, instruction, max_steps = key
+    task, embodiment, cameras, image_size, instruction, max_steps, visual = key
     env = BlockTaskEnv(task, embodiment=embodiment, control_mode="ee_delta", cameras=cameras,
-                       image_size=image_size, instruction=instruction, max_episode_steps=max_steps)
+                       image_size=image_size, instruction=instruction, max_episode_steps=max_steps, visual=visual)
     if reuse:
         _CACHED[key] = env
     return env
@@ -240,7 +240,7 @@ def record_episode(task: str, seed: int, embodiment: str = "floating_gripper",
                    cameras: tuple[str, ...] = ("agentview", "wrist"), image_size: tuple[int, int] = (256, 256),
                    instruction: str = "original", video_dir: str | Path | None = None,
                    max_steps: int | None = None, frames: str = "mp4", reuse_env: bool = False,
-                   gop: int | None = None) -> Episode:
+                   gop: int | None = None, visual: str = "decimated") -> Episode:
     """Run the oracle for one episode and record it.
 
     Args:
@@ -259,6 +259,8 @@ def record_episode(task: str, seed: int, embodiment: str = "floating_gripper",
             this changes nothing but the time.
         gop: most frames between keyframes of the MP4s (default
             :data:`rpg.demos.mp4.DEFAULT_GOP`).
+        visual: the robot's meshes in the images, ``"decimated"`` or ``"stock"``
+            (:class:`rpg.env.BlockTaskEnv`'s ``visual``).
 
     Returns:
         The :class:`Episode` (``success`` false when the oracle failed; its videos are then
@@ -273,7 +275,8 @@ def record_episode(task: str, seed: int, embodiment: str = "floating_gripper",
         raise ValueError(f"frames must be one of {FRAME_FORMATS}, not {frames!r}")
     gop = DEFAULT_GOP if gop is None else int(gop)
     encoder_options(gop)  # checks it
-    env = _environment((str(task), embodiment, tuple(cameras), tuple(image_size), instruction, max_steps), reuse_env)
+    env = _environment((str(task), embodiment, tuple(cameras), tuple(image_size), instruction, max_steps, visual),
+                       reuse_env)
     try:
         oracle = Oracle(env)
         obs, info = env.reset(seed=seed)

@@ -28,8 +28,11 @@ arm joints and its free joint's pose is ``robot0_hand_pos`` and ``robot0_hand_qu
 is what robomimic's ``SequenceDataset`` loads (``obs``, ``next_obs``, ``actions``, ``rewards``,
 ``dones``, the ``env_args`` attribute and filter keys).
 
-``env_kwargs`` says how to rebuild the environment: ``embodiment``, ``control_mode``,
-``cameras``, ``image_size``, ``tasks`` (every task's content hash -> its path in the library
+``env_kwargs`` says how to rebuild the environment: every keyword of
+:class:`rpg.env.BlockTaskEnv` the demos were recorded with that shapes what it observes or how
+an episode ends (:data:`ENV_KEYWORDS`: ``embodiment``, ``control_mode``, ``cameras``,
+``image_size``, ``visual``, ``privileged``, ``terminate_on_success``, ``max_episode_steps``; the
+instruction is each demo's own), ``tasks`` (every task's content hash -> its path in the library
 it was recorded from, a hint), and for a file of one task ``task_hash`` and ``task`` (that
 path).  :func:`make_env_from_metadata` rebuilds it, finding the task by its content hash in a
 library the caller names (a path recorded in a file is never loaded).
@@ -143,11 +146,13 @@ class RobomimicWriter:
         cameras: cameras recorded as images.
         image_size: (height, width) of the images.
         robot_type: the embodiment.
+        visual: the robot's meshes in the images (``decimated`` or ``stock``).
     """
 
     def __init__(self, root: str | Path, cameras: tuple[str, ...], image_size: tuple[int, int], robot_type: str,
-                 keep_failed: bool = False, task_paths: dict[str, str] | None = None):
+                 keep_failed: bool = False, task_paths: dict[str, str] | None = None, visual: str = "decimated"):
         self.root = Path(root)
+        self.visual = visual
         self.cameras = tuple(cameras)
         self.image_size = tuple(image_size)
         self.robot_type = robot_type
@@ -166,7 +171,7 @@ class RobomimicWriter:
 
     def _settings(self) -> dict:
         return {"format": "robomimic", "robot_type": self.robot_type, "cameras": list(self.cameras),
-                "image_size": list(self.image_size)}
+                "image_size": list(self.image_size), "visual": self.visual}
 
     def open(self) -> None:
         """Read what a previous run committed and remove what a kill left half-written.
@@ -179,8 +184,9 @@ class RobomimicWriter:
             raise BadInput(f"{self.root} holds a LeRobot dataset; give a new --out directory for --format hdf5")
         settings = self.meta / SETTINGS
         if settings.is_file():
-            if json.loads(settings.read_text()) != self._settings():
-                raise BadInput(f"{self.root} holds a dataset of another embodiment, cameras or image size; "
+            # a dataset from before ``visual`` was recorded has the default meshes
+            if {"visual": "decimated"} | json.loads(settings.read_text()) != self._settings():
+                raise BadInput(f"{self.root} holds a dataset of another embodiment, cameras, image size or visual; "
                                "give a new --out directory")
         elif self.root.is_dir() and any(p.name != ".staging" for p in self.root.iterdir()):
             raise BadInput(f"{self.root} is not empty and holds no rpg robomimic dataset; give a new --out directory")
@@ -284,11 +290,21 @@ class RobomimicWriter:
         for e in self.episodes:
             tasks.setdefault(e["task_hash"], e.get("task_path") or self.task_paths.get(e["task_hash"]))
         kwargs = {"embodiment": self.robot_type, "control_mode": "ee_delta", "cameras": list(self.cameras),
-                  "image_size": list(self.image_size), "tasks": tasks}
+                  "image_size": list(self.image_size), "visual": self.visual, "privileged": False,
+                  "terminate_on_success": True, "max_episode_steps": None, "tasks": tasks}
         if len(tasks) == 1:
             (h, p), = tasks.items()
             kwargs |= {"task_hash": h, "task": p}
         return {"env_name": ENV_NAME, "type": GYM_ENV_TYPE, "env_kwargs": kwargs}
+
+
+ENV_KEYWORDS = ("embodiment", "control_mode", "cameras", "image_size", "visual", "privileged",
+                "terminate_on_success", "max_episode_steps")
+"""The keywords of :class:`rpg.env.BlockTaskEnv` that ``env_kwargs`` records and
+:func:`make_env_from_metadata` passes back (the embodiment is each demo's own, checked against
+its provenance; the instruction likewise).  A file from before ``visual``, ``privileged``,
+``terminate_on_success`` and ``max_episode_steps`` were recorded gets the environment's defaults,
+which are what the demos were recorded with."""
 
 
 VALID_EVERY = 10
@@ -350,6 +366,9 @@ def dataset_file(root: str | Path) -> Path | None:
 
 MAX_ATTR_BYTES = 1024**2
 """Largest provenance attribute replay reads (``final_poses`` is the longest: ~100 bytes a body), bytes."""
+
+MAX_STEPS = 100_000
+"""Largest ``max_episode_steps`` :func:`make_env_from_metadata` accepts from ``env_kwargs``."""
 
 MAX_CHUNK_BYTES = 64 * 1024**2
 """Largest HDF5 chunk of an ``actions`` dataset replay reads (a chunk is decompressed whole), bytes."""
@@ -556,9 +575,22 @@ def make_env_from_metadata(path: str | Path, library: str | Path, demo: int | No
         raise BadInput(f"no task in {library} has content hash {prov['task_hash'][:12]} (demo_{demo} of {h5}); give "
                        "the library it was recorded from")
     settings = {"embodiment": prov["embodiment"], "control_mode": kwargs.get("control_mode", "ee_delta")}
-    for key in ("cameras", "image_size"):
-        if key in kwargs:
-            settings[key] = tuple(kwargs[key])
+    for key in ENV_KEYWORDS:
+        if key in kwargs and key not in settings:
+            value = kwargs[key]
+            if key in ("cameras", "image_size"):
+                if not isinstance(value, list) or not all(isinstance(v, (str, int)) for v in value):
+                    raise _refuse(h5, f"env_kwargs {key} is not a list")
+                value = tuple(value)
+            elif key == "max_episode_steps":
+                if value is not None and (type(value) is not int or not 0 < value <= MAX_STEPS):
+                    raise _refuse(h5, f"env_kwargs max_episode_steps is not null or an integer in [1, {MAX_STEPS}]")
+            elif key in ("privileged", "terminate_on_success"):
+                if type(value) is not bool:
+                    raise _refuse(h5, f"env_kwargs {key} is not a boolean")
+            elif not isinstance(value, str):
+                raise _refuse(h5, f"env_kwargs {key} is not a string")
+            settings[key] = value
     settings |= overrides
     env = BlockTaskEnv(task, **settings)
     if env.source.content_hash != prov["task_hash"]:
