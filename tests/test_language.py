@@ -77,13 +77,14 @@ def test_a_real_word_is_not_corrected_into_another():
 
 def test_relation_words_must_be_in_the_task():
     from rpg.schema.accounting import UnaccountedMention, account
-    from rpg.schema.builtin import COLOR_RE, _canon_color
+    from rpg.schema.lexicon import COLOR_RE
+    from rpg.schema.reading import canon_color
 
     schema = parse("stack the red block on the blue block")
     with pytest.raises(UnaccountedMention, match="left of"):
-        account("stack the red block on the blue block left of the green block", schema, COLOR_RE, _canon_color)
+        account("stack the red block on the blue block left of the green block", schema, COLOR_RE, canon_color)
     record = account("put the red block left of the blue block", parse("put the red block left of the blue block"),
-                     COLOR_RE, _canon_color)
+                     COLOR_RE, canon_color)
     assert {"mention": "left of", "kind": "relation", "consumed_by": "left_of"} in record
 
 

@@ -419,10 +419,10 @@ def test_reading_direction_tower_of_a_word_and_back_to_a_named_word(tmp_path):
 def test_structure_registry_drives_parser_steering_and_edits():
     """Each structure kind names a recognizer the parser runs, states a spec that the
     parser reads back to the same spec, and is what its words name in an edit."""
-    from rpg.schema import builtin
+    from rpg.schema.readers.registry import READERS
     from rpg.schema.structures import STRUCTURE_KINDS, STRUCTURE_WORDS, structure_of_word
 
-    recognizers = {r.__name__ for r in builtin.RECOGNIZERS}
+    recognizers = set(READERS)
     samples = {
         "tower": TaskSpec("tower", (Item("red"), Item("red"), Item("blue"))),
         "line": TaskSpec("line", (Item("red"), Item("green"), Item("blue"))),

@@ -23,7 +23,7 @@ import numpy as np
 from rpg.diversity.embeddings import _wordllama
 from rpg.domain.palette import PALETTE
 from rpg.schema import lexicon
-from rpg.schema.builtin import COLORS, VOCAB
+from rpg.schema.lexicon import COLORS, VOCAB
 
 CONTRASTS = [("left", "right"), ("front", "back"), ("above", "below"), ("top", "bottom"), ("on", "under"),
              ("before", "after"), ("first", "last"), ("ascending", "descending"), ("inside", "outside"),

@@ -9,8 +9,8 @@ message naming it (refuse rather than guess).  :func:`account` also returns the 
 which part of the task consumed each mention; the compiler writes it to ``task.yaml``
 under ``accounting``.
 
-Colours and labels are checked by the builtin front end (``builtin._unaccounted`` and
-``builtin.check_mentions``), which call :func:`account` for the rest.
+Colours and labels are checked by the builtin front end (:func:`unaccounted` and
+:func:`check_mentions`, below), which call :func:`account` for the rest.
 """
 
 from __future__ import annotations
@@ -22,7 +22,17 @@ from functools import lru_cache
 
 from rpg.domain import predicates as P
 from rpg.errors import BadInput
+from rpg.schema.lexicon import COLOR_RE, COLORS, COMPASS_CORNER_RE, ROLE_BEFORE, VOCAB
 from rpg.schema.model import TaskSchema
+from rpg.schema.reading import (
+    Features,
+    ParseError,
+    canon_color,
+    color_mentions,
+    explicit_labels,
+    mark_regions,
+    normalize,
+)
 from rpg.schema.structures import STRUCTURE_KINDS, STRUCTURE_RE, structure_of_word
 
 CUBE_NOUNS = r"(?:block|cube|box|piece|object|one)s?"
@@ -73,10 +83,6 @@ BARE_PLACES = {"front": "front", "back": "back", "rear": "back", "left": "left",
                "middle": "center", "center": "center", "centre": "center"}
 """Side words -> regions (:data:`rpg.domain.constants.REGION_NAMES`)."""
 
-
-ROLE_BEFORE = re.compile(r"\bwith\s+(?:the\s+)?[a-z0-9]+(?:\s+(?:block|cube|one|digit|letter))?\s*$")
-"""Text before "in the middle" that makes it a cube's role in a structure ("with blue in the
-middle"), not a place on the table."""
 
 SIDE_RELATIONS = {"left": ("left_of", "right_of"), "right": ("left_of", "right_of"),
                   "front": ("in_front_of", "behind"), "back": ("in_front_of", "behind")}
@@ -243,3 +249,82 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                 raise UnaccountedMention(f"the place '{place}' has no part in the task read")
             record.append({"mention": m.region.replace("_", " "), "kind": "place", "consumed_by": f"in_region {m.region}"})
     return record
+
+
+SINGLE_CUBE_RE = re.compile(rf"\b(?:the|a|an|one|that|this|your|my)\s+(?:single\s+|same\s+|other\s+)?({COLOR_RE})"
+                            rf"\s+(?:block|cube|box|one)\b(?!\s+(?:tower|stack|column|pile|row|line))")
+"""A colour named as exactly one cube: "the green block", "a red cube"."""
+
+
+def _single_color_bounds(text: str) -> dict[str, int]:
+    """Colours that normalised ``text`` names only as single cubes ("the green block"),
+    mapped to how many times it names them: the task may hold no more cubes of that colour."""
+    colors = Counter(c for _, c in color_mentions(text))
+    single = Counter(canon_color(m.group(1)) for m in SINGLE_CUBE_RE.finditer(text))
+    return {c: n for c, n in sorted(single.items()) if colors[c] == n}
+
+
+def account_named(text: str, schema: TaskSchema) -> list[dict]:
+    """Colours, then counts, patches, places and relations of normalised ``text`` against
+    ``schema`` (:func:`rpg.schema.accounting.account`).
+
+    Returns:
+        The accounting record: one ``{"mention", "kind", "consumed_by"}`` per mention, the
+        colours first.
+
+    Raises:
+        UnaccountedMention: the first mention with no part in the schema.
+    """
+    missing = sorted({c for _, c in color_mentions(text)} - {a.color for a in schema.assets})
+    if missing:
+        raise UnaccountedMention(f"the {', '.join(missing)} cube(s) it names have no place in that task")
+    cubes = Counter(a.color for a in schema.assets if a.kind != "goal_patch" and a.color)
+    for color, n in _single_color_bounds(text).items():
+        if cubes[color] > n:
+            raise UnaccountedMention(f"it names {'one' if n == 1 else n} {color} cube{'s' if n > 1 else ''} but the task "
+                                     f"read has {cubes[color]}")
+    named = dict.fromkeys(c for _, c in color_mentions(text))
+    record = [{"mention": c, "kind": "color",
+               "consumed_by": ", ".join(a.name for a in schema.assets if a.color == c)} for c in named]
+    record += [{"mention": a.label, "kind": "label", "consumed_by": a.name}
+               for a in schema.assets if a.kind == "semantic_cube" and a.label]
+    return record + account(mark_regions(text), schema, COLOR_RE, canon_color)
+
+
+def check_mentions(instruction: str, schema: TaskSchema) -> list[dict]:
+    """Check that ``schema`` accounts for the colours, counts, goal patches, places and
+    relations that ``instruction`` names, whoever wrote the schema (the builtin parser or a model).
+
+    Returns:
+        The accounting record (see :func:`rpg.schema.accounting.account`).
+
+    Raises:
+        UnaccountedMention: a named colour, count, patch, place or relation has no part in the schema.
+    """
+    return account_named(normalize(instruction, strict=False)[0], schema)
+
+
+def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
+    """The first word or mention of the instruction that ``schema`` has no place for, as the
+    ParseError to raise; None when every label, colour, count, patch, place and relation is in it."""
+    labels = "".join(a.label or "" for a in schema.assets)
+    compass = {m.group(1) for m in COMPASS_CORNER_RE.finditer(f.original.lower())}
+    caps = [w for w in re.findall(r"\b[A-Z]{2,}\b", f.original)
+            if w.lower() not in VOCAB and w.lower() not in COLORS and not set(w) <= set(labels)
+            and w.lower() not in compass]
+    if caps:
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {caps[0]!r} has no place in "
+                          "that task. Rephrase (e.g. \"spell the word ...\"), or use --model")
+    named_labels = {m.upper() for m in re.findall(r"\b(?:letter|number|digit)\s+'?([A-Za-z0-9])'?(?![A-Za-z0-9'])",
+                                                  f.original, re.IGNORECASE)}
+    if f.has("letter", "letters", "number", "numbers", "digit", "digits"):
+        named_labels |= set(explicit_labels(f))  # "the numbers 1 to 3 in a row, then ..."
+    if named_labels - set(labels):
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the cube labelled "
+                          f"{sorted(named_labels - set(labels))[0]!r} has no place in that task. Rephrase, or use --model")
+    try:
+        account_named(f.text, schema)
+    except UnaccountedMention as exc:
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {exc}. "
+                          "Rephrase (one sentence per structure helps), or use --model")
+    return None

@@ -420,15 +420,15 @@ CITERS: dict[str, Callable[[Constraint, _Reading], list[str]]] = {
 
 
 def _reading(schema: TaskSchema, text: str) -> _Reading:
-    from rpg.schema.accounting import UnaccountedMention
-    from rpg.schema.builtin import _regions, check_mentions, normalize
+    from rpg.schema.accounting import UnaccountedMention, check_mentions
+    from rpg.schema.reading import mark_regions, normalize
 
     try:
         record = check_mentions(text, schema)
     except (UnaccountedMention, BadInput):
         record = []
     try:
-        norm = _regions(normalize(text, strict=False)[0])
+        norm = mark_regions(normalize(text, strict=False)[0])
     except BadInput:
         norm = text.lower()
     return _Reading(norm, record, _Scene(schema))

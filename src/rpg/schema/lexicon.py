@@ -17,7 +17,10 @@ east = its right (-y), west = its left (+y).
 
 from __future__ import annotations
 
+import re
 from functools import lru_cache
+
+from rpg.domain.palette import COLOR_ALIASES, PALETTE
 
 IGNORABLE: frozenset[str] = frozenset("""
 please kindly carefully gently slowly quickly neatly precisely directly simply just now okay ok alright
@@ -114,3 +117,96 @@ def lemmas(word: str) -> tuple[str, ...]:
 def is_dictionary_word(word: str) -> bool:
     """Whether ``word`` is an English word lemminflect knows (so not to be typo-corrected)."""
     return bool(lemmas(word))
+
+
+NUMBER_WORDS = {
+    "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
+    "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "both": 2, "pair": 2, "couple": 2,
+    "single": 1, "thirteen": 13, "fourteen": 14, "fifteen": 15, "twenty": 20, "thirty": 30,
+}
+
+
+COLORS = sorted(set(PALETTE) | set(COLOR_ALIASES), key=len, reverse=True)
+
+
+COLOR_RE = "|".join(COLORS)
+
+
+VOCAB = set("""
+more additional extra a an the this that these those it its them they their each every all some any both of to in into on onto at
+by with and or but then first second third next after before finally also so such as from for is are be
+being been was were will should must can could would please you your me i we us our make build create
+form put place set move stack stacks stacked stacking tower towers arrange arranged arranging arrangement align
+aligned line lines row rows column columns sort sorted sorting order ordered ordering spell spelling spells
+word words using use used block blocks cube cubes cubic box boxes piece pieces object objects item items
+table surface top bottom base left right side front behind back middle center centre near next beside
+between under below beneath underneath above over atop adjacent alongside other another simple small
+big large tall single straight horizontal vertical circle circular ring round shape square squares grid
+rectangle rectangular array pyramid pyramids layer layers level levels cube-shaped pile piles group groups
+bunch bunches cluster clusters heap heaps separate separated apart together same different matching match
+matches color colors colour colours colored coloured gradient rainbow hue letter letters alphabet alphabetical
+alphabetically number numbers numeric numerical numerically digit digits increasing decreasing ascending
+descending reverse reversed strictly order equation math maths correct single-digit semantic label labels
+labelled labeled face faces facing up upward upwards camera robot visible rotate rotated turn flip show shows
+showing so read reads reading goal target patch patches long designated specific respective temporal exact
+exactly sequence sequential sequentially one outlier mixed assorted various random two three four five six
+seven eight nine ten many several wide high tall height x can build starts start starting initially
+begin begins beginning initial there where which who has have how shape shaped form forms do does
+shown kind type types by-color own its corresponding respectively per contain containing made consisting
+plus minus equals times operator operators symbol symbols mixed upright hold holds just only now want like
+out smallest largest lowest highest biggest least greatest tallest longest widest marked labelled labeled showing
+alternating alternate alternately alternates going goes go way up down upward downward stand standing
+wall walls wide deep long split divide pillar column close far triangle triangular formation write writes
+writing addition subtraction multiplication increase increases decrease decreases tier tiers story storey stories storeys instead actually
+rather backwards backward pick grab take lift get lay drop small little tiny mini huge one unstack unstacked off remove
+through corner corners sum area areas zone zones region regions spot spots location pad pads mat mats
+marker markers away distant opposite rear edge edges end ends half part workspace robot
+""".split())
+"""Words the builtin front end understands (besides colours, numbers and labels)."""
+
+
+COMPASS_CORNER_RE = re.compile(r"\b(?:the\s+)?(nw|ne|sw|se|north[- ]?west|north[- ]?east|south[- ]?west|south[- ]?east)\s+corner\b")
+
+
+COMPASS_REL_RE = re.compile(r"\b(?:to\s+the\s+|on\s+the\s+)?(north|south|east|west)(?:\s+side)?\s+of\b")
+
+
+COMPASS_SIDE_RE = re.compile(r"\b(?:the\s+)?(north|south|east|west)(?:ern)?\s+(side|edge|half|part|end)\b")
+
+
+TOWER_NOUNS = r"(?:tower|stack|column|pile|pillar)"
+
+
+HEIGHT_WORDS = r"(?:(?:blocks?|cubes?|stor(?:y|ey|ies|eys)|levels?|tiers?|layers?)(?:\s+(?:high|tall))?|high|tall)"
+
+
+REL_PATTERNS: list[tuple[str, str]] = [
+    (r"on (?:the )?left(?: hand)? side of|to the left of|on the left of|left of", "left_of"),
+    (r"on (?:the )?right(?: hand)? side of|to the right of|on the right of|right of", "right_of"),
+    (r"in front of", "in_front_of"),
+    (r"behind|in back of|at the back of", "behind"),
+    (r"next to|beside|adjacent to|alongside|near|close to", "next_to"),
+    (r"between", "between"),
+    (r"under|underneath|beneath|below", "under"),
+    (r"on top of|onto|on to|atop|above|on", "on"),
+    (r"(?:inside|within|into|in)(?=\s+(?:the\s+|a\s+)?(?:[a-z]+\s+){0,2}patch)", "on"),  # "in the green goal area"
+    (r"region_[a-z_]+", "region"),  # "@region_center": "in the middle of the table" (see mark_regions)
+]
+
+
+REF_PREP = r"\b(of|on|onto|to|beside|behind|near|under|below|beneath|above|atop|by|from|alongside|against)\s+"
+
+
+REGION_WORDS = {"rear": "back", "far": "back", "near": "front", "middle": "center", "centre": "center"}
+"""Words for a place on the table -> the words of :data:`constants.REGION_NAMES`."""
+
+
+ORDER_WORDS = re.compile(r"\b(rainbow|alternat\w*|order\w*|sequence|gradient|sort\w*|ascending|descending|"
+                         r"bottom|base|first|last|then|lightest|darkest|top(?! of (each other|one another)))\b")
+"""Words that give a stack's cubes places (an order, a role): a stack read with any of them
+keeps its order."""
+
+
+ROLE_BEFORE = re.compile(r"\bwith\s+(?:the\s+)?[a-z0-9]+(?:\s+(?:block|cube|one|digit|letter))?\s*$")
+"""Text before "in the middle" that makes it a cube's role in a structure ("with blue in the
+middle"), not a place on the table."""

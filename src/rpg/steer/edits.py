@@ -22,7 +22,9 @@ from dataclasses import asdict, dataclass, field, replace
 from rpg.domain.palette import GRADIENT_ORDER
 from rpg.errors import BadInput
 from rpg.schema.builder import DEFAULT_COLORS
-from rpg.schema.builtin import COLOR_RE, NUMBER_WORDS, VOCAB, _canon_color, item_sequence
+from rpg.schema.lexicon import COLOR_RE, NUMBER_WORDS, VOCAB
+from rpg.schema.readers.common import item_sequence
+from rpg.schema.reading import canon_color
 from rpg.schema.structures import STRUCTURE_KINDS, STRUCTURE_RE, pyramid_count, structure_of_word
 from rpg.steer.spec import Item, TaskSpec
 
@@ -160,7 +162,7 @@ def find_reference(t: str) -> RefCue:
     region = t[back.start():] if back is named else t[back.end():]
     cut = CUT_RE.search(region)
     region = region[: cut.start()] if cut else region
-    colors = tuple(dict.fromkeys(_canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", region)))
+    colors = tuple(dict.fromkeys(canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", region)))
     mats = _materials(region)
     s = re.search(STRUCTURE_RE, region)
     n = re.search(r"\b(\d+)[- ](?:blocks?|cubes?)\b", region)
@@ -241,7 +243,7 @@ def read_ops(t: str) -> list[Op]:
         at = "bottom" if move.group("where") in ("bottom", "base", "start", "beginning") else "top"
         ops.append(Op("move", {"select": _selector(move.group("sel")), "at": at}))
     pattern = re.search(r"\balternat\w*\b", t)
-    pattern_colors = [_canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", t)] if pattern else []
+    pattern_colors = [canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", t)] if pattern else []
     if len(dict.fromkeys(pattern_colors)) >= 2:
         ops.append(Op("pattern", {"colors": list(dict.fromkeys(pattern_colors))}))
     fewer = re.search(r"\b(?:remove|delete|take away|take off|drop|get rid of)\s+(\d+|an?|one)\s+(?:more\s+)?(?:of the\s+)?(?:blocks?|cubes?)\b"
@@ -276,7 +278,7 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("swap", {"a": _selector(swap.group("a")), "b": _selector(swap.group("b"))}))
     instead = re.search(rf"\b(?:use\s+)?(?:an?\s+|the\s+)?(?P<new>{COLOR_RE})(?:\s+(?:block|cube)s?)?\s+(?:instead of|rather than|in place of)\s+(?:the\s+)?(?P<old>{COLOR_RE})\b", t)
     if instead:
-        ops.append(Op("recolor", {"select": {"color": _canon_color(instead.group("old"))}, "to": {"color": _canon_color(instead.group("new"))}}))
+        ops.append(Op("recolor", {"select": {"color": canon_color(instead.group("old"))}, "to": {"color": canon_color(instead.group("new"))}}))
     repl = None if instead or swap else re.search(r"\b(?:replace|substitute|swap)\s+(?:the\s+)?(?P<old>.+?)\s+(?:with|for|by)\s+(?:an?\s+|the\s+)?(?P<new>.+)", t) or \
         re.search(r"\b(?:change|turn|make|paint|recolou?r|colou?r)\s+(?:the\s+)?(?P<old>.+?)\s+(?:to|into)\s+(?:an?\s+|be\s+)?(?P<new>.+)", t) or \
         re.search(rf"\b(?:make|paint)\s+(?:the\s+)?(?P<old>.+?)\s+(?P<new>(?:{COLOR_RE}))\b", t)

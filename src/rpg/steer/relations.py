@@ -25,8 +25,9 @@ from rpg.domain.predicates import (
     Stack,
 )
 from rpg.schema.builder import DEFAULT_COLORS
-from rpg.schema.builtin import COLOR_RE, _canon_color, region_name
+from rpg.schema.lexicon import COLOR_RE
 from rpg.schema.model import TaskSchema
+from rpg.schema.reading import canon_color, region_name
 from rpg.schema.structures import cube_list
 
 PHRASES = {"left_of": "to the left of", "right_of": "to the right of", "in_front_of": "in front of",
@@ -137,7 +138,7 @@ def _added(t: str, schema: TaskSchema, rel: Relation) -> tuple[str, str] | None:
     m = re.search(rf"\b(?:an?|another|one more|a new|an extra)\s+(?:new\s+|extra\s+)?({COLOR_RE})\s+(?:block|cube)\b(.*)", t)
     if m is None:
         return None
-    color, rest = _canon_color(m.group(1)), m.group(2)
+    color, rest = canon_color(m.group(1)), m.group(2)
     if any(a.color == color for a in schema.assets):
         return None  # a second cube of a colour the task has: left to the whole-task reading
     kind = next((k for pattern, k in EDIT_RELATIONS if re.search(pattern, rest)), None)
@@ -186,7 +187,7 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     t = re.sub(r"\btarget\b(?!\s+patch)", "patch", t)  # "make the target green"
     recolor = re.search(rf"\bpatch\b[^.;]*?\b(?:to|into|be|is)?\s*({COLOR_RE})\b|\b({COLOR_RE})\s+(?:goal\s+|target\s+)?patch\b", t)
     if recolor and re.search(r"\b(?:make|change|turn|use|paint|color|colour|switch)\b", t):
-        new = _canon_color(recolor.group(1) or recolor.group(2))
+        new = canon_color(recolor.group(1) or recolor.group(2))
         if new != pcolor:
             pcolor, intent = new, "tweak"
     if re.search(r"\blong(?:er)?\b", t) and shape != "long":
@@ -202,7 +203,7 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         spare = [c for c in DEFAULT_COLORS if c not in colors]
         colors, intent = (colors + spare)[:n] if n > len(colors) else colors[:n], "tweak"
     elif added:
-        colors, intent = colors + [_canon_color(added.group(1))], "extend"
+        colors, intent = colors + [canon_color(added.group(1))], "extend"
     if intent is None:
         return None
     return f"Place {cube_list(colors)} onto the {pcolor}{' long' if shape == 'long' else ''} goal patch", intent
@@ -251,11 +252,11 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     t = " " + edit.lower().strip().rstrip(".!") + " "
     region = _edit_region(t)
     added = re.search(rf"\b(?:add|put|place)\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b(.*)", t)
-    named = [_canon_color(c) for c in re.findall(rf"\bthe ({COLOR_RE}) (?:block|cube|one)\b", t)]
+    named = [canon_color(c) for c in re.findall(rf"\bthe ({COLOR_RE}) (?:block|cube|one)\b", t)]
     colors = [c for c, _ in placed]
     extra = ""
     if added:
-        color, rest = _canon_color(added.group(1)), added.group(2)
+        color, rest = canon_color(added.group(1)), added.group(2)
         if color in colors:
             return None
         where = _edit_region(rest)
@@ -281,9 +282,9 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         intent = "modify"
     else:
         recolor = re.search(rf"\b(?:make|turn|change|paint|color|colour)\b.*\b({COLOR_RE})\b", t)
-        if not recolor or len(placed) != 1 or _canon_color(recolor.group(1)) == placed[0][0]:
+        if not recolor or len(placed) != 1 or canon_color(recolor.group(1)) == placed[0][0]:
             return None
-        placed, intent = [(_canon_color(recolor.group(1)), placed[0][1])], "tweak"
+        placed, intent = [(canon_color(recolor.group(1)), placed[0][1])], "tweak"
     clauses = [f"place the {c} block {_region_phrase(r)}" for c, r in placed]
     text = ", then ".join(clauses) + extra
     return text[0].upper() + text[1:], intent

@@ -1,0 +1,95 @@
+"""The builtin front end's readers, and the parse loop that tries them.
+
+A *reader* reads one kind of instruction (a tower, a line, relations between named cubes, a
+temporal order...) into a :class:`~rpg.schema.builder.Builder`.  Each registers itself with
+:func:`~rpg.schema.readers.registry.reader` in the module of its family; :func:`parse` tries
+them in their registered order and keeps the first reading that accounts for every mention
+(:func:`rpg.schema.accounting.unaccounted`).
+
+Modules: :mod:`.registry` (the registry), :mod:`.common` (what several readers read the same
+way), and one module per family: :mod:`.places`, :mod:`.structures`, :mod:`.temporal`,
+:mod:`.patches`, :mod:`.labels`, :mod:`.relational`.
+"""
+
+from __future__ import annotations
+
+from pydantic import ValidationError
+
+from rpg.domain.predicates import And, Stack, UnorderedStack
+from rpg.schema import citations
+from rpg.schema.accounting import unaccounted
+from rpg.schema.builder import Builder, make_paraphrases
+from rpg.schema.lexicon import ORDER_WORDS
+from rpg.schema.model import TaskSchema
+from rpg.schema.readers import labels, patches, places, registry, relational, structures, temporal  # noqa: F401 (they register)
+from rpg.schema.reading import Features, ParseError, color_mentions, features, task_slug
+
+
+def free_unnamed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
+    """A stack none of whose cubes the instruction names, gives a role or relates to anything
+    else becomes an :class:`~rpg.domain.predicates.UnorderedStack`: "stack two blocks on top
+    of each other" says nothing of which goes on top, so G may not demand an order (a policy
+    that stacks them the other way has done what it was told).  The summary and paraphrases
+    then say "in any order" too, so no instruction the policy is given states an order G
+    lacks.  A colour named, an order word (:data:`ORDER_WORDS`) or a cube of the stack in
+    another part of the goal keeps the order."""
+    if ORDER_WORDS.search(f.text.lower()):
+        return schema
+    named = {c for _, c in color_mentions(f.text)}
+    colors = {a.name: a.color for a in schema.assets if a.kind == "colored_cube"}
+    goal = schema.goal_predicate()
+    parts = goal.children() if isinstance(goal, And) else [goal]
+
+    def free(p):
+        elsewhere = {n for q in parts if q is not p for n in q.object_names()}
+        if (type(p) is Stack and len(p.objects) > 1 and not set(p.objects) & elsewhere
+                and all(n in colors and colors[n] not in named for n in p.objects)):
+            return UnorderedStack(objects=p.objects)
+        return p
+
+    freed = [free(p) for p in parts]
+    if freed == parts:
+        return schema
+    new_goal = And(freed) if isinstance(goal, And) else freed[0]
+    summary = "; ".join(p.describe() for p in freed)
+    return schema.model_copy(update={"goal": new_goal, "goal_summary": summary,
+                                     "paraphrases": make_paraphrases(summary)})
+
+
+def parse(instruction: str) -> TaskSchema:
+    """Read an instruction into a TaskSchema.
+
+    Raises:
+        ParseError: the instruction is empty, too long, has words outside the domain, or
+            describes no task the parser knows (message quotes the problem, suggests --model).
+        UnknownColorError / UnknownLabelError: an unknown colour or label.
+    """
+    f = features(instruction)
+    first_gap: ParseError | None = None
+    for entry in registry.ordered():
+        b = Builder(f.original)
+        b.repairs = []
+        if entry.read(f, b):
+            try:
+                schema = b.schema(task_slug(f.original))
+            except ValidationError as exc:  # e.g. "the red block left of the red block"
+                reason = str(exc.errors()[0]["msg"]).removeprefix("Value error, ")
+                first_gap = first_gap or ParseError(f"read \"{f.original[:80]}\" as a task in which {reason}. "
+                                                    "Rephrase (e.g. \"two red blocks\"), or use --model")
+                continue
+            schema.repairs = b.repairs
+            gap = unaccounted(f, schema)
+            if gap is None:
+                # reverse accounting: a part of G nobody stated is dropped where a weaker goal
+                # exists (a tower's named end kept, the rest free); the rest is recorded as
+                # uncited in task.yaml. Not refused yet: the citations do not cover every
+                # parameter a reader sets (a line's axis, a default count), issue 30
+                return citations.enforce(free_unnamed_orders(f, schema), refuse=False)
+            first_gap = first_gap or gap  # a reading that drops a mention: try the next reader
+    if first_gap is not None:
+        raise first_gap
+    raise ParseError(
+        f"could not find a task in \"{f.original[:80]}\": name a structure (tower, line, circle, grid, "
+        "pyramid, piles), a relation (on, left of, behind...) or a goal (spell, sort, rotate); "
+        "or use --model to let a language model read it"
+    )

@@ -1,0 +1,149 @@
+"""Readers of places: a cube moved to a region, an unstacked stack, a structure beside a cube."""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+
+from rpg.domain import constants as C
+from rpg.domain.layouts import (
+    stack_layout,
+)
+from rpg.domain.predicates import (
+    Behind,
+    InFrontOf,
+    InRegion,
+    LeftOf,
+    NextTo,
+    OnTable,
+    RightOf,
+)
+from rpg.domain.state import Pose
+from rpg.errors import BadInput
+from rpg.schema import readers
+from rpg.schema.builder import DEFAULT_COLORS, Builder
+from rpg.schema.edits import recolor
+from rpg.schema.lexicon import COLOR_RE
+from rpg.schema.readers.common import region_spots
+from rpg.schema.readers.registry import reader
+from rpg.schema.reading import Features, canon_color, color_mentions, region_name
+from rpg.schema.structures import STRUCTURE_RE
+
+MOVE_TO_REGION_RE = re.compile(
+    rf"(?:go\s+)?(?:place|put|move|push|slide|sweep|shift|bring|set|drop)\s+(?:(?P<p>left|right)\s+)?the\s+(?P<c>{COLOR_RE})\s+"
+    r"(?:block|cube|box)(?:\s+(?:to|into|onto|on|in|at)\s+the\s+(?:(?P<fb>front|back|rear)\s+)?(?P<d>left|right|center|centre|middle|front|back)"
+    r"(?:\s+(?:hand\s+)?(?:side|half|part|edge|end|area|corner))?(?:\s+of\s+the\s+(?:table|workspace))?)?\s*[.!]?")
+
+
+@reader(order=10)
+def recognize_move_to_region(f: Features, b: Builder) -> bool:
+    """One cube moved to a place on the table, said without a second object: "push the red
+    block to the left", "slide right the blue block", "move the green block to the center",
+    "place the green block in the middle".
+    The goal is the cube in that region (:data:`constants.REGION_NAMES`); rho_0 starts it
+    outside (the emitter derives that from G)."""
+    m = MOVE_TO_REGION_RE.fullmatch(f.text)
+    if not m or bool(m.group("p")) == bool(m.group("d")):
+        return False
+    word = m.group("p") or m.group("d")
+    fb = m.group("fb") or (word if word in ("front", "back") else None)
+    region = region_name(fb, None if word in ("front", "back") else word)
+    color = canon_color(m.group("c"))
+    name = b.cube(color)
+    b.place({name: Pose((*region_spots(region, 1)[0], C.TABLE_TOP_Z + C.CUBE_EDGE / 2))})
+    b.preds.append(InRegion(name, region))
+    b.primitives += ["push" if re.match(r"(?:go\s+)?(?:push|slide|sweep)", f.text) else "place"]
+    b.summary.append(b.preds[-1].describe())
+    return True
+
+
+STRUCTURE_BY_CUBE_RE = re.compile(
+    rf"(?P<head>.+?)\s+(?P<rel>(?:to\s+the\s+)?left\s+of|(?:to\s+the\s+)?right\s+of|in\s+front\s+of|behind|next\s+to|beside)"
+    rf"\s+the\s+(?P<c>{COLOR_RE})\s+(?:block|cube)(?:\s+on\s+the\s+table)?\s*[.!]?")
+"""A structure placed relative to one named cube: "build a tower of 3 green blocks to the left of the red block"."""
+
+
+_SIDE = {"left": (LeftOf, 1, -1.0), "right": (RightOf, 1, 1.0), "front": (InFrontOf, 0, 1.0), "behind": (Behind, 0, -1.0)}
+"""Relation word -> (predicate, axis, side of the structure the reference cube goes to: +1 larger coordinate)."""
+
+
+@reader(order=190)
+def recognize_structure_by_cube(f: Features, b: Builder) -> bool:
+    """A structure stated on its own, then placed relative to a cube the structure does not
+    contain ("a tower of three green blocks to the left of the red block", "put 3 blue
+    blocks in a line behind the yellow block").  The structure is read by the whole parser
+    (its own clause); every cube of it must stand in the relation to the reference cube
+    (next to: a tower's base beside it).  Clauses compose: nothing of either part is
+    dropped or merged."""
+    m = STRUCTURE_BY_CUBE_RE.fullmatch(f.text)
+    if m is None or not re.search(STRUCTURE_RE, m.group("head")) or re.search(
+            r"\b(?:left|right|front|behind|back|next|beside|between|near|around|@region_[a-z_]+)\b", m.group("head")):
+        return False
+    try:
+        head = readers.parse(m.group("head"))  # the clause read by the whole front end
+    except BadInput:
+        return False
+    ref_color = canon_color(m.group("c"))
+    if any(a.kind == "goal_patch" for a in head.assets) or ref_color in {c for _, c in color_mentions(m.group("head"))}:
+        return False  # the reference would be one of the structure's own cubes
+    if any(a.color == ref_color for a in head.assets):  # an open colour the parser chose: give it a spare one
+        used = {a.color for a in head.assets}
+        head = recolor(head, ref_color, next(c for c in DEFAULT_COLORS if c not in used))
+    cubes = [a for a in head.assets if a.kind != "goal_patch"]
+    xy = np.array([head.goal_layout[a.name].position[:2] for a in cubes])
+    rel = m.group("rel")
+    word = next((w for w in ("left", "right", "front", "behind") if w in rel), "next")
+    gap = C.CUBE_EDGE + 0.03
+    if word == "next":
+        if np.ptp(xy, axis=0).max() > 1e-6:
+            return False  # "a line next to the red block": which of its cubes is not said
+        ref_xy = (xy[0][0], xy[0][1] - gap)
+        base = min(cubes, key=lambda a: head.goal_layout[a.name].position[2]).name
+        rels = [NextTo(base, "@ref")]
+    else:
+        cls, axis, side = _SIDE[word]
+        ref_xy = xy.mean(axis=0)
+        ref_xy[axis] = (xy[:, axis].max() + gap) if side > 0 else (xy[:, axis].min() - gap)
+        if np.abs(xy[:, 1 - axis] - ref_xy[1 - axis]).max() > C.RELATION_MAX_OFF_AXIS - 0.02:
+            return False  # a structure too wide to stand wholly on one side of one cube
+        rels = [cls(a.name, "@ref") for a in cubes]
+    for a in head.assets:
+        b._names[a.name] += 1
+        b.assets.append(a.model_copy())
+    b.place({n: p.pose() for n, p in head.goal_layout.items()})
+    ref = b.cube(ref_color)
+    b.place({ref: Pose((float(ref_xy[0]), float(ref_xy[1]), C.TABLE_TOP_Z + C.CUBE_EDGE / 2))})
+    b.preds.extend(head.goal.conjuncts() + [r.rename({"@ref": ref}) for r in rels])
+    b.structures, b.orientations = [list(x) for x in head.initial_state.structures], dict(head.initial_state.orientations)
+    b.reasoning, b.primitives = head.reasoning, list(head.primitives) + ["place"]
+    b.summary = [head.goal_summary, f"{rels[0].a} {rel.removeprefix('to the ')} {ref}" if word == "next"
+                 else f"every cube of it {rel.removeprefix('to the ')} {ref}"]
+    return True
+
+
+UNSTACK_RE = re.compile(
+    rf"(?:unstack|take|remove)\s+the\s+(?P<top>{COLOR_RE})\s+(?:block|cube|box)\s+"
+    rf"(?:off|from)\s+(?:of\s+)?(?:on\s+)?(?:the\s+)?(?:top\s+of\s+)?the\s+(?P<bottom>{COLOR_RE})\s+(?:block|cube|box)"
+    r"(?:\s*,?\s*(?:and\s+)?(?:then\s+)?(?:put|place|set|lay)\s+it\s+(?:down\s+)?on\s+the\s+table)?\s*[.!]?")
+"""One cube taken off another: "unstack the blue block from on top of the red block", "take
+the blue block off the red block (and put it on the table)".  Not "pick up" or "lift": those
+end with the cube in the hand, which no task ends with."""
+
+
+@reader(order=20)
+def recognize_unstack(f: Features, b: Builder) -> bool:
+    """A cube taken off the cube it starts stacked on: rho_0 starts the stack (bottom, top),
+    G is the top cube on the table (so no longer on the other)."""
+    m = UNSTACK_RE.fullmatch(f.text)
+    if not m:
+        return False
+    bottom, top = canon_color(m.group("bottom")), canon_color(m.group("top"))
+    low, high = b.cube(bottom), b.cube(top)
+    (x0, y0), (x1, y1) = b.unit_centers(2, 0.12)
+    b.place(stack_layout([low], (x0, y0)) | stack_layout([high], (x1, y1)))
+    b.structures.append([low, high])
+    b.preds.append(OnTable(high))
+    b.primitives += ["place"]
+    b.summary += [f"initially {high} is stacked on {low}", f"{high} on the table"]
+    return True

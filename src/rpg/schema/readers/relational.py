@@ -1,0 +1,467 @@
+"""The relational reader: stacks, patches and pairwise relations between named cubes.
+
+"put the red block on the blue block, and the green block left of it": each clause's
+mentions and relation words (:data:`rpg.schema.lexicon.REL_PATTERNS`) are read into a
+:class:`RelationalReading`, whose stacks, relations, patches and places are then laid out.
+"""
+
+from __future__ import annotations
+
+import itertools
+import re
+
+from rpg.domain import constants as C
+from rpg.domain.layouts import (
+    stack_layout,
+)
+from rpg.domain.predicates import (
+    Behind,
+    Between,
+    InFrontOf,
+    InRegion,
+    LeftOf,
+    NextTo,
+    OnPatch,
+    OnTable,
+    RightOf,
+    Stack,
+)
+from rpg.schema.builder import DEFAULT_COLORS, DEFAULT_PATCH_COLOR, Builder
+from rpg.schema.lexicon import COLOR_RE, REL_PATTERNS
+from rpg.schema.readers.common import (
+    DESCRIBED_TOWER_RE,
+    Mention,
+    colors_for,
+    free_spots,
+    initial_clause,
+    mark_references,
+    mentions_in,
+    patch_spots,
+    region_spots,
+    stated_count,
+    structure_colors,
+)
+from rpg.schema.readers.registry import reader
+from rpg.schema.reading import Features, ParseError, canon_color, features_colors, mark_regions
+
+
+@reader(order=200)
+def recognize_relational(f: Features, b: Builder) -> bool:
+    initial = initial_clause(f.text)
+    text = f.text if initial is None else (f.text[: initial[0]] + f.text[initial[1]:]).strip()
+    text = mark_regions(mark_references(text))
+    stackish = bool(re.search(r"\b(?:stack|stacks|stacked|tower|towers|pile up)\b", text))
+    if not (stackish or any(re.search(rf"\b(?:{p})\b", text) for p, _ in REL_PATTERNS)):
+        return False
+    described = list(DESCRIBED_TOWER_RE.finditer(text))
+    if len(described) >= 2:  # "a tower of 3 red blocks next to a tower of 3 blue blocks"
+        return _described_towers(text, described, b)
+    # towers of several stacks: "two towers", "two stacks of red blocks", "stacks on matching patches"
+    multi = re.search(r"\b(\d+)\s+(?:[a-z\-]+\s+)?(?:towers|stacks)\b", text)
+    patch_count = len({m.group(1) for m in re.finditer(rf"\b({COLOR_RE})\s+(?:goal\s+|target\s+)?patch\b", text)})
+    if stackish and patch_count >= 2 and not multi:  # "stack the red blocks on the red patch and the blue ... on the blue patch"
+        return _multi_stacks(f, b, patch_count)
+    if multi or (stackish and f.has("each stack", "matching", "color-specific", "respective", "patches", "towers", "stacks")):
+        return _multi_stacks(f, b, int(multi.group(1)) if multi else 2)
+    clauses = re.split(r"\bthen\b|;|,\s*(?:and\s+)?then\b|\.\s", text)
+    f = Features(text, f.original, features_colors(text), f.quoted)
+    objects: dict[tuple, list[str]] = {}
+    patch_names: dict[tuple, str] = {}
+    on_edges: list[tuple[str, str]] = []
+    rels: list = []
+    onpatch: list[tuple[str, str]] = []
+    bottom_top: dict[str, str] = {}
+    sides: dict[str, str] = {}
+    on_structure: list[str] = []  # cubes put on the stack the task builds ("on top of the stack")
+    by_structure: list[tuple[str, str]] = []  # (relation, cube) relative to that stack ("beside the tower")
+    subjects: set[tuple] = set()  # (colour, label) of cubes placed by a relation
+    previous: list[str] = []  # [subject, object] of the last relation: what "it" refers to
+    last_pair: list[Mention] = []  # the last relation's subject and object mentions
+    regions: list[tuple[list[Mention], str]] = []  # (subject mentions, region name): places on the table
+
+    def obj(mn: Mention, i: int = 0) -> str:
+        if mn.patch:
+            key = ("patch", mn.color, mn.shape)
+            if key not in patch_names:
+                patch_names[key] = b.patch(mn.color or DEFAULT_PATCH_COLOR, mn.shape)
+            return patch_names[key]
+        key = ("cube", mn.color, mn.label) if (mn.color or mn.label) else ("cube", None, None, i, mn.start)
+        lst = objects.setdefault(key, [])
+        if len(key) == 5:
+            i = 0
+        while len(lst) <= i:
+            lst.append(b.semantic(mn.label) if mn.label else b.cube(mn.color or _next_default(b, objects)))
+        return lst[i]
+
+    for clause in clauses:
+        ms = mentions_in(clause)
+        related: list[Mention] = []  # the subject of this clause's relation, if it has one
+        # "with a red block on bottom and blue on top"
+        for mn in ms:
+            tail = clause[mn.end: mn.end + 22]
+            if re.match(r"\s+(?:block\s+|cube\s+)?(?:on|at)\s+(?:the\s+)?(?:bottom|base)\b", tail):
+                bottom_top.setdefault("bottom", obj(mn))
+            elif re.match(r"\s+(?:block\s+|cube\s+)?(?:on|at)\s+(?:the\s+)?top\b(?!\s+of)", tail):
+                bottom_top.setdefault("top", obj(mn))
+        rel_re = "|".join(f"(?P<r{i}>\\b(?:{p})\\b)" for i, (p, _) in enumerate(REL_PATTERNS))
+        for rm in re.finditer(rel_re, clause):
+            kind = next(REL_PATTERNS[i][1] for i in range(len(REL_PATTERNS)) if rm.group(f"r{i}"))
+            left = [m for m in ms if m.end <= rm.start() and not m.patch]
+            right = [m for m in ms if m.start >= rm.end()]
+            if kind == "region":  # resolved once the stacks are known
+                group = related[:1] or (_listed_group(clause, left) if left else [])
+                regions.append((group, rm.group(0)[len("region_"):]))
+                continue
+            after = clause[rm.end():].strip()
+            side = re.match(r"(?:the\s+)?(left|right)(?:\s+(?:hand\s+)?side)?\b(?!\s+(?:hand\s+)?(?:side\s+)?of)", after)
+            if kind == "on" and side:
+                if left:
+                    sides[side.group(1)] = obj(left[-1])
+                continue
+            if kind == "on" and re.match(r"(?:the\s+)?(?:table|bottom|base|top\b(?!\s+of))", after):
+                continue
+            if kind in ("on", "next_to") and re.match(r"each other|one another|top of each other|itself", after):
+                if left:
+                    group = _listed_group(clause, left)
+                    if len(group) > 1:  # "the red and green blocks": one cube per colour, as listed
+                        names = [obj(mn) for mn in group]
+                    else:
+                        names = [obj(left[-1], i) for i in range(max(left[-1].count, 2))]
+                    if kind == "on":
+                        on_edges += [(u, lo) for lo, u in itertools.pairwise(names)]
+                    else:
+                        rels += [NextTo(a, c) for a, c in itertools.pairwise(names)]
+                        subjects.update((mn.color, mn.label) for mn in group)
+                continue
+            if not left or not right:
+                if kind == "on" and stackish and right and right[0].patch:
+                    onpatch.append(("*", obj(right[0])))
+                continue
+            a_m, b_m = left[-1], right[0]
+            if last_pair and a_m is last_pair[1] and re.fullmatch(r"\s*,?\s*and\s+(?:also\s+)?",
+                                                                    clause[a_m.end: rm.start()]):
+                a_m = last_pair[0]  # "X left of Y and behind Z": X is behind Z
+            last_pair[:] = [a_m, b_m]
+            related[:] = [a_m]
+            if a_m.ref:
+                continue
+            if b_m.ref == "@them" and not on_edges and previous:
+                b_m = Mention(b_m.start, b_m.end, None, None, 1, ref="@it")
+            elif b_m.ref == "@it" and not previous and stackish:  # "build a tower ... and put X behind it"
+                b_m = Mention(b_m.start, b_m.end, None, None, 1, ref="@s")
+            if b_m.ref in ("@s", "@them"):
+                if kind == "on":
+                    on_structure.append(obj(a_m))
+                elif kind not in ("under", "between"):
+                    by_structure.append((kind, obj(a_m)))
+                subjects.add((a_m.color, a_m.label))
+                continue
+            if b_m.ref == "@it":
+                if not previous:
+                    continue
+                referent = previous[0] if (kind == "on" and previous[1] in patch_names.values()) else previous[1]
+                a = obj(a_m)
+                subjects.add((a_m.color, a_m.label))
+                if referent in patch_names.values():
+                    onpatch.append((a, referent))
+                elif kind == "on":
+                    on_edges.append((a, referent))
+                elif kind == "under":
+                    on_edges.append((referent, a))
+                elif kind != "between":
+                    rels.append(_RELATIONS[kind](a, referent))
+                previous[:] = [a, referent]
+                continue
+            if kind == "on" and b_m.patch and stackish:
+                onpatch.append(("*", obj(b_m)))
+                if a_m.color or a_m.label:  # a named cube that "it" may refer to next
+                    previous[:] = [obj(a_m), obj(b_m)]
+                continue
+            if kind == "on" and b_m.patch:
+                group = _listed_group(clause, left)  # "the red block, the blue block and the green block onto ..."
+                for member in group:
+                    for i in range(member.count):
+                        onpatch.append((obj(member, i), obj(b_m)))
+                previous[:] = [obj(a_m), obj(b_m)]
+                continue
+            a, c = obj(a_m), obj(b_m)
+            previous[:] = [a, c]
+            if kind != "on":
+                subjects.add((a_m.color, a_m.label))
+            if kind == "on":
+                on_edges.append((a, c))
+            elif kind == "under":
+                on_edges.append((c, a))
+            elif kind == "between":
+                if len(right) < 2 and b_m.count < 2:
+                    continue
+                rels.append(Between(a, c, obj(right[1]) if len(right) >= 2 and b_m.count < 2 else obj(b_m, 1)))
+            else:
+                rels.append(_RELATIONS[kind](a, c))
+    if "bottom" in bottom_top and "top" in bottom_top:
+        on_edges.append((bottom_top["top"], bottom_top["bottom"]))
+    if "left" in sides and "right" in sides and sides["left"] != sides["right"]:
+        rels.append(LeftOf(sides["left"], sides["right"]))
+    # a bare "stack N blocks" / "stack blocks on the patch"
+    if stackish and not on_edges:
+        ms = [m for m in mentions_in(text) if not m.patch and not m.ref and (m.color, m.label) not in subjects]
+        n = stated_count(f, default=None) or (max(m.count for m in ms) if ms else 2)
+        n = max(n, 2)
+        if ms and ms[0].color and all(m.color == ms[0].color for m in ms):
+            names = [obj(ms[0], i) for i in range(n)]
+        elif len(ms) > n and len({(m.color, m.label) for m in ms}) == len(ms):  # "a tower of red, green and blue"
+            names = [obj(m) for m in ms]
+        else:
+            named = [c for c in dict.fromkeys(f.color_list()) if (c, None) not in subjects]
+            cols = colors_for(n, f, prefer=named)  # not the colours of cubes placed beside it
+            cols += [c for c in DEFAULT_COLORS if c not in cols and (c, None) not in subjects][: n - len(cols)]
+            names = [obj(Mention(0, 0, c, None, 1)) for c in cols[:n]]
+        on_edges += [(u, lo) for lo, u in zip(names, names[1:], strict=False)]
+    if on_structure or by_structure:
+        _resolve_structure(b, objects, on_edges, rels, on_structure, by_structure, structure_colors(text))
+    placed_in = _resolve_regions(regions, on_edges, obj, stackish, previous)
+    if not on_edges and not rels and not onpatch and not placed_in:
+        return False
+    if len({p for a, p in onpatch if a == "*"}) > 1:
+        raise ParseError("one stack cannot stand on several patches; say which cubes go on which patch")
+    if any(a == "*" for a, _ in onpatch) or (stackish and onpatch):
+        target = onpatch[0][1]
+        onpatch = [(a, p) for a, p in onpatch if a != "*"]
+        chains = _chains(on_edges)
+        if chains:
+            onpatch.append((chains[0][0], target))
+    # cubes that are only on patches (place both blocks onto the patch)
+    chains = _chains(on_edges)
+    if chains is None:
+        cycle = ", ".join(f"{a} on {b_}" for a, b_ in on_edges)
+        raise ParseError(f"the stacking relations of \"{f.original[:80]}\" contradict each other ({cycle}: "
+                         "something would be on itself); say once which cube goes on which, or use --model")
+    _layout_relational(b, chains, rels, onpatch, placed_in)
+    for ch in chains:
+        b.preds.append(Stack(tuple(ch)) if len(ch) > 1 else OnTable(ch[0]))
+        if len(ch) > 1:
+            b.summary.append("tower bottom to top: " + ", ".join(ch))
+    b.preds += rels
+    for a, region in placed_in:
+        b.preds.append(InRegion(a, region))
+        b.summary.append(b.preds[-1].describe())
+    for a, p in onpatch:
+        b.preds.append(OnPatch(a, p))
+        b.summary.append(f"{a} on {p}")
+    b.summary += [r.describe() for r in rels]
+    b.primitives += ["stack"] if any(len(c) > 1 for c in chains) else ["place"]
+    if initial is not None:
+        by_color = {a.color: a.name for a in b.assets if a.kind == "colored_cube"}
+        bottom, top = initial[2], initial[3]
+        if bottom not in by_color or top not in by_color:
+            raise ParseError(f"the initial state names a {top if top not in by_color else bottom} cube the task does not have")
+        b.structures.append([by_color[bottom], by_color[top]])
+        b.summary.append(f"initially {top} is stacked on {bottom}")
+    return True
+
+
+def _described_towers(text: str, described: list[re.Match], b: Builder) -> bool:
+    """Several towers each described by height and colour, side by side or in a stated
+    relation to each other ("a tower of 3 red blocks next to a tower of 3 blue blocks",
+    "... to the left of ...")."""
+    towers = []
+    for m in described:
+        height = int(m.group(1))
+        if height < 2:
+            raise ParseError("a tower needs at least two cubes")
+        towers.append([b.cube(canon_color(m.group(2))) for _ in range(height)])
+    rels = []
+    for (m1, t1), (m2, t2) in itertools.pairwise(zip(described, towers, strict=True)):
+        between = text[m1.end(): m2.start()]
+        kind = next((k for p, k in REL_PATTERNS if k not in ("on", "under", "between") and re.search(rf"\b(?:{p})\b", between)), None)
+        if kind is not None and kind not in _RELATIONS:
+            raise ParseError(f"cannot read how the towers in \"{text[:80]}\" relate ({kind.replace('_', ' ')}); "
+                             "describe each tower and one relation between them, or use --model")
+        if kind:
+            rels.append(_RELATIONS[kind](t1[0], t2[0]))
+    _layout_relational(b, towers, rels, [])
+    for t in towers:
+        b.preds.append(Stack(tuple(t)))
+        b.summary.append("tower bottom to top: " + ", ".join(t))
+    b.preds += rels
+    b.summary += [r.describe() for r in rels]
+    b.primitives += ["stack"]
+    return True
+
+
+def _listed_group(clause: str, left: list[Mention]) -> list[Mention]:
+    """The mentions listed together just before a relation ("the red, the blue and the
+    green block", "the red and green blocks"): the last one and those joined to it by
+    commas or "and"."""
+    group = [left[-1]]
+    for mn in reversed(left[:-1]):
+        if mn.ref or not re.fullmatch(r"\s*(?:,\s*and|,|and)\s*(?:the\s+)?", clause[mn.end: group[0].start]):
+            break
+        group.insert(0, mn)
+    return group
+
+
+_RELATIONS = {"left_of": LeftOf, "right_of": RightOf, "in_front_of": InFrontOf, "behind": Behind, "next_to": NextTo}
+
+
+def _resolve_regions(regions: list[tuple[list[Mention], str]], on_edges: list, obj, stackish: bool,
+                     previous: list[str]) -> list[tuple[str, str]]:
+    """(cube, region) for each place on the table: the cubes named before it, or, for "the
+    stack" / "it" / a tower of unnamed cubes, the base of the tallest tower."""
+    out = []
+    for group, region in regions:
+        named = [m for m in group if (m.color or m.label) and not m.ref]
+        if named:
+            single = len(named) == 1
+            out += [(obj(m, i), region) for m in named for i in range(m.count if single else 1)]
+            continue
+        chains = sorted(_chains(on_edges) or [], key=len, reverse=True)
+        if group and group[-1].ref in ("@it", "@them") and previous and not stackish:
+            out.append((previous[0], region))
+        elif chains and len(chains[0]) > 1:
+            out.append((chains[0][0], region))
+        elif group and not group[-1].ref:
+            out += [(obj(group[-1], i), region) for i in range(group[-1].count)]
+    return out
+
+
+def _resolve_structure(b: Builder, objects: dict, on_edges: list, rels: list, on_structure: list[str],
+                       by_structure: list[tuple[str, str]], colors: list[str]) -> None:
+    """Resolve "the stack" / "the tower": the tallest tower the instruction builds, or,
+    when it builds none, the tower it describes ("the tower of red and blue", bottom to
+    top), or else a two-cube tower of colours it does not use (the stack the sentence
+    takes for granted).  Cubes put "on the stack" go on its top, in order; relations
+    "beside the tower" are taken to its base."""
+    chains = _chains(on_edges) or []
+    subjects = set(on_structure) | {c for _, c in by_structure}
+    tall = sorted((ch for ch in chains if len(ch) > 1 and not subjects & set(ch)), key=len, reverse=True)
+    if tall:
+        tower = tall[0]
+    else:
+        tower = [b.cube(c) for c in colors] if len(colors) >= 2 else []
+        while len(tower) < 2:
+            tower.append(b.cube(colors[0] if colors and not tower else _next_default(b, objects)))
+        on_edges += [(up, lo) for lo, up in itertools.pairwise(tower)]
+    top = tower[-1]
+    for cube in on_structure:
+        on_edges.append((cube, top))
+        top = cube
+    for kind, cube in by_structure:
+        rels.append(_RELATIONS[kind](cube, tower[0]))
+
+
+def _next_default(b: Builder, objects: dict) -> str:
+    used = {k[1] for k in objects if k[0] == "cube"} | {a.color for a in b.assets}
+    return next(c for c in DEFAULT_COLORS if c not in used)
+
+
+def _chains(edges: list[tuple[str, str]]) -> list[list[str]] | None:
+    """Support chains bottom to top from (upper, lower) edges; None if they contradict."""
+    import networkx as nx
+
+    g = nx.DiGraph()
+    for up, lo in edges:
+        if up == lo:
+            return None
+        g.add_edge(lo, up)
+    if not nx.is_directed_acyclic_graph(g) or any(g.out_degree(n) > 1 or g.in_degree(n) > 1 for n in g):
+        return None
+    chains = []
+    for n in sorted(g.nodes):
+        if g.in_degree(n) == 0:
+            ch = [n]
+            while g.out_degree(ch[-1]):
+                ch.append(next(iter(g.successors(ch[-1]))))
+            chains.append(ch)
+    return chains
+
+
+def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch: list[tuple[str, str]],
+                       regions: list[tuple[str, str]] = ()) -> None:
+    """Place stacks, related cubes and patches so every relation holds; cubes given a
+    region of the table go to its centre first (side by side when several share one)."""
+    placed: dict[str, tuple[float, float]] = {}
+    base_of = {n: ch[0] for ch in chains for n in ch}
+    cube_names = [a.name for a in b.assets if a.kind != "goal_patch"]
+    for n in [a.name for a in b.assets]:
+        base_of.setdefault(n, n)
+    by_region: dict[str, list[str]] = {}
+    for a, region in regions:
+        if base_of[a] not in by_region.setdefault(region, []):
+            by_region[region].append(base_of[a])
+    for region, members in by_region.items():
+        for m, xy in zip(members, region_spots(region, len(members)), strict=True):
+            placed[m] = xy
+    offset = {"left_of": (0.0, 0.10), "right_of": (0.0, -0.10), "in_front_of": (-0.10, 0.0), "behind": (0.10, 0.0),
+              "next_to": (0.0, 0.06)}
+    cx, cy = C.WORKSPACE_CENTER
+    for r in rels:
+        a, c = base_of[r.a], base_of[r.b]
+        if isinstance(r, Between):
+            c2 = base_of[r.c]
+            placed.setdefault(a, (cx, cy))
+            ax, ay = placed[a]
+            placed.setdefault(c, (ax, ay + 0.08))
+            placed.setdefault(c2, (ax, ay - 0.08))
+            continue
+        dx, dy = offset[r.name]
+        if c not in placed and a not in placed:
+            placed[c] = (cx - dx / 2, cy - dy / 2)
+        if c in placed and a not in placed:
+            placed[a] = (placed[c][0] + dx, placed[c][1] + dy)
+        elif a in placed and c not in placed:
+            placed[c] = (placed[a][0] - dx, placed[a][1] - dy)
+    all_patches = {a.name for a in b.assets if a.kind == "goal_patch"}
+    patches = sorted({p for _, p in onpatch} - set(placed))
+    patch_xy = {p: placed[p] for p in sorted(all_patches & set(placed))}  # placed by a relation ("behind the patch")
+    pc = b.unit_centers(len(patches), 0.16) if patches else []
+    patch_xy.update(zip(patches, pc, strict=True))
+    for p, xy in sorted(patch_xy.items()):
+        b.place_patch(p, xy)
+    on_patch_by: dict[str, list[str]] = {}
+    for a, p in onpatch:
+        on_patch_by.setdefault(p, []).append(base_of[a])
+    for p, members in on_patch_by.items():
+        members = list(dict.fromkeys(members))
+        px, py = patch_xy[p]
+        shape = next(a.shape for a in b.assets if a.name == p)
+        for m, xy in zip(members, patch_spots((px, py), shape, len(members)), strict=True):
+            placed[m] = xy
+    free = [n for n in dict.fromkeys(base_of[n] for n in cube_names) if n not in placed]
+    spots = iter(free_spots(list(placed.values()) + list(patch_xy.values()), len(free)))
+    for n in free:
+        placed[n] = next(spots)
+    for ch in chains:
+        b.place(stack_layout(ch, placed[ch[0]]))
+    for n in cube_names:
+        if n not in b.layout:
+            b.place(stack_layout([n], placed[base_of[n]]))
+
+
+def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
+    colors = list(dict.fromkeys(f.color_list()))
+    each = re.search(r"\b(?:towers|stacks)\s+(?:of|with)\s+(\d+)\b|\b(\d+)\s+(?:blocks?|cubes?)\s+(?:high|tall|each)\b", f.text)
+    height = int(each.group(1) or each.group(2)) * k if each else stated_count(f, "block|cube", default=None)
+    matching = f.has("matching", "same color", "color-specific", "respective", "each stack is the same", "colored goal")
+    with_patches = f.has("patch", "patches", "target", "targets")
+    if height and height >= 2 * k:
+        height = height // k
+    height = height if height and height >= 2 else 2
+    if len(colors) == 1 and not with_patches:
+        stack_colors = [[colors[0]] * height for _ in range(k)]
+    else:
+        palette = colors_for(k, f, prefer=colors)
+        stack_colors = [[c] * height for c in palette] if (matching or with_patches or len(colors) <= 1) else [
+            colors_for(height, f) for _ in range(k)]
+    centers = b.unit_centers(k, 0.16)
+    for cols, xy in zip(stack_colors, centers, strict=True):
+        names = [b.cube(c) for c in cols]
+        b.place(stack_layout(names, xy))
+        b.preds.append(Stack(tuple(names)))
+        if with_patches:
+            p = b.patch(cols[0])
+            b.place_patch(p, xy)
+            b.preds.append(OnPatch(names[0], p))
+    b.primitives += ["stack"]
+    b.summary.append(f"{k} towers of {height} cubes" + (", each on the patch of its color" if with_patches else ""))
+    return True

@@ -1,0 +1,505 @@
+"""Readers of structures: pyramids, blocks, walls, grids, circles, piles, lines and towers.
+
+Each reader builds one structure kind of :mod:`rpg.schema.structures` (its ``recognizer``
+names the reader) with the layout of :mod:`rpg.domain.layouts`.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import re
+
+from rpg.domain import constants as C
+from rpg.domain.layouts import (
+    circle_layout,
+    circle_radius,
+    cluster_layout,
+    grid_layout,
+    line_layout,
+    pyramid_layout,
+    stack_layout,
+)
+from rpg.domain.palette import GRADIENT_ORDER
+from rpg.domain.predicates import (
+    Between,
+    Grid,
+    InCircle,
+    InLine,
+    InRegion,
+    LayersUniform,
+    Piles,
+    Pyramid,
+    Reads,
+    SortedBy,
+    Stack,
+)
+from rpg.schema import clauses
+from rpg.schema.builder import DEFAULT_COLORS, Builder
+from rpg.schema.lexicon import COLOR_RE
+from rpg.schema.readers.common import (
+    DESCRIBED_TOWER_RE,
+    ITEM_RE,
+    alternating_colors,
+    asks_per_layer,
+    colors_for,
+    directed_line,
+    direction_of,
+    fill_structure,
+    item_sequence,
+    label_sequence,
+    line_axis,
+    mark_references,
+    material_of,
+    ordering_of,
+    outlier_count,
+    region_spots,
+    spectrum_of,
+    spelled_word,
+    stated_count,
+    tower_order,
+)
+from rpg.schema.readers.registry import reader
+from rpg.schema.reading import Features, ParseError, canon_color, explicit_labels, mark_regions
+
+
+@reader(order=100)
+def recognize_pyramid(f: Features, b: Builder) -> bool:
+    if not f.has("pyramid", "pyramids", "triangle", "triangular"):
+        return False
+    dims_m = re.search(r"\b(\d+)x(\d+)\b", f.text)
+    if dims_m:
+        base, dims = int(dims_m.group(1)), 3
+    else:
+        m = re.search(r"base\s+(?:of\s+|is\s+|with\s+)?(\d+)", f.text) or re.search(r"(\d+)\s+(?:[a-z]+\s+){0,2}(?:block|cube)s?\s+(?:on|at|as|in)\s+(?:the\s+)?(?:base|bottom)", f.text)
+        layers = re.search(r"\b(\d+)\s+(?:layers?|levels?|tiers?|stor(?:y|ey|ies|eys))\b", f.text)
+        m = m or layers
+        total = stated_count(f, default=None)
+        from_total = next((k for k in range(2, 8) if k * (k + 1) // 2 == total), None) if total else None
+        size = 2 if f.has("small", "little", "tiny", "mini") else 4 if f.has("big", "large", "tall", "huge") else 3
+        named = len(set(f.color_list()))  # "the red, green and blue blocks in a triangle": 3 cubes
+        from_named = next((k for k in range(2, 8) if k * (k + 1) // 2 == named), None) if named >= 3 else None
+        base, dims = (int(m.group(1)) if m else from_total or from_named or size), 2
+    if base < 2:
+        raise ParseError("a pyramid needs a base of at least 2")
+    n = sum((base - k) ** (dims - 1) for k in range(base))
+    if n > C.MAX_OBJECTS:
+        raise ParseError(f"a pyramid with base {base} needs {n} cubes; the most a task holds is {C.MAX_OBJECTS}")
+    material = material_of(f)
+    order = ordering_of(f)
+    if material == "colors" and asks_per_layer(f):
+        sizes = [(base - k) ** (dims - 1) for k in range(base)]
+        cols = colors_for(base, f, prefer=list(dict.fromkeys(f.color_list())))
+        names = [b.cube(cols[k]) for k, size in enumerate(sizes) for _ in range(size)]
+        b.place(pyramid_layout(names, base, dims))
+        b.preds.append(LayersUniform(tuple(names), by="color", axis="z"))
+        b.summary.append("each layer a different color")
+    else:
+        # a 2D pyramid stands in the plane facing the camera: each layer covers the up faces of
+        # the one below, so its labels show on the front faces
+        fill_structure(f, b, n, material, order, lambda names: pyramid_layout(names, base, dims),
+                        face="front" if dims == 2 else "up")
+    names = [a.name for a in b.assets]
+    b.preds.insert(0, Pyramid(tuple(names), base=base, dims=dims))
+    b.primitives += ["stack"]
+    shape = f"{base}x{base}" if dims == 3 else str(base)
+    b.summary.insert(0, f"a {dims}D pyramid with a base of {shape} ({n} cubes)")
+    return True
+
+
+@reader(order=110)
+def recognize_cube_block(f: Features, b: Builder) -> bool:
+    m = re.search(r"\b(\d+)x(\d+)x(\d+)\b", f.text)
+    if not m:
+        return False
+    r, c, layers = (int(g) for g in m.groups())
+    _lattice(f, b, r, c, layers, f"a {r}x{c}x{layers} block of {r * c * layers} cubes")
+    return True
+
+
+WALL_DIMS = (3, 2)
+"""Width and height of a wall when the instruction gives neither, cubes."""
+
+
+@reader(order=120)
+def recognize_wall(f: Features, b: Builder) -> bool:
+    """A wall: one row of cubes ``width`` long (left to right) and ``height`` layers high
+    ("a wall three blocks wide and two high", "a 4x2 wall", "a wall of six blocks")."""
+    if not f.has("wall"):
+        return False
+    wide = re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+)?(?:wide|long|across)\b", f.text)
+    high = re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+|layers?\s+|rows?\s+|levels?\s+)?(?:high|tall)\b", f.text)
+    dims = re.search(r"\b(\d+)x(\d+)\b", f.text)
+    width = int(wide.group(1)) if wide else (int(dims.group(1)) if dims else None)
+    height = int(high.group(1)) if high else (int(dims.group(2)) if dims else None)
+    count = re.search(r"\b(\d+)\s+(?:[a-z]+\s+)?(?:blocks|cubes)\b(?!\s+(?:wide|long|across|high|tall))", f.text)
+    total = int(count.group(1)) if count else None
+    if width is None and height is None:
+        height = WALL_DIMS[1]
+        width = max(2, total // height) if total else WALL_DIMS[0]
+    elif width is None:
+        width = max(2, total // height) if total and total > height else WALL_DIMS[0]
+    elif height is None:
+        height = max(1, total // width) if total and total > width else WALL_DIMS[1]
+    if total and total != width * height and (wide or high or dims):
+        raise ParseError(f"a wall {width} wide and {height} high has {width * height} cubes, not {total}")
+    _lattice(f, b, 1, width, height, f"a wall {width} cubes wide and {height} high ({width * height} cubes)")
+    return True
+
+
+def _lattice(f: Features, b: Builder, r: int, c: int, layers: int, what: str) -> None:
+    """A rows x cols x layers lattice of touching cubes (a 3D block, a wall)."""
+    n = r * c * layers
+    if n > C.MAX_OBJECTS:
+        raise ParseError(f"{what.split(' (')[0].split(' of ')[0]} needs {n} cubes; the most a task holds is {C.MAX_OBJECTS}")
+    if n < 2:
+        raise ParseError("a structure of fewer than two cubes: give a larger size")
+    per_layer = asks_per_layer(f)
+    if per_layer:
+        cols = colors_for(layers, f, prefer=[c for c in dict.fromkeys(f.color_list())])
+        colors = [cols[lay] for lay in range(layers) for _ in range(r * c)]
+        names = [b.cube(col) for col in colors]
+    else:
+        names = fill_structure(f, b, n, material_of(f), ordering_of(f), lambda ns: ns and {})
+    b.place(grid_layout(names, r, c, layers))
+    b.preds.insert(0, Grid(tuple(names), r, c, layers))
+    if per_layer:
+        b.preds.append(LayersUniform(tuple(names), by="color", axis="z"))
+        b.summary.append("each layer a different color")
+    b.primitives += ["stack"]
+    b.summary.insert(0, what)
+
+
+@reader(order=130)
+def recognize_grid(f: Features, b: Builder) -> bool:
+    m = re.search(r"\b(\d+)x(\d+)\b", f.text)
+    rows = re.search(r"\b(\d+)\s+rows\s+of\s+(\d+)\b", f.text)
+    if m is None and rows:
+        m = re.search(r"(\d+)x(\d+)", f"{rows.group(1)}x{rows.group(2)}")
+    if m is None and re.search(r"\b(?:a|the)\s+(?:[a-z]+\s+)?(?:square|grid)\b(?!\s+patch)", f.text) and not f.has("patch", "patches"):
+        side = max(2, round(math.sqrt(stated_count(f, default=4))))
+        m = re.search(r"(\d+)x(\d+)", f"{side}x{side}")
+    if not m or not (rows or f.has("square", "grid", "rectangle", "rectangular", "array", "block", "blocks", "cubes", "arrangement",
+                                   "formation")):
+        return False
+    r, c = int(m.group(1)), int(m.group(2))
+    n = r * c
+    if n > C.MAX_OBJECTS:
+        raise ParseError(f"a {r}x{c} grid needs {n} cubes; the most a task holds is {C.MAX_OBJECTS}")
+    names = fill_structure(f, b, n, material_of(f), ordering_of(f), lambda ns: grid_layout(ns, r, c))
+    b.preds.insert(0, Grid(tuple(names), r, c))
+    b.primitives += ["arrange"]
+    b.summary.insert(0, f"a {r}x{c} grid of {n} touching cubes")
+    return True
+
+
+@reader(order=140)
+def recognize_circle(f: Features, b: Builder) -> bool:
+    corners = re.search(r"\bcorners of (?:a|the) square\b", f.text)
+    if not f.has("circle", "circular", "ring", "round", "circles") and not corners:
+        return False
+    n = stated_count(f, default=4 if corners else 6)
+    if n < 3:
+        raise ParseError("a circle needs at least 3 cubes")
+    names = fill_structure(f, b, n, material_of(f), None, lambda ns: circle_layout(ns))
+    b.preds.insert(0, InCircle(tuple(names)))
+    b.primitives += ["arrange"]
+    b.summary.insert(0, f"{n} cubes evenly spaced on a circle of radius {circle_radius(n) * 100:.0f} cm")
+    return True
+
+
+@reader(order=150)
+def recognize_piles(f: Features, b: Builder) -> bool:
+    separate = re.search(r"\b(?:separate|split|divide)\b.*\b(?:from|by colou?r|into)\b", f.text)
+    if not (f.has("pile", "piles", "bunch", "bunches", "group", "groups", "cluster", "clusters", "heap", "heaps")
+            or separate):
+        return False
+    material = material_of(f)
+    groups: list[list[str]] = []
+    if material == "mixed" or f.has("type", "types", "kind"):
+        labels_l, _ = label_sequence("letters", 3, b, ordered=False)
+        labels_d, _ = label_sequence("digits", 3, b, ordered=False)
+        groups = [[b.semantic(lab) for lab in labels_l], [b.semantic(lab) for lab in labels_d]]
+        if f.colors or f.has("color", "colors", "colour", "colours", "colored", "coloured") or material != "mixed":
+            groups.append([b.cube(c) for c in ("red", "blue", "green")])
+        by = "type"
+    else:
+        k = stated_count(f, "pile|bunch|group|cluster|heap", default=None)
+        if k == 1 or re.search(r"\b(?:a|one|single)\s+(?:single\s+)?(?:pile|heap|bunch|cluster|group)\b", f.text):
+            raise ParseError("a pile task sorts cubes into two or more piles; for all cubes together, "
+                             "say \"stack all the blocks\" or name the piles")
+        colors = list(dict.fromkeys(f.color_list())) or colors_for(k or 3, f, prefer=[])
+        per = stated_count(f, default=None)
+        per = max(2, per // len(colors)) if per else 3
+        groups = [[b.cube(c) for _ in range(per)] for c in colors]
+        by = "color"
+    outliers = outlier_count(f)
+    if outliers:
+        if any(len(g) <= outliers for g in groups):
+            raise ParseError(f"each pile needs more than {outliers} cube(s) to hold {outliers} outlier(s)")
+        # the last `outliers` members of each pile move to the next pile
+        moved = [g[-outliers:] for g in groups]
+        groups = [g[:-outliers] + moved[i - 1] for i, g in enumerate(groups)]
+    centers = b.unit_centers(len(groups), 0.16)
+    b.place(cluster_layout(groups, centers))
+    names = tuple(n for g in groups for n in g)
+    what = f"type ({', '.join(['letters', 'digits', 'colors'][:len(groups)])})" if by == "type" else by
+    if outliers:
+        b.preds.append(Piles(groups=tuple(tuple(g) for g in groups)))
+        b.summary.append(f"{len(groups)} separate piles, one per {what}, each with {outliers} outlier(s) from another pile")
+    else:
+        b.preds.append(Piles(names, by=by))
+        b.summary.append(f"{len(groups)} separate piles, one per {what}")
+    b.primitives += ["arrange"]
+    b.min_separation = 0.06
+    return True
+
+
+@reader(order=160)
+def recognize_ordered_line(f: Features, b: Builder) -> bool:
+    order = ordering_of(f)
+    explicit = re.search(r"\border\s+((?:(?:" + COLOR_RE + r")\s*,?\s*(?:and\s+|then\s+)?){2,})", f.text)
+    labels = explicit_labels(f)
+    is_line = f.has("align", "aligned", "line", "row", "arrange", "arranged", "order", "sort", "sorted") or order
+    shape = re.search(r"\b(?:in|into|as)\s+(?:a|an|the)\s+([a-z]+)\s+(?:shape|pattern|formation)\b", f.text)
+    if shape and shape.group(1) not in ("line", "row", "straight", "linear", "horizontal", "single"):
+        return False  # "in a plus shape": a shape the parser does not build
+    if not order and not labels and len(f.colors) >= 2 and re.search(r"\b(?:left|right) of\b|\bin front of\b|\bbehind\b", f.text):
+        return False  # "so that red is left of green": pairwise relations (recognize_relational)
+    if not is_line or f.has("stack", "stacks", "tower", "towers", "on top"):
+        return False
+    direction = direction_of(f)
+    listed = re.search(rf"\b((?:{COLOR_RE})(?:\s*(?:,\s*and|,|and|then)\s+(?:the\s+)?(?:{COLOR_RE})\b)+)", f.text)
+    if not explicit and not order and listed:
+        seq = re.findall(rf"\b(?:{COLOR_RE})\b", listed.group(1))
+        if re.search(r"\b(?:left to right|right to left|front to back|back to front)\b", f.text) or \
+                len(set(seq)) < len(seq):  # "red, blue, red, blue": a repeated colour only makes sense as an order
+            explicit = listed
+    alternating = alternating_colors(f, 6)
+    if alternating and not explicit:
+        explicit = re.search(r"(.+)", ", ".join(alternating))
+    in_order = re.search(r"\bin (?:the )?order\b(.*)", f.text)
+    listed_items = item_sequence(in_order.group(1)) if in_order else []
+    if in_order and any(label for _, label in listed_items) and len(listed_items) >= 2:
+        names = [b.semantic(label) if label else b.cube(color) for color, label in listed_items]
+        b.place(directed_line(names, direction))
+        b.preds.append(InLine(tuple(names), axis=line_axis(direction), order=direction))
+        b.summary.append(f"cubes in a line {direction.replace('_', ' ')}: {', '.join(names)}")
+    elif explicit:
+        colors = [canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", explicit.group(1))]
+        names = [b.cube(c) for c in colors]
+        b.place(directed_line(names, direction))
+        b.preds.append(InLine(tuple(names), axis=line_axis(direction), order=direction))
+        b.summary.append(f"cubes in a line {direction.replace('_', ' ')}: {', '.join(names)}")
+    elif labels:
+        reads = re.search(r"\b(?:reads?|read as|shows?|spells?)\s+'?([A-Za-z0-9]{2,})'?", f.original, re.IGNORECASE)
+        if reads and sorted(reads.group(1).upper()) == sorted(labels):  # "the digits 1, 2, 3 so that they read 321"
+            labels = list(reads.group(1).upper())
+        elif order:  # the listed labels are the set; the ordering arranges them
+            labels = sorted(labels, key=lambda lab: (not lab.isdigit(), lab), reverse=order[1])
+        names = [b.semantic(lab) for lab in labels]
+        b.place(directed_line(names, direction))
+        b.preds += [InLine(tuple(names), axis=line_axis(direction), order=direction),
+                    Reads(tuple(names), "".join(labels), direction)]
+        if order:
+            b.preds.append(SortedBy(tuple(names), key=order[0] if order[0] != "color" else "label", direction=direction, descending=order[1]))
+        b.summary.append(f"up faces read {', '.join(labels)} {direction.replace('_', ' ')}")
+    elif order:
+        key, desc = order
+        n = stated_count(f, default=4 if key != "color" else 5)
+        if key == "color":
+            colors = [c for c in dict.fromkeys(f.color_list()) if c in GRADIENT_ORDER] or list(GRADIENT_ORDER)
+            if len(colors) < n:
+                colors = list(GRADIENT_ORDER)
+            colors = sorted(colors[:n], key=GRADIENT_ORDER.index, reverse=desc)
+            names = [b.cube(c) for c in colors]
+        else:
+            material = "letters" if key == "label" else "digits"
+            labels, strict = label_sequence(material, n, b)
+            if desc:
+                labels = list(reversed(labels))
+            names = [b.semantic(lab) for lab in labels]
+        b.place(directed_line(names, direction))
+        b.preds += [InLine(tuple(names), axis=line_axis(direction), order=direction),
+                    SortedBy(tuple(names), key=key, direction=direction, descending=desc)]
+        what = {"label": "alphabetical", "number": "increasing numerical", "color": "color-gradient"}[key]
+        b.summary.append(f"{n} cubes in a line in {'reverse ' if desc else ''}{what} order {direction.replace('_', ' ')}")
+    else:
+        distinct = list(dict.fromkeys(f.color_list()))
+        n = stated_count(f, default=len(distinct) if len(distinct) >= 2 else 4)
+        material = material_of(f)
+        if material == "mixed" or (material != "colors" and f.has("alternating", "alternate", "alternately")):
+            raise ParseError("a line mixing letters and digits in a pattern is beyond the builtin parser; "
+                             "list the labels (\"arrange A, 1, B, 2 from left to right\") or use --model")
+        if material in ("letters", "digits") and not distinct:  # "line up four letter cubes": labels, any order
+            labels, _ = label_sequence(material, n, b, ordered=False)
+            names = [b.semantic(lab) for lab in labels]
+        else:
+            names = [b.cube(c) for c in (distinct * n if len(distinct) == 1 else colors_for(n, f))]
+        middle = re.search(rf"\b({COLOR_RE})\s+(?:block\s+|cube\s+)?(?:is\s+)?(?:in|at)\s+the\s+(?:middle|center|centre)\b", f.text)
+        mid = canon_color(middle.group(1)) if middle else None
+        if mid and n == 3 and mid in distinct and len(distinct) == 3:  # "red, blue and green with blue in the middle"
+            ends = [nm for nm, c in zip(names, distinct, strict=True) if c != mid]
+            names = [ends[0], names[distinct.index(mid)], ends[1]]
+            b.preds.append(Between(names[1], names[0], names[2]))
+        axis = "x" if f.has("vertical", "front to back", "depth") else "y"
+        b.place(line_layout(names, axis=axis))
+        b.preds.insert(0, InLine(tuple(names), axis=axis))
+        kind = {"letters": "letter ", "digits": "digit "}.get(material, "") if not distinct else ""
+        b.summary.append(f"{n} {kind}cubes in one straight {'left-right' if axis == 'y' else 'front-back'} line"
+                         + (f" with {names[1]} in the middle" if len(b.preds) > 1 else ""))
+    b.primitives += ["arrange"]
+    return True
+
+
+SEQ_RELATION_RE = re.compile(r"\b(?:on top of|onto|on|atop|above|over|under|underneath|beneath|below|left|right|"
+                             r"behind|front|next|beside|between|near|patch|patches)\b")
+
+
+SEQ_HINT_RE = re.compile(r"\b(?:on|at|as|in)\s+(?:the\s+)?(?:very\s+)?(bottom|base|top|middle|center|centre)\b(?!\s+of)")
+
+
+SORTED_TOWER_DEFAULT = 4
+"""Cubes in a sorted tower of letters or digits when the instruction gives no count."""
+
+
+@reader(order=170)
+def recognize_sorted_tower(f: Features, b: Builder) -> bool:
+    """A tower of letter or digit cubes in sorted order ("stack the number blocks in
+    increasing order from bottom to top", "a tower of letters with A at the bottom").
+    The order is bottom to top; labels face every side, so the front reads it."""
+    if not f.has("stack", "tower", "stacked") or f.has("towers", "stacks", "patch", "patches", "pyramid", "each other"):
+        return False
+    material = material_of(f)
+    if material not in ("letters", "digits") or explicit_labels(f) or spelled_word(f):
+        return False
+    descending = tower_order(f)
+    if descending is None:
+        return False
+    n = stated_count(f, default=None) or SORTED_TOWER_DEFAULT
+    labels, strict = label_sequence(material, n, b, ordered=True)
+    if descending:
+        labels.reverse()
+    names = [b.semantic(lab) for lab in labels]
+    b.place(stack_layout(names, C.WORKSPACE_CENTER))
+    b.preds.append(Stack(tuple(names)))
+    b.primitives += ["stack"]
+    kind = "letters" if material == "letters" else "digits"
+    b.summary.append(f"a tower of {kind} {'descending' if descending else 'ascending'} from bottom to top: " + ", ".join(labels))
+    return True
+
+
+RAINBOW_TOWER = 5
+"""Cubes in a rainbow-order tower when the instruction gives no count."""
+
+
+@reader(order=180)
+def recognize_tower_sequence(f: Features, b: Builder) -> bool:
+    """One tower given as a sequence of cubes: "a tower from bottom to top: red, blue,
+    letter 'A'", "a tower of red, green and blue blocks", "red at the bottom, then green,
+    then blue on top", "the letters A, B, C in a tower", "four blocks in rainbow order".
+    Listing order is bottom to top unless the text says "top to bottom" or marks a cube
+    "on top" / "at the bottom"."""
+    if not f.has("stack", "tower", "stacked") or f.has("towers", "stacks", "each other", "patch", "patches", "pyramid"):
+        return False
+    if "@" in mark_references(f.text) or len(DESCRIBED_TOWER_RE.findall(f.text)) >= 2:  # relations, or several towers
+        return False
+    text = SEQ_HINT_RE.sub(lambda m: f" <{m.group(1)}> ", f.text)
+    mentions = list(ITEM_RE.finditer(text))
+    for a, c in itertools.pairwise(mentions):
+        if SEQ_RELATION_RE.search(text[a.end():c.start()]):
+            return False
+    items: list[tuple[str | None, str | None]] = []
+    hints: dict[int, str] = {}
+    for m in mentions:
+        item = (None, m.group("label").upper()) if m.group("label") else (canon_color(m.group("color")), None)
+        hint = re.match(r"\s*(?:(?:block|cube)s?\s*)?<(bottom|base|top|middle|center|centre)>", text[m.end():])
+        if hint and item in items:  # "... with yellow at the bottom": a hint about a listed cube
+            hints[items.index(item)] = hint.group(1)
+            continue
+        count = re.search(r"\b(\d+)\s+$", text[max(0, m.start() - 4): m.start()]) if not m.group("label") else None
+        for _ in range(int(count.group(1)) - 1 if count and 1 < int(count.group(1)) <= 6 else 0):
+            items.append(item)  # "two blue blocks and one red block on top"
+        if hint:
+            hints[len(items)] = hint.group(1)
+        items.append(item)
+    labels = explicit_labels(f)
+    if not items and labels:
+        items = [(None, lab) for lab in labels]
+        for lab, where in re.findall(r"\b([A-Z0-9])\s+(?:on|at|as)\s+(?:the\s+)?(bottom|base|top)\b", f.original):
+            if (None, lab) in items:
+                hints[items.index((None, lab))] = where
+    n = stated_count(f, default=None)
+    alternating = alternating_colors(f, 4)
+    if alternating:
+        items, hints = [(c, None) for c in alternating], {}
+    if len(items) < 2 and f.has("rainbow", "gradient"):
+        n = n or RAINBOW_TOWER
+        spectrum = spectrum_of(f)
+        items = [(c, None) for c in sorted(spectrum[:n], key=spectrum.index, reverse=f.has("reverse"))]
+    elif 1 <= len(items) < (n or 0) and hints:  # "three blocks high with a yellow block on top"
+        used = {c for c, _ in items}
+        items += [(c, None) for c in DEFAULT_COLORS if c not in used][: n - len(items)]
+    elif len(items) == 1 and set(hints.values()) & {"middle", "center", "centre"}:  # "a tower with blue in the middle"
+        used = {c for c, _ in items}
+        items = [(c, None) for c in DEFAULT_COLORS if c not in used][:1] + items + \
+            [(c, None) for c in DEFAULT_COLORS if c not in used][1:(n or 3) - 1]
+        hints = {}  # the listed cube is already in the middle
+    if len(items) < 2:
+        return False
+    if re.search(r"\btop to bottom\b", f.text):
+        items.reverse()
+    else:
+        bottom = [items[i] for i, h in hints.items() if h in ("bottom", "base")]
+        top = [items[i] for i, h in hints.items() if h == "top"]
+        middle = [items[i] for i, h in hints.items() if h in ("middle", "center", "centre") and i < len(items)]
+        rest = [it for it in items if it not in bottom and it not in top and it not in middle]
+        half = len(rest) // 2
+        items = bottom + rest[:half] + middle + rest[half:] + top
+    names = [b.semantic(label) if label else b.cube(color) for color, label in items]
+    b.place(stack_layout(names, C.WORKSPACE_CENTER))
+    b.preds.append(Stack(tuple(names)))
+    b.primitives += ["stack"]
+    b.summary.append("tower bottom to top: " + ", ".join(names))
+    return True
+
+
+@reader(order=30)
+def recognize_tower_clauses(f: Features, b: Builder) -> bool:
+    """Towers described placement by placement (:mod:`rpg.schema.clauses`): "place a green
+    block on the red block. place two more green blocks on the green block", "3 blue blocks on
+    top of the 3 red blocks", "in the NW corner place a column of 3 green blocks", a row of
+    cubes on top of a row (a wall)."""
+    plan = clauses.read(mark_regions(f.text), COLOR_RE, canon_color)
+    if plan is None:
+        return False
+    if plan.wall:
+        layers, width = len(plan.wall), len(plan.wall[0])
+        names = [b.cube(col) for layer in plan.wall for col in layer]
+        b.place(grid_layout(names, 1, width, layers))
+        b.preds.append(Grid(tuple(names), 1, width, layers))
+        b.preds.append(LayersUniform(tuple(names), by="color", axis="z"))
+        b.primitives += ["stack"]
+        b.summary.append(f"a wall {width} cubes wide and {layers} high, layers bottom to top: "
+                         + ", ".join(layer[0] for layer in plan.wall))
+        return True
+    spots: list[tuple[float, float] | None] = []
+    unplaced = sum(r is None for r in plan.regions)
+    free = iter(b.unit_centers(unplaced, 0.16) if unplaced else [])
+    for region in plan.regions:
+        spots.append(region_spots(region, 1)[0] if region else next(free))
+    made: dict[tuple[int, int], str] = {}  # cubes are created in the order the text names them
+    order = plan.order or [[0] * len(t) for t in plan.towers]
+    cells = sorted((order[t][i], t, i) for t, tower in enumerate(plan.towers) for i in range(len(tower)))
+    for _, t, i in cells:
+        made[t, i] = b.cube(plan.towers[t][i])
+    for t, (region, xy) in enumerate(zip(plan.regions, spots, strict=True)):
+        names = [made[t, i] for i in range(len(plan.towers[t]))]
+        b.place(stack_layout(names, xy))
+        b.preds.append(Stack(tuple(names)))
+        b.summary.append("tower bottom to top: " + ", ".join(names))
+        if region:
+            b.preds.append(InRegion(names[0], region))
+            b.summary.append(f"{names[0]} in the {region.replace('_', ' ')} of the table")
+    b.primitives += ["stack"]
+    return True

@@ -1,0 +1,333 @@
+"""The words of an instruction, before any reader sees them: normalisation and features.
+
+:func:`normalize` lower-cases an instruction, refuses what the domain cannot express
+(:data:`rpg.schema.lexicon.INEXPRESSIBLE`), writes number words as digits, corrects typos
+into the vocabulary (:data:`rpg.schema.lexicon.VOCAB`) and refuses words it does not know;
+:func:`features` gives the readers (:mod:`rpg.schema.readers`) the normalised text with its
+colour mentions.  Places on the table are marked (``@region_<name>``) by :func:`mark_regions`.
+
+Frame conventions: see :mod:`rpg.domain.constants`.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from rapidfuzz import fuzz, process
+
+from rpg.domain.palette import COLOR_ALIASES
+from rpg.errors import BadInput
+from rpg.schema import lexicon
+from rpg.schema.lexicon import (
+    COLOR_RE,
+    COLORS,
+    COMPASS_CORNER_RE,
+    COMPASS_REL_RE,
+    COMPASS_SIDE_RE,
+    HEIGHT_WORDS,
+    NUMBER_WORDS,
+    REGION_WORDS,
+    ROLE_BEFORE,
+    TOWER_NOUNS,
+    VOCAB,
+)
+
+
+class ParseError(BadInput):
+    """The builtin front end cannot read the instruction; the message says which part."""
+
+
+MAX_INSTRUCTION_CHARS = 2000
+"""Longest instruction accepted, characters."""
+
+
+IGNORABLE_HERE = (lexicon.IGNORABLE | lexicon.IGNORABLE_MORE) - VOCAB
+"""Ignorable words (:data:`lexicon.IGNORABLE`) the parser's vocabulary does not use itself."""
+
+
+def _compass(text: str) -> str:
+    """Compass words in the frame of :mod:`rpg.schema.lexicon`: "the NW corner" -> "the back
+    left corner", "to the north of" -> "behind", "the east side" -> "the right side"."""
+    def corner(m: re.Match) -> str:
+        key = re.sub(r"[- ]", "", m.group(1))
+        key = {"northwest": "nw", "northeast": "ne", "southwest": "sw", "southeast": "se"}.get(key, key)
+        return "the " + lexicon.COMPASS_CORNERS[key].replace("_", " ") + " corner"
+    text = COMPASS_CORNER_RE.sub(corner, text)
+    text = COMPASS_REL_RE.sub(lambda m: lexicon.COMPASS_RELATIONS[m.group(1)] + (" of" if m.group(1) in ("east", "west") else ""), text)
+    text = re.sub(r"\b(left|right) of of\b", r"\1 of", text)
+    return COMPASS_SIDE_RE.sub(lambda m: f"the {lexicon.COMPASS[m.group(1)]} {m.group(2)}", text)
+
+
+@dataclass
+class Features:
+    text: str
+    original: str
+    colors: list[tuple[int, str]] = field(default_factory=list)
+    quoted: list[str] = field(default_factory=list)
+
+    def has(self, *words: str) -> bool:
+        return any(re.search(rf"\b{w}\b", self.text) for w in words)
+
+    def color_list(self) -> list[str]:
+        return [c for _, c in self.colors]
+
+
+def canon_color(word: str) -> str:
+    return COLOR_ALIASES.get(word, word)
+
+
+def _transposition(word: str) -> tuple[str] | None:
+    """The one known word that ``word`` (a short typo) becomes by swapping two adjacent
+    letters ("teh" -> "the", "rde" -> "red"), as a 1-tuple; None if none or several."""
+    found = {word[:i] + word[i + 1] + word[i] + word[i + 2:] for i in range(len(word) - 1)}
+    known = sorted(w for w in found if w != word and (w in VOCAB or w in COLORS))
+    return (known[0],) if len(known) == 1 else None
+
+
+class Inexpressible(ParseError):
+    """The instruction says something the domain cannot express (a negation, a condition, a
+    time, a measured quantity, a size, an object it lacks): :data:`lexicon.INEXPRESSIBLE`."""
+
+    def __init__(self, kind: str, words: list[str], why: str, original: str):
+        shown = ", ".join(f"'{w}'" for w in words)
+        super().__init__(f"cannot make a task of \"{original[:80]}\": {shown} {why}. Rephrase, or use --model")
+        self.kind = kind
+
+
+_INEXPRESSIBLE = tuple((kind, re.compile(pattern), why) for kind, pattern, why in lexicon.INEXPRESSIBLE)
+
+
+_SYNONYM_RE = re.compile(r"\b(?:" + "|".join(sorted(lexicon.SYNONYMS, key=len, reverse=True)) + r")\b")
+
+
+def _refuse_inexpressible(text: str, original: str) -> None:
+    """Raise :class:`Inexpressible` for the first class of :data:`lexicon.INEXPRESSIBLE` that
+    lower-cased ``text`` says, naming its words."""
+    for kind, pattern, why in _INEXPRESSIBLE:
+        words = list(dict.fromkeys(m.group(0).strip() for m in pattern.finditer(text)))
+        if words:
+            raise Inexpressible(kind, words, why, original)
+
+
+def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
+    """Lower-case, number words to digits, typos corrected.  Returns (text, original).
+
+    Args:
+        strict: refuse words the parser does not know (``False``: keep them, for reading the
+            mentions of an instruction a language model reads).
+
+    Raises:
+        ParseError: empty, too long, or (strict) containing words the parser does not know.
+    """
+    original = instruction.strip()
+    if not original:
+        raise ParseError("the instruction is empty; describe a task, e.g. \"stack the red block on the blue block\"")
+    if len(original) > MAX_INSTRUCTION_CHARS:
+        raise ParseError(f"the instruction has {len(original)} characters; the limit is {MAX_INSTRUCTION_CHARS}")
+    labelled = re.sub(r"\b(block|cube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))",
+                      lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1)}", original)  # "block 4"
+    labelled = re.sub(r"\b(the|a|an)\s+([A-Z])\s+(block|cube)\b", r"\1 letter \2 \3", labelled)  # "the A block"
+    labelled = re.sub(r"\b(the)\s+(\d)\s+(block|cube)\b(?!s)", r"\1 digit \2 \3", labelled)  # "the 3 cube"
+    text = labelled.lower()
+    text = re.sub(r"[\u2018\u2019\u201c\u201d`]", "'", text)
+    text = text.replace('"', "'")
+    _refuse_inexpressible(text, original)
+    for pattern, full in lexicon.CONTRACTIONS:
+        text = re.sub(pattern, full, text)
+    text = _SYNONYM_RE.sub(lambda m: lexicon.SYNONYMS[m.group(0)], text)
+    text = re.sub(r"(\d)\s*[x\u00d7]\s*(?=\d)", r"\1x", text)
+    text = re.sub(r"\b(\d+)\s+by\s+(?=\d)", r"\1x", text)
+    text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall)", r"\1 \2", text)
+    text = _compass(text)
+    text = re.sub(r"\b(?:to|onto)\s+the\s+top\s+of\b", "on top of", text)
+    # "put one block on (top of) the other": the two blocks stacked, either on top
+    text = re.sub(r"\b(put|place|stack|set)\s+one\s+(block|cube)\s+(?:on|onto|upon)\s+(?:top\s+of\s+)?the\s+other(?:\s+one)?\b",
+                  r"\1 two \2s on top of each other", text)
+    text = re.sub(r"\btoward(?:s)?\b", "to", text)
+    # "push the blue block to the red block": moved up to it, i.e. next to it (Language-Table, Demo2Code)
+    text = re.sub(rf"\b(push|move|slide|put|bring|shift)\s+the\s+((?:{COLOR_RE})\s+(?:block|cube))\s+to\s+"
+                  rf"(the\s+(?:{COLOR_RE})\s+(?:block|cube))\b(?!\s+(?:of|patch)\b)", r"\1 the \2 next to \3", text)
+    text = re.sub(r"\b(?:so\s+(?:that\s+)?it(?:'s|\s+is)\s+)?touch(?:ing|es)?\b", "next to", text)
+    text = re.sub(r"\bfollowed\s+by\b|\btopped\s+(?:off\s+)?(?:with|by)\b", "then", text)
+    text = re.sub(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+of\s+the\s+(?=\w+\s+(?:blocks|cubes|boxes)\b)", r"\1 ", text)
+    text = re.sub(r"\b(?:to|on|at)\s+the\s+(left|right)(?:[\s-]+hand)?\s+side\s+of\b(?!\s+the\s+(?:table|workspace)\b)",
+                  r"to the \1 of", text)
+    text = re.sub(r"\bon\s+top\s+(?=the\b)", "on top of ", text)
+    text = " ".join(w for w in re.split(r"(?<=\S)\s+(?=\S)", text)
+                    if re.sub(r"[.,;:!?]+$", "", w) not in IGNORABLE_HERE)
+    text = re.sub(r"\s+([.,;:!?])", r"\1", text)
+    unknown = []
+    caps = {w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)}
+    caps |= {q.lower() for q in re.findall(r"'([A-Za-z]+)'", text)}
+    words = re.findall(r"[a-z][a-z\-]*|\d+x\d+(?:x\d+)?|\d+|'[^']*'|[+=*]", text)
+    fixed = {}
+    for w in words:
+        if w.startswith("'") or w[0].isdigit() or w in "+=*" or w in NUMBER_WORDS or w in COLORS:
+            continue
+        base = w[:-1] if w.endswith("s") and w[:-1] in VOCAB else w
+        if base in VOCAB or len(w) == 1 or w in caps:
+            continue
+        if "-" in w and all(p in VOCAB or p in COLORS or p in NUMBER_WORDS for p in w.split("-") if p):
+            continue
+        lemma = next((x for x in lexicon.lemmas(w) if x in VOCAB or x in lexicon.PLACEMENT_VERBS), None)
+        if lemma is not None:  # an inflection of a known word: "built" -> build, "constructs" -> build
+            fixed[w] = lemma if lemma in VOCAB else lexicon.PLACEMENT_VERBS[lemma]
+            continue
+        match = (process.extractOne(w, list(VOCAB) + COLORS, scorer=fuzz.ratio, score_cutoff=84) if len(w) >= 4
+                 else _transposition(w))
+        if match and lexicon.is_dictionary_word(w) and not w.startswith(match[0]):
+            match = None  # a real word is never "corrected" into another ("bring" is not "ring"); "vertically" -> "vertical"
+        if match:
+            fixed[w] = match[0]
+        else:
+            unknown.append(w)
+    if unknown and strict:
+        shown = ", ".join(f"'{w}'" for w in dict.fromkeys(unknown))
+        raise ParseError(
+            f"could not parse {shown} in \"{original[:80]}\"; the builtin parser reads the block domain "
+            "(colors, letters, digits, stacks, lines, circles, grids, pyramids, piles, patches, relations). "
+            "Rephrase, or use --model to let a language model read it"
+        )
+    for w, r in fixed.items():
+        text = re.sub(rf"\b{re.escape(w)}\b", r, text)
+    text = re.sub(r"\bvertical (?:column|stack)\b|\bpillar\b", "tower", text)
+    text = re.sub(r"\b(a|one|single|the same)\s+column\b", r"\1 tower", text)  # "in a column"; "2 columns" stay grids
+    text = re.sub(r"\b(?:goal|target)\s+(?:area|zone|region|spot|location|pad|mat|marker)(s?)\b", r"goal patch\1", text)
+    text = re.sub(rf"\b({COLOR_RE})\s+(?:pad|mat|marker|zone|area|region)(s?)\b", r"\1 patch\2", text)
+    text = re.sub(r"\btarget(s?)\b(?!\s+(?:goal\s+)?patch)", r"patch\1", text)  # "onto the blue target"
+    text = re.sub(r"\b(?:pick up|grab|take|lift|get|pick)\s+(the\s+(?:[a-z0-9']+\s+){0,4}?(?:block|cube|box|one))\s+(?:up\s+)?"
+                  r"and\s+(?:then\s+)?(place|put|set|stack|move|drop|lay)\s+it\b", r"\2 \1", text)
+    text = re.sub(r"\bside by side\b", "next to each other", text)
+    text = re.sub(r"\b(?:(\w+)\s+)?((?:the|a|an)\s+(?:letter|digit|number)\s+'?[a-z0-9]'?)(?=\s|[.,;!]|$)(?!\s+(?:block|cube|box))",
+                  lambda m: m.group(0) if m.group(1) in ("with", "showing", "labeled", "labelled", "marked", "bearing")
+                  else m.group(0) + " block", text)  # "stack the letter A on the letter B": those are cubes
+    text = re.sub(rf"\b({COLOR_RE})\s+one(s?)\b", lambda m: f"{m.group(1)} block{'s' if m.group(2) else ''}", text)
+    for w, n in NUMBER_WORDS.items():
+        text = re.sub(rf"\b{w}\b", str(n), text)
+    text = re.sub(r"\bgrey\b", "gray", text)
+    text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall|tier)", r"\1 \2", text)
+    return " ".join(_structure_phrases(" ".join(text.split())).split()), original
+
+
+_GROUP = rf"(?P<n{{i}}>\d+)\s+(?P<c{{i}}>{COLOR_RE})(?:\s+(?:blocks|cubes))?"
+
+
+STRUCTURE_PHRASES: tuple[tuple[re.Pattern, str], ...] = (
+    # "a 4-high white stack", "a 3 block tall cyan tower", "a four-story tower": the count and
+    # the colour are the whole tower's
+    (re.compile(rf"\b(a|an|one|1|the)\s+(\d+)\s+{HEIGHT_WORDS}\s+(?:({COLOR_RE})\s+)?({TOWER_NOUNS})\b"),
+     r"\1 \4 of \2 \3 blocks"),
+    # "a tower 3 blocks high"
+    (re.compile(rf"\b({TOWER_NOUNS})\s+(\d+)\s+(?:(?:blocks?|cubes?|levels?|stor(?:ies|eys)|tiers?|layers?)\s+)?(?:high|tall)\b"),
+     r"\1 of \2 blocks"),
+    # "a blue tower of 3 blocks"
+    (re.compile(rf"\b(a|an|one|1|the)\s+({COLOR_RE})\s+({TOWER_NOUNS})\s+of\s+(\d+)(?:\s+(?:blocks|cubes))?\b"),
+     r"\1 \3 of \4 \2 blocks"),
+    # "two towers: one of 2 pink blocks and one of 2 brown": a tower per group
+    (re.compile(r"\b\d+\s+(tower|stack|column|pile)s\s*[:,;\-]?\s*(?:one|1)\s+(?=of\s+\d)"), r"1 \1 "),
+    (re.compile(rf"\b(?:one|1)\s+({TOWER_NOUNS})\s+of\s+{_GROUP.format(i=1)}\s*,?\s+and\s+(?:one|1|another|the\s+other)"
+                rf"(?:\s+{TOWER_NOUNS})?\s+of\s+{_GROUP.format(i=2)}"),
+     r"a \1 of \g<n1> \g<c1> blocks and a \1 of \g<n2> \g<c2> blocks"),
+    # roles: "the top one is white", "the bottom block black"
+    (re.compile(rf"(?:\s*,\s*|\s+(?:with|where|and|in\s+which)\s+)the\s+(?:top|topmost|uppermost|highest)"
+                rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|should\s+be\s+|must\s+be\s+)?({COLOR_RE})"
+                rf"(?:\s+(?:block|cube|one|1))?\b"), r" with a \1 block on top"),
+    (re.compile(rf"(?:\s*,\s*|\s+(?:with|where|and|in\s+which)\s+)the\s+(?:bottom|lowest|base|bottommost)"
+                rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|should\s+be\s+|must\s+be\s+)?({COLOR_RE})"
+                rf"(?:\s+(?:block|cube|one|1))?\b"), r" with a \1 block at the bottom"),
+)
+"""Ways of describing a tower, rewritten to the form the readers take ("a tower of N <colour>
+blocks"): a count or colour before the structure noun is the whole structure's, a group
+after "one of" is one tower's, "the top one is white" is the top cube's colour."""
+
+
+def _structure_phrases(text: str) -> str:
+    for pattern, replacement in STRUCTURE_PHRASES:
+        text = pattern.sub(replacement, text)  # an unmatched group (no colour) expands to ""
+    return text
+
+
+def color_mentions(text: str) -> list[tuple[int, str]]:
+    """(offset, palette colour) of each colour word of normalised text that names an object
+    (not "color order" / "color gradient")."""
+    return [(m.start(), canon_color(m.group(0))) for m in re.finditer(rf"\b({COLOR_RE})\b", text)
+            if not re.match(r"\s+(order|gradient|sort)", text[m.end():])]
+
+
+def features(instruction: str) -> Features:
+    text, original = normalize(instruction)
+    f = Features(text, original)
+    f.colors = color_mentions(text)
+    f.quoted = re.findall(r"['\u2018\u2019\u201c\u201d\"]([^'\u2018\u2019\u201c\u201d\"]+)['\u2018\u2019\u201c\u201d\"]", original)
+    return f
+
+
+def task_slug(text: str) -> str:
+    drop = {"a", "an", "the", "can", "you", "please", "so", "that", "of", "this", "it", "its", "is"}
+    words = [w for w in re.findall(r"[a-z0-9]+", text.lower()) if w not in drop]
+    slug = ("_".join(words[:7]) or "task").lstrip("0123456789_") or "task"
+    if len(words) > 7:
+        import hashlib
+
+        slug += "_" + hashlib.sha256(text.strip().encode()).hexdigest()[:6]
+    return slug
+
+
+def features_colors(text: str) -> list[tuple[int, str]]:
+    return [(m.start(), canon_color(m.group(0))) for m in re.finditer(rf"\b({COLOR_RE})\b", text)]
+
+
+def explicit_labels(f: Features) -> list[str]:
+    """Labels listed ("A, B, C, D") or given as a range ("A to E", "digits 1 to 5")."""
+    m = re.search(r"\b([A-Z0-9])((?:\s*,\s*(?:and\s+)?[A-Z0-9]){2,})\b", f.original)
+    if not m and f.has("letter", "letters", "number", "numbers", "digit", "digits", "label", "labels", "faces"):
+        m = re.search(r"\b([A-Z0-9])((?:(?:\s*,\s*|\s+and\s+|\s*,\s*and\s+)[A-Z0-9]){1,})\b", f.original)
+    if m:
+        return [m.group(1)] + re.findall(r"[A-Z0-9]", m.group(2))
+    r = re.search(r"\b([A-Z]|\d)\s+(?:down\s+|up\s+)?(?:to|through|thru)\s+([A-Z]|\d)\b", f.original)
+    if r and r.group(1).isdigit() == r.group(2).isdigit():
+        lo, hi = ord(r.group(1)), ord(r.group(2))
+        if lo < hi:
+            return [chr(c) for c in range(lo, hi + 1)]
+        if lo > hi and f.has("letter", "letters", "number", "numbers", "digit", "digits", "label", "labels"):
+            return [chr(c) for c in range(lo, hi - 1, -1)]  # "from 9 down to 5"
+    return []
+
+
+REGION_RE = re.compile(
+    r"\b(?:in|at|on|to|into|onto|toward|towards)\s+the\s+(?:(?P<far>very|far)\s+(?=(?:front|back|rear|left|right)))?"
+    r"(?:(?P<fb>front|back|rear)(?:(?:\s*-\s*|\s+)(?P<lr>left|right|middle|center|centre))?"
+    r"|(?P<lr2>left|right|middle|center|centre))"
+    r"(?P<part>(?:\s*-?\s*(?:hand\s+)?(?:side|corner|half|part|edge|end|area|region))?)"
+    r"(?P<tail>\s+of\s+the\s+(?:table|workspace))?(?!\s*of\b)")
+
+
+def region_name(front_back: str | None, left_right: str | None) -> str | None:
+    """The region (:data:`constants.REGION_NAMES`) that a front/back word and a
+    left/right/centre word name together ("back", "left" -> ``back_left``; "front",
+    "middle" -> ``front``); None when both are missing."""
+    fb = REGION_WORDS.get(front_back, front_back)
+    lr = REGION_WORDS.get(left_right, left_right)
+    if lr == "center" and fb:
+        lr = None
+    return "_".join(p for p in (fb, lr) if p) or None
+
+
+def mark_regions(text: str) -> str:
+    """Replace places on the table ("in the middle of the table", "at the back left corner",
+    "on the right side of the workspace") with ``@region_<name>`` tokens (names as in
+    :data:`constants.REGION_NAMES`).  A bare side ("on the left") stays: it is relative."""
+    def sub(m: re.Match) -> str:
+        corner = "corner" in m.group("part")
+        word = m.group("lr") or m.group("lr2")
+        bare_center = (word in ("center", "centre", "middle") and m.group(0).split()[0] in ("in", "at")  # "in the center"
+                       and not ROLE_BEFORE.search(m.string[:m.start()]))
+        if not (m.group("tail") or corner or bare_center):
+            return m.group(0)
+        fb = m.group("fb") or ("far" if m.group("far") == "far" and corner else None)  # "the far left corner"
+        if corner and not (fb and word in ("left", "right")):  # "the right corner": back right or front right?
+            raise ParseError(f"'{m.group(0).strip()}' names no one corner: a corner of the table is front or back and "
+                             "left or right (e.g. 'the back right corner')")
+        return f" @region_{region_name(fb, word)} "
+    return " ".join(REGION_RE.sub(sub, text).split())
