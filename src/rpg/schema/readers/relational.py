@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import itertools
 import re
+from dataclasses import dataclass, field
 
 from rpg.domain import constants as C
 from rpg.domain.layouts import (
@@ -45,6 +46,158 @@ from rpg.schema.readers.registry import reader
 from rpg.schema.reading import Features, ParseError, canon_color, features_colors, mark_regions
 
 
+@dataclass
+class RelationalReading:
+    """What the relational reader has read of an instruction so far, clause by clause: the
+    cubes and patches it names, the stacking edges, relations, patch and region placements,
+    and what "it" refers to next."""
+
+    b: Builder
+    stackish: bool
+    """The instruction asks for a stack ("stack", "tower", "pile up")."""
+    objects: dict[tuple, list[str]] = field(default_factory=dict)
+    patch_names: dict[tuple, str] = field(default_factory=dict)
+    on_edges: list[tuple[str, str]] = field(default_factory=list)
+    rels: list = field(default_factory=list)
+    onpatch: list[tuple[str, str]] = field(default_factory=list)
+    bottom_top: dict[str, str] = field(default_factory=dict)
+    sides: dict[str, str] = field(default_factory=dict)
+    on_structure: list[str] = field(default_factory=list)
+    """Cubes put on the stack the task builds ("on top of the stack")."""
+    by_structure: list[tuple[str, str]] = field(default_factory=list)
+    """(relation, cube) relative to that stack ("beside the tower")."""
+    subjects: set[tuple] = field(default_factory=set)
+    """(colour, label) of cubes placed by a relation."""
+    previous: list[str] = field(default_factory=list)
+    """[subject, object] of the last relation: what "it" refers to."""
+    last_pair: list[Mention] = field(default_factory=list)
+    """The last relation's subject and object mentions."""
+    regions: list[tuple[list[Mention], str]] = field(default_factory=list)
+    """(subject mentions, region name): places on the table."""
+
+    def obj(self, mn: Mention, i: int = 0) -> str:
+        """The object a mention names: its patch, or its ``i``-th cube (made in the builder on first mention)."""
+        if mn.patch:
+            key = ("patch", mn.color, mn.shape)
+            if key not in self.patch_names:
+                self.patch_names[key] = self.b.patch(mn.color or DEFAULT_PATCH_COLOR, mn.shape)
+            return self.patch_names[key]
+        key = ("cube", mn.color, mn.label) if (mn.color or mn.label) else ("cube", None, None, i, mn.start)
+        lst = self.objects.setdefault(key, [])
+        if len(key) == 5:
+            i = 0
+        while len(lst) <= i:
+            lst.append(self.b.semantic(mn.label) if mn.label else self.b.cube(mn.color or _next_default(self.b, self.objects)))
+        return lst[i]
+
+    def read_clause(self, clause: str) -> None:
+        """Read one clause's mentions and relation words into the reading."""
+        ms = mentions_in(clause)
+        related: list[Mention] = []  # the subject of this clause's relation, if it has one
+        # "with a red block on bottom and blue on top"
+        for mn in ms:
+            tail = clause[mn.end: mn.end + 22]
+            if re.match(r"\s+(?:block\s+|cube\s+)?(?:on|at)\s+(?:the\s+)?(?:bottom|base)\b", tail):
+                self.bottom_top.setdefault("bottom", self.obj(mn))
+            elif re.match(r"\s+(?:block\s+|cube\s+)?(?:on|at)\s+(?:the\s+)?top\b(?!\s+of)", tail):
+                self.bottom_top.setdefault("top", self.obj(mn))
+        rel_re = "|".join(f"(?P<r{i}>\\b(?:{p})\\b)" for i, (p, _) in enumerate(REL_PATTERNS))
+        for rm in re.finditer(rel_re, clause):
+            kind = next(REL_PATTERNS[i][1] for i in range(len(REL_PATTERNS)) if rm.group(f"r{i}"))
+            left = [m for m in ms if m.end <= rm.start() and not m.patch]
+            right = [m for m in ms if m.start >= rm.end()]
+            if kind == "region":  # resolved once the stacks are known
+                group = related[:1] or (_listed_group(clause, left) if left else [])
+                self.regions.append((group, rm.group(0)[len("region_"):]))
+                continue
+            after = clause[rm.end():].strip()
+            side = re.match(r"(?:the\s+)?(left|right)(?:\s+(?:hand\s+)?side)?\b(?!\s+(?:hand\s+)?(?:side\s+)?of)", after)
+            if kind == "on" and side:
+                if left:
+                    self.sides[side.group(1)] = self.obj(left[-1])
+                continue
+            if kind == "on" and re.match(r"(?:the\s+)?(?:table|bottom|base|top\b(?!\s+of))", after):
+                continue
+            if kind in ("on", "next_to") and re.match(r"each other|one another|top of each other|itself", after):
+                if left:
+                    group = _listed_group(clause, left)
+                    if len(group) > 1:  # "the red and green blocks": one cube per colour, as listed
+                        names = [self.obj(mn) for mn in group]
+                    else:
+                        names = [self.obj(left[-1], i) for i in range(max(left[-1].count, 2))]
+                    if kind == "on":
+                        self.on_edges += [(u, lo) for lo, u in itertools.pairwise(names)]
+                    else:
+                        self.rels += [NextTo(a, c) for a, c in itertools.pairwise(names)]
+                        self.subjects.update((mn.color, mn.label) for mn in group)
+                continue
+            if not left or not right:
+                if kind == "on" and self.stackish and right and right[0].patch:
+                    self.onpatch.append(("*", self.obj(right[0])))
+                continue
+            a_m, b_m = left[-1], right[0]
+            if self.last_pair and a_m is self.last_pair[1] and re.fullmatch(r"\s*,?\s*and\s+(?:also\s+)?",
+                                                                    clause[a_m.end: rm.start()]):
+                a_m = self.last_pair[0]  # "X left of Y and behind Z": X is behind Z
+            self.last_pair[:] = [a_m, b_m]
+            related[:] = [a_m]
+            if a_m.ref:
+                continue
+            if b_m.ref == "@them" and not self.on_edges and self.previous:
+                b_m = Mention(b_m.start, b_m.end, None, None, 1, ref="@it")
+            elif b_m.ref == "@it" and not self.previous and self.stackish:  # "build a tower ... and put X behind it"
+                b_m = Mention(b_m.start, b_m.end, None, None, 1, ref="@s")
+            if b_m.ref in ("@s", "@them"):
+                if kind == "on":
+                    self.on_structure.append(self.obj(a_m))
+                elif kind not in ("under", "between"):
+                    self.by_structure.append((kind, self.obj(a_m)))
+                self.subjects.add((a_m.color, a_m.label))
+                continue
+            if b_m.ref == "@it":
+                if not self.previous:
+                    continue
+                referent = self.previous[0] if (kind == "on" and self.previous[1] in self.patch_names.values()) else self.previous[1]
+                a = self.obj(a_m)
+                self.subjects.add((a_m.color, a_m.label))
+                if referent in self.patch_names.values():
+                    self.onpatch.append((a, referent))
+                elif kind == "on":
+                    self.on_edges.append((a, referent))
+                elif kind == "under":
+                    self.on_edges.append((referent, a))
+                elif kind != "between":
+                    self.rels.append(_RELATIONS[kind](a, referent))
+                self.previous[:] = [a, referent]
+                continue
+            if kind == "on" and b_m.patch and self.stackish:
+                self.onpatch.append(("*", self.obj(b_m)))
+                if a_m.color or a_m.label:  # a named cube that "it" may refer to next
+                    self.previous[:] = [self.obj(a_m), self.obj(b_m)]
+                continue
+            if kind == "on" and b_m.patch:
+                group = _listed_group(clause, left)  # "the red block, the blue block and the green block onto ..."
+                for member in group:
+                    for i in range(member.count):
+                        self.onpatch.append((self.obj(member, i), self.obj(b_m)))
+                self.previous[:] = [self.obj(a_m), self.obj(b_m)]
+                continue
+            a, c = self.obj(a_m), self.obj(b_m)
+            self.previous[:] = [a, c]
+            if kind != "on":
+                self.subjects.add((a_m.color, a_m.label))
+            if kind == "on":
+                self.on_edges.append((a, c))
+            elif kind == "under":
+                self.on_edges.append((c, a))
+            elif kind == "between":
+                if len(right) < 2 and b_m.count < 2:
+                    continue
+                self.rels.append(Between(a, c, self.obj(right[1]) if len(right) >= 2 and b_m.count < 2 else self.obj(b_m, 1)))
+            else:
+                self.rels.append(_RELATIONS[kind](a, c))
+
+
 @reader(order=200)
 def recognize_relational(f: Features, b: Builder) -> bool:
     initial = initial_clause(f.text)
@@ -65,190 +218,60 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         return _multi_stacks(f, b, int(multi.group(1)) if multi else 2)
     clauses = re.split(r"\bthen\b|;|,\s*(?:and\s+)?then\b|\.\s", text)
     f = Features(text, f.original, features_colors(text), f.quoted)
-    objects: dict[tuple, list[str]] = {}
-    patch_names: dict[tuple, str] = {}
-    on_edges: list[tuple[str, str]] = []
-    rels: list = []
-    onpatch: list[tuple[str, str]] = []
-    bottom_top: dict[str, str] = {}
-    sides: dict[str, str] = {}
-    on_structure: list[str] = []  # cubes put on the stack the task builds ("on top of the stack")
-    by_structure: list[tuple[str, str]] = []  # (relation, cube) relative to that stack ("beside the tower")
-    subjects: set[tuple] = set()  # (colour, label) of cubes placed by a relation
-    previous: list[str] = []  # [subject, object] of the last relation: what "it" refers to
-    last_pair: list[Mention] = []  # the last relation's subject and object mentions
-    regions: list[tuple[list[Mention], str]] = []  # (subject mentions, region name): places on the table
-
-    def obj(mn: Mention, i: int = 0) -> str:
-        if mn.patch:
-            key = ("patch", mn.color, mn.shape)
-            if key not in patch_names:
-                patch_names[key] = b.patch(mn.color or DEFAULT_PATCH_COLOR, mn.shape)
-            return patch_names[key]
-        key = ("cube", mn.color, mn.label) if (mn.color or mn.label) else ("cube", None, None, i, mn.start)
-        lst = objects.setdefault(key, [])
-        if len(key) == 5:
-            i = 0
-        while len(lst) <= i:
-            lst.append(b.semantic(mn.label) if mn.label else b.cube(mn.color or _next_default(b, objects)))
-        return lst[i]
-
+    r = RelationalReading(b, stackish)
     for clause in clauses:
-        ms = mentions_in(clause)
-        related: list[Mention] = []  # the subject of this clause's relation, if it has one
-        # "with a red block on bottom and blue on top"
-        for mn in ms:
-            tail = clause[mn.end: mn.end + 22]
-            if re.match(r"\s+(?:block\s+|cube\s+)?(?:on|at)\s+(?:the\s+)?(?:bottom|base)\b", tail):
-                bottom_top.setdefault("bottom", obj(mn))
-            elif re.match(r"\s+(?:block\s+|cube\s+)?(?:on|at)\s+(?:the\s+)?top\b(?!\s+of)", tail):
-                bottom_top.setdefault("top", obj(mn))
-        rel_re = "|".join(f"(?P<r{i}>\\b(?:{p})\\b)" for i, (p, _) in enumerate(REL_PATTERNS))
-        for rm in re.finditer(rel_re, clause):
-            kind = next(REL_PATTERNS[i][1] for i in range(len(REL_PATTERNS)) if rm.group(f"r{i}"))
-            left = [m for m in ms if m.end <= rm.start() and not m.patch]
-            right = [m for m in ms if m.start >= rm.end()]
-            if kind == "region":  # resolved once the stacks are known
-                group = related[:1] or (_listed_group(clause, left) if left else [])
-                regions.append((group, rm.group(0)[len("region_"):]))
-                continue
-            after = clause[rm.end():].strip()
-            side = re.match(r"(?:the\s+)?(left|right)(?:\s+(?:hand\s+)?side)?\b(?!\s+(?:hand\s+)?(?:side\s+)?of)", after)
-            if kind == "on" and side:
-                if left:
-                    sides[side.group(1)] = obj(left[-1])
-                continue
-            if kind == "on" and re.match(r"(?:the\s+)?(?:table|bottom|base|top\b(?!\s+of))", after):
-                continue
-            if kind in ("on", "next_to") and re.match(r"each other|one another|top of each other|itself", after):
-                if left:
-                    group = _listed_group(clause, left)
-                    if len(group) > 1:  # "the red and green blocks": one cube per colour, as listed
-                        names = [obj(mn) for mn in group]
-                    else:
-                        names = [obj(left[-1], i) for i in range(max(left[-1].count, 2))]
-                    if kind == "on":
-                        on_edges += [(u, lo) for lo, u in itertools.pairwise(names)]
-                    else:
-                        rels += [NextTo(a, c) for a, c in itertools.pairwise(names)]
-                        subjects.update((mn.color, mn.label) for mn in group)
-                continue
-            if not left or not right:
-                if kind == "on" and stackish and right and right[0].patch:
-                    onpatch.append(("*", obj(right[0])))
-                continue
-            a_m, b_m = left[-1], right[0]
-            if last_pair and a_m is last_pair[1] and re.fullmatch(r"\s*,?\s*and\s+(?:also\s+)?",
-                                                                    clause[a_m.end: rm.start()]):
-                a_m = last_pair[0]  # "X left of Y and behind Z": X is behind Z
-            last_pair[:] = [a_m, b_m]
-            related[:] = [a_m]
-            if a_m.ref:
-                continue
-            if b_m.ref == "@them" and not on_edges and previous:
-                b_m = Mention(b_m.start, b_m.end, None, None, 1, ref="@it")
-            elif b_m.ref == "@it" and not previous and stackish:  # "build a tower ... and put X behind it"
-                b_m = Mention(b_m.start, b_m.end, None, None, 1, ref="@s")
-            if b_m.ref in ("@s", "@them"):
-                if kind == "on":
-                    on_structure.append(obj(a_m))
-                elif kind not in ("under", "between"):
-                    by_structure.append((kind, obj(a_m)))
-                subjects.add((a_m.color, a_m.label))
-                continue
-            if b_m.ref == "@it":
-                if not previous:
-                    continue
-                referent = previous[0] if (kind == "on" and previous[1] in patch_names.values()) else previous[1]
-                a = obj(a_m)
-                subjects.add((a_m.color, a_m.label))
-                if referent in patch_names.values():
-                    onpatch.append((a, referent))
-                elif kind == "on":
-                    on_edges.append((a, referent))
-                elif kind == "under":
-                    on_edges.append((referent, a))
-                elif kind != "between":
-                    rels.append(_RELATIONS[kind](a, referent))
-                previous[:] = [a, referent]
-                continue
-            if kind == "on" and b_m.patch and stackish:
-                onpatch.append(("*", obj(b_m)))
-                if a_m.color or a_m.label:  # a named cube that "it" may refer to next
-                    previous[:] = [obj(a_m), obj(b_m)]
-                continue
-            if kind == "on" and b_m.patch:
-                group = _listed_group(clause, left)  # "the red block, the blue block and the green block onto ..."
-                for member in group:
-                    for i in range(member.count):
-                        onpatch.append((obj(member, i), obj(b_m)))
-                previous[:] = [obj(a_m), obj(b_m)]
-                continue
-            a, c = obj(a_m), obj(b_m)
-            previous[:] = [a, c]
-            if kind != "on":
-                subjects.add((a_m.color, a_m.label))
-            if kind == "on":
-                on_edges.append((a, c))
-            elif kind == "under":
-                on_edges.append((c, a))
-            elif kind == "between":
-                if len(right) < 2 and b_m.count < 2:
-                    continue
-                rels.append(Between(a, c, obj(right[1]) if len(right) >= 2 and b_m.count < 2 else obj(b_m, 1)))
-            else:
-                rels.append(_RELATIONS[kind](a, c))
-    if "bottom" in bottom_top and "top" in bottom_top:
-        on_edges.append((bottom_top["top"], bottom_top["bottom"]))
-    if "left" in sides and "right" in sides and sides["left"] != sides["right"]:
-        rels.append(LeftOf(sides["left"], sides["right"]))
+        r.read_clause(clause)
+    if "bottom" in r.bottom_top and "top" in r.bottom_top:
+        r.on_edges.append((r.bottom_top["top"], r.bottom_top["bottom"]))
+    if "left" in r.sides and "right" in r.sides and r.sides["left"] != r.sides["right"]:
+        r.rels.append(LeftOf(r.sides["left"], r.sides["right"]))
     # a bare "stack N blocks" / "stack blocks on the patch"
-    if stackish and not on_edges:
-        ms = [m for m in mentions_in(text) if not m.patch and not m.ref and (m.color, m.label) not in subjects]
+    if stackish and not r.on_edges:
+        ms = [m for m in mentions_in(text) if not m.patch and not m.ref and (m.color, m.label) not in r.subjects]
         n = stated_count(f, default=None) or (max(m.count for m in ms) if ms else 2)
         n = max(n, 2)
         if ms and ms[0].color and all(m.color == ms[0].color for m in ms):
-            names = [obj(ms[0], i) for i in range(n)]
+            names = [r.obj(ms[0], i) for i in range(n)]
         elif len(ms) > n and len({(m.color, m.label) for m in ms}) == len(ms):  # "a tower of red, green and blue"
-            names = [obj(m) for m in ms]
+            names = [r.obj(m) for m in ms]
         else:
-            named = [c for c in dict.fromkeys(f.color_list()) if (c, None) not in subjects]
+            named = [c for c in dict.fromkeys(f.color_list()) if (c, None) not in r.subjects]
             cols = colors_for(n, f, prefer=named)  # not the colours of cubes placed beside it
-            cols += [c for c in DEFAULT_COLORS if c not in cols and (c, None) not in subjects][: n - len(cols)]
-            names = [obj(Mention(0, 0, c, None, 1)) for c in cols[:n]]
-        on_edges += [(u, lo) for lo, u in zip(names, names[1:], strict=False)]
-    if on_structure or by_structure:
-        _resolve_structure(b, objects, on_edges, rels, on_structure, by_structure, structure_colors(text))
-    placed_in = _resolve_regions(regions, on_edges, obj, stackish, previous)
-    if not on_edges and not rels and not onpatch and not placed_in:
+            cols += [c for c in DEFAULT_COLORS if c not in cols and (c, None) not in r.subjects][: n - len(cols)]
+            names = [r.obj(Mention(0, 0, c, None, 1)) for c in cols[:n]]
+        r.on_edges += [(u, lo) for lo, u in zip(names, names[1:], strict=False)]
+    if r.on_structure or r.by_structure:
+        _resolve_structure(b, r.objects, r.on_edges, r.rels, r.on_structure, r.by_structure, structure_colors(text))
+    placed_in = _resolve_regions(r.regions, r.on_edges, r.obj, stackish, r.previous)
+    if not r.on_edges and not r.rels and not r.onpatch and not placed_in:
         return False
-    if len({p for a, p in onpatch if a == "*"}) > 1:
+    if len({p for a, p in r.onpatch if a == "*"}) > 1:
         raise ParseError("one stack cannot stand on several patches; say which cubes go on which patch")
-    if any(a == "*" for a, _ in onpatch) or (stackish and onpatch):
-        target = onpatch[0][1]
-        onpatch = [(a, p) for a, p in onpatch if a != "*"]
-        chains = _chains(on_edges)
+    if any(a == "*" for a, _ in r.onpatch) or (stackish and r.onpatch):
+        target = r.onpatch[0][1]
+        r.onpatch = [(a, p) for a, p in r.onpatch if a != "*"]
+        chains = _chains(r.on_edges)
         if chains:
-            onpatch.append((chains[0][0], target))
+            r.onpatch.append((chains[0][0], target))
     # cubes that are only on patches (place both blocks onto the patch)
-    chains = _chains(on_edges)
+    chains = _chains(r.on_edges)
     if chains is None:
-        cycle = ", ".join(f"{a} on {b_}" for a, b_ in on_edges)
+        cycle = ", ".join(f"{a} on {b_}" for a, b_ in r.on_edges)
         raise ParseError(f"the stacking relations of \"{f.original[:80]}\" contradict each other ({cycle}: "
                          "something would be on itself); say once which cube goes on which, or use --model")
-    _layout_relational(b, chains, rels, onpatch, placed_in)
+    _layout_relational(b, chains, r.rels, r.onpatch, placed_in)
     for ch in chains:
         b.preds.append(Stack(tuple(ch)) if len(ch) > 1 else OnTable(ch[0]))
         if len(ch) > 1:
             b.summary.append("tower bottom to top: " + ", ".join(ch))
-    b.preds += rels
+    b.preds += r.rels
     for a, region in placed_in:
         b.preds.append(InRegion(a, region))
         b.summary.append(b.preds[-1].describe())
-    for a, p in onpatch:
+    for a, p in r.onpatch:
         b.preds.append(OnPatch(a, p))
         b.summary.append(f"{a} on {p}")
-    b.summary += [r.describe() for r in rels]
+    b.summary += [rel.describe() for rel in r.rels]
     b.primitives += ["stack"] if any(len(c) > 1 for c in chains) else ["place"]
     if initial is not None:
         by_color = {a.color: a.name for a in b.assets if a.kind == "colored_cube"}
