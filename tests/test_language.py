@@ -215,3 +215,36 @@ def test_a_patch_of_no_colour_must_be_in_the_task():
     with pytest.raises(ParseError, match="names a goal patch"):
         parse("the robot has to stack two cubes at a target position")
 
+
+
+def test_readers_register_themselves_in_one_order_and_layers_import_downwards():
+    """Every reader is in the registry at its own order; the lower layers of the front end
+    (lexicon, reading, accounting) load without the readers or the public face."""
+    import subprocess
+    import sys
+
+    from rpg.schema.readers.registry import READERS, ordered, reader
+
+    orders = [r.order for r in ordered()]
+    assert len(READERS) >= 20 and len(set(orders)) == len(orders) and orders == sorted(orders)
+    assert ordered()[-1].name == "recognize_relational"  # the general reader last
+    with pytest.raises(ValueError, match="has that order"):
+        reader(order=ordered()[0].order)(lambda f, b: False)
+    probe = ("import sys, rpg.schema.accounting, rpg.schema.reading, rpg.schema.lexicon; "
+             "print(sorted(m for m in sys.modules if m.startswith(('rpg.schema.readers', 'rpg.schema.builtin'))))")
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "[]"
+
+
+def test_relation_words_are_declared_on_their_predicates():
+    """The relational reader's words for a relation are the ones its predicate class declares,
+    and what they say is that predicate ("beside" -> next_to)."""
+    from rpg.domain.predicates import PREDICATES
+    from rpg.schema.lexicon import PAIRWISE_RELATIONS, REL_PATTERNS
+
+    declared = dict((name, pattern) for pattern, name in REL_PATTERNS if name in PAIRWISE_RELATIONS)
+    assert declared == {name: PREDICATES[name].phrases for name in PAIRWISE_RELATIONS}
+    for name in PAIRWISE_RELATIONS:
+        phrase = PREDICATES[name].phrase
+        schema = parse(f"put the red block {phrase} the blue block")
+        assert [p.name for p in schema.goal_predicate().conjuncts() if len(p.object_names()) == 2] == [name], phrase

@@ -138,6 +138,13 @@ class Predicate:
     ``structure`` constraint when mention accounting did not consume a word for it)."""
     opaque: ClassVar[bool] = False
     """True when the children are not demands of their own (a negation)."""
+    phrases: ClassVar[str] = ""
+    """Regular expression over the parser's normalised text: how an instruction states this
+    relation between the cubes it names ("to the left of", "beside"); the relational reader
+    reads these (:data:`rpg.schema.lexicon.REL_PATTERNS`).  Empty for a predicate that is not
+    stated as a relation between two cubes."""
+    phrase: ClassVar[str] = ""
+    """How a canonical instruction states the relation ("to the left of")."""
 
     def __post_init__(self) -> None:
         for f in self.list_fields:
@@ -356,6 +363,10 @@ class On(Predicate):
     b: str
     name: ClassVar[str] = "on"
     cue: ClassVar[str] = r"\b(?:stack\w*|tower\w*|pile\w*|on\s+top|onto|atop|upon|on|above|over|under|below|beneath|underneath)\b"
+    phrases: ClassVar[str] = r"on top of|onto|on to|atop|above|on"
+    phrase: ClassVar[str] = "on top of"
+    reverse_phrases: ClassVar[str] = r"under|underneath|beneath|below"
+    """How an instruction states the relation with its cubes swapped ("X under Y": Y on X)."""
     object_fields: ClassVar[tuple[str, ...]] = ("a", "b")
 
     def _evaluate(self, state):
@@ -543,6 +554,8 @@ class LeftOf(_Relation):
     """``a`` is left of ``b`` (larger y), roughly level with it in x."""
 
     name: ClassVar[str] = "left_of"
+    phrases: ClassVar[str] = r"on (?:the )?left(?: hand)? side of|to the left of|on the left of|left of"
+    phrase: ClassVar[str] = "to the left of"
     cue: ClassVar[str] = r"\bleft\b|\bwest\b"
     axis: ClassVar[int] = 1
     sign: ClassVar[float] = 1.0
@@ -554,6 +567,8 @@ class RightOf(_Relation):
     """``a`` is right of ``b`` (smaller y)."""
 
     name: ClassVar[str] = "right_of"
+    phrases: ClassVar[str] = r"on (?:the )?right(?: hand)? side of|to the right of|on the right of|right of"
+    phrase: ClassVar[str] = "to the right of"
     cue: ClassVar[str] = r"\bright\b|\beast\b"
     axis: ClassVar[int] = 1
     sign: ClassVar[float] = -1.0
@@ -565,6 +580,8 @@ class InFrontOf(_Relation):
     """``a`` is in front of ``b``: closer to the robot (smaller x)."""
 
     name: ClassVar[str] = "in_front_of"
+    phrases: ClassVar[str] = r"in front of"
+    phrase: ClassVar[str] = "in front of"
     cue: ClassVar[str] = r"\bfront\b|\bsouth\b"
     axis: ClassVar[int] = 0
     sign: ClassVar[float] = -1.0
@@ -576,6 +593,8 @@ class Behind(_Relation):
     """``a`` is behind ``b``: farther from the robot (larger x)."""
 
     name: ClassVar[str] = "behind"
+    phrases: ClassVar[str] = r"behind|in back of|at the back of"
+    phrase: ClassVar[str] = "behind"
     cue: ClassVar[str] = r"\bbehind\b|\bback\b|\bnorth\b"
     axis: ClassVar[int] = 0
     sign: ClassVar[float] = 1.0
@@ -589,6 +608,8 @@ class NextTo(Predicate):
     a: str
     b: str
     name: ClassVar[str] = "next_to"
+    phrases: ClassVar[str] = r"next to|beside|adjacent to|alongside|near|close to"
+    phrase: ClassVar[str] = "next to"
     cue: ClassVar[str] = r"\b(?:next\s+to|beside|adjacent|near\w*|close|touch\w*|together|side\s+by\s+side|alongside)\b"
     object_fields: ClassVar[tuple[str, ...]] = ("a", "b")
 
@@ -682,6 +703,8 @@ class Between(Predicate):
     b: str
     c: str
     name: ClassVar[str] = "between"
+    phrases: ClassVar[str] = r"between"
+    phrase: ClassVar[str] = "between"
     cue: ClassVar[str] = r"\b(?:between|middle)\b"
     object_fields: ClassVar[tuple[str, ...]] = ("a", "b", "c")
 

@@ -21,6 +21,8 @@ import re
 from functools import lru_cache
 
 from rpg.domain.palette import COLOR_ALIASES, PALETTE
+from rpg.domain.predicates import PREDICATES
+from rpg.schema.structures import STRUCTURE_KINDS
 
 IGNORABLE: frozenset[str] = frozenset("""
 please kindly carefully gently slowly quickly neatly precisely directly simply just now okay ok alright
@@ -174,24 +176,42 @@ COMPASS_REL_RE = re.compile(r"\b(?:to\s+the\s+|on\s+the\s+)?(north|south|east|we
 COMPASS_SIDE_RE = re.compile(r"\b(?:the\s+)?(north|south|east|west)(?:ern)?\s+(side|edge|half|part|end)\b")
 
 
-TOWER_NOUNS = r"(?:tower|stack|column|pile|pillar)"
+TOWER_NOUNS = "(?:" + "|".join((*STRUCTURE_KINDS["tower"].words, *STRUCTURE_KINDS["tower"].described_by)) + ")"
+"""Nouns of a described tower ("a 4-high white stack", "a tower 3 blocks high"): the tower kind's
+words (:mod:`rpg.schema.structures`)."""
 
 
 HEIGHT_WORDS = r"(?:(?:blocks?|cubes?|stor(?:y|ey|ies|eys)|levels?|tiers?|layers?)(?:\s+(?:high|tall))?|high|tall)"
 
 
+PAIRWISE_RELATIONS: tuple[str, ...] = ("left_of", "right_of", "in_front_of", "behind", "next_to")
+"""Relations between two named cubes that the relational reader states with one predicate of
+that name (:data:`rpg.domain.predicates.PREDICATES`)."""
+
 REL_PATTERNS: list[tuple[str, str]] = [
-    (r"on (?:the )?left(?: hand)? side of|to the left of|on the left of|left of", "left_of"),
-    (r"on (?:the )?right(?: hand)? side of|to the right of|on the right of|right of", "right_of"),
-    (r"in front of", "in_front_of"),
-    (r"behind|in back of|at the back of", "behind"),
-    (r"next to|beside|adjacent to|alongside|near|close to", "next_to"),
-    (r"between", "between"),
-    (r"under|underneath|beneath|below", "under"),
-    (r"on top of|onto|on to|atop|above|on", "on"),
+    *((PREDICATES[name].phrases, name) for name in (*PAIRWISE_RELATIONS, "between")),
+    (PREDICATES["on"].reverse_phrases, "under"),
+    (PREDICATES["on"].phrases, "on"),
     (r"(?:inside|within|into|in)(?=\s+(?:the\s+|a\s+)?(?:[a-z]+\s+){0,2}patch)", "on"),  # "in the green goal area"
     (r"region_[a-z_]+", "region"),  # "@region_center": "in the middle of the table" (see mark_regions)
 ]
+"""Relation words in the order the relational reader tries them (a longer phrase first: "on
+the left side of" before "on"), -> the relation's name.  The words of each relation are
+declared on its predicate class (``phrases``), so a new relation adds its class and its name
+here."""
+
+
+EDIT_RELATIONS: tuple[tuple[str, str], ...] = (
+    (r"\b(?:to the |on the )?left\b", "left_of"),
+    (r"\b(?:to the |on the )?right\b", "right_of"),
+    (r"\bin front\b|\bfront\b", "in_front_of"),
+    (r"\bbehind\b|\bin back\b|\bto the back\b", "behind"),
+    (r"\bnext to\b|\bbeside\b|\badjacent\b|\bnear\b|\bclose to\b", "next_to"),
+    (r"\bunder(?:neath)?\b|\bbelow\b|\bbeneath\b", "under"),
+    (r"\bon top\b|\bonto\b|\batop\b|\bstack(?:ed|ing)?\b|\bon (?:it|them|the \w+ (?:block|cube))\b", "on"),
+)
+"""The relation a steering edit names ("put it on the left instead"), most specific first:
+words of an edit, where a side alone names the relation (:mod:`rpg.steer.relations`)."""
 
 
 REF_PREP = r"\b(of|on|onto|to|beside|behind|near|under|below|beneath|above|atop|by|from|alongside|against)\s+"

@@ -218,6 +218,10 @@ class StructureKind:
     rainbow: ClassVar[bool] = False
     grouped: ClassVar[bool] = False
     carriers: ClassVar[tuple[str, ...]] = ()
+    described_by: ClassVar[tuple[str, ...]] = ()
+    """Further nouns that name the kind where the front end reads a described structure ("a 3
+    block tall pillar", "a blue column of 4"): read by :data:`rpg.schema.lexicon.TOWER_NOUNS`,
+    not edit words (an edit's "pile" is the piles kind)."""
 
     def extract(self, parts: Parts, seq: Callable) -> TaskSpec | None:
         """The spec of a goal whose main predicate is this kind's, or None."""
@@ -259,6 +263,7 @@ class Tower(StructureKind):
     min_cubes = 2
     sized_by_count = spells = rainbow = True
     carriers = ("stack", "on", "pyramid", "grid")
+    described_by = ("column", "pile", "pillar")
 
     def extract(self, parts, seq):
         if len(parts.kinds) == 1 and parts.kinds <= {Stack, UnorderedStack} and len(parts.all) == 1:

@@ -14,38 +14,24 @@ import re
 from dataclasses import dataclass
 
 from rpg.domain.predicates import (
-    Behind,
-    InFrontOf,
+    PREDICATES,
     InRegion,
-    LeftOf,
-    NextTo,
     OnPatch,
     Predicate,
-    RightOf,
     Stack,
 )
 from rpg.schema.builder import DEFAULT_COLORS
-from rpg.schema.lexicon import COLOR_RE
+from rpg.schema.lexicon import COLOR_RE, EDIT_RELATIONS, PAIRWISE_RELATIONS
 from rpg.schema.model import TaskSchema
 from rpg.schema.reading import canon_color, region_name
 from rpg.schema.structures import cube_list
 
-PHRASES = {"left_of": "to the left of", "right_of": "to the right of", "in_front_of": "in front of",
-           "behind": "behind", "next_to": "next to", "on": "on top of"}
+PHRASES = {name: PREDICATES[name].phrase for name in (*PAIRWISE_RELATIONS, "on")}
 """How a canonical instruction states each relation."""
 
 OPPOSITE = {"left_of": "right_of", "right_of": "left_of", "in_front_of": "behind", "behind": "in_front_of",
             "on": "under", "under": "on"}
 
-EDIT_RELATIONS = (  # the relation an edit names, most specific first
-    (r"\b(?:to the |on the )?left\b", "left_of"),
-    (r"\b(?:to the |on the )?right\b", "right_of"),
-    (r"\bin front\b|\bfront\b", "in_front_of"),
-    (r"\bbehind\b|\bin back\b|\bto the back\b", "behind"),
-    (r"\bnext to\b|\bbeside\b|\badjacent\b|\bnear\b|\bclose to\b", "next_to"),
-    (r"\bunder(?:neath)?\b|\bbelow\b|\bbeneath\b", "under"),
-    (r"\bon top\b|\bonto\b|\batop\b|\bstack(?:ed|ing)?\b|\bon (?:it|them|the \w+ (?:block|cube))\b", "on"),
-)
 
 
 ADDS_RE = re.compile(r"\b(?:add|another|new|extra|more|one more|also)\b|\ban? (?:\w+ )?(?:block|cube)\b")
@@ -74,7 +60,7 @@ def relation_of(schema: TaskSchema) -> Relation | None:
     None when the task has none or several."""
     goal = schema.goal_predicate()
     parts: list[Predicate] = goal.conjuncts()
-    kinds = {LeftOf: "left_of", RightOf: "right_of", InFrontOf: "in_front_of", Behind: "behind", NextTo: "next_to"}
+    kinds = {PREDICATES[name]: name for name in PAIRWISE_RELATIONS}
     found = []
     for p in parts:
         if type(p) in kinds:

@@ -16,19 +16,17 @@ from rpg.domain.layouts import (
     stack_layout,
 )
 from rpg.domain.predicates import (
-    Behind,
+    PREDICATES,
     Between,
-    InFrontOf,
     InRegion,
     LeftOf,
     NextTo,
     OnPatch,
     OnTable,
-    RightOf,
     Stack,
 )
 from rpg.schema.builder import DEFAULT_COLORS, DEFAULT_PATCH_COLOR, Builder
-from rpg.schema.lexicon import COLOR_RE, REL_PATTERNS
+from rpg.schema.lexicon import COLOR_RE, PAIRWISE_RELATIONS, REL_PATTERNS
 from rpg.schema.readers.common import (
     DESCRIBED_TOWER_RE,
     Mention,
@@ -324,7 +322,7 @@ def _listed_group(clause: str, left: list[Mention]) -> list[Mention]:
     return group
 
 
-_RELATIONS = {"left_of": LeftOf, "right_of": RightOf, "in_front_of": InFrontOf, "behind": Behind, "next_to": NextTo}
+_RELATIONS = {name: PREDICATES[name] for name in PAIRWISE_RELATIONS}
 
 
 def _resolve_regions(regions: list[tuple[list[Mention], str]], on_edges: list, obj, stackish: bool,
