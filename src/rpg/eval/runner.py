@@ -368,10 +368,30 @@ class Unit:
     run_dir: str
 
 
-ENV_CACHE_SIZE = 2
-"""Environments a process keeps open (least recently used closed first): a Panda scene is
-~115 MB (its meshes), and a process that ran every task of a library kept all of them
-(6 GB per worker for 58 tasks)."""
+ENV_MEMORY_MB = {"state-only": 20, "cameras": 90}
+"""Resident memory one more open Panda environment adds to a process, MB, by whether it renders
+(two cameras, or the agentview video): the measured figure rounded up by ~20%, which
+``tests/test_eval.py`` asserts as a bound.  Measured with ``benchmarks/bench_env_memory.py``
+(the growth of ``VmRSS`` while a process opens and resets 6 more environments of different
+library tasks, divided by 6) on the 2-core CPU with Mesa's llvmpipe: with the decimated meshes
+(the default, what ``rpg eval`` uses) 16.6 MB state-only and 73.2 MB with two 224x224 cameras
+(each environment has its own renderer and GL context, ~56 MB); with ``visual="stock"`` 112
+and 198 MB (the old "~115 MB a Panda scene" was the stock meshes); the floating gripper 9.8
+and 65.1 MB."""
+
+ENV_BUDGET_MB = 256
+"""Memory a process may keep in open environments, MB (what the old cap of two stock-mesh
+Panda scenes held, 2 x ~115 MB, rounded up); :func:`env_cache_size` divides it by
+:data:`ENV_MEMORY_MB`."""
+
+
+def env_cache_size(renders: bool) -> int:
+    """Environments a process keeps open (least recently used closed first):
+    :data:`ENV_BUDGET_MB` // :data:`ENV_MEMORY_MB` (12 state-only, 2 rendering), at least 1.
+    A process that ran every task of a library used to keep all of them (6 GB per worker for
+    58 stock-mesh Panda tasks)."""
+    return max(1, ENV_BUDGET_MB // ENV_MEMORY_MB["cameras" if renders else "state-only"])
+
 
 _ENVS: OrderedDict = OrderedDict()
 """This process's environments by (task path, instruction variant), least recently used first."""
@@ -384,9 +404,9 @@ def _env_for(unit: Unit):
 
     key = (unit.task.path, unit.variant)
     if key not in _ENVS:
-        while len(_ENVS) >= ENV_CACHE_SIZE:
-            _ENVS.popitem(last=False)[1][0].close()
         cfg = unit.config
+        while len(_ENVS) >= env_cache_size(bool(cfg.camera_list()) or cfg.video):
+            _ENVS.popitem(last=False)[1][0].close()
         size = VIDEO_SIZE if cfg.video and not cfg.camera_list() else tuple(cfg.image_size)
         env = BlockTaskEnv(unit.task.path, embodiment=cfg.embodiment, control_mode=cfg.control_mode,
                            cameras=cfg.camera_list(), image_size=size, instruction=unit.variant)
