@@ -119,6 +119,16 @@ def test_the_accounting_record_says_which_words_produced_which_part():
     ("Build a tower of 3 blocks, the first block is red", "reference", "the first block"),
     ("Line up three cubes; the second cube should be blue", "reference", "the second cube"),
     ("put the block you just moved on the red one", "reference", "you just moved"),
+    # a pronoun with nothing named before it to refer to (these compiled two default cubes)
+    ("stack them", "reference", "them"),
+    ("put them in a row", "reference", "them"),
+    ("unstack that.", "reference", "that"),
+    ("put the blue block back in its original position", "reference", "original"),
+    # an unknown noun heading an object's phrase, an unknown command verb
+    ("Pick up a nut and place it onto a peg.", "object", "nut"),
+    ("Sweep a puck off the table.", "object", "puck"),
+    ("throw the red block", "action", "throw"),
+    ("One robot stacks the green cube while the other holds the blue cube", "time", "while"),
 ])
 def test_meaning_the_domain_lacks_is_refused_naming_the_word_and_why(text, kind, word):
     from rpg.schema.builtin import Inexpressible
@@ -248,3 +258,35 @@ def test_relation_words_are_declared_on_their_predicates():
         phrase = PREDICATES[name].phrase
         schema = parse(f"put the red block {phrase} the blue block")
         assert [p.name for p in schema.goal_predicate().conjuncts() if len(p.object_names()) == 2] == [name], phrase
+
+
+@pytest.mark.parametrize("text", [
+    "Build a tower and put the red block behind it",  # "it": the tower
+    "stack two blocks and put the red block next to them",
+    "Pick up the red block and put it on the blue block",
+    "The goal is to pick up a red cube and stack it on top of a green cube",
+])
+def test_a_pronoun_with_something_named_before_it_is_read(text):
+    parse(text)
+
+
+def test_an_unknown_word_that_is_no_object_or_command_is_only_named():
+    """A modifier or an abstract noun is not refused as a missing object or action: the
+    refusal names the word and says the parser could not read it."""
+    for text, word in (("sort the blocks in the way you think it best fits", "think"),
+                       ("stack the shiny blocks", "shiny")):
+        with pytest.raises(ParseError, match=rf"could not parse .*'{word}'") as exc:
+            parse(text)
+        assert not hasattr(exc.value, "kind")
+
+
+@pytest.mark.parametrize("text,verb", [("pick up the orange block", "pick up"), ("grab the red cube", "grab"),
+                                       ("lift the blue block and hold it", "lift")])
+def test_an_action_with_nowhere_for_the_cube_to_end_says_no_end_state(text, verb):
+    with pytest.raises(ParseError, match=rf"says no end state: '{verb}' is an action"):
+        parse(text)
+
+
+def test_framing_around_the_task_is_dropped():
+    assert meaning(parse("A simple task where the objective is to put the red block on the blue block.")) == \
+        meaning(parse("put the red block on the blue block"))

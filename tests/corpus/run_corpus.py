@@ -181,6 +181,7 @@ def run_split(name: str, show: str = "none") -> Counter:
     by_source: dict[str, Counter] = {}
     classes: Counter = Counter()
     mr: Counter = Counter()
+    by_refuse: dict[str, Counter] = {}  # must-refuse class -> verdicts
     for e in entries:
         outcome, detail = classify(e)
         counts[outcome] += 1
@@ -191,9 +192,11 @@ def run_split(name: str, show: str = "none") -> Counter:
         if must_refuse(e):
             mr["n"] += 1
             if outcome == "refused":
-                mr["right reason" if refusal_reason_ok(e, detail) else "other reason"] += 1
+                verdict = "right reason" if refusal_reason_ok(e, detail) else "other reason"
             else:
-                mr["compiled"] += 1
+                verdict = "compiled"
+            mr[verdict] += 1
+            by_refuse.setdefault(e.get("refuse", "?"), Counter())[verdict] += 1
         if show in (outcome, "all"):
             print(f"[{outcome}] {e['text']}\n    expected: {e['meaning']}\n    got:      {detail[:160]}"
                   + (f"\n    class:    {cls}" if cls else ""))
@@ -201,6 +204,9 @@ def run_split(name: str, show: str = "none") -> Counter:
     _table(f"{label}: {len(by_source)} sources", by_source, counts)
     print(f"must-refuse: {mr['n']} texts; refused for the right reason {mr['right reason']}, "
           f"for another reason {mr['other reason']}, compiled {mr['compiled']}")
+    for kind, c in sorted(by_refuse.items()):
+        print(f"  must-refuse {kind:14s} {sum(c.values()):3d}: right reason {c['right reason']}, "
+              f"other reason {c['other reason']}, compiled {c['compiled']}")
     print("failure classes:" + ("" if classes else " none"))
     for cls, k in sorted(classes.items(), key=lambda kv: (-kv[1], kv[0])):
         print(f"  {k:4d}  {cls}")

@@ -62,7 +62,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "say what should be true instead"),
     ("condition", r"\b(?:if|unless|whenever|otherwise|provided)\b",
      "makes the goal conditional: a task has one goal, checked at the end of the episode; say the goal for one scene"),
-    ("time", r"\b(?:\d+\s+(?:seconds?|minutes?|hours?)|seconds|minutes?|hours?|meanwhile|forever)\b",
+    ("time", r"\b(?:\d+\s+(?:seconds?|minutes?|hours?)|seconds|minutes?|hours?|meanwhile|forever|while|whilst|during)\b",
      "is about time: a task's goal is checked once, at the end of the episode, with no clock or duration"),
     ("quantity", r"\b(?:\d+(?:\.\d+)?\s*(?:cm|mm)\b|(?:centi|milli)?(?:meters?|metres?)|inch(?:es)?|feet|foot"
                  r"|cms?|few|fewer|most|majority|percent)\b",
@@ -75,7 +75,10 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"\s+(?:(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?))\b"
                   r"|\b(?:you|we|i)\s+(?:just|already|have|had)\s+(?:just\s+|already\s+)?"
                   r"(?:moved|placed|picked|grabbed|used|put|touched|held)\b"
-                  r"|\b(?:blocks?|cubes?|ones?)\s+(?:that\s+)?(?:you|we|i)\s+(?:moved|placed|picked|grabbed|used|touched|held)\b",
+                  r"|\b(?:blocks?|cubes?|ones?)\s+(?:that\s+)?(?:you|we|i)\s+(?:moved|placed|picked|grabbed|used|touched|held)\b"
+                  r"|\b(?:again|undo|restore|original(?:ly)?|previous(?:ly)?|remaining|as\s+(?:before|it\s+was|they\s+were))\b"
+                  r"|\bthe\s+rest\b|\bwhere\s+(?:it|they)\s+(?:was|were)\b"
+                  r"|\b(?:put|place|move|set|bring|return)\s+(?:(?!the\s+back\b)[a-z]+\s+){0,3}back\b(?!\s+(?:of|left|right|side|edge|corner|row|half|part|end)\b)",
      "picks a cube by its place in an order nobody defined or by what happened earlier: rpg's cubes are known "
      "only by colour and label; name the cube (e.g. \"the red block\"), or say the structure it is part of "
      "(\"the top block of the tower\")"),
@@ -88,12 +91,51 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
 why).  An instruction that says one is refused naming the words and why (refuse rather than
 guess); none of these words may be dropped as a filler."""
 
+NOT_OBJECTS: frozenset[str] = frozenset("""
+task tasks objective objectives job aim purpose way ways position positions direction directions orientation
+idea step steps thing things kind sort instruction instructions scene setup configuration state arrangement
+manner fashion time end result outcome mission challenge game attempt order sequence version variant
+copy one side part level
+""".split())
+"""Nouns that name no object: an unknown word among these is not refused as a missing object
+(the parser says it could not read it instead)."""
+
+UNKNOWN_OBJECT = ("object", "names an object the domain does not have: it has only 5 cm cubes (coloured, "
+                  "optionally labelled) and flat coloured patches on the table")
+"""How an unknown noun is refused when it stands where an object does ("insert the peg", "a
+puck"): the noun heads a phrase after a determiner, lemminflect knows it as a noun, and it is not
+in :data:`NOT_OBJECTS`."""
+
+UNKNOWN_ACTION = ("action", "is an action the domain does not have: a task's goal says where cubes end up "
+                  "(stacked, in a line, next to or on something, on a patch); say where the cubes should end")
+"""How an unknown verb is refused when it stands where a command's verb does (first word of a
+clause: "throw the red block", "then shake it")."""
+
+REFERENCE_PRONOUN_RE = re.compile(
+    r"\b(it|them|they)\b(?!\s*(?:is|was|will|would|should|must|has)\b)"
+    r"|\b(that|this|those|these)\b(?=\s*(?:[.,;!?]|$)|\s+(?:on|onto|to|in|into|next|beside|behind|under|from|off|up"
+    r"|down|back|over|at|left|right|and)\b)")
+"""A pronoun standing for cubes ("stack them", "unstack that.", "put it on the red block").  It
+must refer to something the instruction named before it (:data:`ANTECEDENT_RE`); without one it
+refers to what the speaker sees or did earlier, which a task cannot know."""
+
+FRAMING_RE = re.compile(
+    r"^(?:(?:a|an|the)\s+(?:simple\s+|basic\s+|easy\s+)?(?:task|challenge|problem)\s+(?:where|in\s+which)\s+)?"
+    r"(?:the\s+(?:robot|agent)\s+(?:has|needs|must)\s+to\s+|(?:the|your|its)\s+(?:objective|goal|task|job|aim)\s+is\s+to\s+)")
+"""Framing before a task's verb that says nothing of the goal ("a simple task where the
+objective is to push a cube onto the target", "the robot has to stack two cubes"): dropped."""
+
+NO_GOAL_RE = re.compile(r"\b(?:pick(?:\s+(?:it|them))?\s+up|pick|grab|grasp|take|lift|raise|hold|get|find|locate|point\s+(?:at|to)"
+                        r"|look\s+at|reach(?:\s+for)?)\b")
+"""Verbs of an action that moves no cube to a place ("pick up the orange block", "grab the red
+cube"): an instruction that says one and no task is refused as saying no end state."""
+
 PLACEMENT_VERBS: dict[str, str] = {
     "put": "place", "place": "place", "set": "place", "move": "place", "push": "place", "slide": "place",
     "bring": "place", "shift": "place", "transfer": "place", "relocate": "place", "sweep": "place",
     "position": "place", "drop": "place", "lay": "place", "add": "place", "pack": "place",
     "build": "build", "make": "build", "create": "build", "construct": "build", "assemble": "build",
-    "form": "build", "erect": "build", "stack": "stack", "pile": "stack",
+    "form": "build", "erect": "build", "stack": "stack", "pile": "stack", "pull": "place", "drag": "place",
 }
 """Verbs that ask for objects to end up somewhere, by lemma -> the parser's verb."""
 
@@ -114,6 +156,14 @@ def lemmas(word: str) -> tuple[str, ...]:
 
     found = getAllLemmas(word)
     return tuple(sorted({lemma for forms in found.values() for lemma in forms}))
+
+
+@lru_cache(maxsize=4096)
+def parts_of_speech(word: str) -> frozenset[str]:
+    """The parts of speech lemminflect knows ``word`` as (``NOUN``, ``VERB``, ``ADJ``...)."""
+    from lemminflect import getAllLemmas
+
+    return frozenset(getAllLemmas(word))
 
 
 def is_dictionary_word(word: str) -> bool:
@@ -230,3 +280,12 @@ keeps its order."""
 ROLE_BEFORE = re.compile(r"\bwith\s+(?:the\s+)?[a-z0-9]+(?:\s+(?:block|cube|one|digit|letter))?\s*$")
 """Text before "in the middle" that makes it a cube's role in a structure ("with blue in the
 middle"), not a place on the table."""
+
+
+ANTECEDENT_RE = re.compile(
+    r"\b(?:blocks?|cubes?|box(?:es)?|bricks?|pieces?|objects?|items?|patch(?:es)?|letters?|digits?|numbers?|words?"
+    r"|" + "|".join(COLORS) + r")\b"
+    r"|\b(?:a|an|the|one|this|that|each|every|\d+)\s+(?:[a-z\-]+\s+)?(?:towers?|stacks?|piles?|lines?|rows?|columns?"
+    r"|pyramids?|circles?|rings?|grids?|walls?|squares?|structures?)\b")
+"""What a pronoun can refer back to: a cube, a structure, a patch, a label or a colour named
+earlier in the instruction."""

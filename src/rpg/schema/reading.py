@@ -110,6 +110,58 @@ def _refuse_inexpressible(text: str, original: str) -> None:
             raise Inexpressible(kind, words, why, original)
 
 
+def _refuse_unresolved_pronoun(text: str, original: str) -> None:
+    """Raise :class:`Inexpressible` (``reference``) when a pronoun standing for cubes ("stack
+    them", "unstack that.") has nothing named before it to refer to
+    (:data:`lexicon.REFERENCE_PRONOUN_RE`, :data:`lexicon.ANTECEDENT_RE`)."""
+    for m in lexicon.REFERENCE_PRONOUN_RE.finditer(text):
+        if not lexicon.ANTECEDENT_RE.search(text[:m.start()]):
+            word = m.group(0)
+            raise Inexpressible("reference", [word], "refers to something the instruction has not named (a cube the "
+                                "speaker sees, or one from an earlier turn): rpg's cubes are known only by colour "
+                                "and label; name them (e.g. \"stack the red and blue blocks\")", original)
+
+
+def _unknown_word_class(text: str, unknown: list[str]) -> tuple[str, str, str] | None:
+    """(word, class, why) for the first unknown word that stands where an object does (a noun
+    heading a phrase after a determiner: "insert the peg") or, failing that, where a command's
+    verb does ("throw the red block"); None when no unknown word reads as either."""
+    def where(word: str):
+        for m in re.finditer(rf"(?<![\w-]){re.escape(word)}(?![\w-])", text):
+            yield text[:m.start()], text[m.end():]
+
+    for word in unknown:
+        pos = lexicon.parts_of_speech(word)
+        lemma = (lexicon.lemmas(word) or (word,))[0]
+        if "NOUN" in pos and word not in lexicon.NOT_OBJECTS and lemma not in lexicon.NOT_OBJECTS and any(
+                _heads_a_phrase(before, after) for before, after in where(word)):
+            return (word, *lexicon.UNKNOWN_OBJECT)
+    for word in unknown:
+        if "VERB" in lexicon.parts_of_speech(word) and any(_CLAUSE_START_BEFORE.search(b) for b, _ in where(word)):
+            return (word, *lexicon.UNKNOWN_ACTION)
+    return None
+
+
+def _heads_a_phrase(before: str, after: str) -> bool:
+    """Whether a word with this text ``before`` and ``after`` it heads a noun phrase: a
+    determiner, at most two modifiers (adjectives, colours, hyphenated words), the word, then
+    the phrase's end (punctuation, a preposition, a conjunction, a number)."""
+    m = _DETERMINER_BEFORE.search(before)
+    if m is None or not _PHRASE_END_AFTER.match(after):
+        return False
+    modifiers = m.group("mods").split()
+    return all("-" in w or w in lexicon.COLORS or lexicon.parts_of_speech(w) <= {"ADJ", "ADV"} and lexicon.parts_of_speech(w)
+               for w in modifiers)
+
+
+_DETERMINER_BEFORE = re.compile(r"\b(?:a|an|the|this|that|these|those|its|their|each|every|some|any|your|my|our)\s+"
+                                r"(?P<mods>(?:[a-z\-]+\s+){0,2})$")
+_PHRASE_END_AFTER = re.compile(r"\s*(?:$|[.,;:!?)(/]|(?:and|or|but|into|onto|on|in|to|with|from|off|at|of|that|which"
+                               r"|so|then|down|up|over|under|by|for|near|next|inside|\d+)\b)")
+_CLAUSE_START_BEFORE = re.compile(r"(?:^|[.,;:!?]\s*|\b(?:and|then|please|to|must|should)\s+"
+                                  r"|\b(?:can|could|would|will)\s+you\s+)$")
+
+
 def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
     """Lower-case, number words to digits, typos corrected.  Returns (text, original).
 
@@ -133,6 +185,7 @@ def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
     text = re.sub(r"[\u2018\u2019\u201c\u201d`]", "'", text)
     text = text.replace('"', "'")
     _refuse_inexpressible(text, original)
+    text = lexicon.FRAMING_RE.sub("", text)
     for pattern, full in lexicon.CONTRACTIONS:
         text = re.sub(pattern, full, text)
     text = _SYNONYM_RE.sub(lambda m: lexicon.SYNONYMS[m.group(0)], text)
@@ -183,12 +236,16 @@ def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
         else:
             unknown.append(w)
     if unknown and strict:
+        classed = _unknown_word_class(text, list(dict.fromkeys(unknown)))
+        if classed is not None:
+            raise Inexpressible(classed[1], [classed[0]], classed[2], original)
         shown = ", ".join(f"'{w}'" for w in dict.fromkeys(unknown))
         raise ParseError(
             f"could not parse {shown} in \"{original[:80]}\"; the builtin parser reads the block domain "
             "(colors, letters, digits, stacks, lines, circles, grids, pyramids, piles, patches, relations). "
             "Rephrase, or use --model to let a language model read it"
         )
+    _refuse_unresolved_pronoun(text, original)
     for w, r in fixed.items():
         text = re.sub(rf"\b{re.escape(w)}\b", r, text)
     text = re.sub(r"\bvertical (?:column|stack)\b|\bpillar\b", "tower", text)

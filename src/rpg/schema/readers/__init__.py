@@ -16,7 +16,7 @@ from __future__ import annotations
 from pydantic import ValidationError
 
 from rpg.domain.predicates import And, Stack, UnorderedStack
-from rpg.schema import citations
+from rpg.schema import citations, lexicon
 from rpg.schema.accounting import unaccounted
 from rpg.schema.builder import Builder, make_paraphrases
 from rpg.schema.lexicon import ORDER_WORDS
@@ -88,6 +88,11 @@ def parse(instruction: str) -> TaskSchema:
             first_gap = first_gap or gap  # a reading that drops a mention: try the next reader
     if first_gap is not None:
         raise first_gap
+    action = lexicon.NO_GOAL_RE.search(f.text)
+    if action is not None:  # "pick up the orange block": an action, and nowhere for the cube to end
+        raise ParseError(f"\"{f.original[:80]}\" says no end state: '{action.group(0)}' is an action, and a task's goal "
+                         "says where cubes end up (on, next to, in a line, on a patch...); say where the cube should go "
+                         "(e.g. \"pick up the red block and put it on the blue block\"), or use --model")
     raise ParseError(
         f"could not find a task in \"{f.original[:80]}\": name a structure (tower, line, circle, grid, "
         "pyramid, piles), a relation (on, left of, behind...) or a goal (spell, sort, rotate); "
