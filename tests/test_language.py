@@ -290,3 +290,9 @@ def test_an_action_with_nowhere_for_the_cube_to_end_says_no_end_state(text, verb
 def test_framing_around_the_task_is_dropped():
     assert meaning(parse("A simple task where the objective is to put the red block on the blue block.")) == \
         meaning(parse("put the red block on the blue block"))
+
+
+@pytest.mark.parametrize("text", ["Push the block to a patch.", "the robot has to push a cube to a target position",
+                                  "slide the block to target", "Pick and place a block to a patch."])
+def test_a_cube_moved_to_a_patch_ends_on_it(text):
+    assert meaning(parse(text)) == meaning(parse("put a block on the goal patch"))

@@ -242,7 +242,7 @@ REL_PATTERNS: list[tuple[str, str]] = [
     *((PREDICATES[name].phrases, name) for name in (*PAIRWISE_RELATIONS, "between")),
     (PREDICATES["on"].reverse_phrases, "under"),
     (PREDICATES["on"].phrases, "on"),
-    (r"(?:inside|within|into|in)(?=\s+(?:the\s+|a\s+)?(?:[a-z]+\s+){0,2}patch)", "on"),  # "in the green goal area"
+    (r"(?:inside|within|into|in|at|to)(?=\s+(?:the\s+|a\s+)?(?:[a-z]+\s+){0,2}patch)", "on"),  # "in the green goal area", "to a patch"
     (r"region_[a-z_]+", "region"),  # "@region_center": "in the middle of the table" (see mark_regions)
 ]
 """Relation words in the order the relational reader tries them (a longer phrase first: "on

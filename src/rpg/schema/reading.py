@@ -250,9 +250,10 @@ def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
         text = re.sub(rf"\b{re.escape(w)}\b", r, text)
     text = re.sub(r"\bvertical (?:column|stack)\b|\bpillar\b", "tower", text)
     text = re.sub(r"\b(a|one|single|the same)\s+column\b", r"\1 tower", text)  # "in a column"; "2 columns" stay grids
-    text = re.sub(r"\b(?:goal|target)\s+(?:area|zone|region|spot|location|pad|mat|marker)(s?)\b", r"goal patch\1", text)
+    text = re.sub(r"\b(?:goal|target)\s+(?:area|zone|region|spot|location|position|point|pad|mat|marker)(s?)\b", r"goal patch\1", text)
     text = re.sub(rf"\b({COLOR_RE})\s+(?:pad|mat|marker|zone|area|region)(s?)\b", r"\1 patch\2", text)
     text = re.sub(r"\btarget(s?)\b(?!\s+(?:goal\s+)?patch)", r"patch\1", text)  # "onto the blue target"
+    text = re.sub(r"\bpick(?:\s+up)?\s+and\s+(place|put|set|drop)\b", r"\1", text)  # "pick and place a block on ..."
     text = re.sub(r"\b(?:pick up|grab|take|lift|get|pick)\s+(the\s+(?:[a-z0-9']+\s+){0,4}?(?:block|cube|box|one))\s+(?:up\s+)?"
                   r"and\s+(?:then\s+)?(place|put|set|stack|move|drop|lay)\s+it\b", r"\2 \1", text)
     text = re.sub(r"\bside by side\b", "next to each other", text)
