@@ -5,6 +5,7 @@ instance only (bound to 127.0.0.1); nothing here touches the network."""
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import shutil
@@ -231,3 +232,78 @@ def test_work_items_raise_their_own_exceptions_and_come_back_in_order_on_ray():
         assert sorted(runner.imap(int, ["3", "1", "2"])) == [1, 2, 3]
         with pytest.raises(ValueError, match="invalid literal"):
             list(runner.imap(int, ["1", "x"], ordered=True))
+
+
+@pytest.fixture
+def ray_head():
+    """A Ray head started on its own (``ray start --head --block``, 2 CPUs, a free port), as a
+    cluster's would be: its files in a fresh temporary directory, Ray's token authentication
+    with a token of its own (not ~/.ray's), stopped at the end by ending the process group it
+    was started in (``ray stop`` would stop every Ray instance of the machine)."""
+    import secrets
+    import tempfile
+
+    port = _free_port()
+    temp = Path(tempfile.mkdtemp(prefix="rpgray", dir="/tmp"))  # short: Ray's sockets live under it
+    env = {**_env(), "RAY_AUTH_MODE": "token", "RAY_AUTH_TOKEN": secrets.token_hex(32), "RAY_USAGE_STATS_ENABLED": "0"}
+    head = subprocess.Popen([str(Path(sys.executable).parent / "ray"), "start", "--head", "--block", "--port", str(port),
+                             "--num-cpus", "2", "--temp-dir", str(temp), "--node-ip-address", "127.0.0.1",
+                             "--include-dashboard", "false", "--disable-usage-stats"],
+                            cwd=ROOT, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                            start_new_session=True)
+    try:
+        deadline = time.time() + 120
+        while time.time() < deadline and head.poll() is None:
+            with socket.socket() as s, contextlib.suppress(OSError):
+                s.settimeout(1)
+                s.connect(("127.0.0.1", port))
+                break
+            time.sleep(0.2)
+        if head.poll() is not None:
+            pytest.fail(f"ray start --head exited {head.returncode}: {head.stderr.read().decode()[-2000:]}")
+        yield f"127.0.0.1:{port}", env
+    finally:
+        head.terminate()  # --block: Ray stops the processes it started
+        with contextlib.suppress(subprocess.TimeoutExpired):
+            head.wait(30)
+        deadline = time.time() + 30
+        while time.time() < deadline and _group(head.pid):
+            time.sleep(0.5)
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(head.pid, signal.SIGKILL)
+        head.wait()
+        shutil.rmtree(temp, ignore_errors=True)
+
+
+def _group(pgid: int) -> list[int]:
+    """The live processes of process group ``pgid``."""
+    out = []
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        with contextlib.suppress(OSError, ValueError, IndexError):
+            fields = stat.read_text().rsplit(")", 1)[1].split()
+            if int(fields[2]) == pgid and fields[0] != "Z":
+                out.append(int(stat.parent.name))
+    return out
+
+
+@pytest.mark.slow
+def test_eval_on_a_ray_head_started_separately_gives_the_pools_summary(ray_head, manifest, tmp_path):
+    address, env = ray_head
+    task = manifest.parent / "stack_blocks"
+    base = ["eval", task, "--policy", "oracle", "-n", "2", "--embodiment", FLOAT, "-j", "2"]
+    pool = _rpg(*base, "--backend", "local", "-o", tmp_path / "pool")
+    assert pool.returncode == 0, pool.stderr
+    # without the token the head refuses it: one line that says what is missing
+    no_token = {k: v for k, v in env.items() if k not in ("RAY_AUTH_MODE", "RAY_AUTH_TOKEN")}
+    r = subprocess.run([sys.executable, "-m", "rpg.cli", *map(str, base), "--backend", "ray", "--address", address,
+                        "-o", tmp_path / "refused"], capture_output=True, text=True, env=no_token, cwd=ROOT, timeout=300)
+    _one_line_error(r, "could not start the Ray cluster", "RAY_AUTH_MODE=token")
+    assert not (tmp_path / "refused" / "episodes.jsonl").exists()
+    r = subprocess.run([sys.executable, "-m", "rpg.cli", *map(str, base), "--backend", "ray", "--address", address,
+                        "-o", tmp_path / "ray"], capture_output=True, text=True, env=env, cwd=ROOT, timeout=600)
+    assert r.returncode == 0, r.stderr
+    assert "Traceback" not in r.stderr
+    summary = _without_timing(tmp_path / "pool" / "summary.json")
+    assert summary == _without_timing(tmp_path / "ray" / "summary.json")
+    assert summary["overall"]["n"] == 2 and set(summary["tasks"]) == {"stack_blocks"}
+    assert _episodes(tmp_path / "pool") == _episodes(tmp_path / "ray")

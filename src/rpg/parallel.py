@@ -179,6 +179,23 @@ def _check_address(address: str) -> None:
 
 
 @contextlib.contextmanager
+def _stderr_quiet() -> Iterator[None]:
+    """File descriptor 2 sent to /dev/null (native code's log lines too) for the block's duration."""
+    import sys
+
+    with contextlib.suppress(Exception):
+        sys.stderr.flush()
+    saved = os.dup(2)
+    try:
+        with open(os.devnull, "wb") as null:
+            os.dup2(null.fileno(), 2)
+        yield
+    finally:
+        os.dup2(saved, 2)
+        os.close(saved)
+
+
+@contextlib.contextmanager
 def _ray(jobs: int, address: str | None = None, **_) -> Iterator[Backend]:
     try:
         import ray
@@ -190,7 +207,8 @@ def _ray(jobs: int, address: str | None = None, **_) -> Iterator[Backend]:
         try:
             if address:
                 _check_address(address)
-                ray.init(address=address, **quiet)
+                with _stderr_quiet():  # Ray's C++ client logs each failed attempt to connect
+                    ray.init(address=address, **quiet)
             else:
                 # A local instance: node address 127.0.0.1 and Ray's token authentication on, so
                 # what Ray still opens on other interfaces answers only to this session's token.
@@ -205,8 +223,12 @@ def _ray(jobs: int, address: str | None = None, **_) -> Iterator[Backend]:
             with contextlib.suppress(Exception):
                 ray.shutdown()
             where = f"the Ray cluster at --address {address}" if address else "a local Ray instance"
+            hint = ""
+            if address and os.environ.get("RAY_AUTH_MODE") != "token":
+                hint = (" (a cluster with Ray's token authentication needs RAY_AUTH_MODE=token here and its "
+                        "token in RAY_AUTH_TOKEN or ~/.ray/auth_token)")
             raise BackendError(f"could not start {where}: {type(exc).__name__}: "
-                               f"{' '.join(str(exc).split())[:300]}") from None
+                               f"{' '.join(str(exc).split())[:300]}{hint}") from None
     try:
         yield _Ray(ray)
     finally:
