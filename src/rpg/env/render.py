@@ -11,9 +11,13 @@ Per image, with the Panda's meshes (:mod:`rpg.env.embodiments.visuals`) unchange
   depth was compared with itself near the edge of the light's frustum) is gone.
 - **A shadow map sized for the image**: :func:`shadow_map_size` (4 texels per image pixel,
   1024 for 256x256; MuJoCo's default is 4096, which costs a software renderer ~4x).
-- **Smooth wrist shadows**: the wrist camera reads the shadow map with linear filtering (the
-  hardware's 2x2 percentage-closer filter) instead of MuJoCo's nearest texel, so the edge of
-  a shadow it sees up close is a ramp, not stairs of several pixels.  The other cameras keep
+- **Smoother wrist shadows**: the wrist camera reads the shadow map with linear filtering
+  instead of MuJoCo's nearest texel, so the edge of a shadow it sees up close no longer steps
+  by whole texels (several pixels).  It is still hard: Mesa's llvmpipe compares the filtered
+  depth, so a pixel is lit or shadowed, never between (measured: pixels between the two
+  levels along the edges of a wrist frame, 14 with either filter at a 1024 map, 11 at 128; a
+  smaller ``shadowscale`` or a larger map moves the steps but adds no ramp).  A ramp would
+  need supersampling the wrist image (4x the pixels).  The other cameras keep
   the nearest texel: at a distance, on the arm's curved surfaces, the filter's wider
   footprint would need more depth bias than MuJoCo applies (acne).
 - **No sky where none is seen**: the skybox (a textured cylinder drawn over every pixel) is
