@@ -9,6 +9,10 @@ these tables or in the parser's vocabulary), *ignorable* (:data:`IGNORABLE`: it 
 meaning for the task and is dropped), or unknown, and then the instruction is refused with the
 word named.  Nothing here is a guess: a word is only listed where its reading is certain.
 
+Relation words are declared on their predicate classes (``phrases``) and tower nouns on the
+tower kind (:mod:`rpg.schema.structures`); the tables here that read them (:data:`REL_PATTERNS`,
+:data:`TOWER_NOUNS`) are derived from those registries, so each surface word is written once.
+
 Frame conventions (see :mod:`rpg.domain.constants`): the robot stands at the origin looking
 along +x.  Compass words follow a map seen from above with the robot at the bottom edge:
 north = away from the robot ("behind", larger x), south = towards it ("in front of"),

@@ -19,7 +19,6 @@ from rpg.domain.predicates import And, Stack, UnorderedStack
 from rpg.schema import citations, lexicon
 from rpg.schema.accounting import unaccounted
 from rpg.schema.builder import Builder, make_paraphrases
-from rpg.schema.lexicon import ORDER_WORDS
 from rpg.schema.model import TaskSchema
 from rpg.schema.readers import labels, patches, places, registry, relational, structures, temporal  # noqa: F401 (they register)
 from rpg.schema.reading import Features, ParseError, color_mentions, features, task_slug
@@ -31,9 +30,9 @@ def free_unnamed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
     of each other" says nothing of which goes on top, so G may not demand an order (a policy
     that stacks them the other way has done what it was told).  The summary and paraphrases
     then say "in any order" too, so no instruction the policy is given states an order G
-    lacks.  A colour named, an order word (:data:`ORDER_WORDS`) or a cube of the stack in
+    lacks.  A colour named, an order word (:data:`rpg.schema.lexicon.ORDER_WORDS`) or a cube of the stack in
     another part of the goal keeps the order."""
-    if ORDER_WORDS.search(f.text.lower()):
+    if lexicon.ORDER_WORDS.search(f.text.lower()):
         return schema
     named = {c for _, c in color_mentions(f.text)}
     colors = {a.name: a.color for a in schema.assets if a.kind == "colored_cube"}
