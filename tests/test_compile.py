@@ -384,6 +384,25 @@ def test_region_tasks_start_outside_their_regions(tmp_path):
     assert nontrivial["status"] == "pass"
 
 
+def test_a_cube_at_the_corner_may_end_in_any_corner(tmp_path):
+    from rpg.domain.predicates import region_boxes
+
+    r = compile_instruction("Place the blue block at the corner.", tmp_path)
+    assert r.valid, [g for g in r.gates if g["status"] == "fail"]
+    code = (r.path / "code.py").read_text()
+    assert "InRegion(a='blue', region='corner')" in code and "avoid={'blue': 'corner'}" in code
+    doc = yaml.safe_load((r.path / "task.yaml").read_text())
+    assert {"constraint": "blue cube in a corner of the table", "kind": "place", "cites": ["corner"]} in doc["citations"]
+    task = Task(task_data(task_sources(r.path)))
+    for seed in range(8):  # rho_0 starts the cube in no corner, whatever the seed
+        x, y = task.reset(seed)["blue"].pos[:2]
+        assert not any(x0 <= x <= x1 and y0 <= y <= y1 for (x0, x1), (y0, y1) in region_boxes("corner")), seed
+        assert not task.success()
+    task.set_goal_state()
+    task.step(50)
+    assert task.success()
+
+
 def test_parser_refuses_rather_than_drop_a_named_cube():
     with pytest.raises(ParseError, match="purple"):
         parse("Stack the red block on the blue block and the purple block")

@@ -112,6 +112,20 @@ def test_regions_split_the_workspace_in_thirds():
         InRegion("a", "top")
 
 
+def test_a_region_group_holds_in_any_of_its_members():
+    # "at the corner" names no corner: each of the four satisfies it, the middle of a side does not
+    for x, y in ((0.45, 0.2), (0.45, -0.2), (0.65, 0.2), (0.65, -0.2)):
+        assert InRegion("a", "corner").evaluate(state(cube("a", x, y))), (x, y)
+    r = InRegion("a", "corner").evaluate(state(cube("a", 0.65, 0.0)))
+    assert not r and "not in a corner" in r.reason and len(r.tolerance["boxes"]) == 4
+    # "at the edge": anywhere in the outer ring of the 3x3 split, never the centre
+    for x, y in ((0.45, 0.0), (0.65, 0.0), (0.55, 0.2), (0.55, -0.2), (0.45, 0.2)):
+        assert InRegion("a", "edge").evaluate(state(cube("a", x, y))), (x, y)
+    assert not InRegion("a", "edge").evaluate(state(cube("a", 0.55, 0.0)))
+    assert from_dict(InRegion("a", "edge").to_dict()) == InRegion("a", "edge")
+    assert InRegion("a", "corner").describe() == "a in a corner of the workspace"
+
+
 def test_in_line_with_order():
     objs = [cube("r", 0.55, 0.1), cube("g", 0.55, 0.0, color="green"), cube("b", 0.55, -0.1, color="blue")]
     s = state(*objs)

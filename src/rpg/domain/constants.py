@@ -208,6 +208,15 @@ REGION_NAMES: tuple[str, ...] = ("center", "front", "back", "left", "right",
 middle third both ways, a side (``left``) is its whole third, a corner (``back_left``) is
 where two thirds meet (project)."""
 
+REGION_GROUPS: dict[str, tuple[str, ...]] = {
+    "corner": ("back_left", "back_right", "front_left", "front_right"),
+    "edge": ("back", "front", "left", "right"),
+}
+"""Places said without saying which one: "at the corner of the table" is any of the four
+corners, "at the edge" any of the four sides (the outer ring of the 3x3 split, i.e. anywhere
+but the ``center``).  `in_region` over a group holds in any of its members, because the
+instruction names none of them (issue 30, "never add what was not said") (project)."""
+
 LINE_TOL: float = 0.015
 """`in_line`, `between`: largest offset of a centre from the fitted line, m."""
 

@@ -663,9 +663,35 @@ def region_bounds(region: str) -> tuple[tuple[float, float], tuple[float, float]
     return xs[fb], ys[lr]
 
 
+def region_boxes(region: str) -> list[tuple[tuple[float, float], tuple[float, float]]]:
+    """The boxes ((x_min, x_max), (y_min, y_max)), m, world frame, whose union is a region:
+    one for a name of :data:`constants.REGION_NAMES`, one per member for a group of
+    :data:`constants.REGION_GROUPS` ("corner", "edge").
+
+    Raises:
+        ValueError: ``region`` is neither a region nor a group.
+    """
+    if region in C.REGION_GROUPS:
+        return [region_bounds(r) for r in C.REGION_GROUPS[region]]
+    if region not in C.REGION_NAMES:
+        raise ValueError(f"unknown region {region!r}; known: {', '.join((*C.REGION_NAMES, *C.REGION_GROUPS))}")
+    return [region_bounds(region)]
+
+
+def describe_region(region: str) -> str:
+    """How a region or region group is said: "the back left corner", "the left side", "a corner"."""
+    where = region.replace("_", " ")
+    if region in C.REGION_GROUPS:
+        return f"an {where}" if where[0] in "aeiou" else f"a {where}"
+    if region in ("left", "right", "front", "back"):
+        return f"the {where} side"
+    return f"the {where}{' corner' if '_' in region else ''}"
+
+
 @dataclass(frozen=True, repr=False)
 class InRegion(Predicate):
-    """``a``'s centre lies in a named region of the workspace (see :func:`region_bounds`)."""
+    """``a``'s centre lies in a named region of the workspace, or in any member of a region
+    group (:func:`region_boxes`: "at the corner" holds in each of the four corners)."""
 
     a: str
     region: str
@@ -674,25 +700,25 @@ class InRegion(Predicate):
 
     def __post_init__(self) -> None:
         super().__post_init__()
-        region_bounds(self.region)  # raises on an unknown region
+        region_boxes(self.region)  # raises on an unknown region
 
     def _evaluate(self, state):
-        (x0, x1), (y0, y1) = region_bounds(self.region)
+        boxes = region_boxes(self.region)
         x, y = (float(v) for v in state[self.a].pos[:2])
-        ok = x0 <= x <= x1 and y0 <= y <= y1
-        where = self.region.replace("_", " ")
-        return self._result(ok, f"{self.a} {'is' if ok else 'is not'} in the {where} of the workspace "
-                                f"(at x {x:.3f}, y {y:.3f}; region x {x0:.3f}..{x1:.3f}, y {y0:.3f}..{y1:.3f})",
-                            {"x": x, "y": y}, {"x": [x0, x1], "y": [y0, y1]})
+        ok = any(x0 <= x <= x1 and y0 <= y <= y1 for (x0, x1), (y0, y1) in boxes)
+        spans = "; ".join(f"x {x0:.3f}..{x1:.3f}, y {y0:.3f}..{y1:.3f}" for (x0, x1), (y0, y1) in boxes)
+        where = describe_region(self.region) if self.region in C.REGION_GROUPS else f"the {self.region.replace('_', ' ')}"
+        tolerance = ({"x": list(boxes[0][0]), "y": list(boxes[0][1])} if len(boxes) == 1
+                     else {"boxes": [[list(bx), list(by)] for bx, by in boxes]})
+        return self._result(ok, f"{self.a} {'is' if ok else 'is not'} in {where} of the workspace "
+                                f"(at x {x:.3f}, y {y:.3f}; region {spans})", {"x": x, "y": y}, tolerance)
 
     def constraints(self):
         return [("members", {"objects": (self.a,)}), ("place", {"object": self.a, "region": self.region})]
 
     def describe(self):
-        where = self.region.replace("_", " ")
-        if self.region in ("left", "right", "front", "back"):
-            return f"{self.a} on the {where} side of the workspace"
-        return f"{self.a} in the {where}{' corner' if '_' in self.region else ''} of the workspace"
+        where = describe_region(self.region)
+        return f"{self.a} {'on' if where.endswith(' side') else 'in'} {where} of the workspace"
 
 
 @dataclass(frozen=True, repr=False)

@@ -126,12 +126,12 @@ def _rejection_footprints(rng, radii, min_separation, bounds_x, bounds_y, occupi
 
 def _outside(units: list[list[str]], avoid: Mapping[str, str]):
     """Per unit, a test of a planar centre: outside every region one of its objects avoids."""
-    from rpg.domain.predicates import region_bounds
+    from rpg.domain.predicates import region_boxes
 
     def test(boxes):
         return lambda xy: not any(x0 <= xy[0] <= x1 and y0 <= xy[1] <= y1 for (x0, x1), (y0, y1) in boxes)
 
-    return [test([region_bounds(avoid[n]) for n in unit if n in avoid]) for unit in units]
+    return [test([box for n in unit if n in avoid for box in region_boxes(avoid[n])]) for unit in units]
 
 
 def sample_scattered(

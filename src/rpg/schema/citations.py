@@ -42,6 +42,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from rpg.domain import predicates as P
+from rpg.domain.constants import REGION_GROUPS
 from rpg.errors import BadInput
 from rpg.schema.meaning import descriptor
 from rpg.schema.model import TaskSchema
@@ -249,9 +250,9 @@ def _place(leaf, fields, scene) -> list[Constraint]:
     elif where.startswith("patch:"):
         line, sentence = f"{subject.removeprefix('the ')} on {_phrase(where)}", f"Put {subject} on {_phrase(where)}."
     else:
-        w = where.replace("_", " ")
-        line = f"{subject.removeprefix('the ')} in the {w} of the table"
-        sentence = f"Put {subject} in the {w} of the table."
+        w = ("an " if where[0] in "aeiou" else "a ") + where if where in REGION_GROUPS else "the " + where.replace("_", " ")
+        line = f"{subject.removeprefix('the ')} in {w} of the table"
+        sentence = f"Put {subject} in {w} of the table."
     return [Constraint("place", ("place", who, where), line, sentence, leaf, names)]
 
 

@@ -361,6 +361,13 @@ REGION_RE = re.compile(
     r"(?P<tail>\s+of\s+the\s+(?:table|workspace))?(?!\s*of\b)")
 
 
+REGION_GROUP_RE = re.compile(
+    r"\b(?:in|at|on|to|into|onto|toward|towards|near|by)\s+(?:the|a|an|any|one)\s+(?P<g>corner|edge)"
+    r"(?:\s+of\s+the\s+(?:table|workspace))?(?!\s*of\b)(?![\w-])")
+"""A place said without saying which ("at the corner of the table", "near an edge"): a region
+group of :data:`constants.REGION_GROUPS`, any of whose members will do."""
+
+
 def region_name(front_back: str | None, left_right: str | None) -> str | None:
     """The region (:data:`constants.REGION_NAMES`) that a front/back word and a
     left/right/centre word name together ("back", "left" -> ``back_left``; "front",
@@ -375,7 +382,8 @@ def region_name(front_back: str | None, left_right: str | None) -> str | None:
 def mark_regions(text: str) -> str:
     """Replace places on the table ("in the middle of the table", "at the back left corner",
     "on the right side of the workspace") with ``@region_<name>`` tokens (names as in
-    :data:`constants.REGION_NAMES`).  A bare side ("on the left") stays: it is relative."""
+    :data:`constants.REGION_NAMES`, or a group of :data:`constants.REGION_GROUPS`: "at the
+    corner").  A bare side ("on the left") stays: it is relative."""
     def sub(m: re.Match) -> str:
         corner = "corner" in m.group("part")
         word = m.group("lr") or m.group("lr2")
@@ -388,4 +396,5 @@ def mark_regions(text: str) -> str:
             raise ParseError(f"'{m.group(0).strip()}' names no one corner: a corner of the table is front or back and "
                              "left or right (e.g. 'the back right corner')")
         return f" @region_{region_name(fb, word)} "
-    return " ".join(REGION_RE.sub(sub, text).split())
+    text = REGION_RE.sub(sub, text)
+    return " ".join(REGION_GROUP_RE.sub(lambda m: f" @region_{m.group('g')} ", text).split())

@@ -18,7 +18,7 @@ from rpg.domain.layouts import (
 from rpg.domain.palette import GRADIENT_ORDER, RAINBOW_ORDER
 from rpg.domain.predicates import (
     SortedBy,
-    region_bounds,
+    region_boxes,
 )
 from rpg.domain.state import Pose
 from rpg.schema.builder import DEFAULT_COLORS, Builder
@@ -338,7 +338,7 @@ def region_spots(region: str, n: int) -> list[tuple[float, float]]:
     Raises:
         ParseError: the region cannot hold ``n`` cubes.
     """
-    (x0, x1), (y0, y1) = region_bounds(region)
+    (x0, x1), (y0, y1) = region_boxes(region)[0]  # a group ("corner"): its first member holds the witness
     per_row = max(1, min(n, int((y1 - y0 - C.CUBE_EDGE) // REGION_PITCH) + 1))
     rows = -(-n // per_row)
     if (rows - 1) * REGION_PITCH + C.CUBE_EDGE > x1 - x0 + 1e-9:
