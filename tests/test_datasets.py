@@ -183,6 +183,7 @@ root, expect = sys.argv[1], json.load(open(sys.argv[2]))
 ds = LeRobotDataset("rpg/stack_blocks", root=root, video_backend="pyav",
                     delta_timestamps={"action": [t / 20 for t in range(4)]})
 assert len(ds) == expect["frames"] and ds.num_episodes == expect["episodes"] and ds.fps == 20, (len(ds), ds.num_episodes)
+assert ds.meta.info["rpg_visual"] == "decimated"
 data = pq.read_table(expect["data"]).to_pydict()
 for i in expect["indices"]:
     item = ds[i]
@@ -537,14 +538,52 @@ def test_robomimic_env_kwargs_rebuild_the_same_visual_cameras_and_image_size(tmp
         assert not np.array_equal(decimated.reset(seed=seed)[0]["agentview_image"], first)
     finally:
         decimated.close()
-    # resuming with other meshes is refused; a LeRobot format cannot record the setting
+    # resuming with other meshes is refused
     r = _rpg("demos", STACK, "--embodiment", "floating_gripper", "--out", out, "--image-size", "40", "--cameras",
              "agentview", "--format", "hdf5", "-n", "2")
     assert r.returncode == 2 and "visual" in r.stderr and "Traceback" not in r.stderr
-    r = _rpg("demos", STACK, "--out", tmp_path / "le", "--visual", "stock")
-    assert r.returncode == 2 and "--format hdf5" in r.stderr and len(r.stderr.strip().splitlines()) == 1
     r = _rpg("demos", STACK, "--out", tmp_path / "bad", "--format", "hdf5", "--visual", "fine")
     assert r.returncode == 2 and "decimated, stock" in r.stderr and "Traceback" not in r.stderr
+
+
+@pytest.mark.parametrize("fmt", ["lerobot", "lerobot-v2.1"])
+def test_lerobot_info_records_the_visual_and_rebuilds_its_environment(fmt, datasets, tmp_path):
+    """``--visual stock`` with a LeRobot format: ``meta/info.json`` records it (``rpg_visual``;
+    the defaults' datasets say ``decimated``), an environment built from info.json renders the
+    recorded first frame (closer to it than the other meshes' render, the video being lossy),
+    and resuming with the other meshes is one line, exit 2."""
+    from rpg.demos import mp4
+    from rpg.demos.layout import VISUAL_KEY, recorded_visual
+    from rpg.env import BlockTaskEnv
+
+    for name in ("v3", "v21"):
+        assert json.loads((datasets[name] / "meta" / "info.json").read_text())[VISUAL_KEY] == "decimated"
+    out = tmp_path / "ds"
+    args = ("--embodiment", "panda", "-n", "1", "--cameras", "agentview", "--columns", "", "--format", fmt)
+    r = _rpg("demos", STACK, "--out", out, "--image-size", "64", *args, "--visual", "stock")
+    assert r.returncode == 0, r.stdout + r.stderr
+    info = json.loads((out / "meta" / "info.json").read_text())
+    assert info[VISUAL_KEY] == recorded_visual(info) == "stock" and info["robot_type"] == "panda"
+    if fmt == "lerobot":
+        seed = _rows(out)[0]["seed"]
+        video = out / "videos" / "observation.images.agentview" / "chunk-000" / "file-000.mp4"
+    else:
+        seed = json.loads((out / "meta" / "episodes.jsonl").read_text().splitlines()[0])["seed"]
+        video = out / "videos" / "chunk-000" / "observation.images.agentview" / "episode_000000.mp4"
+    first = mp4.read_frames(video)[0].astype(float)
+    errors = {}
+    for visual in (recorded_visual(info), "decimated"):
+        h, w, _ = info["features"]["observation.images.agentview"]["shape"]
+        env = BlockTaskEnv(STACK, embodiment=info["robot_type"], cameras=("agentview",), image_size=(h, w),
+                           visual=visual)
+        try:
+            assert env.robot.visual == visual
+            errors[visual] = np.abs(env.reset(seed=seed)[0]["agentview_image"] - first).mean()
+        finally:
+            env.close()
+    assert errors["stock"] < errors["decimated"], errors
+    r = _rpg("demos", STACK, "--out", out, "--image-size", "64", *args)
+    assert r.returncode == 2 and "--visual stock" in r.stderr and len(r.stderr.strip().splitlines()) == 1, r.stderr
 
 
 def test_train_valid_split_is_every_tenth_successful_demo_per_task():

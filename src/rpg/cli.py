@@ -756,8 +756,8 @@ def demos_cmd(
     keep_failed: Annotated[bool, typer.Option("--keep-failed", help="Keep failed episodes too, marked success "
                                                                     "false (they do not count toward -n).")] = False,
     visual: Annotated[str, typer.Option("--visual", help="The robot's meshes in the images: decimated (default) or "
-                                                         "stock (the Menagerie's; --format hdf5 only, recorded in "
-                                                         "env_kwargs).")] = "decimated",
+                                                         "stock (the Menagerie's); recorded in robomimic's env_kwargs "
+                                                         "or LeRobot's meta/info.json (rpg_visual).")] = "decimated",
     replay: Annotated[Path | None, typer.Option("--replay", help="Replay a dataset and check every episode.")] = None,
     library: Annotated[Path, typer.Option("--library", help="With --replay: the library whose tasks are found by "
                                                             "content hash (a directory or its manifest).")] = Path("library"),

@@ -140,7 +140,7 @@ def library_path(task: str, target: str | Path) -> str:
 def make_writer(fmt: str, out: str | Path, layout: Layout, keep_failed: bool = False, task_paths: dict | None = None,
                 visual: str = "decimated", **options):
     """The dataset writer of a format (:data:`FORMATS`); ``visual`` is recorded by the robomimic
-    writer; ``options`` go to the LeRobot v3.0 writer (``data_files_size_in_mb``,
+    writer (the LeRobot writers take it from ``layout``); ``options`` go to the LeRobot v3.0 writer (``data_files_size_in_mb``,
     ``video_files_size_in_mb``)."""
     if fmt == "hdf5":
         from rpg.demos.robomimic import RobomimicWriter
@@ -172,8 +172,8 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
         backend: ``local`` (``jobs`` spawned processes) or ``ray`` (Ray tasks on a local
             instance with ``jobs`` CPUs, or on the cluster at ``address``).
         visual: the robot's meshes in the images, ``decimated`` (default) or ``stock``
-            (:mod:`rpg.env.embodiments.visuals`); recorded in robomimic's ``env_kwargs``.  The
-            LeRobot formats record no such setting, so they take only the default.
+            (:mod:`rpg.env.embodiments.visuals`); recorded in robomimic's ``env_kwargs`` and in
+            a LeRobot dataset's ``meta/info.json`` (:data:`rpg.demos.layout.VISUAL_KEY`).
         writer_options: for the LeRobot v3.0 writer, ``data_files_size_in_mb`` and
             ``video_files_size_in_mb``.
 
@@ -183,8 +183,7 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
 
     Raises:
         BadInput: unknown target, format, column group or visual, ``episodes`` or ``jobs`` < 1,
-            ``gop`` < 1, a non-default ``visual`` with a LeRobot format, or ``out`` holds a
-            dataset of another kind.
+            ``gop`` < 1, or ``out`` holds a dataset of another kind (or another ``visual``).
         rpg.parallel.BackendError: an unknown backend, Ray not installed or its cluster
             unreachable (before anything is written).
         rpg.parallel.WorkerLost: a worker died (the episodes committed before are kept).
@@ -204,12 +203,9 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
 
     if visual not in VISUALS:
         raise BadInput(f"--visual must be one of {', '.join(VISUALS)}, not {visual!r}")
-    if visual != VISUALS[0] and fmt != "hdf5":
-        raise BadInput(f"--visual {visual} is recorded only by --format hdf5 (robomimic's env_kwargs); "
-                       "a LeRobot dataset records no such setting")
     tasks = expand_targets(target)
     slots = object_slots(tasks) if "object_poses" in columns and fmt != "hdf5" else ()
-    layout = Layout(embodiment, tuple(cameras), tuple(image_size), columns, slots, gop)
+    layout = Layout(embodiment, tuple(cameras), tuple(image_size), columns, slots, gop, visual)
     paths = {_task_hash(t): library_path(t, target) for t in tasks}
     with open_backend(backend, jobs, address) as runner:
         return _collect(runner, tasks, target, out, episodes, embodiment, fmt, tuple(cameras), tuple(image_size),

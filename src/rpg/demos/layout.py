@@ -41,6 +41,18 @@ COLUMNS = ("joint_pos", "object_poses", "next")
 
 INDEX_FEATURES = ("timestamp", "frame_index", "episode_index", "index", "task_index")
 
+VISUAL_KEY = "rpg_visual"
+"""The key of ``meta/info.json`` (both LeRobot versions) that records the robot's meshes in the
+videos (``decimated`` or ``stock``; :class:`rpg.env.BlockTaskEnv`'s ``visual``).  lerobot
+keeps ``info.json`` as a plain mapping and reads only its own keys, so it loads such a
+dataset unchanged (tested with lerobot 0.4).  A dataset written before the key existed has
+the decimated meshes."""
+
+
+def recorded_visual(info: dict) -> str:
+    """The ``visual`` a LeRobot dataset's ``meta/info.json`` records (``decimated`` if none)."""
+    return info.get(VISUAL_KEY, "decimated")
+
 
 def video_key(camera: str) -> str:
     """LeRobot's feature name of a camera's video."""
@@ -97,6 +109,9 @@ class Layout:
         columns: the optional column groups (:data:`COLUMNS`).
         objects: names of the ``observation.object_poses`` slots.
         gop: most frames between keyframes of the videos.
+        visual: the robot's meshes in the images, ``decimated`` or ``stock``
+            (:class:`rpg.env.BlockTaskEnv`'s ``visual``), recorded as ``meta/info.json``'s
+            :data:`VISUAL_KEY`.
     """
 
     robot_type: str
@@ -105,6 +120,7 @@ class Layout:
     columns: tuple[str, ...] = COLUMNS
     objects: tuple[str, ...] = ()
     gop: int = DEFAULT_GOP
+    visual: str = "decimated"
 
     @property
     def fps(self) -> int:
@@ -208,12 +224,12 @@ class Layout:
 def check_existing(root: Path, layout: Layout, version: str, other_format: str) -> dict | None:
     """The ``meta/info.json`` of a LeRobot dataset already in ``root`` (None if there is none),
     checked to be one this writer can append to: format ``version``, the same robot, cameras,
-    image size, columns and keyframe interval.
+    image size, columns, keyframe interval and meshes (``visual``).
 
     Raises:
         BadInput: a robomimic dataset, another LeRobot version (``other_format`` is the
-            ``--format`` that writes it), or another embodiment, cameras, image size, columns
-            or keyframe interval.
+            ``--format`` that writes it), or another embodiment, cameras, image size, columns,
+            keyframe interval or ``visual``.
     """
     meta = root / "meta"
     if (meta / "rpg_robomimic.json").is_file():
@@ -229,4 +245,7 @@ def check_existing(root: Path, layout: Layout, version: str, other_format: str) 
     if old.get("robot_type") != layout.robot_type or old.get("features") != new:
         raise BadInput(f"{root} holds a dataset of another embodiment, cameras, image size, columns "
                        "or keyframe interval; give a new --out directory")
+    if recorded_visual(old) != layout.visual:
+        raise BadInput(f"{root} holds a dataset recorded with --visual {recorded_visual(old)}; give that "
+                       "or a new --out directory")
     return old

@@ -12,7 +12,8 @@ joint positions, object poses and ``next.*`` columns, ``timestamp``, indices).  
 provenance: ``task`` (where it was loaded from), ``task_hash`` (content hash), ``seed``,
 ``embodiment``, ``instruction``, ``paraphrase``, ``final_poses``, ``object_names`` (the
 object slots' names) and ``success`` (false only for a failed episode kept with
-``--keep-failed``).
+``--keep-failed``).  ``meta/info.json`` also records the robot's meshes in the
+videos, ``rpg_visual`` (:data:`rpg.demos.layout.VISUAL_KEY`).
 
 Crash safety: an episode's files are written first (each atomically), then its line is
 appended to ``meta/episodes.jsonl``; that line is the commit.  :meth:`LeRobotWriter.open`
@@ -37,7 +38,7 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.parquet as pq
 
-from rpg.demos.layout import Layout, check_existing, video_key
+from rpg.demos.layout import VISUAL_KEY, Layout, check_existing, video_key
 from rpg.demos.log import discard_failed, log_attempt
 from rpg.demos.record import ACTION_NAMES, Episode
 from rpg.errors import PeerError
@@ -161,7 +162,7 @@ class LeRobotWriter:
             "total_chunks": (n + CHUNK_SIZE - 1) // CHUNK_SIZE if n else 0, "chunks_size": CHUNK_SIZE,
             "fps": float(self.layout.fps), "splits": {"train": f"0:{n}"}, "data_path": DATA_PATH,
             "video_path": VIDEO_PATH if cams else None,
-            "features": self.layout.features(CODEBASE_VERSION),
+            "features": self.layout.features(CODEBASE_VERSION), VISUAL_KEY: self.layout.visual,
         })
 
 
