@@ -218,6 +218,36 @@ def test_an_unnamed_order_is_dropped_and_a_named_one_kept():
     assert "cube colour: red" in unstated(towers, towers.instruction)
 
 
+def _restacked(schema, order):
+    """The goal layout with the stack's cubes at its heights in ``order`` (bottom to top)."""
+    heights = sorted((schema.goal_layout[n] for n in order), key=lambda p: p.position[2])
+    return {n: p for n, p in zip(order, heights, strict=True)}
+
+
+@pytest.mark.parametrize("text, free, fixed", [
+    # a list says which cubes, not in which order: every order holds
+    ("Stack the red and blue blocks.", [("red", "blue"), ("blue", "red")], []),
+    ("Put the red, blue and green blocks on top of each other",
+     [("red", "blue", "green"), ("green", "red", "blue"), ("blue", "green", "red")], []),
+    ("Stack the red and blue blocks on the green patch", [("red", "blue"), ("blue", "red")], []),
+    # a named end is kept, the rest is free
+    ("Stack the red, blue and green blocks with red on top",
+     [("blue", "green", "red"), ("green", "blue", "red")], [("red", "blue", "green"), ("blue", "red", "green")]),
+    ("Make a tower out of the red, blue and green cubes with the red block at the bottom",
+     [("red", "blue", "green"), ("red", "green", "blue")], [("blue", "red", "green")]),
+    # an order said is kept
+    ("Stack the red block on the blue block", [("blue", "red")], [("red", "blue")]),
+    ("Stack the red, blue and green blocks from bottom to top", [("red", "blue", "green")], [("green", "blue", "red")]),
+    ("Stack the red, blue and green blocks in that order", [("red", "blue", "green")], [("blue", "red", "green")]),
+])
+def test_a_listed_stack_demands_only_the_order_said(text, free, fixed):
+    schema = check_feasibility(parse(text))
+    for order in free:
+        assert evaluate_goal(schema.goal_predicate(), goal_world(schema, _restacked(schema, order))).satisfied, order
+    for order in fixed:
+        assert not evaluate_goal(schema.goal_predicate(), goal_world(schema, _restacked(schema, order))).satisfied, order
+
+
 # ---------------------------------------------------------------------------
 # property tests: G under changes the words do / do not distinguish
 # ---------------------------------------------------------------------------

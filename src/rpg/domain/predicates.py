@@ -690,8 +690,10 @@ def describe_region(region: str) -> str:
 
 @dataclass(frozen=True, repr=False)
 class InRegion(Predicate):
-    """``a``'s centre lies in a named region of the workspace, or in any member of a region
-    group (:func:`region_boxes`: "at the corner" holds in each of the four corners)."""
+    """``a``'s centre lies in a region of the workspace (constants.REGION_NAMES) or a group (REGION_GROUPS).
+
+    A group holds in any of its members (:func:`region_boxes`): "at the corner" in each of
+    the four corners, "at the edge" anywhere but the centre."""
 
     a: str
     region: str

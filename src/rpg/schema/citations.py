@@ -75,7 +75,8 @@ PATCH_CUE = re.compile(r"\b(?:patch\w*|pads?|mats?|markers?|spots?|zones?|areas?
 
 
 REGION_WORDS = {"left": r"\b(?:left|west)\b", "right": r"\b(?:right|east)\b", "front": r"\b(?:front|south|near)\b",
-                "back": r"\b(?:back|behind|rear|far|north)\b", "center": r"\b(?:center|centre|middle)\b"}
+                "back": r"\b(?:back|behind|rear|far|north)\b", "center": r"\b(?:center|centre|middle)\b",
+                "corner": r"\bcorners?\b", "edge": r"\bedges?\b"}
 """A part of a region's name -> words that name it (a side said without "of the table")."""
 
 

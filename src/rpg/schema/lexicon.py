@@ -281,6 +281,28 @@ ORDER_WORDS = re.compile(r"\b(rainbow|alternat\w*|order\w*|sequence|gradient|sor
 keeps its order."""
 
 
+STACK_ROLE_RE = re.compile(
+    r"\bwith\s+(?:the\s+|a\s+|an\s+)?(?P<c>[a-z]+)\s+(?:(?:block|cube|one)\s+)?"
+    r"(?:(?:on|at)\s+(?:the\s+)?(?P<end>top|bottom|base)|as\s+(?:the\s+)?(?P<end2>top|bottom|base))\b"
+    r"(?!\s+of\b)")
+"""A cube given one end of a stack whose other cubes are only listed ("stack the red, blue
+and green blocks with red on top", "... with the red block at the bottom"): ``c`` is the
+colour, ``end``/``end2`` the end (base = bottom)."""
+
+STACK_FREE_PHRASES = re.compile(
+    r"\bon\s+top\s+of\s+(?:each\s+other|one\s+another)\b|\b(?:on|onto|upon|over|above)\s+(?:each\s+other|one\s+another)\b"
+    r"|\b(?:on|onto)\s+(?:the\s+|a\s+)?(?:[a-z]+\s+)?(?:goal\s+)?patch(?:es)?\b|\b(?:on|onto)\s+the\s+table\b"
+    r"|@region_[a-z_]+|\b(?:on|at|to)\s+the\s+(?:left|right|front|back)\b")
+"""Phrases of a stack instruction that put no cube above another: the stack as a whole ("on
+top of each other"), where it stands ("on the green patch", "on the table", a region)."""
+
+CUBE_ORDER_RE = re.compile(r"\b(?:on|onto|upon|atop|above|over|under|below|beneath|underneath|higher|lower|followed|"
+                           r"after|before|next|from|starting|ending|beginning|respectively|that|this|listed|given|"
+                           r"named|reverse\w*|up|down|last|first)\b")
+"""Words that, left in a stack instruction once :data:`STACK_FREE_PHRASES` and roles are
+taken out, may order the cubes it lists ("red on blue", "from bottom to top", "in that
+order"): with any of them, or :data:`ORDER_WORDS`, the listed order is kept."""
+
 ROLE_BEFORE = re.compile(r"\bwith\s+(?:the\s+)?[a-z0-9]+(?:\s+(?:block|cube|one|digit|letter))?\s*$")
 """Text before "in the middle" that makes it a cube's role in a structure ("with blue in the
 middle"), not a place on the table."""

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from pydantic import ValidationError
 
-from rpg.domain.predicates import And, Stack, UnorderedStack
+from rpg.domain.predicates import AnchoredStack, And, InRegion, OnPatch, Stack, StackOnPatch, UnorderedStack
 from rpg.schema import citations, lexicon
 from rpg.schema.accounting import unaccounted
 from rpg.schema.builder import Builder, make_paraphrases
@@ -55,6 +55,75 @@ def free_unnamed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
                                      "paraphrases": make_paraphrases(summary)})
 
 
+def _listed_roles(text: str) -> dict[str, str] | None:
+    """For a stack whose cubes the instruction only lists ("stack the red and blue blocks",
+    "... with red on top"): the ends it gives a colour ({"top": "red"}; empty: none), or None
+    when it may say more of the order (:data:`rpg.schema.lexicon.CUBE_ORDER_RE`)."""
+    roles: dict[str, str] = {}
+    for m in lexicon.STACK_ROLE_RE.finditer(text):
+        color = m.group("c")
+        if color not in lexicon.COLORS:
+            return None
+        end = "top" if (m.group("end") or m.group("end2")) == "top" else "bottom"
+        if roles.get(end, color) != color:
+            return None
+        roles[end] = color
+    rest = lexicon.STACK_FREE_PHRASES.sub(" ", lexicon.STACK_ROLE_RE.sub(" ", text))
+    if lexicon.ORDER_WORDS.search(rest) or lexicon.CUBE_ORDER_RE.search(rest):
+        return None
+    return roles
+
+
+def free_listed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
+    """A stack of named cubes that the instruction only lists gets no order from the list:
+    "stack the red and blue blocks" or "put the red, blue and green blocks on top of each
+    other" say nothing of which goes on top, so G is an
+    :class:`~rpg.domain.predicates.UnorderedStack`; "... with red on top" gives red the top and
+    the rest no order (:class:`~rpg.domain.predicates.AnchoredStack`).  A stack standing on a
+    goal patch then needs some cube of it there (:class:`~rpg.domain.predicates.StackOnPatch`).
+    Any word that may order the cubes ("on", "then", "from bottom to top", "in that order")
+    keeps the order read (issue 30: a goal may demand nothing the words do not)."""
+    roles = _listed_roles(" ".join(f.text.lower().split()))
+    if roles is None:
+        return schema
+    colors = {a.name: a.color for a in schema.assets if a.kind == "colored_cube"}
+    named = {c for _, c in color_mentions(f.text)}
+    goal = schema.goal_predicate()
+    parts = goal.children() if isinstance(goal, And) else [goal]
+    out = list(parts)
+    for i, p in enumerate(parts):
+        if (type(p) is not Stack or not all(colors.get(n) in named for n in p.objects)
+                or len({colors[n] for n in p.objects}) < 2):
+            continue  # a stack with a cube nobody named is free_unnamed_orders' and the citations'; one of
+            # interchangeable cubes (one colour) has no order to drop
+        objs = list(p.objects)
+        others = [q for q in parts if q is not p and set(q.object_names()) & set(objs)]
+        if not all(isinstance(q, InRegion) or (type(q) is OnPatch and q.a == objs[0]) for q in others):
+            continue  # a cube of the stack related to something else by itself: its place is said
+        ends = {end: [n for n in objs if colors[n] == c] for end, c in roles.items()}
+        if any(len(v) != 1 for v in ends.values()):
+            continue  # a role colour missing from this stack, or shared by two of its cubes
+        if "bottom" in ends:
+            objs.remove(ends["bottom"][0])
+            objs.insert(0, ends["bottom"][0])
+        if "top" in ends:
+            objs.remove(ends["top"][0])
+            objs.append(ends["top"][0])
+        if objs != list(p.objects):
+            continue  # the goal configuration stacks them otherwise: leave it to the citations
+        out[i] = (AnchoredStack(objects=p.objects, bottom="bottom" in ends, top="top" in ends) if ends
+                  else UnorderedStack(objects=p.objects))
+        for j, q in enumerate(parts):
+            if type(q) is OnPatch and q.a == objs[0] and q in others:
+                out[j] = StackOnPatch(q.a, q.patch, tuple(sorted(objs)))
+    if out == parts:
+        return schema
+    new_goal = And(out) if isinstance(goal, And) else out[0]
+    summary = "; ".join(p.describe() for p in out)
+    return schema.model_copy(update={"goal": new_goal, "goal_summary": summary,
+                                     "paraphrases": make_paraphrases(summary)})
+
+
 def parse(instruction: str) -> TaskSchema:
     """Read an instruction into a TaskSchema.
 
@@ -83,7 +152,7 @@ def parse(instruction: str) -> TaskSchema:
                 # exists (a tower's named end kept, the rest free); the rest is recorded as
                 # uncited in task.yaml. Not refused yet: the citations do not cover every
                 # parameter a reader sets (a line's axis, a default count), issue 30
-                return citations.enforce(free_unnamed_orders(f, schema), refuse=False)
+                return citations.enforce(free_listed_orders(f, free_unnamed_orders(f, schema)), refuse=False)
             first_gap = first_gap or gap  # a reading that drops a mention: try the next reader
     if first_gap is not None:
         raise first_gap
