@@ -207,6 +207,24 @@ def test_plural_groups_that_are_read(text, expected):
 
 
 @pytest.mark.parametrize("text,expected", [
+    # counted colour groups said together keep each group's count (issue 30 item 4)
+    ("Put 2 red blocks and 2 blue blocks in a row.", ["line(blue,blue,red,red)"]),
+    ("Make a line of 3 red and 2 blue blocks", ["line(blue,blue,red,red,red)"]),
+    ("Put 3 red and 3 blue blocks in a circle.", ["circle(blue,blue,blue,red,red,red)"]),
+    ("Make a 2 by 2 grid of 2 red and 2 blue blocks", ["grid(2x2:blue,blue,red,red)"]),
+    # a listed colour is one cube: a circle of the red, green and blue blocks has three
+    ("Arrange the red, green and blue blocks in a circle.", ["circle(blue,green,red)"]),
+])
+def test_counted_groups_and_lists_keep_their_counts(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_circle_of_two_listed_cubes_is_refused_not_padded():
+    with pytest.raises(ParseError, match="a circle needs at least 3 cubes and it names 2"):
+        parse("Arrange the red and blue blocks in a circle.")
+
+
+@pytest.mark.parametrize("text,expected", [
     ("Pick the red block and place it on the left side.", ["in_region(red,left)"]),
     ("Pick the yellow block and place it on the middle.", ["in_region(yellow,center)"]),
     ("push the yellow block towards the green block", ["next_to(green,yellow)"]),

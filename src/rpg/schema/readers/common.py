@@ -27,7 +27,27 @@ from rpg.schema.model import RepairRecord
 from rpg.schema.reading import Features, ParseError, canon_color
 
 
+COUNTED_GROUPS_RE = re.compile(
+    rf"\b(\d+)\s+({COLOR_RE})(?:\s+(?:blocks?|cubes?))?((?:\s*,\s*(?:and\s+)?|\s+and\s+)\d+\s+(?:{COLOR_RE})"
+    rf"(?:\s+(?:blocks?|cubes?))?)+(?!\s+(?:goal\s+)?patch)")
+"""Counted colour groups said together: "2 red blocks and 2 blue blocks", "3 red, 3 green and 3 blue cubes"."""
+
+
+def counted_groups(f: Features) -> list[tuple[int, str]]:
+    """(count, colour) per group of one coordinated list of counted colour groups ("3 red and 2
+    blue blocks" -> [(3, "red"), (2, "blue")]); empty when there is no such list."""
+    m = COUNTED_GROUPS_RE.search(f.text)
+    if m is None:
+        return []
+    return [(int(n), canon_color(c)) for n, c in re.findall(rf"\b(\d+)\s+({COLOR_RE})\b", m.group(0))]
+
+
 def stated_count(f: Features, nouns: str = "block|cube|box|piece|object", default: int | None = None) -> int | None:
+    """The number of cubes said ("4 blocks"; counted colour groups add up: "2 red and 2 blue
+    blocks" is 4), else ``default``."""
+    groups = counted_groups(f) if nouns == "block|cube|box|piece|object" else []
+    if groups:
+        return sum(n for n, _ in groups)
     m = re.search(rf"\b(\d+)\s+(?:[a-z\-]+\s+){{0,3}}?(?:{nouns})s?\b", f.text)
     if m:
         return int(m.group(1))
@@ -197,6 +217,11 @@ def fill_structure(f, b, n, material, order, layout_fn, face="up"):
             key = "label" if material == "letters" else "number"
             b.preds.append(SortedBy(tuple(names), key=key, direction="reading", descending=order[1], strict=strict, face=face))
             b.summary.append(f"{'letters' if key == 'label' else 'digits'} {'descending' if order[1] else 'ascending'} in reading order ({'front' if face == 'front' else 'visible'} faces)")
+        return names
+    groups = counted_groups(f)
+    if groups and sum(k for k, _ in groups) == n and not order:  # "2 red and 2 blue blocks": each group's count
+        names = [b.cube(c) for k, c in groups for _ in range(k)]
+        b.place(layout_fn(names))
         return names
     colors = list(dict.fromkeys(f.color_list()))
     if len(f.color_list()) == n and len(colors) > 1 and not (order and order[0] == "color"):

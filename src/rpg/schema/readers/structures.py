@@ -43,6 +43,7 @@ from rpg.schema.readers.common import (
     alternating_colors,
     asks_per_layer,
     colors_for,
+    counted_groups,
     directed_line,
     direction_of,
     fill_structure,
@@ -198,7 +199,15 @@ def recognize_circle(f: Features, b: Builder) -> bool:
     corners = re.search(r"\bcorners of (?:a|the) square\b", f.text)
     if not f.has("circle", "circular", "ring", "round", "circles") and not corners:
         return False
-    n = stated_count(f, default=4 if corners else 6)
+    n = stated_count(f, default=None)
+    listed = list(f.color_list())
+    if n is None and len(listed) >= 2 and len(set(listed)) == len(listed) and re.search(
+            rf"\b(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:the\s+)?(?:{COLOR_RE})\b", f.text):
+        n = len(listed)  # "the red, green and blue blocks": one cube of each colour listed, no more
+        if n < 3:
+            raise ParseError(f"a circle needs at least 3 cubes and it names {n} ({', '.join(listed)}); say how many "
+                             "(e.g. 'a circle of 3 red and 3 blue blocks')")
+    n = n if n is not None else (4 if corners else 6)
     if n < 3:
         raise ParseError("a circle needs at least 3 cubes")
     names = fill_structure(f, b, n, material_of(f), None, lambda ns: circle_layout(ns))
@@ -334,6 +343,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         if material in ("letters", "digits") and not distinct:  # "line up four letter cubes": labels, any order
             labels, _ = label_sequence(material, n, b, ordered=False)
             names = [b.semantic(lab) for lab in labels]
+        elif (groups := counted_groups(f)) and sum(k for k, _ in groups) == n:  # "2 red and 2 blue blocks"
+            names = [b.cube(c) for k, c in groups for _ in range(k)]
         else:
             names = [b.cube(c) for c in (distinct * n if len(distinct) == 1 else colors_for(n, f))]
         middle = re.search(rf"\b({COLOR_RE})\s+(?:block\s+|cube\s+)?(?:is\s+)?(?:in|at)\s+the\s+(?:middle|center|centre)\b", f.text)
