@@ -210,6 +210,7 @@ def test_bad_input_is_one_line_and_writes_nothing(tmp_path):
         (["reasoning=nonsense", "--library", str(LIBRARY / "manifest.yaml")], "selects no task"),
         (["library/stack_blocks", "--instruction", "paraphrase"], "--instruction must be"),
         (["library/stack_blocks", "--policy", "ws://127.0.0.1:9"], "cannot reach the policy server"),
+        (["library/stack_blocks", "--visual", "fine"], "--visual must be one of decimated, stock"),
     ):
         r = _rpg("eval", *args, "-o", str(out))
         assert r.returncode == 2, (args, r.stderr)
@@ -259,6 +260,29 @@ def test_compare_on_other_seeds_is_fisher_and_other_settings_are_refused(tmp_pat
     assert r.returncode == 2 and "embodiment: 'floating_gripper' vs 'panda'" in r.stderr, r.stderr
     r = _rpg("eval", "compare", str(tmp_path / "a"), str(tmp_path / "panda"), "--allow-mismatch")
     assert r.returncode == 0 and "--allow-mismatch" in r.stdout
+
+
+@pytest.mark.parametrize("backend", ["local", "ray"])
+def test_visual_reaches_the_environments_of_either_backend(backend, tmp_path):
+    """``rpg eval --visual stock`` on the process pool and on Ray: each episode's record reads
+    the meshes back from the environment its worker built; run.json and the summary record the
+    setting; a run of the default meshes is not compared with it unasked, and resuming the run
+    with the other meshes is one line, exit 2."""
+    if backend == "ray":
+        pytest.importorskip("ray", reason="Ray is not installed: the ray backend cannot be tested")
+    args = ["eval", "library/stack_blocks", "--policy", "noop", "-n", "2", "--embodiment", FLOAT, "--cameras", "wrist",
+            "--image-size", "32", "-j", "2", "--backend", backend]
+    runs = {"stock": tmp_path / "stock", "decimated": tmp_path / "decimated"}
+    for visual, run in runs.items():
+        r = _rpg(*args, "--visual", visual, "-o", str(run))
+        assert r.returncode == 0 and "Traceback" not in r.stderr, r.stderr
+        assert [e["visual"] for e in _lines(run / "episodes.jsonl")] == [visual, visual]
+        assert json.loads((run / "run.json").read_text())["visual"] == visual
+        assert json.loads((run / "summary.json").read_text())["config"]["visual"] == visual
+    r = _rpg("eval", "compare", str(runs["stock"]), str(runs["decimated"]))
+    assert r.returncode == 2 and "visual: 'stock' vs 'decimated'" in r.stderr, r.stderr
+    r = _rpg(*args, "-o", str(runs["stock"]))  # the default meshes into the stock run
+    assert r.returncode == 2 and "other settings (visual)" in r.stderr and len(r.stderr.strip().splitlines()) == 1
 
 
 def test_a_failing_plugin_keeps_every_episode_and_the_run_goes_on(tmp_path):

@@ -395,6 +395,9 @@ def eval_cmd(
     fail_fast: Annotated[bool, typer.Option("--fail-fast", help="Stop at the first episode whose policy fails.")] = False,
     allow_mismatch: Annotated[bool, typer.Option("--allow-mismatch", help="compare: compare runs whose settings or "
                                                  "task contents differ (the output says so).")] = False,
+    visual: Annotated[str, typer.Option("--visual", help="The robot's meshes in the images: decimated (default) or "
+                                                         "stock (the Menagerie's); recorded in run.json and each "
+                                                         "episode's record.")] = "decimated",
 ) -> None:
     """Run a policy on tasks: success and progress per task, family version, steering intent and
     split, with standard errors and Wilson 95% intervals.  An episode whose policy fails or times
@@ -414,7 +417,7 @@ def eval_cmd(
                         instruction=instruction, cameras=cams, image_size=(image_size, image_size), replan=replan,
                         video=video, library=str(library), control_mode=control_mode,
                         inference_timeout=inference_timeout, episode_timeout=episode_timeout,
-                        allow_unstated=allow_unstated)
+                        allow_unstated=allow_unstated, visual=visual)
     from rich.progress import Progress
 
     with _reported_errors(), Progress(console=err, transient=True) as bar:

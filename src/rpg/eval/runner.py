@@ -94,6 +94,9 @@ class EvalConfig:
         episode_timeout: seconds one episode may take (> 0).
         allow_unstated: score tasks whose sent instruction does not state every constraint
             of G (:func:`instruction_check`); refused otherwise.
+        visual: the robot's meshes in the images, ``decimated`` (default) or ``stock``
+            (:class:`rpg.env.BlockTaskEnv`'s ``visual``); each episode's record says which
+            its environment drew.  A run from before this setting resumes as ``decimated``.
     """
 
     target: str
@@ -110,6 +113,7 @@ class EvalConfig:
     inference_timeout: float = INFERENCE_TIMEOUT_S
     episode_timeout: float = EPISODE_TIMEOUT_S
     allow_unstated: bool = False
+    visual: str = "decimated"
 
     def camera_list(self) -> tuple[str, ...]:
         if self.cameras is not None:
@@ -409,7 +413,7 @@ def _env_for(unit: Unit):
             _ENVS.popitem(last=False)[1][0].close()
         size = VIDEO_SIZE if cfg.video and not cfg.camera_list() else tuple(cfg.image_size)
         env = BlockTaskEnv(unit.task.path, embodiment=cfg.embodiment, control_mode=cfg.control_mode,
-                           cameras=cfg.camera_list(), image_size=size, instruction=unit.variant)
+                           cameras=cfg.camera_list(), image_size=size, instruction=unit.variant, visual=cfg.visual)
         _ENVS[key] = (env, env.source.content_hash)
     _ENVS.move_to_end(key)
     return _ENVS[key]
@@ -472,7 +476,7 @@ def run_unit(unit: Unit) -> dict:
     return {"task": unit.task.name, "task_path": unit.task.path, "task_hash": content_hash,
             "family": unit.task.family, "version": unit.task.version, "intent": unit.task.intent,
             "split": unit.task.split, "seed": int(unit.seed), "instruction_variant": unit.variant,
-            "embodiment": cfg.embodiment, "policy": cfg.policy, **result,
+            "embodiment": cfg.embodiment, "visual": env.unwrapped.robot.visual, "policy": cfg.policy, **result,
             "video": str(video.relative_to(unit.run_dir)) if video and video.exists() else None}
 
 
@@ -495,6 +499,8 @@ def _check_run_dir(run_dir: Path, config: EvalConfig) -> None:
             before = json.loads(settings.read_text())
         except ValueError:
             raise BadInput(f"{settings} is not readable JSON; give a new -o directory") from None
+        if isinstance(before, dict):
+            before = {"visual": "decimated"} | before  # a run from before --visual drew the decimated meshes
         if before != config.to_json():
             changed = sorted(k for k in set(before) | set(config.to_json()) if before.get(k) != config.to_json().get(k))
             raise BadInput(f"{run_dir} holds a run with other settings ({', '.join(changed)}); give a new -o "
@@ -509,15 +515,19 @@ def check_settings(config: EvalConfig) -> list[tuple[EvalTask, str]]:
 
     Raises:
         BadInput: no seeds, a bad replan, timeout, embodiment, control mode, camera, image
-            size, target, instruction mode or paraphrase, or a policy that cannot be loaded.
+            size, visual, target, instruction mode or paraphrase, or a policy that cannot be
+            loaded.
     """
     from rpg.env.core import CAMERAS
     from rpg.env.embodiments import make_embodiment
+    from rpg.env.embodiments.visuals import VISUALS
 
     if not config.seeds:
         raise BadInput("no seeds: give --episodes N (N >= 1) or --seeds LIST")
     if config.replan is not None and config.replan < 1:
         raise BadInput("--replan must be at least 1")
+    if config.visual not in VISUALS:
+        raise BadInput(f"--visual must be one of {', '.join(VISUALS)}, not {config.visual!r}")
     for name, value in (("--inference-timeout", config.inference_timeout), ("--episode-timeout", config.episode_timeout)):
         if not (isinstance(value, int | float) and value > 0 and value == value and value != float("inf")):
             raise BadInput(f"{name} must be a positive number of seconds, not {value!r}")

@@ -26,8 +26,11 @@ Z95 = 1.959963984540054
 SIGNIFICANCE = 0.05
 """Holm-adjusted p-value below which ``rpg eval compare`` calls a difference real."""
 
-MATCHED_SETTINGS = ("embodiment", "control_mode", "cameras", "image_size", "replan")
+MATCHED_SETTINGS = ("embodiment", "control_mode", "cameras", "image_size", "replan", "visual")
 """Settings two runs must share to be compared (``--allow-mismatch`` overrides, and says so)."""
+
+_SETTING_DEFAULTS = {"visual": "decimated"}
+"""What a summary from before a setting existed ran with."""
 
 
 def wilson_interval(successes: int, n: int, z: float = Z95) -> tuple[float, float]:
@@ -166,7 +169,7 @@ def holm(pvalues: list[float]) -> list[float]:
 def mismatches(a: dict, b: dict) -> list[str]:
     """What keeps two summaries from being compared: a setting of :data:`MATCHED_SETTINGS`,
     or a task both ran whose content differs; one line each."""
-    ca, cb = a.get("config", {}), b.get("config", {})
+    ca, cb = _SETTING_DEFAULTS | a.get("config", {}), _SETTING_DEFAULTS | b.get("config", {})
     out = [f"{k}: {ca.get(k)!r} vs {cb.get(k)!r}" for k in MATCHED_SETTINGS if ca.get(k) != cb.get(k)]
     ha, hb = a.get("task_hashes", {}), b.get("task_hashes", {})
     for task in sorted(set(ha) & set(hb)):
