@@ -136,6 +136,24 @@ def test_in_line_with_order():
     assert not InLine(("r", "g", "b")).evaluate(bent)
 
 
+def test_a_line_in_no_named_direction_and_a_sequence_from_either_end():
+    def line(points, colors=("red", "green", "blue")):
+        return state(*(cube(c, x, y, color=c) for c, (x, y) in zip(colors, points, strict=True)))
+
+    across = [(0.55, 0.1), (0.55, 0.0), (0.55, -0.1)]
+    deep = [(0.45, 0.0), (0.55, 0.0), (0.65, 0.0)]
+    diagonal = [(0.48, -0.07), (0.55, 0.0), (0.62, 0.07)]
+    for pts in (across, deep, diagonal):  # "line up the blocks" names no direction: any straight line holds
+        assert InLine(("red", "green", "blue"), axis=None).evaluate(line(pts)), pts
+    assert not InLine(("red", "green", "blue")).evaluate(line(deep))  # a left-right line is asked: it fails
+    assert not InLine(("red", "green", "blue"), axis=None).evaluate(line([(0.55, 0.1), (0.6, 0.0), (0.55, -0.1)]))
+    seq = InLine(("red", "green", "blue"), axis=None, order="sequence")  # "in the order red, green, blue"
+    assert seq.evaluate(line(across)) and seq.evaluate(line(list(reversed(across)))) and seq.evaluate(line(diagonal))
+    r = seq.evaluate(line(across, colors=("green", "red", "blue")))
+    assert not r and "sequence order is" in r.reason
+    assert "in that order from either end" in seq.describe()
+
+
 def test_in_circle():
     pts = [cube(f"c{i}", 0.55 + 0.08 * math.cos(a), 0.08 * math.sin(a)) for i, a in enumerate(np.linspace(0, 2 * math.pi, 6, endpoint=False))]
     names = tuple(o.name for o in pts)

@@ -925,26 +925,42 @@ class InLine(Predicate):
 
     Args:
         objects: the objects, listed in ``order`` when one is given.
-        axis: ``"y"`` for a left-right line, ``"x"`` for a front-back line.
+        axis: ``"y"`` for a left-right line, ``"x"`` for a front-back line, None for a
+            line in any direction on the table ("line up the blocks" names none; the line is
+            then the principal axis of the centres).
         order: optional direction (``"left_to_right"``...) in which the listed objects
-            must appear; interchangeable objects may trade places.
+            must appear, or ``"sequence"``: in the listed order from one end or the other
+            ("in the order red, green, blue" says no direction); interchangeable objects
+            may trade places.
     """
 
     objects: tuple[str, ...]
-    axis: str = "y"
+    axis: str | None = "y"
     order: str | None = None
     name: ClassVar[str] = "in_line"
     cue: ClassVar[str] = r"\b(?:lines?|rows?|align\w*|lined|columns?|side\s+by\s+side|sequence|order\w*|left\s+to\s+right|right\s+to\s+left|spell\w*|word|sort\w*)\b"
     swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
 
+    def _direction(self, objs) -> np.ndarray:
+        """Unit vector (x, y) along the line: the axis, or the centres' principal axis."""
+        if self.axis is not None:
+            return np.array([0.0, 1.0]) if self.axis == "y" else np.array([1.0, 0.0])
+        xy = np.array([o.pos[:2] for o in objs], float)
+        if len(xy) < 2:
+            return np.array([0.0, 1.0])
+        _, _, vt = np.linalg.svd(xy - xy.mean(axis=0), full_matrices=False)
+        d = vt[0]
+        return d if (d[1], d[0]) >= (0.0, 0.0) else -d  # sign fixed: towards +y (left), else +x
+
     def _evaluate(self, state):
         objs = [state[n] for n in self.objects]
-        along_i = 1 if self.axis == "y" else 0
-        across = np.array([o.pos[1 - along_i] for o in objs])
-        dev = float(np.max(np.abs(across - across.mean())))
+        d = self._direction(objs)
+        xy = np.array([o.pos[:2] for o in objs], float)
+        along_c, across_c = xy @ d, xy @ np.array([-d[1], d[0]])
+        dev = float(np.max(np.abs(across_c - across_c.mean())))
         gaps = np.array([abs(_table_gap(o)) for o in objs])
-        coords = np.sort(np.array([o.pos[along_i] for o in objs]))
+        coords = np.sort(along_c)
         spacing = np.diff(coords)
         min_sp = float(spacing.min()) if len(spacing) else 0.0
         max_sp = float(spacing.max()) if len(spacing) else 0.0
@@ -952,8 +968,14 @@ class InLine(Predicate):
         measured = {"max_off_line": dev, "max_table_gap": float(gaps.max()), "min_spacing": min_sp, "max_spacing": max_sp}
         reason = "objects in a line" if ok else "objects not in a straight line on the table"
         if ok and self.order:
-            got = order_objects(objs, self.order)
-            order_ok = [_signature(o) for o in got] == [_signature(o) for o in objs]
+            want = [_signature(o) for o in objs]
+            if self.order == "sequence":
+                got = [objs[i] for i in np.argsort(along_c, kind="stable")]
+                sig = [_signature(o) for o in got]
+                order_ok = sig in (want, want[::-1])
+            else:
+                got = order_objects(objs, self.order)
+                order_ok = [_signature(o) for o in got] == want
             measured["order"] = [o.name for o in got]
             if not order_ok:
                 ok = False
@@ -976,6 +998,8 @@ class InLine(Predicate):
         return replace(self, order=None) if kind == "order" else None
 
     def describe(self):
+        if self.order == "sequence":
+            return "line of " + ", ".join(self.objects) + " in that order from either end"
         how = f" {self.order.replace('_', ' ')}" if self.order else ""
         return f"line{how} of " + ", ".join(self.objects)
 

@@ -298,7 +298,9 @@ class Line(StructureKind):
 
     def render(self, spec):
         n = len(spec.items)
-        if spec.direction is None:
+        if spec.direction == "sequence" and spec.material == "colors":  # an order from either end
+            return f"Arrange {n} blocks in a line in the order {', '.join(spec.colors())}"
+        if spec.direction is None or spec.direction == "sequence":
             where = " from front to back" if spec.axis == "x" else ""
             if spec.material == "colors":
                 return f"Align {n} blocks in a single straight line{where}: {', '.join(spec.colors())}"

@@ -165,6 +165,22 @@ def direction_of(f: Features, default: str = "left_to_right") -> str:
     return default
 
 
+def direction_stated(f: Features) -> bool:
+    """Whether the instruction says which way a sequence runs ("from left to right")."""
+    return bool(re.search(r"\b(?:left to right|right to left|front to back|back to front)\b", f.text))
+
+
+def line_axis_said(f: Features) -> str | None:
+    """The axis a line's words give: ``"x"`` (front-back: "vertical", "front to back"),
+    ``"y"`` (left-right: "horizontal", "left to right", "side by side"), or None when they
+    name none ("line up the blocks": any straight line on the table)."""
+    if f.has("vertical", "vertically", "front to back", "back to front", "depth"):
+        return "x"
+    if f.has("horizontal", "horizontally", "left to right", "right to left", "side by side", "left-right", "sideways"):
+        return "y"
+    return None
+
+
 def spelled_word(f: Features) -> str | None:
     for q in f.quoted:
         if re.fullmatch(r"[A-Za-z]{2,}", q.strip()):

@@ -46,10 +46,12 @@ from rpg.schema.readers.common import (
     counted_groups,
     directed_line,
     direction_of,
+    direction_stated,
     fill_structure,
     item_sequence,
     label_sequence,
     line_axis,
+    line_axis_said,
     mark_references,
     material_of,
     ordering_of,
@@ -267,7 +269,8 @@ def recognize_piles(f: Features, b: Builder) -> bool:
 @reader(order=160)
 def recognize_ordered_line(f: Features, b: Builder) -> bool:
     order = ordering_of(f)
-    explicit = re.search(r"\border\s+((?:(?:" + COLOR_RE + r")\s*,?\s*(?:and\s+|then\s+)?){2,})", f.text)
+    explicit = re.search(r"\b(?:order(?:ed)?|sequence)\s*(?::\s*|(?:as|like|by)\s+)?((?:(?:" + COLOR_RE
+                         + r")\s*,?\s*(?:and\s+|then\s+)?){2,})", f.text)
     labels = explicit_labels(f)
     is_line = f.has("align", "aligned", "line", "row", "arrange", "arranged", "order", "sort", "sorted") or order
     shape = re.search(r"\b(?:in|into|as)\s+(?:a|an|the)\s+([a-z]+)\s+(?:shape|pattern|formation)\b", f.text)
@@ -298,8 +301,12 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         colors = [canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", explicit.group(1))]
         names = [b.cube(c) for c in colors]
         b.place(directed_line(names, direction))
-        b.preds.append(InLine(tuple(names), axis=line_axis(direction), order=direction))
-        b.summary.append(f"cubes in a line {direction.replace('_', ' ')}: {', '.join(names)}")
+        if direction_stated(f):
+            b.preds.append(InLine(tuple(names), axis=line_axis(direction), order=direction))
+            b.summary.append(f"cubes in a line {direction.replace('_', ' ')}: {', '.join(names)}")
+        else:  # "in the order red, green, blue", "alternating red and blue": from either end, any direction
+            b.preds.append(InLine(tuple(names), axis=None, order="sequence"))
+            b.summary.append(b.preds[-1].describe())
     elif labels:
         reads = re.search(r"\b(?:reads?|read as|shows?|spells?)\s+'?([A-Za-z0-9]{2,})'?", f.original, re.IGNORECASE)
         if reads and sorted(reads.group(1).upper()) == sorted(labels):  # "the digits 1, 2, 3 so that they read 321"
@@ -353,11 +360,11 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
             ends = [nm for nm, c in zip(names, distinct, strict=True) if c != mid]
             names = [ends[0], names[distinct.index(mid)], ends[1]]
             b.preds.append(Between(names[1], names[0], names[2]))
-        axis = "x" if f.has("vertical", "front to back", "depth") else "y"
-        b.place(line_layout(names, axis=axis))
+        axis = line_axis_said(f)
+        b.place(line_layout(names, axis=axis or "y"))
         b.preds.insert(0, InLine(tuple(names), axis=axis))
         kind = {"letters": "letter ", "digits": "digit "}.get(material, "") if not distinct else ""
-        b.summary.append(f"{n} {kind}cubes in one straight {'left-right' if axis == 'y' else 'front-back'} line"
+        b.summary.append(f"{n} {kind}cubes in one straight {({'y': 'left-right ', 'x': 'front-back '}).get(axis, '')}line"
                          + (f" with {names[1]} in the middle" if len(b.preds) > 1 else ""))
     b.primitives += ["arrange"]
     return True
