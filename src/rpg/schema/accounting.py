@@ -122,7 +122,7 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
         out.append(Mention(m.group(0).strip(), "count", count=n, color=",".join(named) or None))
     for m in re.finditer(rf"\b(?P<c>{colors})\s+(?:goal\s+)?patch(?:es)?\b", text):
         out.append(Mention(m.group(0), "patch", color=canon(m.group("c"))))
-    for m in re.finditer(r"\b(?:a|an|the|some)\s+(?:goal\s+|target\s+)?patch\b(?!\s+of\s+(?:its|their)\b)", text):
+    for m in re.finditer(r"\b(?:a|an|the|some)\s+(?:(?:goal|target)\s+){0,2}patch\b(?!\s+of\s+(?:its|their)\b)", text):
         out.append(Mention(m.group(0), "patch"))  # a patch of no colour: some goal patch must be in the task
     for m in re.finditer(r"@region_([a-z_]+)", text):
         out.append(Mention(m.group(0), "place", region=m.group(1)))

@@ -73,7 +73,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "is a measured or vague quantity: rpg's relations are qualitative (next to, left of, far from) and "
      "its counts exact"),
     ("size", r"\b(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge|giant|mini|heavy|heavier"
-             r"|heaviest|wider|narrow|thin|thick)\s+(?:(?!(?:number|digit|letter|label)\b)[a-z]+\s+)?(?:blocks?|cubes?|boxes|box|ones?)\b",
+             r"|heaviest|wider|narrow|thin|thick)\s+(?:(?!(?:number|digit|letter|label)\b)[a-z]+\s+)?(?:blocks?|cubes?|boxes|box|ones?"
+             r"|objects?|items?|pieces?|things?)\b",
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
     ("reference", r"\bthe\s+(?:very\s+)?(?:first|second|third|fourth|fifth|sixth|last|next|previous|former|latter)"
                   r"\s+(?:(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?))\b"

@@ -416,8 +416,9 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
     """One tower given as a sequence of cubes: "a tower from bottom to top: red, blue,
     letter 'A'", "a tower of red, green and blue blocks", "red at the bottom, then green,
     then blue on top", "the letters A, B, C in a tower", "four blocks in rainbow order".
-    Listing order is bottom to top unless the text says "top to bottom" or marks a cube
-    "on top" / "at the bottom"."""
+    Listing order is bottom to top unless the text says "top to bottom" or "in the reversed
+    order", or marks a cube "on top" / "at the bottom" (a list with no order word at all is
+    freed afterwards: :func:`rpg.schema.readers.free_listed_orders`)."""
     if not f.has("stack", "tower", "stacked") or f.has("towers", "stacks", "each other", "patch", "patches", "pyramid"):
         return False
     if "@" in mark_references(f.text) or len(DESCRIBED_TOWER_RE.findall(f.text)) >= 2:  # relations, or several towers
@@ -465,8 +466,8 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         hints = {}  # the listed cube is already in the middle
     if len(items) < 2:
         return False
-    if re.search(r"\btop to bottom\b", f.text):
-        items.reverse()
+    if re.search(r"\btop to bottom\b|\bin\s+(?:the\s+)?revers(?:e|ed)\s+order\b", f.text):
+        items.reverse()  # "... in the reversed order": the list read from its end
     else:
         bottom = [items[i] for i, h in hints.items() if h in ("bottom", "base")]
         top = [items[i] for i, h in hints.items() if h == "top"]
