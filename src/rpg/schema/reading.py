@@ -189,6 +189,7 @@ def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
     for pattern, full in lexicon.CONTRACTIONS:
         text = re.sub(pattern, full, text)
     text = _SYNONYM_RE.sub(lambda m: lexicon.SYNONYMS[m.group(0)], text)
+    text = lexicon.TEXTURED_RE.sub(lambda m: f"the {m.group('c')} block" if m.group("c") in COLORS else m.group(0), text)
     text = re.sub(r"(\d)\s*[x\u00d7]\s*(?=\d)", r"\1x", text)
     text = re.sub(r"\b(\d+)\s+by\s+(?=\d)", r"\1x", text)
     text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall)", r"\1 \2", text)

@@ -272,7 +272,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
     explicit = re.search(r"\b(?:order(?:ed)?|sequence)\s*(?::\s*|(?:as|like|by)\s+)?((?:(?:" + COLOR_RE
                          + r")\s*,?\s*(?:and\s+|then\s+)?){2,})", f.text)
     labels = explicit_labels(f)
-    is_line = f.has("align", "aligned", "line", "row", "arrange", "arranged", "order", "sort", "sorted") or order
+    is_line = f.has("align", "aligned", "line", "row", "arrange", "arranged", "order", "sort", "sorted",
+                    "horizontally", "horizontal") or order
     shape = re.search(r"\b(?:in|into|as)\s+(?:a|an|the)\s+([a-z]+)\s+(?:shape|pattern|formation)\b", f.text)
     if shape and shape.group(1) not in ("line", "row", "straight", "linear", "horizontal", "single"):
         return False  # "in a plus shape": a shape the parser does not build
