@@ -15,7 +15,15 @@ from __future__ import annotations
 
 from pydantic import ValidationError
 
-from rpg.domain.predicates import AnchoredStack, And, InRegion, OnPatch, Stack, StackOnPatch, UnorderedStack
+from rpg.domain.predicates import (
+    AnchoredStack,
+    And,
+    InRegion,
+    OnPatch,
+    Stack,
+    StackOnPatch,
+    UnorderedStack,
+)
 from rpg.schema import citations, lexicon
 from rpg.schema.accounting import unaccounted
 from rpg.schema.builder import Builder, make_paraphrases

@@ -26,7 +26,6 @@ from rpg.schema.lexicon import COLOR_RE, REF_PREP, VOCAB
 from rpg.schema.model import RepairRecord
 from rpg.schema.reading import Features, ParseError, canon_color
 
-
 COUNTED_GROUPS_RE = re.compile(
     rf"\b(\d+)\s+({COLOR_RE})(?:\s+(?:blocks?|cubes?))?((?:\s*,\s*(?:and\s+)?|\s+and\s+)\d+\s+(?:{COLOR_RE})"
     rf"(?:\s+(?:blocks?|cubes?))?)+(?!\s+(?:goal\s+)?patch)")
