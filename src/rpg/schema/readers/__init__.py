@@ -54,11 +54,16 @@ def free_unnamed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
             return UnorderedStack(objects=p.objects)
         return p
 
-    freed = [free(p) for p in parts]
-    if freed == parts:
+    return _with_parts(schema, goal, parts, [free(p) for p in parts])
+
+
+def _with_parts(schema: TaskSchema, goal, parts: list, new: list) -> TaskSchema:
+    """``schema`` with the conjuncts ``parts`` of its ``goal`` replaced by ``new``, and the
+    summary and paraphrases saying the new goal (``schema`` itself when nothing changed)."""
+    if new == parts:
         return schema
-    new_goal = And(freed) if isinstance(goal, And) else freed[0]
-    summary = "; ".join(p.describe() for p in freed)
+    new_goal = And(new) if isinstance(goal, And) else new[0]
+    summary = "; ".join(p.describe() for p in new)
     return schema.model_copy(update={"goal": new_goal, "goal_summary": summary,
                                      "paraphrases": make_paraphrases(summary)})
 
@@ -124,12 +129,7 @@ def free_listed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
         for j, q in enumerate(parts):
             if type(q) is OnPatch and q.a == objs[0] and q in others:
                 out[j] = StackOnPatch(q.a, q.patch, tuple(sorted(objs)))
-    if out == parts:
-        return schema
-    new_goal = And(out) if isinstance(goal, And) else out[0]
-    summary = "; ".join(p.describe() for p in out)
-    return schema.model_copy(update={"goal": new_goal, "goal_summary": summary,
-                                     "paraphrases": make_paraphrases(summary)})
+    return _with_parts(schema, goal, parts, out)
 
 
 def parse(instruction: str) -> TaskSchema:
