@@ -237,6 +237,8 @@ def _restacked(schema, order):
      [("red", "blue", "green"), ("red", "green", "blue")], [("blue", "red", "green")]),
     # an order said is kept
     ("Stack the red block on the blue block", [("blue", "red")], [("red", "blue")]),
+    # a stack beside a cube: next_to names its base, so the order read is the goal's (and its summary's)
+    ("Stack the red and blue blocks next to the green block", [("red", "blue")], [("blue", "red")]),
     ("Stack the red, blue and green blocks from bottom to top", [("red", "blue", "green")], [("green", "blue", "red")]),
     ("Stack the red, blue and green blocks in that order", [("red", "blue", "green")], [("blue", "red", "green")]),
 ])

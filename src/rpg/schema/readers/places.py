@@ -11,6 +11,7 @@ from rpg.domain.layouts import (
     stack_layout,
 )
 from rpg.domain.predicates import (
+    And,
     Behind,
     InFrontOf,
     InRegion,
@@ -18,6 +19,7 @@ from rpg.domain.predicates import (
     NextTo,
     OnTable,
     RightOf,
+    Stack,
 )
 from rpg.domain.state import Pose
 from rpg.errors import BadInput
@@ -101,6 +103,12 @@ def recognize_structure_by_cube(f: Features, b: Builder) -> bool:
         ref_xy = (xy[0][0], xy[0][1] - gap)
         base = min(cubes, key=lambda a: head.goal_layout[a.name].position[2]).name
         rels = [NextTo(base, "@ref")]
+        # next_to names one cube of the stack (its base), so the stack's order is the one read
+        # ("stack the red and blue blocks next to the green block": red at the base); its summary
+        # must not say "in any order" (a next_to of any cube of a stack is not in the domain yet)
+        parts = [Stack(p.objects) if isinstance(p, Stack) else p for p in head.goal.conjuncts()]
+        head = head.model_copy(update={"goal": And(parts) if len(parts) > 1 else parts[0],
+                                       "goal_summary": "; ".join(p.describe() for p in parts)})
     else:
         cls, axis, side = _SIDE[word]
         ref_xy = xy.mean(axis=0)
