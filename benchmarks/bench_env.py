@@ -10,7 +10,8 @@ both replaying the same oracle episode (recorded once without cameras: the physi
 same, so are the states), timed in alternating blocks so that a busy neighbour slows both
 alike; the ratio of their control steps/s, and the SSIM of every camera's images (decimated
 against stock, the same state; scikit-image) over the episode (target: ratio >= 3 and SSIM
->= 0.95 for the Panda).  The OpenGL renderer is named in the table (Mesa's llvmpipe on a
+>= 0.95 for the Panda).  The same again with the wrist camera supersampled 2x
+(``wrist_supersample=2``), and what the supersampling costs.  The OpenGL renderer is named in the table (Mesa's llvmpipe on a
 machine without a GPU; EGL on a GPU where one is lent).
 
     python benchmarks/bench_env.py [--quick]
@@ -96,43 +97,62 @@ def timed_block(env: BlockTaskEnv, state: np.ndarray, actions: list) -> float:
     return len(actions) / (time.perf_counter() - t)
 
 
+VARIANTS = {"stock meshes": {"visual": "stock"}, "decimated meshes": {"visual": "decimated"},
+            "stock meshes, wrist 2x": {"visual": "stock", "wrist_supersample": 2},
+            "decimated meshes, wrist 2x": {"visual": "decimated", "wrist_supersample": 2}}
+"""The environments timed side by side: the meshes, and the wrist camera drawn as is or
+supersampled 2x (anti-aliased shadow edges; ``BlockTaskEnv(wrist_supersample=2)``)."""
+
+
 def cameras_side_by_side(embodiment: str) -> list[tuple]:
     from skimage.metrics import structural_similarity
 
     actions = oracle_actions(embodiment)
-    envs = {v: BlockTaskEnv(TASK, embodiment=embodiment, cameras=CAMERAS, image_size=(256, 256), visual=v)
-            for v in ("stock", "decimated")}
-    # images: both replay the episode; SSIM of each camera's frames (every 4th step)
+    envs = {v: BlockTaskEnv(TASK, embodiment=embodiment, cameras=CAMERAS, image_size=(256, 256), **kw)
+            for v, kw in VARIANTS.items()}
+    stock, dec, stock2, dec2 = VARIANTS
+    pairs = {"": (stock, dec), ", wrist 2x": (stock2, dec2)}
+    # images: all replay the episode; SSIM of each camera's frames (every 4th step), decimated
+    # against stock with the same wrist setting
     starts = set(np.linspace(0, max(0, len(actions) - BLOCK), ROUNDS).astype(int).tolist())
-    states, ssim = {}, {c: [] for c in CAMERAS}
+    states, ssim = {}, {(c, tag): [] for c in CAMERAS for tag in pairs}
     obs = {v: e.reset(seed=0)[0] for v, e in envs.items()}
     for k, a in enumerate(actions):
         if k in starts:
-            states[k] = envs["stock"].unwrapped.get_state()
+            states[k] = envs[stock].unwrapped.get_state()
         if k % 4 == 0:
             for c in CAMERAS:
-                ssim[c].append(structural_similarity(obs["stock"][f"{c}_image"], obs["decimated"][f"{c}_image"],
-                                                     channel_axis=2, data_range=255))
+                for tag, (one, other) in pairs.items():
+                    ssim[(c, tag)].append(structural_similarity(obs[one][f"{c}_image"], obs[other][f"{c}_image"],
+                                                                channel_axis=2, data_range=255))
         obs = {v: e.step(a)[0] for v, e in envs.items()}
     # speed: alternating blocks along the episode (where the arm moves, grasps and places)
     rates = {v: [] for v in envs}
     for i, start in enumerate(sorted(states)):
         for v in (list(envs) if i % 2 == 0 else list(envs)[::-1]):
             rates[v].append(timed_block(envs[v], states[start], actions[start:start + BLOCK]))
-    renderer = envs["decimated"].unwrapped._renderer.renderer_name()
+    renderer = envs[dec].unwrapped._renderer.renderer_name()
     for e in envs.values():
         e.close()
-    stock, dec = (float(np.median(rates[v])) for v in ("stock", "decimated"))
-    paired = float(np.median(np.array(rates["decimated"]) / np.array(rates["stock"])))
-    rows = [
-        (f"{embodiment}: 2 cameras 256x256, stock meshes", stock, "steps/s", ""),
-        (f"{embodiment}: 2 cameras 256x256, decimated meshes", dec, "steps/s", ""),
-        (f"{embodiment}: decimated / stock (same run, paired blocks)", paired, "x", ">= 3" if embodiment == "panda" else ""),
+
+    def paired(a: str, b: str) -> float:
+        return float(np.median(np.array(rates[a]) / np.array(rates[b])))
+
+    rows = [(f"{embodiment}: 2 cameras 256x256, {v}", float(np.median(rates[v])), "steps/s", "")
+            for v in envs]
+    target = ">= 3" if embodiment == "panda" else ""
+    rows += [
+        (f"{embodiment}: decimated / stock (same run, paired blocks)", paired(dec, stock), "x", target),
+        (f"{embodiment}: decimated / stock, both wrist 2x", paired(dec2, stock2), "x", target),
+        (f"{embodiment}: decimated wrist 2x / stock wrist 1x", paired(dec2, stock), "x", ""),
+        (f"{embodiment}: cost of the wrist 2x, decimated (1x / 2x steps/s)", paired(dec, dec2), "x", ""),
     ]
-    for c in CAMERAS:
-        rows.append((f"{embodiment}: SSIM {c}, decimated vs stock (min of {len(ssim[c])})", float(np.min(ssim[c])), "",
-                     ">= 0.95" if embodiment == "panda" else ""))
-        rows.append((f"{embodiment}: SSIM {c}, mean", float(np.mean(ssim[c])), "", ""))
+    for tag in pairs:
+        for c in CAMERAS:
+            values = ssim[(c, tag)]
+            rows.append((f"{embodiment}: SSIM {c}{tag}, decimated vs stock (min of {len(values)})",
+                         float(np.min(values)), "", ">= 0.95" if embodiment == "panda" else ""))
+            rows.append((f"{embodiment}: SSIM {c}{tag}, mean", float(np.mean(values)), "", ""))
     rows.append((f"{embodiment}: renderer {renderer}", float(len(actions)), "oracle steps", ""))
     return rows
 

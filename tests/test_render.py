@@ -238,3 +238,62 @@ def test_wrist_shadows_are_filtered():
     g = hard.sum(axis=2)
     edges = (ndimage.maximum_filter(g, 3) - ndimage.minimum_filter(g, 3)) > 20
     assert not ((diff > 20) & ~ndimage.binary_dilation(edges, iterations=2)).any()  # shadow edges move, nothing else
+
+
+def _shadow_factor(env) -> np.ndarray:
+    """Per pixel of the wrist image: 1 lit by the shadow-casting light, 0 in its shadow, NaN
+    where that light adds too little to tell (the image as is, without shadows, and without
+    the light)."""
+    import mujoco
+
+    renderer, model = env._renderer, env.model
+    on = env.render_camera("wrist")
+    renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = False
+    off = env.render_camera("wrist")
+    renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = True
+    key = next(i for i in range(model.nlight) if model.light_castshadow[i])
+    model.light_active[key] = 0
+    dark = env.render_camera("wrist")
+    model.light_active[key] = 1
+    luma = [img.astype(float) @ np.array([0.299, 0.587, 0.114]) for img in (on, off, dark)]
+    light = luma[1] - luma[2]
+    return np.clip((luma[0] - luma[2]) / np.where(light >= 24, light, np.nan), 0, 1)
+
+
+def test_a_supersampled_wrist_camera_gives_shadow_edges_a_ramp():
+    """``wrist_supersample=2``: the wrist image is the rounded mean of each 2x2 block of the
+    image drawn at twice the size (the shadow map sized for that size), so a shadow's edge gets
+    pixels between lit and shadowed; drawn at the image size it has next to none (neither
+    linear filtering nor a larger shadow map gives a ramp: the filtered depth is compared, on
+    Mesa's llvmpipe and on an NVIDIA driver alike; benchmarks/bench_wrist_shadow.py)."""
+    from rpg.domain import constants as C
+    from rpg.env import BlockTaskEnv
+    from rpg.env.embodiments.base import EmbodimentError
+    from rpg.env.render import CameraRenderer
+
+    factors, images = {}, {}
+    for k in (1, 2):
+        env = _camera_env("panda", control_mode="ee_abs", cameras=("wrist",), image_size=(128, 128),
+                          wrist_supersample=k)
+        try:
+            env.reset(seed=0)
+            for _ in range(30):
+                env.step(np.array([0.45, -0.2, C.TABLE_TOP_Z + 0.09, np.pi, 0, 0, -1], np.float32))
+            images[k] = env.render_camera("wrist")
+            factors[k] = _shadow_factor(env)
+            if k == 2:
+                assert env._renderer._mjr_context.shadowSize == 1024  # 4 texels per pixel drawn (256)
+                big = CameraRenderer(env.model, 256, 256)
+                try:
+                    drawn = big.image(env.data, "robot/wrist", soft_shadows=True).astype(np.uint16)
+                finally:
+                    big.close()
+                mean = (drawn[0::2, 0::2] + drawn[1::2, 0::2] + drawn[0::2, 1::2] + drawn[1::2, 1::2] + 2) // 4
+                assert np.array_equal(images[2], mean.astype(np.uint8))
+        finally:
+            env.close()
+    ramp = {k: int(((f > 0.15) & (f < 0.85)).sum()) for k, f in factors.items()}
+    assert ramp[1] <= 10 and ramp[2] >= 40 and ramp[2] >= 5 * max(ramp[1], 1), ramp
+    assert images[1].shape == images[2].shape == (128, 128, 3)
+    with pytest.raises(EmbodimentError, match="wrist_supersample"):
+        BlockTaskEnv(STACK, embodiment="panda", cameras=("wrist",), wrist_supersample=5)

@@ -86,7 +86,7 @@ from rpg.domain.predicates import InOrder
 from rpg.env.embodiments import make_embodiment
 from rpg.env.embodiments.base import PREFIX, EmbodimentError, quat_to_axis_angle
 from rpg.env.loading import PreparedTask, TaskSource, load_env_task
-from rpg.env.render import SOFT_SHADOW_CAMERAS, CameraRenderer
+from rpg.env.render import SOFT_SHADOW_CAMERAS, SUPERSAMPLE_FACTORS, CameraRenderer
 from rpg.errors import TaskInvalid
 
 CAMERAS = ("agentview", "wrist", "default")
@@ -138,9 +138,15 @@ class BlockTaskEnv(gym.Env):
             the Panda's two 256x256 cameras ~4x faster on Mesa's software renderer) or
             ``"stock"`` (the Menagerie's); the physics is the same
             (:mod:`rpg.env.embodiments.visuals`).
+        wrist_supersample: draw the wrist camera at this many times the image size and
+            reduce each block of pixels to its mean (1, the default: no supersampling; 2:
+            anti-aliased shadow edges, the shadow map of every camera sized for the larger
+            drawing; half the Panda's control steps/s with two cameras on a software
+            renderer; :mod:`rpg.env.render`).
 
     Raises:
-        EmbodimentError: unknown embodiment, visual, camera, control mode or instruction.
+        EmbodimentError: unknown embodiment, visual, camera, control mode or instruction, or a
+            ``wrist_supersample`` outside 1..4.
         BadInput / ArtifactError / TaskInvalid: the task cannot be loaded (see
             :func:`rpg.env.loading.load_env_task`).
     """
@@ -165,7 +171,11 @@ class BlockTaskEnv(gym.Env):
                  cameras: Sequence[str] = ("agentview", "wrist"), image_size: tuple[int, int] = C.ENV_IMAGE_SIZE,
                  instruction: str = "original", privileged: bool = False, render_mode: str | None = None,
                  terminate_on_success: bool = True, max_episode_steps: int | None = None,
-                 visual: str = "decimated"):
+                 visual: str = "decimated", wrist_supersample: int = 1):
+        if wrist_supersample not in SUPERSAMPLE_FACTORS:
+            raise EmbodimentError(f"wrist_supersample must be one of {', '.join(map(str, SUPERSAMPLE_FACTORS))}, "
+                                  f"not {wrist_supersample!r}")
+        self.wrist_supersample = int(wrist_supersample)
         self.robot = make_embodiment(embodiment, visual=visual)
         if control_mode not in self.robot.CONTROL_MODES:
             raise EmbodimentError(f"{embodiment} has no control mode {control_mode!r}; "
@@ -405,9 +415,9 @@ class BlockTaskEnv(gym.Env):
         if camera not in CAMERAS:
             raise EmbodimentError(f"unknown camera {camera!r}; cameras are {', '.join(CAMERAS)}")
         if self._renderer is None:
-            self._renderer = CameraRenderer(self.model, *self.image_size)
+            self._renderer = CameraRenderer(self.model, *self.image_size, supersample=self.wrist_supersample)
         return self._renderer.image(self.data, PREFIX + camera if camera == "wrist" else camera,
-                                    soft_shadows=camera in SOFT_SHADOW_CAMERAS)
+                                    soft_shadows=camera in SOFT_SHADOW_CAMERAS, supersampled=camera == "wrist")
 
     def render(self):
         """The agentview image (H, W, 3) uint8 (``render_mode="rgb_array"``), else None."""

@@ -9,17 +9,20 @@ Per image, with the Panda's meshes (:mod:`rpg.env.embodiments.visuals`) unchange
   on, the map then holds only the robot and the cubes, and the table can no longer shadow
   itself: the moire of dots on the far side of the table (shadow acne where the table's own
   depth was compared with itself near the edge of the light's frustum) is gone.
-- **A shadow map sized for the image**: :func:`shadow_map_size` (4 texels per image pixel,
+- **A shadow map sized for the image**: :func:`shadow_map_size` (4 texels per pixel drawn,
   1024 for 256x256; MuJoCo's default is 4096, which costs a software renderer ~4x).
 - **Smoother wrist shadows**: the wrist camera reads the shadow map with linear filtering
-  instead of MuJoCo's nearest texel, so the edge of a shadow it sees up close no longer steps
-  by whole texels (several pixels).  It is still hard: Mesa's llvmpipe compares the filtered
-  depth, so a pixel is lit or shadowed, never between (measured: pixels between the two
-  levels along the edges of a wrist frame, 14 with either filter at a 1024 map, 11 at 128; a
-  smaller ``shadowscale`` or a larger map moves the steps but adds no ramp).  A ramp would
-  need supersampling the wrist image (4x the pixels).  The other cameras keep
-  the nearest texel: at a distance, on the arm's curved surfaces, the filter's wider
-  footprint would need more depth bias than MuJoCo applies (acne).
+  instead of MuJoCo's nearest texel, so the edge of a shadow it sees up close follows a
+  slightly smoother contour.  It is still hard, a pixel lit or shadowed, never between,
+  on Mesa's llvmpipe and on an NVIDIA driver (H200, EGL) alike (``benchmarks/bench_wrist_shadow.py``, 8 wrist frames of an oracle episode at 256x256:
+  34-49 pixels between the two levels against ~3,500 hard steps on both, with either filter
+  and with a 4096 map).  A ramp comes from **supersampling** (``BlockTaskEnv(...,
+  wrist_supersample=2)``, off by default: :func:`CameraRenderer.image` with ``supersampled``):
+  the wrist image drawn at 2x and each 2x2 block averaged, the shadow map (one per renderer,
+  so the other cameras' too) sized for the drawn image (2048 at 256x256): ~1,800 ramp pixels and a fifth of the hard steps, on both
+  renderers; it halves the Panda's control steps/s with two 256x256 cameras on llvmpipe
+  (README).  The other cameras keep the nearest texel: at a distance, on the arm's curved
+  surfaces, the filter's wider footprint would need more depth bias than MuJoCo applies (acne).
 - **No sky where none is seen**: the skybox (a textured cylinder drawn over every pixel) is
   skipped when all four corners of the image see the floor.
 
@@ -41,6 +44,9 @@ log = logging.getLogger(__name__)
 SOFT_SHADOW_CAMERAS = ("wrist",)
 """Cameras whose shadows are read with linear (percentage-closer) filtering."""
 
+SUPERSAMPLE_FACTORS = (1, 2, 3, 4)
+"""The supersampling factors a camera may be drawn with (1: none)."""
+
 
 def shadow_map_size(height: int, width: int) -> int:
     """Side of the shadow map for images of ``height`` x ``width`` pixels: 4 texels per
@@ -55,13 +61,17 @@ class CameraRenderer(mujoco.Renderer):
     Args:
         model: the compiled scene (its offscreen buffer and shadow map size are set here).
         height, width: image size, pixels.
+        supersample: how many times the size :meth:`image` draws a ``supersampled`` camera
+            (1..4; the offscreen buffer and the shadow map are sized for it).
     """
 
-    def __init__(self, model: mujoco.MjModel, height: int, width: int):
+    def __init__(self, model: mujoco.MjModel, height: int, width: int, supersample: int = 1):
         vis = model.vis
-        vis.global_.offwidth = max(vis.global_.offwidth, width)
-        vis.global_.offheight = max(vis.global_.offheight, height)
-        vis.quality.shadowsize = shadow_map_size(height, width)
+        self.supersample = max(1, int(supersample))
+        vis.global_.offwidth = max(vis.global_.offwidth, width * self.supersample)
+        vis.global_.offheight = max(vis.global_.offheight, height * self.supersample)
+        # 4 texels per pixel drawn: a supersampled camera's pixels are smaller
+        vis.quality.shadowsize = shadow_map_size(height * self.supersample, width * self.supersample)
         super().__init__(model, height=height, width=width)
         self._receivers = {model.geom(n).id for n in SHADOW_RECEIVERS if _has_geom(model, n)}
         floor = model.geom("floor") if _has_geom(model, "floor") else None
@@ -71,16 +81,37 @@ class CameraRenderer(mujoco.Renderer):
         self._soft = False
         self._gl_filters = True
 
-    def image(self, data: mujoco.MjData, camera: str, soft_shadows: bool = False) -> np.ndarray:
+    def image(self, data: mujoco.MjData, camera: str, soft_shadows: bool = False,
+              supersampled: bool = False) -> np.ndarray:
         """The image of ``camera`` (a camera name in the model) for the state in ``data``
-        (kinematics computed: after ``mj_step`` or ``mj_forward``)."""
+        (kinematics computed: after ``mj_step`` or ``mj_forward``); ``supersampled``: drawn
+        at ``supersample`` times the size and reduced by the mean of each block of pixels."""
         cam_id = self.model.camera(camera).id
         self.update_scene(data, camera=cam_id)
         scene = self.scene
         self._cast_no_shadow(scene)
         scene.flags[mujoco.mjtRndFlag.mjRND_SKYBOX] = self._sky_visible(data, cam_id)
         self._filter_shadows(soft_shadows)
+        if supersampled and self.supersample > 1:
+            return self._supersampled()
         return self.render()
+
+    def _supersampled(self) -> np.ndarray:
+        """The scene drawn at ``supersample`` x the image size into the offscreen buffer, each
+        s x s block of pixels averaged (rounded) into one."""
+        k, h, w = self.supersample, self.height, self.width
+        if self._gl_context:
+            self._gl_context.make_current()
+        rect = mujoco.MjrRect(0, 0, w * k, h * k)
+        mujoco.mjr_render(rect, self.scene, self._mjr_context)
+        big = np.empty((h * k, w * k, 3), np.uint8)
+        mujoco.mjr_readPixels(big, None, rect, self._mjr_context)
+        # strided adds (~1 ms at 512x512; numpy's sum over two axes of a reshape takes ~8 ms)
+        total = np.zeros((h, w, 3), np.uint16)  # at most 16 x 255
+        for i in range(k):
+            for j in range(k):
+                total += big[i::k, j::k]
+        return np.ascontiguousarray(((total + k * k // 2) // (k * k)).astype(np.uint8)[::-1])  # rows run bottom-up
 
     def renderer_name(self) -> str:
         """The OpenGL renderer's name (``llvmpipe (LLVM ...)`` for Mesa's software renderer),
