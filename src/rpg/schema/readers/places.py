@@ -107,8 +107,9 @@ def recognize_structure_by_cube(f: Features, b: Builder) -> bool:
         # ("stack the red and blue blocks next to the green block": red at the base); its summary
         # must not say "in any order" (a next_to of any cube of a stack is not in the domain yet)
         parts = [Stack(p.objects) if isinstance(p, Stack) else p for p in head.goal.conjuncts()]
-        head = head.model_copy(update={"goal": And(parts) if len(parts) > 1 else parts[0],
-                                       "goal_summary": "; ".join(p.describe() for p in parts)})
+        if parts != head.goal.conjuncts():
+            head = head.model_copy(update={"goal": And(parts) if len(parts) > 1 else parts[0],
+                                           "goal_summary": "; ".join(p.describe() for p in parts)})
     else:
         cls, axis, side = _SIDE[word]
         ref_xy = xy.mean(axis=0)
