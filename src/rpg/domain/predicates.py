@@ -709,6 +709,7 @@ class InRegion(Predicate):
         x, y = (float(v) for v in state[self.a].pos[:2])
         ok = any(x0 <= x <= x1 and y0 <= y <= y1 for (x0, x1), (y0, y1) in boxes)
         spans = "; ".join(f"x {x0:.3f}..{x1:.3f}, y {y0:.3f}..{y1:.3f}" for (x0, x1), (y0, y1) in boxes)
+        # a named region keeps its message and tolerance as before groups (validation logs, hashes)
         where = describe_region(self.region) if self.region in C.REGION_GROUPS else f"the {self.region.replace('_', ' ')}"
         tolerance = ({"x": list(boxes[0][0]), "y": list(boxes[0][1])} if len(boxes) == 1
                      else {"boxes": [[list(bx), list(by)] for bx, by in boxes]})

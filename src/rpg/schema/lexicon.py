@@ -43,7 +43,8 @@ help wood wooden plastic
 """Further words with no meaning for the goal, each checked not to change what a task asks:
 hedges ("maybe"), wishes ("I need", "we'll", "let's"), praise ("nice"), "anywhere", "lay it
 flat" (every cube rests on a face), a cube's material ("the red wooden block": every cube is
-the same, and G never reads it). Dropped, and listed in the task's accounting."""
+the same, and G never reads it). Dropped by :func:`rpg.schema.reading.normalize`; the task's
+accounting does not list them (it records the mentions that make a part of the task)."""
 
 CONTRACTIONS: tuple[tuple[str, str], ...] = (
     (r"\blet's\b", "let us"), (r"\b(it|that|there|here|what)'s\b", r"\1 is"), (r"'ll\b", " will"),
