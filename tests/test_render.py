@@ -246,7 +246,7 @@ def _shadow_factor(env) -> np.ndarray:
     the light)."""
     import mujoco
 
-    renderer, model = env._renderer, env.model
+    renderer, model = env._renderer_for("wrist"), env.model
     on = env.render_camera("wrist")
     renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = False
     off = env.render_camera("wrist")
@@ -282,7 +282,7 @@ def test_a_supersampled_wrist_camera_gives_shadow_edges_a_ramp():
             images[k] = env.render_camera("wrist")
             factors[k] = _shadow_factor(env)
             if k == 2:
-                assert env._renderer._mjr_context.shadowSize == 1024  # 4 texels per pixel drawn (256)
+                assert env._wrist_renderer._mjr_context.shadowSize == 1024  # 4 texels per pixel drawn (256)
                 big = CameraRenderer(env.model, 256, 256)
                 try:
                     drawn = big.image(env.data, "robot/wrist", soft_shadows=True).astype(np.uint16)
@@ -297,3 +297,34 @@ def test_a_supersampled_wrist_camera_gives_shadow_edges_a_ramp():
     assert images[1].shape == images[2].shape == (128, 128, 3)
     with pytest.raises(EmbodimentError, match="wrist_supersample"):
         BlockTaskEnv(STACK, embodiment="panda", cameras=("wrist",), wrist_supersample=5)
+
+
+def test_a_supersampled_wrist_camera_leaves_the_other_cameras_images_as_they_were():
+    """``wrist_supersample=2`` gives the wrist camera a renderer of its own, with the larger
+    shadow map (MuJoCo sizes it when a context is made): agentview's images, over steps of a
+    moving arm, are byte for byte those of an environment without supersampling, its shadow
+    map the image's (96x96: 512 texels, the wrist's 1024), and the model's visual settings are
+    left as they were."""
+    from rpg.domain import constants as C
+
+    images, sizes = {}, {}
+    for k in (1, 2):
+        env = _camera_env("panda", control_mode="ee_abs", cameras=("wrist", "agentview"), image_size=(96, 96),
+                          wrist_supersample=k)
+        vis = env.model.vis
+        before = (vis.global_.offwidth, vis.global_.offheight, vis.quality.shadowsize)
+        try:
+            obs, _ = env.reset(seed=0)
+            frames = [obs]
+            for _ in range(6):
+                frames.append(env.step(np.array([0.45, -0.2, C.TABLE_TOP_Z + 0.09, np.pi, 0, 0, -1], np.float32))[0])
+            images[k] = [(f["agentview_image"], f["wrist_image"]) for f in frames]
+            sizes[k] = (env._renderer._mjr_context.shadowSize,
+                        env._wrist_renderer and env._wrist_renderer._mjr_context.shadowSize)
+            assert (vis.global_.offwidth, vis.global_.offheight, vis.quality.shadowsize) == before
+        finally:
+            env.close()
+    assert sizes == {1: (512, None), 2: (512, 1024)}
+    for (agent1, _), (agent2, _) in zip(images[1], images[2], strict=True):
+        assert np.array_equal(agent1, agent2)
+    assert any(not np.array_equal(w1, w2) for (_, w1), (_, w2) in zip(images[1], images[2], strict=True))

@@ -138,11 +138,14 @@ class BlockTaskEnv(gym.Env):
             the Panda's two 256x256 cameras ~4x faster on Mesa's software renderer) or
             ``"stock"`` (the Menagerie's); the physics is the same
             (:mod:`rpg.env.embodiments.visuals`).
-        wrist_supersample: draw the wrist camera at this many times the image size and
-            reduce each block of pixels to its mean (1, the default: no supersampling; 2:
-            anti-aliased shadow edges, the shadow map of every camera sized for the larger
-            drawing; half the Panda's control steps/s with two cameras on a software
-            renderer; :mod:`rpg.env.render`).
+        wrist_supersample: draw the wrist camera at this many times the image size (an
+            integer factor per side) and reduce each k x k block of pixels to its mean (1,
+            the default: no supersampling; 2: anti-aliased wrist shadow edges, 4x the wrist
+            camera's pixels drawn and a 4x larger shadow map for it).  The wrist camera
+            then has a renderer and OpenGL context of its own, so the other cameras' images
+            are unchanged, byte for byte; it costs a second context's memory and, on a
+            software renderer, a large share of the steps/s with cameras (README;
+            ``benchmarks/bench_env.py``; :mod:`rpg.env.render`).
 
     Raises:
         EmbodimentError: unknown embodiment, visual, camera, control mode or instruction, or a
@@ -203,7 +206,8 @@ class BlockTaskEnv(gym.Env):
         self.max_episode_steps = int(max_episode_steps or episode_step_limit(
             len(edges), len(dense_cubes(self.task.data.goal_poses, edges))))
         self._body_names = {self.model.body(n).id: n for n in self.object_names}
-        self._renderer = None
+        self._renderer = None  # every camera's, but a supersampled wrist camera's
+        self._wrist_renderer = None  # the wrist camera's with wrist_supersample > 1
         self._elapsed = 0
         self._seed: int | None = None
         self._monitors: list = []
@@ -411,13 +415,25 @@ class BlockTaskEnv(gym.Env):
     def render_camera(self, camera: str) -> np.ndarray:
         """An image (H, W, 3) uint8 of the current state from ``camera`` (one of CAMERAS), at
         ``image_size``; the first call creates the renderer (one per environment,
-        :class:`rpg.env.render.CameraRenderer`)."""
+        :class:`rpg.env.render.CameraRenderer`; a second one for the wrist camera when
+        ``wrist_supersample`` > 1)."""
+        return self._renderer_for(camera).image(self.data, PREFIX + camera if camera == "wrist" else camera,
+                                                soft_shadows=camera in SOFT_SHADOW_CAMERAS,
+                                                supersampled=camera == "wrist")
+
+    def _renderer_for(self, camera: str) -> CameraRenderer:
+        """The renderer that draws ``camera``, made on first use: a supersampled wrist camera
+        has its own (its shadow map, sized for the larger drawing, is its context's), every
+        other camera shares the environment's."""
         if camera not in CAMERAS:
             raise EmbodimentError(f"unknown camera {camera!r}; cameras are {', '.join(CAMERAS)}")
+        if camera == "wrist" and self.wrist_supersample > 1:
+            if self._wrist_renderer is None:
+                self._wrist_renderer = CameraRenderer(self.model, *self.image_size, supersample=self.wrist_supersample)
+            return self._wrist_renderer
         if self._renderer is None:
-            self._renderer = CameraRenderer(self.model, *self.image_size, supersample=self.wrist_supersample)
-        return self._renderer.image(self.data, PREFIX + camera if camera == "wrist" else camera,
-                                    soft_shadows=camera in SOFT_SHADOW_CAMERAS, supersampled=camera == "wrist")
+            self._renderer = CameraRenderer(self.model, *self.image_size)
+        return self._renderer
 
     def render(self):
         """The agentview image (H, W, 3) uint8 (``render_mode="rgb_array"``), else None."""
@@ -426,7 +442,9 @@ class BlockTaskEnv(gym.Env):
         return self.render_camera("agentview")
 
     def close(self) -> None:
-        if self._renderer is not None:
-            self._renderer.close()
-            self._renderer = None
+        for name in ("_renderer", "_wrist_renderer"):
+            renderer = getattr(self, name, None)
+            if renderer is not None:
+                renderer.close()
+                setattr(self, name, None)
         super().close()

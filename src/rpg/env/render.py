@@ -18,11 +18,15 @@ Per image, with the Panda's meshes (:mod:`rpg.env.embodiments.visuals`) unchange
   34-49 pixels between the two levels against ~3,500 hard steps on both, with either filter
   and with a 4096 map).  A ramp comes from **supersampling** (``BlockTaskEnv(...,
   wrist_supersample=2)``, off by default: :func:`CameraRenderer.image` with ``supersampled``):
-  the wrist image drawn at 2x and each 2x2 block averaged, the shadow map (one per renderer,
-  so the other cameras' too) sized for the drawn image (2048 at 256x256): ~1,800 ramp pixels and a fifth of the hard steps, on both
-  renderers; it halves the Panda's control steps/s with two 256x256 cameras on llvmpipe
-  (README).  The other cameras keep the nearest texel: at a distance, on the arm's curved
-  surfaces, the filter's wider footprint would need more depth bias than MuJoCo applies (acne).
+  the wrist image drawn at 2x and each 2x2 block averaged, its shadow map sized for the drawn
+  image (2048 at 256x256): ~1,800 ramp pixels and a fifth of the hard steps, on both
+  renderers.  MuJoCo reads the shadow map's size (``model.vis.quality.shadowsize``) when a
+  rendering context is made, so the supersampled wrist camera has a renderer (and an OpenGL
+  context) of its own and the other cameras keep theirs, their images byte for byte those
+  without supersampling (tested); what it costs in steps/s is in the README
+  (``benchmarks/bench_env.py`` times it).  The other cameras keep the nearest texel: at a
+  distance, on the arm's curved surfaces, the filter's wider footprint would need more depth
+  bias than MuJoCo applies (acne).
 - **No sky where none is seen**: the skybox (a textured cylinder drawn over every pixel) is
   skipped when all four corners of the image see the floor.
 
@@ -59,20 +63,28 @@ class CameraRenderer(mujoco.Renderer):
     """Offscreen images (H, W, 3) uint8 of a model's cameras with the settings above.
 
     Args:
-        model: the compiled scene (its offscreen buffer and shadow map size are set here).
+        model: the compiled scene.  Its offscreen buffer size and shadow map size
+            (``model.vis``) are set for this renderer's context while it is made, then
+            restored: each renderer's context has its own, whatever was made before.
         height, width: image size, pixels.
         supersample: how many times the size :meth:`image` draws a ``supersampled`` camera
-            (1..4; the offscreen buffer and the shadow map are sized for it).
+            (1..4; the offscreen buffer and the shadow map are sized for it, so a renderer
+            with ``supersample`` > 1 draws every camera's shadows from the larger map: give
+            the other cameras a renderer of their own, as :class:`rpg.env.BlockTaskEnv` does).
     """
 
     def __init__(self, model: mujoco.MjModel, height: int, width: int, supersample: int = 1):
         vis = model.vis
         self.supersample = max(1, int(supersample))
+        saved = vis.global_.offwidth, vis.global_.offheight, vis.quality.shadowsize
         vis.global_.offwidth = max(vis.global_.offwidth, width * self.supersample)
         vis.global_.offheight = max(vis.global_.offheight, height * self.supersample)
         # 4 texels per pixel drawn: a supersampled camera's pixels are smaller
         vis.quality.shadowsize = shadow_map_size(height * self.supersample, width * self.supersample)
-        super().__init__(model, height=height, width=width)
+        try:
+            super().__init__(model, height=height, width=width)
+        finally:  # read by MjrContext when it is made; the next renderer sets its own
+            vis.global_.offwidth, vis.global_.offheight, vis.quality.shadowsize = saved
         self._receivers = {model.geom(n).id for n in SHADOW_RECEIVERS if _has_geom(model, n)}
         floor = model.geom("floor") if _has_geom(model, "floor") else None
         # an infinite plane (size 0) has no edge to see past
