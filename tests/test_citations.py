@@ -250,6 +250,36 @@ def test_a_listed_stack_demands_only_the_order_said(text, free, fixed):
         assert not evaluate_goal(schema.goal_predicate(), goal_world(schema, _restacked(schema, order))).satisfied, order
 
 
+def _relayered(schema, names_to_sites):
+    """The goal layout with each cube of ``names_to_sites`` moved to another cube's site."""
+    return {n: schema.goal_layout[site] for n, site in names_to_sites.items()}
+
+
+@pytest.mark.parametrize("text, free, fixed", [
+    # one cube on two: the two below may trade places, the one named on top may not leave it
+    ("put the yellow block on the red and green blocks", [{"red": "green", "green": "red"}],
+     [{"yellow": "red", "red": "yellow"}]),
+    # a row of green on a row of yellow: swapping the rows breaks it
+    ("Place a row of 3 green blocks on top of the row of 3 yellow blocks.", [{"green_1": "green_3", "green_3": "green_1"}],
+     [{"green_1": "yellow_1", "yellow_1": "green_1"}]),
+    # only the top is named: the base cubes are free, the top is not
+    ("build a pyramid with red and green at the bottom and yellow on top", [{"red": "green", "green": "red"}],
+     [{"yellow": "green", "green": "yellow"}]),
+    # no layer is named: any cube may stand on top
+    ("build a pyramid of red, green and yellow blocks", [{"yellow": "red", "red": "yellow"}], []),
+])
+def test_a_layer_said_is_judged_and_a_layer_unsaid_is_free(text, free, fixed):
+    """Pyramids and walls judge which cube stands in which layer exactly where the words say
+    it (the issue: a goal demands what was said, and no more)."""
+    schema = check_feasibility(parse(text))
+    goal = schema.goal_predicate()
+    for swap in free:
+        assert evaluate_goal(goal, goal_world(schema, _relayered(schema, swap))).satisfied, swap
+    for swap in fixed:
+        assert not evaluate_goal(goal, goal_world(schema, _relayered(schema, swap))).satisfied, swap
+    assert not [c.line for c, cites in cite(schema) if not cites and not c.vacuous]
+
+
 # ---------------------------------------------------------------------------
 # property tests: G under changes the words do / do not distinguish
 # ---------------------------------------------------------------------------

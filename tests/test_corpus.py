@@ -84,6 +84,12 @@ def test_corpus_no_silent_errors_and_85_percent_correct(capsys):
     ("pyramid(red*)", ["pyramid(red,red,red|red,red|red)"], True),
     ("stack(red,blue); stack(red,blue)", ["stack(red,blue)"], False),
     ("stack(red,blue)", ["stack(red,blue)", "extra(green)"], False),
+    # a pyramid whose layers the goal does not judge is one list: layers said do not match it
+    ("pyramid(green,red|yellow)", ["pyramid(green,red,yellow)"], False),
+    ("pyramid(green,red|yellow)", ["pyramid(green,red|yellow)"], True),
+    ("pyramid(?,?|?)", ["pyramid(green,red,yellow)"], True),
+    ("pyramid(?,?|?)", ["pyramid(green,red,yellow,blue)"], False),
+    ("pyramid(red*)", ["pyramid(red,red,red)"], True),
 ])
 def test_meaning_matcher(expected, actual, ok):
     assert matches(expected, actual) is ok

@@ -19,6 +19,7 @@ from rpg.domain.predicates import (
     InOrder,
     InRegion,
     LabelFacing,
+    InLayers,
     LayersUniform,
     LeftOf,
     NextTo,
@@ -222,6 +223,26 @@ def test_layers_uniform():
     assert LayersUniform(names).evaluate(state(*objs))
     objs[0] = cube("c0", 0.5, 0.0, color="blue")
     assert not LayersUniform(names).evaluate(state(*objs))
+
+
+def test_in_layers_judges_the_named_layers_only():
+    """A 2-1 pyramid: yellow named on top, red and green named below; a free cube may stand anywhere."""
+    base = [cube("red", 0.5, 0.0 + E / 2, color="red"), cube("green", 0.5, 0.0 - E / 2, color="green")]
+    top = cube("yellow", 0.5, 0.0, Z0 + E, color="yellow")
+    s = state(*base, top)
+    assert InLayers(("red", "green", "yellow"), (0, 0, 1)).evaluate(s)
+    swapped = state(cube("red", 0.5, 0.0, Z0 + E, color="red"), base[1], cube("yellow", 0.5, 0.0 + E / 2, color="yellow"))
+    res = InLayers(("red", "green", "yellow"), (0, 0, 1)).evaluate(swapped)
+    assert not res and "layer 1 lacks" in res.reason
+    assert InLayers(("red", "green", "yellow"), (-1, -1, 1)).evaluate(s)  # only yellow's layer said
+    assert InLayers(("red", "green", "yellow"), (-1, -1, -1)).evaluate(swapped)  # nothing said: anything holds
+    # interchangeable cubes trade places: two reds named for the base, either red may stand there
+    reds = state(cube("r1", 0.5, E / 2, color="red"), cube("r2", 0.5, -E / 2, color="red"),
+                 cube("b", 0.5, 0.0, Z0 + E, color="blue"))
+    assert InLayers(("r1", "r2", "b"), (0, 0, 1)).evaluate(reds)
+    assert not InLayers(("r1", "r2", "b"), (0, 1, 0)).evaluate(reds)
+    with pytest.raises(ValueError):
+        InLayers(("r1", "r2"), (0,))
 
 
 def test_reads_and_visibility():

@@ -20,11 +20,13 @@ from rpg.domain.predicates import (
     And,
     Behind,
     Between,
+    Bridge,
     Equation,
     FarFrom,
     Grid,
     InCircle,
     InFrontOf,
+    InLayers,
     InLine,
     InOrder,
     InRegion,
@@ -52,8 +54,8 @@ from rpg.domain.state import Pose, quat_mul, yaw_quat
 from rpg.domain.task_code import BlockTask
 
 __all__ = [
-    "AnchoredStack", "And", "Behind", "Between", "BlockTask", "ColoredCube", "Equation", "FarFrom", "GoalPatch", "Grid",
-    "InCircle", "InFrontOf", "InLine", "InOrder", "InRegion", "LabelFacing", "LayersUniform", "LeftOf",
+    "AnchoredStack", "And", "Behind", "Between", "BlockTask", "Bridge", "ColoredCube", "Equation", "FarFrom", "GoalPatch", "Grid",
+    "InCircle", "InFrontOf", "InLayers", "InLine", "InOrder", "InRegion", "LabelFacing", "LayersUniform", "LeftOf",
     "NextTo", "Not", "On", "OnPatch", "OnTable", "Piles", "Pose", "Pyramid", "Reads",
     "RightOf", "SemanticCube", "SortedBy", "Stack", "StackOnPatch", "TemporalMonitor", "UnorderedStack", "Upright",
     "circle_layout", "cluster_layout", "constants", "grid_layout", "line_layout",

@@ -23,6 +23,7 @@ import ast
 import itertools
 import math
 import re
+from collections import Counter
 from dataclasses import MISSING, dataclass, field, fields, replace
 from typing import Any, ClassVar
 
@@ -1161,6 +1162,27 @@ class Pyramid(Predicate):
 
 
 @dataclass(frozen=True, repr=False)
+class Bridge(Pyramid):
+    """One cube resting on two that stand side by side under it: a 2D :class:`Pyramid` with
+    a base of 2, stated as a relation ("put the yellow block on the red and green blocks").
+    ``objects``: the two below, then the one on top (which cube stands where is judged by an
+    :class:`InLayers` beside it)."""
+
+    base: int = 2
+    dims: int = 2
+    name: ClassVar[str] = "bridge"
+    cue: ClassVar[str] = r"\b(?:on\s+top\s+of|onto|atop|upon|over|on)\b"
+
+    def __post_init__(self) -> None:
+        super().__post_init__()
+        if (self.base, self.dims, len(self.objects)) != (2, 2, 3):
+            raise ValueError("bridge: three objects (two below, one on top), base 2, dims 2")
+
+    def describe(self):
+        return f"{self.objects[2]} resting on both {self.objects[0]} and {self.objects[1]}"
+
+
+@dataclass(frozen=True, repr=False)
 class Piles(Predicate):
     """Objects gathered in separate piles on the table.
 
@@ -1269,6 +1291,84 @@ class LayersUniform(Predicate):
 
     def describe(self):
         return f"each layer a different {self.by}"
+
+
+@dataclass(frozen=True, repr=False)
+class InLayers(Predicate):
+    """Named cubes stand in the layers said: ``levels[i]`` is the layer of ``objects[i]``
+    counted from the table (0: resting on it, 1: one cube edge higher, ...), or -1 where the
+    words leave that cube's layer free.
+
+    What "a pyramid with a blue base and a red block on top", "a row of green blocks on top
+    of the row of yellow blocks" or "put the yellow block on the red and green blocks" asks
+    beyond the shape (:class:`Pyramid`, :class:`Grid` judge only the shape, any cube in any
+    site).  Interchangeable cubes (same signature) may trade places: for each layer, the
+    cubes said to stand there must be found there, as a multiset of signatures.  A layer is
+    the height of a cube's centre above the table top, in cube edges (``CUBE_EDGE``, m),
+    rounded.  Source: issue "the front end ... exactly what was said" (a goal judges every
+    role the words give, and no other).
+    """
+
+    objects: tuple[str, ...]
+    levels: tuple[int, ...]
+    name: ClassVar[str] = "in_layers"
+    cue: ClassVar[str] = r"\b(?:on|onto|upon|atop|on\s+top|top|bottom|base|middle|layers?|levels?|tiers?|rows?|over|above|under|below)\b"
+    swap_invariant: ClassVar[bool] = True
+    list_fields: ClassVar[tuple[str, ...]] = ("objects",)
+
+    def __post_init__(self) -> None:
+        super().__post_init__()
+        object.__setattr__(self, "levels", tuple(int(k) for k in self.levels))
+        if len(self.levels) != len(self.objects):
+            raise ValueError(f"in_layers: {len(self.objects)} objects but {len(self.levels)} levels")
+
+    def layer_of(self, o: ObjectState) -> int:
+        """The layer ``o`` stands in: its centre's height above the table top over the cube edge, rounded."""
+        return int(round((o.pos[2] - C.TABLE_TOP_Z - o.half_height) / C.CUBE_EDGE))
+
+    def _evaluate(self, state):
+        objs = [state[n] for n in self.objects]
+        actual: dict[int, Counter] = {}
+        for o in objs:
+            actual.setdefault(self.layer_of(o), Counter())[_signature(o)] += 1
+        wanted: dict[int, Counter] = {}
+        for o, k in zip(objs, self.levels, strict=True):
+            if k >= 0:
+                wanted.setdefault(k, Counter())[_signature(o)] += 1
+        missing = {k: sorted(map(str, (want - actual.get(k, Counter())).elements())) for k, want in sorted(wanted.items())}
+        missing = {k: v for k, v in missing.items() if v}
+        ok = not missing
+        where = "; ".join(f"layer {k} lacks {', '.join(v)}" for k, v in missing.items())
+        return self._result(ok, f"the named cubes {'stand' if ok else 'do not stand'} in their layers"
+                            + ("" if ok else f" ({where})"),
+                            {"layers": {k: sorted(map(str, c.elements())) for k, c in sorted(actual.items())}})
+
+    def constraints(self):
+        """Each named cube's layer: an order "x on y" over the named cubes of adjacent
+        layers (``relation: on``), else ``relation: layer`` with pairs ``(name, "k")``."""
+        named = [(n, k) for n, k in zip(self.objects, self.levels, strict=True) if k >= 0]
+        by_level: dict[int, list[str]] = {}
+        for n, k in named:
+            by_level.setdefault(k, []).append(n)
+        pairs = tuple((u, lo) for k in sorted(by_level) for u in by_level[k] for lo in by_level.get(k - 1, ()))
+        paired = {n for pair in pairs for n in pair}
+        out: list[tuple[str, dict]] = [("members", {"objects": tuple(n for n, _ in named)})]
+        if pairs:
+            out.append(("order", {"relation": "on", "pairs": pairs}))
+        alone = tuple((n, str(k)) for n, k in named if n not in paired)
+        if alone:
+            out.append(("order", {"relation": "layer", "pairs": alone}))
+        return out
+
+    def relax(self, kind, goal=None):
+        return None
+
+    def describe(self):
+        by_level: dict[int, list[str]] = {}
+        for n, k in zip(self.objects, self.levels, strict=True):
+            if k >= 0:
+                by_level.setdefault(k, []).append(n)
+        return "; ".join(f"layer {k}: {', '.join(v)}" for k, v in sorted(by_level.items()))
 
 
 # ---------------------------------------------------------------------------

@@ -22,7 +22,7 @@ from functools import lru_cache
 
 from rpg.domain import predicates as P
 from rpg.errors import BadInput
-from rpg.schema.lexicon import COLOR_RE, COLORS, COMPASS_CORNER_RE, ROLE_BEFORE, VOCAB
+from rpg.schema.lexicon import COLOR_RE, COLORS, COMPASS_CORNER_RE, VOCAB, names_a_role
 from rpg.schema.model import TaskSchema
 from rpg.schema.reading import (
     Features,
@@ -129,7 +129,7 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
     for m in BARE_PLACE_RE.finditer(text):  # "at the front", "in the middle": a place, unless a face or a role
         before = text[:m.start()]
         if not (re.search(r"\bfac\w*\s+(?:\w+\s+){0,2}$", before)
-                or ROLE_BEFORE.search(before)):
+                or names_a_role(before, text)):
             out.append(Mention(m.group(0), "bare place", region=BARE_PLACES[m.group("side")]))
     for m in re.finditer(rf"(?<!,\s)(?<!and\s)(?<!or\s)\b(?:all\s+)?the\s+(?P<c>{colors})\s+(?:cubes|blocks|ones|bricks|boxes)\b",
                          text):  # "the pink cubes": several of that colour (a listed "red and blue blocks" is not)

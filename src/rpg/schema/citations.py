@@ -216,6 +216,13 @@ def _order(leaf, fields, scene) -> list[Constraint]:
         line = "first " + ", then ".join(events)
         return [Constraint("order", ("order", "temporal", tuple(events)), f"the order in time: {line}",
                            line[0].upper() + line[1:] + ".", leaf, tuple(leaf.object_names()))]
+    if rel == "layer":  # a cube's layer in a structure, counted from the table
+        out = []
+        for name, k in fields["pairs"]:
+            dx, where = scene.d(name), "on the table" if k == "0" else f"in layer {k} above the table"
+            out.append(Constraint("order", ("order", "layer", (dx, k)), f"{dx} {where} in the structure",
+                                  f"Put {_phrase(dx)} {where} in the structure.", leaf, (name,)))
+        return out
     if rel in ROLE_CUES:  # an end of a stack
         dx = scene.d(fields["pairs"][0][0])
         where = "at the bottom" if rel == "bottom" else "on top"
@@ -383,6 +390,9 @@ def _cite_order(c: Constraint, r: _Reading) -> list[str]:
     rel = c.key[1]
     if rel in ROLE_CUES:
         who, word = r.determined(c.key[2][0]), r.cue(ROLE_CUES[rel])
+        return [who, word] if who and word else []
+    if rel == "layer":
+        who, word = r.determined(c.key[2][0]), r.cue(ORDER_CUE)
         return [who, word] if who and word else []
     if rel == "temporal":
         word = r.cue(TEMPORAL_CUE)

@@ -310,9 +310,44 @@ CUBE_ORDER_RE = re.compile(r"\b(?:on|onto|upon|atop|above|over|under|below|benea
 taken out, may order the cubes it lists ("red on blue", "from bottom to top", "in that
 order"): with any of them, or :data:`ORDER_WORDS`, the listed order is kept."""
 
+_COLOR_LIST = "(?:" + "|".join(COLORS) + r")(?:\s*,\s*(?:" + "|".join(COLORS) + r"))*(?:,?\s+and\s+(?:" + "|".join(COLORS) + r"))?"
+_LAYER_ROLE = r"(?P<role{i}>top|peak|apex|tip|bottom|base|foundation|middle)"
+LAYER_ROLE_RE = re.compile(
+    r"(?:\b(?P<n0>\d+|a|an|one|the)\s+)?\b(?P<c0>" + _COLOR_LIST + r")\s+(?:(?P<noun0>blocks?|cubes?|ones?|rows?|layers?)\s+)?"
+    r"(?:(?:is|are|goes|go|sits?|stands?)\s+)?(?:on|at|as|in|for|forms?|making|makes)\s+(?:the\s+)?"
+    + _LAYER_ROLE.format(i=0) + r"\b(?!\s+of\b)"
+    r"|\b" + _LAYER_ROLE.format(i=1) + r"(?:\s+(?:layer|level|row|tier|block|cube|one))?\s+"
+    r"(?:is|are|of|made\s+of|with|in)\s+(?:the\s+|a\s+|an\s+)?(?P<c1>" + "|".join(COLORS) + r")\b"
+    r"(?:\s+(?P<noun1>blocks?|cubes?|ones?))?"
+    r"|\b(?:a|an|the)\s+(?P<c2>" + "|".join(COLORS) + r")\s+" + _LAYER_ROLE.format(i=2) + r"\b(?!\s+of\b)")
+"""A colour given a layer of a pyramid or wall ("yellow on top", "the red blocks at the
+base", "the top is blue", "a base of red blocks", "a blue base", "a green middle layer"):
+``c0``/``c1``/``c2`` the colour, ``role0``/``role1``/``role2`` the layer word (top, peak,
+apex, tip: the highest layer; bottom, base, foundation: the lowest; middle: the one between
+in a structure three layers high); ``n0`` a count or article before the colour and
+``noun0``/``noun1`` the noun after it ("a red block": one cube; "red blocks", "a red base":
+the whole layer)."""
+
+LAYER_WORDS = {"top": "top", "peak": "top", "apex": "top", "tip": "top", "bottom": "bottom", "base": "bottom",
+               "foundation": "bottom", "middle": "middle"}
+"""A layer word of :data:`LAYER_ROLE_RE` -> the layer it names."""
+
 ROLE_BEFORE = re.compile(r"\bwith\s+(?:the\s+)?[a-z0-9]+(?:\s+(?:block|cube|one|digit|letter))?\s*$")
 """Text before "in the middle" that makes it a cube's role in a structure ("with blue in the
 middle"), not a place on the table."""
+
+LAYER_LIST_BEFORE = re.compile(r"(?:,|\band|\bthen)\s+(?:\d+\s+)?[a-z]+(?:\s+(?:blocks?|cubes?|ones?))?\s*$")
+LAYERED_TEXT = re.compile(r"\b(?:pyramid|wall|tower|stack)s?\b.*\b(?:base|bottom|top)\b|\b(?:base|bottom|top)\b.*\b(?:pyramid|wall|tower|stack)s?\b")
+"""A colour in a list of layers before "in the middle" ("3 red at the base, 2 green in the
+middle") in a text about a layered structure: "the middle" is then its middle layer, not the
+centre of the table."""
+
+
+def names_a_role(before: str, text: str) -> bool:
+    """Whether "in the middle" (or another bare side) after ``before`` gives a cube a role in a
+    structure ("with blue in the middle", "3 red at the base, 2 green in the middle") rather
+    than a place on the table; ``text`` is the whole instruction."""
+    return bool(ROLE_BEFORE.search(before) or (LAYER_LIST_BEFORE.search(before) and LAYERED_TEXT.search(text)))
 
 
 ANTECEDENT_RE = re.compile(

@@ -10,6 +10,12 @@ letter/digit cube by its label, a goal patch as ``patch:<colour>``).  Examples::
     line(green,green,green)               line[left_to_right](red,green,blue)
     wall(red,red,red|blue,blue,blue)      layers bottom to top (rows, walls, 3D blocks)
     pyramid(blue,green,red|yellow)        layers bottom to top, each layer sorted
+    pyramid(blue,green,red)               a pyramid whose cubes may stand in any layer
+
+A pyramid or wall shows its layers only where the goal judges which cubes stand in which
+layer (:class:`~rpg.domain.predicates.InLayers`); otherwise its cubes are one sorted list,
+since any of them may stand anywhere.  An expected atom whose objects are all wildcards
+(``pyramid(?,?|?)``) matches either form with as many objects.
     start:stack(red,blue); on_table(blue) a stack rho_0 starts, and its top cube taken off
 
 The development corpus (``tests/corpus/instructions.yaml``) states each instruction's
@@ -77,7 +83,8 @@ def meaning(schema: TaskSchema) -> list[str]:
 
     starts = [list(s) for s in schema.initial_state.structures]
     started_on = {n for s in starts for n in s[1:]}  # cubes rho_0 stacks on another
-    for p in _conjuncts(schema.goal_predicate()):
+    conjuncts = _conjuncts(schema.goal_predicate())
+    for p in conjuncts:
         if isinstance(p, P.OnTable) and p.a in started_on:
             atoms.append(f"on_table({names([p.a])})")
         elif isinstance(p, _SKIP):
@@ -99,9 +106,12 @@ def meaning(schema: TaskSchema) -> list[str]:
             order = f"[{p.order}]" if p.order else ""
             body = names(p.objects) if p.order else sorted_names(p.objects)
             atoms.append(f"line{order}({body})")
+        elif isinstance(p, P.InLayers):
+            used.update(p.objects)
         elif isinstance(p, (P.Grid, P.Pyramid)):
             kind = "pyramid" if isinstance(p, P.Pyramid) else ("wall" if getattr(p, "layers", 1) > 1 else "grid")
-            layers = _layers(p.objects, layout)
+            judged = any(isinstance(q, P.InLayers) and set(q.objects) == set(p.objects) for q in conjuncts)
+            layers = _layers(p.objects, layout) if judged or kind == "grid" else [list(p.objects)]
             body = "|".join(sorted_names(layer) for layer in layers)
             if kind == "grid":
                 body = f"{p.rows}x{p.cols}:{body}"
@@ -151,6 +161,12 @@ def _pattern(atom: str) -> re.Pattern:
     return re.compile("".join(out) + r"\Z")
 
 
+def _wild(atom: str) -> bool:
+    """Whether a layered atom's objects are all ``?`` (any layer holds any cube)."""
+    head, _, body = atom.partition("(")
+    return "|" in body and head in ("pyramid", "wall") and all(t.strip() == "?" for t in re.split(r"[,|]", body.rstrip(")")))
+
+
 def matches(expected: str, actual: list[str]) -> bool:
     """Whether a corpus meaning (atoms separated by ``; `` outside brackets) equals ``actual``.
 
@@ -163,6 +179,8 @@ def matches(expected: str, actual: list[str]) -> bool:
     # most specific patterns first, so a wildcard does not take an atom a literal needs
     for w in sorted(wanted, key=lambda a: (a.count("?") + a.count("*"), a)):
         pat = _pattern(w)
+        if _wild(w):  # any cube in any layer: the layers' sizes are the structure's own
+            pat = re.compile(pat.pattern.replace(r"\|", "[,|]"))
         hit = next((a for a in sorted(left) if left[a] and pat.match(a)), None)
         if hit is None:
             return False

@@ -28,9 +28,9 @@ from rpg.schema.lexicon import (
     HEIGHT_WORDS,
     NUMBER_WORDS,
     REGION_WORDS,
-    ROLE_BEFORE,
     TOWER_NOUNS,
     VOCAB,
+    names_a_role,
 )
 
 
@@ -389,7 +389,7 @@ def mark_regions(text: str) -> str:
         corner = "corner" in m.group("part")
         word = m.group("lr") or m.group("lr2")
         bare_center = (word in ("center", "centre", "middle") and m.group(0).split()[0] in ("in", "at")  # "in the center"
-                       and not ROLE_BEFORE.search(m.string[:m.start()]))
+                       and not names_a_role(m.string[:m.start()], m.string))
         if not (m.group("tail") or corner or bare_center):
             return m.group(0)
         fb = m.group("fb") or ("far" if m.group("far") == "far" and corner else None)  # "the far left corner"

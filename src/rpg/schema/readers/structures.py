@@ -23,8 +23,10 @@ from rpg.domain.layouts import (
 from rpg.domain.palette import GRADIENT_ORDER
 from rpg.domain.predicates import (
     Between,
+    Bridge,
     Grid,
     InCircle,
+    InLayers,
     InLine,
     InRegion,
     LayersUniform,
@@ -36,7 +38,7 @@ from rpg.domain.predicates import (
 )
 from rpg.schema import clauses
 from rpg.schema.builder import DEFAULT_COLORS, Builder
-from rpg.schema.lexicon import COLOR_RE
+from rpg.schema.lexicon import COLOR_RE, LAYER_ROLE_RE, LAYER_WORDS
 from rpg.schema.readers.common import (
     DESCRIBED_TOWER_RE,
     ITEM_RE,
@@ -66,6 +68,101 @@ from rpg.schema.readers.registry import reader
 from rpg.schema.reading import Features, ParseError, canon_color, explicit_labels, mark_regions
 
 
+def layer_roles(f: Features, levels: int) -> dict[str, tuple[int, int | None]]:
+    """The colours the text gives a layer of a structure ``levels`` layers high ("yellow on
+    top", "3 red blocks at the base", "a blue base"): colour -> (layer, cubes), layer 0 on the
+    table, cubes None for the whole layer ("red blocks", "a red base") else how many ("a red
+    block": 1, "2 green": 2).
+
+    Raises:
+        ParseError: a colour given two layers, or "middle" of a structure that has no one
+            middle layer (two layers, or more than three).
+    """
+    out: dict[str, tuple[int, int | None]] = {}
+    for m in LAYER_ROLE_RE.finditer(f.text):
+        i = next(k for k in range(3) if m.group(f"c{k}"))
+        role = LAYER_WORDS[m.group(f"role{i}")]
+        if role == "middle" and levels != 3:
+            raise ParseError(f"'{m.group(0)}': a structure {levels} layers high has no one middle layer; "
+                             "say which layer (counted from the bottom)")
+        k = {"bottom": 0, "middle": 1, "top": levels - 1}[role]
+        colors = [canon_color(c) for c in re.findall(COLOR_RE, m.group(f"c{i}"))]
+        count = m.groupdict().get("n0")
+        noun = m.groupdict().get(f"noun{i}") or ""
+        n = int(count) if count and count.isdigit() and len(colors) == 1 else \
+            1 if noun in ("block", "cube", "one") else None
+        for color in colors:
+            if color in out and out[color][0] != k:
+                raise ParseError(f"the {color} cubes are given two layers in \"{f.original.strip()}\"")
+            out[color] = (k, n)
+    return out
+
+
+def fill_layers(f: Features, b: Builder, sizes: list[int], roles: dict[str, tuple[int, int | None]]) -> list[str]:
+    """Cubes for a structure of layers ``sizes`` (bottom first) whose layers ``roles``
+    (:func:`layer_roles`) names: each named colour in its layer, the other sites filled with
+    the colours the text names for no layer (counted groups keep their counts; one colour
+    fills them all), else with colours the task does not use.  Returns the names in site
+    order (bottom layer first) and appends the :class:`InLayers` that judges the named ones.
+
+    Raises:
+        ParseError: more cubes named for a layer than it holds.
+    """
+    slots: list[list[str | None]] = []
+    for k, size in enumerate(sizes):
+        here = [(c, n) for c, (lv, n) in roles.items() if lv == k]
+        whole = [c for c, n in here if n is None]
+        counted = sum(n for _, n in here if n is not None)
+        share, rest = divmod(size - counted, len(whole)) if whole else (0, 0)
+        if counted + len(whole) > size or rest:
+            raise ParseError(f"the cubes named for layer {k + 1} from the bottom ({', '.join(c for c, _ in here)}) "
+                             f"do not fill its {size} sites; say how many of each")
+        cols: list[str | None] = [c for c, n in here if n is not None for _ in range(n)]
+        cols += [c for c in whole for _ in range(share)] if whole else [None] * (size - counted)
+        slots.append(cols)
+    free = sum(c is None for layer in slots for c in layer)
+    groups = [(n, c) for n, c in counted_groups(f) if c not in roles]
+    listed = [c for c in dict.fromkeys(f.color_list()) if c not in roles]
+    if groups and sum(n for n, _ in groups) == free:
+        pool = [c for n, c in groups for _ in range(n)]
+    elif len(listed) == 1:
+        pool = listed * free
+    elif listed:
+        pool = [listed[i % len(listed)] for i in range(free)]
+    else:
+        pool = [c for c in DEFAULT_COLORS if c not in roles][:free]
+        pool += [pool[-1] if pool else "red"] * (free - len(pool))
+    fill = iter(pool)
+    names = [b.cube(c if c is not None else next(fill)) for layer in slots for c in layer]
+    levels = [k if c is not None else -1 for k, layer in enumerate(slots) for c in layer]
+    b.preds.append(InLayers(tuple(names), tuple(levels)))
+    return names
+
+
+BRIDGE_RE = re.compile(
+    rf"(?:please\s+)?(?:put|place|set|stack|lay|balance|rest)\s+(?:the\s+|a\s+|an\s+|one\s+)?(?P<top>{COLOR_RE})\s+"
+    r"(?:block|cube)\s+(?:on\s+top\s+of|on|onto|atop|across|over|upon)\s+(?:both\s+)?(?:the\s+)?"
+    rf"(?P<a>{COLOR_RE})\s+and\s+(?:the\s+)?(?P<b>{COLOR_RE})\s+(?:blocks|cubes)\s*[.!]?")
+"""One cube put on two others at once ("put the yellow block on the red and green blocks"):
+it rests on both, so the two stand side by side under it (a pyramid with a base of 2)."""
+
+
+@reader(order=25)
+def recognize_bridge(f: Features, b: Builder) -> bool:
+    """A cube resting on two named cubes at once: a 2D pyramid with a base of 2 whose layers
+    are judged (:class:`InLayers`: the two named below, the one named on top)."""
+    m = BRIDGE_RE.fullmatch(f.text)
+    if m is None:
+        return False
+    top, a, c = (canon_color(m.group(k)) for k in ("top", "a", "b"))
+    names = [b.cube(a), b.cube(c), b.cube(top)]
+    b.place(pyramid_layout(names, 2, 2))
+    b.preds += [Bridge(tuple(names)), InLayers(tuple(names), (0, 0, 1))]
+    b.primitives += ["stack"]
+    b.summary.append(f"{names[2]} resting on both {names[0]} and {names[1]}, side by side")
+    return True
+
+
 @reader(order=100)
 def recognize_pyramid(f: Features, b: Builder) -> bool:
     if not f.has("pyramid", "pyramids", "triangle", "triangular"):
@@ -82,7 +179,8 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
         size = 2 if f.has("small", "little", "tiny", "mini") else 4 if f.has("big", "large", "tall", "huge") else 3
         named = len(set(f.color_list()))  # "the red, green and blue blocks in a triangle": 3 cubes
         from_named = next((k for k in range(2, 8) if k * (k + 1) // 2 == named), None) if named >= 3 else None
-        base, dims = (int(m.group(1)) if m else from_total or from_named or size), 2
+        middle = any(m_.group(0).find("middle") >= 0 for m_ in LAYER_ROLE_RE.finditer(f.text))
+        base, dims = (int(m.group(1)) if m else from_total or (3 if middle else from_named) or size), 2
     if base < 2:
         raise ParseError("a pyramid needs a base of at least 2")
     n = sum((base - k) ** (dims - 1) for k in range(base))
@@ -90,7 +188,15 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
         raise ParseError(f"a pyramid with base {base} needs {n} cubes; the most a task holds is {C.MAX_OBJECTS}")
     material = material_of(f)
     order = ordering_of(f)
-    if material == "colors" and asks_per_layer(f):
+    sizes = [(base - k) ** (dims - 1) for k in range(base)]
+    roles = layer_roles(f, base) if material == "colors" else {}
+    if roles:
+        names = fill_layers(f, b, sizes, roles)
+        b.place(pyramid_layout(names, base, dims))
+        if asks_per_layer(f):
+            b.preds.append(LayersUniform(tuple(names), by="color", axis="z"))
+            b.summary.append("each layer a different color")
+    elif material == "colors" and asks_per_layer(f):
         sizes = [(base - k) ** (dims - 1) for k in range(base)]
         cols = colors_for(base, f, prefer=list(dict.fromkeys(f.color_list())))
         names = [b.cube(cols[k]) for k, size in enumerate(sizes) for _ in range(size)]
@@ -103,6 +209,9 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
         fill_structure(f, b, n, material, order, lambda names: pyramid_layout(names, base, dims),
                         face="front" if dims == 2 else "up")
     names = [a.name for a in b.assets]
+    if not roles and material == "colors" and order and order[0] == "color" and len(set(f.color_list())) != 1:
+        # "a pyramid of 3-2-1 with rainbow colored ordering": the colours layer by layer, bottom first
+        b.preds.append(InLayers(tuple(names), tuple(k for k, size in enumerate(sizes) for _ in range(size))))
     b.preds.insert(0, Pyramid(tuple(names), base=base, dims=dims))
     b.primitives += ["stack"]
     shape = f"{base}x{base}" if dims == 3 else str(base)
@@ -158,7 +267,10 @@ def _lattice(f: Features, b: Builder, r: int, c: int, layers: int, what: str) ->
     if n < 2:
         raise ParseError("a structure of fewer than two cubes: give a larger size")
     per_layer = asks_per_layer(f)
-    if per_layer:
+    roles = layer_roles(f, layers) if layers > 1 and material_of(f) == "colors" else {}
+    if roles:
+        names = fill_layers(f, b, [r * c] * layers, roles)
+    elif per_layer:
         cols = colors_for(layers, f, prefer=[c for c in dict.fromkeys(f.color_list())])
         colors = [cols[lay] for lay in range(layers) for _ in range(r * c)]
         names = [b.cube(col) for col in colors]
@@ -498,7 +610,7 @@ def recognize_tower_clauses(f: Features, b: Builder) -> bool:
         names = [b.cube(col) for layer in plan.wall for col in layer]
         b.place(grid_layout(names, 1, width, layers))
         b.preds.append(Grid(tuple(names), 1, width, layers))
-        b.preds.append(LayersUniform(tuple(names), by="color", axis="z"))
+        b.preds.append(InLayers(tuple(names), tuple(k for k, layer in enumerate(plan.wall) for _ in layer)))
         b.primitives += ["stack"]
         b.summary.append(f"a wall {width} cubes wide and {layers} high, layers bottom to top: "
                          + ", ".join(layer[0] for layer in plan.wall))
