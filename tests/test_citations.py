@@ -369,3 +369,31 @@ def test_a_named_end_is_judged_and_the_unnamed_cubes_are_free(text, end):
     citations = {c.line: cites for c, cites in cite(schema)}
     assert any(line.endswith("of the stack") and cites for line, cites in citations.items())
     assert not any(line.startswith("the order") for line in citations)
+
+
+@pytest.mark.parametrize("text", [
+    "build a tower with the blue block in the middle",
+    "build a tower of red, blue and green blocks with blue in the middle",
+    "build a tower of five blocks with the blue block in the middle",
+])
+def test_a_middle_cube_is_judged_and_the_others_are_free(text):
+    """"blue in the middle" names one cube's layer: G holds with the other cubes in any
+    order and fails when blue leaves the middle (it was an ordered stack of three)."""
+    schema = check_feasibility(parse(text))
+    goal = schema.goal_predicate()
+    stack = next(p for p in goal.children() if p.name == "unordered_stack")
+    objs = list(stack.objects)
+    middle = objs[len(objs) // 2]
+    assert schema.assets[[a.name for a in schema.assets].index(middle)].color == "blue"
+    free = [n for n in objs if n != middle]
+    layout = schema.goal_layout
+    rotated = dict(zip(free, [layout[n] for n in free[1:] + free[:1]], strict=True))
+    assert evaluate_goal(goal, goal_world(schema, rotated)).satisfied
+    assert not evaluate_goal(goal, goal_world(schema, {middle: layout[objs[0]], objs[0]: layout[middle]})).satisfied
+    lines = {c.line: cites for c, cites in cite(schema) if c.kind == "order"}
+    assert any("blue in layer" in line and "middle" in cites for line, cites in lines.items()), lines
+
+
+def test_a_tower_of_even_height_has_no_middle_cube():
+    with pytest.raises(BadInput, match="no one middle"):
+        parse("build a tower of four blocks with blue in the middle")

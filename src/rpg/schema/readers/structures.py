@@ -35,10 +35,11 @@ from rpg.domain.predicates import (
     Reads,
     SortedBy,
     Stack,
+    UnorderedStack,
 )
 from rpg.schema import clauses
 from rpg.schema.builder import DEFAULT_COLORS, Builder
-from rpg.schema.lexicon import COLOR_RE, LAYER_ROLE_RE, LAYER_WORDS
+from rpg.schema.lexicon import COLOR_RE, CUBE_ORDER_RE, LAYER_ROLE_RE, LAYER_WORDS, ORDER_WORDS
 from rpg.schema.readers.common import (
     DESCRIBED_TOWER_RE,
     ITEM_RE,
@@ -490,6 +491,12 @@ SEQ_RELATION_RE = re.compile(r"\b(?:on top of|onto|on|atop|above|over|under|unde
 SEQ_HINT_RE = re.compile(r"\b(?:on|at|as|in)\s+(?:the\s+)?(?:very\s+)?(bottom|base|top|middle|center|centre)\b(?!\s+of)")
 
 
+def lexicon_order_words(text: str) -> bool:
+    """Whether ``text`` has a word that may order a tower's cubes (:data:`ORDER_WORDS`,
+    :data:`CUBE_ORDER_RE` of :mod:`rpg.schema.lexicon`)."""
+    return bool(ORDER_WORDS.search(text) or CUBE_ORDER_RE.search(text))
+
+
 SORTED_TOWER_DEFAULT = 4
 """Cubes in a sorted tower of letters or digits when the instruction gives no count."""
 
@@ -574,22 +581,41 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         items += [(c, None) for c in DEFAULT_COLORS if c not in used][: n - len(items)]
     elif len(items) == 1 and set(hints.values()) & {"middle", "center", "centre"}:  # "a tower with blue in the middle"
         used = {c for c, _ in items}
-        items = [(c, None) for c in DEFAULT_COLORS if c not in used][:1] + items + \
-            [(c, None) for c in DEFAULT_COLORS if c not in used][1:(n or 3) - 1]
-        hints = {}  # the listed cube is already in the middle
+        k = (n or 3) - 1
+        others = [(c, None) for c in DEFAULT_COLORS if c not in used][:k]
+        items = others[:k // 2] + items + others[k // 2:]
+        hints = {k // 2: hints[0]}
     if len(items) < 2:
         return False
+    levels: list[int] | None = None
     if re.search(r"\btop to bottom\b|\bin\s+(?:the\s+)?revers(?:e|ed)\s+order\b", f.text):
         items.reverse()  # "... in the reversed order": the list read from its end
     else:
-        bottom = [items[i] for i, h in hints.items() if h in ("bottom", "base")]
-        top = [items[i] for i, h in hints.items() if h == "top"]
-        middle = [items[i] for i, h in hints.items() if h in ("middle", "center", "centre") and i < len(items)]
+        role = {i: {"base": "bottom", "center": "middle", "centre": "middle"}.get(h, h) for i, h in hints.items()
+                if i < len(items)}
+        bottom = [items[i] for i, h in role.items() if h == "bottom"]
+        top = [items[i] for i, h in role.items() if h == "top"]
+        middle = [items[i] for i, h in role.items() if h == "middle"]
         rest = [it for it in items if it not in bottom and it not in top and it not in middle]
         half = len(rest) // 2
         items = bottom + rest[:half] + middle + rest[half:] + top
+        if middle:  # "a tower of red, blue and green blocks with blue in the middle": the roles, no order
+            if len(items) % 2 == 0 or len(middle) > 1:
+                raise ParseError(f"a tower of {len(items)} cubes has no one middle cube; say its place from the bottom")
+            unhinted = SEQ_HINT_RE.sub(" ", f.text)
+            if not (lexicon_order_words(unhinted) or len(rest) < 2):
+                place = {"bottom": 0, "middle": len(items) // 2, "top": len(items) - 1}
+                levels = [-1] * len(items)
+                for h, group in (("bottom", bottom), ("middle", middle), ("top", top)):
+                    if group:
+                        levels[place[h]] = place[h]
     names = [b.semantic(label) if label else b.cube(color) for color, label in items]
     b.place(stack_layout(names, C.WORKSPACE_CENTER))
+    if levels is not None:
+        b.preds += [UnorderedStack(tuple(names)), InLayers(tuple(names), tuple(levels))]
+        b.summary.append("a tower of " + ", ".join(names) + "; " + InLayers(tuple(names), tuple(levels)).describe())
+        b.primitives += ["stack"]
+        return True
     b.preds.append(Stack(tuple(names)))
     b.primitives += ["stack"]
     b.summary.append("tower bottom to top: " + ", ".join(names))
