@@ -124,6 +124,13 @@ def test_the_accounting_record_says_which_words_produced_which_part():
     ("put them in a row", "reference", "them"),
     ("unstack that.", "reference", "that"),
     ("put the blue block back in its original position", "reference", "original"),
+    # a cube picked by where it stands now, or by what was shown (these compiled)
+    ("move the block on the left onto the block on the right", "reference", "the block on the left"),
+    ("put the blocks in the order shown", "reference", "shown"),
+    ("place the same block on the green patch", "reference", "the same block"),
+    # a question is no instruction (these compiled the relation asked about)
+    ("which block is on top of the blue block?", "question", "which block is on top of the blue block?"),
+    ("is the red block left of the green block?", "question", "is the red block left of the green block?"),
     # an unknown noun heading an object's phrase, an unknown command verb
     ("Pick up a nut and place it onto a peg.", "object", "nut"),
     ("Sweep a puck off the table.", "object", "puck"),
@@ -316,3 +323,9 @@ def test_framing_around_the_task_is_dropped():
                                   "slide the block to target", "Pick and place a block to a patch."])
 def test_a_cube_moved_to_a_patch_ends_on_it(text):
     assert meaning(parse(text)) == meaning(parse("put a block on the goal patch"))
+
+
+def test_a_request_phrased_as_a_question_is_an_instruction():
+    """"can you ...?" asks for an arrangement: it compiles (a question about the scene does not)."""
+    assert parse("Can you put the red block on the blue block?").goal.name == "stack"
+    assert parse("could you stack the red block on the blue block?").goal.name == "stack"

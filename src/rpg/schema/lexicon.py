@@ -65,6 +65,11 @@ SYNONYMS: dict[str, str] = {
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
 
 INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
+    ("question", r"(?:^|[.!;]\s+)(?:which|what|where|who|whose|why|how\s+many|how\s+much|when)\b[^.!;]*\?"
+                 r"|(?:^|[.!;?]\s+)(?:is|are|was|were|does|do|did|has|have|had)\s+(?:the|a|an|there|it|this|that|any|all"
+                 r"|every|some|each|these|those)\b[^.!;]*\?",
+     "asks a question: a task is an instruction whose goal says where cubes end up; ask for the arrangement "
+     "instead (e.g. \"put the red block on the blue block\")"),
     ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none)\b|n't\b"
                  r"|\b(?:don|doesn|didn|isn|aren|shouldn|mustn|won|wouldn)\s*'?\s*t\b"
                  r"|\bno\s+(?:\w+\s+){0,2}?(?:blocks?|cubes?|boxes|one|other|longer)\b",
@@ -89,6 +94,12 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|\b(?:blocks?|cubes?|ones?)\s+(?:that\s+)?(?:you|we|i)\s+(?:moved|placed|picked|grabbed|used|touched|held)\b"
                   r"|\b(?:again|undo|restore|original(?:ly)?|previous(?:ly)?|remaining|as\s+(?:before|it\s+was|they\s+were))\b"
                   r"|\bthe\s+rest\b|\bwhere\s+(?:it|they)\s+(?:was|were)\b"
+                  r"|\bthe\s+same\s+(?:blocks?|cubes?|ones?|boxes|box|objects?|pieces?)\b"
+                  r"|\bthe\s+(?:blocks?|cubes?|ones?|box|boxes|objects?)\s+(?:that\s+(?:is|are)\s+|which\s+(?:is|are)\s+)?"
+                  r"(?:on|at|in)\s+the\s+(?:far\s+)?(?:left|right|front|back|middle|center|centre)\b"
+                  r"(?!\s+(?:of|side|corner|edge|half|part|end|area|region)\b)"
+                  r"(?=.*\b(?:on|onto|to|into|next|beside|behind|under|near)\b)"
+                  r"|\b(?:as\s+)?(?:shown|displayed|depicted|pictured|illustrated|demonstrated)\b"
                   r"|\b(?:put|place|move|set|bring|return)\s+(?:(?!the\s+back\b)[a-z]+\s+){0,3}back\b(?!\s+(?:of|left|right|side|edge|corner|row|half|part|end)\b)",
      "picks a cube by its place in an order nobody defined or by what happened earlier: rpg's cubes are known "
      "only by colour and label; name the cube (e.g. \"the red block\"), or say the structure it is part of "
