@@ -128,6 +128,7 @@ def test_the_accounting_record_says_which_words_produced_which_part():
     ("move the block on the left onto the block on the right", "reference", "the block on the left"),
     ("put the blocks in the order shown", "reference", "shown"),
     ("place the same block on the green patch", "reference", "the same block"),
+    ("move the red block to the blue block's position", "reference", "block's position"),
     # a question is no instruction (these compiled the relation asked about)
     ("which block is on top of the blue block?", "question", "which block is on top of the blue block?"),
     ("is the red block left of the green block?", "question", "is the red block left of the green block?"),

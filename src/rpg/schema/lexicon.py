@@ -95,6 +95,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|\b(?:again|undo|restore|original(?:ly)?|previous(?:ly)?|remaining|as\s+(?:before|it\s+was|they\s+were))\b"
                   r"|\bthe\s+rest\b|\bwhere\s+(?:it|they)\s+(?:was|were)\b"
                   r"|\bthe\s+same\s+(?:blocks?|cubes?|ones?|boxes|box|objects?|pieces?)\b"
+                  r"|\b(?:blocks?|cubes?|box|ones?)'s\s+(?:current\s+|old\s+)?(?:position|place|spot|location|square)\b"
+                  r"|\b(?:current|present)\s+(?:position|place|spot|location)s?\b"
                   r"|\bthe\s+(?:blocks?|cubes?|ones?|box|boxes|objects?)\s+(?:that\s+(?:is|are)\s+|which\s+(?:is|are)\s+)?"
                   r"(?:on|at|in)\s+the\s+(?:far\s+)?(?:left|right|front|back|middle|center|centre)\b"
                   r"(?!\s+(?:of|side|corner|edge|half|part|end|area|region)\b)"
