@@ -38,7 +38,7 @@ gingerly cautiously immediately sequentially successively very grasped held
 IGNORABLE_MORE: frozenset[str] = frozenset("""
 nice nicely neat tidy tidily maybe perhaps possibly need needs needed want wants wanted let am
 try trying attempt anywhere somewhere flat flatly thanks thank cool great gonna wanna um uh yeah alright
-help wood wooden plastic
+help wood wooden plastic properly securely stably steadily safely accurately completely entirely fully pls plz sure
 """.split())
 """Further words with no meaning for the goal, each checked not to change what a task asks:
 hedges ("maybe"), wishes ("I need", "we'll", "let's"), praise ("nice"), "anywhere", "lay it
@@ -59,7 +59,8 @@ of that colour when the word is a colour (:func:`rpg.schema.reading.normalize`).
 SYNONYMS: dict[str, str] = {
     "brick": "block", "bricks": "blocks", "ground": "table", "floor": "table", "tabletop": "table",
     "desk": "table", "rightmost": "right", "leftmost": "left", "frontmost": "front", "backmost": "back",
-    "furthest": "far", "farthest": "far",
+    "furthest": "far", "farthest": "far", "lastly": "finally", "afterwards": "then", "afterward": "then",
+    "subsequently": "then",
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
