@@ -553,11 +553,12 @@ def test_lerobot_info_records_the_visual_and_rebuilds_its_environment(fmt, datas
     recorded first frame (closer to it than the other meshes' render, the video being lossy),
     and resuming with the other meshes is one line, exit 2."""
     from rpg.demos import mp4
-    from rpg.demos.layout import VISUAL_KEY, recorded_visual
+    from rpg.demos.layout import SUPERSAMPLE_KEY, VISUAL_KEY, recorded_visual
     from rpg.env import BlockTaskEnv
 
     for name in ("v3", "v21"):
         assert json.loads((datasets[name] / "meta" / "info.json").read_text())[VISUAL_KEY] == "decimated"
+        assert json.loads((datasets[name] / "meta" / "info.json").read_text())[SUPERSAMPLE_KEY] == 1
     out = tmp_path / "ds"
     args = ("--embodiment", "panda", "-n", "1", "--cameras", "agentview", "--columns", "", "--format", fmt)
     r = _rpg("demos", STACK, "--out", out, "--image-size", "64", *args, "--visual", "stock")
@@ -584,6 +585,83 @@ def test_lerobot_info_records_the_visual_and_rebuilds_its_environment(fmt, datas
     assert errors["stock"] < errors["decimated"], errors
     r = _rpg("demos", STACK, "--out", out, "--image-size", "64", *args)
     assert r.returncode == 2 and "--visual stock" in r.stderr and len(r.stderr.strip().splitlines()) == 1, r.stderr
+
+
+@pytest.mark.parametrize("backend", ["local", "ray"])
+def test_robomimic_env_kwargs_rebuild_the_wrist_supersample_of_either_backend(backend, tmp_path):
+    """``rpg demos --wrist-supersample 2`` on the process pool and on Ray: the recorded wrist
+    frames are those of a supersampled environment (the rebuilt environment's first frame
+    equals the recorded one byte for byte; an environment without supersampling draws another),
+    ``env_kwargs`` records the factor and :func:`make_env_from_metadata` passes it back; resuming
+    without it is one line, exit 2."""
+    import h5py
+
+    from rpg.demos.robomimic import make_env_from_metadata
+    from rpg.env import BlockTaskEnv
+
+    if backend == "ray":
+        pytest.importorskip("ray", reason="Ray is not installed: the ray backend cannot be tested")
+    out = tmp_path / "ds"
+    args = ("--embodiment", "floating_gripper", "-n", "1", "--cameras", "wrist", "--image-size", "32", "--format", "hdf5",
+            "--backend", backend)
+    r = _rpg("demos", STACK, "--out", out, *args, "--wrist-supersample", "2")
+    assert r.returncode == 0, r.stdout + r.stderr
+    with h5py.File(out / "demo.hdf5") as f:
+        kw = json.loads(f["data"].attrs["env_args"])["env_kwargs"]
+        seed = int(f["data/demo_0"].attrs["seed"])
+        first = f["data/demo_0/obs/robot0_eye_in_hand_image"][0]
+    assert kw["wrist_supersample"] == 2
+    env = make_env_from_metadata(out, library=LIBRARY)
+    try:
+        assert env.wrist_supersample == 2
+        assert np.array_equal(env.reset(seed=seed)[0]["wrist_image"], first)
+    finally:
+        env.close()
+    plain = BlockTaskEnv(STACK, embodiment="floating_gripper", cameras=("wrist",), image_size=(32, 32))
+    try:
+        assert not np.array_equal(plain.reset(seed=seed)[0]["wrist_image"], first)
+    finally:
+        plain.close()
+    r = _rpg("demos", STACK, "--out", out, *args)
+    assert r.returncode == 2 and "wrist_supersample" in r.stderr and len(r.stderr.strip().splitlines()) == 1, r.stderr
+
+
+@pytest.mark.parametrize("fmt", ["lerobot", "lerobot-v2.1"])
+def test_lerobot_info_records_the_wrist_supersample_and_rebuilds_its_environment(fmt, tmp_path):
+    """``--wrist-supersample 2`` with a LeRobot format: ``meta/info.json`` records it next to
+    ``rpg_visual`` (``rpg_wrist_supersample``), an environment built with the recorded factor
+    renders the recorded first wrist frame closer than one without supersampling (the video
+    being lossy), and resuming without it is one line, exit 2."""
+    from rpg.demos import mp4
+    from rpg.demos.layout import SUPERSAMPLE_KEY, VISUAL_KEY, recorded_wrist_supersample
+    from rpg.env import BlockTaskEnv
+
+    out = tmp_path / "ds"
+    args = ("--embodiment", "floating_gripper", "-n", "1", "--cameras", "wrist", "--columns", "", "--format", fmt)
+    r = _rpg("demos", STACK, "--out", out, "--image-size", "64", *args, "--wrist-supersample", "2")
+    assert r.returncode == 0, r.stdout + r.stderr
+    info = json.loads((out / "meta" / "info.json").read_text())
+    assert info[SUPERSAMPLE_KEY] == recorded_wrist_supersample(info) == 2 and info[VISUAL_KEY] == "decimated"
+    assert recorded_wrist_supersample({}) == 1  # a dataset from before the key
+    if fmt == "lerobot":
+        seed = _rows(out)[0]["seed"]
+        video = out / "videos" / "observation.images.wrist" / "chunk-000" / "file-000.mp4"
+    else:
+        seed = json.loads((out / "meta" / "episodes.jsonl").read_text().splitlines()[0])["seed"]
+        video = out / "videos" / "chunk-000" / "observation.images.wrist" / "episode_000000.mp4"
+    first = mp4.read_frames(video)[0].astype(float)
+    errors = {}
+    for k in (recorded_wrist_supersample(info), 1):
+        env = BlockTaskEnv(STACK, embodiment=info["robot_type"], cameras=("wrist",), image_size=(64, 64),
+                           wrist_supersample=k)
+        try:
+            errors[k] = np.abs(env.reset(seed=seed)[0]["wrist_image"] - first).mean()
+        finally:
+            env.close()
+    assert errors[2] < errors[1], errors
+    r = _rpg("demos", STACK, "--out", out, "--image-size", "64", *args)
+    assert r.returncode == 2 and "--wrist-supersample 2" in r.stderr and len(r.stderr.strip().splitlines()) == 1, \
+        r.stderr
 
 
 def test_train_valid_split_is_every_tenth_successful_demo_per_task():

@@ -285,6 +285,45 @@ def test_visual_reaches_the_environments_of_either_backend(backend, tmp_path):
     assert r.returncode == 2 and "other settings (visual)" in r.stderr and len(r.stderr.strip().splitlines()) == 1
 
 
+@pytest.mark.parametrize("backend", ["local", "ray"])
+def test_wrist_supersample_reaches_the_environments_of_either_backend(backend, tmp_path):
+    """``rpg eval --wrist-supersample 2`` on the process pool and on Ray: each episode's record
+    reads the factor back from the environment its worker built; run.json and the summary
+    record it; a run without it is not compared with it unasked, and resuming the run without
+    it is one line, exit 2."""
+    if backend == "ray":
+        pytest.importorskip("ray", reason="Ray is not installed: the ray backend cannot be tested")
+    args = ["eval", "library/stack_blocks", "--policy", "noop", "-n", "1", "--embodiment", FLOAT, "--cameras", "wrist",
+            "--image-size", "32", "--backend", backend]
+    runs = {2: tmp_path / "x2", 1: tmp_path / "x1"}
+    for k, run in runs.items():
+        r = _rpg(*args, "--wrist-supersample", str(k), "-o", str(run))
+        assert r.returncode == 0 and "Traceback" not in r.stderr, r.stderr
+        assert [e["wrist_supersample"] for e in _lines(run / "episodes.jsonl")] == [k]
+        assert json.loads((run / "run.json").read_text())["wrist_supersample"] == k
+        assert json.loads((run / "summary.json").read_text())["config"]["wrist_supersample"] == k
+    r = _rpg("eval", "compare", str(runs[2]), str(runs[1]))
+    assert r.returncode == 2 and "wrist_supersample: 2 vs 1" in r.stderr, r.stderr
+    r = _rpg("eval", "compare", str(runs[2]), str(runs[1]), "--allow-mismatch")
+    assert r.returncode == 0 and "wrist_supersample" in r.stdout, r.stdout + r.stderr
+    r = _rpg(*args, "-o", str(runs[2]))  # the default (off) into the supersampled run
+    assert r.returncode == 2 and "other settings (wrist_supersample)" in r.stderr, r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1
+
+
+def test_a_bad_wrist_supersample_is_one_line_exit_2_and_writes_nothing(tmp_path):
+    """Only 1 and 2 are taken, by rpg eval and rpg demos alike; anything else (another
+    integer, a word, a decimal) is one line and exit 2 before anything is written."""
+    for command, value in (("eval", "3"), ("eval", "two"), ("demos", "4"), ("demos", "2.0")):
+        out = tmp_path / f"{command}-{value}"
+        r = _rpg(command, "library/stack_blocks", "--embodiment", FLOAT, "--wrist-supersample", value,
+                 "-o", str(out))
+        assert r.returncode == 2, (command, value, r.stderr)
+        assert "Traceback" not in r.stderr and len(r.stderr.strip().splitlines()) == 1, r.stderr
+        assert "--wrist-supersample must be 1 (off) or 2" in r.stderr and value in r.stderr, r.stderr
+        assert not out.exists()
+
+
 def test_a_failing_plugin_keeps_every_episode_and_the_run_goes_on(tmp_path):
     plugin = tmp_path / "flaky.py"
     plugin.write_text(

@@ -350,6 +350,21 @@ def report_cmd(
     out.print(f"wrote {page}")
 
 
+WristSupersampleOption = Annotated[str, typer.Option(
+    "--wrist-supersample", metavar="1|2",
+    help="Draw the wrist camera at this many times the image size per side and average each block "
+         "back (1: off, the default; 2: anti-aliased wrist shadows, in a renderer of its own: the other "
+         "cameras' images are unchanged; on a software renderer about half the steps/s with cameras, "
+         "see the README).")]
+
+
+def _integer_or_text(value: str) -> int | str:
+    """An option's decimal integer as an int; anything else as given, for the API to refuse in
+    one line (a typed option would be refused by the parser in a box of several lines)."""
+    text = value.strip()
+    return int(text) if text.isdecimal() and text.isascii() else value
+
+
 def _parse_seeds(episodes: int | None, seeds: str | None) -> tuple[int, ...]:
     if episodes is not None and seeds is not None:
         _fail("give --episodes N or --seeds LIST, not both")
@@ -398,6 +413,7 @@ def eval_cmd(
     visual: Annotated[str, typer.Option("--visual", help="The robot's meshes in the images: decimated (default) or "
                                                          "stock (the Menagerie's); recorded in run.json and each "
                                                          "episode's record.")] = "decimated",
+    wrist_supersample: WristSupersampleOption = "1",
 ) -> None:
     """Run a policy on tasks: success and progress per task, family version, steering intent and
     split, with standard errors and Wilson 95% intervals.  An episode whose policy fails or times
@@ -417,7 +433,8 @@ def eval_cmd(
                         instruction=instruction, cameras=cams, image_size=(image_size, image_size), replan=replan,
                         video=video, library=str(library), control_mode=control_mode,
                         inference_timeout=inference_timeout, episode_timeout=episode_timeout,
-                        allow_unstated=allow_unstated, visual=visual)
+                        allow_unstated=allow_unstated, visual=visual,
+                        wrist_supersample=_integer_or_text(wrist_supersample))
     from rich.progress import Progress
 
     with _reported_errors(), Progress(console=err, transient=True) as bar:
@@ -761,6 +778,7 @@ def demos_cmd(
     visual: Annotated[str, typer.Option("--visual", help="The robot's meshes in the images: decimated (default) or "
                                                          "stock (the Menagerie's); recorded in robomimic's env_kwargs "
                                                          "or LeRobot's meta/info.json (rpg_visual).")] = "decimated",
+    wrist_supersample: WristSupersampleOption = "1",
     replay: Annotated[Path | None, typer.Option("--replay", help="Replay a dataset and check every episode.")] = None,
     library: Annotated[Path, typer.Option("--library", help="With --replay: the library whose tasks are found by "
                                                             "content hash (a directory or its manifest).")] = Path("library"),
@@ -794,7 +812,8 @@ def demos_cmd(
         summary = collect_demos(target, out_dir, episodes=episodes, embodiment=embodiment, fmt=fmt, jobs=jobs,
                                 cameras=cams, image_size=(image_size, image_size), instruction=instruction,
                                 progress=progress, gop=gop, columns=tuple(c for c in columns.split(",") if c),
-                                keep_failed=keep_failed, backend=backend, address=address, visual=visual)
+                                keep_failed=keep_failed, backend=backend, address=address, visual=visual,
+                                wrist_supersample=_integer_or_text(wrist_supersample))
     short = {t: v for t, v in summary["per_task"].items() if v["success"] < episodes}
     out.print(f"{out_dir}: {summary['episodes']} episodes ({summary['attempts']} run now)", highlight=False)
     for t, v in short.items():

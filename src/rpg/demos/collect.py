@@ -92,12 +92,13 @@ class Job:
     frames: str = "mp4"
     gop: int | None = None
     visual: str = "decimated"
+    wrist_supersample: int = 1
 
 
 def _run(job: Job) -> Episode:
     return record_episode(job.task, job.seed, job.embodiment, job.cameras, job.image_size, job.instruction,
                           video_dir=Path(job.staging) / f"{Path(job.task).name}-{job.seed}", frames=job.frames,
-                          reuse_env=True, gop=job.gop, visual=job.visual)
+                          reuse_env=True, gop=job.gop, visual=job.visual, wrist_supersample=job.wrist_supersample)
 
 
 def _task_hash(task: str) -> str:
@@ -138,15 +139,17 @@ def library_path(task: str, target: str | Path) -> str:
 
 
 def make_writer(fmt: str, out: str | Path, layout: Layout, keep_failed: bool = False, task_paths: dict | None = None,
-                visual: str = "decimated", **options):
-    """The dataset writer of a format (:data:`FORMATS`); ``visual`` is recorded by the robomimic
-    writer (the LeRobot writers take it from ``layout``); ``options`` go to the LeRobot v3.0 writer (``data_files_size_in_mb``,
+                **options):
+    """The dataset writer of a format (:data:`FORMATS`); how the images were drawn
+    (``layout.visual``, ``layout.wrist_supersample``) is recorded by every writer;
+    ``options`` go to the LeRobot v3.0 writer (``data_files_size_in_mb``,
     ``video_files_size_in_mb``)."""
     if fmt == "hdf5":
         from rpg.demos.robomimic import RobomimicWriter
 
         return RobomimicWriter(out, layout.cameras, layout.image_size, layout.robot_type, keep_failed=keep_failed,
-                               task_paths=task_paths, visual=visual)
+                               task_paths=task_paths, visual=layout.visual,
+                               wrist_supersample=layout.wrist_supersample)
     if fmt == "lerobot-v2.1":
         from rpg.demos.lerobot import LeRobotWriter
 
@@ -161,7 +164,8 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
                   image_size: tuple[int, int] = (256, 256), instruction: str = "original",
                   progress: Callable[[Episode, int | None], None] | None = None, gop: int | None = None,
                   columns: tuple[str, ...] = COLUMNS, keep_failed: bool = False, backend: str = "local",
-                  address: str | None = None, visual: str = "decimated", **writer_options) -> dict:
+                  address: str | None = None, visual: str = "decimated", wrist_supersample: int = 1,
+                  **writer_options) -> dict:
     """Record ``episodes`` successful oracle demonstrations per task of ``target`` into ``out``.
 
     Args:
@@ -174,6 +178,11 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
         visual: the robot's meshes in the images, ``decimated`` (default) or ``stock``
             (:mod:`rpg.env.embodiments.visuals`); recorded in robomimic's ``env_kwargs`` and in
             a LeRobot dataset's ``meta/info.json`` (:data:`rpg.demos.layout.VISUAL_KEY`).
+        wrist_supersample: the wrist camera drawn at this many times the image size per side
+            and averaged back, 1 (off, the default) or 2 (anti-aliased wrist shadows; on a
+            software renderer a large share of the steps/s, README); recorded in
+            robomimic's ``env_kwargs`` and in a LeRobot dataset's ``meta/info.json``
+            (:data:`rpg.demos.layout.SUPERSAMPLE_KEY`).
         writer_options: for the LeRobot v3.0 writer, ``data_files_size_in_mb`` and
             ``video_files_size_in_mb``.
 
@@ -182,8 +191,9 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
         {task: {"success": n, "attempts": m}}}``.
 
     Raises:
-        BadInput: unknown target, format, column group or visual, ``episodes`` or ``jobs`` < 1,
-            ``gop`` < 1, or ``out`` holds a dataset of another kind (or another ``visual``).
+        BadInput: unknown target, format, column group or visual, a ``wrist_supersample``
+            other than 1 or 2, ``episodes`` or ``jobs`` < 1, ``gop`` < 1, or ``out`` holds a
+            dataset of another kind (or another ``visual`` or ``wrist_supersample``).
         rpg.parallel.BackendError: an unknown backend, Ray not installed or its cluster
             unreachable (before anything is written).
         rpg.parallel.WorkerLost: a worker died (the episodes committed before are kept).
@@ -200,24 +210,26 @@ def collect_demos(target: str | Path, out: str | Path, episodes: int = 10, embod
         raise BadInput("--gop must be at least 1")
     columns = check_columns(columns)
     from rpg.env.embodiments.visuals import VISUALS
+    from rpg.env.render import check_wrist_supersample
 
     if visual not in VISUALS:
         raise BadInput(f"--visual must be one of {', '.join(VISUALS)}, not {visual!r}")
+    wrist_supersample = check_wrist_supersample(wrist_supersample)
     tasks = expand_targets(target)
     slots = object_slots(tasks) if "object_poses" in columns and fmt != "hdf5" else ()
-    layout = Layout(embodiment, tuple(cameras), tuple(image_size), columns, slots, gop, visual)
+    layout = Layout(embodiment, tuple(cameras), tuple(image_size), columns, slots, gop, visual, wrist_supersample)
     paths = {_task_hash(t): library_path(t, target) for t in tasks}
     with open_backend(backend, jobs, address) as runner:
         return _collect(runner, tasks, target, out, episodes, embodiment, fmt, tuple(cameras), tuple(image_size),
-                        instruction, progress, gop, layout, paths, keep_failed, writer_options, visual)
+                        instruction, progress, gop, layout, paths, keep_failed, writer_options)
 
 
 def _collect(runner, tasks: list[str], target, out, episodes: int, embodiment: str, fmt: str,
              cameras: tuple[str, ...], image_size: tuple[int, int], instruction: str, progress, gop: int,
-             layout: Layout, paths: dict, keep_failed: bool, writer_options: dict, visual: str = "decimated") -> dict:
+             layout: Layout, paths: dict, keep_failed: bool, writer_options: dict) -> dict:
     """The part of :func:`collect_demos` that writes the dataset; ``runner`` an open
     :class:`rpg.parallel.Backend`."""
-    writer = make_writer(fmt, out, layout, keep_failed=keep_failed, task_paths=paths, visual=visual, **writer_options)
+    writer = make_writer(fmt, out, layout, keep_failed=keep_failed, task_paths=paths, **writer_options)
     writer.open()
     staging = Path(out) / ".staging"
     shutil.rmtree(staging, ignore_errors=True)
@@ -234,7 +246,7 @@ def _collect(runner, tasks: list[str], target, out, episodes: int, embodiment: s
             last = MAX_SEED_FACTOR * episodes
             while made < episodes and seed < last:
                 batch = [Job(task, s, embodiment, cameras, image_size, instruction, str(staging),
-                             "hdf5" if fmt == "hdf5" else "mp4", gop, visual)
+                             "hdf5" if fmt == "hdf5" else "mp4", gop, layout.visual, layout.wrist_supersample)
                          for s in range(seed, min(seed + episodes - made, last))]
                 seed += len(batch)
                 # committed in seed order, however they finish: the same dataset for any --jobs and backend

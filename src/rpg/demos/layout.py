@@ -49,9 +49,21 @@ dataset unchanged (tested with lerobot 0.4).  A dataset written before the key e
 the decimated meshes."""
 
 
+SUPERSAMPLE_KEY = "rpg_wrist_supersample"
+"""The key of ``meta/info.json`` (both LeRobot versions), next to :data:`VISUAL_KEY`, that
+records how the wrist camera's video frames were drawn: ``wrist_supersample`` of
+:class:`rpg.env.BlockTaskEnv` (1: at the image size; 2: at twice the size per side and each
+2x2 block averaged).  A dataset written before the key existed has 1."""
+
+
 def recorded_visual(info: dict) -> str:
     """The ``visual`` a LeRobot dataset's ``meta/info.json`` records (``decimated`` if none)."""
     return info.get(VISUAL_KEY, "decimated")
+
+
+def recorded_wrist_supersample(info: dict) -> int:
+    """The ``wrist_supersample`` a LeRobot dataset's ``meta/info.json`` records (1 if none)."""
+    return info.get(SUPERSAMPLE_KEY, 1)
 
 
 def video_key(camera: str) -> str:
@@ -112,6 +124,9 @@ class Layout:
         visual: the robot's meshes in the images, ``decimated`` or ``stock``
             (:class:`rpg.env.BlockTaskEnv`'s ``visual``), recorded as ``meta/info.json``'s
             :data:`VISUAL_KEY`.
+        wrist_supersample: the wrist camera's supersampling factor per side (1: off;
+            :class:`rpg.env.BlockTaskEnv`'s ``wrist_supersample``), recorded as
+            ``meta/info.json``'s :data:`SUPERSAMPLE_KEY`.
     """
 
     robot_type: str
@@ -121,6 +136,11 @@ class Layout:
     objects: tuple[str, ...] = ()
     gop: int = DEFAULT_GOP
     visual: str = "decimated"
+    wrist_supersample: int = 1
+
+    def info_keys(self) -> dict:
+        """rpg's keys of ``meta/info.json``: how the images were drawn."""
+        return {VISUAL_KEY: self.visual, SUPERSAMPLE_KEY: self.wrist_supersample}
 
     @property
     def fps(self) -> int:
@@ -224,12 +244,12 @@ class Layout:
 def check_existing(root: Path, layout: Layout, version: str, other_format: str) -> dict | None:
     """The ``meta/info.json`` of a LeRobot dataset already in ``root`` (None if there is none),
     checked to be one this writer can append to: format ``version``, the same robot, cameras,
-    image size, columns, keyframe interval and meshes (``visual``).
+    image size, columns, keyframe interval, meshes (``visual``) and wrist supersampling.
 
     Raises:
         BadInput: a robomimic dataset, another LeRobot version (``other_format`` is the
             ``--format`` that writes it), or another embodiment, cameras, image size, columns,
-            keyframe interval or ``visual``.
+            keyframe interval, ``visual`` or ``wrist_supersample``.
     """
     meta = root / "meta"
     if (meta / "rpg_robomimic.json").is_file():
@@ -248,4 +268,7 @@ def check_existing(root: Path, layout: Layout, version: str, other_format: str) 
     if recorded_visual(old) != layout.visual:
         raise BadInput(f"{root} holds a dataset recorded with --visual {recorded_visual(old)}; give that "
                        "or a new --out directory")
+    if recorded_wrist_supersample(old) != layout.wrist_supersample:
+        raise BadInput(f"{root} holds a dataset recorded with --wrist-supersample {recorded_wrist_supersample(old)}; "
+                       "give that or a new --out directory")
     return old

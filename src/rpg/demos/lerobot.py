@@ -13,7 +13,8 @@ provenance: ``task`` (where it was loaded from), ``task_hash`` (content hash), `
 ``embodiment``, ``instruction``, ``paraphrase``, ``final_poses``, ``object_names`` (the
 object slots' names) and ``success`` (false only for a failed episode kept with
 ``--keep-failed``).  ``meta/info.json`` also records the robot's meshes in the
-videos, ``rpg_visual`` (:data:`rpg.demos.layout.VISUAL_KEY`).
+videos, ``rpg_visual`` (:data:`rpg.demos.layout.VISUAL_KEY`), and the wrist camera's
+supersampling, ``rpg_wrist_supersample`` (:data:`rpg.demos.layout.SUPERSAMPLE_KEY`).
 
 Crash safety: an episode's files are written first (each atomically), then its line is
 appended to ``meta/episodes.jsonl``; that line is the commit.  :meth:`LeRobotWriter.open`
@@ -38,7 +39,7 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.parquet as pq
 
-from rpg.demos.layout import VISUAL_KEY, Layout, check_existing, video_key
+from rpg.demos.layout import Layout, check_existing, video_key
 from rpg.demos.log import discard_failed, log_attempt
 from rpg.demos.record import ACTION_NAMES, Episode
 from rpg.errors import PeerError
@@ -162,7 +163,7 @@ class LeRobotWriter:
             "total_chunks": (n + CHUNK_SIZE - 1) // CHUNK_SIZE if n else 0, "chunks_size": CHUNK_SIZE,
             "fps": float(self.layout.fps), "splits": {"train": f"0:{n}"}, "data_path": DATA_PATH,
             "video_path": VIDEO_PATH if cams else None,
-            "features": self.layout.features(CODEBASE_VERSION), VISUAL_KEY: self.layout.visual,
+            "features": self.layout.features(CODEBASE_VERSION), **self.layout.info_keys(),
         })
 
 

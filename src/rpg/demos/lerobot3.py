@@ -20,7 +20,8 @@ the statistics ``stats/<feature>/<min|max|mean|std|count>``, and rpg's provenanc
 ``paraphrase``, ``final_poses`` (JSON), ``object_names`` and ``success``.
 ``meta/tasks.parquet`` maps each task (the instruction, the index) to its ``task_index``.
 ``meta/info.json`` also records the robot's meshes in the videos, ``rpg_visual``
-(:data:`rpg.demos.layout.VISUAL_KEY`).
+(:data:`rpg.demos.layout.VISUAL_KEY`), and the wrist camera's supersampling,
+``rpg_wrist_supersample`` (:data:`rpg.demos.layout.SUPERSAMPLE_KEY`).
 
 Crash safety.  A file is only ever replaced whole: written to a temporary name and renamed.
 An episode is appended to the current data file and video files by writing each anew (the
@@ -52,7 +53,6 @@ import pyarrow.parquet as pq
 from rpg.demos import mp4
 from rpg.demos.layout import (
     INDEX_FEATURES,
-    VISUAL_KEY,
     Layout,
     aggregate_stats,
     check_existing,
@@ -370,7 +370,7 @@ class LeRobotV3Writer:
             "data_files_size_in_mb": self.data_mb, "video_files_size_in_mb": self.video_mb,
             "fps": self.layout.fps, "splits": {"train": f"0:{n}"}, "data_path": DATA_PATH,
             "video_path": VIDEO_PATH if self.layout.cameras else None,
-            "features": self.layout.features(CODEBASE_VERSION), VISUAL_KEY: self.layout.visual,
+            "features": self.layout.features(CODEBASE_VERSION), **self.layout.info_keys(),
         })
 
 

@@ -221,9 +221,10 @@ def _environment(key: tuple, reuse: bool) -> BlockTaskEnv:
         if key in _CACHED:
             return _CACHED[key]
         close_cached_env()
-    task, embodiment, cameras, image_size, instruction, max_steps, visual = key
+    task, embodiment, cameras, image_size, instruction, max_steps, visual, wrist_supersample = key
     env = BlockTaskEnv(task, embodiment=embodiment, control_mode="ee_delta", cameras=cameras,
-                       image_size=image_size, instruction=instruction, max_episode_steps=max_steps, visual=visual)
+                       image_size=image_size, instruction=instruction, max_episode_steps=max_steps, visual=visual,
+                       wrist_supersample=wrist_supersample)
     if reuse:
         _CACHED[key] = env
     return env
@@ -240,7 +241,7 @@ def record_episode(task: str, seed: int, embodiment: str = "floating_gripper",
                    cameras: tuple[str, ...] = ("agentview", "wrist"), image_size: tuple[int, int] = (256, 256),
                    instruction: str = "original", video_dir: str | Path | None = None,
                    max_steps: int | None = None, frames: str = "mp4", reuse_env: bool = False,
-                   gop: int | None = None, visual: str = "decimated") -> Episode:
+                   gop: int | None = None, visual: str = "decimated", wrist_supersample: int = 1) -> Episode:
     """Run the oracle for one episode and record it.
 
     Args:
@@ -261,6 +262,9 @@ def record_episode(task: str, seed: int, embodiment: str = "floating_gripper",
             :data:`rpg.demos.mp4.DEFAULT_GOP`).
         visual: the robot's meshes in the images, ``"decimated"`` or ``"stock"``
             (:class:`rpg.env.BlockTaskEnv`'s ``visual``).
+        wrist_supersample: the wrist camera drawn at this many times the image size per
+            side and averaged back (1: off; :class:`rpg.env.BlockTaskEnv`'s
+            ``wrist_supersample``).
 
     Returns:
         The :class:`Episode` (``success`` false when the oracle failed; its videos are then
@@ -275,8 +279,8 @@ def record_episode(task: str, seed: int, embodiment: str = "floating_gripper",
         raise ValueError(f"frames must be one of {FRAME_FORMATS}, not {frames!r}")
     gop = DEFAULT_GOP if gop is None else int(gop)
     encoder_options(gop)  # checks it
-    env = _environment((str(task), embodiment, tuple(cameras), tuple(image_size), instruction, max_steps, visual),
-                       reuse_env)
+    env = _environment((str(task), embodiment, tuple(cameras), tuple(image_size), instruction, max_steps, visual,
+                        int(wrist_supersample)), reuse_env)
     try:
         oracle = Oracle(env)
         obs, info = env.reset(seed=seed)

@@ -31,7 +31,8 @@ is what robomimic's ``SequenceDataset`` loads (``obs``, ``next_obs``, ``actions`
 ``env_kwargs`` says how to rebuild the environment: every keyword of
 :class:`rpg.env.BlockTaskEnv` the demos were recorded with that shapes what it observes or how
 an episode ends (:data:`ENV_KEYWORDS`: ``embodiment``, ``control_mode``, ``cameras``,
-``image_size``, ``visual``, ``privileged``, ``terminate_on_success``, ``max_episode_steps``; the
+``image_size``, ``visual``, ``wrist_supersample``, ``privileged``, ``terminate_on_success``,
+``max_episode_steps``; the
 instruction is each demo's own), ``tasks`` (every task's content hash -> its path in the library
 it was recorded from, a hint), and for a file of one task ``task_hash`` and ``task`` (that
 path).  :func:`make_env_from_metadata` rebuilds it, finding the task by its content hash in a
@@ -147,12 +148,15 @@ class RobomimicWriter:
         image_size: (height, width) of the images.
         robot_type: the embodiment.
         visual: the robot's meshes in the images (``decimated`` or ``stock``).
+        wrist_supersample: the wrist camera's supersampling factor per side (1: off).
     """
 
     def __init__(self, root: str | Path, cameras: tuple[str, ...], image_size: tuple[int, int], robot_type: str,
-                 keep_failed: bool = False, task_paths: dict[str, str] | None = None, visual: str = "decimated"):
+                 keep_failed: bool = False, task_paths: dict[str, str] | None = None, visual: str = "decimated",
+                 wrist_supersample: int = 1):
         self.root = Path(root)
         self.visual = visual
+        self.wrist_supersample = int(wrist_supersample)
         self.cameras = tuple(cameras)
         self.image_size = tuple(image_size)
         self.robot_type = robot_type
@@ -171,7 +175,8 @@ class RobomimicWriter:
 
     def _settings(self) -> dict:
         return {"format": "robomimic", "robot_type": self.robot_type, "cameras": list(self.cameras),
-                "image_size": list(self.image_size), "visual": self.visual}
+                "image_size": list(self.image_size), "visual": self.visual,
+                "wrist_supersample": self.wrist_supersample}
 
     def open(self) -> None:
         """Read what a previous run committed and remove what a kill left half-written.
@@ -184,10 +189,12 @@ class RobomimicWriter:
             raise BadInput(f"{self.root} holds a LeRobot dataset; give a new --out directory for --format hdf5")
         settings = self.meta / SETTINGS
         if settings.is_file():
-            # a dataset from before ``visual`` was recorded has the default meshes
-            if {"visual": "decimated"} | json.loads(settings.read_text()) != self._settings():
-                raise BadInput(f"{self.root} holds a dataset of another embodiment, cameras, image size or visual; "
-                               "give a new --out directory")
+            # a dataset from before ``visual`` or ``wrist_supersample`` was recorded has the defaults
+            old = {"visual": "decimated", "wrist_supersample": 1} | json.loads(settings.read_text())
+            if old != self._settings():
+                changed = sorted(k for k in set(old) | set(self._settings()) if old.get(k) != self._settings().get(k))
+                raise BadInput(f"{self.root} holds a dataset of another {', '.join(changed)}; give the same "
+                               "settings or a new --out directory")
         elif self.root.is_dir() and any(p.name != ".staging" for p in self.root.iterdir()):
             raise BadInput(f"{self.root} is not empty and holds no rpg robomimic dataset; give a new --out directory")
         self.meta.mkdir(parents=True, exist_ok=True)
@@ -290,7 +297,8 @@ class RobomimicWriter:
         for e in self.episodes:
             tasks.setdefault(e["task_hash"], e.get("task_path") or self.task_paths.get(e["task_hash"]))
         kwargs = {"embodiment": self.robot_type, "control_mode": "ee_delta", "cameras": list(self.cameras),
-                  "image_size": list(self.image_size), "visual": self.visual, "privileged": False,
+                  "image_size": list(self.image_size), "visual": self.visual,
+                  "wrist_supersample": self.wrist_supersample, "privileged": False,
                   "terminate_on_success": True, "max_episode_steps": None, "tasks": tasks}
         if len(tasks) == 1:
             (h, p), = tasks.items()
@@ -298,13 +306,13 @@ class RobomimicWriter:
         return {"env_name": ENV_NAME, "type": GYM_ENV_TYPE, "env_kwargs": kwargs}
 
 
-ENV_KEYWORDS = ("embodiment", "control_mode", "cameras", "image_size", "visual", "privileged",
-                "terminate_on_success", "max_episode_steps")
+ENV_KEYWORDS = ("embodiment", "control_mode", "cameras", "image_size", "visual", "wrist_supersample",
+                "privileged", "terminate_on_success", "max_episode_steps")
 """The keywords of :class:`rpg.env.BlockTaskEnv` that ``env_kwargs`` records and
 :func:`make_env_from_metadata` passes back (the embodiment is each demo's own, checked against
-its provenance; the instruction likewise).  A file from before ``visual``, ``privileged``,
-``terminate_on_success`` and ``max_episode_steps`` were recorded gets the environment's defaults,
-which are what the demos were recorded with."""
+its provenance; the instruction likewise).  A file from before ``visual``,
+``wrist_supersample``, ``privileged``, ``terminate_on_success`` and ``max_episode_steps`` were
+recorded gets the environment's defaults, which are what the demos were recorded with."""
 
 
 VALID_EVERY = 10
@@ -555,6 +563,7 @@ def make_env_from_metadata(path: str | Path, library: str | Path, demo: int | No
     """
     from rpg.demos.collect import check_provenance, library_tasks
     from rpg.env.core import BlockTaskEnv
+    from rpg.env.render import SUPERSAMPLE_FACTORS
 
     h5 = dataset_file(path)
     if h5 is None:
@@ -588,6 +597,9 @@ def make_env_from_metadata(path: str | Path, library: str | Path, demo: int | No
             elif key in ("privileged", "terminate_on_success"):
                 if type(value) is not bool:
                     raise _refuse(h5, f"env_kwargs {key} is not a boolean")
+            elif key == "wrist_supersample":
+                if type(value) is not int or value not in SUPERSAMPLE_FACTORS:
+                    raise _refuse(h5, f"env_kwargs wrist_supersample is not one of {SUPERSAMPLE_FACTORS}")
             elif not isinstance(value, str):
                 raise _refuse(h5, f"env_kwargs {key} is not a string")
             settings[key] = value

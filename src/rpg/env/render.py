@@ -51,6 +51,25 @@ SOFT_SHADOW_CAMERAS = ("wrist",)
 SUPERSAMPLE_FACTORS = (1, 2, 3, 4)
 """The supersampling factors a camera may be drawn with (1: none)."""
 
+WRIST_SUPERSAMPLE_OPTIONS = (1, 2)
+"""What ``rpg eval`` and ``rpg demos`` take as ``--wrist-supersample`` (1: off, the default;
+2: the wrist camera drawn at 2x per side, what the README measures); the environment itself
+takes :data:`SUPERSAMPLE_FACTORS`."""
+
+
+def check_wrist_supersample(value: object) -> int:
+    """``value`` as a ``--wrist-supersample`` factor (:data:`WRIST_SUPERSAMPLE_OPTIONS`).
+
+    Raises:
+        BadInput: anything else (another integer, a string, a boolean), in one line.
+    """
+    from rpg.errors import BadInput
+
+    if type(value) is not int or value not in WRIST_SUPERSAMPLE_OPTIONS:
+        raise BadInput(f"--wrist-supersample must be 1 (off) or 2 (the wrist camera drawn at 2x and averaged), "
+                       f"not {value!r}")
+    return value
+
 
 def shadow_map_size(height: int, width: int) -> int:
     """Side of the shadow map for images of ``height`` x ``width`` pixels: 4 texels per

@@ -97,6 +97,11 @@ class EvalConfig:
         visual: the robot's meshes in the images, ``decimated`` (default) or ``stock``
             (:class:`rpg.env.BlockTaskEnv`'s ``visual``); each episode's record says which
             its environment drew.  A run from before this setting resumes as ``decimated``.
+        wrist_supersample: the wrist camera drawn at this many times the image size per side
+            and averaged back (1: off, the default; 2: anti-aliased wrist shadows, at a cost
+            in steps/s; :class:`rpg.env.BlockTaskEnv`'s ``wrist_supersample``); each
+            episode's record says what its environment drew with.  A run from before this
+            setting resumes as 1.
     """
 
     target: str
@@ -114,6 +119,7 @@ class EvalConfig:
     episode_timeout: float = EPISODE_TIMEOUT_S
     allow_unstated: bool = False
     visual: str = "decimated"
+    wrist_supersample: int = 1
 
     def camera_list(self) -> tuple[str, ...]:
         if self.cameras is not None:
@@ -413,7 +419,8 @@ def _env_for(unit: Unit):
             _ENVS.popitem(last=False)[1][0].close()
         size = VIDEO_SIZE if cfg.video and not cfg.camera_list() else tuple(cfg.image_size)
         env = BlockTaskEnv(unit.task.path, embodiment=cfg.embodiment, control_mode=cfg.control_mode,
-                           cameras=cfg.camera_list(), image_size=size, instruction=unit.variant, visual=cfg.visual)
+                           cameras=cfg.camera_list(), image_size=size, instruction=unit.variant, visual=cfg.visual,
+                           wrist_supersample=cfg.wrist_supersample)
         _ENVS[key] = (env, env.source.content_hash)
     _ENVS.move_to_end(key)
     return _ENVS[key]
@@ -476,7 +483,8 @@ def run_unit(unit: Unit) -> dict:
     return {"task": unit.task.name, "task_path": unit.task.path, "task_hash": content_hash,
             "family": unit.task.family, "version": unit.task.version, "intent": unit.task.intent,
             "split": unit.task.split, "seed": int(unit.seed), "instruction_variant": unit.variant,
-            "embodiment": cfg.embodiment, "visual": env.unwrapped.robot.visual, "policy": cfg.policy, **result,
+            "embodiment": cfg.embodiment, "visual": env.unwrapped.robot.visual,
+            "wrist_supersample": env.unwrapped.wrist_supersample, "policy": cfg.policy, **result,
             "video": str(video.relative_to(unit.run_dir)) if video and video.exists() else None}
 
 
@@ -490,6 +498,10 @@ def read_episodes(path: Path) -> list[dict]:
     return read_jsonl(path)
 
 
+RUN_DEFAULTS = {"visual": "decimated", "wrist_supersample": 1}
+"""What a ``run.json`` from before a setting existed ran with."""
+
+
 def _check_run_dir(run_dir: Path, config: EvalConfig) -> None:
     settings = run_dir / "run.json"
     if run_dir.exists() and not run_dir.is_dir():
@@ -500,7 +512,7 @@ def _check_run_dir(run_dir: Path, config: EvalConfig) -> None:
         except ValueError:
             raise BadInput(f"{settings} is not readable JSON; give a new -o directory") from None
         if isinstance(before, dict):
-            before = {"visual": "decimated"} | before  # a run from before --visual drew the decimated meshes
+            before = RUN_DEFAULTS | before  # a run from before --visual / --wrist-supersample
         if before != config.to_json():
             changed = sorted(k for k in set(before) | set(config.to_json()) if before.get(k) != config.to_json().get(k))
             raise BadInput(f"{run_dir} holds a run with other settings ({', '.join(changed)}); give a new -o "
@@ -515,12 +527,13 @@ def check_settings(config: EvalConfig) -> list[tuple[EvalTask, str]]:
 
     Raises:
         BadInput: no seeds, a bad replan, timeout, embodiment, control mode, camera, image
-            size, visual, target, instruction mode or paraphrase, or a policy that cannot be
-            loaded.
+            size, visual, wrist supersampling, target, instruction mode or paraphrase, or a
+            policy that cannot be loaded.
     """
     from rpg.env.core import CAMERAS
     from rpg.env.embodiments import make_embodiment
     from rpg.env.embodiments.visuals import VISUALS
+    from rpg.env.render import check_wrist_supersample
 
     if not config.seeds:
         raise BadInput("no seeds: give --episodes N (N >= 1) or --seeds LIST")
@@ -528,6 +541,7 @@ def check_settings(config: EvalConfig) -> list[tuple[EvalTask, str]]:
         raise BadInput("--replan must be at least 1")
     if config.visual not in VISUALS:
         raise BadInput(f"--visual must be one of {', '.join(VISUALS)}, not {config.visual!r}")
+    check_wrist_supersample(config.wrist_supersample)
     for name, value in (("--inference-timeout", config.inference_timeout), ("--episode-timeout", config.episode_timeout)):
         if not (isinstance(value, int | float) and value > 0 and value == value and value != float("inf")):
             raise BadInput(f"{name} must be a positive number of seconds, not {value!r}")

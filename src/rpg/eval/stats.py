@@ -26,10 +26,10 @@ Z95 = 1.959963984540054
 SIGNIFICANCE = 0.05
 """Holm-adjusted p-value below which ``rpg eval compare`` calls a difference real."""
 
-MATCHED_SETTINGS = ("embodiment", "control_mode", "cameras", "image_size", "replan", "visual")
+MATCHED_SETTINGS = ("embodiment", "control_mode", "cameras", "image_size", "replan", "visual", "wrist_supersample")
 """Settings two runs must share to be compared (``--allow-mismatch`` overrides, and says so)."""
 
-_SETTING_DEFAULTS = {"visual": "decimated"}
+_SETTING_DEFAULTS = {"visual": "decimated", "wrist_supersample": 1}
 """What a summary from before a setting existed ran with."""
 
 
