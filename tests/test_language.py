@@ -4,6 +4,7 @@ test_corpus.py; these pin down the mechanisms."""
 
 import pytest
 
+from rpg.errors import BadInput
 from rpg.schema.builtin import ParseError, normalize, parse
 from rpg.schema.meaning import meaning
 
@@ -330,3 +331,15 @@ def test_a_request_phrased_as_a_question_is_an_instruction():
     """"can you ...?" asks for an arrangement: it compiles (a question about the scene does not)."""
     assert parse("Can you put the red block on the blue block?").goal.name == "stack"
     assert parse("could you stack the red block on the blue block?").goal.name == "stack"
+
+
+def test_sorting_says_no_line_unless_a_line_or_an_order_is_said():
+    """"sort the blocks" compiled a line of four colours (a structure nobody named); "by
+    colour" sorts like with like (piles), and a line needs a line word or an order to read."""
+    for text in ("sort the blocks", "arrange the blocks by color", "organize the blocks by color",
+                 "sort the blocks from left to right by color"):
+        with pytest.raises(BadInput):
+            parse(text)
+    for text in ("sort the blocks by colour", "organize the blocks into piles by color"):
+        assert parse(text).goal.name == "piles", text
+    assert parse("arrange the blocks in a row").goal.name == "in_line"

@@ -38,7 +38,7 @@ SPLITS = HERE / "splits.yaml"
 # What a refusal message must say to be refused "for the right reason", per must-refuse class.
 REASON_WORDS = {
     "no_goal": r"no goal|without a goal|goal place|says? (?:where|what)|no end state",
-    "question": r"question|ask",
+    "question": r"\bquestions?\b",
     "action": r"action|cannot (?:rotate|cut|hide|sweep|turn)|verb",
     "object": r"has no|lacks|no such|does not have|not (?:in|part of) (?:the|this) (?:domain|task|table)|only (?:cubes|blocks)",
     "shape": r"shape|has no|lacks|does not have|only (?:cubes|blocks)",
@@ -48,7 +48,7 @@ REASON_WORDS = {
     "reference": r"refer|earlier|previous|current (?:scene|state)|history|before",
     "condition": r"condition",
     "contradiction": r"contradict|cannot (?:both|end in)",
-    "colour": r"colou?r",
+    "colour": r"unknown colou?r|not (?:a|one of the) colou?rs?|colou?r \S+ is not|palette",
 }
 UNKNOWN_WORD = re.compile(r"^could not parse ")
 

@@ -334,7 +334,10 @@ def recognize_circle(f: Features, b: Builder) -> bool:
 
 @reader(order=150)
 def recognize_piles(f: Features, b: Builder) -> bool:
-    separate = re.search(r"\b(?:separate|split|divide)\b.*\b(?:from|by colou?r|into)\b", f.text)
+    separate = re.search(r"\b(?:separate|split|divide)\b.*\b(?:from|by colou?r|into)\b", f.text) or (
+        re.search(r"\bsort\b.*\bby\s+colou?rs?\b", f.text)  # "sort the blocks by colour": like with like
+        and not f.has("line", "row", "rows", "align", "aligned", "tower", "stack", "rainbow", "gradient", "hue")
+        and not direction_stated(f))
     if not (f.has("pile", "piles", "bunch", "bunches", "group", "groups", "cluster", "clusters", "heap", "heaps")
             or separate):
         return False
@@ -455,6 +458,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         what = {"label": "alphabetical", "number": "increasing numerical", "color": "color-gradient"}[key]
         b.summary.append(f"{n} cubes in a line in {'reverse ' if desc else ''}{what} order {direction.replace('_', ' ')}")
     else:
+        if not f.has("align", "aligned", "line", "lines", "row", "horizontally", "horizontal"):
+            return False  # "sort the blocks", "arrange them by colour": no line said, and no order to read it by
         distinct = list(dict.fromkeys(f.color_list()))
         n = stated_count(f, default=len(distinct) if len(distinct) >= 2 else 4)
         material = material_of(f)
