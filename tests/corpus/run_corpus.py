@@ -86,7 +86,14 @@ def classify(entry: dict) -> tuple[str, str]:
     except Exception as exc:  # a crash is neither a refusal nor a task: count it as wrong
         return "wrong", f"crash: {type(exc).__name__}: {exc}"[:160]
     got = meaning(schema)
-    return ("correct" if matches(entry["meaning"], got) else "wrong"), "; ".join(got)
+    if not matches(entry["meaning"], got):
+        return "wrong", "; ".join(got)
+    from rpg.schema.citations import REFUSED_WHEN_UNCITED, uncited
+
+    unsaid = [c.line for c in uncited(schema) if c.kind in REFUSED_WHEN_UNCITED]
+    if unsaid:  # the meaning notation cannot show it (an order of a stack, a line's axis): G demands it unsaid
+        return "wrong", "demands what no word says: " + "; ".join(unsaid)
+    return "correct", "; ".join(got)
 
 
 def must_refuse(entry: dict) -> bool:
@@ -138,6 +145,8 @@ def failure_class(entry: dict, outcome: str, detail: str) -> str | None:
         return "crash"
     if must_refuse(entry):
         return "wrong: compiled a must-refuse text"
+    if detail.startswith("demands what no word says"):
+        return "wrong: demands what no word says"
     want, got = _atoms(entry["meaning"]), _atoms(detail)
     if any(a.startswith("extra(") for a in got):
         return "wrong: content invented (extra object)"
