@@ -131,3 +131,104 @@ def test_runner_reports_the_unseen_split_in_aggregate_only():
     assert not re.search(r"could not|\bread \"|expected:|got:", text)  # no parser message either
     with pytest.raises(SystemExit):
         run_corpus.main(["--split", "unseen", "--show", "wrong"])
+
+
+# -- steering edits (steer_dev.yaml / steer_unseen.yaml, run_steer.py) ---------------------------------
+
+import run_steer  # noqa: E402
+
+
+def _step(meaning, category=None, refuse=None):
+    s = {"edit": "x", "meaning": meaning}
+    if category:
+        s["category"] = category
+    if refuse:
+        s["refuse"] = refuse
+    return s
+
+
+def test_steering_runner_classifies_each_outcome():
+    j = run_steer.judge_step
+    tower = _step("stack(red,blue,green)", "extend")
+    assert j(tower, got=["stack(red,blue,green)"], intent="extend") == ("right", "")
+    assert j(_step("stack(red,blue,green)", ["extend", "tweak"]), got=["stack(red,blue,green)"], intent="tweak")[0] == "right"
+    assert j(tower, got=["stack(red,blue,green)"], intent="pivot") == ("category wrong", "category wrong: extend read as pivot")
+    assert j(tower, got=["stack(green)"], intent="extend", before=["stack(red,blue)"])[1] == \
+        "silently wrong: addition applied as a replacement (earlier cubes lost)"
+    assert j(tower, got=["stack(red,blue)"], intent="extend", before=["stack(red,blue)"])[1] == \
+        "silently wrong: edit had no effect (meaning unchanged)"
+    assert j(tower, got=["stack(blue,red,green)"], intent="extend", before=["stack(red,blue)"]) == \
+        ("silently wrong", "silently wrong: order or roles")
+    assert j(tower, refused="could not parse 'florp' in \"...\"")[0:2] == ("refused wrongly", "refused wrongly: unknown word")
+    assert j(tower, error="ValueError (traceback)") == ("error", "error: ValueError (traceback)")
+    assert j(tower, refused="could not find a task in ...", family_changed=True)[0] == "error"
+    rot = _step("none (rotating is an action)", refuse="action")
+    assert j(rot, refused="cannot make a task of \"...\": 'rotate' is an action the domain does not have")[0] == "right"
+    assert j(rot, refused="could not parse 'degrees' in \"...\"") == \
+        ("refused (must-refuse): other reason", "refused (must-refuse): other reason (unknown word)")
+    assert j(rot, got=["stack(red,blue)"], intent="modify") == \
+        ("silently wrong", "silently wrong: compiled a must-refuse edit (action)")
+    # alternatives and the notation rules: a spelled word's reads atom, identical cubes' order and layers
+    assert j(_step(["next_to(blue,yellow)", "next_to(blue,red)"], "extend"), got=["next_to(blue,red)"], intent="extend")[0] == "right"
+    assert j(_step("line[left_to_right](C,A,T)", "tweak"), intent="tweak",
+             got=["line[left_to_right](C,A,T)", "reads(C,A,T;direction=left_to_right,face=up,text=CAT)"])[0] == "right"
+    assert j(_step("line(red,red,red)", "pivot"), got=["line[left_to_right](red,red,red)"], intent="pivot")[0] == "right"
+    assert j(_step("line(blue,green,red)", "pivot"), got=["line[left_to_right](red,green,blue)"], intent="pivot")[0] == \
+        "silently wrong"  # an order over different cubes is one the edit did not ask for
+    assert j(_step("pyramid(red,red,red|red,red|red)", "tweak"), got=["pyramid(red,red,red,red,red,red)"], intent="tweak")[0] == "right"
+    assert j(_step("pyramid(blue,blue,blue|green,green|green)", "tweak"), intent="tweak",
+             got=["pyramid(blue,blue,blue,green,green,green)"])[0] == "silently wrong"  # layer colours not judged
+
+
+def test_steering_runner_on_a_few_development_cases():
+    """The real steering code on four development cases: every edit gets a verdict that agrees with
+    judge_step on what steering did, multi-step cases stop at their first failure, the summary adds up.
+    Not a floor on the score."""
+    cases = {c["id"]: c for c in run_steer.load_split("dev")}
+    chosen = [cases[i] for i in ("s005", "s085", "s105", "s017")]  # tweak, must-refuse, 2 edits, a count edit
+    results = run_steer.run_cases(chosen, jobs=1)
+    for case, res in zip(chosen, results, strict=True):
+        assert res.id == case["id"] and res.outcome in run_steer.ORDER, res
+        if res.outcome.startswith("base"):
+            continue
+        reached = [s for s in res.steps if s.outcome != "not reached"]
+        assert reached and all(s.outcome != "not reached" for s in res.steps[:len(reached)])
+        first_bad = next((s for s in res.steps if s.outcome not in ("right", "not reached")), None)
+        assert res.outcome == (first_bad.outcome if first_bad else "right")
+        for spec, st in zip(case["steps"], reached, strict=False):
+            if st.got:  # compiled: the verdict is judge_step's on the meaning and intent
+                assert st.outcome == run_steer.judge_step(spec, got=st.got, intent=st.intent)[0]
+            elif st.outcome != "error":  # refused: a one-line message, never a traceback
+                assert st.message and "Traceback" not in st.message
+    s = run_steer.summarize(chosen, results)
+    assert sum(s["by_case"].values()) == 4
+    assert sum(s["by_edit"].values()) == sum(len(c["steps"]) for c in chosen)
+
+
+def test_steering_unseen_split_is_frozen_and_reported_in_aggregate_only(tmp_path, monkeypatch, capsys):
+    frozen = SPLITS["steering"]["unseen"]["sha256"]
+    assert hashlib.sha256(run_steer.UNSEEN.read_bytes()).hexdigest() == frozen, \
+        "steer_unseen.yaml changed after it was frozen: an edited split is no longer unseen (see splits.yaml)"
+    unseen = run_steer.load_split("unseen")
+    dev = run_steer.load_split("dev")
+    assert len(unseen) + len(dev) == 120 and not {c["id"] for c in unseen} & {c["id"] for c in dev}
+    for c in unseen + dev:
+        for st in c["steps"]:
+            assert run_steer.must_refuse(st) == ("refuse" in st)
+            assert st.get("refuse") in (None, *run_steer.STEER_REASON_WORDS), c["id"]
+            assert all(k in run_steer.CATEGORIES for k in run_steer.expected_categories(st)), c["id"]
+    # the summary the unseen report prints holds no base, edit or expected meaning (results made up here)
+    fake = [run_steer.CaseResult(c["id"], "silently wrong", "silently wrong: count",
+                                 steps=[run_steer.Step(st["edit"], "silently wrong", "silently wrong: count")
+                                        for st in c["steps"]]) for c in unseen]
+    run_steer.print_summary("UNSEEN", run_steer.summarize(unseen, fake))
+    text = capsys.readouterr().out
+    for c in unseen:
+        assert c["base"] not in text and c["id"] not in text
+        assert all(st["edit"] not in text and str(st["meaning"]) not in text for st in c["steps"])
+    edited = tmp_path / "steer_unseen.yaml"
+    edited.write_text(run_steer.UNSEEN.read_text() + "# edited\n")
+    monkeypatch.setattr(run_steer, "UNSEEN", edited)
+    assert run_steer.main(["--split", "unseen"]) == 2
+    with pytest.raises(SystemExit):
+        run_steer.main(["--split", "unseen", "--show", "wrong"])
