@@ -343,3 +343,37 @@ def test_sorting_says_no_line_unless_a_line_or_an_order_is_said():
     for text in ("sort the blocks by colour", "organize the blocks into piles by color"):
         assert parse(text).goal.name == "piles", text
     assert parse("arrange the blocks in a row").goal.name == "in_line"
+
+
+@pytest.mark.parametrize("text, want", [
+    # a count said in another form ("a circle of five", "two rows of four") is the count
+    ("arange the blocks in a circle of five", "circle(red,red,red,red,red)"),
+    ("make a wall of red bricks, two rows of four", "wall(red,red,red,red,red,red,red,red)"),
+    # the colours listed are the line's, in the rainbow's own order, read from either end
+    ("Line up the red, orange, yellow, green blocks in rainbow order", "line[sequence](red,orange,yellow,green)"),
+    ("line up five blocks from left to right in rainbow order",
+     "line[left_to_right](red,orange,yellow,green,blue); sorted_by(red,orange,yellow,green,blue;descending=False,"
+     "direction=left_to_right,face=up,key=color,strict=True)"),
+    # "reverse order" does not flip the ends the text names
+    ("Stack the blocks in reverse order: blue at the bottom, then green, then red on top", "stack(blue,green,red)"),
+])
+def test_counts_and_orders_said_another_way(text, want):
+    from rpg.schema.meaning import matches
+
+    assert matches(want, meaning(parse(text))), meaning(parse(text))
+
+
+@pytest.mark.parametrize("text", ["put half of the cubes in a line", "stack as many blocks as you can",
+                                  "put several cubes on the white patch", "build the tower as high as possible"])
+def test_a_vague_quantity_is_refused(text):
+    from rpg.schema.builtin import Inexpressible
+
+    with pytest.raises(Inexpressible) as exc:
+        parse(text)
+    assert exc.value.kind == "quantity"
+
+
+def test_an_unnamed_tower_in_a_place_is_free_and_a_comma_role_is_kept():
+    assert parse("build a three-block tower in the center of the table").goal.children()[0].name == "unordered_stack"
+    goal = parse("please make a tower out of a red, a blue and a green block, red at the bottom").goal
+    assert goal.name == "anchored_stack" and goal.bottom and not goal.top

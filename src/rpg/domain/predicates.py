@@ -1407,7 +1407,7 @@ class Reads(Predicate):
     direction: str = "left_to_right"
     face: str = "up"
     name: ClassVar[str] = "reads"
-    cue: ClassVar[str] = r"\b(?:spell\w*|words?|reads?|writ\w*|letters?)\b"
+    cue: ClassVar[str] = r"\b(?:spell\w*|words?|reads?|writ\w*|letters?|order\w*|ascending|descending|increasing|decreasing|alphabet\w*|numeric\w*|sort\w*)\b"
     swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
     semantic: ClassVar[bool] = True

@@ -82,7 +82,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("time", r"\b(?:\d+\s+(?:seconds?|minutes?|hours?)|seconds|minutes?|hours?|meanwhile|forever|while|whilst|during)\b",
      "is about time: a task's goal is checked once, at the end of the episode, with no clock or duration"),
     ("quantity", r"\b(?:\d+(?:\.\d+)?\s*(?:cm|mm)\b|(?:centi|milli)?(?:meters?|metres?)|inch(?:es)?|feet|foot"
-                 r"|cms?|few|fewer|most|majority|percent)\b",
+                 r"|cms?|few|fewer|most|majority|percent|half|halves|several|many|much|enough|plenty|numerous"
+                 r"|as\s+(?:high|tall|many|much|far|close|long)\s+as\s+(?:you|it|possible|can))\b",
      "is a measured or vague quantity: rpg's relations are qualitative (next to, left of, far from) and "
      "its counts exact"),
     ("size", r"\b(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge|giant|mini|heavy|heavier"
@@ -304,7 +305,7 @@ keeps its order."""
 
 
 STACK_ROLE_RE = re.compile(
-    r"\bwith\s+(?:the\s+|a\s+|an\s+)?(?P<c>[a-z]+)\s+(?:(?:block|cube|one)\s+)?"
+    r"(?:\bwith|,)\s+(?:the\s+|a\s+|an\s+)?(?P<c>[a-z]+)\s+(?:(?:block|cube|one)\s+)?"
     r"(?:(?:on|at)\s+(?:the\s+)?(?P<end>top|bottom|base)|as\s+(?:the\s+)?(?P<end2>top|bottom|base))\b"
     r"(?!\s+of\b)")
 """A cube given one end of a stack whose other cubes are only listed ("stack the red, blue

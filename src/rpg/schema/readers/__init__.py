@@ -48,7 +48,9 @@ def free_unnamed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
     parts = goal.children() if isinstance(goal, And) else [goal]
 
     def free(p):
-        elsewhere = {n for q in parts if q is not p for n in q.object_names()}
+        # a region the stack stands in relates its base only as the whole stack's place: every
+        # cube of a stack stands over the same spot, whichever is at the bottom
+        elsewhere = {n for q in parts if q is not p and not isinstance(q, InRegion) for n in q.object_names()}
         if (type(p) is Stack and len(p.objects) > 1 and not set(p.objects) & elsewhere
                 and all(n in colors and colors[n] not in named for n in p.objects)):
             return UnorderedStack(objects=p.objects)

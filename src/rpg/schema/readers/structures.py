@@ -243,9 +243,14 @@ def recognize_wall(f: Features, b: Builder) -> bool:
     wide = re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+)?(?:wide|long|across)\b", f.text)
     high = re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+|layers?\s+|rows?\s+|levels?\s+)?(?:high|tall)\b", f.text)
     dims = re.search(r"\b(\d+)x(\d+)\b", f.text)
+    rows = re.search(r"\b(\d+)\s+(?:rows|layers|levels)\s+of\s+(\d+)\b", f.text)  # "two rows of four"
+    if rows and not dims:
+        dims = re.search(r"(\d+)x(\d+)", f"{rows.group(2)}x{rows.group(1)}")
     width = int(wide.group(1)) if wide else (int(dims.group(1)) if dims else None)
     height = int(high.group(1)) if high else (int(dims.group(2)) if dims else None)
     count = re.search(r"\b(\d+)\s+(?:[a-z]+\s+)?(?:blocks|cubes)\b(?!\s+(?:wide|long|across|high|tall))", f.text)
+    if rows and count and rows.start() <= count.start() < rows.end():
+        count = None  # "2 rows of 4 blocks": the 4 is a row's, not the wall's
     total = int(count.group(1)) if count else None
     if width is None and height is None:
         height = WALL_DIMS[1]
@@ -315,6 +320,8 @@ def recognize_circle(f: Features, b: Builder) -> bool:
     if not f.has("circle", "circular", "ring", "round", "circles") and not corners:
         return False
     n = stated_count(f, default=None)
+    of = re.search(r"\b(?:circle|ring)\s+of\s+(\d+)\b", f.text)  # "a circle of five"
+    n = int(of.group(1)) if n is None and of else n
     listed = list(f.color_list())
     if n is None and len(listed) >= 2 and len(set(listed)) == len(listed) and re.search(
             rf"\b(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:the\s+)?(?:{COLOR_RE})\b", f.text):
@@ -439,13 +446,21 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         b.summary.append(f"up faces read {', '.join(labels)} {direction.replace('_', ' ')}")
     elif order:
         key, desc = order
-        n = stated_count(f, default=4 if key != "color" else 5)
+        spectrum = spectrum_of(f)
+        listed = [c for c in dict.fromkeys(f.color_list()) if c in spectrum]
+        n = stated_count(f, default=4 if key != "color" else len(listed) if len(listed) >= 2 else 5)
         if key == "color":
-            colors = [c for c in dict.fromkeys(f.color_list()) if c in GRADIENT_ORDER] or list(GRADIENT_ORDER)
+            colors = listed or spectrum
             if len(colors) < n:
-                colors = list(GRADIENT_ORDER)
-            colors = sorted(colors[:n], key=GRADIENT_ORDER.index, reverse=desc)
+                colors = spectrum
+            colors = sorted(colors[:n], key=spectrum.index, reverse=desc)
             names = [b.cube(c) for c in colors]
+            if not direction_stated(f):  # "in rainbow order": the hues in sequence, read from either end
+                b.place(directed_line(names, direction))
+                b.preds.append(InLine(tuple(names), axis=None, order="sequence"))
+                b.summary.append(b.preds[-1].describe())
+                b.primitives += ["arrange"]
+                return True
         else:
             material = "letters" if key == "label" else "digits"
             labels, strict = label_sequence(material, n, b)
@@ -593,8 +608,9 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
     if len(items) < 2:
         return False
     levels: list[int] | None = None
-    if re.search(r"\btop to bottom\b|\bin\s+(?:the\s+)?revers(?:e|ed)\s+order\b", f.text):
-        items.reverse()  # "... in the reversed order": the list read from its end
+    if re.search(r"\btop to bottom\b|\bin\s+(?:the\s+)?revers(?:e|ed)\s+order\b", f.text) and not (
+            {"bottom", "base"} & set(hints.values()) or ("top" in hints.values() and len(items) > 2)):
+        items.reverse()  # "... in the reversed order": the list read from its end (ends named are kept)
     else:
         role = {i: {"base": "bottom", "center": "middle", "centre": "middle"}.get(h, h) for i, h in hints.items()
                 if i < len(items)}
