@@ -20,7 +20,6 @@ from rpg.domain.layouts import (
     pyramid_layout,
     stack_layout,
 )
-from rpg.domain.palette import GRADIENT_ORDER
 from rpg.domain.predicates import (
     Between,
     Bridge,
