@@ -33,6 +33,7 @@ import yaml
 HERE = Path(__file__).parent
 CORPUS = HERE / "instructions.yaml"  # the development split
 UNSEEN = HERE / "unseen.yaml"
+STRANGER = HERE / "stranger.yaml"  # attack material written for the project (development, not a corpus source)
 SPLITS = HERE / "splits.yaml"
 
 # What a refusal message must say to be refused "for the right reason", per must-refuse class.
@@ -65,6 +66,8 @@ def load_split(name: str) -> list[dict]:
     """The entries of one split ('dev' or 'unseen'); the unseen file must match its frozen hash."""
     if name == "dev":
         return yaml.safe_load(CORPUS.read_text())["instructions"]
+    if name == "stranger":
+        return [{"source": "stranger", **e} for e in yaml.safe_load(STRANGER.read_text())["instructions"]]
     splits = yaml.safe_load(SPLITS.read_text())
     want, got = splits["unseen"]["sha256"], sha256(UNSEEN)
     if want != got:
@@ -88,6 +91,8 @@ def classify(entry: dict) -> tuple[str, str]:
     got = meaning(schema)
     if not matches(entry["meaning"], got):
         return "wrong", "; ".join(got)
+    if entry.get("order") == "any" and any(type(p).__name__ == "Stack" for p in schema.goal_predicate().walk()):
+        return "wrong", "demands what no word says: an order of a stack the words leave free"
     from rpg.schema.citations import REFUSED_WHEN_UNCITED, uncited
 
     unsaid = [c.line for c in uncited(schema) if c.kind in REFUSED_WHEN_UNCITED]
@@ -209,7 +214,8 @@ def run_split(name: str, show: str = "none") -> Counter:
         if show in (outcome, "all"):
             print(f"[{outcome}] {e['text']}\n    expected: {e['meaning']}\n    got:      {detail[:160]}"
                   + (f"\n    class:    {cls}" if cls else ""))
-    label = {"dev": "DEVELOPMENT split (instructions.yaml)", "unseen": "UNSEEN split (unseen.yaml, frozen)"}[name]
+    label = {"dev": "DEVELOPMENT split (instructions.yaml)", "unseen": "UNSEEN split (unseen.yaml, frozen)",
+             "stranger": "STRANGER set (stranger.yaml, development material)"}[name]
     _table(f"{label}: {len(by_source)} sources", by_source, counts)
     print(f"must-refuse: {mr['n']} texts; refused for the right reason {mr['right reason']}, "
           f"for another reason {mr['other reason']}, compiled {mr['compiled']}")
@@ -238,7 +244,7 @@ def run(show: str = "wrong", split: str = "dev") -> Counter:
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--split", default="dev", choices=["dev", "unseen", "all"])
+    ap.add_argument("--split", default="dev", choices=["dev", "unseen", "stranger", "all"])
     ap.add_argument("--show", default=None, choices=["wrong", "refused", "correct", "all", "none"],
                     help="print these development-split instructions (default: wrong); not allowed for --split unseen")
     args = ap.parse_args(argv)
