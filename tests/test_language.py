@@ -377,3 +377,19 @@ def test_an_unnamed_tower_in_a_place_is_free_and_a_comma_role_is_kept():
     assert parse("build a three-block tower in the center of the table").goal.children()[0].name == "unordered_stack"
     goal = parse("please make a tower out of a red, a blue and a green block, red at the bottom").goal
     assert goal.name == "anchored_stack" and goal.bottom and not goal.top
+
+
+@pytest.mark.parametrize("text", [
+    "put the red block to the left of the blue block and to the right of the blue block",
+    "put the red block on the left of the blue block and the blue block on the left of the red block",
+    "put red left of blue, blue left of green and green left of red",
+    "put the red block behind the blue block and to the left of it",  # each needs the cubes level across
+])
+def test_directional_relations_no_placement_satisfies_are_refused_as_a_contradiction(text):
+    with pytest.raises(ParseError, match="contradict"):
+        parse(text)
+
+
+def test_relations_on_different_pairs_still_compile():
+    assert len(parse("put the red block left of the blue block and the green block right of the blue block")
+               .goal.children()) >= 2

@@ -257,6 +257,7 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         cycle = ", ".join(f"{a} on {b_}" for a, b_ in r.on_edges)
         raise ParseError(f"the stacking relations of \"{f.original[:80]}\" contradict each other ({cycle}: "
                          "something would be on itself); say once which cube goes on which, or use --model")
+    _refuse_crossed_relations(f, r.rels)
     _layout_relational(b, chains, r.rels, r.onpatch, placed_in)
     for ch in chains:
         b.preds.append(Stack(tuple(ch)) if len(ch) > 1 else OnTable(ch[0]))
@@ -279,6 +280,33 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         b.structures.append([by_color[bottom], by_color[top]])
         b.summary.append(f"initially {top} is stacked on {bottom}")
     return True
+
+
+def _refuse_crossed_relations(f: Features, rels: list) -> None:
+    """Refuse directional relations no placement satisfies: two on one pair of cubes along
+    different axes or opposite ways ("left of the blue block and right of the blue block";
+    "behind the red one and to its left": each relation needs the cubes level across its
+    axis, ``RELATION_MAX_OFF_AXIS``), or a cycle along one axis (red left of blue, blue left of red).
+
+    Raises:
+        ParseError: naming the relations that contradict each other.
+    """
+    import networkx as nx
+
+    directional = [q for q in rels if hasattr(type(q), "axis") and hasattr(type(q), "sign")]
+    by_pair: dict[frozenset, set] = {}
+    graphs: dict[int, nx.DiGraph] = {}
+    for q in directional:
+        lo, hi = (q.b, q.a) if q.sign > 0 else (q.a, q.b)  # along the axis, lo comes before hi
+        by_pair.setdefault(frozenset((q.a, q.b)), set()).add((type(q).axis, lo, hi))
+        graphs.setdefault(type(q).axis, nx.DiGraph()).add_edge(lo, hi, rel=q.describe())
+    crossed = next((ways for ways in by_pair.values() if len(ways) > 1), None)
+    cycle = next((c for g in graphs.values() for c in [next(iter(nx.simple_cycles(g)), None)] if c), None)
+    if crossed or cycle:
+        said = "; ".join(q.describe() for q in directional)
+        raise ParseError(f"the relations of \"{f.original[:80]}\" contradict each other ({said}): no placement "
+                         "satisfies them all (a relation needs the two cubes level across its direction); "
+                         "say one relation per pair of cubes, or use --model")
 
 
 def _described_towers(text: str, described: list[re.Match], b: Builder) -> bool:
