@@ -393,3 +393,10 @@ def test_directional_relations_no_placement_satisfies_are_refused_as_a_contradic
 def test_relations_on_different_pairs_still_compile():
     assert len(parse("put the red block left of the blue block and the green block right of the blue block")
                .goal.children()) >= 2
+
+
+def test_to_its_left_is_a_relation_to_the_cube_named_before():
+    """"also to its left" was dropped silently (G held only "behind"); it now reads as "to the
+    left of it", which with "behind" no placement satisfies."""
+    with pytest.raises(ParseError, match="contradict"):
+        parse("place the blue block behind the red one and also to its left")

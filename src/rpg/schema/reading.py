@@ -195,6 +195,9 @@ def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
     text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall)", r"\1 \2", text)
     text = _compass(text)
     text = re.sub(r"\b(?:to|onto)\s+the\s+top\s+of\b", "on top of", text)
+    # "to its left": the relation to the cube "it" stands for (resolved like "to the left of it")
+    text = re.sub(r"\b(?:to|on|at)\s+(its|their)\s+(left|right)(?:\s+(?:hand\s+)?side)?\b",
+                  lambda m: f"to the {m.group(2)} of {'it' if m.group(1) == 'its' else 'them'}", text)
     # "put one block on (top of) the other": the two blocks stacked, either on top
     text = re.sub(r"\b(put|place|stack|set)\s+one\s+(block|cube)\s+(?:on|onto|upon)\s+(?:top\s+of\s+)?the\s+other(?:\s+one)?\b",
                   r"\1 two \2s on top of each other", text)
