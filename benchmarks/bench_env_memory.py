@@ -8,7 +8,9 @@ the GL context when there are cameras), then open and reset N more, reading ``Vm
 ``/proc/self/status`` after each.  The figure per environment is the growth over those N
 divided by N.  Cases: the Panda with the decimated meshes (the default) and with the stock
 ones, state-only (``rpg eval``'s built-in policies) and with two 224x224 cameras (a learned
-policy's default; the first observation renders both); the floating gripper for comparison.
+policy's default; the first observation renders both); the floating gripper for comparison; the
+Panda's two cameras with the wrist camera supersampled 2x (``--wrist-supersample 2``: a second
+renderer and GL context per environment).
 
     python benchmarks/bench_env_memory.py [--n N]
 """
@@ -35,10 +37,11 @@ def rss_mb():
         if line.startswith("VmRSS:"):
             return int(line.split()[1]) / 1024
 
-embodiment, visual, cameras, tasks = json.loads(sys.argv[1])
+embodiment, visual, cameras, tasks, k = json.loads(sys.argv[1])
 envs, rss = [], []
 for t in tasks:
-    env = BlockTaskEnv(t, embodiment=embodiment, cameras=tuple(cameras), image_size=(224, 224), visual=visual)
+    env = BlockTaskEnv(t, embodiment=embodiment, cameras=tuple(cameras), image_size=(224, 224), visual=visual,
+                       wrist_supersample=k)
     env.reset(seed=0)
     envs.append(env)
     rss.append(rss_mb())
@@ -46,9 +49,10 @@ print(json.dumps(rss))
 """
 
 
-def case(embodiment: str, visual: str, cameras: tuple[str, ...]) -> list[float]:
+def case(embodiment: str, visual: str, cameras: tuple[str, ...], wrist_supersample: int = 1) -> list[float]:
     tasks = [str(ROOT / "library" / t) for t in TASKS[:N + 1]]
-    out = subprocess.run([sys.executable, "-c", CHILD, json.dumps([embodiment, visual, cameras, tasks])],
+    out = subprocess.run([sys.executable, "-c", CHILD, json.dumps([embodiment, visual, cameras, tasks,
+                                                                   wrist_supersample])],
                          capture_output=True, text=True, check=True, cwd=ROOT)
     return json.loads(out.stdout.strip().splitlines()[-1])
 
@@ -60,4 +64,8 @@ for embodiment, visual in (("panda", "decimated"), ("panda", "stock"), ("floatin
         label = f"{embodiment}, {visual}, {'2 cameras 224x224' if cameras else 'state-only'}"
         rows.append((f"{label}: per environment (RSS growth over {N} more / {N})", (rss[-1] - rss[0]) / N, "MB", ""))
         rows.append((f"{label}: process with the first environment", rss[0], "MB", ""))
+rss = case("panda", "decimated", ("agentview", "wrist"), wrist_supersample=2)
+label = "panda, decimated, 2 cameras 224x224, wrist 2x"
+rows.append((f"{label}: per environment (RSS growth over {N} more / {N})", (rss[-1] - rss[0]) / N, "MB", ""))
+rows.append((f"{label}: process with the first environment", rss[0], "MB", ""))
 report("env_memory", rows)

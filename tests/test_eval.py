@@ -449,6 +449,7 @@ def test_a_process_keeps_few_environments_open():
     from rpg.eval import runner
 
     assert (runner.env_cache_size(True), runner.env_cache_size(False)) == (2, 12)
+    assert runner.env_cache_size(True, wrist_supersampled=True) == 1  # a second renderer per environment
     cfg = runner.EvalConfig("x", "noop", (0,), embodiment=FLOAT, cameras=("wrist",), image_size=(32, 32))
     names = ["stack_blocks", "three_block_stack", "align_blocks"]
     envs = [runner._env_for(runner.Unit(runner.EvalTask(str(ROOT / "library" / n), n), "canonical", 0, cfg, "."))[0]
@@ -469,29 +470,31 @@ from rpg.env import BlockTaskEnv
 def rss_mb():
     return next(int(x.split()[1]) for x in open("/proc/self/status") if x.startswith("VmRSS:")) / 1024
 
-cameras, tasks = json.loads(sys.argv[1])
+cameras, tasks, k = json.loads(sys.argv[1])
 envs, rss = [], []
 for t in tasks:
-    envs.append(BlockTaskEnv(t, embodiment="panda", cameras=tuple(cameras), image_size=(224, 224)))
+    envs.append(BlockTaskEnv(t, embodiment="panda", cameras=tuple(cameras), image_size=(224, 224), wrist_supersample=k))
     envs[-1].reset(seed=0)
     rss.append(rss_mb())
 print(json.dumps(rss))
 """
 
 
-@pytest.mark.parametrize("cameras", [(), ("agentview", "wrist")], ids=["state-only", "cameras"])
-def test_an_open_panda_environment_costs_at_most_the_documented_memory(cameras):
+@pytest.mark.parametrize(("key", "cameras", "k"), [("state-only", (), 1), ("cameras", ("agentview", "wrist"), 1),
+                                               ("cameras, wrist 2x", ("agentview", "wrist"), 2)])
+def test_an_open_panda_environment_costs_at_most_the_documented_memory(key, cameras, k):
     """``ENV_MEMORY_MB`` (which sets how many environments a process keeps open) bounds what one
-    more open and reset Panda environment adds to a process's resident memory."""
+    more open and reset Panda environment adds to a process's resident memory (with the wrist
+    camera supersampled: a second renderer and GL context)."""
     from rpg.eval.runner import ENV_MEMORY_MB
 
     tasks = [str(LIBRARY / n) for n in ("stack_blocks", "three_block_stack", "align_blocks", "arrange_blocks")]
-    r = subprocess.run([sys.executable, "-c", _RSS_CHILD, json.dumps([list(cameras), tasks])], capture_output=True,
+    r = subprocess.run([sys.executable, "-c", _RSS_CHILD, json.dumps([list(cameras), tasks, k])], capture_output=True,
                        text=True, timeout=300, env=dict(os.environ, MUJOCO_GL="egl"))
     assert r.returncode == 0, r.stderr[-2000:]
     rss = json.loads(r.stdout.strip().splitlines()[-1])
     per_env = (rss[-1] - rss[0]) / (len(rss) - 1)
-    assert 0 < per_env <= ENV_MEMORY_MB["cameras" if cameras else "state-only"], rss
+    assert 0 < per_env <= ENV_MEMORY_MB[key], rss
 
 
 def test_eval_refuses_to_score_a_goal_its_instruction_does_not_state(tmp_path):

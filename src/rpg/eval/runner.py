@@ -378,16 +378,17 @@ class Unit:
     run_dir: str
 
 
-ENV_MEMORY_MB = {"state-only": 20, "cameras": 90}
+ENV_MEMORY_MB = {"state-only": 20, "cameras": 90, "cameras, wrist 2x": 170}
 """Resident memory one more open Panda environment adds to a process, MB, by whether it renders
-(two cameras, or the agentview video): the measured figure rounded up by ~20%, which
+(two cameras, or the agentview video) and whether its wrist camera is supersampled (a second
+renderer and GL context): the measured figure rounded up by ~20%, which
 ``tests/test_eval.py`` asserts as a bound.  Measured with ``benchmarks/bench_env_memory.py``
 (the growth of ``VmRSS`` while a process opens and resets 6 more environments of different
 library tasks, divided by 6) on the 2-core CPU with Mesa's llvmpipe: with the decimated meshes
 (the default, what ``rpg eval`` uses) 16.6 MB state-only and 73.2 MB with two 224x224 cameras
 (each environment has its own renderer and GL context, ~56 MB); with ``visual="stock"`` 112
 and 198 MB (the old "~115 MB a Panda scene" was the stock meshes); the floating gripper 9.8
-and 65.1 MB."""
+and 65.1 MB; the Panda's two cameras with ``wrist_supersample=2`` 139.5 MB."""
 
 ENV_BUDGET_MB = 256
 """Memory a process may keep in open environments, MB (what the old cap of two stock-mesh
@@ -395,12 +396,14 @@ Panda scenes held, 2 x ~115 MB, rounded up); :func:`env_cache_size` divides it b
 :data:`ENV_MEMORY_MB`."""
 
 
-def env_cache_size(renders: bool) -> int:
+def env_cache_size(renders: bool, wrist_supersampled: bool = False) -> int:
     """Environments a process keeps open (least recently used closed first):
-    :data:`ENV_BUDGET_MB` // :data:`ENV_MEMORY_MB` (12 state-only, 2 rendering), at least 1.
+    :data:`ENV_BUDGET_MB` // :data:`ENV_MEMORY_MB` (12 state-only, 2 rendering, 1 rendering a
+    supersampled wrist camera), at least 1.
     A process that ran every task of a library used to keep all of them (6 GB per worker for
     58 stock-mesh Panda tasks)."""
-    return max(1, ENV_BUDGET_MB // ENV_MEMORY_MB["cameras" if renders else "state-only"])
+    key = ("cameras, wrist 2x" if wrist_supersampled else "cameras") if renders else "state-only"
+    return max(1, ENV_BUDGET_MB // ENV_MEMORY_MB[key])
 
 
 _ENVS: OrderedDict = OrderedDict()
@@ -415,7 +418,8 @@ def _env_for(unit: Unit):
     key = (unit.task.path, unit.variant)
     if key not in _ENVS:
         cfg = unit.config
-        while len(_ENVS) >= env_cache_size(bool(cfg.camera_list()) or cfg.video):
+        cams = cfg.camera_list()
+        while len(_ENVS) >= env_cache_size(bool(cams) or cfg.video, "wrist" in cams and cfg.wrist_supersample > 1):
             _ENVS.popitem(last=False)[1][0].close()
         size = VIDEO_SIZE if cfg.video and not cfg.camera_list() else tuple(cfg.image_size)
         env = BlockTaskEnv(unit.task.path, embodiment=cfg.embodiment, control_mode=cfg.control_mode,
