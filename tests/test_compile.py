@@ -312,7 +312,7 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     ("Stack the red blocks on the red patch and the blue blocks on the blue patch",
      "2 towers of 2 cubes, each on the patch of its color"),
     ("Put the green block to the left of the red block and behind the blue block", "green left of red; green behind blue"),
-    ("Build a tower with the blue block in the middle", "tower bottom to top: red, blue, green"),
+    ("Build a tower with the blue block in the middle", "a tower of red, blue, green in any order, with blue second from the bottom"),
     ("Make a line of digits 1 through 4 from front to back", "up faces read 1, 2, 3, 4 front to back"),
     ("Line up four letter cubes", "4 letter cubes in one straight line"),
     ("Put two blocks on each patch", "2 cubes on each of the 2 goal patches (red_1, red_2, red_3, red_4, any cube on any patch)"),

@@ -1368,7 +1368,9 @@ class InLayers(Predicate):
         for n, k in zip(self.objects, self.levels, strict=True):
             if k >= 0:
                 by_level.setdefault(k, []).append(n)
-        return "; ".join(f"layer {k}: {', '.join(v)}" for k, v in sorted(by_level.items()))
+        ordinal = ("at the bottom", "second from the bottom", "third from the bottom", "fourth from the bottom")
+        return "; ".join(f"{', '.join(v)} " + (ordinal[k] if k < len(ordinal) else f"in layer {k + 1} from the bottom")
+                         for k, v in sorted(by_level.items()))
 
 
 # ---------------------------------------------------------------------------

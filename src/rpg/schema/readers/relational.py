@@ -293,7 +293,7 @@ def _refuse_crossed_relations(f: Features, rels: list) -> None:
     """
     import networkx as nx
 
-    directional = [q for q in rels if hasattr(type(q), "axis") and hasattr(type(q), "sign")]
+    directional = [q for q in rels if hasattr(type(q), "axis") and hasattr(type(q), "sign") and q.a != q.b]
     by_pair: dict[frozenset, set] = {}
     graphs: dict[int, nx.DiGraph] = {}
     for q in directional:

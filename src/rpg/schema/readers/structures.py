@@ -136,6 +136,7 @@ def fill_layers(f: Features, b: Builder, sizes: list[int], roles: dict[str, tupl
     names = [b.cube(c if c is not None else next(fill)) for layer in slots for c in layer]
     levels = [k if c is not None else -1 for k, layer in enumerate(slots) for c in layer]
     b.preds.append(InLayers(tuple(names), tuple(levels)))
+    b.summary.append(b.preds[-1].describe())
     return names
 
 
@@ -212,6 +213,7 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
     if not roles and material == "colors" and order and order[0] == "color" and len(set(f.color_list())) != 1:
         # "a pyramid of 3-2-1 with rainbow colored ordering": the colours layer by layer, bottom first
         b.preds.append(InLayers(tuple(names), tuple(k for k, size in enumerate(sizes) for _ in range(size))))
+        b.summary.append(b.preds[-1].describe())
     b.preds.insert(0, Pyramid(tuple(names), base=base, dims=dims))
     b.primitives += ["stack"]
     shape = f"{base}x{base}" if dims == 3 else str(base)
@@ -633,7 +635,8 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
     b.place(stack_layout(names, C.WORKSPACE_CENTER))
     if levels is not None:
         b.preds += [UnorderedStack(tuple(names)), InLayers(tuple(names), tuple(levels))]
-        b.summary.append("a tower of " + ", ".join(names) + "; " + InLayers(tuple(names), tuple(levels)).describe())
+        b.summary.append("a tower of " + ", ".join(names) + " in any order, with "
+                         + InLayers(tuple(names), tuple(levels)).describe())
         b.primitives += ["stack"]
         return True
     b.preds.append(Stack(tuple(names)))
@@ -660,6 +663,7 @@ def recognize_tower_clauses(f: Features, b: Builder) -> bool:
         b.primitives += ["stack"]
         b.summary.append(f"a wall {width} cubes wide and {layers} high, layers bottom to top: "
                          + ", ".join(layer[0] for layer in plan.wall))
+        b.summary.append(b.preds[-1].describe())
         return True
     spots: list[tuple[float, float] | None] = []
     unplaced = sum(r is None for r in plan.regions)
