@@ -180,7 +180,7 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
         size = 2 if f.has("small", "little", "tiny", "mini") else 4 if f.has("big", "large", "tall", "huge") else 3
         named = len(set(f.color_list()))  # "the red, green and blue blocks in a triangle": 3 cubes
         from_named = next((k for k in range(2, 8) if k * (k + 1) // 2 == named), None) if named >= 3 else None
-        middle = any(m_.group(0).find("middle") >= 0 for m_ in LAYER_ROLE_RE.finditer(f.text))
+        middle = any("middle" in m_.group(0) for m_ in LAYER_ROLE_RE.finditer(f.text))
         base, dims = (int(m.group(1)) if m else from_total or (3 if middle else from_named) or size), 2
     if base < 2:
         raise ParseError("a pyramid needs a base of at least 2")
@@ -512,7 +512,7 @@ SEQ_RELATION_RE = re.compile(r"\b(?:on top of|onto|on|atop|above|over|under|unde
 SEQ_HINT_RE = re.compile(r"\b(?:on|at|as|in)\s+(?:the\s+)?(?:very\s+)?(bottom|base|top|middle|center|centre)\b(?!\s+of)")
 
 
-def lexicon_order_words(text: str) -> bool:
+def may_order_cubes(text: str) -> bool:
     """Whether ``text`` has a word that may order a tower's cubes (:data:`ORDER_WORDS`,
     :data:`CUBE_ORDER_RE` of :mod:`rpg.schema.lexicon`)."""
     return bool(ORDER_WORDS.search(text) or CUBE_ORDER_RE.search(text))
@@ -625,7 +625,7 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
             if len(items) % 2 == 0 or len(middle) > 1:
                 raise ParseError(f"a tower of {len(items)} cubes has no one middle cube; say its place from the bottom")
             unhinted = SEQ_HINT_RE.sub(" ", f.text)
-            if not (lexicon_order_words(unhinted) or len(rest) < 2):
+            if not (may_order_cubes(unhinted) or len(rest) < 2):
                 place = {"bottom": 0, "middle": len(items) // 2, "top": len(items) - 1}
                 levels = [-1] * len(items)
                 for h, group in (("bottom", bottom), ("middle", middle), ("top", top)):
