@@ -351,9 +351,17 @@ def test_sorting_says_no_line_unless_a_line_or_an_order_is_said():
     ("make a wall of red bricks, two rows of four", "wall(red,red,red,red,red,red,red,red)"),
     # the colours listed are the line's, in the rainbow's own order, read from either end
     ("Line up the red, orange, yellow, green blocks in rainbow order", "line[sequence](red,orange,yellow,green)"),
-    ("line up five blocks from left to right in rainbow order",
-     "line[left_to_right](red,orange,yellow,green,blue); sorted_by(red,orange,yellow,green,blue;descending=False,"
-     "direction=left_to_right,face=up,key=color,strict=True)"),
+    ("line up five blocks from left to right in rainbow order", "line[left_to_right](red,orange,yellow,green,blue)"),
+    # cubes listed with their nouns keep the order said ("first, then")
+    ("put the blue block first, then the red block, then the green block, in a row from left to right",
+     "line[left_to_right](blue,red,green)"),
+    ("put the red block, the blue block and the green block in a row from left to right",
+     "line[left_to_right](red,blue,green)"),
+    ("build a column of red, blue and green from front to back", "line[front_to_back](red,blue,green)"),
+    # a layer named without a verb keeps its colour to that layer, not the whole pyramid
+    ("make a pyramid of six cubes with the three on the bottom being red", "pyramid(red,red,red|?,?|?)"),
+    ("make a pyramid of six cubes with the bottom row red", "pyramid(red,red,red|?,?|?)"),
+    ("build a pyramid of six blocks, the bottom three red and the top yellow", "pyramid(red,red,red|?,?|yellow)"),
     # "reverse order" does not flip the ends the text names
     ("Stack the blocks in reverse order: blue at the bottom, then green, then red on top", "stack(blue,green,red)"),
 ])
@@ -400,3 +408,33 @@ def test_to_its_left_is_a_relation_to_the_cube_named_before():
     left of it", which with "behind" no placement satisfies."""
     with pytest.raises(ParseError, match="contradict"):
         parse("place the blue block behind the red one and also to its left")
+
+
+def test_a_column_along_the_table_is_a_line_on_that_axis():
+    goal = parse("make a column of three green cubes going from front to back").goal
+    assert goal.name == "in_line" and goal.axis == "x"
+    assert parse("make a column of three green cubes").goal.name != "in_line"
+
+
+def test_a_line_sorted_by_colour_names_no_order_and_is_refused():
+    """"sorted by color" in a line was dropped silently: the line was free."""
+    for text in ("line up the blocks from left to right sorted by color", "put the blocks in a row ordered by colour"):
+        with pytest.raises(ParseError, match="sorted by colour"):
+            parse(text)
+
+
+def test_the_other_block_needs_a_cube_set_apart_before_it():
+    from rpg.schema.builtin import Inexpressible
+
+    with pytest.raises(Inexpressible, match="'the other block'") as exc:
+        parse("put the other block on the green patch")
+    assert exc.value.kind == "reference"
+    assert len(parse("put one red block on the green patch and the other one on the blue patch").goal.children()) == 2
+
+
+def test_a_colour_counted_alone_bounds_its_cubes():
+    """"the top blue block on two red ones" compiled a pyramid of five red cubes; a colour named
+    only in counts may have no more cubes than they add up to, unless a word multiplies them."""
+    with pytest.raises(ParseError, match="names 2 red cubes but the task read has 5"):
+        parse("make a pyramid with the top blue block on two red ones")
+    assert len(parse("Place a column of three orange blocks in all four corners.").assets) == 12

@@ -264,6 +264,29 @@ def _single_color_bounds(text: str) -> dict[str, int]:
     return {c: n for c, n in sorted(single.items()) if colors[c] == n}
 
 
+MULTIPLIED_RE = re.compile(r"\b(?:each|every|per|both|times|respectively|corners|sides|patches)\b|\ball\s+(?:the\s+)?\d+\b|\b(?:\d+|several)\s+(?:[a-z\-]+\s+){0,2}?"
+                           r"(?:towers|stacks|columns|piles|rows|lines|pillars|groups|sets|layers|levels|copies)\b")
+"""Words that multiply a count ("2 red blocks on each corner", "two towers of 3 red blocks", "a
+column of three in all four corners"):
+with any of them a count is not the number of cubes of its colour."""
+
+
+def _counted_color_bounds(text: str) -> dict[str, int]:
+    """Colours that normalised ``text`` names only inside counts of that colour alone ("two red
+    ones", "3 green blocks"), mapped to the counts' sum: the task may hold no more cubes of that
+    colour.  Empty when a word multiplies a count (:data:`MULTIPLIED_RE`)."""
+    if MULTIPLIED_RE.search(text):
+        return {}
+    colors = Counter(c for _, c in color_mentions(text))
+    counted: Counter = Counter()
+    mentioned: Counter = Counter()
+    for m in mentions(text, COLOR_RE, canon_color):
+        if m.kind == "count" and m.color and "," not in m.color:
+            counted[m.color] += m.count
+            mentioned[m.color] += len(re.findall(rf"\b(?:{COLOR_RE})\b", m.words))
+    return {c: n for c, n in sorted(counted.items()) if mentioned[c] == colors[c]}
+
+
 def account_named(text: str, schema: TaskSchema) -> list[dict]:
     """Colours, then counts, patches, places and relations of normalised ``text`` against
     ``schema`` (:func:`rpg.schema.accounting.account`).
@@ -283,6 +306,9 @@ def account_named(text: str, schema: TaskSchema) -> list[dict]:
         if cubes[color] > n:
             raise UnaccountedMention(f"it names {'one' if n == 1 else n} {color} cube{'s' if n > 1 else ''} but the task "
                                      f"read has {cubes[color]}")
+    for color, n in _counted_color_bounds(text).items():
+        if cubes[color] > n:
+            raise UnaccountedMention(f"it names {n} {color} cube{'s' if n > 1 else ''} but the task read has {cubes[color]}")
     named = dict.fromkeys(c for _, c in color_mentions(text))
     record = [{"mention": c, "kind": "color",
                "consumed_by": ", ".join(a.name for a in schema.assets if a.color == c)} for c in named]

@@ -146,6 +146,14 @@ REFERENCE_PRONOUN_RE = re.compile(
 must refer to something the instruction named before it (:data:`ANTECEDENT_RE`); without one it
 refers to what the speaker sees or did earlier, which a task cannot know."""
 
+OTHER_RE = re.compile(r"\bthe\s+other\s+(?:[a-z]+\s+)?(?:blocks?|cubes?|ones?|bricks?|boxes|box)\b")
+""""The other block": it picks a cube by contrast with one the instruction set apart before it
+("put one red block on the patch and the other one next to it", :data:`OTHER_SET_RE`); without
+that it means a cube the speaker sees, which a task cannot know."""
+
+OTHER_SET_RE = re.compile(r"\b(?:one|two|both|each|either)\b")
+"""What sets a cube apart before "the other" (:data:`OTHER_RE`)."""
+
 FRAMING_RE = re.compile(
     r"^(?:(?:a|an|the)\s+(?:simple\s+|basic\s+|easy\s+)?(?:task|challenge|problem)\s+(?:where|in\s+which)\s+)?"
     r"(?:the\s+(?:robot|agent)\s+(?:has|needs|must)\s+to\s+|(?:the|your|its)\s+(?:objective|goal|task|job|aim)\s+is\s+to\s+)")
@@ -335,12 +343,19 @@ LAYER_ROLE_RE = re.compile(
     r"|\b" + _LAYER_ROLE.format(i=1) + r"(?:\s+(?:layer|level|row|tier|block|cube|one))?\s+"
     r"(?:is|are|of|made\s+of|with|in)\s+(?:the\s+|a\s+|an\s+)?(?P<c1>" + "|".join(COLORS) + r")\b"
     r"(?:\s+(?P<noun1>blocks?|cubes?|ones?))?"
-    r"|\b(?:a|an|the)\s+(?P<c2>" + "|".join(COLORS) + r")\s+" + _LAYER_ROLE.format(i=2) + r"\b(?!\s+of\b)")
+    r"|\b(?:a|an|the)\s+(?P<c2>" + "|".join(COLORS) + r")\s+" + _LAYER_ROLE.format(i=2) + r"\b(?!\s+of\b)"
+    r"|\b(?:the\s+)?(?:(?P<n3>\d+)\s+)?" + _LAYER_ROLE.format(i=3) + r"(?:\s+(?P<m3>\d+))?"
+    r"(?:\s+(?P<noun3>layer|level|row|tier|blocks|cubes|ones))?\s+(?:being\s+|should\s+be\s+|must\s+be\s+)?(?:all\s+)?"
+    r"(?P<c3>" + _COLOR_LIST + r")\b(?!\s+(?:(?:blocks?|cubes?|ones?)\s+)?(?:on|onto|at|in|to|of|is|are)\b)"
+    r"(?<=\w)(?=\s*(?:[,.;]|$|\s+(?:and|with|while)\b))"
+    r"|\bthe\s+(?P<n4>\d+)\s+(?:(?:blocks|cubes|ones)\s+)?(?:on|at|in)\s+the\s+" + _LAYER_ROLE.format(i=4)
+    + r"(?:\s+(?:layer|level|row|tier))?\s+(?:being|are|is|should\s+be|must\s+be)\s+(?:all\s+)?(?P<c4>" + _COLOR_LIST + r")\b")
 """A colour given a layer of a pyramid or wall ("yellow on top", "the red blocks at the
-base", "the top is blue", "a base of red blocks", "a blue base", "a green middle layer"):
-``c0``/``c1``/``c2`` the colour, ``role0``/``role1``/``role2`` the layer word (top, peak,
+base", "the top is blue", "a base of red blocks", "a blue base", "a green middle layer", "the
+bottom row red", "the bottom three red", "the three on the bottom being red"):
+``c0``..``c4`` the colour, ``role0``..``role4`` the layer word (top, peak,
 apex, tip: the highest layer; bottom, base, foundation: the lowest; middle: the one between
-in a structure three layers high); ``n0`` a count or article before the colour and
+in a structure three layers high); ``n0``, ``n3``, ``n4`` a count or article before the colour and
 ``noun0``/``noun1`` the noun after it ("a red block": one cube; "red blocks", "a red base":
 the whole layer)."""
 

@@ -15,7 +15,8 @@ letter/digit cube by its label, a goal patch as ``patch:<colour>``).  Examples::
 A pyramid or wall shows its layers only where the goal judges which cubes stand in which
 layer (:class:`~rpg.domain.predicates.InLayers`); otherwise its cubes are one sorted list,
 since any of them may stand anywhere.  An expected atom whose objects are all wildcards
-(``pyramid(?,?|?)``) matches either form with as many objects.
+(``pyramid(?,?|?)``) or all one colour (``wall(red,red|red,red)``) matches either form with as
+many objects.
     start:stack(red,blue); on_table(blue) a stack rho_0 starts, and its top cube taken off
 
 The development corpus (``tests/corpus/instructions.yaml``) states each instruction's
@@ -162,9 +163,11 @@ def _pattern(atom: str) -> re.Pattern:
 
 
 def _wild(atom: str) -> bool:
-    """Whether a layered atom's objects are all ``?`` (any layer holds any cube)."""
+    """Whether a layered atom's objects are all alike: all ``?``, or all one colour (which cube
+    stands in which layer then changes nothing, so layers need not be judged)."""
     head, _, body = atom.partition("(")
-    return "|" in body and head in ("pyramid", "wall") and all(t.strip() == "?" for t in re.split(r"[,|]", body.rstrip(")")))
+    tokens = {t.strip() for t in re.split(r"[,|]", body.rstrip(")"))}
+    return "|" in body and head in ("pyramid", "wall") and len(tokens) == 1 and "*" not in next(iter(tokens))
 
 
 def matches(expected: str, actual: list[str]) -> bool:

@@ -113,13 +113,19 @@ def _refuse_inexpressible(text: str, original: str) -> None:
 def _refuse_unresolved_pronoun(text: str, original: str) -> None:
     """Raise :class:`Inexpressible` (``reference``) when a pronoun standing for cubes ("stack
     them", "unstack that.") has nothing named before it to refer to
-    (:data:`lexicon.REFERENCE_PRONOUN_RE`, :data:`lexicon.ANTECEDENT_RE`)."""
+    (:data:`lexicon.REFERENCE_PRONOUN_RE`, :data:`lexicon.ANTECEDENT_RE`), or "the other block"
+    has no cube set apart before it (:data:`lexicon.OTHER_RE`)."""
     for m in lexicon.REFERENCE_PRONOUN_RE.finditer(text):
         if not lexicon.ANTECEDENT_RE.search(text[:m.start()]):
             word = m.group(0)
             raise Inexpressible("reference", [word], "refers to something the instruction has not named (a cube the "
                                 "speaker sees, or one from an earlier turn): rpg's cubes are known only by colour "
                                 "and label; name them (e.g. \"stack the red and blue blocks\")", original)
+    for m in lexicon.OTHER_RE.finditer(text):
+        if not lexicon.OTHER_SET_RE.search(text[:m.start()]):
+            raise Inexpressible("reference", [m.group(0)], "picks a cube by contrast with one the instruction has not "
+                                "set apart (a cube the speaker sees, or one from an earlier turn): name it by colour "
+                                "or label (e.g. \"put the red block on the green patch\")", original)
 
 
 def _unknown_word_class(text: str, unknown: list[str]) -> tuple[str, str, str] | None:
@@ -253,6 +259,8 @@ def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
     for w, r in fixed.items():
         text = re.sub(rf"\b{re.escape(w)}\b", r, text)
     text = re.sub(r"\bvertical (?:column|stack)\b|\bpillar\b", "tower", text)
+    text = re.sub(r"\bcolumn(s?)\b(?=.*\b(?:front\s+to\s+back|back\s+to\s+front|left\s+to\s+right|right\s+to\s+left)\b)",
+                  r"line\1", text)  # "a column of three cubes going from front to back" lies along the table
     text = re.sub(r"\b(a|one|single|the same)\s+column\b", r"\1 tower", text)  # "in a column"; "2 columns" stay grids
     text = re.sub(r"\b(?:goal|target)\s+(?:area|zone|region|spot|location|position|point|pad|mat|marker)(s?)\b", r"goal patch\1", text)
     text = re.sub(rf"\b({COLOR_RE})\s+(?:pad|mat|marker|zone|area|region)(s?)\b", r"\1 patch\2", text)

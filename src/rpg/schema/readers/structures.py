@@ -80,14 +80,14 @@ def layer_roles(f: Features, levels: int) -> dict[str, tuple[int, int | None]]:
     """
     out: dict[str, tuple[int, int | None]] = {}
     for m in LAYER_ROLE_RE.finditer(f.text):
-        i = next(k for k in range(3) if m.group(f"c{k}"))
+        i = next(k for k in range(5) if m.group(f"c{k}"))
         role = LAYER_WORDS[m.group(f"role{i}")]
         if role == "middle" and levels != 3:
             raise ParseError(f"'{m.group(0)}': a structure {levels} layers high has no one middle layer; "
                              "say which layer (counted from the bottom)")
         k = {"bottom": 0, "middle": 1, "top": levels - 1}[role]
         colors = [canon_color(c) for c in re.findall(COLOR_RE, m.group(f"c{i}"))]
-        count = m.groupdict().get("n0")
+        count = m.groupdict().get(f"n{i}") or m.groupdict().get(f"m{i}")
         noun = m.groupdict().get(f"noun{i}") or ""
         n = int(count) if count and count.isdigit() and len(colors) == 1 else \
             1 if noun in ("block", "cube", "one") else None
@@ -406,7 +406,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
     if not is_line or f.has("stack", "stacks", "tower", "towers", "on top"):
         return False
     direction = direction_of(f)
-    listed = re.search(rf"\b((?:{COLOR_RE})(?:\s*(?:,\s*and|,|and|then)\s+(?:the\s+)?(?:{COLOR_RE})\b)+)", f.text)
+    item = rf"(?:{COLOR_RE})(?:\s+(?:blocks?|cubes?))?(?:\s+first)?"  # "the blue block first, then the red block"
+    listed = re.search(rf"\b((?:{item})(?:\s*(?:,\s*and|,|and|then)\s+(?:then\s+)?(?:the\s+)?(?:{item})\b)+)", f.text)
     if not explicit and not order and listed:
         seq = re.findall(rf"\b(?:{COLOR_RE})\b", listed.group(1))
         if re.search(r"\b(?:left to right|right to left|front to back|back to front)\b", f.text) or \
@@ -469,13 +470,17 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
                 labels = list(reversed(labels))
             names = [b.semantic(lab) for lab in labels]
         b.place(directed_line(names, direction))
-        b.preds += [InLine(tuple(names), axis=line_axis(direction), order=direction),
-                    SortedBy(tuple(names), key=key, direction=direction, descending=desc)]
+        b.preds.append(InLine(tuple(names), axis=line_axis(direction), order=direction))
+        if key != "color":  # a directed line of named hues already fixes each colour's place
+            b.preds.append(SortedBy(tuple(names), key=key, direction=direction, descending=desc))
         what = {"label": "alphabetical", "number": "increasing numerical", "color": "color-gradient"}[key]
         b.summary.append(f"{n} cubes in a line in {'reverse ' if desc else ''}{what} order {direction.replace('_', ' ')}")
     else:
         if not f.has("align", "aligned", "line", "lines", "row", "horizontally", "horizontal"):
             return False  # "sort the blocks", "arrange them by colour": no line said, and no order to read it by
+        if re.search(r"\b(?:sort|sorted|order|ordered|arrange|arranged|group|grouped)\s+(?:\w+\s+){0,2}?by\s+(?:colou?rs?|hues?)\b", f.text):
+            raise ParseError("a line \"sorted by colour\" names no order of the colours; say it (\"red, green, blue "
+                             "from left to right\", \"in rainbow order\") or use --model")
         distinct = list(dict.fromkeys(f.color_list()))
         n = stated_count(f, default=len(distinct) if len(distinct) >= 2 else 4)
         material = material_of(f)
