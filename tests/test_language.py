@@ -438,3 +438,55 @@ def test_a_colour_counted_alone_bounds_its_cubes():
     with pytest.raises(ParseError, match="names 2 red cubes but the task read has 5"):
         parse("make a pyramid with the top blue block on two red ones")
     assert len(parse("Place a column of three orange blocks in all four corners.").assets) == 12
+
+
+@pytest.mark.parametrize("text, want", [
+    ("put two stacks of two blocks in the front left and front right corners",
+     "stack(?,?)@front_left; stack(?,?)@front_right"),
+    ("build a stack of two blocks in the front left corner and another in the front right corner",
+     "stack(?,?)@front_left; stack(?,?)@front_right"),
+    ("put a stack of two blocks in each of the front left and front right corners",
+     "stack(?,?)@front_left; stack(?,?)@front_right"),
+    ("put a red tower of two blocks in the back left corner and another in the front right corner",
+     "stack(red,red)@back_left; stack(red,red)@front_right"),
+    ("build a tower of three blocks in the back left corner and a tower of two blocks in the front right corner",
+     "stack(?,?,?)@back_left; stack(?,?)@front_right"),
+])
+def test_structures_each_in_their_own_place(text, want):
+    """Each part is read on its own and its base put in its place; the parts' open colours
+    differ. These dropped a place, or put one cube in two corners."""
+    from rpg.schema.meaning import matches
+
+    schema = parse(text)
+    assert matches(want, meaning(schema)), meaning(schema)
+    assert len({a.color for a in schema.assets}) == len(schema.assets) or "red" in text
+
+
+def test_one_stack_in_two_places_is_refused_not_read_as_one_cube_in_both():
+    with pytest.raises(ParseError, match="which do not meet"):
+        parse("put a stack of two blocks in the front left and front right corners")
+    with pytest.raises(ParseError, match="which do not meet"):
+        parse("put the red block in the front left corner and in the back right corner")
+
+
+@pytest.mark.parametrize("text, want", [
+    ("I want two stacks: white on black, and black on white", "stack(black,white); stack(white,black)"),
+    ("make two stacks: red on blue and green on yellow", "stack(blue,red); stack(yellow,green)"),
+    ("build 3 towers: red on blue, green on yellow, and a stack of two white blocks",
+     "stack(blue,red); stack(yellow,green); stack(white,white)"),
+])
+def test_towers_counted_then_each_described(text, want):
+    """"two stacks: white on black, and black on white" gave two stacks white under black."""
+    from rpg.schema.meaning import matches
+
+    assert matches(want, meaning(parse(text))), meaning(parse(text))
+    goal = parse(text).goal
+    assert all(p.name == "stack" for p in goal.children())  # each order said is kept
+
+
+def test_a_sort_spelled_out_after_a_colon_is_its_details():
+    """The heading's "the patches" invented a gray patch with a red and a blue cube on it."""
+    schema = parse("Sort the cubes onto the patches by colour: red cubes on the red patch, blue cubes on the blue patch")
+    assert sorted(a.color for a in schema.assets if a.kind == "goal_patch") == ["blue", "red"]
+    colors = {a.name: a.color for a in schema.assets}
+    assert all(colors[p.a] == colors[p.patch] for p in schema.goal.children())

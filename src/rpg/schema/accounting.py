@@ -264,7 +264,7 @@ def _single_color_bounds(text: str) -> dict[str, int]:
     return {c: n for c, n in sorted(single.items()) if colors[c] == n}
 
 
-MULTIPLIED_RE = re.compile(r"\b(?:each|every|per|both|times|respectively|corners|sides|patches)\b|\ball\s+(?:the\s+)?\d+\b|\b(?:\d+|several)\s+(?:[a-z\-]+\s+){0,2}?"
+MULTIPLIED_RE = re.compile(r"\b(?:each|every|per|both|times|respectively|corners|sides|patches|another|second|more)\b|\ball\s+(?:the\s+)?\d+\b|\b(?:\d+|several)\s+(?:[a-z\-]+\s+){0,2}?"
                            r"(?:towers|stacks|columns|piles|rows|lines|pillars|groups|sets|layers|levels|copies)\b")
 """Words that multiply a count ("2 red blocks on each corner", "two towers of 3 red blocks", "a
 column of three in all four corners"):

@@ -380,6 +380,14 @@ REGION_GROUP_RE = re.compile(
 group of :data:`constants.REGION_GROUPS`, any of whose members will do."""
 
 
+CORNER_PAIR_RE = re.compile(
+    r"\b(?P<prep>in|at|on|to|into|onto)\s+(?P<each>(?:each|both|either)\s+of\s+)?the\s+(?P<a>(?:front|back|rear|far)\s+(?:left|right))"
+    r"(?:\s+corner)?\s+and\s+(?:the\s+)?(?P<b>(?:front|back|rear|far)\s+(?:left|right))\s+corners\b"
+    r"(?:\s+of\s+the\s+(?:table|workspace))?")
+"""Two corners said with one noun ("in the front left and front right corners"): marked as
+two places, each with its own preposition, for :func:`mark_regions`."""
+
+
 def region_name(front_back: str | None, left_right: str | None) -> str | None:
     """The region (:data:`constants.REGION_NAMES`) that a front/back word and a
     left/right/centre word name together ("back", "left" -> ``back_left``; "front",
@@ -408,5 +416,7 @@ def mark_regions(text: str) -> str:
             raise ParseError(f"'{m.group(0).strip()}' names no one corner: a corner of the table is front or back and "
                              "left or right (e.g. 'the back right corner')")
         return f" @region_{region_name(fb, word)} "
+    text = CORNER_PAIR_RE.sub(lambda m: f"{m.group('prep')} the {m.group('a')} corner and {m.group('prep')} the "
+                              f"{m.group('b')} corner", text)  # "each of": the reader reads it in the text
     text = REGION_RE.sub(sub, text)
     return " ".join(REGION_GROUP_RE.sub(lambda m: f" @region_{m.group('g')} ", text).split())

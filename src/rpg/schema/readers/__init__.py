@@ -8,7 +8,7 @@ them in their registered order and keeps the first reading that accounts for eve
 
 Modules: :mod:`.registry` (the registry), :mod:`.common` (what several readers read the same
 way), and one module per family: :mod:`.places`, :mod:`.structures`, :mod:`.temporal`,
-:mod:`.patches`, :mod:`.labels`, :mod:`.relational`.
+:mod:`.patches`, :mod:`.labels`, :mod:`.relational`, :mod:`.compose` (parts read apart, laid out together).
 """
 
 from __future__ import annotations
@@ -23,12 +23,14 @@ from rpg.domain.predicates import (
     Stack,
     StackOnPatch,
     UnorderedStack,
+    describe_region,
+    region_boxes,
 )
 from rpg.schema import citations, lexicon
 from rpg.schema.accounting import unaccounted
 from rpg.schema.builder import Builder, make_paraphrases
 from rpg.schema.model import TaskSchema
-from rpg.schema.readers import labels, patches, places, registry, relational, structures, temporal  # noqa: F401 (they register)
+from rpg.schema.readers import compose, labels, patches, places, registry, relational, structures, temporal  # noqa: F401 (they register)
 from rpg.schema.reading import Features, ParseError, color_mentions, features, task_slug
 
 
@@ -134,6 +136,24 @@ def free_listed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
     return _with_parts(schema, goal, parts, out)
 
 
+def disjoint_regions(f: Features, schema: TaskSchema) -> ParseError | None:
+    """A reading that puts one cube in two places of the table that do not meet (red in the
+    front left corner and in the front right corner): no placement satisfies it."""
+    seen: dict[str, list[str]] = {}
+    for p in schema.goal_predicate().walk():
+        if isinstance(p, InRegion):
+            seen.setdefault(p.a, []).append(p.region)
+    for cube, regions in sorted(seen.items()):
+        for i, r in enumerate(regions):
+            for q in regions[i + 1:]:
+                if not any(x0 < x1_ and x0_ < x1 and y0 < y1_ and y0_ < y1
+                           for (x0, x1), (y0, y1) in region_boxes(r) for (x0_, x1_), (y0_, y1_) in region_boxes(q)):
+                    return ParseError(f"read \"{f.original[:80]}\" as a task that puts {cube} in {describe_region(r)} "
+                                      f"and in {describe_region(q)}, which do not meet; say one place per cube "
+                                      "(one sentence per structure helps), or use --model")
+    return None
+
+
 def parse(instruction: str) -> TaskSchema:
     """Read an instruction into a TaskSchema.
 
@@ -156,7 +176,7 @@ def parse(instruction: str) -> TaskSchema:
                                                     "Rephrase (e.g. \"two red blocks\"), or use --model")
                 continue
             schema.repairs = b.repairs
-            gap = unaccounted(f, schema)
+            gap = disjoint_regions(f, schema) or unaccounted(f, schema)
             if gap is None:
                 # reverse accounting: a part of G nobody stated is dropped where a weaker goal
                 # exists (a tower's named end kept, the rest free); the rest is recorded as

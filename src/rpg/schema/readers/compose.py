@@ -1,0 +1,191 @@
+"""Readers that compose: an instruction made of parts, each a task of its own read by the whole
+front end, laid out together (structures each in its own place; towers listed after a count).
+
+Each part is read by :func:`rpg.schema.readers.parse` (its own clause), so nothing a part says
+is dropped or merged; the parts' cubes are renamed apart, and a colour a part leaves open is
+given one no other part uses.
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+
+from rpg.domain.predicates import AnchoredStack, InRegion, Stack, UnorderedStack
+from rpg.domain.state import Pose
+from rpg.errors import BadInput
+from rpg.schema import readers
+from rpg.schema.builder import DEFAULT_COLORS, Builder
+from rpg.schema.model import TaskSchema
+from rpg.schema.readers.common import region_spots
+from rpg.schema.readers.registry import reader
+from rpg.schema.reading import Features, color_mentions, mark_regions
+from rpg.schema.structures import STRUCTURE_RE
+
+STACK_KINDS = (Stack, UnorderedStack, AnchoredStack)
+"""The goal predicates of a part that stands wholly over one spot."""
+
+ANOTHER_RE = re.compile(r"(?:(?:put|place|build|make|stack|set)\s+)?(?:another(?:\s+one)?|a\s+second(?:\s+one)?|1\s+more)")
+"""A part that repeats the structure said before it ("... in the front left corner and another
+in the front right corner")."""
+
+_JOINER_RE = re.compile(r"^(?:[,.;]\s*)?(?:and\s+)?(?:then\s+)?|\s*(?:[,.;]\s*)?(?:and\s*)?$")
+_TRAILING_PREP_RE = re.compile(r"\s+(?:in|at|on)(?:\s+each\s+of)?(?:\s+both)?(?:\s+the)?$")
+
+
+def _read_parts(texts: list[str]) -> list[TaskSchema] | None:
+    """Each text read by the whole front end; None when one cannot be read."""
+    try:
+        return [readers.parse(t) for t in texts]
+    except BadInput:
+        return None
+
+
+def _single_spot(head: TaskSchema) -> bool:
+    """Whether a part is cubes over one spot (a stack, one cube) with no place, patch or
+    starting structure of its own."""
+    cubes = [a for a in head.assets if a.kind != "goal_patch"]
+    xy = np.array([head.goal_layout[a.name].position[:2] for a in cubes])
+    return (len(cubes) == len(head.assets) and np.ptp(xy, axis=0).max() < 1e-6 and not head.initial_state.structures
+            and not any(isinstance(p, InRegion) for p in head.goal_predicate().walk()))
+
+
+def _merge(f: Features, b: Builder, texts: list[str], heads: list[TaskSchema],
+           spots: list[tuple[float, float]], regions: list[str | None]) -> None:
+    """Add each part's cubes and goal to ``b``: renamed apart, a colour the part left open and
+    another part uses replaced by an unused one, its cubes over ``spots[i]`` and its base in
+    ``regions[i]`` (when given)."""
+    named = {c for _, c in color_mentions(f.text)}
+    used: set[str] = set()
+    for text, head, spot, region in zip(texts, heads, spots, regions, strict=True):
+        cubes = [a for a in head.assets if a.kind != "goal_patch"]
+        own = {c for _, c in color_mentions(text)}
+        mapping: dict[str, str] = {}
+        recolored: dict[str, str] = {}
+        for a in cubes:
+            if a.kind == "colored_cube":
+                color = a.color
+                if color not in own and color in used:  # a colour the part left open, taken by another part
+                    taken = used | named | set(recolored.values()) | {c.color for c in cubes}
+                    color = recolored.get(a.color) or next(c for c in DEFAULT_COLORS if c not in taken)
+                    recolored[a.color] = color
+                mapping[a.name] = b.cube(color)
+            else:
+                mapping[a.name] = b.semantic(a.label, dict(a.faces))
+        used |= {a.color for a in b.assets if a.color}
+        base = min(cubes, key=lambda a: head.goal_layout[a.name].position[2]).name
+        b.place({mapping[a.name]: Pose((*spot, head.goal_layout[a.name].position[2])) for a in cubes})
+        b.orientations.update({mapping[n]: q for n, q in head.initial_state.orientations.items()})
+        goal = [p.rename(mapping) for p in head.goal_predicate().conjuncts()]
+        goal += [InRegion(mapping[base], region)] if region else []
+        b.preds += goal
+        b.summary += [p.describe() for p in goal]
+        b.primitives += list(head.primitives)
+        if head.reasoning != "spatial":
+            b.reasoning = head.reasoning
+
+
+def _placed_parts(text: str, each: bool) -> list[tuple[str, str]] | None:
+    """(part, region) pairs of marked ``text`` made of parts that each take one ``@region_``
+    token, all before or all after their part ("X @A and Y @B", "@A X. @B Y"), a part
+    saying "another" standing for the part before it, and so does one left empty where the
+    count says so ("2 stacks of 2 blocks @A and @B") or ``each`` ("a stack in each of @A and
+    @B"); None when ``text`` is not of that form."""
+    pieces = re.split(r"\s*@region_([a-z_]+)\s*", text)
+    regions, texts = pieces[1::2], [_JOINER_RE.sub("", t).strip() for t in pieces[0::2]]
+    if len(regions) < 2:
+        return None
+    if not texts[0]:
+        heads = texts[1:]  # each place before its part
+    elif not texts[-1]:
+        heads = texts[:-1]  # each place after its part
+    else:
+        return None
+    plural = re.match(rf"^(.*?)\b{len(regions)}\s+((?:[a-z\-]+\s+)?(?:tower|stack|column|pile|pillar))s\b(.*)$", heads[0])
+    if plural and not any(heads[1:]):  # "2 stacks of 2 blocks in the front left and front right corners"
+        return [(f"{plural.group(1)}a {plural.group(2)}{plural.group(3)}".strip(), r) for r in regions]
+    parts: list[tuple[str, str]] = []
+    for head, region in zip(heads, regions, strict=True):
+        if not head or ANOTHER_RE.fullmatch(head):
+            if not parts or not (head or each):
+                return None
+            head = parts[-1][0]
+        parts.append((_TRAILING_PREP_RE.sub("", head), region))
+    return parts
+
+
+@reader(order=185)
+def recognize_structures_in_places(f: Features, b: Builder) -> bool:
+    """Structures each put in its own place on the table: "build a stack of two blocks in the
+    front left corner and another in the front right corner", "put two stacks of two blocks in
+    the front left and front right corners", "in the NW corner stack the red block on the
+    blue one; in the SE corner stack the green block on the yellow one".  Each part stands
+    wholly over one spot (a stack or one cube: how a wider structure's footprint sits in a
+    place is not said) and its base goes in its region."""
+    parts = _placed_parts(mark_regions(f.text), each=bool(re.search(r"\b(?:each|both)\b", f.text)))
+    heads = _read_parts([t for t, _ in parts]) if parts else None
+    if heads is None or not all(_single_spot(h) for h in heads):
+        return False
+    regions = [r for _, r in parts]
+    _merge(f, b, [t for t, _ in parts], heads, [region_spots(r, 1)[0] for r in regions], regions)
+    return True
+
+
+LISTED_TOWERS_RE = re.compile(r"\b(?P<k>\d+)\s+(?P<noun>tower|stack|column|pile|pillar)s\s*[:;\-]\s*(?P<body>.+?)\s*[.!]?$")
+"""Towers counted, then each said after a colon: "two stacks: white on black, and black on white"."""
+
+
+@reader(order=95)
+def recognize_listed_towers(f: Features, b: Builder) -> bool:
+    """Towers counted, then each described in turn ("I want two stacks: white on black, and
+    black on white"; "3 towers: red on blue, green on yellow and a stack of two white
+    blocks").  Each description is read as a tower of its own, side by side; it must say a
+    stack and no place."""
+    m = LISTED_TOWERS_RE.search(f.text)
+    if m is None:
+        return False
+    k = int(m.group("k"))
+    texts = [t.strip() for t in re.split(r"\s*[;,]\s*(?:and\s+)?|\s+and\s+(?=(?:then\s+)?(?:a|an|the|1|one)\b)", m.group("body"))]
+    if len(texts) != k:
+        texts = [t.strip() for t in re.split(r"\s*[;,]\s*(?:and\s+)?|\s+and\s+", m.group("body"))]
+    texts = [re.sub(r"^(?:(?:1|the first|the second|the other|the last)\s+(?:of|with|is)\s+)", "", t) for t in texts]
+    if len(texts) != k or not all(texts):
+        return False
+    heads = _read_parts([t if re.search(STRUCTURE_RE, t) else f"a {m.group('noun')}: {t}" for t in texts])
+    if heads is None or not all(_single_spot(h) and all(isinstance(p, STACK_KINDS) for p in h.goal_predicate().conjuncts())
+                                and len(h.goal_predicate().conjuncts()) == 1 for h in heads):
+        return False
+    _merge(f, b, texts, heads, b.unit_centers(k, 0.16), [None] * k)
+    return True
+
+
+SORTED_HEADER_RE = re.compile(r"^(?P<head>[^:]*\b(?:sort|sorted|arrange|organize|group|put|place|move)\b[^:]*\bby\s+colou?rs?)"
+                              r"\s*:\s*(?P<body>.+)$")
+"""A sorting said, then spelled out after a colon: "sort the cubes onto the patches by colour:
+red cubes on the red patch, blue cubes on the blue patch"."""
+
+
+@reader(order=5)
+def recognize_spelled_out_sort(f: Features, b: Builder) -> bool:
+    """A sort by colour whose details follow a colon: the details are the task, read by the
+    whole front end, and must sort by colour (each cube on the patch of its own colour);
+    the heading adds nothing more (its "the patches" are the ones the details name)."""
+    m = SORTED_HEADER_RE.match(f.text)
+    heads = _read_parts([m.group("body")]) if m else None
+    if heads is None:
+        return False
+    head = heads[0]
+    colors = {a.name: a.color for a in head.assets}
+    onto = [p for p in head.goal_predicate().conjuncts() if p.name == "on_patch"]
+    if not onto or len(onto) != len(head.goal_predicate().conjuncts()) or any(
+            colors[p.a] != colors[p.patch] for p in onto):
+        return False
+    b.assets += [a.model_copy() for a in head.assets]
+    b._names.update(a.name for a in head.assets)
+    b.place({n: p.pose() for n, p in head.goal_layout.items()})
+    b.preds += head.goal_predicate().conjuncts()
+    b.summary.append(head.goal_summary)
+    b.primitives += list(head.primitives)
+    b.min_separation = head.initial_state.min_separation
+    return True
