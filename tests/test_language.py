@@ -490,3 +490,23 @@ def test_a_sort_spelled_out_after_a_colon_is_its_details():
     assert sorted(a.color for a in schema.assets if a.kind == "goal_patch") == ["blue", "red"]
     colors = {a.name: a.color for a in schema.assets}
     assert all(colors[p.a] == colors[p.patch] for p in schema.goal.children())
+
+
+def test_a_matching_patch_is_the_cube_s_own_colour_and_adds_no_cube():
+    """"put the red block on its matching patch" added a blue cube and patch nobody named;
+    "stack the red blocks on the patch of the same color" put them on a gray patch."""
+    schema = parse("put the red block on its matching patch")
+    assert sorted(a.name for a in schema.assets) == ["red", "red_patch"]
+    with pytest.raises(ParseError, match="patch of its own colour"):
+        parse("stack the red blocks on the patch of the same color")
+
+
+@pytest.mark.parametrize("text, word", [("stack the blocks in this arrangement", "this arrangement"),
+                                        ("put the red block on the blue block like in the picture", "picture"),
+                                        ("put the red block on the blue block as shown", "as shown")])
+def test_what_is_shown_or_seen_is_refused_as_a_reference(text, word):
+    from rpg.schema.builtin import Inexpressible
+
+    with pytest.raises(Inexpressible, match=f"'{word}' refers to something shown or seen") as exc:
+        parse(text)
+    assert exc.value.kind == "reference"

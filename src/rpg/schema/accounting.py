@@ -65,6 +65,12 @@ UNDO_RE = re.compile(r"\bunstack(?:s|ed|ing)?\b|\bremov(?:e|es|ed|ing)\b|\boff\b
 """Words that take a cube off where it starts (project): only a task whose rho_0 starts a
 stack (``initial_state.structures``) can mean them."""
 
+MATCHING_RE = re.compile(r"\b(?:matching|corresponding|respective|(?:its|their)\s+(?:own\s+)?colou?r(?:ed)?|same\s+colou?r)"
+                         r"(?:\s+\w+){0,3}?\s+(?:goal\s+|target\s+)?(?:patch|patches|target|targets)\b"
+                         r"|\b(?:patch|patches)\s+(?:of|with|in)\s+(?:the\s+)?(?:same|its|their|matching)\s+(?:own\s+)?colou?rs?\b")
+"""A patch picked by the cube's own colour ("on its matching patch", "the patch of the same
+colour"): every cube the task puts on a patch must be on one of its colour."""
+
 SUPERLATIVE_RE = re.compile(
     r"\b(?:make|build|create|form|construct|assemble|erect|stack|pile)\s+(?:up\s+)?(?:me\s+|us\s+)?(?:the|a)\s+"
     r"(?:tallest|highest|biggest|largest|longest|widest|greatest)\b"
@@ -152,6 +158,8 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
         out.append(Mention(m.group(0), "structure", predicates=STRUCTURE_KINDS[structure_of_word(m.group(1))].carriers))
     for m in UNDO_RE.finditer(text):
         out.append(Mention(m.group(0), "undo"))
+    for m in MATCHING_RE.finditer(text):
+        out.append(Mention(m.group(0), "matching"))
     for m in SUPERLATIVE_RE.finditer(text):
         out.append(Mention(m.group(0), "superlative"))
     each = re.search(r"\b(?:each|every|all)\s+(?:of\s+the\s+)?(?:(\d+)\s+)?corners?\b", text)
@@ -221,6 +229,15 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                 raise UnaccountedMention(f"'{m.words}' takes a cube off a stack and the task read starts "
                                          "with none (say which cube starts on which)")
             record.append({"mention": m.words, "kind": "undo", "consumed_by": "initial_state.structures"})
+        elif m.kind == "matching":
+            color_of = {a.name: a.color for a in schema.assets}
+            on = [(n, p.patch) for p in goal for n in ([p.a] if p.name == "on_patch" else
+                                                        list(p.among) if p.name == "stack_on_patch" else [])]
+            wrong = sorted({f"{n} on {patch}" for n, patch in on if color_of.get(n) != color_of.get(patch)})
+            if not on or wrong:
+                raise UnaccountedMention(f"'{m.words}' puts each cube on the patch of its own colour but the task read "
+                                         f"{'has ' + ', '.join(wrong) if wrong else 'puts no cube on a patch'}")
+            record.append({"mention": m.words, "kind": "matching", "consumed_by": ", ".join(f"{n} on {p}" for n, p in on)})
         elif m.kind == "superlative":
             if not any(n.kind == "count" for n in named):
                 raise UnaccountedMention(f"'{m.words}' asks for as many cubes as there are and no count "

@@ -26,7 +26,7 @@ def recognize_matching_patches(f: Features, b: Builder) -> bool:
     if not re.search(r"\b(?:same colou?r|matching|its colou?r|their colou?r|respective|own colou?r|corresponding)\b", f.text):
         return False
     colors = list(dict.fromkeys(f.color_list()))
-    n = max(stated_count(f, default=None) or 0, len(colors), 2)
+    n = max(stated_count(f, default=None) or 0, len(colors)) or 2  # the colours named are the cubes, no more
     colors = colors_for(n, f, prefer=colors)
     centers = b.unit_centers(len(colors), 0.14)
     for color, (x, y) in zip(colors, centers, strict=True):
