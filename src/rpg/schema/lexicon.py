@@ -104,11 +104,16 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"(?:on|at|in)\s+the\s+(?:far\s+)?(?:left|right|front|back|middle|center|centre)\b"
                   r"(?!\s+(?:of|side|corner|edge|half|part|end|area|region)\b)"
                   r"(?=.*\b(?:on|onto|to|into|next|beside|behind|under|near)\b)"
-                  r"|\b(?:as\s+)?(?:shown|displayed|depicted|pictured|illustrated|demonstrated)\b"
                   r"|\b(?:put|place|move|set|bring|return)\s+(?:(?!the\s+back\b)[a-z]+\s+){0,3}back\b(?!\s+(?:of|left|right|side|edge|corner|row|half|part|end)\b)",
      "picks a cube by its place in an order nobody defined or by what happened earlier: rpg's cubes are known "
      "only by colour and label; name the cube (e.g. \"the red block\"), or say the structure it is part of "
      "(\"the top block of the tower\")"),
+    ("reference", r"\b(?:as\s+)?(?:shown|displayed|depicted|pictured|illustrated|demonstrated)\b"
+                  r"|\b(?:this|that|these|those|the\s+same|the\s+following|the\s+given)\s+(?:arrangement|configuration|layout"
+                  r"|pattern|formation|scene|setup|set-up|picture|image|way|design)s?\b"
+                  r"|\b(?:picture|image|photo|photograph|diagram|figure|screen|video|illustration|drawing|sketch|screenshot)s?\b",
+     "refers to something shown or seen (a picture, the scene, an arrangement) that a task cannot see: say the "
+     "arrangement in words (e.g. \"stack the red block on the blue block\")"),
     ("object", r"\b(?:balls?|spheres?|cylinders?|cones?|cups?|mugs?|bottles?|plates?|bowls?|pens?|toys?|books?"
                r"|drawers?|shelf|shelves|baskets?|bins?|trays?|doors?|triangles?\s+(?:block|piece)s?|rods?)\b",
      "names an object the domain does not have: it has only 5 cm cubes (coloured, optionally labelled) "
