@@ -510,3 +510,16 @@ def test_what_is_shown_or_seen_is_refused_as_a_reference(text, word):
     with pytest.raises(Inexpressible, match=f"'{word}' refers to something shown or seen") as exc:
         parse(text)
     assert exc.value.kind == "reference"
+
+
+@pytest.mark.parametrize("text, want", [
+    ("use the gripper to put the red block on the blue block", "stack(blue,red)"),
+    ("Use the left arm to pick up the red block and place it in the center of the table", "in_region(red,center)"),
+    ("put the red block on the left with the right arm", "in_region(red,left)"),
+    ("A collaborative task where two robot arms need to work together to stack two cubes.", "stack(?,?)"),
+])
+def test_which_arm_or_hand_moves_the_cubes_says_nothing_of_the_goal(text, want):
+    """Refused over 'arm', 'gripper' or 'hand' before; the effector's side is not a place."""
+    from rpg.schema.meaning import matches
+
+    assert matches(want, meaning(parse(text))), meaning(parse(text))

@@ -160,10 +160,21 @@ OTHER_SET_RE = re.compile(r"\b(?:one|two|both|each|either)\b")
 """What sets a cube apart before "the other" (:data:`OTHER_RE`)."""
 
 FRAMING_RE = re.compile(
-    r"^(?:(?:a|an|the)\s+(?:simple\s+|basic\s+|easy\s+)?(?:task|challenge|problem)\s+(?:where|in\s+which)\s+)?"
-    r"(?:the\s+(?:robot|agent)\s+(?:has|needs|must)\s+to\s+|(?:the|your|its)\s+(?:objective|goal|task|job|aim)\s+is\s+to\s+)")
+    r"^(?:(?:a|an|the)\s+(?:simple\s+|basic\s+|easy\s+|collaborative\s+|bimanual\s+|dual[- ]arm\s+)?(?:task|challenge|problem)"
+    r"\s+(?:where|in\s+which)\s+)?"
+    r"(?:the\s+(?:robot|agent)\s+(?:has|needs|must)\s+to\s+|(?:the|your|its)\s+(?:objective|goal|task|job|aim)\s+is\s+to\s+"
+    r"|(?:two|both|the|a)\s+(?:robot(?:ic)?\s+)?(?:arms?|robots)\s+(?:need|needs|must|should|have|has|are)\s+(?:to\s+)?"
+    r"(?:(?:work\s+together|cooperate|collaborate)\s+(?:to\s+)?)?)")
 """Framing before a task's verb that says nothing of the goal ("a simple task where the
 objective is to push a cube onto the target", "the robot has to stack two cubes"): dropped."""
+
+EFFECTOR_RE = re.compile(
+    r"(?:,\s*)?\b(?:(?:by\s+)?using|use|with|by)\s+(?:the\s+|your\s+|its\s+|a\s+|one\s+|both\s+|each\s+|another\s+)?"
+    r"(?:(?:left|right|other|second|first|robot(?:'s|ic)?|two|dual|its|his|her)\s+){0,2}"
+    r"(?:arms?|grippers?|hands?|end[- ]effectors?|claws?|fingers?)\b(?:\s+to\b)?(?:\s*,)?")
+"""Which effector moves the cubes ("use the left arm to", "with the gripper", "using both
+hands"): a task's goal says where cubes end up, whichever arm or hand takes them there, so the
+words are dropped (:func:`rpg.schema.reading.normalize`)."""
 
 NO_GOAL_RE = re.compile(r"\b(?:pick(?:\s+(?:it|them))?\s+up|pick|grab|grasp|take|lift|raise|hold|get|find|locate|point\s+(?:at|to)"
                         r"|look\s+at|reach(?:\s+for)?)\b")

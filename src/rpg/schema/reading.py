@@ -190,6 +190,7 @@ def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
     text = labelled.lower()
     text = re.sub(r"[\u2018\u2019\u201c\u201d`]", "'", text)
     text = text.replace('"', "'")
+    text = lexicon.EFFECTOR_RE.sub(" ", text).strip()
     _refuse_inexpressible(text, original)
     text = lexicon.FRAMING_RE.sub("", text)
     for pattern, full in lexicon.CONTRACTIONS:
