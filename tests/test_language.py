@@ -523,3 +523,28 @@ def test_which_arm_or_hand_moves_the_cubes_says_nothing_of_the_goal(text, want):
     from rpg.schema.meaning import matches
 
     assert matches(want, meaning(parse(text))), meaning(parse(text))
+
+
+@pytest.mark.parametrize("text, want", [
+    ("put the red and green blocks next to the blue block", "next_to(blue,green); next_to(blue,red)"),
+    ("put the red block to the left of the blue and green blocks", "left_of(red,blue); left_of(red,green)"),
+    ("put the red block next to the blue block and the green block", "next_to(blue,red); next_to(green,red)"),
+    ("put the red block between the blue and green blocks", "between(red;blue,green)"),
+])
+def test_a_relation_said_once_of_two_cubes_holds_for_each(text, want):
+    from rpg.schema.meaning import matches
+
+    assert matches(want, meaning(parse(text))), meaning(parse(text))
+
+
+@pytest.mark.parametrize("text, want", [
+    ("place the yellow block in the top left corner", "in_region(yellow,back_left)"),
+    ("put the red block at the bottom right corner", "in_region(red,front_right)"),
+    ("move the blue cube to the far right", "in_region(blue,right)"),
+    ("put the green block near the front edge", "in_region(green,front)"),
+    ("stack the red block on the blue block near the back edge", "stack(blue,red)@back"),
+])
+def test_places_said_as_on_a_map_or_by_an_edge(text, want):
+    from rpg.schema.meaning import matches
+
+    assert matches(want, meaning(parse(text))), meaning(parse(text))

@@ -302,6 +302,26 @@ declared on its predicate class (``phrases``), so a new relation adds its class 
 here."""
 
 
+_PAIRWISE_WORDS = "(?:" + "|".join(PREDICATES[name].phrases for name in PAIRWISE_RELATIONS) + ")"
+_COLOR_WORD = "(?:" + "|".join(COLORS) + ")"
+DISTRIBUTED_RELATIONS: tuple[tuple[re.Pattern, str], ...] = (
+    # "the red and green blocks next to the blue block": each of them
+    (re.compile(rf"\bthe\s+(?P<a>{_COLOR_WORD})\s+and\s+(?:the\s+)?(?P<b>{_COLOR_WORD})\s+(?P<n>block|cube)s\s+"
+                rf"(?P<rel>{_PAIRWISE_WORDS})\s+the\s+(?P<c>{_COLOR_WORD})\s+(?:block|cube)\b"),
+     r"the \g<a> \g<n> \g<rel> the \g<c> \g<n> and the \g<b> \g<n> \g<rel> the \g<c> \g<n>"),
+    # "the red block to the left of the blue and green blocks", "... of the blue block and the green block."
+    (re.compile(rf"\bthe\s+(?P<a>{_COLOR_WORD})\s+(?P<n>block|cube)\s+(?P<rel>{_PAIRWISE_WORDS})\s+the\s+(?P<b>{_COLOR_WORD})"
+                rf"(?:\s+and\s+(?:the\s+)?(?P<c>{_COLOR_WORD})\s+(?:block|cube)s\b"
+                rf"|\s+(?:block|cube)\s+and\s+the\s+(?P<c2>{_COLOR_WORD})\s+(?:block|cube)\s*(?=[.!]?$))"),
+     lambda m: (f"the {m['a']} {m['n']} {m['rel']} the {m['b']} {m['n']} and the {m['a']} {m['n']} {m['rel']} "
+                f"the {m['c'] or m['c2']} {m['n']}")),
+)
+"""A pairwise relation (:data:`PAIRWISE_RELATIONS`) said once of two cubes, written out for
+each: "the red and green blocks next to the blue block" is red next to blue and green next to
+blue; "the red block left of the blue and green blocks" is left of each.  ("between" takes
+the two together, and "on" two cubes is a bridge.)"""
+
+
 EDIT_RELATIONS: tuple[tuple[str, str], ...] = (
     (r"\b(?:to the |on the )?left\b", "left_of"),
     (r"\b(?:to the |on the )?right\b", "right_of"),

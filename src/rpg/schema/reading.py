@@ -270,10 +270,15 @@ def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
     text = re.sub(r"\b(?:pick up|grab|take|lift|get|pick)\s+(the\s+(?:[a-z0-9']+\s+){0,4}?(?:block|cube|box|one))\s+(?:up\s+)?"
                   r"and\s+(?:then\s+)?(place|put|set|stack|move|drop|lay)\s+it\b", r"\2 \1", text)
     text = re.sub(r"\bside by side\b", "next to each other", text)
+    # a map's "top left corner" is the far one (the robot at the bottom edge; lexicon's compass)
+    text = re.sub(r"\b(?:top|upper)\s+(left|right)\s+(corner|edge|side)\b", r"back \1 \2", text)
+    text = re.sub(r"\b(?:bottom|lower)\s+(left|right)\s+(corner|edge|side)\b", r"front \1 \2", text)
     text = re.sub(r"\b(?:(\w+)\s+)?((?:the|a|an)\s+(?:letter|digit|number)\s+'?[a-z0-9]'?)(?=\s|[.,;!]|$)(?!\s+(?:block|cube|box))",
                   lambda m: m.group(0) if m.group(1) in ("with", "showing", "labeled", "labelled", "marked", "bearing")
                   else m.group(0) + " block", text)  # "stack the letter A on the letter B": those are cubes
     text = re.sub(rf"\b({COLOR_RE})\s+one(s?)\b", lambda m: f"{m.group(1)} block{'s' if m.group(2) else ''}", text)
+    for pattern, written_out in lexicon.DISTRIBUTED_RELATIONS:
+        text = pattern.sub(written_out, text)
     for w, n in NUMBER_WORDS.items():
         text = re.sub(rf"\b{w}\b", str(n), text)
     text = re.sub(r"\bgrey\b", "gray", text)
@@ -367,7 +372,7 @@ def explicit_labels(f: Features) -> list[str]:
 
 
 REGION_RE = re.compile(
-    r"\b(?:in|at|on|to|into|onto|toward|towards)\s+the\s+(?:(?P<far>very|far)\s+(?=(?:front|back|rear|left|right)))?"
+    r"\b(?:in|at|on|to|into|onto|toward|towards|near|along|by)\s+the\s+(?:(?P<far>very|far)\s+(?=(?:front|back|rear|left|right)))?"
     r"(?:(?P<fb>front|back|rear)(?:(?:\s*-\s*|\s+)(?P<lr>left|right|middle|center|centre))?"
     r"|(?P<lr2>left|right|middle|center|centre))"
     r"(?P<part>(?:\s*-?\s*(?:hand\s+)?(?:side|corner|half|part|edge|end|area|region))?)"
@@ -407,10 +412,11 @@ def mark_regions(text: str) -> str:
     corner").  A bare side ("on the left") stays: it is relative."""
     def sub(m: re.Match) -> str:
         corner = "corner" in m.group("part")
+        edge = "edge" in m.group("part")  # "near the front edge": a side of the table, not of a cube
         word = m.group("lr") or m.group("lr2")
         bare_center = (word in ("center", "centre", "middle") and m.group(0).split()[0] in ("in", "at")  # "in the center"
                        and not names_a_role(m.string[:m.start()], m.string))
-        if not (m.group("tail") or corner or bare_center):
+        if not (m.group("tail") or corner or edge or bare_center):
             return m.group(0)
         fb = m.group("fb") or ("far" if m.group("far") == "far" and corner else None)  # "the far left corner"
         if corner and not (fb and word in ("left", "right")):  # "the right corner": back right or front right?
