@@ -188,7 +188,6 @@ def test_structure_phrases_keep_their_count_colour_role_and_place(text, expected
 
 @pytest.mark.parametrize("text", [
     "put two black cubes next to each other at the front",
-    "two black cubes side by side near the front edge",
     "make a row of three red blocks on the left",
 ])
 def test_a_place_the_reading_cannot_use_is_refused_not_dropped(text):
@@ -543,6 +542,9 @@ def test_a_relation_said_once_of_two_cubes_holds_for_each(text, want):
     ("move the blue cube to the far right", "in_region(blue,right)"),
     ("put the green block near the front edge", "in_region(green,front)"),
     ("stack the red block on the blue block near the back edge", "stack(blue,red)@back"),
+    # refused before ("the front edge" had no place); each cube of the pair now stands there
+    ("two black cubes side by side near the front edge",
+     "in_region(black,front); in_region(black,front); next_to(black,black)"),
 ])
 def test_places_said_as_on_a_map_or_by_an_edge(text, want):
     from rpg.schema.meaning import matches
