@@ -550,3 +550,19 @@ def test_places_said_as_on_a_map_or_by_an_edge(text, want):
     from rpg.schema.meaning import matches
 
     assert matches(want, meaning(parse(text))), meaning(parse(text))
+
+
+def test_a_tower_reversed_starts_built_and_ends_upside_down():
+    """"Reverse the tower" compiled a fresh tower in any order ("reverse" was dropped)."""
+    schema = parse("Reverse the tower")
+    start = schema.initial_state.structures[0]
+    assert schema.goal.name == "stack" and list(schema.goal.objects) == start[::-1]
+    assert len(parse("invert the stack of 4 blocks").goal.objects) == 4
+    with pytest.raises(ParseError, match="turns over a tower it does not describe"):
+        parse("reverse the red tower")
+
+
+def test_a_role_said_as_a_clause_is_the_listed_cube_s_role():
+    """"where the yellow one is at the top" added a second yellow cube on top."""
+    goal = parse("Build a stack of the red, blue and yellow blocks where the yellow one is at the top").goal
+    assert goal.name == "anchored_stack" and goal.top and len(goal.objects) == 3

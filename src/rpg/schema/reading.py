@@ -305,6 +305,10 @@ STRUCTURE_PHRASES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(rf"\b(?:one|1)\s+({TOWER_NOUNS})\s+of\s+{_GROUP.format(i=1)}\s*,?\s+and\s+(?:one|1|another|the\s+other)"
                 rf"(?:\s+{TOWER_NOUNS})?\s+of\s+{_GROUP.format(i=2)}"),
      r"a \1 of \g<n1> \g<c1> blocks and a \1 of \g<n2> \g<c2> blocks"),
+    # roles said as a clause: "where the yellow one is at the top" is "with the yellow block at the top"
+    (re.compile(rf"\s*,?\s+(?:where|in\s+which|so\s+that|such\s+that)\s+the\s+({COLOR_RE})\s+(block|cube)\s+"
+                rf"(?:is|sits|stands|goes|should\s+be|must\s+be|ends\s+up)\s+(at|on)\s+(?:the\s+)?(top|bottom|base)\b"),
+     r" with the \1 \2 at the \4"),
     # roles: "the top one is white", "the bottom block black"
     (re.compile(rf"(?:\s*,\s*|\s+(?:with|where|and|in\s+which)\s+)the\s+(?:top|topmost|uppermost|highest)"
                 rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|should\s+be\s+|must\s+be\s+)?({COLOR_RE})"

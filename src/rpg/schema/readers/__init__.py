@@ -40,20 +40,21 @@ def free_unnamed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
     of each other" says nothing of which goes on top, so G may not demand an order (a policy
     that stacks them the other way has done what it was told).  The summary and paraphrases
     then say "in any order" too, so no instruction the policy is given states an order G
-    lacks.  A colour named, an order word (:data:`rpg.schema.lexicon.ORDER_WORDS`) or a cube of the stack in
-    another part of the goal keeps the order."""
+    lacks.  A colour named, an order word (:data:`rpg.schema.lexicon.ORDER_WORDS`), a cube of the stack in
+    another part of the goal or in a structure rho_0 starts ("reverse the tower") keeps the order."""
     if lexicon.ORDER_WORDS.search(f.text.lower()):
         return schema
     named = {c for _, c in color_mentions(f.text)}
     colors = {a.name: a.color for a in schema.assets if a.kind == "colored_cube"}
     goal = schema.goal_predicate()
     parts = goal.children() if isinstance(goal, And) else [goal]
+    started = {n for st in schema.initial_state.structures for n in st}  # told apart by where rho_0 puts them
 
     def free(p):
         # a region the stack stands in relates its base only as the whole stack's place: every
         # cube of a stack stands over the same spot, whichever is at the bottom
         elsewhere = {n for q in parts if q is not p and not isinstance(q, InRegion) for n in q.object_names()}
-        if (type(p) is Stack and len(p.objects) > 1 and not set(p.objects) & elsewhere
+        if (type(p) is Stack and len(p.objects) > 1 and not set(p.objects) & (elsewhere | started)
                 and all(n in colors and colors[n] not in named for n in p.objects)):
             return UnorderedStack(objects=p.objects)
         return p

@@ -29,7 +29,7 @@ from rpg.schema.edits import recolor
 from rpg.schema.lexicon import COLOR_RE
 from rpg.schema.readers.common import region_spots
 from rpg.schema.readers.registry import reader
-from rpg.schema.reading import Features, canon_color, color_mentions, region_name
+from rpg.schema.reading import Features, ParseError, canon_color, color_mentions, region_name
 from rpg.schema.structures import STRUCTURE_RE
 
 MOVE_TO_REGION_RE = re.compile(
@@ -155,4 +155,40 @@ def recognize_unstack(f: Features, b: Builder) -> bool:
     b.preds.append(OnTable(high))
     b.primitives += ["place"]
     b.summary += [f"initially {high} is stacked on {low}", f"{high} on the table"]
+    return True
+
+
+REVERSE_TOWER_RE = re.compile(
+    r"(?:reverse|invert|flip|turn)\s+(?:the\s+)?(?:order\s+of\s+(?:the\s+)?)?(?:blocks?\s+in\s+the\s+)?(?P<noun>tower|stack)"
+    r"(?:\s+of\s+(?P<n>\d+)\s+(?:blocks|cubes))?(?:\s+(?:upside\s+down|over|around))?"
+    r"(?:\s*,?\s*(?:so\s+that\s+)?(?:the\s+)?(?:top|bottom)\s+(?:block|cube|one)\s+(?:ends\s+up|is|goes)\s+"
+    r"(?:at\s+the\s+|on\s+)?(?:bottom|top))?\s*[.!]?")
+"""A tower turned upside down as a whole: "reverse the tower", "invert the stack of 3 blocks",
+"flip the tower over"."""
+
+
+@reader(order=22)
+def recognize_reverse_tower(f: Features, b: Builder) -> bool:
+    """A tower rho_0 starts, rebuilt in the reverse order ("reverse the tower", "invert the
+    stack of 4 blocks").  Its cubes are told apart by where they start, so G is the stack of
+    the same cubes top to bottom; how many: the count said, else three
+    (:data:`rpg.schema.builder.DEFAULT_COLORS` gives their colours, none of which the words
+    name)."""
+    if re.match(r"(?:reverse|flip|turn)\s+the\s+(?:[a-z0-9]+\s+){0,4}?(?:tower|stack)\b", f.text) and color_mentions(f.text):
+        raise ParseError(f"\"{f.original[:80]}\" turns over a tower it does not describe: say the order it starts in "
+                         "(\"starting from a stack of red on blue, ...\") and where each cube ends, or use --model")
+    m = REVERSE_TOWER_RE.fullmatch(f.text)
+    if not m or color_mentions(f.text):
+        return False
+    n = int(m.group("n") or 3)
+    if n < 2:
+        return False
+    names = [b.cube(c) for c in DEFAULT_COLORS[:n]]
+    (x0, y0), (x1, y1) = b.unit_centers(2, 0.14)
+    b.place(stack_layout(names[::-1], (x1, y1)))
+    b.structures.append(names)
+    b.preds.append(Stack(tuple(names[::-1])))
+    b.primitives += ["stack"]
+    b.summary += [f"initially a tower bottom to top: {', '.join(names)}",
+                  f"the same tower reversed, bottom to top: {', '.join(names[::-1])}"]
     return True
