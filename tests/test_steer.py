@@ -516,3 +516,83 @@ def test_keep_names_the_structure_the_edit_builds_on():
     circle = apply_ops(tower, interpret("arrange them in a circle").ops)
     with pytest.raises(SteerError, match="keeps a tower, but the version it builds on is a circle"):
         apply_ops(circle, interpret("keep the tower and add a yellow block").ops)
+
+
+# -- issue 30, item 6: edits written by others (additions, counts, colours, labels, places, refusals) --
+
+def _meaning_after(tmp_path, base, edits):
+    """Steer ``base`` through ``edits``; the last version's meaning and intent."""
+    from rpg.schema.meaning import meaning
+
+    fam = compile_instruction(base, tmp_path, name="fam").path
+    r = None
+    for e in edits:
+        r = steer(fam, e)
+        assert r.valid, (e, r.notes)
+    return sorted(meaning(Family(fam).schema(r.version))), r.intent
+
+
+@pytest.mark.parametrize("base,edits,expected,intent", [
+    # an addition keeps the rest: a clause of its own joins a relation task
+    ("Put the cyan block next to the red block", ["also stack a white block on the cyan one"],
+     ["next_to(cyan,red)", "stack(cyan,white)"], "extend"),
+    ("Put the cyan block next to the red block", ["also stack a white block on it"],
+     ["next_to(cyan,red)", "stack(cyan,white)"], "extend"),
+    ("Place the orange block next to the cyan block", ["stack a gray block on the orange one"],
+     ["next_to(cyan,orange)", "stack(orange,gray)"], "extend"),
+    ("Put the red block on the green patch", ["the yellow block too"], ["on_patch(red,yellow,patch:green)"], "extend"),
+    # counts: a number said wins over "shorter"; "just two", "four tall"
+    ("Build a tower of 5 yellow blocks", ["can you make it a bit shorter, like 3 blocks"], ["stack(yellow,yellow,yellow)"], "tweak"),
+    ("stack 3 cyan cubes", ["actually just two please"], ["stack(cyan,cyan)"], "tweak"),
+    ("Build a tower of three blue blocks", ["make it four tall"], ["stack(blue,blue,blue,blue)"], "tweak"),
+    # colours of the whole structure, of both cubes, of a role
+    # (a line of identical cubes in a sequence: no order, meaning() writes the canonical instruction's "sequence")
+    ("Make a row of three purple cubes", ["I'd like the row to be green"], ["line[sequence](green,green,green)"], "tweak"),
+    ("Stack a red block on a blue block", ["both shoud be white"], ["stack(white,white)"], "tweak"),
+    ("Place a blue cube on top of a red cube on the table", ["put a green cube on top of that", "and the bottom one purple"],
+     ["stack(purple,blue,green)"], "tweak"),
+    # labels and words
+    ("Stack the number cubes 1, 2 and 3 with 1 at the bottom", ["swap the 3 for a 7"], ["stack(1,2,7)"], "tweak"),
+    ("Spell the word CAT with letter cubes from left to right", ["change it to DOG"],
+     ["line[left_to_right](D,O,G)", "reads(D,O,G;direction=left_to_right,face=up,text=DOG)"], "modify"),
+    # taking a cube off, moving the structure to a place on the table, layers
+    ("Stack the green block on the red block", ["put a yellow one on top", "take the yellow one off again"], ["stack(red,green)"], "tweak"),
+    ("Stack the white block on the black block", ["Move the stack to the back of the table."], ["stack(black,white)@back"], "modify"),
+    ("Build a pyramid of 6 green blocks", ["make the bottom layer blue"], ["pyramid(blue,blue,blue|green,green|green)"], "tweak"),
+    ("Build a wall of gray blocks, 3 wide and 2 high", ["add a third row on top, in black"],
+     ["wall(gray,gray,gray|gray,gray,gray|black,black,black)"], "extend"),
+    ("Build a pyramid of six yellow blocks", ["make it a wall instead, 3 wide and 2 high"],
+     ["wall(yellow,yellow,yellow,yellow,yellow,yellow)"], "pivot"),
+])
+def test_edits_written_by_others(tmp_path, base, edits, expected, intent):
+    assert _meaning_after(tmp_path, base, edits) == (expected, intent)
+
+
+@pytest.mark.parametrize("base,edit,needle", [
+    # must-refuse edits name their real reason
+    ("Stack the blue block on the red block", "rotate the top block by 45 degrees", "action"),
+    ("Build a tower of four black blocks", "make the blocks twice as big", "size"),
+    ("Build a pyramid of 6 green blocks", "make the blue block on top spin around", "action"),
+    ("Put the red cube next to the blue cube", "but they must not touch each other", "negation"),
+    # an edit that refers to the task but says no change steering reads is refused, not read as a new task
+    ("Put the cyan block next to the red block", "make it nicer", "names no change"),
+    # what cannot be stated exactly is refused naming why
+    ("Build a tower of 4 red blocks", "make two of them white", "does not say which"),
+    ("Stack a red block on a blue block on a green block", "both should be white", "'both' names two cubes"),
+])
+def test_edits_that_cannot_be_applied_exactly_are_refused(tmp_path, base, edit, needle):
+    fam = compile_instruction(base, tmp_path, name="fam").path
+    before = (fam / "family.yaml").read_bytes() if (fam / "family.yaml").exists() else None
+    with pytest.raises(SteerError, match=needle):
+        steer(fam, edit)
+    if before is not None:
+        assert (fam / "family.yaml").read_bytes() == before
+
+
+def test_steering_words_live_in_the_lexicon():
+    from rpg.schema import lexicon
+    from rpg.steer import edits
+
+    assert edits.ANAPHORA_RE is lexicon.EDIT_ANAPHORA_RE and edits.FRESH_RE is lexicon.EDIT_FRESH_RE
+    assert interpret("completely different task now: stack three yellow blocks").fresh
+    assert not interpret("Stack the red block on top of the yellow block").ops

@@ -156,6 +156,21 @@ OTHER_RE = re.compile(r"\bthe\s+other\s+(?:[a-z]+\s+)?(?:blocks?|cubes?|ones?|br
 ("put one red block on the patch and the other one next to it", :data:`OTHER_SET_RE`); without
 that it means a cube the speaker sees, which a task cannot know."""
 
+DEFINITE_STRUCTURE_RE = re.compile(
+    r"\b(?:on|onto|upon|to|into|next\s+to|beside|behind|in\s+front\s+of|near|left\s+of|right\s+of|top\s+of|from|off|of)"
+    r"\s+the\s+(?:existing\s+|current\s+)?(?P<noun>tower|stack|pile|structure|pyramid|wall)\b(?!\s+of\b)")
+"""A structure an instruction places something in relation to ("put the blue block on top of
+the stack"): it must have been described before it (:data:`STRUCTURE_INTRO_RE`); otherwise it
+is one the speaker sees, which a task cannot know."""
+
+STRUCTURE_INTRO_RE = re.compile(
+    r"\b(?:a|an|one|\d+|the)\s+(?:[a-z0-9\-]+\s+){0,3}(?:towers?|stacks?|piles?|structures?|pyramids?|walls?)\s+"
+    r"(?:of|with|from|using|made)\b|\b(?:a|an|one|\d+)\s+(?:[a-z0-9\-]+\s+){0,3}(?:towers?|stacks?|piles?|structures?|pyramids?|walls?)\b"
+    r"|\b(?:stack|build|make|pile|form|create|construct)\b"
+    r"|\b(?:on|onto|atop|on\s+top\s+of)\s+(?:the|a|an)\s+(?:[a-z]+\s+)?(?:block|cube)\b")
+"""What describes a structure before "the stack" refers to it (:data:`DEFINITE_STRUCTURE_RE`):
+one introduced ("a tower of three blocks", "build ...") or a cube put on another."""
+
 OTHER_SET_RE = re.compile(r"\b(?:one|two|both|each|either)\b")
 """What sets a cube apart before "the other" (:data:`OTHER_RE`)."""
 
@@ -306,7 +321,7 @@ _PAIRWISE_WORDS = "(?:" + "|".join(PREDICATES[name].phrases for name in PAIRWISE
 _COLOR_WORD = "(?:" + "|".join(COLORS) + ")"
 DISTRIBUTED_RELATIONS: tuple[tuple[re.Pattern, str], ...] = (
     # "the red and green blocks next to the blue block": each of them
-    (re.compile(rf"\bthe\s+(?P<a>{_COLOR_WORD})\s+and\s+(?:the\s+)?(?P<b>{_COLOR_WORD})\s+(?P<n>block|cube)s\s+"
+    (re.compile(rf"(?<!stack\s)(?<!pile\s)\bthe\s+(?P<a>{_COLOR_WORD})\s+and\s+(?:the\s+)?(?P<b>{_COLOR_WORD})\s+(?P<n>block|cube)s\s+"
                 rf"(?P<rel>{_PAIRWISE_WORDS})\s+the\s+(?P<c>{_COLOR_WORD})\s+(?:block|cube)\b"),
      r"the \g<a> \g<n> \g<rel> the \g<c> \g<n> and the \g<b> \g<n> \g<rel> the \g<c> \g<n>"),
     # "the red block to the left of the blue and green blocks", "... of the blue block and the green block."
@@ -319,7 +334,8 @@ DISTRIBUTED_RELATIONS: tuple[tuple[re.Pattern, str], ...] = (
 """A pairwise relation (:data:`PAIRWISE_RELATIONS`) said once of two cubes, written out for
 each: "the red and green blocks next to the blue block" is red next to blue and green next to
 blue; "the red block left of the blue and green blocks" is left of each.  ("between" takes
-the two together, and "on" two cubes is a bridge.)"""
+the two together, "on" two cubes is a bridge, and "stack the red and blue blocks next to the
+green block" stacks the two, next to it.)"""
 
 
 EDIT_RELATIONS: tuple[tuple[str, str], ...] = (
@@ -424,3 +440,67 @@ ANTECEDENT_RE = re.compile(
     r"|pyramids?|circles?|rings?|grids?|walls?|squares?|structures?)\b")
 """What a pronoun can refer back to: a cube, a structure, a patch, a label or a colour named
 earlier in the instruction."""
+
+
+# ---------------------------------------------------------------------------
+# Steering edits (rpg.steer.edits reads these; the parser does not)
+# ---------------------------------------------------------------------------
+
+EDIT_FRESH_RE = re.compile(
+    r"(?i)\b(?:new task|another task|start over|start fresh|from scratch|unrelated|something (?:completely |totally )?(?:different|else)"
+    r"|(?:a\s+)?(?:completely|totally|entirely)\s+(?:different|new|other)\s+(?:task|one|thing)|different task"
+    r"|forget (?:it|that|this|everything|about it))\b[:,.!]?")
+"""Words that make an edit a new, unrelated task (Fresh): "start over: ...", "completely
+different task now: ..."."""
+
+EDIT_ANAPHORA_RE = re.compile(
+    r"\b(?:it|them|they|its|their|those|these|instead|back|again|now|also|too|more|rather|both|whole)\b"
+    r"|\b(?:add|append|change|replace|swap|substitute|remove|delete|flip|reverse|invert|keep|undo|revert|turn|paint|recolou?r)\b"
+    r"|\bmake (?:the|it|them)\b|\bas well\b"
+    r"|\bthe\s+(?:[a-z]+\s+)?one\b"
+    r"|\b(?:the|that|this|your|my|our)\s+(?:existing|current|same|present|old)\b"
+    r"|\b(?:the|that|this)\s+(?:whole\s+|entire\s+)?(?:" + "|".join(w for k in STRUCTURE_KINDS.values() for w in k.words)
+    + r"|wall|structure|thing)\b(?!\s+(?:of|with)\b)"
+    r"|\b(?:you|we|i)\s+(?:have\s+|just\s+|already\s+)*(?:built|made|stacked|created|constructed|have)\b"
+    r"|\b(?:from|as)\s+before\b|\bso far\b")
+"""Words that make an edit a change to the current task rather than a whole new one: pronouns
+("it", "them", "the orange one"), additions ("also", "too", "as well"), edit verbs and a
+reference to what exists ("the tower you just built", "the existing line")."""
+
+EDIT_ADDITIVE_RE = re.compile(r"\b(?:also|too|as well|add|additionally|another|in addition|plus)\b")
+"""Words that make an edit an addition: what it states joins the task, the rest is kept."""
+
+EDIT_BESIDE_RE = re.compile(r"\b(?:left|right|beside|next to|near|behind|in front|front|back|between|around|by|"
+                            r"side|apart|away|separate\w*)\b")
+"""Words that place a cube added to a structure beside it, not in it ("add a pink block to
+the left of the tower")."""
+
+EDIT_LEADING_RE = re.compile(r"^\s*(?:now|ok(?:ay)?|actually|instead|then|next|and|with|so|please|also|oh|hmm|wait|but"
+                             r"|can you|could you|would you|i'd like(?: to)?|i want(?: to)?|let's|lets)\b[,:]?\s*", re.IGNORECASE)
+"""Words that open an edit and say nothing of the task ("ok now ...", "also ...")."""
+
+EDIT_INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
+    ("action", r"\b(?:\d+|ninety|forty[- ]five)\s*(?:degrees?|deg|°)|\bdegrees?\b|\b(?:spin|spins|spinning|twirl\w*|wobble\w*"
+               r"|wiggle\w*|shake|shaking|juggle\w*|throw\w*|toss\w*|roll(?:s|ing)?|bounce\w*|knock\w*(?:\s+(?:it|them))?\s+over)\b",
+     "is an action the domain does not have: a task's goal says where cubes end up and which face is up, "
+     "not a motion or an angle"),
+    ("size", r"\b(?:twice|thrice|\d+\s+times|half)\s+(?:as\s+)?(?:big|large|small|tall|wide|long|heavy)\b"
+             r"|\b(?:bigger|larger|smaller|tinier|heavier|lighter)\s+(?:blocks?|cubes?|ones?)\b"
+             r"|\b(?:blocks?|cubes?|each\s+(?:block|cube))\s+(?:\w+\s+){0,2}?(?:bigger|larger|smaller|tinier|heavier)\b",
+     "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
+)
+"""Meaning a steering edit may ask for that the domain cannot express, beyond the parser's
+:data:`INEXPRESSIBLE` (whose classes steering checks too, except ``reference``: "again", "undo",
+"the original" name versions of a family): (class, pattern, why)."""
+
+EDIT_COUNT_RE = re.compile(
+    r"\b(?:(?:just|only|like|about|use|using|have|make (?:it|them|the \w+))\s+(?:only\s+|just\s+)?(?P<n>\d+)"
+    r"|(?:to|into|with|be|of)\s+(?:only\s+|just\s+)?(?P<n1>\d+)(?=\s+(?:[a-z]+\s+)?(?:blocks?|cubes?)\b|\s+(?:tall|high|long|wide|deep)\b))"
+    r"(?:\s+(?:[a-z]+\s+)?(?:blocks?|cubes?))?(?:\s+(?P<dim>tall|high|long|wide|deep|levels?|layers?|stor(?:y|ey|ies|eys)))?"
+    r"(?!\s*(?:x\d|more|fewer|less|of\b|colou?rs?|outliers?|different|rows?|columns?))\b"
+    r"|\b(?P<n2>\d+)\s+(?P<dim2>tall|high|long|wide|deep)\b")
+"""A count an edit gives its structure ("just two", "like 3 blocks", "make it four tall", "four
+wide"); ``dim`` (tall, wide...) says which side."""
+
+EDIT_SHOULD_BE_RE = r"(?:should|must|shall|will|would|can|could|has to|have to|needs? to)?\s*(?:be|become|turn|go)"
+"""How an edit says what a cube should be ("the top block should be red", "both should be white")."""

@@ -22,7 +22,23 @@ from dataclasses import asdict, dataclass, field, replace
 from rpg.domain.palette import GRADIENT_ORDER
 from rpg.errors import BadInput
 from rpg.schema.builder import DEFAULT_COLORS
-from rpg.schema.lexicon import COLOR_RE, NUMBER_WORDS, VOCAB
+from rpg.schema.lexicon import (
+    COLOR_RE,
+    EDIT_ADDITIVE_RE,
+    EDIT_ANAPHORA_RE,
+    EDIT_BESIDE_RE,
+    EDIT_COUNT_RE,
+    EDIT_FRESH_RE,
+    EDIT_INEXPRESSIBLE,
+    EDIT_LEADING_RE,
+    EDIT_SHOULD_BE_RE,
+    IGNORABLE,
+    IGNORABLE_MORE,
+    INEXPRESSIBLE,
+    NUMBER_WORDS,
+    VOCAB,
+    is_dictionary_word,
+)
 from rpg.schema.readers.common import item_sequence
 from rpg.schema.reading import canon_color
 from rpg.schema.structures import STRUCTURE_KINDS, STRUCTURE_RE, pyramid_count, structure_of_word
@@ -46,8 +62,8 @@ Fresh keeps nothing."""
 OP_INTENT = {
     "add": "extend", "recolor": "tweak", "remove": "tweak", "count": "tweak", "dims": "tweak",
     "material": "modify", "ordering": "modify", "reverse": "modify", "outliers": "modify",
-    "relabel": "modify", "swap": "modify", "word": "modify", "colors": "tweak", "structure": "pivot",
-    "move": "modify", "pattern": "tweak", "direction": "modify", "keep": "tweak",
+    "relabel": "tweak", "swap": "modify", "word": "modify", "colors": "tweak", "structure": "pivot",
+    "move": "modify", "pattern": "tweak", "direction": "modify", "keep": "tweak", "region": "modify", "add_layer": "extend",
 }
 """The intent each operation implies; an edit's intent is the strongest of its operations."""
 
@@ -101,14 +117,10 @@ class EditPlan:
 # Reading
 # ---------------------------------------------------------------------------
 
-FRESH_RE = re.compile(r"(?i)\b(?:new task|another task|start over|start fresh|from scratch|unrelated|something (?:completely |totally )?(?:different|else)|forget (?:it|that|this|everything|about it))\b[:,.!]?")
-ANAPHORA_RE = re.compile(r"\b(?:it|them|they|its|their|those|these|instead|back|again|now|also|more|rather)\b"
-                         r"|\b(?:add|append|change|replace|swap|substitute|remove|delete|flip|reverse|invert|keep|undo|revert|turn|paint|recolou?r)\b|\bmake (?:the|it|them)\b"
-                         r"|\b(?:the|that|this|your|my|our)\s+(?:existing|current|same|present|old)\b"
-                         r"|\b(?:you|we|i)\s+(?:have\s+|just\s+|already\s+)*(?:built|made|stacked|created|constructed|have)\b"
-                         r"|\b(?:from|as)\s+before\b|\bso far\b")
-"""Words that make an edit a change to the current task rather than a whole new one (among
-them a reference to what exists: "the tower you just built", "the existing line")."""
+FRESH_RE = EDIT_FRESH_RE
+ANAPHORA_RE = EDIT_ANAPHORA_RE
+"""Words that make an edit a change to the current task rather than a whole new one
+(:data:`rpg.schema.lexicon.EDIT_ANAPHORA_RE`)."""
 CUT_RE = re.compile(r"\band (?:then|instead|now|also|add|put|make|change|use|replace|remove|sort|swap|flip|turn)\b"
                     r"|\binstead\b|\bthen\b|\bbut\b|[;,.]")
 MATERIAL_WORDS = (("letters", r"\bletters?\b|\balphabet\b"), ("digits", r"\bnumbers?\b|\bdigits?\b"), ("colors", r"\bcolou?r(?:s|ed)?\b"))
@@ -121,13 +133,51 @@ LABELLED_RE = r"\b(?:letter|digit|number|label)\s+'?[a-z0-9]'?(?![a-z0-9])"
 
 
 def normalize_edit(text: str) -> str:
-    """Lower-case, quotes unified, number words as digits."""
-    t = text.strip().lower()
+    """Lower-case, quotes unified, number words as digits, a bare capital letter or digit after
+    an article read as a labelled cube ("put a D on top", "swap the 3 for a 7"), a word in
+    capitals quoted ("change it to DOG"), and typos of known words corrected ("shoud")."""
+    t = text.strip()
+    t = re.sub(r"\b(a|an|the)\s+([A-Z])\b(?!['\-])", r"\1 letter \2", t)
+    t = re.sub(r"\b(a|an|the)\s+(\d)\b(?![x\d\-])(?!\s*(?:blocks?|cubes?|tall|high|wide|long|deep|layers?|levels?|rows?|"
+               r"more|of|colou?rs?|stor\w*|outliers?|times)\b)", r"\1 digit \2", t)
+    known = VOCAB | IGNORABLE | IGNORABLE_MORE | set(COLOR_RE.split("|"))
+    t = re.sub(r"\b[A-Z]{2,}\b", lambda m: m.group(0) if m.group(0).lower() in known else f"'{m.group(0)}'", t)
+    t = t.lower()
     t = re.sub(r"[\u2018\u2019\u201c\u201d`\"]", "'", t)
+    t = re.sub(r"''+", "'", t)
+    # "one" is a count only where a count stands ("one more block", "just one"); "the orange one" is a cube
+    t = re.sub(r"\bone\b(?=\s+(?:more|fewer|less|blocks?|cubes?|layers?|rows?|levels?|tall|high|wide|long)\b)"
+               r"|\b((?:just|only|like|use|with|to|have) )one\b(?!\s+(?:of|at|on|in)\b)", lambda m: (m.group(1) or "") + "1", t)
     for w, n in NUMBER_WORDS.items():
-        if w not in ("single", "pair", "couple", "both"):
+        if w not in ("single", "pair", "couple", "both", "one"):
             t = re.sub(rf"\b{w}\b", str(n), t)
-    return " ".join(t.split())
+    return " ".join(_corrected(w, known) for w in t.split())
+
+
+def _corrected(word: str, known: set[str]) -> str:
+    """A typo of a known word corrected ("shoud" -> "should"): only a word of 4 letters or
+    more that is no English word, within the parser's own distance."""
+    core = word.strip(".,;:!?'")
+    if len(core) < 4 or not core.isalpha() or core in known or is_dictionary_word(core):
+        return word
+    from rapidfuzz import fuzz, process
+
+    match = process.extractOne(core, sorted(known), scorer=fuzz.ratio, score_cutoff=84)
+    return word.replace(core, match[0]) if match else word
+
+
+def refuse_inexpressible(edit: str, t: str) -> None:
+    """Refuse an edit that asks for what the domain cannot express, naming the words and why:
+    the parser's classes (:data:`rpg.schema.lexicon.INEXPRESSIBLE`; not ``reference``, whose
+    words name versions here) and the edits' own (:data:`~rpg.schema.lexicon.EDIT_INEXPRESSIBLE`).
+
+    Raises:
+        SteerError: the edit says one.
+    """
+    for _cls, pattern, why in (*EDIT_INEXPRESSIBLE, *(c for c in INEXPRESSIBLE if c[0] != "reference")):
+        m = re.search(pattern, t)
+        if m:
+            raise SteerError(f"cannot apply the edit \"{edit.strip()[:80]}\": '{m.group(0).strip()}' {why}")
 
 
 def _materials(text: str) -> list[str]:
@@ -179,14 +229,24 @@ def find_reference(t: str) -> RefCue:
 
 
 def _selector(text: str) -> dict | None:
-    """Which cubes a phrase names: a position, a colour, a label, or all of them."""
+    """Which cubes a phrase names: a position (of a cube, or of a layer: "the bottom layer"),
+    a colour, a label, some of them ("two of them"), both of two, or all of them."""
     text = text.strip()
-    if re.search(r"\b(?:all|every|everything|each)\b|^(?:the\s+)?(?:blocks|cubes|them|it|tower|stack|line|circle|grid|pyramid)\b", text):
+    some = re.search(r"\b(\d+)\s+of\s+(?:them|the\s+(?:[a-z]+\s+)?(?:blocks|cubes|ones))\b", text)
+    if some:
+        return {"some": int(some.group(1))}
+    if re.fullmatch(r"(?:the\s+)?both(?:\s+(?:of\s+)?(?:them|the\s+(?:blocks|cubes)|blocks|cubes))?", text):
+        return {"all": True, "both": True}
+    if re.search(r"\b(?:all|every|everything|each|whole)\b|^(?:the\s+)?(?:blocks|cubes|them|it|they|wall)\b", text) \
+            or re.match(r"(?:the\s+)?" + STRUCTURE_RE, text):
         return {"all": True}
     m = re.search(r"\b(base|bottom|first|lowest|top|last|highest|upper|middle|center|centre|second|third)\b", text)
     if m:
-        return {"position": {"lowest": "bottom", "base": "bottom", "first": "bottom", "highest": "top", "last": "top",
-                             "upper": "top", "centre": "middle", "center": "middle"}.get(m.group(1), m.group(1))}
+        where = {"lowest": "bottom", "base": "bottom", "first": "bottom", "highest": "top", "last": "top",
+                 "upper": "top", "centre": "middle", "center": "middle"}.get(m.group(1), m.group(1))
+        if re.search(r"\b(?:layers?|levels?|rows?|tiers?|storey|story|floor)\b", text):
+            return {"layer": where}
+        return {"position": where}
     items = item_sequence(text)
     if items:
         color, label = items[0]
@@ -202,6 +262,18 @@ def _new_item(text: str) -> dict | None:
     return {"color": color} if color else {"label": label}
 
 
+def _region_of(t: str) -> str | None:
+    """The region of the table an edit moves the whole structure to ("move the stack to the
+    back of the table", "put the whole thing in the back left corner"), or None."""
+    from rpg.steer.relations import _edit_region
+
+    m = re.search(r"\b(?:move|put|place|shift|bring|slide|build|set|push|have)\s+(?:it|them|everything|the\s+whole\s+thing"
+                  r"|(?:the\s+)?(?:whole\s+|entire\s+)?(?:" + STRUCTURE_RE + r"|wall|blocks|cubes))\s+(?P<where>.*)", t)
+    if not m or not re.search(r"\b(?:table|corner|side|edge|half|workspace)\b", m.group("where")):
+        return None
+    return _edit_region(" " + m.group("where") + " ")
+
+
 def read_ops(t: str) -> list[Op]:
     """The operations of a normalised partial edit (empty when it names none)."""
     t = re.sub(r"\b(?:the|that|this)\s+(?:[a-z0-9'-]+\s+){0,5}?(?:version|variant)\b", " ", t)  # names a version, changes nothing
@@ -209,9 +281,10 @@ def read_ops(t: str) -> list[Op]:
     substitution = re.search(r"\b(?:instead of|rather than|in place of)\b(.*?)(?=[,;.]|\buse\b|\bwith\b|\bmake\b|\band\b|$)", t)
     source = _materials(substitution.group(1)) if substitution else []
     mats = [m for m in _materials(t) if m not in source]
-    word = re.search(r"\b(?:change|make|turn|set)\s+(?:the\s+)?word\s+(?:to|into)\s+'?([a-z]{2,})'?|\bspell\s+'?([a-z]{2,})'?\s+instead\b", t)
+    word = re.search(r"\b(?:change|make|turn|set)\s+(?:the\s+)?word\s+(?:to|into)\s+'?([a-z]{2,})'?|\bspell\s+'?([a-z]{2,})'?\s+instead\b"
+                     r"|\b(?:change|make|turn|switch)\s+(?:it|that|this)\s+(?:to|into)\s+(?:spell\s+)?'([a-z]{2,})'", t)
     if word:
-        ops.append(Op("word", {"word": (word.group(1) or word.group(2)).upper()}))
+        ops.append(Op("word", {"word": next(g for g in word.groups() if g).upper()}))
     ncolors = re.search(r"\b(?:use|with|have|make it|in)\s+(\d+)\s+(?:different\s+)?colou?rs\b", t)
     if ncolors:
         ops.append(Op("colors", {"count": int(ncolors.group(1))}))
@@ -219,7 +292,7 @@ def read_ops(t: str) -> list[Op]:
         m = re.search(r"\b(\d+)\s+outliers?\b", t)
         ops.append(Op("outliers", {"per_pile": int(m.group(1)) if m else 1}))
     reverse = re.search(r"\b(?:flip|reverse|invert|mirror|swap)\b[^.;]*\border\b|\bupside down\b|\breverse(?:d)? order\b|"
-                        r"\b(?:flip|reverse|invert)\s+(?:it|them|the\s+(?:tower|stack|line|row|gradient|sequence|colou?rs|word))\b"
+                        r"\b(?:flip|reverse|invert)\s+(?:it|them|the\s+(?:whole\s+|entire\s+)?(?:tower|stack|line|row|gradient|sequence|colou?rs|word))\b"
                         r"|\b(?:spell|write|read|arrange|put|place)\s+(?:it|them|the\s+word)\s+backwards?\b", t)
     if reverse:
         keep = re.search(r"\bkeep(?:ing)?\s+(?:the\s+)?(.+?)\s+(?:on top|at the top|in place|where it is|at the bottom|fixed)\b", t)
@@ -238,8 +311,11 @@ def read_ops(t: str) -> list[Op]:
     if mats and not reverse and not ncolors:
         ops.append(Op("material", {"to": mats[0] if len(mats) == 1 else "mixed", **({"from": source[0]} if source else {})}))
     move = re.search(r"\b(?:put|move|place|bring)\s+the\s+(?P<sel>[a-z0-9' ]+?)\s+(?:one|block|cube)?\s*(?:at|to|on)\s+(?:the\s+)?"
-                     r"(?:very\s+)?(?P<where>top|bottom|base|start|end|beginning|front|back)\b", t)
-    if move and _selector(move.group("sel")):
+                     r"(?:very\s+)?(?P<where>top|bottom|base|start|end|beginning)\b(?!\s+(?:of\s+the\s+table|left|right|corner))", t)
+    region = _region_of(t)
+    if region:
+        ops.append(Op("region", {"region": region}))
+    if move and _selector(move.group("sel")) and not region:
         at = "bottom" if move.group("where") in ("bottom", "base", "start", "beginning") else "top"
         ops.append(Op("move", {"select": _selector(move.group("sel")), "at": at}))
     pattern = re.search(r"\balternat\w*\b", t)
@@ -251,13 +327,21 @@ def read_ops(t: str) -> list[Op]:
     if fewer:
         k = next(g for g in fewer.groups() if g)
         ops.append(Op("count", {"delta": -(int(k) if k.isdigit() else 1)}))
-    add = None if (substitution and mats) or any(o.op in ("move", "pattern") for o in ops) else re.search(
+    layer = re.search(r"\b(?:add|put|build|stack)\s+(?:an?\s+|another\s+|one more\s+|the\s+)?(?:\d+(?:st|nd|rd|th)\s+|second\s+|third\s+"
+                      r"|fourth\s+|new\s+|extra\s+)?(?:row|layer|level|tier)\b(?P<rest>.*)", t)
+    if layer and not re.search(r"\b(?:blocks?|cubes?)\b", layer.group("rest")):
+        rest = layer.group("rest")
+        if re.search(r"\b(?:bottom|under|below|beneath|base|left|right|front|back|beside|next)\b", rest):
+            raise SteerError(f"'{layer.group(0).strip()}': the builtin steering adds a row or layer on top only; "
+                             "state the whole new task")
+        color = re.search(rf"\b({COLOR_RE})\b", rest)
+        ops.append(Op("add_layer", {"color": canon_color(color.group(1)) if color else None}))
+    add = None if layer or (substitution and mats) or any(o.op in ("move", "pattern") for o in ops) else re.search(
         r"\b(?:add|append|include|put)\b(?P<what>.*?)(?P<where>\bon top\b|\b(?:at|to|on) (?:the )?(?:very )?(?:top|bottom|base|end|start|beginning)\b|"
         r"\b(?:under|underneath|beneath|below)\b|\bto the (?:left|right|end|start)\b|\bon the (?:left|right)\b|[;,.]|\band\b|$)", t)
     if add and (item_sequence(add.group("what")) or re.search(r"\b(?:blocks?|cubes?)\b", add.group("what"))):
         what = add.group("what")
-        beside = re.search(r"\b(?:left|right|beside|next to|near|behind|in front|front|back|between|around|by|"
-                           r"side|apart|away|separate\w*)\b", what)
+        beside = EDIT_BESIDE_RE.search(what)
         second = re.search(r"\b(?:an?|another|one|\d+|new|second|other)\s+(?:[a-z]+\s+){0,2}?" + STRUCTURE_RE, what)
         if second:  # "add a pyramid of 3 yellow blocks": a second structure, not cubes of this one
             raise SteerError(f"'{add.group(0).strip()}' adds a second structure (a {second.group(1)}), which the builtin "
@@ -269,7 +353,8 @@ def read_ops(t: str) -> list[Op]:
         at = "bottom" if re.search(r"bottom|base|under|beneath|below|start|beginning|left", where) else "top"
         side = beside or re.search(r"\b(left|right)\b", where)
         ops.append(Op("add", {"items": items * (n if len(items) == 1 else 1) if items else [], "count": n if not items else None, "at": at,
-                              **({"side": side.group(0)} if side else {})}))
+                              **({"side": side.group(0)} if side else {}),
+                              **({"end": where.strip()} if re.search(r"[a-z]", where) and not re.match(r"\s*and\b", where) else {})}))
     kept = re.search(rf"\bkeep(?:ing)?\s+(?:the|this|that|my|your|our)\s+(?:same\s+|existing\s+|current\s+)?{STRUCTURE_RE}", t)
     if kept:  # "keep the tower, and ...": the reference must be that structure
         ops.append(Op("keep", {"structure": structure_of_word(kept.group(1))}))
@@ -282,11 +367,18 @@ def read_ops(t: str) -> list[Op]:
     repl = None if instead or swap else re.search(r"\b(?:replace|substitute|swap)\s+(?:the\s+)?(?P<old>.+?)\s+(?:with|for|by)\s+(?:an?\s+|the\s+)?(?P<new>.+)", t) or \
         re.search(r"\b(?:change|turn|make|paint|recolou?r|colou?r)\s+(?:the\s+)?(?P<old>.+?)\s+(?:to|into)\s+(?:an?\s+|be\s+)?(?P<new>.+)", t) or \
         re.search(rf"\b(?:make|paint)\s+(?:the\s+)?(?P<old>.+?)\s+(?P<new>(?:{COLOR_RE}))\b", t)
+    repl = repl or re.search(rf"(?P<old>\b(?:the|both|all|each|every|it|they|them|\d+\s+of)\b[a-z0-9' ]*?)\s+(?:to\s+)?{EDIT_SHOULD_BE_RE}"
+                             rf"\s+(?:an?\s+)?(?P<new>(?:{COLOR_RE})\b|(?:letter|digit)\s+[a-z0-9]\b)", t) or \
+        re.fullmatch(rf"(?:and\s+|also\s+|now\s+)*(?P<old>(?:the|both)\b[a-z0-9' ]*?)\s+(?P<new>{COLOR_RE})[.!]?", t)
     if repl and not reverse:
         sel, new = _selector(repl.group("old")), _new_item(repl.group("new"))
+        bare = re.fullmatch(r"\s*'?([a-z0-9])'?\s*[.!]?", repl.group("new"))
+        if sel and "label" in sel and new is None and bare:  # "change the 3 to 5": a label for a label
+            new = {"label": bare.group(1).upper()}
         if sel and new:
             ops.append(Op("recolor" if "color" in new else "relabel", {"select": sel, "to": new}))
     rm = re.search(r"\b(?:remove|delete|take away|take off|drop|get rid of)\s+(?:the\s+)?(?P<sel>.+?)(?:[;,.]|\band\b|$)", t)
+    rm = rm or re.search(r"\b(?:take|lift|pull)\s+(?:the\s+)?(?P<sel>[a-z0-9' ]+?)\s+(?:off|away|out)\b", t)
     top_n = re.search(r"\b(?:remove|delete|take away|take off|drop|get rid of)\s+(?:the\s+)?(?:top|last)\s+(\d+)\s+(?:blocks?|cubes?)\b", t)
     if top_n:  # "remove the top two blocks": the structure shrinks from its end
         ops.append(Op("count", {"delta": -int(top_n.group(1))}))
@@ -305,9 +397,11 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("dims", {"dims": [int(g) for g in dims.groups() if g]}))
     elif base and not flat:
         ops.append(Op("dims", {"base": int(base.group(1) or base.group(2))}))
-    count = re.search(r"\b(?:use|with|make it|make (?:the|it) (?:tower|line|circle|row)|have|to)\s+(?:only\s+)?(\d+)\s+(?:[a-z]+\s+)?(?:blocks?|cubes?)\b", t)
-    if count and not any(o.op in ("add", "dims", "count") for o in ops):
-        ops.append(Op("count", {"count": int(count.group(1))}))
+    count = EDIT_COUNT_RE.search(t)
+    if count and not any(o.op in ("add", "dims", "count", "word", "colors", "outliers") for o in ops):
+        dim = count.group("dim") or count.group("dim2")
+        ops.append(Op("count", {"count": int(count.group("n") or count.group("n1") or count.group("n2")),
+                                **({"dim": dim} if dim else {})}))
     elif re.search(r"\b(?:double|triple|halve)\b", t) and not any(o.op in ("add", "dims", "remove", "count") for o in ops):
         factor = {"double": 2.0, "triple": 3.0, "halve": 0.5}[re.search(r"\b(double|triple|halve)\b", t).group(1)]
         ops.append(Op("count", {"factor": factor}))
@@ -317,7 +411,14 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("count", {"delta": -1}))
     shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out|use|do)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+)"
                       rf"{STRUCTURE_RE}", t)
-    if shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
+    wall = re.search(r"\b(?:make|turn|build|form|change|rearrange|arrange|reshape|into|as)\b[^.;]*?\ban?\s+wall\b", t)
+    wide, high = re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+)?wide\b", t), re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+)?(?:high|tall)\b", t)
+    if wall and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
+        if not (wide and high):
+            raise SteerError(f"'{wall.group(0).strip()}': say how wide and how high the wall is (e.g. \"3 wide and 2 high\")")
+        ops = [o for o in ops if o.op != "count"]
+        ops.append(Op("structure", {"to": "block", "dims": [1, int(wide.group(1)), int(high.group(1))]}))
+    elif shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
         ops.append(Op("structure", {"to": structure_of_word(shape.group(1))}))
     return ops
 
@@ -363,6 +464,7 @@ def interpret(edit: str) -> EditPlan:
     fresh = FRESH_RE.search(t)
     if fresh:
         return EditPlan(edit, RefCue("none", phrase=fresh.group(0)), standalone=True, fresh=True)
+    refuse_inexpressible(edit, t)
     if looks_standalone(t):
         from rpg.schema.builtin import ParseError, parse
 
@@ -374,7 +476,18 @@ def interpret(edit: str) -> EditPlan:
     ops = read_ops(t)
     if ops or cue.kind != "current":
         return EditPlan(edit, cue, ops)  # no ops with a back-reference: return to that version
-    return EditPlan(edit, cue, standalone=True)
+    # an edit that refers to the task ("it", "the orange one") or adds to it ("also", "too") is
+    # no whole new task: the task's own terms or an addition read it, else it is refused
+    return EditPlan(edit, cue, standalone=not (REFERS_RE.search(t) or EDIT_ADDITIVE_RE.search(t) or EDIT_VERB_RE.search(t)))
+
+
+REFERS_RE = re.compile(r"\b(?:it|them|they|its|their|those|these|both|whole)\b|\bthe\s+(?:[a-z]+\s+)?one\b"
+                       r"|\b(?:the|that|this|your|my|our)\s+(?:existing|current|same|present|old)\b")
+"""Words of an edit that stand for what the task has: with them and no change read, the edit
+is no whole new task."""
+
+EDIT_VERB_RE = re.compile(r"\b(?:change|replace|swap|substitute|remove|delete|flip|reverse|invert|undo|revert|paint|recolou?r)\b")
+"""Verbs that change a task and state none: an edit with one and no change read is refused."""
 
 
 def strip_edit_words(edit: str) -> str:
@@ -385,9 +498,21 @@ def strip_edit_words(edit: str) -> str:
         after = edit[marks[-1].end():].strip(" :,.;-")
         t = after if len(after.split()) >= 2 else FRESH_RE.sub(" ", edit)
     for _ in range(3):
-        t = re.sub(r"^\s*(?:now|ok(?:ay)?|actually|instead|then|next|and|with|so|please)\b[,:]?\s*", "", t.strip(),
-                   flags=re.IGNORECASE)
+        t = EDIT_LEADING_RE.sub("", t.strip())
     return t.strip(" ,:;.") or edit
+
+
+def addition_clause(edit: str) -> str | None:
+    """The clause an addition states ("also stack a white block on the cyan one" -> "stack a
+    white block on the cyan block"), or None when it has a pronoun the clause cannot resolve
+    ("it", "them")."""
+    t = strip_edit_words(edit)
+    t = re.sub(r"\b(?:also|too|as well|additionally|in addition)\b", " ", t, flags=re.IGNORECASE)
+    t = re.sub(rf"\b((?:{COLOR_RE}))\s+one\b", r"\1 block", t, flags=re.IGNORECASE)
+    t = " ".join(t.split()).strip(" ,;.")
+    if not t or re.search(r"\b(?:it|them|they|its|their|those|these|that|this|one)\b", t, re.IGNORECASE):
+        return None
+    return t
 
 
 # ---------------------------------------------------------------------------
@@ -421,18 +546,69 @@ def _next_item(spec: TaskSpec) -> Item:
     return Item(color=next((c for c in DEFAULT_COLORS if c not in used), "red"))
 
 
+def _orders_cubes(spec: TaskSpec) -> bool:
+    """Whether the structure's goal gives each cube its place (a tower, a line read in a
+    direction): then "two of them" does not say which."""
+    return spec.kind.spells and spec.direction is not None
+
+
+def _layer_indices(spec: TaskSpec, where: str) -> list[int]:
+    sizes = _layer_sizes(spec)
+    k = {"bottom": 0, "top": len(sizes) - 1}.get(where, 1 if where == "middle" and len(sizes) == 3 else
+                                                 {"second": 1, "third": 2}.get(where, -1))
+    if not 0 <= k < len(sizes):
+        raise SteerError(f"a {spec.structure} {len(sizes)} layers high has no {where} layer; name it from the bottom")
+    start = sum(sizes[:k])
+    return list(range(start, start + sizes[k]))
+
+
 def _indices(spec: TaskSpec, sel: dict) -> list[int]:
     n = len(spec.items)
+    if sel.get("both") and n != 2:
+        raise SteerError(f"'both' names two cubes, but the {spec.structure} has {n}; say which")
     if sel.get("all"):
         return list(range(n))
-    if "position" in sel:
-        pos = {"bottom": 0, "top": n - 1, "middle": n // 2, "second": 1, "third": 2}[sel["position"]]
-        if spec.structure == "line" and sel["position"] in ("bottom", "top"):
-            pos = 0 if sel["position"] == "bottom" else n - 1
+    if "some" in sel:
+        k = sel["some"]
+        if not 0 < k < n or _orders_cubes(spec):
+            raise SteerError(f"'{k} of them' does not say which of the {spec.structure}'s {n} cubes"
+                             + (" (its goal gives each cube its place)" if _orders_cubes(spec) else "")
+                             + "; name them by colour or place (e.g. \"the top two\")")
+        same = [i for i, it in enumerate(spec.items) if it == spec.items[-1]]
+        if len(same) < n:
+            raise SteerError(f"'{k} of them' does not say which of the {spec.structure}'s cubes; name them by colour")
+        return list(range(n - k, n))
+    if "layer" in sel and spec.kind.layered:
+        return _layer_indices(spec, sel["layer"])
+    if "layer" in sel or "position" in sel:
+        where = sel.get("layer") or sel["position"]
+        if spec.kind.layered:
+            idx = _layer_indices(spec, where)
+            if len(idx) > 1:
+                raise SteerError(f"the {where} layer of the {spec.structure} has {len(idx)} cubes; say the {where} layer, "
+                                 "or name the cube by colour")
+            return idx
+        if not spec.kind.spells:
+            raise SteerError(f"a {spec.structure}'s goal gives no cube the {where} place; name the cube by colour")
+        pos = {"bottom": 0, "top": n - 1, "middle": n // 2 if n % 2 else -1, "second": 1, "third": 2}[where]
+        if pos < 0:
+            raise SteerError(f"a {spec.structure} of {n} cubes has no one middle cube; name the cube by colour")
         return [pos] if 0 <= pos < n else []
     if "color" in sel:
         return [i for i, it in enumerate(spec.items) if it.color == sel["color"]]
     return [i for i, it in enumerate(spec.items) if it.label == sel.get("label")]
+
+
+def carried_after(spec: TaskSpec, carried, ops: list[Op]):
+    """The modifiers (:class:`rpg.steer.carried.Carried`) after the edit: a region it moves
+    the structure to; judged layers once it gives a layered structure's layer a colour."""
+    for o in ops:
+        if o.op == "region":
+            carried = replace(carried, region=o.params["region"])
+        sel = o.params.get("select") or {}
+        if o.op in ("recolor", "relabel") and spec.kind.layered and ("layer" in sel or "position" in sel):
+            carried = replace(carried, layers=True)
+    return carried
 
 
 def _resize(spec: TaskSpec, n: int) -> TaskSpec:
@@ -462,12 +638,45 @@ def _fit_structure(spec: TaskSpec, target: str) -> TaskSpec:
         raise SteerError(f"cannot turn a {spec.structure} into a {target}: {exc}") from None
 
 
-APPLY_ORDER = ("keep", "structure", "material", "word", "dims", "count", "colors", "remove", "recolor", "relabel", "pattern", "add",
+APPLY_ORDER = ("keep", "region", "structure", "add_layer", "material", "word", "dims", "count", "colors", "remove", "recolor", "relabel", "pattern", "add",
                "move", "swap", "reverse", "ordering", "direction", "outliers")
 """Order in which an edit's operations are applied to the spec."""
 
 
-def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
+DIM_AXES: dict[str, dict[str, int]] = {
+    "block": {"deep": 0, "wide": 1, "long": 1, "tall": 2, "high": 2, "level": 2, "layer": 2, "storey": 2, "story": 2},
+    "grid": {"deep": 0, "wide": 1, "long": 1},
+    "pyramid": {"wide": 0, "tall": 0, "high": 0, "level": 0, "layer": 0},
+}
+"""Which dimension of a structure's ``dims`` a side word sets ("four wide", "3 tall")."""
+
+LAYER_AXES: dict[str, int] = {"block": 2, "grid": 0}
+"""The dimension another row or layer grows ("add a third row on top")."""
+
+
+def _layers_of(spec: TaskSpec) -> list[list[str | None]]:
+    out, i = [], 0
+    for size in _layer_sizes(spec):
+        out.append([it.color or it.label for it in spec.items[i:i + size]])
+        i += size
+    return out
+
+
+def _resize_dims(spec: TaskSpec, dims: tuple[int, ...], keep_layers: bool = False) -> TaskSpec:
+    """The spec with new dimensions; with judged layers each layer keeps its one colour."""
+    if min(dims) < 1:
+        raise SteerError(f"a {spec.structure} cannot be {'x'.join(map(str, dims))}")
+    new = replace(spec, dims=dims)
+    if not keep_layers:
+        return _resize(new, spec.kind.cube_count(dims))
+    layers, sizes = _layers_of(spec), _layer_sizes(new)
+    if len(layers) != len(sizes) or any(len(set(layer)) != 1 for layer in layers):
+        raise SteerError(f"the {spec.structure}'s layers cannot keep their colours at {'x'.join(map(str, dims))}; "
+                         "state the whole new task")
+    return new.with_items([Item(color=layer[0]) for layer, size in zip(layers, sizes, strict=True) for _ in range(size)])
+
+
+def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False) -> TaskSpec:
     """The spec after the edit's operations, in order.
 
     Operations apply in :data:`APPLY_ORDER` (material before ordering, and so on), whatever
@@ -482,6 +691,9 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
             if p["structure"] != spec.structure:
                 raise SteerError(f"the edit keeps a {p['structure']}, but the version it builds on is a {spec.structure}; "
                                  "name the version to build on (e.g. \"go back to the tower\"), or state the whole new task")
+        elif o.op == "structure" and p.get("dims"):
+            dims = tuple(p["dims"])
+            spec = _resize(TaskSpec(p["to"], spec.items, dims), STRUCTURE_KINDS[p["to"]].cube_count(dims))
         elif o.op == "structure":
             if p["to"] != spec.structure:
                 spec = _fit_structure(spec, p["to"])
@@ -533,6 +745,9 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
                 raise SteerError(f"a cube added beside a {spec.structure} ({p['side']!r}) is not part of it, which the "
                                  "builtin steering cannot place (it adds cubes to the structure itself); state the "
                                  "whole new task in the edit, or use --model")
+            if p.get("end") and spec.kind.spells and not _orders_cubes(spec):
+                raise SteerError(f"'{p['end']}': the {spec.structure}'s goal gives no cube a place (any order holds), so a cube "
+                                 "added there cannot be judged; say the order of the whole line, or state the whole new task")
             new = [Item(**d) for d in p["items"]] or []
             grow = spec
             for _ in range(p.get("count") or 0):
@@ -542,8 +757,9 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
                 grow = grow.with_items(list(grow.items) + [item])
             items = new + list(spec.items) if p.get("at") == "bottom" else list(spec.items) + new
             spec = spec.with_items(items)
-            if spec.word:
-                spec = replace(spec, word=None)
+            if spec.word:  # "add an S at the end": the cubes spell a longer word
+                word = "".join(i.label or "" for i in spec.items)
+                spec = replace(spec, word=word if word.isalpha() and len(word) == len(spec.items) else None)
         elif o.op == "direction":
             if spec.structure != "line":
                 raise SteerError(f"a reading direction applies to a line; this task has a {spec.structure}")
@@ -575,6 +791,8 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
             for i in idx:
                 items[i] = Item(**p["to"])
             spec = replace(spec.with_items(items), layer_colors=False if spec.layer_colors and len(idx) < len(items) else spec.layer_colors)
+            if spec.word:  # "change the B to a C": the word spelled is the cubes' now
+                spec = replace(spec, word="".join(i.label or "?" for i in spec.items))
         elif o.op == "remove":
             idx = set(_indices(spec, p["select"]))
             if not idx:
@@ -619,6 +837,28 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
             spec = _resize(replace(spec, dims=dims), spec.kind.cube_count(dims))
             if spec.layer_colors:
                 spec = _with_layer_colors(spec)
+        elif o.op == "count" and p.get("dim") and (not spec.kind.sized_by_count or spec.structure in DIM_AXES):
+            axis = DIM_AXES.get(spec.structure, {}).get(re.sub(r"s$", "", p["dim"]))
+            if axis is None or not spec.dims:
+                raise SteerError(f"'{p['count']} {p['dim']}' does not name a side of a {spec.structure}")
+            dims = list(spec.dims)
+            dims[axis] = p["count"]
+            spec = _resize_dims(spec, tuple(dims), keep_layers)
+        elif o.op == "add_layer":
+            axis = LAYER_AXES.get(spec.structure)
+            if axis is None:
+                raise SteerError(f"a {spec.structure} cannot take another row or layer; change its size instead")
+            top = _layers_of(spec)[-1] if spec.kind.layered else [i.color for i in spec.items]
+            color = p.get("color") or (top[0] if len(set(top)) == 1 else None)
+            if color is None:
+                raise SteerError("say the colour of the new row (e.g. \"add a row on top, in black\")")
+            if not spec.kind.layered and {color} != set(spec.colors()):
+                raise SteerError(f"a {spec.structure}'s goal does not say which row a cube stands in, so a row of another "
+                                 "colour cannot be judged; state the whole new task")
+            dims = list(spec.dims)
+            dims[axis] += 1
+            grown = replace(spec, dims=tuple(dims))
+            spec = grown.with_items(list(spec.items) + [Item(color=color)] * (len(spec.items) // spec.dims[axis]))
         elif o.op == "count":
             if not spec.kind.sized_by_count:
                 raise SteerError(f"the size of a {spec.structure} is set by its dimensions (e.g. \"a 3x3 base\")")
@@ -639,6 +879,8 @@ def apply_ops(spec: TaskSpec, ops: list[Op]) -> TaskSpec:
                 spec = replace(spec.with_items([Item(color=c) for c in palette for _ in range(per)]), piles_by="color")
             else:
                 spec = spec.with_items([Item(color=palette[i % k]) for i in range(len(spec.items))])
+        elif o.op == "region":
+            continue  # the structure's place: a modifier (carried_after)
         elif o.op == "outliers":
             if spec.structure != "piles":
                 raise SteerError("outliers apply to piles; this task has a " + spec.structure)

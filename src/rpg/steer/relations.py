@@ -38,6 +38,10 @@ ADDS_RE = re.compile(r"\b(?:add|another|new|extra|more|one more|also)\b|\ban? (?
 """An edit that brings in a cube (an Extend): not a change of the relation."""
 
 
+TABLE_PLACE_RE = re.compile(r"\b(?:of|on|in)\s+the\s+(?:table|workspace)\b|\bcorner\b")
+"""A place on the table: an edit that names one moves cubes there, it relates them to no cube."""
+
+
 def same_assets(a: TaskSchema, b: TaskSchema) -> bool:
     """Whether two tasks use the same cubes and patches (kinds, colours, labels)."""
     def sig(s: TaskSchema) -> list[tuple]:
@@ -91,8 +95,8 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     """
     rel = relation_of(schema)
     t = " " + edit.lower().strip().rstrip(".!") + " "
-    if rel is None:
-        return None
+    if rel is None or TABLE_PLACE_RE.search(t):
+        return None  # a place on the table ("move the stack to the back of the table"): not a relation to a cube
     if ADDS_RE.search(t):
         return _added(t, schema, rel)
     subject, obj = rel.subject, rel.object
@@ -181,7 +185,9 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     elif re.search(r"\b(?:square|short(?:er)?|small(?:er)?)\b", t) and shape != "square":
         shape, intent = "square", "tweak"
     count = re.search(r"\b(\d+|two|three|four|five|six)\s+(?:blocks|cubes)\b", t)
-    added = re.search(rf"\badd\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b", t)
+    added = re.search(rf"\badd\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b", t) or \
+        re.fullmatch(rf"\s*(?:and\s+|now\s+|also\s+)*(?:put\s+|place\s+)?(?:the|a|an)\s+({COLOR_RE})\s+(?:block|cube|one)\s+"
+                     rf"(?:too|as well)\s*", t)
     if count:
         n = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6}.get(count.group(1)) or int(count.group(1))
         if not 1 <= n <= 6:
@@ -213,7 +219,7 @@ def _edit_region(t: str) -> str | None:
     """The workspace region an edit names ("to the back left corner", "to the left side")."""
     for m in EDIT_REGION_RE.finditer(t):
         fb, lr = m.group("fb"), m.group("lr")
-        if not (fb or lr) or (fb and not lr and not m.group("part") and not re.match(r"\s+of the (?:table|workspace)", t[m.end():])):
+        if not (fb or lr) or (fb and not lr and not m.group("part") and not re.match(r"\s*of the (?:table|workspace)", t[m.end():])):
             continue
         return region_name(fb, lr)
     return None

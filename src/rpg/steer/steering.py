@@ -18,7 +18,7 @@ hash) moves the head back to that version instead of duplicating it.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Literal
 
@@ -31,11 +31,15 @@ from rpg.schema.builtin import parse
 from rpg.schema.edits import recolor
 from rpg.schema.feasibility import check_feasibility
 from rpg.schema.model import TaskSchema
+from rpg.steer.carried import render as render_carried
+from rpg.steer.carried import split
 from rpg.steer.edits import (
     PRESERVATION,
     EditPlan,
     SteerError,
+    addition_clause,
     apply_ops,
+    carried_after,
     intent_of_ops,
     intent_of_standalone,
     interpret,
@@ -52,7 +56,7 @@ from rpg.steer.family import (
 )
 from rpg.steer.relations import relation_of, rewrite_patch, rewrite_region, same_assets
 from rpg.steer.relations import rewrite as rewrite_relation
-from rpg.steer.spec import TaskSpec, extract, render
+from rpg.steer.spec import TaskSpec, extract
 
 
 @dataclass
@@ -85,7 +89,7 @@ class SteerResult:
 
 def _spec_of(fam: Family, version_id: int) -> tuple[TaskSchema, TaskSpec | None]:
     schema = fam.schema(version_id)
-    return schema, extract(schema)
+    return schema, split(schema)[0]
 
 
 def _matches(fam: Family, version_id: int, cue) -> bool:
@@ -169,12 +173,18 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         schema = parse(text)
         if plan.fresh:
             return schema, text, "fresh"
-    ref_schema, ref_spec = (ref_schema, extract(ref_schema)) if ref_schema is not None else _spec_of(fam, reference)
+    if ref_schema is None:
+        ref_schema = fam.schema(reference)
+    ref_spec, carried = split(ref_schema)
     if plan.standalone:
         if relation_of(schema) and relation_of(ref_schema) and same_assets(schema, ref_schema):
             return schema, text, "modify"  # the same cubes in another relation
         return schema, text, intent_of_standalone(extract(schema), ref_spec)
-    if ref_spec is None and plan.ops and all(o.op == "recolor" and "color" in o.params["select"] for o in plan.ops):
+    if not plan.ops:
+        if plan.cue.kind != "current":  # "go back to version 1": that version as it is
+            return ref_schema, ref_schema.instruction, "tweak"
+        return _addition(plan, reference, ref_schema)
+    if ref_spec is None and all(o.op == "recolor" and "color" in o.params["select"] for o in plan.ops):
         schema = ref_schema
         for o in plan.ops:
             try:
@@ -185,12 +195,45 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     if ref_spec is None:
         raise SteerError(f"v{reference} ({ref_schema.goal_summary}) is not a structure the builtin steering edits in place; "
                          "state the whole new task in the edit, or use --model")
-    spec = apply_ops(ref_spec, plan.ops)
+    spec = apply_ops(ref_spec, plan.ops, keep_layers=carried.layers)
+    after = carried_after(ref_spec, carried, plan.ops)
+    if any(o.op == "add_layer" for o in plan.ops) and spec.kind.layered and len(set(spec.colors())) > 1:
+        after = replace(after, layers=True)  # "add a third row on top, in black": that layer's colour is judged
     try:
-        instruction = render(spec)
-    except ValueError as exc:
-        raise SteerError(str(exc)) from None
-    return parse(instruction), instruction, intent_of_ops(plan.ops, ref_spec)
+        instruction, schema = render_carried(spec, after, parse)
+    except BadInput as exc:
+        raise SteerError(str(exc).splitlines()[0]) from None
+    return schema, instruction, intent_of_ops(plan.ops, ref_spec)
+
+
+def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[TaskSchema, str, str]:
+    """An edit that adds to the task in a clause of its own ("also stack a white block on the
+    cyan one"): the reference's instruction, then the clause.  Kept only when every atom of
+    the reference's meaning is still there and the clause adds one (an addition keeps the rest).
+
+    Raises:
+        SteerError: no clause to add, or the two do not read as the reference plus more.
+    """
+    from collections import Counter
+
+    from rpg.schema.meaning import meaning
+
+    where = f"v{reference} ({ref_schema.goal_summary})"
+    clause = addition_clause(plan.text)
+    if clause is None:
+        raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\" to {where}: it refers to the task but names no "
+                         "change the builtin steering reads (add, remove, recolour, resize, reorder, move it, another "
+                         "structure); say what to change, e.g. \"make the top block red\", or use --model")
+    text = f"{ref_schema.instruction.strip().rstrip('.!')}, then {clause}"
+    try:
+        schema = parse(text)
+    except (BadInput, ValueError) as exc:
+        raise SteerError(f"cannot add \"{clause}\" to {where}: {str(exc).splitlines()[0]}") from None
+    before, now = Counter(meaning(ref_schema)), Counter(meaning(schema))
+    if before - now or not now - before:
+        raise SteerError(f"cannot add \"{clause}\" to {where}: together they read as {schema.goal_summary!r}, which does not "
+                         "keep the task's goal and add to it; state the whole new task in the edit, or use --model")
+    return schema, text, "extend"
 
 
 class RouteAnswer(BaseModel):

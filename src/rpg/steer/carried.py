@@ -1,0 +1,175 @@
+"""What a structure task says beyond its :class:`~rpg.steer.spec.TaskSpec`, carried through an edit.
+
+A tower standing in a region of the table ("stack(black,white)@back") or a pyramid whose
+bottom layer must be blue (:class:`~rpg.domain.predicates.InLayers`) is a structure task plus
+a modifier.  :func:`split` reads the spec of the structure without the modifier and the
+modifier apart (:class:`Carried`); an edit changes either ("move the stack to the back of the
+table", "make the bottom layer blue", "the top block should be red"); :func:`render` states
+both as one canonical instruction and :func:`check` parses it back and refuses, naming what
+is lost, when the parser does not read the same task (refuse rather than guess).
+"""
+
+from __future__ import annotations
+
+import re
+from collections import Counter
+from dataclasses import dataclass, replace
+
+from rpg.domain.predicates import And, InLayers, InRegion
+from rpg.errors import BadInput
+from rpg.schema.model import TaskSchema
+from rpg.schema.structures import STRUCTURE_WORDS, TaskSpec, extract, join_words
+from rpg.schema.structures import render as render_spec
+
+REGION_PHRASES = {"center": "in the center of the table", "left": "on the left side of the table",
+                  "right": "on the right side of the table", "front": "at the front of the table",
+                  "back": "at the back of the table"}
+"""How a canonical instruction states each region (corners: "in the back left corner of the table")."""
+
+LAYER_NAMES = {"bottom": "at the bottom", "middle": "in the middle", "top": "on top"}
+"""How a canonical instruction gives a colour a layer (:data:`rpg.schema.lexicon.LAYER_ROLE_RE` reads them)."""
+
+
+def region_phrase(region: str) -> str:
+    return REGION_PHRASES.get(region) or f"in the {region.replace('_', ' ')} corner of the table"
+
+
+@dataclass(frozen=True)
+class Carried:
+    """The modifiers of a structure task: the region it stands in, and whether the colours of
+    its layers are judged (the spec's items then give each layer's cubes, bottom first)."""
+
+    region: str | None = None
+    layers: bool = False
+
+
+def split(schema: TaskSchema) -> tuple[TaskSpec | None, Carried]:
+    """The structure's spec and its modifiers; (None, Carried()) when the task is no
+    structure steering edits (or its modifiers are not one region / one layering)."""
+    conj = list(schema.goal.conjuncts())
+    regions = [p for p in conj if isinstance(p, InRegion)]
+    layers = [p for p in conj if isinstance(p, InLayers)]
+    if not regions and not layers:
+        return extract(schema), Carried()
+    rest = [p for p in conj if not isinstance(p, (InRegion, InLayers))]
+    if not rest or len({p.region for p in regions}) > 1 or len(layers) > 1:
+        return None, Carried()
+    bare = schema.model_copy(update={"goal": rest[0] if len(rest) == 1 else And(rest)})
+    spec = extract(bare)
+    if spec is None:
+        return None, Carried()
+    members = {n for p in rest for n in p.objects} if all(hasattr(p, "objects") for p in rest) else set()
+    if any(p.a not in members for p in regions):
+        return None, Carried()  # a region of a cube outside the structure: not a modifier of it
+    if layers and not spec.kind.layered:
+        return None, Carried()
+    return spec, Carried(regions[0].region if regions else None, bool(layers))
+
+
+def layers_of(spec: TaskSpec) -> list[list[str | None]]:
+    """The colours (or labels) of each layer, bottom first."""
+    out, i = [], 0
+    for size in spec.kind.layer_sizes(spec):
+        out.append([it.color or it.label for it in spec.items[i:i + size]])
+        i += size
+    return out
+
+
+def _layer_clause(spec: TaskSpec) -> str:
+    """" with 3 blue blocks at the bottom and 3 green blocks": each colour found in one
+    nameable layer only is given it, the others are listed without a layer."""
+    layers = layers_of(spec)
+    n = len(layers)
+    names = {0: "bottom", n - 1: "top"} | ({1: "middle"} if n == 3 else {})
+    where = {}
+    for k, layer in enumerate(layers):
+        for c in layer:
+            where.setdefault(c, set()).add(k)
+    counts = Counter(it.color for it in spec.items)
+    parts = []
+    for c in dict.fromkeys(it.color for it in spec.items):
+        k = next(iter(where[c])) if len(where[c]) == 1 else None
+        role = f" {LAYER_NAMES[names[k]]}" if k in names else ""
+        parts.append(f"{counts[c]} {c} block{'s' if counts[c] > 1 else ''}{role}")
+    return " with " + join_words(parts)
+
+
+def _variants(spec: TaskSpec, carried: Carried) -> list[str]:
+    text = render_spec(spec)
+    if carried.layers:
+        if spec.material != "colors":
+            raise BadInput("the builtin steering states a layer's cubes by colour only")
+        text = text + _layer_clause(spec)
+    bare = re.sub(r"\b(letter|digit) '([A-Z0-9])'", r"\1 \2", text)  # "letter 'D'": the parser reads 'd as "would"
+    if not carried.region:
+        return list(dict.fromkeys([text, bare]))
+    phrase = region_phrase(carried.region)
+    words = "|".join(sorted(STRUCTURE_WORDS, key=len, reverse=True)) + "|cube|pyramid"
+    noun = re.search(rf"\b(?:{words})s?\b", text)
+    out = []
+    if noun:
+        out.append(f"{text[:noun.end()]} {phrase}{text[noun.end():]}")
+    out += [f"{text}, {phrase}", f"{text} {phrase}"]
+    return list(dict.fromkeys(out + [v.replace(text, bare) for v in out]))
+
+
+def _layers_exact(spec: TaskSpec, schema: TaskSchema) -> bool:
+    """Whether the parsed task's :class:`InLayers` judges exactly the spec's layers: the
+    named cubes in their layers, and the cubes it leaves free all alike (so wherever they go,
+    each layer holds what the spec says)."""
+    inl = next((p for p in schema.goal.conjuncts() if isinstance(p, InLayers)), None)
+    if inl is None:
+        return False
+    by_name = {a.name: a.color or a.label for a in schema.assets}
+    judged: dict[int, Counter] = {}
+    free: Counter = Counter()
+    for name, k in zip(inl.objects, inl.levels, strict=True):
+        (judged.setdefault(k, Counter()) if k >= 0 else free)[by_name[name]] += 1
+    if len(free) > 1:
+        return False
+    for k, layer in enumerate(layers_of(spec)):
+        rest = Counter(layer) - judged.get(k, Counter())
+        if judged.get(k, Counter()) - Counter(layer) or set(rest) - set(free):
+            return False
+    return True
+
+
+def _same_statement(got: TaskSpec, spec: TaskSpec) -> bool:
+    """Whether the spec read back states the same task: its canonical instruction is the
+    spec's (a field the statement does not show, such as a stale word, may differ)."""
+    try:
+        return render_spec(got) == render_spec(spec)
+    except (BadInput, ValueError):
+        return False
+
+
+def render(spec: TaskSpec, carried: Carried, parse) -> tuple[str, TaskSchema]:
+    """The canonical instruction of a spec and its modifiers, and its parsed schema: the
+    first phrasing that the parser reads back as the same structure (same spec, or for
+    judged layers the same cubes with each layer judged) with the same modifiers.
+
+    Raises:
+        BadInput: no phrasing reads back as the same task (the message says what is lost).
+    """
+    last = None
+    for text in _variants(spec, carried):
+        try:
+            schema = parse(text)
+        except (BadInput, ValueError) as exc:
+            last = str(exc).splitlines()[0]
+            continue
+        got, got_carried = split(schema)
+        if got is None or got_carried.region != carried.region or got_carried.layers != carried.layers:
+            last = f"the parser reads {text!r} as {schema.goal_summary!r}"
+            continue
+        if carried.layers:
+            if (got.structure, got.dims, sorted(map(str, got.items))) == (spec.structure, spec.dims, sorted(map(str, spec.items))) \
+                    and _layers_exact(spec, schema):
+                return text, schema
+        elif got == spec or _same_statement(got, spec) or (
+                len(set(spec.items)) == 1 and replace(got, direction=spec.direction, axis=spec.axis) == spec):
+            return text, schema  # read back as stated (an order over identical cubes says nothing)
+        last = f"the parser reads {text!r} as {schema.goal_summary!r}"
+    what = " and ".join(w for w, on in (("where it stands", carried.region), ("its layers' colours", carried.layers)) if on)
+    raise BadInput(f"the edited {spec.structure} cannot be stated exactly{' with ' + what if what else ''} "
+                   f"({last}); state the whole new task in the edit, or use --model")
