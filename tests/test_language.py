@@ -566,3 +566,37 @@ def test_a_role_said_as_a_clause_is_the_listed_cube_s_role():
     """"where the yellow one is at the top" added a second yellow cube on top."""
     goal = parse("Build a stack of the red, blue and yellow blocks where the yellow one is at the top").goal
     assert goal.name == "anchored_stack" and goal.top and len(goal.objects) == 3
+
+
+@pytest.mark.parametrize("text", ["Place the blue block on top of the stack", "put the red block next to the tower",
+                                  "put the red block on the stack of blue blocks"])
+def test_a_structure_nobody_described_is_not_invented(text):
+    """These compiled a two-cube tower of colours nobody named for "the stack" to stand for."""
+    with pytest.raises(ParseError, match="refers to a (?:stack|tower)|not described cube by cube"):
+        parse(text)
+
+
+@pytest.mark.parametrize("text, want", [
+    ("stack the red block on the blue block, then put the green block on the stack", "stack(blue,red,green)"),
+    ("put the red block on the blue block, then the green block on top of the tower", "stack(blue,red,green)"),
+    ("build a tower of red and blue blocks and put the green block next to the tower", "next_to(green,red); stack(red,blue)"),
+])
+def test_the_stack_built_before_is_the_one_referred_to(text, want):
+    """"... then put the green block on the stack" put green between blue and red."""
+    from rpg.schema.meaning import matches
+
+    assert matches(want, meaning(parse(text))), meaning(parse(text))
+    with pytest.raises(ParseError):  # on red (the top) or between the two? not said
+        parse("put the red block on the blue block, then put the green block on it")
+
+
+@pytest.mark.parametrize("text, want", [
+    ("Build a tower and put the red block behind it", "behind(red,?); stack(?,?)"),
+    ("stack two blocks and put the red block next to them", "next_to(?,red); stack(?,?)"),
+])
+def test_a_cube_put_beside_a_tower_is_not_also_in_a_second_tower(text, want):
+    """These gave the red cube a stack of its own too (stack(red,blue)) besides the tower it
+    stands beside."""
+    from rpg.schema.meaning import matches
+
+    assert matches(want, meaning(parse(text))), meaning(parse(text))

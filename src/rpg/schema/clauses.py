@@ -147,8 +147,8 @@ def _clauses(text: str, g: _Grammar) -> list[_Clause] | None:
                 cl.rel, cl.ref = "above", "top"
             elif kind != "alone":
                 cl.rel = "below" if re.fullmatch(BELOW, m.group("rel")) else "above"
-                if m.group("pron"):
-                    cl.ref = "it"
+                if m.group("pron"):  # "on the stack", "on top": the tower's top; "on it": the cube named last
+                    cl.ref = "top" if m.group("pron").startswith("the") and cl.rel == "above" else "it"
                 elif m.group("rrow"):
                     cl.ref, cl.ref_row = g.canon(m.group("rrc")), int(m.group("rrn"))
                 else:
@@ -213,6 +213,8 @@ def read(text: str, colors: str, canon) -> Plan | None:
                 return None
             if cl.ref == "top":
                 anchor = (anchor[0], len(towers[anchor[0]]) - 1)
+            elif cl.rel == "above" and anchor[1] != len(towers[anchor[0]]) - 1:
+                return None  # "red on blue, then green on it": on red (the top) or between them? not said
         else:
             hits = [(t, i) for t, tw in enumerate(towers) for i, col in enumerate(tw) if col == cl.ref]
             if not hits:

@@ -156,6 +156,21 @@ OTHER_RE = re.compile(r"\bthe\s+other\s+(?:[a-z]+\s+)?(?:blocks?|cubes?|ones?|br
 ("put one red block on the patch and the other one next to it", :data:`OTHER_SET_RE`); without
 that it means a cube the speaker sees, which a task cannot know."""
 
+DEFINITE_STRUCTURE_RE = re.compile(
+    r"\b(?:on|onto|upon|to|into|next\s+to|beside|behind|in\s+front\s+of|near|left\s+of|right\s+of|top\s+of|from|off|of)"
+    r"\s+the\s+(?:existing\s+|current\s+)?(?P<noun>tower|stack|pile|structure|pyramid|wall)\b(?!\s+of\b)")
+"""A structure an instruction places something in relation to ("put the blue block on top of
+the stack"): it must have been described before it (:data:`STRUCTURE_INTRO_RE`); otherwise it
+is one the speaker sees, which a task cannot know."""
+
+STRUCTURE_INTRO_RE = re.compile(
+    r"\b(?:a|an|one|\d+|the)\s+(?:[a-z0-9\-]+\s+){0,3}(?:towers?|stacks?|piles?|structures?|pyramids?|walls?)\s+"
+    r"(?:of|with|from|using|made)\b|\b(?:a|an|one|\d+)\s+(?:[a-z0-9\-]+\s+){0,3}(?:towers?|stacks?|piles?|structures?|pyramids?|walls?)\b"
+    r"|\b(?:stack|build|make|pile|form|create|construct)\b"
+    r"|\b(?:on|onto|atop|on\s+top\s+of)\s+(?:the|a|an)\s+(?:[a-z]+\s+)?(?:block|cube)\b")
+"""What describes a structure before "the stack" refers to it (:data:`DEFINITE_STRUCTURE_RE`):
+one introduced ("a tower of three blocks", "build ...") or a cube put on another."""
+
 OTHER_SET_RE = re.compile(r"\b(?:one|two|both|each|either)\b")
 """What sets a cube apart before "the other" (:data:`OTHER_RE`)."""
 
@@ -306,7 +321,7 @@ _PAIRWISE_WORDS = "(?:" + "|".join(PREDICATES[name].phrases for name in PAIRWISE
 _COLOR_WORD = "(?:" + "|".join(COLORS) + ")"
 DISTRIBUTED_RELATIONS: tuple[tuple[re.Pattern, str], ...] = (
     # "the red and green blocks next to the blue block": each of them
-    (re.compile(rf"\bthe\s+(?P<a>{_COLOR_WORD})\s+and\s+(?:the\s+)?(?P<b>{_COLOR_WORD})\s+(?P<n>block|cube)s\s+"
+    (re.compile(rf"(?<!stack\s)(?<!pile\s)\bthe\s+(?P<a>{_COLOR_WORD})\s+and\s+(?:the\s+)?(?P<b>{_COLOR_WORD})\s+(?P<n>block|cube)s\s+"
                 rf"(?P<rel>{_PAIRWISE_WORDS})\s+the\s+(?P<c>{_COLOR_WORD})\s+(?:block|cube)\b"),
      r"the \g<a> \g<n> \g<rel> the \g<c> \g<n> and the \g<b> \g<n> \g<rel> the \g<c> \g<n>"),
     # "the red block to the left of the blue and green blocks", "... of the blue block and the green block."
@@ -319,7 +334,8 @@ DISTRIBUTED_RELATIONS: tuple[tuple[re.Pattern, str], ...] = (
 """A pairwise relation (:data:`PAIRWISE_RELATIONS`) said once of two cubes, written out for
 each: "the red and green blocks next to the blue block" is red next to blue and green next to
 blue; "the red block left of the blue and green blocks" is left of each.  ("between" takes
-the two together, and "on" two cubes is a bridge.)"""
+the two together, "on" two cubes is a bridge, and "stack the red and blue blocks next to the
+green block" stacks the two, next to it.)"""
 
 
 EDIT_RELATIONS: tuple[tuple[str, str], ...] = (

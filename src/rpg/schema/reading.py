@@ -121,6 +121,11 @@ def _refuse_unresolved_pronoun(text: str, original: str) -> None:
             raise Inexpressible("reference", [word], "refers to something the instruction has not named (a cube the "
                                 "speaker sees, or one from an earlier turn): rpg's cubes are known only by colour "
                                 "and label; name them (e.g. \"stack the red and blue blocks\")", original)
+    for m in lexicon.DEFINITE_STRUCTURE_RE.finditer(text):
+        if not lexicon.STRUCTURE_INTRO_RE.search(text[:m.start()]):
+            raise Inexpressible("reference", [m.group(0)], f"refers to a {m.group('noun')} the instruction has not "
+                                "described (one the speaker sees, or from an earlier turn): describe it (e.g. \"build a "
+                                "tower of the red and green blocks, then put the blue block on top of it\")", original)
     for m in lexicon.OTHER_RE.finditer(text):
         if not lexicon.OTHER_SET_RE.search(text[:m.start()]):
             raise Inexpressible("reference", [m.group(0)], "picks a cube by contrast with one the instruction has not "

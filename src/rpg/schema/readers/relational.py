@@ -234,8 +234,8 @@ def recognize_relational(f: Features, b: Builder) -> bool:
             names = [r.obj(m) for m in ms]
         else:
             named = [c for c in dict.fromkeys(f.color_list()) if (c, None) not in r.subjects]
-            cols = colors_for(n, f, prefer=named)  # not the colours of cubes placed beside it
-            cols += [c for c in DEFAULT_COLORS if c not in cols and (c, None) not in r.subjects][: n - len(cols)]
+            cols = [c for c in colors_for(n, f, prefer=named) if (c, None) not in r.subjects]  # not the colours of
+            cols += [c for c in DEFAULT_COLORS if c not in cols and (c, None) not in r.subjects][: n - len(cols)]  # cubes beside it
             names = [r.obj(Mention(0, 0, c, None, 1)) for c in cols[:n]]
         r.on_edges += [(u, lo) for lo, u in zip(names, names[1:], strict=False)]
     if r.on_structure or r.by_structure:
@@ -378,8 +378,11 @@ def _resolve_structure(b: Builder, objects: dict, on_edges: list, rels: list, on
                        by_structure: list[tuple[str, str]], colors: list[str]) -> None:
     """Resolve "the stack" / "the tower": the tallest tower the instruction builds, or,
     when it builds none, the tower it describes ("the tower of red and blue", bottom to
-    top), or else a two-cube tower of colours it does not use (the stack the sentence
-    takes for granted).  Cubes put "on the stack" go on its top, in order; relations
+    top), or one it builds without describing ("build a tower and put the red block behind
+    it": two cubes of colours it does not use); one described by less than its cubes ("the
+    stack of blue blocks") is refused (:class:`ParseError`), and "the stack" nobody built or
+    described was refused by the front end as a reference
+    (:data:`rpg.schema.lexicon.DEFINITE_STRUCTURE_RE`).  Cubes put "on the stack" go on its top, in order; relations
     "beside the tower" are taken to its base."""
     chains = _chains(on_edges) or []
     subjects = set(on_structure) | {c for _, c in by_structure}
@@ -387,9 +390,12 @@ def _resolve_structure(b: Builder, objects: dict, on_edges: list, rels: list, on
     if tall:
         tower = tall[0]
     else:
-        tower = [b.cube(c) for c in colors] if len(colors) >= 2 else []
-        while len(tower) < 2:
-            tower.append(b.cube(colors[0] if colors and not tower else _next_default(b, objects)))
+        if len(colors) == 1:  # "on the stack of blue blocks": how many, and of which colours, is not said
+            raise ParseError("the stack it refers to is not described cube by cube; say its cubes bottom to top "
+                             "(\"the stack of red and blue blocks\") or build it in the instruction, or use --model")
+        tower = [b.cube(c) for c in colors]
+        while len(tower) < 2:  # "build a tower and put the red block behind it": a tower the text builds
+            tower.append(b.cube(_next_default(b, objects)))
         on_edges += [(up, lo) for lo, up in itertools.pairwise(tower)]
     top = tower[-1]
     for cube in on_structure:
