@@ -388,7 +388,7 @@ def test_a_spelled_word_reversed_by_an_edit(tmp_path):
 def test_moving_a_cube_alternating_colours_and_removing_cubes(tmp_path):
     """'Put the blue one at the bottom' moves the cube the tower has (it adds none);
     'alternating' repaints in a pattern; 'remove one block' shrinks by one."""
-    fam = compile_instruction("Build a tower of red, green and blue blocks", tmp_path / "t").path
+    fam = compile_instruction("Build a tower from bottom to top: red, green, blue", tmp_path / "t").path
     s = steer(fam, "Put the blue one at the bottom")
     assert (s.intent, s.valid) == ("modify", True)
     assert s.compile.schema.goal_summary == "tower bottom to top: blue, red, green"
@@ -596,3 +596,69 @@ def test_steering_words_live_in_the_lexicon():
     assert edits.ANAPHORA_RE is lexicon.EDIT_ANAPHORA_RE and edits.FRESH_RE is lexicon.EDIT_FRESH_RE
     assert interpret("completely different task now: stack three yellow blocks").fresh
     assert not interpret("Stack the red block on top of the yellow block").ops
+
+
+@pytest.mark.parametrize("base,edit,expected", [
+    ("Build a tower from bottom to top: red, green, blue", "make the top 2 blocks yellow",
+     "Build a tower from bottom to top: red, yellow, yellow"),
+    # a stack in any order stays in any order
+    ("Build a tower of red, green and blue blocks", "make the blue one yellow", "Build a tower: red, green, yellow"),
+    ("Build a tower of 3 red blocks", "add one more", "Build a tower from bottom to top: red, red, red, red"),
+    ("Build a tower of 3 red blocks", "now a line instead", "Arrange the blocks in order red, red, red from left to right"),
+    ("Put the green block on the red patch", "put a purple block on the patch too",
+     "Place the green block and the purple block onto the red goal patch"),
+    ("Build a pyramid of 6 green blocks", "make the top layer red and the bottom layer blue",
+     "Build a pyramid of blue, green and red blocks with a base of 3 with 3 blue blocks at the bottom, 2 green blocks in the "
+     "middle and 1 red block on top"),
+    ("Stack the red block on the blue block", "put it in the middle of the table",
+     "Build a tower in the center of the table from bottom to top: blue, red"),
+    ("Make a row of 4 brown blocks", "make two of them white",
+     "Align 4 blocks in a single straight line: 2 brown blocks and 2 white blocks"),
+    ("Stack the letter cubes A, B and C with A at the bottom", "put a D on top",
+     "Build a tower from bottom to top: letter A, letter B, letter C, letter D"),
+])
+def test_edit_instructions_state_exactly_what_was_asked(base, edit, expected):
+    """The canonical instruction an edit gives (parse only: no compile)."""
+    from rpg.steer.steering import plan_schema
+
+    class One:
+        def schema(self, v):
+            return parse(base)
+
+    _, instruction, _ = plan_schema(interpret(edit), One(), 0)
+    assert instruction == expected
+
+
+@pytest.mark.parametrize("base,edit,needle", [
+    # an addition on a cube that is not the tower's end, or beside an unordered line's end
+    ("Build a tower from bottom to top: red, green, blue", "put a yellow block on top of the red one", "not the top"),
+    ("Build a tower of red, green and blue blocks", "make the top one white", "no cube the top place"),
+    ("Build a tower of red, green and blue blocks", "add a yellow block on top", "gives no cube a place"),
+    ("Build a tower of red, green and blue blocks", "put the blue one at the bottom", "no places"),
+    ("Build a tower of red, green and blue blocks", "make it 2 towers", "names no change"),
+    ("Align 3 blocks in a single straight line: red, green, blue", "add a yellow block at the right end", "gives no cube a place"),
+    ("Align 3 blocks in a single straight line: red, green, blue", "reverse it", "no order"),
+    # a pivot that would change how many cubes there are, a swap of unequal sets, a colour left unread
+    ("Place 5 blocks in a circle", "make it a square instead", "not made of 5 cubes"),
+    ("Build a pyramid with 3 red blocks at the bottom, 2 green in the middle and 1 blue on top",
+     "swap the colours of the top and bottom layers", "cannot swap"),
+    ("Arrange a red, a green and a blue block in a line from left to right", "put a yellow block between the red and green ones",
+     "'green' has no place"),
+])
+def test_edits_not_applied_exactly_are_refused_before_compiling(base, edit, needle):
+    from rpg.steer.steering import plan_schema
+
+    class One:
+        def schema(self, v):
+            return parse(base)
+
+    with pytest.raises(SteerError, match=needle):
+        plan_schema(interpret(edit), One(), 0)
+
+
+def test_an_addition_to_a_relation_names_its_cube_by_one(tmp_path):
+    """"behind the purple one" is the purple block (it was read as the task's subject)."""
+    from rpg.steer.relations import rewrite
+
+    text, intent = rewrite("add a brown block behind the purple one", parse("Put the yellow block in front of the purple block"))
+    assert intent == "extend" and text.endswith("place the brown block behind the purple block")

@@ -457,7 +457,7 @@ EDIT_ANAPHORA_RE = re.compile(
     r"\b(?:it|them|they|its|their|those|these|instead|back|again|now|also|too|more|rather|both|whole)\b"
     r"|\b(?:add|append|change|replace|swap|substitute|remove|delete|flip|reverse|invert|keep|undo|revert|turn|paint|recolou?r)\b"
     r"|\bmake (?:the|it|them)\b|\bas well\b"
-    r"|\bthe\s+(?:[a-z]+\s+)?one\b"
+    r"|\bthe\s+(?:[a-z]+\s+)?(?:[a-z]+\s+and\s+[a-z]+\s+)?ones?\b"
     r"|\b(?:the|that|this|your|my|our)\s+(?:existing|current|same|present|old)\b"
     r"|\b(?:the|that|this)\s+(?:whole\s+|entire\s+)?(?:" + "|".join(w for k in STRUCTURE_KINDS.values() for w in k.words)
     + r"|wall|structure|thing)\b(?!\s+(?:of|with)\b)"
@@ -494,10 +494,11 @@ EDIT_INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
 "the original" name versions of a family): (class, pattern, why)."""
 
 EDIT_COUNT_RE = re.compile(
-    r"\b(?:(?:just|only|like|about|use|using|have|make (?:it|them|the \w+))\s+(?:only\s+|just\s+)?(?P<n>\d+)"
+    r"\b(?:(?:just|only|like|about|use|using|have|make (?:it|them|the (?:" + "|".join(w for k in STRUCTURE_KINDS.values() for w in k.words)
+    + r"|wall)))\s+(?:only\s+|just\s+)?(?P<n>\d+)"
     r"|(?:to|into|with|be|of)\s+(?:only\s+|just\s+)?(?P<n1>\d+)(?=\s+(?:[a-z]+\s+)?(?:blocks?|cubes?)\b|\s+(?:tall|high|long|wide|deep)\b))"
     r"(?:\s+(?:[a-z]+\s+)?(?:blocks?|cubes?))?(?:\s+(?P<dim>tall|high|long|wide|deep|levels?|layers?|stor(?:y|ey|ies|eys)))?"
-    r"(?!\s*(?:x\d|more|fewer|less|of\b|colou?rs?|outliers?|different|rows?|columns?))\b"
+    r"(?=\s*(?:$|[.,;!?]|(?:please|pls|instead|now|then|and|in total|total|again)\b))"
     r"|\b(?P<n2>\d+)\s+(?P<dim2>tall|high|long|wide|deep)\b")
 """A count an edit gives its structure ("just two", "like 3 blocks", "make it four tall", "four
 wide"); ``dim`` (tall, wide...) says which side."""

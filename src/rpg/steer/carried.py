@@ -15,7 +15,7 @@ import re
 from collections import Counter
 from dataclasses import dataclass, replace
 
-from rpg.domain.predicates import And, InLayers, InRegion
+from rpg.domain.predicates import And, InLayers, InRegion, UnorderedStack
 from rpg.errors import BadInput
 from rpg.schema.model import TaskSchema
 from rpg.schema.structures import STRUCTURE_WORDS, TaskSpec, extract, join_words
@@ -45,7 +45,16 @@ class Carried:
 
 def split(schema: TaskSchema) -> tuple[TaskSpec | None, Carried]:
     """The structure's spec and its modifiers; (None, Carried()) when the task is no
-    structure steering edits (or its modifiers are not one region / one layering)."""
+    structure steering edits (or its modifiers are not one region / one layering).  A stack
+    in any order of cubes that differ is a spec with no direction (its cubes have no places)."""
+    spec, carried = _split(schema)
+    if spec is not None and spec.kind.spells and len(set(spec.items)) > 1 and any(
+            isinstance(p, UnorderedStack) for p in schema.goal.conjuncts()):
+        spec = replace(spec, direction=None)
+    return spec, carried
+
+
+def _split(schema: TaskSchema) -> tuple[TaskSpec | None, Carried]:
     conj = list(schema.goal.conjuncts())
     regions = [p for p in conj if isinstance(p, InRegion)]
     layers = [p for p in conj if isinstance(p, InLayers)]
@@ -94,8 +103,30 @@ def _layer_clause(spec: TaskSpec) -> str:
     return " with " + join_words(parts)
 
 
+def _counted(spec: TaskSpec, text: str) -> str | None:
+    """The statement with its listed colours counted instead (": brown, brown, white, white" ->
+    ": 2 brown blocks and 2 white blocks"), where the listing's order says nothing: the
+    structure gives no cube its place, or its cubes are all alike."""
+    ordered = spec.kind.spells and spec.direction is not None
+    if spec.material != "colors" or (ordered and len(set(spec.items)) > 1):
+        return None
+    m = re.search(r":\s*([a-z]+(?:,\s*[a-z]+)+)\s*$", text)
+    if not m or [c.strip() for c in m.group(1).split(",")] != spec.colors():
+        return None
+    counts = Counter(spec.colors())
+    return text[:m.start()] + ": " + join_words([f"{n} {c} block{'s' if n > 1 else ''}" for c, n in counts.items()])
+
+
 def _variants(spec: TaskSpec, carried: Carried) -> list[str]:
-    text = render_spec(spec)
+    texts = [render_spec(spec)]
+    if spec.direction is None:  # no order said: a statement without its direction words
+        texts.insert(0, re.sub(r"\s+from (?:bottom to top|top to bottom|left to right|right to left|front to back|back to front)\b",
+                            "", texts[0]))
+    texts += [c for c in (_counted(spec, t) for t in list(texts)) if c]
+    return list(dict.fromkeys(v for text in texts for v in _phrasings(spec, carried, text)))
+
+
+def _phrasings(spec: TaskSpec, carried: Carried, text: str) -> list[str]:
     if carried.layers:
         if spec.material != "colors":
             raise BadInput("the builtin steering states a layer's cubes by colour only")
@@ -138,7 +169,7 @@ def _same_statement(got: TaskSpec, spec: TaskSpec) -> bool:
     """Whether the spec read back states the same task: its canonical instruction is the
     spec's (a field the statement does not show, such as a stale word, may differ)."""
     try:
-        return render_spec(got) == render_spec(spec)
+        return (got.direction is None) == (spec.direction is None) and render_spec(got) == render_spec(spec)
     except (BadInput, ValueError):
         return False
 

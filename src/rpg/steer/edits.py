@@ -232,6 +232,9 @@ def _selector(text: str) -> dict | None:
     """Which cubes a phrase names: a position (of a cube, or of a layer: "the bottom layer"),
     a colour, a label, some of them ("two of them"), both of two, or all of them."""
     text = text.strip()
+    ends = re.search(r"\b(top|bottom|first|last|lowest|highest)\s+(\d+)\b", text)
+    if ends:
+        return {"end": "bottom" if ends.group(1) in ("bottom", "first", "lowest") else "top", "n": int(ends.group(2))}
     some = re.search(r"\b(\d+)\s+of\s+(?:them|the\s+(?:[a-z]+\s+)?(?:blocks|cubes|ones))\b", text)
     if some:
         return {"some": int(some.group(1))}
@@ -267,7 +270,7 @@ def _region_of(t: str) -> str | None:
     back of the table", "put the whole thing in the back left corner"), or None."""
     from rpg.steer.relations import _edit_region
 
-    m = re.search(r"\b(?:move|put|place|shift|bring|slide|build|set|push|have)\s+(?:it|them|everything|the\s+whole\s+thing"
+    m = re.search(r"\b(?:move|put|place|shift|bring|slide|build|set|push|have|make|keep)\s+(?:it|them|everything|the\s+whole\s+thing"
                   r"|(?:the\s+)?(?:whole\s+|entire\s+)?(?:" + STRUCTURE_RE + r"|wall|blocks|cubes))\s+(?P<where>.*)", t)
     if not m or not re.search(r"\b(?:table|corner|side|edge|half|workspace)\b", m.group("where")):
         return None
@@ -337,9 +340,16 @@ def read_ops(t: str) -> list[Op]:
         color = re.search(rf"\b({COLOR_RE})\b", rest)
         ops.append(Op("add_layer", {"color": canon_color(color.group(1)) if color else None}))
     add = None if layer or (substitution and mats) or any(o.op in ("move", "pattern") for o in ops) else re.search(
-        r"\b(?:add|append|include|put)\b(?P<what>.*?)(?P<where>\bon top\b|\b(?:at|to|on) (?:the )?(?:very )?(?:top|bottom|base|end|start|beginning)\b|"
-        r"\b(?:under|underneath|beneath|below)\b|\bto the (?:left|right|end|start)\b|\bon the (?:left|right)\b|[;,.]|\band\b|$)", t)
-    if add and (item_sequence(add.group("what")) or re.search(r"\b(?:blocks?|cubes?)\b", add.group("what"))):
+        r"\b(?P<verb>add|append|include|put|place|stack|set)\b(?P<what>.*?)(?P<where>\bon top\b|\b(?:at|to|on) (?:the )?(?:very )?(?:top|bottom|base|end|start|beginning)\b|"
+        r"\b(?:under|underneath|beneath|below)\b|\bto the (?:left|right|end|start)\b|\bon the (?:left|right)\b|\bon(?:to)?(?= (?:the|it|them|that)\b)"
+        r"|[;,.]|\band\b|$)", t)
+    if add and add.group("verb") not in ("add", "append", "include") and not re.search(
+            r"\b(?:an?|another|\d+|more|some|new|extra)\b", add.group("what")):
+        add = None  # "put it on the blue patch", "put the blue block on the red block": no cube added
+    if add and re.search(r"\bpatch", add.group("what") + t[add.end():]):
+        add = None  # a patch: not a cube of the structure
+    if add and (item_sequence(add.group("what")) or re.search(r"\b(?:blocks?|cubes?)\b|^\s*(?:\d+|another|1)\s+more\s*$|^\s*another\s*(?:one\s*)?$",
+                                                                  add.group("what"))):
         what = add.group("what")
         beside = EDIT_BESIDE_RE.search(what)
         second = re.search(r"\b(?:an?|another|one|\d+|new|second|other)\s+(?:[a-z]+\s+){0,2}?" + STRUCTURE_RE, what)
@@ -352,8 +362,16 @@ def read_ops(t: str) -> list[Op]:
         where = add.group("where")
         at = "bottom" if re.search(r"bottom|base|under|beneath|below|start|beginning|left", where) else "top"
         side = beside or re.search(r"\b(left|right)\b", where)
+        target = re.match(r"\s*(?:of\s+)?(?P<sel>the\s+[a-z0-9' ]+?(?:one|block|cube)s?\b|the\s+(?:top|bottom)\b|the\s+(?:[a-z]+\s+)?letter\s+[a-z]\b"
+                          rf"|the\s+(?:[a-z]+\s+)?digit\s+\d\b|the\s+(?:{COLOR_RE})\b)", t[add.end():])
+        onto = _selector(target.group("sel")) if target and re.search(r"[a-z]", where) else None
+        if re.match(r"on(?:to)?$", where.strip()) and onto is None:
+            onto = {"all": True} if re.match(r"\s*(?:it|them|that|the\s+(?:tower|stack|top))\b", t[add.end():]) else None
+            if onto is None:
+                return ops  # "put a yellow block on ...": on nothing this reads
         ops.append(Op("add", {"items": items * (n if len(items) == 1 else 1) if items else [], "count": n if not items else None, "at": at,
                               **({"side": side.group(0)} if side else {}),
+                              **({"onto": onto} if onto and not onto.get("all") else {}),
                               **({"end": where.strip()} if re.search(r"[a-z]", where) and not re.match(r"\s*and\b", where) else {})}))
     kept = re.search(rf"\bkeep(?:ing)?\s+(?:the|this|that|my|your|our)\s+(?:same\s+|existing\s+|current\s+)?{STRUCTURE_RE}", t)
     if kept:  # "keep the tower, and ...": the reference must be that structure
@@ -377,6 +395,13 @@ def read_ops(t: str) -> list[Op]:
             new = {"label": bare.group(1).upper()}
         if sel and new:
             ops.append(Op("recolor" if "color" in new else "relabel", {"select": sel, "to": new}))
+            first = re.search(rf"\b(?:{COLOR_RE})\b|\b(?:letter|digit)\s+[a-z0-9]\b", t[repl.start("new"):])
+            rest = t[repl.start("new") + first.end():] if first else ""
+            for more in re.finditer(rf"(?:,|;|\band\b)\s+(?:make\s+|paint\s+|change\s+|turn\s+)?(?P<old>the\s+[a-z0-9' ]+?)\s+"
+                                    rf"(?:to\s+|into\s+|should\s+be\s+|be\s+)?(?:an?\s+)?(?P<new>(?:{COLOR_RE})\b|(?:letter|digit)\s+[a-z0-9]\b)", rest):
+                sel2, new2 = _selector(more.group("old")), _new_item(more.group("new"))  # "... and the bottom layer blue"
+                if sel2 and new2:
+                    ops.append(Op("recolor" if "color" in new2 else "relabel", {"select": sel2, "to": new2}))
     rm = re.search(r"\b(?:remove|delete|take away|take off|drop|get rid of)\s+(?:the\s+)?(?P<sel>.+?)(?:[;,.]|\band\b|$)", t)
     rm = rm or re.search(r"\b(?:take|lift|pull)\s+(?:the\s+)?(?P<sel>[a-z0-9' ]+?)\s+(?:off|away|out)\b", t)
     top_n = re.search(r"\b(?:remove|delete|take away|take off|drop|get rid of)\s+(?:the\s+)?(?:top|last)\s+(\d+)\s+(?:blocks?|cubes?)\b", t)
@@ -409,8 +434,10 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("count", {"delta": 1}))
     elif re.search(r"\b(?:shorter|smaller|lower)\b", t) and not any(o.op in ("remove", "dims", "count") for o in ops):
         ops.append(Op("count", {"delta": -1}))
-    shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out|use|do)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+)"
+    shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out|use|do)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+)(?:\d+x\d+(?:x\d+)?\s+)?"
                       rf"{STRUCTURE_RE}", t)
+    bare_shape = re.fullmatch(r"(?:(?:now|ok|okay|actually|then|and|maybe|rather)\s+)*(?:as\s+|in\s+|into\s+)?an?\s+"
+                              + STRUCTURE_RE + r"(?:\s+(?:instead|now|please))*\W*", t)
     wall = re.search(r"\b(?:make|turn|build|form|change|rearrange|arrange|reshape|into|as)\b[^.;]*?\ban?\s+wall\b", t)
     wide, high = re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+)?wide\b", t), re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+)?(?:high|tall)\b", t)
     if wall and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
@@ -420,6 +447,8 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("structure", {"to": "block", "dims": [1, int(wide.group(1)), int(high.group(1))]}))
     elif shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
         ops.append(Op("structure", {"to": structure_of_word(shape.group(1))}))
+    elif bare_shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
+        ops.append(Op("structure", {"to": structure_of_word(bare_shape.group(1))}))  # "now a line instead"
     return ops
 
 
@@ -481,7 +510,8 @@ def interpret(edit: str) -> EditPlan:
     return EditPlan(edit, cue, standalone=not (REFERS_RE.search(t) or EDIT_ADDITIVE_RE.search(t) or EDIT_VERB_RE.search(t)))
 
 
-REFERS_RE = re.compile(r"\b(?:it|them|they|its|their|those|these|both|whole)\b|\bthe\s+(?:[a-z]+\s+)?one\b"
+REFERS_RE = re.compile(r"\b(?:the|that|this)\s+(?:whole\s+|entire\s+)?(?:" + STRUCTURE_RE + r"|wall|structure|thing)(?!\s+(?:of|with)\b)"
+                       r"|\b(?:it|them|they|its|their|those|these|both|whole)\b|\bthe\s+(?:[a-z]+\s+)?(?:[a-z]+\s+and\s+[a-z]+\s+)?ones?\b"
                        r"|\b(?:the|that|this|your|my|our)\s+(?:existing|current|same|present|old)\b")
 """Words of an edit that stand for what the task has: with them and no change read, the edit
 is no whole new task."""
@@ -548,8 +578,9 @@ def _next_item(spec: TaskSpec) -> Item:
 
 def _orders_cubes(spec: TaskSpec) -> bool:
     """Whether the structure's goal gives each cube its place (a tower, a line read in a
-    direction): then "two of them" does not say which."""
-    return spec.kind.spells and spec.direction is not None
+    direction): then "two of them" does not say which.  A sequence that holds from either end
+    ("in the order red, green, blue") gives no end a cube: nothing to reverse or add at an end."""
+    return spec.kind.spells and spec.direction not in (None, "sequence")
 
 
 def _layer_indices(spec: TaskSpec, where: str) -> list[int]:
@@ -568,6 +599,12 @@ def _indices(spec: TaskSpec, sel: dict) -> list[int]:
         raise SteerError(f"'both' names two cubes, but the {spec.structure} has {n}; say which")
     if sel.get("all"):
         return list(range(n))
+    if "end" in sel:
+        k = sel["n"]
+        if not 0 < k <= n or not _orders_cubes(spec):
+            raise SteerError(f"the {sel['end']} {k} of a {spec.structure} of {n} cubes"
+                             + ("" if _orders_cubes(spec) else " whose goal gives no cube a place") + " name no cubes; name them by colour")
+        return list(range(k)) if sel["end"] == "bottom" else list(range(n - k, n))
     if "some" in sel:
         k = sel["some"]
         if not 0 < k < n or _orders_cubes(spec):
@@ -588,8 +625,8 @@ def _indices(spec: TaskSpec, sel: dict) -> list[int]:
                 raise SteerError(f"the {where} layer of the {spec.structure} has {len(idx)} cubes; say the {where} layer, "
                                  "or name the cube by colour")
             return idx
-        if not spec.kind.spells:
-            raise SteerError(f"a {spec.structure}'s goal gives no cube the {where} place; name the cube by colour")
+        if not spec.kind.spells or not _orders_cubes(spec):
+            raise SteerError(f"a {spec.structure}'s goal gives no cube the {where} place (any order holds); name the cube by colour")
         pos = {"bottom": 0, "top": n - 1, "middle": n // 2 if n % 2 else -1, "second": 1, "third": 2}[where]
         if pos < 0:
             raise SteerError(f"a {spec.structure} of {n} cubes has no one middle cube; name the cube by colour")
@@ -597,6 +634,29 @@ def _indices(spec: TaskSpec, sel: dict) -> list[int]:
     if "color" in sel:
         return [i for i, it in enumerate(spec.items) if it.color == sel["color"]]
     return [i for i, it in enumerate(spec.items) if it.label == sel.get("label")]
+
+
+def _colors_of(value) -> set[str]:
+    if isinstance(value, dict):
+        return {v for k, v in value.items() if k == "color" and v} | {c for v in value.values() for c in _colors_of(v)}
+    if isinstance(value, (list, tuple)):
+        return {c for v in value for c in _colors_of(v)} | {v for v in value if isinstance(v, str) and v in _PALETTE_NAMES}
+    return set()
+
+
+_PALETTE_NAMES = frozenset(canon_color(c) for c in COLOR_RE.split("|"))
+
+
+def unread_colors(plan: EditPlan) -> list[str]:
+    """Colours the edit names that none of its operations (nor its reference cue) uses: a
+    part of the edit that was not read ("make the top layer red and the bottom one blue" read
+    as the first half only)."""
+    t = normalize_edit(plan.text)
+    if plan.cue.phrase:
+        t = t.replace(plan.cue.phrase, " ")
+    said = [canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", t)]
+    used = _colors_of([o.params for o in plan.ops]) | set(plan.cue.colors)
+    return [c for c in dict.fromkeys(said) if c not in used]
 
 
 def carried_after(spec: TaskSpec, carried, ops: list[Op]):
@@ -696,7 +756,11 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False) -> TaskS
             spec = _resize(TaskSpec(p["to"], spec.items, dims), STRUCTURE_KINDS[p["to"]].cube_count(dims))
         elif o.op == "structure":
             if p["to"] != spec.structure:
+                before = len(spec.items)
                 spec = _fit_structure(spec, p["to"])
+                if len(spec.items) != before and not any(q.op in ("count", "dims") for q in ops):
+                    raise SteerError(f"a {p['to']} is not made of {before} cubes (the nearest has {len(spec.items)}); say its size "
+                                     "too, or state the whole new task")
         elif o.op == "material":
             if p["to"] == spec.material:
                 continue
@@ -729,6 +793,9 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False) -> TaskS
             spec = replace(spec, ordering=key, descending=p.get("descending", False), word=None, layer_colors=False,
                            direction=spec.direction or "left_to_right")
         elif o.op == "reverse":
+            if spec.kind.spells and not _orders_cubes(spec):
+                raise SteerError(f"the {spec.structure}'s goal gives its cubes no order (any order holds), so there is none to "
+                                 "reverse; say the order it should have (e.g. \"from left to right: red, green, blue\")")
             keep = set(_indices(spec, p["keep"])) if p.get("keep") else set()
             idx = [i for i, it in enumerate(spec.items) if i not in keep and (not p.get("colors_only") or it.label is None)]
             items = list(spec.items)
@@ -748,11 +815,22 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False) -> TaskS
             if p.get("end") and spec.kind.spells and not _orders_cubes(spec):
                 raise SteerError(f"'{p['end']}': the {spec.structure}'s goal gives no cube a place (any order holds), so a cube "
                                  "added there cannot be judged; say the order of the whole line, or state the whole new task")
+            if p.get("onto"):
+                end = 0 if p.get("at") == "bottom" else len(spec.items) - 1
+                idx = _indices(spec, p["onto"])
+                if idx != [end]:
+                    raise SteerError(f"the cube {'under' if end == 0 else 'on'} which the edit adds one ({p['onto']}) is not the "
+                                     f"{'bottom' if end == 0 else 'top'} of the {spec.structure}; the builtin steering adds cubes at "
+                                     "its ends only: say where in the whole structure, or state the whole new task")
+            if p.get("side") and spec.kind.spells and not _orders_cubes(spec):
+                raise SteerError(f"'{p['side']}': the {spec.structure}'s goal gives no cube a place (any order holds), so a cube "
+                                 f"added there cannot be judged; say the order of the whole {spec.structure}, or state the whole new task")
             new = [Item(**d) for d in p["items"]] or []
             grow = spec
             for _ in range(p.get("count") or 0):
                 unused = [c for c in GRADIENT_ORDER if c not in grow.colors()]
-                item = Item(color=unused[0]) if spec.ordering == "color" and unused else _next_item(grow)
+                alike = len(set(spec.items)) == 1 and spec.items[0].label is None  # "add one more" to cubes all alike: one more of them
+                item = Item(color=unused[0]) if spec.ordering == "color" and unused else spec.items[0] if alike else _next_item(grow)
                 new.append(item)
                 grow = grow.with_items(list(grow.items) + [item])
             items = new + list(spec.items) if p.get("at") == "bottom" else list(spec.items) + new
@@ -765,6 +843,9 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False) -> TaskS
                 raise SteerError(f"a reading direction applies to a line; this task has a {spec.structure}")
             spec = replace(spec, direction=p["to"], axis=None)
         elif o.op == "move":
+            if spec.kind.spells and not _orders_cubes(spec):
+                raise SteerError(f"the {spec.structure}'s goal gives its cubes no places (any order holds), so one moved to its "
+                                 f"{p['at']} cannot be judged alone; say the order of the whole {spec.structure}")
             idx = _indices(spec, p["select"])
             if not idx:
                 raise SteerError(f"the task has no cube matching {p['select']} to move; it has "
@@ -827,8 +908,11 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False) -> TaskS
             ia, ib = _indices(spec, p["a"]), _indices(spec, p["b"])
             if not ia or not ib:
                 raise SteerError(f"the task has no cube matching {p['a'] if not ia else p['b']}")
+            if len(ia) != len(ib) or (len(ia) > 1 and not (len({spec.items[i] for i in ia}) == len({spec.items[i] for i in ib}) == 1)):
+                raise SteerError(f"cannot swap {p['a']} ({len(ia)} cubes) with {p['b']} ({len(ib)} cubes); name one cube of each")
             items = list(spec.items)
-            items[ia[0]], items[ib[0]] = items[ib[0]], items[ia[0]]
+            for i, j in zip(ia, ib, strict=True):
+                items[i], items[j] = spec.items[j], spec.items[i]
             spec = spec.with_items(items)
         elif o.op == "count" and "delta" in p and not spec.kind.sized_by_count:
             dims = spec.kind.grown(spec.dims, p["delta"])

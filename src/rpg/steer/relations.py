@@ -109,7 +109,7 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
             return None
     else:
         kind = next((k for pattern, k in EDIT_RELATIONS if re.search(pattern, t)), None)
-        named = re.findall(r"\bthe (\w+) (?:block|cube)\b", t)
+        named = re.findall(r"\bthe (\w+) (?:block|cube|one)\b", t)
         by_color = {a.color: a.name for a in schema.assets if a.kind == "colored_cube"}
         if kind is None or len(named) > 1 or (named and named[0] not in by_color):
             return None  # no relation, or cubes of its own: a whole task, not an edit of this one
@@ -135,7 +135,7 @@ def _added(t: str, schema: TaskSchema, rel: Relation) -> tuple[str, str] | None:
     if kind is None:
         return None
     by_color = {a.color: a.name for a in schema.assets if a.kind == "colored_cube"}
-    named = re.findall(r"\bthe (\w+) (?:block|cube)\b", rest)
+    named = re.findall(r"\bthe (\w+) (?:block|cube|one)\b", rest)
     if named:
         if named[0] not in by_color:
             return None
@@ -187,7 +187,9 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     count = re.search(r"\b(\d+|two|three|four|five|six)\s+(?:blocks|cubes)\b", t)
     added = re.search(rf"\badd\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b", t) or \
         re.fullmatch(rf"\s*(?:and\s+|now\s+|also\s+)*(?:put\s+|place\s+)?(?:the|a|an)\s+({COLOR_RE})\s+(?:block|cube|one)\s+"
-                     rf"(?:too|as well)\s*", t)
+                     rf"(?:(?:on|onto|in)\s+(?:the\s+(?:{COLOR_RE}\s+)?(?:goal\s+)?patch|it)\s+)?(?:too|as well)\s*", t) or \
+        re.fullmatch(rf"\s*(?:and\s+|now\s+)*(?:also\s+)?(?:put|place)\s+(?:the|a|an)\s+({COLOR_RE})\s+(?:block|cube|one)\s+"
+                     rf"(?:on|onto|in)\s+(?:the\s+(?:{pcolor}\s+)?(?:goal\s+)?patch|it)\s*(?:too|as well)?\s*", t)
     if count:
         n = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6}.get(count.group(1)) or int(count.group(1))
         if not 1 <= n <= 6:
@@ -195,7 +197,7 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         spare = [c for c in DEFAULT_COLORS if c not in colors]
         colors, intent = (colors + spare)[:n] if n > len(colors) else colors[:n], "tweak"
     elif added:
-        colors, intent = colors + [canon_color(added.group(1))], "extend"
+        colors, intent = colors + [canon_color(next(g for g in added.groups() if g))], "extend"
     if intent is None:
         return None
     return f"Place {cube_list(colors)} onto the {pcolor}{' long' if shape == 'long' else ''} goal patch", intent

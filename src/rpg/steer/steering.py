@@ -18,6 +18,7 @@ hash) moves the head back to that version instead of duplicating it.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Literal
@@ -44,6 +45,7 @@ from rpg.steer.edits import (
     intent_of_standalone,
     interpret,
     strip_edit_words,
+    unread_colors,
 )
 from rpg.steer.family import (
     LOCK_TIMEOUT_S,
@@ -192,9 +194,15 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
             except BadInput as exc:
                 raise SteerError(str(exc)) from None
         return schema, schema.instruction, "tweak"
+    if ref_spec is None and all(o.op == "add" for o in plan.ops):
+        return _addition(plan, reference, ref_schema)  # "also stack a white block on the cyan one": a clause of its own
     if ref_spec is None:
         raise SteerError(f"v{reference} ({ref_schema.goal_summary}) is not a structure the builtin steering edits in place; "
                          "state the whole new task in the edit, or use --model")
+    unread = unread_colors(plan)
+    if unread:
+        raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": {', '.join(repr(c) for c in unread)} has no place in the "
+                         f"change read ({', '.join(o.op for o in plan.ops)}); say it in a separate edit, or use --model")
     spec = apply_ops(ref_spec, plan.ops, keep_layers=carried.layers)
     after = carried_after(ref_spec, carried, plan.ops)
     if any(o.op == "add_layer" for o in plan.ops) and spec.kind.layered and len(set(spec.colors())) > 1:
@@ -216,7 +224,7 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
     """
     from collections import Counter
 
-    from rpg.schema.meaning import meaning
+    from rpg.schema.meaning import descriptor, meaning
 
     where = f"v{reference} ({ref_schema.goal_summary})"
     clause = addition_clause(plan.text)
@@ -230,6 +238,12 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
     except (BadInput, ValueError) as exc:
         raise SteerError(f"cannot add \"{clause}\" to {where}: {str(exc).splitlines()[0]}") from None
     before, now = Counter(meaning(ref_schema)), Counter(meaning(schema))
+    had = Counter(descriptor(a) for a in ref_schema.assets)
+    invented = [d for d in Counter(descriptor(a) for a in schema.assets) - had
+                if not re.search(rf"\b{re.escape(d.split(':')[-1])}\b", clause, re.IGNORECASE)]
+    if invented:
+        raise SteerError(f"cannot add \"{clause}\" to {where}: together they read as {schema.goal_summary!r}, with "
+                         f"{', '.join(invented)} nobody named; name it, or state the whole new task in the edit")
     if before - now or not now - before:
         raise SteerError(f"cannot add \"{clause}\" to {where}: together they read as {schema.goal_summary!r}, which does not "
                          "keep the task's goal and add to it; state the whole new task in the edit, or use --model")
