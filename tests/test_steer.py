@@ -607,6 +607,14 @@ def test_steering_words_live_in_the_lexicon():
     ("Build a tower of 3 red blocks", "now a line instead", "Arrange the blocks in order red, red, red from left to right"),
     ("Put the green block on the red patch", "put a purple block on the patch too",
      "Place the green block and the purple block onto the red goal patch"),
+    # "it" of a relation is the cube it moves; sizes said "3 by 3"; a word to spell; a colour "instead"
+    ("Place the red block behind the yellow block", "make it blue", "Place the blue block behind the yellow block"),
+    ("Make a 2x2 grid of red blocks", "make it 3 by 3", "Make a 3x3 grid of red blocks"),
+    ("Spell CAT with letter cubes", "make it spell DOG", "Spell the word 'DOG' using letter cubes arranged in a line from left to right"),
+    ("Build a tower of 3 red blocks", "use blue instead", "Build a tower from bottom to top: blue, blue, blue"),
+    # a cube added beside a structure, in a clause of its own: the structure kept
+    ("Put the red block on the blue block", "now put a green block on the table to the left of the blue block",
+     "Put the red block on the blue block, then put a green block on the table to the left of the blue block"),
     ("Build a pyramid of 6 green blocks", "make the top layer red and the bottom layer blue",
      "Build a pyramid of blue, green and red blocks with a base of 3 with 3 blue blocks at the bottom, 2 green blocks in the "
      "middle and 1 red block on top"),
@@ -635,6 +643,9 @@ def test_edit_instructions_state_exactly_what_was_asked(base, edit, expected):
     ("Build a tower of red, green and blue blocks", "make the top one white", "no cube the top place"),
     ("Build a tower of red, green and blue blocks", "add a yellow block on top", "gives no cube a place"),
     ("Build a tower of red, green and blue blocks", "put the blue one at the bottom", "no places"),
+    # a cube named as if it were there ("the green block") that the task lacks
+    ("Stack the red block on the blue block", "now add a yellow one on top of the green block", "no cube matching"),
+    ("Build a tower from bottom to top: red, green, blue", "remove the red and the blue block", "'blue' has no place"),
     ("Build a tower of red, green and blue blocks", "make it 2 towers", "names no change"),
     ("Align 3 blocks in a single straight line: red, green, blue", "add a yellow block at the right end", "gives no cube a place"),
     ("Align 3 blocks in a single straight line: red, green, blue", "reverse it", "no order"),

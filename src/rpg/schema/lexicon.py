@@ -467,6 +467,18 @@ EDIT_ANAPHORA_RE = re.compile(
 ("it", "them", "the orange one"), additions ("also", "too", "as well"), edit verbs and a
 reference to what exists ("the tower you just built", "the existing line")."""
 
+_EDIT_STRUCTURE_WORDS = "|".join(f"{w}s?" for k in STRUCTURE_KINDS.values() for w in k.words)
+
+EDIT_REFERS_RE = re.compile(
+    r"\b(?:the|that|this)\s+(?:whole\s+|entire\s+)?(?:" + _EDIT_STRUCTURE_WORDS + r"|wall|structure|thing)\b(?!\s+(?:of|with)\b)"
+    r"|\b(?:it|them|they|its|their|those|these|both|whole)\b|\bthe\s+(?:[a-z]+\s+)?(?:[a-z]+\s+and\s+[a-z]+\s+)?ones?\b"
+    r"|\b(?:the|that|this|your|my|our)\s+(?:existing|current|same|present|old)\b")
+"""Words of an edit that stand for what the task has ("it", "the orange one", "the tower"):
+with them and no change read, the edit is no whole new task (it is refused)."""
+
+EDIT_CHANGE_VERB_RE = re.compile(r"\b(?:change|replace|swap|substitute|remove|delete|flip|reverse|invert|undo|revert|paint|recolou?r)\b")
+"""Verbs that change a task and state no task: an edit with one and no change read is refused."""
+
 EDIT_ADDITIVE_RE = re.compile(r"\b(?:also|too|as well|add|additionally|another|in addition|plus)\b")
 """Words that make an edit an addition: what it states joins the task, the rest is kept."""
 

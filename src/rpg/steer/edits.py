@@ -27,10 +27,12 @@ from rpg.schema.lexicon import (
     EDIT_ADDITIVE_RE,
     EDIT_ANAPHORA_RE,
     EDIT_BESIDE_RE,
+    EDIT_CHANGE_VERB_RE,
     EDIT_COUNT_RE,
     EDIT_FRESH_RE,
     EDIT_INEXPRESSIBLE,
     EDIT_LEADING_RE,
+    EDIT_REFERS_RE,
     EDIT_SHOULD_BE_RE,
     IGNORABLE,
     IGNORABLE_MORE,
@@ -40,7 +42,7 @@ from rpg.schema.lexicon import (
     is_dictionary_word,
 )
 from rpg.schema.readers.common import item_sequence
-from rpg.schema.reading import canon_color
+from rpg.schema.reading import canon_color, region_name
 from rpg.schema.structures import STRUCTURE_KINDS, STRUCTURE_RE, pyramid_count, structure_of_word
 from rpg.steer.spec import Item, TaskSpec
 
@@ -145,6 +147,7 @@ def normalize_edit(text: str) -> str:
     t = t.lower()
     t = re.sub(r"[\u2018\u2019\u201c\u201d`\"]", "'", t)
     t = re.sub(r"''+", "'", t)
+    t = re.sub(r"\b(\d+)\s*(?:by|\u00d7)\s*(\d+)\b", r"\1x\2", t)
     # "one" is a count only where a count stands ("one more block", "just one"); "the orange one" is a cube
     t = re.sub(r"\bone\b(?=\s+(?:more|fewer|less|blocks?|cubes?|layers?|rows?|levels?|tall|high|wide|long)\b)"
                r"|\b((?:just|only|like|use|with|to|have) )one\b(?!\s+(?:of|at|on|in)\b)", lambda m: (m.group(1) or "") + "1", t)
@@ -272,9 +275,29 @@ def _region_of(t: str) -> str | None:
 
     m = re.search(r"\b(?:move|put|place|shift|bring|slide|build|set|push|have|make|keep)\s+(?:it|them|everything|the\s+whole\s+thing"
                   r"|(?:the\s+)?(?:whole\s+|entire\s+)?(?:" + STRUCTURE_RE + r"|wall|blocks|cubes))\s+(?P<where>.*)", t)
-    if not m or not re.search(r"\b(?:table|corner|side|edge|half|workspace)\b", m.group("where")):
+    if not m:
         return None
-    return _edit_region(" " + m.group("where") + " ")
+    where = m.group("where")
+    structure = not re.match(r"(?:it|them)\b", m.group(0).split(None, 1)[1])
+    if not re.search(r"\b(?:table|corner|side|edge|half|workspace)\b", where):
+        # "put the tower on the left": a side alone, when the structure itself is moved there
+        side = re.match(r"(?:on|to|at|in)\s+the\s+(?:far\s+)?(left|right|front|back|middle|center|centre)\b(?!\s+(?:of|end)\b)", where)
+        return region_name(*((None, side.group(1)) if side.group(1) in ("left", "right", "middle", "center", "centre")
+                             else (side.group(1), None))) if side and structure else None
+    return _edit_region(" " + where + " ")
+
+
+def _adds_a_cube(add: re.Match, t: str) -> bool:
+    """Whether a verb's phrase brings in a cube: "add ...", or "put/stack a (new) ..." (not "put it
+    on the blue patch", "put the blue block on the red block"; "also put the yellow block on it" is)."""
+    if add.group("verb") not in ("add", "append", "include") and not re.search(
+            r"\b(?:an?|another|\d+|more|some|new|extra)\b", add.group("what")) and not (
+            EDIT_ADDITIVE_RE.search(t) and re.fullmatch(rf"\s*the\s+(?:{COLOR_RE})\s+(?:block|cube)\s*", add.group("what"))):
+        return False
+    if re.search(r"\bpatch", add.group("what") + t[add.end():]):
+        return False  # a patch: not a cube of the structure
+    return bool(item_sequence(add.group("what")) or re.search(
+        r"\b(?:blocks?|cubes?)\b|^\s*(?:\d+|another|1)\s+more\s*$|^\s*another\s*(?:one\s*)?$", add.group("what")))
 
 
 def read_ops(t: str) -> list[Op]:
@@ -285,7 +308,10 @@ def read_ops(t: str) -> list[Op]:
     source = _materials(substitution.group(1)) if substitution else []
     mats = [m for m in _materials(t) if m not in source]
     word = re.search(r"\b(?:change|make|turn|set)\s+(?:the\s+)?word\s+(?:to|into)\s+'?([a-z]{2,})'?|\bspell\s+'?([a-z]{2,})'?\s+instead\b"
-                     r"|\b(?:change|make|turn|switch)\s+(?:it|that|this)\s+(?:to|into)\s+(?:spell\s+)?'([a-z]{2,})'", t)
+                     r"|\b(?:change|make|turn|switch)\s+(?:it|that|this)\s+(?:to|into)\s+(?:spell\s+)?'([a-z]{2,})'"
+                     r"|\b(?:make|have|let)\s+(?:it|them|the\s+(?:line|row|cubes|blocks|letters))\s+(?:spell|say|read)\s+(?:out\s+)?'([a-z]{2,})'"
+                     r"|\b(?:make|have|let)\s+(?:it|them|the\s+(?:line|row|cubes|blocks|letters))\s+spell\s+(?:out\s+)?"
+                     r"(?!(?:backwards?|it|them|the|from|in|right|left|out)\b)([a-z]{2,})\b", t)
     if word:
         ops.append(Op("word", {"word": next(g for g in word.groups() if g).upper()}))
     ncolors = re.search(r"\b(?:use|with|have|make it|in)\s+(\d+)\s+(?:different\s+)?colou?rs\b", t)
@@ -313,7 +339,7 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("ordering", {"key": "color", "descending": False}))
     if mats and not reverse and not ncolors:
         ops.append(Op("material", {"to": mats[0] if len(mats) == 1 else "mixed", **({"from": source[0]} if source else {})}))
-    move = re.search(r"\b(?:put|move|place|bring)\s+the\s+(?P<sel>[a-z0-9' ]+?)\s+(?:one|block|cube)?\s*(?:at|to|on)\s+(?:the\s+)?"
+    move = re.search(r"\b(?:put|move|place|bring)\s+the\s+(?P<sel>(?:[a-z0-9']+\s+){0,2}?[a-z0-9']+)\s+(?:one|block|cube)?\s*(?:at|to|on)\s+(?:the\s+)?"
                      r"(?:very\s+)?(?P<where>top|bottom|base|start|end|beginning)\b(?!\s+(?:of\s+the\s+table|left|right|corner))", t)
     region = _region_of(t)
     if region:
@@ -339,17 +365,12 @@ def read_ops(t: str) -> list[Op]:
                              "state the whole new task")
         color = re.search(rf"\b({COLOR_RE})\b", rest)
         ops.append(Op("add_layer", {"color": canon_color(color.group(1)) if color else None}))
-    add = None if layer or (substitution and mats) or any(o.op in ("move", "pattern") for o in ops) else re.search(
+    adds = [] if layer or (substitution and mats) or any(o.op in ("move", "pattern") for o in ops) else re.finditer(
         r"\b(?P<verb>add|append|include|put|place|stack|set)\b(?P<what>.*?)(?P<where>\bon top\b|\b(?:at|to|on) (?:the )?(?:very )?(?:top|bottom|base|end|start|beginning)\b|"
-        r"\b(?:under|underneath|beneath|below)\b|\bto the (?:left|right|end|start)\b|\bon the (?:left|right)\b|\bon(?:to)?(?= (?:the|it|them|that)\b)"
+        r"\b(?:under|underneath|beneath|below)\b|\bto the (?:left|right|end|start)\b|\bon the (?:left|right)\b|\bon(?:to)?(?= (?:the|it|them|that)\b)(?! the table\b)"
         r"|[;,.]|\band\b|$)", t)
-    if add and add.group("verb") not in ("add", "append", "include") and not re.search(
-            r"\b(?:an?|another|\d+|more|some|new|extra)\b", add.group("what")):
-        add = None  # "put it on the blue patch", "put the blue block on the red block": no cube added
-    if add and re.search(r"\bpatch", add.group("what") + t[add.end():]):
-        add = None  # a patch: not a cube of the structure
-    if add and (item_sequence(add.group("what")) or re.search(r"\b(?:blocks?|cubes?)\b|^\s*(?:\d+|another|1)\s+more\s*$|^\s*another\s*(?:one\s*)?$",
-                                                                  add.group("what"))):
+    add = next((a for a in adds if _adds_a_cube(a, t)), None)
+    if add:
         what = add.group("what")
         beside = EDIT_BESIDE_RE.search(what)
         second = re.search(r"\b(?:an?|another|one|\d+|new|second|other)\s+(?:[a-z]+\s+){0,2}?" + STRUCTURE_RE, what)
@@ -379,6 +400,10 @@ def read_ops(t: str) -> list[Op]:
     swap = re.search(r"\bswap\s+(?:the\s+)?(?P<a>[a-z0-9' ]+?)\s+(?:block\s+|cube\s+)?and\s+(?:the\s+)?(?P<b>[a-z0-9' ]+?)(?:\s+(?:blocks?|cubes?))?(?:\s*$|[;,.])", t)
     if swap and _selector(swap.group("a")) and _selector(swap.group("b")) and not reverse:
         ops.append(Op("swap", {"a": _selector(swap.group("a")), "b": _selector(swap.group("b"))}))
+    recolor_all = re.fullmatch(rf"(?:(?:ok|okay|actually|now|maybe|hmm)\s+)*(?:use\s+|try\s+|with\s+|make\s+it\s+)?(?P<new>{COLOR_RE})"
+                               rf"(?:\s+(?:blocks|cubes|ones))?\s+instead\W*", t)
+    if recolor_all:
+        ops.append(Op("recolor", {"select": {"all": True, "uniform": True}, "to": {"color": canon_color(recolor_all.group("new"))}}))
     instead = re.search(rf"\b(?:use\s+)?(?:an?\s+|the\s+)?(?P<new>{COLOR_RE})(?:\s+(?:block|cube)s?)?\s+(?:instead of|rather than|in place of)\s+(?:the\s+)?(?P<old>{COLOR_RE})\b", t)
     if instead:
         ops.append(Op("recolor", {"select": {"color": canon_color(instead.group("old"))}, "to": {"color": canon_color(instead.group("new"))}}))
@@ -510,14 +535,8 @@ def interpret(edit: str) -> EditPlan:
     return EditPlan(edit, cue, standalone=not (REFERS_RE.search(t) or EDIT_ADDITIVE_RE.search(t) or EDIT_VERB_RE.search(t)))
 
 
-REFERS_RE = re.compile(r"\b(?:the|that|this)\s+(?:whole\s+|entire\s+)?(?:" + STRUCTURE_RE + r"|wall|structure|thing)(?!\s+(?:of|with)\b)"
-                       r"|\b(?:it|them|they|its|their|those|these|both|whole)\b|\bthe\s+(?:[a-z]+\s+)?(?:[a-z]+\s+and\s+[a-z]+\s+)?ones?\b"
-                       r"|\b(?:the|that|this|your|my|our)\s+(?:existing|current|same|present|old)\b")
-"""Words of an edit that stand for what the task has: with them and no change read, the edit
-is no whole new task."""
-
-EDIT_VERB_RE = re.compile(r"\b(?:change|replace|swap|substitute|remove|delete|flip|reverse|invert|undo|revert|paint|recolou?r)\b")
-"""Verbs that change a task and state none: an edit with one and no change read is refused."""
+REFERS_RE = EDIT_REFERS_RE
+EDIT_VERB_RE = EDIT_CHANGE_VERB_RE
 
 
 def strip_edit_words(edit: str) -> str:
@@ -597,6 +616,8 @@ def _indices(spec: TaskSpec, sel: dict) -> list[int]:
     n = len(spec.items)
     if sel.get("both") and n != 2:
         raise SteerError(f"'both' names two cubes, but the {spec.structure} has {n}; say which")
+    if sel.get("uniform") and len(set(spec.colors())) > 1:
+        raise SteerError(f"the {spec.structure} has cubes of {len(set(spec.colors()))} colours; say which to change")
     if sel.get("all"):
         return list(range(n))
     if "end" in sel:
@@ -818,6 +839,9 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False) -> TaskS
             if p.get("onto"):
                 end = 0 if p.get("at") == "bottom" else len(spec.items) - 1
                 idx = _indices(spec, p["onto"])
+                if not idx:
+                    raise SteerError(f"the task has no cube matching {p['onto']} to add one {'under' if end == 0 else 'on'}; it has "
+                                     f"{', '.join(i.phrase() for i in spec.items)}")
                 if idx != [end]:
                     raise SteerError(f"the cube {'under' if end == 0 else 'on'} which the edit adds one ({p['onto']}) is not the "
                                      f"{'bottom' if end == 0 else 'top'} of the {spec.structure}; the builtin steering adds cubes at "

@@ -31,6 +31,7 @@ from rpg.errors import BadInput
 from rpg.schema.builtin import parse
 from rpg.schema.edits import recolor
 from rpg.schema.feasibility import check_feasibility
+from rpg.schema.lexicon import NO_GOAL_RE
 from rpg.schema.model import TaskSchema
 from rpg.steer.carried import render as render_carried
 from rpg.steer.carried import split
@@ -186,6 +187,12 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         if plan.cue.kind != "current":  # "go back to version 1": that version as it is
             return ref_schema, ref_schema.instruction, "tweak"
         return _addition(plan, reference, ref_schema)
+    rel = relation_of(ref_schema) if ref_spec is None else None
+    if rel is not None and re.search(r"\bit\b", plan.text, re.IGNORECASE) and all(
+            o.op == "recolor" and o.params["select"] == {"all": True} for o in plan.ops) and len(plan.ops) == 1:
+        subject = next(a for a in ref_schema.assets if a.name == rel.subject)  # "make it blue": the cube the relation moves
+        if subject.color:
+            plan.ops[0].params["select"] = {"color": subject.color}
     if ref_spec is None and all(o.op == "recolor" and "color" in o.params["select"] for o in plan.ops):
         schema = ref_schema
         for o in plan.ops:
@@ -203,7 +210,16 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     if unread:
         raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": {', '.join(repr(c) for c in unread)} has no place in the "
                          f"change read ({', '.join(o.op for o in plan.ops)}); say it in a separate edit, or use --model")
-    spec = apply_ops(ref_spec, plan.ops, keep_layers=carried.layers)
+    try:
+        spec = apply_ops(ref_spec, plan.ops, keep_layers=carried.layers)
+    except SteerError:
+        if not all(o.op == "add" for o in plan.ops):
+            raise
+        try:  # a cube added beside the structure, in a clause of its own: the rest kept
+            return _addition(plan, reference, ref_schema)
+        except SteerError:
+            pass
+        raise
     after = carried_after(ref_spec, carried, plan.ops)
     if any(o.op == "add_layer" for o in plan.ops) and spec.kind.layered and len(set(spec.colors())) > 1:
         after = replace(after, layers=True)  # "add a third row on top, in black": that layer's colour is judged
@@ -228,6 +244,10 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
 
     where = f"v{reference} ({ref_schema.goal_summary})"
     clause = addition_clause(plan.text)
+    action = NO_GOAL_RE.search(plan.text.lower())
+    if action is not None and not re.search(r"\b(?:on|onto|in|into|next|beside|behind|under|left|right|front|top)\b", plan.text.lower()):
+        raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\" to {where}: it says no end state: "
+                         f"'{action.group(0)}' is an action, and a task's goal says where cubes end up; say where the cube should go")
     if clause is None:
         raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\" to {where}: it refers to the task but names no "
                          "change the builtin steering reads (add, remove, recolour, resize, reorder, move it, another "
@@ -239,8 +259,9 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
         raise SteerError(f"cannot add \"{clause}\" to {where}: {str(exc).splitlines()[0]}") from None
     before, now = Counter(meaning(ref_schema)), Counter(meaning(schema))
     had = Counter(descriptor(a) for a in ref_schema.assets)
-    invented = [d for d in Counter(descriptor(a) for a in schema.assets) - had
-                if not re.search(rf"\b{re.escape(d.split(':')[-1])}\b", clause, re.IGNORECASE)]
+    invented = [d for d in Counter(descriptor(a) for a in schema.assets) - had  # a new cube is one said with "a", "another", a count
+                if not re.search(rf"\b(?:an?|another|one more|\d+|two|three|four)\s+(?:new\s+|more\s+|extra\s+)?"
+                                 rf"{re.escape(d.split(':')[-1])}\b", clause, re.IGNORECASE)]
     if invented:
         raise SteerError(f"cannot add \"{clause}\" to {where}: together they read as {schema.goal_summary!r}, with "
                          f"{', '.join(invented)} nobody named; name it, or state the whole new task in the edit")
