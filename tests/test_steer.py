@@ -612,6 +612,10 @@ def test_steering_words_live_in_the_lexicon():
     ("Make a 2x2 grid of red blocks", "make it 3 by 3", "Make a 3x3 grid of red blocks"),
     ("Spell CAT with letter cubes", "make it spell DOG", "Spell the word 'DOG' using letter cubes arranged in a line from left to right"),
     ("Build a tower of 3 red blocks", "use blue instead", "Build a tower from bottom to top: blue, blue, blue"),
+    # a relation's or a patch's cubes made a structure: in no order, since nobody said one
+    ("Put the red block to the left of the blue block", "stack them", "Build a tower: red, blue"),
+    ("Put the red block and the yellow block on the green patch", "make a row of them instead",
+     "Align 2 blocks in a single straight line: red, yellow"),
     # a cube added beside a structure, in a clause of its own: the structure kept
     ("Put the red block on the blue block", "now put a green block on the table to the left of the blue block",
      "Put the red block on the blue block, then put a green block on the table to the left of the blue block"),

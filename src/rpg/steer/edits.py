@@ -461,6 +461,8 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("count", {"delta": -1}))
     shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out|use|do)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+)(?:\d+x\d+(?:x\d+)?\s+)?"
                       rf"{STRUCTURE_RE}", t)
+    stack_all = re.search(r"\b(?:stack|pile)\s+(?:them|all|everything|(?:all\s+)?the\s+(?:blocks|cubes))(?:\s+(?:up|instead|together"
+                          r"|on top of each other|on top of one another))*\W*$", t)
     bare_shape = re.fullmatch(r"(?:(?:now|ok|okay|actually|then|and|maybe|rather)\s+)*(?:as\s+|in\s+|into\s+)?an?\s+"
                               + STRUCTURE_RE + r"(?:\s+(?:instead|now|please))*\W*", t)
     wall = re.search(r"\b(?:make|turn|build|form|change|rearrange|arrange|reshape|into|as)\b[^.;]*?\ban?\s+wall\b", t)
@@ -472,6 +474,8 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("structure", {"to": "block", "dims": [1, int(wide.group(1)), int(high.group(1))]}))
     elif shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
         ops.append(Op("structure", {"to": structure_of_word(shape.group(1))}))
+    elif stack_all and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
+        ops.append(Op("structure", {"to": "tower"}))  # "stack them": a tower of the task's cubes
     elif bare_shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
         ops.append(Op("structure", {"to": structure_of_word(bare_shape.group(1))}))  # "now a line instead"
     return ops

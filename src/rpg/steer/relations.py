@@ -110,6 +110,8 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     else:
         kind = next((k for pattern, k in EDIT_RELATIONS if re.search(pattern, t)), None)
         named = re.findall(r"\bthe (\w+) (?:block|cube)\b", t)
+        if re.search(r"\b(?:stack|pile)\s+(?:them|all|everything|the\s+(?:blocks|cubes))\b", t) and not named:
+            return None  # "stack them": which on which is not said (the structure edit reads it)
         by_color = {a.color: a.name for a in schema.assets if a.kind == "colored_cube"}
         if kind is None or len(named) > 1 or (named and named[0] not in by_color):
             return None  # no relation, or cubes of its own: a whole task, not an edit of this one

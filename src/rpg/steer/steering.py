@@ -33,8 +33,8 @@ from rpg.schema.edits import recolor
 from rpg.schema.feasibility import check_feasibility
 from rpg.schema.lexicon import NO_GOAL_RE
 from rpg.schema.model import TaskSchema
+from rpg.steer.carried import Carried, split
 from rpg.steer.carried import render as render_carried
-from rpg.steer.carried import split
 from rpg.steer.edits import (
     PRESERVATION,
     EditPlan,
@@ -59,7 +59,7 @@ from rpg.steer.family import (
 )
 from rpg.steer.relations import relation_of, rewrite_patch, rewrite_region, same_assets
 from rpg.steer.relations import rewrite as rewrite_relation
-from rpg.steer.spec import TaskSpec, extract
+from rpg.steer.spec import Item, TaskSpec, extract
 
 
 @dataclass
@@ -201,6 +201,20 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
             except BadInput as exc:
                 raise SteerError(str(exc)) from None
         return schema, schema.instruction, "tweak"
+    if ref_spec is None and any(o.op == "structure" for o in plan.ops) and all(
+            o.op in ("structure", "count", "dims", "recolor", "keep") for o in plan.ops):
+        # "put them in a tower instead": the task's cubes, in no order, as the structure named
+        cubes = tuple(Item(color=a.color) if a.kind == "colored_cube" else Item(label=a.label)
+                      for a in ref_schema.assets if a.kind != "goal_patch")
+        ref_spec = TaskSpec("line", cubes, direction=None)
+        spec = apply_ops(ref_spec, plan.ops)
+        if spec.kind.spells and len(set(spec.items)) > 1:
+            spec = replace(spec, direction=None)  # nobody said an order
+        try:
+            instruction, schema = render_carried(spec, Carried(), parse)
+        except BadInput as exc:
+            raise SteerError(str(exc).splitlines()[0]) from None
+        return schema, instruction, "pivot"
     if ref_spec is None and all(o.op == "add" for o in plan.ops):
         return _addition(plan, reference, ref_schema)  # "also stack a white block on the cyan one": a clause of its own
     if ref_spec is None:
