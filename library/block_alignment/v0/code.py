@@ -9,21 +9,18 @@ Randomizations:
 
 Success Conditions:
     - line left to right of red, orange, yellow, green, cyan
-    - sorted by color left to right
 """
 
 from rpg.task_api import (
-    And,
     BlockTask,
     ColoredCube,
     InLine,
-    SortedBy,
     sample_scattered,
 )
 
 
 class AlignBlocksInColorGradientFromLeft90ac9eTask(BlockTask):
-    """Success: line left to right of red, orange, yellow, green, cyan; sorted by color left to right"""
+    """Success: line left to right of red, orange, yellow, green, cyan"""
 
     NAME = 'align_blocks_in_color_gradient_from_left_90ac9e'
     INSTRUCTION = 'Align the blocks in a color gradient from left to right on the table'
@@ -54,7 +51,4 @@ class AlignBlocksInColorGradientFromLeft90ac9eTask(BlockTask):
         return poses
 
     def goal(self):
-        return And([
-            InLine(objects=['red', 'orange', 'yellow', 'green', 'cyan'], order='left_to_right'),
-            SortedBy(objects=['red', 'orange', 'yellow', 'green', 'cyan'], key='color'),
-        ])
+        return InLine(objects=['red', 'orange', 'yellow', 'green', 'cyan'], order='left_to_right')
