@@ -612,6 +612,14 @@ def test_steering_words_live_in_the_lexicon():
     ("Make a 2x2 grid of red blocks", "make it 3 by 3", "Make a 3x3 grid of red blocks"),
     ("Spell CAT with letter cubes", "make it spell DOG", "Spell the word 'DOG' using letter cubes arranged in a line from left to right"),
     ("Build a tower of 3 red blocks", "use blue instead", "Build a tower from bottom to top: blue, blue, blue"),
+    # a stack in any order with one end said: that end kept, a cube added on top is the top said
+    ("Build a tower of 4 blocks with a black block at the bottom", "make the bottom one white",
+     "Stack the white block, the red block, the blue block and the green block with the white block at the bottom"),
+    ("Build a tower of red, green and blue blocks", "add a yellow block on top",
+     "Stack the red block, the green block, the blue block and the yellow block with the yellow block on top"),
+    # an edit opened by "and" keeps the task
+    ("Put the red block to the left of the blue block", "and a yellow block on the blue block",
+     "Place the red block to the left of the blue block, then place the yellow block on top of the blue block"),
     # a relation's or a patch's cubes made a structure: in no order, since nobody said one
     ("Put the red block to the left of the blue block", "stack them", "Build a tower: red, blue"),
     ("Put the red block and the yellow block on the green patch", "make a row of them instead",
@@ -645,8 +653,10 @@ def test_edit_instructions_state_exactly_what_was_asked(base, edit, expected):
     # an addition on a cube that is not the tower's end, or beside an unordered line's end
     ("Build a tower from bottom to top: red, green, blue", "put a yellow block on top of the red one", "not the top"),
     ("Build a tower of red, green and blue blocks", "make the top one white", "no cube the top place"),
-    ("Build a tower of red, green and blue blocks", "add a yellow block on top", "gives no cube a place"),
     ("Build a tower of red, green and blue blocks", "put the blue one at the bottom", "no places"),
+    # a vague degree is no count; a stack in any order with its bottom said takes no second end
+    ("Build a tower of 3 red blocks", "make it a bit taller", "vague quantity"),
+    ("Build a tower of 4 blocks with a black block at the bottom", "add a red block on top", "one end said"),
     # a cube named as if it were there ("the green block") that the task lacks
     ("Stack the red block on the blue block", "now add a yellow one on top of the green block", "no cube matching"),
     ("Build a tower from bottom to top: red, green, blue", "remove the red and the blue block", "'blue' has no place"),
@@ -677,3 +687,13 @@ def test_an_addition_to_a_relation_names_its_cube_by_one(tmp_path):
 
     text, intent = rewrite("add a brown block behind the purple one", parse("Put the yellow block in front of the purple block"))
     assert intent == "extend" and text.endswith("place the brown block behind the purple block")
+
+
+def test_an_edit_that_changes_nothing_is_refused(tmp_path):
+    """An edit of the current version whose goal comes out as it was was not read as meant."""
+    fam = compile_instruction("Build a tower of 3 red blocks", tmp_path, name="fam").path
+    before = (fam / "family.yaml").read_bytes() if (fam / "family.yaml").exists() else None
+    with pytest.raises(SteerError, match="changes nothing"):
+        steer(fam, "make it red")
+    if before is not None:
+        assert (fam / "family.yaml").read_bytes() == before

@@ -515,5 +515,11 @@ EDIT_COUNT_RE = re.compile(
 """A count an edit gives its structure ("just two", "like 3 blocks", "make it four tall", "four
 wide"); ``dim`` (tall, wide...) says which side."""
 
+EDIT_VAGUE_RE = re.compile(
+    r"\b(?:a\s+(?:little|bit|tad|lot)|a\s+little\s+bit|slightly|much|way|somewhat|lots|far|even|a\s+few\s+more)\s+"
+    r"(?:more\s+)?(?:taller|shorter|bigger|smaller|higher|lower|longer|wider|narrower|closer|further|farther|larger|more|less)\b")
+"""A comparative with a vague degree ("a bit taller", "much longer", "slightly closer"): with no
+count said in the edit, it names no exact change (refused as a quantity)."""
+
 EDIT_SHOULD_BE_RE = r"(?:should|must|shall|will|would|can|could|has to|have to|needs? to)?\s*(?:be|become|turn|go)"
 """How an edit says what a cube should be ("the top block should be red", "both should be white")."""

@@ -15,10 +15,10 @@ import re
 from collections import Counter
 from dataclasses import dataclass, replace
 
-from rpg.domain.predicates import And, InLayers, InRegion, UnorderedStack
+from rpg.domain.predicates import AnchoredStack, And, InLayers, InRegion, UnorderedStack
 from rpg.errors import BadInput
 from rpg.schema.model import TaskSchema
-from rpg.schema.structures import STRUCTURE_WORDS, TaskSpec, extract, join_words
+from rpg.schema.structures import STRUCTURE_WORDS, Item, TaskSpec, cube_list, extract, join_words
 from rpg.schema.structures import render as render_spec
 
 REGION_PHRASES = {"center": "in the center of the table", "left": "on the left side of the table",
@@ -41,6 +41,8 @@ class Carried:
 
     region: str | None = None
     layers: bool = False
+    ends: frozenset[str] = frozenset()
+    """The ends ("bottom", "top") of a stack in any order whose cube is said (``AnchoredStack``)."""
 
 
 def split(schema: TaskSchema) -> tuple[TaskSpec | None, Carried]:
@@ -56,6 +58,13 @@ def split(schema: TaskSchema) -> tuple[TaskSpec | None, Carried]:
 
 def _split(schema: TaskSchema) -> tuple[TaskSpec | None, Carried]:
     conj = list(schema.goal.conjuncts())
+    if len(conj) == 1 and type(conj[0]) is AnchoredStack and not (conj[0].bottom and conj[0].top):
+        assets = {a.name: a for a in schema.assets}
+        if any(a.kind == "goal_patch" for a in schema.assets):
+            return None, Carried()
+        items = tuple(Item(color=assets[n].color) if assets[n].kind == "colored_cube" else Item(label=assets[n].label)
+                      for n in conj[0].objects)
+        return TaskSpec("tower", items, direction=None), Carried(ends=frozenset({"bottom"} if conj[0].bottom else {"top"}))
     regions = [p for p in conj if isinstance(p, InRegion)]
     layers = [p for p in conj if isinstance(p, InLayers)]
     if not regions and not layers:
@@ -117,7 +126,19 @@ def _counted(spec: TaskSpec, text: str) -> str | None:
     return text[:m.start()] + ": " + join_words([f"{n} {c} block{'s' if n > 1 else ''}" for c, n in counts.items()])
 
 
+def _anchored(spec: TaskSpec, carried: Carried) -> str:
+    """"Stack the red, green, blue and yellow blocks with the yellow block on top": a stack in
+    any order whose one end's cube is said."""
+    if len(carried.ends) != 1 or spec.material != "colors":
+        raise BadInput("the builtin steering states a stack in any order with one end said, of coloured cubes only")
+    end = next(iter(carried.ends))
+    cube = spec.items[0 if end == "bottom" else -1].color
+    return f"Stack {cube_list(spec.colors())} with the {cube} block {'at the bottom' if end == 'bottom' else 'on top'}"
+
+
 def _variants(spec: TaskSpec, carried: Carried) -> list[str]:
+    if carried.ends:
+        return [_anchored(spec, carried)]
     texts = [render_spec(spec)]
     if spec.direction is None:  # no order said: a statement without its direction words
         texts.insert(0, re.sub(r"\s+from (?:bottom to top|top to bottom|left to right|right to left|front to back|back to front)\b",
@@ -190,10 +211,14 @@ def render(spec: TaskSpec, carried: Carried, parse) -> tuple[str, TaskSchema]:
             last = str(exc).splitlines()[0]
             continue
         got, got_carried = split(schema)
-        if got is None or got_carried.region != carried.region or got_carried.layers != carried.layers:
+        if got is None or got_carried != carried:
             last = f"the parser reads {text!r} as {schema.goal_summary!r}"
             continue
-        if carried.layers:
+        if carried.ends:
+            end = 0 if "bottom" in carried.ends else -1
+            if sorted(map(str, got.items)) == sorted(map(str, spec.items)) and got.items[end] == spec.items[end]:
+                return text, schema
+        elif carried.layers:
             if (got.structure, got.dims, sorted(map(str, got.items))) == (spec.structure, spec.dims, sorted(map(str, spec.items))) \
                     and _layers_exact(spec, schema):
                 return text, schema

@@ -34,6 +34,7 @@ from rpg.schema.lexicon import (
     EDIT_LEADING_RE,
     EDIT_REFERS_RE,
     EDIT_SHOULD_BE_RE,
+    EDIT_VAGUE_RE,
     IGNORABLE,
     IGNORABLE_MORE,
     INEXPRESSIBLE,
@@ -177,6 +178,10 @@ def refuse_inexpressible(edit: str, t: str) -> None:
     Raises:
         SteerError: the edit says one.
     """
+    vague = EDIT_VAGUE_RE.search(t)
+    if vague and not EDIT_COUNT_RE.search(t):  # "make it a bit taller" (a number said, "like 3 blocks", is a count)
+        raise SteerError(f"cannot apply the edit \"{edit.strip()[:80]}\": '{vague.group(0)}' is a vague quantity: rpg's counts are "
+                         "exact and its relations qualitative; say how many blocks (e.g. \"make it 5 blocks tall\")")
     for _cls, pattern, why in (*EDIT_INEXPRESSIBLE, *(c for c in INEXPRESSIBLE if c[0] != "reference")):
         m = re.search(pattern, t)
         if m:
@@ -488,8 +493,10 @@ TASK_NOUN_RE = re.compile(r"\b(?:towers?|stacks?|stacked|lines?|rows?|circles?|c
 
 
 def looks_standalone(t: str) -> bool:
-    """True when a normalised edit reads as a whole task rather than a change to one."""
-    return not ANAPHORA_RE.search(t) and bool(TASK_NOUN_RE.search(t))
+    """True when a normalised edit reads as a whole task rather than a change to one (an
+    addition, "also ...", "and a yellow block on the blue one", keeps the task)."""
+    return not ANAPHORA_RE.search(t) and not EDIT_ADDITIVE_RE.search(t) and not re.match(r"\s*and\b", t) \
+        and bool(TASK_NOUN_RE.search(t))
 
 
 def intent_of_ops(ops: list[Op], spec: TaskSpec | None = None) -> str:
@@ -616,8 +623,10 @@ def _layer_indices(spec: TaskSpec, where: str) -> list[int]:
     return list(range(start, start + sizes[k]))
 
 
-def _indices(spec: TaskSpec, sel: dict) -> list[int]:
+def _indices(spec: TaskSpec, sel: dict, anchors: frozenset[str] = frozenset()) -> list[int]:
     n = len(spec.items)
+    if sel.get("position") in anchors and sel["position"] in ("bottom", "top"):
+        return [0 if sel["position"] == "bottom" else n - 1]  # the end a stack in any order has its cube at
     if sel.get("both") and n != 2:
         raise SteerError(f"'both' names two cubes, but the {spec.structure} has {n}; say which")
     if sel.get("uniform") and len(set(spec.colors())) > 1:
@@ -687,13 +696,19 @@ def unread_colors(plan: EditPlan) -> list[str]:
 def carried_after(spec: TaskSpec, carried, ops: list[Op]):
     """The modifiers (:class:`rpg.steer.carried.Carried`) after the edit: a region it moves
     the structure to; judged layers once it gives a layered structure's layer a colour."""
+    ends = set(carried.ends)
     for o in ops:
+        if o.op == "add" and spec.direction is None and spec.structure in ANCHORED_KINDS and (o.params.get("end") or o.params.get("onto")):
+            ends.add(o.params.get("at") or "top")  # "add a yellow block on top" of a stack in any order: its top said
+        if o.op == "remove" and ends:
+            gone = set(_indices(spec, o.params["select"], frozenset(ends)))
+            ends -= {e for e, i in (("bottom", 0), ("top", len(spec.items) - 1)) if i in gone}
         if o.op == "region":
             carried = replace(carried, region=o.params["region"])
         sel = o.params.get("select") or {}
         if o.op in ("recolor", "relabel") and spec.kind.layered and ("layer" in sel or "position" in sel):
             carried = replace(carried, layers=True)
-    return carried
+    return replace(carried, ends=frozenset(ends))
 
 
 def _resize(spec: TaskSpec, n: int) -> TaskSpec:
@@ -728,6 +743,9 @@ APPLY_ORDER = ("keep", "region", "structure", "add_layer", "material", "word", "
 """Order in which an edit's operations are applied to the spec."""
 
 
+ANCHORED_KINDS = ("tower",)
+"""Kinds whose cubes in any order may have one end's cube said (:class:`~rpg.domain.predicates.AnchoredStack`)."""
+
 DIM_AXES: dict[str, dict[str, int]] = {
     "block": {"deep": 0, "wide": 1, "long": 1, "tall": 2, "high": 2, "level": 2, "layer": 2, "storey": 2, "story": 2},
     "grid": {"deep": 0, "wide": 1, "long": 1},
@@ -761,7 +779,7 @@ def _resize_dims(spec: TaskSpec, dims: tuple[int, ...], keep_layers: bool = Fals
     return new.with_items([Item(color=layer[0]) for layer, size in zip(layers, sizes, strict=True) for _ in range(size)])
 
 
-def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False) -> TaskSpec:
+def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors: frozenset[str] = frozenset()) -> TaskSpec:
     """The spec after the edit's operations, in order.
 
     Operations apply in :data:`APPLY_ORDER` (material before ordering, and so on), whatever
@@ -821,7 +839,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False) -> TaskS
             if spec.kind.spells and not _orders_cubes(spec):
                 raise SteerError(f"the {spec.structure}'s goal gives its cubes no order (any order holds), so there is none to "
                                  "reverse; say the order it should have (e.g. \"from left to right: red, green, blue\")")
-            keep = set(_indices(spec, p["keep"])) if p.get("keep") else set()
+            keep = set(_indices(spec, p["keep"], anchors)) if p.get("keep") else set()
             idx = [i for i, it in enumerate(spec.items) if i not in keep and (not p.get("colors_only") or it.label is None)]
             items = list(spec.items)
             for i, j in zip(idx, reversed(idx), strict=True):
@@ -837,12 +855,13 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False) -> TaskS
                 raise SteerError(f"a cube added beside a {spec.structure} ({p['side']!r}) is not part of it, which the "
                                  "builtin steering cannot place (it adds cubes to the structure itself); state the "
                                  "whole new task in the edit, or use --model")
-            if p.get("end") and spec.kind.spells and not _orders_cubes(spec):
+            anchorable = spec.structure in ANCHORED_KINDS and spec.direction is None and p.get("at") not in anchors
+            if p.get("end") and spec.kind.spells and not _orders_cubes(spec) and not anchorable:
                 raise SteerError(f"'{p['end']}': the {spec.structure}'s goal gives no cube a place (any order holds), so a cube "
                                  "added there cannot be judged; say the order of the whole line, or state the whole new task")
             if p.get("onto"):
                 end = 0 if p.get("at") == "bottom" else len(spec.items) - 1
-                idx = _indices(spec, p["onto"])
+                idx = _indices(spec, p["onto"], anchors)
                 if not idx:
                     raise SteerError(f"the task has no cube matching {p['onto']} to add one {'under' if end == 0 else 'on'}; it has "
                                      f"{', '.join(i.phrase() for i in spec.items)}")
@@ -874,7 +893,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False) -> TaskS
             if spec.kind.spells and not _orders_cubes(spec):
                 raise SteerError(f"the {spec.structure}'s goal gives its cubes no places (any order holds), so one moved to its "
                                  f"{p['at']} cannot be judged alone; say the order of the whole {spec.structure}")
-            idx = _indices(spec, p["select"])
+            idx = _indices(spec, p["select"], anchors)
             if not idx:
                 raise SteerError(f"the task has no cube matching {p['select']} to move; it has "
                                  f"{', '.join(i.phrase() for i in spec.items)}")
@@ -892,7 +911,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False) -> TaskS
             if spec.structure == "line" and spec.direction is None:
                 spec = replace(spec, direction="left_to_right")
         elif o.op in ("recolor", "relabel"):
-            idx = _indices(spec, p["select"])
+            idx = _indices(spec, p["select"], anchors)
             if not idx:
                 raise SteerError(f"the task has no cube matching {p['select']}; it has "
                                  f"{', '.join(i.phrase() for i in spec.items)}")
@@ -903,7 +922,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False) -> TaskS
             if spec.word:  # "change the B to a C": the word spelled is the cubes' now
                 spec = replace(spec, word="".join(i.label or "?" for i in spec.items))
         elif o.op == "remove":
-            idx = set(_indices(spec, p["select"]))
+            idx = set(_indices(spec, p["select"], anchors))
             if not idx:
                 raise SteerError(f"the task has no cube matching {p['select']}")
             spec = spec.with_items([it for i, it in enumerate(spec.items) if i not in idx])
@@ -933,7 +952,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False) -> TaskS
             if spec.layer_colors:
                 spec = _with_layer_colors(spec)
         elif o.op == "swap":
-            ia, ib = _indices(spec, p["a"]), _indices(spec, p["b"])
+            ia, ib = _indices(spec, p["a"], anchors), _indices(spec, p["b"], anchors)
             if not ia or not ib:
                 raise SteerError(f"the task has no cube matching {p['a'] if not ia else p['b']}")
             if len(ia) != len(ib) or (len(ia) > 1 and not (len({spec.items[i] for i in ia}) == len({spec.items[i] for i in ib}) == 1)):

@@ -225,7 +225,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": {', '.join(repr(c) for c in unread)} has no place in the "
                          f"change read ({', '.join(o.op for o in plan.ops)}); say it in a separate edit, or use --model")
     try:
-        spec = apply_ops(ref_spec, plan.ops, keep_layers=carried.layers)
+        spec = apply_ops(ref_spec, plan.ops, keep_layers=carried.layers, anchors=carried.ends)
     except SteerError:
         if not all(o.op == "add" for o in plan.ops):
             raise
@@ -283,6 +283,24 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
         raise SteerError(f"cannot add \"{clause}\" to {where}: together they read as {schema.goal_summary!r}, which does not "
                          "keep the task's goal and add to it; state the whole new task in the edit, or use --model")
     return schema, text, "extend"
+
+
+def _refuse_no_change(plan: EditPlan, fam: Family, reference: int | None, schema: TaskSchema) -> None:
+    """Refuse an edit of the current version that leaves its goal as it was (same meaning and
+    summary): the edit was not read as what it asks (a back-reference, or an edit built on an
+    earlier version for its cubes, that returns to a version is not one; ``reference`` None).
+
+    Raises:
+        SteerError: nothing the goal judges changed.
+    """
+    from rpg.schema.meaning import meaning
+
+    if plan.fresh or plan.cue.kind != "current" or reference is None:
+        return
+    ref = fam.schema(reference)
+    if meaning(schema) == meaning(ref) and schema.goal_summary == ref.goal_summary:
+        raise SteerError(f"the edit \"{plan.text.strip()[:80]}\" changes nothing v{reference}'s goal judges ({ref.goal_summary}); "
+                         "say what should be different, or use --model")
 
 
 class RouteAnswer(BaseModel):
@@ -400,6 +418,7 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
             reference, notes = resolve_reference(plan, hist, fam)
             schema, instruction, intent = plan_schema(plan, fam, reference)
             parameters = plan.parameters()
+            _refuse_no_change(plan, fam, reference if reference == hist.head else None, schema)
         else:
             from rpg.schema.llm import llm_parse
 
