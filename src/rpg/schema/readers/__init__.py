@@ -30,7 +30,16 @@ from rpg.schema import citations, lexicon
 from rpg.schema.accounting import unaccounted
 from rpg.schema.builder import Builder, make_paraphrases
 from rpg.schema.model import TaskSchema
-from rpg.schema.readers import compose, labels, patches, places, registry, relational, structures, temporal  # noqa: F401 (they register)
+from rpg.schema.readers import (  # noqa: F401 (they register)
+    compose,
+    labels,
+    patches,
+    places,
+    registry,
+    relational,
+    structures,
+    temporal,
+)
 from rpg.schema.reading import Features, ParseError, color_mentions, features, task_slug
 
 
