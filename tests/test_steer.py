@@ -575,7 +575,9 @@ def test_edits_written_by_others(tmp_path, base, edits, expected, intent):
     ("Build a pyramid of 6 green blocks", "make the blue block on top spin around", "action"),
     ("Put the red cube next to the blue cube", "but they must not touch each other", "negation"),
     # an edit that refers to the task but says no change steering reads is refused, not read as a new task
-    ("Put the cyan block next to the red block", "make it nicer", "names no change"),
+    ("Put the cyan block next to the red block", "make it nicer", "'nicer'"),
+    ("Put the cyan block next to the red block", "put it back where it was", "names no change"),
+    ("Build a tower of 3 red blocks", "make it a star shape", "shape the domain does not have"),
     # what cannot be stated exactly is refused naming why
     ("Build a tower of 4 red blocks", "make two of them white", "does not say which"),
     ("Stack a red block on a blue block on a green block", "both should be white", "'both' names two cubes"),
@@ -617,6 +619,13 @@ def test_steering_words_live_in_the_lexicon():
      "Stack the white block, the red block, the blue block and the green block with the white block at the bottom"),
     ("Build a tower of red, green and blue blocks", "add a yellow block on top",
      "Stack the red block, the green block, the blue block and the yellow block with the yellow block on top"),
+    # "it" of a two-cube stack is the stack: a cube beside it stands by its lower cube
+    ("Stack the red block on the blue block", "put a green block next to it",
+     "Stack the red block on the blue block, then place the green block next to the blue block"),
+    # "N blocks shorter" is N; a lone capital is a letter cube
+    ("Build a tower of 5 yellow blocks", "make it 2 blocks shorter", "Build a tower from bottom to top: yellow, yellow, yellow"),
+    ("Stack the letter cubes A, B and C with A at the bottom", "swap A and C",
+     "Build a tower from bottom to top: letter 'C', letter 'B', letter 'A'"),
     # an edit opened by "and" keeps the task
     ("Put the red block to the left of the blue block", "and a yellow block on the blue block",
      "Place the red block to the left of the blue block, then place the yellow block on top of the blue block"),
@@ -654,6 +663,12 @@ def test_edit_instructions_state_exactly_what_was_asked(base, edit, expected):
     ("Build a tower from bottom to top: red, green, blue", "put a yellow block on top of the red one", "not the top"),
     ("Build a tower of red, green and blue blocks", "make the top one white", "no cube the top place"),
     ("Build a tower of red, green and blue blocks", "put the blue one at the bottom", "no places"),
+    # a cube beside a stack's upper cube stands in the air; a second relation between two related cubes contradicts
+    ("Stack the red block on the blue block", "add a green block next to the red one", "in the air"),
+    ("Put the yellow block in front of the purple block", "stack the yellow block on the purple block too", "contradict"),
+    # a number no operation uses; a cube in front of "both" (no one relation)
+    ("Stack the yellow block on the green block", "make the tower 3 blocks high using a red block", "'3' has no place"),
+    ("Put the blue block next to the red block", "put a cyan cube in front of both", "cannot add"),
     # a vague degree is no count; a stack in any order with its bottom said takes no second end
     ("Build a tower of 3 red blocks", "make it a bit taller", "vague quantity"),
     ("Build a tower of 4 blocks with a black block at the bottom", "add a red block on top", "one end said"),

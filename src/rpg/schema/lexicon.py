@@ -500,6 +500,10 @@ EDIT_INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
              r"|\b(?:bigger|larger|smaller|tinier|heavier|lighter)\s+(?:blocks?|cubes?|ones?)\b"
              r"|\b(?:blocks?|cubes?|each\s+(?:block|cube))\s+(?:\w+\s+){0,2}?(?:bigger|larger|smaller|tinier|heavier)\b",
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
+    ("shape", r"\b(?:stars?|hearts?|crosses|cross\s+shape|spirals?|zig-?zags?|diamonds?|hexagons?|pentagons?|octagons?|ovals?|ellipses?"
+              r"|arch(?:es)?|staircases?|stairs|steps\s+shape|smiley|[ltuvxyz][- ]shaped?|shaped?\s+like(?:\s+an?)?\s+\w+)\b",
+     "is a shape the domain does not have: its structures are towers, lines, circles, grids, pyramids, walls and piles "
+     "of cubes"),
 )
 """Meaning a steering edit may ask for that the domain cannot express, beyond the parser's
 :data:`INEXPRESSIBLE` (whose classes steering checks too, except ``reference``: "again", "undo",

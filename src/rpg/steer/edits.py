@@ -141,6 +141,10 @@ def normalize_edit(text: str) -> str:
     capitals quoted ("change it to DOG"), and typos of known words corrected ("shoud")."""
     t = text.strip()
     t = re.sub(r"\b(a|an|the)\s+([A-Z])\b(?!['\-])", r"\1 letter \2", t)
+    # a lone capital is a letter cube ("swap A and D"); "A" only where no noun follows it
+    t = re.sub(r"(?<![\w'])(?<!letter )([B-HJ-Z])\b(?!['\-])|(?<![\w'])(?<!letter )(A)\b(?=\s*(?:$|[,.;!?]|and\b|or\b|with\b|for\b"
+               r"|to\b|on\b|at\b|in\b|instead\b|is\b|should\b|goes\b))",
+               lambda m: f"letter {m.group(1) or m.group(2)}", t)
     t = re.sub(r"\b(a|an|the)\s+(\d)\b(?![x\d\-])(?!\s*(?:blocks?|cubes?|tall|high|wide|long|deep|layers?|levels?|rows?|"
                r"more|of|colou?rs?|stor\w*|outliers?|times)\b)", r"\1 digit \2", t)
     known = VOCAB | IGNORABLE | IGNORABLE_MORE | set(COLOR_RE.split("|"))
@@ -358,9 +362,12 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("pattern", {"colors": list(dict.fromkeys(pattern_colors))}))
     fewer = re.search(r"\b(?:remove|delete|take away|take off|drop|get rid of)\s+(\d+|an?|one)\s+(?:more\s+)?(?:of the\s+)?(?:blocks?|cubes?)\b"
                       r"|\b(\d+|one)\s+(?:fewer|less)\s+(?:blocks?|cubes?)\b", t)
+    by = re.search(r"\b(\d+)\s+(?:more\s+)?(?:blocks?|cubes?|levels?|layers?)\s+(taller|higher|longer|bigger|shorter|lower|smaller)\b", t)
     if fewer:
         k = next(g for g in fewer.groups() if g)
         ops.append(Op("count", {"delta": -(int(k) if k.isdigit() else 1)}))
+    elif by:  # "make it 2 blocks shorter"
+        ops.append(Op("count", {"delta": int(by.group(1)) * (1 if by.group(2) in ("taller", "higher", "longer", "bigger") else -1)}))
     layer = re.search(r"\b(?:add|put|build|stack)\s+(?:an?\s+|another\s+|one more\s+|the\s+)?(?:\d+(?:st|nd|rd|th)\s+|second\s+|third\s+"
                       r"|fourth\s+|new\s+|extra\s+)?(?:row|layer|level|tier)\b(?P<rest>.*)", t)
     if layer and not re.search(r"\b(?:blocks?|cubes?)\b", layer.group("rest")):
@@ -681,6 +688,35 @@ def _colors_of(value) -> set[str]:
 _PALETTE_NAMES = frozenset(canon_color(c) for c in COLOR_RE.split("|"))
 
 
+def _numbers_of(value) -> set[int]:
+    if isinstance(value, bool):
+        return set()
+    if isinstance(value, int):
+        return {abs(value)}
+    if isinstance(value, float):
+        return {int(value)} if value.is_integer() else set()
+    if isinstance(value, dict):
+        return {n for v in value.values() for n in _numbers_of(v)} | {len(value["items"])} if "items" in value else \
+            {n for v in value.values() for n in _numbers_of(v)}
+    if isinstance(value, (list, tuple)):
+        return {n for v in value for n in _numbers_of(v)} | {len(value)}
+    return set()
+
+
+def unread_numbers(plan: EditPlan) -> list[str]:
+    """Counts the edit says that none of its operations uses ("make the tower 3 blocks high using a red
+    block" read as a recolour only); labels ("the digit 3"), sizes ("3x3") and versions are not counts."""
+    t = normalize_edit(plan.text)
+    if plan.cue.phrase:
+        t = t.replace(plan.cue.phrase, " ")
+    t = re.sub(r"\b(?:digit|letter|number|version|v)\s+'?\w'?|\b\d+x\d+(?:x\d+)?\b|\b\d+(?:st|nd|rd|th)\b", " ", t)
+    if plan.cue.kind != "current":  # "go back to the original two-block tower": a count that names the version
+        t = re.sub(r"\b\d+[- ](?:blocks?|cubes?)(?=[- ](?:tall\s+|high\s+)?(?:tower|stack|line|row|pyramid|circle|version|one)\b)", " ", t)
+    said = re.findall(r"\b\d+\b", t)
+    used = _numbers_of([o.params for o in plan.ops]) | ({plan.cue.count} if plan.cue.count else set())
+    return [n for n in dict.fromkeys(said) if int(n) not in used]
+
+
 def unread_colors(plan: EditPlan) -> list[str]:
     """Colours the edit names that none of its operations (nor its reference cue) uses: a
     part of the edit that was not read ("make the top layer red and the bottom one blue" read
@@ -961,6 +997,8 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             for i, j in zip(ia, ib, strict=True):
                 items[i], items[j] = spec.items[j], spec.items[i]
             spec = spec.with_items(items)
+            if spec.ordering:  # "swap A and D" of an alphabetical line: that order no longer holds
+                spec = replace(spec, ordering=None)
         elif o.op == "count" and "delta" in p and not spec.kind.sized_by_count:
             dims = spec.kind.grown(spec.dims, p["delta"])
             if min(dims) < 2:

@@ -25,6 +25,7 @@ from rpg.schema.lexicon import COLOR_RE, EDIT_RELATIONS, PAIRWISE_RELATIONS
 from rpg.schema.model import TaskSchema
 from rpg.schema.reading import canon_color, region_name
 from rpg.schema.structures import cube_list
+from rpg.steer.edits import SteerError
 
 PHRASES = {name: PREDICATES[name].phrase for name in (*PAIRWISE_RELATIONS, "on")}
 """How a canonical instruction states each relation."""
@@ -134,16 +135,19 @@ def _added(t: str, schema: TaskSchema, rel: Relation) -> tuple[str, str] | None:
     if any(a.color == color for a in schema.assets):
         return None  # a second cube of a colour the task has: left to the whole-task reading
     kind = next((k for pattern, k in EDIT_RELATIONS if re.search(pattern, rest)), None)
-    if kind is None:
-        return None
+    if kind is None or re.search(r"\b(?:both|each|all)\b", rest):
+        return None  # "in front of both": a relation to two cubes at once is no one relation
     by_color = {a.color: a.name for a in schema.assets if a.kind == "colored_cube"}
     named = re.findall(r"\bthe (\w+) (?:block|cube|one)\b", rest)
     if named:
         if named[0] not in by_color:
             return None
         target = by_color[named[0]]
-    else:
-        target = rel.object if re.search(r"\bthem\b", rest) and rel.kind == "on" else rel.subject
+    else:  # "it" of a two-cube stack is the stack, whose cube on the table is its lower one
+        target = rel.object if rel.kind == "on" else rel.subject
+    if rel.kind == "on" and target == rel.subject and kind != "on":
+        raise SteerError(f"{_phrase(schema, rel.subject)} stands on {_phrase(schema, rel.object)}: a cube {PHRASES[kind]} it "
+                         "would stand in the air; say where it goes relative to the stack's lower cube")
     first = (f"Place {_phrase(schema, rel.subject)} {PHRASES[rel.kind]} {_phrase(schema, rel.object)}"
              if rel.kind != "on" else f"Stack {_phrase(schema, rel.subject)} on {_phrase(schema, rel.object)}")
     if kind == "under" or (kind == "on" and rel.kind == "on"):

@@ -47,6 +47,7 @@ from rpg.steer.edits import (
     interpret,
     strip_edit_words,
     unread_colors,
+    unread_numbers,
 )
 from rpg.steer.family import (
     LOCK_TIMEOUT_S,
@@ -220,7 +221,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     if ref_spec is None:
         raise SteerError(f"v{reference} ({ref_schema.goal_summary}) is not a structure the builtin steering edits in place; "
                          "state the whole new task in the edit, or use --model")
-    unread = unread_colors(plan)
+    unread = unread_colors(plan) + unread_numbers(plan)
     if unread:
         raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": {', '.join(repr(c) for c in unread)} has no place in the "
                          f"change read ({', '.join(o.op for o in plan.ops)}); say it in a separate edit, or use --model")
@@ -244,6 +245,35 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     return schema, instruction, intent_of_ops(plan.ops, ref_spec)
 
 
+def _refuse_as_parser_would(edit: str) -> None:
+    """An edit steering cannot read, refused for the parser's reason where the parser names one
+    (an object, shape or action the domain lacks, an unknown word), not for a pronoun (steering
+    knows what "it" is).
+
+    Raises:
+        SteerError: the parser classifies what the edit asks for.
+    """
+    from rpg.schema.reading import Inexpressible, ParseError
+
+    try:
+        parse(strip_edit_words(edit))
+    except Inexpressible as exc:
+        if "refers to something" not in str(exc) and "picks a cube" not in str(exc):
+            raise SteerError(str(exc).splitlines()[0]) from None
+    except ParseError as exc:
+        if str(exc).startswith("could not parse"):
+            raise SteerError(str(exc).splitlines()[0]) from None
+    except (BadInput, ValueError):
+        pass
+
+
+def _pair(atom: str) -> frozenset[str] | None:
+    """The two cubes a relation atom of :func:`rpg.schema.meaning.meaning` relates (``left_of(red,blue)``,
+    ``stack(blue,red)``), or None for an atom over more or fewer."""
+    m = re.fullmatch(r"[a-z_]+(?:\[[^\]]*\])?\(([^(),;|]+),([^(),;|]+)\)(?:@\w+)?", atom)
+    return frozenset(m.groups()) if m and m.group(1) != m.group(2) else None
+
+
 def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[TaskSchema, str, str]:
     """An edit that adds to the task in a clause of its own ("also stack a white block on the
     cyan one"): the reference's instruction, then the clause.  Kept only when every atom of
@@ -263,6 +293,7 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
         raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\" to {where}: it says no end state: "
                          f"'{action.group(0)}' is an action, and a task's goal says where cubes end up; say where the cube should go")
     if clause is None:
+        _refuse_as_parser_would(plan.text)
         raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\" to {where}: it refers to the task but names no "
                          "change the builtin steering reads (add, remove, recolour, resize, reorder, move it, another "
                          "structure); say what to change, e.g. \"make the top block red\", or use --model")
@@ -279,6 +310,13 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
     if invented:
         raise SteerError(f"cannot add \"{clause}\" to {where}: together they read as {schema.goal_summary!r}, with "
                          f"{', '.join(invented)} nobody named; name it, or state the whole new task in the edit")
+    added = now - before
+    related = [_pair(a) for a in before]
+    clash = next((a for a in added if _pair(a) and _pair(a) in related), None)
+    if clash is not None:  # "stack the yellow block on the purple block too" when it stands in front of it
+        raise SteerError(f"cannot add \"{clause}\" to {where}: {clash} would relate two cubes the task already relates "
+                         f"({next(a for a in before if _pair(a) == _pair(clash))}); the two contradict. Say one, or state the "
+                         "whole new task")
     if before - now or not now - before:
         raise SteerError(f"cannot add \"{clause}\" to {where}: together they read as {schema.goal_summary!r}, which does not "
                          "keep the task's goal and add to it; state the whole new task in the edit, or use --model")
