@@ -622,6 +622,11 @@ def test_steering_words_live_in_the_lexicon():
     # "it" of a two-cube stack is the stack: a cube beside it stands by its lower cube
     ("Stack the red block on the blue block", "put a green block next to it",
      "Stack the red block on the blue block, then place the green block next to the blue block"),
+    # "from the left to the right": the relation after "to"; "instead of on top": the old one
+    ("Put the red block to the left of the blue block", "move it from the left side to the right side",
+     "Place the red block to the right of the blue block"),
+    ("Put the pink block on top of the gray block", "put it next to the gray block instead of on top",
+     "Place the pink block next to the gray block"),
     # "N blocks shorter" is N; a lone capital is a letter cube
     ("Build a tower of 5 yellow blocks", "make it 2 blocks shorter", "Build a tower from bottom to top: yellow, yellow, yellow"),
     ("Stack the letter cubes A, B and C with A at the bottom", "swap A and C",
@@ -666,6 +671,10 @@ def test_edit_instructions_state_exactly_what_was_asked(base, edit, expected):
     # a cube beside a stack's upper cube stands in the air; a second relation between two related cubes contradicts
     ("Stack the red block on the blue block", "add a green block next to the red one", "in the air"),
     ("Put the yellow block in front of the purple block", "stack the yellow block on the purple block too", "contradict"),
+    # a distance, and edits that contradict themselves
+    ("Put the red block next to the blue block", "move them closer together", "distance"),
+    ("Put the red block next to the blue block", "put it on the left and on the right", "contradicts"),
+    ("Build a tower of 3 red blocks", "make it taller and shorter", "contradicts"),
     # a number no operation uses; a cube in front of "both" (no one relation)
     ("Stack the yellow block on the green block", "make the tower 3 blocks high using a red block", "'3' has no place"),
     ("Put the blue block next to the red block", "put a cyan cube in front of both", "cannot add"),

@@ -500,6 +500,19 @@ EDIT_INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
              r"|\b(?:bigger|larger|smaller|tinier|heavier|lighter)\s+(?:blocks?|cubes?|ones?)\b"
              r"|\b(?:blocks?|cubes?|each\s+(?:block|cube))\s+(?:\w+\s+){0,2}?(?:bigger|larger|smaller|tinier|heavier)\b",
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
+    ("quantity", r"\b(?:closer|further|farther|nearer)\b|\b(?:gaps?|spacing|space\s+between|distance)\b|\bspread\s+(?:them|it|out)\b",
+     "asks for a distance: rpg's relations are qualitative (next to, far from) with no distance or quantity to change"),
+    ("contradiction", r"\b(?:taller|higher|bigger|longer|larger)\b[^.;]*\band\b[^.;]*\b(?:shorter|lower|smaller)\b"
+                      r"|\b(?:shorter|lower|smaller)\b[^.;]*\band\b[^.;]*\b(?:taller|higher|bigger|longer|larger)\b"
+                      r"|\b(?:to|on)\s+the\s+left\b(?!\s+(?:side|corner|end|edge|half|of\s+the\s+table))[^.;]*\band\b[^.;]*\b(?:to|on)\s+the\s+right\b"
+                      r"(?!\s+(?:side|corner|end|edge|half|of\s+the\s+table))"
+                      r"|\b(?:to|on)\s+the\s+right\b(?!\s+(?:side|corner|end|edge|half|of\s+the\s+table))[^.;]*\band\b[^.;]*\b(?:to|on)\s+the\s+left\b"
+                      r"(?!\s+(?:side|corner|end|edge|half|of\s+the\s+table))"
+                      r"|\bin\s+front\b[^.;]*\band\b[^.;]*\bbehind\b|\bbehind\b[^.;]*\band\b[^.;]*\bin\s+front\b"
+                      r"|\bon\s+top\s+of\s+(?:it|them)\b[^.;]*\band\b[^.;]*\b(?:under|underneath|beneath|below)\s+(?:it|them)\b"
+                      r"|\b(?:make|paint|colou?r|turn)\s+(?:it|the\s+\w+\s+(?:block|cube|one))\s+(?:both\s+)?(?:" + "|".join(COLORS) + r")"
+                      r"\s+and\s+(?:" + "|".join(COLORS) + r")\b(?![^.;]*\balternat)",
+     "contradicts itself: the two cannot both hold at the end of the episode; say one"),
     ("shape", r"\b(?:stars?|hearts?|crosses|cross\s+shape|spirals?|zig-?zags?|diamonds?|hexagons?|pentagons?|octagons?|ovals?|ellipses?"
               r"|arch(?:es)?|staircases?|stairs|steps\s+shape|smiley|[ltuvxyz][- ]shaped?|shaped?\s+like(?:\s+an?)?\s+\w+)\b",
      "is a shape the domain does not have: its structures are towers, lines, circles, grids, pyramids, walls and piles "

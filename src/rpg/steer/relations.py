@@ -109,7 +109,7 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         if kind is None:
             return None
     else:
-        kind = next((k for pattern, k in EDIT_RELATIONS if re.search(pattern, t)), None)
+        kind = _edit_relation(t)
         named = re.findall(r"\bthe (\w+) (?:block|cube)\b", t)
         if re.search(r"\b(?:stack|pile)\s+(?:them|all|everything|the\s+(?:blocks|cubes))\b", t) and not named:
             return None  # "stack them": which on which is not said (the structure edit reads it)
@@ -124,6 +124,22 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     if kind == "under":
         subject, obj, kind = obj, subject, "on"
     return f"Place {_phrase(schema, subject)} {PHRASES[kind]} {_phrase(schema, obj)}", "modify"
+
+
+def _edit_relation(t: str) -> str | None:
+    """The one relation an edit names (:data:`EDIT_RELATIONS`); with two ("from the left to the
+    right"), the one after "from ... to", else None (which is not said)."""
+    t = re.sub(r"\b(?:instead\s+of|rather\s+than|in\s+place\s+of)\b[^,;.]*", " ", t)  # "... instead of on top": the old one
+    found = {}
+    for pattern, k in EDIT_RELATIONS:
+        m = re.search(pattern, t)
+        if m and k not in found and not any(m.start() < e and s < m.end() for s, e in found.values()):
+            found[k] = m.span()
+    if len(found) <= 1:
+        return next(iter(found), None)
+    dest = re.search(r"\bfrom\b.*?\bto\b", t)
+    after = [k for k, (start, _) in found.items() if dest and start >= dest.end() - 2]
+    return after[0] if len(after) == 1 else None
 
 
 def _added(t: str, schema: TaskSchema, rel: Relation) -> tuple[str, str] | None:
