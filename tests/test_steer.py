@@ -627,6 +627,16 @@ def test_steering_words_live_in_the_lexicon():
      "Place the red block to the right of the blue block"),
     ("Put the pink block on top of the gray block", "put it next to the gray block instead of on top",
      "Place the pink block next to the gray block"),
+    # "2 more", "4 instead of 3", "in blue", the material an edit changes from, a cube moved onto the patch too
+    ("Build a tower of 3 green blocks", "can you use 2 more blocks",
+     "Build a tower from bottom to top: green, green, green, green, green"),
+    ("Build a tower of 3 green blocks", "make it 4 blocks instead of 3", "Build a tower from bottom to top: green, green, green, green"),
+    ("Build a tower of 3 green blocks", "I'd like it in blue", "Build a tower from bottom to top: blue, blue, blue"),
+    ("Spell the word HI with letter cubes", "change the letters to numbers",
+     "Arrange the blocks in order digit '1', digit '2' from left to right"),
+    ("Place the blue block on the yellow patch", "now move the red block onto the patch too",
+     "Place the blue block and the red block onto the yellow goal patch"),
+    ("Build a tower of 3 green blocks", "scratch that, build a line of 3 red blocks", "build a line of 3 red blocks"),
     # "N blocks shorter" is N; a lone capital is a letter cube
     ("Build a tower of 5 yellow blocks", "make it 2 blocks shorter", "Build a tower from bottom to top: yellow, yellow, yellow"),
     ("Stack the letter cubes A, B and C with A at the bottom", "swap A and C",
@@ -671,6 +681,8 @@ def test_edit_instructions_state_exactly_what_was_asked(base, edit, expected):
     # a cube beside a stack's upper cube stands in the air; a second relation between two related cubes contradicts
     ("Stack the red block on the blue block", "add a green block next to the red one", "in the air"),
     ("Put the yellow block in front of the purple block", "stack the yellow block on the purple block too", "contradict"),
+    # "the patch" is the task's patch, not a new one of a colour nobody said
+    ("Place the blue block on the yellow patch", "put the blue block next to the patch instead", "nobody named"),
     # a distance, and edits that contradict themselves
     ("Put the red block next to the blue block", "move them closer together", "distance"),
     ("Put the red block next to the blue block", "put it on the left and on the right", "contradicts"),

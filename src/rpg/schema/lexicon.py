@@ -449,7 +449,7 @@ earlier in the instruction."""
 EDIT_FRESH_RE = re.compile(
     r"(?i)\b(?:new task|another task|start over|start fresh|from scratch|unrelated|something (?:completely |totally )?(?:different|else)"
     r"|(?:a\s+)?(?:completely|totally|entirely)\s+(?:different|new|other)\s+(?:task|one|thing)|different task"
-    r"|forget (?:it|that|this|everything|about it))\b[:,.!]?")
+    r"|forget (?:it|that|this|everything|about it)|scratch that|never\s*mind|let'?s do something else)\b[:,.!]?")
 """Words that make an edit a new, unrelated task (Fresh): "start over: ...", "completely
 different task now: ..."."""
 
@@ -526,7 +526,8 @@ EDIT_COUNT_RE = re.compile(
     r"\b(?:(?:just|only|like|about|use|using|have|make (?:it|them|the (?:" + "|".join(w for k in STRUCTURE_KINDS.values() for w in k.words)
     + r"|wall)))\s+(?:only\s+|just\s+)?(?P<n>\d+)"
     r"|(?:to|into|with|be|of)\s+(?:only\s+|just\s+)?(?P<n1>\d+)(?=\s+(?:[a-z]+\s+)?(?:blocks?|cubes?)\b|\s+(?:tall|high|long|wide|deep)\b))"
-    r"(?:\s+(?:[a-z]+\s+)?(?:blocks?|cubes?))?(?:\s+(?P<dim>tall|high|long|wide|deep|levels?|layers?|stor(?:y|ey|ies|eys)))?"
+    r"(?:\s+(?!(?:more|fewer|less|extra|additional|other)\b)(?:[a-z]+\s+)?(?:blocks?|cubes?))?"
+    r"(?:\s+(?P<dim>tall|high|long|wide|deep|levels?|layers?|stor(?:y|ey|ies|eys)))?"
     r"(?=\s*(?:$|[.,;!?]|(?:please|pls|instead|now|then|and|in total|total|again)\b))"
     r"|\b(?P<n2>\d+)\s+(?P<dim2>tall|high|long|wide|deep)\b")
 """A count an edit gives its structure ("just two", "like 3 blocks", "make it four tall", "four

@@ -313,11 +313,12 @@ def read_ops(t: str) -> list[Op]:
     """The operations of a normalised partial edit (empty when it names none)."""
     t = re.sub(r"\b(?:the|that|this)\s+(?:[a-z0-9'-]+\s+){0,5}?(?:version|variant)\b", " ", t)  # names a version, changes nothing
     ops: list[Op] = []
-    substitution = re.search(r"\b(?:instead of|rather than|in place of)\b(.*?)(?=[,;.]|\buse\b|\bwith\b|\bmake\b|\band\b|$)", t)
+    substitution = re.search(r"\b(?:instead of|rather than|in place of)\b(.*?)(?=[,;.]|\buse\b|\bwith\b|\bmake\b|\band\b|$)", t) or \
+        re.search(r"\b(?:change|turn|switch|convert|replace|swap)\s+(?:all\s+)?(?:the\s+|its\s+|their\s+)?(\w+(?:\s+\w+)?)\s+(?:to|into|with|for|by)\b", t)
     source = _materials(substitution.group(1)) if substitution else []
     mats = [m for m in _materials(t) if m not in source]
     word = re.search(r"\b(?:change|make|turn|set)\s+(?:the\s+)?word\s+(?:to|into)\s+'?([a-z]{2,})'?|\bspell\s+'?([a-z]{2,})'?\s+instead\b"
-                     r"|\b(?:change|make|turn|switch)\s+(?:it|that|this)\s+(?:to|into)\s+(?:spell\s+)?'([a-z]{2,})'"
+                     r"|\b(?:change|make|turn|switch)\s+(?:it|that|this)\s+(?:to\s+|into\s+)?(?:spell\s+)?'([a-z]{2,})'"
                      r"|\b(?:make|have|let)\s+(?:it|them|the\s+(?:line|row|cubes|blocks|letters))\s+(?:spell|say|read)\s+(?:out\s+)?'([a-z]{2,})'"
                      r"|\b(?:make|have|let)\s+(?:it|them|the\s+(?:line|row|cubes|blocks|letters))\s+spell\s+(?:out\s+)?"
                      r"(?!(?:backwards?|it|them|the|from|in|right|left|out)\b)([a-z]{2,})\b", t)
@@ -362,10 +363,13 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("pattern", {"colors": list(dict.fromkeys(pattern_colors))}))
     fewer = re.search(r"\b(?:remove|delete|take away|take off|drop|get rid of)\s+(\d+|an?|one)\s+(?:more\s+)?(?:of the\s+)?(?:blocks?|cubes?)\b"
                       r"|\b(\d+|one)\s+(?:fewer|less)\s+(?:blocks?|cubes?)\b", t)
+    more_n = re.search(r"\b(?:use|using|with|have|want|need)\s+(\d+)\s+(?:more|extra|additional)\s+(?:blocks?|cubes?)\b", t)
     by = re.search(r"\b(\d+)\s+(?:more\s+)?(?:blocks?|cubes?|levels?|layers?)\s+(taller|higher|longer|bigger|shorter|lower|smaller)\b", t)
     if fewer:
         k = next(g for g in fewer.groups() if g)
         ops.append(Op("count", {"delta": -(int(k) if k.isdigit() else 1)}))
+    elif more_n:  # "can you use 2 more blocks"
+        ops.append(Op("count", {"delta": int(more_n.group(1))}))
     elif by:  # "make it 2 blocks shorter"
         ops.append(Op("count", {"delta": int(by.group(1)) * (1 if by.group(2) in ("taller", "higher", "longer", "bigger") else -1)}))
     layer = re.search(r"\b(?:add|put|build|stack)\s+(?:an?\s+|another\s+|one more\s+|the\s+)?(?:\d+(?:st|nd|rd|th)\s+|second\s+|third\s+"
@@ -424,7 +428,9 @@ def read_ops(t: str) -> list[Op]:
         re.search(rf"\b(?:make|paint)\s+(?:the\s+)?(?P<old>.+?)\s+(?P<new>(?:{COLOR_RE}))\b", t)
     repl = repl or re.search(rf"(?P<old>\b(?:the|both|all|each|every|it|they|them|\d+\s+of)\b[a-z0-9' ]*?)\s+(?:to\s+)?{EDIT_SHOULD_BE_RE}"
                              rf"\s+(?:an?\s+)?(?P<new>(?:{COLOR_RE})\b|(?:letter|digit)\s+[a-z0-9]\b)", t) or \
-        re.fullmatch(rf"(?:and\s+|also\s+|now\s+)*(?P<old>(?:the|both)\b[a-z0-9' ]*?)\s+(?P<new>{COLOR_RE})[.!]?", t)
+        re.fullmatch(rf"(?:and\s+|also\s+|now\s+)*(?P<old>(?:the|both)\b[a-z0-9' ]*?)\s+(?P<new>{COLOR_RE})[.!]?", t) or \
+        re.search(rf"\b(?:like|want|need|have|make|do|redo|build)\s+(?P<old>it|them|the\s+(?:whole\s+)?\w+)\s+(?:all\s+)?in\s+(?P<new>{COLOR_RE})"
+                  r"(?:\s+(?:blocks|cubes|instead|please))*\W*$", t)
     if repl and not reverse:
         sel, new = _selector(repl.group("old")), _new_item(repl.group("new"))
         bare = re.fullmatch(r"\s*'?([a-z0-9])'?\s*[.!]?", repl.group("new"))
@@ -471,7 +477,7 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("count", {"delta": 1}))
     elif re.search(r"\b(?:shorter|smaller|lower)\b", t) and not any(o.op in ("remove", "dims", "count") for o in ops):
         ops.append(Op("count", {"delta": -1}))
-    shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out|use|do)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+)(?:\d+x\d+(?:x\d+)?\s+)?"
+    shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out|use|do|spell)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+)(?:\d+x\d+(?:x\d+)?\s+)?"
                       rf"{STRUCTURE_RE}", t)
     stack_all = re.search(r"\b(?:stack|pile)\s+(?:them|all|everything|(?:all\s+)?the\s+(?:blocks|cubes))(?:\s+(?:up|instead|together"
                           r"|on top of each other|on top of one another))*\W*$", t)
@@ -710,6 +716,7 @@ def unread_numbers(plan: EditPlan) -> list[str]:
     if plan.cue.phrase:
         t = t.replace(plan.cue.phrase, " ")
     t = re.sub(r"\b(?:digit|letter|number|version|v)\s+'?\w'?|\b\d+x\d+(?:x\d+)?\b|\b\d+(?:st|nd|rd|th)\b", " ", t)
+    t = re.sub(r"\b(?:instead\s+of|rather\s+than|from)\s+(?:the\s+)?\d+\b", " ", t)  # "4 blocks instead of 3": the old count
     if plan.cue.kind != "current":  # "go back to the original two-block tower": a count that names the version
         t = re.sub(r"\b\d+[- ](?:blocks?|cubes?)(?=[- ](?:tall\s+|high\s+)?(?:tower|stack|line|row|pyramid|circle|version|one)\b)", " ", t)
     said = re.findall(r"\b\d+\b", t)

@@ -210,7 +210,7 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     added = re.search(rf"\badd\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b", t) or \
         re.fullmatch(rf"\s*(?:and\s+|now\s+|also\s+)*(?:put\s+|place\s+)?(?:the|a|an)\s+({COLOR_RE})\s+(?:block|cube|one)\s+"
                      rf"(?:(?:on|onto|in)\s+(?:the\s+(?:{COLOR_RE}\s+)?(?:goal\s+)?patch|it)\s+)?(?:too|as well)\s*", t) or \
-        re.fullmatch(rf"\s*(?:and\s+|now\s+)*(?:also\s+)?(?:put|place)\s+(?:the|a|an)\s+({COLOR_RE})\s+(?:block|cube|one)\s+"
+        re.fullmatch(rf"\s*(?:and\s+|now\s+)*(?:also\s+)?(?:put|place|move|bring|slide|push)\s+(?:the|a|an)\s+({COLOR_RE})\s+(?:block|cube|one)\s+"
                      rf"(?:on|onto|in)\s+(?:the\s+(?:{pcolor}\s+)?(?:goal\s+)?patch|it)\s*(?:too|as well)?\s*", t)
     if count:
         n = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6}.get(count.group(1)) or int(count.group(1))

@@ -181,6 +181,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         ref_schema = fam.schema(reference)
     ref_spec, carried = split(ref_schema)
     if plan.standalone:
+        _refuse_invented_patch(plan.text, ref_schema, schema)
         if relation_of(schema) and relation_of(ref_schema) and same_assets(schema, ref_schema):
             return schema, text, "modify"  # the same cubes in another relation
         return schema, text, intent_of_standalone(extract(schema), ref_spec)
@@ -243,6 +244,21 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     except BadInput as exc:
         raise SteerError(str(exc).splitlines()[0]) from None
     return schema, instruction, intent_of_ops(plan.ops, ref_spec)
+
+
+def _refuse_invented_patch(edit: str, ref: TaskSchema, schema: TaskSchema) -> None:
+    """Refuse a whole-task edit that says "the patch" of a task that has one, read as a patch of a
+    colour nobody named ("put the blue block next to the patch instead" of the yellow patch).
+
+    Raises:
+        SteerError: the new task's patch is not the task's and its colour is not said.
+    """
+    had = {a.color for a in ref.assets if a.kind == "goal_patch"}
+    new = [a.color for a in schema.assets if a.kind == "goal_patch" and a.color not in had]
+    said = re.findall(r"\b(\w+)\s+(?:goal\s+)?patch", edit.lower())
+    if had and new and re.search(r"\bthe\s+(?:goal\s+)?patch\b", edit.lower()) and not set(new) <= set(said):
+        raise SteerError(f"\"{edit.strip()[:80]}\": 'the patch' is the task's {', '.join(sorted(had))} patch, but the edit read "
+                         f"alone has a {', '.join(new)} patch nobody named; say the patch's colour, or state the whole new task")
 
 
 def _refuse_as_parser_would(edit: str) -> None:
