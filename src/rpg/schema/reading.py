@@ -396,7 +396,7 @@ group of :data:`constants.REGION_GROUPS`, any of whose members will do."""
 
 
 CORNER_PAIR_RE = re.compile(
-    r"\b(?P<prep>in|at|on|to|into|onto)\s+(?P<each>(?:each|both|either)\s+of\s+)?the\s+(?P<a>(?:front|back|rear|far)\s+(?:left|right))"
+    r"\b(?P<prep>in|at|on|to|into|onto)\s+(?:(?:each|both|either)\s+of\s+)?the\s+(?P<a>(?:front|back|rear|far)\s+(?:left|right))"
     r"(?:\s+corner)?\s+and\s+(?:the\s+)?(?P<b>(?:front|back|rear|far)\s+(?:left|right))\s+corners\b"
     r"(?:\s+of\s+the\s+(?:table|workspace))?")
 """Two corners said with one noun ("in the front left and front right corners"): marked as

@@ -153,8 +153,7 @@ def recognize_listed_towers(f: Features, b: Builder) -> bool:
     if len(texts) != k or not all(texts):
         return False
     heads = _read_parts([t if re.search(STRUCTURE_RE, t) else f"a {m.group('noun')}: {t}" for t in texts])
-    if heads is None or not all(_single_spot(h) and all(isinstance(p, STACK_KINDS) for p in h.goal_predicate().conjuncts())
-                                and len(h.goal_predicate().conjuncts()) == 1 for h in heads):
+    if heads is None or not all(_single_spot(h) and isinstance(h.goal_predicate(), STACK_KINDS) for h in heads):
         return False
     _merge(f, b, texts, heads, b.unit_centers(k, 0.16), [None] * k)
     return True

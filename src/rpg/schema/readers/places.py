@@ -184,8 +184,8 @@ def recognize_reverse_tower(f: Features, b: Builder) -> bool:
     if n < 2:
         return False
     names = [b.cube(c) for c in DEFAULT_COLORS[:n]]
-    (x0, y0), (x1, y1) = b.unit_centers(2, 0.14)
-    b.place(stack_layout(names[::-1], (x1, y1)))
+    spot = b.unit_centers(2, 0.14)[1]  # the goal tower beside where rho_0's may stand
+    b.place(stack_layout(names[::-1], spot))
     b.structures.append(names)
     b.preds.append(Stack(tuple(names[::-1])))
     b.primitives += ["stack"]

@@ -66,6 +66,8 @@ class RelationalReading:
     """(relation, cube) relative to that stack ("beside the tower")."""
     subjects: set[tuple] = field(default_factory=set)
     """(colour, label) of cubes placed by a relation."""
+    beside: set[tuple] = field(default_factory=set)
+    """(colour, label) of the cubes of :attr:`by_structure`: never cubes of that stack."""
     previous: list[str] = field(default_factory=list)
     """[subject, object] of the last relation: what "it" refers to."""
     last_pair: list[Mention] = field(default_factory=list)
@@ -150,6 +152,7 @@ class RelationalReading:
                     self.on_structure.append(self.obj(a_m))
                 elif kind not in ("under", "between"):
                     self.by_structure.append((kind, self.obj(a_m)))
+                    self.beside.add((a_m.color, a_m.label))
                 self.subjects.add((a_m.color, a_m.label))
                 continue
             if b_m.ref == "@it":
@@ -234,8 +237,9 @@ def recognize_relational(f: Features, b: Builder) -> bool:
             names = [r.obj(m) for m in ms]
         else:
             named = [c for c in dict.fromkeys(f.color_list()) if (c, None) not in r.subjects]
-            cols = [c for c in colors_for(n, f, prefer=named) if (c, None) not in r.subjects]  # not the colours of
-            cols += [c for c in DEFAULT_COLORS if c not in cols and (c, None) not in r.subjects][: n - len(cols)]  # cubes beside it
+            # not the colours of cubes placed beside it
+            cols = [c for c in colors_for(n, f, prefer=named) if (c, None) not in r.beside]
+            cols += [c for c in DEFAULT_COLORS if c not in cols and (c, None) not in r.subjects][: n - len(cols)]
             names = [r.obj(Mention(0, 0, c, None, 1)) for c in cols[:n]]
         r.on_edges += [(u, lo) for lo, u in zip(names, names[1:], strict=False)]
     if r.on_structure or r.by_structure:
