@@ -37,7 +37,7 @@ def one_line_error(r, code=2):
 
 @pytest.fixture(scope="module")
 def artifact(tmp_path_factory):
-    return compile_instruction("Stack two blocks on top of each other.", tmp_path_factory.mktemp("a")).path
+    return compile_instruction("Stack the red block on top of the blue block.", tmp_path_factory.mktemp("a")).path
 
 
 @pytest.fixture()
