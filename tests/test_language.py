@@ -130,6 +130,13 @@ def test_the_accounting_record_says_which_words_produced_which_part():
     ("put the blocks in the order shown", "reference", "shown"),
     ("place the same block on the green patch", "reference", "the same block"),
     ("move the red block to the blue block's position", "reference", "block's position"),
+    # a cube picked by its place in a scene nobody described (these compiled a red cube for it)
+    ("Stack the top block on the green one.", "reference", "the top block"),
+    ("Put the nearest cube on the red cube.", "reference", "the nearest cube"),
+    ("Put the rightmost block on the red block.", "reference", "the right block"),
+    ("Put the block that is closest to you on the blue block.", "reference", "closest to you"),
+    ("Stack the blocks in the same order.", "reference", "the same order"),
+    ("Put the blue block where the red block was.", "reference", "where the red block was"),
     # a question is no instruction (these compiled the relation asked about)
     ("which block is on top of the blue block?", "question", "which block is on top of the blue block?"),
     ("is the red block left of the green block?", "question", "is the red block left of the green block?"),
@@ -600,3 +607,23 @@ def test_a_cube_put_beside_a_tower_is_not_also_in_a_second_tower(text, want):
     from rpg.schema.meaning import matches
 
     assert matches(want, meaning(parse(text))), meaning(parse(text))
+
+
+@pytest.mark.parametrize("text", [
+    "Build a tower of three blocks and make the top block red.",
+    "Build a tower of three blocks; the top block should be red.",
+    "Build a tower of three blocks. The top one is red.",
+    "Build a tower of three blocks, and make sure the top block is red.",
+])
+def test_the_top_cube_s_colour_said_after_the_tower_is_its_role(text):
+    """These compiled a tower with the red cube anywhere (the role was lost)."""
+    goal = parse(text).goal
+    assert goal.name == "anchored_stack" and len(goal.objects) == 3
+    assert goal.top and goal.objects[-1].startswith("red") and not goal.bottom
+
+
+def test_a_named_cube_the_goal_leaves_where_it_falls_has_no_place():
+    """"... with a green block on top" of a stack whose cubes are all named compiled the stack
+    and a green cube nothing placed."""
+    with pytest.raises(ParseError, match="green cube.s. it names have no place"):
+        parse("Stack the red block on the blue block with a green block on top.")

@@ -315,8 +315,10 @@ def account_named(text: str, schema: TaskSchema) -> list[dict]:
     Raises:
         UnaccountedMention: the first mention with no part in the schema.
     """
-    missing = sorted({c for _, c in color_mentions(text)} - {a.color for a in schema.assets})
-    if missing:
+    placed = set(schema.goal_predicate().object_names()) | {n for s in schema.initial_state.structures for n in s}
+    missing = sorted({c for _, c in color_mentions(text)}
+                     - {a.color for a in schema.assets if a.name in placed or a.kind == "goal_patch"})
+    if missing:  # no cube of that colour, or one the goal and rho_0 leave where it falls
         raise UnaccountedMention(f"the {', '.join(missing)} cube(s) it names have no place in that task")
     cubes = Counter(a.color for a in schema.assets if a.kind != "goal_patch" and a.color)
     for color, n in _single_color_bounds(text).items():

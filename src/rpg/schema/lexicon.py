@@ -96,7 +96,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"(?:moved|placed|picked|grabbed|used|put|touched|held)\b"
                   r"|\b(?:blocks?|cubes?|ones?)\s+(?:that\s+)?(?:you|we|i)\s+(?:moved|placed|picked|grabbed|used|touched|held)\b"
                   r"|\b(?:again|undo|restore|original(?:ly)?|previous(?:ly)?|remaining|as\s+(?:before|it\s+was|they\s+were))\b"
-                  r"|\bthe\s+rest\b|\bwhere\s+(?:it|they)\s+(?:was|were)\b"
+                  r"|\bthe\s+rest\b|\bwhere\s+(?:it|they|the\s+(?:[a-z]+\s+){0,2}?(?:blocks?|cubes?|ones?))\s+(?:was|were|used\s+to\s+be|started|began)\b"
+                  r"|\bthe\s+same\s+(?:order|sequence|positions?|places?|spots?)\b"
+                  r"|\b(?:closest|nearest|farthest|furthest)\s+to\s+(?:you|me|us|the\s+(?:robot|camera|gripper|viewer))\b"
                   r"|\bthe\s+same\s+(?:blocks?|cubes?|ones?|boxes|box|objects?|pieces?)\b"
                   r"|\b(?:blocks?|cubes?|box|ones?)'s\s+(?:current\s+|old\s+)?(?:position|place|spot|location|square)\b"
                   r"|\b(?:current|present)\s+(?:position|place|spot|location)s?\b"
@@ -170,6 +172,19 @@ STRUCTURE_INTRO_RE = re.compile(
     r"|\b(?:on|onto|atop|on\s+top\s+of)\s+(?:the|a|an)\s+(?:[a-z]+\s+)?(?:block|cube)\b")
 """What describes a structure before "the stack" refers to it (:data:`DEFINITE_STRUCTURE_RE`):
 one introduced ("a tower of three blocks", "build ...") or a cube put on another."""
+
+PLACE_PICKED_RE = re.compile(
+    r"\bthe\s+(?:top|bottom|topmost|uppermost|highest|lowest|bottommost|middle|center|centre|left|right|front|back"
+    r"|closest|nearest|farthest|furthest|near|far)\s+(?:blocks?|cubes?|ones?|boxes|box)\b"
+    r"(?!\s+(?:stacks?|towers?|piles?|lines?|rows?|columns?)\b)")  # "the highest block stack": a structure
+""""The top block", "the left one", "the nearest cube": a cube picked by its place.  It must be a
+place in a structure described before it (:data:`PLACED_PART_INTRO_RE`: "build a tower of three
+and make the top block red"); otherwise it is a place in the scene the speaker sees, which a task
+cannot know.  ("rightmost" reads as "right" first: :data:`SYNONYMS`.)"""
+
+PLACED_PART_INTRO_RE = re.compile(r"\b(?:towers?|stacks?|piles?|lines?|rows?|columns?|pyramids?|walls?|structures?|grids?"
+                                  r"|circles?|rings?)\b")
+"""What describes a structure whose cubes :data:`PLACE_PICKED_RE` can pick by place."""
 
 OTHER_SET_RE = re.compile(r"\b(?:one|two|both|each|either)\b")
 """What sets a cube apart before "the other" (:data:`OTHER_RE`)."""

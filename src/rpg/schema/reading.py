@@ -126,6 +126,13 @@ def _refuse_unresolved_pronoun(text: str, original: str) -> None:
             raise Inexpressible("reference", [m.group(0)], f"refers to a {m.group('noun')} the instruction has not "
                                 "described (one the speaker sees, or from an earlier turn): describe it (e.g. \"build a "
                                 "tower of the red and green blocks, then put the blue block on top of it\")", original)
+    for m in lexicon.PLACE_PICKED_RE.finditer(text):
+        before = re.sub(r"\b(?:stack|pile|line|row)\s*$", "", text[:m.start()])  # "stack the top block": a verb
+        if not lexicon.PLACED_PART_INTRO_RE.search(before):
+            raise Inexpressible("reference", [m.group(0)], "picks a cube by its place in a scene the instruction has not "
+                                "described (where the speaker sees it): name the cube by colour or label, or describe "
+                                "the structure it stands in first (e.g. \"build a tower of three blocks and make the "
+                                "top block red\")", original)
     for m in lexicon.OTHER_RE.finditer(text):
         if not lexicon.OTHER_SET_RE.search(text[:m.start()]):
             raise Inexpressible("reference", [m.group(0)], "picks a cube by contrast with one the instruction has not "
@@ -314,12 +321,12 @@ STRUCTURE_PHRASES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(rf"\s*,?\s+(?:where|in\s+which|so\s+that|such\s+that)\s+the\s+({COLOR_RE})\s+(block|cube)\s+"
                 rf"(?:is|sits|stands|goes|should\s+be|must\s+be|ends\s+up)\s+(at|on)\s+(?:the\s+)?(top|bottom|base)\b"),
      r" with the \1 \2 at the \4"),
-    # roles: "the top one is white", "the bottom block black"
-    (re.compile(rf"(?:\s*,\s*|\s+(?:with|where|and|in\s+which)\s+)the\s+(?:top|topmost|uppermost|highest)"
-                rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|should\s+be\s+|must\s+be\s+)?({COLOR_RE})"
+    # roles: "the top one is white", "the bottom block black", ". The top one is red", "and make the top block red"
+    (re.compile(rf"(?:\s*[,.;]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)(?:make\s+(?:sure\s+)?(?:that\s+)?)?the\s+(?:top|topmost|uppermost|highest)"
+                rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?({COLOR_RE})"
                 rf"(?:\s+(?:block|cube|one|1))?\b"), r" with a \1 block on top"),
-    (re.compile(rf"(?:\s*,\s*|\s+(?:with|where|and|in\s+which)\s+)the\s+(?:bottom|lowest|base|bottommost)"
-                rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|should\s+be\s+|must\s+be\s+)?({COLOR_RE})"
+    (re.compile(rf"(?:\s*[,.;]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)(?:make\s+(?:sure\s+)?(?:that\s+)?)?the\s+(?:bottom|lowest|base|bottommost)"
+                rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?({COLOR_RE})"
                 rf"(?:\s+(?:block|cube|one|1))?\b"), r" with a \1 block at the bottom"),
 )
 """Ways of describing a tower, rewritten to the form the readers take ("a tower of N <colour>
