@@ -627,3 +627,33 @@ def test_a_named_cube_the_goal_leaves_where_it_falls_has_no_place():
     and a green cube nothing placed."""
     with pytest.raises(ParseError, match="green cube.s. it names have no place"):
         parse("Stack the red block on the blue block with a green block on top.")
+
+
+@pytest.mark.parametrize("text, want", [
+    ("Put two green cubes on the left.", "in_region(green,left); in_region(green,left)"),
+    ("Put the red and blue blocks on the left.", "in_region(blue,left); in_region(red,left)"),
+    ("Stack the red block on the blue block on the right.", "stack(blue,red)@right"),
+    ("Build a tower of three blocks on the right.", "stack(?,?,?)@right"),
+    ("Put the yellow cube in the top right.", "in_region(yellow,back_right)"),
+    ("Move the red block to the upper left.", "in_region(red,back_left)"),
+    ("Place the green block on the lower left.", "in_region(green,front_left)"),
+])
+def test_a_bare_side_ending_a_text_with_nothing_else_to_anchor_it_is_the_table_s(text, want):
+    """These were refused ("could not find a task", 'upper' unknown)."""
+    from rpg.schema.meaning import matches
+
+    assert matches(want, meaning(parse(text))), meaning(parse(text))
+
+
+@pytest.mark.parametrize("text", ["Put the red block next to the blue block on the left.",
+                                  "Put the red block on the blue block and the green block on the left."])
+def test_a_bare_side_with_something_it_could_be_the_side_of_stays_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)
+
+
+def test_a_diagonal_of_a_cube_is_refused_not_read_as_one_relation():
+    """"to the top left of the blue block" compiled left_of(red, blue), dropping "top"."""
+    with pytest.raises(ParseError, match="diagonal"):
+        parse("Move the red block to the top left of the blue block.")
+    assert meaning(parse("Put the red block in the front left of the table.")) == ["in_region(red,front_left)"]

@@ -61,7 +61,8 @@ SYNONYMS: dict[str, str] = {
     "desk": "table", "rightmost": "right", "leftmost": "left", "frontmost": "front", "backmost": "back",
     "furthest": "far", "farthest": "far", "lastly": "finally", "afterwards": "then", "afterward": "then",
     "subsequently": "then", "organize": "arrange", "organise": "arrange", "organized": "arranged",
-    "organised": "arranged", "invert": "reverse", "inverted": "reversed",
+    "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
+    "uppermost": "topmost", "lowermost": "bottommost",
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""

@@ -283,8 +283,15 @@ def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
                   r"and\s+(?:then\s+)?(place|put|set|stack|move|drop|lay)\s+it\b", r"\2 \1", text)
     text = re.sub(r"\bside by side\b", "next to each other", text)
     # a map's "top left corner" is the far one (the robot at the bottom edge; lexicon's compass)
-    text = re.sub(r"\b(?:top|upper)\s+(left|right)\s+(corner|edge|side)\b", r"back \1 \2", text)
-    text = re.sub(r"\b(?:bottom|lower)\s+(left|right)\s+(corner|edge|side)\b", r"front \1 \2", text)
+    diagonal = re.search(r"\b(?:top|bottom|upper|lower|front|back|rear)[\s-]+(?:left|right)\s+(?:side\s+)?of\s+"
+                         r"(?!(?:the\s+)?(?:table|workspace)\b)(?:the\s+)?[a-z]+", text)
+    if diagonal:  # "to the top left of the blue block": two relations at once, or a corner of the cube?
+        raise ParseError(f"'{diagonal.group(0)}' names a diagonal of a cube, which rpg's relations do not have (each holds "
+                         "along one axis): say one relation (\"left of\", \"behind\")")
+    text = re.sub(r"\b(the\s+)?(?:top|upper)[\s-]+(left|right)\b(?!\s+of\b)(?=\s+(?:corner|edge|side)\b|\s*(?:[.,;!]|$))",
+                  r"\1back \2", text)
+    text = re.sub(r"\b(the\s+)?(?:bottom|lower)[\s-]+(left|right)\b(?!\s+of\b)(?=\s+(?:corner|edge|side)\b|\s*(?:[.,;!]|$))",
+                  r"\1front \2", text)
     text = re.sub(r"\b(?:(\w+)\s+)?((?:the|a|an)\s+(?:letter|digit|number)\s+'?[a-z0-9]'?)(?=\s|[.,;!]|$)(?!\s+(?:block|cube|box))",
                   lambda m: m.group(0) if m.group(1) in ("with", "showing", "labeled", "labelled", "marked", "bearing")
                   else m.group(0) + " block", text)  # "stack the letter A on the letter B": those are cubes
@@ -421,6 +428,20 @@ def region_name(front_back: str | None, left_right: str | None) -> str | None:
     return "_".join(p for p in (fb, lr) if p) or None
 
 
+_RELATIVE_RE = re.compile(r"\b(?:left|right|front|behind|back|next|beside|between|near|around|by|close|far|it|its|them|"
+                          r"their|that|this|one|each|other|then|and\s+(?:the|a|an)\b)\b|@region_|[,;:]")
+
+
+def _table_side(m: re.Match) -> bool:
+    """Whether a bare side ("on the left") ends a text that names nothing else it could be the
+    side of ("put two green cubes on the left", "stack the red block on the blue block on the
+    right"): then it is the table's side.  Anything else that could anchor it (another
+    relation, a second clause, a pronoun) leaves it relative (and the text refused)."""
+    return (m.group("part") == "" and m.group(0).split()[0] in ("on", "to", "at", "in")
+            and re.fullmatch(r"\s*[.!]?\s*", m.string[m.end():]) is not None
+            and _RELATIVE_RE.search(m.string[:m.start()]) is None)
+
+
 def mark_regions(text: str) -> str:
     """Replace places on the table ("in the middle of the table", "at the back left corner",
     "on the right side of the workspace") with ``@region_<name>`` tokens (names as in
@@ -432,7 +453,7 @@ def mark_regions(text: str) -> str:
         word = m.group("lr") or m.group("lr2")
         bare_center = (word in ("center", "centre", "middle") and m.group(0).split()[0] in ("in", "at")  # "in the center"
                        and not names_a_role(m.string[:m.start()], m.string))
-        if not (m.group("tail") or corner or edge or bare_center):
+        if not (m.group("tail") or corner or edge or bare_center or _table_side(m)):
             return m.group(0)
         fb = m.group("fb") or ("far" if m.group("far") == "far" and corner else None)  # "the far left corner"
         if corner and not (fb and word in ("left", "right")):  # "the right corner": back right or front right?
