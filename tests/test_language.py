@@ -657,3 +657,39 @@ def test_a_diagonal_of_a_cube_is_refused_not_read_as_one_relation():
     with pytest.raises(ParseError, match="diagonal"):
         parse("Move the red block to the top left of the blue block.")
     assert meaning(parse("Put the red block in the front left of the table.")) == ["in_region(red,front_left)"]
+
+
+@pytest.mark.parametrize("text, kind, word", [
+    ("Put the enormous block on the red block.", "size", "enormous"),
+    ("Stack the red block on the blue block, then topple it.", "action", "topple"),
+    ("Make a stack of a dozen blocks.", "quantity", "dozen"),
+])
+def test_an_unknown_word_close_to_meaning_the_domain_lacks_is_refused_for_that(text, kind, word):
+    """These were refused only as unknown words ("could not parse 'enormous'")."""
+    from rpg.schema.builtin import Inexpressible
+
+    with pytest.raises(Inexpressible) as exc:
+        parse(text)
+    assert exc.value.kind == kind and f"'{word}'" in str(exc.value)
+
+
+def test_an_unknown_adverb_close_to_an_ignorable_word_is_dropped_and_listed():
+    """"Swiftly" was refused as an unknown word; it reads like "quickly" and is dropped, and the
+    accounting record says so."""
+    from rpg.schema.builtin import check_mentions
+
+    schema = parse("Swiftly stack the red block on the blue block.")
+    assert meaning(schema) == ["stack(blue,red)"]
+    record = check_mentions("Swiftly stack the red block on the blue block.", schema)
+    assert {"mention": "swiftly", "kind": "ignored",
+            "consumed_by": "nothing: no meaning for the goal (reads like 'quickly')"} in record
+
+
+@pytest.mark.parametrize("text, word", [
+    ("Put the swift block on the red block.", "swift"),  # it describes a cube: which one?
+    ("Stack the blocks diagonally.", "diagonally"),
+    ("Put the red block sideways next to the blue block.", "sideways"),
+])
+def test_unknown_words_that_may_carry_meaning_stay_refused(text, word):
+    with pytest.raises(ParseError, match=f"'{word}'"):
+        parse(text)

@@ -11,7 +11,6 @@ model directory (the package must be installed by the user; nothing is downloade
 
 from __future__ import annotations
 
-from functools import lru_cache
 from pathlib import Path
 
 import numpy as np
@@ -21,12 +20,11 @@ from rpg.errors import BadInput
 METHODS = ("wordllama", "tfidf", "st:PATH")
 
 
-@lru_cache(maxsize=1)
 def _wordllama():
-    import wordllama
-    from wordllama import WordLlama
+    """The WordLlama model, loaded offline (:func:`rpg.schema.senses.wordllama`)."""
+    from rpg.schema.senses import wordllama
 
-    return WordLlama.load(cache_dir=Path(wordllama.__file__).parent, disable_download=True)
+    return wordllama()
 
 
 def embed(texts: list[str], method: str = "wordllama") -> np.ndarray:

@@ -31,7 +31,7 @@ from rpg.schema.reading import (
     color_mentions,
     explicit_labels,
     mark_regions,
-    normalize,
+    normalize_words,
 )
 from rpg.schema.structures import STRUCTURE_KINDS, STRUCTURE_RE, structure_of_word
 
@@ -346,7 +346,10 @@ def check_mentions(instruction: str, schema: TaskSchema) -> list[dict]:
     Raises:
         UnaccountedMention: a named colour, count, patch, place or relation has no part in the schema.
     """
-    return account_named(normalize(instruction, strict=False)[0], schema)
+    text, _, dropped = normalize_words(instruction, strict=False)
+    return account_named(text, schema) + [
+        {"mention": w, "kind": "ignored", "consumed_by": f"nothing: no meaning for the goal (reads like '{like}')"}
+        for w, like in dropped]
 
 
 def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:

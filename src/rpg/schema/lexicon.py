@@ -146,6 +146,45 @@ UNKNOWN_ACTION = ("action", "is an action the domain does not have: a task's goa
 """How an unknown verb is refused when it stands where a command's verb does (first word of a
 clause: "throw the red block", "then shake it")."""
 
+UNKNOWN_KIND_EXEMPLARS: dict[str, tuple[str, ...]] = {
+    "size": tuple("big small large tiny huge giant heavy thin thick wide narrow size sized massive miniature".split()),
+    "quantity": tuple("few many several half most dozen plenty amount distance centimeter inch meter degrees maximum "
+                      "minimum percent".split()),
+    "time": tuple("second minute hour until later soon wait duration moment forever".split()),
+    "negation": tuple("not never without except avoid none nothing".split()),
+    "condition": tuple("if unless whenever otherwise".split()),
+    "action": tuple("rotate spin throw flip roll shake topple knock pour cut open close twist wipe sweep toss".split()),
+    "object": tuple("ball cup mug bottle bowl plate peg nut rope disk cylinder sphere container drawer shelf basket "
+                    "tray".split()),
+    "shape": tuple("triangle star heart hexagon oval arch staircase spiral".split()),
+    "reference": tuple("previous earlier original former latter remaining".split()),
+}
+"""Words of meaning the domain cannot express, by class (:data:`INEXPRESSIBLE`,
+:data:`UNKNOWN_OBJECT`, :data:`UNKNOWN_ACTION`, :data:`SHAPE_WHY`): an unknown word whose
+embedding is close to one of them is refused for that class (:mod:`rpg.schema.senses`)."""
+
+SHAPE_WHY = ("names a shape the domain does not build: its structures are towers, lines, circles, grids, walls, "
+             "pyramids, bridges and piles of 5 cm cubes")
+"""Why a shape the domain lacks is refused (:data:`UNKNOWN_KIND_EXEMPLARS`)."""
+
+SENSE_MIN_SIMILARITY: float = 0.5
+"""Least cosine similarity (WordLlama, 256-d) of an unknown word to a word of
+:data:`UNKNOWN_KIND_EXEMPLARS` for it to be refused for that class; it must also be at least
+its similarity to every vocabulary word.  At 0.5, "enormous" (0.60 to "huge"), "toppled" (0.74
+to "topple") and "dozen" are classed; "gigantic" (0.34) and "kick" (0.24) stay unknown words
+(project, set on the development split)."""
+
+IGNORABLE_MIN_SIMILARITY: float = 0.45
+"""Least cosine similarity of an unknown adverb or adjective to an :data:`IGNORABLE` word for
+it to be dropped like one ("swiftly" 0.60 to "quickly", "wonderful" 0.64 to "great")."""
+
+IGNORABLE_MARGIN: float = 0.1
+"""How much closer to an ignorable word than to every vocabulary word such a word must be.
+With :data:`IGNORABLE_MIN_SIMILARITY`, leaving each vocabulary word out in turn, only "goes",
+"robot" and "sequential" would read as ignorable (none changes a goal), and none of 70
+spatial, structural and reference words tried ("diagonally", "sideways", "staggered",
+"stairs", "upside", "remaining") does (project, ``tests/corpus/synonym_threshold.py``)."""
+
 REFERENCE_PRONOUN_RE = re.compile(
     r"\b(it|them|they)\b(?!\s*(?:is|was|will|would|should|must|has)\b)"
     r"|\b(that|this|those|these)\b(?=\s*(?:[.,;!?]|$)|\s+(?:on|onto|to|in|into|next|beside|behind|under|from|off|up"

@@ -18,7 +18,7 @@ from rapidfuzz import fuzz, process
 
 from rpg.domain.palette import COLOR_ALIASES
 from rpg.errors import BadInput
-from rpg.schema import lexicon
+from rpg.schema import lexicon, senses
 from rpg.schema.lexicon import (
     COLOR_RE,
     COLORS,
@@ -180,8 +180,23 @@ _CLAUSE_START_BEFORE = re.compile(r"(?:^|[.,;:!?]\s*|\b(?:and|then|please|to|mus
                                   r"|\b(?:can|could|would|will)\s+you\s+)$")
 
 
+_KIND_WHY: dict[str, str] = {**{kind: why for kind, _, why in reversed(lexicon.INEXPRESSIBLE)},
+                             "object": lexicon.UNKNOWN_OBJECT[1], "action": lexicon.UNKNOWN_ACTION[1], "shape": lexicon.SHAPE_WHY}
+"""Why each class of meaning the domain lacks is refused (the first :data:`lexicon.INEXPRESSIBLE`
+entry of a class speaks for it)."""
+
+
 def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
     """Lower-case, number words to digits, typos corrected.  Returns (text, original).
+    See :func:`normalize_words` (which also says the words it dropped)."""
+    text, original, _ = normalize_words(instruction, strict)
+    return text, original
+
+
+def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, list[tuple[str, str]]]:
+    """Lower-case, number words to digits, typos corrected.  Returns (text, original, dropped):
+    ``dropped`` lists the unknown words read as ignorable (:mod:`rpg.schema.senses`), each with
+    the ignorable word it reads like.
 
     Args:
         strict: refuse words the parser does not know (``False``: keep them, for reading the
@@ -258,6 +273,19 @@ def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
             fixed[w] = match[0]
         else:
             unknown.append(w)
+    dropped = []
+    for w in dict.fromkeys(unknown):
+        read = senses.sense(w)
+        if read.kind in _KIND_WHY and strict:
+            like = f" ('{w}' reads like '{read.like}')" if read.like != w else ""
+            raise Inexpressible(read.kind, [w], _KIND_WHY[read.kind] + like, original)
+        if read.kind == "ignorable" and not re.search(rf"(?<![\w-]){re.escape(w)}\s+(?:(?:{COLOR_RE})\s+)?(?:blocks?|cubes?|ones?"
+                                                      rf"|boxes|box|patch(?:es)?|{COLOR_RE})\b", text):
+            dropped.append((w, read.like))  # never one that describes a cube ("the swift block")
+    if dropped:
+        gone = {w for w, _ in dropped}
+        unknown = [w for w in unknown if w not in gone]
+        text = " ".join(w for w in text.split(" ") if re.sub(r"[.,;:!?]+$", "", w) not in gone)
     if unknown and strict:
         classed = _unknown_word_class(text, list(dict.fromkeys(unknown)))
         if classed is not None:
@@ -302,7 +330,7 @@ def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
         text = re.sub(rf"\b{w}\b", str(n), text)
     text = re.sub(r"\bgrey\b", "gray", text)
     text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall|tier)", r"\1 \2", text)
-    return " ".join(_structure_phrases(" ".join(text.split())).split()), original
+    return " ".join(_structure_phrases(" ".join(text.split())).split()), original, dropped
 
 
 _GROUP = rf"(?P<n{{i}}>\d+)\s+(?P<c{{i}}>{COLOR_RE})(?:\s+(?:blocks|cubes))?"
