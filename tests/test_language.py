@@ -693,3 +693,19 @@ def test_an_unknown_adverb_close_to_an_ignorable_word_is_dropped_and_listed():
 def test_unknown_words_that_may_carry_meaning_stay_refused(text, word):
     with pytest.raises(ParseError, match=f"'{word}'"):
         parse(text)
+
+
+@pytest.mark.parametrize("text, want", [
+    ("Put the red block on the blue block's left.", ["left_of(red,blue)"]),  # compiled stack(blue,red)
+    ("Place the red block at the blue block's front.", ["in_front_of(red,blue)"]),
+    ("Put the red block far from the blue block.", ["far_from(blue,red)"]),
+    ("Move the red block far away from the blue block.", ["far_from(blue,red)"]),
+    ("Place the red and green blocks on either side of the blue block.", ["between(blue;green,red)"]),
+])
+def test_relations_said_by_a_cube_s_side_far_from_and_either_side(text, want):
+    assert meaning(parse(text)) == want
+
+
+def test_cubes_next_to_each_other_and_far_apart_is_a_contradiction():
+    with pytest.raises(ParseError, match="contradict"):
+        parse("Put the red block next to the blue block and far from it.")

@@ -633,6 +633,8 @@ class FarFrom(Predicate):
     a: str
     b: str
     name: ClassVar[str] = "far_from"
+    phrases: ClassVar[str] = r"far (?:away )?from|away from"
+    phrase: ClassVar[str] = "far from"
     cue: ClassVar[str] = r"\b(?:far|apart|away|distant|separat\w*)\b"
     object_fields: ClassVar[tuple[str, ...]] = ("a", "b")
 

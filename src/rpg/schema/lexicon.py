@@ -355,7 +355,7 @@ words (:mod:`rpg.schema.structures`)."""
 HEIGHT_WORDS = r"(?:(?:blocks?|cubes?|stor(?:y|ey|ies|eys)|levels?|tiers?|layers?)(?:\s+(?:high|tall))?|high|tall)"
 
 
-PAIRWISE_RELATIONS: tuple[str, ...] = ("left_of", "right_of", "in_front_of", "behind", "next_to")
+PAIRWISE_RELATIONS: tuple[str, ...] = ("left_of", "right_of", "in_front_of", "behind", "next_to", "far_from")
 """Relations between two named cubes that the relational reader states with one predicate of
 that name (:data:`rpg.domain.predicates.PREDICATES`)."""
 

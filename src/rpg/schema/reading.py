@@ -232,6 +232,16 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     # "to its left": the relation to the cube "it" stands for (resolved like "to the left of it")
     text = re.sub(r"\b(?:to|on|at)\s+(its|their)\s+(left|right)(?:\s+(?:hand\s+)?side)?\b",
                   lambda m: f"to the {m.group(2)} of {'it' if m.group(1) == 'its' else 'them'}", text)
+    # "on the blue block's left": the relation to that cube (it compiled a stack on it)
+    text = re.sub(rf"\b(?:on|to|at)\s+the\s+((?:{COLOR_RE})\s+(?:block|cube|one))'s\s+(left|right)(?:\s+(?:hand\s+)?side)?\b",
+                  r"to the \2 of the \1", text)
+    text = re.sub(rf"\b(?:on|to|at|in)\s+the\s+((?:{COLOR_RE})\s+(?:block|cube|one))'s\s+(front|back|rear)(?:\s+side)?\b",
+                  lambda m: f"{'in front of' if m.group(2) == 'front' else 'behind'} the {m.group(1)}", text)
+    # "the red and green blocks on either side of the blue block": the blue block between them
+    text = re.sub(rf"\b(put|place|set|move)\s+the\s+({COLOR_RE})\s+and\s+(?:the\s+)?({COLOR_RE})\s+(blocks|cubes)\s+"
+                  rf"(?:on|at|to)\s+(?:either|each|both|opposite)\s+sides?\s+of\s+the\s+({COLOR_RE})\s+(?:block|cube|one)\b",
+                  lambda m: f"{m.group(1)} the {m.group(5)} {m.group(4)[:-1]} between the {m.group(2)} {m.group(4)[:-1]} and "
+                            f"the {m.group(3)} {m.group(4)[:-1]}", text)
     # "put one block on (top of) the other": the two blocks stacked, either on top
     text = re.sub(r"\b(put|place|stack|set)\s+one\s+(block|cube)\s+(?:on|onto|upon)\s+(?:top\s+of\s+)?the\s+other(?:\s+one)?\b",
                   r"\1 two \2s on top of each other", text)
@@ -466,6 +476,7 @@ def _table_side(m: re.Match) -> bool:
     right"): then it is the table's side.  Anything else that could anchor it (another
     relation, a second clause, a pronoun) leaves it relative (and the text refused)."""
     return (m.group("part") == "" and m.group(0).split()[0] in ("on", "to", "at", "in")
+            and (m.group("lr") or m.group("lr2")) not in ("middle", "center", "centre")  # a role or the centre: above
             and re.fullmatch(r"\s*[.!]?\s*", m.string[m.end():]) is not None
             and _RELATIVE_RE.search(m.string[:m.start()]) is None)
 

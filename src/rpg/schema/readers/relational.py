@@ -20,6 +20,7 @@ from rpg.domain.predicates import (
     Between,
     InRegion,
     LeftOf,
+    FarFrom,
     NextTo,
     OnPatch,
     OnTable,
@@ -304,6 +305,11 @@ def _refuse_crossed_relations(f: Features, rels: list) -> None:
         lo, hi = (q.b, q.a) if q.sign > 0 else (q.a, q.b)  # along the axis, lo comes before hi
         by_pair.setdefault(frozenset((q.a, q.b)), set()).add((type(q).axis, lo, hi))
         graphs.setdefault(type(q).axis, nx.DiGraph()).add_edge(lo, hi, rel=q.describe())
+    near = {frozenset((q.a, q.b)) for q in rels if isinstance(q, NextTo)}
+    far = [q for q in rels if isinstance(q, FarFrom) and frozenset((q.a, q.b)) in near]
+    if far:
+        raise ParseError(f"the relations of \"{f.original[:80]}\" contradict each other ({far[0].describe()}; "
+                         f"{far[0].a} next to {far[0].b}): cubes next to each other cannot be far apart; say one")
     crossed = next((ways for ways in by_pair.values() if len(ways) > 1), None)
     cycle = next((c for g in graphs.values() for c in [next(iter(nx.simple_cycles(g)), None)] if c), None)
     if crossed or cycle:
@@ -452,7 +458,7 @@ def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch:
         for m, xy in zip(members, region_spots(region, len(members)), strict=True):
             placed[m] = xy
     offset = {"left_of": (0.0, 0.10), "right_of": (0.0, -0.10), "in_front_of": (-0.10, 0.0), "behind": (0.10, 0.0),
-              "next_to": (0.0, 0.06)}
+              "next_to": (0.0, 0.06), "far_from": (0.0, C.FAR_FROM_MIN_DIST + 0.04)}
     cx, cy = C.WORKSPACE_CENTER
     for r in rels:
         a, c = base_of[r.a], base_of[r.b]
