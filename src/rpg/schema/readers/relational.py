@@ -18,9 +18,9 @@ from rpg.domain.layouts import (
 from rpg.domain.predicates import (
     PREDICATES,
     Between,
+    FarFrom,
     InRegion,
     LeftOf,
-    FarFrom,
     NextTo,
     OnPatch,
     OnTable,
