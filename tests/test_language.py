@@ -709,3 +709,18 @@ def test_relations_said_by_a_cube_s_side_far_from_and_either_side(text, want):
 def test_cubes_next_to_each_other_and_far_apart_is_a_contradiction():
     with pytest.raises(ParseError, match="contradict"):
         parse("Put the red block next to the blue block and far from it.")
+
+
+def test_roles_said_with_is_bind_to_their_cubes():
+    """"so that red is at the bottom, green in the middle and blue on top" compiled green at
+    the bottom; "so that green is on top" fixed the other two cubes' order too."""
+    assert meaning(parse("Stack the blocks so that red is at the bottom, green in the middle and blue on top.")) == [
+        "stack(red,green,blue)"]
+    goal = parse("Stack the red, green and blue blocks so that green is on top.").goal
+    assert goal.name == "anchored_stack" and goal.top and not goal.bottom and goal.objects[-1] == "green"
+
+
+def test_cubes_listed_with_articles_keep_their_stated_order():
+    """"a yellow, a green and a blue block from left to right" lost its order."""
+    assert meaning(parse("Line up a yellow, a green and a blue block from left to right.")) == [
+        "line[left_to_right](yellow,green,blue)"]

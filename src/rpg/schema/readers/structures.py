@@ -407,7 +407,7 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         return False
     direction = direction_of(f)
     item = rf"(?:{COLOR_RE})(?:\s+(?:blocks?|cubes?))?(?:\s+first)?"  # "the blue block first, then the red block"
-    listed = re.search(rf"\b((?:{item})(?:\s*(?:,\s*and|,|and|then)\s+(?:then\s+)?(?:the\s+)?(?:{item})\b)+)", f.text)
+    listed = re.search(rf"\b((?:{item})(?:\s*(?:,\s*and|,|and|then)\s+(?:then\s+)?(?:the\s+|an?\s+)?(?:{item})\b)+)", f.text)
     if not explicit and not order and listed:
         seq = re.findall(rf"\b(?:{COLOR_RE})\b", listed.group(1))
         if re.search(r"\b(?:left to right|right to left|front to back|back to front)\b", f.text) or \
@@ -578,7 +578,8 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
     hints: dict[int, str] = {}
     for m in mentions:
         item = (None, m.group("label").upper()) if m.group("label") else (canon_color(m.group("color")), None)
-        hint = re.match(r"\s*(?:(?:block|cube)s?\s*)?<(bottom|base|top|middle|center|centre)>", text[m.end():])
+        hint = re.match(r"\s*(?:(?:block|cube)s?\s*)?(?:(?:is|goes|sits|stands|(?:should|must|will)\s+be|ends\s+up)\s+)?"
+                        r"<(bottom|base|top|middle|center|centre)>", text[m.end():])  # "so that red is at the bottom"
         if hint and item in items:  # "... with yellow at the bottom": a hint about a listed cube
             hints[items.index(item)] = hint.group(1)
             continue
