@@ -724,3 +724,9 @@ def test_cubes_listed_with_articles_keep_their_stated_order():
     """"a yellow, a green and a blue block from left to right" lost its order."""
     assert meaning(parse("Line up a yellow, a green and a blue block from left to right.")) == [
         "line[left_to_right](yellow,green,blue)"]
+
+
+def test_next_to_it_after_a_cube_put_on_a_patch_is_refused_not_read_as_on_the_patch():
+    """"... on the red patch and the blue block next to it" put the blue block on the patch."""
+    with pytest.raises(ParseError, match="next to it' may mean"):
+        parse("Place the red block on the red patch and the blue block next to it.")

@@ -162,6 +162,9 @@ class RelationalReading:
                 referent = self.previous[0] if (kind == "on" and self.previous[1] in self.patch_names.values()) else self.previous[1]
                 a = self.obj(a_m)
                 self.subjects.add((a_m.color, a_m.label))
+                if referent in self.patch_names.values() and kind != "on":
+                    raise ParseError(f"'{kind.replace('_', ' ')} it' may mean the cube {self.previous[0]} or the patch it "
+                                     "was put on; name which (e.g. \"next to the red block\")")
                 if referent in self.patch_names.values():
                     self.onpatch.append((a, referent))
                 elif kind == "on":
