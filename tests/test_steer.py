@@ -733,3 +733,24 @@ def test_an_edit_that_changes_nothing_is_refused(tmp_path):
         steer(fam, "make it red")
     if before is not None:
         assert (fam / "family.yaml").read_bytes() == before
+
+
+@pytest.mark.parametrize("base, edit, colors", [
+    ("Line up a yellow, a green and a blue block from left to right", "add a red block at the left end",
+     ["red", "yellow", "green", "blue"]),
+    ("Line up a yellow, a green and a blue block from right to left", "add a red block at the left end",
+     ["yellow", "green", "blue", "red"]),
+    ("Line up a yellow, a green and a blue block from left to right", "add a red block at the right end",
+     ["yellow", "green", "blue", "red"]),
+])
+def test_a_cube_added_at_a_named_end_of_a_directed_line_goes_there(base, edit, colors):
+    """"add a red block at the left end" of a left-to-right line appended it on the right."""
+    assert apply_ops(extract(parse(base)), interpret(edit).ops).colors() == colors
+
+
+def test_a_line_has_no_end_across_its_direction():
+    from rpg.steer.edits import SteerError
+
+    with pytest.raises(SteerError, match="has no front end"):
+        apply_ops(extract(parse("Line up a yellow, a green and a blue block from left to right")),
+                  interpret("add a red block at the front end").ops)

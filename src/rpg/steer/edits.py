@@ -382,7 +382,7 @@ def read_ops(t: str) -> list[Op]:
         color = re.search(rf"\b({COLOR_RE})\b", rest)
         ops.append(Op("add_layer", {"color": canon_color(color.group(1)) if color else None}))
     adds = [] if layer or (substitution and mats) or any(o.op in ("move", "pattern") for o in ops) else re.finditer(
-        r"\b(?P<verb>add|append|include|put|place|stack|set)\b(?P<what>.*?)(?P<where>\bon top\b|\b(?:at|to|on) (?:the )?(?:very )?(?:top|bottom|base|end|start|beginning)\b|"
+        r"\b(?P<verb>add|append|include|put|place|stack|set)\b(?P<what>.*?)(?P<where>\bon top\b|\b(?:at|to|on) (?:the )?(?:very )?(?:(?:left|right|front|back) end|top|bottom|base|end|start|beginning)\b|"
         r"\b(?:under|underneath|beneath|below)\b|\bto the (?:left|right|end|start)\b|\bon the (?:left|right)\b|\bon(?:to)?(?= (?:the|it|them|that)\b)(?! the table\b)"
         r"|[;,.]|\band\b|$)", t)
     add = next((a for a in adds if _adds_a_cube(a, t)), None)
@@ -923,7 +923,15 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
                 item = Item(color=unused[0]) if spec.ordering == "color" and unused else spec.items[0] if alike else _next_item(grow)
                 new.append(item)
                 grow = grow.with_items(list(grow.items) + [item])
-            items = new + list(spec.items) if p.get("at") == "bottom" else list(spec.items) + new
+            at = p.get("at")
+            side_end = re.search(r"\b(left|right|front|back) end\b", p.get("end") or "")
+            if side_end and spec.direction:  # "at the left end" of a line read left to right: its first cube
+                first, last = spec.direction.split("_to_")
+                if side_end.group(1) not in (first, last):
+                    raise SteerError(f"'{p['end']}': the line runs {spec.direction.replace('_', ' ')} and has no "
+                                     f"{side_end.group(1)} end")
+                at = "bottom" if side_end.group(1) == first else "top"
+            items = new + list(spec.items) if at == "bottom" else list(spec.items) + new
             spec = spec.with_items(items)
             if spec.word:  # "add an S at the end": the cubes spell a longer word
                 word = "".join(i.label or "" for i in spec.items)
