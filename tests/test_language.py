@@ -730,3 +730,10 @@ def test_next_to_it_after_a_cube_put_on_a_patch_is_refused_not_read_as_on_the_pa
     """"... on the red patch and the blue block next to it" put the blue block on the patch."""
     with pytest.raises(ParseError, match="next to it' may mean"):
         parse("Place the red block on the red patch and the blue block next to it.")
+
+
+@pytest.mark.parametrize("text", ["Rotate the red block.", "Flip the green block over.", "Move the red block."])
+def test_an_action_verb_with_nowhere_for_the_cube_to_end_says_no_end_state(text):
+    """These were refused as "could not find a task", which names no reason."""
+    with pytest.raises(ParseError, match="says no end state: '[a-z]+' is an action"):
+        parse(text)

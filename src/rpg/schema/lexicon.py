@@ -247,9 +247,10 @@ hands"): a task's goal says where cubes end up, whichever arm or hand takes them
 words are dropped (:func:`rpg.schema.reading.normalize`)."""
 
 NO_GOAL_RE = re.compile(r"\b(?:pick(?:\s+(?:it|them))?\s+up|pick|grab|grasp|take|lift|raise|hold|get|find|locate|point\s+(?:at|to)"
-                        r"|look\s+at|reach(?:\s+for)?)\b")
+                        r"|look\s+at|reach(?:\s+for)?|rotate|turn|flip|push|pull|touch|tap|poke|nudge|move|slide|shift|place|put|set|drop)\b")
 """Verbs of an action that moves no cube to a place ("pick up the orange block", "grab the red
-cube"): an instruction that says one and no task is refused as saying no end state."""
+cube", "rotate the red block", "push the blue block"): an instruction that says one and no task
+is refused as saying no end state (an action, and nowhere for the cube to end)."""
 
 PLACEMENT_VERBS: dict[str, str] = {
     "put": "place", "place": "place", "set": "place", "move": "place", "push": "place", "slide": "place",
