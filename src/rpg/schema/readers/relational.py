@@ -164,7 +164,7 @@ class RelationalReading:
                 self.subjects.add((a_m.color, a_m.label))
                 if referent in self.patch_names.values() and kind != "on":
                     raise ParseError(f"'{kind.replace('_', ' ')} it' may mean the cube {self.previous[0]} or the patch it "
-                                     "was put on; name which (e.g. \"next to the red block\")")
+                                     "was put on; say which (e.g. \"next to the red block\")")
                 if referent in self.patch_names.values():
                     self.onpatch.append((a, referent))
                 elif kind == "on":
