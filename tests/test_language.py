@@ -732,8 +732,13 @@ def test_next_to_it_after_a_cube_put_on_a_patch_is_refused_not_read_as_on_the_pa
         parse("Place the red block on the red patch and the blue block next to it.")
 
 
-@pytest.mark.parametrize("text", ["Rotate the red block.", "Flip the green block over.", "Move the red block."])
+@pytest.mark.parametrize("text", ["Rotate the red block.", "Flip the green block over.", "Move the red block.", "Push the red block."])
 def test_an_action_verb_with_nowhere_for_the_cube_to_end_says_no_end_state(text):
     """These were refused as "could not find a task", which names no reason."""
     with pytest.raises(ParseError, match="says no end state: '[a-z]+' is an action"):
         parse(text)
+
+
+def test_the_no_end_state_refusal_quotes_the_user_s_verb():
+    with pytest.raises(ParseError, match="'push' is an action"):
+        parse("Push the red block.")

@@ -198,6 +198,7 @@ def parse(instruction: str) -> TaskSchema:
         raise first_gap
     action = lexicon.NO_GOAL_RE.search(f.text)
     if action is not None:  # "pick up the orange block": an action, and nowhere for the cube to end
+        action = lexicon.NO_GOAL_RE.search(f.original.lower()) or action  # the user's verb ("push"), not its reading
         raise ParseError(f"\"{f.original[:80]}\" says no end state: '{action.group(0)}' is an action, and a task's goal "
                          "says where cubes end up (on, next to, in a line, on a patch...); say where the cube should go "
                          "(e.g. \"pick up the red block and put it on the blue block\"), or use --model")
