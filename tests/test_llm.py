@@ -80,7 +80,7 @@ def test_cli_model_exit_codes_and_replay(tmp_path, monkeypatch):
                "down": ["litellm.InternalServerError"], "junk": ["no json"] * 4}
     for case, responses in answers.items():
         monkeypatch.setattr(cli, "make_llm_client", lambda model, r=responses: LLMClient(model, mock_responses=list(r)))
-        res = runner.invoke(cli.app, ["compile", "put red at the back", "--model", MODEL, "-o", str(tmp_path / case), "--json"])
+        res = runner.invoke(cli.app, ["compile", "put red behind yellow", "--model", MODEL, "-o", str(tmp_path / case), "--json"])
         if case == "ok":
             assert res.exit_code == 0, res.output
             path = json.loads(res.stdout)["path"]

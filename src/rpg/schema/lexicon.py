@@ -247,10 +247,12 @@ hands"): a task's goal says where cubes end up, whichever arm or hand takes them
 words are dropped (:func:`rpg.schema.reading.normalize`)."""
 
 NO_GOAL_RE = re.compile(r"\b(?:pick(?:\s+(?:it|them))?\s+up|pick|grab|grasp|take|lift|raise|hold|get|find|locate|point\s+(?:at|to)"
-                        r"|look\s+at|reach(?:\s+for)?|rotate|turn|flip|push|pull|touch|tap|poke|nudge|move|slide|shift|place|put|set|drop)\b")
-"""Verbs of an action that moves no cube to a place ("pick up the orange block", "grab the red
-cube", "rotate the red block", "push the blue block"): an instruction that says one and no task
-is refused as saying no end state (an action, and nowhere for the cube to end)."""
+                        r"|look\s+at|reach(?:\s+for)?)\b"
+                        r"|\b(?:rotate|turn|flip|push|pull|touch|tap|poke|nudge|move|slide|shift|place|put|set|drop)\s+"
+                        r"(?:the\s+|a\s+|an\s+)?(?:[a-z0-9']+\s+){0,2}?(?:block|cube|box|one)s?(?:\s+(?:over|around|down))?\s*[.!]?$")
+"""Actions that move no cube to a place ("pick up the orange block", "grab the red cube"), and
+a verb whose sentence ends at its cube ("rotate the red block", "push the blue block."): an
+instruction that says one and no task is refused as saying no end state."""
 
 PLACEMENT_VERBS: dict[str, str] = {
     "put": "place", "place": "place", "set": "place", "move": "place", "push": "place", "slide": "place",

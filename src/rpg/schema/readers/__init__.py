@@ -13,6 +13,8 @@ way), and one module per family: :mod:`.places`, :mod:`.structures`, :mod:`.temp
 
 from __future__ import annotations
 
+import re
+
 from pydantic import ValidationError
 
 from rpg.domain.predicates import (
@@ -198,8 +200,9 @@ def parse(instruction: str) -> TaskSchema:
         raise first_gap
     action = lexicon.NO_GOAL_RE.search(f.text)
     if action is not None:  # "pick up the orange block": an action, and nowhere for the cube to end
-        action = lexicon.NO_GOAL_RE.search(f.original.lower()) or action  # the user's verb ("push"), not its reading
-        raise ParseError(f"\"{f.original[:80]}\" says no end state: '{action.group(0)}' is an action, and a task's goal "
+        said = lexicon.NO_GOAL_RE.search(f.original.lower()) or action  # the user's verb ("push"), not its reading
+        verb = re.sub(r"\s.*(?:block|cube|box|one).*$", "", said.group(0).strip())  # "push the red block." -> push
+        raise ParseError(f"\"{f.original[:80]}\" says no end state: '{verb}' is an action, and a task's goal "
                          "says where cubes end up (on, next to, in a line, on a patch...); say where the cube should go "
                          "(e.g. \"pick up the red block and put it on the blue block\"), or use --model")
     raise ParseError(
