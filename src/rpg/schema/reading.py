@@ -2,7 +2,8 @@
 
 :func:`normalize` lower-cases an instruction, refuses what the domain cannot express
 (:data:`rpg.schema.lexicon.INEXPRESSIBLE`), writes number words as digits, corrects typos
-into the vocabulary (:data:`rpg.schema.lexicon.VOCAB`) and refuses words it does not know;
+into the vocabulary (:data:`rpg.schema.lexicon.VOCAB`), drops or classifies unknown words by
+their embedding (:mod:`rpg.schema.senses`) and refuses the rest naming them;
 :func:`features` gives the readers (:mod:`rpg.schema.readers`) the normalised text with its
 colour mentions.  Places on the table are marked (``@region_<name>``) by :func:`mark_regions`.
 

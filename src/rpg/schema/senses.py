@@ -16,7 +16,8 @@ or a typo of one) is compared with three curated word lists of :mod:`rpg.schema.
 
 Every other word stays unknown and the instruction is refused naming it.  The thresholds
 (:data:`~rpg.schema.lexicon.SENSE_MIN_SIMILARITY` and the others) were set on the lexicon's
-own lists (leave-one-out: no vocabulary word reads as ignorable) and the development split;
+own lists (leave-one-out: no vocabulary word that carries meaning reads as ignorable) and on
+made-up probe words, never on the unseen split;
 ``tests/corpus/synonym_threshold.py`` shows why no threshold maps a word *to* a vocabulary
 word safely (opposites such as left/right are as close as synonyms), so nothing unknown is
 ever read as a known word here.
