@@ -742,3 +742,71 @@ def test_an_action_verb_with_nowhere_for_the_cube_to_end_says_no_end_state(text)
 def test_the_no_end_state_refusal_quotes_the_user_s_verb():
     with pytest.raises(ParseError, match="'push' is an action"):
         parse("Push the red block.")
+
+
+@pytest.mark.parametrize("text", [
+    "Stack the red, green and blue blocks in any order.",
+    "Put the red, green and blue blocks on top of each other, the order doesn't matter.",
+    "Stack the yellow, red and blue cubes (any order is fine).",
+])
+def test_any_order_leaves_a_listed_stack_unordered(text):
+    """"in any order" kept the listed order ("order" is an order word); "doesn't matter" was
+    refused as a negation."""
+    assert parse(text).goal.name == "unordered_stack"
+
+
+@pytest.mark.parametrize("text, want", [
+    ("Ok so basically I need the red cube sitting on top of the blue cube.", ["stack(blue,red)"]),
+    ("Task: green cube on the yellow patch.", ["on_patch(green,patch:yellow)"]),
+    ("For this task the robot should put the red block left of the blue block.", ["left_of(red,blue)"]),
+    ("The robot must stack the red block on the green block.", ["stack(green,red)"]),
+    ("Just put the red block behind the blue block, nothing fancy.", ["behind(red,blue)"]),
+    ("Put the red cube so it is resting on the blue cube.", ["stack(blue,red)"]),
+    ("Pile the yellow cube onto the green cube.", ["stack(green,yellow)"]),
+    ("Place the red cube into the center of the green patch.", ["on_patch(red,patch:green)"]),
+])
+def test_framing_fillers_and_postures_say_nothing_of_the_goal(text, want):
+    assert meaning(parse(text)) == want
+
+
+def test_pile_onto_each_other_is_one_stack_not_piles_by_colour():
+    """It compiled three separate piles, one per colour."""
+    assert parse("Pile the red, green and blue blocks on top of each other.").goal.name == "unordered_stack"
+
+
+def test_a_count_said_as_a_total_is_the_line_s_count():
+    assert meaning(parse("Make a row of alternating blue and yellow blocks, four in total.")) == [
+        "line[sequence](blue,yellow,blue,yellow)"]
+
+
+def test_a_line_starting_with_its_first_colour_at_a_side_runs_from_that_side():
+    """"starting with red on the left" was dropped (the line read from either end)."""
+    assert meaning(parse("Make a row of alternating red and green blocks, four in total, starting with red on the left.")) == [
+        "line[left_to_right](red,green,red,green)"]
+    assert meaning(parse("Make a line of red, green and blue blocks starting with the red block on the right.")) == [
+        "line[right_to_left](red,green,blue)"]
+
+
+@pytest.mark.parametrize("text", ["Make a line of red, green and blue blocks with the blue block on the right.",
+                                  "Make a line of red, green and blue blocks starting with the blue block on the right.",
+                                  "Make a line of red, green and blue blocks from left to right with the red block on the right."])
+def test_a_line_end_given_a_cube_the_goal_does_not_put_there_is_refused(text):
+    """"with the blue block on the right" was dropped: any order of the three compiled."""
+    with pytest.raises(ParseError, match="end"):
+        parse(text)
+
+
+def test_a_stack_put_on_a_patch_through_its_base_is_said_once():
+    """"red on the blue block and the blue block on the green patch" was refused as stating
+    'blue on green_patch' twice."""
+    assert meaning(parse("Put the yellow block on the red block and the red block on the blue patch.")) == [
+        "on_patch(red,patch:blue)", "stack(red,yellow)"]
+
+
+@pytest.mark.parametrize("text, want", [
+    ("Put the green block behind the red block, close to it.", ["behind(green,red)", "next_to(green,red)"]),
+    ("Place the red block left of the blue block, next to it.", ["left_of(red,blue)", "next_to(blue,red)"]),
+])
+def test_a_relation_after_a_comma_keeps_the_subject_of_the_one_before(text, want):
+    """"close to it" related the last-named cube to itself and was refused."""
+    assert sorted(meaning(parse(text))) == sorted(want)

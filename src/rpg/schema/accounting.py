@@ -134,9 +134,15 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
         out.append(Mention(m.group(0), "place", region=m.group(1)))
     for m in BARE_PLACE_RE.finditer(text):  # "at the front", "in the middle": a place, unless a face or a role
         before = text[:m.start()]
-        if not (re.search(r"\bfac\w*\s+(?:\w+\s+){0,2}$", before)
-                or names_a_role(before, text)):
+        if re.search(r"\bfac\w*\s+(?:\w+\s+){0,2}$", before):
+            continue
+        if not names_a_role(before, text):
             out.append(Mention(m.group(0), "bare place", region=BARE_PLACES[m.group("side")]))
+        elif m.group("side") in SIDE_RELATIONS:  # "a line of red, green and blue with blue on the right": an end
+            said = before[before.rfind("with"):]
+            role = re.search(rf"\b({colors})\b", said)
+            out.append(Mention(said.strip() + " " + m.group(0), "end role",
+                               color=canon(role.group(1)) if role else None, region=m.group("side")))
     for m in re.finditer(rf"(?<!,\s)(?<!and\s)(?<!or\s)\b(?:all\s+)?the\s+(?P<c>{colors})\s+(?:cubes|blocks|ones|bricks|boxes)\b",
                          text):  # "the pink cubes": several of that colour (a listed "red and blue blocks" is not)
         out.append(Mention(m.group(0), "plural", color=canon(m.group("c"))))
@@ -174,6 +180,27 @@ def _count_towers(goal: list[P.Predicate]) -> int:
     bases = {p.b for p in goal if isinstance(p, P.On)}
     tops = {p.a for p in goal if isinstance(p, P.On)}
     return n + len(bases - tops)
+
+
+_END_OF = {"left": ("left_to_right", "right_to_left"), "right": ("right_to_left", "left_to_right"),
+           "front": ("front_to_back", "back_to_front"), "back": ("back_to_front", "front_to_back")}
+"""A side -> (the direction whose first object is at that side, the one whose last is)."""
+
+
+def _ends_at(goal: list[P.Predicate], side: str, color_of: dict[str, str | None], color: str | None) -> list[str]:
+    """The goal predicates that put a cube of ``color`` (any, None) at ``side``: a relation
+    with that side (:data:`SIDE_RELATIONS`) over such a cube, or a directed line that ends there with one."""
+    first, last = _END_OF[side]
+    out = []
+    for p in goal:
+        names = p.object_names()
+        if p.name in SIDE_RELATIONS[side] and (color is None or any(color_of.get(n) == color for n in names)):
+            out.append(p.name)
+        elif isinstance(p, P.InLine) and p.order in (first, last):
+            end = p.objects[0] if p.order == first else p.objects[-1]
+            if color is None or color_of.get(end) == color:
+                out.append(f"in_line {p.order}")
+    return out
 
 
 def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
@@ -248,6 +275,12 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
             if have < m.count:
                 raise UnaccountedMention(f"it names {m.count} towers but the task read has {have}")
             record.append({"mention": m.words, "kind": "towers", "consumed_by": f"{have} stacks"})
+        elif m.kind == "end role":
+            ends = _ends_at(goal, m.region, {a.name: a.color for a in schema.assets}, m.color)
+            if not ends:
+                raise UnaccountedMention(f"'{m.words}' puts a cube at the {m.region} end and the task read leaves "
+                                         "that end free (say the whole order, e.g. 'from left to right: red, green, blue')")
+            record.append({"mention": m.words, "kind": "place", "consumed_by": ", ".join(ends)})
         elif m.kind == "bare place":  # a side of the table, or the sides of a relation ("red on the left, blue on the right")
             sides = {r for r in regions if m.region in r.split("_")} | {
                 name for p in goal for name in SIDE_RELATIONS.get(m.region, ()) if p.name == name}

@@ -42,6 +42,7 @@ IGNORABLE_MORE: frozenset[str] = frozenset("""
 nice nicely neat tidy tidily maybe perhaps possibly need needs needed want wants wanted let am
 try trying attempt anywhere somewhere flat flatly thanks thank cool great gonna wanna um uh yeah alright
 help wood wooden plastic properly securely stably steadily safely accurately completely entirely fully pls plz sure
+basically essentially literally honestly
 """.split())
 """Further words with no meaning for the goal, each checked not to change what a task asks:
 hedges ("maybe"), wishes ("I need", "we'll", "let's"), praise ("nice"), "anywhere", "lay it
@@ -234,13 +235,16 @@ OTHER_SET_RE = re.compile(r"\b(?:one|two|both|each|either)\b")
 """What sets a cube apart before "the other" (:data:`OTHER_RE`)."""
 
 FRAMING_RE = re.compile(
-    r"^(?:(?:a|an|the)\s+(?:simple\s+|basic\s+|easy\s+|collaborative\s+|bimanual\s+|dual[- ]arm\s+)?(?:task|challenge|problem)"
+    r"^(?:(?:(?:for\s+)?(?:this|the|your|our|my)\s+|for\s+)?(?:task|goal|instruction|objective)\s*(?::|-|,|\bis\s*:)\s*"
+    r"|for\s+(?:this|the)\s+task,?\s+)?"
+    r"(?:(?:a|an|the)\s+(?:simple\s+|basic\s+|easy\s+|collaborative\s+|bimanual\s+|dual[- ]arm\s+)?(?:task|challenge|problem)"
     r"\s+(?:where|in\s+which)\s+)?"
-    r"(?:the\s+(?:robot|agent)\s+(?:has|needs|must)\s+to\s+|(?:the|your|its)\s+(?:objective|goal|task|job|aim)\s+is\s+to\s+"
+    r"(?:the\s+(?:robot|agent)\s+(?:has\s+to|needs\s+to|must|should)\s+|(?:the|your|its)\s+(?:objective|goal|task|job|aim)\s+is\s+to\s+"
     r"|(?:two|both|the|a)\s+(?:robot(?:ic)?\s+)?(?:arms?|robots)\s+(?:need|needs|must|should|have|has|are)\s+(?:to\s+)?"
-    r"(?:(?:work\s+together|cooperate|collaborate)\s+(?:to\s+)?)?)")
+    r"(?:(?:work\s+together|cooperate|collaborate)\s+(?:to\s+)?)?)?")
 """Framing before a task's verb that says nothing of the goal ("a simple task where the
-objective is to push a cube onto the target", "the robot has to stack two cubes"): dropped."""
+objective is to push a cube onto the target", "the robot has to stack two cubes", "Task: ...",
+"for this task the robot should ..."): dropped."""
 
 EFFECTOR_RE = re.compile(
     r"(?:,\s*)?\b(?:(?:by\s+)?using|use|with|by)\s+(?:the\s+|your\s+|its\s+|a\s+|one\s+|both\s+|each\s+|another\s+)?"
@@ -249,6 +253,34 @@ EFFECTOR_RE = re.compile(
 """Which effector moves the cubes ("use the left arm to", "with the gripper", "using both
 hands"): a task's goal says where cubes end up, whichever arm or hand takes them there, so the
 words are dropped (:func:`rpg.schema.reading.normalize`)."""
+
+POSTURE_RE = re.compile(r"\b(?:sitting|resting|lying|laying|sits|rests|lies|located|positioned|seated|perched)\s+"
+                        r"(?=(?:on|onto|upon|atop|in|inside|at|next|beside|behind|under|below|beneath|underneath|above|"
+                        r"between|near|by|to|directly|right|just|exactly)\b)")
+"""A posture verb before a place ("the green cube sitting on top of the yellow cube", "so it
+is resting on the patch"): every cube rests on a face, so only the place says anything; the
+verb is dropped (:func:`rpg.schema.reading.normalize`)."""
+
+PILE_ON_RE = re.compile(r"\b(?:pile|heap)(?:\s+up)?\s+(?=[^.;!?]*?\b(?:on|onto|upon|atop)\s+(?:top\s+of\s+)?"
+                        r"(?:each\s+other|one\s+another|(?:the|a|an)\s+(?:[a-z]+\s+)?(?:block|cube|one)\b))")
+""""pile"/"heap" as a verb that puts cubes on a cube ("pile the orange cube onto the purple
+cube", "pile the red, green and blue blocks on top of each other"): read as "stack" (it read
+as separate piles by colour); "pile the red blocks on the green patch" stays a pile."""
+
+END_SIDE_RE = re.compile(r"\b(?P<verb>starting|beginning)\s+with\s+(?:the\s+|a\s+|an\s+)?(?P<c>[a-z]+)"
+                         r"(?:\s+(?:block|cube|one))?\s+(?:on|at)\s+the\s+(?:far\s+)?(?P<side>left|right|front|back)"
+                         r"(?:\s+(?:end|side))?\b")
+"""A line's first cube given by its side of the table ("starting with red on the left",
+"beginning with blue at the right end"): when it is the first colour the instruction lists,
+the side says which way the sequence runs (:data:`END_SIDE_DIRECTION`)."""
+
+END_SIDE_DIRECTION: dict[str, str] = {"left": "left to right", "right": "right to left",
+                                      "front": "front to back", "back": "back to front"}
+"""The side a sequence starts at -> the direction words it runs in (:data:`END_SIDE_RE`)."""
+
+TOTAL_RE = re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:(blocks?|cubes?)\s+)?in\s+total\b"
+                      r"|\bin\s+total\s*,?\s+(?=\d|one|two|three|four|five|six|seven|eight|nine|ten)")
+"""A count said as a total ("six in total", "in total 4 blocks"): read as "N blocks"."""
 
 NO_GOAL_RE = re.compile(r"\b(?:pick(?:\s+(?:it|them))?\s+up|pick|grab|grasp|take|lift|raise|hold|get|find|locate|point\s+(?:at|to)"
                         r"|look\s+at|reach(?:\s+for)?)\b"
@@ -420,7 +452,20 @@ REGION_WORDS = {"rear": "back", "far": "back", "near": "front", "middle": "cente
 """Words for a place on the table -> the words of :data:`constants.REGION_NAMES`."""
 
 
-ORDER_WORDS = re.compile(r"\b(rainbow|alternat\w*|order\w*|sequence|gradient|sort\w*|ascending|descending|"
+ANY_ORDER_RE = re.compile(
+    r"(?:\s*[,;(\u2013\u2014-]\s*|\s+)(?:(?:in\s+)?(?:any|whatever|no\s+particular)\s+order(?:\s+(?:is|are)\s+(?:fine|ok(?:ay)?|good|allowed))?"
+    r"|(?:the\s+)?order\s+(?:does\s*n[o']t|doesn't|is\s*n[o']t|isn't)\s+(?:matter|important)|regardless\s+of\s+(?:the\s+)?order)\b\)?")
+"""Words that leave the cubes' order free ("stack them in any order", ", any order is fine",
+"the order doesn't matter", "in no particular order"): read as the one phrase " in any order"
+before negations are refused (:func:`rpg.schema.reading.normalize`), which no order word
+(:data:`ORDER_WORDS`) matches."""
+
+HARMLESS_NEGATION_RE = re.compile(r"[,;(\u2013\u2014-]?\s*\b(?:nothing|none?\s+too|no\s+need\s+(?:to\s+be|for\s+anything))\s+"
+                                  r"(?:fancy|special|complicated|elaborate|too\s+fancy)\b\)?")
+"""A negation about the manner, not the end state ("..., nothing fancy"): dropped before
+negations are refused (:func:`rpg.schema.reading.normalize`)."""
+
+ORDER_WORDS = re.compile(r"\b(rainbow|alternat\w*|(?<!any\s)order\w*|sequence|gradient|sort\w*|ascending|descending|"
                          r"bottom|base|first|last|then|lightest|darkest|top(?! of (each other|one another)))\b")
 """Words that give a stack's cubes places (an order, a role): a stack read with any of them
 keeps its order."""
@@ -438,7 +483,7 @@ colour, ``end``/``end2`` the end (base = bottom)."""
 STACK_FREE_PHRASES = re.compile(
     r"\bon\s+top\s+of\s+(?:each\s+other|one\s+another)\b|\b(?:on|onto|upon|over|above)\s+(?:each\s+other|one\s+another)\b"
     r"|\b(?:on|onto)\s+(?:the\s+|a\s+)?(?:[a-z]+\s+)?(?:goal\s+)?patch(?:es)?\b|\b(?:on|onto)\s+the\s+table\b"
-    r"|@region_[a-z_]+|\b(?:on|at|to)\s+the\s+(?:left|right|front|back)\b")
+    r"|@region_[a-z_]+|\b(?:on|at|to)\s+the\s+(?:left|right|front|back)\b|\bin\s+any\s+order\b")
 """Phrases of a stack instruction that put no cube above another: the stack as a whole ("on
 top of each other"), where it stands ("on the green patch", "on the table", a region)."""
 

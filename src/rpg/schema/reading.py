@@ -219,6 +219,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"[\u2018\u2019\u201c\u201d`]", "'", text)
     text = text.replace('"', "'")
     text = lexicon.EFFECTOR_RE.sub(" ", text).strip()
+    text = lexicon.ANY_ORDER_RE.sub(" in any order", text)  # before "doesn't" is refused as a negation
+    text = lexicon.HARMLESS_NEGATION_RE.sub("", text)
     _refuse_inexpressible(text, original)
     text = lexicon.FRAMING_RE.sub("", text)
     for pattern, full in lexicon.CONTRACTIONS:
@@ -246,6 +248,15 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     # "put one block on (top of) the other": the two blocks stacked, either on top
     text = re.sub(r"\b(put|place|stack|set)\s+one\s+(block|cube)\s+(?:on|onto|upon)\s+(?:top\s+of\s+)?the\s+other(?:\s+one)?\b",
                   r"\1 two \2s on top of each other", text)
+    text = lexicon.POSTURE_RE.sub("", text)
+    # "into the middle of the black patch": on it (a cube on a patch is on it wherever it stands there)
+    text = re.sub(rf"\b(?:in|into|onto|on|at|to)\s+the\s+(?:middle|center|centre)\s+of\s+the\s+((?:{COLOR_RE})\s+(?:goal\s+|target\s+)?patch)\b",
+                  r"on the \1", text)
+    first = re.search(rf"\b(?:{COLOR_RE})\b", text)  # "... starting with red on the left": red first, left to right
+    text = lexicon.END_SIDE_RE.sub(lambda m: f"{m.group('verb')} with {m.group('c')} from {lexicon.END_SIDE_DIRECTION[m.group('side')]}"
+                                   if first and first.group(0) == m.group("c") else m.group(0), text)
+    text = lexicon.PILE_ON_RE.sub("stack ", text)
+    text = lexicon.TOTAL_RE.sub(lambda m: f"{m.group(1)} {m.group(2) or 'blocks'}" if m.group(1) else "", text)
     text = re.sub(r"\btoward(?:s)?\b", "to", text)
     # "push the blue block to the red block": moved up to it, i.e. next to it (Language-Table, Demo2Code)
     text = re.sub(rf"\b(push|move|slide|put|bring|shift)\s+the\s+((?:{COLOR_RE})\s+(?:block|cube))\s+to\s+"

@@ -103,7 +103,8 @@ class RelationalReading:
             elif re.match(r"\s+(?:block\s+|cube\s+)?(?:on|at)\s+(?:the\s+)?top\b(?!\s+of)", tail):
                 self.bottom_top.setdefault("top", self.obj(mn))
         rel_re = "|".join(f"(?P<r{i}>\\b(?:{p})\\b)" for i, (p, _) in enumerate(REL_PATTERNS))
-        for rm in re.finditer(rel_re, clause):
+        found = list(re.finditer(rel_re, clause))
+        for rm in found:
             kind = next(REL_PATTERNS[i][1] for i in range(len(REL_PATTERNS)) if rm.group(f"r{i}"))
             left = [m for m in ms if m.end <= rm.start() and not m.patch]
             right = [m for m in ms if m.start >= rm.end()]
@@ -137,9 +138,9 @@ class RelationalReading:
                     self.onpatch.append(("*", self.obj(right[0])))
                 continue
             a_m, b_m = left[-1], right[0]
-            if self.last_pair and a_m is self.last_pair[1] and re.fullmatch(r"\s*,?\s*and\s+(?:also\s+)?",
+            if self.last_pair and a_m is self.last_pair[1] and re.fullmatch(r"\s*(?:,\s*(?:and\s+)?|and\s+)(?:also\s+|but\s+)?",
                                                                     clause[a_m.end: rm.start()]):
-                a_m = self.last_pair[0]  # "X left of Y and behind Z": X is behind Z
+                a_m = self.last_pair[0]  # "X left of Y and behind Z", "X in front of Y, close to it": X is behind Z
             self.last_pair[:] = [a_m, b_m]
             related[:] = [a_m]
             if a_m.ref:
@@ -181,7 +182,10 @@ class RelationalReading:
                     self.previous[:] = [self.obj(a_m), self.obj(b_m)]
                 continue
             if kind == "on" and b_m.patch:
-                group = _listed_group(clause, left)  # "the red block, the blue block and the green block onto ..."
+                # "the red block, the blue block and the green block onto ...", not the object of an earlier
+                # relation ("red on the blue block and the blue block on the green patch": one blue cube)
+                objects = {id(next((m for m in ms if m.start >= x.end()), None)) for x in found if x.end() <= rm.start()}
+                group = _listed_group(clause, left, stop=objects)
                 for member in group:
                     for i in range(member.count):
                         self.onpatch.append((self.obj(member, i), self.obj(b_m)))
@@ -257,7 +261,7 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         target = r.onpatch[0][1]
         r.onpatch = [(a, p) for a, p in r.onpatch if a != "*"]
         chains = _chains(r.on_edges)
-        if chains:
+        if chains and (chains[0][0], target) not in r.onpatch:  # "red on blue and blue on the green patch": said once
             r.onpatch.append((chains[0][0], target))
     # cubes that are only on patches (place both blocks onto the patch)
     chains = _chains(r.on_edges)
@@ -351,13 +355,13 @@ def _described_towers(text: str, described: list[re.Match], b: Builder) -> bool:
     return True
 
 
-def _listed_group(clause: str, left: list[Mention]) -> list[Mention]:
+def _listed_group(clause: str, left: list[Mention], stop: set[int] = frozenset()) -> list[Mention]:
     """The mentions listed together just before a relation ("the red, the blue and the
     green block", "the red and green blocks"): the last one and those joined to it by
-    commas or "and"."""
+    commas or "and", up to a mention whose ``id`` is in ``stop`` (the object of an earlier relation)."""
     group = [left[-1]]
     for mn in reversed(left[:-1]):
-        if mn.ref or not re.fullmatch(r"\s*(?:,\s*and|,|and)\s*(?:the\s+)?", clause[mn.end: group[0].start]):
+        if mn.ref or id(mn) in stop or not re.fullmatch(r"\s*(?:,\s*and|,|and)\s*(?:the\s+)?", clause[mn.end: group[0].start]):
             break
         group.insert(0, mn)
     return group

@@ -408,12 +408,12 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
     direction = direction_of(f)
     item = rf"(?:{COLOR_RE})(?:\s+(?:blocks?|cubes?))?(?:\s+first)?"  # "the blue block first, then the red block"
     listed = re.search(rf"\b((?:{item})(?:\s*(?:,\s*and|,|and|then)\s+(?:then\s+)?(?:the\s+|an?\s+)?(?:{item})\b)+)", f.text)
-    if not explicit and not order and listed:
+    alternating = alternating_colors(f, 6)
+    if not explicit and not order and listed and not alternating:
         seq = re.findall(rf"\b(?:{COLOR_RE})\b", listed.group(1))
         if re.search(r"\b(?:left to right|right to left|front to back|back to front)\b", f.text) or \
                 len(set(seq)) < len(seq):  # "red, blue, red, blue": a repeated colour only makes sense as an order
             explicit = listed
-    alternating = alternating_colors(f, 6)
     if alternating and not explicit:
         explicit = re.search(r"(.+)", ", ".join(alternating))
     in_order = re.search(r"\bin (?:the )?order\b(.*)", f.text)
