@@ -810,3 +810,46 @@ def test_a_stack_put_on_a_patch_through_its_base_is_said_once():
 def test_a_relation_after_a_comma_keeps_the_subject_of_the_one_before(text, want):
     """"close to it" related the last-named cube to itself and was refused."""
     assert sorted(meaning(parse(text))) == sorted(want)
+
+
+@pytest.mark.parametrize("text, want", [
+    ("Put 3 red and 1 blue on the green patch.", ["on_patch(blue,red,red,red,patch:green)"]),
+    ("Put 2 yellow + 2 green in a row.", ["line(green,green,yellow,yellow)"]),
+])
+def test_each_count_of_a_counted_colour_list_reaches_its_own_colour(text, want):
+    """"2 blue and 2 green cubes" read one blue cube (the noun only after the last colour)."""
+    assert meaning(parse(text)) == want
+
+
+def test_a_height_said_for_each_of_two_coloured_towers_reaches_both():
+    assert meaning(parse("Build a green tower and a yellow tower, each two blocks tall.")) == [
+        "stack(green,green)", "stack(yellow,yellow)"]
+
+
+def test_a_side_of_the_table_said_once_for_two_sides():
+    assert meaning(parse("Put the green block on the front side and the red block on the back side of the table.")) == [
+        "in_region(green,front)", "in_region(red,back)"]
+
+
+@pytest.mark.parametrize("text, want", [
+    ("Make a stack of 3 with green as the base.", "bottom"),
+    ("Stack the three cubes so the blue one is at the bottom and the red one is at the top, the green one goes in between.", None),
+])
+def test_roles_said_as_the_base_or_in_between(text, want):
+    goal = parse(text).goal
+    if want:  # "with green as the base": one green cube at the bottom, not a tower of green cubes
+        assert goal.name == "anchored_stack" and goal.bottom and not goal.top
+        colours = [n.split("_")[0] for n in goal.objects]
+        assert colours[0] == "green" and colours.count("green") == 1 and len(colours) == 3
+    else:
+        assert meaning(parse(text)) == ["stack(blue,green,red)"]
+
+
+@pytest.mark.parametrize("text, color", [("Put a green block in each corner of the table.", "green"),
+                                         ("Place four cubes, one in each corner.", None)])
+def test_a_cube_in_each_corner(text, color):
+    """It found no task; cubes of the colour said (or of one colour: any cube in any corner)."""
+    schema = parse(text)
+    assert sorted(p.region for p in schema.goal.children()) == ["back_left", "back_right", "front_left", "front_right"]
+    colours = {a.color for a in schema.assets}
+    assert len(colours) == 1 and (color is None or colours == {color})

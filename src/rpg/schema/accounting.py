@@ -302,8 +302,9 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
 
 
 SINGLE_CUBE_RE = re.compile(rf"\b(?:the|a|an|one|that|this|your|my)\s+(?:single\s+|same\s+|other\s+)?({COLOR_RE})"
-                            rf"\s+(?:block|cube|box|one)\b(?!\s+(?:tower|stack|column|pile|row|line))")
-"""A colour named as exactly one cube: "the green block", "a red cube"."""
+                            rf"\s+(?:block|cube|box|one)\b(?!\s+(?:tower|stack|column|pile|row|line)|\s+(?:in|at|on|into)\s+(?:each|every)\b)")
+"""A colour named as exactly one cube: "the green block", "a red cube" (not "a red cube in each
+corner")."""
 
 
 def _single_color_bounds(text: str) -> dict[str, int]:

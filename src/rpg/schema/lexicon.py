@@ -527,7 +527,7 @@ ROLE_BEFORE = re.compile(r"\bwith\s+(?:the\s+)?[a-z0-9]+(?:\s+(?:block|cube|one|
 """Text before "in the middle" that makes it a cube's role in a structure ("with blue in the
 middle"), not a place on the table."""
 
-LAYER_LIST_BEFORE = re.compile(r"(?:,|\band|\bthen)\s+(?:\d+\s+)?[a-z]+(?:\s+(?:blocks?|cubes?|ones?))?\s*$")
+LAYER_LIST_BEFORE = re.compile(r"(?:,|\band|\bthen)\s+(?:the\s+|a\s+|an\s+)?(?:\d+\s+)?[a-z]+(?:\s+(?:blocks?|cubes?|ones?))?\s*$")
 LAYERED_TEXT = re.compile(r"\b(?:pyramid|wall|tower|stack)s?\b.*\b(?:base|bottom|top)\b|\b(?:base|bottom|top)\b.*\b(?:pyramid|wall|tower|stack)s?\b")
 """A colour in a list of layers before "in the middle" ("3 red at the base, 2 green in the
 middle") in a text about a layered structure: "the middle" is then its middle layer, not the

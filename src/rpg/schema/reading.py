@@ -194,6 +194,23 @@ def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
     return text, original
 
 
+_COUNTED = rf"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:{COLOR_RE})"
+_COUNTED_LIST_RE = re.compile(rf"\b{_COUNTED}(?:\s*(?:,\s*and|,|and|\+|&|plus)\s+{_COUNTED})+\b(?P<noun>\s+(?:blocks?|cubes?|boxes|box))?")
+
+
+def _counted_list_nouns(text: str) -> str:
+    """A list of counted colours with one noun, or none, gets one per item: "2 blue and 2 green
+    cubes", "2 red + 2 blue" -> "2 blue cubes and 2 green cubes", "2 red blocks and 2 blue
+    blocks" (each count then reaches its own colour)."""
+    def each(m: re.Match) -> str:
+        noun = (m.group("noun") or " blocks").strip()
+        items = re.findall(_COUNTED, m.group(0))
+        singular = noun.rstrip("s") if noun != "boxes" else "box"
+        parts = [f"{it} {singular if it.split()[0] in ('1', 'one') else noun}" for it in items]
+        return ", ".join(parts[:-1]) + " and " + parts[-1]
+    return _COUNTED_LIST_RE.sub(each, text)
+
+
 def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, list[tuple[str, str]]]:
     """Lower-case, number words to digits, typos corrected.  Returns (text, original, dropped):
     ``dropped`` lists the unknown words read as ignorable (:mod:`rpg.schema.senses`), each with
@@ -249,6 +266,20 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"\b(put|place|stack|set)\s+one\s+(block|cube)\s+(?:on|onto|upon)\s+(?:top\s+of\s+)?the\s+other(?:\s+one)?\b",
                   r"\1 two \2s on top of each other", text)
     text = lexicon.POSTURE_RE.sub("", text)
+    text = _counted_list_nouns(text)
+    # "a red tower and a blue tower, each three high": the height reaches each tower
+    text = re.sub(rf"\b(?:a|one)\s+({COLOR_RE})\s+(tower|stack|column)\s+and\s+(?:a|one|another)\s+({COLOR_RE})\s+(?:tower|stack|column)"
+                  r",?\s+(?:each|both)\s+(\d+|two|three|four|five|six)\s+(?:(?:blocks?|cubes?|levels?|stor(?:y|ey|ies|eys))\s+)?(?:high|tall)\b",
+                  r"a \2 of \4 \1 blocks and a \2 of \4 \3 blocks", text)
+    # "on the left side and the blue block on the right side of the table": each side the table's
+    if re.search(r"\bsides?\s+of\s+the\s+(?:table|workspace)\b", text):
+        text = re.sub(r"\b(on|at|to)\s+the\s+(left|right|front|back)\s+side\b(?!\s+of\b)", r"\1 the \2 side of the table", text)
+    # "with yellow as the base": a cube of that colour at that end (read as a tower of yellow cubes)
+    text = re.sub(rf"\bwith\s+({COLOR_RE})\s+(as|at|on)\s+(the\s+)?(base|bottom|top)\b", r"with a \1 block \2 \3\4", text)
+    # "the green one goes in between" (a middle left unnamed): in the middle
+    if re.search(r"\b(?:stack|stacked|tower|towers|stacks)\b", text):
+        text = re.sub(r"\b(?:goes\s+|is\s+|sits\s+|stands\s+)?in\s+between\b(?!\s+(?:the|them|those|these|of|a|an|it|each)\b)",
+                      "in the middle", text)
     # "into the middle of the black patch": on it (a cube on a patch is on it wherever it stands there)
     text = re.sub(rf"\b(?:in|into|onto|on|at|to)\s+the\s+(?:middle|center|centre)\s+of\s+the\s+((?:{COLOR_RE})\s+(?:goal\s+|target\s+)?patch)\b",
                   r"on the \1", text)

@@ -60,6 +60,32 @@ def recognize_move_to_region(f: Features, b: Builder) -> bool:
     return True
 
 
+EACH_CORNER_RE = re.compile(
+    rf"(?:place|put|set|move|position)\s+(?:(?P<one>a|an|1)\s+(?P<c>{COLOR_RE})\s+(?:block|cube|box)"
+    rf"|(?P<n>4)\s+(?:(?P<c4>{COLOR_RE})\s+)?(?:blocks|cubes|boxes),?\s+(?:1|one))"
+    r"\s+(?:in|at|on|into)\s+(?:each|every)\s+(?:1\s+)?(?:of\s+the\s+(?:4\s+)?)?corners?(?:\s+of\s+the\s+(?:table|workspace))?\s*[.!]?")
+"""One cube in each corner of the table: "put a red block in each corner", "place 4 cubes, one
+in each corner"."""
+
+
+@reader(order=11)
+def recognize_cube_in_each_corner(f: Features, b: Builder) -> bool:
+    """A cube in each of the table's four corners (:data:`rpg.domain.constants.REGION_GROUPS`
+    ``corner``).  The cubes are of the colour said, or of one colour when none is said: cubes
+    of one colour are interchangeable, so G accepts any cube in any corner, as the words do."""
+    m = EACH_CORNER_RE.fullmatch(f.text)
+    if not m:
+        return False
+    color = canon_color(m.group("c") or m.group("c4") or DEFAULT_COLORS[0])
+    for region in C.REGION_GROUPS["corner"]:
+        name = b.cube(color)
+        b.place({name: Pose((*region_spots(region, 1)[0], C.TABLE_TOP_Z + C.CUBE_EDGE / 2))})
+        b.preds.append(InRegion(name, region))
+        b.summary.append(b.preds[-1].describe())
+    b.primitives += ["place"]
+    return True
+
+
 STRUCTURE_BY_CUBE_RE = re.compile(
     rf"(?P<head>.+?)\s+(?P<rel>(?:to\s+the\s+)?left\s+of|(?:to\s+the\s+)?right\s+of|in\s+front\s+of|behind|next\s+to|beside)"
     rf"\s+the\s+(?P<c>{COLOR_RE})\s+(?:block|cube)(?:\s+on\s+the\s+table)?\s*[.!]?")
