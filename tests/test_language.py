@@ -4,9 +4,10 @@ test_corpus.py; these pin down the mechanisms."""
 
 import pytest
 
+from rpg.domain.predicates import region_boxes
 from rpg.errors import BadInput
 from rpg.schema.builtin import ParseError, normalize, parse
-from rpg.schema.meaning import meaning
+from rpg.schema.meaning import matches, meaning
 
 
 @pytest.mark.parametrize("text,expected", [
@@ -195,8 +196,7 @@ def test_structure_phrases_keep_their_count_colour_role_and_place(text, expected
 
 @pytest.mark.parametrize("text", [
     "put two black cubes next to each other at the front",
-    "make a row of three red blocks on the left",
-])
+])  # "make a row of three red blocks on the left" is read now: test_a_wide_structure_in_a_place_has_every_cube_there
 def test_a_place_the_reading_cannot_use_is_refused_not_dropped(text):
     with pytest.raises(ParseError, match="place '"):
         parse(text)
@@ -853,3 +853,26 @@ def test_a_cube_in_each_corner(text, color):
     assert sorted(p.region for p in schema.goal.children()) == ["back_left", "back_right", "front_left", "front_right"]
     colours = {a.color for a in schema.assets}
     assert len(colours) == 1 and (color is None or colours == {color})
+
+
+@pytest.mark.parametrize("text, want", [
+    ("Put 3 green blocks in a row along the front edge.", "line(green,green,green)@front"),
+    ("Put three blocks in a line on the right.", "line(?,?,?)@right"),
+    ("Build a pyramid of 3 blocks in the back right corner.", "pyramid(?,?,?)@back_right"),
+    ("In the front left corner, build a 2x2 grid of blocks.", "grid(2x2:?,?,?,?)@front_left"),
+])
+def test_a_wide_structure_in_a_place_has_every_cube_there(text, want):
+    """Lines, pyramids and grids in a region were refused; every cube must stand in it."""
+    schema = parse(text)
+    assert matches(want, meaning(schema)), meaning(schema)
+    regions = [p for p in schema.goal.children() if p.name == "in_region"]
+    assert len(regions) == len([a for a in schema.assets if a.kind != "goal_patch"])
+    for p in regions:  # the goal layout (the witness the gates check) stands there too
+        (x0, x1), (y0, y1) = region_boxes(p.region)[0]
+        x, y, _ = schema.goal_layout[p.a].position
+        assert x0 < x < x1 and y0 < y < y1
+
+
+def test_a_structure_too_wide_for_its_place_is_refused():
+    with pytest.raises(ParseError, match="does not fit"):
+        parse("Put 5 blocks in a vertical line in the back right corner.")

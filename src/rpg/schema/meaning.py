@@ -6,6 +6,7 @@ letter/digit cube by its label, a goal patch as ``patch:<colour>``).  Examples::
 
     stack(red,blue,green)                 a tower, bottom to top
     stack(yellow,yellow)@back_left        a tower standing in a region of the table
+    line(red,red,red)@back                a structure all of whose cubes stand in one region
     on_patch(red,red,patch:green)         left_of(red,blue)    next_to(blue,red)
     line(green,green,green)               line[left_to_right](red,green,blue)
     wall(red,red,red|blue,blue,blue)      layers bottom to top (rows, walls, 3D blocks)
@@ -68,6 +69,7 @@ def meaning(schema: TaskSchema) -> list[str]:
     d = {a.name: descriptor(a) for a in schema.assets}
     layout = schema.goal_layout
     atoms: list[str] = []
+    placed: list[tuple[int, tuple[str, ...]]] = []  # (atom index, its objects) of structures a region may hold
     used: set[str] = set()
     chains: list[list[str]] = []
     regions: dict[str, str] = {}
@@ -107,6 +109,7 @@ def meaning(schema: TaskSchema) -> list[str]:
             order = f"[{p.order}]" if p.order else ""
             body = names(p.objects) if p.order else sorted_names(p.objects)
             atoms.append(f"line{order}({body})")
+            placed.append((len(atoms) - 1, p.objects))
         elif isinstance(p, P.InLayers):
             used.update(p.objects)
         elif isinstance(p, (P.Grid, P.Pyramid)):
@@ -117,14 +120,22 @@ def meaning(schema: TaskSchema) -> list[str]:
             if kind == "grid":
                 body = f"{p.rows}x{p.cols}:{body}"
             atoms.append(f"{kind}({body})")
+            placed.append((len(atoms) - 1, p.objects))
         elif isinstance(p, P.InCircle):
             atoms.append(f"circle({sorted_names(p.objects)})")
+            placed.append((len(atoms) - 1, p.objects))
         else:
             objs = p.object_names()
             used.update(objs)
             extra = {k: v for k, v in p.args().items() if not isinstance(v, (list, tuple)) and k not in p.object_fields}
             arg = ",".join(d.get(n, n) for n in objs)
             atoms.append(f"{p.name}({arg}{';' if extra and arg else ''}{','.join(f'{k}={v}' for k, v in sorted(extra.items()))})")
+    for i, objs in placed:  # a structure every cube of which stands in one region: "line(red,red,red)@back"
+        where = {regions.get(n) for n in objs}
+        if len(where) == 1 and None not in where:
+            atoms[i] += f"@{where.pop()}"
+            for n in objs:
+                regions.pop(n)
     # On edges become towers: follow b -> a links from each cube that supports but is not supported.
     above = dict(on_edges)
     below = {a: b for b, a in on_edges}

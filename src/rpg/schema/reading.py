@@ -267,6 +267,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   r"\1 two \2s on top of each other", text)
     text = lexicon.POSTURE_RE.sub("", text)
     text = _counted_list_nouns(text)
+    # "in a row along the back edge": at that edge of the table ("along" is otherwise no word of ours)
+    text = re.sub(r"\balong\s+(?=the\s+(?:(?:far|very)\s+)?(?:front|back|rear|left|right)(?:\s+(?:hand\s+)?(?:side|edge|end))?"
+                  r"(?:\s+of\s+the\s+(?:table|workspace))?\s*[.!,;]?\s*$)", "at ", text)
     # "a red tower and a blue tower, each three high": the height reaches each tower
     text = re.sub(rf"\b(?:a|one)\s+({COLOR_RE})\s+(tower|stack|column)\s+and\s+(?:a|one|another)\s+({COLOR_RE})\s+(?:tower|stack|column)"
                   r",?\s+(?:each|both)\s+(\d+|two|three|four|five|six)\s+(?:(?:blocks?|cubes?|levels?|stor(?:y|ey|ies|eys))\s+)?(?:high|tall)\b",

@@ -12,15 +12,24 @@ import re
 
 import numpy as np
 
-from rpg.domain.predicates import AnchoredStack, InRegion, Stack, UnorderedStack
+from rpg.domain import constants as C
+from rpg.domain.predicates import (
+    AnchoredStack,
+    InRegion,
+    Stack,
+    UnorderedStack,
+    describe_region,
+    region_boxes,
+)
 from rpg.domain.state import Pose
 from rpg.errors import BadInput
 from rpg.schema import readers
 from rpg.schema.builder import DEFAULT_COLORS, Builder
+from rpg.schema.lexicon import PAIRWISE_RELATIONS
 from rpg.schema.model import TaskSchema
 from rpg.schema.readers.common import region_spots
 from rpg.schema.readers.registry import reader
-from rpg.schema.reading import Features, color_mentions, mark_regions
+from rpg.schema.reading import Features, ParseError, color_mentions, mark_regions
 from rpg.schema.structures import STRUCTURE_RE
 
 STACK_KINDS = (Stack, UnorderedStack, AnchoredStack)
@@ -129,6 +138,73 @@ def recognize_structures_in_places(f: Features, b: Builder) -> bool:
         return False
     regions = [r for _, r in parts]
     _merge(f, b, [t for t, _ in parts], heads, [region_spots(r, 1)[0] for r in regions], regions)
+    return True
+
+
+def _fitted(head: TaskSchema, region: str) -> dict[str, tuple[float, float, float]] | None:
+    """The part's goal poses moved (and, when no predicate of it fixes an axis, turned a
+    quarter) so that every cube's centre lies in ``region`` with :data:`REGION_MARGIN` to
+    spare; None when it cannot fit."""
+    cubes = [a.name for a in head.assets if a.kind != "goal_patch"]
+    xyz = np.array([head.goal_layout[n].position for n in cubes], float)
+    (x0, x1), (y0, y1) = region_boxes(region)[0]
+    centre = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+    free = all(getattr(p, "axis", None) is None and p.name not in PAIRWISE_RELATIONS for p in head.goal_predicate().walk())
+    for turn in ((False, True) if free else (False,)):
+        xy = xyz[:, :2] - xyz[:, :2].mean(axis=0)
+        if turn:
+            xy = xy[:, ::-1] * np.array([1.0, -1.0])
+        xy = xy + centre
+        if (xy[:, 0].min() >= x0 + REGION_MARGIN and xy[:, 0].max() <= x1 - REGION_MARGIN
+                and xy[:, 1].min() >= y0 + REGION_MARGIN and xy[:, 1].max() <= y1 - REGION_MARGIN):
+            return {n: (float(x), float(y), float(z)) for n, (x, y), z in zip(cubes, xy, xyz[:, 2], strict=True)}
+    return None
+
+
+REGION_MARGIN = 0.005
+"""Least distance of a cube's centre inside its region's border in a structure's goal layout,
+m: :class:`~rpg.domain.predicates.InRegion` reads the centre, so the witness keeps clear of it."""
+
+IN_REGION_PART_RE = re.compile(r"^(?P<head>[^@]+?),?\s+@region_(?P<r>[a-z_]+)\s*[.!]?$"
+                               r"|^@region_(?P<r2>[a-z_]+)\s*,?\s+(?P<head2>[^@]+?)\s*[.!]?$")
+"""A part, then the one place it stands in ("three blocks in a line at @region_back"), or the
+place first ("in @region_left, build a pyramid of 3 blocks")."""
+
+
+@reader(order=187)
+def recognize_structure_in_region(f: Features, b: Builder) -> bool:
+    """A structure wider than one spot (a line, a pyramid, a grid, a circle) standing in one
+    place on the table: "put 3 red blocks in a row along the back edge", "a pyramid of 6
+    blocks in the back left corner".  The structure is read by the whole front end (its own
+    clause, which must name no place, patch or starting structure of its own) and every one
+    of its cubes must stand in the place: the place is said of the whole structure.  Its goal
+    layout is moved into the region (turned a quarter when its words fix no axis).
+
+    Raises:
+        ParseError: the structure does not fit in the region.
+    """
+    m = IN_REGION_PART_RE.match(mark_regions(f.text))
+    heads = _read_parts([m.group("head") or m.group("head2")]) if m else None
+    if heads is None:
+        return False
+    head, region = heads[0], m.group("r") or m.group("r2")
+    if (region not in C.REGION_NAMES or len(head.assets) < 2 or head.initial_state.structures
+            or any(a.kind == "goal_patch" for a in head.assets)
+            or any(isinstance(p, InRegion) for p in head.goal_predicate().walk())):
+        return False
+    poses = _fitted(head, region)
+    if poses is None:
+        raise ParseError(f"the structure of \"{f.original[:80]}\" does not fit in {describe_region(region)}; "
+                         "use fewer cubes, a larger place, or say the structure's direction")
+    b.assets += [a.model_copy() for a in head.assets]
+    b._names.update(a.name for a in head.assets)
+    b.place({n: Pose(xyz) for n, xyz in poses.items()})
+    b.orientations.update(head.initial_state.orientations)
+    b.preds += head.goal_predicate().conjuncts() + [InRegion(n, region) for n in poses]
+    b.summary += [head.goal_summary, f"all of it in {describe_region(region)}"]
+    b.primitives += list(head.primitives)
+    if head.reasoning != "spatial":
+        b.reasoning = head.reasoning
     return True
 
 
