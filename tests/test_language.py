@@ -876,3 +876,20 @@ def test_a_wide_structure_in_a_place_has_every_cube_there(text, want):
 def test_a_structure_too_wide_for_its_place_is_refused():
     with pytest.raises(ParseError, match="does not fit"):
         parse("Put 5 blocks in a vertical line in the back right corner.")
+
+
+@pytest.mark.parametrize("text, want", [
+    ("Pick up the green block, then place it on the yellow block.", ["stack(yellow,green)"]),
+    ("Grab the blue block then drop it on the red patch.", ["on_patch(blue,patch:red)"]),
+    ("Slide the green block until it touches the red block.", ["next_to(green,red)"]),
+    ("Push the yellow block against the blue block.", ["next_to(blue,yellow)"]),
+    ("Push the red block until it reaches the blue patch.", ["on_patch(red,patch:blue)"]),
+    ("Cover the yellow patch with the green block.", ["on_patch(green,patch:yellow)"]),
+    ("Cover the red block with the blue block.", ["stack(red,blue)"]),
+    ("The robot stacks the green block on the red block.", ["stack(red,green)"]),
+    ("Push the blue block to the left half of the table.", ["in_region(blue,left)"]),
+])
+def test_verbs_of_contact_and_described_commands_say_their_end_state(text, want):
+    """"until it touches" was refused as time, "against" and "cover" as unknown, "the robot
+    stacks" read two towers, ", then place it" had no end state, "the left half" a quantity."""
+    assert meaning(parse(text)) == want

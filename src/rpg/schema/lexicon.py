@@ -87,7 +87,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("time", r"\b(?:\d+\s+(?:seconds?|minutes?|hours?)|seconds|minutes?|hours?|meanwhile|forever|while|whilst|during)\b",
      "is about time: a task's goal is checked once, at the end of the episode, with no clock or duration"),
     ("quantity", r"\b(?:\d+(?:\.\d+)?\s*(?:cm|mm)\b|(?:centi|milli)?(?:meters?|metres?)|inch(?:es)?|feet|foot"
-                 r"|cms?|few|fewer|most|majority|percent|half|halves|several|many|much|enough|plenty|numerous"
+                 r"|cms?|few|fewer|most|majority|percent|(?<!left\s)(?<!right\s)(?<!front\s)(?<!back\s)(?<!rear\s)half|halves|several|many|much|enough|plenty|numerous"
                  r"|as\s+(?:high|tall|many|much|far|close|long)\s+as\s+(?:you|it|possible|can))\b",
      "is a measured or vague quantity: rpg's relations are qualitative (next to, left of, far from) and "
      "its counts exact"),

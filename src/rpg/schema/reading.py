@@ -236,10 +236,21 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"[\u2018\u2019\u201c\u201d`]", "'", text)
     text = text.replace('"', "'")
     text = lexicon.EFFECTOR_RE.sub(" ", text).strip()
+    # "cover the green patch with the red block": the red block on it
+    text = re.sub(rf"\bcover\s+(the\s+(?:{COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patch|block|cube))\s+with\s+"
+                  rf"(the\s+(?:{COLOR_RE})\s+(?:block|cube))\b", r"put \2 on \1", text)
+    # "slide the red block until it touches the blue block": next to it; "until it reaches the patch": on it
+    text = re.sub(rf"\buntil\s+(?:it|they)\s+(?:reach(?:es)?|is\s+on|are\s+on)\s+(?=the\s+(?:(?:{COLOR_RE})\s+)?(?:goal\s+)?patch\b)",
+                  "onto ", text)
+    text = re.sub(rf"\b(?:until\s+(?:it|they)\s+(?:touch(?:es)?|hits?|bumps?\s+into|reach(?:es)?)|against)\s+"
+                  rf"(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|one)\b)", "next to ", text)
     text = lexicon.ANY_ORDER_RE.sub(" in any order", text)  # before "doesn't" is refused as a negation
     text = lexicon.HARMLESS_NEGATION_RE.sub("", text)
     _refuse_inexpressible(text, original)
     text = lexicon.FRAMING_RE.sub("", text)
+    # "the robot stacks the red block on ...": the command the sentence describes
+    text = re.sub(r"^(?:the\s+|a\s+)?(?:robot(?:ic)?(?:\s+arm)?|agent|arm)\s+(stack|put|place|move|push|arrange|build|set|line|pick|slide|lift|make)s\b",
+                  r"\1", text)
     for pattern, full in lexicon.CONTRACTIONS:
         text = re.sub(pattern, full, text)
     text = _SYNONYM_RE.sub(lambda m: lexicon.SYNONYMS[m.group(0)], text)
@@ -363,8 +374,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(rf"\b({COLOR_RE})\s+(?:pad|mat|marker|zone|area|region)(s?)\b", r"\1 patch\2", text)
     text = re.sub(r"\btarget(s?)\b(?!\s+(?:goal\s+)?patch)", r"patch\1", text)  # "onto the blue target"
     text = re.sub(r"\bpick(?:\s+up)?\s+and\s+(place|put|set|drop)\b", r"\1", text)  # "pick and place a block on ..."
-    text = re.sub(r"\b(?:pick up|grab|take|lift|get|pick)\s+(the\s+(?:[a-z0-9']+\s+){0,4}?(?:block|cube|box|one))\s+(?:up\s+)?"
-                  r"and\s+(?:then\s+)?(place|put|set|stack|move|drop|lay)\s+it\b", r"\2 \1", text)
+    text = re.sub(r"\b(?:pick up|grab|take|lift|get|pick)\s+(the\s+(?:[a-z0-9']+\s+){0,4}?(?:block|cube|box|one))(?:\s+up)?"
+                  r"(?:,?\s*and\s+(?:then\s+)?|,?\s*then\s+|,\s*)(place|put|set|stack|move|drop|lay)\s+it\b", r"\2 \1", text)
     text = re.sub(r"\bside by side\b", "next to each other", text)
     # a map's "top left corner" is the far one (the robot at the bottom edge; lexicon's compass)
     diagonal = re.search(r"\b(?:top|bottom|upper|lower|front|back|rear)[\s-]+(?:left|right)\s+(?:side\s+)?of\s+"
