@@ -6,7 +6,7 @@ import pytest
 
 from rpg.domain.predicates import region_boxes
 from rpg.errors import BadInput
-from rpg.schema.builtin import ParseError, normalize, parse
+from rpg.schema.builtin import Inexpressible, ParseError, normalize, parse
 from rpg.schema.meaning import matches, meaning
 
 
@@ -892,4 +892,27 @@ def test_a_structure_too_wide_for_its_place_is_refused():
 def test_verbs_of_contact_and_described_commands_say_their_end_state(text, want):
     """"until it touches" was refused as time, "against" and "cover" as unknown, "the robot
     stacks" read two towers, ", then place it" had no end state, "the left half" a quantity."""
+    assert meaning(parse(text)) == want
+
+
+@pytest.mark.parametrize("text, words", [
+    ("Put the green block on this block.", "this block"),  # compiled a blue cube nobody named
+    ("Put that cube on the yellow block.", "that cube"),
+    ("Line up these blocks.", "these blocks"),
+    ("Put those two cubes on the red patch.", "those two cubes"),
+    ("Stack the cubes in this order.", "this order"),  # compiled a stack in any order
+    ("Put the green block back on the block it was on.", None),
+])
+def test_cubes_or_an_order_pointed_at_in_the_speaker_s_scene_are_refused_as_references(text, words):
+    with pytest.raises(Inexpressible) as info:
+        parse(text)
+    assert info.value.kind == "reference" and (words is None or f"'{words}'" in str(info.value))
+
+
+@pytest.mark.parametrize("text, want", [
+    ("Pick up the red block and put that block on the green block.", ["stack(green,red)"]),
+    ("Stack the yellow, red and blue blocks in that order.", ["stack(yellow,red,blue)"]),
+    ("Put this yellow block on the green block.", ["stack(green,yellow)"]),
+])
+def test_that_and_this_naming_or_listing_what_they_refer_to_still_compile(text, want):
     assert meaning(parse(text)) == want

@@ -103,6 +103,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|\b(?:again|undo|restore|original(?:ly)?|previous(?:ly)?|remaining|as\s+(?:before|it\s+was|they\s+were))\b"
                   r"|\bthe\s+rest\b|\bwhere\s+(?:it|they|the\s+(?:[a-z]+\s+){0,2}?(?:blocks?|cubes?|ones?))\s+(?:was|were|used\s+to\s+be|started|began)\b"
                   r"|\bthe\s+same\s+(?:order|sequence|positions?|places?|spots?)\b"
+                  r"|\b(?:blocks?|cubes?|ones?|place|position|spot|patch)\s+(?:that\s+|which\s+)?(?:it|they)\s+(?:was|were|had\s+been|started)\s+(?:on|in|at)\b"
                   r"|\b(?:closest|nearest|farthest|furthest)\s+to\s+(?:you|me|us|the\s+(?:robot|camera|gripper|viewer))\b"
                   r"|\bthe\s+same\s+(?:blocks?|cubes?|ones?|boxes|box|objects?|pieces?)\b"
                   r"|\b(?:blocks?|cubes?|box|ones?)'s\s+(?:current\s+|old\s+)?(?:position|place|spot|location|square)\b"
@@ -197,6 +198,17 @@ REFERENCE_PRONOUN_RE = re.compile(
 """A pronoun standing for cubes ("stack them", "unstack that.", "put it on the red block").  It
 must refer to something the instruction named before it (:data:`ANTECEDENT_RE`); without one it
 refers to what the speaker sees or did earlier, which a task cannot know."""
+
+DEICTIC_RE = re.compile(r"\b(?P<d>this|these|that|those)\s+(?:(?:\d+|two|three|four|five|six)\s+)?"
+                        r"(?:blocks?|cubes?|ones?|boxes|box|bricks?|objects?|items?|pieces?)\b")
+""""This block", "these cubes", "those two blocks": cubes picked by pointing at them in a scene.
+"this"/"these" always point (a cube the speaker sees); "that"/"those" may instead refer back to
+a cube named before (:data:`ANTECEDENT_RE`). A colour said ("this red block") names the cube,
+and the phrase does not match."""
+
+THIS_ORDER_RE = re.compile(r"\b(?:this|that|the\s+following|the\s+given)\s+(?:order|sequence)\b")
+""""In this order", "in that order": an order the instruction must list (two or more colours or
+labels, before or after); with none it is one the speaker shows, which a task cannot know."""
 
 OTHER_RE = re.compile(r"\bthe\s+other\s+(?:[a-z]+\s+)?(?:blocks?|cubes?|ones?|bricks?|boxes|box)\b")
 """"The other block": it picks a cube by contrast with one the instruction set apart before it

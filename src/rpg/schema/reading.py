@@ -134,6 +134,16 @@ def _refuse_unresolved_pronoun(text: str, original: str) -> None:
                                 "described (where the speaker sees it): name the cube by colour or label, or describe "
                                 "the structure it stands in first (e.g. \"build a tower of three blocks and make the "
                                 "top block red\")", original)
+    order = lexicon.THIS_ORDER_RE.search(text)
+    listed = len(color_mentions(text)) + len(re.findall(r"\b(?:letter|digit)\s+\w\b|'\w'|\b\d\b", text))
+    if order and listed < 2 and not re.search(r"\b[A-Z]{2,}\b|['\"][A-Za-z0-9]{2,}['\"]", original):  # "spell ABC in that order"
+        raise Inexpressible("reference", [order.group(0)], "refers to an order the instruction does not list (one the "
+                            "speaker shows): list it (e.g. \"stack the red, green and blue blocks in that order\")", original)
+    for m in lexicon.DEICTIC_RE.finditer(text):
+        if m.group("d") in ("this", "these") or not lexicon.ANTECEDENT_RE.search(text[:m.start()]):
+            raise Inexpressible("reference", [m.group(0)], "points at cubes in a scene the instruction does not describe "
+                                "(ones the speaker sees): rpg's cubes are known only by colour and label; name them "
+                                "(e.g. \"put the red block on the blue block\")", original)
     for m in lexicon.OTHER_RE.finditer(text):
         if not lexicon.OTHER_SET_RE.search(text[:m.start()]):
             raise Inexpressible("reference", [m.group(0)], "picks a cube by contrast with one the instruction has not "
