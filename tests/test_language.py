@@ -916,3 +916,22 @@ def test_cubes_or_an_order_pointed_at_in_the_speaker_s_scene_are_refused_as_refe
 ])
 def test_that_and_this_naming_or_listing_what_they_refer_to_still_compile(text, want):
     assert meaning(parse(text)) == want
+
+
+@pytest.mark.parametrize("text", ["Is the green block to the left of the red block",  # no question mark
+                                  "Can the yellow block be stacked on the green block?"])
+def test_questions_without_a_mark_or_about_what_can_be_done_are_refused(text):
+    with pytest.raises(Inexpressible) as info:
+        parse(text)
+    assert info.value.kind == "question"
+
+
+def test_a_request_put_as_a_question_still_compiles():
+    assert meaning(parse("Could you put the green block on the red block?")) == ["stack(red,green)"]
+
+
+def test_a_triangle_with_nothing_stacked_names_no_one_shape():
+    """It compiled an upright pyramid; a triangle may as well lie flat on the table."""
+    with pytest.raises(ParseError, match="names no one shape"):
+        parse("Arrange three blocks in a triangle.")
+    assert parse("Stack three blocks in a triangle.").goal.name == "pyramid"

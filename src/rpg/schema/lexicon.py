@@ -74,7 +74,10 @@ the table the cubes stand on; "the rightmost corner" is a corner on the right.""
 INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("question", r"(?:^|[.!;]\s+)(?:which|what|where|who|whose|why|how\s+many|how\s+much|when)\b[^.!;]*\?"
                  r"|(?:^|[.!;?]\s+)(?:is|are|was|were|does|do|did|has|have|had)\s+(?:the|a|an|there|it|this|that|any|all"
-                 r"|every|some|each|these|those)\b[^.!;]*\?",
+                 r"|every|some|each|these|those)\b[^.!;]*\?"
+                 r"|^(?:is|are|does|do)\s+(?:the|a|an|there|any)\s+(?:[a-z0-9]+\s+){0,3}?(?:blocks?|cubes?|boxes|box|tower|stack)\b"
+                 r"(?:\s+(?:on|to|in|at|next|behind|under|beside|left|right|stacked|placed|lined))"
+                 r"|(?:^|[.!;?]\s+)(?:can|could|will|would|should|may|might)\s+(?:the|a|an|any)\s+[^.!;?]*\bbe\b[^.!;]*\?",
      "asks a question: a task is an instruction whose goal says where cubes end up; ask for the arrangement "
      "instead (e.g. \"put the red block on the blue block\")"),
     ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none)\b|n't\b"

@@ -168,6 +168,10 @@ def recognize_bridge(f: Features, b: Builder) -> bool:
 def recognize_pyramid(f: Features, b: Builder) -> bool:
     if not f.has("pyramid", "pyramids", "triangle", "triangular"):
         return False
+    if not f.has("pyramid", "pyramids", "stack", "stacked", "stacking", "tower", "layer", "layers", "level", "levels",
+                 "base", "bottom", "top", "on top", "tier", "tiers", "vertical", "upright"):
+        raise ParseError(f"'triangle' in \"{f.original[:80]}\" names no one shape: a pyramid (a layer of cubes on a wider "
+                         "one) or cubes at the corners of a triangle on the table, which rpg does not build; say which (e.g. \"a pyramid of 3 blocks\"), or use --model")
     dims_m = re.search(r"\b(\d+)x(\d+)\b", f.text)
     if dims_m:
         base, dims = int(dims_m.group(1)), 3
