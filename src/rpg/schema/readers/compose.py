@@ -190,8 +190,8 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
     head, region = heads[0], m.group("r") or m.group("r2")
     if (region not in C.REGION_NAMES or len(head.assets) < 2 or head.initial_state.structures
             or any(a.kind == "goal_patch" for a in head.assets)
-            or any(isinstance(p, InRegion) for p in head.goal_predicate().walk())):
-        return False
+            or any(isinstance(p, InRegion) or p.name in (*PAIRWISE_RELATIONS, "between") for p in head.goal_predicate().walk())):
+        return False  # relations between cubes are no structure: "red left of blue, in the back" places red (the relational reader)
     poses = _fitted(head, region)
     if poses is None:
         raise ParseError(f"the structure of \"{f.original[:80]}\" does not fit in {describe_region(region)}; "
