@@ -31,9 +31,9 @@ class StackBlocksOnTargetSquarePatchDesignatedD37e00Task(BlockTask):
     NAME = 'stack_blocks_on_target_square_patch_designated_d37e00'
     INSTRUCTION = 'Stack blocks on the target square patch designated on the table.'
     PARAPHRASES = (
-        'A stack of red, blue in any order; the stack of blue, red on the gray patch. Put the stack of blue, red on the gray patch.',
-        'Goal: a stack of red, blue in any order; the stack of blue, red on the gray patch. Put the stack of blue, red on the gray patch.',
-        'Arrange the cubes so that the final scene shows a stack of red, blue in any order; the stack of blue, red on the gray patch. Put the stack of blue, red on the gray patch.',
+        'A stack of red, blue in any order; the stack of blue, red on the gray patch.',
+        'Goal: a stack of red, blue in any order; the stack of blue, red on the gray patch.',
+        'Arrange the cubes so that the final scene shows a stack of red, blue in any order; the stack of blue, red on the gray patch.',
     )
 
     def assets(self):

@@ -31,9 +31,9 @@ class StackBlocksOnGoalPatchTask(BlockTask):
     NAME = 'stack_blocks_on_goal_patch'
     INSTRUCTION = 'Stack the blocks on the goal patch'
     PARAPHRASES = (
-        'A stack of red, blue in any order; the stack of blue, red on the gray patch. Put the stack of blue, red on the gray patch.',
-        'Goal: a stack of red, blue in any order; the stack of blue, red on the gray patch. Put the stack of blue, red on the gray patch.',
-        'Arrange the cubes so that the final scene shows a stack of red, blue in any order; the stack of blue, red on the gray patch. Put the stack of blue, red on the gray patch.',
+        'A stack of red, blue in any order; the stack of blue, red on the gray patch.',
+        'Goal: a stack of red, blue in any order; the stack of blue, red on the gray patch.',
+        'Arrange the cubes so that the final scene shows a stack of red, blue in any order; the stack of blue, red on the gray patch.',
     )
 
     def assets(self):
