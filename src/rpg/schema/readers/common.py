@@ -371,6 +371,15 @@ DESCRIBED_TOWER_RE = re.compile(rf"\b(?:a|an|one|another)\s+(?:tower|stack)\s+of
 REGION_PITCH = 0.06
 """Centre spacing of cubes placed together in one region of the table, m."""
 
+REGION_MARGIN = 0.005
+"""Least distance of a cube's centre inside its region's border in a structure's goal layout,
+m: :class:`~rpg.domain.predicates.InRegion` reads the centre, so the witness keeps clear of it."""
+
+
+def region_table_pose(region: str) -> Pose:
+    """A goal pose for one cube resting on the table in ``region`` (world frame, m)."""
+    return Pose((*region_spots(region, 1)[0], C.TABLE_TOP_Z + C.CUBE_EDGE / 2))
+
 
 def region_spots(region: str, n: int) -> list[tuple[float, float]]:
     """``n`` goal positions in a region of the workspace: rows along y about its centre.

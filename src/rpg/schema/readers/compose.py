@@ -27,7 +27,7 @@ from rpg.schema import readers
 from rpg.schema.builder import DEFAULT_COLORS, Builder
 from rpg.schema.lexicon import PAIRWISE_RELATIONS
 from rpg.schema.model import TaskSchema
-from rpg.schema.readers.common import region_spots
+from rpg.schema.readers.common import REGION_MARGIN, region_spots
 from rpg.schema.readers.registry import reader
 from rpg.schema.reading import Features, ParseError, color_mentions, mark_regions
 from rpg.schema.structures import STRUCTURE_RE
@@ -160,10 +160,6 @@ def _fitted(head: TaskSchema, region: str) -> dict[str, tuple[float, float, floa
             return {n: (float(x), float(y), float(z)) for n, (x, y), z in zip(cubes, xy, xyz[:, 2], strict=True)}
     return None
 
-
-REGION_MARGIN = 0.005
-"""Least distance of a cube's centre inside its region's border in a structure's goal layout,
-m: :class:`~rpg.domain.predicates.InRegion` reads the centre, so the witness keeps clear of it."""
 
 IN_REGION_PART_RE = re.compile(r"^(?P<head>[^@]+?),?\s+@region_(?P<r>[a-z_]+)\s*[.!]?$"
                                r"|^@region_(?P<r2>[a-z_]+)\s*,?\s+(?P<head2>[^@]+?)\s*[.!]?$")

@@ -27,7 +27,7 @@ from rpg.schema import readers
 from rpg.schema.builder import DEFAULT_COLORS, Builder
 from rpg.schema.edits import recolor
 from rpg.schema.lexicon import COLOR_RE
-from rpg.schema.readers.common import region_spots
+from rpg.schema.readers.common import region_table_pose
 from rpg.schema.readers.registry import reader
 from rpg.schema.reading import Features, ParseError, canon_color, color_mentions, region_name
 from rpg.schema.structures import STRUCTURE_RE
@@ -53,7 +53,7 @@ def recognize_move_to_region(f: Features, b: Builder) -> bool:
     region = region_name(fb, None if word in ("front", "back") else word)
     color = canon_color(m.group("c"))
     name = b.cube(color)
-    b.place({name: Pose((*region_spots(region, 1)[0], C.TABLE_TOP_Z + C.CUBE_EDGE / 2))})
+    b.place({name: region_table_pose(region)})
     b.preds.append(InRegion(name, region))
     b.primitives += ["push" if re.match(r"(?:go\s+)?(?:push|slide|sweep)", f.text) else "place"]
     b.summary.append(b.preds[-1].describe())
@@ -79,7 +79,7 @@ def recognize_cube_in_each_corner(f: Features, b: Builder) -> bool:
     color = canon_color(m.group("c") or m.group("c4") or DEFAULT_COLORS[0])
     for region in C.REGION_GROUPS["corner"]:
         name = b.cube(color)
-        b.place({name: Pose((*region_spots(region, 1)[0], C.TABLE_TOP_Z + C.CUBE_EDGE / 2))})
+        b.place({name: region_table_pose(region)})
         b.preds.append(InRegion(name, region))
         b.summary.append(b.preds[-1].describe())
     b.primitives += ["place"]
