@@ -77,7 +77,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                  r"|every|some|each|these|those)\b[^.!;]*\?"
                  r"|^(?:is|are|does|do)\s+(?:the|a|an|there|any)\s+(?:[a-z0-9]+\s+){0,3}?(?:blocks?|cubes?|boxes|box|tower|stack)\b"
                  r"(?:\s+(?:on|to|in|at|next|behind|under|beside|left|right|stacked|placed|lined))"
-                 r"|(?:^|[.!;?]\s+)(?:can|could|will|would|should|may|might)\s+(?:the|a|an|any)\s+[^.!;?]*\bbe\b[^.!;]*\?",
+                 r"|(?:^|[.!;?]\s+)(?:can|could|will|would|should|may|might)\s+(?:the|a|an|any)\s+[^.!;?]*\bbe\b[^.!;]*\?"
+                 r"|\b(?:tell|show)\s+me\s+(?:how|what|which|where|whether|if|who)\b|\bhow\s+many\b[^.!;]*\?",
      "asks a question: a task is an instruction whose goal says where cubes end up; ask for the arrangement "
      "instead (e.g. \"put the red block on the blue block\")"),
     ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none)\b|n't\b"
@@ -102,7 +103,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"\s+(?:(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?))\b"
                   r"|\b(?:you|we|i)\s+(?:just|already|have|had)\s+(?:just\s+|already\s+)?"
                   r"(?:moved|placed|picked|grabbed|used|put|touched|held)\b"
-                  r"|\b(?:blocks?|cubes?|ones?)\s+(?:that\s+)?(?:you|we|i)\s+(?:moved|placed|picked|grabbed|used|touched|held)\b"
+                  r"|\b(?:blocks?|cubes?|ones?)\s+(?:that\s+)?(?:you|we|i)\s+(?:moved|placed|picked|grabbed|used|touched|held|pointed|indicated|mentioned|chose|selected)\b"
+                  r"|\b(?:you|we|i)\s+(?:am\s+|'m\s+|are\s+|just\s+)?(?:pointed|pointing|indicated|indicating)\b"
                   r"|\b(?:again|undo|restore|original(?:ly)?|previous(?:ly)?|remaining|as\s+(?:before|it\s+was|they\s+were))\b"
                   r"|\bthe\s+rest\b|\bwhere\s+(?:it|they|the\s+(?:[a-z]+\s+){0,2}?(?:blocks?|cubes?|ones?))\s+(?:was|were|used\s+to\s+be|started|began)\b"
                   r"|\bthe\s+same\s+(?:order|sequence|positions?|places?|spots?)\b"
@@ -125,6 +127,13 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|\b(?:picture|image|photo|photograph|diagram|figure|screen|video|illustration|drawing|sketch|screenshot)s?\b",
      "refers to something shown or seen (a picture, the scene, an arrangement) that a task cannot see: say the "
      "arrangement in words (e.g. \"stack the red block on the blue block\")"),
+    ("reference", r"\b(?:swap|swapping|swapped|interchange|exchange)\b|\bswitch(?:es|ed|ing)?\s+(?:the\s+)?(?:places|positions|spots)\b",
+     "refers to something the instruction has not described: the places the cubes stand in now (the current "
+     "scene), which a task's goal cannot see; say where each cube should end (e.g. \"put the red block "
+     "left of the yellow block\")"),
+    ("action", r"\boff\s+(?:of\s+)?the\s+(?:table|table's\s+edge|edge\s+of\s+the\s+table|workspace)\b",
+     "is an action the domain does not have: its cubes stay on the table, and a task's goal says where on it they "
+     "end up"),
     ("object", r"\b(?:balls?|spheres?|cylinders?|cones?|cups?|mugs?|bottles?|plates?|bowls?|pens?|toys?|books?"
                r"|drawers?|shelf|shelves|baskets?|bins?|trays?|doors?|triangles?\s+(?:block|piece)s?|rods?)\b",
      "names an object the domain does not have: it has only 5 cm cubes (coloured, optionally labelled) "
@@ -148,6 +157,21 @@ UNKNOWN_OBJECT = ("object", "names an object the domain does not have: it has on
 """How an unknown noun is refused when it stands where an object does ("insert the peg", "a
 puck"): the noun heads a phrase after a determiner, lemminflect knows it as a noun, and it is not
 in :data:`NOT_OBJECTS`."""
+
+UNKNOWN_COLOUR = ("colour", "is a colour the palette does not have: cubes and patches come in "
+                  + ", ".join(sorted(PALETTE)) + "; name one of them")
+"""How an unknown word is refused when it is a colour's name (:func:`colour_names`: "the mauve
+cube") and stands where a cube's or patch's colour does."""
+
+
+@lru_cache(maxsize=1)
+def colour_names() -> frozenset[str]:
+    """One-word colour names people use (matplotlib's CSS4 and XKCD colour tables, e.g. "mauve",
+    "teal", "crimson"), for telling an unknown colour from an unknown word."""
+    import matplotlib.colors as mcolors  # a table of names only; loaded on the refusal path
+
+    names = set(mcolors.CSS4_COLORS) | {n.split(":", 1)[1] for n in mcolors.XKCD_COLORS}
+    return frozenset(n for n in names if n.isalpha())
 
 UNKNOWN_ACTION = ("action", "is an action the domain does not have: a task's goal says where cubes end up "
                   "(stacked, in a line, next to or on something, on a patch); say where the cubes should end")

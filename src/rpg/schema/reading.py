@@ -88,12 +88,28 @@ def _transposition(word: str) -> tuple[str] | None:
 
 class Inexpressible(ParseError):
     """The instruction says something the domain cannot express (a negation, a condition, a
-    time, a measured quantity, a size, an object it lacks): :data:`lexicon.INEXPRESSIBLE`."""
+    time, a measured quantity, a size, an object it lacks): :data:`lexicon.INEXPRESSIBLE`.
 
-    def __init__(self, kind: str, words: list[str], why: str, original: str):
-        shown = ", ".join(f"'{w}'" for w in words)
-        super().__init__(f"cannot make a task of \"{original[:80]}\": {shown} {why}. Rephrase, or use --model")
+    The message names every such thing the instruction says, the first with why in full and
+    the rest in short ("'rotate' is an action the domain does not have: ...; also '90 degrees'
+    is a measured or vague quantity"), so a text that says several is refused for all of them.
+    ``reasons`` holds them as (class, words, why); ``kind`` is the first one's class.
+    """
+
+    def __init__(self, kind: str, words: list[str], why: str, original: str,
+                 also: tuple[tuple[str, list[str], str], ...] = ()):
+        def shown(ws):
+            return ", ".join(f"'{w}'" for w in ws)
+        more = "".join(f"; also {shown(ws)} {w.split(':')[0]}" for _, ws, w in also)
+        super().__init__(f"cannot make a task of \"{original[:80]}\": {shown(words)} {why}{more}. Rephrase, or use --model")
         self.kind = kind
+        self.reasons = ((kind, list(words), why), *also)
+
+    @classmethod
+    def of(cls, reasons: list[tuple[str, list[str], str]], original: str) -> "Inexpressible":
+        """One refusal naming each of ``reasons`` ((class, words, why), first in full)."""
+        (kind, words, why), *also = reasons
+        return cls(kind, words, why, original, tuple(also))
 
 
 _INEXPRESSIBLE = tuple((kind, re.compile(pattern), why) for kind, pattern, why in lexicon.INEXPRESSIBLE)
@@ -102,13 +118,15 @@ _INEXPRESSIBLE = tuple((kind, re.compile(pattern), why) for kind, pattern, why i
 _SYNONYM_RE = re.compile(r"\b(?:" + "|".join(sorted(lexicon.SYNONYMS, key=len, reverse=True)) + r")\b")
 
 
-def _refuse_inexpressible(text: str, original: str) -> None:
-    """Raise :class:`Inexpressible` for the first class of :data:`lexicon.INEXPRESSIBLE` that
-    lower-cased ``text`` says, naming its words."""
+def _inexpressible(text: str) -> list[tuple[str, list[str], str]]:
+    """(class, words, why) for each class of :data:`lexicon.INEXPRESSIBLE` that lower-cased
+    ``text`` says, in the table's order (a class listed twice with two reasons gives two)."""
+    found = []
     for kind, pattern, why in _INEXPRESSIBLE:
         words = list(dict.fromkeys(m.group(0).strip() for m in pattern.finditer(text)))
         if words:
-            raise Inexpressible(kind, words, why, original)
+            found.append((kind, words, why))
+    return found
 
 
 def _refuse_unresolved_pronoun(text: str, original: str) -> None:
@@ -151,24 +169,27 @@ def _refuse_unresolved_pronoun(text: str, original: str) -> None:
                                 "or label (e.g. \"put the red block on the green patch\")", original)
 
 
-def _unknown_word_class(text: str, unknown: list[str]) -> tuple[str, str, str] | None:
-    """(word, class, why) for the first unknown word that stands where an object does (a noun
-    heading a phrase after a determiner: "insert the peg") or, failing that, where a command's
-    verb does ("throw the red block"); None when no unknown word reads as either."""
+def _unknown_word_classes(text: str, unknown: list[str]) -> list[tuple[str, str, str]]:
+    """(word, class, why) for each unknown word that stands where an object does (a noun
+    heading a phrase after a determiner: "insert the peg") and, failing that for a word, where a
+    command's verb does ("throw the red block"); words that read as neither are left out."""
     def where(word: str):
         for m in re.finditer(rf"(?<![\w-]){re.escape(word)}(?![\w-])", text):
             yield text[:m.start()], text[m.end():]
 
+    found = []
     for word in unknown:
+        if word in lexicon.colour_names() and any(_COLOUR_BEFORE.match(after) for _, after in where(word)):
+            found.append((word, *lexicon.UNKNOWN_COLOUR))
+            continue
         pos = lexicon.parts_of_speech(word)
         lemma = (lexicon.lemmas(word) or (word,))[0]
         if "NOUN" in pos and word not in lexicon.NOT_OBJECTS and lemma not in lexicon.NOT_OBJECTS and any(
                 _heads_a_phrase(before, after) for before, after in where(word)):
-            return (word, *lexicon.UNKNOWN_OBJECT)
-    for word in unknown:
-        if "VERB" in lexicon.parts_of_speech(word) and any(_CLAUSE_START_BEFORE.search(b) for b, _ in where(word)):
-            return (word, *lexicon.UNKNOWN_ACTION)
-    return None
+            found.append((word, *lexicon.UNKNOWN_OBJECT))
+        elif "VERB" in pos and any(_CLAUSE_START_BEFORE.search(b) for b, _ in where(word)):
+            found.append((word, *lexicon.UNKNOWN_ACTION))
+    return found
 
 
 def _heads_a_phrase(before: str, after: str) -> bool:
@@ -187,6 +208,9 @@ _DETERMINER_BEFORE = re.compile(r"\b(?:a|an|the|this|that|these|those|its|their|
                                 r"(?P<mods>(?:[a-z\-]+\s+){0,2})$")
 _PHRASE_END_AFTER = re.compile(r"\s*(?:$|[.,;:!?)(/]|(?:and|or|but|into|onto|on|in|to|with|from|off|at|of|that|which"
                                r"|so|then|down|up|over|under|by|for|near|next|inside|\d+)\b)")
+_COLOUR_BEFORE = re.compile(r"\s+(?:(?:coloured|colored|[a-z]+-?ish)\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?|patch(?:es)?"
+                            r"|squares?|tiles?|pads?|mats?|targets?|objects?)\b")
+"""What follows a word that names a cube's or patch's colour ("mauve cube", "teal patch")."""
 _CLAUSE_START_BEFORE = re.compile(r"(?:^|[.,;:!?]\s*|\b(?:and|then|please|to|must|should)\s+"
                                   r"|\b(?:can|could|would|will)\s+you\s+)$")
 
@@ -238,7 +262,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         raise ParseError("the instruction is empty; describe a task, e.g. \"stack the red block on the blue block\"")
     if len(original) > MAX_INSTRUCTION_CHARS:
         raise ParseError(f"the instruction has {len(original)} characters; the limit is {MAX_INSTRUCTION_CHARS}")
-    labelled = re.sub(r"\b(block|cube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))",
+    labelled = re.sub(r"\b(block|cube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))"
+                      r"(?<!\bI(?=\s+(?:[a-z]+ed|am|have|had|want|need|would|will|just|think|said|mean|like|told|see|saw)\b))",
                       lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1)}", original)  # "block 4"
     labelled = re.sub(r"\b(the|a|an)\s+([A-Z])\s+(block|cube)\b", r"\1 letter \2 \3", labelled)  # "the A block"
     labelled = re.sub(r"\b(the)\s+(\d)\s+(block|cube)\b(?!s)", r"\1 digit \2 \3", labelled)  # "the 3 cube"
@@ -256,7 +281,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   rf"(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|one)\b)", "next to ", text)
     text = lexicon.ANY_ORDER_RE.sub(" in any order", text)  # before "doesn't" is refused as a negation
     text = lexicon.HARMLESS_NEGATION_RE.sub("", text)
-    _refuse_inexpressible(text, original)
+    refused = _inexpressible(text)  # refused below, with what the unknown words say as well
     text = lexicon.FRAMING_RE.sub("", text)
     # "the robot stacks the red block on ...": the command the sentence describes
     text = re.sub(r"^(?:the\s+|a\s+)?(?:robot(?:ic)?(?:\s+arm)?|agent|arm)\s+(stack|put|place|move|push|arrange|build|set|line|pick|slide|lift|make)s\b",
@@ -351,22 +376,27 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         else:
             unknown.append(w)
     dropped = []
+    named = {w for _, ws, _ in refused for w in ws}
     for w in dict.fromkeys(unknown):
         read = senses.sense(w)
         if read.kind in _KIND_WHY and strict:
-            like = f" ('{w}' reads like '{read.like}')" if read.like != w else ""
-            raise Inexpressible(read.kind, [w], _KIND_WHY[read.kind] + like, original)
-        if read.kind == "ignorable" and not re.search(rf"(?<![\w-]){re.escape(w)}\s+(?:(?:{COLOR_RE})\s+)?(?:blocks?|cubes?|ones?"
-                                                      rf"|boxes|box|patch(?:es)?|{COLOR_RE})\b", text):
+            if w not in named:
+                like = f" ('{w}' reads like '{read.like}')" if read.like != w else ""
+                refused.append((read.kind, [w], _KIND_WHY[read.kind] + like))
+            dropped.append((w, read.like))  # refused for its class: no longer an unknown word
+        elif read.kind == "ignorable" and not re.search(rf"(?<![\w-]){re.escape(w)}\s+(?:(?:{COLOR_RE})\s+)?(?:blocks?|cubes?|ones?"
+                                                        rf"|boxes|box|patch(?:es)?|{COLOR_RE})\b", text):
             dropped.append((w, read.like))  # never one that describes a cube ("the swift block")
     if dropped:
         gone = {w for w, _ in dropped}
         unknown = [w for w in unknown if w not in gone]
         text = " ".join(w for w in text.split(" ") if re.sub(r"[.,;:!?]+$", "", w) not in gone)
     if unknown and strict:
-        classed = _unknown_word_class(text, list(dict.fromkeys(unknown)))
-        if classed is not None:
-            raise Inexpressible(classed[1], [classed[0]], classed[2], original)
+        refused += [(kind, [w], why) for w, kind, why in _unknown_word_classes(text, list(dict.fromkeys(unknown)))
+                    if w not in named]
+    if refused:
+        raise Inexpressible.of(refused, original)
+    if unknown and strict:
         shown = ", ".join(f"'{w}'" for w in dict.fromkeys(unknown))
         raise ParseError(
             f"could not parse {shown} in \"{original[:80]}\"; the builtin parser reads the block domain "

@@ -274,7 +274,7 @@ def _refuse_as_parser_would(edit: str) -> None:
     try:
         parse(strip_edit_words(edit))
     except Inexpressible as exc:
-        if "refers to something" not in str(exc) and "picks a cube" not in str(exc):
+        if not all("refers to something" in why or "picks a cube" in why for _, _, why in exc.reasons):
             raise SteerError(str(exc).splitlines()[0]) from None
     except ParseError as exc:
         if str(exc).startswith("could not parse"):
