@@ -106,7 +106,7 @@ class Inexpressible(ParseError):
         self.reasons = ((kind, list(words), why), *also)
 
     @classmethod
-    def of(cls, reasons: list[tuple[str, list[str], str]], original: str) -> "Inexpressible":
+    def of(cls, reasons: list[tuple[str, list[str], str]], original: str) -> Inexpressible:
         """One refusal naming each of ``reasons`` ((class, words, why), first in full)."""
         (kind, words, why), *also = reasons
         return cls(kind, words, why, original, tuple(also))
