@@ -34,6 +34,7 @@ HERE = Path(__file__).parent
 CORPUS = HERE / "instructions.yaml"  # the development split
 UNSEEN = HERE / "unseen.yaml"
 STRANGER = HERE / "stranger.yaml"  # attack material written for the project (development, not a corpus source)
+STRANGER2 = HERE / "stranger2.yaml"  # a second stranger's set, written 2026-11-23 (development as well)
 SPLITS = HERE / "splits.yaml"
 
 # What a refusal message must say to be refused "for the right reason", per must-refuse class.
@@ -66,8 +67,9 @@ def load_split(name: str) -> list[dict]:
     """The entries of one split ('dev' or 'unseen'); the unseen file must match its frozen hash."""
     if name == "dev":
         return yaml.safe_load(CORPUS.read_text())["instructions"]
-    if name == "stranger":
-        return [{"source": "stranger", **e} for e in yaml.safe_load(STRANGER.read_text())["instructions"]]
+    if name in ("stranger", "stranger2"):
+        path = STRANGER if name == "stranger" else STRANGER2
+        return [{"source": name, **e} for e in yaml.safe_load(path.read_text())["instructions"]]
     splits = yaml.safe_load(SPLITS.read_text())
     want, got = splits["unseen"]["sha256"], sha256(UNSEEN)
     if want != got:
@@ -215,7 +217,8 @@ def run_split(name: str, show: str = "none") -> Counter:
             print(f"[{outcome}] {e['text']}\n    expected: {e['meaning']}\n    got:      {detail[:160]}"
                   + (f"\n    class:    {cls}" if cls else ""))
     label = {"dev": "DEVELOPMENT split (instructions.yaml)", "unseen": "UNSEEN split (unseen.yaml, frozen)",
-             "stranger": "STRANGER set (stranger.yaml, development material)"}[name]
+             "stranger": "STRANGER set (stranger.yaml, development material)",
+             "stranger2": "STRANGER set 2 (stranger2.yaml, development material)"}[name]
     _table(f"{label}: {len(by_source)} sources", by_source, counts)
     print(f"must-refuse: {mr['n']} texts; refused for the right reason {mr['right reason']}, "
           f"for another reason {mr['other reason']}, compiled {mr['compiled']}")
@@ -244,7 +247,7 @@ def run(show: str = "wrong", split: str = "dev") -> Counter:
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--split", default="dev", choices=["dev", "unseen", "stranger", "all"])
+    ap.add_argument("--split", default="dev", choices=["dev", "unseen", "stranger", "stranger2", "all"])
     ap.add_argument("--show", default=None, choices=["wrong", "refused", "correct", "all", "none"],
                     help="print these development-split instructions (default: wrong); not allowed for --split unseen")
     args = ap.parse_args(argv)
