@@ -965,3 +965,20 @@ def test_a_triangle_with_nothing_stacked_names_no_one_shape():
     with pytest.raises(ParseError, match="names no one shape"):
         parse("Arrange three blocks in a triangle.")
     assert parse("Stack three blocks in a triangle.").goal.name == "pyramid"
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a list of labels whose last item follows a bare "and" keeps it (it dropped the 4, and D)
+    ("Put the digit cubes 1, 2, 3 and 4 in a row from left to right.",
+     ["line[left_to_right](1,2,3,4)", "reads(1,2,3,4;direction=left_to_right,face=up,text=1234)"]),
+    ("stack the letter cubes A, B, C and D", ["stack(A,B,C,D)"]),
+    # a circle of listed labels has those cubes (it had six, A to F)
+    ("put the letter cubes A, B, C and D in a circle", ["circle(A,B,C,D)"]),
+])
+def test_every_listed_label_is_a_cube_and_no_other(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_label_nobody_named_is_refused():
+    with pytest.raises(ParseError, match="'X' has no place"):
+        parse("put the letter cubes X, Y and Z in a circle")

@@ -404,6 +404,11 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     if named_labels - set(labels):
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the cube labelled "
                           f"{sorted(named_labels - set(labels))[0]!r} has no place in that task. Rephrase, or use --model")
+    spelled = set("".join(re.findall(r"\b[A-Z]{2,}\b|(?<=')[A-Za-z0-9]{2,}(?=')", f.original)).upper())
+    invented = sorted(set(labels) - named_labels - spelled) if named_labels else []
+    if invented:  # "the letter cubes A, B, C and D in a circle" read as a circle of six, A to F
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but no word names the cube labelled "
+                          f"{invented[0]!r}. Rephrase (say how many cubes), or use --model")
     try:
         account_named(f.text, schema)
     except UnaccountedMention as exc:

@@ -514,7 +514,8 @@ def features_colors(text: str) -> list[tuple[int, str]]:
 
 def explicit_labels(f: Features) -> list[str]:
     """Labels listed ("A, B, C, D") or given as a range ("A to E", "digits 1 to 5")."""
-    m = re.search(r"\b([A-Z0-9])((?:\s*,\s*(?:and\s+)?[A-Z0-9]){2,})\b", f.original)
+    m = re.search(r"\b([A-Z0-9])((?:\s*,\s*(?:and\s+)?[A-Z0-9]|\s+and\s+[A-Z0-9]){2,})\b", f.original)
+    m = m if m and "," in m.group(2) else None  # "1, 2, 3 and 4", "A, B, and C"; "A and B and C" is the next rule's
     if not m and f.has("letter", "letters", "number", "numbers", "digit", "digits", "label", "labels", "faces"):
         m = re.search(r"\b([A-Z0-9])((?:(?:\s*,\s*|\s+and\s+|\s*,\s*and\s+)[A-Z0-9]){1,})\b", f.original)
     if m:

@@ -334,6 +334,8 @@ def recognize_circle(f: Features, b: Builder) -> bool:
         if n < 3:
             raise ParseError(f"a circle needs at least 3 cubes and it names {n} ({', '.join(listed)}); say how many "
                              "(e.g. 'a circle of 3 red and 3 blue blocks')")
+    labels = explicit_labels(f)
+    n = len(labels) if n is None and len(labels) >= 3 else n  # "the letter cubes A, B, C and D": those four
     n = n if n is not None else (4 if corners else 6)
     if n < 3:
         raise ParseError("a circle needs at least 3 cubes")
