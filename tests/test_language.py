@@ -982,3 +982,28 @@ def test_every_listed_label_is_a_cube_and_no_other(text, expected):
 def test_a_label_nobody_named_is_refused():
     with pytest.raises(ParseError, match="'X' has no place"):
         parse("put the letter cubes X, Y and Z in a circle")
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a plural noun after a list of colours is the list's: one cube of each (it read two of the last colour)
+    ("put the red and blue blocks on the yellow patch", ["on_patch(blue,red,patch:yellow)"]),
+    ("put the red and the white blocks both on the yellow pad", ["on_patch(red,white,patch:yellow)"]),
+    ("put the red, green and blue blocks on the yellow patch", ["on_patch(blue,green,red,patch:yellow)"]),
+])
+def test_a_plural_after_a_colour_list_is_one_cube_of_each(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", [
+    # two relations sharing one object: each is stated of it (the first was dropped)
+    "Place the green block both to the left and to the right of the yellow block.",
+    "put the red block to the left of and to the right of the blue block",
+])
+def test_relations_sharing_an_object_are_each_stated(text):
+    with pytest.raises(ParseError, match="contradict"):
+        parse(text)
+
+
+def test_relations_sharing_an_object_compose():
+    assert meaning(parse("put the red block next to and in front of the blue block")) == \
+        ["in_front_of(red,blue)", "next_to(blue,red)"]

@@ -451,6 +451,15 @@ here."""
 
 
 _PAIRWISE_WORDS = "(?:" + "|".join(PREDICATES[name].phrases for name in PAIRWISE_RELATIONS) + ")"
+
+
+def _completed(head: str) -> str:
+    """A relation's words with the preposition that takes its object ("to the left" -> "to the
+    left of", "next" -> "next to"); words already complete are returned as they are."""
+    for tail in ("", " of", " to"):
+        if re.fullmatch(_PAIRWISE_WORDS, head + tail):
+            return head + tail
+    return head
 _COLOR_WORD = "(?:" + "|".join(COLORS) + ")"
 DISTRIBUTED_RELATIONS: tuple[tuple[re.Pattern, str], ...] = (
     # "the red and green blocks next to the blue block": each of them
@@ -463,6 +472,10 @@ DISTRIBUTED_RELATIONS: tuple[tuple[re.Pattern, str], ...] = (
                 rf"|\s+(?:block|cube)\s+and\s+the\s+(?P<c2>{_COLOR_WORD})\s+(?:block|cube)\s*(?=[.!]?$))"),
      lambda m: (f"the {m['a']} {m['n']} {m['rel']} the {m['b']} {m['n']} and the {m['a']} {m['n']} {m['rel']} "
                 f"the {m['c'] or m['c2']} {m['n']}")),
+    # "to the left and to the right of the yellow block", "behind and to the left of it": each of the object
+    (re.compile(rf"\b(?P<r1>{_PAIRWISE_WORDS}|(?:to|on)\s+the\s+(?:left|right)|in\s+front|next)\s+and\s+(?:also\s+)?"
+                rf"(?P<r2>{_PAIRWISE_WORDS})\s+(?P<obj>the\s+{_COLOR_WORD}\s+(?:block|cube|one)|it)\b"),
+     lambda m: f"{_completed(m['r1'])} {m['obj']} and {m['r2']} {m['obj']}"),
 )
 """A pairwise relation (:data:`PAIRWISE_RELATIONS`) said once of two cubes, written out for
 each: "the red and green blocks next to the blue block" is red next to blue and green next to

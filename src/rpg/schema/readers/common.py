@@ -362,7 +362,14 @@ def mentions_in(text: str) -> list[Mention]:
             (m.group("label") or m.group("label2") or m.group("label3") or "").upper() or None, count,
             patch=noun.startswith("patch"), shape="long" if "long" in pre else "square",
         ))
-    return sorted(out, key=lambda mn: mn.start)
+    out.sort(key=lambda mn: mn.start)
+    for before, mn in zip(out, out[1:]):
+        # "the red and blue blocks": the plural is the list's, one cube of each colour (it read two blue)
+        if (mn.count == 2 and before.color and not before.patch and before.end <= mn.start and before.count == 1
+                and re.fullmatch(r"\s*(?:,\s*and|,|and|&)\s*(?:the\s+)?", text[before.end:mn.start])
+                and not re.match(r"\d", text[mn.start:]) and re.fullmatch(COLOR_RE, text[before.start:before.end])):
+            mn.count = 1
+    return out
 
 
 DESCRIBED_TOWER_RE = re.compile(rf"\b(?:a|an|one|another)\s+(?:tower|stack)\s+of\s+(\d+)\s+({COLOR_RE})\s+(?:blocks|cubes)\b")
