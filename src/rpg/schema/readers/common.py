@@ -7,6 +7,7 @@ so every reader that needs it reads it the same way.
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 from dataclasses import dataclass
@@ -363,7 +364,7 @@ def mentions_in(text: str) -> list[Mention]:
             patch=noun.startswith("patch"), shape="long" if "long" in pre else "square",
         ))
     out.sort(key=lambda mn: mn.start)
-    for before, mn in zip(out, out[1:]):
+    for before, mn in itertools.pairwise(out):
         # "the red and blue blocks": the plural is the list's, one cube of each colour (it read two blue)
         if (mn.count == 2 and before.color and not before.patch and before.end <= mn.start and before.count == 1
                 and re.fullmatch(r"\s*(?:,\s*and|,|and|&)\s*(?:the\s+)?", text[before.end:mn.start])
