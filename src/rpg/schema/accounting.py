@@ -409,6 +409,12 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     if invented:  # "the letter cubes A, B, C and D in a circle" read as a circle of six, A to F
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but no word names the cube labelled "
                           f"{invented[0]!r}. Rephrase (say how many cubes), or use --model")
+    said = Counter(canon_color(m.group(1)) for m in re.finditer(rf"\b(?:a|an|another)\s+({COLOR_RE})\s+(?:block|cube|brick|box)\b", f.text))
+    have = Counter(a.color for a in schema.assets if a.kind != "goal_patch")
+    short = sorted(c for c, n in said.items() if have[c] < n)
+    if short:  # "place a pink cube ..., then a pink cube on the cyan one": each "a pink cube" is one more
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but it says 'a {short[0]} "
+                          f"block' {said[short[0]]} times and that task has {have[short[0]]}. Rephrase, or use --model")
     try:
         account_named(f.text, schema)
     except UnaccountedMention as exc:
