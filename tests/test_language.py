@@ -1007,3 +1007,19 @@ def test_relations_sharing_an_object_are_each_stated(text):
 def test_relations_sharing_an_object_compose():
     assert meaning(parse("put the red block next to and in front of the blue block")) == \
         ["in_front_of(red,blue)", "next_to(blue,red)"]
+
+
+@pytest.mark.parametrize("text,match", [
+    # "a tower of three" holds three: a tower of four or five read from a list of four colours is refused
+    ("Build a tower of three blocks using the red, blue, green and white cubes", "asks for a tower of 3"),
+    ("Build a tower of three blocks using the red, blue, green and white cubes, all four of them.", "asks for a tower of 3"),
+    # each "a pink cube" is one more pink cube (the second merged into the first)
+    ("Place a pink cube on the table, put a cyan cube on it, and then a pink cube on the cyan one.", "contradict|2 times"),
+])
+def test_a_counted_structure_holds_exactly_its_count(text, match):
+    with pytest.raises(ParseError, match=match):
+        parse(text)
+
+
+def test_it_after_a_cube_put_on_the_table_is_that_cube():
+    assert meaning(parse("Place a pink cube on the table, put a cyan cube on it")) == ["stack(pink,cyan)"]

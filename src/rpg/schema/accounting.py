@@ -203,6 +203,15 @@ def _ends_at(goal: list[P.Predicate], side: str, color_of: dict[str, str | None]
     return out
 
 
+def _structure_sizes(schema: TaskSchema, kind: str) -> list[int]:
+    """How many cubes each tower (``kind`` "stack") or line ("line") of the goal holds, from its
+    meaning atoms (:func:`rpg.schema.meaning.meaning`)."""
+    from rpg.schema.meaning import meaning
+
+    return sorted(len(re.split(r"[,|]", m.group(1))) for a in meaning(schema)
+                  if (m := re.fullmatch(rf"{kind}(?:\[[a-z_]+\])?\(([^;()]*)\)(?:@\w+)?", a)))
+
+
 def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
     """Check every count, patch, place and relation mention of ``text`` against ``schema``.
 
@@ -233,6 +242,13 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
             what = f"{m.color} cubes" if m.color else "cubes"
             if have < m.count:
                 raise UnaccountedMention(f"'{m.words}' asks for {m.count} {what} but the task read has {have}")
+            sized = re.fullmatch(r"(tower|stack|column|pillar|row|line) of \d+", m.words)
+            if sized:  # "a tower of 3 blocks": some tower of exactly 3 (a tower of 4 held 'at least 3')
+                sizes = _structure_sizes(schema, "stack" if sized.group(1) not in ("row", "line") else "line")
+                if m.count not in sizes:
+                    raise UnaccountedMention(f"'{m.words}' asks for a {sized.group(1)} of {m.count} but the task read has "
+                                             f"{' and '.join(map(str, sizes)) or 'no'} {'cubes in one' if sizes else ''} "
+                                             f"{sized.group(1)}".replace("  ", " "))
             record.append({"mention": m.words, "kind": "count", "consumed_by": f"{have} {what}"})
         elif m.kind == "structure":  # a predicate counts as each registered class it derives from
             used = sorted({c.name for p in goal for c in type(p).__mro__ if "name" in vars(c)} & set(m.predicates))
