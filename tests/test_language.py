@@ -1023,3 +1023,13 @@ def test_a_counted_structure_holds_exactly_its_count(text, match):
 
 def test_it_after_a_cube_put_on_the_table_is_that_cube():
     assert meaning(parse("Place a pink cube on the table, put a cyan cube on it")) == ["stack(pink,cyan)"]
+
+
+@pytest.mark.parametrize("text", [
+    "stack the red, green, blue and yellow blocks into one tower -- the order is up to you",
+    "stack the red and blue blocks in whatever order you like",
+    # "from" without a "to" says what the tower is made of, not an order
+    "Build a tower from two purple cubes and one black cube, in any order.",
+])
+def test_order_left_free_in_more_words(text):
+    assert "in any order" in parse(text).goal_summary

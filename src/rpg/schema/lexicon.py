@@ -506,7 +506,10 @@ REGION_WORDS = {"rear": "back", "far": "back", "near": "front", "middle": "cente
 
 ANY_ORDER_RE = re.compile(
     r"(?:\s*[,;(\u2013\u2014-]\s*|\s+)(?:(?:in\s+)?(?:any|whatever|no\s+particular)\s+order(?:\s+(?:is|are)\s+(?:fine|ok(?:ay)?|good|allowed))?"
-    r"|(?:the\s+)?order\s+(?:does\s*n[o']t|doesn't|is\s*n[o']t|isn't)\s+(?:matter|important)|regardless\s+of\s+(?:the\s+)?order)\b\)?")
+    r"|(?:the\s+)?order\s+(?:does\s*n[o']t|doesn't|is\s*n[o']t|isn't)\s+(?:matter|important)|regardless\s+of\s+(?:the\s+)?order"
+    r"|(?:the\s+)?order\s+is\s+(?:up\s+to\s+you|your\s+(?:choice|call)|free|flexible|open)"
+    r"|(?:in\s+)?(?:any|whatever|whichever)\s+order\s+you\s+(?:like|want|choose|prefer|wish)"
+    r"|you\s+(?:can|may)\s+(?:choose|pick|decide)\s+the\s+order)\b\)?")
 """Words that leave the cubes' order free ("stack them in any order", ", any order is fine",
 "the order doesn't matter", "in no particular order"): read as the one phrase " in any order"
 before negations are refused (:func:`rpg.schema.reading.normalize`), which no order word
@@ -540,11 +543,12 @@ STACK_FREE_PHRASES = re.compile(
 top of each other"), where it stands ("on the green patch", "on the table", a region)."""
 
 CUBE_ORDER_RE = re.compile(r"\b(?:on|onto|upon|atop|above|over|under|below|beneath|underneath|higher|lower|followed|"
-                           r"after|before|next|from|starting|ending|beginning|respectively|that|this|listed|given|"
+                           r"after|before|next|from(?=[^.;]*\bto\b)|starting|ending|beginning|respectively|that|this|listed|given|"
                            r"named|reverse\w*|up|down|last|first)\b")
 """Words that, left in a stack instruction once :data:`STACK_FREE_PHRASES` and roles are
 taken out, may order the cubes it lists ("red on blue", "from bottom to top", "in that
-order"): with any of them, or :data:`ORDER_WORDS`, the listed order is kept."""
+order"): with any of them, or :data:`ORDER_WORDS`, the listed order is kept.  "from" orders only
+with a "to" after it ("a tower from two purple cubes" says what it is made of)."""
 
 _COLOR_LIST = "(?:" + "|".join(COLORS) + r")(?:\s*,\s*(?:" + "|".join(COLORS) + r"))*(?:,?\s+and\s+(?:" + "|".join(COLORS) + r"))?"
 _LAYER_ROLE = r"(?P<role{i}>top|peak|apex|tip|bottom|base|foundation|middle)"
