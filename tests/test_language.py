@@ -1033,3 +1033,25 @@ def test_it_after_a_cube_put_on_the_table_is_that_cube():
 ])
 def test_order_left_free_in_more_words(text):
     assert "in any order" in parse(text).goal_summary
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a layer named by a comparative, or with its count, keeps its colour (the layers were lost)
+    ("Construct a two-layer wall: the lower layer is two yellow cubes, the upper layer is two orange cubes.",
+     ["wall(yellow,yellow|orange,orange)"]),
+    ("build a wall: bottom layer two yellow cubes, top layer two orange cubes", ["wall(yellow,yellow|orange,orange)"]),
+    # "smallest to largest" of digits is their value, not a size
+    ("line up the digits from smallest to largest",
+     ["line[left_to_right](1,2,3,4)",
+      "sorted_by(1,2,3,4;descending=False,direction=left_to_right,face=up,key=number,strict=True)"]),
+])
+def test_layers_and_values_said_in_more_words(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", ["Stack the blocks from largest at the bottom to smallest at the top.",
+                                  "Place the larger of the two green cubes on the pink patch.", "sort the blocks by size"])
+def test_a_size_compared_on_its_own_is_refused(text):
+    with pytest.raises(Inexpressible, match="asks for a size") as exc:
+        parse(text)
+    assert str(exc.value).count("asks for a size") == 1

@@ -97,7 +97,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "its counts exact"),
     ("size", r"\b(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge|giant|mini|heavy|heavier"
              r"|heaviest|wider|narrow|thin|thick)\s+(?:(?!(?:number|digit|letter|label)\b)[a-z]+\s+)?(?:blocks?|cubes?|boxes|box|ones?"
-             r"|objects?|items?|pieces?|things?)\b",
+             r"|objects?|items?|pieces?|things?)\b"
+             r"|\b(?:by|of|in\s+order\s+of)\s+(?:their\s+)?(?:size|weight)\b",
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
     ("reference", r"\bthe\s+(?:very\s+)?(?:first|second|third|fourth|fifth|sixth|last|next|previous|former|latter)"
                   r"\s+(?:(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?))\b"
@@ -142,6 +143,14 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
 """Meaning the domain cannot express, by class: (class, pattern over the lower-cased text,
 why).  An instruction that says one is refused naming the words and why (refuse rather than
 guess); none of these words may be dropped as a filler."""
+
+SIZE_COMPARATIVE_RE = re.compile(r"\b(?:largest|smallest|biggest|heaviest|lightest|larger|smaller|bigger|heavier|lighter)\b")
+"""A cube compared by size or weight on its own ("from largest at the bottom to smallest", "the
+larger of the two"): refused as a size, like :data:`INEXPRESSIBLE`'s "size" class, unless
+:data:`LABEL_VALUE_RE` says the comparison is of the cubes' labels."""
+
+LABEL_VALUE_RE = re.compile(r"\b(?:digits?|numbers?|numerals?|numeric\w*|values?|letters?|alphabet\w*)\b|\b\d\b")
+"""Words that make "smallest"/"largest" a label's value ("the digits from smallest to largest")."""
 
 NOT_OBJECTS: frozenset[str] = frozenset("""
 task tasks objective objectives job aim purpose way ways position positions direction directions orientation
@@ -557,13 +566,13 @@ LAYER_ROLE_RE = re.compile(
     r"(?:(?:is|are|goes|go|sits?|stands?)\s+)?(?:on|at|as|in|for|forms?|making|makes)\s+(?:the\s+)?"
     + _LAYER_ROLE.format(i=0) + r"\b(?!\s+of\b)"
     r"|\b" + _LAYER_ROLE.format(i=1) + r"(?:\s+(?:layer|level|row|tier|block|cube|one))?\s+"
-    r"(?:is|are|of|made\s+of|with|in)\s+(?:the\s+|a\s+|an\s+)?(?P<c1>" + "|".join(COLORS) + r")\b"
+    r"(?:is|are|of|made\s+of|with|in)\s+(?:the\s+|a\s+|an\s+)?(?:\d+\s+)?(?P<c1>" + "|".join(COLORS) + r")\b"
     r"(?:\s+(?P<noun1>blocks?|cubes?|ones?))?"
     r"|\b(?:a|an|the)\s+(?P<c2>" + "|".join(COLORS) + r")\s+" + _LAYER_ROLE.format(i=2) + r"\b(?!\s+of\b)"
     r"|\b(?:the\s+)?(?:(?P<n3>\d+)\s+)?" + _LAYER_ROLE.format(i=3) + r"(?:\s+(?P<m3>\d+))?"
     r"(?:\s+(?P<noun3>layer|level|row|tier|blocks|cubes|ones))?\s+(?:being\s+|should\s+be\s+|must\s+be\s+)?(?:all\s+)?"
-    r"(?P<c3>" + _COLOR_LIST + r")\b(?!\s+(?:(?:blocks?|cubes?|ones?)\s+)?(?:on|onto|at|in|to|of|is|are)\b)"
-    r"(?<=\w)(?=\s*(?:[,.;]|$|\s+(?:and|with|while)\b))"
+    r"(?:\d+\s+)?(?P<c3>" + _COLOR_LIST + r")\b(?!\s+(?:(?:blocks?|cubes?|ones?)\s+)?(?:on|onto|at|in|to|of|is|are)\b)"
+    r"(?:\s+(?:blocks?|cubes?|ones?))?(?<=\w)(?=\s*(?:[,.;]|$|\s+(?:and|with|while)\b))"
     r"|\bthe\s+(?P<n4>\d+)\s+(?:(?:blocks|cubes|ones)\s+)?(?:on|at|in)\s+the\s+" + _LAYER_ROLE.format(i=4)
     + r"(?:\s+(?:layer|level|row|tier))?\s+(?:being|are|is|should\s+be|must\s+be)\s+(?:all\s+)?(?P<c4>" + _COLOR_LIST + r")\b")
 """A colour given a layer of a pyramid or wall ("yellow on top", "the red blocks at the
@@ -574,6 +583,11 @@ apex, tip: the highest layer; bottom, base, foundation: the lowest; middle: the 
 in a structure three layers high); ``n0``, ``n3``, ``n4`` a count or article before the colour and
 ``noun0``/``noun1`` the noun after it ("a red block": one cube; "red blocks", "a red base":
 the whole layer)."""
+
+LAYER_SYNONYM_RE = re.compile(r"\b(?:(?P<low>lower|lowest|bottommost|first)|(?P<high>upper|uppermost|topmost|highest|second))"
+                              r"\s+(?=(?:layer|level|row|tier)\b)")
+"""A layer named by a comparative ("the lower layer", "the upper row"): read as "bottom" or
+"top" (:func:`rpg.schema.reading.normalize`); "first"/"second" layer count from the bottom."""
 
 LAYER_WORDS = {"top": "top", "peak": "top", "apex": "top", "tip": "top", "bottom": "bottom", "base": "bottom",
                "foundation": "bottom", "middle": "middle"}

@@ -108,7 +108,15 @@ class Inexpressible(ParseError):
     @classmethod
     def of(cls, reasons: list[tuple[str, list[str], str]], original: str) -> Inexpressible:
         """One refusal naming each of ``reasons`` ((class, words, why), first in full)."""
-        (kind, words, why), *also = reasons
+        merged: dict[str, tuple[str, list[str], str]] = {}
+        for kind, words, why in reasons:  # one entry per class; a word inside a phrase already named is not named again
+            said = " ".join(w for _, ws, _ in merged.values() for w in ws)
+            fresh = [w for w in words if not re.search(rf"(?<![\w-]){re.escape(w)}(?![\w-])", said)]
+            if fresh and kind in merged:
+                merged[kind][1].extend(fresh)
+            elif fresh:
+                merged[kind] = (kind, list(fresh), why)
+        (kind, words, why), *also = merged.values()
         return cls(kind, words, why, original, tuple(also))
 
 
@@ -126,6 +134,9 @@ def _inexpressible(text: str) -> list[tuple[str, list[str], str]]:
         words = list(dict.fromkeys(m.group(0).strip() for m in pattern.finditer(text)))
         if words:
             found.append((kind, words, why))
+    compared = list(dict.fromkeys(m.group(0) for m in lexicon.SIZE_COMPARATIVE_RE.finditer(text)))
+    if compared and not lexicon.LABEL_VALUE_RE.search(text):
+        found.append(("size", compared, _KIND_WHY["size"]))
     return found
 
 
@@ -325,6 +336,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         text = re.sub(r"\b(on|at|to)\s+the\s+(left|right|front|back)\s+side\b(?!\s+of\b)", r"\1 the \2 side of the table", text)
     # "with yellow as the base": a cube of that colour at that end (read as a tower of yellow cubes)
     text = re.sub(rf"\bwith\s+({COLOR_RE})\s+(as|at|on)\s+(the\s+)?(base|bottom|top)\b", r"with a \1 block \2 \3\4", text)
+    text = lexicon.LAYER_SYNONYM_RE.sub(lambda m: "bottom " if m.group("low") else "top ", text)
     # "the green one goes in between" (a middle left unnamed): in the middle
     if re.search(r"\b(?:stack|stacked|tower|towers|stacks)\b", text):
         text = re.sub(r"\b(?:goes\s+|is\s+|sits\s+|stands\s+)?in\s+between\b(?!\s+(?:the|them|those|these|of|a|an|it|each)\b)",
