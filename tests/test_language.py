@@ -1055,3 +1055,17 @@ def test_a_size_compared_on_its_own_is_refused(text):
     with pytest.raises(Inexpressible, match="asks for a size") as exc:
         parse(text)
     assert str(exc.value).count("asks for a size") == 1
+
+
+@pytest.mark.parametrize("text", [
+    "The green cube is sitting on the yellow cube. Move the green cube down onto the table.",
+    "The green cube is on the yellow cube. Move it onto the table.",
+    "the green cube starts on the yellow cube; move it to the table",
+])
+def test_a_start_stated_then_a_cube_moved_to_the_table(text):
+    assert meaning(parse(text)) == ["on_table(green)", "start:stack(yellow,green)"]
+
+
+def test_a_cube_sent_to_the_table_is_not_left_stacked():
+    with pytest.raises(ParseError, match="puts the red cube on the table"):
+        parse("place the red block on the blue block, then move the red block to the table")

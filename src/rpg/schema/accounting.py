@@ -203,6 +203,24 @@ def _ends_at(goal: list[P.Predicate], side: str, color_of: dict[str, str | None]
     return out
 
 
+ON_TABLE_RE = re.compile(rf"\b(?:put|place|move|set|lay|lower|bring|return)\s+the\s+({COLOR_RE})\s+(?:block|cube|box)\s+"
+                         r"(?:back\s+|down\s+)*(?:on|onto|to)\s+the\s+table\b")
+"""A named cube sent to the table ("move the green cube down onto the table"): the goal may not
+stack it on another cube."""
+
+
+def _stacked_on_another(schema: TaskSchema) -> set[str]:
+    """The cubes the goal surely puts on top of another cube (every On edge's upper cube, every
+    cube of an ordered Stack but its base)."""
+    out = set()
+    for p in schema.goal_predicate().walk():
+        if isinstance(p, P.On):
+            out.add(p.a)
+        elif type(p) is P.Stack:  # an unordered or anchored stack may have any of its cubes at the base
+            out.update(p.objects[1:])
+    return out
+
+
 def _structure_sizes(schema: TaskSchema, kind: str) -> list[int]:
     """How many cubes each tower (``kind`` "stack") or line ("line") of the goal holds, from its
     meaning atoms (:func:`rpg.schema.meaning.meaning`)."""
@@ -425,6 +443,12 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     if invented:  # "the letter cubes A, B, C and D in a circle" read as a circle of six, A to F
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but no word names the cube labelled "
                           f"{invented[0]!r}. Rephrase (say how many cubes), or use --model")
+    for m in ON_TABLE_RE.finditer(f.text):  # "move the green cube onto the table": not stacked on another
+        color = canon_color(m.group(1))
+        cubes = [a.name for a in schema.assets if a.kind != "goal_patch" and a.color == color]
+        if cubes and all(n in _stacked_on_another(schema) for n in cubes):
+            return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group(0)}' puts the "
+                              f"{color} cube on the table and that task stacks it on another. Rephrase, or use --model")
     said = Counter(canon_color(m.group(1)) for m in re.finditer(rf"\b(?:a|an|another)\s+({COLOR_RE})\s+(?:block|cube|brick|box)\b", f.text))
     have = Counter(a.color for a in schema.assets if a.kind != "goal_patch")
     short = sorted(c for c, n in said.items() if have[c] < n)

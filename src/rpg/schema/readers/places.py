@@ -160,9 +160,15 @@ def recognize_structure_by_cube(f: Features, b: Builder) -> bool:
 UNSTACK_RE = re.compile(
     rf"(?:unstack|take|remove)\s+the\s+(?P<top>{COLOR_RE})\s+(?:block|cube|box)\s+"
     rf"(?:off|from)\s+(?:of\s+)?(?:on\s+)?(?:the\s+)?(?:top\s+of\s+)?the\s+(?P<bottom>{COLOR_RE})\s+(?:block|cube|box)"
-    r"(?:\s*,?\s*(?:and\s+)?(?:then\s+)?(?:put|place|set|lay)\s+it\s+(?:down\s+)?on\s+the\s+table)?\s*[.!]?")
+    r"(?:\s*,?\s*(?:and\s+)?(?:then\s+)?(?:put|place|set|lay)\s+it\s+(?:down\s+)?on\s+the\s+table)?\s*[.!]?"
+    rf"|(?:initially\s*,?\s*|at\s+the\s+start\s*,?\s*)?the\s+(?P<top2>{COLOR_RE})\s+(?:block|cube|box)\s+"
+    r"(?:is|starts|begins)\s+(?:currently\s+|initially\s+|out\s+)?(?:on|upon|atop)\s+(?:top\s+of\s+)?"
+    rf"the\s+(?P<bottom2>{COLOR_RE})\s+(?:block|cube|box)\s*[.;,]\s*(?:and\s+)?(?:then\s+)?(?:move|put|place|set|take|bring|lower)\s+"
+    r"(?:it|the\s+(?P=top2)\s+(?:block|cube|box))\s+(?:down\s+)?(?:off\s+(?:of\s+)?(?:it|the\s+(?P=bottom2)\s+(?:block|cube|box))"
+    r"\s*,?\s*(?:and\s+)?(?:put\s+it\s+|place\s+it\s+)?)?(?:on|onto|to)\s+the\s+table\s*[.!]?")
 """One cube taken off another: "unstack the blue block from on top of the red block", "take
-the blue block off the red block (and put it on the table)".  Not "pick up" or "lift": those
+the blue block off the red block (and put it on the table)", "the blue cube is on the red cube.
+Move it onto the table." (a start stated, then the move).  Not "pick up" or "lift": those
 end with the cube in the hand, which no task ends with."""
 
 
@@ -173,7 +179,8 @@ def recognize_unstack(f: Features, b: Builder) -> bool:
     m = UNSTACK_RE.fullmatch(f.text)
     if not m:
         return False
-    bottom, top = canon_color(m.group("bottom")), canon_color(m.group("top"))
+    bottom = canon_color(m.group("bottom") or m.group("bottom2"))
+    top = canon_color(m.group("top") or m.group("top2"))
     low, high = b.cube(bottom), b.cube(top)
     (x0, y0), (x1, y1) = b.unit_centers(2, 0.12)
     b.place(stack_layout([low], (x0, y0)) | stack_layout([high], (x1, y1)))
