@@ -1069,3 +1069,28 @@ def test_a_start_stated_then_a_cube_moved_to_the_table(text):
 def test_a_cube_sent_to_the_table_is_not_left_stacked():
     with pytest.raises(ParseError, match="puts the red cube on the table"):
         parse("place the red block on the blue block, then move the red block to the table")
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("The brown cube has to be placed on the cyan tile.", ["on_patch(brown,patch:cyan)"]),
+    ("Push the green cube onto the red goal square.", ["on_patch(green,patch:red)"]),
+    ("Cover the orange pad with the gray block.", ["on_patch(gray,patch:orange)"]),
+    ("Set the black brick upon the pink brick.", ["stack(pink,black)"]),
+    ("stack purpel on orange", ["stack(orange,purple)"]),  # two letters swapped
+    ("put cyan cube at back right corner of table", ["in_region(cyan,back_right)"]),  # articles left out
+    ("Goal state: on(red, green), on(green, blue).", ["stack(blue,green,red)"]),  # a planning predicate
+    ("Goal: (on orange yellow) and (on yellow purple)", ["stack(purple,yellow,orange)"]),
+    ("Put the pink block a long way from the orange block.", ["far_from(orange,pink)"]),
+    ("the black cube and the white cube should be far apart", ["far_from(black,white)"]),
+    ("Place the blue box-shaped block onto the green one.", ["stack(green,blue)"]),
+    ("Arrange the letter cubes to spell out the name EVA.",
+     ["line[left_to_right](E,V,A)", "reads(E,V,A;direction=left_to_right,face=up,text=EVA)"]),
+    # an all-capital word is the word to spell, never an object ("book")
+    ("spell BOOK with letter cubes", ["line[left_to_right](B,O,O,K)", "reads(B,O,O,K;direction=left_to_right,face=up,text=BOOK)"]),
+    ("Build a 2-by-2 square out of two red and two blue cubes, flat on the table.", ["grid(2x2:blue,blue,red,red)"]),
+    ("put the red cube on the green patch, and that's everything.", ["on_patch(red,patch:green)"]),
+    ("Okay so here's what I want. Take the yellow cube and put it down in the back left corner.",
+     ["in_region(yellow,back_left)"]),
+])
+def test_more_ways_people_say_it(text, expected):
+    assert meaning(parse(text)) == expected

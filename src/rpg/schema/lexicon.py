@@ -66,7 +66,7 @@ SYNONYMS: dict[str, str] = {
     "furthest": "far", "farthest": "far", "lastly": "finally", "afterwards": "then", "afterward": "then",
     "subsequently": "then", "organize": "arrange", "organise": "arrange", "organized": "arranged",
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
-    "uppermost": "topmost", "lowermost": "bottommost",
+    "uppermost": "topmost", "lowermost": "bottommost", "upon": "on", "right-hand": "right", "left-hand": "left",
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
@@ -283,7 +283,10 @@ OTHER_SET_RE = re.compile(r"\b(?:one|two|both|each|either)\b")
 """What sets a cube apart before "the other" (:data:`OTHER_RE`)."""
 
 FRAMING_RE = re.compile(
-    r"^(?:(?:(?:for\s+)?(?:this|the|your|our|my)\s+|for\s+)?(?:task|goal|instruction|objective)\s*(?::|-|,|\bis\s*:)\s*"
+    r"^(?:(?:ok(?:ay)?|so|alright|right)\s*,?\s+)*(?:(?:so\s+)?here(?:'s|\s+is)\s+what\s+(?:i|we)\s+(?:want|need|would\s+like)"
+    r"(?:\s+you\s+to\s+do)?\s*[.:,]\s*)?"
+    r"(?:(?:(?:for\s+)?(?:this|the|your|our|my)\s+|for\s+)?(?:task|goal(?:\s+(?:state|configuration|condition)s?)?|instruction"
+    r"|objective|requirements?|target\s+(?:state|configuration))\s*(?::|-|,|\bis\s*:)\s*"
     r"|for\s+(?:this|the)\s+task,?\s+)?"
     r"(?:(?:a|an|the)\s+(?:simple\s+|basic\s+|easy\s+|collaborative\s+|bimanual\s+|dual[- ]arm\s+)?(?:task|challenge|problem)"
     r"\s+(?:where|in\s+which)\s+)?"
@@ -293,6 +296,9 @@ FRAMING_RE = re.compile(
 """Framing before a task's verb that says nothing of the goal ("a simple task where the
 objective is to push a cube onto the target", "the robot has to stack two cubes", "Task: ...",
 "for this task the robot should ..."): dropped."""
+
+CLOSING_RE = re.compile(r"(?:[,.;:]\s*|\s+)(?:and\s+)?that(?:'s|\s+is|\s+will\s+be)\s+(?:everything|all|it)(?:\s+for\s+now)?\s*[.!]?\s*$")
+"""A closing that says nothing of the goal ("..., and that's everything."): dropped."""
 
 EFFECTOR_RE = re.compile(
     r"(?:,\s*)?\b(?:(?:by\s+)?using|use|with|by)\s+(?:the\s+|your\s+|its\s+|a\s+|one\s+|both\s+|each\s+|another\s+)?"
@@ -419,7 +425,7 @@ alternating alternate alternately alternates going goes go way up down upward do
 wall walls wide deep long split divide pillar column close far triangle triangular formation write writes
 writing addition subtraction multiplication increase increases decrease decreases tier tiers story storey stories storeys instead actually
 rather backwards backward pick grab take lift get lay drop small little tiny mini huge one unstack unstacked off remove
-through corner corners sum area areas zone zones region regions spot spots location pad pads mat mats
+through corner corners sum area areas zone zones region regions spot spots location pad pads mat mats tile tiles
 marker markers away distant opposite rear edge edges end ends half part workspace robot
 """.split())
 """Words the builtin front end understands (besides colours, numbers and labels)."""

@@ -123,6 +123,11 @@ class Inexpressible(ParseError):
 _INEXPRESSIBLE = tuple((kind, re.compile(pattern), why) for kind, pattern, why in lexicon.INEXPRESSIBLE)
 
 
+_BARE_OBJECT_BEFORE = "|".join(rf"(?<=\b{w}\s)" for w in (
+    "put", "place", "move", "set", "stack", "push", "slide", "bring", "of", "on", "onto", "to", "at", "near", "beside",
+    "behind", "from", "and"))
+"""Words after which a cube named without its article ("put cyan cube at ...") gets "the"."""
+
 _SYNONYM_RE = re.compile(r"\b(?:" + "|".join(sorted(lexicon.SYNONYMS, key=len, reverse=True)) + r")\b")
 
 
@@ -283,7 +288,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = text.replace('"', "'")
     text = lexicon.EFFECTOR_RE.sub(" ", text).strip()
     # "cover the green patch with the red block": the red block on it
-    text = re.sub(rf"\bcover\s+(the\s+(?:{COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patch|block|cube))\s+with\s+"
+    text = re.sub(rf"\bcover\s+(the\s+(?:{COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|tile|block|cube))\s+with\s+"
                   rf"(the\s+(?:{COLOR_RE})\s+(?:block|cube))\b", r"put \2 on \1", text)
     # "slide the red block until it touches the blue block": next to it; "until it reaches the patch": on it
     text = re.sub(rf"\buntil\s+(?:it|they)\s+(?:reach(?:es)?|is\s+on|are\s+on)\s+(?=the\s+(?:(?:{COLOR_RE})\s+)?(?:goal\s+)?patch\b)",
@@ -292,8 +297,11 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   rf"(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|one)\b)", "next to ", text)
     text = lexicon.ANY_ORDER_RE.sub(" in any order", text)  # before "doesn't" is refused as a negation
     text = lexicon.HARMLESS_NEGATION_RE.sub("", text)
-    refused = _inexpressible(text)  # refused below, with what the unknown words say as well
+    spelled = {w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)}  # "spell BOOK": a word, not a book
+    refused = [(kind, ws, why) for kind, ws, why in _inexpressible(text)
+               if not all(w in spelled for w in ws)]  # refused below, with what the unknown words say as well
     text = lexicon.FRAMING_RE.sub("", text)
+    text = lexicon.CLOSING_RE.sub("", text)
     # "the robot stacks the red block on ...": the command the sentence describes
     text = re.sub(r"^(?:the\s+|a\s+)?(?:robot(?:ic)?(?:\s+arm)?|agent|arm)\s+(stack|put|place|move|push|arrange|build|set|line|pick|slide|lift|make)s\b",
                   r"\1", text)
@@ -302,7 +310,19 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = _SYNONYM_RE.sub(lambda m: lexicon.SYNONYMS[m.group(0)], text)
     text = lexicon.TEXTURED_RE.sub(lambda m: f"the {m.group('c')} block" if m.group("c") in COLORS else m.group(0), text)
     text = re.sub(r"(\d)\s*[x\u00d7]\s*(?=\d)", r"\1x", text)
-    text = re.sub(r"\b(\d+)\s+by\s+(?=\d)", r"\1x", text)
+    text = re.sub(r"\b(\d+)(?:\s+|\s*-\s*)by(?:\s+|\s*-\s*)(?=\d)", r"\1x", text)
+    # "on(red, green)", "(on red green)": a goal written as a planning predicate
+    text = re.sub(rf"\(?\bon\s*(?:\(\s*|\s+)({COLOR_RE})\s*,?\s+({COLOR_RE})\s*\)", r"the \1 block on the \2 block", text)
+    # "put cyan cube at back right corner of table": the articles a terse or non-native writer leaves out
+    text = re.sub(rf"(?:^|{_BARE_OBJECT_BEFORE})(?=(?:{COLOR_RE})\s+(?:block|cube|brick|box)\b)", "the ", text)
+    text = re.sub(r"\b(at|to|in|on|of|near)\s+(?=(?:front|back|rear|left|right)(?:\s+(?:left|right))?\s+(?:side|corner|edge|half|part|end)\b"
+                  r"|(?:middle|center|centre)\s+of\b|table\b)", r"\1 the ", text)
+    text = re.sub(r"\b(?:box|cube|block)[\s-]shaped\s+(?=(?:blocks?|cubes?|bricks?)\b)", "", text)  # "the blue box-shaped block"
+    text = re.sub(r"\b(spell(?:s|ing)?)(?:\s+out)?\s+the\s+(?:name|word)\b", r"\1", text)  # "spell out the name EVA"
+    text = re.sub(r"\b(?:a\s+)?long\s+way\s+(?:away\s+)?from\b", "far from", text)  # "a long way from the orange block"
+    # "the black cube and the white cube should be far apart": one far from the other
+    text = re.sub(rf"\b(the\s+(?:{COLOR_RE})\s+(?:block|cube))\s+and\s+(the\s+(?:{COLOR_RE})\s+(?:block|cube))\s+"
+                  r"((?:should|must|need\s+to|have\s+to)\s+(?:be|end\s+up)|are|end\s+up)\s+far\s+apart\b", r"\1 \3 far from \2", text)
     text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall)", r"\1 \2", text)
     text = _compass(text)
     text = re.sub(r"\b(?:to|onto)\s+the\s+top\s+of\b", "on top of", text)
@@ -379,8 +399,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         if lemma is not None:  # an inflection of a known word: "built" -> build, "constructs" -> build
             fixed[w] = lemma if lemma in VOCAB else lexicon.PLACEMENT_VERBS[lemma]
             continue
-        match = (process.extractOne(w, list(VOCAB) + COLORS, scorer=fuzz.ratio, score_cutoff=84) if len(w) >= 4
-                 else _transposition(w))
+        match = _transposition(w) or (process.extractOne(w, list(VOCAB) + COLORS, scorer=fuzz.ratio, score_cutoff=84)
+                                       if len(w) >= 4 else None)  # "purpel", "rigth": two letters swapped
         if match and lexicon.is_dictionary_word(w) and not w.startswith(match[0]):
             match = None  # a real word is never "corrected" into another ("bring" is not "ring"); "vertically" -> "vertical"
         if match:
@@ -422,8 +442,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"\bcolumn(s?)\b(?=.*\b(?:front\s+to\s+back|back\s+to\s+front|left\s+to\s+right|right\s+to\s+left)\b)",
                   r"line\1", text)  # "a column of three cubes going from front to back" lies along the table
     text = re.sub(r"\b(a|one|single|the same)\s+column\b", r"\1 tower", text)  # "in a column"; "2 columns" stay grids
-    text = re.sub(r"\b(?:goal|target)\s+(?:area|zone|region|spot|location|position|point|pad|mat|marker)(s?)\b", r"goal patch\1", text)
-    text = re.sub(rf"\b({COLOR_RE})\s+(?:pad|mat|marker|zone|area|region)(s?)\b", r"\1 patch\2", text)
+    text = re.sub(r"\b(?:goal|target)\s+(?:area|zone|region|spot|location|position|point|pad|mat|marker|square|tile)(s?)\b",
+                  r"goal patch\1", text)
+    text = re.sub(rf"\b({COLOR_RE})\s+(?:(?:goal|target)\s+)?(?:pad|mat|marker|zone|area|region|tile)(s?)\b", r"\1 patch\2", text)
     text = re.sub(r"\btarget(s?)\b(?!\s+(?:goal\s+)?patch)", r"patch\1", text)  # "onto the blue target"
     text = re.sub(r"\bpick(?:\s+up)?\s+and\s+(place|put|set|drop)\b", r"\1", text)  # "pick and place a block on ..."
     text = re.sub(r"\b(?:pick up|grab|take|lift|get|pick)\s+(the\s+(?:[a-z0-9']+\s+){0,4}?(?:block|cube|box|one))(?:\s+up)?"

@@ -185,7 +185,7 @@ def spelled_word(f: Features) -> str | None:
     for q in f.quoted:
         if re.fullmatch(r"[A-Za-z]{2,}", q.strip()):
             return q.strip().upper()
-    m = re.search(r"\b(?:spell|spells|spelling|spelled|spelt)\s+(?:out\s+)?(?:the\s+)?(?:word\s+)?'?([A-Za-z]{2,})'?", f.original, re.IGNORECASE)
+    m = re.search(r"\b(?:spell|spells|spelling|spelled|spelt)\s+(?:out\s+)?(?:the\s+)?(?:word\s+|name\s+)?'?([A-Za-z]{2,})'?", f.original, re.IGNORECASE)
     if m and (m.group(1).lower() not in VOCAB or m.group(1).isupper()):
         return m.group(1).upper()
     m = re.search(r"\bword\s+'?([A-Za-z]{2,})'?", f.original, re.IGNORECASE)
