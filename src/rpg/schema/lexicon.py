@@ -297,6 +297,12 @@ FRAMING_RE = re.compile(
 objective is to push a cube onto the target", "the robot has to stack two cubes", "Task: ...",
 "for this task the robot should ..."): dropped."""
 
+ARTICLE_DROPPED_AFTER: tuple[str, ...] = (
+    "put", "place", "move", "set", "stack", "push", "slide", "bring", "of", "on", "onto", "to", "at", "near", "beside",
+    "behind", "from", "and")
+"""Words after which a cube named without its article ("put cyan cube at back right corner of
+table", terse or non-native writing) is read with "the" (:func:`rpg.schema.reading.normalize`)."""
+
 CLOSING_RE = re.compile(r"(?:[,.;:]\s*|\s+)(?:and\s+)?that(?:'s|\s+is|\s+will\s+be)\s+(?:everything|all|it)(?:\s+for\s+now)?\s*[.!]?\s*$")
 """A closing that says nothing of the goal ("..., and that's everything."): dropped."""
 

@@ -123,10 +123,7 @@ class Inexpressible(ParseError):
 _INEXPRESSIBLE = tuple((kind, re.compile(pattern), why) for kind, pattern, why in lexicon.INEXPRESSIBLE)
 
 
-_BARE_OBJECT_BEFORE = "|".join(rf"(?<=\b{w}\s)" for w in (
-    "put", "place", "move", "set", "stack", "push", "slide", "bring", "of", "on", "onto", "to", "at", "near", "beside",
-    "behind", "from", "and"))
-"""Words after which a cube named without its article ("put cyan cube at ...") gets "the"."""
+_BARE_OBJECT_BEFORE = "|".join(rf"(?<=\b{w}\s)" for w in lexicon.ARTICLE_DROPPED_AFTER)
 
 _SYNONYM_RE = re.compile(r"\b(?:" + "|".join(sorted(lexicon.SYNONYMS, key=len, reverse=True)) + r")\b")
 
