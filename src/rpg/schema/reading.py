@@ -439,8 +439,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"\bcolumn(s?)\b(?=.*\b(?:front\s+to\s+back|back\s+to\s+front|left\s+to\s+right|right\s+to\s+left)\b)",
                   r"line\1", text)  # "a column of three cubes going from front to back" lies along the table
     text = re.sub(r"\b(a|one|single|the same)\s+column\b", r"\1 tower", text)  # "in a column"; "2 columns" stay grids
-    text = re.sub(r"\b(?:goal|target)\s+(?:area|zone|region|spot|location|position|point|pad|mat|marker|square|tile)(s?)\b",
-                  r"goal patch\1", text)
+    text = re.sub(r"\b(?:goal|target)\s+(?:area|zone|region|spot|location|position|point|pad|mat|marker|square|tile)(s?)"
+                  r"(?:\s+patch(?:es)?)?\b", r"goal patch\1", text)  # "the target square patch": one patch
     text = re.sub(rf"\b({COLOR_RE})\s+(?:(?:goal|target)\s+)?(?:pad|mat|marker|zone|area|region|tile)(s?)\b", r"\1 patch\2", text)
     text = re.sub(r"\btarget(s?)\b(?!\s+(?:goal\s+)?patch)", r"patch\1", text)  # "onto the blue target"
     text = re.sub(r"\bpick(?:\s+up)?\s+and\s+(place|put|set|drop)\b", r"\1", text)  # "pick and place a block on ..."

@@ -119,7 +119,7 @@ class RelationalReading:
                     self.sides[side.group(1)] = self.obj(left[-1])
                 continue
             if kind == "on" and re.match(r"(?:the\s+)?(?:table|bottom|base|top\b(?!\s+of))", after):
-                if left and not left[-1].ref and re.match(r"(?:the\s+)?table\b", after):
+                if left and (left[-1].color or left[-1].label) and not left[-1].ref and re.match(r"(?:the\s+)?table\b", after):
                     self.previous[:] = [self.obj(left[-1])] * 2  # "place a pink cube on the table, put a cyan cube on it"
                 continue
             if kind in ("on", "next_to") and re.match(r"each other|one another|top of each other|itself", after):
