@@ -1094,3 +1094,16 @@ def test_a_cube_sent_to_the_table_is_not_left_stacked():
 ])
 def test_more_ways_people_say_it(text, expected):
     assert meaning(parse(text)) == expected
+
+
+def test_a_cube_no_part_of_the_goal_names_is_refused():
+    """A reading that makes a cube up and leaves it out of G is refused (a stray cube made while
+    resolving 'it' compiled 'extra(red)' silently)."""
+    from rpg.schema.accounting import unaccounted
+    from rpg.schema.reading import features
+
+    text = "put the red block on the blue block"
+    schema = parse(text)
+    stray = schema.assets[0].model_copy(update={"name": "red_9"})
+    schema = schema.model_copy(update={"assets": [*schema.assets, stray]})
+    assert "red_9" in str(unaccounted(features(text), schema))

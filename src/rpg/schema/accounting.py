@@ -209,6 +209,20 @@ ON_TABLE_RE = re.compile(rf"\b(?:put|place|move|set|lay|lower|bring|return)\s+th
 stack it on another cube."""
 
 
+def _objects_of(p: P.Predicate) -> set[str]:
+    """The object names one predicate's own fields hold (its string fields and, nested to any
+    depth, its list and tuple fields)."""
+    def names(v) -> set[str]:
+        if isinstance(v, str):
+            return {v}
+        if isinstance(v, (tuple, list, set, frozenset)):
+            return {n for x in v for n in names(x)}
+        if isinstance(v, dict):
+            return {n for x in (*v.keys(), *v.values()) for n in names(x)}
+        return set()
+    return {n for k, v in vars(p).items() if not k.startswith("_") for n in names(v)}
+
+
 def _stacked_on_another(schema: TaskSchema) -> set[str]:
     """The cubes the goal surely puts on top of another cube (every On edge's upper cube, every
     cube of an ordered Stack but its base)."""
@@ -449,6 +463,12 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
         if cubes and all(n in _stacked_on_another(schema) for n in cubes):
             return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group(0)}' puts the "
                               f"{color} cube on the table and that task stacks it on another. Rephrase, or use --model")
+    used = {n for p in schema.goal_predicate().walk() for n in _objects_of(p)} | {
+        n for st in schema.initial_state.structures for n in st}
+    stray = sorted(a.name for a in schema.assets if a.kind != "goal_patch" and a.name not in used)
+    if stray:  # a cube no part of G or rho_0's structures names: the reading made it up
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the task has a cube ({stray[0]}) "
+                          "that no part of its goal names. Rephrase, or use --model")
     said = Counter(canon_color(m.group(1)) for m in re.finditer(rf"\b(?:a|an|another)\s+({COLOR_RE})\s+(?:block|cube|brick|box)\b", f.text))
     have = Counter(a.color for a in schema.assets if a.kind != "goal_patch")
     short = sorted(c for c, n in said.items() if have[c] < n)
