@@ -463,12 +463,6 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
         if cubes and all(n in _stacked_on_another(schema) for n in cubes):
             return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group(0)}' puts the "
                               f"{color} cube on the table and that task stacks it on another. Rephrase, or use --model")
-    used = {n for p in schema.goal_predicate().walk() for n in _objects_of(p)} | {
-        n for st in schema.initial_state.structures for n in st}
-    stray = sorted(a.name for a in schema.assets if a.kind != "goal_patch" and a.name not in used)
-    if stray:  # a cube no part of G or rho_0's structures names: the reading made it up
-        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the task has a cube ({stray[0]}) "
-                          "that no part of its goal names. Rephrase, or use --model")
     said = Counter(canon_color(m.group(1)) for m in re.finditer(rf"\b(?:a|an|another)\s+({COLOR_RE})\s+(?:block|cube|brick|box)\b", f.text))
     have = Counter(a.color for a in schema.assets if a.kind != "goal_patch")
     short = sorted(c for c, n in said.items() if have[c] < n)
@@ -480,4 +474,10 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     except UnaccountedMention as exc:
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {exc}. "
                           "Rephrase (one sentence per structure helps), or use --model")
+    used = {n for p in schema.goal_predicate().walk() for n in _objects_of(p)} | {
+        n for st in schema.initial_state.structures for n in st}
+    stray = sorted(a.name for a in schema.assets if a.kind != "goal_patch" and a.name not in used)
+    if stray:  # a cube no part of G or rho_0's structures names: the reading made it up
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the task has a cube ({stray[0]}) "
+                          "that no part of its goal names. Rephrase, or use --model")
     return None
