@@ -457,10 +457,11 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     if invented:  # "the letter cubes A, B, C and D in a circle" read as a circle of six, A to F
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but no word names the cube labelled "
                           f"{invented[0]!r}. Rephrase (say how many cubes), or use --model")
+    stacked = _stacked_on_another(schema)
     for m in ON_TABLE_RE.finditer(f.text):  # "move the green cube onto the table": not stacked on another
         color = canon_color(m.group(1))
         cubes = [a.name for a in schema.assets if a.kind != "goal_patch" and a.color == color]
-        if cubes and all(n in _stacked_on_another(schema) for n in cubes):
+        if cubes and all(n in stacked for n in cubes):
             return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group(0)}' puts the "
                               f"{color} cube on the table and that task stacks it on another. Rephrase, or use --model")
     said = Counter(canon_color(m.group(1)) for m in re.finditer(rf"\b(?:a|an|another)\s+({COLOR_RE})\s+(?:block|cube|brick|box)\b", f.text))

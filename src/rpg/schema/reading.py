@@ -380,7 +380,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                     if re.sub(r"[.,;:!?]+$", "", w) not in IGNORABLE_HERE)
     text = re.sub(r"\s+([.,;:!?])", r"\1", text)
     unknown = []
-    caps = {w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)}
+    caps = set(spelled)
     caps |= {q.lower() for q in re.findall(r"'([A-Za-z]+)'", text)}
     words = re.findall(r"[a-z][a-z\-]*|\d+x\d+(?:x\d+)?|\d+|'[^']*'|[+=*]", text)
     fixed = {}
