@@ -1107,3 +1107,80 @@ def test_a_cube_no_part_of_the_goal_names_is_refused():
     stray = schema.assets[0].model_copy(update={"name": "white", "color": "white"})
     schema = schema.model_copy(update={"assets": [*schema.assets, stray]})
     assert "a cube (white) that no part of its goal names" in str(unaccounted(features(text), schema))
+
+
+@pytest.mark.parametrize("text,expected", [
+    # "over" in a chain is "on top of" (it was read as a bottom-to-top list: the order reversed)
+    ("Create a stack of blocks: red over blue over purple over pink.", ["stack(pink,purple,blue,red)"]),
+    ("put the red block over the blue block", ["stack(blue,red)"]),
+    ("move the red block over to the left", ["in_region(red,left)"]),  # "over to": no relation
+    # the centre of the table said as the table's, or as a "centered" structure (it was dropped)
+    ("Take red block and green block, move them to the table's center, then stack green block on red block.",
+     ["stack(red,green)@center"]),
+    ("Build a centered stack with red block below green block and green block below blue block.",
+     ["stack(red,green,blue)@center"]),
+    ("make a centered row of three red cubes", ["line(red,red,red)@center"]),
+    # "as its base" marks the base (the cube was added a second time)
+    ("Move red block, green block, and blue block into a tower with red block as its base.", ["stack(red,green,blue)"]),
+    # the side a listed sequence starts from is its direction (it was an unordered line)
+    ("Line up the objects in the order red block, green block, and blue block, starting from the left.",
+     ["line[left_to_right](red,green,blue)"]),
+    # "to the center" is the table's centre; "centrally", "the table's midpoint" say it too
+    ("Shift red block and green block to the center and stack green block on red block.", ["stack(red,green)@center"]),
+    ("Move red block to the middle and put green block on top of it.", ["stack(red,green)@center"]),
+    ("Place red block and green block centrally, then stack green block on red block.", ["stack(red,green)@center"]),
+    ("Relocate red block and green block to the table's midpoint, and stack green block on top of red block.",
+     ["stack(red,green)@center"]),
+    # the place said before the structure's "with": the whole structure there, the role kept
+    ("Stack the red, green and blue blocks in the middle of the table with the blue block on top.",
+     ["stack(red,green,blue)@center"]),
+    # towers counted "of blocks", then listed after a colon
+    ("Create two stacks of blocks: yellow over green over pink, and red over purple.",
+     ["stack(pink,green,yellow)", "stack(purple,red)"]),
+])
+def test_more_ways_people_say_it_robotwin_and_vilain(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,bounds", [
+    # a definite or bare "red block" said twice is one cube
+    ("move red block, green block, and blue block into a tower with red block as its base",
+     {"red": 1, "green": 1, "blue": 1}),
+    ("move the red block next to the blue block, then put the red block on the green patch", {"red": 1, "blue": 1}),
+    # an indefinite after a definite is one more; "the other" is one more
+    ("place a purple block on the red block. then a red block then a green block.",
+     {"purple": 1, "red": 2, "green": 1}),
+    ("put the red block on the other red block", {"red": 2}),
+    ("stack two red blocks", {}),  # a count: not bounded here (the count bounds it)
+])
+def test_a_colour_named_as_single_cubes_bounds_how_many_there_are(text, bounds):
+    from rpg.schema.accounting import _single_color_bounds
+
+    assert _single_color_bounds(text) == bounds
+
+
+def test_a_cube_said_twice_is_not_two_cubes():
+    """A reading that adds a cube a second time because a role named it again is refused."""
+    from rpg.schema.accounting import unaccounted
+    from rpg.schema.reading import features
+    from rpg.domain.predicates import Stack
+
+    text = "Stack the red block, the green block and the blue block with the red block at the bottom."
+    schema = parse(text)
+    red = next(a for a in schema.assets if a.color == "red")
+    extra = red.model_copy(update={"name": "red_2"})
+    stack = next(p for p in schema.goal_predicate().walk() if isinstance(p, Stack))
+    schema = schema.model_copy(update={"assets": [*schema.assets, extra], "goal": Stack((*stack.objects, "red_2"))})
+    assert "names one red cube but the task read has 2" in str(unaccounted(features(text), schema))
+
+
+@pytest.mark.parametrize("text,match", [
+    # a side said alone is one end of a relation only when the other side is said too
+    ("Grab red block, position it on the left. Next, grab green block to place beside red block, then grab blue "
+     "block and set it to the right of green block.", "the place 'left' has no part"),
+    # two colours run together inside a chain: a dropped "over" or "and"
+    ("Create a stack of blocks: orange over yellow over blue purple over red.", "two colours with nothing between"),
+])
+def test_what_a_chain_or_a_side_leaves_unclear_is_refused(text, match):
+    with pytest.raises(ParseError, match=match):
+        parse(text)

@@ -96,6 +96,11 @@ SIDE_RELATIONS = {"left": ("left_of", "right_of"), "right": ("left_of", "right_o
 the blue one on the right"): the goal predicates that consume it then."""
 
 
+_OPPOSITE = {"left": ("right",), "right": ("left",), "front": ("back",), "back": ("front",)}
+"""A side of the table -> the side across from it: a bare side is one end of a relation only
+when the other end is said too ("red on the left, blue on the right")."""
+
+
 class UnaccountedMention(BadInput):
     """A mention of the instruction has no place in the task that was read."""
 
@@ -330,8 +335,9 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                                          "that end free (say the whole order, e.g. 'from left to right: red, green, blue')")
             record.append({"mention": m.words, "kind": "place", "consumed_by": ", ".join(ends)})
         elif m.kind == "bare place":  # a side of the table, or the sides of a relation ("red on the left, blue on the right")
+            paired = any(o.kind == "bare place" and o.region in _OPPOSITE.get(m.region, ()) for o in named)
             sides = {r for r in regions if m.region in r.split("_")} | {
-                name for p in goal for name in SIDE_RELATIONS.get(m.region, ()) if p.name == name}
+                name for p in goal for name in SIDE_RELATIONS.get(m.region, ()) if p.name == name and paired}
             if not sides:
                 raise UnaccountedMention(f"the place '{m.region}' has no part in the task read")
             record.append({"mention": m.words, "kind": "place", "consumed_by": ", ".join(sorted(sides))})
@@ -349,18 +355,36 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
     return record
 
 
-SINGLE_CUBE_RE = re.compile(rf"\b(?:the|a|an|one|that|this|your|my)\s+(?:single\s+|same\s+|other\s+)?({COLOR_RE})"
-                            rf"\s+(?:block|cube|box|one)\b(?!\s+(?:tower|stack|column|pile|row|line)|\s+(?:in|at|on|into)\s+(?:each|every)\b)")
-"""A colour named as exactly one cube: "the green block", "a red cube" (not "a red cube in each
-corner")."""
+SINGLE_CUBE_RE = re.compile(rf"\b(?:(?P<det>the|a|an|one|another|that|this|your|my)\s+)?(?P<mod>(?:single|same|other|second)\s+)?"
+                            rf"(?P<c>{COLOR_RE})\s+(?:block|cube|box|one)\b(?!\s+(?:tower|stack|column|pile|row|line)"
+                            rf"|\s+(?:in|at|on|into)\s+(?:each|every)\b)")
+"""A colour named as exactly one cube: "the green block", "a red cube", "red block" (a terse
+writer's article left out; not "a red cube in each corner")."""
+
+_NOT_SINGLE_BEFORE = re.compile(r"(?:\d+|two|three|four|five|six|seven|eight|nine|ten|each|every|all|some|any|no|more|several|"
+                                r"many|few|both|of|those|these)\s+$")
+"""Words before a bare "red block" that make it no single cube ("two red block", typo'd plurals)."""
 
 
 def _single_color_bounds(text: str) -> dict[str, int]:
-    """Colours that normalised ``text`` names only as single cubes ("the green block"),
-    mapped to how many times it names them: the task may hold no more cubes of that colour."""
+    """Colours that normalised ``text`` names only as single cubes ("the green block", "a red
+    cube", "red block"), mapped to how many cubes of that colour the words allow, read in order:
+    each indefinite ("a", "another") and each "other"/"second" is one more cube, and a definite
+    mention ("the green block", said any number of times) is one cube only when none came before
+    it.  The task may hold no more."""
     colors = Counter(c for _, c in color_mentions(text))
-    single = Counter(canon_color(m.group(1)) for m in SINGLE_CUBE_RE.finditer(text))
-    return {c: n for c, n in sorted(single.items()) if colors[c] == n}
+    seen: Counter = Counter()
+    allowed: Counter = Counter()
+    for m in SINGLE_CUBE_RE.finditer(text):
+        if not m.group("det") and (_NOT_SINGLE_BEFORE.search(text[:m.start()]) or m.group("mod")):
+            continue
+        c = canon_color(m.group("c"))
+        seen[c] += 1
+        if (m.group("mod") or "").strip() in ("other", "second") or m.group("det") in ("a", "an", "one", "another"):
+            allowed[c] += 1
+        else:
+            allowed[c] = max(allowed[c], 1)
+    return {c: allowed[c] for c in sorted(seen) if colors[c] == seen[c]}
 
 
 MULTIPLIED_RE = re.compile(r"\b(?:each|every|per|both|times|respectively|corners|sides|patches|another|second|more)\b|\ball\s+(?:the\s+)?\d+\b|\b(?:\d+|several)\s+(?:[a-z\-]+\s+){0,2}?"

@@ -67,6 +67,7 @@ SYNONYMS: dict[str, str] = {
     "subsequently": "then", "organize": "arrange", "organise": "arrange", "organized": "arranged",
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
     "uppermost": "topmost", "lowermost": "bottommost", "upon": "on", "right-hand": "right", "left-hand": "left",
+    "midpoint": "center", "centrally": "at the center of the table",
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
@@ -337,6 +338,12 @@ the side says which way the sequence runs (:data:`END_SIDE_DIRECTION`)."""
 END_SIDE_DIRECTION: dict[str, str] = {"left": "left to right", "right": "right to left",
                                       "front": "front to back", "back": "back to front"}
 """The side a sequence starts at -> the direction words it runs in (:data:`END_SIDE_RE`)."""
+
+START_SIDE_RE = re.compile(r"\b(?:starting|beginning|going|counting|reading)\s+(?:from|at)\s+the\s+(?:far\s+|very\s+)?"
+                           r"(?P<side>left|right|front|back)(?:\s+end)?\b(?!\s+(?:side|edge|corner|half|part|of)\b)")
+"""A listed sequence's direction given by the side it starts from ("red, green and blue,
+starting from the left"): read as the direction words (:data:`END_SIDE_DIRECTION`). Not a place
+("starting at the left edge of the table")."""
 
 TOTAL_RE = re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:(blocks?|cubes?)\s+)?in\s+total\b"
                       r"|\bin\s+total\s*,?\s+(?=\d|one|two|three|four|five|six|seven|eight|nine|ten)")

@@ -234,6 +234,13 @@ _KIND_WHY: dict[str, str] = {**{kind: why for kind, _, why in reversed(lexicon.I
 entry of a class speaks for it)."""
 
 
+_CHAIN_REL = r"(?:over|on|onto|upon|atop|above|under|below|beneath|underneath)"
+_CHAIN_RUN_ON_RE = re.compile(rf"\b(?P<rel>{_CHAIN_REL})\s+(?:the\s+)?(?P<pair>(?P<a>{COLOR_RE})\s+(?P<b>{COLOR_RE}))"
+                              rf"(?:\s+(?:block|cube))?\s+{_CHAIN_REL}\b")
+"""Two colours with nothing between them inside a chain of cubes ("yellow over blue purple over
+red"): a dropped relation word or a dropped "and"; refused rather than guessed."""
+
+
 def normalize(instruction: str, strict: bool = True) -> tuple[str, str]:
     """Lower-case, number words to digits, typos corrected.  Returns (text, original).
     See :func:`normalize_words` (which also says the words it dropped)."""
@@ -317,6 +324,13 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"\b(?:box|cube|block)[\s-]shaped\s+(?=(?:blocks?|cubes?|bricks?)\b)", "", text)  # "the blue box-shaped block"
     text = re.sub(r"\b(spell(?:s|ing)?)(?:\s+out)?\s+the\s+(?:name|word)\b", r"\1", text)  # "spell out the name EVA"
     text = re.sub(r"\b(?:a\s+)?long\s+way\s+(?:away\s+)?from\b", "far from", text)  # "a long way from the orange block"
+    # "the table's center", "the table's left side": the place on the table, as "the center of the table" says it
+    text = re.sub(r"\bthe\s+(table|workspace)'s\s+(center|centre|middle)\b", r"the \2 of the \1", text)
+    text = re.sub(r"\bthe\s+(table|workspace)'s\s+(left|right|front|back|far)\s+(side|edge|half|end|corner)\b", r"the \2 \3 of the \1", text)
+    # "a centered stack", "in one centred tower": the structure at the centre of the table
+    text = re.sub(r"\bcent(?:er|r)ed\s+(tower|stack|column|pile|row|line|pyramid|circle|ring|grid|square|wall)"
+                  r"(\s+of\s+(?:\d+|two|three|four|five|six|seven|eight|nine|ten)\s+(?:[a-z]+\s+)?(?:blocks|cubes|bricks))?\b",
+                  r"\1\2 at the center of the table", text)
     # "the black cube and the white cube should be far apart": one far from the other
     text = re.sub(rf"\b(the\s+(?:{COLOR_RE})\s+(?:block|cube))\s+and\s+(the\s+(?:{COLOR_RE})\s+(?:block|cube))\s+"
                   r"((?:should|must|need\s+to|have\s+to)\s+(?:be|end\s+up)|are|end\s+up)\s+far\s+apart\b", r"\1 \3 far from \2", text)
@@ -364,6 +378,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     first = re.search(rf"\b(?:{COLOR_RE})\b", text)  # "... starting with red on the left": red first, left to right
     text = lexicon.END_SIDE_RE.sub(lambda m: f"{m.group('verb')} with {m.group('c')} from {lexicon.END_SIDE_DIRECTION[m.group('side')]}"
                                    if first and first.group(0) == m.group("c") else m.group(0), text)
+    text = lexicon.START_SIDE_RE.sub(lambda m: f"from {lexicon.END_SIDE_DIRECTION[m.group('side')]}", text)
     text = lexicon.PILE_ON_RE.sub("stack ", text)
     text = lexicon.TOTAL_RE.sub(lambda m: f"{m.group(1)} {m.group(2) or 'blocks'}" if m.group(1) else "", text)
     text = re.sub(r"\btoward(?:s)?\b", "to", text)
@@ -433,6 +448,11 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
             "Rephrase, or use --model to let a language model read it"
         )
     _refuse_unresolved_pronoun(text, original)
+    run_on = _CHAIN_RUN_ON_RE.search(text)
+    if run_on:  # "orange over yellow over blue purple over red": blue over purple, or a bluish purple?
+        raise ParseError(f"'{run_on.group('pair')}' in \"{original[:80]}\" names two colours with nothing between them "
+                         f"inside a chain of cubes: say '{run_on.group('a')} {run_on.group('rel')} {run_on.group('b')}' "
+                         f"or '{run_on.group('a')} and {run_on.group('b')}', or use --model")
     for w, r in fixed.items():
         text = re.sub(rf"\b{re.escape(w)}\b", r, text)
     text = re.sub(r"\bvertical (?:column|stack)\b|\bpillar\b", "tower", text)
@@ -618,7 +638,7 @@ def mark_regions(text: str) -> str:
         corner = "corner" in m.group("part")
         edge = "edge" in m.group("part")  # "near the front edge": a side of the table, not of a cube
         word = m.group("lr") or m.group("lr2")
-        bare_center = (word in ("center", "centre", "middle") and m.group(0).split()[0] in ("in", "at")  # "in the center"
+        bare_center = (word in ("center", "centre", "middle") and m.group(0).split()[0] in ("in", "at", "to", "into")  # "in the center"
                        and not names_a_role(m.string[:m.start()], m.string))
         if not (m.group("tail") or corner or edge or bare_center or _table_side(m)):
             return m.group(0)

@@ -162,9 +162,11 @@ def _fitted(head: TaskSchema, region: str) -> dict[str, tuple[float, float, floa
 
 
 IN_REGION_PART_RE = re.compile(r"^(?P<head>[^@]+?),?\s+@region_(?P<r>[a-z_]+)\s*[.!]?$"
-                               r"|^@region_(?P<r2>[a-z_]+)\s*,?\s+(?P<head2>[^@]+?)\s*[.!]?$")
-"""A part, then the one place it stands in ("three blocks in a line at @region_back"), or the
-place first ("in @region_left, build a pyramid of 3 blocks")."""
+                               r"|^@region_(?P<r2>[a-z_]+)\s*,?\s+(?P<head2>[^@]+?)\s*[.!]?$"
+                               r"|^(?P<head3>[^@]+?),?\s+@region_(?P<r3>[a-z_]+)\s*,?\s+(?P<with>with\s+[^@]+?)\s*[.!]?$")
+"""A part, then the one place it stands in ("three blocks in a line at @region_back"), the
+place first ("in @region_left, build a pyramid of 3 blocks"), or the place before the part's
+"with" ("stack the red, green and blue blocks @region_center with the blue block on top")."""
 
 
 @reader(order=187)
@@ -180,10 +182,11 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
         ParseError: the structure does not fit in the region.
     """
     m = IN_REGION_PART_RE.match(mark_regions(f.text))
-    heads = _read_parts([m.group("head") or m.group("head2")]) if m else None
+    part = (m.group("head") or m.group("head2") or f"{m.group('head3')} {m.group('with')}") if m else None
+    heads = _read_parts([part]) if m else None
     if heads is None:
         return False
-    head, region = heads[0], m.group("r") or m.group("r2")
+    head, region = heads[0], m.group("r") or m.group("r2") or m.group("r3")
     if (region not in C.REGION_NAMES or len(head.assets) < 2 or head.initial_state.structures
             or any(a.kind == "goal_patch" for a in head.assets)
             or any(isinstance(p, InRegion) or p.name in (*PAIRWISE_RELATIONS, "between") for p in head.goal_predicate().walk())):
@@ -204,7 +207,7 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
     return True
 
 
-LISTED_TOWERS_RE = re.compile(r"\b(?P<k>\d+)\s+(?P<noun>tower|stack|column|pile|pillar)s\s*[:;\-]\s*(?P<body>.+?)\s*[.!]?$")
+LISTED_TOWERS_RE = re.compile(r"\b(?P<k>\d+)\s+(?P<noun>tower|stack|column|pile|pillar)s(?:\s+of\s+(?:blocks|cubes))?\s*[:;\-]\s*(?P<body>.+?)\s*[.!]?$")
 """Towers counted, then each said after a colon: "two stacks: white on black, and black on white"."""
 
 

@@ -520,7 +520,7 @@ SEQ_RELATION_RE = re.compile(r"\b(?:on top of|onto|on|atop|above|over|under|unde
                              r"behind|front|next|beside|between|near|patch|patches)\b")
 
 
-SEQ_HINT_RE = re.compile(r"\b(?:on|at|as|in)\s+(?:the\s+)?(?:very\s+)?(bottom|base|top|middle|center|centre)\b(?!\s+of)")
+SEQ_HINT_RE = re.compile(r"\b(?:on|at|as|in)\s+(?:the\s+|its\s+)?(?:very\s+)?(bottom|base|top|middle|center|centre)\b(?!\s+of)")
 
 
 def may_order_cubes(text: str) -> bool:
