@@ -1161,9 +1161,9 @@ def test_a_colour_named_as_single_cubes_bounds_how_many_there_are(text, bounds):
 
 def test_a_cube_said_twice_is_not_two_cubes():
     """A reading that adds a cube a second time because a role named it again is refused."""
+    from rpg.domain.predicates import Stack
     from rpg.schema.accounting import unaccounted
     from rpg.schema.reading import features
-    from rpg.domain.predicates import Stack
 
     text = "Stack the red block, the green block and the blue block with the red block at the bottom."
     schema = parse(text)
