@@ -197,6 +197,7 @@ def run_split(name: str, show: str = "none") -> Counter:
     by_source: dict[str, Counter] = {}
     classes: Counter = Counter()
     mr: Counter = Counter()
+    plain: Counter = Counter()  # outcomes of the texts the domain can say (issue 30's "plain instructions")
     by_refuse: dict[str, Counter] = {}  # must-refuse class -> verdicts
     for e in entries:
         outcome, detail = classify(e)
@@ -205,6 +206,8 @@ def run_split(name: str, show: str = "none") -> Counter:
         cls = failure_class(e, outcome, detail)
         if cls:
             classes[cls] += 1
+        if not must_refuse(e):
+            plain[outcome] += 1
         if must_refuse(e):
             mr["n"] += 1
             if outcome == "refused":
@@ -220,6 +223,10 @@ def run_split(name: str, show: str = "none") -> Counter:
              "stranger": "STRANGER set (stranger.yaml, development material)",
              "stranger2": "STRANGER set 2 (stranger2.yaml, development material)"}[name]
     _table(f"{label}: {len(by_source)} sources", by_source, counts)
+    n_plain = sum(plain.values())
+    if n_plain:
+        print(f"plain instructions (the domain can say them): {n_plain}; right {plain['correct']} "
+              f"({100 * plain['correct'] / n_plain:.0f}%), refused {plain['refused']}, silently wrong {plain['wrong']}")
     print(f"must-refuse: {mr['n']} texts; refused for the right reason {mr['right reason']}, "
           f"for another reason {mr['other reason']}, compiled {mr['compiled']}")
     for kind, c in sorted(by_refuse.items()):
@@ -229,6 +236,7 @@ def run_split(name: str, show: str = "none") -> Counter:
     for cls, k in sorted(classes.items(), key=lambda kv: (-kv[1], kv[0])):
         print(f"  {k:4d}  {cls}")
     counts.update({f"must-refuse {k}": v for k, v in mr.items()})
+    counts.update({f"plain {k}": v for k, v in plain.items()})
     counts.update({f"class {k}": v for k, v in classes.items()})
     return counts
 
