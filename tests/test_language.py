@@ -1184,3 +1184,36 @@ def test_a_cube_said_twice_is_not_two_cubes():
 def test_what_a_chain_or_a_side_leaves_unclear_is_refused(text, match):
     with pytest.raises(ParseError, match=match):
         parse(text)
+
+
+@pytest.mark.parametrize("text,words", [
+    # a cube picked by where it stands now: a relative clause, "from" a place, what the speaker sees or holds
+    ("move the red block that is on the blue block to the green patch", "the red block that is on"),
+    ("take the block from the green patch and put it on the red patch", "take the block from the"),
+    ("put the block I'm looking at on the red patch", "looking at"),
+    ("stack the block I see on the red patch", "i see"),
+    ("put the brick I'm holding on the red patch", "holding"),
+    ("put the cube in my hand on the red patch", "in my hand"),
+    # a place picked by contrast with one nobody named
+    ("move the block to the other patch", "the other patch"),
+    ("put the red block on the other side of the table", "the other side"),
+    # moved relative to where it stands now
+    ("move the red block closer to the blue block", "closer to"),
+    ("move the red block a bit to the left", "a bit to the left"),
+    ("push the two blocks closer together", "closer together"),
+])
+def test_what_only_the_current_scene_says_is_refused_as_a_reference(text, words):
+    with pytest.raises(Inexpressible) as err:
+        parse(text)
+    assert err.value.kind == "reference" and words in str(err.value), str(err.value)
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("put the blue block on the green block, which is on the red block", ["stack(red,green,blue)"]),  # a goal chain
+    ("put the red block on the green patch and the blue block on the other patch",
+     ["on_patch(blue,patch:gray)", "on_patch(red,patch:green)"]),  # the contrast is said
+    ("put block I on block J", ["stack(J,I)"]),  # the letter I, not the speaker
+    ("put the red block far from the blue block", ["far_from(blue,red)"]),
+])
+def test_what_looks_like_a_reference_but_is_said_compiles(text, expected):
+    assert meaning(parse(text)) == expected

@@ -106,7 +106,10 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|\b(?:you|we|i)\s+(?:just|already|have|had)\s+(?:just\s+|already\s+)?"
                   r"(?:moved|placed|picked|grabbed|used|put|touched|held)\b"
                   r"|\b(?:blocks?|cubes?|ones?)\s+(?:that\s+)?(?:you|we|i)\s+(?:moved|placed|picked|grabbed|used|touched|held|pointed|indicated|mentioned|chose|selected)\b"
-                  r"|\b(?:you|we|i)\s+(?:am\s+|'m\s+|are\s+|just\s+)?(?:pointed|pointing|indicated|indicating)\b"
+                  r"|\b(?:you|we|i)(?:'m|'re|\s+am|\s+are)?\s+(?:just\s+)?(?:pointed|pointing|indicated|indicating)\b"
+                  r"|\b(?:you|we|i)(?:'m|'re|\s+am|\s+are)?\s+(?:just\s+)?(?:looking|looked|gazing|gazed|staring|stared|glancing)\s+at\b"
+                  r"|\b(?:you|we|i)\s+(?:can\s+)?(?:see|saw|look\s+at|gaze\s+at)\b"
+                  r"|\b(?:i|you|we)(?:'m|'re|\s+am|\s+are)\s+(?:holding|touching)\b|\b(?:in|from)\s+(?:my|your|the\s+robot's)\s+(?:hand|gripper)\b"
                   r"|\b(?:again|undo|restore|original(?:ly)?|previous(?:ly)?|remaining|as\s+(?:before|it\s+was|they\s+were))\b"
                   r"|\bthe\s+rest\b|\bwhere\s+(?:it|they|the\s+(?:[a-z]+\s+){0,2}?(?:blocks?|cubes?|ones?))\s+(?:was|were|used\s+to\s+be|started|began)\b"
                   r"|\bthe\s+same\s+(?:order|sequence|positions?|places?|spots?)\b"
@@ -119,7 +122,15 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"(?:on|at|in)\s+the\s+(?:far\s+)?(?:left|right|front|back|middle|center|centre)\b"
                   r"(?!\s+(?:of|side|corner|edge|half|part|end|area|region)\b)"
                   r"(?=.*\b(?:on|onto|to|into|next|beside|behind|under|near)\b)"
-                  r"|\b(?:put|place|move|set|bring|return)\s+(?:(?!the\s+back\b)[a-z]+\s+){0,3}back\b(?!\s+(?:of|left|right|side|edge|corner|row|half|part|end)\b)",
+                  r"|\b(?:put|place|move|set|bring|return)\s+(?:(?!the\s+back\b)[a-z]+\s+){0,3}back\b(?!\s+(?:of|left|right|side|edge|corner|row|half|part|end)\b)"
+                  # "the red block that is on the blue block": a cube picked by where it stands now
+                  r"|\bthe\s+(?:[a-z]+\s+){0,2}?(?:blocks?|cubes?|box|boxes|bricks?|ones?)\s+(?:that|which)"
+                  r"(?:'s|\s+is|\s+are|\s+was|\s+were|\s+sits|\s+lies|\s+stands|\s+rests)?\s+(?:currently\s+|now\s+|still\s+|already\s+)?"
+                  r"(?:sitting\s+|lying\s+|resting\s+|standing\s+|placed\s+)?(?:on|in|at|inside|next\s+to|near|beside|under|underneath|below"
+                  r"|beneath|behind|in\s+front\s+of|(?:to\s+the\s+)?(?:left|right)\s+of)\b"
+                  # "take the block from the green patch": a cube picked by where it stands now
+                  r"|\b(?:take|move|pick|grab|lift|remove|get|bring|slide|push)\s+(?:up\s+)?the\s+(?:[a-z]+\s+){0,2}?(?:blocks?|cubes?|box"
+                  r"|boxes|bricks?|ones?)\s+(?:up\s+)?from\s+(?:the\s+|its\s+|their\s+)",
      "picks a cube by its place in an order nobody defined or by what happened earlier: rpg's cubes are known "
      "only by colour and label; name the cube (e.g. \"the red block\"), or say the structure it is part of "
      "(\"the top block of the tower\")"),
@@ -133,6 +144,11 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "refers to something the instruction has not described: the places the cubes stand in now (the current "
      "scene), which a task's goal cannot see; say where each cube should end (e.g. \"put the red block "
      "left of the yellow block\")"),
+    ("reference", r"\b(?:closer|nearer|further|farther)\s+(?:away\s+)?(?:to|from|apart|together)\b"
+                  r"|\b(?:a\s+(?:bit|little|tad)|slightly|somewhat|a\s+few\s+(?:cm|centimet(?:er|re)s|inches))\s+(?:more\s+|further\s+|farther\s+)?"
+                  r"(?:to\s+the\s+)?(?:left|right|forward|forwards|backward|backwards|back|up|down|closer|nearer|further|farther|away|apart)\b",
+     "refers to where the cubes stand now (moved closer, further, a bit to one side): a task's goal says where "
+     "they end up, not how far they moved; say the end state (e.g. \"put the red block next to the blue block\")"),
     ("action", r"\boff\s+(?:of\s+)?the\s+(?:table|table's\s+edge|edge\s+of\s+the\s+table|workspace)\b",
      "is an action the domain does not have: its cubes stay on the table, and a task's goal says where on it they "
      "end up"),
@@ -251,6 +267,11 @@ OTHER_RE = re.compile(r"\bthe\s+other\s+(?:[a-z]+\s+)?(?:blocks?|cubes?|ones?|br
 """"The other block": it picks a cube by contrast with one the instruction set apart before it
 ("put one red block on the patch and the other one next to it", :data:`OTHER_SET_RE`); without
 that it means a cube the speaker sees, which a task cannot know."""
+
+OTHER_PLACE_RE = re.compile(r"\bthe\s+other\s+(?:[a-z]+\s+)?(?P<noun>patch|pad|mat|side|corner|end|spot|place|location|area|half)(?:e?s)?\b")
+""""The other patch", "the other side": a place picked by contrast; it needs the same kind of
+place said before it ("put red on the green patch and blue on the other patch"), otherwise it
+contrasts with one the speaker sees (where a cube stands now)."""
 
 DEFINITE_STRUCTURE_RE = re.compile(
     r"\b(?:on|onto|upon|to|into|next\s+to|beside|behind|in\s+front\s+of|near|left\s+of|right\s+of|top\s+of|from|off|of)"

@@ -180,6 +180,11 @@ def _refuse_unresolved_pronoun(text: str, original: str) -> None:
             raise Inexpressible("reference", [m.group(0)], "picks a cube by contrast with one the instruction has not "
                                 "set apart (a cube the speaker sees, or one from an earlier turn): name it by colour "
                                 "or label (e.g. \"put the red block on the green patch\")", original)
+    for m in lexicon.OTHER_PLACE_RE.finditer(text):
+        if not re.search(rf"\b{m.group('noun')}", text[:m.start()]):
+            raise Inexpressible("reference", [m.group(0)], "picks a place by contrast with one the instruction has not "
+                                "named (where a cube stands now, which a task cannot see): name the place (e.g. \"the "
+                                "green patch\", \"the left side of the table\")", original)
 
 
 def _unknown_word_classes(text: str, unknown: list[str]) -> list[tuple[str, str, str]]:
@@ -283,7 +288,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     if len(original) > MAX_INSTRUCTION_CHARS:
         raise ParseError(f"the instruction has {len(original)} characters; the limit is {MAX_INSTRUCTION_CHARS}")
     labelled = re.sub(r"\b(block|cube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))"
-                      r"(?<!\bI(?=\s+(?:[a-z]+ed|am|have|had|want|need|would|will|just|think|said|mean|like|told|see|saw)\b))",
+                      r"(?<!\bI(?='[a-z]|\s+(?:[a-z]+ed|[a-z]+ing|am|have|had|want|need|would|will|just|think|said|mean|like|told|see|saw|look|can)\b))",
                       lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1)}", original)  # "block 4"
     labelled = re.sub(r"\b(the|a|an)\s+([A-Z])\s+(block|cube)\b", r"\1 letter \2 \3", labelled)  # "the A block"
     labelled = re.sub(r"\b(the)\s+(\d)\s+(block|cube)\b(?!s)", r"\1 digit \2 \3", labelled)  # "the 3 cube"
