@@ -1217,3 +1217,28 @@ def test_what_only_the_current_scene_says_is_refused_as_a_reference(text, words)
 ])
 def test_what_looks_like_a_reference_but_is_said_compiles(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a line's cubes given their places in it: the order, left to right
+    ("Arrange red block, green block, and blue block in a row with red block on the left, green block in the middle, "
+     "and blue block on the right.", ["line[left_to_right](red,green,blue)"]),
+    ("Place the orange, purple, and pink cubes in a row so that orange is leftmost, purple is in the middle, and pink "
+     "is rightmost.", ["line[left_to_right](orange,purple,pink)"]),
+    ("Arrange red, green and blue in a row with blue on the left and red on the right.",
+     ["line[left_to_right](blue,green,red)"]),
+    # a cube's end of the line is no place of the line (it compiled the line at the table's left)
+    ("Line up the yellow and blue blocks with blue on the left", ["line[left_to_right](blue,yellow)"]),
+    # the cubes named, then their order after the direction words (the first list was taken)
+    ("Arrange red block, green block, and blue block in a row, from left to right: blue, green, red.",
+     ["line[left_to_right](blue,green,red)"]),
+    ("Construct a four-block tower. Starting with brown at the base, add yellow, then orange, and finish with a white "
+     "cube at the top.", ["stack(brown,yellow,orange,white)"]),
+])
+def test_a_line_s_order_said_by_its_cubes_places(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_two_lists_in_different_orders_are_refused():
+    with pytest.raises(ParseError, match="two different orders"):
+        parse("Arrange red, green and blue in a row: blue, green, red.")

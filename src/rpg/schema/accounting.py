@@ -145,9 +145,9 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
             out.append(Mention(m.group(0), "bare place", region=BARE_PLACES[m.group("side")]))
         elif m.group("side") in SIDE_RELATIONS:  # "a line of red, green and blue with blue on the right": an end
             said = before[before.rfind("with"):]
-            role = re.search(rf"\b({colors})\b", said)
+            role = re.findall(rf"\b({colors})\b", said)  # the cube said last before the side ("..., and blue on the right")
             out.append(Mention(said.strip() + " " + m.group(0), "end role",
-                               color=canon(role.group(1)) if role else None, region=m.group("side")))
+                               color=canon(role[-1]) if role else None, region=m.group("side")))
     for m in re.finditer(rf"(?<!,\s)(?<!and\s)(?<!or\s)\b(?:all\s+)?the\s+(?P<c>{colors})\s+(?:cubes|blocks|ones|bricks|boxes)\b",
                          text):  # "the pink cubes": several of that colour (a listed "red and blue blocks" is not)
         out.append(Mention(m.group(0), "plural", color=canon(m.group("c"))))

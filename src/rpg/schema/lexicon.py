@@ -637,6 +637,14 @@ ROLE_BEFORE = re.compile(r"\bwith\s+(?:the\s+)?[a-z0-9]+(?:\s+(?:block|cube|one|
 """Text before "in the middle" that makes it a cube's role in a structure ("with blue in the
 middle"), not a place on the table."""
 
+ROLE_LIST_BEFORE = re.compile(r"\b(?:with|so\s+that|such\s+that|where)\s+(?:[^.;]*(?:\b(?:on|at|in)\s+the\s+(?:far\s+|very\s+)?"
+                              r"(?:left|right|middle|center|centre|top|bottom)|\bis\s+(?:left|right))(?:most)?\b[^.;]*(?:,|\band)\s+)?"
+                              r"(?:the\s+)?[a-z0-9]+"
+                              r"(?:\s+(?:block|cube|one))?(?:\s+(?:is|goes|sits))?\s*$")
+"""Text before a bare side that makes it a cube's role in a list of roles ("with red on the left,
+green in the middle, and blue on the right"; "so that orange is leftmost, purple is in the
+middle"), not a place on the table."""
+
 LAYER_LIST_BEFORE = re.compile(r"(?:,|\band|\bthen)\s+(?:the\s+|a\s+|an\s+)?(?:\d+\s+)?[a-z]+(?:\s+(?:blocks?|cubes?|ones?))?\s*$")
 LAYERED_TEXT = re.compile(r"\b(?:pyramid|wall|tower|stack)s?\b.*\b(?:base|bottom|top)\b|\b(?:base|bottom|top)\b.*\b(?:pyramid|wall|tower|stack)s?\b")
 """A colour in a list of layers before "in the middle" ("3 red at the base, 2 green in the
@@ -648,7 +656,8 @@ def names_a_role(before: str, text: str) -> bool:
     """Whether "in the middle" (or another bare side) after ``before`` gives a cube a role in a
     structure ("with blue in the middle", "3 red at the base, 2 green in the middle") rather
     than a place on the table; ``text`` is the whole instruction."""
-    return bool(ROLE_BEFORE.search(before) or (LAYER_LIST_BEFORE.search(before) and LAYERED_TEXT.search(text)))
+    return bool(ROLE_BEFORE.search(before) or ROLE_LIST_BEFORE.search(before)
+                or (LAYER_LIST_BEFORE.search(before) and LAYERED_TEXT.search(text)))
 
 
 ANTECEDENT_RE = re.compile(

@@ -392,6 +392,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   rf"(the\s+(?:{COLOR_RE})\s+(?:block|cube))\b(?!\s+(?:of|patch)\b)", r"\1 the \2 next to \3", text)
     text = re.sub(r"\b(?:so\s+(?:that\s+)?it(?:'s|\s+is)\s+)?touch(?:ing|es)?\b", "next to", text)
     text = re.sub(r"\bfollowed\s+by\b|\btopped\s+(?:off\s+)?(?:with|by)\b", "then", text)
+    # "and finish with a white cube at the top": the last of a sequence
+    text = re.sub(r"\b(?:(and)\s+)?(?:finish|end)(?:\s+(?:it|them|the\s+(?:tower|stack|row|line)))?(?:\s+off)?\s+with\b",
+                  lambda m: f"{m.group(1) or ''} then".strip(), text)
     text = re.sub(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+of\s+the\s+(?=\w+\s+(?:blocks|cubes|boxes)\b)", r"\1 ", text)
     text = re.sub(r"\b(?:to|on|at)\s+the\s+(left|right)(?:[\s-]+hand)?\s+side\s+of\b(?!\s+the\s+(?:table|workspace)\b)",
                   r"to the \1 of", text)
@@ -631,7 +634,8 @@ def _table_side(m: re.Match) -> bool:
     return (m.group("part") == "" and m.group(0).split()[0] in ("on", "to", "at", "in")
             and (m.group("lr") or m.group("lr2")) not in ("middle", "center", "centre")  # a role or the centre: above
             and re.fullmatch(r"\s*[.!]?\s*", m.string[m.end():]) is not None
-            and _RELATIVE_RE.search(m.string[:m.start()]) is None)
+            and _RELATIVE_RE.search(m.string[:m.start()]) is None
+            and not names_a_role(m.string[:m.start()], m.string))  # "line up yellow and blue with blue on the left"
 
 
 def mark_regions(text: str) -> str:

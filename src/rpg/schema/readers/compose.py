@@ -25,7 +25,7 @@ from rpg.domain.state import Pose
 from rpg.errors import BadInput
 from rpg.schema import readers
 from rpg.schema.builder import DEFAULT_COLORS, Builder
-from rpg.schema.lexicon import PAIRWISE_RELATIONS
+from rpg.schema.lexicon import COLOR_RE, PAIRWISE_RELATIONS
 from rpg.schema.model import TaskSchema
 from rpg.schema.readers.common import REGION_MARGIN, region_spots
 from rpg.schema.readers.registry import reader
@@ -187,6 +187,8 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
     if heads is None:
         return False
     head, region = heads[0], m.group("r") or m.group("r2") or m.group("r3")
+    if re.search(rf"\bwith\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:block|cube|one))?\s*$", part):
+        return False  # "line up yellow and blue with blue on the left": the cube's end of the line, not the line's place
     if (region not in C.REGION_NAMES or len(head.assets) < 2 or head.initial_state.structures
             or any(a.kind == "goal_patch" for a in head.assets)
             or any(isinstance(p, InRegion) or p.name in (*PAIRWISE_RELATIONS, "between") for p in head.goal_predicate().walk())):

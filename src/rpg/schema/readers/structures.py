@@ -396,6 +396,63 @@ def recognize_piles(f: Features, b: Builder) -> bool:
     return True
 
 
+_END_ROLE_RE = re.compile(rf"\b(?P<c>{COLOR_RE})(?:\s+(?:block|cube|one))?\s+(?:(?:is|goes|sits|stands|being|should\s+be|must\s+be)\s+)?"
+                          r"(?:(?:on|at|to)\s+the\s+(?:far\s+|very\s+)?(?P<side>left|right|middle|center|centre)(?:\s+(?:end|side))?"
+                          r"|(?<=is\s)(?P<side2>left|right))\b(?!\s+(?:of|half|part|corner|edge)\b)")
+"""A cube of a line given its place in it ("with red on the left", "blue on the far right", "green
+in the middle", "orange is leftmost": "leftmost" reads "left")."""
+
+
+def _order_by_end_roles(f: Features) -> list[str] | None:
+    """The colours of a line of distinct colours from left to right, when its words put cubes at
+    its ends and middle so that every place is fixed ("a row of red, green and blue with red on
+    the left and blue on the right"); None otherwise (no such roles, or a place left open)."""
+    colors = list(dict.fromkeys(f.color_list()))
+    if not 2 <= len(colors) <= 3 or len(f.color_list()) < 2 * len(colors) - 1:
+        return None  # the cubes listed, then (most of) them given a place
+    place: dict[str, str] = {}
+    for m in _END_ROLE_RE.finditer(f.text):
+        side = {"center": "middle", "centre": "middle"}.get(m.group("side") or m.group("side2"), m.group("side") or m.group("side2"))
+        c = canon_color(m.group("c"))
+        if place.get(side, c) != c or c in place.values() and place.get(side) != c:
+            return None  # two cubes at one end, or one cube at two
+        place[side] = c
+    if not ({"left", "right"} & set(place)) or (len(colors) == 2 and "middle" in place):
+        return None
+    slots = ["left", "middle", "right"] if len(colors) == 3 else ["left", "right"]
+    open_slots = [s for s in slots if s not in place]
+    rest = [c for c in colors if c not in place.values()]
+    if len(open_slots) != len(rest) or len(rest) > 1:
+        return None
+    place.update(zip(open_slots, rest, strict=True))
+    return [place[s] for s in slots]
+
+
+_DIRECTION_WORDS = r"(?:from\s+)?(?:left to right|right to left|front to back|back to front)"
+
+
+def _list_the_direction_orders(f: Features, lists: list[re.Match]) -> re.Match | None:
+    """The colour list a line's direction orders: with one list, that one; with several (the
+    cubes named, then their order: "arrange red, green and blue in a row, from left to right:
+    blue, green, red"), the one said next to the direction words.
+
+    Raises:
+        ParseError: two lists in different orders and neither next to the direction words.
+    """
+    if len(lists) < 2:
+        return lists[0] if lists else None
+    seqs = [tuple(canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", m.group(1))) for m in lists]
+    if len(set(seqs)) == 1:
+        return lists[0]
+    near = [m for m in lists if re.search(rf"{_DIRECTION_WORDS}\s*[:,]?\s*(?:the\s+)?$", f.text[:m.start()])
+            or re.match(rf"\s*,?\s*{_DIRECTION_WORDS}\b", f.text[m.end():])]
+    if len(near) == 1:
+        return near[0]
+    raise ParseError(f"\"{f.original[:80]}\" lists the cubes in two different orders "
+                     f"({'; '.join(', '.join(s) for s in seqs[:2])}); say the order once (e.g. \"from left to right: "
+                     f"{', '.join(seqs[-1])}\"), or use --model")
+
+
 @reader(order=160)
 def recognize_ordered_line(f: Features, b: Builder) -> bool:
     order = ordering_of(f)
@@ -413,7 +470,9 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         return False
     direction = direction_of(f)
     item = rf"(?:{COLOR_RE})(?:\s+(?:blocks?|cubes?))?(?:\s+first)?"  # "the blue block first, then the red block"
-    listed = re.search(rf"\b((?:{item})(?:\s*(?:,\s*and|,|and|then)\s+(?:then\s+)?(?:the\s+|an?\s+)?(?:{item})\b)+)", f.text)
+    by_roles = _order_by_end_roles(f)  # "with red on the left, green in the middle and blue on the right"
+    lists = list(re.finditer(rf"\b((?:{item})(?:\s*(?:,\s*and|,|and|then)\s+(?:then\s+)?(?:the\s+|an?\s+)?(?:{item})\b)+)", f.text))
+    listed = _list_the_direction_orders(f, lists)
     alternating = alternating_colors(f, 6)
     if not explicit and not order and listed and not alternating:
         seq = re.findall(rf"\b(?:{COLOR_RE})\b", listed.group(1))
@@ -422,6 +481,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
             explicit = listed
     if alternating and not explicit:
         explicit = re.search(r"(.+)", ", ".join(alternating))
+    if by_roles and not explicit and not order and not labels:
+        explicit, direction = re.search(r"(.+)", ", ".join(by_roles)), "left_to_right"
     in_order = re.search(r"\bin (?:the )?order\b(.*)", f.text)
     listed_items = item_sequence(in_order.group(1)) if in_order else []
     if in_order and any(label for _, label in listed_items) and len(listed_items) >= 2:
@@ -433,7 +494,7 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         colors = [canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", explicit.group(1))]
         names = [b.cube(c) for c in colors]
         b.place(directed_line(names, direction))
-        if direction_stated(f):
+        if direction_stated(f) or by_roles:
             b.preds.append(InLine(tuple(names), axis=line_axis(direction), order=direction))
             b.summary.append(f"cubes in a line {direction.replace('_', ' ')}: {', '.join(names)}")
         else:  # "in the order red, green, blue", "alternating red and blue": from either end, any direction
