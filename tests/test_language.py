@@ -1122,6 +1122,7 @@ def test_a_cube_no_part_of_the_goal_names_is_refused():
     ("make a centered row of three red cubes", ["line(red,red,red)@center"]),
     # "as its base" marks the base (the cube was added a second time)
     ("Move red block, green block, and blue block into a tower with red block as its base.", ["stack(red,green,blue)"]),
+    ("Build a tower from bottom to top: red block, red block, blue block", ["stack(red,red,blue)"]),
     # the side a listed sequence starts from is its direction (it was an unordered line)
     ("Line up the objects in the order red block, green block, and blue block, starting from the left.",
      ["line[left_to_right](red,green,blue)"]),
@@ -1152,6 +1153,8 @@ def test_more_ways_people_say_it_robotwin_and_vilain(text, expected):
      {"purple": 1, "red": 2, "green": 1}),
     ("put the red block on the other red block", {"red": 2}),
     ("stack two red blocks", {}),  # a count: not bounded here (the count bounds it)
+    # each item of a list is a cube of its own (the bound made the parser drop one)
+    ("build a tower from bottom to top: red block, red block, blue block", {"red": 2, "blue": 1}),
 ])
 def test_a_colour_named_as_single_cubes_bounds_how_many_there_are(text, bounds):
     from rpg.schema.accounting import _single_color_bounds

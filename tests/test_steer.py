@@ -606,7 +606,7 @@ def test_steering_words_live_in_the_lexicon():
     # a stack in any order stays in any order
     ("Build a tower of red, green and blue blocks", "make the blue one yellow", "Build a tower: red, green, yellow"),
     ("Build a tower of 3 red blocks", "add one more", "Build a tower from bottom to top: red, red, red, red"),
-    ("Build a tower of 3 red blocks", "now a line instead", "Arrange the blocks in order red, red, red from left to right"),
+    ("Build a tower of 3 red blocks", "now a line instead", "Align 3 blocks in a single straight line: red, red, red"),
     ("Put the green block on the red patch", "put a purple block on the patch too",
      "Place the green block and the purple block onto the red goal patch"),
     # "it" of a relation is the cube it moves; sizes said "3 by 3"; a word to spell; a colour "instead"
@@ -754,3 +754,48 @@ def test_a_line_has_no_end_across_its_direction():
     with pytest.raises(SteerError, match="has no front end"):
         apply_ops(extract(parse("Line up a yellow, a green and a blue block from left to right")),
                   interpret("add a red block at the front end").ops)
+
+
+def _steered(tmp_path, base: str, *edits: str):
+    """(intent, meaning) of each edit applied in turn to a compiled base."""
+    from rpg.schema.meaning import meaning
+
+    fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
+    out = []
+    for e in edits:
+        r = steer(fam.path, e)
+        assert r.valid, (e, r.notes)
+        out.append((r.intent, meaning(fam.schema(r.version))))
+    return out
+
+
+@pytest.mark.parametrize("edit", ["and the blue block in the front right corner", "also the blue block in the front right corner"])
+def test_a_cube_the_task_lacks_placed_in_a_region_is_added(tmp_path, edit):
+    """It moved the task's red cube to the blue cube's corner (an addition read as a replacement)."""
+    assert _steered(tmp_path, "Put the red block in the front left corner", edit) == [
+        ("extend", ["in_region(blue,front_right)", "in_region(red,front_left)"])]
+
+
+def test_the_tower_put_on_a_side_is_placed_there_whole(tmp_path):
+    """"put the tower on the left side" compiled the tower's cubes side by side (left_of)."""
+    assert _steered(tmp_path, "Put the orange block on top of the cyan block", "put the tower on the left side",
+                    "add a pink block on top") == [("modify", ["stack(cyan,orange)@left"]),
+                                                   ("extend", ["stack(cyan,orange,pink)@left"])]
+
+
+def test_the_same_blocks_keep_their_colour_in_a_new_structure(tmp_path):
+    """"same blocks, but make two towers of four" of eight orange blocks built red and blue towers."""
+    assert _steered(tmp_path, "Arrange eight orange blocks in a circle", "same blocks, but make two towers of four") == [
+        ("pivot", ["stack(orange,orange,orange,orange)", "stack(orange,orange,orange,orange)"])]
+
+
+@pytest.mark.parametrize("base, edit, kind", [
+    ("stack the red block on the blue block", "put them in a row", "InLine"),
+    ("line up the red, green and blue blocks from left to right", "stack them instead", "UnorderedStack"),
+])
+def test_a_structure_turned_into_another_has_no_order_nobody_said(tmp_path, base, edit, kind):
+    """"put them in a row" of a stack gave a left-to-right line in the stack's order."""
+    fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
+    r = steer(fam.path, edit)
+    goal = fam.schema(r.version).goal_predicate()
+    assert r.intent == "pivot" and type(goal).__name__ == kind and getattr(goal, "order", None) is None

@@ -366,6 +366,10 @@ _NOT_SINGLE_BEFORE = re.compile(r"(?:\d+|two|three|four|five|six|seven|eight|nin
 """Words before a bare "red block" that make it no single cube ("two red block", typo'd plurals)."""
 
 
+_LIST_GAP = re.compile(r"\s*(?:,|;|:)?\s*(?:(?:and|then|and\s+then)\s+)?")
+"""What stands between two items of a list of cubes ("red block, red block and blue block")."""
+
+
 def _single_color_bounds(text: str) -> dict[str, int]:
     """Colours that normalised ``text`` names only as single cubes ("the green block", "a red
     cube", "red block"), mapped to how many cubes of that colour the words allow, read in order:
@@ -375,13 +379,16 @@ def _single_color_bounds(text: str) -> dict[str, int]:
     colors = Counter(c for _, c in color_mentions(text))
     seen: Counter = Counter()
     allowed: Counter = Counter()
+    end = None
     for m in SINGLE_CUBE_RE.finditer(text):
+        listed = end is not None and _LIST_GAP.fullmatch(text[end:m.start()]) is not None
+        end = m.end()
         if not m.group("det") and (_NOT_SINGLE_BEFORE.search(text[:m.start()]) or m.group("mod")):
             continue
         c = canon_color(m.group("c"))
         seen[c] += 1
-        if (m.group("mod") or "").strip() in ("other", "second") or m.group("det") in ("a", "an", "one", "another"):
-            allowed[c] += 1
+        if (m.group("mod") or "").strip() in ("other", "second") or m.group("det") in ("a", "an", "one", "another") or listed:
+            allowed[c] += 1  # one more cube; so is an item of a list ("red block, red block, blue block")
         else:
             allowed[c] = max(allowed[c], 1)
     return {c: allowed[c] for c in sorted(seen) if colors[c] == seen[c]}

@@ -71,24 +71,25 @@ def move_into_workspace(schema: TaskSchema, failure: dict | None = None, stage: 
                                            f"shifted the goal layout by {np.round(shift, 3).tolist()} m", stage))
 
 
-def recolor(schema: TaskSchema, old: str, new: str) -> TaskSchema:
+def recolor(schema: TaskSchema, old: str, new: str, merge: bool = False) -> TaskSchema:
     """A colour tweak applied to any task (relations, patches, temporal order): every asset
     of colour ``old`` becomes ``new``, renamed consistently in the goal, layout and rho_0.
+    ``merge``: the task may already have objects of colour ``new`` (they become one colour).
 
     Raises:
-        BadInput: the task has nothing of colour ``old``, or already uses ``new``.
+        BadInput: the task has nothing of colour ``old``, or (not ``merge``) already uses ``new``.
     """
     names = {a.name for a in schema.assets}
     hits = [a for a in schema.assets if a.color == old]
     if not hits:
         raise BadInput(f"the task has no {old} object; its colours are "
                          f"{', '.join(sorted({a.color for a in schema.assets if a.color}))}")
-    if any(a.color == new for a in schema.assets):
+    if any(a.color == new for a in schema.assets) and not merge:
         raise BadInput(f"the task already has a {new} object; name the object to change more precisely")
-    mapping = {}
+    mapping: dict[str, str] = {}
     for a in hits:
         renamed = re.sub(rf"^{re.escape(old)}(?=_|$)", new, a.name)
-        mapping[a.name] = renamed if renamed not in names else f"{new}_{a.name}"
+        mapping[a.name] = renamed if renamed not in names and renamed not in mapping.values() else f"{new}_{a.name}"
     doc = schema.model_dump()
     for a in doc["assets"]:
         if a["color"] == old:

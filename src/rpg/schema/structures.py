@@ -276,8 +276,10 @@ class Tower(StructureKind):
         return "Build a tower from bottom to top: " + ", ".join(i.phrase() for i in spec.items)
 
     def fit(self, spec, resize):
+        """Another structure's cubes stacked (a Pivot, "stack them instead"): which cube stands
+        where is not said, so the tower is in any order (a spelled word keeps its letters' order)."""
         super().fit(spec, resize)
-        return TaskSpec("tower", spec.items)
+        return TaskSpec("tower", spec.items, direction="left_to_right" if spec.word or spec.ordering else None)
 
 
 class Line(StructureKind):
@@ -320,7 +322,11 @@ class Line(StructureKind):
         return f"Arrange the blocks in order {', '.join(i.phrase() for i in spec.items)} {d}"
 
     def fit(self, spec, resize):
-        return TaskSpec("line", spec.items, direction="left_to_right", **self._carried(spec))
+        """Another structure's cubes in a line (a Pivot, "put them in a row"): in an order only
+        when the cubes are sorted (letters, digits, a gradient); otherwise which cube stands where
+        is not said."""
+        carried = self._carried(spec)
+        return TaskSpec("line", spec.items, direction="left_to_right" if carried["ordering"] else None, **carried)
 
 
 class PyramidKind(StructureKind):

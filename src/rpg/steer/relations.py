@@ -21,7 +21,7 @@ from rpg.domain.predicates import (
     Stack,
 )
 from rpg.schema.builder import DEFAULT_COLORS
-from rpg.schema.lexicon import COLOR_RE, EDIT_RELATIONS, PAIRWISE_RELATIONS
+from rpg.schema.lexicon import COLOR_RE, EDIT_ADDITIVE_RE, EDIT_RELATIONS, PAIRWISE_RELATIONS
 from rpg.schema.model import TaskSchema
 from rpg.schema.reading import canon_color, region_name
 from rpg.schema.structures import cube_list
@@ -98,6 +98,9 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     t = " " + edit.lower().strip().rstrip(".!") + " "
     if rel is None or TABLE_PLACE_RE.search(t):
         return None  # a place on the table ("move the stack to the back of the table"): not a relation to a cube
+    if re.search(r"\bthe\s+(?:whole\s+)?(?:tower|stack|pile|structure)\b|\b(?:everything|all\s+of\s+it|the\s+whole\s+thing)\b", t) \
+            and not re.search(r"\b(?:of|to|from|beside|behind|near)\s+(?:it|them|the\s+\w+\s+(?:block|cube|one))\b", t):
+        return None  # "put the tower on the left side": a place for the whole structure, not a relation inside it
     if ADDS_RE.search(t):
         return _added(t, schema, rel)
     subject, obj = rel.subject, rel.object
@@ -290,6 +293,11 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     elif re.search(r"\b(?:swap|switch|exchange|trade)\b", t) and len(placed) == 2:
         placed = [(placed[0][0], placed[1][1]), (placed[1][0], placed[0][1])]
         intent = "modify"
+    elif region is not None and named and not set(named) & set(colors):  # a cube the task does not have
+        if len(set(named)) != 1 or not (EDIT_ADDITIVE_RE.search(t) or re.match(r"\s*and\b", t)):
+            return None  # "put the blue block in the corner": instead of the red one, or as well? (read elsewhere)
+        placed.append((named[0], region))  # "and the blue block in the front right corner": one more cube
+        intent = "extend"
     elif region is not None:
         which = [i for i, (c, _) in enumerate(placed) if c in named] or ([0] if len(placed) == 1 else [])
         if len(which) != 1 or placed[which[0]][1] == region:

@@ -31,7 +31,7 @@ from rpg.errors import BadInput
 from rpg.schema.builtin import parse
 from rpg.schema.edits import recolor
 from rpg.schema.feasibility import check_feasibility
-from rpg.schema.lexicon import NO_GOAL_RE
+from rpg.schema.lexicon import COLOR_RE, NO_GOAL_RE
 from rpg.schema.model import TaskSchema
 from rpg.steer.carried import Carried, split
 from rpg.steer.carried import render as render_carried
@@ -182,6 +182,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     ref_spec, carried = split(ref_schema)
     if plan.standalone:
         _refuse_invented_patch(plan.text, ref_schema, schema)
+        schema = _same_cubes(plan.text, ref_schema, schema)
         if relation_of(schema) and relation_of(ref_schema) and same_assets(schema, ref_schema):
             return schema, text, "modify"  # the same cubes in another relation
         return schema, text, intent_of_standalone(extract(schema), ref_spec)
@@ -244,6 +245,36 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     except BadInput as exc:
         raise SteerError(str(exc).splitlines()[0]) from None
     return schema, instruction, intent_of_ops(plan.ops, ref_spec)
+
+
+SAME_CUBES_RE = re.compile(r"\b(?:the\s+)?(?:same|these|those|the)\s+(?:\d+\s+)?(?:blocks|cubes|bricks)\b|\b(?:them|all\s+of\s+them)\b",
+                           re.IGNORECASE)
+"""Words of a whole-task edit that keep the task's cubes ("same blocks, but make two towers of four")."""
+
+
+def _same_cubes(edit: str, ref: TaskSchema, schema: TaskSchema) -> TaskSchema:
+    """A whole-task edit that keeps the task's cubes and names no colour: the new task's cubes
+    take the reference's colour (all one colour), as many as it had.
+
+    Raises:
+        SteerError: the reference's cubes have several colours and the edit does not say where each goes.
+    """
+    if not SAME_CUBES_RE.search(edit) or re.search(rf"\b(?:{COLOR_RE})\b", edit, re.IGNORECASE):
+        return schema
+    old = [a for a in ref.assets if a.kind != "goal_patch"]
+    new = [a for a in schema.assets if a.kind != "goal_patch"]
+    if len(old) != len(new) or any(a.kind != "colored_cube" for a in old + new):
+        return schema
+    colors = {a.color for a in old}
+    if len(colors) > 1:
+        if sorted(a.color for a in old) == sorted(a.color for a in new):
+            return schema
+        raise SteerError(f"the edit keeps the task's cubes ({', '.join(sorted(a.color for a in old))}) but does not say "
+                         "which colour goes where; name the colours in the edit, or use --model")
+    (color,) = colors
+    for c in sorted({a.color for a in new} - {color}):
+        schema = recolor(schema, c, color, merge=True)
+    return schema
 
 
 def _refuse_invented_patch(edit: str, ref: TaskSchema, schema: TaskSchema) -> None:

@@ -42,7 +42,7 @@ from rpg.schema.readers import (  # noqa: F401 (they register)
     structures,
     temporal,
 )
-from rpg.schema.reading import Features, ParseError, color_mentions, features, task_slug
+from rpg.schema.reading import Features, ParseError, color_mentions, explicit_labels, features, task_slug
 
 
 def free_unnamed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
@@ -115,8 +115,11 @@ def free_listed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
     roles = _listed_roles(" ".join(f.text.lower().split()))
     if roles is None:
         return schema
-    colors = {a.name: a.color for a in schema.assets if a.kind == "colored_cube"}
-    named = {c for _, c in color_mentions(f.text)}
+    # what names each cube: its colour, or the label of a letter or digit cube ("the letters C, A and T")
+    colors = {a.name: a.color if a.kind == "colored_cube" else a.label for a in schema.assets
+              if a.kind == "colored_cube" or (a.kind == "semantic_cube" and a.label)}
+    named = {c for _, c in color_mentions(f.text)} | set(explicit_labels(f)) | {
+        m.upper() for m in re.findall(r"\b(?:letter|number|digit)\s+'?([A-Za-z0-9])'?(?![A-Za-z0-9'])", f.original, re.IGNORECASE)}
     goal = schema.goal_predicate()
     parts = goal.children() if isinstance(goal, And) else [goal]
     out = list(parts)
