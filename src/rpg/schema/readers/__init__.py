@@ -42,7 +42,14 @@ from rpg.schema.readers import (  # noqa: F401 (they register)
     structures,
     temporal,
 )
-from rpg.schema.reading import Features, ParseError, color_mentions, explicit_labels, features, task_slug
+from rpg.schema.reading import (
+    Features,
+    ParseError,
+    color_mentions,
+    explicit_labels,
+    features,
+    task_slug,
+)
 
 
 def free_unnamed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
