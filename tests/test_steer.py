@@ -799,3 +799,26 @@ def test_a_structure_turned_into_another_has_no_order_nobody_said(tmp_path, base
     r = steer(fam.path, edit)
     goal = fam.schema(r.version).goal_predicate()
     assert r.intent == "pivot" and type(goal).__name__ == kind and getattr(goal, "order", None) is None
+
+
+@pytest.mark.parametrize("base, edits, want", [
+    # two letters swapped, as the parser reads them
+    ("build a tower of 3 red blocks", ["pls mkae the tower blue"], ["stack(blue,blue,blue)"]),
+    # a correction opened by "no wait," is no negation, and "right next to" no side
+    ("Put the white block on top of the blue block", ["no wait, put it right next to the blue block instead of on it"],
+     ["next_to(blue,white)"]),
+    # a verbless addition; "on top of that" is on top of the task
+    ("Stack the letter cube O on the letter cube R", ["put a B on top of the tower you just built", "and a T on top of that"],
+     ["stack(R,O,B,T)"]),
+    # a count said alone is the structure's count
+    ("Arrange five pink cubes in a circle", ["let's go with 7 instead"], ["circle(pink,pink,pink,pink,pink,pink,pink)"]),
+    ("stack 2 red cubes", ["three"], ["stack(red,red,red)"]),
+])
+def test_edits_said_in_fewer_or_looser_words(tmp_path, base, edits, want):
+    assert _steered(tmp_path, base, *edits)[-1][1] == want
+
+
+def test_no_before_a_noun_is_still_a_negation(tmp_path):
+    fam = compile_instruction("build a tower of 3 red blocks", tmp_path, name="fam").path
+    with pytest.raises(SteerError, match="negation"):
+        steer(fam, "no red blocks please")

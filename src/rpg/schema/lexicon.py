@@ -718,6 +718,16 @@ EDIT_LEADING_RE = re.compile(r"^\s*(?:now|ok(?:ay)?|actually|instead|then|next|a
                              r"|can you|could you|would you|i'd like(?: to)?|i want(?: to)?|let's|lets)\b[,:]?\s*", re.IGNORECASE)
 """Words that open an edit and say nothing of the task ("ok now ...", "also ...")."""
 
+EDIT_INTERJECTION_RE = re.compile(
+    r"^\s*(?:(?:(?:no|nope|nah)(?=\s*[,.!;]|\s+(?:wait|sorry|actually|hold\s+on|scratch))|wait|hold\s+on|sorry|oops|hmm+|um+|uh+)"
+    r"\s*[,.!;]*\s*)+(?=\S)")
+"""Words that open an edit as a correction and say nothing of the task ("no wait, put it next
+to the blue block", "sorry, make it red"): not a negation, nor a time ("wait")."""
+
+INTENSIFIER_RIGHT_RE = re.compile(r"(?i)\b(?:right|directly|just)\s+(?=next\s+to\b|on\s+top\b|onto\b|behind\b|beside\b|in\s+front\b"
+                                  r"|above\b|under\b|below\b|between\b|in\s+(?:the\s+)?(?:middle|center|centre)\b)")
+""""Right" that only stresses a place ("right next to the blue block"): not the side "right"."""
+
 EDIT_INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("action", r"\b(?:\d+|ninety|forty[- ]five)\s*(?:degrees?|deg|°)|\bdegrees?\b|\b(?:spin|spins|spinning|twirl\w*|wobble\w*"
                r"|wiggle\w*|shake|shaking|juggle\w*|throw\w*|toss\w*|roll(?:s|ing)?|bounce\w*|knock\w*(?:\s+(?:it|them))?\s+over)\b",

@@ -31,6 +31,7 @@ from rpg.schema.lexicon import (
     EDIT_COUNT_RE,
     EDIT_FRESH_RE,
     EDIT_INEXPRESSIBLE,
+    EDIT_INTERJECTION_RE,
     EDIT_LEADING_RE,
     EDIT_REFERS_RE,
     EDIT_SHOULD_BE_RE,
@@ -38,6 +39,7 @@ from rpg.schema.lexicon import (
     IGNORABLE,
     IGNORABLE_MORE,
     INEXPRESSIBLE,
+    INTENSIFIER_RIGHT_RE,
     NUMBER_WORDS,
     VOCAB,
     is_dictionary_word,
@@ -166,7 +168,12 @@ def _corrected(word: str, known: set[str]) -> str:
     """A typo of a known word corrected ("shoud" -> "should"): only a word of 4 letters or
     more that is no English word, within the parser's own distance."""
     core = word.strip(".,;:!?'")
-    if len(core) < 4 or not core.isalpha() or core in known or is_dictionary_word(core):
+    if len(core) < 3 or not core.isalpha() or core in known or is_dictionary_word(core):
+        return word
+    swapped = sorted({core[:i] + core[i + 1] + core[i] + core[i + 2:] for i in range(len(core) - 1)} & known - {core})
+    if len(swapped) == 1:  # two letters swapped ("mkae" -> "make"), as the parser reads them
+        return word.replace(core, swapped[0])
+    if len(core) < 4:
         return word
     from rapidfuzz import fuzz, process
 
@@ -537,6 +544,14 @@ def interpret(edit: str) -> EditPlan:
     """
     if not edit or not edit.strip():
         raise SteerError("the edit is empty; say what to change, e.g. \"add a green block on top\"")
+    edit = INTENSIFIER_RIGHT_RE.sub("", EDIT_INTERJECTION_RE.sub("", edit)) or edit  # "no wait, put it right next to ..."
+    edit = re.sub(r"(?i)\bon\s+top\s+of\s+(?:that|this)(?!\s+\w+\s+(?:block|cube|one)\b)", "on top", edit)  # "and a T on top of that"
+    edit = re.sub(r"(?i)^\s*(?:and|plus)\s+(?=(?:a|an|another|one\s+more|\d+)\s)", "add ", edit)  # "and a red block on top": one more
+    count = re.fullmatch(r"(?i)\s*(?:let'?s\s+)?(?:go\s+with|try|use|make\s+it|how\s+about|maybe)?\s*"
+                         rf"(\d+|{'|'.join(w for w in NUMBER_WORDS if w not in ('single', 'pair', 'couple', 'both'))})"
+                         r"(?:\s+(?:blocks|cubes))?(?:\s+instead)?(?:\s+please)?\s*[.!]?\s*", edit)
+    if count:  # "three", "let's go with 7 instead": the structure's count
+        edit = f"use {count.group(1)} blocks instead"
     t = normalize_edit(edit)
     cue = find_reference(t)
     fresh = FRESH_RE.search(t)
