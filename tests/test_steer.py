@@ -822,3 +822,19 @@ def test_no_before_a_noun_is_still_a_negation(tmp_path):
     fam = compile_instruction("build a tower of 3 red blocks", tmp_path, name="fam").path
     with pytest.raises(SteerError, match="negation"):
         steer(fam, "no red blocks please")
+
+
+@pytest.mark.parametrize("base, edits, want", [
+    ("Put the black block on the yellow patch", ["scrap this and start again: put the green cube between the red cube "
+                                                 "and the white cube"], ("fresh", ["between(green;red,white)"])),
+    # "the same patch" is the task's one patch; a cube added to a patch keeps the cube already there
+    ("Place a red cube on the green patch", ["also a blue cube on the same patch"], ("extend", ["on_patch(blue,red,patch:green)"])),
+])
+def test_more_edits_said_in_other_words(tmp_path, base, edits, want):
+    assert _steered(tmp_path, base, *edits)[-1] == want
+
+
+def test_a_question_about_the_robot_is_refused_as_a_question(tmp_path):
+    fam = compile_instruction("Put the red block next to the green block", tmp_path, name="fam").path
+    with pytest.raises(SteerError, match="asks a question"):
+        steer(fam, "wait, can the robot even reach the green block?")

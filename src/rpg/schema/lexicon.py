@@ -79,7 +79,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                  r"|^(?:is|are|does|do)\s+(?:the|a|an|there|any)\s+(?:[a-z0-9]+\s+){0,3}?(?:blocks?|cubes?|boxes|box|tower|stack)\b"
                  r"(?:\s+(?:on|to|in|at|next|behind|under|beside|left|right|stacked|placed|lined))"
                  r"|(?:^|[.!;?]\s+)(?:can|could|will|would|should|may|might)\s+(?:the|a|an|any)\s+[^.!;?]*\bbe\b[^.!;]*\?"
-                 r"|\b(?:tell|show)\s+me\s+(?:how|what|which|where|whether|if|who)\b|\bhow\s+many\b[^.!;]*\?",
+                 r"|\b(?:tell|show)\s+me\s+(?:how|what|which|where|whether|if|who)\b|\bhow\s+many\b[^.!;]*\?"
+                 r"|(?:^|[.!;?,]\s*)(?:can|could|will|would|does|do)\s+(?:the\s+robot|it|the\s+arm|you)\s+(?:even\s+|actually\s+|really\s+)?"
+                 r"(?!put|place|stack|move|build|make|arrange|set|line|lay|slide|push|bring|spell|sort|stand|swap|please|tell|show|give)[a-z]+\b[^.!;]*\?",
      "asks a question: a task is an instruction whose goal says where cubes end up; ask for the arrangement "
      "instead (e.g. \"put the red block on the blue block\")"),
     ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none)\b|n't\b"
@@ -676,7 +678,8 @@ earlier in the instruction."""
 EDIT_FRESH_RE = re.compile(
     r"(?i)\b(?:new task|another task|start over|start fresh|from scratch|unrelated|something (?:completely |totally )?(?:different|else)"
     r"|(?:a\s+)?(?:completely|totally|entirely)\s+(?:different|new|other)\s+(?:task|one|thing)|different task"
-    r"|forget (?:it|that|this|everything|about it)|scratch that|never\s*mind|let'?s do something else)\b[:,.!]?")
+    r"|forget (?:it|that|this|everything|about it)|scr(?:atch|ap) (?:that|this|it|everything)(?:\s+and\s+start\s+(?:again|over))?"
+    r"|(?:let'?s\s+)?start (?:again|anew)|never\s*mind|let'?s do something else)\b[:,.!]?")
 """Words that make an edit a new, unrelated task (Fresh): "start over: ...", "completely
 different task now: ..."."""
 

@@ -166,6 +166,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         ParseError / InfeasibleTask: the resulting task cannot be read or realised.
     """
     ref_schema = None if plan.fresh or reference is None else fam.schema(reference)  # read once
+    patches = sorted({a.color or "gray" for a in ref_schema.assets if a.kind == "goal_patch"}) if ref_schema else []
+    if len(patches) == 1:  # "also a blue cube on the same patch": the task's one patch
+        plan.text = re.sub(r"(?i)\b(?:the\s+)?same\s+(?:goal\s+)?(?:patch|pad|mat|area|spot)\b", f"the {patches[0]} patch", plan.text)
     if ref_schema is not None:
         relational = (rewrite_relation(plan.text, ref_schema) or rewrite_patch(plan.text, ref_schema)
                       or rewrite_region(plan.text, ref_schema))
@@ -321,6 +324,17 @@ def _pair(atom: str) -> frozenset[str] | None:
     return frozenset(m.groups()) if m and m.group(1) != m.group(2) else None
 
 
+def _per_cube(atoms: list[str]) -> list[str]:
+    """Meaning atoms with the cubes of one patch split apart (``on_patch(blue,red,patch:green)``
+    is ``on_patch(blue,patch:green)`` and ``on_patch(red,patch:green)``), so that a cube added
+    to a task's patch keeps the atom of the cube already there."""
+    out = []
+    for a in atoms:
+        m = re.fullmatch(r"on_patch\(([^()]*),(patch:[^(),]+)\)(@\w+)?", a)
+        out += ([f"on_patch({c},{m.group(2)}){m.group(3) or ''}" for c in m.group(1).split(",")] if m else [a])
+    return out
+
+
 def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[TaskSchema, str, str]:
     """An edit that adds to the task in a clause of its own ("also stack a white block on the
     cyan one"): the reference's instruction, then the clause.  Kept only when every atom of
@@ -349,7 +363,7 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
         schema = parse(text)
     except (BadInput, ValueError) as exc:
         raise SteerError(f"cannot add \"{clause}\" to {where}: {str(exc).splitlines()[0]}") from None
-    before, now = Counter(meaning(ref_schema)), Counter(meaning(schema))
+    before, now = Counter(_per_cube(meaning(ref_schema))), Counter(_per_cube(meaning(schema)))
     had = Counter(descriptor(a) for a in ref_schema.assets)
     invented = [d for d in Counter(descriptor(a) for a in schema.assets) - had  # a new cube is one said with "a", "another", a count
                 if not re.search(rf"\b(?:an?|another|one more|\d+|two|three|four)\s+(?:new\s+|more\s+|extra\s+)?"
