@@ -731,6 +731,26 @@ INTENSIFIER_RIGHT_RE = re.compile(r"(?i)\b(?:right|directly|just)\s+(?=next\s+to
                                   r"|above\b|under\b|below\b|between\b|in\s+(?:the\s+)?(?:middle|center|centre)\b)")
 """"Right" that only stresses a place ("right next to the blue block"): not the side "right"."""
 
+EDIT_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
+    (re.compile(r"(?i)\bon\s+top\s+of\s+(?:that|this)(?!\s+\w+\s+(?:block|cube|one)\b)"), "on top"),  # "and a T on top of that"
+    (re.compile(r"(?i)^\s*(?:and|plus)\s+(?=(?:a|an|another|one\s+more|\d+)\s)"), "add "),  # "and a red block on top"
+)
+"""Edits said in fewer words, as the steering reads them: "on top of that" is on top of the task,
+"and a red block on top" adds one."""
+
+EDIT_COUNT_ALONE_RE = re.compile(
+    r"(?i)\s*(?:let'?s\s+)?(?:go\s+with|try|use|make\s+it|how\s+about|maybe)?\s*"
+    rf"(\d+|{'|'.join(w for w in NUMBER_WORDS if w not in ('single', 'pair', 'couple', 'both'))})"
+    r"(?:\s+(?:blocks|cubes))?(?:\s+instead)?(?:\s+please)?\s*[.!]?\s*")
+"""An edit that is a count alone ("three", "let's go with 7 instead"): the structure's count."""
+
+SAME_CUBES_RE = re.compile(r"\b(?:the\s+)?(?:same|these|those|the)\s+(?:\d+\s+)?(?:blocks|cubes|bricks)\b"
+                           r"|\b(?:them|all\s+of\s+them)\b", re.IGNORECASE)
+"""Words of a whole-task edit that keep the task's cubes ("same blocks, but make two towers of four")."""
+
+SAME_PATCH_RE = re.compile(r"(?i)\b(?:the\s+)?same\s+(?:goal\s+)?(?:patch|pad|mat|area|spot)\b")
+"""An edit's "the same patch": the task's one patch."""
+
 EDIT_INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("action", r"\b(?:\d+|ninety|forty[- ]five)\s*(?:degrees?|deg|°)|\bdegrees?\b|\b(?:spin|spins|spinning|twirl\w*|wobble\w*"
                r"|wiggle\w*|shake|shaking|juggle\w*|throw\w*|toss\w*|roll(?:s|ing)?|bounce\w*|knock\w*(?:\s+(?:it|them))?\s+over)\b",

@@ -28,12 +28,14 @@ from rpg.schema.lexicon import (
     EDIT_ANAPHORA_RE,
     EDIT_BESIDE_RE,
     EDIT_CHANGE_VERB_RE,
+    EDIT_COUNT_ALONE_RE,
     EDIT_COUNT_RE,
     EDIT_FRESH_RE,
     EDIT_INEXPRESSIBLE,
     EDIT_INTERJECTION_RE,
     EDIT_LEADING_RE,
     EDIT_REFERS_RE,
+    EDIT_REWRITES,
     EDIT_SHOULD_BE_RE,
     EDIT_VAGUE_RE,
     IGNORABLE,
@@ -545,11 +547,9 @@ def interpret(edit: str) -> EditPlan:
     if not edit or not edit.strip():
         raise SteerError("the edit is empty; say what to change, e.g. \"add a green block on top\"")
     edit = INTENSIFIER_RIGHT_RE.sub("", EDIT_INTERJECTION_RE.sub("", edit)) or edit  # "no wait, put it right next to ..."
-    edit = re.sub(r"(?i)\bon\s+top\s+of\s+(?:that|this)(?!\s+\w+\s+(?:block|cube|one)\b)", "on top", edit)  # "and a T on top of that"
-    edit = re.sub(r"(?i)^\s*(?:and|plus)\s+(?=(?:a|an|another|one\s+more|\d+)\s)", "add ", edit)  # "and a red block on top": one more
-    count = re.fullmatch(r"(?i)\s*(?:let'?s\s+)?(?:go\s+with|try|use|make\s+it|how\s+about|maybe)?\s*"
-                         rf"(\d+|{'|'.join(w for w in NUMBER_WORDS if w not in ('single', 'pair', 'couple', 'both'))})"
-                         r"(?:\s+(?:blocks|cubes))?(?:\s+instead)?(?:\s+please)?\s*[.!]?\s*", edit)
+    for pattern, replacement in EDIT_REWRITES:
+        edit = pattern.sub(replacement, edit)
+    count = EDIT_COUNT_ALONE_RE.fullmatch(edit)
     if count:  # "three", "let's go with 7 instead": the structure's count
         edit = f"use {count.group(1)} blocks instead"
     t = normalize_edit(edit)

@@ -31,7 +31,7 @@ from rpg.errors import BadInput
 from rpg.schema.builtin import parse
 from rpg.schema.edits import recolor
 from rpg.schema.feasibility import check_feasibility
-from rpg.schema.lexicon import COLOR_RE, NO_GOAL_RE
+from rpg.schema.lexicon import COLOR_RE, NO_GOAL_RE, SAME_CUBES_RE, SAME_PATCH_RE
 from rpg.schema.model import TaskSchema
 from rpg.steer.carried import Carried, split
 from rpg.steer.carried import render as render_carried
@@ -168,7 +168,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     ref_schema = None if plan.fresh or reference is None else fam.schema(reference)  # read once
     patches = sorted({a.color or "gray" for a in ref_schema.assets if a.kind == "goal_patch"}) if ref_schema else []
     if len(patches) == 1:  # "also a blue cube on the same patch": the task's one patch
-        plan.text = re.sub(r"(?i)\b(?:the\s+)?same\s+(?:goal\s+)?(?:patch|pad|mat|area|spot)\b", f"the {patches[0]} patch", plan.text)
+        plan = replace(plan, text=SAME_PATCH_RE.sub(f"the {patches[0]} patch", plan.text))
     if ref_schema is not None:
         relational = (rewrite_relation(plan.text, ref_schema) or rewrite_patch(plan.text, ref_schema)
                       or rewrite_region(plan.text, ref_schema))
@@ -248,11 +248,6 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     except BadInput as exc:
         raise SteerError(str(exc).splitlines()[0]) from None
     return schema, instruction, intent_of_ops(plan.ops, ref_spec)
-
-
-SAME_CUBES_RE = re.compile(r"\b(?:the\s+)?(?:same|these|those|the)\s+(?:\d+\s+)?(?:blocks|cubes|bricks)\b|\b(?:them|all\s+of\s+them)\b",
-                           re.IGNORECASE)
-"""Words of a whole-task edit that keep the task's cubes ("same blocks, but make two towers of four")."""
 
 
 def _same_cubes(edit: str, ref: TaskSchema, schema: TaskSchema) -> TaskSchema:
