@@ -1245,3 +1245,19 @@ def test_a_line_s_order_said_by_its_cubes_places(text, expected):
 def test_two_lists_in_different_orders_are_refused():
     with pytest.raises(ParseError, match="two different orders"):
         parse("Arrange red, green and blue in a row: blue, green, red.")
+
+
+@pytest.mark.parametrize("text,expected", [
+    # the place after a second cube is that cube's (it went to the first relation's cube)
+    ("Put the red cube on the green patch, the blue cube on the yellow patch, and the white cube in the center of the "
+     "table.", ["in_region(white,center)", "on_patch(blue,patch:yellow)", "on_patch(red,patch:green)"]),
+    ("stack the red block on the blue block in the back left corner", ["stack(blue,red)@back_left"]),
+    # "the right half" after "the left half of the table" is the table's too
+    ("Move the black cube to the left half of the table and the white cube to the right half.",
+     ["in_region(black,left)", "in_region(white,right)"]),
+    ("Keep the green cube far from the yellow cube.", ["far_from(green,yellow)"]),
+    ("The black block is on the white block, and the white block is on the gray block. Make this true.",
+     ["stack(gray,white,black)"]),
+])
+def test_places_and_closings_said_in_more_words(text, expected):
+    assert meaning(parse(text)) == expected

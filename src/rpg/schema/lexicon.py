@@ -327,8 +327,10 @@ ARTICLE_DROPPED_AFTER: tuple[str, ...] = (
 """Words after which a cube named without its article ("put cyan cube at back right corner of
 table", terse or non-native writing) is read with "the" (:func:`rpg.schema.reading.normalize`)."""
 
-CLOSING_RE = re.compile(r"(?:[,.;:]\s*|\s+)(?:and\s+)?that(?:'s|\s+is|\s+will\s+be)\s+(?:everything|all|it)(?:\s+for\s+now)?\s*[.!]?\s*$")
-"""A closing that says nothing of the goal ("..., and that's everything."): dropped."""
+CLOSING_RE = re.compile(r"(?:[,.;:]\s*|\s+)(?:and\s+)?that(?:'s|\s+is|\s+will\s+be)\s+(?:everything|all|it)(?:\s+for\s+now)?\s*[.!]?\s*$"
+                        r"|(?:[,.;:]\s*|\s+)(?:please\s+)?make\s+(?:this|that|these|it|them|all\s+of\s+this)\s+(?:true|happen|so|hold)"
+                        r"(?:\s+please)?\s*[.!]?\s*$")
+"""A closing that says nothing of the goal ("..., and that's everything.", "... Make this true."): dropped."""
 
 EFFECTOR_RE = re.compile(
     r"(?:,\s*)?\b(?:(?:by\s+)?using|use|with|by)\s+(?:the\s+|your\s+|its\s+|a\s+|one\s+|both\s+|each\s+|another\s+)?"

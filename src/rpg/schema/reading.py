@@ -329,6 +329,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"\b(?:box|cube|block)[\s-]shaped\s+(?=(?:blocks?|cubes?|bricks?)\b)", "", text)  # "the blue box-shaped block"
     text = re.sub(r"\b(spell(?:s|ing)?)(?:\s+out)?\s+the\s+(?:name|word)\b", r"\1", text)  # "spell out the name EVA"
     text = re.sub(r"\b(?:a\s+)?long\s+way\s+(?:away\s+)?from\b", "far from", text)  # "a long way from the orange block"
+    # "keep the green cube far from the yellow cube": where it ends up, said as a state to hold
+    text = re.sub(rf"(?:^|(?<=[.;!]\s))keep\s+(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|brick)\b)", "put ", text)
     # "the table's center", "the table's left side": the place on the table, as "the center of the table" says it
     text = re.sub(r"\bthe\s+(table|workspace)'s\s+(center|centre|middle)\b", r"the \2 of the \1", text)
     text = re.sub(r"\bthe\s+(table|workspace)'s\s+(left|right|front|back|far)\s+(side|edge|half|end|corner)\b", r"the \2 \3 of the \1", text)
@@ -368,8 +370,10 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   r",?\s+(?:each|both)\s+(\d+|two|three|four|five|six)\s+(?:(?:blocks?|cubes?|levels?|stor(?:y|ey|ies|eys))\s+)?(?:high|tall)\b",
                   r"a \2 of \4 \1 blocks and a \2 of \4 \3 blocks", text)
     # "on the left side and the blue block on the right side of the table": each side the table's
-    if re.search(r"\bsides?\s+of\s+the\s+(?:table|workspace)\b", text):
-        text = re.sub(r"\b(on|at|to)\s+the\s+(left|right|front|back)\s+side\b(?!\s+of\b)", r"\1 the \2 side of the table", text)
+    for part in ("side", "half", "edge"):  # "... to the left half of the table and the white cube to the right half"
+        if re.search(rf"\b{part}s?\s+of\s+the\s+(?:table|workspace)\b", text):
+            text = re.sub(rf"\b(on|at|to|in|into|near|along)\s+the\s+(left|right|front|back)\s+{part}\b(?!\s+of\b)",
+                          rf"\1 the \2 {part} of the table", text)
     # "with yellow as the base": a cube of that colour at that end (read as a tower of yellow cubes)
     text = re.sub(rf"\bwith\s+({COLOR_RE})\s+(as|at|on)\s+(the\s+)?(base|bottom|top)\b", r"with a \1 block \2 \3\4", text)
     text = lexicon.LAYER_SYNONYM_RE.sub(lambda m: "bottom " if m.group("low") else "top ", text)

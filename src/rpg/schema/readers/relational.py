@@ -104,12 +104,16 @@ class RelationalReading:
                 self.bottom_top.setdefault("top", self.obj(mn))
         rel_re = "|".join(f"(?P<r{i}>\\b(?:{p})\\b)" for i, (p, _) in enumerate(REL_PATTERNS))
         found = list(re.finditer(rel_re, clause))
-        for rm in found:
+        for k, rm in enumerate(found):
             kind = next(REL_PATTERNS[i][1] for i in range(len(REL_PATTERNS)) if rm.group(f"r{i}"))
             left = [m for m in ms if m.end <= rm.start() and not m.patch]
             right = [m for m in ms if m.start >= rm.end()]
             if kind == "region":  # resolved once the stacks are known
-                group = related[:1] or (_listed_group(clause, left) if left else [])
+                prev = found[k - 1].end() if k else None
+                objects = [m for m in ms if prev is not None and m.start >= prev][:1]  # the previous relation's object
+                own = [m for m in left if prev is not None and m.start >= prev and m not in objects and (m.color or m.label)]
+                # "red on the green patch and the white cube in the centre": the cube said after the last relation
+                group = own[-1:] or related[:1] or (_listed_group(clause, left) if left else [])
                 self.regions.append((group, rm.group(0)[len("region_"):]))
                 continue
             after = clause[rm.end():].strip()
