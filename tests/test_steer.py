@@ -838,3 +838,20 @@ def test_a_question_about_the_robot_is_refused_as_a_question(tmp_path):
     fam = compile_instruction("Put the red block next to the green block", tmp_path, name="fam").path
     with pytest.raises(SteerError, match="asks a question"):
         steer(fam, "wait, can the robot even reach the green block?")
+
+
+@pytest.mark.parametrize("base, edit, want", [
+    ("Put the red block next to the blue block and the green block behind the blue block", "get rid of the green block",
+     ("tweak", ["next_to(blue,red)"])),
+    ("Put the red block on the green patch and the blue block in the back left corner", "take the red one away",
+     ("tweak", ["in_region(blue,back_left)"])),
+])
+def test_a_cube_removed_from_related_cubes_takes_its_relations_with_it(tmp_path, base, edit, want):
+    """Removing a cube from a task of relations was refused ("not a structure the builtin steering edits in place")."""
+    assert _steered(tmp_path, base, edit) == [want]
+
+
+def test_removing_the_cube_every_relation_needs_is_refused(tmp_path):
+    fam = compile_instruction("Put the red block next to the blue block", tmp_path, name="fam").path
+    with pytest.raises(SteerError, match="no goal left"):
+        steer(fam, "remove the blue block")

@@ -20,6 +20,7 @@ from rpg.domain.predicates import (
     Predicate,
     Stack,
 )
+from rpg.errors import BadInput
 from rpg.schema.builder import DEFAULT_COLORS
 from rpg.schema.lexicon import COLOR_RE, EDIT_ADDITIVE_RE, EDIT_RELATIONS, PAIRWISE_RELATIONS
 from rpg.schema.model import TaskSchema
@@ -312,3 +313,51 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     clauses = [f"place the {c} block {_region_phrase(r)}" for c, r in placed]
     text = ", then ".join(clauses) + extra
     return text[0].upper() + text[1:], intent
+
+
+def _clause(schema: TaskSchema, p: Predicate) -> str | None:
+    """One conjunct of a relational task as a clause the parser reads back, or None."""
+    patches = {a.name: a.color or "gray" for a in schema.assets if a.kind == "goal_patch"}
+    if p.name in PHRASES and hasattr(p, "b"):
+        return f"place {_phrase(schema, p.a)} {PHRASES[p.name]} {_phrase(schema, p.b)}"
+    if isinstance(p, InRegion):
+        return f"place {_phrase(schema, p.a)} {_region_phrase(p.region)}"
+    if type(p) is OnPatch and p.patch in patches:
+        return f"place {_phrase(schema, p.a)} on the {patches[p.patch]} patch"
+    return None
+
+
+def remove_cubes(edit: str, schema: TaskSchema, colors: list[str], parse) -> tuple[str, TaskSchema] | None:
+    """A relational task (relations, regions, patches) with the cubes of ``colors`` taken away
+    ("get rid of the green block"): every conjunct about them is dropped, the rest kept and
+    stated again.  None when the task is not made of such conjuncts.
+
+    Raises:
+        SteerError: a colour names no one cube of the task, or nothing would be left.
+    """
+    from rpg.schema.meaning import meaning
+
+    parts = schema.goal_predicate().conjuncts()
+    cubes = [a for a in schema.assets if a.kind == "colored_cube" and a.color in colors]
+    if sorted({a.color for a in cubes}) != sorted(set(colors)) or len(cubes) != len(set(colors)):
+        raise SteerError(f"cannot apply the edit \"{edit.strip()[:80]}\": each colour it removes must name one cube of the "
+                         "task; name the cube to remove")
+    gone = {a.name for a in cubes}
+    kept = [p for p in parts if not set(p.object_names()) & gone]
+    clauses = [_clause(schema, p) for p in kept]
+    if any(c is None for c in clauses) or len(kept) == len(parts):
+        return None
+    if not clauses:
+        raise SteerError(f"cannot apply the edit \"{edit.strip()[:80]}\": without the {', '.join(sorted(set(colors)))} cube "
+                         "the task has no goal left; state the whole new task in the edit")
+    text = ", then ".join(clauses)
+    text = text[0].upper() + text[1:]
+    try:
+        new = parse(text)
+    except BadInput as exc:
+        raise SteerError(str(exc).splitlines()[0]) from None
+    names = {a.color for a in cubes}
+    want = sorted(a for a in meaning(schema) if not set(re.findall(r"[a-z]+", a)) & names)
+    if sorted(meaning(new)) != want:
+        return None
+    return text, new

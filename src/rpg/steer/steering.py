@@ -58,7 +58,13 @@ from rpg.steer.family import (
     snapshot_of,
     task_hash,
 )
-from rpg.steer.relations import relation_of, rewrite_patch, rewrite_region, same_assets
+from rpg.steer.relations import (
+    relation_of,
+    remove_cubes,
+    rewrite_patch,
+    rewrite_region,
+    same_assets,
+)
 from rpg.steer.relations import rewrite as rewrite_relation
 from rpg.steer.spec import Item, TaskSpec, extract
 
@@ -199,6 +205,10 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         subject = next(a for a in ref_schema.assets if a.name == rel.subject)  # "make it blue": the cube the relation moves
         if subject.color:
             plan.ops[0].params["select"] = {"color": subject.color}
+    if ref_spec is None and all(o.op == "remove" and set(o.params["select"]) == {"color"} for o in plan.ops):
+        removed = remove_cubes(plan.text, ref_schema, [o.params["select"]["color"] for o in plan.ops], parse)
+        if removed is not None:  # "get rid of the green block" of cubes related to each other: the rest kept
+            return removed[1], removed[0], intent_of_ops(plan.ops)
     if ref_spec is None and all(o.op == "recolor" and "color" in o.params["select"] for o in plan.ops):
         schema = ref_schema
         for o in plan.ops:
