@@ -1261,3 +1261,34 @@ def test_two_lists_in_different_orders_are_refused():
 ])
 def test_places_and_closings_said_in_more_words(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # found by a helper attacking the session's changes
+    ("put the red block over near the blue block", ["next_to(blue,red)"]),  # "over" as an adverb is no "on top of"
+    ("put the red block at the midpoint between the blue and the green block", ["between(red;blue,green)"]),
+    ("put the red block centrally between the blue and green blocks", ["between(red;blue,green)"]),
+    ("put the red block in the middle of the table between the blue and green blocks",
+     ["between(red;blue,green)", "in_region(red,center)"]),  # the table's middle said: kept
+    ("make a row of blue, red and green, starting from the left with blue", ["line[left_to_right](blue,red,green)"]),
+    ("put the red block on the green patch and the blue block on the same patch", ["on_patch(blue,red,patch:green)"]),
+    ("line up red, green and blue from left to right: blue, green, red", ["line[left_to_right](blue,green,red)"]),
+])
+def test_attacked_phrasings_read_as_said(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,match", [
+    ("build a tower of over three blocks", "quantity"),
+    ("build a tower with at least 3 red blocks", "quantity"),
+    ("build a centered stack of red, blue and green", "'centered'"),
+    # two towers said with their sides were read as one tower and a relation
+    ("build a tower of red and blue on the left and a tower of green and yellow on the right", "2 towers"),
+    ("build a red tower on the left and a blue tower on the right", "2 towers"),
+    # "the red block ... a red block" is two red cubes (one cube was put on both patches)
+    ("put the red block on the green patch and a red block on the yellow patch", "2 red cubes"),
+    ("make a row of red, green and blue with red on the left, blue in the middle and blue on the right", "two cubes in one place"),
+])
+def test_attacked_phrasings_refused(text, match):
+    with pytest.raises(ParseError, match=match):
+        parse(text)

@@ -855,3 +855,25 @@ def test_removing_the_cube_every_relation_needs_is_refused(tmp_path):
     fam = compile_instruction("Put the red block next to the blue block", tmp_path, name="fam").path
     with pytest.raises(SteerError, match="no goal left"):
         steer(fam, "remove the blue block")
+
+
+@pytest.mark.parametrize("base, edit, want", [
+    ("put the red block on the green patch", "and the blue block in the front right corner",
+     ("extend", ["in_region(blue,front_right)", "on_patch(red,patch:green)"])),
+    ("Put the red block in the front left corner", "and the blue block on the green patch",
+     ("extend", ["in_region(red,front_left)", "on_patch(blue,patch:green)"])),
+])
+def test_an_addition_opened_by_and_keeps_the_task(tmp_path, base, edit, want):
+    """It was read as a whole new task (the base dropped)."""
+    assert _steered(tmp_path, base, edit) == [want]
+
+
+@pytest.mark.parametrize("base, edit, match", [
+    ("Put the red block in the front left corner", "also a red block in the front right corner", "cannot add"),
+    ("build a tower of red, blue and green", "same blocks, but make a row", "keeps the task's 3 cubes"),
+    ("stack the red block on the blue block", "same blocks, but make two towers of four", "keeps the task's 2 cubes"),
+])
+def test_edits_that_would_move_the_wrong_cube_or_change_the_cubes_are_refused(tmp_path, base, edit, match):
+    fam = compile_instruction(base, tmp_path, name="fam").path
+    with pytest.raises(SteerError, match=match):
+        steer(fam, edit)

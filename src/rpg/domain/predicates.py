@@ -364,7 +364,7 @@ class On(Predicate):
     b: str
     name: ClassVar[str] = "on"
     cue: ClassVar[str] = r"\b(?:stack\w*|tower\w*|pile\w*|on\s+top|onto|atop|upon|on|above|over|under|below|beneath|underneath)\b"
-    phrases: ClassVar[str] = r"on top of|onto|on to|atop|above|over(?! to\b| there\b| here\b)|on"
+    phrases: ClassVar[str] = r"on top of|onto|on to|atop|above|over(?! to\b| there\b| here\b| near\b| next\b| by\b| beside\b| \d| one\b| two\b| three\b| four\b| five\b| six\b)|on"
     phrase: ClassVar[str] = "on top of"
     reverse_phrases: ClassVar[str] = r"under|underneath|beneath|below"
     """How an instruction states the relation with its cubes swapped ("X under Y": Y on X)."""

@@ -154,7 +154,8 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
     towers = len(re.findall(r"\b(?:a|an|1|another)\s+(?:[a-z0-9\-]+\s+){0,2}?(?:tower|stack|column|pillar)\b", text))
     towers += len(re.findall(r"\b(?:tower|stack|column|pillar)\s+of\s+\w+\s+and\s+(?:1|another)\b(?!\s+(?:[a-z]+\s+)?"
                              r"(?:block|cube|tower|stack|column|pillar))", text))  # "one tower of red and one of green"
-    if re.search(r"\b(?:on|onto|above|atop|over|under|below|beneath|underneath)\b", text):
+    if re.search(r"\b(?:on|onto|above|atop|over|under|below|beneath|underneath)\b"
+                 r"(?!\s+the\s+(?:far\s+|very\s+)?(?:left|right|front|back|middle|center|centre|table)\b|\s+@region)", text):
         towers = 0  # a stack put on a stack is one tower: leave counting them to the structure's reader
     towers += sum(int(n) for n in re.findall(r"\b(\d+)\s+(?:[a-z\-]+\s+){0,2}?(?:towers|stacks|columns|pillars)\b", text))
     if towers > 1:
@@ -366,7 +367,11 @@ _NOT_SINGLE_BEFORE = re.compile(r"(?:\d+|two|three|four|five|six|seven|eight|nin
 """Words before a bare "red block" that make it no single cube ("two red block", typo'd plurals)."""
 
 
-_LIST_GAP = re.compile(r"\s*(?:,|;|:)?\s*(?:(?:and|then|and\s+then)\s+)?")
+_RELATION_BEFORE = re.compile(r"\b(?:on|onto|atop|upon|over|above|under|below|beneath|underneath|of|to|behind|beside|near|from"
+                              r"|between|by|at|in|into)\s+$")
+"""A relation's word just before a cube mention: the mention is the relation's object."""
+
+_LIST_GAP = re.compile(r"\s*[,;:]\s*(?:(?:and|then|and\s+then)\s+)?")
 """What stands between two items of a list of cubes ("red block, red block and blue block")."""
 
 
@@ -379,10 +384,12 @@ def _single_color_bounds(text: str) -> dict[str, int]:
     colors = Counter(c for _, c in color_mentions(text))
     seen: Counter = Counter()
     allowed: Counter = Counter()
-    end = None
+    prev: re.Match | None = None
     for m in SINGLE_CUBE_RE.finditer(text):
-        listed = end is not None and _LIST_GAP.fullmatch(text[end:m.start()]) is not None
-        end = m.end()
+        # an item of a list ("red block, red block, blue block"), not a relation's object before a comma
+        listed = (prev is not None and _LIST_GAP.fullmatch(text[prev.end():m.start()]) is not None
+                  and not _RELATION_BEFORE.search(text[:prev.start()]))
+        prev = m
         if not m.group("det") and (_NOT_SINGLE_BEFORE.search(text[:m.start()]) or m.group("mod")):
             continue
         c = canon_color(m.group("c"))
@@ -435,7 +442,7 @@ def account_named(text: str, schema: TaskSchema) -> list[dict]:
         raise UnaccountedMention(f"the {', '.join(missing)} cube(s) it names have no place in that task")
     cubes = Counter(a.color for a in schema.assets if a.kind != "goal_patch" and a.color)
     for color, n in _single_color_bounds(text).items():
-        if cubes[color] > n:
+        if cubes[color] != n:  # "the red block ... a red block": two; "a red block ... the red block": one
             raise UnaccountedMention(f"it names {'one' if n == 1 else n} {color} cube{'s' if n > 1 else ''} but the task "
                                      f"read has {cubes[color]}")
     for color, n in _counted_color_bounds(text).items():

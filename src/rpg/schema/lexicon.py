@@ -67,7 +67,7 @@ SYNONYMS: dict[str, str] = {
     "subsequently": "then", "organize": "arrange", "organise": "arrange", "organized": "arranged",
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
     "uppermost": "topmost", "lowermost": "bottommost", "upon": "on", "right-hand": "right", "left-hand": "left",
-    "midpoint": "center", "centrally": "at the center of the table",
+    "midpoint": "center",
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
@@ -95,7 +95,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "is about time: a task's goal is checked once, at the end of the episode, with no clock or duration"),
     ("quantity", r"\b(?:\d+(?:\.\d+)?\s*(?:cm|mm)\b|(?:centi|milli)?(?:meters?|metres?)|inch(?:es)?|feet|foot"
                  r"|cms?|few|fewer|most|majority|percent|(?<!left\s)(?<!right\s)(?<!front\s)(?<!back\s)(?<!rear\s)half|halves|several|many|much|enough|plenty|numerous"
-                 r"|as\s+(?:high|tall|many|much|far|close|long)\s+as\s+(?:you|it|possible|can))\b",
+                 r"|as\s+(?:high|tall|many|much|far|close|long)\s+as\s+(?:you|it|possible|can)"
+                 r"|(?:over|more\s+than|at\s+least|at\s+most|fewer\s+than|less\s+than|up\s+to|under)\s+"
+                 r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?=\s+(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|high|tall|levels?)\b))\b",
      "is a measured or vague quantity: rpg's relations are qualitative (next to, left of, far from) and "
      "its counts exact"),
     ("size", r"\b(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge|giant|mini|heavy|heavier"
@@ -365,7 +367,7 @@ END_SIDE_DIRECTION: dict[str, str] = {"left": "left to right", "right": "right t
 """The side a sequence starts at -> the direction words it runs in (:data:`END_SIDE_RE`)."""
 
 START_SIDE_RE = re.compile(r"\b(?:starting|beginning|going|counting|reading)\s+(?:from|at)\s+the\s+(?:far\s+|very\s+)?"
-                           r"(?P<side>left|right|front|back)(?:\s+end)?\b(?!\s+(?:side|edge|corner|half|part|of)\b)")
+                           r"(?P<side>left|right|front|back)(?:\s+end)?\b(?!\s+(?:side|edge|corner|half|part|of)\b)(?!\s*,?\s*with\b)")
 """A listed sequence's direction given by the side it starts from ("red, green and blue,
 starting from the left"): read as the direction words (:data:`END_SIDE_DIRECTION`). Not a place
 ("starting at the left edge of the table")."""
@@ -734,7 +736,7 @@ INTENSIFIER_RIGHT_RE = re.compile(r"(?i)\b(?:right|directly|just)\s+(?=next\s+to
 """"Right" that only stresses a place ("right next to the blue block"): not the side "right"."""
 
 EDIT_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
-    (re.compile(r"(?i)\bon\s+top\s+of\s+(?:that|this)(?!\s+\w+\s+(?:block|cube|one)\b)"), "on top"),  # "and a T on top of that"
+    (re.compile(r"(?i)\bon\s+top\s+of\s+(?:that|this)(?!\s+\w+\s+(?:block|cube|one)\b)"), "on top of the tower"),  # "and a T on top of that"
     (re.compile(r"(?i)^\s*(?:and|plus)\s+(?=(?:a|an|another|one\s+more|\d+)\s)"), "add "),  # "and a red block on top"
 )
 """Edits said in fewer words, as the steering reads them: "on top of that" is on top of the task,

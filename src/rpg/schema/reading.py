@@ -329,15 +329,31 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"\b(?:box|cube|block)[\s-]shaped\s+(?=(?:blocks?|cubes?|bricks?)\b)", "", text)  # "the blue box-shaped block"
     text = re.sub(r"\b(spell(?:s|ing)?)(?:\s+out)?\s+the\s+(?:name|word)\b", r"\1", text)  # "spell out the name EVA"
     text = re.sub(r"\b(?:a\s+)?long\s+way\s+(?:away\s+)?from\b", "far from", text)  # "a long way from the orange block"
+    # "... on the green patch and the blue block on the same patch": the one patch named before
+    for m in reversed(list(re.finditer(r"\bthe\s+same\s+(?:goal\s+)?(?:patch|pad|mat|tile|area)\b", text))):
+        before = {c for c in re.findall(rf"\b({COLOR_RE})\s+(?:goal\s+)?(?:patch|pad|mat|tile|area)\b", text[:m.start()])}
+        if len(before) == 1:
+            text = text[:m.start()] + f"the {before.pop()} patch" + text[m.end():]
     # "keep the green cube far from the yellow cube": where it ends up, said as a state to hold
     text = re.sub(rf"(?:^|(?<=[.;!]\s))keep\s+(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|brick)\b)", "put ", text)
     # "the table's center", "the table's left side": the place on the table, as "the center of the table" says it
     text = re.sub(r"\bthe\s+(table|workspace)'s\s+(center|centre|middle)\b", r"the \2 of the \1", text)
     text = re.sub(r"\bthe\s+(table|workspace)'s\s+(left|right|front|back|far)\s+(side|edge|half|end|corner)\b", r"the \2 \3 of the \1", text)
+    # "at the midpoint between", "in the middle between", "centrally between": only between
+    text = re.sub(r"\b(?:(?:at|in)\s+the\s+(?:midpoint|middle|center|centre)|centrally|midway|cent(?:er|r)ed)"
+                  r"\s+(?=between\b)", "", text)
+    text = re.sub(r"\bcentrally\b", "at the center of the table", text)  # "place red and green centrally"
+    text = re.sub(r"\bcent(?:er|r)ed\s+(?:on|in)\s+the\s+(table|workspace)\b", r"at the center of the \1", text)
     # "a centered stack", "in one centred tower": the structure at the centre of the table
     text = re.sub(r"\bcent(?:er|r)ed\s+(tower|stack|column|pile|row|line|pyramid|circle|ring|grid|square|wall)"
-                  r"(\s+of\s+(?:\d+|two|three|four|five|six|seven|eight|nine|ten)\s+(?:[a-z]+\s+)?(?:blocks|cubes|bricks))?\b",
+                  r"(\s+of\s+(?:\d+|two|three|four|five|six|seven|eight|nine|ten)\s+(?:[a-z]+\s+)?(?:blocks|cubes|bricks))?\b"
+                  r"(?=\s*(?:[.,;!]|$|with\b|using\b|where\b|in\s+which\b))",
                   r"\1\2 at the center of the table", text)
+    centred = re.search(r"\bcent(?:er|r)ed\b", text)
+    if centred:  # "a centered stack of red, blue and green", "..., centered": centred where? (it was dropped)
+        raise ParseError(f"'centered' in \"{original[:80]}\" does not say where the centre is for the builtin parser; say "
+                         "\"in the center of the table\" after the structure (e.g. \"build a tower of red and blue in the "
+                         "center of the table\"), or use --model")
     # "the black cube and the white cube should be far apart": one far from the other
     text = re.sub(rf"\b(the\s+(?:{COLOR_RE})\s+(?:block|cube))\s+and\s+(the\s+(?:{COLOR_RE})\s+(?:block|cube))\s+"
                   r"((?:should|must|need\s+to|have\s+to)\s+(?:be|end\s+up)|are|end\s+up)\s+far\s+apart\b", r"\1 \3 far from \2", text)
@@ -384,6 +400,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     # "into the middle of the black patch": on it (a cube on a patch is on it wherever it stands there)
     text = re.sub(rf"\b(?:in|into|onto|on|at|to)\s+the\s+(?:middle|center|centre)\s+of\s+the\s+((?:{COLOR_RE})\s+(?:goal\s+|target\s+)?patch)\b",
                   r"on the \1", text)
+    text = re.sub(rf"\b(starting|beginning)\s+(?:from|at)\s+the\s+(left|right|front|back)(?:\s+end)?\s*,?\s*with\s+(?:the\s+)?({COLOR_RE})\b",
+                  r"\1 with \3 on the \2", text)  # "starting from the left with blue": blue the first from the left
     first = re.search(rf"\b(?:{COLOR_RE})\b", text)  # "... starting with red on the left": red first, left to right
     text = lexicon.END_SIDE_RE.sub(lambda m: f"{m.group('verb')} with {m.group('c')} from {lexicon.END_SIDE_DIRECTION[m.group('side')]}"
                                    if first and first.group(0) == m.group("c") else m.group(0), text)

@@ -571,7 +571,8 @@ def interpret(edit: str) -> EditPlan:
         return EditPlan(edit, cue, ops)  # no ops with a back-reference: return to that version
     # an edit that refers to the task ("it", "the orange one") or adds to it ("also", "too") is
     # no whole new task: the task's own terms or an addition read it, else it is refused
-    return EditPlan(edit, cue, standalone=not (REFERS_RE.search(t) or EDIT_ADDITIVE_RE.search(t) or EDIT_VERB_RE.search(t)))
+    return EditPlan(edit, cue, standalone=not (REFERS_RE.search(t) or EDIT_ADDITIVE_RE.search(t) or EDIT_VERB_RE.search(t)
+                                               or re.match(r"\s*(?:and|plus)\b", t)))  # "and the blue block in the corner"
 
 
 REFERS_RE = EDIT_REFERS_RE

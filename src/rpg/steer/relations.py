@@ -300,6 +300,8 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         placed.append((named[0], region))  # "and the blue block in the front right corner": one more cube
         intent = "extend"
     elif region is not None:
+        if re.search(rf"\b(?:an?|another|one\s+more)\s+(?:(?:{COLOR_RE})\s+)?(?:block|cube)\b", t):
+            return None  # "also a red block in the front right corner": one more cube, not this one moved
         which = [i for i, (c, _) in enumerate(placed) if c in named] or ([0] if len(placed) == 1 else [])
         if len(which) != 1 or placed[which[0]][1] == region:
             return None

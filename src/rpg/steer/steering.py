@@ -271,6 +271,9 @@ def _same_cubes(edit: str, ref: TaskSchema, schema: TaskSchema) -> TaskSchema:
         return schema
     old = [a for a in ref.assets if a.kind != "goal_patch"]
     new = [a for a in schema.assets if a.kind != "goal_patch"]
+    if len(old) != len(new) and re.search(r"\bsame\s+(?:\d+\s+)?(?:blocks|cubes|bricks)\b", edit, re.IGNORECASE):
+        raise SteerError(f"the edit keeps the task's {len(old)} cubes, but the task it states has {len(new)}; say how many "
+                         "cubes each part has, or use --model")
     if len(old) != len(new) or any(a.kind != "colored_cube" for a in old + new):
         return schema
     colors = {a.color for a in old}
@@ -370,9 +373,10 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
         raise SteerError(f"cannot add \"{clause}\" to {where}: {str(exc).splitlines()[0]}") from None
     before, now = Counter(_per_cube(meaning(ref_schema))), Counter(_per_cube(meaning(schema)))
     had = Counter(descriptor(a) for a in ref_schema.assets)
+    opened = re.match(r"\s*(?:and|also|plus)\b", plan.text, re.IGNORECASE)  # "and the blue block in the corner": one more
     invented = [d for d in Counter(descriptor(a) for a in schema.assets) - had  # a new cube is one said with "a", "another", a count
-                if not re.search(rf"\b(?:an?|another|one more|\d+|two|three|four)\s+(?:new\s+|more\s+|extra\s+)?"
-                                 rf"{re.escape(d.split(':')[-1])}\b", clause, re.IGNORECASE)]
+                if not re.search(rf"\b(?:an?|another|one more|\d+|two|three|four{'|the' if opened else ''})\s+"
+                                 rf"(?:new\s+|more\s+|extra\s+)?{re.escape(d.split(':')[-1])}\b", clause, re.IGNORECASE)]
     if invented:
         raise SteerError(f"cannot add \"{clause}\" to {where}: together they read as {schema.goal_summary!r}, with "
                          f"{', '.join(invented)} nobody named; name it, or state the whole new task in the edit")

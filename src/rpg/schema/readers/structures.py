@@ -397,7 +397,7 @@ def recognize_piles(f: Features, b: Builder) -> bool:
 
 
 _END_ROLE_RE = re.compile(rf"\b(?P<c>{COLOR_RE})(?:\s+(?:block|cube|one))?\s+(?:(?:is|goes|sits|stands|being|should\s+be|must\s+be)\s+)?"
-                          r"(?:(?:on|at|to)\s+the\s+(?:far\s+|very\s+)?(?P<side>left|right|middle|center|centre)(?:\s+(?:end|side))?"
+                          r"(?:(?:on|at|to|in)\s+the\s+(?:far\s+|very\s+)?(?P<side>left|right|middle|center|centre)(?:\s+(?:end|side))?"
                           r"|(?<=is\s)(?P<side2>left|right))\b(?!\s+(?:of|half|part|corner|edge)\b)")
 """A cube of a line given its place in it ("with red on the left", "blue on the far right", "green
 in the middle", "orange is leftmost": "leftmost" reads "left")."""
@@ -415,7 +415,9 @@ def _order_by_end_roles(f: Features) -> list[str] | None:
         side = {"center": "middle", "centre": "middle"}.get(m.group("side") or m.group("side2"), m.group("side") or m.group("side2"))
         c = canon_color(m.group("c"))
         if place.get(side, c) != c or c in place.values() and place.get(side) != c:
-            return None  # two cubes at one end, or one cube at two
+            raise ParseError(f"\"{f.original[:80]}\" puts two cubes in one place of the line, or one cube in two "
+                             "(say each cube's place once: \"red on the left, green in the middle, blue on the right\"), "
+                             "or use --model")
         place[side] = c
     if not ({"left", "right"} & set(place)) or (len(colors) == 2 and "middle" in place):
         return None
@@ -444,9 +446,10 @@ def _list_the_direction_orders(f: Features, lists: list[re.Match]) -> re.Match |
     seqs = [tuple(canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", m.group(1))) for m in lists]
     if len(set(seqs)) == 1:
         return lists[0]
-    near = [m for m in lists if re.search(rf"{_DIRECTION_WORDS}\s*[:,]?\s*(?:the\s+)?$", f.text[:m.start()])
-            or re.match(rf"\s*,?\s*{_DIRECTION_WORDS}\b", f.text[m.end():])]
-    if len(near) == 1:
+    after_colon = [m for m in lists if re.search(rf"{_DIRECTION_WORDS}\s*:\s*(?:the\s+)?$", f.text[:m.start()])]
+    near = after_colon or [m for m in lists if re.search(rf"{_DIRECTION_WORDS}\s*[:,]?\s*(?:the\s+)?$", f.text[:m.start()])
+                           or re.match(rf"\s*,?\s*{_DIRECTION_WORDS}\b", f.text[m.end():])]
+    if len(near) == 1:  # "red, green and blue from left to right: blue, green, red": the list after the colon
         return near[0]
     raise ParseError(f"\"{f.original[:80]}\" lists the cubes in two different orders "
                      f"({'; '.join(', '.join(s) for s in seqs[:2])}); say the order once (e.g. \"from left to right: "
