@@ -1292,3 +1292,9 @@ def test_attacked_phrasings_read_as_said(text, expected):
 def test_attacked_phrasings_refused(text, match):
     with pytest.raises(ParseError, match=match):
         parse(text)
+
+
+def test_finish_with_outside_a_sequence_is_not_read_as_one():
+    """"a tower of four blocks and finish with red" compiled a tower in any order (red's place dropped)."""
+    with pytest.raises(ParseError):
+        parse("build a tower of four blocks and finish with red")

@@ -416,7 +416,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"\bfollowed\s+by\b|\btopped\s+(?:off\s+)?(?:with|by)\b", "then", text)
     # "and finish with a white cube at the top": the last of a sequence
     text = re.sub(r"\b(?:(and)\s+)?(?:finish|end)(?:\s+(?:it|them|the\s+(?:tower|stack|row|line)))?(?:\s+off)?\s+with\b",
-                  lambda m: f"{m.group(1) or ''} then".strip(), text)
+                  lambda m: f"{m.group(1) or ''} then".strip() if re.search(r"\b(?:then|add)\b", m.string[:m.start()])
+                  else m.group(0), text)  # only after a sequence ("add yellow, then orange, and finish with white")
     text = re.sub(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+of\s+the\s+(?=\w+\s+(?:blocks|cubes|boxes)\b)", r"\1 ", text)
     text = re.sub(r"\b(?:to|on|at)\s+the\s+(left|right)(?:[\s-]+hand)?\s+side\s+of\b(?!\s+the\s+(?:table|workspace)\b)",
                   r"to the \1 of", text)
