@@ -378,9 +378,9 @@ _LIST_GAP = re.compile(r"\s*[,;:]\s*(?:(?:and|then|and\s+then)\s+)?")
 def _single_color_bounds(text: str) -> dict[str, int]:
     """Colours that normalised ``text`` names only as single cubes ("the green block", "a red
     cube", "red block"), mapped to how many cubes of that colour the words allow, read in order:
-    each indefinite ("a", "another") and each "other"/"second" is one more cube, and a definite
-    mention ("the green block", said any number of times) is one cube only when none came before
-    it.  The task may hold no more."""
+    each indefinite ("a", "another"), each "other"/"second" and each item of a list after a comma
+    is one more cube, and a definite mention ("the green block", said any number of times) is one
+    cube only when none came before it.  The task must hold exactly that many."""
     colors = Counter(c for _, c in color_mentions(text))
     seen: Counter = Counter()
     allowed: Counter = Counter()
