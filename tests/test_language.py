@@ -1204,6 +1204,9 @@ def test_what_a_chain_or_a_side_leaves_unclear_is_refused(text, match):
     ("move the red block closer to the blue block", "closer to"),
     ("move the red block a bit to the left", "a bit to the left"),
     ("push the two blocks closer together", "closer together"),
+    # a cube picked by what stands on it, or by a relation said as a description
+    ("put the red block on the block that the blue block is on", "the block that the blue block is on"),
+    ("the red block, which is next to the blue one, goes on the green patch", "which is next to"),
 ])
 def test_what_only_the_current_scene_says_is_refused_as_a_reference(text, words):
     with pytest.raises(Inexpressible) as err:

@@ -132,6 +132,11 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"(?:'s|\s+is|\s+are|\s+was|\s+were|\s+sits|\s+lies|\s+stands|\s+rests)?\s+(?:currently\s+|now\s+|still\s+|already\s+)?"
                   r"(?:sitting\s+|lying\s+|resting\s+|standing\s+|placed\s+)?(?:on|in|at|inside|next\s+to|near|beside|under|underneath|below"
                   r"|beneath|behind|in\s+front\s+of|(?:to\s+the\s+)?(?:left|right)\s+of)\b"
+                  # "the block that the blue block is on", ", which is next to the blue one,": where cubes stand now
+                  r"|\bthe\s+(?:[a-z]+\s+)?(?:block|cube|one)\s+(?:that|which)\s+the\s+(?:[a-z]+\s+)?(?:block|cube|one)\s+"
+                  r"(?:is|was|sits|stands|rests|lies)\s+(?:on|in|under|beneath|below|next\s+to|beside|behind|near)\b"
+                  r"|,\s*(?:which|that)\s+(?:is|are|was|were)\s+(?:currently\s+|now\s+|already\s+)?(?:next\s+to|beside|near|behind"
+                  r"|in\s+front\s+of|(?:to\s+the\s+)?(?:left|right)\s+of)\b"
                   # "take the block from the green patch": a cube picked by where it stands now
                   r"|\b(?:take|move|pick|grab|lift|remove|get|bring|slide|push)\s+(?:up\s+)?the\s+(?:[a-z]+\s+){0,2}?(?:blocks?|cubes?|box"
                   r"|boxes|bricks?|ones?)\s+(?:up\s+)?from\s+(?:the\s+|its\s+|their\s+)",
