@@ -35,6 +35,7 @@ CORPUS = HERE / "instructions.yaml"  # the development split
 UNSEEN = HERE / "unseen.yaml"
 STRANGER = HERE / "stranger.yaml"  # attack material written for the project (development, not a corpus source)
 STRANGER2 = HERE / "stranger2.yaml"  # a second stranger's set, written 2026-11-23 (development as well)
+STRANGER3 = HERE / "stranger3.yaml"  # a third stranger's set, written 2026-11-23 (development as well)
 SPLITS = HERE / "splits.yaml"
 
 # What a refusal message must say to be refused "for the right reason", per must-refuse class.
@@ -67,8 +68,8 @@ def load_split(name: str) -> list[dict]:
     """The entries of one split ('dev' or 'unseen'); the unseen file must match its frozen hash."""
     if name == "dev":
         return yaml.safe_load(CORPUS.read_text())["instructions"]
-    if name in ("stranger", "stranger2"):
-        path = STRANGER if name == "stranger" else STRANGER2
+    if name in ("stranger", "stranger2", "stranger3"):
+        path = {"stranger": STRANGER, "stranger2": STRANGER2, "stranger3": STRANGER3}[name]
         return [{"source": name, **e} for e in yaml.safe_load(path.read_text())["instructions"]]
     splits = yaml.safe_load(SPLITS.read_text())
     want, got = splits["unseen"]["sha256"], sha256(UNSEEN)
@@ -221,7 +222,8 @@ def run_split(name: str, show: str = "none") -> Counter:
                   + (f"\n    class:    {cls}" if cls else ""))
     label = {"dev": "DEVELOPMENT split (instructions.yaml)", "unseen": "UNSEEN split (unseen.yaml, frozen)",
              "stranger": "STRANGER set (stranger.yaml, development material)",
-             "stranger2": "STRANGER set 2 (stranger2.yaml, development material)"}[name]
+             "stranger2": "STRANGER set 2 (stranger2.yaml, development material)",
+             "stranger3": "STRANGER set 3 (stranger3.yaml, development material)"}[name]
     _table(f"{label}: {len(by_source)} sources", by_source, counts)
     n_plain = sum(plain.values())
     if n_plain:
@@ -255,7 +257,7 @@ def run(show: str = "wrong", split: str = "dev") -> Counter:
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--split", default="dev", choices=["dev", "unseen", "stranger", "stranger2", "all"])
+    ap.add_argument("--split", default="dev", choices=["dev", "unseen", "stranger", "stranger2", "stranger3", "all"])
     ap.add_argument("--show", default=None, choices=["wrong", "refused", "correct", "all", "none"],
                     help="print these development-split instructions (default: wrong); not allowed for --split unseen")
     args = ap.parse_args(argv)
