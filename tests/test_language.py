@@ -1207,6 +1207,9 @@ def test_what_a_chain_or_a_side_leaves_unclear_is_refused(text, match):
     # a cube picked by what stands on it, or by a relation said as a description
     ("put the red block on the block that the blue block is on", "the block that the blue block is on"),
     ("the red block, which is next to the blue one, goes on the green patch", "which is next to"),
+    # a structure moved that nobody described (a default tower had been invented for it)
+    ("put the tower centrally", "put the tower"),
+    ("move the row to the left side of the table", "move the row"),
 ])
 def test_what_only_the_current_scene_says_is_refused_as_a_reference(text, words):
     with pytest.raises(Inexpressible) as err:
@@ -1220,6 +1223,7 @@ def test_what_only_the_current_scene_says_is_refused_as_a_reference(text, words)
      ["on_patch(blue,patch:gray)", "on_patch(red,patch:green)"]),  # the contrast is said
     ("put block I on block J", ["stack(J,I)"]),  # the letter I, not the speaker
     ("put the red block far from the blue block", ["far_from(blue,red)"]),
+    ("make a row of three red blocks and move the row to the back", ["line(red,red,red)@back"]),  # described first
 ])
 def test_what_looks_like_a_reference_but_is_said_compiles(text, expected):
     assert meaning(parse(text)) == expected

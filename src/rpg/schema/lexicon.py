@@ -283,16 +283,19 @@ place said before it ("put red on the green patch and blue on the other patch"),
 contrasts with one the speaker sees (where a cube stands now)."""
 
 DEFINITE_STRUCTURE_RE = re.compile(
-    r"\b(?:on|onto|upon|to|into|next\s+to|beside|behind|in\s+front\s+of|near|left\s+of|right\s+of|top\s+of|from|off|of)"
-    r"\s+the\s+(?:existing\s+|current\s+)?(?P<noun>tower|stack|pile|structure|pyramid|wall)\b(?!\s+of\b)")
+    r"\b(?:on|onto|upon|to|into|next\s+to|beside|behind|in\s+front\s+of|near|left\s+of|right\s+of|top\s+of|from|off|of"
+    r"|put|place|move|set|slide|push|shift|bring|carry|relocate|transfer|position)"
+    r"\s+the\s+(?:existing\s+|current\s+|whole\s+|entire\s+)?"
+    r"(?P<noun>tower|stack|pile|structure|pyramid|wall|row|line|column|circle|ring|grid)\b(?!\s+of\b)")
 """A structure an instruction places something in relation to ("put the blue block on top of
-the stack"): it must have been described before it (:data:`STRUCTURE_INTRO_RE`); otherwise it
-is one the speaker sees, which a task cannot know."""
+the stack") or moves ("put the tower centrally"): it must have been described before it
+(:data:`STRUCTURE_INTRO_RE`); otherwise it is one the speaker sees, which a task cannot know."""
 
 STRUCTURE_INTRO_RE = re.compile(
-    r"\b(?:a|an|one|\d+|the)\s+(?:[a-z0-9\-]+\s+){0,3}(?:towers?|stacks?|piles?|structures?|pyramids?|walls?)\s+"
-    r"(?:of|with|from|using|made)\b|\b(?:a|an|one|\d+)\s+(?:[a-z0-9\-]+\s+){0,3}(?:towers?|stacks?|piles?|structures?|pyramids?|walls?)\b"
-    r"|\b(?:stack|build|make|pile|form|create|construct)\b"
+    r"\b(?:a|an|one|\d+|the)\s+(?:[a-z0-9\-]+\s+){0,3}(?:towers?|stacks?|piles?|structures?|pyramids?|walls?|rows?|lines?"
+    r"|columns?|circles?|rings?|grids?)\s+(?:of|with|from|using|made)\b|\b(?:a|an|one|\d+)\s+(?:[a-z0-9\-]+\s+){0,3}"
+    r"(?:towers?|stacks?|piles?|structures?|pyramids?|walls?|rows?|lines?|columns?|circles?|rings?|grids?)\b"
+    r"|\b(?:stack|build|make|pile|form|create|construct|arrange|line\s+up)\b"
     r"|\b(?:on|onto|atop|on\s+top\s+of)\s+(?:the|a|an)\s+(?:[a-z]+\s+)?(?:block|cube)\b")
 """What describes a structure before "the stack" refers to it (:data:`DEFINITE_STRUCTURE_RE`):
 one introduced ("a tower of three blocks", "build ...") or a cube put on another."""
