@@ -211,6 +211,9 @@ def test_a_corner_needs_both_of_its_sides():
     ("Make a 3 block tall cyan tower", ["stack(cyan,cyan,cyan)"]),
     ("build a blue tower of 3 blocks", ["stack(blue,blue,blue)"]),
     ("build a four-story white tower", ["stack(white,white,white,white)"]),
+    # ... and a colour said after it (one cube of it and three defaults had been built)
+    ("Build a 4-high tower of yellow blocks.", ["stack(yellow,yellow,yellow,yellow)"]),
+    ("I need a tower, 3 blocks high, all green.", ["stack(green,green,green)"]),
     # a group after "one of" is one tower's
     ("one tower of two pink and one of two brown", ["stack(brown,brown)", "stack(pink,pink)"]),
     ("make two towers: one of two pink blocks and one of two brown blocks", ["stack(brown,brown)", "stack(pink,pink)"]),

@@ -530,8 +530,15 @@ STRUCTURE_PHRASES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(rf"\b(a|an|one|1|the)\s+(\d+)\s+{HEIGHT_WORDS}\s+(?:({COLOR_RE})\s+)?({TOWER_NOUNS})\b"),
      r"\1 \4 of \2 \3 blocks"),
     # "a tower 3 blocks high"
-    (re.compile(rf"\b({TOWER_NOUNS})\s+(\d+)\s+(?:(?:blocks?|cubes?|levels?|stor(?:ies|eys)|tiers?|layers?)\s+)?(?:high|tall)\b"),
+    (re.compile(rf"\b({TOWER_NOUNS})\s*,?\s+(\d+)\s+(?:(?:blocks?|cubes?|levels?|stor(?:ies|eys)|tiers?|layers?)\s+)?(?:high|tall)\b"),
      r"\1 of \2 blocks"),
+    # "a 4-high tower of yellow blocks": the colour after the noun is the whole tower's too
+    (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s+of\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)\b"),
+     r"\1 of \2 \3 blocks"),
+    # "a tower, 3 blocks high, all green": every cube of it
+    (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s*,?\s+(?:all|each|every\s+one)(?:\s+of\s+them)?\s+"
+                rf"(?:(?:are|being|in)\s+)?({COLOR_RE})\b(?!\s+(?:blocks?|cubes?|patch))"),
+     r"\1 of \2 \3 blocks"),
     # "a blue tower of 3 blocks"
     (re.compile(rf"\b(a|an|one|1|the)\s+({COLOR_RE})\s+({TOWER_NOUNS})\s+of\s+(\d+)(?:\s+(?:blocks|cubes))?\b"),
      r"\1 \3 of \4 \2 blocks"),
