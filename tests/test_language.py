@@ -217,6 +217,9 @@ def test_a_corner_needs_both_of_its_sides():
     # a group after "one of" is one tower's
     ("one tower of two pink and one of two brown", ["stack(brown,brown)", "stack(pink,pink)"]),
     ("make two towers: one of two pink blocks and one of two brown blocks", ["stack(brown,brown)", "stack(pink,pink)"]),
+    # towers counted, then each said after "please:" or a comma (both had become white on black)
+    ("Two stacks please: white on black, and black on white.", ["stack(black,white)", "stack(white,black)"]),
+    ("make two stacks, white on black and black on white", ["stack(black,white)", "stack(white,black)"]),
     # a role binds to its end of the tower
     ("a tower of four where the top one is white", ["stack(red,blue,green,white)"]),
     ("build a tower of four blocks, the bottom block is black", ["stack(black,red,blue,green)"]),

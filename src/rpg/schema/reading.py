@@ -422,6 +422,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"\b(?:to|on|at)\s+the\s+(left|right)(?:[\s-]+hand)?\s+side\s+of\b(?!\s+the\s+(?:table|workspace)\b)",
                   r"to the \1 of", text)
     text = re.sub(r"\bon\s+top\s+(?=the\b)", "on top of ", text)
+    text = re.sub(r"\s+please(?=\s*[:,;.!])", "", text)  # "two stacks please: ..."
     text = " ".join(w for w in re.split(r"(?<=\S)\s+(?=\S)", text)
                     if re.sub(r"[.,;:!?]+$", "", w) not in IGNORABLE_HERE)
     text = re.sub(r"\s+([.,;:!?])", r"\1", text)

@@ -209,7 +209,7 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
     return True
 
 
-LISTED_TOWERS_RE = re.compile(r"\b(?P<k>\d+)\s+(?P<noun>tower|stack|column|pile|pillar)s(?:\s+of\s+(?:blocks|cubes))?\s*[:;\-]\s*(?P<body>.+?)\s*[.!]?$")
+LISTED_TOWERS_RE = re.compile(r"\b(?P<k>\d+)\s+(?P<noun>tower|stack|column|pile|pillar)s(?:\s+of\s+(?:blocks|cubes))?\s*[:;,\-]\s*(?P<body>.+?)\s*[.!]?$")
 """Towers counted, then each said after a colon: "two stacks: white on black, and black on white"."""
 
 
