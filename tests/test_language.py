@@ -1046,6 +1046,8 @@ def test_order_left_free_in_more_words(text):
     ("Construct a two-layer wall: the lower layer is two yellow cubes, the upper layer is two orange cubes.",
      ["wall(yellow,yellow|orange,orange)"]),
     ("build a wall: bottom layer two yellow cubes, top layer two orange cubes", ["wall(yellow,yellow|orange,orange)"]),
+    # a layer's colours listed without commas (the layers had been swapped)
+    ("Make me a wall: bottom row red red red, top row blue blue blue", ["wall(red,red,red|blue,blue,blue)"]),
     # "smallest to largest" of digits is their value, not a size
     ("line up the digits from smallest to largest",
      ["line[left_to_right](1,2,3,4)",

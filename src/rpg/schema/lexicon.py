@@ -613,7 +613,7 @@ taken out, may order the cubes it lists ("red on blue", "from bottom to top", "i
 order"): with any of them, or :data:`ORDER_WORDS`, the listed order is kept.  "from" orders only
 with a "to" after it ("a tower from two purple cubes" says what it is made of)."""
 
-_COLOR_LIST = "(?:" + "|".join(COLORS) + r")(?:\s*,\s*(?:" + "|".join(COLORS) + r"))*(?:,?\s+and\s+(?:" + "|".join(COLORS) + r"))?"
+_COLOR_LIST = "(?:" + "|".join(COLORS) + r")(?:(?:\s*,\s*|\s+)(?:" + "|".join(COLORS) + r"))*(?:,?\s+and\s+(?:" + "|".join(COLORS) + r"))?"
 _LAYER_ROLE = r"(?P<role{i}>top|peak|apex|tip|bottom|base|foundation|middle)"
 LAYER_ROLE_RE = re.compile(
     r"(?:\b(?P<n0>\d+|a|an|one|the)\s+)?\b(?P<c0>" + _COLOR_LIST + r")\s+(?:(?P<noun0>blocks?|cubes?|ones?|rows?|layers?)\s+)?"
