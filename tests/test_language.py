@@ -1313,3 +1313,14 @@ def test_finish_with_outside_a_sequence_is_not_read_as_one():
     """"a tower of four blocks and finish with red" compiled a tower in any order (red's place dropped)."""
     with pytest.raises(ParseError):
         parse("build a tower of four blocks and finish with red")
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a plural noun after two colours names two of them (yellow had been read as a cube)
+    ("the white cube should be between the yellow and the pink patches", ["between(white;patch:pink,patch:yellow)"]),
+    # two cubes on two patches, pair by pair
+    ("put the red and the blue cubes onto the yellow and green patches, respectively.",
+     ["on_patch(blue,patch:green)", "on_patch(red,patch:yellow)"]),
+])
+def test_two_colours_before_one_plural_patch_noun_name_two_patches(text, expected):
+    assert meaning(parse(text)) == expected

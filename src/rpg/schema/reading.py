@@ -334,6 +334,13 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         before = {c for c in re.findall(rf"\b({COLOR_RE})\s+(?:goal\s+)?(?:patch|pad|mat|tile|area)\b", text[:m.start()])}
         if len(before) == 1:
             text = text[:m.start()] + f"the {before.pop()} patch" + text[m.end():]
+    # "between the yellow and (the) pink patches": each colour names a patch (yellow had been read as a cube)
+    text = re.sub(rf"\b({COLOR_RE})\s+and\s+(?:the\s+)?({COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patches|pads|mats|tiles)\b",
+                  r"\1 patch and the \2 patch", text)
+    # "the red and blue blocks on the yellow patch and the green patch respectively": pair by pair
+    text = re.sub(rf"\bthe\s+({COLOR_RE})\s+and\s+(?:the\s+)?({COLOR_RE})\s+(block|cube)s\s+(on|onto|to|next\s+to)\s+the\s+"
+                  rf"({COLOR_RE})\s+patch\s+and\s+the\s+({COLOR_RE})\s+patch\s*,?\s+respectively\b",
+                  r"the \1 \3 \4 the \5 patch and the \2 \3 \4 the \6 patch", text)
     # "keep the green cube far from the yellow cube": where it ends up, said as a state to hold
     text = re.sub(rf"(?:^|(?<=[.;!]\s))keep\s+(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|brick)\b)", "put ", text)
     # "the table's center", "the table's left side": the place on the table, as "the center of the table" says it
