@@ -1324,3 +1324,9 @@ def test_finish_with_outside_a_sequence_is_not_read_as_one():
 ])
 def test_two_colours_before_one_plural_patch_noun_name_two_patches(text, expected):
     assert meaning(parse(text)) == expected
+
+
+def test_a_list_whose_last_item_is_the_base_and_first_the_top_is_read_from_the_top():
+    # the middle of the list had been kept in its order between the swapped ends (4, 2, 3, 1)
+    assert meaning(parse("Stack the digit cubes 1, 2, 3 and 4 into one tower, 4 at the bottom and 1 on top.")) == \
+        ["stack(4,3,2,1)"]

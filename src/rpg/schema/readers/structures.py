@@ -691,6 +691,9 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
     else:
         role = {i: {"base": "bottom", "center": "middle", "centre": "middle"}.get(h, h) for i, h in hints.items()
                 if i < len(items)}
+        if len(items) > 2 and sorted(role.items()) == [(0, "top"), (len(items) - 1, "bottom")]:
+            items.reverse()  # "1, 2, 3 and 4 ..., 4 at the bottom and 1 on top": the list read from the top
+            role = {0: "bottom", len(items) - 1: "top"}
         bottom = [items[i] for i, h in role.items() if h == "bottom"]
         top = [items[i] for i, h in role.items() if h == "top"]
         middle = [items[i] for i, h in role.items() if h == "middle"]
