@@ -414,7 +414,8 @@ def test_counts_and_orders_said_another_way(text, want):
 
 
 @pytest.mark.parametrize("text", ["put half of the cubes in a line", "stack as many blocks as you can",
-                                  "put several cubes on the white patch", "build the tower as high as possible"])
+                                  "put several cubes on the white patch", "build the tower as high as possible",
+                                  "Place some white cubes next to the black cube."])
 def test_a_vague_quantity_is_refused(text):
     from rpg.schema.builtin import Inexpressible
 
@@ -1330,3 +1331,14 @@ def test_a_list_whose_last_item_is_the_base_and_first_the_top_is_read_from_the_t
     # the middle of the list had been kept in its order between the swapped ends (4, 2, 3, 1)
     assert meaning(parse("Stack the digit cubes 1, 2, 3 and 4 into one tower, 4 at the bottom and 1 on top.")) == \
         ["stack(4,3,2,1)"]
+
+
+@pytest.mark.parametrize("text,kind,words", [
+    # each had compiled, dropping the words (stranger set 3)
+    ("Stack red on blue, but only after the blue block has been moved to the center.", "condition", "only after"),
+    ("Put the block that was just moved next to the blue block.", "reference", "that was just moved"),
+])
+def test_an_order_of_events_or_a_cube_picked_by_one_is_refused_for_it(text, kind, words):
+    with pytest.raises(Inexpressible) as exc:
+        parse(text)
+    assert exc.value.kind == kind and words in str(exc.value)

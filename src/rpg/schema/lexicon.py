@@ -89,12 +89,13 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                  r"|\bno\s+(?:\w+\s+){0,2}?(?:blocks?|cubes?|boxes|one|other|longer)\b",
      "is a negation: a task's goal says what must hold at the end, and rpg does not check that something is absent; "
      "say what should be true instead"),
-    ("condition", r"\b(?:if|unless|whenever|otherwise|provided)\b",
+    ("condition", r"\b(?:if|unless|whenever|otherwise|provided)\b|\bonly\s+(?:after|once|when|before)\b"
+                  r"|\b(?:after|once|before)\s+(?:the|it|they|you)\b[^.;]*?\b(?:has|have|had)\s+been\b",
      "makes the goal conditional: a task has one goal, checked at the end of the episode; say the goal for one scene"),
     ("time", r"\b(?:\d+\s+(?:seconds?|minutes?|hours?)|seconds|minutes?|hours?|meanwhile|forever|while|whilst|during)\b",
      "is about time: a task's goal is checked once, at the end of the episode, with no clock or duration"),
     ("quantity", r"\b(?:\d+(?:\.\d+)?\s*(?:cm|mm)\b|(?:centi|milli)?(?:meters?|metres?)|inch(?:es)?|feet|foot"
-                 r"|cms?|few|fewer|most|majority|percent|(?<!left\s)(?<!right\s)(?<!front\s)(?<!back\s)(?<!rear\s)half|halves|several|many|much|enough|plenty|numerous"
+                 r"|some(?=\s+(?:[a-z]+\s+)?(?:blocks|cubes|bricks|boxes)\b)|cms?|few|fewer|most|majority|percent|(?<!left\s)(?<!right\s)(?<!front\s)(?<!back\s)(?<!rear\s)half|halves|several|many|much|enough|plenty|numerous"
                  r"|as\s+(?:high|tall|many|much|far|close|long)\s+as\s+(?:you|it|possible|can)"
                  r"|(?:over|more\s+than|at\s+least|at\s+most|fewer\s+than|less\s+than|up\s+to|under)\s+"
                  r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?=\s+(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|high|tall|levels?)\b))\b",
@@ -109,6 +110,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"\s+(?:(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?))\b"
                   r"|\b(?:you|we|i)\s+(?:just|already|have|had)\s+(?:just\s+|already\s+)?"
                   r"(?:moved|placed|picked|grabbed|used|put|touched|held)\b"
+                  r"|\b(?:that|which)\s+(?:was|were|has\s+been|had\s+been)\s+(?:just\s+|already\s+|last\s+)?(?:moved|placed|picked|put"
+                  r"|used|touched|grabbed|held)\b"
                   r"|\b(?:blocks?|cubes?|ones?)\s+(?:that\s+)?(?:you|we|i)\s+(?:moved|placed|picked|grabbed|used|touched|held|pointed|indicated|mentioned|chose|selected)\b"
                   r"|\b(?:you|we|i)(?:'m|'re|\s+am|\s+are)?\s+(?:just\s+)?(?:pointed|pointing|indicated|indicating)\b"
                   r"|\b(?:you|we|i)(?:'m|'re|\s+am|\s+are)?\s+(?:just\s+)?(?:looking|looked|gazing|gazed|staring|stared|glancing)\s+at\b"
