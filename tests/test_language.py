@@ -1342,3 +1342,9 @@ def test_an_order_of_events_or_a_cube_picked_by_one_is_refused_for_it(text, kind
     with pytest.raises(Inexpressible) as exc:
         parse(text)
     assert exc.value.kind == kind and words in str(exc.value)
+
+
+def test_one_cube_on_two_goal_patches_is_refused_as_a_contradiction():
+    with pytest.raises(Inexpressible) as exc:  # it had compiled a goal no episode can reach
+        parse("Put the white cube on the black patch and on the red patch.")
+    assert exc.value.kind == "contradiction" and "white on black patch and on red patch" in str(exc.value)

@@ -44,6 +44,7 @@ from rpg.schema.readers import (  # noqa: F401 (they register)
 )
 from rpg.schema.reading import (
     Features,
+    Inexpressible,
     ParseError,
     color_mentions,
     explicit_labels,
@@ -160,11 +161,20 @@ def free_listed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
 
 def disjoint_regions(f: Features, schema: TaskSchema) -> ParseError | None:
     """A reading that puts one cube in two places of the table that do not meet (red in the
-    front left corner and in the front right corner): no placement satisfies it."""
+    front left corner and in the front right corner), or on two goal patches (which rho_0 lays
+    apart): no placement satisfies it."""
     seen: dict[str, list[str]] = {}
+    patches: dict[str, list[str]] = {}
     for p in schema.goal_predicate().walk():
         if isinstance(p, InRegion):
             seen.setdefault(p.a, []).append(p.region)
+        elif type(p) is OnPatch:
+            patches.setdefault(p.a, []).append(p.patch)
+    for cube, on in sorted(patches.items()):
+        if len(set(on)) > 1:
+            return Inexpressible("contradiction", [f"{cube} on {' and on '.join(sorted(set(on)))}".replace("_", " ")],
+                                 "contradicts itself: one cube cannot stand on two goal patches at the end of the "
+                                 "episode; say one patch per cube", f.original)
     for cube, regions in sorted(seen.items()):
         for i, r in enumerate(regions):
             for q in regions[i + 1:]:
