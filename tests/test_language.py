@@ -1348,3 +1348,13 @@ def test_one_cube_on_two_goal_patches_is_refused_as_a_contradiction():
     with pytest.raises(Inexpressible) as exc:  # it had compiled a goal no episode can reach
         parse("Put the white cube on the black patch and on the red patch.")
     assert exc.value.kind == "contradiction" and "white on black patch and on red patch" in str(exc.value)
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a coloured square a cube is put on is a patch (it had compiled a 2x2 grid)
+    ("Please put the blue block onto the yellow square, and the red block onto the green square.",
+     ["on_patch(blue,patch:yellow)", "on_patch(red,patch:green)"]),
+    ("build a red square", ["grid(2x2:red,red,red,red)"]),  # a square built is a structure
+])
+def test_a_coloured_square_a_cube_goes_on_is_a_patch(text, expected):
+    assert meaning(parse(text)) == expected

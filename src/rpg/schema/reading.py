@@ -501,6 +501,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"\b(?:goal|target)\s+(?:area|zone|region|spot|location|position|point|pad|mat|marker|square|tile)(s?)"
                   r"(?:\s+patch(?:es)?)?\b", r"goal patch\1", text)  # "the target square patch": one patch
     text = re.sub(rf"\b({COLOR_RE})\s+(?:(?:goal|target)\s+)?(?:pad|mat|marker|zone|area|region|tile)(s?)\b", r"\1 patch\2", text)
+    # "onto the yellow square": a square a cube is put on is a patch ("build a red square" stays a structure)
+    text = re.sub(rf"\b(on|onto|into|in|to)\s+the\s+({COLOR_RE})\s+square\b", r"\1 the \2 patch", text)
     text = re.sub(r"\btarget(s?)\b(?!\s+(?:goal\s+)?patch)", r"patch\1", text)  # "onto the blue target"
     text = re.sub(r"\bpick(?:\s+up)?\s+and\s+(place|put|set|drop)\b", r"\1", text)  # "pick and place a block on ..."
     text = re.sub(r"\b(?:pick up|grab|take|lift|get|pick)\s+(the\s+(?:[a-z0-9']+\s+){0,4}?(?:block|cube|box|one))(?:\s+up)?"
