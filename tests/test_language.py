@@ -211,6 +211,8 @@ def test_a_corner_needs_both_of_its_sides():
     ("Make a 3 block tall cyan tower", ["stack(cyan,cyan,cyan)"]),
     ("build a blue tower of 3 blocks", ["stack(blue,blue,blue)"]),
     ("build a four-story white tower", ["stack(white,white,white,white)"]),
+    # a colour listed twice in a sequence with roles keeps both cubes (one blue had been dropped)
+    ("A tower of four: red base, then blue, then red, then blue on top.", ["stack(red,blue,red,blue)"]),
     # ... and a colour said after it (one cube of it and three defaults had been built)
     ("Build a 4-high tower of yellow blocks.", ["stack(yellow,yellow,yellow,yellow)"]),
     ("I need a tower, 3 blocks high, all green.", ["stack(green,green,green)"]),

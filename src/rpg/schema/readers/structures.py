@@ -646,11 +646,15 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
             return False
     items: list[tuple[str | None, str | None]] = []
     hints: dict[int, str] = {}
-    for m in mentions:
+    said = stated_count(f, default=None)
+    for k, m in enumerate(mentions):
         item = (None, m.group("label").upper()) if m.group("label") else (canon_color(m.group("color")), None)
+        step = (k > 0 and (said is None or len(items) < said)
+                and re.match(r"\s*,?\s*(?:and\s+)?then\b", text[mentions[k - 1].end():m.start()]))
         hint = re.match(r"\s*(?:(?:block|cube)s?\s*)?(?:(?:is|goes|sits|stands|(?:should|must|will)\s+be|ends\s+up)\s+)?"
                         r"<(bottom|base|top|middle|center|centre)>", text[m.end():])  # "so that red is at the bottom"
-        if hint and item in items:  # "... with yellow at the bottom": a hint about a listed cube
+        if hint and item in items and not step:  # "... with yellow at the bottom": a hint about a listed cube
+            # (not a step of a sequence: "red base, then blue, then red, then blue on top" has two blue cubes)
             hints[items.index(item)] = hint.group(1)
             continue
         count = re.search(r"\b(\d+)\s+$", text[max(0, m.start() - 4): m.start()]) if not m.group("label") else None
@@ -659,6 +663,8 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         if hint:
             hints[len(items)] = hint.group(1)
         items.append(item)
+    if said is not None and len(items) > said:
+        return False  # more cubes listed than the count says: a list said twice, not one tower's sequence
     labels = explicit_labels(f)
     if not items and labels:
         items = [(None, lab) for lab in labels]
@@ -697,7 +703,7 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         bottom = [items[i] for i, h in role.items() if h == "bottom"]
         top = [items[i] for i, h in role.items() if h == "top"]
         middle = [items[i] for i, h in role.items() if h == "middle"]
-        rest = [it for it in items if it not in bottom and it not in top and it not in middle]
+        rest = [it for i, it in enumerate(items) if i not in role]  # by place: a colour may be listed twice
         half = len(rest) // 2
         items = bottom + rest[:half] + middle + rest[half:] + top
         if middle:  # "a tower of red, blue and green blocks with blue in the middle": the roles, no order
