@@ -211,6 +211,9 @@ def test_a_corner_needs_both_of_its_sides():
     ("Make a 3 block tall cyan tower", ["stack(cyan,cyan,cyan)"]),
     ("build a blue tower of 3 blocks", ["stack(blue,blue,blue)"]),
     ("build a four-story white tower", ["stack(white,white,white,white)"]),
+    # a count right after "of" and before a comma (a pyramid of six with invented colours had been built)
+    ("Make a pyramid of three, two black on the bottom and a white one on top, in the front left corner.",
+     ["pyramid(black,black|white)@front_left"]),
     # a colour listed twice in a sequence with roles keeps both cubes (one blue had been dropped)
     ("A tower of four: red base, then blue, then red, then blue on top.", ["stack(red,blue,red,blue)"]),
     # ... and a colour said after it (one cube of it and three defaults had been built)

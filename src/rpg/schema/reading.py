@@ -549,6 +549,8 @@ STRUCTURE_PHRASES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s*,?\s+(?:all|each|every\s+one)(?:\s+of\s+them)?\s+"
                 rf"(?:(?:are|being|in)\s+)?({COLOR_RE})\b(?!\s+(?:blocks?|cubes?|patch))"),
      r"\1 of \2 \3 blocks"),
+    # "a pyramid of three, two black on the bottom ...": the count is the structure's cubes
+    (re.compile(r"\b(pyramid|wall|row|line|circle|ring)\s+of\s+(\d+)(?=\s*(?:[,.;:!]|$))"), r"\1 of \2 blocks"),
     # "a blue tower of 3 blocks"
     (re.compile(rf"\b(a|an|one|1|the)\s+({COLOR_RE})\s+({TOWER_NOUNS})\s+of\s+(\d+)(?:\s+(?:blocks|cubes))?\b"),
      r"\1 \3 of \4 \2 blocks"),
