@@ -1363,3 +1363,9 @@ def test_one_cube_on_two_goal_patches_is_refused_as_a_contradiction():
 ])
 def test_a_coloured_square_a_cube_goes_on_is_a_patch(text, expected):
     assert meaning(parse(text)) == expected
+
+
+def test_a_relation_to_both_of_them_reaches_the_two_cubes_named_before():
+    # one of the two had been dropped
+    assert meaning(parse("Put the orange cube next to the purple cube, and put the brown cube far from both of them.")) == \
+        ["far_from(brown,orange)", "far_from(brown,purple)", "next_to(orange,purple)"]

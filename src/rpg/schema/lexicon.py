@@ -527,6 +527,11 @@ def _completed(head: str) -> str:
             return head + tail
     return head
 _COLOR_WORD = "(?:" + "|".join(COLORS) + ")"
+BOTH_OF_THEM_RE = re.compile(rf"\b(?P<subj>the\s+(?P<c>{_COLOR_WORD})\s+(?:block|cube))\s+(?P<rel>{_PAIRWISE_WORDS})\s+"
+                             r"(?:both\s+of\s+them|them\s+both|both|each\s+of\s+them)\b")
+""""The brown cube far from both of them": a relation to each of the two cubes named before it
+(:func:`rpg.schema.reading.normalize_words` writes them out when exactly two are)."""
+
 DISTRIBUTED_RELATIONS: tuple[tuple[re.Pattern, str], ...] = (
     # "the red and green blocks next to the blue block": each of them
     (re.compile(rf"(?<!stack\s)(?<!pile\s)\bthe\s+(?P<a>{_COLOR_WORD})\s+and\s+(?:the\s+)?(?P<b>{_COLOR_WORD})\s+(?P<n>block|cube)s\s+"

@@ -522,6 +522,11 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   lambda m: m.group(0) if m.group(1) in ("with", "showing", "labeled", "labelled", "marked", "bearing")
                   else m.group(0) + " block", text)  # "stack the letter A on the letter B": those are cubes
     text = re.sub(rf"\b({COLOR_RE})\s+one(s?)\b", lambda m: f"{m.group(1)} block{'s' if m.group(2) else ''}", text)
+    for m in reversed(list(lexicon.BOTH_OF_THEM_RE.finditer(text))):  # "... far from both of them": the two before
+        named = [c for c in dict.fromkeys(re.findall(rf"\b({COLOR_RE})\s+(?:block|cube)\b", text[:m.start()]))
+                 if c != m.group("c")]
+        if len(named) == 2:
+            text = text[:m.start()] + f"{m.group('subj')} {m.group('rel')} the {named[0]} and {named[1]} blocks" + text[m.end():]
     for pattern, written_out in lexicon.DISTRIBUTED_RELATIONS:
         text = pattern.sub(written_out, text)
     for w, n in NUMBER_WORDS.items():
