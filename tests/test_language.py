@@ -1369,3 +1369,13 @@ def test_a_relation_to_both_of_them_reaches_the_two_cubes_named_before():
     # one of the two had been dropped
     assert meaning(parse("Put the orange cube next to the purple cube, and put the brown cube far from both of them.")) == \
         ["far_from(brown,orange)", "far_from(brown,purple)", "next_to(orange,purple)"]
+
+
+@pytest.mark.parametrize("text,expected", [
+    # both sides said with "side": the table's sides (it had compiled a relation between the two cubes)
+    ("Please put the blue cube on the left side and the green cube on the right side.",
+     ["in_region(blue,left)", "in_region(green,right)"]),
+    ("put the red block on the left and the blue block on the right", ["left_of(red,blue)"]),  # bare sides: a relation
+])
+def test_two_sides_said_as_sides_are_the_table_s(text, expected):
+    assert meaning(parse(text)) == expected

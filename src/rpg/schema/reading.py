@@ -394,7 +394,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   r"a \2 of \4 \1 blocks and a \2 of \4 \3 blocks", text)
     # "on the left side and the blue block on the right side of the table": each side the table's
     for part in ("side", "half", "edge"):  # "... to the left half of the table and the white cube to the right half"
-        if re.search(rf"\b{part}s?\s+of\s+the\s+(?:table|workspace)\b", text):
+        # "on the left side and ... on the right side": the table's two sides (both said, neither of a cube)
+        bare = {m.group(1) for m in re.finditer(rf"\bthe\s+(left|right|front|back)\s+{part}\b(?!\s+of\b)", text)}
+        if re.search(rf"\b{part}s?\s+of\s+the\s+(?:table|workspace)\b", text) or bare in ({"left", "right"}, {"front", "back"}):
             text = re.sub(rf"\b(on|at|to|in|into|near|along)\s+the\s+(left|right|front|back)\s+{part}\b(?!\s+of\b)",
                           rf"\1 the \2 {part} of the table", text)
     # "with yellow as the base": a cube of that colour at that end (read as a tower of yellow cubes)
