@@ -813,6 +813,13 @@ def test_a_structure_turned_into_another_has_no_order_nobody_said(tmp_path, base
     # a count said alone is the structure's count
     ("Arrange five pink cubes in a circle", ["let's go with 7 instead"], ["circle(pink,pink,pink,pink,pink,pink,pink)"]),
     ("stack 2 red cubes", ["three"], ["stack(red,red,red)"]),
+    # ... and cubes of one colour on a patch stay that colour (a red cube had been added)
+    ("Put 2 blue cubes on the orange patch", ["3 instead"], ["on_patch(blue,blue,blue,patch:orange)"]),
+    # "one more row" grows the wall (it had pivoted to a line of four default cubes)
+    ("Build a wall of red blocks, 4 wide and 2 high", ["one more row"],
+     ["wall(red,red,red,red,red,red,red,red,red,red,red,red)"]),
+    # a row of one colour moved: no order of interchangeable cubes is demanded
+    ("Put three green blocks in a row", ["move the row to the back of the table"], ["line(green,green,green)@back"]),
 ])
 def test_edits_said_in_fewer_or_looser_words(tmp_path, base, edits, want):
     assert _steered(tmp_path, base, *edits)[-1][1] == want

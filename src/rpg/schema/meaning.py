@@ -106,8 +106,9 @@ def meaning(schema: TaskSchema) -> list[str]:
         elif isinstance(p, P.Between):
             atoms.append(f"between({names([p.a])};{sorted_names([p.b, p.c])})")
         elif isinstance(p, P.InLine):
-            order = f"[{p.order}]" if p.order else ""
-            body = names(p.objects) if p.order else sorted_names(p.objects)
+            ordered = p.order and len(set(names(p.objects).split(","))) > 1  # cubes of one colour: no order to say
+            order = f"[{p.order}]" if ordered else ""
+            body = names(p.objects) if ordered else sorted_names(p.objects)
             atoms.append(f"line{order}({body})")
             placed.append((len(atoms) - 1, p.objects))
         elif isinstance(p, P.InLayers):

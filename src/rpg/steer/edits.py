@@ -382,7 +382,9 @@ def read_ops(t: str) -> list[Op]:
     elif by:  # "make it 2 blocks shorter"
         ops.append(Op("count", {"delta": int(by.group(1)) * (1 if by.group(2) in ("taller", "higher", "longer", "bigger") else -1)}))
     layer = re.search(r"\b(?:add|put|build|stack)\s+(?:an?\s+|another\s+|one more\s+|the\s+)?(?:\d+(?:st|nd|rd|th)\s+|second\s+|third\s+"
-                      r"|fourth\s+|new\s+|extra\s+)?(?:row|layer|level|tier)\b(?P<rest>.*)", t)
+                      r"|fourth\s+|new\s+|extra\s+)?(?:row|layer|level|tier)\b(?P<rest>.*)", t) or \
+        re.match(r"\s*(?:and\s+|now\s+|plus\s+)?(?:1\s+more|one\s+more|another|an\s+extra|1\s+extra)\s+(?:row|layer|level|tier)\b"
+                 r"(?P<rest>.*)", t)  # "one more row"
     if layer and not re.search(r"\b(?:blocks?|cubes?)\b", layer.group("rest")):
         rest = layer.group("rest")
         if re.search(r"\b(?:bottom|under|below|beneath|base|left|right|front|back|beside|next)\b", rest):

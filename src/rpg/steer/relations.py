@@ -220,7 +220,8 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         n = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6}.get(count.group(1)) or int(count.group(1))
         if not 1 <= n <= 6:
             return None
-        spare = [c for c in DEFAULT_COLORS if c not in colors]
+        # cubes of one colour stay one colour ("2 blue cubes on the patch", "3 instead"); else new colours
+        spare = [colors[0]] * n if len(set(colors)) == 1 else [c for c in DEFAULT_COLORS if c not in colors]
         colors, intent = (colors + spare)[:n] if n > len(colors) else colors[:n], "tweak"
     elif added:
         colors, intent = colors + [canon_color(next(g for g in added.groups() if g))], "extend"
