@@ -820,6 +820,12 @@ def test_a_structure_turned_into_another_has_no_order_nobody_said(tmp_path, base
      ["wall(red,red,red,red,red,red,red,red,red,red,red,red)"]),
     # a row of one colour moved: no order of interchangeable cubes is demanded
     ("Put three green blocks in a row", ["move the row to the back of the table"], ["line(green,green,green)@back"]),
+    # a place alone, a patch's colour said as "should be", a count after "taller", "side by side" (each was refused)
+    ("Place the gray cube on the left side of the table", ["now the right side"], ["in_region(gray,right)"]),
+    ("Put the green cube on the red patch", ["no wait, the patch should be blue"], ["on_patch(green,patch:blue)"]),
+    ("Build a tower of two orange blocks in the back right corner", ["make it taller, 4 blocks"],
+     ["stack(orange,orange,orange,orange)@back_right"]),
+    ("Put the white block on the black block", ["put them side by side instead"], ["next_to(black,white)"]),
 ])
 def test_edits_said_in_fewer_or_looser_words(tmp_path, base, edits, want):
     assert _steered(tmp_path, base, *edits)[-1][1] == want

@@ -560,7 +560,7 @@ EDIT_RELATIONS: tuple[tuple[str, str], ...] = (
     (r"\b(?:to the |on the )?right\b", "right_of"),
     (r"\bin front\b|\bfront\b", "in_front_of"),
     (r"\bbehind\b|\bin back\b|\bto the back\b", "behind"),
-    (r"\bnext to\b|\bbeside\b|\badjacent\b|\bnear\b|\bclose to\b", "next_to"),
+    (r"\bnext to\b|\bbeside\b|\badjacent\b|\bnear\b|\bclose to\b|\bside by side\b", "next_to"),
     (r"\bunder(?:neath)?\b|\bbelow\b|\bbeneath\b", "under"),
     (r"\bon top\b|\bonto\b|\batop\b|\bstack(?:ed|ing)?\b|\bon (?:it|them|the \w+ (?:block|cube))\b", "on"),
 )
@@ -754,6 +754,9 @@ INTENSIFIER_RIGHT_RE = re.compile(r"(?i)\b(?:right|directly|just)\s+(?=next\s+to
 EDIT_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"(?i)\bon\s+top\s+of\s+(?:that|this)(?!\s+\w+\s+(?:block|cube|one)\b)"), "on top of the tower"),  # "and a T on top of that"
     (re.compile(r"(?i)^\s*(?:and|plus)\s+(?=(?:a|an|another|one\s+more|\d+)\s)"), "add "),  # "and a red block on top"
+    # "make it taller, 4 blocks": the count says how much
+    (re.compile(r"(?i)\b(?:taller|higher|longer|wider|shorter|smaller|bigger)\s*[,:;-]?\s+"
+                r"(?=(?:\d+|two|three|four|five|six|seven|eight)\s+(?:blocks|cubes)\b)"), ""),
 )
 """Edits said in fewer words, as the steering reads them: "on top of that" is on top of the task,
 "and a red block on top" adds one."""

@@ -202,7 +202,8 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     intent = None
     t = re.sub(r"\btarget\b(?!\s+patch)", "patch", t)  # "make the target green"
     recolor = re.search(rf"\bpatch\b[^.;]*?\b(?:to|into|be|is)?\s*({COLOR_RE})\b|\b({COLOR_RE})\s+(?:goal\s+|target\s+)?patch\b", t)
-    if recolor and re.search(r"\b(?:make|change|turn|use|paint|color|colour|switch)\b", t):
+    if recolor and re.search(r"\b(?:make|change|turn|use|paint|color|colour|switch)\b"
+                             r"|\bpatch\s+(?:should|must|needs?\s+to|has\s+to|ought\s+to)\s+be\b", t):  # "the patch should be blue"
         new = canon_color(recolor.group(1) or recolor.group(2))
         if new != pcolor:
             pcolor, intent = new, "tweak"
@@ -272,6 +273,9 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         return None  # two cubes of one colour cannot be told apart by name in an edit or a clause
     t = " " + edit.lower().strip().rstrip(".!") + " "
     region = _edit_region(t)
+    bare = re.fullmatch(r"\s*(?:(?:now|ok(?:ay)?|actually|rather|no|wait|sorry|hmm)[\s,]+)*(the\s+[a-z\s-]+?)(?:\s+(?:instead|please|now))*\s*", t)
+    if region is None and bare:  # "now the right side": the place alone
+        region = _edit_region(f" to {bare.group(1)} ")
     added = re.search(rf"\b(?:add|put|place)\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b(.*)", t)
     named = [canon_color(c) for c in re.findall(rf"\bthe ({COLOR_RE}) (?:block|cube|one)\b", t)]
     colors = [c for c, _ in placed]
