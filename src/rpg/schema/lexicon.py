@@ -527,6 +527,34 @@ def _completed(head: str) -> str:
             return head + tail
     return head
 _COLOR_WORD = "(?:" + "|".join(COLORS) + ")"
+PLACE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
+    # "between the yellow and (the) pink patches": each colour names a patch (yellow had been read as a cube)
+    (re.compile(rf"\b({COLOR_RE})\s+and\s+(?:the\s+)?({COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patches|pads|mats|tiles)\b"),
+     r"\1 patch and the \2 patch"),
+    # "the red and blue blocks on the yellow patch and the green patch respectively": pair by pair
+    (re.compile(rf"\bthe\s+({COLOR_RE})\s+and\s+(?:the\s+)?({COLOR_RE})\s+(block|cube)s\s+(on|onto|to|next\s+to)\s+the\s+"
+                rf"({COLOR_RE})\s+patch\s+and\s+the\s+({COLOR_RE})\s+patch\s*,?\s+respectively\b"),
+     r"the \1 \3 \4 the \5 patch and the \2 \3 \4 the \6 patch"),
+    # "keep the green cube far from the yellow cube": where it ends up, said as a state to hold
+    (re.compile(rf"(?:^|(?<=[.;!]\s))keep\s+(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|brick)\b)"), "put "),
+    # "the table's center", "the table's left side": the place on the table, as "the center of the table" says it
+    (re.compile(r"\bthe\s+(table|workspace)'s\s+(center|centre|middle)\b"), r"the \2 of the \1"),
+    (re.compile(r"\bthe\s+(table|workspace)'s\s+(left|right|front|back|far)\s+(side|edge|half|end|corner)\b"), r"the \2 \3 of the \1"),
+    # "at the midpoint between", "in the middle between", "centrally between": only between
+    (re.compile(r"\b(?:(?:at|in)\s+the\s+(?:midpoint|middle|center|centre)|centrally|midway|cent(?:er|r)ed)\s+(?=between\b)"), ""),
+    (re.compile(r"\bcentrally\b"), "at the center of the table"),  # "place red and green centrally"
+    (re.compile(r"\bcent(?:er|r)ed\s+(?:on|in)\s+the\s+(table|workspace)\b"), r"at the center of the \1"),
+    # "a centered stack", "in one centred tower": the structure at the centre of the table
+    (re.compile(r"\bcent(?:er|r)ed\s+(tower|stack|column|pile|row|line|pyramid|circle|ring|grid|square|wall)"
+                r"(\s+of\s+(?:\d+|two|three|four|five|six|seven|eight|nine|ten)\s+(?:[a-z]+\s+)?(?:blocks|cubes|bricks))?\b"
+                r"(?=\s*(?:[.,;!]|$|with\b|using\b|where\b|in\s+which\b))"),
+     r"\1\2 at the center of the table"),
+)
+"""Places and pairings said another way, rewritten in order to the form the readers take
+(:func:`rpg.schema.reading.normalize_words`, after "the same patch" is resolved): two colours
+before one plural patch noun, "respectively", "keep", the table's centre and sides.  A "centered"
+left after them says no place and is refused."""
+
 BOTH_OF_THEM_RE = re.compile(rf"\b(?P<subj>the\s+(?P<c>{_COLOR_WORD})\s+(?:block|cube))\s+(?P<rel>{_PAIRWISE_WORDS})\s+"
                              r"(?:both\s+of\s+them|them\s+both|both|each\s+of\s+them)\b")
 """"The brown cube far from both of them": a relation to each of the two cubes named before it

@@ -334,28 +334,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         before = {c for c in re.findall(rf"\b({COLOR_RE})\s+(?:goal\s+)?(?:patch|pad|mat|tile|area)\b", text[:m.start()])}
         if len(before) == 1:
             text = text[:m.start()] + f"the {before.pop()} patch" + text[m.end():]
-    # "between the yellow and (the) pink patches": each colour names a patch (yellow had been read as a cube)
-    text = re.sub(rf"\b({COLOR_RE})\s+and\s+(?:the\s+)?({COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patches|pads|mats|tiles)\b",
-                  r"\1 patch and the \2 patch", text)
-    # "the red and blue blocks on the yellow patch and the green patch respectively": pair by pair
-    text = re.sub(rf"\bthe\s+({COLOR_RE})\s+and\s+(?:the\s+)?({COLOR_RE})\s+(block|cube)s\s+(on|onto|to|next\s+to)\s+the\s+"
-                  rf"({COLOR_RE})\s+patch\s+and\s+the\s+({COLOR_RE})\s+patch\s*,?\s+respectively\b",
-                  r"the \1 \3 \4 the \5 patch and the \2 \3 \4 the \6 patch", text)
-    # "keep the green cube far from the yellow cube": where it ends up, said as a state to hold
-    text = re.sub(rf"(?:^|(?<=[.;!]\s))keep\s+(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|brick)\b)", "put ", text)
-    # "the table's center", "the table's left side": the place on the table, as "the center of the table" says it
-    text = re.sub(r"\bthe\s+(table|workspace)'s\s+(center|centre|middle)\b", r"the \2 of the \1", text)
-    text = re.sub(r"\bthe\s+(table|workspace)'s\s+(left|right|front|back|far)\s+(side|edge|half|end|corner)\b", r"the \2 \3 of the \1", text)
-    # "at the midpoint between", "in the middle between", "centrally between": only between
-    text = re.sub(r"\b(?:(?:at|in)\s+the\s+(?:midpoint|middle|center|centre)|centrally|midway|cent(?:er|r)ed)"
-                  r"\s+(?=between\b)", "", text)
-    text = re.sub(r"\bcentrally\b", "at the center of the table", text)  # "place red and green centrally"
-    text = re.sub(r"\bcent(?:er|r)ed\s+(?:on|in)\s+the\s+(table|workspace)\b", r"at the center of the \1", text)
-    # "a centered stack", "in one centred tower": the structure at the centre of the table
-    text = re.sub(r"\bcent(?:er|r)ed\s+(tower|stack|column|pile|row|line|pyramid|circle|ring|grid|square|wall)"
-                  r"(\s+of\s+(?:\d+|two|three|four|five|six|seven|eight|nine|ten)\s+(?:[a-z]+\s+)?(?:blocks|cubes|bricks))?\b"
-                  r"(?=\s*(?:[.,;!]|$|with\b|using\b|where\b|in\s+which\b))",
-                  r"\1\2 at the center of the table", text)
+    for pattern, written in lexicon.PLACE_REWRITES:  # patches, pairs, the table's centre and sides
+        text = pattern.sub(written, text)
     centred = re.search(r"\bcent(?:er|r)ed\b", text)
     if centred:  # "a centered stack of red, blue and green", "..., centered": centred where? (it was dropped)
         raise ParseError(f"'centered' in \"{original[:80]}\" does not say where the centre is for the builtin parser; say "

@@ -208,7 +208,7 @@ def parse(instruction: str) -> TaskSchema:
                                                     "Rephrase (e.g. \"two red blocks\"), or use --model")
                 continue
             schema.repairs = b.repairs
-            gap = disjoint_regions(f, schema) or unaccounted(f, schema)
+            gap = unaccounted(f, schema) or disjoint_regions(f, schema)
             if gap is None:
                 # reverse accounting: a part of G nobody stated is dropped where a weaker goal
                 # exists (a tower's named end kept, the rest free); the rest is recorded as
