@@ -164,13 +164,13 @@ def disjoint_regions(f: Features, schema: TaskSchema) -> ParseError | None:
     front left corner and in the front right corner), or on two goal patches (which rho_0 lays
     apart): no placement satisfies it."""
     seen: dict[str, list[str]] = {}
-    patches: dict[str, list[str]] = {}
+    patched: dict[str, list[str]] = {}
     for p in schema.goal_predicate().walk():
         if isinstance(p, InRegion):
             seen.setdefault(p.a, []).append(p.region)
         elif type(p) is OnPatch:
-            patches.setdefault(p.a, []).append(p.patch)
-    for cube, on in sorted(patches.items()):
+            patched.setdefault(p.a, []).append(p.patch)
+    for cube, on in sorted(patched.items()):
         if len(set(on)) > 1:
             return Inexpressible("contradiction", [f"{cube} on {' and on '.join(sorted(set(on)))}".replace("_", " ")],
                                  "contradicts itself: one cube cannot stand on two goal patches at the end of the "
