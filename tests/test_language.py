@@ -1385,3 +1385,15 @@ def test_a_relation_to_both_of_them_reaches_the_two_cubes_named_before():
 ])
 def test_two_sides_said_as_sides_are_the_table_s(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # each was refused (stranger set 3): a non-native "at top of", a greeting, colour typos, a pyramid's "peak"
+    ("Please you put the red cube at top of the green cube.", ["stack(green,red)"]),
+    ("yo stack yellow on pink", ["stack(pink,yellow)"]),
+    ("place blu cube on top of the gren cube", ["stack(green,blue)"]),
+    ("Build a pyramid with three blue blocks on the base, two red blocks above them and a yellow block at the peak.",
+     ["pyramid(blue,blue,blue|red,red|yellow)"]),
+])
+def test_harmless_words_of_other_writers_are_read(text, expected):
+    assert meaning(parse(text)) == expected

@@ -42,7 +42,7 @@ IGNORABLE_MORE: frozenset[str] = frozenset("""
 nice nicely neat tidy tidily maybe perhaps possibly need needs needed want wants wanted let am
 try trying attempt anywhere somewhere flat flatly thanks thank cool great gonna wanna um uh yeah alright
 help wood wooden plastic properly securely stably steadily safely accurately completely entirely fully pls plz sure
-basically essentially literally honestly
+basically essentially literally honestly yo hello ty thx
 """.split())
 """Further words with no meaning for the goal, each checked not to change what a task asks:
 hedges ("maybe"), wishes ("I need", "we'll", "let's"), praise ("nice"), "anywhere", "lay it
@@ -67,7 +67,7 @@ SYNONYMS: dict[str, str] = {
     "subsequently": "then", "organize": "arrange", "organise": "arrange", "organized": "arranged",
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
     "uppermost": "topmost", "lowermost": "bottommost", "upon": "on", "right-hand": "right", "left-hand": "left",
-    "midpoint": "center",
+    "midpoint": "center", "blu": "blue", "gren": "green", "yelow": "yellow", "purpel": "purple",
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
@@ -471,7 +471,7 @@ seven eight nine ten many several wide high tall height x can build starts start
 begin begins beginning initial there where which who has have how shape shaped form forms do does
 shown kind type types by-color own its corresponding respectively per contain containing made consisting
 plus minus equals times operator operators symbol symbols mixed upright hold holds just only now want like
-out smallest largest lowest highest biggest least greatest tallest longest widest marked labelled labeled showing
+out peak apex tip smallest largest lowest highest biggest least greatest tallest longest widest marked labelled labeled showing
 alternating alternate alternately alternates going goes go way up down upward downward stand standing
 wall walls wide deep long split divide pillar column close far triangle triangular formation write writes
 writing addition subtraction multiplication increase increases decrease decreases tier tiers story storey stories storeys instead actually

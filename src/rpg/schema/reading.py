@@ -346,7 +346,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   r"((?:should|must|need\s+to|have\s+to)\s+(?:be|end\s+up)|are|end\s+up)\s+far\s+apart\b", r"\1 \3 far from \2", text)
     text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall)", r"\1 \2", text)
     text = _compass(text)
-    text = re.sub(r"\b(?:to|onto)\s+the\s+top\s+of\b", "on top of", text)
+    text = re.sub(r"\b(?:to|onto)\s+the\s+top\s+of\b|\b(?:at|to|on)\s+top\s+of\b", "on top of", text)  # "at top of"
     # "to its left": the relation to the cube "it" stands for (resolved like "to the left of it")
     text = re.sub(r"\b(?:to|on|at)\s+(its|their)\s+(left|right)(?:\s+(?:hand\s+)?side)?\b",
                   lambda m: f"to the {m.group(2)} of {'it' if m.group(1) == 'its' else 'them'}", text)
