@@ -826,6 +826,10 @@ def test_a_structure_turned_into_another_has_no_order_nobody_said(tmp_path, base
     ("Build a tower of two orange blocks in the back right corner", ["make it taller, 4 blocks"],
      ["stack(orange,orange,orange,orange)@back_right"]),
     ("Put the white block on the black block", ["put them side by side instead"], ["next_to(black,white)"]),
+    # "and now a blue one on top" adds; "that blue one" is the blue cube; "lay them out" puts them (each was refused)
+    ("Put the green cube on top of the red cube", ["and now a blue one on top", "no wait, make that blue one white"],
+     ["stack(red,green,white)"]),
+    ("Put the cyan block on the red block", ["lay them out in a line instead"], ["line(cyan,red)"]),
 ])
 def test_edits_said_in_fewer_or_looser_words(tmp_path, base, edits, want):
     assert _steered(tmp_path, base, *edits)[-1][1] == want

@@ -781,7 +781,9 @@ INTENSIFIER_RIGHT_RE = re.compile(r"(?i)\b(?:right|directly|just)\s+(?=next\s+to
 
 EDIT_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"(?i)\bon\s+top\s+of\s+(?:that|this)(?!\s+\w+\s+(?:block|cube|one)\b)"), "on top of the tower"),  # "and a T on top of that"
-    (re.compile(r"(?i)^\s*(?:and|plus)\s+(?=(?:a|an|another|one\s+more|\d+)\s)"), "add "),  # "and a red block on top"
+    (re.compile(r"(?i)^\s*(?:and|plus)(?:\s+(?:now|then|also))?\s+(?=(?:a|an|another|one\s+more|\d+)\s)"), "add "),  # "and (now) a red block on top"
+    (re.compile(r"(?i)\blay\s+(them|it|everything|the\s+(?:blocks|cubes))\s+out\b"), r"put \1"),  # "lay them out in a line"
+    (re.compile(rf"(?i)\b(?:that|this)\s+(?=(?:{COLOR_RE})\s+(?:one|block|cube)\b)"), "the "),  # "make that blue one white"
     # "make it taller, 4 blocks": the count says how much
     (re.compile(r"(?i)\b(?:taller|higher|longer|wider|shorter|smaller|bigger)\s*[,:;-]?\s+"
                 r"(?=(?:\d+|two|three|four|five|six|seven|eight)\s+(?:blocks|cubes)\b)"), ""),
