@@ -547,7 +547,7 @@ def _meaning_after(tmp_path, base, edits):
     ("Build a tower of three blue blocks", ["make it four tall"], ["stack(blue,blue,blue,blue)"], "tweak"),
     # colours of the whole structure, of both cubes, of a role
     # (a line of identical cubes in a sequence: no order, meaning() writes the canonical instruction's "sequence")
-    ("Make a row of three purple cubes", ["I'd like the row to be green"], ["line[sequence](green,green,green)"], "tweak"),
+    ("Make a row of three purple cubes", ["I'd like the row to be green"], ["line(green,green,green)"], "tweak"),
     ("Stack a red block on a blue block", ["both shoud be white"], ["stack(white,white)"], "tweak"),
     ("Place a blue cube on top of a red cube on the table", ["put a green cube on top of that", "and the bottom one purple"],
      ["stack(purple,blue,green)"], "tweak"),
@@ -830,6 +830,14 @@ def test_a_structure_turned_into_another_has_no_order_nobody_said(tmp_path, base
     ("Put the green cube on top of the red cube", ["and now a blue one on top", "no wait, make that blue one white"],
      ["stack(red,green,white)"]),
     ("Put the cyan block on the red block", ["lay them out in a line instead"], ["line(cyan,red)"]),
+    # a far relation, a typo'd "add" (both were refused)
+    ("Put the blue block next to the orange block", ["actually they should be far apart"], ["far_from(blue,orange)"]),
+    ("Make a stack with brown on the bottom and orange on top", ["ad a yelow block on top"], ["stack(brown,orange,yellow)"]),
+    # a line stacked "in the same order": first cube at the bottom, or from the end the colour names
+    ("Make a row of red, white and blue blocks from left to right",
+     ["now stack them instead, in the same order, with red at the bottom"], ["stack(red,white,blue)"]),
+    ("Make a row of red, white and blue blocks from left to right", ["stack them in the same order with blue at the bottom"],
+     ["stack(blue,white,red)"]),
 ])
 def test_edits_said_in_fewer_or_looser_words(tmp_path, base, edits, want):
     assert _steered(tmp_path, base, *edits)[-1][1] == want
@@ -869,6 +877,9 @@ def test_removals_and_additions_of_cubes_among_relations(tmp_path, base, edit, w
     ("Put the red block in the front left corner", "also a red block in the front right corner", "cannot add"),
     ("build a tower of red, blue and green", "same blocks, but make a row", "keeps the task's 3 cubes"),
     ("stack the red block on the blue block", "same blocks, but make two towers of four", "keeps the task's 2 cubes"),
+    # the colour said for the bottom stands at neither end of the kept order
+    ("Make a row of red, white and blue blocks from left to right", "stack them in the same order with white at the bottom",
+     "is not at exactly one end"),
 ])
 def test_edits_refused_for_their_reason(tmp_path, base, edit, match):
     fam = compile_instruction(base, tmp_path, name="fam").path

@@ -588,6 +588,7 @@ EDIT_RELATIONS: tuple[tuple[str, str], ...] = (
     (r"\b(?:to the |on the )?right\b", "right_of"),
     (r"\bin front\b|\bfront\b", "in_front_of"),
     (r"\bbehind\b|\bin back\b|\bto the back\b", "behind"),
+    (r"\bfar\s+(?:apart|away|from)\b|\baway\s+from\b", "far_from"),
     (r"\bnext to\b|\bbeside\b|\badjacent\b|\bnear\b|\bclose to\b|\bside by side\b", "next_to"),
     (r"\bunder(?:neath)?\b|\bbelow\b|\bbeneath\b", "under"),
     (r"\bon top\b|\bonto\b|\batop\b|\bstack(?:ed|ing)?\b|\bon (?:it|them|the \w+ (?:block|cube))\b", "on"),
@@ -783,6 +784,7 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"(?i)\bon\s+top\s+of\s+(?:that|this)(?!\s+\w+\s+(?:block|cube|one)\b)"), "on top of the tower"),  # "and a T on top of that"
     (re.compile(r"(?i)^\s*(?:and|plus)(?:\s+(?:now|then|also))?\s+(?=(?:a|an|another|one\s+more|\d+)\s)"), "add "),  # "and (now) a red block on top"
     (re.compile(r"(?i)\blay\s+(them|it|everything|the\s+(?:blocks|cubes))\s+out\b"), r"put \1"),  # "lay them out in a line"
+    (re.compile(r"(?i)^\s*ad\s+(?=(?:a|an|another|one|\d+)\s)"), "add "),  # "ad a yelow block on top"
     (re.compile(rf"(?i)\b(?:that|this)\s+(?=(?:{COLOR_RE})\s+(?:one|block|cube)\b)"), "the "),  # "make that blue one white"
     # "make it taller, 4 blocks": the count says how much
     (re.compile(r"(?i)\b(?:taller|higher|longer|wider|shorter|smaller|bigger)\s*[,:;-]?\s+"

@@ -488,10 +488,11 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("count", {"delta": 1}))
     elif re.search(r"\b(?:shorter|smaller|lower)\b", t) and not any(o.op in ("remove", "dims", "count") for o in ops):
         ops.append(Op("count", {"delta": -1}))
-    shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out|use|do|spell)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+)(?:\d+x\d+(?:x\d+)?\s+)?"
+    shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out|use|do|spell)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+|one\s+|a\s+single\s+)(?:\d+x\d+(?:x\d+)?\s+)?"
                       rf"{STRUCTURE_RE}", t)
     stack_all = re.search(r"\b(?:stack|pile)\s+(?:them|all|everything|(?:all\s+)?the\s+(?:blocks|cubes))(?:\s+(?:up|instead|together"
-                          r"|on top of each other|on top of one another))*\W*$", t)
+                          r"|on top of each other|on top of one another))*\W*$", t) or (
+        SAME_ORDER_RE.search(t) and re.search(r"\b(?:stack|pile)\s+(?:them|all|everything)\b", t))  # "stack them, in the same order"
     bare_shape = re.fullmatch(r"(?:(?:now|ok|okay|actually|then|and|maybe|rather)\s+)*(?:as\s+|in\s+|into\s+)?an?\s+"
                               + STRUCTURE_RE + r"(?:\s+(?:instead|now|please))*\W*", t)
     wall = re.search(r"\b(?:make|turn|build|form|change|rearrange|arrange|reshape|into|as)\b[^.;]*?\ban?\s+wall\b", t)
@@ -502,12 +503,25 @@ def read_ops(t: str) -> list[Op]:
         ops = [o for o in ops if o.op != "count"]
         ops.append(Op("structure", {"to": "block", "dims": [1, int(wide.group(1)), int(high.group(1))]}))
     elif shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
-        ops.append(Op("structure", {"to": structure_of_word(shape.group(1))}))
+        ops.append(Op("structure", {"to": structure_of_word(shape.group(1)), **_kept_order(t)}))
     elif stack_all and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
-        ops.append(Op("structure", {"to": "tower"}))  # "stack them": a tower of the task's cubes
+        ops.append(Op("structure", {"to": "tower", **_kept_order(t)}))  # "stack them": a tower of the task's cubes
     elif bare_shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
         ops.append(Op("structure", {"to": structure_of_word(bare_shape.group(1))}))  # "now a line instead"
     return ops
+
+
+SAME_ORDER_RE = re.compile(r"\b(?:in\s+the\s+same\s+order|keep(?:ing)?\s+the\s+(?:same\s+)?order|same\s+order)\b")
+"""A structure turned into another that keeps its cubes' order ("stack them in the same order")."""
+
+
+def _kept_order(t: str) -> dict:
+    """``{"keep_order": True}`` and the end a colour is given ("red at the bottom": ``{"end":
+    ("red", "bottom")}``) when a structure edit keeps the cubes' order; else ``{}``."""
+    if not SAME_ORDER_RE.search(t):
+        return {}
+    role = re.search(rf"\b({COLOR_RE})\s+(?:block\s+|cube\s+|one\s+)?(?:at|on)\s+(?:the\s+)?(bottom|base|top|left|right)\b", t)
+    return {"keep_order": True, **({"end": (canon_color(role.group(1)), role.group(2))} if role else {})}
 
 
 TASK_NOUN_RE = re.compile(r"\b(?:towers?|stacks?|stacked|lines?|rows?|circles?|circular|rings?|pyramids?|grids?|squares?|"
@@ -792,6 +806,28 @@ def _with_layer_colors(spec: TaskSpec) -> TaskSpec:
     return replace(spec, items=tuple(items), layer_colors=True, ordering=None, descending=False)
 
 
+def _in_kept_order(spec: TaskSpec, end: tuple[str, str] | None) -> TaskSpec:
+    """A tower or line that keeps the cubes' order of the structure it was made from (first
+    cube at the bottom or on the left), read from the other end when ``end`` names the last
+    cube's colour for the first end ("in the same order, red at the bottom" of a line whose
+    red is on the right).
+
+    Raises:
+        SteerError: ``end`` names a colour at neither end, or at both.
+    """
+    if end is not None:
+        color, where = end
+        first = where in ("bottom", "base", "left")
+        colors = [it.color for it in spec.items]
+        at = [i for i in (0, len(colors) - 1) if colors[i] == color]
+        if len(at) != 1:
+            raise SteerError(f"'{color} at the {where}' does not say which end of the order goes {where}: the {color} cube "
+                             "is not at exactly one end; state the whole new task")
+        if (at[0] == 0) != first:
+            spec = spec.with_items(list(reversed(spec.items)))
+    return replace(spec, direction="left_to_right")
+
+
 def _fit_structure(spec: TaskSpec, target: str) -> TaskSpec:
     try:
         return STRUCTURE_KINDS[target].fit(spec, _resize)
@@ -865,6 +901,8 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
                 if len(spec.items) != before and not any(q.op in ("count", "dims") for q in ops):
                     raise SteerError(f"a {p['to']} is not made of {before} cubes (the nearest has {len(spec.items)}); say its size "
                                      "too, or state the whole new task")
+                if p.get("keep_order") and spec.structure in ("tower", "line"):
+                    spec = _in_kept_order(spec, p.get("end"))
         elif o.op == "material":
             if p["to"] == spec.material:
                 continue
