@@ -2,6 +2,7 @@
 rpg.schema.clauses, rpg.schema.accounting). Language written by people is tested in
 test_corpus.py; these pin down the mechanisms."""
 
+import numpy as np
 import pytest
 
 from rpg.domain.predicates import region_boxes
@@ -1397,3 +1398,40 @@ def test_two_sides_said_as_sides_are_the_table_s(text, expected):
 ])
 def test_harmless_words_of_other_writers_are_read(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # tasks said one after another with no cube in common: each read alone, laid out apart
+    ("make a tower of two blue blocks and put the red block in the front left corner",
+     ["in_region(red,front_left)", "stack(blue,blue)"]),
+    ("build a row of three green cubes. Put the red cube on the yellow patch",
+     ["line(green,green,green)", "on_patch(red,patch:yellow)"]),
+    ("Make a pyramid of three orange cubes and put the cyan cube behind the gray cube.",
+     ["behind(cyan,gray)", "pyramid(orange,orange,orange)"]),
+])
+def test_independent_parts_are_read_apart_and_laid_out_clear_of_each_other(text, expected):
+    from rpg.schema.feasibility import check_feasibility
+    from rpg.schema.readers.compose import PART_CLEARANCE
+
+    schema = check_feasibility(parse(text))
+    assert meaning(schema) == expected
+    goal = schema.goal_predicate()
+    parts = [set(p.object_names()) for p in goal.children()]
+    xy = {n: np.array(p.position[:2]) for n, p in schema.goal_layout.items()}
+    for i, a in enumerate(parts):  # no cube of one part within a cube edge plus the clearance of another's
+        for b in parts[i + 1:]:
+            if not a & b:
+                assert min(np.abs(xy[m] - xy[n]).max() for m in a for n in b) >= 0.04 + PART_CLEARANCE - 1e-9
+
+
+@pytest.mark.parametrize("text", [
+    "make a tower of two blue blocks and put the red block on the left",  # the tower's left, or the table's?
+    "build a tower of three blocks and put the red block next to it",  # one part refers to another
+])
+def test_parts_that_may_refer_to_one_another_are_not_read_apart(text):
+    from rpg.schema.builder import Builder
+    from rpg.schema.readers.compose import recognize_independent_parts
+    from rpg.schema.reading import features
+
+    f = features(text)
+    assert not recognize_independent_parts(f, Builder(f.original))

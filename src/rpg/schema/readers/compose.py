@@ -265,3 +265,128 @@ def recognize_spelled_out_sort(f: Features, b: Builder) -> bool:
     b.primitives += list(head.primitives)
     b.min_separation = head.initial_state.min_separation
     return True
+
+
+PART_SPLIT_RE = re.compile(
+    r"\s*(?:[.;!]\s+|,?\s+and\s+then\s+|,\s*then\s+|\s+then\s+"
+    r"|,?\s+and\s+(?=(?:put|place|build|make|stack|move|set|arrange|line\s+up|create|form|pile|slide|push|bring)\b))")
+"""Where one task said after another begins: a new sentence, "then", or "and" before a verb
+("make a tower of two blue blocks and put the red block on the left")."""
+
+BARE_PLACE_RE = re.compile(r"\b(?:to|on|at|in)\s+the\s+(?:left|right|front|back|top)\s*$|\b(?:in\s+front|behind|on\s+top|beside)\s*$")
+"""A part ending in a place said without what it is a place of ("... and put the red block on
+the left"): beside another part it may be that part's left, so the parts are not read apart."""
+
+PART_CLEARANCE: float = C.MIN_SEPARATION - C.CUBE_EDGE
+"""Least gap (m) between the footprints of two parts laid out apart (the clearance rho_0 keeps
+between two cubes, :data:`~rpg.domain.constants.MIN_SEPARATION` less one cube edge)."""
+
+PART_GRID_STEP: float = 0.01
+"""Step (m) of the grid of centres tried for a part that names no place."""
+
+
+def _footprint(head: TaskSchema) -> list[tuple[float, float, float, float]]:
+    """Boxes (x0, x1, y0, y1), m, of a part's cubes and goal patches in its goal layout."""
+    boxes = []
+    for a in head.assets:
+        x, y = head.goal_layout[a.name].position[:2]
+        sx, sy = ((C.LONG_PATCH_SIZE if a.shape == "long" else C.PATCH_SIZE) if a.kind == "goal_patch"
+                  else (C.CUBE_EDGE, C.CUBE_EDGE))
+        boxes.append((x - sx / 2, x + sx / 2, y - sy / 2, y + sy / 2))
+    return boxes
+
+
+def _overlaps(a: list, b: list) -> bool:
+    g = PART_CLEARANCE
+    return any(p[0] < q[1] + g and q[0] < p[1] + g and p[2] < q[3] + g and q[2] < p[3] + g for p in a for q in b)
+
+
+def _part_shifts(heads: list[TaskSchema]) -> list[tuple[float, float]] | None:
+    """A shift (dx, dy), m, for each part: none for a part that places itself (a region of the
+    table), else the grid centre nearest the workspace's centre where the part's footprint
+    stays on the workspace and clear of every part laid out before it.  None when a part
+    cannot be laid out (or two that place themselves overlap)."""
+    fixed = [any(isinstance(p, InRegion) for p in h.goal_predicate().walk()) for h in heads]
+    placed: list = []
+    shifts: list[tuple[float, float] | None] = [None] * len(heads)
+    for i in sorted(range(len(heads)), key=lambda i: not fixed[i]):  # parts with a place first
+        boxes = _footprint(heads[i])
+        if fixed[i]:
+            if _overlaps(boxes, placed):
+                return None
+            shifts[i], placed = (0.0, 0.0), placed + boxes
+            continue
+        cx = (min(b[0] for b in boxes) + max(b[1] for b in boxes)) / 2
+        cy = (min(b[2] for b in boxes) + max(b[3] for b in boxes)) / 2
+        xs = np.arange(C.WORKSPACE_X[0], C.WORKSPACE_X[1] + 1e-9, PART_GRID_STEP)
+        ys = np.arange(C.WORKSPACE_Y[0], C.WORKSPACE_Y[1] + 1e-9, PART_GRID_STEP)
+        centre = np.array(C.WORKSPACE_CENTER)
+        for x, y in sorted(((float(x), float(y)) for x in xs for y in ys),
+                           key=lambda p: (round(float(np.hypot(*(np.array(p) - centre))), 6), p)):
+            moved = [(b[0] + x - cx, b[1] + x - cx, b[2] + y - cy, b[3] + y - cy) for b in boxes]
+            if (all(C.WORKSPACE_X[0] <= b[0] and b[1] <= C.WORKSPACE_X[1] and C.WORKSPACE_Y[0] <= b[2]
+                    and b[3] <= C.WORKSPACE_Y[1] for b in moved) and not _overlaps(moved, placed)):
+                shifts[i], placed = (x - cx, y - cy), placed + moved
+                break
+        else:
+            return None
+    return shifts
+
+
+def _said_apart(texts: list[str]) -> bool:
+    """Whether no two parts name the same colour (cube or patch) or label: each part's cubes
+    are its own, so nothing one part says of a cube can be about another part's."""
+    seen: set[str] = set()
+    for t in texts:
+        own = {c for _, c in color_mentions(t)} | {m.upper() for m in re.findall(r"\b(?:letter|digit)\s+(\w)\b", t)}
+        if own & seen:
+            return False
+        seen |= own
+    return True
+
+
+@reader(order=250)
+def recognize_independent_parts(f: Features, b: Builder) -> bool:
+    """Tasks said one after another that share no cube ("make a tower of two blue blocks and
+    put the red block on the left"; "build a row of three green cubes. Put the red cube on
+    the yellow patch"): each part is read by the whole front end, its cubes and patches keep
+    its layout, and a part that names no place is moved clear of the others.  Tried last: a
+    text any other reader takes is not split.  Parts that name a colour in common, refer to
+    one another ("next to it") or cannot be laid out apart are not read here."""
+    texts = [t.strip(" ,.;!") for t in PART_SPLIT_RE.split(f.text)]
+    texts = [t for t in texts if t]
+    if len(texts) < 2 or not _said_apart(texts) or any(BARE_PLACE_RE.search(t) for t in texts):
+        return False
+    heads = _read_parts(texts)
+    if heads is None or any(h.initial_state.structures for h in heads):
+        return False
+    shifts = _part_shifts(heads)
+    if shifts is None:
+        return False
+    named = {c for _, c in color_mentions(f.text)}
+    used: set[str] = set()
+    for text, head, (dx, dy) in zip(texts, heads, shifts, strict=True):
+        own = {c for _, c in color_mentions(text)}
+        mapping: dict[str, str] = {}
+        for a in head.assets:
+            color = a.color
+            if a.kind == "colored_cube" and color not in own and color in used | named:  # a colour the part left open
+                color = next(c for c in DEFAULT_COLORS if c not in used | named | {x.color for x in head.assets})
+            if a.kind == "goal_patch":
+                mapping[a.name] = b.patch(color, a.shape)
+            elif a.kind == "colored_cube":
+                mapping[a.name] = b.cube(color)
+            else:
+                mapping[a.name] = b.semantic(a.label, dict(a.faces))
+            used.add(color) if color else None
+        for a in head.assets:
+            x, y, z = head.goal_layout[a.name].position
+            b.place({mapping[a.name]: Pose((x + dx, y + dy, z))})
+        b.orientations.update({mapping[n]: q for n, q in head.initial_state.orientations.items()})
+        goal = [p.rename(mapping) for p in head.goal_predicate().conjuncts()]
+        b.preds += goal
+        b.summary += [p.describe() for p in goal]
+        b.primitives += list(head.primitives)
+        if head.reasoning != "spatial":
+            b.reasoning = head.reasoning
+    return True
