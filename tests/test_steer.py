@@ -838,6 +838,10 @@ def test_a_structure_turned_into_another_has_no_order_nobody_said(tmp_path, base
      ["now stack them instead, in the same order, with red at the bottom"], ["stack(red,white,blue)"]),
     ("Make a row of red, white and blue blocks from left to right", ["stack them in the same order with blue at the bottom"],
      ["stack(blue,white,red)"]),
+    # a cube taken off a patch it shares, a cube moved from a patch to a place and from a place to a patch (each refused)
+    ("Put the cyan cube and the pink cube on the yellow patch", ["get rid of the pink one"], ["on_patch(cyan,patch:yellow)"]),
+    ("Place the black cube on the green patch", ["Move it to the left side of the table instead."], ["in_region(black,left)"]),
+    ("put the orange cube in the back left corner", ["put it on a purple patch instead"], ["on_patch(orange,patch:purple)"]),
 ])
 def test_edits_said_in_fewer_or_looser_words(tmp_path, base, edits, want):
     assert _steered(tmp_path, base, *edits)[-1][1] == want

@@ -199,6 +199,10 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         return None
     colors, pcolor, shape = task
     t = " " + edit.lower().strip().rstrip(".!") + " "
+    region = _edit_region(t)
+    if (region is not None and len(colors) == 1 and re.search(r"\b(?:move|put|place|shift|slide|bring|it)\b", t)
+            and not re.search(r"\bpatch\b|\b(?:add|another|also|too)\b", t)):  # "move it to the left side of the table instead"
+        return f"Place the {colors[0]} block {_region_phrase(region)}", "modify"
     intent = None
     t = re.sub(r"\btarget\b(?!\s+patch)", "patch", t)  # "make the target green"
     recolor = re.search(rf"\bpatch\b[^.;]*?\b(?:to|into|be|is)?\s*({COLOR_RE})\b|\b({COLOR_RE})\s+(?:goal\s+|target\s+)?patch\b", t)
@@ -304,6 +308,9 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
             return None  # "put the blue block in the corner": instead of the red one, or as well? (read elsewhere)
         placed.append((named[0], region))  # "and the blue block in the front right corner": one more cube
         intent = "extend"
+    elif (onto := re.search(rf"\b(?:on|onto)\s+(?:an?|the)\s+({COLOR_RE})\s+(?:goal\s+)?patch\b", t)) and len(placed) == 1 \
+            and not EDIT_ADDITIVE_RE.search(t):  # "put it on a purple patch instead": from a place on the table to a patch
+        return f"Place the {placed[0][0]} block on the {canon_color(onto.group(1))} goal patch", "modify"
     elif region is not None:
         if re.search(rf"\b(?:an?|another|one\s+more)\s+(?:(?:{COLOR_RE})\s+)?(?:block|cube)\b", t):
             return None  # "also a red block in the front right corner": one more cube, not this one moved
@@ -364,7 +371,15 @@ def remove_cubes(edit: str, schema: TaskSchema, colors: list[str], parse) -> tup
     except BadInput as exc:
         raise SteerError(str(exc).splitlines()[0]) from None
     names = {a.color for a in cubes}
-    want = sorted(a for a in meaning(schema) if not set(re.findall(r"[a-z]+", a)) & names)
+    want = []
+    for atom in meaning(schema):
+        grouped = re.fullmatch(r"on_patch\((.*),(patch:\w+)\)", atom)  # "on_patch(cyan,pink,patch:yellow)": one atom per patch
+        if grouped:
+            left = [c for c in grouped.group(1).split(",") if c not in names]
+            want += [f"on_patch({','.join(left)},{grouped.group(2)})"] if left else []
+        elif not set(re.findall(r"[a-z]+", atom)) & names:
+            want.append(atom)
+    want.sort()
     if sorted(meaning(new)) != want:
         return None
     return text, new
