@@ -309,7 +309,8 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         placed.append((named[0], region))  # "and the blue block in the front right corner": one more cube
         intent = "extend"
     elif (onto := re.search(rf"\b(?:on|onto)\s+(?:an?|the)\s+({COLOR_RE})\s+(?:goal\s+)?patch\b", t)) and len(placed) == 1 \
-            and not EDIT_ADDITIVE_RE.search(t):  # "put it on a purple patch instead": from a place on the table to a patch
+            and not EDIT_ADDITIVE_RE.search(t) and not re.match(r"\s*and\b", t) \
+            and not set(named) - {placed[0][0]}:  # "put it on a purple patch instead": from a place on the table to a patch
         return f"Place the {placed[0][0]} block on the {canon_color(onto.group(1))} goal patch", "modify"
     elif region is not None:
         if re.search(rf"\b(?:an?|another|one\s+more)\s+(?:(?:{COLOR_RE})\s+)?(?:block|cube)\b", t):
