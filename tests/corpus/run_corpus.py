@@ -36,6 +36,7 @@ UNSEEN = HERE / "unseen.yaml"
 STRANGER = HERE / "stranger.yaml"  # attack material written for the project (development, not a corpus source)
 STRANGER2 = HERE / "stranger2.yaml"  # a second stranger's set, written 2026-11-23 (development as well)
 STRANGER3 = HERE / "stranger3.yaml"  # a third stranger's set, written 2026-11-23 (development as well)
+STRANGER4 = HERE / "stranger4.yaml"  # a fourth, written 2026-11-23 (sixth session) as a fresh measurement
 SPLITS = HERE / "splits.yaml"
 
 # What a refusal message must say to be refused "for the right reason", per must-refuse class.
@@ -68,8 +69,8 @@ def load_split(name: str) -> list[dict]:
     """The entries of one split ('dev' or 'unseen'); the unseen file must match its frozen hash."""
     if name == "dev":
         return yaml.safe_load(CORPUS.read_text())["instructions"]
-    if name in ("stranger", "stranger2", "stranger3"):
-        path = {"stranger": STRANGER, "stranger2": STRANGER2, "stranger3": STRANGER3}[name]
+    if name in ("stranger", "stranger2", "stranger3", "stranger4"):
+        path = {"stranger": STRANGER, "stranger2": STRANGER2, "stranger3": STRANGER3, "stranger4": STRANGER4}[name]
         return [{"source": name, **e} for e in yaml.safe_load(path.read_text())["instructions"]]
     splits = yaml.safe_load(SPLITS.read_text())
     want, got = splits["unseen"]["sha256"], sha256(UNSEEN)
@@ -92,7 +93,7 @@ def classify(entry: dict) -> tuple[str, str]:
     except Exception as exc:  # a crash is neither a refusal nor a task: count it as wrong
         return "wrong", f"crash: {type(exc).__name__}: {exc}"[:160]
     got = meaning(schema)
-    if not matches(entry["meaning"], got):
+    if not any(matches(m, got) for m in alternatives(entry)):
         return "wrong", "; ".join(got)
     if entry.get("order") == "any" and any(type(p).__name__ == "Stack" for p in schema.goal_predicate().walk()):
         return "wrong", "demands what no word says: an order of a stack the words leave free"
@@ -104,8 +105,15 @@ def classify(entry: dict) -> tuple[str, str]:
     return "correct", "; ".join(got)
 
 
+def alternatives(entry: dict) -> list[str]:
+    """The meanings an entry accepts: one, or a list where more than one reading (or spelling)
+    is right (the stranger sets' annotators give lists where the notation's spelling was a guess)."""
+    m = entry["meaning"]
+    return list(m) if isinstance(m, list) else [m]
+
+
 def must_refuse(entry: dict) -> bool:
-    return entry["meaning"].strip().startswith("none")
+    return alternatives(entry)[0].strip().startswith("none")
 
 
 def refusal_reason_ok(entry: dict, message: str) -> bool:
@@ -155,7 +163,7 @@ def failure_class(entry: dict, outcome: str, detail: str) -> str | None:
         return "wrong: compiled a must-refuse text"
     if detail.startswith("demands what no word says"):
         return "wrong: demands what no word says"
-    want, got = _atoms(entry["meaning"]), _atoms(detail)
+    want, got = _atoms(alternatives(entry)[0]), _atoms(detail)
     if any(a.startswith("extra(") for a in got):
         return "wrong: content invented (extra object)"
     heads = sorted(a.split("(")[0] for a in want)
@@ -164,7 +172,7 @@ def failure_class(entry: dict, outcome: str, detail: str) -> str | None:
             return "wrong: relation/structure count"
         return "wrong: relation/structure kind"
     if any("@" in a for a in want) != any("@" in a for a in got) or \
-            sorted(re.findall(r"@(\w+)", entry["meaning"])) != sorted(re.findall(r"@(\w+)", detail)):
+            sorted(re.findall(r"@(\w+)", alternatives(entry)[0])) != sorted(re.findall(r"@(\w+)", detail)):
         return "wrong: place lost or changed"
     ow, og = _objects(want), _objects(got)
     if len(ow) != len(og) and not any("*" in o for o in ow):
@@ -223,7 +231,8 @@ def run_split(name: str, show: str = "none") -> Counter:
     label = {"dev": "DEVELOPMENT split (instructions.yaml)", "unseen": "UNSEEN split (unseen.yaml, frozen)",
              "stranger": "STRANGER set (stranger.yaml, development material)",
              "stranger2": "STRANGER set 2 (stranger2.yaml, development material)",
-             "stranger3": "STRANGER set 3 (stranger3.yaml, development material)"}[name]
+             "stranger3": "STRANGER set 3 (stranger3.yaml, development material)",
+             "stranger4": "STRANGER set 4 (stranger4.yaml, written as a fresh measurement)"}[name]
     _table(f"{label}: {len(by_source)} sources", by_source, counts)
     n_plain = sum(plain.values())
     if n_plain:
@@ -257,7 +266,7 @@ def run(show: str = "wrong", split: str = "dev") -> Counter:
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--split", default="dev", choices=["dev", "unseen", "stranger", "stranger2", "stranger3", "all"])
+    ap.add_argument("--split", default="dev", choices=["dev", "unseen", "stranger", "stranger2", "stranger3", "stranger4", "all"])
     ap.add_argument("--show", default=None, choices=["wrong", "refused", "correct", "all", "none"],
                     help="print these development-split instructions (default: wrong); not allowed for --split unseen")
     args = ap.parse_args(argv)
