@@ -842,6 +842,10 @@ def test_a_structure_turned_into_another_has_no_order_nobody_said(tmp_path, base
     ("Put the cyan cube and the pink cube on the yellow patch", ["get rid of the pink one"], ["on_patch(cyan,patch:yellow)"]),
     ("Place the black cube on the green patch", ["Move it to the left side of the table instead."], ["in_region(black,left)"]),
     ("put the orange cube in the back left corner", ["put it on a purple patch instead"], ["on_patch(orange,patch:purple)"]),
+    # "the blue one" moves the blue cube (the relation had been turned the other way), and both cubes may be said
+    ("stack red on blue", ["put that blue one on the left"], ["left_of(blue,red)"]),
+    ("Put the green cube to the left of the red cube", ["actually the green one should go in front of the red one"],
+     ["in_front_of(green,red)"]),
 ])
 def test_edits_said_in_fewer_or_looser_words(tmp_path, base, edits, want):
     assert _steered(tmp_path, base, *edits)[-1][1] == want
@@ -884,8 +888,19 @@ def test_removals_and_additions_of_cubes_among_relations(tmp_path, base, edit, w
     # the colour said for the bottom stands at neither end of the kept order
     ("Make a row of red, white and blue blocks from left to right", "stack them in the same order with white at the bottom",
      "is not at exactly one end"),
+    # a comparative and a count that disagree (the tower had shrunk), and one cube of two named by colour (both changed)
+    ("build a tower of three green cubes", "make it taller, 2 blocks", "disagree"),
+    ("build a tower of two blue blocks and one red block on top", "make that blue one green", "names one of the task's 2 blue"),
 ])
 def test_edits_refused_for_their_reason(tmp_path, base, edit, match):
     fam = compile_instruction(base, tmp_path, name="fam").path
     with pytest.raises(SteerError, match=match):
         steer(fam, edit)
+
+
+def test_a_patch_recoloured_with_another_colour_said_is_not_read_as_the_patch_alone(tmp_path):
+    from rpg.errors import BadInput
+
+    fam = compile_instruction("put the red cube on the yellow patch", tmp_path, name="fam").path
+    with pytest.raises(BadInput):  # the cube's new colour had been dropped silently
+        steer(fam, "the patch should be blue and the cube green")

@@ -786,9 +786,9 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"(?i)\blay\s+(them|it|everything|the\s+(?:blocks|cubes))\s+out\b"), r"put \1"),  # "lay them out in a line"
     (re.compile(r"(?i)^\s*ad\s+(?=(?:a|an|another|one|\d+)\s)"), "add "),  # "ad a yelow block on top"
     (re.compile(rf"(?i)\b(?:that|this)\s+(?=(?:{COLOR_RE})\s+(?:one|block|cube)\b)"), "the "),  # "make that blue one white"
-    # "make it taller, 4 blocks": the count says how much
-    (re.compile(r"(?i)\b(?:taller|higher|longer|wider|shorter|smaller|bigger)\s*[,:;-]?\s+"
-                r"(?=(?:\d+|two|three|four|five|six|seven|eight)\s+(?:blocks|cubes)\b)"), ""),
+    # "make it taller, 4 blocks": the count it grows (or shrinks) to
+    (re.compile(r"(?i)\b(taller|higher|longer|shorter|smaller|bigger|lower)\s*[,:;-]?\s+"
+                r"(?=(?:\d+|two|three|four|five|six|seven|eight)\s+(?:blocks|cubes)\b)"), r"\1 to "),
 )
 """Edits said in fewer words, as the steering reads them: "on top of that" is on top of the task,
 "and a red block on top" adds one."""

@@ -479,8 +479,10 @@ def read_ops(t: str) -> list[Op]:
     count = EDIT_COUNT_RE.search(t)
     if count and not any(o.op in ("add", "dims", "count", "word", "colors", "outliers") for o in ops):
         dim = count.group("dim") or count.group("dim2")
+        grow = re.search(r"\b(?:(taller|higher|longer|bigger|larger)|shorter|smaller|lower)\s+to\s+\d", t)
         ops.append(Op("count", {"count": int(count.group("n") or count.group("n1") or count.group("n2")),
-                                **({"dim": dim} if dim else {})}))
+                                **({"dim": dim} if dim else {}),
+                                **({"grow": 1 if grow.group(1) else -1} if grow else {})}))  # "taller, 4 blocks"
     elif re.search(r"\b(?:double|triple|halve)\b", t) and not any(o.op in ("add", "dims", "remove", "count") for o in ops):
         factor = {"double": 2.0, "triple": 3.0, "halve": 0.5}[re.search(r"\b(double|triple|halve)\b", t).group(1)]
         ops.append(Op("count", {"factor": factor}))
@@ -1103,6 +1105,9 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             if not spec.kind.sized_by_count:
                 raise SteerError(f"the size of a {spec.structure} is set by its dimensions (e.g. \"a 3x3 base\")")
             n = p.get("count") or (round(len(spec.items) * p["factor"]) if "factor" in p else len(spec.items) + p.get("delta", 0))
+            if p.get("grow") and (n - len(spec.items)) * p["grow"] <= 0:
+                raise SteerError(f"'{'taller' if p['grow'] > 0 else 'shorter'}' and {n} cubes disagree: the "
+                                 f"{spec.structure} has {len(spec.items)}; say the count alone")
             spec = _resize(spec, n)
         elif o.op == "word":
             if not spec.kind.spells:

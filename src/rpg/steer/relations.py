@@ -114,10 +114,14 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
             return None
     else:
         kind = _edit_relation(t)
-        named = re.findall(r"\bthe (\w+) (?:block|cube)\b", t)
+        named = re.findall(r"\bthe (\w+) (?:block|cube|one)\b", t)  # "put the blue one on the left": blue moves
         if re.search(r"\b(?:stack|pile)\s+(?:them|all|everything|the\s+(?:blocks|cubes))\b", t) and not named:
             return None  # "stack them": which on which is not said (the structure edit reads it)
         by_color = {a.color: a.name for a in schema.assets if a.kind == "colored_cube"}
+        pair = [by_color.get(c) for c in named] if len(named) == 2 else None
+        if pair and set(pair) == {subject, obj}:  # "the green one should go in front of the red one": both said
+            subject, obj = pair
+            named = []
         if kind is None or len(named) > 1 or (named and named[0] not in by_color):
             return None  # no relation, or cubes of its own: a whole task, not an edit of this one
         pronoun = re.search(r"\b(?:it|them)\b", t)
@@ -206,9 +210,12 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     intent = None
     t = re.sub(r"\btarget\b(?!\s+patch)", "patch", t)  # "make the target green"
     recolor = re.search(rf"\bpatch\b[^.;]*?\b(?:to|into|be|is)?\s*({COLOR_RE})\b|\b({COLOR_RE})\s+(?:goal\s+|target\s+)?patch\b", t)
-    if recolor and re.search(r"\b(?:make|change|turn|use|paint|color|colour|switch)\b"
-                             r"|\bpatch\s+(?:should|must|needs?\s+to|has\s+to|ought\s+to)\s+be\b", t):  # "the patch should be blue"
-        new = canon_color(recolor.group(1) or recolor.group(2))
+    should = re.search(rf"\bpatch\s+(?:should|must|needs?\s+to|has\s+to|ought\s+to)\s+be\s+({COLOR_RE})\b", t)  # "the patch should be blue"
+    if should or (recolor and re.search(r"\b(?:make|change|turn|use|paint|color|colour|switch)\b", t)):
+        new = canon_color(should.group(1) if should else recolor.group(1) or recolor.group(2))
+        said = {canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", t)}
+        if should and not said <= {new, pcolor}:
+            return None  # "the red patch should be green" of a yellow patch, "... and the cube green": more than the patch
         if new != pcolor:
             pcolor, intent = new, "tweak"
     if re.search(r"\blong(?:er)?\b", t) and shape != "long":

@@ -199,6 +199,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         if plan.cue.kind != "current":  # "go back to version 1": that version as it is
             return ref_schema, ref_schema.instruction, "tweak"
         return _addition(plan, reference, ref_schema)
+    _refuse_one_of_several(plan, ref_schema)
     rel = relation_of(ref_schema) if ref_spec is None else None
     if rel is not None and re.search(r"\bit\b", plan.text, re.IGNORECASE) and all(
             o.op == "recolor" and o.params["select"] == {"all": True} for o in plan.ops) and len(plan.ops) == 1:
@@ -286,6 +287,18 @@ def _same_cubes(edit: str, ref: TaskSchema, schema: TaskSchema) -> TaskSchema:
     for c in sorted({a.color for a in new} - {color}):
         schema = recolor(schema, c, color, merge=True)
     return schema
+
+
+def _refuse_one_of_several(plan, ref_schema) -> None:
+    """Raise :class:`SteerError` when an edit recolours or removes "the blue one" (one cube, by
+    colour) and the task has several cubes of that colour: which one is not said, and changing
+    them all is more than was asked."""
+    for o in plan.ops:
+        color = (o.params.get("select") or {}).get("color") if o.op in ("recolor", "remove") else None
+        n = sum(a.kind == "colored_cube" and a.color == color for a in ref_schema.assets) if color else 0
+        if n > 1 and re.search(rf"\b(?:the|that|this)\s+{color}\s+(?:one|block|cube|brick)\b(?!s)", plan.text, re.IGNORECASE):
+            raise SteerError(f"'the {color} one' names one of the task's {n} {color} cubes but not which; say which (e.g. "
+                             f"\"the top one\"), or name them all (\"the {color} cubes\")")
 
 
 def _refuse_invented_patch(edit: str, ref: TaskSchema, schema: TaskSchema) -> None:
