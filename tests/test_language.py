@@ -314,7 +314,7 @@ def test_readers_register_themselves_in_one_order_and_layers_import_downwards():
 
     orders = [r.order for r in ordered()]
     assert len(READERS) >= 20 and len(set(orders)) == len(orders) and orders == sorted(orders)
-    assert ordered()[-1].name == "recognize_relational"  # the general reader last
+    assert [r.name for r in ordered()[-2:]] == ["recognize_relational", "recognize_independent_parts"]  # general ones last
     with pytest.raises(ValueError, match="has that order"):
         reader(order=ordered()[0].order)(lambda f, b: False)
     probe = ("import sys, rpg.schema.accounting, rpg.schema.reading, rpg.schema.lexicon; "
@@ -1339,10 +1339,30 @@ def test_two_colours_before_one_plural_patch_noun_name_two_patches(text, expecte
     assert meaning(parse(text)) == expected
 
 
-def test_a_list_whose_last_item_is_the_base_and_first_the_top_is_read_from_the_top():
+@pytest.mark.parametrize("text,expected", [
     # the middle of the list had been kept in its order between the swapped ends (4, 2, 3, 1)
-    assert meaning(parse("Stack the digit cubes 1, 2, 3 and 4 into one tower, 4 at the bottom and 1 on top.")) == \
-        ["stack(4,3,2,1)"]
+    ("Stack the digit cubes 1, 2, 3 and 4 into one tower, 4 at the bottom and 1 on top.", ["stack(4,3,2,1)"]),
+    # a label named again for its end is not one more cube (it had stacked D twice)
+    ("stack letters A, B, C and D, D at the bottom and A on top", ["stack(D,C,B,A)"]),
+    # a colour listed twice gets its end from the end of the list it stands at
+    ("stack red, blue, red, blue with blue on top", ["stack(red,blue,red,blue)"]),
+    ("stack red, blue, red, blue with blue at the bottom", ["stack(blue,red,blue,red)"]),
+    # a count after "of" alone, and a colour for every tower of a count (two towers had lost it)
+    ("build a tower of three", ["stack(red,blue,green)"]),
+    ("build two towers, 3 blocks high, all green", ["stack(green,green,green)", "stack(green,green,green)"]),
+])
+def test_a_tower_list_is_read_from_the_end_its_roles_name(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "build a tower of three: red base, then blue, then red, then blue on top",  # four listed
+    "build a tower of four: red base, then blue, then red on top",  # three listed (a green had been invented)
+    "put the red cube left of the blue cube, the green cube behind the white cube and the brown cube far from both of them",
+])
+def test_a_count_or_a_reference_the_list_does_not_match_is_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)
 
 
 @pytest.mark.parametrize("text,kind,words", [
@@ -1372,10 +1392,17 @@ def test_a_coloured_square_a_cube_goes_on_is_a_patch(text, expected):
     assert meaning(parse(text)) == expected
 
 
-def test_a_relation_to_both_of_them_reaches_the_two_cubes_named_before():
+@pytest.mark.parametrize("text,expected", [
     # one of the two had been dropped
-    assert meaning(parse("Put the orange cube next to the purple cube, and put the brown cube far from both of them.")) == \
-        ["far_from(brown,orange)", "far_from(brown,purple)", "next_to(orange,purple)"]
+    ("Put the orange cube next to the purple cube, and put the brown cube far from both of them.",
+     ["far_from(brown,orange)", "far_from(brown,purple)", "next_to(orange,purple)"]),
+    ("place the red and blue cubes next to each other and put the brown cube far from the two of them",
+     ["far_from(blue,brown)", "far_from(brown,red)", "next_to(blue,red)"]),
+    ("put the red cube left of the blue cube and the brown cube far from all of them",
+     ["far_from(blue,brown)", "far_from(brown,red)", "left_of(red,blue)"]),
+])
+def test_a_relation_to_both_of_them_reaches_the_two_cubes_named_before(text, expected):
+    assert meaning(parse(text)) == expected
 
 
 @pytest.mark.parametrize("text,expected", [
@@ -1427,6 +1454,12 @@ def test_independent_parts_are_read_apart_and_laid_out_clear_of_each_other(text,
 @pytest.mark.parametrize("text", [
     "make a tower of two blue blocks and put the red block on the left",  # the tower's left, or the table's?
     "build a tower of three blocks and put the red block next to it",  # one part refers to another
+    # found by the attack: each had been read apart, dropping what ties the parts
+    "put the red block in the front left corner and stack two blue blocks there",
+    "build a line of three green cubes and put the red cube in the middle",
+    "make a tower of three blue blocks and make a row of the other three",
+    "build a tower of three green cubes. Put a second tower of two red cubes in the back right corner",
+    "put the red cube on the yellow patch. Then build a tower of the blue and green cubes on it",
 ])
 def test_parts_that_may_refer_to_one_another_are_not_read_apart(text):
     from rpg.schema.builder import Builder

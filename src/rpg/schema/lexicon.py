@@ -556,7 +556,7 @@ before one plural patch noun, "respectively", "keep", the table's centre and sid
 left after them says no place and is refused."""
 
 BOTH_OF_THEM_RE = re.compile(rf"\b(?P<subj>the\s+(?P<c>{_COLOR_WORD})\s+(?:block|cube))\s+(?P<rel>{_PAIRWISE_WORDS})\s+"
-                             r"(?:both\s+of\s+them|them\s+both|both|each\s+of\s+them)\b")
+                             r"(?:both\s+of\s+them|them\s+both|both|each\s+of\s+them|the\s+two\s+of\s+them|all\s+of\s+them|them\s+all)\b")
 """"The brown cube far from both of them": a relation to each of the two cubes named before it
 (:func:`rpg.schema.reading.normalize_words` writes them out when exactly two are)."""
 

@@ -504,11 +504,13 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   lambda m: m.group(0) if m.group(1) in ("with", "showing", "labeled", "labelled", "marked", "bearing")
                   else m.group(0) + " block", text)  # "stack the letter A on the letter B": those are cubes
     text = re.sub(rf"\b({COLOR_RE})\s+one(s?)\b", lambda m: f"{m.group(1)} block{'s' if m.group(2) else ''}", text)
-    for m in reversed(list(lexicon.BOTH_OF_THEM_RE.finditer(text))):  # "... far from both of them": the two before
-        named = [c for c in dict.fromkeys(re.findall(rf"\b({COLOR_RE})\s+(?:block|cube)\b", text[:m.start()]))
+    for m in reversed(list(lexicon.BOTH_OF_THEM_RE.finditer(text))):  # "... far from both of them": the cubes before
+        named = [c for c in dict.fromkeys(re.findall(rf"\b({COLOR_RE})\b(?!\s+(?:goal\s+|target\s+)?patch)", text[:m.start()]))
                  if c != m.group("c")]
-        if len(named) == 2:
-            text = text[:m.start()] + f"{m.group('subj')} {m.group('rel')} the {named[0]} and {named[1]} blocks" + text[m.end():]
+        if len(named) < 2 or (len(named) > 2 and not re.search(r"\ball\b", m.group(0))):
+            raise ParseError(f"'{m.group(0)}' in \"{original[:80]}\" does not say which cubes ({len(named)} other colours are "
+                             "named before it); name them (e.g. \"far from the red and the blue blocks\")")
+        text = text[:m.start()] + " and ".join(f"{m.group('subj')} {m.group('rel')} the {c} block" for c in named) + text[m.end():]
     for pattern, written_out in lexicon.DISTRIBUTED_RELATIONS:
         text = pattern.sub(written_out, text)
     for w, n in NUMBER_WORDS.items():
@@ -537,7 +539,7 @@ STRUCTURE_PHRASES: tuple[tuple[re.Pattern, str], ...] = (
                 rf"(?:(?:are|being|in)\s+)?({COLOR_RE})\b(?!\s+(?:blocks?|cubes?|patch))"),
      r"\1 of \2 \3 blocks"),
     # "a pyramid of three, two black on the bottom ...": the count is the structure's cubes
-    (re.compile(r"\b(pyramid|wall|row|line|circle|ring)\s+of\s+(\d+)(?=\s*(?:[,.;:!]|$))"), r"\1 of \2 blocks"),
+    (re.compile(rf"\b(pyramid|wall|row|line|circle|ring|{TOWER_NOUNS})\s+of\s+(\d+)(?=\s*(?:[,.;:!]|$|with\b))"), r"\1 of \2 blocks"),
     # "a blue tower of 3 blocks"
     (re.compile(rf"\b(a|an|one|1|the)\s+({COLOR_RE})\s+({TOWER_NOUNS})\s+of\s+(\d+)(?:\s+(?:blocks|cubes))?\b"),
      r"\1 \3 of \4 \2 blocks"),

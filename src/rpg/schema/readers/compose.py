@@ -209,7 +209,7 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
     return True
 
 
-LISTED_TOWERS_RE = re.compile(r"\b(?P<k>\d+)\s+(?P<noun>tower|stack|column|pile|pillar)s(?:\s+of\s+(?:blocks|cubes))?\s*[:;,\-]\s*(?P<body>.+?)\s*[.!]?$")
+LISTED_TOWERS_RE = re.compile(r"\b(?P<k>\d+)\s+(?P<noun>tower|stack|column|pile|pillar)s(?:\s+of\s+(?:blocks|cubes))?\s*(?P<sep>[:;,\-])\s*(?P<body>.+?)\s*[.!]?$")
 """Towers counted, then each said after a colon: "two stacks: white on black, and black on white"."""
 
 
@@ -220,8 +220,8 @@ def recognize_listed_towers(f: Features, b: Builder) -> bool:
     blocks").  Each description is read as a tower of its own, side by side; it must say a
     stack and no place."""
     m = LISTED_TOWERS_RE.search(f.text)
-    if m is None:
-        return False
+    if m is None or (m.group("sep") == "," and re.search(r"\b(?:high|tall|all|each|every|both)\b", m.group("body"))):
+        return False  # "two towers, 3 blocks high, all green": what every tower is, not one tower after another
     k = int(m.group("k"))
     texts = [t.strip() for t in re.split(r"\s*[;,]\s*(?:and\s+)?|\s+and\s+(?=(?:then\s+)?(?:a|an|the|1|one)\b)", m.group("body"))]
     if len(texts) != k:
@@ -272,6 +272,14 @@ PART_SPLIT_RE = re.compile(
     r"|,?\s+and\s+(?=(?:put|place|build|make|stack|move|set|arrange|line\s+up|create|form|pile|slide|push|bring)\b))")
 """Where one task said after another begins: a new sentence, "then", or "and" before a verb
 ("make a tower of two blue blocks and put the red block on the left")."""
+
+REFERS_ACROSS_RE = re.compile(
+    r"\b(?:there|it|its|them|they|their|those|these|that|this|same|another|other|others|opposite|second|again|too|also"
+    r"|as\s+well|one\s+more|more|matching|just\s+as|as\s+(?:long|tall|high|wide|many|big)|each|both|either|rest|remaining"
+    r"|ends?|middle|center|centre)\b(?!\s+of\s+the\s+(?:table|workspace)\b)")
+"""Words by which one part may speak of another ("stack two blue cubes there", "a row in front of
+it", "the same tower with red cubes", "in the middle", "the other three"): a text with any of them
+is not read as independent parts (the middle and centre of the table are the table's)."""
 
 BARE_PLACE_RE = re.compile(r"\b(?:to|on|at|in)\s+the\s+(?:left|right|front|back|top)\s*$|\b(?:in\s+front|behind|on\s+top|beside)\s*$")
 """A part ending in a place said without what it is a place of ("... and put the red block on
@@ -355,7 +363,8 @@ def recognize_independent_parts(f: Features, b: Builder) -> bool:
     one another ("next to it") or cannot be laid out apart are not read here."""
     texts = [t.strip(" ,.;!") for t in PART_SPLIT_RE.split(f.text)]
     texts = [t for t in texts if t]
-    if len(texts) < 2 or not _said_apart(texts) or any(BARE_PLACE_RE.search(t) for t in texts):
+    if (len(texts) < 2 or not _said_apart(texts)
+            or any(BARE_PLACE_RE.search(t) or REFERS_ACROSS_RE.search(t) for t in texts)):
         return False
     heads = _read_parts(texts)
     if heads is None or any(h.initial_state.structures for h in heads):

@@ -649,13 +649,13 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
     said = stated_count(f, default=None)
     for k, m in enumerate(mentions):
         item = (None, m.group("label").upper()) if m.group("label") else (canon_color(m.group("color")), None)
-        step = (k > 0 and (said is None or len(items) < said)
-                and re.match(r"\s*,?\s*(?:and\s+)?then\b", text[mentions[k - 1].end():m.start()]))
+        step = k > 0 and re.match(r"\s*,?\s*(?:and\s+)?then\b", text[mentions[k - 1].end():m.start()])
         hint = re.match(r"\s*(?:(?:block|cube)s?\s*)?(?:(?:is|goes|sits|stands|(?:should|must|will)\s+be|ends\s+up)\s+)?"
                         r"<(bottom|base|top|middle|center|centre)>", text[m.end():])  # "so that red is at the bottom"
         if hint and item in items and not step:  # "... with yellow at the bottom": a hint about a listed cube
             # (not a step of a sequence: "red base, then blue, then red, then blue on top" has two blue cubes)
-            hints[items.index(item)] = hint.group(1)
+            at = items.index(item) if hint.group(1) != "top" else len(items) - 1 - items[::-1].index(item)
+            hints[at] = hint.group(1)  # a colour listed twice: its bottom one is the base, its top one the top
             continue
         count = re.search(r"\b(\d+)\s+$", text[max(0, m.start() - 4): m.start()]) if not m.group("label") else None
         for _ in range(int(count.group(1)) - 1 if count and 1 < int(count.group(1)) <= 6 else 0):
@@ -663,12 +663,33 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         if hint:
             hints[len(items)] = hint.group(1)
         items.append(item)
-    if said is not None and len(items) > said:
-        return False  # more cubes listed than the count says: a list said twice, not one tower's sequence
+    twice = {i: h for i, h in hints.items() if i < len(items) and items.count(items[i]) > 1 and h in ("bottom", "base", "top")}
+    if twice:  # "red, blue, red, blue with blue at the bottom": the end that colour is listed at
+        if len(hints) > 1:
+            raise ParseError(f"in \"{f.original[:80]}\" a colour listed twice is given an end of the tower; say the whole "
+                             "order from the bottom (e.g. \"from bottom to top: blue, red, blue, red\")")
+        (i, h), = twice.items()
+        want = 0 if h in ("bottom", "base") else len(items) - 1
+        if items[len(items) - 1 - want] == items[i] and items[want] != items[i]:
+            items.reverse()  # listed from the other end
+        elif items[want] != items[i]:
+            raise ParseError(f"in \"{f.original[:80]}\" the {items[i][0] or items[i][1]} cube given the {h} is at neither "
+                             "end of the list; say the whole order from the bottom")
+        hints = {want: h}
+    if said is not None and len(items) > said and not re.search(r"\bthen\b", f.text):
+        return False  # more cubes named than the tower's count: cubes of another part ("... and put the red block ...")
+    if said is not None and len(items) > said:  # a sequence longer than its count
+        raise ParseError(f"\"{f.original[:80]}\" lists {len(items)} cubes for a tower of {said}; say the count and the "
+                         "list once (e.g. \"a tower of 3: red, blue, green\")")
     labels = explicit_labels(f)
     if not items and labels:
+        hinted = re.findall(r"\b([A-Z0-9])\s+(?:on|at|as)\s+(?:the\s+)?(bottom|base|top)\b", f.original)
+        labels = list(labels)
+        for lab, _ in hinted:  # "A, B, C and D, D at the bottom": the role names a listed cube again, not a fifth
+            if labels.count(lab) > 1:
+                del labels[len(labels) - 1 - labels[::-1].index(lab)]
         items = [(None, lab) for lab in labels]
-        for lab, where in re.findall(r"\b([A-Z0-9])\s+(?:on|at|as)\s+(?:the\s+)?(bottom|base|top)\b", f.original):
+        for lab, where in hinted:
             if (None, lab) in items:
                 hints[items.index((None, lab))] = where
     n = stated_count(f, default=None)
@@ -679,6 +700,9 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         n = n or RAINBOW_TOWER
         spectrum = spectrum_of(f)
         items = [(c, None) for c in sorted(spectrum[:n], key=spectrum.index, reverse=f.has("reverse"))]
+    elif 2 <= len(items) < (n or 0) and re.search(r"\bthen\b", f.text):  # a sequence shorter than its count
+        raise ParseError(f"\"{f.original[:80]}\" lists {len(items)} cubes one after another for a tower of {n}; say every "
+                         "cube of the sequence, or the count that it has")
     elif 1 <= len(items) < (n or 0) and hints:  # "three blocks high with a yellow block on top"
         used = {c for c, _ in items}
         items += [(c, None) for c in DEFAULT_COLORS if c not in used][: n - len(items)]
