@@ -217,6 +217,15 @@ def test_a_corner_needs_both_of_its_sides():
      ["pyramid(black,black|white)@front_left"]),
     # a colour listed twice in a sequence with roles keeps both cubes (one blue had been dropped)
     ("A tower of four: red base, then blue, then red, then blue on top.", ["stack(red,blue,red,blue)"]),
+    # the colour said before the height, after "of" without a noun, or "every cube red" (each had reached one cube)
+    ("build a green 3-high tower", ["stack(green,green,green)"]),
+    ("build a 3 block high tower of green", ["stack(green,green,green)"]),
+    ("build a tower, four cubes high, every cube red", ["stack(red,red,red,red)"]),
+    ("build a tower 3 high, green", ["stack(green,green,green)"]),
+    ("build two 3-high towers of green blocks", ["stack(green,green,green)", "stack(green,green,green)"]),
+    # a tower's "blue top" is its top cube (blue had been put at the bottom)
+    ("build a tower of four blocks with a blue top", ["stack(red,green,yellow,blue)"]),
+    ("build a pyramid of six blocks with a red base", ["pyramid(red,red,red|blue,green|yellow)"]),  # a layer
     # ... and a colour said after it (one cube of it and three defaults had been built)
     ("Build a 4-high tower of yellow blocks.", ["stack(yellow,yellow,yellow,yellow)"]),
     ("I need a tower, 3 blocks high, all green.", ["stack(green,green,green)"]),

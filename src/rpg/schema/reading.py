@@ -525,19 +525,31 @@ _GROUP = rf"(?P<n{{i}}>\d+)\s+(?P<c{{i}}>{COLOR_RE})(?:\s+(?:blocks|cubes))?"
 
 STRUCTURE_PHRASES: tuple[tuple[re.Pattern, str], ...] = (
     # "a 4-high white stack", "a 3 block tall cyan tower", "a four-story tower": the count and
-    # the colour are the whole tower's
+    # the colour are the whole tower's ("a green 3-high tower" too)
+    (re.compile(rf"\b(a|an|one|1|the)\s+({COLOR_RE})\s+(\d+)\s+{HEIGHT_WORDS}\s+({TOWER_NOUNS})\b"), r"\1 \4 of \3 \2 blocks"),
     (re.compile(rf"\b(a|an|one|1|the)\s+(\d+)\s+{HEIGHT_WORDS}\s+(?:({COLOR_RE})\s+)?({TOWER_NOUNS})\b"),
      r"\1 \4 of \2 \3 blocks"),
+    # "two 3-high towers of green blocks": towers of that height each
+    (re.compile(rf"\b(\d+)\s+(\d+)\s+{HEIGHT_WORDS}\s+({TOWER_NOUNS})s\b(?:\s+of\s+({COLOR_RE})\s+(?:blocks|cubes|bricks))?"),
+     r"\1 \3s of \2 \4 blocks"),
     # "a tower 3 blocks high"
     (re.compile(rf"\b({TOWER_NOUNS})\s*,?\s+(\d+)\s+(?:(?:blocks?|cubes?|levels?|stor(?:ies|eys)|tiers?|layers?)\s+)?(?:high|tall)\b"),
      r"\1 of \2 blocks"),
     # "a 4-high tower of yellow blocks": the colour after the noun is the whole tower's too
-    (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s+of\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)\b"),
+    (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s+of\s+({COLOR_RE})(?:\s+(?:blocks|cubes|bricks))?\b"),
      r"\1 of \2 \3 blocks"),
-    # "a tower, 3 blocks high, all green": every cube of it
-    (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s*,?\s+(?:all|each|every\s+one)(?:\s+of\s+them)?\s+"
-                rf"(?:(?:are|being|in)\s+)?({COLOR_RE})\b(?!\s+(?:blocks?|cubes?|patch))"),
+    # "a tower, 3 blocks high, all green", "..., every cube red", "a tower 3 high, green": every cube of it
+    (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s*,?\s+(?:all|each|every)(?:\s+(?:one|block|cube|of\s+them))?\s+"
+                rf"(?:(?:are|is|being|in)\s+)?({COLOR_RE})\b(?!\s+(?:blocks?|cubes?|patch))"),
      r"\1 of \2 \3 blocks"),
+    (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s*,\s*({COLOR_RE})(?=\s*[.!]?\s*$)"), r"\1 of \2 \3 blocks"),
+    # "a tower of four with a red base and a blue top": that cube at that end (a tower only: a
+    # pyramid's or a wall's base is a layer)
+    (re.compile(rf"\bwith\s+(?:a|an)\s+({COLOR_RE})\s+(top|base|bottom)\b(?!\s+(?:of|layer|row|level|tier))"
+                rf"(?:\s+and\s+(?:a|an)\s+({COLOR_RE})\s+(top|base|bottom)\b(?!\s+(?:of|layer|row|level|tier)))?"),
+     lambda m: m.group(0) if re.search(r"\b(?:pyramid|wall|grid|square|circle|row|line)s?\b", m.string) or not re.search(
+         rf"\b{TOWER_NOUNS}\b", m.string) else "with " + " and ".join(
+         f"a {c} block at the {'top' if e == 'top' else 'bottom'}" for c, e in ((m.group(1), m.group(2)), (m.group(3), m.group(4))) if c)),
     # "a pyramid of three, two black on the bottom ...": the count is the structure's cubes
     (re.compile(rf"\b(pyramid|wall|row|line|circle|ring|{TOWER_NOUNS})\s+of\s+(\d+)(?=\s*(?:[,.;:!]|$|with\b))"), r"\1 of \2 blocks"),
     # "a blue tower of 3 blocks"
