@@ -217,6 +217,9 @@ def test_a_corner_needs_both_of_its_sides():
      ["pyramid(black,black|white)@front_left"]),
     # a colour listed twice in a sequence with roles keeps both cubes (one blue had been dropped)
     ("A tower of four: red base, then blue, then red, then blue on top.", ["stack(red,blue,red,blue)"]),
+    # an alternating tower's named end (red had stayed at the bottom)
+    ("a tower of four alternating red and blue, blue at the bottom", ["stack(blue,red,blue,red)"]),
+    ("a tower of four alternating red and blue, red on top", ["stack(blue,red,blue,red)"]),
     # the colour said before the height, after "of" without a noun, or "every cube red" (each had reached one cube)
     ("build a green 3-high tower", ["stack(green,green,green)"]),
     ("build a 3 block high tower of green", ["stack(green,green,green)"]),

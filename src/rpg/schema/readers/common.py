@@ -275,7 +275,15 @@ def alternating_colors(f: Features, default: int) -> list[str] | None:
     colors = colors or list(DEFAULT_COLORS[:2])  # "so that the colors alternate"
     counts = [int(c) for c in re.findall(rf"\b(\d+)\s+(?:{COLOR_RE})\s+(?:blocks|cubes)\b", f.text)]
     n = sum(counts) if len(counts) >= 2 else max(stated_count(f, default=default), len(colors))  # "two red and two blue"
-    return [colors[i % len(colors)] for i in range(n)]
+    end = re.search(rf"\b(?:start(?:ing|s)?|begin(?:ning|s)?)\s+(?:with|from)\s+(?:an?\s+|the\s+)?(?P<first>{COLOR_RE})\b"
+                    rf"|\b(?P<c>{COLOR_RE})\s+(?:block\s+|cube\s+|one\s+)?(?:at|on|as)\s+(?:the\s+)?(?P<end>bottom|base|top)\b", f.text)
+    for shift in range(len(colors)):  # "..., blue at the bottom", "starting with blue": the cycle that has it there
+        cycle = [colors[(i + shift) % len(colors)] for i in range(n)]
+        if end is None or (canon_color(end.group("first") or end.group("c"))
+                           == cycle[-1 if end.group("end") == "top" else 0]):
+            return cycle
+    raise ParseError(f"'{end.group(0)}' names a colour the alternation of \"{f.original[:80]}\" does not have at that end; "
+                     "say the order from the bottom")
 
 
 def line_axis(direction: str) -> str:
