@@ -217,6 +217,10 @@ def test_a_corner_needs_both_of_its_sides():
      ["pyramid(black,black|white)@front_left"]),
     # a colour listed twice in a sequence with roles keeps both cubes (one blue had been dropped)
     ("A tower of four: red base, then blue, then red, then blue on top.", ["stack(red,blue,red,blue)"]),
+    # the middle cube at the tower's middle with the top said (green had gone to the bottom), and a role after a
+    # comma (it had been read as the table's centre, with a fourth cube)
+    ("stack red, green and blue with green in the middle and red on top", ["stack(blue,green,red)"]),
+    ("stack the red, green and blue blocks, green in the middle", ["stack(red,green,blue)"]),
     # an alternating tower's named end (red had stayed at the bottom)
     ("a tower of four alternating red and blue, blue at the bottom", ["stack(blue,red,blue,red)"]),
     ("a tower of four alternating red and blue, red on top", ["stack(blue,red,blue,red)"]),

@@ -543,6 +543,12 @@ STRUCTURE_PHRASES: tuple[tuple[re.Pattern, str], ...] = (
                 rf"(?:(?:are|is|being|in)\s+)?({COLOR_RE})\b(?!\s+(?:blocks?|cubes?|patch))"),
      r"\1 of \2 \3 blocks"),
     (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s*,\s*({COLOR_RE})(?=\s*[.!]?\s*$)"), r"\1 of \2 \3 blocks"),
+    # "stack the red, green and blue blocks, green in the middle": a role said after a comma (the
+    # middle had been read as the table's centre and a fourth cube made)
+    (re.compile(rf"\s*,\s*(?:and\s+)?(?:the\s+)?({COLOR_RE})\s+(?:block\s+|cube\s+|one\s+)?(?:(?:is|goes|sits)\s+)?"
+                r"(in\s+the\s+middle|on\s+top|at\s+the\s+(?:bottom|top|base))\b(?!\s+of\b)"),
+     lambda m: m.group(0) if not re.search(rf"\b(?:stack|stacked|{TOWER_NOUNS})\b", m.string) or re.search(
+         r"\b(?:pyramid|wall|grid|row|line|circle)s?\b", m.string) else f" with {m.group(1)} {m.group(2)}"),
     # "a tower of four with a red base and a blue top": that cube at that end (a tower only: a
     # pyramid's or a wall's base is a layer)
     (re.compile(rf"\bwith\s+(?:a|an)\s+({COLOR_RE})\s+(top|base|bottom)\b(?!\s+(?:of|layer|row|level|tier))"

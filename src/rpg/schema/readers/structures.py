@@ -728,8 +728,8 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         top = [items[i] for i, h in role.items() if h == "top"]
         middle = [items[i] for i, h in role.items() if h == "middle"]
         rest = [it for i, it in enumerate(items) if i not in role]  # by place: a colour may be listed twice
-        half = len(rest) // 2
-        items = bottom + rest[:half] + middle + rest[half:] + top
+        below = max(0, len(items) // 2 - len(bottom))  # the middle cube at the middle of the whole tower
+        items = bottom + rest[:below] + middle + rest[below:] + top
         if middle:  # "a tower of red, blue and green blocks with blue in the middle": the roles, no order
             if len(items) % 2 == 0 or len(middle) > 1:
                 raise ParseError(f"a tower of {len(items)} cubes has no one middle cube; say its place from the bottom")
