@@ -230,6 +230,7 @@ def test_a_corner_needs_both_of_its_sides():
     ("build a tower, four cubes high, every cube red", ["stack(red,red,red,red)"]),
     ("build a tower 3 high, green", ["stack(green,green,green)"]),
     ("build two 3-high towers of green blocks", ["stack(green,green,green)", "stack(green,green,green)"]),
+    ("build a 4-wide wall of red blocks, 2 high", ["wall(red,red,red,red,red,red,red,red)"]),  # it had been 3 wide
     # a tower's "blue top" is its top cube (blue had been put at the bottom)
     ("build a tower of four blocks with a blue top", ["stack(red,green,yellow,blue)"]),
     ("build a pyramid of six blocks with a red base", ["pyramid(red,red,red|blue,green|yellow)"]),  # a layer
@@ -1372,6 +1373,7 @@ def test_a_tower_list_is_read_from_the_end_its_roles_name(text, expected):
 
 
 @pytest.mark.parametrize("text", [
+    "a pyramid of four",  # no pyramid of cubes has four (six had been built)
     "build a tower of three: red base, then blue, then red, then blue on top",  # four listed
     "build a tower of four: red base, then blue, then red on top",  # three listed (a green had been invented)
     "put the red cube left of the blue cube, the green cube behind the white cube and the brown cube far from both of them",

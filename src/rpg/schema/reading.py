@@ -344,7 +344,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     # "the black cube and the white cube should be far apart": one far from the other
     text = re.sub(rf"\b(the\s+(?:{COLOR_RE})\s+(?:block|cube))\s+and\s+(the\s+(?:{COLOR_RE})\s+(?:block|cube))\s+"
                   r"((?:should|must|need\s+to|have\s+to)\s+(?:be|end\s+up)|are|end\s+up)\s+far\s+apart\b", r"\1 \3 far from \2", text)
-    text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall)", r"\1 \2", text)
+    text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall|wide|long|deep)", r"\1 \2", text)
     text = _compass(text)
     text = re.sub(r"\b(?:to|onto)\s+the\s+top\s+of\b|\b(?:at|to|on)\s+top\s+of\b", "on top of", text)  # "at top of"
     # "to its left": the relation to the cube "it" stands for (resolved like "to the left of it")
@@ -516,7 +516,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     for w, n in NUMBER_WORDS.items():
         text = re.sub(rf"\b{w}\b", str(n), text)
     text = re.sub(r"\bgrey\b", "gray", text)
-    text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall|tier)", r"\1 \2", text)
+    text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall|tier|wide|long|deep)", r"\1 \2", text)
     return " ".join(_structure_phrases(" ".join(text.split())).split()), original, dropped
 
 

@@ -185,6 +185,11 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
         named = len(set(f.color_list()))  # "the red, green and blue blocks in a triangle": 3 cubes
         from_named = next((k for k in range(2, 8) if k * (k + 1) // 2 == named), None) if named >= 3 else None
         middle = any("middle" in m_.group(0) for m_ in LAYER_ROLE_RE.finditer(f.text))
+        said = re.search(r"\bpyramid\s+(?:of|from|using|made\s+of)\s+(\d+)\b(?!\s+(?:[a-z]+\s+)?(?:blocks?|cubes?)\s+(?:on|at|in|as|with)\b)",
+                         f.text)
+        if said and total == int(said.group(1)) and from_total is None and not m:  # "a pyramid of four": none has four
+            raise ParseError(f"a pyramid of {total} cubes: a pyramid of cubes, each layer one shorter, has 3, 6, 10 or 15; "
+                             "say one of those, or its base (e.g. \"a pyramid with a base of 3\")")
         base, dims = (int(m.group(1)) if m else from_total or (3 if middle else from_named) or size), 2
     if base < 2:
         raise ParseError("a pyramid needs a base of at least 2")
