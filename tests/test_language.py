@@ -438,7 +438,7 @@ def test_counts_and_orders_said_another_way(text, want):
 
 @pytest.mark.parametrize("text", ["put half of the cubes in a line", "stack as many blocks as you can",
                                   "put several cubes on the white patch", "build the tower as high as possible",
-                                  "Place some white cubes next to the black cube."])
+                                  "Place some white cubes next to the black cube.", "stack some of the blocks"])
 def test_a_vague_quantity_is_refused(text):
     from rpg.schema.builtin import Inexpressible
 
@@ -1348,6 +1348,7 @@ def test_finish_with_outside_a_sequence_is_not_read_as_one():
 @pytest.mark.parametrize("text,expected", [
     # a plural noun after two colours names two of them (yellow had been read as a cube)
     ("the white cube should be between the yellow and the pink patches", ["between(white;patch:pink,patch:yellow)"]),
+    ("put the red cube between the yellow and the pink patch", ["between(red;patch:pink,patch:yellow)"]),  # singular
     # two cubes on two patches, pair by pair
     ("put the red and the blue cubes onto the yellow and green patches, respectively.",
      ["on_patch(blue,patch:green)", "on_patch(red,patch:yellow)"]),

@@ -95,7 +95,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("time", r"\b(?:\d+\s+(?:seconds?|minutes?|hours?)|seconds|minutes?|hours?|meanwhile|forever|while|whilst|during)\b",
      "is about time: a task's goal is checked once, at the end of the episode, with no clock or duration"),
     ("quantity", r"\b(?:\d+(?:\.\d+)?\s*(?:cm|mm)\b|(?:centi|milli)?(?:meters?|metres?)|inch(?:es)?|feet|foot"
-                 r"|some(?=\s+(?:[a-z]+\s+)?(?:blocks|cubes|bricks|boxes)\b)|cms?|few|fewer|most|majority|percent|(?<!left\s)(?<!right\s)(?<!front\s)(?<!back\s)(?<!rear\s)half|halves|several|many|much|enough|plenty|numerous"
+                 r"|some(?=\s+(?:of\s+the\s+)?(?:[a-z]+\s+)?(?:blocks|cubes|bricks|boxes)\b)|cms?|few|fewer|most|majority|percent|(?<!left\s)(?<!right\s)(?<!front\s)(?<!back\s)(?<!rear\s)half|halves|several|many|much|enough|plenty|numerous"
                  r"|as\s+(?:high|tall|many|much|far|close|long)\s+as\s+(?:you|it|possible|can)"
                  r"|(?:over|more\s+than|at\s+least|at\s+most|fewer\s+than|less\s+than|up\s+to|under)\s+"
                  r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?=\s+(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|high|tall|levels?)\b))\b",
@@ -531,6 +531,8 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     # "between the yellow and (the) pink patches": each colour names a patch (yellow had been read as a cube)
     (re.compile(rf"\b({COLOR_RE})\s+and\s+(?:the\s+)?({COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patches|pads|mats|tiles)\b"),
      r"\1 patch and the \2 patch"),
+    (re.compile(rf"\bbetween\s+the\s+({COLOR_RE})\s+and\s+(?:the\s+)?({COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|tile)\b"),
+     r"between the \1 patch and the \2 patch"),  # "between the yellow and the pink patch": two patches
     # "the red and blue blocks on the yellow patch and the green patch respectively": pair by pair
     (re.compile(rf"\bthe\s+({COLOR_RE})\s+and\s+(?:the\s+)?({COLOR_RE})\s+(block|cube)s\s+(on|onto|to|next\s+to)\s+the\s+"
                 rf"({COLOR_RE})\s+patch\s+and\s+the\s+({COLOR_RE})\s+patch\s*,?\s+respectively\b"),
