@@ -1479,6 +1479,8 @@ def test_independent_parts_are_read_apart_and_laid_out_clear_of_each_other(text,
     "make a tower of three blue blocks and make a row of the other three",
     "build a tower of three green cubes. Put a second tower of two red cubes in the back right corner",
     "put the red cube on the yellow patch. Then build a tower of the blue and green cubes on it",
+    # labels are not told apart by colour (a second "2" had been invented)
+    "Place the numbers 1 to 3 in a row, then stack the number 4 on top of the number 2",
 ])
 def test_parts_that_may_refer_to_one_another_are_not_read_apart(text):
     from rpg.schema.builder import Builder

@@ -119,7 +119,7 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
             return None  # "stack them": which on which is not said (the structure edit reads it)
         by_color = {a.color: a.name for a in schema.assets if a.kind == "colored_cube"}
         pair = [by_color.get(c) for c in named] if len(named) == 2 else None
-        if pair and set(pair) == {subject, obj}:  # "the green one should go in front of the red one": both said
+        if pair and set(pair) == {subject, obj} and not re.search(r"\b(?:too|also|as\s+well)\b", t):  # both said
             subject, obj = pair
             named = []
         if kind is None or len(named) > 1 or (named and named[0] not in by_color):

@@ -367,8 +367,8 @@ def recognize_independent_parts(f: Features, b: Builder) -> bool:
             or any(BARE_PLACE_RE.search(t) or REFERS_ACROSS_RE.search(t) for t in texts)):
         return False
     heads = _read_parts(texts)
-    if heads is None or any(h.initial_state.structures for h in heads):
-        return False
+    if heads is None or any(h.initial_state.structures or any(a.kind == "semantic_cube" for a in h.assets) for h in heads):
+        return False  # labels ("the numbers 1 to 3", "the number 2") are not told apart by colour: parts may share a cube
     shifts = _part_shifts(heads)
     if shifts is None:
         return False
