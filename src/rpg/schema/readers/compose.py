@@ -387,7 +387,8 @@ def recognize_independent_parts(f: Features, b: Builder) -> bool:
                 mapping[a.name] = b.cube(color)
             else:
                 mapping[a.name] = b.semantic(a.label, dict(a.faces))
-            used.add(color) if color else None
+            if color:
+                used.add(color)
         for a in head.assets:
             x, y, z = head.goal_layout[a.name].position
             b.place({mapping[a.name]: Pose((x + dx, y + dy, z))})
