@@ -33,10 +33,14 @@ import yaml
 HERE = Path(__file__).parent
 CORPUS = HERE / "instructions.yaml"  # the development split
 UNSEEN = HERE / "unseen.yaml"
-STRANGER = HERE / "stranger.yaml"  # attack material written for the project (development, not a corpus source)
-STRANGER2 = HERE / "stranger2.yaml"  # a second stranger's set, written 2026-11-23 (development as well)
-STRANGER3 = HERE / "stranger3.yaml"  # a third stranger's set, written 2026-11-23 (development as well)
-STRANGER4 = HERE / "stranger4.yaml"  # a fourth, written 2026-11-23 (sixth session) as a fresh measurement
+# Sets written for the project by helpers that had not read rpg (see each file's header): name -> (file, label).
+STRANGER_SETS = {
+    "stranger": ("stranger.yaml", "STRANGER set (stranger.yaml, development material)"),
+    "stranger2": ("stranger2.yaml", "STRANGER set 2 (stranger2.yaml, development material)"),
+    "stranger3": ("stranger3.yaml", "STRANGER set 3 (stranger3.yaml, development material)"),
+    "stranger4": ("stranger4.yaml", "STRANGER set 4 (stranger4.yaml, HELD OUT: report aggregates only)"),
+    "stranger5": ("stranger5.yaml", "STRANGER set 5 (stranger5.yaml, development material)"),
+}
 SPLITS = HERE / "splits.yaml"
 
 # What a refusal message must say to be refused "for the right reason", per must-refuse class.
@@ -54,6 +58,7 @@ REASON_WORDS = {
     "contradiction": r"contradict|cannot (?:both|end in)",
     "colour": r"unknown colou?r|not (?:a|one of the) colou?rs?|colou?r \S+ is not|palette",
 }
+HELD_OUT = ("unseen", "stranger4")  # read by this runner only; nobody looks at their cases or failures
 UNKNOWN_WORD = re.compile(r"^could not parse ")
 
 
@@ -69,8 +74,8 @@ def load_split(name: str) -> list[dict]:
     """The entries of one split ('dev' or 'unseen'); the unseen file must match its frozen hash."""
     if name == "dev":
         return yaml.safe_load(CORPUS.read_text())["instructions"]
-    if name in ("stranger", "stranger2", "stranger3", "stranger4"):
-        path = {"stranger": STRANGER, "stranger2": STRANGER2, "stranger3": STRANGER3, "stranger4": STRANGER4}[name]
+    if name in STRANGER_SETS:
+        path = HERE / STRANGER_SETS[name][0]
         return [{"source": name, **e} for e in yaml.safe_load(path.read_text())["instructions"]]
     splits = yaml.safe_load(SPLITS.read_text())
     want, got = splits["unseen"]["sha256"], sha256(UNSEEN)
@@ -229,10 +234,7 @@ def run_split(name: str, show: str = "none") -> Counter:
             print(f"[{outcome}] {e['text']}\n    expected: {e['meaning']}\n    got:      {detail[:160]}"
                   + (f"\n    class:    {cls}" if cls else ""))
     label = {"dev": "DEVELOPMENT split (instructions.yaml)", "unseen": "UNSEEN split (unseen.yaml, frozen)",
-             "stranger": "STRANGER set (stranger.yaml, development material)",
-             "stranger2": "STRANGER set 2 (stranger2.yaml, development material)",
-             "stranger3": "STRANGER set 3 (stranger3.yaml, development material)",
-             "stranger4": "STRANGER set 4 (stranger4.yaml, written as a fresh measurement)"}[name]
+             **{k: v[1] for k, v in STRANGER_SETS.items()}}[name]
     _table(f"{label}: {len(by_source)} sources", by_source, counts)
     n_plain = sum(plain.values())
     if n_plain:
@@ -266,12 +268,12 @@ def run(show: str = "wrong", split: str = "dev") -> Counter:
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--split", default="dev", choices=["dev", "unseen", "stranger", "stranger2", "stranger3", "stranger4", "all"])
+    ap.add_argument("--split", default="dev", choices=["dev", "unseen", *STRANGER_SETS, "all"])
     ap.add_argument("--show", default=None, choices=["wrong", "refused", "correct", "all", "none"],
                     help="print these development-split instructions (default: wrong); not allowed for --split unseen")
     args = ap.parse_args(argv)
-    if args.split == "unseen" and args.show not in (None, "none"):
-        ap.error("--show is for the development split: the unseen split reports aggregates only")
+    if args.split in HELD_OUT and args.show not in (None, "none"):
+        ap.error(f"--show is for development material: {args.split} is held out and reports aggregates only")
     try:
         counts = run(args.show or "wrong", args.split)
     except SplitFrozenError as exc:

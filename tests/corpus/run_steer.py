@@ -66,9 +66,13 @@ HERE = Path(__file__).parent
 sys.path.insert(0, str(HERE))
 from run_corpus import REASON_WORDS, UNKNOWN_WORD, failure_class  # noqa: E402
 
-DEV = HERE / "steer_dev.yaml"
-STRANGER2 = HERE / "steer_stranger2.yaml"  # a second stranger's set, written 2026-11-23 (development as well)
-STRANGER = HERE / "steer_stranger.yaml"  # development material: written 2026-11-23 by a helper that did not read rpg
+# Development sets: name -> (file, label). The stranger sets were written by helpers that had not read rpg.
+DEVELOPMENT = {
+    "dev": ("steer_dev.yaml", "DEVELOPMENT steering split (steer_dev.yaml)"),
+    "stranger": ("steer_stranger.yaml", "STRANGER steering set (steer_stranger.yaml, development material)"),
+    "stranger2": ("steer_stranger2.yaml", "STRANGER steering set 2 (steer_stranger2.yaml, development material)"),
+    "stranger3": ("steer_stranger3.yaml", "STRANGER steering set 3 (steer_stranger3.yaml, development material)"),
+}
 UNSEEN = HERE / "steer_unseen.yaml"
 SPLITS = HERE / "splits.yaml"
 CATEGORIES = ("tweak", "extend", "modify", "pivot", "fresh")
@@ -121,8 +125,8 @@ def sha256(path: Path) -> str:
 
 def load_split(name: str) -> list[dict]:
     """The cases of one split ('dev' or 'unseen'); the unseen file must match its frozen hash."""
-    if name in ("dev", "stranger", "stranger2"):
-        return yaml.safe_load({"dev": DEV, "stranger": STRANGER, "stranger2": STRANGER2}[name].read_text())["cases"]
+    if name in DEVELOPMENT:
+        return yaml.safe_load((HERE / DEVELOPMENT[name][0]).read_text())["cases"]
     want, got = yaml.safe_load(SPLITS.read_text())["steering"]["unseen"]["sha256"], sha256(UNSEEN)
     if want != got:
         raise SplitFrozenError(f"steer_unseen.yaml has SHA-256 {got}, splits.yaml froze {want}: the unseen steering "
@@ -455,9 +459,7 @@ def run(split: str = "dev", show: str = "wrong", jobs: int = MAX_JOBS, ids: list
                     "right": res.outcome == RIGHT, "all": True}[show]
             if want:
                 _show_case(case, res)
-    label = {"dev": "DEVELOPMENT steering split (steer_dev.yaml)",
-             "stranger": "STRANGER steering set (steer_stranger.yaml, development material)",
-             "stranger2": "STRANGER steering set 2 (steer_stranger2.yaml, development material)",
+    label = {**{k: v[1] for k, v in DEVELOPMENT.items()},
              "unseen": "UNSEEN steering split (steer_unseen.yaml, frozen)"}[split]
     s = summarize(cases, results)
     print_summary(label, s)
@@ -468,7 +470,7 @@ def run(split: str = "dev", show: str = "wrong", jobs: int = MAX_JOBS, ids: list
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--split", default="dev", choices=["dev", "stranger", "stranger2", "unseen"])
+    ap.add_argument("--split", default="dev", choices=[*DEVELOPMENT, "unseen"])
     ap.add_argument("--show", default=None, choices=["wrong", "refused", "right", "all", "none"],
                     help="print these development cases (default: wrong, i.e. every case not right and not refused); "
                          "not allowed for --split unseen")
