@@ -146,6 +146,12 @@ class Predicate:
     stated as a relation between two cubes."""
     phrase: ClassVar[str] = ""
     """How a canonical instruction states the relation ("to the left of")."""
+    loose_phrases: ClassVar[str] = ""
+    """Words that speak of this relation without taking an object ("apart", "nearby"): mention
+    accounting (:data:`rpg.schema.accounting.RELATION_WORDS`) counts them with ``phrases``."""
+    carried_by: ClassVar[tuple[str, ...]] = ()
+    """Other goal predicates that can state what this relation's words ask for (a row carries
+    "left of", a pyramid "next to"): mention accounting accepts any of them for the words."""
 
     def __post_init__(self) -> None:
         for f in self.list_fields:
@@ -556,6 +562,7 @@ class LeftOf(_Relation):
 
     name: ClassVar[str] = "left_of"
     phrases: ClassVar[str] = r"on (?:the )?left(?: hand)? side of|to the left of|on the left of|left of"
+    carried_by: ClassVar[tuple[str, ...]] = ("right_of", "in_line", "between", "sorted_by", "reads", "equation")
     phrase: ClassVar[str] = "to the left of"
     cue: ClassVar[str] = r"\bleft\b|\bwest\b"
     axis: ClassVar[int] = 1
@@ -569,6 +576,7 @@ class RightOf(_Relation):
 
     name: ClassVar[str] = "right_of"
     phrases: ClassVar[str] = r"on (?:the )?right(?: hand)? side of|to the right of|on the right of|right of"
+    carried_by: ClassVar[tuple[str, ...]] = ("left_of", "in_line", "between", "sorted_by", "reads", "equation")
     phrase: ClassVar[str] = "to the right of"
     cue: ClassVar[str] = r"\bright\b|\beast\b"
     axis: ClassVar[int] = 1
@@ -582,6 +590,7 @@ class InFrontOf(_Relation):
 
     name: ClassVar[str] = "in_front_of"
     phrases: ClassVar[str] = r"in front of"
+    carried_by: ClassVar[tuple[str, ...]] = ("behind", "in_line", "between")
     phrase: ClassVar[str] = "in front of"
     cue: ClassVar[str] = r"\bfront\b|\bsouth\b"
     axis: ClassVar[int] = 0
@@ -595,6 +604,7 @@ class Behind(_Relation):
 
     name: ClassVar[str] = "behind"
     phrases: ClassVar[str] = r"behind|in back of|at the back of"
+    carried_by: ClassVar[tuple[str, ...]] = ("in_front_of", "in_line", "between")
     phrase: ClassVar[str] = "behind"
     cue: ClassVar[str] = r"\bbehind\b|\bback\b|\bnorth\b"
     axis: ClassVar[int] = 0
@@ -610,6 +620,9 @@ class NextTo(Predicate):
     b: str
     name: ClassVar[str] = "next_to"
     phrases: ClassVar[str] = r"next to|beside|adjacent to|alongside|near|close to"
+    loose_phrases: ClassVar[str] = r"nearby|adjacent"
+    carried_by: ClassVar[tuple[str, ...]] = ("in_line", "grid", "pyramid", "in_region", "on_patch", "between", "left_of",
+                                             "right_of", "in_front_of", "behind")
     phrase: ClassVar[str] = "next to"
     cue: ClassVar[str] = r"\b(?:next\s+to|beside|adjacent|near\w*|close|touch\w*|together|side\s+by\s+side|alongside)\b"
     object_fields: ClassVar[tuple[str, ...]] = ("a", "b")
@@ -634,6 +647,7 @@ class FarFrom(Predicate):
     b: str
     name: ClassVar[str] = "far_from"
     phrases: ClassVar[str] = r"far (?:away )?from|away from"
+    loose_phrases: ClassVar[str] = r"apart"
     phrase: ClassVar[str] = "far from"
     cue: ClassVar[str] = r"\b(?:far|apart|away|distant|separat\w*)\b"
     object_fields: ClassVar[tuple[str, ...]] = ("a", "b")
@@ -736,6 +750,7 @@ class Between(Predicate):
     c: str
     name: ClassVar[str] = "between"
     phrases: ClassVar[str] = r"between"
+    carried_by: ClassVar[tuple[str, ...]] = ("in_line",)
     phrase: ClassVar[str] = "between"
     cue: ClassVar[str] = r"\b(?:between|middle)\b"
     object_fields: ClassVar[tuple[str, ...]] = ("a", "b", "c")

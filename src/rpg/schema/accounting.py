@@ -22,7 +22,7 @@ from functools import lru_cache
 
 from rpg.domain import predicates as P
 from rpg.errors import BadInput
-from rpg.schema.lexicon import COLOR_RE, COLORS, COMPASS_CORNER_RE, VOCAB, names_a_role
+from rpg.schema.lexicon import COLOR_RE, COLORS, COMPASS_CORNER_RE, PAIRWISE_RELATIONS, VOCAB, names_a_role
 from rpg.schema.model import TaskSchema
 from rpg.schema.reading import (
     Features,
@@ -50,15 +50,12 @@ class Mention:
     predicates: tuple[str, ...] = ()  # relation, structure: the goal predicates that can carry it
 
 
-RELATION_WORDS: tuple[tuple[str, str], ...] = (
-    (r"\b(?:to\s+the\s+)?(?:left|right)\s+of\b", "left_of right_of in_line between sorted_by reads equation"),
-    (r"\bin\s+front\s+of\b|\bbehind\b", "in_front_of behind in_line between"),
-    (r"\bbetween\b", "between in_line"),
-    (r"\bnext\s+to\b|\bnear(?:by)?\b|\bbeside\b|\badjacent\b|\bclose\s+to\b",
-     "next_to in_line grid pyramid in_region on_patch between left_of right_of in_front_of behind"),
-    (r"\bfar\s+(?:away\s+)?from\b|\bapart\b", "far_from"),
-)
-"""Relation words (normalised text) -> the goal predicates that can carry them (project)."""
+RELATION_WORDS: tuple[tuple[str, str], ...] = tuple(
+    (r"\b(?:" + "|".join(p for p in (P.PREDICATES[name].phrases, P.PREDICATES[name].loose_phrases) if p) + r")\b",
+     " ".join((name, *P.PREDICATES[name].carried_by)))
+    for name in (*PAIRWISE_RELATIONS, "between"))
+"""Relation words (normalised text) -> the goal predicates that can carry them: each relation's
+``phrases`` and ``loose_phrases`` with itself and its ``carried_by`` (:mod:`rpg.domain.predicates`)."""
 
 
 UNDO_RE = re.compile(r"\bunstack(?:s|ed|ing)?\b|\bremov(?:e|es|ed|ing)\b|\boff\b")
