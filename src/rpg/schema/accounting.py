@@ -22,7 +22,14 @@ from functools import lru_cache
 
 from rpg.domain import predicates as P
 from rpg.errors import BadInput
-from rpg.schema.lexicon import COLOR_RE, COLORS, COMPASS_CORNER_RE, PAIRWISE_RELATIONS, VOCAB, names_a_role
+from rpg.schema.lexicon import (
+    COLOR_RE,
+    COLORS,
+    COMPASS_CORNER_RE,
+    PAIRWISE_RELATIONS,
+    VOCAB,
+    names_a_role,
+)
 from rpg.schema.model import TaskSchema
 from rpg.schema.reading import (
     Features,
