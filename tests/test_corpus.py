@@ -90,6 +90,10 @@ def test_corpus_no_silent_errors_and_85_percent_correct(capsys):
     ("pyramid(?,?|?)", ["pyramid(green,red,yellow)"], True),
     ("pyramid(?,?|?)", ["pyramid(green,red,yellow,blue)"], False),
     ("pyramid(red*)", ["pyramid(red,red,red)"], True),
+    # all one colour matches either form, with its place too (the place suffix is no object)
+    ("pyramid(pink,pink|pink)@center", ["pyramid(pink,pink,pink)@center"], True),
+    ("pyramid(pink,pink|pink)@center", ["pyramid(pink,pink,pink)"], False),
+    ("pyramid(pink,red|pink)@center", ["pyramid(pink,pink,red)@center"], False),
 ])
 def test_meaning_matcher(expected, actual, ok):
     assert matches(expected, actual) is ok

@@ -178,7 +178,8 @@ def _wild(atom: str) -> bool:
     """Whether a layered atom's objects are all alike: all ``?``, or all one colour (which cube
     stands in which layer then changes nothing, so layers need not be judged)."""
     head, _, body = atom.partition("(")
-    tokens = {t.strip() for t in re.split(r"[,|]", body.rstrip(")"))}
+    body = body.rpartition(")")[0]  # the objects, without a place suffix ("...)@center")
+    tokens = {t.strip() for t in re.split(r"[,|]", body)}
     return "|" in body and head in ("pyramid", "wall") and len(tokens) == 1 and "*" not in next(iter(tokens))
 
 
