@@ -1489,3 +1489,29 @@ def test_parts_that_may_refer_to_one_another_are_not_read_apart(text):
 
     f = features(text)
     assert not recognize_independent_parts(f, Builder(f.original))
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger set 5: a structure's place said just after its noun, or the structure put there afterwards
+    ("Build a 4-high tower in the centre: yellow at the bottom, then orange, then red, then purple at the top.",
+     ["stack(yellow,orange,red,purple)@center"]),
+    ("Stack the pink cube on the white cube, and put that tower on the left.", ["stack(white,pink)@left"]),
+    ("Wall: bottom row three grey blocks, top row three brown blocks. Put it at the back of the table.",
+     ["wall(gray,gray,gray|brown,brown,brown)@back"]),
+    # a wall's width from the cubes counted for each layer (had been a 2x2 wall that dropped cubes)
+    ("A wall two layers high. Bottom layer: four orange bricks. Top layer: four purple bricks.",
+     ["wall(orange,orange,orange,orange|purple,purple,purple,purple)"]),
+    # a layer given its colour without an article (had dropped the layers: silently wrong)
+    ("a wall of 6 blocks, red bottom row, blue top row", ["wall(red,red,red|blue,blue,blue)"]),
+    # a tower's ends given without a preposition (had put red at the bottom: silently wrong)
+    ("build a tower: red top, blue bottom", ["stack(blue,red)"]),
+    ("A tower of four: red base, then blue, then red, then blue on top.", ["stack(red,blue,red,blue)"]),
+])
+def test_places_and_layers_said_by_a_fifth_writer(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_place_said_after_a_structure_s_noun_is_every_cube_s():
+    schema = parse("Build a 4-high tower in the centre: yellow at the bottom, then orange, then red, then purple at the top.")
+    regions = [p for p in schema.goal_predicate().walk() if p.name == "in_region"]
+    assert len(regions) == 4 and {p.region for p in regions} == {"center"}

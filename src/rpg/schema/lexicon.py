@@ -661,10 +661,11 @@ LAYER_ROLE_RE = re.compile(
     r"|\b" + _LAYER_ROLE.format(i=1) + r"(?:\s+(?:layer|level|row|tier|block|cube|one))?\s+"
     r"(?:is|are|of|made\s+of|with|in)\s+(?:the\s+|a\s+|an\s+)?(?:\d+\s+)?(?P<c1>" + "|".join(COLORS) + r")\b"
     r"(?:\s+(?P<noun1>blocks?|cubes?|ones?))?"
-    r"|\b(?:a|an|the)\s+(?P<c2>" + "|".join(COLORS) + r")\s+" + _LAYER_ROLE.format(i=2) + r"\b(?!\s+of\b)"
+    r"|(?:\b(?:a|an|the)\s+|(?<=,\s)|(?<=:\s)|(?<=;\s))(?P<c2>" + "|".join(COLORS) + r")\s+" + _LAYER_ROLE.format(i=2)
+    + r"\b(?!\s+of\b)"
     r"|\b(?:the\s+)?(?:(?P<n3>\d+)\s+)?" + _LAYER_ROLE.format(i=3) + r"(?:\s+(?P<m3>\d+))?"
-    r"(?:\s+(?P<noun3>layer|level|row|tier|blocks|cubes|ones))?\s+(?:being\s+|should\s+be\s+|must\s+be\s+)?(?:all\s+)?"
-    r"(?:\d+\s+)?(?P<c3>" + _COLOR_LIST + r")\b(?!\s+(?:(?:blocks?|cubes?|ones?)\s+)?(?:on|onto|at|in|to|of|is|are)\b)"
+    r"(?:\s+(?P<noun3>layer|level|row|tier|blocks|cubes|ones))?\s*:?\s+(?:being\s+|should\s+be\s+|must\s+be\s+)?(?:all\s+)?"
+    r"(?:(?P<k3>\d+)\s+)?(?P<c3>" + _COLOR_LIST + r")\b(?!\s+(?:(?:blocks?|cubes?|ones?)\s+)?(?:on|onto|at|in|to|of|is|are)\b)"
     r"(?:\s+(?:blocks?|cubes?|ones?))?(?<=\w)(?=\s*(?:[,.;]|$|\s+(?:and|with|while)\b))"
     r"|\bthe\s+(?P<n4>\d+)\s+(?:(?:blocks|cubes|ones)\s+)?(?:on|at|in)\s+the\s+" + _LAYER_ROLE.format(i=4)
     + r"(?:\s+(?:layer|level|row|tier))?\s+(?:being|are|is|should\s+be|must\s+be)\s+(?:all\s+)?(?P<c4>" + _COLOR_LIST + r")\b")
@@ -674,6 +675,7 @@ bottom row red", "the bottom three red", "the three on the bottom being red"):
 ``c0``..``c4`` the colour, ``role0``..``role4`` the layer word (top, peak,
 apex, tip: the highest layer; bottom, base, foundation: the lowest; middle: the one between
 in a structure three layers high); ``n0``, ``n3``, ``n4`` a count or article before the colour and
+``k3`` a count after the layer word ("the bottom row 3 gray blocks"),
 ``noun0``/``noun1`` the noun after it ("a red block": one cube; "red blocks", "a red base":
 the whole layer)."""
 

@@ -161,12 +161,32 @@ def _fitted(head: TaskSchema, region: str) -> dict[str, tuple[float, float, floa
     return None
 
 
-IN_REGION_PART_RE = re.compile(r"^(?P<head>[^@]+?),?\s+@region_(?P<r>[a-z_]+)\s*[.!]?$"
-                               r"|^@region_(?P<r2>[a-z_]+)\s*,?\s+(?P<head2>[^@]+?)\s*[.!]?$"
-                               r"|^(?P<head3>[^@]+?),?\s+@region_(?P<r3>[a-z_]+)\s*,?\s+(?P<with>with\s+[^@]+?)\s*[.!]?$")
+_WHOLE_NOUN = rf"(?:{STRUCTURE_RE}|\bwalls?\b|\bcolumns?\b|\bpillars?\b)"
+IN_REGION_PART_RE = re.compile(
+    r"^(?P<head>[^@]+?),?\s+@region_(?P<r>[a-z_]+)[\s,.!]*$"
+    r"|^@region_(?P<r2>[a-z_]+)\s*,?\s+(?P<head2>[^@]+?)[\s.!]*$"
+    r"|^(?P<head3>[^@]+?),?\s+@region_(?P<r3>[a-z_]+)\s*,?\s+(?P<with>with\s+[^@]+?)[\s.!]*$"
+    rf"|^(?P<head4>[^@]*?{_WHOLE_NOUN}[^@,:;.]*?)\s+@region_(?P<r4>[a-z_]+)\s*(?P<rest4>[,:;][^@]+?)[\s.!]*$"
+    rf"|^(?P<head5>[^@]+?)[\s,.;]+(?:and\s+)?(?:then\s+)?(?:put|place|move|set)\s+(?:it|that|this"
+    rf"|(?:the|that|this)\s+(?:whole\s+)?(?:thing|structure|{_WHOLE_NOUN}))\s+"
+    r"(?:@region_(?P<r5>[a-z_]+)|on\s+the\s+(?P<r5side>left|right))[\s.!]*$")
 """A part, then the one place it stands in ("three blocks in a line at @region_back"), the
-place first ("in @region_left, build a pyramid of 3 blocks"), or the place before the part's
-"with" ("stack the red, green and blue blocks @region_center with the blue block on top")."""
+place first ("in @region_left, build a pyramid of 3 blocks"), the place before the part's
+"with" ("stack the red, green and blue blocks @region_center with the blue block on top"),
+the place said just after the structure's noun ("a tower of 4 blocks @region_center: yellow
+at the bottom, ..."), or the structure put there afterwards ("stack pink on white, and put
+that tower on the left")."""
+
+
+def _region_part(m: re.Match) -> tuple[str, str]:
+    """(the part's words, the region's name) of an :data:`IN_REGION_PART_RE` match."""
+    if m.group("head3"):
+        return f"{m.group('head3')} {m.group('with')}", m.group("r3")
+    if m.group("head4"):
+        return f"{m.group('head4')}{m.group('rest4')}", m.group("r4")
+    if m.group("head5"):
+        return m.group("head5"), m.group("r5") or m.group("r5side")
+    return m.group("head") or m.group("head2"), m.group("r") or m.group("r2")
 
 
 @reader(order=187)
@@ -182,11 +202,11 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
         ParseError: the structure does not fit in the region.
     """
     m = IN_REGION_PART_RE.match(mark_regions(f.text))
-    part = (m.group("head") or m.group("head2") or f"{m.group('head3')} {m.group('with')}") if m else None
+    part, region = _region_part(m) if m else (None, None)
     heads = _read_parts([part]) if m else None
     if heads is None:
         return False
-    head, region = heads[0], m.group("r") or m.group("r2") or m.group("r3")
+    head = heads[0]
     if re.search(rf"\bwith\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:block|cube|one))?\s*$", part):
         return False  # "line up yellow and blue with blue on the left": the cube's end of the line, not the line's place
     if (region not in C.REGION_NAMES or len(head.assets) < 2 or head.initial_state.structures

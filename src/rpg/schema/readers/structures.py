@@ -87,7 +87,7 @@ def layer_roles(f: Features, levels: int) -> dict[str, tuple[int, int | None]]:
                              "say which layer (counted from the bottom)")
         k = {"bottom": 0, "middle": 1, "top": levels - 1}[role]
         colors = [canon_color(c) for c in re.findall(COLOR_RE, m.group(f"c{i}"))]
-        count = m.groupdict().get(f"n{i}") or m.groupdict().get(f"m{i}")
+        count = m.groupdict().get(f"n{i}") or m.groupdict().get(f"m{i}") or m.groupdict().get(f"k{i}")
         noun = m.groupdict().get(f"noun{i}") or ""
         n = int(count) if count and count.isdigit() and len(colors) == 1 else \
             1 if noun in ("block", "cube", "one") else None
@@ -262,6 +262,10 @@ def recognize_wall(f: Features, b: Builder) -> bool:
     if rows and count and rows.start() <= count.start() < rows.end():
         count = None  # "2 rows of 4 blocks": the 4 is a row's, not the wall's
     total = int(count.group(1)) if count else None
+    if width is None and material_of(f) == "colors":  # "bottom row 3 gray blocks, top row 3 brown blocks"
+        rows_said = _counted_layers(f, height or WALL_DIMS[1])
+        if rows_said:
+            width, height, total = rows_said[0], height or len(rows_said), sum(rows_said)
     if width is None and height is None:
         height = WALL_DIMS[1]
         width = max(2, total // height) if total else WALL_DIMS[0]
@@ -273,6 +277,24 @@ def recognize_wall(f: Features, b: Builder) -> bool:
         raise ParseError(f"a wall {width} wide and {height} high has {width * height} cubes, not {total}")
     _lattice(f, b, 1, width, height, f"a wall {width} cubes wide and {height} high ({width * height} cubes)")
     return True
+
+
+def _counted_layers(f: Features, height: int) -> list[int] | None:
+    """The cubes each layer of a wall ``height`` high holds when the text counts every layer's
+    cubes by colour and the counts agree ("bottom row 3 gray blocks, top row 3 brown blocks"
+    -> [3, 3]); None when a layer is not counted or the layers differ."""
+    try:
+        roles = layer_roles(f, height)
+    except ParseError:
+        return None
+    per: dict[int, int] = {}
+    for layer, n in roles.values():
+        if n is None:
+            return None
+        per[layer] = per.get(layer, 0) + n
+    if sorted(per) != list(range(height)) or len(set(per.values())) != 1 or next(iter(per.values())) < 2:
+        return None
+    return [per[k] for k in range(height)]
 
 
 def _lattice(f: Features, b: Builder, r: int, c: int, layers: int, what: str) -> None:
@@ -591,6 +613,9 @@ SEQ_RELATION_RE = re.compile(r"\b(?:on top of|onto|on|atop|above|over|under|unde
 
 SEQ_HINT_RE = re.compile(r"\b(?:on|at|as|in)\s+(?:the\s+|its\s+)?(?:very\s+)?(bottom|base|top|middle|center|centre)\b(?!\s+of)")
 
+BARE_END_RE = re.compile(rf"\b(?P<c>{COLOR_RE})\s+(?P<end>top|bottom|base)\b(?=\s*(?:[,.;]|$))")
+"""A tower's end given to a colour with no preposition ("red top, blue bottom")."""
+
 
 def may_order_cubes(text: str) -> bool:
     """Whether ``text`` has a word that may order a tower's cubes (:data:`ORDER_WORDS`,
@@ -644,7 +669,8 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         return False
     if "@" in mark_references(f.text) or len(DESCRIBED_TOWER_RE.findall(f.text)) >= 2:  # relations, or several towers
         return False
-    text = SEQ_HINT_RE.sub(lambda m: f" <{m.group(1)}> ", f.text)
+    text = BARE_END_RE.sub(r"\g<c> at the \g<end>", f.text)  # "red top, blue bottom"
+    text = SEQ_HINT_RE.sub(lambda m: f" <{m.group(1)}> ", text)
     mentions = list(ITEM_RE.finditer(text))
     for a, c in itertools.pairwise(mentions):
         if SEQ_RELATION_RE.search(text[a.end():c.start()]):
@@ -669,7 +695,8 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
             hints[len(items)] = hint.group(1)
         items.append(item)
     twice = {i: h for i, h in hints.items() if i < len(items) and items.count(items[i]) > 1 and h in ("bottom", "base", "top")}
-    if twice:  # "red, blue, red, blue with blue at the bottom": the end that colour is listed at
+    at_ends = all(i == (0 if h in ("bottom", "base") else len(items) - 1) for i, h in hints.items())
+    if twice and not at_ends:  # "red, blue, red, blue with blue at the bottom": the end that colour is listed at
         if len(hints) > 1:
             raise ParseError(f"in \"{f.original[:80]}\" a colour listed twice is given an end of the tower; say the whole "
                              "order from the bottom (e.g. \"from bottom to top: blue, red, blue, red\")")
