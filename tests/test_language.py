@@ -1506,6 +1506,19 @@ def test_parts_that_may_refer_to_one_another_are_not_read_apart(text):
     # a tower's ends given without a preposition (had put red at the bottom: silently wrong)
     ("build a tower: red top, blue bottom", ["stack(blue,red)"]),
     ("A tower of four: red base, then blue, then red, then blue on top.", ["stack(red,blue,red,blue)"]),
+    # a place said bare in a list item or a heading (the spec had dropped both places: silently wrong)
+    ("Spec: (1) tower of three yellow blocks, back-left corner; (2) line of three blue blocks, front of the table.",
+     ["line(blue,blue,blue)@front", "stack(yellow,yellow,yellow)@back_left"]),
+    ("Red cube: front of the table.", ["in_region(red,front)"]),
+    ("Pyramid at the back: four purple cubes at the bottom, then three, then two, then one, all purple.",
+     ["pyramid(purple,purple,purple,purple|purple,purple,purple|purple,purple|purple)@back"]),
+    # a pyramid's size from the cubes counted at its base (had invented three cubes: silently wrong)
+    ("pyramid, 2 white on the bottom and 1 black on top, right side of table", ["pyramid(white,white|black)@right"]),
+    # "far away from both of them" after a verb; harmless negations and framing
+    ("the cyan cube goes next to the pink one, and the grey cube goes far away from both of them",
+     ["far_from(cyan,gray)", "far_from(gray,pink)", "next_to(cyan,pink)"]),
+    ("Set the white cube down to the left of the green cube, if you don't mind.", ["left_of(white,green)"]),
+    ("Two things: stack the A cube on the C cube, and put the B cube next to the C cube.", ["next_to(B,C)", "stack(C,A)"]),
 ])
 def test_places_and_layers_said_by_a_fifth_writer(text, expected):
     assert meaning(parse(text)) == expected
@@ -1515,3 +1528,18 @@ def test_a_place_said_after_a_structure_s_noun_is_every_cube_s():
     schema = parse("Build a 4-high tower in the centre: yellow at the bottom, then orange, then red, then purple at the top.")
     regions = [p for p in schema.goal_predicate().walk() if p.name == "in_region"]
     assert len(regions) == 4 and {p.region for p in regions} == {"center"}
+
+
+@pytest.mark.parametrize("text", ["Hiya! Could you make me a tower out of the red, blue and green blocks? Whatever order "
+                                  "you like, I'm not fussy.",
+                                  "stack 2 yellow + 2 black blocks into a single tower, order doesnt matter"])
+def test_order_left_free_in_a_stranger_s_words_gives_an_unordered_stack(text):
+    from rpg.domain.predicates import UnorderedStack
+
+    goal = parse(text).goal_predicate()
+    assert any(isinstance(p, UnorderedStack) for p in goal.walk()), goal
+
+
+def test_a_negation_that_is_not_about_the_end_state_is_still_refused():
+    with pytest.raises(ParseError, match="negation"):
+        parse("don't put the red block on the blue block, if you don't mind")

@@ -42,7 +42,7 @@ IGNORABLE_MORE: frozenset[str] = frozenset("""
 nice nicely neat tidy tidily maybe perhaps possibly need needs needed want wants wanted let am
 try trying attempt anywhere somewhere flat flatly thanks thank cool great gonna wanna um uh yeah alright
 help wood wooden plastic properly securely stably steadily safely accurately completely entirely fully pls plz sure
-basically essentially literally honestly yo hello ty thx
+basically essentially literally honestly yo hello ty thx hiya howdy asap
 """.split())
 """Further words with no meaning for the goal, each checked not to change what a task asks:
 hedges ("maybe"), wishes ("I need", "we'll", "let's"), praise ("nice"), "anywhere", "lay it
@@ -323,7 +323,8 @@ FRAMING_RE = re.compile(
     r"^(?:(?:ok(?:ay)?|so|alright|right)\s*,?\s+)*(?:(?:so\s+)?here(?:'s|\s+is)\s+what\s+(?:i|we)\s+(?:want|need|would\s+like)"
     r"(?:\s+you\s+to\s+do)?\s*[.:,]\s*)?"
     r"(?:(?:(?:for\s+)?(?:this|the|your|our|my)\s+|for\s+)?(?:task|goal(?:\s+(?:state|configuration|condition)s?)?|instruction"
-    r"|objective|requirements?|target\s+(?:state|configuration))\s*(?::|-|,|\bis\s*:)\s*"
+    r"|objective|requirements?|target\s+(?:state|configuration)|(?:final|end|desired|goal)\s+(?:state|scene|configuration|layout)"
+    r"|spec(?:ification)?|(?:two|three|2|3)\s+things)\s*(?::|-|,|\bis\s*:)\s*"
     r"|for\s+(?:this|the)\s+task,?\s+)?"
     r"(?:(?:a|an|the)\s+(?:simple\s+|basic\s+|easy\s+|collaborative\s+|bimanual\s+|dual[- ]arm\s+)?(?:task|challenge|problem)"
     r"\s+(?:where|in\s+which)\s+)?"
@@ -332,7 +333,7 @@ FRAMING_RE = re.compile(
     r"(?:(?:work\s+together|cooperate|collaborate)\s+(?:to\s+)?)?)?")
 """Framing before a task's verb that says nothing of the goal ("a simple task where the
 objective is to push a cube onto the target", "the robot has to stack two cubes", "Task: ...",
-"for this task the robot should ..."): dropped."""
+"for this task the robot should ...", "Final state: ...", "Spec: ...", "Two things: ..."): dropped."""
 
 ARTICLE_DROPPED_AFTER: tuple[str, ...] = (
     "put", "place", "move", "set", "stack", "push", "slide", "bring", "of", "on", "onto", "to", "at", "near", "beside",
@@ -557,7 +558,9 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
 before one plural patch noun, "respectively", "keep", the table's centre and sides.  A "centered"
 left after them says no place and is refused."""
 
-BOTH_OF_THEM_RE = re.compile(rf"\b(?P<subj>the\s+(?P<c>{_COLOR_WORD})\s+(?:block|cube))\s+(?P<rel>{_PAIRWISE_WORDS})\s+"
+BOTH_OF_THEM_RE = re.compile(rf"\b(?P<subj>the\s+(?P<c>{_COLOR_WORD})\s+(?:block|cube))\s+"
+                             r"(?:(?:goes|go|is|sits|stays|ends\s+up|(?:should|must)\s+(?:be|go|end\s+up))\s+)?"
+                             rf"(?P<rel>{_PAIRWISE_WORDS})\s+"
                              r"(?:both\s+of\s+them|them\s+both|both|each\s+of\s+them|the\s+two\s+of\s+them|all\s+of\s+them|them\s+all)\b")
 """"The brown cube far from both of them": a relation to each of the two cubes named before it
 (:func:`rpg.schema.reading.normalize_words` writes them out when exactly two are)."""
@@ -608,7 +611,7 @@ REGION_WORDS = {"rear": "back", "far": "back", "near": "front", "middle": "cente
 
 ANY_ORDER_RE = re.compile(
     r"(?:\s*[,;(\u2013\u2014-]\s*|\s+)(?:(?:in\s+)?(?:any|whatever|no\s+particular)\s+order(?:\s+(?:is|are)\s+(?:fine|ok(?:ay)?|good|allowed))?"
-    r"|(?:the\s+)?order\s+(?:does\s*n[o']t|doesn't|is\s*n[o']t|isn't)\s+(?:matter|important)|regardless\s+of\s+(?:the\s+)?order"
+    r"|(?:the\s+)?order\s+(?:does\s*n[o']?t|doesn't|is\s*n[o']?t|isn't)\s+(?:matter|important)|regardless\s+of\s+(?:the\s+)?order"
     r"|(?:the\s+)?order\s+is\s+(?:up\s+to\s+you|your\s+(?:choice|call)|free|flexible|open)"
     r"|(?:in\s+)?(?:any|whatever|whichever)\s+order\s+you\s+(?:like|want|choose|prefer|wish)"
     r"|you\s+(?:can|may)\s+(?:choose|pick|decide)\s+the\s+order)\b\)?")
@@ -618,8 +621,11 @@ before negations are refused (:func:`rpg.schema.reading.normalize`), which no or
 (:data:`ORDER_WORDS`) matches."""
 
 HARMLESS_NEGATION_RE = re.compile(r"[,;(\u2013\u2014-]?\s*\b(?:nothing|none?\s+too|no\s+need\s+(?:to\s+be|for\s+anything))\s+"
-                                  r"(?:fancy|special|complicated|elaborate|too\s+fancy)\b\)?")
-"""A negation about the manner, not the end state ("..., nothing fancy"): dropped before
+                                  r"(?:fancy|special|complicated|elaborate|too\s+fancy)\b\)?"
+                                  r"|[,;]?\s*\b(?:i'?m|i\s+am|we'?re|we\s+are)\s+not\s+(?:fussy|picky|particular)\b"
+                                  r"|[,;]?\s*\bif\s+you\s+(?:don'?t|do\s+not)\s+mind\b")
+"""A negation about the manner, not the end state ("..., nothing fancy", "I'm not fussy", "if
+you don't mind"): dropped before
 negations are refused (:func:`rpg.schema.reading.normalize`)."""
 
 ORDER_WORDS = re.compile(r"\b(rainbow|alternat\w*|(?<!any\s)order\w*|sequence|gradient|sort\w*|ascending|descending|"

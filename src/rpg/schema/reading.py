@@ -638,11 +638,16 @@ def explicit_labels(f: Features) -> list[str]:
 
 
 REGION_RE = re.compile(
-    r"\b(?:in|at|on|to|into|onto|toward|towards|near|along|by)\s+the\s+(?:(?P<far>very|far)\s+(?=(?:front|back|rear|left|right)))?"
+    r"(?:\b(?:in|at|on|to|into|onto|toward|towards|near|along|by)\s+the\s+|(?:^|(?<=[,;:(.]\s)|(?<=[,;:(]))(?:the\s+)?)"
+    r"(?:(?P<far>very|far)\s+(?=(?:front|back|rear|left|right)))?"
     r"(?:(?P<fb>front|back|rear)(?:(?:\s*-\s*|\s+)(?P<lr>left|right|middle|center|centre))?"
     r"|(?P<lr2>left|right|middle|center|centre))"
     r"(?P<part>(?:\s*-?\s*(?:hand\s+)?(?:side|corner|half|part|edge|end|area|region))?)"
-    r"(?P<tail>\s+of\s+the\s+(?:table|workspace))?(?!\s*of\b)")
+    r"(?P<tail>\s+of\s+(?:the\s+)?(?:table|workspace))?(?!\s*of\b)")
+"""A place on the table after a preposition ("in the back left corner", "on the right side of
+the table"), or said bare at the start of a text or a list item ("Spec: tower of three, back-left
+corner; line of three, front of the table"), where :func:`mark_regions` marks it only with a
+corner, an edge or "of the table" (a bare "left" stays relative)."""
 
 
 REGION_GROUP_RE = re.compile(
@@ -687,6 +692,18 @@ def _table_side(m: re.Match) -> bool:
             and not names_a_role(m.string[:m.start()], m.string))  # "line up yellow and blue with blue on the left"
 
 
+_HEADING_RE = re.compile(r"\s*(?:(?:build|make|put|place|set\s+up)\s+)?(?:(?:a|an|the)\s+)?(?:[\w-]+\s+){0,3}?"
+                         r"(?:tower|stack|pyramid|wall|line|row|grid|circle|ring|column)\s*")
+
+
+def _heading_side(m: re.Match) -> bool:
+    """Whether a bare side names where a structure stands, said as a heading before a colon
+    ("Pyramid at the back: four purple cubes at the bottom, ...")."""
+    return (m.group("part") == "" and m.group(0).split()[0] in ("on", "at", "in")
+            and _HEADING_RE.fullmatch(m.string[:m.start()]) is not None
+            and re.match(r"\s*:", m.string[m.end():]) is not None)
+
+
 def mark_regions(text: str) -> str:
     """Replace places on the table ("in the middle of the table", "at the back left corner",
     "on the right side of the workspace") with ``@region_<name>`` tokens (names as in
@@ -698,7 +715,7 @@ def mark_regions(text: str) -> str:
         word = m.group("lr") or m.group("lr2")
         bare_center = (word in ("center", "centre", "middle") and m.group(0).split()[0] in ("in", "at", "to", "into")  # "in the center"
                        and not names_a_role(m.string[:m.start()], m.string))
-        if not (m.group("tail") or corner or edge or bare_center or _table_side(m)):
+        if not (m.group("tail") or corner or edge or bare_center or _table_side(m) or _heading_side(m)):
             return m.group(0)
         fb = m.group("fb") or ("far" if m.group("far") == "far" and corner else None)  # "the far left corner"
         if corner and not (fb and word in ("left", "right")):  # "the right corner": back right or front right?

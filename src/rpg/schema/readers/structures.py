@@ -98,6 +98,12 @@ def layer_roles(f: Features, levels: int) -> dict[str, tuple[int, int | None]]:
     return out
 
 
+ALL_ONE_COLOR_RE = re.compile(rf"\b(?:all|every\s+(?:cube|block|one)|each\s+(?:cube|block|one))\s+(?:of\s+them\s+)?(?:is\s+|are\s+)?"
+                              rf"(?P<c>{COLOR_RE})\b(?!\s+(?:(?:cubes?|blocks?|ones?)\s+)?(?:on|at|in|as|for)\b)")
+"""A structure's every cube given one colour ("..., all purple", "every cube red"), not a layer's
+("all purple cubes at the bottom")."""
+
+
 def fill_layers(f: Features, b: Builder, sizes: list[int], roles: dict[str, tuple[int, int | None]]) -> list[str]:
     """Cubes for a structure of layers ``sizes`` (bottom first) whose layers ``roles``
     (:func:`layer_roles`) names: each named colour in its layer, the other sites filled with
@@ -123,6 +129,9 @@ def fill_layers(f: Features, b: Builder, sizes: list[int], roles: dict[str, tupl
     free = sum(c is None for layer in slots for c in layer)
     groups = [(n, c) for n, c in counted_groups(f) if c not in roles]
     listed = [c for c in dict.fromkeys(f.color_list()) if c not in roles]
+    every = ALL_ONE_COLOR_RE.search(f.text)
+    if every and not listed:  # "four purple cubes at the bottom, then three, ..., all purple"
+        listed = [canon_color(every.group("c"))]
     if groups and sum(n for n, _ in groups) == free:
         pool = [c for n, c in groups for _ in range(n)]
     elif len(listed) == 1:
@@ -176,7 +185,7 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
     if dims_m:
         base, dims = int(dims_m.group(1)), 3
     else:
-        m = re.search(r"base\s+(?:of\s+|is\s+|with\s+)?(\d+)", f.text) or re.search(r"(\d+)\s+(?:[a-z]+\s+){0,2}(?:block|cube)s?\s+(?:on|at|as|in)\s+(?:the\s+)?(?:base|bottom)", f.text)
+        m = re.search(r"base\s+(?:of\s+|is\s+|with\s+)?(\d+)", f.text) or re.search(r"(\d+)\s+(?:[a-z]+\s+){0,2}?(?:(?:block|cube)s?\s+)?(?:on|at|as|in)\s+(?:the\s+)?(?:base|bottom)\b", f.text)
         layers = re.search(r"\b(\d+)\s+(?:layers?|levels?|tiers?|stor(?:y|ey|ies|eys))\b", f.text)
         m = m or layers
         total = stated_count(f, default=None)
