@@ -1005,8 +1005,7 @@ def test_a_triangle_with_nothing_stacked_names_no_one_shape():
 
 @pytest.mark.parametrize("text,expected", [
     # a list of labels whose last item follows a bare "and" keeps it (it dropped the 4, and D)
-    ("Put the digit cubes 1, 2, 3 and 4 in a row from left to right.",
-     ["line[left_to_right](1,2,3,4)", "reads(1,2,3,4;direction=left_to_right,face=up,text=1234)"]),
+    ("Put the digit cubes 1, 2, 3 and 4 in a row from left to right.", ["line[left_to_right](1,2,3,4)"]),
     ("stack the letter cubes A, B, C and D", ["stack(A,B,C,D)"]),
     # a circle of listed labels has those cubes (it had six, A to F)
     ("put the letter cubes A, B, C and D in a circle", ["circle(A,B,C,D)"]),
@@ -1519,6 +1518,17 @@ def test_parts_that_may_refer_to_one_another_are_not_read_apart(text):
      ["far_from(cyan,gray)", "far_from(gray,pink)", "next_to(cyan,pink)"]),
     ("Set the white cube down to the left of the green cube, if you don't mind.", ["left_of(white,green)"]),
     ("Two things: stack the A cube on the C cube, and put the B cube next to the C cube.", ["next_to(B,C)", "stack(C,A)"]),
+    # a row of digits in an order says nothing of reading them (their faces up): no reads(...)
+    ("Make a row of the digits 3, 1, 4 from left to right.", ["line[left_to_right](3,1,4)"]),
+    # label cubes named by their label alone (had been read as two invented red and blue cubes)
+    ("stack the A on the B", ["stack(B,A)"]),
+    ("Stack the 1 on the 2, and the 3 on the 4 (number cubes).", ["stack(2,1)", "stack(4,3)"]),
+    # the stack's cubes are those of its clause (the cyan cube moved to a corner had become its base)
+    ("Move the cyan cube to the back left corner. Stack the two brown cubes in the front right corner.",
+     ["in_region(cyan,back_left)", "stack(brown,brown)@front_right"]),
+    # "that patch" is the one patch named before (a second, gray patch had been invented)
+    ("Put the red and yellow cubes together on the white patch, and put the blue cube far from that patch.",
+     ["far_from(blue,patch:white)", "on_patch(red,yellow,patch:white)"]),
 ])
 def test_places_and_layers_said_by_a_fifth_writer(text, expected):
     assert meaning(parse(text)) == expected
@@ -1543,3 +1553,19 @@ def test_order_left_free_in_a_stranger_s_words_gives_an_unordered_stack(text):
 def test_a_negation_that_is_not_about_the_end_state_is_still_refused():
     with pytest.raises(ParseError, match="negation"):
         parse("don't put the red block on the blue block, if you don't mind")
+
+
+@pytest.mark.parametrize("text,match", [
+    ("put the red on the white patch and the blue on the green patch and the yellow next to the patch", "which patch"),
+    # a wall nobody built is no wall: six red cubes in the centre had been read with no wall
+    ("Build a wall of six red bricks (three on the bottom, three on top) in the centre, and put the white brick in the "
+     "front left corner.", "Rephrase"),
+])
+def test_a_patch_or_structure_that_cannot_be_told_is_refused(text, match):
+    with pytest.raises(ParseError, match=match):
+        parse(text)
+
+
+def test_word_salad_that_asks_for_more_open_colours_than_there_are_is_refused_not_a_crash():
+    with pytest.raises(ParseError):
+        parse("stack 'CAT' then pyramid 3x3")

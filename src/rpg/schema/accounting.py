@@ -65,6 +65,11 @@ RELATION_WORDS: tuple[tuple[str, str], ...] = tuple(
 ``phrases`` and ``loose_phrases`` with itself and its ``carried_by`` (:mod:`rpg.domain.predicates`)."""
 
 
+WALL_RE = re.compile(r"\bwalls?\b")
+"""A wall: a grid one row deep and several layers high (:func:`rpg.schema.readers.structures.recognize_wall`),
+carried only by a :class:`~rpg.domain.predicates.Grid`."""
+
+
 UNDO_RE = re.compile(r"\bunstack(?:s|ed|ing)?\b|\bremov(?:e|es|ed|ing)\b|\boff\b")
 """Words that take a cube off where it starts (project): only a task whose rho_0 starts a
 stack (``initial_state.structures``) can mean them."""
@@ -172,6 +177,9 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
         if re.search(r"\b(?:the|that|this|its|their)\s+(?:[a-z]+\s+)?$", text[:m.start()]):
             continue  # "push the pile of red blocks": a reference to cubes, not a structure to build
         out.append(Mention(m.group(0), "structure", predicates=STRUCTURE_KINDS[structure_of_word(m.group(1))].carriers))
+    for m in WALL_RE.finditer(text):  # a wall is a grid of layers (no structure kind of its own)
+        if not re.search(r"\b(?:the|that|this|its|their)\s+(?:[a-z]+\s+)?$", text[:m.start()]):
+            out.append(Mention(m.group(0), "structure", predicates=("grid",)))
     for m in UNDO_RE.finditer(text):
         out.append(Mention(m.group(0), "undo"))
     for m in MATCHING_RE.finditer(text):

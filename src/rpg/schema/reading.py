@@ -270,6 +270,18 @@ def _counted_list_nouns(text: str) -> str:
     return _COUNTED_LIST_RE.sub(each, text)
 
 
+BARE_LABEL_RE = re.compile(r"\b(the)\s+([A-Z]|\d)\b(?![-'])(?=\s*(?:[,.;:!?()]|$|\s+(?:on|onto|atop|next|to|left|right|in|at|"
+                           r"behind|beside|near|under|underneath|below|above|and|then|between|far|is|goes|should|must)\b))")
+"""A label cube named by its label alone after "the" ("stack the A on the B", "the 1 on the 2"):
+read as "the A block" (a letter or digit cube), never as a count."""
+
+
+THE_PATCH_RE = re.compile(r"\b(the|that|this|same)\s+(?:goal\s+|target\s+)?patch\b(?!es)")
+"""A patch referred to without its colour ("far from that patch"): the one patch named before
+it, whose colour it takes; refused when several were named (a second, gray patch had been
+invented)."""
+
+
 def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, list[tuple[str, str]]]:
     """Lower-case, number words to digits, typos corrected.  Returns (text, original, dropped):
     ``dropped`` lists the unknown words read as ignorable (:mod:`rpg.schema.senses`), each with
@@ -290,6 +302,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     labelled = re.sub(r"\b(block|cube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))"
                       r"(?<!\bI(?='[a-z]|\s+(?:[a-z]+ed|[a-z]+ing|am|have|had|want|need|would|will|just|think|said|mean|like|told|see|saw|look|can)\b))",
                       lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1)}", original)  # "block 4"
+    labelled = BARE_LABEL_RE.sub(r"\1 \2 block", labelled)  # "stack the A on the B", "the 1 on the 2": label cubes
     labelled = re.sub(r"\b(the|a|an)\s+([A-Z])\s+(block|cube)\b", r"\1 letter \2 \3", labelled)  # "the A block"
     labelled = re.sub(r"\b(the)\s+(\d)\s+(block|cube)\b(?!s)", r"\1 digit \2 \3", labelled)  # "the 3 cube"
     text = labelled.lower()
@@ -511,6 +524,14 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
             raise ParseError(f"'{m.group(0)}' in \"{original[:80]}\" does not say which cubes ({len(named)} other colours are "
                              "named before it); name them (e.g. \"far from the red and the blue blocks\")")
         text = text[:m.start()] + " and ".join(f"{m.group('subj')} {m.group('rel')} the {c} block" for c in named) + text[m.end():]
+    for m in reversed(list(THE_PATCH_RE.finditer(text))):  # "... far from that patch": the one patch named before
+        before = list(dict.fromkeys(re.findall(rf"\b({COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|square|area)\b",
+                                               text[:m.start()])))
+        if len(before) > 1:
+            raise ParseError(f"'{m.group(0)}' in \"{original[:80]}\" does not say which patch ({', '.join(before)} are "
+                             "named before it); say its colour (e.g. \"the green patch\")")
+        if before:
+            text = f"{text[:m.start()]}{m.group(1)} {before[0]} patch{text[m.end():]}"
     for pattern, written_out in lexicon.DISTRIBUTED_RELATIONS:
         text = pattern.sub(written_out, text)
     for w, n in NUMBER_WORDS.items():

@@ -400,7 +400,9 @@ def recognize_independent_parts(f: Features, b: Builder) -> bool:
         for a in head.assets:
             color = a.color
             if a.kind == "colored_cube" and color not in own and color in used | named:  # a colour the part left open
-                color = next(c for c in DEFAULT_COLORS if c not in used | named | {x.color for x in head.assets})
+                color = next((c for c in DEFAULT_COLORS if c not in used | named | {x.color for x in head.assets}), None)
+                if color is None:  # more open cubes than colours left to tell them apart
+                    return False
             if a.kind == "goal_patch":
                 mapping[a.name] = b.patch(color, a.shape)
             elif a.kind == "colored_cube":

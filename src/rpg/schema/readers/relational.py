@@ -213,12 +213,16 @@ class RelationalReading:
                 self.rels.append(_RELATIONS[kind](a, c))
 
 
+STACK_WORD_RE = re.compile(r"\b(?:stack|stacks|stacked|tower|towers|pile up)\b")
+"""Words that make a relational text a stacking one."""
+
+
 @reader(order=200)
 def recognize_relational(f: Features, b: Builder) -> bool:
     initial = initial_clause(f.text)
     text = f.text if initial is None else (f.text[: initial[0]] + f.text[initial[1]:]).strip()
     text = mark_regions(mark_references(text))
-    stackish = bool(re.search(r"\b(?:stack|stacks|stacked|tower|towers|pile up)\b", text))
+    stackish = bool(STACK_WORD_RE.search(text))
     if not (stackish or any(re.search(rf"\b(?:{p})\b", text) for p, _ in REL_PATTERNS)):
         return False
     described = list(DESCRIBED_TOWER_RE.finditer(text))
@@ -242,7 +246,12 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         r.rels.append(LeftOf(r.sides["left"], r.sides["right"]))
     # a bare "stack N blocks" / "stack blocks on the patch"
     if stackish and not r.on_edges:
-        ms = [m for m in mentions_in(text) if not m.patch and not m.ref and (m.color, m.label) not in r.subjects]
+        # the cubes of the clauses that say the stack ("move cyan to the corner. stack 2 brown cubes ...": not cyan)
+        said = " . ".join(c for c in clauses if STACK_WORD_RE.search(c)) or text
+        if sum(m.count for m in mentions_in(said) if not m.patch and not m.ref) < 2:
+            said = text  # "place red and green together, then stack green on top": the clause names one of them
+        f = Features(said, f.original, features_colors(said), f.quoted)
+        ms = [m for m in mentions_in(said) if not m.patch and not m.ref and (m.color, m.label) not in r.subjects]
         n = stated_count(f, default=None) or (max(m.count for m in ms) if ms else 2)
         n = max(n, 2)
         if ms and ms[0].color and all(m.color == ms[0].color for m in ms):

@@ -547,8 +547,9 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
             labels = sorted(labels, key=lambda lab: (not lab.isdigit(), lab), reverse=order[1])
         names = [b.semantic(lab) for lab in labels]
         b.place(directed_line(names, direction))
-        b.preds += [InLine(tuple(names), axis=line_axis(direction), order=direction),
-                    Reads(tuple(names), "".join(labels), direction)]
+        b.preds.append(InLine(tuple(names), axis=line_axis(direction), order=direction))
+        if reads or READ_WORDS_RE.search(f.text):  # the labels read as a word: their faces up (not said otherwise)
+            b.preds.append(Reads(tuple(names), "".join(labels), direction))
         if order:
             b.preds.append(SortedBy(tuple(names), key=order[0] if order[0] != "color" else "label", direction=direction, descending=order[1]))
         b.summary.append(f"up faces read {', '.join(labels)} {direction.replace('_', ' ')}")
@@ -621,6 +622,12 @@ SEQ_RELATION_RE = re.compile(r"\b(?:on top of|onto|on|atop|above|over|under|unde
 
 
 SEQ_HINT_RE = re.compile(r"\b(?:on|at|as|in)\s+(?:the\s+|its\s+)?(?:very\s+)?(bottom|base|top|middle|center|centre)\b(?!\s+of)")
+
+READ_WORDS_RE = re.compile(r"\b(?:reads?|reading|readable|spell\w*|shows?|showing|display\w*|fac(?:e|es|ing)\s+up|"
+                           r"(?:labels?|letters?|digits?|numbers?)\s+(?:up|visible|on\s+top))\b")
+"""Words that ask a line of label cubes to read as a word (its labels face up), not only to
+stand in an order."""
+
 
 BARE_END_RE = re.compile(rf"\b(?P<c>{COLOR_RE})\s+(?P<end>top|bottom|base)\b(?=\s*(?:[,.;]|$))")
 """A tower's end given to a colour with no preposition ("red top, blue bottom")."""
