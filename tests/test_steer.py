@@ -846,6 +846,12 @@ def test_a_structure_turned_into_another_has_no_order_nobody_said(tmp_path, base
     ("stack red on blue", ["put that blue one on the left"], ["left_of(blue,red)"]),
     ("Put the green cube to the left of the red cube", ["actually the green one should go in front of the red one"],
      ["in_front_of(green,red)"]),
+    # a cube counted from an end (the bottom cube had been painted: silently wrong)
+    ("Build a tower of five yellow cubes", ["paint the 2nd one from the bottom red"], ["stack(yellow,red,yellow,yellow,yellow)"]),
+    ("Build a tower of red, blue, green and yellow from bottom to top", ["make the 2nd from the top pink"],
+     ["stack(red,blue,pink,yellow)"]),
+    # a new structure's place said with it (the old corner had been kept: silently wrong)
+    ("Stack three blue cubes in the front right corner", ["make it a line along the front instead"], ["line(blue,blue,blue)@front"]),
 ])
 def test_edits_said_in_fewer_or_looser_words(tmp_path, base, edits, want):
     assert _steered(tmp_path, base, *edits)[-1][1] == want

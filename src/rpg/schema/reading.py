@@ -270,10 +270,11 @@ def _counted_list_nouns(text: str) -> str:
     return _COUNTED_LIST_RE.sub(each, text)
 
 
-BARE_LABEL_RE = re.compile(r"\b(the)\s+([A-Z]|\d)\b(?![-'])(?=\s*(?:[,.;:!?()]|$|\s+(?:on|onto|atop|next|to|left|right|in|at|"
+BARE_LABEL_RE = re.compile(r"(\bthe|(?:\bwith|\bthen|\band|,)(?=\s+[A-Z]\b))\s+([A-Z]|\d)\b(?![-'])(?=\s*(?:[,.;:!?()]|$|\s+(?:on|onto|atop|next|to|left|right|in|at|"
                            r"behind|beside|near|under|underneath|below|above|and|then|between|far|is|goes|should|must)\b))")
-"""A label cube named by its label alone after "the" ("stack the A on the B", "the 1 on the 2"):
-read as "the A block" (a letter or digit cube), never as a count."""
+"""A label cube named by its label alone after "the" (a letter after "with", "then", "and" or a comma), before a
+relation word or punctuation ("stack the A on the B", "the 1 on the 2", "with A at the bottom,
+then B"): read as "the A block" (a letter or digit cube), never as a count or an article."""
 
 
 THE_PATCH_RE = re.compile(r"\b(the|that|this|same)\s+(?:goal\s+|target\s+)?patch\b(?!es)")
@@ -302,7 +303,10 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     labelled = re.sub(r"\b(block|cube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))"
                       r"(?<!\bI(?='[a-z]|\s+(?:[a-z]+ed|[a-z]+ing|am|have|had|want|need|would|will|just|think|said|mean|like|told|see|saw|look|can)\b))",
                       lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1)}", original)  # "block 4"
-    labelled = BARE_LABEL_RE.sub(r"\1 \2 block", labelled)  # "stack the A on the B", "the 1 on the 2": label cubes
+    listed = re.search(r"\b[A-Z0-9](?:\s*,\s*(?:and\s+)?[A-Z0-9]\b|\s+and\s+[A-Z0-9]\b)", original)  # "T, O, P": a list
+    labelled = BARE_LABEL_RE.sub(lambda m: m.group(0) if listed and m.group(1) != "the" else
+                                 f"{m.group(1)} {'' if m.group(1) == 'the' else 'the '}{m.group(2)} block",
+                                 labelled)  # "stack the A on the B", "with A at the bottom, then B": label cubes
     labelled = re.sub(r"\b(the|a|an)\s+([A-Z])\s+(block|cube)\b", r"\1 letter \2 \3", labelled)  # "the A block"
     labelled = re.sub(r"\b(the)\s+(\d)\s+(block|cube)\b(?!s)", r"\1 digit \2 \3", labelled)  # "the 3 cube"
     text = labelled.lower()

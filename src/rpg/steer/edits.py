@@ -256,6 +256,11 @@ def _selector(text: str) -> dict | None:
     ends = re.search(r"\b(top|bottom|first|last|lowest|highest)\s+(\d+)\b", text)
     if ends:
         return {"end": "bottom" if ends.group(1) in ("bottom", "first", "lowest") else "top", "n": int(ends.group(2))}
+    nth = re.search(r"\b(?:(\d+)(?:st|nd|rd|th)|(second|third|fourth|fifth|sixth))\b(?:\s+(?:one|block|cube))?"
+                    r"(?:\s+from\s+the\s+(bottom|top|left|right|front|back))?", text)
+    if nth:  # "the 2nd one from the bottom": a place counted from an end
+        k = int(nth.group(1)) if nth.group(1) else ("second", "third", "fourth", "fifth", "sixth").index(nth.group(2)) + 2
+        return {"nth": k, "from": nth.group(3) or "bottom"}
     some = re.search(r"\b(\d+)\s+of\s+(?:them|the\s+(?:[a-z]+\s+)?(?:blocks|cubes|ones))\b", text)
     if some:
         return {"some": int(some.group(1))}
@@ -297,9 +302,13 @@ def _region_of(t: str) -> str | None:
         return None
     where = m.group("where")
     structure = not re.match(r"(?:it|them)\b", m.group(0).split(None, 1)[1])
+    pivot = re.match(r"(?:into\s+)?(?:a|an)\s+(?:[a-z0-9-]+\s+){0,2}?" + STRUCTURE_RE + r"\s+", where)
+    if pivot:  # "make it a line along the front": the new structure's place
+        where, structure = where[pivot.end():], True
     if not re.search(r"\b(?:table|corner|side|edge|half|workspace)\b", where):
         # "put the tower on the left": a side alone, when the structure itself is moved there
-        side = re.match(r"(?:on|to|at|in)\s+the\s+(?:far\s+)?(left|right|front|back|middle|center|centre)\b(?!\s+(?:of|end)\b)", where)
+        side = re.match(r"(?:on|to|at|in|along)\s+the\s+(?:far\s+)?(left|right|front|back|middle|center|centre)\b(?!\s+(?:of|end)\b)",
+                        where)
         return region_name(*((None, side.group(1)) if side.group(1) in ("left", "right", "middle", "center", "centre")
                              else (side.group(1), None))) if side and structure else None
     return _edit_region(" " + where + " ")
@@ -696,6 +705,13 @@ def _indices(spec: TaskSpec, sel: dict, anchors: frozenset[str] = frozenset()) -
         if len(same) < n:
             raise SteerError(f"'{k} of them' does not say which of the {spec.structure}'s cubes; name them by colour")
         return list(range(n - k, n))
+    if "nth" in sel:
+        k, end = sel["nth"], sel["from"]
+        if spec.kind.layered or not _orders_cubes(spec) or not 0 < k <= n or end not in ("bottom", "top", "left", "right"):
+            raise SteerError(f"the {k}th cube from the {end} of a {spec.structure} of {n} cubes"
+                             + ("" if _orders_cubes(spec) else " whose goal gives no cube a place")
+                             + " is not a cube the builtin steering can name; say the whole order (e.g. \"from bottom to top: ...\")")
+        return [k - 1] if end in ("bottom", "left") else [n - k]
     if "layer" in sel and spec.kind.layered:
         return _layer_indices(spec, sel["layer"])
     if "layer" in sel or "position" in sel:
