@@ -1569,3 +1569,10 @@ def test_a_patch_or_structure_that_cannot_be_told_is_refused(text, match):
 def test_word_salad_that_asks_for_more_open_colours_than_there_are_is_refused_not_a_crash():
     with pytest.raises(ParseError):
         parse("stack 'CAT' then pyramid 3x3")
+
+
+def test_another_cube_of_a_colour_is_a_cube_of_its_own():
+    schema = parse("put the red block on the blue block and another red block next to the blue block")
+    assert sorted(a.name for a in schema.assets) == ["blue", "red_1", "red_2"]
+    assert meaning(parse("put the green block on the blue patch, then put a second green block on the blue patch")) == [
+        "on_patch(green,green,patch:blue)"]

@@ -852,6 +852,23 @@ def test_a_structure_turned_into_another_has_no_order_nobody_said(tmp_path, base
      ["stack(red,blue,pink,yellow)"]),
     # a new structure's place said with it (the old corner had been kept: silently wrong)
     ("Stack three blue cubes in the front right corner", ["make it a line along the front instead"], ["line(blue,blue,blue)@front"]),
+    # counts said alone in a stranger's words, a casual verb, a cube taken off, a corner without "corner"
+    ("Build a tower of five purple blocks", ["actually, three"], ["stack(purple,purple,purple)"]),
+    ("Build a tower of 3 green blocks", ["three more"], ["stack(green,green,green,green,green,green)"]),
+    ("Put two pink cubes in a row", ["make that seven pink cubes pls"], ["line(pink,pink,pink,pink,pink,pink,pink)"]),
+    ("Stack a red cube on a yellow cube", ["and pop a green one on top of that"], ["stack(yellow,red,green)"]),
+    ("Build a tower of four blue blocks", ["take one off"], ["stack(blue,blue,blue)"]),
+    ("Build a tower of three red cubes in the back left corner", ["move it to the front right"], ["stack(red,red,red)@front_right"]),
+    # the two colours exchanged; a plural colour recoloured
+    ("Stack a green cube on a yellow cube", ["swap the colours"], ["stack(green,yellow)"]),
+    ("Make a row of four cubes from left to right: red, blue, red, blue", ["change the blues to green"],
+     ["line[left_to_right](red,green,red,green)"]),
+    # additions: a cube "too", a second cube of a colour on the same patch, a kept tower and a clause
+    ("Put the white cube on the green patch", ["now the black cube goes on the red patch too"],
+     ["on_patch(black,patch:red)", "on_patch(white,patch:green)"]),
+    ("Put the green block on the blue patch", ["put a second green block on the same patch"], ["on_patch(green,green,patch:blue)"]),
+    ("Stack three green cubes", ["Right, keep the tower, and also put a pink cube on the orange patch"],
+     ["on_patch(pink,patch:orange)", "stack(green,green,green)"]),
 ])
 def test_edits_said_in_fewer_or_looser_words(tmp_path, base, edits, want):
     assert _steered(tmp_path, base, *edits)[-1][1] == want
@@ -897,6 +914,8 @@ def test_removals_and_additions_of_cubes_among_relations(tmp_path, base, edit, w
     # a comparative and a count that disagree (the tower had shrunk), and one cube of two named by colour (both changed)
     ("build a tower of three green cubes", "make it taller, 2 blocks", "disagree"),
     ("build a tower of two blue blocks and one red block on top", "make that blue one green", "names one of the task's 2 blue"),
+    ("stack red, blue and green", "swap the colours", "names two colours"),
+    ("Put two pink cubes in a row", "make that 3 green cubes", "has no place in the change"),
 ])
 def test_edits_refused_for_their_reason(tmp_path, base, edit, match):
     fam = compile_instruction(base, tmp_path, name="fam").path

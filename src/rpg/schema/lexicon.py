@@ -795,6 +795,11 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"(?i)^\s*(?:and|plus)(?:\s+(?:now|then|also))?\s+(?=(?:a|an|another|one\s+more|\d+)\s)"), "add "),  # "and (now) a red block on top"
     (re.compile(r"(?i)\blay\s+(them|it|everything|the\s+(?:blocks|cubes))\s+out\b"), r"put \1"),  # "lay them out in a line"
     (re.compile(r"(?i)^\s*ad\s+(?=(?:a|an|another|one|\d+)\s)"), "add "),  # "ad a yelow block on top"
+    # "take one off": a cube taken off a stack is its top one
+    (re.compile(r"(?i)^\s*(?:take|pull|lift)\s+(?:1|one)\s+(?:block\s+|cube\s+)?off(?:\s+(?:the\s+)?(?:top|tower|stack))?\s*[.!]?\s*$"),
+     "remove the top one"),
+    # "pop a green one on top": the verbs of a casual writer for putting a cube
+    (re.compile(r"(?i)\b(?:pop|plonk|plop|stick|chuck|slap|whack)\s+(?=(?:a|an|another|one|the|\d+)\s)"), "put "),
     (re.compile(rf"(?i)\b(?:that|this)\s+(?=(?:{COLOR_RE})\s+(?:one|block|cube)\b)"), "the "),  # "make that blue one white"
     # "make it taller, 4 blocks": the count it grows (or shrinks) to
     (re.compile(r"(?i)\b(taller|higher|longer|shorter|smaller|bigger|lower)\s*[,:;-]?\s+"
@@ -804,10 +809,16 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
 "and a red block on top" adds one."""
 
 EDIT_COUNT_ALONE_RE = re.compile(
-    r"(?i)\s*(?:let'?s\s+)?(?:go\s+with|try|use|make\s+it|how\s+about|maybe)?\s*"
+    r"(?i)\s*(?:(?:actually|ok(?:ay)?|fine|right|hmm+|so)\s*[,.!]?\s*)*(?:let'?s\s+)?(?:go\s+with|try|use|make\s+(?:it|that)|how\s+about|maybe)?\s*"
     rf"(\d+|{'|'.join(w for w in NUMBER_WORDS if w not in ('single', 'pair', 'couple', 'both'))})"
-    r"(?:\s+(?:blocks|cubes))?(?:\s+instead)?(?:\s+please)?\s*[.!]?\s*")
-"""An edit that is a count alone ("three", "let's go with 7 instead"): the structure's count."""
+    rf"(?:\s+(?P<color>{COLOR_RE}))?(?:\s+(?:blocks|cubes|bricks))?(?:\s+instead)?(?:\s+(?:please|pls|plz))?\s*[.!]?\s*")
+"""An edit that is a count alone ("three", "let's go with 7 instead", "actually, three", "make that
+seven pink cubes pls"): the structure's count (a colour said with it must be the structure's own)."""
+
+EDIT_MORE_ALONE_RE = re.compile(
+    rf"(?i)\s*(?:and\s+)?(\d+|{'|'.join(w for w in NUMBER_WORDS if w not in ('single', 'pair', 'couple', 'both', 'one'))})"
+    r"\s+more(?:\s+(?:blocks|cubes|bricks))?(?:\s+(?:please|pls|plz))?\s*[.!]?\s*")
+"""An edit that is a count of cubes to add alone ("three more"): that many more of the structure's cubes."""
 
 SAME_CUBES_RE = re.compile(r"\b(?:the\s+)?(?:same|these|those|the)\s+(?:\d+\s+)?(?:blocks|cubes|bricks)\b"
                            r"|\b(?:them|all\s+of\s+them)\b", re.IGNORECASE)

@@ -34,6 +34,7 @@ from rpg.schema.lexicon import (
     EDIT_INEXPRESSIBLE,
     EDIT_INTERJECTION_RE,
     EDIT_LEADING_RE,
+    EDIT_MORE_ALONE_RE,
     EDIT_REFERS_RE,
     EDIT_REWRITES,
     EDIT_SHOULD_BE_RE,
@@ -157,6 +158,7 @@ def normalize_edit(text: str) -> str:
     t = re.sub(r"[\u2018\u2019\u201c\u201d`\"]", "'", t)
     t = re.sub(r"''+", "'", t)
     t = re.sub(r"\b(\d+)\s*(?:by|\u00d7)\s*(\d+)\b", r"\1x\2", t)
+    t = re.sub(rf"\b(?:the|all|both)\s+({COLOR_RE})s\b", r"the \1 blocks", t)  # "change the blues to green"
     # "one" is a count only where a count stands ("one more block", "just one"); "the orange one" is a cube
     t = re.sub(r"\bone\b(?=\s+(?:more|fewer|less|blocks?|cubes?|layers?|rows?|levels?|tall|high|wide|long)\b)"
                r"|\b((?:just|only|like|use|with|to|have) )one\b(?!\s+(?:of|at|on|in)\b)", lambda m: (m.group(1) or "") + "1", t)
@@ -305,6 +307,9 @@ def _region_of(t: str) -> str | None:
     pivot = re.match(r"(?:into\s+)?(?:a|an)\s+(?:[a-z0-9-]+\s+){0,2}?" + STRUCTURE_RE + r"\s+", where)
     if pivot:  # "make it a line along the front": the new structure's place
         where, structure = where[pivot.end():], True
+    corner = re.match(r"(?:on|to|at|in|into|toward|towards)\s+the\s+(?:far\s+)?(front|back|rear)[\s-]+(left|right)\b(?!\s+of\b)", where)
+    if corner:  # "move it to the front right": a corner of the table, whatever "it" is
+        return region_name(corner.group(1), corner.group(2))
     if not re.search(r"\b(?:table|corner|side|edge|half|workspace)\b", where):
         # "put the tower on the left": a side alone, when the structure itself is moved there
         side = re.match(r"(?:on|to|at|in|along)\s+the\s+(?:far\s+)?(left|right|front|back|middle|center|centre)\b(?!\s+(?:of|end)\b)",
@@ -436,6 +441,8 @@ def read_ops(t: str) -> list[Op]:
     swap = re.search(r"\bswap\s+(?:the\s+)?(?P<a>[a-z0-9' ]+?)\s+(?:block\s+|cube\s+)?and\s+(?:the\s+)?(?P<b>[a-z0-9' ]+?)(?:\s+(?:blocks?|cubes?))?(?:\s*$|[;,.])", t)
     if swap and _selector(swap.group("a")) and _selector(swap.group("b")) and not reverse:
         ops.append(Op("swap", {"a": _selector(swap.group("a")), "b": _selector(swap.group("b"))}))
+    elif re.search(r"\b(?:swap|switch|exchange|flip)\s+(?:the|their|its)\s+(?:2\s+)?colou?rs\b", t) and not reverse:
+        ops.append(Op("swap", {"colors": True}))  # "swap the colours": the structure's two colours exchanged
     recolor_all = re.fullmatch(rf"(?:(?:ok|okay|actually|now|maybe|hmm)\s+)*(?:use\s+|try\s+|with\s+|make\s+it\s+)?(?P<new>{COLOR_RE})"
                                rf"(?:\s+(?:blocks|cubes|ones))?\s+instead\W*", t)
     if recolor_all:
@@ -577,8 +584,11 @@ def interpret(edit: str) -> EditPlan:
     for pattern, replacement in EDIT_REWRITES:
         edit = pattern.sub(replacement, edit)
     count = EDIT_COUNT_ALONE_RE.fullmatch(edit)
+    more = EDIT_MORE_ALONE_RE.fullmatch(edit)
     if count:  # "three", "let's go with 7 instead": the structure's count
-        edit = f"use {count.group(1)} blocks instead"
+        edit = f"use {count.group(1)} {count.group('color') + ' ' if count.group('color') else ''}blocks instead"
+    elif more:  # "three more": that many more cubes
+        edit = f"add {more.group(1)} more blocks"
     t = normalize_edit(edit)
     cue = find_reference(t)
     fresh = FRESH_RE.search(t)
@@ -1076,6 +1086,13 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
                     raise SteerError(f"dimensions {'x'.join(map(str, d))} do not fit a {spec.structure}")
             if spec.layer_colors:
                 spec = _with_layer_colors(spec)
+        elif o.op == "swap" and p.get("colors"):
+            cols = list(dict.fromkeys(c for c in spec.colors() if c))
+            if len(cols) != 2 or any(it.label for it in spec.items):
+                raise SteerError(f"'swap the colours' names two colours, but the {spec.structure} has {len(cols)}; "
+                                 "say which (e.g. \"swap the red and blue cubes\")")
+            other = {cols[0]: cols[1], cols[1]: cols[0]}
+            spec = spec.with_items([Item(color=other[it.color]) for it in spec.items])
         elif o.op == "swap":
             ia, ib = _indices(spec, p["a"], anchors), _indices(spec, p["b"], anchors)
             if not ia or not ib:

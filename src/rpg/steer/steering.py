@@ -199,6 +199,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         if plan.cue.kind != "current":  # "go back to version 1": that version as it is
             return ref_schema, ref_schema.instruction, "tweak"
         return _addition(plan, reference, ref_schema)
+    if all(o.op == "keep" for o in plan.ops) and KEEP_THEN_ADD_RE.search(plan.text):
+        # "keep the tower, and also put a pink cube on the orange patch": the rest kept, the clause added
+        return _addition(replace(plan, text=KEEP_THEN_ADD_RE.sub("", plan.text, count=1)), reference, ref_schema)
     _refuse_one_of_several(plan, ref_schema)
     rel = relation_of(ref_schema) if ref_spec is None else None
     if rel is not None and re.search(r"\bit\b", plan.text, re.IGNORECASE) and all(
@@ -237,7 +240,8 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     if ref_spec is None:
         raise SteerError(f"v{reference} ({ref_schema.goal_summary}) is not a structure the builtin steering edits in place; "
                          "state the whole new task in the edit, or use --model")
-    unread = unread_colors(plan) + unread_numbers(plan)
+    unread = [c for c in unread_colors(plan)  # "make that seven pink cubes" of a pink row: its own colour, not a change
+              if not (set(ref_spec.colors()) == {c} and all(o.op == "count" for o in plan.ops))] + unread_numbers(plan)
     if unread:
         raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": {', '.join(repr(c) for c in unread)} has no place in the "
                          f"change read ({', '.join(o.op for o in plan.ops)}); say it in a separate edit, or use --model")
@@ -356,6 +360,12 @@ def _per_cube(atoms: list[str]) -> list[str]:
     return out
 
 
+KEEP_THEN_ADD_RE = re.compile(r"(?i)^.*?\bkeep(?:ing)?\s+(?:the|this|that)\s+\w+\s*,?\s*(?:and|but|plus)\s+(?:also\s+)?"
+                              r"(?=(?:add|put|place|stack|set)\b)")
+"""An edit that keeps the structure and adds a clause ("keep the tower, and also put ..."): the
+clause after it."""
+
+
 def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[TaskSchema, str, str]:
     """An edit that adds to the task in a clause of its own ("also stack a white block on the
     cyan one"): the reference's instruction, then the clause.  Kept only when every atom of
@@ -386,16 +396,19 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
         raise SteerError(f"cannot add \"{clause}\" to {where}: {str(exc).splitlines()[0]}") from None
     before, now = Counter(_per_cube(meaning(ref_schema))), Counter(_per_cube(meaning(schema)))
     had = Counter(descriptor(a) for a in ref_schema.assets)
-    opened = re.match(r"\s*(?:and|also|plus)\b", plan.text, re.IGNORECASE)  # "and the blue block in the corner": one more
+    opened = (re.match(r"\s*(?:and|also|plus)\b", plan.text, re.IGNORECASE)  # "and the blue block in the corner": one more
+              or re.search(r"\b(?:too|as\s+well|also)\s*[.!]?\s*$", plan.text, re.IGNORECASE))  # "... on the red patch too"
+    no_patch = not any(a.kind == "goal_patch" for a in ref_schema.assets)  # "the orange patch" of a task with none: a new one
     invented = [d for d in Counter(descriptor(a) for a in schema.assets) - had  # a new cube is one said with "a", "another", a count
-                if not re.search(rf"\b(?:an?|another|one more|\d+|two|three|four{'|the' if opened else ''})\s+"
-                                 rf"(?:new\s+|more\s+|extra\s+)?{re.escape(d.split(':')[-1])}\b", clause, re.IGNORECASE)]
+                if not (no_patch and d.startswith("patch:")) and not re.search(rf"\b(?:an?|another|one more|\d+|two|three|four{'|the' if opened else ''})\s+"
+                                 rf"(?:new\s+|more\s+|extra\s+|second\s+|2nd\s+|third\s+|3rd\s+)?{re.escape(d.split(':')[-1])}\b", clause, re.IGNORECASE)]
     if invented:
         raise SteerError(f"cannot add \"{clause}\" to {where}: together they read as {schema.goal_summary!r}, with "
                          f"{', '.join(invented)} nobody named; name it, or state the whole new task in the edit")
     added = now - before
     related = [_pair(a) for a in before]
-    clash = next((a for a in added if _pair(a) and _pair(a) in related), None)
+    clash = next((a for a in added if _pair(a) and _pair(a) in related  # a second cube of a colour on a patch is no clash
+                  and not a.startswith("on_patch(")), None)
     if clash is not None:  # "stack the yellow block on the purple block too" when it stands in front of it
         raise SteerError(f"cannot add \"{clause}\" to {where}: {clash} would relate two cubes the task already relates "
                          f"({next(a for a in before if _pair(a) == _pair(clash))}); the two contradict. Say one, or state the "

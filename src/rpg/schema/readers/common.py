@@ -311,6 +311,9 @@ class Mention:
     ref: str | None = None
     """``@s`` (the stack/tower the task builds), ``@it`` or ``@them`` (the previous
     relation's object): a reference, resolved by :func:`recognize_relational`."""
+    another: bool = False
+    """Said as one more of its kind ("another green block", "a second green block"): a cube of
+    its own, not the one of that colour named before."""
 
 
 STRUCTURE_REF_RE = re.compile(
@@ -356,6 +359,10 @@ MENTION_RE = re.compile(
 )
 
 
+ANOTHER_BEFORE_RE = re.compile(r"\b(?:a|the)\s+(?:second|2nd|third|3rd)\s+$|\bone\s+more\s+$")
+"""Words just before a mention that make it one more cube of its kind ("a second green block")."""
+
+
 def mentions_in(text: str) -> list[Mention]:
     out = [Mention(m.start(), m.end(), None, None, 1, ref=m.group(0).split("{")[0]) for m in REF_TOKEN_RE.finditer(text)]
     for m in MENTION_RE.finditer(text):
@@ -370,6 +377,7 @@ def mentions_in(text: str) -> list[Mention]:
             m.start(), m.end(), canon_color(m.group("color")) if m.group("color") else None,
             (m.group("label") or m.group("label2") or m.group("label3") or "").upper() or None, count,
             patch=noun.startswith("patch"), shape="long" if "long" in pre else "square",
+            another=bool(re.match(r"another\b", pre) or ANOTHER_BEFORE_RE.search(text[:m.start()])),
         ))
     out.sort(key=lambda mn: mn.start)
     for before, mn in itertools.pairwise(out):

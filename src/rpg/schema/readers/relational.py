@@ -75,6 +75,8 @@ class RelationalReading:
     """The last relation's subject and object mentions."""
     regions: list[tuple[list[Mention], str]] = field(default_factory=list)
     """(subject mentions, region name): places on the table."""
+    fresh: dict[int, int] = field(default_factory=dict)
+    """id of a mention said as one more of its colour (:attr:`Mention.another`) -> its cube's index."""
 
     def obj(self, mn: Mention, i: int = 0) -> str:
         """The object a mention names: its patch, or its ``i``-th cube (made in the builder on first mention)."""
@@ -87,6 +89,8 @@ class RelationalReading:
         lst = self.objects.setdefault(key, [])
         if len(key) == 5:
             i = 0
+        elif mn.another and mn.color and not mn.label and i == 0:  # "another green block": one more of that colour
+            i = self.fresh.setdefault(id(mn), len(lst))
         while len(lst) <= i:
             lst.append(self.b.semantic(mn.label) if mn.label else self.b.cube(mn.color or _next_default(self.b, self.objects)))
         return lst[i]
