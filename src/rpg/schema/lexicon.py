@@ -42,7 +42,8 @@ IGNORABLE_MORE: frozenset[str] = frozenset("""
 nice nicely neat tidy tidily maybe perhaps possibly need needs needed want wants wanted let am
 try trying attempt anywhere somewhere flat flatly thanks thank cool great gonna wanna um uh yeah alright
 help wood wooden plastic properly securely stably steadily safely accurately completely entirely fully pls plz sure
-basically essentially literally honestly yo hello ty thx hiya howdy asap
+basically essentially literally honestly yo hello ty thx hiya howdy asap today tonight morning afternoon evening fine
+quick quickly haha lol good love exercise
 """.split())
 """Further words with no meaning for the goal, each checked not to change what a task asks:
 hedges ("maybe"), wishes ("I need", "we'll", "let's"), praise ("nice"), "anywhere", "lay it
@@ -68,6 +69,7 @@ SYNONYMS: dict[str, str] = {
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
     "uppermost": "topmost", "lowermost": "bottommost", "upon": "on", "right-hand": "right", "left-hand": "left",
     "midpoint": "center", "blu": "blue", "gren": "green", "yelow": "yellow", "purpel": "purple",
+    "cirlce": "circle", "cricle": "circle", "towr": "tower", "tower's": "tower", "pyramd": "pyramid",
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
@@ -324,7 +326,8 @@ FRAMING_RE = re.compile(
     r"(?:\s+you\s+to\s+do)?\s*[.:,]\s*)?"
     r"(?:(?:(?:for\s+)?(?:this|the|your|our|my)\s+|for\s+)?(?:task|goal(?:\s+(?:state|configuration|condition)s?)?|instruction"
     r"|objective|requirements?|target\s+(?:state|configuration)|(?:final|end|desired|goal)\s+(?:state|scene|configuration|layout)"
-    r"|spec(?:ification)?|(?:two|three|2|3)\s+things)\s*(?::|-|,|\bis\s*:)\s*"
+    r"|spec(?:ification)?|(?:two|three|2|3)\s+things|(?:our\s+|the\s+|your\s+)?(?:first\s+|next\s+|last\s+)?exercise(?:\s+today)?)"
+    r"\s*(?::|-|,|\bis\s*:)\s*"
     r"|for\s+(?:this|the)\s+task,?\s+)?"
     r"(?:(?:a|an|the)\s+(?:simple\s+|basic\s+|easy\s+|collaborative\s+|bimanual\s+|dual[- ]arm\s+)?(?:task|challenge|problem)"
     r"\s+(?:where|in\s+which)\s+)?"
@@ -623,9 +626,10 @@ before negations are refused (:func:`rpg.schema.reading.normalize`), which no or
 HARMLESS_NEGATION_RE = re.compile(r"[,;(\u2013\u2014-]?\s*\b(?:nothing|none?\s+too|no\s+need\s+(?:to\s+be|for\s+anything))\s+"
                                   r"(?:fancy|special|complicated|elaborate|too\s+fancy)\b\)?"
                                   r"|[,;]?\s*\b(?:i'?m|i\s+am|we'?re|we\s+are)\s+not\s+(?:fussy|picky|particular)\b"
-                                  r"|[,;]?\s*\bif\s+you\s+(?:don'?t|do\s+not)\s+mind\b")
+                                  r"|[,;]?\s*\bif\s+you\s+(?:don'?t|do\s+not)\s+mind\b"
+                                  r"|[,;.!]?\s*\b(?:thanks|thank\s+you)\s+(?:so|very)\s+much\b")
 """A negation about the manner, not the end state ("..., nothing fancy", "I'm not fussy", "if
-you don't mind"): dropped before
+you don't mind", "thanks so much"): dropped before
 negations are refused (:func:`rpg.schema.reading.normalize`)."""
 
 ORDER_WORDS = re.compile(r"\b(rainbow|alternat\w*|(?<!any\s)order\w*|sequence|gradient|sort\w*|ascending|descending|"
