@@ -1576,3 +1576,16 @@ def test_another_cube_of_a_colour_is_a_cube_of_its_own():
     assert sorted(a.name for a in schema.assets) == ["blue", "red_1", "red_2"]
     assert meaning(parse("put the green block on the blue patch, then put a second green block on the blue patch")) == [
         "on_patch(green,green,patch:blue)"]
+
+
+def test_a_sentence_that_says_nothing_of_the_task_is_dropped_not_refused():
+    from rpg.schema.reading import normalize_words
+
+    assert meaning(parse("Stack the red block on the blue block. Cheers mate!")) == ["stack(blue,red)"]
+    _, _, dropped = normalize_words("Stack the red block on the blue block. Cheers mate!")
+    assert {w for w, _ in dropped} >= {"cheers", "mate"}  # listed, not silently gone
+    # a sentence with a reference ("it") or a negation is not idle: still refused
+    with pytest.raises(ParseError, match="gracefully"):
+        parse("Stack the red block on the blue block. Do it gracefully.")
+    with pytest.raises(ParseError, match="negation"):
+        parse("Stack the red block on the blue block. Never mind.")

@@ -632,6 +632,17 @@ HARMLESS_NEGATION_RE = re.compile(r"[,;(\u2013\u2014-]?\s*\b(?:nothing|none?\s+t
 you don't mind", "thanks so much"): dropped before
 negations are refused (:func:`rpg.schema.reading.normalize`)."""
 
+TASK_CONTENT_RE = re.compile(
+    r"\b(?:" + "|".join(COLORS) + r"|grey|\d+|blocks?|cubes?|bricks?|box(?:es)?|patch(?:es)?|pads?|mats?|tiles?|squares?"
+    r"|towers?|stacks?|stacked|stacking|piles?|lines?|rows?|columns?|pillars?|pyramids?|walls?|grids?|circles?|rings?"
+    r"|letters?|digits?|numbers?|labels?|left|right|front|back|rear|behind|middle|cent(?:er|re)|corners?|edges?|sides?"
+    r"|top|bottom|base|next|near|beside|between|far|apart|on|onto|under|above|below|table|put|place|move|build|make|arrange"
+    r"|set|spell|sort|order|one|two|three|four|five|six|seven|eight|nine|ten|it|them|each|every|all|both)\b")
+"""Words that make a sentence part of the task: cubes, colours, counts, structures, places,
+relations, placement verbs and references.  A sentence with none of them ("Two jobs." once
+counts are digits is not one; "They get along, haha.") says nothing of the task: its unknown
+words are no reason to refuse (:func:`rpg.schema.reading.normalize_words` drops it)."""
+
 ORDER_WORDS = re.compile(r"\b(rainbow|alternat\w*|(?<!any\s)order\w*|sequence|gradient|sort\w*|ascending|descending|"
                          r"bottom|base|first|last|then|lightest|darkest|top(?! of (each other|one another)))\b")
 """Words that give a stack's cubes places (an order, a role): a stack read with any of them

@@ -473,6 +473,14 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         gone = {w for w, _ in dropped}
         unknown = [w for w in unknown if w not in gone]
         text = " ".join(w for w in text.split(" ") if re.sub(r"[.,;:!?]+$", "", w) not in gone)
+    if unknown and strict:  # a sentence that says nothing of the task ("Two jobs.", "They get along, haha."): dropped
+        sentences = re.split(r"(?<=[.!?;])\s+", text)
+        idle = [t for t in sentences if not lexicon.TASK_CONTENT_RE.search(t)]
+        if idle and len(idle) < len(sentences):
+            gone = {w for t in idle for w in re.findall(r"[a-z][a-z\-]*", t)}
+            dropped += [(w, "a sentence with nothing of the task") for w in dict.fromkeys(unknown) if w in gone]
+            unknown = [w for w in unknown if w not in gone]
+            text = " ".join(t for t in sentences if t not in idle)
     if unknown and strict:
         refused += [(kind, [w], why) for w, kind, why in _unknown_word_classes(text, list(dict.fromkeys(unknown)))
                     if w not in named]
