@@ -737,6 +737,24 @@ def _heading_side(m: re.Match) -> bool:
             and re.match(r"\s*:", m.string[m.end():]) is not None)
 
 
+NEW_STRUCTURE_BEFORE_RE = re.compile(
+    r"(?:(?:^|[,;:.]\s*)(?:(?:a|an|1|\d+)\s+)?|\b(?:and|then|build|make|set\s+up|put|place|create|form)\s+(?:a|an|1|\d+)\s+)"
+    r"(?:(?!the\b|that\b|this\b|its\b|their\b)[\w-]+\s+){0,2}?"
+    r"(?:tower|stack|pyramid|wall|line|row|grid|circle|ring|column)s?"
+    r"(?:\s+of\s+(?:\d+\s+)?(?:[a-z]+\s+)?(?:cubes|blocks))?\s*$")
+"""A structure being described just before a bare side ("a line of 4 gray cubes at the front")."""
+
+
+def _structure_side(m: re.Match) -> bool:
+    """Whether a bare side ("at the front", "on the left") says where a structure the text is
+    describing stands ("set up a line of 4 gray cubes at the front and a circle of 5 orange cubes
+    at the back"): a new structure has no sides of its own to be relative to."""
+    return (m.group("part") == "" and m.group(0).split()[0] in ("on", "at", "in", "to")
+            and (m.group("fb") or m.group("lr2")) in ("front", "back", "rear", "left", "right") and not m.group("lr")
+            and NEW_STRUCTURE_BEFORE_RE.search(m.string[:m.start()]) is not None
+            and not names_a_role(m.string[:m.start()], m.string))
+
+
 def mark_regions(text: str) -> str:
     """Replace places on the table ("in the middle of the table", "at the back left corner",
     "on the right side of the workspace") with ``@region_<name>`` tokens (names as in
@@ -748,7 +766,8 @@ def mark_regions(text: str) -> str:
         word = m.group("lr") or m.group("lr2")
         bare_center = (word in ("center", "centre", "middle") and m.group(0).split()[0] in ("in", "at", "to", "into")  # "in the center"
                        and not names_a_role(m.string[:m.start()], m.string))
-        if not (m.group("tail") or corner or edge or bare_center or _table_side(m) or _heading_side(m)):
+        if not (m.group("tail") or corner or edge or bare_center or _table_side(m) or _heading_side(m)
+                or _structure_side(m)):
             return m.group(0)
         fb = m.group("fb") or ("far" if m.group("far") == "far" and corner else None)  # "the far left corner"
         if corner and not (fb and word in ("left", "right")):  # "the right corner": back right or front right?

@@ -29,7 +29,7 @@ from rpg.schema.lexicon import COLOR_RE, PAIRWISE_RELATIONS
 from rpg.schema.model import TaskSchema
 from rpg.schema.readers.common import REGION_MARGIN, region_spots
 from rpg.schema.readers.registry import reader
-from rpg.schema.reading import Features, ParseError, color_mentions, mark_regions
+from rpg.schema.reading import NEW_STRUCTURE_BEFORE_RE, Features, ParseError, color_mentions, mark_regions
 from rpg.schema.structures import STRUCTURE_RE
 
 STACK_KINDS = (Stack, UnorderedStack, AnchoredStack)
@@ -289,9 +289,11 @@ def recognize_spelled_out_sort(f: Features, b: Builder) -> bool:
 
 PART_SPLIT_RE = re.compile(
     r"\s*(?:[.;!]\s+|,?\s+and\s+then\s+|,\s*then\s+|\s+then\s+"
-    r"|,?\s+and\s+(?=(?:put|place|build|make|stack|move|set|arrange|line\s+up|create|form|pile|slide|push|bring)\b))")
+    r"|,?\s+and\s+(?=(?:put|place|build|make|stack|move|set|arrange|line\s+up|create|form|pile|slide|push|bring)\b)"
+    r"|,?\s+and\s+(?=(?:a|an|\d+)\s+(?:[\w-]+\s+){0,2}?(?:tower|stack|pyramid|wall|line|row|grid|circle|ring|column)s?\b))")
 """Where one task said after another begins: a new sentence, "then", or "and" before a verb
-("make a tower of two blue blocks and put the red block on the left")."""
+("make a tower of two blue blocks and put the red block on the left") or before a new structure
+("a line of 4 gray cubes at the front and a circle of 5 orange cubes at the back")."""
 
 REFERS_ACROSS_RE = re.compile(
     r"\b(?:there|it|its|them|they|their|those|these|that|this|same|another|other|others|opposite|second|again|too|also"
@@ -373,6 +375,14 @@ def _said_apart(texts: list[str]) -> bool:
     return True
 
 
+def _bare_place(part: str) -> bool:
+    """Whether a part ends with a side that may be another part's ("put the red block on the
+    left": the tower's left, or the table's?); a side said of a structure the part describes
+    ("a line of 4 gray cubes at the front") is the table's."""
+    m = BARE_PLACE_RE.search(part)
+    return m is not None and NEW_STRUCTURE_BEFORE_RE.search(part[:m.start()]) is None
+
+
 @reader(order=250)
 def recognize_independent_parts(f: Features, b: Builder) -> bool:
     """Tasks said one after another that share no cube ("make a tower of two blue blocks and
@@ -384,7 +394,7 @@ def recognize_independent_parts(f: Features, b: Builder) -> bool:
     texts = [t.strip(" ,.;!") for t in PART_SPLIT_RE.split(f.text)]
     texts = [t for t in texts if t]
     if (len(texts) < 2 or not _said_apart(texts)
-            or any(BARE_PLACE_RE.search(t) or REFERS_ACROSS_RE.search(t) for t in texts)):
+            or any(_bare_place(t) or REFERS_ACROSS_RE.search(t) for t in texts)):
         return False
     heads = _read_parts(texts)
     if heads is None or any(h.initial_state.structures or any(a.kind == "semantic_cube" for a in h.assets) for h in heads):
