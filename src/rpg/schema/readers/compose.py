@@ -29,7 +29,13 @@ from rpg.schema.lexicon import COLOR_RE, PAIRWISE_RELATIONS
 from rpg.schema.model import TaskSchema
 from rpg.schema.readers.common import REGION_MARGIN, region_spots
 from rpg.schema.readers.registry import reader
-from rpg.schema.reading import NEW_STRUCTURE_BEFORE_RE, Features, ParseError, color_mentions, mark_regions
+from rpg.schema.reading import (
+    NEW_STRUCTURE_BEFORE_RE,
+    Features,
+    ParseError,
+    color_mentions,
+    mark_regions,
+)
 from rpg.schema.structures import STRUCTURE_RE
 
 STACK_KINDS = (Stack, UnorderedStack, AnchoredStack)
