@@ -1525,6 +1525,15 @@ def test_parts_that_may_refer_to_one_another_are_not_read_apart(text):
     ("Two things: stack the A cube on the C cube, and put the B cube next to the C cube.", ["next_to(B,C)", "stack(C,A)"]),
     # a row of digits in an order says nothing of reading them (their faces up): no reads(...)
     ("Make a row of the digits 3, 1, 4 from left to right.", ["line[left_to_right](3,1,4)"]),
+    # typos and orders of a stranger's places; the two patches named before; "one ... the other"; two same-colour patches
+    ("put the gray cube infront of the green patch", ["in_front_of(gray,patch:green)"]),
+    ("Put the red block in the right back corner.", ["in_region(red,back_right)"]),
+    ("Front-left corner: the green cube.", ["in_region(green,front_left)"]),
+    ("Put the white block on the black patch and the black block on the white patch, then put the red block between the "
+     "two patches.", ["between(red;patch:black,patch:white)", "on_patch(black,patch:white)", "on_patch(white,patch:black)"]),
+    ("Put one yellow block on the red patch and the other yellow block on the blue patch.",
+     ["on_patch(yellow,patch:blue)", "on_patch(yellow,patch:red)"]),
+    ("Put the blue cube between the two yellow patches.", ["between(blue;patch:yellow,patch:yellow)"]),
     # label cubes named by their label alone (had been read as two invented red and blue cubes)
     ("stack the A on the B", ["stack(B,A)"]),
     ("Stack the 1 on the 2, and the 3 on the 4 (number cubes).", ["stack(2,1)", "stack(4,3)"]),
@@ -1562,6 +1571,9 @@ def test_a_negation_that_is_not_about_the_end_state_is_still_refused():
 
 @pytest.mark.parametrize("text,match", [
     ("put the red on the white patch and the blue on the green patch and the yellow next to the patch", "which patch"),
+    # plural patches of one colour had collapsed into one patch holding both cubes (silently wrong)
+    ("put the red cubes on the two green patches", "2 green patches"),
+    ("put the two red cubes on the green patches", "2 green patches"),
     # a wall nobody built is no wall: six red cubes in the centre had been read with no wall
     ("Build a wall of six red bricks (three on the bottom, three on top) in the centre, and put the white brick in the "
      "front left corner.", "Rephrase"),

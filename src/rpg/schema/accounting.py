@@ -140,8 +140,10 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
                   or [c for c in [m.group("color2"), m.group("color3")] if c])
         named = tuple(sorted({canon(c) for c in listed}))
         out.append(Mention(m.group(0).strip(), "count", count=n, color=",".join(named) or None))
-    for m in re.finditer(rf"\b(?P<c>{colors})\s+(?:goal\s+)?patch(?:es)?\b", text):
-        out.append(Mention(m.group(0), "patch", color=canon(m.group("c"))))
+    for m in re.finditer(rf"(?:\b(?P<n>\d+)\s+)?\b(?P<c>{colors})\s+(?:goal\s+)?patch(?P<pl>es)?\b", text):
+        # "the two green patches": that many patches of the colour ("the red and the blue patch" is two colours)
+        many = int(m.group("n")) if m.group("n") else 2 if m.group("pl") else 1
+        out.append(Mention(m.group(0), "patch", color=canon(m.group("c")), count=many))
     for m in re.finditer(r"\b(?:a|an|the|some)\s+(?:(?:goal|target)\s+){0,2}patch\b(?!\s+of\s+(?:its|their)\b)", text):
         out.append(Mention(m.group(0), "patch"))  # a patch of no colour: some goal patch must be in the task
     for m in re.finditer(r"@region_([a-z_]+)", text):
@@ -276,6 +278,7 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
     goal = list(schema.goal_predicate().walk())
     regions = {p.region for p in goal if isinstance(p, P.InRegion)}
     patches = {a.color or "gray" for a in schema.assets if a.kind == "goal_patch"}
+    patch_count = Counter(a.color or "gray" for a in schema.assets if a.kind == "goal_patch")
     record = []
     named = mentions(text, colors, canon)
     for m in named:
@@ -286,6 +289,9 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
         elif m.kind == "patch":
             if m.color not in patches:
                 raise UnaccountedMention(f"the {m.words} has no part in the task read")
+            if m.count > patch_count[m.color]:
+                raise UnaccountedMention(f"'{m.words}' names {m.count} {m.color} patches but the task read has "
+                                         f"{patch_count[m.color]}")
             record.append({"mention": m.words, "kind": "patch", "consumed_by": f"goal patch {m.color}"})
         elif m.kind == "count":
             have = sum(by_color[c] for c in m.color.split(",")) if m.color else len(cubes)

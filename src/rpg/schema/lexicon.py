@@ -549,6 +549,12 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     # "at the midpoint between", "in the middle between", "centrally between": only between
     (re.compile(r"\b(?:(?:at|in)\s+the\s+(?:midpoint|middle|center|centre)|centrally|midway|cent(?:er|r)ed)\s+(?=between\b)"), ""),
     (re.compile(r"\bcentrally\b"), "at the center of the table"),  # "place red and green centrally"
+    (re.compile(r"\binfront\b"), "in front"),  # "infront of the green patch"
+    # "the right back corner": a corner said left/right first
+    (re.compile(r"\b(left|right)[\s-]+(front|back|rear)(?=[\s-]+corner\b)"), r"\2 \1"),
+    # "Front-left corner: the green cube.": the place said as a heading before the one cube
+    (re.compile(rf"^((?:the\s+)?(?:front|back|rear)[\s-]+(?:left|right)\s+corner)\s*:\s*(?:the\s+|a\s+)?({COLOR_RE})\s+"
+                r"(block|cube)\s*[.!]?\s*$"), r"put the \2 \3 in the \1"),
     (re.compile(r"\bcent(?:er|r)ed\s+(?:on|in)\s+the\s+(table|workspace)\b"), r"at the center of the \1"),
     # "a centered stack", "in one centred tower": the structure at the centre of the table
     (re.compile(r"\bcent(?:er|r)ed\s+(tower|stack|column|pile|row|line|pyramid|circle|ring|grid|square|wall)"

@@ -283,6 +283,11 @@ it, whose colour it takes; refused when several were named (a second, gray patch
 invented)."""
 
 
+THE_TWO_PATCHES_RE = re.compile(r"\b(?:the\s+(?:two|2)|both(?:\s+the)?|both\s+of\s+the)\s+(?:goal\s+|target\s+)?patches\b")
+"""Two patches referred to together without their colours ("between the two patches"): the two
+named before, when exactly two were."""
+
+
 def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, list[tuple[str, str]]]:
     """Lower-case, number words to digits, typos corrected.  Returns (text, original, dropped):
     ``dropped`` lists the unknown words read as ignorable (:mod:`rpg.schema.senses`), each with
@@ -544,6 +549,11 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                              "named before it); say its colour (e.g. \"the green patch\")")
         if before:
             text = f"{text[:m.start()]}{m.group(1)} {before[0]} patch{text[m.end():]}"
+    for m in reversed(list(THE_TWO_PATCHES_RE.finditer(text))):  # "between the two patches": the two named before
+        before = list(dict.fromkeys(re.findall(rf"\b({COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|square|area)\b",
+                                               text[:m.start()])))
+        if len(before) == 2:
+            text = f"{text[:m.start()]}the {before[0]} patch and the {before[1]} patch{text[m.end():]}"
     for pattern, written_out in lexicon.DISTRIBUTED_RELATIONS:
         text = pattern.sub(written_out, text)
     for w, n in NUMBER_WORDS.items():

@@ -359,8 +359,9 @@ MENTION_RE = re.compile(
 )
 
 
-ANOTHER_BEFORE_RE = re.compile(r"\b(?:a|the)\s+(?:second|2nd|third|3rd)\s+$|\bone\s+more\s+$")
-"""Words just before a mention that make it one more cube of its kind ("a second green block")."""
+ANOTHER_BEFORE_RE = re.compile(r"\b(?:a|the)\s+(?:second|2nd|third|3rd|other)\s+$|\bone\s+more\s+$")
+"""Words just before a mention that make it one more cube of its kind ("a second green block",
+"one yellow block ... the other yellow block")."""
 
 
 def mentions_in(text: str) -> list[Mention]:
