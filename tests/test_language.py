@@ -1534,6 +1534,10 @@ def test_parts_that_may_refer_to_one_another_are_not_read_apart(text):
     ("Put one yellow block on the red patch and the other yellow block on the blue patch.",
      ["on_patch(yellow,patch:blue)", "on_patch(yellow,patch:red)"]),
     ("Put the blue cube between the two yellow patches.", ["between(blue;patch:yellow,patch:yellow)"]),
+    # each cube of a row given its place after a colon (the places had been read as the table's)
+    ("Put three cubes in a row: red at the left end, blue at the right end, yellow in the middle.",
+     ["line[left_to_right](red,yellow,blue)"]),
+    ("make a row: red on the left, blue on the right, green in the middle", ["line[left_to_right](red,green,blue)"]),
     # label cubes named by their label alone (had been read as two invented red and blue cubes)
     ("stack the A on the B", ["stack(B,A)"]),
     ("Stack the 1 on the 2, and the 3 on the 4 (number cubes).", ["stack(2,1)", "stack(4,3)"]),

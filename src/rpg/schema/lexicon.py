@@ -738,8 +738,20 @@ def names_a_role(before: str, text: str) -> bool:
     """Whether "in the middle" (or another bare side) after ``before`` gives a cube a role in a
     structure ("with blue in the middle", "3 red at the base, 2 green in the middle") rather
     than a place on the table; ``text`` is the whole instruction."""
-    return bool(ROLE_BEFORE.search(before) or ROLE_LIST_BEFORE.search(before)
+    return bool(ROLE_BEFORE.search(before) or ROLE_LIST_BEFORE.search(before) or END_ROLE_LIST_BEFORE.search(before)
+                or COLON_ROLE_LIST_BEFORE.search(before)
                 or (LAYER_LIST_BEFORE.search(before) and LAYERED_TEXT.search(text)))
+
+
+END_ROLE_LIST_BEFORE = re.compile(r"\b(?:at|on)\s+the\s+(?:left|right|front|back|top|bottom|far)\s+end\b[^.;]*(?:,|\band)\s+"
+                                  r"(?:the\s+)?[a-z0-9]+(?:\s+(?:block|cube|one))?(?:\s+(?:is|goes|sits))?\s*$")
+"""Text before "in the middle" that lists the ends of a line first ("red at the left end, blue at
+the right end, yellow in the middle"): the middle is a cube's role too."""
+
+COLON_ROLE_LIST_BEFORE = re.compile(r"\b(?:row|line|tower|stack|column)s?\b[^:.;]*:\s*(?:[^.;:]*(?:,|\band)\s+)?(?:the\s+)?"
+                                    r"(?:" + "|".join(COLORS) + r")(?:\s+(?:block|cube|one))?(?:\s+(?:is|goes|sits))?\s*$")
+"""Text before a bare side in a list of cubes given their places after a structure and a colon
+("a row: red on the left, blue on the right, green in the middle"): each side a cube's role."""
 
 
 ANTECEDENT_RE = re.compile(

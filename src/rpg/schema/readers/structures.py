@@ -444,8 +444,9 @@ def _order_by_end_roles(f: Features) -> list[str] | None:
     its ends and middle so that every place is fixed ("a row of red, green and blue with red on
     the left and blue on the right"); None otherwise (no such roles, or a place left open)."""
     colors = list(dict.fromkeys(f.color_list()))
-    if not 2 <= len(colors) <= 3 or len(f.color_list()) < 2 * len(colors) - 1:
-        return None  # the cubes listed, then (most of) them given a place
+    if not 2 <= len(colors) <= 3:
+        return None
+    listed = len(f.color_list()) >= 2 * len(colors) - 1  # the cubes listed, then (most of) them given a place
     place: dict[str, str] = {}
     for m in _END_ROLE_RE.finditer(f.text):
         side = {"center": "middle", "centre": "middle"}.get(m.group("side") or m.group("side2"), m.group("side") or m.group("side2"))
@@ -457,6 +458,8 @@ def _order_by_end_roles(f: Features) -> list[str] | None:
         place[side] = c
     if not ({"left", "right"} & set(place)) or (len(colors) == 2 and "middle" in place):
         return None
+    if not listed and set(place.values()) != set(colors):
+        return None  # each cube given its place without a list: every one of them must be
     slots = ["left", "middle", "right"] if len(colors) == 3 else ["left", "right"]
     open_slots = [s for s in slots if s not in place]
     rest = [c for c in colors if c not in place.values()]
