@@ -1538,6 +1538,9 @@ def test_parts_that_may_refer_to_one_another_are_not_read_apart(text):
     ("Put three cubes in a row: red at the left end, blue at the right end, yellow in the middle.",
      ["line[left_to_right](red,yellow,blue)"]),
     ("make a row: red on the left, blue on the right, green in the middle", ["line[left_to_right](red,green,blue)"]),
+    # a cube "with one ... in the middle" of a tower whose ends are said (it had gone to the table's centre: silently wrong)
+    ("Make a tower with blue at the bottom and yellow on top, with one red block in the middle.", ["stack(blue,red,yellow)"]),
+    ("Make a tower whose base is blue and whose top is yellow, with one red block in between.", ["stack(blue,red,yellow)"]),
     # label cubes named by their label alone (had been read as two invented red and blue cubes)
     ("stack the A on the B", ["stack(B,A)"]),
     ("Stack the 1 on the 2, and the 3 on the 4 (number cubes).", ["stack(2,1)", "stack(4,3)"]),

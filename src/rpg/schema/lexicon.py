@@ -550,6 +550,14 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"\b(?:(?:at|in)\s+the\s+(?:midpoint|middle|center|centre)|centrally|midway|cent(?:er|r)ed)\s+(?=between\b)"), ""),
     (re.compile(r"\bcentrally\b"), "at the center of the table"),  # "place red and green centrally"
     (re.compile(r"\binfront\b"), "in front"),  # "infront of the green patch"
+    # "a tower whose base is blue and whose top is yellow": the ends said as the tower's own
+    (re.compile(rf"\bwhose\s+(?:base|bottom)\s+(?:block\s+|cube\s+)?is\s+({COLOR_RE})\b"), r"with \1 at the bottom"),
+    (re.compile(rf"\b(?:and\s+)?whose\s+top\s+(?:block\s+|cube\s+)?is\s+({COLOR_RE})\b"), r"and \1 on top"),
+    # "with one red block in between" (its ends said): the middle of the structure
+    (re.compile(r"\b(with\s+(?:a|an|1|one|the)\s+[a-z]+\s+(?:block|cube))\s+in\s+between\b(?!\s+(?:the|them|those))"), r"\1 in the middle"),
+    # "with one red block in the middle": one cube given a role, not a count of the structure
+    (re.compile(r"\bwith\s+(?:1|one)\s+(?=[a-z]+\s+(?:block|cube)\s+(?:in|at|on)\s+(?:the\s+)?(?:middle|center|centre|top|bottom|base)\b)"),
+     "with a "),
     # "the right back corner": a corner said left/right first
     (re.compile(r"\b(left|right)[\s-]+(front|back|rear)(?=[\s-]+corner\b)"), r"\2 \1"),
     # "Front-left corner: the green cube.": the place said as a heading before the one cube
@@ -715,7 +723,7 @@ LAYER_WORDS = {"top": "top", "peak": "top", "apex": "top", "tip": "top", "bottom
                "foundation": "bottom", "middle": "middle"}
 """A layer word of :data:`LAYER_ROLE_RE` -> the layer it names."""
 
-ROLE_BEFORE = re.compile(r"\bwith\s+(?:the\s+)?[a-z0-9]+(?:\s+(?:block|cube|one|digit|letter))?\s*$")
+ROLE_BEFORE = re.compile(r"\bwith\s+(?:the\s+|a\s+|an\s+|1\s+)?[a-z0-9]+(?:\s+(?:block|cube|one|digit|letter))?\s*$")
 """Text before "in the middle" that makes it a cube's role in a structure ("with blue in the
 middle"), not a place on the table."""
 
