@@ -869,6 +869,10 @@ def test_a_structure_turned_into_another_has_no_order_nobody_said(tmp_path, base
     ("Put the green block on the blue patch", ["put a second green block on the same patch"], ["on_patch(green,green,patch:blue)"]),
     ("Stack three green cubes", ["Right, keep the tower, and also put a pink cube on the orange patch"],
      ["on_patch(pink,patch:orange)", "stack(green,green,green)"]),
+    # a letter said alone, a new stack of two colours, an opening "fine." and closing "then", "the cube" of one cube
+    ("Build a tower of letter cubes with A at the bottom, then B, then C on top", ["put D on top"], ["stack(A,B,C,D)"]),
+    ("Stack the white block on the blue block", ["make it blue on white instead"], ["stack(white,blue)"]),
+    ("Put the blue cube on the pink patch", ["fine. make the cube white then"], ["on_patch(white,patch:pink)"]),
 ])
 def test_edits_said_in_fewer_or_looser_words(tmp_path, base, edits, want):
     assert _steered(tmp_path, base, *edits)[-1][1] == want
@@ -915,6 +919,7 @@ def test_removals_and_additions_of_cubes_among_relations(tmp_path, base, edit, w
     ("build a tower of three green cubes", "make it taller, 2 blocks", "disagree"),
     ("build a tower of two blue blocks and one red block on top", "make that blue one green", "names one of the task's 2 blue"),
     ("stack red, blue and green", "swap the colours", "names two colours"),
+    ("Stack a red cube on a yellow cube", "and paint it beige", "palette"),  # a colour, not an action
     ("Put two pink cubes in a row", "make that 3 green cubes", "has no place in the change"),
 ])
 def test_edits_refused_for_their_reason(tmp_path, base, edit, match):

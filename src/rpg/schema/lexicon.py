@@ -839,6 +839,15 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     # "take one off": a cube taken off a stack is its top one
     (re.compile(r"(?i)^\s*(?:take|pull|lift)\s+(?:1|one)\s+(?:block\s+|cube\s+)?off(?:\s+(?:the\s+)?(?:top|tower|stack))?\s*[.!]?\s*$"),
      "remove the top one"),
+    # "paint it blue": in an edit, a cube's new colour (the task's cubes are swapped for cubes of that colour)
+    (re.compile(r"(?i)\b(?:paint|repaint|colou?r|recolou?r|dye)\s+(?=(?:it|them|the|that|this|all|both|every|each)\b)"), "make "),
+    # "make it blue on white instead": a new stack of the two colours
+    (re.compile(rf"(?i)\bmake\s+(?:it|them)\s+({COLOR_RE})\s+on\s+({COLOR_RE})\b"), r"stack the \1 block on the \2 block"),
+    # "fine. make the cube white then": the opening word and the closing "then" say nothing of the change
+    (re.compile(r"(?i)^\s*(?:fine|ok(?:ay)?|alright|right|cool|great|sure)\s*[.,!]\s*"), ""),
+    (re.compile(r"(?i)\s+then\s*[.!]?\s*$"), ""),
+    # "put D on top": a new letter or digit cube said by its label alone
+    (re.compile(r"\b(put|place|stack|add)\s+([A-Z]|\d)\s+(?=on\s+top\b|at\s+the\s+top\b|on\s+it\b)"), r"\1 a \2 "),
     # "pop a green one on top": the verbs of a casual writer for putting a cube
     (re.compile(r"(?i)\b(?:pop|plonk|plop|stick|chuck|slap|whack)\s+(?=(?:a|an|another|one|the|\d+)\s)"), "put "),
     (re.compile(rf"(?i)\b(?:that|this)\s+(?=(?:{COLOR_RE})\s+(?:one|block|cube)\b)"), "the "),  # "make that blue one white"

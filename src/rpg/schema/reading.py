@@ -187,6 +187,11 @@ def _refuse_unresolved_pronoun(text: str, original: str) -> None:
                                 "green patch\", \"the left side of the table\")", original)
 
 
+_RECOLOUR_BEFORE = re.compile(r"\b(?:make|paint|colou?r|turn|change|recolou?r|dye)\b(?:\s+\S+){0,4}?\s+(?:to\s+|into\s+)?$")
+"""Words before a colour name the palette lacks that make it a colour ("make it beige", "paint the
+top one mauve")."""
+
+
 def _unknown_word_classes(text: str, unknown: list[str]) -> list[tuple[str, str, str]]:
     """(word, class, why) for each unknown word that stands where an object does (a noun
     heading a phrase after a determiner: "insert the peg") and, failing that for a word, where a
@@ -197,7 +202,9 @@ def _unknown_word_classes(text: str, unknown: list[str]) -> list[tuple[str, str,
 
     found = []
     for word in unknown:
-        if word in lexicon.colour_names() and any(_COLOUR_BEFORE.match(after) for _, after in where(word)):
+        if word in lexicon.colour_names() and any(_COLOUR_BEFORE.match(after) or (
+                _RECOLOUR_BEFORE.search(before) and re.match(r"\s*(?:[.,;!?]|$|instead\b|please\b|too\b|then\b)", after))
+                for before, after in where(word)):  # "beige block", "make it beige"
             found.append((word, *lexicon.UNKNOWN_COLOUR))
             continue
         pos = lexicon.parts_of_speech(word)

@@ -268,7 +268,8 @@ def _selector(text: str) -> dict | None:
         return {"some": int(some.group(1))}
     if re.fullmatch(r"(?:the\s+)?both(?:\s+(?:of\s+)?(?:them|the\s+(?:blocks|cubes)|blocks|cubes))?", text):
         return {"all": True, "both": True}
-    if re.search(r"\b(?:all|every|everything|each|whole)\b|^(?:the\s+)?(?:blocks|cubes|them|it|they|wall)\b", text) \
+    if re.search(r"\b(?:all|every|everything|each|whole)\b|^(?:the\s+)?(?:blocks|cubes|them|it|they|wall)\b"
+                 r"|^(?:the\s+)?(?:cube|block)$", text) \
             or re.match(r"(?:the\s+)?" + STRUCTURE_RE, text):
         return {"all": True}
     m = re.search(r"\b(base|bottom|first|lowest|top|last|highest|upper|middle|center|centre|second|third)\b", text)

@@ -209,6 +209,12 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         subject = next(a for a in ref_schema.assets if a.name == rel.subject)  # "make it blue": the cube the relation moves
         if subject.color:
             plan.ops[0].params["select"] = {"color": subject.color}
+    cubes = [a for a in ref_schema.assets if a.kind == "colored_cube"]
+    if ref_spec is None and len(cubes) == 1 and len(ref_schema.assets) - 1 == sum(
+            a.kind == "goal_patch" for a in ref_schema.assets) and all(
+            o.op == "recolor" and o.params["select"] == {"all": True} for o in plan.ops):
+        for o in plan.ops:  # "make the cube white" of a task with one cube: that cube
+            o.params["select"] = {"color": cubes[0].color}
     if ref_spec is None and all(o.op == "remove" and set(o.params["select"]) == {"color"} for o in plan.ops):
         removed = remove_cubes(plan.text, ref_schema, [o.params["select"]["color"] for o in plan.ops], parse)
         if removed is not None:  # "get rid of the green block" of cubes related to each other: the rest kept
