@@ -66,6 +66,17 @@ def _single_spot(head: TaskSchema) -> bool:
             and not any(isinstance(p, InRegion) for p in head.goal_predicate().walk()))
 
 
+def _open_color(color: str, own: set[str], clash: set[str], taken: set[str], memo: dict[str, str | None]) -> str | None:
+    """The colour a part's cube gets beside other parts: its own when the part said it or no
+    other part holds it (``clash``), else the first default colour not ``taken`` (the same for
+    every cube of that open colour: ``memo``); None when every default colour is taken."""
+    if color in own or color not in clash:
+        return color
+    if color not in memo:
+        memo[color] = next((c for c in DEFAULT_COLORS if c not in taken | {m for m in memo.values() if m}), None)
+    return memo[color]
+
+
 def _merge(f: Features, b: Builder, texts: list[str], heads: list[TaskSchema],
            spots: list[tuple[float, float]], regions: list[str | None]) -> None:
     """Add each part's cubes and goal to ``b``: renamed apart, a colour the part left open and
@@ -77,14 +88,13 @@ def _merge(f: Features, b: Builder, texts: list[str], heads: list[TaskSchema],
         cubes = [a for a in head.assets if a.kind != "goal_patch"]
         own = {c for _, c in color_mentions(text)}
         mapping: dict[str, str] = {}
-        recolored: dict[str, str] = {}
+        recolored: dict[str, str | None] = {}
         for a in cubes:
             if a.kind == "colored_cube":
-                color = a.color
-                if color not in own and color in used:  # a colour the part left open, taken by another part
-                    taken = used | named | set(recolored.values()) | {c.color for c in cubes}
-                    color = recolored.get(a.color) or next(c for c in DEFAULT_COLORS if c not in taken)
-                    recolored[a.color] = color
+                color = _open_color(a.color, own, used, used | named | {c.color for c in cubes}, recolored)
+                if color is None:
+                    raise ParseError(f"\"{f.original[:80]}\" leaves more cubes' colours open than there are colours "
+                                     "to tell them apart; name the colours, or use --model")
                 mapping[a.name] = b.cube(color)
             else:
                 mapping[a.name] = b.semantic(a.label, dict(a.faces))
@@ -413,10 +423,11 @@ def recognize_independent_parts(f: Features, b: Builder) -> bool:
     for text, head, (dx, dy) in zip(texts, heads, shifts, strict=True):
         own = {c for _, c in color_mentions(text)}
         mapping: dict[str, str] = {}
+        recolored: dict[str, str | None] = {}
         for a in head.assets:
             color = a.color
-            if a.kind == "colored_cube" and color not in own and color in used | named:  # a colour the part left open
-                color = next((c for c in DEFAULT_COLORS if c not in used | named | {x.color for x in head.assets}), None)
+            if a.kind == "colored_cube":  # a colour the part left open and another part names or holds: another
+                color = _open_color(color, own, used | named, used | named | {x.color for x in head.assets}, recolored)
                 if color is None:  # more open cubes than colours left to tell them apart
                     return False
             if a.kind == "goal_patch":
