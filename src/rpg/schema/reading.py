@@ -13,6 +13,7 @@ Frame conventions: see :mod:`rpg.domain.constants`.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from rapidfuzz import fuzz, process
@@ -573,7 +574,22 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
 _GROUP = rf"(?P<n{{i}}>\d+)\s+(?P<c{{i}}>{COLOR_RE})(?:\s+(?:blocks|cubes))?"
 
 
-STRUCTURE_PHRASES: tuple[tuple[re.Pattern, str], ...] = (
+@dataclass(frozen=True)
+class Rewrite:
+    """One rewrite of :data:`STRUCTURE_PHRASES`: ``pattern`` replaced by ``replacement`` (a
+    template or a function of the match), only in a text that describes a tower when
+    ``tower_only`` (a pyramid's or a wall's "base" is a layer, not one cube)."""
+
+    pattern: re.Pattern
+    replacement: str | Callable[[re.Match], str]
+    tower_only: bool = False
+
+
+_TOWER_TEXT_RE = re.compile(rf"\b(?:stack|stacked|{TOWER_NOUNS})\b")
+_OTHER_STRUCTURE_RE = re.compile(r"\b(?:pyramid|wall|grid|square|row|line|circle|ring)s?\b")
+
+
+STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     # "a 4-high white stack", "a 3 block tall cyan tower", "a four-story tower": the count and
     # the colour are the whole tower's ("a green 3-high tower" too)
     (re.compile(rf"\b(a|an|one|1|the)\s+({COLOR_RE})\s+(\d+)\s+{HEIGHT_WORDS}\s+({TOWER_NOUNS})\b"), r"\1 \4 of \3 \2 blocks"),
@@ -597,15 +613,13 @@ STRUCTURE_PHRASES: tuple[tuple[re.Pattern, str], ...] = (
     # middle had been read as the table's centre and a fourth cube made)
     (re.compile(rf"\s*,\s*(?:and\s+)?(?:the\s+)?({COLOR_RE})\s+(?:block\s+|cube\s+|one\s+)?(?:(?:is|goes|sits)\s+)?"
                 r"(in\s+the\s+middle|on\s+top|at\s+the\s+(?:bottom|top|base))\b(?!\s+of\b)"),
-     lambda m: m.group(0) if not re.search(rf"\b(?:stack|stacked|{TOWER_NOUNS})\b", m.string) or re.search(
-         r"\b(?:pyramid|wall|grid|row|line|circle)s?\b", m.string) else f" with {m.group(1)} {m.group(2)}"),
+     lambda m: f" with {m.group(1)} {m.group(2)}", True),
     # "a tower of four with a red base and a blue top": that cube at that end (a tower only: a
     # pyramid's or a wall's base is a layer)
     (re.compile(rf"\bwith\s+(?:a|an)\s+({COLOR_RE})\s+(top|base|bottom)\b(?!\s+(?:of|layer|row|level|tier))"
                 rf"(?:\s+and\s+(?:a|an)\s+({COLOR_RE})\s+(top|base|bottom)\b(?!\s+(?:of|layer|row|level|tier)))?"),
-     lambda m: m.group(0) if re.search(r"\b(?:pyramid|wall|grid|square|circle|row|line)s?\b", m.string) or not re.search(
-         rf"\b{TOWER_NOUNS}\b", m.string) else "with " + " and ".join(
-         f"a {c} block at the {'top' if e == 'top' else 'bottom'}" for c, e in ((m.group(1), m.group(2)), (m.group(3), m.group(4))) if c)),
+     lambda m: "with " + " and ".join(f"a {c} block at the {'top' if e == 'top' else 'bottom'}"
+                                      for c, e in ((m.group(1), m.group(2)), (m.group(3), m.group(4))) if c), True),
     # "a pyramid of three, two black on the bottom ...": the count is the structure's cubes
     (re.compile(rf"\b(pyramid|wall|row|line|circle|ring|{TOWER_NOUNS})\s+of\s+(\d+)(?=\s*(?:[,.;:!]|$|with\b))"), r"\1 of \2 blocks"),
     # "a blue tower of 3 blocks"
@@ -627,15 +641,17 @@ STRUCTURE_PHRASES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(rf"(?:\s*[,.;]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)(?:make\s+(?:sure\s+)?(?:that\s+)?)?the\s+(?:bottom|lowest|base|bottommost)"
                 rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?({COLOR_RE})"
                 rf"(?:\s+(?:block|cube|one|1))?\b"), r" with a \1 block at the bottom"),
-)
+))
 """Ways of describing a tower, rewritten to the form the readers take ("a tower of N <colour>
 blocks"): a count or colour before the structure noun is the whole structure's, a group
 after "one of" is one tower's, "the top one is white" is the top cube's colour."""
 
 
 def _structure_phrases(text: str) -> str:
-    for pattern, replacement in STRUCTURE_PHRASES:
-        text = pattern.sub(replacement, text)  # an unmatched group (no colour) expands to ""
+    tower = bool(_TOWER_TEXT_RE.search(text)) and not _OTHER_STRUCTURE_RE.search(text)
+    for rule in STRUCTURE_PHRASES:
+        if tower or not rule.tower_only:
+            text = rule.pattern.sub(rule.replacement, text)  # an unmatched group (no colour) expands to ""
     return text
 
 
