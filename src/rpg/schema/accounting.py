@@ -26,6 +26,7 @@ from rpg.schema.lexicon import (
     COLOR_RE,
     COLORS,
     COMPASS_CORNER_RE,
+    OBJECT_PREPOSITION_BEFORE,
     PAIRWISE_RELATIONS,
     VOCAB,
     names_a_role,
@@ -385,10 +386,6 @@ _NOT_SINGLE_BEFORE = re.compile(r"(?:\d+|two|three|four|five|six|seven|eight|nin
 """Words before a bare "red block" that make it no single cube ("two red block", typo'd plurals)."""
 
 
-_RELATION_BEFORE = re.compile(r"\b(?:on|onto|atop|upon|over|above|under|below|beneath|underneath|of|to|behind|beside|near|from"
-                              r"|between|by|at|in|into)\s+$")
-"""A relation's word just before a cube mention: the mention is the relation's object."""
-
 _LIST_GAP = re.compile(r"\s*[,;:]\s*(?:(?:and|then|and\s+then)\s+)?")
 """What stands between two items of a list of cubes ("red block, red block and blue block")."""
 
@@ -406,7 +403,7 @@ def _single_color_bounds(text: str) -> dict[str, int]:
     for m in SINGLE_CUBE_RE.finditer(text):
         # an item of a list ("red block, red block, blue block"), not a relation's object before a comma
         listed = (prev is not None and _LIST_GAP.fullmatch(text[prev.end():m.start()]) is not None
-                  and not _RELATION_BEFORE.search(text[:prev.start()]))
+                  and not OBJECT_PREPOSITION_BEFORE.search(text[:prev.start()]))
         prev = m
         if not m.group("det") and (_NOT_SINGLE_BEFORE.search(text[:m.start()]) or m.group("mod")):
             continue

@@ -503,6 +503,11 @@ words (:mod:`rpg.schema.structures`)."""
 HEIGHT_WORDS = r"(?:(?:blocks?|cubes?|stor(?:y|ey|ies|eys)|levels?|tiers?|layers?)(?:\s+(?:high|tall))?|high|tall)"
 
 
+OBJECT_PREPOSITION_BEFORE = re.compile(r"\b(?:on|onto|atop|upon|over|above|under|below|beneath|underneath|of|to|behind|beside|near|from"
+                              r"|between|by|at|in|into)\s+$")
+"""A relation's word just before a cube mention: the mention is the relation's object (mention
+accounting, :mod:`rpg.schema.accounting`)."""
+
 PAIRWISE_RELATIONS: tuple[str, ...] = ("left_of", "right_of", "in_front_of", "behind", "next_to", "far_from")
 """Relations between two named cubes that the relational reader states with one predicate of
 that name (:data:`rpg.domain.predicates.PREDICATES`)."""
