@@ -1605,9 +1605,16 @@ def test_another_cube_of_a_colour_is_a_cube_of_its_own():
 def test_a_sentence_that_says_nothing_of_the_task_is_dropped_not_refused():
     from rpg.schema.reading import normalize_words
 
-    assert meaning(parse("Stack the red block on the blue block. Cheers mate!")) == ["stack(blue,red)"]
-    _, _, dropped = normalize_words("Stack the red block on the blue block. Cheers mate!")
-    assert "cheers" in {w for w, _ in dropped}  # listed, not silently gone
+    said = "Stack the red block on the blue block. My supervisor wants this for the demo."
+    assert meaning(parse(said)) == ["stack(blue,red)"]
+    _, _, dropped = normalize_words(said)
+    assert {"supervisor", "demo"} <= {w for w, _ in dropped}  # listed, not silently gone
+    # a sentence that may change the task is not idle (found by the attack: each had been dropped): still refused
+    for text in ("Stack red on blue. Vice versa.", "Put the red cube on the blue cube. Beneath, I mean.",
+                 "Line up the red, green and blue cubes. Diagonal please.", "Stack the red block on the blue block. Offset.",
+                 "Stack the red block on the blue block. Lying down.", "Put the red cube on the left. Mirrored."):
+        with pytest.raises(ParseError):
+            parse(text)
     # a sentence with a reference ("it") or a negation is not idle: still refused
     with pytest.raises(ParseError, match="gracefully"):
         parse("Stack the red block on the blue block. Do it gracefully.")
@@ -1621,3 +1628,22 @@ def test_two_towers_of_unnamed_cubes_said_in_one_sentence_are_two_unordered_towe
     schema = parse("build a tower of 5 and a tower of 2")
     stacks = [p for p in schema.goal_predicate().walk() if isinstance(p, UnorderedStack)]
     assert sorted(len(p.objects) for p in stacks) == [2, 5] and len(schema.assets) == 7
+
+
+@pytest.mark.parametrize("text,expected", [
+    # label cubes listed each with its article (a fourth letter had been invented, or the order dropped)
+    ("line up the A, the B and the C from left to right", ["line[left_to_right](A,B,C)"]),
+    ("line up the 1, the 2 and the 3 from left to right", ["line[left_to_right](1,2,3)"]),
+    # a line of labels with no direction said keeps the listed order from either end, no reading direction
+    ("put the A and the B in a line", ["line[sequence](A,B)"]),
+])
+def test_label_cubes_listed_one_by_one(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", ["Put the pink cube on the orange patch and far from the orange patch",
+                                  "Put the pink cube on the orange patch, and keep it far away from the orange patch.",
+                                  "put the red block on the blue block and far from the blue block"])
+def test_touching_and_far_apart_is_a_contradiction(text):
+    with pytest.raises(ParseError, match="contradict"):
+        parse(text)

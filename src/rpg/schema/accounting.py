@@ -340,8 +340,8 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
             record.append({"mention": m.words, "kind": "matching", "consumed_by": ", ".join(f"{n} on {p}" for n, p in on)})
         elif m.kind == "superlative":
             if not any(n.kind == "count" for n in named):
-                raise UnaccountedMention(f"'{m.words}' asks for as many cubes as there are and no count "
-                                         "is given (e.g. 'a tower of 5 cubes')")
+                raise UnaccountedMention(f"'{m.words}' asks for as many cubes as there are (a quantity left to the "
+                                         "robot) and no count is given (e.g. 'a tower of 5 cubes')")
             record.append({"mention": m.words, "kind": "superlative", "consumed_by": "the count named"})
         elif m.kind == "towers":
             have = _count_towers(goal)

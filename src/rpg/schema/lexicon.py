@@ -106,7 +106,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("size", r"\b(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge|giant|mini|heavy|heavier"
              r"|heaviest|wider|narrow|thin|thick)\s+(?:(?!(?:number|digit|letter|label)\b)[a-z]+\s+)?(?:blocks?|cubes?|boxes|box|ones?"
              r"|objects?|items?|pieces?|things?)\b"
-             r"|\b(?:by|of|in\s+order\s+of)\s+(?:their\s+)?(?:size|weight)\b",
+             r"|\b(?:by|of|in\s+order\s+of)\s+(?:their\s+)?(?:size|weight)\b|\b(?:medium|[a-z]+-)sized\b",
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
     ("reference", r"\bthe\s+(?:very\s+)?(?:first|second|third|fourth|fifth|sixth|last|next|previous|former|latter)"
                   r"\s+(?:(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?))\b"
@@ -120,6 +120,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|\b(?:you|we|i)\s+(?:can\s+)?(?:see|saw|look\s+at|gaze\s+at)\b"
                   r"|\b(?:i|you|we)(?:'m|'re|\s+am|\s+are)\s+(?:holding|touching)\b|\b(?:in|from)\s+(?:my|your|the\s+robot's)\s+(?:hand|gripper)\b"
                   r"|\b(?:again|undo|restore|original(?:ly)?|previous(?:ly)?|remaining|as\s+(?:before|it\s+was|they\s+were))\b"
+                  r"|\b(?:as|like)\s+(?:last\s+time|yesterday|the\s+last\s+(?:one|time))\b"
                   r"|\bthe\s+rest\b|\bwhere\s+(?:it|they|the\s+(?:[a-z]+\s+){0,2}?(?:blocks?|cubes?|ones?))\s+(?:was|were|used\s+to\s+be|started|began)\b"
                   r"|\bthe\s+same\s+(?:order|sequence|positions?|places?|spots?)\b"
                   r"|\b(?:blocks?|cubes?|ones?|place|position|spot|patch)\s+(?:that\s+|which\s+)?(?:it|they)\s+(?:was|were|had\s+been|started)\s+(?:on|in|at)\b"
@@ -228,7 +229,7 @@ UNKNOWN_KIND_EXEMPLARS: dict[str, tuple[str, ...]] = {
     "action": tuple("rotate spin throw flip roll shake topple knock pour cut open close twist wipe sweep toss".split()),
     "object": tuple("ball cup mug bottle bowl plate peg nut rope disk cylinder sphere container drawer shelf basket "
                     "tray".split()),
-    "shape": tuple("triangle star heart hexagon oval arch staircase spiral".split()),
+    "shape": tuple("triangle star heart hexagon oval arch staircase spiral smiley".split()),
     "reference": tuple("previous earlier original former latter remaining".split()),
 }
 """Words of meaning the domain cannot express, by class (:data:`INEXPRESSIBLE`,
@@ -547,7 +548,8 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
                 rf"({COLOR_RE})\s+patch\s+and\s+the\s+({COLOR_RE})\s+patch\s*,?\s+respectively\b"),
      r"the \1 \3 \4 the \5 patch and the \2 \3 \4 the \6 patch"),
     # "keep the green cube far from the yellow cube": where it ends up, said as a state to hold
-    (re.compile(rf"(?:^|(?<=[.;!]\s))keep\s+(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|brick)\b)"), "put "),
+    (re.compile(rf"(?:^|(?<=[.;!,]\s)|(?<=\band\s))keep\s+(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|brick)\b|(?:it|them)\s+"
+                rf"(?:far|next|near|beside|behind|in\s+front|on|to\s+the|at|left|right)\b)"), "put "),
     # "the table's center", "the table's left side": the place on the table, as "the center of the table" says it
     (re.compile(r"\bthe\s+(table|workspace)'s\s+(center|centre|middle)\b"), r"the \2 of the \1"),
     (re.compile(r"\bthe\s+(table|workspace)'s\s+(left|right|front|back|far)\s+(side|edge|half|end|corner)\b"), r"the \2 \3 of the \1"),
@@ -650,6 +652,11 @@ HARMLESS_NEGATION_RE = re.compile(r"[,;(\u2013\u2014-]?\s*\b(?:nothing|none?\s+t
 """A negation about the manner, not the end state ("..., nothing fancy", "I'm not fussy", "if
 you don't mind", "thanks so much"): dropped before
 negations are refused (:func:`rpg.schema.reading.normalize`)."""
+
+IDLE_WORDS: frozenset[str] = IGNORABLE | IGNORABLE_MORE | frozenset("""
+a an the this these those is are was were be been being am i me my we our us you your he she his her for of and or but
+so do does did have has had will would can could should just very really as wants want""".split())
+"""Known words a sentence that says nothing of the task may hold (fillers and function words)."""
 
 TASK_CONTENT_RE = re.compile(
     r"\b(?:" + "|".join(COLORS) + r"|grey|\d+|blocks?|cubes?|bricks?|box(?:es)?|patch(?:es)?|pads?|mats?|tiles?|squares?"

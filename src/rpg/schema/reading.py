@@ -279,7 +279,7 @@ def _counted_list_nouns(text: str) -> str:
 
 
 BARE_LABEL_RE = re.compile(r"(\bthe|(?:\bwith|\bthen|\band|,)(?=\s+[A-Z]\b))\s+([A-Z]|\d)\b(?![-'])(?=\s*(?:[,.;:!?()]|$|\s+(?:on|onto|atop|next|to|left|right|in|at|"
-                           r"behind|beside|near|under|underneath|below|above|and|then|between|far|is|goes|should|must)\b))")
+                           r"behind|beside|near|under|underneath|below|above|and|then|between|far|is|goes|should|must|from|into|onto|as|with)\b))")
 """A label cube named by its label alone after "the" (a letter after "with", "then", "and" or a comma), before a
 relation word or punctuation ("stack the A on the B", "the 1 on the 2", "with A at the bottom,
 then B"): read as "the A block" (a letter or digit cube), never as a count or an article."""
@@ -294,6 +294,24 @@ invented)."""
 THE_TWO_PATCHES_RE = re.compile(r"\b(?:the\s+(?:two|2)|both(?:\s+the)?|both\s+of\s+the)\s+(?:goal\s+|target\s+)?patches\b")
 """Two patches referred to together without their colours ("between the two patches"): the two
 named before, when exactly two were."""
+
+
+def _idle_sentence(sentence: str, unknown: set[str]) -> bool:
+    """Whether a sentence says nothing of the task ("Cheers mate!", "My supervisor wants this for
+    the demo."): at least two words, none of them a word of the task (:data:`lexicon.TASK_CONTENT_RE`)
+    nor a known word beyond fillers and function words, and every unknown one a noun only (an
+    adverb or adjective - "Diagonally.", "Sideways.", "Vice versa." - may change what the task asks)."""
+    words = re.findall(r"[a-z][a-z'\-]*|\d+", sentence)
+    if len(words) < 2 or lexicon.TASK_CONTENT_RE.search(sentence):
+        return False
+    for w in words:
+        if w in unknown:
+            pos = lexicon.parts_of_speech(w)
+            if "NOUN" not in pos or pos & {"ADJ", "ADV"}:
+                return False
+        elif w not in lexicon.IDLE_WORDS:
+            return False
+    return True
 
 
 def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, list[tuple[str, str]]]:
@@ -488,7 +506,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         text = " ".join(w for w in text.split(" ") if re.sub(r"[.,;:!?]+$", "", w) not in gone)
     if unknown and strict:  # a sentence that says nothing of the task ("Two jobs.", "They get along, haha."): dropped
         sentences = re.split(r"(?<=[.!?;])\s+", text)
-        idle = [t for t in sentences if not lexicon.TASK_CONTENT_RE.search(t)]
+        idle = [t for t in sentences if _idle_sentence(t, set(unknown))]
         if idle and len(idle) < len(sentences):
             gone = {w for t in idle for w in re.findall(r"[a-z][a-z\-]*", t)}
             dropped += [(w, "a sentence with nothing of the task") for w in dict.fromkeys(unknown) if w in gone]
@@ -686,7 +704,8 @@ def features_colors(text: str) -> list[tuple[int, str]]:
 
 
 def explicit_labels(f: Features) -> list[str]:
-    """Labels listed ("A, B, C, D") or given as a range ("A to E", "digits 1 to 5")."""
+    """Labels listed ("A, B, C, D"), given as a range ("A to E", "digits 1 to 5"), or listed each
+    as a cube ("the A, the B and the C")."""
     m = re.search(r"\b([A-Z0-9])((?:\s*,\s*(?:and\s+)?[A-Z0-9]|\s+and\s+[A-Z0-9]){2,})\b", f.original)
     m = m if m and "," in m.group(2) else None  # "1, 2, 3 and 4", "A, B, and C"; "A and B and C" is the next rule's
     if not m and f.has("letter", "letters", "number", "numbers", "digit", "digits", "label", "labels", "faces"):
@@ -700,6 +719,13 @@ def explicit_labels(f: Features) -> list[str]:
             return [chr(c) for c in range(lo, hi + 1)]
         if lo > hi and f.has("letter", "letters", "number", "numbers", "digit", "digits", "label", "labels"):
             return [chr(c) for c in range(lo, hi - 1, -1)]  # "from 9 down to 5"
+    listed = re.search(r"\b(?:letter|digit|number)\s+'?([a-z0-9])'?\s+(?:block|cube)"
+                       r"((?:(?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:the\s+)?(?:letter|digit|number)\s+'?[a-z0-9]'?\s+(?:block|cube))+)",
+                       f.text)
+    before = re.sub(r"\bthe\s+$", "", f.text[:listed.start()]) if listed else ""
+    if listed and not lexicon.OBJECT_PREPOSITION_BEFORE.search(before):
+        # "line up the A, the B and the C": label cubes listed each with its noun (not "between the 2 and the 4")
+        return [x.upper() for x in [listed.group(1), *re.findall(r"(?:letter|digit|number)\s+'?([a-z0-9])'?", listed.group(2))]]
     return []
 
 

@@ -181,7 +181,7 @@ def disjoint_regions(f: Features, schema: TaskSchema) -> ParseError | None:
                 if not any(x0 < x1_ and x0_ < x1 and y0 < y1_ and y0_ < y1
                            for (x0, x1), (y0, y1) in region_boxes(r) for (x0_, x1_), (y0_, y1_) in region_boxes(q)):
                     return ParseError(f"read \"{f.original[:80]}\" as a task that puts {cube} in {describe_region(r)} "
-                                      f"and in {describe_region(q)}, which do not meet; say one place per cube "
+                                      f"and in {describe_region(q)}, which do not meet (a contradiction); say one place per cube "
                                       "(one sentence per structure helps), or use --model")
     return None
 

@@ -288,7 +288,7 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         cycle = ", ".join(f"{a} on {b_}" for a, b_ in r.on_edges)
         raise ParseError(f"the stacking relations of \"{f.original[:80]}\" contradict each other ({cycle}: "
                          "something would be on itself); say once which cube goes on which, or use --model")
-    _refuse_crossed_relations(f, r.rels)
+    _refuse_crossed_relations(f, r.rels, [*r.onpatch, *r.on_edges])
     _layout_relational(b, chains, r.rels, r.onpatch, placed_in)
     for ch in chains:
         b.preds.append(Stack(tuple(ch)) if len(ch) > 1 else OnTable(ch[0]))
@@ -313,7 +313,7 @@ def recognize_relational(f: Features, b: Builder) -> bool:
     return True
 
 
-def _refuse_crossed_relations(f: Features, rels: list) -> None:
+def _refuse_crossed_relations(f: Features, rels: list, touching: list[tuple[str, str]] = ()) -> None:
     """Refuse directional relations no placement satisfies: two on one pair of cubes along
     different axes or opposite ways ("left of the blue block and right of the blue block";
     "behind the red one and to its left": each relation needs the cubes level across its
@@ -332,10 +332,12 @@ def _refuse_crossed_relations(f: Features, rels: list) -> None:
         by_pair.setdefault(frozenset((q.a, q.b)), set()).add((type(q).axis, lo, hi))
         graphs.setdefault(type(q).axis, nx.DiGraph()).add_edge(lo, hi, rel=q.describe())
     near = {frozenset((q.a, q.b)) for q in rels if isinstance(q, NextTo)}
-    far = [q for q in rels if isinstance(q, FarFrom) and frozenset((q.a, q.b)) in near]
+    on = {frozenset(pair) for pair in touching if "*" not in pair}  # a cube on a patch or on another cube
+    far = [q for q in rels if isinstance(q, FarFrom) and frozenset((q.a, q.b)) in near | on]
     if far:
+        how = "next to" if frozenset((far[0].a, far[0].b)) in near else "on"
         raise ParseError(f"the relations of \"{f.original[:80]}\" contradict each other ({far[0].describe()}; "
-                         f"{far[0].a} next to {far[0].b}): cubes next to each other cannot be far apart; say one")
+                         f"{far[0].a} {how} {far[0].b}): objects that touch cannot be far apart; say one")
     crossed = next((ways for ways in by_pair.values() if len(ways) > 1), None)
     cycle = next((c for g in graphs.values() for c in [next(iter(nx.simple_cycles(g)), None)] if c), None)
     if crossed or cycle:

@@ -550,8 +550,12 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
             labels = sorted(labels, key=lambda lab: (not lab.isdigit(), lab), reverse=order[1])
         names = [b.semantic(lab) for lab in labels]
         b.place(directed_line(names, direction))
-        b.preds.append(InLine(tuple(names), axis=line_axis(direction), order=direction))
-        if reads or READ_WORDS_RE.search(f.text):  # the labels read as a word: their faces up (not said otherwise)
+        said_as_word = bool(reads or READ_WORDS_RE.search(f.text))
+        if direction_stated(f) or said_as_word or order:
+            b.preds.append(InLine(tuple(names), axis=line_axis(direction), order=direction))
+        else:  # "put the A and the B in a line": the listed order from either end, no reading direction said
+            b.preds.append(InLine(tuple(names), axis=None, order="sequence"))
+        if said_as_word:  # the labels read as a word: their faces up (not said otherwise)
             b.preds.append(Reads(tuple(names), "".join(labels), direction))
         if order:
             b.preds.append(SortedBy(tuple(names), key=order[0] if order[0] != "color" else "label", direction=direction, descending=order[1]))
