@@ -1647,3 +1647,17 @@ def test_label_cubes_listed_one_by_one(text, expected):
 def test_touching_and_far_apart_is_a_contradiction(text):
     with pytest.raises(ParseError, match="contradict"):
         parse(text)
+
+
+@pytest.mark.parametrize("text,match", [
+    # found by the attack: each had compiled with a patch nobody named, or a relation to one of two patches
+    ("put the red cube on the green patch and blue on the yellow patch, and the white cube behind the two patches",
+     "two patches at once"),
+    ("put the red cube on the green patch and the blue cube between the two patches", "Rephrase"),
+    ("put the red and blue cubes on both patches", "2 goal patches"),
+    # "together" is said: some predicate must put the cubes together (it had been dropped)
+    ("place the red and blue blocks together. the yellow block should be far away from both of them", "together"),
+])
+def test_patches_and_together_nobody_placed_are_refused(text, match):
+    with pytest.raises(ParseError, match=match):
+        parse(text)

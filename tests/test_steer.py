@@ -920,6 +920,14 @@ def test_removals_and_additions_of_cubes_among_relations(tmp_path, base, edit, w
     ("build a tower of two blue blocks and one red block on top", "make that blue one green", "names one of the task's 2 blue"),
     ("stack red, blue and green", "swap the colours", "names two colours"),
     ("Stack a red cube on a yellow cube", "and paint it beige", "palette"),  # a colour, not an action
+    # found by the attack: a count from no end, several places at once, the wrong axis, a line's "top" (each had been
+    # read silently: from the bottom, the first only, across the axis, at the line's right end)
+    ("Build a tower of red, blue and white from bottom to top", "swap the 1st and 2nd from the top", "counted from an end nobody"),
+    ("Build a tower of red, blue, green and yellow from bottom to top", "make the second and third from the bottom white",
+     "several cubes"),
+    ("Build a tower of red, blue, green and yellow from bottom to top", "remove the 2nd from the left", "count from its bottom"),
+    ("Make a row of red, blue, green from left to right", "make the 2nd one from the bottom white", "count from its left"),
+    ("Make a row of red, blue, green from left to right", "put a yellow one on top", "no top or bottom"),
     ("Put two pink cubes in a row", "make that 3 green cubes", "has no place in the change"),
 ])
 def test_edits_refused_for_their_reason(tmp_path, base, edit, match):

@@ -66,6 +66,12 @@ RELATION_WORDS: tuple[tuple[str, str], ...] = tuple(
 ``phrases`` and ``loose_phrases`` with itself and its ``carried_by`` (:mod:`rpg.domain.predicates`)."""
 
 
+TOGETHER_RE = re.compile(r"\btogether\b")
+"""Cubes said to go together: some goal predicate must put them side by side, on each other or in one place."""
+
+THE_PATCHES_RE = re.compile(r"(?:\b(?:the|both|all)\s+(?:(?P<n>\d+)\s+)?|\b(?P<n2>\d+)\s+)(?:goal\s+|target\s+)?patches\b")
+"""Patches named together without their colours ("the two patches"): the task must have that many."""
+
 WALL_RE = re.compile(r"\bwalls?\b")
 """A wall: a grid one row deep and several layers high (:func:`rpg.schema.readers.structures.recognize_wall`),
 carried only by a :class:`~rpg.domain.predicates.Grid`."""
@@ -176,6 +182,11 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
         m = re.search(words, text)
         if m:
             out.append(Mention(m.group(0), "relation", predicates=tuple(kinds.split())))
+    if TOGETHER_RE.search(text):  # "place the red and blue blocks together": side by side, stacked, or in one group
+        out.append(Mention("together", "relation", predicates=("next_to", "stack", "on", "on_patch", "in_line", "grid",
+                                                               "pyramid", "in_region", "piles")))
+    for m in THE_PATCHES_RE.finditer(text):  # "behind the two patches": that many patches, whatever their colours
+        out.append(Mention(m.group(0), "patches", count=int(m.group("n") or m.group("n2") or 2)))
     for m in re.finditer(STRUCTURE_RE, text):
         if re.search(r"\b(?:the|that|this|its|their)\s+(?:[a-z]+\s+)?$", text[:m.start()]):
             continue  # "push the pile of red blocks": a reference to cubes, not a structure to build
@@ -287,6 +298,11 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
             if not patches:
                 raise UnaccountedMention(f"'{m.words}' names a goal patch and the task read has none")
             record.append({"mention": m.words, "kind": "patch", "consumed_by": "goal patch " + ", ".join(sorted(patches))})
+        elif m.kind == "patches":
+            if sum(patch_count.values()) < m.count:
+                raise UnaccountedMention(f"'{m.words}' names {m.count} goal patches but the task read has "
+                                         f"{sum(patch_count.values())}")
+            record.append({"mention": m.words, "kind": "patch", "consumed_by": "goal patches " + ", ".join(sorted(patches))})
         elif m.kind == "patch":
             if m.color not in patches:
                 raise UnaccountedMention(f"the {m.words} has no part in the task read")

@@ -291,9 +291,10 @@ it, whose colour it takes; refused when several were named (a second, gray patch
 invented)."""
 
 
-THE_TWO_PATCHES_RE = re.compile(r"\b(?:the\s+(?:two|2)|both(?:\s+the)?|both\s+of\s+the)\s+(?:goal\s+|target\s+)?patches\b")
-"""Two patches referred to together without their colours ("between the two patches"): the two
-named before, when exactly two were."""
+THE_TWO_PATCHES_RE = re.compile(r"(?<=\bbetween\s)\s*(?:the\s+(?:two|2)|both(?:\s+the)?|both\s+of\s+the)\s+(?:goal\s+|target\s+)?patches\b")
+"""Two patches referred to together without their colours after "between" ("between the two
+patches"): the two named before, when exactly two were (other relations to two patches are not
+distributed: "behind the two patches" stays refused)."""
 
 
 def _idle_sentence(sentence: str, unknown: set[str]) -> bool:
@@ -575,6 +576,11 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                              "named before it); say its colour (e.g. \"the green patch\")")
         if before:
             text = f"{text[:m.start()]}{m.group(1)} {before[0]} patch{text[m.end():]}"
+    for m in re.finditer(r"\b(?:the\s+(?:two|2)|both(?:\s+(?:of\s+)?the)?)\s+(?:goal\s+|target\s+)?patches\b", text):
+        if not re.search(r"\bbetween\s+$", text[:m.start()]) and re.search(
+                rf"\b(?:{COLOR_RE})\s+(?:goal\s+|target\s+)?patch\b", text[:m.start()]):
+            raise ParseError(f"'{m.group(0)}' in \"{original[:80]}\" relates a cube to two patches at once; say one "
+                             "patch (e.g. \"behind the green patch\"), or use --model")
     for m in reversed(list(THE_TWO_PATCHES_RE.finditer(text))):  # "between the two patches": the two named before
         before = list(dict.fromkeys(re.findall(rf"\b({COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|square|area)\b",
                                                text[:m.start()])))

@@ -260,9 +260,14 @@ def _selector(text: str) -> dict | None:
         return {"end": "bottom" if ends.group(1) in ("bottom", "first", "lowest") else "top", "n": int(ends.group(2))}
     nth = re.search(r"\b(?:(\d+)(?:st|nd|rd|th)|(second|third|fourth|fifth|sixth))\b(?:\s+(?:one|block|cube))?"
                     r"(?:\s+from\s+the\s+(bottom|top|left|right|front|back))?", text)
+    if nth and not (nth.group(1) or nth.group(3)):
+        nth = None  # "the second one": the place in the structure's own order (below)
     if nth:  # "the 2nd one from the bottom": a place counted from an end
+        if len(re.findall(r"\b(?:\d+(?:st|nd|rd|th)|first|second|third|fourth|fifth|sixth|last)\b", text)) > 1:
+            raise SteerError(f"'{text}' names several cubes by their places; change one cube per edit "
+                             "(e.g. \"make the 2nd from the bottom white\")")
         k = int(nth.group(1)) if nth.group(1) else ("second", "third", "fourth", "fifth", "sixth").index(nth.group(2)) + 2
-        return {"nth": k, "from": nth.group(3) or "bottom"}
+        return {"nth": k, "from": nth.group(3)}
     some = re.search(r"\b(\d+)\s+of\s+(?:them|the\s+(?:[a-z]+\s+)?(?:blocks|cubes|ones))\b", text)
     if some:
         return {"some": int(some.group(1))}
@@ -718,10 +723,14 @@ def _indices(spec: TaskSpec, sel: dict, anchors: frozenset[str] = frozenset()) -
         return list(range(n - k, n))
     if "nth" in sel:
         k, end = sel["nth"], sel["from"]
-        if spec.kind.layered or not _orders_cubes(spec) or not 0 < k <= n or end not in ("bottom", "top", "left", "right"):
-            raise SteerError(f"the {k}th cube from the {end} of a {spec.structure} of {n} cubes"
+        along = ("bottom", "top") if spec.structure in ANCHORED_KINDS else ("left", "right")  # the structure's own ends
+        if spec.kind.layered or not _orders_cubes(spec) or not 0 < k <= n or end not in along or (
+                spec.structure not in ANCHORED_KINDS and spec.direction not in ("left_to_right", "right_to_left")):
+            said = f"cube {k} counted from the {end}" if end else f"cube {k} counted from an end nobody named"
+            raise SteerError(f"the {said} of a {spec.structure} of {n} cubes"
                              + ("" if _orders_cubes(spec) else " whose goal gives no cube a place")
-                             + " is not a cube the builtin steering can name; say the whole order (e.g. \"from bottom to top: ...\")")
+                             + f" is not a cube the builtin steering can name; count from its {' or '.join(along)} "
+                             "(e.g. \"the 2nd from the " + along[0] + "\"), or say the whole order")
         return [k - 1] if end in ("bottom", "left") else [n - k]
     if "layer" in sel and spec.kind.layered:
         return _layer_indices(spec, sel["layer"])
@@ -983,6 +992,10 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
                 raise SteerError(f"a cube added beside a {spec.structure} ({p['side']!r}) is not part of it, which the "
                                  "builtin steering cannot place (it adds cubes to the structure itself); state the "
                                  "whole new task in the edit, or use --model")
+            if spec.structure not in ANCHORED_KINDS and re.search(r"\b(?:top|bottom|base|under|underneath|beneath|below|above)\b",
+                                                                p.get("end") or ""):
+                raise SteerError(f"'{p['end']}': a {spec.structure} has no top or bottom to add a cube at (its cubes stand side by "
+                                 "side); say which end (e.g. \"at the right end\"), or state the whole new task")
             anchorable = spec.structure in ANCHORED_KINDS and spec.direction is None and p.get("at") not in anchors
             if p.get("end") and spec.kind.spells and not _orders_cubes(spec) and not anchorable:
                 raise SteerError(f"'{p['end']}': the {spec.structure}'s goal gives no cube a place (any order holds), so a cube "

@@ -81,7 +81,7 @@ class RelationalReading:
     def obj(self, mn: Mention, i: int = 0) -> str:
         """The object a mention names: its patch, or its ``i``-th cube (made in the builder on first mention)."""
         if mn.patch:
-            key = ("patch", mn.color, mn.shape) + ((i,) if i and mn.count > 1 else ())  # "the two yellow patches"
+            key = ("patch", mn.color, mn.shape) + ((i,) if i and mn.count > 1 and mn.color else ())  # "the two yellow patches"
             if key not in self.patch_names:
                 self.patch_names[key] = self.b.patch(mn.color or DEFAULT_PATCH_COLOR, mn.shape)
             return self.patch_names[key]
