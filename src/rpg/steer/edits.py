@@ -260,12 +260,12 @@ def _selector(text: str) -> dict | None:
         return {"end": "bottom" if ends.group(1) in ("bottom", "first", "lowest") else "top", "n": int(ends.group(2))}
     nth = re.search(r"\b(?:(\d+)(?:st|nd|rd|th)|(second|third|fourth|fifth|sixth))\b(?:\s+(?:one|block|cube))?"
                     r"(?:\s+from\s+the\s+(bottom|top|left|right|front|back))?", text)
+    if len(re.findall(r"\b(?:\d+(?:st|nd|rd|th)|first|second|third|fourth|fifth|sixth|last)\b", text)) > 1:
+        raise SteerError(f"'{text}' names several cubes by their places; change one cube per edit "
+                         "(e.g. \"make the 2nd from the bottom white\")")
     if nth and not (nth.group(1) or nth.group(3)):
         nth = None  # "the second one": the place in the structure's own order (below)
     if nth:  # "the 2nd one from the bottom": a place counted from an end
-        if len(re.findall(r"\b(?:\d+(?:st|nd|rd|th)|first|second|third|fourth|fifth|sixth|last)\b", text)) > 1:
-            raise SteerError(f"'{text}' names several cubes by their places; change one cube per edit "
-                             "(e.g. \"make the 2nd from the bottom white\")")
         k = int(nth.group(1)) if nth.group(1) else ("second", "third", "fourth", "fifth", "sixth").index(nth.group(2)) + 2
         return {"nth": k, "from": nth.group(3)}
     some = re.search(r"\b(\d+)\s+of\s+(?:them|the\s+(?:[a-z]+\s+)?(?:blocks|cubes|ones))\b", text)
