@@ -1661,3 +1661,22 @@ def test_touching_and_far_apart_is_a_contradiction(text):
 def test_patches_and_together_nobody_placed_are_refused(text, match):
     with pytest.raises(ParseError, match=match):
         parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    # found by the attack: layers said one after another, a layer's "all", a tower "at the back of" a cube
+    ("pyramid with 3 blue at the base then 2 red then 1 yellow", ["pyramid(blue,blue,blue|red,red|yellow)"]),
+    ("a wall of 6 blocks, 3 wide, top row all purple", ["wall(blue,green,red|purple,purple,purple)"]),
+    ("build a tower of red and blue at the back of the green cube", ["behind(blue,green)", "behind(red,green)", "stack(red,blue)"]),
+])
+def test_layers_and_places_the_attack_found(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "a pyramid of 3 blocks: red and blue on the bottom, all purple",  # every cube purple, and some not
+    "put the blue cube down, and a tower of 3 red cubes on the left",  # a green cube had been made up for the tower
+])
+def test_structures_with_colours_nobody_said_are_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)

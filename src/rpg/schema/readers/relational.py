@@ -267,6 +267,8 @@ def recognize_relational(f: Features, b: Builder) -> bool:
             # not the colours of cubes placed beside it
             cols = [c for c in colors_for(n, f, prefer=named) if (c, None) not in r.beside]
             cols += [c for c in DEFAULT_COLORS if c not in cols and (c, None) not in r.subjects][: n - len(cols)]
+            if named and any(c not in named for c in cols[:n]):
+                return False  # colours nobody named made up for a stack of cubes whose colours are said
             names = [r.obj(Mention(0, 0, c, None, 1)) for c in cols[:n]]
         r.on_edges += [(u, lo) for lo, u in zip(names, names[1:], strict=False)]
     if r.on_structure or r.by_structure:

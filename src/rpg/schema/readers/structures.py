@@ -67,6 +67,9 @@ from rpg.schema.readers.common import (
 from rpg.schema.readers.registry import reader
 from rpg.schema.reading import Features, ParseError, canon_color, explicit_labels, mark_regions
 
+THEN_LAYER_RE = re.compile(rf"\bthen\s+(?:(?P<n>\d+)\s+)?(?P<c>{COLOR_RE})\b")
+"""A layer said after the one below it ("..., then 2 red, then 1 yellow")."""
+
 
 def layer_roles(f: Features, levels: int) -> dict[str, tuple[int, int | None]]:
     """The colours the text gives a layer of a structure ``levels`` layers high ("yellow on
@@ -95,6 +98,12 @@ def layer_roles(f: Features, levels: int) -> dict[str, tuple[int, int | None]]:
             if color in out and out[color][0] != k:
                 raise ParseError(f"the {color} cubes are given two layers in \"{f.original.strip()}\"")
             out[color] = (k, n)
+    if out and {lv for lv, _ in out.values()} == {0}:  # "3 blue at the base then 2 red then 1 yellow": layer by layer
+        for k, m in enumerate(THEN_LAYER_RE.finditer(f.text), start=1):
+            color = canon_color(m.group("c"))
+            if k >= levels or color in out:
+                break
+            out[color] = (k, int(m.group("n")) if m.group("n") else None)
     return out
 
 
@@ -130,6 +139,12 @@ def fill_layers(f: Features, b: Builder, sizes: list[int], roles: dict[str, tupl
     groups = [(n, c) for n, c in counted_groups(f) if c not in roles]
     listed = [c for c in dict.fromkeys(f.color_list()) if c not in roles]
     every = ALL_ONE_COLOR_RE.search(f.text)
+    if every and re.search(r"\b(?:top|bottom|base|middle|upper|lower|first|second|third)(?:\s+(?:row|layer|level|tier))?\s*$",
+                           f.text[:every.start()]):
+        every = None  # "top row all purple": a layer's colour (a role), not every cube's
+    if every and any(c != canon_color(every.group("c")) for c in roles):
+        raise ParseError(f"\"{f.original[:80]}\" gives every cube one colour ('{every.group(0)}') and some cubes "
+                         "another: a contradiction; say the colours once")
     if every and not listed:  # "four purple cubes at the bottom, then three, ..., all purple"
         listed = [canon_color(every.group("c"))]
     if groups and sum(n for n, _ in groups) == free:
