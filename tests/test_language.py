@@ -1680,3 +1680,17 @@ def test_layers_and_places_the_attack_found(text, expected):
 def test_structures_with_colours_nobody_said_are_refused(text):
     with pytest.raises(ParseError):
         parse(text)
+
+
+@pytest.mark.parametrize("text", ["Build a tower of red, blue and green. Reverse the order.",
+                                  "Line up red, green and blue from left to right. Backwards.",
+                                  "Stack red on blue. Then flip it."])
+def test_a_last_sentence_that_turns_the_order_around_is_refused(text):
+    """Found by the attack: each compiled in the order the speaker had just taken back."""
+    with pytest.raises(ParseError, match="turns around"):
+        parse(text)
+
+
+def test_a_word_spelled_backwards_reads_reversed():
+    assert meaning(parse("spell CAT backwards")) == ["line[left_to_right](T,A,C)",
+                                                       "reads(T,A,C;direction=left_to_right,face=up,text=TAC)"]

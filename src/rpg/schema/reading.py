@@ -291,6 +291,15 @@ it, whose colour it takes; refused when several were named (a second, gray patch
 invented)."""
 
 
+LATE_REVERSAL_RE = re.compile(
+    r"[.!;]\s+(?P<said>(?:(?:then|actually|now|and|oh|wait|sorry)\s*,?\s+)*(?:reverse(?:d)?(?:\s+(?:it|them|that|the\s+order))?"
+    r"|backwards?|in\s+reverse|the\s+other\s+way\s+(?:round|around)|(?:the\s+)?other\s+way\s+(?:round|around)|vice\s+versa"
+    r"|flip(?:ped)?(?:\s+(?:it|them|that))?|mirror(?:ed)?(?:\s+(?:it|them|that))?|(?:in\s+)?(?:the\s+)?opposite\s+order"
+    r"|upside[\s-]+down))\s*[.!]?\s*$")
+"""A last sentence that only turns around what was said before ("Stack red on blue. Vice versa.",
+"Build a tower of red, blue and green. Reverse the order."): refused, not dropped."""
+
+
 THE_TWO_PATCHES_RE = re.compile(r"(?<=\bbetween\s)\s*(?:the\s+(?:two|2)|both(?:\s+the)?|both\s+of\s+the)\s+(?:goal\s+|target\s+)?patches\b")
 """Two patches referred to together without their colours after "between" ("between the two
 patches"): the two named before, when exactly two were (other relations to two patches are not
@@ -576,6 +585,10 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                              "named before it); say its colour (e.g. \"the green patch\")")
         if before:
             text = f"{text[:m.start()]}{m.group(1)} {before[0]} patch{text[m.end():]}"
+    late = LATE_REVERSAL_RE.search(text)
+    if late:  # "Stack red on blue. Vice versa.": a later sentence takes back the order said before
+        raise ParseError(f"'{late.group('said').strip()}' in \"{original[:80]}\" turns around what the sentence before it "
+                         "said; say the final order once (e.g. \"stack blue on red\"), or use --model")
     for m in re.finditer(r"\b(?:the\s+(?:two|2)|both(?:\s+(?:of\s+)?the)?)\s+(?:goal\s+|target\s+)?patches\b", text):
         if not re.search(r"\bbetween\s+$", text[:m.start()]) and re.search(
                 rf"\b(?:{COLOR_RE})\s+(?:goal\s+|target\s+)?patch\b", text[:m.start()]):

@@ -80,6 +80,8 @@ def recognize_spell(f: Features, b: Builder) -> bool:
     word = spelled_word(f)
     if word is None or not f.has("spell", "spells", "spelling", "word", "read", "reads"):
         return False
+    if re.search(r"\b(?:backwards?|reversed|in\s+reverse(?:\s+order)?)\b", f.text):
+        word = word[::-1]  # "spell CAT backwards": the cubes read TAC
     names = [b.semantic(ch) for ch in word]
     if f.has("tower", "stack", "vertical", "vertically"):
         b.place(stack_layout(list(reversed(names)), C.WORKSPACE_CENTER))
