@@ -26,9 +26,9 @@ class BuildTowerFromBottomToTopRed0e89c5Task(BlockTask):
     NAME = 'build_tower_from_bottom_to_top_red_0e89c5'
     INSTRUCTION = "Build a tower from bottom to top: red, blue, yellow, letter 'A'"
     PARAPHRASES = (
-        'Tower bottom to top: red, blue, yellow, A. Put the A cube on top of the yellow cube. The goal is a stack. Put the blue cube on top of the red cube. Put the yellow cube on top of the blue cube.',
-        'Goal: tower bottom to top: red, blue, yellow, A. Put the A cube on top of the yellow cube. The goal is a stack. Put the blue cube on top of the red cube. Put the yellow cube on top of the blue cube.',
-        'Arrange the cubes so that the final scene shows tower bottom to top: red, blue, yellow, A. Put the A cube on top of the yellow cube. The goal is a stack. Put the blue cube on top of the red cube. Put the yellow cube on top of the blue cube.',
+        'Tower bottom to top: red, blue, yellow, A.',
+        'Goal: tower bottom to top: red, blue, yellow, A.',
+        'Arrange the cubes so that the final scene shows tower bottom to top: red, blue, yellow, A.',
     )
 
     def assets(self):

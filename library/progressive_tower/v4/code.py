@@ -26,9 +26,9 @@ class BuildTowerFromBottomToTopYellow1f623aTask(BlockTask):
     NAME = 'build_tower_from_bottom_to_top_yellow_1f623a'
     INSTRUCTION = "Build a tower from bottom to top: yellow, blue, red, letter 'A'"
     PARAPHRASES = (
-        'Tower bottom to top: yellow, blue, red, A. Put the A cube on top of the red cube. The goal is a stack. Put the blue cube on top of the yellow cube. Put the red cube on top of the blue cube.',
-        'Goal: tower bottom to top: yellow, blue, red, A. Put the A cube on top of the red cube. The goal is a stack. Put the blue cube on top of the yellow cube. Put the red cube on top of the blue cube.',
-        'Arrange the cubes so that the final scene shows tower bottom to top: yellow, blue, red, A. Put the A cube on top of the red cube. The goal is a stack. Put the blue cube on top of the yellow cube. Put the red cube on top of the blue cube.',
+        'Tower bottom to top: yellow, blue, red, A.',
+        'Goal: tower bottom to top: yellow, blue, red, A.',
+        'Arrange the cubes so that the final scene shows tower bottom to top: yellow, blue, red, A.',
     )
 
     def assets(self):

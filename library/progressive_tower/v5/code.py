@@ -26,9 +26,9 @@ class BuildTowerFromBottomToTopPurple74b3ccTask(BlockTask):
     NAME = 'build_tower_from_bottom_to_top_purple_74b3cc'
     INSTRUCTION = "Build a tower from bottom to top: purple, blue, red, letter 'A'"
     PARAPHRASES = (
-        'Tower bottom to top: purple, blue, red, A. Put the A cube on top of the red cube. The goal is a stack. Put the blue cube on top of the purple cube. Put the red cube on top of the blue cube.',
-        'Goal: tower bottom to top: purple, blue, red, A. Put the A cube on top of the red cube. The goal is a stack. Put the blue cube on top of the purple cube. Put the red cube on top of the blue cube.',
-        'Arrange the cubes so that the final scene shows tower bottom to top: purple, blue, red, A. Put the A cube on top of the red cube. The goal is a stack. Put the blue cube on top of the purple cube. Put the red cube on top of the blue cube.',
+        'Tower bottom to top: purple, blue, red, A.',
+        'Goal: tower bottom to top: purple, blue, red, A.',
+        'Arrange the cubes so that the final scene shows tower bottom to top: purple, blue, red, A.',
     )
 
     def assets(self):
