@@ -54,7 +54,8 @@ REASON_WORDS = {
     "negation": r"negat",
     "quantity": r"quantit|distance|amount|measure",
     "reference": r"refer|earlier|previous|current (?:scene|state)|history|before",
-    "condition": r"condition",
+    "condition": r"condition|about time",  # "wait ten seconds, then ...": a goal bounded by time is a condition too
+    "time": r"about time|clock|duration",
     "contradiction": r"contradict|cannot (?:both|end in)",
     "colour": r"unknown colou?r|not (?:a|one of the) colou?rs?|colou?r \S+ is not|palette",
 }
