@@ -1694,3 +1694,15 @@ def test_a_last_sentence_that_turns_the_order_around_is_refused(text):
 def test_a_word_spelled_backwards_reads_reversed():
     assert meaning(parse("spell CAT backwards")) == ["line[left_to_right](T,A,C)",
                                                        "reads(T,A,C;direction=left_to_right,face=up,text=TAC)"]
+
+
+@pytest.mark.parametrize("text,expected", [
+    # found by the attack: a corner said without "corner", "in back", a place after the second of two structures
+    # (each place had been dropped, or given to both structures)
+    ("a tower of 3 blocks at the front right: red bottom, blue middle, green top", ["stack(red,blue,green)@front_right"]),
+    ("stack red on blue, front left", ["stack(blue,red)@front_left"]),
+    ("build a tower of 2 red blocks in back", ["stack(red,red)@back"]),
+    ("a tower of 3 red blocks and a line of 3 blue blocks on the right", ["line(blue,blue,blue)@right", "stack(red,red,red)"]),
+])
+def test_places_the_attack_found_dropped(text, expected):
+    assert meaning(parse(text)) == expected

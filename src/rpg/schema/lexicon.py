@@ -557,6 +557,7 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"\b(?:(?:at|in)\s+the\s+(?:midpoint|middle|center|centre)|centrally|midway|cent(?:er|r)ed)\s+(?=between\b)"), ""),
     (re.compile(r"\bcentrally\b"), "at the center of the table"),  # "place red and green centrally"
     (re.compile(r"\binfront\b"), "in front"),  # "infront of the green patch"
+    (re.compile(r"\bin\s+back\b(?!\s+of\b)"), "at the back"),  # "a tower of 2 red blocks in back"
     # "at the back of the green cube": behind it (a cube's back, not the table's)
     (re.compile(rf"\b(?:at|to)\s+the\s+back\s+of\s+(?=(?:the\s+)?(?:(?:{COLOR_RE})\s+(?:block|cube|one|patch)|it\b|them\b))"), "behind "),
     # "a tower whose base is blue and whose top is yellow": the ends said as the tower's own

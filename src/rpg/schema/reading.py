@@ -844,7 +844,8 @@ def mark_regions(text: str) -> str:
         word = m.group("lr") or m.group("lr2")
         bare_center = (word in ("center", "centre", "middle") and m.group(0).split()[0] in ("in", "at", "to", "into")  # "in the center"
                        and not names_a_role(m.string[:m.start()], m.string))
-        if not (m.group("tail") or corner or edge or bare_center or _table_side(m) or _heading_side(m)
+        two_sides = bool(m.group("fb")) and m.group("lr") in ("left", "right")  # "at the front right": a corner of the table
+        if not (m.group("tail") or corner or edge or bare_center or two_sides or _table_side(m) or _heading_side(m)
                 or _structure_side(m)):
             return m.group(0)
         fb = m.group("fb") or ("far" if m.group("far") == "far" and corner else None)  # "the far left corner"

@@ -225,6 +225,8 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
     head = heads[0]
     if re.search(rf"\bwith\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:block|cube|one))?\s*$", part):
         return False  # "line up yellow and blue with blue on the left": the cube's end of the line, not the line's place
+    if len(re.findall(rf"\b(?:a|an|one|1|another)\s+(?:[\w-]+\s+){{0,2}}?{_WHOLE_NOUN}", part)) > 1:
+        return False  # "a tower of 3 red blocks and a line of 3 blue blocks on the right": the place of the last one only
     if (region not in C.REGION_NAMES or len(head.assets) < 2 or head.initial_state.structures
             or any(a.kind == "goal_patch" for a in head.assets)
             or any(isinstance(p, InRegion) or p.name in (*PAIRWISE_RELATIONS, "between") for p in head.goal_predicate().walk())):
