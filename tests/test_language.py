@@ -1706,3 +1706,14 @@ def test_a_word_spelled_backwards_reads_reversed():
 ])
 def test_places_the_attack_found_dropped(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # two cubes at opposite sides, and a structure's place said last after a comma (each had been refused)
+    ("put the red cube at the front and the blue cube at the back", ["in_region(blue,back)", "in_region(red,front)"]),
+    ("build a wall: 3 red on the bottom, 3 blue on top, at the back", ["wall(red,red,red|blue,blue,blue)@back"]),
+    ("I'd like the yellow cube in the front-left corner and the cyan cube in the back-right corner",
+     ["in_region(cyan,back_right)", "in_region(yellow,front_left)"]),
+])
+def test_sides_said_of_two_cubes_or_after_a_structure(text, expected):
+    assert meaning(parse(text)) == expected

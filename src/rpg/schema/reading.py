@@ -437,6 +437,10 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         if re.search(rf"\b{part}s?\s+of\s+the\s+(?:table|workspace)\b", text) or bare in ({"left", "right"}, {"front", "back"}):
             text = re.sub(rf"\b(on|at|to|in|into|near|along)\s+the\s+(left|right|front|back)\s+{part}\b(?!\s+of\b)",
                           rf"\1 the \2 {part} of the table", text)
+    # "put the red cube at the front and the blue cube at the back": two cubes, each at one of two opposite sides
+    said = rf"\b((?:the|a)\s+(?:{COLOR_RE})\s+(?:cube|block)\s+(?:at|on|to|in)\s+the)\s+(left|right|front|back)(?![\w-])(?!\s+(?:of|side|half|edge|end|corner|part|left|right)\b)"
+    if {m.group(2) for m in re.finditer(said, text)} in ({"left", "right"}, {"front", "back"}) and len(re.findall(said, text)) == 2:
+        text = re.sub(said, r"\1 \2 of the table", text)
     # "with yellow as the base": a cube of that colour at that end (read as a tower of yellow cubes)
     text = re.sub(rf"\bwith\s+({COLOR_RE})\s+(as|at|on)\s+(the\s+)?(base|bottom|top)\b", r"with a \1 block \2 \3\4", text)
     text = lexicon.LAYER_SYNONYM_RE.sub(lambda m: "bottom " if m.group("low") else "top ", text)
@@ -827,10 +831,17 @@ def _structure_side(m: re.Match) -> bool:
     """Whether a bare side ("at the front", "on the left") says where a structure the text is
     describing stands ("set up a line of 4 gray cubes at the front and a circle of 5 orange cubes
     at the back"): a new structure has no sides of its own to be relative to."""
-    return (m.group("part") == "" and m.group(0).split()[0] in ("on", "at", "in", "to")
+    if not (m.group("part") == "" and m.group(0).split()[0] in ("on", "at", "in", "to")
             and (m.group("fb") or m.group("lr2")) in ("front", "back", "rear", "left", "right") and not m.group("lr")
-            and NEW_STRUCTURE_BEFORE_RE.search(m.string[:m.start()]) is not None
-            and not names_a_role(m.string[:m.start()], m.string))
+            and not names_a_role(m.string[:m.start()], m.string)):
+        return False
+    before = m.string[:m.start()]
+    # "a line of 4 gray cubes at the front"; "a wall: 3 red on the bottom, 3 blue on top, at the back" (its last words)
+    return NEW_STRUCTURE_BEFORE_RE.search(before) is not None or (
+        re.search(r",\s*$", before) is not None and re.fullmatch(r"\s*[.!]?\s*", m.string[m.end():]) is not None
+        and re.match(r"\s*(?:(?:build|make|create|set\s+up|form)\s+)?(?:a|an|1)\s+(?:[\w-]+\s+){0,2}?"
+                     r"(?:tower|stack|pyramid|wall|line|row|grid|circle|ring|column)\b", before) is not None
+        and len(re.findall(r"\b(?:tower|stack|pyramid|wall|line|row|grid|circle|ring|column)s?\b", before)) == 1)
 
 
 def mark_regions(text: str) -> str:
