@@ -439,7 +439,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                           rf"\1 the \2 {part} of the table", text)
     # "put the red cube at the front and the blue cube at the back": two cubes, each at one of two opposite sides
     said = rf"\b((?:the|a)\s+(?:{COLOR_RE})\s+(?:cube|block)\s+(?:at|on|to|in)\s+the)\s+(left|right|front|back)(?![\w-])(?!\s+(?:of|side|half|edge|end|corner|part|left|right)\b)"
-    if {m.group(2) for m in re.finditer(said, text)} in ({"left", "right"}, {"front", "back"}) and len(re.findall(said, text)) == 2:
+    if {m.group(2) for m in re.finditer(said, text)} == {"front", "back"} and len(re.findall(said, text)) == 2:
+        # (bare "on the left ... on the right" stays a relation between the two cubes, the weaker reading)
         text = re.sub(said, r"\1 \2 of the table", text)
     # "with yellow as the base": a cube of that colour at that end (read as a tower of yellow cubes)
     text = re.sub(rf"\bwith\s+({COLOR_RE})\s+(as|at|on)\s+(the\s+)?(base|bottom|top)\b", r"with a \1 block \2 \3\4", text)
