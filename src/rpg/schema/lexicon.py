@@ -668,9 +668,9 @@ TASK_CONTENT_RE = re.compile(
     r"|top|bottom|base|next|near|beside|between|far|apart|on|onto|under|above|below|table|put|place|move|build|make|arrange"
     r"|set|spell|sort|order|one|two|three|four|five|six|seven|eight|nine|ten|it|them|each|every|all|both)\b")
 """Words that make a sentence part of the task: cubes, colours, counts, structures, places,
-relations, placement verbs and references.  A sentence with none of them ("Two jobs." once
-counts are digits is not one; "They get along, haha.") says nothing of the task: its unknown
-words are no reason to refuse (:func:`rpg.schema.reading.normalize_words` drops it)."""
+relations, placement verbs and references.  A sentence with none of them, only fillers and
+unknown nouns ("My supervisor wants this for the demo.") says nothing of the task: its unknown
+words are no reason to refuse (:func:`rpg.schema.reading._idle_sentence`)."""
 
 ORDER_WORDS = re.compile(r"\b(rainbow|alternat\w*|(?<!any\s)order\w*|sequence|gradient|sort\w*|ascending|descending|"
                          r"bottom|base|first|last|then|lightest|darkest|top(?! of (each other|one another)))\b")

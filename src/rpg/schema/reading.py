@@ -307,8 +307,8 @@ distributed: "behind the two patches" stays refused)."""
 
 
 def _idle_sentence(sentence: str, unknown: set[str]) -> bool:
-    """Whether a sentence says nothing of the task ("Cheers mate!", "My supervisor wants this for
-    the demo."): at least two words, none of them a word of the task (:data:`lexicon.TASK_CONTENT_RE`)
+    """Whether a sentence says nothing of the task ("My supervisor wants this for the demo."): at
+    least two words, none of them a word of the task (:data:`lexicon.TASK_CONTENT_RE`)
     nor a known word beyond fillers and function words, and every unknown one a noun only (an
     adverb or adjective - "Diagonally.", "Sideways.", "Vice versa." - may change what the task asks)."""
     words = re.findall(r"[a-z][a-z'\-]*|\d+", sentence)
@@ -519,7 +519,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         gone = {w for w, _ in dropped}
         unknown = [w for w in unknown if w not in gone]
         text = " ".join(w for w in text.split(" ") if re.sub(r"[.,;:!?]+$", "", w) not in gone)
-    if unknown and strict:  # a sentence that says nothing of the task ("Two jobs.", "They get along, haha."): dropped
+    if unknown and strict:  # a sentence that says nothing of the task ("My supervisor wants this for the demo."): dropped
         sentences = re.split(r"(?<=[.!?;])\s+", text)
         idle = [t for t in sentences if _idle_sentence(t, set(unknown))]
         if idle and len(idle) < len(sentences):
