@@ -656,6 +656,13 @@ HARMLESS_NEGATION_RE = re.compile(r"[,;(\u2013\u2014-]?\s*\b(?:nothing|none?\s+t
 you don't mind", "thanks so much"): dropped before
 negations are refused (:func:`rpg.schema.reading.normalize`)."""
 
+STRUCTURE_NOUN = "(?:" + "|".join(sorted({w for k in STRUCTURE_KINDS.values() for w in (*k.words, *k.described_by)}
+                                           - {"square", "pile"} | {"wall"})) + ")"
+"""A noun that names a structure being described ("a line of ...", "a wall: ..."), from the
+structure kinds' own words (a square may be a patch and a pile a heap of cubes, so neither is one
+here; a wall is a grid of layers with no kind of its own)."""
+
+
 IDLE_WORDS: frozenset[str] = IGNORABLE | IGNORABLE_MORE | frozenset("""
 a an the this these those is are was were be been being am i me my we our us you your he she his her for of and or but
 so do does did have has had will would can could should just very really as wants want""".split())
@@ -872,6 +879,11 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
 )
 """Edits said in fewer words, as the steering reads them: "on top of that" is on top of the task,
 "and a red block on top" adds one."""
+
+EDIT_KEEP_THEN_ADD_RE = re.compile(r"(?i)^.*?\bkeep(?:ing)?\s+(?:the|this|that)\s+\w+\s*,?\s*(?:and|but|plus)\s+(?:also\s+)?"
+                              r"(?=(?:add|put|place|stack|set)\b)")
+"""An edit that keeps the structure and adds a clause ("keep the tower, and also put ..."): the
+clause after it."""
 
 EDIT_COUNT_ALONE_RE = re.compile(
     r"(?i)\s*(?:(?:actually|ok(?:ay)?|fine|right|hmm+|so)\s*[,.!]?\s*)*(?:let'?s\s+)?(?:go\s+with|try|use|make\s+(?:it|that)|how\s+about|maybe)?\s*"

@@ -809,7 +809,7 @@ def _table_side(m: re.Match) -> bool:
 
 
 _HEADING_RE = re.compile(r"\s*(?:(?:build|make|put|place|set\s+up)\s+)?(?:(?:a|an|the)\s+)?(?:[\w-]+\s+){0,3}?"
-                         r"(?:tower|stack|pyramid|wall|line|row|grid|circle|ring|column)\s*")
+                         rf"{lexicon.STRUCTURE_NOUN}\s*")
 
 
 def _heading_side(m: re.Match) -> bool:
@@ -823,7 +823,7 @@ def _heading_side(m: re.Match) -> bool:
 NEW_STRUCTURE_BEFORE_RE = re.compile(
     r"(?:(?:^|[,;:.]\s*)(?:(?:a|an|1|\d+)\s+)?|\b(?:and|then|build|make|set\s+up|put|place|create|form)\s+(?:a|an|1|\d+)\s+)"
     r"(?:(?!the\b|that\b|this\b|its\b|their\b)[\w-]+\s+){0,2}?"
-    r"(?:tower|stack|pyramid|wall|line|row|grid|circle|ring|column)s?"
+    rf"{lexicon.STRUCTURE_NOUN}s?"
     r"(?:\s+of\s+(?:\d+\s+)?(?:[a-z]+\s+)?(?:cubes|blocks))?\s*$")
 """A structure being described just before a bare side ("a line of 4 gray cubes at the front")."""
 
@@ -841,8 +841,8 @@ def _structure_side(m: re.Match) -> bool:
     return NEW_STRUCTURE_BEFORE_RE.search(before) is not None or (
         re.search(r",\s*$", before) is not None and re.fullmatch(r"\s*[.!]?\s*", m.string[m.end():]) is not None
         and re.match(r"\s*(?:(?:build|make|create|set\s+up|form)\s+)?(?:a|an|1)\s+(?:[\w-]+\s+){0,2}?"
-                     r"(?:tower|stack|pyramid|wall|line|row|grid|circle|ring|column)\b", before) is not None
-        and len(re.findall(r"\b(?:tower|stack|pyramid|wall|line|row|grid|circle|ring|column)s?\b", before)) == 1)
+                     rf"{lexicon.STRUCTURE_NOUN}\b", before) is not None
+        and len(re.findall(rf"\b{lexicon.STRUCTURE_NOUN}s?\b", before)) == 1)
 
 
 def mark_regions(text: str) -> str:

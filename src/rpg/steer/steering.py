@@ -31,7 +31,13 @@ from rpg.errors import BadInput
 from rpg.schema.builtin import parse
 from rpg.schema.edits import recolor
 from rpg.schema.feasibility import check_feasibility
-from rpg.schema.lexicon import COLOR_RE, NO_GOAL_RE, SAME_CUBES_RE, SAME_PATCH_RE
+from rpg.schema.lexicon import (
+    COLOR_RE,
+    EDIT_KEEP_THEN_ADD_RE,
+    NO_GOAL_RE,
+    SAME_CUBES_RE,
+    SAME_PATCH_RE,
+)
 from rpg.schema.model import TaskSchema
 from rpg.steer.carried import Carried, split
 from rpg.steer.carried import render as render_carried
@@ -199,9 +205,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         if plan.cue.kind != "current":  # "go back to version 1": that version as it is
             return ref_schema, ref_schema.instruction, "tweak"
         return _addition(plan, reference, ref_schema)
-    if all(o.op == "keep" for o in plan.ops) and KEEP_THEN_ADD_RE.search(plan.text):
+    if all(o.op == "keep" for o in plan.ops) and EDIT_KEEP_THEN_ADD_RE.search(plan.text):
         # "keep the tower, and also put a pink cube on the orange patch": the rest kept, the clause added
-        return _addition(replace(plan, text=KEEP_THEN_ADD_RE.sub("", plan.text, count=1)), reference, ref_schema)
+        return _addition(replace(plan, text=EDIT_KEEP_THEN_ADD_RE.sub("", plan.text, count=1)), reference, ref_schema)
     _refuse_one_of_several(plan, ref_schema)
     rel = relation_of(ref_schema) if ref_spec is None else None
     if rel is not None and re.search(r"\bit\b", plan.text, re.IGNORECASE) and all(
@@ -364,12 +370,6 @@ def _per_cube(atoms: list[str]) -> list[str]:
         m = re.fullmatch(r"on_patch\(([^()]*),(patch:[^(),]+)\)(@\w+)?", a)
         out += ([f"on_patch({c},{m.group(2)}){m.group(3) or ''}" for c in m.group(1).split(",")] if m else [a])
     return out
-
-
-KEEP_THEN_ADD_RE = re.compile(r"(?i)^.*?\bkeep(?:ing)?\s+(?:the|this|that)\s+\w+\s*,?\s*(?:and|but|plus)\s+(?:also\s+)?"
-                              r"(?=(?:add|put|place|stack|set)\b)")
-"""An edit that keeps the structure and adds a clause ("keep the tower, and also put ..."): the
-clause after it."""
 
 
 def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[TaskSchema, str, str]:

@@ -25,7 +25,7 @@ from rpg.domain.state import Pose
 from rpg.errors import BadInput
 from rpg.schema import readers
 from rpg.schema.builder import DEFAULT_COLORS, Builder
-from rpg.schema.lexicon import COLOR_RE, PAIRWISE_RELATIONS
+from rpg.schema.lexicon import COLOR_RE, PAIRWISE_RELATIONS, STRUCTURE_NOUN
 from rpg.schema.model import TaskSchema
 from rpg.schema.readers.common import REGION_MARGIN, region_spots
 from rpg.schema.readers.registry import reader
@@ -177,7 +177,7 @@ def _fitted(head: TaskSchema, region: str) -> dict[str, tuple[float, float, floa
     return None
 
 
-_WHOLE_NOUN = rf"(?:{STRUCTURE_RE}|\bwalls?\b|\bcolumns?\b|\bpillars?\b)"
+_WHOLE_NOUN = rf"(?:{STRUCTURE_RE}|\b{STRUCTURE_NOUN}s?\b)"
 IN_REGION_PART_RE = re.compile(
     r"^(?P<head>[^@]+?),?\s+@region_(?P<r>[a-z_]+)[\s,.!]*$"
     r"|^@region_(?P<r2>[a-z_]+)\s*,?\s+(?P<head2>[^@]+?)[\s.!]*$"
@@ -308,7 +308,7 @@ def recognize_spelled_out_sort(f: Features, b: Builder) -> bool:
 PART_SPLIT_RE = re.compile(
     r"\s*(?:[.;!]\s+|,?\s+and\s+then\s+|,\s*then\s+|\s+then\s+"
     r"|,?\s+and\s+(?=(?:put|place|build|make|stack|move|set|arrange|line\s+up|create|form|pile|slide|push|bring)\b)"
-    r"|,?\s+and\s+(?=(?:a|an|\d+)\s+(?:[\w-]+\s+){0,2}?(?:tower|stack|pyramid|wall|line|row|grid|circle|ring|column)s?\b))")
+    rf"|,?\s+and\s+(?=(?:a|an|\d+)\s+(?:[\w-]+\s+){{0,2}}?{STRUCTURE_NOUN}s?\b))")
 """Where one task said after another begins: a new sentence, "then", or "and" before a verb
 ("make a tower of two blue blocks and put the red block on the left") or before a new structure
 ("a line of 4 gray cubes at the front and a circle of 5 orange cubes at the back")."""
