@@ -1717,3 +1717,10 @@ def test_places_the_attack_found_dropped(text, expected):
 ])
 def test_sides_said_of_two_cubes_or_after_a_structure(text, expected):
     assert meaning(parse(text)) == expected
+
+
+def test_another_patch_of_a_colour_is_a_patch_of_its_own_and_the_2_on_each_other_are_two_cubes():
+    """Found by the attack: both cubes had shared one green patch; "the 2" had become two digit-2 cubes."""
+    schema = parse("put a red cube on a green patch and the blue cube on another green patch")
+    assert sorted(a.name for a in schema.assets if a.kind == "goal_patch") == ["green_patch_1", "green_patch_2"]
+    assert not any(a.kind == "semantic_cube" for a in parse("stack the 2 on top of each other").assets)

@@ -81,7 +81,9 @@ class RelationalReading:
     def obj(self, mn: Mention, i: int = 0) -> str:
         """The object a mention names: its patch, or its ``i``-th cube (made in the builder on first mention)."""
         if mn.patch:
-            key = ("patch", mn.color, mn.shape) + ((i,) if i and mn.count > 1 and mn.color else ())  # "the two yellow patches"
+            if mn.another and mn.color:  # "another green patch": one more patch of that colour
+                i = self.fresh.setdefault(id(mn), sum(1 for k in self.patch_names if k[1:3] == (mn.color, mn.shape)))
+            key = ("patch", mn.color, mn.shape) + ((i,) if i and (mn.count > 1 or mn.another) and mn.color else ())  # "the two yellow patches"
             if key not in self.patch_names:
                 self.patch_names[key] = self.b.patch(mn.color or DEFAULT_PATCH_COLOR, mn.shape)
             return self.patch_names[key]
