@@ -321,7 +321,9 @@ def _refuse_crossed_relations(f: Features, rels: list, touching: list[tuple[str,
     """Refuse directional relations no placement satisfies: two on one pair of cubes along
     different axes or opposite ways ("left of the blue block and right of the blue block";
     "behind the red one and to its left": each relation needs the cubes level across its
-    axis, ``RELATION_MAX_OFF_AXIS``), or a cycle along one axis (red left of blue, blue left of red).
+    axis, ``RELATION_MAX_OFF_AXIS``), or a cycle along one axis (red left of blue, blue left of red);
+    and "far from" between objects that touch: next to each other, or one on the other or on a
+    patch (``touching``: the (cube, support) pairs of the reading's stacking and patch relations).
 
     Raises:
         ParseError: naming the relations that contradict each other.
