@@ -40,6 +40,7 @@ STRANGER_SETS = {
     "stranger3": ("stranger3.yaml", "STRANGER set 3 (stranger3.yaml, development material)"),
     "stranger4": ("stranger4.yaml", "STRANGER set 4 (stranger4.yaml, HELD OUT: report aggregates only)"),
     "stranger5": ("stranger5.yaml", "STRANGER set 5 (stranger5.yaml, development material)"),
+    "stranger6": ("stranger6.yaml", "STRANGER set 6 (stranger6.yaml, development material)"),
 }
 SPLITS = HERE / "splits.yaml"
 

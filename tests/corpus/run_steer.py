@@ -72,6 +72,7 @@ DEVELOPMENT = {
     "stranger": ("steer_stranger.yaml", "STRANGER steering set (steer_stranger.yaml, development material)"),
     "stranger2": ("steer_stranger2.yaml", "STRANGER steering set 2 (steer_stranger2.yaml, development material)"),
     "stranger3": ("steer_stranger3.yaml", "STRANGER steering set 3 (steer_stranger3.yaml, development material)"),
+    "stranger4": ("steer_stranger4.yaml", "STRANGER steering set 4 (steer_stranger4.yaml, development material)"),
 }
 UNSEEN = HERE / "steer_unseen.yaml"
 SPLITS = HERE / "splits.yaml"
