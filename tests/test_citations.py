@@ -218,6 +218,20 @@ def test_an_unnamed_order_is_dropped_and_a_named_one_kept():
     assert "cube colour: red" in unstated(towers, towers.instruction)
 
 
+@pytest.mark.parametrize("text", [
+    "build a wall with 2 white on the bottom and 1 black on top",  # read as a default wall of six
+])
+def test_a_structure_filled_up_with_cubes_nobody_named_is_refused(text):
+    with pytest.raises(BadInput, match="nobody asked for"):
+        parse(text)
+
+
+@pytest.mark.parametrize("text", ["build a wall", "build a tower with the blue block in the middle", "Build a tower three blocks high with a yellow block on top",
+                                  "make a pyramid of six cubes with the three on the bottom being red"])
+def test_a_default_or_counted_structure_with_unnamed_cubes_compiles(text):
+    assert parse(text).goal is not None
+
+
 def _restacked(schema, order):
     """The goal layout with the stack's cubes at its heights in ``order`` (bottom to top)."""
     heights = sorted((schema.goal_layout[n] for n in order), key=lambda p: p.position[2])

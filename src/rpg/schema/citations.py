@@ -510,6 +510,36 @@ weakened.  An identity ("cube colour: red") is recorded uncited instead: the sce
 the task's assets, so a goal over all of them asks nothing a policy could do otherwise."""
 
 
+def invented_members(schema: TaskSchema) -> str | None:
+    """Why a structure of G holds cubes nobody said, or None.
+
+    A structure whose count no word states, whose named cubes are all counted by colour ("a
+    wall with 2 white on the bottom and 1 black on top": three cubes said), but which holds
+    further cubes of colours nobody said that G tells apart from the named ones: the reader
+    filled the structure up to a default size with cubes of its own (content invented, issue
+    30's class 6).  A default structure with a role said ("a tower with the blue block in the
+    middle") counts nothing, so its other cubes are the domain's default, not an invention.
+    """
+    r = _reading(schema, schema.instruction)
+    counted = {m.group(1) for x in r.record if x["kind"] == "count"
+               for m in [re.match(r"\d+ (\S+) cubes$", str(x["consumed_by"]))] if m}
+    by_leaf: dict[int, list[tuple[Constraint, list[str]]]] = {}
+    for c in goal_constraints(schema):
+        by_leaf.setdefault(id(c.leaf), []).append((c, CITERS[c.kind](c, r)))
+    for cs in by_leaf.values():
+        counts = [(c, cites) for c, cites in cs if c.kind == "count"]
+        if not counts or any(cites for _, cites in counts):
+            continue
+        named = sorted({c.key[1] for c, cites in cs if c.kind == "identity" and cites})
+        unsaid = sorted({c.key[1] for c, cites in cs if c.kind == "identity" and not cites and not c.vacuous})
+        if named and unsaid and set(named) <= counted:
+            c = counts[0][0]
+            return (f"the goal it reads holds {c.line}, but the instruction counts only its "
+                    f"{' and '.join(named)} cubes: {', '.join(unsaid)} would be cubes nobody asked for; "
+                    "say how many cubes the structure has in all")
+    return None
+
+
 def enforce(schema: TaskSchema, refuse: bool = True,
             refuse_kinds: frozenset[str] = REFUSED_WHEN_UNCITED) -> TaskSchema:
     """``schema`` with every constraint nobody stated dropped (the predicate's weaker form).
@@ -524,8 +554,9 @@ def enforce(schema: TaskSchema, refuse: bool = True,
             ``citations`` then shows them citing nothing).
 
     Raises:
-        UncitedConstraint: a constraint nobody stated whose predicate has no weaker form;
-            the message names it.
+        UncitedConstraint: a constraint nobody stated whose predicate has no weaker form
+            (with ``refuse``), or a structure filled up with cubes nobody named
+            (:func:`invented_members`, always); the message names it.
     """
     from rpg.schema.builder import make_paraphrases
 
@@ -555,6 +586,9 @@ def enforce(schema: TaskSchema, refuse: bool = True,
                 raise UncitedConstraint(f"the goal it reads demands {c.line}, which the instruction does not say")
         else:
             break
+    invented = invented_members(schema.model_copy(update={"goal": goal}) if changed else schema)
+    if invented:  # cubes nobody named have no weaker form: refused whatever ``refuse`` says
+        raise UncitedConstraint(invented)
     if not changed:
         return schema
     summary = "; ".join(p.describe() for p in goal.conjuncts())

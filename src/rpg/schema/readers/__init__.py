@@ -212,9 +212,13 @@ def parse(instruction: str) -> TaskSchema:
             if gap is None:
                 # reverse accounting: a part of G nobody stated is dropped where a weaker goal
                 # exists (a tower's named end kept, the rest free); the rest is recorded as
-                # uncited in task.yaml. Not refused yet: the citations do not cover every
-                # parameter a reader sets (a line's axis, a default count), issue 30
-                return citations.enforce(free_listed_orders(f, free_unnamed_orders(f, schema)), refuse=False)
+                # uncited in task.yaml (not refused yet: the citations do not cover every
+                # parameter a reader sets, such as a default count). A structure filled up with
+                # cubes nobody named makes this reading fail (the next reader may do better)
+                try:
+                    return citations.enforce(free_listed_orders(f, free_unnamed_orders(f, schema)), refuse=False)
+                except citations.UncitedConstraint as exc:
+                    gap = ParseError(f"\"{f.original[:80]}\": {exc}; or use --model")
             first_gap = first_gap or gap  # a reading that drops a mention: try the next reader
     if first_gap is not None:
         raise first_gap
