@@ -1724,3 +1724,56 @@ def test_another_patch_of_a_colour_is_a_patch_of_its_own_and_the_2_on_each_other
     schema = parse("put a red cube on a green patch and the blue cube on another green patch")
     assert sorted(a.name for a in schema.assets if a.kind == "goal_patch") == ["green_patch_1", "green_patch_2"]
     assert not any(a.kind == "semantic_cube" for a in parse("stack the 2 on top of each other").assets)
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger6 (eighth session): framing, politeness and free-choice words that had been refused as a condition,
+    # a negation or an unknown word; the goal is read as if they were not there
+    ("Goal state: the green cube rests directly on the red cube. All other cubes may be anywhere.", ["stack(red,green)"]),
+    ("Hey robot! Hope you're doing well. Today I'd love it if you could take the yellow cube and put it right on top "
+     "of the purple one. Thanks a bunch!", ["stack(purple,yellow)"]),
+    ("Success condition: the purple block lies within the white goal patch.", ["on_patch(purple,patch:white)"]),
+    ("put da green block on da red patch", ["on_patch(green,patch:red)"]),
+    ("pls put the grey cube rite of the white one", ["right_of(gray,white)"]),
+    ("Put the yellow block on top of the red block, which should sit on the blue patch.",
+     ["on_patch(red,patch:blue)", "stack(red,yellow)"]),
+    ("Task spec \u2014 blocks: red, blue, green. Goal: blue cube to the left of red cube; green cube to the right of red cube.",
+     ["left_of(blue,red)", "right_of(green,red)"]),
+    ("my supervisor wants the white cube on the left side of the table, doesn't matter exactly where",
+     ["in_region(white,left)"]),
+    ("At the end, the red cube should be on the blue cube. Nothing else matters.", ["stack(blue,red)"]),
+])
+def test_framing_politeness_and_free_choice_are_not_the_goal(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,kind", [
+    ("If the green cube is on the left, put it on the yellow patch.", "condition"),  # a real condition stays one
+    ("Put the red cube on the blue cube if the blue cube is on the left.", "condition"),
+    ("Put the blue cube anywhere except the left side of the table.", "negation"),
+    ("The orange cube must not be next to the purple cube.", "negation"),
+])
+def test_conditions_and_negations_that_are_not_politeness_stay_refused(text, kind):
+    with pytest.raises(Inexpressible) as exc:
+        parse(text)
+    assert kind in {k for k, _, _ in exc.value.reasons}
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger6 (eighth session): each compiled silently wrong before
+    ("Final configuration: a 3-layer pyramid (3-2-1) of gray cubes positioned at the table centre.",
+     ["pyramid(gray,gray,gray,gray,gray,gray)@center"]),  # "the table centre" had been dropped
+    ("Build a tower of digit cubes 9, 8, 7 with 9 on top.", ["stack(7,8,9)"]),  # the list read from the top it names
+    ("stack em all up: red green blue yellow, red first", ["stack(red,green,blue,yellow)"]),  # not a fifth, red cube
+    # a wall's layers listed cube by cube (each layer had taken only its first colour)
+    ("Build a wall with a bottom row of blue, green, blue and a top row of green, blue, green.",
+     ["wall(blue,blue,green|blue,green,green)"]),
+    ("build a wall: bottom row red, red, blue; top row blue, blue, red", ["wall(blue,red,red|blue,blue,red)"]),
+])
+def test_what_stranger6_found_compiled_wrong(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_wall_whose_layers_are_listed_unevenly_is_refused():
+    with pytest.raises(ParseError, match="different lengths"):
+        parse("build a wall, bottom row red blue red, top row blue red")

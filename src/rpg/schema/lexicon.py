@@ -69,7 +69,7 @@ SYNONYMS: dict[str, str] = {
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
     "uppermost": "topmost", "lowermost": "bottommost", "upon": "on", "right-hand": "right", "left-hand": "left",
     "midpoint": "center", "blu": "blue", "gren": "green", "yelow": "yellow", "purpel": "purple",
-    "cirlce": "circle", "cricle": "circle", "towr": "tower", "tower's": "tower", "pyramd": "pyramid",
+    "cirlce": "circle", "cricle": "circle", "rite": "right", "da": "the", "teh": "the", "within": "in", "towr": "tower", "tower's": "tower", "pyramd": "pyramid",
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
@@ -358,8 +358,8 @@ EFFECTOR_RE = re.compile(
 hands"): a task's goal says where cubes end up, whichever arm or hand takes them there, so the
 words are dropped (:func:`rpg.schema.reading.normalize`)."""
 
-POSTURE_RE = re.compile(r"\b(?:sitting|resting|lying|laying|sits|rests|lies|located|positioned|seated|perched)\s+"
-                        r"(?=(?:on|onto|upon|atop|in|inside|at|next|beside|behind|under|below|beneath|underneath|above|"
+POSTURE_RE = re.compile(r"\b(?:sitting|resting|lying|laying|sits|rests|lies|sit|rest|lie|located|positioned|seated|perched)\s+"
+                        r"(?=(?:on|onto|upon|atop|in|inside|within|at|next|beside|behind|under|below|beneath|underneath|above|"
                         r"between|near|by|to|directly|right|just|exactly)\b)")
 """A posture verb before a place ("the green cube sitting on top of the yellow cube", "so it
 is resting on the patch"): every cube rests on a face, so only the place says anything; the
@@ -551,7 +551,7 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(rf"(?:^|(?<=[.;!,]\s)|(?<=\band\s))keep\s+(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|brick)\b|(?:it|them)\s+"
                 rf"(?:far|next|near|beside|behind|in\s+front|on|to\s+the|at|left|right)\b)"), "put "),
     # "the table's center", "the table's left side": the place on the table, as "the center of the table" says it
-    (re.compile(r"\bthe\s+(table|workspace)'s\s+(center|centre|middle)\b"), r"the \2 of the \1"),
+    (re.compile(r"\bthe\s+(table|workspace)(?:'s)?\s+(center|centre|middle)\b"), r"the \2 of the \1"),  # "the table centre"
     (re.compile(r"\bthe\s+(table|workspace)'s\s+(left|right|front|back|far)\s+(side|edge|half|end|corner)\b"), r"the \2 \3 of the \1"),
     # "at the midpoint between", "in the middle between", "centrally between": only between
     (re.compile(r"\b(?:(?:at|in)\s+the\s+(?:midpoint|middle|center|centre)|centrally|midway|cent(?:er|r)ed)\s+(?=between\b)"), ""),
@@ -656,6 +656,56 @@ HARMLESS_NEGATION_RE = re.compile(r"[,;(\u2013\u2014-]?\s*\b(?:nothing|none?\s+t
 you don't mind", "thanks so much"): dropped before
 negations are refused (:func:`rpg.schema.reading.normalize`)."""
 
+FREE_CHOICE_RE = re.compile(
+    r"[,;(\u2013\u2014-]?\s*\b(?:(?:all|any)\s+)?(?:the\s+)?other\s+(?:blocks|cubes|bricks|ones)\s+(?:(?:may|can|could)\s+(?:be|go|stay)"
+    r"\s+anywhere|(?:do\s*n[o']?t|don't|do\s+not)\s+matter|(?:are|is)\s+(?:irrelevant|free|up\s+to\s+you))\b"
+    r"|[,;(\u2013\u2014-]?\s*\bnothing\s+else\s+(?:matters|is\s+important|counts)\b"
+    r"|[,;(\u2013\u2014-]?\s*\b(?:the\s+)?colou?rs?\s+(?:do\s*n[o']?t|don't|do\s+not|does\s*n[o']?t|doesn't|does\s+not)\s+matter\b"
+    r"|[,;(\u2013\u2014-]\s*(?:in\s+)?any\s+colou?rs?(?=\s*[.!;)]|\s*$)"
+    r"|[,;(\u2013\u2014-]?\s*\b(?:it\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\s+(?:exactly\s+|precisely\s+)?where\b"
+    r"|[,;(\u2013\u2014-]?\s*\b(?:exactly\s+)?where\s+(?:exactly\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\b")
+"""Words that leave free what the goal does not judge anyway ("All other cubes may be anywhere.",
+"nothing else matters", "colours don't matter", ", any colours", "doesn't matter exactly
+where"): a goal never judges a cube it does not name, a colour nobody said or a spot inside a
+place said, so the words are dropped before negations and conditions are refused
+(:func:`rpg.schema.reading.normalize`).  "Any colours" only after a comma and last in its
+sentence, where it cannot pick cubes ("put any colours on the patch" stays unread)."""
+
+POLITE_CONDITION_RE = re.compile(
+    r"\b(?:i|we)(?:'d|\s+would)\s+(?:love|like|appreciate)\s+it\s+if\s+you\s+(?:could|would|can)\s+"
+    r"|[,;]?\s*\bif\s+you\s+(?:could|would|can|please)\b(?=\s+(?:please\s+)?(?:put|place|move|set|stack|make|build|arrange|"
+    r"take|line|get|bring|slide|push|spell|sort|lay|form|create|pile)\b)"
+    r"|[,;(]?\s*\bif\s+(?:at\s+all\s+)?possible\b\)?|[,;]?\s*\bif\s+you\s+(?:could|would|can|please)\s*(?=[.!,;]|$)")
+"""A condition that is only politeness ("I'd love it if you could take the yellow cube ...", ",
+if you could", "if possible"): dropped before conditions are refused, so the request is read
+(:func:`rpg.schema.reading.normalize`).  "If the green cube is on the left ..." stays a condition."""
+
+SMALL_TALK_RE = re.compile(
+    r"\b(?:i\s+)?hope\s+(?:you(?:'re|\s+are)|you\s+have\s+been|all\s+is|it(?:'s|\s+is))\s+(?:doing\s+|going\s+)?"
+    r"(?:well|good|great|fine|ok(?:ay)?)(?:\s+today)?\s*[.!,]?"
+    r"|[,.!]?\s*\b(?:thanks|thank\s+you|cheers)\s+(?:a\s+(?:bunch|lot|million|ton)|heaps|loads|in\s+advance)\b\s*[.!]?")
+"""Small talk that says nothing of the task ("Hope you're doing well.", "Thanks a bunch!",
+"thanks in advance"): dropped (:func:`rpg.schema.reading.normalize`)."""
+
+SOMEONE_WANTS_RE = re.compile(
+    r"\b(?:my|our|the)\s+(?P<who>supervisor|boss|advisor|adviser|professor|prof|pi|manager|lab|team|colleague|labmate|teacher|"
+    r"client|group|mentor|tutor|lecturer)\s+(?:wants|needs|would\s+like|asked\s+for|asks\s+for|requested)\b")
+"""Who asks for the task ("my supervisor wants the white cube ..."): read as "i want" (the goal is
+the same whoever asks; :func:`rpg.schema.reading.normalize_words` lists ``who`` as dropped)."""
+
+PREAMBLE_RE = re.compile(
+    r"^\s*(?:(?:when|once)\s+(?:the\s+robot\s+|it\s+|you\s+|the\s+task\s+)?(?:is|are|has|have)\s+(?:finished|done|completed?)"
+    r"(?:\s+with\s+(?:it|the\s+task))?\s*,?\s*(?:the\s+(?:table|scene|workspace)|it|everything)\s+should\s+look\s+like\s+"
+    r"(?:this|so|the\s+following)\s*[.:]\s*"
+    r"|at\s+the\s+(?:very\s+)?end(?:\s+of\s+the\s+(?:episode|task))?\s*,\s*"
+    r"|(?:picture|imagine)\s+the\s+(?:final|end|finished|goal)\s+(?:scene|state|table|configuration)\s*:\s*"
+    r"|(?:success\s+(?:condition|criteri(?:on|a))|task\s+spec(?:ification)?|evaluation\s+task|eval\s+task|test\s+task"
+    r"|(?:final|end|goal|target|desired)\s+scene)\s*(?::|\u2014|\u2013|-)\s*)")
+"""Framing that names when the goal holds or heads the spec, said before it ("When the robot is
+finished, the table should look like this.", "At the end, ...", "Picture the final scene: ...",
+"Success condition: ...", "Task spec \u2014 ..."): every goal is checked at the end of the episode, so
+the words are dropped before conditions and time are refused (:func:`rpg.schema.reading.normalize`)."""
+
 STRUCTURE_NOUN = "(?:" + "|".join(sorted({w for k in STRUCTURE_KINDS.values() for w in (*k.words, *k.described_by)}
                                            - {"square", "pile"} | {"wall"})) + ")"
 """A noun that names a structure being described ("a line of ...", "a wall: ..."), from the
@@ -740,6 +790,17 @@ LAYER_SYNONYM_RE = re.compile(r"\b(?:(?P<low>lower|lowest|bottommost|first)|(?P<
                               r"\s+(?=(?:layer|level|row|tier)\b)")
 """A layer named by a comparative ("the lower layer", "the upper row"): read as "bottom" or
 "top" (:func:`rpg.schema.reading.normalize`); "first"/"second" layer count from the bottom."""
+
+LISTED_ROW_RE = re.compile(
+    r"\b(?P<role>top|bottom|base|middle|upper|lower|first|second|third)\s+(?:row|layer|level|tier|course|storey|story)\s*"
+    r"(?::|\s+(?:of|is|has|with|made\s+of)\b)?\s*(?:the\s+)?"
+    r"(?P<cs>(?:" + "|".join(COLORS) + r")(?:(?:\s*,\s*|\s+)(?:" + "|".join(COLORS) + r"))*(?:,?\s+and\s+(?:"
+    + "|".join(COLORS) + r"))?)(?=\s*(?:blocks?|cubes?|ones?)?\s*(?:[,.;]|$|\s+(?:and|with|then)\b))")
+"""A layer whose cubes are listed one by one ("a bottom row of blue, green, blue"): ``role`` the
+layer word, ``cs`` the colours (:func:`rpg.schema.readers.structures.listed_layers`)."""
+
+LISTED_ROW_LAYER = {"bottom": 0, "base": 0, "lower": 0, "first": 0, "second": 1, "middle": 1, "third": 2}
+"""A layer word of :data:`LISTED_ROW_RE` -> its layer from the table ("top" and "upper": the last)."""
 
 LAYER_WORDS = {"top": "top", "peak": "top", "apex": "top", "tip": "top", "bottom": "bottom", "base": "bottom",
                "foundation": "bottom", "middle": "middle"}

@@ -365,6 +365,12 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   rf"(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|one)\b)", "next to ", text)
     text = lexicon.ANY_ORDER_RE.sub(" in any order", text)  # before "doesn't" is refused as a negation
     text = lexicon.HARMLESS_NEGATION_RE.sub("", text)
+    text = lexicon.FREE_CHOICE_RE.sub("", text)
+    text = lexicon.SMALL_TALK_RE.sub(" ", text)
+    asked_by = [(m.group("who"), "who asks for the task") for m in lexicon.SOMEONE_WANTS_RE.finditer(text)]
+    text = lexicon.SOMEONE_WANTS_RE.sub("i want", text)
+    text = lexicon.POLITE_CONDITION_RE.sub(" ", text)
+    text = lexicon.PREAMBLE_RE.sub("", text).strip()
     spelled = {w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)}  # "spell BOOK": a word, not a book
     refused = [(kind, ws, why) for kind, ws, why in _inexpressible(text)
                if not all(w in spelled for w in ws)]  # refused below, with what the unknown words say as well
@@ -424,9 +430,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   r"\1 two \2s on top of each other", text)
     text = lexicon.POSTURE_RE.sub("", text)
     text = _counted_list_nouns(text)
-    # "in a row along the back edge": at that edge of the table ("along" is otherwise no word of ours)
+    # "in a row along the back edge[, ...]": at that edge of the table ("along" is otherwise no word of ours)
     text = re.sub(r"\balong\s+(?=the\s+(?:(?:far|very)\s+)?(?:front|back|rear|left|right)(?:\s+(?:hand\s+)?(?:side|edge|end))?"
-                  r"(?:\s+of\s+the\s+(?:table|workspace))?\s*[.!,;]?\s*$)", "at ", text)
+                  r"(?:\s+of\s+the\s+(?:table|workspace))?\s*(?:[.!,;]|$))", "at ", text)
     # "a red tower and a blue tower, each three high": the height reaches each tower
     text = re.sub(rf"\b(?:a|one)\s+({COLOR_RE})\s+(tower|stack|column)\s+and\s+(?:a|one|another)\s+({COLOR_RE})\s+(?:tower|stack|column)"
                   r",?\s+(?:each|both)\s+(\d+|two|three|four|five|six)\s+(?:(?:blocks?|cubes?|levels?|stor(?:y|ey|ies|eys))\s+)?(?:high|tall)\b",
@@ -504,7 +510,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
             fixed[w] = match[0]
         else:
             unknown.append(w)
-    dropped = []
+    dropped = list(asked_by)
     named = {w for _, ws, _ in refused for w in ws}
     for w in dict.fromkeys(unknown):
         read = senses.sense(w)

@@ -38,7 +38,15 @@ from rpg.domain.predicates import (
 )
 from rpg.schema import clauses
 from rpg.schema.builder import DEFAULT_COLORS, Builder
-from rpg.schema.lexicon import COLOR_RE, CUBE_ORDER_RE, LAYER_ROLE_RE, LAYER_WORDS, ORDER_WORDS
+from rpg.schema.lexicon import (
+    COLOR_RE,
+    CUBE_ORDER_RE,
+    LAYER_ROLE_RE,
+    LAYER_WORDS,
+    LISTED_ROW_LAYER,
+    LISTED_ROW_RE,
+    ORDER_WORDS,
+)
 from rpg.schema.readers.common import (
     DESCRIBED_TOWER_RE,
     ITEM_RE,
@@ -271,9 +279,20 @@ WALL_DIMS = (3, 2)
 @reader(order=120)
 def recognize_wall(f: Features, b: Builder) -> bool:
     """A wall: one row of cubes ``width`` long (left to right) and ``height`` layers high
-    ("a wall three blocks wide and two high", "a 4x2 wall", "a wall of six blocks")."""
+    ("a wall three blocks wide and two high", "a 4x2 wall", "a wall of six blocks"), or
+    layers listed cube by cube (:func:`listed_layers`)."""
     if not f.has("wall"):
         return False
+    rows = listed_layers(f)
+    if rows is not None:
+        width, height = len(rows[0]), len(rows)
+        names = [b.cube(c) for row in rows for c in row]
+        levels = tuple(k for k, row in enumerate(rows) for _ in row)
+        b.place(grid_layout(names, 1, width, height))
+        b.preds += [Grid(tuple(names), 1, width, height), InLayers(tuple(names), levels)]
+        b.primitives += ["stack"]
+        b.summary += [f"a wall {width} cubes wide and {height} high ({width * height} cubes)", b.preds[-1].describe()]
+        return True
     wide = re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+)?(?:wide|long|across)\b", f.text)
     high = re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+|layers?\s+|rows?\s+|levels?\s+)?(?:high|tall)\b", f.text)
     dims = re.search(r"\b(\d+)x(\d+)\b", f.text)
@@ -301,6 +320,32 @@ def recognize_wall(f: Features, b: Builder) -> bool:
         raise ParseError(f"a wall {width} wide and {height} high has {width * height} cubes, not {total}")
     _lattice(f, b, 1, width, height, f"a wall {width} cubes wide and {height} high ({width * height} cubes)")
     return True
+
+
+def listed_layers(f: Features) -> list[list[str]] | None:
+    """The colours of each layer, bottom first, when the text lists every layer's cubes one by
+    one ("a bottom row of blue, green, blue and a top row of green, blue, green"); None when no
+    layer is listed so.  Which cube of a layer stands where in it is not judged (the words list
+    the layer's cubes; "from left to right" is not said).
+
+    Raises:
+        ParseError: a listed layer among layers not listed, two lists for one layer, or
+            layers of different lengths (a wall's rows are all one length).
+    """
+    found = list(LISTED_ROW_RE.finditer(f.text))
+    if not any(len(re.findall(COLOR_RE, m.group("cs"))) > 1 for m in found):
+        return None  # one colour a layer: a role of the whole layer (layer_roles)
+    top = len(found) - 1
+    rows: dict[int, list[str]] = {}
+    for m in found:
+        k = top if m.group("role") in ("top", "upper") else LISTED_ROW_LAYER[m.group("role")]
+        if k in rows:
+            raise ParseError(f"\"{f.original[:80]}\" lists layer {k + 1} from the bottom twice; list each layer once")
+        rows[k] = [canon_color(c) for c in re.findall(COLOR_RE, m.group("cs"))]
+    if sorted(rows) != list(range(len(rows))) or len({len(r) for r in rows.values()}) != 1 or len(rows) < 2:
+        raise ParseError(f"\"{f.original[:80]}\" lists the cubes of some layers of a wall but not of every layer, or "
+                         "layers of different lengths; list every layer from the bottom with as many cubes each")
+    return [rows[k] for k in range(len(rows))]
 
 
 def _counted_layers(f: Features, height: int) -> list[int] | None:
@@ -651,8 +696,12 @@ READ_WORDS_RE = re.compile(r"\b(?:reads?|reading|readable|spell\w*|shows?|showin
 stand in an order."""
 
 
-BARE_END_RE = re.compile(rf"\b(?P<c>{COLOR_RE})\s+(?P<end>top|bottom|base)\b(?=\s*(?:[,.;]|$))")
-"""A tower's end given to a colour with no preposition ("red top, blue bottom")."""
+BARE_END_RE = re.compile(rf"\b(?P<c>{COLOR_RE})\s+(?P<end>top|bottom|base|first|last)\b(?=\s*(?:[,.;]|$))")
+"""A tower's end given to a colour with no preposition ("red top, blue bottom"; "..., red first":
+the first cube stacked, the bottom; "..., yellow last": the top)."""
+
+BARE_END_WORD = {"first": "bottom", "last": "top"}
+"""An end said as a step of stacking (:data:`BARE_END_RE`) -> the end of the tower."""
 
 
 def may_order_cubes(text: str) -> bool:
@@ -709,7 +758,8 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         return False
     if "@" in mark_references(f.text) or len(DESCRIBED_TOWER_RE.findall(f.text)) >= 2:  # relations, or several towers
         return False
-    text = BARE_END_RE.sub(r"\g<c> at the \g<end>", f.text)  # "red top, blue bottom"
+    text = BARE_END_RE.sub(lambda m: f"{m.group('c')} at the {BARE_END_WORD.get(m.group('end'), m.group('end'))}",
+                           f.text)  # "red top, blue bottom", "..., red first"
     text = SEQ_HINT_RE.sub(lambda m: f" <{m.group(1)}> ", text)
     mentions = list(ITEM_RE.finditer(text))
     for a, c in itertools.pairwise(mentions):
@@ -796,6 +846,9 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         if len(items) > 2 and sorted(role.items()) == [(0, "top"), (len(items) - 1, "bottom")]:
             items.reverse()  # "1, 2, 3 and 4 ..., 4 at the bottom and 1 on top": the list read from the top
             role = {0: "bottom", len(items) - 1: "top"}
+        elif len(items) > 2 and role in ({0: "top"}, {len(items) - 1: "bottom"}):
+            items.reverse()  # "digit cubes 9, 8, 7 with 9 on top": the one end named is the list's start, read from the top
+            role = {len(items) - 1 - i: h for i, h in role.items()}
         bottom = [items[i] for i, h in role.items() if h == "bottom"]
         top = [items[i] for i, h in role.items() if h == "top"]
         middle = [items[i] for i, h in role.items() if h == "middle"]
