@@ -1777,3 +1777,28 @@ def test_what_stranger6_found_compiled_wrong(text, expected):
 def test_a_wall_whose_layers_are_listed_unevenly_is_refused():
     with pytest.raises(ParseError, match="different lengths"):
         parse("build a wall, bottom row red blue red, top row blue red")
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger6 (eighth session): each had been refused
+    ("blue cube -> front left corner", ["in_region(blue,front_left)"]),
+    ("ok so here's what i'm thinking \u2014 a little tower, blue on the bottom, then pink, then another blue on top. nothing fancy",
+     ["stack(blue,pink,blue)"]),
+    ("need a 2x2 grid of blue cubes for the next run", ["grid(2x2:blue,blue,blue,blue)"]),
+    ("Alright, let's do something fun: a circle made of six cubes, alternating orange and green.",
+     ["circle(green,green,green,orange,orange,orange)"]),
+    ("Pop the cyan cube behind the pink one, cheers.", ["behind(cyan,pink)"]),
+    ("I was thinking, could we get the brown block next to the black block? That'd be great for my demo.",
+     ["next_to(black,brown)"]),
+    ("For the demo: yellow cube on the orange patch, orange cube on the yellow patch.",
+     ["on_patch(orange,patch:yellow)", "on_patch(yellow,patch:orange)"]),
+    ("put yellow cube in middle", ["in_region(yellow,center)"]),
+    ("Build a pyramid in the back-left corner using three green cubes.", ["pyramid(green,green,green)@back_left"]),
+])
+def test_what_stranger6_found_refused(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_starred_per_cube_atom_matches_one_atom_per_cube():
+    assert matches("in_region(blue*,front_left)", ["in_region(blue,front_left)", "in_region(blue,front_left)"])
+    assert not matches("in_region(blue*,front_left)", ["in_region(blue,front_left)", "in_region(red,front_left)"])

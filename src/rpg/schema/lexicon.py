@@ -43,7 +43,7 @@ nice nicely neat tidy tidily maybe perhaps possibly need needs needed want wants
 try trying attempt anywhere somewhere flat flatly thanks thank cool great gonna wanna um uh yeah alright
 help wood wooden plastic properly securely stably steadily safely accurately completely entirely fully pls plz sure
 basically essentially literally honestly yo hello ty thx hiya howdy asap today tonight morning afternoon evening fine
-quick quickly haha lol good love exercise
+quick quickly haha lol good love exercise cheers
 """.split())
 """Further words with no meaning for the goal, each checked not to change what a task asks:
 hedges ("maybe"), wishes ("I need", "we'll", "let's"), praise ("nice"), "anywhere", "lay it
@@ -406,6 +406,7 @@ PLACEMENT_VERBS: dict[str, str] = {
     "position": "place", "drop": "place", "lay": "place", "add": "place", "pack": "place",
     "build": "build", "make": "build", "create": "build", "construct": "build", "assemble": "build",
     "form": "build", "erect": "build", "stack": "stack", "pile": "stack", "pull": "place", "drag": "place",
+    "pop": "place", "plonk": "place", "plop": "place", "stick": "place", "gather": "place",
 }
 """Verbs that ask for objects to end up somewhere, by lemma -> the parser's verb."""
 
@@ -699,8 +700,23 @@ PREAMBLE_RE = re.compile(
     r"(?:this|so|the\s+following)\s*[.:]\s*"
     r"|at\s+the\s+(?:very\s+)?end(?:\s+of\s+the\s+(?:episode|task))?\s*,\s*"
     r"|(?:picture|imagine)\s+the\s+(?:final|end|finished|goal)\s+(?:scene|state|table|configuration)\s*:\s*"
+    r"|(?:(?:ok(?:ay)?|so|alright|right|well)\s*,?\s+)*(?:here(?:'s|\s+is)\s+what\s+(?:i'?m|i\s+am|we'?re|we\s+are)\s+thinking"
+    r"|(?:i|we)\s+(?:was|were|am|are)\s+(?:just\s+)?thinking|(?:i'?m|we'?re)\s+(?:just\s+)?thinking)\s*[,:.;\u2014\u2013-]*\s*"
+    r"|(?:(?:ok(?:ay)?|so|alright|right|well)\s*,?\s+)*let(?:'s|\s+us)\s+(?:do|try|make|build)\s+something"
+    r"(?:\s+(?:fun|cool|new|different|simple|easy|nice|interesting|quick))?\s*[:,.!;\u2014\u2013-]\s*"
+    r"|for\s+(?:the|my|our|this|a)\s+(?:next\s+|first\s+|upcoming\s+)?(?:demo|experiment|test|eval(?:uation)?|video|paper"
+    r"|benchmark|run|trial|session)\s*[:,\u2014\u2013-]\s*"
     r"|(?:success\s+(?:condition|criteri(?:on|a))|task\s+spec(?:ification)?|evaluation\s+task|eval\s+task|test\s+task"
     r"|(?:final|end|goal|target|desired)\s+scene)\s*(?::|\u2014|\u2013|-)\s*)")
+PURPOSE_RE = re.compile(r"\s+\bfor\s+(?:the|my|our|this|a)\s+(?:next\s+|first\s+|upcoming\s+)?(?:run|demo|trial|experiment|test"
+                        r"|eval(?:uation)?|episode|paper|video|benchmark|session)\b(?=\s*(?:[.!,;]|$))")
+"""What the task is for, said last ("need a 2x2 grid of blue cubes for the next run"): nothing
+of the goal, dropped (:func:`rpg.schema.reading.normalize`)."""
+
+ARROW_RE = re.compile(r"\b(block|cube|brick)\s*(?:->|\u2192|=>)\s*(?:the\s+)?(?=(?:front|back|rear|left|right|center|centre|middle"
+                      r"|far|near)\b)")
+"""A cube sent to a place with an arrow ("blue cube -> front left corner"): read as "in the"."""
+
 """Framing that names when the goal holds or heads the spec, said before it ("When the robot is
 finished, the table should look like this.", "At the end, ...", "Picture the final scene: ...",
 "Success condition: ...", "Task spec \u2014 ..."): every goal is checked at the end of the episode, so

@@ -187,8 +187,16 @@ def matches(expected: str, actual: list[str]) -> bool:
     """Whether a corpus meaning (atoms separated by ``; `` outside brackets) equals ``actual``.
 
     Each expected atom must match a distinct actual atom and no actual atom may be left over.
+    A per-cube atom whose cube is ``red*`` (``in_region(red*,back)``: every red cube there)
+    matches one or more actual atoms, one per red cube (``in_region(red,back)`` twice).
     """
     wanted = [a.strip() for a in re.split(r";\s+(?![^()]*\))", expected) if a.strip()]
+    actual = list(actual)
+    for w in [w for w in wanted if re.match(r"^\w+\((\w+)\*,[^,*]+\)$", w)]:
+        each = w.replace("*", "", 1)
+        if each in actual:  # one atom per cube of that colour (a single atom of the star form may match too)
+            wanted.remove(w)
+            actual = [a for a in actual if a != each]
     if len(wanted) != len(actual):
         return False
     left = Counter(actual)

@@ -371,6 +371,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.SOMEONE_WANTS_RE.sub("i want", text)
     text = lexicon.POLITE_CONDITION_RE.sub(" ", text)
     text = lexicon.PREAMBLE_RE.sub("", text).strip()
+    text = lexicon.PURPOSE_RE.sub("", text)
+    text = lexicon.ARROW_RE.sub(r"\1 in the ", text)
     spelled = {w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)}  # "spell BOOK": a word, not a book
     refused = [(kind, ws, why) for kind, ws, why in _inexpressible(text)
                if not all(w in spelled for w in ws)]  # refused below, with what the unknown words say as well
@@ -390,7 +392,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     # "put cyan cube at back right corner of table": the articles a terse or non-native writer leaves out
     text = re.sub(rf"(?:^|{_BARE_OBJECT_BEFORE})(?=(?:{COLOR_RE})\s+(?:block|cube|brick|box)\b)", "the ", text)
     text = re.sub(r"\b(at|to|in|on|of|near)\s+(?=(?:front|back|rear|left|right)(?:\s+(?:left|right))?\s+(?:side|corner|edge|half|part|end)\b"
-                  r"|(?:middle|center|centre)\s+of\b|table\b)", r"\1 the ", text)
+                  r"|(?:middle|center|centre)\s+of\b|table\b|(?:middle|center|centre)\s*(?:[.!,;]|$))", r"\1 the ", text)
     text = re.sub(r"\b(?:box|cube|block)[\s-]shaped\s+(?=(?:blocks?|cubes?|bricks?)\b)", "", text)  # "the blue box-shaped block"
     text = re.sub(r"\b(spell(?:s|ing)?)(?:\s+out)?\s+the\s+(?:name|word)\b", r"\1", text)  # "spell out the name EVA"
     text = re.sub(r"\b(?:a\s+)?long\s+way\s+(?:away\s+)?from\b", "far from", text)  # "a long way from the orange block"

@@ -181,14 +181,15 @@ _WHOLE_NOUN = rf"(?:{STRUCTURE_RE}|\b{STRUCTURE_NOUN}s?\b)"
 IN_REGION_PART_RE = re.compile(
     r"^(?P<head>[^@]+?),?\s+@region_(?P<r>[a-z_]+)[\s,.!]*$"
     r"|^@region_(?P<r2>[a-z_]+)\s*,?\s+(?P<head2>[^@]+?)[\s.!]*$"
-    r"|^(?P<head3>[^@]+?),?\s+@region_(?P<r3>[a-z_]+)\s*,?\s+(?P<with>with\s+[^@]+?)[\s.!]*$"
+    r"|^(?P<head3>[^@]+?),?\s+@region_(?P<r3>[a-z_]+)\s*,?\s+(?P<with>(?:with|using|made\s+(?:of|from)|out\s+of)\s+[^@]+?)[\s.!]*$"
     rf"|^(?P<head4>[^@]*?{_WHOLE_NOUN}[^@,:;.]*?)\s+@region_(?P<r4>[a-z_]+)\s*(?P<rest4>[,:;][^@]+?)[\s.!]*$"
     rf"|^(?P<head5>[^@]+?)[\s,.;]+(?:and\s+)?(?:then\s+)?(?:put|place|move|set)\s+(?:it|that|this"
     rf"|(?:the|that|this)\s+(?:whole\s+)?(?:thing|structure|{_WHOLE_NOUN}))\s+"
     r"(?:@region_(?P<r5>[a-z_]+)|on\s+the\s+(?P<r5side>left|right))[\s.!]*$")
 """A part, then the one place it stands in ("three blocks in a line at @region_back"), the
 place first ("in @region_left, build a pyramid of 3 blocks"), the place before the part's
-"with" ("stack the red, green and blue blocks @region_center with the blue block on top"),
+"with" or "using" ("stack the red, green and blue blocks @region_center with the blue block on top",
+"build a pyramid @region_back_left using 3 green cubes"),
 the place said just after the structure's noun ("a tower of 4 blocks @region_center: yellow
 at the bottom, ..."), or the structure put there afterwards ("stack pink on white, and put
 that tower on the left")."""
