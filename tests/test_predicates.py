@@ -92,6 +92,13 @@ def test_next_to_and_between():
     assert not Between("a", "b", "c").evaluate(s)
 
 
+def test_next_to_a_goal_patch_compares_bottom_faces():
+    """A cube beside a flat patch stands on the table as the patch does (the centres' heights
+    differ by half a cube: a compiled "next to the green patch" had failed its own goal gate)."""
+    assert NextTo("a", "p").evaluate(state(cube("a", 0.5, 0.0), patch("p", 0.5, 0.06)))
+    assert not NextTo("a", "p").evaluate(state(cube("a", 0.5, 0.0, Z0 + E), patch("p", 0.5, 0.06)))  # held up a cube
+
+
 def test_far_from():
     assert FarFrom("a", "b").evaluate(state(cube("a", 0.5, 0.12), cube("b", 0.5, -0.12)))
     r = FarFrom("a", "b").evaluate(state(cube("a", 0.5, 0.05), cube("b", 0.5, -0.05)))

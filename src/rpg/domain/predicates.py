@@ -614,7 +614,9 @@ class Behind(_Relation):
 
 @dataclass(frozen=True, repr=False)
 class NextTo(Predicate):
-    """``a`` is beside ``b`` at the same level, centres within NEXT_TO_MAX_DIST."""
+    """``a`` is beside ``b`` at the same level (their bottom faces within ON_Z_TOL of one
+    another: a cube beside a flat goal patch stands on the table as the patch does), centres
+    within NEXT_TO_MAX_DIST in the plane (m, world frame)."""
 
     a: str
     b: str
@@ -630,7 +632,7 @@ class NextTo(Predicate):
     def _evaluate(self, state):
         a, b = state[self.a], state[self.b]
         dist = float(np.linalg.norm(_planar(a) - _planar(b)))
-        dz = float(abs(a.pos[2] - b.pos[2]))
+        dz = float(abs((a.pos[2] - a.size[2] / 2) - (b.pos[2] - b.size[2] / 2)))  # bottom faces
         ok = dist <= C.NEXT_TO_MAX_DIST and dz <= C.ON_Z_TOL
         return self._result(ok, f"{self.a} {'is' if ok else 'is not'} next to {self.b} ({dist * 100:.1f} cm apart)",
                             {"distance": dist, "dz": dz}, {"distance": C.NEXT_TO_MAX_DIST, "dz": C.ON_Z_TOL})
