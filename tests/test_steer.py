@@ -942,3 +942,24 @@ def test_a_patch_recoloured_with_another_colour_said_is_not_read_as_the_patch_al
     fam = compile_instruction("put the red cube on the yellow patch", tmp_path, name="fam").path
     with pytest.raises(BadInput):  # the cube's new colour had been dropped silently
         steer(fam, "the patch should be blue and the cube green")
+
+
+@pytest.mark.parametrize("base,edit,match", [
+    # steer_stranger4 (eighth session): each compiled silently wrong before
+    ("Place a red cube in the left half of the table", "and a blue one on the right", "adds none"),  # red moved
+    ("Make a line of three purple cubes", "add a yellow one at each end", "two places"),  # one end dropped
+    ("Stack blue on red", "swap the red for the yellow one we used before", "earlier turn"),  # no such cube
+])
+def test_steering_refuses_what_it_would_apply_wrong(tmp_path, base, edit, match):
+    r = compile_instruction(base, tmp_path, name="fam")
+    fam = create_family(r.path)
+    before = (Path(fam.path) / "family.yaml").read_bytes()
+    with pytest.raises(SteerError, match=match):
+        steer(fam.path, edit)
+    assert (Path(fam.path) / "family.yaml").read_bytes() == before  # nothing half-written
+
+
+def test_a_label_put_on_a_label_is_not_added_twice():
+    """"then put C on A" of A on B had become B, A, C, A (the anchor A added as a cube)."""
+    plan = interpret("then put C on A")
+    assert all(o.op != "add" or [i.get("label") for i in o.params["items"]] == ["C"] for o in plan.ops)

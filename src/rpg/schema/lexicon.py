@@ -982,6 +982,10 @@ SAME_PATCH_RE = re.compile(r"(?i)\b(?:the\s+)?same\s+(?:goal\s+)?(?:patch|pad|ma
 """An edit's "the same patch": the task's one patch."""
 
 EDIT_INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
+    ("reference", r"\b(?:one|block|cube|colou?r)s?\s+(?:that\s+|which\s+)?(?:we|you|i)\s+(?:used|had|moved|placed|picked|took)"
+                  r"\s+(?:before|earlier|previously|last\s+time|yesterday)\b",
+     "refers to a cube of an earlier turn or session, which the edit cannot find by what happened to it; name "
+     "the version it was in (\"go back to version 1\") or say the cube's colour"),
     ("action", r"\b(?:\d+|ninety|forty[- ]five)\s*(?:degrees?|deg|°)|\bdegrees?\b|\b(?:spin|spins|spinning|twirl\w*|wobble\w*"
                r"|wiggle\w*|shake|shaking|juggle\w*|throw\w*|toss\w*|roll(?:s|ing)?|bounce\w*|knock\w*(?:\s+(?:it|them))?\s+over)\b",
      "is an action the domain does not have: a task's goal says where cubes end up and which face is up, "

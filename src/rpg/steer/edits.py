@@ -415,10 +415,15 @@ def read_ops(t: str) -> list[Op]:
     adds = [] if layer or (substitution and mats) or any(o.op in ("move", "pattern") for o in ops) else re.finditer(
         r"\b(?P<verb>add|append|include|put|place|stack|set)\b(?P<what>.*?)(?P<where>\bon top\b|\b(?:at|to|on) (?:the )?(?:very )?(?:(?:left|right|front|back) end|top|bottom|base|end|start|beginning)\b|"
         r"\b(?:under|underneath|beneath|below)\b|\bto the (?:left|right|end|start)\b|\bon the (?:left|right)\b|\bon(?:to)?(?= (?:the|it|them|that)\b)(?! the table\b)"
+        r"|\bon(?:to)?(?= (?:letter|digit) [a-z0-9]\b)"
         r"|[;,.]|\band\b|$)", t)
     add = next((a for a in adds if _adds_a_cube(a, t)), None)
     if add:
         what = add.group("what")
+        each_end = re.search(r"\b(?:at|on|to)\s+(?:each|both|either)\s+(?:ends?|sides?)\b", t)
+        if each_end:  # "add a yellow one at each end": one edit, two places (one of them had been dropped)
+            raise SteerError(f"'{each_end.group(0)}' puts cubes at two places in one edit, which the builtin steering "
+                             "does not read; add one end per edit (\"add a yellow one on the left end\"), or use --model")
         beside = EDIT_BESIDE_RE.search(what)
         second = re.search(r"\b(?:an?|another|one|\d+|new|second|other)\s+(?:[a-z]+\s+){0,2}?" + STRUCTURE_RE, what)
         if second:  # "add a pyramid of 3 yellow blocks": a second structure, not cubes of this one
@@ -430,7 +435,7 @@ def read_ops(t: str) -> list[Op]:
         where = add.group("where")
         at = "bottom" if re.search(r"bottom|base|under|beneath|below|start|beginning|left", where) else "top"
         side = beside or re.search(r"\b(left|right)\b", where)
-        target = re.match(r"\s*(?:of\s+)?(?P<sel>the\s+[a-z0-9' ]+?(?:one|block|cube)s?\b|the\s+(?:top|bottom)\b|the\s+(?:[a-z]+\s+)?letter\s+[a-z]\b"
+        target = re.match(r"\s*(?:of\s+)?(?P<sel>the\s+[a-z0-9' ]+?(?:one|block|cube)s?\b|the\s+(?:top|bottom)\b|(?:the\s+)?(?:[a-z]+\s+)?letter\s+[a-z]\b"
                           rf"|the\s+(?:[a-z]+\s+)?digit\s+\d\b|the\s+(?:{COLOR_RE})\b)", t[add.end():])
         onto = _selector(target.group("sel")) if target and re.search(r"[a-z]", where) else None
         if re.match(r"on(?:to)?$", where.strip()) and onto is None:

@@ -19,6 +19,7 @@ hash) moves the head back to that version instead of duplicating it.
 from __future__ import annotations
 
 import re
+from collections import Counter
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Literal
@@ -168,6 +169,45 @@ def resolve_reference(plan: EditPlan, hist: FamilyHistory, fam: Family) -> tuple
                     return v.version_id, [f"asset compatibility: v{v.version_id} has {wants[0]} cubes"]
             notes.append(f"no earlier version has {wants[0]} cubes; the current version's cubes are replaced")
     return head, notes
+
+
+ADDITION_OPENING_RE = re.compile(r"^\s*(?:(?:and|plus|also|now|then|ok(?:ay)?|oh)\s*,?\s+)+(?:an?|another|one|\d+)\b", re.IGNORECASE)
+"""An edit that opens with a new cube joined on ("and a blue one on the right", "also two green
+ones"): an addition, whatever else it is read as."""
+
+
+def _refuse_addition_that_drops(plan: EditPlan, fam: Family, reference: int | None, schema: TaskSchema) -> None:
+    """Refuse an addition whose new task lost a cube of the task it builds on.
+
+    An edit that adds (an ``add`` operation, or words of :data:`ADDITION_OPENING_RE` /
+    ``also``, ``too``, ``another``) keeps the rest: every cube of the reference version must
+    still be in the new one (by colour or label, counted).  A reading that lost one applied the
+    addition as a replacement ("and a blue one on the right" of a red cube on the left had moved
+    the red cube), a silent change of the task, so it is refused (issue 30's steering class 8).
+
+    Raises:
+        SteerError: a cube of the reference is missing from ``schema``.
+    """
+    additive = (any(o.op == "add" for o in plan.ops) or ADDITION_OPENING_RE.search(plan.text)
+                or re.search(r"\b(?:also|too|as well|another|in addition)\b", plan.text, re.IGNORECASE))
+    if not additive or reference is None or plan.fresh or any(o.op in ("remove", "recolor", "relabel", "material", "word",
+                                                                       "count", "dims", "colors", "swap")
+                                                              for o in plan.ops):
+        return
+
+    def cubes(sch: TaskSchema) -> Counter:
+        return Counter(a.color if a.kind == "colored_cube" else a.label for a in sch.assets if a.kind != "goal_patch")
+
+    before, after = cubes(fam.schema(reference)), cubes(schema)
+    lost = before - after
+    if any(o.op == "add" for o in plan.ops) and not lost and not after - before:
+        # the cubes it adds are not in the new task ("and a blue one on the right" read as a move)
+        raise SteerError(f"the edit \"{plan.text.strip()[:80]}\" adds a cube, but the reading of it adds none; "
+                         "say the whole task in the edit, or use --model")
+    if lost:
+        raise SteerError(f"the edit \"{plan.text.strip()[:80]}\" adds to the task, but the reading of it drops "
+                         f"{', '.join(f'the {k} cube' for k in sorted(lost))} of v{reference}; say the whole task in the edit, "
+                         "or use --model")
 
 
 def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[TaskSchema, str, str]:
@@ -559,6 +599,7 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
             schema, instruction, intent = plan_schema(plan, fam, reference)
             parameters = plan.parameters()
             _refuse_no_change(plan, fam, reference if reference == hist.head else None, schema)
+            _refuse_addition_that_drops(plan, fam, reference, schema)
         else:
             from rpg.schema.llm import llm_parse
 
