@@ -1802,3 +1802,9 @@ def test_what_stranger6_found_refused(text, expected):
 def test_a_starred_per_cube_atom_matches_one_atom_per_cube():
     assert matches("in_region(blue*,front_left)", ["in_region(blue,front_left)", "in_region(blue,front_left)"])
     assert not matches("in_region(blue*,front_left)", ["in_region(blue,front_left)", "in_region(red,front_left)"])
+
+
+def test_reads_of_a_word_matches_the_reads_atom_of_that_word():
+    got = ["line[left_to_right](D,O,G)", "reads(D,O,G;direction=left_to_right,face=up,text=DOG)"]
+    assert matches("line[left_to_right](D,O,G); reads(DOG)", got)
+    assert not matches("line[left_to_right](D,O,G); reads(GOD)", got)

@@ -188,10 +188,14 @@ def matches(expected: str, actual: list[str]) -> bool:
 
     Each expected atom must match a distinct actual atom and no actual atom may be left over.
     A per-cube atom whose cube is ``red*`` (``in_region(red*,back)``: every red cube there)
-    matches one or more actual atoms, one per red cube (``in_region(red,back)`` twice).
+    matches one or more actual atoms, one per red cube (``in_region(red,back)`` twice), and
+    ``reads(DOG)`` matches the reads atom whose text is DOG, whatever its cubes and face.
     """
     wanted = [a.strip() for a in re.split(r";\s+(?![^()]*\))", expected) if a.strip()]
     actual = list(actual)
+    for w in [w for w in wanted if re.fullmatch(r"reads\([A-Za-z0-9]+\)", w)]:  # "reads(DOG)": the word read, shortly
+        word = w[6:-1]
+        actual = [f"reads({word})" if re.fullmatch(rf"reads\([^()]*\btext={re.escape(word)}\b[^()]*\)", a) else a for a in actual]
     for w in [w for w in wanted if re.match(r"^\w+\((\w+)\*,[^,*]+\)$", w)]:
         each = w.replace("*", "", 1)
         if each in actual:  # one atom per cube of that colour (a single atom of the star form may match too)
