@@ -708,10 +708,10 @@ PREAMBLE_RE = re.compile(
     r"|benchmark|run|trial|session)\s*[:,\u2014\u2013-]\s*"
     r"|(?:success\s+(?:condition|criteri(?:on|a))|task\s+spec(?:ification)?|evaluation\s+task|eval\s+task|test\s+task"
     r"|(?:final|end|goal|target|desired)\s+scene)\s*(?::|\u2014|\u2013|-)\s*)")
-PURPOSE_RE = re.compile(r"\s+\bfor\s+(?:the|my|our|this|a)\s+(?:next\s+|first\s+|upcoming\s+)?(?:run|demo|trial|experiment|test"
+PURPOSE_RE = re.compile(r"\s+\bfor\s+(?:the|my|our|this|a)\s+(?:next\s+|first\s+|upcoming\s+)?(?P<what>run|demo|trial|experiment|test"
                         r"|eval(?:uation)?|episode|paper|video|benchmark|session)\b(?=\s*(?:[.!,;]|$))")
 """What the task is for, said last ("need a 2x2 grid of blue cubes for the next run"): nothing
-of the goal, dropped (:func:`rpg.schema.reading.normalize`)."""
+of the goal, dropped (:func:`rpg.schema.reading.normalize_words` lists ``what`` as dropped)."""
 
 ARROW_RE = re.compile(r"\b(block|cube|brick)\s*(?:->|\u2192|=>)\s*(?:the\s+)?(?=(?:front|back|rear|left|right|center|centre|middle"
                       r"|far|near)\b)")

@@ -371,6 +371,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.SOMEONE_WANTS_RE.sub("i want", text)
     text = lexicon.POLITE_CONDITION_RE.sub(" ", text)
     text = lexicon.PREAMBLE_RE.sub("", text).strip()
+    asked_by += [(m.group("what"), "what the task is for") for m in lexicon.PURPOSE_RE.finditer(text)]
     text = lexicon.PURPOSE_RE.sub("", text)
     text = lexicon.ARROW_RE.sub(r"\1 in the ", text)
     spelled = {w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)}  # "spell BOOK": a word, not a book

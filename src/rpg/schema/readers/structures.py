@@ -846,8 +846,8 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         if len(items) > 2 and sorted(role.items()) == [(0, "top"), (len(items) - 1, "bottom")]:
             items.reverse()  # "1, 2, 3 and 4 ..., 4 at the bottom and 1 on top": the list read from the top
             role = {0: "bottom", len(items) - 1: "top"}
-        elif len(items) > 2 and role in ({0: "top"}, {len(items) - 1: "bottom"}):
-            items.reverse()  # "digit cubes 9, 8, 7 with 9 on top": the one end named is the list's start, read from the top
+        elif len(items) > 2 and all(label for _, label in items) and role in ({0: "top"}, {len(items) - 1: "bottom"}):
+            items.reverse()  # "digit cubes 9, 8, 7 with 9 on top": a label sequence whose first is the top, read from the top
             role = {len(items) - 1 - i: h for i, h in role.items()}
         bottom = [items[i] for i, h in role.items() if h == "bottom"]
         top = [items[i] for i, h in role.items() if h == "top"]
