@@ -69,7 +69,8 @@ SYNONYMS: dict[str, str] = {
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
     "uppermost": "topmost", "lowermost": "bottommost", "upon": "on", "right-hand": "right", "left-hand": "left",
     "midpoint": "center", "blu": "blue", "gren": "green", "yelow": "yellow", "purpel": "purple",
-    "cirlce": "circle", "cricle": "circle", "rite": "right", "da": "the", "teh": "the", "within": "in", "towr": "tower", "tower's": "tower", "pyramd": "pyramid",
+    "cirlce": "circle", "cricle": "circle", "towr": "tower", "tower's": "tower", "pyramd": "pyramid",
+    "rite": "right", "da": "the", "teh": "the", "within": "in",
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
@@ -694,6 +695,10 @@ SOMEONE_WANTS_RE = re.compile(
 """Who asks for the task ("my supervisor wants the white cube ..."): read as "i want" (the goal is
 the same whoever asks; :func:`rpg.schema.reading.normalize_words` lists ``who`` as dropped)."""
 
+_PURPOSE = (r"(?:the|my|our|this|a)\s+(?:next\s+|first\s+|upcoming\s+)?(?P<what>run|demo|trial|experiment|test|eval(?:uation)?"
+            r"|episode|paper|video|benchmark|session)")
+"""What a task is for ("the next run", "my demo"): :data:`PREAMBLE_RE` (said first) and :data:`PURPOSE_RE` (said last)."""
+
 PREAMBLE_RE = re.compile(
     r"^\s*(?:(?:when|once)\s+(?:the\s+robot\s+|it\s+|you\s+|the\s+task\s+)?(?:is|are|has|have)\s+(?:finished|done|completed?)"
     r"(?:\s+with\s+(?:it|the\s+task))?\s*,?\s*(?:the\s+(?:table|scene|workspace)|it|everything)\s+should\s+look\s+like\s+"
@@ -704,12 +709,15 @@ PREAMBLE_RE = re.compile(
     r"|(?:i|we)\s+(?:was|were|am|are)\s+(?:just\s+)?thinking|(?:i'?m|we'?re)\s+(?:just\s+)?thinking)\s*[,:.;\u2014\u2013-]*\s*"
     r"|(?:(?:ok(?:ay)?|so|alright|right|well)\s*,?\s+)*let(?:'s|\s+us)\s+(?:do|try|make|build)\s+something"
     r"(?:\s+(?:fun|cool|new|different|simple|easy|nice|interesting|quick))?\s*[:,.!;\u2014\u2013-]\s*"
-    r"|for\s+(?:the|my|our|this|a)\s+(?:next\s+|first\s+|upcoming\s+)?(?:demo|experiment|test|eval(?:uation)?|video|paper"
-    r"|benchmark|run|trial|session)\s*[:,\u2014\u2013-]\s*"
+    r"|for\s+" + _PURPOSE + r"\s*[:,\u2014\u2013-]\s*"
     r"|(?:success\s+(?:condition|criteri(?:on|a))|task\s+spec(?:ification)?|evaluation\s+task|eval\s+task|test\s+task"
     r"|(?:final|end|goal|target|desired)\s+scene)\s*(?::|\u2014|\u2013|-)\s*)")
-PURPOSE_RE = re.compile(r"\s+\bfor\s+(?:the|my|our|this|a)\s+(?:next\s+|first\s+|upcoming\s+)?(?P<what>run|demo|trial|experiment|test"
-                        r"|eval(?:uation)?|episode|paper|video|benchmark|session)\b(?=\s*(?:[.!,;]|$))")
+"""Framing that names when the goal holds or heads the spec, said before it ("When the robot is
+finished, the table should look like this.", "At the end, ...", "Picture the final scene: ...",
+"Success condition: ...", "Task spec \u2014 ..."): every goal is checked at the end of the episode, so
+the words are dropped before conditions and time are refused (:func:`rpg.schema.reading.normalize`)."""
+
+PURPOSE_RE = re.compile(r"\s+\bfor\s+" + _PURPOSE + r"\b(?=\s*(?:[.!,;]|$))")
 """What the task is for, said last ("need a 2x2 grid of blue cubes for the next run"): nothing
 of the goal, dropped (:func:`rpg.schema.reading.normalize_words` lists ``what`` as dropped)."""
 
@@ -717,10 +725,7 @@ ARROW_RE = re.compile(r"\b(block|cube|brick)\s*(?:->|\u2192|=>)\s*(?:the\s+)?(?=
                       r"|far|near)\b)")
 """A cube sent to a place with an arrow ("blue cube -> front left corner"): read as "in the"."""
 
-"""Framing that names when the goal holds or heads the spec, said before it ("When the robot is
-finished, the table should look like this.", "At the end, ...", "Picture the final scene: ...",
-"Success condition: ...", "Task spec \u2014 ..."): every goal is checked at the end of the episode, so
-the words are dropped before conditions and time are refused (:func:`rpg.schema.reading.normalize`)."""
+
 
 STRUCTURE_NOUN = "(?:" + "|".join(sorted({w for k in STRUCTURE_KINDS.values() for w in (*k.words, *k.described_by)}
                                            - {"square", "pile"} | {"wall"})) + ")"

@@ -34,6 +34,7 @@ from rpg.schema.edits import recolor
 from rpg.schema.feasibility import check_feasibility
 from rpg.schema.lexicon import (
     COLOR_RE,
+    EDIT_ADDITIVE_RE,
     EDIT_KEEP_THEN_ADD_RE,
     NO_GOAL_RE,
     SAME_CUBES_RE,
@@ -177,30 +178,33 @@ ones"): an addition, whatever else it is read as."""
 
 
 def _refuse_addition_that_drops(plan: EditPlan, fam: Family, reference: int | None, schema: TaskSchema) -> None:
-    """Refuse an addition whose new task lost a cube of the task it builds on.
+    """Refuse an addition whose new task lost a cube of the task it builds on, or gained none.
 
     An edit that adds (an ``add`` operation, or words of :data:`ADDITION_OPENING_RE` /
-    ``also``, ``too``, ``another``) keeps the rest: every cube of the reference version must
-    still be in the new one (by colour or label, counted).  A reading that lost one applied the
-    addition as a replacement ("and a blue one on the right" of a red cube on the left had moved
-    the red cube), a silent change of the task, so it is refused (issue 30's steering class 8).
+    :data:`~rpg.schema.lexicon.EDIT_ADDITIVE_RE`) keeps the rest: every cube of the reference
+    version must still be in the new one (by what a person calls it, counted), and an ``add``
+    operation must bring in at least one cube.  A reading that fails either applied the
+    addition as a replacement or a move ("and a blue one on the right" of a red cube on the left
+    had moved the red cube), a silent change of the task, so it is refused (issue 30's steering
+    class 8).
 
     Raises:
-        SteerError: a cube of the reference is missing from ``schema``.
+        SteerError: a cube of the reference is missing from ``schema``, or an ``add`` added none.
     """
-    additive = (any(o.op == "add" for o in plan.ops) or ADDITION_OPENING_RE.search(plan.text)
-                or re.search(r"\b(?:also|too|as well|another|in addition)\b", plan.text, re.IGNORECASE))
-    if not additive or reference is None or plan.fresh or any(o.op in ("remove", "recolor", "relabel", "material", "word",
-                                                                       "count", "dims", "colors", "swap")
-                                                              for o in plan.ops):
+    from rpg.schema.meaning import descriptor
+
+    adds = any(o.op == "add" for o in plan.ops)
+    if not (adds or ADDITION_OPENING_RE.search(plan.text) or EDIT_ADDITIVE_RE.search(plan.text.lower())) \
+            or reference is None or plan.fresh or any(o.op in ("remove", "recolor", "relabel", "material", "word", "count",
+                                                              "dims", "colors", "swap") for o in plan.ops):
         return
 
     def cubes(sch: TaskSchema) -> Counter:
-        return Counter(a.color if a.kind == "colored_cube" else a.label for a in sch.assets if a.kind != "goal_patch")
+        return Counter(descriptor(a) for a in sch.assets if a.kind != "goal_patch")
 
     before, after = cubes(fam.schema(reference)), cubes(schema)
     lost = before - after
-    if any(o.op == "add" for o in plan.ops) and not lost and not after - before:
+    if adds and not lost and not after - before:
         # the cubes it adds are not in the new task ("and a blue one on the right" read as a move)
         raise SteerError(f"the edit \"{plan.text.strip()[:80]}\" adds a cube, but the reading of it adds none; "
                          "say the whole task in the edit, or use --model")
