@@ -963,3 +963,44 @@ def test_a_label_put_on_a_label_is_not_added_twice():
     """"then put C on A" of A on B had become B, A, C, A (the anchor A added as a cube)."""
     plan = interpret("then put C on A")
     assert all(o.op != "add" or [i.get("label") for i in o.params["items"]] == ["C"] for o in plan.ops)
+
+
+@pytest.mark.parametrize("base, edits, want", [
+    # a misspelt word of the vocabulary, corrected before the edit is read ("ontop", "yelow", "insted")
+    ("Put the black cube next to the white cube", ["actually put it ontop of the white one"], ("modify", ["stack(white,black)"])),
+    ("Put a red cube, a green cube and a blue cube in a line from left to right", ["and stick a yelow one on the far right end"],
+     ("extend", ["line[left_to_right](red,green,blue,yellow)"])),
+    ("Build a tower of three blue cubes", ["put a red one at the bottom insted of a blue one"], ("tweak", ["stack(red,blue,blue)"])),
+    # "nah" opens a correction; a cube next to a patch put on it
+    ("Put the orange cube next to the green patch", ["nah put it ON the patch"], ("modify", ["on_patch(orange,patch:green)"])),
+    # a count said as "enough"
+    ("Place three white cubes on the black patch", ["just one is enough tbh"], ("tweak", ["on_patch(white,patch:black)"])),
+    # a place on the table said alone, or "along" an edge, or by the structure's noun
+    ("Build a tower of three orange cubes", ["fine, front of the table then"], ("modify", ["stack(orange,orange,orange)@front"])),
+    ("Put a green cube in the front right corner", ["other corner - front left"], ("modify", ["in_region(green,front_left)"])),
+    ("Put three blue cubes in a line", ["and put it along the left edge"], ("modify", ["line(blue,blue,blue)@left"])),
+    # two related cubes moved together keep their relation
+    ("Put the yellow cube to the right of the purple cube", ["move both of them to the back of the table"],
+     ("modify", ["in_region(purple,back)", "in_region(yellow,back)", "right_of(yellow,purple)"])),
+    # a cube at one end of an ordered line moved to the other end
+    ("Put three cubes in a row: purple, orange, cyan from left to right", ["move the purple one to the other end"],
+     ("modify", ["line[left_to_right](orange,cyan,purple)"])),
+    # a row "of red cubes" added on top of a wall, then its colour corrected ("green not red")
+    ("Build a wall of blue cubes, 4 long and 2 high", ["add a third row of red cubes on top", "make that top row green not red"],
+     ("tweak", ["wall(blue,blue,blue,blue|blue,blue,blue,blue|green,green,green,green)"])),
+])
+def test_edits_of_a_stranger_set_said_loosely(tmp_path, base, edits, want):
+    """Each was refused (steer_stranger4.yaml's first run)."""
+    assert _steered(tmp_path, base, *edits)[-1] == want
+
+
+@pytest.mark.parametrize("base, edit, match", [
+    ("Put three cubes in a row: purple, orange, cyan from left to right", "move the orange one to the other end", "no one end"),
+    ("Put the yellow cube to the right of the purple cube", "move it to the back of the table", "not a structure"),
+    ("Build a tower of red, blue and green cubes", "move the green one to the other end", "no places"),
+])
+def test_loose_edits_that_stay_refused(tmp_path, base, edit, match):
+    """"The other end" of a cube in the middle; "it" of two related cubes (which one moves?); a cube of an unordered tower."""
+    fam = compile_instruction(base, tmp_path, name="fam").path
+    with pytest.raises(SteerError, match=match):
+        steer(fam, edit)

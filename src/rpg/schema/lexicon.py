@@ -25,6 +25,7 @@ east = its right (-y), west = its left (+y).
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from functools import lru_cache
 
 from rpg.domain.palette import COLOR_ALIASES, PALETTE
@@ -43,7 +44,7 @@ nice nicely neat tidy tidily maybe perhaps possibly need needs needed want wants
 try trying attempt anywhere somewhere flat flatly thanks thank cool great gonna wanna um uh yeah alright
 help wood wooden plastic properly securely stably steadily safely accurately completely entirely fully pls plz sure
 basically essentially literally honestly yo hello ty thx hiya howdy asap today tonight morning afternoon evening fine
-quick quickly haha lol good love exercise cheers
+quick quickly haha lol good love exercise cheers tbh imo
 """.split())
 """Further words with no meaning for the goal, each checked not to change what a task asks:
 hedges ("maybe"), wishes ("I need", "we'll", "let's"), praise ("nice"), "anywhere", "lay it
@@ -61,6 +62,14 @@ TEXTURED_RE = re.compile(r"\b(?:the\s+)?(?:object|block|cube)\s+with\s+(?:the\s+
 """A cube named by its texture ("the object with red texture", ClevrSkills): read as the cube
 of that colour when the word is a colour (:func:`rpg.schema.reading.normalize`)."""
 
+TYPOS: dict[str, str] = {
+    "blu": "blue", "gren": "green", "yelow": "yellow", "purpel": "purple", "cirlce": "circle", "cricle": "circle",
+    "towr": "tower", "pyramd": "pyramid", "rite": "right", "da": "the", "teh": "the", "ontop": "on top",
+    "insted": "instead", "instaed": "instead", "isntead": "instead",
+}
+"""Misspellings of a word of the vocabulary, each read as that word (curated, never a guess; the
+steering corrects an edit's words with this table before reading it)."""
+
 SYNONYMS: dict[str, str] = {
     "brick": "block", "bricks": "blocks", "ground": "table", "floor": "table", "tabletop": "table",
     "desk": "table", "rightmost": "right", "leftmost": "left", "frontmost": "front", "backmost": "back",
@@ -68,9 +77,7 @@ SYNONYMS: dict[str, str] = {
     "subsequently": "then", "organize": "arrange", "organise": "arrange", "organized": "arranged",
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
     "uppermost": "topmost", "lowermost": "bottommost", "upon": "on", "right-hand": "right", "left-hand": "left",
-    "midpoint": "center", "blu": "blue", "gren": "green", "yelow": "yellow", "purpel": "purple",
-    "cirlce": "circle", "cricle": "circle", "towr": "tower", "tower's": "tower", "pyramd": "pyramid",
-    "rite": "right", "da": "the", "teh": "the", "within": "in",
+    "midpoint": "center", "tower's": "tower", "within": "in", **TYPOS,
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
@@ -625,7 +632,7 @@ EDIT_RELATIONS: tuple[tuple[str, str], ...] = (
     (r"\bfar\s+(?:apart|away|from)\b|\baway\s+from\b", "far_from"),
     (r"\bnext to\b|\bbeside\b|\badjacent\b|\bnear\b|\bclose to\b|\bside by side\b", "next_to"),
     (r"\bunder(?:neath)?\b|\bbelow\b|\bbeneath\b", "under"),
-    (r"\bon top\b|\bonto\b|\batop\b|\bstack(?:ed|ing)?\b|\bon (?:it|them|the \w+ (?:block|cube))\b", "on"),
+    (r"\bon top\b|\bonto\b|\batop\b|\bstack(?:ed|ing)?\b|\bon (?:it|them|the \w+ (?:block|cube)|the (?:\w+ )?(?:goal )?patch)\b", "on"),
 )
 """The relation a steering edit names ("put it on the left instead"), most specific first:
 words of an edit, where a side alone names the relation (:mod:`rpg.steer.relations`)."""
@@ -926,16 +933,17 @@ EDIT_LEADING_RE = re.compile(r"^\s*(?:now|ok(?:ay)?|actually|instead|then|next|a
 """Words that open an edit and say nothing of the task ("ok now ...", "also ...")."""
 
 EDIT_INTERJECTION_RE = re.compile(
-    r"^\s*(?:(?:(?:no|nope|nah)(?=\s*[,.!;]|\s+(?:wait|sorry|actually|hold\s+on|scratch))|wait|hold\s+on|sorry|oops|hmm+|um+|uh+)"
+    r"^\s*(?:(?:(?:no(?=\s*[,.!;]|\s+(?:wait|sorry|actually|hold\s+on|scratch))|nope\b|nah\b)|wait|hold\s+on|sorry|oops|hmm+|um+|uh+)"
     r"\s*[,.!;]*\s*)+(?=\S)")
 """Words that open an edit as a correction and say nothing of the task ("no wait, put it next
-to the blue block", "sorry, make it red"): not a negation, nor a time ("wait")."""
+to the blue block", "sorry, make it red", "nah put it on the patch"): not a negation, nor a time
+("wait"); "no" opens one only before a pause or a correction word ("no blue blocks" is a negation)."""
 
 INTENSIFIER_RIGHT_RE = re.compile(r"(?i)\b(?:right|directly|just)\s+(?=next\s+to\b|on\s+top\b|onto\b|behind\b|beside\b|in\s+front\b"
                                   r"|above\b|under\b|below\b|between\b|in\s+(?:the\s+)?(?:middle|center|centre)\b)")
 """"Right" that only stresses a place ("right next to the blue block"): not the side "right"."""
 
-EDIT_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
+EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
     (re.compile(r"(?i)\bon\s+top\s+of\s+(?:that|this)(?!\s+\w+\s+(?:block|cube|one)\b)"), "on top of the tower"),  # "and a T on top of that"
     (re.compile(r"(?i)^\s*(?:and|plus)(?:\s+(?:now|then|also))?\s+(?=(?:a|an|another|one\s+more|\d+)\s)"), "add "),  # "and (now) a red block on top"
     (re.compile(r"(?i)\blay\s+(them|it|everything|the\s+(?:blocks|cubes))\s+out\b"), r"put \1"),  # "lay them out in a line"
@@ -950,11 +958,27 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     # "fine. make the cube white then": the opening word and the closing "then" say nothing of the change
     (re.compile(r"(?i)^\s*(?:fine|ok(?:ay)?|alright|right|cool|great|sure)\s*[.,!]\s*"), ""),
     (re.compile(r"(?i)\s+then\s*[.!]?\s*$"), ""),
+    # "front of the table then", "other corner - front left": a place alone, where the task goes now
+    (re.compile(r"(?i)^\s*(?:(?:the\s+)?other\s+corner\s*[-:,\u2013\u2014]+\s*)(?:the\s+)?((?:front|back)[\s-]+(?:left|right))(?:\s+corner)?"
+                r"\s*(?:instead|please|now)?\s*[.!]?\s*$"), r"move it to the \1 corner"),
+    (re.compile(r"(?i)^\s*(?:(?:to|at|on|in|into)\s+)?(?:the\s+)?((?:front|back|rear|left|right)(?:[\s-]+(?:left|right))?"
+                r"(?:[\s-]+(?:hand\s+)?(?:side|corner|half|edge|part))?\s+of\s+the\s+table|(?:front|back|rear)[\s-]+(?:left|right)\s+corner)"
+                r"\s*(?:instead|please|now)?\s*[.!]?\s*$"), r"move it to the \1"),
     # "put D on top": a new letter or digit cube said by its label alone
     (re.compile(r"\b(put|place|stack|add)\s+([A-Z]|\d)\s+(?=on\s+top\b|at\s+the\s+top\b|on\s+it\b)"), r"\1 a \2 "),
     # "pop a green one on top": the verbs of a casual writer for putting a cube
     (re.compile(r"(?i)\b(?:pop|plonk|plop|stick|chuck|slap|whack)\s+(?=(?:a|an|another|one|the|\d+)\s)"), "put "),
     (re.compile(rf"(?i)\b(?:that|this)\s+(?=(?:{COLOR_RE})\s+(?:one|block|cube)\b)"), "the "),  # "make that blue one white"
+    # "make the top row green not red": a colour corrected, not a negation
+    (re.compile(rf"(?i)\b({COLOR_RE})\s*,?\s+(?:and\s+)?not\s+({COLOR_RE})\b(?!\s+(?:block|cube|one|patch)s?\b)"), r"\1 instead of \2"),
+    # "just one is enough", "3 blocks will do": a count alone
+    (re.compile(r"(?i)^\s*(?:(?:just|only)\s+)?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?:\s+(?:blocks?|cubes?))?\s+"
+                r"(?:is|are|will|would|should)\s+(?:be\s+)?(?:do|enough|fine|plenty|ok(?:ay)?|sufficient)"
+                r"(?:\s+(?:tbh|really|honestly|imo|i\s+think))*\s*[.!]?\s*$"), r"\1"),
+    # "put a red one at the bottom instead of a blue one": the cube at that end, recoloured
+    (re.compile(rf"(?i)\b(?:put|place|use|have)\s+an?\s+({COLOR_RE})\s+(?:one|block|cube)\s+(?:at\s+the\s+(top|bottom)|on\s+(top))\s+"
+                rf"(?:instead\s+of|rather\s+than|in\s+place\s+of)\s+(?:an?|the)\s+(?:{COLOR_RE})\s+(?:one|block|cube)\b"),
+     lambda m: f"make the {m.group(2) or m.group(3)} one {m.group(1)}"),
     # "make it taller, 4 blocks": the count it grows (or shrinks) to
     (re.compile(r"(?i)\b(taller|higher|longer|shorter|smaller|bigger|lower)\s*[,:;-]?\s+"
                 r"(?=(?:\d+|two|three|four|five|six|seven|eight)\s+(?:blocks|cubes)\b)"), r"\1 to "),

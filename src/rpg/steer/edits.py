@@ -44,6 +44,7 @@ from rpg.schema.lexicon import (
     INEXPRESSIBLE,
     INTENSIFIER_RIGHT_RE,
     NUMBER_WORDS,
+    TYPOS,
     VOCAB,
     is_dictionary_word,
 )
@@ -124,6 +125,9 @@ class EditPlan:
 # ---------------------------------------------------------------------------
 # Reading
 # ---------------------------------------------------------------------------
+
+TYPO_RE = re.compile(r"(?i)\b(?:" + "|".join(sorted(TYPOS, key=len, reverse=True)) + r")\b")
+"""A misspelt word of the vocabulary (:data:`rpg.schema.lexicon.TYPOS`)."""
 
 FRESH_RE = EDIT_FRESH_RE
 ANAPHORA_RE = EDIT_ANAPHORA_RE
@@ -305,6 +309,7 @@ def _region_of(t: str) -> str | None:
     from rpg.steer.relations import _edit_region
 
     m = re.search(r"\b(?:move|put|place|shift|bring|slide|build|set|push|have|make|keep)\s+(?:it|them|everything|the\s+whole\s+thing"
+                  r"|(?:both|all)\s+of\s+them|them\s+(?:both|all)"
                   r"|(?:the\s+)?(?:whole\s+|entire\s+)?(?:" + STRUCTURE_RE + r"|wall|blocks|cubes))\s+(?P<where>.*)", t)
     if not m:
         return None
@@ -380,11 +385,15 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("material", {"to": mats[0] if len(mats) == 1 else "mixed", **({"from": source[0]} if source else {})}))
     move = re.search(r"\b(?:put|move|place|bring)\s+the\s+(?P<sel>(?:[a-z0-9']+\s+){0,2}?[a-z0-9']+)\s+(?:one|block|cube)?\s*(?:at|to|on)\s+(?:the\s+)?"
                      r"(?:very\s+)?(?P<where>top|bottom|base|start|end|beginning)\b(?!\s+(?:of\s+the\s+table|left|right|corner))", t)
+    other = re.search(r"\b(?:put|move|place|bring|shift)\s+the\s+(?P<sel>(?:[a-z0-9']+\s+){0,2}?[a-z0-9']+)\s+(?:one|block|cube)?\s*"
+                      r"(?:to|at|on)\s+the\s+(?:other|opposite)\s+end\b", t)
+    if other and not move and _selector(other.group("sel")):  # "move the purple one to the other end": of the two ends of its order
+        move = other
     region = _region_of(t)
     if region:
         ops.append(Op("region", {"region": region}))
     if move and _selector(move.group("sel")) and not region:
-        at = "bottom" if move.group("where") in ("bottom", "base", "start", "beginning") else "top"
+        at = "other" if move is other else "bottom" if move.group("where") in ("bottom", "base", "start", "beginning") else "top"
         ops.append(Op("move", {"select": _selector(move.group("sel")), "at": at}))
     pattern = re.search(r"\balternat\w*\b", t)
     pattern_colors = [canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", t)] if pattern else []
@@ -405,7 +414,8 @@ def read_ops(t: str) -> list[Op]:
                       r"|fourth\s+|new\s+|extra\s+)?(?:row|layer|level|tier)\b(?P<rest>.*)", t) or \
         re.match(r"\s*(?:and\s+|now\s+|plus\s+)?(?:1\s+more|one\s+more|another|an\s+extra|1\s+extra)\s+(?:row|layer|level|tier)\b"
                  r"(?P<rest>.*)", t)  # "one more row"
-    if layer and not re.search(r"\b(?:blocks?|cubes?)\b", layer.group("rest")):
+    if layer and region is None and not re.search(r"\b(?:blocks?|cubes?)\b", re.sub(  # "put the row on the right side": a move
+            rf"^\s*of\s+(?:(?:{COLOR_RE})\s+)?(?:blocks|cubes)\b", " ", layer.group("rest"))):  # "a third row of red cubes"
         rest = layer.group("rest")
         if re.search(r"\b(?:bottom|under|below|beneath|base|left|right|front|back|beside|next)\b", rest):
             raise SteerError(f"'{layer.group(0).strip()}': the builtin steering adds a row or layer on top only; "
@@ -413,7 +423,7 @@ def read_ops(t: str) -> list[Op]:
         color = re.search(rf"\b({COLOR_RE})\b", rest)
         ops.append(Op("add_layer", {"color": canon_color(color.group(1)) if color else None}))
     adds = [] if layer or (substitution and mats) or any(o.op in ("move", "pattern") for o in ops) else re.finditer(
-        r"\b(?P<verb>add|append|include|put|place|stack|set)\b(?P<what>.*?)(?P<where>\bon top\b|\b(?:at|to|on) (?:the )?(?:very )?(?:(?:left|right|front|back) end|top|bottom|base|end|start|beginning)\b|"
+        r"\b(?P<verb>add|append|include|put|place|stack|set)\b(?P<what>.*?)(?P<where>\bon top\b|\b(?:at|to|on) (?:the )?(?:very |far )?(?:(?:left|right|front|back) end|top|bottom|base|end|start|beginning)\b|"
         r"\b(?:under|underneath|beneath|below)\b|\bto the (?:left|right|end|start)\b|\bon the (?:left|right)\b|\bon(?:to)?(?= (?:the|it|them|that)\b)(?! the table\b)"
         r"|\bon(?:to)?(?= (?:letter|digit) [a-z0-9]\b)"
         r"|[;,.]|\band\b|$)", t)
@@ -592,6 +602,7 @@ def interpret(edit: str) -> EditPlan:
     if not edit or not edit.strip():
         raise SteerError("the edit is empty; say what to change, e.g. \"add a green block on top\"")
     edit = INTENSIFIER_RIGHT_RE.sub("", EDIT_INTERJECTION_RE.sub("", edit)) or edit  # "no wait, put it right next to ..."
+    edit = TYPO_RE.sub(lambda m: TYPOS[m.group(0).lower()], edit)  # "put a yelow one ontop": the words meant
     for pattern, replacement in EDIT_REWRITES:
         edit = pattern.sub(replacement, edit)
     count = EDIT_COUNT_ALONE_RE.fullmatch(edit)
@@ -1045,15 +1056,21 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             spec = replace(spec, direction=p["to"], axis=None)
         elif o.op == "move":
             if spec.kind.spells and not _orders_cubes(spec):
-                raise SteerError(f"the {spec.structure}'s goal gives its cubes no places (any order holds), so one moved to its "
-                                 f"{p['at']} cannot be judged alone; say the order of the whole {spec.structure}")
+                raise SteerError(f"the {spec.structure}'s goal gives its cubes no places (any order holds), so one moved to "
+                                 f"{'the other end' if p['at'] == 'other' else 'its ' + p['at']} cannot be judged alone; say the order of the whole {spec.structure}")
             idx = _indices(spec, p["select"], anchors)
             if not idx:
                 raise SteerError(f"the task has no cube matching {p['select']} to move; it has "
                                  f"{', '.join(i.phrase() for i in spec.items)}")
             items = list(spec.items)
+            at = p["at"]
+            if at == "other":  # "to the other end": the end the cube does not stand at
+                if idx[0] not in (0, len(items) - 1) or len(items) < 2 or len(idx) > 1:
+                    raise SteerError(f"'the other end': {spec.items[idx[0]].phrase()} stands at no one end of the {spec.structure}; "
+                                     "say which end it goes to (\"move it to the top\", \"... to the right end\")")
+                at = "top" if idx[0] == 0 else "bottom"
             moved = items.pop(idx[0])
-            spec = spec.with_items([moved] + items if p["at"] == "bottom" else items + [moved])
+            spec = spec.with_items([moved] + items if at == "bottom" else items + [moved])
             if spec.ordering:
                 spec = replace(spec, ordering=None)
         elif o.op == "pattern":

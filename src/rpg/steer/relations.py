@@ -80,6 +80,8 @@ def relation_of(schema: TaskSchema) -> Relation | None:
 
 def _phrase(schema: TaskSchema, name: str) -> str:
     asset = next(a for a in schema.assets if a.name == name)
+    if asset.kind == "goal_patch":
+        return f"the {asset.color} goal patch"
     if asset.kind == "semantic_cube":
         return f"the block with the {'digit' if (asset.label or '').isdigit() else 'letter'} {asset.label}"
     return f"the {asset.color} block"
@@ -131,7 +133,30 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
             return None
     if kind == "under":
         subject, obj, kind = obj, subject, "on"
+    patches = {a.name for a in schema.assets if a.kind == "goal_patch"}
+    if subject in patches:
+        return None  # "swap them" of a cube by a patch: a patch is placed by the task, not moved
+    if obj in patches and kind == "on":  # "put it on the patch": a cube on a patch lies on it
+        return f"Place {_phrase(schema, subject)} on {_phrase(schema, obj)}", "modify"
     return f"Place {_phrase(schema, subject)} {PHRASES[kind]} {_phrase(schema, obj)}", "modify"
+
+
+def rewrite_moved(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
+    """"Move both of them to the back of the table" of a relation task: the relation kept, both
+    cubes in that region (Modify).  Only for an edit that names both ("both", "them", "the pair",
+    "everything"); "move it to the back" of two related cubes does not say which moves.  Returns
+    the whole-task instruction and intent, or None."""
+    rel = relation_of(schema)
+    t = " " + edit.lower().strip().rstrip(".!") + " "
+    if rel is None or not re.search(r"\b(?:both|them|they|pair|everything|all\s+of\s+it|whole\s+thing)\b", t):
+        return None
+    region = _edit_region(t)
+    kinds = {a.name: a.kind for a in schema.assets}
+    if region is None or "goal_patch" in (kinds[rel.subject], kinds[rel.object]):
+        return None
+    subject, obj = _phrase(schema, rel.subject), _phrase(schema, rel.object)
+    first = f"Stack {subject} on {obj}" if rel.kind == "on" else f"Place {subject} {PHRASES[rel.kind]} {obj}"
+    return f"{first}, then place {subject} {_region_phrase(region)}, then place {obj} {_region_phrase(region)}", "modify"
 
 
 def _edit_relation(t: str) -> str | None:
@@ -222,14 +247,14 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         shape, intent = "long", "tweak"
     elif re.search(r"\b(?:square|short(?:er)?|small(?:er)?)\b", t) and shape != "square":
         shape, intent = "square", "tweak"
-    count = re.search(r"\b(\d+|two|three|four|five|six)\s+(?:blocks|cubes)\b", t)
+    count = re.search(r"\b(\d+|one|two|three|four|five|six)\s+(?:blocks|cubes)\b", t)  # "use one blocks instead": a count said alone
     added = re.search(rf"\badd\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b", t) or \
         re.fullmatch(rf"\s*(?:and\s+|now\s+|also\s+)*(?:put\s+|place\s+)?(?:the|a|an)\s+({COLOR_RE})\s+(?:block|cube|one)\s+"
                      rf"(?:(?:on|onto|in)\s+(?:the\s+(?:{COLOR_RE}\s+)?(?:goal\s+)?patch|it)\s+)?(?:too|as well)\s*", t) or \
         re.fullmatch(rf"\s*(?:and\s+|now\s+)*(?:also\s+)?(?:put|place|move|bring|slide|push)\s+(?:the|a|an)\s+({COLOR_RE})\s+(?:block|cube|one)\s+"
                      rf"(?:on|onto|in)\s+(?:the\s+(?:{pcolor}\s+)?(?:goal\s+)?patch|it)\s*(?:too|as well)?\s*", t)
     if count:
-        n = {"two": 2, "three": 3, "four": 4, "five": 5, "six": 6}.get(count.group(1)) or int(count.group(1))
+        n = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}.get(count.group(1)) or int(count.group(1))
         if not 1 <= n <= 6:
             return None
         # cubes of one colour stay one colour ("2 blue cubes on the patch", "3 instead"); else new colours
@@ -248,7 +273,7 @@ REGION_PHRASES = {"center": "in the center of the table", "left": "on the left s
 """How a canonical instruction states each region (corners: "in the back left corner of the table")."""
 
 EDIT_REGION_RE = re.compile(
-    r"\b(?:to|in|at|into|toward|towards|on)\s+the\s+(?:(?P<fb>front|back|rear|far|near)[\s-]+)?"
+    r"\b(?:to|in|at|into|toward|towards|on|along)\s+the\s+(?:(?P<fb>front|back|rear|far|near)[\s-]+)?"
     r"(?P<lr>left|right|middle|center|centre)?(?:[\s-]*(?:hand\s+)?(?P<part>side|corner|half|edge|end|part))?\b")
 
 

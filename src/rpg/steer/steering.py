@@ -69,6 +69,7 @@ from rpg.steer.family import (
 from rpg.steer.relations import (
     relation_of,
     remove_cubes,
+    rewrite_moved,
     rewrite_patch,
     rewrite_region,
     same_assets,
@@ -227,7 +228,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         plan = replace(plan, text=SAME_PATCH_RE.sub(f"the {patches[0]} patch", plan.text))
     if ref_schema is not None:
         relational = (rewrite_relation(plan.text, ref_schema) or rewrite_patch(plan.text, ref_schema)
-                      or rewrite_region(plan.text, ref_schema))
+                      or rewrite_region(plan.text, ref_schema) or rewrite_moved(plan.text, ref_schema))
         if relational is not None:  # "put it in front instead", "swap them": the reference's relation, changed
             instruction, intent = relational
             return parse(instruction), instruction, intent
