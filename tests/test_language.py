@@ -1808,3 +1808,43 @@ def test_reads_of_a_word_matches_the_reads_atom_of_that_word():
     got = ["line[left_to_right](D,O,G)", "reads(D,O,G;direction=left_to_right,face=up,text=DOG)"]
     assert matches("line[left_to_right](D,O,G); reads(DOG)", got)
     assert not matches("line[left_to_right](D,O,G); reads(GOD)", got)
+
+
+@pytest.mark.parametrize("text,kind", [
+    # found by an attack on the framing words: each compiled with the time, pose or correction dropped
+    ("my supervisor wants the red cube on the blue cube, but I want it on the green cube.", "contradiction"),
+    ("Put the red cube on the blue cube, but put it on the green cube.", "contradiction"),
+    ("Put the red cube on the blue cube for the next run, and for the run after that on the green cube.", "time"),
+    ("Initially the blue cube is on the green patch. Put the red cube on the blue cube.", "time"),
+    ("Put the red cube on the blue cube at the end, and the blue cube on the green patch at the beginning.", "time"),
+    ("The red cube used to be on the blue cube.", "time"),
+    ("Success condition: the red cube was on the blue cube.", "time"),
+    ("Success condition: the red cube had been on the blue cube.", "time"),
+    ("Put the red cube on the blue cube in the morning.", "time"),
+    ("For the demo: the red cube lies on its side on the blue cube.", "action"),
+    ("Picture the final scene: the red cube rests on its corner on the blue cube.", "action"),
+    ("The red cube lies on the green patch, standing on its side.", "action"),
+    ("For the demo: the letter A cube on the red patch with the A facing down.", "action"),
+    ("Put the red cube left of the blue cube. Colours don't matter.", "contradiction"),
+])
+def test_times_poses_and_corrections_hidden_among_framing_words_are_refused(text, kind):
+    with pytest.raises(Inexpressible) as exc:
+        parse(text)
+    assert kind in {k for k, _, _ in exc.value.reasons}
+
+
+@pytest.mark.parametrize("text", ["Stack the A cube on the B cube with the letters facing the camera",
+                                  "Put the A cube on the red patch with the A facing up"])
+def test_a_face_said_of_a_task_whose_goal_judges_no_face_is_refused(text):
+    """The face was dropped: the goal only placed the cube."""
+    with pytest.raises(ParseError, match="facing"):
+        parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("Spell CAT with the letters facing up", ["line[left_to_right](C,A,T)", "reads(C,A,T;direction=left_to_right,face=up,text=CAT)"]),
+    ("Make a line with red at the beginning and blue at the end", ["line(blue,red)"]),  # a place in the line, not a time
+    ("Build a tower of three cubes, colours don't matter", ["stack(red,blue,green)"]),  # no colour said: nothing dropped
+])
+def test_faces_ends_and_free_colours_that_are_read(text, expected):
+    assert meaning(parse(text)) == expected

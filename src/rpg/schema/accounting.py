@@ -61,7 +61,7 @@ class Mention:
 RELATION_WORDS: tuple[tuple[str, str], ...] = tuple(
     (r"\b(?:" + "|".join(p for p in (P.PREDICATES[name].phrases, P.PREDICATES[name].loose_phrases) if p) + r")\b",
      " ".join((name, *P.PREDICATES[name].carried_by)))
-    for name in (*PAIRWISE_RELATIONS, "between"))
+    for name in (*PAIRWISE_RELATIONS, "between", "label_facing"))
 """Relation words (normalised text) -> the goal predicates that can carry them: each relation's
 ``phrases`` and ``loose_phrases`` with itself and its ``carried_by`` (:mod:`rpg.domain.predicates`)."""
 

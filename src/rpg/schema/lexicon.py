@@ -179,9 +179,25 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                r"|drawers?|shelf|shelves|baskets?|bins?|trays?|doors?|triangles?\s+(?:block|piece)s?|rods?)\b",
      "names an object the domain does not have: it has only 5 cm cubes (coloured, optionally labelled) "
      "and flat coloured patches on the table"),
+    ("action", r"\bon\s+(?:its|their|one|an?)\s+(?:sides?|edges?|corners?|ends?|points?|tips?)\b|\bon\s+end\b|\bbalanc\w+"
+               r"|\b(?:tilt\w*|tipped|slanted|askew|angled|diagonally|sideways)\b"
+               r"|\b(?:face|faces|facing|pointing|points|showing|shows)\s+(?:down|downwards?|away|backwards?|the\s+(?:table|floor|ground|wall))\b"
+               r"|\bface[\s-]+down\b",
+     "is a pose the domain does not have: every cube rests flat on one of its faces, upright; a task's goal says where "
+     "cubes end up and, for a labelled cube, which face shows up or toward the camera"),
+    ("time", r"\b(?:used\s+to\s+be|had\s+been|(?:was|were)\s+(?:\w+\s+)?(?:on|in|at|next|beside|behind|under|left|right|stacked|"
+             r"placed|lying|sitting|standing|resting))\b|\b(?:initially|originally|beforehand|to\s+begin\s+with|at\s+first"
+             r"|in\s+the\s+beginning|in\s+the\s+(?:morning|afternoon|evening)|at\s+(?:night|noon|midnight)|tomorrow|yesterday)\b"
+             r"|^(?!.*\b(?:line|row|sequence|word|spell\w*|order\w*|tower|stack|column|list)\b).*?\b(?P<w>at\s+the\s+(?:beginning|start))\b"
+             r"|\b(?:run|episode|trial|attempt)s?\s+after\s+(?:that|this|it)\b|\b(?:second|every|each|other)\s+(?:run|episode|trial)s?\b",
+     "is about another time than the end of this episode (a past or starting state, a time of day, another run): a "
+     "task's goal is checked once, at the end of one episode; say only where the cubes must end up"),
+    ("contradiction", r"\bbut\s+(?:(?:i|we|you|they|he|she)\s+(?:would\s+|'d\s+)?(?:want|need|prefer|like|wish)|"
+                      r"(?:put|place|move|set|stack|have)\s+(?:it|them)\b)",
+     "may correct what was said before it or add to it: one of the two end states; say the one the task should have"),
 )
 """Meaning the domain cannot express, by class: (class, pattern over the lower-cased text,
-why).  An instruction that says one is refused naming the words and why (refuse rather than
+why; a group named ``w``, where it matched, holds the words to name).  An instruction that says one is refused naming the words and why (refuse rather than
 guess); none of these words may be dropped as a filler."""
 
 SIZE_COMPARATIVE_RE = re.compile(r"\b(?:largest|smallest|biggest|heaviest|lightest|larger|smaller|bigger|heavier|lighter)\b")
@@ -443,6 +459,12 @@ def parts_of_speech(word: str) -> frozenset[str]:
     from lemminflect import getAllLemmas
 
     return frozenset(getAllLemmas(word))
+
+
+def said(m: re.Match) -> str:
+    """The words a match of an :data:`INEXPRESSIBLE` pattern names: its group ``w`` where that
+    matched (a pattern that looks at the whole text to decide), else all it matched."""
+    return ((m.re.groupindex.get("w") and m.group("w")) or m.group(0)).strip()
 
 
 def is_dictionary_word(word: str) -> bool:

@@ -134,7 +134,7 @@ def _inexpressible(text: str) -> list[tuple[str, list[str], str]]:
     ``text`` says, in the table's order (a class listed twice with two reasons gives two)."""
     found = []
     for kind, pattern, why in _INEXPRESSIBLE:
-        words = list(dict.fromkeys(m.group(0).strip() for m in pattern.finditer(text)))
+        words = list(dict.fromkeys(lexicon.said(m) for m in pattern.finditer(text)))
         if words:
             found.append((kind, words, why))
     compared = list(dict.fromkeys(m.group(0) for m in lexicon.SIZE_COMPARATIVE_RE.finditer(text)))
@@ -365,6 +365,11 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   rf"(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|one)\b)", "next to ", text)
     text = lexicon.ANY_ORDER_RE.sub(" in any order", text)  # before "doesn't" is refused as a negation
     text = lexicon.HARMLESS_NEGATION_RE.sub("", text)
+    for m in lexicon.FREE_CHOICE_RE.finditer(text):  # "put the red cube left of the blue cube. colours don't matter"
+        if re.search(r"colou?r", m.group(0)) and re.search(rf"\b(?:{COLOR_RE})\b", text[:m.start()] + text[m.end():]):
+            raise Inexpressible("contradiction", [m.group(0).strip(" ,;(\u2013\u2014-")], "leaves the colours free, but the "
+                                "instruction names its cubes by colour, which is how the goal tells them apart; say one of "
+                                "the two", original)
     text = lexicon.FREE_CHOICE_RE.sub("", text)
     text = lexicon.SMALL_TALK_RE.sub(" ", text)
     asked_by = [(m.group("who"), "who asks for the task") for m in lexicon.SOMEONE_WANTS_RE.finditer(text)]

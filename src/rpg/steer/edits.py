@@ -47,6 +47,7 @@ from rpg.schema.lexicon import (
     TYPOS,
     VOCAB,
     is_dictionary_word,
+    said,
 )
 from rpg.schema.readers.common import item_sequence
 from rpg.schema.reading import canon_color, region_name
@@ -204,7 +205,7 @@ def refuse_inexpressible(edit: str, t: str) -> None:
     for _cls, pattern, why in (*EDIT_INEXPRESSIBLE, *(c for c in INEXPRESSIBLE if c[0] != "reference")):
         m = re.search(pattern, t)
         if m:
-            raise SteerError(f"cannot apply the edit \"{edit.strip()[:80]}\": '{m.group(0).strip()}' {why}")
+            raise SteerError(f"cannot apply the edit \"{edit.strip()[:80]}\": '{said(m)}' {why}")
 
 
 def _materials(text: str) -> list[str]:
