@@ -1848,3 +1848,16 @@ def test_a_face_said_of_a_task_whose_goal_judges_no_face_is_refused(text):
 ])
 def test_faces_ends_and_free_colours_that_are_read(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("Place the yellow block to the right of the purple block, both at the back of the table",
+     ["in_region(purple,back)", "in_region(yellow,back)", "right_of(yellow,purple)"]),
+    ("Put the red cube next to the blue cube, with both of them on the left side of the table",
+     ["in_region(blue,left)", "in_region(red,left)", "next_to(blue,red)"]),
+    ("Put the red cube left of the blue cube, the two of them in the back right corner",
+     ["in_region(blue,back_right)", "in_region(red,back_right)", "left_of(red,blue)"]),
+])
+def test_both_cubes_of_a_relation_put_in_a_place(text, expected):
+    """"both at the back" had placed the relation's subject alone there (the object dropped)."""
+    assert meaning(parse(text)) == expected

@@ -120,6 +120,9 @@ class RelationalReading:
                 own = [m for m in left if prev is not None and m.start >= prev and m not in objects and (m.color or m.label)]
                 # "red on the green patch and the white cube in the centre": the cube said after the last relation
                 group = own[-1:] or related[:1] or (_listed_group(clause, left) if left else [])
+                if not own and objects and self.last_pair and re.search(  # "X right of Y, both at the back": X and Y
+                        r"\b(?:2|both|all)\b|\bthem\b", clause[objects[0].end: rm.start()]):
+                    group = list(self.last_pair)
                 self.regions.append((group, rm.group(0)[len("region_"):]))
                 continue
             after = clause[rm.end():].strip()
