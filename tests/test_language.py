@@ -1861,3 +1861,19 @@ def test_faces_ends_and_free_colours_that_are_read(text, expected):
 def test_both_cubes_of_a_relation_put_in_a_place(text, expected):
     """"both at the back" had placed the relation's subject alone there (the object dropped)."""
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # "second row" had been read as the top row whatever the height: silently wrong for three or four layers
+    ("Build a wall 2 wide and 3 high: the second row blue, the other rows red", ["wall(red,red|blue,blue|red,red)"]),
+    ("Build a wall 2 wide and 4 high: first row red, second row blue, third row green, top row white",
+     ["wall(red,red|blue,blue|green,green|white,white)"]),
+    ("Build a wall 3 wide and 2 high: first layer red, second layer blue", ["wall(red,red,red|blue,blue,blue)"]),
+])
+def test_a_layer_named_by_its_ordinal_is_that_layer_from_the_table(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_layer_ordinal_past_the_structures_height_is_refused():
+    with pytest.raises(ParseError, match="no third layer"):
+        parse("Build a wall 2 wide and 2 high with the third row blue")

@@ -810,7 +810,8 @@ order"): with any of them, or :data:`ORDER_WORDS`, the listed order is kept.  "f
 with a "to" after it ("a tower from two purple cubes" says what it is made of)."""
 
 _COLOR_LIST = "(?:" + "|".join(COLORS) + r")(?:(?:\s*,\s*|\s+)(?:" + "|".join(COLORS) + r"))*(?:,?\s+and\s+(?:" + "|".join(COLORS) + r"))?"
-_LAYER_ROLE = r"(?P<role{i}>top|peak|apex|tip|bottom|base|foundation|middle)"
+_LAYER_ROLE = (r"(?P<role{i}>top|peak|apex|tip|bottom|base|foundation|middle"
+               r"|(?:second|third|fourth|fifth|2nd|3rd|4th|5th)(?=\s+(?:layer|level|row|tier)\b))")
 LAYER_ROLE_RE = re.compile(
     r"(?:\b(?P<n0>\d+|a|an|one|the)\s+)?\b(?P<c0>" + _COLOR_LIST + r")\s+(?:(?P<noun0>blocks?|cubes?|ones?|rows?|layers?)\s+)?"
     r"(?:(?:is|are|goes|go|sits?|stands?)\s+)?(?:on|at|as|in|for|forms?|making|makes)\s+(?:the\s+)?"
@@ -836,10 +837,11 @@ in a structure three layers high); ``n0``, ``n3``, ``n4`` a count or article bef
 ``noun0``/``noun1`` the noun after it ("a red block": one cube; "red blocks", "a red base":
 the whole layer)."""
 
-LAYER_SYNONYM_RE = re.compile(r"\b(?:(?P<low>lower|lowest|bottommost|first)|(?P<high>upper|uppermost|topmost|highest|second))"
+LAYER_SYNONYM_RE = re.compile(r"\b(?:(?P<low>lower|lowest|bottommost|first)|(?P<high>upper|uppermost|topmost|highest))"
                               r"\s+(?=(?:layer|level|row|tier)\b)")
 """A layer named by a comparative ("the lower layer", "the upper row"): read as "bottom" or
-"top" (:func:`rpg.schema.reading.normalize`); "first"/"second" layer count from the bottom."""
+"top" (:func:`rpg.schema.reading.normalize`); "first" layer counts from the bottom (the
+other ordinals are :data:`LAYER_ORDINALS`)."""
 
 LISTED_ROW_RE = re.compile(
     r"\b(?P<role>top|bottom|base|middle|upper|lower|first|second|third)\s+(?:row|layer|level|tier|course|storey|story)\s*"
@@ -851,6 +853,10 @@ layer word, ``cs`` the colours (:func:`rpg.schema.readers.structures.listed_laye
 
 LISTED_ROW_LAYER = {"bottom": 0, "base": 0, "lower": 0, "first": 0, "second": 1, "middle": 1, "third": 2}
 """A layer word of :data:`LISTED_ROW_RE` -> its layer from the table ("top" and "upper": the last)."""
+
+LAYER_ORDINALS = {"second": 1, "2nd": 1, "third": 2, "3rd": 2, "fourth": 3, "4th": 3, "fifth": 4, "5th": 4}
+"""A layer named by its place counted from the table ("the second row": layer 1, the bottom one
+being 0)."""
 
 LAYER_WORDS = {"top": "top", "peak": "top", "apex": "top", "tip": "top", "bottom": "bottom", "base": "bottom",
                "foundation": "bottom", "middle": "middle"}

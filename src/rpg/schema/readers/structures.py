@@ -42,6 +42,7 @@ from rpg.schema.lexicon import (
     COLOR_RE,
     CUBE_ORDER_RE,
     LAYER_ROLE_RE,
+    LAYER_ORDINALS,
     LAYER_WORDS,
     LISTED_ROW_LAYER,
     LISTED_ROW_RE,
@@ -92,11 +93,14 @@ def layer_roles(f: Features, levels: int) -> dict[str, tuple[int, int | None]]:
     out: dict[str, tuple[int, int | None]] = {}
     for m in LAYER_ROLE_RE.finditer(f.text):
         i = next(k for k in range(5) if m.group(f"c{k}"))
-        role = LAYER_WORDS[m.group(f"role{i}")]
+        word = m.group(f"role{i}")
+        role = LAYER_WORDS.get(word)
         if role == "middle" and levels != 3:
             raise ParseError(f"'{m.group(0)}': a structure {levels} layers high has no one middle layer; "
                              "say which layer (counted from the bottom)")
-        k = {"bottom": 0, "middle": 1, "top": levels - 1}[role]
+        k = LAYER_ORDINALS[word] if role is None else {"bottom": 0, "middle": 1, "top": levels - 1}[role]
+        if k >= levels:
+            raise ParseError(f"'{m.group(0)}': a structure {levels} layers high has no {word} layer")
         colors = [canon_color(c) for c in re.findall(COLOR_RE, m.group(f"c{i}"))]
         count = m.groupdict().get(f"n{i}") or m.groupdict().get(f"m{i}") or m.groupdict().get(f"k{i}")
         noun = m.groupdict().get(f"noun{i}") or ""
