@@ -1004,3 +1004,21 @@ def test_loose_edits_that_stay_refused(tmp_path, base, edit, match):
     fam = compile_instruction(base, tmp_path, name="fam").path
     with pytest.raises(SteerError, match=match):
         steer(fam, edit)
+
+
+@pytest.mark.parametrize("base, edits, want", [
+    # the roles of a cube between two others said by place (each was refused)
+    ("Put the yellow block between the red block and the green block", ["make the middle one purple"],
+     ("tweak", ["between(purple;green,red)"])),
+    ("Put the pink cube between the two cyan cubes", ["Make the outer two white, if you would."], ("tweak", ["between(pink;white,white)"])),
+    # one colour for another, said with an arrow
+    ("Put the brown cube in front of the black cube", ["brown -> grey"], ("tweak", ["in_front_of(gray,black)"])),
+])
+def test_roles_of_a_between_and_a_colour_said_with_an_arrow(tmp_path, base, edits, want):
+    assert _steered(tmp_path, base, *edits)[-1] == want
+
+
+def test_the_outer_two_of_ends_of_two_colours_is_refused(tmp_path):
+    fam = compile_instruction("Put the yellow block between the red block and the green block", tmp_path, name="fam").path
+    with pytest.raises(SteerError, match="at once"):
+        steer(fam, "make the outer two white")

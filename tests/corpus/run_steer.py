@@ -73,6 +73,7 @@ DEVELOPMENT = {
     "stranger2": ("steer_stranger2.yaml", "STRANGER steering set 2 (steer_stranger2.yaml, development material)"),
     "stranger3": ("steer_stranger3.yaml", "STRANGER steering set 3 (steer_stranger3.yaml, development material)"),
     "stranger4": ("steer_stranger4.yaml", "STRANGER steering set 4 (steer_stranger4.yaml, development material)"),
+    "stranger5": ("steer_stranger5.yaml", "STRANGER steering set 5 (steer_stranger5.yaml, development material)"),
 }
 UNSEEN = HERE / "steer_unseen.yaml"
 SPLITS = HERE / "splits.yaml"

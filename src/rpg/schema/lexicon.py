@@ -999,6 +999,9 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"(?i)\b(?:that|this)\s+(?=(?:{COLOR_RE})\s+(?:one|block|cube)\b)"), "the "),  # "make that blue one white"
     # "make the top row green not red": a colour corrected, not a negation
     (re.compile(rf"(?i)\b({COLOR_RE})\s*,?\s+(?:and\s+)?not\s+({COLOR_RE})\b(?!\s+(?:block|cube|one|patch)s?\b)"), r"\1 instead of \2"),
+    # "brown -> grey", "brown to grey": one colour for another
+    (re.compile(rf"(?i)^\s*({COLOR_RE})\s*(?:->|\u2192|=>|to|into)\s*({COLOR_RE})\s*(?:instead|please)?\s*[.!]?\s*$"),
+     r"make the \1 one \2"),
     # "just one is enough", "3 blocks will do": a count alone
     (re.compile(r"(?i)^\s*(?:(?:just|only)\s+)?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?:\s+(?:blocks?|cubes?))?\s+"
                 r"(?:is|are|will|would|should)\s+(?:be\s+)?(?:do|enough|fine|plenty|ok(?:ay)?|sufficient)"

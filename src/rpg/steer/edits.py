@@ -44,6 +44,7 @@ from rpg.schema.lexicon import (
     INEXPRESSIBLE,
     INTENSIFIER_RIGHT_RE,
     NUMBER_WORDS,
+    POLITE_CONDITION_RE,
     TYPOS,
     VOCAB,
     is_dictionary_word,
@@ -604,6 +605,7 @@ def interpret(edit: str) -> EditPlan:
         raise SteerError("the edit is empty; say what to change, e.g. \"add a green block on top\"")
     edit = INTENSIFIER_RIGHT_RE.sub("", EDIT_INTERJECTION_RE.sub("", edit)) or edit  # "no wait, put it right next to ..."
     edit = TYPO_RE.sub(lambda m: TYPOS[m.group(0).lower()], edit)  # "put a yelow one ontop": the words meant
+    edit = POLITE_CONDITION_RE.sub(" ", edit).strip() or edit  # "make the outer two white, if you would": no condition
     for pattern, replacement in EDIT_REWRITES:
         edit = pattern.sub(replacement, edit)
     count = EDIT_COUNT_ALONE_RE.fullmatch(edit)

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 from rpg.domain.predicates import (
     PREDICATES,
+    Between,
     InRegion,
     OnPatch,
     Predicate,
@@ -139,6 +140,33 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     if obj in patches and kind == "on":  # "put it on the patch": a cube on a patch lies on it
         return f"Place {_phrase(schema, subject)} on {_phrase(schema, obj)}", "modify"
     return f"Place {_phrase(schema, subject)} {PHRASES[kind]} {_phrase(schema, obj)}", "modify"
+
+
+def between_roles(edit: str, schema: TaskSchema) -> str:
+    """An edit of a task whose goal is one cube between two others, with its roles said by colour:
+    "the middle one" is the cube between, "the outer two" / "the ends" the two it lies between
+    ("make the outer two white" of a pink cube between two cyan ones: "make the cyan ones white").
+    Returns ``edit`` unchanged for any other task or edit.
+
+    Raises:
+        SteerError: "the outer two" of ends of two colours (one recolour cannot name both).
+    """
+    parts = schema.goal_predicate().conjuncts()
+    if len(parts) != 1 or not isinstance(parts[0], Between):
+        return edit
+    color = {a.name: a.color for a in schema.assets if a.kind == "colored_cube"}
+    p = parts[0]
+    if None in (color.get(p.a), color.get(p.b), color.get(p.c)):
+        return edit
+    edit = re.sub(r"(?i)\bthe\s+(?:middle|central|center|centre|inner)\s+(?:one|block|cube)\b", f"the {color[p.a]} one", edit)
+    ends = re.search(r"(?i)\bthe\s+(?:(?:two\s+|2\s+)?(?:outer|outside|end)\s+(?:two|2|ones|blocks|cubes)|(?:two\s+)?ends|end\s+ones)\b"
+                     r"|\bboth\s+ends\b", edit)
+    if ends:
+        if color[p.b] != color[p.c]:
+            raise SteerError(f"'{ends.group(0)}' names the {color[p.b]} and the {color[p.c]} cube at once; change one per edit "
+                             f"(\"make the {color[p.b]} one ...\")")
+        edit = edit[:ends.start()] + f"the {color[p.b]} ones" + edit[ends.end():]
+    return edit
 
 
 def rewrite_moved(edit: str, schema: TaskSchema) -> tuple[str, str] | None:

@@ -67,6 +67,7 @@ from rpg.steer.family import (
     task_hash,
 )
 from rpg.steer.relations import (
+    between_roles,
     relation_of,
     remove_cubes,
     rewrite_moved,
@@ -226,6 +227,8 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     patches = sorted({a.color or "gray" for a in ref_schema.assets if a.kind == "goal_patch"}) if ref_schema else []
     if len(patches) == 1:  # "also a blue cube on the same patch": the task's one patch
         plan = replace(plan, text=SAME_PATCH_RE.sub(f"the {patches[0]} patch", plan.text))
+    if ref_schema is not None and (roles := between_roles(plan.text, ref_schema)) != plan.text:  # "the middle one"
+        plan = replace(interpret(roles), cue=plan.cue)
     if ref_schema is not None:
         relational = (rewrite_relation(plan.text, ref_schema) or rewrite_patch(plan.text, ref_schema)
                       or rewrite_region(plan.text, ref_schema) or rewrite_moved(plan.text, ref_schema))
