@@ -41,6 +41,7 @@ STRANGER_SETS = {
     "stranger4": ("stranger4.yaml", "STRANGER set 4 (stranger4.yaml, HELD OUT: report aggregates only)"),
     "stranger5": ("stranger5.yaml", "STRANGER set 5 (stranger5.yaml, development material)"),
     "stranger6": ("stranger6.yaml", "STRANGER set 6 (stranger6.yaml, development material)"),
+    "stranger7": ("stranger7.yaml", "STRANGER set 7 (stranger7.yaml, development material)"),
 }
 SPLITS = HERE / "splits.yaml"
 
