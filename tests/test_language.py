@@ -1877,3 +1877,15 @@ def test_a_layer_named_by_its_ordinal_is_that_layer_from_the_table(text, expecte
 def test_a_layer_ordinal_past_the_structures_height_is_refused():
     with pytest.raises(ParseError, match="no third layer"):
         parse("Build a wall 2 wide and 2 high with the third row blue")
+
+
+@pytest.mark.parametrize("text,expected", [
+    # the stack had been put on the patch and the gray cube dropped from it (stranger7)
+    ("Final layout: the pink cube stacked on the orange cube, the gray cube on the white patch, and the black cube far "
+     "from the gray cube.", ["far_from(black,gray)", "on_patch(gray,patch:white)", "stack(orange,pink)"]),
+    ("Stack the red cube on the blue cube on the green patch", ["on_patch(blue,patch:green)", "stack(blue,red)"]),
+    ("Stack the red block on the blue block, then put the yellow block on the green patch",
+     ["on_patch(yellow,patch:green)", "stack(blue,red)"]),
+])
+def test_a_cube_of_no_stack_put_on_a_patch_in_a_stacking_text(text, expected):
+    assert meaning(parse(text)) == expected

@@ -75,6 +75,9 @@ class RelationalReading:
     """The last relation's subject and object mentions."""
     regions: list[tuple[list[Mention], str]] = field(default_factory=list)
     """(subject mentions, region name): places on the table."""
+    named_on_patch: bool = False
+    """A cube of no stack put on a patch in a stacking text ("red stacked on blue, the gray cube on
+    the white patch"): the stack itself stays off the patch."""
     fresh: dict[int, int] = field(default_factory=dict)
     """id of a mention said as one more of its colour (:attr:`Mention.another`) -> its cube's index."""
 
@@ -191,6 +194,13 @@ class RelationalReading:
                     self.rels.append(_RELATIONS[kind](a, referent))
                 self.previous[:] = [a, referent]
                 continue
+            stacked = {n for edge in self.on_edges for n in edge}
+            if kind == "on" and b_m.patch and self.stackish and stacked and (a_m.color or a_m.label) \
+                    and self.obj(a_m) not in stacked:
+                self.onpatch.append((self.obj(a_m), self.obj(b_m)))  # "red stacked on blue, the gray cube on the patch"
+                self.named_on_patch = True
+                self.previous[:] = [self.obj(a_m), self.obj(b_m)]
+                continue
             if kind == "on" and b_m.patch and self.stackish:
                 self.onpatch.append(("*", self.obj(b_m)))
                 if a_m.color or a_m.label:  # a named cube that "it" may refer to next
@@ -283,7 +293,7 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         return False
     if len({p for a, p in r.onpatch if a == "*"}) > 1:
         raise ParseError("one stack cannot stand on several patches; say which cubes go on which patch")
-    if any(a == "*" for a, _ in r.onpatch) or (stackish and r.onpatch):
+    if any(a == "*" for a, _ in r.onpatch) or (stackish and r.onpatch and not r.named_on_patch):
         target = r.onpatch[0][1]
         r.onpatch = [(a, p) for a, p in r.onpatch if a != "*"]
         chains = _chains(r.on_edges)
