@@ -1889,3 +1889,18 @@ def test_a_layer_ordinal_past_the_structures_height_is_refused():
 ])
 def test_a_cube_of_no_stack_put_on_a_patch_in_a_stacking_text(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # the label had been dropped: a red cube placed (stranger7)
+    ("The cube with the M goes in the center of the table.", ["in_region(M,center)"]),
+    ("Bring the cube with the 4 on it to the right front corner.", ["in_region(4,front_right)"]),
+    ("Put the cube with an A on the red patch", ["on_patch(A,patch:red)"]),
+])
+def test_a_cube_named_by_the_label_it_bears(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_letter_side_up_of_a_goal_that_judges_no_face_is_refused():
+    with pytest.raises(ParseError, match="letter side up"):
+        parse("The cube with the M goes in the center of the table, letter side up.")

@@ -1583,7 +1583,8 @@ class LabelFacing(Predicate):
     name: ClassVar[str] = "label_facing"
     cue: ClassVar[str] = r"\b(?:fac\w*|show\w*|up|upward\w*|rotat\w*|turn\w*|flip\w*|visible|camera)\b"
     loose_phrases: ClassVar[str] = (r"(?:faces?|facing|shows?|showing|points?|pointing)\s+(?:(?:its|their)\s+(?:letters?|digits?|labels?)\s+)?"
-                                    r"(?:up|upwards?|the\s+camera|the\s+robot|front|forward|toward\s+the\s+(?:robot|camera))")
+                                    r"(?:up|upwards?|the\s+camera|the\s+robot|front|forward|toward\s+the\s+(?:robot|camera))"
+                                    r"|(?:letter|digit|number|label)s?\s+(?:side\s+|face\s+)?up")
     carried_by: ClassVar[tuple[str, ...]] = ("reads",)
     object_fields: ClassVar[tuple[str, ...]] = ("a",)
     semantic: ClassVar[bool] = True

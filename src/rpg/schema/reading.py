@@ -342,9 +342,13 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         raise ParseError("the instruction is empty; describe a task, e.g. \"stack the red block on the blue block\"")
     if len(original) > MAX_INSTRUCTION_CHARS:
         raise ParseError(f"the instruction has {len(original)} characters; the limit is {MAX_INSTRUCTION_CHARS}")
+    # "the cube with the M", "the block with the 4 on it": the cube labelled so
+    labelled = re.sub(r"\b([Tt]he|[Aa]n?)\s+(block|cube)\s+(?:with|bearing|showing|that\s+(?:has|shows))\s+(?:the\s+|an?\s+)?"
+                      r"(?:(?:letter|digit|number)\s+)?'?([A-Z]|\d)'?(?:\s+on\s+it)?\b(?!'|\s*(?:[x\u00d7+\-=*]|\w+\s+(?:blocks?|cubes?)\b))",
+                      lambda m: f"{m.group(1)} {'letter' if m.group(3).isalpha() else 'digit'} {m.group(3)} {m.group(2)}", original)
     labelled = re.sub(r"\b(block|cube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))"
                       r"(?<!\bI(?='[a-z]|\s+(?:[a-z]+ed|[a-z]+ing|am|have|had|want|need|would|will|just|think|said|mean|like|told|see|saw|look|can)\b))",
-                      lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1)}", original)  # "block 4"
+                      lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1)}", labelled)  # "block 4"
     listed = re.search(r"\b[A-Z0-9](?:\s*,\s*(?:and\s+)?[A-Z0-9]\b|\s+and\s+[A-Z0-9]\b)", original)  # "T, O, P": a list
     labelled = BARE_LABEL_RE.sub(lambda m: m.group(0) if listed and m.group(1) != "the" else
                                  f"{m.group(1)} {'' if m.group(1) == 'the' else 'the '}{m.group(2)} block",
