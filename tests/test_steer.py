@@ -1022,3 +1022,27 @@ def test_the_outer_two_of_ends_of_two_colours_is_refused(tmp_path):
     fam = compile_instruction("Put the yellow block between the red block and the green block", tmp_path, name="fam").path
     with pytest.raises(SteerError, match="at once"):
         steer(fam, "make the outer two white")
+
+
+@pytest.mark.parametrize("base, edits, want", [
+    # "other way round" had pivoted to a circle of six red cubes ("round"); a cube "in the middle" of a between to a
+    # cube in the table's centre (the two others dropped)
+    ("Put the red cube to the left of the blue cube", ["other way round"], ("modify", ["left_of(blue,red)"])),
+    ("Place the black cube between the red cube and the blue cube", ["use a gray one in the middle instead"],
+     ("tweak", ["between(gray;blue,red)"])),
+    # an instruction's "but put them" and "at the start" are a correction and a time; an edit's are the change itself
+    ("Stack a red block, then a green block, then a blue block, from bottom to top",
+     ["keep the colours but lay them out in a row from left to right, the bottom one on the left"],
+     ("pivot", ["line[left_to_right](red,green,blue)"])),
+    ("Make a line of red, green and blue from left to right", ["add a yellow one at the start"],
+     ("extend", ["line[left_to_right](yellow,red,green,blue)"])),
+])
+def test_edits_a_fifth_stranger_found_read_wrong(tmp_path, base, edits, want):
+    assert _steered(tmp_path, base, *edits)[-1] == want
+
+
+def test_a_whole_task_reading_that_drops_cubes_nobody_said_to_drop_is_refused(tmp_path):
+    """"blacks on the left, whites on the right" of a line of six had become one black cube left of one white one."""
+    fam = compile_instruction("Make a line of six cubes, three black and three white, in any order", tmp_path, name="fam").path
+    with pytest.raises(SteerError, match="new task of 2 cubes"):
+        steer(fam, "blacks on the left, whites on the right")

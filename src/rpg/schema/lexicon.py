@@ -82,6 +82,19 @@ SYNONYMS: dict[str, str] = {
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
 
+START_TIME_RE = (r"^(?!.*\b(?:line|row|sequence|word|spell\w*|order\w*|tower|stack|column|list)\b).*?"
+                 r"\b(?P<w>at\s+the\s+(?:beginning|start))\b")
+""""At the beginning" in an instruction that orders no cubes: a time (the episode's start), not
+an end of a line.  Not read in a steering edit, whose "at the start" is an end of the task's line."""
+
+BUT_CORRECTION_RE = (r"\bbut\s+(?:(?:i|we|you|they|he|she)\s+(?:would\s+|'d\s+)?(?:want|need|prefer|like|wish)|"
+                     r"(?:put|place|move|set|stack|have)\s+(?:it|them)\b)")
+""""..., but put it on the green cube" after a placement: a correction or an addition, which one
+is not said.  Not read in a steering edit, where "but put them in a row" is the change itself."""
+
+INSTRUCTION_ONLY = frozenset({START_TIME_RE, BUT_CORRECTION_RE})
+""":data:`INEXPRESSIBLE` patterns that hold for a whole instruction only (see each)."""
+
 INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("question", r"(?:^|[.!;]\s+)(?:which|what|where|who|whose|why|how\s+many|how\s+much|when)\b[^.!;]*\?"
                  r"|(?:^|[.!;?]\s+)(?:is|are|was|were|does|do|did|has|have|had)\s+(?:the|a|an|there|it|this|that|any|all"
@@ -176,10 +189,11 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "is an action the domain does not have: its cubes stay on the table, and a task's goal says where on it they "
      "end up"),
     ("object", r"\b(?:balls?|spheres?|cylinders?|cones?|cups?|mugs?|bottles?|plates?|bowls?|pens?|toys?|books?"
-               r"|drawers?|shelf|shelves|baskets?|bins?|trays?|doors?|triangles?\s+(?:block|piece)s?|rods?)\b",
+               r"|drawers?|shelf|shelves|baskets?|bins?|trays?|doors?|triangles?\s+(?:block|piece)s?|rods?)\b"
+               r"|\b(?:on|onto|in)\s+(?:the|a)\s+(?:balance\s+)?scales?\b",
      "names an object the domain does not have: it has only 5 cm cubes (coloured, optionally labelled) "
      "and flat coloured patches on the table"),
-    ("action", r"\bon\s+(?:its|their|one|an?)\s+(?:sides?|edges?|corners?|ends?|points?|tips?)\b|\bon\s+end\b|\bbalanc\w+"
+    ("action", r"\bon\s+(?:its|their|one|an?)\s+(?:sides?|edges?|corners?|ends?|points?|tips?)\b|\bon\s+end\b"
                r"|\b(?:tilt\w*|tipped|slanted|askew|angled|diagonally|sideways)\b"
                r"|\b(?:face|faces|facing|pointing|points|showing|shows)\s+(?:down|downwards?|away|backwards?|the\s+(?:table|floor|ground|wall))\b"
                r"|\bface[\s-]+down\b",
@@ -188,12 +202,12 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("time", r"\b(?:used\s+to\s+be|had\s+been|(?:was|were)\s+(?:\w+\s+)?(?:on|in|at|next|beside|behind|under|left|right|stacked|"
              r"placed|lying|sitting|standing|resting))\b|\b(?:initially|originally|beforehand|to\s+begin\s+with|at\s+first"
              r"|in\s+the\s+beginning|in\s+the\s+(?:morning|afternoon|evening)|at\s+(?:night|noon|midnight)|tomorrow|yesterday)\b"
-             r"|^(?!.*\b(?:line|row|sequence|word|spell\w*|order\w*|tower|stack|column|list)\b).*?\b(?P<w>at\s+the\s+(?:beginning|start))\b"
              r"|\b(?:run|episode|trial|attempt)s?\s+after\s+(?:that|this|it)\b|\b(?:second|every|each|other)\s+(?:run|episode|trial)s?\b",
      "is about another time than the end of this episode (a past or starting state, a time of day, another run): a "
      "task's goal is checked once, at the end of one episode; say only where the cubes must end up"),
-    ("contradiction", r"\bbut\s+(?:(?:i|we|you|they|he|she)\s+(?:would\s+|'d\s+)?(?:want|need|prefer|like|wish)|"
-                      r"(?:put|place|move|set|stack|have)\s+(?:it|them)\b)",
+    ("time", START_TIME_RE, "is about another time than the end of this episode (a starting state): a task's goal is checked "
+                            "once, at the end of one episode; say only where the cubes must end up"),
+    ("contradiction", BUT_CORRECTION_RE,
      "may correct what was said before it or add to it: one of the two end states; say the one the task should have"),
 )
 """Meaning the domain cannot express, by class: (class, pattern over the lower-cased text,
@@ -999,6 +1013,8 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"(?i)\b(?:that|this)\s+(?=(?:{COLOR_RE})\s+(?:one|block|cube)\b)"), "the "),  # "make that blue one white"
     # "make the top row green not red": a colour corrected, not a negation
     (re.compile(rf"(?i)\b({COLOR_RE})\s*,?\s+(?:and\s+)?not\s+({COLOR_RE})\b(?!\s+(?:block|cube|one|patch)s?\b)"), r"\1 instead of \2"),
+    # "other way round": the two ends (or the two related cubes) exchanged, not a circle
+    (re.compile(r"(?i)\b(?:the\s+)?other\s+way\s+a?round\b|\bthe\s+opposite\s+way\s+a?round\b"), "reverse the order"),
     # "brown -> grey", "brown to grey": one colour for another
     (re.compile(rf"(?i)^\s*({COLOR_RE})\s*(?:->|\u2192|=>|to|into)\s*({COLOR_RE})\s*(?:instead|please)?\s*[.!]?\s*$"),
      r"make the \1 one \2"),

@@ -42,6 +42,7 @@ from rpg.schema.lexicon import (
     IGNORABLE,
     IGNORABLE_MORE,
     INEXPRESSIBLE,
+    INSTRUCTION_ONLY,
     INTENSIFIER_RIGHT_RE,
     NUMBER_WORDS,
     POLITE_CONDITION_RE,
@@ -203,7 +204,8 @@ def refuse_inexpressible(edit: str, t: str) -> None:
     if vague and not EDIT_COUNT_RE.search(t):  # "make it a bit taller" (a number said, "like 3 blocks", is a count)
         raise SteerError(f"cannot apply the edit \"{edit.strip()[:80]}\": '{vague.group(0)}' is a vague quantity: rpg's counts are "
                          "exact and its relations qualitative; say how many blocks (e.g. \"make it 5 blocks tall\")")
-    for _cls, pattern, why in (*EDIT_INEXPRESSIBLE, *(c for c in INEXPRESSIBLE if c[0] != "reference")):
+    inherited = (c for c in INEXPRESSIBLE if c[0] != "reference" and c[1] not in INSTRUCTION_ONLY)
+    for _cls, pattern, why in (*EDIT_INEXPRESSIBLE, *inherited):
         m = re.search(pattern, t)
         if m:
             raise SteerError(f"cannot apply the edit \"{edit.strip()[:80]}\": '{said(m)}' {why}")

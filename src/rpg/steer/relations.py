@@ -108,7 +108,8 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     if ADDS_RE.search(t):
         return _added(t, schema, rel)
     subject, obj = rel.subject, rel.object
-    if re.search(r"\b(?:swap|switch|exchange|trade)\b.*\b(?:them|places|positions|roles|blocks|cubes|the two)\b", t):
+    if re.search(r"\b(?:swap|switch|exchange|trade)\b.*\b(?:them|places|positions|roles|blocks|cubes|the two)\b"
+                 r"|^\s*(?:\w+\s+){0,2}?reverse\s+the\s+order\s*$", t):  # "other way round"
         subject, obj = obj, subject
         kind = rel.kind
     elif re.search(r"\b(?:other|opposite)\s+side\b", t):
@@ -159,6 +160,9 @@ def between_roles(edit: str, schema: TaskSchema) -> str:
     if None in (color.get(p.a), color.get(p.b), color.get(p.c)):
         return edit
     edit = re.sub(r"(?i)\bthe\s+(?:middle|central|center|centre|inner)\s+(?:one|block|cube)\b", f"the {color[p.a]} one", edit)
+    edit = re.sub(rf"(?i)^\s*(?:(?:now|ok|okay|actually|rather)\s+)*(?:use|put|place|have)\s+an?\s+({COLOR_RE})\s+(?:one|block|cube)\s+"
+                  r"(?:in\s+the\s+middle|in\s+between|between\s+them)(?:\s+instead)?\s*[.!]?\s*$",
+                  lambda m: f"make the {color[p.a]} one {m.group(1)}", edit)  # "use a gray one in the middle instead"
     ends = re.search(r"(?i)\bthe\s+(?:(?:two\s+|2\s+)?(?:outer|outside|end)\s+(?:two|2|ones|blocks|cubes)|(?:two\s+)?ends|end\s+ones)\b"
                      r"|\bboth\s+ends\b", edit)
     if ends:

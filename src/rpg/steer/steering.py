@@ -41,6 +41,7 @@ from rpg.schema.lexicon import (
     SAME_PATCH_RE,
 )
 from rpg.schema.model import TaskSchema
+from rpg.schema.structures import STRUCTURE_RE
 from rpg.steer.carried import Carried, split
 from rpg.steer.carried import render as render_carried
 from rpg.steer.edits import (
@@ -248,7 +249,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         schema = _same_cubes(plan.text, ref_schema, schema)
         if relation_of(schema) and relation_of(ref_schema) and same_assets(schema, ref_schema):
             return schema, text, "modify"  # the same cubes in another relation
-        return schema, text, intent_of_standalone(extract(schema), ref_spec)
+        intent = intent_of_standalone(extract(schema), ref_spec)
+        _refuse_pivot_that_loses_cubes(plan.text, ref_schema, schema, intent, reference)
+        return schema, text, intent
     if not plan.ops:
         if plan.cue.kind != "current":  # "go back to version 1": that version as it is
             return ref_schema, ref_schema.instruction, "tweak"
@@ -323,6 +326,26 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     except BadInput as exc:
         raise SteerError(str(exc).splitlines()[0]) from None
     return schema, instruction, intent_of_ops(plan.ops, ref_spec)
+
+
+def _refuse_pivot_that_loses_cubes(edit: str, ref: TaskSchema, schema: TaskSchema, intent: str, reference: int) -> None:
+    """Refuse a whole-task reading of an edit, not marked as a new task, that keeps none of the
+    structure and fewer of the cubes of the task it builds on while naming no count and no
+    structure: "blacks on the left, whites on the right" of a line of six had become one black
+    cube left of one white cube, "use a gray one in the middle instead" of a cube between two
+    others a gray cube in the centre of the table (a pivot that silently drops cubes).
+
+    Raises:
+        SteerError: the reading drops cubes the edit does not say to drop.
+    """
+    old = [a for a in ref.assets if a.kind != "goal_patch"]
+    new = [a for a in schema.assets if a.kind != "goal_patch"]
+    if intent != "pivot" or len(new) >= len(old) or re.search(
+            rf"\b(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten|single|pair)\b|{STRUCTURE_RE}", edit, re.IGNORECASE):
+        return
+    raise SteerError(f"the edit reads as a new task of {len(new)} cube{'s' if len(new) != 1 else ''} ({schema.goal_summary}), but "
+                     f"v{reference} has {len(old)} and the edit says neither how many nor to start a new task; say what "
+                     "changes in v{reference} (e.g. \"make the middle one gray\"), or \"new task: ...\"".replace("{reference}", str(reference)))
 
 
 def _same_cubes(edit: str, ref: TaskSchema, schema: TaskSchema) -> TaskSchema:
