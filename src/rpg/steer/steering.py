@@ -345,7 +345,7 @@ def _refuse_pivot_that_loses_cubes(edit: str, ref: TaskSchema, schema: TaskSchem
         return
     raise SteerError(f"the edit reads as a new task of {len(new)} cube{'s' if len(new) != 1 else ''} ({schema.goal_summary}), but "
                      f"v{reference} has {len(old)} and the edit says neither how many nor to start a new task; say what "
-                     "changes in v{reference} (e.g. \"make the middle one gray\"), or \"new task: ...\"".replace("{reference}", str(reference)))
+                     f"changes in v{reference} (e.g. \"make the middle one gray\"), or \"new task: ...\"")
 
 
 def _same_cubes(edit: str, ref: TaskSchema, schema: TaskSchema) -> TaskSchema:

@@ -41,8 +41,8 @@ from rpg.schema.builder import DEFAULT_COLORS, Builder
 from rpg.schema.lexicon import (
     COLOR_RE,
     CUBE_ORDER_RE,
-    LAYER_ROLE_RE,
     LAYER_ORDINALS,
+    LAYER_ROLE_RE,
     LAYER_WORDS,
     LISTED_ROW_LAYER,
     LISTED_ROW_RE,
