@@ -82,6 +82,13 @@ SYNONYMS: dict[str, str] = {
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
 
+_COLOR_WORDS = "|".join(sorted(set(PALETTE) | set(COLOR_ALIASES), key=len, reverse=True))
+
+INITIALLY_RE = (rf"\binitially\b(?!\s+(?:(?:the\s+)?(?:{_COLOR_WORDS})\s+(?:block\s+|cube\s+)?(?:is\s+)?)?(?:stacked\s+)?"
+                rf"(?:on\s+top\s+of|on)\s+(?:the\s+)?(?:{_COLOR_WORDS})\b(?!\s+(?:goal\s+|target\s+)?patch))")
+""""Initially" of any starting state but one cube stacked on another ("yellow is initially on red",
+"initially yellow is stacked on red": the initial states the readers build)."""
+
 START_TIME_RE = (r"^(?!.*\b(?:line|row|sequence|word|spell\w*|order\w*|tower|stack|column|list)\b).*?"
                  r"\b(?P<w>at\s+the\s+(?:beginning|start))\b")
 """"At the beginning" in an instruction that orders no cubes: a time (the episode's start), not
@@ -200,13 +207,15 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "is a pose the domain does not have: every cube rests flat on one of its faces, upright; a task's goal says where "
      "cubes end up and, for a labelled cube, which face shows up or toward the camera"),
     ("time", r"\b(?:used\s+to\s+be|had\s+been|(?:was|were)\s+(?:\w+\s+)?(?:on|in|at|next|beside|behind|under|left|right|stacked|"
-             r"placed|lying|sitting|standing|resting))\b|\b(?:initially|originally|beforehand|to\s+begin\s+with|at\s+first"
+             r"placed|lying|sitting|standing|resting))\b|\b(?:originally|beforehand|to\s+begin\s+with|at\s+first"
              r"|in\s+the\s+beginning|in\s+the\s+(?:morning|afternoon|evening)|at\s+(?:night|noon|midnight)|tomorrow|yesterday)\b"
              r"|\b(?:run|episode|trial|attempt)s?\s+after\s+(?:that|this|it)\b|\b(?:second|every|each|other)\s+(?:run|episode|trial)s?\b",
      "is about another time than the end of this episode (a past or starting state, a time of day, another run): a "
      "task's goal is checked once, at the end of one episode; say only where the cubes must end up"),
     ("time", START_TIME_RE, "is about another time than the end of this episode (a starting state): a task's goal is checked "
                             "once, at the end of one episode; say only where the cubes must end up"),
+    ("time", INITIALLY_RE, "is about the episode's starting state, which rpg builds only as one cube stacked on another "
+                           "(\"yellow starts stacked on red\"); say only where the cubes must end up"),
     ("contradiction", BUT_CORRECTION_RE,
      "may correct what was said before it or add to it: one of the two end states; say the one the task should have"),
 )
