@@ -82,10 +82,21 @@ SYNONYMS: dict[str, str] = {
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
 
-_COLOR_WORDS = "|".join(sorted(set(PALETTE) | set(COLOR_ALIASES), key=len, reverse=True))
+NUMBER_WORDS = {
+    "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
+    "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "both": 2, "pair": 2, "couple": 2,
+    "single": 1, "thirteen": 13, "fourteen": 14, "fifteen": 15, "twenty": 20, "thirty": 30,
+}
+"""Number words -> their value (written as digits by the parser's and the steering's normalisers)."""
 
-INITIALLY_RE = (rf"\binitially\b(?!\s+(?:(?:the\s+)?(?:{_COLOR_WORDS})\s+(?:block\s+|cube\s+)?(?:is\s+)?)?(?:stacked\s+)?"
-                rf"(?:on\s+top\s+of|on)\s+(?:the\s+)?(?:{_COLOR_WORDS})\b(?!\s+(?:goal\s+|target\s+)?patch))")
+COUNT_WORD_RE = "|".join(w for w in NUMBER_WORDS if w not in ("single", "pair", "couple", "both"))
+"""The number words that say a count alone ("three", "just one is enough")."""
+
+COLORS = sorted(set(PALETTE) | set(COLOR_ALIASES), key=len, reverse=True)
+COLOR_RE = "|".join(COLORS)
+
+INITIALLY_RE = (rf"\binitially\b(?!\s+(?:(?:the\s+)?(?:{COLOR_RE})\s+(?:block\s+|cube\s+)?(?:is\s+)?)?(?:stacked\s+)?"
+                rf"(?:on\s+top\s+of|on)\s+(?:the\s+)?(?:{COLOR_RE})\b(?!\s+(?:goal\s+|target\s+)?patch))")
 """"Initially" of any starting state but one cube stacked on another ("yellow is initially on red",
 "initially yellow is stacked on red": the initial states the readers build)."""
 
@@ -220,8 +231,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "may correct what was said before it or add to it: one of the two end states; say the one the task should have"),
 )
 """Meaning the domain cannot express, by class: (class, pattern over the lower-cased text,
-why; a group named ``w``, where it matched, holds the words to name).  An instruction that says one is refused naming the words and why (refuse rather than
-guess); none of these words may be dropped as a filler."""
+why; a group named ``w``, where it matched, holds the words to name).  An instruction that
+says one is refused naming the words and why (refuse rather than guess); none of these words
+may be dropped as a filler."""
 
 SIZE_COMPARATIVE_RE = re.compile(r"\b(?:largest|smallest|biggest|heaviest|lightest|larger|smaller|bigger|heavier|lighter)\b")
 """A cube compared by size or weight on its own ("from largest at the bottom to smallest", "the
@@ -495,17 +507,6 @@ def is_dictionary_word(word: str) -> bool:
     return bool(lemmas(word))
 
 
-NUMBER_WORDS = {
-    "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
-    "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "both": 2, "pair": 2, "couple": 2,
-    "single": 1, "thirteen": 13, "fourteen": 14, "fifteen": 15, "twenty": 20, "thirty": 30,
-}
-
-
-COLORS = sorted(set(PALETTE) | set(COLOR_ALIASES), key=len, reverse=True)
-
-
-COLOR_RE = "|".join(COLORS)
 
 
 VOCAB = set("""
@@ -1028,7 +1029,7 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"(?i)^\s*({COLOR_RE})\s*(?:->|\u2192|=>|to|into)\s*({COLOR_RE})\s*(?:instead|please)?\s*[.!]?\s*$"),
      r"make the \1 one \2"),
     # "just one is enough", "3 blocks will do": a count alone
-    (re.compile(r"(?i)^\s*(?:(?:just|only)\s+)?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?:\s+(?:blocks?|cubes?))?\s+"
+    (re.compile(rf"(?i)^\s*(?:(?:just|only)\s+)?(\d+|{COUNT_WORD_RE})(?:\s+(?:blocks?|cubes?))?\s+"
                 r"(?:is|are|will|would|should)\s+(?:be\s+)?(?:do|enough|fine|plenty|ok(?:ay)?|sufficient)"
                 r"(?:\s+(?:tbh|really|honestly|imo|i\s+think))*\s*[.!]?\s*$"), r"\1"),
     # "put a red one at the bottom instead of a blue one": the cube at that end, recoloured
@@ -1049,7 +1050,7 @@ clause after it."""
 
 EDIT_COUNT_ALONE_RE = re.compile(
     r"(?i)\s*(?:(?:actually|ok(?:ay)?|fine|right|hmm+|so)\s*[,.!]?\s*)*(?:let'?s\s+)?(?:go\s+with|try|use|make\s+(?:it|that)|how\s+about|maybe)?\s*"
-    rf"(\d+|{'|'.join(w for w in NUMBER_WORDS if w not in ('single', 'pair', 'couple', 'both'))})"
+    rf"(\d+|{COUNT_WORD_RE})"
     rf"(?:\s+(?P<color>{COLOR_RE}))?(?:\s+(?:blocks|cubes|bricks))?(?:\s+instead)?(?:\s+(?:please|pls|plz))?\s*[.!]?\s*")
 """An edit that is a count alone ("three", "let's go with 7 instead", "actually, three", "make that
 seven pink cubes pls"): the structure's count (a colour said with it must be the structure's own)."""

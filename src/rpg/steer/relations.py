@@ -23,10 +23,18 @@ from rpg.domain.predicates import (
 )
 from rpg.errors import BadInput
 from rpg.schema.builder import DEFAULT_COLORS
-from rpg.schema.lexicon import COLOR_RE, EDIT_ADDITIVE_RE, EDIT_RELATIONS, PAIRWISE_RELATIONS
+from rpg.schema.lexicon import (
+    COLOR_RE,
+    COUNT_WORD_RE,
+    EDIT_ADDITIVE_RE,
+    EDIT_RELATIONS,
+    NUMBER_WORDS,
+    PAIRWISE_RELATIONS,
+)
 from rpg.schema.model import TaskSchema
 from rpg.schema.reading import canon_color, region_name
 from rpg.schema.structures import cube_list
+from rpg.steer.carried import region_phrase
 from rpg.steer.edits import SteerError
 
 PHRASES = {name: PREDICATES[name].phrase for name in (*PAIRWISE_RELATIONS, "on")}
@@ -188,7 +196,7 @@ def rewrite_moved(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         return None
     subject, obj = _phrase(schema, rel.subject), _phrase(schema, rel.object)
     first = f"Stack {subject} on {obj}" if rel.kind == "on" else f"Place {subject} {PHRASES[rel.kind]} {obj}"
-    return f"{first}, then place {subject} {_region_phrase(region)}, then place {obj} {_region_phrase(region)}", "modify"
+    return f"{first}, then place {subject} {region_phrase(region)}, then place {obj} {region_phrase(region)}", "modify"
 
 
 def _edit_relation(t: str) -> str | None:
@@ -263,7 +271,7 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     region = _edit_region(t)
     if (region is not None and len(colors) == 1 and re.search(r"\b(?:move|put|place|shift|slide|bring|it)\b", t)
             and not re.search(r"\bpatch\b|\b(?:add|another|also|too)\b", t)):  # "move it to the left side of the table instead"
-        return f"Place the {colors[0]} block {_region_phrase(region)}", "modify"
+        return f"Place the {colors[0]} block {region_phrase(region)}", "modify"
     intent = None
     t = re.sub(r"\btarget\b(?!\s+patch)", "patch", t)  # "make the target green"
     recolor = re.search(rf"\bpatch\b[^.;]*?\b(?:to|into|be|is)?\s*({COLOR_RE})\b|\b({COLOR_RE})\s+(?:goal\s+|target\s+)?patch\b", t)
@@ -279,14 +287,14 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         shape, intent = "long", "tweak"
     elif re.search(r"\b(?:square|short(?:er)?|small(?:er)?)\b", t) and shape != "square":
         shape, intent = "square", "tweak"
-    count = re.search(r"\b(\d+|one|two|three|four|five|six)\s+(?:blocks|cubes)\b", t)  # "use one blocks instead": a count said alone
+    count = re.search(rf"\b(\d+|{COUNT_WORD_RE})\s+(?:blocks|cubes)\b", t)  # "use one blocks instead": a count said alone
     added = re.search(rf"\badd\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b", t) or \
         re.fullmatch(rf"\s*(?:and\s+|now\s+|also\s+)*(?:put\s+|place\s+)?(?:the|a|an)\s+({COLOR_RE})\s+(?:block|cube|one)\s+"
                      rf"(?:(?:on|onto|in)\s+(?:the\s+(?:{COLOR_RE}\s+)?(?:goal\s+)?patch|it)\s+)?(?:too|as well)\s*", t) or \
         re.fullmatch(rf"\s*(?:and\s+|now\s+)*(?:also\s+)?(?:put|place|move|bring|slide|push)\s+(?:the|a|an)\s+({COLOR_RE})\s+(?:block|cube|one)\s+"
                      rf"(?:on|onto|in)\s+(?:the\s+(?:{pcolor}\s+)?(?:goal\s+)?patch|it)\s*(?:too|as well)?\s*", t)
     if count:
-        n = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}.get(count.group(1)) or int(count.group(1))
+        n = NUMBER_WORDS.get(count.group(1)) or int(count.group(1))
         if not 1 <= n <= 6:
             return None
         # cubes of one colour stay one colour ("2 blue cubes on the patch", "3 instead"); else new colours
@@ -299,18 +307,9 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     return f"Place {cube_list(colors)} onto the {pcolor}{' long' if shape == 'long' else ''} goal patch", intent
 
 
-REGION_PHRASES = {"center": "in the center of the table", "left": "on the left side of the table",
-                  "right": "on the right side of the table", "front": "at the front of the table",
-                  "back": "at the back of the table"}
-"""How a canonical instruction states each region (corners: "in the back left corner of the table")."""
-
 EDIT_REGION_RE = re.compile(
     r"\b(?:to|in|at|into|toward|towards|on|along)\s+the\s+(?:(?P<fb>front|back|rear|far|near)[\s-]+)?"
     r"(?P<lr>left|right|middle|center|centre)?(?:[\s-]*(?:hand\s+)?(?P<part>side|corner|half|edge|end|part))?\b")
-
-
-def _region_phrase(region: str) -> str:
-    return REGION_PHRASES.get(region) or f"in the {region.replace('_', ' ')} corner of the table"
 
 
 def _edit_region(t: str) -> str | None:
@@ -389,7 +388,7 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         if not recolor or len(placed) != 1 or canon_color(recolor.group(1)) == placed[0][0]:
             return None
         placed, intent = [(canon_color(recolor.group(1)), placed[0][1])], "tweak"
-    clauses = [f"place the {c} block {_region_phrase(r)}" for c, r in placed]
+    clauses = [f"place the {c} block {region_phrase(r)}" for c, r in placed]
     text = ", then ".join(clauses) + extra
     return text[0].upper() + text[1:], intent
 
@@ -400,7 +399,7 @@ def _clause(schema: TaskSchema, p: Predicate) -> str | None:
     if p.name in PHRASES and hasattr(p, "b"):
         return f"place {_phrase(schema, p.a)} {PHRASES[p.name]} {_phrase(schema, p.b)}"
     if isinstance(p, InRegion):
-        return f"place {_phrase(schema, p.a)} {_region_phrase(p.region)}"
+        return f"place {_phrase(schema, p.a)} {region_phrase(p.region)}"
     if type(p) is OnPatch and p.patch in patches:
         return f"place {_phrase(schema, p.a)} on the {patches[p.patch]} patch"
     return None

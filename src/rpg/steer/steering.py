@@ -37,6 +37,7 @@ from rpg.schema.lexicon import (
     EDIT_ADDITIVE_RE,
     EDIT_KEEP_THEN_ADD_RE,
     NO_GOAL_RE,
+    NUMBER_WORDS,
     SAME_CUBES_RE,
     SAME_PATCH_RE,
 )
@@ -341,7 +342,7 @@ def _refuse_pivot_that_loses_cubes(edit: str, ref: TaskSchema, schema: TaskSchem
     old = [a for a in ref.assets if a.kind != "goal_patch"]
     new = [a for a in schema.assets if a.kind != "goal_patch"]
     if intent != "pivot" or len(new) >= len(old) or re.search(
-            rf"\b(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten|single|pair)\b|{STRUCTURE_RE}", edit, re.IGNORECASE):
+            rf"\b(?:\d+|{'|'.join(NUMBER_WORDS)})\b|{STRUCTURE_RE}", edit, re.IGNORECASE):
         return
     raise SteerError(f"the edit reads as a new task of {len(new)} cube{'s' if len(new) != 1 else ''} ({schema.goal_summary}), but "
                      f"v{reference} has {len(old)} and the edit says neither how many nor to start a new task; say what "
