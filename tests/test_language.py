@@ -9,6 +9,7 @@ from rpg.domain.predicates import region_boxes
 from rpg.errors import BadInput
 from rpg.schema.builtin import Inexpressible, ParseError, normalize, parse
 from rpg.schema.meaning import matches, meaning
+from rpg.schema.feasibility import check_feasibility
 
 
 @pytest.mark.parametrize("text,expected", [
@@ -1459,7 +1460,6 @@ def test_harmless_words_of_other_writers_are_read(text, expected):
     ("build a red tower on the left and a blue tower on the right", ["stack(blue,blue)@right", "stack(red,red)@left"]),
 ])
 def test_independent_parts_are_read_apart_and_laid_out_clear_of_each_other(text, expected):
-    from rpg.schema.feasibility import check_feasibility
     from rpg.schema.readers.compose import PART_CLEARANCE
 
     schema = check_feasibility(parse(text))
@@ -1904,3 +1904,96 @@ def test_a_cube_named_by_the_label_it_bears(text, expected):
 def test_letter_side_up_of_a_goal_that_judges_no_face_is_refused():
     with pytest.raises(ParseError, match="letter side up"):
         parse("The cube with the M goes in the center of the table, letter side up.")
+
+
+@pytest.mark.parametrize("text,expected", [
+    # the direction had been dropped: a between and an unordered line (stranger7)
+    ("Make a line, from left to right, that starts with the black cube and ends with the white cube, with the gray cube "
+     "in the middle.", ["line[left_to_right](black,gray,white)"]),
+    ("Make a line from right to left that starts with the black cube and ends with the white cube, with the gray cube "
+     "in the middle", ["line[left_to_right](white,gray,black)"]),
+    # which corner, said after the corner: it had been any corner
+    ("can u put the orange block in the corner? the back left one", ["in_region(orange,back_left)"]),
+    ("put the orange block in the corner - the back left one", ["in_region(orange,back_left)"]),
+    # a terse line's place with no preposition: it had been a line anywhere
+    ("LINE front edge: red, red, red", ["line(red,red,red)@front"]),
+])
+def test_directions_and_places_said_tersely_or_after_the_fact(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,match", [
+    # a direction no part of the goal orders by (the wall judges its layers' colours, not their order in a row)
+    ("build a wall: bottom row from left to right red green blue, top row from left to right yellow white pink",
+     "'left to right' says which way"),
+    # a place word no place mention reads and no part of the goal carries
+    ("make a row front edge of red, green, blue", "the place 'front'"),
+    ("put the red cube next to the blue cube front side", "place word 'front'"),
+    ("put the red block on the green patch, corner", "place word 'corner'"),
+])
+def test_a_direction_or_place_word_the_task_does_not_carry_is_refused(text, match):
+    with pytest.raises(ParseError, match=match):
+        parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("In the end, the red block should be on the blue block.", ["stack(blue,red)"]),  # a time, not a place
+    ("Make a tower with the two purple cubes right in the middle of the table", ["stack(purple,purple)@center"]),
+    ("push left the red block", ["in_region(red,left)"]),
+])
+def test_place_words_used_for_no_place_or_carried_by_the_goal_are_read(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # each tower's colour said after the count: every tower had been given both colours (stranger7)
+    ("i want 2 towers. one is red red. the other one is blue blue", ["stack(blue,blue)", "stack(red,red)"]),
+    ("two towers, one red and one blue", ["stack(blue,blue)", "stack(red,red)"]),
+    ("two towers of 3 cubes, one red and one blue", ["stack(blue,blue,blue)", "stack(red,red,red)"]),
+    ("two towers: red, red and blue, blue", ["stack(blue,blue)", "stack(red,red)"]),
+    ("two stacks - the first all red, the second all yellow", ["stack(red,red)", "stack(yellow,yellow)"]),
+    # a colour said once per cube with no commas (a transcript): the cubes had collapsed to one per colour
+    ("make a line thats blue blue red red going left to right", ["line[left_to_right](blue,blue,red,red)"]),
+    ("put the red red block on the blue one", ["stack(blue,red)"]),  # a stutter: one cube
+    # a tower's height said as a height: it had been a tower of two
+    ("Goal: a tower of height 4 made only of green cubes.", ["stack(green,green,green,green)"]),
+    ("a tower with a height of 3 cubes, all red", ["stack(red,red,red)"]),
+    # a side of the landmark cube: it had been read as next to
+    ("Please help me put green cube to yellow cube left side.", ["left_of(green,yellow)"]),
+    ("put the red block to the blue block's right", ["right_of(red,blue)"]),
+])
+def test_towers_colours_heights_and_sides_said_the_way_people_talk(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_tower_given_several_colours_and_no_order_is_refused():
+    with pytest.raises(ParseError, match="several colours and not their order"):
+        parse("two towers: red, blue and green, yellow")
+
+
+@pytest.mark.parametrize("text,expected", [
+    # letters and digits standing alone on either side of a relation: the middle cube had been dropped,
+    # or coloured cubes made up for the letters (stranger7)
+    ("STACK 2 on 1, 3 on 2 (digit cubes)", ["stack(1,2,3)"]),
+    ("stack the letter cubes: B on A, C on B", ["stack(A,B,C)"]),
+    ("stack B on A, C on B", ["stack(A,B,C)"]),
+    ("stack letter B on letter A, letter C on letter B", ["stack(A,B,C)"]),
+    # the reading the cubes must give, said with spaces: it had been the order they were listed in
+    ("Put the digit cubes 3, 1 and 2 in a row so that they read 1 2 3 from left to right.",
+     ["line[left_to_right](1,2,3)", "reads(1,2,3;direction=left_to_right,face=up,text=123)"]),
+    # each role said before its cube: it had made two towers
+    ("Make a tower out of three cubes: below red, in the middle blue, above green.", ["stack(red,blue,green)"]),
+    ("stack all N blocks", ["stack(red,blue)"]),  # N is a number, not a letter cube
+])
+def test_labels_readings_and_roles_said_tersely(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,match", [
+    ("put the red block on the blue block, then do the same with X", "the letter 'X' has no place"),
+    ("Stack the teal cube on the magenta cube.", "palette does not have"),  # not read as cyan and pink
+    ("put the rear cube on the green patch", "current scene"),  # a cube picked by where it stands now
+])
+def test_letters_colours_and_selectors_the_task_cannot_hold_are_refused(text, match):
+    with pytest.raises(BadInput, match=match):
+        check_feasibility(parse(text))

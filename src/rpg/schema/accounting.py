@@ -95,6 +95,43 @@ SUPERLATIVE_RE = re.compile(
 there are, which only a stated count makes a task (project)."""
 
 
+DIRECTION_RE = re.compile(r"\b(?P<a>left|right|front|back)\s+to\s+(?:the\s+)?(?P<b>left|right|front|back)\b")
+"""A direction said ("from left to right", "front to back"): some part of the goal must order
+cubes along that axis (a directed line, a reading, a relation of that axis)."""
+
+AXIS_WORD_RE = re.compile(r"\b(?P<a>left|front)\s*-\s*(?:right|back)\b")
+"""An axis said ("a left-right line", "front-back"): some part of the goal must lie along it (a
+line on that axis, or an order along it)."""
+
+AXIS_ORDERS = {"left": frozenset({"left_to_right", "right_to_left", "left_of", "right_of"}),
+               "front": frozenset({"front_to_back", "back_to_front", "in_front_of", "behind"})}
+"""An axis (by its first side) -> the order relations (:meth:`Predicate.constraints`) and
+reading directions that run along it."""
+AXIS_ORDERS["right"], AXIS_ORDERS["back"] = AXIS_ORDERS["left"], AXIS_ORDERS["front"]
+
+
+PLACE_WORD_RE = re.compile(r"\b(?P<w>left|right|front|back|rear|middle|center|centre|corners?|edges?|sides?|ends?)\b")
+"""Words that name a place on the table, a side of a cube or a part of a structure: each one an
+instruction says must be read into its task.  Those inside a place, relation, direction or
+corner mention are checked there; any other (:data:`PLACE_WORD_SPANS`, :data:`NOT_A_PLACE_RE`)
+is a ``place word`` mention, consumed only by a part of the goal of its kind
+(:func:`_carries_place_word`): "LINE front edge: red, red, red" read as a line anywhere is refused."""
+
+NOT_A_PLACE_RE = re.compile(r"\bends?\s+up\b|\bright\s+(?=(?:next|beside|by|on|onto|in|into|at|up|there|here|behind|against|"
+                            r"under|underneath|below|above|over|between|away|now|atop|alongside|in\s+front)\b|@)"
+                            r"|\ball\s+right\b|\bback\s+(?=(?:on|onto|to|into|in|where|down|up|together)\b)"
+                            r"|\b(?:put|place|move|set|bring|take|stack)\s+(?:it|them)\s+back\b"
+                            r"|\bfrom\s+(?:the\s+)?(?:far\s+)?(?:left|right|front|back|rear|middle|center|centre)(?:\s+(?:side|edge|end|corner))?\b"
+                            r"(?!\s+(?:to|of)\b)"
+                            r"|\b(?:in|at|by|towards?)\s+the\s+(?:very\s+)?end\b(?!\s+of\b)|\bend\s+(?:result|state|goal|position|"
+                            r"configuration|arrangement|scene)\b")
+"""Place words used for no place of the goal: "end up", "in the end" and "the end state" (a time),
+"right next to" (an intensifier), "all right", "put it back on" (a return), "take it from the
+centre" (where a cube starts, which rho_0 draws)."""
+
+EACH_CORNER_RE = re.compile(r"\b(?:each|every|all)\s+(?:of\s+the\s+)?(?:(\d+)\s+)?corners?\b")
+"""Every corner of the table ("in each of the 4 corners"): that many corners in the task."""
+
 BARE_PLACE_RE = re.compile(
     r"\b(?:in|at|on|to|into|onto|near|by|along)\s+the\s+(?:very\s+|far\s+)?(?P<side>front|back|rear|left|right|middle|center|centre)"
     r"(?:\s*-?\s*(?:hand\s+)?(?:side|half|part|edge|end|area|region))?\b(?!\s*(?:of\b|-|corner|left|right|middle))")
@@ -115,6 +152,14 @@ the blue one on the right"): the goal predicates that consume it then."""
 _OPPOSITE = {"left": ("right",), "right": ("left",), "front": ("back",), "back": ("front",)}
 """A side of the table -> the side across from it: a bare side is one end of a relation only
 when the other end is said too ("red on the left, blue on the right")."""
+
+
+LONE_LETTER_RE = re.compile(r"(?<![\w'\-.(])(?<!\b(?i:plan|step|part|type|task|zone|area|spot|mark|site) )(?<!\b(?i:option|marked|letter) )"
+                            r"([B-HJ-Z]|A(?=\s*(?:[,;:!?]|\.(?!\w)|$)|\s+(?:on|onto|and|then|to|is|at|in|next|behind|beside|"
+                            r"under|below|above|left|right|between)\b))(?![\w'\-)]|\.\w)(?!\s+(?:[a-z]+\s+)?(?:blocks|cubes|ones)\b)")
+"""A capital letter standing alone ("stack B on A", "the C"): a letter cube, which the task must
+have ("I" is the speaker; "A" only where it is no article; not an option, a step or a list
+marker: "plan B", "(c)", "e.g."; not a number of cubes: "all N blocks")."""
 
 
 class UnaccountedMention(BadInput):
@@ -196,14 +241,45 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
             out.append(Mention(m.group(0), "structure", predicates=("grid",)))
     for m in UNDO_RE.finditer(text):
         out.append(Mention(m.group(0), "undo"))
+    for m in DIRECTION_RE.finditer(text):
+        if AXIS_ORDERS[m.group("a")] is AXIS_ORDERS[m.group("b")] and m.group("a") != m.group("b"):
+            out.append(Mention(m.group(0), "direction", region=m.group("a")))
+    for m in AXIS_WORD_RE.finditer(text):
+        out.append(Mention(m.group(0), "axis", region=m.group("a")))
     for m in MATCHING_RE.finditer(text):
         out.append(Mention(m.group(0), "matching"))
+    read = [m.span() for r in (BARE_PLACE_RE, DIRECTION_RE, AXIS_WORD_RE, NOT_A_PLACE_RE, EACH_CORNER_RE, *(re.compile(w) for w, _ in RELATION_WORDS))
+            for m in r.finditer(text)]
+    for m in PLACE_WORD_RE.finditer(text):  # a place word no mention above reads: some part of the goal must carry it
+        if not any(a <= m.start() < b for a, b in read):
+            out.append(Mention(m.group(0), "place word", region=m.group("w")))
     for m in SUPERLATIVE_RE.finditer(text):
         out.append(Mention(m.group(0), "superlative"))
-    each = re.search(r"\b(?:each|every|all)\s+(?:of\s+the\s+)?(?:(\d+)\s+)?corners?\b", text)
+    each = EACH_CORNER_RE.search(text)
     if each:
         out.append(Mention(each.group(0), "place", count=int(each.group(1) or 4), region="corners"))
     return out
+
+
+def _carries_place_word(word: str, goal: list[P.Predicate], regions: set[str]) -> list[str]:
+    """The parts of ``goal`` that can carry a place word said outside any place mention: a
+    side (left, right, front, back) a region of that side or an order along its axis; a middle
+    a central region, a between or any order (a stack's or layer's middle); a corner a corner
+    region; an edge, side or end any region, side relation or ordered line."""
+    word = {"rear": "back", "centre": "middle", "center": "middle"}.get(word, word).rstrip("s") if word != "sides" else "side"
+    orders = sorted({c[1].get("relation") for p in goal for c in p.constraints() if c[0] == "order"}
+                    | {getattr(p, "direction", None) for p in goal} - {None})
+    params = {str(v) for p in goal for v in p.params().values()}
+    if word in AXIS_ORDERS:
+        return sorted({f"in_region {r}" for r in regions if word in r.split("_")}
+                      | set(orders) & AXIS_ORDERS[word] | {f"{word} (a parameter)" for v in params if word in v.split("_")})
+    if word == "middle":
+        return sorted({f"in_region {r}" for r in regions if r in ("center", "middle")} | set(orders)
+                      | {p.name for p in goal if p.name == "between"})
+    if word == "corner":
+        return sorted(f"in_region {r}" for r in regions if r.count("_") == 1 or r.startswith("corner"))
+    return sorted({f"in_region {r}" for r in regions} | set(orders) & (AXIS_ORDERS["left"] | AXIS_ORDERS["front"])
+                  | {p.name for p in goal if p.name in ("between", "in_line")})
 
 
 def _count_towers(goal: list[P.Predicate]) -> int:
@@ -364,6 +440,28 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
             if have < m.count:
                 raise UnaccountedMention(f"it names {m.count} towers but the task read has {have}")
             record.append({"mention": m.words, "kind": "towers", "consumed_by": f"{have} stacks"})
+        elif m.kind == "direction":
+            ordered = {c[1].get("relation") for p in goal for c in p.constraints() if c[0] == "order"}
+            along = sorted((ordered | {getattr(p, "direction", None) for p in goal}) & AXIS_ORDERS[m.region])
+            if not along:
+                raise UnaccountedMention(f"'{m.words}' says which way the cubes run and the task read orders none "
+                                         "that way")
+            record.append({"mention": m.words, "kind": "direction", "consumed_by": ", ".join(along)})
+        elif m.kind == "axis":
+            axis = "y" if m.region == "left" else "x"
+            along = sorted(({c[1].get("relation") for p in goal for c in p.constraints() if c[0] == "order"}
+                            & AXIS_ORDERS[m.region]) | {f"in_line axis {axis}" for p in goal
+                                                        if isinstance(p, P.InLine) and p.axis == axis})
+            if not along:
+                raise UnaccountedMention(f"'{m.words}' says which way the cubes lie and the task read puts none that way")
+            record.append({"mention": m.words, "kind": "axis", "consumed_by": ", ".join(along)})
+        elif m.kind == "place word":
+            carried = _carries_place_word(m.region, goal, regions)
+            if not carried:
+                raise UnaccountedMention(f"the place word '{m.words}' has no part in the task read (a cube picked by where it "
+                                         "stands now refers to the current scene, which a task cannot see: name it by "
+                                         "colour or label)")
+            record.append({"mention": m.words, "kind": "place", "consumed_by": ", ".join(carried)})
         elif m.kind == "end role":
             ends = _ends_at(goal, m.region, {a.name: a.color for a in schema.assets}, m.color)
             if not ends:
@@ -514,10 +612,16 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     if caps:
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {caps[0]!r} has no place in "
                           "that task. Rephrase (e.g. \"spell the word ...\"), or use --model")
+    single = [m.group(1) for m in LONE_LETTER_RE.finditer(f.original) if m.group(1) not in labels]
+    if single:  # "put the red block on the C": a letter cube the reading dropped
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the letter {single[0]!r} has no "
+                          "place in that task. Rephrase (e.g. \"the letter C block\"), or use --model")
     named_labels = {m.upper() for m in re.findall(r"\b(?:letter|number|digit)\s+'?([A-Za-z0-9])'?(?![A-Za-z0-9'])",
                                                   f.original, re.IGNORECASE)}
     if f.has("letter", "letters", "number", "numbers", "digit", "digits"):
         named_labels |= set(explicit_labels(f))  # "the numbers 1 to 3 in a row, then ..."
+        # "2 on 1, 3 on 2 (digit cubes)": labels the reading named ("the digit 2 block", :func:`labels_in_relations`)
+        named_labels |= {m.upper() for m in re.findall(r"\b(?:letter|digit)\s+([a-z0-9])\s+(?:block|cube)\b", f.text)}
     if named_labels - set(labels):
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the cube labelled "
                           f"{sorted(named_labels - set(labels))[0]!r} has no place in that task. Rephrase, or use --model")

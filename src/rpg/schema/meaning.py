@@ -106,8 +106,9 @@ def meaning(schema: TaskSchema) -> list[str]:
         elif isinstance(p, P.Between):
             atoms.append(f"between({names([p.a])};{sorted_names([p.b, p.c])})")
         elif isinstance(p, P.InLine):
-            ordered = p.order and len(set(names(p.objects).split(","))) > 1  # cubes of one colour: no order to say
-            order = f"[{p.order}]" if ordered else ""
+            ordered = p.order and len(set(names(p.objects).split(","))) > 1  # cubes of one colour: no order to say,
+            directed = p.order and p.order != "sequence"  # but a direction still says the line's axis
+            order = f"[{p.order}]" if ordered or directed else ""
             body = names(p.objects) if ordered else sorted_names(p.objects)
             atoms.append(f"line{order}({body})")
             placed.append((len(atoms) - 1, p.objects))

@@ -286,6 +286,35 @@ relation word or punctuation ("stack the A on the B", "the 1 on the 2", "with A 
 then B"): read as "the A block" (a letter or digit cube), never as a count or an article."""
 
 
+SORT_WORD_RE = re.compile(r"\b(?:alphabetic\w*|numeric\w*|ascending|descending|increasing|decreasing|sorted|order)\b", re.IGNORECASE)
+"""Words that sort labels: with them, "read A, B, C, D" stays a listed sequence to sort."""
+
+LABEL_CUBES_SAID_RE = re.compile(r"\b(?:letter|digit|number|label(?:l?ed)?)(?:\s+(?:cubes|blocks)|\s+[A-Z0-9]\b)", re.IGNORECASE)
+"""Words that say the cubes are letter or digit cubes ("the digit cubes", "letter B")."""
+
+_LABEL_REL = (r"(?:on(?:to)?|atop|under|underneath|below|above|beneath|next\s+to|beside|behind|in\s+front\s+of"
+              r"|(?:to\s+the\s+)?(?:left|right)\s+of)")
+LABEL_TOKEN_RE = re.compile(r"(?:\b(?:letter|digit|number)\s+)?(?<![\w'@.])(?P<l>[A-Z]|\d)(?![\w'%]|\.\d)"
+                            r"(?!\s*(?:[x\u00d7+\-=*/]|blocks?\b|cubes?\b|times\b))")
+"""A letter or digit standing alone ("B", "letter B", "2")."""
+LABEL_BEFORE_RE = re.compile(rf"\s+{_LABEL_REL}\s+(?:the\s+)?(?:(?:letter|digit|number)\s+)?(?:[A-Z]|\d)(?![\w'])")
+LABEL_AFTER_RE = re.compile(rf"\b{_LABEL_REL}\s+(?:the\s+)?$")
+
+
+def labels_in_relations(text: str, digits: bool) -> str:
+    """Letters (and, with ``digits``, digits) standing alone for their cubes on either side of a
+    relation ("B on A, C on B", "letter B on letter A", "2 on 1, 3 on 2"): rewritten "the letter
+    B block".  Digits only for a text that says its cubes are letter or digit cubes
+    (:data:`LABEL_CUBES_SAID_RE`): elsewhere "2 on 1" may be a count."""
+    def sub(m: re.Match) -> str:
+        if m.group("l").isdigit() and not digits:
+            return m.group(0)
+        if not (LABEL_BEFORE_RE.match(text, m.end()) or LABEL_AFTER_RE.search(text[:m.start()])):
+            return m.group(0)
+        return f"the {'letter' if m.group('l').isalpha() else 'digit'} {m.group('l')} block"
+    return LABEL_TOKEN_RE.sub(sub, text)
+
+
 THE_PATCH_RE = re.compile(r"\b(the|that|this|same)\s+(?:goal\s+|target\s+)?patch\b(?!es)")
 """A patch referred to without its colour ("far from that patch"): the one patch named before
 it, whose colour it takes; refused when several were named (a second, gray patch had been
@@ -342,6 +371,10 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         raise ParseError("the instruction is empty; describe a task, e.g. \"stack the red block on the blue block\"")
     if len(original) > MAX_INSTRUCTION_CHARS:
         raise ParseError(f"the instruction has {len(original)} characters; the limit is {MAX_INSTRUCTION_CHARS}")
+    # "so that they read 1 2 3", "reads A, B, C": the labels read as one word ("read 123")
+    if not SORT_WORD_RE.search(original):  # "... read A, B, C, D in alphabetical order": a sort, read as one
+        original = re.sub(r"\b((?:read|spell|show)(?:s|ing)?)\s+((?:[A-Z0-9](?:\s*,\s*(?:and\s+)?|\s+and\s+|\s*-\s*|\s+))+[A-Z0-9])"
+                          r"(?![\w'])", lambda m: f"{m.group(1)} {re.sub(r'[^A-Z0-9]', '', m.group(2))}", original)
     # "the cube with the M", "the block with the 4 on it": the cube labelled so
     labelled = re.sub(r"\b([Tt]he|[Aa]n?)\s+(block|cube)\s+(?:with|bearing|showing|that\s+(?:has|shows))\s+(?:the\s+|an?\s+)?"
                       r"(?:(?:letter|digit|number)\s+)?'?([A-Z]|\d)'?(?:\s+on\s+it)?\b(?!'|\s*(?:[x\u00d7+\-=*]|\w+\s+(?:blocks?|cubes?)\b))",
@@ -353,6 +386,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     labelled = BARE_LABEL_RE.sub(lambda m: m.group(0) if listed and m.group(1) != "the" else
                                  f"{m.group(1)} {'' if m.group(1) == 'the' else 'the '}{m.group(2)} block",
                                  labelled)  # "stack the A on the B", "with A at the bottom, then B": label cubes
+    # "stack B on A, C on B", "STACK 2 on 1, 3 on 2 (digit cubes)", "stack letter B on letter A"
+    labelled = labels_in_relations(labelled, digits=bool(LABEL_CUBES_SAID_RE.search(original)))
     labelled = re.sub(r"\b(the|a|an)\s+([A-Z])\s+(block|cube)\b", r"\1 letter \2 \3", labelled)  # "the A block"
     labelled = re.sub(r"\b(the)\s+(\d)\s+(block|cube)\b(?!s)", r"\1 digit \2 \3", labelled)  # "the 3 cube"
     text = labelled.lower()
@@ -403,6 +438,18 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(rf"(?:^|{_BARE_OBJECT_BEFORE})(?=(?:{COLOR_RE})\s+(?:block|cube|brick|box)\b)", "the ", text)
     text = re.sub(r"\b(at|to|in|on|of|near)\s+(?=(?:front|back|rear|left|right)(?:\s+(?:left|right))?\s+(?:side|corner|edge|half|part|end)\b"
                   r"|(?:middle|center|centre)\s+of\b|table\b|(?:middle|center|centre)\s*(?:[.!,;]|$))", r"\1 the ", text)
+    # "blue blue red red": a transcript's list of cubes with no commas, a colour said again for each
+    # cube; "the red red block" is one cube (a stutter)
+    text = re.sub(rf"(?P<det>\b(?:the|a|an)\s+)?\b(?P<run>(?:{COLOR_RE})(?:\s+(?:{COLOR_RE}))+)\b(?P<noun>\s+(?:block|cube|one)\b)?",
+                  lambda m: m.group(0) if not re.search(rf"\b({COLOR_RE})\s+\1\b", m.group("run"))
+                  else (m.group("det") + re.sub(rf"\b({COLOR_RE})(?:\s+\1\b)+", r"\1", m.group("run")) + m.group("noun"))
+                  if m.group("det") and m.group("noun")
+                  else (m.group("det") or "") + ", ".join(m.group("run").split()) + (m.group("noun") or ""), text)
+    # "in the corner? the back left one", "the corner - the front right one": which corner, said after
+    text = re.sub(r"\bthe\s+corner\s*(?:[,?:;\-\u2013\u2014]+|\.\.\.)\s*(?:i\s+mean\s+|namely\s+)?the\s+(front|back|rear|far)\s+"
+                  r"(left|right)\s+(?:one|1|corner)\b", r"the \1 \2 corner", text)
+    # "LINE front edge: red, red, red": a terse line's place said with no preposition
+    text = re.sub(r"\b(lines?|rows?)\s+(?=(?:front|back|rear|left|right)\s+(?:edge|side)\b)", r"\1 at the ", text)
     text = re.sub(r"\b(?:box|cube|block)[\s-]shaped\s+(?=(?:blocks?|cubes?|bricks?)\b)", "", text)  # "the blue box-shaped block"
     text = re.sub(r"\b(spell(?:s|ing)?)(?:\s+out)?\s+the\s+(?:name|word)\b", r"\1", text)  # "spell out the name EVA"
     text = re.sub(r"\b(?:a\s+)?long\s+way\s+(?:away\s+)?from\b", "far from", text)  # "a long way from the orange block"
@@ -480,6 +527,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.PILE_ON_RE.sub("stack ", text)
     text = lexicon.TOTAL_RE.sub(lambda m: f"{m.group(1)} {m.group(2) or 'blocks'}" if m.group(1) else "", text)
     text = re.sub(r"\btoward(?:s)?\b", "to", text)
+    # "put green cube to yellow cube left side", "to the blue block's right": a side of the landmark cube
+    text = re.sub(rf"\b(?:to|on|at)\s+(the\s+(?:{COLOR_RE})\s+(?:block|cube|one))(?:'s)?\s+(?:the\s+)?(left|right)(?:\s*-?\s*hand)?"
+                  rf"(?:\s+side)?\b(?!\s+(?:of|corner|edge|half|part)\b)", r"to the \2 of \1", text)
     # "push the blue block to the red block": moved up to it, i.e. next to it (Language-Table, Demo2Code)
     text = re.sub(rf"\b(push|move|slide|put|bring|shift)\s+the\s+((?:{COLOR_RE})\s+(?:block|cube))\s+to\s+"
                   rf"(the\s+(?:{COLOR_RE})\s+(?:block|cube))\b(?!\s+(?:of|patch)\b)", r"\1 the \2 next to \3", text)
@@ -650,7 +700,29 @@ _TOWER_TEXT_RE = re.compile(rf"\b(?:stack|stacked|{TOWER_NOUNS})\b")
 _OTHER_STRUCTURE_RE = re.compile(r"\b(?:pyramid|wall|grid|square|row|line|circle|ring)s?\b")
 
 
+_ROLES = {"below": 0, "beneath": 0, "underneath": 0, "under": 0, "bottom": 0, "lowest": 0, "base": 0,
+          "middle": 1, "between": 1, "centre": 1, "center": 1,
+          "above": 2, "over": 2, "top": 2, "highest": 2, "topmost": 2}
+"""A role said before its cube in a tower ("below red, in the middle blue, above green") ->
+its rank from the table (bottom 0, middle 1, top 2)."""
+_ROLE_FIRST = (r"(?:at\s+the\s+|on\s+the\s+|in\s+the\s+|on\s+)?(?P<r{i}>" + "|".join(_ROLES) + r")\s*(?:is\s+|:\s*|-\s*)?"
+               rf"(?:the\s+)?(?P<c{{i}}>{COLOR_RE})(?:\s+(?:block|cube|one))?\b")
+
+
+def _roles_first(m: re.Match) -> str:
+    """"below red, in the middle blue, above green" -> "from bottom to top: red, blue, green"
+    (two or three roles, each rank once); the words as they were otherwise."""
+    said = [(_ROLES[m.group(f"r{i}")], m.group(f"c{i}")) for i in (1, 2, 3) if m.group(f"r{i}")]
+    ranks = [r for r, _ in said]
+    if len(set(ranks)) != len(ranks) or not {0, 2} <= set(ranks):
+        return m.group(0)
+    return "from bottom to top: " + ", ".join(c for _, c in sorted(said))
+
+
 STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
+    # "below red, in the middle blue, above green": each role said before its cube, read from the bottom
+    (re.compile(rf"\b{_ROLE_FIRST.format(i=1)}\s*[,;]?\s*(?:and\s+)?{_ROLE_FIRST.format(i=2)}"
+                rf"(?:\s*[,;]?\s*(?:and\s+)?{_ROLE_FIRST.format(i=3)})?(?![\w\s]*\b(?:of|on)\b)"), _roles_first, True),
     # "a 4-high white stack", "a 3 block tall cyan tower", "a four-story tower": the count and
     # the colour are the whole tower's ("a green 3-high tower" too)
     (re.compile(rf"\b(a|an|one|1|the)\s+({COLOR_RE})\s+(\d+)\s+{HEIGHT_WORDS}\s+({TOWER_NOUNS})\b"), r"\1 \4 of \3 \2 blocks"),
@@ -659,11 +731,16 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     # "two 3-high towers of green blocks": towers of that height each
     (re.compile(rf"\b(\d+)\s+(\d+)\s+{HEIGHT_WORDS}\s+({TOWER_NOUNS})s\b(?:\s+of\s+({COLOR_RE})\s+(?:blocks|cubes|bricks))?"),
      r"\1 \3s of \2 \4 blocks"),
+    # "a tower of height 4", "a tower with a height of 3 cubes": a tower of that many cubes
+    (re.compile(rf"\b({TOWER_NOUNS})\s+(?:of|with)\s+(?:a\s+)?height\s+(?:of\s+)?(\d+)(?:\s+(?:blocks?|cubes?|levels?|layers?))?\b"),
+     r"\1 of \2 blocks"),
     # "a tower 3 blocks high"
     (re.compile(rf"\b({TOWER_NOUNS})\s*,?\s+(\d+)\s+(?:(?:blocks?|cubes?|levels?|stor(?:ies|eys)|tiers?|layers?)\s+)?(?:high|tall)\b"),
      r"\1 of \2 blocks"),
-    # "a 4-high tower of yellow blocks": the colour after the noun is the whole tower's too
-    (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s+of\s+({COLOR_RE})(?:\s+(?:blocks|cubes|bricks))?\b"),
+    # "a 4-high tower of yellow blocks", "a tower of height 4 made only of green cubes": the colour
+    # after the noun is the whole tower's too
+    (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s+(?:(?:made|built)\s+)?(?:(?:only|entirely|solely|just|all|purely)\s+)?"
+                rf"(?:out\s+)?of\s+({COLOR_RE})(?:\s+(?:blocks|cubes|bricks))?\b"),
      r"\1 of \2 \3 blocks"),
     # "a tower, 3 blocks high, all green", "..., every cube red", "a tower 3 high, green": every cube of it
     (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s*,?\s+(?:all|each|every)(?:\s+(?:one|block|cube|of\s+them))?\s+"

@@ -174,7 +174,7 @@ def line_axis_said(f: Features) -> str | None:
     """The axis a line's words give: ``"x"`` (front-back: "vertical", "front to back"),
     ``"y"`` (left-right: "horizontal", "left to right", "side by side"), or None when they
     name none ("line up the blocks": any straight line on the table)."""
-    if f.has("vertical", "vertically", "front to back", "back to front", "depth"):
+    if f.has("vertical", "vertically", "front to back", "back to front", "depth", "front-back", "back-front"):
         return "x"
     if f.has("horizontal", "horizontally", "left to right", "right to left", "side by side", "left-right", "sideways"):
         return "y"

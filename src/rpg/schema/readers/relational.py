@@ -550,6 +550,39 @@ def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch:
             b.place(stack_layout([n], placed[base_of[n]]))
 
 
+_PER_TOWER_RE = re.compile(
+    rf"(?:^|[,.;:\-]|\band\b)\s*(?:and\s+)?(?:1|one|the\s+other(?:\s+1)?|another(?:\s+1)?|the\s+(?:first|second|third|fourth|last)"
+    rf"(?:\s+1)?)(?:\s+(?:tower|stack))?\s+(?:(?:is|of|all|made\s+of|in|has|with|should\s+be|must\s+be|only)\s+)*"
+    rf"(?P<run>(?:{COLOR_RE})(?:\s+(?:{COLOR_RE}))*)(?:\s+(?:blocks?|cubes?|ones?))?(?=\s*(?:[,.;]|\band\b|$))")
+"""One tower's colour said after the towers are counted ("2 towers: one is red red, the other one
+is blue blue"; "two towers, one red and one blue"): a colour alone colours the whole tower, a
+colour said N times is a tower of N cubes of it.  Colours listed after a colon, one group per
+tower between "and"s ("2 towers: red, red and blue, blue"), are read the same way."""
+
+
+def _per_tower_colors(text: str, k: int, height: int) -> list[list[str]] | None:
+    """Each of ``k`` towers' cubes when the words give every tower its own colour
+    (:data:`_PER_TOWER_RE`), after the towers are counted; None when they do not.
+
+    Raises:
+        ParseError: a tower given several colours (its order unsaid).
+    """
+    counted = re.search(r"\b\d+\s+(?:[a-z\-]+\s+)?(?:towers|stacks)\b", text)
+    if not counted:
+        return None
+    runs = [m.group("run").split() for m in _PER_TOWER_RE.finditer(text[counted.end():])]
+    listed = re.fullmatch(rf"\s*:\s*((?:{COLOR_RE})(?:\s*,?\s*(?:{COLOR_RE}))*)((?:\s*(?:;|,?\s+and)\s+(?:{COLOR_RE})"
+                          rf"(?:\s*,?\s*(?:{COLOR_RE}))*)+)\s*[.!]?\s*", text[counted.end():])
+    if not runs and listed:  # "2 towers: red, red and blue, blue": the groups between "and"s, one per tower
+        runs = [re.findall(rf"\b(?:{COLOR_RE})\b", g) for g in re.split(r";|\band\b", listed.group(0))]
+    if len(runs) != k:
+        return None
+    if any(len({canon_color(c) for c in run}) > 1 for run in runs):
+        raise ParseError(f"\"{text[:80]}\" gives a tower several colours and not their order; say each tower "
+                         "from the bottom (e.g. \"one tower of red on blue\")")
+    return [[canon_color(run[0])] * (len(run) if len(run) > 1 else height) for run in runs]
+
+
 def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
     colors = list(dict.fromkeys(f.color_list()))
     each = re.search(r"\b(?:towers|stacks)\s+(?:of|with)\s+(\d+)\b|\b(\d+)\s+(?:blocks?|cubes?)\s+(?:high|tall|each)\b", f.text)
@@ -559,7 +592,10 @@ def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
     if height and height >= 2 * k:
         height = height // k
     height = height if height and height >= 2 else 2
-    if len(colors) == 1 and not with_patches:
+    per_tower = None if with_patches or matching else _per_tower_colors(f.text, k, height)
+    if per_tower:
+        stack_colors = per_tower
+    elif len(colors) == 1 and not with_patches:
         stack_colors = [[colors[0]] * height for _ in range(k)]
     else:
         palette = colors_for(k, f, prefer=colors)

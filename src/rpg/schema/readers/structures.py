@@ -503,6 +503,12 @@ _END_ROLE_RE = re.compile(rf"\b(?P<c>{COLOR_RE})(?:\s+(?:block|cube|one))?\s+(?:
 in the middle", "orange is leftmost": "leftmost" reads "left")."""
 
 
+_START_END_RE = re.compile(rf"\b(?P<w>start(?:s|ing)?|begin(?:s|ning)?|end(?:s|ing)?|finish(?:es|ing)?)\s+with\s+"
+                           rf"(?:the\s+|a\s+|an\s+)?(?P<c>{COLOR_RE})\b")
+"""A line's first or last cube ("starts with the black cube and ends with the white one"): its
+ends, when the words say which way the line runs."""
+
+
 def _order_by_end_roles(f: Features) -> list[str] | None:
     """The colours of a line of distinct colours from left to right, when its words put cubes at
     its ends and middle so that every place is fixed ("a row of red, green and blue with red on
@@ -520,6 +526,14 @@ def _order_by_end_roles(f: Features) -> list[str] | None:
                              "(say each cube's place once: \"red on the left, green in the middle, blue on the right\"), "
                              "or use --model")
         place[side] = c
+    if direction_stated(f) and line_axis_said(f) == "y":  # "from left to right, starts with black and ends with white"
+        first, last = ("right", "left") if direction_of(f) == "right_to_left" else ("left", "right")
+        for m in _START_END_RE.finditer(f.text):
+            side, c = first if m.group("w").startswith(("start", "begin")) else last, canon_color(m.group("c"))
+            if place.get(side, c) != c or c in place.values() and place.get(side) != c:
+                raise ParseError(f"\"{f.original[:80]}\" puts two cubes in one place of the line, or one cube in two "
+                                 "(say each cube's place once), or use --model")
+            place[side] = c
     if not ({"left", "right"} & set(place)) or (len(colors) == 2 and "middle" in place):
         return None
     if not listed and set(place.values()) != set(colors):
@@ -680,7 +694,9 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
             b.preds.append(Between(names[1], names[0], names[2]))
         axis = line_axis_said(f)
         b.place(line_layout(names, axis=axis or "y"))
-        b.preds.insert(0, InLine(tuple(names), axis=axis))
+        alike = len(distinct) == 1 and material not in ("letters", "digits")
+        # "a column of three green cubes from front to back": alike cubes in the direction said
+        b.preds.insert(0, InLine(tuple(names), axis=axis, order=direction_of(f) if alike and direction_stated(f) else None))
         kind = {"letters": "letter ", "digits": "digit "}.get(material, "") if not distinct else ""
         b.summary.append(f"{n} {kind}cubes in one straight {({'y': 'left-right ', 'x': 'front-back '}).get(axis, '')}line"
                          + (f" with {names[1]} in the middle" if len(b.preds) > 1 else ""))
