@@ -1997,3 +1997,27 @@ def test_labels_readings_and_roles_said_tersely(text, expected):
 def test_letters_colours_and_selectors_the_task_cannot_hold_are_refused(text, match):
     with pytest.raises(BadInput, match=match):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("move the red block to the front of the green patch", ["in_front_of(red,patch:green)"]),
+    ("put a red block on the red block", ["stack(red,red)"]),  # two red cubes, not one on itself
+    ("pick up the red block with the Franka arm and put it on the blue block", ["stack(blue,red)"]),
+    ("using the UR5 robot, stack the red block on the blue block", ["stack(blue,red)"]),
+    ("Step 1: put the red block on the blue block. Step 2: put the green block on the red block.",
+     ["stack(blue,red,green)"]),
+    # in a sequence of placements "the blue block" is the one placed before (IGLU): not a new cube
+    ("Place a blue block on top of the blue block. Place two more blue blocks on the blue stack.",
+     ["stack(blue,blue,blue,blue)"]),
+])
+def test_landmarks_tools_and_step_numbers_said_around_the_goal(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_the_robot_named_is_listed_as_dropped_in_the_accounting():
+    from rpg.schema.accounting import check_mentions
+
+    record = check_mentions("using the UR5 robot, stack the red block on the blue block",
+                            parse("using the UR5 robot, stack the red block on the blue block"))
+    assert {"mention": "the ur5 robot", "kind": "ignored",
+            "consumed_by": "nothing: no meaning for the goal (reads like 'the robot that does it')"} in record

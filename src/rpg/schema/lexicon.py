@@ -774,6 +774,16 @@ PURPOSE_RE = re.compile(r"\s+\bfor\s+" + _PURPOSE + r"\b(?=\s*(?:[.!,;]|$))")
 """What the task is for, said last ("need a 2x2 grid of blue cubes for the next run"): nothing
 of the goal, dropped (:func:`rpg.schema.reading.normalize_words` lists ``what`` as dropped)."""
 
+TOOL_RE = re.compile(r"\s*,?\s*\b(?:with|using|by\s+using|via)\s+(?P<what>(?:the|a|an|your|its|my|our)\s+(?:[a-z0-9][a-z0-9\-]*\s+){0,3}?"
+                     r"(?:robot(?:ic)?\s+)?(?:arms?|robots?|grippers?|manipulators?|hands?|end[\s-]effectors?))\b(?!\s+(?:of|on|at)\b)"
+                     r"\s*(?=[.!,;]|$|\s+(?:and|then|to|stack|put|place|move|push|pick|build|make|arrange)\b)")
+"""The robot that does the task ("with the Franka arm", "using the UR5 robot", "with your left
+hand"): nothing of the goal, dropped (listed as dropped, like :data:`PURPOSE_RE`)."""
+
+STEP_MARKER_RE = re.compile(r"(?:^|(?<=[.;!:,]\s))(?:step\s+(?:\d+|one|two|three|four|five|six)|\(?\d+\))\s*[:.)\-]?\s+")
+"""A step's number before it ("Step 1: put ...", "2) stack ..."): the steps' end states are the
+goal; the numbers are dropped."""
+
 ARROW_RE = re.compile(r"\b(block|cube|brick)\s*(?:->|\u2192|=>)\s*(?:the\s+)?(?=(?:front|back|rear|left|right|center|centre|middle"
                       r"|far|near)\b)")
 """A cube sent to a place with an arrow ("blue cube -> front left corner"): read as "in the"."""

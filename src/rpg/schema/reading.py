@@ -417,6 +417,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.PREAMBLE_RE.sub("", text).strip()
     asked_by += [(m.group("what"), "what the task is for") for m in lexicon.PURPOSE_RE.finditer(text)]
     text = lexicon.PURPOSE_RE.sub("", text)
+    asked_by += [(m.group("what"), "the robot that does it") for m in lexicon.TOOL_RE.finditer(text)]
+    text = lexicon.TOOL_RE.sub("", text)
+    text = lexicon.STEP_MARKER_RE.sub("", text)
     text = lexicon.ARROW_RE.sub(r"\1 in the ", text)
     spelled = {w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)}  # "spell BOOK": a word, not a book
     refused = [(kind, ws, why) for kind, ws, why in _inexpressible(text)
@@ -530,6 +533,13 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     # "put green cube to yellow cube left side", "to the blue block's right": a side of the landmark cube
     text = re.sub(rf"\b(?:to|on|at)\s+(the\s+(?:{COLOR_RE})\s+(?:block|cube|one))(?:'s)?\s+(?:the\s+)?(left|right)(?:\s*-?\s*hand)?"
                   rf"(?:\s+side)?\b(?!\s+(?:of|corner|edge|half|part)\b)", r"to the \2 of \1", text)
+    # "move the red block to the front of the green patch": in front of that cube or patch
+    text = re.sub(rf"\bto\s+the\s+front\s+of\s+(?=the\s+(?:{COLOR_RE})\s+(?:goal\s+|target\s+)?(?:block|cube|patch|one)\b)",
+                  "in front of ", text)
+    # "put a red block on the red block": two red cubes (the other had been the same cube, a contradiction)
+    # (alone: in a sequence of placements "the blue block" is one placed before, :mod:`rpg.schema.clauses`)
+    text = re.sub(rf"\b(a|an)\s+({COLOR_RE})\s+(block|cube)\s+((?:on(?:to)?(?:\s+top\s+of)?|next\s+to|beside)\s+)the\s+\2\s+(block|cube)\b"
+                  r"(?=\s*[.!]?\s*$)", r"\1 \2 \3 \4another \2 \5", text)
     # "push the blue block to the red block": moved up to it, i.e. next to it (Language-Table, Demo2Code)
     text = re.sub(rf"\b(push|move|slide|put|bring|shift)\s+the\s+((?:{COLOR_RE})\s+(?:block|cube))\s+to\s+"
                   rf"(the\s+(?:{COLOR_RE})\s+(?:block|cube))\b(?!\s+(?:of|patch)\b)", r"\1 the \2 next to \3", text)
