@@ -1046,3 +1046,16 @@ def test_a_whole_task_reading_that_drops_cubes_nobody_said_to_drop_is_refused(tm
     fam = compile_instruction("Make a line of six cubes, three black and three white, in any order", tmp_path, name="fam").path
     with pytest.raises(SteerError, match="new task of 2 cubes"):
         steer(fam, "blacks on the left, whites on the right")
+
+
+@pytest.mark.parametrize("base, edits, want", [
+    # an edit going on from the task, or stacking a new cube on one of its cubes, had replaced the task:
+    # the cubes below were dropped (stack(red,green) of red on blue), silently
+    ("Put the red cube on the blue cube", ["then put the green cube on the red cube"], ("extend", ["stack(blue,red,green)"])),
+    ("Put the red cube on the blue cube", ["now put the green cube on the red cube"], ("extend", ["stack(blue,red,green)"])),
+    ("Put the A cube on the B cube", ["then put C on A", "actually the other way up"], ("modify", ["stack(C,A,B)"])),
+    # a cube moved to another landmark is still a tweak of the task
+    ("Put the red cube on the blue cube", ["put the red cube on the yellow cube"], ("tweak", ["stack(yellow,red)"])),
+])
+def test_an_edit_that_builds_on_the_task_keeps_it(tmp_path, base, edits, want):
+    assert _steered(tmp_path, base, *edits)[-1] == want

@@ -985,6 +985,10 @@ EDIT_CHANGE_VERB_RE = re.compile(r"\b(?:change|replace|swap|substitute|remove|de
 EDIT_ADDITIVE_RE = re.compile(r"\b(?:also|too|as well|add|additionally|another|in addition|plus)\b")
 """Words that make an edit an addition: what it states joins the task, the rest is kept."""
 
+EDIT_CONTINUES_RE = re.compile(r"^\s*(?:and\s+|,\s*)?(?:then|next|after\s+that|afterwards|after\s+this)\b")
+"""An edit that goes on from the task ("then put C on A", "next, the green cube on the red one"):
+an addition, never a whole new task (it had replaced the task, dropping the cubes below)."""
+
 EDIT_BESIDE_RE = re.compile(r"\b(?:left|right|beside|next to|near|behind|in front|front|back|between|around|by|"
                             r"side|apart|away|separate\w*)\b")
 """Words that place a cube added to a structure beside it, not in it ("add a pink block to

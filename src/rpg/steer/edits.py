@@ -25,6 +25,7 @@ from rpg.schema.builder import DEFAULT_COLORS
 from rpg.schema.lexicon import (
     COLOR_RE,
     EDIT_ADDITIVE_RE,
+    EDIT_CONTINUES_RE,
     EDIT_ANAPHORA_RE,
     EDIT_BESIDE_RE,
     EDIT_CHANGE_VERB_RE,
@@ -368,7 +369,7 @@ def read_ops(t: str) -> list[Op]:
     if re.search(r"\boutliers?\b", t):
         m = re.search(r"\b(\d+)\s+outliers?\b", t)
         ops.append(Op("outliers", {"per_pile": int(m.group(1)) if m else 1}))
-    reverse = re.search(r"\b(?:flip|reverse|invert|mirror|swap)\b[^.;]*\border\b|\bupside down\b|\breverse(?:d)? order\b|"
+    reverse = re.search(r"\b(?:flip|reverse|invert|mirror|swap)\b[^.;]*\border\b|\bupside down\b|\breverse(?:d)? order\b|\bother\s+way\s+up\b|"
                         r"\b(?:flip|reverse|invert)\s+(?:it|them|the\s+(?:whole\s+|entire\s+)?(?:tower|stack|line|row|gradient|sequence|colou?rs|word))\b"
                         r"|\b(?:spell|write|read|arrange|put|place)\s+(?:it|them|the\s+word)\s+backwards?\b", t)
     if reverse:
@@ -577,7 +578,7 @@ def looks_standalone(t: str) -> bool:
     """True when a normalised edit reads as a whole task rather than a change to one (an
     addition, "also ...", "and a yellow block on the blue one", keeps the task)."""
     return not ANAPHORA_RE.search(t) and not EDIT_ADDITIVE_RE.search(t) and not re.match(r"\s*and\b", t) \
-        and bool(TASK_NOUN_RE.search(t))
+        and not EDIT_CONTINUES_RE.match(t) and bool(TASK_NOUN_RE.search(t))
 
 
 def intent_of_ops(ops: list[Op], spec: TaskSpec | None = None) -> str:
@@ -636,7 +637,8 @@ def interpret(edit: str) -> EditPlan:
     # an edit that refers to the task ("it", "the orange one") or adds to it ("also", "too") is
     # no whole new task: the task's own terms or an addition read it, else it is refused
     return EditPlan(edit, cue, standalone=not (REFERS_RE.search(t) or EDIT_ADDITIVE_RE.search(t) or EDIT_VERB_RE.search(t)
-                                               or re.match(r"\s*(?:and|plus)\b", t)))  # "and the blue block in the corner"
+                                               or re.match(r"\s*(?:and|plus)\b", t)  # "and the blue block in the corner"
+                                               or EDIT_CONTINUES_RE.match(t)))  # "then put C on A"
 
 
 REFERS_RE = EDIT_REFERS_RE

@@ -35,6 +35,7 @@ from rpg.schema.feasibility import check_feasibility
 from rpg.schema.lexicon import (
     COLOR_RE,
     EDIT_ADDITIVE_RE,
+    EDIT_CONTINUES_RE,
     EDIT_KEEP_THEN_ADD_RE,
     NO_GOAL_RE,
     NUMBER_WORDS,
@@ -250,6 +251,8 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         schema = _same_cubes(plan.text, ref_schema, schema)
         if relation_of(schema) and relation_of(ref_schema) and same_assets(schema, ref_schema):
             return schema, text, "modify"  # the same cubes in another relation
+        if _stacks_a_new_cube_on_the_task(schema, ref_schema):  # "now put the green cube on the red cube": on top of it
+            return _addition(replace(plan, text=f"then {text}"), reference, ref_schema)
         intent = intent_of_standalone(extract(schema), ref_spec)
         _refuse_pivot_that_loses_cubes(plan.text, ref_schema, schema, intent, reference)
         return schema, text, intent
@@ -327,6 +330,17 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     except BadInput as exc:
         raise SteerError(str(exc).splitlines()[0]) from None
     return schema, instruction, intent_of_ops(plan.ops, ref_spec)
+
+
+def _stacks_a_new_cube_on_the_task(schema: TaskSchema, ref: TaskSchema) -> bool:
+    """Whether a whole-task reading of an edit only stacks a cube the task lacks on one it has,
+    the task having more ("put the green cube on the red cube" of red on blue): the cube goes
+    on the task's, an addition (read as a whole task it had dropped the blue cube)."""
+    from rpg.schema.meaning import descriptor, meaning
+
+    m = re.fullmatch(r"stack\(([^(),;|@]+),([^(),;|@]+)\)", "; ".join(meaning(schema)))
+    had = [descriptor(a) for a in ref.assets if a.kind != "goal_patch"]
+    return bool(m) and m.group(1) in had and m.group(2) not in had and len(had) > 1
 
 
 def _refuse_pivot_that_loses_cubes(edit: str, ref: TaskSchema, schema: TaskSchema, intent: str, reference: int) -> None:
@@ -433,6 +447,17 @@ def _pair(atom: str) -> frozenset[str] | None:
     return frozenset(m.groups()) if m and m.group(1) != m.group(2) else None
 
 
+def _extends(old: str, new: str) -> bool:
+    """Whether meaning atom ``new`` is tower ``old`` built higher (``stack(blue,red)`` ->
+    ``stack(blue,red,green)``, the same place): the old tower's order kept from the bottom."""
+    a = re.fullmatch(r"stack\(([^()|;]*)\)(@\w+)?", old)
+    b = re.fullmatch(r"stack\(([^()|;]*)\)(@\w+)?", new)
+    if not (a and b) or a.group(2) != b.group(2):
+        return False
+    below, above = a.group(1).split(","), b.group(1).split(",")
+    return len(above) > len(below) and above[:len(below)] == below
+
+
 def _per_cube(atoms: list[str]) -> list[str]:
     """Meaning atoms with the cubes of one patch split apart (``on_patch(blue,red,patch:green)``
     is ``on_patch(blue,patch:green)`` and ``on_patch(red,patch:green)``), so that a cube added
@@ -475,11 +500,14 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
     before, now = Counter(_per_cube(meaning(ref_schema))), Counter(_per_cube(meaning(schema)))
     had = Counter(descriptor(a) for a in ref_schema.assets)
     opened = (re.match(r"\s*(?:and|also|plus)\b", plan.text, re.IGNORECASE)  # "and the blue block in the corner": one more
+              or EDIT_CONTINUES_RE.match(plan.text.lower())  # "then put the green cube on the red cube"
               or re.search(r"\b(?:too|as\s+well|also)\s*[.!]?\s*$", plan.text, re.IGNORECASE))  # "... on the red patch too"
     no_patch = not any(a.kind == "goal_patch" for a in ref_schema.assets)  # "the orange patch" of a task with none: a new one
+    said_as_new = (r"\b(?:an?|another|one more|\d+|two|three|four)\s+(?:new\s+|more\s+|extra\s+|second\s+|2nd\s+|third\s+|3rd\s+)?"
+                   if not opened else r"\b")  # after "and", "also", "then", "too": "the green cube", "C" are the new ones
     invented = [d for d in Counter(descriptor(a) for a in schema.assets) - had  # a new cube is one said with "a", "another", a count
-                if not (no_patch and d.startswith("patch:")) and not re.search(rf"\b(?:an?|another|one more|\d+|two|three|four{'|the' if opened else ''})\s+"
-                                 rf"(?:new\s+|more\s+|extra\s+|second\s+|2nd\s+|third\s+|3rd\s+)?{re.escape(d.split(':')[-1])}\b", clause, re.IGNORECASE)]
+                if not (no_patch and d.startswith("patch:"))
+                and not re.search(rf"{said_as_new}{re.escape(d.split(':')[-1])}\b", clause, re.IGNORECASE)]
     if invented:
         raise SteerError(f"cannot add \"{clause}\" to {where}: together they read as {schema.goal_summary!r}, with "
                          f"{', '.join(invented)} nobody named; name it, or state the whole new task in the edit")
@@ -491,7 +519,8 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
         raise SteerError(f"cannot add \"{clause}\" to {where}: {clash} would relate two cubes the task already relates "
                          f"({next(a for a in before if _pair(a) == _pair(clash))}); the two contradict. Say one, or state the "
                          "whole new task")
-    if before - now or not now - before:
+    lost = [a for a in before - now if not any(_extends(a, b) for b in now - before)]  # a tower built higher is kept
+    if lost or not now - before:
         raise SteerError(f"cannot add \"{clause}\" to {where}: together they read as {schema.goal_summary!r}, which does not "
                          "keep the task's goal and add to it; state the whole new task in the edit, or use --model")
     return schema, text, "extend"
