@@ -620,13 +620,13 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
                                                   f.original, re.IGNORECASE)}
     if f.has("letter", "letters", "number", "numbers", "digit", "digits"):
         named_labels |= set(explicit_labels(f))  # "the numbers 1 to 3 in a row, then ..."
-        # "2 on 1, 3 on 2 (digit cubes)": labels the reading named ("the digit 2 block", :func:`labels_in_relations`)
-        named_labels |= {m.upper() for m in re.findall(r"\b(?:letter|digit)\s+([a-z0-9])\s+(?:block|cube)\b", f.text)}
     if named_labels - set(labels):
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the cube labelled "
                           f"{sorted(named_labels - set(labels))[0]!r} has no place in that task. Rephrase, or use --model")
     spelled = set("".join(re.findall(r"\b[A-Z]{2,}\b|(?<=')[A-Za-z0-9]{2,}(?=')", f.original)).upper())
-    invented = sorted(set(labels) - named_labels - spelled) if named_labels else []
+    # "2 on 1, 3 on 2 (digit cubes)": labels the reading named ("the digit 2 block", :func:`labels_in_relations`)
+    read_as_cubes = {m.upper() for m in re.findall(r"\b(?:letter|digit)\s+([a-z0-9])\s+(?:block|cube)\b", f.text)}
+    invented = sorted(set(labels) - named_labels - spelled - read_as_cubes) if named_labels else []
     if invented:  # "the letter cubes A, B, C and D in a circle" read as a circle of six, A to F
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but no word names the cube labelled "
                           f"{invented[0]!r}. Rephrase (say how many cubes), or use --model")
