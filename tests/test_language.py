@@ -2020,4 +2020,28 @@ def test_the_robot_named_is_listed_as_dropped_in_the_accounting():
     record = check_mentions("using the UR5 robot, stack the red block on the blue block",
                             parse("using the UR5 robot, stack the red block on the blue block"))
     assert {"mention": "the ur5 robot", "kind": "ignored",
-            "consumed_by": "nothing: no meaning for the goal (reads like 'the robot that does it')"} in record
+            "consumed_by": "nothing: no meaning for the goal (reads like 'the effector or robot that does it')"} in record
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a colour after its noun (French, Spanish, Blocksworld): a red cube had been made up for "the cube orange" (stranger8)
+    ("Make a tower of two cubes, the cube brown on the cube orange, at the front of the table.", ["stack(orange,brown)@front"]),
+    ("Put the cube green to the right of the cube red and the cube blue to the left of the cube red.",
+     ["left_of(blue,red)", "right_of(green,red)"]),
+    ("The goal is to have block purple on block yellow.", ["stack(yellow,purple)"]),
+    ("Place the cube of colour blue at the left of the cube yellow.", ["left_of(blue,yellow)"]),
+    # headings, cheering and pet names around the task
+    ("First lesson, stacking: put the yellow cube on the green cube.", ["stack(green,yellow)"]),
+    ("Side quest, The Lost Letter: place the Q cube on the purple patch.", ["on_patch(Q,patch:purple)"]),
+    ("Okay sweetie, red block goes on the blue block. Red on blue! Yay!", ["stack(blue,red)"]),
+    ("Right then, pop the orange cube in the centre of the table, there's a good chap.", ["in_region(orange,center)"]),
+    # the sort by the up faces is not added to a line of listed digits (faces unsaid)
+    ("Arrange the cubes 4, 2, 5, 1, 3 in ascending order from left to right.", ["line[left_to_right](1,2,3,4,5)"]),
+])
+def test_colours_after_nouns_headings_cheers_and_sorts_of_listed_labels(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_sentence_that_is_not_only_cheering_is_still_read():
+    with pytest.raises(ParseError, match="turns around"):
+        parse("Put red on blue. Then flip it.")

@@ -410,12 +410,13 @@ CLOSING_RE = re.compile(r"(?:[,.;:]\s*|\s+)(?:and\s+)?that(?:'s|\s+is|\s+will\s+
 """A closing that says nothing of the goal ("..., and that's everything.", "... Make this true."): dropped."""
 
 EFFECTOR_RE = re.compile(
-    r"(?:,\s*)?\b(?:(?:by\s+)?using|use|with|by)\s+(?:the\s+|your\s+|its\s+|a\s+|one\s+|both\s+|each\s+|another\s+)?"
-    r"(?:(?:left|right|other|second|first|robot(?:'s|ic)?|two|dual|its|his|her)\s+){0,2}"
-    r"(?:arms?|grippers?|hands?|end[- ]effectors?|claws?|fingers?)\b(?:\s+to\b)?(?:\s*,)?")
-"""Which effector moves the cubes ("use the left arm to", "with the gripper", "using both
-hands"): a task's goal says where cubes end up, whichever arm or hand takes them there, so the
-words are dropped (:func:`rpg.schema.reading.normalize`)."""
+    r"(?:,\s*)?\b(?:(?:by\s+)?using|use|with|by|via)\s+(?P<what>(?:(?:the|your|its|a|an|one|both|each|another|my|our)\s+)?"
+    r"(?:[a-z0-9][a-z0-9\-]*\s+){0,3}?(?:robot(?:'s|ic)?\s+)?"
+    r"(?:arms?|grippers?|hands?|end[- ]effectors?|claws?|fingers?|robots?|manipulators?))\b(?:\s+to\b)?(?:\s*,)?")
+"""Which effector or robot moves the cubes ("use the left arm to", "with the gripper", "using
+both hands", "with the Franka arm", "using the UR5 robot"): a task's goal says where cubes end
+up, whichever arm, hand or robot takes them there, so the words are dropped (and listed as
+dropped: :func:`rpg.schema.reading.normalize_words`)."""
 
 POSTURE_RE = re.compile(r"\b(?:sitting|resting|lying|laying|sits|rests|lies|sit|rest|lie|located|positioned|seated|perched)\s+"
                         r"(?=(?:on|onto|upon|atop|in|inside|within|at|next|beside|behind|under|below|beneath|underneath|above|"
@@ -742,6 +743,27 @@ SMALL_TALK_RE = re.compile(
 """Small talk that says nothing of the task ("Hope you're doing well.", "Thanks a bunch!",
 "thanks in advance"): dropped (:func:`rpg.schema.reading.normalize`)."""
 
+CHAT_WORDS: frozenset[str] = frozenset("""
+lovely great good job yay hooray woohoo wow awesome nice perfect excellent wonderful brilliant super cool amazing
+fantastic well done thanks thank you cheers sweetie sweetheart honey dear buddy pal mate folks everyone kiddo ok okay
+alright right then so there here we go let's lets that's it that this the way a an chap lad boy girl there's all set
+ready now yes yep yeah hello hi hey morning afternoon evening again bravo oh ah aha phew whee see look at lovely
+is be will it'll gonna fun easy peasy
+""".split())
+"""Words of a sentence that only cheers, greets or addresses ("Good job!", "Yay!", "Here we
+go, folks!"): a sentence made of these alone is dropped (:data:`ADDRESS_RE` for an address
+inside a sentence)."""
+
+ADDRESS_RE = re.compile(r"(?:,\s*|^)(?:(?:okay|ok|now|right)\s+)?(?:sweetie|sweetheart|honey|dear|buddy|pal|mate|folks|everyone|kiddo"
+                        r"|there'?s\s+a\s+(?:good\s+)?(?:chap|lad|girl|boy|dear|love))\s*(?=[,.!?]|$)")
+"""A listener addressed by a pet name or "there's a good chap": dropped."""
+
+HEADER_RE = re.compile(r"^\s*(?:(?:first|second|third|fourth|fifth|sixth|seventh|eighth|ninth|tenth|final|next|review|bonus)\s+)?"
+                       r"(?:(?:side|main|daily|bonus)\s+)?(?:lesson|quest|stage|boss\s+stage|level|round|exercise|challenge|mission"
+                       r"|chapter|puzzle(?:\s+room)?|drill|practice)(?:\s+\d+)?(?:\s*,\s*[^:,.;]{1,40}?)?\s*[:\-\u2013\u2014]\s*")
+"""A lesson's, quest's or stage's heading before the task ("Lesson 3: ...", "Side quest, The Lost
+Letter: ...", "First lesson, stacking: ..."): the task follows, the heading is dropped."""
+
 SOMEONE_WANTS_RE = re.compile(
     r"\b(?:my|our|the)\s+(?P<who>supervisor|boss|advisor|adviser|professor|prof|pi|manager|lab|team|colleague|labmate|teacher|"
     r"client|group|mentor|tutor|lecturer)\s+(?:wants|needs|would\s+like|asked\s+for|asks\s+for|requested)\b")
@@ -773,12 +795,6 @@ the words are dropped before conditions and time are refused (:func:`rpg.schema.
 PURPOSE_RE = re.compile(r"\s+\bfor\s+" + _PURPOSE + r"\b(?=\s*(?:[.!,;]|$))")
 """What the task is for, said last ("need a 2x2 grid of blue cubes for the next run"): nothing
 of the goal, dropped (:func:`rpg.schema.reading.normalize_words` lists ``what`` as dropped)."""
-
-TOOL_RE = re.compile(r"\s*,?\s*\b(?:with|using|by\s+using|via)\s+(?P<what>(?:the|a|an|your|its|my|our)\s+(?:[a-z0-9][a-z0-9\-]*\s+){0,3}?"
-                     r"(?:robot(?:ic)?\s+)?(?:arms?|robots?|grippers?|manipulators?|hands?|end[\s-]effectors?))\b(?!\s+(?:of|on|at)\b)"
-                     r"\s*(?=[.!,;]|$|\s+(?:and|then|to|stack|put|place|move|push|pick|build|make|arrange)\b)")
-"""The robot that does the task ("with the Franka arm", "using the UR5 robot", "with your left
-hand"): nothing of the goal, dropped (listed as dropped, like :data:`PURPOSE_RE`)."""
 
 STEP_MARKER_RE = re.compile(r"(?:^|(?<=[.;!:,]\s))(?:step\s+(?:\d+|one|two|three|four|five|six)|\(?\d+\))\s*[:.)\-]?\s+")
 """A step's number before it ("Step 1: put ...", "2) stack ..."): the steps' end states are the

@@ -393,6 +393,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = labelled.lower()
     text = re.sub(r"[\u2018\u2019\u201c\u201d`]", "'", text)
     text = text.replace('"', "'")
+    effectors = [(m.group("what"), "the effector or robot that does it") for m in lexicon.EFFECTOR_RE.finditer(text)]
     text = lexicon.EFFECTOR_RE.sub(" ", text).strip()
     # "cover the green patch with the red block": the red block on it
     text = re.sub(rf"\bcover\s+(the\s+(?:{COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|tile|block|cube))\s+with\s+"
@@ -411,14 +412,16 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                                 "the two", original)
     text = lexicon.FREE_CHOICE_RE.sub("", text)
     text = lexicon.SMALL_TALK_RE.sub(" ", text)
-    asked_by = [(m.group("who"), "who asks for the task") for m in lexicon.SOMEONE_WANTS_RE.finditer(text)]
+    text = lexicon.HEADER_RE.sub("", text)
+    text = lexicon.ADDRESS_RE.sub("", text)
+    text = " ".join(s for s in re.split(r"(?<=[.!?])\s+", text)  # "Good job!", "Yay!": sentences that only cheer
+                    if not set(re.findall(r"[a-z']+", s.lower())) <= lexicon.CHAT_WORDS) or text
+    asked_by = effectors + [(m.group("who"), "who asks for the task") for m in lexicon.SOMEONE_WANTS_RE.finditer(text)]
     text = lexicon.SOMEONE_WANTS_RE.sub("i want", text)
     text = lexicon.POLITE_CONDITION_RE.sub(" ", text)
     text = lexicon.PREAMBLE_RE.sub("", text).strip()
     asked_by += [(m.group("what"), "what the task is for") for m in lexicon.PURPOSE_RE.finditer(text)]
     text = lexicon.PURPOSE_RE.sub("", text)
-    asked_by += [(m.group("what"), "the robot that does it") for m in lexicon.TOOL_RE.finditer(text)]
-    text = lexicon.TOOL_RE.sub("", text)
     text = lexicon.STEP_MARKER_RE.sub("", text)
     text = lexicon.ARROW_RE.sub(r"\1 in the ", text)
     spelled = {w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)}  # "spell BOOK": a word, not a book
@@ -441,6 +444,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(rf"(?:^|{_BARE_OBJECT_BEFORE})(?=(?:{COLOR_RE})\s+(?:block|cube|brick|box)\b)", "the ", text)
     text = re.sub(r"\b(at|to|in|on|of|near)\s+(?=(?:front|back|rear|left|right)(?:\s+(?:left|right))?\s+(?:side|corner|edge|half|part|end)\b"
                   r"|(?:middle|center|centre)\s+of\b|table\b|(?:middle|center|centre)\s*(?:[.!,;]|$))", r"\1 the ", text)
+    # "the cube brown on the cube orange", "block purple on block yellow", "the cube of colour blue": a colour after its noun
+    text = re.sub(rf"(?<!every )(?<!each )(?<!all )(?<!any )\b(cube|block|box)\s+(?:of\s+(?:the\s+)?colou?r\s+)?({COLOR_RE})\b(?!\s*(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?|,|and\b|or\b))",
+                  r"\2 \1", text)
     # "blue blue red red": a transcript's list of cubes with no commas, a colour said again for each
     # cube; "the red red block" is one cube (a stutter)
     text = re.sub(rf"(?P<det>\b(?:the|a|an)\s+)?\b(?P<run>(?:{COLOR_RE})(?:\s+(?:{COLOR_RE}))+)\b(?P<noun>\s+(?:block|cube|one)\b)?",

@@ -635,7 +635,9 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
             b.preds.append(InLine(tuple(names), axis=None, order="sequence"))
         if said_as_word:  # the labels read as a word: their faces up (not said otherwise)
             b.preds.append(Reads(tuple(names), "".join(labels), direction))
-        if order:
+        if order and said_as_word:  # "... so their up-faces read A, B, C, D in alphabetical order": the faces judged;
+            # otherwise the directed line of the listed labels, sorted, already fixes each cube's place (a sort by the
+            # up faces' labels had been added, demanding faces nobody named)
             b.preds.append(SortedBy(tuple(names), key=order[0] if order[0] != "color" else "label", direction=direction, descending=order[1]))
         b.summary.append(f"up faces read {', '.join(labels)} {direction.replace('_', ' ')}")
     elif order:
