@@ -2045,3 +2045,25 @@ def test_colours_after_nouns_headings_cheers_and_sorts_of_listed_labels(text, ex
 def test_a_sentence_that_is_not_only_cheering_is_still_read():
     with pytest.raises(ParseError, match="turns around"):
         parse("Put red on blue. Then flip it.")
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a config's keys and values (stranger8): the height had been dropped (a tower of two)
+    ('{"task": "tower", "height": 3, "color": "cyan"}', ["stack(cyan,cyan,cyan)"]),
+    ('{"instruction": "build a tower of four cubes: green, green, blue, blue from the bottom up", "seed": 7}',
+     ["stack(green,green,blue,blue)"]),
+    # a table row's and a list's separators: the circle had six cubes, the roles swapped
+    ("objective: circle | cubes: red / white / red / white", ["circle(red,red,white,white)"]),
+    ("tower | top: pink | bottom: gray", ["stack(gray,pink)"]),
+])
+def test_configs_and_table_rows(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,match", [
+    ('{"task": "stack", "objects": ["blue_large", "red_small"]}', "size"),  # "blue_large" is a size
+    ("Should there be a letter cube A, place it behind the B cube.", "conditional"),  # an inverted 'if'
+])
+def test_sizes_in_object_names_and_inverted_conditions_are_refused(text, match):
+    with pytest.raises(BadInput, match=match):
+        parse(text)

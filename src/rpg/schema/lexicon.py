@@ -131,7 +131,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "is a negation: a task's goal says what must hold at the end, and rpg does not check that something is absent; "
      "say what should be true instead"),
     ("condition", r"\b(?:if|unless|whenever|otherwise|provided)\b|\bonly\s+(?:after|once|when|before)\b"
-                  r"|\b(?:after|once|before)\s+(?:the|it|they|you)\b[^.;]*?\b(?:has|have|had)\s+been\b",
+                  r"|\b(?:after|once|before)\s+(?:the|it|they|you)\b[^.;]*?\b(?:has|have|had)\s+been\b"
+                  r"|(?:^|[.;!]\s*)(?P<w>(?:should|were|had)\s+(?:there\s+be|the|a|an|it|they)\b)[^,.;?]*,",  # "Should there be a letter cube A, ..."
      "makes the goal conditional: a task has one goal, checked at the end of the episode; say the goal for one scene"),
     ("time", r"\b(?:\d+\s+(?:seconds?|minutes?|hours?)|seconds|minutes?|hours?|meanwhile|forever|while|whilst|during)\b",
      "is about time: a task's goal is checked once, at the end of the episode, with no clock or duration"),
@@ -145,7 +146,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("size", r"\b(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge|giant|mini|heavy|heavier"
              r"|heaviest|wider|narrow|thin|thick)\s+(?:(?!(?:number|digit|letter|label)\b)[a-z]+\s+)?(?:blocks?|cubes?|boxes|box|ones?"
              r"|objects?|items?|pieces?|things?)\b"
-             r"|\b(?:by|of|in\s+order\s+of)\s+(?:their\s+)?(?:size|weight)\b|\b(?:medium|[a-z]+-)sized\b",
+             r"|\b(?:by|of|in\s+order\s+of)\s+(?:their\s+)?(?:size|weight)\b|\b(?:medium|[a-z]+-)sized\b"
+             rf"|\b(?:{COLOR_RE})\s+(?:big|large|small|little|tiny|huge|giant)\b",  # "blue_large" of a config
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
     ("reference", r"\bthe\s+(?:very\s+)?(?:first|second|third|fourth|fifth|sixth|last|next|previous|former|latter)"
                   r"\s+(?:(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?))\b"

@@ -286,6 +286,32 @@ relation word or punctuation ("stack the A on the B", "the 1 on the 2", "with A 
 then B"): read as "the A block" (a letter or digit cube), never as a count or an article."""
 
 
+CONFIG_KEYS = {"task": "{}", "goal": "{}", "objective": "{}", "type": "{}", "structure": "{}", "shape": "{}",
+               "height": "{} high", "count": "{} cubes", "n": "{} cubes", "num": "{} cubes", "num_cubes": "{} cubes",
+               "color": "{}", "colour": "{}", "colors": "{}", "colours": "{}", "objects": "{}", "cubes": "{}",
+               "instruction": "{}", "goal_text": "{}", "prompt": "{}", "text": "{}", "language_instruction": "{}",
+               "seed": ""}
+"""Keys of a task written as a config ({"task": "tower", "height": 3, "color": "cyan"}) -> how
+their value reads in a sentence ("tower, 3 high, cyan"; an instruction's text as it is; a seed,
+which draws rho_0 and says nothing of the goal, dropped); a key not listed stays as it is (and
+an unknown one is refused as a word the parser does not know)."""
+
+
+def config_fragment(text: str) -> str:
+    """A task written as a JSON or Python dict (``{'task': 'tower', 'height': 3}``, lower-cased
+    and quoted with ``'``) read as a phrase of its values (:data:`CONFIG_KEYS`); ``object_name``
+    words split ("blue_large" is "blue large", which a size word then refuses).  Other text is
+    returned as it is."""
+    text = re.sub(r"(?<=[a-z])_(?=[a-z])", " ", text)
+    if not re.match(r"\s*\{.*:.*\}\s*$", text):
+        return text
+    parts = []
+    for m in re.finditer(r"'?([a-z][a-z _]*)'?\s*:\s*(\[[^\]]*\]|'[^']*'|[^,}]+)", text):
+        key, value = m.group(1).strip().replace(" ", "_"), re.sub(r"[\[\]']", "", m.group(2)).strip()
+        parts.append(CONFIG_KEYS[key].format(value) if key in CONFIG_KEYS else f"{key.replace('_', ' ')} {value}")
+    return ", ".join(p for p in parts if p) or text
+
+
 SORT_WORD_RE = re.compile(r"\b(?:alphabetic\w*|numeric\w*|ascending|descending|increasing|decreasing|sorted|order)\b", re.IGNORECASE)
 """Words that sort labels: with them, "read A, B, C, D" stays a listed sequence to sort."""
 
@@ -393,6 +419,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = labelled.lower()
     text = re.sub(r"[\u2018\u2019\u201c\u201d`]", "'", text)
     text = text.replace('"', "'")
+    text = config_fragment(text)
     effectors = [(m.group("what"), "the effector or robot that does it") for m in lexicon.EFFECTOR_RE.finditer(text)]
     text = lexicon.EFFECTOR_RE.sub(" ", text).strip()
     # "cover the green patch with the red block": the red block on it
@@ -447,6 +474,10 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     # "the cube brown on the cube orange", "block purple on block yellow", "the cube of colour blue": a colour after its noun
     text = re.sub(rf"(?<!every )(?<!each )(?<!all )(?<!any )\b(cube|block|box)\s+(?:of\s+(?:the\s+)?colou?r\s+)?({COLOR_RE})\b(?!\s*(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?|,|and\b|or\b))",
                   r"\2 \1", text)
+    # "tower | top: pink | bottom: gray", "red / white / red / white": a table row's or a list's separators
+    text = re.sub(r"\s*\|\s*", ", ", text)
+    text = re.sub(rf"\b({COLOR_RE})\s*/\s*(?=(?:{COLOR_RE})\b)", r"\1, ", text)
+    text = re.sub(rf"\b({COLOR_RE})\s*/\s*(?=(?:{COLOR_RE})\b)", r"\1, ", text)  # the overlapping pairs
     # "blue blue red red": a transcript's list of cubes with no commas, a colour said again for each
     # cube; "the red red block" is one cube (a stutter)
     text = re.sub(rf"(?P<det>\b(?:the|a|an)\s+)?\b(?P<run>(?:{COLOR_RE})(?:\s+(?:{COLOR_RE}))+)\b(?P<noun>\s+(?:block|cube|one)\b)?",

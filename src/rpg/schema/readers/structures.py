@@ -428,9 +428,10 @@ def recognize_circle(f: Features, b: Builder) -> bool:
     of = re.search(r"\b(?:circle|ring)\s+of\s+(\d+)\b", f.text)  # "a circle of five"
     n = int(of.group(1)) if n is None and of else n
     listed = list(f.color_list())
-    if n is None and len(listed) >= 2 and len(set(listed)) == len(listed) and re.search(
-            rf"\b(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:the\s+)?(?:{COLOR_RE})\b", f.text):
-        n = len(listed)  # "the red, green and blue blocks": one cube of each colour listed, no more
+    one_list = re.search(rf"\b(?:{COLOR_RE})(?:(?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:the\s+)?(?:{COLOR_RE})\b)+", f.text)
+    if n is None and len(listed) >= 2 and one_list and (len(set(listed)) == len(listed) or len(
+            re.findall(rf"\b(?:{COLOR_RE})\b", one_list.group(0))) == len(listed)):
+        n = len(listed)  # "the red, green and blue blocks", "red, white, red, white": one cube per colour listed
         if n < 3:
             raise ParseError(f"a circle needs at least 3 cubes and it names {n} ({', '.join(listed)}); say how many "
                              "(e.g. 'a circle of 3 red and 3 blue blocks')")
