@@ -2067,3 +2067,17 @@ def test_configs_and_table_rows(text, expected):
 def test_sizes_in_object_names_and_inverted_conditions_are_refused(text, match):
     with pytest.raises(BadInput, match=match):
         parse(text)
+
+
+def test_a_pyramids_layers_said_as_the_bottom_three_and_the_next_two():
+    """The counts had been dropped: a pyramid of three (stranger6)."""
+    assert meaning(parse("Build a 3-2-1 pyramid: the bottom three are yellow, the next two are orange, the top one is red.")) \
+        == ["pyramid(yellow,yellow,yellow|orange,orange|red)"]
+
+
+def test_so_they_read_a_word_cites_the_line_and_its_order():
+    """"so they read KATE" demands a line in that order; the compile had refused it as demanding what no word says."""
+    from rpg.schema.citations import unstated
+
+    schema = parse("arrange the letter blocks K, A, T, E so they read KATE")
+    assert unstated(schema, schema.instruction) == []

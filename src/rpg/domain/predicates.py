@@ -959,7 +959,7 @@ class InLine(Predicate):
     axis: str | None = "y"
     order: str | None = None
     name: ClassVar[str] = "in_line"
-    cue: ClassVar[str] = r"\b(?:lines?|rows?|align\w*|lined|columns?|side\s+by\s+side|sequence|order\w*|left\s+to\s+right|right\s+to\s+left|spell\w*|word|sort\w*|horizontal\w*)\b"
+    cue: ClassVar[str] = r"\b(?:lines?|rows?|align\w*|lined|columns?|side\s+by\s+side|sequence|order\w*|left\s+to\s+right|right\s+to\s+left|spell\w*|word|sort\w*|horizontal\w*|reads?|reading)\b"
     swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
 

@@ -478,6 +478,12 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"\s*\|\s*", ", ", text)
     text = re.sub(rf"\b({COLOR_RE})\s*/\s*(?=(?:{COLOR_RE})\b)", r"\1, ", text)
     text = re.sub(rf"\b({COLOR_RE})\s*/\s*(?=(?:{COLOR_RE})\b)", r"\1, ", text)  # the overlapping pairs
+    # "a pyramid: the bottom three are yellow, the next two are orange, ...": each layer's count and colour
+    text = re.sub(rf"\bthe\s+(bottom|lowest|next|middle|top)\s+(\d+|{lexicon.COUNT_WORD_RE})\s+(?:are|is|being)\s+(?:all\s+)?"
+                  rf"({COLOR_RE})\b",
+                  lambda m: m.group(0) if m.group(2) in ("one", "1") else  # "the top one is red": the top cube's rule
+                  f"{lexicon.NUMBER_WORDS.get(m.group(2), m.group(2))} {m.group(3)} cubes "
+                  + {"bottom": "on the bottom", "lowest": "on the bottom", "top": "on top"}.get(m.group(1), "in the middle"), text)
     # "blue blue red red": a transcript's list of cubes with no commas, a colour said again for each
     # cube; "the red red block" is one cube (a stutter)
     text = re.sub(rf"(?P<det>\b(?:the|a|an)\s+)?\b(?P<run>(?:{COLOR_RE})(?:\s+(?:{COLOR_RE}))+)\b(?P<noun>\s+(?:block|cube|one)\b)?",
