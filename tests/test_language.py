@@ -8,8 +8,8 @@ import pytest
 from rpg.domain.predicates import region_boxes
 from rpg.errors import BadInput
 from rpg.schema.builtin import Inexpressible, ParseError, normalize, parse
-from rpg.schema.meaning import matches, meaning
 from rpg.schema.feasibility import check_feasibility
+from rpg.schema.meaning import matches, meaning
 
 
 @pytest.mark.parametrize("text,expected", [

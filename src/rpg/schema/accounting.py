@@ -112,9 +112,9 @@ AXIS_ORDERS["right"], AXIS_ORDERS["back"] = AXIS_ORDERS["left"], AXIS_ORDERS["fr
 
 PLACE_WORD_RE = re.compile(r"\b(?P<w>left|right|front|back|rear|middle|center|centre|corners?|edges?|sides?|ends?)\b")
 """Words that name a place on the table, a side of a cube or a part of a structure: each one an
-instruction says must be read into its task.  Those inside a place, relation, direction or
-corner mention are checked there; any other (:data:`PLACE_WORD_SPANS`, :data:`NOT_A_PLACE_RE`)
-is a ``place word`` mention, consumed only by a part of the goal of its kind
+instruction says must be read into its task.  Those inside a place, relation, direction, axis or
+corner mention are checked there, and :data:`NOT_A_PLACE_RE`'s uses are no place; any other is a
+``place word`` mention, consumed only by a part of the goal of its kind
 (:func:`_carries_place_word`): "LINE front edge: red, red, red" read as a line anywhere is refused."""
 
 NOT_A_PLACE_RE = re.compile(r"\bends?\s+up\b|\bright\s+(?=(?:next|beside|by|on|onto|in|into|at|up|there|here|behind|against|"
@@ -261,24 +261,30 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
     return out
 
 
+def _orders(goal: list[P.Predicate]) -> set[str]:
+    """The order relations of ``goal``'s parts (:meth:`Predicate.constraints`' ``order`` kinds:
+    ``left_of``, ``on``, a line's ``left_to_right``...) and the directions its readings run in."""
+    return ({c[1].get("relation") for p in goal for c in p.constraints() if c[0] == "order"}
+            | {getattr(p, "direction", None) for p in goal}) - {None}
+
+
 def _carries_place_word(word: str, goal: list[P.Predicate], regions: set[str]) -> list[str]:
     """The parts of ``goal`` that can carry a place word said outside any place mention: a
     side (left, right, front, back) a region of that side or an order along its axis; a middle
     a central region, a between or any order (a stack's or layer's middle); a corner a corner
     region; an edge, side or end any region, side relation or ordered line."""
-    word = {"rear": "back", "centre": "middle", "center": "middle"}.get(word, word).rstrip("s") if word != "sides" else "side"
-    orders = sorted({c[1].get("relation") for p in goal for c in p.constraints() if c[0] == "order"}
-                    | {getattr(p, "direction", None) for p in goal} - {None})
+    word = {"rear": "back", "centre": "middle", "center": "middle"}.get(word, word).rstrip("s")  # "corners": a corner
+    orders = _orders(goal)
     params = {str(v) for p in goal for v in p.params().values()}
     if word in AXIS_ORDERS:
         return sorted({f"in_region {r}" for r in regions if word in r.split("_")}
-                      | set(orders) & AXIS_ORDERS[word] | {f"{word} (a parameter)" for v in params if word in v.split("_")})
+                      | orders & AXIS_ORDERS[word] | {f"{word} (a parameter)" for v in params if word in v.split("_")})
     if word == "middle":
-        return sorted({f"in_region {r}" for r in regions if r in ("center", "middle")} | set(orders)
+        return sorted({f"in_region {r}" for r in regions if r in ("center", "middle")} | orders
                       | {p.name for p in goal if p.name == "between"})
     if word == "corner":
         return sorted(f"in_region {r}" for r in regions if r.count("_") == 1 or r.startswith("corner"))
-    return sorted({f"in_region {r}" for r in regions} | set(orders) & (AXIS_ORDERS["left"] | AXIS_ORDERS["front"])
+    return sorted({f"in_region {r}" for r in regions} | orders & (AXIS_ORDERS["left"] | AXIS_ORDERS["front"])
                   | {p.name for p in goal if p.name in ("between", "in_line")})
 
 
@@ -441,17 +447,15 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                 raise UnaccountedMention(f"it names {m.count} towers but the task read has {have}")
             record.append({"mention": m.words, "kind": "towers", "consumed_by": f"{have} stacks"})
         elif m.kind == "direction":
-            ordered = {c[1].get("relation") for p in goal for c in p.constraints() if c[0] == "order"}
-            along = sorted((ordered | {getattr(p, "direction", None) for p in goal}) & AXIS_ORDERS[m.region])
+            along = sorted(_orders(goal) & AXIS_ORDERS[m.region])
             if not along:
                 raise UnaccountedMention(f"'{m.words}' says which way the cubes run and the task read orders none "
                                          "that way")
             record.append({"mention": m.words, "kind": "direction", "consumed_by": ", ".join(along)})
         elif m.kind == "axis":
             axis = "y" if m.region == "left" else "x"
-            along = sorted(({c[1].get("relation") for p in goal for c in p.constraints() if c[0] == "order"}
-                            & AXIS_ORDERS[m.region]) | {f"in_line axis {axis}" for p in goal
-                                                        if isinstance(p, P.InLine) and p.axis == axis})
+            along = sorted(_orders(goal) & AXIS_ORDERS[m.region] | {f"in_line axis {axis}" for p in goal
+                                                                     if isinstance(p, P.InLine) and p.axis == axis})
             if not along:
                 raise UnaccountedMention(f"'{m.words}' says which way the cubes lie and the task read puts none that way")
             record.append({"mention": m.words, "kind": "axis", "consumed_by": ", ".join(along)})

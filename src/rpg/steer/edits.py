@@ -25,10 +25,10 @@ from rpg.schema.builder import DEFAULT_COLORS
 from rpg.schema.lexicon import (
     COLOR_RE,
     EDIT_ADDITIVE_RE,
-    EDIT_CONTINUES_RE,
     EDIT_ANAPHORA_RE,
     EDIT_BESIDE_RE,
     EDIT_CHANGE_VERB_RE,
+    EDIT_CONTINUES_RE,
     EDIT_COUNT_ALONE_RE,
     EDIT_COUNT_RE,
     EDIT_FRESH_RE,
