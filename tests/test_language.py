@@ -2081,3 +2081,10 @@ def test_so_they_read_a_word_cites_the_line_and_its_order():
 
     schema = parse("arrange the letter blocks K, A, T, E so they read KATE")
     assert unstated(schema, schema.instruction) == []
+
+
+@pytest.mark.parametrize("text", ["put 2 letter cubes on the red patch", "put two digit cubes on the blue patch"])
+def test_labelled_cubes_read_as_coloured_ones_are_refused(text):
+    """The patch reader had put two coloured cubes on the patch, silently."""
+    with pytest.raises(ParseError, match="names labelled cubes"):
+        parse(text)

@@ -162,6 +162,10 @@ have ("I" is the speaker; "A" only where it is no article; not an option, a step
 marker: "plan B", "(c)", "e.g."; not a number of cubes: "all N blocks")."""
 
 
+MATERIAL_SAID_RE = re.compile(r"\b(?:letter|digit|number|alphabet|lettered|numbered|labell?ed)\s+(?:cubes?|blocks?|bricks?)\b")
+"""Cubes named by their material ("2 letter cubes", "the digit blocks"): the task must hold labelled cubes."""
+
+
 class UnaccountedMention(BadInput):
     """A mention of the instruction has no place in the task that was read."""
 
@@ -616,6 +620,10 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     if caps:
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {caps[0]!r} has no place in "
                           "that task. Rephrase (e.g. \"spell the word ...\"), or use --model")
+    material = MATERIAL_SAID_RE.search(f.text)
+    if material and not labels:  # "put 2 letter cubes on the red patch" read as two coloured cubes
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{material.group(0)}' names "
+                          "labelled cubes and that task has none. Rephrase (e.g. \"the letter cubes A and B\"), or use --model")
     single = [m.group(1) for m in LONE_LETTER_RE.finditer(f.original) if m.group(1) not in labels]
     if single:  # "put the red block on the C": a letter cube the reading dropped
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the letter {single[0]!r} has no "
