@@ -26,6 +26,7 @@ from rpg.schema.lexicon import (
     COLOR_RE,
     COLORS,
     COMPASS_CORNER_RE,
+    MATERIAL_SAID_RE,
     OBJECT_PREPOSITION_BEFORE,
     PAIRWISE_RELATIONS,
     VOCAB,
@@ -160,10 +161,6 @@ LONE_LETTER_RE = re.compile(r"(?<![\w'\-.(])(?<!\b(?i:plan|step|part|type|task|z
 """A capital letter standing alone ("stack B on A", "the C"): a letter cube, which the task must
 have ("I" is the speaker; "A" only where it is no article; not an option, a step or a list
 marker: "plan B", "(c)", "e.g."; not a number of cubes: "all N blocks")."""
-
-
-MATERIAL_SAID_RE = re.compile(r"\b(?:letter|digit|number|alphabet|lettered|numbered|labell?ed)\s+(?:cubes?|blocks?|bricks?)\b")
-"""Cubes named by their material ("2 letter cubes", "the digit blocks"): the task must hold labelled cubes."""
 
 
 class UnaccountedMention(BadInput):
@@ -620,7 +617,7 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     if caps:
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {caps[0]!r} has no place in "
                           "that task. Rephrase (e.g. \"spell the word ...\"), or use --model")
-    material = MATERIAL_SAID_RE.search(f.text)
+    material = MATERIAL_SAID_RE.search(f.text)  # "put 2 letter cubes on the red patch"
     if material and not labels:  # "put 2 letter cubes on the red patch" read as two coloured cubes
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{material.group(0)}' names "
                           "labelled cubes and that task has none. Rephrase (e.g. \"the letter cubes A and B\"), or use --model")

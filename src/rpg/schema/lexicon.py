@@ -745,6 +745,11 @@ SMALL_TALK_RE = re.compile(
 """Small talk that says nothing of the task ("Hope you're doing well.", "Thanks a bunch!",
 "thanks in advance"): dropped (:func:`rpg.schema.reading.normalize`)."""
 
+MATERIAL_SAID_RE = re.compile(r"\b(?:letter|digit|number|alphabet|lettered|numbered|label(?:l?ed)?)\s+(?:cubes?|blocks?|bricks?)\b")
+"""Cubes named by their material ("2 letter cubes", "the digit blocks"): the task must hold
+labelled cubes (:func:`rpg.schema.accounting.unaccounted`), and digits alone around a relation
+name cubes (:func:`rpg.schema.reading.labels_in_relations`)."""
+
 CHAT_WORDS: frozenset[str] = frozenset("""
 lovely great good job yay hooray woohoo wow awesome nice perfect excellent wonderful brilliant super cool amazing
 fantastic well done thanks thank you cheers sweetie sweetheart honey dear buddy pal mate folks everyone kiddo ok okay

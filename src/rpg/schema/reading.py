@@ -315,7 +315,7 @@ def config_fragment(text: str) -> str:
 SORT_WORD_RE = re.compile(r"\b(?:alphabetic\w*|numeric\w*|ascending|descending|increasing|decreasing|sorted|order)\b", re.IGNORECASE)
 """Words that sort labels: with them, "read A, B, C, D" stays a listed sequence to sort."""
 
-LABEL_CUBES_SAID_RE = re.compile(r"\b(?:letter|digit|number|label(?:l?ed)?)(?:\s+(?:cubes|blocks)|\s+[A-Z0-9]\b)", re.IGNORECASE)
+LABEL_CUBES_SAID_RE = re.compile(rf"{lexicon.MATERIAL_SAID_RE.pattern}|\b(?:letter|digit|number)\s+[A-Z0-9]\b", re.IGNORECASE)
 """Words that say the cubes are letter or digit cubes ("the digit cubes", "letter B")."""
 
 _LABEL_REL = (r"(?:on(?:to)?|atop|under|underneath|below|above|beneath|next\s+to|beside|behind|in\s+front\s+of"
@@ -477,7 +477,6 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     # "tower | top: pink | bottom: gray", "red / white / red / white": a table row's or a list's separators
     text = re.sub(r"\s*\|\s*", ", ", text)
     text = re.sub(rf"\b({COLOR_RE})\s*/\s*(?=(?:{COLOR_RE})\b)", r"\1, ", text)
-    text = re.sub(rf"\b({COLOR_RE})\s*/\s*(?=(?:{COLOR_RE})\b)", r"\1, ", text)  # the overlapping pairs
     # "a pyramid: the bottom three are yellow, the next two are orange, ...": each layer's count and colour
     text = re.sub(rf"\bthe\s+(bottom|lowest|next|middle|top)\s+(\d+|{lexicon.COUNT_WORD_RE})\s+(?:are|is|being)\s+(?:all\s+)?"
                   rf"({COLOR_RE})\b",

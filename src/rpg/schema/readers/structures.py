@@ -518,23 +518,21 @@ def _order_by_end_roles(f: Features) -> list[str] | None:
     if not 2 <= len(colors) <= 3:
         return None
     listed = len(f.color_list()) >= 2 * len(colors) - 1  # the cubes listed, then (most of) them given a place
-    place: dict[str, str] = {}
+    said: list[tuple[str, str]] = []  # (place in the line, colour)
     for m in _END_ROLE_RE.finditer(f.text):
-        side = {"center": "middle", "centre": "middle"}.get(m.group("side") or m.group("side2"), m.group("side") or m.group("side2"))
-        c = canon_color(m.group("c"))
+        side = m.group("side") or m.group("side2")
+        said.append(({"center": "middle", "centre": "middle"}.get(side, side), canon_color(m.group("c"))))
+    if direction_stated(f) and line_axis_said(f) == "y":  # "from left to right, starts with black and ends with white"
+        first, last = ("right", "left") if direction_of(f) == "right_to_left" else ("left", "right")
+        said += [(first if m.group("w").startswith(("start", "begin")) else last, canon_color(m.group("c")))
+                 for m in _START_END_RE.finditer(f.text)]
+    place: dict[str, str] = {}
+    for side, c in said:
         if place.get(side, c) != c or c in place.values() and place.get(side) != c:
             raise ParseError(f"\"{f.original[:80]}\" puts two cubes in one place of the line, or one cube in two "
                              "(say each cube's place once: \"red on the left, green in the middle, blue on the right\"), "
                              "or use --model")
         place[side] = c
-    if direction_stated(f) and line_axis_said(f) == "y":  # "from left to right, starts with black and ends with white"
-        first, last = ("right", "left") if direction_of(f) == "right_to_left" else ("left", "right")
-        for m in _START_END_RE.finditer(f.text):
-            side, c = first if m.group("w").startswith(("start", "begin")) else last, canon_color(m.group("c"))
-            if place.get(side, c) != c or c in place.values() and place.get(side) != c:
-                raise ParseError(f"\"{f.original[:80]}\" puts two cubes in one place of the line, or one cube in two "
-                                 "(say each cube's place once), or use --model")
-            place[side] = c
     if not ({"left", "right"} & set(place)) or (len(colors) == 2 and "middle" in place):
         return None
     if not listed and set(place.values()) != set(colors):
