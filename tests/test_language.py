@@ -2088,3 +2088,14 @@ def test_labelled_cubes_read_as_coloured_ones_are_refused(text):
     """The patch reader had put two coloured cubes on the patch, silently."""
     with pytest.raises(ParseError, match="names labelled cubes"):
         parse(text)
+
+
+def test_a_colour_list_without_commas_keeps_every_cube():
+    """Found by an attack: "red blue red blue" had collapsed to two cubes (only a colour said twice in a row split)."""
+    assert meaning(parse("make a line of red blue red blue")) == ["line[sequence](red,blue,red,blue)"]
+
+
+def test_a_nested_config_is_refused_not_guessed():
+    """Found by an attack: a nested dict had become a tower of two invented colours, its height dropped."""
+    with pytest.raises(ParseError, match="nested config"):
+        parse("{'task': {'a': {'b': 'tower'}}, 'height': [[3]]}")

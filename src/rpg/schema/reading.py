@@ -301,10 +301,17 @@ def config_fragment(text: str) -> str:
     """A task written as a JSON or Python dict (``{'task': 'tower', 'height': 3}``, lower-cased
     and quoted with ``'``) read as a phrase of its values (:data:`CONFIG_KEYS`); ``object_name``
     words split ("blue_large" is "blue large", which a size word then refuses).  Other text is
-    returned as it is."""
+    returned as it is.
+
+    Raises:
+        ParseError: a dict nested in another, or a list in a list (their meaning is not guessed).
+    """
     text = re.sub(r"(?<=[a-z])_(?=[a-z])", " ", text)
     if not re.match(r"\s*\{.*:.*\}\s*$", text):
         return text
+    if not re.match(r"\s*\{[^{}]*\}\s*$", text) or "[[" in text:  # one flat dict only
+        raise ParseError("a task written as a nested config is not read: write it as a sentence, or as one flat dict "
+                         "(e.g. {\"task\": \"tower\", \"height\": 3, \"color\": \"cyan\"})")
     parts = []
     for m in re.finditer(r"'?([a-z][a-z _]*)'?\s*:\s*(\[[^\]]*\]|'[^']*'|[^,}]+)", text):
         key, value = m.group(1).strip().replace(" ", "_"), re.sub(r"[\[\]']", "", m.group(2)).strip()
@@ -483,10 +490,10 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   lambda m: m.group(0) if m.group(2) in ("one", "1") else  # "the top one is red": the top cube's rule
                   f"{lexicon.NUMBER_WORDS.get(m.group(2), m.group(2))} {m.group(3)} cubes "
                   + {"bottom": "on the bottom", "lowest": "on the bottom", "top": "on top"}.get(m.group(1), "in the middle"), text)
-    # "blue blue red red": a transcript's list of cubes with no commas, a colour said again for each
-    # cube; "the red red block" is one cube (a stutter)
+    # "blue blue red red", "red blue red blue": a transcript's list of cubes with no commas, a colour
+    # said again for each cube; "the red red block" is one cube (a stutter)
     text = re.sub(rf"(?P<det>\b(?:the|a|an)\s+)?\b(?P<run>(?:{COLOR_RE})(?:\s+(?:{COLOR_RE}))+)\b(?P<noun>\s+(?:block|cube|one)\b)?",
-                  lambda m: m.group(0) if not re.search(rf"\b({COLOR_RE})\s+\1\b", m.group("run"))
+                  lambda m: m.group(0) if len(set(m.group("run").split())) == len(m.group("run").split())
                   else (m.group("det") + re.sub(rf"\b({COLOR_RE})(?:\s+\1\b)+", r"\1", m.group("run")) + m.group("noun"))
                   if m.group("det") and m.group("noun")
                   else (m.group("det") or "") + ", ".join(m.group("run").split()) + (m.group("noun") or ""), text)
