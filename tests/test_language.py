@@ -2099,3 +2099,42 @@ def test_a_nested_config_is_refused_not_guessed():
     """Found by an attack: a nested dict had become a tower of two invented colours, its height dropped."""
     with pytest.raises(ParseError, match="nested config"):
         parse("{'task': {'a': {'b': 'tower'}}, 'height': [[3]]}")
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a label before its colon that names nothing of the task (stranger8): 'obj', 'req', 'cfg' were unknown words
+    ("Obj: red on blue. Conf: stack, 2 high.", ["stack(blue,red)"]),
+    ("cfg: orange behind purple", ["behind(orange,purple)"]),
+    ("Checklist: \u2022 orange cube on the gray patch \u2022 black cube behind the orange cube",
+     ["behind(black,orange)", "on_patch(orange,patch:gray)"]),
+    ("Objective (bonus stage): line up three green cubes along the front edge of the table.", ["line(green,green,green)@front"]),
+    # a count written as a multiplier: "3x white" had been read as a tower of two
+    ("Req: 3x white, towered.", ["stack(white,white,white)"]),
+    ("stack white x3", ["stack(white,white,white)"]),
+    ("put 3 white in a row", ["line(white,white,white)"]),  # a line of four had been refused
+    ("RING: 3 red 3 white", ["circle(red,red,red,white,white,white)"]),
+    ("Pyramid at the back: four purple cubes at the bottom, then three, then two, then one, all purple.",
+     ["pyramid(purple,purple,purple,purple|purple,purple,purple|purple,purple|purple)@back"]),
+])
+def test_labels_before_a_colon_and_counts_as_multipliers(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_label_that_says_what_the_domain_cannot_is_still_refused():
+    with pytest.raises(Inexpressible, match="negation"):
+        parse("Never: put red on blue.")
+
+
+def test_a_dropped_label_is_listed_in_the_accounting():
+    from rpg.schema.accounting import check_mentions
+
+    rows = check_mentions("Obj: red on blue.", parse("Obj: red on blue."))
+    assert {"mention": "obj", "kind": "ignored", "consumed_by": "nothing: no meaning for the goal (reads like 'a label "
+            "before its colon')"} in rows
+
+
+@pytest.mark.parametrize("text", ["line 1 2 3", "stack 1 2", "stack 2 on 1", "line 3 5", "a tower, height 3"])
+def test_a_digit_that_is_neither_a_digit_cube_nor_a_count_is_refused(text):
+    """"line 1 2 3" had compiled to a line of four coloured cubes, "stack 2 on 1" to red under blue (silently)."""
+    with pytest.raises(ParseError, match="neither a digit cube nor a count"):
+        parse(text)

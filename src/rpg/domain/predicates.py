@@ -233,6 +233,14 @@ class Predicate:
             out.append(("count", {"predicate": self.name, "objects": objs}))
         return out + [("members", {"objects": objs})]
 
+    def counts(self) -> set[int]:
+        """How many cubes an instruction may count for this predicate: the objects of each list
+        field, and each integer argument (a base, a number of rows).  Subclasses add the sizes
+        of their parts (a pyramid's layers).  Used by the accounting of numbers said
+        (:func:`rpg.schema.accounting.unaccounted`)."""
+        out = {len(getattr(self, f)) for f in self.list_fields}
+        return out | {v for v in self.params().values() if isinstance(v, int) and not isinstance(v, bool)}
+
     def relax(self, kind: str, goal: Predicate | None = None) -> Predicate | None:
         """This predicate without its constraint of ``kind`` (accepting every configuration
         it did and those that differ only there), or None when the domain has no such
@@ -1148,6 +1156,10 @@ class Pyramid(Predicate):
 
     def expected_count(self) -> int:
         return sum((self.base - k) ** (self.dims - 1) for k in range(self.base))
+
+    def counts(self) -> set[int]:
+        """The whole, the base and each layer's cubes (N, N-1, ... 1; squared in 3D)."""
+        return super().counts() | {m ** (self.dims - 1) for m in range(1, self.base + 1)}
 
     def _evaluate(self, state):
         objs = [state[n] for n in self.objects]

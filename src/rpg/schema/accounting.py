@@ -163,6 +163,12 @@ have ("I" is the speaker; "A" only where it is no article; not an option, a step
 marker: "plan B", "(c)", "e.g."; not a number of cubes: "all N blocks")."""
 
 
+LONE_DIGIT_RE = re.compile(r"(?<![\w'\-.(#:/@$\u00a3\u20ac])(?<!:\s)(?<!\bseed\s)(\d)(?![\w'\-%/:\u00d7]|[.)]\s*\w|\.\d)(?!\s*(?:[x\u00d7*+=]|by)\b)(?!\s+[A-Za-z])")
+"""A digit standing alone, with no word after it ("line 1 2 3", "stack 2 on 1", "a tower of 3"):
+a digit cube or a number of cubes, which the task must have (not a list marker "1." / "2)",
+a grid size "3x3" or "3 by 3", an id "T-88", a time "10:32" or a heading "Task 4:")."""
+
+
 class UnaccountedMention(BadInput):
     """A mention of the instruction has no place in the task that was read."""
 
@@ -633,6 +639,14 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the cube labelled "
                           f"{sorted(named_labels - set(labels))[0]!r} has no place in that task. Rephrase, or use --model")
     spelled = set("".join(re.findall(r"\b[A-Z]{2,}\b|(?<=')[A-Za-z0-9]{2,}(?=')", f.original)).upper())
+    cubes = [a for a in schema.assets if a.kind != "goal_patch"]
+    sizes = {len(cubes)} | {n for n in Counter(a.color for a in cubes).values() if n > 1} | {
+        n for p in schema.goal_predicate().walk() for n in p.counts()} | {len(st) for st in schema.initial_state.structures}
+    lone = [m.group(1) for m in LONE_DIGIT_RE.finditer(f.original) if m.group(1) not in labels and int(m.group(1)) not in sizes]
+    if lone:  # "line 1 2 3" read as a line of four coloured cubes: a digit no cube and no count of the task carries
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the number {lone[0]!r} is neither a "
+                          "digit cube nor a count of that task. Rephrase (e.g. \"the digit cubes 1, 2 and 3\", \"3 cubes\"), "
+                          "or use --model")
     # "2 on 1, 3 on 2 (digit cubes)": labels the reading named ("the digit 2 block", :func:`labels_in_relations`)
     read_as_cubes = {m.upper() for m in re.findall(r"\b(?:letter|digit)\s+([a-z0-9])\s+(?:block|cube)\b", f.text)}
     invented = sorted(set(labels) - named_labels - spelled - read_as_cubes) if named_labels else []

@@ -771,6 +771,18 @@ HEADER_RE = re.compile(r"^\s*(?:(?:first|second|third|fourth|fifth|sixth|seventh
 """A lesson's, quest's or stage's heading before the task ("Lesson 3: ...", "Side quest, The Lost
 Letter: ...", "First lesson, stacking: ..."): the task follows, the heading is dropped."""
 
+LABEL_RE = re.compile(r"(?:^|(?<=[.!?;|]\s))\s*(?P<label>[a-z][a-z'\- ]{0,30}?(?:\s*\([a-z'\- ]{1,30}\))?)\s*:\s+(?=\S)")
+"""A label before a colon, at the start of the text or of a sentence ("Obj: red on blue.",
+"Checklist: ...", "Objective (bonus stage): ..."): dropped by
+:func:`rpg.schema.reading.normalize_words` when none of its words (at most
+:data:`LABEL_MAX_WORDS`) is a word of the task (:data:`TASK_CONTENT_RE`) or says what the domain
+cannot ("Never: ..." stays, and is refused)."""
+
+LABEL_MAX_WORDS = 4
+"""The most words a dropped label (:data:`LABEL_RE`) has: a longer run before a colon is a
+sentence ("here is what I would like to see at the end: ...")."""
+
+
 SOMEONE_WANTS_RE = re.compile(
     r"\b(?:my|our|the)\s+(?P<who>supervisor|boss|advisor|adviser|professor|prof|pi|manager|lab|team|colleague|labmate|teacher|"
     r"client|group|mentor|tutor|lecturer)\s+(?:wants|needs|would\s+like|asked\s+for|asks\s+for|requested)\b")

@@ -447,6 +447,12 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.FREE_CHOICE_RE.sub("", text)
     text = lexicon.SMALL_TALK_RE.sub(" ", text)
     text = lexicon.HEADER_RE.sub("", text)
+    labels = [m for m in lexicon.LABEL_RE.finditer(text)
+              if len(re.findall(r"[a-z]+", m.group("label"))) <= lexicon.LABEL_MAX_WORDS
+              and not lexicon.TASK_CONTENT_RE.search(m.group("label")) and not _inexpressible(m.group("label"))]
+    for m in reversed(labels):  # "Obj: red on blue.", "Checklist: ...": a label that names nothing of the task
+        text = text[:m.start("label")] + text[m.end():]
+    effectors += [(m.group("label").strip(), "a label before its colon") for m in labels]
     text = lexicon.ADDRESS_RE.sub("", text)
     text = " ".join(s for s in re.split(r"(?<=[.!?])\s+", text)  # "Good job!", "Yay!": sentences that only cheer
                     if not set(re.findall(r"[a-z']+", s.lower())) <= lexicon.CHAT_WORDS) or text
@@ -471,6 +477,11 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = _SYNONYM_RE.sub(lambda m: lexicon.SYNONYMS[m.group(0)], text)
     text = lexicon.TEXTURED_RE.sub(lambda m: f"the {m.group('c')} block" if m.group("c") in COLORS else m.group(0), text)
     text = re.sub(r"(\d)\s*[x\u00d7]\s*(?=\d)", r"\1x", text)
+    # "3x white", "white x3", "red \u00d7 2": a count of cubes written as a multiplier (a grid's "3x3" stays)
+    text = re.sub(rf"\b(\d+)\s*[x\u00d7]\s*(?=(?:{COLOR_RE})\b)", r"\1 ", text)
+    text = re.sub(rf"\b({COLOR_RE})((?:\s+(?:blocks?|cubes?))?)\s*[x\u00d7]\s*(\d+)\b", r"\3 \1\2", text)
+    text = re.sub(rf"\b(\d+)\s+({COLOR_RE})(?=\s+(?:in|into)\s+(?:a|an|one)\s+(?:row|line|column|circle|ring|tower|stack|pile)\b)",
+                  r"\1 \2 cubes", text)  # "3 white in a row": three cubes, not a count and a cube
     text = re.sub(r"\b(\d+)(?:\s+|\s*-\s*)by(?:\s+|\s*-\s*)(?=\d)", r"\1x", text)
     # "on(red, green)", "(on red green)": a goal written as a planning predicate
     text = re.sub(rf"\(?\bon\s*(?:\(\s*|\s+)({COLOR_RE})\s*,?\s+({COLOR_RE})\s*\)", r"the \1 block on the \2 block", text)
