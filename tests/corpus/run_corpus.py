@@ -43,6 +43,7 @@ STRANGER_SETS = {
     "stranger6": ("stranger6.yaml", "STRANGER set 6 (stranger6.yaml, development material)"),
     "stranger7": ("stranger7.yaml", "STRANGER set 7 (stranger7.yaml, development material)"),
     "stranger8": ("stranger8.yaml", "STRANGER set 8 (stranger8.yaml, development material)"),
+    "stranger9": ("stranger9.yaml", "STRANGER set 9 (stranger9.yaml, development material)"),
 }
 SPLITS = HERE / "splits.yaml"
 
