@@ -2138,3 +2138,25 @@ def test_a_digit_that_is_neither_a_digit_cube_nor_a_count_is_refused(text):
     """"line 1 2 3" had compiled to a line of four coloured cubes, "stack 2 on 1" to red under blue (silently)."""
     with pytest.raises(ParseError, match="neither a digit cube nor a count"):
         parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    # Markdown around the words (stranger9): "the **blue** patch" had become a blue cube under the red one, silently
+    ("## Goal The `red` cube goes on the **blue** patch.", ["on_patch(red,patch:blue)"]),
+    ("- [ ] stack *red* on blue", ["stack(blue,red)"]),
+    ("~~Put the red cube on the left.~~ Put the red cube on the right.", ["in_region(red,right)"]),  # struck out: withdrawn
+    # rows written as a product: a wall of four had been read
+    ("`wall`: 2 rows x 3 cubes, all grey", ["wall(gray,gray,gray,gray,gray,gray)"]),
+    # a range with a hyphen: the digit 0 had been dropped
+    ("The agent must arrange the digit cubes 0-4 in ascending order from left to right.", ["line[left_to_right](0,1,2,3,4)"]),
+    # "the cube the blue" (Italian, Arabic): a yellow cube had been made up for "the cube"
+    ("And put the cube the blue on the cube the red, and put the cube the green on the cube the blue.", ["stack(red,blue,green)"]),
+])
+def test_markdown_products_ranges_and_articles_before_colours(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_more_cubes_of_a_colour_add_to_those_counted_before():
+    """"three blue cubes ... three more blue cubes" is six: a wall of four had been read, silently."""
+    with pytest.raises(ParseError, match="asks for 6 blue cubes"):
+        parse("Step 1: lay out three blue cubes side by side. Step 2: lay three more blue cubes on top of them. That is your wall.")

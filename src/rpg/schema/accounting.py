@@ -193,11 +193,15 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
         canon: maps a colour word to its palette name.
     """
     out: list[Mention] = []
+    said: dict[tuple[str, ...], int] = {}  # cubes counted so far, per colour set
     for m in _count_re(colors).finditer(text):
         n = int(m.group("n") or m.group("n2") or m.group("n3"))
         listed = (re.findall(rf"\b(?:{colors})\b", m.group("colors") or "")
                   or [c for c in [m.group("color2"), m.group("color3")] if c])
         named = tuple(sorted({canon(c) for c in listed}))
+        if re.search(r"\b(?:more|additional|extra)\b", m.group(0)):  # "three blue cubes ... three more blue cubes": six
+            n += said.get(named, 0)
+        said[named] = n
         out.append(Mention(m.group(0).strip(), "count", count=n, color=",".join(named) or None))
     for m in re.finditer(rf"(?:\b(?P<n>\d+)\s+)?\b(?P<c>{colors})\s+(?:goal\s+)?patch(?P<pl>es)?\b", text):
         # "the two green patches": that many patches of the colour ("the red and the blue patch" is two colours)

@@ -771,6 +771,18 @@ HEADER_RE = re.compile(r"^\s*(?:(?:first|second|third|fourth|fifth|sixth|seventh
 """A lesson's, quest's or stage's heading before the task ("Lesson 3: ...", "Side quest, The Lost
 Letter: ...", "First lesson, stacking: ..."): the task follows, the heading is dropped."""
 
+MARKUP_RES: tuple[tuple[re.Pattern, str], ...] = (
+    (re.compile(r"~~[^~]*~~"), " "),  # ~~struck out~~: withdrawn by its writer
+    (re.compile(r"(?m)^\s*#{1,6}\s+"), ""),  # a Markdown heading's hashes
+    (re.compile(r"(?m)^\s*[-*+]?\s*\[[ xX]\]\s*"), ""),  # a task checkbox "- [ ] ..."
+    (re.compile(r"\*\*|__|`"), ""),  # **bold**, __bold__, `code`
+    (re.compile(r"(?<![\w*])\*(?=[^\s*])|(?<=[^\s*])\*(?![\w*])"), ""),  # *emphasis*
+)
+"""Markdown markup around the words (headings, emphasis, code spans, checkboxes): removed before
+reading, so "the **blue** patch" is the blue patch; struck-out text is withdrawn and removed
+with its words (:func:`rpg.schema.reading.normalize_words`)."""
+
+
 LABEL_RE = re.compile(r"(?:^|(?<=[.!?;|]\s))\s*(?P<label>[a-z][a-z'\- ]{0,30}?(?:\s*\([a-z'\- ]{1,30}\))?)\s*:\s+(?=\S)")
 """A label before a colon, at the start of the text or of a sentence ("Obj: red on blue.",
 "Checklist: ...", "Objective (bonus stage): ..."): dropped by

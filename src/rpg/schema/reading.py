@@ -400,6 +400,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         ParseError: empty, too long, or (strict) containing words the parser does not know.
     """
     original = instruction.strip()
+    for pattern, written in lexicon.MARKUP_RES:  # "the **blue** patch", "## Goal", "`red`"
+        original = pattern.sub(written, original).strip()
     if not original:
         raise ParseError("the instruction is empty; describe a task, e.g. \"stack the red block on the blue block\"")
     if len(original) > MAX_INSTRUCTION_CHARS:
@@ -477,6 +479,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = _SYNONYM_RE.sub(lambda m: lexicon.SYNONYMS[m.group(0)], text)
     text = lexicon.TEXTURED_RE.sub(lambda m: f"the {m.group('c')} block" if m.group("c") in COLORS else m.group(0), text)
     text = re.sub(r"(\d)\s*[x\u00d7]\s*(?=\d)", r"\1x", text)
+    # "2 rows x 3 cubes": rows of that many cubes
+    text = re.sub(r"\b(\d+)\s+(rows|layers|levels|courses|tiers)\s*[x\u00d7]\s*(?=\d+\b)", r"\1 \2 of ", text)
     # "3x white", "white x3", "red \u00d7 2": a count of cubes written as a multiplier (a grid's "3x3" stays)
     text = re.sub(rf"\b(\d+)\s*[x\u00d7]\s*(?=(?:{COLOR_RE})\b)", r"\1 ", text)
     text = re.sub(rf"\b({COLOR_RE})((?:\s+(?:blocks?|cubes?))?)\s*[x\u00d7]\s*(\d+)\b", r"\3 \1\2", text)
@@ -489,6 +493,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(rf"(?:^|{_BARE_OBJECT_BEFORE})(?=(?:{COLOR_RE})\s+(?:block|cube|brick|box)\b)", "the ", text)
     text = re.sub(r"\b(at|to|in|on|of|near)\s+(?=(?:front|back|rear|left|right)(?:\s+(?:left|right))?\s+(?:side|corner|edge|half|part|end)\b"
                   r"|(?:middle|center|centre)\s+of\b|table\b|(?:middle|center|centre)\s*(?:[.!,;]|$))", r"\1 the ", text)
+    # "the cube the blue on the cube the red": a colour after its noun and an article (Italian, Arabic)
+    text = re.sub(rf"\bthe\s+(cube|block|box)\s+the\s+({COLOR_RE})\b(?!\s+(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?)\b)",
+                  r"the \2 \1", text)
     # "the cube brown on the cube orange", "block purple on block yellow", "the cube of colour blue": a colour after its noun
     text = re.sub(rf"(?<!every )(?<!each )(?<!all )(?<!any )\b(cube|block|box)\s+(?:of\s+(?:the\s+)?colou?r\s+)?({COLOR_RE})\b(?!\s*(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?|,|and\b|or\b))",
                   r"\2 \1", text)
@@ -903,6 +910,8 @@ def explicit_labels(f: Features) -> list[str]:
     if m:
         return [m.group(1)] + re.findall(r"[A-Z0-9]", m.group(2))
     r = re.search(r"\b([A-Z]|\d)\s+(?:down\s+|up\s+)?(?:to|through|thru)\s+([A-Z]|\d)\b", f.original)
+    if not r and f.has("letter", "letters", "number", "numbers", "digit", "digits", "label", "labels"):
+        r = re.search(r"(?<![\w-])([A-Z]|\d)\s*[-\u2013]\s*([A-Z]|\d)\b(?!\s*[-\u2013])", f.original)  # "the digit cubes 0-4"
     if r and r.group(1).isdigit() == r.group(2).isdigit():
         lo, hi = ord(r.group(1)), ord(r.group(2))
         if lo < hi:
