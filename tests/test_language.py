@@ -2160,3 +2160,39 @@ def test_more_cubes_of_a_colour_add_to_those_counted_before():
     """"three blue cubes ... three more blue cubes" is six: a wall of four had been read, silently."""
     with pytest.raises(ParseError, match="asks for 6 blue cubes"):
         parse("Step 1: lay out three blue cubes side by side. Step 2: lay three more blue cubes on top of them. That is your wall.")
+
+
+@pytest.mark.parametrize("text,expected", [
+    # texting (stranger9): abbreviations, "2" for "to", "blk" read by the word after it
+    ("cn u put blk cube nxt 2 brwn cube", ["next_to(black,brown)"]),
+    ("grn on ylw, then red on grn. thx!!", ["stack(yellow,green,red)"]),
+    ("move the green cube 2 the back pls", ["in_region(green,back)"]),
+    ("Set: gray blk between black & white blks.", ["between(gray;black,white)"]),
+    ("yo pls put the 4 cube btwn the 1 & 9 cubes", ["between(4;1,9)"]),
+    ("The robot shall place the red cube upon the blue patch.", ["on_patch(red,patch:blue)"]),
+    # chat transcripts: timestamps and speakers
+    ("[10:32] alice: stack blue on green [10:33] bob: ok on it", ["stack(green,blue)"]),
+    ("<dana> can u build a 3-tower: brown, then red, then yellow on top", ["stack(brown,red,yellow)"]),
+    ("alice> blue cube in front of the red cube pls", ["in_front_of(blue,red)"]),
+    # a paper's, a benchmark's or an annotator's framing of the goal
+    ("In this task the agent must stack the green cube on top of the red cube. The episode is successful if the green "
+     "cube rests on the red cube.", ["stack(red,green)"]),
+    ('"""The episode succeeds if the pink cube sits between the two black cubes."""', ["between(pink;black,black)"]),
+    ("# success := blue cube anywhere inside the back-left corner", ["in_region(blue,back_left)"]),
+    ("The agent must build a 3-2-1 pyramid from six green cubes. Success is judged on the final configuration only.",
+     ["pyramid(green,green,green,green,green,green)"]),
+    ("In the final image, the blue cube is sitting on top of the yellow cube.", ["stack(yellow,blue)"]),
+    ("Before: cubes scattered. After: the three grey cubes are lined up in a row.", ["line(gray,gray,gray)"]),
+])
+def test_texting_chat_transcripts_and_a_papers_framing_of_the_goal(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,match", [
+    ("If the red cube is on the blue patch, stack the green cube on it.", "conditional"),  # a condition stays one
+    ("The episode is successful if the red cube is not on the blue cube.", "negation"),
+    ("Put the red cube where it is in the image.", "image|shown"),
+])
+def test_framing_words_drop_only_the_frame(text, match):
+    with pytest.raises(BadInput, match=match):
+        parse(text)

@@ -70,6 +70,28 @@ TYPOS: dict[str, str] = {
 """Misspellings of a word of the vocabulary, each read as that word (curated, never a guess; the
 steering corrects an edit's words with this table before reading it)."""
 
+ABBREVIATIONS: dict[str, str] = {
+    "btwn": "between", "betw": "between", "nxt": "next", "grn": "green", "ylw": "yellow", "yllw": "yellow",
+    "brwn": "brown", "brn": "brown", "wht": "white", "blck": "black", "pnk": "pink", "prpl": "purple", "orng": "orange",
+    "gry": "gray", "blu": "blue", "u": "you", "cn": "can", "thx": "thanks", "thnx": "thanks", "abv": "above",
+    "frnt": "front", "lft": "left", "rght": "right", "ctr": "center", "cntr": "center", "shall": "must",
+}
+"""Abbreviations of texting and of specifications ("btwn", "grn", "ylw"; "shall" of a
+requirement), each read as its word (curated: an abbreviation with two readings, "blk" for
+black or block, is read by :data:`BLK_RE` from the word after it)."""
+
+LABELS_AND_NOUN_RE = re.compile(r"\b([Tt]he)\s+([A-Z]|\d)\s*(?:,\s*|\s+and\s+|\s*&\s*)([A-Z]|\d)\s+(cube|block)s\b")
+""""the 1 & 9 cubes", "the A and B blocks": two labelled cubes sharing one noun, read as "the 1
+cube and the 9 cube" (:func:`rpg.schema.reading.normalize_words`)."""
+
+BLK_RE = re.compile(r"\bblk(s?)\b(?=\s+(?:cubes?|blocks?)\b)|(?<=\s)blk(s?)\b")
+""""blk": black before a cube's noun ("put blk cube nxt 2 brwn cube"), else a block ("gray blk
+between black & white blks")."""
+
+TEXTED_TO_RE = re.compile(r"(?i)\b(move|moved|put|go|goes|slide|push|bring|it|cube|block|one)\s+2\s+(?=the\b)"
+                          r"|\b(next|nxt|close|closer)\s+2\s+(?=\S)")
+""""2" for "to" in texting ("move the green cube 2 the back", "nxt 2 the 1 cube"): read as "to"."""
+
 SYNONYMS: dict[str, str] = {
     "brick": "block", "bricks": "blocks", "ground": "table", "floor": "table", "tabletop": "table",
     "desk": "table", "rightmost": "right", "leftmost": "left", "frontmost": "front", "backmost": "back",
@@ -77,7 +99,7 @@ SYNONYMS: dict[str, str] = {
     "subsequently": "then", "organize": "arrange", "organise": "arrange", "organized": "arranged",
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
     "uppermost": "topmost", "lowermost": "bottommost", "upon": "on", "right-hand": "right", "left-hand": "left",
-    "midpoint": "center", "tower's": "tower", "within": "in", **TYPOS,
+    "midpoint": "center", "tower's": "tower", "within": "in", "inside": "in", **TYPOS, **ABBREVIATIONS,
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
@@ -741,7 +763,8 @@ if you could", "if possible"): dropped before conditions are refused, so the req
 SMALL_TALK_RE = re.compile(
     r"\b(?:i\s+)?hope\s+(?:you(?:'re|\s+are)|you\s+have\s+been|all\s+is|it(?:'s|\s+is))\s+(?:doing\s+|going\s+)?"
     r"(?:well|good|great|fine|ok(?:ay)?)(?:\s+today)?\s*[.!,]?"
-    r"|[,.!]?\s*\b(?:thanks|thank\s+you|cheers)\s+(?:a\s+(?:bunch|lot|million|ton)|heaps|loads|in\s+advance)\b\s*[.!]?")
+    r"|[,.!]?\s*\b(?:thanks|thank\s+you|cheers)\s+(?:a\s+(?:bunch|lot|million|ton)|heaps|loads|in\s+advance)\b\s*[.!]?"
+    r"|\b(?:ok(?:ay)?|sure|will\s+do|roger|got\s+it)[,!.]?\s+(?:i'?m\s+)?on\s+it\b\s*[.!]*")
 """Small talk that says nothing of the task ("Hope you're doing well.", "Thanks a bunch!",
 "thanks in advance"): dropped (:func:`rpg.schema.reading.normalize`)."""
 
@@ -773,9 +796,9 @@ Letter: ...", "First lesson, stacking: ..."): the task follows, the heading is d
 
 MARKUP_RES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"~~[^~]*~~"), " "),  # ~~struck out~~: withdrawn by its writer
-    (re.compile(r"(?m)^\s*#{1,6}\s+"), ""),  # a Markdown heading's hashes
+    (re.compile(r"(?m)^\s*(?:#{1,6}|//)\s+"), ""),  # a Markdown heading's hashes, a code comment's marker
     (re.compile(r"(?m)^\s*[-*+]?\s*\[[ xX]\]\s*"), ""),  # a task checkbox "- [ ] ..."
-    (re.compile(r"\*\*|__|`"), ""),  # **bold**, __bold__, `code`
+    (re.compile(r"\*\*|__|`|\"\"\"|'''"), ""),  # **bold**, __bold__, `code`, a docstring's quotes
     (re.compile(r"(?<![\w*])\*(?=[^\s*])|(?<=[^\s*])\*(?![\w*])"), ""),  # *emphasis*
 )
 """Markdown markup around the words (headings, emphasis, code spans, checkboxes): removed before
@@ -783,7 +806,44 @@ reading, so "the **blue** patch" is the blue patch; struck-out text is withdrawn
 with its words (:func:`rpg.schema.reading.normalize_words`)."""
 
 
-LABEL_RE = re.compile(r"(?:^|(?<=[.!?;|]\s))\s*(?P<label>[a-z][a-z'\- ]{0,30}?(?:\s*\([a-z'\- ]{1,30}\))?)\s*:\s+(?=\S)")
+CHAT_TURN_RES: tuple[tuple[re.Pattern, str], ...] = (
+    (re.compile(r"\[\s*\d{1,2}:\d{2}(?::\d{2})?(?:\s*[ap]\.?m\.?)?\s*\]\s*"), ". "),  # "[10:32] alice: ...": a turn begins
+    (re.compile(r"<[a-z][\w.\-]{0,20}>\s*"), ". "),  # "<dana> can u build ..."
+    (re.compile(r"(?:^|(?<=[.!?]\s))[a-z][\w.\-]{0,20}>\s+"), ""),  # "alice> blue cube in front of ..."
+)
+"""A chat transcript's timestamps and speaker tags ("[10:32] alice: ...", "<dana> ...",
+"alice> ..."): each turn read as a sentence, its speaker's name then dropped as a label
+(:data:`LABEL_RE`)."""
+
+TASK_FRAME_RES: tuple[re.Pattern, ...] = (
+    # "In this task(,) the agent must ...", "The policy must ...": the task follows
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:in\s+this\s+(?:task|episode|environment|setting)\s*,?\s*)?(?:the\s+)?"
+               r"(?:agent|robot|policy|controller|learner)\s+(?:must|should|has\s+to|needs\s+to|is\s+(?:required|asked)\s+to)\s+"),
+    # "The episode is successful if ...", "the task succeeds when ...", "Success when ...": the goal follows
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:episode|task|trial|rollout|attempt)\s+(?:is\s+(?:considered\s+|deemed\s+|"
+               r"counted\s+as\s+)?(?:successful|a\s+success|solved|completed?)|succeeds|counts\s+as\s+(?:a\s+)?success(?:ful)?)\s+"
+               r"(?:if|when|once|as\s+soon\s+as)\s+"),
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:episode\s+)?success(?:\s+(?:condition|criterion))?\s*(?:(?:is\s+(?:achieved\s+|reached\s+)?)?"
+               r"(?:when|if|once)\s+|:=\s*|=\s*)"),
+    # "Success is judged on the final configuration only.": every goal is
+    re.compile(r"(?:^|(?<=[.!?;:]\s))success\s+is\s+(?:judged|checked|measured|evaluated|determined|assessed)\s+(?:on|by|at|from)\s+"
+               r"(?:the\s+)?(?:final|end|last)\s+(?:configuration|state|scene|frame|arrangement)(?:\s+only)?\s*[.!]?\s*"),
+    # "In the final image, ...", "After the robot acts, ...": an annotator's after-image is the goal
+    re.compile(r"(?:^|(?<=[.!?;:]\s))in\s+the\s+(?:final|last|end|after|resulting|goal|target)\s+(?:image|frame|picture|photo|snapshot"
+               r"|shot|scene|state)\s*,?\s*"),
+    re.compile(r"(?:^|(?<=[.!?;:]\s))after\s+the\s+(?:robot|agent|policy|arm)\s+(?:acts|is\s+done|finishes|has\s+(?:acted|finished))"
+               r"\s*,\s*"),
+    # "Before: cubes scattered. After: ...": a start scattered at random is every task's
+    re.compile(r"(?:^|(?<=[.!?;:]\s))before\s*:\s*[^.;]*?\b(?:scattered|random(?:ly\s+placed)?|messy|mixed|jumbled|spread\s+out)\b"
+               r"[^.;]*[.;]\s*(?:after\s*:\s*)?"),
+)
+"""How a paper, a benchmark or an annotator frames the goal ("In this task the agent must ...",
+"The episode is successful if ...", "Success when ...", "In the final image, ...", "Before:
+cubes scattered. After: ..."): the words are dropped and what they frame is read as the goal
+(every goal is checked at the end of the episode, from a scattered start; paper Sec. 3)."""
+
+
+LABEL_RE = re.compile(r"(?:^|(?<=[.!?;|]\s))\s*(?P<label>[a-z][a-z'\- ]{0,30}?(?:\s*\([a-z'\- ]{1,30}\))?)\s*:(?:\s+|$)")
 """A label before a colon, at the start of the text or of a sentence ("Obj: red on blue.",
 "Checklist: ...", "Objective (bonus stage): ..."): dropped by
 :func:`rpg.schema.reading.normalize_words` when none of its words (at most

@@ -402,6 +402,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     original = instruction.strip()
     for pattern, written in lexicon.MARKUP_RES:  # "the **blue** patch", "## Goal", "`red`"
         original = pattern.sub(written, original).strip()
+    original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", original)  # texting's "2" for "to"
+    original = lexicon.LABELS_AND_NOUN_RE.sub(r"\1 \2 \4 and the \3 \4", original)  # "the 1 & 9 cubes"
     if not original:
         raise ParseError("the instruction is empty; describe a task, e.g. \"stack the red block on the blue block\"")
     if len(original) > MAX_INSTRUCTION_CHARS:
@@ -447,6 +449,11 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                                 "instruction names its cubes by colour, which is how the goal tells them apart; say one of "
                                 "the two", original)
     text = lexicon.FREE_CHOICE_RE.sub("", text)
+    for pattern, written in lexicon.CHAT_TURN_RES:  # "[10:32] alice: stack blue on green [10:33] bob: ok on it"
+        text = pattern.sub(written, text)
+    text = re.sub(r"^[\s.]+", "", text)
+    for pattern in lexicon.TASK_FRAME_RES:  # "In this task the agent must ...", "The episode is successful if ..."
+        text = pattern.sub("", text).strip()
     text = lexicon.SMALL_TALK_RE.sub(" ", text)
     text = lexicon.HEADER_RE.sub("", text)
     labels = [m for m in lexicon.LABEL_RE.finditer(text)
@@ -476,6 +483,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   r"\1", text)
     for pattern, full in lexicon.CONTRACTIONS:
         text = re.sub(pattern, full, text)
+    text = lexicon.BLK_RE.sub(lambda m: "black" if m.group(1) is not None else "block" + (m.group(2) or ""), text)
     text = _SYNONYM_RE.sub(lambda m: lexicon.SYNONYMS[m.group(0)], text)
     text = lexicon.TEXTURED_RE.sub(lambda m: f"the {m.group('c')} block" if m.group("c") in COLORS else m.group(0), text)
     text = re.sub(r"(\d)\s*[x\u00d7]\s*(?=\d)", r"\1x", text)
