@@ -2196,3 +2196,28 @@ def test_texting_chat_transcripts_and_a_papers_framing_of_the_goal(text, expecte
 def test_framing_words_drop_only_the_frame(text, match):
     with pytest.raises(BadInput, match=match):
         parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a writer correcting themselves (stranger9): the correction replaces what it corrects
+    ("Put the green cube on the yellow patch, sorry, the pink patch.", ["on_patch(green,patch:pink)"]),
+    ("Stack red on blue, I mean blue on red.", ["stack(red,blue)"]),
+    ("Move the black cube to the left, er no, to the front.", ["in_region(black,front)"]),
+    ("Make a row of three grey cubes, sorry, four grey cubes.", ["line(gray,gray,gray,gray)"]),
+    ("Put the 3 cube next to the 5 cube, I mean the 6 cube.", ["next_to(3,6)"]),
+    ("Put the grey cube on the lavender patch, I mean the grey patch.", ["on_patch(gray,patch:gray)"]),
+    ("[09:14] sam: put the pink cube on the blue patch [09:15] sam: wait no, the green patch", ["on_patch(pink,patch:green)"]),
+    ("put the red cube on the blue cube, sorry, I mean the green cube", ["stack(green,red)"]),
+])
+def test_a_self_correction_replaces_what_it_corrects(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "stack red on blue, sorry, I mean green",  # red or blue?
+    "Put the blue cube on the green cube, I mean under it, er no, on it after all.",  # 'it' after a replacement
+    "Build a tower of yellow on brown, er no, just put them side by side.",
+])
+def test_a_correction_whose_target_is_unclear_is_refused(text):
+    with pytest.raises(BadInput):
+        parse(text)

@@ -794,6 +794,22 @@ HEADER_RE = re.compile(r"^\s*(?:(?:first|second|third|fourth|fifth|sixth|seventh
 """A lesson's, quest's or stage's heading before the task ("Lesson 3: ...", "Side quest, The Lost
 Letter: ...", "First lesson, stacking: ..."): the task follows, the heading is dropped."""
 
+SELF_CORRECTION_RE = re.compile(
+    r"(?i)(?:[,.;:!?]|\s[-\u2013\u2014])\s*(?:(?:(?:er+m?|uh+|um+)\s*,?\s+)?(?:sorry|i\s+mean|no\s*,?\s+wait|wait\s*,?\s+no"
+    r"|(?:er+m?|uh+|um+)\s*,?\s+no|oops|correction|or\s+rather|make\s+that|scratch\s+that)\b[,:!.]*\s+)+(?=\S)")
+"""A writer correcting themselves mid-instruction ("..., sorry, the pink patch", "Stack red on
+blue, I mean blue on red.", "to the left, er no, to the front"): the correction replaces what it
+corrects (:func:`rpg.schema.reading.apply_corrections`); after a pause only (a correction word
+that opens the text is read as it is)."""
+
+CORRECTION_WORD_CLASSES: dict[str, frozenset[str]] = {
+    "det": frozenset("the a an this that".split()),
+    "prep": frozenset("to on onto in into at under below above beside behind between next near left right".split()),
+}
+"""Which words a correction's first word may stand for ("the pink patch" replaces "the yellow
+patch"; "to the front" replaces "to the left"): articles for articles, prepositions for
+prepositions; a count for a count; a word in capitals for one; other words for themselves."""
+
 MARKUP_RES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"~~[^~]*~~"), " "),  # ~~struck out~~: withdrawn by its writer
     (re.compile(r"(?m)^\s*(?:#{1,6}|//)\s+"), ""),  # a Markdown heading's hashes, a code comment's marker

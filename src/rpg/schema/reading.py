@@ -387,6 +387,59 @@ def _idle_sentence(sentence: str, unknown: set[str]) -> bool:
     return True
 
 
+def _word_class(word: str) -> str:
+    """A word's class for matching a correction to what it corrects (:data:`lexicon.CORRECTION_WORD_CLASSES`)."""
+    low = word.lower()
+    if low.isdigit() or low in NUMBER_WORDS:
+        return "num"
+    if len(word) >= 2 and word.isupper() and word.isalpha():
+        return "CAPS"
+    return next((k for k, ws in lexicon.CORRECTION_WORD_CLASSES.items() if low in ws), low)
+
+
+def _corrected(before: str, fix: str) -> str | None:
+    """``before`` with the words ``fix`` corrects replaced by it; None when what it corrects is
+    not clear (then the instruction is read, and refused, as written)."""
+    fixed = re.findall(r"[\w'-]+", fix)
+    if not fixed or lexicon.REFERENCE_PRONOUN_RE.search(fix.lower()) or re.search(r"(?i)\b(?:it|them|one)\b", fix):
+        return None  # "I mean under it": which cube 'it' is depends on what was replaced
+    tokens = list(re.finditer(r"[\w'-]+", before))
+    lemma = fixed[0].lower() if fixed[0].lower() not in ("just", "then") else (fixed[1].lower() if len(fixed) > 1 else "")
+    if lemma in lexicon.PLACEMENT_VERBS:  # "er no, just put them side by side": a new instruction replaces the sentence
+        start = max((m.end() for m in re.finditer(r"[.!?;]\s", before)), default=0)
+        return before[:start] + fix
+    first, last = _word_class(fixed[0]), _word_class(fixed[-1])
+    if len(fixed) >= 3 and first not in ("det", "prep") and any(re.search(rf"\b(?:{p})\b", fix.lower())
+                                                                  for p, _ in lexicon.REL_PATTERNS[:-1]):
+        verbs = [m for m in tokens if m.group(0).lower() in lexicon.PLACEMENT_VERBS]  # "Stack red on blue, I mean blue on red"
+        return before[:verbs[-1].end()] + " " + fix if verbs else None
+    ends = [k for k, m in enumerate(tokens) if _word_class(m.group(0)) == last]
+    for j in reversed(ends):
+        starts = [i for i in range(j, max(j - 8, -1), -1) if _word_class(tokens[i].group(0)) == first]
+        if starts:
+            return before[:tokens[starts[0]].start()] + fix + before[tokens[j].end():]
+    if first == "prep":  # "to the left, er no, to the front": the last place said
+        preps = [m for m in tokens if _word_class(m.group(0)) == "prep"]
+        return before[:preps[-1].start()] + fix if preps else None
+    return None
+
+
+def apply_corrections(text: str) -> str:
+    """``text`` with each self-correction applied ("put the green cube on the yellow patch, sorry,
+    the pink patch" -> "... on the pink patch"; :data:`lexicon.SELF_CORRECTION_RE`): the words
+    after the correction word, up to the next pause, replace the words of the same shape said
+    last before it (same first and last word class), a new command the sentence before it, a new
+    relation what the verb before it governs.  A correction whose target is not clear is left
+    as written (its words are then refused)."""
+    for m in reversed(list(lexicon.SELF_CORRECTION_RE.finditer(text))):
+        fix = re.match(r"[^,.;!?]+", text[m.end():])
+        before = text[:m.start()].rstrip(" ,;:-\u2013\u2014")
+        new = _corrected(before, fix.group(0).strip()) if fix and before.strip() else None
+        if new is not None:
+            text = new + text[m.end() + fix.end():]
+    return text
+
+
 def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, list[tuple[str, str]]]:
     """Lower-case, number words to digits, typos corrected.  Returns (text, original, dropped):
     ``dropped`` lists the unknown words read as ignorable (:mod:`rpg.schema.senses`), each with
@@ -403,6 +456,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     for pattern, written in lexicon.MARKUP_RES:  # "the **blue** patch", "## Goal", "`red`"
         original = pattern.sub(written, original).strip()
     original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", original)  # texting's "2" for "to"
+    original = apply_corrections(original)  # "..., sorry, the pink patch": the correction wins
     original = lexicon.LABELS_AND_NOUN_RE.sub(r"\1 \2 \4 and the \3 \4", original)  # "the 1 & 9 cubes"
     if not original:
         raise ParseError("the instruction is empty; describe a task, e.g. \"stack the red block on the blue block\"")
