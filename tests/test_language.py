@@ -2221,3 +2221,38 @@ def test_a_self_correction_replaces_what_it_corrects(text, expected):
 def test_a_correction_whose_target_is_unclear_is_refused(text):
     with pytest.raises(BadInput):
         parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    # Markdown quotes and headings flattened onto their text, emoji, shouting (stranger9)
+    ("> **Note:** the brown cube must end up *far from* the pink cube.", ["far_from(brown,pink)"]),
+    ("## Task Stack **green** on **red**.", ["stack(red,green)"]),
+    ("Me: make a line of four black cubes at the back. Them: \U0001F44D", ["line(black,black,black,black)@back"]),
+    ("omg \U0001F60D put the blue cube next to the black cube pleeease!!!", ["next_to(black,blue)"]),
+    ("PUT THE 7 CUBE ON THE 2 CUBE!!!!", ["stack(2,7)"]),
+    ("SPELL CAT WITH THE LETTER CUBES", ["line[left_to_right](C,A,T)", "reads(C,A,T;direction=left_to_right,face=up,text=CAT)"]),
+    # an exam's and a rubric's framing
+    ("Q4. Put the letter cubes in order so they read A B C from left to right. (2 marks)",
+     ["line[left_to_right](A,B,C)", "reads(A,B,C;direction=left_to_right,face=up,text=ABC)"]),
+    ("Rubric: full marks if the yellow cube ends to the right of the black cube; zero otherwise.", ["right_of(yellow,black)"]),
+    ("Grader note: accept any answer where the two pink cubes form a stack.", ["stack(pink,pink)"]),
+    ("Rubric item 2: the wall has red cubes on the bottom row (3) and yellow cubes on the top row (3).",
+     ["wall(red,red,red|yellow,yellow,yellow)"]),
+    # interjections of other languages' habits, "the patch the green", "how you prefer"
+    ("Allora, the cube black, you put it in the middle of the table, va bene?", ["in_region(black,center)"]),
+    ("Put the cube the yellow on the patch the green.", ["on_patch(yellow,patch:green)"]),
+    ("Make a tower with the cube green and the cube yellow, how you prefer.", ["stack(green,yellow)"]),
+    # a contract's register
+    ("The green cube shall be deposited upon the yellow cube, and the black cube shall in turn be deposited upon the "
+     "aforementioned green cube.", ["stack(yellow,green,black)"]),
+    ("It is hereby agreed that the three brown cubes shall be arranged in a single row along the front of the table.",
+     ["line(brown,brown,brown)@front"]),
+    ("Forthwith, the robot shall assemble a circle comprising four (4) pink cubes.", ["circle(pink,pink,pink,pink)"]),
+])
+def test_markdown_emoji_shouting_rubrics_and_registers(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_shouted_negation_is_still_refused():
+    with pytest.raises(Inexpressible, match="negation"):
+        parse("DO NOT PUT THE RED CUBE ON THE BLUE CUBE!!!")

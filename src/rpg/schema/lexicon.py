@@ -721,7 +721,9 @@ ANY_ORDER_RE = re.compile(
     r"|(?:the\s+)?order\s+(?:does\s*n[o']?t|doesn't|is\s*n[o']?t|isn't)\s+(?:matter|important)|regardless\s+of\s+(?:the\s+)?order"
     r"|(?:the\s+)?order\s+is\s+(?:up\s+to\s+you|your\s+(?:choice|call)|free|flexible|open)"
     r"|(?:in\s+)?(?:any|whatever|whichever)\s+order\s+you\s+(?:like|want|choose|prefer|wish)"
-    r"|you\s+(?:can|may)\s+(?:choose|pick|decide)\s+the\s+order)\b\)?")
+    r"|you\s+(?:can|may)\s+(?:choose|pick|decide)\s+the\s+order"
+    r"|(?:the\s+)?order\s+(?:thereof\s+)?(?:being\s+)?at\s+(?:the\s+robot's|your|its)\s+discretion"
+    r"|how(?:ever)?\s+you\s+(?:prefer|like|want|wish|please))\b\)?")
 """Words that leave the cubes' order free ("stack them in any order", ", any order is fine",
 "the order doesn't matter", "in no particular order"): read as the one phrase " in any order"
 before negations are refused (:func:`rpg.schema.reading.normalize`), which no order word
@@ -812,12 +814,14 @@ prepositions; a count for a count; a word in capitals for one; other words for t
 
 MARKUP_RES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"~~[^~]*~~"), " "),  # ~~struck out~~: withdrawn by its writer
-    (re.compile(r"(?m)^\s*(?:#{1,6}|//)\s+"), ""),  # a Markdown heading's hashes, a code comment's marker
+    (re.compile(r"(?m)^\s*#{1,6}\s+(?P<h>(?:[A-Za-z][a-z]*\s+){1,4}?)(?=[A-Z][a-z]+\s)"), r"\g<h>: "),  # "## Task Stack ...": its heading
+    (re.compile(r"(?m)^\s*(?:#{1,6}|//|>)\s+"), ""),  # a Markdown heading's hashes, a quote's mark, a code comment's marker
     (re.compile(r"(?m)^\s*[-*+]?\s*\[[ xX]\]\s*"), ""),  # a task checkbox "- [ ] ..."
     (re.compile(r"\*\*|__|`|\"\"\"|'''"), ""),  # **bold**, __bold__, `code`, a docstring's quotes
     (re.compile(r"(?<![\w*])\*(?=[^\s*])|(?<=[^\s*])\*(?![\w*])"), ""),  # *emphasis*
 )
-"""Markdown markup around the words (headings, emphasis, code spans, checkboxes): removed before
+"""Markdown markup around the words (a heading flattened onto the line of its text, "## Task
+Stack green on red", ends before the next capitalised word and is read as a label; headings, emphasis, code spans, checkboxes): removed before
 reading, so "the **blue** patch" is the blue patch; struck-out text is withdrawn and removed
 with its words (:func:`rpg.schema.reading.normalize_words`)."""
 
@@ -825,6 +829,7 @@ with its words (:func:`rpg.schema.reading.normalize_words`)."""
 CHAT_TURN_RES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"\[\s*\d{1,2}:\d{2}(?::\d{2})?(?:\s*[ap]\.?m\.?)?\s*\]\s*"), ". "),  # "[10:32] alice: ...": a turn begins
     (re.compile(r"<[a-z][\w.\-]{0,20}>\s*"), ". "),  # "<dana> can u build ..."
+    (re.compile(r"(?:^|(?<=[.!?]\s))(?:me|them|you|us|user|assistant|bot|robot|[a-z]+bot)\s*:\s*$"), ""),  # a turn with no words left
     (re.compile(r"(?:^|(?<=[.!?]\s))[a-z][\w.\-]{0,20}>\s+"), ""),  # "alice> blue cube in front of ..."
 )
 """A chat transcript's timestamps and speaker tags ("[10:32] alice: ...", "<dana> ...",
@@ -859,7 +864,52 @@ cubes scattered. After: ..."): the words are dropped and what they frame is read
 (every goal is checked at the end of the episode, from a scattered start; paper Sec. 3)."""
 
 
-LABEL_RE = re.compile(r"(?:^|(?<=[.!?;|]\s))\s*(?P<label>[a-z][a-z'\- ]{0,30}?(?:\s*\([a-z'\- ]{1,30}\))?)\s*:(?:\s+|$)")
+EMOJI_RE = re.compile(r"[\U0001F000-\U0001FAFF\u2600-\u27BF\u2B00-\u2BFF\uFE0F\u200D]+")
+"""Emoji and pictographs ("\U0001F525 TOWER TIME", "Them: \U0001F44D"): they say nothing the domain can
+check, and are removed before reading."""
+
+SHOUTING_MIN_SHARE = 0.8
+"""The share of a text's letters in capitals (of at least :data:`SHOUTING_MIN_LETTERS`) from
+which it is read as shouted ("PUT THE 7 CUBE ON THE 2 CUBE!!!!"): its words of two or more
+letters are lower-cased (single letters stay letter cubes; a word after "spell" or "read"
+stays a spelled word)."""
+
+SHOUTING_MIN_LETTERS = 12
+
+FILLER_RE = re.compile(r"(?i)(?:^|(?<=[.!?]\s))(?:prego|allora|ecco|dai|senti|god\s+willing|inshallah|insha'?allah|yalla|omg|lol"
+                       r"|yo|hey\s+there|alright\s+then|okay\s+so|ok\s+so|aigoo|jeez)\s*[,!.]*\s*"
+                       r"|,?\s*\b(?:va\s+bene|capisci|ok\?|okay\?|right\?|yeah\?)\s*(?=[.!?]*\s*$)")
+"""Interjections said around a task in several languages' habits ("Prego, ...", "Allora, ...",
+"..., va bene?", "God willing, ...", "omg"): dropped."""
+
+GRADING_FRAME_RES: tuple[re.Pattern, ...] = (
+    re.compile(r"(?i)(?:^|(?<=[.!?;:]\s))q\s*\d+\s*(?:\([^)]{0,20}\))?\s*[.:)]\s*"),  # "Q3.", "Q5 (bonus)."
+    re.compile(r"(?i)\s*\(\s*\d+\s+(?:points?|pts?|marks?)\s*\)"),  # "(4 points)"
+    re.compile(r"(?i)(?:^|(?<=[.!?;:]\s))(?:(?:full\s+(?:marks|credit)|pass(?:es)?|correct)\s+(?:if|when|where)"
+               r"|accept\s+(?:any|an|the)\s+(?:answer|solution|response|attempt)\s+(?:where|in\s+which|that\s+has)"
+               r"|an?\s+correct\s+(?:answer|solution|response)\s+(?:has|shows|puts|leaves))\s+"),
+    re.compile(r"(?i)\s*[;,.]\s*(?:zero|no\s+(?:marks|credit|points)|fail(?:s|ure)?)\s+otherwise\b\s*[.!]?"
+               r"|\s*[;,.]\s*otherwise\s+(?:zero|no\s+(?:marks|credit|points)|fail(?:s|ure)?)\b\s*[.!]?"),
+)
+"""An exam's or a rubric's framing of the goal ("Q3. (4 points) ...", "Rubric: full marks if X;
+zero otherwise.", "accept any answer where X", "a correct answer has X"): dropped, X read."""
+
+LEGAL_RES: tuple[tuple[re.Pattern, str], ...] = (
+    (re.compile(r"(?i)\s*\(\s*hereinafter[^)]*\)"), ""),
+    (re.compile(r"(?i)^(?:it\s+is\s+hereby\s+(?:agreed|required|requested|ordered)|the\s+(?:parties|undersigned)\s+"
+                r"(?:hereby\s+)?(?:agrees?|requests?|requires?))\s+that\s+"), ""),
+    (re.compile(r"(?i)^(?:forthwith|hereby)\s*,?\s*"), ""),
+    (re.compile(r"(?i)\bthe\s+(?:aforementioned|aforesaid|said|above-mentioned)\s+"), "the "),
+    (re.compile(r"(?i)\b(?:be\s+)?(?:deposited|situated|emplaced)\b"), "be placed"),
+    (re.compile(r"(?i)\b(?:comprising|consisting\s+of)\b"), "of"),
+    (re.compile(r"(?i)\b(one|two|three|four|five|six|seven|eight|nine|ten)\s+\(\d+\)"), r"\1"),  # "four (4)"
+)
+"""A contract's register ("shall", read by :data:`ABBREVIATIONS`; "(hereinafter 'the Cube')",
+"the aforementioned green cube", "deposited upon", "four (4)", "It is hereby agreed that"):
+each rewritten as plain words."""
+
+
+LABEL_RE = re.compile(r"(?:^|(?<=[.!?;|]\s))\s*(?P<label>[a-z][a-z'\- ]{0,30}?(?:\s+#?\d+)?(?:\s*\([a-z'\- ]{1,30}\))?)\s*:(?:\s+|$)")
 """A label before a colon, at the start of the text or of a sentence ("Obj: red on blue.",
 "Checklist: ...", "Objective (bonus stage): ..."): dropped by
 :func:`rpg.schema.reading.normalize_words` when none of its words (at most

@@ -319,8 +319,9 @@ def config_fragment(text: str) -> str:
     return ", ".join(p for p in parts if p) or text
 
 
-SORT_WORD_RE = re.compile(r"\b(?:alphabetic\w*|numeric\w*|ascending|descending|increasing|decreasing|sorted|order)\b", re.IGNORECASE)
-"""Words that sort labels: with them, "read A, B, C, D" stays a listed sequence to sort."""
+SORT_WORD_RE = re.compile(r"\b(?:alphabetic\w*|numeric\w*|ascending|descending|increasing|decreasing|sorted|(?<!\bin\s)order(?!\s+(?:so|for|that)\b))\b", re.IGNORECASE)
+"""Words that sort labels: with them, "read A, B, C, D" stays a listed sequence to sort ("put
+them in order so they read A B C" does not sort: the reading gives the order)."""
 
 LABEL_CUBES_SAID_RE = re.compile(rf"{lexicon.MATERIAL_SAID_RE.pattern}|\b(?:letter|digit|number)\s+[A-Z0-9]\b", re.IGNORECASE)
 """Words that say the cubes are letter or digit cubes ("the digit cubes", "letter B")."""
@@ -385,6 +386,15 @@ def _idle_sentence(sentence: str, unknown: set[str]) -> bool:
         elif w not in lexicon.IDLE_WORDS:
             return False
     return True
+
+
+def _unshouted(text: str) -> str:
+    """``text`` with its words lower-cased when it is shouted (:data:`lexicon.SHOUTING_MIN_SHARE`):
+    single letters stay letter cubes, and a word after "spell", "read" or "word" stays spelled."""
+    letters = [c for c in text if c.isalpha()]
+    if len(letters) < lexicon.SHOUTING_MIN_LETTERS or sum(c.isupper() for c in letters) < lexicon.SHOUTING_MIN_SHARE * len(letters):
+        return text
+    return re.sub(r"(?<![\w'])(?<!SPELL )(?<!SPELLS )(?<!READ )(?<!READS )(?<!WORD )([A-Z][A-Z']+)\b", lambda m: m.group(1).lower(), text)
 
 
 def _word_class(word: str) -> str:
@@ -455,6 +465,13 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     original = instruction.strip()
     for pattern, written in lexicon.MARKUP_RES:  # "the **blue** patch", "## Goal", "`red`"
         original = pattern.sub(written, original).strip()
+    original = lexicon.EMOJI_RE.sub(" ", original).strip()
+    original = _unshouted(original)
+    for pattern, written in lexicon.LEGAL_RES:  # "the aforementioned green cube", "(hereinafter 'the Cube')"
+        original = pattern.sub(written, original)
+    for pattern in lexicon.GRADING_FRAME_RES:  # "Q3. (4 points) ...", "full marks if ...; zero otherwise"
+        original = pattern.sub("", original).strip()
+    original = lexicon.FILLER_RE.sub("", original).strip()
     original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", original)  # texting's "2" for "to"
     original = apply_corrections(original)  # "..., sorry, the pink patch": the correction wins
     original = lexicon.LABELS_AND_NOUN_RE.sub(r"\1 \2 \4 and the \3 \4", original)  # "the 1 & 9 cubes"
@@ -512,7 +529,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.HEADER_RE.sub("", text)
     labels = [m for m in lexicon.LABEL_RE.finditer(text)
               if len(re.findall(r"[a-z]+", m.group("label"))) <= lexicon.LABEL_MAX_WORDS
-              and not lexicon.TASK_CONTENT_RE.search(m.group("label")) and not _inexpressible(m.group("label"))]
+              and not lexicon.TASK_CONTENT_RE.search(re.sub(r"(?<=[a-z])\s+#?\d+\s*$", "", m.group("label")))  # "item 2"
+              and not _inexpressible(m.group("label"))]
     for m in reversed(labels):  # "Obj: red on blue.", "Checklist: ...": a label that names nothing of the task
         text = text[:m.start("label")] + text[m.end():]
     effectors += [(m.group("label").strip(), "a label before its colon") for m in labels]
@@ -556,8 +574,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"\b(at|to|in|on|of|near)\s+(?=(?:front|back|rear|left|right)(?:\s+(?:left|right))?\s+(?:side|corner|edge|half|part|end)\b"
                   r"|(?:middle|center|centre)\s+of\b|table\b|(?:middle|center|centre)\s*(?:[.!,;]|$))", r"\1 the ", text)
     # "the cube the blue on the cube the red": a colour after its noun and an article (Italian, Arabic)
-    text = re.sub(rf"\bthe\s+(cube|block|box)\s+the\s+({COLOR_RE})\b(?!\s+(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?)\b)",
-                  r"the \2 \1", text)
+    text = re.sub(rf"\bthe\s+(cubes?|blocks?|box(?:es)?|patch(?:es)?)\s+the\s+({COLOR_RE})\b"
+                  rf"(?!\s+(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?)\b)", r"the \2 \1", text)
     # "the cube brown on the cube orange", "block purple on block yellow", "the cube of colour blue": a colour after its noun
     text = re.sub(rf"(?<!every )(?<!each )(?<!all )(?<!any )\b(cube|block|box)\s+(?:of\s+(?:the\s+)?colou?r\s+)?({COLOR_RE})\b(?!\s*(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?|,|and\b|or\b))",
                   r"\2 \1", text)
