@@ -328,7 +328,9 @@ def _ends_at(goal: list[P.Predicate], side: str, color_of: dict[str, str | None]
     return out
 
 
-ON_TABLE_RE = re.compile(rf"\b(?:put|place|move|set|lay|lower|bring|return)\s+the\s+({COLOR_RE})\s+(?:block|cube|box)\s+"
+ON_TABLE_RE = re.compile(rf"\b(?:(?:put|place|move|set|lay|lower|bring|return)\s+the\s+({COLOR_RE})\s+(?:block|cube|box)\s+"
+                         rf"|(?<!starts )(?<!initially )(?:the\s+)?\b({COLOR_RE})(?:\s+(?:block|cube|box))?\s+(?:(?:must|should|will)\s+)?"
+                         rf"(?:is|be|goes|go|sits|stays|stay|ends\s+up|end\s+up)\s+|(?<=[.:;]\s)(?:the\s+)?({COLOR_RE})(?:\s+(?:block|cube))?\s+)"
                          r"(?:back\s+|down\s+)*(?:on|onto|to)\s+the\s+table\b")
 """A named cube sent to the table ("move the green cube down onto the table"): the goal may not
 stack it on another cube."""
@@ -659,7 +661,7 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
                           f"{invented[0]!r}. Rephrase (say how many cubes), or use --model")
     stacked = _stacked_on_another(schema)
     for m in ON_TABLE_RE.finditer(f.text):  # "move the green cube onto the table": not stacked on another
-        color = canon_color(m.group(1))
+        color = canon_color(m.group(1) or m.group(2) or m.group(3))
         cubes = [a.name for a in schema.assets if a.kind != "goal_patch" and a.color == color]
         if cubes and all(n in stacked for n in cubes):
             return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group(0)}' puts the "

@@ -8,7 +8,8 @@ them in their registered order and keeps the first reading that accounts for eve
 
 Modules: :mod:`.registry` (the registry), :mod:`.common` (what several readers read the same
 way), and one module per family: :mod:`.places`, :mod:`.structures`, :mod:`.temporal`,
-:mod:`.patches`, :mod:`.labels`, :mod:`.relational`, :mod:`.compose` (parts read apart, laid out together).
+:mod:`.patches`, :mod:`.labels`, :mod:`.relational`, :mod:`.compose` (parts read apart, laid out together),
+:mod:`.initial` (a start stated with the goal: rho_0's stacks).
 """
 
 from __future__ import annotations
@@ -28,12 +29,14 @@ from rpg.domain.predicates import (
     describe_region,
     region_boxes,
 )
+from rpg.errors import BadInput
 from rpg.schema import citations, lexicon
 from rpg.schema.accounting import unaccounted
 from rpg.schema.builder import Builder, make_paraphrases
 from rpg.schema.model import TaskSchema
 from rpg.schema.readers import (  # noqa: F401 (they register)
     compose,
+    initial,
     labels,
     patches,
     places,
@@ -194,6 +197,15 @@ def parse(instruction: str) -> TaskSchema:
             describes no task the parser knows (message quotes the problem, suggests --model).
         UnknownColorError / UnknownLabelError: an unknown colour or label.
     """
+    scene = initial.split(instruction)  # "Initially red is on blue. Put ...": rho_0's stacks, then the goal
+    if scene is not None and not scene.goal.strip(" ."):
+        raise ParseError(f"\"{instruction[:80]}\" says how the cubes start but not where they must end up: a task's goal "
+                         "is checked at the end of the episode; add it (e.g. \"... Put the red cube on the table.\")")
+    if scene is not None:
+        try:
+            return initial.attach(initial.on_table_goal(scene, instruction) or parse(scene.goal), scene, instruction)
+        except BadInput:
+            pass  # read as written (and refused for its starting-state words)
     f = features(instruction)
     first_gap: ParseError | None = None
     for entry in registry.ordered():

@@ -1,0 +1,236 @@
+"""An initial scene stated with the goal: "Initially the red cube is on the blue cube. Put the
+red cube on the green patch.", "Start: a tower of red, green, blue. Goal: reverse it into
+blue, green, red.", "The pink cube starts stacked on the grey cube and must end up on the table."
+
+A task is T = (assets, rho_0, G, instruction, paraphrases) (paper Sec. 3): the words that state
+how the cubes start become rho_0's stacks (``initial_state.structures``, bottom to top); the rest
+is the goal, read by the whole front end (:func:`rpg.schema.readers.parse`), so nothing either
+part says is dropped or merged.  The start is read only when every one of its facts is one of
+the forms below (a stack, a tower listed with its direction, a cube on the table, the rest
+scattered); otherwise the instruction is read as it was written (and refused for its
+starting-state words).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from rpg.errors import BadInput
+from rpg.schema.builder import Builder
+from rpg.schema.lexicon import COLOR_RE
+from rpg.schema.model import TaskSchema
+from rpg.schema.reading import canon_color, task_slug
+
+_CUBE = rf"(?:the\s+)?(?P<{{g}}>{COLOR_RE})(?:\s+(?:cube|block|one))?"
+
+START_SENTENCE_RE = re.compile(
+    r"(?i)^\s*(?:initially|at\s+(?:the\s+)?(?:start|beginning)(?:\s+of\s+the\s+(?:episode|task))?"
+    r"|in\s+the\s+(?:initial|starting|start)\s+(?:state|scene|configuration|setup)"
+    r"|(?:the\s+)?(?:initial|start(?:ing)?)\s+(?:state|scene|configuration|setup|position)s?\s*(?:is\b|:|-|\u2014)"
+    r"|(?:setup|start|before|init)\s*:|(?:the\s+)?(?:scene|episode|table|task)\s+(?:starts|begins)\s+(?:with|as)"
+    r"|we\s+start\s+(?:with|from)|(?:the\s+)?(?:cubes|blocks)\s+start(?:\s+out)?(?:\s+as|\s+in|\s*:)?)\s*[:,\-\u2014]?\s*")
+"""Words that open a statement of the initial scene ("Initially, ...", "At the start, ...",
+"Initial state: ...", "Setup: ...", "The scene starts with ...")."""
+
+STARTS_CLAUSE_RE = re.compile(
+    rf"(?i)^\s*(?P<fact>{_CUBE.format(g='top')}\s+(?:starts|begins|is\s+initially|starts\s+out|sits\s+initially)\s+"
+    rf"(?:stacked\s+|sitting\s+|resting\s+)?(?:on\s+top\s+of|on|atop)\s+{_CUBE.format(g='bottom')})"
+    r"\s*(?:,\s*(?:and\s+)?|\s+and\s+|[.;]\s*)(?:then\s+)?(?P<rest>.+)$")
+"""A cube said to start on another, then what it must do ("The pink cube starts stacked on the grey
+cube and must end up on the table"): the subject is carried into the goal's clause."""
+
+GOAL_OPENER_RE = re.compile(r"(?i)^\s*(?:(?:the\s+)?(?:goal|target|task|objective)\s*(?:is\s*(?:to\s+)?|:|-|\u2014)"
+                            r"|then\s*,?|now\s*,?|your\s+task\s*(?:is\s+to|:))\s*")
+"""Words that open the goal after the start ("Goal: ...", "Then ...", "The task is to ...")."""
+
+_REL_ON = r"(?:(?:is|sits|lies|rests|stands|starts|begins)\s+(?:initially\s+|out\s+)?)?(?:stacked\s+|placed\s+|sitting\s+|resting\s+)?(?:on\s+top\s+of|on|atop|upon)"
+_REL_UNDER = r"(?:is\s+)?(?:under(?:neath)?|below|beneath)"
+_TOWER_RE = re.compile(
+    rf"(?i)^(?:an?\s+|one\s+)?(?:stack|tower|column)\s+(?:of\s+)?(?P<list>(?:(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?))?"
+    rf"(?:\s*,\s*(?:and\s+)?|\s+and\s+|\s+then\s+|\s*$|(?=\s*\(|\s+(?:from|bottom|top))))+)"
+    r"\s*\(?\s*(?:from\s+)?(?:the\s+)?(?P<from>bottom|top)?(?:\s+(?:to|up\s+to|down\s+to)\s+(?:the\s+)?(?:top|bottom)|\s+up|\s+down"
+    r"|\s+first)?\s*\)?$")
+_CHAIN_RE = re.compile(rf"(?i)^{_CUBE.format(g='a')}(?P<links>(?:\s+(?:{_REL_ON}|{_REL_UNDER})\s+(?:the\s+)?(?:{COLOR_RE})"
+                       r"(?:\s+(?:cube|block|one))?)+)$")
+_IDLE_FACT_RE = re.compile(
+    rf"(?i)^(?:(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?|(?:all\s+)?(?:the\s+)?(?:other|remaining)\s+(?:cubes|blocks)"
+    r"|the\s+(?:rest|others)|everything\s+else|(?:all\s+)?(?:the\s+)?(?:cubes|blocks)|the\s+(?:gripper|hand)(?:\s+is\s+empty)?)"
+    r"(?:\s+(?:is|are|lie|lies|sit|sits))?(?:\s+(?:on\s+the\s+table|scattered(?:\s+(?:around|randomly|on\s+the\s+table))?"
+    r"|loose|apart|separate|elsewhere|(?:lying\s+)?around|at\s+random|randomly\s+placed|empty|open))?$")
+"""A fact that starts no stack: a cube on the table, the rest scattered, the gripper empty."""
+
+
+ON_TABLE_GOAL_RE = re.compile(
+    rf"(?i)^\s*(?:(?:put|place|move|set|lay|take|bring|get|lower|return)\s+)?{_CUBE.format(g='c')}\s+(?:(?:must|should|has\s+to|"
+    r"needs\s+to|will)\s+)?(?:(?:be|end\s+up|ends\s+up|finish(?:es)?|stay|stays|go|goes|sit|sits|lie|lies|is|back|down"
+    rf"|(?:off|from)\s+(?:of\s+)?(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?(?:\s+and)?)\s+)*(?:on|onto)\s+the\s+table\s*[.!]?$")
+"""A goal that only sends a cube to the table ("the pink cube must end up on the table", "put
+red on the table"): read here, where the start stacks that cube (alone it asks nothing)."""
+
+_TOWER_IN_RE = re.compile(
+    rf"(?i)(?:\ban?\s+|\bone\s+)?\b(?:stack|tower|column)\s+(?:of\s+)?(?:(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?))?"
+    rf"(?:\s*,\s*(?:and\s+)?|\s+and\s+|\s+then\s+)){{1,}}(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?))?"
+    r"(?:\s*\(?\s*(?:from\s+)?(?:the\s+)?(?:bottom|top)(?:\s+(?:to|up\s+to|down\s+to)\s+(?:the\s+)?(?:top|bottom)|\s+up"
+    r"|\s+down|\s+first)?\s*\)?)?")
+"""A tower listed inside a statement of the start ("a tower of red, green, blue (bottom to top)"):
+read whole before the statement is split into its facts at its commas."""
+
+
+@dataclass(frozen=True)
+class InitialScene:
+    """How the cubes start, said with the goal.
+
+    Attributes:
+        stacks: each initial stack's colours, bottom to top.
+        goal: the rest of the instruction (the goal, read by the whole front end).
+    """
+
+    stacks: tuple[tuple[str, ...], ...]
+    goal: str
+
+
+def _facts(content: str) -> list[tuple[str, ...]] | None:
+    """The stacks (bottom to top) a statement of the start says, or None when one of its facts
+    is not a form this module reads."""
+    stacks: list[tuple[str, ...]] = []
+    towers = [m.group(0).strip() for m in _TOWER_IN_RE.finditer(content)]
+    content = _TOWER_IN_RE.sub(" , ", content)
+    for fact in towers + re.split(r"\s*(?:[,;]\s*(?:and\s+|while\s+)?|\s+and\s+|\s+while\s+)\s*", content.strip(" .:")):
+        fact = fact.strip()
+        if not fact or _IDLE_FACT_RE.match(fact):
+            continue
+        tower = _TOWER_RE.match(fact)
+        if tower:
+            colors = [canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", tower.group("list"), re.I)]
+            if len(colors) < 2:
+                return None
+            stacks.append(tuple(colors[::-1] if tower.group("from") == "top" else colors))
+            continue
+        chain = _CHAIN_RE.match(fact)
+        if not chain:
+            return None
+        links = re.findall(rf"(?i)\s+({_REL_ON}|{_REL_UNDER})\s+(?:the\s+)?({COLOR_RE})", chain.group("links"))
+        under = {bool(re.search(r"(?i)under|below|beneath", rel)) for rel, _ in links}
+        if len(under) != 1:
+            return None  # "A on B under C": not read
+        order = [canon_color(chain.group("a"))] + [canon_color(c) for _, c in links]
+        stacks.append(tuple(order) if under == {True} else tuple(order[::-1]))  # "A under B": A is the bottom
+        continue
+    return _merged(stacks)
+
+
+def _merged(stacks: list[tuple[str, ...]]) -> list[tuple[str, ...]] | None:
+    """Stacks said piece by piece ("red on blue, green on red") joined into towers; None when
+    a colour would stand in two places (then which cube is which is not said)."""
+    towers = [list(s) for s in stacks]
+    changed = True
+    while changed:
+        changed = False
+        for a in towers:
+            for b in towers:
+                if a is not b and a[-1] == b[0]:
+                    a.extend(b[1:])
+                    towers.remove(b)
+                    changed = True
+                    break
+            if changed:
+                break
+    colors = [c for t in towers for c in t]
+    return [tuple(t) for t in towers] if len(colors) == len(set(colors)) else None
+
+
+def split(instruction: str) -> InitialScene | None:
+    """The initial scene and the goal of ``instruction``, or None when it states no start this
+    module reads (see the module docstring)."""
+    sentences = [s for s in re.split(r"(?<=[.;!?])\s+|\s*(?=\b(?:[Gg]oal|[Tt]arget)\s*:)", instruction.strip()) if s.strip()]
+    from rpg.schema.lexicon import MARKUP_RES
+
+    for pattern, written in MARKUP_RES:
+        instruction = pattern.sub(written, instruction)
+    instruction = re.sub(r"^\s*[A-Za-z][\w\-]*(?:\s+[\w\-]+){0,3}?\s*(?:\([^)]{0,30}\))?\s*:\s*(?=\S)(?=.*\b(?:starts|initially)\b)", "",
+                         instruction.strip())  # "# goal (unstack): the pink cube starts ...": its label
+    clause = STARTS_CLAUSE_RE.match(instruction.strip())
+    if clause:
+        stacks = _facts(clause.group("fact"))
+        subject = f"the {clause.group('top')} cube"
+        rest = clause.group("rest").strip()
+        rest = rest if re.match(r"(?i)(?:put|place|move|take|stack|build|make|set|bring|now|then|goal|the|a|an)\b", rest) \
+            else f"{subject} {rest}"  # "... and must end up on the table": the subject carried over
+        rest = re.sub(r"(?i)^((?:then\s+)?(?:put|place|move|take|set|bring|slide|push)\s+)it\b", rf"\1{subject}", rest)  # "Put it ..."
+        return InitialScene(tuple(stacks), GOAL_OPENER_RE.sub("", rest, count=1)) if stacks else None
+    start, goal = [], []
+    for s in sentences:
+        m = START_SENTENCE_RE.match(s)
+        if m and not goal:
+            start.append(s[m.end():])
+        else:
+            goal.append(GOAL_OPENER_RE.sub("", s, count=1))
+    if not start:
+        return None
+    stacks = _facts(" , ".join(start))
+    return InitialScene(tuple(stacks), " ".join(goal).strip()) if stacks else None
+
+
+def on_table_goal(scene: InitialScene, instruction: str) -> TaskSchema | None:
+    """The task whose goal only sends a cube the start stacks to the table (:data:`ON_TABLE_GOAL_RE`);
+    None when the goal is not of that form or the cube starts on the table."""
+    from rpg.domain.predicates import OnTable
+
+    m = ON_TABLE_GOAL_RE.match(scene.goal)
+    if m is None:
+        return None
+    color = canon_color(m.group("c"))
+    if not any(color in s[1:] for s in scene.stacks):
+        return None  # it starts on the table: the goal would hold before anything moved
+    b = Builder(scene.goal)
+    cube = b.cube(color)
+    b.place({cube: _table_pose(b.unit_centers(1)[0])})
+    b.preds.append(OnTable(cube))
+    b.primitives += ["place"]
+    b.summary.append(f"{cube} on the table")
+    return b.schema(task_slug(scene.goal))
+
+
+def attach(head: TaskSchema, scene: InitialScene, instruction: str) -> TaskSchema:
+    """``head`` (the goal, read alone) with rho_0 starting ``scene``'s stacks: each colour is the
+    goal's one cube of that colour, or a cube added for the start when the goal has none.
+
+    Raises:
+        BadInput: a colour of the start names two cubes of the goal (which one starts there is
+            not said).
+    """
+    b = Builder(instruction)
+    for a in head.assets:
+        b._names[a.name] += 1
+        b.assets.append(a.model_copy())
+    b.place({n: p.pose() for n, p in head.goal_layout.items()})
+    b.preds = list(head.goal.conjuncts())
+    b.structures, b.orientations = [list(x) for x in head.initial_state.structures], dict(head.initial_state.orientations)
+    b.reasoning, b.primitives, b.repairs = head.reasoning, list(head.primitives), list(head.repairs)
+    b.min_separation = head.initial_state.min_separation
+    b.summary = [head.goal_summary]
+    spare = iter(b.unit_centers(8, 0.1)[::-1])
+    for colors in scene.stacks:
+        names = []
+        for c in colors:
+            have = [a.name for a in b.assets if a.kind == "colored_cube" and a.color == c]
+            if len(have) > 1:
+                raise BadInput(f"\"{instruction[:80]}\": the start puts a {c} cube in a stack and the goal has "
+                               f"{len(have)} {c} cubes; say which one (e.g. by a letter), or use --model")
+            if not have:  # a cube only the start names: it starts there, the goal leaves it free
+                have = [b.cube(c)]
+                b.place({have[0]: _table_pose(next(spare))})
+            names.append(have[0])
+        if any(n in s for s in b.structures for n in names):
+            raise BadInput(f"\"{instruction[:80]}\": the start stacks a cube twice; say each stack once, or use --model")
+        b.structures.append(names)
+        b.summary.append("initially a stack bottom to top: " + ", ".join(names))
+    return b.schema(task_slug(instruction), paraphrases=list(head.paraphrases))
+
+
+def _table_pose(xy: tuple[float, float]):
+    from rpg.domain import constants as C
+    from rpg.domain.state import Pose
+
+    return Pose((float(xy[0]), float(xy[1]), C.TABLE_TOP_Z + C.CUBE_EDGE / 2))
