@@ -2303,3 +2303,22 @@ def test_a_start_compiles_and_places_its_stacks(tmp_path):
     assert r.valid, [g for g in r.gates if g["status"] == "fail"]
     task = yaml.safe_load((r.path / "task.yaml").read_text())
     assert task["schema"]["initial_state"]["structures"] == [["blue", "red"], ["yellow", "green"]]
+
+
+@pytest.mark.parametrize("text,goal,start", [
+    # Blocksworld's start (letter blocks, 'on the table', 'clear', an empty hand), then its goal
+    ("Initial state: A is on B, B is on the table, C is on the table, A is clear, C is clear, the hand is empty. Goal: C on A.",
+     "On(a='letter_c', b='letter_a')", [["letter_b", "letter_a"]]),
+    ("Initially block A is on block B. Put block B on block C.", "Stack(objects=['letter_c', 'letter_b'])",
+     [["letter_b", "letter_a"]]),
+    # a goal on a cube that starts on another does not also send that cube to the table
+    ("Start: red on blue. Goal: put green on red.", "On(a='green', b='red')", [["blue", "red"]]),
+])
+def test_a_blocksworld_start_and_a_goal_on_a_raised_cube(text, goal, start):
+    schema = check_feasibility(parse(text))
+    assert repr(schema.goal) == goal and schema.initial_state.structures == start
+
+
+def test_a_clear_cube_with_a_cube_on_it_is_not_read_as_a_start():
+    with pytest.raises(BadInput):
+        parse("Initially: A on B, B is clear. Goal: C on A.")

@@ -22,7 +22,9 @@ from rpg.schema.lexicon import COLOR_RE
 from rpg.schema.model import TaskSchema
 from rpg.schema.reading import canon_color, task_slug
 
-_CUBE = rf"(?:the\s+)?(?P<{{g}}>{COLOR_RE})(?:\s+(?:cube|block|one))?"
+_NAME = rf"(?:{COLOR_RE}|(?-i:[A-Z])(?![\w'])|\d(?!\w))"
+"""A cube's name in a start: a colour, or a letter or digit cube's label ("block A", "the 3 cube")."""
+_CUBE = rf"(?:the\s+)?(?:(?:letter|digit|number)\s+)?(?:block\s+|cube\s+)?(?P<{{g}}>{_NAME})(?:\s+(?:cube|block|one))?"
 
 START_SENTENCE_RE = re.compile(
     r"(?i)^\s*(?:initially|at\s+(?:the\s+)?(?:start|beginning)(?:\s+of\s+the\s+(?:episode|task))?"
@@ -51,14 +53,17 @@ _TOWER_RE = re.compile(
     rf"(?:\s*,\s*(?:and\s+)?|\s+and\s+|\s+then\s+|\s*$|(?=\s*\(|\s+(?:from|bottom|top))))+)"
     r"\s*\(?\s*(?:from\s+)?(?:the\s+)?(?P<from>bottom|top)?(?:\s+(?:to|up\s+to|down\s+to)\s+(?:the\s+)?(?:top|bottom)|\s+up|\s+down"
     r"|\s+first)?\s*\)?$")
-_CHAIN_RE = re.compile(rf"(?i)^{_CUBE.format(g='a')}(?P<links>(?:\s+(?:{_REL_ON}|{_REL_UNDER})\s+(?:the\s+)?(?:{COLOR_RE})"
-                       r"(?:\s+(?:cube|block|one))?)+)$")
+_CHAIN_RE = re.compile(rf"(?i)^{_CUBE.format(g='a')}(?P<links>(?:\s+(?:{_REL_ON}|{_REL_UNDER})\s+(?:the\s+)?(?:(?:letter|digit|number)\s+)?"
+                       rf"(?:block\s+|cube\s+)?{_NAME}(?:\s+(?:cube|block|one))?)+)$")
 _IDLE_FACT_RE = re.compile(
-    rf"(?i)^(?:(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?|(?:all\s+)?(?:the\s+)?(?:other|remaining)\s+(?:cubes|blocks)"
+    rf"(?i)^(?:(?:the\s+)?(?:(?:letter|digit|number)\s+)?(?:block\s+|cube\s+)?(?:{_NAME})(?:\s+(?:cube|block))?|(?:all\s+)?(?:the\s+)?(?:other|remaining)\s+(?:cubes|blocks)"
     r"|the\s+(?:rest|others)|everything\s+else|(?:all\s+)?(?:the\s+)?(?:cubes|blocks)|the\s+(?:gripper|hand)(?:\s+is\s+empty)?)"
-    r"(?:\s+(?:is|are|lie|lies|sit|sits))?(?:\s+(?:on\s+the\s+table|scattered(?:\s+(?:around|randomly|on\s+the\s+table))?"
-    r"|loose|apart|separate|elsewhere|(?:lying\s+)?around|at\s+random|randomly\s+placed|empty|open))?$")
-"""A fact that starts no stack: a cube on the table, the rest scattered, the gripper empty."""
+    r"(?:\s+(?:is|are|lie|lies|sit|sits|starts|start))?(?:\s+(?:on\s+the\s+table|scattered(?:\s+(?:around|randomly|on\s+the\s+table))?"
+    r"|loose|apart|separate|elsewhere|(?:lying\s+)?around|at\s+random|randomly\s+placed|empty|open))?$"
+    r"|^(?:the\s+)?(?:hand|gripper|arm)\s+(?:is\s+)?empty$|^(?:arm|hand)-?empty$"
+    rf"|^(?:the\s+)?(?:block\s+|cube\s+)?(?:{_NAME})(?:\s+(?:cube|block))?\s+is\s+clear$|^clear\s+(?:the\s+)?(?:block\s+)?(?:{_NAME})$")
+"""A fact that starts no stack: a cube on the table, the rest scattered, the gripper empty, a
+cube with nothing on it ("A is clear", checked against the stacks said)."""
 
 
 ON_TABLE_GOAL_RE = re.compile(
@@ -102,7 +107,7 @@ def _facts(content: str) -> list[tuple[str, ...]] | None:
             continue
         tower = _TOWER_RE.match(fact)
         if tower:
-            colors = [canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", tower.group("list"), re.I)]
+            colors = [_canon(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", tower.group("list"), re.I)]
             if len(colors) < 2:
                 return None
             stacks.append(tuple(colors[::-1] if tower.group("from") == "top" else colors))
@@ -110,14 +115,26 @@ def _facts(content: str) -> list[tuple[str, ...]] | None:
         chain = _CHAIN_RE.match(fact)
         if not chain:
             return None
-        links = re.findall(rf"(?i)\s+({_REL_ON}|{_REL_UNDER})\s+(?:the\s+)?({COLOR_RE})", chain.group("links"))
+        links = re.findall(rf"(?i)\s+({_REL_ON}|{_REL_UNDER})\s+(?:the\s+)?(?:(?:letter|digit|number)\s+)?(?:block\s+|cube\s+)?"
+                           rf"({_NAME})", chain.group("links"))
         under = {bool(re.search(r"(?i)under|below|beneath", rel)) for rel, _ in links}
         if len(under) != 1:
             return None  # "A on B under C": not read
-        order = [canon_color(chain.group("a"))] + [canon_color(c) for _, c in links]
+        order = [_canon(chain.group("a"))] + [_canon(c) for _, c in links]
         stacks.append(tuple(order) if under == {True} else tuple(order[::-1]))  # "A under B": A is the bottom
         continue
-    return _merged(stacks)
+    merged = _merged(stacks)
+    clear = [_canon(m.group(1)) for m in re.finditer(rf"(?i)(?:the\s+)?(?:block\s+|cube\s+)?({_NAME})(?:\s+(?:cube|block))?\s+is\s+"
+                                                      r"clear\b|\bclear\s+(?:the\s+)?(?:block\s+)?(" + _NAME + r")\b", content)
+             if m.group(1)] if merged is not None else []
+    if merged is None or any(c in t[:-1] for c in clear for t in merged):
+        return None  # "A is clear" of a cube the start stacks something on: a contradiction
+    return merged
+
+
+def _canon(name: str) -> str:
+    """A colour's palette name, or a label as it is written ("A", "3")."""
+    return name if re.fullmatch(r"[A-Z]|\d", name) else canon_color(name.lower())
 
 
 def _merged(stacks: list[tuple[str, ...]]) -> list[tuple[str, ...]] | None:
@@ -214,19 +231,32 @@ def attach(head: TaskSchema, scene: InitialScene, instruction: str) -> TaskSchem
     for colors in scene.stacks:
         names = []
         for c in colors:
-            have = [a.name for a in b.assets if a.kind == "colored_cube" and a.color == c]
+            label = re.fullmatch(r"[A-Z]|\d", c) is not None
+            have = [a.name for a in b.assets if (a.label == c if label else a.kind == "colored_cube" and a.color == c)]
             if len(have) > 1:
                 raise BadInput(f"\"{instruction[:80]}\": the start puts a {c} cube in a stack and the goal has "
                                f"{len(have)} {c} cubes; say which one (e.g. by a letter), or use --model")
             if not have:  # a cube only the start names: it starts there, the goal leaves it free
-                have = [b.cube(c)]
+                have = [b.semantic(c) if label else b.cube(c)]
                 b.place({have[0]: _table_pose(next(spare))})
             names.append(have[0])
         if any(n in s for s in b.structures for n in names):
             raise BadInput(f"\"{instruction[:80]}\": the start stacks a cube twice; say each stack once, or use --model")
         b.structures.append(names)
         b.summary.append("initially a stack bottom to top: " + ", ".join(names))
+    raised = {n for st in b.structures for n in st[1:]}  # cubes that start on another cube
+    b.preds = [p for q in b.preds for p in _resting_on(q, raised)]
     return b.schema(task_slug(instruction), paraphrases=list(head.paraphrases))
+
+
+def _resting_on(p, raised: set[str]) -> list:
+    """``p``, or, when it is a stack whose bottom cube starts on another cube, its cubes each on
+    the one below: "put C on A" where A starts on B asks C on A, not A moved to the table."""
+    from rpg.domain.predicates import On, Stack
+
+    if type(p) is Stack and p.objects[0] in raised:
+        return [On(a, b) for b, a in zip(p.objects, p.objects[1:], strict=False)]
+    return [p]
 
 
 def _table_pose(xy: tuple[float, float]):
