@@ -74,6 +74,7 @@ DEVELOPMENT = {
     "stranger3": ("steer_stranger3.yaml", "STRANGER steering set 3 (steer_stranger3.yaml, development material)"),
     "stranger4": ("steer_stranger4.yaml", "STRANGER steering set 4 (steer_stranger4.yaml, development material)"),
     "stranger5": ("steer_stranger5.yaml", "STRANGER steering set 5 (steer_stranger5.yaml, development material)"),
+    "stranger6": ("steer_stranger6.yaml", "STRANGER steering set 6 (steer_stranger6.yaml, development material)"),
 }
 UNSEEN = HERE / "steer_unseen.yaml"
 SPLITS = HERE / "splits.yaml"
