@@ -2322,3 +2322,20 @@ def test_a_blocksworld_start_and_a_goal_on_a_raised_cube(text, goal, start):
 def test_a_clear_cube_with_a_cube_on_it_is_not_read_as_a_start():
     with pytest.raises(BadInput):
         parse("Initially: A on B, B is clear. Goal: C on A.")
+
+
+@pytest.mark.parametrize("text,expected", [
+    # the verb last and the places postposed (Japanese, Korean, Turkish habits; stranger8, stranger9)
+    ("The 4 cube, the 2 cube's top on, stacking please.", ["stack(2,4)"]),
+    ("As for the green cube, the yellow patch on, please put.", ["on_patch(green,patch:yellow)"]),
+    ("Pink cube's right side to, cyan cube please put.", ["right_of(cyan,pink)"]),
+    ("Table's right-front corner, white cube, please put.", ["in_region(white,front_right)"]),
+    ("Red cube, blue cube on top of, put please.", ["stack(blue,red)"]),
+])
+def test_an_instruction_with_its_verb_last(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_negated_instruction_with_its_verb_last_is_refused_as_written():
+    with pytest.raises(Inexpressible, match="negation"):
+        parse("Red cube, blue cube's top on, do not put please.")

@@ -388,6 +388,43 @@ def _idle_sentence(sentence: str, unknown: set[str]) -> bool:
     return True
 
 
+_VERB_FINAL_RE = re.compile(r"(?i)^(?P<body>[^.!?]+?)\s*,?\s*(?:please\s+)?(?P<verb>put|place|set|stack(?:ing)?|make|build|arrange)"
+                            r"(?:\s+please)?\s*[.!]?\s*$")
+_POSTPOSED_RE = re.compile(r"(?i)^(?:as\s+for\s+)?(?P<np>.+?)(?:'s\s+(?P<part>top|right(?:\s+side)?|left(?:\s+side)?|front|back))?\s+"
+                           r"(?P<post>on\s+top\s+of|on|onto|to|in|next\s+to|beside|behind|in\s+front\s+of)$")
+_PART_PHRASE = {"top": "on top of", "right": "to the right of", "right side": "to the right of", "left": "to the left of",
+                "left side": "to the left of", "front": "in front of", "back": "behind"}
+
+
+def verb_final(text: str) -> str:
+    """An instruction whose verb comes last and whose places are postposed (Japanese, Korean,
+    Turkish habits: "The 4 cube, the 2 cube's top on, stacking please.", "As for the green cube,
+    the yellow patch on, please put.", "Table's right-front corner, white cube, please put.")
+    rewritten verb first ("stack the 4 cube on top of the 2 cube"); other text unchanged."""
+    m = _VERB_FINAL_RE.match(text.strip())
+    if not m or "," not in m.group("body") or re.search(r"(?i)\b(?:not|n't|never|no)\b", m.group("body")) or re.match(r"(?i)\s*(?:please\s+)?(?:put|place|set|stack|make|build|move|arrange)\b",
+                                                         m.group("body")):
+        return text
+    things, places = [], []
+    for chunk in (c.strip() for c in m.group("body").split(",")):
+        if not chunk or re.fullmatch(r"(?i)please", chunk):
+            continue
+        post = _POSTPOSED_RE.match(chunk)
+        corner = re.fullmatch(r"(?i)(?:the\s+)?table'?s\s+(?P<where>[\w\s-]+?(?:corner|side|edge|centre|center|middle))", chunk)
+        if post and not re.search(r"(?i)\b(?:each other|one another)$", chunk):
+            np = re.sub(r"(?i)^(?!the\b)", "the ", post.group("np"))
+            where = _PART_PHRASE[post.group("part").lower()] if post.group("part") else post.group("post")
+            places.append(f"{where} {np}")
+        elif corner:
+            places.append(f"in the {corner.group('where')} of the table")
+        else:
+            things.append(re.sub(r"(?i)^(\w+)\s+(cubes|blocks)\s+all$", r"all the \1 \2", re.sub(r"^The\b", "the", chunk)))
+    if len(places) != 1 or not things:
+        return text
+    verb = m.group("verb").lower().removesuffix("ing")
+    return f"{verb} {' and '.join(things)} {places[0]}."
+
+
 def _unshouted(text: str) -> str:
     """``text`` with its words lower-cased when it is shouted (:data:`lexicon.SHOUTING_MIN_SHARE`):
     single letters stay letter cubes, and a word after "spell", "read" or "word" stays spelled."""
@@ -474,6 +511,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     original = lexicon.FILLER_RE.sub("", original).strip()
     original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", original)  # texting's "2" for "to"
     original = apply_corrections(original)  # "..., sorry, the pink patch": the correction wins
+    original = verb_final(original)  # "The 4 cube, the 2 cube's top on, stacking please.": the verb said first
     original = lexicon.LABELS_AND_NOUN_RE.sub(r"\1 \2 \4 and the \3 \4", original)  # "the 1 & 9 cubes"
     if not original:
         raise ParseError("the instruction is empty; describe a task, e.g. \"stack the red block on the blue block\"")
