@@ -2339,3 +2339,9 @@ def test_an_instruction_with_its_verb_last(text, expected):
 def test_a_negated_instruction_with_its_verb_last_is_refused_as_written():
     with pytest.raises(Inexpressible, match="negation"):
         parse("Red cube, blue cube's top on, do not put please.")
+
+
+def test_a_word_read_from_the_bottom_up_puts_its_first_letter_at_the_bottom():
+    """"so they read D, O, G from bottom to top" had stacked G at the bottom (steer_stranger6's base)."""
+    schema = parse("Stack the letter cubes so they read D, O, G from bottom to top")
+    assert meaning(schema) == ["reads(D,O,G;direction=bottom_to_top,face=front,text=DOG)", "stack(D,O,G)"]

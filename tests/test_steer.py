@@ -1059,3 +1059,22 @@ def test_a_whole_task_reading_that_drops_cubes_nobody_said_to_drop_is_refused(tm
 ])
 def test_an_edit_that_builds_on_the_task_keeps_it(tmp_path, base, edits, want):
     assert _steered(tmp_path, base, *edits)[-1] == want
+
+
+def test_a_new_word_and_the_letter_it_adds_is_one_change(tmp_path):
+    """"make it ROBOTS, add an S" had spelled ROBOTSS (steer_stranger6)."""
+    [(_, got)] = _steered(tmp_path, "Place the letter cubes R, O, B, O, T in a row so they spell ROBOT", "make it ROBOTS, add an S")
+    assert got[0] == "line[left_to_right](R,O,B,O,T,S)"
+
+
+def test_a_pivot_to_a_stack_keeps_the_order_it_states(tmp_path):
+    """"put them in a stack instead, H on top of I" had stacked H under I (steer_stranger6)."""
+    [(_, got)] = _steered(tmp_path, "Arrange the letter cubes H and I in a row so they spell HI",
+                          "put them in a stack instead, H on top of I")
+    assert got == ["stack(I,H)"]
+
+
+def test_a_walls_top_row_is_its_top_layer(tmp_path):
+    """"the top row should be red" had turned a wall into a line of four (steer_stranger6)."""
+    assert _steered(tmp_path, "Make a wall: bottom row two yellow cubes, top row two green cubes", "the top row should be red") \
+        == [("tweak", ["wall(yellow,yellow|red,red)"])]

@@ -1210,6 +1210,8 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"(?i)\b(?:that|this)\s+(?=(?:{COLOR_RE})\s+(?:one|block|cube)\b)"), "the "),  # "make that blue one white"
     # "make the top row green not red": a colour corrected, not a negation
     (re.compile(rf"(?i)\b({COLOR_RE})\s*,?\s+(?:and\s+)?not\s+({COLOR_RE})\b(?!\s+(?:block|cube|one|patch)s?\b)"), r"\1 instead of \2"),
+    # "the top row should be red" (of a wall or a pyramid): a layer, not a new line
+    (re.compile(r"(?i)\b(top|bottom|middle|lowest|highest|upper|lower|first|second|third)\s+(?:row|level|tier|course)\b"), r"\1 layer"),
     # "other way round": the two ends (or the two related cubes) exchanged, not a circle
     (re.compile(r"(?i)\b(?:the\s+)?other\s+way\s+a?round\b|\bthe\s+opposite\s+way\s+a?round\b"), "reverse the order"),
     # "brown -> grey", "brown to grey": one colour for another

@@ -547,16 +547,29 @@ def read_ops(t: str) -> list[Op]:
         ops = [o for o in ops if o.op != "count"]
         ops.append(Op("structure", {"to": "block", "dims": [1, int(wide.group(1)), int(high.group(1))]}))
     elif shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
-        ops.append(Op("structure", {"to": structure_of_word(shape.group(1)), **_kept_order(t)}))
+        ops.append(Op("structure", {"to": structure_of_word(shape.group(1)), **_kept_order(t), **_stated_on(t)}))
     elif stack_all and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
-        ops.append(Op("structure", {"to": "tower", **_kept_order(t)}))  # "stack them": a tower of the task's cubes
+        ops.append(Op("structure", {"to": "tower", **_kept_order(t), **_stated_on(t)}))  # "stack them": the task's cubes
     elif bare_shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
         ops.append(Op("structure", {"to": structure_of_word(bare_shape.group(1))}))  # "now a line instead"
+    word = next((o.params["word"] for o in ops if o.op == "word"), None)
+    if word:  # "make it ROBOTS, add an S": the added letters say how the new word is made, not more letters
+        ops = [o for o in ops if not (o.op == "add" and o.params.get("items") and all(
+            "label" in i and i["label"].upper() in word for i in o.params["items"]))]
     return ops
 
 
 SAME_ORDER_RE = re.compile(r"\b(?:in\s+the\s+same\s+order|keep(?:ing)?\s+the\s+(?:same\s+)?order|same\s+order)\b")
 """A structure turned into another that keeps its cubes' order ("stack them in the same order")."""
+
+
+def _stated_on(t: str) -> dict:
+    """``{"on": [(top, bottom), ...]}`` for each "X on top of Y" a structure edit states between
+    its cubes ("put them in a stack instead, H on top of I"), names as written (a colour or a
+    label); else ``{}``."""
+    pairs = re.findall(rf"\b(?:the\s+)?(?:letter\s+|digit\s+)?((?:{COLOR_RE})|[a-z0-9])(?:\s+(?:block|cube|one))?\s+"
+                       rf"(?:on\s+top\s+of|on|above|over|atop)\s+(?:the\s+)?(?:letter\s+|digit\s+)?((?:{COLOR_RE})|[a-z0-9])\b", t)
+    return {"on": pairs} if pairs else {}
 
 
 def _kept_order(t: str) -> dict:
@@ -889,6 +902,31 @@ def _in_kept_order(spec: TaskSpec, end: tuple[str, str] | None) -> TaskSpec:
     return replace(spec, direction="left_to_right")
 
 
+def _in_stated_order(spec: TaskSpec, on: list[tuple[str, str]]) -> TaskSpec:
+    """A tower whose cubes stand as the edit's "X on top of Y" pairs say, bottom to top.
+
+    Raises:
+        SteerError: a pair names a cube the tower has not (or two alike), or the pairs do not
+            fix every cube's place.
+    """
+    def index(name: str) -> int:
+        color = canon_color(name) if re.fullmatch(COLOR_RE, name) else None
+        at = [i for i, it in enumerate(spec.items) if (color is not None and it.color == color and it.label is None)
+              or (color is None and (it.label or "").upper() == name.upper())]
+        if len(at) != 1:
+            raise SteerError(f"'{name}' does not name one cube of the tower; state the whole new task, or use --model")
+        return at[0]
+    above = {index(b): index(a) for a, b in on}
+    bottoms = [i for i in range(len(spec.items)) if i not in above.values()]
+    order = bottoms[:1]
+    while order and order[-1] in above:
+        order.append(above[order[-1]])
+    if len(bottoms) != 1 or sorted(order) != list(range(len(spec.items))):
+        raise SteerError("the edit's 'on top of' does not fix every cube's place in the tower; say the whole order "
+                         "(e.g. \"bottom to top: red, blue, green\"), or use --model")
+    return spec.with_items([spec.items[i] for i in order])
+
+
 def _fit_structure(spec: TaskSpec, target: str) -> TaskSpec:
     try:
         return STRUCTURE_KINDS[target].fit(spec, _resize)
@@ -964,6 +1002,8 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
                                      "too, or state the whole new task")
                 if p.get("keep_order") and spec.structure in ("tower", "line"):
                     spec = _in_kept_order(spec, p.get("end"))
+                if p.get("on") and spec.structure == "tower":
+                    spec = _in_stated_order(spec, p["on"])
         elif o.op == "material":
             if p["to"] == spec.material:
                 continue

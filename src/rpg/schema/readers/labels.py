@@ -84,9 +84,12 @@ def recognize_spell(f: Features, b: Builder) -> bool:
         word = word[::-1]  # "spell CAT backwards": the cubes read TAC
     names = [b.semantic(ch) for ch in word]
     if f.has("tower", "stack", "vertical", "vertically"):
-        b.place(stack_layout(list(reversed(names)), C.WORKSPACE_CENTER))
-        b.preds += [Stack(tuple(reversed(names))), Reads(tuple(names), word, "top_to_bottom", "front")]
-        b.summary.append(f"a tower whose front faces read {word!r} from top to bottom")
+        upward = re.search(r"\b(?:(?:from\s+)?(?:the\s+)?bottom\s+(?:to\s+(?:the\s+)?top|up(?:wards?)?)|upwards?)\b", f.text)
+        bottom_first = names if upward else list(reversed(names))  # "read D, O, G from bottom to top": D at the bottom
+        direction = "bottom_to_top" if upward else "top_to_bottom"
+        b.place(stack_layout(bottom_first, C.WORKSPACE_CENTER))
+        b.preds += [Stack(tuple(bottom_first)), Reads(tuple(names), word, direction, "front")]
+        b.summary.append(f"a tower whose front faces read {word!r} {direction.replace('_', ' ')}")
         b.primitives += ["stack"]
     else:
         direction = direction_of(f)
