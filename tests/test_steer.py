@@ -1078,3 +1078,26 @@ def test_a_walls_top_row_is_its_top_layer(tmp_path):
     """"the top row should be red" had turned a wall into a line of four (steer_stranger6)."""
     assert _steered(tmp_path, "Make a wall: bottom row two yellow cubes, top row two green cubes", "the top row should be red") \
         == [("tweak", ["wall(yellow,yellow|red,red)"])]
+
+
+def test_each_row_of_a_wall_made_wider_is_its_width(tmp_path):
+    """"make each row three cubes wide" had turned a wall into a line of three (steer_stranger6)."""
+    assert _steered(tmp_path, "Make a wall: bottom row two yellow cubes, top row two red cubes", "make each row three cubes wide") \
+        == [("tweak", ["wall(yellow,yellow,yellow|red,red,red)"])]
+
+
+@pytest.mark.parametrize("base,edit,expected", [
+    # edits said in fewer words (steer_stranger6): each had been refused
+    ("Put three green cubes in a line", "one more", ("extend", ["line(green,green,green,green)"])),
+    ("Put the orange cube in the front left corner of the table", "no wait, back right", ("modify", ["in_region(orange,back_right)"])),
+    ("Arrange six red cubes in a circle", "all yellow now pls", ("tweak", ["circle(yellow,yellow,yellow,yellow,yellow,yellow)"])),
+    ("stack four purple cubes", "taller. six", ("tweak", ["stack(purple,purple,purple,purple,purple,purple)"])),
+    ("stack four purple cubes", "Fresh task please, a line of four blue cubes at the back of the table",
+     ("fresh", ["line(blue,blue,blue,blue)@back"])),
+    ("Put the blue cube on the red patch and the yellow cube on the green patch", "same thing without the yellow cube",
+     ("tweak", ["on_patch(blue,patch:red)"])),
+    ("line up blue, yellow, red from left to right", "and put that line on the right side of the table",
+     ("modify", ["line[left_to_right](blue,yellow,red)@right"])),
+])
+def test_edits_said_in_fewer_words(tmp_path, base, edit, expected):
+    assert _steered(tmp_path, base, edit) == [expected]

@@ -65,7 +65,7 @@ of that colour when the word is a colour (:func:`rpg.schema.reading.normalize`).
 TYPOS: dict[str, str] = {
     "blu": "blue", "gren": "green", "yelow": "yellow", "purpel": "purple", "cirlce": "circle", "cricle": "circle",
     "towr": "tower", "pyramd": "pyramid", "rite": "right", "da": "the", "teh": "the", "ontop": "on top",
-    "insted": "instead", "instaed": "instead", "isntead": "instead",
+    "insted": "instead", "instaed": "instead", "isntead": "instead", "mak": "make", "midle": "middle", "middel": "middle",
 }
 """Misspellings of a word of the vocabulary, each read as that word (curated, never a guess; the
 steering corrects an edit's words with this table before reading it)."""
@@ -1210,6 +1210,9 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"(?i)\b(?:that|this)\s+(?=(?:{COLOR_RE})\s+(?:one|block|cube)\b)"), "the "),  # "make that blue one white"
     # "make the top row green not red": a colour corrected, not a negation
     (re.compile(rf"(?i)\b({COLOR_RE})\s*,?\s+(?:and\s+)?not\s+({COLOR_RE})\b(?!\s+(?:block|cube|one|patch)s?\b)"), r"\1 instead of \2"),
+    # "make each row three cubes wide" (of a wall): its width, not a new line
+    (re.compile(r"(?i)\b(?:make\s+)?(?:each|every|every\s+single)\s+(?:row|layer|level)\s+(?=(?:\d+|one|two|three|four|five|six)\s+"
+                r"(?:cubes?\s+|blocks?\s+)?(?:wide|long)\b)"), "make it "),
     # "the top row should be red" (of a wall or a pyramid): a layer, not a new line
     (re.compile(r"(?i)\b(top|bottom|middle|lowest|highest|upper|lower|first|second|third)\s+(?:row|level|tier|course)\b"), r"\1 layer"),
     # "other way round": the two ends (or the two related cubes) exchanged, not a circle
@@ -1228,6 +1231,30 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "make it taller, 4 blocks": the count it grows (or shrinks) to
     (re.compile(r"(?i)\b(taller|higher|longer|shorter|smaller|bigger|lower)\s*[,:;-]?\s+"
                 r"(?=(?:\d+|two|three|four|five|six|seven|eight)\s+(?:blocks|cubes)\b)"), r"\1 to "),
+    # "taller. six": the count it grows (or shrinks) to, said alone after the word
+    (re.compile(rf"(?i)^\s*(?:make\s+it\s+)?(taller|higher|longer|shorter|smaller|bigger|lower)\s*[.,:;!-]+\s*(\d+|{COUNT_WORD_RE})"
+                r"\s*[.!]?\s*$"), r"make it \1 to \2 blocks"),
+    # "no wait, back right": a corner alone, where the task goes now
+    (re.compile(r"(?i)^\s*(?:the\s+)?((?:front|back|rear)[\s-]+(?:left|right))\s*(?:instead|please|pls|now)?\s*[.!]?\s*$"),
+     r"move it to the \1 corner"),
+    # "all yellow now pls": every cube recoloured
+    (re.compile(rf"(?i)^\s*(?:make\s+(?:it|them)\s+)?all\s+({COLOR_RE})(?:\s+(?:now|instead))?(?:\s+(?:please|pls|plz))?\s*[.!]?\s*$"),
+     r"make them all \1"),
+    # "one more": one more cube of the task's kind
+    (re.compile(r"(?i)^\s*(?:and\s+)?(?:just\s+)?(?:one|1)\s+more(?:\s+(?:please|pls|plz))?\s*[.!]?\s*$"), "add one more"),
+    # "Fresh task please, a line of ...": a new task
+    (re.compile(r"(?i)^\s*(?:a\s+)?(?:fresh|new|different|brand\s+new)\s+task(?:\s+(?:please|pls))?\s*[:,.!\-\u2013\u2014]+\s*"),
+     "start over: "),
+    # "same thing without the yellow cube": that cube removed
+    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before)\s*,?\s+(?:but\s+)?without\s+(?=the\s)"), "remove "),
+    # "take one of the black ones off so it's a bit shorter": the purpose said after the change
+    (re.compile(r"(?i)\s*,?\s+so\s+(?:that\s+)?it(?:'s|\s+is)\s+(?:a\s+(?:bit|little)\s+|slightly\s+)?(?:shorter|smaller|taller|lower|"
+                r"higher|bigger|longer)\b\s*(?=[.!?]?\s*$)"), ""),
+    # "can the middle one be red instead of white?": a change asked as a question
+    (re.compile(r"(?i)\b(?:can|could)\s+(the\s+[^?]+?)\s+be\s+([^?]+?)\s*\?\s*$"), r"make \1 \2"),
+    # "put that line on the right side of the table": the task's structure
+    (re.compile(r"(?i)\b(put|move|shift|slide|place)\s+(?:that|this)\s+(?:line|row|tower|stack|circle|ring|pyramid|wall"
+                r"|grid|structure)\b"), r"\1 it"),
 )
 """Edits said in fewer words, as the steering reads them: "on top of that" is on top of the task,
 "and a red block on top" adds one."""
