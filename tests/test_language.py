@@ -2345,3 +2345,19 @@ def test_a_word_read_from_the_bottom_up_puts_its_first_letter_at_the_bottom():
     """"so they read D, O, G from bottom to top" had stacked G at the bottom (steer_stranger6's base)."""
     schema = parse("Stack the letter cubes so they read D, O, G from bottom to top")
     assert meaning(schema) == ["reads(D,O,G;direction=bottom_to_top,face=front,text=DOG)", "stack(D,O,G)"]
+
+
+@pytest.mark.parametrize("text", [
+    "stack white, white, then black, black on top",  # had compiled to a tower of three (a black cube dropped)
+])
+def test_each_colour_of_a_list_is_a_cube_of_the_task(text):
+    with pytest.raises(ParseError, match="lists 2 black cubes"):
+        parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("Goal: blue on red, red on yellow.", ["stack(yellow,red,blue)"]),  # a chain's pairs are no list of colours
+    ("red left of blue, blue left of green", ["left_of(blue,green)", "left_of(red,blue)"]),
+])
+def test_the_pairs_of_a_chain_are_not_a_list(text, expected):
+    assert meaning(parse(text)) == expected

@@ -169,6 +169,12 @@ a digit cube or a number of cubes, which the task must have (not a list marker "
 a grid size "3x3" or "3 by 3", an id "T-88", a time "10:32" or a heading "Task 4:")."""
 
 
+COLOR_LIST_RE = re.compile(rf"\b(?:{COLOR_RE})(?:\s*(?:,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+)(?:the\s+)?"
+                           rf"(?:{COLOR_RE})\b(?!\s+(?:patch|pad|mat|tile)))+")
+"""A list of colours with nothing but separators between them ("white, white, then black, black"):
+each colour said is one cube, so the task must have at least as many of each."""
+
+
 class UnaccountedMention(BadInput):
     """A mention of the instruction has no place in the task that was read."""
 
@@ -666,6 +672,17 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
         if cubes and all(n in stacked for n in cubes):
             return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group(0)}' puts the "
                               f"{color} cube on the table and that task stacks it on another. Rephrase, or use --model")
+    rel = r"(?:on(?:\s+top\s+of)?|onto|under|behind|(?:to\s+the\s+)?(?:left|right)\s+of|in\s+front\s+of|next\s+to|beside|near|far\s+from|above|below)"
+    for run in COLOR_LIST_RE.finditer(f.text):  # "white, white, then black, black": each colour said is one cube
+        if re.match(rf"\s+{rel}\s+(?:the\s+)?(?:{COLOR_RE})\b", f.text[run.end():]) or re.search(rf"\b{rel}\s+(?:the\s+)?$",
+                                                                                                    f.text[:run.start()]):
+            continue  # "blue on red, red on yellow": the pairs of a chain of relations
+        listed = Counter(canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", run.group(0)))
+        have = Counter(a.color for a in schema.assets if a.kind != "goal_patch")
+        short = sorted(c for c, n in listed.items() if have[c] < n)
+        if short:
+            return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{run.group(0)}' lists "
+                              f"{listed[short[0]]} {short[0]} cubes and that task has {have[short[0]]}. Rephrase, or use --model")
     said = Counter(canon_color(m.group(1)) for m in re.finditer(rf"\b(?:a|an|another)\s+({COLOR_RE})\s+(?:block|cube|brick|box)\b", f.text))
     have = Counter(a.color for a in schema.assets if a.kind != "goal_patch")
     short = sorted(c for c, n in said.items() if have[c] < n)

@@ -946,7 +946,8 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     # middle had been read as the table's centre and a fourth cube made)
     (re.compile(rf"\s*,\s*(?:and\s+)?(?:the\s+)?({COLOR_RE})\s+(?:block\s+|cube\s+|one\s+)?(?:(?:is|goes|sits)\s+)?"
                 r"(in\s+the\s+middle|on\s+top|at\s+the\s+(?:bottom|top|base))\b(?!\s+of\b)"),
-     lambda m: f" with {m.group(1)} {m.group(2)}", True),
+     lambda m: m.group(0) if re.search(rf"\b{m.group(1)}\s*$", m.string[:m.start()])  # "black, black on top": one more
+     else f" with {m.group(1)} {m.group(2)}", True),
     # "a tower of four with a red base and a blue top": that cube at that end (a tower only: a
     # pyramid's or a wall's base is a layer)
     (re.compile(rf"\bwith\s+(?:a|an)\s+({COLOR_RE})\s+(top|base|bottom)\b(?!\s+(?:of|layer|row|level|tier))"
