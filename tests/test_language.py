@@ -2361,3 +2361,17 @@ def test_each_colour_of_a_list_is_a_cube_of_the_task(text):
 ])
 def test_the_pairs_of_a_chain_are_not_a_list(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "Start: a tower of red, blue, red, blue. Goal: red on the table.",  # had compiled to a tower of five, the goal dropped
+    "Initial state: A is on B, A is on C. Goal: C on A.",  # had compiled to a tower of A, C, B
+])
+def test_a_stated_start_that_cannot_be_built_is_refused_not_read_as_the_goal(text):
+    with pytest.raises(Inexpressible, match="starting scene rpg does not build"):
+        parse(text)
+
+
+def test_a_scattered_start_is_every_tasks_start():
+    schema = parse("At the start, everything is scattered. Build a tower of red and blue.")
+    assert schema.initial_state.structures == [] and meaning(schema) == ["stack(red,blue)"]

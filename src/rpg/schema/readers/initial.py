@@ -20,7 +20,7 @@ from rpg.errors import BadInput
 from rpg.schema.builder import Builder
 from rpg.schema.lexicon import COLOR_RE
 from rpg.schema.model import TaskSchema
-from rpg.schema.reading import canon_color, task_slug
+from rpg.schema.reading import Inexpressible, canon_color, task_slug
 
 _NAME = rf"(?:{COLOR_RE}|(?-i:[A-Z])(?![\w'])|\d(?!\w))"
 """A cube's name in a start: a colour, or a letter or digit cube's label ("block A", "the 3 cube")."""
@@ -57,7 +57,7 @@ _CHAIN_RE = re.compile(rf"(?i)^{_CUBE.format(g='a')}(?P<links>(?:\s+(?:{_REL_ON}
                        rf"(?:block\s+|cube\s+)?{_NAME}(?:\s+(?:cube|block|one))?)+)$")
 _IDLE_FACT_RE = re.compile(
     rf"(?i)^(?:(?:the\s+)?(?:(?:letter|digit|number)\s+)?(?:block\s+|cube\s+)?(?:{_NAME})(?:\s+(?:cube|block))?|(?:all\s+)?(?:the\s+)?(?:other|remaining)\s+(?:cubes|blocks)"
-    r"|the\s+(?:rest|others)|everything\s+else|(?:all\s+)?(?:the\s+)?(?:cubes|blocks)|the\s+(?:gripper|hand)(?:\s+is\s+empty)?)"
+    r"|the\s+(?:rest|others)|everything(?:\s+else)?|(?:all\s+)?(?:the\s+)?(?:cubes|blocks)|the\s+(?:gripper|hand)(?:\s+is\s+empty)?)"
     r"(?:\s+(?:is|are|lie|lies|sit|sits|starts|start))?(?:\s+(?:on\s+the\s+table|scattered(?:\s+(?:around|randomly|on\s+the\s+table))?"
     r"|loose|apart|separate|elsewhere|(?:lying\s+)?around|at\s+random|randomly\s+placed|empty|open))?$"
     r"|^(?:the\s+)?(?:hand|gripper|arm)\s+(?:is\s+)?empty$|^(?:arm|hand)-?empty$"
@@ -186,7 +186,11 @@ def split(instruction: str) -> InitialScene | None:
     if not start:
         return None
     stacks = _facts(" , ".join(start))
-    return InitialScene(tuple(stacks), " ".join(goal).strip()) if stacks else None
+    if stacks is None:  # a start this module cannot build: refused, never read as part of the goal
+        raise Inexpressible("time", [start[0].strip()[:60]], "states a starting scene rpg does not build: rho_0 starts only "
+                            "stacks of named cubes, each cube once, the rest scattered (e.g. \"Initially the red cube is on the "
+                            "blue cube. Put ...\"); say only where the cubes must end up", instruction)
+    return InitialScene(tuple(stacks), " ".join(goal).strip())
 
 
 def on_table_goal(scene: InitialScene, instruction: str) -> TaskSchema | None:
