@@ -2375,3 +2375,11 @@ def test_a_stated_start_that_cannot_be_built_is_refused_not_read_as_the_goal(tex
 def test_a_scattered_start_is_every_tasks_start():
     schema = parse("At the start, everything is scattered. Build a tower of red and blue.")
     assert schema.initial_state.structures == [] and meaning(schema) == ["stack(red,blue)"]
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("stack U on V", ["stack(V,U)"]),  # a capital U is a letter cube (texting's lower-case "u" is "you")
+    ("Tgt: pink -> blue patch. brown -> blue patch.", ["on_patch(brown,pink,patch:blue)"]),  # a cube sent to a patch by an arrow
+])
+def test_letter_u_and_arrows_to_patches(text, expected):
+    assert meaning(parse(text)) == expected

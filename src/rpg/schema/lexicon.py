@@ -73,7 +73,7 @@ steering corrects an edit's words with this table before reading it)."""
 ABBREVIATIONS: dict[str, str] = {
     "btwn": "between", "betw": "between", "nxt": "next", "grn": "green", "ylw": "yellow", "yllw": "yellow",
     "brwn": "brown", "brn": "brown", "wht": "white", "blck": "black", "pnk": "pink", "prpl": "purple", "orng": "orange",
-    "gry": "gray", "blu": "blue", "u": "you", "cn": "can", "thx": "thanks", "thnx": "thanks", "abv": "above",
+    "gry": "gray", "blu": "blue", "cn": "can", "thx": "thanks", "thnx": "thanks", "abv": "above",
     "frnt": "front", "lft": "left", "rght": "right", "ctr": "center", "cntr": "center", "shall": "must",
 }
 """Abbreviations of texting and of specifications ("btwn", "grn", "ylw"; "shall" of a
@@ -91,6 +91,9 @@ between black & white blks")."""
 TEXTED_TO_RE = re.compile(r"(?i)\b(move|moved|put|go|goes|slide|push|bring|it|cube|block|one)\s+2\s+(?=the\b)"
                           r"|\b(next|nxt|close|closer)\s+2\s+(?=\S)")
 """"2" for "to" in texting ("move the green cube 2 the back", "nxt 2 the 1 cube"): read as "to"."""
+
+TEXTED_YOU_RE = re.compile(r"(?<![\w'])u(?![\w'])")
+"""Texting's lower-case "u" for "you" ("can u build ..."); a capital U is a letter cube."""
 
 SYNONYMS: dict[str, str] = {
     "brick": "block", "bricks": "blocks", "ground": "table", "floor": "table", "tabletop": "table",
@@ -830,7 +833,7 @@ CHAT_TURN_RES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"\[\s*\d{1,2}:\d{2}(?::\d{2})?(?:\s*[ap]\.?m\.?)?\s*\]\s*"), ". "),  # "[10:32] alice: ...": a turn begins
     (re.compile(r"<[a-z][\w.\-]{0,20}>\s*"), ". "),  # "<dana> can u build ..."
     (re.compile(r"(?:^|(?<=[.!?]\s))(?:me|them|you|us|user|assistant|bot|robot|[a-z]+bot)\s*:\s*$"), ""),  # a turn with no words left
-    (re.compile(r"(?:^|(?<=[.!?]\s))[a-z][\w.\-]{0,20}>\s+"), ""),  # "alice> blue cube in front of ..."
+    (re.compile(r"(?:^|(?<=[.!?]\s))[a-z][\w.\-]{0,20}(?<!-)>\s+"), ""),  # "alice> blue cube in front of ..."
 )
 """A chat transcript's timestamps and speaker tags ("[10:32] alice: ...", "<dana> ...",
 "alice> ..."): each turn read as a sentence, its speaker's name then dropped as a label
@@ -960,6 +963,9 @@ goal; the numbers are dropped."""
 ARROW_RE = re.compile(r"\b(block|cube|brick)\s*(?:->|\u2192|=>)\s*(?:the\s+)?(?=(?:front|back|rear|left|right|center|centre|middle"
                       r"|far|near)\b)")
 """A cube sent to a place with an arrow ("blue cube -> front left corner"): read as "in the"."""
+
+ARROW_PATCH_RE = re.compile(rf"\b({COLOR_RE})(?:\s+(?:block|cube|brick))?\s*(?:->|\u2192|=>)\s*(?:the\s+)?(?=(?:{COLOR_RE})\s+(?:goal\s+)?patch\b)")
+"""A cube sent to a patch with an arrow ("pink -> blue patch"): the cube on that patch."""
 
 
 

@@ -510,6 +510,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         original = pattern.sub("", original).strip()
     original = lexicon.FILLER_RE.sub("", original).strip()
     original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", original)  # texting's "2" for "to"
+    original = lexicon.TEXTED_YOU_RE.sub("you", original)  # "can u build ...": texting's "u"
     original = apply_corrections(original)  # "..., sorry, the pink patch": the correction wins
     original = verb_final(original)  # "The 4 cube, the 2 cube's top on, stacking please.": the verb said first
     original = lexicon.LABELS_AND_NOUN_RE.sub(r"\1 \2 \4 and the \3 \4", original)  # "the 1 & 9 cubes"
@@ -583,6 +584,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.PURPOSE_RE.sub("", text)
     text = lexicon.STEP_MARKER_RE.sub("", text)
     text = lexicon.ARROW_RE.sub(r"\1 in the ", text)
+    text = lexicon.ARROW_PATCH_RE.sub(r"put the \1 cube on the ", text)
     spelled = {w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)}  # "spell BOOK": a word, not a book
     refused = [(kind, ws, why) for kind, ws, why in _inexpressible(text)
                if not all(w in spelled for w in ws)]  # refused below, with what the unknown words say as well
