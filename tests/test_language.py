@@ -2383,3 +2383,32 @@ def test_a_scattered_start_is_every_tasks_start():
 ])
 def test_letter_u_and_arrows_to_patches(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a paper's, a code comment's and an exam's framing (stranger9)
+    ("We evaluate a tower-building task in which the policy must build a four-block tower of alternating red and blue "
+     "cubes, with red at the base.", ["stack(red,blue,red,blue)"]),
+    ('"""Place the letter cubes so they spell DOG when read from left to right."""',
+     ["line[left_to_right](D,O,G)", "reads(D,O,G;direction=left_to_right,face=up,text=DOG)"]),
+    ("# check: brown cube is left of green cube  (see test_relations.py)", ["left_of(brown,green)"]),
+    ('def build_tower():  """Build a tower: black at the base, brown in the middle, grey on top."""', ["stack(black,brown,gray)"]),
+    ("# NOTE: digit cubes 4 2 1 3 must end up sorted ascending, left to right", ["line[left_to_right](1,2,3,4)"]),
+    ("Episode success: the pink cube is placed within the front-left quadrant of the workspace.", ["in_region(pink,front_left)"]),
+    ("In this task the agent must place the brown cube behind the yellow cube. Success requires no particular orientation.",
+     ["behind(brown,yellow)"]),
+    ("Compared with the first picture, the pink cube now sits between the two brown cubes.", ["between(pink;brown,brown)"]),
+    ("Q3. (4 points) Write a plan so that the blue cube ends on the green patch.", ["on_patch(blue,patch:green)"]),
+])
+def test_more_framings_of_a_goal(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "a row that ends with red",  # had compiled to a line of four red cubes
+    "a row of red, blue and green that ends with red",  # had compiled to an unordered line
+    "a line from left to right starting with black and ending with white, grey in the middle",  # black had been dropped
+])
+def test_a_cube_given_an_end_of_a_sequence_the_goal_does_not_order_is_refused(text):
+    with pytest.raises(ParseError, match="place at one end"):
+        parse(text)

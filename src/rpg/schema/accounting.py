@@ -118,7 +118,7 @@ corner mention are checked there, and :data:`NOT_A_PLACE_RE`'s uses are no place
 ``place word`` mention, consumed only by a part of the goal of its kind
 (:func:`_carries_place_word`): "LINE front edge: red, red, red" read as a line anywhere is refused."""
 
-NOT_A_PLACE_RE = re.compile(r"\bends?\s+up\b|\bright\s+(?=(?:next|beside|by|on|onto|in|into|at|up|there|here|behind|against|"
+NOT_A_PLACE_RE = re.compile(r"\bends?\s+(?:up\b|(?=(?:on|in|at|next|beside|behind|under|to)\b))|\bright\s+(?=(?:next|beside|by|on|onto|in|into|at|up|there|here|behind|against|"
                             r"under|underneath|below|above|over|between|away|now|atop|alongside|in\s+front)\b|@)"
                             r"|\ball\s+right\b|\bback\s+(?=(?:on|onto|to|into|in|where|down|up|together)\b)"
                             r"|\b(?:put|place|move|set|bring|take|stack)\s+(?:it|them)\s+back\b"
@@ -173,6 +173,11 @@ COLOR_LIST_RE = re.compile(rf"\b(?:{COLOR_RE})(?:\s*(?:,\s*(?:and\s+)?(?:then\s+
                            rf"(?:{COLOR_RE})\b(?!\s+(?:patch|pad|mat|tile)))+")
 """A list of colours with nothing but separators between them ("white, white, then black, black"):
 each colour said is one cube, so the task must have at least as many of each."""
+
+
+END_ROLE_SAID_RE = re.compile(rf"\b(?:start|begin|end|finish)(?:s|ing|ed)?\s+with\s+(?:the\s+|a\s+|an\s+)?(?P<c>{COLOR_RE})\b")
+"""A cube given the first or last place of a sequence ("ends with red", "starting with the blue
+cube"): some order of the goal must hold that cube."""
 
 
 class UnaccountedMention(BadInput):
@@ -629,12 +634,22 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     ParseError to raise; None when every label, colour, count, patch, place and relation is in it."""
     labels = "".join(a.label or "" for a in schema.assets)
     compass = {m.group(1) for m in COMPASS_CORNER_RE.finditer(f.original.lower())}
-    caps = [w for w in re.findall(r"\b[A-Z]{2,}\b", f.original)
+    caps = [w for w in re.findall(r"\b[A-Z]{2,}\b(?!\s*(?:\([^)]*\))?\s*:)", f.original)  # not a label: "NOTE:", "TODO(x):"
             if w.lower() not in VOCAB and w.lower() not in COLORS and not set(w) <= set(labels)
             and w.lower() not in compass]
     if caps:
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {caps[0]!r} has no place in "
                           "that task. Rephrase (e.g. \"spell the word ...\"), or use --model")
+    cubes_of = {a.color: [] for a in schema.assets}
+    for a in schema.assets:
+        cubes_of[a.color].append(a.name)
+    ordered = {n for p in schema.goal_predicate().walk() for kind, c in p.constraints() if kind == "order"
+               for pair in c.get("pairs", ()) for n in pair}
+    for m in END_ROLE_SAID_RE.finditer(f.text):  # "a row of red, blue and green that ends with red": which end is red?
+        if not set(cubes_of.get(canon_color(m.group("c")), ())) & ordered:
+            return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group(0)}' gives a cube a "
+                              "place at one end and that task orders none of it (say the whole order, e.g. \"from left to "
+                              "right: blue, green, red\"), or use --model")
     material = MATERIAL_SAID_RE.search(f.text)  # "put 2 letter cubes on the red patch"
     if material and not labels:  # "put 2 letter cubes on the red patch" read as two coloured cubes
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{material.group(0)}' names "

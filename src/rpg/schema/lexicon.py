@@ -102,7 +102,7 @@ SYNONYMS: dict[str, str] = {
     "subsequently": "then", "organize": "arrange", "organise": "arrange", "organized": "arranged",
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
     "uppermost": "topmost", "lowermost": "bottommost", "upon": "on", "right-hand": "right", "left-hand": "left",
-    "midpoint": "center", "tower's": "tower", "within": "in", "inside": "in", **TYPOS, **ABBREVIATIONS,
+    "midpoint": "center", "tower's": "tower", "within": "in", "inside": "in", "quadrant": "corner", **TYPOS, **ABBREVIATIONS,
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
@@ -821,6 +821,8 @@ MARKUP_RES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"(?m)^\s*(?:#{1,6}|//|>)\s+"), ""),  # a Markdown heading's hashes, a quote's mark, a code comment's marker
     (re.compile(r"(?m)^\s*[-*+]?\s*\[[ xX]\]\s*"), ""),  # a task checkbox "- [ ] ..."
     (re.compile(r"\*\*|__|`|\"\"\"|'''"), ""),  # **bold**, __bold__, `code`, a docstring's quotes
+    (re.compile(r"(?m)^\s*def\s+\w+\s*\([^)]*\)\s*(?:->\s*[\w\[\], ]+)?:\s*"), ""),  # "def build_tower():" before its docstring
+    (re.compile(r"(?i)\s*\((?:see|cf\.?)\s+[^)]{1,40}\)"), ""),  # "(see Fig. 3)", "(see test_relations.py)": a reference
     (re.compile(r"(?<![\w*])\*(?=[^\s*])|(?<=[^\s*])\*(?![\w*])"), ""),  # *emphasis*
 )
 """Markdown markup around the words (a heading flattened onto the line of its text, "## Task
@@ -840,6 +842,17 @@ CHAT_TURN_RES: tuple[tuple[re.Pattern, str], ...] = (
 (:data:`LABEL_RE`)."""
 
 TASK_FRAME_RES: tuple[re.Pattern, ...] = (
+    # "We evaluate a tower-building task in which the policy must ...": the task it names follows
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:we\s+(?:evaluate|consider|study|use|define|propose)|consider|this\s+is)\s+an?\s+"
+               r"(?:[\w-]+\s+){0,3}?(?:task|benchmark|environment|setting)\s+(?:in\s+which|where)\s+"),
+    # "Write a plan so that ...", "Compared with the first picture, ...": the goal follows
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:write|give|find|produce)\s+(?:a|the)\s+(?:plan|program|policy|sequence\s+of\s+(?:actions|moves))"
+               r"\s+(?:so\s+that|such\s+that|in\s+which|where)\s+"),
+    re.compile(r"(?:^|(?<=[.!?;:]\s))compared\s+(?:with|to)\s+the\s+(?:first|previous|initial|before|starting)\s+(?:image|picture|frame"
+               r"|photo|scene|state)\s*,\s*"),
+    # "Success requires no particular orientation.": no goal judges a cube's yaw unless it says so
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:success|the\s+goal|it)\s+(?:requires|needs|demands|has)\s+no\s+particular\s+"
+               r"(?:orientation|rotation|yaw|heading)\s*[.!]?\s*"),
     # "In this task(,) the agent must ...", "The policy must ...": the task follows
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:in\s+this\s+(?:task|episode|environment|setting)\s*,?\s*)?(?:the\s+)?"
                r"(?:agent|robot|policy|controller|learner)\s+(?:must|should|has\s+to|needs\s+to|is\s+(?:required|asked)\s+to)\s+"),

@@ -518,6 +518,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         raise ParseError("the instruction is empty; describe a task, e.g. \"stack the red block on the blue block\"")
     if len(original) > MAX_INSTRUCTION_CHARS:
         raise ParseError(f"the instruction has {len(original)} characters; the limit is {MAX_INSTRUCTION_CHARS}")
+    original = re.sub(r"(?i)\b(?:when|as|if)\s+(read|viewed|seen)\s+(?=from\b|left|right|top|bottom)", r"\1 ", original)  # "when read from left"
     # "so that they read 1 2 3", "reads A, B, C": the labels read as one word ("read 123")
     if not SORT_WORD_RE.search(original):  # "... read A, B, C, D in alphabetical order": a sort, read as one
         original = re.sub(r"\b((?:read|spell|show)(?:s|ing)?)\s+((?:[A-Z0-9](?:\s*,\s*(?:and\s+)?|\s+and\s+|\s*-\s*|\s+))+[A-Z0-9])"
@@ -1028,6 +1029,8 @@ def explicit_labels(f: Features) -> list[str]:
     m = m if m and "," in m.group(2) else None  # "1, 2, 3 and 4", "A, B, and C"; "A and B and C" is the next rule's
     if not m and f.has("letter", "letters", "number", "numbers", "digit", "digits", "label", "labels", "faces"):
         m = re.search(r"\b([A-Z0-9])((?:(?:\s*,\s*|\s+and\s+|\s*,\s*and\s+)[A-Z0-9]){1,})\b", f.original)
+    if not m and f.has("letter", "letters", "number", "numbers", "digit", "digits", "label", "labels"):
+        m = re.search(r"(?<![\w-])([A-Z0-9])((?:\s+[A-Z0-9]){2,})(?![\w-])", f.original)  # "digit cubes 4 2 1 3"
     if m:
         return [m.group(1)] + re.findall(r"[A-Z0-9]", m.group(2))
     r = re.search(r"\b([A-Z]|\d)\s+(?:down\s+|up\s+)?(?:to|through|thru)\s+([A-Z]|\d)\b", f.original)
