@@ -2412,3 +2412,19 @@ def test_more_framings_of_a_goal(text, expected):
 def test_a_cube_given_an_end_of_a_sequence_the_goal_does_not_order_is_refused(text):
     with pytest.raises(ParseError, match="place at one end"):
         parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a sort asked of listed labels (stranger10): the listed order had been kept, silently
+    ("Sort the digit cubes 4, 9 and 2 from front to back, smallest in front.", ["line[front_to_back](2,4,9)"]),
+    ("Sort the digit cubes 4, 9 and 2 from left to right", ["line[left_to_right](2,4,9)"]),
+    ("Stack the cubes labelled 7, 3 and 5 in ascending order, smallest at the bottom.", ["stack(3,5,7)"]),
+    ("Stack the digit cubes 7, 3 and 5 in descending order", ["stack(7,5,3)"]),
+    ("Arrange the letter cubes A, B, C, D in reverse alphabetical order from left to right", ["line[left_to_right](D,C,B,A)"]),
+    # a wall's layers said by colour and its width per layer: its bottom cube alone had been blue, the rest invented
+    ("The robot should build a two-layer wall with blue on the bottom and green on the top, three cubes per layer, at the back "
+     "of the table.", ["wall(blue,blue,blue|green,green,green)@back"]),
+    ("a wall of two layers, three cubes each, blue at the bottom and green on top", ["wall(blue,blue,blue|green,green,green)"]),
+])
+def test_sorted_labels_and_a_walls_layers_by_colour(text, expected):
+    assert meaning(parse(text)) == expected

@@ -925,6 +925,18 @@ LEGAL_RES: tuple[tuple[re.Pattern, str], ...] = (
 each rewritten as plain words."""
 
 
+WALL_LAYER_ROLE_RE = re.compile(rf"(?<!\d\s)(?<![a-z]\s\d\s)\b(?P<c>{COLOR_RE})\s+(?:cubes?\s+|blocks?\s+|ones?\s+)?(?:on|at|in|for|along)\s+the\s+"
+                                r"(?P<where>bottom|top|middle)(?:\s+(?:layer|row|level|tier|course))?\b")
+"""In a wall, a colour said at its bottom or top ("with blue on the bottom and green on the top"):
+that whole layer's colour (read as "bottom layer blue"); the bottom cube alone had been made blue
+and the rest given colours nobody said."""
+
+PER_LAYER_RE = re.compile(rf"\b(\d+|{COUNT_WORD_RE})\s+(?:cubes?|blocks?)\s+(?:per|in\s+each|on\s+each|for\s+each|a)\s+"
+                          r"(?:layer|row|level|tier|course)\b"
+                          rf"|(?<=layers,\s)(\d+|{COUNT_WORD_RE})\s+(?:cubes?|blocks?)\s+each\b")
+"""A wall's width said per layer ("three cubes per layer"): read as "N wide"."""
+
+
 LABEL_RE = re.compile(r"(?:^|(?<=[.!?;|]\s))\s*(?P<label>[a-z][a-z'\- ]{0,30}?(?:\s+#?\d+)?(?:\s*\([a-z'\- ]{1,30}\))?)\s*:(?:\s+|$)")
 """A label before a colon, at the start of the text or of a sentence ("Obj: red on blue.",
 "Checklist: ...", "Objective (bonus stage): ..."): dropped by

@@ -425,6 +425,35 @@ def verb_final(text: str) -> str:
     return f"{verb} {' and '.join(things)} {places[0]}."
 
 
+SORT_ASKED_RE = re.compile(r"(?i)\b(?:sort(?:s|ed|ing)?|ascending|descending|increasing|decreasing|numerical(?:ly)?|alphabetical(?:ly)?"
+                           r"|smallest|largest|lowest|highest)\b")
+"""Words that ask for labelled cubes in sorted order ("Sort the digit cubes 4, 9 and 2", "in
+ascending order", "smallest at the bottom")."""
+
+_DESC_RE = re.compile(r"(?i)\b(?:descending|decreasing|reverse(?:d)?|largest\s+(?:first|at\s+the\s+(?:bottom|front|left|start)|on\s+the"
+                      r"\s+left|in\s+front)|smallest\s+(?:last|at\s+the\s+(?:top|back|right|end)|on\s+the\s+right|on\s+top|in\s+the\s+back)"
+                      r"|highest\s+(?:first|at\s+the\s+bottom|on\s+the\s+left)|lowest\s+(?:last|on\s+top|at\s+the\s+top|on\s+the\s+right))\b")
+
+
+def sorted_labels(text: str) -> str:
+    """``text`` with a listed run of labels put in the sorted order its words ask ("Stack the digit
+    cubes 7, 3 and 5 in ascending order" -> "... 3, 5 and 7 ..."; descending, or the smallest
+    said at the far end, reversed): the readers read a list first to last (bottom to top, left to
+    right, front to back), and a sort word alone had left the listed order, silently.  A text
+    that spells or reads a word is left as it is (the word gives the order)."""
+    if not SORT_ASKED_RE.search(text) or re.search(r"(?i)\b(?:spell\w*|reads?|word|then)\b", text):
+        return text
+    m = re.search(r"(?<![\w-])([A-Z]|\d)((?:\s*,\s*(?:and\s+)?|\s+and\s+|\s+)(?:[A-Z]|\d)){2,}(?![\w-])", text)
+    if m is None:
+        return text
+    labels = re.findall(r"[A-Z0-9]", m.group(0))
+    if len({lab.isdigit() for lab in labels}) != 1:
+        return text  # letters and digits mixed: no one key
+    ordered = sorted(labels, key=lambda lab: (int(lab) if lab.isdigit() else lab), reverse=bool(_DESC_RE.search(text)))
+    seps = re.findall(r"(?:\s*,\s*(?:and\s+)?|\s+and\s+|\s+)(?=[A-Z0-9])", m.group(0))
+    return text[:m.start()] + ordered[0] + "".join(s + lab for s, lab in zip(seps, ordered[1:], strict=True)) + text[m.end():]
+
+
 def _unshouted(text: str) -> str:
     """``text`` with its words lower-cased when it is shouted (:data:`lexicon.SHOUTING_MIN_SHARE`):
     single letters stay letter cubes, and a word after "spell", "read" or "word" stays spelled."""
@@ -513,6 +542,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     original = lexicon.TEXTED_YOU_RE.sub("you", original)  # "can u build ...": texting's "u"
     original = apply_corrections(original)  # "..., sorry, the pink patch": the correction wins
     original = verb_final(original)  # "The 4 cube, the 2 cube's top on, stacking please.": the verb said first
+    original = sorted_labels(original)  # "Stack the digit cubes 7, 3 and 5 in ascending order": listed sorted
     original = lexicon.LABELS_AND_NOUN_RE.sub(r"\1 \2 \4 and the \3 \4", original)  # "the 1 & 9 cubes"
     if not original:
         raise ParseError("the instruction is empty; describe a task, e.g. \"stack the red block on the blue block\"")
@@ -614,6 +644,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(rf"(?:^|{_BARE_OBJECT_BEFORE})(?=(?:{COLOR_RE})\s+(?:block|cube|brick|box)\b)", "the ", text)
     text = re.sub(r"\b(at|to|in|on|of|near)\s+(?=(?:front|back|rear|left|right)(?:\s+(?:left|right))?\s+(?:side|corner|edge|half|part|end)\b"
                   r"|(?:middle|center|centre)\s+of\b|table\b|(?:middle|center|centre)\s*(?:[.!,;]|$))", r"\1 the ", text)
+    if re.search(r"\bwalls?\b", text):  # "a two-layer wall with blue on the bottom, three cubes per layer"
+        text = lexicon.WALL_LAYER_ROLE_RE.sub(lambda m: f"{m.group('where')} layer {m.group('c')}", text)
+        text = lexicon.PER_LAYER_RE.sub(lambda m: f"{NUMBER_WORDS.get(m.group(1) or m.group(2), m.group(1) or m.group(2))} wide", text)
     # "the cube the blue on the cube the red": a colour after its noun and an article (Italian, Arabic)
     text = re.sub(rf"\bthe\s+(cubes?|blocks?|box(?:es)?|patch(?:es)?)\s+the\s+({COLOR_RE})\b"
                   rf"(?!\s+(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?)\b)", r"the \2 \1", text)
