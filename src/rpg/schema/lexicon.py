@@ -925,7 +925,7 @@ LEGAL_RES: tuple[tuple[re.Pattern, str], ...] = (
 each rewritten as plain words."""
 
 
-WALL_LAYER_ROLE_RE = re.compile(rf"(?<!\d\s)(?<![a-z]\s\d\s)\b(?P<c>{COLOR_RE})\s+(?:cubes?\s+|blocks?\s+|ones?\s+)?(?:on|at|in|for|along)\s+the\s+"
+WALL_LAYER_ROLE_RE = re.compile(rf"(?<!\d\s)(?<![a-z]\s\d\s)\b(?P<c>{COLOR_RE})\s+(?:on|at|in|for|along)\s+the\s+"
                                 r"(?P<where>bottom|top|middle)(?:\s+(?:layer|row|level|tier|course))?\b")
 """In a wall, a colour said at its bottom or top ("with blue on the bottom and green on the top"):
 that whole layer's colour (read as "bottom layer blue"); the bottom cube alone had been made blue
