@@ -203,7 +203,7 @@ def parse(instruction: str) -> TaskSchema:
                          "is checked at the end of the episode; add it (e.g. \"... Put the red cube on the table.\")")
     if scene is not None:
         try:
-            return initial.attach(initial.on_table_goal(scene, instruction) or parse(scene.goal), scene, instruction)
+            return initial.attach(initial.on_table_goal(scene) or parse(scene.goal), scene, instruction)
         except BadInput:
             pass  # read as written (and refused for its starting-state words)
     f = features(instruction)

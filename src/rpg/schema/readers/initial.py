@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 from rpg.errors import BadInput
 from rpg.schema.builder import Builder
-from rpg.schema.lexicon import COLOR_RE
+from rpg.schema.lexicon import COLOR_RE, MARKUP_RES
 from rpg.schema.model import TaskSchema
 from rpg.schema.reading import Inexpressible, canon_color, task_slug
 
@@ -160,9 +160,6 @@ def _merged(stacks: list[tuple[str, ...]]) -> list[tuple[str, ...]] | None:
 def split(instruction: str) -> InitialScene | None:
     """The initial scene and the goal of ``instruction``, or None when it states no start this
     module reads (see the module docstring)."""
-    sentences = [s for s in re.split(r"(?<=[.;!?])\s+|\s*(?=\b(?:[Gg]oal|[Tt]arget)\s*:)", instruction.strip()) if s.strip()]
-    from rpg.schema.lexicon import MARKUP_RES
-
     for pattern, written in MARKUP_RES:
         instruction = pattern.sub(written, instruction)
     instruction = re.sub(r"^\s*[A-Za-z][\w\-]*(?:\s+[\w\-]+){0,3}?\s*(?:\([^)]{0,30}\))?\s*:\s*(?=\S)(?=.*\b(?:starts|initially)\b)", "",
@@ -176,6 +173,7 @@ def split(instruction: str) -> InitialScene | None:
             else f"{subject} {rest}"  # "... and must end up on the table": the subject carried over
         rest = re.sub(r"(?i)^((?:then\s+)?(?:put|place|move|take|set|bring|slide|push)\s+)it\b", rf"\1{subject}", rest)  # "Put it ..."
         return InitialScene(tuple(stacks), GOAL_OPENER_RE.sub("", rest, count=1)) if stacks else None
+    sentences = [s for s in re.split(r"(?<=[.;!?])\s+|\s*(?=\b(?:[Gg]oal|[Tt]arget)\s*:)", instruction.strip()) if s.strip()]
     start, goal = [], []
     for s in sentences:
         m = START_SENTENCE_RE.match(s)
@@ -193,7 +191,7 @@ def split(instruction: str) -> InitialScene | None:
     return InitialScene(tuple(stacks), " ".join(goal).strip())
 
 
-def on_table_goal(scene: InitialScene, instruction: str) -> TaskSchema | None:
+def on_table_goal(scene: InitialScene) -> TaskSchema | None:
     """The task whose goal only sends a cube the start stacks to the table (:data:`ON_TABLE_GOAL_RE`);
     None when the goal is not of that form or the cube starts on the table."""
     from rpg.domain.predicates import OnTable

@@ -89,7 +89,7 @@ def recognize_spell(f: Features, b: Builder) -> bool:
         direction = "bottom_to_top" if upward else "top_to_bottom"
         b.place(stack_layout(bottom_first, C.WORKSPACE_CENTER))
         b.preds += [Stack(tuple(bottom_first)), Reads(tuple(names), word, direction, "front")]
-        b.summary.append(f"a tower whose front faces read {word!r} {direction.replace('_', ' ')}")
+        b.summary.append(f"a tower whose front faces read {word!r} from {direction.replace('_', ' ')}")
         b.primitives += ["stack"]
     else:
         direction = direction_of(f)
