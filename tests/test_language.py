@@ -2428,3 +2428,18 @@ def test_a_cube_given_an_end_of_a_sequence_the_goal_does_not_order_is_refused(te
 ])
 def test_sorted_labels_and_a_walls_layers_by_colour(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a user story, an email and a request around the task (stranger10)
+    ("As a tester, I want the robot to place the purple cube on the green patch, so that I can check basic placement.",
+     ["on_patch(purple,patch:green)"]),
+    ("As an evaluator I want the two pink cubes to end up next to each other, so the adjacency check gets exercised.",
+     ["next_to(pink,pink)"]),
+    ("Hi Sam, for tomorrow's run could you set up the task where the black cube goes on top of the white cube? Thanks, Priya",
+     ["stack(white,black)"]),
+    ("Dear Ana, please make the task with all four yellow cubes in a row along the back. Best, Marek",
+     ["line(yellow,yellow,yellow,yellow)@back"]),
+])
+def test_a_user_story_an_email_and_a_request_around_the_task(text, expected):
+    assert meaning(parse(text)) == expected

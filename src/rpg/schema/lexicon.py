@@ -845,6 +845,13 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
     # "We evaluate a tower-building task in which the policy must ...": the task it names follows
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:we\s+(?:evaluate|consider|study|use|define|propose)|consider|this\s+is)\s+an?\s+"
                r"(?:[\w-]+\s+){0,3}?(?:task|benchmark|environment|setting)\s+(?:in\s+which|where)\s+"),
+    # a user story: "As a tester, I want the robot to place ..., so that I can check ...": the want is the task
+    re.compile(r"(?:^|(?<=[.!?;:]\s))as\s+an?\s+[a-z][a-z\s-]{0,30}?,?\s+(?:i|we)\s+(?:want|need|would\s+like)\s+"
+               r"(?:(?:the\s+)?(?:robot|agent|policy|arm)\s+to\s+|(?=(?:a|an|the)\s))"),
+    re.compile(r"\s*,?\s+so\s+(?:that\s+)?(?:i|we|the\s+\w+(?:\s+check)?)\s+(?:can|could|will|gets?)\s+[^.;!?]*(?=[.;!?]?\s*$)"),
+    # "could you set up the task where the black cube goes on ...": the task it describes
+    re.compile(r"\b(?:set\s+up|make|create|add|build)\s+(?:the|a|an)\s+(?:task|eval(?:uation)?|episode|benchmark\s+task)\s+"
+               r"(?:where|in\s+which|with|so\s+that)\s+"),
     # "Write a plan so that ...", "Compared with the first picture, ...": the goal follows
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:write|give|find|produce)\s+(?:a|the)\s+(?:plan|program|policy|sequence\s+of\s+(?:actions|moves))"
                r"\s+(?:so\s+that|such\s+that|in\s+which|where)\s+"),
@@ -937,6 +944,15 @@ PER_LAYER_RE = re.compile(rf"\b(\d+|{COUNT_WORD_RE})\s+(?:cubes?|blocks?)\s+(?:p
 """A wall's width said per layer ("three cubes per layer"): read as "N wide"."""
 
 
+LETTER_FRAME_RES: tuple[re.Pattern, ...] = (
+    re.compile(r"^\s*(?i:hi|hello|hey|dear)\s+(?:[A-Z][a-z]+|all|team|everyone)\s*[,!:.-]\s*"),  # "Hi Sam, ...", "Dear Ana, ..."
+    re.compile(r"(?<=[.!?])\s*(?i:thanks|thank\s+you|cheers|best|regards|best\s+regards|thx)\s*,\s*(?:[A-Z][a-z]*\.?|[A-Z]\.)\s*$"),
+)
+"""An email's or a message's greeting and signature around the task ("Hi Sam, ... Thanks,
+Priya"): (greeting, signature), removed when the signature is said (a greeting alone may
+address the robot), case kept (a name is capitalised)."""
+
+
 LABEL_RE = re.compile(r"(?:^|(?<=[.!?;|]\s))\s*(?P<label>[a-z][a-z'\- ]{0,30}?(?:\s+#?\d+)?(?:\s*\([a-z'\- ]{1,30}\))?)\s*:(?:\s+|$)")
 """A label before a colon, at the start of the text or of a sentence ("Obj: red on blue.",
 "Checklist: ...", "Objective (bonus stage): ..."): dropped by
@@ -955,7 +971,7 @@ SOMEONE_WANTS_RE = re.compile(
 """Who asks for the task ("my supervisor wants the white cube ..."): read as "i want" (the goal is
 the same whoever asks; :func:`rpg.schema.reading.normalize_words` lists ``who`` as dropped)."""
 
-_PURPOSE = (r"(?:the|my|our|this|a)\s+(?:next\s+|first\s+|upcoming\s+)?(?P<what>run|demo|trial|experiment|test|eval(?:uation)?"
+_PURPOSE = (r"(?:the|my|our|this|a|tomorrow's|today's|tonight's|friday's|monday's)\s+(?:next\s+|first\s+|upcoming\s+)?(?P<what>run|demo|trial|experiment|test|eval(?:uation)?"
             r"|episode|paper|video|benchmark|session)")
 """What a task is for ("the next run", "my demo"): :data:`PREAMBLE_RE` (said first) and :data:`PURPOSE_RE` (said last)."""
 
@@ -969,7 +985,7 @@ PREAMBLE_RE = re.compile(
     r"|(?:i|we)\s+(?:was|were|am|are)\s+(?:just\s+)?thinking|(?:i'?m|we'?re)\s+(?:just\s+)?thinking)\s*[,:.;\u2014\u2013-]*\s*"
     r"|(?:(?:ok(?:ay)?|so|alright|right|well)\s*,?\s+)*let(?:'s|\s+us)\s+(?:do|try|make|build)\s+something"
     r"(?:\s+(?:fun|cool|new|different|simple|easy|nice|interesting|quick))?\s*[:,.!;\u2014\u2013-]\s*"
-    r"|for\s+" + _PURPOSE + r"\s*[:,\u2014\u2013-]\s*"
+    r"|for\s+" + _PURPOSE + r"(?:\s*[:,\u2014\u2013-]\s*|\s+(?=(?:could|can|would|will|please)\b))"
     r"|(?:success\s+(?:condition|criteri(?:on|a))|task\s+spec(?:ification)?|evaluation\s+task|eval\s+task|test\s+task"
     r"|(?:final|end|goal|target|desired)\s+scene)\s*(?::|\u2014|\u2013|-)\s*)")
 """Framing that names when the goal holds or heads the spec, said before it ("When the robot is
