@@ -640,13 +640,12 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     if caps:
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {caps[0]!r} has no place in "
                           "that task. Rephrase (e.g. \"spell the word ...\"), or use --model")
-    cubes_of = {a.color: [] for a in schema.assets}
-    for a in schema.assets:
-        cubes_of[a.color].append(a.name)
+    cubes = [a for a in schema.assets if a.kind != "goal_patch"]
+    have = Counter(a.color for a in cubes)
     ordered = {n for p in schema.goal_predicate().walk() for kind, c in p.constraints() if kind == "order"
                for pair in c.get("pairs", ()) for n in pair}
     for m in END_ROLE_SAID_RE.finditer(f.text):  # "a row of red, blue and green that ends with red": which end is red?
-        if not set(cubes_of.get(canon_color(m.group("c")), ())) & ordered:
+        if not {a.name for a in cubes if a.color == canon_color(m.group("c"))} & ordered:
             return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group(0)}' gives a cube a "
                               "place at one end and that task orders none of it (say the whole order, e.g. \"from left to "
                               "right: blue, green, red\"), or use --model")
@@ -666,8 +665,7 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the cube labelled "
                           f"{sorted(named_labels - set(labels))[0]!r} has no place in that task. Rephrase, or use --model")
     spelled = set("".join(re.findall(r"\b[A-Z]{2,}\b|(?<=')[A-Za-z0-9]{2,}(?=')", f.original)).upper())
-    cubes = [a for a in schema.assets if a.kind != "goal_patch"]
-    sizes = {len(cubes)} | {n for n in Counter(a.color for a in cubes).values() if n > 1} | {
+    sizes = {len(cubes)} | {n for n in have.values() if n > 1} | {
         n for p in schema.goal_predicate().walk() for n in p.counts()} | {len(st) for st in schema.initial_state.structures}
     lone = [m.group(1) for m in LONE_DIGIT_RE.finditer(f.original) if m.group(1) not in labels and int(m.group(1)) not in sizes]
     if lone:  # "line 1 2 3" read as a line of four coloured cubes: a digit no cube and no count of the task carries
@@ -683,8 +681,8 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     stacked = _stacked_on_another(schema)
     for m in ON_TABLE_RE.finditer(f.text):  # "move the green cube onto the table": not stacked on another
         color = canon_color(m.group(1) or m.group(2) or m.group(3))
-        cubes = [a.name for a in schema.assets if a.kind != "goal_patch" and a.color == color]
-        if cubes and all(n in stacked for n in cubes):
+        named = [a.name for a in cubes if a.color == color]
+        if named and all(n in stacked for n in named):
             return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group(0)}' puts the "
                               f"{color} cube on the table and that task stacks it on another. Rephrase, or use --model")
     rel = r"(?:on(?:\s+top\s+of)?|onto|under|behind|(?:to\s+the\s+)?(?:left|right)\s+of|in\s+front\s+of|next\s+to|beside|near|far\s+from|above|below)"
@@ -693,13 +691,11 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
                                                                                                     f.text[:run.start()]):
             continue  # "blue on red, red on yellow": the pairs of a chain of relations
         listed = Counter(canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", run.group(0)))
-        have = Counter(a.color for a in schema.assets if a.kind != "goal_patch")
         short = sorted(c for c, n in listed.items() if have[c] < n)
         if short:
             return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{run.group(0)}' lists "
                               f"{listed[short[0]]} {short[0]} cubes and that task has {have[short[0]]}. Rephrase, or use --model")
     said = Counter(canon_color(m.group(1)) for m in re.finditer(rf"\b(?:a|an|another)\s+({COLOR_RE})\s+(?:block|cube|brick|box)\b", f.text))
-    have = Counter(a.color for a in schema.assets if a.kind != "goal_patch")
     short = sorted(c for c, n in said.items() if have[c] < n)
     if short:  # "place a pink cube ..., then a pink cube on the cyan one": each "a pink cube" is one more
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but it says 'a {short[0]} "

@@ -42,6 +42,20 @@ class Builder:
         self.repairs: list = []
         self._names: Counter = Counter()
 
+    def adopt(self, head: TaskSchema) -> None:
+        """Take ``head``'s task into this empty builder (its cubes and patches, goal poses, goal
+        parts, rho_0's stacks and orientations, reasoning and primitives), to compose more onto it:
+        a part read alone, then placed relative to a cube (:mod:`rpg.schema.readers.places`) or
+        given a start (:mod:`rpg.schema.readers.initial`)."""
+        for a in head.assets:
+            self._names[a.name] += 1
+            self.assets.append(a.model_copy())
+        self.place({n: p.pose() for n, p in head.goal_layout.items()})
+        self.preds = list(head.goal.conjuncts())
+        self.structures = [list(x) for x in head.initial_state.structures]
+        self.orientations = dict(head.initial_state.orientations)
+        self.reasoning, self.primitives = head.reasoning, list(head.primitives)
+
     # -- objects ---------------------------------------------------------------
     def _unique(self, base: str) -> str:
         base = re.sub(r"[^a-z0-9_]", "_", base.lower())

@@ -944,13 +944,14 @@ PER_LAYER_RE = re.compile(rf"\b(\d+|{COUNT_WORD_RE})\s+(?:cubes?|blocks?)\s+(?:p
 """A wall's width said per layer ("three cubes per layer"): read as "N wide"."""
 
 
-LETTER_FRAME_RES: tuple[re.Pattern, ...] = (
-    re.compile(r"^\s*(?i:hi|hello|hey|dear)\s+(?:[A-Z][a-z]+|all|team|everyone)\s*[,!:.-]\s*"),  # "Hi Sam, ...", "Dear Ana, ..."
-    re.compile(r"(?<=[.!?])\s*(?i:thanks|thank\s+you|cheers|best|regards|best\s+regards|thx)\s*,\s*(?:[A-Z][a-z]*\.?|[A-Z]\.)\s*$"),
-)
-"""An email's or a message's greeting and signature around the task ("Hi Sam, ... Thanks,
-Priya"): (greeting, signature), removed when the signature is said (a greeting alone may
-address the robot), case kept (a name is capitalised)."""
+LETTER_GREETING_RE = re.compile(r"^\s*(?i:hi|hello|hey|dear)\s+(?:[A-Z][a-z]+|all|team|everyone)\s*[,!:.-]\s*")
+"""A message's greeting before the task ("Hi Sam, ...", "Dear Ana, ..."): removed when the message
+is signed (:data:`LETTER_SIGNATURE_RE`; a greeting alone may address the robot), case kept (a name is
+capitalised)."""
+
+LETTER_SIGNATURE_RE = re.compile(r"(?<=[.!?])\s*(?i:thanks|thank\s+you|cheers|best|regards|best\s+regards|thx)\s*,\s*(?:[A-Z][a-z]*\.?|[A-Z]\.)\s*$")
+"""A message's signature after the task ("... Thanks, Priya", "Best, Marek"): removed, with the
+greeting."""
 
 
 LABEL_RE = re.compile(r"(?:^|(?<=[.!?;|]\s))\s*(?P<label>[a-z][a-z'\- ]{0,30}?(?:\s+#?\d+)?(?:\s*\([a-z'\- ]{1,30}\))?)\s*:(?:\s+|$)")

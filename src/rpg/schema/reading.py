@@ -532,9 +532,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     for pattern, written in lexicon.MARKUP_RES:  # "the **blue** patch", "## Goal", "`red`"
         original = pattern.sub(written, original).strip()
     original = lexicon.EMOJI_RE.sub(" ", original).strip()
-    greeting, signature = lexicon.LETTER_FRAME_RES
-    if signature.search(original):  # "Hi Sam, ... Thanks, Priya": a message, its greeting and signature said
-        original = greeting.sub("", signature.sub("", original)).strip() or original
+    if lexicon.LETTER_SIGNATURE_RE.search(original):  # "Hi Sam, ... Thanks, Priya": a signed message
+        original = lexicon.LETTER_GREETING_RE.sub("", lexicon.LETTER_SIGNATURE_RE.sub("", original)).strip() or original
     original = _unshouted(original)
     for pattern, written in lexicon.LEGAL_RES:  # "the aforementioned green cube", "(hereinafter 'the Cube')"
         original = pattern.sub(written, original)

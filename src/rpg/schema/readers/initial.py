@@ -16,6 +16,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from rpg.domain.layouts import stack_layout
 from rpg.errors import BadInput
 from rpg.schema.builder import Builder
 from rpg.schema.lexicon import COLOR_RE, MARKUP_RES
@@ -204,7 +205,7 @@ def on_table_goal(scene: InitialScene) -> TaskSchema | None:
         return None  # it starts on the table: the goal would hold before anything moved
     b = Builder(scene.goal)
     cube = b.cube(color)
-    b.place({cube: _table_pose(b.unit_centers(1)[0])})
+    b.place(stack_layout([cube], b.unit_centers(1)[0]))
     b.preds.append(OnTable(cube))
     b.primitives += ["place"]
     b.summary.append(f"{cube} on the table")
@@ -220,14 +221,8 @@ def attach(head: TaskSchema, scene: InitialScene, instruction: str) -> TaskSchem
             not said).
     """
     b = Builder(instruction)
-    for a in head.assets:
-        b._names[a.name] += 1
-        b.assets.append(a.model_copy())
-    b.place({n: p.pose() for n, p in head.goal_layout.items()})
-    b.preds = list(head.goal.conjuncts())
-    b.structures, b.orientations = [list(x) for x in head.initial_state.structures], dict(head.initial_state.orientations)
-    b.reasoning, b.primitives, b.repairs = head.reasoning, list(head.primitives), list(head.repairs)
-    b.min_separation = head.initial_state.min_separation
+    b.adopt(head)
+    b.repairs, b.min_separation = list(head.repairs), head.initial_state.min_separation
     b.summary = [head.goal_summary]
     spare = iter(b.unit_centers(8, 0.1)[::-1])
     for colors in scene.stacks:
@@ -240,7 +235,7 @@ def attach(head: TaskSchema, scene: InitialScene, instruction: str) -> TaskSchem
                                f"{len(have)} {c} cubes; say which one (e.g. by a letter), or use --model")
             if not have:  # a cube only the start names: it starts there, the goal leaves it free
                 have = [b.semantic(c) if label else b.cube(c)]
-                b.place({have[0]: _table_pose(next(spare))})
+                b.place(stack_layout([have[0]], next(spare)))
             names.append(have[0])
         if any(n in s for s in b.structures for n in names):
             raise BadInput(f"\"{instruction[:80]}\": the start stacks a cube twice; say each stack once, or use --model")
@@ -259,10 +254,3 @@ def _resting_on(p, raised: set[str]) -> list:
     if type(p) is Stack and p.objects[0] in raised:
         return [On(a, b) for b, a in zip(p.objects, p.objects[1:], strict=False)]
     return [p]
-
-
-def _table_pose(xy: tuple[float, float]):
-    from rpg.domain import constants as C
-    from rpg.domain.state import Pose
-
-    return Pose((float(xy[0]), float(xy[1]), C.TABLE_TOP_Z + C.CUBE_EDGE / 2))

@@ -143,15 +143,11 @@ def recognize_structure_by_cube(f: Features, b: Builder) -> bool:
         if np.abs(xy[:, 1 - axis] - ref_xy[1 - axis]).max() > C.RELATION_MAX_OFF_AXIS - 0.02:
             return False  # a structure too wide to stand wholly on one side of one cube
         rels = [cls(a.name, "@ref") for a in cubes]
-    for a in head.assets:
-        b._names[a.name] += 1
-        b.assets.append(a.model_copy())
-    b.place({n: p.pose() for n, p in head.goal_layout.items()})
+    b.adopt(head)
     ref = b.cube(ref_color)
     b.place({ref: Pose((float(ref_xy[0]), float(ref_xy[1]), C.TABLE_TOP_Z + C.CUBE_EDGE / 2))})
-    b.preds.extend(head.goal.conjuncts() + [r.rename({"@ref": ref}) for r in rels])
-    b.structures, b.orientations = [list(x) for x in head.initial_state.structures], dict(head.initial_state.orientations)
-    b.reasoning, b.primitives = head.reasoning, list(head.primitives) + ["place"]
+    b.preds.extend(r.rename({"@ref": ref}) for r in rels)
+    b.primitives.append("place")
     b.summary = [head.goal_summary, f"{rels[0].a} {rel.removeprefix('to the ')} {ref}" if word == "next"
                  else f"every cube of it {rel.removeprefix('to the ')} {ref}"]
     return True
