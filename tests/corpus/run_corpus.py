@@ -45,6 +45,7 @@ STRANGER_SETS = {
     "stranger8": ("stranger8.yaml", "STRANGER set 8 (stranger8.yaml, development material)"),
     "stranger9": ("stranger9.yaml", "STRANGER set 9 (stranger9.yaml, development material)"),
     "stranger10": ("stranger10.yaml", "STRANGER set 10 (stranger10.yaml, development material)"),
+    "stranger11": ("stranger11.yaml", "STRANGER set 11 (stranger11.yaml, development material)"),
 }
 SPLITS = HERE / "splits.yaml"
 
