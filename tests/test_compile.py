@@ -371,6 +371,8 @@ def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     "push the red block to the right",
     "Build a horizontal row of 3 purple blocks on top of the horizontal row of 3 red blocks.",
     "Add one blue block under the red block. Then add 3 green blocks on top of red block.",
+    # a cube beside a cube on a patch: it had been laid out beside where that cube stood before the patch (3 cm off)
+    "Put a red cube on the green patch, then a purple cube next to the red block",
 ])
 def test_new_phrasings_compile_to_valid_tasks(text, tmp_path):
     r = compile_instruction(text, tmp_path)

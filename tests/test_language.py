@@ -2443,3 +2443,47 @@ def test_sorted_labels_and_a_walls_layers_by_colour(text, expected):
 ])
 def test_a_user_story_an_email_and_a_request_around_the_task(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a task's identifier before its text (stranger11): each had been refused over 'task', 'relation', 'g-'...
+    ("Task 7 (Stacking-3): the agent must build a three-cube tower with green at the bottom, white in the middle and black "
+     "on top.", ["stack(green,white,black)"]),
+    ("Relation test R-3: orange in front of the brown cube.", ["in_front_of(orange,brown)"]),
+    ("Generalisation split G-4: tower of three, colours bottom-to-top pink, cyan, pink.", ["stack(pink,cyan,pink)"]),
+    # the label's structure word, where the text names none
+    ("Task 12 (Line-Sort-Colour): red, orange, yellow, green, blue, left to right.",
+     ["line[left_to_right](red,orange,yellow,green,blue)"]),
+    ("stack-3: bottom-to-top order blue, yellow, red", ["stack(blue,yellow,red)"]),  # it had been a line
+    ("Unstack-2. init: orange on top of purple. goal: orange on the table next to purple.",
+     ["next_to(orange,purple)", "start:stack(purple,orange)"]),
+    # the start said without its subject, or as "Scene init:" (the first had put the start's stack in the goal)
+    ("Task 60 (Unstack-Relate): starts with the yellow cube on the red cube; at the end the yellow cube is behind the red "
+     "cube.", ["behind(yellow,red)", "start:stack(red,yellow)"]),
+    ("Scene init: cubes scattered. Goal: the white cube sits between the two black cubes.", ["between(white;black,black)"]),
+    # a colour or a place after its noun (Spanish): 'the cube cyan' had become a red cube
+    ("Put the cube pink in front of the cube cyan, and the cube white behind of the cube cyan.",
+     ["behind(white,cyan)", "in_front_of(pink,cyan)"]),
+    ("Please put the cube yellow on the patch blue.", ["on_patch(yellow,patch:blue)"]),
+    ("Put the cube black in the corner back right.", ["in_region(black,back_right)"]),
+])
+def test_an_identifier_label_a_start_without_subject_and_a_colour_after_its_noun(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,why", [
+    ("Time-limited stacking: red on blue.", "time-limited"),  # a label that says what the domain cannot is read, and refused
+    ("Shape-8: eight cubes forming a hollow square outline.", "hollow"),
+    ("bottom-to-top order blue, yellow, red", "could not find a task"),  # a tower's order, never a line
+])
+def test_a_label_that_says_more_than_an_identifier_is_not_dropped(text, why):
+    with pytest.raises(BadInput, match=why):
+        parse(text)
+
+
+def test_a_label_saying_any_order_leaves_the_tower_unordered():
+    """"Stack-any-order: ..." had demanded an order of the tower no word says."""
+    from rpg.domain.predicates import UnorderedStack
+
+    schema = parse("Stack-any-order: build a single tower from the red, yellow and blue cubes; order does not matter.")
+    assert [type(p) for p in schema.goal_predicate().walk() if type(p).__name__.endswith("Stack")] == [UnorderedStack]

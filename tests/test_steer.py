@@ -910,7 +910,6 @@ def test_removals_and_additions_of_cubes_among_relations(tmp_path, base, edit, w
     ("Put the red block next to the green block", "wait, can the robot even reach the green block?", "asks a question"),
     ("Put the red block next to the blue block", "remove the blue block", "no goal left"),  # every relation needs it
     ("Put the red block in the front left corner", "also a red block in the front right corner", "cannot add"),
-    ("build a tower of red, blue and green", "same blocks, but make a row", "keeps the task's 3 cubes"),
     ("stack the red block on the blue block", "same blocks, but make two towers of four", "keeps the task's 2 cubes"),
     # the colour said for the bottom stands at neither end of the kept order
     ("Make a row of red, white and blue blocks from left to right", "stack them in the same order with white at the bottom",
@@ -1100,4 +1099,20 @@ def test_each_row_of_a_wall_made_wider_is_its_width(tmp_path):
      ("modify", ["line[left_to_right](blue,yellow,red)@right"])),
 ])
 def test_edits_said_in_fewer_words(tmp_path, base, edit, expected):
+    assert _steered(tmp_path, base, edit) == [expected]
+
+
+@pytest.mark.parametrize("base,edit,expected", [
+    # a shape alone keeps the task's cubes (steer_stranger7): "as a row" had become a row of four invented cubes
+    ("Stack the green cube on the blue cube", "as a row", ("pivot", ["line(blue,green)"])),
+    ("Stack the cubes from bottom to top: yellow, purple, white", "same cubes but as a row", ("pivot", ["line(purple,white,yellow)"])),
+    # it had been refused: "make a row" had read as a new row of four cubes nobody named
+    ("build a tower of red, blue and green", "same blocks, but make a row", ("pivot", ["line(blue,green,red)"])),
+    # a cube added beside a cube on a patch stands beside it (it had been put on the patch too, or laid out 3 cm away)
+    ("Put a red cube on the green patch", "plus a purple cube next to the red one",
+     ("extend", ["next_to(purple,red)", "on_patch(red,patch:green)"])),
+    ("Put the blue cube on the red patch", "with a yellow cube right next to the blue one",
+     ("extend", ["next_to(blue,yellow)", "on_patch(blue,patch:red)"])),
+])
+def test_a_shape_alone_keeps_the_cubes_and_a_cube_beside_a_patch_cube_stands_beside_it(tmp_path, base, edit, expected):
     assert _steered(tmp_path, base, edit) == [expected]

@@ -26,6 +26,7 @@ from rpg.schema.lexicon import (
     COLOR_RE,
     COLORS,
     COMPASS_CORNER_RE,
+    INVENTORY_RE,
     MATERIAL_SAID_RE,
     OBJECT_PREPOSITION_BEFORE,
     PAIRWISE_RELATIONS,
@@ -678,6 +679,12 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     if invented:  # "the letter cubes A, B, C and D in a circle" read as a circle of six, A to F
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but no word names the cube labelled "
                           f"{invented[0]!r}. Rephrase (say how many cubes), or use --model")
+    for m in INVENTORY_RE.finditer(f.text):  # "Ingredients: 2 cubes. Method: build a tower three cubes tall."
+        for n, color in re.findall(rf"(\d+)\s+(?:({COLOR_RE})\s+)?(?:cubes?|blocks?)", m.group("groups")):
+            has = have[canon_color(color)] if color else len(cubes)
+            if int(n) != has:
+                return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group('groups')}' says the "
+                                  f"task has {n} {color + ' ' if color else ''}cubes and that task has {has}. Rephrase, or use --model")
     stacked = _stacked_on_another(schema)
     for m in ON_TABLE_RE.finditer(f.text):  # "move the green cube onto the table": not stacked on another
         color = canon_color(m.group(1) or m.group(2) or m.group(3))

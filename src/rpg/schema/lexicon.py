@@ -961,6 +961,39 @@ LABEL_RE = re.compile(r"(?:^|(?<=[.!?;|]\s))\s*(?P<label>[a-z][a-z'\- ]{0,30}?(?
 :data:`LABEL_MAX_WORDS`) is a word of the task (:data:`TASK_CONTENT_RE`) or says what the domain
 cannot ("Never: ..." stays, and is refused)."""
 
+ID_LABEL_RE = re.compile(
+    r"^\s*(?P<label>(?:[\w'\"().\-]+,?\s+){0,7}?(?:[\w'\"().\-]*\d[\w'\"().\-]*|[A-Za-z]+(?:-[A-Za-z0-9]+)+|\"[^\"]{1,24}\")"
+    r"(?:\s*\([^()]{1,40}\))?)\s*(?::|\.(?=\s+[A-Za-z]))\s+(?P<body>\S.*)$", re.S)
+"""A task's identifier before its text, as benchmark specs and papers write it ("Task 7 (Stacking-3):
+...", "Relation test R-3: ...", "Unstack-2. init: ...", "Eval condition "mixed-2": ..."): its last word
+has a digit or a hyphen, or is quoted.  :func:`rpg.schema.readers.parse` reads the text after it alone
+when every word of the label is an identifier word (:data:`LABEL_JARGON`, a number, a letter) or a word
+of the task's kind (a structure, sort, spell...), and adds the label's structure word when the text
+alone names none ("Task 12 (Line-Sort-Colour): red, orange, yellow, left to right.")."""
+
+LABEL_JARGON = frozenset(
+    "task tasks item trial test tests eval evaluation split set condition variant episode scenario case exercise question "
+    "level stage problem appendix section clause paper generalisation generalization relation relations multi structure "
+    "structures spec config benchmark id no v worksheet objective env environment suite setting demo item nov dec jan feb "
+    "mar apr may jun jul aug sep oct".split())
+"""Words of a task's identifier that say nothing of the task (:data:`ID_LABEL_RE`)."""
+
+LABEL_TASK_KIND_WORDS = frozenset(
+    "stack stacking stacks unstack unstacking tower towers line lines row rows pile piles piling wall walls grid grids pyramid "
+    "pyramids circle circles ring sort sorting sorted spell spelling word words letter letters digit digits number numbers "
+    "place placing placement region regions between patch patches colour color colours colors build building relate arrange "
+    "arrangement any order move put".split())
+"""Words of a task's identifier that name the kind of task its text states ("Stacking-3",
+"Spell-Word", "Place-Region"): dropped with the identifier (the text says the task)."""
+
+INVENTORY_RE = re.compile(
+    r"(?:^|(?<=[.;!?:]\s))(?:(?:you|we)\s+(?:have|get|will\s+need|need|will\s+use)|use|using|there\s+are|given|with)?\s*:?\s*"
+    rf"(?P<groups>\d+\s+(?:(?:{COLOR_RE})\s+)?(?:cubes?|blocks?)(?:\s*(?:,|\band\b|,\s*and)\s*\d+\s+(?:(?:{COLOR_RE})\s+)?"
+    r"(?:cubes?|blocks?))*)\s*(?:[.;!]|$)")
+"""A sentence that only counts the cubes a task has ("Ingredients: 2 cubes.", "You will need: 6 gray
+cubes.", "3 red cubes, 1 yellow cube."), in the parser's normalised text: each count is all the
+cubes of its colour (or all the cubes), checked by :func:`rpg.schema.accounting.unaccounted`."""
+
 LABEL_MAX_WORDS = 4
 """The most words a dropped label (:data:`LABEL_RE`) has: a longer run before a colon is a
 sentence ("here is what I would like to see at the end: ...")."""

@@ -653,8 +653,11 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(rf"\bthe\s+(cubes?|blocks?|box(?:es)?|patch(?:es)?)\s+the\s+({COLOR_RE})\b"
                   rf"(?!\s+(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?)\b)", r"the \2 \1", text)
     # "the cube brown on the cube orange", "block purple on block yellow", "the cube of colour blue": a colour after its noun
-    text = re.sub(rf"(?<!every )(?<!each )(?<!all )(?<!any )\b(cube|block|box)\s+(?:of\s+(?:the\s+)?colou?r\s+)?({COLOR_RE})\b(?!\s*(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?|,|and\b|or\b))",
-                  r"\2 \1", text)
+    text = re.sub(rf"(?<!every )(?<!each )(?<!all )(?<!any )\b(cube|block|box|patch)\s+(?:of\s+(?:the\s+)?colou?r\s+)?({COLOR_RE})\b"
+                  rf"(?!\s*(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?)\b|\s*(?:,|and\b|or\b)\s*(?:the\s+)?(?:{COLOR_RE})\b)",
+                  r"\2 \1", text)  # a list after the noun ("the cube red, blue and green") is left as it is
+    # "the corner back right", "the part front of the table": a place's words after its noun (Spanish, French)
+    text = re.sub(r"\bthe\s+(corner|side|part|edge)\s+((?:front|back|rear)(?:[\s-]+(?:left|right))?|left|right)\b", r"the \2 \1", text)
     # "tower | top: pink | bottom: gray", "red / white / red / white": a table row's or a list's separators
     text = re.sub(r"\s*\|\s*", ", ", text)
     text = re.sub(rf"\b({COLOR_RE})\s*/\s*(?=(?:{COLOR_RE})\b)", r"\1, ", text)
@@ -776,6 +779,11 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"\b(?:to|on|at)\s+the\s+(left|right)(?:[\s-]+hand)?\s+side\s+of\b(?!\s+the\s+(?:table|workspace)\b)",
                   r"to the \1 of", text)
     text = re.sub(r"\bon\s+top\s+(?=the\b)", "on top of ", text)
+    if re.search(r"\b(?:line|lines|row|rows|order|sort\w*|spell\w*|reads?|ascending|descending|increasing|decreasing)\b", text):
+        # "in increasing order from left", "spell it from the right": the reading direction, its far end unsaid
+        text = re.sub(r"\bfrom\s+(?:the\s+)?(left|right|front|back)(?:\s+(?:side|end))?\b(?!\s*(?:to|of|side|end|corner|edge|half|part)\b)",
+                      lambda m: "from " + {"left": "left to right", "right": "right to left", "front": "front to back",
+                                           "back": "back to front"}[m.group(1)], text)
     text = re.sub(r"\s+please(?=\s*[:,;.!])", "", text)  # "two stacks please: ..."
     text = " ".join(w for w in re.split(r"(?<=\S)\s+(?=\S)", text)
                     if re.sub(r"[.,;:!?]+$", "", w) not in IGNORABLE_HERE)

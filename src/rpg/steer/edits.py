@@ -24,6 +24,7 @@ from rpg.errors import BadInput
 from rpg.schema.builder import DEFAULT_COLORS
 from rpg.schema.lexicon import (
     COLOR_RE,
+    COUNT_WORD_RE,
     EDIT_ADDITIVE_RE,
     EDIT_ANAPHORA_RE,
     EDIT_BESIDE_RE,
@@ -537,7 +538,8 @@ def read_ops(t: str) -> list[Op]:
     stack_all = re.search(r"\b(?:stack|pile)\s+(?:them|all|everything|(?:all\s+)?the\s+(?:blocks|cubes))(?:\s+(?:up|instead|together"
                           r"|on top of each other|on top of one another))*\W*$", t) or (
         SAME_ORDER_RE.search(t) and re.search(r"\b(?:stack|pile)\s+(?:them|all|everything)\b", t))  # "stack them, in the same order"
-    bare_shape = re.fullmatch(r"(?:(?:now|ok|okay|actually|then|and|maybe|rather)\s+)*(?:as\s+|in\s+|into\s+)?an?\s+"
+    bare_shape = re.fullmatch(r"(?:(?:now|ok|okay|actually|then|and|maybe|rather)\s+)*"
+                              r"(?:(?:the\s+)?same\s+(?:blocks|cubes|bricks)\s*,?\s*(?:but\s+)?)?(?:as\s+|in\s+|into\s+)?an?\s+"
                               + STRUCTURE_RE + r"(?:\s+(?:instead|now|please))*\W*", t)
     wall = re.search(r"\b(?:make|turn|build|form|change|rearrange|arrange|reshape|into|as)\b[^.;]*?\ban?\s+wall\b", t)
     wide, high = re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+)?wide\b", t), re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+)?(?:high|tall)\b", t)
@@ -594,6 +596,13 @@ def looks_standalone(t: str) -> bool:
         and not EDIT_CONTINUES_RE.match(t) and bool(TASK_NOUN_RE.search(t))
 
 
+def names_cubes(t: str) -> bool:
+    """Whether a normalised edit says which cubes its task has (a colour, a label, a count, letters
+    or digits): one that names none ("as a row", "same cubes but as a circle") is the task's own
+    cubes in another structure, never a new task of cubes nobody named."""
+    return bool(re.search(rf"\b(?:{COLOR_RE}|{COUNT_WORD_RE}|\d+(?:x\d+)*|colou?r(?:s|ed)?|letters?|digits?|numbers?|word|spell\w*)\b|'[a-z]+'", t))
+
+
 def intent_of_ops(ops: list[Op], spec: TaskSpec | None = None) -> str:
     """The strongest intent of the operations (a structure op to the reference's own
     structure changes nothing and does not count)."""
@@ -636,7 +645,7 @@ def interpret(edit: str) -> EditPlan:
     if fresh:
         return EditPlan(edit, RefCue("none", phrase=fresh.group(0)), standalone=True, fresh=True)
     refuse_inexpressible(edit, t)
-    if looks_standalone(t):
+    if looks_standalone(t) and names_cubes(t):
         from rpg.schema.builtin import ParseError, parse
 
         try:

@@ -288,7 +288,8 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     elif re.search(r"\b(?:square|short(?:er)?|small(?:er)?)\b", t) and shape != "square":
         shape, intent = "square", "tweak"
     count = re.search(rf"\b(\d+|{COUNT_WORD_RE})\s+(?:blocks|cubes)\b", t)  # "use one blocks instead": a count said alone
-    added = re.search(rf"\badd\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b", t) or \
+    added = re.search(rf"\badd\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b(?=\s*(?:(?:on|onto|to|in)\s+(?:the\s+"
+                      rf"(?:(?:{COLOR_RE})\s+)?(?:goal\s+)?patch|it)\s*)?(?:too|as\s+well)?\s*$)", t) or \
         re.fullmatch(rf"\s*(?:and\s+|now\s+|also\s+)*(?:put\s+|place\s+)?(?:the|a|an)\s+({COLOR_RE})\s+(?:block|cube|one)\s+"
                      rf"(?:(?:on|onto|in)\s+(?:the\s+(?:{COLOR_RE}\s+)?(?:goal\s+)?patch|it)\s+)?(?:too|as well)\s*", t) or \
         re.fullmatch(rf"\s*(?:and\s+|now\s+)*(?:also\s+)?(?:put|place|move|bring|slide|push)\s+(?:the|a|an)\s+({COLOR_RE})\s+(?:block|cube|one)\s+"

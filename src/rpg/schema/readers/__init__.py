@@ -54,6 +54,7 @@ from rpg.schema.reading import (
     features,
     task_slug,
 )
+from rpg.schema.structures import STRUCTURE_RE, STRUCTURE_WORDS
 
 
 def free_unnamed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
@@ -189,6 +190,21 @@ def disjoint_regions(f: Features, schema: TaskSchema) -> ParseError | None:
     return None
 
 
+def _identifier_label(instruction: str) -> tuple[str, str] | None:
+    """(label, text) when ``instruction`` opens with a task's identifier (:data:`lexicon.ID_LABEL_RE`)
+    whose every word says nothing the text must (an identifier word, a number or letter, a word of
+    the task's kind); None otherwise (then the label is read with the rest, and refused if it says
+    what the domain cannot: "Time-limited stacking: ...")."""
+    m = lexicon.ID_LABEL_RE.match(instruction)
+    if m is None:
+        return None
+    words = re.findall(r"[a-z]+", re.sub(r"\"[^\"]*\"", " ", m.group("label")).lower())  # a quoted name says nothing
+    if all(w in lexicon.LABEL_JARGON or w in lexicon.LABEL_TASK_KIND_WORDS or len(w) == 1 or re.fullmatch(r"v|x|st|nd|rd|th", w)
+           for w in words):
+        return m.group("label"), m.group("body")
+    return None
+
+
 def parse(instruction: str) -> TaskSchema:
     """Read an instruction into a TaskSchema.
 
@@ -197,6 +213,13 @@ def parse(instruction: str) -> TaskSchema:
             describes no task the parser knows (message quotes the problem, suggests --model).
         UnknownColorError / UnknownLabelError: an unknown colour or label.
     """
+    labelled = _identifier_label(instruction)
+    if labelled is not None:  # "Task 7 (Stacking-3): the agent must build ...": the text after it
+        label, body = labelled
+        noun = next((w for w in re.findall(r"[a-z]+", label.lower()) if w in STRUCTURE_WORDS), None)
+        if noun is not None and not re.search(STRUCTURE_RE, body, re.IGNORECASE):
+            body = f"{noun}: {body}"  # "Line-Sort-Colour: red, orange, ...": the structure the label names
+        return parse(body)
     scene = initial.split(instruction)  # "Initially red is on blue. Put ...": rho_0's stacks, then the goal
     if scene is not None and not scene.goal.strip(" ."):
         raise ParseError(f"\"{instruction[:80]}\" says how the cubes start but not where they must end up: a task's goal "

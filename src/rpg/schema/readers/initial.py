@@ -31,7 +31,9 @@ START_SENTENCE_RE = re.compile(
     r"(?i)^\s*(?:initially|at\s+(?:the\s+)?(?:start|beginning)(?:\s+of\s+the\s+(?:episode|task))?"
     r"|in\s+the\s+(?:initial|starting|start)\s+(?:state|scene|configuration|setup)"
     r"|(?:the\s+)?(?:initial|start(?:ing)?)\s+(?:state|scene|configuration|setup|position)s?\s*(?:is\b|:|-|\u2014)"
+    r"|(?:scene\s+)?init(?:ial)?(?:\s+(?:state|scene|config(?:uration)?))?\s*:"
     r"|(?:setup|start|before|init)\s*:|(?:the\s+)?(?:scene|episode|table|task)\s+(?:starts|begins)\s+(?:with|as)"
+    r"|(?:it\s+)?(?:starts|begins)\s+(?:out\s+)?with(?=\s+(?:the|a|an|one)\s)"
     r"|we\s+start\s+(?:with|from)|(?:the\s+)?(?:cubes|blocks)\s+start(?:\s+out)?(?:\s+as|\s+in|\s*:)?)\s*[:,\-\u2014]?\s*")
 """Words that open a statement of the initial scene ("Initially, ...", "At the start, ...",
 "Initial state: ...", "Setup: ...", "The scene starts with ...")."""
@@ -44,7 +46,8 @@ STARTS_CLAUSE_RE = re.compile(
 cube and must end up on the table"): the subject is carried into the goal's clause."""
 
 GOAL_OPENER_RE = re.compile(r"(?i)^\s*(?:(?:the\s+)?(?:goal|target|task|objective)\s*(?:is\s*(?:to\s+)?|:|-|\u2014)"
-                            r"|then\s*,?|now\s*,?|your\s+task\s*(?:is\s+to|:))\s*")
+                            r"|then\s*,?|now\s*,?|your\s+task\s*(?:is\s+to|:)|(?:at|in)\s+the\s+end\s*[,:]?|finally\s*,?"
+                            r"|success(?:\s+(?:when|if))?\s*:?)\s*")
 """Words that open the goal after the start ("Goal: ...", "Then ...", "The task is to ...")."""
 
 _REL_ON = r"(?:(?:is|sits|lies|rests|stands|starts|begins)\s+(?:initially\s+|out\s+)?)?(?:stacked\s+|placed\s+|sitting\s+|resting\s+)?(?:on\s+top\s+of|on|atop|upon)"

@@ -504,6 +504,16 @@ def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch:
     for region, members in by_region.items():
         for m, xy in zip(members, region_spots(region, len(members)), strict=True):
             placed[m] = xy
+    # cubes on a patch no relation places stand on it before the relations are laid out, so a cube
+    # related to one of them ("then a purple cube next to the red block") is placed beside where it ends
+    related = {base_of[x] for r in rels for x in (r.a, r.b, getattr(r, "c", None)) if x}
+    first = sorted({p for _, p in onpatch} - set(placed) - related)
+    early_xy = dict(zip(first, b.unit_centers(len(first), 0.16), strict=True)) if first else {}
+    for p, xy in early_xy.items():
+        members = list(dict.fromkeys(base_of[a] for a, q in onpatch if q == p))
+        shape = next(a.shape for a in b.assets if a.name == p)
+        for m, spot in zip(members, patch_spots(xy, shape, len(members)), strict=True):
+            placed[m] = spot
     offset = {"left_of": (0.0, 0.10), "right_of": (0.0, -0.10), "in_front_of": (-0.10, 0.0), "behind": (0.10, 0.0),
               "next_to": (0.0, 0.06), "far_from": (0.0, C.FAR_FROM_MIN_DIST + 0.04)}
     cx, cy = C.WORKSPACE_CENTER
@@ -524,15 +534,17 @@ def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch:
         elif a in placed and c not in placed:
             placed[c] = (placed[a][0] - dx, placed[a][1] - dy)
     all_patches = {a.name for a in b.assets if a.kind == "goal_patch"}
-    patches = sorted({p for _, p in onpatch} - set(placed))
+    patches = sorted({p for _, p in onpatch} - set(placed) - set(early_xy))
     patch_xy = {p: placed[p] for p in sorted(all_patches & set(placed))}  # placed by a relation ("behind the patch")
-    pc = b.unit_centers(len(patches), 0.16) if patches else []
+    pc = free_spots(list(placed.values()) + list(early_xy.values()), len(patches)) if patches and early_xy else \
+        b.unit_centers(len(patches), 0.16) if patches else []
     patch_xy.update(zip(patches, pc, strict=True))
-    for p, xy in sorted(patch_xy.items()):
+    for p, xy in sorted({**patch_xy, **early_xy}.items()):
         b.place_patch(p, xy)
     on_patch_by: dict[str, list[str]] = {}
     for a, p in onpatch:
-        on_patch_by.setdefault(p, []).append(base_of[a])
+        if p not in early_xy:
+            on_patch_by.setdefault(p, []).append(base_of[a])
     for p, members in on_patch_by.items():
         members = list(dict.fromkeys(members))
         px, py = patch_xy[p]
@@ -551,7 +563,7 @@ def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch:
 
 
 _PER_TOWER_RE = re.compile(
-    rf"(?:^|[,.;:\-]|\band\b)\s*(?:and\s+)?(?:1|one|the\s+other(?:\s+1)?|another(?:\s+1)?|the\s+(?:first|second|third|fourth|last)"
+    rf"(?:^|[,.;:!\-]|\band\b)\s*(?:and\s+)?(?:1|one|the\s+other(?:\s+1)?|another(?:\s+1)?|the\s+(?:first|second|third|fourth|last)"
     rf"(?:\s+1)?)(?:\s+(?:tower|stack))?\s+(?:(?:is|of|all|made\s+of|in|has|with|should\s+be|must\s+be|only)\s+)*"
     rf"(?P<run>(?:{COLOR_RE})(?:\s+(?:{COLOR_RE}))*)(?:\s+(?:blocks?|cubes?|ones?))?(?=\s*(?:[,.;]|\band\b|$))")
 """One tower's colour said after the towers are counted ("2 towers: one is red red, the other one

@@ -587,6 +587,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         return False  # "so that red is left of green": pairwise relations (recognize_relational)
     if not is_line or f.has("stack", "stacks", "tower", "towers", "on top"):
         return False
+    if re.search(r"\b(?:bottom[\s-]+(?:to|up\s+to)[\s-]+top|top[\s-]+(?:to|down\s+to)[\s-]+bottom)\b", f.text):
+        return False  # "bottom-to-top order blue, yellow, red": a tower's order, never a line's
     direction = direction_of(f)
     item = rf"(?:{COLOR_RE})(?:\s+(?:blocks?|cubes?))?(?:\s+first)?"  # "the blue block first, then the red block"
     by_roles = _order_by_end_roles(f)  # "with red on the left, green in the middle and blue on the right"
