@@ -2487,3 +2487,32 @@ def test_a_label_saying_any_order_leaves_the_tower_unordered():
 
     schema = parse("Stack-any-order: build a single tower from the red, yellow and blue cubes; order does not matter.")
     assert [type(p) for p in schema.goal_predicate().walk() if type(p).__name__.endswith("Stack")] == [UnorderedStack]
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a speech-to-text transcript (stranger11): hesitations, words said twice, corrections without a pause
+    ("uh so put the the orange cube on the uh purple patch no I mean the pink patch", ["on_patch(orange,patch:pink)"]),
+    ("can you uh stack stack the yellow cube on the the orange no the purple cube", ["stack(purple,yellow)"]),
+    ("put the cyan cube in the uh in the front no the back of the table", ["in_region(cyan,back)"]),
+    ("okay put the the green cube um behind the the blue cube yeah behind it", ["behind(green,blue)"]),
+    ("put the blue the blue cube on top of the red and then and then the red one goes next to the no on top of the green",
+     ["stack(green,red,blue)"]),
+    ("make a uh a wall I mean a a row of white cubes three of them", ["line(white,white,white)"]),  # it had been a row of four
+    ("uh okay um line up the the letter cubes to say uh D O G dog from left to right",
+     ["line[left_to_right](D,O,G)", "reads(D,O,G;direction=left_to_right,face=up,text=DOG)"]),
+    # what the rules must leave alone: two cubes of a colour, a correction after a hesitation, a subset's count
+    ("two towers! one blue blue and one pink pink", ["stack(blue,blue)", "stack(pink,pink)"]),
+    ("put the red cube to the left, er no, to the front", ["in_region(red,front)"]),
+    ("Form a circle with four cubes, two of them blacks and two whites.", ["circle(black,black,white,white)"]),
+])
+def test_a_spoken_transcript_is_read_as_meant(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,why", [
+    ("put no cubes on the patch", "negation"),  # "no" before a noun stays a negation, not a correction
+    ("Ingredients: 2 cubes. Method: build a tower three cubes tall.", "says the task has 2 cubes"),
+])
+def test_a_negation_stays_and_a_counted_inventory_must_match(text, why):
+    with pytest.raises(BadInput, match=why):
+        parse(text)

@@ -801,7 +801,8 @@ Letter: ...", "First lesson, stacking: ..."): the task follows, the heading is d
 
 SELF_CORRECTION_RE = re.compile(
     r"(?i)(?:[,.;:!?]|\s[-\u2013\u2014])\s*(?:(?:(?:er+m?|uh+|um+)\s*,?\s+)?(?:sorry|i\s+mean|no\s*,?\s+wait|wait\s*,?\s+no"
-    r"|(?:er+m?|uh+|um+)\s*,?\s+no|oops|correction|or\s+rather|make\s+that|scratch\s+that)\b[,:!.]*\s+)+(?=\S)")
+    r"|(?:er+m?|uh+|um+)\s*,?\s+no|no\s*,?\s+i\s+mean|oops|correction|or\s+rather|make\s+that|scratch\s+that"
+    r"|no(?=\s+(?:the|a|an|on|onto|in|into|next|behind|to|at)\b))\b[,:!.]*\s+)+(?=\S)")
 """A writer correcting themselves mid-instruction ("..., sorry, the pink patch", "Stack red on
 blue, I mean blue on red.", "to the left, er no, to the front"): the correction replaces what it
 corrects (:func:`rpg.schema.reading.apply_corrections`); after a pause only (a correction word
@@ -904,6 +905,33 @@ FILLER_RE = re.compile(r"(?i)(?:^|(?<=[.!?]\s))(?:prego|allora|ecco|dai|senti|go
                        r"|,?\s*\b(?:va\s+bene|capisci|ok\?|okay\?|right\?|yeah\?)\s*(?=[.!?]*\s*$)")
 """Interjections said around a task in several languages' habits ("Prego, ...", "Allora, ...",
 "..., va bene?", "God willing, ...", "omg"): dropped."""
+
+DISFLUENCY_RE = re.compile(r"(?i)\s*\b(?:uh+m?|um+|erm*|uhm+)\b(?!\s*,?\s*no\b)\s*,?(?=\s|$)")
+"""A speaker's hesitation in a transcript ("put the uh orange cube"): dropped."""
+
+STUTTER_RE = re.compile(r"(?i)\b(?P<run>(?:[a-z']+\s+){0,2}[a-z']+)\s+(?P=run)\b")
+"""Words said twice in a row in a transcript ("the the", "on the on the", "and then and then",
+"stack stack"): said once.  :func:`rpg.schema.reading.normalize_words` leaves a run with a colour or
+a number alone unless it opens with an article ("the blue the blue cube": a stutter; "blue blue" may
+be two cubes)."""
+
+SPELLED_ALOUD_RE = re.compile(r"\b(?P<letters>(?-i:[A-Z])(?:\s+(?-i:[A-Z])){1,9})\s+(?P<word>[A-Za-z]{2,10})\b")
+"""A word spelled letter by letter and then said ("D O G dog"): the letters, the word said once
+(:func:`rpg.schema.reading.normalize_words` drops the word when it is the letters joined)."""
+
+SPOKEN_ECHO_RE = re.compile(r"(?i)\s*,?\s*\b(?:yeah|yes|yep|yup)\b\s*,?\s+(?:right\s+|just\s+)?(?P<rel>behind|in\s+front\s+of|on\s+top\s+of|onto|on"
+                            r"|next\s+to|beside|under|(?:to\s+the\s+)?(?:left|right)\s+of)\s+(?:it|that\s+one)\s*[.!]?\s*$")
+"""A speaker confirming what was just said ("put the green cube behind the blue cube yeah behind it"):
+dropped when the relation was said before it."""
+
+SAY_LETTERS_RE = re.compile(r"(?i)\b(?:to\s+)?(?:say|show|write|read)\s+(?=(?-i:[A-Z])(?:\s+(?-i:[A-Z]))+\b|(?-i:[A-Z]{2,})\b)")
+"""Letter cubes made to "say" or "show" a word ("line up the letter cubes to say D O G"): to spell it."""
+
+SPOKEN_CORRECTION_RE = re.compile(
+    r"(?i)(?<=[a-z])\s+(?=(?:no\s+)?i\s+mean\b|no\s+wait\b|no\s+(?:the|a|an|on|onto|in|into|next|behind|to|at)\b)")
+"""A correction spoken without a pause ("on the purple patch no I mean the pink patch", "the orange no
+the purple cube"): a comma is put before it, so :data:`SELF_CORRECTION_RE` reads it ("no" only before
+an article or a place word: "no blue cubes" stays a negation)."""
 
 GRADING_FRAME_RES: tuple[re.Pattern, ...] = (
     re.compile(r"(?i)(?:^|(?<=[.!?;:]\s))q\s*\d+\s*(?:\([^)]{0,20}\))?\s*[.:)]\s*"),  # "Q3.", "Q5 (bonus)."

@@ -477,7 +477,8 @@ def _corrected(before: str, fix: str) -> str | None:
     """``before`` with the words ``fix`` corrects replaced by it; None when what it corrects is
     not clear (then the instruction is read, and refused, as written)."""
     fixed = re.findall(r"[\w'-]+", fix)
-    if not fixed or lexicon.REFERENCE_PRONOUN_RE.search(fix.lower()) or re.search(r"(?i)\b(?:it|them|one)\b", fix):
+    counted = re.sub(r"(?i)\b(?:\d+|[a-z]+)\s+of\s+them\b", " ", fix)  # "..., three of them": a count, no reference
+    if not fixed or lexicon.REFERENCE_PRONOUN_RE.search(counted.lower()) or re.search(r"(?i)\b(?:it|them|one)\b", counted):
         return None  # "I mean under it": which cube 'it' is depends on what was replaced
     tokens = list(re.finditer(r"[\w'-]+", before))
     lemma = fixed[0].lower() if fixed[0].lower() not in ("just", "then") else (fixed[1].lower() if len(fixed) > 1 else "")
@@ -485,6 +486,10 @@ def _corrected(before: str, fix: str) -> str | None:
         start = max((m.end() for m in re.finditer(r"[.!?;]\s", before)), default=0)
         return before[:start] + fix
     first, last = _word_class(fixed[0]), _word_class(fixed[-1])
+    recent = [k for k in range(len(tokens) - 1, max(len(tokens) - 5, -1), -1) if _word_class(tokens[k].group(0)) == first]
+    if first in ("det", "prep") and recent and not any(  # "on the orange, no the purple cube": the phrase said last
+            tokens[k].group(0).lower() in lexicon.PLACEMENT_VERBS for k in range(recent[0], len(tokens))):
+        return before[:tokens[recent[0]].start()] + fix
     if len(fixed) >= 3 and first not in ("det", "prep") and any(re.search(rf"\b(?:{p})\b", fix.lower())
                                                                   for p, _ in lexicon.REL_PATTERNS[:-1]):
         verbs = [m for m in tokens if m.group(0).lower() in lexicon.PLACEMENT_VERBS]  # "Stack red on blue, I mean blue on red"
@@ -542,6 +547,16 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     original = lexicon.FILLER_RE.sub("", original).strip()
     original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", original)  # texting's "2" for "to"
     original = lexicon.TEXTED_YOU_RE.sub("you", original)  # "can u build ...": texting's "u"
+    original = lexicon.DISFLUENCY_RE.sub("", original)  # a transcript's "uh", "um"
+    original = lexicon.STUTTER_RE.sub(lambda m: m.group(0) if re.search(rf"\b(?:{COLOR_RE}|{lexicon.COUNT_WORD_RE})\b|\d", m.group("run"), re.I)
+                                      and not re.match(r"(?i)(?:the|a|an)\s", m.group("run")) else m.group("run"), original)
+    original = lexicon.SPOKEN_CORRECTION_RE.sub(", ", original)  # "... purple patch no I mean the pink patch"
+    original = lexicon.SPELLED_ALOUD_RE.sub(lambda m: m.group("letters") if m.group("word").upper() == "".join(
+        m.group("letters").split()) else m.group(0), original)  # "D O G dog"
+    original = lexicon.SAY_LETTERS_RE.sub("to spell ", original)  # "the letter cubes to say D O G"
+    echo = lexicon.SPOKEN_ECHO_RE.search(original)
+    if echo and re.search(rf"(?i)\b{echo.group('rel')}\b", original[:echo.start()]):  # "... yeah behind it": said again
+        original = original[:echo.start()]
     original = apply_corrections(original)  # "..., sorry, the pink patch": the correction wins
     original = verb_final(original)  # "The 4 cube, the 2 cube's top on, stacking please.": the verb said first
     original = sorted_labels(original)  # "Stack the digit cubes 7, 3 and 5 in ascending order": listed sorted
@@ -779,6 +794,10 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"\b(?:to|on|at)\s+the\s+(left|right)(?:[\s-]+hand)?\s+side\s+of\b(?!\s+the\s+(?:table|workspace)\b)",
                   r"to the \1 of", text)
     text = re.sub(r"\bon\s+top\s+(?=the\b)", "on top of ", text)
+    # "a row of white cubes, three of them": the count said after the cubes
+    text = re.sub(rf"\b((?:{COLOR_RE})\s+)?(cubes|blocks)\s*,?\s+(\d+|{lexicon.COUNT_WORD_RE})\s+of\s+them\b"
+                  r"(?=\s*(?:[,.;!?]|$|(?:at|in|on|along|across|please)\b))",
+                  lambda m: f"{NUMBER_WORDS.get(m.group(3), m.group(3))} {m.group(1) or ''}{m.group(2)}", text)
     if re.search(r"\b(?:line|lines|row|rows|order|sort\w*|spell\w*|reads?|ascending|descending|increasing|decreasing)\b", text):
         # "in increasing order from left", "spell it from the right": the reading direction, its far end unsaid
         text = re.sub(r"\bfrom\s+(?:the\s+)?(left|right|front|back)(?:\s+(?:side|end))?\b(?!\s*(?:to|of|side|end|corner|edge|half|part)\b)",

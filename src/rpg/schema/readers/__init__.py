@@ -219,7 +219,8 @@ def parse(instruction: str) -> TaskSchema:
         noun = next((w for w in re.findall(r"[a-z]+", label.lower()) if w in STRUCTURE_WORDS), None)
         if noun is not None and not re.search(STRUCTURE_RE, body, re.IGNORECASE):
             body = f"{noun}: {body}"  # "Line-Sort-Colour: red, orange, ...": the structure the label names
-        return parse(body)
+        schema = parse(body)
+        return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})  # as written
     scene = initial.split(instruction)  # "Initially red is on blue. Put ...": rho_0's stacks, then the goal
     if scene is not None and not scene.goal.strip(" ."):
         raise ParseError(f"\"{instruction[:80]}\" says how the cubes start but not where they must end up: a task's goal "
