@@ -2516,3 +2516,30 @@ def test_a_spoken_transcript_is_read_as_meant(text, expected):
 def test_a_negation_stays_and_a_counted_inventory_must_match(text, why):
     with pytest.raises(BadInput, match=why):
         parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a task written as a config: key=value pairs, bullets, a flat dict after a label (stranger11, stranger8)
+    ("structure=line; n=5; colour=green; region=back", ["line(green,green,green,green,green)@back"]),
+    ("- cubes: 4 x blue - structure: tower - location: front right corner", ["stack(blue,blue,blue,blue)@front_right"]),
+    ('Goal spec: {"relation": "between", "target": "white", "anchors": ["black", "brown"]}', ["between(white;black,brown)"]),
+    ('The episode is defined as {"task": "place", "object": "brown cube", "target": "patch", "target_colour": "orange"}.',
+     ["on_patch(brown,patch:orange)"]),
+    ("config: {structure: line, direction: front_to_back, cubes: [red, green, blue]}", ["line[front_to_back](red,green,blue)"]),
+    ("obj=stack; cubes=gray,gray,black; bottom_first=yes", ["stack(gray,gray,black)"]),
+    ('{"goal": "on_patch", "cube": "orange", "patch": "green"}', ["on_patch(orange,patch:green)"]),
+])
+def test_a_task_written_as_a_config(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,why", [
+    ('{"goal": "far_from", "a": "red", "b": "blue", "min_dist_m": 0.3}', "min"),  # a key of no known role: not guessed
+    ('{"task": "stack", "objects": ["blue_large", "red_small"]}', "size"),  # a value read as a sentence would be
+    ('{"task": "stack", "constraint": "never put black on white"}', "negation"),
+    ("time: 10 s, goal: red on blue", "about time"),  # "10 s" had been dropped with its label
+    ("stack red on blue in under 2 min", "about time"),
+])
+def test_a_config_says_nothing_the_domain_cannot_and_a_time_limit_is_refused(text, why):
+    with pytest.raises(BadInput, match=why):
+        parse(text)

@@ -159,7 +159,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|\b(?:after|once|before)\s+(?:the|it|they|you)\b[^.;]*?\b(?:has|have|had)\s+been\b"
                   r"|(?:^|[.;!]\s*)(?P<w>(?:should|were|had)\s+(?:there\s+be|the|a|an|it|they)\b)[^,.;?]*,",  # "Should there be a letter cube A, ..."
      "makes the goal conditional: a task has one goal, checked at the end of the episode; say the goal for one scene"),
-    ("time", r"\b(?:\d+\s+(?:seconds?|minutes?|hours?)|seconds|minutes?|hours?|meanwhile|forever|while|whilst|during)\b",
+    ("time", r"\b(?:\d+(?:\.\d+)?\s*(?:seconds?|secs?|s|minutes?|mins?|hours?|hrs?|ms|milliseconds?)(?![\w'])|seconds|minutes?|hours?"
+             r"|meanwhile|forever|while|whilst|during)\b",
      "is about time: a task's goal is checked once, at the end of the episode, with no clock or duration"),
     ("quantity", r"\b(?:\d+(?:\.\d+)?\s*(?:cm|mm)\b|(?:centi|milli)?(?:meters?|metres?)|inch(?:es)?|feet|foot"
                  r"|some(?=\s+(?:of\s+the\s+)?(?:[a-z]+\s+)?(?:blocks|cubes|bricks|boxes)\b)|cms?|few|fewer|most|majority|percent|(?<!left\s)(?<!right\s)(?<!front\s)(?<!back\s)(?<!rear\s)half|halves|several|many|much|enough|plenty|numerous"
@@ -1021,6 +1022,37 @@ INVENTORY_RE = re.compile(
 """A sentence that only counts the cubes a task has ("Ingredients: 2 cubes.", "You will need: 6 gray
 cubes.", "3 red cubes, 1 yellow cube."), in the parser's normalised text: each count is all the
 cubes of its colour (or all the cubes), checked by :func:`rpg.schema.accounting.unaccounted`."""
+
+CONFIG_ROLES: dict[str, str] = {
+    **dict.fromkeys("structure task type shape kind goal obj objective arrangement".split(), "structure"),
+    **dict.fromkeys("cubes objects colors colours color colour blocks items".split(), "cubes"),
+    **dict.fromkeys("n count num num_cubes n_cubes height size length number".split(), "count"),
+    **dict.fromkeys("region location place position where area corner".split(), "place"),
+    **dict.fromkeys("direction order ordering bottom_first".split(), "direction"),
+    **dict.fromkeys("relation predicate rel".split(), "relation"),
+    **dict.fromkeys("target subject cube object a first block source".split(), "subject"),
+    **dict.fromkeys("anchors anchor reference b second relative_to other".split(), "anchor"),
+    **dict.fromkeys("target_colour target_color patch_colour patch_color".split(), "patch_colour"),
+    "patch": "patch",
+    **dict.fromkeys("instruction goal_text prompt text language_instruction".split(), "text"),
+    **dict.fromkeys("seed id name trial episode".split(), "ignored"),
+}
+"""Keys of a task written as a config -> their role (:mod:`rpg.schema.readers.config`): a key of
+no role here makes the text not a config that reader reads."""
+
+CONFIG_RELATIONS: dict[str, str] = {
+    **dict.fromkeys("left_of left to_the_left_of".split(), "to the left of"),
+    **dict.fromkeys("right_of right to_the_right_of".split(), "to the right of"),
+    **dict.fromkeys("in_front_of front in_front".split(), "in front of"),
+    **dict.fromkeys("behind back_of".split(), "behind"),
+    **dict.fromkeys("next_to adjacent adjacent_to beside near".split(), "next to"),
+    **dict.fromkeys("far_from far_apart far".split(), "far from"),
+    **dict.fromkeys("on on_top_of stack_on".split(), "on"),
+    **dict.fromkeys("on_patch place place_on_patch".split(), "on_patch"),
+    "between": "between",
+}
+"""A config's relation value (``"relation": "between"``, ``"goal": "far_from"``) -> the words that
+say it in a sentence (``on_patch`` and ``between`` are written with their own arguments)."""
 
 LABEL_MAX_WORDS = 4
 """The most words a dropped label (:data:`LABEL_RE`) has: a longer run before a colon is a

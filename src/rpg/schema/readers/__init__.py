@@ -36,6 +36,7 @@ from rpg.schema.builder import Builder, make_paraphrases
 from rpg.schema.model import TaskSchema
 from rpg.schema.readers import (  # noqa: F401 (they register)
     compose,
+    config,
     initial,
     labels,
     patches,
@@ -213,6 +214,10 @@ def parse(instruction: str) -> TaskSchema:
             describes no task the parser knows (message quotes the problem, suggests --model).
         UnknownColorError / UnknownLabelError: an unknown colour or label.
     """
+    written = config.sentence(instruction)
+    if written is not None:  # "structure=line; n=5; colour=green; region=back": the sentence it stands for
+        schema = parse(written)
+        return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})
     labelled = _identifier_label(instruction)
     if labelled is not None:  # "Task 7 (Stacking-3): the agent must build ...": the text after it
         label, body = labelled
