@@ -1116,3 +1116,47 @@ def test_edits_said_in_fewer_words(tmp_path, base, edit, expected):
 ])
 def test_a_shape_alone_keeps_the_cubes_and_a_cube_beside_a_patch_cube_stands_beside_it(tmp_path, base, edit, expected):
     assert _steered(tmp_path, base, edit) == [expected]
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # review comments and casual edits of steer_stranger7, each refused before
+    ("Build a tower: red on the bottom, then green, then blue on top", ["green and blue are backwards, swap them"],
+     ("modify", ["stack(red,blue,green)"])),
+    ("Put the cubes in a line from left to right: orange, purple, pink", ["you've got the orange and the pink backwards"],
+     ("modify", ["line[left_to_right](pink,purple,orange)"])),
+    ("Line up the red, green and blue cubes from left to right", ["Mirror it."], ("modify", ["line[left_to_right](blue,green,red)"])),
+    ("Place a blue cube on top of a red cube", ["throw in a yellow on top"], ("extend", ["stack(red,blue,yellow)"])),
+    ("Stack three green cubes", ["make it taller by two"], ("tweak", ["stack(green,green,green,green,green)"])),
+    ("Arrange eight red cubes in a circle", ["two fewer"], ("tweak", ["circle(red,red,red,red,red,red)"])),
+    ("Stack five yellow cubes", ["Too tall, cut it to three."], ("tweak", ["stack(yellow,yellow,yellow)"])),
+    ("Put two white cubes in a line", ["make it twice as long"], ("tweak", ["line(white,white,white,white)"])),
+    ("Stack three pink cubes", ["fine, a white cube on top then"], ("extend", ["stack(pink,pink,pink,white)"])),
+    ("Put the yellow cube on the blue patch", ["ok then, also a green cube on that patch"], ("extend", ["on_patch(green,yellow,patch:blue)"])),
+    ("Put the orange cube in the back left corner", ["and a purple next to it"],
+     ("extend", ["in_region(orange,back_left)", "next_to(orange,purple)"])),
+    ("Put the green cube to the left of the blue cube", ["ok new thing: put the orange cube on the pink patch"],
+     ("fresh", ["on_patch(orange,patch:pink)"])),
+    ("Put the green cube between the red cube and the yellow cube", ["the ends are fine but the middle one should be white"],
+     ("tweak", ["between(white;red,yellow)"])),
+    # a count of one colour taken away takes that many, not every cube of it ("remove one red block" had removed all three)
+    ("Put three red cubes and two blue cubes in a line", ["one fewer red"], ("tweak", ["line(blue,blue,red,red)"])),
+    ("Put three red cubes and two blue cubes in a line", ["remove one red block"], ("tweak", ["line(blue,blue,red,red)"])),
+    # going back more than one version, redoing what was undone, each named by the change from the head
+    ("Put a red cube on the green patch", ["patch should be blue", "plus a purple cube next to the red one", "go back two versions"],
+     ("modify", ["on_patch(red,patch:green)"])),
+    ("Place a blue cube on top of a red cube", ["add a yellow on top", "revert", "nvm, redo"], ("extend", ["stack(red,blue,yellow)"])),
+    ("Stack the green cube on the blue cube", ["as a row", "revert to the original"], ("pivot", ["stack(blue,green)"])),
+])
+def test_review_comments_and_casual_edits(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+@pytest.mark.parametrize("base,edit,match", [
+    ("Stack four black cubes", "make the blocks twice as big", "size"),  # twice as big stays a size
+    ("Stack red, red, blue, red from bottom to top", "remove one red block", "does not say which"),  # its place is judged
+    ("Place a blue cube on top of a red cube", "redo", "nothing to redo"),
+])
+def test_edits_that_stay_refused(tmp_path, base, edit, match):
+    fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
+    with pytest.raises(SteerError, match=match):
+        steer(fam.path, edit)

@@ -179,9 +179,16 @@ def _flat_layers(atom: str) -> str:
     return atom
 
 
+def _grid_size(atom: str) -> str:
+    """``grid[2x2](x,x|x,x)`` -> ``grid(2x2:x,x,x,x)``: a grid's size as meaning() writes it (the
+    stranger sets guessed the size in brackets and the rows after '|')."""
+    m = re.fullmatch(r"grid\[(\d+x\d+)\]\((.*)\)(@.*)?", atom)
+    return f"grid({m.group(1)}:{m.group(2).replace('|', ',')}){m.group(3) or ''}" if m else atom
+
+
 def _variants(expected: str) -> list[str]:
     atoms = [a.strip() for a in re.split(r";\s+(?![^()]*\))", expected) if a.strip()]
-    flat = "; ".join(_flat_layers(_same_cubes_line(a)) for a in atoms)
+    flat = "; ".join(_grid_size(_flat_layers(_same_cubes_line(a))) for a in atoms)
     return [expected] if flat == "; ".join(atoms) else [expected, flat]
 
 

@@ -66,6 +66,7 @@ TYPOS: dict[str, str] = {
     "blu": "blue", "gren": "green", "yelow": "yellow", "purpel": "purple", "cirlce": "circle", "cricle": "circle",
     "towr": "tower", "pyramd": "pyramid", "rite": "right", "da": "the", "teh": "the", "ontop": "on top",
     "insted": "instead", "instaed": "instead", "isntead": "instead", "mak": "make", "midle": "middle", "middel": "middle",
+    "swtich": "switch", "swich": "switch", "swithc": "switch", "revese": "reverse", "reverce": "reverse",
 }
 """Misspellings of a word of the vocabulary, each read as that word (curated, never a guess; the
 steering corrects an edit's words with this table before reading it)."""
@@ -163,7 +164,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
              r"|meanwhile|forever|while|whilst|during)\b",
      "is about time: a task's goal is checked once, at the end of the episode, with no clock or duration"),
     ("quantity", r"\b(?:\d+(?:\.\d+)?\s*(?:cm|mm)\b|(?:centi|milli)?(?:meters?|metres?)|inch(?:es)?|feet|foot"
-                 r"|some(?=\s+(?:of\s+the\s+)?(?:[a-z]+\s+)?(?:blocks|cubes|bricks|boxes)\b)|cms?|few|fewer|most|majority|percent|(?<!left\s)(?<!right\s)(?<!front\s)(?<!back\s)(?<!rear\s)half|halves|several|many|much|enough|plenty|numerous"
+                 r"|some(?=\s+(?:of\s+the\s+)?(?:[a-z]+\s+)?(?:blocks|cubes|bricks|boxes)\b)|cms?|few|(?<!\d\s)fewer|most|majority|percent|(?<!left\s)(?<!right\s)(?<!front\s)(?<!back\s)(?<!rear\s)half|halves|several|many|much|enough|plenty|numerous"
                  r"|as\s+(?:high|tall|many|much|far|close|long)\s+as\s+(?:you|it|possible|can)"
                  r"|(?:over|more\s+than|at\s+least|at\s+most|fewer\s+than|less\s+than|up\s+to|under)\s+"
                  r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?=\s+(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|high|tall|levels?)\b))\b",
@@ -1265,7 +1266,8 @@ earlier in the instruction."""
 EDIT_FRESH_RE = re.compile(
     r"(?i)\b(?:new task|another task|start over|start fresh|from scratch|unrelated|something (?:completely |totally )?(?:different|else)"
     r"|(?:a\s+)?(?:completely|totally|entirely)\s+(?:different|new|other)\s+(?:task|one|thing)|different task"
-    r"|forget (?:it|that|this|everything|about it)|scr(?:atch|ap) (?:that|this|it|everything)(?:\s+and\s+start\s+(?:again|over))?"
+    r"|forget (?:it|that|this|everything|about it|all (?:of )?that)|scr(?:atch|ap) (?:all (?:of )?that|that|this|it|everything)"
+    r"(?:\s+and\s+start\s+(?:again|over))?|(?:a\s+)?new\s+(?:thing|one)(?=\s*[:,.!\-])|diff(?:erent)?\s+task|(?:a\s+)?brand\s+new\s+one"
     r"|(?:let'?s\s+)?start (?:again|anew)|never\s*mind|let'?s do something else)\b[:,.!]?")
 """Words that make an edit a new, unrelated task (Fresh): "start over: ...", "completely
 different task now: ..."."""
@@ -1392,7 +1394,43 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(r"(?i)\s*,?\s+so\s+(?:that\s+)?it(?:'s|\s+is)\s+(?:a\s+(?:bit|little)\s+|slightly\s+)?(?:shorter|smaller|taller|lower|"
                 r"higher|bigger|longer)\b\s*(?=[.!?]?\s*$)"), ""),
     # "can the middle one be red instead of white?": a change asked as a question
-    (re.compile(r"(?i)\b(?:can|could)\s+(the\s+[^?]+?)\s+be\s+([^?]+?)\s*\?\s*$"), r"make \1 \2"),
+    (re.compile(r"(?i)\b(?:can|could)\s+(the\s+[^?]+?)\s+be\s+((?:an?\s+)?[a-z]+(?:\s+(?:instead(?:\s+of\s+[a-z]+)?|too))?)\s*\?\s*$"),
+     r"make \1 \2"),
+    # "throw in a yellow on top", "toss a black one on the patch too": a cube added (throwing "the red cube" stays refused)
+    (re.compile(r"(?i)\b(?:throw|toss|chuck|pop|stick)\s+(?:in\s+)?(?=(?:a|an|another|one)\s)"), "put "),
+    # "green and blue are backwards, swap them", "you've got the orange and the pink backwards": those two swapped
+    (re.compile(rf"(?i)^.*?\b(?:the\s+)?({COLOR_RE}|top|bottom|middle|first|last)(?:\s+(?:one|block|cube))?\s+and\s+(?:the\s+)?"
+                rf"({COLOR_RE}|top|bottom|middle|first|last)(?:\s+(?:ones?|blocks?|cubes?|colou?rs?))?\s+"
+                r"(?:are\s+|got\s+)?(?:backwards?|swapped|switched|reversed|flipped|mixed\s+up|the\s+wrong\s+way\s+(?:round|around)"
+                r"|in\s+the\s+wrong\s+order)\b.*$"), r"swap the \1 and the \2"),
+    # "needs one more block", "it needs another cube": one more cube of the task's kind
+    (re.compile(r"(?i)^\s*(?:it\s+|this\s+|the\s+\w+\s+)?needs?\s+(?:one\s+more|another|1\s+more|an\s+extra)\s+(?:block|cube)\s*[.!]?\s*$"),
+     "add one more"),
+    # "mirror it": its order reversed
+    (re.compile(r"(?i)^\s*mirror\s+(?:it|that|this|them|the\s+(?:row|line|order|whole\s+thing|tower|stack))\s*[.!]?\s*$"),
+     "reverse the order"),
+    # "make it taller by two": that many blocks more
+    (re.compile(rf"(?i)\b(taller|higher|longer|bigger|shorter|lower|smaller)\s+by\s+(\d+|{COUNT_WORD_RE})(?:\s+(?:blocks?|cubes?))?\b"),
+     lambda m: f"{NUMBER_WORDS.get(m.group(2), m.group(2))} blocks {m.group(1)}"),
+    # "two fewer", "one fewer red": that many cubes (of that colour) taken away
+    (re.compile(rf"(?i)^\s*(\d+|{COUNT_WORD_RE})\s+(?:fewer|less)\s+({COLOR_RE})(?:\s+(?:ones?|blocks?|cubes?))?\s*[.!]?\s*$"),
+     lambda m: f"remove {NUMBER_WORDS.get(m.group(1), m.group(1))} {m.group(2)} blocks"),
+    (re.compile(rf"(?i)^\s*(\d+|{COUNT_WORD_RE})\s+(?:fewer|less)\s*(?:blocks?|cubes?)?\s*[.!]?\s*$"),
+     lambda m: f"{NUMBER_WORDS.get(m.group(1), m.group(1))} fewer blocks"),
+    # "make it twice as long": its count doubled
+    (re.compile(r"(?i)\b(?:make\s+(?:it|them)\s+)?twice\s+as\s+(?:long|tall|high|many)\b"), "double it"),  # "twice as big" stays a size
+    # "too tall, cut it to three": that many blocks
+    (re.compile(rf"(?i)^\s*(?:(?:it'?s\s+|that'?s\s+)?too\s+(?:tall|long|high|big)\s*[,.;!-]*\s*)?(?:cut|trim|shorten|chop)\s+(?:it|that|this|the\s+\w+)"
+                rf"(?:\s+down)?\s+to\s+(\d+|{COUNT_WORD_RE})(?:\s+(?:blocks?|cubes?))?\s*[.!]?\s*$"),
+     lambda m: f"make it {NUMBER_WORDS.get(m.group(1), m.group(1))} blocks"),
+    # "fine, a white cube on top": a cube added, said without a verb
+    (re.compile(rf"(?i)^\s*(?=(?:an?|another|one)\s+(?:(?:{COLOR_RE})\s+)?(?:cube|block|one)\s+(?:on\s+top|at\s+the\s+(?:top|bottom|end|start)"
+                r"|on\s+the\s+(?:left|right)(?:\s+end)?|at\s+the\s+(?:left|right)\s+end)\b)"), "add "),
+    # "now in the middle of the table": where the task goes now
+    (re.compile(r"(?i)^\s*(?:(?:now|and|then)\s+)*(?:in|to|at|into)\s+the\s+(?:middle|center|centre)(?:\s+of\s+the\s+(?:table|workspace))?"
+                r"\s*(?:instead|please|now)?\s*[.!]?\s*$"), "move it to the center of the table"),
+    # "the ends are fine but the middle one should be white": what stays is said, then the change
+    (re.compile(r"(?i)^.{1,40}?\b(?:is|are)\s+(?:fine|ok(?:ay)?|good|right|correct)\s*,?\s*(?:but|just|only)\s+"), ""),
     # "put that line on the right side of the table": the task's structure
     (re.compile(r"(?i)\b(put|move|shift|slide|place)\s+(?:that|this)\s+(?:line|row|tower|stack|circle|ring|pyramid|wall"
                 r"|grid|structure)\b"), r"\1 it"),
@@ -1421,7 +1459,7 @@ SAME_CUBES_RE = re.compile(r"\b(?:the\s+)?(?:same|these|those|the)\s+(?:\d+\s+)?
                            r"|\b(?:them|all\s+of\s+them)\b", re.IGNORECASE)
 """Words of a whole-task edit that keep the task's cubes ("same blocks, but make two towers of four")."""
 
-SAME_PATCH_RE = re.compile(r"(?i)\b(?:the\s+)?same\s+(?:goal\s+)?(?:patch|pad|mat|area|spot)\b")
+SAME_PATCH_RE = re.compile(r"(?i)\b(?:the\s+)?same\s+(?:goal\s+)?(?:patch|pad|mat|area|spot)\b|\b(?:that|this)\s+(?:goal\s+)?patch\b")
 """An edit's "the same patch": the task's one patch."""
 
 EDIT_INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (

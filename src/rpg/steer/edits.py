@@ -101,8 +101,9 @@ class Op:
 class RefCue:
     """What the edit says about the version it builds on."""
 
-    kind: str = "current"  # current | version | original | previous | search
+    kind: str = "current"  # current | version | original | previous | redo | search
     version: int | None = None
+    steps: int = 1  # how many versions back ("go back two versions"), for ``previous``
     colors: tuple[str, ...] = ()
     exact: bool = False
     material: str | None = None
@@ -234,6 +235,10 @@ def find_reference(t: str) -> RefCue:
     m = re.search(r"\b(?:the original|first version|base (?:task|version)|very first|initial version|the beginning|the start)\b", t)
     if m:
         return RefCue("original", phrase=m.group(0))
+    redo = re.fullmatch(r"\W*(?:(?:nvm|never\s*mind|ok(?:ay)?|actually|no|hmm+|wait)\W+)*redo(?:\s+(?:that|it|the\s+last\s+"
+                        r"(?:change|edit|step)|the\s+change))?(?:\s+(?:please|pls))?\W*", t)
+    if redo:  # "nvm, redo": the change the last undo took back
+        return RefCue("redo", phrase=redo.group(0).strip())
     this = re.search(r"\bth(?:is|e current|e latest)\s+(?:[a-z]+\s+)?version\b|\bcurrent\b", t)
     back = re.search(r"\b(?:go(?:ing)? back|back to|revert|return to|undo|earlier|previous|prior|older|used to)\b", t)
     named = re.search(r"\b(?:the|that)\s+((?:[a-z0-9'-]+\s+){1,5}?)(?:version|variant)\b", t)
@@ -245,6 +250,9 @@ def find_reference(t: str) -> RefCue:
     region = t[back.start():] if back is named else t[back.end():]
     cut = CUT_RE.search(region)
     region = region[: cut.start()] if cut else region
+    many = re.search(rf"\b(\d+|{COUNT_WORD_RE})\s+(?:versions?|steps?|edits?|changes?)(?:\s+(?:back|ago|earlier))?\b|\b(twice)\b",
+                     region)
+    region = region.replace(many.group(0), " ") if many else region  # "go back two versions": how far, not which
     colors = tuple(dict.fromkeys(canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", region)))
     mats = _materials(region)
     s = re.search(STRUCTURE_RE, region)
@@ -257,7 +265,8 @@ def find_reference(t: str) -> RefCue:
                  count=int(n.group(1)) if n else None, word=spelled[0].upper() if len(spelled) == 1 else None,
                  phrase=(back.group(0) + region).strip())
     if not (cue.colors or cue.material or cue.structure or cue.count or cue.word):
-        return RefCue("previous", phrase=back.group(0))
+        steps = 2 if many and many.group(2) else int(NUMBER_WORDS.get(many.group(1), many.group(1))) if many else 1
+        return RefCue("previous", phrase=back.group(0), steps=steps)  # "go back two versions": that many
     return cue
 
 
@@ -294,6 +303,10 @@ def _selector(text: str) -> dict | None:
         if re.search(r"\b(?:layers?|levels?|rows?|tiers?|storey|story|floor)\b", text):
             return {"layer": where}
         return {"position": where}
+    counted = re.match(rf"(?:(\d+|one|a|an|single)\s+(?:of\s+the\s+)?)({COLOR_RE})\s+(?:blocks?|cubes?|ones?)\b", text)
+    if counted:  # "one red block", "2 of the blue cubes": that many of that colour, not all of them
+        k = counted.group(1)
+        return {"color": canon_color(counted.group(2)), "count": int(k) if k.isdigit() else 1}
     items = item_sequence(text)
     if items:
         color, label = items[0]
@@ -641,7 +654,7 @@ def interpret(edit: str) -> EditPlan:
         edit = f"add {more.group(1)} more blocks"
     t = normalize_edit(edit)
     cue = find_reference(t)
-    fresh = FRESH_RE.search(t)
+    fresh = FRESH_RE.search(t) if cue.kind != "redo" else None  # "never mind, redo": the undone change, no new task
     if fresh:
         return EditPlan(edit, RefCue("none", phrase=fresh.group(0)), standalone=True, fresh=True)
     refuse_inexpressible(edit, t)
@@ -794,7 +807,14 @@ def _indices(spec: TaskSpec, sel: dict, anchors: frozenset[str] = frozenset()) -
             raise SteerError(f"a {spec.structure} of {n} cubes has no one middle cube; name the cube by colour")
         return [pos] if 0 <= pos < n else []
     if "color" in sel:
-        return [i for i, it in enumerate(spec.items) if it.color == sel["color"]]
+        idx = [i for i, it in enumerate(spec.items) if it.color == sel["color"]]
+        k = sel.get("count")
+        if k is not None and k < len(idx):
+            if _orders_cubes(spec):
+                raise SteerError(f"'{k} {sel['color']}' does not say which of the {spec.structure}'s {len(idx)} {sel['color']} cubes, "
+                                 "and its goal gives each cube a place; name it by place (e.g. \"the top one\")")
+            return idx[-k:]  # cubes of one colour in a structure that orders none: any k of them
+        return idx
     return [i for i, it in enumerate(spec.items) if it.label == sel.get("label")]
 
 

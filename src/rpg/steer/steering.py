@@ -149,9 +149,16 @@ def resolve_reference(plan: EditPlan, hist: FamilyHistory, fam: Family) -> tuple
     if cue.kind == "original":
         return 0, [f"explicit reference {cue.phrase!r}"]
     if cue.kind == "previous":
-        parent = hist.get(head).parent
-        ref = parent if parent is not None else max(head - 1, 0)
-        return ref, [f"back-reference {cue.phrase!r}: the version before v{head}"]
+        ref = head
+        for _ in range(cue.steps):  # "go back two versions": the parent's parent
+            parent = hist.get(ref).parent
+            ref = parent if parent is not None else max(ref - 1, 0)
+        return ref, [f"back-reference {cue.phrase!r}: {cue.steps} version{'s' if cue.steps > 1 else ''} before v{head}"]
+    if cue.kind == "redo":  # after going back to the head: the latest version built on it, whose change is made again
+        children = [v.version_id for v in hist.versions if v.parent == head and v.version_id > head]
+        if not children:
+            raise SteerError(f"{cue.phrase!r}: no later version was built on v{head}, so there is nothing to redo; say the change")
+        return children[-1], [f"redo {cue.phrase!r}: v{children[-1]}, the latest version built on v{head}"]
     if cue.kind == "search":
         for v in reversed(hist.versions):
             if v.version_id != head and _matches(fam, v.version_id, cue):
@@ -257,8 +264,8 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         _refuse_pivot_that_loses_cubes(plan.text, ref_schema, schema, intent, reference)
         return schema, text, intent
     if not plan.ops:
-        if plan.cue.kind != "current":  # "go back to version 1": that version as it is
-            return ref_schema, ref_schema.instruction, "tweak"
+        if plan.cue.kind != "current":  # "go back to version 1": that version as it is, named by the change from the head
+            return ref_schema, ref_schema.instruction, _change_from_head(fam, ref_schema)
         return _addition(plan, reference, ref_schema)
     if all(o.op == "keep" for o in plan.ops) and EDIT_KEEP_THEN_ADD_RE.search(plan.text):
         # "keep the tower, and also put a pink cube on the orange patch": the rest kept, the clause added
@@ -330,6 +337,25 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     except BadInput as exc:
         raise SteerError(str(exc).splitlines()[0]) from None
     return schema, instruction, intent_of_ops(plan.ops, ref_spec)
+
+
+def _change_from_head(fam: Family, schema: TaskSchema) -> str:
+    """The intent of going back to ``schema`` from the family's head: Tweak, Modify or Pivot as a
+    whole task stated against the head (two tasks with no editable structure: Tweak when their goals
+    relate the same kinds of things, else Modify)."""
+    from rpg.schema.meaning import meaning
+
+    head = fam.schema(fam.load().head)
+    new, now = extract(schema), extract(head)
+    if new is not None and now is not None and new.structure == now.structure:
+        if len(new.items) > len(now.items) and not Counter(now.items) - Counter(new.items):
+            return "extend"  # "redo" of an addition: the head's cubes and more
+        if Counter(new.items) == Counter(now.items) and new.items != now.items:
+            return "modify"  # "undo that" of a reordering: the same cubes in another order
+    if new is not None or now is not None:
+        return intent_of_standalone(new, now)
+    kinds = lambda s: sorted({a.split("(")[0] for a in meaning(s)})  # noqa: E731
+    return "tweak" if kinds(schema) == kinds(head) else "modify"
 
 
 def _stacks_a_new_cube_on_the_task(schema: TaskSchema, ref: TaskSchema) -> bool:
@@ -483,6 +509,11 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
 
     where = f"v{reference} ({ref_schema.goal_summary})"
     clause = addition_clause(plan.text)
+    cubes = [a for a in ref_schema.assets if a.kind != "goal_patch"]
+    if clause is None and len(cubes) == 1 and re.search(r"(?i)\b(?:next\s+to|beside|behind|in\s+front\s+of|on(?:to)?|under|"
+                                                          r"(?:left|right)\s+of|near)\s+it\b", plan.text):
+        one = f"the {cubes[0].color} block" if cubes[0].color else f"the {cubes[0].label} block"  # the task's one cube
+        clause = addition_clause(re.sub(r"(?i)\bit\b", one, plan.text))
     action = NO_GOAL_RE.search(plan.text.lower())
     if action is not None and not re.search(r"\b(?:on|onto|in|into|next|beside|behind|under|left|right|front|top)\b", plan.text.lower()):
         raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\" to {where}: it says no end state: "
