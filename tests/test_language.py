@@ -2543,3 +2543,20 @@ def test_a_task_written_as_a_config(text, expected):
 def test_a_config_says_nothing_the_domain_cannot_and_a_time_limit_is_refused(text, why):
     with pytest.raises(BadInput, match=why):
         parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a tower said by its ends with steps between (no word 'tower'): the middle cube had been dropped
+    ("purple on the bottom then pink then white on top", ["stack(purple,pink,white)"]),
+    # a wish for a placement, continued by "then ... on top"
+    ("i want the red one on the blue one and then the green one on top", ["stack(blue,red,green)"]),
+    # "in the middle of the two red ones" is between them
+    ("the yellow one goes in the middle of the two red ones", ["between(yellow;red,red)"]),
+    # Indian English: "keep" puts a cube somewhere, "do one thing" opens a request, "itself" stresses
+    ("Do one thing, keep the green cube on top of the red cube only.", ["stack(red,green)"]),
+    ("Do one thing, put the red cube and blue cube both on the yellow patch itself.", ["on_patch(blue,red,patch:yellow)"]),
+    ("Task 22 (Two-Relations): blue next to red; green far from red.", ["far_from(green,red)", "next_to(blue,red)"]),
+    ("About the tower: bottom is blue, top is red, middle is green. Please do.", ["stack(blue,green,red)"]),
+])
+def test_a_tower_by_its_ends_a_wish_between_two_and_indian_english(text, expected):
+    assert meaning(parse(text)) == expected

@@ -44,7 +44,7 @@ nice nicely neat tidy tidily maybe perhaps possibly need needs needed want wants
 try trying attempt anywhere somewhere flat flatly thanks thank cool great gonna wanna um uh yeah alright
 help wood wooden plastic properly securely stably steadily safely accurately completely entirely fully pls plz sure
 basically essentially literally honestly yo hello ty thx hiya howdy asap today tonight morning afternoon evening fine
-quick quickly haha lol good love exercise cheers tbh imo
+quick quickly haha lol good love exercise cheers tbh imo itself kindly
 """.split())
 """Further words with no meaning for the goal, each checked not to change what a task asks:
 hedges ("maybe"), wishes ("I need", "we'll", "let's"), praise ("nice"), "anywhere", "lay it
@@ -903,7 +903,8 @@ stays a spelled word)."""
 SHOUTING_MIN_LETTERS = 12
 
 FILLER_RE = re.compile(r"(?i)(?:^|(?<=[.!?]\s))(?:prego|allora|ecco|dai|senti|god\s+willing|inshallah|insha'?allah|yalla|omg|lol"
-                       r"|yo|hey\s+there|alright\s+then|okay\s+so|ok\s+so|aigoo|jeez)\s*[,!.]*\s*"
+                       r"|yo|hey\s+there|alright\s+then|okay\s+so|ok\s+so|aigoo|jeez|arre+y?|arey|do\s+one\s+thing)\s*[,!.]*\s*"
+                       r"|\b(?:(?:in\s+the\s+)?same\s+way)\s+(?=(?:put|place|keep|move|set)\b)"
                        r"|,?\s*\b(?:va\s+bene|capisci|ok\?|okay\?|right\?|yeah\?)\s*(?=[.!?]*\s*$)")
 """Interjections said around a task in several languages' habits ("Prego, ...", "Allora, ...",
 "..., va bene?", "God willing, ...", "omg"): dropped."""
@@ -1012,7 +1013,7 @@ LABEL_TASK_KIND_WORDS = frozenset(
     "stack stacking stacks unstack unstacking tower towers line lines row rows pile piles piling wall walls grid grids pyramid "
     "pyramids circle circles ring sort sorting sorted spell spelling word words letter letters digit digits number numbers "
     "place placing placement region regions between patch patches colour color colours colors build building relate arrange "
-    "arrangement any order move put".split())
+    "arrangement any order move put relation relations".split())
 """Words of a task's identifier that name the kind of task its text states ("Stacking-3",
 "Spell-Word", "Place-Region"): dropped with the identifier (the text says the task)."""
 

@@ -626,6 +626,17 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                     if not set(re.findall(r"[a-z']+", s.lower())) <= lexicon.CHAT_WORDS) or text
     asked_by = effectors + [(m.group("who"), "who asks for the task") for m in lexicon.SOMEONE_WANTS_RE.finditer(text)]
     text = lexicon.SOMEONE_WANTS_RE.sub("i want", text)
+    text = re.sub(rf"^\s*(?:about|regarding|re|concerning)\s+(?=the\s+(?:tower|stack|row|line|pyramid|wall|grid|circle)\s*:)", "", text)
+    # "the yellow one goes in the middle of the two red ones": between them
+    text = re.sub(rf"\bin\s+(?:the\s+)?(?:middle|center|centre)\s+of\s+(?:the\s+)?(?=(?:two|2|both)\s+(?:(?:{COLOR_RE})\s+)?(?:ones|cubes|blocks)\b"
+                  rf"|(?:the\s+)?(?:{COLOR_RE})\s+(?:one|cube|block)\s+and\s+the\s+(?:{COLOR_RE})\s+(?:one|cube|block)\b)", "between the ", text)
+    # "kindly keep the white cube in front of the black cube" (Indian English): put it there
+    text = re.sub(rf"\bkeep\s+(?=(?:the|a|an)\s+(?:(?:{COLOR_RE})\s+)?(?:one|cube|block)\s+(?:on|onto|on\s+top\s+of|in|at|next\s+to|beside|"
+                  r"behind|in\s+front\s+of|under|between|to\s+the\s+(?:left|right)\s+of)\b)", "put ", text)
+    # "i want the red one on the blue one and then ...": a placement said as a wish
+    text = re.sub(rf"\b(?:i|we)\s+(?:want|need|would\s+like|'d\s+like)\s+(?=(?:the|a|an)\s+(?:(?:{COLOR_RE})\s+)?(?:one|cube|block)?\s*"
+                  r"(?:on|onto|on\s+top\s+of|next\s+to|beside|behind|in\s+front\s+of|under|between|to\s+the\s+(?:left|right)\s+of)\b)",
+                  "put ", text)
     text = lexicon.POLITE_CONDITION_RE.sub(" ", text)
     text = lexicon.PREAMBLE_RE.sub("", text).strip()
     asked_by += [(m.group("what"), "what the task is for") for m in lexicon.PURPOSE_RE.finditer(text)]

@@ -200,7 +200,8 @@ def _identifier_label(instruction: str) -> tuple[str, str] | None:
     if m is None:
         return None
     words = re.findall(r"[a-z]+", re.sub(r"\"[^\"]*\"", " ", m.group("label")).lower())  # a quoted name says nothing
-    if all(w in lexicon.LABEL_JARGON or w in lexicon.LABEL_TASK_KIND_WORDS or len(w) == 1 or re.fullmatch(r"v|x|st|nd|rd|th", w)
+    if all(w in lexicon.LABEL_JARGON or w in lexicon.LABEL_TASK_KIND_WORDS or w in lexicon.NUMBER_WORDS or len(w) == 1
+           or re.fullmatch(r"v|x|st|nd|rd|th", w)
            for w in words):
         return m.group("label"), m.group("body")
     return None

@@ -777,7 +777,9 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
     Listing order is bottom to top unless the text says "top to bottom" or "in the reversed
     order", or marks a cube "on top" / "at the bottom" (a list with no order word at all is
     freed afterwards: :func:`rpg.schema.readers.free_listed_orders`)."""
-    if not f.has("stack", "tower", "stacked") or f.has("towers", "stacks", "each other", "patch", "patches", "pyramid"):
+    implied = re.search(r"\b(?:at|on)\s+the\s+(?:bottom|base)\b", f.text) and re.search(r"\b(?:on\s+top|at\s+the\s+top)\b", f.text) \
+        and re.search(r"\bthen\b", f.text)  # "purple on the bottom then pink then white on top": a tower by its ends
+    if not (f.has("stack", "tower", "stacked") or implied) or f.has("towers", "stacks", "each other", "patch", "patches", "pyramid"):
         return False
     if "@" in mark_references(f.text) or len(DESCRIBED_TOWER_RE.findall(f.text)) >= 2:  # relations, or several towers
         return False
