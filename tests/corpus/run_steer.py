@@ -76,6 +76,7 @@ DEVELOPMENT = {
     "stranger5": ("steer_stranger5.yaml", "STRANGER steering set 5 (steer_stranger5.yaml, development material)"),
     "stranger6": ("steer_stranger6.yaml", "STRANGER steering set 6 (steer_stranger6.yaml, development material)"),
     "stranger7": ("steer_stranger7.yaml", "STRANGER steering set 7 (steer_stranger7.yaml, development material)"),
+    "stranger8": ("steer_stranger8.yaml", "STRANGER steering set 8 (steer_stranger8.yaml, development material)"),
 }
 UNSEEN = HERE / "steer_unseen.yaml"
 SPLITS = HERE / "splits.yaml"
