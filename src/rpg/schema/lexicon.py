@@ -100,7 +100,8 @@ SYNONYMS: dict[str, str] = {
     "brick": "block", "bricks": "blocks", "ground": "table", "floor": "table", "tabletop": "table",
     "desk": "table", "rightmost": "right", "leftmost": "left", "frontmost": "front", "backmost": "back",
     "furthest": "far", "farthest": "far", "lastly": "finally", "afterwards": "then", "afterward": "then",
-    "subsequently": "then", "organize": "arrange", "organise": "arrange", "organized": "arranged",
+    "subsequently": "then", "organize": "arrange", "organise": "arrange", "organized": "arranged", "rearrange": "arrange",
+    "rearranged": "arranged", "reorder": "arrange", "reorganize": "arrange", "reorganise": "arrange",
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
     "uppermost": "topmost", "lowermost": "bottommost", "upon": "on", "right-hand": "right", "left-hand": "left",
     "midpoint": "center", "tower's": "tower", "within": "in", "inside": "in", "quadrant": "corner", **TYPOS, **ABBREVIATIONS,
@@ -1397,6 +1398,18 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "can the middle one be red instead of white?": a change asked as a question
     (re.compile(r"(?i)\b(?:can|could)\s+(the\s+[^?]+?)\s+be\s+((?:an?\s+)?[a-z]+(?:\s+(?:instead(?:\s+of\s+[a-z]+)?|too))?)\s*\?\s*$"),
      r"make \1 \2"),
+    # "rearrange it to spell RATS": the word changed
+    (re.compile(r"(?i)\b(?:re)?(?:arrange|order|shuffle)\s+(it|them|the\s+(?:letters|cubes|blocks|line|row))\s+(?:to|so\s+(?:it|they)|into)\s+"
+                r"(?:spell|say|read)s?\b"), r"make \1 spell"),
+    # "3 more yellows on top": that many more cubes of a colour
+    (re.compile(rf"(?i)^\s*(?:and\s+|plus\s+)?(\d+|{COUNT_WORD_RE})\s+more\s+({COLOR_RE})s?(?:\s+(?:ones|blocks|cubes))?\s+(?=on\s+top|at\s+the\s+)"),
+     lambda m: f"add {NUMBER_WORDS.get(m.group(1), m.group(1))} more {m.group(2)} blocks "),
+    # "take out the yellow one", "leave out the red cube": that cube removed
+    (re.compile(r"(?i)\b(?:take|pull|leave)\s+out\s+(?=the\s)"), "remove "),
+    # "move it to the back": the back of the table (a place alone after a move of the whole task)
+    (re.compile(r"(?i)\b(move|put|shift|slide|bring)\s+(it|them|everything|the\s+(?:whole\s+)?(?:tower|stack|line|row|circle|pyramid|wall|grid))\s+"
+                r"(?:to|at|towards?)\s+the\s+(front|back|rear|left|right)(?:\s+(?:side|edge|half|part))?\s*(?:instead|please|now)?\s*[.!]?\s*$"),
+     r"\1 \2 to the \3 of the table"),
     # "throw in a yellow on top", "toss a black one on the patch too": a cube added (throwing "the red cube" stays refused)
     (re.compile(r"(?i)\b(?:throw|toss|chuck|pop|stick)\s+(?:in\s+)?(?=(?:a|an|another|one)\s)"), "put "),
     # "green and blue are backwards, swap them", "you've got the orange and the pink backwards": those two swapped

@@ -627,6 +627,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     asked_by = effectors + [(m.group("who"), "who asks for the task") for m in lexicon.SOMEONE_WANTS_RE.finditer(text)]
     text = lexicon.SOMEONE_WANTS_RE.sub("i want", text)
     text = re.sub(r"^\s*(?:about|regarding|re|concerning)\s+(?=the\s+(?:tower|stack|row|line|pyramid|wall|grid|circle)\s*:)", "", text)
+    text = re.sub(r"\b(the|that|this)\s+(?:whole|entire|complete)\s+(?=(?:stack|tower|row|line|circle|pyramid|wall|grid|structure)\b)",
+                  r"\1 ", text)  # "put the whole stack on the red patch": the stack
     # "the yellow one goes in the middle of the two red ones": between them
     text = re.sub(rf"\bin\s+(?:the\s+)?(?:middle|center|centre)\s+of\s+(?:the\s+)?(?=(?:two|2|both)\s+(?:(?:{COLOR_RE})\s+)?(?:ones|cubes|blocks)\b"
                   rf"|(?:the\s+)?(?:{COLOR_RE})\s+(?:one|cube|block)\s+and\s+the\s+(?:{COLOR_RE})\s+(?:one|cube|block)\b)", "between the ", text)

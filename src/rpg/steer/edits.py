@@ -483,8 +483,8 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("swap", {"a": _selector(swap.group("a")), "b": _selector(swap.group("b"))}))
     elif re.search(r"\b(?:swap|switch|exchange|flip)\s+(?:the|their|its)\s+(?:2\s+)?colou?rs\b", t) and not reverse:
         ops.append(Op("swap", {"colors": True}))  # "swap the colours": the structure's two colours exchanged
-    recolor_all = re.fullmatch(rf"(?:(?:ok|okay|actually|now|maybe|hmm)\s+)*(?:use\s+|try\s+|with\s+|make\s+it\s+)?(?P<new>{COLOR_RE})"
-                               rf"(?:\s+(?:blocks|cubes|ones))?\s+instead\W*", t)
+    recolor_all = re.fullmatch(rf"(?:(?:ok|okay|actually|now|maybe|hmm)\s+)*(?:use\s+|try\s+|with\s+|make\s+it\s+)?(?:an?\s+)?(?P<new>{COLOR_RE})"
+                               rf"(?:\s+(?:blocks?|cubes?|ones?))?\s+instead\W*", t)
     if recolor_all:
         ops.append(Op("recolor", {"select": {"all": True, "uniform": True}, "to": {"color": canon_color(recolor_all.group("new"))}}))
     instead = re.search(rf"\b(?:use\s+)?(?:an?\s+|the\s+)?(?P<new>{COLOR_RE})(?:\s+(?:block|cube)s?)?\s+(?:instead of|rather than|in place of)\s+(?:the\s+)?(?P<old>{COLOR_RE})\b", t)

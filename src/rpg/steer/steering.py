@@ -280,7 +280,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     cubes = [a for a in ref_schema.assets if a.kind == "colored_cube"]
     if ref_spec is None and len(cubes) == 1 and len(ref_schema.assets) - 1 == sum(
             a.kind == "goal_patch" for a in ref_schema.assets) and all(
-            o.op == "recolor" and o.params["select"] == {"all": True} for o in plan.ops):
+            o.op == "recolor" and o.params["select"].get("all") for o in plan.ops):
         for o in plan.ops:  # "make the cube white" of a task with one cube: that cube
             o.params["select"] = {"color": cubes[0].color}
     if ref_spec is None and all(o.op == "remove" and set(o.params["select"]) == {"color"} for o in plan.ops):
