@@ -373,6 +373,9 @@ def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     "Add one blue block under the red block. Then add 3 green blocks on top of red block.",
     # a cube beside a cube on a patch: it had been laid out beside where that cube stood before the patch (3 cm off)
     "Put a red cube on the green patch, then a purple cube next to the red block",
+    # two cubes next to one: the second had been laid out where the first stood
+    "put the green cube next to the orange cube and the blue cube next to the orange cube",
+    "put the red cube left of the blue cube and the green cube left of the blue cube",
 ])
 def test_new_phrasings_compile_to_valid_tasks(text, tmp_path):
     r = compile_instruction(text, tmp_path)

@@ -2560,3 +2560,28 @@ def test_a_config_says_nothing_the_domain_cannot_and_a_time_limit_is_refused(tex
 ])
 def test_a_tower_by_its_ends_a_wish_between_two_and_indian_english(text, expected):
     assert meaning(parse(text)) == expected
+
+
+def test_a_tower_with_one_colour_said_once_invents_no_second_cube():
+    """"a tower, red at the bottom" had been a tower of two red cubes."""
+    with pytest.raises(ParseError):
+        parse("a tower, red at the bottom")
+    assert meaning(parse("stack the red blocks")) == ["stack(red,red)"]
+
+
+@pytest.mark.parametrize("text,expected", [
+    # the order read, said digit by digit, wins over an order said before it (it had built the row 3, 1, 2)
+    ("The cubes are in the order 3, 1, 2. Rearrange them into a row that reads 1 2 3 from left to right.",
+     ["line[left_to_right](1,2,3)", "reads(1,2,3;direction=left_to_right,face=up,text=123)"]),
+    ("Put the letter cubes T, A, C in a row so they read C A T from left to right",
+     ["line[left_to_right](C,A,T)", "reads(C,A,T;direction=left_to_right,face=up,text=CAT)"]),
+    ("rearrange the red, green and blue cubes into a line", ["line(blue,green,red)"]),  # 'rearrange' had been an action
+])
+def test_the_order_read_wins_and_rearrange_arranges(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_start_of_digit_cubes_in_a_row_is_refused_not_read_as_the_goal():
+    with pytest.raises(BadInput, match="starting scene"):
+        parse("The digit cubes start in the order 3, 1, 2. The policy has to rearrange them into a row that reads 1 2 3 "
+              "from left to right.")

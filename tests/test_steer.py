@@ -1160,3 +1160,28 @@ def test_edits_that_stay_refused(tmp_path, base, edit, match):
     fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
     with pytest.raises(SteerError, match=match):
         steer(fam.path, edit)
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # steer_stranger8's silent errors
+    ("Put the red cube in front of the blue cube", ["no, on the left of the blue one"], ("modify", ["left_of(red,blue)"])),
+    ("Put the blue cube on the red patch", ["make the cube green and the patch yellow"], ("tweak", ["on_patch(green,patch:yellow)"])),
+    ("Put the letter cubes O, N, E in a row so they read ONE", ["put a T before it so it says TONE"],
+     ("extend", ["line[left_to_right](T,O,N,E)", "reads(T,O,N,E;direction=left_to_right,face=up,text=TONE)"])),
+    ("Put the green cube next to the orange cube", ["add a blue one nxt to the orange one as well"],
+     ("extend", ["next_to(blue,orange)", "next_to(green,orange)"])),
+    ("Place five cubes in a row from left to right: red, orange, yellow, green, blue", ["now as a tower, red at the bottom"],
+     ("pivot", ["stack(red,orange,yellow,green,blue)"])),
+    # a sorted line of named cubes stays a line of them (a sort had added a judge of their up faces nobody asked for)
+    ("Put the digit cubes 4, 2, 3 and 1 in a row, sorted from smallest to largest, left to right",
+     ["descending now", "add a 5 and keep it largest first"], ("extend", ["line[left_to_right](5,4,3,2,1)"])),
+    ("Put the letter cubes B, C, A in a row from left to right", ["sort them alphabetically"], ("modify", ["line[left_to_right](A,B,C)"])),
+])
+def test_steer_stranger8_silent_errors_are_read_as_meant(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+def test_a_cube_made_bigger_stays_a_size(tmp_path):
+    fam = Family(create_family(compile_instruction("Stack four yellow cubes", tmp_path, name="fam").path).path)
+    with pytest.raises(SteerError, match="size"):
+        steer(fam.path, "can you make the bottom one 2x bigger so the tower is more stable")  # it had made the tower taller

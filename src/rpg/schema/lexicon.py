@@ -66,7 +66,7 @@ TYPOS: dict[str, str] = {
     "blu": "blue", "gren": "green", "yelow": "yellow", "purpel": "purple", "cirlce": "circle", "cricle": "circle",
     "towr": "tower", "pyramd": "pyramid", "rite": "right", "da": "the", "teh": "the", "ontop": "on top",
     "insted": "instead", "instaed": "instead", "isntead": "instead", "mak": "make", "midle": "middle", "middel": "middle",
-    "swtich": "switch", "swich": "switch", "swithc": "switch", "revese": "reverse", "reverce": "reverse",
+    "nxt": "next", "swtich": "switch", "swich": "switch", "swithc": "switch", "revese": "reverse", "reverce": "reverse",
 }
 """Misspellings of a word of the vocabulary, each read as that word (curated, never a guess; the
 steering corrects an edit's words with this table before reading it)."""
@@ -1406,10 +1406,6 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
      lambda m: f"add {NUMBER_WORDS.get(m.group(1), m.group(1))} more {m.group(2)} blocks "),
     # "take out the yellow one", "leave out the red cube": that cube removed
     (re.compile(r"(?i)\b(?:take|pull|leave)\s+out\s+(?=the\s)"), "remove "),
-    # "move it to the back": the back of the table (a place alone after a move of the whole task)
-    (re.compile(r"(?i)\b(move|put|shift|slide|bring)\s+(it|them|everything|the\s+(?:whole\s+)?(?:tower|stack|line|row|circle|pyramid|wall|grid))\s+"
-                r"(?:to|at|towards?)\s+the\s+(front|back|rear|left|right)(?:\s+(?:side|edge|half|part))?\s*(?:instead|please|now)?\s*[.!]?\s*$"),
-     r"\1 \2 to the \3 of the table"),
     # "throw in a yellow on top", "toss a black one on the patch too": a cube added (throwing "the red cube" stays refused)
     (re.compile(r"(?i)\b(?:throw|toss|chuck|pop|stick)\s+(?:in\s+)?(?=(?:a|an|another|one)\s)"), "put "),
     # "green and blue are backwards, swap them", "you've got the orange and the pink backwards": those two swapped
@@ -1487,7 +1483,8 @@ EDIT_INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "not a motion or an angle"),
     ("size", r"\b(?:twice|thrice|\d+\s+times|half)\s+(?:as\s+)?(?:big|large|small|tall|wide|long|heavy)\b"
              r"|\b(?:bigger|larger|smaller|tinier|heavier|lighter)\s+(?:blocks?|cubes?|ones?)\b"
-             r"|\b(?:blocks?|cubes?|each\s+(?:block|cube))\s+(?:\w+\s+){0,2}?(?:bigger|larger|smaller|tinier|heavier)\b",
+             r"|\b(?:blocks?|cubes?|ones?|each\s+(?:block|cube))\s+(?:\w+\s+){0,2}?(?:bigger|larger|smaller|tinier|heavier)\b"
+             r"|\b\d+\s*x\s+(?:bigger|larger|smaller|wider|heavier)\b",
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
     ("quantity", r"\b(?:closer|further|farther|nearer)\b|\b(?:gaps?|spacing|space\s+between|distance)\b|\bspread\s+(?:them|it|out)\b",
      "asks for a distance: rpg's relations are qualitative (next to, far from) with no distance or quantity to change"),

@@ -76,6 +76,8 @@ class TaskSpec:
         piles_by: ``color`` or ``type`` for piles.
         outliers: per-pile outliers (piles).
         word: the word a line spells, if any.
+        named: a line whose labelled cubes the words name one by one, in order (no sort judged
+            apart from it): a sorted line of them is stated by listing them.
     """
 
     structure: str
@@ -89,6 +91,7 @@ class TaskSpec:
     piles_by: str | None = None
     outliers: int = 0
     word: str | None = None
+    named: bool = False
 
     @property
     def material(self) -> str:
@@ -296,7 +299,10 @@ class Line(StructureKind):
         word = reads.text if reads and reads.text.isalpha() and len(reads.text) >= 2 and not sort else None
         if main.order is None:
             return TaskSpec("line", seq(main.objects), direction=None, axis=main.axis or "y")
-        return TaskSpec("line", seq(main.objects), direction=main.order, word=word, **parts.ordering)
+        named = not parts.ordering and main.order in ("left_to_right", "right_to_left", "front_to_back", "back_to_front") \
+            and all(i.label for i in seq(main.objects))  # labels listed one by one, no sort judged apart
+        ordering = _sorted_labels(seq(main.objects)) if named and not reads else parts.ordering  # a word's order is no sort
+        return TaskSpec("line", seq(main.objects), direction=main.order, word=word, named=named, **ordering)
 
     def render(self, spec):
         n = len(spec.items)
@@ -314,6 +320,10 @@ class Line(StructureKind):
         if spec.ordering == "color":
             reverse = " in reverse order" if spec.descending else ""
             return f"Align {n} blocks in a color gradient {d}{reverse}: {', '.join(spec.colors())}"
+        if spec.named and spec.ordering in ("label", "number") and all(i.label for i in spec.items) and _sorted_labels(spec.items):
+            what = "letter" if spec.ordering == "label" else "digit"  # the cubes named: a line of them in that order
+            labels = [i.label for i in spec.items]
+            return f"Put the {what} cubes {', '.join(labels[:-1])} and {labels[-1]} in a row {d}"
         if spec.ordering:
             what = {"label": "letter cubes in alphabetical", "number": "digit cubes in increasing numerical"}[spec.ordering]
             return f"Arrange {n} {what} order {d}" + (" in reverse" if spec.descending else "")
@@ -493,6 +503,26 @@ def structure_of_word(word: str) -> str:
     """
     w = word.lower()
     return STRUCTURE_WORDS[w] if w in STRUCTURE_WORDS else STRUCTURE_WORDS[w[:-1]]
+
+
+def _sorted_labels(items) -> dict:
+    """``{"ordering": "number" | "label", "descending": bool}`` when ``items`` are two or more digit or
+    letter cubes whose labels stand strictly sorted in their listed order (a line of 4, 3, 2, 1 is
+    sorted, descending, by number); else ``{}``."""
+    labels = [i.label for i in items]
+    if len(labels) < 2 or not all(labels) or len(set(labels)) < len(labels):
+        return {}
+    if all(lab.isdigit() for lab in labels):
+        key, values = "number", [int(lab) for lab in labels]
+    elif all(lab.isalpha() for lab in labels):
+        key, values = "label", labels
+    else:
+        return {}
+    if values == sorted(values):
+        return {"ordering": key, "descending": False}
+    if values == sorted(values, reverse=True):
+        return {"ordering": key, "descending": True}
+    return {}
 
 
 def extract(schema: TaskSchema) -> TaskSpec | None:

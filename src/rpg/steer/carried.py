@@ -222,7 +222,8 @@ def render(spec: TaskSpec, carried: Carried, parse) -> tuple[str, TaskSchema]:
             if (got.structure, got.dims, sorted(map(str, got.items))) == (spec.structure, spec.dims, sorted(map(str, spec.items))) \
                     and _layers_exact(spec, schema):
                 return text, schema
-        elif got == spec or _same_statement(got, spec) or (
+        elif got == spec or _same_statement(got, spec) or (got.named and replace(  # a listed line's sort is only inferred
+                got, ordering=spec.ordering, descending=spec.descending, named=spec.named) == spec) or (
                 len(set(spec.items)) == 1 and replace(got, direction=spec.direction, axis=spec.axis) == spec):
             return text, schema  # read back as stated (an order over identical cubes says nothing)
         last = f"the parser reads {text!r} as {schema.goal_summary!r}"

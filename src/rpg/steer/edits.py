@@ -345,7 +345,8 @@ def _region_of(t: str) -> str | None:
         side = re.match(r"(?:on|to|at|in|along)\s+the\s+(?:far\s+)?(left|right|front|back|middle|center|centre)\b(?!\s+(?:of|end)\b)",
                         where)
         return region_name(*((None, side.group(1)) if side.group(1) in ("left", "right", "middle", "center", "centre")
-                             else (side.group(1), None))) if side and structure else None
+                             else (side.group(1), None))) if side and (structure or side.group(1) in ("front", "back")) else None
+        # ("move it to the back" of a structure: the back of the table; "put it on the left" may be a cube to an end)
     return _edit_region(" " + where + " ")
 
 
@@ -371,6 +372,7 @@ def read_ops(t: str) -> list[Op]:
     source = _materials(substitution.group(1)) if substitution else []
     mats = [m for m in _materials(t) if m not in source]
     word = re.search(r"\b(?:change|make|turn|set)\s+(?:the\s+)?word\s+(?:to|into)\s+'?([a-z]{2,})'?|\bspell\s+'?([a-z]{2,})'?\s+instead\b"
+                     r"|\bso\s+(?:that\s+)?(?:it|they|the\s+(?:word|line|row))\s+(?:says|spells|reads|say|spell|read)\s+'?([a-z]{2,})'?"
                      r"|\b(?:change|make|turn|switch)\s+(?:it|that|this)\s+(?:to\s+|into\s+)?(?:spell\s+)?'([a-z]{2,})'"
                      r"|\b(?:make|have|let)\s+(?:it|them|the\s+(?:line|row|cubes|blocks|letters))\s+(?:spell|say|read)\s+(?:out\s+)?'([a-z]{2,})'"
                      r"|\b(?:make|have|let)\s+(?:it|them|the\s+(?:line|row|cubes|blocks|letters))\s+spell\s+(?:out\s+)?"
@@ -398,6 +400,11 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("ordering", {"key": "label", "descending": bool(re.search(r"\b(?:reverse|descending|backwards?|z to a)\b", t))}))
     elif re.search(r"\bnumeric(?:al)?(?:ly)?\b|\b(?:increasing|ascending|decreasing|descending) order\b", t):
         ops.append(Op("ordering", {"key": "number", "descending": bool(re.search(r"\b(?:decreasing|descending|reverse)\b", t))}))
+    elif re.search(r"\b(?:ascending|descending|increasing|decreasing)\b|\b(?:largest|biggest|highest|smallest|lowest)\s+(?:one\s+)?first\b"
+                   r"|\b(?:high|low)(?:est)?\s+to\s+(?:low|high)(?:est)?\b", t):
+        # "descending now", "largest first": the order of the task's own labels (letters or digits)
+        ops.append(Op("ordering", {"key": "auto", "descending": bool(re.search(
+            r"\b(?:decreasing|descending|largest|biggest|highest|high(?:est)?\s+to\s+low)\b", t))}))
     elif re.search(r"\b(?:sort|order|arrange|group)\w*\s+(?:them\s+|it\s+)?by\s+(?:different\s+|their\s+)?colou?rs?\b|\bcolou?r gradient\b|\brainbow\b|\b(?:each|every)\s+(?:row|layer|level)\b[^.;]*\bdifferent colou?r", t):
         ops.append(Op("ordering", {"key": "color", "descending": False}))
     if mats and not reverse and not ncolors:
@@ -551,9 +558,16 @@ def read_ops(t: str) -> list[Op]:
     stack_all = re.search(r"\b(?:stack|pile)\s+(?:them|all|everything|(?:all\s+)?the\s+(?:blocks|cubes))(?:\s+(?:up|instead|together"
                           r"|on top of each other|on top of one another))*\W*$", t) or (
         SAME_ORDER_RE.search(t) and re.search(r"\b(?:stack|pile)\s+(?:them|all|everything)\b", t))  # "stack them, in the same order"
+    end_role = rf"(?:\s*,?\s*(?:with\s+)?(?:the\s+)?(?P<end_c>{COLOR_RE})\s+(?:block\s+|cube\s+|one\s+)?(?:at|on)\s+(?:the\s+)?" \
+        r"(?P<end_w>bottom|base|top|left|right))?"  # "now as a tower, red at the bottom": the order kept from that end
     bare_shape = re.fullmatch(r"(?:(?:now|ok|okay|actually|then|and|maybe|rather)\s+)*"
                               r"(?:(?:the\s+)?same\s+(?:blocks|cubes|bricks)\s*,?\s*(?:but\s+)?)?(?:as\s+|in\s+|into\s+)?an?\s+"
-                              + STRUCTURE_RE + r"(?:\s+(?:instead|now|please))*\W*", t)
+                              + STRUCTURE_RE + r"(?:\s+(?:instead|now|please))*" + end_role + r"\W*", t)
+    if stack_all is None:  # "stack them with blue at the bottom"
+        stack_all = re.fullmatch(r"(?:(?:now|ok|okay|actually|then|and)\s+)*(?:stack|pile)\s+(?:them|all|everything|(?:all\s+)?the\s+"
+                                 r"(?:blocks|cubes))(?:\s+up)?" + end_role + r"\W*", t)
+    ended = next((m for m in (bare_shape, stack_all) if m is not None and "end_c" in m.re.groupindex and m.group("end_c")), None)
+    ended_order = {"keep_order": True, "end": (canon_color(ended.group("end_c")), ended.group("end_w"))} if ended else {}
     wall = re.search(r"\b(?:make|turn|build|form|change|rearrange|arrange|reshape|into|as)\b[^.;]*?\ban?\s+wall\b", t)
     wide, high = re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+)?wide\b", t), re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+)?(?:high|tall)\b", t)
     if wall and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
@@ -564,9 +578,9 @@ def read_ops(t: str) -> list[Op]:
     elif shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
         ops.append(Op("structure", {"to": structure_of_word(shape.group(1)), **_kept_order(t), **_stated_on(t)}))
     elif stack_all and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
-        ops.append(Op("structure", {"to": "tower", **_kept_order(t), **_stated_on(t)}))  # "stack them": the task's cubes
+        ops.append(Op("structure", {"to": "tower", **_kept_order(t), **_stated_on(t), **ended_order}))  # "stack them": the task's cubes
     elif bare_shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
-        ops.append(Op("structure", {"to": structure_of_word(bare_shape.group(1))}))  # "now a line instead"
+        ops.append(Op("structure", {"to": structure_of_word(bare_shape.group(1)), **ended_order}))  # "now a line instead"
     word = next((o.params["word"] for o in ops if o.op == "word"), None)
     if word:  # "make it ROBOTS, add an S": the added letters say how the new word is made, not more letters
         ops = [o for o in ops if not (o.op == "add" and o.params.get("items") and all(
@@ -620,6 +634,15 @@ def intent_of_ops(ops: list[Op], spec: TaskSpec | None = None) -> str:
     """The strongest intent of the operations (a structure op to the reference's own
     structure changes nothing and does not count)."""
     ops = [o for o in ops if not (spec is not None and o.op == "structure" and o.params["to"] == spec.structure)]
+    if spec is not None:  # "add a 5 and keep it largest first": the order it has, kept
+        kept = {"auto": "label" if spec.material == "letters" else "number"}
+        ops = [o for o in ops if not (o.op == "ordering" and spec.ordering == kept.get(o.params["key"], o.params["key"])
+                                      and bool(spec.descending) == o.params.get("descending", False) and len(ops) > 1)]
+    old = (spec.word or "".join(it.label or "" for it in spec.items)) if spec is not None else ""
+    grown = [o for o in ops if o.op == "word" and old and len(o.params["word"]) > len(old)
+             and (o.params["word"].startswith(old) or o.params["word"].endswith(old))]
+    if grown and len(grown) == len(ops):  # "make it DOGS", "put a T before it so it says TONE": letters added to the word
+        return "extend"
     return max((OP_INTENT[o.op] for o in ops), key=INTENTS.index, default="tweak")
 
 
@@ -1045,9 +1068,9 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
                 spec = replace(spec, ordering="label")
             elif spec.ordering in ("label", "number") and spec.material == "colors":
                 spec = replace(spec, ordering=None)
-            spec = replace(spec, word=None, layer_colors=spec.layer_colors and spec.material == "colors")
+            spec = replace(spec, word=None, layer_colors=spec.layer_colors and spec.material == "colors", named=False)
         elif o.op == "ordering":
-            key = p["key"]
+            key = p["key"] if p["key"] != "auto" else "label" if spec.material == "letters" else "number"
             if spec.kind.grouped:
                 spec = replace(spec, piles_by="color" if key == "color" else "type")
                 continue
@@ -1058,8 +1081,8 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
                 spec = spec.with_items([Item(color=GRADIENT_ORDER[i % len(GRADIENT_ORDER)]) for i in range(len(spec.items))])
                 continue
             need = {"label": "letters", "number": "digits", "color": "colors"}[key]
-            if spec.material != need:
-                spec = spec.with_items(_material_items(need, len(spec.items), spec.colors()))
+            if spec.material != need:  # new cubes nobody named one by one
+                spec = replace(spec.with_items(_material_items(need, len(spec.items), spec.colors())), named=False)
             if key == "color" and spec.structure == "line":
                 spec = spec.with_items(_material_items("colors", len(spec.items), [c for c in DEFAULT_COLORS]))
             spec = replace(spec, ordering=key, descending=p.get("descending", False), word=None, layer_colors=False,
@@ -1275,4 +1298,8 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             if spec.structure != "piles":
                 raise SteerError("outliers apply to piles; this task has a " + spec.structure)
             spec = replace(spec, outliers=p["per_pile"])
+    if spec.structure == "line" and spec.ordering in ("label", "number") and spec.items and all(i.label for i in spec.items):
+        # a sorted line of named cubes: its cubes stand in that order ("descending now", "add a 5 and keep it largest first")
+        key = (lambda i: int(i.label)) if spec.ordering == "number" and all(i.label.isdigit() for i in spec.items) else (lambda i: i.label)
+        spec = spec.with_items(sorted(spec.items, key=key, reverse=spec.descending))
     return spec

@@ -137,7 +137,9 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         if kind is None or len(named) > 1 or (named and named[0] not in by_color):
             return None  # no relation, or cubes of its own: a whole task, not an edit of this one
         pronoun = re.search(r"\b(?:it|them)\b", t)
-        if named and not pronoun and by_color[named[0]] == obj:  # "move the yellow block behind": the subject now
+        anchor = named and re.search(rf"\b(?:of|to|behind|beside|near|under|above|below|on|onto|from|than)\s+the\s+{named[0]}\s+"
+                                     r"(?:block|cube|one)\b", t)  # "on the left of the blue one": blue stays where it is
+        if named and not pronoun and not anchor and by_color[named[0]] == obj:  # "move the yellow block behind": the subject now
             subject, obj = obj, subject
         if (subject, kind) == (rel.subject, rel.kind):
             return None
@@ -281,6 +283,11 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         said = {canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", t)}
         if should and not said <= {new, pcolor}:
             return None  # "the red patch should be green" of a yellow patch, "... and the cube green": more than the patch
+        cube = re.search(rf"\b(?:cube|block|one)\s+(?:to\s+|into\s+|be\s+)?({COLOR_RE})\b(?!\s+(?:goal\s+)?patch)", t)
+        if not said <= {new, pcolor} | set(colors):  # "make the cube green and the patch yellow": the cube's colour too
+            if cube is None or len(colors) != 1 or not said <= {new, pcolor, canon_color(cube.group(1))} | set(colors):
+                return None
+            colors = [canon_color(cube.group(1))]
         if new != pcolor:
             pcolor, intent = new, "tweak"
     if re.search(r"\blong(?:er)?\b", t) and shape != "long":

@@ -34,7 +34,8 @@ START_SENTENCE_RE = re.compile(
     r"|(?:scene\s+)?init(?:ial)?(?:\s+(?:state|scene|config(?:uration)?))?\s*:"
     r"|(?:setup|start|before|init)\s*:|(?:the\s+)?(?:scene|episode|table|task)\s+(?:starts|begins)\s+(?:with|as)"
     r"|(?:it\s+)?(?:starts|begins)\s+(?:out\s+)?with(?=\s+(?:the|a|an|one)\s)"
-    r"|we\s+start\s+(?:with|from)|(?:the\s+)?(?:cubes|blocks)\s+start(?:\s+out)?(?:\s+as|\s+in|\s*:)?)\s*[:,\-\u2014]?\s*")
+    r"|we\s+start\s+(?:with|from)|(?:the\s+)?(?:(?:letter|digit|number|colou?red)\s+)?(?:cubes|blocks)\s+start(?:\s+out)?(?:\s+as|\s+in|\s*:)?)"
+    r"\s*[:,\-\u2014]?\s*")
 """Words that open a statement of the initial scene ("Initially, ...", "At the start, ...",
 "Initial state: ...", "Setup: ...", "The scene starts with ...")."""
 

@@ -274,6 +274,10 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         n = stated_count(f, default=None) or (max(m.count for m in ms) if ms else 2)
         n = max(n, 2)
         if ms and ms[0].color and all(m.color == ms[0].color for m in ms):
+            if stated_count(f, default=None) is None and sum(m.count for m in ms) < n and not re.search(
+                    rf"\b(?:{ms[0].color})s\b|\b(?:{ms[0].color})\s+(?:blocks|cubes|ones|towers?|stacks?|columns?)\b"
+                    rf"|\b(?:towers?|stacks?|columns?)\s+of\s+(?:{ms[0].color})\b", said):
+                return False  # "a tower with red at the bottom": one red cube said, the tower's other cubes nobody named
             names = [r.obj(ms[0], i) for i in range(n)]
         elif len(ms) > n and len({(m.color, m.label) for m in ms}) == len(ms):  # "a tower of red, green and blue"
             names = [r.obj(m) for m in ms]
@@ -488,6 +492,25 @@ def _chains(edges: list[tuple[str, str]]) -> list[list[str]] | None:
     return chains
 
 
+def _free_offset(placed: dict[str, tuple[float, float]], anchor: tuple[float, float], offset: tuple[float, float],
+                 relation: str, sign: int) -> tuple[float, float]:
+    """Where a cube related to ``anchor`` goes: ``anchor`` + ``sign`` * ``offset`` (m, table frame),
+    or, when a cube is already there ("the green cube next to the orange one, and a blue one next
+    to it too"), the same relation's next free spot: the other sides for next to and far from,
+    shifted sideways for left of / right of / in front of / behind (which only constrain one axis)."""
+    dx, dy = sign * offset[0], sign * offset[1]
+    if relation in ("next_to", "far_from"):
+        candidates = [(dx, dy), (-dx, -dy), (dy, dx), (-dy, -dx)]
+    else:
+        side = C.CUBE_EDGE + 0.02
+        candidates = [(dx, dy)] + [(dx + s * side * (dy != 0), dy + s * side * (dx != 0)) for s in (1, -1, 2, -2)]
+    for ox, oy in candidates:
+        spot = (anchor[0] + ox, anchor[1] + oy)
+        if all((spot[0] - x) ** 2 + (spot[1] - y) ** 2 >= (C.CUBE_EDGE + 0.01) ** 2 for x, y in placed.values()):
+            return spot
+    return (anchor[0] + dx, anchor[1] + dy)
+
+
 def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch: list[tuple[str, str]],
                        regions: list[tuple[str, str]] = ()) -> None:
     """Place stacks, related cubes and patches so every relation holds; cubes given a
@@ -530,9 +553,9 @@ def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch:
         if c not in placed and a not in placed:
             placed[c] = (cx - dx / 2, cy - dy / 2)
         if c in placed and a not in placed:
-            placed[a] = (placed[c][0] + dx, placed[c][1] + dy)
+            placed[a] = _free_offset(placed, placed[c], (dx, dy), r.name, +1)
         elif a in placed and c not in placed:
-            placed[c] = (placed[a][0] - dx, placed[a][1] - dy)
+            placed[c] = _free_offset(placed, placed[a], (dx, dy), r.name, -1)
     all_patches = {a.name for a in b.assets if a.kind == "goal_patch"}
     patches = sorted({p for _, p in onpatch} - set(placed) - set(early_xy))
     patch_xy = {p: placed[p] for p in sorted(all_patches & set(placed))}  # placed by a relation ("behind the patch")

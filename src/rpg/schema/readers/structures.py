@@ -606,6 +606,11 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         explicit, direction = re.search(r"(.+)", ", ".join(by_roles)), "left_to_right"
     in_order = re.search(r"\bin (?:the )?order\b(.*)", f.text)
     listed_items = item_sequence(in_order.group(1)) if in_order else []
+    said_word = re.search(r"\b(?:reads?|read as|shows?|spells?)\s+'?([a-z0-9]{2,}|(?:[a-z0-9](?:\s+|\s*,\s*)){1,9}[a-z0-9])'?(?![a-z0-9])",
+                          f.text)  # "reads 123", "reads 1 2 3": said at once or one by one
+    said = re.sub(r"[\s,]", "", said_word.group(1)).upper() if said_word else ""
+    if in_order and said and all(label for _, label in listed_items) and sorted(said) == sorted(label for _, label in listed_items):
+        listed_items = [(None, ch) for ch in said]  # "in the order 3, 1, 2 ... reads 1 2 3": the word read
     if in_order and any(label for _, label in listed_items) and len(listed_items) >= 2:
         names = [b.semantic(label) if label else b.cube(color) for color, label in listed_items]
         b.place(directed_line(names, direction))
@@ -622,9 +627,9 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
             b.preds.append(InLine(tuple(names), axis=None, order="sequence"))
             b.summary.append(b.preds[-1].describe())
     elif labels:
-        reads = re.search(r"\b(?:reads?|read as|shows?|spells?)\s+'?([A-Za-z0-9]{2,})'?", f.original, re.IGNORECASE)
-        if reads and sorted(reads.group(1).upper()) == sorted(labels):  # "the digits 1, 2, 3 so that they read 321"
-            labels = list(reads.group(1).upper())
+        reads = re.search(r"\b(?:reads?|read as|shows?|spells?)\s+'?([A-Za-z0-9]{2,})'?", f.original, re.IGNORECASE) or said_word
+        if reads and sorted(re.sub(r"[\s,]", "", reads.group(1)).upper()) == sorted(labels):  # "the digits 1, 2, 3 so they read 321"
+            labels = list(re.sub(r"[\s,]", "", reads.group(1)).upper())
         elif order:  # the listed labels are the set; the ordering arranges them
             labels = sorted(labels, key=lambda lab: (not lab.isdigit(), lab), reverse=order[1])
         names = [b.semantic(lab) for lab in labels]
