@@ -2585,3 +2585,25 @@ def test_a_start_of_digit_cubes_in_a_row_is_refused_not_read_as_the_goal():
     with pytest.raises(BadInput, match="starting scene"):
         parse("The digit cubes start in the order 3, 1, 2. The policy has to rearrange them into a row that reads 1 2 3 "
               "from left to right.")
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger12: an opposite denied restates the relation; "stays" on the table; a pyramid said by its two layers
+    ("Put the black cube in front of the grey cube, not behind it.", ["in_front_of(black,gray)"]),
+    ("put the red cube on top of the blue cube, not below it", ["stack(blue,red)"]),
+    ("Put the red cube on the blue cube. The blue cube stays on the table.", ["stack(blue,red)"]),
+    ("Pyramid: an orange and a pink cube side by side, and a white cube resting on both.", ["pyramid(orange,pink|white)"]),
+])
+def test_an_opposite_denied_a_cube_that_stays_and_a_pyramid_by_its_layers(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,why", [
+    ("put the red cube left of the blue cube, not next to it", "negation"),  # a denial that adds a constraint stays
+    ("Put the red cube on the green one, like before.", "like before"),  # an earlier turn
+    # digits given roles: it had been a tower of four, the 4 invented by the sorted-tower reader
+    ("Stack the digit cubes with 3 on the bottom, 2 in the middle and 1 on top.", "digit cubes"),
+])
+def test_a_denial_that_adds_an_earlier_turn_and_named_digits_are_not_guessed(text, why):
+    with pytest.raises(BadInput, match=why):
+        parse(text)

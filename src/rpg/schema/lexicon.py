@@ -104,7 +104,7 @@ SYNONYMS: dict[str, str] = {
     "rearranged": "arranged", "reorder": "arrange", "reorganize": "arrange", "reorganise": "arrange",
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
     "uppermost": "topmost", "lowermost": "bottommost", "upon": "on", "right-hand": "right", "left-hand": "left",
-    "midpoint": "center", "tower's": "tower", "within": "in", "inside": "in", "quadrant": "corner", **TYPOS, **ABBREVIATIONS,
+    "stays": "is", "remains": "is", "midpoint": "center", "tower's": "tower", "within": "in", "inside": "in", "quadrant": "corner", **TYPOS, **ABBREVIATIONS,
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
@@ -189,7 +189,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|\b(?:you|we|i)\s+(?:can\s+)?(?:see|saw|look\s+at|gaze\s+at)\b"
                   r"|\b(?:i|you|we)(?:'m|'re|\s+am|\s+are)\s+(?:holding|touching)\b|\b(?:in|from)\s+(?:my|your|the\s+robot's)\s+(?:hand|gripper)\b"
                   r"|\b(?:again|undo|restore|original(?:ly)?|previous(?:ly)?|remaining|as\s+(?:before|it\s+was|they\s+were))\b"
-                  r"|\b(?:as|like)\s+(?:last\s+time|yesterday|the\s+last\s+(?:one|time))\b"
+                  r"|\b(?:as|like)\s+(?:last\s+time|yesterday|the\s+last\s+(?:one|time)|before|earlier|previously|we\s+did|you\s+did)\b"
                   r"|\bthe\s+rest\b|\bwhere\s+(?:it|they|the\s+(?:[a-z]+\s+){0,2}?(?:blocks?|cubes?|ones?))\s+(?:was|were|used\s+to\s+be|started|began)\b"
                   r"|\bthe\s+same\s+(?:order|sequence|positions?|places?|spots?)\b"
                   r"|\b(?:blocks?|cubes?|ones?|place|position|spot|patch)\s+(?:that\s+|which\s+)?(?:it|they)\s+(?:was|were|had\s+been|started)\s+(?:on|in|at)\b"
@@ -734,6 +734,22 @@ ANY_ORDER_RE = re.compile(
 "the order doesn't matter", "in no particular order"): read as the one phrase " in any order"
 before negations are refused (:func:`rpg.schema.reading.normalize`), which no order word
 (:data:`ORDER_WORDS`) matches."""
+
+OPPOSITE_NEGATED_RE = re.compile(
+    r"(?P<said>\b(?:in\s+front\s+of|behind|(?:to\s+the\s+)?left\s+of|(?:to\s+the\s+)?right\s+of|on\s+top\s+of|on|under|below"
+    r"|above)\s+(?:the\s+)?[a-z]+\s+(?:cube|block|one)\b)\s*[,;]?\s*(?:and\s+|but\s+)?not\s+(?P<neg>in\s+front\s+of|behind"
+    r"|(?:to\s+the\s+)?left(?:\s+of)?|(?:to\s+the\s+)?right(?:\s+of)?|on\s+top\s+of|on|under(?:neath)?|below|beneath|above)"
+    r"(?:\s+(?:it|them|the\s+[a-z]+\s+(?:cube|block|one)))?(?=\s*[.!;]?\s*$|\s*[.;]\s)")
+"""A relation said, then its opposite denied ("put the black cube in front of the grey cube, not behind
+it"): the denial restates the relation and is dropped (:data:`OPPOSITE_RELATIONS`); a denial of any
+other relation adds a constraint and stays (refused as a negation)."""
+
+OPPOSITE_RELATIONS: tuple[tuple[str, str], ...] = (
+    ("in front", "behind"), ("left", "right"), ("on", "under"), ("on", "below"), ("on", "beneath"), ("above", "below"),
+    ("on top", "under"), ("on top", "below"), ("on top", "beneath"),
+)
+"""Relation words that exclude each other (:data:`OPPOSITE_NEGATED_RE`), either way round, written
+without "to the" and a final "of"."""
 
 HARMLESS_NEGATION_RE = re.compile(r"[,;(\u2013\u2014-]?\s*\b(?:nothing|none?\s+too|no\s+need\s+(?:to\s+be|for\s+anything))\s+"
                                   r"(?:fancy|special|complicated|elaborate|too\s+fancy)\b\)?"

@@ -589,6 +589,11 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"[\u2018\u2019\u201c\u201d`]", "'", text)
     text = text.replace('"', "'")
     text = config_fragment(text)
+    def _restated(m: re.Match) -> str:
+        said = re.sub(r"\s+the\s+[a-z]+\s+(?:cube|block|one)$", "", m.group("said")).replace("to the ", "").removesuffix(" of")
+        neg = m.group("neg").replace("to the ", "").removesuffix(" of").replace("underneath", "under")
+        return m.group("said") if any({said, neg} == {a, b} for a, b in lexicon.OPPOSITE_RELATIONS) else m.group(0)
+    text = lexicon.OPPOSITE_NEGATED_RE.sub(_restated, text)  # "in front of the grey cube, not behind it": said again
     effectors = [(m.group("what"), "the effector or robot that does it") for m in lexicon.EFFECTOR_RE.finditer(text)]
     text = lexicon.EFFECTOR_RE.sub(" ", text).strip()
     # "cover the green patch with the red block": the red block on it
@@ -629,6 +634,12 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"^\s*(?:about|regarding|re|concerning)\s+(?=the\s+(?:tower|stack|row|line|pyramid|wall|grid|circle)\s*:)", "", text)
     text = re.sub(r"\b(the|that|this)\s+(?:whole|entire|complete)\s+(?=(?:stack|tower|row|line|circle|pyramid|wall|grid|structure)\b)",
                   r"\1 ", text)  # "put the whole stack on the red patch": the stack
+    if re.search(r"\bpyramids?\b", text):  # "pyramid: an orange and a pink cube side by side, and a white cube resting on both"
+        text = re.sub(rf"(?P<base>(?:(?:an?|one|the|2)\s+)?(?:{COLOR_RE})\s+(?:and\s+(?:an?\s+|the\s+)?(?:{COLOR_RE})\s+)?(?:cubes?|blocks?)"
+                      rf"|2\s+(?:{COLOR_RE})\s+(?:cubes|blocks))\s+(?:next\s+to\s+each\s+other|side\s+by\s+side)\s*,?\s*(?:and\s+|with\s+)?"
+                      rf"(?P<top>(?:an?|one|the|1)\s+(?:{COLOR_RE})\s+(?:cube|block))\s+(?:(?:resting|sitting|balanced|placed|lying)\s+)?"
+                      r"on\s+(?:top\s+of\s+)?(?:both(?:\s+of\s+them)?|2|them|the\s+2|the\s+pair)\b",
+                      r"\g<base> on the bottom and \g<top> on top", text)
     # "the yellow one goes in the middle of the two red ones": between them
     text = re.sub(rf"\bin\s+(?:the\s+)?(?:middle|center|centre)\s+of\s+(?:the\s+)?(?=(?:two|2|both)\s+(?:(?:{COLOR_RE})\s+)?(?:ones|cubes|blocks)\b"
                   rf"|(?:the\s+)?(?:{COLOR_RE})\s+(?:one|cube|block)\s+and\s+the\s+(?:{COLOR_RE})\s+(?:one|cube|block)\b)", "between the ", text)

@@ -752,8 +752,9 @@ def recognize_sorted_tower(f: Features, b: Builder) -> bool:
     material = material_of(f)
     if material not in ("letters", "digits") or explicit_labels(f) or spelled_word(f):
         return False
-    if len(set(re.findall(r"\b(?:letter|digit|number)\s+'?([a-z0-9])\b", f.text))) >= 2:
-        return False  # "with A at the bottom, then B, then C on top": the cubes are named (no fourth to sort in)
+    if len(set(re.findall(r"\b(?:letter|digit|number)\s+'?([a-z0-9])\b", f.text))) >= 2 or len(set(re.findall(
+            r"\b([a-z0-9])\s+(?:(?:is|goes|sits)\s+)?(?:on|at|in)\s+(?:the\s+)?(?:bottom|base|top|middle)\b", f.text))) >= 2:
+        return False  # "with A at the bottom, then B, then C on top", "3 on the bottom ... 1 on top": the cubes are named
     descending = tower_order(f)
     if descending is None:
         return False
