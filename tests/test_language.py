@@ -2607,3 +2607,17 @@ def test_an_opposite_denied_a_cube_that_stays_and_a_pyramid_by_its_layers(text, 
 def test_a_denial_that_adds_an_earlier_turn_and_named_digits_are_not_guessed(text, why):
     with pytest.raises(BadInput, match=why):
         parse(text)
+
+
+@pytest.mark.parametrize("text", [
+    "Task 7 (x): " * 10000,  # labels within labels: it had recursed until Python's limit (30 s, a RecursionError)
+    "no I mean the " * 10000,  # thousands of spoken corrections: they had taken minutes to rewrite
+])
+def test_a_huge_text_is_refused_before_it_is_rewritten(text):
+    with pytest.raises(ParseError, match="the limit is"):
+        parse(text)
+
+
+def test_one_frame_is_read_never_a_frame_inside_it():
+    with pytest.raises(BadInput):
+        parse("Task 7 (Stacking-3): Task 8 (x): stack red on blue")  # the inner label is read as words, and refused

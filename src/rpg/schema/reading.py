@@ -41,7 +41,11 @@ class ParseError(BadInput):
 
 
 MAX_INSTRUCTION_CHARS = 2000
-"""Longest instruction accepted, characters."""
+"""Longest instruction accepted, characters (after fillers, hesitations and markup are removed)."""
+
+MAX_RAW_CHARS = 4 * MAX_INSTRUCTION_CHARS
+"""Longest text read at all, characters: a longer one is refused before any rewriting (a text of
+thousands of spoken corrections had taken minutes to rewrite)."""
 
 
 IGNORABLE_HERE = (lexicon.IGNORABLE | lexicon.IGNORABLE_MORE) - VOCAB
@@ -534,6 +538,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         ParseError: empty, too long, or (strict) containing words the parser does not know.
     """
     original = instruction.strip()
+    if len(original) > MAX_RAW_CHARS:
+        raise ParseError(f"the instruction has {len(original)} characters; the limit is {MAX_INSTRUCTION_CHARS}")
     for pattern, written in lexicon.MARKUP_RES:  # "the **blue** patch", "## Goal", "`red`"
         original = pattern.sub(written, original).strip()
     original = lexicon.EMOJI_RE.sub(" ", original).strip()

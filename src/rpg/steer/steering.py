@@ -354,7 +354,9 @@ def _change_from_head(fam: Family, schema: TaskSchema) -> str:
             return "modify"  # "undo that" of a reordering: the same cubes in another order
     if new is not None or now is not None:
         return intent_of_standalone(new, now)
-    kinds = lambda s: sorted({a.split("(")[0] for a in meaning(s)})  # noqa: E731
+    def kinds(s: TaskSchema) -> list[str]:
+        return sorted({a.split("(")[0] for a in meaning(s)})
+
     return "tweak" if kinds(schema) == kinds(head) else "modify"
 
 

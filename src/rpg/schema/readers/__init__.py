@@ -47,6 +47,8 @@ from rpg.schema.readers import (  # noqa: F401 (they register)
     temporal,
 )
 from rpg.schema.reading import (
+    MAX_INSTRUCTION_CHARS,
+    MAX_RAW_CHARS,
     Features,
     Inexpressible,
     ParseError,
@@ -207,25 +209,30 @@ def _identifier_label(instruction: str) -> tuple[str, str] | None:
     return None
 
 
-def parse(instruction: str) -> TaskSchema:
+def parse(instruction: str, _framed: bool = False) -> TaskSchema:
     """Read an instruction into a TaskSchema.
+
+    ``_framed`` is set when reading the text a config or an identifier stood for (one frame is
+    read, never a frame inside it).
 
     Raises:
         ParseError: the instruction is empty, too long, has words outside the domain, or
             describes no task the parser knows (message quotes the problem, suggests --model).
         UnknownColorError / UnknownLabelError: an unknown colour or label.
     """
-    written = config.sentence(instruction)
+    if len(instruction) > MAX_RAW_CHARS:
+        raise ParseError(f"the instruction has {len(instruction)} characters; the limit is {MAX_INSTRUCTION_CHARS}")
+    written = None if _framed else config.sentence(instruction)
     if written is not None:  # "structure=line; n=5; colour=green; region=back": the sentence it stands for
-        schema = parse(written)
+        schema = parse(written, _framed=True)
         return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})
-    labelled = _identifier_label(instruction)
+    labelled = None if _framed else _identifier_label(instruction)
     if labelled is not None:  # "Task 7 (Stacking-3): the agent must build ...": the text after it
         label, body = labelled
         noun = next((w for w in re.findall(r"[a-z]+", label.lower()) if w in STRUCTURE_WORDS), None)
         if noun is not None and not re.search(STRUCTURE_RE, body, re.IGNORECASE):
             body = f"{noun}: {body}"  # "Line-Sort-Colour: red, orange, ...": the structure the label names
-        schema = parse(body)
+        schema = parse(body, _framed=True)
         return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})  # as written
     scene = initial.split(instruction)  # "Initially red is on blue. Put ...": rho_0's stacks, then the goal
     if scene is not None and not scene.goal.strip(" ."):
