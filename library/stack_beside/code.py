@@ -28,9 +28,9 @@ class StackGreenBlockOnYellowBlockBeside02b1e2Task(BlockTask):
     NAME = 'stack_green_block_on_yellow_block_beside_02b1e2'
     INSTRUCTION = 'Stack the green block on the yellow block beside the red block'
     PARAPHRASES = (
-        'Tower bottom to top: yellow, green; yellow beside red. Put the green cube on top of the yellow cube.',
-        'Goal: tower bottom to top: yellow, green; yellow beside red. Put the green cube on top of the yellow cube.',
-        'Arrange the cubes so that the final scene shows tower bottom to top: yellow, green; yellow beside red. Put the green cube on top of the yellow cube.',
+        'Tower bottom to top: yellow, green; yellow beside red. The goal is a stack. Use 2 cubes for the stack. Use the yellow cube. Use the green cube. Put the green cube on top of the yellow cube. The goal is a next to. Use the red cube.',
+        'Goal: tower bottom to top: yellow, green; yellow beside red. The goal is a stack. Use 2 cubes for the stack. Use the yellow cube. Use the green cube. Put the green cube on top of the yellow cube. The goal is a next to. Use the red cube.',
+        'Arrange the cubes so that the final scene shows tower bottom to top: yellow, green; yellow beside red. The goal is a stack. Use 2 cubes for the stack. Use the yellow cube. Use the green cube. Put the green cube on top of the yellow cube. The goal is a next to. Use the red cube.',
     )
 
     def assets(self):

@@ -124,8 +124,8 @@ class EditPlan:
     fresh: bool = False
 
     def parameters(self) -> dict:
-        return {"ops": [asdict(o) for o in self.ops], "reference_cue": {k: v for k, v in asdict(self.cue).items() if v not in (None, (), False, "")},
-                "standalone": self.standalone}
+        cue = {k: v for k, v in asdict(self.cue).items() if v not in (None, (), False, "") and not (k == "steps" and v == 1)}
+        return {"ops": [asdict(o) for o in self.ops], "reference_cue": cue, "standalone": self.standalone}  # one step back: unsaid
 
 
 # ---------------------------------------------------------------------------

@@ -153,7 +153,8 @@ def resolve_reference(plan: EditPlan, hist: FamilyHistory, fam: Family) -> tuple
         for _ in range(cue.steps):  # "go back two versions": the parent's parent
             parent = hist.get(ref).parent
             ref = parent if parent is not None else max(ref - 1, 0)
-        return ref, [f"back-reference {cue.phrase!r}: {cue.steps} version{'s' if cue.steps > 1 else ''} before v{head}"]
+        return ref, [f"back-reference {cue.phrase!r}: the version before v{head}" if cue.steps == 1 else
+                     f"back-reference {cue.phrase!r}: {cue.steps} versions before v{head}"]
     if cue.kind == "redo":  # after going back to the head: the latest version built on it, whose change is made again
         children = [v.version_id for v in hist.versions if v.parent == head and v.version_id > head]
         if not children:
