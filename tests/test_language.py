@@ -2538,6 +2538,7 @@ def test_a_task_written_as_a_config(text, expected):
     ('{"task": "stack", "objects": ["blue_large", "red_small"]}', "size"),  # a value read as a sentence would be
     ('{"task": "stack", "constraint": "never put black on white"}', "negation"),
     ("time: 10 s, goal: red on blue", "about time"),  # "10 s" had been dropped with its label
+    ("structure=line; n=5; colour=red; region=nowhere", "structure"),  # a place of no region: it had been dropped
     ("stack red on blue in under 2 min", "about time"),
 ])
 def test_a_config_says_nothing_the_domain_cannot_and_a_time_limit_is_refused(text, why):

@@ -76,8 +76,9 @@ def _words(value: str) -> str:
     return value.replace("_", " ").strip()
 
 
-def _place(value: str) -> str:
-    """A region value as a phrase: ``back_right`` -> "in the back right corner", ``back`` -> "at the back of the table"."""
+def _place(value: str) -> str | None:
+    """A region value as a phrase: ``back_right`` -> "in the back right corner", ``back`` -> "at the back of the
+    table"; None for a value that names no region of the table (it is not guessed: "region=nowhere")."""
     v = _words(value).lower().removesuffix(" corner")
     if re.fullmatch(r"(?:front|back)\s+(?:left|right)", v):
         return f"in the {v} corner"
@@ -85,7 +86,7 @@ def _place(value: str) -> str:
         return f"on the {v} side of the table" if v in ("left", "right") else f"at the {v} of the table"
     if v in ("center", "centre", "middle"):
         return "in the center of the table"
-    return f"in the {v}"
+    return None
 
 
 def sentence(instruction: str) -> str | None:
@@ -140,5 +141,8 @@ def sentence(instruction: str) -> str | None:
             return None
         phrase += f" from {d}"
     if "place" in roles:
-        phrase += " " + _place(roles["place"])
+        where = _place(roles["place"])
+        if where is None:
+            return None
+        phrase += " " + where
     return phrase if cubes or count else None  # a structure of cubes nobody counted or named: not guessed
