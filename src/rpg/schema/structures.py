@@ -525,6 +525,13 @@ def _sorted_labels(items) -> dict:
     return {}
 
 
+def sort_labels(items, key: str, descending: bool) -> tuple:
+    """``items`` (labelled cubes) in the order a sort by ``key`` puts them: by number when every
+    label is a digit and ``key`` is ``number``, else by label (the order :func:`_sorted_labels` reads)."""
+    by_number = key == "number" and all(i.label.isdigit() for i in items)
+    return tuple(sorted(items, key=(lambda i: int(i.label)) if by_number else (lambda i: i.label), reverse=descending))
+
+
 def extract(schema: TaskSchema) -> TaskSpec | None:
     """Read a schema back into a TaskSpec; None if its structure is not editable
     (relations between named cubes, goal patches, temporal order, equations)."""

@@ -55,7 +55,13 @@ from rpg.schema.lexicon import (
 )
 from rpg.schema.readers.common import item_sequence
 from rpg.schema.reading import canon_color, region_name
-from rpg.schema.structures import STRUCTURE_KINDS, STRUCTURE_RE, pyramid_count, structure_of_word
+from rpg.schema.structures import (
+    STRUCTURE_KINDS,
+    STRUCTURE_RE,
+    pyramid_count,
+    sort_labels,
+    structure_of_word,
+)
 from rpg.steer.spec import Item, TaskSpec
 
 INTENTS = ("tweak", "extend", "modify", "pivot", "fresh")
@@ -1300,6 +1306,5 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             spec = replace(spec, outliers=p["per_pile"])
     if spec.structure == "line" and spec.ordering in ("label", "number") and spec.items and all(i.label for i in spec.items):
         # a sorted line of named cubes: its cubes stand in that order ("descending now", "add a 5 and keep it largest first")
-        key = (lambda i: int(i.label)) if spec.ordering == "number" and all(i.label.isdigit() for i in spec.items) else (lambda i: i.label)
-        spec = spec.with_items(sorted(spec.items, key=key, reverse=spec.descending))
+        spec = spec.with_items(sort_labels(spec.items, spec.ordering, spec.descending))
     return spec
