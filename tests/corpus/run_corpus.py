@@ -47,6 +47,7 @@ STRANGER_SETS = {
     "stranger10": ("stranger10.yaml", "STRANGER set 10 (stranger10.yaml, development material)"),
     "stranger11": ("stranger11.yaml", "STRANGER set 11 (stranger11.yaml, development material)"),
     "stranger12": ("stranger12.yaml", "STRANGER set 12 (stranger12.yaml, development material)"),
+    "stranger13": ("stranger13.yaml", "STRANGER set 13 (stranger13.yaml, development material)"),
 }
 SPLITS = HERE / "splits.yaml"
 
