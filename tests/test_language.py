@@ -2622,3 +2622,38 @@ def test_a_huge_text_is_refused_before_it_is_rewritten(text):
 def test_one_frame_is_read_never_a_frame_inside_it():
     with pytest.raises(BadInput):
         parse("Task 7 (Stacking-3): Task 8 (x): stack red on blue")  # the inner label is read as words, and refused
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger13's silent errors: "both" and "next to each other" make the pair the subject of what follows
+    ("Place the blue cube next to the red cube, both on the white patch.",
+     ["next_to(blue,red)", "on_patch(blue,red,patch:white)"]),
+    ("Put the blue cube next to the red cube, and put them both on the green patch.",
+     ["next_to(blue,red)", "on_patch(blue,red,patch:green)"]),
+    ("Put the blue cube and the red cube next to each other in front of the green cube.",
+     ["in_front_of(blue,green)", "in_front_of(red,green)", "next_to(blue,red)"]),
+    ("set up: grey cube left of black cube, both in the back",
+     ["in_region(black,back)", "in_region(gray,back)", "left_of(gray,black)"]),
+    ("put the red cube left of the blue cube and the green cube behind them",
+     ["behind(green,blue)", "behind(green,red)", "left_of(red,blue)"]),
+    # a role word before a dash is a label, not a relation (it had invented a red cube under the black one)
+    ("Build tower from three cubes: below - black, in middle - gray, above - white.", ["stack(black,gray,white)"]),
+    # one pile is written pile(...), its place with it
+    ("Pile the three orange cubes up in the center.", ["pile(orange,orange,orange)@center"]),
+])
+def test_a_pair_said_together_gets_every_relation_and_a_role_label_is_no_relation(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,why", [
+    ("put the red cube left of the blue cube and the green cube on them", "two cubes at once"),  # it had been on blue
+    ("put the red cube next to the blue cube, both on the green cube", "cannot all be on one cube"),
+])
+def test_one_cube_on_a_pair_is_refused(text, why):
+    with pytest.raises(BadInput, match=why):
+        parse(text)
+
+
+def test_a_pyramid_layer_count_is_not_a_pair():  # "2 in the middle" is not "both" (numbers are normalized)
+    assert meaning(parse("Make a pyramid with 3 blocks on the bottom, 2 in the middle and 1 on top")) == \
+        ["pyramid(red,red,red,red,red,red)"]

@@ -599,6 +599,18 @@ PAIRWISE_RELATIONS: tuple[str, ...] = ("left_of", "right_of", "in_front_of", "be
 """Relations between two named cubes that the relational reader states with one predicate of
 that name (:data:`rpg.domain.predicates.PREDICATES`)."""
 
+GROUP_SUBJECT_RE = re.compile(
+    r"(?:^|[,;]\s*|\band\s+)(?:(?:put|place|move|set|leave|have)\s+)?(?:the\s+)?(?:both|2|all|@?them)(?:\s+(?:both|2|all))?"
+    r"(?:\s+of\s+@?them)?(?:\s+(?:cubes|blocks|together))?"
+    r"(?:\s+(?:are|go|stand|sit|should\s+be|must\s+be|placed|put|end\s+up))?\s*$")
+"""Words that make the cubes of the relation just said the subject of the next phrase ("X left of
+Y, both in the back", "X next to Y, both of them on the white patch"); "both" is "2" once
+numbers are normalized."""
+
+LABEL_SEPARATOR_AFTER = re.compile(rf"\s*(?:-|\u2013|\u2014|:)\s*(?:the\s+)?(?:{COLOR_RE})\b")
+"""What follows a role word used as a label ("below - black", "top: white"): a relation word
+followed by it names a place in a list, not a relation to the next cube."""
+
 REL_PATTERNS: list[tuple[str, str]] = [
     *((PREDICATES[name].phrases, name) for name in (*PAIRWISE_RELATIONS, "between")),
     (PREDICATES["on"].reverse_phrases, "under"),

@@ -12,6 +12,7 @@ letter/digit cube by its label, a goal patch as ``patch:<colour>``).  Examples::
     wall(red,red,red|blue,blue,blue)      layers bottom to top (rows, walls, 3D blocks)
     pyramid(blue,green,red|yellow)        layers bottom to top, each layer sorted
     pyramid(blue,green,red)               a pyramid whose cubes may stand in any layer
+    pile(orange,orange,orange)@center     one pile (several piles: piles(...;by=color))
 
 A pyramid or wall shows its layers only where the goal judges which cubes stand in which
 layer (:class:`~rpg.domain.predicates.InLayers`); otherwise its cubes are one sorted list,
@@ -58,6 +59,14 @@ def _layers(names, layout) -> list[list[str]]:
     for n in names:
         levels.setdefault(round(layout[n].position[2] / 0.02), []).append(n)
     return [levels[k] for k in sorted(levels)]
+
+
+def _one_pile(p: P.Piles, d: dict[str, str]) -> bool:
+    """Whether a piles predicate asks for one pile: one explicit group, or cubes sorted by their
+    colour when all share one (a single pile, written ``pile(...)``)."""
+    if p.groups:
+        return len(p.groups) == 1 and not p.objects
+    return p.by in (None, "color") and len({d[n] for n in p.objects}) == 1
 
 
 def meaning(schema: TaskSchema) -> list[str]:
@@ -126,6 +135,10 @@ def meaning(schema: TaskSchema) -> list[str]:
         elif isinstance(p, P.InCircle):
             atoms.append(f"circle({sorted_names(p.objects)})")
             placed.append((len(atoms) - 1, p.objects))
+        elif isinstance(p, P.Piles) and _one_pile(p, d):
+            members = p.object_names()
+            atoms.append(f"pile({sorted_names(members)})")
+            placed.append((len(atoms) - 1, tuple(members)))
         else:
             objs = p.object_names()
             used.update(objs)

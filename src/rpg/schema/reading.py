@@ -995,7 +995,7 @@ _ROLES = {"below": 0, "beneath": 0, "underneath": 0, "under": 0, "bottom": 0, "l
           "above": 2, "over": 2, "top": 2, "highest": 2, "topmost": 2}
 """A role said before its cube in a tower ("below red, in the middle blue, above green") ->
 its rank from the table (bottom 0, middle 1, top 2)."""
-_ROLE_FIRST = (r"(?:at\s+the\s+|on\s+the\s+|in\s+the\s+|on\s+)?(?P<r{i}>" + "|".join(_ROLES) + r")\s*(?:is\s+|:\s*|-\s*)?"
+_ROLE_FIRST = (r"(?:at\s+the\s+|on\s+the\s+|in\s+the\s+|in\s+|on\s+)?(?P<r{i}>" + "|".join(_ROLES) + r")\s*(?:is\s+|:\s*|-\s*)?"
                rf"(?:the\s+)?(?P<c{{i}}>{COLOR_RE})(?:\s+(?:block|cube|one))?\b")
 
 
@@ -1236,6 +1236,14 @@ def _structure_side(m: re.Match) -> bool:
         and len(re.findall(rf"\b{lexicon.STRUCTURE_NOUN}s?\b", before)) == 1)
 
 
+def _group_side(m: re.Match) -> bool:
+    """Whether a bare side is where a group just said stands ("the grey cube left of the black
+    cube, both in the back"): two cubes together have no one side to be relative to."""
+    return (m.group(0).split()[0] in ("on", "at", "in", "to")
+            and not names_a_role(m.string[:m.start()], m.string)
+            and lexicon.GROUP_SUBJECT_RE.search(m.string[:m.start()]) is not None)
+
+
 def mark_regions(text: str) -> str:
     """Replace places on the table ("in the middle of the table", "at the back left corner",
     "on the right side of the workspace") with ``@region_<name>`` tokens (names as in
@@ -1249,7 +1257,7 @@ def mark_regions(text: str) -> str:
                        and not names_a_role(m.string[:m.start()], m.string))
         two_sides = bool(m.group("fb")) and m.group("lr") in ("left", "right")  # "at the front right": a corner of the table
         if not (m.group("tail") or corner or edge or bare_center or two_sides or _table_side(m) or _heading_side(m)
-                or _structure_side(m)):
+                or _structure_side(m) or _group_side(m)):
             return m.group(0)
         fb = m.group("fb") or ("far" if m.group("far") == "far" and corner else None)  # "the far left corner"
         if corner and not (fb and word in ("left", "right")):  # "the right corner": back right or front right?

@@ -27,7 +27,7 @@ from rpg.domain.predicates import (
     Stack,
 )
 from rpg.schema.builder import DEFAULT_COLORS, DEFAULT_PATCH_COLOR, Builder
-from rpg.schema.lexicon import COLOR_RE, PAIRWISE_RELATIONS, REL_PATTERNS
+from rpg.schema.lexicon import COLOR_RE, GROUP_SUBJECT_RE, LABEL_SEPARATOR_AFTER, PAIRWISE_RELATIONS, REL_PATTERNS
 from rpg.schema.readers.common import (
     DESCRIBED_TOWER_RE,
     Mention,
@@ -80,6 +80,22 @@ class RelationalReading:
     the white patch"): the stack itself stays off the patch."""
     fresh: dict[int, int] = field(default_factory=dict)
     """id of a mention said as one more of its colour (:attr:`Mention.another`) -> its cube's index."""
+    group: list[Mention] = field(default_factory=list)
+    """The cubes a "both" or a relation after "next to each other" refers to: the last pairwise
+    relation's two cubes, or the cubes said next to each other (within the current clause)."""
+    group_end: int = -1
+    """Where in the clause :attr:`group` was said (the end of its last word)."""
+
+    def shared_subjects(self, clause: str, rm: re.Match, ms: list[Mention]) -> list[Mention]:
+        """The cubes a relation at ``rm`` applies to together ("X next to Y, both on the white
+        patch"; "X and Y next to each other in front of Z"), or [] when it has its own subject."""
+        if len(self.group) < 2 or self.group_end < 0 or any(self.group_end <= m.start < rm.start() for m in ms if not m.ref):
+            return []
+        gap = clause[self.group_end: rm.start()]
+        if GROUP_SUBJECT_RE.search(gap) or re.fullmatch(
+                r"\s*(?:(?:on\s+top\s+of\s+)?each\s+other|one\s+another)\s*,?\s*(?:and\s+)?(?:(?:are|go|placed|put)\s+)?", gap):
+            return list(self.group)
+        return []
 
     def obj(self, mn: Mention, i: int = 0) -> str:
         """The object a mention names: its patch, or its ``i``-th cube (made in the builder on first mention)."""
@@ -104,6 +120,7 @@ class RelationalReading:
         """Read one clause's mentions and relation words into the reading."""
         ms = mentions_in(clause)
         related: list[Mention] = []  # the subject of this clause's relation, if it has one
+        self.group, self.group_end = [], -1
         # "with a red block on bottom and blue on top"
         for mn in ms:
             tail = clause[mn.end: mn.end + 22]
@@ -112,7 +129,8 @@ class RelationalReading:
             elif re.match(r"\s+(?:block\s+|cube\s+)?(?:on|at)\s+(?:the\s+)?top\b(?!\s+of)", tail):
                 self.bottom_top.setdefault("top", self.obj(mn))
         rel_re = "|".join(f"(?P<r{i}>\\b(?:{p})\\b)" for i, (p, _) in enumerate(REL_PATTERNS))
-        found = list(re.finditer(rel_re, clause))
+        # a relation word followed by a label's dash or colon is a role ("below - black"), not a relation
+        found = [m for m in re.finditer(rel_re, clause) if not LABEL_SEPARATOR_AFTER.match(clause, m.end())]
         for k, rm in enumerate(found):
             kind = next(REL_PATTERNS[i][1] for i in range(len(REL_PATTERNS)) if rm.group(f"r{i}"))
             left = [m for m in ms if m.end <= rm.start() and not m.patch]
@@ -150,18 +168,33 @@ class RelationalReading:
                     else:
                         self.rels += [NextTo(a, c) for a, c in itertools.pairwise(names)]
                         self.subjects.update((mn.color, mn.label) for mn in group)
+                        if len(group) > 1:
+                            self.group, self.group_end = list(group), rm.end()
                 continue
             if not left or not right:
                 if kind == "on" and self.stackish and right and right[0].patch:
                     self.onpatch.append(("*", self.obj(right[0])))
                 continue
             a_m, b_m = left[-1], right[0]
+            shared = self.shared_subjects(clause, rm, ms)
+            if shared and not b_m.ref and not self.stackish:
+                self.relate_group(shared, kind, b_m)
+                continue
             if self.last_pair and a_m is self.last_pair[1] and re.fullmatch(r"\s*(?:,\s*(?:and\s+)?|and\s+)(?:also\s+|but\s+)?",
                                                                     clause[a_m.end: rm.start()]):
                 a_m = self.last_pair[0]  # "X left of Y and behind Z", "X in front of Y, close to it": X is behind Z
             self.last_pair[:] = [a_m, b_m]
             related[:] = [a_m]
             if a_m.ref:
+                continue
+            if b_m.ref == "@them" and len(self.group) > 1 and not self.stackish:  # "X left of Y, Z behind them"
+                if kind not in _RELATIONS:
+                    raise ParseError(f"'{clause[rm.start():b_m.end].strip().replace('@', '')}' puts one cube {kind.replace('_', ' ')} two "
+                                     "cubes at once; say which cube it goes with")
+                a = self.obj(a_m)
+                self.subjects.add((a_m.color, a_m.label))
+                self.rels += [_RELATIONS[kind](a, self.obj(mn)) for mn in self.group]
+                self.previous[:] = [a, self.obj(self.group[-1])]
                 continue
             if b_m.ref == "@them" and not self.on_edges and self.previous:
                 b_m = Mention(b_m.start, b_m.end, None, None, 1, ref="@it")
@@ -230,6 +263,28 @@ class RelationalReading:
                 self.rels.append(Between(a, c, self.obj(right[1]) if len(right) >= 2 and b_m.count < 2 else self.obj(b_m, 1)))
             else:
                 self.rels.append(_RELATIONS[kind](a, c))
+            if kind in _RELATIONS and not b_m.patch and (a_m.color or a_m.label) and (b_m.color or b_m.label):
+                self.group, self.group_end = [a_m, b_m], b_m.end
+
+    def relate_group(self, group: list[Mention], kind: str, b_m: Mention) -> None:
+        """Each cube of ``group`` in relation ``kind`` to ``b_m``'s object ("both on the white patch").
+
+        Raises:
+            ParseError: the relation cannot hold for several cubes at once (two cubes on one cube,
+                between).
+        """
+        target = self.obj(b_m)
+        if not (kind in _RELATIONS or (kind == "on" and b_m.patch)):
+            raise ParseError(f"'{' and '.join(m.color or m.label for m in group)}' cannot all be {kind.replace('_', ' ')} one "
+                             "cube; say which cube goes where")
+        for mn in group:
+            a = self.obj(mn)
+            self.subjects.add((mn.color, mn.label))
+            if kind == "on":
+                self.onpatch.append((a, target))
+            else:
+                self.rels.append(_RELATIONS[kind](a, target))
+        self.previous[:] = [self.obj(group[-1]), target]
 
 
 STACK_WORD_RE = re.compile(r"\b(?:stack|stacks|stacked|tower|towers|pile up)\b")
