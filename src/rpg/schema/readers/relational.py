@@ -27,7 +27,13 @@ from rpg.domain.predicates import (
     Stack,
 )
 from rpg.schema.builder import DEFAULT_COLORS, DEFAULT_PATCH_COLOR, Builder
-from rpg.schema.lexicon import COLOR_RE, GROUP_SUBJECT_RE, LABEL_SEPARATOR_AFTER, PAIRWISE_RELATIONS, REL_PATTERNS
+from rpg.schema.lexicon import (
+    COLOR_RE,
+    GROUP_SUBJECT_RE,
+    LABEL_SEPARATOR_AFTER,
+    PAIRWISE_RELATIONS,
+    REL_PATTERNS,
+)
 from rpg.schema.readers.common import (
     DESCRIBED_TOWER_RE,
     Mention,
