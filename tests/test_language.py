@@ -2639,6 +2639,7 @@ def test_one_frame_is_read_never_a_frame_inside_it():
     # a role word before a dash is a label, not a relation (it had invented a red cube under the black one)
     ("Build tower from three cubes: below - black, in middle - gray, above - white.", ["stack(black,gray,white)"]),
     # one pile is written pile(...), its place with it
+    ("digit cubes 5, 2, 8 in a row, small to big", ["line[left_to_right](2,5,8)"]),  # the sort had been dropped
     ("Pile the three orange cubes up in the center.", ["pile(orange,orange,orange)@center"]),
 ])
 def test_a_pair_said_together_gets_every_relation_and_a_role_label_is_no_relation(text, expected):

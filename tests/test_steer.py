@@ -1185,3 +1185,24 @@ def test_a_cube_made_bigger_stays_a_size(tmp_path):
     fam = Family(create_family(compile_instruction("Stack four yellow cubes", tmp_path, name="fam").path).path)
     with pytest.raises(SteerError, match="size"):
         steer(fam.path, "can you make the bottom one 2x bigger so the tower is more stable")  # it had made the tower taller
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # steer_stranger9's silent errors
+    ("Line up four yellow cubes", ["move the line to the right side of the table", "make two of them red"],
+     ("tweak", ["line(red,red,yellow,yellow)@right"])),  # had gained an order nobody said
+    ("Stack a cyan cube on an orange cube", ["make the top one white", "ok then v0 but with a black cube on top"],
+     ("extend", ["stack(orange,cyan,black)"])),  # had gone back to v0 without the black cube
+    ("Stack green, white and red cubes, green at the bottom and red on top",
+     ["swap the top and bottom", "now like the first version but with a yellow top"], ("tweak", ["stack(green,white,yellow)"])),
+    ("Stack a purple cube on a green cube", ["move it to the left"], ("modify", ["stack(green,purple)@left"])),  # had been left_of
+])
+def test_steer_stranger9_silent_errors_are_read_as_meant(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+def test_a_version_reference_with_an_unread_change_is_refused(tmp_path):
+    fam = Family(create_family(compile_instruction("Stack a cyan cube on an orange cube", tmp_path, name="fam").path).path)
+    steer(fam.path, "make the top one white")
+    with pytest.raises(SteerError, match="did not read"):
+        steer(fam.path, "like v0 but blue on top")  # on top as well, or the top one blue? it had returned to v0 alone

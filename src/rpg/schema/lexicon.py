@@ -96,6 +96,25 @@ TEXTED_TO_RE = re.compile(r"(?i)\b(move|moved|put|go|goes|slide|push|bring|it|cu
 TEXTED_YOU_RE = re.compile(r"(?<![\w'])u(?![\w'])")
 """Texting's lower-case "u" for "you" ("can u build ..."); a capital U is a letter cube."""
 
+REF_CHANGE_RE = re.compile(r"\b(?:but|except|with|and\s+(?:then\s+)?(?:make|add|put|change|use|turn))\s+\w+.*")
+"""What follows a version reference and asks for a change ("like v0 but ...", "v1 with ..."): an
+edit that names one and no change was read is refused, not taken back to that version alone."""
+
+STACK_SIDE_MOVE_RE = re.compile(
+    r"\s*(?:(?:now|ok(?:ay)?|and|then|also)[\s,]+)*(?:move|put|shift|slide|place|push|bring|set)\s+(?:it|this|that)\s+(?:over\s+)?"
+    r"(?:to|on|at|in|towards?)\s+the\s+(?:far\s+)?(?P<side>left|right)(?:\s+side)?(?:\s+(?:instead|please|now|a\s+bit))*\s*")
+"""An edit that moves "it" to a side with no cube to be the side of ("move it to the left"): of
+a two-cube stack, "it" is the stack (its top cube to the left would be a relation "of" a cube)."""
+
+ORDER_RANGE_RES: tuple[tuple[re.Pattern, str], ...] = (
+    (re.compile(r"(?i)\b(?:from\s+)?(?:small|little|low|least)(?:est|er)?\s+(?:to|->|\u2192)\s+(?:big|large|high|great)(?:gest|est|er)?\b"),
+     "from smallest to largest"),
+    (re.compile(r"(?i)\b(?:from\s+)?(?:big|large|high|great)(?:gest|est|er)?\s+(?:to|->|\u2192)\s+(?:small|little|low|least)(?:est|er)?\b"),
+     "from largest to smallest"),
+)
+""""small to big", "high -> low": a sort said by its two ends, read as the sort words the
+readers know ("from smallest to largest"); it had been dropped, leaving the listed order."""
+
 SYNONYMS: dict[str, str] = {
     "brick": "block", "bricks": "blocks", "ground": "table", "floor": "table", "tabletop": "table",
     "desk": "table", "rightmost": "right", "leftmost": "left", "frontmost": "front", "backmost": "back",
@@ -1356,6 +1375,11 @@ INTENSIFIER_RIGHT_RE = re.compile(r"(?i)\b(?:right|directly|just)\s+(?=next\s+to
 """"Right" that only stresses a place ("right next to the blue block"): not the side "right"."""
 
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
+    # "like v0 but with a yellow top": that end's cube recoloured; "... but with a black cube on top": one added there
+    (re.compile(rf"(?i)\bbut\s+with\s+(?:a|an)\s+({COLOR_RE})\s+(top|bottom|base)\b(?!\s+(?:of|layer|row|level))"),
+     r"but make the \2 one \1"),
+    (re.compile(rf"(?i)\bbut\s+with\s+(?:a|an|one)\s+(?:(?:new|extra|more)\s+)?({COLOR_RE})\s+(?:cube|block|one)\s+"
+                r"(on\s+top|at\s+the\s+(?:top|bottom))\b"), r"but add a \1 block \2"),
     (re.compile(r"(?i)\bon\s+top\s+of\s+(?:that|this)(?!\s+\w+\s+(?:block|cube|one)\b)"), "on top of the tower"),  # "and a T on top of that"
     (re.compile(r"(?i)^\s*(?:and|plus)(?:\s+(?:now|then|also))?\s+(?=(?:a|an|another|one\s+more|\d+)\s)"), "add "),  # "and (now) a red block on top"
     (re.compile(r"(?i)\blay\s+(them|it|everything|the\s+(?:blocks|cubes))\s+out\b"), r"put \1"),  # "lay them out in a line"

@@ -565,6 +565,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         original = original[:echo.start()]
     original = apply_corrections(original)  # "..., sorry, the pink patch": the correction wins
     original = verb_final(original)  # "The 4 cube, the 2 cube's top on, stacking please.": the verb said first
+    for pattern, full in lexicon.ORDER_RANGE_RES:  # "small to big": a sort by its two ends
+        original = pattern.sub(full, original)
     original = sorted_labels(original)  # "Stack the digit cubes 7, 3 and 5 in ascending order": listed sorted
     original = lexicon.LABELS_AND_NOUN_RE.sub(r"\1 \2 \4 and the \3 \4", original)  # "the 1 & 9 cubes"
     if not original:

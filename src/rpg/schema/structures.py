@@ -297,7 +297,8 @@ class Line(StructureKind):
         main, sort = parts.main, next((p for p in parts.all if isinstance(p, SortedBy)), None)
         reads = next((p for p in parts.all if isinstance(p, Reads)), None)
         word = reads.text if reads and reads.text.isalpha() and len(reads.text) >= 2 and not sort else None
-        if main.order is None:
+        if main.order is None or (main.order == "sequence" and len(set(seq(main.objects))) == 1):
+            # an order from either end over identical cubes says nothing: an edit that recolours some starts unordered
             return TaskSpec("line", seq(main.objects), direction=None, axis=main.axis or "y")
         named = not parts.ordering and main.order in ("left_to_right", "right_to_left", "front_to_back", "back_to_front") \
             and all(i.label for i in seq(main.objects))  # labels listed one by one, no sort judged apart

@@ -48,6 +48,7 @@ from rpg.schema.lexicon import (
     INTENSIFIER_RIGHT_RE,
     NUMBER_WORDS,
     POLITE_CONDITION_RE,
+    REF_CHANGE_RE,
     TYPOS,
     VOCAB,
     is_dictionary_word,
@@ -696,6 +697,9 @@ def interpret(edit: str) -> EditPlan:
         except (ParseError, ValueError):
             pass  # not a whole task after all: read it as a change
     ops = read_ops(t)
+    if not ops and cue.kind != "current" and cue.phrase and (change := REF_CHANGE_RE.search(t, t.find(cue.phrase) + len(cue.phrase))):
+        raise SteerError(f"'{change.group(0).strip()}' after '{cue.phrase}' asks for a change the builtin steering did not read; "
+                         f"go back to it in one edit (\"{cue.phrase}\") and say the change in the next, or use --model")
     if ops or cue.kind != "current":
         return EditPlan(edit, cue, ops)  # no ops with a back-reference: return to that version
     # an edit that refers to the task ("it", "the orange one") or adds to it ("also", "too") is

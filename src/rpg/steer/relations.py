@@ -30,6 +30,7 @@ from rpg.schema.lexicon import (
     EDIT_RELATIONS,
     NUMBER_WORDS,
     PAIRWISE_RELATIONS,
+    STACK_SIDE_MOVE_RE,
 )
 from rpg.schema.model import TaskSchema
 from rpg.schema.reading import canon_color, region_name
@@ -87,6 +88,10 @@ def relation_of(schema: TaskSchema) -> Relation | None:
     return found[0] if len(found) == 1 else None
 
 
+def _patches(schema: TaskSchema) -> set[str]:
+    return {a.name for a in schema.assets if a.kind == "goal_patch"}
+
+
 def _phrase(schema: TaskSchema, name: str) -> str:
     asset = next(a for a in schema.assets if a.name == name)
     if asset.kind == "goal_patch":
@@ -116,6 +121,11 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     if ADDS_RE.search(t):
         return _added(t, schema, rel)
     subject, obj = rel.subject, rel.object
+    side = STACK_SIDE_MOVE_RE.fullmatch(t) if rel.kind == "on" and obj not in _patches(schema) else None
+    if side:  # "move it to the left" of a two-cube stack: the stack to that side of the table
+        where = region_phrase(region_name(None, side.group("side")))
+        return (f"Stack {_phrase(schema, subject)} on {_phrase(schema, obj)}, then place {_phrase(schema, subject)} {where}, "
+                f"then place {_phrase(schema, obj)} {where}"), "modify"
     if re.search(r"\b(?:swap|switch|exchange|trade)\b.*\b(?:them|places|positions|roles|blocks|cubes|the two)\b"
                  r"|^\s*(?:\w+\s+){0,2}?reverse\s+the\s+order\s*$", t):  # "other way round"
         subject, obj = obj, subject
