@@ -2658,3 +2658,23 @@ def test_one_cube_on_a_pair_is_refused(text, why):
 def test_a_pyramid_layer_count_is_not_a_pair():  # "2 in the middle" is not "both" (numbers are normalized)
     assert meaning(parse("Make a pyramid with 3 blocks on the bottom, 2 in the middle and 1 on top")) == \
         ["pyramid(red,red,red,red,red,red)"]
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger13's ordinary voices: who is addressed, a QA's expected result, a side with "side", a direction with articles
+    ("Okay friends, can everyone put the red block on top of the blue block? Good job!", ["stack(blue,red)"]),
+    ("Boys and girls, put the purple block next to the orange block, nice and close.", ["next_to(orange,purple)"]),
+    ("Expected result - purple cube on the orange patch, orange cube on the purple patch.",
+     ["on_patch(orange,patch:purple)", "on_patch(purple,patch:orange)"]),
+    ("Line up the cyan, pink and brown cubes along the left side.", ["line(brown,cyan,pink)@left"]),
+    ("Make a line of 3 cyan cubes on the left side.", ["line(cyan,cyan,cyan)@left"]),
+    ("Make a line of the cubes purple, pink and cyan, from the left to the right.", ["line[left_to_right](purple,pink,cyan)"]),
+])
+def test_an_audience_an_expected_result_and_a_side_of_the_table(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_side_after_a_relation_stays_relative():
+    with pytest.raises(BadInput, match="no part"):  # the left side of the table, or of the blue cube?
+        parse("put the red cube next to the blue cube on the left side")
+

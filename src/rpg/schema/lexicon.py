@@ -44,10 +44,12 @@ nice nicely neat tidy tidily maybe perhaps possibly need needs needed want wants
 try trying attempt anywhere somewhere flat flatly thanks thank cool great gonna wanna um uh yeah alright
 help wood wooden plastic properly securely stably steadily safely accurately completely entirely fully pls plz sure
 basically essentially literally honestly yo hello ty thx hiya howdy asap today tonight morning afternoon evening fine
-quick quickly haha lol good love exercise cheers tbh imo itself kindly
+quick quickly haha lol good love exercise cheers tbh imo itself kindly tomorrow tmrw tmr
+someone somebody anyone anybody everyone everybody friends guys folks buddy boys girls kids children
 """.split())
 """Further words with no meaning for the goal, each checked not to change what a task asks:
-hedges ("maybe"), wishes ("I need", "we'll", "let's"), praise ("nice"), "anywhere", "lay it
+hedges ("maybe"), wishes ("I need", "we'll", "let's"), praise ("nice"), who is addressed ("boys and
+girls", "can someone ..."), "anywhere", "lay it
 flat" (every cube rests on a face), a cube's material ("the red wooden block": every cube is
 the same, and G never reads it). Dropped by :func:`rpg.schema.reading.normalize`; the task's
 accounting does not list them (it records the mentions that make a part of the task)."""
@@ -674,6 +676,13 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"\b(?:(?:at|in)\s+the\s+(?:midpoint|middle|center|centre)|centrally|midway|cent(?:er|r)ed)\s+(?=between\b)"), ""),
     (re.compile(r"\bcentrally\b"), "at the center of the table"),  # "place red and green centrally"
     (re.compile(r"\binfront\b"), "in front"),  # "infront of the green patch"
+    # "from the left to the right": a direction said with articles, as "from left to right" says it
+    (re.compile(r"\bfrom\s+the\s+(left|right|front|back|bottom|top)\s+to\s+the\s+(left|right|front|back|bottom|top)\b"
+                r"(?!\s+(?:of|side|edge|corner|end)\b)"), r"from \1 to \2"),
+    # "a circle around the center of the table": the structure at the centre, around it
+    (re.compile(r"\b(?:circle|ring)\s+around\s+(?=the\s+(?:center|centre|middle)\s+of\s+the\s+(?:table|workspace)\b)"), "circle in "),
+    # "along the left side": a side of the table the structure runs along
+    (re.compile(r"\balong\s+the\s+(?=(?:left|right|front|back)\s+(?:side|edge)\b)"), "on the "),
     (re.compile(r"\bin\s+back\b(?!\s+of\b)"), "at the back"),  # "a tower of 2 red blocks in back"
     # "at the back of the green cube": behind it (a cube's back, not the table's)
     (re.compile(rf"\b(?:at|to)\s+the\s+back\s+of\s+(?=(?:the\s+)?(?:(?:{COLOR_RE})\s+(?:block|cube|one|patch)|it\b|them\b))"), "behind "),
@@ -1131,6 +1140,8 @@ PREAMBLE_RE = re.compile(
     r"(?:\s+(?:fun|cool|new|different|simple|easy|nice|interesting|quick))?\s*[:,.!;\u2014\u2013-]\s*"
     r"|for\s+" + _PURPOSE + r"(?:\s*[:,\u2014\u2013-]\s*|\s+(?=(?:could|can|would|will|please)\b))"
     r"|(?:success\s+(?:condition|criteri(?:on|a))|task\s+spec(?:ification)?|evaluation\s+task|eval\s+task|test\s+task"
+    r"|expected\s+(?:result|outcome|end\s+state|final\s+state|state|behaviou?r)|(?:level\s+\d+\s+)?win(?:ning)?\s+(?:condition|state)"
+    r"|goal\s+for\s+this\s+(?:level|round|stage)"
     r"|(?:final|end|goal|target|desired)\s+scene)\s*(?::|\u2014|\u2013|-)\s*)")
 """Framing that names when the goal holds or heads the spec, said before it ("When the robot is
 finished, the table should look like this.", "At the end, ...", "Picture the final scene: ...",

@@ -1189,12 +1189,20 @@ _RELATIVE_RE = re.compile(r"\b(?:left|right|front|behind|back|next|beside|betwee
                           r"their|that|this|one|each|other|then|and\s+(?:the|a|an)\b)\b|@region_|[,;:]")
 
 
+def _side_part_ok(m: re.Match) -> bool:
+    """Whether a side is said bare ("on the left") or as a side of cubes the text names by colour
+    ("a line of 3 cyan cubes on the left side"): the side of unnamed cubes stays unread."""
+    part = re.sub(r"[\s-]+", " ", m.group("part")).strip()
+    return part == "" or (part in ("side", "hand side", "half")
+                          and re.search(rf"\b(?:{COLOR_RE})\b", m.string[:m.start()]) is not None)
+
+
 def _table_side(m: re.Match) -> bool:
     """Whether a bare side ("on the left") ends a text that names nothing else it could be the
     side of ("put two green cubes on the left", "stack the red block on the blue block on the
     right"): then it is the table's side.  Anything else that could anchor it (another
     relation, a second clause, a pronoun) leaves it relative (and the text refused)."""
-    return (m.group("part") == "" and m.group(0).split()[0] in ("on", "to", "at", "in")
+    return (_side_part_ok(m) and m.group(0).split()[0] in ("on", "to", "at", "in")
             and (m.group("lr") or m.group("lr2")) not in ("middle", "center", "centre")  # a role or the centre: above
             and re.fullmatch(r"\s*[.!]?\s*", m.string[m.end():]) is not None
             and _RELATIVE_RE.search(m.string[:m.start()]) is None
@@ -1214,7 +1222,8 @@ def _heading_side(m: re.Match) -> bool:
 
 
 NEW_STRUCTURE_BEFORE_RE = re.compile(
-    r"(?:(?:^|[,;:.]\s*)(?:(?:a|an|1|\d+)\s+)?|\b(?:and|then|build|make|set\s+up|put|place|create|form)\s+(?:a|an|1|\d+)\s+)"
+    r"(?:^\s*line\s+up\s+(?:the\s+)?(?:(?:\d+|[a-z]+)(?:\s*,\s*|\s+and\s+|\s+))+(?:cubes|blocks)\s*$)|"  # "line up the cyan, pink and brown cubes"
+    r"(?:(?:^|[,;:.]\s*)(?:(?:a|an|1|\d+)\s+)?|\b(?:and|then|build|make|set\s+up|put|place|create|form|in|into)\s+(?:a|an|1|\d+)\s+)"
     r"(?:(?!the\b|that\b|this\b|its\b|their\b)[\w-]+\s+){0,2}?"
     rf"{lexicon.STRUCTURE_NOUN}s?"
     r"(?:\s+of\s+(?:\d+\s+)?(?:[a-z]+\s+)?(?:cubes|blocks))?\s*$")
@@ -1225,7 +1234,7 @@ def _structure_side(m: re.Match) -> bool:
     """Whether a bare side ("at the front", "on the left") says where a structure the text is
     describing stands ("set up a line of 4 gray cubes at the front and a circle of 5 orange cubes
     at the back"): a new structure has no sides of its own to be relative to."""
-    if not (m.group("part") == "" and m.group(0).split()[0] in ("on", "at", "in", "to")
+    if not (_side_part_ok(m) and m.group(0).split()[0] in ("on", "at", "in", "to")
             and (m.group("fb") or m.group("lr2")) in ("front", "back", "rear", "left", "right") and not m.group("lr")
             and not names_a_role(m.string[:m.start()], m.string)):
         return False
