@@ -2678,3 +2678,24 @@ def test_a_side_after_a_relation_stays_relative():
     with pytest.raises(BadInput, match="no part"):  # the left side of the table, or of the blue cube?
         parse("put the red cube next to the blue cube on the left side")
 
+
+@pytest.mark.parametrize("text,expected", [
+    ("Make a pile of four pink cubes.", ["pile(pink,pink,pink,pink)"]),
+    ("Make a pile of four cubes: two green, one purple, one red.", ["pile(green,green,purple,red)"]),
+    ("make a single heap of 3 green cubes in the back left corner", ["pile(green,green,green)@back_left"]),
+])
+def test_one_pile_of_the_cubes_named(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_one_pile_of_cubes_nobody_named_is_refused():
+    with pytest.raises(BadInput, match="does not say which cubes"):
+        parse("make a pile of the cubes")
+
+
+def test_one_pile_compiles_and_its_goal_holds(tmp_path):
+    from rpg.compiler import compile_instruction
+
+    result = compile_instruction("make one pile of the red, green and blue cubes", tmp_path, name="pile")
+    assert result.valid, result.gates
+

@@ -224,6 +224,17 @@ def test_piles_by_color_and_groups():
     assert Piles(groups=(("r1", "b2"), ("r2", "b1"))).evaluate(state(*mixed))
 
 
+def test_one_pile_is_judged_by_its_spread_alone():
+    together = [cube("r1", 0.5, 0.0), cube("r2", 0.5, 0.05), cube("r3", 0.55, 0.02)]
+    names = tuple(o.name for o in together)
+    assert Piles(names, by="color").evaluate(state(*together))  # one colour: one pile
+    apart = [cube("r1", 0.4, -0.2), cube("r2", 0.5, 0.05), cube("r3", 0.65, 0.2)]
+    assert not Piles(names, by="color").evaluate(state(*apart))
+    mixed = [cube("r1", 0.5, 0.0), cube("b1", 0.5, 0.05, color="blue"), cube("r3", 0.55, 0.02)]
+    assert Piles(groups=(("r1", "b1", "r3"),)).evaluate(state(*mixed))
+    assert not Piles(groups=(("r1", "b1", "r3"),)).evaluate(state(*[cube("r1", 0.4, -0.2), *mixed[1:]]))
+
+
 def test_layers_uniform():
     objs = [cube(f"c{i}", 0.5, 0.0 - E * (i % 2), Z0 + E * (i // 2), color=["red", "blue"][i // 2]) for i in range(4)]
     names = tuple(o.name for o in objs)

@@ -1215,7 +1215,8 @@ class Bridge(Pyramid):
 
 @dataclass(frozen=True, repr=False)
 class Piles(Predicate):
-    """Objects gathered in separate piles on the table.
+    """Objects gathered in separate piles on the table (or in one pile, when ``by`` gives every
+    object one value or ``groups`` holds one group: its spread alone is judged).
 
     Either ``by`` an attribute (``color``, ``label``, ``kind`` or ``type``, where type is
     letter / digit / operator / colored_cube) or with explicit ``groups`` of names.  Each
@@ -1270,8 +1271,14 @@ class Piles(Predicate):
 
     def _evaluate(self, state):
         groups = self.resolve_groups(state)
-        if len(groups) < 2:
-            return self._result(False, "piles need at least two groups", {"groups": groups})
+        if not groups:
+            return self._result(False, "no cubes to pile", {"groups": groups})
+        if len(groups) == 1:  # one pile ("pile the three orange cubes up"): its cubes gathered, no other pile to keep apart
+            xy = np.array([_planar(state[n]) for n in groups[0]])
+            spread = float(np.max(np.linalg.norm(xy - xy.mean(axis=0), axis=1)))
+            ok = spread <= C.PILE_RADIUS
+            return self._result(ok, f"one pile {'gathered' if ok else 'not gathered'} (spread {spread * 100:.1f} cm)",
+                                {"groups": groups, "spread": [spread]}, {"spread": C.PILE_RADIUS})
         cents = []
         spread = []
         for g in groups:
@@ -1290,7 +1297,7 @@ class Piles(Predicate):
 
     def describe(self):
         if self.groups:
-            return f"{len(self.groups)} separate piles"
+            return "one pile" if len(self.groups) == 1 else f"{len(self.groups)} separate piles"
         return f"piles sorted by {self.by}"
 
 

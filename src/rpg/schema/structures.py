@@ -476,6 +476,8 @@ class PilesKind(StructureKind):
         if spec.piles_by == "type" or spec.material == "mixed":
             return "Sort letters, numbers and colors mixed into respective piles" + tail
         colors = list(dict.fromkeys(spec.colors()))
+        if len(colors) == 1:  # one colour: one pile
+            return f"Make a pile of {len(spec.items)} {colors[0]} blocks" + tail
         return f"Sort {len(spec.items)} {join_words(colors)} blocks into piles by color" + tail
 
     def fit(self, spec, resize):

@@ -468,8 +468,7 @@ def recognize_piles(f: Features, b: Builder) -> bool:
     else:
         k = stated_count(f, "pile|bunch|group|cluster|heap", default=None)
         if k == 1 or re.search(r"\b(?:a|one|single)\s+(?:single\s+)?(?:pile|heap|bunch|cluster|group)\b", f.text):
-            raise ParseError("a pile task sorts cubes into two or more piles; for all cubes together, "
-                             "say \"stack all the blocks\" or name the piles")
+            return _one_pile(f, b)
         colors = list(dict.fromkeys(f.color_list())) or colors_for(k or 3, f, prefer=[])
         per = stated_count(f, default=None)
         per = max(2, per // len(colors)) if per else 3
@@ -492,6 +491,36 @@ def recognize_piles(f: Features, b: Builder) -> bool:
     else:
         b.preds.append(Piles(names, by=by))
         b.summary.append(f"{len(groups)} separate piles, one per {what}")
+    b.primitives += ["arrange"]
+    b.min_separation = 0.06
+    return True
+
+
+def _one_pile(f: Features, b: Builder) -> bool:
+    """One pile of the cubes the text names ("a pile of four pink cubes", "one heap of the red,
+    green and blue blocks"): their colours and counts said, else refused (no cube invented).
+
+    Raises:
+        ParseError: the pile's cubes are not named by colour.
+    """
+    groups = counted_groups(f)
+    colors = list(f.color_list())
+    n = stated_count(f, default=None)
+    if groups:
+        cubes = [c for k, c in groups for _ in range(k)]
+    elif len(set(colors)) == 1 and n:
+        cubes = colors[:1] * n
+    elif len(colors) >= 2 and len(set(colors)) == len(colors) and n in (None, len(colors)):
+        cubes = colors
+    else:
+        raise ParseError(f"\"{f.original[:80]}\" asks for one pile but does not say which cubes; name them "
+                         "(e.g. \"a pile of three red cubes\")")
+    if len(cubes) < 2:
+        raise ParseError("a pile needs at least two cubes; say how many")
+    names = [b.cube(c) for c in cubes]
+    b.place(cluster_layout([names], b.unit_centers(1, 0.16)))
+    b.preds.append(Piles(tuple(names), by="color") if len(set(cubes)) == 1 else Piles(groups=(tuple(names),)))
+    b.summary.append(f"one pile of {len(names)} cubes")
     b.primitives += ["arrange"]
     b.min_separation = 0.06
     return True
