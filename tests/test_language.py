@@ -2699,3 +2699,20 @@ def test_one_pile_compiles_and_its_goal_holds(tmp_path):
     result = compile_instruction("make one pile of the red, green and blue cubes", tmp_path, name="pile")
     assert result.valid, result.gates
 
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger13: a counted group and one more cube on top or below; an end said of a named cube; one tower
+    ("Build a stack of two blue cubes and put the green cube on top.", ["stack(blue,blue,green)"]),
+    ("Build a tower of five cubes with a red cube at the bottom and four yellow cubes above it.",
+     ["stack(red,yellow,yellow,yellow,yellow)"]),
+    ("Stack a gray cube, a black cube and a white cube with gray on top and white at the bottom.", ["stack(white,black,gray)"]),
+    ("Make one tower with the cubes red, white and blue, the red in the base and the blue in the top.", ["stack(red,white,blue)"]),
+])
+def test_a_counted_group_with_one_more_on_top_and_ends_of_named_cubes(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_counted_group_and_one_more_must_add_up():
+    with pytest.raises(BadInput):  # six said, five described
+        parse("Build a tower of six cubes with a red cube at the bottom and four yellow cubes above it.")
+

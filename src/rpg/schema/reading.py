@@ -785,7 +785,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         # (bare "on the left ... on the right" stays a relation between the two cubes, the weaker reading)
         text = re.sub(said, r"\1 \2 of the table", text)
     # "with yellow as the base": a cube of that colour at that end (read as a tower of yellow cubes)
-    text = re.sub(rf"\bwith\s+({COLOR_RE})\s+(as|at|on)\s+(the\s+)?(base|bottom|top)\b", r"with a \1 block \2 \3\4", text)
+    # "with red on top": a cube at that end, the one already named when its colour was ("a red cube, ... with red on top")
+    text = re.sub(rf"\bwith\s+({COLOR_RE})\s+(as|at|on)\s+(the\s+)?(base|bottom|top)\b", _end_cube, text)
     text = lexicon.LAYER_SYNONYM_RE.sub(lambda m: "bottom " if m.group("low") else "top ", text)
     # "the green one goes in between" (a middle left unnamed): in the middle
     if re.search(r"\b(?:stack|stacked|tower|towers|stacks)\b", text):
@@ -1012,6 +1013,18 @@ def _roles_first(m: re.Match) -> str:
 
 
 STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
+    # "build a stack of two blue cubes and put the green cube on top", "stack 2 blue cubes with a green one on top":
+    # the counted cubes, then the one on top (the count had reached only one of them)
+    (re.compile(rf"\b(?:(?:build|make|create|form)\s+a\s+(?:{TOWER_NOUNS})\s+of|stack)\s+(\d+)\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)"
+                r"\s*,?\s+(?:and|with)\s+(?:then\s+)?(?:(?:put|place|add|stack|set)\s+)?(?:a|an|the|1)\s+"
+                rf"({COLOR_RE})\s+(?:block|cube|brick|one)\s+(?:on\s+top|at\s+the\s+top)(?:\s+of\s+(?:it|them|the\s+(?:stack|tower)))?\b"),
+     lambda m: "build a tower from bottom to top: " + ", ".join([m.group(2)] * int(m.group(1)) + [m.group(3)]), True),
+    # "a tower of five cubes with a red cube at the bottom and four yellow cubes above it": the one, then the counted
+    (re.compile(rf"(?:\s+with\s+|\s*:\s*)(?:a|an|the|1)\s+({COLOR_RE})\s+(?:block|cube|brick)\s+(?:at|on)\s+the\s+(?:bottom|base)"
+                rf"\s*,?\s+and\s+(\d+)\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)\s+(?:above\s+it|on\s+top(?:\s+of\s+it)?)\b"),
+     lambda m: " from bottom to top: " + ", ".join([m.group(1)] + [m.group(3)] * int(m.group(2))), True),
+    # "make one tower with the cubes red, white and blue": one tower is a tower (its "1" had been read as the cube count)
+    (re.compile(rf"\b(make|build|create|form|construct|stack)\s+1\s+({TOWER_NOUNS})\b(?!\s+(?:and|,))"), r"\1 a \2"),
     # "below red, in the middle blue, above green": each role said before its cube, read from the bottom
     (re.compile(rf"\b{_ROLE_FIRST.format(i=1)}\s*[,;]?\s*(?:and\s+)?{_ROLE_FIRST.format(i=2)}"
                 rf"(?:\s*[,;]?\s*(?:and\s+)?{_ROLE_FIRST.format(i=3)})?(?![\w\s]*\b(?:of|on)\b)"), _roles_first, True),
@@ -1042,7 +1055,7 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     # "stack the red, green and blue blocks, green in the middle": a role said after a comma (the
     # middle had been read as the table's centre and a fourth cube made)
     (re.compile(rf"\s*,\s*(?:and\s+)?(?:the\s+)?({COLOR_RE})\s+(?:block\s+|cube\s+|one\s+)?(?:(?:is|goes|sits)\s+)?"
-                r"(in\s+the\s+middle|on\s+top|at\s+the\s+(?:bottom|top|base))\b(?!\s+of\b)"),
+                r"(in\s+the\s+middle|on\s+top|(?:at|in)\s+the\s+(?:bottom|top|base))\b(?!\s+of\b)"),
      lambda m: m.group(0) if re.search(rf"\b{m.group(1)}\s*$", m.string[:m.start()])  # "black, black on top": one more
      else f" with {m.group(1)} {m.group(2)}", True),
     # "a tower of four with a red base and a blue top": that cube at that end (a tower only: a
@@ -1253,6 +1266,12 @@ def _group_side(m: re.Match) -> bool:
     return (m.group(0).split()[0] in ("on", "at", "in", "to")
             and not names_a_role(m.string[:m.start()], m.string)
             and lexicon.GROUP_SUBJECT_RE.search(m.string[:m.start()]) is not None)
+
+
+def _end_cube(m: re.Match) -> str:
+    """"with red on top" -> "with a red block on top", or "the red block" when a red cube was named before."""
+    article = "the" if re.search(rf"\b{m.group(1)}\b", m.string[:m.start()]) else "a"
+    return f"with {article} {m.group(1)} block {m.group(2)} {m.group(3) or ''}{m.group(4)}"
 
 
 def mark_regions(text: str) -> str:
