@@ -2716,3 +2716,18 @@ def test_a_counted_group_and_one_more_must_add_up():
     with pytest.raises(BadInput):  # six said, five described
         parse("Build a tower of six cubes with a red cube at the bottom and four yellow cubes above it.")
 
+
+@pytest.mark.parametrize("text,expected", [
+    ("Place a red cube on each side of the black cube.", ["between(black;red,red)"]),
+    ("place the yellow cube in the center of the table and the two orange cubes on either side of it",
+     ["between(yellow;orange,orange)", "in_region(yellow,center)"]),
+])
+def test_cubes_on_each_side_put_one_between_them(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_leave_says_where_a_cube_ends_and_stays_an_action_otherwise():
+    assert meaning(parse("leave the white cube on the red patch")) == ["on_patch(white,patch:red)"]
+    with pytest.raises(BadInput, match="action"):
+        parse("leave the room")
+

@@ -666,8 +666,9 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(rf"\bthe\s+({COLOR_RE})\s+and\s+(?:the\s+)?({COLOR_RE})\s+(block|cube)s\s+(on|onto|to|next\s+to)\s+the\s+"
                 rf"({COLOR_RE})\s+patch\s+and\s+the\s+({COLOR_RE})\s+patch\s*,?\s+respectively\b"),
      r"the \1 \3 \4 the \5 patch and the \2 \3 \4 the \6 patch"),
-    # "keep the green cube far from the yellow cube": where it ends up, said as a state to hold
-    (re.compile(rf"(?:^|(?<=[.;!,]\s)|(?<=\band\s))keep\s+(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|brick)\b|(?:it|them)\s+"
+    # "keep the green cube far from the yellow cube", "leave the white cube on the red patch": where it ends up, said as a
+    # state to hold
+    (re.compile(rf"(?:^|(?<=[.;!,]\s)|(?<=\band\s))(?:keep|leave)\s+(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|brick)\b|(?:it|them)\s+"
                 rf"(?:far|next|near|beside|behind|in\s+front|on|to\s+the|at|left|right)\b)"), "put "),
     # "the table's center", "the table's left side": the place on the table, as "the center of the table" says it
     (re.compile(r"\bthe\s+(table|workspace)(?:'s)?\s+(center|centre|middle)\b"), r"the \2 of the \1"),  # "the table centre"
@@ -676,6 +677,11 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"\b(?:(?:at|in)\s+the\s+(?:midpoint|middle|center|centre)|centrally|midway|cent(?:er|r)ed)\s+(?=between\b)"), ""),
     (re.compile(r"\bcentrally\b"), "at the center of the table"),  # "place red and green centrally"
     (re.compile(r"\binfront\b"), "in front"),  # "infront of the green patch"
+    # "a red cube on each side of the black cube", "the two orange cubes on either side of it": the middle one between them
+    (re.compile(rf"\b(put|place|set)\s+(?:a|an|1|one|(?:the\s+)?(?:2|two))\s+({COLOR_RE})\s+(block|cube)s?\s+on\s+(?:each|either|both|2|opposite)\s+"
+                rf"sides?\s+of\s+the\s+({COLOR_RE})\s+(block|cube)\b"), r"\1 the \4 \5 between the 2 \2 \3s"),
+    (re.compile(rf"\band\s+(?:(?:put|place|set)\s+)?(?:the\s+)?(?:2|two)\s+({COLOR_RE})\s+(block|cube)s\s+on\s+(?:each|either|both|2|opposite)\s+"
+                r"sides?\s+of\s+it\b"), r"and put it between the 2 \1 \2s"),
     # "from the left to the right": a direction said with articles, as "from left to right" says it
     (re.compile(r"\bfrom\s+the\s+(left|right|front|back|bottom|top)\s+to\s+the\s+(left|right|front|back|bottom|top)\b"
                 r"(?!\s+(?:of|side|edge|corner|end)\b)"), r"from \1 to \2"),
