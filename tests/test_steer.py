@@ -1206,3 +1206,34 @@ def test_a_version_reference_with_an_unread_change_is_refused(tmp_path):
     steer(fam.path, "make the top one white")
     with pytest.raises(SteerError, match="did not read"):
         steer(fam.path, "like v0 but blue on top")  # on top as well, or the top one blue? it had returned to v0 alone
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # steer_stranger9's voices: a correction that denies the old relation, a count against the old one, a review's
+    # opening, a notebook's key=value, a polite letter, a word changed "same thing but ..."
+    ("Place the yellow cube in front of the purple cube", ["actually it should be behind, not in front"],
+     ("modify", ["behind(yellow,purple)"])),
+    ("Put three green cubes in a row", ["four instead of three"], ("tweak", ["line(green,green,green,green)"])),
+    ("Make a circle of eight cyan cubes", ["too many, use six"], ("tweak", ["circle(cyan,cyan,cyan,cyan,cyan,cyan)"])),
+    ("Put five blue cubes in a row", ["n_cubes=3", "region=back"], ("modify", ["line(blue,blue,blue)@back"])),
+    ("Stack blue, blue, red, bottom to top", ["+green top", "@center"], ("modify", ["stack(blue,blue,red,green)@center"])),
+    ("Put the red cube behind the blue cube", ["rel=left_of"], ("modify", ["left_of(red,blue)"])),
+    ("Put three red cubes in a line", ["red -> gray"], ("tweak", ["line(gray,gray,gray)"])),
+    ("Spell CAT with letter cubes", ["same thing but DOG"],
+     ("modify", ["line[left_to_right](D,O,G)", "reads(D,O,G;direction=left_to_right,face=up,text=DOG)"])),
+    ("Put the blue cube on top of the yellow cube", ["is better if you put also one red cube under the yellow, please"],
+     ("extend", ["stack(red,yellow,blue)"])),
+    ("Put the red cube on the blue patch and the green cube on the yellow patch",
+     ["Hello, thank you so much for this, it looks great. If it isn't too much trouble, could you possibly also put a "
+      "purple cube on the blue patch together with the red one? Many thanks in advance."],
+     ("extend", ["on_patch(green,patch:yellow)", "on_patch(purple,red,patch:blue)"])),
+    ("Put three yellow cubes in a line", ["make every one of those cubes orange instead? No rush at all, thanks."],
+     ("tweak", ["line(orange,orange,orange)"])),
+])
+def test_steer_stranger9_voices(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+def test_a_relation_named_after_it_is_no_added_cube(tmp_path):  # "one" there is the cube's noun, not a count
+    assert _steered(tmp_path, "Put the green block in front of the yellow block", "put it behind the yellow one instead")[-1] \
+        == ("modify", ["behind(green,yellow)"])

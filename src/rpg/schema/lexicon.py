@@ -68,7 +68,7 @@ TYPOS: dict[str, str] = {
     "blu": "blue", "gren": "green", "yelow": "yellow", "purpel": "purple", "cirlce": "circle", "cricle": "circle",
     "towr": "tower", "pyramd": "pyramid", "rite": "right", "da": "the", "teh": "the", "ontop": "on top",
     "insted": "instead", "instaed": "instead", "isntead": "instead", "mak": "make", "midle": "middle", "middel": "middle",
-    "nxt": "next", "swtich": "switch", "swich": "switch", "swithc": "switch", "revese": "reverse", "reverce": "reverse",
+    "nxt": "next", "mor": "more", "swtich": "switch", "swich": "switch", "swithc": "switch", "revese": "reverse", "reverce": "reverse",
 }
 """Misspellings of a word of the vocabulary, each read as that word (curated, never a guess; the
 steering corrects an edit's words with this table before reading it)."""
@@ -825,7 +825,9 @@ POLITE_CONDITION_RE = re.compile(
     r"\b(?:i|we)(?:'d|\s+would)\s+(?:love|like|appreciate)\s+it\s+if\s+you\s+(?:could|would|can)\s+"
     r"|[,;]?\s*\bif\s+you\s+(?:could|would|can|please)\b(?=\s+(?:please\s+)?(?:put|place|move|set|stack|make|build|arrange|"
     r"take|line|get|bring|slide|push|spell|sort|lay|form|create|pile)\b)"
-    r"|[,;(]?\s*\bif\s+(?:at\s+all\s+)?possible\b\)?|[,;]?\s*\bif\s+you\s+(?:could|would|can|please)\s*(?=[.!,;]|$)")
+    r"|[,;(]?\s*\bif\s+(?:at\s+all\s+)?possible\b\)?|[,;]?\s*\bif\s+you\s+(?:could|would|can|please)\s*(?=[.!,;]|$)"
+    r"|(?i:[,;]?\s*\bif\s+(?:it|that)\s+(?:is\s+not|isn'?t|is\s+no|'?s\s+not)\s+too\s+much\s+(?:trouble|work|bother)\b\s*,?)"
+    r"|(?i:\b(?:it\s+)?(?:is|would\s+be|'?d\s+be)\s+better\s+if\s+you\b)")
 """A condition that is only politeness ("I'd love it if you could take the yellow cube ...", ",
 if you could", "if possible"): dropped before conditions are refused, so the request is read
 (:func:`rpg.schema.reading.normalize`).  "If the green cube is on the left ..." stays a condition."""
@@ -1392,6 +1394,40 @@ INTENSIFIER_RIGHT_RE = re.compile(r"(?i)\b(?:right|directly|just)\s+(?=next\s+to
 """"Right" that only stresses a place ("right next to the blue block"): not the side "right"."""
 
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
+    (re.compile(r"(?i)\b(thank\s+you|thanks)\s+(?:so|very)\s+much\b"), r"\1"),  # thanks, not a quantity
+    # a greeting and thanks for what was done: nothing to change ("this" there is the task, not a cube)
+    (re.compile(r"(?i)^\s*(?:hello|hi|hey)(?:\s+there)?\s*[,!.]\s*"), ""),
+    (re.compile(r"(?i)(?:^|(?<=[.!,]))\s*(?:thank\s+you|thanks)(?:\s+a\s+lot)?(?:\s+for\s+(?:this|that|it|the\s+\w+))?\s*[,.!]\s*"), " "),
+    (re.compile(r"(?i)\b(could|would|can)\s+you\s+(?:possibly|perhaps|maybe|please)\s+"), r"\1 you "),
+    (re.compile(r"(?i)(?:^|(?<=[.!,]))\s*(?:it|this|that)\s+looks\s+(?:really\s+)?(?:great|good|nice|fine|awesome|perfect|cool)\s*[.!,]"), " "),
+    # a review's or an annotator's opening ("LGTM otherwise, but", "correction:", "suggestion:", "nit:"): no change said
+    (re.compile(r"(?i)^\s*(?:lgtm|looks\s+good|looks\s+great|nice)(?:\s+otherwise)?\s*[,.!]?\s*(?:but\s+)?"), ""),
+    (re.compile(r"(?i)^\s*(?:correction|suggestion|nit|fix|update|edit|change)\s*:\s*"), ""),
+    (re.compile(r"(?i)\b(put|place|add|stack)\s+also\b"), r"also \1"),
+    # "... on the blue patch together with the red one": the patch it shares, said twice
+    (re.compile(rf"(?i)(\bpatch)\s*,?\s+(?:together\s+with|alongside|along\s+with)\s+the\s+(?:{COLOR_RE})\s+(?:one|cube|block)\b"), r"\1"),  # "put also one red cube under ...": the order of other tongues
+    # "hope you're having a good day! ... I was wondering, would it be at all possible to make ...": the request
+    (re.compile(r"(?i)^.*?\b(?:would|could)\s+it\s+be\s+(?:at\s+all\s+)?possible\s+to\s+"), ""),
+    (re.compile(r"(?i)[.!]?\s*(?:no\s+rush(?:\s+at\s+all)?|thanks?(?:\s+(?:so\s+much|a\s+lot|in\s+advance))?|many\s+thanks"
+                r"(?:\s+in\s+advance)?|cheers)\s*[.!]?\s*(?=(?:no\s+rush|thanks?|many\s+thanks|cheers|$))"), ""),
+    # "it should be behind, not in front": the relation said, the old one denied (a correction, not a negation)
+    (re.compile(r"(?i)\b(behind|in\s+front(?:\s+of\s+it)?|on\s+top|under(?:neath)?|below|above|(?:to\s+the\s+)?(?:left|right)(?:\s+of\s+it)?"
+                r"|next\s+to\s+it|on\s+the\s+(?:left|right))\s*,\s*(?:and\s+)?not\s+(?:behind|in\s+front|on\s+top|under(?:neath)?|below|above"
+                r"|(?:to\s+the\s+|on\s+the\s+)?(?:left|right)|next\s+to)(?:\s+of)?(?:\s+(?:it|of\s+it))?\s*[.!]?\s*$"), r"\1"),
+    # "same thing but DOG": the word changed
+    (re.compile(r"^\s*(?:(?:the\s+)?same\s+(?:thing|task|again|as\s+before)\s*,?\s*)?but\s+(?:with\s+)?([A-Z]{2,})\s*[.!]?\s*$"),
+     r"spell \1 instead"),
+    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before)\s*,?\s*but\s+"), ""),
+    # notebook edits: "n_cubes=3", "region=back", "rel=left_of", "red -> gray", "+green top", "@center"
+    (re.compile(r"(?i)^\s*(?:n_?cubes|num_?cubes|n_?blocks|count|n)\s*[=:]\s*(\d+)\s*$"), r"use \1 blocks instead"),
+    (re.compile(r"(?i)^\s*(?:region|place|where|location|loc)\s*[=:]\s*([a-z_]+)\s*$"),
+     lambda m: f"move it to the {m.group(1).replace('_', ' ')} of the table"),
+    (re.compile(r"(?i)^\s*(?:rel|relation|predicate)\s*[=:]\s*(left_of|right_of|in_front_of|behind|next_to|far_from|on|on_top_of|under)\s*$"),
+     lambda m: f"put it {m.group(1).replace('_', ' ')} instead"),
+    (re.compile(r"(?i)^\s*@\s*([a-z_]+)\s*$"), lambda m: f"move it to the {m.group(1).replace('_', ' ')} of the table"),
+    (re.compile(rf"(?i)^\s*({COLOR_RE})\s*(?:->|\u2192|=>)\s*({COLOR_RE})\s*$"), r"make the \1 ones \2"),
+    (re.compile(rf"(?i)^\s*\+\s*(?:1\s+)?({COLOR_RE})\s+(?:on\s+)?(top|bottom)\s*$"),
+     lambda m: f"add a {m.group(1)} block {'on top' if m.group(2).lower() == 'top' else 'at the bottom'}"),
     # "like v0 but with a yellow top": that end's cube recoloured; "... but with a black cube on top": one added there
     (re.compile(rf"(?i)\bbut\s+with\s+(?:a|an)\s+({COLOR_RE})\s+(top|bottom|base)\b(?!\s+(?:of|layer|row|level))"),
      r"but make the \2 one \1"),
@@ -1523,9 +1559,10 @@ EDIT_KEEP_THEN_ADD_RE = re.compile(r"(?i)^.*?\bkeep(?:ing)?\s+(?:the|this|that)\
 clause after it."""
 
 EDIT_COUNT_ALONE_RE = re.compile(
-    r"(?i)\s*(?:(?:actually|ok(?:ay)?|fine|right|hmm+|so)\s*[,.!]?\s*)*(?:let'?s\s+)?(?:go\s+with|try|use|make\s+(?:it|that)|how\s+about|maybe)?\s*"
+    r"(?i)\s*(?:(?:actually|ok(?:ay)?|fine|right|hmm+|so|too\s+(?:many|few))\s*[,.!]?\s*)*(?:let'?s\s+)?(?:go\s+with|try|use|make\s+(?:it|that)|how\s+about|maybe)?\s*"
     rf"(\d+|{COUNT_WORD_RE})"
-    rf"(?:\s+(?P<color>{COLOR_RE}))?(?:\s+(?:blocks|cubes|bricks))?(?:\s+instead)?(?:\s+(?:please|pls|plz))?\s*[.!]?\s*")
+    rf"(?:\s+(?P<color>{COLOR_RE}))?(?:\s+(?:blocks|cubes|bricks))?(?:\s+instead(?:\s+of\s+(?:\d+|{COUNT_WORD_RE}))?)?"
+    r"(?:\s+(?:please|pls|plz))?\s*[.!]?\s*")
 """An edit that is a count alone ("three", "let's go with 7 instead", "actually, three", "make that
 seven pink cubes pls"): the structure's count (a colour said with it must be the structure's own)."""
 

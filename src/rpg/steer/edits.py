@@ -361,7 +361,7 @@ def _adds_a_cube(add: re.Match, t: str) -> bool:
     """Whether a verb's phrase brings in a cube: "add ...", or "put/stack a (new) ..." (not "put it
     on the blue patch", "put the blue block on the red block"; "also put the yellow block on it" is)."""
     if add.group("verb") not in ("add", "append", "include") and not re.search(
-            r"\b(?:an?|another|\d+|more|some|new|extra)\b", add.group("what")) and not (
+            r"\b(?:an?|another|\d+|one(?=\s+(?:[a-z]+\s+)?(?:block|cube)s?\b)|more|some|new|extra)\b", add.group("what")) and not (
             EDIT_ADDITIVE_RE.search(t) and re.fullmatch(rf"\s*the\s+(?:{COLOR_RE})\s+(?:block|cube)\s*", add.group("what"))):
         return False
     if re.search(r"\bpatch", add.group("what") + t[add.end():]):
