@@ -2731,3 +2731,20 @@ def test_leave_says_where_a_cube_ends_and_stays_an_action_otherwise():
     with pytest.raises(BadInput, match="action"):
         parse("leave the room")
 
+
+@pytest.mark.parametrize("text,expected", [
+    # a wall's layers said as a count: it had been a wall of two layers whatever the count ("3 layers, 2 cubes per layer"
+    # had compiled four cubes), and "4 cyan cubes per row" had made a wall of four
+    ("Build a wall with 3 layers, 2 cubes per layer", ["wall(red,red,red,red,red,red)"]),
+    ("Build a wall of 3 layers, 2 cubes each", ["wall(red,red,red,red,red,red)"]),
+    ("Build a wall of 2 rows, 4 cyan cubes per row.", ["wall(cyan,cyan,cyan,cyan,cyan,cyan,cyan,cyan)"]),
+    ("Build a wall with three red cubes in the bottom row and three blue cubes in the row above",
+     ["wall(red,red,red|blue,blue,blue)"]),
+    ("Build a wall two cubes high: three grey cubes in the bottom row and three brown cubes on top of them.",
+     ["wall(gray,gray,gray|brown,brown,brown)"]),
+    ("Build a pyramid of six green cubes: three on the bottom, two in the middle and one on top",
+     ["pyramid(green,green,green,green,green,green)"]),  # the middle layer, not the table's centre
+])
+def test_a_walls_layers_counted_and_rows_said_one_above_another(text, expected):
+    assert meaning(parse(text)) == expected
+

@@ -682,6 +682,10 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
                 rf"sides?\s+of\s+the\s+({COLOR_RE})\s+(block|cube)\b"), r"\1 the \4 \5 between the 2 \2 \3s"),
     (re.compile(rf"\band\s+(?:(?:put|place|set)\s+)?(?:the\s+)?(?:2|two)\s+({COLOR_RE})\s+(block|cube)s\s+on\s+(?:each|either|both|2|opposite)\s+"
                 r"sides?\s+of\s+it\b"), r"and put it between the 2 \1 \2s"),
+    # "three red cubes in the bottom row and three blue cubes in the row above": the second row
+    (re.compile(r"(?<=\bbottom\s)(row|layer|level)\b(.*?)(?:\b(?:in|on)\s+the\s+(?:(?:next|following)\s+(?:row|layer|level)|(?:row|layer|level)\s+"
+                r"(?:above|on\s+top)(?:\s+(?:it|that|them|of\s+(?:it|that|them)))?)|\bon\s+top\s+of\s+(?:them|it|those|that))\b"),
+     r"\1\2in the second \1"),
     # "from the left to the right": a direction said with articles, as "from left to right" says it
     (re.compile(r"\bfrom\s+the\s+(left|right|front|back|bottom|top)\s+to\s+the\s+(left|right|front|back|bottom|top)\b"
                 r"(?!\s+(?:of|side|edge|corner|end)\b)"), r"from \1 to \2"),
@@ -1034,10 +1038,12 @@ WALL_LAYER_ROLE_RE = re.compile(rf"(?<!\d\s)(?<![a-z]\s\d\s)\b(?P<c>{COLOR_RE})\
 that whole layer's colour (read as "bottom layer blue"); the bottom cube alone had been made blue
 and the rest given colours nobody said."""
 
-PER_LAYER_RE = re.compile(rf"\b(\d+|{COUNT_WORD_RE})\s+(?:cubes?|blocks?)\s+(?:per|in\s+each|on\s+each|for\s+each|a)\s+"
+PER_LAYER_RE = re.compile(rf"\b(?P<n1>\d+|{COUNT_WORD_RE})\s+(?:(?P<c>{COLOR_RE})\s+)?(?:cubes?|blocks?)\s+(?:per|in\s+each|on\s+each|for\s+each|a)\s+"
                           r"(?:layer|row|level|tier|course)\b"
-                          rf"|(?<=layers,\s)(\d+|{COUNT_WORD_RE})\s+(?:cubes?|blocks?)\s+each\b")
-"""A wall's width said per layer ("three cubes per layer"): read as "N wide"."""
+                          rf"|\b(?P<noun>layers|rows|levels|tiers|courses)(?P<sep>,?\s+(?:with\s+|of\s+)?)(?P<n2>\d+|{COUNT_WORD_RE})\s+"
+                          r"(?:cubes?|blocks?)\s+each\b")
+"""A wall's width said per layer ("three cubes per layer"): read as "N wide"; a colour said with it
+("4 cyan cubes per row") is every cube's, read as "N wide, all <colour>"."""
 
 
 LETTER_GREETING_RE = re.compile(r"^\s*(?i:hi|hello|hey|dear)\s+(?:[A-Z][a-z]+|all|team|everyone)\s*[,!:.-]\s*")
@@ -1312,8 +1318,8 @@ END_ROLE_LIST_BEFORE = re.compile(r"\b(?:at|on)\s+the\s+(?:left|right|front|back
 """Text before "in the middle" that lists the ends of a line first ("red at the left end, blue at
 the right end, yellow in the middle"): the middle is a cube's role too."""
 
-COLON_ROLE_LIST_BEFORE = re.compile(r"\b(?:row|line|tower|stack|column)s?\b[^:.;]*:\s*(?:[^.;:]*(?:,|\band)\s+)?(?:the\s+)?"
-                                    r"(?:" + "|".join(COLORS) + r")(?:\s+(?:block|cube|one))?(?:\s+(?:is|goes|sits))?\s*$")
+COLON_ROLE_LIST_BEFORE = re.compile(r"\b(?:row|line|tower|stack|column|pyramid|wall)s?\b[^:.;]*:\s*(?:[^.;:]*(?:,|\band)\s+)?(?:the\s+)?"
+                                    r"(?:" + "|".join(COLORS) + r"|\d+)(?:\s+(?:block|cube|one)s?)?(?:\s+(?:is|goes|sits))?\s*$")
 """Text before a bare side in a list of cubes given their places after a structure and a colon
 ("a row: red on the left, blue on the right, green in the middle"): each side a cube's role."""
 

@@ -695,7 +695,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   r"|(?:middle|center|centre)\s+of\b|table\b|(?:middle|center|centre)\s*(?:[.!,;]|$))", r"\1 the ", text)
     if re.search(r"\bwalls?\b", text):  # "a two-layer wall with blue on the bottom, three cubes per layer"
         text = lexicon.WALL_LAYER_ROLE_RE.sub(lambda m: f"{m.group('where')} layer {m.group('c')}", text)
-        text = lexicon.PER_LAYER_RE.sub(lambda m: f"{NUMBER_WORDS.get(m.group(1) or m.group(2), m.group(1) or m.group(2))} wide", text)
+        text = lexicon.PER_LAYER_RE.sub(_per_layer, text)
     # "the cube the blue on the cube the red": a colour after its noun and an article (Italian, Arabic)
     text = re.sub(rf"\bthe\s+(cubes?|blocks?|box(?:es)?|patch(?:es)?)\s+the\s+({COLOR_RE})\b"
                   rf"(?!\s+(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?)\b)", r"the \2 \1", text)
@@ -1266,6 +1266,15 @@ def _group_side(m: re.Match) -> bool:
     return (m.group(0).split()[0] in ("on", "at", "in", "to")
             and not names_a_role(m.string[:m.start()], m.string)
             and lexicon.GROUP_SUBJECT_RE.search(m.string[:m.start()]) is not None)
+
+
+def _per_layer(m: re.Match) -> str:
+    """"3 cubes per layer" -> "3 wide"; "4 cyan cubes per row" -> "4 wide, all cyan"."""
+    n = m.group("n1") or m.group("n2")
+    wide = f"{NUMBER_WORDS.get(n, n)} wide"
+    if m.group("noun"):  # "3 layers, 2 cubes each": the layers said, then each one's width
+        return f"{m.group('noun')}{m.group('sep').rstrip().removesuffix('with').removesuffix('of').rstrip() or ''} {wide}"
+    return f"{wide}, all {m.group('c')}" if m.group("c") else wide
 
 
 def _end_cube(m: re.Match) -> str:

@@ -298,7 +298,8 @@ def recognize_wall(f: Features, b: Builder) -> bool:
         b.summary += [f"a wall {width} cubes wide and {height} high ({width * height} cubes)", b.preds[-1].describe()]
         return True
     wide = re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+)?(?:wide|long|across)\b", f.text)
-    high = re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+|layers?\s+|rows?\s+|levels?\s+)?(?:high|tall)\b", f.text)
+    high = re.search(r"\b(\d+)\s+(?:blocks?\s+|cubes?\s+|layers?\s+|rows?\s+|levels?\s+)?(?:high|tall)\b", f.text) or \
+        re.search(r"\b(\d+)\s+(?:layers|rows|levels|tiers|courses)\b(?!\s+of\b)", f.text)  # "a wall with 3 layers"
     dims = re.search(r"\b(\d+)x(\d+)\b", f.text)
     rows = re.search(r"\b(\d+)\s+(?:rows|layers|levels)\s+of\s+(\d+)\b", f.text)  # "two rows of four"
     if rows and not dims:
