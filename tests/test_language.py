@@ -2748,3 +2748,14 @@ def test_leave_says_where_a_cube_ends_and_stays_an_action_otherwise():
 def test_a_walls_layers_counted_and_rows_said_one_above_another(text, expected):
     assert meaning(parse(text)) == expected
 
+
+@pytest.mark.parametrize("text,expected", [
+    # a tower's levels and a grid's rows and columns said as counts (the levels had been dropped: a tower of two)
+    ("build a tower with 4 levels", ["stack(red,blue,green,yellow)"]),
+    ("build a red tower with four levels", ["stack(red,red,red,red)"]),
+    ("a grid of 2 rows, 3 cubes each", ["grid(2x3:red,red,red,red,red,red)"]),
+    ("make a grid with 2 columns and 3 rows of blue cubes", ["grid(3x2:blue,blue,blue,blue,blue,blue)"]),
+])
+def test_levels_rows_and_columns_said_as_counts(text, expected):
+    assert meaning(parse(text)) == expected
+

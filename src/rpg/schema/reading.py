@@ -1036,6 +1036,14 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     # "two 3-high towers of green blocks": towers of that height each
     (re.compile(rf"\b(\d+)\s+(\d+)\s+{HEIGHT_WORDS}\s+({TOWER_NOUNS})s\b(?:\s+of\s+({COLOR_RE})\s+(?:blocks|cubes|bricks))?"),
      r"\1 \3s of \2 \4 blocks"),
+    # "a tower with 4 levels", "a tower of 5 floors": a tower of that many cubes (the levels had been dropped: two cubes)
+    (re.compile(rf"\b({TOWER_NOUNS})\s+(?:with|of|having)\s+(\d+)\s+(?:levels?|layers?|floors?|stor(?:ies|eys)|tiers?)\b"),
+     r"\1 of \2 blocks"),
+    # "a grid of 2 rows, 3 cubes each", "3 rows and 4 columns": a grid of that many rows of that many cubes
+    (re.compile(r"\b(\d+)\s+rows\s*(?:,|with|of|and)?\s*(\d+)\s+(?:cubes|blocks)\s+(?:each|per\s+row|in\s+each(?:\s+row)?)\b"),
+     r"\1 rows of \2"),
+    (re.compile(r"\b(\d+)\s+rows\s+(?:and|by|x|,)\s*(\d+)\s+columns\b"), r"\1x\2"),
+    (re.compile(r"\b(\d+)\s+columns\s+(?:and|by|x|,)\s*(\d+)\s+rows\b"), r"\2x\1"),
     # "a tower of height 4", "a tower with a height of 3 cubes": a tower of that many cubes
     (re.compile(rf"\b({TOWER_NOUNS})\s+(?:of|with)\s+(?:a\s+)?height\s+(?:of\s+)?(\d+)(?:\s+(?:blocks?|cubes?|levels?|layers?))?\b"),
      r"\1 of \2 blocks"),
