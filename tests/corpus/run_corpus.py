@@ -48,6 +48,7 @@ STRANGER_SETS = {
     "stranger11": ("stranger11.yaml", "STRANGER set 11 (stranger11.yaml, development material)"),
     "stranger12": ("stranger12.yaml", "STRANGER set 12 (stranger12.yaml, development material)"),
     "stranger13": ("stranger13.yaml", "STRANGER set 13 (stranger13.yaml, development material)"),
+    "stranger14": ("stranger14.yaml", "STRANGER set 14 (stranger14.yaml, development material)"),
 }
 SPLITS = HERE / "splits.yaml"
 
