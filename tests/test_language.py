@@ -2759,3 +2759,28 @@ def test_a_walls_layers_counted_and_rows_said_one_above_another(text, expected):
 def test_levels_rows_and_columns_said_as_counts(text, expected):
     assert meaning(parse(text)) == expected
 
+
+@pytest.mark.parametrize("text,why", [
+    # stranger14's silent errors
+    ("which of the cubes is closest to the green patch", "question"),  # a question without its mark had compiled
+    ("Part (c): the same pyramid as in part (b), but built from blue cubes.", "same pyramid as in"),  # an earlier part
+    ("The white cube, the black cube on top of, please place.", "could not find"),  # which is on which? (two readers differ)
+    ("Make a row from two cubes gray and the cube brown, and the cube brown is in middle of them.", "could not find"),
+])
+def test_a_bare_question_an_earlier_part_and_a_stranded_of_are_refused(text, why):
+    with pytest.raises(BadInput, match=why):
+        parse(text)
+
+
+def test_a_towers_ends_and_its_counted_middle_said_as_clauses():  # the middle's count had reached one cube
+    assert meaning(parse("stack four cubes; the bottom one is blue, the top one is red and the two in between are green")) \
+        == ["stack(blue,green,green,red)"]
+
+
+def test_piles_match_in_any_listed_order():
+    from rpg.schema.meaning import matches
+
+    assert matches("piles(red,red,blue,blue;by=color)", ["piles(blue,blue,red,red;by=color)"])
+    assert matches("pile(red,blue)@center", ["pile(blue,red)@center"])
+    assert not matches("piles(red,red,blue;by=color)", ["piles(blue,blue,red;by=color)"])
+

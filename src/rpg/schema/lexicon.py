@@ -163,6 +163,8 @@ INSTRUCTION_ONLY = frozenset({START_TIME_RE, BUT_CORRECTION_RE})
 
 INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("question", r"(?:^|[.!;]\s+)(?:which|what|where|who|whose|why|how\s+many|how\s+much|when)\b[^.!;]*\?"
+                 r"|^\s*(?:which|what)\s+(?:of\s+the\s+|one\s+of\s+the\s+)?(?:[a-z]+\s+)?(?:blocks?|cubes?|ones?)\s+(?:is|are|was|were|has|have)\b"
+                 r"|^\s*(?:where|why|how)\s+(?:is|are|was|were|does|do|did)\s+(?:the|a|an)\b"
                  r"|(?:^|[.!;?]\s+)(?:is|are|was|were|does|do|did|has|have|had)\s+(?:the|a|an|there|it|this|that|any|all"
                  r"|every|some|each|these|those)\b[^.!;]*\?"
                  r"|^(?:is|are|does|do)\s+(?:the|a|an|there|any)\s+(?:[a-z0-9]+\s+){0,3}?(?:blocks?|cubes?|boxes|box|tower|stack)\b"
@@ -240,6 +242,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "only by colour and label; name the cube (e.g. \"the red block\"), or say the structure it is part of "
      "(\"the top block of the tower\")"),
     ("reference", r"\b(?:as\s+)?(?:shown|displayed|depicted|pictured|illustrated|demonstrated)\b"
+                  r"|\bthe\s+same\s+(?:[a-z]+\s+)?(?:pyramid|tower|stack|row|line|wall|grid|circle|structure|task|thing|one)\s+as\s+"
+                  r"(?:in|before|earlier|last|for|from|at)\b"
                   r"|\b(?:this|that|these|those|the\s+same|the\s+following|the\s+given)\s+(?:arrangement|configuration|layout"
                   r"|pattern|formation|scene|setup|set-up|picture|image|way|design)s?\b"
                   r"|\b(?:picture|image|photo|photograph|diagram|figure|screen|video|illustration|drawing|sketch|screenshot)s?\b",

@@ -139,6 +139,8 @@ def meaning(schema: TaskSchema) -> list[str]:
             members = p.object_names()
             atoms.append(f"pile({sorted_names(members)})")
             placed.append((len(atoms) - 1, tuple(members)))
+        elif isinstance(p, P.Piles) and not p.groups:  # piles by an attribute: which cube is listed first says nothing
+            atoms.append(f"piles({sorted_names(p.objects)};by={p.by or 'color'})")
         else:
             objs = p.object_names()
             used.update(objs)
@@ -197,16 +199,26 @@ def _wild(atom: str) -> bool:
     return "|" in body and head in ("pyramid", "wall") and len(tokens) == 1 and "*" not in next(iter(tokens))
 
 
+def _unordered(atom: str) -> str:
+    """An atom whose objects have no order (``piles(red,blue,red;by=color)``, ``pile(...)``) with its
+    objects sorted, so an expected meaning may list them in any order."""
+    m = re.fullmatch(r"(piles?)\(([^;()]*)(;[^()]*)?\)(@\w+)?", atom)
+    if m is None:
+        return atom
+    return f"{m.group(1)}({','.join(sorted(m.group(2).split(',')))}{m.group(3) or ''}){m.group(4) or ''}"
+
+
 def matches(expected: str, actual: list[str]) -> bool:
     """Whether a corpus meaning (atoms separated by ``; `` outside brackets) equals ``actual``.
 
     Each expected atom must match a distinct actual atom and no actual atom may be left over.
     A per-cube atom whose cube is ``red*`` (``in_region(red*,back)``: every red cube there)
     matches one or more actual atoms, one per red cube (``in_region(red,back)`` twice), and
-    ``reads(DOG)`` matches the reads atom whose text is DOG, whatever its cubes and face.
+    ``reads(DOG)`` matches the reads atom whose text is DOG, whatever its cubes and face; a pile's
+    or piles' cubes match in any order.
     """
-    wanted = [a.strip() for a in re.split(r";\s+(?![^()]*\))", expected) if a.strip()]
-    actual = list(actual)
+    wanted = [_unordered(a.strip()) for a in re.split(r";\s+(?![^()]*\))", expected) if a.strip()]
+    actual = [_unordered(a) for a in actual]
     for w in [w for w in wanted if re.fullmatch(r"reads\([A-Za-z0-9]+\)", w)]:  # "reads(DOG)": the word read, shortly
         word = w[6:-1]
         actual = [f"reads({word})" if re.fullmatch(rf"reads\([^()]*\btext={re.escape(word)}\b[^()]*\)", a) else a for a in actual]

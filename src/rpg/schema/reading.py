@@ -415,6 +415,8 @@ def verb_final(text: str) -> str:
             continue
         post = _POSTPOSED_RE.match(chunk)
         corner = re.fullmatch(r"(?i)(?:the\s+)?table'?s\s+(?P<where>[\w\s-]+?(?:corner|side|edge|centre|center|middle))", chunk)
+        if post and not post.group("part") and re.search(r"(?i)\bof$", post.group("post")):
+            return text  # "the black cube on top of": the stranded "of" leaves open which cube is on which
         if post and not re.search(r"(?i)\b(?:each other|one another)$", chunk):
             np = re.sub(r"(?i)^(?!the\b)", "the ", post.group("np"))
             where = _PART_PHRASE[post.group("part").lower()] if post.group("part") else post.group("post")
@@ -703,6 +705,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(rf"(?<!every )(?<!each )(?<!all )(?<!any )\b(cube|block|box|patch)\s+(?:of\s+(?:the\s+)?colou?r\s+)?({COLOR_RE})\b"
                   rf"(?!\s*(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?)\b|\s*(?:,|and\b|or\b)\s*(?:the\s+)?(?:{COLOR_RE})\b)",
                   r"\2 \1", text)  # a list after the noun ("the cube red, blue and green") is left as it is
+    # "two cubes gray and the cube brown": a counted colour after its noun (Russian, Spanish habits)
+    text = re.sub(rf"\b(\d+)\s+(cubes|blocks)\s+({COLOR_RE})\b(?!\s*(?:cubes?|blocks?|ones?|patch(?:es)?)\b|\s*,\s*(?:{COLOR_RE})\b)",
+                  r"\1 \3 \2", text)
     # "the corner back right", "the part front of the table": a place's words after its noun (Spanish, French)
     text = re.sub(r"\bthe\s+(corner|side|part|edge)\s+((?:front|back|rear)(?:[\s-]+(?:left|right))?|left|right)\b", r"the \2 \1", text)
     # "tower | top: pink | bottom: gray", "red / white / red / white": a table row's or a list's separators
@@ -1012,7 +1017,34 @@ def _roles_first(m: re.Match) -> str:
     return "from bottom to top: " + ", ".join(c for _, c in sorted(said))
 
 
+_ROLE_CLAUSE = (rf"the\s+(?:(?:bottom|lowest|top|highest|upper|lower)\s+(?:one|1|block|cube)|\d+\s+(?:in\s+between|in\s+the\s+middle"
+                rf"|between\s+them))\s+(?:is|are|being)\s+(?:{COLOR_RE})\b")
+_ROLE_CLAUSES_RE = re.compile(rf"\s*[;:,]?\s*(?:with\s+)?{_ROLE_CLAUSE}(?:\s*,?\s*(?:and\s+)?{_ROLE_CLAUSE}){{2}}")
+
+
+def _role_clauses(m: re.Match) -> str:
+    """"the bottom one is blue, the top one is red and the two in between are green" -> ": from bottom to top: blue,
+    green, green, red" (each end once, the middle counted); the words as they were otherwise."""
+    ends: dict[str, str] = {}
+    middle: list[str] = []
+    for role, n, color in re.findall(rf"the\s+(?:(bottom|lowest|top|highest|upper|lower)\s+(?:one|1|block|cube)|(\d+)\s+[a-z\s]+?)"
+                                     rf"\s+(?:is|are|being)\s+({COLOR_RE})\b", m.group(0)):
+        if role:
+            end = "bottom" if role in ("bottom", "lowest", "lower") else "top"
+            if end in ends:
+                return m.group(0)
+            ends[end] = color
+        else:
+            middle += [color] * int(n)
+    if len(ends) != 2 or not middle:
+        return m.group(0)
+    return ": from bottom to top: " + ", ".join([ends["bottom"], *middle, ends["top"]])
+
+
 STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
+    # "stack four cubes; the bottom one is blue, the top one is red and the two in between are green": every cube
+    # (the middle's count had reached one cube, the other made up)
+    (_ROLE_CLAUSES_RE, _role_clauses, True),
     # "build a stack of two blue cubes and put the green cube on top", "stack 2 blue cubes with a green one on top":
     # the counted cubes, then the one on top (the count had reached only one of them)
     (re.compile(rf"\b(?:(?:build|make|create|form)\s+a\s+(?:{TOWER_NOUNS})\s+of|stack)\s+(\d+)\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)"

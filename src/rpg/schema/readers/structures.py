@@ -625,6 +625,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
     lists = list(re.finditer(rf"\b((?:{item})(?:\s*(?:,\s*and|,|and|then)\s+(?:then\s+)?(?:the\s+|an?\s+)?(?:{item})\b)+)", f.text))
     listed = _list_the_direction_orders(f, lists)
     alternating = alternating_colors(f, 6)
+    if listed and re.search(rf"\bthe\s+({COLOR_RE})\s+(?:cube|block)\b.*\bthe\s+\1\s+(?:cube|block)\b", listed.group(0)):
+        return False  # "the brown cube, and the brown cube is in the middle": one cube said twice, not two cubes
     if not explicit and not order and listed and not alternating:
         seq = re.findall(rf"\b(?:{COLOR_RE})\b", listed.group(1))
         if re.search(r"\b(?:left to right|right to left|front to back|back to front)\b", f.text) or \
