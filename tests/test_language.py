@@ -2784,3 +2784,35 @@ def test_piles_match_in_any_listed_order():
     assert matches("pile(red,blue)@center", ["pile(blue,red)@center"])
     assert not matches("piles(red,red,blue;by=color)", ["piles(blue,blue,red;by=color)"])
 
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger14's voices: an assistant's reply, a user story, an exam question, a table row, hashtags, a row's roles
+    ("Sure! Here is the task: place the purple cube on top of the orange cube. Let me know if you need anything else!",
+     ["stack(orange,purple)"]),
+    ("As a lab manager, I want the robot to stack the blue cube on the yellow cube, so that the bench looks tidy.",
+     ["stack(yellow,blue)"]),
+    ("Problem 2. The robot must finish with the red cube on top of the blue cube and the yellow cube on top of the red "
+     "cube. (5 points)", ["stack(blue,red,yellow)"]),
+    ("task_07 | stack | red on blue", ["stack(blue,red)"]),
+    ("today's demo: spell CAT with the letter blocks #HRI #demo",
+     ["line[left_to_right](C,A,T)", "reads(C,A,T;direction=left_to_right,face=up,text=CAT)"]),
+    ("Row of four cubes: the leftmost is red, the rightmost is blue, and the two in between are yellow.",
+     ["line[left_to_right](red,yellow,yellow,blue)"]),
+    ("a row of five: a red cube at each end and three white cubes between them",
+     ["line[left_to_right](red,white,white,white,red)"]),
+    ("stack the blue cube onto the red cube, not the other way round", ["stack(red,blue)"]),
+    ("the blue patch should have the red cube on it", ["on_patch(red,patch:blue)"]),
+])
+def test_replies_stories_exams_table_rows_and_a_rows_roles(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_either_one_on_top_leaves_the_order_free():
+    schema = parse("Make a stack out of the red cube and the blue cube, either one on top.")
+    assert meaning(schema) == ["stack(red,blue)"] and "any order" in schema.goal_summary
+
+
+def test_a_rotation_by_degrees_is_refused_as_an_action():  # it had been refused as an unknown quantity word
+    with pytest.raises(Inexpressible, match="rotation"):
+        parse("Rotate the blue cube 90 degrees and leave it on top of the red cube.")
+

@@ -184,6 +184,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|\b(?:after|once|before)\s+(?:the|it|they|you)\b[^.;]*?\b(?:has|have|had)\s+been\b"
                   r"|(?:^|[.;!]\s*)(?P<w>(?:should|were|had)\s+(?:there\s+be|the|a|an|it|they)\b)[^,.;?]*,",  # "Should there be a letter cube A, ..."
      "makes the goal conditional: a task has one goal, checked at the end of the episode; say the goal for one scene"),
+    ("action", r"\b(?:rotat\w*|turn\w*|spin\w*)\b[^.;]*?\b(?:\d+|ninety|forty[- ]five|180)\s*(?:degrees?|deg|\u00b0)",
+     "is a rotation, an action the domain does not have: a task's goal says where cubes end up and which face is up, "
+     "not a motion or an angle"),
     ("time", r"\b(?:\d+(?:\.\d+)?\s*(?:seconds?|secs?|s|minutes?|mins?|hours?|hrs?|ms|milliseconds?)(?![\w'])|seconds|minutes?|hours?"
              r"|meanwhile|forever|while|whilst|during)\b",
      "is about time: a task's goal is checked once, at the end of the episode, with no clock or duration"),
@@ -690,6 +693,11 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"(?<=\bbottom\s)(row|layer|level)\b(.*?)(?:\b(?:in|on)\s+the\s+(?:(?:next|following)\s+(?:row|layer|level)|(?:row|layer|level)\s+"
                 r"(?:above|on\s+top)(?:\s+(?:it|that|them|of\s+(?:it|that|them)))?)|\bon\s+top\s+of\s+(?:them|it|those|that))\b"),
      r"\1\2in the second \1"),
+    # "the blue patch should have the red cube on it": the cube on the patch
+    (re.compile(rf"\bthe\s+({COLOR_RE})\s+patch\s+(?:should|must|needs\s+to|has\s+to|will)\s+have\s+the\s+({COLOR_RE})\s+(cube|block)\s+"
+                r"on\s+(?:it|top(?:\s+of\s+it)?)\b"), r"put the \2 \3 on the \1 patch"),
+    # "fill the red patch with the three red cubes": those cubes on it
+    (re.compile(rf"\bfill\s+the\s+({COLOR_RE})\s+patch\s+with\s+"), r"put on the \1 patch "),
     # "from the left to the right": a direction said with articles, as "from left to right" says it
     (re.compile(r"\bfrom\s+the\s+(left|right|front|back|bottom|top)\s+to\s+the\s+(left|right|front|back|bottom|top)\b"
                 r"(?!\s+(?:of|side|edge|corner|end)\b)"), r"from \1 to \2"),
@@ -783,11 +791,17 @@ ANY_ORDER_RE = re.compile(
     r"|(?:in\s+)?(?:any|whatever|whichever)\s+order\s+you\s+(?:like|want|choose|prefer|wish)"
     r"|you\s+(?:can|may)\s+(?:choose|pick|decide)\s+the\s+order"
     r"|(?:the\s+)?order\s+(?:thereof\s+)?(?:being\s+)?at\s+(?:the\s+robot's|your|its)\s+discretion"
-    r"|how(?:ever)?\s+you\s+(?:prefer|like|want|wish|please))\b\)?")
+    r"|how(?:ever)?\s+you\s+(?:prefer|like|want|wish|please)"
+    r"|(?:either|any|whichever)\s+(?:one\s+|1\s+|cube\s+|block\s+)?(?:on\s+top|at\s+the\s+(?:top|bottom))(?:\s+(?:is\s+)?(?:fine|ok(?:ay)?))?"
+    r"|whichever\s+way(?:\s+(?:is\s+)?(?:fine|round|around))?)\b\)?")
 """Words that leave the cubes' order free ("stack them in any order", ", any order is fine",
 "the order doesn't matter", "in no particular order"): read as the one phrase " in any order"
 before negations are refused (:func:`rpg.schema.reading.normalize`), which no order word
 (:data:`ORDER_WORDS`) matches."""
+
+OTHER_WAY_DENIED_RE = re.compile(r"\s*[,;]?\s*(?:and\s+|but\s+)?not\s+the\s+other\s+way\s+(?:round|around)(?=\s*[.!;]?\s*$|\s*[.;]\s)")
+""""stack the blue cube onto the red cube, not the other way round": the order said, restated
+(dropped, like :data:`OPPOSITE_NEGATED_RE`)."""
 
 OPPOSITE_NEGATED_RE = re.compile(
     r"(?P<said>\b(?:in\s+front\s+of|behind|(?:to\s+the\s+)?left\s+of|(?:to\s+the\s+)?right\s+of|on\s+top\s+of|on|under|below"
@@ -900,6 +914,21 @@ MARKUP_RES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"(?m)^\s*def\s+\w+\s*\([^)]*\)\s*(?:->\s*[\w\[\], ]+)?:\s*"), ""),  # "def build_tower():" before its docstring
     (re.compile(r"(?i)\s*\((?:see|cf\.?)\s+[^)]{1,40}\)"), ""),  # "(see Fig. 3)", "(see test_relations.py)": a reference
     (re.compile(r"(?<![\w*])\*(?=[^\s*])|(?<=[^\s*])\*(?![\w*])"), ""),  # *emphasis*
+    (re.compile(r"(?<![\w&])#[A-Za-z]\w*"), " "),  # a post's hashtags ("#robotics #friday"): a topic, no goal
+    # a benchmark table's row: "task_07 | stack | red on blue", "| t23 | spell | ...": its id and pipes
+    (re.compile(r"^\s*\|?\s*(?:task|t|row|id)[_\s-]?\d+\s*\|\s*", re.I), ""),
+    # an assistant's reply around the task: "Sure! Here is the task:", "Certainly.", "I hope this helps!",
+    # "Let me know if you need anything else!", "Feel free to adjust the colours."
+    (re.compile(r"(?i)^\s*(?:(?:sure|certainly|of\s+course|absolutely|great\s+question|happy\s+to\s+help)\s*[!.,]\s*)+"), ""),
+    (re.compile(r"(?i)^\s*here(?:'s|\s+is)\s+(?:the|a|your)\s+(?:concise\s+|short\s+|simple\s+)?(?:task|specification|spec|goal)\s*:\s*"), ""),
+    (re.compile(r"(?i)\s*(?:let\s+me\s+know\s+if\s+[^.!]*|i\s+hope\s+(?:this|that)\s+helps|feel\s+free\s+to\s+[^.!]*"
+                r"|(?:\*\*)?constraints?:?(?:\*\*)?\s*none)\s*[.!]?\s*$"), ""),
+    # a user story: "As a lab manager, I want ..., so that the bench looks tidy": the want, not the role or the reason
+    (re.compile(r"(?i)^\s*(?:user\s+story\s*:\s*)?as\s+an?\s+[a-z]+(?:\s+[a-z]+)?\s*,?\s+(?=i\s+(?:want|need|would\s+like)\b)"), ""),
+    (re.compile(r"(?i)\s*,?\s+so\s+(?:that\s+)?(?:i|we|the\s+(?:bench|table|camera|students?|visitors?))\s+(?:can|could|looks?|sees?"
+                r"|understand|understands)\b[^.]*"), ""),
+    # an exam's points: "(5 points)", "Q4 (10 pts)."
+    (re.compile(r"(?i)\s*\(\s*\d+\s*(?:points?|pts?|marks?)\s*\)\s*\.?"), " "),
 )
 """Markdown markup around the words (a heading flattened onto the line of its text, "## Task
 Stack green on red", ends before the next capitalised word and is read as a label; headings, emphasis, code spans, checkboxes): removed before
@@ -1157,6 +1186,7 @@ PREAMBLE_RE = re.compile(
     r"|(?:(?:ok(?:ay)?|so|alright|right|well)\s*,?\s+)*let(?:'s|\s+us)\s+(?:do|try|make|build)\s+something"
     r"(?:\s+(?:fun|cool|new|different|simple|easy|nice|interesting|quick))?\s*[:,.!;\u2014\u2013-]\s*"
     r"|for\s+" + _PURPOSE + r"(?:\s*[:,\u2014\u2013-]\s*|\s+(?=(?:could|can|would|will|please)\b))"
+    r"|(?:(?:the\s+(?:robot|agent|arm)\s+)?(?:must|should|has\s+to|needs\s+to)\s+)?(?:finish|end(?:\s+up)?)\s+with\s+(?=the\s)"
     r"|(?:success\s+(?:condition|criteri(?:on|a))|task\s+spec(?:ification)?|evaluation\s+task|eval\s+task|test\s+task"
     r"|expected\s+(?:result|outcome|end\s+state|final\s+state|state|behaviou?r)|(?:level\s+\d+\s+)?win(?:ning)?\s+(?:condition|state)"
     r"|goal\s+for\s+this\s+(?:level|round|stage)"

@@ -604,6 +604,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         neg = m.group("neg").replace("to the ", "").removesuffix(" of").replace("underneath", "under")
         return m.group("said") if any({said, neg} == {a, b} for a, b in lexicon.OPPOSITE_RELATIONS) else m.group(0)
     text = lexicon.OPPOSITE_NEGATED_RE.sub(_restated, text)  # "in front of the grey cube, not behind it": said again
+    text = lexicon.OTHER_WAY_DENIED_RE.sub("", text)  # "..., not the other way round": said again
     effectors = [(m.group("what"), "the effector or robot that does it") for m in lexicon.EFFECTOR_RE.finditer(text)]
     text = lexicon.EFFECTOR_RE.sub(" ", text).strip()
     # "cover the green patch with the red block": the red block on it
@@ -1017,34 +1018,41 @@ def _roles_first(m: re.Match) -> str:
     return "from bottom to top: " + ", ".join(c for _, c in sorted(said))
 
 
-_ROLE_CLAUSE = (rf"the\s+(?:(?:bottom|lowest|top|highest|upper|lower)\s+(?:one|1|block|cube)|\d+\s+(?:in\s+between|in\s+the\s+middle"
+_END_WORDS = {"bottom": "bottom", "lowest": "bottom", "lower": "bottom", "top": "top", "highest": "top", "upper": "top",
+              "left": "left", "right": "right"}
+_ROLE_CLAUSE = (rf"the\s+(?:(?:{'|'.join(_END_WORDS)})(?:\s+(?:one|1|block|cube))?|\d+\s+(?:in\s+between|in\s+the\s+middle"
                 rf"|between\s+them))\s+(?:is|are|being)\s+(?:{COLOR_RE})\b")
 _ROLE_CLAUSES_RE = re.compile(rf"\s*[;:,]?\s*(?:with\s+)?{_ROLE_CLAUSE}(?:\s*,?\s*(?:and\s+)?{_ROLE_CLAUSE}){{2}}")
 
 
 def _role_clauses(m: re.Match) -> str:
     """"the bottom one is blue, the top one is red and the two in between are green" -> ": from bottom to top: blue,
-    green, green, red" (each end once, the middle counted); the words as they were otherwise."""
+    green, green, red" (each end once, the middle counted; "the leftmost is red, the rightmost ..." of a row, left to
+    right); the words as they were otherwise."""
     ends: dict[str, str] = {}
     middle: list[str] = []
-    for role, n, color in re.findall(rf"the\s+(?:(bottom|lowest|top|highest|upper|lower)\s+(?:one|1|block|cube)|(\d+)\s+[a-z\s]+?)"
+    for role, n, color in re.findall(rf"the\s+(?:({'|'.join(_END_WORDS)})(?:\s+(?:one|1|block|cube))?|(\d+)\s+[a-z\s]+?)"
                                      rf"\s+(?:is|are|being)\s+({COLOR_RE})\b", m.group(0)):
         if role:
-            end = "bottom" if role in ("bottom", "lowest", "lower") else "top"
-            if end in ends:
+            if _END_WORDS[role] in ends:
                 return m.group(0)
-            ends[end] = color
+            ends[_END_WORDS[role]] = color
         else:
             middle += [color] * int(n)
-    if len(ends) != 2 or not middle:
+    axis = next((pair for pair in (("bottom", "top"), ("left", "right")) if set(ends) == set(pair)), None)
+    if axis is None or not middle:
         return m.group(0)
-    return ": from bottom to top: " + ", ".join([ends["bottom"], *middle, ends["top"]])
+    return f": from {axis[0]} to {axis[1]}: " + ", ".join([ends[axis[0]], *middle, ends[axis[1]]])
 
 
 STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     # "stack four cubes; the bottom one is blue, the top one is red and the two in between are green": every cube
     # (the middle's count had reached one cube, the other made up)
-    (_ROLE_CLAUSES_RE, _role_clauses, True),
+    (_ROLE_CLAUSES_RE, _role_clauses),
+    # "a row of five: a red cube at each end and three white cubes between them": the ends, the middle counted
+    (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(?:a|an|1|one)\s+({COLOR_RE})\s+(?:cube|block)\s+(?:at|on)\s+(?:each|both|either)\s+ends?\s+"
+                rf"and\s+(\d+)\s+({COLOR_RE})\s+(?:cubes|blocks)\s+(?:in\s+)?between(?:\s+(?:them|those))?\b"),
+     lambda m: ": from left to right: " + ", ".join([m.group(1)] + [m.group(3)] * int(m.group(2)) + [m.group(1)])),
     # "build a stack of two blue cubes and put the green cube on top", "stack 2 blue cubes with a green one on top":
     # the counted cubes, then the one on top (the count had reached only one of them)
     (re.compile(rf"\b(?:(?:build|make|create|form)\s+a\s+(?:{TOWER_NOUNS})\s+of|stack)\s+(\d+)\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)"
