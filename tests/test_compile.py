@@ -415,7 +415,7 @@ def test_parser_refuses_rather_than_drop_a_named_cube():
         parse("Stack the red block on the blue block and the purple block")
     with pytest.raises(ParseError, match="mixing letters and digits"):
         parse("Make a row of alternating letters and numbers")  # was read as a line of coloured cubes
-    with pytest.raises(ParseError, match="two or more piles"):
+    with pytest.raises(ParseError, match="does not say which cubes"):  # one pile, of cubes nobody named
         parse("Put all blocks in one pile")
     with pytest.raises(ParseError, match="could not find a task"):
         parse("Arrange the blocks in a plus shape")  # a shape it does not build is refused, not read as a line

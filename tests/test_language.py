@@ -159,7 +159,7 @@ def test_meaning_the_domain_lacks_is_refused_naming_the_word_and_why(text, kind,
 
 @pytest.mark.parametrize("text,reasons", [
     # every class the text says is named, the first in full and the rest in short
-    ("Rotate a dial 180 degrees.", {"quantity": "degrees", "object": "dial"}),
+    ("Rotate a dial 180 degrees.", {"action": "180 degrees", "object": "dial"}),  # a rotation by an angle
     ("Pull a lever down 90 degrees.", {"quantity": "degrees", "object": "lever"}),
     ("Sweep a puck off the table.", {"action": "off the table", "object": "puck"}),
     ("Can you tell me how many blue blocks there are?", {"question": "tell me how", "quantity": "many"}),
@@ -2330,7 +2330,6 @@ def test_a_clear_cube_with_a_cube_on_it_is_not_read_as_a_start():
     ("As for the green cube, the yellow patch on, please put.", ["on_patch(green,patch:yellow)"]),
     ("Pink cube's right side to, cyan cube please put.", ["right_of(cyan,pink)"]),
     ("Table's right-front corner, white cube, please put.", ["in_region(white,front_right)"]),
-    ("Red cube, blue cube on top of, put please.", ["stack(blue,red)"]),
 ])
 def test_an_instruction_with_its_verb_last(text, expected):
     assert meaning(parse(text)) == expected
@@ -2765,6 +2764,7 @@ def test_levels_rows_and_columns_said_as_counts(text, expected):
     ("which of the cubes is closest to the green patch", "question"),  # a question without its mark had compiled
     ("Part (c): the same pyramid as in part (b), but built from blue cubes.", "same pyramid as in"),  # an earlier part
     ("The white cube, the black cube on top of, please place.", "could not find"),  # which is on which? (two readers differ)
+    ("Red cube, blue cube on top of, put please.", "could not find"),  # another stranger read this one the other way
     ("Make a row from two cubes gray and the cube brown, and the cube brown is in middle of them.", "could not find"),
 ])
 def test_a_bare_question_an_earlier_part_and_a_stranded_of_are_refused(text, why):

@@ -1237,3 +1237,8 @@ def test_steer_stranger9_voices(tmp_path, base, edits, expected):
 def test_a_relation_named_after_it_is_no_added_cube(tmp_path):  # "one" there is the cube's noun, not a count
     assert _steered(tmp_path, "Put the green block in front of the yellow block", "put it behind the yellow one instead")[-1] \
         == ("modify", ["behind(green,yellow)"])
+
+
+def test_keep_the_cubes_but_as_a_sized_grid_is_a_pivot(tmp_path):  # the size had been applied to the circle
+    assert _steered(tmp_path, "Make a circle of six purple cubes", "keep the cubes, but as a 2x3 grid")[-1] == \
+        ("pivot", ["grid(2x3:purple,purple,purple,purple,purple,purple)"])

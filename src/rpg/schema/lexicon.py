@@ -184,7 +184,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|\b(?:after|once|before)\s+(?:the|it|they|you)\b[^.;]*?\b(?:has|have|had)\s+been\b"
                   r"|(?:^|[.;!]\s*)(?P<w>(?:should|were|had)\s+(?:there\s+be|the|a|an|it|they)\b)[^,.;?]*,",  # "Should there be a letter cube A, ..."
      "makes the goal conditional: a task has one goal, checked at the end of the episode; say the goal for one scene"),
-    ("action", r"\b(?:rotat\w*|turn\w*|spin\w*)\b[^.;]*?\b(?:\d+|ninety|forty[- ]five|180)\s*(?:degrees?|deg|\u00b0)",
+    ("action", r"\b(?:rotat\w*|turn\w*|spin\w*)\b[^.;]*?\b(?P<w>(?:\d+|ninety|forty[- ]five)\s*(?:degrees?|deg|\u00b0))",
      "is a rotation, an action the domain does not have: a task's goal says where cubes end up and which face is up, "
      "not a motion or an angle"),
     ("time", r"\b(?:\d+(?:\.\d+)?\s*(?:seconds?|secs?|s|minutes?|mins?|hours?|hrs?|ms|milliseconds?)(?![\w'])|seconds|minutes?|hours?"

@@ -568,7 +568,8 @@ def read_ops(t: str) -> list[Op]:
     end_role = rf"(?:\s*,?\s*(?:with\s+)?(?:the\s+)?(?P<end_c>{COLOR_RE})\s+(?:block\s+|cube\s+|one\s+)?(?:at|on)\s+(?:the\s+)?" \
         r"(?P<end_w>bottom|base|top|left|right))?"  # "now as a tower, red at the bottom": the order kept from that end
     bare_shape = re.fullmatch(r"(?:(?:now|ok|okay|actually|then|and|maybe|rather)\s+)*"
-                              r"(?:(?:the\s+)?same\s+(?:blocks|cubes|bricks)\s*,?\s*(?:but\s+)?)?(?:as\s+|in\s+|into\s+)?an?\s+"
+                              r"(?:(?:(?:the\s+)?same|keep\s+(?:the\s+)?(?:same\s+)?)\s*(?:blocks|cubes|bricks|colou?rs)\s*,?\s*(?:but\s+)?)?"
+                              r"(?:as\s+|in\s+|into\s+)?an?\s+(?:\d+x\d+(?:x\d+)?\s+)?"
                               + STRUCTURE_RE + r"(?:\s+(?:instead|now|please))*" + end_role + r"\W*", t)
     if stack_all is None:  # "stack them with blue at the bottom"
         stack_all = re.fullmatch(r"(?:(?:now|ok|okay|actually|then|and)\s+)*(?:stack|pile)\s+(?:them|all|everything|(?:all\s+)?the\s+"
