@@ -635,6 +635,10 @@ GROUP_SUBJECT_RE = re.compile(
 Y, both in the back", "X next to Y, both of them on the white patch"); "both" is "2" once
 numbers are normalized."""
 
+EACH_OTHER_GAP_RE = re.compile(r"\s*(?:(?:on\s+top\s+of\s+)?each\s+other|one\s+another)\s*,?\s*(?:and\s+)?(?:(?:are|go|placed|put)\s+)?")
+"""The words between "X and Y next to" and the next relation when that relation is the pair's too
+("the blue cube and the red cube next to each other in front of the green cube")."""
+
 LABEL_SEPARATOR_AFTER = re.compile(rf"\s*(?:-|\u2013|\u2014|:)\s*(?:the\s+)?(?:{COLOR_RE})\b")
 """What follows a role word used as a label ("below - black", "top: white"): a relation word
 followed by it names a place in a list, not a relation to the next cube."""

@@ -155,7 +155,7 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
             return None
     if kind == "under":
         subject, obj, kind = obj, subject, "on"
-    patches = {a.name for a in schema.assets if a.kind == "goal_patch"}
+    patches = _patches(schema)
     if subject in patches:
         return None  # "swap them" of a cube by a patch: a patch is placed by the task, not moved
     if obj in patches and kind == "on":  # "put it on the patch": a cube on a patch lies on it

@@ -29,6 +29,7 @@ from rpg.domain.predicates import (
 from rpg.schema.builder import DEFAULT_COLORS, DEFAULT_PATCH_COLOR, Builder
 from rpg.schema.lexicon import (
     COLOR_RE,
+    EACH_OTHER_GAP_RE,
     GROUP_SUBJECT_RE,
     LABEL_SEPARATOR_AFTER,
     PAIRWISE_RELATIONS,
@@ -98,8 +99,7 @@ class RelationalReading:
         if len(self.group) < 2 or self.group_end < 0 or any(self.group_end <= m.start < rm.start() for m in ms if not m.ref):
             return []
         gap = clause[self.group_end: rm.start()]
-        if GROUP_SUBJECT_RE.search(gap) or re.fullmatch(
-                r"\s*(?:(?:on\s+top\s+of\s+)?each\s+other|one\s+another)\s*,?\s*(?:and\s+)?(?:(?:are|go|placed|put)\s+)?", gap):
+        if GROUP_SUBJECT_RE.search(gap) or EACH_OTHER_GAP_RE.fullmatch(gap):
             return list(self.group)
         return []
 
