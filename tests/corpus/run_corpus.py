@@ -49,6 +49,7 @@ STRANGER_SETS = {
     "stranger12": ("stranger12.yaml", "STRANGER set 12 (stranger12.yaml, development material)"),
     "stranger13": ("stranger13.yaml", "STRANGER set 13 (stranger13.yaml, development material)"),
     "stranger14": ("stranger14.yaml", "STRANGER set 14 (stranger14.yaml, development material)"),
+    "stranger15": ("stranger15.yaml", "STRANGER set 15 (stranger15.yaml, development material)"),
 }
 SPLITS = HERE / "splits.yaml"
 
