@@ -1242,3 +1242,15 @@ def test_a_relation_named_after_it_is_no_added_cube(tmp_path):  # "one" there is
 def test_keep_the_cubes_but_as_a_sized_grid_is_a_pivot(tmp_path):  # the size had been applied to the circle
     assert _steered(tmp_path, "Make a circle of six purple cubes", "keep the cubes, but as a 2x3 grid")[-1] == \
         ("pivot", ["grid(2x3:purple,purple,purple,purple,purple,purple)"])
+
+
+def test_the_two_leftmost_of_a_left_to_right_row(tmp_path):
+    assert _steered(tmp_path, "Put six cubes in a row from left to right: red, red, red, blue, blue, blue",
+                    "make the two leftmost ones green", "make the 2 on the right yellow")[-1] == \
+        ("tweak", ["line[left_to_right](green,green,red,blue,yellow,yellow)"])
+
+
+def test_the_leftmost_of_a_row_that_runs_no_way_is_refused(tmp_path):
+    fam = Family(create_family(compile_instruction("Put three green cubes in a row", tmp_path, name="fam").path).path)
+    with pytest.raises(SteerError, match="runs no way left to right"):
+        steer(fam.path, "make the two leftmost ones red")

@@ -284,6 +284,10 @@ def _selector(text: str) -> dict | None:
     ends = re.search(r"\b(top|bottom|first|last|lowest|highest)\s+(\d+)\b", text)
     if ends:
         return {"end": "bottom" if ends.group(1) in ("bottom", "first", "lowest") else "top", "n": int(ends.group(2))}
+    sides = re.search(r"\b(left|right)(?:most)?\s+(\d+)\b|\b(\d+)\s+(left|right)(?:most)?(?:\s+(?:ones|cubes|blocks))?\b"
+                      r"|\b(\d+)\s+(?:(?:ones|cubes|blocks)\s+)?(?:on|at)\s+the\s+(?:far\s+)?(left|right)(?:\s+end)?\b", text)
+    if sides:  # "the two leftmost ones", "the left 2", "the 2 on the right": that many from that end of a row
+        return {"end": sides.group(1) or sides.group(4) or sides.group(6), "n": int(sides.group(2) or sides.group(3) or sides.group(5))}
     nth = re.search(r"\b(?:(\d+)(?:st|nd|rd|th)|(second|third|fourth|fifth|sixth))\b(?:\s+(?:one|block|cube))?"
                     r"(?:\s+from\s+the\s+(bottom|top|left|right|front|back))?", text)
     if len(re.findall(r"\b(?:\d+(?:st|nd|rd|th)|first|second|third|fourth|fifth|sixth|last)\b", text)) > 1:
@@ -797,6 +801,12 @@ def _indices(spec: TaskSpec, sel: dict, anchors: frozenset[str] = frozenset()) -
         raise SteerError(f"the {spec.structure} has cubes of {len(set(spec.colors()))} colours; say which to change")
     if sel.get("all"):
         return list(range(n))
+    if sel.get("end") in ("left", "right"):  # an end of a row said by its side: the row's own first or last cubes
+        if spec.direction not in ("left_to_right", "right_to_left") or spec.structure in ANCHORED_KINDS:
+            raise SteerError(f"the {sel['end']} {sel['n']} of a {spec.structure} whose goal runs no way left to right name no "
+                             "cubes; name them by colour")
+        first = (sel["end"] == "left") == (spec.direction == "left_to_right")
+        sel = {**sel, "end": "bottom" if first else "top"}
     if "end" in sel:
         k = sel["n"]
         if not 0 < k <= n or not _orders_cubes(spec):
