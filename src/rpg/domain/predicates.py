@@ -1273,12 +1273,6 @@ class Piles(Predicate):
         groups = self.resolve_groups(state)
         if not groups:
             return self._result(False, "no cubes to pile", {"groups": groups})
-        if len(groups) == 1:  # one pile ("pile the three orange cubes up"): its cubes gathered, no other pile to keep apart
-            xy = np.array([_planar(state[n]) for n in groups[0]])
-            spread = float(np.max(np.linalg.norm(xy - xy.mean(axis=0), axis=1)))
-            ok = spread <= C.PILE_RADIUS
-            return self._result(ok, f"one pile {'gathered' if ok else 'not gathered'} (spread {spread * 100:.1f} cm)",
-                                {"groups": groups, "spread": [spread]}, {"spread": C.PILE_RADIUS})
         cents = []
         spread = []
         for g in groups:
@@ -1286,6 +1280,10 @@ class Piles(Predicate):
             c = xy.mean(axis=0)
             cents.append(c)
             spread.append(float(np.max(np.linalg.norm(xy - c, axis=1))))
+        if len(groups) == 1:  # one pile ("pile the three orange cubes up"): its cubes gathered, no other pile to keep apart
+            ok = spread[0] <= C.PILE_RADIUS
+            return self._result(ok, f"one pile {'gathered' if ok else 'not gathered'} (spread {spread[0] * 100:.1f} cm)",
+                                {"groups": groups, "spread": spread}, {"spread": C.PILE_RADIUS})
         seps = [float(np.linalg.norm(a - b)) for a, b in itertools.combinations(cents, 2)]
         ok = max(spread) <= C.PILE_RADIUS and min(seps) >= C.PILE_SEPARATION
         return self._result(ok, f"{len(groups)} piles {'separated' if ok else 'not separated'} (largest spread {max(spread) * 100:.1f} cm, closest piles {min(seps) * 100:.1f} cm)",

@@ -1447,9 +1447,9 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # a review's or an annotator's opening ("LGTM otherwise, but", "correction:", "suggestion:", "nit:"): no change said
     (re.compile(r"(?i)^\s*(?:lgtm|looks\s+good|looks\s+great|nice)(?:\s+otherwise)?\s*[,.!]?\s*(?:but\s+)?"), ""),
     (re.compile(r"(?i)^\s*(?:correction|suggestion|nit|fix|update|edit|change)\s*:\s*"), ""),
-    (re.compile(r"(?i)\b(put|place|add|stack)\s+also\b"), r"also \1"),
+    (re.compile(r"(?i)\b(put|place|add|stack)\s+also\b"), r"also \1"),  # "put also one red cube under ...": the order of other tongues
     # "... on the blue patch together with the red one": the patch it shares, said twice
-    (re.compile(rf"(?i)(\bpatch)\s*,?\s+(?:together\s+with|alongside|along\s+with)\s+the\s+(?:{COLOR_RE})\s+(?:one|cube|block)\b"), r"\1"),  # "put also one red cube under ...": the order of other tongues
+    (re.compile(rf"(?i)(\bpatch)\s*,?\s+(?:together\s+with|alongside|along\s+with)\s+the\s+(?:{COLOR_RE})\s+(?:one|cube|block)\b"), r"\1"),
     # "hope you're having a good day! ... I was wondering, would it be at all possible to make ...": the request
     (re.compile(r"(?i)^.*?\b(?:would|could)\s+it\s+be\s+(?:at\s+all\s+)?possible\s+to\s+"), ""),
     (re.compile(r"(?i)[.!]?\s*(?:no\s+rush(?:\s+at\s+all)?|thanks?(?:\s+(?:so\s+much|a\s+lot|in\s+advance))?|many\s+thanks"
@@ -1464,11 +1464,10 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before)\s*,?\s*but\s+"), ""),
     # notebook edits: "n_cubes=3", "region=back", "rel=left_of", "red -> gray", "+green top", "@center"
     (re.compile(r"(?i)^\s*(?:n_?cubes|num_?cubes|n_?blocks|count|n)\s*[=:]\s*(\d+)\s*$"), r"use \1 blocks instead"),
-    (re.compile(r"(?i)^\s*(?:region|place|where|location|loc)\s*[=:]\s*([a-z_]+)\s*$"),
-     lambda m: f"move it to the {m.group(1).replace('_', ' ')} of the table"),
     (re.compile(r"(?i)^\s*(?:rel|relation|predicate)\s*[=:]\s*(left_of|right_of|in_front_of|behind|next_to|far_from|on|on_top_of|under)\s*$"),
      lambda m: f"put it {m.group(1).replace('_', ' ')} instead"),
-    (re.compile(r"(?i)^\s*@\s*([a-z_]+)\s*$"), lambda m: f"move it to the {m.group(1).replace('_', ' ')} of the table"),
+    (re.compile(r"(?i)^\s*(?:(?:region|place|where|location|loc)\s*[=:]|@)\s*([a-z_]+)\s*$"),
+     lambda m: f"move it to the {m.group(1).replace('_', ' ')} of the table"),
     (re.compile(rf"(?i)^\s*({COLOR_RE})\s*(?:->|\u2192|=>)\s*({COLOR_RE})\s*$"), r"make the \1 ones \2"),
     (re.compile(rf"(?i)^\s*\+\s*(?:1\s+)?({COLOR_RE})\s+(?:on\s+)?(top|bottom)\s*$"),
      lambda m: f"add a {m.group(1)} block {'on top' if m.group(2).lower() == 'top' else 'at the bottom'}"),
