@@ -2816,3 +2816,8 @@ def test_a_rotation_by_degrees_is_refused_as_an_action():  # it had been refused
     with pytest.raises(Inexpressible, match="rotation"):
         parse("Rotate the blue cube 90 degrees and leave it on top of the red cube.")
 
+
+
+def test_runs_of_blanks_are_read_as_one():  # thousands of spaces had taken minutes (patterns with optional blanks)
+    schema = parse("put the red cube" + " " * 7800 + "on the blue cube")
+    assert meaning(schema) == ["stack(blue,red)"] and schema.instruction.count(" ") > 7800  # kept as written

@@ -1254,3 +1254,8 @@ def test_the_leftmost_of_a_row_that_runs_no_way_is_refused(tmp_path):
     fam = Family(create_family(compile_instruction("Put three green cubes in a row", tmp_path, name="fam").path).path)
     with pytest.raises(SteerError, match="runs no way left to right"):
         steer(fam.path, "make the two leftmost ones red")
+
+
+def test_an_edit_with_a_run_of_blanks_is_read(tmp_path):  # it had taken minutes
+    assert _steered(tmp_path, "Put three green cubes in a row", "make them" + " " * 7000 + "red")[-1] == \
+        ("tweak", ["line(red,red,red)"])

@@ -925,11 +925,11 @@ MARKUP_RES: tuple[tuple[re.Pattern, str], ...] = (
     # "Let me know if you need anything else!", "Feel free to adjust the colours."
     (re.compile(r"(?i)^\s*(?:(?:sure|certainly|of\s+course|absolutely|great\s+question|happy\s+to\s+help)\s*[!.,]\s*)+"), ""),
     (re.compile(r"(?i)^\s*here(?:'s|\s+is)\s+(?:the|a|your)\s+(?:concise\s+|short\s+|simple\s+)?(?:task|specification|spec|goal)\s*:\s*"), ""),
-    (re.compile(r"(?i)\s*(?:let\s+me\s+know\s+if\s+[^.!]*|i\s+hope\s+(?:this|that)\s+helps|feel\s+free\s+to\s+[^.!]*"
+    (re.compile(r"(?i)(?<!\s)\s*(?:let\s+me\s+know\s+if\s+[^.!]*|i\s+hope\s+(?:this|that)\s+helps|feel\s+free\s+to\s+[^.!]*"
                 r"|(?:\*\*)?constraints?:?(?:\*\*)?\s*none)\s*[.!]?\s*$"), ""),
     # a user story: "As a lab manager, I want ..., so that the bench looks tidy": the want, not the role or the reason
     (re.compile(r"(?i)^\s*(?:user\s+story\s*:\s*)?as\s+an?\s+[a-z]+(?:\s+[a-z]+)?\s*,?\s+(?=i\s+(?:want|need|would\s+like)\b)"), ""),
-    (re.compile(r"(?i)\s*,?\s+so\s+(?:that\s+)?(?:i|we|the\s+(?:bench|table|camera|students?|visitors?))\s+(?:can|could|looks?|sees?"
+    (re.compile(r"(?i)(?<!\s),?\s+so\s+(?:that\s+)?(?:i|we|the\s+(?:bench|table|camera|students?|visitors?))\s+(?:can|could|looks?|sees?"
                 r"|understand|understands)\b[^.]*"), ""),
     # an exam's points: "(5 points)", "Q4 (10 pts)."
     (re.compile(r"(?i)\s*\(\s*\d+\s*(?:points?|pts?|marks?)\s*\)\s*\.?"), " "),

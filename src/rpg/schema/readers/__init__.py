@@ -222,6 +222,10 @@ def parse(instruction: str, _framed: bool = False) -> TaskSchema:
     """
     if len(instruction) > MAX_RAW_CHARS:
         raise ParseError(f"the instruction has {len(instruction)} characters; the limit is {MAX_INSTRUCTION_CHARS}")
+    spaced = re.sub(r"[ \t]{2,}", " ", re.sub(r"\n[ \t\n]*\n", "\n", instruction))  # runs of blanks say nothing, and
+    if spaced != instruction:  # patterns that begin with optional blanks had taken minutes over thousands of them
+        schema = parse(spaced, _framed=_framed)
+        return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})
     written = None if _framed else config.sentence(instruction)
     if written is not None:  # "structure=line; n=5; colour=green; region=back": the sentence it stands for
         schema = parse(written, _framed=True)
