@@ -78,6 +78,7 @@ DEVELOPMENT = {
     "stranger7": ("steer_stranger7.yaml", "STRANGER steering set 7 (steer_stranger7.yaml, development material)"),
     "stranger8": ("steer_stranger8.yaml", "STRANGER steering set 8 (steer_stranger8.yaml, development material)"),
     "stranger9": ("steer_stranger9.yaml", "STRANGER steering set 9 (steer_stranger9.yaml, development material)"),
+    "stranger10": ("steer_stranger10.yaml", "STRANGER steering set 10 (steer_stranger10.yaml, development material)"),
 }
 UNSEEN = HERE / "steer_unseen.yaml"
 SPLITS = HERE / "splits.yaml"
