@@ -2821,3 +2821,16 @@ def test_a_rotation_by_degrees_is_refused_as_an_action():  # it had been refused
 def test_runs_of_blanks_are_read_as_one():  # thousands of spaces had taken minutes (patterns with optional blanks)
     schema = parse("put the red cube" + " " * 7800 + "on the blue cube")
     assert meaning(schema) == ["stack(blue,red)"] and schema.instruction.count(" ") > 7800  # kept as written
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger16: a sort said by its largest or smallest label at one end (the listed order had been kept: silent)
+    ("Make a tower, biggest number at the bottom: cubes 1, 2 and 3.", ["stack(3,2,1)"]),
+    ("Stack 1, 2 and 3, the highest number at the base.", ["stack(3,2,1)"]),
+    ("Put digits 4, 2 and 7 in a row, largest on the left.", ["line[left_to_right](7,4,2)"]),
+    ("Put the digit cubes 4, 2 and 7 in a row, smallest on the right.", ["line[left_to_right](7,4,2)"]),
+    ("Put the digit cubes 4, 7 and 2 in a row, highest number on the right.", ["line[left_to_right](2,4,7)"]),
+    ("Line up the digits 3, 1, 2 with the smallest in front.", ["line[front_to_back](1,2,3)"]),
+])
+def test_a_sort_said_by_the_label_at_one_end(text, expected):
+    assert meaning(parse(text)) == expected

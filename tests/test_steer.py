@@ -1201,6 +1201,11 @@ def test_steer_stranger9_silent_errors_are_read_as_meant(tmp_path, base, edits, 
     assert _steered(tmp_path, base, *edits)[-1] == expected
 
 
+def test_taller_then_an_added_cube_keeps_the_tower(tmp_path):  # steer_stranger10: had recoloured every cube yellow
+    assert _steered(tmp_path, "Stack a red cube on a blue cube", "make it taller, add a yellow one on top")[-1] \
+        == ("extend", ["stack(blue,red,yellow)"])
+
+
 def test_a_version_reference_with_an_unread_change_is_refused(tmp_path):
     fam = Family(create_family(compile_instruction("Stack a cyan cube on an orange cube", tmp_path, name="fam").path).path)
     steer(fam.path, "make the top one white")

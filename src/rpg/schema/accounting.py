@@ -326,17 +326,17 @@ _END_OF = {"left": ("left_to_right", "right_to_left"), "right": ("right_to_left"
 
 def _ends_at(goal: list[P.Predicate], side: str, color_of: dict[str, str | None], color: str | None) -> list[str]:
     """The goal predicates that put a cube of ``color`` (any, None) at ``side``: a relation
-    with that side (:data:`SIDE_RELATIONS`) over such a cube, or a directed line that ends there with one."""
+    with that side (:data:`SIDE_RELATIONS`) over such a cube, or a directed line (or a reading of labels) that ends there with one."""
     first, last = _END_OF[side]
     out = []
     for p in goal:
         names = p.object_names()
         if p.name in SIDE_RELATIONS[side] and (color is None or any(color_of.get(n) == color for n in names)):
             out.append(p.name)
-        elif isinstance(p, P.InLine) and p.order in (first, last):
-            end = p.objects[0] if p.order == first else p.objects[-1]
+        elif isinstance(p, P.InLine | P.Reads) and (way := getattr(p, "order", None) or getattr(p, "direction", None)) in (first, last):
+            end = p.objects[0] if way == first else p.objects[-1]
             if color is None or color_of.get(end) == color:
-                out.append(f"in_line {p.order}")
+                out.append(f"{p.name} {way}")
     return out
 
 

@@ -1347,9 +1347,14 @@ def names_a_role(before: str, text: str) -> bool:
     structure ("with blue in the middle", "3 red at the base, 2 green in the middle") rather
     than a place on the table; ``text`` is the whole instruction."""
     return bool(ROLE_BEFORE.search(before) or ROLE_LIST_BEFORE.search(before) or END_ROLE_LIST_BEFORE.search(before)
-                or COLON_ROLE_LIST_BEFORE.search(before)
+                or COLON_ROLE_LIST_BEFORE.search(before) or SORT_END_BEFORE.search(before)
                 or (LAYER_LIST_BEFORE.search(before) and LAYERED_TEXT.search(text)))
 
+
+SORT_END_BEFORE = re.compile(r"\b(?:the\s+)?(?:largest|biggest|greatest|highest|smallest|lowest)"
+                             r"(?:\s+(?:number|digit|value|label|letter|one|cube|block))?(?:\s+(?:is|goes|sits))?\s*$")
+"""Text before a bare side that makes it the end of a sorted line ("digits 4, 2 and 7 in a row,
+largest on the left"): the sort's largest or smallest label, not a place on the table."""
 
 END_ROLE_LIST_BEFORE = re.compile(r"\b(?:at|on)\s+the\s+(?:left|right|front|back|top|bottom|far)\s+end\b[^.;]*(?:,|\band)\s+"
                                   r"(?:the\s+)?[a-z0-9]+(?:\s+(?:block|cube|one))?(?:\s+(?:is|goes|sits))?\s*$")

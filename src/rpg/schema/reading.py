@@ -432,13 +432,20 @@ def verb_final(text: str) -> str:
 
 
 SORT_ASKED_RE = re.compile(r"(?i)\b(?:sort(?:s|ed|ing)?|ascending|descending|increasing|decreasing|numerical(?:ly)?|alphabetical(?:ly)?"
-                           r"|smallest|largest|lowest|highest)\b")
+                           r"|smallest|largest|lowest|highest|biggest|greatest)\b")
 """Words that ask for labelled cubes in sorted order ("Sort the digit cubes 4, 9 and 2", "in
-ascending order", "smallest at the bottom")."""
+ascending order", "smallest at the bottom", "biggest number at the bottom")."""
 
-_DESC_RE = re.compile(r"(?i)\b(?:descending|decreasing|reverse(?:d)?|largest\s+(?:first|at\s+the\s+(?:bottom|front|left|start)|on\s+the"
-                      r"\s+left|in\s+front)|smallest\s+(?:last|at\s+the\s+(?:top|back|right|end)|on\s+the\s+right|on\s+top|in\s+the\s+back)"
-                      r"|highest\s+(?:first|at\s+the\s+bottom|on\s+the\s+left)|lowest\s+(?:last|on\s+top|at\s+the\s+top|on\s+the\s+right))\b")
+_LABEL_NOUN = r"(?:\s+(?:number|digit|value|label|letter|one|cube|block))?"
+_DESC_RE = re.compile(r"(?i)\b(?:descending|decreasing|reverse(?:d)?"
+                      r"|(?:largest|biggest|greatest)" + _LABEL_NOUN + r"\s+(?:first|at\s+the\s+(?:bottom|base|front|left|start)"
+                      r"|on\s+the\s+(?:left|bottom)|in\s+front)"
+                      r"|smallest" + _LABEL_NOUN + r"\s+(?:last|at\s+the\s+(?:top|back|right|end)|on\s+the\s+right|on\s+top"
+                      r"|in\s+the\s+back)"
+                      r"|highest" + _LABEL_NOUN + r"\s+(?:first|at\s+the\s+(?:bottom|base)|on\s+the\s+(?:left|bottom))"
+                      r"|lowest" + _LABEL_NOUN + r"\s+(?:last|on\s+top|at\s+the\s+top|on\s+the\s+right))\b")
+"""A sort said to run from the largest label ("descending", "the biggest number at the bottom",
+"smallest on top"): the listed labels are put largest first (bottom, left, front)."""
 
 
 def sorted_labels(text: str) -> str:
@@ -457,7 +464,19 @@ def sorted_labels(text: str) -> str:
         return text  # letters and digits mixed: no one key
     ordered = sorted(labels, key=lambda lab: (int(lab) if lab.isdigit() else lab), reverse=bool(_DESC_RE.search(text)))
     seps = re.findall(r"(?:\s*,\s*(?:and\s+)?|\s+and\s+|\s+)(?=[A-Z0-9])", m.group(0))
-    return text[:m.start()] + ordered[0] + "".join(s + lab for s, lab in zip(seps, ordered[1:], strict=True)) + text[m.end():]
+    side = _SORT_END_SIDE_RE.search(text)
+    way = ""  # "digits 4, 2 and 7 in a row, largest on the left": the sorted labels run from that side
+    if side and not re.search(r"(?i)\b(?:left|right|front|back)\s+to\s+(?:the\s+)?(?:left|right|front|back)\b", text):
+        way = {"left": " from left to right", "right": " from left to right",
+               "front": " from front to back", "back": " from front to back"}[side.group("side").lower()]
+    return (text[:m.start()] + ordered[0] + "".join(s + lab for s, lab in zip(seps, ordered[1:], strict=True)) + way
+            + text[m.end():])
+
+
+_SORT_END_SIDE_RE = re.compile(r"(?i)\b(?:largest|biggest|greatest|highest|smallest|lowest)" + _LABEL_NOUN
+                               + r"(?:\s+(?:is|goes|sits))?\s+(?:on|at|in)\s+(?:the\s+)?(?:far\s+|very\s+)?(?P<side>left|right|front|back)\b")
+"""A sorted line's end said by its largest or smallest label ("largest on the left"): the line
+runs along that axis, and the sort (:data:`_DESC_RE`) puts the right label at that end."""
 
 
 def _unshouted(text: str) -> str:

@@ -510,7 +510,8 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("recolor", {"select": {"color": canon_color(instead.group("old"))}, "to": {"color": canon_color(instead.group("new"))}}))
     repl = None if instead or swap else re.search(r"\b(?:replace|substitute|swap)\s+(?:the\s+)?(?P<old>.+?)\s+(?:with|for|by)\s+(?:an?\s+|the\s+)?(?P<new>.+)", t) or \
         re.search(r"\b(?:change|turn|make|paint|recolou?r|colou?r)\s+(?:the\s+)?(?P<old>.+?)\s+(?:to|into)\s+(?:an?\s+|be\s+)?(?P<new>.+)", t) or \
-        re.search(rf"\b(?:make|paint)\s+(?:the\s+)?(?P<old>.+?)\s+(?P<new>(?:{COLOR_RE}))\b", t)
+        re.search(rf"\b(?:make|paint)\s+(?:the\s+)?(?P<old>(?:(?!\band\b|\badd\b|\bput\b)[^,;.])+?)\s+(?P<new>(?:{COLOR_RE}))\b", t)
+    # (the cubes made a colour are said within one clause: "make it taller, add a yellow one" recolours nothing)
     repl = repl or re.search(rf"(?P<old>\b(?:the|both|all|each|every|it|they|them|\d+\s+of)\b[a-z0-9' ]*?)\s+(?:to\s+)?{EDIT_SHOULD_BE_RE}"
                              rf"\s+(?:an?\s+)?(?P<new>(?:{COLOR_RE})\b|(?:letter|digit)\s+[a-z0-9]\b)", t) or \
         re.fullmatch(rf"(?:and\s+|also\s+|now\s+)*(?P<old>(?:the|both)\b[a-z0-9' ]*?)\s+(?P<new>{COLOR_RE})[.!]?", t) or \
