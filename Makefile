@@ -18,6 +18,13 @@ $(VENV)/.installed: pyproject.toml
 	    apt-get install -y -q bubblewrap >/dev/null 2>&1; }; }; } || \
 	  echo "note: bubblewrap (bwrap) is not installed; the sandbox runs without its namespace layer." \
 	       "Install Debian's 'bubblewrap' package (sudo apt-get install bubblewrap) to add it."
+	@# The page tests load the gallery and evaluation pages in Debian's chromium: installed here the
+	@# same way; where it cannot be, those tests skip and say so.
+	@command -v chromium >/dev/null || { [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null && \
+	  { apt-get install -y -q chromium >/dev/null 2>&1 || { apt-get update -q >/dev/null 2>&1 && \
+	    apt-get install -y -q chromium >/dev/null 2>&1; }; }; } || \
+	  echo "note: chromium is not installed; the page tests skip." \
+	       "Install Debian's 'chromium' package (sudo apt-get install chromium) to run them."
 	test -x $(PY) || python3 -m venv $(VENV)
 	$(PY) -m pip install -q -e '.[dev,ray,baseline]'
 	touch $@

@@ -2,7 +2,6 @@
 
 import os
 import shutil
-import subprocess
 
 import pytest
 
@@ -16,12 +15,9 @@ CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic
 
 @pytest.fixture(scope="session")
 def chromium():
-    """Debian's chromium, installed by the test set-up when missing."""
+    """Debian's chromium, which `make install` installs where it can; the page tests skip without it."""
     exe = shutil.which("chromium")
-    if exe is None and shutil.which("apt-get"):
-        subprocess.run(["apt-get", "update", "-q"], capture_output=True, timeout=600)
-        subprocess.run(["apt-get", "install", "-y", "-q", "chromium"], capture_output=True, timeout=900)
-        exe = shutil.which("chromium")
     if exe is None:
-        pytest.fail("chromium is not installed and could not be installed with apt-get")
+        pytest.skip("chromium is not installed: install Debian's 'chromium' package "
+                    "(`make install` does, as root with apt-get; or sudo apt-get install chromium)")
     return exe

@@ -293,16 +293,18 @@ def test_eval_on_a_ray_head_started_separately_gives_the_pools_summary(ray_head,
     base = ["eval", task, "--policy", "oracle", "-n", "2", "--embodiment", FLOAT, "-j", "2"]
     pool = _rpg(*base, "--backend", "local", "-o", tmp_path / "pool")
     assert pool.returncode == 0, pool.stderr
-    # without the token the head refuses it: one line that says what is missing
-    no_token = {k: v for k, v in env.items() if k not in ("RAY_AUTH_MODE", "RAY_AUTH_TOKEN")}
-    r = subprocess.run([sys.executable, "-m", "rpg.cli", *map(str, base), "--backend", "ray", "--address", address,
-                        "-o", tmp_path / "refused"], capture_output=True, text=True, env=no_token, cwd=ROOT, timeout=300)
-    _one_line_error(r, "could not start the Ray cluster", "RAY_AUTH_MODE=token")
-    assert not (tmp_path / "refused" / "episodes.jsonl").exists()
     r = subprocess.run([sys.executable, "-m", "rpg.cli", *map(str, base), "--backend", "ray", "--address", address,
                         "-o", tmp_path / "ray"], capture_output=True, text=True, env=env, cwd=ROOT, timeout=600)
     assert r.returncode == 0, r.stderr
     assert "Traceback" not in r.stderr
+    # without the token the head, which has just taken the same run with it, refuses it: one line that
+    # says what is missing.  Ray tries to connect about once a second, 20 times by default; 2 here
+    no_token = {k: v for k, v in env.items() if k not in ("RAY_AUTH_MODE", "RAY_AUTH_TOKEN")}
+    no_token |= {"RAY_gcs_server_port_wait_time_s": "2", "RAY_NUM_REDIS_GET_RETRIES": "2"}
+    r = subprocess.run([sys.executable, "-m", "rpg.cli", *map(str, base), "--backend", "ray", "--address", address,
+                        "-o", tmp_path / "refused"], capture_output=True, text=True, env=no_token, cwd=ROOT, timeout=300)
+    _one_line_error(r, "could not start the Ray cluster", "RAY_AUTH_MODE=token")
+    assert not (tmp_path / "refused" / "episodes.jsonl").exists()
     summary = _without_timing(tmp_path / "pool" / "summary.json")
     assert summary == _without_timing(tmp_path / "ray" / "summary.json")
     assert summary["overall"]["n"] == 2 and set(summary["tasks"]) == {"stack_blocks"}
