@@ -94,6 +94,10 @@ def test_corpus_no_silent_errors_and_85_percent_correct(capsys):
     ("pyramid(pink,pink|pink)@center", ["pyramid(pink,pink,pink)@center"], True),
     ("pyramid(pink,pink|pink)@center", ["pyramid(pink,pink,pink)"], False),
     ("pyramid(pink,red|pink)@center", ["pyramid(pink,pink,red)@center"], False),
+    # a place said of several cubes at once is one atom per cube
+    ("in_region(red,red,left)", ["in_region(red,left)", "in_region(red,left)"], True),
+    ("in_region(red,red,left)", ["in_region(red,left)"], False),
+    ("in_region(blue,red,left)", ["in_region(red,left)", "in_region(red,left)"], False),
 ])
 def test_meaning_matcher(expected, actual, ok):
     assert matches(expected, actual) is ok

@@ -2834,3 +2834,41 @@ def test_runs_of_blanks_are_read_as_one():  # thousands of spaces had taken minu
 ])
 def test_a_sort_said_by_the_label_at_one_end(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger16's voices: a rulebook, an acceptance criterion, a handout's labels, a spec's section number, a chat's
+    # emoji shortcodes and announcement, a voice assistant, an annotator's caption of what the arm did, a Spanish habit
+    ("Rule 5.2: A team scores when its red cube rests on the green goal patch.", ["on_patch(red,patch:green)"]),
+    ("Acceptance criterion: given the cubes, when the task finishes, then the blue cube is left of the orange cube.",
+     ["left_of(blue,orange)"]),
+    ("Lab 4, part A: place the pink cube between the two gray cubes.", ["between(pink;gray,gray)"]),
+    ("By the end of the exercise the white cube should be sitting on the yellow patch.", ["on_patch(white,patch:yellow)"]),
+    ("5.3 The final structure shall be a row of three red cubes.", ["line(red,red,red)"]),
+    ("hey can the bot stack blue on red :pray: thx", ["stack(red,blue)"]),
+    ("ok new eval task :point_down: row of 3 orange cubes, that's it :white_check_mark:", ["line(orange,orange,orange)"]),
+    ("put the red cube :red_circle: on the blue patch when you get a sec", ["on_patch(red,patch:blue)"]),
+    ("Alexa, tell the robot to make a tower of three yellow blocks.", ["stack(yellow,yellow,yellow)"]),
+    ("The arm moved the green block to the left of the blue block.", ["left_of(green,blue)"]),
+    ("the gripper stacked the pink cube onto the white cube and then stopped", ["stack(white,pink)"]),
+    ("Is necessary to make a line with the three cubes pink.", ["line(pink,pink,pink)"]),
+    # words: a target field is a patch, a zone a region, "well away" far, "just leave" a place to end in
+    ("Put the orange cube onto the green target field.", ["on_patch(orange,patch:green)"]),
+    ("Place the red cube in the left zone.", ["in_region(red,left)"]),
+    ("Keep the green block well away from the yellow block.", ["far_from(green,yellow)"]),
+    ("Just leave the orange cube somewhere on the right side of the table.", ["in_region(orange,right)"]),
+])
+def test_rulebooks_criteria_chats_captions_and_voice_requests(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_labels_listed_with_spaces_are_the_labels_sorted():  # "A B C" had been read as 4 letters (a D invented)
+    assert meaning(parse("line up A B C in alphabetical order left to right")) == ["line[left_to_right](A,B,C)"]
+
+
+@pytest.mark.parametrize("text", ["When the green patch is empty, put the yellow cube on it.",
+                                  "If the red cube is on the left, put it on the blue cube.",
+                                  "Move the arm back to its home position."])
+def test_conditions_and_arm_motions_stay_refused(text):  # the new frames take only a score, a run's end, a caption
+    with pytest.raises(BadInput):
+        parse(text)

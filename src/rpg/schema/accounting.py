@@ -136,7 +136,7 @@ EACH_CORNER_RE = re.compile(r"\b(?:each|every|all)\s+(?:of\s+the\s+)?(?:(\d+)\s+
 
 BARE_PLACE_RE = re.compile(
     r"\b(?:in|at|on|to|into|onto|near|by|along)\s+the\s+(?:very\s+|far\s+)?(?P<side>front|back|rear|left|right|middle|center|centre)"
-    r"(?:\s*-?\s*(?:hand\s+)?(?:side|half|part|edge|end|area|region))?\b(?!\s*(?:of\b|-|corner|left|right|middle))")
+    r"(?:\s*-?\s*(?:hand\s+)?(?:side|half|part|edge|end|area|region|zone))?\b(?!\s*(?:of\b|-|corner|left|right|middle))")
 """A side of the table named alone ("at the front", "on the left", "in the middle"), not a
 relation ("to the left of"): a place the task must use (project)."""
 

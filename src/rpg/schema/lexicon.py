@@ -125,7 +125,7 @@ SYNONYMS: dict[str, str] = {
     "rearranged": "arranged", "reorder": "arrange", "reorganize": "arrange", "reorganise": "arrange",
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
     "uppermost": "topmost", "lowermost": "bottommost", "upon": "on", "right-hand": "right", "left-hand": "left",
-    "stays": "is", "remains": "is", "midpoint": "center", "tower's": "tower", "within": "in", "inside": "in", "quadrant": "corner", **TYPOS, **ABBREVIATIONS,
+    "stays": "is", "remains": "is", "bot": "robot", "midpoint": "center", "tower's": "tower", "within": "in", "inside": "in", "quadrant": "corner", **TYPOS, **ABBREVIATIONS,
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
@@ -225,7 +225,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|\b(?:current|present)\s+(?:position|place|spot|location)s?\b"
                   r"|\bthe\s+(?:blocks?|cubes?|ones?|box|boxes|objects?)\s+(?:that\s+(?:is|are)\s+|which\s+(?:is|are)\s+)?"
                   r"(?:on|at|in)\s+the\s+(?:far\s+)?(?:left|right|front|back|middle|center|centre)\b"
-                  r"(?!\s+(?:of|side|corner|edge|half|part|end|area|region)\b)"
+                  r"(?!\s+(?:of|side|corner|edge|half|part|end|area|region|zone)\b)"
                   r"(?=.*\b(?:on|onto|to|into|next|beside|behind|under|near)\b)"
                   r"|\b(?:put|place|move|set|bring|return)\s+(?:(?!the\s+back\b)[a-z]+\s+){0,3}back\b(?!\s+(?:of|left|right|side|edge|corner|row|half|part|end)\b)"
                   # "the red block that is on the blue block": a cube picked by where it stands now
@@ -595,7 +595,7 @@ alternating alternate alternately alternates going goes go way up down upward do
 wall walls wide deep long split divide pillar column close far triangle triangular formation write writes
 writing addition subtraction multiplication increase increases decrease decreases tier tiers story storey stories storeys instead actually
 rather backwards backward pick grab take lift get lay drop small little tiny mini huge one unstack unstacked off remove
-through corner corners sum area areas zone zones region regions spot spots location pad pads mat mats tile tiles
+through corner corners sum area areas zone zones field fields region regions spot spots location pad pads mat mats tile tiles
 marker markers away distant opposite rear edge edges end ends half part workspace robot
 """.split())
 """Words the builtin front end understands (besides colours, numbers and labels)."""
@@ -668,6 +668,8 @@ def _completed(head: str) -> str:
     return head
 _COLOR_WORD = "(?:" + "|".join(COLORS) + ")"
 PLACE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
+    # "well away from", "well behind": the degree adds nothing a qualitative relation could judge
+    (re.compile(r"\bwell\s+(?=(?:away|apart|clear|behind|beyond|in\s+front|to\s+the\s+(?:left|right))\b)"), ""),
     # "between the yellow and (the) pink patches": each colour names a patch (yellow had been read as a cube)
     (re.compile(rf"\b({COLOR_RE})\s+and\s+(?:the\s+)?({COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patches|pads|mats|tiles)\b"),
      r"\1 patch and the \2 patch"),
@@ -679,7 +681,7 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
      r"the \1 \3 \4 the \5 patch and the \2 \3 \4 the \6 patch"),
     # "keep the green cube far from the yellow cube", "leave the white cube on the red patch": where it ends up, said as a
     # state to hold
-    (re.compile(rf"(?:^|(?<=[.;!,]\s)|(?<=\band\s))(?:keep|leave)\s+(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|brick)\b|(?:it|them)\s+"
+    (re.compile(rf"(?:^|(?<=[.;!,]\s)|(?<=\band\s)|(?<=\bjust\s)|(?<=\bsimply\s)|(?<=\bplease\s)|(?<=\bnow\s))(?:keep|leave)\s+(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|brick)\b|(?:it|them)\s+"
                 rf"(?:far|next|near|beside|behind|in\s+front|on|to\s+the|at|left|right)\b)"), "put "),
     # "the table's center", "the table's left side": the place on the table, as "the center of the table" says it
     (re.compile(r"\bthe\s+(table|workspace)(?:'s)?\s+(center|centre|middle)\b"), r"the \2 of the \1"),  # "the table centre"
@@ -853,10 +855,13 @@ POLITE_CONDITION_RE = re.compile(
     r"take|line|get|bring|slide|push|spell|sort|lay|form|create|pile)\b)"
     r"|[,;(]?\s*\bif\s+(?:at\s+all\s+)?possible\b\)?|[,;]?\s*\bif\s+you\s+(?:could|would|can|please)\s*(?=[.!,;]|$)"
     r"|(?i:[,;]?\s*\bif\s+(?:it|that)\s+(?:is\s+not|isn'?t|is\s+no|'?s\s+not)\s+too\s+much\s+(?:trouble|work|bother)\b\s*,?)"
-    r"|(?i:\b(?:it\s+)?(?:is|would\s+be|'?d\s+be)\s+better\s+if\s+you\b)")
+    r"|(?i:\b(?:it\s+)?(?:is|would\s+be|'?d\s+be)\s+better\s+if\s+you\b)"
+    r"|(?i:[,;]?\s*\b(?:when(?:ever)?|once)\s+you\s+(?:get|have|find)\s+(?:a|the)\s+(?:sec|second|minute|min|moment|chance"
+    r"|mo)\b\s*[.!,]?)")
 """A condition that is only politeness ("I'd love it if you could take the yellow cube ...", ",
 if you could", "if possible"): dropped before conditions are refused, so the request is read
-(:func:`rpg.schema.reading.normalize`).  "If the green cube is on the left ..." stays a condition."""
+(:func:`rpg.schema.reading.normalize`).  "If the green cube is on the left ..." stays a condition;
+"when you get a sec" is only the request's timing, not a condition of the goal."""
 
 SMALL_TALK_RE = re.compile(
     r"\b(?:i\s+)?hope\s+(?:you(?:'re|\s+are)|you\s+have\s+been|all\s+is|it(?:'s|\s+is))\s+(?:doing\s+|going\s+)?"
@@ -931,6 +936,11 @@ MARKUP_RES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"(?i)^\s*(?:user\s+story\s*:\s*)?as\s+an?\s+[a-z]+(?:\s+[a-z]+)?\s*,?\s+(?=i\s+(?:want|need|would\s+like)\b)"), ""),
     (re.compile(r"(?i)(?<!\s),?\s+so\s+(?:that\s+)?(?:i|we|the\s+(?:bench|table|camera|students?|visitors?))\s+(?:can|could|looks?|sees?"
                 r"|understand|understands)\b[^.]*"), ""),
+    # a chat's announcement of the task ("ok new eval task: ...", "new task -"): the task follows
+    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|so|alright|hey)\s*[,.!]?\s+)?(?:(?:a|the|one|another)\s+)?(?:new\s+(?:eval(?:uation)?\s+)?|eval(?:uation)?\s+)"
+                r"(?:task|eval)\s*[:,\-]?\s*(?=\S)"), ""),
+    # a chat's emoji shortcodes (":pray:", ":white_check_mark:", ":red_circle:"): pictures, no words of the task
+    (re.compile(r"(?<![\w:]):[a-z0-9_+\-]{2,40}:(?![\w:])"), " "),
     # an exam's points: "(5 points)", "Q4 (10 pts)."
     (re.compile(r"(?i)\s*\(\s*\d+\s*(?:points?|pts?|marks?)\s*\)\s*\.?"), " "),
 )
@@ -951,6 +961,8 @@ CHAT_TURN_RES: tuple[tuple[re.Pattern, str], ...] = (
 (:data:`LABEL_RE`)."""
 
 TASK_FRAME_RES: tuple[re.Pattern, ...] = (
+    # a dotted section number before the text ("5.3 The tower ...")
+    re.compile(r"^\s*\d+(?:\.\d+)+\.?\s+(?=[A-Za-z])"),
     # "We evaluate a tower-building task in which the policy must ...": the task it names follows
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:we\s+(?:evaluate|consider|study|use|define|propose)|consider|this\s+is)\s+an?\s+"
                r"(?:[\w-]+\s+){0,3}?(?:task|benchmark|environment|setting)\s+(?:in\s+which|where)\s+"),
@@ -986,6 +998,31 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
                r"|shot|scene|state)\s*,?\s*"),
     re.compile(r"(?:^|(?<=[.!?;:]\s))after\s+the\s+(?:robot|agent|policy|arm)\s+(?:acts|is\s+done|finishes|has\s+(?:acted|finished))"
                r"\s*,\s*"),
+    # a voice assistant's wake word and a request passed on ("Alexa, tell the robot to ...", "ask the arm to ...",
+    # "have the robot ...", "watch it line up ..."): the request is the task
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:(?:alexa|siri|hey\s+google|ok(?:ay)?\s+google|hey\s+robot|computer)\s*,\s*)?"
+               r"(?:(?:please\s+)?(?:tell|ask|instruct|command|get)\s+(?:the\s+)?(?:robot|arm|agent|policy)\s+to\s+"
+               r"|(?:please\s+)?(?:have|let)\s+(?:the\s+)?(?:robot|arm|agent|policy)\s+(?=[a-z]+\s)"
+               r"|(?:now\s+)?watch\s+(?:it|the\s+robot|the\s+arm|me)\s+(?=[a-z]+\s))"),
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:alexa|siri|hey\s+google|ok(?:ay)?\s+google)\s*,\s*"),
+    # "Is necessary to make ..." (a Spanish "es necesario"), "it is required that ...": the task follows
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:it\s+)?(?:is|'s)\s+(?:necessary|required|needed|essential|mandatory)\s+(?:to|that)\s+"),
+    # an annotator's caption of what an arm did ("The arm moved the green block ...", "the gripper stacked ... and then
+    # stopped"): the end state it describes, said of the robot; stopping afterwards says nothing of the cubes
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:robot(?:ic)?\s+)?(?:arm|gripper|manipulator|end[- ]effector)\s+(?=[a-z]+ed\b)"),
+    re.compile(r"\s*,?\s+(?:and\s+)?(?:then\s+)?(?:it\s+)?(?:stopped|halted|was\s+done|went\s+(?:home|back\s+home)|returned\s+home)\s*[.!]?\s*$"),
+    # a rulebook's or game's scoring ("A team scores when its red cube rests on ...", "You win when ..."): the goal follows
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:(?:a|the|each)\s+)?(?:team|player|robot|agent|policy|you|we)\s+(?:scores?|wins?|passes|succeeds?)"
+               r"(?:\s+(?:a|one|the)\s+(?:point|round|level|game))?\s+(?:only\s+)?(?:when|if|once)\s+(?:(?:its|their|your|our)\s+(?=\w+\s+(?:block|cube)))?"),
+    # "By the end of the exercise(,) ...", "at the end of the episode": every goal is checked then
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:by|at)\s+the\s+end\s+of\s+the\s+(?:exercise|episode|task|trial|run|rollout|lesson|lab|session"
+               r"|demo|game|round|level)\s*,?\s*"),
+    # an acceptance criterion in given/when/then form whose "when" is the end of the run: the "then" is the goal
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:given\s+[^,;.]{1,60},\s*)?when\s+(?:the\s+)?(?:task|episode|robot|policy|agent|run|trial"
+               r"|rollout)\s+(?:finishes|ends|is\s+(?:done|finished|over|complete))\s*,?\s*(?:then\s+)?"),
+    # "The final structure shall be a three-level tower ...": the structure said is the goal
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:final|end|goal|target|resulting)\s+(?:structure|configuration|arrangement|state|scene"
+               r"|result|layout)\s+(?:shall|should|must|will|has\s+to|is\s+to)\s+be\s+(?=(?:a|an|one)\s)"),
     # "Before: cubes scattered. After: ...": a start scattered at random is every task's
     re.compile(r"(?:^|(?<=[.!?;:]\s))before\s*:\s*[^.;]*?\b(?:scattered|random(?:ly\s+placed)?|messy|mixed|jumbled|spread\s+out)\b"
                r"[^.;]*[.;]\s*(?:after\s*:\s*)?"),
@@ -1101,7 +1138,8 @@ LABEL_RE = re.compile(r"(?:^|(?<=[.!?;|]\s))\s*(?P<label>[a-z][a-z'\- ]{0,30}?(?
 cannot ("Never: ..." stays, and is refused)."""
 
 ID_LABEL_RE = re.compile(
-    r"^\s*(?P<label>(?:[\w'\"().\-]+,?\s+){0,7}?(?:[\w'\"().\-]*\d[\w'\"().\-]*|[A-Za-z]+(?:-[A-Za-z0-9]+)+|\"[^\"]{1,24}\")"
+    r"^\s*(?P<label>(?:[\w'\"().\-]+,?\s+){0,7}?(?:[\w'\"().\-]*\d[\w'\"().\-]*|[A-Za-z]+(?:-[A-Za-z0-9]+)+|\"[^\"]{1,24}\""
+    r"|(?<=part\s)[A-Z]|(?<=Part\s)[A-Z])"
     r"(?:\s*\([^()]{1,40}\))?)\s*(?::|\.(?=\s+[A-Za-z]))\s+(?P<body>\S.*)$", re.S)
 """A task's identifier before its text, as benchmark specs and papers write it ("Task 7 (Stacking-3):
 ...", "Relation test R-3: ...", "Unstack-2. init: ...", "Eval condition "mixed-2": ..."): its last word
@@ -1114,7 +1152,8 @@ LABEL_JARGON = frozenset(
     "task tasks item trial test tests eval evaluation split set condition variant episode scenario case exercise question "
     "level stage problem appendix section clause paper generalisation generalization relation relations multi structure "
     "structures spec config benchmark id no v worksheet objective env environment suite setting demo item nov dec jan feb "
-    "mar apr may jun jul aug sep oct".split())
+    "mar apr may jun jul aug sep oct lab labs part rule rules criterion criteria acceptance requirement req homework "
+    "assignment hw lesson handout".split())
 """Words of a task's identifier that say nothing of the task (:data:`ID_LABEL_RE`)."""
 
 LABEL_TASK_KIND_WORDS = frozenset(

@@ -208,17 +208,26 @@ def _unordered(atom: str) -> str:
     return f"{m.group(1)}({','.join(sorted(m.group(2).split(',')))}{m.group(3) or ''}){m.group(4) or ''}"
 
 
+def _per_cube(atom: str) -> list[str]:
+    """A place said of several cubes at once (``in_region(red,red,back)``) as one atom per cube,
+    the way :func:`meaning` writes it; any other atom as it is."""
+    m = re.fullmatch(r"in_region\(([^()]+),(\w+)\)", atom)
+    if m is None or "," not in m.group(1):
+        return [atom]
+    return [f"in_region({c},{m.group(2)})" for c in m.group(1).split(",")]
+
+
 def matches(expected: str, actual: list[str]) -> bool:
     """Whether a corpus meaning (atoms separated by ``; `` outside brackets) equals ``actual``.
 
     Each expected atom must match a distinct actual atom and no actual atom may be left over.
     A per-cube atom whose cube is ``red*`` (``in_region(red*,back)``: every red cube there)
     matches one or more actual atoms, one per red cube (``in_region(red,back)`` twice), and
-    ``reads(DOG)`` matches the reads atom whose text is DOG, whatever its cubes and face; a pile's
+    ``in_region(red,red,back)`` stands for one atom per cube; ``reads(DOG)`` matches the reads atom whose text is DOG, whatever its cubes and face; a pile's
     or piles' cubes match in any order.
     """
-    wanted = [_unordered(a.strip()) for a in re.split(r";\s+(?![^()]*\))", expected) if a.strip()]
-    actual = [_unordered(a) for a in actual]
+    wanted = [w for a in re.split(r";\s+(?![^()]*\))", expected) if a.strip() for w in _per_cube(_unordered(a.strip()))]
+    actual = [w for a in actual for w in _per_cube(_unordered(a))]
     for w in [w for w in wanted if re.fullmatch(r"reads\([A-Za-z0-9]+\)", w)]:  # "reads(DOG)": the word read, shortly
         word = w[6:-1]
         actual = [f"reads({word})" if re.fullmatch(rf"reads\([^()]*\btext={re.escape(word)}\b[^()]*\)", a) else a for a in actual]

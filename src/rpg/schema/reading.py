@@ -938,9 +938,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"\bcolumn(s?)\b(?=.*\b(?:front\s+to\s+back|back\s+to\s+front|left\s+to\s+right|right\s+to\s+left)\b)",
                   r"line\1", text)  # "a column of three cubes going from front to back" lies along the table
     text = re.sub(r"\b(a|one|single|the same)\s+column\b", r"\1 tower", text)  # "in a column"; "2 columns" stay grids
-    text = re.sub(r"\b(?:goal|target)\s+(?:area|zone|region|spot|location|position|point|pad|mat|marker|square|tile)(s?)"
+    text = re.sub(r"\b(?:goal|target)\s+(?:area|zone|region|spot|location|position|point|pad|mat|marker|square|tile|field)(s?)"
                   r"(?:\s+patch(?:es)?)?\b", r"goal patch\1", text)  # "the target square patch": one patch
-    text = re.sub(rf"\b({COLOR_RE})\s+(?:(?:goal|target)\s+)?(?:pad|mat|marker|zone|area|region|tile)(s?)\b", r"\1 patch\2", text)
+    text = re.sub(rf"\b({COLOR_RE})\s+(?:(?:goal|target)\s+)?(?:pad|mat|marker|zone|area|region|tile|field)(s?)\b", r"\1 patch\2", text)
     # "onto the yellow square": a square a cube is put on is a patch ("build a red square" stays a structure)
     text = re.sub(rf"\b(on|onto|into|in|to)\s+the\s+({COLOR_RE})\s+square\b", r"\1 the \2 patch", text)
     text = re.sub(r"\btarget(s?)\b(?!\s+(?:goal\s+)?patch)", r"patch\1", text)  # "onto the blue target"
@@ -1203,8 +1203,9 @@ def explicit_labels(f: Features) -> list[str]:
     m = m if m and "," in m.group(2) else None  # "1, 2, 3 and 4", "A, B, and C"; "A and B and C" is the next rule's
     if not m and f.has("letter", "letters", "number", "numbers", "digit", "digits", "label", "labels", "faces"):
         m = re.search(r"\b([A-Z0-9])((?:(?:\s*,\s*|\s+and\s+|\s*,\s*and\s+)[A-Z0-9]){1,})\b", f.original)
-    if not m and f.has("letter", "letters", "number", "numbers", "digit", "digits", "label", "labels"):
-        m = re.search(r"(?<![\w-])([A-Z0-9])((?:\s+[A-Z0-9]){2,})(?![\w-])", f.original)  # "digit cubes 4 2 1 3"
+    if not m and (f.has("letter", "letters", "number", "numbers", "digit", "digits", "label", "labels")
+                  or SORT_ASKED_RE.search(f.text) or f.has("line", "row", "spell", "stack", "tower")):
+        m = re.search(r"(?<![\w-])([A-Z0-9])((?:\s+[A-Z0-9]){2,})(?![\w-])", f.original)  # "digit cubes 4 2 1 3", "line up A B C"
     if m:
         return [m.group(1)] + re.findall(r"[A-Z0-9]", m.group(2))
     r = re.search(r"\b([A-Z]|\d)\s+(?:down\s+|up\s+)?(?:to|through|thru)\s+([A-Z]|\d)\b", f.original)
@@ -1231,7 +1232,7 @@ REGION_RE = re.compile(
     r"(?:(?P<far>very|far)\s+(?=(?:front|back|rear|left|right)))?"
     r"(?:(?P<fb>front|back|rear)(?:(?:\s*-\s*|\s+)(?P<lr>left|right|middle|center|centre))?"
     r"|(?P<lr2>left|right|middle|center|centre))"
-    r"(?P<part>(?:\s*-?\s*(?:hand\s+)?(?:side|corner|half|part|edge|end|area|region))?)"
+    r"(?P<part>(?:\s*-?\s*(?:hand\s+)?(?:side|corner|half|part|edge|end|area|region|zone))?)"
     r"(?P<tail>\s+of\s+(?:the\s+)?(?:table|workspace))?(?!\s*of\b)")
 """A place on the table after a preposition ("in the back left corner", "on the right side of
 the table"), or said bare at the start of a text or a list item ("Spec: tower of three, back-left
