@@ -2872,3 +2872,14 @@ def test_labels_listed_with_spaces_are_the_labels_sorted():  # "A B C" had been 
 def test_conditions_and_arm_motions_stay_refused(text):  # the new frames take only a score, a run's end, a caption
     with pytest.raises(BadInput):
         parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a cube placed in a region, then another related to it: "it" is the one cube of the clause before
+    ("Put the red cube in the center and the blue cube to its left.", ["in_region(red,center)", "left_of(blue,red)"]),
+    ("Put the blue cube on the right side and the green one beside it.", ["in_region(blue,right)", "next_to(blue,green)"]),
+    ("Put the red cube in the back and the green cube in front of it.", ["in_front_of(green,red)", "in_region(red,back)"]),
+    ("Put the red cube on the left and the blue cube on the right.", ["left_of(red,blue)"]),  # still one relation's sides
+])
+def test_a_cube_placed_in_a_region_then_another_related_to_it(text, expected):
+    assert meaning(parse(text)) == expected

@@ -761,6 +761,10 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
             text = text[:m.start()] + f"the {before.pop()} patch" + text[m.end():]
     for pattern, written in lexicon.PLACE_REWRITES:  # patches, pairs, the table's centre and sides
         text = pattern.sub(written, text)
+    text = lexicon.REGION_ANTECEDENT_RE.sub(  # "the red cube in the center and the blue cube to its left": left of red
+        lambda m: (m.group(0)[:m.start("pro") - m.start()]
+                   + (f"to the {m.group('side')} of the {m.group('c')} cube" if m.group("side") else f"the {m.group('c')} cube")),
+        text)
     centred = re.search(r"\bcent(?:er|r)ed\b", text)
     if centred:  # "a centered stack of red, blue and green", "..., centered": centred where? (it was dropped)
         raise ParseError(f"'centered' in \"{original[:80]}\" does not say where the centre is for the builtin parser; say "
@@ -1290,6 +1294,24 @@ def _table_side(m: re.Match) -> bool:
             and not names_a_role(m.string[:m.start()], m.string))  # "line up yellow and blue with blue on the left"
 
 
+_CLAUSE_SIDE_BEFORE = re.compile(rf"(?:^|[.;:]\s*|\b(?:and|then)\s+)(?:(?:put|place|set|move|leave|keep)\s+)?(?:the\s+|a\s+|an\s+)?"
+                                 rf"(?:{COLOR_RE})\s+(?:block|cube|box|one)\s*$")
+_CLAUSE_SIDE_AFTER = re.compile(rf"\s*,?\s+(?:and|then)\s+(?:(?:put|place|set|move)\s+)?(?:the\s+|a\s+|an\s+)(?:{COLOR_RE})\s+"
+                                r"(?:block|cube|box|one)\b(?!\s+(?:is\s+|goes\s+)?(?:on|to|at|in)\s+the\s+(?:far\s+|very\s+)?"
+                                r"(?:left|right|front|back|rear|middle|center|centre)\b(?!\s+of\b))")
+"""(the next clause relates its cube to another, rather than naming the other side: "red on the left and blue on the
+right" are the two sides of one relation)"""
+
+
+def _clause_side(m: re.Match) -> bool:
+    """Whether a bare side ends a clause that places one cube, another cube's clause following
+    ("put the red cube in the back and the green cube in front of it"): the side has nothing in
+    its own clause to be relative to, so it is the table's."""
+    return (_side_part_ok(m) and m.group(0).split()[0] in ("on", "to", "at", "in")
+            and _CLAUSE_SIDE_BEFORE.search(m.string[:m.start()]) is not None
+            and _CLAUSE_SIDE_AFTER.match(m.string[m.end():]) is not None)
+
+
 _HEADING_RE = re.compile(r"\s*(?:(?:build|make|put|place|set\s+up)\s+)?(?:(?:a|an|the)\s+)?(?:[\w-]+\s+){0,3}?"
                          rf"{lexicon.STRUCTURE_NOUN}\s*")
 
@@ -1364,7 +1386,7 @@ def mark_regions(text: str) -> str:
                        and not names_a_role(m.string[:m.start()], m.string))
         two_sides = bool(m.group("fb")) and m.group("lr") in ("left", "right")  # "at the front right": a corner of the table
         if not (m.group("tail") or corner or edge or bare_center or two_sides or _table_side(m) or _heading_side(m)
-                or _structure_side(m) or _group_side(m)):
+                or _structure_side(m) or _group_side(m) or _clause_side(m)):
             return m.group(0)
         fb = m.group("fb") or ("far" if m.group("far") == "far" and corner else None)  # "the far left corner"
         if corner and not (fb and word in ("left", "right")):  # "the right corner": back right or front right?
