@@ -2883,3 +2883,18 @@ def test_conditions_and_arm_motions_stay_refused(text):  # the new frames take o
 ])
 def test_a_cube_placed_in_a_region_then_another_related_to_it(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # counted cubes that had reached one cube: "the two red cubes" under a named top, one cube on each of N,
+    # a counted colour after its noun agreeing in number, a label cube named without its article
+    ("Stack the two red cubes and put the white cube on top.", ["stack(red,red,white)"]),
+    ("Put one yellow cube on each of the two blue cubes.", ["stack(blue,yellow)", "stack(blue,yellow)"]),
+    ("Put the two cubes oranges in the center of the table.", ["in_region(orange,center)", "in_region(orange,center)"]),
+    ("so the the tower should be uh three cubes purple purple and then uh orange at the top",
+     ["stack(purple,purple,orange)"]),  # a list after the noun stays a list
+    ("Put digit 7 on top of digit 2.", ["stack(2,7)"]),
+    ("Place digit 3 between digit 1 and digit 5.", ["between(3;1,5)"]),
+])
+def test_counted_cubes_each_of_and_bare_label_nouns(text, expected):
+    assert meaning(parse(text)) == expected

@@ -718,6 +718,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     if re.search(r"\bwalls?\b", text):  # "a two-layer wall with blue on the bottom, three cubes per layer"
         text = lexicon.WALL_LAYER_ROLE_RE.sub(lambda m: f"{m.group('where')} layer {m.group('c')}", text)
         text = lexicon.PER_LAYER_RE.sub(_per_layer, text)
+    # "put digit 7 on top of digit 2": a label cube named without its article
+    text = re.sub(r"(?<![\w'])(?<!the\s)(?<!a\s)(?<!each\s)(?<!every\s)(?<!any\s)\b(digit|number|letter)\s+(?=(?:\d|[A-Z])\b(?!\s*(?:,|to\b|-)))",
+                  r"the \1 ", text)
     # "the cube the blue on the cube the red": a colour after its noun and an article (Italian, Arabic)
     text = re.sub(rf"\bthe\s+(cubes?|blocks?|box(?:es)?|patch(?:es)?)\s+the\s+({COLOR_RE})\b"
                   rf"(?!\s+(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?)\b)", r"the \2 \1", text)
@@ -726,8 +729,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   rf"(?!\s*(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?)\b|\s*(?:,|and\b|or\b)\s*(?:the\s+)?(?:{COLOR_RE})\b)",
                   r"\2 \1", text)  # a list after the noun ("the cube red, blue and green") is left as it is
     # "two cubes gray and the cube brown": a counted colour after its noun (Russian, Spanish habits)
-    text = re.sub(rf"\b(\d+)\s+(cubes|blocks)\s+({COLOR_RE})\b(?!\s*(?:cubes?|blocks?|ones?|patch(?:es)?)\b|\s*,\s*(?:{COLOR_RE})\b)",
-                  r"\1 \3 \2", text)
+    text = re.sub(rf"\b(\d+|{lexicon.COUNT_WORD_RE})\s+(cubes|blocks)\s+({COLOR_RE})s?\b(?!\s*(?:cubes?|blocks?|ones?|patch(?:es)?)\b|\s*,\s*(?:{COLOR_RE})\b|\s+(?:{COLOR_RE})\b)",
+                  r"\1 \3 \2", text)  # the colour may agree in number ("the two cubes oranges", French and Spanish)
     # "the corner back right", "the part front of the table": a place's words after its noun (Spanish, French)
     text = re.sub(r"\bthe\s+(corner|side|part|edge)\s+((?:front|back|rear)(?:[\s-]+(?:left|right))?|left|right)\b", r"the \2 \1", text)
     # "tower | top: pink | bottom: gray", "red / white / red / white": a table row's or a list's separators
@@ -1078,10 +1081,14 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
      lambda m: ": from left to right: " + ", ".join([m.group(1)] + [m.group(3)] * int(m.group(2)) + [m.group(1)])),
     # "build a stack of two blue cubes and put the green cube on top", "stack 2 blue cubes with a green one on top":
     # the counted cubes, then the one on top (the count had reached only one of them)
-    (re.compile(rf"\b(?:(?:build|make|create|form)\s+a\s+(?:{TOWER_NOUNS})\s+of|stack)\s+(\d+)\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)"
-                r"\s*,?\s+(?:and|with)\s+(?:then\s+)?(?:(?:put|place|add|stack|set)\s+)?(?:a|an|the|1)\s+"
+    (re.compile(rf"\b(?:(?:build|make|create|form)\s+a\s+(?:{TOWER_NOUNS})\s+of|stack)\s+(?:the\s+)?(\d+)\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)"
+                r"\s*,?\s+(?:and|with|then)\s+(?:then\s+)?(?:(?:put|place|add|stack|set)\s+)?(?:a|an|the|1)\s+"
                 rf"({COLOR_RE})\s+(?:block|cube|brick|one)\s+(?:on\s+top|at\s+the\s+top)(?:\s+of\s+(?:it|them|the\s+(?:stack|tower)))?\b"),
      lambda m: "build a tower from bottom to top: " + ", ".join([m.group(2)] * int(m.group(1)) + [m.group(3)]), True),
+    # "put one yellow cube on each of the two blue cubes": a two-cube tower on each of them
+    (re.compile(rf"\b(?:put|place|set|stack|add)\s+(?:a|an|1)\s+({COLOR_RE})\s+(?:cube|block|brick)\s+(?:on\s+top\s+of|on|onto|atop)\s+"
+                rf"(?:each|every)\s+(?:one\s+)?of\s+(?:the\s+)?(\d+)\s+({COLOR_RE})\s+(?:cubes|blocks|bricks)\b"),
+     lambda m: f"build {m.group(2)} stacks: " + " and ".join([f"{m.group(1)} on {m.group(3)}"] * int(m.group(2)))),
     # "a tower of five cubes with a red cube at the bottom and four yellow cubes above it": the one, then the counted
     (re.compile(rf"(?:\s+with\s+|\s*:\s*)(?:a|an|the|1)\s+({COLOR_RE})\s+(?:block|cube|brick)\s+(?:at|on)\s+the\s+(?:bottom|base)"
                 rf"\s*,?\s+and\s+(\d+)\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)\s+(?:above\s+it|on\s+top(?:\s+of\s+it)?)\b"),
