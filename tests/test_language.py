@@ -2898,3 +2898,33 @@ def test_a_cube_placed_in_a_region_then_another_related_to_it(text, expected):
 ])
 def test_counted_cubes_each_of_and_bare_label_nouns(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # piles: one pile of a count of unnamed cubes, of "the orange cubes", on a goal patch; "pile four cubes" is one pile
+    ("Make a pile of four cubes in the front right.", ["pile(blue,green,red,yellow)@front_right"]),
+    ("Pile four cubes.", ["pile(blue,green,red,yellow)"]),  # had been three piles of six cubes: silently wrong
+    ("Make a pile of the orange cubes in the center of the table.", ["pile(orange,orange,orange)@center"]),
+    ("Make a heap of the three red cubes on the yellow patch.", ["on_patch(red,red,red,patch:yellow)", "pile(red,red,red)"]),
+    ("push the pile of red blocks into the blue patch", ["on_patch(red,red,patch:blue)"]),
+    # a tower's counted colours at its ends; a line's end "closest to the front"; "leftmost should be ..., then ..."
+    ("Build a tower of four: two green at the bottom and two pink on top.", ["stack(green,green,pink,pink)"]),
+    ("Make a line of red, white and blue from front to back, red closest to the front.",
+     ["line[front_to_back](red,white,blue)"]),
+    ("Leftmost should be the red cube, then blue, then yellow, all in one neat row.",
+     ["line[left_to_right](red,blue,yellow)"]),
+    ("The white cube shall stand left beside the gray cube.", ["left_of(white,gray)"]),
+    ("Set the white cube right next to the grey one.", ["next_to(gray,white)"]),  # "right" there is only emphasis
+])
+def test_piles_counted_ends_and_a_lines_first_cube(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_structure_too_wide_for_its_patch_is_refused():
+    with pytest.raises(ParseError, match="do not fit on one goal patch"):
+        parse("Make a row of three red cubes on the yellow patch.")
+
+
+def test_a_line_end_that_contradicts_its_direction_is_refused():
+    with pytest.raises(ParseError):
+        parse("Make a line of red, white and blue from front to back, blue closest to the front.")

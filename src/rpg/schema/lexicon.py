@@ -676,7 +676,17 @@ the blue cube to its left", "... on the right side and the green one beside it")
 one cube of the clause before (a region is no cube), so it is written as that cube."""
 
 _COLOR_WORD = "(?:" + "|".join(COLORS) + ")"
-PLACE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
+PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "red closest to the front" of a line: that end ("with red at the front"), which the line's roles read
+    (re.compile(rf"(?:,\s*|\s+with\s+)(?:the\s+)?({COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:is\s+|being\s+)?(?:closest|nearest)\s+to\s+"
+                r"(?:the\s+)?(front|back|left|right)(?:\s+(?:edge|side|end))?\b"), r", with \1 at the \2"),
+    # "leftmost should be the red cube, then blue, then yellow": the order from that side
+    (re.compile(rf"(?:^|(?<=[.;:]\s))(?:the\s+)?(left|right|front|back)(?:most)?(?:\s+(?:one|cube|block))?\s+(?:should\s+be|must\s+be|is|will\s+be"
+                rf"|goes|comes\s+first)\s*:?\s*(?=(?:the\s+)?(?:{COLOR_RE})\b[^.;]*\bthen\b)"),
+     lambda m: {"left": "from left to right: ", "right": "from right to left: ", "front": "from front to back: ",
+                "back": "from back to front: "}[m.group(1)]),
+    # "stand left beside the gray cube" (German "links neben"): on that side of it ("right next to" is only "next to")
+    (re.compile(rf"\b(left)\s+(?:beside|next\s+to|alongside)\s+(?=the\s+(?:{COLOR_RE})\b)"), r"to the \1 of "),
     # "well away from", "well behind": the degree adds nothing a qualitative relation could judge
     (re.compile(r"\bwell\s+(?=(?:away|apart|clear|behind|beyond|in\s+front|to\s+the\s+(?:left|right))\b)"), ""),
     # "between the yellow and (the) pink patches": each colour names a patch (yellow had been read as a cube)

@@ -1085,6 +1085,15 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
                 r"\s*,?\s+(?:and|with|then)\s+(?:then\s+)?(?:(?:put|place|add|stack|set)\s+)?(?:a|an|the|1)\s+"
                 rf"({COLOR_RE})\s+(?:block|cube|brick|one)\s+(?:on\s+top|at\s+the\s+top)(?:\s+of\s+(?:it|them|the\s+(?:stack|tower)))?\b"),
      lambda m: "build a tower from bottom to top: " + ", ".join([m.group(2)] * int(m.group(1)) + [m.group(3)]), True),
+    # "a tower of four: two green at the bottom and two pink on top": the counted colours from the bottom
+    (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|bricks|ones))?\s+(?:at|on|in)\s+the\s+(?:bottom|base)"
+                rf"\s*,?\s+(?:and\s+)?(?:then\s+)?(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|bricks|ones))?\s+(?:on\s+top(?:\s+of\s+them)?"
+                r"|at\s+the\s+top|above(?:\s+them)?)\b"),
+     lambda m: ": from bottom to top: " + ", ".join([m.group(2)] * int(m.group(1)) + [m.group(4)] * int(m.group(3))), True),
+    (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|bricks|ones))?\s+(?:on\s+top|at\s+the\s+top)"
+                rf"\s*,?\s+(?:and\s+)?(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|bricks|ones))?\s+(?:at|on|in)\s+the\s+(?:bottom|base)"
+                r"(?:\s+(?:below|under)\s+them)?\b"),
+     lambda m: ": from bottom to top: " + ", ".join([m.group(4)] * int(m.group(3)) + [m.group(2)] * int(m.group(1))), True),
     # "put one yellow cube on each of the two blue cubes": a two-cube tower on each of them
     (re.compile(rf"\b(?:put|place|set|stack|add)\s+(?:a|an|1)\s+({COLOR_RE})\s+(?:cube|block|brick)\s+(?:on\s+top\s+of|on|onto|atop)\s+"
                 rf"(?:each|every)\s+(?:one\s+)?of\s+(?:the\s+)?(\d+)\s+({COLOR_RE})\s+(?:cubes|blocks|bricks)\b"),

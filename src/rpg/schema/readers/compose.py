@@ -16,6 +16,7 @@ from rpg.domain import constants as C
 from rpg.domain.predicates import (
     AnchoredStack,
     InRegion,
+    OnPatch,
     Stack,
     UnorderedStack,
     describe_region,
@@ -33,6 +34,7 @@ from rpg.schema.reading import (
     NEW_STRUCTURE_BEFORE_RE,
     Features,
     ParseError,
+    canon_color,
     color_mentions,
     mark_regions,
 )
@@ -245,6 +247,50 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
     b.primitives += list(head.primitives)
     if head.reasoning != "spatial":
         b.reasoning = head.reasoning
+    return True
+
+
+ON_PATCH_PART_RE = re.compile(rf"^(?P<head>[^@]+?)\s+(?:on|onto|on\s+top\s+of|atop)\s+the\s+(?P<c>{COLOR_RE})\s+(?:goal\s+|target\s+)?patch"
+                              r"[\s.!]*$")
+"""A structure, then the goal patch it all stands on ("make a heap of the three red cubes on the
+yellow patch", "line up two blue cubes on the red patch")."""
+
+
+@reader(order=188)
+def recognize_structure_on_patch(f: Features, b: Builder) -> bool:
+    """A structure of several cubes standing wholly on one goal patch: the structure is read by
+    the whole front end (its own clause, which must name no place, patch, relation or starting
+    structure of its own), its layout moved over the patch, and every one of its cubes must stand
+    on the patch (a tower's base alone is another reader's: "build a tower ... on the yellow patch").
+
+    Raises:
+        ParseError: the structure's cubes do not fit on the patch.
+    """
+    m = ON_PATCH_PART_RE.match(f.text)
+    heads = _read_parts([m.group("head")]) if m else None
+    if heads is None:
+        return False
+    head = heads[0]
+    cubes = [a.name for a in head.assets if a.kind != "goal_patch"]
+    if (len(cubes) < 2 or len(cubes) != len(head.assets) or head.initial_state.structures
+            or any(isinstance(p, (InRegion, *STACK_KINDS)) or p.name in (*PAIRWISE_RELATIONS, "between")
+                   for p in head.goal_predicate().walk())):
+        return False
+    xyz = np.array([head.goal_layout[n].position for n in cubes], float)
+    half = np.array(C.PATCH_SIZE) / 2 + C.PATCH_XY_MARGIN
+    xy = xyz[:, :2] - xyz[:, :2].mean(axis=0)
+    if np.any(np.abs(xy) > half):
+        raise ParseError(f"the {len(cubes)} cubes of \"{f.original[:80]}\" do not fit on one goal patch "
+                         f"({C.PATCH_SIZE[0] * 100:.0f} cm square); use fewer cubes, or use --model")
+    patch = b.patch(canon_color(m.group("c")))
+    b.assets += [a.model_copy() for a in head.assets]
+    b._names.update(a.name for a in head.assets)
+    b.place_patch(patch, (0.0, 0.0))
+    b.place({n: Pose((float(x), float(y), float(z))) for n, (x, y), z in zip(cubes, xy, xyz[:, 2], strict=True)})
+    b.orientations.update(head.initial_state.orientations)
+    b.preds += head.goal_predicate().conjuncts() + [OnPatch(n, patch) for n in cubes]
+    b.summary += [head.goal_summary, f"all of it on {patch}"]
+    b.primitives += list(head.primitives)
     return True
 
 

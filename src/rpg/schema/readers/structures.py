@@ -468,8 +468,12 @@ def recognize_piles(f: Features, b: Builder) -> bool:
         by = "type"
     else:
         k = stated_count(f, "pile|bunch|group|cluster|heap", default=None)
+        several = (separate or f.has("piles", "heaps", "bunches", "clusters", "groups", "each", "per")
+                   or re.search(r"\bby\s+colou?rs?\b|\bother\b|\banother\b", f.text))
         if k == 1 or re.search(r"\b(?:a|one|single)\s+(?:single\s+)?(?:pile|heap|bunch|cluster|group)\b", f.text):
             return _one_pile(f, b)
+        if k is None and not several and _one_pile(f, b, strict=False):  # "pile four cubes": one pile of them
+            return True
         colors = list(dict.fromkeys(f.color_list())) or colors_for(k or 3, f, prefer=[])
         per = stated_count(f, default=None)
         per = max(2, per // len(colors)) if per else 3
@@ -497,22 +501,27 @@ def recognize_piles(f: Features, b: Builder) -> bool:
     return True
 
 
-def _one_pile(f: Features, b: Builder) -> bool:
+def _one_pile(f: Features, b: Builder, strict: bool = True) -> bool:
     """One pile of the cubes the text names ("a pile of four pink cubes", "one heap of the red,
-    green and blue blocks"): their colours and counts said, else refused (no cube invented).
+    green and blue blocks"), or of a count of cubes it does not name ("a pile of four cubes": the
+    pile judges their spread, never their colours); a colour said without its count is refused.
 
     Raises:
-        ParseError: the pile's cubes are not named by colour.
+        ParseError: the pile's cubes are not named by colour (``strict``; else False is returned).
     """
     groups = counted_groups(f)
-    colors = list(f.color_list())
+    colors = [c for i, c in f.colors if not re.match(r"[a-z]*\s+(?:goal\s+|target\s+)?patch", f.text[i:])]  # not a patch's
     n = stated_count(f, default=None)
     if groups:
         cubes = [c for k, c in groups for _ in range(k)]
-    elif len(set(colors)) == 1 and n:
-        cubes = colors[:1] * n
+    elif len(set(colors)) == 1 and (n or re.search(rf"\b(?:the|all)\s+(?:the\s+)?{colors[0]}\s+(?:cubes|blocks|bricks|ones)\b", f.text)):
+        cubes = colors[:1] * (n or 3)  # "pile up the red cubes": as many as a pile reads with its count unsaid (3)
     elif len(colors) >= 2 and len(set(colors)) == len(colors) and n in (None, len(colors)):
         cubes = colors
+    elif not colors and n and f.has("cubes", "blocks", "bricks", "boxes", "pieces", "objects"):
+        cubes = colors_for(n, f, prefer=[])  # "a pile of four cubes": any four, as "stack three blocks" takes any three
+    elif not strict:
+        return False  # not said as one pile: the piles reader reads it
     else:
         raise ParseError(f"\"{f.original[:80]}\" asks for one pile but does not say which cubes; name them "
                          "(e.g. \"a pile of three red cubes\")")
