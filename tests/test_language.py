@@ -2928,3 +2928,38 @@ def test_a_structure_too_wide_for_its_patch_is_refused():
 def test_a_line_end_that_contradicts_its_direction_is_refused():
     with pytest.raises(ParseError):
         parse("Make a line of red, white and blue from front to back, blue closest to the front.")
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a start said by "there's a tower of ... with X at the bottom", by "unstack the X-on-Y tower", and every cube sent
+    # to the table ("both cubes sit on the table")
+    ("There's a tower of blue, green and red with blue at the bottom. Take the red one off and set it on the table.",
+     ["on_table(red)", "start:stack(blue,green,red)"]),
+    ("There is a tower of blue, green and red with red at the bottom. Put the blue cube next to the green cube.",
+     ["next_to(blue,green)", "start:stack(red,green,blue)"]),
+    ("Unstack the yellow-on-white tower so both cubes sit on the table.", ["on_table(yellow)", "start:stack(white,yellow)"]),
+    ("Unstack the tower of green on yellow and set both cubes on the table.", ["on_table(green)", "start:stack(yellow,green)"]),
+    ("Initially red is on blue and green is on red. Put all the cubes on the table.",
+     ["on_table(green)", "on_table(red)", "start:stack(blue,red,green)"]),
+])
+def test_starts_said_by_a_tower_or_by_unstack(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_goal_after_a_start_is_never_read_with_the_start_as_the_goal():
+    # the start's "yellow is on white" had become the goal when the goal's words were not read: silently wrong
+    with pytest.raises(BadInput):
+        parse("Initially the yellow cube is on the white cube. Put every other cube somewhere.")
+    with pytest.raises(BadInput):  # a tower's end that is neither end of its list is no start rpg builds
+        parse("There is a tower of blue, green and red with green at the bottom. Put the blue cube on the table.")
+
+
+@pytest.mark.parametrize("text,why", [
+    ("Line up the gold, silver and red cubes from left to right.", "colour the palette does not have"),
+    ("Place the white cube anywhere but the left side.", "negation"),
+    ("Hey robot, what does a pyramid look like?", "question"),
+    ("Put the white cube on the red patch and on the blue patch at the same time.", "contradicts"),
+])
+def test_must_refuse_texts_are_refused_for_their_reason(text, why):
+    with pytest.raises(BadInput, match=why):
+        parse(text)

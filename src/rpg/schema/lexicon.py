@@ -176,6 +176,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "asks a question: a task is an instruction whose goal says where cubes end up; ask for the arrangement "
      "instead (e.g. \"put the red block on the blue block\")"),
     ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none)\b|n't\b"
+                 r"|\b(?:anywhere|everywhere|anything|any\s+place)\s+but\b"
                  r"|\b(?:don|doesn|didn|isn|aren|shouldn|mustn|won|wouldn)\s*'?\s*t\b"
                  r"|\bno\s+(?:\w+\s+){0,2}?(?:blocks?|cubes?|boxes|one|other|longer)\b",
      "is a negation: a task's goal says what must hold at the end, and rpg does not check that something is absent; "
@@ -677,6 +678,8 @@ one cube of the clause before (a region is no cube), so it is written as that cu
 
 _COLOR_WORD = "(?:" + "|".join(COLORS) + ")"
 PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "... at the same time", "simultaneously": every part of a goal is checked at once, at the end of the episode
+    (re.compile(r"\s*,?\s*\b(?:at\s+the\s+same\s+time|simultaneously|all\s+at\s+once)\b"), ""),
     # "red closest to the front" of a line: that end ("with red at the front"), which the line's roles read
     (re.compile(rf"(?:,\s*|\s+with\s+)(?:the\s+)?({COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:is\s+|being\s+)?(?:closest|nearest)\s+to\s+"
                 r"(?:the\s+)?(front|back|left|right)(?:\s+(?:edge|side|end))?\b"), r", with \1 at the \2"),
@@ -1023,7 +1026,7 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
                r"(?:(?:please\s+)?(?:tell|ask|instruct|command|get)\s+(?:the\s+)?(?:robot|arm|agent|policy)\s+to\s+"
                r"|(?:please\s+)?(?:have|let)\s+(?:the\s+)?(?:robot|arm|agent|policy)\s+(?=[a-z]+\s)"
                r"|(?:now\s+)?watch\s+(?:it|the\s+robot|the\s+arm|me)\s+(?=[a-z]+\s))"),
-    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:alexa|siri|hey\s+google|ok(?:ay)?\s+google)\s*,\s*"),
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:alexa|siri|hey\s+google|ok(?:ay)?\s+google|(?:hey|hi|hello|ok(?:ay)?)\s+(?:robot|bot))\s*,\s*"),
     # "Is necessary to make ..." (a Spanish "es necesario"), "it is required that ...": the task follows
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:it\s+)?(?:is|'s)\s+(?:necessary|required|needed|essential|mandatory)\s+(?:to|that)\s+"),
     # an annotator's caption of what an arm did ("The arm moved the green block ...", "the gripper stacked ... and then

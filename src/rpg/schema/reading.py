@@ -238,9 +238,11 @@ _DETERMINER_BEFORE = re.compile(r"\b(?:a|an|the|this|that|these|those|its|their|
                                 r"(?P<mods>(?:[a-z\-]+\s+){0,2})$")
 _PHRASE_END_AFTER = re.compile(r"\s*(?:$|[.,;:!?)(/]|(?:and|or|but|into|onto|on|in|to|with|from|off|at|of|that|which"
                                r"|so|then|down|up|over|under|by|for|near|next|inside|\d+)\b)")
-_COLOUR_BEFORE = re.compile(r"\s+(?:(?:coloured|colored|[a-z]+-?ish)\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?|patch(?:es)?"
+_COLOUR_BEFORE = re.compile(r"(?:\s*(?:,|\band\b|\bor\b)\s*(?:the\s+)?[a-z]+){0,4}"  # a list of colours first ("gold, silver and red")
+                            r"\s+(?:(?:coloured|colored|[a-z]+-?ish)\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?|patch(?:es)?"
                             r"|squares?|tiles?|pads?|mats?|targets?|objects?)\b")
-"""What follows a word that names a cube's or patch's colour ("mauve cube", "teal patch")."""
+"""What follows a word that names a cube's or patch's colour ("mauve cube", "teal patch", "the gold,
+silver and red cubes")."""
 _CLAUSE_START_BEFORE = re.compile(r"(?:^|[.,;:!?]\s*|\b(?:and|then|please|to|must|should)\s+"
                                   r"|\b(?:can|could|would|will)\s+you\s+)$")
 

@@ -242,11 +242,10 @@ def parse(instruction: str, _framed: bool = False) -> TaskSchema:
     if scene is not None and not scene.goal.strip(" ."):
         raise ParseError(f"\"{instruction[:80]}\" says how the cubes start but not where they must end up: a task's goal "
                          "is checked at the end of the episode; add it (e.g. \"... Put the red cube on the table.\")")
-    if scene is not None:
-        try:
-            return initial.attach(initial.on_table_goal(scene) or parse(scene.goal), scene, instruction)
-        except BadInput:
-            pass  # read as written (and refused for its starting-state words)
+    if scene is not None:  # the goal after a start it read is refused as the goal's words are; read as written, the
+        # start's "X is on Y" had become the goal ("Initially yellow is on white. Put both cubes on the table." had
+        # compiled to yellow on white: silently wrong)
+        return initial.attach(initial.on_table_goal(scene) or parse(scene.goal), scene, instruction)
     f = features(instruction)
     first_gap: ParseError | None = None
     for entry in registry.ordered():

@@ -34,7 +34,7 @@ START_SENTENCE_RE = re.compile(
     r"|(?:scene\s+)?init(?:ial)?(?:\s+(?:state|scene|config(?:uration)?))?\s*:"
     r"|(?:setup|start|before|init)\s*:|(?:the\s+)?(?:scene|episode|table|task)\s+(?:starts|begins)\s+(?:with|as)"
     r"|(?:it\s+)?(?:starts|begins)\s+(?:out\s+)?with(?=\s+(?:the|a|an|one)\s)"
-    r"|we\s+start\s+(?:with|from)|(?:the\s+)?(?:(?:letter|digit|number|colou?red)\s+)?(?:cubes|blocks)\s+start(?:\s+out)?(?:\s+as|\s+in|\s*:)?)"
+    r"|there(?:'s|\s+is)\s+(?=(?:an?|one)\s+(?:stack|tower|column)\s+of\b)|we\s+start\s+(?:with|from)|(?:the\s+)?(?:(?:letter|digit|number|colou?red)\s+)?(?:cubes|blocks)\s+start(?:\s+out)?(?:\s+as|\s+in|\s*:)?)"
     r"\s*[:,\-\u2014]?\s*")
 """Words that open a statement of the initial scene ("Initially, ...", "At the start, ...",
 "Initial state: ...", "Setup: ...", "The scene starts with ...")."""
@@ -55,9 +55,10 @@ _REL_ON = r"(?:(?:is|sits|lies|rests|stands|starts|begins)\s+(?:initially\s+|out
 _REL_UNDER = r"(?:is\s+)?(?:under(?:neath)?|below|beneath)"
 _TOWER_RE = re.compile(
     rf"(?i)^(?:an?\s+|one\s+)?(?:stack|tower|column)\s+(?:of\s+)?(?P<list>(?:(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?))?"
-    rf"(?:\s*,\s*(?:and\s+)?|\s+and\s+|\s+then\s+|\s*$|(?=\s*\(|\s+(?:from|bottom|top))))+)"
+    rf"(?:\s*,\s*(?:and\s+)?(?!with\b)|\s+and\s+|\s+then\s+|\s*$|(?=\s*\(|\s+(?:from|bottom|top)|\s*,?\s*with\b)))+)"
     r"\s*\(?\s*(?:from\s+)?(?:the\s+)?(?P<from>bottom|top)?(?:\s+(?:to|up\s+to|down\s+to)\s+(?:the\s+)?(?:top|bottom)|\s+up|\s+down"
-    r"|\s+first)?\s*\)?$")
+    r"|\s+first)?\s*\)?"
+    rf"(?:\s*,?\s*with\s+(?:the\s+)?(?P<end_c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on)\s+(?:the\s+)?(?P<end>bottom|base|top))?$")
 _CHAIN_RE = re.compile(rf"(?i)^{_CUBE.format(g='a')}(?P<links>(?:\s+(?:{_REL_ON}|{_REL_UNDER})\s+(?:the\s+)?(?:(?:letter|digit|number)\s+)?"
                        rf"(?:block\s+|cube\s+)?{_NAME}(?:\s+(?:cube|block|one))?)+)$")
 _IDLE_FACT_RE = re.compile(
@@ -82,7 +83,8 @@ _TOWER_IN_RE = re.compile(
     rf"(?i)(?:\ban?\s+|\bone\s+)?\b(?:stack|tower|column)\s+(?:of\s+)?(?:(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?))?"
     rf"(?:\s*,\s*(?:and\s+)?|\s+and\s+|\s+then\s+)){{1,}}(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?))?"
     r"(?:\s*\(?\s*(?:from\s+)?(?:the\s+)?(?:bottom|top)(?:\s+(?:to|up\s+to|down\s+to)\s+(?:the\s+)?(?:top|bottom)|\s+up"
-    r"|\s+down|\s+first)?\s*\)?)?")
+    r"|\s+down|\s+first)?\s*\)?)?"
+    rf"(?:\s*,?\s*with\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on)\s+(?:the\s+)?(?:bottom|base|top)\b)?")
 """A tower listed inside a statement of the start ("a tower of red, green, blue (bottom to top)"):
 read whole before the statement is split into its facts at its commas."""
 
@@ -115,6 +117,11 @@ def _facts(content: str) -> list[tuple[str, ...]] | None:
             colors = [_canon(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", tower.group("list"), re.I)]
             if len(colors) < 2:
                 return None
+            if tower.group("end_c"):  # "a tower of blue, green and red with blue at the bottom": the list's end said
+                end, at_bottom = _canon(tower.group("end_c").lower()), tower.group("end") != "top"
+                if end not in (colors[0], colors[-1]) or tower.group("from"):
+                    return None
+                colors = colors if (end == colors[0]) == at_bottom else colors[::-1]
             stacks.append(tuple(colors[::-1] if tower.group("from") == "top" else colors))
             continue
         chain = _CHAIN_RE.match(fact)
@@ -162,6 +169,20 @@ def _merged(stacks: list[tuple[str, ...]]) -> list[tuple[str, ...]] | None:
     return [tuple(t) for t in towers] if len(colors) == len(set(colors)) else None
 
 
+_TAKE_OFF_RE = re.compile(rf"(?i)^\s*(?:then\s+)?take\s+(the\s+(?:{COLOR_RE}|(?-i:[A-Z])|\d)(?:\s+(?:one|cube|block))?)\s+off"
+                         r"(?:\s+(?:of\s+)?(?:the\s+)?(?:tower|stack|top))?\s*,?\s*(?:and\s+)?(?:then\s+)?(?:set|put|place|lay)\s+it"
+                         r"\s+(?:down\s+)?(?:on|onto)\s+the\s+table")
+"""A cube taken off the start's tower and set on the table ("Take the red one off and set it on the
+table"): the cube sent to the table."""
+
+
+_UNSTACK_RE = re.compile(
+    rf"(?i)^\s*(?:please\s+)?unstack\s+(?:the\s+)?(?:(?:tower|stack)\s+(?:of\s+)?(?P<a>(?:{COLOR_RE})(?:\s+on(?:\s+top\s+of)?\s+(?:{COLOR_RE}))+)"
+    rf"|(?P<b>(?:{COLOR_RE})(?:-on-(?:{COLOR_RE}))+)\s+(?:tower|stack))\s*,?\s*(?:so\s+(?:that\s+)?|and\s+(?:then\s+)?)(?P<goal>.+)$")
+"""The start said by the verb that undoes it ("Unstack the yellow-on-white tower so both cubes sit on
+the table"): the tower named is rho_0's stack, what follows the goal."""
+
+
 def split(instruction: str) -> InitialScene | None:
     """The initial scene and the goal of ``instruction``, or None when it states no start this
     module reads (see the module docstring)."""
@@ -169,6 +190,10 @@ def split(instruction: str) -> InitialScene | None:
         instruction = pattern.sub(written, instruction)
     instruction = re.sub(r"^\s*[A-Za-z][\w\-]*(?:\s+[\w\-]+){0,3}?\s*(?:\([^)]{0,30}\))?\s*:\s*(?=\S)(?=.*\b(?:starts|initially)\b)", "",
                          instruction.strip())  # "# goal (unstack): the pink cube starts ...": its label
+    unstack = _UNSTACK_RE.match(instruction.strip())
+    if unstack:
+        stacks = _facts((unstack.group("a") or unstack.group("b")).replace("-", " "))
+        return InitialScene(tuple(stacks), unstack.group("goal")) if stacks else None
     clause = STARTS_CLAUSE_RE.match(instruction.strip())
     if clause:
         stacks = _facts(clause.group("fact"))
@@ -180,6 +205,7 @@ def split(instruction: str) -> InitialScene | None:
         return InitialScene(tuple(stacks), GOAL_OPENER_RE.sub("", rest, count=1)) if stacks else None
     sentences = [s for s in re.split(r"(?<=[.;!?])\s+|\s*(?=\b(?:[Gg]oal|[Tt]arget)\s*:)", instruction.strip()) if s.strip()]
     start, goal = [], []
+    sentences = [_TAKE_OFF_RE.sub(r"put \1 on the table", s) for s in sentences]
     for s in sentences:
         m = START_SENTENCE_RE.match(s)
         if m and not goal:
@@ -196,23 +222,34 @@ def split(instruction: str) -> InitialScene | None:
     return InitialScene(tuple(stacks), " ".join(goal).strip())
 
 
+ALL_ON_TABLE_GOAL_RE = re.compile(
+    r"(?i)^\s*(?:(?:put|place|set|lay|leave|get)\s+)?(?:both|all|every|the\s+(?:two|three|four|five|\d+))\s+(?:of\s+)?(?:the\s+)?"
+    r"(?:cubes|blocks|ones|of\s+them|them)?\s*(?:(?:must|should|have\s+to|need\s+to|will)\s+)?(?:(?:be|end\s+up|sit|stand|lie|are"
+    r"|go|stay)\s+)?(?:(?:flat|back|down)\s+)?(?:on|onto)\s+the\s+table\s*[.!]?$")
+"""A goal that sends every cube the start stacks to the table ("both cubes sit on the table",
+"put all the blocks on the table"): each cube a stack holds above another on the table."""
+
+
 def on_table_goal(scene: InitialScene) -> TaskSchema | None:
-    """The task whose goal only sends a cube the start stacks to the table (:data:`ON_TABLE_GOAL_RE`);
-    None when the goal is not of that form or the cube starts on the table."""
+    """The task whose goal only sends a cube the start stacks to the table (:data:`ON_TABLE_GOAL_RE`),
+    or every such cube (:data:`ALL_ON_TABLE_GOAL_RE`); None when the goal is not of that form or
+    the cube starts on the table."""
     from rpg.domain.predicates import OnTable
 
-    m = ON_TABLE_GOAL_RE.match(scene.goal)
-    if m is None:
+    every = ALL_ON_TABLE_GOAL_RE.match(scene.goal)
+    m = None if every else ON_TABLE_GOAL_RE.match(scene.goal)
+    if m is None and every is None:
         return None
-    color = canon_color(m.group("c"))
-    if not any(color in s[1:] for s in scene.stacks):
+    colors = [c for s in scene.stacks for c in s[1:]] if every else [canon_color(m.group("c"))]
+    if not colors or not all(any(c in s[1:] for s in scene.stacks) for c in colors):
         return None  # it starts on the table: the goal would hold before anything moved
     b = Builder(scene.goal)
-    cube = b.cube(color)
-    b.place(stack_layout([cube], b.unit_centers(1)[0]))
-    b.preds.append(OnTable(cube))
+    for c, xy in zip(colors, b.unit_centers(len(colors)), strict=True):
+        cube = b.cube(c)
+        b.place(stack_layout([cube], xy))
+        b.preds.append(OnTable(cube))
+        b.summary.append(f"{cube} on the table")
     b.primitives += ["place"]
-    b.summary.append(f"{cube} on the table")
     return b.schema(task_slug(scene.goal))
 
 
