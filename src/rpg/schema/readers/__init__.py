@@ -29,7 +29,6 @@ from rpg.domain.predicates import (
     describe_region,
     region_boxes,
 )
-from rpg.errors import BadInput
 from rpg.schema import citations, lexicon
 from rpg.schema.accounting import unaccounted
 from rpg.schema.builder import Builder, make_paraphrases
