@@ -1206,6 +1206,22 @@ def test_taller_then_an_added_cube_keeps_the_tower(tmp_path):  # steer_stranger1
         == ("extend", ["stack(blue,red,yellow)"])
 
 
+@pytest.mark.parametrize("base,edits,expected", [
+    # steer_stranger10's voices: a pair swapped by its place, a sort said end to end, a typo before a count, a verdict
+    ("Build a tower: green at the bottom, then yellow, then purple on top", ["swap the first two"],
+     ("modify", ["stack(yellow,green,purple)"])),
+    ("Put four cubes in a row from left to right: yellow, yellow, blue, blue", ["swap the middle two"],
+     ("modify", ["line[left_to_right](yellow,blue,yellow,blue)"])),
+    ("Arrange digit cubes 5, 2, 8 and 1 from smallest to largest, left to right", ["largest to smallest instead"],
+     ("modify", ["line[left_to_right](8,5,2,1)"])),
+    ("Build a tower of five cubes, all orange", ["mkae it shorter, 3"], ("tweak", ["stack(orange,orange,orange)"])),
+    ("Put the red cube next to the blue cube", ["I think green would be better than red"], ("tweak", ["next_to(blue,green)"])),
+    ("Make a circle of six red cubes", ["bump it to 8"], ("tweak", ["circle(red,red,red,red,red,red,red,red)"])),
+])
+def test_steer_stranger10_voices(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
 def test_a_version_reference_with_an_unread_change_is_refused(tmp_path):
     fam = Family(create_family(compile_instruction("Stack a cyan cube on an orange cube", tmp_path, name="fam").path).path)
     steer(fam.path, "make the top one white")

@@ -1504,6 +1504,15 @@ INTENSIFIER_RIGHT_RE = re.compile(r"(?i)\b(?:right|directly|just)\s+(?=next\s+to
 """"Right" that only stresses a place ("right next to the blue block"): not the side "right"."""
 
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
+    # "bump it to 8", "bump it up to 8 cubes": that count
+    (re.compile(rf"(?i)\bbump\s+(?:it|that|this|them)\s+(?:up\s+)?to\s+(\d+|{COUNT_WORD_RE})\b"), r"make it \1"),
+    # "I think green would be better than red", "green would look better than red": one colour for the other
+    (re.compile(rf"(?i)^\s*(?:(?:i|we)\s+(?:think|guess|feel|reckon)\s+)?(?:that\s+)?(?:maybe\s+)?(?:an?\s+|the\s+)?({COLOR_RE})"
+                rf"(?:\s+(?:one|cube|block))?\s+(?:would|will|might|could)\s+(?:be|look|work)\s+better\s+than\s+(?:the\s+)?({COLOR_RE})"
+                r"(?:\s+(?:one|cube|block))?\s*[.!]?\s*$"), r"use \1 instead of \2"),
+    # "add two more greens on top", "make it taller with two more blues": that many more cubes of the colour
+    (re.compile(rf"(?i)\b(?:make\s+it\s+(?:taller|higher|longer)\s+(?:with|by\s+adding|by)\s+)?(\d+|{COUNT_WORD_RE})\s+more\s+({COLOR_RE})s\b"),
+     r"add \1 more \2 blocks"),
     (re.compile(r"(?i)\b(thank\s+you|thanks)\s+(?:so|very)\s+much\b"), r"\1"),  # thanks, not a quantity
     # a greeting and thanks for what was done: nothing to change ("this" there is the task, not a cube)
     (re.compile(r"(?i)^\s*(?:hello|hi|hey)(?:\s+there)?\s*[,!.]\s*"), ""),

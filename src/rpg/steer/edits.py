@@ -185,16 +185,17 @@ def normalize_edit(text: str) -> str:
     return " ".join(_corrected(w, known) for w in t.split())
 
 
-def _corrected(word: str, known: set[str]) -> str:
+def _corrected(word: str, known: set[str], fuzzy: bool = True) -> str:
     """A typo of a known word corrected ("shoud" -> "should"): only a word of 4 letters or
-    more that is no English word, within the parser's own distance."""
+    more that is no English word, within the parser's own distance; with ``fuzzy`` False, only
+    two letters swapped ("mkae" -> "make")."""
     core = word.strip(".,;:!?'")
     if len(core) < 3 or not core.isalpha() or core in known or is_dictionary_word(core):
         return word
     swapped = sorted({core[:i] + core[i + 1] + core[i] + core[i + 2:] for i in range(len(core) - 1)} & known - {core})
     if len(swapped) == 1:  # two letters swapped ("mkae" -> "make"), as the parser reads them
         return word.replace(core, swapped[0])
-    if len(core) < 4:
+    if len(core) < 4 or not fuzzy:
         return word
     from rapidfuzz import fuzz, process
 
@@ -412,10 +413,13 @@ def read_ops(t: str) -> list[Op]:
     elif re.search(r"\bnumeric(?:al)?(?:ly)?\b|\b(?:increasing|ascending|decreasing|descending) order\b", t):
         ops.append(Op("ordering", {"key": "number", "descending": bool(re.search(r"\b(?:decreasing|descending|reverse)\b", t))}))
     elif re.search(r"\b(?:ascending|descending|increasing|decreasing)\b|\b(?:largest|biggest|highest|smallest|lowest)\s+(?:one\s+)?first\b"
-                   r"|\b(?:high|low)(?:est)?\s+to\s+(?:low|high)(?:est)?\b", t):
-        # "descending now", "largest first": the order of the task's own labels (letters or digits)
+                   r"|\b(?:high|low)(?:est)?\s+to\s+(?:low|high)(?:est)?\b"
+                   r"|\b(?:largest|biggest|greatest|smallest)\s+to\s+(?:the\s+)?(?:smallest|largest|biggest|greatest)\b", t):
+        # "descending now", "largest first", "largest to smallest instead": the order of the task's own labels
         ops.append(Op("ordering", {"key": "auto", "descending": bool(re.search(
-            r"\b(?:decreasing|descending|largest|biggest|highest|high(?:est)?\s+to\s+low)\b", t))}))
+            r"\b(?:decreasing|descending|largest|biggest|highest|greatest|high(?:est)?\s+to\s+low)\b"
+            r"(?!\s+(?:one\s+)?last\b)", re.sub(r"\b(?:smallest|lowest)\s+to\s+(?:the\s+)?(?:largest|biggest|greatest|highest)\b",
+                                                   "ascending", t)))}))
     elif re.search(r"\b(?:sort|order|arrange|group)\w*\s+(?:them\s+|it\s+)?by\s+(?:different\s+|their\s+)?colou?rs?\b|\bcolou?r gradient\b|\brainbow\b|\b(?:each|every)\s+(?:row|layer|level)\b[^.;]*\bdifferent colou?r", t):
         ops.append(Op("ordering", {"key": "color", "descending": False}))
     if mats and not reverse and not ncolors:
@@ -497,6 +501,12 @@ def read_ops(t: str) -> list[Op]:
     if kept:  # "keep the tower, and ...": the reference must be that structure
         ops.append(Op("keep", {"structure": structure_of_word(kept.group(1))}))
     swap = re.search(r"\bswap\s+(?:the\s+)?(?P<a>[a-z0-9' ]+?)\s+(?:block\s+|cube\s+)?and\s+(?:the\s+)?(?P<b>[a-z0-9' ]+?)(?:\s+(?:blocks?|cubes?))?(?:\s*$|[;,.])", t)
+    pair = re.search(r"\b(?:swap|switch|exchange|flip|trade)\s+(?:the\s+)?(?:places\s+of\s+the\s+)?(first|bottom|lowest|top|last|highest|middle"
+                     r"|left|leftmost|right|rightmost)\s+(?:two|2)(?:\s+(?:ones|cubes|blocks|letters|digits))?\b", t)
+    if pair and not reverse:  # "swap the first two", "swap the top two", "swap the middle two": a pair by its place
+        where = {"lowest": "bottom", "highest": "top", "last": "top", "leftmost": "left", "rightmost": "right"}.get(pair.group(1), pair.group(1))
+        ops.append(Op("swap", {"a": {"pair": where, "at": 0, "n": 2}, "b": {"pair": where, "at": 1, "n": 2}}))
+        swap = None
     if swap and _selector(swap.group("a")) and _selector(swap.group("b")) and not reverse:
         ops.append(Op("swap", {"a": _selector(swap.group("a")), "b": _selector(swap.group("b"))}))
     elif re.search(r"\b(?:swap|switch|exchange|flip)\s+(?:the|their|its)\s+(?:2\s+)?colou?rs\b", t) and not reverse:
@@ -681,6 +691,8 @@ def interpret(edit: str) -> EditPlan:
     edit = INTENSIFIER_RIGHT_RE.sub("", EDIT_INTERJECTION_RE.sub("", edit)) or edit  # "no wait, put it right next to ..."
     edit = TYPO_RE.sub(lambda m: TYPOS[m.group(0).lower()], edit)  # "put a yelow one ontop": the words meant
     edit = POLITE_CONDITION_RE.sub(" ", edit).strip() or edit  # "make the outer two white, if you would": no condition
+    known = VOCAB | IGNORABLE | IGNORABLE_MORE | set(COLOR_RE.split("|"))  # "mkae it shorter, 3": the rewrites see "make"
+    edit = " ".join(_corrected(w, known, fuzzy=False) if w.islower() else w for w in edit.split())
     for pattern, replacement in EDIT_REWRITES:
         edit = pattern.sub(replacement, edit)
     count = EDIT_COUNT_ALONE_RE.fullmatch(edit)
@@ -803,6 +815,23 @@ def _indices(spec: TaskSpec, sel: dict, anchors: frozenset[str] = frozenset()) -
         raise SteerError(f"the {spec.structure} has cubes of {len(set(spec.colors()))} colours; say which to change")
     if sel.get("all"):
         return list(range(n))
+    if "pair" in sel:  # one of two neighbouring cubes named by where the pair stands ("the top two", "the middle two")
+        if not _orders_cubes(spec) or n < 3:
+            raise SteerError(f"the {sel['pair']} two of a {spec.structure} of {n} cubes"
+                             + ("" if _orders_cubes(spec) else " whose goal gives no cube a place") + " name no pair; name them by colour")
+        if sel["pair"] in ("left", "right"):
+            if spec.direction not in ("left_to_right", "right_to_left") or spec.structure in ANCHORED_KINDS:
+                raise SteerError(f"the {sel['pair']} two of a {spec.structure} whose goal runs no way left to right name no "
+                                 "cubes; name them by colour")
+            first = (sel["pair"] == "left") == (spec.direction == "left_to_right")
+            start = 0 if first else n - 2
+        elif sel["pair"] == "middle":
+            if n % 2:
+                raise SteerError(f"a {spec.structure} of {n} cubes has no middle two; name them by colour")
+            start = n // 2 - 1
+        else:
+            start = 0 if sel["pair"] in ("first", "bottom") else n - 2
+        return [start + sel["at"]]
     if sel.get("end") in ("left", "right"):  # an end of a row said by its side: the row's own first or last cubes
         if spec.direction not in ("left_to_right", "right_to_left") or spec.structure in ANCHORED_KINDS:
             raise SteerError(f"the {sel['end']} {sel['n']} of a {spec.structure} whose goal runs no way left to right name no "
