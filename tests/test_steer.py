@@ -1217,9 +1217,20 @@ def test_taller_then_an_added_cube_keeps_the_tower(tmp_path):  # steer_stranger1
     ("Build a tower of five cubes, all orange", ["mkae it shorter, 3"], ("tweak", ["stack(orange,orange,orange)"])),
     ("Put the red cube next to the blue cube", ["I think green would be better than red"], ("tweak", ["next_to(blue,green)"])),
     ("Make a circle of six red cubes", ["bump it to 8"], ("tweak", ["circle(red,red,red,red,red,red,red,red)"])),
+    ("Put the orange cube on the green patch", ["try a purple cube instead of the orange", "also put a red cube on that same patch"],
+     ("extend", ["on_patch(purple,red,patch:green)"])),
+    ("Make a row of red, white and blue cubes, left to right", ["ok then just a green cube at the right end"],
+     ("extend", ["line[left_to_right](red,white,blue,green)"])),
+    ("Put a red cube in the middle of the table", ["move it to the back"], ("modify", ["in_region(red,back)"])),
 ])
 def test_steer_stranger10_voices(tmp_path, base, edits, expected):
     assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+def test_two_cubes_named_by_place_in_one_recolour_are_refused(tmp_path):  # the bottom one had been dropped: silently wrong
+    fam = Family(create_family(compile_instruction("Stack red, green and blue, bottom to top", tmp_path, name="fam").path).path)
+    with pytest.raises(SteerError, match="several cubes"):
+        steer(fam.path, "make the top one and the bottom one blue")
 
 
 def test_a_version_reference_with_an_unread_change_is_refused(tmp_path):

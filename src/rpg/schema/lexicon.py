@@ -1504,6 +1504,9 @@ INTENSIFIER_RIGHT_RE = re.compile(r"(?i)\b(?:right|directly|just)\s+(?=next\s+to
 """"Right" that only stresses a place ("right next to the blue block"): not the side "right"."""
 
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
+    # "ok then just a green cube at the right end": a cube added at that end
+    (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|fine|alright)\s*,?\s*)?(?:then\s+)?(?:just\s+)?(?:a|an|one)\s+({COLOR_RE})\s+(?:cube|block)\s+"
+                r"(?:at|on)\s+the\s+(left|right|top|bottom|front|back)(\s+end)?\s*(?:then|instead)?\s*[.!]?\s*$"), r"add a \1 cube at the \2\3"),
     # "bump it to 8", "bump it up to 8 cubes": that count
     (re.compile(rf"(?i)\bbump\s+(?:it|that|this|them)\s+(?:up\s+)?to\s+(\d+|{COUNT_WORD_RE})\b"), r"make it \1"),
     # "I think green would be better than red", "green would look better than red": one colour for the other
@@ -1693,7 +1696,7 @@ SAME_CUBES_RE = re.compile(r"\b(?:the\s+)?(?:same|these|those|the)\s+(?:\d+\s+)?
                            r"|\b(?:them|all\s+of\s+them)\b", re.IGNORECASE)
 """Words of a whole-task edit that keep the task's cubes ("same blocks, but make two towers of four")."""
 
-SAME_PATCH_RE = re.compile(r"(?i)\b(?:the\s+)?same\s+(?:goal\s+)?(?:patch|pad|mat|area|spot)\b|\b(?:that|this)\s+(?:goal\s+)?patch\b")
+SAME_PATCH_RE = re.compile(r"(?i)\b(?:(?:the|that|this)\s+)?same\s+(?:goal\s+)?(?:patch|pad|mat|area|spot)\b|\b(?:that|this)\s+(?:goal\s+)?patch\b")
 """An edit's "the same patch": the task's one patch."""
 
 EDIT_INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (

@@ -1225,9 +1225,11 @@ def explicit_labels(f: Features) -> list[str]:
     m = m if m and "," in m.group(2) else None  # "1, 2, 3 and 4", "A, B, and C"; "A and B and C" is the next rule's
     if not m and f.has("letter", "letters", "number", "numbers", "digit", "digits", "label", "labels", "faces"):
         m = re.search(r"\b([A-Z0-9])((?:(?:\s*,\s*|\s+and\s+|\s*,\s*and\s+)[A-Z0-9]){1,})\b", f.original)
-    if not m and (f.has("letter", "letters", "number", "numbers", "digit", "digits", "label", "labels")
-                  or SORT_ASKED_RE.search(f.text) or f.has("line", "row", "spell", "stack", "tower")):
-        m = re.search(r"(?<![\w-])([A-Z0-9])((?:\s+[A-Z0-9]){2,})(?![\w-])", f.original)  # "digit cubes 4 2 1 3", "line up A B C"
+    if not m and f.has("letter", "letters", "number", "numbers", "digit", "digits", "label", "labels"):
+        m = re.search(r"(?<![\w-])([A-Z0-9])((?:\s+[A-Z0-9]){2,})(?![\w-])", f.original)  # "digit cubes 4 2 1 3"
+    if not m and (SORT_ASKED_RE.search(f.text) or f.has("line", "row", "spell", "stack", "tower")):
+        m = re.search(r"(?<![\w-])([A-Z])((?:\s+[A-Z]){2,})(?![\w-])", f.original)  # "line up A B C": capitals are letters
+        # (bare digits stay unread: "line 1 2 3" may be a count as well as the digit cubes)
     if m:
         return [m.group(1)] + re.findall(r"[A-Z0-9]", m.group(2))
     r = re.search(r"\b([A-Z]|\d)\s+(?:down\s+|up\s+)?(?:to|through|thru)\s+([A-Z]|\d)\b", f.original)

@@ -291,7 +291,9 @@ def _selector(text: str) -> dict | None:
         return {"end": sides.group(1) or sides.group(4) or sides.group(6), "n": int(sides.group(2) or sides.group(3) or sides.group(5))}
     nth = re.search(r"\b(?:(\d+)(?:st|nd|rd|th)|(second|third|fourth|fifth|sixth))\b(?:\s+(?:one|block|cube))?"
                     r"(?:\s+from\s+the\s+(bottom|top|left|right|front|back))?", text)
-    if len(re.findall(r"\b(?:\d+(?:st|nd|rd|th)|first|second|third|fourth|fifth|sixth|last)\b", text)) > 1:
+    places = re.sub(r"\bfrom\s+the\s+(?:top|bottom|left|right)\b", " ", text)  # "the 2nd from the bottom": one place
+    if len(re.findall(r"\b(?:\d+(?:st|nd|rd|th)|first|second|third|fourth|fifth|sixth|last|top|bottom|base|middle|lowest|highest)\b",
+                      places)) > 1:  # "the second and third from the bottom", "the top one and the bottom one"
         raise SteerError(f"'{text}' names several cubes by their places; change one cube per edit "
                          "(e.g. \"make the 2nd from the bottom white\")")
     if nth and not (nth.group(1) or nth.group(3)):
@@ -520,7 +522,7 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("recolor", {"select": {"color": canon_color(instead.group("old"))}, "to": {"color": canon_color(instead.group("new"))}}))
     repl = None if instead or swap else re.search(r"\b(?:replace|substitute|swap)\s+(?:the\s+)?(?P<old>.+?)\s+(?:with|for|by)\s+(?:an?\s+|the\s+)?(?P<new>.+)", t) or \
         re.search(r"\b(?:change|turn|make|paint|recolou?r|colou?r)\s+(?:the\s+)?(?P<old>.+?)\s+(?:to|into)\s+(?:an?\s+|be\s+)?(?P<new>.+)", t) or \
-        re.search(rf"\b(?:make|paint)\s+(?:the\s+)?(?P<old>(?:(?!\band\b|\badd\b|\bput\b)[^,;.])+?)\s+(?P<new>(?:{COLOR_RE}))\b", t)
+        re.search(rf"\b(?:make|paint)\s+(?:the\s+)?(?P<old>(?:(?!\band\s+(?:add|put|place|stack|make)\b|\badd\b|\bput\b)[^,;.])+?)\s+(?P<new>(?:{COLOR_RE}))\b", t)
     # (the cubes made a colour are said within one clause: "make it taller, add a yellow one" recolours nothing)
     repl = repl or re.search(rf"(?P<old>\b(?:the|both|all|each|every|it|they|them|\d+\s+of)\b[a-z0-9' ]*?)\s+(?:to\s+)?{EDIT_SHOULD_BE_RE}"
                              rf"\s+(?:an?\s+)?(?P<new>(?:{COLOR_RE})\b|(?:letter|digit)\s+[a-z0-9]\b)", t) or \

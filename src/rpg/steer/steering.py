@@ -28,6 +28,7 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from rpg.artifact import ArtifactError, load_artifact
 from rpg.compiler import CompileResult, build
+from rpg.domain.predicates import describe_region
 from rpg.errors import BadInput
 from rpg.schema.builtin import parse
 from rpg.schema.edits import recolor
@@ -312,6 +313,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         return schema, instruction, "pivot"
     if ref_spec is None and all(o.op == "add" for o in plan.ops):
         return _addition(plan, reference, ref_schema)  # "also stack a white block on the cyan one": a clause of its own
+    moved = _moved_to_region(plan, ref_schema)
+    if moved is not None:  # "move it to the back" of cubes said only to stand in one region: that region instead
+        return moved, moved.instruction, "modify"
     if ref_spec is None:
         raise SteerError(f"v{reference} ({ref_schema.goal_summary}) is not a structure the builtin steering edits in place; "
                          "state the whole new task in the edit, or use --model")
@@ -432,6 +436,23 @@ def _refuse_one_of_several(plan, ref_schema) -> None:
                              f"\"the top one\"), or name them all (\"the {color} cubes\")")
 
 
+def _moved_to_region(plan, ref_schema: TaskSchema) -> TaskSchema | None:
+    """The task whose cubes all stand in one region (and nothing else), moved to the region the
+    edit's one ``region`` op names ("Put a red cube in the middle of the table" + "move it to the
+    back"); None for any other task or edit."""
+    goal = ref_schema.goal_predicate().conjuncts()
+    cubes = [a for a in ref_schema.assets if a.kind != "goal_patch"]
+    if (len(plan.ops) != 1 or plan.ops[0].op != "region" or len(cubes) != len(ref_schema.assets) or not goal
+            or any(p.name != "in_region" for p in goal) or len({p.region for p in goal}) != 1
+            or len(goal) != len(cubes) or not all(a.kind == "colored_cube" for a in cubes)):
+        return None
+    names = " and ".join(f"the {a.color} cube" for a in cubes)
+    try:
+        return parse(f"Put {names} in {describe_region(plan.ops[0].params['region'])} of the table.")
+    except BadInput as exc:
+        raise SteerError(str(exc).splitlines()[0]) from None
+
+
 def _refuse_invented_patch(edit: str, ref: TaskSchema, schema: TaskSchema) -> None:
     """Refuse a whole-task edit that says "the patch" of a task that has one, read as a patch of a
     colour nobody named ("put the blue block next to the patch instead" of the yellow patch).
@@ -514,7 +535,7 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
     clause = addition_clause(plan.text)
     cubes = [a for a in ref_schema.assets if a.kind != "goal_patch"]
     if clause is None and len(cubes) == 1 and re.search(r"(?i)\b(?:next\s+to|beside|behind|in\s+front\s+of|on(?:to)?|under|"
-                                                          r"(?:left|right)\s+of|near)\s+it\b", plan.text):
+                                                          r"(?:left|right)\s+of|near|on\s+top\s+of|atop|above|below)\s+it\b", plan.text):
         one = f"the {cubes[0].color} block" if cubes[0].color else f"the {cubes[0].label} block"  # the task's one cube
         clause = addition_clause(re.sub(r"(?i)\bit\b", one, plan.text))
     action = NO_GOAL_RE.search(plan.text.lower())

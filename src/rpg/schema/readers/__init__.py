@@ -29,6 +29,7 @@ from rpg.domain.predicates import (
     describe_region,
     region_boxes,
 )
+from rpg.errors import BadInput
 from rpg.schema import citations, lexicon
 from rpg.schema.accounting import unaccounted
 from rpg.schema.builder import Builder, make_paraphrases
@@ -241,10 +242,22 @@ def parse(instruction: str, _framed: bool = False) -> TaskSchema:
     if scene is not None and not scene.goal.strip(" ."):
         raise ParseError(f"\"{instruction[:80]}\" says how the cubes start but not where they must end up: a task's goal "
                          "is checked at the end of the episode; add it (e.g. \"... Put the red cube on the table.\")")
-    if scene is not None:  # the goal after a start it read is refused as the goal's words are; read as written, the
-        # start's "X is on Y" had become the goal ("Initially yellow is on white. Put both cubes on the table." had
-        # compiled to yellow on white: silently wrong)
-        return initial.attach(initial.on_table_goal(scene) or parse(scene.goal), scene, instruction)
+    if scene is not None:
+        try:
+            return initial.attach(initial.on_table_goal(scene) or parse(scene.goal), scene, instruction)
+        except BadInput as exc:  # read as written below, where a reader may read the start itself ("... starts on ...;
+            goal_gap = exc       # move it to the table"); a reading as written with no start is refused below
+    schema = _read(instruction)
+    if scene is not None and not schema.initial_state.structures:
+        # the start's "X is on Y" had become the goal ("Initially yellow is on white. Put both cubes on the table." had
+        # compiled to yellow on white: silently wrong): refused as the goal alone is
+        raise goal_gap
+    return schema
+
+
+def _read(instruction: str) -> TaskSchema:
+    """``instruction`` read by the registered readers, the first whose reading accounts for every
+    mention winning (see :func:`parse`, which reads frames and a stated start first)."""
     f = features(instruction)
     first_gap: ParseError | None = None
     for entry in registry.ordered():
