@@ -51,6 +51,7 @@ STRANGER_SETS = {
     "stranger14": ("stranger14.yaml", "STRANGER set 14 (stranger14.yaml, development material)"),
     "stranger15": ("stranger15.yaml", "STRANGER set 15 (stranger15.yaml, development material)"),
     "stranger16": ("stranger16.yaml", "STRANGER set 16 (stranger16.yaml, development material)"),
+    "stranger17": ("stranger17.yaml", "STRANGER set 17 (stranger17.yaml, development material)"),
 }
 SPLITS = HERE / "splits.yaml"
 
