@@ -2963,3 +2963,16 @@ def test_a_goal_after_a_start_is_never_read_with_the_start_as_the_goal():
 def test_must_refuse_texts_are_refused_for_their_reason(text, why):
     with pytest.raises(BadInput, match=why):
         parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    # label cubes given their places in a tower (the bare labels had been dropped and the tower built of coloured cubes)
+    ("Build a two-cube tower: 9 at the bottom, 0 on top.", ["stack(9,0)"]),
+    ("Stack the digits so that 1 is at the bottom and 3 is on top, with 2 in between.", ["stack(1,2,3)"]),
+    ("Stack the number cubes with 1 at the bottom, 2 in the middle and 3 on top.", ["stack(1,2,3)"]),
+    ("Stack the letters with A on top and C at the bottom, B in the middle.", ["stack(C,B,A)"]),  # had been @center
+    ("Stack the digit cubes 1, 2, 3 and 4 into one tower, 4 at the bottom and 1 on top.", ["stack(4,3,2,1)"]),
+    ("Build a tower of five cubes: 2 red at the bottom and 3 blue on top.", ["stack(red,red,blue,blue,blue)"]),
+])
+def test_label_cubes_given_their_places_in_a_tower(text, expected):
+    assert meaning(parse(text)) == expected

@@ -548,6 +548,37 @@ def apply_corrections(text: str) -> str:
     return text
 
 
+_LABEL_ROLE_RE = re.compile(r"(?<![\w.'\-])(?:(?:the\s+)?(?P<kind>digit|number|letter)\s+(?P<ll>[a-z0-9])\b|(?P<l>\d|[A-Z]))(?:\s+(?:cube|block))?\s+"
+                            r"(?:is\s+|goes\s+|sits\s+|should\s+be\s+|must\s+be\s+)?(?:(?:at|on|in)\s+(?:the\s+)?(?:very\s+)?"
+                            r"(?P<r>bottom|base|top|middle)\b|on\s+(?P<t>top)\b|in\s+(?P<b>between)\b)")
+"""A label cube given its place in a tower ("9 at the bottom", "3 is on top", "2 in between")."""
+_ROLE_RANK = {"bottom": 0, "base": 0, "middle": 1, "between": 1, "top": 2}
+
+
+def _label_tower_roles(text: str) -> str:
+    """A tower's label cubes said by their places ("a two-cube tower: 9 at the bottom, 0 on top",
+    "stack the digits so that 1 is at the bottom and 3 is on top, with 2 in between") written as
+    the order from the bottom, which the readers read ("... from bottom to top: 9, 0"): the bare
+    labels had been dropped and the tower built of coloured cubes (silently wrong).  Left as it is
+    unless every role is said once, of two or three labels, bottom and top among them."""
+    if not re.search(r"\b(?:stack\w*|towers?|tiers?|columns?|piles?\s+up)\b", text):
+        return text
+    found = list(_LABEL_ROLE_RE.finditer(text))
+    if not found:
+        return text
+    ranks = [_ROLE_RANK[m.group("r") or m.group("t") or m.group("b")] for m in found]
+    labels = [(m.group("ll") or m.group("l")).upper() for m in found]
+    said = text[:found[0].start()] + " " + text[found[-1].end():]
+    if re.search(r"(?<![\w.])(?:\d|[A-Z])(?![\w.])|\b(?:letter|digit|number)\s+[a-z0-9]\b", said):
+        return text  # the labels are listed as well ("the digit cubes 1, 2, 3 and 4 ..., 4 at the bottom"): read there
+    if not 2 <= len(found) <= 3 or len(set(ranks)) != len(ranks) or {0, 2} - set(ranks) or len(set(labels)) != len(found):
+        return text
+    order = ", ".join(("digit " if lab.isdigit() else "letter ") + lab.lower()
+                      for _, lab in sorted(zip(ranks, labels, strict=True), key=lambda x: x[0]))
+    head = re.sub(r"(?:\s*[:,]|\s+(?:so\s+that|such\s+that|with|where))\s*$", "", text[:found[0].start()])
+    return f"{head} from bottom to top: {order}" + re.sub(r"^[\s,;]*(?:and\s+)?(?=[.!]|$)", "", text[found[-1].end():])
+
+
 def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, list[tuple[str, str]]]:
     """Lower-case, number words to digits, typos corrected.  Returns (text, original, dropped):
     ``dropped`` lists the unknown words read as ignorable (:mod:`rpg.schema.senses`), each with
@@ -720,6 +751,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     if re.search(r"\bwalls?\b", text):  # "a two-layer wall with blue on the bottom, three cubes per layer"
         text = lexicon.WALL_LAYER_ROLE_RE.sub(lambda m: f"{m.group('where')} layer {m.group('c')}", text)
         text = lexicon.PER_LAYER_RE.sub(_per_layer, text)
+    text = _label_tower_roles(text)
     # "put digit 7 on top of digit 2": a label cube named without its article
     text = re.sub(r"(?<![\w'])(?<!the\s)(?<!a\s)(?<!each\s)(?<!every\s)(?<!any\s)\b(digit|number|letter)\s+(?=(?:\d|[A-Z])\b(?!\s*(?:,|to\b|-)))",
                   r"the \1 ", text)
