@@ -2976,3 +2976,13 @@ def test_must_refuse_texts_are_refused_for_their_reason(text, why):
 ])
 def test_label_cubes_given_their_places_in_a_tower(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger17's silent errors: a second relation after "but" is the subject's; "one pile per colour" is several piles
+    ("Put the red cube next to the blue cube but far from the green cube.", ["far_from(green,red)", "next_to(blue,red)"]),
+    ("Sort the two red, two green and two blue cubes into one pile per colour.",
+     ["piles(blue,blue,green,green,red,red;by=color)"]),
+])
+def test_a_relation_after_but_and_one_pile_per_colour(text, expected):
+    assert meaning(parse(text)) == expected

@@ -678,6 +678,11 @@ one cube of the clause before (a region is no cube), so it is written as that cu
 
 _COLOR_WORD = "(?:" + "|".join(COLORS) + ")"
 PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "put the red cube next to the blue cube but far from the green cube": the second relation is the subject's too
+    (re.compile(rf"\b(the\s+(?:{COLOR_RE})\s+(?:cube|block))\s+((?:next\s+to|beside|near|behind|in\s+front\s+of|(?:to\s+the\s+)?(?:left|right)"
+                rf"\s+of|far\s+from|away\s+from)\s+the\s+(?:{COLOR_RE})\s+(?:cube|block))\s*,?\s+(?:but|and)\s+(?:also\s+|still\s+)?"
+                r"(?=(?:far\s+from|away\s+from|next\s+to|beside|near|behind|in\s+front\s+of|(?:to\s+the\s+)?(?:left|right)\s+of)\s+the\b)"),
+     r"\1 \2 and \1 "),
     # "... at the same time", "simultaneously": every part of a goal is checked at once, at the end of the episode
     (re.compile(r"\s*,?\s*\b(?:at\s+the\s+same\s+time|simultaneously|all\s+at\s+once)\b"), ""),
     # "red closest to the front" of a line: that end ("with red at the front"), which the line's roles read

@@ -468,9 +468,10 @@ def recognize_piles(f: Features, b: Builder) -> bool:
         by = "type"
     else:
         k = stated_count(f, "pile|bunch|group|cluster|heap", default=None)
-        several = (separate or f.has("piles", "heaps", "bunches", "clusters", "groups", "each", "per")
+        per_color = re.search(r"\b(?:per|for\s+each|of\s+each|for\s+every)\s+colou?r\b", f.text)  # "one pile per colour"
+        several = (separate or per_color or f.has("piles", "heaps", "bunches", "clusters", "groups", "each", "per")
                    or re.search(r"\bby\s+colou?rs?\b|\bother\b|\banother\b", f.text))
-        if k == 1 or re.search(r"\b(?:a|one|single)\s+(?:single\s+)?(?:pile|heap|bunch|cluster|group)\b", f.text):
+        if not per_color and (k == 1 or re.search(r"\b(?:a|one|single)\s+(?:single\s+)?(?:pile|heap|bunch|cluster|group)\b", f.text)):
             return _one_pile(f, b)
         if k is None and not several and _one_pile(f, b, strict=False):  # "pile four cubes": one pile of them
             return True
