@@ -2973,6 +2973,7 @@ def test_must_refuse_texts_are_refused_for_their_reason(text, why):
     ("Stack the letters with A on top and C at the bottom, B in the middle.", ["stack(C,B,A)"]),  # had been @center
     ("Stack the digit cubes 1, 2, 3 and 4 into one tower, 4 at the bottom and 1 on top.", ["stack(4,3,2,1)"]),
     ("Build a tower of five cubes: 2 red at the bottom and 3 blue on top.", ["stack(red,red,blue,blue,blue)"]),
+    ("Build a tower of letter cubes with A at the bottom, then B, then C on top", ["stack(A,B,C)"]),  # B had been dropped
 ])
 def test_label_cubes_given_their_places_in_a_tower(text, expected):
     assert meaning(parse(text)) == expected

@@ -568,9 +568,11 @@ def _label_tower_roles(text: str) -> str:
         return text
     ranks = [_ROLE_RANK[m.group("r") or m.group("t") or m.group("b")] for m in found]
     labels = [(m.group("ll") or m.group("l")).upper() for m in found]
+    label_re = r"(?<![\w.])(?:\d|[A-Z])(?![\w.])|\b(?:letter|digit|number)\s+[a-z0-9]\b"
     said = text[:found[0].start()] + " " + text[found[-1].end():]
-    if re.search(r"(?<![\w.])(?:\d|[A-Z])(?![\w.])|\b(?:letter|digit|number)\s+[a-z0-9]\b", said):
-        return text  # the labels are listed as well ("the digit cubes 1, 2, 3 and 4 ..., 4 at the bottom"): read there
+    if re.search(label_re, said) or len(re.findall(label_re, text[found[0].start():found[-1].end()])) != len(found):
+        return text  # the labels are listed as well ("the digit cubes 1, 2, 3 and 4 ..., 4 at the bottom", "A at the
+        # bottom, then B, then C on top"): read there
     if not 2 <= len(found) <= 3 or len(set(ranks)) != len(ranks) or {0, 2} - set(ranks) or len(set(labels)) != len(found):
         return text
     order = ", ".join(("digit " if lab.isdigit() else "letter ") + lab.lower()
