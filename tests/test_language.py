@@ -2984,6 +2984,10 @@ def test_label_cubes_given_their_places_in_a_tower(text, expected):
     ("Put the red cube next to the blue cube but far from the green cube.", ["far_from(green,red)", "next_to(blue,red)"]),
     ("Sort the two red, two green and two blue cubes into one pile per colour.",
      ["piles(blue,blue,green,green,red,red;by=color)"]),
+    # a list that restates the bottom cube it follows (it had been counted twice: a seventh cube)
+    ("Stack the cubes in rainbow order, red at the bottom: red, orange, yellow, green, blue, purple.",
+     ["stack(red,orange,yellow,green,blue,purple)"]),
+    ("Build a tower with red at the bottom: red, blue, green.", ["stack(red,blue,green)"]),
 ])
 def test_a_relation_after_but_and_one_pile_per_colour(text, expected):
     assert meaning(parse(text)) == expected

@@ -1130,6 +1130,10 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
                 rf"\s*,?\s+(?:and\s+)?(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|bricks|ones))?\s+(?:at|on|in)\s+the\s+(?:bottom|base)"
                 r"(?:\s+(?:below|under)\s+them)?\b"),
      lambda m: ": from bottom to top: " + ", ".join([m.group(4)] * int(m.group(3)) + [m.group(2)] * int(m.group(1))), True),
+    # "stack the cubes, red at the bottom: red, orange, yellow": the list restates the bottom cube (it had been counted twice)
+    (re.compile(rf"(?:\s*,?\s*with\s+|\s*,\s*)(?:(?:a|an|the)\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on)\s+the\s+"
+                rf"(?:bottom|base)\s*:\s*(?P=c)\b"),
+     r" from bottom to top: \g<c>", True),
     # "put one yellow cube on each of the two blue cubes": a two-cube tower on each of them
     (re.compile(rf"\b(?:put|place|set|stack|add)\s+(?:a|an|1)\s+({COLOR_RE})\s+(?:cube|block|brick)\s+(?:on\s+top\s+of|on|onto|atop)\s+"
                 rf"(?:each|every)\s+(?:one\s+)?of\s+(?:the\s+)?(\d+)\s+({COLOR_RE})\s+(?:cubes|blocks|bricks)\b"),
