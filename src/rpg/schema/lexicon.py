@@ -1417,8 +1417,12 @@ def names_a_role(before: str, text: str) -> bool:
                 or (LAYER_LIST_BEFORE.search(before) and LAYERED_TEXT.search(text)))
 
 
-SORT_END_BEFORE = re.compile(r"\b(?:the\s+)?(?:largest|biggest|greatest|highest|smallest|lowest)"
-                             r"(?:\s+(?:number|digit|value|label|letter|one|cube|block))?(?:\s+(?:is|goes|sits))?\s*$")
+SORT_END_WORD = r"(?:largest|biggest|greatest|highest|smallest|lowest)"
+"""A label sort's end said by its largest or smallest label ("the biggest number", "smallest")."""
+SORT_END_NOUN = r"(?:\s+(?:number|digit|value|label|letter|one|cube|block))?"
+"""The noun that may follow :data:`SORT_END_WORD` ("largest number", "smallest one")."""
+
+SORT_END_BEFORE = re.compile(r"\b(?:the\s+)?" + SORT_END_WORD + SORT_END_NOUN + r"(?:\s+(?:is|goes|sits))?\s*$")
 """Text before a bare side that makes it the end of a sorted line ("digits 4, 2 and 7 in a row,
 largest on the left"): the sort's largest or smallest label, not a place on the table."""
 

@@ -438,7 +438,7 @@ SORT_ASKED_RE = re.compile(r"(?i)\b(?:sort(?:s|ed|ing)?|ascending|descending|inc
 """Words that ask for labelled cubes in sorted order ("Sort the digit cubes 4, 9 and 2", "in
 ascending order", "smallest at the bottom", "biggest number at the bottom")."""
 
-_LABEL_NOUN = r"(?:\s+(?:number|digit|value|label|letter|one|cube|block))?"
+_LABEL_NOUN = lexicon.SORT_END_NOUN
 _DESC_RE = re.compile(r"(?i)\b(?:descending|decreasing|reverse(?:d)?"
                       r"|(?:largest|biggest|greatest)" + _LABEL_NOUN + r"\s+(?:first|at\s+the\s+(?:bottom|base|front|left|start)"
                       r"|on\s+the\s+(?:left|bottom)|in\s+front)"
@@ -475,7 +475,7 @@ def sorted_labels(text: str) -> str:
             + text[m.end():])
 
 
-_SORT_END_SIDE_RE = re.compile(r"(?i)\b(?:largest|biggest|greatest|highest|smallest|lowest)" + _LABEL_NOUN
+_SORT_END_SIDE_RE = re.compile(r"(?i)\b" + lexicon.SORT_END_WORD + _LABEL_NOUN
                                + r"(?:\s+(?:is|goes|sits))?\s+(?:on|at|in)\s+(?:the\s+)?(?:far\s+|very\s+)?(?P<side>left|right|front|back)\b")
 """A sorted line's end said by its largest or smallest label ("largest on the left"): the line
 runs along that axis, and the sort (:data:`_DESC_RE`) puts the right label at that end."""
@@ -548,7 +548,7 @@ def apply_corrections(text: str) -> str:
     return text
 
 
-_LABEL_ROLE_RE = re.compile(r"(?<![\w.'\-])(?:(?:the\s+)?(?P<kind>digit|number|letter)\s+(?P<ll>[a-z0-9])\b|(?P<l>\d|[A-Z]))(?:\s+(?:cube|block))?\s+"
+_LABEL_ROLE_RE = re.compile(r"(?<![\w.'\-])(?:(?:the\s+)?(?:digit|number|letter)\s+(?P<ll>[a-z0-9])\b|(?P<l>\d|[A-Z]))(?:\s+(?:cube|block))?\s+"
                             r"(?:is\s+|goes\s+|sits\s+|should\s+be\s+|must\s+be\s+)?(?:(?:at|on|in)\s+(?:the\s+)?(?:very\s+)?"
                             r"(?P<r>bottom|base|top|middle)\b|on\s+(?P<t>top)\b|in\s+(?P<b>between)\b)")
 """A label cube given its place in a tower ("9 at the bottom", "3 is on top", "2 in between")."""

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import asdict, dataclass, field, replace
+from functools import lru_cache
 
 from rpg.domain.palette import GRADIENT_ORDER
 from rpg.errors import BadInput
@@ -169,7 +170,7 @@ def normalize_edit(text: str) -> str:
                lambda m: f"letter {m.group(1) or m.group(2)}", t)
     t = re.sub(r"\b(a|an|the)\s+(\d)\b(?![x\d\-])(?!\s*(?:blocks?|cubes?|tall|high|wide|long|deep|layers?|levels?|rows?|"
                r"more|of|colou?rs?|stor\w*|outliers?|times)\b)", r"\1 digit \2", t)
-    known = VOCAB | IGNORABLE | IGNORABLE_MORE | set(COLOR_RE.split("|"))
+    known = _known_words()
     t = re.sub(r"\b[A-Z]{2,}\b", lambda m: m.group(0) if m.group(0).lower() in known else f"'{m.group(0)}'", t)
     t = t.lower()
     t = re.sub(r"[\u2018\u2019\u201c\u201d`\"]", "'", t)
@@ -185,7 +186,13 @@ def normalize_edit(text: str) -> str:
     return " ".join(_corrected(w, known) for w in t.split())
 
 
-def _corrected(word: str, known: set[str], fuzzy: bool = True) -> str:
+@lru_cache(maxsize=1)
+def _known_words() -> frozenset[str]:
+    """Words an edit's typo is corrected to: the vocabulary, the ignorable words and the colours."""
+    return frozenset(VOCAB | IGNORABLE | IGNORABLE_MORE | set(COLOR_RE.split("|")))
+
+
+def _corrected(word: str, known: frozenset[str], fuzzy: bool = True) -> str:
     """A typo of a known word corrected ("shoud" -> "should"): only a word of 4 letters or
     more that is no English word, within the parser's own distance; with ``fuzzy`` False, only
     two letters swapped ("mkae" -> "make")."""
@@ -693,8 +700,8 @@ def interpret(edit: str) -> EditPlan:
     edit = INTENSIFIER_RIGHT_RE.sub("", EDIT_INTERJECTION_RE.sub("", edit)) or edit  # "no wait, put it right next to ..."
     edit = TYPO_RE.sub(lambda m: TYPOS[m.group(0).lower()], edit)  # "put a yelow one ontop": the words meant
     edit = POLITE_CONDITION_RE.sub(" ", edit).strip() or edit  # "make the outer two white, if you would": no condition
-    known = VOCAB | IGNORABLE | IGNORABLE_MORE | set(COLOR_RE.split("|"))  # "mkae it shorter, 3": the rewrites see "make"
-    edit = " ".join(_corrected(w, known, fuzzy=False) if w.islower() else w for w in edit.split())
+    # "mkae it shorter, 3": two swapped letters corrected before the rewrites, which look for "make"
+    edit = " ".join(_corrected(w, _known_words(), fuzzy=False) if w.islower() else w for w in edit.split())
     for pattern, replacement in EDIT_REWRITES:
         edit = pattern.sub(replacement, edit)
     count = EDIT_COUNT_ALONE_RE.fullmatch(edit)

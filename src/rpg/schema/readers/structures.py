@@ -448,6 +448,11 @@ def recognize_circle(f: Features, b: Builder) -> bool:
     return True
 
 
+PILE_UNSAID_COUNT = 3
+"""Cubes of a colour in a pile whose count is not said ("pile up the red cubes", "separate the
+blocks into piles by colour"): the piles predicate judges their spread, not their number (project)."""
+
+
 @reader(order=150)
 def recognize_piles(f: Features, b: Builder) -> bool:
     separate = re.search(r"\b(?:separate|split|divide)\b.*\b(?:from|by colou?r|into)\b", f.text) or (
@@ -477,7 +482,7 @@ def recognize_piles(f: Features, b: Builder) -> bool:
             return True
         colors = list(dict.fromkeys(f.color_list())) or colors_for(k or 3, f, prefer=[])
         per = stated_count(f, default=None)
-        per = max(2, per // len(colors)) if per else 3
+        per = max(2, per // len(colors)) if per else PILE_UNSAID_COUNT
         groups = [[b.cube(c) for _ in range(per)] for c in colors]
         by = "color"
     outliers = outlier_count(f)
@@ -516,7 +521,7 @@ def _one_pile(f: Features, b: Builder, strict: bool = True) -> bool:
     if groups:
         cubes = [c for k, c in groups for _ in range(k)]
     elif len(set(colors)) == 1 and (n or re.search(rf"\b(?:the|all)\s+(?:the\s+)?{colors[0]}\s+(?:cubes|blocks|bricks|ones)\b", f.text)):
-        cubes = colors[:1] * (n or 3)  # "pile up the red cubes": as many as a pile reads with its count unsaid (3)
+        cubes = colors[:1] * (n or PILE_UNSAID_COUNT)  # "pile up the red cubes"
     elif len(colors) >= 2 and len(set(colors)) == len(colors) and n in (None, len(colors)):
         cubes = colors
     elif not colors and n and f.has("cubes", "blocks", "bricks", "boxes", "pieces", "objects"):
