@@ -2991,3 +2991,14 @@ def test_label_cubes_given_their_places_in_a_tower(text, expected):
 ])
 def test_a_relation_after_but_and_one_pile_per_colour(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", ["Build a tower: 9 at the bottom, 0 at the bottom.",
+                                  "Build a tower: " + ", ".join(f"{i % 10} at the bottom" for i in range(150))])
+def test_digits_given_tower_places_that_make_no_order_are_refused(text):  # they had built a tower of two coloured cubes
+    with pytest.raises(ParseError):
+        parse(text)
+
+
+def test_a_run_of_emoji_shortcodes_is_read_as_one_blank():  # 270 of them had taken 50 s (runs of blanks, quadratic)
+    assert meaning(parse("put red on blue " + ":a_b: " * 270)) == ["stack(blue,red)"]

@@ -35,6 +35,7 @@ from rpg.schema.lexicon import (
 )
 from rpg.schema.model import TaskSchema
 from rpg.schema.reading import (
+    LABEL_ROLE_RE,
     Features,
     ParseError,
     canon_color,
@@ -669,6 +670,8 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     sizes = {len(cubes)} | {n for n in have.values() if n > 1} | {
         n for p in schema.goal_predicate().walk() for n in p.counts()} | {len(st) for st in schema.initial_state.structures}
     lone = [m.group(1) for m in LONE_DIGIT_RE.finditer(f.original) if m.group(1) not in labels and int(m.group(1)) not in sizes]
+    lone += [m.group("l") for m in LABEL_ROLE_RE.finditer(f.original)  # "9 at the bottom": a digit given a place, no cube
+             if m.group("l") and m.group("l").isdigit() and m.group("l") not in labels and int(m.group("l")) not in sizes]
     if lone:  # "line 1 2 3" read as a line of four coloured cubes: a digit no cube and no count of the task carries
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the number {lone[0]!r} is neither a "
                           "digit cube nor a count of that task. Rephrase (e.g. \"the digit cubes 1, 2 and 3\", \"3 cubes\"), "

@@ -967,7 +967,8 @@ MARKUP_RES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|so|alright|hey)\s*[,.!]?\s+)?(?:(?:a|the|one|another)\s+)?(?:new\s+(?:eval(?:uation)?\s+)?|eval(?:uation)?\s+)"
                 r"(?:task|eval)\s*[:,\-]?\s*(?=\S)"), ""),
     # a chat's emoji shortcodes (":pray:", ":white_check_mark:", ":red_circle:"): pictures, no words of the task
-    (re.compile(r"(?<![\w:]):[a-z0-9_+\-]{2,40}:(?![\w:])"), " "),
+    (re.compile(r"(?:\s*(?<![\w:]):[a-z0-9_+\-]{2,40}:(?![\w:]))+"), " "),  # a run of them is one blank (runs of blanks had
+    # made later patterns quadratic: 50 s for a text of 270 shortcodes)
     # an exam's points: "(5 points)", "Q4 (10 pts)."
     (re.compile(r"(?i)\s*\(\s*\d+\s*(?:points?|pts?|marks?)\s*\)\s*\.?"), " "),
 )

@@ -548,9 +548,9 @@ def apply_corrections(text: str) -> str:
     return text
 
 
-_LABEL_ROLE_RE = re.compile(r"(?<![\w.'\-])(?:(?:the\s+)?(?:digit|number|letter)\s+(?P<ll>[a-z0-9])\b|(?P<l>\d|[A-Z]))(?:\s+(?:cube|block))?\s+"
+LABEL_ROLE_RE = re.compile(r"(?<![\w.'\-])(?:(?:the\s+)?(?:digit|number|letter)\s+(?P<ll>[a-z0-9])\b|(?P<l>\d|[A-Z]))(?:\s+(?:cube|block))?\s+"
                             r"(?:is\s+|goes\s+|sits\s+|should\s+be\s+|must\s+be\s+)?(?:(?:at|on|in)\s+(?:the\s+)?(?:very\s+)?"
-                            r"(?P<r>bottom|base|top|middle)\b|on\s+(?P<t>top)\b|in\s+(?P<b>between)\b)")
+                            r"(?P<r>bottom|base|top|middle)\b|on\s+(?P<t>top)\b|in\s+(?P<b>between)\b)(?!\s+of\b)")
 """A label cube given its place in a tower ("9 at the bottom", "3 is on top", "2 in between")."""
 _ROLE_RANK = {"bottom": 0, "base": 0, "middle": 1, "between": 1, "top": 2}
 
@@ -560,10 +560,15 @@ def _label_tower_roles(text: str) -> str:
     "stack the digits so that 1 is at the bottom and 3 is on top, with 2 in between") written as
     the order from the bottom, which the readers read ("... from bottom to top: 9, 0"): the bare
     labels had been dropped and the tower built of coloured cubes (silently wrong).  Left as it is
-    unless every role is said once, of two or three labels, bottom and top among them."""
-    if not re.search(r"\b(?:stack\w*|towers?|tiers?|columns?|piles?\s+up)\b", text):
-        return text
-    found = list(_LABEL_ROLE_RE.finditer(text))
+    where the labels are listed as well; refused unless every role is said once, of two or three
+    labels, bottom and top among them.
+
+    Raises:
+        ParseError: the roles do not make one order ("0 at the bottom, 1 at the bottom, ...")."""
+    if not re.search(r"\b(?:stack\w*|towers?|tiers?|columns?|piles?\s+up)\b", text) or re.search(
+            r"\b(?:pyramids?|walls?|grids?|layers?|rows?)\b", text):
+        return text  # a layered structure's "3 on the bottom, 2 in the middle" are counts
+    found = list(LABEL_ROLE_RE.finditer(text))
     if not found:
         return text
     ranks = [_ROLE_RANK[m.group("r") or m.group("t") or m.group("b")] for m in found]
@@ -573,8 +578,12 @@ def _label_tower_roles(text: str) -> str:
     if re.search(label_re, said) or len(re.findall(label_re, text[found[0].start():found[-1].end()])) != len(found):
         return text  # the labels are listed as well ("the digit cubes 1, 2, 3 and 4 ..., 4 at the bottom", "A at the
         # bottom, then B, then C on top"): read there
-    if not 2 <= len(found) <= 3 or len(set(ranks)) != len(ranks) or {0, 2} - set(ranks) or len(set(labels)) != len(found):
-        return text
+    if len(found) < 2:
+        return text  # one label with a place: a relation or a role the readers read ("stack 3 on the red cube")
+    if len(found) > 3 or len(set(ranks)) != len(ranks) or {0, 2} - set(ranks) or len(set(labels)) != len(found):
+        raise ParseError(f"the labelled cubes of \"{text[:80]}\" are given places in the tower that do not make one order "
+                         "(each label once, one at the bottom and one on top); say the order from the bottom (e.g. \"stack "
+                         "the digit cubes 1, 2 and 3 from bottom to top\"), or use --model")  # read as coloured cubes before
     order = ", ".join(("digit " if lab.isdigit() else "letter ") + lab.lower()
                       for _, lab in sorted(zip(ranks, labels, strict=True), key=lambda x: x[0]))
     head = re.sub(r"(?:\s*[:,]|\s+(?:so\s+that|such\s+that|with|where))\s*$", "", text[:found[0].start()])
