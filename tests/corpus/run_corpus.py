@@ -52,6 +52,7 @@ STRANGER_SETS = {
     "stranger15": ("stranger15.yaml", "STRANGER set 15 (stranger15.yaml, development material)"),
     "stranger16": ("stranger16.yaml", "STRANGER set 16 (stranger16.yaml, development material)"),
     "stranger17": ("stranger17.yaml", "STRANGER set 17 (stranger17.yaml, development material)"),
+    "stranger18": ("stranger18.yaml", "STRANGER set 18 (stranger18.yaml, development material)"),
 }
 SPLITS = HERE / "splits.yaml"
 
