@@ -1291,3 +1291,25 @@ def test_the_leftmost_of_a_row_that_runs_no_way_is_refused(tmp_path):
 def test_an_edit_with_a_run_of_blanks_is_read(tmp_path):  # it had taken minutes
     assert _steered(tmp_path, "Put three green cubes in a row", "make them" + " " * 7000 + "red")[-1] == \
         ("tweak", ["line(red,red,red)"])
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # steer_stranger11's silent errors: a cube brought in without a verb, "a blue one" on a cube of a relation, the cube
+    # said with a side in a pivot, a count that goes on with the pattern, "right next to" as next to
+    ("Put the red cube in the back left corner", ["now a green one too, in the front right"],
+     ("extend", ["in_region(green,front_right)", "in_region(red,back_left)"])),
+    ("Put a red cube next to a green cube", ["put a blue one on top of the red"],
+     ("extend", ["next_to(green,red)", "stack(red,blue)"])),
+    ("Stack a red cube on a green cube", ["make it a row, green on the left"], ("pivot", ["left_of(green,red)"])),
+    ("Build a tower of four cubes alternating black and white, black at the bottom", ["make it six cubes, same pattern"],
+     ("tweak", ["stack(black,white,black,white,black,white)"])),
+    ("Put the white cube in the center of the table", ["also a brown cube right next to it"],
+     ("extend", ["in_region(white,center)", "next_to(brown,white)"])),
+])
+def test_steer_stranger11_silent_errors_are_read_as_meant(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+def test_a_count_of_cubes_that_repeat_no_pattern_adds_a_new_colour(tmp_path):
+    assert _steered(tmp_path, "Stack a red cube, then a blue cube, then a green cube", "make it four")[-1] \
+        == ("tweak", ["stack(red,blue,green,yellow)"])

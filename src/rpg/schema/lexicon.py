@@ -798,7 +798,7 @@ green block" stacks the two, next to it.)"""
 
 EDIT_RELATIONS: tuple[tuple[str, str], ...] = (
     (r"\b(?:to the |on the )?left\b", "left_of"),
-    (r"\b(?:to the |on the )?right\b", "right_of"),
+    (r"\b(?:to the |on the )?right\b(?!\s+(?:next\s+to|beside|by|behind|in\s+front|under|on\s+top|above|against)\b)", "right_of"),
     (r"\bin front\b|\bfront\b", "in_front_of"),
     (r"\bbehind\b|\bin back\b|\bto the back\b", "behind"),
     (r"\bfar\s+(?:apart|away|from)\b|\baway\s+from\b", "far_from"),
@@ -807,7 +807,8 @@ EDIT_RELATIONS: tuple[tuple[str, str], ...] = (
     (r"\bon top\b|\bonto\b|\batop\b|\bstack(?:ed|ing)?\b|\bon (?:it|them|the \w+ (?:block|cube)|the (?:\w+ )?(?:goal )?patch)\b", "on"),
 )
 """The relation a steering edit names ("put it on the left instead"), most specific first:
-words of an edit, where a side alone names the relation (:mod:`rpg.steer.relations`)."""
+words of an edit, where a side alone names the relation (:mod:`rpg.steer.relations`). "right"
+before another relation ("right next to it", "right behind") only stresses that one."""
 
 
 REF_PREP = r"\b(of|on|onto|to|beside|behind|near|under|below|beneath|above|atop|by|from|alongside|against)\s+"

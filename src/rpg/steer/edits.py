@@ -973,12 +973,22 @@ def carried_after(spec: TaskSpec, carried, ops: list[Op]):
     return replace(carried, ends=frozenset(ends))
 
 
+def _period(items: list[Item]) -> int | None:
+    """The length of the shortest pattern that ``items`` repeat at least twice over
+    (black, white, black, white: 2; one cube, or cubes of one colour: 1), or None."""
+    return next((p for p in range(1, max(1, len(items) // 2) + 1)
+                 if items and all(items[i] == items[i % p] for i in range(len(items)))), None)
+
+
 def _resize(spec: TaskSpec, n: int) -> TaskSpec:
+    """The spec with ``n`` cubes: the first ``n`` kept; cubes added go on with the pattern the
+    cubes repeat ("make it six" of black, white, black, white: two more of black, white), else
+    with a colour or label the task does not use yet."""
     items = list(spec.items[:n])
+    period = _period(items) if all(it.label is None for it in items) else None
     while len(items) < n:
         grow = replace(spec, items=tuple(items))
-        same = len(set(items)) == 1 and items and items[0].label is None
-        items.append(items[0] if same else _next_item(grow))
+        items.append(items[len(items) % period] if period else _next_item(grow))
     return spec.with_items(items)
 
 

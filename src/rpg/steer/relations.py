@@ -46,7 +46,7 @@ OPPOSITE = {"left_of": "right_of", "right_of": "left_of", "in_front_of": "behind
 
 
 
-ADDS_RE = re.compile(r"\b(?:add|another|new|extra|more|one more|also)\b|\ban? (?:\w+ )?(?:block|cube)\b")
+ADDS_RE = re.compile(rf"\b(?:add|another|new|extra|more|one more|also)\b|\ban? (?:\w+ )?(?:block|cube)\b|\ban? (?:{COLOR_RE}) one\b")
 """An edit that brings in a cube (an Extend): not a change of the relation."""
 
 
@@ -146,7 +146,13 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
             named = []
         if kind is None or len(named) > 1 or (named and named[0] not in by_color):
             return None  # no relation, or cubes of its own: a whole task, not an edit of this one
-        pronoun = re.search(r"\b(?:it|them)\b", t)
+        side = re.search(rf"\b({COLOR_RE})\s+(?:one\s+|block\s+|cube\s+)?(?:on|to|at|in)\s+(?:the\s+)?(?:left|right|front|back)\b", t)
+        if side and not named and by_color.get(canon_color(side.group(1))) in (subject, obj):
+            # "make it a row, green on the left": the cube said with the side is the one placed there
+            moved = by_color[canon_color(side.group(1))]
+            subject, obj = moved, (obj if moved == subject else subject)
+            named = []
+        pronoun = re.search(r"\b(?:it|them)\b", t) if not side else None
         anchor = named and re.search(rf"\b(?:of|to|behind|beside|near|under|above|below|on|onto|from|than)\s+the\s+{named[0]}\s+"
                                      r"(?:block|cube|one)\b", t)  # "on the left of the blue one": blue stays where it is
         if named and not pronoun and not anchor and by_color[named[0]] == obj:  # "move the yellow block behind": the subject now
@@ -229,7 +235,7 @@ def _edit_relation(t: str) -> str | None:
 
 def _added(t: str, schema: TaskSchema, rel: Relation) -> tuple[str, str] | None:
     """"Add a green block next to it": the reference's relation, then the new cube's."""
-    m = re.search(rf"\b(?:an?|another|one more|a new|an extra)\s+(?:new\s+|extra\s+)?({COLOR_RE})\s+(?:block|cube)\b(.*)", t)
+    m = re.search(rf"\b(?:an?|another|one more|a new|an extra)\s+(?:new\s+|extra\s+)?({COLOR_RE})\s+(?:block|cube|one)\b(.*)", t)
     if m is None:
         return None
     color, rest = canon_color(m.group(1)), m.group(2)
@@ -239,7 +245,7 @@ def _added(t: str, schema: TaskSchema, rel: Relation) -> tuple[str, str] | None:
     if kind is None or re.search(r"\b(?:both|each|all)\b", rest):
         return None  # "in front of both": a relation to two cubes at once is no one relation
     by_color = {a.color: a.name for a in schema.assets if a.kind == "colored_cube"}
-    named = re.findall(r"\bthe (\w+) (?:block|cube|one)\b", rest)
+    named = re.findall(rf"\bthe ({COLOR_RE})(?: (?:block|cube|one))?\b", rest)  # "on top of the red": the red cube
     if named:
         if named[0] not in by_color:
             return None
@@ -361,7 +367,9 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     bare = re.fullmatch(r"\s*(?:(?:now|ok(?:ay)?|actually|rather|no|wait|sorry|hmm)[\s,]+)*(the\s+[a-z\s-]+?)(?:\s+(?:instead|please|now))*\s*", t)
     if region is None and bare:  # "now the right side": the place alone
         region = _edit_region(f" to {bare.group(1)} ")
-    added = re.search(rf"\b(?:add|put|place)\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b(.*)", t)
+    added = re.search(rf"\b(?:add|put|place)\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b(.*)", t) or (
+        EDIT_ADDITIVE_RE.search(t) and re.search(rf"\b(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube|one)\b(.*)", t))
+    # "now a green one too, in the front right": a cube the edit brings in, as well
     named = [canon_color(c) for c in re.findall(rf"\bthe ({COLOR_RE}) (?:block|cube|one)\b", t)]
     colors = [c for c, _ in placed]
     extra = ""

@@ -246,6 +246,8 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
                       or rewrite_region(plan.text, ref_schema) or rewrite_moved(plan.text, ref_schema))
         if relational is not None:  # "put it in front instead", "swap them": the reference's relation, changed
             instruction, intent = relational
+            if any(o.op == "structure" for o in plan.ops):  # "make it a row, green on the left": another structure
+                intent = "pivot"
             return parse(instruction), instruction, intent
     if plan.standalone:
         text = strip_edit_words(plan.text)
