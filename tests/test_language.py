@@ -3002,3 +3002,58 @@ def test_digits_given_tower_places_that_make_no_order_are_refused(text):  # they
 
 def test_a_run_of_emoji_shortcodes_is_read_as_one_blank():  # 270 of them had taken 50 s (runs of blanks, quadratic)
     assert meaning(parse("put red on blue " + ":a_b: " * 270)) == ["stack(blue,red)"]
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger18's silent errors: a sort's end said by a comparative, of two labels; a label range; roles of listed labels
+    ("Stack digit cubes 5 and 2 with the larger number on top.", ["stack(2,5)"]),
+    ("Stack digit cubes 5 and 2 with the larger number at the bottom.", ["stack(5,2)"]),
+    ("Stack the digits 1 through 3 with the highest digit at the bottom.", ["stack(3,2,1)"]),
+    ("Stack the digits 1 through 3 with the biggest at the very bottom.", ["stack(3,2,1)"]),
+    ("Arrange the digits 1 to 4 in a row, smallest on the left.", ["line[left_to_right](1,2,3,4)"]),
+    ("Stack letters T, O, P so that T is on top and P is at the bottom.", ["stack(P,O,T)"]),
+    # each list of a layered wall is a layer (the places had been dropped: the colours in any layer)
+    ("Wall of two layers: red, red, red below, yellow, yellow, yellow above.", ["wall(red,red,red|yellow,yellow,yellow)"]),
+])
+def test_stranger18_sorts_ranges_roles_and_layers(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,fixed", [
+    # cubes nobody named, made up to reach a said count, stand anywhere; the named ones where they were said to be
+    ("Build a tower of four cubes with the two green ones at the bottom.", [0, 1, -1, -1]),
+    ("Build a tower of three blocks with a yellow block on top.", [-1, -1, 2]),
+    # a role that moves a listed cube away from the list's place: the list names the cubes, not their order
+    ("Stack letters T, O, P so that O is on top.", [-1, -1, 2]),
+])
+def test_a_tower_fixes_only_the_places_its_words_give(text, fixed):
+    schema = parse(text)
+    layers = [p for p in schema.goal_predicate().walk() if type(p).__name__ == "InLayers"]
+    assert [type(p).__name__ for p in schema.goal_predicate().walk()].count("Stack") == 0
+    assert len(layers) == 1 and list(layers[0].levels) == fixed
+
+
+@pytest.mark.parametrize("text", [
+    "Stack the yellow cube on the pink cube, with the pink cube on top.",
+    "Stack the yellow cube on the pink cube, with the yellow cube at the bottom.",
+    "Put red on blue so that blue is on top",
+])
+def test_a_tower_end_that_contradicts_the_relation_is_refused(text):  # the end had been dropped: compiled
+    with pytest.raises(ParseError, match="contradicts"):
+        parse(text)
+
+
+def test_a_tower_end_that_agrees_with_the_relation_is_read():
+    assert meaning(parse("Stack the yellow cube on the pink cube, with the yellow cube on top.")) == ["stack(pink,yellow)"]
+
+
+@pytest.mark.parametrize("expected,actual,ok", [
+    ("next_to(pink,Z)", ["next_to(Z,pink)"], True),  # symmetric: either order
+    ("next_to(yellow,?)", ["next_to(yellow,zz)"], True),
+    ("next_to(?,yellow)", ["next_to(yellow,zz)"], True),
+    ("far_from(b,a)", ["far_from(a,b)"], True),
+    ("next_to(red,?)", ["next_to(a,c)"], False),
+    ("left_of(b,a)", ["left_of(a,b)"], False),  # not symmetric
+])
+def test_a_symmetric_relation_matches_in_either_order(expected, actual, ok):
+    assert matches(expected, actual) is ok

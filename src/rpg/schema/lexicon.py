@@ -1419,8 +1419,9 @@ def names_a_role(before: str, text: str) -> bool:
                 or (LAYER_LIST_BEFORE.search(before) and LAYERED_TEXT.search(text)))
 
 
-SORT_END_WORD = r"(?:largest|biggest|greatest|highest|smallest|lowest)"
-"""A label sort's end said by its largest or smallest label ("the biggest number", "smallest")."""
+SORT_END_WORD = r"(?:largest|biggest|greatest|highest|smallest|lowest|larger|bigger|greater|higher|smaller)"
+"""A label sort's end said by its largest or smallest label ("the biggest number", "smallest"; of
+two, "the larger number")."""
 SORT_END_NOUN = r"(?:\s+(?:number|digit|value|label|letter|one|cube|block))?"
 """The noun that may follow :data:`SORT_END_WORD` ("largest number", "smallest one")."""
 

@@ -434,20 +434,38 @@ def verb_final(text: str) -> str:
 
 
 SORT_ASKED_RE = re.compile(r"(?i)\b(?:sort(?:s|ed|ing)?|ascending|descending|increasing|decreasing|numerical(?:ly)?|alphabetical(?:ly)?"
-                           r"|smallest|largest|lowest|highest|biggest|greatest)\b")
+                           r"|smallest|largest|lowest|highest|biggest|greatest)\b"
+                           r"|\b(?:smaller|larger|higher|bigger|greater)" + lexicon.SORT_END_NOUN + r"\s+(?:is\s+|goes\s+|sits\s+)?"
+                           r"(?:on|at|in|first|last)\b")
 """Words that ask for labelled cubes in sorted order ("Sort the digit cubes 4, 9 and 2", "in
 ascending order", "smallest at the bottom", "biggest number at the bottom")."""
 
 _LABEL_NOUN = lexicon.SORT_END_NOUN
+_VERB = r"\s+(?:(?:is|goes|sits|should\s+be|must\s+be)\s+)?"
 _DESC_RE = re.compile(r"(?i)\b(?:descending|decreasing|reverse(?:d)?"
-                      r"|(?:largest|biggest|greatest)" + _LABEL_NOUN + r"\s+(?:first|at\s+the\s+(?:bottom|base|front|left|start)"
-                      r"|on\s+the\s+(?:left|bottom)|in\s+front)"
-                      r"|smallest" + _LABEL_NOUN + r"\s+(?:last|at\s+the\s+(?:top|back|right|end)|on\s+the\s+right|on\s+top"
-                      r"|in\s+the\s+back)"
-                      r"|highest" + _LABEL_NOUN + r"\s+(?:first|at\s+the\s+(?:bottom|base)|on\s+the\s+(?:left|bottom))"
-                      r"|lowest" + _LABEL_NOUN + r"\s+(?:last|on\s+top|at\s+the\s+top|on\s+the\s+right))\b")
+                      r"|(?:largest|biggest|greatest|larger|bigger|greater)" + _LABEL_NOUN + _VERB
+                      + r"(?:first|at\s+the\s+(?:bottom|base|front|left|start)|on\s+the\s+(?:left|bottom)|in\s+front)"
+                      r"|(?:smallest|smaller)" + _LABEL_NOUN + _VERB
+                      + r"(?:last|at\s+the\s+(?:top|back|right|end)|on\s+the\s+right|on\s+top|in\s+the\s+back)"
+                      r"|(?:highest|higher)" + _LABEL_NOUN + _VERB + r"(?:first|at\s+the\s+(?:bottom|base)|on\s+the\s+(?:left|bottom))"
+                      r"|lowest" + _LABEL_NOUN + _VERB + r"(?:last|on\s+top|at\s+the\s+top|on\s+the\s+right))\b")
 """A sort said to run from the largest label ("descending", "the biggest number at the bottom",
-"smallest on top"): the listed labels are put largest first (bottom, left, front)."""
+"smallest on top", "the larger number is at the bottom"): the listed labels are put largest first
+(bottom, left, front)."""
+
+
+LABEL_RANGE_RE = re.compile(r"(?P<noun>\b(?i:digits|numbers|letters|cubes|blocks)\s+)(?P<lo>\d|[A-Z])\s+(?i:through|thru|to)\s+"
+                            r"(?P<hi>\d|[A-Z])\b(?!\s*[-\u2013])")
+"""A run of labels said by its ends after their noun ("the digits 1 through 3", "letters A to D")."""
+
+
+def _listed_range(m: re.Match) -> str:
+    """A label range written as its labels ("1 through 3" -> "1, 2 and 3"); unchanged when it runs down or mixes kinds."""
+    lo, hi = m.group("lo"), m.group("hi")
+    if lo.isdigit() != hi.isdigit() or not lo < hi:
+        return m.group(0)
+    run = [chr(c) for c in range(ord(lo), ord(hi) + 1)]
+    return m.group("noun") + ", ".join(run[:-1]) + " and " + run[-1]
 
 
 def sorted_labels(text: str) -> str:
@@ -458,13 +476,16 @@ def sorted_labels(text: str) -> str:
     that spells or reads a word is left as it is (the word gives the order)."""
     if not SORT_ASKED_RE.search(text) or re.search(r"(?i)\b(?:spell\w*|reads?|word|then)\b", text):
         return text
-    m = re.search(r"(?<![\w-])([A-Z]|\d)((?:\s*,\s*(?:and\s+)?|\s+and\s+|\s+)(?:[A-Z]|\d)){2,}(?![\w-])", text)
+    text = LABEL_RANGE_RE.sub(_listed_range, text)  # "the digits 1 through 3": listed, to be sorted
+    least = "1" if re.search(r"(?i)\b(?:digit|number|letter|label)s?\b", text) else "2"  # "digit cubes 5 and 2": two
+    m = re.search(r"(?<![\w-])([A-Z]|\d)((?:\s*,\s*(?:and\s+)?|\s+and\s+|\s+)(?:[A-Z]|\d)){" + least + ",}" + r"(?![\w-])", text)
     if m is None:
         return text
     labels = re.findall(r"[A-Z0-9]", m.group(0))
     if len({lab.isdigit() for lab in labels}) != 1:
         return text  # letters and digits mixed: no one key
-    ordered = sorted(labels, key=lambda lab: (int(lab) if lab.isdigit() else lab), reverse=bool(_DESC_RE.search(text)))
+    ordered = sorted(labels, key=lambda lab: (int(lab) if lab.isdigit() else lab),
+                     reverse=bool(_DESC_RE.search(re.sub(r"(?i)\b(?:very|far)\s+(?=bottom|top|left|right|front|back)", "", text))))
     seps = re.findall(r"(?:\s*,\s*(?:and\s+)?|\s+and\s+|\s+)(?=[A-Z0-9])", m.group(0))
     side = _SORT_END_SIDE_RE.search(text)
     way = ""  # "digits 4, 2 and 7 in a row, largest on the left": the sorted labels run from that side
@@ -1055,6 +1076,10 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
 _GROUP = rf"(?P<n{{i}}>\d+)\s+(?P<c{{i}}>{COLOR_RE})(?:\s+(?:blocks|cubes))?"
 
 
+_LIST2 = rf"(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})|\s+and\s+(?:{COLOR_RE}))+"
+"""A list of two or more colours ("red, red, red", "red and blue")."""
+
+
 @dataclass(frozen=True)
 class Rewrite:
     """One rewrite of :data:`STRUCTURE_PHRASES`: ``pattern`` replaced by ``replacement`` (a
@@ -1143,6 +1168,11 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     (re.compile(rf"(?:\s*,?\s*with\s+|\s*,\s*)(?:(?:a|an|the)\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on)\s+the\s+"
                 rf"(?:bottom|base)\s*:\s*(?P=c)\b"),
      r" from bottom to top: \g<c>", True),
+    # "a wall of two layers: red, red, red below, yellow, yellow, yellow above": each list a layer (the places had been
+    # dropped: the colours in any layer)
+    (re.compile(rf"(?P<lead>\s*[:,;]\s*)(?P<low>{_LIST2})\s+(?:below|beneath|underneath|(?:at|on)\s+the\s+bottom)\s*[,;]?\s*(?:and\s+)?"
+                rf"(?P<high>{_LIST2})\s+(?:above|on\s+top|at\s+the\s+top)\b"),
+     r"\g<lead>bottom layer \g<low>; top layer \g<high>"),
     # "put one yellow cube on each of the two blue cubes": a two-cube tower on each of them
     (re.compile(rf"\b(?:put|place|set|stack|add)\s+(?:a|an|1)\s+({COLOR_RE})\s+(?:cube|block|brick)\s+(?:on\s+top\s+of|on|onto|atop)\s+"
                 rf"(?:each|every)\s+(?:one\s+)?of\s+(?:the\s+)?(\d+)\s+({COLOR_RE})\s+(?:cubes|blocks|bricks)\b"),

@@ -844,6 +844,7 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         if SEQ_RELATION_RE.search(text[a.end():c.start()]):
             return False
     items: list[tuple[str | None, str | None]] = []
+    filler: list[tuple[str, None]] = []  # cubes made up to reach a said count
     hints: dict[int, str] = {}
     said = stated_count(f, default=None)
     for k, m in enumerate(mentions):
@@ -883,7 +884,8 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
                          "list once (e.g. \"a tower of 3: red, blue, green\")")
     labels = explicit_labels(f)
     if not items and labels:
-        hinted = re.findall(r"\b([A-Z0-9])\s+(?:on|at|as)\s+(?:the\s+)?(bottom|base|top)\b", f.original)
+        hinted = re.findall(r"\b([A-Z0-9])\s+(?:(?:is|goes|sits|(?:should|must|will)\s+be|ends\s+up)\s+)?(?:on|at|as)\s+"
+                            r"(?:the\s+)?(?:very\s+)?(bottom|base|top)\b", f.original)  # "so that T is on top"
         labels = list(labels)
         for lab, _ in hinted:  # "A, B, C and D, D at the bottom": the role names a listed cube again, not a fifth
             if labels.count(lab) > 1:
@@ -905,7 +907,8 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
                          "cube of the sequence, or the count that it has")
     elif 1 <= len(items) < (n or 0) and hints:  # "three blocks high with a yellow block on top"
         used = {c for c, _ in items}
-        items += [(c, None) for c in DEFAULT_COLORS if c not in used][: n - len(items)]
+        filler = [(c, None) for c in DEFAULT_COLORS if c not in used][: n - len(items)]
+        items += filler
     elif len(items) == 1 and set(hints.values()) & {"middle", "center", "centre"}:  # "a tower with blue in the middle"
         used = {c for c, _ in items}
         k = (n or 3) - 1
@@ -932,7 +935,16 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         middle = [items[i] for i, h in role.items() if h == "middle"]
         rest = [it for i, it in enumerate(items) if i not in role]  # by place: a colour may be listed twice
         below = max(0, len(items) // 2 - len(bottom))  # the middle cube at the middle of the whole tower
+        listed = items
         items = bottom + rest[:below] + middle + rest[below:] + top
+        if filler and not middle:  # "four cubes with the two green ones at the bottom": the cubes said where said, the
+            # cubes nobody named (colours of the palette's choosing) anywhere else
+            levels = [-1 if it in filler else i for i, it in enumerate(items)]
+        elif not middle and items != listed and len(rest) >= 2 and not may_order_cubes(
+                re.sub(r"\b(?:so|such)\s+that\b", " ", SEQ_HINT_RE.sub(" ", f.text))):
+            # "stack T, O, P so that O is on top": the role moved a cube the list had elsewhere, so the list is
+            # which cubes, not their order: the roles' places fixed, the rest in any order
+            levels = [i if (i == 0 and bottom) or (i == len(items) - 1 and top) else -1 for i in range(len(items))]
         if middle:  # "a tower of red, blue and green blocks with blue in the middle": the roles, no order
             if len(items) % 2 == 0 or len(middle) > 1:
                 raise ParseError(f"a tower of {len(items)} cubes has no one middle cube; say its place from the bottom")
