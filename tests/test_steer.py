@@ -1313,3 +1313,14 @@ def test_steer_stranger11_silent_errors_are_read_as_meant(tmp_path, base, edits,
 def test_a_count_of_cubes_that_repeat_no_pattern_adds_a_new_colour(tmp_path):
     assert _steered(tmp_path, "Stack a red cube, then a blue cube, then a green cube", "make it four")[-1] \
         == ("tweak", ["stack(red,blue,green,yellow)"])
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # steer_stranger12's silent errors: two labels added in one edit (the second had been dropped); "blue, not pink"
+    # corrects the colour of the cube named (it had recoloured every pink cube as well)
+    ("Sort the digit cubes 5, 2 and 8 from smallest to largest, left to right", ["add also a 0 and a 9 please"],
+     ("extend", ["line[left_to_right](0,2,5,8,9)"])),
+    ("Stack three pink cubes", ["the bottom one should be blue, not pink"], ("tweak", ["stack(blue,pink,pink)"])),
+])
+def test_steer_stranger12_silent_errors_are_read_as_meant(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected

@@ -1548,6 +1548,9 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(r"(?i)\b(behind|in\s+front(?:\s+of\s+it)?|on\s+top|under(?:neath)?|below|above|(?:to\s+the\s+)?(?:left|right)(?:\s+of\s+it)?"
                 r"|next\s+to\s+it|on\s+the\s+(?:left|right))\s*,\s*(?:and\s+)?not\s+(?:behind|in\s+front|on\s+top|under(?:neath)?|below|above"
                 r"|(?:to\s+the\s+|on\s+the\s+)?(?:left|right)|next\s+to)(?:\s+of)?(?:\s+(?:it|of\s+it))?\s*[.!]?\s*$"), r"\1"),
+    # "the bottom one should be blue, not pink": the colour said, the old one denied (a correction, not a negation)
+    (re.compile(rf"(?i)\b({COLOR_RE})\s*,\s*(?:and\s+)?not\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:one|cube|block))?"
+                r"(?=\s*(?:[.!,;]|$))"), r"\1"),
     # "same thing but DOG": the word changed
     (re.compile(r"^\s*(?:(?:the\s+)?same\s+(?:thing|task|again|as\s+before)\s*,?\s*)?but\s+(?:with\s+)?([A-Z]{2,})\s*[.!]?\s*$"),
      r"spell \1 instead"),
