@@ -1324,3 +1324,33 @@ def test_a_count_of_cubes_that_repeat_no_pattern_adds_a_new_colour(tmp_path):
 ])
 def test_steer_stranger12_silent_errors_are_read_as_meant(tmp_path, base, edits, expected):
     assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # steer_stranger12's voices: a substitution said the other way round, a label arrow, "same thing but ...", the
+    # cubes listed in a new order, one cube recoloured while the rest is kept
+    ("Put the red cube and the blue cube in a row", ["instead of the red cube use a green one"], ("tweak", ["line(blue,green)"])),
+    ("Put the red cube on the blue patch", ["instead of the blue patch use a yellow patch"], ("tweak", ["on_patch(red,patch:yellow)"])),
+    ("Spell CAT with letter cubes", ["C -> B"],
+     ("tweak", ["line[left_to_right](B,A,T)", "reads(B,A,T;direction=left_to_right,face=up,text=BAT)"])),
+    ("Line up an orange, a pink and a purple cube from front to back", ["same thing but left to right"],
+     ("modify", ["line[left_to_right](orange,pink,purple)"])),
+    ("Stack three red cubes", ["same thing but on the left"], ("modify", ["stack(red,red,red)@left"])),
+    ("Put the red, green and blue cubes in a row", ["left to right: blue, red, green"],
+     ("modify", ["line[left_to_right](blue,red,green)"])),
+    ("Stack the digit cubes 1, 2 and 3", ["from top to bottom: 2, 1, 3"], ("modify", ["stack(3,1,2)"])),
+    ("Line up a red, a green and a blue cube from left to right", ["keep everything but the middle one make it purple"],
+     ("tweak", ["line[left_to_right](red,purple,blue)"])),
+])
+def test_steer_stranger12_voices(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+@pytest.mark.parametrize("edit,match", [
+    ("left to right: blue, red, yellow", "list each of them once"),  # not the task's cubes
+    ("bottom to top: red, green, blue", "not how a line runs"),
+])
+def test_an_order_that_is_not_the_tasks_cubes_along_its_axis_is_refused(tmp_path, edit, match):
+    fam = Family(create_family(compile_instruction("Put the red, green and blue cubes in a row", tmp_path, name="fam").path).path)
+    with pytest.raises(SteerError, match=match):
+        steer(fam.path, edit)

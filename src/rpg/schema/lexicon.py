@@ -1551,6 +1551,21 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "the bottom one should be blue, not pink": the colour said, the old one denied (a correction, not a negation)
     (re.compile(rf"(?i)\b({COLOR_RE})\s*,\s*(?:and\s+)?not\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:one|cube|block))?"
                 r"(?=\s*(?:[.!,;]|$))"), r"\1"),
+    # "instead of the blue cube use a green one", "instead of blue use orange": the substitution said the other way round
+    (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|so|and|nah|hmm|actually|now)[\s,]+)*instead\s+of\s+(?P<old>(?:the\s+|an?\s+)?(?:{COLOR_RE})"
+                r"(?:\s+(?:cube|block|patch|one)s?)?)\s*,?\s*(?:use|put|take|have|go\s+with|make\s+it)\s+(?P<new>[^,;.!]+?)\s*[.!]?\s*$"),
+     lambda m: "use " + re.sub(r"(?i)\s+one$", " cube", m.group("new")) + " instead of " + m.group("old")),
+    # "keep everything but the middle one make it purple": that cube recoloured, the rest kept ("it" is that cube)
+    (re.compile(rf"(?i)^\s*keep\s+(?:everything|all|the\s+rest)(?:\s+(?:else|the\s+same))?\s*,?\s*(?:but|except)\s+(?:make\s+)?"
+                rf"(the\s+(?:[a-z0-9]+\s+){{0,2}}?(?:one|block|cube))\s*[,:]?\s*(?:make\s+it\s+|should\s+be\s+|is\s+|in\s+|as\s+)?"
+                rf"({COLOR_RE})\s*[.!]?\s*$"), r"make \1 \2"),
+    # "C -> B", "3 => 5": a label cube replaced by another
+    (re.compile(r"^\s*([A-Z0-9])\s*(?:->|\u2192|=>)\s*([A-Z0-9])\s*$"), r"replace the \1 with a \2"),
+    # "same thing but on the left", "same thing but front to back": the task moved, or run the other way
+    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before)\s*,?\s*but\s+(?:on|to|at|in)\s+the\s+"
+                r"(left|right|front|back)(?:\s+side)?(?:\s+of\s+the\s+table)?\s*[.!]?\s*$"), r"move it to the \1 of the table"),
+    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before)\s*,?\s*but\s+(?:going\s+|running\s+|from\s+)?"
+                r"(left\s+to\s+right|right\s+to\s+left|front\s+to\s+back|back\s+to\s+front)\s*[.!]?\s*$"), r"make it \1"),
     # "same thing but DOG": the word changed
     (re.compile(r"^\s*(?:(?:the\s+)?same\s+(?:thing|task|again|as\s+before)\s*,?\s*)?but\s+(?:with\s+)?([A-Z]{2,})\s*[.!]?\s*$"),
      r"spell \1 instead"),

@@ -86,6 +86,7 @@ OP_INTENT = {
     "material": "modify", "ordering": "modify", "reverse": "modify", "outliers": "modify",
     "relabel": "tweak", "swap": "modify", "word": "modify", "colors": "tweak", "structure": "pivot",
     "move": "modify", "pattern": "tweak", "direction": "modify", "keep": "tweak", "region": "modify", "add_layer": "extend",
+    "arrange": "modify",
 }
 """The intent each operation implies; an edit's intent is the strongest of its operations."""
 
@@ -557,9 +558,15 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("count", {"delta": -int(top_n.group(1))}))
     elif rm and _selector(rm.group("sel")):
         ops.append(Op("remove", {"select": _selector(rm.group("sel"))}))
+    arranged = ARRANGED_RE.search(t)
+    if arranged and not any(o.op in ("ordering", "reverse", "pattern", "add", "remove", "recolor") for o in ops):
+        # "left to right: blue, red, green": the task's cubes in that order
+        listed = re.findall(rf"\b(?:{COLOR_RE})\b|\b\d\b", arranged.group("list"))
+        ops.append(Op("arrange", {"items": [{"label": x} if x.isdigit() else {"color": canon_color(x)} for x in listed],
+                                  "way": arranged.group("way").replace(" ", "_")}))
     direction = re.search(r"\b(?:read|reads|go|goes|run|runs|order|arrange\w*|spell\w*|from|it)\s+(?:from\s+)?"
                           r"(left to right|right to left|front to back|back to front)\b", t)
-    if direction and not any(o.op in ("ordering", "reverse") for o in ops):
+    if direction and not any(o.op in ("ordering", "reverse", "arrange") for o in ops):
         ops.append(Op("direction", {"to": direction.group(1).replace(" ", "_")}))
     flat = re.search(r"\b([23])d\b|\b(flat)\b", t)
     if flat:
@@ -920,6 +927,8 @@ def _numbers_of(value) -> set[int]:
         return {abs(value)}
     if isinstance(value, float):
         return {int(value)} if value.is_integer() else set()
+    if isinstance(value, str):  # a digit cube's label ("bottom to top: 3, 1, 2")
+        return {int(value)} if value.isdigit() else set()
     if isinstance(value, dict):
         return {n for v in value.values() for n in _numbers_of(v)} | {len(value["items"])} if "items" in value else \
             {n for v in value.values() for n in _numbers_of(v)}
@@ -971,6 +980,37 @@ def carried_after(spec: TaskSpec, carried, ops: list[Op]):
         if o.op in ("recolor", "relabel") and spec.kind.layered and ("layer" in sel or "position" in sel):
             carried = replace(carried, layers=True)
     return replace(carried, ends=frozenset(ends))
+
+
+ARRANGED_RE = re.compile(rf"^\s*(?:(?:now|ok(?:ay)?|actually|nah|so|and|then)[\s,]+)*(?:(?:put|arrange|order|reorder|line|set)\s+"
+                         rf"(?:them|it|the\s+(?:cubes|blocks))\s+(?:up\s+)?)?(?:from\s+)?(?P<way>left to right|right to left|"
+                         rf"front to back|back to front|bottom to top|top to bottom)\s*[:,]?\s*(?P<list>(?:{COLOR_RE}|\d)"
+                         rf"(?:(?:\s*,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+|\s+then\s+|\s+)(?:{COLOR_RE}|\d))+)\s*[.!]?\s*$")
+"""An edit that lists the task's cubes in a new order ("left to right: blue, red, green",
+"from bottom to top: 3, 1, 2"); the list is the whole order."""
+
+
+def _arranged(spec: TaskSpec, items: list[Item], way: str) -> TaskSpec:
+    """``spec`` with its cubes in the order ``items`` lists them, read ``way`` (a line's
+    direction, or ``bottom_to_top`` / ``top_to_bottom`` of a tower).
+
+    Raises:
+        SteerError: the list is not the task's cubes, or the way is not the structure's axis.
+    """
+    def key(it: Item) -> tuple[str, str]:
+        return (it.color or "", it.label or "")
+
+    if sorted(map(key, items)) != sorted(map(key, spec.items)):
+        raise SteerError(f"the order lists {', '.join(i.phrase() for i in items)}; the task's cubes are "
+                         f"{', '.join(i.phrase() for i in spec.items)}: list each of them once, or say the change first")
+    vertical = way in ("bottom_to_top", "top_to_bottom")
+    if vertical != (spec.structure == "tower") or spec.structure not in ("tower", "line"):
+        raise SteerError(f"'{way.replace('_', ' ')}' is not how a {spec.structure} runs; say the order along it")
+    if way in ("top_to_bottom", "right_to_left", "back_to_front"):
+        items = items[::-1]
+        way = {"top_to_bottom": "bottom_to_top", "right_to_left": "left_to_right", "back_to_front": "front_to_back"}[way]
+    spec = replace(spec.with_items(items), ordering=None, descending=False)
+    return spec if vertical else replace(spec, direction=way, axis=None)
 
 
 def _period(items: list[Item]) -> int | None:
@@ -1058,7 +1098,7 @@ def _fit_structure(spec: TaskSpec, target: str) -> TaskSpec:
 
 
 APPLY_ORDER = ("keep", "region", "structure", "add_layer", "material", "word", "dims", "count", "colors", "remove", "recolor", "relabel", "pattern", "add",
-               "move", "swap", "reverse", "ordering", "direction", "outliers")
+               "move", "swap", "reverse", "ordering", "arrange", "direction", "outliers")
 """Order in which an edit's operations are applied to the spec."""
 
 
@@ -1243,6 +1283,8 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             spec = spec.with_items([moved] + items if at == "bottom" else items + [moved])
             if spec.ordering:
                 spec = replace(spec, ordering=None)
+        elif o.op == "arrange":
+            spec = _arranged(spec, [Item(**it) for it in p["items"]], p["way"])
         elif o.op == "pattern":
             if spec.material != "colors":
                 spec = spec.with_items(_material_items("colors", len(spec.items), []))
