@@ -3057,3 +3057,27 @@ def test_a_tower_end_that_agrees_with_the_relation_is_read():
 ])
 def test_a_symmetric_relation_matches_in_either_order(expected, actual, ok):
     assert matches(expected, actual) is ok
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger18's refusals: labelled headings and a task's quoted name, a reviewer's sign-off, a row's two ends and middle
+    ('Proposal (#212): new eval task "letters in order", cubes A, B, C, D arranged left to right alphabetically.',
+     ["line[left_to_right](A,B,C,D)"]),
+    ("Episode goal (from the dataset card): three pink cubes placed on the orange patch.", ["on_patch(pink,pink,pink,patch:orange)"]),
+    ("Task T3 (Year 2 milestone): three-block tower, order blue-yellow-red from base to top.", ["stack(blue,yellow,red)"]),
+    ("Acceptance criteria: the blue cube ends next to the purple cube. Ship it.", ["next_to(blue,purple)"]),
+    ("A row of three cubes, red in the middle, green on both ends.", ["line[left_to_right](green,red,green)"]),
+    # these two had compiled silently wrong: a made-up blue cube in a row of any order
+    ("A row of three cubes with green on both ends and red in the middle.", ["line[left_to_right](green,red,green)"]),
+    ("A row of three: green at each end and red in the middle.", ["line[left_to_right](green,red,green)"]),
+    # a count said of one colour is that colour's, not the tower's
+    ("Stack both white cubes and the gray cube into one tower with gray on top.", ["stack(white,white,gray)"]),
+    ("Stack 3 yellow cubes and put the 4 cube on top.", ["stack(yellow,yellow,yellow,4)"]),
+])
+def test_stranger18_headings_ends_and_counted_colours(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_tower_counted_as_a_whole_keeps_its_count():  # "a two-cube tower" is the tower's count, not pink's
+    with pytest.raises(ParseError):
+        parse("Make a two-cube tower of pink and cyan with the pink cube both on top and at the bottom.")

@@ -1052,6 +1052,15 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
     # "The final structure shall be a three-level tower ...": the structure said is the goal
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:final|end|goal|target|resulting)\s+(?:structure|configuration|arrangement|state|scene"
                r"|result|layout)\s+(?:shall|should|must|will|has\s+to|is\s+to)\s+be\s+(?=(?:a|an|one)\s)"),
+    # a labelled heading ("Task T3 (Year 2 milestone):", "Episode goal (from the dataset card):", "Proposal (#212):"):
+    # what it heads is the task
+    re.compile(r"^\s*(?:(?:new|proposed)\s+)?(?:proposal|task|episode(?:\s+goal)?|goal|acceptance\s+criteri(?:a|on)|requirement|"
+               r"spec(?:ification)?|ticket|item|entry|milestone|deliverable)\b[^:()\n]{0,30}(?:\([^)\n]{0,60}\))?\s*:\s*"),
+    # "new eval task "letters in order", cubes ...": the task's name, then the task
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:a\s+)?(?:new\s+)?(?:eval(?:uation)?\s+|benchmark\s+)?task\s+(?:called\s+|named\s+)?"
+               r"(?:\"[^\"\n]{1,40}\"|'[^'\n]{1,40}'|\u201c[^\u201d\n]{1,40}\u201d)\s*[,:]\s*"),
+    # "... Ship it.": a reviewer's sign-off says nothing of the cubes
+    re.compile(r"(?:^|(?<=[.!?;]))\s*(?:ship\s+it|lgtm|merge\s+it)\s*[.!]*\s*$"),
     # "Before: cubes scattered. After: ...": a start scattered at random is every task's
     re.compile(r"(?:^|(?<=[.!?;:]\s))before\s*:\s*[^.;]*?\b(?:scattered|random(?:ly\s+placed)?|messy|mixed|jumbled|spread\s+out)\b"
                r"[^.;]*[.;]\s*(?:after\s*:\s*)?"),

@@ -1149,6 +1149,16 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(?:a|an|1|one)\s+({COLOR_RE})\s+(?:cube|block)\s+(?:at|on)\s+(?:each|both|either)\s+ends?\s+"
                 rf"and\s+(\d+)\s+({COLOR_RE})\s+(?:cubes|blocks)\s+(?:in\s+)?between(?:\s+(?:them|those))?\b"),
      lambda m: ": from left to right: " + ", ".join([m.group(1)] + [m.group(3)] * int(m.group(2)) + [m.group(1)])),
+    # "a row of three: green at each end and red in the middle", "..., red in the middle, green on both ends": the two
+    # ends one colour, the middle another (the roles had been dropped: a made-up cube in a row of any order)
+    (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(?:an?\s+|the\s+)?(?P<e>{COLOR_RE})(?:\s+(?:cubes?|blocks?|ones?))?\s+(?:at|on)\s+"
+                rf"(?:each|both|either|the\s+two|2)\s+ends?\s*,?\s+(?:and\s+)?(?:an?\s+|the\s+)?(?P<m>{COLOR_RE})(?:\s+(?:cube|block|one))?"
+                r"\s+(?:in\s+the\s+(?:middle|center|centre)|in\s+between|between\s+them)\b"),
+     r": from left to right: \g<e>, \g<m>, \g<e>"),
+    (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(?:an?\s+|the\s+)?(?P<m>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+in\s+the\s+(?:middle|center"
+                rf"|centre)\s*,?\s+(?:and\s+)?(?:an?\s+|the\s+)?(?P<e>{COLOR_RE})(?:\s+(?:cubes?|blocks?|ones?))?\s+(?:at|on)\s+"
+                r"(?:each|both|either|the\s+two|2)\s+ends?\b"),
+     r": from left to right: \g<e>, \g<m>, \g<e>"),
     # "build a stack of two blue cubes and put the green cube on top", "stack 2 blue cubes with a green one on top":
     # the counted cubes, then the one on top (the count had reached only one of them)
     (re.compile(rf"\b(?:(?:build|make|create|form)\s+a\s+(?:{TOWER_NOUNS})\s+of|stack)\s+(?:the\s+)?(\d+)\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)"

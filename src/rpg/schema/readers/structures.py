@@ -40,6 +40,7 @@ from rpg.schema import clauses
 from rpg.schema.builder import DEFAULT_COLORS, Builder
 from rpg.schema.lexicon import (
     COLOR_RE,
+    COUNT_WORD_RE,
     CUBE_ORDER_RE,
     LAYER_ORDINALS,
     LAYER_ROLE_RE,
@@ -845,6 +846,7 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
             return False
     items: list[tuple[str | None, str | None]] = []
     filler: list[tuple[str, None]] = []  # cubes made up to reach a said count
+    grouped: list[int] = []  # counts said of one colour ("2 white cubes")
     hints: dict[int, str] = {}
     said = stated_count(f, default=None)
     for k, m in enumerate(mentions):
@@ -858,11 +860,16 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
             hints[at] = hint.group(1)  # a colour listed twice: its bottom one is the base, its top one the top
             continue
         count = re.search(r"\b(\d+)\s+$", text[max(0, m.start() - 4): m.start()]) if not m.group("label") else None
+        if count and 1 < int(count.group(1)) <= 6:
+            grouped.append(int(count.group(1)))
         for _ in range(int(count.group(1)) - 1 if count and 1 < int(count.group(1)) <= 6 else 0):
             items.append(item)  # "two blue blocks and one red block on top"
         if hint:
             hints[len(items)] = hint.group(1)
         items.append(item)
+    if said is not None and said in grouped and not re.search(rf"(?<!the )\b(?:\d+|{COUNT_WORD_RE})[- ](?:cubes?|blocks?)\b",
+                                                            f.original.lower()):  # not "a two-cube tower of ..." ("the 4 cube" is a label)
+        said = None  # "stack 2 white cubes and a gray cube": the count is the white cubes', not the tower's
     twice = {i: h for i, h in hints.items() if i < len(items) and items.count(items[i]) > 1 and h in ("bottom", "base", "top")}
     at_ends = all(i == (0 if h in ("bottom", "base") else len(items) - 1) for i, h in hints.items())
     if twice and not at_ends:  # "red, blue, red, blue with blue at the bottom": the end that colour is listed at
