@@ -3081,3 +3081,20 @@ def test_stranger18_headings_ends_and_counted_colours(text, expected):
 def test_a_tower_counted_as_a_whole_keeps_its_count():  # "a two-cube tower" is the tower's count, not pink's
     with pytest.raises(ParseError):
         parse("Make a two-cube tower of pink and cyan with the pink cube both on top and at the bottom.")
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger18's refusals: a region of the table said with "region", a plural colour noun, "too" after a clause,
+    # "between them" of a label, "in bottom", a trailing "between", cubes labelled two labels at once
+    ("Slide the orange cube into the left region.", ["in_region(orange,left)"]),
+    ("Put the red cube in the front left region.", ["in_region(red,front_left)"]),
+    ("A tower of 3 reds.", ["stack(red,red,red)"]),
+    ("Goal state: blue cube on the red patch, green cube on the red patch too.", ["on_patch(blue,green,patch:red)"]),
+    ("Stack the digit cubes so that 1 is at the bottom and 3 is at the top, with 2 between them.", ["stack(1,2,3)"]),
+    ("Make a tower with the cubes green, orange and purple, the green in bottom.", ["stack(green,orange,purple)"]),
+    ("Stack the cubes so the pink one is at the very top and the white one at the very bottom, with gray between.",
+     ["stack(white,gray,pink)"]),
+    ("Put the cube labelled 5 between the cubes labelled 4 and 6.", ["between(5;4,6)"]),
+])
+def test_stranger18_regions_plurals_and_roles(text, expected):
+    assert meaning(parse(text)) == expected

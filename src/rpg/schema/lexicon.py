@@ -669,7 +669,7 @@ def _completed(head: str) -> str:
     return head
 REGION_ANTECEDENT_RE = re.compile(
     rf"\b(?P<c>{COLOR_RE})\s+(?:block|cube|box)\s+(?P<place>(?:in|at|on|to)\s+the\s+(?:far\s+|very\s+)?(?:left|right|front|back|rear|center"
-    r"|centre|middle)(?:\s+(?:side|half|edge|end|part|area|zone))?(?:\s+of\s+the\s+(?:table|workspace))?)\s*,?\s+and\s+"
+    r"|centre|middle)(?:\s+(?:side|half|edge|end|part|area|region|zone))?(?:\s+of\s+the\s+(?:table|workspace))?)\s*,?\s+and\s+"
     rf"(?P<rest>(?:(?:put|place|set|move)\s+)?the\s+(?:{COLOR_RE})\s+(?:block|cube|one)\s+(?:[a-z]+\s+){{0,3}}?)"
     r"(?P<pro>(?:to\s+)?its\s+(?P<side>left|right|front|back)(?:\s+side)?|it)\b(?!\s*(?:'s|is)\b)")
 """A cube placed in a region, then another cube related to "it" ("Put the red cube in the center and

@@ -571,7 +571,7 @@ def apply_corrections(text: str) -> str:
 
 LABEL_ROLE_RE = re.compile(r"(?<![\w.'\-])(?:(?:the\s+)?(?:digit|number|letter)\s+(?P<ll>[a-z0-9])\b|(?P<l>\d|[A-Z]))(?:\s+(?:cube|block))?\s+"
                             r"(?:is\s+|goes\s+|sits\s+|should\s+be\s+|must\s+be\s+)?(?:(?:at|on|in)\s+(?:the\s+)?(?:very\s+)?"
-                            r"(?P<r>bottom|base|top|middle)\b|on\s+(?P<t>top)\b|in\s+(?P<b>between)\b)(?!\s+of\b)")
+                            r"(?P<r>bottom|base|top|middle)\b|on\s+(?P<t>top)\b|in\s+(?P<b>between)\b|(?P<b2>between)\s+(?:them|those)\b)(?!\s+of\b)")
 """A label cube given its place in a tower ("9 at the bottom", "3 is on top", "2 in between")."""
 _ROLE_RANK = {"bottom": 0, "base": 0, "middle": 1, "between": 1, "top": 2}
 
@@ -592,7 +592,7 @@ def _label_tower_roles(text: str) -> str:
     found = list(LABEL_ROLE_RE.finditer(text))
     if not found:
         return text
-    ranks = [_ROLE_RANK[m.group("r") or m.group("t") or m.group("b")] for m in found]
+    ranks = [_ROLE_RANK[m.group("r") or m.group("t") or m.group("b") or m.group("b2")] for m in found]
     labels = [(m.group("ll") or m.group("l")).upper() for m in found]
     label_re = r"(?<![\w.])(?:\d|[A-Z])(?![\w.])|\b(?:letter|digit|number)\s+[a-z0-9]\b"
     said = text[:found[0].start()] + " " + text[found[-1].end():]
@@ -797,6 +797,16 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     # "two cubes gray and the cube brown": a counted colour after its noun (Russian, Spanish habits)
     text = re.sub(rf"\b(\d+|{lexicon.COUNT_WORD_RE})\s+(cubes|blocks)\s+({COLOR_RE})s?\b(?!\s*(?:cubes?|blocks?|ones?|patch(?:es)?)\b|\s*,\s*(?:{COLOR_RE})\b|\s+(?:{COLOR_RE})\b)",
                   r"\1 \3 \2", text)  # the colour may agree in number ("the two cubes oranges", French and Spanish)
+    # "..., green cube on the red patch too": a clause said as well as the others, as every clause of a goal is
+    text = re.sub(r"(?<=\w)\s*,?\s+(?:too|as\s+well)\s*(?=[.;!]|$)", "", text)
+    # "between the cubes labelled 4 and 6": each label its own cube
+    text = re.sub(r"\bthe\s+(cube|block)s\s+(labell?ed|marked|with)\s+([a-z0-9])\s*(?:,\s*|\s+and\s+)([a-z0-9])\b",
+                  r"the \1 \2 \3 and the \1 \2 \4", text)
+    # "the green in bottom", "with gray between.": a role said without its article or its "in" (non-native habits)
+    text = re.sub(r"\b(?:in|at|on)\s+bottom\b", "at the bottom", text)
+    text = re.sub(r"(?<!\bin )\bbetween(?=\s*(?:[.;!]|$))", "in between", text)
+    # "a tower of 3 reds", "two greens and a blue": a counted colour said as a plural noun
+    text = re.sub(rf"\b(\d+|{lexicon.COUNT_WORD_RE})\s+({COLOR_RE})s\b(?!\s*(?:cubes?|blocks?|ones?|patch(?:es)?)\b)", r"\1 \2 cubes", text)
     # "the corner back right", "the part front of the table": a place's words after its noun (Spanish, French)
     text = re.sub(r"\bthe\s+(corner|side|part|edge)\s+((?:front|back|rear)(?:[\s-]+(?:left|right))?|left|right)\b", r"the \2 \1", text)
     # "tower | top: pink | bottom: gray", "red / white / red / white": a table row's or a list's separators
@@ -1488,6 +1498,7 @@ def mark_regions(text: str) -> str:
     def sub(m: re.Match) -> str:
         corner = "corner" in m.group("part")
         edge = "edge" in m.group("part")  # "near the front edge": a side of the table, not of a cube
+        edge = edge or bool(re.search(r"area|region|zone", m.group("part")))  # "in the back region": of the table, too
         word = m.group("lr") or m.group("lr2")
         bare_center = (word in ("center", "centre", "middle") and m.group(0).split()[0] in ("in", "at", "to", "into")  # "in the center"
                        and not names_a_role(m.string[:m.start()], m.string))

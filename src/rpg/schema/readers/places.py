@@ -35,7 +35,7 @@ from rpg.schema.structures import STRUCTURE_RE
 MOVE_TO_REGION_RE = re.compile(
     rf"(?:go\s+)?(?:place|put|move|push|slide|sweep|shift|bring|set|drop)\s+(?:(?P<p>left|right)\s+)?the\s+(?P<c>{COLOR_RE})\s+"
     r"(?:block|cube|box)(?:\s+(?:to|into|onto|on|in|at)\s+the\s+(?:far\s+|very\s+)?(?:(?P<fb>front|back|rear)\s+)?(?P<d>left|right|center|centre|middle|front|back)"
-    r"(?:\s+(?:hand\s+)?(?:side|half|part|edge|end|area|zone|corner))?(?:\s+of\s+the\s+(?:table|workspace))?)?\s*[.!]?")
+    r"(?:\s+(?:hand\s+)?(?:side|half|part|edge|end|area|region|zone|corner))?(?:\s+of\s+the\s+(?:table|workspace))?)?\s*[.!]?")
 
 
 @reader(order=10)
