@@ -1354,3 +1354,29 @@ def test_an_order_that_is_not_the_tasks_cubes_along_its_axis_is_refused(tmp_path
     fam = Family(create_family(compile_instruction("Put the red, green and blue cubes in a row", tmp_path, name="fam").path).path)
     with pytest.raises(SteerError, match=match):
         steer(fam.path, edit)
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # steer_stranger12's refusals: a two-cube task turned around without saying how, a word said by "let's do", a
+    # return to the start, a size that "is enough", one more pair of a pattern
+    ("Put the red cube behind the blue cube", ["flip it"], ("modify", ["behind(blue,red)"])),
+    ("Put the red cube in the back and the blue cube in the front", ["nah, other way round"],
+     ("modify", ["in_region(blue,back)", "in_region(red,front)"])),
+    ("Spell DOG with the letter cubes", ["nah, let's do GOD"],
+     ("modify", ["line[left_to_right](G,O,D)", "reads(G,O,D;direction=left_to_right,face=up,text=GOD)"])),
+    ("Stack four cubes: red at the bottom, then orange, then yellow, then green on top", ["make it blue", "back to how it was at the start"],
+     ("tweak", ["stack(red,orange,yellow,green)"])),
+    ("Lay out a 2 by 3 grid of yellow cubes", ["2x2 is enough"], ("tweak", ["grid(2x2:yellow,yellow,yellow,yellow)"])),
+    ("Put two red cubes and two blue cubes in a row, alternating colours, starting with red on the left", ["one more pair pls"],
+     ("extend", ["line[left_to_right](red,blue,red,blue,red,blue)"])),
+    ("Stack three red cubes", ["add one more cube at the bottom"], ("extend", ["stack(red,red,red,red)"])),
+])
+def test_steer_stranger12_turnarounds_and_sizes(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+def test_a_tower_counted_with_its_colour_keeps_another_cube_apart():  # the blue cube had joined the tower
+    from rpg.schema.meaning import meaning
+
+    assert meaning(parse("Build a tower of two red blocks and put the blue block in the back right corner")) == [
+        "in_region(blue,back_right)", "stack(red,red)"]

@@ -1568,6 +1568,18 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"(?i)^\s*keep\s+(?:everything|all|the\s+rest)(?:\s+(?:else|the\s+same))?\s*,?\s*(?:but|except)\s+(?:make\s+)?"
                 rf"(the\s+(?:[a-z0-9]+\s+){{0,2}}?(?:one|block|cube))\s*[,:]?\s*(?:make\s+it\s+|should\s+be\s+|is\s+|in\s+|as\s+)?"
                 rf"({COLOR_RE})\s*[.!]?\s*$"), r"make \1 \2"),
+    # "nah, let's do GOD": the word spelled instead
+    (re.compile(r"^\s*(?:(?:(?i:nah|no|ok(?:ay)?|hmm|actually|then))[\s,]+)*(?i:let'?s\s+(?:do|go\s+with|try)|do|try|go\s+with|how\s+about)"
+                r"\s+([A-Z]{2,})\s*(?i:instead)?\s*[.!?]?\s*$"), r"spell \1 instead"),
+    # "back to how it was at the start": the first version
+    (re.compile(r"(?i)^\s*(?:(?:nah|no|ok(?:ay)?|hmm|actually)[\s,]+)*(?:(?:go|going|get)\s+)?back\s+to\s+(?:how|what)\s+it\s+"
+                r"(?:was|looked)\s+(?:at\s+the\s+(?:start|beginning)|originally|at\s+first|in\s+the\s+beginning)\s*[.!]?\s*$"),
+     "go back to the original"),
+    # "2x2 is enough", "3 by 3 would be better": that size
+    (re.compile(r"(?i)^\s*(\d+\s*(?:x|by)\s*\d+)\s+(?:is|would\s+be|will\s+be|should\s+be)\s+(?:enough|fine|plenty|better|good|ok(?:ay)?)"
+                r"\b\s*[.!]?\s*$"), r"make it \1"),
+    # "one more pair pls": two more cubes (a pattern goes on: :func:`rpg.steer.edits._resize`)
+    (re.compile(r"(?i)^\s*(?:(?:add|and)\s+)?(?:one|1|another)\s+more\s+pair\b"), "add 2 more blocks"),
     # "C -> B", "3 => 5": a label cube replaced by another
     (re.compile(r"^\s*([A-Z0-9])\s*(?:->|\u2192|=>)\s*([A-Z0-9])\s*$"), r"replace the \1 with a \2"),
     # "same thing but on the left", "same thing but front to back": the task moved, or run the other way

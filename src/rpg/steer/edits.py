@@ -1243,8 +1243,10 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             grow = spec
             for _ in range(p.get("count") or 0):
                 unused = [c for c in GRADIENT_ORDER if c not in grow.colors()]
-                alike = len(set(spec.items)) == 1 and spec.items[0].label is None  # "add one more" to cubes all alike: one more of them
-                item = Item(color=unused[0]) if spec.ordering == "color" and unused else spec.items[0] if alike else _next_item(grow)
+                period = _period(list(grow.items)) if all(it.label is None for it in grow.items) else None
+                # "add one more" to cubes all alike: one more of them; to cubes that repeat a pattern: the pattern goes on
+                item = (Item(color=unused[0]) if spec.ordering == "color" and unused else
+                        grow.items[len(grow.items) % period] if period and (period == 1 or p.get("at") != "bottom") else _next_item(grow))
                 new.append(item)
                 grow = grow.with_items(list(grow.items) + [item])
             at = p.get("at")

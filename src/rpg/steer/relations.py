@@ -50,6 +50,13 @@ ADDS_RE = re.compile(rf"\b(?:add|another|new|extra|more|one more|also)\b|\ban? (
 """An edit that brings in a cube (an Extend): not a change of the relation."""
 
 
+FLIPPED = (r"^\s*(?:(?:nah|no|hmm|ok(?:ay)?|actually|now)[\s,]+)*flip\s+(?:it|them|that)\s*$"
+           r"|^\s*(?:(?:nah|no|hmm|ok(?:ay)?|actually|now)[\s,]+)*(?:(?:do\s+it|have\s+it|make\s+it|put\s+them)\s+)?(?:the\s+)?"
+           r"other\s+way\s+(?:a)?round\s*$")
+"""An edit that turns a two-cube task around without naming how ("flip it", "nah, other way
+round"): the two cubes trade their roles."""
+
+
 TABLE_PLACE_RE = re.compile(r"\b(?:of|on|in)\s+the\s+(?:table|workspace)\b|\bcorner\b")
 """A place on the table: an edit that names one moves cubes there, it relates them to no cube."""
 
@@ -127,7 +134,7 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         return (f"Stack {_phrase(schema, subject)} on {_phrase(schema, obj)}, then place {_phrase(schema, subject)} {where}, "
                 f"then place {_phrase(schema, obj)} {where}"), "modify"
     if re.search(r"\b(?:swap|switch|exchange|trade)\b.*\b(?:them|places|positions|roles|blocks|cubes|the two)\b"
-                 r"|^\s*(?:\w+\s+){0,2}?reverse\s+the\s+order\s*$", t):  # "other way round"
+                 r"|^\s*(?:\w+\s+){0,2}?reverse\s+the\s+order\s*$|" + FLIPPED, t):  # "other way round", "flip it"
         subject, obj = obj, subject
         kind = rel.kind
     elif re.search(r"\b(?:other|opposite)\s+side\b", t):
@@ -389,7 +396,7 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         else:
             return None
         intent = "extend"
-    elif re.search(r"\b(?:swap|switch|exchange|trade)\b", t) and len(placed) == 2:
+    elif re.search(r"\b(?:swap|switch|exchange|trade)\b|^\s*reverse\s+the\s+order\s*$|" + FLIPPED, t) and len(placed) == 2:
         placed = [(placed[0][0], placed[1][1]), (placed[1][0], placed[0][1])]
         intent = "modify"
     elif region is not None and named and not set(named) & set(colors):  # a cube the task does not have

@@ -48,6 +48,7 @@ from rpg.schema.lexicon import (
     LISTED_ROW_LAYER,
     LISTED_ROW_RE,
     ORDER_WORDS,
+    TOWER_NOUNS,
 )
 from rpg.schema.readers.common import (
     DESCRIBED_TOWER_RE,
@@ -868,7 +869,9 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
             hints[len(items)] = hint.group(1)
         items.append(item)
     if said is not None and said in grouped and not re.search(rf"(?<!the )\b(?:\d+|{COUNT_WORD_RE})[- ](?:cubes?|blocks?)\b",
-                                                            f.original.lower()):  # not "a two-cube tower of ..." ("the 4 cube" is a label)
+                                                            f.original.lower()) \
+            and not re.search(rf"\b(?:{TOWER_NOUNS})\s+of\s+{said}\b", f.text):  # not "a two-cube tower of ...", "a tower of 2
+        # red blocks and put the blue block ..." ("the 4 cube" is a label)
         said = None  # "stack 2 white cubes and a gray cube": the count is the white cubes', not the tower's
     twice = {i: h for i, h in hints.items() if i < len(items) and items.count(items[i]) > 1 and h in ("bottom", "base", "top")}
     at_ends = all(i == (0 if h in ("bottom", "base") else len(items) - 1) for i, h in hints.items())
