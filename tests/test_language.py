@@ -3098,3 +3098,20 @@ def test_a_tower_counted_as_a_whole_keeps_its_count():  # "a two-cube tower" is 
 ])
 def test_stranger18_regions_plurals_and_roles(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # colours left free for cubes nobody names by colour (had been refused as a contradiction with the named cube)
+    ("Put two cubes on top of the purple cube, any colours.", "a tower of purple, red, blue in any order, with purple at the bottom"),
+    ("Stack three cubes with yellow at the bottom; the other two can be anything.",
+     "a tower of yellow, red, blue in any order, with yellow at the bottom"),
+    # "two cubes on top of the purple cube" had compiled one red cube on it (silently wrong)
+    ("Put two cubes on top of the purple cube.", "a tower of purple, red, blue in any order, with purple at the bottom"),
+])
+def test_cubes_nobody_names_stand_anywhere_in_any_colour(text, expected):
+    assert parse(text).goal_summary == expected
+
+
+def test_colours_left_free_of_cubes_all_named_by_colour_are_refused():
+    with pytest.raises(Inexpressible, match="leaves the colours free"):
+        parse("Put the red cube left of the blue cube. Colours don't matter.")

@@ -702,7 +702,11 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.ANY_ORDER_RE.sub(" in any order", text)  # before "doesn't" is refused as a negation
     text = lexicon.HARMLESS_NEGATION_RE.sub("", text)
     for m in lexicon.FREE_CHOICE_RE.finditer(text):  # "put the red cube left of the blue cube. colours don't matter"
-        if re.search(r"colou?r", m.group(0)) and re.search(rf"\b(?:{COLOR_RE})\b", text[:m.start()] + text[m.end():]):
+        rest = text[:m.start()] + text[m.end():]
+        unnamed = re.search(rf"\b(?:\d+|{lexicon.COUNT_WORD_RE}|some|other|remaining)\s+(?:more\s+)?(?:cubes|blocks|ones)\b(?!\s+of\b)"
+                            rf"|\b(?:a|an|any|one)\s+(?:cube|block)\b", re.sub(rf"\b(?:\d+|{lexicon.COUNT_WORD_RE})\s+(?:{COLOR_RE})\b", " ", rest))
+        if re.search(r"colou?r", m.group(0)) and re.search(rf"\b(?:{COLOR_RE})\b", rest) and not unnamed:
+            # (with cubes nobody names by colour, "any colours" is theirs: "put two cubes on the purple cube, any colours")
             raise Inexpressible("contradiction", [m.group(0).strip(" ,;(\u2013\u2014-")], "leaves the colours free, but the "
                                 "instruction names its cubes by colour, which is how the goal tells them apart; say one of "
                                 "the two", original)
@@ -1193,6 +1197,10 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     (re.compile(rf"(?P<lead>\s*[:,;]\s*)(?P<low>{_LIST2})\s+(?:below|beneath|underneath|(?:at|on)\s+the\s+bottom)\s*[,;]?\s*(?:and\s+)?"
                 rf"(?P<high>{_LIST2})\s+(?:above|on\s+top|at\s+the\s+top)\b"),
      r"\g<lead>bottom layer \g<low>; top layer \g<high>"),
+    # "put two cubes on top of the purple cube": a tower on it of cubes nobody named (the count had reached one cube)
+    (re.compile(rf"\b(?:put|place|stack|set|add)\s+([2-5])\s+(?:other\s+|more\s+)?(?:cubes|blocks)\s+(?:on\s+top\s+of|on|onto|atop)\s+"
+                rf"the\s+({COLOR_RE})\s+(?:cube|block)\b"),
+     lambda m: f"build a tower of {int(m.group(1)) + 1} cubes with the {m.group(2)} cube at the bottom"),
     # "put one yellow cube on each of the two blue cubes": a two-cube tower on each of them
     (re.compile(rf"\b(?:put|place|set|stack|add)\s+(?:a|an|1)\s+({COLOR_RE})\s+(?:cube|block|brick)\s+(?:on\s+top\s+of|on|onto|atop)\s+"
                 rf"(?:each|every)\s+(?:one\s+)?of\s+(?:the\s+)?(\d+)\s+({COLOR_RE})\s+(?:cubes|blocks|bricks)\b"),
