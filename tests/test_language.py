@@ -3115,3 +3115,13 @@ def test_cubes_nobody_names_stand_anywhere_in_any_colour(text, expected):
 def test_colours_left_free_of_cubes_all_named_by_colour_are_refused():
     with pytest.raises(Inexpressible, match="leaves the colours free"):
         parse("Put the red cube left of the blue cube. Colours don't matter.")
+
+
+@pytest.mark.parametrize("text,expected", [
+    # the names of what is being written are no part of the goal
+    ("far task: the red cube should be far from the green cube.", ["far_from(green,red)"]),
+    ("Hi! For this experiment the robot should place the brown block on top of the white block.", ["stack(white,brown)"]),
+    ("Hey - quick one: the eval I need is just the brown cube moved to the front of the table.", ["in_region(brown,front)"]),
+])
+def test_what_the_writer_calls_the_task_is_ignored(text, expected):
+    assert meaning(parse(text)) == expected

@@ -46,9 +46,11 @@ help wood wooden plastic properly securely stably steadily safely accurately com
 basically essentially literally honestly yo hello ty thx hiya howdy asap today tonight morning afternoon evening fine
 quick quickly haha lol good love exercise cheers tbh imo itself kindly tomorrow tmrw tmr
 someone somebody anyone anybody everyone everybody friends guys folks buddy boys girls kids children
+task episode eval evaluation benchmark dataset proposal experiment
 """.split())
 """Further words with no meaning for the goal, each checked not to change what a task asks:
-hedges ("maybe"), wishes ("I need", "we'll", "let's"), praise ("nice"), who is addressed ("boys and
+the names of what is being written ("new eval task:", "for this experiment": every task
+is an evaluation task, checked at the end of its episode), hedges ("maybe"), wishes ("I need", "we'll", "let's"), praise ("nice"), who is addressed ("boys and
 girls", "can someone ..."), "anywhere", "lay it
 flat" (every cube rests on a face), a cube's material ("the red wooden block": every cube is
 the same, and G never reads it). Dropped by :func:`rpg.schema.reading.normalize`; the task's
