@@ -493,14 +493,19 @@ def _tied(leaf: P.Predicate, goal: P.Predicate) -> bool:
 
 
 def _anchor(leaf: P.Predicate, reading: _Reading) -> tuple[P.Predicate, P.Predicate] | None:
-    """(leaf, its anchored form) for an ordered stack whose named cubes all stand at its
-    ends: each keeps its end, the order of the others is dropped; None otherwise."""
+    """(leaf, its weakened form) for an ordered stack of some named cubes and some nobody named: named
+    cubes that all stand at its ends each keep their end (an anchored stack); named cubes elsewhere keep
+    their levels (an unordered stack in layers); the order of the others is dropped. None otherwise."""
     if type(leaf) is not P.Stack or len(leaf.objects) < 3:
         return None
     objs = leaf.objects
     named = [i for i, n in enumerate(objs) if n in reading.scene.cubes and reading.named(reading.scene.d(n))]
-    if not named or any(0 < i < len(objs) - 1 for i in named):
+    if not named or len(named) == len(objs):
         return None
+    if any(0 < i < len(objs) - 1 for i in named):  # "four cubes with the two green ones at the bottom": the named
+        # cubes keep their levels, the others stand anywhere above or between them
+        levels = tuple(i if i in named else -1 for i in range(len(objs)))
+        return leaf, P.And([P.UnorderedStack(objects=objs), P.InLayers(objects=objs, levels=levels)])
     return leaf, P.AnchoredStack(objects=objs, bottom=0 in named, top=len(objs) - 1 in named)
 
 

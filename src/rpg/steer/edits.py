@@ -477,7 +477,7 @@ def read_ops(t: str) -> list[Op]:
         r"\b(?P<verb>add|append|include|put|place|stack|set)\b(?P<what>.*?)(?P<where>\bon top\b|\b(?:at|to|on) (?:the )?(?:very |far )?(?:(?:left|right|front|back) end|top|bottom|base|end|start|beginning)\b|"
         r"\b(?:under|underneath|beneath|below)\b|\bto the (?:left|right|end|start)\b|\bon the (?:left|right)\b|\bon(?:to)?(?= (?:the|it|them|that)\b)(?! the table\b)"
         r"|\bon(?:to)?(?= (?:letter|digit) [a-z0-9]\b)"
-        rf"|[;,.]|\band\b(?!\s+(?:an?\s+|the\s+)?(?:[a-z0-9]|{COLOR_RE})\b(?!\s+(?:on|to|at|under|next|beside)\b))|$)", t)  # "add a 0 and a 9"
+        rf"|[;,.]|\band\b(?!\s+an?\s+(?:(?:digit|letter|number)\s+)?(?:[a-z0-9]|{COLOR_RE})\b(?!\s+(?:on|to|at|under|next|beside)\b))|$)", t)  # "add a 0 and a 9"
     add = next((a for a in adds if _adds_a_cube(a, t)), None)
     if add:
         what = add.group("what")

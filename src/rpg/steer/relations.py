@@ -375,8 +375,10 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     if region is None and bare:  # "now the right side": the place alone
         region = _edit_region(f" to {bare.group(1)} ")
     added = re.search(rf"\b(?:add|put|place)\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b(.*)", t) or (
-        EDIT_ADDITIVE_RE.search(t) and re.search(rf"\b(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube|one)\b(.*)", t))
-    # "now a green one too, in the front right": a cube the edit brings in, as well
+        EDIT_ADDITIVE_RE.search(t) and re.search(rf"\b(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube|one)\b(.*"
+                                                 r"\b(?:front|back|rear|corner|half|side|edge|center|centre|middle|table|workspace)\b.*)", t))
+    # "now a green one too, in the front right": a cube the edit brings in, as well, at a place of the table (a bare
+    # "on the right" may be the red cube's right: left to the checks below)
     named = [canon_color(c) for c in re.findall(rf"\bthe ({COLOR_RE}) (?:block|cube|one)\b", t)]
     colors = [c for c, _ in placed]
     extra = ""

@@ -846,8 +846,8 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         if SEQ_RELATION_RE.search(text[a.end():c.start()]):
             return False
     items: list[tuple[str | None, str | None]] = []
-    filler: list[tuple[str, None]] = []  # cubes made up to reach a said count
     grouped: list[int] = []  # counts said of one colour ("2 white cubes")
+    filled = False
     hints: dict[int, str] = {}
     said = stated_count(f, default=None)
     for k, m in enumerate(mentions):
@@ -917,8 +917,8 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
                          "cube of the sequence, or the count that it has")
     elif 1 <= len(items) < (n or 0) and hints:  # "three blocks high with a yellow block on top"
         used = {c for c, _ in items}
-        filler = [(c, None) for c in DEFAULT_COLORS if c not in used][: n - len(items)]
-        items += filler
+        items += [(c, None) for c in DEFAULT_COLORS if c not in used][: n - len(items)]
+        filled = True  # cubes nobody named: the reverse accounting frees them (:mod:`rpg.schema.citations`)
     elif len(items) == 1 and set(hints.values()) & {"middle", "center", "centre"}:  # "a tower with blue in the middle"
         used = {c for c, _ in items}
         k = (n or 3) - 1
@@ -947,13 +947,11 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         below = max(0, len(items) // 2 - len(bottom))  # the middle cube at the middle of the whole tower
         listed = items
         items = bottom + rest[:below] + middle + rest[below:] + top
-        if filler and not middle:  # "four cubes with the two green ones at the bottom": the cubes said where said, the
-            # cubes nobody named (colours of the palette's choosing) anywhere else
-            levels = [-1 if it in filler else i for i, it in enumerate(items)]
-        elif not middle and items != listed and len(rest) >= 2 and not may_order_cubes(
+        if not middle and not filled and items != listed and len(rest) >= 2 and all(lab for _, lab in items) and not may_order_cubes(
                 re.sub(r"\b(?:so|such)\s+that\b", " ", SEQ_HINT_RE.sub(" ", f.text))):
             # "stack T, O, P so that O is on top": the role moved a cube the list had elsewhere, so the list is
-            # which cubes, not their order: the roles' places fixed, the rest in any order
+            # which cubes, not their order: the roles' places fixed, the rest in any order (listed colours are
+            # freed the same way by :func:`rpg.schema.readers.free_listed_orders`)
             levels = [i if (i == 0 and bottom) or (i == len(items) - 1 and top) else -1 for i in range(len(items))]
         if middle:  # "a tower of red, blue and green blocks with blue in the middle": the roles, no order
             if len(items) % 2 == 0 or len(middle) > 1:
