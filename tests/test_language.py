@@ -3124,3 +3124,20 @@ def test_colours_left_free_of_cubes_all_named_by_colour_are_refused():
 ])
 def test_what_the_writer_calls_the_task_is_ignored(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger19's silent errors: the goal's "both cubes" are the start's (a blue cube had been made up); a start said as
+    # what the robot starts with (it had become part of the goal); "two cubes of any colour go on top of" (one cube)
+    ("Initial state: yellow on red. Goal: both cubes on the table, side by side.", ["next_to(red,yellow)", "start:stack(red,yellow)"]),
+    ("Initially yellow is on white. Put the cubes side by side.", ["next_to(white,yellow)", "start:stack(white,yellow)"]),
+    ("The robot starts with the white cube on the black cube and has to move the white cube onto the pink patch.",
+     ["on_patch(white,patch:pink)", "start:stack(black,white)"]),
+])
+def test_stranger19_starts_and_their_cubes(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_counted_cubes_of_any_colour_on_a_cube_are_a_tower_on_it():
+    assert parse("Two cubes of any colour go on top of the black cube.").goal_summary == \
+        "a stack of black, red, blue with black at the bottom, the rest in any order"

@@ -53,7 +53,7 @@ STRANGER_SETS = {
     "stranger16": ("stranger16.yaml", "STRANGER set 16 (stranger16.yaml, development material)"),
     "stranger17": ("stranger17.yaml", "STRANGER set 17 (stranger17.yaml, development material)"),
     "stranger18": ("stranger18.yaml", "STRANGER set 18 (stranger18.yaml, development material)"),
-    "stranger19": ("stranger19.yaml", "STRANGER set 19 (stranger19.yaml, written mid-session; aggregates only until the session's end)"),
+    "stranger19": ("stranger19.yaml", "STRANGER set 19 (stranger19.yaml, development material)"),
 }
 SPLITS = HERE / "splits.yaml"
 

@@ -1198,7 +1198,8 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
                 rf"(?P<high>{_LIST2})\s+(?:above|on\s+top|at\s+the\s+top)\b"),
      r"\g<lead>bottom layer \g<low>; top layer \g<high>"),
     # "put two cubes on top of the purple cube": a tower on it of cubes nobody named (the count had reached one cube)
-    (re.compile(rf"\b(?:put|place|stack|set|add)\s+([2-5])\s+(?:other\s+|more\s+)?(?:cubes|blocks)\s+(?:on\s+top\s+of|on|onto|atop)\s+"
+    (re.compile(rf"\b(?:(?:put|place|stack|set|add)\s+)?([2-5])\s+(?:other\s+|more\s+)?(?:cubes|blocks)(?:\s+of\s+any\s+colou?rs?)?\s+"
+                r"(?:(?:go|sit|stand|are|(?:must|should|will|have\s+to)\s+(?:go|be|sit|stand|end\s+up))\s+)?(?:on\s+top\s+of|on|onto|atop)\s+"
                 rf"the\s+({COLOR_RE})\s+(?:cube|block)\b"),
      lambda m: f"build a tower of {int(m.group(1)) + 1} cubes with the {m.group(2)} cube at the bottom"),
     # "put one yellow cube on each of the two blue cubes": a two-cube tower on each of them

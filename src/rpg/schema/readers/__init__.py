@@ -244,7 +244,8 @@ def parse(instruction: str, _framed: bool = False) -> TaskSchema:
                          "is checked at the end of the episode; add it (e.g. \"... Put the red cube on the table.\")")
     if scene is not None:
         try:
-            return initial.attach(initial.on_table_goal(scene) or parse(scene.goal), scene, instruction)
+            named = initial.with_start_cubes(scene)  # "Initially yellow is on red. Put both cubes side by side."
+            return initial.attach(initial.on_table_goal(scene) or parse(named.goal), scene, instruction)
         except BadInput as exc:  # read as written below, where a reader may read the start itself ("... starts on ...;
             goal_gap = exc       # move it to the table"); a reading as written with no start is refused below
     schema = _read(instruction)

@@ -46,6 +46,13 @@ STARTS_CLAUSE_RE = re.compile(
 """A cube said to start on another, then what it must do ("The pink cube starts stacked on the grey
 cube and must end up on the table"): the subject is carried into the goal's clause."""
 
+ROBOT_STARTS_RE = re.compile(
+    rf"(?i)^\s*(?:the\s+)?(?:robot|arm|agent|policy|episode|scene|task)\s+(?:starts|begins)\s+with\s+(?P<fact>(?:the\s+)?(?:{COLOR_RE})"
+    rf"(?:\s+(?:cube|block))?\s+(?:on\s+top\s+of|on|atop)\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?)\s*,?\s+(?:and\s+|but\s+)?"
+    r"(?:(?:it\s+)?(?:has\s+to|must|should|needs\s+to|is\s+to|is\s+asked\s+to)\s+)(?P<goal>.+)$")
+"""A start said as what the robot starts with ("The robot starts with the white cube on the black
+cube and has to move the white cube onto the pink patch"): read as "Initially ... . <goal>"."""
+
 GOAL_OPENER_RE = re.compile(r"(?i)^\s*(?:(?:the\s+)?(?:goal|target|task|objective)\s*(?:is\s*(?:to\s+)?|:|-|\u2014)"
                             r"|then\s*,?|now\s*,?|your\s+task\s*(?:is\s+to|:)|(?:at|in)\s+the\s+end\s*[,:]?|finally\s*,?"
                             r"|success(?:\s+(?:when|if))?\s*:?)\s*")
@@ -190,6 +197,7 @@ def split(instruction: str) -> InitialScene | None:
         instruction = pattern.sub(written, instruction)
     instruction = re.sub(r"^\s*[A-Za-z][\w\-]*(?:\s+[\w\-]+){0,3}?\s*(?:\([^)]{0,30}\))?\s*:\s*(?=\S)(?=.*\b(?:starts|initially)\b)", "",
                          instruction.strip())  # "# goal (unstack): the pink cube starts ...": its label
+    instruction = ROBOT_STARTS_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     unstack = _UNSTACK_RE.match(instruction.strip())
     if unstack:
         stacks = _facts((unstack.group("a") or unstack.group("b")).replace("-", " "))
@@ -228,6 +236,30 @@ ALL_ON_TABLE_GOAL_RE = re.compile(
     r"|go|stay)\s+)?(?:(?:flat|back|down)\s+)?(?:on|onto)\s+the\s+table\s*[.!]?$")
 """A goal that sends every cube the start stacks to the table ("both cubes sit on the table",
 "put all the blocks on the table"): each cube a stack holds above another on the table."""
+
+
+START_CUBES_RE = re.compile(r"(?i)\b(?:both(?:\s+(?:of\s+the\s+)?(?:cubes|blocks))?|the\s+(?:(?:two|three|four|2|3|4)\s+)?(?:cubes|blocks)"
+                            r"|all\s+(?:the\s+)?(?:(?:two|three|four|2|3|4)\s+)?(?:cubes|blocks)|(?:two|three|four|2|3|4)\s+(?:cubes|blocks))\b")
+"""The goal's words for the cubes the start describes ("both cubes", "the cubes", "all three cubes")."""
+
+
+def with_start_cubes(scene: InitialScene) -> InitialScene:
+    """``scene`` with a goal that names no cube by colour or label, but says "both cubes" / "the
+    cubes", naming the start's cubes instead ("Initial state: yellow on red. Goal: both cubes on
+    the table, side by side" -> "the yellow cube and the red cube on the table, side by side"):
+    those words are the start's cubes (the goal had been read with cubes of its own: silently
+    wrong).  ``scene`` itself when the goal names a cube, or says a count the start does not have."""
+    cubes = [c for st in scene.stacks for c in st]
+    m = START_CUBES_RE.search(scene.goal)
+    if m is None or re.search(rf"(?i)\b(?:{COLOR_RE})\b|\b(?:letter|digit|number)\b|(?<![\w'])[A-Z0-9](?![\w'])", scene.goal):
+        return scene
+    said = re.search(r"(?i)\b(two|three|four|2|3|4|both)\b", m.group(0))
+    count = {"both": 2, "two": 2, "three": 3, "four": 4}.get(said.group(1).lower(), None) if said else None
+    if said and (count or int(said.group(1))) != len(cubes):
+        return scene
+    named = " and ".join(f"the {c} cube" for c in cubes[:-1]) + ("," if len(cubes) > 2 else "") + f" and the {cubes[-1]} cube"
+    named = named if len(cubes) > 1 else f"the {cubes[0]} cube"
+    return InitialScene(scene.stacks, scene.goal[:m.start()] + named + scene.goal[m.end():])
 
 
 def on_table_goal(scene: InitialScene) -> TaskSchema | None:
