@@ -1529,6 +1529,10 @@ INTENSIFIER_RIGHT_RE = re.compile(r"(?i)\b(?:right|directly|just)\s+(?=next\s+to
                                   r"|above\b|under\b|below\b|between\b|in\s+(?:the\s+)?(?:middle|center|centre)\b)")
 """"Right" that only stresses a place ("right next to the blue block"): not the side "right"."""
 
+EDIT_OPENING = r"^\s*(?:(?i:nah|no|ok(?:ay)?|so|and|then|hmm|actually|now)[\s,]+)*"
+"""The words an edit may open with before what it says ("nah, other way round", "ok so instead of ...",
+"actually, left to right: ..."): they change nothing."""
+
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
     # "ok then just a green cube at the right end": a cube added at that end
     (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|fine|alright)\s*,?\s*)?(?:then\s+)?(?:just\s+)?(?:a|an|one)\s+({COLOR_RE})\s+(?:cube|block)\s+"
@@ -1566,7 +1570,7 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"(?i)\b({COLOR_RE})\s*,\s*(?:and\s+)?not\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:one|cube|block))?"
                 r"(?=\s*(?:[.!,;]|$))"), r"\1"),
     # "instead of the blue cube use a green one", "instead of blue use orange": the substitution said the other way round
-    (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|so|and|nah|hmm|actually|now)[\s,]+)*instead\s+of\s+(?P<old>(?:the\s+|an?\s+)?(?:{COLOR_RE})"
+    (re.compile("(?i)" + EDIT_OPENING + rf"instead\s+of\s+(?P<old>(?:the\s+|an?\s+)?(?:{COLOR_RE})"
                 r"(?:\s+(?:cube|block|patch|one)s?)?)\s*,?\s*(?:use|put|take|have|go\s+with|make\s+it)\s+(?P<new>[^,;.!]+?)\s*[.!]?\s*$"),
      lambda m: "use " + re.sub(r"(?i)\s+one$", " cube", m.group("new")) + " instead of " + m.group("old")),
     # "keep everything but the middle one make it purple": that cube recoloured, the rest kept ("it" is that cube)
@@ -1574,10 +1578,10 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
                 rf"(the\s+(?:[a-z0-9]+\s+){{0,2}}?(?:one|block|cube))\s*[,:]?\s*(?:make\s+it\s+|should\s+be\s+|is\s+|in\s+|as\s+)?"
                 rf"({COLOR_RE})\s*[.!]?\s*$"), r"make \1 \2"),
     # "nah, let's do GOD": the word spelled instead
-    (re.compile(r"^\s*(?:(?:(?i:nah|no|ok(?:ay)?|hmm|actually|then))[\s,]+)*(?i:let'?s\s+(?:do|go\s+with|try)|do|try|go\s+with|how\s+about)"
+    (re.compile(EDIT_OPENING + r"(?i:let'?s\s+(?:do|go\s+with|try)|do|try|go\s+with|how\s+about)"
                 r"\s+([A-Z]{2,})\s*(?i:instead)?\s*[.!?]?\s*$"), r"spell \1 instead"),
     # "back to how it was at the start": the first version
-    (re.compile(r"(?i)^\s*(?:(?:nah|no|ok(?:ay)?|hmm|actually)[\s,]+)*(?:(?:go|going|get)\s+)?back\s+to\s+(?:how|what)\s+it\s+"
+    (re.compile("(?i)" + EDIT_OPENING + r"(?:(?:go|going|get)\s+)?back\s+to\s+(?:how|what)\s+it\s+"
                 r"(?:was|looked)\s+(?:at\s+the\s+(?:start|beginning)|originally|at\s+first|in\s+the\s+beginning)\s*[.!]?\s*$"),
      "go back to the original"),
     # "2x2 is enough", "3 by 3 would be better": that size

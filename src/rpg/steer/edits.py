@@ -38,6 +38,7 @@ from rpg.schema.lexicon import (
     EDIT_INTERJECTION_RE,
     EDIT_LEADING_RE,
     EDIT_MORE_ALONE_RE,
+    EDIT_OPENING,
     EDIT_REFERS_RE,
     EDIT_REWRITES,
     EDIT_SHOULD_BE_RE,
@@ -982,7 +983,7 @@ def carried_after(spec: TaskSpec, carried, ops: list[Op]):
     return replace(carried, ends=frozenset(ends))
 
 
-ARRANGED_RE = re.compile(rf"^\s*(?:(?:now|ok(?:ay)?|actually|nah|so|and|then)[\s,]+)*(?:(?:put|arrange|order|reorder|line|set)\s+"
+ARRANGED_RE = re.compile(EDIT_OPENING + rf"(?:(?:put|arrange|order|reorder|line|set)\s+"
                          rf"(?:them|it|the\s+(?:cubes|blocks))\s+(?:up\s+)?)?(?:from\s+)?(?P<way>left to right|right to left|"
                          rf"front to back|back to front|bottom to top|top to bottom)\s*[:,]?\s*(?P<list>(?:{COLOR_RE}|\d)"
                          rf"(?:(?:\s*,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+|\s+then\s+|\s+)(?:{COLOR_RE}|\d))+)\s*[.!]?\s*$")

@@ -27,6 +27,7 @@ from rpg.schema.lexicon import (
     COLOR_RE,
     COUNT_WORD_RE,
     EDIT_ADDITIVE_RE,
+    EDIT_OPENING,
     EDIT_RELATIONS,
     NUMBER_WORDS,
     PAIRWISE_RELATIONS,
@@ -50,9 +51,8 @@ ADDS_RE = re.compile(rf"\b(?:add|another|new|extra|more|one more|also)\b|\ban? (
 """An edit that brings in a cube (an Extend): not a change of the relation."""
 
 
-FLIPPED = (r"^\s*(?:(?:nah|no|hmm|ok(?:ay)?|actually|now)[\s,]+)*flip\s+(?:it|them|that)\s*$"
-           r"|^\s*(?:(?:nah|no|hmm|ok(?:ay)?|actually|now)[\s,]+)*(?:(?:do\s+it|have\s+it|make\s+it|put\s+them)\s+)?(?:the\s+)?"
-           r"other\s+way\s+(?:a)?round\s*$")
+FLIPPED = (EDIT_OPENING + r"flip\s+(?:it|them|that)\s*$|" + EDIT_OPENING
+           + r"(?:(?:do\s+it|have\s+it|make\s+it|put\s+them)\s+)?(?:the\s+)?other\s+way\s+(?:a)?round\s*$")
 """An edit that turns a two-cube task around without naming how ("flip it", "nah, other way
 round"): the two cubes trade their roles."""
 
