@@ -36,6 +36,8 @@ from rpg.schema.model import TaskSchema
 
 _SKIP = (P.OnTable, P.Upright, P.LayersUniform)  # layers' colours show in the layer breakdown
 _SYMMETRIC = (P.NextTo, P.FarFrom)
+_SYMMETRIC_ATOM_RE = re.compile(rf"({'|'.join(k.name for k in _SYMMETRIC)})\(([^(),;]+),([^(),;]+)\)")
+"""An atom of a symmetric relation (``next_to(pink,Z)``): its two cubes in either order."""
 
 
 def descriptor(asset) -> str:
@@ -179,7 +181,7 @@ def meaning(schema: TaskSchema) -> list[str]:
 def _pattern(atom: str, either_way: bool = True) -> re.Pattern:
     """A regular expression for one expected atom (``?`` and ``X*`` wildcards); a symmetric pair
     with a wildcard (``next_to(red,?)``) in either order."""
-    pair = re.fullmatch(r"(next_to|far_from)\(([^(),;]+),([^(),;]+)\)", atom.strip())
+    pair = _SYMMETRIC_ATOM_RE.fullmatch(atom.strip())
     if either_way and pair and "?" in atom and pair.group(2) != pair.group(3):
         one, other = (_pattern(f"{pair.group(1)}({a},{b})", False).pattern for a, b in (pair.group(2, 3), pair.group(3, 2)))
         return re.compile(f"(?:{one[:-2]}|{other[:-2]})" + r"\Z")
@@ -207,7 +209,7 @@ def _wild(atom: str) -> bool:
 def _unordered(atom: str) -> str:
     """An atom whose objects have no order (``piles(red,blue,red;by=color)``, ``pile(...)``, the two cubes
     of ``next_to``/``far_from``) with its objects sorted, so an expected meaning may list them in any order."""
-    pair = re.fullmatch(r"(next_to|far_from)\(([^(),;]+),([^(),;]+)\)", atom)
+    pair = _SYMMETRIC_ATOM_RE.fullmatch(atom)
     if pair and "?" not in atom:  # symmetric: "next_to(pink,Z)" is "next_to(Z,pink)" (a wildcard's pattern takes both)
         return f"{pair.group(1)}({','.join(sorted(pair.group(2, 3)))})"
     m = re.fullmatch(r"(piles?)\(([^;()]*)(;[^()]*)?\)(@\w+)?", atom)

@@ -435,7 +435,7 @@ def verb_final(text: str) -> str:
 
 SORT_ASKED_RE = re.compile(r"(?i)\b(?:sort(?:s|ed|ing)?|ascending|descending|increasing|decreasing|numerical(?:ly)?|alphabetical(?:ly)?"
                            r"|smallest|largest|lowest|highest|biggest|greatest)\b"
-                           r"|\b(?:smaller|larger|higher|bigger|greater)" + lexicon.SORT_END_NOUN + r"\s+(?:is\s+|goes\s+|sits\s+)?"
+                           r"|\b" + lexicon.SORT_END_WORD + lexicon.SORT_END_NOUN + r"\s+(?:is\s+|goes\s+|sits\s+)?"
                            r"(?:on|at|in|first|last)\b")
 """Words that ask for labelled cubes in sorted order ("Sort the digit cubes 4, 9 and 2", "in
 ascending order", "smallest at the bottom", "biggest number at the bottom")."""

@@ -51,6 +51,9 @@ ADDS_RE = re.compile(rf"\b(?:add|another|new|extra|more|one more|also)\b|\ban? (
 """An edit that brings in a cube (an Extend): not a change of the relation."""
 
 
+NEW_CUBE = rf"\b(?:an?|another|one more|a new|an extra)\s+(?:new\s+|extra\s+)?({COLOR_RE})\s+(?:block|cube|one)\b"
+"""A cube an edit brings in, its colour the group ("a green one", "another red block")."""
+
 FLIPPED = (EDIT_OPENING + r"flip\s+(?:it|them|that)\s*$|" + EDIT_OPENING
            + r"(?:(?:do\s+it|have\s+it|make\s+it|put\s+them)\s+)?(?:the\s+)?other\s+way\s+(?:a)?round\s*$")
 """An edit that turns a two-cube task around without naming how ("flip it", "nah, other way
@@ -242,7 +245,7 @@ def _edit_relation(t: str) -> str | None:
 
 def _added(t: str, schema: TaskSchema, rel: Relation) -> tuple[str, str] | None:
     """"Add a green block next to it": the reference's relation, then the new cube's."""
-    m = re.search(rf"\b(?:an?|another|one more|a new|an extra)\s+(?:new\s+|extra\s+)?({COLOR_RE})\s+(?:block|cube|one)\b(.*)", t)
+    m = re.search(NEW_CUBE + r"(.*)", t)
     if m is None:
         return None
     color, rest = canon_color(m.group(1)), m.group(2)
@@ -375,8 +378,8 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     if region is None and bare:  # "now the right side": the place alone
         region = _edit_region(f" to {bare.group(1)} ")
     added = re.search(rf"\b(?:add|put|place)\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b(.*)", t) or (
-        EDIT_ADDITIVE_RE.search(t) and re.search(rf"\b(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube|one)\b(.*"
-                                                 r"\b(?:front|back|rear|corner|half|side|edge|center|centre|middle|table|workspace)\b.*)", t))
+        EDIT_ADDITIVE_RE.search(t) and re.search(NEW_CUBE + r"(.*\b(?:front|back|rear|corner|half|side|edge|center|centre|middle"
+                                                 r"|table|workspace)\b.*)", t))
     # "now a green one too, in the front right": a cube the edit brings in, as well, at a place of the table (a bare
     # "on the right" may be the red cube's right: left to the checks below)
     named = [canon_color(c) for c in re.findall(rf"\bthe ({COLOR_RE}) (?:block|cube|one)\b", t)]

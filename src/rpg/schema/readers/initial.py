@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from rpg.domain.layouts import stack_layout
 from rpg.errors import BadInput
 from rpg.schema.builder import Builder
-from rpg.schema.lexicon import COLOR_RE, MARKUP_RES
+from rpg.schema.lexicon import COLOR_RE, MARKUP_RES, NUMBER_WORDS
 from rpg.schema.model import TaskSchema
 from rpg.schema.reading import Inexpressible, canon_color, task_slug
 
@@ -254,11 +254,10 @@ def with_start_cubes(scene: InitialScene) -> InitialScene:
     if m is None or re.search(rf"(?i)\b(?:{COLOR_RE})\b|\b(?:letter|digit|number)\b|(?<![\w'])[A-Z0-9](?![\w'])", scene.goal):
         return scene
     said = re.search(r"(?i)\b(two|three|four|2|3|4|both)\b", m.group(0))
-    count = {"both": 2, "two": 2, "three": 3, "four": 4}.get(said.group(1).lower(), None) if said else None
-    if said and (count or int(said.group(1))) != len(cubes):
+    if said and NUMBER_WORDS.get(said.group(1).lower(), int(said.group(1)) if said.group(1).isdigit() else 0) != len(cubes):
         return scene
-    named = " and ".join(f"the {c} cube" for c in cubes[:-1]) + ("," if len(cubes) > 2 else "") + f" and the {cubes[-1]} cube"
-    named = named if len(cubes) > 1 else f"the {cubes[0]} cube"
+    each = [f"the {c} cube" for c in cubes]
+    named = ", ".join(each[:-1]) + " and " + each[-1] if len(each) > 1 else each[0]
     return InitialScene(scene.stacks, scene.goal[:m.start()] + named + scene.goal[m.end():])
 
 
