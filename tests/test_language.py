@@ -1978,6 +1978,11 @@ def test_a_tower_given_several_colours_and_no_order_is_refused():
     ("stack the letter cubes: B on A, C on B", ["stack(A,B,C)"]),
     ("stack B on A, C on B", ["stack(A,B,C)"]),
     ("stack letter B on letter A, letter C on letter B", ["stack(A,B,C)"]),
+    # a letter said with "should be" before its relation: the sentence's first "A" had been read as an
+    # article and dropped silently (stranger7: "A should be on B, B should be on C, ...")
+    ("At the end, A should be on B, B should be on C, and C should be on the red patch.",
+     ["on_patch(C,patch:red)", "stack(C,B,A)"]),
+    ("D goes on B and B should be on C.", ["stack(C,B,D)"]),
     # the reading the cubes must give, said with spaces: it had been the order they were listed in
     ("Put the digit cubes 3, 1 and 2 in a row so that they read 1 2 3 from left to right.",
      ["line[left_to_right](1,2,3)", "reads(1,2,3;direction=left_to_right,face=up,text=123)"]),
@@ -1991,6 +1996,7 @@ def test_labels_readings_and_roles_said_tersely(text, expected):
 
 @pytest.mark.parametrize("text,match", [
     ("put the red block on the blue block, then do the same with X", "the letter 'X' has no place"),
+    ("Stack the red cube on the blue cube. A should be left.", "the letter 'A' has no place"),
     ("Stack the teal cube on the magenta cube.", "palette does not have"),  # not read as cyan and pink
     ("put the rear cube on the green patch", "current scene"),  # a cube picked by where it stands now
 ])

@@ -159,7 +159,7 @@ when the other end is said too ("red on the left, blue on the right")."""
 
 LONE_LETTER_RE = re.compile(r"(?<![\w'\-.(])(?<!\b(?i:plan|step|part|type|task|zone|area|spot|mark|site) )(?<!\b(?i:option|marked|letter) )"
                             r"([B-HJ-Z]|A(?=\s*(?:[,;:!?]|\.(?!\w)|$)|\s+(?:on|onto|and|then|to|is|at|in|next|behind|beside|"
-                            r"under|below|above|left|right|between)\b))(?![\w'\-)]|\.\w)(?!\s+(?:[a-z]+\s+)?(?:blocks|cubes|ones)\b)")
+                            r"under|below|above|left|right|between|should|must|shall|goes|sits|stays)\b))(?![\w'\-)]|\.\w)(?!\s+(?:[a-z]+\s+)?(?:blocks|cubes|ones)\b)")
 """A capital letter standing alone ("stack B on A", "the C"): a letter cube, which the task must
 have ("I" is the speaker; "A" only where it is no article; not an option, a step or a list
 marker: "plan B", "(c)", "e.g."; not a number of cubes: "all N blocks")."""

@@ -337,7 +337,10 @@ _LABEL_REL = (r"(?:on(?:to)?|atop|under|underneath|below|above|beneath|next\s+to
 LABEL_TOKEN_RE = re.compile(r"(?:\b(?:letter|digit|number)\s+)?(?<![\w'@.])(?P<l>[A-Z]|\d)(?![\w'%]|\.\d)"
                             r"(?!\s*(?:[x\u00d7+\-=*/]|blocks?\b|cubes?\b|times\b))")
 """A letter or digit standing alone ("B", "letter B", "2")."""
-LABEL_BEFORE_RE = re.compile(rf"\s+{_LABEL_REL}\s+(?:the\s+)?(?:(?:letter|digit|number)\s+)?(?:[A-Z]|\d)(?![\w'])")
+_LABEL_BE = (r"(?:(?:is|are|goes|sits|stands|rests|lies|stays|ends\s+up|(?:should|must|shall|will|has\s+to|needs\s+to)\s+"
+             r"(?:be|go|sit|stand|rest|end\s+up))\s+)?")
+"""What may stand between a label cube and its relation ("B should be on C", "A goes on B")."""
+LABEL_BEFORE_RE = re.compile(rf"\s+{_LABEL_BE}{_LABEL_REL}\s+(?:the\s+)?(?:(?:letter|digit|number)\s+)?(?:[A-Z]|\d)(?![\w'])")
 LABEL_AFTER_RE = re.compile(rf"\b{_LABEL_REL}\s+(?:the\s+)?$")
 
 
