@@ -54,6 +54,7 @@ STRANGER_SETS = {
     "stranger17": ("stranger17.yaml", "STRANGER set 17 (stranger17.yaml, development material)"),
     "stranger18": ("stranger18.yaml", "STRANGER set 18 (stranger18.yaml, development material)"),
     "stranger19": ("stranger19.yaml", "STRANGER set 19 (stranger19.yaml, development material)"),
+    "stranger20": ("stranger20.yaml", "STRANGER set 20 (stranger20.yaml, development material)"),
 }
 SPLITS = HERE / "splits.yaml"
 
