@@ -367,11 +367,12 @@ def test_a_pronoun_with_something_named_before_it_is_read(text):
 def test_an_unknown_word_that_is_no_object_or_command_is_only_named():
     """A modifier or an abstract noun is not refused as a missing object or action: the
     refusal names the word and says the parser could not read it."""
-    for text, word in (("sort the blocks in the way you think it best fits", "think"),
-                       ("stack the shiny blocks", "shiny")):
+    for text, word in (("stack the shiny blocks", "shiny"), ("stack the blocks roughly", "roughly")):
         with pytest.raises(ParseError, match=rf"could not parse .*'{word}'") as exc:
             parse(text)
         assert not hasattr(exc.value, "kind")
+    with pytest.raises(ParseError):  # "think" is ignored (issue 30, item 3); the sort still has no order
+        parse("sort the blocks in the way you think it best fits")
 
 
 @pytest.mark.parametrize("text,verb", [("pick up the orange block", "pick up"), ("grab the red cube", "grab"),
@@ -749,6 +750,78 @@ def test_an_unknown_adverb_close_to_an_ignorable_word_is_dropped_and_listed():
     record = check_mentions("Swiftly stack the red block on the blue block.", schema)
     assert {"mention": "swiftly", "kind": "ignored",
             "consumed_by": "nothing: no meaning for the goal (reads like 'quickly')"} in record
+
+
+@pytest.mark.parametrize("text, word, expected", [
+    # issue 30, item 3: a word outside the lexicon that no class claims is ignored and listed (these had been refused)
+    ("Put the red block on the blue block, textbook!", "textbook", ["stack(blue,red)"]),
+    ("Per Jenkins, put the red cube on the blue patch.", "jenkins", ["on_patch(red,patch:blue)"]),
+])
+def test_an_unknown_word_no_class_claims_is_ignored_and_listed(text, word, expected):
+    from rpg.schema.builtin import check_mentions
+
+    schema = parse(text)
+    assert meaning(schema) == expected
+    assert {"mention": word, "kind": "ignored",
+            "consumed_by": "nothing: no meaning for the goal (reads like 'a word outside the lexicon')"} in check_mentions(text, schema)
+
+
+@pytest.mark.parametrize("text, word", [
+    # each of these compiled silently wrong when every unclaimed unknown word was ignored (measured on the
+    # development sets): a word that may change what the task asks stays refused
+    ("Create a three-level stack with blue block supported by green block, which is supported by red block.", "supported"),
+    ("Group the cubes by colour: the reds together on the red patch, the yellows together on the yellow patch.", "reds"),
+    ("In the final scene there is a circle of red cubes; I count five of them.", "count"),
+    ("Put teddy on top of the block tower, sweetie!", "teddy"),
+    ("Hold the blue cube in the air above the red cube.", "air"),
+    ("Line up the cubes from shortest to tallest.", "shortest"),
+    ("Shape-8: eight cubes forming a hollow square outline.", "hollow"),
+    ("All cubes shall be placed on the yellow patch, and all cubes shall likewise be placed on the blue patch.", "likewise"),
+    ("Once the green block is next to the yellow block, put the pink block on top of the green one.", "once"),
+    ("Put the digit cubes 1 to 5 in a row, left to right, so that they count down.", "count"),
+])
+def test_an_unknown_word_that_may_carry_meaning_is_not_ignored(text, word):
+    with pytest.raises(BadInput, match=f"'{word}'"):
+        parse(text)
+
+
+def test_a_question_about_a_cube_is_refused_as_a_question():
+    from rpg.schema.builtin import Inexpressible
+
+    with pytest.raises(Inexpressible) as exc:
+        parse("Can the pink block fit on the cyan patch?")
+    assert exc.value.kind == "question"
+    assert meaning(parse("Could the robot place all four red cubes in a row?")) == ["line(red,red,red,red)"]
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger20's silent errors (read after its first run was recorded)
+    ("Make a row of alternating colours: red, white, red, white from left to right.",
+     ["line[left_to_right](red,white,red,white)"]),  # six cubes had been made of the four listed
+    ("Put a red cube at each end of a row of three, with a blue cube in between.",
+     ["line[left_to_right](red,blue,red)"]),  # the ends had been dropped and a green cube made up
+    ("Goal: letters B, E, D stacked to read BED from top to bottom.",
+     ["reads(B,E,D;direction=top_to_bottom,face=front,text=BED)", "stack(D,E,B)"]),  # a line had been built
+    ("From a start where blue sits on yellow, move the blue cube onto the red patch.",
+     ["on_patch(blue,patch:red)", "start:stack(yellow,blue)"]),  # the start had been read as part of the goal
+])
+def test_sequences_ends_and_starts_said_other_ways(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_start_the_reader_cannot_split_from_its_goal_is_refused():
+    with pytest.raises(BadInput, match="from a start where"):
+        parse("From a start where blue sits on yellow move the blue cube onto the red patch.")
+
+
+def test_labels_spelled_one_by_one_are_not_ignored():
+    with pytest.raises(BadInput, match="'b-a-d'"):  # a held-out set's silent error class: the tower's letters dropped
+        parse("Build the tower B-A-D from bottom to top.")
+
+
+def test_a_tower_end_said_as_a_field_must_agree_with_the_tower():
+    with pytest.raises(ParseError, match="contradicts itself"):
+        parse("Stack: yellow on pink; top cube: pink.")
 
 
 @pytest.mark.parametrize("text, word", [

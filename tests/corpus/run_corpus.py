@@ -55,6 +55,7 @@ STRANGER_SETS = {
     "stranger18": ("stranger18.yaml", "STRANGER set 18 (stranger18.yaml, development material)"),
     "stranger19": ("stranger19.yaml", "STRANGER set 19 (stranger19.yaml, development material)"),
     "stranger20": ("stranger20.yaml", "STRANGER set 20 (stranger20.yaml, development material)"),
+    "stranger21": ("stranger21.yaml", "STRANGER set 21 (stranger21.yaml, HELD OUT until the end of the sixteenth session: report aggregates only)"),
 }
 SPLITS = HERE / "splits.yaml"
 

@@ -179,9 +179,11 @@ each colour said is one cube, so the task must have at least as many of each."""
 
 TOWER_END_SAID_RE = re.compile(rf"\b(?P<c>{COLOR_RE})(?:\s+(?:block|cube|one))?\s+(?:(?:is|goes|sits|stays|(?:should|must|will)\s+be|"
                                r"ends\s+up)\s+)?(?:(?P<top>on\s+top|at\s+the\s+(?:very\s+)?top)|(?:at|on)\s+the\s+(?:very\s+)?"
-                               r"(?:bottom|base))\b(?!\s+of\b)")
+                               r"(?:bottom|base))\b(?!\s+of\b)"
+                               rf"|(?<!\bto\s)\b(?:(?P<top2>top)|bottom|base)\s+(?:block|cube)\s*[:=]\s*(?P<c2>{COLOR_RE})\b")
 """A cube of one colour given the top or the bottom of a tower ("with the pink cube on top",
-"so that red is at the bottom"): the goal's ordered tower that holds it must have it there."""
+"so that red is at the bottom", "top cube: pink"): the goal's ordered tower that holds it must
+have it there."""
 
 END_ROLE_SAID_RE = re.compile(rf"\b(?:start|begin|end|finish)(?:s|ing|ed)?\s+with\s+(?:the\s+|a\s+|an\s+)?(?P<c>{COLOR_RE})\b")
 """A cube given the first or last place of a sequence ("ends with red", "starting with the blue
@@ -659,11 +661,12 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
                               "right: blue, green, red\"), or use --model")
     stacks = [p.objects for p in schema.goal_predicate().walk() if type(p) is P.Stack]
     for m in TOWER_END_SAID_RE.finditer(f.text):  # "stack yellow on pink, with the pink cube on top": which is on top?
-        named = {a.name for a in cubes if a.color == canon_color(m.group("c"))}
-        end = -1 if m.group("top") else 0
+        colour = canon_color(m.group("c") or m.group("c2"))
+        named = {a.name for a in cubes if a.color == colour}
+        end = -1 if m.group("top") or m.group("top2") else 0
         held = [st for st in stacks if named & set(st)]
         if held and not any(st[end] in named for st in held):
-            return ParseError(f"\"{f.original[:80]}\" contradicts itself: '{m.group(0)}' puts the {canon_color(m.group('c'))} "
+            return ParseError(f"\"{f.original[:80]}\" contradicts itself: '{m.group(0)}' puts the {colour} "
                               f"cube at the {'top' if end else 'bottom'}, and the rest of it reads {schema.goal_summary}. "
                               "Say the order once (e.g. \"from bottom to top: ...\"), or use --model")
     material = MATERIAL_SAID_RE.search(f.text)  # "put 2 letter cubes on the red patch"

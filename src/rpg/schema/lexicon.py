@@ -172,6 +172,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                  r"|^(?:is|are|does|do)\s+(?:the|a|an|there|any)\s+(?:[a-z0-9]+\s+){0,3}?(?:blocks?|cubes?|boxes|box|tower|stack)\b"
                  r"(?:\s+(?:on|to|in|at|next|behind|under|beside|left|right|stacked|placed|lined))"
                  r"|(?:^|[.!;?]\s+)(?:can|could|will|would|should|may|might)\s+(?:the|a|an|any)\s+[^.!;?]*\bbe\b[^.!;]*\?"
+                 r"|(?:^|[.!;?]\s+)(?:can|could|will|would|may|might)\s+(?:the|a|an|any|this|that|these|those|my|our|your)\s+"
+                 r"(?![^.!;?]*\b(?:put|place|stack|move|build|make|arrange|set|line|lay|slide|push|bring|spell|sort|form|create)\b)"
+                 r"[^.!;?]*\?\s*$"
                  r"|\b(?:tell|show)\s+me\s+(?:how|what|which|where|whether|if|who)\b|\bhow\s+many\b[^.!;]*\?"
                  r"|(?:^|[.!;?,]\s*)(?:can|could|will|would|does|do)\s+(?:the\s+robot|it|the\s+arm)\s+(?:even\s+|actually\s+|really\s+)?"
                  r"(?!put|place|stack|move|build|make|arrange|set|line|lay|slide|push|bring|spell|sort|stand|swap|please|tell|show|give)[a-z]+\b(?=[^.!;]*\?)",
@@ -281,7 +284,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("time", r"\b(?:used\s+to\s+be|had\s+been|(?:was|were)\s+(?:\w+\s+)?(?:on|in|at|next|beside|behind|under|left|right|stacked|"
              r"placed|lying|sitting|standing|resting))\b|\b(?:originally|beforehand|to\s+begin\s+with|at\s+first"
              r"|in\s+the\s+beginning|in\s+the\s+(?:morning|afternoon|evening)|at\s+(?:night|noon|midnight)|tomorrow|yesterday)\b"
-             r"|\b(?:run|episode|trial|attempt)s?\s+after\s+(?:that|this|it)\b|\b(?:second|every|each|other)\s+(?:run|episode|trial)s?\b",
+             r"|\b(?:run|episode|trial|attempt)s?\s+after\s+(?:that|this|it)\b|\b(?:second|every|each|other)\s+(?:run|episode|trial)s?\b"
+             r"|\b(?:from|starting\s+(?:from|with)|beginning\s+(?:from|with))\s+(?:a|the)\s+(?:start|scene|setup|state|configuration)"
+             r"\s+(?:where|in\s+which|with)\b",
      "is about another time than the end of this episode (a past or starting state, a time of day, another run): a "
      "task's goal is checked once, at the end of one episode; say only where the cubes must end up"),
     ("time", START_TIME_RE, "is about another time than the end of this episode (a starting state): a task's goal is checked "
@@ -333,6 +338,15 @@ def colour_names() -> frozenset[str]:
 
     names = set(mcolors.CSS4_COLORS) | {n.split(":", 1)[1] for n in mcolors.XKCD_COLORS}
     return frozenset(n for n in names if n.isalpha())
+
+UNKNOWN_CARRIES_MEANING: frozenset[str] = frozenset("""
+time times week weeks day days month months year years weekend deadline timer clock monday tuesday wednesday thursday
+friday saturday sunday once whichever whatever wherever whoever case why whether either else outline perimeter border
+frame hollow silhouette rerun redo orientation pose angle count counts counting counted whose whom
+""".split())
+"""Words outside the lexicon that carry meaning a task cannot hold (a time, a condition - "once",
+"whichever", "in case" -, a question, an alternative, a shape, a repeat of something done
+before): never ignored as an unknown word (:func:`rpg.schema.reading.ignorable_unknown`)."""
 
 UNKNOWN_ACTION = ("action", "is an action the domain does not have: a task's goal says where cubes end up "
                   "(stacked, in a line, next to or on something, on a patch); say where the cubes should end")

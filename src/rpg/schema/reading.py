@@ -222,6 +222,56 @@ def _unknown_word_classes(text: str, unknown: list[str]) -> list[tuple[str, str,
     return found
 
 
+_MODIFIES_AFTER = re.compile(rf"\s+(?:(?:{COLOR_RE}|[a-z\-]+)\s+)?(?:cubes?|blocks?|bricks?|boxes|box|patch(?:es)?|ones?|towers?|stacks?"
+                             r"|piles?|rows?|lines?|columns?|circles?|rings?|grids?|walls?|pyramids?|squares?|shapes?|structures?)\b")
+"""What follows a word that describes a cube, a patch or a structure ("hollow square", "the shiny one")."""
+_PLACE_BEFORE = re.compile(r"\b(?:in|into|on|onto|at|to|towards?|from|over|under|inside|near|beside|behind|above|below|across|along"
+                           r"|up|off)\s+(?:(?:the|a|an|my|your|our|their|its|this|that)\s+)?$")
+"""What precedes a word that names a place ("in the air", "onto the shelf", "in case")."""
+_PLACED_BEFORE = re.compile(rf"\b(?:{'|'.join(sorted(lexicon.PLACEMENT_VERBS))}|stack)\s+(?:the\s+|a\s+|an\s+)?$")
+"""What precedes a word that names what is placed ("put teddy on ...")."""
+_VERB_TAKES_AFTER = re.compile(r"\s+(?:up|down|over|out|off|away|back|around|apart|together|along|\d+"
+                               r"|(?:(?:by|on|onto|in|into|to|from|with|under|over|against|between|near|beside|behind|atop)\s+)?"
+                               r"(?:(?:the|a|an|this|that|these|those|all|both|each|every|\d+)\s+)?(?:[a-z\-]+\s+){0,2}?"
+                               r"(?:cubes?|blocks?|bricks?|boxes|box|towers?|stacks?|piles?|rows?|lines?|pyramids?|walls?|grids?|circles?))\b")
+"""What follows a verb that acts on the cubes ("count down", "fall over", "rerun the tower")."""
+
+
+def ignorable_unknown(word: str, text: str) -> bool:
+    """Whether an unknown word that no class claimed (not an inflection, a typo, an ignorable sense,
+    a colour, an object or an action: :func:`_unknown_word_classes`) is ignored, as issue 30's
+    item 3 asks ("other words are ignored and listed in accounting"), rather than refused.
+
+    It is kept unknown (the instruction is refused naming it) when it may change what the task
+    asks: a colour name; a word of :data:`lexicon.UNKNOWN_CARRIES_MEANING` (time, condition,
+    question, alternative, shape), alone or in a hyphenated word; labels spelled one by one
+    ("b-a-d"); a word in a sentence that names
+    nothing of the task ("Vice versa.": :func:`_idle_sentence` decides); a modifier only (an adjective or adverb: "likewise",
+    "balanced"), or a comparison ("shortest"); a word describing a cube, patch or structure
+    ("hollow square"); a place ("in the air"); what is placed ("put teddy on ..."); a verb acting
+    on the cubes ("count down", "rerun the tower", "supported by the red block")."""
+    parts = {word, word.removesuffix("s"), *word.split("-")}  # "reds": the red cubes; "time-limited"
+    if parts & lexicon.UNKNOWN_CARRIES_MEANING or parts & lexicon.colour_names():
+        return False
+    if re.fullmatch(r"[a-z0-9](?:-[a-z0-9])+", word):
+        return False  # "b-a-d", "1-2-3": labels spelled out one by one
+    pos = lexicon.parts_of_speech(word)
+    if pos and pos <= {"ADJ", "ADV"}:
+        return False
+    if "ADJ" in pos and word.endswith(("er", "est")) and word not in lexicon.lemmas(word):
+        return False
+    for m in re.finditer(rf"(?<![\w-]){re.escape(word)}(?![\w-])", text):
+        before, after = text[:m.start()], text[m.end():]
+        sentence = re.split(r"[.!?;]\s", before)[-1] + re.split(r"[.!?;](?:\s|$)", after)[0]
+        if not lexicon.TASK_CONTENT_RE.search(sentence):
+            return False  # a sentence of its own ("Vice versa.", "Diagonal please."): the idle-sentence rule decides
+        if _MODIFIES_AFTER.match(after) or _PLACE_BEFORE.search(before) or _PLACED_BEFORE.search(before):
+            return False
+        if "VERB" in pos and _VERB_TAKES_AFTER.match(after):
+            return False
+    return True
+
+
 def _heads_a_phrase(before: str, after: str) -> bool:
     """Whether a word with this text ``before`` and ``after`` it heads a noun phrase: a
     determiner, at most two modifiers (adjectives, colours, hyphenated words), the word, then
@@ -738,7 +788,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   r"\1 ", text)  # "put the whole stack on the red patch": the stack
     if re.search(r"\bpyramids?\b", text):  # "pyramid: an orange and a pink cube side by side, and a white cube resting on both"
         text = re.sub(rf"(?P<base>(?:(?:an?|one|the|2)\s+)?(?:{COLOR_RE})\s+(?:and\s+(?:an?\s+|the\s+)?(?:{COLOR_RE})\s+)?(?:cubes?|blocks?)"
-                      rf"|2\s+(?:{COLOR_RE})\s+(?:cubes|blocks))\s+(?:next\s+to\s+each\s+other|side\s+by\s+side)\s*,?\s*(?:and\s+|with\s+)?"
+                      rf"|2\s+(?:{COLOR_RE})\s+(?:cubes|blocks))\s+(?:next\s+to\s+each\s+other|side\s+by\s+side|on\s+the\s+table)\s*,?\s*(?:and\s+|with\s+)?"
                       rf"(?P<top>(?:an?|one|the|1)\s+(?:{COLOR_RE})\s+(?:cube|block))\s+(?:(?:resting|sitting|balanced|placed|lying)\s+)?"
                       r"on\s+(?:top\s+of\s+)?(?:both(?:\s+of\s+them)?|2|them|the\s+2|the\s+pair)\b",
                       r"\g<base> on the bottom and \g<top> on top", text)
@@ -1007,6 +1057,12 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     if unknown and strict:
         refused += [(kind, [w], why) for w, kind, why in _unknown_word_classes(text, list(dict.fromkeys(unknown)))
                     if w not in named]
+    if unknown and not refused:  # issue 30, item 3: other words are ignored and listed in accounting
+        gone = {w for w in unknown if ignorable_unknown(w, text)}
+        if gone:
+            dropped += [(w, "a word outside the lexicon") for w in dict.fromkeys(unknown) if w in gone]
+            unknown = [w for w in unknown if w not in gone]
+            text = " ".join(w for w in text.split(" ") if re.sub(r"[.,;:!?]+$", "", w) not in gone)
     if refused:
         raise Inexpressible.of(refused, original)
     if unknown and strict:
@@ -1172,6 +1228,11 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
                 rf"(?:each|both|either|the\s+two|2)\s+ends?\s*,?\s+(?:and\s+)?(?:an?\s+|the\s+)?(?P<m>{COLOR_RE})(?:\s+(?:cube|block|one))?"
                 r"\s+(?:in\s+the\s+(?:middle|center|centre)|in\s+between|between\s+them)\b"),
      r": from left to right: \g<e>, \g<m>, \g<e>"),
+    # "put a red cube at each end of a row of three, with a blue cube in between": the ends said before the row
+    (re.compile(rf"\b(?:put|place|set)\s+(?:an?\s+|1\s+)?(?P<e>{COLOR_RE})\s+(?:cube|block)\s+(?:at|on)\s+(?:each|both|either)\s+ends?\s+"
+                rf"of\s+a\s+(?P<s>row|line)\s+of\s+3\s*,?\s+(?:with|and)\s+(?:put\s+)?(?:an?\s+|the\s+|1\s+)?(?P<m>{COLOR_RE})"
+                r"(?:\s+(?:cube|block|one))?\s+(?:in\s+between|between\s+them|in\s+the\s+(?:middle|center|centre))\b"),
+     r"make a \g<s> from left to right: \g<e>, \g<m>, \g<e>"),
     (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(?:an?\s+|the\s+)?(?P<m>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+in\s+the\s+(?:middle|center"
                 rf"|centre)\s*,?\s+(?:and\s+)?(?:an?\s+|the\s+)?(?P<e>{COLOR_RE})(?:\s+(?:cubes?|blocks?|ones?))?\s+(?:at|on)\s+"
                 r"(?:each|both|either|the\s+two|2)\s+ends?\b"),

@@ -269,11 +269,15 @@ def outlier_count(f: Features) -> int:
 
 def alternating_colors(f: Features, default: int) -> list[str] | None:
     """``n`` colours cycling through the named ones for "alternating red and blue ..."."""
-    colors = list(dict.fromkeys(f.color_list()))
+    said = f.color_list()
+    colors = list(dict.fromkeys(said))
     if not f.has("alternating", "alternate", "alternately", "alternates") or len(colors) == 1 or material_of(f) != "colors":
         return None
     colors = colors or list(DEFAULT_COLORS[:2])  # "so that the colors alternate"
     counts = [int(c) for c in re.findall(rf"\b(\d+)\s+(?:{COLOR_RE})\s+(?:blocks|cubes)\b", f.text)]
+    if len(said) >= 2 * len(colors) and said == [colors[i % len(colors)] for i in range(len(said))]:
+        # "alternating colours: red, white, red, white": the cubes listed, not 6
+        default = len(said)
     n = sum(counts) if len(counts) >= 2 else max(stated_count(f, default=default), len(colors))  # "two red and two blue"
     end = re.search(rf"\b(?:start(?:ing|s)?|begin(?:ning|s)?)\s+(?:with|from)\s+(?:an?\s+|the\s+)?(?P<first>{COLOR_RE})\b"
                     rf"|\b(?P<c>{COLOR_RE})\s+(?:block\s+|cube\s+|one\s+)?(?:at|on|as)\s+(?:the\s+)?(?P<end>bottom|base|top)\b", f.text)

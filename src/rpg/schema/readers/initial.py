@@ -53,6 +53,13 @@ ROBOT_STARTS_RE = re.compile(
 """A start said as what the robot starts with ("The robot starts with the white cube on the black
 cube and has to move the white cube onto the pink patch"): read as "Initially ... . <goal>"."""
 
+FROM_START_RE = re.compile(
+    rf"(?i)^\s*(?:from|starting\s+(?:from|with)|beginning\s+(?:from|with))\s+(?:a|the)\s+(?:start|scene|setup|state|configuration)"
+    rf"\s+(?:where|in\s+which|with)\s+(?P<fact>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:(?:sits|is|rests|lies|stands)\s+)?"
+    rf"(?:stacked\s+)?(?:on\s+top\s+of|on|atop)\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?)\s*[,;]\s*(?:then\s+)?(?P<goal>.+)$")
+"""A start said as the scene a goal starts from ("From a start where blue sits on yellow, move the
+blue cube onto the red patch"): read as "Initially ... . <goal>" (its tower had been read as the goal)."""
+
 GOAL_OPENER_RE = re.compile(r"(?i)^\s*(?:(?:the\s+)?(?:goal|target|task|objective)\s*(?:is\s*(?:to\s+)?|:|-|\u2014)"
                             r"|then\s*,?|now\s*,?|your\s+task\s*(?:is\s+to|:)|(?:at|in)\s+the\s+end\s*[,:]?|finally\s*,?"
                             r"|success(?:\s+(?:when|if))?\s*:?)\s*")
@@ -198,6 +205,7 @@ def split(instruction: str) -> InitialScene | None:
     instruction = re.sub(r"^\s*[A-Za-z][\w\-]*(?:\s+[\w\-]+){0,3}?\s*(?:\([^)]{0,30}\))?\s*:\s*(?=\S)(?=.*\b(?:starts|initially)\b)", "",
                          instruction.strip())  # "# goal (unstack): the pink cube starts ...": its label
     instruction = ROBOT_STARTS_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
+    instruction = FROM_START_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     unstack = _UNSTACK_RE.match(instruction.strip())
     if unstack:
         stacks = _facts((unstack.group("a") or unstack.group("b")).replace("-", " "))

@@ -83,7 +83,8 @@ def recognize_spell(f: Features, b: Builder) -> bool:
     if re.search(r"\b(?:backwards?|reversed|in\s+reverse(?:\s+order)?)\b", f.text):
         word = word[::-1]  # "spell CAT backwards": the cubes read TAC
     names = [b.semantic(ch) for ch in word]
-    if f.has("tower", "stack", "vertical", "vertically"):
+    if f.has("tower", "stack", "stacked", "stacking", "column", "vertical", "vertically") or re.search(
+            r"\b(?:top\s+to\s+(?:the\s+)?bottom|bottom\s+to\s+(?:the\s+)?top)\b", f.text):  # "stacked to read BED from top to bottom"
         upward = re.search(r"\b(?:(?:from\s+)?(?:the\s+)?bottom\s+(?:to\s+(?:the\s+)?top|up(?:wards?)?)|upwards?)\b", f.text)
         bottom_first = names if upward else list(reversed(names))  # "read D, O, G from bottom to top": D at the bottom
         direction = "bottom_to_top" if upward else "top_to_bottom"
