@@ -98,6 +98,10 @@ def test_corpus_no_silent_errors_and_85_percent_correct(capsys):
     ("in_region(red,red,left)", ["in_region(red,left)", "in_region(red,left)"], True),
     ("in_region(red,red,left)", ["in_region(red,left)"], False),
     ("in_region(blue,red,left)", ["in_region(red,left)", "in_region(red,left)"], False),
+    # a grid written without its size is a grid of those cubes (steer_stranger4's "2x2 square" had not matched)
+    ("grid(gray,gray|gray,gray)", ["grid(2x2:gray,gray,gray,gray)"], True),
+    ("grid(gray,gray,gray)", ["grid(2x2:gray,gray,gray,gray)"], False),
+    ("grid(2x2:brown,brown|white,white)", ["grid(2x2:brown,white|brown,white)"], False),
 ])
 def test_meaning_matcher(expected, actual, ok):
     assert matches(expected, actual) is ok

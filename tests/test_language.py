@@ -804,6 +804,13 @@ def test_a_question_about_a_cube_is_refused_as_a_question():
      ["reads(B,E,D;direction=top_to_bottom,face=front,text=BED)", "stack(D,E,B)"]),  # a line had been built
     ("From a start where blue sits on yellow, move the blue cube onto the red patch.",
      ["on_patch(blue,patch:red)", "start:stack(yellow,blue)"]),  # the start had been read as part of the goal
+    ("Stack six cubes into one tower: two red at the bottom, two green in the middle, two blue at the top.",
+     ["stack(red,red,green,green,blue,blue)"]),  # refused: "a colour listed twice is given an end"
+    ("make tower of 3 cubes, white is bottom.", ["stack(white,red,blue)"]),  # no task found
+    ("Stack the cyan cube on the purple cube, and put the resulting tower in the front left corner.",
+     ["stack(purple,cyan)@front_left"]),
+    ("We evaluate on a task in which three cubes of arbitrary colour must be stacked into a single tower.",
+     ["stack(red,blue,green)"]),
 ])
 def test_sequences_ends_and_starts_said_other_ways(text, expected):
     assert meaning(parse(text)) == expected

@@ -958,6 +958,14 @@ def test_steering_refuses_what_it_would_apply_wrong(tmp_path, base, edit, match)
     assert (Path(fam.path) / "family.yaml").read_bytes() == before  # nothing half-written
 
 
+def test_a_cube_put_onto_a_new_cube_is_not_a_cube_added_on_top():
+    """"put it on a yellow one" of blue on green had added yellow on top of blue (steer_stranger8)."""
+    plan = interpret("put it on a yellow one then")
+    assert not any(o.op == "add" for o in plan.ops)
+    plan = interpret("put a yellow one on it")
+    assert [o.params["items"] for o in plan.ops if o.op == "add"] == [[{"color": "yellow"}]]
+
+
 def test_a_label_put_on_a_label_is_not_added_twice():
     """"then put C on A" of A on B had become B, A, C, A (the anchor A added as a cube)."""
     plan = interpret("then put C on A")

@@ -246,6 +246,10 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
     for m in re.finditer(rf"(?<!,\s)(?<!and\s)(?<!or\s)\b(?:all\s+)?the\s+(?P<c>{colors})\s+(?:cubes|blocks|ones|bricks|boxes)\b",
                          text):  # "the pink cubes": several of that colour (a listed "red and blue blocks" is not)
         out.append(Mention(m.group(0), "plural", color=canon(m.group("c"))))
+    for m in re.finditer(rf"(?:^|[.;:]\s*)(?P<w>(?P<c>{colors})\s+(?:cubes|blocks|bricks))\s+(?:on|in|at|to|along)\s+the\s+(?:far\s+)?"
+                         r"(?:left|right|front|back|rear)\b",
+                         text):  # "red cubes on the left, blue cubes on the right": a group said without "the"
+        out.append(Mention(m.group("w"), "plural", color=canon(m.group("c"))))
     towers = len(re.findall(r"\b(?:a|an|1|another)\s+(?:[a-z0-9\-]+\s+){0,2}?(?:tower|stack|column|pillar)\b", text))
     towers += len(re.findall(r"\b(?:tower|stack|column|pillar)\s+of\s+\w+\s+and\s+(?:1|another)\b(?!\s+(?:[a-z]+\s+)?"
                              r"(?:block|cube|tower|stack|column|pillar))", text))  # "one tower of red and one of green"

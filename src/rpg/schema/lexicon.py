@@ -342,7 +342,7 @@ def colour_names() -> frozenset[str]:
 UNKNOWN_CARRIES_MEANING: frozenset[str] = frozenset("""
 time times week weeks day days month months year years weekend deadline timer clock monday tuesday wednesday thursday
 friday saturday sunday once whichever whatever wherever whoever case why whether either else outline perimeter border
-frame hollow silhouette rerun redo orientation pose angle count counts counting counted whose whom
+frame hollow silhouette rerun redo orientation pose angle count counts counting counted whose whom upside
 """.split())
 """Words outside the lexicon that carry meaning a task cannot hold (a time, a condition - "once",
 "whichever", "in case" -, a question, an alternative, a shape, a repeat of something done

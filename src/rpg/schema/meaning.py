@@ -234,8 +234,13 @@ def matches(expected: str, actual: list[str]) -> bool:
     A per-cube atom whose cube is ``red*`` (``in_region(red*,back)``: every red cube there)
     matches one or more actual atoms, one per red cube (``in_region(red,back)`` twice), and
     ``in_region(red,red,back)`` stands for one atom per cube; ``reads(DOG)`` matches the reads atom whose text is DOG, whatever its cubes and face; a pile's
-    or piles' cubes match in any order.
+    or piles' cubes match in any order; a grid written without its size (``grid(gray,gray|gray,gray)``) matches a
+    grid of those cubes, whatever its rows.
     """
+    if re.search(r"\bgrid\((?!\d+x\d+:)", expected):  # "grid(gray,gray|gray,gray)": a grid's size and rows left unsaid
+        expected = re.sub(r"\bgrid\(([^()]*)\)", lambda m: "grid(" + ",".join(sorted(re.split(r"[,|]", m.group(1)))) + ")", expected)
+        actual = [re.sub(r"^grid\((?:\d+x\d+:)?([^()]*)\)$", lambda m: "grid(" + ",".join(sorted(re.split(r"[,|]", m.group(1)))) + ")", a)
+                  for a in actual]
     wanted = [w for a in re.split(r";\s+(?![^()]*\))", expected) if a.strip() for w in _per_cube(_unordered(a.strip()))]
     actual = [w for a in actual for w in _per_cube(_unordered(a))]
     for w in [w for w in wanted if re.fullmatch(r"reads\([A-Za-z0-9]+\)", w)]:  # "reads(DOG)": the word read, shortly

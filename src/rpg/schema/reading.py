@@ -249,7 +249,8 @@ def ignorable_unknown(word: str, text: str) -> bool:
     nothing of the task ("Vice versa.": :func:`_idle_sentence` decides); a modifier only (an adjective or adverb: "likewise",
     "balanced"), or a comparison ("shortest"); a word describing a cube, patch or structure
     ("hollow square"); a place ("in the air"); what is placed ("put teddy on ..."); a verb acting
-    on the cubes ("count down", "rerun the tower", "supported by the red block")."""
+    on the cubes ("count down", "rerun the tower", "supported by the red block"); a word before a
+    particle ("upside down"); the ending of a number ("nd" of "2nd")."""
     parts = {word, word.removesuffix("s"), *word.split("-")}  # "reds": the red cubes; "time-limited"
     if parts & lexicon.UNKNOWN_CARRIES_MEANING or parts & lexicon.colour_names():
         return False
@@ -260,15 +261,18 @@ def ignorable_unknown(word: str, text: str) -> bool:
         return False
     if "ADJ" in pos and word.endswith(("er", "est")) and word not in lexicon.lemmas(word):
         return False
-    for m in re.finditer(rf"(?<![\w-]){re.escape(word)}(?![\w-])", text):
+    found = list(re.finditer(rf"(?<![\w-]){re.escape(word)}(?![\w-])", text))
+    if not found and re.search(rf"\d{re.escape(word)}\b", text):
+        return False  # the ending of a number ("nd" of "2nd"): a position
+    for m in found:
         before, after = text[:m.start()], text[m.end():]
         sentence = re.split(r"[.!?;]\s", before)[-1] + re.split(r"[.!?;](?:\s|$)", after)[0]
         if not lexicon.TASK_CONTENT_RE.search(sentence):
             return False  # a sentence of its own ("Vice versa.", "Diagonal please."): the idle-sentence rule decides
         if _MODIFIES_AFTER.match(after) or _PLACE_BEFORE.search(before) or _PLACED_BEFORE.search(before):
             return False
-        if "VERB" in pos and _VERB_TAKES_AFTER.match(after):
-            return False
+        if "VERB" in pos and _VERB_TAKES_AFTER.match(after) or re.match(r"\s+(?:up|down|over|out|off|around)\b", after):
+            return False  # "count down", "upside down", "inside out"
     return True
 
 
@@ -784,7 +788,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     asked_by = effectors + [(m.group("who"), "who asks for the task") for m in lexicon.SOMEONE_WANTS_RE.finditer(text)]
     text = lexicon.SOMEONE_WANTS_RE.sub("i want", text)
     text = re.sub(r"^\s*(?:about|regarding|re|concerning)\s+(?=the\s+(?:tower|stack|row|line|pyramid|wall|grid|circle)\s*:)", "", text)
-    text = re.sub(r"\b(the|that|this)\s+(?:whole|entire|complete)\s+(?=(?:stack|tower|row|line|circle|pyramid|wall|grid|structure)\b)",
+    text = re.sub(r"\barbitrary\s+(?=(?:colou?rs?|order)\b)", "any ", text)  # "three cubes of arbitrary colour"
+    text = re.sub(r"\b(the|that|this)\s+(?:whole|entire|complete|resulting|finished|completed)\s+(?=(?:stack|tower|row|line|circle|pyramid|wall|grid|structure)\b)",
                   r"\1 ", text)  # "put the whole stack on the red patch": the stack
     if re.search(r"\bpyramids?\b", text):  # "pyramid: an orange and a pink cube side by side, and a white cube resting on both"
         text = re.sub(rf"(?P<base>(?:(?:an?|one|the|2)\s+)?(?:{COLOR_RE})\s+(?:and\s+(?:an?\s+|the\s+)?(?:{COLOR_RE})\s+)?(?:cubes?|blocks?)"
@@ -1243,6 +1248,14 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
                 r"\s*,?\s+(?:and|with|then)\s+(?:then\s+)?(?:(?:put|place|add|stack|set)\s+)?(?:a|an|the|1)\s+"
                 rf"({COLOR_RE})\s+(?:block|cube|brick|one)\s+(?:on\s+top|at\s+the\s+top)(?:\s+of\s+(?:it|them|the\s+(?:stack|tower)))?\b"),
      lambda m: "build a tower from bottom to top: " + ", ".join([m.group(2)] * int(m.group(1)) + [m.group(3)]), True),
+    # "six cubes in one tower: two red at the bottom, two green in the middle, two blue at the top": three counted groups
+    (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|ones))?\s+(?:at|on|in)\s+the\s+(?:bottom|base)"
+                rf"\s*,?\s+(?:and\s+)?(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|ones))?\s+in\s+the\s+(?:middle|center|centre)\s*,?\s+(?:and\s+)?"
+                rf"(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|ones))?\s+(?:on\s+top|at\s+the\s+top)\b"),
+     lambda m: ": from bottom to top: " + ", ".join([m.group(2)] * int(m.group(1)) + [m.group(4)] * int(m.group(3))
+                                                    + [m.group(6)] * int(m.group(5))), True),
+    # "make tower of 3 cubes, white is bottom": a colour given an end with "is"
+    (re.compile(rf"(?<=[,:;]\s)({COLOR_RE})\s+is\s+(bottom|top|base)\b(?!\s+of\b)"), r"\1 at the \2", True),
     # "a tower of four: two green at the bottom and two pink on top": the counted colours from the bottom
     (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|bricks|ones))?\s+(?:at|on|in)\s+the\s+(?:bottom|base)"
                 rf"\s*,?\s+(?:and\s+)?(?:then\s+)?(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|bricks|ones))?\s+(?:on\s+top(?:\s+of\s+them)?"

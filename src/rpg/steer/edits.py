@@ -382,6 +382,9 @@ def _adds_a_cube(add: re.Match, t: str) -> bool:
         return False
     if re.search(r"\bpatch", add.group("what") + t[add.end():]):
         return False  # a patch: not a cube of the structure
+    if re.match(rf"\s*(?:it|them|that|this|the\s+(?:(?:{COLOR_RE})\s+)?(?:block|cube|one|tower|stack))\s+(?:on(?:to)?|on\s+top\s+of|under|"
+                r"underneath|below|beneath|next\s+to|beside|behind|in\s+front\s+of)\s", add.group("what")):
+        return False  # "put it on a yellow one": the cube named is moved onto the new one, which is no cube added on top
     return bool(item_sequence(add.group("what")) or re.search(
         r"\b(?:blocks?|cubes?)\b|^\s*(?:\d+|another|1)\s+more\s*$|^\s*another\s*(?:one\s*)?$", add.group("what")))
 
