@@ -173,6 +173,10 @@ def test_interpreter_reads_edits_of_the_domain(edit, intent, ops):
     ("undo that", ("previous", None)),
     ("go back to the 3-block version", ("search", None)),
     ("also add a red cube", ("current", None)),
+    # an end of a line, no version: it had taken v0 and lost the edits since (steer_stranger13)
+    ("add a brown at the start", ("current", None)),
+    ("go back to the start", ("original", None)),
+    ("back to how it was at the start", ("original", None)),
 ])
 def test_reference_cues(edit, cue):
     plan = interpret(edit)
@@ -956,6 +960,20 @@ def test_steering_refuses_what_it_would_apply_wrong(tmp_path, base, edit, match)
     with pytest.raises(SteerError, match=match):
         steer(fam.path, edit)
     assert (Path(fam.path) / "family.yaml").read_bytes() == before  # nothing half-written
+
+
+def test_a_cube_put_on_a_patch_the_relation_lacks_is_an_addition(tmp_path):
+    """"and the green one on the red patch" of yellow next to green had become green on yellow
+    (the patch dropped; steer_stranger13)."""
+    assert _steered(tmp_path, "Put the yellow cube next to the green cube", "and the green one on the red patch")[-1] == (
+        "extend", ["next_to(green,yellow)", "on_patch(green,patch:red)"])
+
+
+def test_a_cube_on_a_patch_added_to_a_between_task_lays_out(tmp_path):
+    """The cube on the new patch and the middle cube had been laid at one spot; validation failed (exit 1)."""
+    assert _steered(tmp_path, "Put the orange cube between the white cube and the black cube",
+                    "and put a red cube on the green patch too")[-1] == (
+        "extend", ["between(orange;black,white)", "on_patch(red,patch:green)"])
 
 
 def test_a_cube_put_onto_a_new_cube_is_not_a_cube_added_on_top():

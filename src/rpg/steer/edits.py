@@ -249,7 +249,9 @@ def find_reference(t: str) -> RefCue:
     m = re.search(r"\b(?:version|v)\s*#?(\d+)\b", t)
     if m:
         return RefCue("version", version=int(m.group(1)), phrase=m.group(0))
-    m = re.search(r"\b(?:the original|first version|base (?:task|version)|very first|initial version|the beginning|the start)\b", t)
+    m = re.search(r"\b(?:the original|first version|base (?:task|version)|very first|initial version)\b"
+                  r"|\b(?:back|revert|return|restart|from|like|as)\b(?:\s+\w+){0,5}?\s+(?:the beginning|the start)\b", t)
+    # ("add a brown one at the start" is an end of the line, no version: "back to how it was at the start" is)
     if m:
         return RefCue("original", phrase=m.group(0))
     redo = re.fullmatch(r"\W*(?:(?:nvm|never\s*mind|ok(?:ay)?|actually|no|hmm+|wait)\W+)*redo(?:\s+(?:that|it|the\s+last\s+"

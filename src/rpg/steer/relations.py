@@ -130,6 +130,9 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         return None  # "put the tower on the left side": a place for the whole structure, not a relation inside it
     if ADDS_RE.search(t):
         return _added(t, schema, rel)
+    have = {a.color for a in schema.assets if a.kind == "goal_patch"}
+    if any(canon_color(c) not in have for c in re.findall(rf"\b({COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patch|pad|mat)\b", t)):
+        return None  # "and the green one on the red patch": a patch the relation does not have, so no change of it
     subject, obj = rel.subject, rel.object
     side = STACK_SIDE_MOVE_RE.fullmatch(t) if rel.kind == "on" and obj not in _patches(schema) else None
     if side:  # "move it to the left" of a two-cube stack: the stack to that side of the table

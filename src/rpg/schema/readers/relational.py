@@ -8,6 +8,7 @@ mentions and relation words (:data:`rpg.schema.lexicon.REL_PATTERNS`) are read i
 from __future__ import annotations
 
 import itertools
+import math
 import re
 from dataclasses import dataclass, field
 
@@ -605,7 +606,11 @@ def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch:
         a, c = base_of[r.a], base_of[r.b]
         if isinstance(r, Between):
             c2 = base_of[r.c]
-            placed.setdefault(a, (cx, cy))
+            if a not in placed:  # the middle cube and its two neighbours clear of what stands already (a cube on a patch)
+                taken = list(placed.values()) + list(early_xy.values())
+                placed[a] = next(((x, y) for x in (cx, cx - 0.08, cx + 0.08) for y in (cy, cy + 0.2, cy - 0.2, cy + 0.12, cy - 0.12)
+                                  if all(math.hypot(x - ox, y + dy - oy) >= 0.1 for dy in (0.0, 0.08, -0.08) for ox, oy in taken)),
+                                 (cx, cy))
             ax, ay = placed[a]
             placed.setdefault(c, (ax, ay + 0.08))
             placed.setdefault(c2, (ax, ay - 0.08))
