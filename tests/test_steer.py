@@ -962,6 +962,21 @@ def test_steering_refuses_what_it_would_apply_wrong(tmp_path, base, edit, match)
     assert (Path(fam.path) / "family.yaml").read_bytes() == before  # nothing half-written
 
 
+@pytest.mark.parametrize("edit, ops", [
+    # steer_stranger13's edits said in words the edit reader had not known (each refused)
+    ("now five instead of three", [("count", {"count": 5})]),
+    ("extend it to spell STOP", [("word", {"word": "STOP"})]),
+    ("what if the base was black", [("recolor", {"select": {"position": "bottom"}, "to": {"color": "black"}})]),
+    ("same but in yellow", [("recolor", {"select": {"all": True}, "to": {"color": "yellow"}})]),
+    ("add a third", [("add", {"items": [], "count": 1, "at": "top"})]),
+    # the middle cube replaced (it had been added in the table's centre, the yellow one kept)
+    ("use a purple cube in the middle instead of the yellow one",
+     [("recolor", {"select": {"color": "yellow"}, "to": {"color": "purple"}})]),
+])
+def test_edits_said_in_other_words_read_as_their_operation(edit, ops):
+    assert [(o.op, o.params) for o in interpret(edit).ops] == ops
+
+
 def test_a_cube_put_on_a_patch_the_relation_lacks_is_an_addition(tmp_path):
     """"and the green one on the red patch" of yellow next to green had become green on yellow
     (the patch dropped; steer_stranger13)."""

@@ -1548,6 +1548,23 @@ EDIT_OPENING = r"^\s*(?:(?i:nah|no|ok(?:ay)?|so|and|then|hmm|actually|now)[\s,]+
 "actually, left to right: ..."): they change nothing."""
 
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
+    # "now five instead of three": that count
+    (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|now|so|then)\s*,?\s*)*(\d+|{COUNT_WORD_RE})\s+instead\s+of\s+(?:\d+|{COUNT_WORD_RE})\s*[.!]?\s*$"),
+     r"use \1 blocks instead"),
+    # "extend it to spell STOP": the word changed (no action)
+    (re.compile(r"(?i)\b(?:extend|grow|lengthen|expand)\s+(?:it|that|this|the\s+word)\s+to\s+(spell|say|read)\b"), r"make it \1"),
+    # "what if the base was black": a recolour said as a wish, no condition on the scene
+    (re.compile(rf"(?i)^\s*what\s+if\s+(the\s+(?:[a-z]+\s+){{0,2}}?(?:base|top|bottom|middle|one|cube|block|row|layer|tower|line))\s+"
+                rf"(?:was|were|is|became)\s+({COLOR_RE})\s*\??\s*$"), r"make \1 \2"),
+    # "same but in yellow": every cube that colour
+    (re.compile(rf"(?i)^\s*(?:the\s+)?same\s+(?:thing\s+|task\s+)?but\s+(?:all\s+)?(?:in\s+)?({COLOR_RE})\s*[.!]?\s*$"), r"make them all \1"),
+    # "use a purple cube in the middle instead of the yellow one": the cube named replaced where it stands
+    (re.compile(rf"(?i)\b(use)\s+(an?\s+)?({COLOR_RE})\s+(cube|block|one)\s+(?:in\s+the\s+(?:middle|centre|center)|on\s+top"
+                rf"|at\s+the\s+(?:top|bottom|base|end|start))\s+(instead\s+of|in\s+place\s+of)\s+(the\s+(?:{COLOR_RE})\s+(?:one|cube|block))\b"),
+     r"\1 \2\3 \4 \5 \6"),
+    # "one more on top", "add a third": one more cube
+    (re.compile(r"(?i)^\s*(?:and\s+|plus\s+)?(?:add\s+|put\s+)?one\s+more\s+on\s+top\s*[.!]?\s*$"), r"add one more block on top"),
+    (re.compile(r"(?i)^\s*(?:and\s+|now\s+)?add\s+a\s+(?:third|fourth|fifth|sixth)(?:\s+(?:one|cube|block))?\s*[.!]?\s*$"), r"add one more block"),
     # "ok then just a green cube at the right end": a cube added at that end
     (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|fine|alright)\s*,?\s*)?(?:then\s+)?(?:just\s+)?(?:a|an|one)\s+({COLOR_RE})\s+(?:cube|block)\s+"
                 r"(?:at|on)\s+the\s+(left|right|top|bottom|front|back)(\s+end)?\s*(?:then|instead)?\s*[.!]?\s*$"), r"add a \1 cube at the \2\3"),
