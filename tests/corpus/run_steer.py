@@ -82,6 +82,7 @@ DEVELOPMENT = {
     "stranger11": ("steer_stranger11.yaml", "STRANGER steering set 11 (steer_stranger11.yaml, development material)"),
     "stranger12": ("steer_stranger12.yaml", "STRANGER steering set 12 (steer_stranger12.yaml, development material)"),
     "stranger13": ("steer_stranger13.yaml", "STRANGER steering set 13 (steer_stranger13.yaml, development material)"),
+    "stranger14": ("steer_stranger14.yaml", "STRANGER steering set 14 (steer_stranger14.yaml, development material)"),
 }
 UNSEEN = HERE / "steer_unseen.yaml"
 SPLITS = HERE / "splits.yaml"
