@@ -950,7 +950,8 @@ def test_a_patch_recoloured_with_another_colour_said_is_not_read_as_the_patch_al
 @pytest.mark.parametrize("base,edit,match", [
     # steer_stranger4 (eighth session): each compiled silently wrong before
     ("Place a red cube in the left half of the table", "and a blue one on the right", "adds none"),  # red moved
-    ("Make a line of three purple cubes", "add a yellow one at each end", "two places"),  # one end dropped
+    ("Make a line of three purple cubes", "add two yellow ones at each end", "two places"),  # one end dropped
+    # (one cube at each end is read since the sixteenth session: test_edits_said_in_other_words_read_as_their_operation)
     ("Stack blue on red", "swap the red for the yellow one we used before", "earlier turn"),  # no such cube
 ])
 def test_steering_refuses_what_it_would_apply_wrong(tmp_path, base, edit, match):
@@ -972,6 +973,12 @@ def test_steering_refuses_what_it_would_apply_wrong(tmp_path, base, edit, match)
     # the middle cube replaced (it had been added in the table's centre, the yellow one kept)
     ("use a purple cube in the middle instead of the yellow one",
      [("recolor", {"select": {"color": "yellow"}, "to": {"color": "purple"}})]),
+    # steer_stranger14: another word in capitals; a cube at both ends
+    ("make it HELLO", [("word", {"word": "HELLO"})]),
+    ("BED -> BAD", [("word", {"word": "BAD"})]),
+    ("make it RED", [("recolor", {"select": {"all": True}, "to": {"color": "red"}})]),  # a colour, not a word
+    ("and add a red at each end", [("add", {"items": [{"color": "red"}], "count": None, "at": "bottom"}),
+                                   ("add", {"items": [{"color": "red"}], "count": None, "at": "top"})]),
 ])
 def test_edits_said_in_other_words_read_as_their_operation(edit, ops):
     assert [(o.op, o.params) for o in interpret(edit).ops] == ops
@@ -989,6 +996,21 @@ def test_a_cube_on_a_patch_added_to_a_between_task_lays_out(tmp_path):
     assert _steered(tmp_path, "Put the orange cube between the white cube and the black cube",
                     "and put a red cube on the green patch too")[-1] == (
         "extend", ["between(orange;black,white)", "on_patch(red,patch:green)"])
+
+
+def test_a_cube_added_inside_a_structure_is_refused_not_put_at_the_end():
+    """"add another O right after the first one" of GOD had made GODO (steer_stranger14)."""
+    with pytest.raises(SteerError, match="inside the structure"):
+        interpret("add another O right after the first one")
+
+
+def test_a_cube_added_left_of_a_cube_in_a_region_is_a_relation_and_a_bare_side_moves_it(tmp_path):
+    """"and a pink cube to the left of it" had put pink in the table's left side (steer_stranger14);
+    "nah right side" had been refused."""
+    assert _steered(tmp_path, "Put the black cube in the center of the table", "and a pink cube to the left of it")[-1] == (
+        "extend", ["in_region(black,center)", "left_of(pink,black)"])
+    assert _steered(tmp_path / "b", "Place the red cube on the left side of the table", "nah right side")[-1] == (
+        "modify", ["in_region(red,right)"])
 
 
 def test_a_cube_put_onto_a_new_cube_is_not_a_cube_added_on_top():

@@ -49,13 +49,13 @@ STRANGER_SETS = {
     "stranger12": ("stranger12.yaml", "STRANGER set 12 (stranger12.yaml, development material)"),
     "stranger13": ("stranger13.yaml", "STRANGER set 13 (stranger13.yaml, development material)"),
     "stranger14": ("stranger14.yaml", "STRANGER set 14 (stranger14.yaml, development material)"),
-    "stranger15": ("stranger15.yaml", "STRANGER set 15 (stranger15.yaml, development material)"),
+    "stranger15": ("stranger15.yaml", "STRANGER set 15 (stranger15.yaml, HELD OUT: report aggregates only)"),
     "stranger16": ("stranger16.yaml", "STRANGER set 16 (stranger16.yaml, development material)"),
     "stranger17": ("stranger17.yaml", "STRANGER set 17 (stranger17.yaml, development material)"),
     "stranger18": ("stranger18.yaml", "STRANGER set 18 (stranger18.yaml, development material)"),
     "stranger19": ("stranger19.yaml", "STRANGER set 19 (stranger19.yaml, development material)"),
     "stranger20": ("stranger20.yaml", "STRANGER set 20 (stranger20.yaml, development material)"),
-    "stranger21": ("stranger21.yaml", "STRANGER set 21 (stranger21.yaml, HELD OUT until the end of the sixteenth session: report aggregates only)"),
+    "stranger21": ("stranger21.yaml", "STRANGER set 21 (stranger21.yaml, HELD OUT: report aggregates only)"),
 }
 SPLITS = HERE / "splits.yaml"
 
@@ -75,7 +75,7 @@ REASON_WORDS = {
     "contradiction": r"contradict|cannot (?:both|end in)",
     "colour": r"unknown colou?r|not (?:a|one of the) colou?rs?|colou?r \S+ is not|palette",
 }
-HELD_OUT = ("unseen", "stranger4")  # read by this runner only; nobody looks at their cases or failures
+HELD_OUT = ("unseen", "stranger4", "stranger15", "stranger21")  # read by this runner only; nobody looks at their cases or failures
 UNKNOWN_WORD = re.compile(r"^could not parse ")
 
 

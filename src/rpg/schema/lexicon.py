@@ -1548,6 +1548,10 @@ EDIT_OPENING = r"^\s*(?:(?i:nah|no|ok(?:ay)?|so|and|then|hmm|actually|now)[\s,]+
 "actually, left to right: ..."): they change nothing."""
 
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
+    # "make it HELLO", "BED -> RED": another word (capitals: a word the cubes spell, not a colour or a count)
+    (re.compile(rf"^\s*(?:(?:nah|ok(?:ay)?|now|so|then|actually)\s*,?\s*)*(?:make|change|turn)\s+it\s+(?:to\s+|into\s+)?(?!(?i:{COLOR_RE})\b)([A-Z]{{2,}})\s*[.!]?\s*$"),
+     r"make it spell \1"),
+    (re.compile(rf"^\s*[A-Z]{{2,}}\s*(?:->|\u2192|=>)\s*(?!(?i:{COLOR_RE})\b)([A-Z]{{2,}})\s*[.!]?\s*$"), r"make it spell \1"),
     # "now five instead of three": that count
     (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|now|so|then)\s*,?\s*)*(\d+|{COUNT_WORD_RE})\s+instead\s+of\s+(?:\d+|{COUNT_WORD_RE})\s*[.!]?\s*$"),
      r"use \1 blocks instead"),

@@ -488,9 +488,19 @@ def read_ops(t: str) -> list[Op]:
     if add:
         what = add.group("what")
         each_end = re.search(r"\b(?:at|on|to)\s+(?:each|both|either)\s+(?:ends?|sides?)\b", t)
-        if each_end:  # "add a yellow one at each end": one edit, two places (one of them had been dropped)
+        one = item_sequence(what)
+        if each_end and len(one) == 1 and not re.search(r"\b(?:\d+|two|three|four|pairs?)\b", what):
+            # "add a red at each end": that cube at both ends (one of them had been dropped, then the edit refused)
+            item = {"color": one[0][0]} if one[0][0] else {"label": one[0][1]}
+            return ops + [Op("add", {"items": [item], "count": None, "at": at}) for at in ("bottom", "top")]
+        if each_end:  # "add two yellow ones at each end": not read
             raise SteerError(f"'{each_end.group(0)}' puts cubes at two places in one edit, which the builtin steering "
                              "does not read; add one end per edit (\"add a yellow one on the left end\"), or use --model")
+        inside = re.search(r"\b(?:right\s+|just\s+|directly\s+|immediately\s+)?(?:after|before|following)\s+the\s+(?:first|second|third|"
+                           r"fourth|fifth|last|middle|other)\s+(?:one|letter|cube|block|digit|number|[a-z0-9])\b", t[add.start():])
+        if inside:  # "add another O right after the first one": a place inside the structure (it had gone at the end)
+            raise SteerError(f"'{inside.group(0)}' puts the cube inside the structure, which the builtin steering adds only at "
+                             "an end; say the whole new order (e.g. \"make it spell GOOD\"), or use --model")
         beside = EDIT_BESIDE_RE.search(what)
         second = re.search(r"\b(?:an?|another|one|\d+|new|second|other)\s+(?:[a-z]+\s+){0,2}?" + STRUCTURE_RE, what)
         if second:  # "add a pyramid of 3 yellow blocks": a second structure, not cubes of this one

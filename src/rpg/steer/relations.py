@@ -355,6 +355,8 @@ def _edit_region(t: str) -> str | None:
         fb, lr = m.group("fb"), m.group("lr")
         if not (fb or lr) or (fb and not lr and not m.group("part") and not re.match(r"\s*of the (?:table|workspace)", t[m.end():])):
             continue
+        if lr and not fb and not m.group("part") and re.match(r"\s*of\s+(?:it|them|that|this|the\s+(?!table\b|workspace\b)\w+)", t[m.end():]):
+            continue  # "to the left of it": a relation to a cube, no side of the table
         return region_name(fb, lr)
     return None
 
@@ -377,9 +379,10 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         return None  # two cubes of one colour cannot be told apart by name in an edit or a clause
     t = " " + edit.lower().strip().rstrip(".!") + " "
     region = _edit_region(t)
-    bare = re.fullmatch(r"\s*(?:(?:now|ok(?:ay)?|actually|rather|no|wait|sorry|hmm)[\s,]+)*(the\s+[a-z\s-]+?)(?:\s+(?:instead|please|now))*\s*", t)
-    if region is None and bare:  # "now the right side": the place alone
-        region = _edit_region(f" to {bare.group(1)} ")
+    bare = re.fullmatch(r"\s*(?:(?:now|ok(?:ay)?|actually|rather|no|nah|wait|sorry|hmm)[\s,]+)*(?:the\s+)?((?:far\s+)?(?:front|back|rear|left|right"
+                        r"|middle|center|centre)[a-z\s-]*?)(?:\s+(?:instead|please|now|then))*\s*", t)
+    if region is None and bare:  # "now the right side", "nah right side": the place alone
+        region = _edit_region(f" to the {bare.group(1)} ")
     added = re.search(rf"\b(?:add|put|place)\s+(?:an?|another|one more)\s+({COLOR_RE})\s+(?:block|cube)\b(.*)", t) or (
         EDIT_ADDITIVE_RE.search(t) and re.search(NEW_CUBE + r"(.*\b(?:front|back|rear|corner|half|side|edge|center|centre|middle"
                                                  r"|table|workspace)\b.*)", t))
