@@ -56,6 +56,7 @@ STRANGER_SETS = {
     "stranger19": ("stranger19.yaml", "STRANGER set 19 (stranger19.yaml, development material)"),
     "stranger20": ("stranger20.yaml", "STRANGER set 20 (stranger20.yaml, development material)"),
     "stranger21": ("stranger21.yaml", "STRANGER set 21 (stranger21.yaml, HELD OUT: report aggregates only)"),
+    "stranger22": ("stranger22.yaml", "STRANGER set 22 (stranger22.yaml, development material)"),
 }
 SPLITS = HERE / "splits.yaml"
 
