@@ -807,6 +807,12 @@ def test_a_question_about_a_cube_is_refused_as_a_question():
     ("Stack six cubes into one tower: two red at the bottom, two green in the middle, two blue at the top.",
      ["stack(red,red,green,green,blue,blue)"]),  # refused: "a colour listed twice is given an end"
     ("make tower of 3 cubes, white is bottom.", ["stack(white,red,blue)"]),  # no task found
+    # stranger22 (read after its first run): both ends one colour (it had read white, white, brown: silently wrong)
+    ("Tower of three: the top and bottom are both white, the middle one brown.", ["stack(white,brown,white)"]),
+    ("Given a stack of orange on top of cyan, move the orange cube onto the pink patch.",
+     ["on_patch(orange,patch:pink)", "start:stack(cyan,orange)"]),
+    ("Build a 4-high tower, listed top to bottom: white, cyan, blue, purple.", ["stack(purple,blue,cyan,white)"]),
+    ("Row of five cubes, colours unimportant, at the front of the table.", ["line(blue,green,orange,red,yellow)@front"]),
     ("Stack the cyan cube on the purple cube, and put the resulting tower in the front left corner.",
      ["stack(purple,cyan)@front_left"]),
     ("We evaluate on a task in which three cubes of arbitrary colour must be stacked into a single tower.",

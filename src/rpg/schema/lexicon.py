@@ -883,6 +883,7 @@ FREE_CHOICE_RE = re.compile(
     r"\s+anywhere|(?:do\s*n[o']?t|don't|do\s+not)\s+matter|(?:are|is)\s+(?:irrelevant|free|up\s+to\s+you))\b"
     r"|[,;(\u2013\u2014-]?\s*\bnothing\s+else\s+(?:matters|is\s+important|counts)\b"
     r"|[,;(\u2013\u2014-]?\s*\b(?:the\s+)?colou?rs?\s+(?:do\s*n[o']?t|don't|do\s+not|does\s*n[o']?t|doesn't|does\s+not)\s+matter\b"
+    r"|[,;(\u2013\u2014-]?\s*\b(?:the\s+)?colou?rs?\s+(?:are\s+)?(?:unimportant|irrelevant)\b"
     r"|[,;(\u2013\u2014-]\s*(?:in\s+)?any\s+colou?rs?(?=\s*[.!;)]|\s*$)"
     r"|[,;(\u2013\u2014-]?\s*\b(?:the\s+)?colou?rs?\s+(?:are\s+)?(?:free|open|up\s+to\s+you|your\s+choice)(?=\s*[.!;)]|\s*$)"
     r"|[,;(\u2013\u2014-]?\s*\b(?:the\s+)?(?:other|remaining)\s+(?:\d+|two|three|four|one)(?:\s+(?:cubes|blocks|ones))?\s+(?:can|may|could)\s+be"

@@ -789,6 +789,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.SOMEONE_WANTS_RE.sub("i want", text)
     text = re.sub(r"^\s*(?:about|regarding|re|concerning)\s+(?=the\s+(?:tower|stack|row|line|pyramid|wall|grid|circle)\s*:)", "", text)
     text = re.sub(r"\barbitrary\s+(?=(?:colou?rs?|order)\b)", "any ", text)  # "three cubes of arbitrary colour"
+    text = re.sub(r"\b(?:listed|given|written|read)\s+(?=(?:from\s+)?(?:the\s+)?(?:top|bottom)\s+(?:to|up|down)\b)", "", text)  # "listed top to bottom:"
     text = re.sub(r"\b(the|that|this)\s+(?:whole|entire|complete|resulting|finished|completed)\s+(?=(?:stack|tower|row|line|circle|pyramid|wall|grid|structure)\b)",
                   r"\1 ", text)  # "put the whole stack on the red patch": the stack
     if re.search(r"\bpyramids?\b", text):  # "pyramid: an orange and a pink cube side by side, and a white cube resting on both"
@@ -1254,6 +1255,12 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
                 rf"(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|ones))?\s+(?:on\s+top|at\s+the\s+top)\b"),
      lambda m: ": from bottom to top: " + ", ".join([m.group(2)] * int(m.group(1)) + [m.group(4)] * int(m.group(3))
                                                     + [m.group(6)] * int(m.group(5))), True),
+    # "tower of three: the top and bottom are both white, the middle one brown": both ends one colour (it had read
+    # white, white, brown)
+    (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(?:the\s+)?(?:top\s+and\s+(?:the\s+)?bottom|bottom\s+and\s+(?:the\s+)?top)(?:\s+(?:ones|cubes|blocks))?"
+                rf"\s+(?:are\s+|being\s+)?(?:both\s+|2\s+)?({COLOR_RE})\s*,?\s+(?:and\s+)?(?:with\s+)?(?:the\s+)?(?:middle|center|centre)"
+                rf"(?:\s+(?:one|1|cube|block))?\s+(?:is\s+|being\s+)?({COLOR_RE})\b"),
+     r": from bottom to top: \1, \2, \1", True),
     # "make tower of 3 cubes, white is bottom": a colour given an end with "is"
     (re.compile(rf"(?<=[,:;]\s)({COLOR_RE})\s+is\s+(bottom|top|base)\b(?!\s+of\b)"), r"\1 at the \2", True),
     # "a tower of four: two green at the bottom and two pink on top": the counted colours from the bottom

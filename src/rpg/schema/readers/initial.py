@@ -54,8 +54,8 @@ ROBOT_STARTS_RE = re.compile(
 cube and has to move the white cube onto the pink patch"): read as "Initially ... . <goal>"."""
 
 FROM_START_RE = re.compile(
-    rf"(?i)^\s*(?:from|starting\s+(?:from|with)|beginning\s+(?:from|with))\s+(?:a|the)\s+(?:start|scene|setup|state|configuration)"
-    rf"\s+(?:where|in\s+which|with)\s+(?P<fact>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:(?:sits|is|rests|lies|stands)\s+)?"
+    rf"(?i)^\s*(?:(?:from|starting\s+(?:from|with)|beginning\s+(?:from|with))\s+(?:a|the)\s+(?:start|scene|setup|state|configuration)"
+    rf"\s+(?:where|in\s+which|with)|given\s+(?:a|the)\s+(?:stack|tower)\s+(?:of|with))\s+(?P<fact>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:(?:sits|is|rests|lies|stands)\s+)?"
     rf"(?:stacked\s+)?(?:on\s+top\s+of|on|atop)\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?)\s*[,;]\s*(?:then\s+)?(?P<goal>.+)$")
 """A start said as the scene a goal starts from ("From a start where blue sits on yellow, move the
 blue cube onto the red patch"): read as "Initially ... . <goal>" (its tower had been read as the goal)."""
