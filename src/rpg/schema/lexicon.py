@@ -339,6 +339,11 @@ def colour_names() -> frozenset[str]:
     names = set(mcolors.CSS4_COLORS) | {n.split(":", 1)[1] for n in mcolors.XKCD_COLORS}
     return frozenset(n for n in names if n.isalpha())
 
+THING_NOUN = ("(?:cubes?|blocks?|bricks?|boxes|box|patch(?:es)?|ones?|shapes?|structures?|walls?|"
+              + "|".join(sorted({f"{w}s?" for k in STRUCTURE_KINDS.values() for w in (*k.words, *k.described_by)})) + ")")
+"""A noun for a cube, a patch or a structure (plural too), from the structure kinds' own words: what
+a word outside the lexicon may describe or act on (:func:`rpg.schema.reading.ignorable_unknown`)."""
+
 UNKNOWN_CARRIES_MEANING: frozenset[str] = frozenset("""
 time times week weeks day days month months year years weekend deadline timer clock monday tuesday wednesday thursday
 friday saturday sunday once whichever whatever wherever whoever case why whether either else outline perimeter border

@@ -222,8 +222,7 @@ def _unknown_word_classes(text: str, unknown: list[str]) -> list[tuple[str, str,
     return found
 
 
-_MODIFIES_AFTER = re.compile(rf"\s+(?:(?:{COLOR_RE}|[a-z\-]+)\s+)?(?:cubes?|blocks?|bricks?|boxes|box|patch(?:es)?|ones?|towers?|stacks?"
-                             r"|piles?|rows?|lines?|columns?|circles?|rings?|grids?|walls?|pyramids?|squares?|shapes?|structures?)\b")
+_MODIFIES_AFTER = re.compile(rf"\s+(?:(?:{COLOR_RE}|[a-z\-]+)\s+)?{lexicon.THING_NOUN}\b")
 """What follows a word that describes a cube, a patch or a structure ("hollow square", "the shiny one")."""
 _PLACE_BEFORE = re.compile(r"\b(?:in|into|on|onto|at|to|towards?|from|over|under|inside|near|beside|behind|above|below|across|along"
                            r"|up|off)\s+(?:(?:the|a|an|my|your|our|their|its|this|that)\s+)?$")
@@ -233,7 +232,7 @@ _PLACED_BEFORE = re.compile(rf"\b(?:{'|'.join(sorted(lexicon.PLACEMENT_VERBS))}|
 _VERB_TAKES_AFTER = re.compile(r"\s+(?:up|down|over|out|off|away|back|around|apart|together|along|\d+"
                                r"|(?:(?:by|on|onto|in|into|to|from|with|under|over|against|between|near|beside|behind|atop)\s+)?"
                                r"(?:(?:the|a|an|this|that|these|those|all|both|each|every|\d+)\s+)?(?:[a-z\-]+\s+){0,2}?"
-                               r"(?:cubes?|blocks?|bricks?|boxes|box|towers?|stacks?|piles?|rows?|lines?|pyramids?|walls?|grids?|circles?))\b")
+                               rf"{lexicon.THING_NOUN})\b")
 """What follows a verb that acts on the cubes ("count down", "fall over", "rerun the tower")."""
 
 
