@@ -791,6 +791,12 @@ def test_an_unknown_word_that_may_carry_meaning_is_not_ignored(text, word):
         parse(text)
 
 
+def test_a_text_mostly_of_unknown_words_is_refused_naming_them():
+    """200 made-up tokens after a task had compiled with all of them ignored (found by the session's attack)."""
+    with pytest.raises(ParseError, match="could not parse 'qwx'"):
+        parse("Put the red cube on the blue cube " + " ".join(f"qwx{i}" for i in range(200)))
+
+
 def test_a_question_about_a_cube_is_refused_as_a_question():
     from rpg.schema.builtin import Inexpressible
 

@@ -1064,6 +1064,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                     if w not in named]
     if unknown and not refused:  # issue 30, item 3: other words are ignored and listed in accounting
         gone = {w for w in unknown if ignorable_unknown(w, text)}
+        tokens = re.findall(r"[a-z][a-z\-]*", text)
+        if 3 * sum(t in gone for t in tokens) > len(tokens):
+            gone = set()  # a third of the text or more unread: nothing is ignored, the words are named instead
         if gone:
             dropped += [(w, "a word outside the lexicon") for w in dict.fromkeys(unknown) if w in gone]
             unknown = [w for w in unknown if w not in gone]
