@@ -791,6 +791,21 @@ def test_an_unknown_word_that_may_carry_meaning_is_not_ignored(text, word):
         parse(text)
 
 
+@pytest.mark.parametrize("text, word", [
+    # words no dictionary knows, each caught by its own guard (the dictionary rule refuses real words first)
+    ("yeet the red cube onto the blue cube", "yeet"),  # used as a verb on a cube
+    ("Put the red cube zorp on the blue cube.", "zorp"),  # before a relation to a cube
+    ("Put the red cube in the zorp.", "zorp"),  # a place
+    ("Put the flurbo cube on the red patch.", "flurbo"),  # describes a cube
+    ("Put blorp on the red cube.", "blorp"),  # what is placed
+    ("Stack three cubes; the 3rd is red.", "rd"),  # the ending of a number
+    ("Put the red cube on the blue cube. Zorp.", "zorp"),  # a sentence with nothing of the task
+])
+def test_a_made_up_word_that_may_carry_meaning_is_not_ignored(text, word):
+    with pytest.raises(ParseError, match=f"'{word}'"):
+        parse(text)
+
+
 def test_a_text_mostly_of_unknown_words_is_refused_naming_them():
     """200 made-up tokens after a task had compiled with all of them ignored (found by the session's attack)."""
     with pytest.raises(ParseError, match="could not parse 'qwx'"):

@@ -351,7 +351,9 @@ frame hollow silhouette rerun redo orientation pose angle count counts counting 
 """.split())
 """Words outside the lexicon that carry meaning a task cannot hold (a time, a condition - "once",
 "whichever", "in case" -, a question, an alternative, a shape, a repeat of something done
-before): never ignored as an unknown word (:func:`rpg.schema.reading.ignorable_unknown`)."""
+before): never ignored as an unknown word (:func:`rpg.schema.reading.ignorable_unknown`).  Since
+no dictionary word is ignored alone, this list decides for the parts of a hyphenated word
+("time-limited") and for spellings the dictionary lacks."""
 
 UNKNOWN_ACTION = ("action", "is an action the domain does not have: a task's goal says where cubes end up "
                   "(stacked, in a line, next to or on something, on a patch); say where the cubes should end")

@@ -233,7 +233,8 @@ _VERB_TAKES_AFTER = re.compile(r"\s+(?:up|down|over|out|off|away|back|around|apa
                                r"|(?:(?:by|on|onto|in|into|to|from|with|under|over|against|between|near|beside|behind|atop)\s+)?"
                                r"(?:(?:the|a|an|this|that|these|those|all|both|each|every|\d+)\s+)?(?:[a-z\-]+\s+){0,2}?"
                                rf"{lexicon.THING_NOUN})\b")
-"""What follows a verb that acts on the cubes ("count down", "fall over", "rerun the tower")."""
+"""What follows a word used as a verb on the cubes: a particle ("zorp down"), or a cube or structure,
+maybe after a preposition ("yeet the red cube", "supported by green block")."""
 
 
 def ignorable_unknown(word: str, text: str) -> bool:
@@ -270,8 +271,8 @@ def ignorable_unknown(word: str, text: str) -> bool:
             return False  # a sentence of its own ("Vice versa.", "Diagonal please."): the idle-sentence rule decides
         if _MODIFIES_AFTER.match(after) or _PLACE_BEFORE.search(before) or _PLACED_BEFORE.search(before):
             return False
-        if _VERB_TAKES_AFTER.match(after) or re.match(r"\s+(?:up|down|over|out|off|around)\b", after):
-            return False  # a word used as a verb on the cubes ("yeet the red cube"), or before a particle
+        if _VERB_TAKES_AFTER.match(after):
+            return False  # a word used as a verb on the cubes ("yeet the red cube"), or before a particle ("zorp down")
     return True
 
 

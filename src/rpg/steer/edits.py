@@ -485,14 +485,14 @@ def read_ops(t: str) -> list[Op]:
         r"|\bon(?:to)?(?= (?:letter|digit) [a-z0-9]\b)"
         rf"|[;,.]|\band\b(?!\s+an?\s+(?:(?:digit|letter|number)\s+)?(?:[a-z0-9]|{COLOR_RE})\b(?!\s+(?:on|to|at|under|next|beside)\b))|$)", t)  # "add a 0 and a 9"
     add = next((a for a in adds if _adds_a_cube(a, t)), None)
-    if add:
+    each_end = re.search(r"\b(?:at|on|to)\s+(?:each|both|either)\s+(?:ends?|sides?)\b", t) if add else None
+    one = item_sequence(add.group("what")) if each_end else []
+    if each_end and len(one) == 1 and not re.search(r"\b(?:\d+|two|three|four|pairs?)\b", add.group("what")):
+        # "add a red at each end": that cube at both ends (one of them had been dropped, then the edit refused)
+        item = {"color": one[0][0]} if one[0][0] else {"label": one[0][1]}
+        ops += [Op("add", {"items": [item], "count": None, "at": end}) for end in ("bottom", "top")]
+    elif add:
         what = add.group("what")
-        each_end = re.search(r"\b(?:at|on|to)\s+(?:each|both|either)\s+(?:ends?|sides?)\b", t)
-        one = item_sequence(what)
-        if each_end and len(one) == 1 and not re.search(r"\b(?:\d+|two|three|four|pairs?)\b", what):
-            # "add a red at each end": that cube at both ends (one of them had been dropped, then the edit refused)
-            item = {"color": one[0][0]} if one[0][0] else {"label": one[0][1]}
-            return ops + [Op("add", {"items": [item], "count": None, "at": at}) for at in ("bottom", "top")]
         if each_end:  # "add two yellow ones at each end": not read
             raise SteerError(f"'{each_end.group(0)}' puts cubes at two places in one edit, which the builtin steering "
                              "does not read; add one end per edit (\"add a yellow one on the left end\"), or use --model")
