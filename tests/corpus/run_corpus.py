@@ -57,6 +57,7 @@ STRANGER_SETS = {
     "stranger20": ("stranger20.yaml", "STRANGER set 20 (stranger20.yaml, development material)"),
     "stranger21": ("stranger21.yaml", "STRANGER set 21 (stranger21.yaml, HELD OUT: report aggregates only)"),
     "stranger22": ("stranger22.yaml", "STRANGER set 22 (stranger22.yaml, development material)"),
+    "stranger23": ("stranger23.yaml", "STRANGER set 23 (stranger23.yaml, development material)"),
 }
 SPLITS = HERE / "splits.yaml"
 

@@ -83,6 +83,7 @@ DEVELOPMENT = {
     "stranger12": ("steer_stranger12.yaml", "STRANGER steering set 12 (steer_stranger12.yaml, development material)"),
     "stranger13": ("steer_stranger13.yaml", "STRANGER steering set 13 (steer_stranger13.yaml, development material)"),
     "stranger14": ("steer_stranger14.yaml", "STRANGER steering set 14 (steer_stranger14.yaml, development material)"),
+    "stranger15": ("steer_stranger15.yaml", "STRANGER steering set 15 (steer_stranger15.yaml, development material)"),
 }
 UNSEEN = HERE / "steer_unseen.yaml"
 SPLITS = HERE / "splits.yaml"

@@ -39,12 +39,12 @@ remaining colours (cyan, pink)."""
 COLOR_ALIASES: dict[str, str] = {
     "grey": "gray",
     "violet": "purple",
-    "turquoise": "cyan",
 }
-"""Other names a user may write for a palette colour: names of the same colour only.  Magenta
-and teal are other colours than the palette's pink and cyan (far in hue or lightness), so
-they are refused like any colour the palette lacks rather than read as a neighbour (two of
-three helpers writing instructions for the project expected that)."""
+"""Other names a user may write for a palette colour: names of the same colour only.  Magenta,
+teal and turquoise are other colours than the palette's pink and cyan (far in hue or
+lightness), so they are refused like any colour the palette lacks rather than read as a
+neighbour (two of three helpers writing instructions for the project expected that of magenta
+and teal; four writers of the development stranger sets 9, 16, 18 and 20, of turquoise)."""
 
 DEFAULT_SEMANTIC_COLOR: str = "white"
 """Body colour of a semantic (letter/number) cube; its glyphs are drawn in black."""

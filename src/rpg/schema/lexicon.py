@@ -135,7 +135,9 @@ the table the cubes stand on; "the rightmost corner" is a corner on the right.""
 NUMBER_WORDS = {
     "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
     "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "both": 2, "pair": 2, "couple": 2,
-    "single": 1, "thirteen": 13, "fourteen": 14, "fifteen": 15, "twenty": 20, "thirty": 30,
+    "single": 1, "thirteen": 13, "fourteen": 14, "fifteen": 15, "sixteen": 16, "seventeen": 17, "eighteen": 18,
+    "nineteen": 19, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80,
+    "hundred": 100,
 }
 """Number words -> their value (written as digits by the parser's and the steering's normalisers)."""
 
@@ -163,6 +165,26 @@ is not said.  Not read in a steering edit, where "but put them in a row" is the 
 INSTRUCTION_ONLY = frozenset({START_TIME_RE, BUT_CORRECTION_RE})
 """:data:`INEXPRESSIBLE` patterns that hold for a whole instruction only (see each)."""
 
+ROBOT_ONLY_RE = (r"\b(?:move|bring|return|send|park|put|position|raise|lower|open|close|hover|lift|rotate|extend|retract|reset)\s+"
+                 r"(?:the\s+|your\s+|its\s+|the\s+robot's\s+)?(?:robot(?:ic)?\s+)?(?:grippers?|arms?|end[\s-]?effectors?|hands?|wrists?"
+                 r"|fingers?|manipulators?|claws?|tool)\b"
+                 r"|\b(?:home|rest|ready|neutral|initial|parking)\s+(?:position|pose|configuration|posture)\b"
+                 r"|\bhover(?:s|ed|ing)?\b|\bgo\s+(?:back\s+)?(?:to\s+)?(?:the\s+)?home\b")
+"""A motion of the robot alone ("move the gripper back to its home pose", "hover above the green
+patch", "open the gripper"): no goal for the cubes (:data:`INEXPRESSIBLE`'s no_goal class)."""
+
+MOTION_RE = (r"\bupside[\s-]+down\b|\bback\s+and\s+forth\b|\bto\s+and\s+fro\b|\bin\s+circles\b|\band\s+back\s+again\b"
+             r"|\b(?:in|into|through)\s+(?:the\s+)?(?:mid-?\s*)?air\b|\bmid-?air\b|\baloft\b"
+             r"|\b(?:above|over)\s+(?:a|the)\s+(?:certain\s+|given\s+|minimum\s+)?height\b"
+             r"|\b(?:hold|holds|holding|held|suspend\w*|levitat\w*|dangl\w*)\s+(?:(?:the|a|an|it|them)\s+)?(?:[a-z0-9]+\s+){0,3}?"
+             r"(?:above|over|up|aloft)\b"
+             r"|\bwithout\s+(?:lifting|picking|dropping|tipping|knocking|grasping|grabbing|letting)\b"
+             r"|\b(?:flip|turn|roll|tip|knock|push|topple)(?:s|ed|ped|ing|ping)?\s+(?:(?:the|a|an|it|them|that|this)\s+)?"
+             r"(?:[a-z0-9]+\s+){0,3}?over(?=\s*(?:[.,;!?]|$|and\b|then\b|\d|once\b|twice\b|again\b|two\b|three\b))")
+"""A motion or a pose off the table ("flip it upside down", "slide it back and forth", "hold the
+cube above the patch", "knock the tower over"): an action the domain
+does not have (:data:`INEXPRESSIBLE`'s action class)."""
+
 INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("question", r"(?:^|[.!;]\s+)(?:which|what|where|who|whose|why|how\s+many|how\s+much|when)\b[^.!;]*\?"
                  r"|^\s*(?:which|what)\s+(?:of\s+the\s+|one\s+of\s+the\s+)?(?:[a-z]+\s+)?(?:blocks?|cubes?|ones?)\s+(?:is|are|was|were|has|have)\b"
@@ -180,6 +202,12 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                  r"(?!put|place|stack|move|build|make|arrange|set|line|lay|slide|push|bring|spell|sort|stand|swap|please|tell|show|give)[a-z]+\b(?=[^.!;]*\?)",
      "asks a question: a task is an instruction whose goal says where cubes end up; ask for the arrangement "
      "instead (e.g. \"put the red block on the blue block\")"),
+    ("no_goal", ROBOT_ONLY_RE,
+     "moves only the robot (its gripper, arm or hand), which leaves no goal for the cubes: a task's goal says where "
+     "cubes end up; say where a cube should go (e.g. \"put the red block on the blue patch\")"),
+    ("action", MOTION_RE,
+     "is a motion or a pose off the table, an action the domain does not have: a task's goal says where cubes end up, "
+     "each resting upright on the table, a patch or another cube; say that end state"),
     ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none)\b|n't\b"
                  r"|\b(?:anywhere|everywhere|anything|any\s+place)\s+but\b"
                  r"|\b(?:don|doesn|didn|isn|aren|shouldn|mustn|won|wouldn)\s*'?\s*t\b"
@@ -195,10 +223,13 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "not a motion or an angle"),
     ("time", r"\b(?:\d+(?:\.\d+)?\s*(?:seconds?|secs?|s|minutes?|mins?|hours?|hrs?|ms|milliseconds?)(?![\w'])|seconds|minutes?|hours?"
              r"|meanwhile|forever|while|whilst|during)\b",
-     "is about time: a task's goal is checked once, at the end of the episode, with no clock or duration"),
+     "is about time (a duration or a time limit, a measured quantity): a task's goal is checked once, at the end of "
+     "the episode, with no clock or duration"),
     ("quantity", r"\b(?:\d+(?:\.\d+)?\s*(?:cm|mm)\b|(?:centi|milli)?(?:meters?|metres?)|inch(?:es)?|feet|foot"
                  r"|some(?=\s+(?:of\s+the\s+)?(?:[a-z]+\s+)?(?:blocks|cubes|bricks|boxes)\b)|cms?|few|(?<!\d\s)fewer|most|majority|percent|(?<!left\s)(?<!right\s)(?<!front\s)(?<!back\s)(?<!rear\s)half|halves|several|many|much|enough|plenty|numerous"
                  r"|as\s+(?:high|tall|many|much|far|close|long)\s+as\s+(?:you|it|possible|can)"
+                 r"|as\s+far\s+(?:[a-z]+\s+){1,4}?as\s+(?:you|it|possible|can)"
+                 r"|(?:hand|finger|thumb|palm)(?:'s|s)?\s+(?:widths?|breadths?|lengths?)|\bgap\s+of\b"
                  r"|(?:over|more\s+than|at\s+least|at\s+most|fewer\s+than|less\s+than|up\s+to|under)\s+"
                  r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?=\s+(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|high|tall|levels?)\b))\b",
      "is a measured or vague quantity: rpg's relations are qualitative (next to, left of, far from) and "
@@ -930,6 +961,19 @@ MATERIAL_SAID_RE = re.compile(r"\b(?:letter|digit|number|alphabet|lettered|numbe
 """Cubes named by their material ("2 letter cubes", "the digit blocks"): the task must hold
 labelled cubes (:func:`rpg.schema.accounting.unaccounted`), and digits alone around a relation
 name cubes (:func:`rpg.schema.reading.labels_in_relations`)."""
+
+IDLE_REQUEST_RE = re.compile(r"\b(?:wait|waiting|look|looking|observe|observing|watch|watching|stand\s+by|stay|do\s+nothing"
+                             r"|hello|hi|hey|good\s+(?:morning|afternoon|evening|night|job)|thanks|thank\s+you|bye|goodbye"
+                             r"|that's\s+all|that\s+is\s+all|getting\s+set\s+up|checking)\b")
+"""Words of a message that asks nothing of the cubes ("Just look at the blocks for a moment.",
+"Hi robot, good morning!", "Thanks, that's all for today."): with no colour, label or goal word
+(:data:`GOAL_WORD_RE`) the text is refused as saying no goal."""
+
+GOAL_WORD_RE = re.compile(r"\b(?:put|place|set|move|stack|build|make|arrange|line|spell|sort|push|slide|bring|form|create|pile"
+                          r"|lay|drop|position|sweep|gather|group|swap|reverse|unstack|cover|towers?|stacks?|rows?|lines?"
+                          r"|pyramids?|grids?|circles?|rings?|walls?|piles?|patch(?:es)?|next\s+to|beside|left\s+of|right\s+of"
+                          r"|behind|in\s+front\s+of|between|under|above|near|far\s+from|onto|letters?|digits?|words?)\b")
+"""Words that ask something of the cubes (a placement verb, a structure, a patch, a relation)."""
 
 CHAT_WORDS: frozenset[str] = frozenset("""
 lovely great good job yay hooray woohoo wow awesome nice perfect excellent wonderful brilliant super cool amazing

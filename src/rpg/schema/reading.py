@@ -207,9 +207,10 @@ def _unknown_word_classes(text: str, unknown: list[str]) -> list[tuple[str, str,
 
     found = []
     for word in unknown:
-        if word in lexicon.colour_names() and any(_COLOUR_BEFORE.match(after) or (
+        if word in lexicon.colour_names() and any(_COLOUR_BEFORE.match(after) or _COLOUR_ROLE_AFTER.match(after) or (
                 _RECOLOUR_BEFORE.search(before) and re.match(r"\s*(?:[.,;!?]|$|instead\b|please\b|too\b|then\b)", after))
-                for before, after in where(word)):  # "beige block", "make it beige"
+                or _PALETTE_LIST_NEAR.search(before) or _PALETTE_LIST_AFTER.match(after)
+                for before, after in where(word)):  # "beige block", "make it beige", "maroon at the bottom", "red, beige"
             found.append((word, *lexicon.UNKNOWN_COLOUR))
             continue
         pos = lexicon.parts_of_speech(word)
@@ -297,6 +298,12 @@ _COLOUR_BEFORE = re.compile(r"(?:\s*(?:,|\band\b|\bor\b)\s*(?:the\s+)?[a-z]+){0,
                             r"|squares?|tiles?|pads?|mats?|targets?|objects?)\b")
 """What follows a word that names a cube's or patch's colour ("mauve cube", "teal patch", "the gold,
 silver and red cubes")."""
+_COLOUR_ROLE_AFTER = re.compile(r"\s+(?:(?:at|on|in)\s+(?:the\s+)?(?:bottom|top|base|middle|center|centre)|on\s+top|first|last)\b")
+"""What follows a colour name standing for a cube by its role in a structure ("maroon at the bottom, olive on top")."""
+_PALETTE_LIST_NEAR = re.compile(rf"\b(?:{COLOR_RE})\s*(?:,|\band\b|\bor\b|then\b|/|->|\bover\b|\bon\b)\s*(?:(?:and|then|the)\s+)?$")
+"""What precedes a colour name listed after a palette colour ("red, maroon and blue", "blue over teal")."""
+_PALETTE_LIST_AFTER = re.compile(rf"\s*(?:,|\band\b|\bor\b|then\b|/|->|\bover\b|\bon\b)\s*(?:(?:and|then|the)\s+)?(?:{COLOR_RE})\b")
+"""What follows a colour name listed before a palette colour ("maroon, red and blue", "teal on red")."""
 _CLAUSE_START_BEFORE = re.compile(r"(?:^|[.,;:!?]\s*|\b(?:and|then|please|to|must|should)\s+"
                                   r"|\b(?:can|could|would|will)\s+you\s+)$")
 
@@ -1072,6 +1079,12 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
             dropped += [(w, "a word outside the lexicon") for w in dict.fromkeys(unknown) if w in gone]
             unknown = [w for w in unknown if w not in gone]
             text = " ".join(w for w in text.split(" ") if re.sub(r"[.,;:!?]+$", "", w) not in gone)
+    idle = lexicon.IDLE_REQUEST_RE.search(original.lower())
+    if idle and strict and not lexicon.GOAL_WORD_RE.search(original.lower()) and not color_mentions(text) \
+            and not re.search(r"\b\d\b|\b[A-Z]\b", original):  # "Just look at the blocks for a moment.", "Hello robot."
+        raise Inexpressible("no_goal", [idle.group(0)], "asks nothing of the cubes, so there is no goal: a task's goal "
+                            "says where cubes end up; say where a cube should go (e.g. \"put the red block on the blue "
+                            "patch\")", original)
     if refused:
         raise Inexpressible.of(refused, original)
     if unknown and strict:
