@@ -1443,3 +1443,32 @@ def test_a_tower_counted_with_its_colour_keeps_another_cube_apart():  # the blue
 
     assert meaning(parse("Build a tower of two red blocks and put the blue block in the back right corner")) == [
         "in_region(blue,back_right)", "stack(red,red)"]
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # steer_stranger15's silent errors: a stack's role said with a row's side (the top cube had gone left), a cube
+    # "over the white" (a second white had been added), a tower of digits "smallest on top" (the order had been
+    # dropped), a cube added "to finish the rainbow" (the rainbow had recoloured the tower), a cube put under the
+    # base (the task's top cube had been dropped), "make it so that the green cube is the lowest one" (every cube
+    # had turned green)
+    ("Stack purple on top of green", ["turn it into a row, bottom cube on the left"],
+     ("pivot", ["line[left_to_right](green,purple)"])),
+    ("Stack purple on top of green", ["make it a row with the top one on the right"],
+     ("pivot", ["line[left_to_right](green,purple)"])),
+    ("Put the white cube on top of the black cube", ["please put also one gray cube more over the white"],
+     ("extend", ["stack(black,white,gray)"])),
+    ("Arrange the digits 9, 3, 5 and 2 in increasing order from left to right", ["put them in a tower instead, smallest on top"],
+     ("pivot", ["stack(9,5,3,2)"])),
+    ("Stack the digits 4, 1 and 7 in a tower", ["smallest at the bottom"], ("modify", ["stack(1,4,7)"])),
+    ("Stack five cubes in rainbow order with red at the bottom: red, orange, yellow, green, blue",
+     ["add purple on top to finish the rainbow"], ("extend", ["stack(red,orange,yellow,green,blue,purple)"])),
+    ("Put the red cube on the blue cube", ["now you put the green cube under of the blue cube"],
+     ("extend", ["stack(green,blue,red)"])),
+    ("Stack the cubes blue, green and orange, blue is at the bottom and orange at the top",
+     ["Please make it so that the green cube is the lowest one"], ("modify", ["stack(green,blue,orange)"])),
+    ("Stack the cubes blue, green and orange, blue is at the bottom and orange at the top",
+     ["make it so that the top one is green"], ("tweak", ["stack(blue,green,green)"])),
+])
+def test_steer_stranger15_roles_orders_and_additions(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+

@@ -162,9 +162,6 @@ BUT_CORRECTION_RE = (r"\bbut\s+(?:(?:i|we|you|they|he|she)\s+(?:would\s+|'d\s+)?
 """"..., but put it on the green cube" after a placement: a correction or an addition, which one
 is not said.  Not read in a steering edit, where "but put them in a row" is the change itself."""
 
-INSTRUCTION_ONLY = frozenset({START_TIME_RE, BUT_CORRECTION_RE})
-""":data:`INEXPRESSIBLE` patterns that hold for a whole instruction only (see each)."""
-
 ROBOT_ONLY_RE = (r"\b(?:move|bring|return|send|park|put|position|raise|lower|open|close|hover|lift|rotate|extend|retract|reset)\s+"
                  r"(?:the\s+|your\s+|its\s+|the\s+robot's\s+)?(?:robot(?:ic)?\s+)?(?:grippers?|arms?|end[\s-]?effectors?|hands?|wrists?"
                  r"|fingers?|manipulators?|claws?|tool)\b"
@@ -173,17 +170,26 @@ ROBOT_ONLY_RE = (r"\b(?:move|bring|return|send|park|put|position|raise|lower|ope
 """A motion of the robot alone ("move the gripper back to its home pose", "hover above the green
 patch", "open the gripper"): no goal for the cubes (:data:`INEXPRESSIBLE`'s no_goal class)."""
 
-MOTION_RE = (r"\bupside[\s-]+down\b|\bback\s+and\s+forth\b|\bto\s+and\s+fro\b|\bin\s+circles\b|\band\s+back\s+again\b"
+TURNED_OVER_RE = (r"\bupside[\s-]+down\b|\b(?:flip|turn|roll)(?:s|ed|ped|ing|ping)?\s+(?:(?:the|a|an|it|them|that|this)\s+)?"
+                  r"(?:[a-z0-9]+\s+){0,3}?over(?=\s*(?:[.,;!?]|$|and\b|then\b|\d|once\b|twice\b|again\b|two\b|three\b))")
+"""A cube turned over ("flip the A cube upside down", "turn the red cube over"): a rotation, an
+action the domain does not have (:data:`INEXPRESSIBLE`'s action class).  A whole instruction only:
+in a steering edit "flip it upside down" reverses the structure's order."""
+
+MOTION_RE = (r"\bback\s+and\s+forth\b|\bto\s+and\s+fro\b|\bin\s+circles\b|\band\s+back\s+again\b"
              r"|\b(?:in|into|through)\s+(?:the\s+)?(?:mid-?\s*)?air\b|\bmid-?air\b|\baloft\b"
              r"|\b(?:above|over)\s+(?:a|the)\s+(?:certain\s+|given\s+|minimum\s+)?height\b"
              r"|\b(?:hold|holds|holding|held|suspend\w*|levitat\w*|dangl\w*)\s+(?:(?:the|a|an|it|them)\s+)?(?:[a-z0-9]+\s+){0,3}?"
              r"(?:above|over|up|aloft)\b"
              r"|\bwithout\s+(?:lifting|picking|dropping|tipping|knocking|grasping|grabbing|letting)\b"
-             r"|\b(?:flip|turn|roll|tip|knock|push|topple)(?:s|ed|ped|ing|ping)?\s+(?:(?:the|a|an|it|them|that|this)\s+)?"
+             r"|\b(?:tip|knock|push|topple)(?:s|ed|ped|ing|ping)?\s+(?:(?:the|a|an|it|them|that|this)\s+)?"
              r"(?:[a-z0-9]+\s+){0,3}?over(?=\s*(?:[.,;!?]|$|and\b|then\b|\d|once\b|twice\b|again\b|two\b|three\b))")
-"""A motion or a pose off the table ("flip it upside down", "slide it back and forth", "hold the
-cube above the patch", "knock the tower over"): an action the domain
+"""A motion or a pose off the table ("slide it back and forth", "hold the cube above the patch",
+"knock the tower over"): an action the domain
 does not have (:data:`INEXPRESSIBLE`'s action class)."""
+
+INSTRUCTION_ONLY = frozenset({START_TIME_RE, BUT_CORRECTION_RE, TURNED_OVER_RE})
+""":data:`INEXPRESSIBLE` patterns that hold for a whole instruction only (see each)."""
 
 INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("question", r"(?:^|[.!;]\s+)(?:which|what|where|who|whose|why|how\s+many|how\s+much|when)\b[^.!;]*\?"
@@ -206,6 +212,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "moves only the robot (its gripper, arm or hand), which leaves no goal for the cubes: a task's goal says where "
      "cubes end up; say where a cube should go (e.g. \"put the red block on the blue patch\")"),
     ("action", MOTION_RE,
+     "is a motion or a pose off the table, an action the domain does not have: a task's goal says where cubes end up, "
+     "each resting upright on the table, a patch or another cube; say that end state"),
+    ("action", TURNED_OVER_RE,
      "is a motion or a pose off the table, an action the domain does not have: a task's goal says where cubes end up, "
      "each resting upright on the table, a patch or another cube; say that end state"),
     ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none)\b|n't\b"
@@ -1618,6 +1627,20 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"(?i)\b(use)\s+(an?\s+)?({COLOR_RE})\s+(cube|block|one)\s+(?:in\s+the\s+(?:middle|centre|center)|on\s+top"
                 rf"|at\s+the\s+(?:top|bottom|base|end|start))\s+(instead\s+of|in\s+place\s+of)\s+(the\s+(?:{COLOR_RE})\s+(?:one|cube|block))\b"),
      r"\1 \2\3 \4 \5 \6"),
+    # "make it so that the green cube is the lowest one", "make sure the top one is green": what is to hold (the words before
+    # it had been read as a recolour of every cube to green); "the green cube should be at the bottom", "make the green one
+    # the top one": that cube moved to that end
+    (re.compile(r"(?i)^\s*(?:please\s+)?make\s+(?:it\s+)?so\s+(?:that\s+)?|^\s*(?:please\s+)?make\s+sure\s+(?:that\s+)?"), ""),
+    (re.compile(rf"(?i)^\s*(?:please\s+)?(?:i\s+want\s+)?(?:the\s+)?({COLOR_RE})\s+(?:cube\s+|block\s+|one\s+)?(?:is|should\s+be|must\s+be|becomes|goes|sits|ends\s+up)\s+"
+                r"(?:the\s+|at\s+the\s+|on\s+the\s+|in\s+the\s+|on\s+)?(lowest|bottom|base|bottommost|highest|top|topmost|uppermost)"
+                r"(?:\s+(?:one|cube|block|of\s+(?:the\s+)?(?:tower|stack)))?\s*(?:please|instead|now)?\s*[.!]?\s*$"),
+     lambda m: f"put the {m.group(1)} cube at the {'bottom' if m.group(2).lower() in ('lowest', 'bottom', 'base', 'bottommost') else 'top'}"),
+    (re.compile(rf"(?i)^\s*(?:please\s+)?make\s+the\s+({COLOR_RE})\s+(?:cube\s+|block\s+|one\s+)?the\s+"
+                r"(lowest|bottom|bottommost|highest|top|topmost|uppermost)(?:\s+(?:one|cube|block))?\s*(?:please|instead|now)?\s*[.!]?\s*$"),
+     lambda m: f"put the {m.group(1)} cube at the {'bottom' if m.group(2).lower() in ('lowest', 'bottom', 'bottommost') else 'top'}"),
+    # "add purple on top to finish the rainbow": why the cube is added (the rainbow had been read as a new colour order)
+    (re.compile(r"(?i)\s*,?\s*(?:so\s+as\s+)?(?:to|and)\s+(?:finish|complete|close|end|round\s+off)\s+(?:the|it|its|this)\s*"
+                r"(?:rainbow|gradient|sequence|pattern|word|tower|stack|row|line|set)?\s*(?:off|up)?(?=\s*[.!]?\s*$)"), ""),
     # "one more on top", "add a third": one more cube
     (re.compile(r"(?i)^\s*(?:and\s+|plus\s+)?(?:add\s+|put\s+)?one\s+more\s+on\s+top\s*[.!]?\s*$"), r"add one more block on top"),
     (re.compile(r"(?i)^\s*(?:and\s+|now\s+)?add\s+a\s+(?:third|fourth|fifth|sixth)(?:\s+(?:one|cube|block))?\s*[.!]?\s*$"), r"add one more block"),

@@ -428,6 +428,11 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("ordering", {"key": "label", "descending": bool(re.search(r"\b(?:reverse|descending|backwards?|z to a)\b", t))}))
     elif re.search(r"\bnumeric(?:al)?(?:ly)?\b|\b(?:increasing|ascending|decreasing|descending) order\b", t):
         ops.append(Op("ordering", {"key": "number", "descending": bool(re.search(r"\b(?:decreasing|descending|reverse)\b", t))}))
+    elif ends := re.search(r"\b(?P<v>smallest|largest|biggest|greatest)\s+(?:one\s+|number\s+|digit\s+)?(?P<at>on\s+top|at\s+the\s+top"
+                           r"|(?:at|on)\s+the\s+(?:bottom|base)|on\s+the\s+(?:left|right)|at\s+the\s+(?:left|right)(?:\s+end)?)\b", t):
+        # "smallest on top", "largest at the bottom": the order of the task's labels, by the end where one of them stands
+        low_first = (ends.group("v") == "smallest") == bool(re.search(r"bottom|base|left", ends.group("at")))
+        ops.append(Op("ordering", {"key": "auto", "descending": not low_first}))
     elif re.search(r"\b(?:ascending|descending|increasing|decreasing)\b|\b(?:largest|biggest|highest|smallest|lowest)\s+(?:one\s+)?first\b"
                    r"|\b(?:high|low)(?:est)?\s+to\s+(?:low|high)(?:est)?\b"
                    r"|\b(?:largest|biggest|greatest|smallest)\s+to\s+(?:the\s+)?(?:smallest|largest|biggest|greatest)\b", t):
@@ -481,8 +486,9 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("add_layer", {"color": canon_color(color.group(1)) if color else None}))
     adds = [] if layer or (substitution and mats) or any(o.op in ("move", "pattern") for o in ops) else re.finditer(
         r"\b(?P<verb>add|append|include|put|place|stack|set)\b(?P<what>.*?)(?P<where>\bon top\b|\b(?:at|to|on) (?:the )?(?:very |far )?(?:(?:left|right|front|back) end|top|bottom|base|end|start|beginning)\b|"
-        r"\b(?:under|underneath|beneath|below)\b|\bto the (?:left|right|end|start)\b|\bon the (?:left|right)\b|\bon(?:to)?(?= (?:the|it|them|that)\b)(?! the table\b)"
-        r"|\bon(?:to)?(?= (?:letter|digit) [a-z0-9]\b)"
+        r"\b(?:under|underneath|beneath|below)\b|\bto the (?:left|right|end|start)\b|\bon the (?:left|right)\b"
+        r"|\b(?:on(?:to)?|over|above|atop)(?= (?:the|it|them|that)\b)(?! the table\b)"
+        r"|\b(?:on(?:to)?|over|above|atop)(?= (?:letter|digit) [a-z0-9]\b)"
         rf"|[;,.]|\band\b(?!\s+an?\s+(?:(?:digit|letter|number)\s+)?(?:[a-z0-9]|{COLOR_RE})\b(?!\s+(?:on|to|at|under|next|beside)\b))|$)", t)  # "add a 0 and a 9"
     add = next((a for a in adds if _adds_a_cube(a, t)), None)
     each_end = re.search(r"\b(?:at|on|to)\s+(?:each|both|either)\s+(?:ends?|sides?)\b", t) if add else None
@@ -515,7 +521,7 @@ def read_ops(t: str) -> list[Op]:
         target = re.match(r"\s*(?:of\s+)?(?P<sel>the\s+[a-z0-9' ]+?(?:one|block|cube)s?\b|the\s+(?:top|bottom)\b|(?:the\s+)?(?:[a-z]+\s+)?letter\s+[a-z]\b"
                           rf"|the\s+(?:[a-z]+\s+)?digit\s+\d\b|the\s+(?:{COLOR_RE})\b)", t[add.end():])
         onto = _selector(target.group("sel")) if target and re.search(r"[a-z]", where) else None
-        if re.match(r"on(?:to)?$", where.strip()) and onto is None:
+        if re.match(r"(?:on(?:to)?|over|above|atop)$", where.strip()) and onto is None:
             onto = {"all": True} if re.match(r"\s*(?:it|them|that|the\s+(?:tower|stack|top))\b", t[add.end():]) else None
             if onto is None:
                 return ops  # "put a yellow block on ...": on nothing this reads
@@ -1429,7 +1435,8 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             if spec.structure != "piles":
                 raise SteerError("outliers apply to piles; this task has a " + spec.structure)
             spec = replace(spec, outliers=p["per_pile"])
-    if spec.structure == "line" and spec.ordering in ("label", "number") and spec.items and all(i.label for i in spec.items):
-        # a sorted line of named cubes: its cubes stand in that order ("descending now", "add a 5 and keep it largest first")
+    if spec.structure in ("line", "tower") and spec.ordering in ("label", "number") and spec.items and all(i.label for i in spec.items):
+        # a sorted line or tower of named cubes: its cubes stand in that order ("descending now", "add a 5 and keep it largest
+        # first", "put them in a tower instead, smallest on top": a tower's cubes listed bottom first)
         spec = spec.with_items(sort_labels(spec.items, spec.ordering, spec.descending))
     return spec

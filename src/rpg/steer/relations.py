@@ -111,6 +111,11 @@ def _phrase(schema: TaskSchema, name: str) -> str:
     return f"the {asset.color} block"
 
 
+_STACK_ROLES = {"bottom": "bottom", "lower": "bottom", "lowest": "bottom", "base": "bottom", "top": "top", "upper": "top",
+                "uppermost": "top", "highest": "top"}
+"""Words naming a cube of a two-cube stack by its role ("the bottom cube on the left")."""
+
+
 def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     """The whole-task instruction an edit of a relation task means and its intent, or None
     when the edit is not about that relation.
@@ -149,7 +154,8 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
             return None
     else:
         kind = _edit_relation(t)
-        named = re.findall(r"\bthe (\w+) (?:block|cube|one)\b", t)  # "put the blue one on the left": blue moves
+        named = [w for w in re.findall(r"\bthe (\w+) (?:block|cube|one)\b", t)  # "put the blue one on the left": blue moves
+                 if w not in _STACK_ROLES]  # ("the top one": a cube by its role, read below)
         if re.search(r"\b(?:stack|pile)\s+(?:them|all|everything|the\s+(?:blocks|cubes))\b", t) and not named:
             return None  # "stack them": which on which is not said (the structure edit reads it)
         by_color = {a.color: a.name for a in schema.assets if a.kind == "colored_cube"}
@@ -160,7 +166,14 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         if kind is None or len(named) > 1 or (named and named[0] not in by_color):
             return None  # no relation, or cubes of its own: a whole task, not an edit of this one
         side = re.search(rf"\b({COLOR_RE})\s+(?:one\s+|block\s+|cube\s+)?(?:on|to|at|in)\s+(?:the\s+)?(?:left|right|front|back)\b", t)
-        if side and not named and by_color.get(canon_color(side.group(1))) in (subject, obj):
+        role = re.search(rf"\b({'|'.join(_STACK_ROLES)})\s+(?:one|block|cube)\s+(?:goes\s+|is\s+)?"
+                         r"(?:on|to|at|in)\s+(?:the\s+)?(?:left|right|front|back)\b", t) if rel.kind == "on" and not named else None
+        if role and obj not in _patches(schema):
+            # "turn it into a row, bottom cube on the left": the cube of that role in the stack is the one placed there
+            moved = obj if _STACK_ROLES[role.group(1)] == "bottom" else subject
+            subject, obj = moved, (obj if moved == subject else subject)
+            side = role
+        elif side and not named and by_color.get(canon_color(side.group(1))) in (subject, obj):
             # "make it a row, green on the left": the cube said with the side is the one placed there
             moved = by_color[canon_color(side.group(1))]
             subject, obj = moved, (obj if moved == subject else subject)

@@ -248,6 +248,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
             instruction, intent = relational
             if any(o.op == "structure" for o in plan.ops):  # "make it a row, green on the left": another structure
                 intent = "pivot"
+                instruction = _as_row(instruction, plan.ops)
             return parse(instruction), instruction, intent
     if plan.standalone:
         text = strip_edit_words(plan.text)
@@ -346,6 +347,27 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     return schema, instruction, intent_of_ops(plan.ops, ref_spec)
 
 
+_ROW_OF_RELATION = {"left_of": ("left to right", False), "right_of": ("left to right", True),
+                    "in_front_of": ("front to back", False), "behind": ("front to back", True)}
+"""A side relation of two cubes as a row read in a direction: (direction, whether the relation's
+object comes first)."""
+
+
+def _as_row(instruction: str, ops: list) -> str:
+    """A two-cube relation instruction restated as a row when the edit asks for a row ("turn it
+    into a row, bottom cube on the left": green left of purple, in a row), else as it is."""
+    if not any(o.op == "structure" and o.params.get("to") == "line" for o in ops):
+        return instruction
+    rel = relation_of(parse(instruction))
+    if rel is None or rel.kind not in _ROW_OF_RELATION:
+        return instruction
+    schema = parse(instruction)
+    names = {a.name: (a.color or a.label) for a in schema.assets}
+    direction, object_first = _ROW_OF_RELATION[rel.kind]
+    first, second = (rel.object, rel.subject) if object_first else (rel.subject, rel.object)
+    return f"Put the {names[first]} and {names[second]} blocks in a row from {direction}: {names[first]}, {names[second]}"
+
+
 def _change_from_head(fam: Family, schema: TaskSchema) -> str:
     """The intent of going back to ``schema`` from the family's head: Tweak, Modify or Pivot as a
     whole task stated against the head (two tasks with no editable structure: Tweak when their goals
@@ -369,13 +391,20 @@ def _change_from_head(fam: Family, schema: TaskSchema) -> str:
 
 def _stacks_a_new_cube_on_the_task(schema: TaskSchema, ref: TaskSchema) -> bool:
     """Whether a whole-task reading of an edit only stacks a cube the task lacks on one it has,
-    the task having more ("put the green cube on the red cube" of red on blue): the cube goes
-    on the task's, an addition (read as a whole task it had dropped the blue cube)."""
+    or the base of the task's tower on a cube it lacks, the task having more ("put the green cube
+    on the red cube" of red on blue, "put the green cube under the blue cube"): the cube joins
+    the task's, an addition (read as a whole task it had dropped the others; :func:`_addition` keeps it only
+    when the task's own goal is kept whole)."""
     from rpg.schema.meaning import descriptor, meaning
 
     m = re.fullmatch(r"stack\(([^(),;|@]+),([^(),;|@]+)\)", "; ".join(meaning(schema)))
     had = [descriptor(a) for a in ref.assets if a.kind != "goal_patch"]
-    return bool(m) and m.group(1) in had and m.group(2) not in had and len(had) > 1
+    if not m or len(had) < 2:
+        return False
+    if m.group(1) in had and m.group(2) not in had:
+        return True
+    tower = re.fullmatch(r"stack\(([^()|;@]+)\)", "; ".join(meaning(ref)))  # the new cube under the task's tower
+    return m.group(1) not in had and bool(tower) and tower.group(1).split(",")[0] == m.group(2)
 
 
 def _refuse_pivot_that_loses_cubes(edit: str, ref: TaskSchema, schema: TaskSchema, intent: str, reference: int) -> None:
@@ -500,14 +529,15 @@ def _pair(atom: str) -> frozenset[str] | None:
 
 
 def _extends(old: str, new: str) -> bool:
-    """Whether meaning atom ``new`` is tower ``old`` built higher (``stack(blue,red)`` ->
-    ``stack(blue,red,green)``, the same place): the old tower's order kept from the bottom."""
+    """Whether meaning atom ``new`` is tower ``old`` built higher or lower (``stack(blue,red)`` ->
+    ``stack(blue,red,green)`` or ``stack(green,blue,red)``, the same place): the old tower's
+    order kept, whole, with cubes only above or below it (none between its cubes)."""
     a = re.fullmatch(r"stack\(([^()|;]*)\)(@\w+)?", old)
     b = re.fullmatch(r"stack\(([^()|;]*)\)(@\w+)?", new)
     if not (a and b) or a.group(2) != b.group(2):
         return False
-    below, above = a.group(1).split(","), b.group(1).split(",")
-    return len(above) > len(below) and above[:len(below)] == below
+    was, now = a.group(1).split(","), b.group(1).split(",")
+    return len(now) > len(was) and any(now[i:i + len(was)] == was for i in range(len(now) - len(was) + 1))
 
 
 def _per_cube(atoms: list[str]) -> list[str]:
