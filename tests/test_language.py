@@ -3298,3 +3298,43 @@ def test_stranger19_starts_and_their_cubes(text, expected):
 def test_counted_cubes_of_any_colour_on_a_cube_are_a_tower_on_it():
     assert parse("Two cubes of any colour go on top of the black cube.").goal_summary == \
         "a stack of black, red, blue with black at the bottom, the rest in any order"
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger23's refusals and its silent error, by class (seventeenth session)
+    ("The initial tower is red, blue, green from the bottom up. The goal is to move the green cube onto the red patch.",
+     ["on_patch(green,patch:red)", "start:stack(red,blue,green)"]),  # the start had been read as the goal, green lost
+    ("push the pink block to the top of the table", ["in_region(pink,back)"]),  # a map's top is the far side
+    ("push the green block to the bottom of the table", ["in_region(green,front)"]),
+    ("move the red block to the bottom", ["in_region(red,front)"]),  # no tower to have a bottom
+    ("Success criterion for this episode, checked by the scripted evaluator after the arm returns home: the cyan cube "
+     "is in the back right corner.", ["in_region(cyan,back_right)"]),  # a long label that names nothing of the task
+    ("For this rollout we only check one relation: the orange cube right of the purple cube.", ["right_of(orange,purple)"]),
+    ("The gray cube should be far from the black cube at the end of the episode.", ["far_from(black,gray)"]),
+    ("Put one cube on the red patch and another on the blue patch; which cubes does not matter.",
+     ["on_patch(blue,patch:blue)", "on_patch(red,patch:red)"]),
+    ("stack number four on number two, and number two on number seven.", ["stack(7,2,4)"]),  # two coloured cubes before
+    ("line up the digits one, two and three", ["line[sequence](1,2,3)"]),  # a line of four before
+    ("Put the cyan cube left of the pink cube and the pink cube left of the white cube, all three in the front half of "
+     "the table.", ["in_region(cyan,front)", "in_region(pink,front)", "in_region(white,front)", "left_of(cyan,pink)",
+                    "left_of(pink,white)"]),  # the cyan cube had been left out of the region
+])
+def test_stranger23_classes_read_as_said(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,words", [
+    # a cube that stands in the tower said, put on a patch by a verb of its own: the tower's base had gone there instead
+    ("Build a tower of red, blue, green from the bottom up. Move the green cube onto the red patch.", "stands on another cube"),
+    ("Stack red on blue, then put the red cube on the green patch", "stands on another cube"),
+    ("Put the cyan cube left of the pink cube and the pink cube left of the white cube, all 4 in the front half of the table.", "counts 4 cubes"),
+])
+def test_a_place_that_cannot_be_the_cube_s_is_refused(text, words):
+    with pytest.raises(ParseError, match=words):
+        parse(text)
+
+
+def test_a_tower_on_a_patch_and_its_base_on_a_patch_still_compile():
+    assert meaning(parse("Build a tower of red, blue, green on the red patch")) == ["on_patch(red,patch:red)", "stack(red,blue,green)"]
+    assert meaning(parse("Stack the red block on the blue block and put the blue block on the green patch")) == [
+        "on_patch(blue,patch:green)", "stack(blue,red)"]

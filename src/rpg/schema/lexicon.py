@@ -503,6 +503,12 @@ PLACED_PART_INTRO_RE = re.compile(r"\b(?:towers?|stacks?|piles?|lines?|rows?|col
 OTHER_SET_RE = re.compile(r"\b(?:one|two|both|each|either)\b")
 """What sets a cube apart before "the other" (:data:`OTHER_RE`)."""
 
+EPISODE_END_RE = re.compile(r"\s*,?\s*\b(?:at|by)\s+the\s+(?:very\s+)?end\s+of\s+(?:the|this|each|every|an?)\s+(?:episode|task|trial|run"
+                            r"|rollout|evaluation|eval)\b|\s*,?\s*\b(?:when|once)\s+the\s+(?:episode|task|trial|run|rollout)\s+(?:ends|is\s+over)\b"
+                            r"|\s*,?\s*\bat\s+(?:episode|task|trial)\s+end\b")
+"""When the goal is checked, said ("The gray cube should be far from the black cube at the end of
+the episode."): a goal is always checked at the episode's end, so the words add nothing (dropped)."""
+
 FRAMING_RE = re.compile(
     r"^(?:(?:ok(?:ay)?|so|alright|right)\s*,?\s+)*(?:(?:so\s+)?here(?:'s|\s+is)\s+what\s+(?:i|we)\s+(?:want|need|would\s+like)"
     r"(?:\s+you\s+to\s+do)?\s*[.:,]\s*)?"
@@ -741,6 +747,10 @@ one cube of the clause before (a region is no cube), so it is written as that cu
 
 _COLOR_WORD = "(?:" + "|".join(COLORS) + ")"
 PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "put one cube on the red patch and another on the blue patch": another cube (it had been the first cube again)
+    (re.compile(rf"\b(one|a|an)\s+((?:(?:{COLOR_RE})\s+)?(?:cube|block))\b(.*?)\banother\s+"
+                r"(?=(?:on|onto|in|into|at|next|beside|behind|under|in\s+front)\b)"),
+     r"\1 \2\3another \2 "),
     # "put the red cube next to the blue cube but far from the green cube": the second relation is the subject's too
     (re.compile(rf"\b(the\s+(?:{COLOR_RE})\s+(?:cube|block))\s+((?:next\s+to|beside|near|behind|in\s+front\s+of|(?:to\s+the\s+)?(?:left|right)"
                 rf"\s+of|far\s+from|away\s+from)\s+the\s+(?:{COLOR_RE})\s+(?:cube|block))\s*,?\s+(?:but|and)\s+(?:also\s+|still\s+)?"
@@ -881,6 +891,13 @@ REGION_WORDS = {"rear": "back", "far": "back", "near": "front", "middle": "cente
 """Words for a place on the table -> the words of :data:`constants.REGION_NAMES`."""
 
 
+FREE_PAIR_RE = re.compile(r"\b(?:the\s+)?colou?rs?\s+(?:and|or|,)\s+(?:the\s+)?order\s+(?:do\s*n[o']?t|don't|do\s+not|are\s+"
+                          r"(?:unimportant|irrelevant|free))(?:\s+matter)?\b"
+                          r"|\b(?:the\s+)?order\s+(?:and|or|,)\s+(?:the\s+)?colou?rs?\s+(?:do\s*n[o']?t|don't|do\s+not|are\s+"
+                          r"(?:unimportant|irrelevant|free))(?:\s+matter)?\b")
+"""Colours and order left free in one phrase ("colours and order do not matter"): said as the two
+phrases :data:`FREE_CHOICE_RE` and :data:`ANY_ORDER_RE` read ("colours do not matter, in any order")."""
+
 ANY_ORDER_RE = re.compile(
     r"(?:\s*[,;(\u2013\u2014-]\s*|\s+)(?:(?:in\s+)?(?:any|whatever|no\s+particular)\s+order(?:\s+(?:is|are)\s+(?:fine|ok(?:ay)?|good|allowed))?"
     r"|(?:the\s+)?order\s+(?:does\s*n[o']?t|doesn't|is\s*n[o']?t|isn't)\s+(?:matter|important)|regardless\s+of\s+(?:the\s+)?order"
@@ -936,7 +953,10 @@ FREE_CHOICE_RE = re.compile(
     r"|[,;(\u2013\u2014-]?\s*\b(?:the\s+)?(?:other|remaining)\s+(?:\d+|two|three|four|one)(?:\s+(?:cubes|blocks|ones))?\s+(?:can|may|could)\s+be"
     r"\s+any(?:thing|\s+colou?rs?)?\b"
     r"|[,;(\u2013\u2014-]?\s*\b(?:it\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\s+(?:exactly\s+|precisely\s+)?where\b"
-    r"|[,;(\u2013\u2014-]?\s*\b(?:exactly\s+)?where\s+(?:exactly\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\b")
+    r"|[,;(\u2013\u2014-]?\s*\b(?:exactly\s+)?where\s+(?:exactly\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\b"
+    r"|[,;(\u2013\u2014-]?\s*\bwhich\s+(?:cubes?|blocks?|ones?)\s+(?:do\s*n[o']?t|don't|do\s+not|does\s*n[o']?t|doesn't|does\s+not)"
+    r"\s+matter\b"
+    r"|[,;(\u2013\u2014-]?\s*\b(?:it\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\s+which\s+(?:cubes?|blocks?|ones?)\b")
 """Words that leave free what the goal does not judge anyway ("All other cubes may be anywhere.",
 "nothing else matters", "colours don't matter", ", any colours", "doesn't matter exactly
 where"): a goal never judges a cube it does not name, a colour nobody said or a spot inside a
@@ -1248,7 +1268,7 @@ LETTER_SIGNATURE_RE = re.compile(r"(?<=[.!?])\s*(?i:thanks|thank\s+you|cheers|be
 greeting."""
 
 
-LABEL_RE = re.compile(r"(?:^|(?<=[.!?;|]\s))\s*(?P<label>[a-z][a-z'\- ]{0,30}?(?:\s+#?\d+)?(?:\s*\([a-z'\- ]{1,30}\))?)\s*:(?:\s+|$)")
+LABEL_RE = re.compile(r"(?:^|(?<=[.!?;|]\s))\s*(?P<label>[a-z@][a-z'\-@, ]{0,140}?(?:\s+#?\d+)?(?:\s*\([a-z'\- ]{1,30}\))?)\s*:(?:\s+|$)")
 """A label before a colon, at the start of the text or of a sentence ("Obj: red on blue.",
 "Checklist: ...", "Objective (bonus stage): ..."): dropped by
 :func:`rpg.schema.reading.normalize_words` when none of its words (at most
@@ -1321,9 +1341,11 @@ CONFIG_RELATIONS: dict[str, str] = {
 """A config's relation value (``"relation": "between"``, ``"goal": "far_from"``) -> the words that
 say it in a sentence (``on_patch`` and ``between`` are written with their own arguments)."""
 
-LABEL_MAX_WORDS = 4
-"""The most words a dropped label (:data:`LABEL_RE`) has: a longer run before a colon is a
-sentence ("here is what I would like to see at the end: ...")."""
+LABEL_MAX_WORDS = 24
+"""The most words a dropped label (:data:`LABEL_RE`) has.  A run before a colon that names nothing of
+the task is framing however long ("Success criterion for this episode, checked by the scripted
+evaluator after the arm returns home: ...", "here is what I would like to see at the end: ..."); it
+was 4 until stranger23 (seventeenth session)."""
 
 
 SOMEONE_WANTS_RE = re.compile(

@@ -675,6 +675,15 @@ def _label_tower_roles(text: str) -> str:
     return f"{head} from bottom to top: {order}" + re.sub(r"^[\s,;]*(?:and\s+)?(?=[.!]|$)", "", text[found[-1].end():])
 
 
+_DIGIT_WORDS = ("zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine")
+_DIGIT_WORD_RE = re.compile(rf"(?i)\b(?:{'|'.join(_DIGIT_WORDS)})\b")
+_DIGIT_WORDS_RE = re.compile(rf"(?i)(?P<noun>\b(?:numbers?|digits?|numerals?)(?:\s+(?:cubes?|blocks?))?\s+)"
+                             rf"(?P<list>(?:{'|'.join(_DIGIT_WORDS)})(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+|\s*&\s*)(?:{'|'.join(_DIGIT_WORDS)}))*)\b")
+"""Digit cubes named by number words ("stack number four on number two", "the digits one, two and
+three"): written as digits before the labels are read (they had been read as two coloured cubes,
+and as a line of four)."""
+
+
 def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, list[tuple[str, str]]]:
     """Lower-case, number words to digits, typos corrected.  Returns (text, original, dropped):
     ``dropped`` lists the unknown words read as ignorable (:mod:`rpg.schema.senses`), each with
@@ -719,6 +728,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         original = pattern.sub(full, original)
     original = sorted_labels(original)  # "Stack the digit cubes 7, 3 and 5 in ascending order": listed sorted
     original = lexicon.LABELS_AND_NOUN_RE.sub(r"\1 \2 \4 and the \3 \4", original)  # "the 1 & 9 cubes"
+    original = _DIGIT_WORDS_RE.sub(lambda m: m.group("noun") + _DIGIT_WORD_RE.sub(
+        lambda w: str(_DIGIT_WORDS.index(w.group(0).lower())), m.group("list")), original)
     if not original:
         raise ParseError("the instruction is empty; describe a task, e.g. \"stack the red block on the blue block\"")
     if len(original) > MAX_INSTRUCTION_CHARS:
@@ -763,6 +774,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   "onto ", text)
     text = re.sub(rf"\b(?:until\s+(?:it|they)\s+(?:touch(?:es)?|hits?|bumps?\s+into|reach(?:es)?)|against)\s+"
                   rf"(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|one)\b)", "next to ", text)
+    text = lexicon.FREE_PAIR_RE.sub("colours do not matter, in any order", text)
     text = lexicon.ANY_ORDER_RE.sub(" in any order", text)  # before "doesn't" is refused as a negation
     text = lexicon.HARMLESS_NEGATION_RE.sub("", text)
     for m in lexicon.FREE_CHOICE_RE.finditer(text):  # "put the red cube left of the blue cube. colours don't matter"
@@ -784,7 +796,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.HEADER_RE.sub("", text)
     labels = [m for m in lexicon.LABEL_RE.finditer(text)
               if len(re.findall(r"[a-z]+", m.group("label"))) <= lexicon.LABEL_MAX_WORDS
-              and not lexicon.TASK_CONTENT_RE.search(re.sub(r"(?<=[a-z])\s+#?\d+\s*$", "", m.group("label")))  # "item 2"
+              and not lexicon.TASK_CONTENT_RE.search(re.sub(r"(?<=[a-z])\s+#?\d+\s*$|\b(?:just\s+|only\s+)?one\s+(?:task|relation|goal|"
+                                                            r"thing|check|condition|episode|run|trial)\b", "",
+                                                            m.group("label")))  # "item 2", "just one task"
               and not _inexpressible(m.group("label"))]
     for m in reversed(labels):  # "Obj: red on blue.", "Checklist: ...": a label that names nothing of the task
         text = text[:m.start("label")] + text[m.end():]
@@ -827,6 +841,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                if not all(w in spelled for w in ws)]  # refused below, with what the unknown words say as well
     text = lexicon.FRAMING_RE.sub("", text)
     text = lexicon.CLOSING_RE.sub("", text)
+    text = lexicon.EPISODE_END_RE.sub("", text)
     # "the robot stacks the red block on ...": the command the sentence describes
     text = re.sub(r"^(?:the\s+|a\s+)?(?:robot(?:ic)?(?:\s+arm)?|agent|arm)\s+(stack|put|place|move|push|arrange|build|set|line|pick|slide|lift|make)s\b",
                   r"\1", text)
@@ -924,7 +939,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   r"((?:should|must|need\s+to|have\s+to)\s+(?:be|end\s+up)|are|end\s+up)\s+far\s+apart\b", r"\1 \3 far from \2", text)
     text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall|wide|long|deep)", r"\1 \2", text)
     text = _compass(text)
-    text = re.sub(r"\b(?:to|onto)\s+the\s+top\s+of\b|\b(?:at|to|on)\s+top\s+of\b", "on top of", text)  # "at top of"
+    text = re.sub(r"\b(?:to|onto)\s+the\s+top\s+of\b(?!\s+the\s+(?:table|workspace|board)\b)|\b(?:at|to|on)\s+top\s+of\b",
+                  "on top of", text)  # "at top of" ("to the top of the table" is its far side, read below)
     # "to its left": the relation to the cube "it" stands for (resolved like "to the left of it")
     text = re.sub(r"\b(?:to|on|at)\s+(its|their)\s+(left|right)(?:\s+(?:hand\s+)?side)?\b",
                   lambda m: f"to the {m.group(2)} of {'it' if m.group(1) == 'its' else 'them'}", text)
@@ -1126,6 +1142,15 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   r"\1back \2", text)
     text = re.sub(r"\b(the\s+)?(?:bottom|lower)[\s-]+(left|right)\b(?!\s+of\b)(?=\s+(?:corner|edge|side)\b|\s*(?:[.,;!]|$))",
                   r"\1front \2", text)
+    # "push the pink block to the top of the table" (Language-Table's map words): the far side, the back
+    text = re.sub(r"\bthe\s+(top|upper|bottom|lower)\s+(?:(edge|side|half|part|end)\s+)?of\s+the\s+(?=(?:table|workspace|board)\b)",
+                  lambda m: f"the {'back' if m.group(1) in ('top', 'upper') else 'front'} {m.group(2) or ''} of the ".replace("  ", " "),
+                  text)
+    if not re.search(r"\b(?:towers?|stacks?|stacked|stacking|piles?|columns?|pyramids?|walls?|on\s+top|layers?|levels?)\b", text):
+        # "move all the red blocks to the bottom", with no tower to have a bottom: the near side of the map, the front
+        text = re.sub(r"\b(push|move|slide|shift|sweep|bring|drag)\b([^.;]*?)\b(to|towards?)\s+the\s+(top|bottom)\b"
+                      r"(?!\s+(?:of|left|right|layer|row|cube|block|one|edge|side|corner)\b)",
+                      lambda m: f"{m.group(1)}{m.group(2)}{m.group(3)} the {'back' if m.group(4) == 'top' else 'front'}", text)
     text = re.sub(r"\b(?:(\w+)\s+)?((?:the|a|an)\s+(?:letter|digit|number)\s+'?[a-z0-9]'?)(?=\s|[.,;!]|$)(?!\s+(?:block|cube|box))",
                   lambda m: m.group(0) if m.group(1) in ("with", "showing", "labeled", "labelled", "marked", "bearing")
                   else m.group(0) + " block", text)  # "stack the letter A on the letter B": those are cubes

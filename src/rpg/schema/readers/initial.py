@@ -60,6 +60,12 @@ FROM_START_RE = re.compile(
 """A start said as the scene a goal starts from ("From a start where blue sits on yellow, move the
 blue cube onto the red patch"): read as "Initially ... . <goal>" (its tower had been read as the goal)."""
 
+START_STRUCTURE_RE = re.compile(r"(?i)^\s*(?:the\s+)?(?:initial|starting|start|original)\s+(tower|stack|column)\s*(?:is|:|-|\u2014)\s*"
+                                r"(?=(?:the\s+)?(?:" + COLOR_RE + r")\b)")
+"""A start said as the structure the episode starts with ("The initial tower is red, blue, green from
+the bottom up. The goal is ..."): read as "Initially: a tower of ..." (its tower had been read as
+the goal, and the goal's cube lost)."""
+
 GOAL_OPENER_RE = re.compile(r"(?i)^\s*(?:(?:the\s+)?(?:goal|target|task|objective)\s*(?:is\s*(?:to\s+)?|:|-|\u2014)"
                             r"|then\s*,?|now\s*,?|your\s+task\s*(?:is\s+to|:)|(?:at|in)\s+the\s+end\s*[,:]?|finally\s*,?"
                             r"|success(?:\s+(?:when|if))?\s*:?)\s*")
@@ -206,6 +212,7 @@ def split(instruction: str) -> InitialScene | None:
                          instruction.strip())  # "# goal (unstack): the pink cube starts ...": its label
     instruction = ROBOT_STARTS_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     instruction = FROM_START_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
+    instruction = START_STRUCTURE_RE.sub(r"Initially: a \1 of ", instruction.strip())
     unstack = _UNSTACK_RE.match(instruction.strip())
     if unstack:
         stacks = _facts((unstack.group("a") or unstack.group("b")).replace("-", " "))

@@ -83,6 +83,9 @@ class RelationalReading:
     """The last relation's subject and object mentions."""
     regions: list[tuple[list[Mention], str]] = field(default_factory=list)
     """(subject mentions, region name): places on the table."""
+    on_patch_as_stack: list[str] = field(default_factory=list)
+    """Cubes a verb of their own puts on a patch read as their stack's ("stack red on blue, then put the
+    blue cube on the green patch": the stack stands there): each must be its stack's base."""
     named_on_patch: bool = False
     """A cube of no stack put on a patch in a stacking text ("red stacked on blue, the gray cube on
     the white patch"): the stack itself stays off the patch."""
@@ -148,8 +151,17 @@ class RelationalReading:
                 own = [m for m in left if prev is not None and m.start >= prev and m not in objects and (m.color or m.label)]
                 # "red on the green patch and the white cube in the centre": the cube said after the last relation
                 group = own[-1:] or related[:1] or (_listed_group(clause, left) if left else [])
-                if not own and objects and self.last_pair and re.search(  # "X right of Y, both at the back": X and Y
-                        r"\b(?:2|both|all)\b|\bthem\b", clause[objects[0].end: rm.start()]):
+                gap = clause[objects[0].end: rm.start()] if objects else ""
+                every = re.search(r"\ball\s+(\d+)\b", gap)
+                named = list({(m.color, m.label): m for m in reversed(left) if (m.color or m.label) and not m.ref}.values())[::-1]
+                if not own and every and int(every.group(1)) != len(named):
+                    raise ParseError(f"'{every.group(0)}' counts {every.group(1)} cubes, but {len(named)} are named before it; "
+                                     "say which cubes it means")
+                if not own and every and len(named) > 2:
+                    # "X left of Y and Y left of Z, all three in the front half": every cube named (Y and Z only, before)
+                    group = named
+                elif not own and objects and self.last_pair and re.search(  # "X right of Y, both at the back": X and Y
+                        r"\b(?:2|both|all)\b|\bthem\b", gap):
                     group = list(self.last_pair)
                 self.regions.append((group, rm.group(0)[len("region_"):]))
                 continue
@@ -242,6 +254,9 @@ class RelationalReading:
                 self.previous[:] = [self.obj(a_m), self.obj(b_m)]
                 continue
             if kind == "on" and b_m.patch and self.stackish:
+                if (a_m.color or a_m.label) and re.search(r"\b(?:move|put|place|set|bring|slide|push|get|take)\s+(?:the\s+)?$",
+                                                          clause[:a_m.start]):
+                    self.on_patch_as_stack.append(self.obj(a_m))  # "move the green cube onto ...": checked once the stack is known
                 self.onpatch.append(("*", self.obj(b_m)))
                 if a_m.color or a_m.label:  # a named cube that "it" may refer to next
                     self.previous[:] = [self.obj(a_m), self.obj(b_m)]
@@ -352,6 +367,11 @@ def recognize_relational(f: Features, b: Builder) -> bool:
                 return False  # colours nobody named made up for a stack of cubes whose colours are said
             names = [r.obj(Mention(0, 0, c, None, 1)) for c in cols[:n]]
         r.on_edges += [(u, lo) for lo, u in zip(names, names[1:], strict=False)]
+    raised = [a for a in r.on_patch_as_stack if a in {x for x, _ in r.on_edges}]
+    if raised:  # "Build a tower of red, blue, green. Move the green cube onto the red patch.": the base had gone there instead
+        raise ParseError(f"\"{f.original[:80]}\" puts the {raised[0]} cube on a patch, but it stands on another cube in the "
+                         "tower said; say whether the whole tower goes on the patch (\"put the tower on the red patch\") or "
+                         "that the tower is how the cubes start (\"Initially: a tower of ... . Move ...\"), or use --model")
     if r.on_structure or r.by_structure:
         _resolve_structure(b, r.objects, r.on_edges, r.rels, r.on_structure, r.by_structure, structure_colors(text))
     placed_in = _resolve_regions(r.regions, r.on_edges, r.obj, stackish, r.previous)
