@@ -3338,3 +3338,37 @@ def test_a_tower_on_a_patch_and_its_base_on_a_patch_still_compile():
     assert meaning(parse("Build a tower of red, blue, green on the red patch")) == ["on_patch(red,patch:red)", "stack(red,blue,green)"]
     assert meaning(parse("Stack the red block on the blue block and put the blue block on the green patch")) == [
         "on_patch(blue,patch:green)", "stack(blue,red)"]
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger23's refusal classes, second pass
+    ("Build a tower of three cubes on the purple patch.",  # the patch's colour had counted as a named cube's
+     ["on_patch(red,patch:purple)", "stack(red,blue,green)"]),
+    ("Initial: pink cube on top of brown cube. Target: both cubes resting on the table.", ["on_table(pink)", "start:stack(brown,pink)"]),
+    ("Initial: blue cube with the white cube on top of it. Target: the white cube on the yellow patch.",
+     ["on_patch(white,patch:yellow)", "start:stack(blue,white)"]),
+    ("Start: black on white on gray, gray at the bottom. Take the black cube off and set it on the table.",
+     ["on_table(black)", "start:stack(gray,white,black)"]),
+    ("Unstack: the start is a tower of four cubes, white at the bottom, then gray, black, brown. Put the brown one on the table.",
+     ["on_table(brown)", "start:stack(white,gray,black,brown)"]),
+    ("Unstack the tower (bottom to top: green, yellow, red) so that every cube ends up on the table.",
+     ["on_table(red)", "on_table(yellow)", "start:stack(green,yellow,red)"]),
+    ("Stack 2 on 1 and 4 on 3.", ["stack(1,2)", "stack(3,4)"]),
+    ("Stack the red cube on the green cube. Separately, put the white cube in the back.", ["in_region(white,back)", "stack(green,red)"]),
+    ("Stack pink on brown, put the cyan cube on the white patch, and move the gray cube to the front.",
+     ["in_region(gray,front)", "on_patch(cyan,patch:white)", "stack(brown,pink)"]),
+    ("In the final row the leftmost cube should be black, the rightmost brown, and the middle one yellow.",
+     ["line[left_to_right](black,yellow,brown)"]),
+    ("Repro for #142: put the yellow cube behind the gray cube, run 20 seeds.", ["behind(yellow,gray)"]),
+])
+def test_stranger23_second_pass(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "Start: black on white on gray, black at the bottom. Take the black cube off and set it on the table.",  # not its bottom
+    "Unstack: the start is a tower of three cubes, white at the bottom, then gray, black, brown. Put the brown one on the table.",
+])
+def test_a_start_said_twice_must_agree(text):
+    with pytest.raises(BadInput):
+        parse(text)

@@ -537,6 +537,18 @@ CLOSING_RE = re.compile(r"(?:[,.;:]\s*|\s+)(?:and\s+)?that(?:'s|\s+is|\s+will\s+
                         r"(?:\s+please)?\s*[.!]?\s*$")
 """A closing that says nothing of the goal ("..., and that's everything.", "... Make this true."): dropped."""
 
+EVAL_LOGISTICS_RE = re.compile(
+    r"(?:[,;]\s*|\s+)(?:and\s+)?(?:then\s+)?(?:run|running|with|over|across|for|repeat(?:ed)?\s+(?:for|over)?)\s*\d+\s+(?:random\s+)?"
+    r"(?:seeds?|trials?|episodes?|rollouts?|runs?|repetitions?|repeats?|times)\b(?:\s+each)?\s*(?=[.!;)]|$)"
+    r"|(?:[,;]\s*|\s+)(?:and\s+)?(?:log|record|save|report|upload|plot)\s+(?:the\s+)?(?:results?|outcome|metrics?|success\s+rates?"
+    r"|videos?|rollouts?)(?:\s+(?:as\s+usual|to\s+\w+|afterwards?))?\s*(?=[.!;]|$)"
+    r"|^(?:(?:hey|hi|ok(?:ay)?)\s*,?\s*)?(?:can|could|would)\s+(?:you|someone|somebody)\s+(?:please\s+)?(?:queue|schedule|launch|set\s+up"
+    r"|kick\s+off|start|run|add)\s+(?:up\s+)?(?:an?\s+|the\s+)?(?:new\s+)?(?:eval(?:uation)?|run|job|episode|experiment|task|test)"
+    r"\s+(?:where|in\s+which|with|that\s+has|for)\s+")
+"""How an evaluation is run or recorded, said around the task ("..., run 20 seeds", "... and log the
+result as usual", "can you queue an eval where the robot stacks ..."): no part of the goal (dropped;
+the question's words before the task are a request, not a question about the scene)."""
+
 EFFECTOR_RE = re.compile(
     r"(?:,\s*)?\b(?:(?:by\s+)?using|use|with|by|via)\s+(?P<what>(?:(?:the|your|its|a|an|one|both|each|another|my|our)\s+)?"
     r"(?:[a-z0-9][a-z0-9\-]*\s+){0,3}?(?:robot(?:'s|ic)?\s+)?"
@@ -1185,10 +1197,13 @@ SHOUTING_MIN_LETTERS = 12
 
 FILLER_RE = re.compile(r"(?i)(?:^|(?<=[.!?]\s))(?:prego|allora|ecco|dai|senti|god\s+willing|inshallah|insha'?allah|yalla|omg|lol"
                        r"|yo|hey\s+there|alright\s+then|okay\s+so|ok\s+so|aigoo|jeez|arre+y?|arey|do\s+one\s+thing)\s*[,!.]*\s*"
+                       r"|(?:^|(?<=[.!?;]\s))(?:separately|independently|additionally|in\s+addition|besides|furthermore|moreover"
+                       r"|on\s+top\s+of\s+that|apart\s+from\s+that|as\s+a\s+second\s+(?:part|step))\s*,\s*"
                        r"|\b(?:(?:in\s+the\s+)?same\s+way)\s+(?=(?:put|place|keep|move|set)\b)"
                        r"|,?\s*\b(?:va\s+bene|capisci|ok\?|okay\?|right\?|yeah\?)\s*(?=[.!?]*\s*$)")
 """Interjections said around a task in several languages' habits ("Prego, ...", "Allora, ...",
-"..., va bene?", "God willing, ...", "omg"): dropped."""
+"..., va bene?", "God willing, ...", "omg"), and a sentence's opening that only joins it to the
+one before ("Separately, put ...", "In addition, ..."; every sentence of a goal holds together): dropped."""
 
 DISFLUENCY_RE = re.compile(r"(?i)\s*\b(?:uh+m?|um+|erm*|uhm+)\b(?!\s*,?\s*no\b)\s*,?(?=\s|$)")
 """A speaker's hesitation in a transcript ("put the uh orange cube"): dropped."""
@@ -1253,8 +1268,10 @@ and the rest given colours nobody said."""
 PER_LAYER_RE = re.compile(rf"\b(?P<n1>\d+|{COUNT_WORD_RE})\s+(?:(?P<c>{COLOR_RE})\s+)?(?:cubes?|blocks?)\s+(?:per|in\s+each|on\s+each|for\s+each|a)\s+"
                           r"(?:layer|row|level|tier|course)\b"
                           rf"|\b(?P<noun>layers|rows|levels|tiers|courses)(?P<sep>,?\s+(?:with\s+|of\s+)?)(?P<n2>\d+|{COUNT_WORD_RE})\s+"
-                          r"(?:cubes?|blocks?)\s+each\b")
-"""A wall's width said per layer ("three cubes per layer"): read as "N wide"; a colour said with it
+                          r"(?:cubes?|blocks?)\s+each\b"
+                          rf"|\b(?P<noun3>layers|rows|levels|tiers|courses)(?P<sep3>,?\s+)(?:each|every)\s+(?:layer|row|level|tier|course)\s+"
+                          rf"(?:has\s+|with\s+|of\s+)?(?P<n3>\d+|{COUNT_WORD_RE})\s+(?:cubes?|blocks?)\b")
+"""A wall's width said per layer ("three cubes per layer", "two rows, each row three cubes"): read as "N wide"; a colour said with it
 ("4 cyan cubes per row") is every cube's, read as "N wide, all <colour>"."""
 
 

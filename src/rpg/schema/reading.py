@@ -751,7 +751,11 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                                  f"{m.group(1)} {'' if m.group(1) == 'the' else 'the '}{m.group(2)} block",
                                  labelled)  # "stack the A on the B", "with A at the bottom, then B": label cubes
     # "stack B on A, C on B", "STACK 2 on 1, 3 on 2 (digit cubes)", "stack letter B on letter A"
-    labelled = labels_in_relations(labelled, digits=bool(LABEL_CUBES_SAID_RE.search(original)))
+    labelled = labels_in_relations(labelled, digits=bool(LABEL_CUBES_SAID_RE.search(original)) or (
+        # "Stack 2 on 1 and 4 on 3.": digits on both sides of two relations, with no cube counted anywhere, name digit
+        # cubes ("stack 2 on 1" alone stays refused: two cubes on one?)
+        len(re.findall(r"\b\d\s+(?:on|onto|on\s+top\s+of)\s+\d\b", original)) >= 2
+        and not re.search(r"(?i)\b(?:blocks?|cubes?|bricks?|boxes|towers?|stacks?\s+of|high|tall|levels?|rows?|layers?)\b", original)))
     labelled = re.sub(r"\b(the|a|an)\s+([A-Z])\s+(block|cube)\b", r"\1 letter \2 \3", labelled)  # "the A block"
     labelled = re.sub(r"\b(the)\s+(\d)\s+(block|cube)\b(?!s)", r"\1 digit \2 \3", labelled)  # "the 3 cube"
     text = labelled.lower()
@@ -811,7 +815,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(r"^\s*(?:about|regarding|re|concerning)\s+(?=the\s+(?:tower|stack|row|line|pyramid|wall|grid|circle)\s*:)", "", text)
     text = re.sub(r"\barbitrary\s+(?=(?:colou?rs?|order)\b)", "any ", text)  # "three cubes of arbitrary colour"
     text = re.sub(r"\b(?:listed|given|written|read)\s+(?=(?:from\s+)?(?:the\s+)?(?:top|bottom)\s+(?:to|up|down)\b)", "", text)  # "listed top to bottom:"
-    text = re.sub(r"\b(the|that|this)\s+(?:whole|entire|complete|resulting|finished|completed)\s+(?=(?:stack|tower|row|line|circle|pyramid|wall|grid|structure)\b)",
+    # "In the final row the leftmost cube should be black, ...": the row the goal describes
+    text = re.sub(r"^\s*(?:in|for)\s+the\s+(?:final|resulting|finished|end|goal|target)\s+(row|line|tower|stack)\s*[,:]?\s*", r"make a \1: ", text)
+    text = re.sub(r"\b(the|that|this)\s+(?:whole|entire|complete|resulting|finished|completed|final)\s+(?=(?:stack|tower|row|line|circle|pyramid|wall|grid|structure)\b)",
                   r"\1 ", text)  # "put the whole stack on the red patch": the stack
     if re.search(r"\bpyramids?\b", text):  # "pyramid: an orange and a pink cube side by side, and a white cube resting on both"
         text = re.sub(rf"(?P<base>(?:(?:an?|one|the|2)\s+)?(?:{COLOR_RE})\s+(?:and\s+(?:an?\s+|the\s+)?(?:{COLOR_RE})\s+)?(?:cubes?|blocks?)"
@@ -823,7 +829,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = re.sub(rf"\bin\s+(?:the\s+)?(?:middle|center|centre)\s+of\s+(?:the\s+)?(?=(?:two|2|both)\s+(?:(?:{COLOR_RE})\s+)?(?:ones|cubes|blocks)\b"
                   rf"|(?:the\s+)?(?:{COLOR_RE})\s+(?:one|cube|block)\s+and\s+the\s+(?:{COLOR_RE})\s+(?:one|cube|block)\b)", "between the ", text)
     # "kindly keep the white cube in front of the black cube" (Indian English): put it there
-    text = re.sub(rf"\bkeep\s+(?=(?:the|a|an)\s+(?:(?:{COLOR_RE})\s+)?(?:one|cube|block)\s+(?:on|onto|on\s+top\s+of|in|at|next\s+to|beside|"
+    text = re.sub(rf"\bkeep\s+(?=(?:(?:the|a|an)\s+)?(?:(?:{COLOR_RE})\s+)?(?:one|cube|block)\s+(?:on|onto|on\s+top\s+of|in|at|next\s+to|beside|"
                   r"behind|in\s+front\s+of|under|between|to\s+the\s+(?:left|right)\s+of)\b)", "put ", text)
     # "i want the red one on the blue one and then ...": a placement said as a wish
     text = re.sub(rf"\b(?:i|we)\s+(?:want|need|would\s+like|'d\s+like)\s+(?=(?:the|a|an)\s+(?:(?:{COLOR_RE})\s+)?(?:one|cube|block)?\s*"
@@ -842,6 +848,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.FRAMING_RE.sub("", text)
     text = lexicon.CLOSING_RE.sub("", text)
     text = lexicon.EPISODE_END_RE.sub("", text)
+    text = lexicon.EVAL_LOGISTICS_RE.sub("", text).strip()
     # "the robot stacks the red block on ...": the command the sentence describes
     text = re.sub(r"^(?:the\s+|a\s+)?(?:robot(?:ic)?(?:\s+arm)?|agent|arm)\s+(stack|put|place|move|push|arrange|build|set|line|pick|slide|lift|make)s\b",
                   r"\1", text)
@@ -1234,10 +1241,12 @@ def _roles_first(m: re.Match) -> str:
     return "from bottom to top: " + ", ".join(c for _, c in sorted(said))
 
 
-_END_WORDS = {"bottom": "bottom", "lowest": "bottom", "lower": "bottom", "top": "top", "highest": "top", "upper": "top",
-              "left": "left", "right": "right"}
+_END_WORDS = {"bottom": "bottom", "lowest": "bottom", "lower": "bottom", "bottommost": "bottom", "top": "top", "highest": "top",
+              "upper": "top", "topmost": "top", "left": "left", "leftmost": "left", "right": "right", "rightmost": "right"}
+_ROLE_BE = r"(?:(?:is|are|being|should\s+be|must\s+be|has\s+to\s+be|will\s+be)\s+)?"
+"""The verb of a role clause, or none ("the leftmost cube should be black, the rightmost brown")."""
 _ROLE_CLAUSE = (rf"the\s+(?:(?:{'|'.join(_END_WORDS)})(?:\s+(?:one|1|block|cube))?|\d+\s+(?:in\s+between|in\s+the\s+middle"
-                rf"|between\s+them))\s+(?:is|are|being)\s+(?:{COLOR_RE})\b")
+                rf"|between\s+them)|middle(?:\s+(?:one|1|block|cube))?)\s+{_ROLE_BE}(?:{COLOR_RE})\b")
 _ROLE_CLAUSES_RE = re.compile(rf"\s*[;:,]?\s*(?:with\s+)?{_ROLE_CLAUSE}(?:\s*,?\s*(?:and\s+)?{_ROLE_CLAUSE}){{2}}")
 
 
@@ -1247,9 +1256,11 @@ def _role_clauses(m: re.Match) -> str:
     right); the words as they were otherwise."""
     ends: dict[str, str] = {}
     middle: list[str] = []
-    for role, n, color in re.findall(rf"the\s+(?:({'|'.join(_END_WORDS)})(?:\s+(?:one|1|block|cube))?|(\d+)\s+[a-z\s]+?)"
-                                     rf"\s+(?:is|are|being)\s+({COLOR_RE})\b", m.group(0)):
-        if role:
+    for role, n, color in re.findall(rf"the\s+(?:({'|'.join(_END_WORDS)})(?:\s+(?:one|1|block|cube))?|(\d+)\s+[a-z\s]+?"
+                                     rf"|middle(?:\s+(?:one|1|block|cube))?)\s+{_ROLE_BE}({COLOR_RE})\b", m.group(0)):
+        if not role and not n:  # "the middle one yellow": one cube between the ends
+            middle.append(color)
+        elif role:
             if _END_WORDS[role] in ends:
                 return m.group(0)
             ends[_END_WORDS[role]] = color
@@ -1556,11 +1567,14 @@ right" are the two sides of one relation)"""
 
 def _clause_side(m: re.Match) -> bool:
     """Whether a bare side ends a clause that places one cube, another cube's clause following
-    ("put the red cube in the back and the green cube in front of it"): the side has nothing in
-    its own clause to be relative to, so it is the table's."""
+    ("put the red cube in the back and the green cube in front of it"), or a front or back ends
+    the text's last such clause ("stack pink on brown, ..., and move the gray cube to the front"):
+    the side has nothing in its own clause to be relative to, so it is the table's."""
+    last = (m.group("fb") is not None and m.group("lr") is None  # "..., and move the gray cube to the front.": a last clause's
+            and re.fullmatch(r"\s*[.!]?\s*", m.string[m.end():]) is not None)  # front or back has no cube to be relative to
     return (_side_part_ok(m) and m.group(0).split()[0] in ("on", "to", "at", "in")
             and _CLAUSE_SIDE_BEFORE.search(m.string[:m.start()]) is not None
-            and _CLAUSE_SIDE_AFTER.match(m.string[m.end():]) is not None)
+            and (last or _CLAUSE_SIDE_AFTER.match(m.string[m.end():]) is not None))
 
 
 _HEADING_RE = re.compile(r"\s*(?:(?:build|make|put|place|set\s+up)\s+)?(?:(?:a|an|the)\s+)?(?:[\w-]+\s+){0,3}?"
@@ -1611,10 +1625,11 @@ def _group_side(m: re.Match) -> bool:
 
 def _per_layer(m: re.Match) -> str:
     """"3 cubes per layer" -> "3 wide"; "4 cyan cubes per row" -> "4 wide, all cyan"."""
-    n = m.group("n1") or m.group("n2")
+    n = m.group("n1") or m.group("n2") or m.group("n3")
     wide = f"{NUMBER_WORDS.get(n, n)} wide"
-    if m.group("noun"):  # "3 layers, 2 cubes each": the layers said, then each one's width
-        return f"{m.group('noun')}{m.group('sep').rstrip().removesuffix('with').removesuffix('of').rstrip() or ''} {wide}"
+    if m.group("noun") or m.group("noun3"):  # "3 layers, 2 cubes each", "2 rows, each row 3 cubes": the layers, then each one's width
+        sep = m.group("sep") if m.group("noun") else m.group("sep3")
+        return f"{m.group('noun') or m.group('noun3')}{sep.rstrip().removesuffix('with').removesuffix('of').rstrip() or ''} {wide}"
     return f"{wide}, all {m.group('c')}" if m.group("c") else wide
 
 

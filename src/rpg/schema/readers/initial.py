@@ -31,6 +31,7 @@ START_SENTENCE_RE = re.compile(
     r"(?i)^\s*(?:initially|at\s+(?:the\s+)?(?:start|beginning)(?:\s+of\s+the\s+(?:episode|task))?"
     r"|in\s+the\s+(?:initial|starting|start)\s+(?:state|scene|configuration|setup)"
     r"|(?:the\s+)?(?:initial|start(?:ing)?)\s+(?:state|scene|configuration|setup|position)s?\s*(?:is\b|:|-|\u2014)"
+    r"|the\s+(?:start|beginning)\s+is\b"
     r"|(?:scene\s+)?init(?:ial)?(?:\s+(?:state|scene|config(?:uration)?))?\s*:"
     r"|(?:setup|start|before|init)\s*:|(?:the\s+)?(?:scene|episode|table|task)\s+(?:starts|begins)\s+(?:with|as)"
     r"|(?:it\s+)?(?:starts|begins)\s+(?:out\s+)?with(?=\s+(?:the|a|an|one)\s)"
@@ -94,7 +95,8 @@ cube with nothing on it ("A is clear", checked against the stacks said)."""
 
 ON_TABLE_GOAL_RE = re.compile(
     rf"(?i)^\s*(?:(?:put|place|move|set|lay|take|bring|get|lower|return)\s+)?{_CUBE.format(g='c')}\s+(?:(?:must|should|has\s+to|"
-    r"needs\s+to|will)\s+)?(?:(?:be|end\s+up|ends\s+up|finish(?:es)?|stay|stays|go|goes|sit|sits|lie|lies|is|back|down"
+    r"needs\s+to|will)\s+)?(?:(?:be|end\s+up|ends\s+up|finish(?:es)?|stay|stays|go|goes|sit|sits|sitting|lie|lies|lying|rest|rests"
+    r"|resting|standing|placed|is|back|down"
     rf"|(?:off|from)\s+(?:of\s+)?(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?(?:\s+and)?)\s+)*(?:on|onto)\s+the\s+table\s*[.!]?$")
 """A goal that only sends a cube to the table ("the pink cube must end up on the table", "put
 red on the table"): read here, where the start stacks that cube (alone it asks nothing)."""
@@ -122,10 +124,40 @@ class InitialScene:
     goal: str
 
 
+_COUNTED_TOWER_RE = re.compile(
+    rf"(?i)\b(?:an?\s+|one\s+)?(?:tower|stack)\s+of\s+(?P<n>\d+|two|three|four|five|six)\s+(?:cubes|blocks)\s*[,:]\s*"
+    rf"(?P<first>{COLOR_RE})\s+(?:at|on)\s+the\s+(?P<end>bottom|base|top)\s*,\s*(?:then\s+)?"
+    rf"(?P<rest>(?:{COLOR_RE})(?:\s*,\s*(?:then\s+)?(?:and\s+)?(?:{COLOR_RE})|\s+(?:and|then)\s+(?:{COLOR_RE}))*)")
+"""A start's tower counted, then listed from one end ("a tower of four cubes, white at the bottom,
+then gray, black, brown"): read as the tower of those colours from that end, when the count holds."""
+
+
+def _counted_tower(m: re.Match) -> str:
+    colors = [m.group("first")] + re.findall(rf"(?i)\b(?:{COLOR_RE})\b", m.group("rest"))
+    n = NUMBER_WORDS.get(m.group("n").lower(), None) or int(m.group("n"))
+    if n != len(colors):
+        return m.group(0)  # the count does not hold: left as written (and refused)
+    return f"a tower of {', '.join(colors)} from the {'top' if m.group('end') == 'top' else 'bottom'} up"
+
+
+_WITH_ON_TOP_RE = re.compile(rf"(?i)\b(?:an?\s+|the\s+)?(?P<bottom>{COLOR_RE})(?:\s+(?:cube|block))?\s+with\s+(?:the\s+|an?\s+)?"
+                             rf"(?P<top>{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:on\s+top(?:\s+of\s+it)?|on\s+it)\b")
+"""A start's stack said as a cube with another on top ("blue cube with the white cube on top of it")."""
+
+_ROLE_FACT_RE = re.compile(rf"(?i)(?:^|(?<=[,;]))\s*(?:and\s+)?(?:the\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:is\s+)?"
+                           r"(?:at|on)\s+(?:the\s+)?(?P<end>bottom|base|top)\s*(?=[,;.]|$)")
+"""A start's fact that says again which cube is a stack's end ("..., gray at the bottom"): checked
+against the stacks said, not a stack of its own."""
+
+
 def _facts(content: str) -> list[tuple[str, ...]] | None:
     """The stacks (bottom to top) a statement of the start says, or None when one of its facts
     is not a form this module reads."""
     stacks: list[tuple[str, ...]] = []
+    content = _COUNTED_TOWER_RE.sub(_counted_tower, content)
+    content = _WITH_ON_TOP_RE.sub(r"\g<top> on \g<bottom>", content)
+    roles = [(m.group("c"), m.group("end")) for m in _ROLE_FACT_RE.finditer(content)]
+    content = _ROLE_FACT_RE.sub(" , ", content)
     towers = [m.group(0).strip() for m in _TOWER_IN_RE.finditer(content)]
     content = _TOWER_IN_RE.sub(" , ", content)
     for fact in towers + re.split(r"\s*(?:[,;]\s*(?:and\s+|while\s+)?|\s+and\s+|\s+while\s+)\s*", content.strip(" .:")):
@@ -156,6 +188,9 @@ def _facts(content: str) -> list[tuple[str, ...]] | None:
         stacks.append(tuple(order) if under == {True} else tuple(order[::-1]))  # "A under B": A is the bottom
         continue
     merged = _merged(stacks)
+    for c, end in roles:  # "black on white on gray, gray at the bottom": said again, checked against the stacks
+        if merged is None or not any(t[0 if end in ("bottom", "base") else -1] == _canon(c) and len(t) > 1 for t in merged):
+            return None
     clear = [_canon(m.group(1)) for m in re.finditer(rf"(?i)(?:the\s+)?(?:block\s+|cube\s+)?({_NAME})(?:\s+(?:cube|block))?\s+is\s+"
                                                       r"clear\b|\bclear\s+(?:the\s+)?(?:block\s+)?(" + _NAME + r")\b", content)
              if m.group(1)] if merged is not None else []
@@ -198,7 +233,10 @@ table"): the cube sent to the table."""
 
 _UNSTACK_RE = re.compile(
     rf"(?i)^\s*(?:please\s+)?unstack\s+(?:the\s+)?(?:(?:tower|stack)\s+(?:of\s+)?(?P<a>(?:{COLOR_RE})(?:\s+on(?:\s+top\s+of)?\s+(?:{COLOR_RE}))+)"
-    rf"|(?P<b>(?:{COLOR_RE})(?:-on-(?:{COLOR_RE}))+)\s+(?:tower|stack))\s*,?\s*(?:so\s+(?:that\s+)?|and\s+(?:then\s+)?)(?P<goal>.+)$")
+    rf"|(?P<b>(?:{COLOR_RE})(?:-on-(?:{COLOR_RE}))+)\s+(?:tower|stack)"
+    rf"|(?:tower|stack)\s*\(\s*(?P<c>(?:from\s+)?(?:the\s+)?(?:bottom|top)\s+(?:to|up\s+to|down\s+to)\s+(?:the\s+)?(?:top|bottom)\s*:\s*"
+    rf"(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})|\s+and\s+(?:{COLOR_RE}))+)\s*\))"
+    rf"\s*,?\s*(?:so\s+(?:that\s+)?|and\s+(?:then\s+)?)(?P<goal>.+)$")
 """The start said by the verb that undoes it ("Unstack the yellow-on-white tower so both cubes sit on
 the table"): the tower named is rho_0's stack, what follows the goal."""
 
@@ -208,14 +246,17 @@ def split(instruction: str) -> InitialScene | None:
     module reads (see the module docstring)."""
     for pattern, written in MARKUP_RES:
         instruction = pattern.sub(written, instruction)
-    instruction = re.sub(r"^\s*[A-Za-z][\w\-]*(?:\s+[\w\-]+){0,3}?\s*(?:\([^)]{0,30}\))?\s*:\s*(?=\S)(?=.*\b(?:starts|initially)\b)", "",
+    instruction = re.sub(r"^\s*[A-Za-z][\w\-]*(?:\s+[\w\-]+){0,3}?\s*(?:\([^)]{0,30}\))?\s*:\s*(?=\S)(?=.*\b(?:starts?|initial(?:ly)?)\b)", "",
                          instruction.strip())  # "# goal (unstack): the pink cube starts ...": its label
     instruction = ROBOT_STARTS_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     instruction = FROM_START_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     instruction = START_STRUCTURE_RE.sub(r"Initially: a \1 of ", instruction.strip())
     unstack = _UNSTACK_RE.match(instruction.strip())
     if unstack:
-        stacks = _facts((unstack.group("a") or unstack.group("b")).replace("-", " "))
+        listed = unstack.group("c")  # "Unstack the tower (bottom to top: green, yellow, red) so ...": that tower
+        said = f"a tower of {listed.split(':')[1].strip()} from the {listed.split(':')[0].split()[-3 if listed.startswith('from') else 0]}" \
+            if listed else (unstack.group("a") or unstack.group("b")).replace("-", " ")
+        stacks = _facts(said)
         return InitialScene(tuple(stacks), unstack.group("goal")) if stacks else None
     clause = STARTS_CLAUSE_RE.match(instruction.strip())
     if clause:
@@ -247,8 +288,9 @@ def split(instruction: str) -> InitialScene | None:
 
 ALL_ON_TABLE_GOAL_RE = re.compile(
     r"(?i)^\s*(?:(?:put|place|set|lay|leave|get)\s+)?(?:both|all|every|the\s+(?:two|three|four|five|\d+))\s+(?:of\s+)?(?:the\s+)?"
-    r"(?:cubes|blocks|ones|of\s+them|them)?\s*(?:(?:must|should|have\s+to|need\s+to|will)\s+)?(?:(?:be|end\s+up|sit|stand|lie|are"
-    r"|go|stay)\s+)?(?:(?:flat|back|down)\s+)?(?:on|onto)\s+the\s+table\s*[.!]?$")
+    r"(?:cubes|blocks|cube|block|ones|of\s+them|them)?\s*(?:(?:must|should|have\s+to|need\s+to|will)\s+)?(?:(?:be|end\s+up|ends\s+up"
+    r"|sit|sits|sitting|stand|stands|standing|lie|lies|lying|rest|rests|resting|placed|are|is|go|stay)\s+){0,2}"
+    r"(?:(?:flat|back|down|separately)\s+)?(?:on|onto)\s+the\s+table\s*[.!]?$")
 """A goal that sends every cube the start stacks to the table ("both cubes sit on the table",
 "put all the blocks on the table"): each cube a stack holds above another on the table."""
 

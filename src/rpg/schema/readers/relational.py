@@ -359,7 +359,8 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         elif len(ms) > n and len({(m.color, m.label) for m in ms}) == len(ms):  # "a tower of red, green and blue"
             names = [r.obj(m) for m in ms]
         else:
-            named = [c for c in dict.fromkeys(f.color_list()) if (c, None) not in r.subjects]
+            cube_colors = {m.color for m in mentions_in(said) if not m.patch}  # a patch's colour names no cube of the stack
+            named = [c for c in dict.fromkeys(f.color_list()) if (c, None) not in r.subjects and c in cube_colors]
             # not the colours of cubes placed beside it
             cols = [c for c in colors_for(n, f, prefer=named) if (c, None) not in r.beside]
             cols += [c for c in DEFAULT_COLORS if c not in cols and (c, None) not in r.subjects][: n - len(cols)]
