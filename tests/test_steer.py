@@ -1472,3 +1472,37 @@ def test_a_tower_counted_with_its_colour_keeps_another_cube_apart():  # the blue
 def test_steer_stranger15_roles_orders_and_additions(tmp_path, base, edits, expected):
     assert _steered(tmp_path, base, *edits)[-1] == expected
 
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # steer_stranger15's refusals: two cubes swapped in a task of several relations or places (each takes the
+    # other's place; a patch keeps its colour), a cube moved to another patch or off it, a count said as "go down to",
+    # a cube recoloured by its role alone, a line piled up from its left end
+    ("Put the yellow cube between the red cube and the green cube", ["swap yellow and red"], ("modify", ["between(red;green,yellow)"])),
+    ("Put the green cube to the left of the red cube and the red cube to the left of the blue cube", ["swap green and blue"],
+     ("modify", ["left_of(blue,red)", "left_of(red,green)"])),
+    ("Put the red cube on the green patch and the blue cube on the yellow patch", ["switch them"],
+     ("modify", ["on_patch(blue,patch:green)", "on_patch(red,patch:yellow)"])),
+    ("Put a purple cube on the left side of the table and a yellow cube on the right side", ["please interchange both of their sides"],
+     ("modify", ["in_region(purple,right)", "in_region(yellow,left)"])),
+    ("Put the green cube on the blue patch", ["move it to the yellow patch"], ("modify", ["on_patch(green,patch:yellow)"])),
+    ("Put the green cube on the blue patch", ["take it off the patch and put it in the middle of the table"],
+     ("modify", ["in_region(green,center)"])),
+    ("Build a tower of four green cubes", ["make it 6", "hmm too tall, go down to three"], ("tweak", ["stack(green,green,green)"])),
+    ("Stack four cubes: black at the bottom, then white, then black, then white on top", ["top one red"],
+     ("tweak", ["stack(black,white,black,red)"])),
+    ("Put a red, a blue and a yellow cube in a row from left to right", ["wait, pile them up into a tower instead, leftmost one at the bottom"],
+     ("pivot", ["stack(red,blue,yellow)"])),
+])
+def test_steer_stranger15_swaps_moves_and_roles(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+def test_a_swap_of_a_colour_two_cubes_share_is_refused(tmp_path):
+    """Which red cube takes the blue cube's place is not said: no swap is guessed."""
+    from rpg.errors import BadInput
+
+    fam = Family(create_family(compile_instruction("Put two red cubes next to each other and the blue cube on the green patch",
+                                                   tmp_path, name="fam").path).path)
+    with pytest.raises(BadInput):
+        steer(fam.path, "swap red and blue")

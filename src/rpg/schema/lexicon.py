@@ -1686,6 +1686,21 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "ok then just a green cube at the right end": a cube added at that end
     (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|fine|alright)\s*,?\s*)?(?:then\s+)?(?:just\s+)?(?:a|an|one)\s+({COLOR_RE})\s+(?:cube|block)\s+"
                 r"(?:at|on)\s+the\s+(left|right|top|bottom|front|back)(\s+end)?\s*(?:then|instead)?\s*[.!]?\s*$"), r"add a \1 cube at the \2\3"),
+    # "hmm too tall, go down to three": that count (the judgement before it asks nothing more)
+    (re.compile(rf"(?i)^\s*(?:(?:hmm+|ok(?:ay)?|nah|actually)\s*,?\s*)*(?:(?:too|a\s+bit)\s+(?:tall|high|long|big|short|small|wide)\s*[,;.]?\s*)?"
+                rf"(?:go|come|bring\s+it|take\s+it|cut\s+it|drop\s+it|scale\s+it)\s+(?:back\s+)?(?:down|up)\s+to\s+(\d+|{COUNT_WORD_RE})\b"),
+     r"make it \1"),
+    # "pile them up into a tower instead, leftmost one at the bottom": the line's order kept, from its left end up
+    (re.compile(r"(?i)\s*,?\s*(?:with\s+)?(?:the\s+)?(?:leftmost|left|first)\s+(?:one|cube|block)\s+(?:at|on)\s+(?:the\s+)?(?:bottom|base)\b"),
+     " in the same order"),
+    # "Then please put them on top of each other. Black is the top.": stack them, that cube at that end
+    (re.compile(r"(?i)\b(?:put|place|set)\s+(them|all\s+of\s+them|the\s+cubes|the\s+blocks)\s+on\s+top\s+of\s+(?:each\s+other|one\s+another)\b"),
+     r"stack \1"),
+    (re.compile(rf"(?i)\s*[.,;]\s*(?:and\s+)?(?:the\s+)?({COLOR_RE})(?:\s+(?:one|cube|block))?\s+(?:is|should\s+be|goes|must\s+be)\s+"
+                r"(?:the\s+|at\s+the\s+|on\s+)(top|bottom)(?:\s+one)?\s*[.!]?\s*$"), r", with \1 at the \2"),
+    # "top one red", "left one green": that cube recoloured
+    (re.compile(rf"(?i)^\s*(?:(?:and|now|then|ok(?:ay)?)\s*,?\s+)*(?:the\s+)?(top|bottom|middle|left|right|leftmost|rightmost|base)\s+"
+                rf"(?:one|cube|block)\s+({COLOR_RE})\s*(?:please|now|instead)?\s*[.!]?\s*$"), r"make the \1 one \2"),
     # "bump it to 8", "bump it up to 8 cubes": that count
     (re.compile(rf"(?i)\bbump\s+(?:it|that|this|them)\s+(?:up\s+)?to\s+(\d+|{COUNT_WORD_RE})\b"), r"make it \1"),
     # "I think green would be better than red", "green would look better than red": one colour for the other

@@ -625,7 +625,7 @@ def read_ops(t: str) -> list[Op]:
                               r"(?:as\s+|in\s+|into\s+)?an?\s+(?:\d+x\d+(?:x\d+)?\s+)?"
                               + STRUCTURE_RE + r"(?:\s+(?:instead|now|please))*" + end_role + r"\W*", t)
     if stack_all is None:  # "stack them with blue at the bottom"
-        stack_all = re.fullmatch(r"(?:(?:now|ok|okay|actually|then|and)\s+)*(?:stack|pile)\s+(?:them|all|everything|(?:all\s+)?the\s+"
+        stack_all = re.fullmatch(r"(?:(?:now|ok|okay|actually|then|and|please)\s+)*(?:stack|pile)\s+(?:them|all|everything|(?:all\s+)?the\s+"
                                  r"(?:blocks|cubes))(?:\s+up)?" + end_role + r"\W*", t)
     ended = next((m for m in (bare_shape, stack_all) if m is not None and "end_c" in m.re.groupindex and m.group("end_c")), None)
     ended_order = {"keep_order": True, "end": (canon_color(ended.group("end_c")), ended.group("end_w"))} if ended else {}

@@ -313,9 +313,16 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     colors, pcolor, shape = task
     t = " " + edit.lower().strip().rstrip(".!") + " "
     region = _edit_region(t)
-    if (region is not None and len(colors) == 1 and re.search(r"\b(?:move|put|place|shift|slide|bring|it)\b", t)
-            and not re.search(r"\bpatch\b|\b(?:add|another|also|too)\b", t)):  # "move it to the left side of the table instead"
+    off = re.sub(r"\b(?:take|get|move|lift)\s+it\s+off\s+(?:of\s+)?the\s+(?:(?:goal|target)\s+)?patch\s+(?:and\s+)?", " ", t)
+    if (region is not None and len(colors) == 1 and re.search(r"\b(?:move|put|place|shift|slide|bring|it)\b", off)
+            and not re.search(r"\bpatch\b|\b(?:add|another|also|too)\b", off)):
+        # "move it to the left side of the table instead", "take it off the patch and put it in the middle of the table"
         return f"Place the {colors[0]} block {region_phrase(region)}", "modify"
+    moved = re.fullmatch(rf"\s*(?:(?:now|ok(?:ay)?|actually|and|then|just|hmm|nah|please)\s*,?\s+)*(?:move|put|place|shift|slide|bring|push)\s+"
+                         rf"(?:it|the\s+(?:(?:{COLOR_RE})\s+)?(?:cube|block|one))\s+(?:over\s+)?(?:to|onto|on|into)\s+(?:the|a)\s+"
+                         rf"({COLOR_RE})\s+(?:goal\s+|target\s+)?patch\s*(?:instead|please)?\s*", t)
+    if moved and len(colors) == 1 and canon_color(moved.group(1)) != pcolor:  # "move it to the yellow patch": that patch instead
+        return f"Place the {colors[0]} block on the {canon_color(moved.group(1))} goal patch", "modify"
     intent = None
     t = re.sub(r"\btarget\b(?!\s+patch)", "patch", t)  # "make the target green"
     recolor = re.search(rf"\bpatch\b[^.;]*?\b(?:to|into|be|is)?\s*({COLOR_RE})\b|\b({COLOR_RE})\s+(?:goal\s+|target\s+)?patch\b", t)

@@ -44,6 +44,7 @@ from rpg.schema.lexicon import (
     SAME_PATCH_RE,
 )
 from rpg.schema.model import TaskSchema
+from rpg.schema.reading import canon_color
 from rpg.schema.structures import STRUCTURE_RE
 from rpg.steer.carried import Carried, split
 from rpg.steer.carried import render as render_carried
@@ -268,6 +269,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         intent = intent_of_standalone(extract(schema), ref_spec)
         _refuse_pivot_that_loses_cubes(plan.text, ref_schema, schema, intent, reference)
         return schema, text, intent
+    swapped = _swapped(plan, ref_schema) if ref_spec is None else None
+    if swapped is not None:  # "swap yellow and red" of cubes in several relations: each takes the other's place
+        return swapped
     if not plan.ops:
         if plan.cue.kind != "current":  # "go back to version 1": that version as it is, named by the change from the head
             return ref_schema, ref_schema.instruction, _change_from_head(fam, ref_schema)
@@ -366,6 +370,42 @@ def _as_row(instruction: str, ops: list) -> str:
     direction, object_first = _ROW_OF_RELATION[rel.kind]
     first, second = (rel.object, rel.subject) if object_first else (rel.subject, rel.object)
     return f"Put the {names[first]} and {names[second]} blocks in a row from {direction}: {names[first]}, {names[second]}"
+
+
+_SWAP_BOTH_RE = re.compile(r"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|actually|and|then|just|hmm|nah)\s*,?\s+)*(?:swap|switch|exchange"
+                           r"|interchange|trade)\s+(?:them|the\s+two(?:\s+(?:cubes|blocks))?|both(?:\s+of\s+(?:them|their\s+(?:places|sides"
+                           r"|positions|spots)))?|their\s+(?:places|sides|positions|spots)|places|sides|positions)(?:\s+(?:around|over|please))*"
+                           r"\s*[.!]?\s*$")
+"""An edit that swaps the task's two cubes without naming them ("switch them", "please interchange both
+of their sides")."""
+
+
+def _swapped(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str, str] | None:
+    """The task with two cubes exchanged ("swap yellow and red" of "yellow between red and green";
+    "switch them" of two cubes on two patches): its instruction said again with the two colours
+    exchanged wherever they name a cube (a patch keeps its colour), read again.  None when the edit
+    is no such swap or a colour names no one cube of the task."""
+    cubes = [a.color for a in ref.assets if a.kind == "colored_cube"]
+    ops = plan.ops
+    if len(ops) == 1 and ops[0].op == "swap" and set(ops[0].params) == {"a", "b"} and \
+            set(ops[0].params["a"]) == {"color"} == set(ops[0].params["b"]):
+        a, b = ops[0].params["a"]["color"], ops[0].params["b"]["color"]
+    elif not ops and _SWAP_BOTH_RE.match(plan.text) and len(cubes) == 2 and len(set(cubes)) == 2:
+        a, b = cubes
+    else:
+        return None
+    if a == b or cubes.count(a) != 1 or cubes.count(b) != 1:
+        return None
+    def exchange(m: re.Match) -> str:
+        c = canon_color(m.group(1))
+        return {a: b, b: a}.get(c, m.group(1))
+    instruction = re.sub(rf"(?i)\b({COLOR_RE})\b(?!\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|area|zone|square))", exchange,
+                         ref.instruction)
+    try:
+        schema = parse(instruction)
+    except BadInput as exc:
+        raise SteerError(f"cannot swap the {a} and {b} cubes of the task: {str(exc).splitlines()[0]}") from None
+    return schema, instruction, "modify"
 
 
 def _change_from_head(fam: Family, schema: TaskSchema) -> str:
