@@ -3372,3 +3372,15 @@ def test_stranger23_second_pass(text, expected):
 def test_a_start_said_twice_must_agree(text):
     with pytest.raises(BadInput):
         parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a cube said to stay, be left or be kept somewhere ends there; "Look, ..." and "to complete this task," frame it
+    ("Stack the brown cube on the black cube and leave the pair in the back left corner.", ["stack(black,brown)@back_left"]),
+    ("The cube yellow must stay at the left of the cube orange.", ["left_of(yellow,orange)"]),
+    ("The cube orange must stay on the patch purple.", ["on_patch(orange,patch:purple)"]),
+    ("Look, a pink patch! Put the pink block on the pink patch, honey.", ["on_patch(pink,patch:pink)"]),
+    ("To complete this task, the robot should put the red cube on the blue cube.", ["stack(blue,red)"]),
+])
+def test_stay_leave_keep_and_framing(text, expected):
+    assert meaning(parse(text)) == expected

@@ -759,6 +759,13 @@ one cube of the clause before (a region is no cube), so it is written as that cu
 
 _COLOR_WORD = "(?:" + "|".join(COLORS) + ")"
 PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "The cube orange must stay on the patch purple", "yellow stays at the left of orange": where it is at the end
+    (re.compile(r"\b(must|should|has\s+to|have\s+to|needs?\s+to|will)\s+(?:to\s+)?(?:stay|remain)\b"), r"\1 be"),
+    (re.compile(r"\b(?:stays|remains)\s+(?=(?:on|onto|at|in|inside|next\s+to|beside|behind|under|to\s+the|near|far|between|in\s+front)\b)"),
+     "is "),
+    # "leave the pair in the back left corner", "keep all the red cubes in the front side": put them there
+    (re.compile(r"\b(?:leave|keep)\s+(?=(?:all\s+)?(?:the|both|all|these|those)\s+(?:[a-z]+\s+){0,3}?(?:cubes?|blocks?|pair|ones?|tower|stack"
+                r"|row|line)\s+(?:on|onto|at|in|inside|next\s+to|beside|behind|in\s+front\s+of|to\s+the|near|far|between|under)\b)"), "put "),
     # "put one cube on the red patch and another on the blue patch": another cube (it had been the first cube again)
     (re.compile(rf"\b(one|a|an)\s+((?:(?:{COLOR_RE})\s+)?(?:cube|block))\b(.*?)\banother\s+"
                 r"(?=(?:on|onto|in|into|at|next|beside|behind|under|in\s+front)\b)"),
@@ -1102,6 +1109,10 @@ CHAT_TURN_RES: tuple[tuple[re.Pattern, str], ...] = (
 (:data:`LABEL_RE`)."""
 
 TASK_FRAME_RES: tuple[re.Pattern, ...] = (
+    # "I would like the table to look like this at the end: ...", "To complete this task, ...": the goal follows
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:when\s+the\s+robot\s+is\s+(?:finished|done)\s*,\s*)?(?:(?:i|we)\s+(?:would\s+like|want|need)\s+)?"
+               r"the\s+(?:table|scene|workspace)\s+(?:should\s+|to\s+|must\s+|will\s+)?look\s+like\s+this(?:\s+at\s+the\s+end)?\s*[:.]\s*"),
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:in\s+order\s+)?to\s+(?:complete|solve|finish|pass)\s+(?:this|the)\s+(?:task|episode|level)\s*,\s*"),
     # a dotted section number before the text ("5.3 The tower ...")
     re.compile(r"^\s*\d+(?:\.\d+)+\.?\s+(?=[A-Za-z])"),
     # "We evaluate a tower-building task in which the policy must ...": the task it names follows
@@ -1197,6 +1208,7 @@ SHOUTING_MIN_LETTERS = 12
 
 FILLER_RE = re.compile(r"(?i)(?:^|(?<=[.!?]\s))(?:prego|allora|ecco|dai|senti|god\s+willing|inshallah|insha'?allah|yalla|omg|lol"
                        r"|yo|hey\s+there|alright\s+then|okay\s+so|ok\s+so|aigoo|jeez|arre+y?|arey|do\s+one\s+thing)\s*[,!.]*\s*"
+                       r"|(?:^|(?<=[.!?;]\s))(?:look|listen|hey\s+look)\s*,\s*(?=\S)"
                        r"|(?:^|(?<=[.!?;]\s))(?:separately|independently|additionally|in\s+addition|besides|furthermore|moreover"
                        r"|on\s+top\s+of\s+that|apart\s+from\s+that|as\s+a\s+second\s+(?:part|step))\s*,\s*"
                        r"|\b(?:(?:in\s+the\s+)?same\s+way)\s+(?=(?:put|place|keep|move|set)\b)"
