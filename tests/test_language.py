@@ -3384,3 +3384,18 @@ def test_a_start_said_twice_must_agree(text):
 ])
 def test_stay_leave_keep_and_framing(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("The scene starts with blue stacked on red. Unstack it so both cubes sit on the table.", ["on_table(blue)", "start:stack(red,blue)"]),
+    ("The final scene should have the orange cube resting on top of the purple cube.", ["stack(purple,orange)"]),
+    ("The end state you are looking for is a circle made of five cubes: two red, two yellow and one blue.",
+     ["circle(blue,red,red,yellow,yellow)"]),
+    ("Put the red cube on the blue cube. That's the whole task.", ["stack(blue,red)"]),
+])
+def test_goal_framings_and_closings(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_either_order_leaves_the_tower_in_any_order():
+    assert parse("A tower of two cubes, red and blue, in either order.").goal_summary == "a stack of red, blue in any order"

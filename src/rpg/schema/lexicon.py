@@ -533,9 +533,12 @@ ARTICLE_DROPPED_AFTER: tuple[str, ...] = (
 table", terse or non-native writing) is read with "the" (:func:`rpg.schema.reading.normalize`)."""
 
 CLOSING_RE = re.compile(r"(?:[,.;:]\s*|\s+)(?:and\s+)?that(?:'s|\s+is|\s+will\s+be)\s+(?:everything|all|it)(?:\s+for\s+now)?\s*[.!]?\s*$"
+                        r"|(?:[,.;:]\s*|\s+)(?:and\s+)?that(?:'s|\s+is)\s+(?:the\s+)?(?:whole\s+|entire\s+)?(?:episode|task|goal(?:\s+state)?"
+                        r"|job|eval(?:uation)?|exercise)\s*[.!]?\s*$"
                         r"|(?:[,.;:]\s*|\s+)(?:please\s+)?make\s+(?:this|that|these|it|them|all\s+of\s+this)\s+(?:true|happen|so|hold)"
                         r"(?:\s+please)?\s*[.!]?\s*$")
-"""A closing that says nothing of the goal ("..., and that's everything.", "... Make this true."): dropped."""
+"""A closing that says nothing of the goal ("..., and that's everything.", "... Make this true.",
+"That's the whole episode."): dropped."""
 
 EVAL_LOGISTICS_RE = re.compile(
     r"(?:[,;]\s*|\s+)(?:and\s+)?(?:then\s+)?(?:run|running|with|over|across|for|repeat(?:ed)?\s+(?:for|over)?)\s*\d+\s+(?:random\s+)?"
@@ -918,7 +921,7 @@ FREE_PAIR_RE = re.compile(r"\b(?:the\s+)?colou?rs?\s+(?:and|or|,)\s+(?:the\s+)?o
 phrases :data:`FREE_CHOICE_RE` and :data:`ANY_ORDER_RE` read ("colours do not matter, in any order")."""
 
 ANY_ORDER_RE = re.compile(
-    r"(?:\s*[,;(\u2013\u2014-]\s*|\s+)(?:(?:in\s+)?(?:any|whatever|no\s+particular)\s+order(?:\s+(?:is|are)\s+(?:fine|ok(?:ay)?|good|allowed))?"
+    r"(?:\s*[,;(\u2013\u2014-]\s*|\s+)(?:(?:in\s+)?(?:any|whatever|no\s+particular|either)\s+order(?:\s+(?:is|are)\s+(?:fine|ok(?:ay)?|good|allowed))?"
     r"|(?:the\s+)?order\s+(?:does\s*n[o']?t|doesn't|is\s*n[o']?t|isn't)\s+(?:matter|important)|regardless\s+of\s+(?:the\s+)?order"
     r"|(?:the\s+)?order\s+is\s+(?:up\s+to\s+you|your\s+(?:choice|call)|free|flexible|open)"
     r"|(?:in\s+)?(?:any|whatever|whichever)\s+order\s+you\s+(?:like|want|choose|prefer|wish)"
@@ -1109,6 +1112,10 @@ CHAT_TURN_RES: tuple[tuple[re.Pattern, str], ...] = (
 (:data:`LABEL_RE`)."""
 
 TASK_FRAME_RES: tuple[re.Pattern, ...] = (
+    # "The final scene should have ...", "The end state you are looking for is ...": the goal follows
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:final|end|desired|goal|target|resulting)\s+(?:state|scene|configuration|layout"
+               r"|arrangement|setup)(?:\s+(?:you\s+are|you're|we\s+are|we're|i\s+am|i'm)\s+looking\s+for)?\s+(?:should\s+|must\s+|will\s+)?"
+               r"(?:have|has|show|shows|contain|contains|be|is)\s*:?\s*"),
     # "I would like the table to look like this at the end: ...", "To complete this task, ...": the goal follows
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:when\s+the\s+robot\s+is\s+(?:finished|done)\s*,\s*)?(?:(?:i|we)\s+(?:would\s+like|want|need)\s+)?"
                r"the\s+(?:table|scene|workspace)\s+(?:should\s+|to\s+|must\s+|will\s+)?look\s+like\s+this(?:\s+at\s+the\s+end)?\s*[:.]\s*"),

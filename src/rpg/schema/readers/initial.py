@@ -69,6 +69,7 @@ the goal, and the goal's cube lost)."""
 
 GOAL_OPENER_RE = re.compile(r"(?i)^\s*(?:(?:the\s+)?(?:goal|target|task|objective)\s*(?:is\s*(?:to\s+)?|:|-|\u2014)"
                             r"|then\s*,?|now\s*,?|your\s+task\s*(?:is\s+to|:)|(?:at|in)\s+the\s+end\s*[,:]?|finally\s*,?"
+                            r"|(?:unstack|dismantle|take\s+apart)\s+(?:it|them|the\s+(?:tower|stack))\s*,?\s*so\s+(?:that\s+)?"
                             r"|success(?:\s+(?:when|if))?\s*:?)\s*")
 """Words that open the goal after the start ("Goal: ...", "Then ...", "The task is to ...")."""
 
