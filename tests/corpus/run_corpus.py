@@ -58,6 +58,7 @@ STRANGER_SETS = {
     "stranger21": ("stranger21.yaml", "STRANGER set 21 (stranger21.yaml, HELD OUT: report aggregates only)"),
     "stranger22": ("stranger22.yaml", "STRANGER set 22 (stranger22.yaml, development material)"),
     "stranger23": ("stranger23.yaml", "STRANGER set 23 (stranger23.yaml, development material)"),
+    "stranger24": ("stranger24.yaml", "STRANGER set 24 (stranger24.yaml, development material, first run at the end of the seventeenth session)"),
 }
 SPLITS = HERE / "splits.yaml"
 
