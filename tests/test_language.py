@@ -3399,3 +3399,24 @@ def test_goal_framings_and_closings(text, expected):
 
 def test_either_order_leaves_the_tower_in_any_order():
     assert parse("A tower of two cubes, red and blue, in either order.").goal_summary == "a stack of red, blue in any order"
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a colour listed twice in a tower on a patch is two cubes (the tower had lost one, silently)
+    ("Stack red, red, blue on the green patch", ["on_patch(red,patch:green)", "stack(red,red,blue)"]),
+    ("Build a tower from bottom to top: pink, pink, pink, red on the orange goal patch", ["on_patch(pink,patch:orange)", "stack(pink,pink,pink,red)"]),
+])
+def test_a_colour_listed_twice_is_two_cubes(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "To do: tower of red and white, white on top; brown cube in the front right corner.",  # white's role, not a third cube
+    "Pile the two cyan blocks and the pink block on top of each other.",  # no order said (it had been read bottom to top)
+])
+def test_a_role_or_each_other_adds_no_cube_and_no_order(text):
+    try:
+        got = meaning(parse(text))
+    except BadInput:
+        return
+    assert "stack(red,white,white)" not in got and "stack(cyan,cyan,pink)" not in got

@@ -1923,12 +1923,14 @@ EDIT_KEEP_THEN_ADD_RE = re.compile(r"(?i)^.*?\bkeep(?:ing)?\s+(?:the|this|that)\
 clause after it."""
 
 EDIT_COUNT_ALONE_RE = re.compile(
-    r"(?i)\s*(?:(?:actually|ok(?:ay)?|fine|right|hmm+|so|too\s+(?:many|few))\s*[,.!]?\s*)*(?:let'?s\s+)?(?:go\s+with|try|use|make\s+(?:it|that)|how\s+about|maybe)?\s*"
+    r"(?i)\s*(?:(?:actually|ok(?:ay)?|fine|right|hmm+|so|too\s+(?:many|few)|undo\s+that|nah)\s*[,.!]?\s*)*(?:let'?s\s+)?"
+    r"(?:go\s+with|try|use|make\s+(?:it|that)|how\s+about|maybe|only|just)?\s*"
     rf"(\d+|{COUNT_WORD_RE})"
-    rf"(?:\s+(?P<color>{COLOR_RE}))?(?:\s+(?:blocks|cubes|bricks))?(?:\s+instead(?:\s+of\s+(?:\d+|{COUNT_WORD_RE}))?)?"
+    rf"(?:\s+(?P<color>{COLOR_RE}))?(?:\s+(?:blocks|cubes|bricks|high|tall))?(?:\s+instead(?:\s+of\s+(?:\d+|{COUNT_WORD_RE}))?)?"
     r"(?:\s+(?:please|pls|plz))?\s*[.!]?\s*")
 """An edit that is a count alone ("three", "let's go with 7 instead", "actually, three", "make that
-seven pink cubes pls"): the structure's count (a colour said with it must be the structure's own)."""
+seven pink cubes pls", "only two", "just two high"): the structure's count (a colour said with it must be the
+structure's own)."""
 
 EDIT_MORE_ALONE_RE = re.compile(
     rf"(?i)\s*(?:and\s+)?(\d+|{'|'.join(w for w in NUMBER_WORDS if w not in ('single', 'pair', 'couple', 'both', 'one'))})"

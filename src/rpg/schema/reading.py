@@ -1299,7 +1299,8 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     # the counted cubes, then the one on top (the count had reached only one of them)
     (re.compile(rf"\b(?:(?:build|make|create|form)\s+a\s+(?:{TOWER_NOUNS})\s+of|stack)\s+(?:the\s+)?(\d+)\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)"
                 r"\s*,?\s+(?:and|with|then)\s+(?:then\s+)?(?:(?:put|place|add|stack|set)\s+)?(?:a|an|the|1)\s+"
-                rf"({COLOR_RE})\s+(?:block|cube|brick|one)\s+(?:on\s+top|at\s+the\s+top)(?:\s+of\s+(?:it|them|the\s+(?:stack|tower)))?\b"),
+                rf"({COLOR_RE})\s+(?:block|cube|brick|one)\s+(?:on\s+top|at\s+the\s+top)(?:\s+of\s+(?:it|them|the\s+(?:stack|tower)))?\b"
+                r"(?!\s+of\s+(?:each\s+other|one\s+another))"),  # "... and the pink block on top of each other": no order said
      lambda m: "build a tower from bottom to top: " + ", ".join([m.group(2)] * int(m.group(1)) + [m.group(3)]), True),
     # "six cubes in one tower: two red at the bottom, two green in the middle, two blue at the top": three counted groups
     (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|ones))?\s+(?:at|on|in)\s+the\s+(?:bottom|base)"

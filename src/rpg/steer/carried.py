@@ -15,7 +15,16 @@ import re
 from collections import Counter
 from dataclasses import dataclass, replace
 
-from rpg.domain.predicates import AnchoredStack, And, InLayers, InRegion, UnorderedStack
+from rpg.domain.predicates import (
+    AnchoredStack,
+    And,
+    InLayers,
+    InRegion,
+    OnPatch,
+    Stack,
+    StackOnPatch,
+    UnorderedStack,
+)
 from rpg.errors import BadInput
 from rpg.schema.model import TaskSchema
 from rpg.schema.structures import STRUCTURE_WORDS, Item, TaskSpec, cube_list, extract, join_words
@@ -43,6 +52,9 @@ class Carried:
     layers: bool = False
     ends: frozenset[str] = frozenset()
     """The ends ("bottom", "top") of a stack in any order whose cube is said (``AnchoredStack``)."""
+    patch: str | None = None
+    """The colour of the goal patch a tower stands on (its bottom cube on it: ``OnPatch`` /
+    ``StackOnPatch``), or None."""
 
 
 def split(schema: TaskSchema) -> tuple[TaskSpec | None, Carried]:
@@ -67,6 +79,9 @@ def _split(schema: TaskSchema) -> tuple[TaskSpec | None, Carried]:
         return TaskSpec("tower", items, direction=None), Carried(ends=frozenset({"bottom"} if conj[0].bottom else {"top"}))
     regions = [p for p in conj if isinstance(p, InRegion)]
     layers = [p for p in conj if isinstance(p, InLayers)]
+    on_patch = [p for p in conj if isinstance(p, OnPatch)]
+    if on_patch:
+        return _split_on_patch(schema, conj, on_patch, regions or layers)
     if not regions and not layers:
         return extract(schema), Carried()
     rest = [p for p in conj if not isinstance(p, (InRegion, InLayers))]
@@ -82,6 +97,28 @@ def _split(schema: TaskSchema) -> tuple[TaskSpec | None, Carried]:
     if layers and not spec.kind.layered:
         return None, Carried()
     return spec, Carried(regions[0].region if regions else None, bool(layers))
+
+
+def _split_on_patch(schema: TaskSchema, conj: list, on_patch: list, other_modifiers: list) -> tuple[TaskSpec | None, Carried]:
+    """A tower standing on a goal patch ("Build a tower of three cubes on the purple patch"): the
+    tower's spec, and the patch's colour carried (its bottom cube on it, whichever cube that is
+    for a stack in any order).  (None, Carried()) for anything else: cubes on patches apart from
+    a tower, a tower with a region or layers as well."""
+    rest = [p for p in conj if not isinstance(p, OnPatch)]
+    if len(on_patch) != 1 or other_modifiers or len(rest) != 1 or not isinstance(rest[0], (Stack, UnorderedStack)):
+        return None, Carried()
+    tower, p = rest[0], on_patch[0]
+    if not (isinstance(p, StackOnPatch) and set(p.among) == set(tower.objects)) and not (
+            type(p) is OnPatch and type(tower) is Stack and p.a == tower.objects[0]):
+        return None, Carried()
+    bare = schema.model_copy(update={"goal": tower, "assets": [a for a in schema.assets if a.name != p.patch]})
+    spec = extract(bare)
+    color = next((a.color for a in schema.assets if a.name == p.patch), None)
+    if spec is None or spec.structure != "tower" or color is None:
+        return None, Carried()
+    if isinstance(tower, UnorderedStack):
+        spec = replace(spec, direction=None)
+    return spec, Carried(patch=color)
 
 
 def layers_of(spec: TaskSpec) -> list[list[str | None]]:
@@ -153,9 +190,9 @@ def _phrasings(spec: TaskSpec, carried: Carried, text: str) -> list[str]:
             raise BadInput("the builtin steering states a layer's cubes by colour only")
         text = text + _layer_clause(spec)
     bare = re.sub(r"\b(letter|digit) '([A-Z0-9])'", r"\1 \2", text)  # "letter 'D'": the parser reads 'd as "would"
-    if not carried.region:
+    if not carried.region and not carried.patch:
         return list(dict.fromkeys([text, bare]))
-    phrase = region_phrase(carried.region)
+    phrase = region_phrase(carried.region) if carried.region else f"on the {carried.patch} goal patch"
     words = "|".join(sorted(STRUCTURE_WORDS, key=len, reverse=True)) + "|cube|pyramid"
     noun = re.search(rf"\b(?:{words})s?\b", text)
     out = []

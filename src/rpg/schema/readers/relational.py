@@ -309,6 +309,12 @@ class RelationalReading:
         self.previous[:] = [self.obj(group[-1]), target]
 
 
+_LIST_GAP_RE = re.compile(r"\s*(?:,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+)\s*")
+"""What stands between two items of a listed tower ("red, red and blue", "red, then blue")."""
+
+_ROLE_AFTER_RE = re.compile(r"\s+(?:block\s+|cube\s+)?(?:on\s+top|at\s+the\s+(?:top|bottom|base)|on\s+the\s+bottom|in\s+the\s+middle)\b")
+"""A role said after a colour ("white on top"): the colour names a cube already listed, not one more."""
+
 STACK_WORD_RE = re.compile(r"\b(?:stack|stacks|stacked|tower|towers|pile up)\b")
 """Words that make a relational text a stacking one."""
 
@@ -358,6 +364,16 @@ def recognize_relational(f: Features, b: Builder) -> bool:
             names = [r.obj(ms[0], i) for i in range(n)]
         elif len(ms) > n and len({(m.color, m.label) for m in ms}) == len(ms):  # "a tower of red, green and blue"
             names = [r.obj(m) for m in ms]
+        elif stated_count(f, default=None) is None and len(ms) > 2 and all(m.count == 1 for m in ms) and all(
+                _LIST_GAP_RE.fullmatch(said[a.end:b.start]) for a, b in itertools.pairwise(ms)) and not any(
+                _ROLE_AFTER_RE.match(said, m.end) for m in ms):  # "a tower of red and white, white on top": a role, no third cube
+            # "stack red, red, blue on the green patch": each colour said is a cube, a colour said again another one
+            # (the repeated red had been the same cube: a tower of two)
+            seen: dict[tuple, int] = {}
+            names = []
+            for m in ms:
+                names.append(r.obj(m, seen.get((m.color, m.label), 0)))
+                seen[(m.color, m.label)] = seen.get((m.color, m.label), 0) + 1
         else:
             cube_colors = {m.color for m in mentions_in(said) if not m.patch}  # a patch's colour names no cube of the stack
             named = [c for c in dict.fromkeys(f.color_list()) if (c, None) not in r.subjects and c in cube_colors]
