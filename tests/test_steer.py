@@ -1524,3 +1524,16 @@ def test_a_tower_on_a_patch_in_any_order_stays_in_any_order(tmp_path):
     fam = Family(create_family(compile_instruction("Build a tower of three cubes on the purple patch.", tmp_path, name="fam").path).path)
     r = steer(fam.path, "make it four")
     assert fam.schema(r.version).goal_summary.startswith("a stack of red, blue, green, yellow in any order")
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # a chain of side relations edited as the order it states (it was "not a structure the builtin steering edits")
+    ("Put the green cube to the left of the red cube and the red cube to the left of the blue cube", ["reverse the order"],
+     ("modify", ["left_of(blue,red)", "left_of(red,green)"])),
+    ("Put the green cube to the left of the red cube and the red cube to the left of the blue cube",
+     ["now make it front to back instead of left to right"], ("modify", ["in_front_of(green,red)", "in_front_of(red,blue)"])),
+    ("Place the yellow cube to the left of the orange cube and the pink cube to the right of the orange cube", ["reverse it"],
+     ("modify", ["left_of(orange,yellow)", "left_of(pink,orange)"])),
+])
+def test_a_chain_of_relations_is_reversed_or_turned(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected

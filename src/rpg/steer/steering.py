@@ -18,6 +18,7 @@ hash) moves the head back to that version instead of duplicating it.
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections import Counter
 from dataclasses import dataclass, field, replace
@@ -272,6 +273,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     swapped = _swapped(plan, ref_schema) if ref_spec is None else None
     if swapped is not None:  # "swap yellow and red" of cubes in several relations: each takes the other's place
         return swapped
+    chained = _chain_edit(plan, ref_schema) if ref_spec is None else None
+    if chained is not None:  # "reverse the order" of green left of red left of blue: a chain read as its order
+        return chained
     if not plan.ops:
         if plan.cue.kind != "current":  # "go back to version 1": that version as it is, named by the change from the head
             return ref_schema, ref_schema.instruction, _change_from_head(fam, ref_schema)
@@ -406,6 +410,60 @@ def _swapped(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str, str] | N
     except BadInput as exc:
         raise SteerError(f"cannot swap the {a} and {b} cubes of the task: {str(exc).splitlines()[0]}") from None
     return schema, instruction, "modify"
+
+
+_CHAIN_WORDS = {"left_of": ("left_to_right", False), "right_of": ("left_to_right", True),
+                "in_front_of": ("front_to_back", False), "behind": ("front_to_back", True)}
+"""A side relation -> (the direction its chain is read in, whether the relation's object comes first)."""
+_CHAIN_PHRASE = {"left_to_right": ("to the left of", False), "right_to_left": ("to the left of", True),
+                 "front_to_back": ("in front of", False), "back_to_front": ("in front of", True)}
+"""A direction -> (the relation that states it, whether the order is stated from its far end)."""
+
+
+def _chain_order(ref: TaskSchema) -> tuple[list[str], str] | None:
+    """The cubes' colours in order and its direction when the goal is one chain of side relations
+    over three or more cubes of distinct colours ("green left of red, red left of blue": green, red,
+    blue left to right); None otherwise."""
+    from rpg.domain.predicates import PREDICATES
+    from rpg.schema.lexicon import PAIRWISE_RELATIONS
+
+    names = {PREDICATES[name]: name for name in PAIRWISE_RELATIONS}
+    parts = list(ref.goal_predicate().conjuncts())
+    kinds = [names.get(type(p)) for p in parts]
+    if len(parts) < 2 or any(k not in _CHAIN_WORDS for k in kinds) or len({_CHAIN_WORDS[k][0] for k in kinds}) != 1:
+        return None
+    direction = _CHAIN_WORDS[kinds[0]][0]  # "yellow left of orange, pink right of orange": one axis, either word
+    pairs = [(p.b, p.a) if _CHAIN_WORDS[k][1] else (p.a, p.b) for p, k in zip(parts, kinds, strict=True)]  # (earlier, later)
+    after = dict(pairs)
+    starts = set(after) - set(after.values())
+    if len(after) != len(pairs) or len(starts) != 1:
+        return None
+    order = [starts.pop()]
+    while order[-1] in after:
+        order.append(after[order[-1]])
+    colors = {a.name: a.color for a in ref.assets if a.kind == "colored_cube"}
+    if len(order) != len(pairs) + 1 or any(n not in colors for n in order) or len(set(colors[n] for n in order)) != len(order):
+        return None
+    return [colors[n] for n in order], direction
+
+
+def _chain_edit(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str, str] | None:
+    """A chain of side relations edited as the order it states: reversed ("reverse the order",
+    "flip it") or read in another direction ("now make it front to back instead of left to right",
+    the order kept).  None when the edit is not only that or the task is no such chain."""
+    chain = _chain_order(ref)
+    if chain is None or not plan.ops or any(o.op not in ("reverse", "direction") for o in plan.ops) or len(plan.ops) > 1:
+        return None
+    order, direction = chain
+    op = plan.ops[0]
+    if op.op == "reverse":
+        order = order[::-1]
+    else:
+        direction = op.params["to"]
+    phrase, from_far_end = _CHAIN_PHRASE[direction]
+    seq = order[::-1] if from_far_end else order
+    instruction = "Put " + " and ".join(f"the {a} block {phrase} the {b} block" for a, b in itertools.pairwise(seq))
+    return parse(instruction), instruction, "modify"
 
 
 def _change_from_head(fam: Family, schema: TaskSchema) -> str:
