@@ -2,6 +2,8 @@
 rpg.schema.clauses, rpg.schema.accounting). Language written by people is tested in
 test_corpus.py; these pin down the mechanisms."""
 
+import re
+
 import numpy as np
 import pytest
 
@@ -3420,3 +3422,37 @@ def test_a_role_or_each_other_adds_no_cube_and_no_order(text):
     except BadInput:
         return
     assert "stack(red,white,white)" not in got and "stack(cyan,cyan,pink)" not in got
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a hostile tester's silent errors (seventeenth session), now read as said
+    ("Put the green cube on the wite cube.", ["stack(white,green)"]),  # a typo in a colour's slot is a colour ("write" before)
+    ("Put the cian cube left of the blue cube.", ["left_of(cyan,blue)"]),  # ("can": the cube had become red)
+    ("Stack wite, blue, green from bottom to top.", ["stack(white,blue,green)"]),  # (the white cube had gone)
+    ("Build a tower: the top is red, then blue, then green.", ["stack(green,blue,red)"]),  # listed from the top
+    ("Make a tower of red, blue, green where blue is highest", ["stack(red,green,blue)"]),  # (a fourth cube, blue, before)
+    ("Make a row of red, blue and green, red first, from left to right", ["line[left_to_right](red,blue,green)"]),
+    ("Line up red, green and blue in that order.", ["line[sequence](red,green,blue)"]),  # the order had been dropped
+    ("Make a pile of red and blue and a pile of green.", ["piles(red,blue,green;by=None)"]),  # two piles (one before)
+])
+def test_attack_silent_errors_read_as_said(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,words", [
+    ("Put the pick cube on the white cube.", "'pick' stands where a cube's colour"),
+    ("Put red on blue, or on green.", "'or' offers alternatives"),
+    ("Stack red on blue or green on yellow.", "'or' offers alternatives"),  # (both stacks before)
+    ("Put the red cube, which is currently on blue, on the table.", "which is currently on"),  # (red on blue before)
+    ("Red is on blue. Reverse the tower.", "turns around"),
+    ("Build a tower of red, blue, green, yellow with red second from the top.", "rank from an end"),  # (a 5th cube)
+    ("Make a row of red, blue and green, blue first, from left to right", "does not start with"),
+    ("Stack the red cube on top of the tower.", "tower the instruction has not described"),  # (3 cubes made up)
+    ("Stack two cubes of the same colour.", "share a colour"),
+    ("Put the blue green cube on the white cube.", "one cube by two colours"),
+    ("Put red, green, blue in a circle in that order.", "orders the cubes of a circle"),
+    ("Put red, blue, green, yellow into two piles.", "say which cubes go in each pile"),  # (12 cubes before)
+])
+def test_attack_silent_errors_refused(text, words):
+    with pytest.raises(BadInput, match=re.escape(words)):
+        parse(text)

@@ -208,6 +208,13 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                  r"(?!put|place|stack|move|build|make|arrange|set|line|lay|slide|push|bring|spell|sort|stand|swap|please|tell|show|give)[a-z]+\b(?=[^.!;]*\?)",
      "asks a question: a task is an instruction whose goal says where cubes end up; ask for the arrangement "
      "instead (e.g. \"put the red block on the blue block\")"),
+    ("same_colour", r"\b(?:(?:blocks?|cubes?|bricks?|ones)\s+(?:of|in|with)\s+(?:the\s+)?same\s+colou?r|(?:all|both)\s+(?:of\s+(?:them|the\s+"
+                 r"(?:cubes|blocks))\s+)?(?:in\s+)?(?:the\s+)?same\s+colou?r)\b",  # ("group the same coloured blocks": piles by colour)
+     "asks that cubes share a colour nobody names: a task's cubes are known by their colours, so say the colour (e.g. "
+     "\"stack two red cubes\")"),
+    ("alternative", r"(?<!\bmore\s)(?<!\bsir\s)\bor\b(?!\s+(?:so|less|madam)\b)",
+     "offers alternatives: a task has one goal, checked at the end of the episode; say one end state (e.g. \"put the red "
+     "block on the blue block\")"),
     ("no_goal", ROBOT_ONLY_RE,
      "moves only the robot (its gripper, arm or hand), which leaves no goal for the cubes: a task's goal says where "
      "cubes end up; say where a cube should go (e.g. \"put the red block on the blue patch\")"),
@@ -284,6 +291,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"(?:is|was|sits|stands|rests|lies)\s+(?:on|in|under|beneath|below|next\s+to|beside|behind|near)\b"
                   r"|,\s*(?:which|that)\s+(?:is|are|was|were)\s+(?:currently\s+|now\s+|already\s+)?(?:next\s+to|beside|near|behind"
                   r"|in\s+front\s+of|(?:to\s+the\s+)?(?:left|right)\s+of)\b"
+                  # "the red cube, which is currently on blue, ...": where it stands now (it had been read as the goal)
+                  r"|,\s*(?:which|that)\s+(?:is|are|was|were)\s+(?:currently|now|already|still)\s+(?:(?:sitting|lying|resting|standing"
+                  r"|stacked|placed)\s+)?(?:on|on\s+top\s+of|under|underneath|in|inside|at)\b"
                   # "take the block from the green patch": a cube picked by where it stands now
                   r"|\b(?:take|move|pick|grab|lift|remove|get|bring|slide|push)\s+(?:up\s+)?the\s+(?:[a-z]+\s+){0,2}?(?:blocks?|cubes?|box"
                   r"|boxes|bricks?|ones?)\s+(?:up\s+)?from\s+(?:the\s+|its\s+|their\s+)",
@@ -357,6 +367,17 @@ copy one side part level
 """.split())
 """Nouns that name no object: an unknown word among these is not refused as a missing object
 (the parser says it could not read it instead)."""
+
+CUBE_MODIFIERS: frozenset[str] = frozenset("""
+letter letters digit digits number numbers numeral word lettered labelled labeled marked numbered coloured colored
+top bottom middle centre center left right front back rear base upper lower leftmost rightmost topmost bottommost
+uppermost lowest highest first second third fourth fifth sixth last final next other same single only remaining spare
+extra new goal target matching respective own whole one another every each both all any empty
+""".split())
+"""Known words that may stand between an article and a cube or patch noun without being its colour or
+label ("the top cube", "the other block", "the goal patch"); any other word of the lexicon there
+("the pick cube") stands where a colour does and is refused, not dropped (the cube had taken a
+default colour, silently)."""
 
 UNKNOWN_OBJECT = ("object", "names an object the domain does not have: it has only 5 cm cubes (coloured, "
                   "optionally labelled) and flat coloured patches on the table")
@@ -761,6 +782,18 @@ the blue cube to its left", "... on the right side and the green one beside it")
 one cube of the clause before (a region is no cube), so it is written as that cube."""
 
 _COLOR_WORD = "(?:" + "|".join(COLORS) + ")"
+END_ROLE_WORD_RE = re.compile(rf"\s*,?\s*(?:with|where|and)\s+(?:the\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:is\s+|being\s+)?"
+                              r"(?:the\s+)?(?P<w>lowest|bottommost|highest|topmost|uppermost)(?:\s+(?:one|cube|block))?\b")
+"""A cube's end of a tower said by a superlative ("with red lowest", "where blue is highest"): read as
+"with the red cube at the bottom" / "on top" (each had been read as one more cube of that colour)."""
+
+INNER_POSITION_RE = re.compile(rf"\b(?:with|where|and)\s+(?:the\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:is\s+|being\s+)?(?:the\s+)?"
+                               r"(?P<w>(?:second|third|fourth|fifth|2nd|3rd|4th|5th)\s+(?:one\s+)?from\s+the\s+(?:top|bottom|left|right|front"
+                               r"|back|end)|next[\s-]to[\s-]last|second[\s-]to[\s-]last|penultimate)\b")
+"""A cube's place inside a structure said by its rank from an end ("with red second from the top"):
+refused, naming it (it had been read as one more cube of that colour); a structure said role by
+role ("the bottom one is green, the second from the bottom is yellow, ...") is read elsewhere."""
+
 PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "The cube orange must stay on the patch purple", "yellow stays at the left of orange": where it is at the end
     (re.compile(r"\b(must|should|has\s+to|have\s+to|needs?\s+to|will)\s+(?:to\s+)?(?:stay|remain)\b"), r"\1 be"),

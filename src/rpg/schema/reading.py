@@ -159,7 +159,10 @@ def _refuse_unresolved_pronoun(text: str, original: str) -> None:
                                 "speaker sees, or one from an earlier turn): rpg's cubes are known only by colour "
                                 "and label; name them (e.g. \"stack the red and blue blocks\")", original)
     for m in lexicon.DEFINITE_STRUCTURE_RE.finditer(text):
-        if not lexicon.STRUCTURE_INTRO_RE.search(text[:m.start()]):
+        # "stack the red cube on top of the tower": the verb that places a cube on the structure describes no structure
+        before = re.sub(r"\b(?:stack|put|place|set|move|pile)\s+(?:the\s+|a\s+|an\s+)?(?:[a-z]+\s+){0,2}?(?:block|cube)s?\s+"
+                        r"(?:on|onto|on\s+top|at\s+the\s+top|next\s+to|beside|behind|near|in\s+front)?\s*$", "", text[:m.start()])
+        if not lexicon.STRUCTURE_INTRO_RE.search(before):
             raise Inexpressible("reference", [m.group(0)], f"refers to a {m.group('noun')} the instruction has not "
                                 "described (one the speaker sees, or from an earlier turn): describe it (e.g. \"build a "
                                 "tower of the red and green blocks, then put the blue block on top of it\")", original)
@@ -171,6 +174,11 @@ def _refuse_unresolved_pronoun(text: str, original: str) -> None:
                                 "the structure it stands in first (e.g. \"build a tower of three blocks and make the "
                                 "top block red\")", original)
     order = lexicon.THIS_ORDER_RE.search(text)
+    unordered = re.search(r"\b(?:circle|ring|grid|piles?|group|cluster|square)s?\b", text) if order else None
+    if unordered:  # "put red, green, blue in a circle in that order": the order had been dropped
+        raise ParseError(f"'{order.group(0)}' in \"{original[:80]}\" orders the cubes of a {unordered.group(0)}, which the "
+                         "builtin parser reads with no order of its cubes; say the places another way (e.g. a row from left "
+                         "to right), or use --model")
     listed = len(color_mentions(text)) + len(re.findall(r"\b(?:letter|digit)\s+\w\b|'\w'|\b\d\b", text))
     if order and listed < 2 and not re.search(r"\b[A-Z]{2,}\b|['\"][A-Za-z0-9]{2,}['\"]", original):  # "spell ABC in that order"
         raise Inexpressible("reference", [order.group(0)], "refers to an order the instruction does not list (one the "
@@ -426,7 +434,8 @@ invented)."""
 
 
 LATE_REVERSAL_RE = re.compile(
-    r"[.!;]\s+(?P<said>(?:(?:then|actually|now|and|oh|wait|sorry)\s*,?\s+)*(?:reverse(?:d)?(?:\s+(?:it|them|that|the\s+order))?"
+    r"[.!;]\s+(?P<said>(?:(?:then|actually|now|and|oh|wait|sorry)\s*,?\s+)*(?:reverse(?:d)?(?:\s+(?:it|them|that|the\s+order"
+    r"|the\s+(?:tower|stack|row|line|word|sequence)))?|(?:put|arrange|place|stack|set)\s+(?:it|them)\s+in\s+(?:the\s+)?reverse(?:d)?\s+order"
     r"|backwards?|in\s+reverse|the\s+other\s+way\s+(?:round|around)|(?:the\s+)?other\s+way\s+(?:round|around)|vice\s+versa"
     r"|flip(?:ped)?(?:\s+(?:it|them|that))?|mirror(?:ed)?(?:\s+(?:it|them|that))?|(?:in\s+)?(?:the\s+)?opposite\s+order"
     r"|upside[\s-]+down))\s*[.!]?\s*$")
@@ -910,6 +919,10 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                   lambda m: m.group(0) if m.group(2) in ("one", "1") else  # "the top one is red": the top cube's rule
                   f"{lexicon.NUMBER_WORDS.get(m.group(2), m.group(2))} {m.group(3)} cubes "
                   + {"bottom": "on the bottom", "lowest": "on the bottom", "top": "on top"}.get(m.group(1), "in the middle"), text)
+    two_colours = re.search(rf"\b(?:the|a|an)\s+((?:{COLOR_RE})\s+(?:{COLOR_RE}))\s+(?:block|cube|one)\b(?!s)", text)
+    if two_colours and len(set(two_colours.group(1).split())) == 2:  # "put the blue green cube on ...": one cube, two colours
+        raise ParseError(f"'{two_colours.group(0)}' in \"{original[:80]}\" names one cube by two colours; say which colour it "
+                         "is, or list the cubes (\"the blue and the green cube\"), or use --model")
     # "blue blue red red", "red blue red blue": a transcript's list of cubes with no commas, a colour
     # said again for each cube; "the red red block" is one cube (a stutter)
     text = re.sub(rf"(?P<det>\b(?:the|a|an)\s+)?\b(?P<run>(?:{COLOR_RE})(?:\s+(?:{COLOR_RE}))+)\b(?P<noun>\s+(?:block|cube|one)\b)?",
@@ -930,6 +943,25 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         before = {c for c in re.findall(rf"\b({COLOR_RE})\s+(?:goal\s+)?(?:patch|pad|mat|tile|area)\b", text[:m.start()])}
         if len(before) == 1:
             text = text[:m.start()] + f"the {before.pop()} patch" + text[m.end():]
+    if re.search(r"\b(?:rows?|lines?|line\s+up)\b", text):  # "a row of red, blue and green, red first, from left to right"
+        said_first = re.search(rf"\s*,\s*(?:with\s+)?(?:the\s+)?({COLOR_RE})(?:\s+(?:cube|block|one))?\s+first\b(?=\s*(?:[,.;!]|$))", text)
+        listed_first = re.search(rf"\b({COLOR_RE})\b", text)
+        if said_first and listed_first and said_first.start() > listed_first.end():
+            if said_first.group(1) != listed_first.group(1):  # another cube first than the list's: which order holds?
+                raise ParseError(f"'{said_first.group(1)} first' in \"{original[:80]}\" puts first a cube the list does not "
+                                 "start with; say the order once, or use --model")
+            text = text[:said_first.start()] + text[said_first.end():]  # said again: the list's first (it had been a 4th cube)
+    # "Build a tower: the top is red, then blue, then green": listed from that end (it had been read bottom first)
+    text = re.sub(rf"\b(?:the\s+)?(top|bottom|base)(?:\s+(?:one|cube|block))?\s+(?:is|:)\s+((?:{COLOR_RE})(?:\s*(?:,\s*(?:and\s+)?(?:then\s+)?"
+                  rf"|\s+(?:and\s+)?then\s+)(?:{COLOR_RE}))+)\b(?!\s+(?:on|at|in)\b)",
+                  lambda m: f"from {'top to bottom' if m.group(1) == 'top' else 'bottom to top'}: {m.group(2)}", text)
+    text = lexicon.END_ROLE_WORD_RE.sub(lambda m: f" with the {m.group('c')} cube "
+                                        + ("at the bottom" if m.group("w") in ("lowest", "bottommost") else "on top"), text)
+    inner = lexicon.INNER_POSITION_RE.search(text)
+    if inner:
+        raise ParseError(f"'{inner.group('c')} {inner.group('w')}' in \"{original[:80]}\" places a cube inside the structure by its "
+                         "rank from an end, which the builtin parser reads only as part of the whole order said role by role; "
+                         "list the whole order (e.g. \"from bottom to top: blue, red, green\"), or use --model")
     for pattern, written in lexicon.PLACE_REWRITES:  # patches, pairs, the table's centre and sides
         text = pattern.sub(written, text)
     text = lexicon.REGION_ANTECEDENT_RE.sub(  # "the red cube in the center and the blue cube to its left": left of red
@@ -1058,8 +1090,14 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         if lemma is not None:  # an inflection of a known word: "built" -> build, "constructs" -> build
             fixed[w] = lemma if lemma in VOCAB else lexicon.PLACEMENT_VERBS[lemma]
             continue
-        match = _transposition(w) or (process.extractOne(w, list(VOCAB) + COLORS, scorer=fuzz.ratio, score_cutoff=84)
-                                       if len(w) >= 4 else None)  # "purpel", "rigth": two letters swapped
+        slot = re.search(rf"(?<![\w-]){re.escape(w)}\s+(?:cubes?|blocks?|bricks?|patch(?:es)?|ones?|goal\s+patch)\b"
+                         rf"|(?<![\w-]){re.escape(w)}\s*,\s*(?:{COLOR_RE})\b|\b(?:{COLOR_RE})\s*,\s*{re.escape(w)}(?![\w-])", text)
+        if slot and len(w) >= 3:  # "the wite cube", "cian, blue": a colour's slot, so a colour or nothing ("write", "can" before)
+            match = _transposition(w) or process.extractOne(w, COLORS, scorer=fuzz.ratio, score_cutoff=72)
+            match = match if match and match[0] in COLORS else None
+        else:
+            match = _transposition(w) or (process.extractOne(w, list(VOCAB) + COLORS, scorer=fuzz.ratio, score_cutoff=84)
+                                           if len(w) >= 4 else None)  # "purpel", "rigth": two letters swapped
         if match and lexicon.is_dictionary_word(w) and not w.startswith(match[0]):
             match = None  # a real word is never "corrected" into another ("bring" is not "ring"); "vertically" -> "vertical"
         if match:
@@ -1125,6 +1163,13 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                          f"or '{run_on.group('a')} and {run_on.group('b')}', or use --model")
     for w, r in fixed.items():
         text = re.sub(rf"\b{re.escape(w)}\b", r, text)
+    for m in re.finditer(r"\b(?:the|a|an)\s+([a-z]{2,})\s+(?:cube|block|brick)\b", text):
+        w = m.group(1)  # "put the pick cube on the white cube": a cube set apart by a word that is no colour, among coloured ones
+        if strict and w in VOCAB and w not in COLORS and w not in lexicon.CUBE_MODIFIERS and w not in NUMBER_WORDS \
+                and w not in lexicon.IGNORABLE | lexicon.IGNORABLE_MORE \
+                and re.search(rf"\b(?:{COLOR_RE})\s+(?:cube|block|brick)\b", text):  # ("the wooden block": a filler, no colour said)
+            raise ParseError(f"'{m.group(0)}' in \"{original[:80]}\": '{w}' stands where a cube's colour or label does, but is "
+                             "neither; name the colour (e.g. \"the white cube\"), or use --model")
     text = re.sub(r"\bvertical (?:column|stack)\b|\bpillar\b", "tower", text)
     text = re.sub(r"\bcolumn(s?)\b(?=.*\b(?:front\s+to\s+back|back\s+to\s+front|left\s+to\s+right|right\s+to\s+left)\b)",
                   r"line\1", text)  # "a column of three cubes going from front to back" lies along the table

@@ -48,6 +48,7 @@ from rpg.schema.lexicon import (
     LISTED_ROW_LAYER,
     LISTED_ROW_RE,
     ORDER_WORDS,
+    THIS_ORDER_RE,
     TOWER_NOUNS,
 )
 from rpg.schema.readers.common import (
@@ -466,6 +467,16 @@ def recognize_piles(f: Features, b: Builder) -> bool:
         return False
     material = material_of(f)
     groups: list[list[str]] = []
+    each_said = list(_PILE_OF_RE.finditer(f.text))
+    if len(each_said) >= 2:  # "a pile of red and blue and a pile of green": each pile's cubes said (they had merged into one)
+        groups = [[b.cube(canon_color(c)) for c in re.findall(rf"\b(?:{COLOR_RE})\b", m.group("list"))] for m in each_said]
+        centers = b.unit_centers(len(groups), 0.16)
+        b.place(cluster_layout(groups, centers))
+        b.preds.append(Piles(groups=tuple(tuple(g) for g in groups)))
+        b.summary.append(f"{len(groups)} separate piles: " + "; ".join(", ".join(g) for g in groups))
+        b.primitives += ["arrange"]
+        b.min_separation = 0.06
+        return True
     if material == "mixed" or f.has("type", "types", "kind"):
         labels_l, _ = label_sequence("letters", 3, b, ordered=False)
         labels_d, _ = label_sequence("digits", 3, b, ordered=False)
@@ -483,6 +494,11 @@ def recognize_piles(f: Features, b: Builder) -> bool:
         if k is None and not several and _one_pile(f, b, strict=False):  # "pile four cubes": one pile of them
             return True
         colors = list(dict.fromkeys(f.color_list())) or colors_for(k or 3, f, prefer=[])
+        if k is not None and not per_color and f.color_list() and k != len(colors):
+            # "put red, blue, green, yellow into two piles": which cubes go together is not said (it had made a pile of
+            # three cubes for each colour: twelve cubes, four piles)
+            raise ParseError(f"\"{f.original[:80]}\" asks for {k} piles of cubes of {len(colors)} colours; say which cubes go "
+                             "in each pile (e.g. \"a pile of red and blue and a pile of green\"), or use --model")
         per = stated_count(f, default=None)
         per = max(2, per // len(colors)) if per else PILE_UNSAID_COUNT
         groups = [[b.cube(c) for _ in range(per)] for c in colors]
@@ -507,6 +523,12 @@ def recognize_piles(f: Features, b: Builder) -> bool:
     b.primitives += ["arrange"]
     b.min_separation = 0.06
     return True
+
+
+_PILE_OF_RE = re.compile(rf"\b(?:a|one|another|the\s+other|a\s+second|a\s+third)\s+(?:pile|heap|group|cluster|bunch)\s+of\s+(?:the\s+)?"
+                         rf"(?P<list>(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?))?(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+)(?:the\s+)?(?:{COLOR_RE})"
+                         rf"(?:\s+(?:cubes?|blocks?))?(?!\s+(?:pile|heap|group|cluster|bunch)))*)")
+"""One pile's cubes said with it ("a pile of red and blue", "another pile of green"): each colour one cube."""
 
 
 def _one_pile(f: Features, b: Builder, strict: bool = True) -> bool:
@@ -647,7 +669,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
     if not explicit and not order and listed and not alternating:
         seq = re.findall(rf"\b(?:{COLOR_RE})\b", listed.group(1))
         if re.search(r"\b(?:left to right|right to left|front to back|back to front)\b", f.text) or \
-                len(set(seq)) < len(seq):  # "red, blue, red, blue": a repeated colour only makes sense as an order
+                len(set(seq)) < len(seq) or THIS_ORDER_RE.search(f.text):
+            # "red, blue, red, blue": a repeated colour only makes sense as an order; "red, green and blue in that order": said
             explicit = listed
     if alternating and not explicit:
         explicit = re.search(r"(.+)", ", ".join(alternating))
