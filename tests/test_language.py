@@ -3456,3 +3456,22 @@ def test_attack_silent_errors_read_as_said(text, expected):
 def test_attack_silent_errors_refused(text, words):
     with pytest.raises(BadInput, match=re.escape(words)):
         parse(text)
+
+
+@pytest.mark.parametrize("text", [
+    # a relation said between two named cubes must be in the goal: "on the blue cube" had been dropped into a row of four
+    "Make a row of red, blue and green and put the yellow cube on the blue cube.",
+    "Make a row of red, blue, green. Put the yellow cube on the blue cube.",
+])
+def test_a_relation_between_two_named_cubes_is_never_dropped(text):
+    with pytest.raises(ParseError, match="relates two cubes that task does not relate"):
+        parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("Put the digits 7, 3, 5 in a row in reverse order left to right.", ["line[left_to_right](5,3,7)"]),  # ("reverse" dropped)
+    ("Line up red, green and blue in reverse order from left to right.", ["line[left_to_right](blue,green,red)"]),
+    ("Stack red on blue and put the yellow cube next to the green cube.", ["next_to(green,yellow)", "stack(blue,red)"]),
+])
+def test_reverse_order_and_kept_relations(text, expected):
+    assert meaning(parse(text)) == expected

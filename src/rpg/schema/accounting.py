@@ -643,6 +643,40 @@ def check_mentions(instruction: str, schema: TaskSchema) -> list[dict]:
         for w, like in dropped]
 
 
+PAIR_RELATION_RE = re.compile(
+    rf"\bthe\s+(?P<a>{COLOR_RE})\s+(?:block|cube|one)\s+(?:(?:is|goes|sits|should\s+be|must\s+be)\s+)?(?P<rel>on\s+top\s+of|onto|on|next\s+to|beside|behind|in\s+front\s+of"
+    rf"|(?:to\s+the\s+)?left\s+of|(?:to\s+the\s+)?right\s+of|under|far\s+from)\s+the\s+(?P<b>{COLOR_RE})\s+(?:block|cube|one)\b")
+"""A relation said between two cubes named by colour ("... and put the yellow cube on the blue cube",
+"the red cube should be next to the blue cube"): :func:`_pair_relation_dropped` checks the goal relates the two."""
+
+_PAIR_CARRIERS = {"on": (P.Stack, P.UnorderedStack, P.AnchoredStack), "under": (P.Stack, P.UnorderedStack, P.AnchoredStack)}
+"""Goal predicates that carry "on"/"under" between two cubes; every other relation word needs a
+pairwise relation or :class:`~rpg.domain.predicates.Between` of the two."""
+
+
+def _pair_relation_dropped(f: Features, schema: TaskSchema, cubes: list) -> ParseError | None:
+    """A ParseError when the instruction says "put the X cube REL the Y cube" of two cubes, each the
+    one of its colour, and no goal predicate relates the two: "make a row of red, blue and green and
+    put the yellow cube on the blue cube" had become a row of four (the relation dropped)."""
+    parts = list(schema.goal_predicate().conjuncts())
+    if schema.initial_state.structures:
+        return None  # "Initially the red cube is on the blue cube": how the cubes start, not the goal
+    for m in PAIR_RELATION_RE.finditer(f.text):
+        a, b = canon_color(m.group("a")), canon_color(m.group("b"))
+        named = {c: [x.name for x in cubes if x.color == c] for c in (a, b)}
+        if a == b or any(len(v) != 1 for v in named.values()):
+            continue
+        pair = {named[a][0], named[b][0]}
+        rel = "on" if m.group("rel").startswith("on") else "under" if m.group("rel") == "under" else "side"
+        carriers = _PAIR_CARRIERS.get(rel, (P.Between,))
+        held = any(pair <= set(p.object_names()) and (isinstance(p, carriers) or (rel == "side" and len(set(p.object_names())) == 2))
+                   for p in parts)
+        if not held:
+            return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group(0)}' relates two cubes "
+                              "that task does not relate. Rephrase (one sentence per structure helps), or use --model")
+    return None
+
+
 def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     """The first word or mention of the instruction that ``schema`` has no place for, as the
     ParseError to raise; None when every label, colour, count, patch, place and relation is in it."""
@@ -663,6 +697,9 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
             return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group(0)}' gives a cube a "
                               "place at one end and that task orders none of it (say the whole order, e.g. \"from left to "
                               "right: blue, green, red\"), or use --model")
+    dropped = _pair_relation_dropped(f, schema, cubes)
+    if dropped is not None:
+        return dropped
     stacks = [p.objects for p in schema.goal_predicate().walk() if type(p) is P.Stack]
     for m in TOWER_END_SAID_RE.finditer(f.text):  # "stack yellow on pink, with the pink cube on top": which is on top?
         colour = canon_color(m.group("c") or m.group("c2"))

@@ -566,6 +566,9 @@ def _one_pile(f: Features, b: Builder, strict: bool = True) -> bool:
     return True
 
 
+_REVERSE_LIST_RE = re.compile(r"\bin\s+(?:the\s+)?(?:reverse(?:d)?|opposite|backwards?)\s+order\b")
+"""A list said to be read backwards ("in reverse order"), with no sort key that the ordering reads."""
+
 _END_ROLE_RE = re.compile(rf"\b(?P<c>{COLOR_RE})(?:\s+(?:block|cube|one))?\s+(?:(?:is|goes|sits|stands|being|should\s+be|must\s+be)\s+)?"
                           r"(?:(?:on|at|to|in)\s+the\s+(?:far\s+|very\s+)?(?P<side>left|right|middle|center|centre)(?:\s+(?:end|side))?"
                           r"|(?<=is\s)(?P<side2>left|right))\b(?!\s+(?:of|half|part|corner|edge)\b)")
@@ -690,6 +693,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         b.summary.append(f"cubes in a line {direction.replace('_', ' ')}: {', '.join(names)}")
     elif explicit:
         colors = [canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", explicit.group(1))]
+        if _REVERSE_LIST_RE.search(f.text):  # "line up red, green and blue in reverse order": the list read backwards
+            colors = colors[::-1]
         names = [b.cube(c) for c in colors]
         b.place(directed_line(names, direction))
         if direction_stated(f) or by_roles:
@@ -704,6 +709,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
             labels = list(re.sub(r"[\s,]", "", reads.group(1)).upper())
         elif order:  # the listed labels are the set; the ordering arranges them
             labels = sorted(labels, key=lambda lab: (not lab.isdigit(), lab), reverse=order[1])
+        elif _REVERSE_LIST_RE.search(f.text):  # "the digits 7, 3, 5 in a row in reverse order": the list read backwards
+            labels = labels[::-1]
         names = [b.semantic(lab) for lab in labels]
         b.place(directed_line(names, direction))
         said_as_word = bool(reads or READ_WORDS_RE.search(f.text))
