@@ -3475,3 +3475,24 @@ def test_a_relation_between_two_named_cubes_is_never_dropped(text):
 ])
 def test_reverse_order_and_kept_relations(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a second hostile tester's silent errors: lists from the top, roles said by colon
+    ("Stack red, green, blue from the top down.", ["stack(blue,green,red)"]),
+    ("Tower (top first): red, green, blue.", ["stack(blue,green,red)"]),
+    ("Stack A, B, C, top down.", ["stack(C,B,A)"]),
+    ("Make a tower. Top: red. Middle: green. Bottom: blue.", ["stack(blue,green,red)"]),  # (red at the bottom before)
+    ("Three-cube tower. Base: grey. Middle: pink. Top: cyan.", ["stack(gray,pink,cyan)"]),
+])
+def test_lists_from_the_top_and_colon_roles(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,words", [
+    ("Build a tower with green between red and blue.", "stacked on each other"),  # (red on blue, green beside: before)
+    ("Red on top, green in the middle, blue on the bottom.", "green cube(s) it names have no"),  # (green at the table's centre)
+])
+def test_between_or_middle_of_a_tower_said_loosely_is_refused(text, words):
+    with pytest.raises(ParseError, match=re.escape(words)):
+        parse(text)

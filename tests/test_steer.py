@@ -1537,3 +1537,22 @@ def test_a_tower_on_a_patch_in_any_order_stays_in_any_order(tmp_path):
 ])
 def test_a_chain_of_relations_is_reversed_or_turned(tmp_path, base, edits, expected):
     assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # a second hostile tester's steering silent errors
+    ("Put the red cube to the left of the blue cube", ["make it a tower with blue on top"], ("pivot", ["stack(red,blue)"])),
+    ("Build a tower of red, green and blue from bottom to top", ["make the red one blue and the blue one red"],
+     ("modify", ["stack(blue,green,red)"])),  # (both had become red)
+])
+def test_second_attack_steering(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+def test_a_structure_with_a_role_is_not_read_as_a_recolour(tmp_path):
+    """"make it a tower with red on top" of a tower in any order had turned every cube red."""
+    from rpg.errors import BadInput
+
+    fam = Family(create_family(compile_instruction("Make a tower of red, green and blue in any order", tmp_path, name="fam").path).path)
+    with pytest.raises(BadInput):
+        steer(fam.path, "make it a tower with red on top")

@@ -700,6 +700,13 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     dropped = _pair_relation_dropped(f, schema, cubes)
     if dropped is not None:
         return dropped
+    walk = list(schema.goal_predicate().walk())
+    for btw in (p for p in walk if isinstance(p, P.Between)):
+        if any({btw.b, btw.c} <= set(st.objects) for st in walk if isinstance(st, (P.Stack, P.UnorderedStack))):
+            # "build a tower with green between red and blue": red had gone on blue, green beside them (a row's between)
+            return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{btw.a} between {btw.b} and {btw.c}' "
+                              f"cannot hold with {btw.b} and {btw.c} stacked on each other; say the tower from bottom to top "
+                              "(e.g. \"from bottom to top: red, green, blue\"), or use --model")
     stacks = [p.objects for p in schema.goal_predicate().walk() if type(p) is P.Stack]
     for m in TOWER_END_SAID_RE.finditer(f.text):  # "stack yellow on pink, with the pink cube on top": which is on top?
         colour = canon_color(m.group("c") or m.group("c2"))

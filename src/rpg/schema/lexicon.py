@@ -1599,6 +1599,12 @@ def names_a_role(before: str, text: str) -> bool:
                 or (LAYER_LIST_BEFORE.search(before) and LAYERED_TEXT.search(text)))
 
 
+TOP_ROLE_SAID_RE = re.compile(rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:is\s+|goes\s+)?(?:on\s+top|at\s+the\s+top)\b(?!\s+of\b)")
+BOTTOM_ROLE_SAID_RE = re.compile(rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:is\s+|goes\s+)?(?:on|at)\s+the\s+(?:bottom|base)\b(?!\s+of\b)")
+"""A tower's two ends each given a cube ("red on top, ..., blue on the bottom"): then "in the middle" is the
+middle of that tower, not of the table (:func:`rpg.schema.reading.mark_regions`; "in the centre" stays a place)."""
+
+
 SORT_END_WORD = r"(?:largest|biggest|greatest|highest|smallest|lowest|larger|bigger|greater|higher|smaller)"
 """A label sort's end said by its largest or smallest label ("the biggest number", "smallest"; of
 two, "the larger number")."""

@@ -951,6 +951,17 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                 raise ParseError(f"'{said_first.group(1)} first' in \"{original[:80]}\" puts first a cube the list does not "
                                  "start with; say the order once, or use --model")
             text = text[:said_first.start()] + text[said_first.end():]  # said again: the list's first (it had been a 4th cube)
+    # "Stack red, green, blue from the top down", "Tower (top first): ...": a list from the top
+    text = re.sub(r"\b(?:from\s+the\s+top(?:\s+down(?:wards?)?)?|from\s+top\s+down|top[\s-]+down|top\s+first|starting\s+(?:from|at|with)"
+                  r"\s+the\s+top)\b(?!\s+(?:of|left|right)\b)", "from top to bottom", text)
+    # "Make a tower. Top: red. Middle: green. Bottom: blue.": each role's cube, whatever order the roles are said in (the
+    # colours had been read as a list from the bottom, red at the bottom)
+    said = list(re.finditer(rf"(?<!\bto\s)\b(top|middle|bottom|base)\s*[:=]\s*({COLOR_RE})\b(?!\s*,\s*(?:{COLOR_RE}))", text))
+    roles = {("bottom" if m.group(1) == "base" else m.group(1)): m.group(2) for m in said}
+    if len(said) == len(roles) and set(roles) in ({"top", "bottom"}, {"top", "middle", "bottom"}) and re.search(
+            r"\b(?:towers?|stacks?|stacked)\b", text):
+        ranked = [roles[r] for r in ("bottom", "middle", "top") if r in roles]
+        text = text[:said[0].start()] + "from bottom to top: " + ", ".join(ranked) + text[said[-1].end():]
     # "Build a tower: the top is red, then blue, then green": listed from that end (it had been read bottom first)
     text = re.sub(rf"\b(?:the\s+)?(top|bottom|base)(?:\s+(?:one|cube|block))?\s+(?:is|:)\s+((?:{COLOR_RE})(?:\s*(?:,\s*(?:and\s+)?(?:then\s+)?"
                   rf"|\s+(?:and\s+)?then\s+)(?:{COLOR_RE}))+)\b(?!\s+(?:on|at|in)\b)",
@@ -1696,7 +1707,9 @@ def mark_regions(text: str) -> str:
         edge = edge or bool(re.search(r"area|region|zone", m.group("part")))  # "in the back region": of the table, too
         word = m.group("lr") or m.group("lr2")
         bare_center = (word in ("center", "centre", "middle") and m.group(0).split()[0] in ("in", "at", "to", "into")  # "in the center"
-                       and not names_a_role(m.string[:m.start()], m.string))
+                       and not names_a_role(m.string[:m.start()], m.string)
+                       and not (word == "middle" and lexicon.TOP_ROLE_SAID_RE.search(m.string)  # "red on top, green in the
+                                and lexicon.BOTTOM_ROLE_SAID_RE.search(m.string)))  # middle, blue on the bottom": the tower's
         two_sides = bool(m.group("fb")) and m.group("lr") in ("left", "right")  # "at the front right": a corner of the table
         if not (m.group("tail") or corner or edge or bare_center or two_sides or _table_side(m) or _heading_side(m)
                 or _structure_side(m) or _group_side(m) or _clause_side(m)):

@@ -552,7 +552,8 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("recolor", {"select": {"color": canon_color(instead.group("old"))}, "to": {"color": canon_color(instead.group("new"))}}))
     repl = None if instead or swap else re.search(r"\b(?:replace|substitute|swap)\s+(?:the\s+)?(?P<old>.+?)\s+(?:with|for|by)\s+(?:an?\s+|the\s+)?(?P<new>.+)", t) or \
         re.search(r"\b(?:change|turn|make|paint|recolou?r|colou?r)\s+(?:the\s+)?(?P<old>.+?)\s+(?:to|into)\s+(?:an?\s+|be\s+)?(?P<new>.+)", t) or \
-        re.search(rf"\b(?:make|paint)\s+(?:the\s+)?(?P<old>(?:(?!\band\s+(?:add|put|place|stack|make)\b|\badd\b|\bput\b)[^,;.])+?)\s+(?P<new>(?:{COLOR_RE}))\b", t)
+        re.search(rf"\b(?:make|paint)\s+(?:the\s+)?(?P<old>(?:(?!\band\s+(?:add|put|place|stack|make)\b|\badd\b|\bput\b|\bwith\b"
+                  rf"|\ban?\s+{STRUCTURE_RE})[^,;.])+?)\s+(?P<new>(?:{COLOR_RE}))\b", t)
     # (the cubes made a colour are said within one clause: "make it taller, add a yellow one" recolours nothing)
     repl = repl or re.search(rf"(?P<old>\b(?:the|both|all|each|every|it|they|them|\d+\s+of)\b[a-z0-9' ]*?)\s+(?:to\s+)?{EDIT_SHOULD_BE_RE}"
                              rf"\s+(?:an?\s+)?(?P<new>(?:{COLOR_RE})\b|(?:letter|digit)\s+[a-z0-9]\b)", t) or \
@@ -642,6 +643,12 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("structure", {"to": "tower", **_kept_order(t), **_stated_on(t), **ended_order}))  # "stack them": the task's cubes
     elif bare_shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
         ops.append(Op("structure", {"to": structure_of_word(bare_shape.group(1)), **ended_order}))  # "now a line instead"
+    recolors = [o for o in ops if o.op == "recolor" and set(o.params["select"]) == {"color"} and "color" in o.params["to"]]
+    if len(recolors) == 2 and recolors[0].params["select"]["color"] == recolors[1].params["to"]["color"] \
+            and recolors[1].params["select"]["color"] == recolors[0].params["to"]["color"]:
+        # "make the red one blue and the blue one red": the two exchanged at once (applied in turn, both had become red)
+        ops = [o for o in ops if o not in recolors] + [Op("swap", {"a": {"color": recolors[0].params["select"]["color"]},
+                                                                   "b": {"color": recolors[1].params["select"]["color"]}})]
     word = next((o.params["word"] for o in ops if o.op == "word"), None)
     if word:  # "make it ROBOTS, add an S": the added letters say how the new word is made, not more letters
         ops = [o for o in ops if not (o.op == "add" and o.params.get("items") and all(

@@ -168,7 +168,14 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         side = re.search(rf"\b({COLOR_RE})\s+(?:one\s+|block\s+|cube\s+)?(?:on|to|at|in)\s+(?:the\s+)?(?:left|right|front|back)\b", t)
         role = re.search(rf"\b({'|'.join(_STACK_ROLES)})\s+(?:one|block|cube)\s+(?:goes\s+|is\s+)?"
                          r"(?:on|to|at|in)\s+(?:the\s+)?(?:left|right|front|back)\b", t) if rel.kind == "on" and not named else None
-        if role and obj not in _patches(schema):
+        end = re.search(rf"\b({COLOR_RE})\s+(?:one\s+|block\s+|cube\s+)?(?:is\s+|goes\s+)?(on\s+top|at\s+the\s+top|at\s+the\s+bottom"
+                        r"|on\s+the\s+bottom|at\s+the\s+base)\b", t) if kind == "on" and not named else None
+        if end and by_color.get(canon_color(end.group(1))) in (subject, obj) and obj not in _patches(schema):
+            # "make it a tower with blue on top" of red left of blue: blue is the one on top (red had gone on top)
+            said = by_color[canon_color(end.group(1))]
+            other = obj if said == subject else subject
+            subject, obj = (said, other) if "top" in end.group(2) else (other, said)
+        elif role and obj not in _patches(schema):
             # "turn it into a row, bottom cube on the left": the cube of that role in the stack is the one placed there
             moved = obj if _STACK_ROLES[role.group(1)] == "bottom" else subject
             subject, obj = moved, (obj if moved == subject else subject)
