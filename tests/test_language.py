@@ -3496,3 +3496,12 @@ def test_lists_from_the_top_and_colon_roles(text, expected):
 def test_between_or_middle_of_a_tower_said_loosely_is_refused(text, words):
     with pytest.raises(ParseError, match=re.escape(words)):
         parse(text)
+
+
+@pytest.mark.parametrize("text,summary", [
+    # an end given in a sentence of its own leaves the rest of a listed stack free (a full order had been demanded)
+    ("Stack red, green, blue; red must be on top.", "a stack of green, blue, red with red on top, the rest in any order"),
+    ("Stack red, green, blue. Blue must be at the bottom.", "a stack of blue, red, green with blue at the bottom, the rest in any order"),
+])
+def test_an_end_said_apart_leaves_the_rest_free(text, summary):
+    assert parse(text).goal_summary == summary
