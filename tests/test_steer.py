@@ -1556,3 +1556,25 @@ def test_a_structure_with_a_role_is_not_read_as_a_recolour(tmp_path):
     fam = Family(create_family(compile_instruction("Make a tower of red, green and blue in any order", tmp_path, name="fam").path).path)
     with pytest.raises(BadInput):
         steer(fam.path, "make it a tower with red on top")
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # steer_stranger16's silent errors (after its first run): "undo x2" went back one step only
+    ("Build a tower of four blue cubes", ["make the bottom two red", "add two red cubes on top", "undo x2"],
+     ("tweak", ["stack(blue,blue,blue,blue)"])),
+])
+def test_steer_stranger16_undo_twice(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+@pytest.mark.parametrize("base,edit", [
+    ("Make a row of white, gray and black cubes from front to back", "turn it into a tower, white at the bottom"),  # (all white)
+    ("Stack yellow on orange on red", "3 towers like that"),  # (three towers of made-up colours)
+    ("Stack the yellow cube on the purple cube and put the orange cube on the green patch", "tower in the back instead"),
+])
+def test_steer_stranger16_made_up_cubes_are_refused(tmp_path, base, edit):
+    from rpg.errors import BadInput
+
+    fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
+    with pytest.raises(BadInput):
+        steer(fam.path, edit)

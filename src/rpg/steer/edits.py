@@ -269,8 +269,8 @@ def find_reference(t: str) -> RefCue:
     region = t[back.start():] if back is named else t[back.end():]
     cut = CUT_RE.search(region)
     region = region[: cut.start()] if cut else region
-    many = re.search(rf"\b(\d+|{COUNT_WORD_RE})\s+(?:versions?|steps?|edits?|changes?)(?:\s+(?:back|ago|earlier))?\b|\b(twice)\b",
-                     region)
+    many = re.search(rf"\b(\d+|{COUNT_WORD_RE})\s+(?:versions?|steps?|edits?|changes?)(?:\s+(?:back|ago|earlier))?\b|\b(twice)\b"
+                     r"|(?<![\w-])[x\u00d7]\s*(\d)\b|\b(\d)\s*[x\u00d7](?![\w-])", region)  # "undo x2", "undo 2x"
     region = region.replace(many.group(0), " ") if many else region  # "go back two versions": how far, not which
     colors = tuple(dict.fromkeys(canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", region)))
     mats = _materials(region)
@@ -284,7 +284,8 @@ def find_reference(t: str) -> RefCue:
                  count=int(n.group(1)) if n else None, word=spelled[0].upper() if len(spelled) == 1 else None,
                  phrase=(back.group(0) + region).strip())
     if not (cue.colors or cue.material or cue.structure or cue.count or cue.word):
-        steps = 2 if many and many.group(2) else int(NUMBER_WORDS.get(many.group(1), many.group(1))) if many else 1
+        steps = 2 if many and many.group(2) else int(many.group(3) or many.group(4)) if many and (many.group(3) or many.group(4)) \
+            else int(NUMBER_WORDS.get(many.group(1), many.group(1))) if many else 1
         return RefCue("previous", phrase=back.group(0), steps=steps)  # "go back two versions": that many
     return cue
 
@@ -551,7 +552,8 @@ def read_ops(t: str) -> list[Op]:
     if instead:
         ops.append(Op("recolor", {"select": {"color": canon_color(instead.group("old"))}, "to": {"color": canon_color(instead.group("new"))}}))
     repl = None if instead or swap else re.search(r"\b(?:replace|substitute|swap)\s+(?:the\s+)?(?P<old>.+?)\s+(?:with|for|by)\s+(?:an?\s+|the\s+)?(?P<new>.+)", t) or \
-        re.search(r"\b(?:change|turn|make|paint|recolou?r|colou?r)\s+(?:the\s+)?(?P<old>.+?)\s+(?:to|into)\s+(?:an?\s+|be\s+)?(?P<new>.+)", t) or \
+        re.search(rf"\b(?:change|turn|make|paint|recolou?r|colou?r)\s+(?:the\s+)?(?P<old>.+?)\s+(?:to|into)\s+(?!(?:an?\s+|one\s+)?(?:[a-z]+\s+)?"
+                  rf"{STRUCTURE_RE})(?:an?\s+|be\s+)?(?P<new>.+)", t) or \
         re.search(rf"\b(?:make|paint)\s+(?:the\s+)?(?P<old>(?:(?!\band\s+(?:add|put|place|stack|make)\b|\badd\b|\bput\b|\bwith\b"
                   rf"|\ban?\s+{STRUCTURE_RE})[^,;.])+?)\s+(?P<new>(?:{COLOR_RE}))\b", t)
     # (the cubes made a colour are said within one clause: "make it taller, add a yellow one" recolours nothing)

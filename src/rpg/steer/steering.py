@@ -269,6 +269,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
             return _addition(replace(plan, text=f"then {text}"), reference, ref_schema)
         intent = intent_of_standalone(extract(schema), ref_spec)
         _refuse_pivot_that_loses_cubes(plan.text, ref_schema, schema, intent, reference)
+        _refuse_made_up_cubes(plan.text, ref_schema, schema, reference)
         return schema, text, intent
     swapped = _swapped(plan, ref_schema) if ref_spec is None else None
     if swapped is not None:  # "swap yellow and red" of cubes in several relations: each takes the other's place
@@ -523,6 +524,30 @@ def _refuse_pivot_that_loses_cubes(edit: str, ref: TaskSchema, schema: TaskSchem
     raise SteerError(f"the edit reads as a new task of {len(new)} cube{'s' if len(new) != 1 else ''} ({schema.goal_summary}), but "
                      f"v{reference} has {len(old)} and the edit says neither how many nor to start a new task; say what "
                      f"changes in v{reference} (e.g. \"make the middle one gray\"), or \"new task: ...\"")
+
+
+_OF_THE_TASK_RE = re.compile(r"(?i)\b(?:instead|like\s+(?:that|this|it|before)|the\s+same|as\s+(?:before|it\s+is))\b")
+"""Words that make an edit stated as a whole task about the task's own cubes ("tower in the back instead",
+"3 towers like that")."""
+
+
+def _refuse_made_up_cubes(edit: str, ref: TaskSchema, schema: TaskSchema, reference: int) -> None:
+    """Refuse a whole-task reading of an edit about the task's own cubes (:data:`_OF_THE_TASK_RE`)
+    that names no colour or label, yet whose cubes are not the task's: "tower in the back instead"
+    of a purple-yellow tower had become a red-blue tower, "3 towers like that" three towers of
+    colours nobody named (made-up cubes, silently).
+
+    Raises:
+        SteerError: the reading's cubes are not among the task's and the edit names none.
+    """
+    if not _OF_THE_TASK_RE.search(edit) or re.search(rf"(?i)\b(?:{COLOR_RE})\b|\b[A-Z]\b|\bletters?\b|\bdigits?\b", edit):
+        return
+    had = {a.color or a.label for a in ref.assets if a.kind != "goal_patch"}
+    new = sorted({a.color or a.label for a in schema.assets if a.kind != "goal_patch"} - had)  # (more of its colours: a size)
+    if new:
+        raise SteerError(f"the edit reads as a new task ({schema.goal_summary}) with cubes of colours v{reference} does not "
+                         f"have ({', '.join(new)}) and the edit names none; say what changes in "
+                         f"v{reference} (e.g. \"move the tower to the back\"), or state the whole new task with its cubes")
 
 
 def _same_cubes(edit: str, ref: TaskSchema, schema: TaskSchema) -> TaskSchema:
