@@ -953,7 +953,10 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
             text = text[:said_first.start()] + text[said_first.end():]  # said again: the list's first (it had been a 4th cube)
     # "Stack red, green, blue from the top down", "Tower (top first): ...": a list from the top
     text = re.sub(r"\b(?:from\s+the\s+top(?:\s+down(?:wards?)?)?|from\s+top\s+down|top[\s-]+down|top\s+first|starting\s+(?:from|at|with)"
-                  r"\s+the\s+top)\b(?!\s+(?:of|left|right)\b)", "from top to bottom", text)
+                  r"\s+the\s+top)\b(?!\s+(?:of|left|right)\b)",
+                  lambda m: m.group(0) if re.search(r"\b(?:second|third|fourth|fifth|\d(?:st|nd|rd|th))\s*(?:one\s+)?$",
+                                                    m.string[:m.start()]) else "from top to bottom",  # ("second from the top": a rank)
+                  text)
     # "Make a tower. Top: red. Middle: green. Bottom: blue.": each role's cube, whatever order the roles are said in (the
     # colours had been read as a list from the bottom, red at the bottom)
     said = list(re.finditer(rf"(?<!\bto\s)\b(top|middle|bottom|base)\s*[:=]\s*({COLOR_RE})\b(?!\s*,\s*(?:{COLOR_RE}))", text))
