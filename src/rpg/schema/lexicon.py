@@ -1674,6 +1674,17 @@ with them and no change read, the edit is no whole new task (it is refused)."""
 EDIT_CHANGE_VERB_RE = re.compile(r"\b(?:change|replace|swap|substitute|remove|delete|flip|reverse|invert|undo|revert|paint|recolou?r)\b")
 """Verbs that change a task and state no task: an edit with one and no change read is refused."""
 
+EDIT_SWAP_BOTH_RE = re.compile(r"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|actually|and|then|just|hmm|nah)\s*,?\s+)*(?:swap|switch|exchange"
+                               r"|interchange|trade)\s+(?:them|the\s+two(?:\s+(?:cubes|blocks))?|both(?:\s+of\s+(?:them|their\s+(?:places"
+                               r"|sides|positions|spots)))?|their\s+(?:places|sides|positions|spots)|places|sides|positions)"
+                               r"(?:\s+(?:around|over|please))*\s*[.!]?\s*$")
+"""An edit that swaps the task's two cubes without naming them ("switch them", "please interchange both
+of their sides")."""
+
+EDIT_OF_THE_TASK_RE = re.compile(r"(?i)\b(?:instead|like\s+(?:that|this|it|before)|the\s+same|as\s+(?:before|it\s+is))\b")
+"""Words that make an edit stated as a whole task about the task's own cubes ("tower in the back instead",
+"3 towers like that")."""
+
 EDIT_ADDITIVE_RE = re.compile(r"\b(?:also|too|as well|add|additionally|another|in addition|plus)\b")
 """Words that make an edit an addition: what it states joins the task, the rest is kept."""
 

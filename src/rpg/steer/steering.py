@@ -39,6 +39,8 @@ from rpg.schema.lexicon import (
     EDIT_ADDITIVE_RE,
     EDIT_CONTINUES_RE,
     EDIT_KEEP_THEN_ADD_RE,
+    EDIT_OF_THE_TASK_RE,
+    EDIT_SWAP_BOTH_RE,
     NO_GOAL_RE,
     NUMBER_WORDS,
     SAME_CUBES_RE,
@@ -367,22 +369,14 @@ def _as_row(instruction: str, ops: list) -> str:
     into a row, bottom cube on the left": green left of purple, in a row), else as it is."""
     if not any(o.op == "structure" and o.params.get("to") == "line" for o in ops):
         return instruction
-    rel = relation_of(parse(instruction))
+    schema = parse(instruction)
+    rel = relation_of(schema)
     if rel is None or rel.kind not in _ROW_OF_RELATION:
         return instruction
-    schema = parse(instruction)
     names = {a.name: (a.color or a.label) for a in schema.assets}
     direction, object_first = _ROW_OF_RELATION[rel.kind]
     first, second = (rel.object, rel.subject) if object_first else (rel.subject, rel.object)
     return f"Put the {names[first]} and {names[second]} blocks in a row from {direction}: {names[first]}, {names[second]}"
-
-
-_SWAP_BOTH_RE = re.compile(r"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|actually|and|then|just|hmm|nah)\s*,?\s+)*(?:swap|switch|exchange"
-                           r"|interchange|trade)\s+(?:them|the\s+two(?:\s+(?:cubes|blocks))?|both(?:\s+of\s+(?:them|their\s+(?:places|sides"
-                           r"|positions|spots)))?|their\s+(?:places|sides|positions|spots)|places|sides|positions)(?:\s+(?:around|over|please))*"
-                           r"\s*[.!]?\s*$")
-"""An edit that swaps the task's two cubes without naming them ("switch them", "please interchange both
-of their sides")."""
 
 
 def _swapped(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str, str] | None:
@@ -395,7 +389,7 @@ def _swapped(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str, str] | N
     if len(ops) == 1 and ops[0].op == "swap" and set(ops[0].params) == {"a", "b"} and \
             set(ops[0].params["a"]) == {"color"} == set(ops[0].params["b"]):
         a, b = ops[0].params["a"]["color"], ops[0].params["b"]["color"]
-    elif not ops and _SWAP_BOTH_RE.match(plan.text) and len(cubes) == 2 and len(set(cubes)) == 2:
+    elif not ops and EDIT_SWAP_BOTH_RE.match(plan.text) and len(cubes) == 2 and len(set(cubes)) == 2:
         a, b = cubes
     else:
         return None
@@ -526,13 +520,8 @@ def _refuse_pivot_that_loses_cubes(edit: str, ref: TaskSchema, schema: TaskSchem
                      f"changes in v{reference} (e.g. \"make the middle one gray\"), or \"new task: ...\"")
 
 
-_OF_THE_TASK_RE = re.compile(r"(?i)\b(?:instead|like\s+(?:that|this|it|before)|the\s+same|as\s+(?:before|it\s+is))\b")
-"""Words that make an edit stated as a whole task about the task's own cubes ("tower in the back instead",
-"3 towers like that")."""
-
-
 def _refuse_made_up_cubes(edit: str, ref: TaskSchema, schema: TaskSchema, reference: int) -> None:
-    """Refuse a whole-task reading of an edit about the task's own cubes (:data:`_OF_THE_TASK_RE`)
+    """Refuse a whole-task reading of an edit about the task's own cubes (:data:`~rpg.schema.lexicon.EDIT_OF_THE_TASK_RE`)
     that names no colour or label, yet whose cubes are not the task's: "tower in the back instead"
     of a purple-yellow tower had become a red-blue tower, "3 towers like that" three towers of
     colours nobody named (made-up cubes, silently).
@@ -540,7 +529,7 @@ def _refuse_made_up_cubes(edit: str, ref: TaskSchema, schema: TaskSchema, refere
     Raises:
         SteerError: the reading's cubes are not among the task's and the edit names none.
     """
-    if not _OF_THE_TASK_RE.search(edit) or re.search(rf"(?i)\b(?:{COLOR_RE})\b|\b[A-Z]\b|\bletters?\b|\bdigits?\b", edit):
+    if not EDIT_OF_THE_TASK_RE.search(edit) or re.search(rf"(?i)\b(?:{COLOR_RE})\b|\b[A-Z]\b|\bletters?\b|\bdigits?\b", edit):
         return
     had = {a.color or a.label for a in ref.assets if a.kind != "goal_patch"}
     new = sorted({a.color or a.label for a in schema.assets if a.kind != "goal_patch"} - had)  # (more of its colours: a size)
