@@ -3505,3 +3505,10 @@ def test_between_or_middle_of_a_tower_said_loosely_is_refused(text, words):
 ])
 def test_an_end_said_apart_leaves_the_rest_free(text, summary):
     assert parse(text).goal_summary == summary
+
+
+def test_each_other_after_several_cubes_is_refused():
+    """"red on blue and green on yellow, side by side" had made up a second yellow cube beside the first."""
+    with pytest.raises(ParseError, match="each other' after several cubes"):
+        parse("Place red on blue and green on yellow, side by side.")
+    assert meaning(parse("put two red cubes next to each other")) == ["next_to(red,red)"]

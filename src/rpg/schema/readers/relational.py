@@ -180,6 +180,13 @@ class RelationalReading:
                     group = _listed_group(clause, left)
                     if len(group) > 1:  # "the red and green blocks": one cube per colour, as listed
                         names = [self.obj(mn) for mn in group]
+                    elif left[-1].count < 2 and any((mn.color, mn.label) != (left[-1].color, left[-1].label)
+                                                    for mn in left if mn.color or mn.label):
+                        # "red on blue and green on yellow, side by side": which cubes stand side by side is not said
+                        # (a second yellow cube had been made up to stand next to the first)
+                        raise ParseError(f"'{kind.replace('_', ' ')} each other' after several cubes does not say which of "
+                                         "them; name them (e.g. \"put the blue and yellow cubes next to each other\"), or "
+                                         "use --model")
                     else:
                         names = [self.obj(left[-1], i) for i in range(max(left[-1].count, 2))]
                     if kind == "on":
