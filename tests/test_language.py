@@ -3512,3 +3512,13 @@ def test_each_other_after_several_cubes_is_refused():
     with pytest.raises(ParseError, match="each other' after several cubes"):
         parse("Place red on blue and green on yellow, side by side.")
     assert meaning(parse("put two red cubes next to each other")) == ["next_to(red,red)"]
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a cube's own patch said without its colour (a red or a gray patch had been made up)
+    ("Put the blue cube on the same coloured patch.", ["on_patch(blue,patch:blue)"]),
+    ("Put the green cube on the patch that matches it.", ["on_patch(green,patch:green)"]),
+    ("Put the green cube on its own patch.", ["on_patch(green,patch:green)"]),
+])
+def test_a_cube_s_own_patch_is_its_colour(text, expected):
+    assert meaning(parse(text)) == expected

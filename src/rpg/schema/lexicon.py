@@ -795,6 +795,13 @@ refused, naming it (it had been read as one more cube of that colour); a structu
 role ("the bottom one is green, the second from the bottom is yellow, ...") is read elsewhere."""
 
 PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "put the blue cube on the same coloured patch", "... on the patch that matches it", "... on its own patch": the
+    # patch of that cube's colour (a red and a gray patch had been made up)
+    (re.compile(rf"\b(the\s+({COLOR_RE})\s+(?:cube|block))\s+(on|onto|to|in|into)\s+(?:the\s+same[\s-]+colou?red|its\s+own"
+                rf"(?:\s+colou?r(?:ed)?)?|the\s+matching)\s+(?:goal\s+|target\s+)?patch\b"
+                rf"|\b(the\s+({COLOR_RE})\s+(?:cube|block))\s+(on|onto|to|in|into)\s+the\s+(?:goal\s+|target\s+)?patch\s+"
+                r"(?:that|which)\s+matches\s+(?:it|its\s+colou?r)\b"),
+     lambda m: f"{m.group(1) or m.group(4)} {m.group(3) or m.group(6)} the {m.group(2) or m.group(5)} patch"),
     # "The cube orange must stay on the patch purple", "yellow stays at the left of orange": where it is at the end
     (re.compile(r"\b(must|should|has\s+to|have\s+to|needs?\s+to|will)\s+(?:to\s+)?(?:stay|remain)\b"), r"\1 be"),
     (re.compile(r"\b(?:stays|remains)\s+(?=(?:on|onto|at|in|inside|next\s+to|beside|behind|under|to\s+the|near|far|between|in\s+front)\b)"),
