@@ -188,6 +188,10 @@ MOTION_RE = (r"\bback\s+and\s+forth\b|\bto\s+and\s+fro\b|\bin\s+circles\b|\band\
 "knock the tower over"): an action the domain
 does not have (:data:`INEXPRESSIBLE`'s action class)."""
 
+MOTION_WHY = ("is a motion or a pose off the table, an action the domain does not have: a task's goal says where cubes "
+              "end up, each resting upright on the table, a patch or another cube; say that end state")
+"""Why :data:`MOTION_RE` and :data:`TURNED_OVER_RE` are refused (one reason for both)."""
+
 INSTRUCTION_ONLY = frozenset({START_TIME_RE, BUT_CORRECTION_RE, TURNED_OVER_RE})
 """:data:`INEXPRESSIBLE` patterns that hold for a whole instruction only (see each)."""
 
@@ -219,11 +223,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "moves only the robot (its gripper, arm or hand), which leaves no goal for the cubes: a task's goal says where "
      "cubes end up; say where a cube should go (e.g. \"put the red block on the blue patch\")"),
     ("action", MOTION_RE,
-     "is a motion or a pose off the table, an action the domain does not have: a task's goal says where cubes end up, "
-     "each resting upright on the table, a patch or another cube; say that end state"),
+     MOTION_WHY),
     ("action", TURNED_OVER_RE,
-     "is a motion or a pose off the table, an action the domain does not have: a task's goal says where cubes end up, "
-     "each resting upright on the table, a patch or another cube; say that end state"),
+     MOTION_WHY),
     ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none)\b|n't\b"
                  r"|\b(?:anywhere|everywhere|anything|any\s+place)\s+but\b"
                  r"|\b(?:don|doesn|didn|isn|aren|shouldn|mustn|won|wouldn)\s*'?\s*t\b"

@@ -29,7 +29,7 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from rpg.artifact import ArtifactError, load_artifact
 from rpg.compiler import CompileResult, build
-from rpg.domain.predicates import describe_region
+from rpg.domain.predicates import PREDICATES, describe_region
 from rpg.errors import BadInput
 from rpg.schema.builtin import parse
 from rpg.schema.edits import recolor
@@ -43,6 +43,7 @@ from rpg.schema.lexicon import (
     EDIT_SWAP_BOTH_RE,
     NO_GOAL_RE,
     NUMBER_WORDS,
+    PAIRWISE_RELATIONS,
     SAME_CUBES_RE,
     SAME_PATCH_RE,
 )
@@ -419,9 +420,6 @@ def _chain_order(ref: TaskSchema) -> tuple[list[str], str] | None:
     """The cubes' colours in order and its direction when the goal is one chain of side relations
     over three or more cubes of distinct colours ("green left of red, red left of blue": green, red,
     blue left to right); None otherwise."""
-    from rpg.domain.predicates import PREDICATES
-    from rpg.schema.lexicon import PAIRWISE_RELATIONS
-
     names = {PREDICATES[name]: name for name in PAIRWISE_RELATIONS}
     parts = list(ref.goal_predicate().conjuncts())
     kinds = [names.get(type(p)) for p in parts]
