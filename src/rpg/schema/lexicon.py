@@ -2058,3 +2058,356 @@ count said in the edit, it names no exact change (refused as a quantity)."""
 
 EDIT_SHOULD_BE_RE = r"(?:should|must|shall|will|would|can|could|has to|have to|needs? to)?\s*(?:be|become|turn|go)"
 """How an edit says what a cube should be ("the top block should be red", "both should be white")."""
+
+
+def rewrite(rules: tuple[tuple[re.Pattern, object], ...], text: str) -> str:
+    """``text`` with each of ``rules`` (pattern, replacement string or function) applied in order."""
+    for pattern, written in rules:
+        text = pattern.sub(written, text)
+    return text
+
+
+# Surface rewrites of :func:`rpg.schema.reading.normalize_words`, in the order it applies them: each
+# table turns one family of surface forms into the words the readers read.
+
+BARE_OBJECT_BEFORE = "|".join(rf"(?<=\b{w}\s)" for w in ARTICLE_DROPPED_AFTER)
+"""Lookbehinds for the words after which a terse writer leaves out a cube's article (\"put cyan cube ...\")."""
+
+OUTCOME_VERB_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "cover the green patch with the red block": the red block on it
+    (re.compile(rf"\bcover\s+(the\s+(?:{COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|tile|block|cube))\s+with\s+"
+                rf"(the\s+(?:{COLOR_RE})\s+(?:block|cube))\b"),
+     r"put \2 on \1"),
+    # "slide the red block until it touches the blue block": next to it; "until it reaches the patch": on it
+    (re.compile(rf"\buntil\s+(?:it|they)\s+(?:reach(?:es)?|is\s+on|are\s+on)\s+(?=the\s+(?:(?:{COLOR_RE})\s+)?(?:goal\s+)?patch\b)"),
+     "onto "),
+    (re.compile(rf"\b(?:until\s+(?:it|they)\s+(?:touch(?:es)?|hits?|bumps?\s+into|reach(?:es)?)|against)\s+"
+                rf"(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|one)\b)"),
+     "next to "),
+)
+"""A motion said by its outcome ("cover the green patch with the red block", "slide it until it touches ..."): the relation it ends in."""
+
+GOAL_FRAME_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    (re.compile(r"^\s*(?:about|regarding|re|concerning)\s+(?=the\s+(?:tower|stack|row|line|pyramid|wall|grid|circle)\s*:)"),
+     ""),
+    # "three cubes of arbitrary colour"
+    (re.compile(r"\barbitrary\s+(?=(?:colou?rs?|order)\b)"),
+     "any "),
+    # "listed top to bottom:"
+    (re.compile(r"\b(?:listed|given|written|read)\s+(?=(?:from\s+)?(?:the\s+)?(?:top|bottom)\s+(?:to|up|down)\b)"),
+     ""),
+    # "In the final row the leftmost cube should be black, ...": the row the goal describes
+    (re.compile(r"^\s*(?:in|for)\s+the\s+(?:final|resulting|finished|end|goal|target)\s+(row|line|tower|stack)\s*[,:]?\s*"),
+     r"make a \1: "),
+    # "put the whole stack on the red patch": the stack
+    (re.compile(r"\b(the|that|this)\s+(?:whole|entire|complete|resulting|finished|completed|final)\s+(?=(?:stack|tower|row|line|circle|pyramid|wall|grid|structure)\b)"),
+     r"\1 "),
+)
+"""Words that frame the goal's structure ("about the tower:", "in the final row", "the whole stack", "arbitrary colour"): the structure itself."""
+
+PLACEMENT_WISH_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "the yellow one goes in the middle of the two red ones": between them
+    (re.compile(rf"\bin\s+(?:the\s+)?(?:middle|center|centre)\s+of\s+(?:the\s+)?(?=(?:two|2|both)\s+(?:(?:{COLOR_RE})\s+)?(?:ones|cubes|blocks)\b"
+                rf"|(?:the\s+)?(?:{COLOR_RE})\s+(?:one|cube|block)\s+and\s+the\s+(?:{COLOR_RE})\s+(?:one|cube|block)\b)"),
+     "between the "),
+    # "kindly keep the white cube in front of the black cube" (Indian English): put it there
+    (re.compile(rf"\bkeep\s+(?=(?:(?:the|a|an)\s+)?(?:(?:{COLOR_RE})\s+)?(?:one|cube|block)\s+(?:on|onto|on\s+top\s+of|in|at|next\s+to|beside|"
+                r"behind|in\s+front\s+of|under|between|to\s+the\s+(?:left|right)\s+of)\b)"),
+     "put "),
+    # "i want the red one on the blue one and then ...": a placement said as a wish
+    (re.compile(rf"\b(?:i|we)\s+(?:want|need|would\s+like|'d\s+like)\s+(?=(?:the|a|an)\s+(?:(?:{COLOR_RE})\s+)?(?:one|cube|block)?\s*"
+                r"(?:on|onto|on\s+top\s+of|next\s+to|beside|behind|in\s+front\s+of|under|between|to\s+the\s+(?:left|right)\s+of)\b)"),
+     "put "),
+)
+"""A placement said as a wish or a keeping ("i want the red one on ...", "keep the white cube in front of ...") or a middle said by its neighbours: the placement."""
+
+ROBOT_SUBJECT_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "the robot stacks the red block on ...": the command the sentence describes
+    (re.compile(r"^(?:the\s+|a\s+)?(?:robot(?:ic)?(?:\s+arm)?|agent|arm)\s+(stack|put|place|move|push|arrange|build|set|line|pick|slide|lift|make)s\b"),
+     r"\1"),
+)
+""""The robot stacks the red block on ...": the command the sentence describes."""
+
+NOTATION_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    (re.compile(r"(\d)\s*[x\u00d7]\s*(?=\d)"),
+     r"\1x"),
+    # "2 rows x 3 cubes": rows of that many cubes
+    (re.compile(r"\b(\d+)\s+(rows|layers|levels|courses|tiers)\s*[x\u00d7]\s*(?=\d+\b)"),
+     r"\1 \2 of "),
+    # "3x white", "white x3", "red \u00d7 2": a count of cubes written as a multiplier (a grid's "3x3" stays)
+    (re.compile(rf"\b(\d+)\s*[x\u00d7]\s*(?=(?:{COLOR_RE})\b)"),
+     r"\1 "),
+    (re.compile(rf"\b({COLOR_RE})((?:\s+(?:blocks?|cubes?))?)\s*[x\u00d7]\s*(\d+)\b"),
+     r"\3 \1\2"),
+    # "3 white in a row": three cubes, not a count and a cube
+    (re.compile(rf"\b(\d+)\s+({COLOR_RE})(?=\s+(?:in|into)\s+(?:a|an|one)\s+(?:row|line|column|circle|ring|tower|stack|pile)\b)"),
+     r"\1 \2 cubes"),
+    (re.compile(r"\b(\d+)(?:\s+|\s*-\s*)by(?:\s+|\s*-\s*)(?=\d)"),
+     r"\1x"),
+    # "on(red, green)", "(on red green)": a goal written as a planning predicate
+    (re.compile(rf"\(?\bon\s*(?:\(\s*|\s+)({COLOR_RE})\s*,?\s+({COLOR_RE})\s*\)"),
+     r"the \1 block on the \2 block"),
+    # "put cyan cube at back right corner of table": the articles a terse or non-native writer leaves out
+    (re.compile(rf"(?:^|{BARE_OBJECT_BEFORE})(?=(?:{COLOR_RE})\s+(?:block|cube|brick|box)\b)"),
+     "the "),
+    (re.compile(r"\b(at|to|in|on|of|near)\s+(?=(?:front|back|rear|left|right)(?:\s+(?:left|right))?\s+(?:side|corner|edge|half|part|end)\b"
+                r"|(?:middle|center|centre)\s+of\b|table\b|(?:middle|center|centre)\s*(?:[.!,;]|$))"),
+     r"\1 the "),
+)
+"""Counts and goals written as notation ("3x white", "2 rows x 3", "on(red, green)") and articles a terse writer leaves out."""
+
+WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "put digit 7 on top of digit 2": a label cube named without its article
+    (re.compile(r"(?<![\w'])(?<!the\s)(?<!a\s)(?<!each\s)(?<!every\s)(?<!any\s)\b(digit|number|letter)\s+(?=(?:\d|[A-Z])\b(?!\s*(?:,|to\b|-)))"),
+     r"the \1 "),
+    # "the cube the blue on the cube the red": a colour after its noun and an article (Italian, Arabic)
+    (re.compile(rf"\bthe\s+(cubes?|blocks?|box(?:es)?|patch(?:es)?)\s+the\s+({COLOR_RE})\b"
+                rf"(?!\s+(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?)\b)"),
+     r"the \2 \1"),
+    # "the cube brown on the cube orange", "block purple on block yellow", "the cube of colour blue": a colour after its noun
+    # a list after the noun ("the cube red, blue and green") is left as it is
+    (re.compile(rf"(?<!every )(?<!each )(?<!all )(?<!any )\b(cube|block|box|patch)\s+(?:of\s+(?:the\s+)?colou?r\s+)?({COLOR_RE})\b"
+                rf"(?!\s*(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?)\b|\s*(?:,|and\b|or\b)\s*(?:the\s+)?(?:{COLOR_RE})\b)"),
+     r"\2 \1"),
+    # "two cubes gray and the cube brown": a counted colour after its noun (Russian, Spanish habits)
+    # the colour may agree in number ("the two cubes oranges", French and Spanish)
+    (re.compile(rf"\b(\d+|{COUNT_WORD_RE})\s+(cubes|blocks)\s+({COLOR_RE})s?\b(?!\s*(?:cubes?|blocks?|ones?|patch(?:es)?)\b|\s*,\s*(?:{COLOR_RE})\b|\s+(?:{COLOR_RE})\b)"),
+     r"\1 \3 \2"),
+    # "..., green cube on the red patch too": a clause said as well as the others, as every clause of a goal is
+    (re.compile(r"(?<=\w)\s*,?\s+(?:too|as\s+well)\s*(?=[.;!]|$)"),
+     ""),
+    # "between the cubes labelled 4 and 6": each label its own cube
+    (re.compile(r"\bthe\s+(cube|block)s\s+(labell?ed|marked|with)\s+([a-z0-9])\s*(?:,\s*|\s+and\s+)([a-z0-9])\b"),
+     r"the \1 \2 \3 and the \1 \2 \4"),
+    # "the green in bottom", "with gray between.": a role said without its article or its "in" (non-native habits)
+    (re.compile(r"\b(?:in|at|on)\s+bottom\b"),
+     "at the bottom"),
+    (re.compile(r"(?<!\bin )\bbetween(?=\s*(?:[.;!]|$))"),
+     "in between"),
+    # "a tower of 3 reds", "two greens and a blue": a counted colour said as a plural noun
+    (re.compile(rf"\b(\d+|{COUNT_WORD_RE})\s+({COLOR_RE})s\b(?!\s*(?:cubes?|blocks?|ones?|patch(?:es)?)\b)"),
+     r"\1 \2 cubes"),
+    # "the corner back right", "the part front of the table": a place's words after its noun (Spanish, French)
+    (re.compile(r"\bthe\s+(corner|side|part|edge)\s+((?:front|back|rear)(?:[\s-]+(?:left|right))?|left|right)\b"),
+     r"the \2 \1"),
+    # "tower | top: pink | bottom: gray", "red / white / red / white": a table row's or a list's separators
+    (re.compile(r"\s*\|\s*"),
+     ", "),
+    (re.compile(rf"\b({COLOR_RE})\s*/\s*(?=(?:{COLOR_RE})\b)"),
+     r"\1, "),
+    # "a pyramid: the bottom three are yellow, the next two are orange, ...": each layer's count and colour
+    (re.compile(rf"\bthe\s+(bottom|lowest|next|middle|top)\s+(\d+|{COUNT_WORD_RE})\s+(?:are|is|being)\s+(?:all\s+)?"
+                rf"({COLOR_RE})\b"),
+     lambda m: m.group(0) if m.group(2) in ("one", "1") else  # "the top one is red": the top cube's rule
+     f"{NUMBER_WORDS.get(m.group(2), m.group(2))} {m.group(3)} cubes "
+     + {"bottom": "on the bottom", "lowest": "on the bottom", "top": "on top"}.get(m.group(1), "in the middle")),
+)
+"""Word orders of other languages and terse notes ("the cube brown", "the corner back right", "in bottom", "3 reds", separators): English order."""
+
+LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "blue blue red red", "red blue red blue": a transcript's list of cubes with no commas, a colour
+    # said again for each cube; "the red red block" is one cube (a stutter)
+    (re.compile(rf"(?P<det>\b(?:the|a|an)\s+)?\b(?P<run>(?:{COLOR_RE})(?:\s+(?:{COLOR_RE}))+)\b(?P<noun>\s+(?:block|cube|one)\b)?"),
+     lambda m: m.group(0) if len(set(m.group("run").split())) == len(m.group("run").split())
+     else (m.group("det") + re.sub(rf"\b({COLOR_RE})(?:\s+\1\b)+", r"\1", m.group("run")) + m.group("noun"))
+     if m.group("det") and m.group("noun")
+     else (m.group("det") or "") + ", ".join(m.group("run").split()) + (m.group("noun") or "")),
+    # "in the corner? the back left one", "the corner - the front right one": which corner, said after
+    (re.compile(r"\bthe\s+corner\s*(?:[,?:;\-\u2013\u2014]+|\.\.\.)\s*(?:i\s+mean\s+|namely\s+)?the\s+(front|back|rear|far)\s+"
+                r"(left|right)\s+(?:one|1|corner)\b"),
+     r"the \1 \2 corner"),
+    # "LINE front edge: red, red, red": a terse line's place said with no preposition
+    (re.compile(r"\b(lines?|rows?)\s+(?=(?:front|back|rear|left|right)\s+(?:edge|side)\b)"),
+     r"\1 at the "),
+    # "the blue box-shaped block"
+    (re.compile(r"\b(?:box|cube|block)[\s-]shaped\s+(?=(?:blocks?|cubes?|bricks?)\b)"),
+     ""),
+    # "spell out the name EVA"
+    (re.compile(r"\b(spell(?:s|ing)?)(?:\s+out)?\s+the\s+(?:name|word)\b"),
+     r"\1"),
+    # "a long way from the orange block"
+    (re.compile(r"\b(?:a\s+)?long\s+way\s+(?:away\s+)?from\b"),
+     "far from"),
+)
+"""Transcripts' and notes' loose phrasings (colours said once per cube, "the corner - the front right one", "box-shaped", "spell out the name", "a long way from")."""
+
+TOP_DOWN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "Stack red, green, blue from the top down", "Tower (top first): ...": a list from the top
+    (re.compile(r"\b(?:from\s+the\s+top(?:\s+down(?:wards?)?)?|from\s+top\s+down|top[\s-]+down|top\s+first|starting\s+(?:from|at|with)"
+                r"\s+the\s+top)\b(?!\s+(?:of|left|right)\b)"),
+     lambda m: m.group(0) if re.search(r"\b(?:second|third|fourth|fifth|\d(?:st|nd|rd|th))\s*(?:one\s+)?$",
+                                       m.string[:m.start()]) else "from top to bottom"),
+)
+""""from the top down", "top first": a list from the top ("second from the top" stays a rank)."""
+
+TOP_LIST_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "Build a tower: the top is red, then blue, then green": listed from that end (it had been read bottom first)
+    (re.compile(rf"\b(?:the\s+)?(top|bottom|base)(?:\s+(?:one|cube|block))?\s+(?:is|:)\s+((?:{COLOR_RE})(?:\s*(?:,\s*(?:and\s+)?(?:then\s+)?"
+                rf"|\s+(?:and\s+)?then\s+)(?:{COLOR_RE}))+)\b(?!\s+(?:on|at|in)\b)"),
+     lambda m: f"from {'top to bottom' if m.group(1) == 'top' else 'bottom to top'}: {m.group(2)}"),
+)
+""""the top is red, then blue, then green": listed from that end."""
+
+FAR_APART_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "the black cube and the white cube should be far apart": one far from the other
+    (re.compile(rf"\b(the\s+(?:{COLOR_RE})\s+(?:block|cube))\s+and\s+(the\s+(?:{COLOR_RE})\s+(?:block|cube))\s+"
+                r"((?:should|must|need\s+to|have\s+to)\s+(?:be|end\s+up)|are|end\s+up)\s+far\s+apart\b"),
+     r"\1 \3 far from \2"),
+    (re.compile(r"(\d)-(block|cube|layer|level|story|storey|high|tall|wide|long|deep)"),
+     r"\1 \2"),
+)
+""""X and Y should be far apart" (one far from the other) and hyphenated sizes ("3-block")."""
+
+RELATION_SIDE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "at top of" ("to the top of the table" is its far side, read below)
+    (re.compile(r"\b(?:to|onto)\s+the\s+top\s+of\b(?!\s+the\s+(?:table|workspace|board)\b)|\b(?:at|to|on)\s+top\s+of\b"),
+     "on top of"),
+    # "to its left": the relation to the cube "it" stands for (resolved like "to the left of it")
+    (re.compile(r"\b(?:to|on|at)\s+(its|their)\s+(left|right)(?:\s+(?:hand\s+)?side)?\b"),
+     lambda m: f"to the {m.group(2)} of {'it' if m.group(1) == 'its' else 'them'}"),
+    # "on the blue block's left": the relation to that cube (it compiled a stack on it)
+    (re.compile(rf"\b(?:on|to|at)\s+the\s+((?:{COLOR_RE})\s+(?:block|cube|one))'s\s+(left|right)(?:\s+(?:hand\s+)?side)?\b"),
+     r"to the \2 of the \1"),
+    (re.compile(rf"\b(?:on|to|at|in)\s+the\s+((?:{COLOR_RE})\s+(?:block|cube|one))'s\s+(front|back|rear)(?:\s+side)?\b"),
+     lambda m: f"{'in front of' if m.group(2) == 'front' else 'behind'} the {m.group(1)}"),
+    # "the red and green blocks on either side of the blue block": the blue block between them
+    (re.compile(rf"\b(put|place|set|move)\s+the\s+({COLOR_RE})\s+and\s+(?:the\s+)?({COLOR_RE})\s+(blocks|cubes)\s+"
+                rf"(?:on|at|to)\s+(?:either|each|both|opposite)\s+sides?\s+of\s+the\s+({COLOR_RE})\s+(?:block|cube|one)\b"),
+     lambda m: f"{m.group(1)} the {m.group(5)} {m.group(4)[:-1]} between the {m.group(2)} {m.group(4)[:-1]} and "
+               f"the {m.group(3)} {m.group(4)[:-1]}"),
+    # "put one block on (top of) the other": the two blocks stacked, either on top
+    (re.compile(r"\b(put|place|stack|set)\s+one\s+(block|cube)\s+(?:on|onto|upon)\s+(?:top\s+of\s+)?the\s+other(?:\s+one)?\b"),
+     r"\1 two \2s on top of each other"),
+)
+"""A relation said by a cube's side ("to its left", "on the blue block's left", "on either side of", "one on the other")."""
+
+EDGE_AND_EACH_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "in a row along the back edge[, ...]": at that edge of the table ("along" is otherwise no word of ours)
+    (re.compile(r"\balong\s+(?=the\s+(?:(?:far|very)\s+)?(?:front|back|rear|left|right)(?:\s+(?:hand\s+)?(?:side|edge|end))?"
+                r"(?:\s+of\s+the\s+(?:table|workspace))?\s*(?:[.!,;]|$))"),
+     "at "),
+    # "a red tower and a blue tower, each three high": the height reaches each tower
+    (re.compile(rf"\b(?:a|one)\s+({COLOR_RE})\s+(tower|stack|column)\s+and\s+(?:a|one|another)\s+({COLOR_RE})\s+(?:tower|stack|column)"
+                r",?\s+(?:each|both)\s+(\d+|two|three|four|five|six)\s+(?:(?:blocks?|cubes?|levels?|stor(?:y|ey|ies|eys))\s+)?(?:high|tall)\b"),
+     r"a \2 of \4 \1 blocks and a \2 of \4 \3 blocks"),
+)
+""""along the back edge" (at that edge) and "each three high" (the height reaches each tower)."""
+
+PATCH_CENTRE_AND_START_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "into the middle of the black patch": on it (a cube on a patch is on it wherever it stands there)
+    (re.compile(rf"\b(?:in|into|onto|on|at|to)\s+the\s+(?:middle|center|centre)\s+of\s+the\s+((?:{COLOR_RE})\s+(?:goal\s+|target\s+)?patch)\b"),
+     r"on the \1"),
+    # "starting from the left with blue": blue the first from the left
+    (re.compile(rf"\b(starting|beginning)\s+(?:from|at)\s+the\s+(left|right|front|back)(?:\s+end)?\s*,?\s*with\s+(?:the\s+)?({COLOR_RE})\b"),
+     r"\1 with \3 on the \2"),
+)
+""""into the middle of the black patch" (on it) and "starting from the left with blue" (blue first from the left)."""
+
+LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    (re.compile(r"\btoward(?:s)?\b"),
+     "to"),
+    # "put green cube to yellow cube left side", "to the blue block's right": a side of the landmark cube
+    (re.compile(rf"\b(?:to|on|at)\s+(the\s+(?:{COLOR_RE})\s+(?:block|cube|one))(?:'s)?\s+(?:the\s+)?(left|right)(?:\s*-?\s*hand)?"
+                rf"(?:\s+side)?\b(?!\s+(?:of|corner|edge|half|part)\b)"),
+     r"to the \2 of \1"),
+    # "move the red block to the front of the green patch": in front of that cube or patch
+    (re.compile(rf"\bto\s+the\s+front\s+of\s+(?=the\s+(?:{COLOR_RE})\s+(?:goal\s+|target\s+)?(?:block|cube|patch|one)\b)"),
+     "in front of "),
+    # "put a red block on the red block": two red cubes (the other had been the same cube, a contradiction)
+    # (alone: in a sequence of placements "the blue block" is one placed before, :mod:`rpg.schema.clauses`)
+    (re.compile(rf"\b(a|an)\s+({COLOR_RE})\s+(block|cube)\s+((?:on(?:to)?(?:\s+top\s+of)?|next\s+to|beside)\s+)the\s+\2\s+(block|cube)\b"
+                r"(?=\s*[.!]?\s*$)"),
+     r"\1 \2 \3 \4another \2 \5"),
+    # "push the blue block to the red block": moved up to it, i.e. next to it (Language-Table, Demo2Code)
+    (re.compile(rf"\b(push|move|slide|put|bring|shift)\s+the\s+((?:{COLOR_RE})\s+(?:block|cube))\s+to\s+"
+                rf"(the\s+(?:{COLOR_RE})\s+(?:block|cube))\b(?!\s+(?:of|patch)\b)"),
+     r"\1 the \2 next to \3"),
+    (re.compile(r"\b(?:so\s+(?:that\s+)?it(?:'s|\s+is)\s+)?touch(?:ing|es)?\b"),
+     "next to"),
+    (re.compile(r"\bfollowed\s+by\b|\btopped\s+(?:off\s+)?(?:with|by)\b"),
+     "then"),
+    # "and finish with a white cube at the top": the last of a sequence
+    # only after a sequence ("add yellow, then orange, and finish with white")
+    (re.compile(r"\b(?:(and)\s+)?(?:finish|end)(?:\s+(?:it|them|the\s+(?:tower|stack|row|line)))?(?:\s+off)?\s+with\b"),
+     lambda m: f"{m.group(1) or ''} then".strip() if re.search(r"\b(?:then|add)\b", m.string[:m.start()])
+     else m.group(0)),
+    (re.compile(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+of\s+the\s+(?=\w+\s+(?:blocks|cubes|boxes)\b)"),
+     r"\1 "),
+    (re.compile(r"\b(?:to|on|at)\s+the\s+(left|right)(?:[\s-]+hand)?\s+side\s+of\b(?!\s+the\s+(?:table|workspace)\b)"),
+     r"to the \1 of"),
+    (re.compile(r"\bon\s+top\s+(?=the\b)"),
+     "on top of "),
+    # "a row of white cubes, three of them": the count said after the cubes
+    (re.compile(rf"\b((?:{COLOR_RE})\s+)?(cubes|blocks)\s*,?\s+(\d+|{COUNT_WORD_RE})\s+of\s+them\b"
+                r"(?=\s*(?:[,.;!?]|$|(?:at|in|on|along|across|please)\b))"),
+     lambda m: f"{NUMBER_WORDS.get(m.group(3), m.group(3))} {m.group(1) or ''}{m.group(2)}"),
+)
+"""A landmark cube's sides and approaches ("to yellow cube left side", "push the blue block to the red block", "finish with", "three of them")."""
+
+PLEASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "two stacks please: ..."
+    (re.compile(r"\s+please(?=\s*[:,;.!])"),
+     ""),
+)
+""""two stacks please: ...": the request's "please" before punctuation."""
+
+STRUCTURE_NOUN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    (re.compile(r"\bvertical (?:column|stack)\b|\bpillar\b"),
+     "tower"),
+    # "a column of three cubes going from front to back" lies along the table
+    (re.compile(r"\bcolumn(s?)\b(?=.*\b(?:front\s+to\s+back|back\s+to\s+front|left\s+to\s+right|right\s+to\s+left)\b)"),
+     r"line\1"),
+    # "in a column"; "2 columns" stay grids
+    (re.compile(r"\b(a|one|single|the same)\s+column\b"),
+     r"\1 tower"),
+    # "the target square patch": one patch
+    (re.compile(r"\b(?:goal|target)\s+(?:area|zone|region|spot|location|position|point|pad|mat|marker|square|tile|field)(s?)"
+                r"(?:\s+patch(?:es)?)?\b"),
+     r"goal patch\1"),
+    (re.compile(rf"\b({COLOR_RE})\s+(?:(?:goal|target)\s+)?(?:pad|mat|marker|zone|area|region|tile|field)(s?)\b"),
+     r"\1 patch\2"),
+    # "onto the yellow square": a square a cube is put on is a patch ("build a red square" stays a structure)
+    (re.compile(rf"\b(on|onto|into|in|to)\s+the\s+({COLOR_RE})\s+square\b"),
+     r"\1 the \2 patch"),
+    # "onto the blue target"
+    (re.compile(r"\btarget(s?)\b(?!\s+(?:goal\s+)?patch)"),
+     r"patch\1"),
+    # "pick and place a block on ..."
+    (re.compile(r"\bpick(?:\s+up)?\s+and\s+(place|put|set|drop)\b"),
+     r"\1"),
+    (re.compile(r"\b(?:pick up|grab|take|lift|get|pick)\s+(the\s+(?:[a-z0-9']+\s+){0,4}?(?:block|cube|box|one))(?:\s+up)?"
+                r"(?:,?\s*and\s+(?:then\s+)?|,?\s*then\s+|,\s*)(place|put|set|stack|move|drop|lay)\s+it\b"),
+     r"\2 \1"),
+    (re.compile(r"\bside by side\b"),
+     "next to each other"),
+)
+"""Structure and patch nouns said otherwise ("a column", "the target", "pick and place")."""
+
+MAP_WORD_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    (re.compile(r"\b(the\s+)?(?:top|upper)[\s-]+(left|right)\b(?!\s+of\b)(?=\s+(?:corner|edge|side)\b|\s*(?:[.,;!]|$))"),
+     r"\1back \2"),
+    (re.compile(r"\b(the\s+)?(?:bottom|lower)[\s-]+(left|right)\b(?!\s+of\b)(?=\s+(?:corner|edge|side)\b|\s*(?:[.,;!]|$))"),
+     r"\1front \2"),
+    # "push the pink block to the top of the table" (Language-Table's map words): the far side, the back
+    (re.compile(r"\bthe\s+(top|upper|bottom|lower)\s+(?:(edge|side|half|part|end)\s+)?of\s+the\s+(?=(?:table|workspace|board)\b)"),
+     lambda m: f"the {'back' if m.group(1) in ('top', 'upper') else 'front'} {m.group(2) or ''} of the ".replace("  ", " ")),
+)
+"""Language-Table's map words ("the top left corner", "the top of the table"): the table's back and front."""
+
+LABEL_CUBE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "stack the letter A on the letter B": those are cubes
+    (re.compile(r"\b(?:(\w+)\s+)?((?:the|a|an)\s+(?:letter|digit|number)\s+'?[a-z0-9]'?)(?=\s|[.,;!]|$)(?!\s+(?:block|cube|box))"),
+     lambda m: m.group(0) if m.group(1) in ("with", "showing", "labeled", "labelled", "marked", "bearing")
+     else m.group(0) + " block"),
+    (re.compile(rf"\b({COLOR_RE})\s+one(s?)\b"),
+     lambda m: f"{m.group(1)} block{'s' if m.group(2) else ''}"),
+)
+"""Label cubes named without their noun ("the letter A") and "red ones": cubes."""
+
+SPELLING_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    (re.compile(r"\bgrey\b"),
+     "gray"),
+    (re.compile(r"(\d)-(block|cube|layer|level|story|storey|high|tall|tier|wide|long|deep)"),
+     r"\1 \2"),
+)
+"""Last spellings ("grey", "3-block")."""

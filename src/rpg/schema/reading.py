@@ -128,8 +128,6 @@ class Inexpressible(ParseError):
 _INEXPRESSIBLE = tuple((kind, re.compile(pattern), why) for kind, pattern, why in lexicon.INEXPRESSIBLE)
 
 
-_BARE_OBJECT_BEFORE = "|".join(rf"(?<=\b{w}\s)" for w in lexicon.ARTICLE_DROPPED_AFTER)
-
 _SYNONYM_RE = re.compile(r"\b(?:" + "|".join(sorted(lexicon.SYNONYMS, key=len, reverse=True)) + r")\b")
 
 
@@ -779,14 +777,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.OTHER_WAY_DENIED_RE.sub("", text)  # "..., not the other way round": said again
     effectors = [(m.group("what"), "the effector or robot that does it") for m in lexicon.EFFECTOR_RE.finditer(text)]
     text = lexicon.EFFECTOR_RE.sub(" ", text).strip()
-    # "cover the green patch with the red block": the red block on it
-    text = re.sub(rf"\bcover\s+(the\s+(?:{COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|tile|block|cube))\s+with\s+"
-                  rf"(the\s+(?:{COLOR_RE})\s+(?:block|cube))\b", r"put \2 on \1", text)
-    # "slide the red block until it touches the blue block": next to it; "until it reaches the patch": on it
-    text = re.sub(rf"\buntil\s+(?:it|they)\s+(?:reach(?:es)?|is\s+on|are\s+on)\s+(?=the\s+(?:(?:{COLOR_RE})\s+)?(?:goal\s+)?patch\b)",
-                  "onto ", text)
-    text = re.sub(rf"\b(?:until\s+(?:it|they)\s+(?:touch(?:es)?|hits?|bumps?\s+into|reach(?:es)?)|against)\s+"
-                  rf"(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|one)\b)", "next to ", text)
+    text = lexicon.rewrite(lexicon.OUTCOME_VERB_REWRITES, text)
     text = lexicon.FREE_PAIR_RE.sub("colours do not matter, in any order", text)
     text = lexicon.ANY_ORDER_RE.sub(" in any order", text)  # before "doesn't" is refused as a negation
     text = lexicon.HARMLESS_NEGATION_RE.sub("", text)
@@ -821,29 +812,14 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                     if not set(re.findall(r"[a-z']+", s.lower())) <= lexicon.CHAT_WORDS) or text
     asked_by = effectors + [(m.group("who"), "who asks for the task") for m in lexicon.SOMEONE_WANTS_RE.finditer(text)]
     text = lexicon.SOMEONE_WANTS_RE.sub("i want", text)
-    text = re.sub(r"^\s*(?:about|regarding|re|concerning)\s+(?=the\s+(?:tower|stack|row|line|pyramid|wall|grid|circle)\s*:)", "", text)
-    text = re.sub(r"\barbitrary\s+(?=(?:colou?rs?|order)\b)", "any ", text)  # "three cubes of arbitrary colour"
-    text = re.sub(r"\b(?:listed|given|written|read)\s+(?=(?:from\s+)?(?:the\s+)?(?:top|bottom)\s+(?:to|up|down)\b)", "", text)  # "listed top to bottom:"
-    # "In the final row the leftmost cube should be black, ...": the row the goal describes
-    text = re.sub(r"^\s*(?:in|for)\s+the\s+(?:final|resulting|finished|end|goal|target)\s+(row|line|tower|stack)\s*[,:]?\s*", r"make a \1: ", text)
-    text = re.sub(r"\b(the|that|this)\s+(?:whole|entire|complete|resulting|finished|completed|final)\s+(?=(?:stack|tower|row|line|circle|pyramid|wall|grid|structure)\b)",
-                  r"\1 ", text)  # "put the whole stack on the red patch": the stack
+    text = lexicon.rewrite(lexicon.GOAL_FRAME_REWRITES, text)
     if re.search(r"\bpyramids?\b", text):  # "pyramid: an orange and a pink cube side by side, and a white cube resting on both"
         text = re.sub(rf"(?P<base>(?:(?:an?|one|the|2)\s+)?(?:{COLOR_RE})\s+(?:and\s+(?:an?\s+|the\s+)?(?:{COLOR_RE})\s+)?(?:cubes?|blocks?)"
                       rf"|2\s+(?:{COLOR_RE})\s+(?:cubes|blocks))\s+(?:next\s+to\s+each\s+other|side\s+by\s+side|on\s+the\s+table)\s*,?\s*(?:and\s+|with\s+)?"
                       rf"(?P<top>(?:an?|one|the|1)\s+(?:{COLOR_RE})\s+(?:cube|block))\s+(?:(?:resting|sitting|balanced|placed|lying)\s+)?"
                       r"on\s+(?:top\s+of\s+)?(?:both(?:\s+of\s+them)?|2|them|the\s+2|the\s+pair)\b",
                       r"\g<base> on the bottom and \g<top> on top", text)
-    # "the yellow one goes in the middle of the two red ones": between them
-    text = re.sub(rf"\bin\s+(?:the\s+)?(?:middle|center|centre)\s+of\s+(?:the\s+)?(?=(?:two|2|both)\s+(?:(?:{COLOR_RE})\s+)?(?:ones|cubes|blocks)\b"
-                  rf"|(?:the\s+)?(?:{COLOR_RE})\s+(?:one|cube|block)\s+and\s+the\s+(?:{COLOR_RE})\s+(?:one|cube|block)\b)", "between the ", text)
-    # "kindly keep the white cube in front of the black cube" (Indian English): put it there
-    text = re.sub(rf"\bkeep\s+(?=(?:(?:the|a|an)\s+)?(?:(?:{COLOR_RE})\s+)?(?:one|cube|block)\s+(?:on|onto|on\s+top\s+of|in|at|next\s+to|beside|"
-                  r"behind|in\s+front\s+of|under|between|to\s+the\s+(?:left|right)\s+of)\b)", "put ", text)
-    # "i want the red one on the blue one and then ...": a placement said as a wish
-    text = re.sub(rf"\b(?:i|we)\s+(?:want|need|would\s+like|'d\s+like)\s+(?=(?:the|a|an)\s+(?:(?:{COLOR_RE})\s+)?(?:one|cube|block)?\s*"
-                  r"(?:on|onto|on\s+top\s+of|next\s+to|beside|behind|in\s+front\s+of|under|between|to\s+the\s+(?:left|right)\s+of)\b)",
-                  "put ", text)
+    text = lexicon.rewrite(lexicon.PLACEMENT_WISH_REWRITES, text)
     text = lexicon.POLITE_CONDITION_RE.sub(" ", text)
     text = lexicon.PREAMBLE_RE.sub("", text).strip()
     asked_by += [(m.group("what"), "what the task is for") for m in lexicon.PURPOSE_RE.finditer(text)]
@@ -858,86 +834,23 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.CLOSING_RE.sub("", text)
     text = lexicon.EPISODE_END_RE.sub("", text)
     text = lexicon.EVAL_LOGISTICS_RE.sub("", text).strip()
-    # "the robot stacks the red block on ...": the command the sentence describes
-    text = re.sub(r"^(?:the\s+|a\s+)?(?:robot(?:ic)?(?:\s+arm)?|agent|arm)\s+(stack|put|place|move|push|arrange|build|set|line|pick|slide|lift|make)s\b",
-                  r"\1", text)
+    text = lexicon.rewrite(lexicon.ROBOT_SUBJECT_REWRITES, text)
     for pattern, full in lexicon.CONTRACTIONS:
         text = re.sub(pattern, full, text)
     text = lexicon.BLK_RE.sub(lambda m: "black" if m.group(1) is not None else "block" + (m.group(2) or ""), text)
     text = _SYNONYM_RE.sub(lambda m: lexicon.SYNONYMS[m.group(0)], text)
     text = lexicon.TEXTURED_RE.sub(lambda m: f"the {m.group('c')} block" if m.group("c") in COLORS else m.group(0), text)
-    text = re.sub(r"(\d)\s*[x\u00d7]\s*(?=\d)", r"\1x", text)
-    # "2 rows x 3 cubes": rows of that many cubes
-    text = re.sub(r"\b(\d+)\s+(rows|layers|levels|courses|tiers)\s*[x\u00d7]\s*(?=\d+\b)", r"\1 \2 of ", text)
-    # "3x white", "white x3", "red \u00d7 2": a count of cubes written as a multiplier (a grid's "3x3" stays)
-    text = re.sub(rf"\b(\d+)\s*[x\u00d7]\s*(?=(?:{COLOR_RE})\b)", r"\1 ", text)
-    text = re.sub(rf"\b({COLOR_RE})((?:\s+(?:blocks?|cubes?))?)\s*[x\u00d7]\s*(\d+)\b", r"\3 \1\2", text)
-    text = re.sub(rf"\b(\d+)\s+({COLOR_RE})(?=\s+(?:in|into)\s+(?:a|an|one)\s+(?:row|line|column|circle|ring|tower|stack|pile)\b)",
-                  r"\1 \2 cubes", text)  # "3 white in a row": three cubes, not a count and a cube
-    text = re.sub(r"\b(\d+)(?:\s+|\s*-\s*)by(?:\s+|\s*-\s*)(?=\d)", r"\1x", text)
-    # "on(red, green)", "(on red green)": a goal written as a planning predicate
-    text = re.sub(rf"\(?\bon\s*(?:\(\s*|\s+)({COLOR_RE})\s*,?\s+({COLOR_RE})\s*\)", r"the \1 block on the \2 block", text)
-    # "put cyan cube at back right corner of table": the articles a terse or non-native writer leaves out
-    text = re.sub(rf"(?:^|{_BARE_OBJECT_BEFORE})(?=(?:{COLOR_RE})\s+(?:block|cube|brick|box)\b)", "the ", text)
-    text = re.sub(r"\b(at|to|in|on|of|near)\s+(?=(?:front|back|rear|left|right)(?:\s+(?:left|right))?\s+(?:side|corner|edge|half|part|end)\b"
-                  r"|(?:middle|center|centre)\s+of\b|table\b|(?:middle|center|centre)\s*(?:[.!,;]|$))", r"\1 the ", text)
+    text = lexicon.rewrite(lexicon.NOTATION_REWRITES, text)
     if re.search(r"\bwalls?\b", text):  # "a two-layer wall with blue on the bottom, three cubes per layer"
         text = lexicon.WALL_LAYER_ROLE_RE.sub(lambda m: f"{m.group('where')} layer {m.group('c')}", text)
         text = lexicon.PER_LAYER_RE.sub(_per_layer, text)
     text = _label_tower_roles(text)
-    # "put digit 7 on top of digit 2": a label cube named without its article
-    text = re.sub(r"(?<![\w'])(?<!the\s)(?<!a\s)(?<!each\s)(?<!every\s)(?<!any\s)\b(digit|number|letter)\s+(?=(?:\d|[A-Z])\b(?!\s*(?:,|to\b|-)))",
-                  r"the \1 ", text)
-    # "the cube the blue on the cube the red": a colour after its noun and an article (Italian, Arabic)
-    text = re.sub(rf"\bthe\s+(cubes?|blocks?|box(?:es)?|patch(?:es)?)\s+the\s+({COLOR_RE})\b"
-                  rf"(?!\s+(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?)\b)", r"the \2 \1", text)
-    # "the cube brown on the cube orange", "block purple on block yellow", "the cube of colour blue": a colour after its noun
-    text = re.sub(rf"(?<!every )(?<!each )(?<!all )(?<!any )\b(cube|block|box|patch)\s+(?:of\s+(?:the\s+)?colou?r\s+)?({COLOR_RE})\b"
-                  rf"(?!\s*(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?)\b|\s*(?:,|and\b|or\b)\s*(?:the\s+)?(?:{COLOR_RE})\b)",
-                  r"\2 \1", text)  # a list after the noun ("the cube red, blue and green") is left as it is
-    # "two cubes gray and the cube brown": a counted colour after its noun (Russian, Spanish habits)
-    text = re.sub(rf"\b(\d+|{lexicon.COUNT_WORD_RE})\s+(cubes|blocks)\s+({COLOR_RE})s?\b(?!\s*(?:cubes?|blocks?|ones?|patch(?:es)?)\b|\s*,\s*(?:{COLOR_RE})\b|\s+(?:{COLOR_RE})\b)",
-                  r"\1 \3 \2", text)  # the colour may agree in number ("the two cubes oranges", French and Spanish)
-    # "..., green cube on the red patch too": a clause said as well as the others, as every clause of a goal is
-    text = re.sub(r"(?<=\w)\s*,?\s+(?:too|as\s+well)\s*(?=[.;!]|$)", "", text)
-    # "between the cubes labelled 4 and 6": each label its own cube
-    text = re.sub(r"\bthe\s+(cube|block)s\s+(labell?ed|marked|with)\s+([a-z0-9])\s*(?:,\s*|\s+and\s+)([a-z0-9])\b",
-                  r"the \1 \2 \3 and the \1 \2 \4", text)
-    # "the green in bottom", "with gray between.": a role said without its article or its "in" (non-native habits)
-    text = re.sub(r"\b(?:in|at|on)\s+bottom\b", "at the bottom", text)
-    text = re.sub(r"(?<!\bin )\bbetween(?=\s*(?:[.;!]|$))", "in between", text)
-    # "a tower of 3 reds", "two greens and a blue": a counted colour said as a plural noun
-    text = re.sub(rf"\b(\d+|{lexicon.COUNT_WORD_RE})\s+({COLOR_RE})s\b(?!\s*(?:cubes?|blocks?|ones?|patch(?:es)?)\b)", r"\1 \2 cubes", text)
-    # "the corner back right", "the part front of the table": a place's words after its noun (Spanish, French)
-    text = re.sub(r"\bthe\s+(corner|side|part|edge)\s+((?:front|back|rear)(?:[\s-]+(?:left|right))?|left|right)\b", r"the \2 \1", text)
-    # "tower | top: pink | bottom: gray", "red / white / red / white": a table row's or a list's separators
-    text = re.sub(r"\s*\|\s*", ", ", text)
-    text = re.sub(rf"\b({COLOR_RE})\s*/\s*(?=(?:{COLOR_RE})\b)", r"\1, ", text)
-    # "a pyramid: the bottom three are yellow, the next two are orange, ...": each layer's count and colour
-    text = re.sub(rf"\bthe\s+(bottom|lowest|next|middle|top)\s+(\d+|{lexicon.COUNT_WORD_RE})\s+(?:are|is|being)\s+(?:all\s+)?"
-                  rf"({COLOR_RE})\b",
-                  lambda m: m.group(0) if m.group(2) in ("one", "1") else  # "the top one is red": the top cube's rule
-                  f"{lexicon.NUMBER_WORDS.get(m.group(2), m.group(2))} {m.group(3)} cubes "
-                  + {"bottom": "on the bottom", "lowest": "on the bottom", "top": "on top"}.get(m.group(1), "in the middle"), text)
+    text = lexicon.rewrite(lexicon.WORD_ORDER_REWRITES, text)
     two_colours = re.search(rf"\b(?:the|a|an)\s+((?:{COLOR_RE})\s+(?:{COLOR_RE}))\s+(?:block|cube|one)\b(?!s)", text)
     if two_colours and len(set(two_colours.group(1).split())) == 2:  # "put the blue green cube on ...": one cube, two colours
         raise ParseError(f"'{two_colours.group(0)}' in \"{original[:80]}\" names one cube by two colours; say which colour it "
                          "is, or list the cubes (\"the blue and the green cube\"), or use --model")
-    # "blue blue red red", "red blue red blue": a transcript's list of cubes with no commas, a colour
-    # said again for each cube; "the red red block" is one cube (a stutter)
-    text = re.sub(rf"(?P<det>\b(?:the|a|an)\s+)?\b(?P<run>(?:{COLOR_RE})(?:\s+(?:{COLOR_RE}))+)\b(?P<noun>\s+(?:block|cube|one)\b)?",
-                  lambda m: m.group(0) if len(set(m.group("run").split())) == len(m.group("run").split())
-                  else (m.group("det") + re.sub(rf"\b({COLOR_RE})(?:\s+\1\b)+", r"\1", m.group("run")) + m.group("noun"))
-                  if m.group("det") and m.group("noun")
-                  else (m.group("det") or "") + ", ".join(m.group("run").split()) + (m.group("noun") or ""), text)
-    # "in the corner? the back left one", "the corner - the front right one": which corner, said after
-    text = re.sub(r"\bthe\s+corner\s*(?:[,?:;\-\u2013\u2014]+|\.\.\.)\s*(?:i\s+mean\s+|namely\s+)?the\s+(front|back|rear|far)\s+"
-                  r"(left|right)\s+(?:one|1|corner)\b", r"the \1 \2 corner", text)
-    # "LINE front edge: red, red, red": a terse line's place said with no preposition
-    text = re.sub(r"\b(lines?|rows?)\s+(?=(?:front|back|rear|left|right)\s+(?:edge|side)\b)", r"\1 at the ", text)
-    text = re.sub(r"\b(?:box|cube|block)[\s-]shaped\s+(?=(?:blocks?|cubes?|bricks?)\b)", "", text)  # "the blue box-shaped block"
-    text = re.sub(r"\b(spell(?:s|ing)?)(?:\s+out)?\s+the\s+(?:name|word)\b", r"\1", text)  # "spell out the name EVA"
-    text = re.sub(r"\b(?:a\s+)?long\s+way\s+(?:away\s+)?from\b", "far from", text)  # "a long way from the orange block"
+    text = lexicon.rewrite(lexicon.LOOSE_PHRASE_REWRITES, text)
     # "... on the green patch and the blue block on the same patch": the one patch named before
     for m in reversed(list(re.finditer(r"\bthe\s+same\s+(?:goal\s+)?(?:patch|pad|mat|tile|area)\b", text))):
         before = {c for c in re.findall(rf"\b({COLOR_RE})\s+(?:goal\s+)?(?:patch|pad|mat|tile|area)\b", text[:m.start()])}
@@ -951,12 +864,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                 raise ParseError(f"'{said_first.group(1)} first' in \"{original[:80]}\" puts first a cube the list does not "
                                  "start with; say the order once, or use --model")
             text = text[:said_first.start()] + text[said_first.end():]  # said again: the list's first (it had been a 4th cube)
-    # "Stack red, green, blue from the top down", "Tower (top first): ...": a list from the top
-    text = re.sub(r"\b(?:from\s+the\s+top(?:\s+down(?:wards?)?)?|from\s+top\s+down|top[\s-]+down|top\s+first|starting\s+(?:from|at|with)"
-                  r"\s+the\s+top)\b(?!\s+(?:of|left|right)\b)",
-                  lambda m: m.group(0) if re.search(r"\b(?:second|third|fourth|fifth|\d(?:st|nd|rd|th))\s*(?:one\s+)?$",
-                                                    m.string[:m.start()]) else "from top to bottom",  # ("second from the top": a rank)
-                  text)
+    text = lexicon.rewrite(lexicon.TOP_DOWN_REWRITES, text)
     # "Make a tower. Top: red. Middle: green. Bottom: blue.": each role's cube, whatever order the roles are said in (the
     # colours had been read as a list from the bottom, red at the bottom)
     said = list(re.finditer(rf"(?<!\bto\s)\b(top|middle|bottom|base)\s*[:=]\s*({COLOR_RE})\b(?!\s*,\s*(?:{COLOR_RE}))", text))
@@ -965,10 +873,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
             r"\b(?:towers?|stacks?|stacked)\b", text):
         ranked = [roles[r] for r in ("bottom", "middle", "top") if r in roles]
         text = text[:said[0].start()] + "from bottom to top: " + ", ".join(ranked) + text[said[-1].end():]
-    # "Build a tower: the top is red, then blue, then green": listed from that end (it had been read bottom first)
-    text = re.sub(rf"\b(?:the\s+)?(top|bottom|base)(?:\s+(?:one|cube|block))?\s+(?:is|:)\s+((?:{COLOR_RE})(?:\s*(?:,\s*(?:and\s+)?(?:then\s+)?"
-                  rf"|\s+(?:and\s+)?then\s+)(?:{COLOR_RE}))+)\b(?!\s+(?:on|at|in)\b)",
-                  lambda m: f"from {'top to bottom' if m.group(1) == 'top' else 'bottom to top'}: {m.group(2)}", text)
+    text = lexicon.rewrite(lexicon.TOP_LIST_REWRITES, text)
     text = lexicon.END_ROLE_WORD_RE.sub(lambda m: f" with the {m.group('c')} cube "
                                         + ("at the bottom" if m.group("w") in ("lowest", "bottommost") else "on top"), text)
     inner = lexicon.INNER_POSITION_RE.search(text)
@@ -987,38 +892,12 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         raise ParseError(f"'centered' in \"{original[:80]}\" does not say where the centre is for the builtin parser; say "
                          "\"in the center of the table\" after the structure (e.g. \"build a tower of red and blue in the "
                          "center of the table\"), or use --model")
-    # "the black cube and the white cube should be far apart": one far from the other
-    text = re.sub(rf"\b(the\s+(?:{COLOR_RE})\s+(?:block|cube))\s+and\s+(the\s+(?:{COLOR_RE})\s+(?:block|cube))\s+"
-                  r"((?:should|must|need\s+to|have\s+to)\s+(?:be|end\s+up)|are|end\s+up)\s+far\s+apart\b", r"\1 \3 far from \2", text)
-    text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall|wide|long|deep)", r"\1 \2", text)
+    text = lexicon.rewrite(lexicon.FAR_APART_REWRITES, text)
     text = _compass(text)
-    text = re.sub(r"\b(?:to|onto)\s+the\s+top\s+of\b(?!\s+the\s+(?:table|workspace|board)\b)|\b(?:at|to|on)\s+top\s+of\b",
-                  "on top of", text)  # "at top of" ("to the top of the table" is its far side, read below)
-    # "to its left": the relation to the cube "it" stands for (resolved like "to the left of it")
-    text = re.sub(r"\b(?:to|on|at)\s+(its|their)\s+(left|right)(?:\s+(?:hand\s+)?side)?\b",
-                  lambda m: f"to the {m.group(2)} of {'it' if m.group(1) == 'its' else 'them'}", text)
-    # "on the blue block's left": the relation to that cube (it compiled a stack on it)
-    text = re.sub(rf"\b(?:on|to|at)\s+the\s+((?:{COLOR_RE})\s+(?:block|cube|one))'s\s+(left|right)(?:\s+(?:hand\s+)?side)?\b",
-                  r"to the \2 of the \1", text)
-    text = re.sub(rf"\b(?:on|to|at|in)\s+the\s+((?:{COLOR_RE})\s+(?:block|cube|one))'s\s+(front|back|rear)(?:\s+side)?\b",
-                  lambda m: f"{'in front of' if m.group(2) == 'front' else 'behind'} the {m.group(1)}", text)
-    # "the red and green blocks on either side of the blue block": the blue block between them
-    text = re.sub(rf"\b(put|place|set|move)\s+the\s+({COLOR_RE})\s+and\s+(?:the\s+)?({COLOR_RE})\s+(blocks|cubes)\s+"
-                  rf"(?:on|at|to)\s+(?:either|each|both|opposite)\s+sides?\s+of\s+the\s+({COLOR_RE})\s+(?:block|cube|one)\b",
-                  lambda m: f"{m.group(1)} the {m.group(5)} {m.group(4)[:-1]} between the {m.group(2)} {m.group(4)[:-1]} and "
-                            f"the {m.group(3)} {m.group(4)[:-1]}", text)
-    # "put one block on (top of) the other": the two blocks stacked, either on top
-    text = re.sub(r"\b(put|place|stack|set)\s+one\s+(block|cube)\s+(?:on|onto|upon)\s+(?:top\s+of\s+)?the\s+other(?:\s+one)?\b",
-                  r"\1 two \2s on top of each other", text)
+    text = lexicon.rewrite(lexicon.RELATION_SIDE_REWRITES, text)
     text = lexicon.POSTURE_RE.sub("", text)
     text = _counted_list_nouns(text)
-    # "in a row along the back edge[, ...]": at that edge of the table ("along" is otherwise no word of ours)
-    text = re.sub(r"\balong\s+(?=the\s+(?:(?:far|very)\s+)?(?:front|back|rear|left|right)(?:\s+(?:hand\s+)?(?:side|edge|end))?"
-                  r"(?:\s+of\s+the\s+(?:table|workspace))?\s*(?:[.!,;]|$))", "at ", text)
-    # "a red tower and a blue tower, each three high": the height reaches each tower
-    text = re.sub(rf"\b(?:a|one)\s+({COLOR_RE})\s+(tower|stack|column)\s+and\s+(?:a|one|another)\s+({COLOR_RE})\s+(?:tower|stack|column)"
-                  r",?\s+(?:each|both)\s+(\d+|two|three|four|five|six)\s+(?:(?:blocks?|cubes?|levels?|stor(?:y|ey|ies|eys))\s+)?(?:high|tall)\b",
-                  r"a \2 of \4 \1 blocks and a \2 of \4 \3 blocks", text)
+    text = lexicon.rewrite(lexicon.EDGE_AND_EACH_REWRITES, text)
     # "on the left side and the blue block on the right side of the table": each side the table's
     for part in ("side", "half", "edge"):  # "... to the left half of the table and the white cube to the right half"
         # "on the left side and ... on the right side": the table's two sides (both said, neither of a cube)
@@ -1039,51 +918,20 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     if re.search(r"\b(?:stack|stacked|tower|towers|stacks)\b", text):
         text = re.sub(r"\b(?:goes\s+|is\s+|sits\s+|stands\s+)?in\s+between\b(?!\s+(?:the|them|those|these|of|a|an|it|each)\b)",
                       "in the middle", text)
-    # "into the middle of the black patch": on it (a cube on a patch is on it wherever it stands there)
-    text = re.sub(rf"\b(?:in|into|onto|on|at|to)\s+the\s+(?:middle|center|centre)\s+of\s+the\s+((?:{COLOR_RE})\s+(?:goal\s+|target\s+)?patch)\b",
-                  r"on the \1", text)
-    text = re.sub(rf"\b(starting|beginning)\s+(?:from|at)\s+the\s+(left|right|front|back)(?:\s+end)?\s*,?\s*with\s+(?:the\s+)?({COLOR_RE})\b",
-                  r"\1 with \3 on the \2", text)  # "starting from the left with blue": blue the first from the left
+    text = lexicon.rewrite(lexicon.PATCH_CENTRE_AND_START_REWRITES, text)
     first = re.search(rf"\b(?:{COLOR_RE})\b", text)  # "... starting with red on the left": red first, left to right
     text = lexicon.END_SIDE_RE.sub(lambda m: f"{m.group('verb')} with {m.group('c')} from {lexicon.END_SIDE_DIRECTION[m.group('side')]}"
                                    if first and first.group(0) == m.group("c") else m.group(0), text)
     text = lexicon.START_SIDE_RE.sub(lambda m: f"from {lexicon.END_SIDE_DIRECTION[m.group('side')]}", text)
     text = lexicon.PILE_ON_RE.sub("stack ", text)
     text = lexicon.TOTAL_RE.sub(lambda m: f"{m.group(1)} {m.group(2) or 'blocks'}" if m.group(1) else "", text)
-    text = re.sub(r"\btoward(?:s)?\b", "to", text)
-    # "put green cube to yellow cube left side", "to the blue block's right": a side of the landmark cube
-    text = re.sub(rf"\b(?:to|on|at)\s+(the\s+(?:{COLOR_RE})\s+(?:block|cube|one))(?:'s)?\s+(?:the\s+)?(left|right)(?:\s*-?\s*hand)?"
-                  rf"(?:\s+side)?\b(?!\s+(?:of|corner|edge|half|part)\b)", r"to the \2 of \1", text)
-    # "move the red block to the front of the green patch": in front of that cube or patch
-    text = re.sub(rf"\bto\s+the\s+front\s+of\s+(?=the\s+(?:{COLOR_RE})\s+(?:goal\s+|target\s+)?(?:block|cube|patch|one)\b)",
-                  "in front of ", text)
-    # "put a red block on the red block": two red cubes (the other had been the same cube, a contradiction)
-    # (alone: in a sequence of placements "the blue block" is one placed before, :mod:`rpg.schema.clauses`)
-    text = re.sub(rf"\b(a|an)\s+({COLOR_RE})\s+(block|cube)\s+((?:on(?:to)?(?:\s+top\s+of)?|next\s+to|beside)\s+)the\s+\2\s+(block|cube)\b"
-                  r"(?=\s*[.!]?\s*$)", r"\1 \2 \3 \4another \2 \5", text)
-    # "push the blue block to the red block": moved up to it, i.e. next to it (Language-Table, Demo2Code)
-    text = re.sub(rf"\b(push|move|slide|put|bring|shift)\s+the\s+((?:{COLOR_RE})\s+(?:block|cube))\s+to\s+"
-                  rf"(the\s+(?:{COLOR_RE})\s+(?:block|cube))\b(?!\s+(?:of|patch)\b)", r"\1 the \2 next to \3", text)
-    text = re.sub(r"\b(?:so\s+(?:that\s+)?it(?:'s|\s+is)\s+)?touch(?:ing|es)?\b", "next to", text)
-    text = re.sub(r"\bfollowed\s+by\b|\btopped\s+(?:off\s+)?(?:with|by)\b", "then", text)
-    # "and finish with a white cube at the top": the last of a sequence
-    text = re.sub(r"\b(?:(and)\s+)?(?:finish|end)(?:\s+(?:it|them|the\s+(?:tower|stack|row|line)))?(?:\s+off)?\s+with\b",
-                  lambda m: f"{m.group(1) or ''} then".strip() if re.search(r"\b(?:then|add)\b", m.string[:m.start()])
-                  else m.group(0), text)  # only after a sequence ("add yellow, then orange, and finish with white")
-    text = re.sub(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+of\s+the\s+(?=\w+\s+(?:blocks|cubes|boxes)\b)", r"\1 ", text)
-    text = re.sub(r"\b(?:to|on|at)\s+the\s+(left|right)(?:[\s-]+hand)?\s+side\s+of\b(?!\s+the\s+(?:table|workspace)\b)",
-                  r"to the \1 of", text)
-    text = re.sub(r"\bon\s+top\s+(?=the\b)", "on top of ", text)
-    # "a row of white cubes, three of them": the count said after the cubes
-    text = re.sub(rf"\b((?:{COLOR_RE})\s+)?(cubes|blocks)\s*,?\s+(\d+|{lexicon.COUNT_WORD_RE})\s+of\s+them\b"
-                  r"(?=\s*(?:[,.;!?]|$|(?:at|in|on|along|across|please)\b))",
-                  lambda m: f"{NUMBER_WORDS.get(m.group(3), m.group(3))} {m.group(1) or ''}{m.group(2)}", text)
+    text = lexicon.rewrite(lexicon.LANDMARK_REWRITES, text)
     if re.search(r"\b(?:line|lines|row|rows|order|sort\w*|spell\w*|reads?|ascending|descending|increasing|decreasing)\b", text):
         # "in increasing order from left", "spell it from the right": the reading direction, its far end unsaid
         text = re.sub(r"\bfrom\s+(?:the\s+)?(left|right|front|back)(?:\s+(?:side|end))?\b(?!\s*(?:to|of|side|end|corner|edge|half|part)\b)",
                       lambda m: "from " + {"left": "left to right", "right": "right to left", "front": "front to back",
                                            "back": "back to front"}[m.group(1)], text)
-    text = re.sub(r"\s+please(?=\s*[:,;.!])", "", text)  # "two stacks please: ..."
+    text = lexicon.rewrite(lexicon.PLEASE_REWRITES, text)
     text = " ".join(w for w in re.split(r"(?<=\S)\s+(?=\S)", text)
                     if re.sub(r"[.,;:!?]+$", "", w) not in IGNORABLE_HERE)
     text = re.sub(r"\s+([.,;:!?])", r"\1", text)
@@ -1184,43 +1032,20 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                 and re.search(rf"\b(?:{COLOR_RE})\s+(?:cube|block|brick)\b", text):  # ("the wooden block": a filler, no colour said)
             raise ParseError(f"'{m.group(0)}' in \"{original[:80]}\": '{w}' stands where a cube's colour or label does, but is "
                              "neither; name the colour (e.g. \"the white cube\"), or use --model")
-    text = re.sub(r"\bvertical (?:column|stack)\b|\bpillar\b", "tower", text)
-    text = re.sub(r"\bcolumn(s?)\b(?=.*\b(?:front\s+to\s+back|back\s+to\s+front|left\s+to\s+right|right\s+to\s+left)\b)",
-                  r"line\1", text)  # "a column of three cubes going from front to back" lies along the table
-    text = re.sub(r"\b(a|one|single|the same)\s+column\b", r"\1 tower", text)  # "in a column"; "2 columns" stay grids
-    text = re.sub(r"\b(?:goal|target)\s+(?:area|zone|region|spot|location|position|point|pad|mat|marker|square|tile|field)(s?)"
-                  r"(?:\s+patch(?:es)?)?\b", r"goal patch\1", text)  # "the target square patch": one patch
-    text = re.sub(rf"\b({COLOR_RE})\s+(?:(?:goal|target)\s+)?(?:pad|mat|marker|zone|area|region|tile|field)(s?)\b", r"\1 patch\2", text)
-    # "onto the yellow square": a square a cube is put on is a patch ("build a red square" stays a structure)
-    text = re.sub(rf"\b(on|onto|into|in|to)\s+the\s+({COLOR_RE})\s+square\b", r"\1 the \2 patch", text)
-    text = re.sub(r"\btarget(s?)\b(?!\s+(?:goal\s+)?patch)", r"patch\1", text)  # "onto the blue target"
-    text = re.sub(r"\bpick(?:\s+up)?\s+and\s+(place|put|set|drop)\b", r"\1", text)  # "pick and place a block on ..."
-    text = re.sub(r"\b(?:pick up|grab|take|lift|get|pick)\s+(the\s+(?:[a-z0-9']+\s+){0,4}?(?:block|cube|box|one))(?:\s+up)?"
-                  r"(?:,?\s*and\s+(?:then\s+)?|,?\s*then\s+|,\s*)(place|put|set|stack|move|drop|lay)\s+it\b", r"\2 \1", text)
-    text = re.sub(r"\bside by side\b", "next to each other", text)
+    text = lexicon.rewrite(lexicon.STRUCTURE_NOUN_REWRITES, text)
     # a map's "top left corner" is the far one (the robot at the bottom edge; lexicon's compass)
     diagonal = re.search(r"\b(?:top|bottom|upper|lower|front|back|rear)[\s-]+(?:left|right)\s+(?:side\s+)?of\s+"
                          r"(?!(?:the\s+)?(?:table|workspace)\b)(?:the\s+)?[a-z]+", text)
     if diagonal:  # "to the top left of the blue block": two relations at once, or a corner of the cube?
         raise ParseError(f"'{diagonal.group(0)}' names a diagonal of a cube, which rpg's relations do not have (each holds "
                          "along one axis): say one relation (\"left of\", \"behind\")")
-    text = re.sub(r"\b(the\s+)?(?:top|upper)[\s-]+(left|right)\b(?!\s+of\b)(?=\s+(?:corner|edge|side)\b|\s*(?:[.,;!]|$))",
-                  r"\1back \2", text)
-    text = re.sub(r"\b(the\s+)?(?:bottom|lower)[\s-]+(left|right)\b(?!\s+of\b)(?=\s+(?:corner|edge|side)\b|\s*(?:[.,;!]|$))",
-                  r"\1front \2", text)
-    # "push the pink block to the top of the table" (Language-Table's map words): the far side, the back
-    text = re.sub(r"\bthe\s+(top|upper|bottom|lower)\s+(?:(edge|side|half|part|end)\s+)?of\s+the\s+(?=(?:table|workspace|board)\b)",
-                  lambda m: f"the {'back' if m.group(1) in ('top', 'upper') else 'front'} {m.group(2) or ''} of the ".replace("  ", " "),
-                  text)
+    text = lexicon.rewrite(lexicon.MAP_WORD_REWRITES, text)
     if not re.search(r"\b(?:towers?|stacks?|stacked|stacking|piles?|columns?|pyramids?|walls?|on\s+top|layers?|levels?)\b", text):
         # "move all the red blocks to the bottom", with no tower to have a bottom: the near side of the map, the front
         text = re.sub(r"\b(push|move|slide|shift|sweep|bring|drag)\b([^.;]*?)\b(to|towards?)\s+the\s+(top|bottom)\b"
                       r"(?!\s+(?:of|left|right|layer|row|cube|block|one|edge|side|corner)\b)",
                       lambda m: f"{m.group(1)}{m.group(2)}{m.group(3)} the {'back' if m.group(4) == 'top' else 'front'}", text)
-    text = re.sub(r"\b(?:(\w+)\s+)?((?:the|a|an)\s+(?:letter|digit|number)\s+'?[a-z0-9]'?)(?=\s|[.,;!]|$)(?!\s+(?:block|cube|box))",
-                  lambda m: m.group(0) if m.group(1) in ("with", "showing", "labeled", "labelled", "marked", "bearing")
-                  else m.group(0) + " block", text)  # "stack the letter A on the letter B": those are cubes
-    text = re.sub(rf"\b({COLOR_RE})\s+one(s?)\b", lambda m: f"{m.group(1)} block{'s' if m.group(2) else ''}", text)
+    text = lexicon.rewrite(lexicon.LABEL_CUBE_REWRITES, text)
     for m in reversed(list(lexicon.BOTH_OF_THEM_RE.finditer(text))):  # "... far from both of them": the cubes before
         named = [c for c in dict.fromkeys(re.findall(rf"\b({COLOR_RE})\b(?!\s+(?:goal\s+|target\s+)?patch)", text[:m.start()]))
                  if c != m.group("c")]
@@ -1254,8 +1079,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         text = pattern.sub(written_out, text)
     for w, n in NUMBER_WORDS.items():
         text = re.sub(rf"\b{w}\b", str(n), text)
-    text = re.sub(r"\bgrey\b", "gray", text)
-    text = re.sub(r"(\d)-(block|cube|layer|level|story|storey|high|tall|tier|wide|long|deep)", r"\1 \2", text)
+    text = lexicon.rewrite(lexicon.SPELLING_REWRITES, text)
     return " ".join(_structure_phrases(" ".join(text.split())).split()), original, dropped
 
 
