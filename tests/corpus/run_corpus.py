@@ -59,6 +59,7 @@ STRANGER_SETS = {
     "stranger22": ("stranger22.yaml", "STRANGER set 22 (stranger22.yaml, development material)"),
     "stranger23": ("stranger23.yaml", "STRANGER set 23 (stranger23.yaml, development material)"),
     "stranger24": ("stranger24.yaml", "STRANGER set 24 (stranger24.yaml, development material, first run at the end of the seventeenth session)"),
+    "stranger25": ("stranger25.yaml", "STRANGER set 25 (stranger25.yaml, development material)"),
 }
 SPLITS = HERE / "splits.yaml"
 
