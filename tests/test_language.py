@@ -3433,7 +3433,7 @@ def test_a_role_or_each_other_adds_no_cube_and_no_order(text):
     ("Make a tower of red, blue, green where blue is highest", ["stack(red,green,blue)"]),  # (a fourth cube, blue, before)
     ("Make a row of red, blue and green, red first, from left to right", ["line[left_to_right](red,blue,green)"]),
     ("Line up red, green and blue in that order.", ["line[sequence](red,green,blue)"]),  # the order had been dropped
-    ("Make a pile of red and blue and a pile of green.", ["piles(red,blue,green;by=None)"]),  # two piles (one before)
+    ("Make a pile of red and blue and a pile of green.", ["pile(blue,red)", "pile(green)"]),  # two piles (one before)
 ])
 def test_attack_silent_errors_read_as_said(text, expected):
     assert meaning(parse(text)) == expected
@@ -3522,3 +3522,42 @@ def test_each_other_after_several_cubes_is_refused():
 ])
 def test_a_cube_s_own_patch_is_its_colour(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # spoken self-corrections (stranger25): refused over "no"/"wait" before, or read with the corrected words
+    ("right so put four cubes, no wait, five cubes in a pile in the middle", ["pile(blue,green,orange,red,yellow)@center"]),
+    ("uh the white one goes in front of, no sorry, behind the yellow one", ["behind(white,yellow)"]),
+    ("um so put the red, no, the orange one on top of the blue one", ["stack(blue,orange)"]),
+    ("put the cyan cube to the left of the, wait, to the right of the purple cube", ["right_of(cyan,purple)"]),
+    # a pause "er" between commas is no list comma (pink had become the second cube of four, not the top)
+    ("okay um stack four cubes and make the bottom one brown and the top one, er, pink", ["stack(brown,red,blue,pink)"]),
+    ("stack red, um, blue and green", ["stack(red,blue,green)"]),
+])
+def test_spoken_corrections_and_pauses(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # each colour's own count (both piles had taken the first count: 3 blue cubes for "2 blue")
+    ("build 2 piles: 3 red in one, 2 blue in the other", ["piles(blue,blue,red,red,red;by=color)"]),
+    ("separate the 3 red and 3 blue cubes into piles", ["piles(blue,blue,blue,red,red,red;by=color)"]),  # (3 piles before)
+    ("a pile of red and blue and a pile of green", ["pile(blue,red)", "pile(green)"]),
+])
+def test_piles_keep_each_colour_s_count(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,words", [
+    ("put one cube on each patch", "does not say how many patches"),  # (3 gray patches had been made up)
+    ("Place one cube on each patch: red on the red patch, blue on the blue patch.", "say each cube's patch once"),
+])
+def test_each_patch_without_a_count_is_refused(text, words):
+    with pytest.raises(ParseError, match=re.escape(words)):
+        parse(text)
+
+
+@pytest.mark.parametrize("text", ["tower of three, blue at the bottom, other two don't matter",
+                                  "stack the pink, the blue, and the gray, doesn't matter which order"])
+def test_words_leaving_the_rest_free_are_no_negation(text):
+    assert type(parse(text).goal).__name__ in ("UnorderedStack", "AnchoredStack")

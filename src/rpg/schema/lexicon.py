@@ -971,7 +971,9 @@ ANY_ORDER_RE = re.compile(
     r"|(?:the\s+)?order\s+(?:thereof\s+)?(?:being\s+)?at\s+(?:the\s+robot's|your|its)\s+discretion"
     r"|how(?:ever)?\s+you\s+(?:prefer|like|want|wish|please)"
     r"|(?:either|any|whichever)\s+(?:one\s+|1\s+|cube\s+|block\s+)?(?:on\s+top|at\s+the\s+(?:top|bottom))(?:\s+(?:is\s+)?(?:fine|ok(?:ay)?))?"
-    r"|whichever\s+way(?:\s+(?:is\s+)?(?:fine|round|around))?)\b\)?")
+    r"|whichever\s+way(?:\s+(?:is\s+)?(?:fine|round|around))?"
+    r"|(?:it\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\s+(?:in\s+)?(?:which|what)\s+order"
+    r"|(?:in\s+)?(?:which|what)\s+order\s+(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter)\b\)?")
 """Words that leave the cubes' order free ("stack them in any order", ", any order is fine",
 "the order doesn't matter", "in no particular order"): read as the one phrase " in any order"
 before negations are refused (:func:`rpg.schema.reading.normalize`), which no order word
@@ -1016,6 +1018,8 @@ FREE_CHOICE_RE = re.compile(
     r"|[,;(\u2013\u2014-]?\s*\b(?:the\s+)?colou?rs?\s+(?:are\s+)?(?:free|open|up\s+to\s+you|your\s+choice)(?=\s*[.!;)]|\s*$)"
     r"|[,;(\u2013\u2014-]?\s*\b(?:the\s+)?(?:other|remaining)\s+(?:\d+|two|three|four|one)(?:\s+(?:cubes|blocks|ones))?\s+(?:can|may|could)\s+be"
     r"\s+any(?:thing|\s+colou?rs?)?\b"
+    r"|[,;(\u2013\u2014-]?\s*\b(?:the\s+)?(?:other|remaining)\s+(?:\d+|two|three|four|one)(?:\s+(?:cubes|blocks|ones))?\s+"
+    r"(?:do\s*n[o']?t|don't|do\s+not|does\s*n[o']?t|doesn't|does\s+not)\s+matter\b"
     r"|[,;(\u2013\u2014-]?\s*\b(?:it\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\s+(?:exactly\s+|precisely\s+)?where\b"
     r"|[,;(\u2013\u2014-]?\s*\b(?:exactly\s+)?where\s+(?:exactly\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\b"
     r"|[,;(\u2013\u2014-]?\s*\bwhich\s+(?:cubes?|blocks?|ones?)\s+(?:do\s*n[o']?t|don't|do\s+not|does\s*n[o']?t|doesn't|does\s+not)"
@@ -1092,9 +1096,11 @@ Letter: ...", "First lesson, stacking: ..."): the task follows, the heading is d
 SELF_CORRECTION_RE = re.compile(
     r"(?i)(?:[,.;:!?]|\s[-\u2013\u2014])\s*(?:(?:(?:er+m?|uh+|um+)\s*,?\s+)?(?:sorry|i\s+mean|no\s*,?\s+wait|wait\s*,?\s+no"
     r"|(?:er+m?|uh+|um+)\s*,?\s+no|no\s*,?\s+i\s+mean|oops|correction|or\s+rather|make\s+that|scratch\s+that"
-    r"|no(?=\s+(?:the|a|an|on|onto|in|into|next|behind|to|at)\b))\b[,:!.]*\s+)+(?=\S)")
+    r"|no\s*,?\s+sorry|no(?=\s*,?\s+(?:the|a|an|on|onto|in|into|next|behind|to|at)\b)"
+    r"|wait(?=\s*,\s*(?:the|a|an|on|onto|in|into|next|behind|under|to|at|\d+|one|two|three|four|five|six)\b))\b[,:!.]*\s+)+(?=\S)")
 """A writer correcting themselves mid-instruction ("..., sorry, the pink patch", "Stack red on
-blue, I mean blue on red.", "to the left, er no, to the front"): the correction replaces what it
+blue, I mean blue on red.", "to the left, er no, to the front", "the red, no, the orange one", "to the left of the,
+wait, to the right of"): the correction replaces what it
 corrects (:func:`rpg.schema.reading.apply_corrections`); after a pause only (a correction word
 that opens the text is read as it is)."""
 
@@ -1266,8 +1272,22 @@ FILLER_RE = re.compile(r"(?i)(?:^|(?<=[.!?]\s))(?:prego|allora|ecco|dai|senti|go
 "..., va bene?", "God willing, ...", "omg"), and a sentence's opening that only joins it to the
 one before ("Separately, put ...", "In addition, ..."; every sentence of a goal holds together): dropped."""
 
-DISFLUENCY_RE = re.compile(r"(?i)\s*\b(?:uh+m?|um+|erm*|uhm+)\b(?!\s*,?\s*no\b)\s*,?(?=\s|$)")
-"""A speaker's hesitation in a transcript ("put the uh orange cube"): dropped."""
+DISFLUENCY_RE = re.compile(r"(?i)(?P<lead>\s*,)?\s*\b(?:uh+m?|um+|erm*|uhm+)\b(?!\s*,?\s*no\b)\s*(?P<trail>,)?(?=\s|$)")
+"""A speaker's hesitation in a transcript ("put the uh orange cube"): dropped.  A hesitation between
+two commas is a pause, dropped with them ("the top one, er, pink": the top one pink), unless a
+list item comes before it ("red, um, blue": the list's comma stays; "the top one" is no list item)."""
+
+def dropped_hesitation(m: re.Match) -> str:
+    """What :data:`DISFLUENCY_RE`'s match ``m`` leaves: a list's comma, or nothing."""
+    if not m.group("lead"):
+        return ""
+    if not m.group("trail"):
+        return m.group("lead")
+    before = re.search(r"([A-Za-z0-9]+)\W*$", m.string[:m.start()])
+    listed = before is not None and (before.group(1).lower() in COLORS or before.group(1).isdigit()
+                                     or (before.group(1).lower() in NUMBER_WORDS and before.group(1).lower() != "one")
+                                     or len(before.group(1)) == 1)
+    return "," if listed else ""
 
 STUTTER_RE = re.compile(r"(?i)\b(?P<run>(?:[a-z']+\s+){0,2}[a-z']+)\s+(?P=run)\b")
 """Words said twice in a row in a transcript ("the the", "on the on the", "and then and then",

@@ -12,7 +12,7 @@ letter/digit cube by its label, a goal patch as ``patch:<colour>``).  Examples::
     wall(red,red,red|blue,blue,blue)      layers bottom to top (rows, walls, 3D blocks)
     pyramid(blue,green,red|yellow)        layers bottom to top, each layer sorted
     pyramid(blue,green,red)               a pyramid whose cubes may stand in any layer
-    pile(orange,orange,orange)@center     one pile (several piles: piles(...;by=color))
+    pile(orange,orange,orange)@center     one pile (piles by colour: piles(...;by=color); separate piles of said cubes: pile(...) each)
 
 A pyramid or wall shows its layers only where the goal judges which cubes stand in which
 layer (:class:`~rpg.domain.predicates.InLayers`); otherwise its cubes are one sorted list,
@@ -141,6 +141,10 @@ def meaning(schema: TaskSchema) -> list[str]:
             members = p.object_names()
             atoms.append(f"pile({sorted_names(members)})")
             placed.append((len(atoms) - 1, tuple(members)))
+        elif isinstance(p, P.Piles) and p.groups and not p.objects:  # separate piles, each its own cubes: one atom a pile
+            for group in p.groups:
+                atoms.append(f"pile({sorted_names(group)})")
+                placed.append((len(atoms) - 1, tuple(group)))
         elif isinstance(p, P.Piles) and not p.groups:  # piles by an attribute: which cube is listed first says nothing
             atoms.append(f"piles({sorted_names(p.objects)};by={p.by or 'color'})")
         else:
@@ -227,6 +231,17 @@ def _per_cube(atom: str) -> list[str]:
     return [f"in_region({c},{m.group(2)})" for c in m.group(1).split(",")]
 
 
+def _by_colour(atoms: list[str]) -> list[str]:
+    """Separate piles each of one colour, no two alike (``pile(red,red); pile(blue,blue)``), as the
+    one atom of piles sorted by colour (``piles(blue,blue,red,red;by=color)``): the same goal."""
+    piles = [a for a in atoms if re.fullmatch(r"pile\([^;()?*]*\)", a)]
+    colours = [set(a[5:-1].split(",")) for a in piles]
+    if len(piles) < 2 or any(len(c) != 1 for c in colours) or len({next(iter(c)) for c in colours}) != len(piles):
+        return atoms
+    cubes = sorted(c for a in piles for c in a[5:-1].split(","))
+    return [a for a in atoms if a not in piles] + [f"piles({','.join(cubes)};by=color)"]
+
+
 def matches(expected: str, actual: list[str]) -> bool:
     """Whether a corpus meaning (atoms separated by ``; `` outside brackets) equals ``actual``.
 
@@ -234,15 +249,15 @@ def matches(expected: str, actual: list[str]) -> bool:
     A per-cube atom whose cube is ``red*`` (``in_region(red*,back)``: every red cube there)
     matches one or more actual atoms, one per red cube (``in_region(red,back)`` twice), and
     ``in_region(red,red,back)`` stands for one atom per cube; ``reads(DOG)`` matches the reads atom whose text is DOG, whatever its cubes and face; a pile's
-    or piles' cubes match in any order; a grid written without its size (``grid(gray,gray|gray,gray)``) matches a
+    or piles' cubes match in any order, and one-colour piles of distinct colours match piles sorted by colour; a grid written without its size (``grid(gray,gray|gray,gray)``) matches a
     grid of those cubes, whatever its rows.
     """
     if re.search(r"\bgrid\((?!\d+x\d+:)", expected):  # "grid(gray,gray|gray,gray)": a grid's size and rows left unsaid
         expected = re.sub(r"\bgrid\(([^()]*)\)", lambda m: "grid(" + ",".join(sorted(re.split(r"[,|]", m.group(1)))) + ")", expected)
         actual = [re.sub(r"^grid\((?:\d+x\d+:)?([^()]*)\)$", lambda m: "grid(" + ",".join(sorted(re.split(r"[,|]", m.group(1)))) + ")", a)
                   for a in actual]
-    wanted = [w for a in re.split(r";\s+(?![^()]*\))", expected) if a.strip() for w in _per_cube(_unordered(a.strip()))]
-    actual = [w for a in actual for w in _per_cube(_unordered(a))]
+    wanted = _by_colour([w for a in re.split(r";\s+(?![^()]*\))", expected) if a.strip() for w in _per_cube(_unordered(a.strip()))])
+    actual = _by_colour([w for a in actual for w in _per_cube(_unordered(a))])
     for w in [w for w in wanted if re.fullmatch(r"reads\([A-Za-z0-9]+\)", w)]:  # "reads(DOG)": the word read, shortly
         word = w[6:-1]
         actual = [f"reads({word})" if re.fullmatch(rf"reads\([^()]*\btext={re.escape(word)}\b[^()]*\)", a) else a for a in actual]

@@ -597,7 +597,8 @@ def _corrected(before: str, fix: str) -> str | None:
     not clear (then the instruction is read, and refused, as written)."""
     fixed = re.findall(r"[\w'-]+", fix)
     counted = re.sub(r"(?i)\b(?:\d+|[a-z]+)\s+of\s+them\b", " ", fix)  # "..., three of them": a count, no reference
-    if not fixed or lexicon.REFERENCE_PRONOUN_RE.search(counted.lower()) or re.search(r"(?i)\b(?:it|them|one)\b", counted):
+    if not fixed or lexicon.REFERENCE_PRONOUN_RE.search(counted.lower()) or re.search(
+            r"(?i)\b(?:it|them|one)\b", re.sub(rf"(?i)\b(?:{COLOR_RE})\s+one\b", " ", counted)):  # ("the orange one": its cube)
         return None  # "I mean under it": which cube 'it' is depends on what was replaced
     tokens = list(re.finditer(r"[\w'-]+", before))
     lemma = fixed[0].lower() if fixed[0].lower() not in ("just", "then") else (fixed[1].lower() if len(fixed) > 1 else "")
@@ -606,6 +607,7 @@ def _corrected(before: str, fix: str) -> str | None:
         return before[:start] + fix
     first, last = _word_class(fixed[0]), _word_class(fixed[-1])
     recent = [k for k in range(len(tokens) - 1, max(len(tokens) - 5, -1), -1) if _word_class(tokens[k].group(0)) == first]
+    recent = [k for k in recent if tokens[k].group(0).lower() == fixed[0].lower()] or recent  # "to the left of the, wait, to the right"
     if first in ("det", "prep") and recent and not any(  # "on the orange, no the purple cube": the phrase said last
             tokens[k].group(0).lower() in lexicon.PLACEMENT_VERBS for k in range(recent[0], len(tokens))):
         return before[:tokens[recent[0]].start()] + fix
@@ -613,11 +615,16 @@ def _corrected(before: str, fix: str) -> str | None:
                                                                   for p, _ in lexicon.REL_PATTERNS[:-1]):
         verbs = [m for m in tokens if m.group(0).lower() in lexicon.PLACEMENT_VERBS]  # "Stack red on blue, I mean blue on red"
         return before[:verbs[-1].end()] + " " + fix if verbs else None
-    ends = [k for k, m in enumerate(tokens) if _word_class(m.group(0)) == last]
-    for j in reversed(ends):
-        starts = [i for i in range(j, max(j - 8, -1), -1) if _word_class(tokens[i].group(0)) == first]
-        if starts:
-            return before[:tokens[starts[0]].start()] + fix + before[tokens[j].end():]
+    # the phrase of the same shape said last; else the fix's head phrase, its rest continuing the sentence ("put four
+    # cubes, no wait, five cubes in a pile": "five cubes" for "four cubes", then "in a pile")
+    heads = [len(fixed)] + [k for k in range(len(fixed) - 1, 1, -1) if _word_class(fixed[k]) == "prep" and before.rstrip()[-1:].isalnum()
+                            and not re.search(r"\b(?:to|on|onto|in|into|at|of|the|a|an)$", before.rstrip().lower())]
+    for k in heads:
+        ends = [i for i, m in enumerate(tokens) if _word_class(m.group(0)) == _word_class(fixed[k - 1])]
+        for j in reversed(ends if k == len(fixed) else ends[-1:]):
+            starts = [i for i in range(j, max(j - 8, -1), -1) if _word_class(tokens[i].group(0)) == first]
+            if starts and (k == len(fixed) or j == len(tokens) - 1):  # (a head phrase only where the sentence broke off)
+                return before[:tokens[starts[0]].start()] + fix + before[tokens[j].end():]
     if first == "prep":  # "to the left, er no, to the front": the last place said
         preps = [m for m in tokens if _word_class(m.group(0)) == "prep"]
         return before[:preps[-1].start()] + fix if preps else None
@@ -719,7 +726,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     original = lexicon.FILLER_RE.sub("", original).strip()
     original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", original)  # texting's "2" for "to"
     original = lexicon.TEXTED_YOU_RE.sub("you", original)  # "can u build ...": texting's "u"
-    original = lexicon.DISFLUENCY_RE.sub("", original)  # a transcript's "uh", "um"
+    original = lexicon.DISFLUENCY_RE.sub(lexicon.dropped_hesitation, original)  # a transcript's "uh", "um"
     original = lexicon.STUTTER_RE.sub(lambda m: m.group(0) if re.search(rf"\b(?:{COLOR_RE}|{lexicon.COUNT_WORD_RE})\b|\d", m.group("run"), re.I)
                                       and not re.match(r"(?i)(?:the|a|an)\s", m.group("run")) else m.group("run"), original)
     original = lexicon.SPOKEN_CORRECTION_RE.sub(", ", original)  # "... purple patch no I mean the pink patch"
@@ -784,7 +791,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     for m in lexicon.FREE_CHOICE_RE.finditer(text):  # "put the red cube left of the blue cube. colours don't matter"
         rest = text[:m.start()] + text[m.end():]
         unnamed = re.search(rf"\b(?:\d+|{lexicon.COUNT_WORD_RE}|some|other|remaining)\s+(?:more\s+)?(?:cubes|blocks|ones)\b(?!\s+of\b)"
-                            rf"|\b(?:a|an|any|one)\s+(?:cube|block)\b", re.sub(rf"\b(?:\d+|{lexicon.COUNT_WORD_RE})\s+(?:{COLOR_RE})\b", " ", rest))
+                            rf"|\b(?:a|an|any|one)\s+(?:cube|block)\b"
+                            rf"|\b(?:tower|stack|row|line|pile)\s+of\s+(?:\d+|{lexicon.COUNT_WORD_RE})\b(?!\s+(?:{COLOR_RE})\b)", re.sub(rf"\b(?:\d+|{lexicon.COUNT_WORD_RE})\s+(?:{COLOR_RE})\b", " ", rest))
         if re.search(r"colou?r", m.group(0)) and re.search(rf"\b(?:{COLOR_RE})\b", rest) and not unnamed:
             # (with cubes nobody names by colour, "any colours" is theirs: "put two cubes on the purple cube, any colours")
             raise Inexpressible("contradiction", [m.group(0).strip(" ,;(\u2013\u2014-")], "leaves the colours free, but the "

@@ -48,7 +48,8 @@ def stated_count(f: Features, nouns: str = "block|cube|box|piece|object", defaul
     groups = counted_groups(f) if nouns == "block|cube|box|piece|object" else []
     if groups:
         return sum(n for n, _ in groups)
-    m = re.search(rf"\b(\d+)\s+(?:[a-z\-]+\s+){{0,3}}?(?:{nouns})s?\b", f.text)
+    # (the words between are the noun's modifiers: "3 blue cubes into piles" counts cubes, not piles)
+    m = re.search(rf"\b(\d+)\s+(?:(?!(?:into|in|on|onto|cubes?|blocks?)\b)[a-z\-]+\s+){{0,3}}?(?:{nouns})s?\b", f.text)
     if m:
         return int(m.group(1))
     return default

@@ -56,7 +56,16 @@ def recognize_each_patch(f: Features, b: Builder) -> bool:
     if not m:
         return False
     per = int(m.group("k")) if m.group("k") else 1  # "two blocks on each patch"
-    n = int(m.group("n")) if m.group("n") else (stated_count(f, "patch|patche|target", default=None) or (3 if per == 1 else 2))
+    named = set(re.findall(rf"\b({COLOR_RE})\s+(?:goal\s+|target\s+)?patch\b", f.text))
+    if not m.group("n") and not m.group("pcolor") and len(named) >= 2:
+        # "one cube on each patch: red on the red patch, blue on the blue patch": said twice, as a count and patch by patch
+        raise ParseError(f"\"{f.original[:80]}\" says a cube for each patch and names the patches one by one as well; "
+                         "say each cube's patch once (e.g. \"put the red cube on the red patch and the blue cube on the blue "
+                         "patch\"), or use --model")
+    n = int(m.group("n")) if m.group("n") else stated_count(f, "patch|patche|target", default=None)
+    if n is None:  # "put one cube on each patch": how many patches? (3 had been made up)
+        raise ParseError(f"\"{f.original[:80]}\" puts cubes on each patch but does not say how many patches there are; "
+                         "say it (e.g. \"a cube on each of the three patches\"), or use --model")
     if not 2 <= n <= 6:
         raise ParseError(f"cubes on each of {n} patches: use 2 to 6 patches")
     color = canon_color(m.group("color") or m.group("color2") or "red")

@@ -499,9 +499,15 @@ def recognize_piles(f: Features, b: Builder) -> bool:
             # three cubes for each colour: twelve cubes, four piles)
             raise ParseError(f"\"{f.original[:80]}\" asks for {k} piles of cubes of {len(colors)} colours; say which cubes go "
                              "in each pile (e.g. \"a pile of red and blue and a pile of green\"), or use --model")
-        per = stated_count(f, default=None)
-        per = max(2, per // len(colors)) if per else PILE_UNSAID_COUNT
-        groups = [[b.cube(c) for _ in range(per)] for c in colors]
+        said: dict[str, list[int]] = {}  # "3 red in one, 2 blue in the other": each colour's own count
+        for count, c in re.findall(rf"\b(\d+)\s+({COLOR_RE})\b(?!\s+(?:goal\s+|target\s+)?patch)", f.text):
+            said.setdefault(canon_color(c), []).append(int(count))
+        if said and set(said) == set(colors) and all(len(v) == 1 for v in said.values()):
+            groups = [[b.cube(c) for _ in range(said[c][0])] for c in colors]  # (each pile had taken the first count)
+        else:
+            per = stated_count(f, default=None)
+            per = max(2, per // len(colors)) if per else PILE_UNSAID_COUNT
+            groups = [[b.cube(c) for _ in range(per)] for c in colors]
         by = "color"
     outliers = outlier_count(f)
     if outliers:
