@@ -605,7 +605,7 @@ def _corrected(before: str, fix: str) -> str | None:
     if lemma in lexicon.PLACEMENT_VERBS:  # "er no, just put them side by side": a new instruction replaces the sentence
         start = max((m.end() for m in re.finditer(r"[.!?;]\s", before)), default=0)
         return before[:start] + fix
-    first, last = _word_class(fixed[0]), _word_class(fixed[-1])
+    first = _word_class(fixed[0])
     recent = [k for k in range(len(tokens) - 1, max(len(tokens) - 5, -1), -1) if _word_class(tokens[k].group(0)) == first]
     recent = [k for k in recent if tokens[k].group(0).lower() == fixed[0].lower()] or recent  # "to the left of the, wait, to the right"
     if first in ("det", "prep") and recent and not any(  # "on the orange, no the purple cube": the phrase said last
