@@ -3561,3 +3561,29 @@ def test_each_patch_without_a_count_is_refused(text, words):
                                   "stack the pink, the blue, and the gray, doesn't matter which order"])
 def test_words_leaving_the_rest_free_are_no_negation(text):
     assert type(parse(text).goal).__name__ in ("UnorderedStack", "AnchoredStack")
+
+
+@pytest.mark.parametrize("text,expected", [
+    # benchmark spec lines (stranger25): calls, filled template slots, identifiers with parameters
+    ("place_on_patch(obj=red cube, target=blue patch)", ["on_patch(red,patch:blue)"]),
+    ("in-front-of(obj=brown, ref=gray)", ["in_front_of(brown,gray)"]),
+    ("put-block-in-region: block=purple, region=front-right", ["in_region(purple,front_right)"]),
+    ("rearrange: move the {orange} block to the right of the {gray} block", ["right_of(orange,gray)"]),
+    ("put the {dragged_obj: green cube} into the {base_obj: brown patch}", ["on_patch(green,patch:brown)"]),
+    ("spell-word [word=SUN]: letter cubes in a row, left-to-right",
+     ["line[left_to_right](S,U,N)", "reads(S,U,N;direction=left_to_right,face=up,text=SUN)"]),
+    ("pile-5 [region=back]: put five brown cubes in one pile", ["pile(brown,brown,brown,brown,brown)@back"]),
+    ("[eval] stack_3_ordered: top=orange, middle=white, bottom=black", ["stack(black,white,orange)"]),
+    ("stack-two (seed 7): green cube on top of purple cube", ["stack(purple,green)"]),
+    # a row said role by role (its "left" had been read as a cube picked by where it stands now)
+    ("row-3: leftmost=cyan, middle=pink, rightmost=brown", ["line[left_to_right](cyan,pink,brown)"]),
+    ("row of 3 going left to right: red first, green middle, blue last", ["line[left_to_right](red,green,blue)"]),
+])
+def test_benchmark_spec_lines(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_an_identifier_s_glued_count_is_kept():
+    """"stack-any-4: blocks any, order any" had dropped the 4 and made up a stack of two."""
+    schema = parse("stack-any-4: blocks any, order any")
+    assert len(schema.assets) == 4 and type(schema.goal).__name__ == "UnorderedStack"

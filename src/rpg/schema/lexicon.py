@@ -1122,6 +1122,9 @@ MARKUP_RES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"(?i)\s*\((?:see|cf\.?)\s+[^)]{1,40}\)"), ""),  # "(see Fig. 3)", "(see test_relations.py)": a reference
     (re.compile(r"(?<![\w*])\*(?=[^\s*])|(?<=[^\s*])\*(?![\w*])"), ""),  # *emphasis*
     (re.compile(r"(?<![\w&])#[A-Za-z]\w*"), " "),  # a post's hashtags ("#robotics #friday"): a topic, no goal
+    # a template's filled slots (VIMA-style): "move the {orange} block", "put the {dragged_obj: green cube} into the
+    # {base_obj: brown patch}": the value (one item, unquoted: a config's dict stays whole)
+    (re.compile(r"(?<=\w\s)\{\s*(?:[A-Za-z_]+\s*:\s*)?([^{}:,\"']+?)\s*\}"), r"\1"),
     # a benchmark table's row: "task_07 | stack | red on blue", "| t23 | spell | ...": its id and pipes
     (re.compile(r"^\s*\|?\s*(?:task|t|row|id)[_\s-]?\d+\s*\|\s*", re.I), ""),
     # an assistant's reply around the task: "Sure! Here is the task:", "Certainly.", "I hope this helps!",
@@ -1374,9 +1377,9 @@ LABEL_RE = re.compile(r"(?:^|(?<=[.!?;|]\s))\s*(?P<label>[a-z@][a-z'\-@, ]{0,140
 cannot ("Never: ..." stays, and is refused)."""
 
 ID_LABEL_RE = re.compile(
-    r"^\s*(?P<label>(?:[\w'\"().\-]+,?\s+){0,7}?(?:[\w'\"().\-]*\d[\w'\"().\-]*|[A-Za-z]+(?:-[A-Za-z0-9]+)+|\"[^\"]{1,24}\""
-    r"|(?<=part\s)[A-Z]|(?<=Part\s)[A-Z])"
-    r"(?:\s*\([^()]{1,40}\))?)\s*(?::|\.(?=\s+[A-Za-z]))\s+(?P<body>\S.*)$", re.S)
+    r"^\s*(?P<label>(?:\[[A-Za-z]{1,12}\]\s*)?(?:[\w'\"().\-]+,?\s+){0,7}?(?:[\w'\"().\-]*\d[\w'\"().\-]*|[A-Za-z]+(?:[-_][A-Za-z0-9]+)+"
+    r"|\"[^\"]{1,24}\"|(?<=part\s)[A-Z]|(?<=Part\s)[A-Z])"
+    r"(?:\s*\([^()]{1,40}\))?)(?:\s*\[(?P<params>[^\[\]=]{1,16}=[^\[\]]{1,40})\])?\s*(?::|\.(?=\s+[A-Za-z]))\s+(?P<body>\S.*)$", re.S)
 """A task's identifier before its text, as benchmark specs and papers write it ("Task 7 (Stacking-3):
 ...", "Relation test R-3: ...", "Unstack-2. init: ...", "Eval condition "mixed-2": ..."): its last word
 has a digit or a hyphen, or is quoted.  :func:`rpg.schema.readers.parse` reads the text after it alone
@@ -1389,8 +1392,15 @@ LABEL_JARGON = frozenset(
     "level stage problem appendix section clause paper generalisation generalization relation relations multi structure "
     "structures spec config benchmark id no v worksheet objective env environment suite setting demo item nov dec jan feb "
     "mar apr may jun jul aug sep oct lab labs part rule rules criterion criteria acceptance requirement req homework "
-    "assignment hw lesson handout".split())
-"""Words of a task's identifier that say nothing of the task (:data:`ID_LABEL_RE`)."""
+    "assignment hw lesson handout seed seeds eval pattern ordered".split())
+"""Words of a task's identifier that say nothing of the task (:data:`ID_LABEL_RE`): "ordered" and
+"pattern" are said by the text after it, which gives the order or the pattern."""
+
+LABEL_PARAMS: dict[str, str] = {"word": "spelling {}", "region": "{place}", "corner": "{place}", "location": "{place}",
+                                "seed": ""}
+"""An identifier's bracketed parameter (``spell-word [word=SUN]:``, ``pile-5 [region=back]:``) -> the
+words it adds to the text after it (``{place}``: the place phrase of a config's region value); a
+parameter not listed leaves the label unread."""
 
 LABEL_TASK_KIND_WORDS = frozenset(
     "stack stacking stacks unstack unstacking tower towers line lines row rows pile piles piling wall walls grid grids pyramid "
@@ -1438,6 +1448,17 @@ CONFIG_RELATIONS: dict[str, str] = {
 }
 """A config's relation value (``"relation": "between"``, ``"goal": "far_from"``) -> the words that
 say it in a sentence (``on_patch`` and ``between`` are written with their own arguments)."""
+
+CALL_ARGUMENT_ROLES: dict[str, str] = {
+    **dict.fromkeys("obj object dragged_obj block cube item pick source".split(), "subject"),
+    **dict.fromkeys("target base_obj dest destination place_on".split(), "target"),
+    **dict.fromkeys("ref reference anchor relative_to".split(), "anchor"),
+    **dict.fromkeys("region zone corner location".split(), "place"),
+    **dict.fromkeys("seed id".split(), "ignored"),
+}
+"""Argument names of a task written as a call (``place_on_patch(obj=red cube, target=blue patch)``,
+:mod:`rpg.schema.readers.config`) -> their role; ``target`` is the patch where its value is one,
+else the anchor cube.  Other names keep their :data:`CONFIG_ROLES` role."""
 
 LABEL_MAX_WORDS = 24
 """The most words a dropped label (:data:`LABEL_RE`) has.  A run before a colon that names nothing of
@@ -2431,3 +2452,19 @@ SPELLING_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      r"\1 \2"),
 )
 """Last spellings ("grey", "3-block")."""
+
+_ROW_ROLE_BE = r"(?:\s+(?:one|cube|block))?\s*(?:[:=]|\s(?:is|should\s+be|must\s+be)\s)?\s*"
+ROW_ROLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "row-3: leftmost=cyan, middle=pink, rightmost=brown", "the left one is red, the middle blue and the right one green":
+    # the row's order from that side ("left" had been read as a cube picked by where it stands now)
+    (re.compile(rf"\b(?:the\s+)?(?P<a>left|right)(?:most)?{_ROW_ROLE_BE}(?P<c1>{COLOR_RE})\s*[,;]\s*(?:the\s+)?(?:middle|center|centre)"
+                rf"{_ROW_ROLE_BE}(?P<c2>{COLOR_RE})\s*[,;]?\s*(?:and\s+)?(?:the\s+)?(?P<b>left|right)(?:most)?{_ROW_ROLE_BE}(?P<c3>{COLOR_RE})\b"),
+     lambda m: m.group(0) if m.group("a") == m.group("b") else
+     f"from {m.group('a')} to {m.group('b')}: {m.group('c1')}, {m.group('c2')}, {m.group('c3')}"),
+    # "row of 3 going left to right: red first, green middle, blue last": the list in its said order
+    (re.compile(rf"\b(?P<c1>{COLOR_RE})\s+first\s*[,;]\s*(?:then\s+)?(?P<c2>{COLOR_RE})\s+(?:in\s+the\s+)?(?:middle|second|next)\s*[,;]?\s*"
+                rf"(?:and\s+)?(?:then\s+)?(?P<c3>{COLOR_RE})\s+last\b"),
+     r"\g<c1>, \g<c2>, \g<c3>"),
+)
+"""A row said role by role, its ends by side or by first and last: the order listed."""
+

@@ -882,6 +882,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         ranked = [roles[r] for r in ("bottom", "middle", "top") if r in roles]
         text = text[:said[0].start()] + "from bottom to top: " + ", ".join(ranked) + text[said[-1].end():]
     text = lexicon.rewrite(lexicon.TOP_LIST_REWRITES, text)
+    if re.search(r"\b(?:rows?|lines?|line\s+up)\b", text):
+        text = lexicon.rewrite(lexicon.ROW_ROLE_REWRITES, text)
     text = lexicon.END_ROLE_WORD_RE.sub(lambda m: f" with the {m.group('c')} cube "
                                         + ("at the bottom" if m.group("w") in ("lowest", "bottommost") else "on top"), text)
     inner = lexicon.INNER_POSITION_RE.search(text)

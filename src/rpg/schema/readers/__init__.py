@@ -202,11 +202,20 @@ def _identifier_label(instruction: str) -> tuple[str, str] | None:
     if m is None:
         return None
     words = re.findall(r"[a-z]+", re.sub(r"\"[^\"]*\"", " ", m.group("label")).lower())  # a quoted name says nothing
-    if all(w in lexicon.LABEL_JARGON or w in lexicon.LABEL_TASK_KIND_WORDS or w in lexicon.NUMBER_WORDS or len(w) == 1
-           or re.fullmatch(r"v|x|st|nd|rd|th", w)
-           for w in words):
-        return m.group("label"), m.group("body")
-    return None
+    if not all(w in lexicon.LABEL_JARGON or w in lexicon.LABEL_TASK_KIND_WORDS or w in lexicon.NUMBER_WORDS or len(w) == 1
+               or re.fullmatch(r"v|x|st|nd|rd|th", w)
+               for w in words):
+        return None
+    body = m.group("body")
+    if m.group("params"):  # "spell-word [word=SUN]: letter cubes in a row": the parameter's words join the text
+        key, _, value = (p.strip() for p in m.group("params").partition("="))
+        said = lexicon.LABEL_PARAMS.get(key.lower())
+        place = config.place_phrase(value) if said == "{place}" else ""
+        if said is None or (said == "{place}" and place is None):
+            return None
+        added = place if said == "{place}" else said.format(value)
+        body = f"{body.rstrip(' .')} {added}".strip() if added else body
+    return m.group("label"), body
 
 
 def parse(instruction: str, _framed: bool = False) -> TaskSchema:
@@ -235,7 +244,11 @@ def parse(instruction: str, _framed: bool = False) -> TaskSchema:
         label, body = labelled
         noun = next((w for w in re.findall(r"[a-z]+", label.lower()) if w in STRUCTURE_WORDS), None)
         if noun is not None and not re.search(STRUCTURE_RE, body, re.IGNORECASE):
-            body = f"{noun}: {body}"  # "Line-Sort-Colour: red, orange, ...": the structure the label names
+            # "Line-Sort-Colour: red, orange, ...": the structure the label names; "stack-any-4: ..." with its count glued
+            # to it (the count had been dropped, a stack of two made up) where the text says none
+            glued = re.search(rf"(?i)\b{noun}(?:-[a-z]+)?-(\d+)\b", label)
+            counted = glued and not re.search(r"\b\d+\b|\b(?:" + "|".join(lexicon.NUMBER_WORDS) + r")\b", body, re.IGNORECASE)
+            body = f"{noun} of {glued.group(1)}: {body}" if counted else f"{noun}: {body}"
         schema = parse(body, _framed=True)
         return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})  # as written
     scene = initial.split(instruction)  # "Initially red is on blue. Put ...": rho_0's stacks, then the goal

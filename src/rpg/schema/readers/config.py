@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import re
 
-from rpg.schema.lexicon import CONFIG_RELATIONS, CONFIG_ROLES, NUMBER_WORDS
+from rpg.schema.lexicon import CALL_ARGUMENT_ROLES, CONFIG_RELATIONS, CONFIG_ROLES, NUMBER_WORDS
 from rpg.schema.structures import STRUCTURE_WORDS
 
 _PAIR_RE = re.compile(r"""["']?(?P<key>[A-Za-z][\w ]{0,24}?)["']?\s*(?::|=)\s*(?P<value>\[[^\[\]]*\]|"[^"]*"|'[^']*'|[^,;{}\[\]\n]+?)"""
@@ -76,10 +76,10 @@ def _words(value: str) -> str:
     return value.replace("_", " ").strip()
 
 
-def _place(value: str) -> str | None:
+def place_phrase(value: str) -> str | None:
     """A region value as a phrase: ``back_right`` -> "in the back right corner", ``back`` -> "at the back of the
     table"; None for a value that names no region of the table (it is not guessed: "region=nowhere")."""
-    v = _words(value).lower().removesuffix(" corner")
+    v = re.sub(r"[\s-]+", " ", _words(value).lower()).removesuffix(" corner")
     if re.fullmatch(r"(?:front|back)\s+(?:left|right)", v):
         return f"in the {v} corner"
     if v in ("front", "back", "left", "right"):
@@ -89,19 +89,58 @@ def _place(value: str) -> str | None:
     return None
 
 
+_CALL_RE = re.compile(r"^\s*(?P<ident>[A-Za-z]+(?:[-_][A-Za-z0-9]+)*)\s*(?:\((?P<args>[^()]*=[^()]*)\)|:\s*(?P<pairs>[A-Za-z_]+\s*=[^:]*))"
+                      r"\s*\.?\s*$")
+"""A task written as a call or a spec line, its identifier naming the relation: "place_on_patch(obj=red cube,
+target=blue patch)", "in-front-of(obj=brown, ref=gray)", "put-block-in-region: block=purple, region=front-right"."""
+
+
+def _call_roles(instruction: str) -> dict[str, str] | None:
+    """The roles of a task written as a call (:data:`_CALL_RE`): its arguments by
+    :data:`rpg.schema.lexicon.CALL_ARGUMENT_ROLES` (a target that is a patch is the patch, else the
+    anchor) and the relation its identifier names; None when it is no such call or an argument has
+    no role."""
+    m = _CALL_RE.match(instruction)
+    if m is None:
+        return None
+    roles: dict[str, str] = {}
+    for item in re.split(r"\s*,\s*", (m.group("args") or m.group("pairs")).strip()):
+        key, eq, value = item.partition("=")
+        key, value = re.sub(r"[\s-]+", "_", key.strip().lower()), value.strip().strip("\"'")
+        role = CALL_ARGUMENT_ROLES.get(key, CONFIG_ROLES.get(key))
+        if role == "target":
+            role = "patch" if re.search(r"\bpatch$", value, re.IGNORECASE) else "anchor"
+        if not eq or not value or role is None or role in roles:
+            return None
+        roles[role] = re.sub(r"(?i)\s+patch$", "", value) if role == "patch" else value
+    ident = m.group("ident").lower().replace("-", "_")
+    relation = next((ident[len(v):] for v in ("", "put_", "place_", "move_") if ident.startswith(v)
+                     and ident[len(v):] in CONFIG_RELATIONS), None)
+    if relation is not None:
+        roles.setdefault("relation", relation)
+    roles.pop("ignored", None)
+    return roles
+
+
 def sentence(instruction: str) -> str | None:
     """The sentence a config stands for (see the module docstring), or None when ``instruction``
     is not a config this module reads."""
-    pairs = _pairs(instruction)
-    if pairs is None:
-        return None
-    roles: dict[str, str] = {}
-    for key, value in pairs.items():
-        role = "patch" if key == "target" and value.lower() == "patch" else CONFIG_ROLES.get(key)  # "target": "patch"
-        if role is None or role in roles:
-            return None  # a key of no known role, or two keys of one role: not guessed
-        roles[role] = value
-    roles.pop("ignored", None)
+    roles = _call_roles(instruction)
+    if roles is not None and "relation" not in roles and set(roles) == {"subject", "place"}:
+        where = place_phrase(roles["place"])  # "put-block-in-region: block=purple, region=front-right"
+        cube = f"the {_words(roles['subject'])}" + ("" if re.search(r"\b(?:cube|block)\b", roles["subject"]) else " cube")
+        return f"put {cube} {where}" if where else None
+    if roles is None:
+        pairs = _pairs(instruction)
+        if pairs is None:
+            return None
+        roles = {}
+        for key, value in pairs.items():
+            role = "patch" if key == "target" and value.lower() == "patch" else CONFIG_ROLES.get(key)  # "target": "patch"
+            if role is None or role in roles:
+                return None  # a key of no known role, or two keys of one role: not guessed
+            roles[role] = value
+        roles.pop("ignored", None)
     if "text" in roles:
         return roles["text"] if len(roles) == 1 else None
     kind = _words(roles.get("structure", "")).lower()
@@ -141,7 +180,7 @@ def sentence(instruction: str) -> str | None:
             return None
         phrase += f" from {d}"
     if "place" in roles:
-        where = _place(roles["place"])
+        where = place_phrase(roles["place"])
         if where is None:
             return None
         phrase += " " + where
