@@ -1578,3 +1578,41 @@ def test_steer_stranger16_made_up_cubes_are_refused(tmp_path, base, edit):
     fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
     with pytest.raises(BadInput):
         steer(fam.path, edit)
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # steer_stranger17's silent errors (first run)
+    ("Build a red tower three cubes tall", ["pls make red tower two more"], ("tweak", ["stack(red,red,red,red,red)"])),  # (two)
+    ("Sort the digit cubes 6, 2, 4 from smallest to largest, left to right", ["stack them instead, smallest on top"],
+     ("pivot", ["stack(6,4,2)"])),  # (still a line)
+    ("put the blue cube to the right of the yellow cube",
+     ["also a green cube to the right of the blue one, so it's a row", "make it a tower, same order bottom to top"],
+     ("pivot", ["stack(yellow,blue,green)"])),  # (stacked in the order the task named the cubes)
+    # terse edits: arrows, s///, n=, <->, "same but", "like before"
+    ("Place the black cube on the white patch", ["patch -> cyan"], ("tweak", ["on_patch(black,patch:cyan)"])),
+    ("put the brown cube behind the orange cube", ["brown -> cyan, orange -> pink"], ("tweak", ["behind(cyan,pink)"])),
+    ("Stack the green cube on the red cube", ["s/green/blue/"], ("tweak", ["stack(red,blue)"])),
+    ("Line up four blue cubes from left to right", ["n=6 pls"], ("tweak", ["line[left_to_right](blue,blue,blue,blue,blue,blue)"])),
+    ("Build a tower of red, then blue, then green, bottom to top", ["red <-> green"], ("modify", ["stack(green,blue,red)"])),
+    ("Place the red cube on the green patch", ["same but with the yellow cube"], ("tweak", ["on_patch(yellow,patch:green)"])),
+    ("Put the red cube in front of the green cube", ["put it behind instead", "nah, like before"],
+     ("modify", ["in_front_of(red,green)"])),
+    # a cube put between two neighbours goes into the structure (it had been refused, or had replaced a row)
+    ("Build a tower of three cubes: blue at the bottom, then white, then red on top",
+     ["add a black cube between the white one and the blue one"], ("extend", ["stack(blue,black,white,red)"])),
+    ("Make a row of red, green and blue from left to right", ["put a yellow cube between the red cube and the green cube"],
+     ("extend", ["line[left_to_right](red,yellow,green,blue)"])),
+    ("Put the red cube to the left of the green cube", ["put a yellow cube between the red cube and the green cube"],
+     ("extend", ["between(yellow;green,red)", "left_of(red,green)"])),
+])
+def test_steer_stranger17(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+def test_the_cube_of_a_task_with_several_cubes_is_refused(tmp_path):
+    """"make the cube yellow" of a two-cube tower had made both cubes yellow."""
+    from rpg.errors import BadInput
+
+    fam = Family(create_family(compile_instruction("Stack the pink cube on the brown cube", tmp_path, name="fam").path).path)
+    with pytest.raises(BadInput, match="names one cube"):
+        steer(fam.path, "make the cube yellow")

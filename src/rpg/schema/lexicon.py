@@ -1771,6 +1771,28 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"^\s*(?:(?:nah|ok(?:ay)?|now|so|then|actually)\s*,?\s*)*(?:make|change|turn)\s+it\s+(?:to\s+|into\s+)?(?!(?i:{COLOR_RE})\b)([A-Z]{{2,}})\s*[.!]?\s*$"),
      r"make it spell \1"),
     (re.compile(rf"^\s*[A-Z]{{2,}}\s*(?:->|\u2192|=>)\s*(?!(?i:{COLOR_RE})\b)([A-Z]{{2,}})\s*[.!]?\s*$"), r"make it spell \1"),
+    # terse recolours: "patch -> cyan", "brown -> cyan, orange -> pink", "s/yellow/blue/": each named thing made that colour
+    (re.compile(rf"(?i)^\s*s/({COLOR_RE})/({COLOR_RE})/?\s*$"), r"make the \1 cube \2"),
+    (re.compile(rf"(?i)^\s*(?:(?:the|that)\s+)?(?-i:(?![A-Z]{{2,}}\b))[a-z]+(?:\s+[a-z]+)?\s*(?:->|\u2192|=>)\s*(?:{COLOR_RE})(?:\s*(?:,|and)\s*(?:(?:the|that)\s+)?"
+                rf"[a-z]+(?:\s+[a-z]+)?\s*(?:->|\u2192|=>)\s*(?:{COLOR_RE}))*(?:\s+and\s+(?:{COLOR_RE}))?\s*[.!]?\s*$"),
+     lambda m: "make " + " and ".join(
+         (f"the {x} cube" if re.fullmatch(rf"(?i){COLOR_RE}", x) else f"the {re.sub(r'(?i)^(?:the|that)[ ]+', '', x)}") + f" {y}"
+         for x, y in re.findall(r"([a-z]+(?:\s+[a-z]+)?)\s*(?:->|\u2192|=>)\s*([a-z]+(?:\s+and\s+[a-z]+)?)", m.group(0), re.I))),
+    # "same but in the front left corner", "like before but with the yellow cube": the change, to the task as it is
+    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|now|so|and)\s*,?\s*)*(?:(?:the\s+)?same(?:\s+thing)?(?:\s+as\s+(?:before|now|that|this))?"
+                r"|like\s+(?:before|that|this|now))\s*,?\s*but\s+(?P<x>.+?)(?:\s+instead)?\s*[.!]?\s*$"), r"\g<x> instead"),
+    (re.compile(rf"(?i)^\s*with\s+(?:the\s+|a\s+)?({COLOR_RE})\s+(?:cube|block|one)\s+instead\s*$"), r"make the cube \1"),
+    # "red <-> green": the two exchanged; "mv tower -> center": moved there; "left to right instead": that direction
+    (re.compile(r"(?i)^\s*([a-z]+(?:\s+[a-z]+)?)\s*(?:<->|\u2194|<=>)\s*([a-z]+(?:\s+[a-z]+)?)\s*[.!]?\s*$"), r"swap \1 and \2"),
+    (re.compile(r"(?i)^\s*mv\s+(?:the\s+)?([a-z]+(?:\s+[a-z]+)?)\s*(?:->|\u2192|=>|\s+to)\s*(?:the\s+)?([a-z]+(?:\s+[a-z]+)?)\s*[.!]?\s*$"),
+     r"move the \1 to the \2"),
+    (re.compile(r"(?i)^\s*(?:(?:now|ok(?:ay)?|and)\s*,?\s*)*((?:from\s+)?(?:left\s+to\s+right|right\s+to\s+left|front\s+to\s+back"
+                r"|back\s+to\s+front))(?:\s+(?:instead|now|please|pls))*\s*[.!]?\s*$"), r"make it \1 instead"),
+    # "nah, like before": the version before this one
+    (re.compile(r"(?i)^\s*(?:(?:nah|no|hmm+|ok(?:ay)?|actually)\s*,?\s*)*(?:(?:just\s+)?(?:like|as)\s+(?:it\s+was\s+)?before|as\s+it\s+was)"
+                r"\s*[.!]?\s*$"), "undo"),
+    # "n=6 pls", "count = 4": the structure's count
+    (re.compile(r"(?i)^\s*(?:n|count|num|size|length|height)\s*=\s*(\d+)\s*(?:please|pls|plz)?\s*[.!]?\s*$"), r"make it \1"),
     # "now five instead of three": that count
     (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|now|so|then)\s*,?\s*)*(\d+|{COUNT_WORD_RE})\s+instead\s+of\s+(?:\d+|{COUNT_WORD_RE})\s*[.!]?\s*$"),
      r"use \1 blocks instead"),

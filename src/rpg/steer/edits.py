@@ -318,8 +318,9 @@ def _selector(text: str) -> dict | None:
         return {"some": int(some.group(1))}
     if re.fullmatch(r"(?:the\s+)?both(?:\s+(?:of\s+)?(?:them|the\s+(?:blocks|cubes)|blocks|cubes))?", text):
         return {"all": True, "both": True}
-    if re.search(r"\b(?:all|every|everything|each|whole)\b|^(?:the\s+)?(?:blocks|cubes|them|it|they|wall)\b"
-                 r"|^(?:the\s+)?(?:cube|block)$", text) \
+    if re.fullmatch(r"(?:the\s+)?(?:cube|block)", text):
+        return {"all": True, "single": True}  # "make the cube yellow": the task's one cube
+    if re.search(r"\b(?:all|every|everything|each|whole)\b|^(?:the\s+)?(?:blocks|cubes|them|it|they|wall)\b", text) \
             or re.match(r"(?:the\s+)?" + STRUCTURE_RE, text):
         return {"all": True}
     m = re.search(r"\b(base|bottom|first|lowest|top|last|highest|upper|middle|center|centre|second|third)\b", text)
@@ -464,13 +465,15 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("pattern", {"colors": list(dict.fromkeys(pattern_colors))}))
     fewer = re.search(r"\b(?:remove|delete|take away|take off|drop|get rid of)\s+(\d+|an?|one)\s+(?:more\s+)?(?:of the\s+)?(?:blocks?|cubes?)\b"
                       r"|\b(\d+|one)\s+(?:fewer|less)\s+(?:blocks?|cubes?)\b", t)
-    more_n = re.search(r"\b(?:use|using|with|have|want|need)\s+(\d+)\s+(?:more|extra|additional)\s+(?:blocks?|cubes?)\b", t)
+    more_n = re.search(r"\b(?:use|using|with|have|want|need)\s+(\d+)\s+(?:more|extra|additional)\s+(?:blocks?|cubes?)\b"
+                       r"|\bmake\s+(?:[a-z]+\s+){0,3}?(\d+)\s+(?:more|extra|additional)(?:\s+(?:blocks?|cubes?))?(?:\s+(?:high|tall|long))?"
+                       r"\s*(?:please|pls)?\s*[.!]?\s*$", t)  # "make red tower two more": two added (it had become two)
     by = re.search(r"\b(\d+)\s+(?:more\s+)?(?:blocks?|cubes?|levels?|layers?)\s+(taller|higher|longer|bigger|shorter|lower|smaller)\b", t)
     if fewer:
         k = next(g for g in fewer.groups() if g)
         ops.append(Op("count", {"delta": -(int(k) if k.isdigit() else 1)}))
     elif more_n:  # "can you use 2 more blocks"
-        ops.append(Op("count", {"delta": int(more_n.group(1))}))
+        ops.append(Op("count", {"delta": int(more_n.group(1) or more_n.group(2))}))
     elif by:  # "make it 2 blocks shorter"
         ops.append(Op("count", {"delta": int(by.group(1)) * (1 if by.group(2) in ("taller", "higher", "longer", "bigger") else -1)}))
     layer = re.search(r"\b(?:add|put|build|stack)\s+(?:an?\s+|another\s+|one more\s+|the\s+)?(?:\d+(?:st|nd|rd|th)\s+|second\s+|third\s+"
@@ -526,10 +529,18 @@ def read_ops(t: str) -> list[Op]:
             onto = {"all": True} if re.match(r"\s*(?:it|them|that|the\s+(?:tower|stack|top))\b", t[add.end():]) else None
             if onto is None:
                 return ops  # "put a yellow block on ...": on nothing this reads
-        ops.append(Op("add", {"items": items * (n if len(items) == 1 else 1) if items else [], "count": n if not items else None, "at": at,
-                              **({"side": side.group(0)} if side else {}),
-                              **({"onto": onto} if onto and not onto.get("all") else {}),
-                              **({"end": where.strip()} if re.search(r"[a-z]", where) and not re.match(r"\s*and\b", where) else {})}))
+        gap = re.match(r"(?P<what>.*?)\bbetween\s+(?P<a>the\s+[a-z0-9' ]+?(?:one|block|cube))\s+and\s+(?P<b>the\s+[a-z0-9' ]+?(?:one|block|cube))\b",
+                       t[add.end("verb"):])
+        inserted = (_selector(gap.group("a")), _selector(gap.group("b"))) if gap else None
+        if inserted and all(inserted):  # "add a black cube between the white one and the blue one": in the gap between them
+            what = gap.group("what")
+            items = [{"color": c} if c else {"label": lab} for c, lab in item_sequence(what)]
+            ops.append(Op("add", {"items": items, "count": None if items else 1, "between": list(inserted)}))
+        else:
+            ops.append(Op("add", {"items": items * (n if len(items) == 1 else 1) if items else [], "count": n if not items else None,
+                                  "at": at, **({"side": side.group(0)} if side else {}),
+                                  **({"onto": onto} if onto and not onto.get("all") else {}),
+                                  **({"end": where.strip()} if re.search(r"[a-z]", where) and not re.match(r"\s*and\b", where) else {})}))
     kept = re.search(rf"\bkeep(?:ing)?\s+(?:the|this|that|my|your|our)\s+(?:same\s+|existing\s+|current\s+)?{STRUCTURE_RE}", t)
     if kept:  # "keep the tower, and ...": the reference must be that structure
         ops.append(Op("keep", {"structure": structure_of_word(kept.group(1))}))
@@ -619,7 +630,7 @@ def read_ops(t: str) -> list[Op]:
     shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out|use|do|spell)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+|one\s+|a\s+single\s+)(?:\d+x\d+(?:x\d+)?\s+)?"
                       rf"{STRUCTURE_RE}", t)
     stack_all = re.search(r"\b(?:stack|pile)\s+(?:them|all|everything|(?:all\s+)?the\s+(?:blocks|cubes))(?:\s+(?:up|instead|together"
-                          r"|on top of each other|on top of one another))*\W*$", t) or (
+                          r"|on top of each other|on top of one another))*(?:\W*$|\s*[,;]\s*(?=\S))", t) or (
         SAME_ORDER_RE.search(t) and re.search(r"\b(?:stack|pile)\s+(?:them|all|everything)\b", t))  # "stack them, in the same order"
     end_role = rf"(?:\s*,?\s*(?:with\s+)?(?:the\s+)?(?P<end_c>{COLOR_RE})\s+(?:block\s+|cube\s+|one\s+)?(?:at|on)\s+(?:the\s+)?" \
         r"(?P<end_w>bottom|base|top|left|right))?"  # "now as a tower, red at the bottom": the order kept from that end
@@ -754,6 +765,12 @@ def interpret(edit: str) -> EditPlan:
     if fresh:
         return EditPlan(edit, RefCue("none", phrase=fresh.group(0)), standalone=True, fresh=True)
     refuse_inexpressible(edit, t)
+    try:
+        inserted = [o for o in read_ops(t) if o.op == "add" and o.params.get("between")]
+    except SteerError:
+        inserted = []
+    if inserted:  # "put a yellow cube between the red cube and the green cube" of a row: into it (it had become the whole task)
+        return EditPlan(edit, cue, read_ops(t))
     if looks_standalone(t) and names_cubes(t):
         from rpg.schema.builtin import ParseError, parse
 
@@ -852,12 +869,35 @@ def _layer_indices(spec: TaskSpec, where: str) -> list[int]:
     return list(range(start, start + sizes[k]))
 
 
+def _inserted_between(spec: TaskSpec, p: dict, anchors: frozenset[str]) -> TaskSpec:
+    """``spec`` with the cube an edit adds between two neighbouring cubes put in the gap between them
+    ("add a black cube between the white one and the blue one" of a tower: above the lower of the two).
+
+    Raises:
+        SteerError: the structure orders no cubes, the two are not one cube each, or they are not neighbours.
+    """
+    if not _orders_cubes(spec) or spec.structure not in ("tower", "line"):
+        raise SteerError(f"a cube added between two cubes of a {spec.structure} whose goal gives no cube a place cannot be "
+                         "judged; say the whole new order, or use --model")
+    a, b = (_indices(spec, sel, anchors) for sel in p["between"])
+    if len(a) != 1 or len(b) != 1 or abs(a[0] - b[0]) != 1:
+        raise SteerError(f"the two cubes the edit puts a cube between are not one cube each standing next to each other in the "
+                         f"{spec.structure} ({', '.join(i.phrase() for i in spec.items)}); say the whole new order, or use --model")
+    new = [Item(**d) for d in p["items"]]
+    if len(new) != 1:
+        raise SteerError("name the one cube to put between the two (e.g. \"a black cube\")")
+    at = max(a[0], b[0])
+    return spec.with_items(list(spec.items[:at]) + new + list(spec.items[at:]))
+
+
 def _indices(spec: TaskSpec, sel: dict, anchors: frozenset[str] = frozenset()) -> list[int]:
     n = len(spec.items)
     if sel.get("position") in anchors and sel["position"] in ("bottom", "top"):
         return [0 if sel["position"] == "bottom" else n - 1]  # the end a stack in any order has its cube at
     if sel.get("both") and n != 2:
         raise SteerError(f"'both' names two cubes, but the {spec.structure} has {n}; say which")
+    if sel.get("single") and n != 1:
+        raise SteerError(f"'the cube' names one cube, but the {spec.structure} has {n}; say which (e.g. by its colour)")
     if sel.get("uniform") and len(set(spec.colors())) > 1:
         raise SteerError(f"the {spec.structure} has cubes of {len(set(spec.colors()))} colours; say which to change")
     if sel.get("all"):
@@ -1245,6 +1285,9 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             if not spec.kind.sized_by_count:
                 raise SteerError(f"cubes cannot be added one by one to a {spec.structure}; change its size instead "
                                  "(e.g. \"make the base 4\")")
+            if p.get("between"):
+                spec = _inserted_between(spec, p, anchors)
+                continue
             if p.get("side") and (spec.structure != "line" or p["side"] not in ("left", "right")):
                 raise SteerError(f"a cube added beside a {spec.structure} ({p['side']!r}) is not part of it, which the "
                                  "builtin steering cannot place (it adds cubes to the structure itself); state the "

@@ -445,10 +445,17 @@ def _chain_edit(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str, str] 
     "flip it") or read in another direction ("now make it front to back instead of left to right",
     the order kept).  None when the edit is not only that or the task is no such chain."""
     chain = _chain_order(ref)
-    if chain is None or not plan.ops or any(o.op not in ("reverse", "direction") for o in plan.ops) or len(plan.ops) > 1:
+    if chain is None or len(plan.ops) != 1:
         return None
     order, direction = chain
     op = plan.ops[0]
+    if op.op == "structure" and op.params.get("to") == "tower" and op.params.get("keep_order") and not op.params.get("end"):
+        # "make it a tower, same order bottom to top": the chain's order from its first end up (the cubes had been
+        # stacked in the order the task named them)
+        instruction = "Stack the blocks from bottom to top: " + ", ".join(order)
+        return parse(instruction), instruction, "pivot"
+    if op.op not in ("reverse", "direction"):
+        return None
     if op.op == "reverse":
         order = order[::-1]
     else:

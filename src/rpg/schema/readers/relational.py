@@ -646,7 +646,9 @@ def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch:
     offset = {"left_of": (0.0, 0.10), "right_of": (0.0, -0.10), "in_front_of": (-0.10, 0.0), "behind": (0.10, 0.0),
               "next_to": (0.0, 0.06), "far_from": (0.0, C.FAR_FROM_MIN_DIST + 0.04)}
     cx, cy = C.WORKSPACE_CENTER
-    for r in rels:
+    # a cube between two others first, so a side relation between those two ("red left of green, yellow between them")
+    # orients the three (the ends had been placed by the side relation and the middle cube elsewhere)
+    for r in sorted(rels, key=lambda r: not isinstance(r, Between)):
         a, c = base_of[r.a], base_of[r.b]
         if isinstance(r, Between):
             c2 = base_of[r.c]
@@ -656,6 +658,12 @@ def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch:
                                   if all(math.hypot(x - ox, y + dy - oy) >= 0.1 for dy in (0.0, 0.08, -0.08) for ox, oy in taken)),
                                  (cx, cy))
             ax, ay = placed[a]
+            side = next((s for s in rels if not isinstance(s, Between) and s.name in ("left_of", "right_of", "in_front_of", "behind")
+                         and {base_of[s.a], base_of[s.b]} == {c, c2}), None)
+            if side is not None:  # its two ends on the axis the side relation says, that way round
+                ux, uy = (0.8 * v for v in offset[side.name])
+                placed.setdefault(base_of[side.a], (ax + ux, ay + uy))
+                placed.setdefault(base_of[side.b], (ax - ux, ay - uy))
             placed.setdefault(c, (ax, ay + 0.08))
             placed.setdefault(c2, (ax, ay - 0.08))
             continue
