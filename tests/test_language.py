@@ -3587,3 +3587,18 @@ def test_an_identifier_s_glued_count_is_kept():
     """"stack-any-4: blocks any, order any" had dropped the 4 and made up a stack of two."""
     schema = parse("stack-any-4: blocks any, order any")
     assert len(schema.assets) == 4 and type(schema.goal).__name__ == "UnorderedStack"
+
+
+@pytest.mark.parametrize("text,expected", [
+    # walls said row by row (the counts had been lost and a wall two wide made up, then refused)
+    ("Can you make a wall for me? The bottom row is four orange cubes and the top row is four red cubes.",
+     ["wall(orange,orange,orange,orange|red,red,red,red)"]),
+    ("build a wall, two rows, bottom is three brown cubes and the top is three orange", ["wall(brown,brown,brown|orange,orange,orange)"]),
+    ("build-wall: 2 rows x 3 cubes, all gray", ["wall(gray,gray,gray,gray,gray,gray)"]),  # (a grid before: the label's wall lost)
+    # a structure named in a sentence of its own, its parts in the next ("in the middle" had been the table's centre)
+    ("build a pyramid. Three cubes on the bottom, two in the middle and one on top", ["pyramid(red,red,red,red,red,red)"]),
+    # a cube taken off the start's tower and left on the table
+    ("start: yellow sitting on red. take the yellow off and leave it on the table", ["on_table(yellow)", "start:stack(red,yellow)"]),
+])
+def test_walls_by_rows_headings_and_take_off(text, expected):
+    assert meaning(parse(text)) == expected

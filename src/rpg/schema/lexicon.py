@@ -2490,3 +2490,23 @@ ROW_ROLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 )
 """A row said role by role, its ends by side or by first and last: the order listed."""
 
+WALL_ROW_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "the bottom row is four orange cubes and the top row is four red cubes", "with a bottom row of 3 brown cubes",
+    # "bottom is three brown cubes and the top is three orange": each layer's count and colour (the count had been lost
+    # and a wall two wide made up)
+    (re.compile(rf"\b(?:with\s+)?(?:an?\s+|the\s+)?(?P<where>bottom|top|lower|upper)(?:\s+(?:row|layer|level|tier|course))?\s*"
+                rf"(?:is|are|of|has|:|=)\s*(?:made\s+of\s+)?(?P<n>\d+|{COUNT_WORD_RE})\s+(?P<c>{COLOR_RE})(?:\s+(?:cubes|blocks))?\b"),
+     lambda m: f"{NUMBER_WORDS.get(m.group('n'), m.group('n'))} {m.group('c')} cubes "
+     + ("on the bottom" if m.group("where") in ("bottom", "lower") else "on top")),
+)
+"""A wall's layers said row by row with their counts: "N c cubes on the bottom", which the wall reader reads."""
+
+HEADING_SENTENCE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "build a pyramid. Three cubes on the bottom, two in the middle and one on top": the sentence after a structure
+    # named alone says its parts, as after a colon ("two in the middle" had been read as the table's centre)
+    (re.compile(rf"\b((?:build|make|do)\s+(?:me\s+|us\s+)?(?:an?|one)\s+(?:[a-z]+\s+)?(?:pyramid|wall|tower|stack|row|line|grid))"
+                rf"\s*[.?!]\s+(?=(?:\d+|{COUNT_WORD_RE})\s)"),
+     r"\1: "),
+)
+"""A structure named in a sentence of its own, its parts counted in the next: one description."""
+

@@ -821,6 +821,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     asked_by = effectors + [(m.group("who"), "who asks for the task") for m in lexicon.SOMEONE_WANTS_RE.finditer(text)]
     text = lexicon.SOMEONE_WANTS_RE.sub("i want", text)
     text = lexicon.rewrite(lexicon.GOAL_FRAME_REWRITES, text)
+    text = lexicon.rewrite(lexicon.HEADING_SENTENCE_REWRITES, text)
     if re.search(r"\bpyramids?\b", text):  # "pyramid: an orange and a pink cube side by side, and a white cube resting on both"
         text = re.sub(rf"(?P<base>(?:(?:an?|one|the|2)\s+)?(?:{COLOR_RE})\s+(?:and\s+(?:an?\s+|the\s+)?(?:{COLOR_RE})\s+)?(?:cubes?|blocks?)"
                       rf"|2\s+(?:{COLOR_RE})\s+(?:cubes|blocks))\s+(?:next\s+to\s+each\s+other|side\s+by\s+side|on\s+the\s+table)\s*,?\s*(?:and\s+|with\s+)?"
@@ -850,6 +851,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.TEXTURED_RE.sub(lambda m: f"the {m.group('c')} block" if m.group("c") in COLORS else m.group(0), text)
     text = lexicon.rewrite(lexicon.NOTATION_REWRITES, text)
     if re.search(r"\bwalls?\b", text):  # "a two-layer wall with blue on the bottom, three cubes per layer"
+        text = lexicon.rewrite(lexicon.WALL_ROW_REWRITES, text)
         text = lexicon.WALL_LAYER_ROLE_RE.sub(lambda m: f"{m.group('where')} layer {m.group('c')}", text)
         text = lexicon.PER_LAYER_RE.sub(_per_layer, text)
     text = _label_tower_roles(text)

@@ -243,7 +243,10 @@ def parse(instruction: str, _framed: bool = False) -> TaskSchema:
     if labelled is not None:  # "Task 7 (Stacking-3): the agent must build ...": the text after it
         label, body = labelled
         noun = next((w for w in re.findall(r"[a-z]+", label.lower()) if w in STRUCTURE_WORDS), None)
-        if noun is not None and not re.search(STRUCTURE_RE, body, re.IGNORECASE):
+        layered = next((w for w in re.findall(r"[a-z]+", label.lower()) if w in ("wall", "pyramid", "grid")), None)
+        if layered and not re.search(STRUCTURE_RE, re.sub(r"(?i)\b(?:rows?|layers?|levels?|tiers?|courses?)\b", " ", body)):
+            body = f"{layered}: {body}"  # "build-wall: 2 rows x 3 cubes, all gray": a wall said by its rows (it had been a grid)
+        elif noun is not None and not re.search(STRUCTURE_RE, body, re.IGNORECASE):
             # "Line-Sort-Colour: red, orange, ...": the structure the label names; "stack-any-4: ..." with its count glued
             # to it (the count had been dropped, a stack of two made up) where the text says none
             glued = re.search(rf"(?i)\b{noun}(?:-[a-z]+)?-(\d+)\b", label)

@@ -226,7 +226,7 @@ def _merged(stacks: list[tuple[str, ...]]) -> list[tuple[str, ...]] | None:
 
 
 _TAKE_OFF_RE = re.compile(rf"(?i)^\s*(?:then\s+)?take\s+(the\s+(?:{COLOR_RE}|(?-i:[A-Z])|\d)(?:\s+(?:one|cube|block))?)\s+off"
-                         r"(?:\s+(?:of\s+)?(?:the\s+)?(?:tower|stack|top))?\s*,?\s*(?:and\s+)?(?:then\s+)?(?:set|put|place|lay)\s+it"
+                         r"(?:\s+(?:of\s+)?(?:the\s+)?(?:tower|stack|top))?\s*,?\s*(?:and\s+)?(?:then\s+)?(?:just\s+)?(?:set|put|place|lay|leave|drop)\s+it"
                          r"\s+(?:down\s+)?(?:on|onto)\s+the\s+table")
 """A cube taken off the start's tower and set on the table ("Take the red one off and set it on the
 table"): the cube sent to the table."""
