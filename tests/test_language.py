@@ -3602,3 +3602,37 @@ def test_an_identifier_s_glued_count_is_kept():
 ])
 def test_walls_by_rows_headings_and_take_off(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a hostile tester's silent errors in this session's features
+    ("put the red, er, orange cube on the blue one", ["stack(blue,orange)"]),  # (both cubes kept)
+    ("put the red cube on the blue cube, no, the green cube on the blue cube", ["stack(blue,green)"]),  # (red kept on top)
+    ("put the blue cube on the red patch, no wait, the yellow one", ["on_patch(blue,patch:yellow)"]),  # (a yellow cube)
+    ("make a tower of red, green and blue, no wait, of red, green and purple", ["stack(red,green,purple)"]),  # (five cubes)
+    ("stack_on(obj=red cube, base=blue cube)", ["stack(blue,red)"]),  # (reversed)
+    ("place {obj: green cube} on {patch: yellow}", ["on_patch(green,patch:yellow)"]),  # (on a yellow cube)
+    ("pile-5 [region=back]: pile red cubes", ["pile(red,red,red,red,red)@back"]),  # (three)
+    ("stack-any-4: stack cubes", ["stack(red,blue,green,yellow)"]),  # (two)
+])
+def test_attack_on_corrections_and_spec_lines(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,words", [
+    ("[eval] stack_3_ordered: top=orange, middle=white", "do not give every cube"),  # (white on orange)
+    ("[eval] stack_4_ordered: top=orange, second=white, third=red, bottom=black", "do not give every cube"),  # (two dropped)
+    ("[eval] stack_3_ordered: top=orange, middle=white, bottom=black, extra=red", "no place in the tower"),  # (red on top)
+    ("stack-any-4", "neither a digit cube nor a count"),  # (a stack of two)
+    ("make a row: red first, green middle, blue last", "could not parse"),  # (an unordered line: the order dropped)
+    ("make a tower: red bottom, blue top, other two don't matter", "counts the other cubes"),  # (two cubes)
+    ("make a tower of red, green and blue, doesn't matter which order, and put yellow to the left of it",
+     "leaves the order free"),  # (an ordered tower)
+])
+def test_attack_on_spec_lines_is_refused(text, words):
+    with pytest.raises(ParseError, match=re.escape(words)):
+        parse(text)
+
+
+def test_which_one_at_the_bottom_leaves_the_order_free():
+    assert type(parse("stack red green blue, doesn't matter which one's at the bottom").goal).__name__ == "UnorderedStack"

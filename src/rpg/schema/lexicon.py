@@ -973,6 +973,8 @@ ANY_ORDER_RE = re.compile(
     r"|(?:either|any|whichever)\s+(?:one\s+|1\s+|cube\s+|block\s+)?(?:on\s+top|at\s+the\s+(?:top|bottom))(?:\s+(?:is\s+)?(?:fine|ok(?:ay)?))?"
     r"|whichever\s+way(?:\s+(?:is\s+)?(?:fine|round|around))?"
     r"|(?:it\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\s+(?:in\s+)?(?:which|what)\s+order"
+    r"|(?:it\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\s+which\s+(?:one|cube|block|colou?r)(?:'s|\s+is|\s+goes|\s+ends\s+up|\s+sits)"
+    r"\s+(?:at\s+the\s+(?:bottom|top|base)|on\s+(?:the\s+)?(?:top|bottom)|first|last)"
     r"|(?:in\s+)?(?:which|what)\s+order\s+(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter)\b\)?")
 """Words that leave the cubes' order free ("stack them in any order", ", any order is fine",
 "the order doesn't matter", "in no particular order"): read as the one phrase " in any order"
@@ -1124,7 +1126,9 @@ MARKUP_RES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"(?<![\w&])#[A-Za-z]\w*"), " "),  # a post's hashtags ("#robotics #friday"): a topic, no goal
     # a template's filled slots (VIMA-style): "move the {orange} block", "put the {dragged_obj: green cube} into the
     # {base_obj: brown patch}": the value (one item, unquoted: a config's dict stays whole)
-    (re.compile(r"(?<=\w\s)\{\s*(?:[A-Za-z_]+\s*:\s*)?([^{}:,\"']+?)\s*\}"), r"\1"),
+    (re.compile(r"(?<=\w\s)\{\s*(?:(?P<key>[A-Za-z_]+)\s*:\s*)?(?P<value>[^{}:,\"']+?)\s*\}"),
+     lambda m: m.group("value") + (" patch" if re.search(r"(?i)patch", m.group("key") or "")
+                                   and not re.search(r"(?i)\bpatch\b", m.group("value")) else "")),  # "{patch: yellow}"
     # a benchmark table's row: "task_07 | stack | red on blue", "| t23 | spell | ...": its id and pipes
     (re.compile(r"^\s*\|?\s*(?:task|t|row|id)[_\s-]?\d+\s*\|\s*", re.I), ""),
     # an assistant's reply around the task: "Sure! Here is the task:", "Certainly.", "I hope this helps!",
@@ -1279,6 +1283,16 @@ DISFLUENCY_RE = re.compile(r"(?i)(?P<lead>\s*,)?\s*\b(?:uh+m?|um+|erm*|uhm+)\b(?
 """A speaker's hesitation in a transcript ("put the uh orange cube"): dropped.  A hesitation between
 two commas is a pause, dropped with them ("the top one, er, pink": the top one pink), unless a
 list item comes before it ("red, um, blue": the list's comma stays; "the top one" is no list item)."""
+
+GLUED_COUNT_RE = re.compile(r"(?i)\b(stacks?|towers?|piles?|rows?|lines?|walls?|grids?|pyramids?|circles?)((?:-[a-z]+)*)-(\d+)\b")
+"""A structure's identifier with a count glued on ("stack-any-4", "pile-5"): the words and the count
+written apart, so the count is read, or refused, as a count (a stack of two had been made up)."""
+
+HESITANT_COLOUR_RE = re.compile(rf"(?i)\b(?P<det>the|a|an)\s+(?:{COLOR_RE})\s*,?\s*(?:uh+m?|um+|erm*|uhm+)\s*,?\s*"
+                                rf"(?P<c>{COLOR_RE})(?P<noun>\s+(?:cube|block|one|brick))\b(?!s)")
+"""One cube named by two colours with a hesitation between ("put the red, er, orange cube on ..."): the
+second colour is the one meant (both cubes had been kept)."""
+
 
 def dropped_hesitation(m: re.Match) -> str:
     """What :data:`DISFLUENCY_RE`'s match ``m`` leaves: a list's comma, or nothing."""
@@ -1451,7 +1465,7 @@ say it in a sentence (``on_patch`` and ``between`` are written with their own ar
 
 CALL_ARGUMENT_ROLES: dict[str, str] = {
     **dict.fromkeys("obj object dragged_obj block cube item pick source".split(), "subject"),
-    **dict.fromkeys("target base_obj dest destination place_on".split(), "target"),
+    **dict.fromkeys("target base base_obj dest destination place_on onto".split(), "target"),
     **dict.fromkeys("ref reference anchor relative_to".split(), "anchor"),
     **dict.fromkeys("region zone corner location".split(), "place"),
     **dict.fromkeys("seed id".split(), "ignored"),
@@ -2483,10 +2497,12 @@ ROW_ROLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 rf"{_ROW_ROLE_BE}(?P<c2>{COLOR_RE})\s*[,;]?\s*(?:and\s+)?(?:the\s+)?(?P<b>left|right)(?:most)?{_ROW_ROLE_BE}(?P<c3>{COLOR_RE})\b"),
      lambda m: m.group(0) if m.group("a") == m.group("b") else
      f"from {m.group('a')} to {m.group('b')}: {m.group('c1')}, {m.group('c2')}, {m.group('c3')}"),
-    # "row of 3 going left to right: red first, green middle, blue last": the list in its said order
+    # "row of 3 going left to right: red first, green middle, blue last": the list in its said order (where a direction is
+    # said: with none, "first" and "last" name no end, and the words are left to be refused)
     (re.compile(rf"\b(?P<c1>{COLOR_RE})\s+first\s*[,;]\s*(?:then\s+)?(?P<c2>{COLOR_RE})\s+(?:in\s+the\s+)?(?:middle|second|next)\s*[,;]?\s*"
                 rf"(?:and\s+)?(?:then\s+)?(?P<c3>{COLOR_RE})\s+last\b"),
-     r"\g<c1>, \g<c2>, \g<c3>"),
+     lambda m: f"{m.group('c1')}, {m.group('c2')}, {m.group('c3')}" if re.search(
+         r"\b(?:left\s+to\s+right|right\s+to\s+left|front\s+to\s+back|back\s+to\s+front)\b", m.string) else m.group(0)),
 )
 """A row said role by role, its ends by side or by first and last: the order listed."""
 

@@ -587,6 +587,8 @@ def _word_class(word: str) -> str:
     low = word.lower()
     if low.isdigit() or low in NUMBER_WORDS:
         return "num"
+    if low in lexicon.COLORS:
+        return "colour"
     if len(word) >= 2 and word.isupper() and word.isalpha():
         return "CAPS"
     return next((k for k, ws in lexicon.CORRECTION_WORD_CLASSES.items() if low in ws), low)
@@ -606,10 +608,22 @@ def _corrected(before: str, fix: str) -> str | None:
         start = max((m.end() for m in re.finditer(r"[.!?;]\s", before)), default=0)
         return before[:start] + fix
     first = _word_class(fixed[0])
+    rel = "|".join(p for p, _ in lexicon.REL_PATTERNS[:-1])
+    if first in ("det", "colour") and re.search(rf"(?i)\b(?:cube|block|one)\b.*?\b(?:{rel})\b.*?\b(?:cube|block|one|patch)\b", fix):
+        # "put the red cube on the blue cube, no, the green cube on the blue cube": a whole clause said again, its verb's
+        # object and place both (the first cube had been kept under the second)
+        verbs = [m for m in tokens if m.group(0).lower() in lexicon.PLACEMENT_VERBS]
+        return before[:verbs[-1].end()] + " " + fix if verbs else None
+    verb_at = max((i for i, m in enumerate(tokens) if m.group(0).lower() in lexicon.PLACEMENT_VERBS), default=-1)
+    if first == "colour" and len(fixed) <= 2 and sum(_word_class(m.group(0)) == "colour" for m in tokens[verb_at + 1:]) >= 2:
+        return None  # "stack red on blue, sorry, I mean green": red or blue?
     recent = [k for k in range(len(tokens) - 1, max(len(tokens) - 5, -1), -1) if _word_class(tokens[k].group(0)) == first]
     recent = [k for k in recent if tokens[k].group(0).lower() == fixed[0].lower()] or recent  # "to the left of the, wait, to the right"
     if first in ("det", "prep") and recent and not any(  # "on the orange, no the purple cube": the phrase said last
             tokens[k].group(0).lower() in lexicon.PLACEMENT_VERBS for k in range(recent[0], len(tokens))):
+        noun = re.search(r"(?i)\b(patch|pad|mat|cube|block)\w*\s*$", before)
+        if fixed[-1].lower() == "one" and noun:  # "on the red patch, no wait, the yellow one": the yellow patch (a cube before)
+            fix = re.sub(r"(?i)\bone\s*$", noun.group(1), fix)
         return before[:tokens[recent[0]].start()] + fix
     if len(fixed) >= 3 and first not in ("det", "prep") and any(re.search(rf"\b(?:{p})\b", fix.lower())
                                                                   for p, _ in lexicon.REL_PATTERNS[:-1]):
@@ -638,9 +652,15 @@ def apply_corrections(text: str) -> str:
     last before it (same first and last word class), a new command the sentence before it, a new
     relation what the verb before it governs.  A correction whose target is not clear is left
     as written (its words are then refused)."""
+    colour_list = rf"(?:{COLOR_RE})(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+)(?:{COLOR_RE}))+\b"
     for m in reversed(list(lexicon.SELF_CORRECTION_RE.finditer(text))):
         fix = re.match(r"[^,.;!?]+", text[m.end():])
         before = text[:m.start()].rstrip(" ,;:-\u2013\u2014")
+        listed = re.match(rf"(?i)(?:of\s+)?{colour_list}", text[m.end():])
+        said = re.search(rf"(?i)(?:\bof\s+)?{colour_list}$", before)
+        if listed and said:  # "a row: red, green, blue, no wait, red, blue, green": the list said again (two had been kept)
+            text = before[:said.start()] + listed.group(0) + text[m.end() + listed.end():]
+            continue
         new = _corrected(before, fix.group(0).strip()) if fix and before.strip() else None
         if new is not None:
             text = new + text[m.end() + fix.end():]
@@ -716,6 +736,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     for pattern, written in lexicon.MARKUP_RES:  # "the **blue** patch", "## Goal", "`red`"
         original = pattern.sub(written, original).strip()
     original = lexicon.EMOJI_RE.sub(" ", original).strip()
+    original = lexicon.GLUED_COUNT_RE.sub(lambda m: f"{m.group(1)}{m.group(2).replace('-', ' ')} {m.group(3)}", original)
     if lexicon.LETTER_SIGNATURE_RE.search(original):  # "Hi Sam, ... Thanks, Priya": a signed message
         original = lexicon.LETTER_GREETING_RE.sub("", lexicon.LETTER_SIGNATURE_RE.sub("", original)).strip() or original
     original = _unshouted(original)
@@ -726,6 +747,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     original = lexicon.FILLER_RE.sub("", original).strip()
     original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", original)  # texting's "2" for "to"
     original = lexicon.TEXTED_YOU_RE.sub("you", original)  # "can u build ...": texting's "u"
+    original = lexicon.HESITANT_COLOUR_RE.sub(r"\g<det> \g<c>\g<noun>", original)  # "the red, er, orange cube": orange
     original = lexicon.DISFLUENCY_RE.sub(lexicon.dropped_hesitation, original)  # a transcript's "uh", "um"
     original = lexicon.STUTTER_RE.sub(lambda m: m.group(0) if re.search(rf"\b(?:{COLOR_RE}|{lexicon.COUNT_WORD_RE})\b|\d", m.group("run"), re.I)
                                       and not re.match(r"(?i)(?:the|a|an)\s", m.group("run")) else m.group("run"), original)
@@ -790,6 +812,12 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.HARMLESS_NEGATION_RE.sub("", text)
     for m in lexicon.FREE_CHOICE_RE.finditer(text):  # "put the red cube left of the blue cube. colours don't matter"
         rest = text[:m.start()] + text[m.end():]
+        others = re.search(rf"\b(?:other|remaining)\s+(?:\d+|{lexicon.COUNT_WORD_RE})\b", m.group(0))
+        if others and not re.search(rf"\b(?:\d+|{lexicon.COUNT_WORD_RE})\b", rest):
+            # "a tower: red bottom, blue top, other two don't matter": the count lives only in those words (two cubes had
+            # been built, the other two dropped with them)
+            raise ParseError(f"'{m.group(0).strip(' ,;')}' counts the other cubes, but \"{original[:80]}\" does not say how many "
+                             "cubes the task has; say it (e.g. \"a tower of four cubes, red at the bottom, blue on top\"), or use --model")
         unnamed = re.search(rf"\b(?:\d+|{lexicon.COUNT_WORD_RE}|some|other|remaining)\s+(?:more\s+)?(?:cubes|blocks|ones)\b(?!\s+of\b)"
                             rf"|\b(?:a|an|any|one)\s+(?:cube|block)\b"
                             rf"|\b(?:tower|stack|row|line|pile)\s+of\s+(?:\d+|{lexicon.COUNT_WORD_RE})\b(?!\s+(?:{COLOR_RE})\b)", re.sub(rf"\b(?:\d+|{lexicon.COUNT_WORD_RE})\s+(?:{COLOR_RE})\b", " ", rest))
@@ -877,12 +905,23 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.rewrite(lexicon.TOP_DOWN_REWRITES, text)
     # "Make a tower. Top: red. Middle: green. Bottom: blue.": each role's cube, whatever order the roles are said in (the
     # colours had been read as a list from the bottom, red at the bottom)
-    said = list(re.finditer(rf"(?<!\bto\s)\b(top|middle|bottom|base)\s*[:=]\s*({COLOR_RE})\b(?!\s*,\s*(?:{COLOR_RE}))", text))
-    roles = {("bottom" if m.group(1) == "base" else m.group(1)): m.group(2) for m in said}
-    if len(said) == len(roles) and set(roles) in ({"top", "bottom"}, {"top", "middle", "bottom"}) and re.search(
-            r"\b(?:towers?|stacks?|stacked)\b", text):
-        ranked = [roles[r] for r in ("bottom", "middle", "top") if r in roles]
-        text = text[:said[0].start()] + "from bottom to top: " + ", ".join(ranked) + text[said[-1].end():]
+    said = list(re.finditer(rf"(?<!\bto\s)\b(top|upper|middle|mid|lower|bottom|base|second|third|fourth|fifth)\s*[:=]\s*"
+                            rf"({COLOR_RE})\b(?!\s*,\s*(?:{COLOR_RE}))", text))
+    same = {"base": "bottom", "mid": "middle"}
+    roles = {same.get(m.group(1), m.group(1)): m.group(2) for m in said}
+    if said and re.search(r"\b(?:towers?|stacks?|stacked)\b", text):
+        orders = (("bottom", "top"), ("bottom", "middle", "top"), ("bottom", "lower", "upper", "top"))
+        order = next((o for o in orders if set(o) == set(roles)), None)
+        if order is None or len(said) != len(roles):  # "top=orange, middle=white" (no bottom), "second=white": which order?
+            raise ParseError(f"the roles said in \"{original[:80]}\" ({', '.join(m.group(0) for m in said)}) do not give every cube "
+                             "of the tower one place; say top and bottom (and middle), or list the order (e.g. \"from bottom to "
+                             "top: black, white, orange\"), or use --model")
+        rest = text[said[-1].end():]
+        other = re.search(rf"\b[a-z]+\s*[:=]\s*(?:{COLOR_RE})\b", rest)
+        if other:  # "top=orange, middle=white, bottom=black, extra=red": a cube of no place (it had gone on top)
+            raise ParseError(f"'{other.group(0)}' in \"{original[:80]}\" names a cube with no place in the tower its roles "
+                             "say; say where it goes, or use --model")
+        text = text[:said[0].start()] + "from bottom to top: " + ", ".join(roles[r] for r in order) + rest
     text = lexicon.rewrite(lexicon.TOP_LIST_REWRITES, text)
     if re.search(r"\b(?:rows?|lines?|line\s+up)\b", text):
         text = lexicon.rewrite(lexicon.ROW_ROLE_REWRITES, text)

@@ -246,12 +246,15 @@ def parse(instruction: str, _framed: bool = False) -> TaskSchema:
         layered = next((w for w in re.findall(r"[a-z]+", label.lower()) if w in ("wall", "pyramid", "grid")), None)
         if layered and not re.search(STRUCTURE_RE, re.sub(r"(?i)\b(?:rows?|layers?|levels?|tiers?|courses?)\b", " ", body)):
             body = f"{layered}: {body}"  # "build-wall: 2 rows x 3 cubes, all gray": a wall said by its rows (it had been a grid)
-        elif noun is not None and not re.search(STRUCTURE_RE, body, re.IGNORECASE):
+        elif noun is not None:
             # "Line-Sort-Colour: red, orange, ...": the structure the label names; "stack-any-4: ..." with its count glued
             # to it (the count had been dropped, a stack of two made up) where the text says none
             glued = re.search(rf"(?i)\b{noun}(?:-[a-z]+)?-(\d+)\b", label)
             counted = glued and not re.search(r"\b\d+\b|\b(?:" + "|".join(lexicon.NUMBER_WORDS) + r")\b", body, re.IGNORECASE)
-            body = f"{noun} of {glued.group(1)}: {body}" if counted else f"{noun}: {body}"
+            if counted:
+                body = f"{noun} of {glued.group(1)}: {body}"
+            elif not re.search(STRUCTURE_RE, body, re.IGNORECASE):
+                body = f"{noun}: {body}"
         schema = parse(body, _framed=True)
         return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})  # as written
     scene = initial.split(instruction)  # "Initially red is on blue. Put ...": rho_0's stacks, then the goal
@@ -297,9 +300,16 @@ def _read(instruction: str) -> TaskSchema:
                 # parameter a reader sets, such as a default count). A structure filled up with
                 # cubes nobody named makes this reading fail (the next reader may do better)
                 try:
-                    return citations.enforce(free_listed_orders(f, free_unnamed_orders(f, schema)), refuse=False)
+                    read = citations.enforce(free_listed_orders(f, free_unnamed_orders(f, schema)), refuse=False)
                 except citations.UncitedConstraint as exc:
                     gap = ParseError(f"\"{f.original[:80]}\": {exc}; or use --model")
+                else:
+                    if not (re.search(r"\bin any order\b", f.text) and any(type(p) is Stack for p in read.goal_predicate().walk())):
+                        return read
+                    # "a tower of red, green and blue, doesn't matter which order, and put yellow to the left of it": the
+                    # order said free and the tower read in order (the clause relating it had kept its list's order)
+                    gap = ParseError(f"read \"{f.original[:80]}\" as: {read.goal_summary}; but 'in any order' leaves the order "
+                                     "free and that task orders the tower; say the tower in a sentence of its own, or use --model")
             first_gap = first_gap or gap  # a reading that drops a mention: try the next reader
     if first_gap is not None:
         raise first_gap
