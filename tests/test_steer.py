@@ -2,6 +2,7 @@
 
 import json
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -1616,3 +1617,30 @@ def test_the_cube_of_a_task_with_several_cubes_is_refused(tmp_path):
     fam = Family(create_family(compile_instruction("Stack the pink cube on the brown cube", tmp_path, name="fam").path).path)
     with pytest.raises(BadInput, match="names one cube"):
         steer(fam.path, "make the cube yellow")
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # a hostile tester's steering silent errors (this session's features)
+    ("Put the red cube to the left of the green cube and the green cube to the left of the blue cube",
+     ["make it a tower, same order top to bottom"], ("pivot", ["stack(blue,green,red)"])),  # (bottom to top before)
+    ("Put the red cube to the left of the green cube and the green cube to the left of the blue cube",
+     ["make it a tower, leftmost on top"], ("pivot", ["stack(blue,green,red)"])),  # (any order before)
+])
+def test_chain_to_tower_keeps_the_said_end(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+@pytest.mark.parametrize("base,edits,words", [
+    ("Make a row of red, green and blue from left to right", ["stack them instead, smallest on top"], "carry no numbers"),
+    ("Put the red cube to the left of the green cube and the blue cube to the left of the yellow cube",
+     ["make it a tower, same order bottom to top"], "no one order"),
+    ("Spell CAT with letter cubes from left to right", ["n=4"], "a count says no letters"),
+])
+def test_steering_that_would_invent_is_refused(tmp_path, base, edits, words):
+    from rpg.errors import BadInput
+
+    fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
+    for e in edits[:-1]:
+        steer(fam.path, e)
+    with pytest.raises(BadInput, match=re.escape(words)):
+        steer(fam.path, edits[-1])

@@ -1263,6 +1263,11 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
                 spec = spec.with_items([Item(color=GRADIENT_ORDER[i % len(GRADIENT_ORDER)]) for i in range(len(spec.items))])
                 continue
             need = {"label": "letters", "number": "digits", "color": "colors"}[key]
+            if spec.material == "colors" and need != "colors" and not any(q.op == "material" for q in ops):
+                # "stack them instead, smallest on top" of coloured cubes: they carry no numbers (digit cubes nobody named
+                # had replaced them)
+                raise SteerError(f"the {spec.structure}'s cubes carry no {'numbers' if need == 'digits' else 'letters'} to sort by; "
+                                 f"say the {need} (e.g. \"use the digit cubes 1, 2 and 3\"), or use --model")
             if spec.material != need:  # new cubes nobody named one by one
                 spec = replace(spec.with_items(_material_items(need, len(spec.items), spec.colors())), named=False)
             if key == "color" and spec.structure == "line":
@@ -1461,6 +1466,9 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
         elif o.op == "count":
             if not spec.kind.sized_by_count:
                 raise SteerError(f"the size of a {spec.structure} is set by its dimensions (e.g. \"a 3x3 base\")")
+            if spec.word and not any(q.op == "word" for q in ops):  # "n=4" of CAT: which letter? (a made-up one had been added)
+                raise SteerError(f"the cubes spell '{spec.word}'; a count says no letters: say the new word (e.g. \"make it "
+                                 f"spell {spec.word}S\"), or use --model")
             n = p.get("count") or (round(len(spec.items) * p["factor"]) if "factor" in p else len(spec.items) + p.get("delta", 0))
             if p.get("grow") and (n - len(spec.items)) * p["grow"] <= 0:
                 raise SteerError(f"'{'taller' if p['grow'] > 0 else 'shorter'}' and {n} cubes disagree: the "

@@ -315,6 +315,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     if ref_spec is None and any(o.op == "structure" for o in plan.ops) and all(
             o.op in ("structure", "count", "dims", "recolor", "keep") for o in plan.ops):
         # "put them in a tower instead": the task's cubes, in no order, as the structure named
+        if any(o.op == "structure" and o.params.get("keep_order") for o in plan.ops):
+            raise SteerError(f"the edit keeps the order of v{reference}'s cubes, but its goal gives them no one order "
+                             f"({ref_schema.goal_summary}); say the order (e.g. \"from bottom to top: red, green, blue\"), or use --model")
         cubes = tuple(Item(color=a.color) if a.kind == "colored_cube" else Item(label=a.label)
                       for a in ref_schema.assets if a.kind != "goal_patch")
         ref_spec = TaskSpec("line", cubes, direction=None)
@@ -449,10 +452,20 @@ def _chain_edit(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str, str] 
         return None
     order, direction = chain
     op = plan.ops[0]
-    if op.op == "structure" and op.params.get("to") == "tower" and op.params.get("keep_order") and not op.params.get("end"):
+    t = plan.text.lower()
+    first_on_top = re.search(r"\btop\s+to\s+bottom\b|\bfrom\s+the\s+top\b|\b(?:first|(?:left|front)(?:most)?)\s+(?:one\s+)?(?:on\s+top|at\s+the\s+top)\b"
+                             r"|\b(?:last|(?:right|back)(?:most)?)\s+(?:one\s+)?(?:at|on)\s+the\s+bottom\b", t)
+    first_below = re.search(r"\b(?:first|(?:left|front)(?:most)?)\s+(?:one\s+)?(?:at|on)\s+the\s+bottom\b"
+                            r"|\b(?:last|(?:right|back)(?:most)?)\s+(?:one\s+)?(?:on\s+top|at\s+the\s+top)\b", t)
+    if op.op == "structure" and op.params.get("to") == "tower" and not op.params.get("end") and (
+            op.params.get("keep_order") or first_on_top or first_below):
         # "make it a tower, same order bottom to top": the chain's order from its first end up (the cubes had been
-        # stacked in the order the task named them)
-        instruction = "Stack the blocks from bottom to top: " + ", ".join(order)
+        # stacked in the order the task named them); "... top to bottom", "leftmost on top": from its first end down
+        if re.search(r"\b(?:left|right)", t) and direction not in ("left_to_right", "right_to_left") \
+                or re.search(r"\b(?:front|back)(?:most)?\b", t) and direction not in ("front_to_back", "back_to_front"):
+            return None  # an end of another axis than the chain's: not read
+        seq = order[::-1] if first_on_top else order
+        instruction = "Stack the blocks from bottom to top: " + ", ".join(seq)
         return parse(instruction), instruction, "pivot"
     if op.op not in ("reverse", "direction"):
         return None
