@@ -60,6 +60,7 @@ STRANGER_SETS = {
     "stranger23": ("stranger23.yaml", "STRANGER set 23 (stranger23.yaml, development material)"),
     "stranger24": ("stranger24.yaml", "STRANGER set 24 (stranger24.yaml, development material, first run at the end of the seventeenth session)"),
     "stranger25": ("stranger25.yaml", "STRANGER set 25 (stranger25.yaml, development material)"),
+    "stranger26": ("stranger26.yaml", "STRANGER set 26 (stranger26.yaml, development material, first run at the end of the eighteenth session)"),
 }
 SPLITS = HERE / "splits.yaml"
 

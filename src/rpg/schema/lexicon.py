@@ -1789,13 +1789,14 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"(?i)^\s*s/({COLOR_RE})/({COLOR_RE})/?\s*$"), r"make the \1 cube \2"),
     (re.compile(rf"(?i)^\s*(?:(?:the|that)\s+)?(?-i:(?![A-Z]{{2,}}\b))[a-z]+(?:\s+[a-z]+)?\s*(?:->|\u2192|=>)\s*(?:{COLOR_RE})(?:\s*(?:,|and)\s*(?:(?:the|that)\s+)?"
                 rf"[a-z]+(?:\s+[a-z]+)?\s*(?:->|\u2192|=>)\s*(?:{COLOR_RE}))*(?:\s+and\s+(?:{COLOR_RE}))?\s*[.!]?\s*$"),
-     lambda m: "make " + " and ".join(
+     lambda m: m.group(0) if re.fullmatch(rf"(?i)\s*(?:{COLOR_RE})\s*(?:->|\u2192|=>)\s*(?:{COLOR_RE})\s*[.!]?\s*", m.group(0)) else "make " + " and ".join(
          (f"the {x} cube" if re.fullmatch(rf"(?i){COLOR_RE}", x) else f"the {re.sub(r'(?i)^(?:the|that)[ ]+', '', x)}") + f" {y}"
          for x, y in re.findall(r"([a-z]+(?:\s+[a-z]+)?)\s*(?:->|\u2192|=>)\s*([a-z]+(?:\s+and\s+[a-z]+)?)", m.group(0), re.I))),
     # "same but in the front left corner", "like before but with the yellow cube": the change, to the task as it is
-    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|now|so|and)\s*,?\s*)*(?:(?:the\s+)?same(?:\s+thing)?(?:\s+as\s+(?:before|now|that|this))?"
-                r"|like\s+(?:before|that|this|now))\s*,?\s*but\s+(?P<x>.+?)(?:\s+instead)?\s*[.!]?\s*$"), r"\g<x> instead"),
-    (re.compile(rf"(?i)^\s*with\s+(?:the\s+|a\s+)?({COLOR_RE})\s+(?:cube|block|one)\s+instead\s*$"), r"make the cube \1"),
+    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|now|so|and)\s*,?\s*)*(?:(?:the\s+)?same(?:\s+thing)?\s+as\s+before|like\s+before)"
+                r"\s*,?\s*but\s+(?P<x>.+?)(?:\s+instead)?\s*[.!]?\s*$"), r"\g<x> instead"),
+    (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|now|so|and)\s*,?\s*)*(?:(?:the\s+)?same(?:\s+thing)?\s*,?\s*but\s+)?with\s+(?:the\s+|a\s+)?"
+                rf"({COLOR_RE})\s+(?:cube|block|one)(?:\s+instead)?\s*[.!]?\s*$"), r"make the cube \1"),
     # "red <-> green": the two exchanged; "mv tower -> center": moved there; "left to right instead": that direction
     (re.compile(r"(?i)^\s*([a-z]+(?:\s+[a-z]+)?)\s*(?:<->|\u2194|<=>)\s*([a-z]+(?:\s+[a-z]+)?)\s*[.!]?\s*$"), r"swap \1 and \2"),
     (re.compile(r"(?i)^\s*mv\s+(?:the\s+)?([a-z]+(?:\s+[a-z]+)?)\s*(?:->|\u2192|=>|\s+to)\s*(?:the\s+)?([a-z]+(?:\s+[a-z]+)?)\s*[.!]?\s*$"),

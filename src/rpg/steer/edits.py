@@ -630,7 +630,8 @@ def read_ops(t: str) -> list[Op]:
     shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out|use|do|spell)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+|one\s+|a\s+single\s+)(?:\d+x\d+(?:x\d+)?\s+)?"
                       rf"{STRUCTURE_RE}", t)
     stack_all = re.search(r"\b(?:stack|pile)\s+(?:them|all|everything|(?:all\s+)?the\s+(?:blocks|cubes))(?:\s+(?:up|instead|together"
-                          r"|on top of each other|on top of one another))*(?:\W*$|\s*[,;]\s*(?=\S))", t) or (
+                          r"|on top of each other|on top of one another))*(?:\W*$|\s*[,;]\s*(?=(?:the\s+)?(?:smallest|largest|biggest|lowest|highest)"
+                          r"(?:\s+(?:one|number|digit|letter))?\s+(?:on\s+top|at\s+the\s+(?:top|bottom)|first|last)\W*$))", t) or (
         SAME_ORDER_RE.search(t) and re.search(r"\b(?:stack|pile)\s+(?:them|all|everything)\b", t))  # "stack them, in the same order"
     end_role = rf"(?:\s*,?\s*(?:with\s+)?(?:the\s+)?(?P<end_c>{COLOR_RE})\s+(?:block\s+|cube\s+|one\s+)?(?:at|on)\s+(?:the\s+)?" \
         r"(?P<end_w>bottom|base|top|left|right))?"  # "now as a tower, red at the bottom": the order kept from that end
@@ -1263,7 +1264,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
                 spec = spec.with_items([Item(color=GRADIENT_ORDER[i % len(GRADIENT_ORDER)]) for i in range(len(spec.items))])
                 continue
             need = {"label": "letters", "number": "digits", "color": "colors"}[key]
-            if spec.material == "colors" and need != "colors" and not any(q.op == "material" for q in ops):
+            if spec.material == "colors" and p["key"] == "auto" and not any(q.op == "material" for q in ops):
                 # "stack them instead, smallest on top" of coloured cubes: they carry no numbers (digit cubes nobody named
                 # had replaced them)
                 raise SteerError(f"the {spec.structure}'s cubes carry no {'numbers' if need == 'digits' else 'letters'} to sort by; "
