@@ -3636,3 +3636,11 @@ def test_attack_on_spec_lines_is_refused(text, words):
 
 def test_which_one_at_the_bottom_leaves_the_order_free():
     assert type(parse("stack red green blue, doesn't matter which one's at the bottom").goal).__name__ == "UnorderedStack"
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("line up white gray black from left to right", ["line[left_to_right](white,gray,black)"]),  # three colours, no commas
+    ("stack em all up: red green blue yellow, red first", ["stack(red,green,blue,yellow)"]),  # (a fifth cube, red)
+])
+def test_colour_runs_are_lists(text, expected):
+    assert meaning(parse(text)) == expected

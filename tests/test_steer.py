@@ -1644,3 +1644,16 @@ def test_steering_that_would_invent_is_refused(tmp_path, base, edits, words):
         steer(fam.path, e)
     with pytest.raises(BadInput, match=re.escape(words)):
         steer(fam.path, edits[-1])
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # a row's end cube by its side, a cube by its place said with "one in the middle"/"on top"
+    ("Make a row of three cubes from left to right: pink, gray, brown", ["make the leftmost one red"],
+     ("tweak", ["line[left_to_right](red,gray,brown)"])),
+    ("Make a row of three cubes from left to right: pink, gray, brown", ["the one on the left -> red"],
+     ("tweak", ["line[left_to_right](red,gray,brown)"])),
+    ("Put the blue cube between the red cube and the yellow cube", ["the one in the middle should be black"],
+     ("tweak", ["between(black;red,yellow)"])),
+])
+def test_cubes_by_their_place(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected

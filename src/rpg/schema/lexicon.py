@@ -1787,11 +1787,11 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"^\s*[A-Z]{{2,}}\s*(?:->|\u2192|=>)\s*(?!(?i:{COLOR_RE})\b)([A-Z]{{2,}})\s*[.!]?\s*$"), r"make it spell \1"),
     # terse recolours: "patch -> cyan", "brown -> cyan, orange -> pink", "s/yellow/blue/": each named thing made that colour
     (re.compile(rf"(?i)^\s*s/({COLOR_RE})/({COLOR_RE})/?\s*$"), r"make the \1 cube \2"),
-    (re.compile(rf"(?i)^\s*(?:(?:the|that)\s+)?(?-i:(?![A-Z]{{2,}}\b))[a-z]+(?:\s+[a-z]+)?\s*(?:->|\u2192|=>)\s*(?:{COLOR_RE})(?:\s*(?:,|and)\s*(?:(?:the|that)\s+)?"
+    (re.compile(rf"(?i)^\s*(?:(?:the|that)\s+)?(?-i:(?![A-Z]{{2,}}\b))[a-z]+(?:\s+[a-z]+){{0,4}}\s*(?:->|\u2192|=>)\s*(?:{COLOR_RE})(?:\s*(?:,|and)\s*(?:(?:the|that)\s+)?"
                 rf"[a-z]+(?:\s+[a-z]+)?\s*(?:->|\u2192|=>)\s*(?:{COLOR_RE}))*(?:\s+and\s+(?:{COLOR_RE}))?\s*[.!]?\s*$"),
      lambda m: m.group(0) if re.fullmatch(rf"(?i)\s*(?:{COLOR_RE})\s*(?:->|\u2192|=>)\s*(?:{COLOR_RE})\s*[.!]?\s*", m.group(0)) else "make " + " and ".join(
          (f"the {x} cube" if re.fullmatch(rf"(?i){COLOR_RE}", x) else f"the {re.sub(r'(?i)^(?:the|that)[ ]+', '', x)}") + f" {y}"
-         for x, y in re.findall(r"([a-z]+(?:\s+[a-z]+)?)\s*(?:->|\u2192|=>)\s*([a-z]+(?:\s+and\s+[a-z]+)?)", m.group(0), re.I))),
+         for x, y in re.findall(r"([a-z]+(?:\s+[a-z]+){0,4})\s*(?:->|\u2192|=>)\s*([a-z]+(?:\s+and\s+[a-z]+)?)", m.group(0), re.I))),
     # "same but in the front left corner", "like before but with the yellow cube": the change, to the task as it is
     (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|now|so|and)\s*,?\s*)*(?:(?:the\s+)?same(?:\s+thing)?\s+as\s+before|like\s+before)"
                 r"\s*,?\s*but\s+(?P<x>.+?)(?:\s+instead)?\s*[.!]?\s*$"), r"\g<x> instead"),
@@ -1806,6 +1806,9 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "nah, like before": the version before this one
     (re.compile(r"(?i)^\s*(?:(?:nah|no|hmm+|ok(?:ay)?|actually)\s*,?\s*)*(?:(?:just\s+)?(?:like|as)\s+(?:it\s+was\s+)?before|as\s+it\s+was)"
                 r"\s*[.!]?\s*$"), "undo"),
+    # "the one in the middle", "the cube on top": the cube by its place, as "the middle one" says it
+    (re.compile(r"(?i)\bthe\s+(?:one|cube|block)\s+(?:in\s+the\s+(middle|centre|center)|(?:on|at)\s+(?:the\s+)?(top|bottom))\b"),
+     lambda m: f"the {(m.group(1) or m.group(2)).replace('centre', 'middle').replace('center', 'middle')} one"),
     # "n=6 pls", "count = 4": the structure's count
     (re.compile(r"(?i)^\s*(?:n|count|num|size|length|height)\s*=\s*(\d+)\s*(?:please|pls|plz)?\s*[.!]?\s*$"), r"make it \1"),
     # "now five instead of three": that count
@@ -2286,7 +2289,9 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "blue blue red red", "red blue red blue": a transcript's list of cubes with no commas, a colour
     # said again for each cube; "the red red block" is one cube (a stutter)
     (re.compile(rf"(?P<det>\b(?:the|a|an)\s+)?\b(?P<run>(?:{COLOR_RE})(?:\s+(?:{COLOR_RE}))+)\b(?P<noun>\s+(?:block|cube|one)\b)?"),
-     lambda m: m.group(0) if len(set(m.group("run").split())) == len(m.group("run").split())
+     lambda m: (", ".join(m.group("run").split()) if not m.group("det") and not m.group("noun") and len(m.group("run").split()) >= 3
+                else m.group(0))  # "line up white gray black": three or more colours, each its cube
+     if len(set(m.group("run").split())) == len(m.group("run").split())
      else (m.group("det") + re.sub(rf"\b({COLOR_RE})(?:\s+\1\b)+", r"\1", m.group("run")) + m.group("noun"))
      if m.group("det") and m.group("noun")
      else (m.group("det") or "") + ", ".join(m.group("run").split()) + (m.group("noun") or "")),

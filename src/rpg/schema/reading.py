@@ -894,7 +894,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         before = {c for c in re.findall(rf"\b({COLOR_RE})\s+(?:goal\s+)?(?:patch|pad|mat|tile|area)\b", text[:m.start()])}
         if len(before) == 1:
             text = text[:m.start()] + f"the {before.pop()} patch" + text[m.end():]
-    if re.search(r"\b(?:rows?|lines?|line\s+up)\b", text):  # "a row of red, blue and green, red first, from left to right"
+    if re.search(r"\b(?:rows?|lines?|line\s+up|stack\w*|towers?)\b", text):  # "a row of red, blue and green, red first, from left to right"
         said_first = re.search(rf"\s*,\s*(?:with\s+)?(?:the\s+)?({COLOR_RE})(?:\s+(?:cube|block|one))?\s+first\b(?=\s*(?:[,.;!]|$))", text)
         listed_first = re.search(rf"\b({COLOR_RE})\b", text)
         if said_first and listed_first and said_first.start() > listed_first.end():

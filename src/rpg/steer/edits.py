@@ -301,6 +301,10 @@ def _selector(text: str) -> dict | None:
                       r"|\b(\d+)\s+(?:(?:ones|cubes|blocks)\s+)?(?:on|at)\s+the\s+(?:far\s+)?(left|right)(?:\s+end)?\b", text)
     if sides:  # "the two leftmost ones", "the left 2", "the 2 on the right": that many from that end of a row
         return {"end": sides.group(1) or sides.group(4) or sides.group(6), "n": int(sides.group(2) or sides.group(3) or sides.group(5))}
+    side = re.fullmatch(r"(?:the\s+)?(?:(left|right)most(?:\s+(?:one|cube|block))?|(left|right)(?:-hand)?\s+(?:one|cube|block)"
+                        r"|(?:one|cube|block)\s+(?:on|at)\s+the\s+(?:far\s+)?(left|right)(?:\s+end)?)", text)
+    if side:  # "the leftmost one", "the one on the left": the one cube at that end of a row
+        return {"end": side.group(1) or side.group(2) or side.group(3), "n": 1}
     nth = re.search(r"\b(?:(\d+)(?:st|nd|rd|th)|(second|third|fourth|fifth|sixth))\b(?:\s+(?:one|block|cube))?"
                     r"(?:\s+from\s+the\s+(bottom|top|left|right|front|back))?", text)
     places = re.sub(r"\bfrom\s+the\s+(?:top|bottom|left|right)\b", " ", text)  # "the 2nd from the bottom": one place
