@@ -141,6 +141,16 @@ NUMBER_WORDS = {
 }
 """Number words -> their value (written as digits by the parser's and the steering's normalisers)."""
 
+DIGIT_WORDS = ("zero", *sorted((w for w, v in NUMBER_WORDS.items() if 1 <= v <= 9 and w not in ("single", "pair", "couple", "both")),
+                                key=NUMBER_WORDS.get))
+"""The digits' names, each at its digit's index ("zero" at 0 ... "nine" at 9)."""
+DIGIT_WORD_RE = re.compile(rf"(?i)\b(?:{'|'.join(DIGIT_WORDS)})\b")
+DIGIT_WORDS_RE = re.compile(rf"(?i)(?P<noun>\b(?:numbers?|digits?|numerals?)(?:\s+(?:cubes?|blocks?))?\s+)"
+                            rf"(?P<list>(?:{'|'.join(DIGIT_WORDS)})(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+|\s*&\s*)(?:{'|'.join(DIGIT_WORDS)}))*)\b")
+"""Digit cubes named by number words ("stack number four on number two", "the digits one, two and
+three"): written as digits before the labels are read (they had been read as two coloured cubes,
+and as a line of four)."""
+
 COUNT_WORD_RE = "|".join(w for w in NUMBER_WORDS if w not in ("single", "pair", "couple", "both"))
 """The number words that say a count alone ("three", "just one is enough")."""
 
@@ -2531,4 +2541,46 @@ HEADING_SENTENCE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      r"\1: "),
 )
 """A structure named in a sentence of its own, its parts counted in the next: one description."""
+
+READ_FROM_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    (re.compile(r"(?i)\b(?:when|as|if)\s+(read|viewed|seen)\s+(?=from\b|left|right|top|bottom)"), r"\1 "),
+)
+""""when read from left", "as seen from the top": the reading direction, said without its clause."""
+
+LABEL_NOUN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "the cube with the M", "the block with the 4 on it": the cube labelled so
+    (re.compile(r"\b([Tt]he|[Aa]n?)\s+(block|cube)\s+(?:with|bearing|showing|that\s+(?:has|shows))\s+(?:the\s+|an?\s+)?"
+                r"(?:(?:letter|digit|number)\s+)?'?([A-Z]|\d)'?(?:\s+on\s+it)?\b(?!'|\s*(?:[x\u00d7+\-=*]|\w+\s+(?:blocks?|cubes?)\b))"),
+     lambda m: f"{m.group(1)} {'letter' if m.group(3).isalpha() else 'digit'} {m.group(3)} {m.group(2)}"),
+    # "block 4", "cube labelled B": a label after its cube's noun ("I" as a pronoun stays)
+    (re.compile(r"\b(block|cube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))"
+                r"(?<!\bI(?='[a-z]|\s+(?:[a-z]+ed|[a-z]+ing|am|have|had|want|need|would|will|just|think|said|mean|like|told|see|saw|look|can)\b))"),
+     lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1)}"),
+)
+"""A label cube named with its noun first ("the cube with the M", "block 4"): "the letter M cube"."""
+
+LABEL_ARTICLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    (re.compile(r"\b(the|a|an)\s+([A-Z])\s+(block|cube)\b"), r"\1 letter \2 \3"),  # "the A block"
+    (re.compile(r"\b(the)\s+(\d)\s+(block|cube)\b(?!s)"), r"\1 digit \2 \3"),  # "the 3 cube"
+)
+"""A label between an article and a cube's noun ("the A block", "the 3 cube"): a letter or digit cube."""
+
+TOWER_BETWEEN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    (re.compile(r"\b(?:goes\s+|is\s+|sits\s+|stands\s+)?in\s+between\b(?!\s+(?:the|them|those|these|of|a|an|it|each)\b)"),
+     "in the middle"),
+)
+"""In a tower, "the green one goes in between" (a middle left unnamed): in the middle."""
+
+READING_END_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    (re.compile(r"\bfrom\s+(?:the\s+)?(left|right|front|back)(?:\s+(?:side|end))?\b(?!\s*(?:to|of|side|end|corner|edge|half|part)\b)"),
+     lambda m: "from " + {"left": "left to right", "right": "right to left", "front": "front to back", "back": "back to front"}[m.group(1)]),
+)
+"""Of a line or a sort, "in increasing order from left", "spell it from the right": the reading direction, its far end unsaid."""
+
+MAP_TOP_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    (re.compile(r"\b(push|move|slide|shift|sweep|bring|drag)\b([^.;]*?)\b(to|towards?)\s+the\s+(top|bottom)\b"
+                r"(?!\s+(?:of|left|right|layer|row|cube|block|one|edge|side|corner)\b)"),
+     lambda m: f"{m.group(1)}{m.group(2)}{m.group(3)} the {'back' if m.group(4) == 'top' else 'front'}"),
+)
+"""With no tower to have a top, "move all the red blocks to the bottom": the near side of the map, the front."""
 

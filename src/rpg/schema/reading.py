@@ -709,13 +709,6 @@ def _label_tower_roles(text: str) -> str:
     return f"{head} from bottom to top: {order}" + re.sub(r"^[\s,;]*(?:and\s+)?(?=[.!]|$)", "", text[found[-1].end():])
 
 
-_DIGIT_WORDS = ("zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine")
-_DIGIT_WORD_RE = re.compile(rf"(?i)\b(?:{'|'.join(_DIGIT_WORDS)})\b")
-_DIGIT_WORDS_RE = re.compile(rf"(?i)(?P<noun>\b(?:numbers?|digits?|numerals?)(?:\s+(?:cubes?|blocks?))?\s+)"
-                             rf"(?P<list>(?:{'|'.join(_DIGIT_WORDS)})(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+|\s*&\s*)(?:{'|'.join(_DIGIT_WORDS)}))*)\b")
-"""Digit cubes named by number words ("stack number four on number two", "the digits one, two and
-three"): written as digits before the labels are read (they had been read as two coloured cubes,
-and as a line of four)."""
 
 
 def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, list[tuple[str, str]]]:
@@ -764,24 +757,19 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         original = pattern.sub(full, original)
     original = sorted_labels(original)  # "Stack the digit cubes 7, 3 and 5 in ascending order": listed sorted
     original = lexicon.LABELS_AND_NOUN_RE.sub(r"\1 \2 \4 and the \3 \4", original)  # "the 1 & 9 cubes"
-    original = _DIGIT_WORDS_RE.sub(lambda m: m.group("noun") + _DIGIT_WORD_RE.sub(
-        lambda w: str(_DIGIT_WORDS.index(w.group(0).lower())), m.group("list")), original)
+    original = lexicon.DIGIT_WORDS_RE.sub(lambda m: m.group("noun") + lexicon.DIGIT_WORD_RE.sub(
+        lambda w: str(lexicon.DIGIT_WORDS.index(w.group(0).lower())), m.group("list")), original)
     if not original:
         raise ParseError("the instruction is empty; describe a task, e.g. \"stack the red block on the blue block\"")
     if len(original) > MAX_INSTRUCTION_CHARS:
         raise ParseError(f"the instruction has {len(original)} characters; the limit is {MAX_INSTRUCTION_CHARS}")
-    original = re.sub(r"(?i)\b(?:when|as|if)\s+(read|viewed|seen)\s+(?=from\b|left|right|top|bottom)", r"\1 ", original)  # "when read from left"
+    original = lexicon.rewrite(lexicon.READ_FROM_REWRITES, original)
     # "so that they read 1 2 3", "reads A, B, C": the labels read as one word ("read 123")
     if not SORT_WORD_RE.search(original):  # "... read A, B, C, D in alphabetical order": a sort, read as one
         original = re.sub(r"\b((?:read|spell|show)(?:s|ing)?)\s+((?:[A-Z0-9](?:\s*,\s*(?:and\s+)?|\s+and\s+|\s*-\s*|\s+))+[A-Z0-9])"
                           r"(?![\w'])", lambda m: f"{m.group(1)} {re.sub(r'[^A-Z0-9]', '', m.group(2))}", original)
     # "the cube with the M", "the block with the 4 on it": the cube labelled so
-    labelled = re.sub(r"\b([Tt]he|[Aa]n?)\s+(block|cube)\s+(?:with|bearing|showing|that\s+(?:has|shows))\s+(?:the\s+|an?\s+)?"
-                      r"(?:(?:letter|digit|number)\s+)?'?([A-Z]|\d)'?(?:\s+on\s+it)?\b(?!'|\s*(?:[x\u00d7+\-=*]|\w+\s+(?:blocks?|cubes?)\b))",
-                      lambda m: f"{m.group(1)} {'letter' if m.group(3).isalpha() else 'digit'} {m.group(3)} {m.group(2)}", original)
-    labelled = re.sub(r"\b(block|cube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))"
-                      r"(?<!\bI(?='[a-z]|\s+(?:[a-z]+ed|[a-z]+ing|am|have|had|want|need|would|will|just|think|said|mean|like|told|see|saw|look|can)\b))",
-                      lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1)}", labelled)  # "block 4"
+    labelled = lexicon.rewrite(lexicon.LABEL_NOUN_REWRITES, original)
     listed = re.search(r"\b[A-Z0-9](?:\s*,\s*(?:and\s+)?[A-Z0-9]\b|\s+and\s+[A-Z0-9]\b)", original)  # "T, O, P": a list
     labelled = BARE_LABEL_RE.sub(lambda m: m.group(0) if listed and m.group(1) != "the" else
                                  f"{m.group(1)} {'' if m.group(1) == 'the' else 'the '}{m.group(2)} block",
@@ -792,8 +780,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         # cubes ("stack 2 on 1" alone stays refused: two cubes on one?)
         len(re.findall(r"\b\d\s+(?:on|onto|on\s+top\s+of)\s+\d\b", original)) >= 2
         and not re.search(r"(?i)\b(?:blocks?|cubes?|bricks?|boxes|towers?|stacks?\s+of|high|tall|levels?|rows?|layers?)\b", original)))
-    labelled = re.sub(r"\b(the|a|an)\s+([A-Z])\s+(block|cube)\b", r"\1 letter \2 \3", labelled)  # "the A block"
-    labelled = re.sub(r"\b(the)\s+(\d)\s+(block|cube)\b(?!s)", r"\1 digit \2 \3", labelled)  # "the 3 cube"
+    labelled = lexicon.rewrite(lexicon.LABEL_ARTICLE_REWRITES, labelled)
     text = labelled.lower()
     text = re.sub(r"[\u2018\u2019\u201c\u201d`]", "'", text)
     text = text.replace('"', "'")
@@ -967,8 +954,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.LAYER_SYNONYM_RE.sub(lambda m: "bottom " if m.group("low") else "top ", text)
     # "the green one goes in between" (a middle left unnamed): in the middle
     if re.search(r"\b(?:stack|stacked|tower|towers|stacks)\b", text):
-        text = re.sub(r"\b(?:goes\s+|is\s+|sits\s+|stands\s+)?in\s+between\b(?!\s+(?:the|them|those|these|of|a|an|it|each)\b)",
-                      "in the middle", text)
+        text = lexicon.rewrite(lexicon.TOWER_BETWEEN_REWRITES, text)
     text = lexicon.rewrite(lexicon.PATCH_CENTRE_AND_START_REWRITES, text)
     first = re.search(rf"\b(?:{COLOR_RE})\b", text)  # "... starting with red on the left": red first, left to right
     text = lexicon.END_SIDE_RE.sub(lambda m: f"{m.group('verb')} with {m.group('c')} from {lexicon.END_SIDE_DIRECTION[m.group('side')]}"
@@ -979,9 +965,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.rewrite(lexicon.LANDMARK_REWRITES, text)
     if re.search(r"\b(?:line|lines|row|rows|order|sort\w*|spell\w*|reads?|ascending|descending|increasing|decreasing)\b", text):
         # "in increasing order from left", "spell it from the right": the reading direction, its far end unsaid
-        text = re.sub(r"\bfrom\s+(?:the\s+)?(left|right|front|back)(?:\s+(?:side|end))?\b(?!\s*(?:to|of|side|end|corner|edge|half|part)\b)",
-                      lambda m: "from " + {"left": "left to right", "right": "right to left", "front": "front to back",
-                                           "back": "back to front"}[m.group(1)], text)
+        text = lexicon.rewrite(lexicon.READING_END_REWRITES, text)
     text = lexicon.rewrite(lexicon.PLEASE_REWRITES, text)
     text = " ".join(w for w in re.split(r"(?<=\S)\s+(?=\S)", text)
                     if re.sub(r"[.,;:!?]+$", "", w) not in IGNORABLE_HERE)
@@ -1093,9 +1077,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.rewrite(lexicon.MAP_WORD_REWRITES, text)
     if not re.search(r"\b(?:towers?|stacks?|stacked|stacking|piles?|columns?|pyramids?|walls?|on\s+top|layers?|levels?)\b", text):
         # "move all the red blocks to the bottom", with no tower to have a bottom: the near side of the map, the front
-        text = re.sub(r"\b(push|move|slide|shift|sweep|bring|drag)\b([^.;]*?)\b(to|towards?)\s+the\s+(top|bottom)\b"
-                      r"(?!\s+(?:of|left|right|layer|row|cube|block|one|edge|side|corner)\b)",
-                      lambda m: f"{m.group(1)}{m.group(2)}{m.group(3)} the {'back' if m.group(4) == 'top' else 'front'}", text)
+        text = lexicon.rewrite(lexicon.MAP_TOP_REWRITES, text)
     text = lexicon.rewrite(lexicon.LABEL_CUBE_REWRITES, text)
     for m in reversed(list(lexicon.BOTH_OF_THEM_RE.finditer(text))):  # "... far from both of them": the cubes before
         named = [c for c in dict.fromkeys(re.findall(rf"\b({COLOR_RE})\b(?!\s+(?:goal\s+|target\s+)?patch)", text[:m.start()]))
