@@ -2078,7 +2078,7 @@ def test_directions_and_places_said_tersely_or_after_the_fact(text, expected):
 @pytest.mark.parametrize("text,match", [
     # a direction no part of the goal orders by (the wall judges its layers' colours, not their order in a row)
     ("build a wall: bottom row from left to right red green blue, top row from left to right yellow white pink",
-     "'left to right' says which way"),
+     "'left to right' says which way|lists the cubes in two different orders"),  # (the colour runs read as lists now)
     # a place word no place mention reads and no part of the goal carries
     ("make a row front edge of red, green, blue", "the place 'front'"),
     ("put the red cube next to the blue cube front side", "place word 'front'"),
