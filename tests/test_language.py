@@ -3644,3 +3644,21 @@ def test_which_one_at_the_bottom_leaves_the_order_free():
 ])
 def test_colour_runs_are_lists(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("spell HAT from left to right at the back of the table",  # a spelled word in a place (its word had been lower-cased)
+     ["line[left_to_right](H,A,T)@back", "reads(H,A,T;direction=left_to_right,face=up,text=HAT)"]),
+    ("orange -> front-left, purple -> back-right", ["in_region(orange,front_left)", "in_region(purple,back_right)"]),
+    ("multi-goal: (1) red -> left region (2) blue -> right region (3) yellow on green patch",
+     ["in_region(blue,right)", "in_region(red,left)", "on_patch(yellow,patch:green)"]),
+])
+def test_words_in_places_and_arrows_to_places(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", ["stack the digits 1 to 3, 1 at the bottom", "stack the digits 1, 2 and 3, 1 at the bottom"])
+def test_a_label_s_end_frees_the_rest(text):
+    """The middle digit had been dropped (stack(1,3)), and a listed run with its end had demanded the list's order."""
+    schema = parse(text)
+    assert type(schema.goal).__name__ == "AnchoredStack" and len(schema.assets) == 3

@@ -146,7 +146,8 @@ DIGIT_WORDS = ("zero", *sorted((w for w, v in NUMBER_WORDS.items() if 1 <= v <= 
 """The digits' names, each at its digit's index ("zero" at 0 ... "nine" at 9)."""
 DIGIT_WORD_RE = re.compile(rf"(?i)\b(?:{'|'.join(DIGIT_WORDS)})\b")
 DIGIT_WORDS_RE = re.compile(rf"(?i)(?P<noun>\b(?:numbers?|digits?|numerals?)(?:\s+(?:cubes?|blocks?))?\s+)"
-                            rf"(?P<list>(?:{'|'.join(DIGIT_WORDS)})(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+|\s*&\s*)(?:{'|'.join(DIGIT_WORDS)}))*)\b")
+                            rf"(?P<list>(?:{'|'.join(DIGIT_WORDS)})(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+|\s*&\s*|\s+(?:through|thru|to)\s+)"
+                            rf"(?:{'|'.join(DIGIT_WORDS)}))*)\b")
 """Digit cubes named by number words ("stack number four on number two", "the digits one, two and
 three"): written as digits before the labels are read (they had been read as two coloured cubes,
 and as a line of four)."""
@@ -1534,6 +1535,11 @@ ARROW_RE = re.compile(r"\b(block|cube|brick)\s*(?:->|\u2192|=>)\s*(?:the\s+)?(?=
                       r"|far|near)\b)")
 """A cube sent to a place with an arrow ("blue cube -> front left corner"): read as "in the"."""
 
+ARROW_COLOUR_RE = re.compile(rf"(?:\bthe\s+)?\b({COLOR_RE})\s*(?:->|\u2192|=>)\s*(?:the\s+)?(?=(?:front|back|rear|left|right|center|centre"
+                             r"|middle|far|near)\b)")
+"""A cube named by its colour alone sent to a place with an arrow ("red -> left region", "orange -> front-left"):
+"the red cube in the ..."."""
+
 ARROW_PATCH_RE = re.compile(rf"\b({COLOR_RE})(?:\s+(?:block|cube|brick))?\s*(?:->|\u2192|=>)\s*(?:the\s+)?(?=(?:{COLOR_RE})\s+(?:goal\s+)?patch\b)")
 """A cube sent to a patch with an arrow ("pink -> blue patch"): the cube on that patch."""
 
@@ -1569,13 +1575,13 @@ keeps its order."""
 
 
 STACK_ROLE_RE = re.compile(
-    r"(?:\bwith|[,;.]|\b(?:so|such)\s+that|\bwhere)\s+(?:the\s+|a\s+|an\s+)?(?P<c>[a-z]+)\s+(?:(?:block|cube|one)\s+)?"
+    r"(?:\bwith|[,;.]|\b(?:so|such)\s+that|\bwhere)\s+(?:the\s+|a\s+|an\s+)?(?:(?:letter|digit|number)\s+)?(?P<c>[a-z]+|\d)\s+(?:(?:block|cube|one)\s+)?"
     r"(?:(?:is|goes|sits|stands|(?:should|must|will)\s+be|ends\s+up)\s+)?"
     r"(?:(?:on|at)\s+(?:the\s+)?(?P<end>top|bottom|base)|as\s+(?:the\s+)?(?P<end2>top|bottom|base))\b"
     r"(?!\s+of\b)")
 """A cube given one end of a stack whose other cubes are only listed ("stack the red, blue
-and green blocks with red on top", "... with the red block at the bottom"): ``c`` is the
-colour, ``end``/``end2`` the end (base = bottom)."""
+and green blocks with red on top", "... with the red block at the bottom", "the digits 1, 2 and 3, 1 at
+the bottom"): ``c`` is the colour or the label, ``end``/``end2`` the end (base = bottom)."""
 
 STACK_FREE_PHRASES = re.compile(
     r"\bon\s+top\s+of\s+(?:each\s+other|one\s+another)\b|\b(?:on|onto|upon|over|above)\s+(?:each\s+other|one\s+another)\b"

@@ -756,6 +756,10 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     for pattern, full in lexicon.ORDER_RANGE_RES:  # "small to big": a sort by its two ends
         original = pattern.sub(full, original)
     original = sorted_labels(original)  # "Stack the digit cubes 7, 3 and 5 in ascending order": listed sorted
+    if re.search(r"\b(?:[A-Z]|\d)\s+(?:at|on|in)\s+(?:the\s+)?(?:bottom|top|base|middle)\b", original):
+        # "stack the digits 1 to 3, 1 at the bottom": the run listed, so the role reads against every cube (the middle
+        # digit had been dropped)
+        original = LABEL_RANGE_RE.sub(_listed_range, original)
     original = lexicon.LABELS_AND_NOUN_RE.sub(r"\1 \2 \4 and the \3 \4", original)  # "the 1 & 9 cubes"
     original = lexicon.DIGIT_WORDS_RE.sub(lambda m: m.group("noun") + lexicon.DIGIT_WORD_RE.sub(
         lambda w: str(lexicon.DIGIT_WORDS.index(w.group(0).lower())), m.group("list")), original)
@@ -849,6 +853,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     asked_by += [(m.group("what"), "what the task is for") for m in lexicon.PURPOSE_RE.finditer(text)]
     text = lexicon.PURPOSE_RE.sub("", text)
     text = lexicon.STEP_MARKER_RE.sub("", text)
+    text = lexicon.ARROW_COLOUR_RE.sub(r"the \1 cube in the ", text)
     text = lexicon.ARROW_RE.sub(r"\1 in the ", text)
     text = lexicon.ARROW_PATCH_RE.sub(r"put the \1 cube on the ", text)
     spelled = {w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)}  # "spell BOOK": a word, not a book

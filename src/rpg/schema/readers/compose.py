@@ -222,6 +222,9 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
     """
     m = IN_REGION_PART_RE.match(mark_regions(f.text))
     part, region = _region_part(m) if m else (None, None)
+    caps = set(re.findall(r"\b[A-Z]{2,}\b", f.original))
+    if part and caps:  # "spell HAT ... at the back of the table": the word in its capitals again (it had read as 'hat')
+        part = re.sub(r"\b[a-z]{2,}\b", lambda w: w.group(0).upper() if w.group(0).upper() in caps else w.group(0), part)
     heads = _read_parts([part]) if m else None
     if heads is None:
         return False
