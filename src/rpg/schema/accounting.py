@@ -22,6 +22,7 @@ from functools import lru_cache
 
 from rpg.domain import predicates as P
 from rpg.errors import BadInput
+from rpg.schema import lexicon
 from rpg.schema.lexicon import (
     COLOR_RE,
     COLORS,
@@ -643,11 +644,6 @@ def check_mentions(instruction: str, schema: TaskSchema) -> list[dict]:
         for w, like in dropped]
 
 
-PAIR_RELATION_RE = re.compile(
-    rf"\bthe\s+(?P<a>{COLOR_RE})\s+(?:block|cube|one)\s+(?:(?:is|goes|sits|should\s+be|must\s+be)\s+)?(?P<rel>on\s+top\s+of|onto|on|next\s+to|beside|behind|in\s+front\s+of"
-    rf"|(?:to\s+the\s+)?left\s+of|(?:to\s+the\s+)?right\s+of|under|far\s+from)\s+the\s+(?P<b>{COLOR_RE})\s+(?:block|cube|one)\b")
-"""A relation said between two cubes named by colour ("... and put the yellow cube on the blue cube",
-"the red cube should be next to the blue cube"): :func:`_pair_relation_dropped` checks the goal relates the two."""
 
 _PAIR_CARRIERS = {"on": (P.Stack, P.UnorderedStack, P.AnchoredStack), "under": (P.Stack, P.UnorderedStack, P.AnchoredStack)}
 """Goal predicates that carry "on"/"under" between two cubes; every other relation word needs a
@@ -661,7 +657,7 @@ def _pair_relation_dropped(f: Features, schema: TaskSchema, cubes: list) -> Pars
     parts = list(schema.goal_predicate().conjuncts())
     if schema.initial_state.structures:
         return None  # "Initially the red cube is on the blue cube": how the cubes start, not the goal
-    for m in PAIR_RELATION_RE.finditer(f.text):
+    for m in lexicon.PAIR_RELATION_RE.finditer(f.text):
         a, b = canon_color(m.group("a")), canon_color(m.group("b"))
         named = {c: [x.name for x in cubes if x.color == c] for c in (a, b)}
         if a == b or any(len(v) != 1 for v in named.values()):

@@ -2590,3 +2590,29 @@ MAP_TOP_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 )
 """With no tower to have a top, "move all the red blocks to the bottom": the near side of the map, the front."""
 
+COLOUR_NOUN_AFTER = re.compile(r"(?:\s*(?:,|\band\b|\bor\b)\s*(?:the\s+)?[a-z]+){0,4}"  # a list of colours first ("gold, silver and red")
+                               r"\s+(?:(?:coloured|colored|[a-z]+-?ish)\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?|patch(?:es)?"
+                               r"|squares?|tiles?|pads?|mats?|targets?|objects?)\b")
+"""What follows a word that names a cube's or patch's colour ("mauve cube", "teal patch", "the gold,
+silver and red cubes")."""
+
+COLOUR_ROLE_AFTER = re.compile(r"\s+(?:(?:at|on|in)\s+(?:the\s+)?(?:bottom|top|base|middle|center|centre)|on\s+top|first|last)\b")
+"""What follows a colour name standing for a cube by its role in a structure ("maroon at the bottom, olive on top")."""
+
+PALETTE_LIST_NEAR = re.compile(rf"\b(?:{COLOR_RE})\s*(?:,|\band\b|\bor\b|then\b|/|->|\bover\b|\bon\b)\s*(?:(?:and|then|the)\s+)?$")
+"""What precedes a colour name listed after a palette colour ("red, maroon and blue", "blue over teal")."""
+
+PALETTE_LIST_AFTER = re.compile(rf"\s*(?:,|\band\b|\bor\b|then\b|/|->|\bover\b|\bon\b)\s*(?:(?:and|then|the)\s+)?(?:{COLOR_RE})\b")
+"""What follows a colour name listed before a palette colour ("maroon, red and blue", "teal on red")."""
+
+LIST_GAP_RE = re.compile(r"\s*(?:,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+)\s*")
+"""What stands between two items of a listed tower ("red, red and blue", "red, then blue")."""
+
+ROLE_AFTER_RE = re.compile(r"\s+(?:block\s+|cube\s+)?(?:on\s+top|at\s+the\s+(?:top|bottom|base)|on\s+the\s+bottom|in\s+the\s+middle)\b")
+"""A role said after a colour ("white on top"): the colour names a cube already listed, not one more."""
+
+PAIR_RELATION_RE = re.compile(
+    rf"\bthe\s+(?P<a>{COLOR_RE})\s+(?:block|cube|one)\s+(?:(?:is|goes|sits|should\s+be|must\s+be)\s+)?(?P<rel>on\s+top\s+of|onto|on|next\s+to|beside|behind|in\s+front\s+of"
+    rf"|(?:to\s+the\s+)?left\s+of|(?:to\s+the\s+)?right\s+of|under|far\s+from)\s+the\s+(?P<b>{COLOR_RE})\s+(?:block|cube|one)\b")
+"""A relation said between two cubes named by colour ("... and put the yellow cube on the blue cube",
+"the red cube should be next to the blue cube"): :func:`_pair_relation_dropped` checks the goal relates the two."""

@@ -213,9 +213,9 @@ def _unknown_word_classes(text: str, unknown: list[str]) -> list[tuple[str, str,
 
     found = []
     for word in unknown:
-        if word in lexicon.colour_names() and any(_COLOUR_BEFORE.match(after) or _COLOUR_ROLE_AFTER.match(after) or (
+        if word in lexicon.colour_names() and any(lexicon.COLOUR_NOUN_AFTER.match(after) or lexicon.COLOUR_ROLE_AFTER.match(after) or (
                 _RECOLOUR_BEFORE.search(before) and re.match(r"\s*(?:[.,;!?]|$|instead\b|please\b|too\b|then\b)", after))
-                or _PALETTE_LIST_NEAR.search(before) or _PALETTE_LIST_AFTER.match(after)
+                or lexicon.PALETTE_LIST_NEAR.search(before) or lexicon.PALETTE_LIST_AFTER.match(after)
                 for before, after in where(word)):  # "beige block", "make it beige", "maroon at the bottom", "red, beige"
             found.append((word, *lexicon.UNKNOWN_COLOUR))
             continue
@@ -299,17 +299,6 @@ _DETERMINER_BEFORE = re.compile(r"\b(?:a|an|the|this|that|these|those|its|their|
                                 r"(?P<mods>(?:[a-z\-]+\s+){0,2})$")
 _PHRASE_END_AFTER = re.compile(r"\s*(?:$|[.,;:!?)(/]|(?:and|or|but|into|onto|on|in|to|with|from|off|at|of|that|which"
                                r"|so|then|down|up|over|under|by|for|near|next|inside|\d+)\b)")
-_COLOUR_BEFORE = re.compile(r"(?:\s*(?:,|\band\b|\bor\b)\s*(?:the\s+)?[a-z]+){0,4}"  # a list of colours first ("gold, silver and red")
-                            r"\s+(?:(?:coloured|colored|[a-z]+-?ish)\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?|patch(?:es)?"
-                            r"|squares?|tiles?|pads?|mats?|targets?|objects?)\b")
-"""What follows a word that names a cube's or patch's colour ("mauve cube", "teal patch", "the gold,
-silver and red cubes")."""
-_COLOUR_ROLE_AFTER = re.compile(r"\s+(?:(?:at|on|in)\s+(?:the\s+)?(?:bottom|top|base|middle|center|centre)|on\s+top|first|last)\b")
-"""What follows a colour name standing for a cube by its role in a structure ("maroon at the bottom, olive on top")."""
-_PALETTE_LIST_NEAR = re.compile(rf"\b(?:{COLOR_RE})\s*(?:,|\band\b|\bor\b|then\b|/|->|\bover\b|\bon\b)\s*(?:(?:and|then|the)\s+)?$")
-"""What precedes a colour name listed after a palette colour ("red, maroon and blue", "blue over teal")."""
-_PALETTE_LIST_AFTER = re.compile(rf"\s*(?:,|\band\b|\bor\b|then\b|/|->|\bover\b|\bon\b)\s*(?:(?:and|then|the)\s+)?(?:{COLOR_RE})\b")
-"""What follows a colour name listed before a palette colour ("maroon, red and blue", "teal on red")."""
 _CLAUSE_START_BEFORE = re.compile(r"(?:^|[.,;:!?]\s*|\b(?:and|then|please|to|must|should)\s+"
                                   r"|\b(?:can|could|would|will)\s+you\s+)$")
 

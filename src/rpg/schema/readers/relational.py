@@ -27,6 +27,7 @@ from rpg.domain.predicates import (
     OnTable,
     Stack,
 )
+from rpg.schema import lexicon
 from rpg.schema.builder import DEFAULT_COLORS, DEFAULT_PATCH_COLOR, Builder
 from rpg.schema.lexicon import (
     COLOR_RE,
@@ -316,11 +317,7 @@ class RelationalReading:
         self.previous[:] = [self.obj(group[-1]), target]
 
 
-_LIST_GAP_RE = re.compile(r"\s*(?:,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+)\s*")
-"""What stands between two items of a listed tower ("red, red and blue", "red, then blue")."""
 
-_ROLE_AFTER_RE = re.compile(r"\s+(?:block\s+|cube\s+)?(?:on\s+top|at\s+the\s+(?:top|bottom|base)|on\s+the\s+bottom|in\s+the\s+middle)\b")
-"""A role said after a colour ("white on top"): the colour names a cube already listed, not one more."""
 
 STACK_WORD_RE = re.compile(r"\b(?:stack|stacks|stacked|tower|towers|pile up)\b")
 """Words that make a relational text a stacking one."""
@@ -372,8 +369,8 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         elif len(ms) > n and len({(m.color, m.label) for m in ms}) == len(ms):  # "a tower of red, green and blue"
             names = [r.obj(m) for m in ms]
         elif stated_count(f, default=None) is None and len(ms) > 2 and all(m.count == 1 for m in ms) and all(
-                _LIST_GAP_RE.fullmatch(said[a.end:b.start]) for a, b in itertools.pairwise(ms)) and not any(
-                _ROLE_AFTER_RE.match(said, m.end) for m in ms):  # "a tower of red and white, white on top": a role, no third cube
+                lexicon.LIST_GAP_RE.fullmatch(said[a.end:b.start]) for a, b in itertools.pairwise(ms)) and not any(
+                lexicon.ROLE_AFTER_RE.match(said, m.end) for m in ms):  # "a tower of red and white, white on top": a role, no third cube
             # "stack red, red, blue on the green patch": each colour said is a cube, a colour said again another one
             # (the repeated red had been the same cube: a tower of two)
             seen: dict[tuple, int] = {}
