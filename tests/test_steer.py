@@ -1657,3 +1657,31 @@ def test_steering_that_would_invent_is_refused(tmp_path, base, edits, words):
 ])
 def test_cubes_by_their_place(tmp_path, base, edits, expected):
     assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # a second hostile tester's steering silent errors
+    ("stack red, green, blue from bottom to top", ["the top one is wrong, it should be orange"],
+     ("tweak", ["stack(red,green,orange)"])),  # (every cube had turned orange)
+    ("stack red, green, blue from bottom to top", ["put white between green and blue"],
+     ("extend", ["stack(red,green,white,blue)"])),  # (the tower had been replaced by a bare relation)
+])
+def test_second_steering_attack(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+@pytest.mark.parametrize("base,edit,words", [
+    ("stack red, green, blue from bottom to top", "add a cube on top and one at the bottom", "a second place"),  # (half dropped)
+    ("stack red, green, blue from bottom to top", "add a cube on top in the same colour as the base", "same colour as"),
+    ("stack red, green, blue from bottom to top", "put a white cube in the middle", "between which two"),  # (on top)
+    ("put the red cube on the blue patch and the green cube left of the yellow cube", "get rid of the yellow cube",
+     "green would have no goal left"),  # (green had vanished)
+    ("put the yellow cube on the white patch and stack the red cube on the green cube", "make the tower a row",
+     "parts besides"),  # (yellow pulled into the row, the patch dropped)
+])
+def test_second_steering_attack_refusals(tmp_path, base, edit, words):
+    from rpg.errors import BadInput
+
+    fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
+    with pytest.raises(BadInput, match=re.escape(words)):
+        steer(fam.path, edit)

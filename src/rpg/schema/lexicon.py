@@ -1822,6 +1822,12 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "nah, like before": the version before this one
     (re.compile(r"(?i)^\s*(?:(?:nah|no|hmm+|ok(?:ay)?|actually)\s*,?\s*)*(?:(?:just\s+)?(?:like|as)\s+(?:it\s+was\s+)?before|as\s+it\s+was)"
                 r"\s*[.!]?\s*$"), "undo"),
+    # "put white between green and blue": a cube added between two (the edit had replaced the task with that relation)
+    (re.compile(rf"(?i)^\s*(?:(?:now|and|also|then)\s+)*(?:put|place|insert|stick|add)\s+(?:a\s+|an\s+|the\s+)?({COLOR_RE})"
+                rf"(?:\s+(?:one|cube|block))?\s+(?=between\s+(?:the\s+)?(?:{COLOR_RE})\b)"), r"add a \1 cube "),
+    # "the top one is wrong, it should be orange": that cube made orange (every cube had been recoloured)
+    (re.compile(rf"(?i)^\s*(the\s+[a-z0-9 ]+?)\s+(?:is|looks)\s+wrong\s*[,;.:]?\s*(?:it|that\s+one|that)\s+(?:should|must|needs\s+to)\s+be\s+"
+                rf"({COLOR_RE})\s*[.!]?\s*$"), r"make \1 \2"),
     # "the one in the middle", "the cube on top": the cube by its place, as "the middle one" says it
     (re.compile(r"(?i)\bthe\s+(?:one|cube|block)\s+(?:in\s+the\s+(middle|centre|center)|(?:on|at)\s+(?:the\s+)?(top|bottom))\b"),
      lambda m: f"the {(m.group(1) or m.group(2)).replace('centre', 'middle').replace('center', 'middle')} one"),

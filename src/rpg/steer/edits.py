@@ -533,9 +533,21 @@ def read_ops(t: str) -> list[Op]:
             onto = {"all": True} if re.match(r"\s*(?:it|them|that|the\s+(?:tower|stack|top))\b", t[add.end():]) else None
             if onto is None:
                 return ops  # "put a yellow block on ...": on nothing this reads
-        gap = re.match(r"(?P<what>.*?)\bbetween\s+(?P<a>the\s+[a-z0-9' ]+?(?:one|block|cube))\s+and\s+(?P<b>the\s+[a-z0-9' ]+?(?:one|block|cube))\b",
-                       t[add.end("verb"):])
+        one = rf"(?:the\s+[a-z0-9' ]+?(?:one|block|cube)|(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:one|block|cube))?)"
+        gap = re.match(rf"(?P<what>.*?)\bbetween\s+(?P<a>{one})\s+and\s+(?P<b>{one})(?![\w-])", t[add.end("verb"):])
         inserted = (_selector(gap.group("a")), _selector(gap.group("b"))) if gap else None
+        middle = re.search(r"\b(?:in\s+the\s+middle|in\s+between|halfway)\b(?!\s+of\s+the\s+(?:table|workspace))", t[add.end("verb"):])
+        if middle and not gap:  # "put a white cube in the middle" of a tower: which gap? (it had gone on top)
+            raise SteerError(f"'{middle.group(0)}' puts the cube inside the structure without saying between which two cubes; say it "
+                             "(e.g. \"add a white cube between the green one and the blue one\"), or use --model")
+        both = re.search(r"\band\s+(?:another(?:\s+one)?|one|a\s+[a-z]+\s+(?:one|cube|block))\s+(?:at|on|under|to)\s+(?:the\s+)?"
+                         r"(?:bottom|top|base|left|right|end|start|beginning)\b", t[add.end("verb"):])
+        if both:  # "add a cube on top and one at the bottom": two places in one edit (the second had been dropped)
+            raise SteerError(f"'{both.group(0).strip()}' adds a cube at a second place in the same edit; add one place per edit, "
+                             "or use --model")
+        if re.search(r"\bsame\s+colou?r\s+as\b", t[add.end("verb"):]):  # "in the same colour as the base": made up before
+            raise SteerError("a cube added 'in the same colour as' another is not read by the builtin steering; name its colour, "
+                             "or use --model")
         if inserted and all(inserted):  # "add a black cube between the white one and the blue one": in the gap between them
             what = gap.group("what")
             items = [{"color": c} if c else {"label": lab} for c, lab in item_sequence(what)]

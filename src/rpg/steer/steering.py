@@ -315,6 +315,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     if ref_spec is None and any(o.op == "structure" for o in plan.ops) and all(
             o.op in ("structure", "count", "dims", "recolor", "keep") for o in plan.ops):
         # "put them in a tower instead": the task's cubes, in no order, as the structure named
+        if any(a.kind == "goal_patch" for a in ref_schema.assets):  # "make the tower a row" of a tower and a cube on a patch
+            raise SteerError(f"v{reference} has parts besides its cubes' structure ({ref_schema.goal_summary}); the builtin steering "
+                             "would pull every cube into the new one and drop the patches: state the whole new task, or use --model")
         if any(o.op == "structure" and o.params.get("keep_order") for o in plan.ops):
             raise SteerError(f"the edit keeps the order of v{reference}'s cubes, but its goal gives them no one order "
                              f"({ref_schema.goal_summary}); say the order (e.g. \"from bottom to top: red, green, blue\"), or use --model")
