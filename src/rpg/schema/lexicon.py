@@ -1575,13 +1575,14 @@ keeps its order."""
 
 
 STACK_ROLE_RE = re.compile(
-    r"(?:\bwith|[,;.]|\b(?:so|such)\s+that|\bwhere)\s+(?:the\s+|a\s+|an\s+)?(?:(?:letter|digit|number)\s+)?(?P<c>[a-z]+|\d)\s+(?:(?:block|cube|one)\s+)?"
+    r"(?:\bwith|[,;.]|\b(?:so|such)\s+that|\bwhere)\s+(?:the\s+|a\s+|an\s+)?(?P<c>[a-z]+)\s+(?:(?:block|cube|one)\s+)?"
     r"(?:(?:is|goes|sits|stands|(?:should|must|will)\s+be|ends\s+up)\s+)?"
     r"(?:(?:on|at)\s+(?:the\s+)?(?P<end>top|bottom|base)|as\s+(?:the\s+)?(?P<end2>top|bottom|base))\b"
     r"(?!\s+of\b)")
 """A cube given one end of a stack whose other cubes are only listed ("stack the red, blue
-and green blocks with red on top", "... with the red block at the bottom", "the digits 1, 2 and 3, 1 at
-the bottom"): ``c`` is the colour or the label, ``end``/``end2`` the end (base = bottom)."""
+and green blocks with red on top", "... with the red block at the bottom"): ``c`` is the
+colour, ``end``/``end2`` the end (base = bottom).  Label cubes keep their listed order (the steering
+states an anchored stack of coloured cubes only)."""
 
 STACK_FREE_PHRASES = re.compile(
     r"\bon\s+top\s+of\s+(?:each\s+other|one\s+another)\b|\b(?:on|onto|upon|over|above)\s+(?:each\s+other|one\s+another)\b"

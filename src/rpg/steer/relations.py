@@ -493,8 +493,9 @@ def remove_cubes(edit: str, schema: TaskSchema, colors: list[str], parse) -> tup
                          "task; name the cube to remove")
     gone = {a.name for a in cubes}
     kept = [p for p in parts if not set(p.object_names()) & gone]
+    patches = {a.name for a in schema.assets if a.kind == "goal_patch"}  # (a patch left with no cube is dropped)
     stranded = sorted({n for p in parts if set(p.object_names()) & gone for n in p.object_names()}
-                      - gone - {n for p in kept for n in p.object_names()})
+                      - gone - patches - {n for p in kept for n in p.object_names()})
     if stranded:  # "get rid of the yellow cube" of "green left of yellow": green would be left with no goal (it had vanished)
         raise SteerError(f"cannot apply the edit \"{edit.strip()[:80]}\": without the {', '.join(sorted(set(colors)))} cube, "
                          f"{', '.join(stranded)} would have no goal left; say what becomes of it, or state the whole new task")

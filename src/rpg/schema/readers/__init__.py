@@ -106,7 +106,7 @@ def _listed_roles(text: str) -> dict[str, str] | None:
     roles: dict[str, str] = {}
     for m in lexicon.STACK_ROLE_RE.finditer(text):
         color = m.group("c")
-        if color not in lexicon.COLORS and not re.fullmatch(r"\d|[a-z]", color):
+        if color not in lexicon.COLORS:
             return None
         end = "top" if (m.group("end") or m.group("end2")) == "top" else "bottom"
         if roles.get(end, color) != color:
@@ -147,7 +147,7 @@ def free_listed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
         others = [q for q in parts if q is not p and set(q.object_names()) & set(objs)]
         if not all(isinstance(q, InRegion) or (type(q) is OnPatch and q.a == objs[0]) for q in others):
             continue  # a cube of the stack related to something else by itself: its place is said
-        ends = {end: [n for n in objs if str(colors[n]).lower() == c] for end, c in roles.items()}
+        ends = {end: [n for n in objs if colors[n] == c] for end, c in roles.items()}
         if any(len(v) != 1 for v in ends.values()):
             continue  # a role colour missing from this stack, or shared by two of its cubes
         if "bottom" in ends:
