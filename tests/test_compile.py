@@ -315,7 +315,8 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
     ("Build a tower with the blue block in the middle", "a tower of red, blue, green in any order, with blue second from the bottom"),
     ("Make a line of digits 1 through 4 from front to back", "up faces read 1, 2, 3, 4 front to back"),
     ("Line up four letter cubes", "4 letter cubes in one straight line"),
-    ("Put two blocks on each patch", "2 cubes on each of the 2 goal patches (red_1, red_2, red_3, red_4, any cube on any patch)"),
+    ("Put two blocks on each of the two patches",  # ("on each patch" alone says no count of patches: refused, test_language)
+     "2 cubes on each of the 2 goal patches (red_1, red_2, red_3, red_4, any cube on any patch)"),
     ("Move the yellow cube onto the blue target.", "yellow on blue_patch"),
     ("Place the red block in the green goal area.", "red on green_patch"),
     ("Put the blue cube on the red mat.", "blue on red_patch"),

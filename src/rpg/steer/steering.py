@@ -315,7 +315,10 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     if ref_spec is None and any(o.op == "structure" for o in plan.ops) and all(
             o.op in ("structure", "count", "dims", "recolor", "keep") for o in plan.ops):
         # "put them in a tower instead": the task's cubes, in no order, as the structure named
-        if any(a.kind == "goal_patch" for a in ref_schema.assets):  # "make the tower a row" of a tower and a cube on a patch
+        walk = list(ref_schema.goal_predicate().walk())
+        structured = {n for q in walk if q.name in ("stack", "unordered_stack", "anchored_stack", "in_line") for n in q.object_names()}
+        if structured and any(q.name == "on_patch" and q.a not in structured for q in walk):
+            # "make the tower a row" of a tower and another cube on a patch
             raise SteerError(f"v{reference} has parts besides its cubes' structure ({ref_schema.goal_summary}); the builtin steering "
                              "would pull every cube into the new one and drop the patches: state the whole new task, or use --model")
         if any(o.op == "structure" and o.params.get("keep_order") for o in plan.ops):
