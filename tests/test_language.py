@@ -3661,3 +3661,15 @@ def test_a_run_of_labels_with_an_end_keeps_every_label():
     """The middle digit had been dropped (stack(1,3)).  (Label cubes keep their listed order: the
     steering states anchored stacks of coloured cubes only.)"""
     assert meaning(parse("stack the digits 1 to 3, 1 at the bottom")) == ["stack(1,2,3)"]
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger26's silent errors (read after its first run): a cube put in a place after a tower had joined the tower
+    ("build a tower of purple, orange and white from bottom to top. Then put a brown cube in the back left corner",
+     ["in_region(brown,back_left)", "stack(purple,orange,white)"]),
+    ("stack blue on red, then white cube to the front left corner", ["in_region(white,front_left)", "stack(red,blue)"]),
+    ("TODO(me): sort digit cubes 8, 3, 6 right-to-left ascending", ["line[right_to_left](3,6,8)"]),  # (left to right)
+    ("TODO: three piles by colour - red, green, blue, 2 each", ["piles(blue,blue,green,green,red,red;by=color)"]),  # (3 each)
+])
+def test_stranger26_silent_errors(text, expected):
+    assert meaning(parse(text)) == expected

@@ -1295,6 +1295,10 @@ DISFLUENCY_RE = re.compile(r"(?i)(?P<lead>\s*,)?\s*\b(?:uh+m?|um+|erm*|uhm+)\b(?
 two commas is a pause, dropped with them ("the top one, er, pink": the top one pink), unless a
 list item comes before it ("red, um, blue": the list's comma stays; "the top one" is no list item)."""
 
+HYPHENED_DIRECTION_RE = re.compile(r"(?i)\b(left|right|front|back|bottom|top)-to-(left|right|front|back|bottom|top)\b")
+"""A direction written with hyphens ("right-to-left", "bottom-to-top"): its words apart, as the readers read it
+(the direction had been dropped, a sort read left to right)."""
+
 GLUED_COUNT_RE = re.compile(r"(?i)\b(stacks?|towers?|piles?|rows?|lines?|walls?|grids?|pyramids?|circles?)((?:-[a-z]+)*)-(\d+)\b")
 """A structure's identifier with a count glued on ("stack-any-4", "pile-5"): the words and the count
 written apart, so the count is read, or refused, as a count (a stack of two had been made up)."""

@@ -718,6 +718,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     for pattern, written in lexicon.MARKUP_RES:  # "the **blue** patch", "## Goal", "`red`"
         original = pattern.sub(written, original).strip()
     original = lexicon.EMOJI_RE.sub(" ", original).strip()
+    original = lexicon.HYPHENED_DIRECTION_RE.sub(r"\1 to \2", original)
     original = lexicon.GLUED_COUNT_RE.sub(lambda m: f"{m.group(1)}{m.group(2).replace('-', ' ')} {m.group(3)}", original)
     if lexicon.LETTER_SIGNATURE_RE.search(original):  # "Hi Sam, ... Thanks, Priya": a signed message
         original = lexicon.LETTER_GREETING_RE.sub("", lexicon.LETTER_SIGNATURE_RE.sub("", original)).strip() or original

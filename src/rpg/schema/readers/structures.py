@@ -505,8 +505,9 @@ def recognize_piles(f: Features, b: Builder) -> bool:
         if said and set(said) == set(colors) and all(len(v) == 1 for v in said.values()):
             groups = [[b.cube(c) for _ in range(said[c][0])] for c in colors]  # (each pile had taken the first count)
         else:
+            each = re.search(r"\b(\d+)\s+(?:of\s+)?each\b|\beach\s+(?:with\s+|of\s+)?(\d+)\b", f.text)  # "red, green, blue, 2 each"
             per = stated_count(f, default=None)
-            per = max(2, per // len(colors)) if per else PILE_UNSAID_COUNT
+            per = int(each.group(1) or each.group(2)) if each else max(2, per // len(colors)) if per else PILE_UNSAID_COUNT
             groups = [[b.cube(c) for _ in range(per)] for c in colors]
         by = "color"
     outliers = outlier_count(f)
