@@ -598,9 +598,10 @@ def _corrected(before: str, fix: str) -> str | None:
         return before[:start] + fix
     first = _word_class(fixed[0])
     rel = "|".join(p for p, _ in lexicon.REL_PATTERNS[:-1])
-    if first in ("det", "colour") and re.search(rf"(?i)\b(?:cube|block|one)\b.*?\b(?:{rel})\b.*?\b(?:cube|block|one|patch)\b", fix):
-        # "put the red cube on the blue cube, no, the green cube on the blue cube": a whole clause said again, its verb's
-        # object and place both (the first cube had been kept under the second)
+    if (first in ("det", "colour") and re.search(rf"(?i)\b(?:cube|block|one)\b.*?\b(?:{rel})\b.*?\b(?:cube|block|one|patch)\b", fix)) \
+            or (len(fixed) >= 3 and first not in ("det", "prep") and re.search(rf"\b(?:{rel})\b", fix.lower())):
+        # a relation said again, the verb's object and place both: "Stack red on blue, I mean blue on red", "put the red cube
+        # on the blue cube, no, the green cube on the blue cube" (the first cube had been kept under the second)
         verbs = [m for m in tokens if m.group(0).lower() in lexicon.PLACEMENT_VERBS]
         return before[:verbs[-1].end()] + " " + fix if verbs else None
     verb_at = max((i for i, m in enumerate(tokens) if m.group(0).lower() in lexicon.PLACEMENT_VERBS), default=-1)
@@ -614,10 +615,6 @@ def _corrected(before: str, fix: str) -> str | None:
         if fixed[-1].lower() == "one" and noun:  # "on the red patch, no wait, the yellow one": the yellow patch (a cube before)
             fix = re.sub(r"(?i)\bone\s*$", noun.group(1), fix)
         return before[:tokens[recent[0]].start()] + fix
-    if len(fixed) >= 3 and first not in ("det", "prep") and any(re.search(rf"\b(?:{p})\b", fix.lower())
-                                                                  for p, _ in lexicon.REL_PATTERNS[:-1]):
-        verbs = [m for m in tokens if m.group(0).lower() in lexicon.PLACEMENT_VERBS]  # "Stack red on blue, I mean blue on red"
-        return before[:verbs[-1].end()] + " " + fix if verbs else None
     # the phrase of the same shape said last; else the fix's head phrase, its rest continuing the sentence ("put four
     # cubes, no wait, five cubes in a pile": "five cubes" for "four cubes", then "in a pile")
     heads = [len(fixed)] + [k for k in range(len(fixed) - 1, 1, -1) if _word_class(fixed[k]) == "prep" and before.rstrip()[-1:].isalnum()
@@ -639,7 +636,8 @@ def apply_corrections(text: str) -> str:
     the pink patch" -> "... on the pink patch"; :data:`lexicon.SELF_CORRECTION_RE`): the words
     after the correction word, up to the next pause, replace the words of the same shape said
     last before it (same first and last word class), a new command the sentence before it, a new
-    relation what the verb before it governs.  A correction whose target is not clear is left
+    relation what the verb before it governs, a list of colours the list said before it ("red,
+    green, blue, no wait, red, blue, green").  A correction whose target is not clear is left
     as written (its words are then refused)."""
     colour_list = rf"(?:{COLOR_RE})(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+)(?:{COLOR_RE}))+\b"
     for m in reversed(list(lexicon.SELF_CORRECTION_RE.finditer(text))):

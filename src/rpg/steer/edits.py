@@ -783,11 +783,12 @@ def interpret(edit: str) -> EditPlan:
         return EditPlan(edit, RefCue("none", phrase=fresh.group(0)), standalone=True, fresh=True)
     refuse_inexpressible(edit, t)
     try:
-        inserted = [o for o in read_ops(t) if o.op == "add" and o.params.get("between")]
+        first_ops = read_ops(t)
     except SteerError:
-        inserted = []
-    if inserted:  # "put a yellow cube between the red cube and the green cube" of a row: into it (it had become the whole task)
-        return EditPlan(edit, cue, read_ops(t))
+        first_ops = []
+    if any(o.op == "add" and o.params.get("between") for o in first_ops):
+        # "put a yellow cube between the red cube and the green cube" of a row: into it (it had become the whole task)
+        return EditPlan(edit, cue, first_ops)
     if looks_standalone(t) and names_cubes(t):
         from rpg.schema.builtin import ParseError, parse
 
