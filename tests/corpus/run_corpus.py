@@ -61,6 +61,7 @@ STRANGER_SETS = {
     "stranger24": ("stranger24.yaml", "STRANGER set 24 (stranger24.yaml, development material, first run at the end of the seventeenth session)"),
     "stranger25": ("stranger25.yaml", "STRANGER set 25 (stranger25.yaml, development material)"),
     "stranger26": ("stranger26.yaml", "STRANGER set 26 (stranger26.yaml, development material, first run at the end of the eighteenth session)"),
+    "stranger27": ("stranger27.yaml", "STRANGER set 27 (stranger27.yaml, development material)"),
 }
 SPLITS = HERE / "splits.yaml"
 

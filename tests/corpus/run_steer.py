@@ -86,6 +86,7 @@ DEVELOPMENT = {
     "stranger15": ("steer_stranger15.yaml", "STRANGER steering set 15 (steer_stranger15.yaml, development material)"),
     "stranger16": ("steer_stranger16.yaml", "STRANGER steering set 16 (steer_stranger16.yaml, development material, first run at the end of the seventeenth session)"),
     "stranger17": ("steer_stranger17.yaml", "STRANGER steering set 17 (steer_stranger17.yaml, development material)"),
+    "stranger18": ("steer_stranger18.yaml", "STRANGER steering set 18 (steer_stranger18.yaml, development material)"),
 }
 UNSEEN = HERE / "steer_unseen.yaml"
 SPLITS = HERE / "splits.yaml"
