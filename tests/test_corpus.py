@@ -102,6 +102,13 @@ def test_corpus_no_silent_errors_and_85_percent_correct(capsys):
     ("grid(gray,gray|gray,gray)", ["grid(2x2:gray,gray,gray,gray)"], True),
     ("grid(gray,gray,gray)", ["grid(2x2:gray,gray,gray,gray)"], False),
     ("grid(2x2:brown,brown|white,white)", ["grid(2x2:brown,white|brown,white)"], False),
+    ("grid(white,white,white,white)@center", ["grid(2x2:white,white,white,white)@center"], True),  # with its place
+    ("grid(white,white,white,white)@center", ["grid(2x2:white,white,white,white)@left"], False),
+    # a line read in a reversed direction is the same line written forward (stranger27's annotator wrote it so)
+    ("line[left_to_right](blue,red,red)", ["line[right_to_left](red,red,blue)"], True),
+    ("line[left_to_right](red,red,blue)", ["line[right_to_left](red,red,blue)"], False),
+    ("line[front_to_back](red,green)", ["line[back_to_front](green,red)"], True),
+    ("line[front_to_back](red,green)", ["line[left_to_right](red,green)"], False),
 ])
 def test_meaning_matcher(expected, actual, ok):
     assert matches(expected, actual) is ok

@@ -3673,3 +3673,68 @@ def test_a_run_of_labels_with_an_end_keeps_every_label():
 ])
 def test_stranger26_silent_errors(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger24/26/27 silent errors (nineteenth session): arrows for directions had been dropped ("l->r")
+    ("digits 1-4 sorted l->r", ["line[left_to_right](1,2,3,4)"]),
+    ("3 cubes in a row L->R: red, yellow, green", ["line[left_to_right](red,yellow,green)"]),
+    ("tower red, green, blue (t->b)", ["stack(blue,green,red)"]),
+    # "blk" as an item of an arrowed list had been dropped with the black cube
+    ("blk -> wht -> gry tower (bottom first)", ["stack(black,white,gray)"]),
+    # a config line's count had been dropped (a circle of six, a tower of two)
+    ("layout: circle, n_cubes: 5, colors: any", ["circle(red,red,red,red,red)"]),
+    # "patch red, purple on ...": the red patch, then a new clause (a gray patch and a red cube had been made up)
+    ("Cyan on patch red, purple on patch red also.", ["on_patch(cyan,purple,patch:red)"]),
+    ("Stack of pink cubes, three pink, on the right part of table.", ["stack(pink,pink,pink)@right"]),
+    ("Goal state: two separate towers, one of two red cubes and one of two blue cubes.",
+     ["stack(blue,blue)", "stack(red,red)"]),
+    # roles said tersely, in any order, with the middle counted
+    ("Stack tower, 4 layer, bottom layer purple, top layer yellow, middle two layer both white.",
+     ["stack(purple,white,white,yellow)"]),
+    ("a tower of 4: bottom purple, top yellow, middle two white", ["stack(purple,white,white,yellow)"]),
+    ("note to self: pyramid 3-2-1, bottom all white, middle both gray, top black", ["pyramid(white,white,white|gray,gray|black)"]),
+    # "down" and "up" as a tower's ends and a wall's rows (literal translations)
+    ("a tower of yellow, blue and cyan - yellow down, cyan up", ["stack(yellow,blue,cyan)"]),
+    ("I want wall: down row gray gray gray, up row black black black.", ["wall(gray,gray,gray|black,black,black)"]),
+    # "on it" after a cube put on a patch: on that cube
+    ("Put the white cube on the gray patch and stack the red cube on it.", ["on_patch(white,patch:gray)", "stack(white,red)"]),
+    # labels listed as they start and as they end: the end order (the start order had been the goal's)
+    ("You should see the number cubes 5, 2, 8 rearranged so they go 2, 5, 8 from left to right.", ["line[left_to_right](2,5,8)"]),
+])
+def test_nineteenth_session_silent_errors(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,words", [
+    ("tower, n cubes: 3", "'3'"),  # a number after a colon that no count of the task carries
+    ("foo, white, gray tower", "'foo'"),  # an unknown word as an item of a list of colours
+    ("In the final picture the red cube is next to the green patch and the yellow cube is on it.", "'on it'"),
+    ("put the red cube next to the blue patch and the green cube behind it", "'behind it'"),
+    ("Have the gripper put the cube it just dropped on the green patch.", "'it just dropped'"),  # an earlier event
+    ("the number cubes 5, 2, 8 rearranged so they go 2, 5, 9 from left to right.", "lists other labels"),
+])
+def test_nineteenth_session_refusals(text, words):
+    with pytest.raises(BadInput, match=re.escape(words)):
+        parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a caption of the finished scene, the robot as the subject, and exclaimed asides (stranger27's voices)
+    ("You should see three gray cubes heaped together in the middle of the table.", ["pile(gray,gray,gray)@center"]),
+    ("The image shows the pink cube far away from the blue cube.", ["far_from(blue,pink)"]),
+    ("The gripper should stack the cyan cube on the pink cube.", ["stack(pink,cyan)"]),
+    ("Have the gripper stack the cyan cube on the pink cube.", ["stack(pink,cyan)"]),
+    ("The robot arm is to place the white cube in front of the orange cube.", ["in_front_of(white,orange)"]),
+    ("Put the green block on the purple block. What a tower!", ["stack(purple,green)"]),
+    ("Put the white block far away from the black block. They need some space!", ["far_from(black,white)"]),
+])
+def test_captions_robot_subjects_and_asides(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_an_exclaimed_sentence_that_says_something_stays():
+    with pytest.raises(BadInput, match="big"):  # a size is refused, not dropped as an aside
+        parse("Put the green block on the purple block. Use the big one!")
+    assert meaning(parse("Put the green block on the purple block. Then put the red block on the green block!")) == [
+        "stack(purple,green,red)"]

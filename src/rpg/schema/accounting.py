@@ -166,7 +166,7 @@ have ("I" is the speaker; "A" only where it is no article; not an option, a step
 marker: "plan B", "(c)", "e.g."; not a number of cubes: "all N blocks")."""
 
 
-LONE_DIGIT_RE = re.compile(r"(?<![\w'\-.(#:/@$\u00a3\u20ac])(?<!:\s)(?<!\bseed\s)(\d)(?![\w'\-%/:\u00d7]|[.)]\s*\w|\.\d)(?!\s*(?:[x\u00d7*+=]|by)\b)(?!\s+[A-Za-z])")
+LONE_DIGIT_RE = re.compile(r"(?<![\w'\-.(#:/@$\u00a3\u20ac])(?<!\bseed\s)(\d)(?![\w'\-%/:\u00d7]|[.)]\s*\w|\.\d)(?!\s*(?:[x\u00d7*+=]|by)\b)(?!\s+[A-Za-z])")
 """A digit standing alone, with no word after it ("line 1 2 3", "stack 2 on 1", "a tower of 3"):
 a digit cube or a number of cubes, which the task must have (not a list marker "1." / "2)",
 a grid size "3x3" or "3 by 3", an id "T-88", a time "10:32" or a heading "Task 4:")."""

@@ -89,9 +89,10 @@ LABELS_AND_NOUN_RE = re.compile(r"\b([Tt]he)\s+([A-Z]|\d)\s*(?:,\s*|\s+and\s+|\s
 """"the 1 & 9 cubes", "the A and B blocks": two labelled cubes sharing one noun, read as "the 1
 cube and the 9 cube" (:func:`rpg.schema.reading.normalize_words`)."""
 
-BLK_RE = re.compile(r"\bblk(s?)\b(?=\s+(?:cubes?|blocks?)\b)|(?<=\s)blk(s?)\b")
-""""blk": black before a cube's noun ("put blk cube nxt 2 brwn cube"), else a block ("gray blk
-between black & white blks")."""
+BLK_RE = re.compile(r"\bblk(?P<black>s?)\b(?=\s+(?:cubes?|blocks?)\b|\s*(?:->|\u2192|=>|/))|(?<=>)(?P<arrowed>\s?)blk\b"
+                    r"|(?<=\s)blk(?P<block>s?)\b")
+""""blk": black before a cube's noun ("put blk cube nxt 2 brwn cube") or as an item of a list ("blk -> wht ->
+gry tower"), else a block ("gray blk between black & white blks")."""
 
 TEXTED_TO_RE = re.compile(r"(?i)\b(move|moved|put|go|goes|slide|push|bring|it|cube|block|one)\s+2\s+(?=the\b)"
                           r"|\b(next|nxt|close|closer)\s+2\s+(?=\S)")
@@ -271,11 +272,12 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
     ("reference", r"\bthe\s+(?:very\s+)?(?:first|second|third|fourth|fifth|sixth|last|next|previous|former|latter)"
                   r"\s+(?:(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?))\b"
-                  r"|\b(?:you|we|i)\s+(?:just|already|have|had)\s+(?:just\s+|already\s+)?"
-                  r"(?:moved|placed|picked|grabbed|used|put|touched|held)\b"
+                  r"|\b(?:you|we|i|it|they|the\s+(?:robot|arm|gripper))\s+(?:just|already|have|had|has)\s+(?:just\s+|already\s+)?"
+                  r"(?:moved|placed|picked|grabbed|used|put|touched|held|dropped|took|lifted|released|knocked|pushed)\b"
                   r"|\b(?:that|which)\s+(?:was|were|has\s+been|had\s+been)\s+(?:just\s+|already\s+|last\s+)?(?:moved|placed|picked|put"
                   r"|used|touched|grabbed|held)\b"
-                  r"|\b(?:blocks?|cubes?|ones?)\s+(?:that\s+)?(?:you|we|i)\s+(?:moved|placed|picked|grabbed|used|touched|held|pointed|indicated|mentioned|chose|selected)\b"
+                  r"|\b(?:blocks?|cubes?|ones?)\s+(?:that\s+)?(?:you|we|i|it|they)\s+(?:moved|placed|picked|grabbed|used|touched|held|pointed"
+                  r"|indicated|mentioned|chose|selected|dropped|took|lifted|released)\b"
                   r"|\b(?:you|we|i)(?:'m|'re|\s+am|\s+are)?\s+(?:just\s+)?(?:pointed|pointing|indicated|indicating)\b"
                   r"|\b(?:you|we|i)(?:'m|'re|\s+am|\s+are)?\s+(?:just\s+)?(?:looking|looked|gazing|gazed|staring|stared|glancing)\s+at\b"
                   r"|\b(?:you|we|i)\s+(?:can\s+)?(?:see|saw|look\s+at|gaze\s+at)\b"
@@ -553,7 +555,8 @@ FRAMING_RE = re.compile(
     r"|for\s+(?:this|the)\s+task,?\s+)?"
     r"(?:(?:a|an|the)\s+(?:simple\s+|basic\s+|easy\s+|collaborative\s+|bimanual\s+|dual[- ]arm\s+)?(?:task|challenge|problem)"
     r"\s+(?:where|in\s+which)\s+)?"
-    r"(?:the\s+(?:robot|agent)\s+(?:has\s+to|needs\s+to|must|should)\s+|(?:the|your|its)\s+(?:objective|goal|task|job|aim)\s+is\s+to\s+"
+    r"(?:the\s+(?:robot(?:ic)?\s+)?(?:robot|agent|arm|gripper|manipulator)\s+(?:has\s+to|needs\s+to|must|should|is\s+to|shall"
+    r"|is\s+(?:expected|supposed|required|asked)\s+to|will)\s+|(?:the|your|its)\s+(?:objective|goal|task|job|aim)\s+is\s+to\s+"
     r"|(?:two|both|the|a)\s+(?:robot(?:ic)?\s+)?(?:arms?|robots)\s+(?:need|needs|must|should|have|has|are)\s+(?:to\s+)?"
     r"(?:(?:work\s+together|cooperate|collaborate)\s+(?:to\s+)?)?)?")
 """Framing before a task's verb that says nothing of the goal ("a simple task where the
@@ -1178,6 +1181,12 @@ CHAT_TURN_RES: tuple[tuple[re.Pattern, str], ...] = (
 (:data:`LABEL_RE`)."""
 
 TASK_FRAME_RES: tuple[re.Pattern, ...] = (
+    # a crowd worker's caption of the finished scene ("You should see three gray cubes ...", "The image shows a wall:
+    # ...", "In the final picture you will see ..."): the scene described is the goal
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:(?:in\s+the\s+(?:final|last|end|finished|goal)\s+(?:image|picture|photo|frame|scene|snapshot)"
+               r"|at\s+the\s+end)\s*,?\s*)?(?:you\s+(?:should|will|would|must)\s+see|you'?ll\s+see|you\s+see|we\s+(?:should\s+)?see"
+               r"|(?:the|this|that)\s+(?:final\s+|finished\s+|goal\s+)?(?:image|picture|photo|photograph|frame|snapshot)\s+"
+               r"(?:shows|has|contains|depicts|is\s+of))\s*:?\s+"),
     # "The final scene should have ...", "The end state you are looking for is ...": the goal follows
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:final|end|desired|goal|target|resulting)\s+(?:state|scene|configuration|layout"
                r"|arrangement|setup)(?:\s+(?:you\s+are|you're|we\s+are|we're|i\s+am|i'm)\s+looking\s+for)?\s+(?:should\s+|must\s+|will\s+)?"
@@ -1227,7 +1236,7 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
     # "have the robot ...", "watch it line up ..."): the request is the task
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:(?:alexa|siri|hey\s+google|ok(?:ay)?\s+google|hey\s+robot|computer)\s*,\s*)?"
                r"(?:(?:please\s+)?(?:tell|ask|instruct|command|get)\s+(?:the\s+)?(?:robot|arm|agent|policy)\s+to\s+"
-               r"|(?:please\s+)?(?:have|let)\s+(?:the\s+)?(?:robot|arm|agent|policy)\s+(?=[a-z]+\s)"
+               r"|(?:please\s+)?(?:have|let)\s+(?:the\s+)?(?:robot(?:ic)?\s+)?(?:robot|arm|agent|policy|gripper|manipulator)\s+(?=[a-z]+\s)"
                r"|(?:now\s+)?watch\s+(?:it|the\s+robot|the\s+arm|me)\s+(?=[a-z]+\s))"),
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:alexa|siri|hey\s+google|ok(?:ay)?\s+google|(?:hey|hi|hello|ok(?:ay)?)\s+(?:robot|bot))\s*,\s*"),
     # "Is necessary to make ..." (a Spanish "es necesario"), "it is required that ...": the task follows
@@ -1279,6 +1288,19 @@ stays a spelled word)."""
 
 SHOUTING_MIN_LETTERS = 12
 
+EXCLAIMED_SENTENCE_RE = re.compile(r"(?:^|(?<=[.!?]\s))[^.!?]*!+(?=\s|$)")
+"""A sentence ending with "!" (a teacher's or puzzle writer's aside: "What a tower!", "Good luck!", "They need some
+space!"); dropped by :func:`rpg.schema.reading.drop_asides` when no word of it says anything of a goal
+(:data:`ASIDE_CONTENT_RE`) nor anything the domain cannot express."""
+
+ASIDE_CONTENT_RE = re.compile(
+    rf"(?i)\b(?:{COLOR_RE}|grey|\d+|one|two|three|four|five|six|seven|eight|nine|ten|{'|'.join(PLACEMENT_VERBS)}|spell|sort|line|order"
+    r"|left|right|front|back|rear|behind|between|next|near|beside|far|top|bottom|middle|cent(?:er|re)|corners?|patch(?:es)?"
+    r"|under|above|below|table|letters?|digits?|numbers?|each|every|all|both|not|no|never|if|when|only|instead)\b")
+"""Words that make an exclaimed sentence part of the task: a colour, a count, a placement verb, a place or relation,
+a label, a quantifier, a negation, a condition."""
+
+
 FILLER_RE = re.compile(r"(?i)(?:^|(?<=[.!?]\s))(?:prego|allora|ecco|dai|senti|god\s+willing|inshallah|insha'?allah|yalla|omg|lol"
                        r"|yo|hey\s+there|alright\s+then|okay\s+so|ok\s+so|aigoo|jeez|arre+y?|arey|do\s+one\s+thing)\s*[,!.]*\s*"
                        r"|(?:^|(?<=[.!?;]\s))(?:look|listen|hey\s+look)\s*,\s*(?=\S)"
@@ -1298,6 +1320,24 @@ list item comes before it ("red, um, blue": the list's comma stays; "the top one
 HYPHENED_DIRECTION_RE = re.compile(r"(?i)\b(left|right|front|back|bottom|top)-to-(left|right|front|back|bottom|top)\b")
 """A direction written with hyphens ("right-to-left", "bottom-to-top"): its words apart, as the readers read it
 (the direction had been dropped, a sort read left to right)."""
+
+ARROW_DIRECTIONS: dict[tuple[str, str], str] = {
+    ("l", "r"): "left to right", ("r", "l"): "right to left", ("f", "b"): "front to back", ("b", "f"): "back to front",
+    ("b", "t"): "bottom to top", ("t", "b"): "top to bottom",
+}
+"""A direction written as an arrow between the two ends' initials ("l->r", "L->R", "b->t", "t -> b") or words
+("left->right", "bottom -> top"): its two ends by their initials (a "b" is bottom beside "t", back beside "f")."""
+
+ARROW_DIRECTION_RE = re.compile(r"(?i)(?<![\w-])(left|right|front|back|bottom|top|[lrfbt])\s*(?:->|\u2192|=>|-+>)\s*"
+                                r"(left|right|front|back|bottom|top|[lrfbt])(?![\w-])")
+"""An arrow between two ends (:data:`ARROW_DIRECTIONS`); read by :func:`arrow_direction`."""
+
+
+def arrow_direction(m: re.Match) -> str:
+    """The words of a direction written as an arrow (``"l->r"``: "left to right"); the arrow as it was where its
+    ends name no direction ("t->t")."""
+    return ARROW_DIRECTIONS.get((m.group(1)[0].lower(), m.group(2)[0].lower()), m.group(0))
+
 
 GLUED_COUNT_RE = re.compile(r"(?i)\b(stacks?|towers?|piles?|rows?|lines?|walls?|grids?|pyramids?|circles?)((?:-[a-z]+)*)-(\d+)\b")
 """A structure's identifier with a count glued on ("stack-any-4", "pile-5"): the words and the count
@@ -1448,7 +1488,7 @@ cubes.", "3 red cubes, 1 yellow cube."), in the parser's normalised text: each c
 cubes of its colour (or all the cubes), checked by :func:`rpg.schema.accounting.unaccounted`."""
 
 CONFIG_ROLES: dict[str, str] = {
-    **dict.fromkeys("structure task type shape kind goal obj objective arrangement".split(), "structure"),
+    **dict.fromkeys("structure task type shape kind goal obj objective arrangement layout formation".split(), "structure"),
     **dict.fromkeys("cubes objects colors colours color colour blocks items".split(), "cubes"),
     **dict.fromkeys("n count num num_cubes n_cubes height size length number".split(), "count"),
     **dict.fromkeys("region location place position where area corner".split(), "place"),
@@ -2273,9 +2313,12 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 rf"(?!\s+(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?)\b)"),
      r"the \2 \1"),
     # "the cube brown on the cube orange", "block purple on block yellow", "the cube of colour blue": a colour after its noun
-    # a list after the noun ("the cube red, blue and green") is left as it is
+    # a list after the noun ("the cube red, blue and green") is left as it is, not a new clause ("cyan on patch red,
+    # purple on patch red also": the red patch, then a purple cube)
     (re.compile(rf"(?<!every )(?<!each )(?<!all )(?<!any )\b(cube|block|box|patch)\s+(?:of\s+(?:the\s+)?colou?r\s+)?({COLOR_RE})\b"
-                rf"(?!\s*(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?)\b|\s*(?:,|and\b|or\b)\s*(?:the\s+)?(?:{COLOR_RE})\b)"),
+                rf"(?!\s*(?:cubes?|blocks?|box(?:es)?|patch(?:es)?|ones?)\b|\s*(?:,|and\b|or\b)\s*(?:the\s+)?(?:{COLOR_RE})\b"
+                r"(?!\s+(?:(?:cube|block|one)\s+)?(?:on|onto|in|into|at|next|beside|near|behind|under|over|above|below|left|right"
+                r"|goes|is|should|must)\b))"),
      r"\2 \1"),
     # "two cubes gray and the cube brown": a counted colour after its noun (Russian, Spanish habits)
     # the colour may agree in number ("the two cubes oranges", French and Spanish)
@@ -2340,6 +2383,19 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      "far from"),
 )
 """Transcripts' and notes' loose phrasings (colours said once per cube, "the corner - the front right one", "box-shaped", "spell out the name", "a long way from")."""
+
+UP_DOWN_ROLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "I want wall: down row gray gray gray, up row black black black": a layer said by "down" and "up"
+    (re.compile(r"\b(?:down|lower)\s+(?=(?:row|layer|level|tier|course)\b)"),
+     "bottom "),
+    (re.compile(r"\bup(?:per)?\s+(?=(?:row|layer|level|tier|course)\b)"),
+     "top "),
+    # "a tower of yellow, blue and cyan - yellow down, cyan up -": an end of a listed tower said by "down" and "up"
+    (re.compile(rf"(?<=[,;:(\-]\s)(?P<c>{COLOR_RE})\s+(?P<w>down|up)\b(?=\s*(?:[,;.)\-]|\band\b|$))"),
+     lambda m: f"{m.group('c')} {'at the bottom' if m.group('w') == 'down' else 'on top'}"),
+)
+"""A tower's end or a wall's layer said by "down" and "up" (literal translations: "yellow down, cyan up",
+"down row gray gray gray"); read only in a text that builds a tower or a wall."""
 
 TOP_DOWN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "Stack red, green, blue from the top down", "Tower (top first): ...": a list from the top
@@ -2447,6 +2503,10 @@ LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      r"to the \1 of"),
     (re.compile(r"\bon\s+top\s+(?=the\b)"),
      "on top of "),
+    # "stack of pink cubes, three pink, on the right": the count said after the cubes, with their colour again
+    (re.compile(rf"\b(?P<c>{COLOR_RE})\s+(?P<n>cubes|blocks)\s*,\s*(?P<k>\d+|{COUNT_WORD_RE})\s+(?P=c)(?:\s+(?:cubes|blocks|ones))?"
+                r"(?=\s*(?:[,.;!?]|$))"),
+     lambda m: f"{NUMBER_WORDS.get(m.group('k'), m.group('k'))} {m.group('c')} {m.group('n')}"),
     # "a row of white cubes, three of them": the count said after the cubes
     (re.compile(rf"\b((?:{COLOR_RE})\s+)?(cubes|blocks)\s*,?\s+(\d+|{COUNT_WORD_RE})\s+of\s+them\b"
                 r"(?=\s*(?:[,.;!?]|$|(?:at|in|on|along|across|please)\b))"),
@@ -2462,6 +2522,9 @@ PLEASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 """"two stacks please: ...": the request's "please" before punctuation."""
 
 STRUCTURE_NOUN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "two separate towers, one of two red cubes and one of two blue cubes": several structures are apart anyway
+    (re.compile(rf"\b(\d+|{COUNT_WORD_RE})\s+(?:separate|distinct|different|individual|independent)\s+(?=(?:towers|stacks|rows|lines|piles|columns)\b)"),
+     r"\1 "),
     (re.compile(r"\bvertical (?:column|stack)\b|\bpillar\b"),
      "tower"),
     # "a column of three cubes going from front to back" lies along the table
@@ -2558,6 +2621,15 @@ HEADING_SENTENCE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      r"\1: "),
 )
 """A structure named in a sentence of its own, its parts counted in the next: one description."""
+
+_LABEL_LIST = r"[A-Z0-9](?:\s*,\s*(?:and\s+)?[A-Z0-9]|\s+and\s+[A-Z0-9])+"
+
+
+REARRANGED_RE = re.compile(rf"(?P<first>{_LABEL_LIST})\s+(?:(?:re)?(?:arranged|sorted|ordered|placed|put)\s+)?so\s+(?:that\s+)?"
+                           rf"(?:they|it)\s+(?:go|are|end\s+up|sit|stand|run|come)\s+(?:in\s+the\s+order\s+)?(?P<then>{_LABEL_LIST})")
+"""Labels listed as they start and as they end ("the number cubes 5, 2, 8 rearranged so they go 2, 5, 8 from left
+to right"): the end order alone (:func:`rpg.schema.reading.rearranged`; the start order had been read as the goal's)."""
+
 
 READ_FROM_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"(?i)\b(?:when|as|if)\s+(read|viewed|seen)\s+(?=from\b|left|right|top|bottom)"), r"\1 "),

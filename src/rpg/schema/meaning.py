@@ -242,6 +242,17 @@ def _by_colour(atoms: list[str]) -> list[str]:
     return [a for a in atoms if a not in piles] + [f"piles({','.join(cubes)};by=color)"]
 
 
+_REVERSED_DIRECTIONS = {"right_to_left": "left_to_right", "back_to_front": "front_to_back"}
+
+
+def _forward(text: str) -> str:
+    """``text`` with each line read in a reversed direction written forward: ``line[right_to_left](a,b)``
+    is ``line[left_to_right](b,a)`` (one goal, two spellings)."""
+    return re.sub(r"\bline\[(\w+)\]\(([^()]*)\)",
+                  lambda m: (f"line[{_REVERSED_DIRECTIONS[m.group(1)]}](" + ",".join(reversed(m.group(2).split(","))) + ")"
+                             if m.group(1) in _REVERSED_DIRECTIONS else m.group(0)), text)
+
+
 def matches(expected: str, actual: list[str]) -> bool:
     """Whether a corpus meaning (atoms separated by ``; `` outside brackets) equals ``actual``.
 
@@ -250,12 +261,13 @@ def matches(expected: str, actual: list[str]) -> bool:
     matches one or more actual atoms, one per red cube (``in_region(red,back)`` twice), and
     ``in_region(red,red,back)`` stands for one atom per cube; ``reads(DOG)`` matches the reads atom whose text is DOG, whatever its cubes and face; a pile's
     or piles' cubes match in any order, and one-colour piles of distinct colours match piles sorted by colour; a grid written without its size (``grid(gray,gray|gray,gray)``) matches a
-    grid of those cubes, whatever its rows.
+    grid of those cubes, whatever its rows; a line in a reversed direction matches the same line written forward.
     """
     if re.search(r"\bgrid\((?!\d+x\d+:)", expected):  # "grid(gray,gray|gray,gray)": a grid's size and rows left unsaid
         expected = re.sub(r"\bgrid\(([^()]*)\)", lambda m: "grid(" + ",".join(sorted(re.split(r"[,|]", m.group(1)))) + ")", expected)
-        actual = [re.sub(r"^grid\((?:\d+x\d+:)?([^()]*)\)$", lambda m: "grid(" + ",".join(sorted(re.split(r"[,|]", m.group(1)))) + ")", a)
+        actual = [re.sub(r"^grid\((?:\d+x\d+:)?([^()]*)\)(?=@|$)", lambda m: "grid(" + ",".join(sorted(re.split(r"[,|]", m.group(1)))) + ")", a)
                   for a in actual]
+    expected, actual = _forward(expected), [_forward(a) for a in actual]
     wanted = _by_colour([w for a in re.split(r";\s+(?![^()]*\))", expected) if a.strip() for w in _per_cube(_unordered(a.strip()))])
     actual = _by_colour([w for a in actual for w in _per_cube(_unordered(a))])
     for w in [w for w in wanted if re.fullmatch(r"reads\([A-Za-z0-9]+\)", w)]:  # "reads(DOG)": the word read, shortly

@@ -145,6 +145,30 @@ def _inexpressible(text: str) -> list[tuple[str, list[str], str]]:
     return found
 
 
+def rearranged(m: re.Match) -> str:
+    """Labels listed as they start and as they end (:data:`lexicon.REARRANGED_RE`): "arranged in the order" of the end.
+
+    Raises:
+        ParseError: the two lists name different labels (which cubes the task has is then unsaid).
+    """
+    first, then = (sorted(re.findall(r"[A-Z0-9]", m.group(g))) for g in ("first", "then"))
+    if first != then:
+        raise ParseError(f"'{m.group(0)}' lists other labels at the end ({', '.join(then)}) than at the start "
+                         f"({', '.join(first)}); say the cubes once, in their end order, or use --model")
+    return f"arranged in the order {m.group('then')}"
+
+
+def drop_asides(text: str) -> str:
+    """``text`` without its exclaimed asides (:data:`lexicon.EXCLAIMED_SENTENCE_RE`: "Put the green block on the
+    purple block. What a tower!"): an aside names nothing of a goal (:data:`lexicon.ASIDE_CONTENT_RE`) and nothing
+    the domain cannot express ("Quickly!" stays, to be refused); the text as it is when nothing else is left."""
+    def aside(m: re.Match) -> str:
+        said = m.group(0)
+        return said if lexicon.ASIDE_CONTENT_RE.search(said) or _inexpressible(said.lower()) else ""
+    kept = re.sub(r"\s{2,}", " ", lexicon.EXCLAIMED_SENTENCE_RE.sub(aside, text)).strip()
+    return kept if re.search(r"[a-z]", kept, re.I) else text
+
+
 def _refuse_unresolved_pronoun(text: str, original: str) -> None:
     """Raise :class:`Inexpressible` (``reference``) when a pronoun standing for cubes ("stack
     them", "unstack that.") has nothing named before it to refer to
@@ -236,6 +260,11 @@ _PLACE_BEFORE = re.compile(r"\b(?:in|into|on|onto|at|to|towards?|from|over|under
 """What precedes a word that names a place ("in the air", "onto the shelf", "in case")."""
 _PLACED_BEFORE = re.compile(rf"\b(?:{'|'.join(sorted(lexicon.PLACEMENT_VERBS))}|stack)\s+(?:the\s+|a\s+|an\s+)?$")
 """What precedes a word that names what is placed ("put teddy on ...")."""
+_LIST_SEPARATOR = r"(?:,|;|/|->|\u2192|=>|>|\+|&|\band\b|\bthen\b)"
+_LIST_ITEM_AFTER = re.compile(rf"\s*{_LIST_SEPARATOR}\s*(?:the\s+)?(?:{COLOR_RE})\b")
+_LIST_ITEM_BEFORE = re.compile(rf"\b(?:{COLOR_RE})\s*{_LIST_SEPARATOR}\s*$")
+"""The separators around a word that stands as an item of a list of colours ("zork -> white -> gray tower",
+"red, foo, blue"): an unknown word there is a cube said in words the parser does not know (it had been dropped)."""
 _VERB_TAKES_AFTER = re.compile(r"\s+(?:up|down|over|out|off|away|back|around|apart|together|along|\d+"
                                r"|(?:(?:by|on|onto|in|into|to|from|with|under|over|against|between|near|beside|behind|atop)\s+)?"
                                r"(?:(?:the|a|an|this|that|these|those|all|both|each|every|\d+)\s+)?(?:[a-z\-]+\s+){0,2}?"
@@ -258,7 +287,8 @@ def ignorable_unknown(word: str, text: str) -> bool:
     object or a reference; ignoring those had compiled held-out texts silently wrong); a word
     describing a cube, patch or structure ("zorp square"); a place ("in the zorp"); what is placed
     ("put teddy on ..."); a word used as a verb on the cubes ("yeet the red cube", "supported by
-    the red block"); a word before a particle; the ending of a number ("nd" of "2nd")."""
+    the red block"); a word before a particle; an item of a list of colours ("zork, white, gray"); the ending of a
+    number ("nd" of "2nd")."""
     parts = {word, word.removesuffix("s"), *word.split("-")}  # "reds": the red cubes; "time-limited"
     if parts & lexicon.UNKNOWN_CARRIES_MEANING or parts & lexicon.colour_names():
         return False
@@ -278,6 +308,8 @@ def ignorable_unknown(word: str, text: str) -> bool:
             return False  # a sentence of its own ("Vice versa.", "Diagonal please."): the idle-sentence rule decides
         if _MODIFIES_AFTER.match(after) or _PLACE_BEFORE.search(before) or _PLACED_BEFORE.search(before):
             return False
+        if _LIST_ITEM_AFTER.match(after) or _LIST_ITEM_BEFORE.search(before):
+            return False  # an item of a list of colours ("zork -> white -> gray tower"): a cube, unread
         if _VERB_TAKES_AFTER.match(after):
             return False  # a word used as a verb on the cubes ("yeet the red cube"), or before a particle ("zorp down")
     return True
@@ -717,6 +749,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         original = pattern.sub(written, original).strip()
     original = lexicon.EMOJI_RE.sub(" ", original).strip()
     original = lexicon.HYPHENED_DIRECTION_RE.sub(r"\1 to \2", original)
+    original = lexicon.ARROW_DIRECTION_RE.sub(lexicon.arrow_direction, original)  # "l->r", "bottom -> top"
     original = lexicon.GLUED_COUNT_RE.sub(lambda m: f"{m.group(1)}{m.group(2).replace('-', ' ')} {m.group(3)}", original)
     if lexicon.LETTER_SIGNATURE_RE.search(original):  # "Hi Sam, ... Thanks, Priya": a signed message
         original = lexicon.LETTER_GREETING_RE.sub("", lexicon.LETTER_SIGNATURE_RE.sub("", original)).strip() or original
@@ -725,6 +758,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         original = pattern.sub(written, original)
     for pattern in lexicon.GRADING_FRAME_RES:  # "Q3. (4 points) ...", "full marks if ...; zero otherwise"
         original = pattern.sub("", original).strip()
+    original = drop_asides(original)  # "Put the green block on the purple block. What a tower!"
     original = lexicon.FILLER_RE.sub("", original).strip()
     original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", original)  # texting's "2" for "to"
     original = lexicon.TEXTED_YOU_RE.sub("you", original)  # "can u build ...": texting's "u"
@@ -756,6 +790,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     if len(original) > MAX_INSTRUCTION_CHARS:
         raise ParseError(f"the instruction has {len(original)} characters; the limit is {MAX_INSTRUCTION_CHARS}")
     original = lexicon.rewrite(lexicon.READ_FROM_REWRITES, original)
+    original = lexicon.REARRANGED_RE.sub(rearranged, original)  # "5, 2, 8 rearranged so they go 2, 5, 8"
     # "so that they read 1 2 3", "reads A, B, C": the labels read as one word ("read 123")
     if not SORT_WORD_RE.search(original):  # "... read A, B, C, D in alphabetical order": a sort, read as one
         original = re.sub(r"\b((?:read|spell|show)(?:s|ing)?)\s+((?:[A-Z0-9](?:\s*,\s*(?:and\s+)?|\s+and\s+|\s*-\s*|\s+))+[A-Z0-9])"
@@ -854,10 +889,13 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.rewrite(lexicon.ROBOT_SUBJECT_REWRITES, text)
     for pattern, full in lexicon.CONTRACTIONS:
         text = re.sub(pattern, full, text)
-    text = lexicon.BLK_RE.sub(lambda m: "black" if m.group(1) is not None else "block" + (m.group(2) or ""), text)
+    text = lexicon.BLK_RE.sub(lambda m: "black" if m.group("black") is not None else m.group("arrowed") + "black"
+                              if m.group("arrowed") is not None else "block" + m.group("block"), text)
     text = _SYNONYM_RE.sub(lambda m: lexicon.SYNONYMS[m.group(0)], text)
     text = lexicon.TEXTURED_RE.sub(lambda m: f"the {m.group('c')} block" if m.group("c") in COLORS else m.group(0), text)
     text = lexicon.rewrite(lexicon.NOTATION_REWRITES, text)
+    if re.search(r"\b(?:walls?|towers?|stacks?)\b", text):  # "yellow down, cyan up", "down row gray gray gray"
+        text = lexicon.rewrite(lexicon.UP_DOWN_ROLE_REWRITES, text)
     if re.search(r"\bwalls?\b", text):  # "a two-layer wall with blue on the bottom, three cubes per layer"
         text = lexicon.rewrite(lexicon.WALL_ROW_REWRITES, text)
         text = lexicon.WALL_LAYER_ROLE_RE.sub(lambda m: f"{m.group('where')} layer {m.group('c')}", text)
@@ -1154,27 +1192,37 @@ _END_WORDS = {"bottom": "bottom", "lowest": "bottom", "lower": "bottom", "bottom
               "upper": "top", "topmost": "top", "left": "left", "leftmost": "left", "right": "right", "rightmost": "right"}
 _ROLE_BE = r"(?:(?:is|are|being|should\s+be|must\s+be|has\s+to\s+be|will\s+be)\s+)?"
 """The verb of a role clause, or none ("the leftmost cube should be black, the rightmost brown")."""
-_ROLE_CLAUSE = (rf"the\s+(?:(?:{'|'.join(_END_WORDS)})(?:\s+(?:one|1|block|cube))?|\d+\s+(?:in\s+between|in\s+the\s+middle"
-                rf"|between\s+them)|middle(?:\s+(?:one|1|block|cube))?)\s+{_ROLE_BE}(?:{COLOR_RE})\b")
-_ROLE_CLAUSES_RE = re.compile(rf"\s*[;:,]?\s*(?:with\s+)?{_ROLE_CLAUSE}(?:\s*,?\s*(?:and\s+)?{_ROLE_CLAUSE}){{2}}")
+_ROLE_NOUN = r"(?:\s+(?:one|ones|1|blocks?|cubes?|layers?|levels?|floors?|tiers?))?"
+"""The noun of a role ("the bottom one", "bottom layer", "the middle two cubes"), or none ("bottom purple")."""
+
+
+def _role_clause(named: bool) -> str:
+    """One role clause: an end ("the bottom one is blue", "top layer yellow"), the middle ("the middle one yellow",
+    "middle two layer both white", "the 2 in between are green"); with ``named`` groups end, n and c."""
+    g = (lambda name: f"?P<{name}>") if named else (lambda name: "?:")
+    return (rf"(?:the\s+)?(?:({g('end')}{'|'.join(_END_WORDS)}){_ROLE_NOUN}|({g('n')}\d+)\s+(?:in\s+between|in\s+the\s+middle"
+            rf"|between\s+them)|middle(?:\s+({g('mn')}\d+){_ROLE_NOUN}(?:\s+(?:both|all|\d+))?|{_ROLE_NOUN})|({g('nm')}\d+)\s+middle"
+            rf"{_ROLE_NOUN})\s+{_ROLE_BE}({g('c')}{COLOR_RE})\b")
+
+
+_ROLE_CLAUSE_RE = re.compile(_role_clause(named=True))
+_ROLE_CLAUSES_RE = re.compile(rf"\s*[;:,]?\s*(?:with\s+)?{_role_clause(False)}(?:\s*,?\s*(?:and\s+)?{_role_clause(False)}){{2}}")
 
 
 def _role_clauses(m: re.Match) -> str:
     """"the bottom one is blue, the top one is red and the two in between are green" -> ": from bottom to top: blue,
-    green, green, red" (each end once, the middle counted; "the leftmost is red, the rightmost ..." of a row, left to
-    right); the words as they were otherwise."""
+    green, green, red" (each end once, the middle counted, in any order: "bottom layer purple, top layer yellow,
+    middle two layer both white"; "the leftmost is red, the rightmost ..." of a row, left to right); the words as
+    they were otherwise."""
     ends: dict[str, str] = {}
     middle: list[str] = []
-    for role, n, color in re.findall(rf"the\s+(?:({'|'.join(_END_WORDS)})(?:\s+(?:one|1|block|cube))?|(\d+)\s+[a-z\s]+?"
-                                     rf"|middle(?:\s+(?:one|1|block|cube))?)\s+{_ROLE_BE}({COLOR_RE})\b", m.group(0)):
-        if not role and not n:  # "the middle one yellow": one cube between the ends
-            middle.append(color)
-        elif role:
-            if _END_WORDS[role] in ends:
+    for r in _ROLE_CLAUSE_RE.finditer(m.group(0)):
+        if r.group("end"):
+            if _END_WORDS[r.group("end")] in ends:
                 return m.group(0)
-            ends[_END_WORDS[role]] = color
-        else:
-            middle += [color] * int(n)
+            ends[_END_WORDS[r.group("end")]] = r.group("c")
+        else:  # "the middle one yellow": one cube between the ends; "the 2 in between", "middle two": that many
+            middle += [r.group("c")] * int(r.group("n") or r.group("mn") or r.group("nm") or 1)
     axis = next((pair for pair in (("bottom", "top"), ("left", "right")) if set(ends) == set(pair)), None)
     if axis is None or not middle:
         return m.group(0)

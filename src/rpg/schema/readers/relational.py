@@ -238,12 +238,14 @@ class RelationalReading:
             if b_m.ref == "@it":
                 if not self.previous:
                     continue
-                referent = self.previous[0] if (kind == "on" and self.previous[1] in self.patch_names.values()) else self.previous[1]
+                # "put the white cube on the gray patch and stack the red cube on it": on the cube that covers the patch
+                covered = kind == "on" and any(p == self.previous[1] and a in ("*", self.previous[0]) for a, p in self.onpatch)
+                referent = self.previous[0] if covered else self.previous[1]
                 a = self.obj(a_m)
                 self.subjects.add((a_m.color, a_m.label))
-                if referent in self.patch_names.values() and kind != "on":
-                    raise ParseError(f"'{kind.replace('_', ' ')} it' may mean the cube {self.previous[0]} or the patch it "
-                                     "was put on; say which (e.g. \"next to the red block\")")
+                if referent in self.patch_names.values():  # "red next to the green patch and yellow on it": the patch or red?
+                    raise ParseError(f"'{kind.replace('_', ' ')} it' may mean the cube {self.previous[0]} or the patch named "
+                                     f"with it; say which (e.g. \"{kind.replace('_', ' ')} the {self.previous[0]} block\")")
                 if referent in self.patch_names.values():
                     self.onpatch.append((a, referent))
                 elif kind == "on":
