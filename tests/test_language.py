@@ -3713,6 +3713,8 @@ def test_nineteenth_session_silent_errors(text, expected):
     ("put the red cube next to the blue patch and the green cube behind it", "'behind it'"),
     ("Have the gripper put the cube it just dropped on the green patch.", "'it just dropped'"),  # an earlier event
     ("the number cubes 5, 2, 8 rearranged so they go 2, 5, 9 from left to right.", "lists other labels"),
+    # "all C cubes" without an article names several cubes (it had been read as one cube in a side relation)
+    ("all red cubes on the left, all blue cubes on the right", "'all red cubes' names several red cubes"),
 ])
 def test_nineteenth_session_refusals(text, words):
     with pytest.raises(BadInput, match=re.escape(words)):
@@ -3738,3 +3740,37 @@ def test_an_exclaimed_sentence_that_says_something_stays():
         parse("Put the green block on the purple block. Use the big one!")
     assert meaning(parse("Put the green block on the purple block. Then put the red block on the green block!")) == [
         "stack(purple,green,red)"]
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger26's headings and framings (nineteenth session): a student's "Design a task ...", a note's heading before
+    # a dash or an arrow, capitals of a note, a measure word, "not important", "from minor to major", "rest whatever"
+    ("Design a task where the robot must put the pink cube in the back right corner of the table.",
+     ["in_region(pink,back_right)"]),
+    ("Design a task; the robot puts the red cube between the green patch and the blue patch.",
+     ["between(red;patch:blue,patch:green)"]),
+    ("new task -> red cube in the middle of the table", ["in_region(red,center)"]),
+    ("ticket 88 - robot should line up the green, black and gray cubes front to back in that order",
+     ["line[front_to_back](green,black,gray)"]),
+    ("TODO eval set: \"orange on top of cyan\" and \"purple right of gray\"", ["right_of(purple,gray)", "stack(cyan,orange)"]),
+    ("Please use 3 piece green cube make one tower.", ["stack(green,green,green)"]),
+    ("The robot must to order the cubes of numbers 7, 2, 5 from minor to major, of left to right.",
+     ["line[left_to_right](2,5,7)"]),
+    # a structure word before a heading's colon is the task's (the wall had become a grid)
+    ("Task 5 - wall: 2 rows of 4 cubes, all yellow.", ["wall(yellow,yellow,yellow,yellow,yellow,yellow,yellow,yellow)"]),
+    # a "2x3" wall said with a bottom and a top row is two rows of three (a middle row had been made up)
+    ("todo - wall 2x3: bottom row orange, top row yellow", ["wall(orange,orange,orange|yellow,yellow,yellow)"]),
+])
+def test_stranger26_headings_and_framings(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_colours_said_unimportant_leave_them_free():
+    schema = parse("Make from the six cubes a pyramid, and the colours are not important.")
+    assert matches("pyramid(?,?,?,?,?,?)", meaning(schema))
+
+
+def test_the_rest_left_free_needs_a_count():
+    assert matches("stack(pink,?,?)", meaning(parse("new task -> tower of three, pink bottom, rest whatever")))
+    with pytest.raises(BadInput, match="does not say how many cubes"):
+        parse("a tower, pink bottom, rest whatever")

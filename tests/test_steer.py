@@ -1685,3 +1685,61 @@ def test_second_steering_attack_refusals(tmp_path, base, edit, words):
     fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
     with pytest.raises(BadInput, match=re.escape(words)):
         steer(fam.path, edit)
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # steer_stranger18's classes (nineteenth session): a curriculum's label of the variant being made is no reference
+    ("Stack a blue cube on a red cube", ["v2: add a green cube on top"], ("extend", ["stack(red,blue,green)"])),
+    ("Place the yellow cube on the blue patch", ["level 2 -> also a green cube on the red patch"],
+     ("extend", ["on_patch(green,patch:red)", "on_patch(yellow,patch:blue)"])),
+    # "like the first one, but ...": the base task, changed; "revert the revert": the change made again
+    ("Make a row of four cubes, left to right: purple, pink, red, orange",
+     ["remove the last one", "like the first one, but the pink cube should be white"],
+     ("tweak", ["line[left_to_right](purple,white,red,orange)"])),
+    ("Put the gray cube behind the cyan cube", ["make it in front instead", "revert that", "revert the revert"],
+     ("modify", ["in_front_of(gray,cyan)"])),
+    # "the cube you added": the one cube the last edit added
+    ("Place a cyan cube on the yellow patch", ["add a green cube on top of the cyan one", "the cube you added should be orange"],
+     ("tweak", ["on_patch(cyan,patch:yellow)", "stack(cyan,orange)"])),
+    # the two cubes on two patches exchanged
+    ("Place the orange cube on the green patch and the cyan cube on the pink patch", ["nit: the two cubes should trade patches"],
+     ("modify", ["on_patch(cyan,patch:green)", "on_patch(orange,patch:pink)"])),
+    # terse and non-native edits
+    ("Stack three cubes: white, black, white from bottom to top", ["more one black on top"],
+     ("extend", ["stack(white,black,white,black)"])),
+    ("Make a row of red, yellow and blue cubes from left to right", ["yellow go to end please"],
+     ("modify", ["line[left_to_right](red,blue,yellow)"])),
+    ("Build a tower with a blue cube on the bottom, then cyan, then white", ["put it in corner, front right"],
+     ("modify", ["stack(blue,cyan,white)@front_right"])),
+    ("Make a row of four blue cubes", ["LGTM but the row should be in the back of the table"],
+     ("modify", ["line(blue,blue,blue,blue)@back"])),
+])
+def test_steer_stranger18_classes(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+@pytest.mark.parametrize("base,edits,words", [
+    # silent errors of steer_stranger18's first run, refused now
+    ("Put a green cube on a yellow cube and a pink cube next to the yellow cube", ["put the pink one on the red patch instead"],
+     "'instead' replaces"),  # (the old relation had been kept)
+    ("Put the pink cube between the two purple cubes", ["put the whole thing into a tower, pink in the middle"],
+     "'pink' has no place"),  # (pink had gone to the bottom)
+    ("Place a cyan cube on the yellow patch", ["add a green cube on top of the cyan one",
+                                               "the cube you added before that should be brown"], "before the last"),
+    ("Place a cyan cube on the yellow patch", ["the cube you added should be brown"], "is the base task"),
+])
+def test_steer_stranger18_refusals(tmp_path, base, edits, words):
+    from rpg.errors import BadInput
+
+    fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
+    for e in edits[:-1]:
+        assert steer(fam.path, e).valid
+    with pytest.raises(BadInput, match=re.escape(words)):
+        steer(fam.path, edits[-1])
+
+
+def test_a_variant_label_keeps_the_edit_as_said(tmp_path):
+    """The label is dropped for reading, and the version records the edit as it was said."""
+    fam = Family(create_family(compile_instruction("Stack a blue cube on a red cube", tmp_path, name="fam").path).path)
+    r = steer(fam.path, "v2: add a green cube on top")
+    assert r.valid and fam.load().get(r.version).description == "v2: add a green cube on top"

@@ -24,6 +24,7 @@ from rpg.domain import predicates as P
 from rpg.errors import BadInput
 from rpg.schema import lexicon
 from rpg.schema.lexicon import (
+    CAPS_JARGON,
     COLOR_RE,
     COLORS,
     COMPASS_CORNER_RE,
@@ -166,10 +167,10 @@ have ("I" is the speaker; "A" only where it is no article; not an option, a step
 marker: "plan B", "(c)", "e.g."; not a number of cubes: "all N blocks")."""
 
 
-LONE_DIGIT_RE = re.compile(r"(?<![\w'\-.(#:/@$\u00a3\u20ac])(?<!\bseed\s)(\d)(?![\w'\-%/:\u00d7]|[.)]\s*\w|\.\d)(?!\s*(?:[x\u00d7*+=]|by)\b)(?!\s+[A-Za-z])")
+LONE_DIGIT_RE = re.compile(r"(?<![\w'\-.(#:/@$\u00a3\u20ac])(?<!\bseed\s)(\d)(?![\w'\-%/:\u00d7]|[.)]\s*\w|\.\d)(?!\s*(?:[x\u00d7*+=]|by)\b)(?!\s+[A-Za-z])(?!\s*(?:->|=>|\u2192|-+\s|\u2014|\u2013))")
 """A digit standing alone, with no word after it ("line 1 2 3", "stack 2 on 1", "a tower of 3"):
 a digit cube or a number of cubes, which the task must have (not a list marker "1." / "2)",
-a grid size "3x3" or "3 by 3", an id "T-88", a time "10:32" or a heading "Task 4:")."""
+a grid size "3x3" or "3 by 3", an id "T-88", a time "10:32" or a heading "Task 4:", "Task 5 - ...", "level 3 ->")."""
 
 
 COLOR_LIST_RE = re.compile(rf"\b(?:{COLOR_RE})(?:\s*(?:,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+)(?:the\s+)?"
@@ -244,8 +245,9 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
             role = re.findall(rf"\b({colors})\b", said)  # the cube said last before the side ("..., and blue on the right")
             out.append(Mention(said.strip() + " " + m.group(0), "end role",
                                color=canon(role[-1]) if role else None, region=m.group("side")))
-    for m in re.finditer(rf"(?<!,\s)(?<!and\s)(?<!or\s)\b(?:all\s+)?the\s+(?P<c>{colors})\s+(?:cubes|blocks|ones|bricks|boxes)\b",
-                         text):  # "the pink cubes": several of that colour (a listed "red and blue blocks" is not)
+    for m in re.finditer(rf"(?<!,\s)(?<!and\s)(?<!or\s)\b(?:all\s+(?:of\s+)?(?:the\s+)?|the\s+)(?P<c>{colors})\s+"
+                         r"(?:cubes|blocks|ones|bricks|boxes)\b",
+                         text):  # "the pink cubes", "all red cubes": several of that colour (a listed "red and blue blocks" is not)
         out.append(Mention(m.group(0), "plural", color=canon(m.group("c"))))
     for m in re.finditer(rf"(?:^|[.;:]\s*)(?P<w>(?P<c>{colors})\s+(?:cubes|blocks|bricks))\s+(?:on|in|at|to|along)\s+the\s+(?:far\s+)?"
                          r"(?:left|right|front|back|rear)\b",
@@ -680,7 +682,7 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     compass = {m.group(1) for m in COMPASS_CORNER_RE.finditer(f.original.lower())}
     caps = [w for w in re.findall(r"\b[A-Z]{2,}\b(?!\s*(?:\([^)]*\))?\s*:)", f.original)  # not a label: "NOTE:", "TODO(x):"
             if w.lower() not in VOCAB and w.lower() not in COLORS and not set(w) <= set(labels)
-            and w.lower() not in compass]
+            and w.lower() not in compass and w.lower() not in CAPS_JARGON]
     if caps:
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but {caps[0]!r} has no place in "
                           "that task. Rephrase (e.g. \"spell the word ...\"), or use --model")

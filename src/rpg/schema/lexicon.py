@@ -112,13 +112,13 @@ STACK_SIDE_MOVE_RE = re.compile(
 a two-cube stack, "it" is the stack (its top cube to the left would be a relation "of" a cube)."""
 
 ORDER_RANGE_RES: tuple[tuple[re.Pattern, str], ...] = (
-    (re.compile(r"(?i)\b(?:from\s+)?(?:small|little|low|least)(?:est|er)?\s+(?:to|->|\u2192)\s+(?:big|large|high|great)(?:gest|est|er)?\b"),
+    (re.compile(r"(?i)\b(?:from\s+)?(?:small|little|low|least|minor)(?:est|er)?\s+(?:to|->|\u2192)\s+(?:big|large|high|great|major)(?:gest|est|er)?\b"),
      "from smallest to largest"),
-    (re.compile(r"(?i)\b(?:from\s+)?(?:big|large|high|great)(?:gest|est|er)?\s+(?:to|->|\u2192)\s+(?:small|little|low|least)(?:est|er)?\b"),
+    (re.compile(r"(?i)\b(?:from\s+)?(?:big|large|high|great|major)(?:gest|est|er)?\s+(?:to|->|\u2192)\s+(?:small|little|low|least|minor)(?:est|er)?\b"),
      "from largest to smallest"),
 )
-""""small to big", "high -> low": a sort said by its two ends, read as the sort words the
-readers know ("from smallest to largest"); it had been dropped, leaving the listed order."""
+""""small to big", "high -> low", "from minor to major" (Spanish "de menor a mayor"): a sort said by its two ends,
+read as the sort words the readers know ("from smallest to largest"); it had been dropped, leaving the listed order."""
 
 SYNONYMS: dict[str, str] = {
     "brick": "block", "bricks": "blocks", "ground": "table", "floor": "table", "tabletop": "table",
@@ -976,9 +976,14 @@ FREE_PAIR_RE = re.compile(r"\b(?:the\s+)?colou?rs?\s+(?:and|or|,)\s+(?:the\s+)?o
 """Colours and order left free in one phrase ("colours and order do not matter"): said as the two
 phrases :data:`FREE_CHOICE_RE` and :data:`ANY_ORDER_RE` read ("colours do not matter, in any order")."""
 
+NOT_IMPORTANT_RE = re.compile(r"\b(is|are)\s+(?:not\s+(?:important|relevant)|of\s+no\s+importance)\b")
+"""" ... are not important": said as "unimportant", which :data:`FREE_PAIR_RE`, :data:`ANY_ORDER_RE` and
+:data:`FREE_CHOICE_RE` read (the "not" had been refused as a negation)."""
+
 ANY_ORDER_RE = re.compile(
     r"(?:\s*[,;(\u2013\u2014-]\s*|\s+)(?:(?:in\s+)?(?:any|whatever|no\s+particular|either)\s+order(?:\s+(?:is|are)\s+(?:fine|ok(?:ay)?|good|allowed))?"
     r"|(?:the\s+)?order\s+(?:does\s*n[o']?t|doesn't|is\s*n[o']?t|isn't)\s+(?:matter|important)|regardless\s+of\s+(?:the\s+)?order"
+    r"|(?:the\s+)?order\s+is\s+(?:unimportant|irrelevant)"
     r"|(?:the\s+)?order\s+is\s+(?:up\s+to\s+you|your\s+(?:choice|call)|free|flexible|open)"
     r"|(?:in\s+)?(?:any|whatever|whichever)\s+order\s+you\s+(?:like|want|choose|prefer|wish)"
     r"|you\s+(?:can|may)\s+(?:choose|pick|decide)\s+the\s+order"
@@ -1040,7 +1045,11 @@ FREE_CHOICE_RE = re.compile(
     r"|[,;(\u2013\u2014-]?\s*\b(?:exactly\s+)?where\s+(?:exactly\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\b"
     r"|[,;(\u2013\u2014-]?\s*\bwhich\s+(?:cubes?|blocks?|ones?)\s+(?:do\s*n[o']?t|don't|do\s+not|does\s*n[o']?t|doesn't|does\s+not)"
     r"\s+matter\b"
-    r"|[,;(\u2013\u2014-]?\s*\b(?:it\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\s+which\s+(?:cubes?|blocks?|ones?)\b")
+    r"|[,;(\u2013\u2014-]?\s*\b(?:it\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\s+which\s+(?:cubes?|blocks?|ones?)\b"
+    # "a tower of three, pink bottom, rest whatever", "the rest can be any colour": only with a count said elsewhere
+    r"|[,;(\u2013\u2014-]?\s*\b(?:and\s+)?(?:the\s+)?rest(?:\s+of\s+(?:them|the\s+(?:cubes|blocks)))?\s+(?:whatever|anything"
+    r"|(?:can|may|could)\s+be\s+(?:any(?:thing|\s+colou?rs?)?|whatever)|(?:do\s*n[o']?t|don't|do\s+not)\s+matter"
+    r"|(?:is|are)\s+(?:free|up\s+to\s+you|your\s+choice))\b")
 """Words that leave free what the goal does not judge anyway ("All other cubes may be anywhere.",
 "nothing else matters", "colours don't matter", ", any colours", "doesn't matter exactly
 where"): a goal never judges a cube it does not name, a colour nobody said or a spot inside a
@@ -1157,7 +1166,7 @@ MARKUP_RES: tuple[tuple[re.Pattern, str], ...] = (
                 r"|understand|understands)\b[^.]*"), ""),
     # a chat's announcement of the task ("ok new eval task: ...", "new task -"): the task follows
     (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|so|alright|hey)\s*[,.!]?\s+)?(?:(?:a|the|one|another)\s+)?(?:new\s+(?:eval(?:uation)?\s+)?|eval(?:uation)?\s+)"
-                r"(?:task|eval)\s*[:,\-]?\s*(?=\S)"), ""),
+                r"(?:task|eval)\s*(?:->|=>|\u2192|[:,\-])?\s*(?=\S)"), ""),
     # a chat's emoji shortcodes (":pray:", ":white_check_mark:", ":red_circle:"): pictures, no words of the task
     (re.compile(r"(?:\s*(?<![\w:]):[a-z0-9_+\-]{2,40}:(?![\w:]))+"), " "),  # a run of them is one blank (runs of blanks had
     # made later patterns quadratic: 50 s for a text of 270 shortcodes)
@@ -1181,6 +1190,11 @@ CHAT_TURN_RES: tuple[tuple[re.Pattern, str], ...] = (
 (:data:`LABEL_RE`)."""
 
 TASK_FRAME_RES: tuple[re.Pattern, ...] = (
+    # a student's assignment of a task ("Design a task where the robot must ...", "Design a task with two goals - ...",
+    # "Design a task: ..."): the task it describes
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:please\s+)?(?:design|create|write|define|devise|set\s+up|make)\s+(?:a|an|one)\s+(?:new\s+|simple\s+)?"
+               r"(?:task|eval(?:uation)?|episode|scenario|benchmark\s+task)\s*(?:with\s+(?:two|2|three|3|several)\s+(?:goals|parts)\s*)?"
+               r"(?:where\s+|in\s+which\s+|:\s*|;\s*|-+\s*|\u2014\s*|\u2013\s*)"),
     # a crowd worker's caption of the finished scene ("You should see three gray cubes ...", "The image shows a wall:
     # ...", "In the final picture you will see ..."): the scene described is the goal
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:(?:in\s+the\s+(?:final|last|end|finished|goal)\s+(?:image|picture|photo|frame|scene|snapshot)"
@@ -1260,7 +1274,9 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
     # a labelled heading ("Task T3 (Year 2 milestone):", "Episode goal (from the dataset card):", "Proposal (#212):"):
     # what it heads is the task
     re.compile(r"^\s*(?:(?:new|proposed)\s+)?(?:proposal|task|episode(?:\s+goal)?|goal|acceptance\s+criteri(?:a|on)|requirement|"
-               r"spec(?:ification)?|ticket|item|entry|milestone|deliverable)\b[^:()\n]{0,30}(?:\([^)\n]{0,60}\))?\s*:\s*"),
+               r"spec(?:ification)?|ticket|item|entry|milestone|deliverable)\b"
+               r"(?:(?!\b(?:towers?|stacks?|rows?|lines?|walls?|pyramids?|grids?|circles?|piles?|columns?)\b)[^:()\n]){0,30}"
+               r"(?:\([^)\n]{0,60}\))?\s*:\s*"),  # (a structure word before the colon is the task's: "Task 5 - wall: ...")
     # "new eval task "letters in order", cubes ...": the task's name, then the task
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:a\s+)?(?:new\s+)?(?:eval(?:uation)?\s+|benchmark\s+)?task\s+(?:called\s+|named\s+)?"
                r"(?:\"[^\"\n]{1,40}\"|'[^'\n]{1,40}'|\u201c[^\u201d\n]{1,40}\u201d)\s*[,:]\s*"),
@@ -1338,6 +1354,11 @@ def arrow_direction(m: re.Match) -> str:
     ends name no direction ("t->t")."""
     return ARROW_DIRECTIONS.get((m.group(1)[0].lower(), m.group(2)[0].lower()), m.group(0))
 
+
+MEASURE_WORD_RE = re.compile(rf"(?i)\b(\d+|{'|'.join(w for w in ('two', 'three', 'four', 'five', 'six', 'seven', 'eight', 'nine', 'ten'))})"
+                             rf"\s+(?:piece|pieces|pcs?|units?|nos?\.?)\s+(?:of\s+)?(?:(?P<c>{COLOR_RE})\s+)?(?P<n>cubes?|blocks?)\b")
+"""A count with a measure word (a literal translation of Chinese "3 ge" or a parts list's "pcs": "3 piece green cube",
+"4 pcs of red blocks"): that many cubes, read as "3 green cubes" (the count had reached one cube)."""
 
 GLUED_COUNT_RE = re.compile(r"(?i)\b(stacks?|towers?|piles?|rows?|lines?|walls?|grids?|pyramids?|circles?)((?:-[a-z]+)*)-(\d+)\b")
 """A structure's identifier with a count glued on ("stack-any-4", "pile-5"): the words and the count
@@ -1444,6 +1465,21 @@ LABEL_RE = re.compile(r"(?:^|(?<=[.!?;|]\s))\s*(?P<label>[a-z@][a-z'\-@, ]{0,140
 :func:`rpg.schema.reading.normalize_words` when none of its words (at most
 :data:`LABEL_MAX_WORDS`) is a word of the task (:data:`TASK_CONTENT_RE`) or says what the domain
 cannot ("Never: ..." stays, and is refused)."""
+
+DASH_LABEL_WORDS = frozenset("todo todos note notes ticket doc memo reminder fyi task item trial test eval evaluation scenario "
+                             "case exercise level stage demo homework hw assignment lesson spec config variant episode new".split())
+"""The first word of a note's heading before a dash or an arrow ("new task -> ...", "todo - wall 2x3: ...", "note for
+Tues demo - put ...", "ticket 88 - ..."): the words that make it a heading (:data:`DASH_LABEL_RE`; a short word of an
+identifier, "no", "set", "part", had dropped words of the task with it)."""
+
+DASH_LABEL_RE = re.compile(r"^\s*(?P<label>[a-z@][a-z'@#\d ]{0,60}?)\s*(?:->|=>|\u2192|\s-+\s|\s\u2014\s|\s\u2013\s)\s*(?=\S)")
+"""A heading before a dash or an arrow at the start of a text ("new task -> red cube in the middle", "todo - wall 2x3:
+..."): dropped by :func:`rpg.schema.reading.normalize_words` when it names nothing of the task and its first word is a
+heading's (:data:`DASH_LABEL_WORDS`)."""
+
+CAPS_JARGON = frozenset("todo fyi hw wip nb tbd ps".split())
+"""Words of a note written in capitals ("TODO eval set: ...", "Robotics HW - goal: ...") that say nothing of a task: no
+unread capitals (:func:`rpg.schema.accounting.unaccounted`)."""
 
 ID_LABEL_RE = re.compile(
     r"^\s*(?P<label>(?:\[[A-Za-z]{1,12}\]\s*)?(?:[\w'\"().\-]+,?\s+){0,7}?(?:[\w'\"().\-]*\d[\w'\"().\-]*|[A-Za-z]+(?:[-_][A-Za-z0-9]+)+"
@@ -1799,12 +1835,13 @@ with them and no change read, the edit is no whole new task (it is refused)."""
 EDIT_CHANGE_VERB_RE = re.compile(r"\b(?:change|replace|swap|substitute|remove|delete|flip|reverse|invert|undo|revert|paint|recolou?r)\b")
 """Verbs that change a task and state no task: an edit with one and no change read is refused."""
 
-EDIT_SWAP_BOTH_RE = re.compile(r"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|actually|and|then|just|hmm|nah)\s*,?\s+)*(?:swap|switch|exchange"
-                               r"|interchange|trade)\s+(?:them|the\s+two(?:\s+(?:cubes|blocks))?|both(?:\s+of\s+(?:them|their\s+(?:places"
-                               r"|sides|positions|spots)))?|their\s+(?:places|sides|positions|spots)|places|sides|positions)"
+EDIT_SWAP_BOTH_RE = re.compile(r"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|actually|and|then|just|hmm|nah)\s*,?\s+)*"
+                               r"(?:(?:the\s+two(?:\s+(?:cubes|blocks))?|they|both(?:\s+(?:cubes|blocks))?)\s+(?:should\s+|must\s+|need\s+to\s+)?)?"
+                               r"(?:swap|switch|exchange|interchange|trade)\s+(?:them|the\s+two(?:\s+(?:cubes|blocks))?|both(?:\s+of\s+(?:them|their\s+(?:places"
+                               r"|sides|positions|spots|patches)))?|(?:their|the)\s+(?:places|sides|positions|spots|patches)|places|sides|positions|patches)"
                                r"(?:\s+(?:around|over|please))*\s*[.!]?\s*$")
 """An edit that swaps the task's two cubes without naming them ("switch them", "please interchange both
-of their sides")."""
+of their sides", "swap the patches", "the two cubes should trade patches")."""
 
 EDIT_OF_THE_TASK_RE = re.compile(r"(?i)\b(?:instead|like\s+(?:that|this|it|before)|the\s+same|as\s+(?:before|it\s+is))\b")
 """Words that make an edit stated as a whole task about the task's own cubes ("tower in the back instead",
@@ -1946,6 +1983,18 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(r"(?i)^\s*(?:lgtm|looks\s+good|looks\s+great|nice)(?:\s+otherwise)?\s*[,.!]?\s*(?:but\s+)?"), ""),
     (re.compile(r"(?i)^\s*(?:correction|suggestion|nit|fix|update|edit|change)\s*:\s*"), ""),
     (re.compile(r"(?i)\b(put|place|add|stack)\s+also\b"), r"also \1"),  # "put also one red cube under ...": the order of other tongues
+    # terse and non-native edits: "more one black on top" (one more), "yellow go to end please" (moved to an end),
+    # "now FUN" (the word spelled), "put it in corner, front right" (that corner), "the row should be in the back of the
+    # table" (the structure moved there)
+    (re.compile(r"(?i)\bmore\s+(one|\d+)\b(?!\s+(?:than|of)\b)"), r"\1 more"),
+    (re.compile(rf"(?i)^\s*(?:the\s+)?({COLOR_RE})(?:\s+(?:one|cube|block))?\s+(?:go|goes|should\s+go|must\s+go|to)\s+(?:to\s+)?(?:the\s+)?"
+                r"(end|last|start|beginning|first)(?:\s+place)?\s*(?:please|pls|plz)?\s*[.!]?\s*$"),
+     lambda m: f"move the {m.group(1)} one to the {'end' if m.group(2).lower() in ('end', 'last') else 'start'}"),
+    (re.compile(rf"^\s*(?:(?:now|then|and\s+now|ok(?:ay)?\s+now)\s*,?\s*)'?(?!(?i:{COLOR_RE})\b)([A-Z]{{2,}})'?\s*[.!]?\s*$"),
+     r"make it spell \1"),
+    (re.compile(r"(?i)\b(in|to|into)\s+(?:the\s+)?corner\s*,\s*(front|back)[\s-]+(left|right)\b"), r"\1 the \2 \3 corner"),
+    (re.compile(r"(?i)\bthe\s+(tower|stack|row|line|pyramid|wall|grid|circle|pile)\s+(?:should|must|needs\s+to|has\s+to)\s+"
+                r"(?:be|go|stand|sit)\s+(?:in|at|on)\s+(?=the\s+(?:front|back|left|right|middle|cent))"), r"move the \1 to "),
     # "... on the blue patch together with the red one": the patch it shares, said twice
     (re.compile(rf"(?i)(\bpatch)\s*,?\s+(?:together\s+with|alongside|along\s+with)\s+the\s+(?:{COLOR_RE})\s+(?:one|cube|block)\b"), r"\1"),
     # "hope you're having a good day! ... I was wondering, would it be at all possible to make ...": the request
@@ -2150,6 +2199,17 @@ SAME_CUBES_RE = re.compile(r"\b(?:the\s+)?(?:same|these|those|the)\s+(?:\d+\s+)?
 
 SAME_PATCH_RE = re.compile(r"(?i)\b(?:(?:the|that|this)\s+)?same\s+(?:goal\s+)?(?:patch|pad|mat|area|spot)\b|\b(?:that|this)\s+(?:goal\s+)?patch\b")
 """An edit's "the same patch": the task's one patch."""
+
+VARIANT_LABEL_RE = re.compile(r"(?i)^\s*(?:v|version|level|lvl|variant|step|stage|round)\s*#?(?P<n>\d+)(?:\s+of\s+this)?\s*"
+                              r"(?::|->|\u2192|=>|-|\u2014|\))\s*")
+"""A curriculum's label of the variant an edit makes ("v2: add a green cube", "level 3 -> descending now"): when its
+number names no version the family has yet, it names the one being made, not one to build on
+(:func:`rpg.steer.steering.steer` drops it)."""
+
+ADDED_CUBE_RE = re.compile(r"(?i)\bthe\s+(?:new\s+)?(?:cube|block|one)\s+(?:that\s+|which\s+)?(?:you|we|i)\s+(?:just\s+)?added"
+                           r"(?:\s+(?:last|just\s+now|in\s+the\s+last\s+(?:step|edit|version)))?(?P<before>\s+before\s+that)?\b")
+"""An edit's "the cube you added": the one cube the current version has that the version it was made from lacks
+(:func:`rpg.steer.steering.steer`); "the cube you added before that" is refused."""
 
 EDIT_INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("reference", r"\b(?:one|block|cube|colou?r)s?\s+(?:that\s+|which\s+)?(?:we|you|i)\s+(?:used|had|moved|placed|picked|took)"

@@ -750,6 +750,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     original = lexicon.EMOJI_RE.sub(" ", original).strip()
     original = lexicon.HYPHENED_DIRECTION_RE.sub(r"\1 to \2", original)
     original = lexicon.ARROW_DIRECTION_RE.sub(lexicon.arrow_direction, original)  # "l->r", "bottom -> top"
+    original = lexicon.MEASURE_WORD_RE.sub(lambda m: f"{m.group(1)} {(m.group('c') or '') + ' ' if m.group('c') else ''}"
+                                           f"{'cubes' if m.group('n').lower().startswith('c') else 'blocks'}", original)
     original = lexicon.GLUED_COUNT_RE.sub(lambda m: f"{m.group(1)}{m.group(2).replace('-', ' ')} {m.group(3)}", original)
     if lexicon.LETTER_SIGNATURE_RE.search(original):  # "Hi Sam, ... Thanks, Priya": a signed message
         original = lexicon.LETTER_GREETING_RE.sub("", lexicon.LETTER_SIGNATURE_RE.sub("", original)).strip() or original
@@ -821,12 +823,13 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     effectors = [(m.group("what"), "the effector or robot that does it") for m in lexicon.EFFECTOR_RE.finditer(text)]
     text = lexicon.EFFECTOR_RE.sub(" ", text).strip()
     text = lexicon.rewrite(lexicon.OUTCOME_VERB_REWRITES, text)
+    text = lexicon.NOT_IMPORTANT_RE.sub(r"\1 unimportant", text)  # "the colours are not important": no negation
     text = lexicon.FREE_PAIR_RE.sub("colours do not matter, in any order", text)
     text = lexicon.ANY_ORDER_RE.sub(" in any order", text)  # before "doesn't" is refused as a negation
     text = lexicon.HARMLESS_NEGATION_RE.sub("", text)
     for m in lexicon.FREE_CHOICE_RE.finditer(text):  # "put the red cube left of the blue cube. colours don't matter"
         rest = text[:m.start()] + text[m.end():]
-        others = re.search(rf"\b(?:other|remaining)\s+(?:\d+|{lexicon.COUNT_WORD_RE})\b", m.group(0))
+        others = re.search(rf"\b(?:other|remaining)\s+(?:\d+|{lexicon.COUNT_WORD_RE})\b|\brest\b", m.group(0))
         if others and not re.search(rf"\b(?:\d+|{lexicon.COUNT_WORD_RE})\b", rest):
             # "a tower: red bottom, blue top, other two don't matter": the count lives only in those words (two cubes had
             # been built, the other two dropped with them)
@@ -848,6 +851,11 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         text = pattern.sub("", text).strip()
     text = lexicon.SMALL_TALK_RE.sub(" ", text)
     text = lexicon.HEADER_RE.sub("", text)
+    dash = lexicon.DASH_LABEL_RE.match(text)
+    if dash and re.findall(r"[a-z]+", dash.group("label"))[:1] and re.findall(r"[a-z]+", dash.group("label"))[0] in lexicon.DASH_LABEL_WORDS \
+            and not lexicon.TASK_CONTENT_RE.search(re.sub(r"\d+", "", dash.group("label"))) and not _inexpressible(dash.group("label")):
+        effectors.append((dash.group("label").strip(), "a heading before its dash"))  # "new task -> ...", "todo - ..."
+        text = text[dash.end():]
     labels = [m for m in lexicon.LABEL_RE.finditer(text)
               if len(re.findall(r"[a-z]+", m.group("label"))) <= lexicon.LABEL_MAX_WORDS
               and not lexicon.TASK_CONTENT_RE.search(re.sub(r"(?<=[a-z])\s+#?\d+\s*$|\b(?:just\s+|only\s+)?one\s+(?:task|relation|goal|"

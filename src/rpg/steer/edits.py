@@ -42,6 +42,7 @@ from rpg.schema.lexicon import (
     EDIT_REFERS_RE,
     EDIT_REWRITES,
     EDIT_SHOULD_BE_RE,
+    EDIT_SWAP_BOTH_RE,
     EDIT_VAGUE_RE,
     IGNORABLE,
     IGNORABLE_MORE,
@@ -250,12 +251,14 @@ def find_reference(t: str) -> RefCue:
     if m:
         return RefCue("version", version=int(m.group(1)), phrase=m.group(0))
     m = re.search(r"\b(?:the original|first version|base (?:task|version)|very first|initial version)\b"
+                  r"|\b(?:like|as in|as|back to|compared? (?:with|to)|go back to|revert to|return to)\s+the\s+first\s+(?:one|task|variant|try)\b"
                   r"|\b(?:back|revert|return|restart|from|like|as)\b(?:\s+\w+){0,5}?\s+(?:the beginning|the start)\b", t)
     # ("add a brown one at the start" is an end of the line, no version: "back to how it was at the start" is)
     if m:
         return RefCue("original", phrase=m.group(0))
-    redo = re.fullmatch(r"\W*(?:(?:nvm|never\s*mind|ok(?:ay)?|actually|no|hmm+|wait)\W+)*redo(?:\s+(?:that|it|the\s+last\s+"
-                        r"(?:change|edit|step)|the\s+change))?(?:\s+(?:please|pls))?\W*", t)
+    redo = re.fullmatch(r"\W*(?:(?:nvm|never\s*mind|ok(?:ay)?|actually|no|hmm+|wait)\W+)*(?:redo(?:\s+(?:that|it|the\s+last\s+"
+                        r"(?:change|edit|step)|the\s+change))?|(?:revert|undo)\s+(?:the|that|my)\s+(?:revert|undo))"
+                        r"(?:\s+(?:please|pls))?\W*", t)
     if redo:  # "nvm, redo": the change the last undo took back
         return RefCue("redo", phrase=redo.group(0).strip())
     this = re.search(r"\bth(?:is|e current|e latest)\s+(?:[a-z]+\s+)?version\b|\bcurrent\b", t)
@@ -789,6 +792,8 @@ def interpret(edit: str) -> EditPlan:
     if any(o.op == "add" and o.params.get("between") for o in first_ops):
         # "put a yellow cube between the red cube and the green cube" of a row: into it (it had become the whole task)
         return EditPlan(edit, cue, first_ops)
+    if EDIT_SWAP_BOTH_RE.match(edit):  # "the two cubes should trade patches": the task's two cubes exchanged
+        return EditPlan(edit, cue, [])
     if looks_standalone(t) and names_cubes(t):
         from rpg.schema.builtin import ParseError, parse
 

@@ -29,12 +29,14 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from rpg.artifact import ArtifactError, load_artifact
 from rpg.compiler import CompileResult, build
+from rpg.domain.palette import PALETTE
 from rpg.domain.predicates import PREDICATES, describe_region
 from rpg.errors import BadInput
 from rpg.schema.builtin import parse
 from rpg.schema.edits import recolor
 from rpg.schema.feasibility import check_feasibility
 from rpg.schema.lexicon import (
+    ADDED_CUBE_RE,
     COLOR_RE,
     EDIT_ADDITIVE_RE,
     EDIT_CONTINUES_RE,
@@ -46,6 +48,7 @@ from rpg.schema.lexicon import (
     PAIRWISE_RELATIONS,
     SAME_CUBES_RE,
     SAME_PATCH_RE,
+    VARIANT_LABEL_RE,
 )
 from rpg.schema.model import TaskSchema
 from rpg.schema.reading import canon_color
@@ -315,6 +318,11 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     if ref_spec is None and any(o.op == "structure" for o in plan.ops) and all(
             o.op in ("structure", "count", "dims", "recolor", "keep") for o in plan.ops):
         # "put them in a tower instead": the task's cubes, in no order, as the structure named
+        unread = [c for c in unread_colors(plan) if not any(o.op == "recolor" for o in plan.ops)]
+        if unread:  # "put the whole thing into a tower, pink in the middle": the role had been dropped
+            raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": {', '.join(repr(c) for c in unread)} has no place "
+                             "in the change read (the task's cubes as the structure named, in no order); say the order "
+                             "(e.g. \"from bottom to top: red, green, blue\"), or use --model")
         walk = list(ref_schema.goal_predicate().walk())
         structured = {n for q in walk if q.name in ("stack", "unordered_stack", "anchored_stack", "in_line") for n in q.object_names()}
         if structured and any(q.name == "on_patch" and q.a not in structured for q in walk):
@@ -715,6 +723,11 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
         raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\" to {where}: it refers to the task but names no "
                          "change the builtin steering reads (add, remove, recolour, resize, reorder, move it, another "
                          "structure); say what to change, e.g. \"make the top block red\", or use --model")
+    instead = re.search(r"(?i)\binstead\b(?!\s+of\b)", plan.text)
+    if instead:  # "put the pink one on the red patch instead": its old place goes, which an addition would keep
+        raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\" to {where}: 'instead' replaces what the task "
+                         "says of that cube, and the builtin steering reads it only as one more placement; say the whole "
+                         "new task in the edit, or use --model")
     text = f"{ref_schema.instruction.strip().rstrip('.!')}, then {clause}"
     try:
         schema = parse(text)
@@ -729,7 +742,8 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
     said_as_new = (r"\b(?:an?|another|one more|\d+|two|three|four)\s+(?:new\s+|more\s+|extra\s+|second\s+|2nd\s+|third\s+|3rd\s+)?"
                    if not opened else r"\b")  # after "and", "also", "then", "too": "the green cube", "C" are the new ones
     invented = [d for d in Counter(descriptor(a) for a in schema.assets) - had  # a new cube is one said with "a", "another", a count
-                if not (no_patch and d.startswith("patch:"))
+                if not ((no_patch or re.search(rf"(?i)\b{re.escape(d.split(':')[-1])}\s+(?:goal\s+|target\s+)?(?:patch|pad|mat)\b", clause))
+                        and d.startswith("patch:"))  # a patch named by its colour: the edit names it
                 and not re.search(rf"{said_as_new}{re.escape(d.split(':')[-1])}\b", clause, re.IGNORECASE)]
     if invented:
         raise SteerError(f"cannot add \"{clause}\" to {where}: together they read as {schema.goal_summary!r}, with "
@@ -765,6 +779,34 @@ def _refuse_no_change(plan: EditPlan, fam: Family, reference: int | None, schema
     if meaning(schema) == meaning(ref) and schema.goal_summary == ref.goal_summary:
         raise SteerError(f"the edit \"{plan.text.strip()[:80]}\" changes nothing v{reference}'s goal judges ({ref.goal_summary}); "
                          "say what should be different, or use --model")
+
+
+def _added_cube_named(edit: str, hist: FamilyHistory, fam: Family) -> str:
+    """``edit`` with "the cube you added" written as that cube ("the black cube"): the one cube the head version has
+    that its parent lacks.
+
+    Raises:
+        SteerError: the head is the base, added no cube or several, or the edit says "the cube you added before that".
+    """
+    from rpg.schema.meaning import descriptor
+
+    m = ADDED_CUBE_RE.search(edit)
+    if m is None:
+        return edit
+    head = hist.get(hist.head)
+    if m.group("before"):
+        raise SteerError(f"'{m.group(0)}' names a cube of an edit before the last, which the builtin steering does not trace "
+                         "back; name the cube by its colour")
+    if head.parent is None:
+        raise SteerError(f"'{m.group(0)}': v{hist.head} is the base task, to which no cube was added; name the cube by its colour")
+    new = Counter(descriptor(a) for a in fam.schema(hist.head).assets if a.kind != "goal_patch") - Counter(
+        descriptor(a) for a in fam.schema(head.parent).assets if a.kind != "goal_patch")
+    if sum(new.values()) != 1:
+        raise SteerError(f"'{m.group(0)}': v{hist.head} added {sum(new.values()) or 'no'} cubes to v{head.parent}; "
+                         "name the cube by its colour")
+    said = next(iter(new))
+    cube = f"the {said} cube" if said in PALETTE else f"the {said} block"
+    return edit[:m.start()] + cube + edit[m.end():]
 
 
 class RouteAnswer(BaseModel):
@@ -877,6 +919,10 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
         hist = fam.load()
         fam.remove_orphans(hist)
         extra, backend = None, "builtin"
+        said, label = edit, VARIANT_LABEL_RE.match(edit)  # the edit as said is what the version records
+        if label and int(label.group("n")) >= len(hist.versions) and edit[label.end():].strip():
+            edit = edit[label.end():]  # "v2: add a green cube" of a family of v0 only: the label of the variant made
+        edit = _added_cube_named(edit, hist, fam)
         if llm is None:
             plan = interpret(edit)
             reference, notes = resolve_reference(plan, hist, fam)
@@ -898,7 +944,7 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
             extra = {"llm_log.jsonl": llm.log_text(edit, "steer")}
         if seed is None:
             seed = int(load_artifact(fam.version_dir(hist.head))[1].get("provenance", {}).get("seed", 0))
-        result = SteerResult(path, edit, intent, reference, None, False, instruction=instruction, notes=notes,
+        result = SteerResult(path, said, intent, reference, None, False, instruction=instruction, notes=notes,
                              parameters=parameters)
         digest = task_hash(schema)
         same = next((v for v in hist.versions if (v.task_hash or v.code_hash) == digest), None)
@@ -916,7 +962,7 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
             result.notes.append(f"validation failed after repair; the attempt is in {compiled.path}")
             return result
         parent = hist.get(reference if reference is not None else hist.head)
-        snap = snapshot_of(compiled.path, vid, edit, parent, reference, intent, parameters, PRESERVATION[intent])
+        snap = snapshot_of(compiled.path, vid, said, parent, reference, intent, parameters, PRESERVATION[intent])
         hist.versions.append(snap)
         hist.head = vid
         fam.save(hist)

@@ -307,6 +307,8 @@ def recognize_wall(f: Features, b: Builder) -> bool:
     rows = re.search(r"\b(\d+)\s+(?:rows|layers|levels)\s+of\s+(\d+)\b", f.text)  # "two rows of four"
     if rows and not dims:
         dims = re.search(r"(\d+)x(\d+)", f"{rows.group(2)}x{rows.group(1)}")
+    if dims and not (wide or high or rows) and int(dims.group(1)) == 2 != int(dims.group(2)) and _only_two_rows_said(f):
+        dims = re.search(r"(\d+)x(\d+)", f"{dims.group(2)}x{dims.group(1)}")  # "a 2x3 wall: bottom row orange, top row yellow"
     width = int(wide.group(1)) if wide else (int(dims.group(1)) if dims else None)
     height = int(high.group(1)) if high else (int(dims.group(2)) if dims else None)
     count = re.search(r"\b(\d+)\s+(?:[a-z]+\s+)?(?:blocks|cubes)\b(?!\s+(?:wide|long|across|high|tall))", f.text)
@@ -328,6 +330,14 @@ def recognize_wall(f: Features, b: Builder) -> bool:
         raise ParseError(f"a wall {width} wide and {height} high has {width * height} cubes, not {total}")
     _lattice(f, b, 1, width, height, f"a wall {width} cubes wide and {height} high ({width * height} cubes)")
     return True
+
+
+def _only_two_rows_said(f: Features) -> bool:
+    """Whether a wall's text gives a bottom row and a top row and no row between them ("bottom row orange, top row
+    yellow"): a size "2x3" is then two rows of three (read as two wide and three high, a middle row nobody named had
+    been made up)."""
+    said = set(re.findall(r"\b(bottom|lower|top|upper|middle|second|third|centre|center)\s+(?:row|layer|level|tier|course)\b", f.text))
+    return bool(said & {"bottom", "lower"}) and bool(said & {"top", "upper"}) and not said - {"bottom", "lower", "top", "upper"}
 
 
 def listed_layers(f: Features) -> list[list[str]] | None:
