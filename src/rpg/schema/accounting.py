@@ -484,7 +484,8 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
             record.append({"mention": m.words, "kind": "superlative", "consumed_by": "the count named"})
         elif m.kind == "towers":
             have = _count_towers(goal)
-            if have < m.count:
+            if have < m.count or (have > m.count and not re.search(r"\b(?:another|more|also|third|fourth|extra)\b", text)):
+                # ("build two towers. Tower A: ... Tower B: ...": two more had been made up of cubes nobody named)
                 raise UnaccountedMention(f"it names {m.count} towers but the task read has {have}")
             record.append({"mention": m.words, "kind": "towers", "consumed_by": f"{have} stacks"})
         elif m.kind == "direction":

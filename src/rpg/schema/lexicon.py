@@ -128,7 +128,8 @@ SYNONYMS: dict[str, str] = {
     "rearranged": "arranged", "reorder": "arrange", "reorganize": "arrange", "reorganise": "arrange",
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
     "uppermost": "topmost", "lowermost": "bottommost", "upon": "on", "right-hand": "right", "left-hand": "left",
-    "stays": "is", "remains": "is", "bot": "robot", "midpoint": "center", "tower's": "tower", "within": "in", "inside": "in", "quadrant": "corner", **TYPOS, **ABBREVIATIONS,
+    "stays": "is", "remains": "is", "bot": "robot", "midpoint": "center", "tower's": "tower", "within": "in", "inside": "in", "quadrant": "corner",
+    "summit": "top", "apex": "top", **TYPOS, **ABBREVIATIONS,
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
@@ -147,7 +148,7 @@ DIGIT_WORDS = ("zero", *sorted((w for w, v in NUMBER_WORDS.items() if 1 <= v <= 
 """The digits' names, each at its digit's index ("zero" at 0 ... "nine" at 9)."""
 DIGIT_WORD_RE = re.compile(rf"(?i)\b(?:{'|'.join(DIGIT_WORDS)})\b")
 DIGIT_WORDS_RE = re.compile(rf"(?i)(?P<noun>\b(?:numbers?|digits?|numerals?)(?:\s+(?:cubes?|blocks?))?\s+)"
-                            rf"(?P<list>(?:{'|'.join(DIGIT_WORDS)})(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+|\s*&\s*|\s+(?:through|thru|to)\s+)"
+                            rf"(?P<list>(?:{'|'.join(DIGIT_WORDS)})(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+|\s*&\s*|\s+(?:through|thru|to)\s+|\s+)"
                             rf"(?:{'|'.join(DIGIT_WORDS)}))*)\b")
 """Digit cubes named by number words ("stack number four on number two", "the digits one, two and
 three"): written as digits before the labels are read (they had been read as two coloured cubes,
@@ -885,6 +886,12 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "from the left to the right": a direction said with articles, as "from left to right" says it
     (re.compile(r"\bfrom\s+the\s+(left|right|front|back|bottom|top)\s+to\s+the\s+(left|right|front|back|bottom|top)\b"
                 r"(?!\s+(?:of|side|edge|corner|end)\b)"), r"from \1 to \2"),
+    # "running from the front of the table towards the back", "from the left edge to the right edge": the same direction
+    (re.compile(r"\bfrom\s+the\s+(left|right|front|back)(?:\s+(?:side|edge|end))?\s+of\s+the\s+table\s+(?:to|towards?)\s+the\s+"
+                r"(left|right|front|back)(?:\s+(?:side|edge|end))?\b(?!\s+of\b)"
+                r"|\bfrom\s+the\s+(left|right|front|back)\s+(?:side|edge|end)\s+(?:to|towards?)\s+the\s+(left|right|front|back)"
+                r"(?:\s+(?:side|edge|end))?\b(?!\s+of\b)"),
+     lambda m: f"from {m.group(1) or m.group(3)} to {m.group(2) or m.group(4)}"),
     # "a circle around the center of the table": the structure at the centre, around it
     (re.compile(r"\b(?:circle|ring)\s+around\s+(?=the\s+(?:center|centre|middle)\s+of\s+the\s+(?:table|workspace)\b)"), "circle in "),
     # "along the left side": a side of the table the structure runs along
@@ -972,7 +979,8 @@ REGION_WORDS = {"rear": "back", "far": "back", "near": "front", "middle": "cente
 FREE_PAIR_RE = re.compile(r"\b(?:the\s+)?colou?rs?\s+(?:and|or|,)\s+(?:the\s+)?order\s+(?:do\s*n[o']?t|don't|do\s+not|are\s+"
                           r"(?:unimportant|irrelevant|free))(?:\s+matter)?\b"
                           r"|\b(?:the\s+)?order\s+(?:and|or|,)\s+(?:the\s+)?colou?rs?\s+(?:do\s*n[o']?t|don't|do\s+not|are\s+"
-                          r"(?:unimportant|irrelevant|free))(?:\s+matter)?\b")
+                          r"(?:unimportant|irrelevant|free))(?:\s+matter)?\b"
+                          r"|\b(?:the\s+)?colou?rs?\s+(?:and|,)\s+(?:the\s+)?order\s*:\s*(?:your\s+choice|any|free|up\s+to\s+you|whatever)\b")
 """Colours and order left free in one phrase ("colours and order do not matter"): said as the two
 phrases :data:`FREE_CHOICE_RE` and :data:`ANY_ORDER_RE` read ("colours do not matter, in any order")."""
 
@@ -981,7 +989,8 @@ NOT_IMPORTANT_RE = re.compile(r"\b(is|are)\s+(?:not\s+(?:important|relevant)|of\
 :data:`FREE_CHOICE_RE` read (the "not" had been refused as a negation)."""
 
 ANY_ORDER_RE = re.compile(
-    r"(?:\s*[,;(\u2013\u2014-]\s*|\s+)(?:(?:in\s+)?(?:any|whatever|no\s+particular|either)\s+order(?:\s+(?:is|are)\s+(?:fine|ok(?:ay)?|good|allowed))?"
+    r"(?:\s*[,;(\u2013\u2014-]\s*|\s+)(?:(?:in\s+)?(?:any|whatever|no\s+particular|either)\s+order(?:\s+(?:(?:is|are)\s+(?:fine|ok(?:ay)?|good|allowed)"
+    r"|works|goes|will\s+do))?"
     r"|(?:the\s+)?order\s+(?:does\s*n[o']?t|doesn't|is\s*n[o']?t|isn't)\s+(?:matter|important)|regardless\s+of\s+(?:the\s+)?order"
     r"|(?:the\s+)?order\s+is\s+(?:unimportant|irrelevant)"
     r"|(?:the\s+)?order\s+is\s+(?:up\s+to\s+you|your\s+(?:choice|call)|free|flexible|open)"
@@ -1035,10 +1044,12 @@ FREE_CHOICE_RE = re.compile(
     r"|[,;(\u2013\u2014-]?\s*\bnothing\s+else\s+(?:matters|is\s+important|counts)\b"
     r"|[,;(\u2013\u2014-]?\s*\b(?:the\s+)?colou?rs?\s+(?:do\s*n[o']?t|don't|do\s+not|does\s*n[o']?t|doesn't|does\s+not)\s+matter\b"
     r"|[,;(\u2013\u2014-]?\s*\b(?:the\s+)?colou?rs?\s+(?:are\s+)?(?:unimportant|irrelevant)\b"
-    r"|[,;(\u2013\u2014-]\s*(?:in\s+)?any\s+colou?rs?(?=\s*[.!;)]|\s*$)"
+    r"|(?:[,;(\u2013\u2014-]|(?<=[.!])\s)\s*(?:in\s+)?any\s+colou?rs?(?=\s*[.!;)]|\s*$)"
+    r"|[,;.(\u2013\u2014-]?\s*\b(?:the\s+)?colou?rs?\s*:\s*(?:your\s+choice|any|free|whatever|up\s+to\s+you)\b"
     r"|[,;(\u2013\u2014-]?\s*\b(?:the\s+)?colou?rs?\s+(?:are\s+)?(?:free|open|up\s+to\s+you|your\s+choice)(?=\s*[.!;)]|\s*$)"
-    r"|[,;(\u2013\u2014-]?\s*\b(?:the\s+)?(?:other|remaining)\s+(?:\d+|two|three|four|one)(?:\s+(?:cubes|blocks|ones))?\s+(?:can|may|could)\s+be"
+    r"|[,;(\u2013\u2014-]?\s*\b(?:the\s+)?(?:other|remaining|middle)\s+(?:\d+|two|three|four|one)(?:\s+(?:cubes|blocks|ones))?\s+(?:can|may|could)\s+be"
     r"\s+any(?:thing|\s+colou?rs?)?\b"
+    r"|[,;.(\u2013\u2014-]?\s*\b(?:the\s+)?others?\s*:\s*(?:any(?:thing|\s+colou?rs?)?|whatever|free|your\s+choice)\b"
     r"|[,;(\u2013\u2014-]?\s*\b(?:the\s+)?(?:other|remaining)\s+(?:\d+|two|three|four|one)(?:\s+(?:cubes|blocks|ones))?\s+"
     r"(?:do\s*n[o']?t|don't|do\s+not|does\s*n[o']?t|doesn't|does\s+not)\s+matter\b"
     r"|[,;(\u2013\u2014-]?\s*\b(?:it\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\s+(?:exactly\s+|precisely\s+)?where\b"
@@ -1055,7 +1066,7 @@ FREE_CHOICE_RE = re.compile(
 where"): a goal never judges a cube it does not name, a colour nobody said or a spot inside a
 place said, so the words are dropped before negations and conditions are refused
 (:func:`rpg.schema.reading.normalize`).  "Any colours" only after a comma and last in its
-sentence, where it cannot pick cubes ("put any colours on the patch" stays unread)."""
+sentence (or a sentence of its own), where it cannot pick cubes ("put any colours on the patch" stays unread)."""
 
 POLITE_CONDITION_RE = re.compile(
     r"\b(?:i|we)(?:'d|\s+would)\s+(?:love|like|appreciate)\s+it\s+if\s+you\s+(?:could|would|can)\s+"
@@ -1114,7 +1125,8 @@ ADDRESS_RE = re.compile(r"(?:,\s*|^)(?:(?:okay|ok|now|right)\s+)?(?:sweetie|swee
 
 HEADER_RE = re.compile(r"^\s*(?:(?:first|second|third|fourth|fifth|sixth|seventh|eighth|ninth|tenth|final|next|review|bonus)\s+)?"
                        r"(?:(?:side|main|daily|bonus)\s+)?(?:lesson|quest|stage|boss\s+stage|level|round|exercise|challenge|mission"
-                       r"|chapter|puzzle(?:\s+room)?|drill|practice)(?:\s+\d+)?(?:\s*,\s*[^:,.;]{1,40}?)?\s*[:\-\u2013\u2014]\s*")
+                       r"|chapter|puzzle(?:\s+room)?|drill|practice)(?:\s+#?\d+)?(?:\s+(?:objective|goal|task))?(?:\s*,\s*[^:,.;]{1,40}?)?"
+                       r"\s*[:\-\u2013\u2014]\s*")
 """A lesson's, quest's or stage's heading before the task ("Lesson 3: ...", "Side quest, The Lost
 Letter: ...", "First lesson, stacking: ..."): the task follows, the heading is dropped."""
 
@@ -1238,6 +1250,11 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
                r"(?:if|when|once|as\s+soon\s+as)\s+"),
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:episode\s+)?success(?:\s+(?:condition|criterion))?\s*(?:(?:is\s+(?:achieved\s+|reached\s+)?)?"
                r"(?:when|if|once)\s+|:=\s*|=\s*)"),
+    # a config comment's "done when ...", "reward = 1 iff ...", "returns True if ...": the goal follows
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:(?:it's|it\s+is|we're|we\s+are|task\s+is|episode\s+is)\s+)?(?:done|finished|complete|solved)"
+               r"\s+(?:when|if|once|iff)\s+"
+               r"|(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:reward|score|r)\s*(?:=|is|==)\s*(?:1(?:\.0)?|one|\+1)\s+(?:iff|if|when|once)\s+"
+               r"|(?:^|(?<=[.!?;:]\s))(?:(?:it|the\s+check|the\s+predicate|is_success(?:\(\))?)\s+)?returns?\s+true\s+(?:iff|if|when)\s+"),
     # "Success is judged on the final configuration only.": every goal is
     re.compile(r"(?:^|(?<=[.!?;:]\s))success\s+is\s+(?:judged|checked|measured|evaluated|determined|assessed)\s+(?:on|by|at|from)\s+"
                r"(?:the\s+)?(?:final|end|last)\s+(?:configuration|state|scene|frame|arrangement)(?:\s+only)?\s*[.!]?\s*"),
@@ -1360,6 +1377,11 @@ MEASURE_WORD_RE = re.compile(rf"(?i)\b(\d+|{'|'.join(w for w in ('two', 'three',
 """A count with a measure word (a literal translation of Chinese "3 ge" or a parts list's "pcs": "3 piece green cube",
 "4 pcs of red blocks"): that many cubes, read as "3 green cubes" (the count had reached one cube)."""
 
+STRUCTURE_NAME_RE = re.compile(r"\b((?:[Tt]ower|[Ss]tack|[Rr]ow|[Pp]ile|[Ll]ine|[Cc]olumn|[Ww]all|[Ss]cenario|[Ss]etup)s?)\s+"
+                               r"(?:[A-H]|[1-9])\b(?!['\-])(?=\s*(?::|=|\(|\s-\s|\s+is\b|\s+has\b|\s+should\b))")
+"""A structure or scenario named by a letter or a digit ("Tower A: yellow, brown", "tower B is pink on gray", "scenario C:"):
+the name dropped (the letter had been read as a letter cube, the digit as a count)."""
+
 GLUED_COUNT_RE = re.compile(r"(?i)\b(stacks?|towers?|piles?|rows?|lines?|walls?|grids?|pyramids?|circles?)((?:-[a-z]+)*)-(\d+)\b")
 """A structure's identifier with a count glued on ("stack-any-4", "pile-5"): the words and the count
 written apart, so the count is read, or refused, as a count (a stack of two had been made up)."""
@@ -1407,6 +1429,9 @@ the purple cube"): a comma is put before it, so :data:`SELF_CORRECTION_RE` reads
 an article or a place word: "no blue cubes" stays a negation)."""
 
 GRADING_FRAME_RES: tuple[re.Pattern, ...] = (
+    # a puzzle card's trailers that ask nothing of the goal ("Bonus: none.", "Time: unlimited.", "Difficulty: easy.")
+    re.compile(r"(?i)(?:^|(?<=[.!?;]\s))(?:bonus|extra|hint|par|time(?:\s+limit)?|difficulty|level\s+of\s+difficulty)\s*:\s*"
+               r"(?:none|n/?a|nothing|unlimited|no\s+limit|easy|medium|hard|normal)\s*[.!]?\s*(?=$|\S)"),
     re.compile(r"(?i)(?:^|(?<=[.!?;:]\s))q\s*\d+\s*(?:\([^)]{0,20}\))?\s*[.:)]\s*"),  # "Q3.", "Q5 (bonus)."
     re.compile(r"(?i)\s*\(\s*\d+\s+(?:points?|pts?|marks?)\s*\)"),  # "(4 points)"
     re.compile(r"(?i)(?:^|(?<=[.!?;:]\s))(?:(?:full\s+(?:marks|credit)|pass(?:es)?|correct)\s+(?:if|when|where)"
@@ -2444,6 +2469,17 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 )
 """Transcripts' and notes' loose phrasings (colours said once per cube, "the corner - the front right one", "box-shaped", "spell out the name", "a long way from")."""
 
+COLOUR_PLURAL_RE = re.compile(rf"\b(?:the\s+)?({'|'.join(c for c in PALETTE if c != 'orange')}|grey)s\b(?!')"
+                              r"(?=\s+(?:at|on|go|goes|should|must|are|first|last|together|next|behind|to\s+the|in\s+(?:a|the)\b(?!\s+other)))")
+"""A colour said as a plural noun before where it goes ("reds at the bottom", "the blues in a row"): "the red ones"
+("oranges" stays a fruit; "reds in one, yellows in the other" stays unread: which tower is which had been lost)."""
+
+ONE_IN_EACH_RE = re.compile(rf"\b(?:2|two)\s+(?P<s>towers|stacks|rows|lines|piles)\s+of\s+(?P<n>\d+|{COUNT_WORD_RE})\s*[-:,;]?\s*"
+                            rf"(?:the\s+)?(?P<a>{COLOR_RE})(?:s|\s+(?:ones|cubes|blocks))\s+in\s+one\s*,?\s*(?:and\s+)?(?:the\s+)?"
+                            rf"(?P<b>{COLOR_RE})(?:s|\s+(?:ones|cubes|blocks))\s+in\s+the\s+other\b")
+"""Two structures of one colour each ("two towers of 2 - reds in one, yellows in the other"): read as "a tower of 2 red
+cubes and a tower of 2 yellow cubes" (each tower had mixed the two colours)."""
+
 UP_DOWN_ROLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "I want wall: down row gray gray gray, up row black black black": a layer said by "down" and "up"
     (re.compile(r"\b(?:down|lower)\s+(?=(?:row|layer|level|tier|course)\b)"),
@@ -2645,6 +2681,12 @@ SPELLING_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 )
 """Last spellings ("grey", "3-block")."""
 
+DIRECTION_SAID_RE = re.compile(r"\b(?:left\s+to\s+right|right\s+to\s+left|front\s+to\s+back|back\s+to\s+front|bottom\s+to\s+top"
+                               r"|top\s+to\s+bottom)\b|\bfrom\s+the\s+(?:left|right|front|back|bottom|top)\b(?:\s+\w+){0,4}?\s+to\s+the\s+"
+                               r"(?:left|right|front|back|bottom|top)\b")
+"""A direction a list runs in ("left to right", "from the front of the table to the back"): where one is said, "first"
+and "last" name the list's ends."""
+
 _ROW_ROLE_BE = r"(?:\s+(?:one|cube|block))?\s*(?:[:=]|\s(?:is|should\s+be|must\s+be)\s)?\s*"
 ROW_ROLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "row-3: leftmost=cyan, middle=pink, rightmost=brown", "the left one is red, the middle blue and the right one green":
@@ -2655,10 +2697,12 @@ ROW_ROLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      f"from {m.group('a')} to {m.group('b')}: {m.group('c1')}, {m.group('c2')}, {m.group('c3')}"),
     # "row of 3 going left to right: red first, green middle, blue last": the list in its said order (where a direction is
     # said: with none, "first" and "last" name no end, and the words are left to be refused)
-    (re.compile(rf"\b(?P<c1>{COLOR_RE})\s+first\s*[,;]\s*(?:then\s+)?(?P<c2>{COLOR_RE})\s+(?:in\s+the\s+)?(?:middle|second|next)\s*[,;]?\s*"
-                rf"(?:and\s+)?(?:then\s+)?(?P<c3>{COLOR_RE})\s+last\b"),
-     lambda m: f"{m.group('c1')}, {m.group('c2')}, {m.group('c3')}" if re.search(
-         r"\b(?:left\s+to\s+right|right\s+to\s+left|front\s+to\s+back|back\s+to\s+front)\b", m.string) else m.group(0)),
+    # ("green first, then white, then black last": any number between)
+    (re.compile(rf"\b(?P<c1>{COLOR_RE})\s+first\b(?P<mid>(?:\s*[,;]?\s*(?:and\s+)?(?:then\s+)?(?:{COLOR_RE})"
+                r"(?:\s+(?:in\s+the\s+)?(?:middle|second|next|third))?(?=\s*[,;]|\s+(?:and|then)\b))*)"
+                rf"\s*[,;]?\s*(?:and\s+)?(?:then\s+)?(?P<cn>{COLOR_RE})\s+last\b"),
+     lambda m: ", ".join([m.group("c1"), *re.findall(rf"\b(?:{COLOR_RE})\b", m.group("mid")), m.group("cn")])
+     if DIRECTION_SAID_RE.search(m.string) else m.group(0)),
 )
 """A row said role by role, its ends by side or by first and last: the order listed."""
 

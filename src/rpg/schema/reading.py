@@ -750,6 +750,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     original = lexicon.EMOJI_RE.sub(" ", original).strip()
     original = lexicon.HYPHENED_DIRECTION_RE.sub(r"\1 to \2", original)
     original = lexicon.ARROW_DIRECTION_RE.sub(lexicon.arrow_direction, original)  # "l->r", "bottom -> top"
+    original = lexicon.STRUCTURE_NAME_RE.sub(r"\1", original)  # "Tower A: ...", "tower B is pink on gray"
     original = lexicon.MEASURE_WORD_RE.sub(lambda m: f"{m.group(1)} {(m.group('c') or '') + ' ' if m.group('c') else ''}"
                                            f"{'cubes' if m.group('n').lower().startswith('c') else 'blocks'}", original)
     original = lexicon.GLUED_COUNT_RE.sub(lambda m: f"{m.group(1)}{m.group(2).replace('-', ' ')} {m.group(3)}", original)
@@ -829,7 +830,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.HARMLESS_NEGATION_RE.sub("", text)
     for m in lexicon.FREE_CHOICE_RE.finditer(text):  # "put the red cube left of the blue cube. colours don't matter"
         rest = text[:m.start()] + text[m.end():]
-        others = re.search(rf"\b(?:other|remaining)\s+(?:\d+|{lexicon.COUNT_WORD_RE})\b|\brest\b", m.group(0))
+        others = re.search(rf"\b(?:other|remaining|middle)\s+(?:\d+|{lexicon.COUNT_WORD_RE})\b|\brest\b|\bothers\s*:", m.group(0))
         if others and not re.search(rf"\b(?:\d+|{lexicon.COUNT_WORD_RE})\b", rest):
             # "a tower: red bottom, blue top, other two don't matter": the count lives only in those words (two cubes had
             # been built, the other two dropped with them)
@@ -900,6 +901,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.BLK_RE.sub(lambda m: "black" if m.group("black") is not None else m.group("arrowed") + "black"
                               if m.group("arrowed") is not None else "block" + m.group("block"), text)
     text = _SYNONYM_RE.sub(lambda m: lexicon.SYNONYMS[m.group(0)], text)
+    text = lexicon.ONE_IN_EACH_RE.sub(lambda m: f"a {m.group('s')[:-1]} of {m.group('n')} {m.group('a')} cubes and a "
+                                      f"{m.group('s')[:-1]} of {m.group('n')} {m.group('b')} cubes", text)  # "reds in one, ..."
+    text = lexicon.COLOUR_PLURAL_RE.sub(r"the \1 ones", text)  # "reds at the bottom"
     text = lexicon.TEXTURED_RE.sub(lambda m: f"the {m.group('c')} block" if m.group("c") in COLORS else m.group(0), text)
     text = lexicon.rewrite(lexicon.NOTATION_REWRITES, text)
     if re.search(r"\b(?:walls?|towers?|stacks?)\b", text):  # "yellow down, cyan up", "down row gray gray gray"
@@ -951,6 +955,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.rewrite(lexicon.TOP_LIST_REWRITES, text)
     if re.search(r"\b(?:rows?|lines?|line\s+up)\b", text):
         text = lexicon.rewrite(lexicon.ROW_ROLE_REWRITES, text)
+        # "the first is white, the last is black, and the two in the middle are gray": read before "last" is refused
+        text = _ROLE_CLAUSES_RE.sub(lambda m: _role_clauses(m) if re.search(r"\b(?:first|last)\b", m.group(0)) else m.group(0), text)
     text = lexicon.END_ROLE_WORD_RE.sub(lambda m: f" with the {m.group('c')} cube "
                                         + ("at the bottom" if m.group("w") in ("lowest", "bottommost") else "on top"), text)
     inner = lexicon.INNER_POSITION_RE.search(text)
@@ -1197,7 +1203,8 @@ def _roles_first(m: re.Match) -> str:
 
 
 _END_WORDS = {"bottom": "bottom", "lowest": "bottom", "lower": "bottom", "bottommost": "bottom", "top": "top", "highest": "top",
-              "upper": "top", "topmost": "top", "left": "left", "leftmost": "left", "right": "right", "rightmost": "right"}
+              "upper": "top", "topmost": "top", "left": "left", "leftmost": "left", "right": "right", "rightmost": "right",
+              "first": "first", "last": "last"}
 _ROLE_BE = r"(?:(?:is|are|being|should\s+be|must\s+be|has\s+to\s+be|will\s+be)\s+)?"
 """The verb of a role clause, or none ("the leftmost cube should be black, the rightmost brown")."""
 _ROLE_NOUN = r"(?:\s+(?:one|ones|1|blocks?|cubes?|layers?|levels?|floors?|tiers?))?"
@@ -1208,7 +1215,7 @@ def _role_clause(named: bool) -> str:
     """One role clause: an end ("the bottom one is blue", "top layer yellow"), the middle ("the middle one yellow",
     "middle two layer both white", "the 2 in between are green"); with ``named`` groups end, n and c."""
     g = (lambda name: f"?P<{name}>") if named else (lambda name: "?:")
-    return (rf"(?:the\s+)?(?:({g('end')}{'|'.join(_END_WORDS)}){_ROLE_NOUN}|({g('n')}\d+)\s+(?:in\s+between|in\s+the\s+middle"
+    return (rf"(?:the\s+)?(?:({g('end')}{'|'.join(_END_WORDS)}){_ROLE_NOUN}|({g('n')}\d+|{lexicon.COUNT_WORD_RE})\s+(?:in\s+between|in\s+the\s+middle"
             rf"|between\s+them)|middle(?:\s+({g('mn')}\d+){_ROLE_NOUN}(?:\s+(?:both|all|\d+))?|{_ROLE_NOUN})|({g('nm')}\d+)\s+middle"
             rf"{_ROLE_NOUN})\s+{_ROLE_BE}({g('c')}{COLOR_RE})\b")
 
@@ -1230,10 +1237,13 @@ def _role_clauses(m: re.Match) -> str:
                 return m.group(0)
             ends[_END_WORDS[r.group("end")]] = r.group("c")
         else:  # "the middle one yellow": one cube between the ends; "the 2 in between", "middle two": that many
-            middle += [r.group("c")] * int(r.group("n") or r.group("mn") or r.group("nm") or 1)
-    axis = next((pair for pair in (("bottom", "top"), ("left", "right")) if set(ends) == set(pair)), None)
+            n = r.group("n") or r.group("mn") or r.group("nm") or "1"
+            middle += [r.group("c")] * int(lexicon.NUMBER_WORDS.get(n, n))
+    axis = next((pair for pair in (("bottom", "top"), ("left", "right"), ("first", "last")) if set(ends) == set(pair)), None)
     if axis is None or not middle:
         return m.group(0)
+    if axis == ("first", "last"):  # "the first is white, the last is black": in the direction said, where one is
+        return ": " + ", ".join([ends["first"], *middle, ends["last"]]) if lexicon.DIRECTION_SAID_RE.search(m.string) else m.group(0)
     return f": from {axis[0]} to {axis[1]}: " + ", ".join([ends[axis[0]], *middle, ends[axis[1]]])
 
 
