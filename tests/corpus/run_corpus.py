@@ -62,7 +62,8 @@ STRANGER_SETS = {
     "stranger25": ("stranger25.yaml", "STRANGER set 25 (stranger25.yaml, development material)"),
     "stranger26": ("stranger26.yaml", "STRANGER set 26 (stranger26.yaml, development material, first run at the end of the eighteenth session)"),
     "stranger27": ("stranger27.yaml", "STRANGER set 27 (stranger27.yaml, development material)"),
-    "stranger28": ("stranger28.yaml", "STRANGER set 28 (stranger28.yaml, development material, first run at the end of the nineteenth session)"),
+    "stranger28": ("stranger28.yaml", "STRANGER set 28 (stranger28.yaml, development material, first run at the twentieth session's start)"),
+    "stranger29": ("stranger29.yaml", "STRANGER set 29 (stranger29.yaml, transfer measure of the twentieth session: aggregates only until its end)"),
 }
 SPLITS = HERE / "splits.yaml"
 
