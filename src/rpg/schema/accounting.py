@@ -294,6 +294,10 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
             out.append(Mention(m.group(0), "place word", region=m.group("w")))
     for m in SUPERLATIVE_RE.finditer(text):
         out.append(Mention(m.group(0), "superlative"))
+    for m in lexicon.HEIGHT_SAID_RE.finditer(text):  # "a tower of gray cubes, 3 high": a height no rewrite read
+        out.append(Mention(m.group(0), "height", count=int(m.group("n"))))
+    for m in lexicon.COUNT_TIMES_RE.finditer(text):  # "circle x5", "blue x3": a count as a multiplier
+        out.append(Mention(m.group(0), "times", count=int(m.group("n") or m.group("n2"))))
     each = EACH_CORNER_RE.search(text)
     if each:
         out.append(Mention(each.group(0), "place", count=int(each.group(1) or 4), region="corners"))
@@ -399,6 +403,36 @@ def _structure_sizes(schema: TaskSchema, kind: str) -> list[int]:
                   if (m := re.fullmatch(rf"{kind}(?:\[[a-z_]+\])?\(([^;()]*)\)(?:@\w+)?", a)))
 
 
+def _heights(schema: TaskSchema) -> list[int]:
+    """How high each structure of the goal stands, in cubes: a tower's cubes (any :class:`P.Stack`), a
+    pyramid's base (a pyramid with a base of n is n layers high), a layered grid's (a wall's) layers."""
+    out = set()
+    for p in schema.goal_predicate().walk():
+        if isinstance(p, P.Stack):
+            out.add(len(p.objects))
+        elif isinstance(p, P.Pyramid):
+            out.add(p.base)
+        elif isinstance(p, P.Grid) and p.layers > 1:
+            out.add(p.layers)
+    return sorted(out)
+
+
+def _group_sizes(schema: TaskSchema) -> set[int]:
+    """Every count a multiplier may name: all cubes, the cubes of each colour, each structure's cubes and layers."""
+    from rpg.schema.meaning import meaning
+
+    cubes = [a for a in schema.assets if a.kind != "goal_patch"]
+    out = {len(cubes), *Counter(a.color for a in cubes).values()}
+    for a in meaning(schema):
+        m = re.fullmatch(r"[a-z_]+(?:\[[a-z_]+\])?\(([^;()]*)\)(?:@[\w:]+)?", a)
+        if m:
+            parts = m.group(1).split("|")
+            out.add(len(re.split(r"[,|]", m.group(1))))
+            out.update(len(p.split(",")) for p in parts)
+            out.update(Counter(re.split(r"[,|]", m.group(1))).values())
+    return out
+
+
 def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
     """Check every count, patch, place and relation mention of ``text`` against ``schema``.
 
@@ -477,6 +511,17 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                 raise UnaccountedMention(f"'{m.words}' puts each cube on the patch of its own colour but the task read "
                                          f"{'has ' + ', '.join(wrong) if wrong else 'puts no cube on a patch'}")
             record.append({"mention": m.words, "kind": "matching", "consumed_by": ", ".join(f"{n} on {p}" for n, p in on)})
+        elif m.kind == "height":
+            heights = _heights(schema)
+            if m.count not in heights:
+                raise UnaccountedMention(f"'{m.words}' asks for a structure {m.count} cubes high but the task read has "
+                                         f"{' and '.join(map(str, heights)) or 'none'}{' high' if heights else ''}")
+            record.append({"mention": m.words, "kind": "count", "consumed_by": f"a structure {m.count} high"})
+        elif m.kind == "times":
+            sizes = _group_sizes(schema)
+            if m.count not in sizes:
+                raise UnaccountedMention(f"'{m.words}' counts {m.count} cubes and the task read has no group of {m.count}")
+            record.append({"mention": m.words, "kind": "count", "consumed_by": f"{m.count} cubes"})
         elif m.kind == "superlative":
             if not any(n.kind == "count" for n in named):
                 raise UnaccountedMention(f"'{m.words}' asks for as many cubes as there are (a quantity left to the "

@@ -740,6 +740,16 @@ words (:mod:`rpg.schema.structures`)."""
 
 HEIGHT_WORDS = r"(?:(?:blocks?|cubes?|stor(?:y|ey|ies|eys)|levels?|tiers?|layers?)(?:\s+(?:high|tall))?|high|tall)"
 
+HEIGHT_SAID_RE = re.compile(r"(?<![\w.])(?P<n>\d+)(?:\s+|-)(?:(?:blocks?|cubes?|bricks?|stor(?:y|ey|ies|eys)|levels?|tiers?|layers?"
+                            r"|floors?)(?:\s+|-))?(?:high|tall)\b")
+"""A height said in cubes ("3 high", "4 cubes tall", "2-storey") that no rewrite turned into a structure's count:
+some tower of the goal must have that many cubes, or a layered structure that many layers (mention accounting,
+:mod:`rpg.schema.accounting`; "a tower of gray cubes, 3 high" had been a tower of two)."""
+
+COUNT_TIMES_RE = re.compile(r"(?<![\w.])[x\u00d7]\s?(?P<n>\d+)\b(?!\s*[x\u00d7*]\s*\d)|(?<![\w.])(?P<n2>\d+)\s?[x\u00d7](?=\s+[a-z])")
+"""A count written as a multiplier ("circle x5", "5x circle", "blue x3"): the task must have that many cubes of
+something (mention accounting; "circle x5" had been a circle of six). Not a grid size ("2x3")."""
+
 
 OBJECT_PREPOSITION_BEFORE = re.compile(r"\b(?:on|onto|atop|upon|over|above|under|below|beneath|underneath|of|to|behind|beside|near|from"
                               r"|between|by|at|in|into)\s+$")
@@ -2372,6 +2382,12 @@ NOTATION_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      r"\1 "),
     (re.compile(rf"\b({COLOR_RE})((?:\s+(?:blocks?|cubes?))?)\s*[x\u00d7]\s*(\d+)\b"),
      r"\3 \1\2"),
+    # "circle x5", "5x circle", "tower x 3": a structure's count written as a multiplier (it had been dropped: a
+    # circle of six)
+    (re.compile(r"\b(circle|ring|row|line|tower|stack|column|pile)s?\s*[,:]?\s*[x\u00d7]\s*(\d+)\b(?!\s*[x\u00d7])"),
+     r"\1 of \2"),
+    (re.compile(r"(?<![\w.])(\d+)\s*[x\u00d7]\s+(circle|ring|row|line|tower|stack|column|pile)\b"),
+     r"a \2 of \1"),
     # "3 white in a row": three cubes, not a count and a cube
     (re.compile(rf"\b(\d+)\s+({COLOR_RE})(?=\s+(?:in|into)\s+(?:a|an|one)\s+(?:row|line|column|circle|ring|tower|stack|pile)\b)"),
      r"\1 \2 cubes"),

@@ -1289,8 +1289,10 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
                 rf"\s+(?:are\s+|being\s+)?(?:both\s+|2\s+)?({COLOR_RE})\s*,?\s+(?:and\s+)?(?:with\s+)?(?:the\s+)?(?:middle|center|centre)"
                 rf"(?:\s+(?:one|1|cube|block))?\s+(?:is\s+|being\s+)?({COLOR_RE})\b"),
      r": from bottom to top: \1, \2, \1", True),
-    # "make tower of 3 cubes, white is bottom": a colour given an end with "is"
+    # "make tower of 3 cubes, white is bottom": a colour given an end with "is"; "tower: red/white/orange, red bottom":
+    # a terse end at the clause's close (it had been read as a fourth cube, a second red)
     (re.compile(rf"(?<=[,:;]\s)({COLOR_RE})\s+is\s+(bottom|top|base)\b(?!\s+of\b)"), r"\1 at the \2", True),
+    (re.compile(rf"(?<=[,:;]\s)({COLOR_RE})\s+(bottom|top|base)(?=\s*(?:[.,;!)]|$))"), r"\1 at the \2", True),
     # "a tower of four: two green at the bottom and two pink on top": the counted colours from the bottom
     (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|bricks|ones))?\s+(?:at|on|in)\s+the\s+(?:bottom|base)"
                 rf"\s*,?\s+(?:and\s+)?(?:then\s+)?(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|bricks|ones))?\s+(?:on\s+top(?:\s+of\s+them)?"
@@ -1346,6 +1348,12 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     # "a tower of height 4", "a tower with a height of 3 cubes": a tower of that many cubes
     (re.compile(rf"\b({TOWER_NOUNS})\s+(?:of|with)\s+(?:a\s+)?height\s+(?:of\s+)?(\d+)(?:\s+(?:blocks?|cubes?|levels?|layers?))?\b"),
      r"\1 of \2 blocks"),
+    # "a tower of gray cubes, 3 high", "stack red cubes 4 tall": the height after the colour is the tower's count (it had
+    # been dropped: a tower of two)
+    (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)\s*,?\s+(\d+)\s+(?:(?:blocks?|cubes?|levels?|"
+                r"stor(?:ies|eys)|tiers?|layers?)\s+)?(?:high|tall)\b"), r"\1 of \3 \2 blocks"),
+    (re.compile(rf"\b(stack|pile)\s+(?:the\s+)?({COLOR_RE})\s+(?:blocks|cubes|bricks)\s*,?\s+(\d+)\s+(?:(?:blocks?|cubes?|levels?)\s+)?"
+                r"(?:high|tall)\b"), r"\1 \3 \2 blocks"),
     # "a tower 3 blocks high"
     (re.compile(rf"\b({TOWER_NOUNS})\s*,?\s+(\d+)\s+(?:(?:blocks?|cubes?|levels?|stor(?:ies|eys)|tiers?|layers?)\s+)?(?:high|tall)\b"),
      r"\1 of \2 blocks"),
