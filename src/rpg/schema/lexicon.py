@@ -994,6 +994,39 @@ FREE_PAIR_RE = re.compile(r"\b(?:the\s+)?colou?rs?\s+(?:and|or|,)\s+(?:the\s+)?o
 """Colours and order left free in one phrase ("colours and order do not matter"): said as the two
 phrases :data:`FREE_CHOICE_RE` and :data:`ANY_ORDER_RE` read ("colours do not matter, in any order")."""
 
+FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
+    # colours left free in other words ("Colours of the cubes are not specified.", "colours are not constrained",
+    # "colours of your choosing", "The colours are entirely up to you"): said as the phrase FREE_CHOICE_RE reads, whose
+    # check refuses them beside cubes named by colour
+    (re.compile(r"\b(?:the\s+)?colou?rs?(?:\s+of\s+the\s+(?:cubes|blocks))?\s+(?:are\s+|is\s+|were\s+)?(?:not|un)\s*(?:specified|constrained"
+                r"|fixed|given|stated|prescribed)\b"), "colours do not matter"),
+    (re.compile(r"\b(?:the\s+)?colou?rs?\s+(?:of\s+your\s+(?:choosing|choice)|(?:are\s+|is\s+)?(?:entirely\s+|completely\s+|totally\s+)?"
+                r"up\s+to\s+you)\b"), "colours do not matter"),
+    (re.compile(r"\s*[,;]?\s*\b(?:what|all\s+that)\s+matters\s+is\s+the\s+shape\b|\s*[,;]?\s*\bonly\s+the\s+shape\s+matters\b"), ""),
+    # the order left free in other words ("The exact order around the circle is not important", "which goes where is
+    # your call")
+    (re.compile(r"\s*[,;.]?\s*\b(?:the\s+)?exact\s+order(?:\s+(?:around|along|in)\s+the\s+(?:circle|ring|row|line|tower|stack))?\s+"
+                r"(?:is\s+not\s+important|is\s+unimportant|does\s+not\s+matter|doesn't\s+matter)\b"), " in any order"),
+    (re.compile(r"\s*[,;\u2013\u2014-]\s*which\s+(?:one\s+)?goes\s+where\s+(?:is\s+(?:your|the\s+robot's)\s+(?:call|choice)|is\s+up\s+to\s+you"
+                r"|does\s+not\s+matter|doesn't\s+matter)\b"), " in any order"),
+    # an arrangement the goal does not judge anyway ("How they are arranged inside that front half does not matter.",
+    # "The order of the towers along the table is not something I care about."): dropped
+    (re.compile(r"(?:^|(?<=[.;!]\s))how\s+(?:they|the\s+cubes|the\s+blocks)\s+(?:are\s+)?(?:arranged|placed|laid\s+out)\s+"
+                r"(?:(?:inside|within|in)\s+[a-z\s]{1,40}?\s+)?(?:does\s+not|doesn't)\s+matter\s*[.!]?"), ""),
+    (re.compile(r"(?:^|(?<=[.;!]\s))the\s+order\s+of\s+the\s+(?:towers|stacks|piles|rows|groups)(?:\s+(?:along|on|across)\s+the\s+table)?\s+"
+                r"(?:is\s+not\s+something\s+(?:i|we)\s+care\s+about|does\s+not\s+matter|doesn't\s+matter|is\s+not\s+important)\s*[.!]?"), ""),
+    # a note that the task has no patch, or that nothing else need move ("there are no patches involved", "Nothing else
+    # on the table needs to move."): nothing the goal judges
+    (re.compile(r"\s*[,;.]?\s*\bthere\s+(?:are|is)\s+no\s+(?:goal\s+)?patch(?:es)?\s+(?:involved|needed|used|in\s+(?:it|this\s+task))\b"), ""),
+    (re.compile(r"(?:^|(?<=[.;!]\s))nothing\s+else(?:\s+on\s+the\s+table)?\s+(?:needs|has|is)\s+to\s+(?:move|change|be\s+moved)\s*[.!]?"), ""),
+    (re.compile(r"\s*[,.;]\s*(?:and\s+)?nothing\s+else\s*[.!]?\s*$"), ""),
+    # the task said to be complete, mid-text ("That is the whole task; there are ...", "thats it.", "(b) thats it")
+    (re.compile(r"\s*[,.;:]?\s*(?:\([a-z]\)\s*)?\b(?:that\s+is|thats|that's)\s+(?:it|the\s+whole\s+task|all)\s*(?=[.;!,]|$)"), ""),
+)
+"""What leaves free what the goal does not judge, in other words than :data:`FREE_CHOICE_RE` and
+:data:`ANY_ORDER_RE` read: rewritten to their phrases or dropped before negations are refused
+(:func:`rpg.schema.reading.normalize_words`; each had been refused as a negation or an unknown word)."""
+
 NOT_IMPORTANT_RE = re.compile(r"\b(is|are)\s+(?:not\s+(?:important|relevant)|of\s+no\s+importance)\b")
 """" ... are not important": said as "unimportant", which :data:`FREE_PAIR_RE`, :data:`ANY_ORDER_RE` and
 :data:`FREE_CHOICE_RE` read (the "not" had been refused as a negation)."""
@@ -1151,6 +1184,58 @@ wait, to the right of"): the correction replaces what it
 corrects (:func:`rpg.schema.reading.apply_corrections`); after a pause only (a correction word
 that opens the text is read as it is)."""
 
+_CONTRAST_OBJECT = r"(?:\s+(?:it|them|each\s+other|one\s+another|(?:the\s+)?[a-z]+\s+(?:cube|block|one)))?"
+CONTRAST_ALTERNATIVES: dict[str, str] = {
+    # a whole goal's kind: "not a row, a stack", "not a sorting task ... a spelling task", "not two towers, one tower"
+    "structure": r"(?:(?:a|an|one|the|two|three|four|2|3|4|single|plain|simple|just)\s+){0,2}(?:rows?|lines?|stacks?|towers?"
+                 r"|pyramids?|walls?|circles?|rings?|grids?|piles?|heaps?|columns?)(?:\s+of\s+(?:the\s+)?(?:cubes|blocks))?"
+                 r"|(?:a|an|the)\s+(?:sorting|spelling|stacking|placement|placing|building|pick-and-place)\s+(?:task|one|exercise|problem)",
+    # one relation: "not left of it, right of it", "not near each other - far apart"
+    "relation": r"(?:(?:to\s+the\s+)?(?:left|right)(?:\s+of)?|in\s+front(?:\s+of)?|behind|on\s+top(?:\s+of)?|under(?:neath)?|below"
+                r"|beneath|above|near|next\s+to|beside|far\s+apart|far\s+(?:away\s+)?from|side\s+by\s+side|touching|adjacent(?:\s+to)?)"
+                + _CONTRAST_OBJECT,
+    # one place: "not the back left corner, the front right corner", "not the blue patch, ... the white patch"
+    "place": r"(?:(?:in|at|on|to|into|onto)\s+)?(?:the\s+)?(?:(?:far|very)\s+)?(?:(?:back|front|rear|near)[\s-]+)?(?:(?:left|right)(?:-hand)?[\s-]+)?"
+             r"(?:corner|side|half|edge|end|region)|(?:(?:in|at|on|to|into|onto)\s+)?the\s+(?:middle|cent(?:er|re))(?:\s+of\s+the\s+table)?"
+             r"|(?:(?:in|at|on|to|into|onto)\s+)?(?:the\s+)?[a-z]+\s+(?:patch|pad|mat)",
+    # a direction or sort order: "not descending, ascending", "not left to right but right to left"
+    "order": r"(?:in\s+)?(?:descending|ascending|increasing|decreasing|reverse[d]?|alphabetical)(?:\s+order)?"
+             r"|(?:from\s+)?(?:left\s+to\s+right|right\s+to\s+left|top\s+to\s+bottom|bottom\s+to\s+top|front\s+to\s+back|back\s+to\s+front)",
+    # two cubes one on the other: "red on blue, not blue on red"
+    "pair": rf"(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:on(?:\s+top\s+of)?|under|over|above|below|atop)\s+(?:the\s+)?"
+            rf"(?:{COLOR_RE})(?:\s+(?:cube|block|one))?",
+}
+"""The slots a writer contrasts a denied alternative with the one meant ("Not a row, a stack.", "not descending,
+ascending", "red on blue, not blue on red", "not a circle but a pile", "a letter stack rather than a row"): each kind's
+alternatives as a regular expression over the text (case-insensitive). A denied alternative beside the one meant in the
+same slot excludes nothing the meant one does not already exclude, so it is dropped (:func:`rpg.schema.reading.drop_contrasts`);
+a denial of anything else ("on the patch, not next to the green cube") stays, and is refused as a negation."""
+
+CONTRAST_LEAD = (r"(?i)(?:^|(?<=[.;:!?]\s)|(?<=[.;:!?]\n))(?:(?:it|this|that)\s+is\s+|(?:it|this|that)'s\s+|the\s+(?:goal|task|target|answer|idea)"
+                 r"\s+is\s+)?not\s+(?:just\s+)?(?P<neg>{a})(?:\s*,\s*(?:and\s+)?not\s+(?:{a}))*\s*(?:[,;:.!]|\s[-\u2013\u2014]+)\s*"
+                 r"(?:but\s+|rather\s*,?\s+|instead\s*,?\s+)?(?:(?:it\s+is|it's|this\s+is|the\s+(?:goal|task|target)\s+is|just|only)\s+)?"
+                 r"(?=(?P<pos>{a})\b)")
+"""A denial that opens a sentence, then the alternative meant ("Not a row, a stack.", "not a wall, not a pyramid, just
+a plain tower", "It is not a sorting task. It is a spelling task: ..."); ``{a}`` is a kind's alternatives."""
+CONTRAST_BUT = r"(?i)\bnot\s+(?P<neg>{a})\s*,?\s+but\s+(?:rather\s+|instead\s+)?(?=(?P<pos>{a})\b)"
+"""A denial, then "but" and the alternative meant ("The target is not a line of cubes but a 2x2 grid")."""
+CONTRAST_TRAILING = r"(?i)\b(?P<pos>{a})\s*[,;]?\s*(?:and\s+|but\s+)?(?<!\w)not\s+(?P<neg>{a})(?=\s*(?:[.;!)]|$))"
+"""The alternative meant, then the denial ("red on blue, not blue on red.")."""
+CONTRAST_RATHER = r"(?i)\b(?P<pos>{a})\s+(?:rather\s+than|instead\s+of)\s+(?P<neg>{a})\b"
+"""The alternative meant, then the denial ("a letter stack rather than a row")."""
+CONTRAST_RES: tuple[tuple[str, re.Pattern], ...] = tuple(
+    (kind, re.compile(form.replace("{a}", f"(?:{alternatives})")))
+    for kind, alternatives in CONTRAST_ALTERNATIVES.items()
+    for form in (CONTRAST_LEAD, CONTRAST_BUT, CONTRAST_TRAILING, CONTRAST_RATHER))
+"""Each kind's contrasts in each form, compiled (:func:`rpg.schema.reading.drop_contrasts`)."""
+CONTRAST_SENTENCE_RE = re.compile(
+    r"(?i)(?:^|(?<=[.;:!?]\s))(?P<subj>the\s+(?:goal|task|target|idea|point)|it|this)\s+(?:is\s+not|isn't|is\s*n[o']?t)\s+[^.;:!?]*[.;:!?]\s*"
+    r"(?=(?P=subj)\s+is\b)"
+    r"|(?:^|(?<=[.;:!?]\s))(?P<who>i|we)\s+(?:do\s+not|don't|do\s*n[o']?t)\s+(?:want|need)\s+[^.;:!?]*[.;:!?]\s*"
+    r"(?=(?P=who)\s+(?:want|need|would\s+like)\b)")
+"""A sentence that says what the goal is not, then one with the same subject that says what it is ("The goal isn't to
+stack them. The goal is to put ...", "I don't want a tower here; I want a line ..."): the denial is dropped."""
+
 CORRECTION_WORD_CLASSES: dict[str, frozenset[str]] = {
     "det": frozenset("the a an this that".split()),
     "prep": frozenset("to on onto in into at under below above beside behind between next near left right".split()),
@@ -1212,6 +1297,25 @@ CHAT_TURN_RES: tuple[tuple[re.Pattern, str], ...] = (
 (:data:`LABEL_RE`)."""
 
 TASK_FRAME_RES: tuple[re.Pattern, ...] = (
+    # the writer's picture of the goal ("Think of a pyramid made of six cubes.", "Picture three towers ...", "I am
+    # picturing a tidy table with ...", "What I have in mind is a small tower ...", "For this scene, picture a row ..."):
+    # the scene pictured is the goal
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:for\s+(?:this|the)\s+(?:scene|demonstration|demo|task|episode|test|eval(?:uation)?)\s*,\s*)?"
+               r"(?:(?:just|now|so)\s+)?(?:think\s+of|imagine|picture|visuali[sz]e|envision)\s+"
+               r"(?=(?:a|an|one|two|three|four|five|six|seven|eight|\d+)\s)"),
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:i\s+am|i'm|we\s+are|we're)\s+(?:picturing|imagining|envisioning|thinking\s+of)\s+"),
+    re.compile(r"(?:^|(?<=[.!?;:]\s))what\s+(?:i|we)\s+(?:have\s+in\s+mind|am\s+picturing|are\s+picturing|want|need|would\s+like|are\s+after)"
+               r"\s+(?:here\s+)?is\s+"),
+    # a purpose said first ("For the demonstration, the pink cube has to ..."): nothing of the goal
+    re.compile(r"^for\s+(?:this|the|our|my)\s+(?:scene|demonstration|demo|episode|test|benchmark|eval(?:uation)?|experiment)\s*,\s*"),
+    # sentences that introduce the task and say nothing of it ("Here is the setup I want to evaluate.", "Let me describe
+    # the goal.", "Our lab uses this as a warm-up task.", "The idea is a little sorting exercise.")
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:here\s+is|here's|this\s+is)\s+the\s+(?:setup|set-up|task|scene|goal|layout|configuration)\s+"
+               r"(?:i|we)\s+(?:want|would\s+like|need|plan|intend)\s+to\s+(?:evaluate|test|use|run|try|benchmark|check)\s*[.:]\s*"),
+    re.compile(r"(?:^|(?<=[.!?;:]\s))let\s+me\s+(?:describe|explain|spell\s+out)\s+(?:the\s+|my\s+|our\s+)?(?:goal|task|scene|setup|target)\s*[.:]\s*"),
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:(?:we|i|people)\s+use|(?:our|my|the)\s+lab\s+uses)\s+this\s+(?:one\s+)?as\s+an?\s+(?:[\w-]+\s+){0,2}?"
+               r"(?:task|test|benchmark|exercise|check|demo)\s*[.:]\s*"),
+    re.compile(r"(?:^|(?<=[.!?;:]\s))the\s+idea\s+is\s+an?\s+(?:[\w-]+\s+){0,3}?(?:exercise|task|test|challenge)\s*[.:]\s*"),
     # a student's assignment of a task ("Design a task where the robot must ...", "Design a task with two goals - ...",
     # "Design a task: ..."): the task it describes
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:please\s+)?(?:design|create|write|define|devise|set\s+up|make)\s+(?:a|an|one)\s+(?:new\s+|simple\s+)?"

@@ -663,6 +663,44 @@ def _corrected(before: str, fix: str) -> str | None:
     return None
 
 
+def _same_slot(kind: str, pos: str, neg: str) -> bool:
+    """Whether the denied alternative ``neg`` stands in the slot of the meant one ``pos``, so that ``pos`` already
+    excludes it: for two cubes one on the other, the same two colours; for a relation, the same object (or a pronoun
+    for it, or none); any two structures, places or orders of one kind exclude each other."""
+    if kind == "pair":
+        return sorted(re.findall(rf"(?i)\b(?:{COLOR_RE})\b", pos.lower())) == sorted(re.findall(rf"(?i)\b(?:{COLOR_RE})\b", neg.lower()))
+    if kind == "relation":
+        obj = lambda t: (re.search(r"(?i)\b(?:the\s+)?([a-z]+)\s+(?:cube|block|one)$", t) or [None, None])[1]
+        return obj(neg) is None or obj(pos) is None or obj(neg).lower() == obj(pos).lower()
+    return True
+
+
+def drop_contrasts(text: str) -> str:
+    """``text`` without the alternatives it denies beside the one it means (:data:`lexicon.CONTRAST_ALTERNATIVES`):
+    "Not a row, a stack. Green on the bottom, ..." -> "a stack. Green on the bottom, ...", "not descending, ascending:
+    ..." -> "ascending: ...", "red on blue, not blue on red" -> "red on blue", "The goal isn't to stack them. The goal is
+    to put ..." -> "The goal is to put ...". The meant alternative excludes the denied one, so the goal is the same;
+    a denial of anything else stays (refused as a negation). Applied before orders are read (a denied "descending" had
+    been read as the order)."""
+    text = lexicon.CONTRAST_SENTENCE_RE.sub("", text)
+    for kind, pattern in lexicon.CONTRAST_RES:
+        for m in reversed(list(pattern.finditer(text))):
+            if not _same_slot(kind, m.group("pos"), m.group("neg")):
+                continue
+            start, end = (m.start(), m.start("pos")) if m.start("pos") >= m.end("neg") else (m.end("pos"), m.end())
+            if end == m.start("pos") and kind in ("relation", "place"):  # "Not left of it, right of it: the pink cube goes ..."
+                said = re.match(r"\s*(?:[.:;!]|\s?[-\u2013\u2014]+)\s+(?=\S)", text[m.end("pos"):])
+                rest = text[m.end("pos") + said.end():] if said else ""
+                if said and re.search(rf"(?i)\b(?:{lexicon.CONTRAST_ALTERNATIVES[kind]})\b", rest.split(".")[0]):
+                    end = m.end("pos") + said.end()  # the meant alternative said again in the clause after it: the fragment goes too
+                elif said and kind == "place" and re.search(r"(?i)\bthere\b", rest):  # "..., the front right corner: put it there"
+                    place = m.group("pos") if re.match(r"(?i)(?:in|at|on|to|into|onto)\s", m.group("pos")) else "in " + m.group("pos")
+                    text = text[:m.end("pos") + said.end()] + re.sub(r"(?i)\bthere\b", place, rest, count=1)
+                    end = m.end("pos") + said.end()
+            text = text[:start] + (" " if start and not text[start - 1].isspace() else "") + text[end:]
+    return text.strip()
+
+
 def apply_corrections(text: str) -> str:
     """``text`` with each self-correction applied ("put the green cube on the yellow patch, sorry,
     the pink patch" -> "... on the pink patch"; :data:`lexicon.SELF_CORRECTION_RE`): the words
@@ -777,6 +815,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     if echo and re.search(rf"(?i)\b{echo.group('rel')}\b", original[:echo.start()]):  # "... yeah behind it": said again
         original = original[:echo.start()]
     original = apply_corrections(original)  # "..., sorry, the pink patch": the correction wins
+    original = drop_contrasts(original)  # "Not a row, a stack.": the denied alternative excludes nothing more
     original = verb_final(original)  # "The 4 cube, the 2 cube's top on, stacking please.": the verb said first
     for pattern, full in lexicon.ORDER_RANGE_RES:  # "small to big": a sort by its two ends
         original = pattern.sub(full, original)
@@ -824,6 +863,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     effectors = [(m.group("what"), "the effector or robot that does it") for m in lexicon.EFFECTOR_RE.finditer(text)]
     text = lexicon.EFFECTOR_RE.sub(" ", text).strip()
     text = lexicon.rewrite(lexicon.OUTCOME_VERB_REWRITES, text)
+    for pattern, written in lexicon.FREE_PHRASE_REWRITES:  # "Colours of the cubes are not specified.", "thats it"
+        text = pattern.sub(written, text).strip()
     text = lexicon.NOT_IMPORTANT_RE.sub(r"\1 unimportant", text)  # "the colours are not important": no negation
     text = lexicon.FREE_PAIR_RE.sub("colours do not matter, in any order", text)
     text = lexicon.ANY_ORDER_RE.sub(" in any order", text)  # before "doesn't" is refused as a negation
