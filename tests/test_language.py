@@ -3818,3 +3818,68 @@ def test_the_middle_two_left_free_and_trailers_dropped():
 def test_stranger27_refusals(text, words):
     with pytest.raises(BadInput, match=re.escape(words)):
         parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger28's silent errors: a terse end after a list had been a fourth cube; a height after the colour and a
+    # count as a multiplier had been dropped (a tower of two, a circle of six)
+    ("tower: red/white/orange, red bottom", ["stack(red,white,orange)"]),
+    ("Buld a tower of grey cubes, three high.", ["stack(gray,gray,gray)"]),
+    ("circle x5, all orange", ["circle(orange,orange,orange,orange,orange)"]),
+])
+def test_stranger28_silent_errors_read(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,words", [
+    ("stack red on blue, 3 high", "'3 high' asks for a structure 3 cubes high"),  # a height no reading carries
+    ("put the red cube on the blue cube x3", "3 blue"),
+])
+def test_a_height_or_multiplier_the_task_lacks_is_refused(text, words):
+    with pytest.raises(BadInput, match=re.escape(words)):
+        parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("Not a pyramid, a tower: red at the bottom, then blue, then white on top.", ["stack(red,blue,white)"]),
+    ("not descending, ascending: digit cubes 2, 4, 6 and 8 in a row, lowest on the left",
+     ["line[left_to_right](2,4,6,8)"]),  # the denied order had been read as the order
+    ("Not left of it, right of it: the pink cube goes to the right of the gray cube.", ["right_of(pink,gray)"]),
+    ("Not the back left corner, the front right corner: put the black cube there.", ["in_region(black,front_right)"]),
+    ("I don't want a tower here; I want a line of three cubes, orange, cyan and pink, from left to right.",
+     ["line[left_to_right](orange,cyan,pink)"]),
+    ("The goal isn't to stack them. The goal is to put the yellow cube on the red patch and the blue cube on the green "
+     "patch.", ["on_patch(blue,patch:green)", "on_patch(yellow,patch:red)"]),
+    ("It is not the blue patch, it is the white patch: the cyan cube goes on the white patch.", ["on_patch(cyan,patch:white)"]),
+    ("not two towers, one tower with all four: green, green, yellow, yellow from the bottom up",
+     ["stack(green,green,yellow,yellow)"]),
+])
+def test_a_denied_alternative_beside_the_meant_one_is_dropped(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "Put the red cube on the blue patch, not next to the green cube.",  # a second constraint, denied: not a contrast
+    "Put the red cube left of the blue cube, not behind the green cube.",
+    "The orange cube must not be next to the purple cube.",
+    "Not a tower. Put the red cube next to the blue cube.",  # no alternative of the same kind beside the denial
+])
+def test_a_denial_of_anything_else_stays_refused(text):
+    with pytest.raises(BadInput, match="negation"):
+        parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("Build a pyramid from six cubes, colours of your choosing.", "pyramid(?,?,?,?,?,?)"),
+    ("tower of 5 green cubes, thats the whole task", "stack(green,green,green,green,green)"),
+    ("imo the cleanest task: red cube left of blue cube. nothing else", "left_of(red,blue)"),
+    ("There should be three cubes in the end, all in the front half of the table: a red one, a blue one and a green one. "
+     "How they are arranged inside that front half does not matter.", "in_region(blue,front); in_region(green,front); "
+                                                                      "in_region(red,front)"),
+    ("For the demonstration, the pink cube has to be put on top of the brown cube. After that, the brown-and-pink stack "
+     "should be standing on the yellow patch.", "stack(brown,pink); on_patch(brown,patch:yellow)"),
+    ("I am picturing a tidy table with the cubes sorted into piles by their colour. There are two cyan cubes, two whte "
+     "cubes and two black cubes, and each colour should get its own pile.", "piles(black,black,cyan,cyan,white,white;by=color)"),
+])
+def test_freedom_closings_and_pictures_said_in_other_words(text, expected):
+    assert matches(expected, meaning(parse(text)))
