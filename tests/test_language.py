@@ -3883,3 +3883,23 @@ def test_a_denial_of_anything_else_stays_refused(text):
 ])
 def test_freedom_closings_and_pictures_said_in_other_words(text, expected):
     assert matches(expected, meaning(parse(text)))
+
+
+@pytest.mark.parametrize("text,expected", [
+    # a colour's cube said again with "a": one more cube (the second had been the first, put on two patches, refused)
+    ("A grey cube on the blue patch and a grey cube on the red patch, if you please.",
+     ["on_patch(gray,patch:blue)", "on_patch(gray,patch:red)"]),
+    ("orange @ front right corner", ["in_region(orange,front_right)"]),  # a terse spec's "@"
+    ("put the green block b/w the red and blue ones. thats it", ["between(green;blue,red)"]),
+    ("The end state requires the gray block to be adjacent to the orange block.", ["next_to(gray,orange)"]),
+    ("lowkey just need two piles, 3 red cubes in one and 3 blue in the other",
+     ["piles(blue,blue,blue,red,red,red;by=color)"]),
+])
+def test_stranger28_terse_and_repeated_mentions(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_repeated_cube_said_with_the_stays_one_reading():
+    """"a red cube ... the red cube" is one cube; the "another" reading applies only where no "the" names it."""
+    schema = parse("Put a red cube on the blue patch, then put the green cube on the red cube.")
+    assert sum(a.color == "red" for a in schema.assets) == 1

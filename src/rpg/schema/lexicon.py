@@ -47,6 +47,7 @@ basically essentially literally honestly yo hello ty thx hiya howdy asap today t
 quick quickly haha lol good love exercise cheers tbh imo itself kindly tomorrow tmrw tmr
 someone somebody anyone anybody everyone everybody friends guys folks buddy boys girls kids children
 task episode eval evaluation benchmark dataset proposal experiment
+fwiw lowkey ngl btw sim simulator simulation
 """.split())
 """Further words with no meaning for the goal, each checked not to change what a task asks:
 the names of what is being written ("new eval task:", "for this experiment": every task
@@ -1020,6 +1021,9 @@ FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"\s*[,;.]?\s*\bthere\s+(?:are|is)\s+no\s+(?:goal\s+)?patch(?:es)?\s+(?:involved|needed|used|in\s+(?:it|this\s+task))\b"), ""),
     (re.compile(r"(?:^|(?<=[.;!]\s))nothing\s+else(?:\s+on\s+the\s+table)?\s+(?:needs|has|is)\s+to\s+(?:move|change|be\s+moved)\s*[.!]?"), ""),
     (re.compile(r"\s*[,.;]\s*(?:and\s+)?nothing\s+else\s*[.!]?\s*$"), ""),
+    # thanks before the answer ("ty in advance"), a chat's "outta" ("make a circle outta 6 cubes")
+    (re.compile(r"\s*[,.;]?\s*\b(?:ty|thx|thanks|thank\s+you)\s+in\s+advance\b"), ""),
+    (re.compile(r"\boutta\b"), "out of"),
     # the task said to be complete, mid-text ("That is the whole task; there are ...", "thats it.", "(b) thats it")
     (re.compile(r"\s*[,.;:]?\s*(?:\([a-z]\)\s*)?\b(?:that\s+is|thats|that's)\s+(?:it|the\s+whole\s+task|all)\s*(?=[.;!,]|$)"), ""),
 )
@@ -1211,6 +1215,13 @@ alternatives as a regular expression over the text (case-insensitive). A denied 
 same slot excludes nothing the meant one does not already exclude, so it is dropped (:func:`rpg.schema.reading.drop_contrasts`);
 a denial of anything else ("on the patch, not next to the green cube") stays, and is refused as a negation."""
 
+CONTRAST_EXCLUSIVE: tuple[frozenset[str], ...] = tuple(frozenset(p) for p in (
+    ("left", "right"), ("front", "behind"), ("on", "under"), ("on", "below"), ("on", "beneath"), ("above", "below"),
+    ("above", "under"), ("above", "beneath"), *((near, "far") for near in ("near", "next", "beside", "side", "touching", "adjacent"))))
+"""Relations that exclude each other (by their head word: "left" of "to the left of", "far" of "far apart"): a
+relation denied beside one of these is one the meant relation already excludes (:func:`rpg.schema.reading.drop_contrasts`);
+any other pair ("left of it, not next to it") adds a constraint and stays refused."""
+
 CONTRAST_LEAD = (r"(?i)(?:^|(?<=[.;:!?]\s)|(?<=[.;:!?]\n))(?:(?:it|this|that)\s+is\s+|(?:it|this|that)'s\s+|the\s+(?:goal|task|target|answer|idea)"
                  r"\s+is\s+)?not\s+(?:just\s+)?(?P<neg>{a})(?:\s*,\s*(?:and\s+)?not\s+(?:{a}))*\s*(?:[,;:.!]|\s[-\u2013\u2014]+)\s*"
                  r"(?:but\s+|rather\s*,?\s+|instead\s*,?\s+)?(?:(?:it\s+is|it's|this\s+is|the\s+(?:goal|task|target)\s+is|just|only)\s+)?"
@@ -1327,6 +1338,11 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
                r"|at\s+the\s+end)\s*,?\s*)?(?:you\s+(?:should|will|would|must)\s+see|you'?ll\s+see|you\s+see|we\s+(?:should\s+)?see"
                r"|(?:the|this|that)\s+(?:final\s+|finished\s+|goal\s+)?(?:image|picture|photo|photograph|frame|snapshot)\s+"
                r"(?:shows|has|contains|depicts|is\s+of))\s*:?\s+"),
+    # "The end state requires the gray block to be adjacent to ...", "The scene we want at the end has ...": the goal follows
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:final|end|desired|goal|target|resulting)\s+(?:state|scene|configuration|layout|arrangement)"
+               r"\s+(?:requires|demands|needs)\s+(?:that\s+)?"),
+    re.compile(r"(?:^|(?<=[.!?;:]\s))the\s+(?:scene|state|table|configuration|layout)\s+(?:we|i)\s+want\s+at\s+the\s+end\s+"
+               r"(?:has|shows|is|contains)\s*:?\s*"),
     # "The final scene should have ...", "The end state you are looking for is ...": the goal follows
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:final|end|desired|goal|target|resulting)\s+(?:state|scene|configuration|layout"
                r"|arrangement|setup)(?:\s+(?:you\s+are|you're|we\s+are|we're|i\s+am|i'm)\s+looking\s+for)?\s+(?:should\s+|must\s+|will\s+)?"
@@ -2475,6 +2491,13 @@ ROBOT_SUBJECT_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 )
 """"The robot stacks the red block on ...": the command the sentence describes."""
 
+INDEFINITE_CUBE_RE = re.compile(rf"(?P<pre>^|[,;:.!]\s|\band\s|\bthen\s|\b(?:put|place|set|move|stack|leave|have)\s)"
+                                rf"(?:a|an|one)\s+(?P<c>{COLOR_RE})\s+(?P<n>cube|block|brick|box)\b")
+"""A cube introduced by its colour with "a" or "one" where a clause or its verb begins ("A grey cube on the blue
+patch and a grey cube on the red patch"): each such mention is one more cube of that colour, as mention accounting
+counts it (:func:`rpg.schema.reading.repeated_indefinites`; the second had been read as the first, put on two
+patches). Not after a preposition ("... on a red cube" may be the one already said)."""
+
 NOTATION_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"(\d)\s*[x\u00d7]\s*(?=\d)"),
      r"\1x"),
@@ -2492,6 +2515,15 @@ NOTATION_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      r"\1 of \2"),
     (re.compile(r"(?<![\w.])(\d+)\s*[x\u00d7]\s+(circle|ring|row|line|tower|stack|column|pile)\b"),
      r"a \2 of \1"),
+    # a terse spec's "@" for a place ("orange @ front right corner", "pile @ center: ...") and "b/w" for between
+    # ("put the green block b/w the red and blue ones"; "b/w cubes" stays: black and white)
+    (re.compile(rf"^\s*({COLOR_RE})\s*@\s*(?=(?:the\s+)?(?:front|back|rear|left|right|middle|cent(?:er|re))\b)"),
+     r"put the \1 cube in the "),
+    (re.compile(r"\b(pile|heap|tower|stack|row|line|circle|ring|grid|wall|pyramid)\s*@\s*(?=(?:the\s+)?(?:front|back|rear|left|right|middle"
+                r"|cent(?:er|re))\b)"),
+     r"\1 in the "),
+    (re.compile(r"\bb/w\s+(?=the\b)"),
+     "between "),
     # "3 white in a row": three cubes, not a count and a cube
     (re.compile(rf"\b(\d+)\s+({COLOR_RE})(?=\s+(?:in|into)\s+(?:a|an|one)\s+(?:row|line|column|circle|ring|tower|stack|pile)\b)"),
      r"\1 \2 cubes"),

@@ -671,7 +671,9 @@ def _same_slot(kind: str, pos: str, neg: str) -> bool:
         return sorted(re.findall(rf"(?i)\b(?:{COLOR_RE})\b", pos.lower())) == sorted(re.findall(rf"(?i)\b(?:{COLOR_RE})\b", neg.lower()))
     if kind == "relation":
         obj = lambda t: (re.search(r"(?i)\b(?:the\s+)?([a-z]+)\s+(?:cube|block|one)$", t) or [None, None])[1]
-        return obj(neg) is None or obj(pos) is None or obj(neg).lower() == obj(pos).lower()
+        head = lambda t: next((w for w in re.findall(r"[a-z]+", t.lower()) if w not in ("to", "the", "in", "of", "top")), "")
+        heads = {head(pos), head(neg)}
+        return (obj(neg) is None or obj(pos) is None or obj(neg).lower() == obj(pos).lower()) and heads in lexicon.CONTRAST_EXCLUSIVE
     return True
 
 
@@ -699,6 +701,22 @@ def drop_contrasts(text: str) -> str:
                     end = m.end("pos") + said.end()
             text = text[:start] + (" " if start and not text[start - 1].isspace() else "") + text[end:]
     return text.strip()
+
+
+def repeated_indefinites(text: str) -> str:
+    """``text`` with each indefinite cube of a colour said again (:data:`lexicon.INDEFINITE_CUBE_RE`) written as
+    "another" cube of it: "a red cube on the blue patch and a red cube on the green patch" -> "... and another red cube
+    on the green patch" (two cubes; the second had been the first on two patches). Left as written where the colour
+    is also said with "the" (which one "the red cube" is would be unclear)."""
+    seen: set[str] = set()
+    out, last = [], 0
+    for m in lexicon.INDEFINITE_CUBE_RE.finditer(text):
+        c = m.group("c")
+        if c in seen and not re.search(rf"\bthe\s+{c}\s+(?:cube|block|brick|box|one)\b", text):
+            out.append(text[last:m.start()] + m.group("pre") + f"another {c} {m.group('n')}")
+            last = m.end()
+        seen.add(c)
+    return "".join(out) + text[last:]
 
 
 def apply_corrections(text: str) -> str:
@@ -947,6 +965,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.COLOUR_PLURAL_RE.sub(r"the \1 ones", text)  # "reds at the bottom"
     text = lexicon.TEXTURED_RE.sub(lambda m: f"the {m.group('c')} block" if m.group("c") in COLORS else m.group(0), text)
     text = lexicon.rewrite(lexicon.NOTATION_REWRITES, text)
+    text = repeated_indefinites(text)  # "a grey cube on the blue patch and a grey cube on the red patch": two cubes
     if re.search(r"\b(?:walls?|towers?|stacks?)\b", text):  # "yellow down, cyan up", "down row gray gray gray"
         text = lexicon.rewrite(lexicon.UP_DOWN_ROLE_REWRITES, text)
     if re.search(r"\bwalls?\b", text):  # "a two-layer wall with blue on the bottom, three cubes per layer"
