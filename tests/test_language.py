@@ -3903,3 +3903,19 @@ def test_a_repeated_cube_said_with_the_stays_one_reading():
     """"a red cube ... the red cube" is one cube; the "another" reading applies only where no "the" names it."""
     schema = parse("Put a red cube on the blue patch, then put the green cube on the red cube.")
     assert sum(a.color == "red" for a in schema.assets) == 1
+
+
+@pytest.mark.parametrize("text", [
+    "From the camera, the red cube should be to the left of the green cube.",
+    "On your left, the yellow cube; on your right, the purple cube.",
+    "As you face the table, put the green cube at the left end of a row and the pink cube at the right end.",
+    "From the camera, the white cube should be further away than the black cube, i.e. behind it.",
+])
+def test_a_viewer_other_than_the_robot_is_refused_naming_the_robots_frame(text):
+    """The snapshot camera shares the robot's left, the agentview camera mirrors it: another viewer's side is unknown."""
+    with pytest.raises(BadInput, match="robot's left"):
+        parse(text)
+
+
+def test_the_robots_own_viewpoint_is_read():
+    assert meaning(parse("Seen from the robot, the red cube should be to the left of the green cube.")) == ["left_of(red,green)"]

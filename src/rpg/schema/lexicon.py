@@ -209,7 +209,31 @@ MOTION_WHY = ("is a motion or a pose off the table, an action the domain does no
 INSTRUCTION_ONLY = frozenset({START_TIME_RE, BUT_CORRECTION_RE, TURNED_OVER_RE})
 """:data:`INEXPRESSIBLE` patterns that hold for a whole instruction only (see each)."""
 
+VIEWPOINT_RE = (r"\b(?:(?:as\s+)?(?:seen|viewed|looked\s+at)\s+from|looking\s+(?:at\s+(?:the\s+table|it)\s+)?from|from)\s+(?:the\s+)?"
+                r"(?:front\s+|overhead\s+|top\s+|side\s+|main\s+)?(?:camera|viewer|observer|spectator|audience|user)(?:'s)?"
+                r"(?:\s+(?:point\s+of\s+view|perspective|side|view|position))?\b"
+                r"|\bfrom\s+(?:my|your|our)\s+(?:side|point\s+of\s+view|perspective|seat|position|view)\b"
+                r"|\b(?:as|when)\s+(?:you|i|we)\s+(?:look\s+at|face|see|view)\b"
+                r"|\b(?:to|on)\s+(?:your|my|our)\s+(?:left|right)\b|\b(?:your|my|our)\s+(?:left|right)(?:-hand)?(?:\s+side)?\b"
+                r"|\b(?:standing\s+)?where\s+the\s+camera\s+(?:sits|is|stands)\b|\bin\s+the\s+camera(?:'s)?\s+(?:image|view|frame|picture)\b"
+                r"|\bthe\s+camera's\s+(?:left|right)\b")
+"""Left and right said from a viewer other than the robot ("from the camera", "your left", "as you face the table"):
+rpg's left and right are the robot's (its left is +y, :mod:`rpg.domain.constants`); the snapshot camera behind the
+robot shares them and the agentview camera across the table mirrors them, so which side a viewer means is not known
+(refused, naming the robot's frame; "from the robot's point of view" is read)."""
+
+VIEWPOINT_WHY = ("says left or right from a viewer other than the robot: rpg's left and right are the robot's (the "
+                 "snapshot camera behind it shares them, the agentview camera facing it mirrors them), so that viewer's side "
+                 "is not known; say it from the robot (e.g. \"on the robot's left\", \"to the left of the blue cube as the "
+                 "robot sees it\")")
+
+ROBOT_VIEWPOINT_RE = re.compile(r"(?:^|(?<=[.;:!?]\s))(?:(?:as\s+)?(?:seen|viewed|looked\s+at)\s+from|looking\s+(?:at\s+(?:the\s+table|it)\s+)?"
+                                r"from|from)\s+the\s+robot(?:'s)?(?:\s+(?:point\s+of\s+view|perspective|side|view|position|base))?\s*,\s*")
+"""A viewpoint that is the robot's ("From the robot's point of view, ...", "Seen from the robot, ..."): rpg's own
+frame, dropped before viewpoints are refused."""
+
 INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
+    ("reference", VIEWPOINT_RE, VIEWPOINT_WHY),
     ("question", r"(?:^|[.!;]\s+)(?:which|what|where|who|whose|why|how\s+many|how\s+much|when)\b[^.!;]*\?"
                  r"|^\s*(?:which|what)\s+(?:of\s+the\s+|one\s+of\s+the\s+)?(?:[a-z]+\s+)?(?:blocks?|cubes?|ones?)\s+(?:is|are|was|were|has|have)\b"
                  r"|^\s*(?:where|why|how)\s+(?:is|are|was|were|does|do|did)\s+(?:the|a|an)\b"

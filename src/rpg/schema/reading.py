@@ -948,6 +948,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.ARROW_RE.sub(r"\1 in the ", text)
     text = lexicon.ARROW_PATCH_RE.sub(r"put the \1 cube on the ", text)
     spelled = {w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)}  # "spell BOOK": a word, not a book
+    text = lexicon.ROBOT_VIEWPOINT_RE.sub("", text)  # "From the robot's point of view, ...": rpg's own frame
     refused = [(kind, ws, why) for kind, ws, why in _inexpressible(text)
                if not all(w in spelled for w in ws)]  # refused below, with what the unknown words say as well
     text = lexicon.FRAMING_RE.sub("", text)
