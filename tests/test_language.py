@@ -3919,3 +3919,48 @@ def test_a_viewer_other_than_the_robot_is_refused_naming_the_robots_frame(text):
 
 def test_the_robots_own_viewpoint_is_read():
     assert meaning(parse("Seen from the robot, the red cube should be to the left of the green cube.")) == ["left_of(red,green)"]
+
+
+@pytest.mark.parametrize("text", [
+    # a hostile tester's silent errors of this session's features and older ones they uncovered: each now refused
+    "Put the red cube on the blue patch rather than next to the green cube.",  # had asserted the denied relation
+    "Put the red cube left of the blue cube instead of left of the green cube.",
+    "Put the red cube right of the blue cube, not left of the green cube.",  # another cube's denial had been dropped
+    "Put the red cube on the blue cube, not under the green cube.",
+    "Put the black cube on the left side, not in the back left corner.",  # overlapping places are no contrast
+    "Put the red cube in the back half, not in the back left corner.",
+    "Picture three towers of two cubes. Now make only one of them.",  # some of a group described earlier
+    "Make a tower of gray cubes, 3 high, and another one.",
+    "Let me describe the goal. Red on blue. Let me describe the start: green on yellow.",  # the start is no label
+    "For the demonstration, stack red on blue; for the evaluation, stack green on yellow.",
+    "I am picturing the red cube somewhere near the blue one, maybe on it.",  # a hedge between two goals
+    "Think of a row of red, green and blue from left to right, but build it from right to left.",
+    "The end state requires the red cube on the blue cube?",
+    "Here is the setup I want to evaluate: the robot starts with red on blue and must put red on the green patch.",
+    "Make a tower of gray cubes, 3 wide.",  # a length no reading carries
+    "Make a tower of gray cubes, 3 high, times two.",  # repetitions
+    "Make a circle x5 x2.",
+    "Make a circle of 6 cubes, red and blue alternating.",  # InCircle checks no order round the circle
+    "Put the red cube on the red patch and the blue cube on the blue patch; which goes where is your call.",
+    "Line up red, green and blue from left to right. How they are arranged does not matter.",
+    "Make a red tower of three cubes. Colours of the cubes are not specified.",
+    "Put the red cube on the blue patch. There are no patches involved.",
+])
+def test_attacks_on_contrasts_freedom_framing_and_counts_are_refused(text):
+    with pytest.raises(BadInput):
+        parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("Make a tower of gray cubes, 3 levels.", ["stack(gray,gray,gray)"]),
+    ("Make a row of gray cubes, 3 long.", ["line(gray,gray,gray)"]),
+    ("Make 3 towers x2 high of gray cubes.", ["stack(gray,gray)", "stack(gray,gray)", "stack(gray,gray)"]),
+    ("Put a red cube on the blue patch, i.e. a red cube must end up on the blue patch.", None),  # one cube, said twice
+    ("Build a wall of red cubes, four wide and two high.", ["wall(red,red,red,red,red,red,red,red)"]),
+])
+def test_heights_lengths_and_restatements_read(text, expected):
+    if expected is None:
+        with pytest.raises(BadInput, match="twice"):
+            parse(text)  # restated, not a second red cube (it had become two)
+    else:
+        assert meaning(parse(text)) == expected

@@ -298,6 +298,10 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
         out.append(Mention(m.group(0), "height", count=int(m.group("n"))))
     for m in lexicon.COUNT_TIMES_RE.finditer(text):  # "circle x5", "blue x3": a count as a multiplier
         out.append(Mention(m.group(0), "times", count=int(m.group("n") or m.group("n2"))))
+    for m in lexicon.EXTENT_SAID_RE.finditer(text):  # "a row of gray cubes, 3 long": a length no rewrite read
+        out.append(Mention(m.group(0), "times", count=int(m.group("n"))))
+    for m in lexicon.GRID_SIZE_SAID_RE.finditer(text):  # "circle x5x2": a grid's size said of something else
+        out.append(Mention(m.group(0), "times", count=int(m.group("r")) * int(m.group("c"))))
     each = EACH_CORNER_RE.search(text)
     if each:
         out.append(Mention(each.group(0), "place", count=int(each.group(1) or 4), region="corners"))
@@ -430,6 +434,11 @@ def _group_sizes(schema: TaskSchema) -> set[int]:
             out.add(len(re.split(r"[,|]", m.group(1))))
             out.update(len(p.split(",")) for p in parts)
             out.update(Counter(re.split(r"[,|]", m.group(1))).values())
+    for p in schema.goal_predicate().walk():  # a wall's width and height, a grid's rows and columns, a pyramid's base
+        if isinstance(p, P.Grid):
+            out.update((p.rows, p.cols, p.layers, p.rows * p.cols, p.cols * p.layers))
+        elif isinstance(p, P.Pyramid):
+            out.add(p.base)
     return out
 
 
@@ -798,6 +807,17 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
             if int(n) != has:
                 return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group('groups')}' says the "
                                   f"task has {n} {color + ' ' if color else ''}cubes and that task has {has}. Rephrase, or use --model")
+    start = lexicon.START_SAID_RE.search(f.text)
+    if start and not schema.initial_state.structures:
+        # "the robot starts with red on blue and must put red on the green patch": the start had been read as the goal
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{start.group(0)}' describes how the "
+                          "cubes start and that task reads no start. Say it as 'Start: red on blue. Goal: ...', or use --model")
+    ways = {(m.group("a"), m.group("b")) for m in DIRECTION_RE.finditer(f.text) if m.group("a") != m.group("b")}
+    directed = [p for p in schema.goal_predicate().walk() if isinstance(p, P.InLine) and getattr(p, "order", None)]
+    if any((b, a) in ways for a, b in ways) and len(directed) < 2:
+        # "a row ... from left to right, but build it from right to left": which way the row reads is said twice
+        return ParseError(f"\"{f.original[:80]}\" says two opposite directions ({', '.join(sorted(f'{a} to {b}' for a, b in ways))}) "
+                          "for one arrangement; say the order once, or use --model")
     stacked = _stacked_on_another(schema)
     for m in ON_TABLE_RE.finditer(f.text):  # "move the green cube onto the table": not stacked on another
         color = canon_color(m.group(1) or m.group(2) or m.group(3))

@@ -234,6 +234,13 @@ frame, dropped before viewpoints are refused."""
 
 INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("reference", VIEWPOINT_RE, VIEWPOINT_WHY),
+    ("reference", r"\band\s+another\s+one\s*(?:[.!;]|$)|\b(?:only|just)\s+(?:\d+|one|two|three|four|five|some|a\s+few)\s+of\s+(?:them|those|these)\b"
+                  r"|\b(?:build|make|stack|keep|use)\s+(?:\d+|one|two|three|four|five|some)\s+of\s+(?:them|those|these)\b",
+     "picks some of a group described earlier: which ones is not said; describe only what the goal has (e.g. \"build "
+     "one tower of two cubes\")"),
+    ("condition", r"\b(?:maybe|perhaps|possibly|ideally|preferably|or\s+else)\s+(?:even\s+)?(?:on|onto|in|into|at|next|near|behind|under"
+                  r"|beside|to|left|right|in\s+front|far|stacked)\b",
+     "hedges between two goals ('maybe on it'): a task has one goal, checked at the end; say the one end state"),
     ("question", r"(?:^|[.!;]\s+)(?:which|what|where|who|whose|why|how\s+many|how\s+much|when)\b[^.!;]*\?"
                  r"|^\s*(?:which|what)\s+(?:of\s+the\s+|one\s+of\s+the\s+)?(?:[a-z]+\s+)?(?:blocks?|cubes?|ones?)\s+(?:is|are|was|were|has|have)\b"
                  r"|^\s*(?:where|why|how)\s+(?:is|are|was|were|does|do|did)\s+(?:the|a|an)\b"
@@ -264,7 +271,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      MOTION_WHY),
     ("action", TURNED_OVER_RE,
      MOTION_WHY),
-    ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none)\b|n't\b"
+    ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none)\b|n't\b|\brather\s+than\b|\binstead\s+of\b"
                  r"|\b(?:anywhere|everywhere|anything|any\s+place)\s+but\b"
                  r"|\b(?:don|doesn|didn|isn|aren|shouldn|mustn|won|wouldn)\s*'?\s*t\b"
                  r"|\bno\s+(?:\w+\s+){0,2}?(?:blocks?|cubes?|boxes|one|other|longer)\b",
@@ -281,6 +288,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
              r"|meanwhile|forever|while|whilst|during)\b",
      "is about time (a duration or a time limit, a measured quantity): a task's goal is checked once, at the end of "
      "the episode, with no clock or duration"),
+    ("quantity", r"\b(?:times\s+(?:\d+|two|three|four|five)|(?:\d+|two|three|four|five|several|many)\s+times|twice|thrice)\b",
+     "says how many times: a task is one end state, checked once; say how many cubes or structures it has (e.g. \"two "
+     "towers of three gray cubes\")"),
     ("quantity", r"\b(?:\d+(?:\.\d+)?\s*(?:cm|mm)\b|(?:centi|milli)?(?:meters?|metres?)|inch(?:es)?|feet|foot"
                  r"|some(?=\s+(?:of\s+the\s+)?(?:[a-z]+\s+)?(?:blocks|cubes|bricks|boxes)\b)|cms?|few|(?<!\d\s)fewer|most|majority|percent|(?<!left\s)(?<!right\s)(?<!front\s)(?<!back\s)(?<!rear\s)half|halves|several|many|much|enough|plenty|numerous"
                  r"|as\s+(?:high|tall|many|much|far|close|long)\s+as\s+(?:you|it|possible|can)"
@@ -765,11 +775,25 @@ words (:mod:`rpg.schema.structures`)."""
 
 HEIGHT_WORDS = r"(?:(?:blocks?|cubes?|stor(?:y|ey|ies|eys)|levels?|tiers?|layers?)(?:\s+(?:high|tall))?|high|tall)"
 
-HEIGHT_SAID_RE = re.compile(r"(?<![\w.])(?P<n>\d+)(?:\s+|-)(?:(?:blocks?|cubes?|bricks?|stor(?:y|ey|ies|eys)|levels?|tiers?|layers?"
-                            r"|floors?)(?:\s+|-))?(?:high|tall)\b")
+HEIGHT_SAID_RE = re.compile(r"(?<![\w.])(?P<n>\d+)(?:\s+|-)(?:(?:(?:blocks?|cubes?|bricks?|stor(?:y|ey|ies|eys)|levels?|tiers?|layers?"
+                            r"|floors?)(?:\s+|-))?(?:high|tall)\b|(?:stor(?:y|ey|ies|eys)|levels?|tiers?|layers?|floors?)\b(?!\s+(?:of|high|tall)\b))")
 """A height said in cubes ("3 high", "4 cubes tall", "2-storey") that no rewrite turned into a structure's count:
 some tower of the goal must have that many cubes, or a layered structure that many layers (mention accounting,
 :mod:`rpg.schema.accounting`; "a tower of gray cubes, 3 high" had been a tower of two)."""
+
+EXTENT_SAID_RE = re.compile(r"(?<![\w.])(?P<n>\d+)(?:\s+|-)(?:(?:blocks?|cubes?|bricks?)(?:\s+|-))?(?:long|wide|deep|across)\b")
+"""A length said in cubes ("3 long", "4 cubes wide") that no rewrite read: some group of the task must have that many
+cubes (mention accounting; "a row of gray cubes, 3 long" had been a row of four, "a tower ..., 3 wide" a tower of two)."""
+
+GRID_SIZE_SAID_RE = re.compile(r"(?<![\d.])(?P<r>\d+)x(?P<c>\d+)(?!\w|\.\d)")
+"""A grid's size ("3x3", "2x4"): the task must have a group of rows x columns cubes (mention accounting; "circle x5 x2"
+had been a circle of six)."""
+
+START_SAID_RE = re.compile(r"\b(?:robot|scene|task|episode|table|cubes?|blocks?|it|they|tower|stack)\s+(?:starts?|begins?)\s+"
+                           r"(?:with|on|as|from|off|stacked|out)\b|\binitially\b"
+                           r"|\b(?:initial|starting|start)\s+(?:state|configuration|scene|setup|position)\b")
+"""Words that describe how the cubes start ("the robot starts with red on blue", "initially", "initial state"): the
+task must read a start (rho_0's structures), or the start had been read as part of the goal (mention accounting)."""
 
 COUNT_TIMES_RE = re.compile(r"(?<![\w.])[x\u00d7]\s?(?P<n>\d+)\b(?!\s*[x\u00d7*]\s*\d)|(?<![\w.])(?P<n2>\d+)\s?[x\u00d7](?=\s+[a-z])")
 """A count written as a multiplier ("circle x5", "5x circle", "blue x3"): the task must have that many cubes of
@@ -1019,7 +1043,7 @@ FREE_PAIR_RE = re.compile(r"\b(?:the\s+)?colou?rs?\s+(?:and|or|,)\s+(?:the\s+)?o
 """Colours and order left free in one phrase ("colours and order do not matter"): said as the two
 phrases :data:`FREE_CHOICE_RE` and :data:`ANY_ORDER_RE` read ("colours do not matter, in any order")."""
 
-FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
+FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # colours left free in other words ("Colours of the cubes are not specified.", "colours are not constrained",
     # "colours of your choosing", "The colours are entirely up to you"): said as the phrase FREE_CHOICE_RE reads, whose
     # check refuses them beside cubes named by colour
@@ -1033,16 +1057,18 @@ FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"\s*[,;.]?\s*\b(?:the\s+)?exact\s+order(?:\s+(?:around|along|in)\s+the\s+(?:circle|ring|row|line|tower|stack))?\s+"
                 r"(?:is\s+not\s+important|is\s+unimportant|does\s+not\s+matter|doesn't\s+matter)\b"), " in any order"),
     (re.compile(r"\s*[,;\u2013\u2014-]\s*which\s+(?:one\s+)?goes\s+where\s+(?:is\s+(?:your|the\s+robot's)\s+(?:call|choice)|is\s+up\s+to\s+you"
-                r"|does\s+not\s+matter|doesn't\s+matter)\b"), " in any order"),
+                r"|does\s+not\s+matter|doesn't\s+matter)\b"),
+     lambda m: " in any order" if re.search(r"\b(?:tower|stack|row|line|column)\b", m.string) and "patch" not in m.string else m.group(0)),
     # an arrangement the goal does not judge anyway ("How they are arranged inside that front half does not matter.",
     # "The order of the towers along the table is not something I care about."): dropped
     (re.compile(r"(?:^|(?<=[.;!]\s))how\s+(?:they|the\s+cubes|the\s+blocks)\s+(?:are\s+)?(?:arranged|placed|laid\s+out)\s+"
-                r"(?:(?:inside|within|in)\s+[a-z\s]{1,40}?\s+)?(?:does\s+not|doesn't)\s+matter\s*[.!]?"), ""),
+                r"(?:inside|within)\s+[a-z\s]{1,40}?\s+(?:does\s+not|doesn't)\s+matter\s*[.!]?"), ""),
     (re.compile(r"(?:^|(?<=[.;!]\s))the\s+order\s+of\s+the\s+(?:towers|stacks|piles|rows|groups)(?:\s+(?:along|on|across)\s+the\s+table)?\s+"
                 r"(?:is\s+not\s+something\s+(?:i|we)\s+care\s+about|does\s+not\s+matter|doesn't\s+matter|is\s+not\s+important)\s*[.!]?"), ""),
     # a note that the task has no patch, or that nothing else need move ("there are no patches involved", "Nothing else
     # on the table needs to move."): nothing the goal judges
-    (re.compile(r"\s*[,;.]?\s*\bthere\s+(?:are|is)\s+no\s+(?:goal\s+)?patch(?:es)?\s+(?:involved|needed|used|in\s+(?:it|this\s+task))\b"), ""),
+    (re.compile(r"\s*[,;.]?\s*\bthere\s+(?:are|is)\s+no\s+(?:goal\s+)?patch(?:es)?\s+(?:involved|needed|used|in\s+(?:it|this\s+task))\b"),
+     lambda m: m.group(0) if re.search(r"\bpatch", m.string[:m.start()] + m.string[m.end():]) else ""),
     (re.compile(r"(?:^|(?<=[.;!]\s))nothing\s+else(?:\s+on\s+the\s+table)?\s+(?:needs|has|is)\s+to\s+(?:move|change|be\s+moved)\s*[.!]?"), ""),
     (re.compile(r"\s*[,.;]\s*(?:and\s+)?nothing\s+else\s*[.!]?\s*$"), ""),
     # thanks before the answer ("ty in advance"), a chat's "outta" ("make a circle outta 6 cubes")
@@ -1342,7 +1368,9 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
     re.compile(r"(?:^|(?<=[.!?;:]\s))what\s+(?:i|we)\s+(?:have\s+in\s+mind|am\s+picturing|are\s+picturing|want|need|would\s+like|are\s+after)"
                r"\s+(?:here\s+)?is\s+"),
     # a purpose said first ("For the demonstration, the pink cube has to ..."): nothing of the goal
-    re.compile(r"^for\s+(?:this|the|our|my)\s+(?:scene|demonstration|demo|episode|test|benchmark|eval(?:uation)?|experiment)\s*,\s*"),
+    re.compile(r"^for\s+(?:this|the|our|my)\s+(?:scene|demonstration|demo|episode|test|benchmark|eval(?:uation)?|experiment)\s*,\s*"
+               r"(?![\s\S]*\bfor\s+(?:this|the|our|my|a)\s+(?:[a-z]+\s+)?(?:scene|demonstration|demo|episode|test|benchmark|eval(?:uation)?"
+               r"|experiment|training|run|robot)\b)"),
     # sentences that introduce the task and say nothing of it ("Here is the setup I want to evaluate.", "Let me describe
     # the goal.", "Our lab uses this as a warm-up task.", "The idea is a little sorting exercise.")
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:here\s+is|here's|this\s+is)\s+the\s+(?:setup|set-up|task|scene|goal|layout|configuration)\s+"
@@ -1364,7 +1392,7 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
                r"(?:shows|has|contains|depicts|is\s+of))\s*:?\s+"),
     # "The end state requires the gray block to be adjacent to ...", "The scene we want at the end has ...": the goal follows
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:final|end|desired|goal|target|resulting)\s+(?:state|scene|configuration|layout|arrangement)"
-               r"\s+(?:requires|demands|needs)\s+(?:that\s+)?"),
+               r"\s+(?:requires|demands|needs)\s+(?:that\s+)?(?![^.!?]*\?)"),
     re.compile(r"(?:^|(?<=[.!?;:]\s))the\s+(?:scene|state|table|configuration|layout)\s+(?:we|i)\s+want\s+at\s+the\s+end\s+"
                r"(?:has|shows|is|contains)\s*:?\s*"),
     # "The final scene should have ...", "The end state you are looking for is ...": the goal follows
@@ -2515,6 +2543,15 @@ ROBOT_SUBJECT_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 )
 """"The robot stacks the red block on ...": the command the sentence describes."""
 
+RESTATEMENT_RE = re.compile(r"\bi\.?e\.?(?=[\s,])|\bthat\s+is\b|\bin\s+other\s+words\b|\bnamely\b|\bmeaning\b|\bput\s+differently\b"
+                            r"|\bto\s+(?:be\s+clear|rephrase|restate)\b")
+"""Words that say the same goal again ("..., i.e. a red cube must end up on the blue patch"): an indefinite cube after
+them is the one said before, not another (:func:`rpg.schema.reading.repeated_indefinites`)."""
+
+START_WORD_RE = re.compile(r"\b(?:start(?:s|ing)?|initial(?:ly)?|beginning|begin|before|setup|set-up)\b")
+"""Words of a label that mark the start state ("Let me describe the start: ...", "Before: ..."): such a label is kept
+(dropping it had made the start the goal)."""
+
 INDEFINITE_CUBE_RE = re.compile(rf"(?P<pre>^|[,;:.!]\s|\band\s|\bthen\s|\b(?:put|place|set|move|stack|leave|have)\s)"
                                 rf"(?:a|an|one)\s+(?P<c>{COLOR_RE})\s+(?P<n>cube|block|brick|box)\b")
 """A cube introduced by its colour with "a" or "one" where a clause or its verb begins ("A grey cube on the blue
@@ -2535,7 +2572,7 @@ NOTATION_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      r"\3 \1\2"),
     # "circle x5", "5x circle", "tower x 3": a structure's count written as a multiplier (it had been dropped: a
     # circle of six)
-    (re.compile(r"\b(circle|ring|row|line|tower|stack|column|pile)s?\s*[,:]?\s*[x\u00d7]\s*(\d+)\b(?!\s*[x\u00d7])"),
+    (re.compile(r"\b(circle|ring|row|line|tower|stack|column|pile)\s*[,:]?\s*[x\u00d7]\s*(\d+)\b(?!\s*[x\u00d7]|\s+(?:high|tall|long|wide))"),
      r"\1 of \2"),
     (re.compile(r"(?<![\w.])(\d+)\s*[x\u00d7]\s+(circle|ring|row|line|tower|stack|column|pile)\b"),
      r"a \2 of \1"),
@@ -2691,10 +2728,18 @@ FAR_APART_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b(the\s+(?:{COLOR_RE})\s+(?:block|cube))\s+and\s+(the\s+(?:{COLOR_RE})\s+(?:block|cube))\s+"
                 r"((?:should|must|need\s+to|have\s+to)\s+(?:be|end\s+up)|are|end\s+up)\s+far\s+apart\b"),
      r"\1 \3 far from \2"),
+    # "keep the orange and blue cubes far apart from each other", "the two red cubes end up far from each other",
+    # "placed adjacent to one another": said as the relational reader's "far from each other" / "next to each other"
+    # (had been no task found)
+    (re.compile(r"\bfar\s+(?:away\s+)?apart(?:\s+(?:from\s+)?(?:each\s+other|one\s+another))?\b|\bfar\s+(?:away\s+)?from\s+(?:each\s+other|one\s+another)\b"),
+     "far from each other"),
+    (re.compile(r"\badjacent\s+to\s+(?:each\s+other|one\s+another)\b"),
+     "next to each other"),
     (re.compile(r"(\d)-(block|cube|layer|level|story|storey|high|tall|wide|long|deep)"),
      r"\1 \2"),
 )
-""""X and Y should be far apart" (one far from the other) and hyphenated sizes ("3-block")."""
+""""X and Y should be far apart" (one far from the other), reciprocal "far apart" and "adjacent to one another" said
+as the reader's "... each other", and hyphenated sizes ("3-block")."""
 
 RELATION_SIDE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "at top of" ("to the top of the table" is its far side, read below)

@@ -669,12 +669,43 @@ def _same_slot(kind: str, pos: str, neg: str) -> bool:
     for it, or none); any two structures, places or orders of one kind exclude each other."""
     if kind == "pair":
         return sorted(re.findall(rf"(?i)\b(?:{COLOR_RE})\b", pos.lower())) == sorted(re.findall(rf"(?i)\b(?:{COLOR_RE})\b", neg.lower()))
+    if kind == "place":
+        return _places_exclusive(pos, neg)
     if kind == "relation":
         obj = lambda t: (re.search(r"(?i)\b(?:the\s+)?([a-z]+)\s+(?:cube|block|one)$", t) or [None, None])[1]
         head = lambda t: next((w for w in re.findall(r"[a-z]+", t.lower()) if w not in ("to", "the", "in", "of", "top")), "")
         heads = {head(pos), head(neg)}
         return (obj(neg) is None or obj(pos) is None or obj(neg).lower() == obj(pos).lower()) and heads in lexicon.CONTRAST_EXCLUSIVE
     return True
+
+
+def _place_extent(phrase: str) -> tuple[str, frozenset[str], frozenset[str]] | None:
+    """A said place as ("patch", {colour}, {}) or ("region", its thirds along x, its thirds along y) of the workspace
+    (:data:`rpg.domain.constants.REGION_NAMES`: front/center/back by left/center/right); None when not a place."""
+    low = phrase.lower()
+    patch = re.search(rf"\b({COLOR_RE})\s+(?:patch|pad|mat)\b", low)
+    if patch:
+        return "patch", frozenset([canon_color(patch.group(1))]), frozenset()
+    words = set(re.findall(r"[a-z]+", low))
+    xs = {"front"} if words & {"front", "near"} else {"back"} if words & {"back", "rear", "far"} else set()
+    ys = {"left"} if "left" in words else {"right"} if "right" in words else set()
+    if words & {"middle", "center", "centre"}:
+        xs, ys = xs or {"center"}, ys or {"center"}
+    if not xs and not ys:
+        return None
+    return "region", frozenset(xs or {"front", "center", "back"}), frozenset(ys or {"left", "center", "right"})
+
+
+def _places_exclusive(pos: str, neg: str) -> bool:
+    """Whether a cube in place ``pos`` cannot be in place ``neg``: two patches of different colours, or two regions
+    that share no part of the table ("the front right corner" and "the back left corner"; not "the left side" and "the
+    back left corner", which overlap)."""
+    a, b = _place_extent(pos), _place_extent(neg)
+    if a is None or b is None or a[0] != b[0]:
+        return False
+    if a[0] == "patch":
+        return a[1] != b[1]
+    return not (a[1] & b[1]) or not (a[2] & b[2])
 
 
 def drop_contrasts(text: str) -> str:
@@ -708,14 +739,15 @@ def repeated_indefinites(text: str) -> str:
     "another" cube of it: "a red cube on the blue patch and a red cube on the green patch" -> "... and another red cube
     on the green patch" (two cubes; the second had been the first on two patches). Left as written where the colour
     is also said with "the" (which one "the red cube" is would be unclear)."""
-    seen: set[str] = set()
+    seen: dict[str, int] = {}
     out, last = [], 0
     for m in lexicon.INDEFINITE_CUBE_RE.finditer(text):
         c = m.group("c")
-        if c in seen and not re.search(rf"\bthe\s+{c}\s+(?:cube|block|brick|box|one)\b", text):
+        restated = c in seen and lexicon.RESTATEMENT_RE.search(text, seen[c], m.end())  # "..., i.e. a red cube on ..."
+        if c in seen and not restated and not re.search(rf"\bthe\s+{c}\s+(?:cube|block|brick|box|one)\b", text):
             out.append(text[last:m.start()] + m.group("pre") + f"another {c} {m.group('n')}")
             last = m.end()
-        seen.add(c)
+        seen.setdefault(c, m.end())
     return "".join(out) + text[last:]
 
 
@@ -875,6 +907,10 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     def _restated(m: re.Match) -> str:
         said = re.sub(r"\s+the\s+[a-z]+\s+(?:cube|block|one)$", "", m.group("said")).replace("to the ", "").removesuffix(" of")
         neg = m.group("neg").replace("to the ", "").removesuffix(" of").replace("underneath", "under")
+        obj = re.search(r"\bthe\s+([a-z]+)\s+(?:cube|block|one)$", m.group("said"))
+        other = re.search(r"\bthe\s+([a-z]+)\s+(?:cube|block|one)\s*$", m.group(0))
+        if other and obj and other.group(1) != obj.group(1):
+            return m.group(0)  # "right of the blue cube, not left of the green cube": another cube, another constraint
         return m.group("said") if any({said, neg} == {a, b} for a, b in lexicon.OPPOSITE_RELATIONS) else m.group(0)
     text = lexicon.OPPOSITE_NEGATED_RE.sub(_restated, text)  # "in front of the grey cube, not behind it": said again
     text = lexicon.OTHER_WAY_DENIED_RE.sub("", text)  # "..., not the other way round": said again
@@ -898,7 +934,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         unnamed = re.search(rf"\b(?:\d+|{lexicon.COUNT_WORD_RE}|some|other|remaining)\s+(?:more\s+)?(?:cubes|blocks|ones)\b(?!\s+of\b)"
                             rf"|\b(?:a|an|any|one)\s+(?:cube|block)\b"
                             rf"|\b(?:tower|stack|row|line|pile)\s+of\s+(?:\d+|{lexicon.COUNT_WORD_RE})\b(?!\s+(?:{COLOR_RE})\b)", re.sub(rf"\b(?:\d+|{lexicon.COUNT_WORD_RE})\s+(?:{COLOR_RE})\b", " ", rest))
-        if re.search(r"colou?r", m.group(0)) and re.search(rf"\b(?:{COLOR_RE})\b", rest) and not unnamed:
+        coloured = re.search(rf"\b(?:{COLOR_RE})\s+(?:tower|stack|row|line|pile|pyramid|wall|circle|grid)\b", rest)
+        if re.search(r"colou?r", m.group(0)) and re.search(rf"\b(?:{COLOR_RE})\b", rest) and (not unnamed or coloured):
+            # ("a red tower of three cubes. Colours ... not specified": the colour before the structure is every cube's)
             # (with cubes nobody names by colour, "any colours" is theirs: "put two cubes on the purple cube, any colours")
             raise Inexpressible("contradiction", [m.group(0).strip(" ,;(\u2013\u2014-")], "leaves the colours free, but the "
                                 "instruction names its cubes by colour, which is how the goal tells them apart; say one of "
@@ -921,7 +959,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
               and not lexicon.TASK_CONTENT_RE.search(re.sub(r"(?<=[a-z])\s+#?\d+\s*$|\b(?:just\s+|only\s+)?one\s+(?:task|relation|goal|"
                                                             r"thing|check|condition|episode|run|trial)\b", "",
                                                             m.group("label")))  # "item 2", "just one task"
-              and not _inexpressible(m.group("label"))]
+              and not _inexpressible(m.group("label"))
+              and not lexicon.START_WORD_RE.search(m.group("label"))]  # "Let me describe the start: ...": the start, not a label
     for m in reversed(labels):  # "Obj: red on blue.", "Checklist: ...": a label that names nothing of the task
         text = text[:m.start("label")] + text[m.end():]
     effectors += [(m.group("label").strip(), "a label before its colon") for m in labels]
@@ -1411,8 +1450,11 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
      r"\1 of \2 blocks"),
     # "a tower of gray cubes, 3 high", "stack red cubes 4 tall": the height after the colour is the tower's count (it had
     # been dropped: a tower of two)
-    (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)\s*,?\s+(\d+)\s+(?:(?:blocks?|cubes?|levels?|"
-                r"stor(?:ies|eys)|tiers?|layers?)\s+)?(?:high|tall)\b"), r"\1 of \3 \2 blocks"),
+    (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)\s*,?\s+(\d+)\s+(?:(?:(?:blocks?|cubes?|levels?|"
+                r"stor(?:ies|eys)|tiers?|layers?)\s+)?(?:high|tall)|levels|stor(?:ies|eys)|tiers|layers|floors)\b"), r"\1 of \3 \2 blocks"),
+    # "a row of gray cubes, 3 long": the length after the colour is the row's count (a row of four had been made)
+    (re.compile(rf"\b(row|line)\s+of\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)\s*,?\s+(\d+)\s+(?:(?:blocks?|cubes?)\s+)?(?:long|across)\b"),
+     r"\1 of \3 \2 blocks"),
     (re.compile(rf"\b(stack|pile)\s+(?:the\s+)?({COLOR_RE})\s+(?:blocks|cubes|bricks)\s*,?\s+(\d+)\s+(?:(?:blocks?|cubes?|levels?)\s+)?"
                 r"(?:high|tall)\b"), r"\1 \3 \2 blocks"),
     # "a tower 3 blocks high"

@@ -176,7 +176,7 @@ class RelationalReading:
                 if left and (left[-1].color or left[-1].label) and not left[-1].ref and re.match(r"(?:the\s+)?table\b", after):
                     self.previous[:] = [self.obj(left[-1])] * 2  # "place a pink cube on the table, put a cyan cube on it"
                 continue
-            if kind in ("on", "next_to") and re.match(r"each other|one another|top of each other|itself", after):
+            if kind in ("on", "next_to", "far_from") and re.match(r"each other|one another|top of each other|itself", after):
                 if left:
                     group = _listed_group(clause, left)
                     if len(group) > 1:  # "the red and green blocks": one cube per colour, as listed
@@ -192,6 +192,9 @@ class RelationalReading:
                         names = [self.obj(left[-1], i) for i in range(max(left[-1].count, 2))]
                     if kind == "on":
                         self.on_edges += [(u, lo) for lo, u in itertools.pairwise(names)]
+                    elif kind == "far_from":  # "the red and blue cubes far from each other": every two of them
+                        self.rels += [FarFrom(a, c) for a, c in itertools.combinations(names, 2)]
+                        self.subjects.update((mn.color, mn.label) for mn in group)
                     else:
                         self.rels += [NextTo(a, c) for a, c in itertools.pairwise(names)]
                         self.subjects.update((mn.color, mn.label) for mn in group)

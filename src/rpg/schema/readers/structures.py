@@ -454,6 +454,12 @@ def recognize_circle(f: Features, b: Builder) -> bool:
     n = n if n is not None else (4 if corners else 6)
     if n < 3:
         raise ParseError("a circle needs at least 3 cubes")
+    if f.has("alternating", "alternate", "alternately", "alternates"):
+        # "a circle of six cubes alternating red and white": the circle's goal (InCircle) checks where the cubes stand,
+        # not their order round it, so the alternation had been dropped silently (and an odd count cannot alternate)
+        raise ParseError("a circle's goal checks that the cubes stand evenly round a circle, not their order round it, so "
+                         "alternating colours round a circle cannot be checked; say a row instead (e.g. \"a row of six cubes "
+                         "alternating red and white\"), or drop the alternation, or use --model")
     names = fill_structure(f, b, n, material_of(f), None, lambda ns: circle_layout(ns))
     b.preds.insert(0, InCircle(tuple(names)))
     b.primitives += ["arrange"]
