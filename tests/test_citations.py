@@ -416,3 +416,19 @@ def test_a_middle_cube_is_judged_and_the_others_are_free(text):
 def test_a_tower_of_even_height_has_no_middle_cube():
     with pytest.raises(BadInput, match="no one middle"):
         parse("build a tower of four blocks with blue in the middle")
+
+
+@pytest.mark.parametrize("text", [
+    "Make two towers of three cubes",
+    "build 3 towers of 2 blocks",
+    "two piles of three cubes",
+])
+def test_structures_of_unnamed_cubes_take_any_cubes(text):
+    """No colour is said, so which cubes make which tower or pile is free: every reshuffle of the cubes over the goal's
+    sites holds (a red tower and a blue tower, or two piles of two by colour, had been demanded)."""
+    schema = check_feasibility(parse(text))
+    cubes = [a.name for a in schema.assets if a.kind != "goal_patch"]
+    rng = np.random.default_rng(0)
+    for _ in range(5):
+        shuffled = dict(zip(cubes, [schema.goal_layout[n] for n in rng.permutation(cubes)], strict=True))
+        assert evaluate_goal(schema.goal_predicate(), goal_world(schema, shuffled)).satisfied, shuffled

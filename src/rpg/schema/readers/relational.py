@@ -752,6 +752,11 @@ def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
         stack_colors = per_tower
     elif len(colors) == 1 and not with_patches:
         stack_colors = [[colors[0]] * height for _ in range(k)]
+    elif not colors and not with_patches and not matching:
+        # "two towers of three cubes": no colour said, so which cubes make which tower is free; cubes of one colour are
+        # interchangeable (evaluate_goal tries their assignments), so any two towers of three pass (a red tower and a
+        # blue tower had been demanded)
+        stack_colors = [[colors_for(1, f)[0]] * height for _ in range(k)]
     else:
         palette = colors_for(k, f, prefer=colors)
         stack_colors = [[c] * height for c in palette] if (matching or with_patches or len(colors) <= 1) else [

@@ -509,6 +509,19 @@ def recognize_piles(f: Features, b: Builder) -> bool:
             return _one_pile(f, b)
         if k is None and not several and _one_pile(f, b, strict=False):  # "pile four cubes": one pile of them
             return True
+        sized = re.search(r"\b(\d+)\s+(?:piles|heaps|groups|clusters|bunches)\s+of\s+(\d+)\b", f.text)
+        if sized and not f.color_list() and not per_color:
+            # "two piles of three cubes": no colour said, so which cubes share a pile is free; cubes of one colour are
+            # interchangeable (evaluate_goal tries their assignments), so any split into piles of three passes (two piles
+            # of two, one red and one blue, had been demanded)
+            one = colors_for(1, f)[0]
+            groups = [[b.cube(one) for _ in range(int(sized.group(2)))] for _ in range(int(sized.group(1)))]
+            b.place(cluster_layout(groups, b.unit_centers(len(groups), 0.16)))
+            b.preds.append(Piles(groups=tuple(tuple(g) for g in groups)))
+            b.summary.append(f"{len(groups)} separate piles of {sized.group(2)} cubes")
+            b.primitives += ["arrange"]
+            b.min_separation = 0.06
+            return True
         colors = list(dict.fromkeys(f.color_list())) or colors_for(k or 3, f, prefer=[])
         if k is not None and not per_color and f.color_list() and k != len(colors):
             # "put red, blue, green, yellow into two piles": which cubes go together is not said (it had made a pile of
