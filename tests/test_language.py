@@ -3964,3 +3964,29 @@ def test_heights_lengths_and_restatements_read(text, expected):
             parse(text)  # restated, not a second red cube (it had become two)
     else:
         assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text,expected", [
+    # stranger29's silent errors: an end said as "the bottom one" had been put at the top; "the numbers go down" had kept
+    # the listed order
+    ("Build a tower of three cubes. The green cube must be the bottom one.", "stack(green,?,?)"),
+    ("Challenge: place the digit cubes 6, 2, 9 and 4 in a row so that the numbers go down from left to right.",
+     "line[left_to_right](9,6,4,2)"),
+    ("place the digit cubes 6, 2, 9 and 4 in a row so that the numbers go up from left to right.",
+     "line[left_to_right](2,4,6,9)"),
+])
+def test_stranger29_silent_errors_read(text, expected):
+    assert matches(expected, meaning(parse(text)))
+
+
+def test_one_cube_at_both_ends_is_a_contradiction():
+    with pytest.raises(BadInput, match="both ends"):
+        parse("Stack the white cube and the black cube so that the white cube is both at the bottom and at the top.")
+
+
+def test_steering_corrections_with_instead_of_still_read():
+    """'instead of' denies only where it names another cube or place ('rather than next to the green cube'); an
+    edit's 'instead of on top' corrects the relation, and 'instead of coloured ones' swaps the material."""
+    parse("Put the red cube next to the blue cube instead of on top.")
+    with pytest.raises(BadInput, match="negation"):
+        parse("Put the red cube on the blue patch rather than next to the green cube.")

@@ -182,7 +182,9 @@ each colour said is one cube, so the task must have at least as many of each."""
 TOWER_END_SAID_RE = re.compile(rf"\b(?P<c>{COLOR_RE})(?:\s+(?:block|cube|one))?\s+(?:(?:is|goes|sits|stays|(?:should|must|will)\s+be|"
                                r"ends\s+up)\s+)?(?:(?P<top>on\s+top|at\s+the\s+(?:very\s+)?top)|(?:at|on)\s+the\s+(?:very\s+)?"
                                r"(?:bottom|base))\b(?!\s+of\b)"
-                               rf"|(?<!\bto\s)\b(?:(?P<top2>top)|bottom|base)\s+(?:block|cube)\s*[:=]\s*(?P<c2>{COLOR_RE})\b")
+                               rf"|(?<!\bto\s)\b(?:(?P<top2>top)|bottom|base)\s+(?:block|cube)\s*[:=]\s*(?P<c2>{COLOR_RE})\b"
+                               rf"|\b(?P<c3>{COLOR_RE})(?:\s+(?:block|cube|one))?\s+(?:is|(?:should|must|will|has\s+to|needs\s+to)\s+be)\s+the\s+"
+                               r"(?:(?P<top3>top|topmost|highest|uppermost)|bottom|base|lowest|bottommost)(?:\s+(?:one|1|block|cube))?\b")
 """A cube of one colour given the top or the bottom of a tower ("with the pink cube on top",
 "so that red is at the bottom", "top cube: pink"): the goal's ordered tower that holds it must
 have it there."""
@@ -438,7 +440,7 @@ def _group_sizes(schema: TaskSchema) -> set[int]:
         if isinstance(p, P.Grid):
             out.update((p.rows, p.cols, p.layers, p.rows * p.cols, p.cols * p.layers))
         elif isinstance(p, P.Pyramid):
-            out.add(p.base)
+            out.update((p.base, p.base * p.base))  # "a pyramid with a 3x3 base": a 3D pyramid's base square
     return out
 
 
@@ -761,11 +763,18 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
                               f"cannot hold with {btw.b} and {btw.c} stacked on each other; say the tower from bottom to top "
                               "(e.g. \"from bottom to top: red, green, blue\"), or use --model")
     stacks = [p.objects for p in schema.goal_predicate().walk() if type(p) is P.Stack]
+    loose = [p for p in schema.goal_predicate().walk() if isinstance(p, P.Stack) and type(p) is not P.Stack]
     for m in TOWER_END_SAID_RE.finditer(f.text):  # "stack yellow on pink, with the pink cube on top": which is on top?
-        colour = canon_color(m.group("c") or m.group("c2"))
+        colour = canon_color(m.group("c") or m.group("c2") or m.group("c3"))
         named = {a.name for a in cubes if a.color == colour}
-        end = -1 if m.group("top") or m.group("top2") else 0
+        end = -1 if m.group("top") or m.group("top2") or m.group("top3") else 0
         held = [st for st in stacks if named & set(st)]
+        unanchored = [p for p in loose if named & set(p.objects) and not (
+            getattr(p, "top" if end else "bottom", False) and p.objects[end] in named)]
+        if unanchored and not held:  # "a tower of three cubes. The green cube must be the bottom one": the end had been dropped
+            return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group(0)}' puts the {colour} cube "
+                              f"at the {'top' if end else 'bottom'} and that task leaves its place in the tower free. Say it as "
+                              f"'with the {colour} cube at the {'top' if end else 'bottom'}', or use --model")
         if held and not any(st[end] in named for st in held):
             return ParseError(f"\"{f.original[:80]}\" contradicts itself: '{m.group(0)}' puts the {colour} "
                               f"cube at the {'top' if end else 'bottom'}, and the rest of it reads {schema.goal_summary}. "

@@ -113,6 +113,12 @@ STACK_SIDE_MOVE_RE = re.compile(
 a two-cube stack, "it" is the stack (its top cube to the left would be a relation "of" a cube)."""
 
 ORDER_RANGE_RES: tuple[tuple[re.Pattern, str], ...] = (
+    # "so that the numbers go down from left to right", "the digits increase left to right": a sort said by the numbers'
+    # way (it had been dropped: the listed order kept, silently)
+    (re.compile(r"(?i)\b(?:so\s+that\s+|such\s+that\s+)?(?:the\s+)?(?:numbers|digits|values|labels)\s+(?:go\s+|run\s+|count\s+)?"
+                r"(?:down|decrease|descend|get\s+smaller)\b"), "in decreasing order"),
+    (re.compile(r"(?i)\b(?:so\s+that\s+|such\s+that\s+)?(?:the\s+)?(?:numbers|digits|values|labels)\s+(?:go\s+|run\s+|count\s+)?"
+                r"(?:up|increase|ascend|get\s+(?:bigger|larger))\b"), "in increasing order"),
     (re.compile(r"(?i)\b(?:from\s+)?(?:small|little|low|least|minor)(?:est|er)?\s+(?:to|->|\u2192)\s+(?:big|large|high|great|major)(?:gest|est|er)?\b"),
      "from smallest to largest"),
     (re.compile(r"(?i)\b(?:from\s+)?(?:big|large|high|great|major)(?:gest|est|er)?\s+(?:to|->|\u2192)\s+(?:small|little|low|least|minor)(?:est|er)?\b"),
@@ -233,14 +239,6 @@ ROBOT_VIEWPOINT_RE = re.compile(r"(?:^|(?<=[.;:!?]\s))(?:(?:as\s+)?(?:seen|viewe
 frame, dropped before viewpoints are refused."""
 
 INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
-    ("reference", VIEWPOINT_RE, VIEWPOINT_WHY),
-    ("reference", r"\band\s+another\s+one\s*(?:[.!;]|$)|\b(?:only|just)\s+(?:\d+|one|two|three|four|five|some|a\s+few)\s+of\s+(?:them|those|these)\b"
-                  r"|\b(?:build|make|stack|keep|use)\s+(?:\d+|one|two|three|four|five|some)\s+of\s+(?:them|those|these)\b",
-     "picks some of a group described earlier: which ones is not said; describe only what the goal has (e.g. \"build "
-     "one tower of two cubes\")"),
-    ("condition", r"\b(?:maybe|perhaps|possibly|ideally|preferably|or\s+else)\s+(?:even\s+)?(?:on|onto|in|into|at|next|near|behind|under"
-                  r"|beside|to|left|right|in\s+front|far|stacked)\b",
-     "hedges between two goals ('maybe on it'): a task has one goal, checked at the end; say the one end state"),
     ("question", r"(?:^|[.!;]\s+)(?:which|what|where|who|whose|why|how\s+many|how\s+much|when)\b[^.!;]*\?"
                  r"|^\s*(?:which|what)\s+(?:of\s+the\s+|one\s+of\s+the\s+)?(?:[a-z]+\s+)?(?:blocks?|cubes?|ones?)\s+(?:is|are|was|were|has|have)\b"
                  r"|^\s*(?:where|why|how)\s+(?:is|are|was|were|does|do|did)\s+(?:the|a|an)\b"
@@ -271,7 +269,10 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      MOTION_WHY),
     ("action", TURNED_OVER_RE,
      MOTION_WHY),
-    ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none)\b|n't\b|\brather\s+than\b|\binstead\s+of\b"
+    ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none)\b|n't\b"
+                 r"|\b(?:rather\s+than|instead\s+of)\s+(?=(?:(?:to\s+the\s+)?(?:left|right)|in\s+front|behind|next|beside|near|on(?:\s+top)?|onto"
+                 r"|under|in|at|far(?:\s+away)?|above|below)(?:\s+(?:of|to|from))?\s+the\s+[a-z\-]+(?:\s+[a-z\-]+)?\s+(?:cube|block|one|patch"
+                 r"|corner|side|half|edge|region)\b)"
                  r"|\b(?:anywhere|everywhere|anything|any\s+place)\s+but\b"
                  r"|\b(?:don|doesn|didn|isn|aren|shouldn|mustn|won|wouldn)\s*'?\s*t\b"
                  r"|\bno\s+(?:\w+\s+){0,2}?(?:blocks?|cubes?|boxes|one|other|longer)\b",
@@ -288,9 +289,6 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
              r"|meanwhile|forever|while|whilst|during)\b",
      "is about time (a duration or a time limit, a measured quantity): a task's goal is checked once, at the end of "
      "the episode, with no clock or duration"),
-    ("quantity", r"\b(?:times\s+(?:\d+|two|three|four|five)|(?:\d+|two|three|four|five|several|many)\s+times|twice|thrice)\b",
-     "says how many times: a task is one end state, checked once; say how many cubes or structures it has (e.g. \"two "
-     "towers of three gray cubes\")"),
     ("quantity", r"\b(?:\d+(?:\.\d+)?\s*(?:cm|mm)\b|(?:centi|milli)?(?:meters?|metres?)|inch(?:es)?|feet|foot"
                  r"|some(?=\s+(?:of\s+the\s+)?(?:[a-z]+\s+)?(?:blocks|cubes|bricks|boxes)\b)|cms?|few|(?<!\d\s)fewer|most|majority|percent|(?<!left\s)(?<!right\s)(?<!front\s)(?<!back\s)(?<!rear\s)half|halves|several|many|much|enough|plenty|numerous"
                  r"|as\s+(?:high|tall|many|much|far|close|long)\s+as\s+(?:you|it|possible|can)"
@@ -396,6 +394,19 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                            "(\"yellow starts stacked on red\"); say only where the cubes must end up"),
     ("contradiction", BUT_CORRECTION_RE,
      "may correct what was said before it or add to it: one of the two end states; say the one the task should have"),
+    ("reference", VIEWPOINT_RE, VIEWPOINT_WHY),
+    ("reference", r"\band\s+another\s+one\s*(?:[.!;]|$)|\b(?:only|just)\s+(?:\d+|one|two|three|four|five|some|a\s+few)\s+of\s+(?:them|those|these)\b"
+                  r"|\b(?:build|stack)\s+(?:\d+|one|two|three|four|five|some)\s+of\s+(?:them|those|these)\b",
+     "picks some of a group described earlier: which ones is not said; describe only what the goal has (e.g. \"build "
+     "one tower of two cubes\")"),
+    ("condition", r"\b(?:maybe|perhaps|possibly|ideally|preferably|or\s+else)\s+(?:even\s+)?(?:on|onto|in|into|at|next|near|behind|under"
+                  r"|beside|to|left|right|in\s+front|far|stacked)\b",
+     "hedges between two goals ('maybe on it'): a task has one goal, checked at the end; say the one end state"),
+    ("quantity", r"\b(?:times\s+(?:\d+|two|three|four|five)|(?:\d+|two|three|four|five|several|many)\s+times|twice|thrice)\b",
+     "says how many times: a task is one end state, checked once; say how many cubes or structures it has (e.g. \"two "
+     "towers of three gray cubes\")"),
+    ("contradiction", r"\bboth\s+(?:at|on)\s+(?:the\s+)?(?:bottom|base|top)\s+and\s+(?:at|on)\s+(?:the\s+)?(?:top|bottom|base)\b",
+     "puts one cube at both ends of a tower: a cube stands in one place at the end of the episode; say which end"),
 )
 """Meaning the domain cannot express, by class: (class, pattern over the lower-cased text,
 why; a group named ``w``, where it matched, holds the words to name).  An instruction that

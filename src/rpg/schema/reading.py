@@ -1496,6 +1496,12 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     (re.compile(rf"\s*,?\s+(?:where|in\s+which|so\s+that|such\s+that)\s+the\s+({COLOR_RE})\s+(block|cube)\s+"
                 rf"(?:is|sits|stands|goes|should\s+be|must\s+be|ends\s+up)\s+(at|on)\s+(?:the\s+)?(top|bottom|base)\b"),
      r" with the \1 \2 at the \4"),
+    # "The green cube must be the bottom one", "..., and the red cube is the top one": a cube given an end (it had been
+    # put at the other end)
+    (re.compile(rf"(?:\s*[,.;]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)the\s+({COLOR_RE})\s+(?:block|cube|one)\s+"
+                r"(?:is|(?:should|must|will|has\s+to|needs\s+to)\s+be)\s+the\s+(?:(top|topmost|highest|uppermost)|bottom|base|lowest|bottommost)"
+                r"(?:\s+(?:one|1|block|cube))?\b"),
+     lambda m: f" with a {m.group(1)} block {'on top' if m.group(2) else 'at the bottom'}"),
     # roles: "the top one is white", "the bottom block black", ". The top one is red", "and make the top block red"
     (re.compile(rf"(?:\s*[,.;]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)(?:make\s+(?:sure\s+)?(?:that\s+)?)?the\s+(?:top|topmost|uppermost|highest)"
                 rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?({COLOR_RE})"

@@ -752,7 +752,7 @@ def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
         stack_colors = per_tower
     elif len(colors) == 1 and not with_patches:
         stack_colors = [[colors[0]] * height for _ in range(k)]
-    elif not colors and not with_patches and not matching:
+    elif not colors and not with_patches and not matching and each:
         # "two towers of three cubes": no colour said, so which cubes make which tower is free; cubes of one colour are
         # interchangeable (evaluate_goal tries their assignments), so any two towers of three pass (a red tower and a
         # blue tower had been demanded)
