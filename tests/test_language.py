@@ -1201,7 +1201,6 @@ def test_relations_sharing_an_object_compose():
     ("Build a tower of three blocks using the red, blue, green and white cubes", "asks for a tower of 3"),
     ("Build a tower of three blocks using the red, blue, green and white cubes, all four of them.", "asks for a tower of 3"),
     # each "a pink cube" is one more pink cube (the second merged into the first)
-    ("Place a pink cube on the table, put a cyan cube on it, and then a pink cube on the cyan one.", "contradict|2 times"),
 ])
 def test_a_counted_structure_holds_exactly_its_count(text, match):
     with pytest.raises(ParseError, match=match):
@@ -1937,8 +1936,6 @@ def test_a_wall_whose_layers_are_listed_unevenly_is_refused():
     ("ok so here's what i'm thinking \u2014 a little tower, blue on the bottom, then pink, then another blue on top. nothing fancy",
      ["stack(blue,pink,blue)"]),
     ("need a 2x2 grid of blue cubes for the next run", ["grid(2x2:blue,blue,blue,blue)"]),
-    ("Alright, let's do something fun: a circle made of six cubes, alternating orange and green.",
-     ["circle(green,green,green,orange,orange,orange)"]),
     ("Pop the cyan cube behind the pink one, cheers.", ["behind(cyan,pink)"]),
     ("I was thinking, could we get the brown block next to the black block? That'd be great for my demo.",
      ["next_to(black,brown)"]),
@@ -3913,7 +3910,7 @@ def test_a_repeated_cube_said_with_the_stays_one_reading():
 ])
 def test_a_viewer_other_than_the_robot_is_refused_naming_the_robots_frame(text):
     """The snapshot camera shares the robot's left, the agentview camera mirrors it: another viewer's side is unknown."""
-    with pytest.raises(BadInput, match="robot's left"):
+    with pytest.raises(BadInput, match="viewer other than the robot"):
         parse(text)
 
 
@@ -3990,3 +3987,20 @@ def test_steering_corrections_with_instead_of_still_read():
     parse("Put the red cube next to the blue cube instead of on top.")
     with pytest.raises(BadInput, match="negation"):
         parse("Put the red cube on the blue patch rather than next to the green cube.")
+
+
+def test_a_second_indefinite_cube_of_a_colour_is_another_cube():
+    """"a pink cube on the table, a cyan cube on it, and then a pink cube on the cyan one": two pink cubes (it had been
+    refused as one pink cube said twice)."""
+    assert meaning(parse("Place a pink cube on the table, put a cyan cube on it, and then a pink cube on the cyan one.")) == [
+        "stack(pink,cyan,pink)"]
+
+
+@pytest.mark.parametrize("text", [
+    "Alright, let's do something fun: a circle made of six cubes, alternating orange and green.",
+    "circle of six cubes alternating red and white",
+])
+def test_alternating_colours_round_a_circle_are_refused(text):
+    """InCircle judges where the cubes stand round the circle, not their order: the alternation had been dropped."""
+    with pytest.raises(BadInput, match="not their order round it"):
+        parse(text)

@@ -185,7 +185,8 @@ is not said.  Not read in a steering edit, where "but put them in a row" is the 
 ROBOT_ONLY_RE = (r"\b(?:move|bring|return|send|park|put|position|raise|lower|open|close|hover|lift|rotate|extend|retract|reset)\s+"
                  r"(?:the\s+|your\s+|its\s+|the\s+robot's\s+)?(?:robot(?:ic)?\s+)?(?:grippers?|arms?|end[\s-]?effectors?|hands?|wrists?"
                  r"|fingers?|manipulators?|claws?|tool)\b"
-                 r"|\b(?:home|rest|ready|neutral|initial|parking)\s+(?:position|pose|configuration|posture)\b"
+                 r"|\b(?:home|rest|ready|neutral|parking)\s+(?:position|pose|configuration|posture)\b|\binitial\s+(?:pose|posture)\b"
+                 r"|\binitial\s+(?:position|configuration)\b(?!\s*(?::|-|\u2014|is\b))"  # "Initial configuration: ..." is the cubes' start
                  r"|\bhover(?:s|ed|ing)?\b|\bgo\s+(?:back\s+)?(?:to\s+)?(?:the\s+)?home\b")
 """A motion of the robot alone ("move the gripper back to its home pose", "hover above the green
 patch", "open the gripper"): no goal for the cubes (:data:`INEXPRESSIBLE`'s no_goal class)."""
@@ -2562,6 +2563,24 @@ them is the one said before, not another (:func:`rpg.schema.reading.repeated_ind
 START_WORD_RE = re.compile(r"\b(?:start(?:s|ing)?|initial(?:ly)?|beginning|begin|before|setup|set-up)\b")
 """Words of a label that mark the start state ("Let me describe the start: ...", "Before: ..."): such a label is kept
 (dropping it had made the start the goal)."""
+
+ENDS_IN_PARENTHESES_RE = re.compile(
+    rf"(?i)\b(?P<first>{COLOR_RE})(?:\s+(?:cube|block))?\s*\((?:at\s+the\s+|on\s+the\s+)?(?P<end>bottom|base|top)\)\s*,\s*"
+    rf"(?P<mid>(?:(?:{COLOR_RE})(?:\s+(?:cube|block))?\s*,\s*(?:and\s+)?)*)(?:and\s+|then\s+)?(?P<last>{COLOR_RE})(?:\s+(?:cube|block))?\s*"
+    r"\((?:at\s+the\s+|on\s+)?(?:the\s+)?(?P<end2>top|bottom|base)\)")
+"""A tower listed with its ends in parentheses ("a tower of red (bottom), blue, yellow (top)"): said as the list and its
+direction, "red, blue, yellow (bottom to top)", which the tower and start readers read (it had been refused)."""
+
+
+def ends_in_parentheses(m: re.Match) -> str:
+    """The list of :data:`ENDS_IN_PARENTHESES_RE` with its direction, or the words as they are when both ends are one."""
+    low = {"bottom", "base"}
+    if (m.group("end") in low) == (m.group("end2") in low):
+        return m.group(0)
+    mid = re.sub(r"\s*,\s*(?:and\s+)?", ", ", m.group("mid")).strip(", ")
+    listed = ", ".join(x for x in (m.group("first"), mid, m.group("last")) if x)
+    return f"{listed} ({'bottom to top' if m.group('end') in low else 'top to bottom'})"
+
 
 INDEFINITE_CUBE_RE = re.compile(rf"(?P<pre>^|[,;:.!]\s|\band\s|\bthen\s|\b(?:put|place|set|move|stack|leave|have)\s)"
                                 rf"(?:a|an|one)\s+(?P<c>{COLOR_RE})\s+(?P<n>cube|block|brick|box)\b")

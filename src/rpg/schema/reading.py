@@ -866,6 +866,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         original = original[:echo.start()]
     original = apply_corrections(original)  # "..., sorry, the pink patch": the correction wins
     original = drop_contrasts(original)  # "Not a row, a stack.": the denied alternative excludes nothing more
+    original = lexicon.ENDS_IN_PARENTHESES_RE.sub(lexicon.ends_in_parentheses, original)  # "red (bottom), blue, yellow (top)"
     original = verb_final(original)  # "The 4 cube, the 2 cube's top on, stacking please.": the verb said first
     for pattern, full in lexicon.ORDER_RANGE_RES:  # "small to big": a sort by its two ends
         original = pattern.sub(full, original)

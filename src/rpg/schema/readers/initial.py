@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 from rpg.domain.layouts import stack_layout
 from rpg.errors import BadInput
+from rpg.schema import lexicon
 from rpg.schema.builder import Builder
 from rpg.schema.lexicon import COLOR_RE, MARKUP_RES, NUMBER_WORDS
 from rpg.schema.model import TaskSchema
@@ -70,6 +71,7 @@ the goal, and the goal's cube lost)."""
 GOAL_OPENER_RE = re.compile(r"(?i)^\s*(?:(?:the\s+)?(?:goal|target|task|objective)\s*(?:is\s*(?:to\s+)?|:|-|\u2014)"
                             r"|then\s*,?|now\s*,?|your\s+task\s*(?:is\s+to|:)|(?:at|in)\s+the\s+end\s*[,:]?|finally\s*,?"
                             r"|(?:unstack|dismantle|take\s+apart)\s+(?:it|them|the\s+(?:tower|stack))\s*,?\s*so\s+(?:that\s+)?"
+                            r"|take\s+(?:it|them|the\s+(?:tower|stack))\s+apart\s*,?\s*so\s+(?:that\s+)?"
                             r"|success(?:\s+(?:when|if))?\s*:?)\s*")
 """Words that open the goal after the start ("Goal: ...", "Then ...", "The task is to ...")."""
 
@@ -249,6 +251,7 @@ def split(instruction: str) -> InitialScene | None:
         instruction = pattern.sub(written, instruction)
     instruction = re.sub(r"^\s*[A-Za-z][\w\-]*(?:\s+[\w\-]+){0,3}?\s*(?:\([^)]{0,30}\))?\s*:\s*(?=\S)(?=.*\b(?:starts?|initial(?:ly)?)\b)", "",
                          instruction.strip())  # "# goal (unstack): the pink cube starts ...": its label
+    instruction = lexicon.ENDS_IN_PARENTHESES_RE.sub(lexicon.ends_in_parentheses, instruction)  # "red (bottom), blue, yellow (top)"
     instruction = ROBOT_STARTS_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     instruction = FROM_START_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     instruction = START_STRUCTURE_RE.sub(r"Initially: a \1 of ", instruction.strip())
