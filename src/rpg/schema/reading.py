@@ -663,6 +663,17 @@ def _corrected(before: str, fix: str) -> str | None:
     return None
 
 
+def _relation_object(phrase: str) -> str | None:
+    """The colour or label naming a relation phrase's object ("left of the blue cube" -> "blue"), None if it names none."""
+    m = re.search(r"(?i)\b(?:the\s+)?([a-z]+)\s+(?:cube|block|one)$", phrase)
+    return m.group(1) if m else None
+
+
+def _relation_head(phrase: str) -> str:
+    """A relation phrase's head word ("to the left of it" -> "left", "far apart" -> "far")."""
+    return next((w for w in re.findall(r"[a-z]+", phrase.lower()) if w not in ("to", "the", "in", "of", "top")), "")
+
+
 def _same_slot(kind: str, pos: str, neg: str) -> bool:
     """Whether the denied alternative ``neg`` stands in the slot of the meant one ``pos``, so that ``pos`` already
     excludes it: for two cubes one on the other, the same two colours; for a relation, the same object (or a pronoun
@@ -672,10 +683,9 @@ def _same_slot(kind: str, pos: str, neg: str) -> bool:
     if kind == "place":
         return _places_exclusive(pos, neg)
     if kind == "relation":
-        obj = lambda t: (re.search(r"(?i)\b(?:the\s+)?([a-z]+)\s+(?:cube|block|one)$", t) or [None, None])[1]
-        head = lambda t: next((w for w in re.findall(r"[a-z]+", t.lower()) if w not in ("to", "the", "in", "of", "top")), "")
-        heads = {head(pos), head(neg)}
-        return (obj(neg) is None or obj(pos) is None or obj(neg).lower() == obj(pos).lower()) and heads in lexicon.CONTRAST_EXCLUSIVE
+        a, b = _relation_object(pos), _relation_object(neg)
+        heads = {_relation_head(pos), _relation_head(neg)}
+        return (a is None or b is None or a.lower() == b.lower()) and heads in lexicon.CONTRAST_EXCLUSIVE
     return True
 
 
