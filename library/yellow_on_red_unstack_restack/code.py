@@ -26,9 +26,9 @@ class StackRedBlockOnTopYellowBlock3c219cTask(BlockTask):
     NAME = 'stack_red_block_on_top_yellow_block_3c219c'
     INSTRUCTION = 'Stack the red block on top of the yellow block; yellow starts stacked on red'
     PARAPHRASES = (
-        'Tower bottom to top: yellow, red; initially yellow is stacked on red. Put the red cube on top of the yellow cube. The goal is a stack.',
-        'Goal: tower bottom to top: yellow, red; initially yellow is stacked on red. Put the red cube on top of the yellow cube. The goal is a stack.',
-        'Arrange the cubes so that the final scene shows tower bottom to top: yellow, red; initially yellow is stacked on red. Put the red cube on top of the yellow cube. The goal is a stack.',
+        'Tower bottom to top: yellow, red; initially yellow is stacked on red. The goal is a stack. Put the red cube on top of the yellow cube.',
+        'Goal: tower bottom to top: yellow, red; initially yellow is stacked on red. The goal is a stack. Put the red cube on top of the yellow cube.',
+        'Arrange the cubes so that the final scene shows tower bottom to top: yellow, red; initially yellow is stacked on red. The goal is a stack. Put the red cube on top of the yellow cube.',
     )
 
     def assets(self):
