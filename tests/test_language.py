@@ -4004,3 +4004,23 @@ def test_alternating_colours_round_a_circle_are_refused(text):
     """InCircle judges where the cubes stand round the circle, not their order: the alternation had been dropped."""
     with pytest.raises(BadInput, match="not their order round it"):
         parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    # RFC-style capitals, endearments, Indian and Singapore English closings, the robot's frame said in passing
+    ("The red cube MUST be stacked on the blue cube. The green cube SHALL be placed on top of the red cube.",
+     ["stack(blue,red,green)"]),
+    ("Let's make a tall tower, honey: the green one first at the bottom, then the blue one, then the pink one at the very "
+     "top!", ["stack(green,blue,pink)"]),
+    ("Put the purple cube on the white patch one time.", ["on_patch(purple,patch:white)"]),
+    ("Put the red cube to the right of the blue cube (right as seen from the robot).", ["right_of(red,blue)"]),
+    ("Spell NOT with the letter cubes.", ["line[left_to_right](N,O,T)", "reads(N,O,T;direction=left_to_right,face=up,text=NOT)"]),
+])
+def test_stranger29_voices_read(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_negation_in_capitals_is_a_negation():
+    """A capital NOT had passed as a word to spell and been refused only as an unplaced capital."""
+    with pytest.raises(BadInput, match="negation"):
+        parse("The purple cube MUST NOT be next to the cyan cube.")

@@ -48,6 +48,7 @@ quick quickly haha lol good love exercise cheers tbh imo itself kindly tomorrow 
 someone somebody anyone anybody everyone everybody friends guys folks buddy boys girls kids children
 task episode eval evaluation benchmark dataset proposal experiment
 fwiw lowkey ngl btw sim simulator simulation
+honey sweetie sweetheart darling dear abeg
 """.split())
 """Further words with no meaning for the goal, each checked not to change what a task asks:
 the names of what is being written ("new eval task:", "for this experiment": every task
@@ -1083,6 +1084,12 @@ FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      lambda m: m.group(0) if re.search(r"\bpatch", m.string[:m.start()] + m.string[m.end():]) else ""),
     (re.compile(r"(?:^|(?<=[.;!]\s))nothing\s+else(?:\s+on\s+the\s+table)?\s+(?:needs|has|is)\s+to\s+(?:move|change|be\s+moved)\s*[.!]?"), ""),
     (re.compile(r"\s*[,.;]\s*(?:and\s+)?nothing\s+else\s*[.!]?\s*$"), ""),
+    # Indian English "one time" at the close ("Put the purple cube on the white patch one time."): a request, no count
+    (re.compile(r"\s+one\s+time\s*(?=[.!]?\s*$)"), ""),
+    # Singapore English "any order also can": any order
+    (re.compile(r"\s*[,;]?\s*\bany\s+order\s+also\s+(?:can|ok|okay|fine)\b"), " in any order"),
+    # "(right as seen from the robot)": rpg's own frame, said in passing
+    (re.compile(r"\s*\(\s*(?:(?:left|right)\s+)?(?:as\s+)?(?:seen|viewed)\s+from\s+the\s+robot(?:'s\s+(?:side|view|base))?\s*\)"), ""),
     # thanks before the answer ("ty in advance"), a chat's "outta" ("make a circle outta 6 cubes")
     (re.compile(r"\s*[,.;]?\s*\b(?:ty|thx|thanks|thank\s+you)\s+in\s+advance\b"), ""),
     (re.compile(r"\boutta\b"), "out of"),
@@ -1696,7 +1703,11 @@ DASH_LABEL_RE = re.compile(r"^\s*(?P<label>[a-z@][a-z'@#\d ]{0,60}?)\s*(?:->|=>|
 ..."): dropped by :func:`rpg.schema.reading.normalize_words` when it names nothing of the task and its first word is a
 heading's (:data:`DASH_LABEL_WORDS`)."""
 
-CAPS_JARGON = frozenset("todo fyi hw wip nb tbd ps".split())
+CAPS_NEVER_SPELLED = frozenset("not no never nor none without except unless if when only until while".split())
+"""Words in capitals that are never a spelled word ("The purple cube MUST NOT be next to ..."): their meaning (a
+negation, a condition) is refused as it is in lower case (a capital NOT had passed as a word to spell)."""
+
+CAPS_JARGON = frozenset("todo fyi hw wip nb tbd ps must shall should may required recommended optional".split())
 """Words of a note written in capitals ("TODO eval set: ...", "Robotics HW - goal: ...") that say nothing of a task: no
 unread capitals (:func:`rpg.schema.accounting.unaccounted`)."""
 

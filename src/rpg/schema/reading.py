@@ -997,7 +997,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.ARROW_COLOUR_RE.sub(r"the \1 cube in the ", text)
     text = lexicon.ARROW_RE.sub(r"\1 in the ", text)
     text = lexicon.ARROW_PATCH_RE.sub(r"put the \1 cube on the ", text)
-    spelled = {w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)}  # "spell BOOK": a word, not a book
+    spelled = ({w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)} - lexicon.CAPS_NEVER_SPELLED) | {  # "spell BOOK": a word
+        w.lower() for w in re.findall(r"(?i:\b(?:spell(?:s|ing)?|reads?|word)\s+(?:the\s+word\s+)?)([A-Z]{2,})\b", original)}
     text = lexicon.ROBOT_VIEWPOINT_RE.sub("", text)  # "From the robot's point of view, ...": rpg's own frame
     refused = [(kind, ws, why) for kind, ws, why in _inexpressible(text)
                if not all(w in spelled for w in ws)]  # refused below, with what the unknown words say as well
