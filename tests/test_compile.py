@@ -325,8 +325,9 @@ def test_same_instruction_same_artifact_across_processes(tmp_path):
      "the cubes read a correct equation left to right (e.g. 2+3=5)"),
     ("Create a row of four blocks with colors red, blue, red, blue.",
      "line of red_1, blue_1, red_2, blue_2 in that order from either end"),
-    ("Arrange 6 blocks in two stacks of three.", "a stack of red_1, red_2, red_3 in any order; a stack of blue_1, blue_2, blue_3 in any order"),
-    ("Build 3 stacks, 2 blocks high.", "a stack of red_1, red_2 in any order; a stack of blue_1, blue_2 in any order; a stack of green_1, green_2 in any order"),
+    # no colour said: the cubes are of one colour, so which make which stack is free (issue 30: no goal stricter than the words)
+    ("Arrange 6 blocks in two stacks of three.", "a stack of red_1, red_2, red_3 in any order; a stack of red_4, red_5, red_6 in any order"),
+    ("Build 3 stacks, 2 blocks high.", "a stack of red_1, red_2 in any order; a stack of red_3, red_4 in any order; a stack of red_5, red_6 in any order"),
     ("Separate the letters from the numbers.", "2 separate piles, one per type (letters, digits)"),
     ("Place the red cube in the middle of the table.", "red in the center of the workspace"),
     ("Put the blue block in the far left corner of the table.", "blue in the back left corner of the workspace"),

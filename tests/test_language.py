@@ -4024,3 +4024,32 @@ def test_a_negation_in_capitals_is_a_negation():
     """A capital NOT had passed as a word to spell and been refused only as an unplaced capital."""
     with pytest.raises(BadInput, match="negation"):
         parse("The purple cube MUST NOT be next to the cyan cube.")
+
+
+@pytest.mark.parametrize("text", [
+    # a second hostile tester's silent errors of this session's readings (and older ones next to them): refused now
+    "The red cube MAY be on the blue patch.",  # a capital MAY had been a requirement
+    "The red cube MUST be on the blue cube OR on the green cube.",  # a capital OR had become a three-cube tower
+    "Put the red cube left of the blue cube (right as seen from the robot).",  # a conflicting viewpoint had been dropped
+    "a tower of red, blue (bottom), yellow",  # an end on a middle cube
+    "red (bottom), blue, yellow (bottom)",
+    "Build four towers of one cube.",  # had been four towers of four
+    "two towers of three cubes of different colours",  # had been all red
+    "Put the red, green and blue cubes next to each other.",  # a chain had been made up
+])
+def test_second_attack_classes_are_refused(text):
+    with pytest.raises(BadInput):
+        parse(text)
+
+
+@pytest.mark.parametrize("text,expected", [
+    ("Stack the red, blue and green cubes; the green cube must be the top one and the red cube the bottom one.",
+     ["stack(red,blue,green)"]),  # a listed colour's end is not one more cube
+    ("Build a tower of red (top), blue, yellow.", ["stack(yellow,blue,red)"]),  # had been reversed
+    ("new eval task -> stack: white (bottom) / red / white (top)", ["stack(white,red,white)"]),
+    ("Make two piles of three blocks, one of red blocks and one of blue blocks.", ["piles(blue,blue,blue,red,red,red;by=color)"]),
+    ("Place the two black cubes next to each other and the white cube far from them.",
+     ["far_from(black,white)", "far_from(black,white)", "next_to(black,black)"]),  # a tower had been made up for "them"
+])
+def test_second_attack_classes_read(text, expected):
+    assert meaning(parse(text)) == expected

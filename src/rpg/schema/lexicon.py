@@ -1089,7 +1089,8 @@ FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # Singapore English "any order also can": any order
     (re.compile(r"\s*[,;]?\s*\bany\s+order\s+also\s+(?:can|ok|okay|fine)\b"), " in any order"),
     # "(right as seen from the robot)": rpg's own frame, said in passing
-    (re.compile(r"\s*\(\s*(?:(?:left|right)\s+)?(?:as\s+)?(?:seen|viewed)\s+from\s+the\s+robot(?:'s\s+(?:side|view|base))?\s*\)"), ""),
+    (re.compile(r"\s*\(\s*(?:(?P<side>left|right)\s+)?(?:as\s+)?(?:seen|viewed)\s+from\s+the\s+robot(?:'s\s+(?:side|view|base))?\s*\)"),
+     lambda m: "" if not m.group("side") or re.search(rf"\b{m.group('side')}\b", m.string[:m.start()]) else m.group(0)),
     # thanks before the answer ("ty in advance"), a chat's "outta" ("make a circle outta 6 cubes")
     (re.compile(r"\s*[,.;]?\s*\b(?:ty|thx|thanks|thank\s+you)\s+in\s+advance\b"), ""),
     (re.compile(r"\boutta\b"), "out of"),
@@ -1703,11 +1704,16 @@ DASH_LABEL_RE = re.compile(r"^\s*(?P<label>[a-z@][a-z'@#\d ]{0,60}?)\s*(?:->|=>|
 ..."): dropped by :func:`rpg.schema.reading.normalize_words` when it names nothing of the task and its first word is a
 heading's (:data:`DASH_LABEL_WORDS`)."""
 
-CAPS_NEVER_SPELLED = frozenset("not no never nor none without except unless if when only until while".split())
+DIFFERENT_WORDS: tuple[str, ...] = ("different", "distinct", "various", "assorted", "varied", "mixed", "differing", "unique")
+"""Words that say cubes differ without naming how ("two towers of three cubes of different colours"): with no colour
+named, refused rather than given made-up colours (:mod:`rpg.schema.readers`)."""
+
+CAPS_NEVER_SPELLED = frozenset("not no never nor none without except unless if when only until while or either may maybe optional "
+                               "optionally".split())
 """Words in capitals that are never a spelled word ("The purple cube MUST NOT be next to ..."): their meaning (a
 negation, a condition) is refused as it is in lower case (a capital NOT had passed as a word to spell)."""
 
-CAPS_JARGON = frozenset("todo fyi hw wip nb tbd ps must shall should may required recommended optional".split())
+CAPS_JARGON = frozenset("todo fyi hw wip nb tbd ps must shall should required".split())
 """Words of a note written in capitals ("TODO eval set: ...", "Robotics HW - goal: ...") that say nothing of a task: no
 unread capitals (:func:`rpg.schema.accounting.unaccounted`)."""
 
@@ -2576,11 +2582,31 @@ START_WORD_RE = re.compile(r"\b(?:start(?:s|ing)?|initial(?:ly)?|beginning|begin
 (dropping it had made the start the goal)."""
 
 ENDS_IN_PARENTHESES_RE = re.compile(
-    rf"(?i)\b(?P<first>{COLOR_RE})(?:\s+(?:cube|block))?\s*\((?:at\s+the\s+|on\s+the\s+)?(?P<end>bottom|base|top)\)\s*,\s*"
-    rf"(?P<mid>(?:(?:{COLOR_RE})(?:\s+(?:cube|block))?\s*,\s*(?:and\s+)?)*)(?:and\s+|then\s+)?(?P<last>{COLOR_RE})(?:\s+(?:cube|block))?\s*"
+    rf"(?i)\b(?P<first>{COLOR_RE})(?:\s+(?:cube|block))?\s*\((?:at\s+the\s+|on\s+the\s+)?(?P<end>bottom|base|top)\)\s*[,/]\s*"
+    rf"(?P<mid>(?:(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:\s*\((?:in\s+the\s+)?middle\))?\s*[,/]\s*(?:and\s+)?)*)(?:and\s+|then\s+)?"
+    rf"(?P<last>{COLOR_RE})(?:\s+(?:cube|block))?\s*"
     r"\((?:at\s+the\s+|on\s+)?(?:the\s+)?(?P<end2>top|bottom|base)\)")
 """A tower listed with its ends in parentheses ("a tower of red (bottom), blue, yellow (top)"): said as the list and its
 direction, "red, blue, yellow (bottom to top)", which the tower and start readers read (it had been refused)."""
+
+
+ONE_END_IN_PARENTHESES_RE = re.compile(
+    rf"(?i)\b(?P<first>{COLOR_RE})(?:\s+(?:cube|block))?\s*(?:\((?:at\s+the\s+|on\s+)?(?:the\s+)?(?P<end>bottom|base|top)\))?\s*"
+    rf"(?P<rest>(?:(?:\s*[,/]\s*(?:and\s+)?|\s+and\s+|\s+then\s+)(?:{COLOR_RE})(?:\s+(?:cube|block))?)+)"
+    r"(?:\s*\((?:at\s+the\s+|on\s+)?(?:the\s+)?(?P<end2>bottom|base|top)\)(?!\s*(?:[,/]\s*(?:and\s+)?|\s+and\s+|\s+then\s+)"
+    rf"(?:{COLOR_RE})\b))?")
+"""A tower listed with one end in parentheses, on its first or its last item ("a tower of red (top), blue, yellow",
+"red, blue, yellow (bottom)"): said as the list and its direction (the end had been dropped and the list read from the
+bottom: reversed)."""
+
+
+def one_end_in_parentheses(m: re.Match) -> str:
+    """The list of :data:`ONE_END_IN_PARENTHESES_RE` with its direction; as it is when it says no end or both."""
+    if bool(m.group("end")) == bool(m.group("end2")):
+        return m.group(0)
+    items = [m.group("first")] + re.findall(rf"(?i)\b(?:{COLOR_RE})\b", m.group("rest"))
+    first_low = (m.group("end") or "") in ("bottom", "base") or (m.group("end2") or "") == "top"
+    return f"{', '.join(items)} ({'bottom to top' if first_low else 'top to bottom'})"
 
 
 def ends_in_parentheses(m: re.Match) -> str:
@@ -2588,7 +2614,7 @@ def ends_in_parentheses(m: re.Match) -> str:
     low = {"bottom", "base"}
     if (m.group("end") in low) == (m.group("end2") in low):
         return m.group(0)
-    mid = re.sub(r"\s*,\s*(?:and\s+)?", ", ", m.group("mid")).strip(", ")
+    mid = re.sub(r"\s*[,/]\s*(?:and\s+)?", ", ", re.sub(r"(?i)\s*\((?:in\s+the\s+)?middle\)", "", m.group("mid"))).strip(", ")
     listed = ", ".join(x for x in (m.group("first"), mid, m.group("last")) if x)
     return f"{listed} ({'bottom to top' if m.group('end') in low else 'top to bottom'})"
 

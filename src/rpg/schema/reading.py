@@ -876,7 +876,12 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         original = original[:echo.start()]
     original = apply_corrections(original)  # "..., sorry, the pink patch": the correction wins
     original = drop_contrasts(original)  # "Not a row, a stack.": the denied alternative excludes nothing more
-    original = lexicon.ENDS_IN_PARENTHESES_RE.sub(lexicon.ends_in_parentheses, original)  # "red (bottom), blue, yellow (top)"
+    original = lexicon.ONE_END_IN_PARENTHESES_RE.sub(
+        lexicon.one_end_in_parentheses, lexicon.ENDS_IN_PARENTHESES_RE.sub(lexicon.ends_in_parentheses, original))
+    left = re.search(r"(?i)\b(?:" + COLOR_RE + r")(?:\s+(?:cube|block))?\s*\((?:at\s+the\s+|on\s+)?(?:the\s+)?(?:bottom|base|top)\)", original)
+    if left:  # "red, blue (bottom), yellow", "red (bottom), blue, yellow (bottom)": an end on a middle cube, or one end twice
+        raise ParseError(f"'{left.group(0)}' in \"{original[:80]}\" gives a cube an end of the tower that its place in the list does "
+                         "not have (or both ends one side); say the tower from bottom to top, or use --model")  # "red (bottom), blue, yellow (top)"
     original = verb_final(original)  # "The 4 cube, the 2 cube's top on, stacking please.": the verb said first
     for pattern, full in lexicon.ORDER_RANGE_RES:  # "small to big": a sort by its two ends
         original = pattern.sub(full, original)
@@ -1513,7 +1518,8 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     (re.compile(rf"(?:\s*[,.;]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)the\s+({COLOR_RE})\s+(?:block|cube|one)\s+"
                 r"(?:is|(?:should|must|will|has\s+to|needs\s+to)\s+be)\s+the\s+(?:(top|topmost|highest|uppermost)|bottom|base|lowest|bottommost)"
                 r"(?:\s+(?:one|1|block|cube))?\b"),
-     lambda m: f" with a {m.group(1)} block {'on top' if m.group(2) else 'at the bottom'}"),
+     lambda m: m.group(0) if len(re.findall(rf"\b{m.group(1)}\b", m.string)) > 1
+     else f" with a {m.group(1)} block {'on top' if m.group(2) else 'at the bottom'}"),  # (a colour listed too: left as said)
     # roles: "the top one is white", "the bottom block black", ". The top one is red", "and make the top block red"
     (re.compile(rf"(?:\s*[,.;]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)(?:make\s+(?:sure\s+)?(?:that\s+)?)?the\s+(?:top|topmost|uppermost|highest)"
                 rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?({COLOR_RE})"

@@ -96,6 +96,7 @@ class RelationalReading:
     """The cubes a "both" or a relation after "next to each other" refers to: the last pairwise
     relation's two cubes, or the cubes said next to each other (within the current clause)."""
     group_end: int = -1
+    group_names: list[str] = field(default_factory=list)  # the cubes of a counted group said "each other" ("the two black cubes")
     """Where in the clause :attr:`group` was said (the end of its last word)."""
 
     def shared_subjects(self, clause: str, rm: re.Match, ms: list[Mention]) -> list[Mention]:
@@ -132,6 +133,7 @@ class RelationalReading:
         ms = mentions_in(clause)
         related: list[Mention] = []  # the subject of this clause's relation, if it has one
         self.group, self.group_end = [], -1
+        self.group_names = []
         # "with a red block on bottom and blue on top"
         for mn in ms:
             tail = clause[mn.end: mn.end + 22]
@@ -190,8 +192,15 @@ class RelationalReading:
                                          "use --model")
                     else:
                         names = [self.obj(left[-1], i) for i in range(max(left[-1].count, 2))]
+                        self.group_names = list(names)  # "the two black cubes next to each other and the white cube far from them"
                     if kind == "on":
                         self.on_edges += [(u, lo) for lo, u in itertools.pairwise(names)]
+                    elif kind == "next_to" and len(names) > 2:
+                        # "put the red, green and blue cubes next to each other": a row, a cluster, each beside each?
+                        # (a chain had been read: the middle one made up, the two ends left apart)
+                        raise ParseError(f"'next to each other' of {len(names)} cubes does not say how they stand (in a row, "
+                                         "which in the middle?); say a row (e.g. \"a row of red, green and blue\") or the pairs, "
+                                         "or use --model")
                     elif kind == "far_from":  # "the red and blue cubes far from each other": every two of them
                         self.rels += [FarFrom(a, c) for a, c in itertools.combinations(names, 2)]
                         self.subjects.update((mn.color, mn.label) for mn in group)
@@ -225,6 +234,12 @@ class RelationalReading:
                 self.subjects.add((a_m.color, a_m.label))
                 self.rels += [_RELATIONS[kind](a, self.obj(mn)) for mn in self.group]
                 self.previous[:] = [a, self.obj(self.group[-1])]
+                continue
+            if b_m.ref == "@them" and len(self.group_names) > 1 and not self.stackish and kind in _RELATIONS:
+                a = self.obj(a_m)  # "the two black cubes next to each other and the white cube far from them": each black cube
+                self.subjects.add((a_m.color, a_m.label))
+                self.rels += [_RELATIONS[kind](a, n) for n in self.group_names]
+                self.previous[:] = [a, self.group_names[-1]]
                 continue
             if b_m.ref == "@them" and not self.on_edges and self.previous:
                 b_m = Mention(b_m.start, b_m.end, None, None, 1, ref="@it")
@@ -741,6 +756,9 @@ def _per_tower_colors(text: str, k: int, height: int) -> list[list[str]] | None:
 def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
     colors = list(dict.fromkeys(f.color_list()))
     each = re.search(r"\b(?:towers|stacks)\s+(?:of|with)\s+(\d+)\b|\b(\d+)\s+(?:blocks?|cubes?)\s+(?:high|tall|each)\b", f.text)
+    if each and int(each.group(1) or each.group(2)) < 2:  # "four towers of one cube" (it had been four towers of four)
+        raise ParseError(f"\"{f.original[:80]}\" asks for towers of one cube: a tower needs two cubes or more; say how many "
+                         "cubes each tower has")
     height = int(each.group(1) or each.group(2)) * k if each else stated_count(f, "block|cube", default=None)
     matching = f.has("matching", "same color", "color-specific", "respective", "each stack is the same", "colored goal")
     with_patches = f.has("patch", "patches", "target", "targets")
@@ -752,6 +770,10 @@ def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
         stack_colors = per_tower
     elif len(colors) == 1 and not with_patches:
         stack_colors = [[colors[0]] * height for _ in range(k)]
+    elif not colors and not with_patches and not matching and each and f.has(*lexicon.DIFFERENT_WORDS):
+        # "two towers of three cubes of different colours": which colours is not said (they had been made all red)
+        raise ParseError(f"\"{f.original[:80]}\" says the cubes differ but names no colour; say the colours (e.g. \"one tower of "
+                         "red cubes and one of blue cubes\"), or use --model")
     elif not colors and not with_patches and not matching and each:
         # "two towers of three cubes": no colour said, so which cubes make which tower is free; cubes of one colour are
         # interchangeable (evaluate_goal tries their assignments), so any two towers of three pass (a red tower and a

@@ -36,7 +36,7 @@ from rpg.domain.predicates import (
     Stack,
     UnorderedStack,
 )
-from rpg.schema import clauses
+from rpg.schema import clauses, lexicon
 from rpg.schema.builder import DEFAULT_COLORS, Builder
 from rpg.schema.lexicon import (
     COLOR_RE,
@@ -510,6 +510,8 @@ def recognize_piles(f: Features, b: Builder) -> bool:
         if k is None and not several and _one_pile(f, b, strict=False):  # "pile four cubes": one pile of them
             return True
         sized = re.search(r"\b(\d+)\s+(?:piles|heaps|groups|clusters|bunches)\s+of\s+(\d+)\b", f.text)
+        if sized and not f.color_list() and not per_color and f.has(*lexicon.DIFFERENT_WORDS):
+            raise ParseError(f"\"{f.original[:80]}\" says the cubes differ but names no colour; say the colours, or use --model")
         if sized and not f.color_list() and not per_color:
             # "two piles of three cubes": no colour said, so which cubes share a pile is free; cubes of one colour are
             # interchangeable (evaluate_goal tries their assignments), so any split into piles of three passes (two piles
@@ -537,6 +539,8 @@ def recognize_piles(f: Features, b: Builder) -> bool:
             each = re.search(r"\b(\d+)\s+(?:of\s+)?each\b|\beach\s+(?:with\s+|of\s+)?(\d+)\b", f.text)  # "red, green, blue, 2 each"
             per = stated_count(f, default=None)
             per = int(each.group(1) or each.group(2)) if each else max(2, per // len(colors)) if per else PILE_UNSAID_COUNT
+            if sized and int(sized.group(1)) == len(colors):  # "two piles of three blocks, one of red and one of blue": 3 each
+                per = int(sized.group(2))
             groups = [[b.cube(c) for _ in range(per)] for c in colors]
         by = "color"
     outliers = outlier_count(f)
