@@ -195,9 +195,10 @@ class RelationalReading:
                         self.group_names = list(names)  # "the two black cubes next to each other and the white cube far from them"
                     if kind == "on":
                         self.on_edges += [(u, lo) for lo, u in itertools.pairwise(names)]
-                    elif kind == "next_to" and len(names) > 2:
+                    elif kind == "next_to" and len(names) > 2 and len(group) > 1:
                         # "put the red, green and blue cubes next to each other": a row, a cluster, each beside each?
-                        # (a chain had been read: the middle one made up, the two ends left apart)
+                        # (a chain had been read: the middle one made up, the two ends left apart; of one colour, as in
+                        # "three blue cubes side by side", any cube may stand in the middle and the chain stays)
                         raise ParseError(f"'next to each other' of {len(names)} cubes does not say how they stand (in a row, "
                                          "which in the middle?); say a row (e.g. \"a row of red, green and blue\") or the pairs, "
                                          "or use --model")
