@@ -4053,3 +4053,9 @@ def test_second_attack_classes_are_refused(text):
 ])
 def test_second_attack_classes_read(text, expected):
     assert meaning(parse(text)) == expected
+
+
+def test_a_goal_opened_twice_after_a_start_is_read():
+    """"Task: unstack it so that ...": the label and the unstacking both open the goal (only the label had been taken)."""
+    assert meaning(parse("Initial state: the red cube sits on the green cube. Task: unstack it so that the red cube is on "
+                         "the table.")) == ["on_table(red)", "start:stack(green,red)"]

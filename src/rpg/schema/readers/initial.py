@@ -280,7 +280,8 @@ def split(instruction: str) -> InitialScene | None:
         if m and not goal:
             start.append(s[m.end():])
         else:
-            goal.append(GOAL_OPENER_RE.sub("", s, count=1))
+            opened = GOAL_OPENER_RE.sub("", s, count=1)
+            goal.append(GOAL_OPENER_RE.sub("", opened, count=1) if opened != s else opened)  # "Goal: take the tower apart so ..."
     if not start:
         return None
     stacks = _facts(" , ".join(start))
