@@ -790,7 +790,7 @@ HEIGHT_WORDS = r"(?:(?:blocks?|cubes?|stor(?:y|ey|ies|eys)|levels?|tiers?|layers
 
 HEIGHT_SAID_RE = re.compile(r"(?<![\w.])(?P<n>\d+)(?:\s+|-)(?:(?:(?:blocks?|cubes?|bricks?|stor(?:y|ey|ies|eys)|levels?|tiers?|layers?"
                             r"|floors?)(?:\s+|-))?(?:high|tall)\b|(?:stor(?:y|ey|ies|eys)|levels?|tiers?|layers?|floors?)\b(?!\s+(?:of|high|tall)\b))")
-"""A height said in cubes ("3 high", "4 cubes tall", "2-storey") that no rewrite turned into a structure's count:
+"""A height said in cubes ("3 high", "4 cubes tall", "2-storey", "4 layers") that no rewrite turned into a structure's count:
 some tower of the goal must have that many cubes, or a layered structure that many layers (mention accounting,
 :mod:`rpg.schema.accounting`; "a tower of gray cubes, 3 high" had been a tower of two)."""
 
@@ -2607,6 +2607,17 @@ def one_end_in_parentheses(m: re.Match) -> str:
     items = [m.group("first")] + re.findall(rf"(?i)\b(?:{COLOR_RE})\b", m.group("rest"))
     first_low = (m.group("end") or "") in ("bottom", "base") or (m.group("end2") or "") == "top"
     return f"{', '.join(items)} ({'bottom to top' if first_low else 'top to bottom'})"
+
+
+def tower_ends_said(text: str) -> str:
+    """``text`` with a tower's ends said in parentheses written as its list and direction (:data:`ENDS_IN_PARENTHESES_RE`
+    for both ends, then :data:`ONE_END_IN_PARENTHESES_RE` for one); used on the goal and on a stated start alike."""
+    return ONE_END_IN_PARENTHESES_RE.sub(one_end_in_parentheses, ENDS_IN_PARENTHESES_RE.sub(ends_in_parentheses, text))
+
+
+END_LEFT_IN_PARENTHESES_RE = re.compile(rf"(?i)\b(?:{COLOR_RE})(?:\s+(?:cube|block))?\s*\((?:at\s+the\s+|on\s+)?(?:the\s+)?"
+                                        r"(?:bottom|base|top)\)")
+"""An end in parentheses that :func:`tower_ends_said` could not place (on a middle cube, or one end twice): refused."""
 
 
 def ends_in_parentheses(m: re.Match) -> str:

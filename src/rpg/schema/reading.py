@@ -677,7 +677,8 @@ def _relation_head(phrase: str) -> str:
 def _same_slot(kind: str, pos: str, neg: str) -> bool:
     """Whether the denied alternative ``neg`` stands in the slot of the meant one ``pos``, so that ``pos`` already
     excludes it: for two cubes one on the other, the same two colours; for a relation, the same object (or a pronoun
-    for it, or none); any two structures, places or orders of one kind exclude each other."""
+    for it, or none) and a pair of :data:`lexicon.CONTRAST_EXCLUSIVE`; for places, two that share no part of the table
+    (:func:`_places_exclusive`); any two structures or orders exclude each other."""
     if kind == "pair":
         return sorted(re.findall(rf"(?i)\b(?:{COLOR_RE})\b", pos.lower())) == sorted(re.findall(rf"(?i)\b(?:{COLOR_RE})\b", neg.lower()))
     if kind == "place":
@@ -876,9 +877,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         original = original[:echo.start()]
     original = apply_corrections(original)  # "..., sorry, the pink patch": the correction wins
     original = drop_contrasts(original)  # "Not a row, a stack.": the denied alternative excludes nothing more
-    original = lexicon.ONE_END_IN_PARENTHESES_RE.sub(
-        lexicon.one_end_in_parentheses, lexicon.ENDS_IN_PARENTHESES_RE.sub(lexicon.ends_in_parentheses, original))
-    left = re.search(r"(?i)\b(?:" + COLOR_RE + r")(?:\s+(?:cube|block))?\s*\((?:at\s+the\s+|on\s+)?(?:the\s+)?(?:bottom|base|top)\)", original)
+    original = lexicon.tower_ends_said(original)  # "red (bottom), blue, yellow (top)"
+    left = lexicon.END_LEFT_IN_PARENTHESES_RE.search(original)
     if left:  # "red, blue (bottom), yellow", "red (bottom), blue, yellow (bottom)": an end on a middle cube, or one end twice
         raise ParseError(f"'{left.group(0)}' in \"{original[:80]}\" gives a cube an end of the tower that its place in the list does "
                          "not have (or both ends one side); say the tower from bottom to top, or use --model")  # "red (bottom), blue, yellow (top)"

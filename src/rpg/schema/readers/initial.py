@@ -251,8 +251,7 @@ def split(instruction: str) -> InitialScene | None:
         instruction = pattern.sub(written, instruction)
     instruction = re.sub(r"^\s*[A-Za-z][\w\-]*(?:\s+[\w\-]+){0,3}?\s*(?:\([^)]{0,30}\))?\s*:\s*(?=\S)(?=.*\b(?:starts?|initial(?:ly)?)\b)", "",
                          instruction.strip())  # "# goal (unstack): the pink cube starts ...": its label
-    instruction = lexicon.ONE_END_IN_PARENTHESES_RE.sub(
-        lexicon.one_end_in_parentheses, lexicon.ENDS_IN_PARENTHESES_RE.sub(lexicon.ends_in_parentheses, instruction))  # "red (bottom), blue, yellow (top)"
+    instruction = lexicon.tower_ends_said(instruction)  # "red (bottom), blue, yellow (top)"
     instruction = ROBOT_STARTS_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     instruction = FROM_START_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     instruction = START_STRUCTURE_RE.sub(r"Initially: a \1 of ", instruction.strip())
