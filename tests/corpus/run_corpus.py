@@ -64,7 +64,8 @@ STRANGER_SETS = {
     "stranger27": ("stranger27.yaml", "STRANGER set 27 (stranger27.yaml, development material)"),
     "stranger28": ("stranger28.yaml", "STRANGER set 28 (stranger28.yaml, development material, first run at the twentieth session's start)"),
     "stranger29": ("stranger29.yaml", "STRANGER set 29 (stranger29.yaml, development material, read from the twentieth session's middle)"),
-    "stranger30": ("stranger30.yaml", "STRANGER set 30 (stranger30.yaml, second transfer measure of the twentieth session: aggregates only until its end)"),
+    "stranger30": ("stranger30.yaml", "STRANGER set 30 (stranger30.yaml, development material, read from the twenty-first session's start)"),
+    "stranger31": ("stranger31.yaml", "STRANGER set 31 (stranger31.yaml, transfer measure of the twenty-first session: aggregates only until its end)"),
 }
 SPLITS = HERE / "splits.yaml"
 
