@@ -244,6 +244,11 @@ def _restacked(schema, order):
     ("Put the red, blue and green blocks on top of each other",
      [("red", "blue", "green"), ("green", "red", "blue"), ("blue", "green", "red")], []),
     ("Stack the red and blue blocks on the green patch", [("red", "blue"), ("blue", "red")], []),
+    # unnamed blocks on a patch: the patch's colour names no cube, so any of them may stand on the patch (the first had
+    # been the patch's colour and demanded at the bottom)
+    ("Stack two blocks on the blue patch.", [("red", "blue"), ("blue", "red")], []),
+    ("Build a tower of three blocks on the red patch. Any colors, any order.",
+     [("red", "blue", "green"), ("green", "red", "blue"), ("blue", "green", "red")], []),
     # a named end is kept, the rest is free
     ("Stack the red, blue and green blocks with red on top",
      [("blue", "green", "red"), ("green", "blue", "red")], [("red", "blue", "green"), ("blue", "red", "green")]),

@@ -4059,3 +4059,67 @@ def test_a_goal_opened_twice_after_a_start_is_read():
     """"Task: unstack it so that ...": the label and the unstacking both open the goal (only the label had been taken)."""
     assert meaning(parse("Initial state: the red cube sits on the green cube. Task: unstack it so that the red cube is on "
                          "the table.")) == ["on_table(red)", "start:stack(green,red)"]
+
+
+# ---------------------------------------------------------------------------
+# twenty-first session: framing sentences, sentences no reader read, coordinated relations
+# ---------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("text, expected, framing", [
+    ("Quick one today, folks - the goal is just to put the orange cube in the back right corner of the table. "
+     "Code is linked in the description.", ["in_region(orange,back_right)"], "Code is linked in the description."),
+    ("Okay, operator, here's the task: pick up the blue cube and put it on the red patch. Go when ready.",
+     ["on_patch(blue,patch:red)"], "Go when ready."),
+    ("Stack the red cube on the blue cube. Start recording.", ["stack(blue,red)"], "Start recording."),
+])
+def test_a_sentence_said_to_a_person_that_names_nothing_of_the_task_is_dropped_and_listed(text, expected, framing):
+    from rpg.schema.reading import normalize_words
+
+    assert meaning(parse(text)) == expected
+    _, _, dropped = normalize_words(text)
+    assert (framing, "a sentence that names nothing of the task") in dropped
+
+
+@pytest.mark.parametrize("tail", [
+    "Rotate.", "Lift it.", "And the opposite.", "Then drop.", "Tidy up.", "Alternate.", "Wobbly.", "Loosely.",
+    "Return everything.", "Beneath, I mean.", "Then reset.", "Hold it there.", "Facing me.", "Vertically.", "Sorted.",
+    "Demolish it afterwards.", "Do it twice.", "Upside down.", "Swap them.",
+])
+def test_a_sentence_that_may_change_the_task_and_that_no_reader_read_is_refused(tail):
+    """Before the sentence check, a trailing sentence of known words that no reader read was ignored ("Stack the red
+    cube on the blue cube. Rotate." compiled to the stack alone): every sentence must now hold something of the task,
+    or be framing said to a person."""
+    with pytest.raises(ParseError):
+        parse(f"Stack the red cube on the blue cube. {tail}")
+
+
+@pytest.mark.parametrize("text", [
+    "Make a tower out of the red, white and black cubes. Any order is fine.",
+    "Riddle for the robot: the green cube is left of the pink cube, and the pink cube is left of the gray cube. Build exactly that.",
+    "Stack the red block on the blue block. My supervisor wants this for the demo.",
+    "Wall: bottom row three grey blocks, top row three brown blocks. Put it at the back of the table.",
+])
+def test_sentences_that_restate_or_free_the_goal_are_part_of_the_task(text):
+    parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Put the red cube far away from the blue cube but next to the green cube.", ["far_from(blue,red)", "next_to(green,red)"]),
+    ("put red left of blue but near green", ["left_of(red,blue)", "next_to(green,red)"]),
+    ("put red next to blue but far from green", ["far_from(green,red)", "next_to(blue,red)"]),
+    ("Put the red cube far from the blue one but next to the green one.", ["far_from(blue,red)", "next_to(green,red)"]),
+])
+def test_a_relation_after_but_keeps_the_clause_subject(text, expected):
+    """"X far from Y but next to Z": X is next to Z (it had been Y next to Z, silently wrong)."""
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "Please make a tower of two cubes, the white cube at the top and the same white cube also at the bottom.",
+    "Three-cube tower with the black cube at the bottom and the same black cube on top.",
+])
+def test_the_same_coloured_cube_given_a_second_place_is_a_contradiction(text):
+    with pytest.raises(Inexpressible) as err:
+        parse(text)
+    assert err.value.kind == "contradiction"

@@ -732,6 +732,29 @@ def _pair_relation_dropped(f: Features, schema: TaskSchema, cubes: list) -> Pars
     return None
 
 
+def _sentence_without_content(text: str, schema: TaskSchema) -> str | None:
+    """The first sentence of normalised ``text`` (when it has more than one) that names nothing a task is made of
+    (:data:`lexicon.SENTENCE_CONTENT_RE`: a cube, colour, label, count, patch, place, relation or structure; an order
+    word only where the goal sorts cubes), or None.  Such a sentence ("rotate.", "lift it.", "and the opposite.")
+    was read by no reader, and what it says may change the task, so the compile refuses rather than drop it (framing
+    that names nothing of the task was dropped before: :func:`rpg.schema.reading.drop_asides`)."""
+    sentences = [s.strip() for s in re.split(r"(?<=[.!?;])\s+", text) if re.search(r"[a-z0-9]", s)]
+    if len(sentences) < 2:
+        return None
+    walk = list(schema.goal_predicate().walk())
+    # "Sort the digits 1, 2, 3. Ascending.", "Lesson 3: Ordering.": an order word where the goal sorts, reads or orders a line
+    ordered = any(isinstance(p, (P.SortedBy, P.Reads)) or (isinstance(p, P.InLine) and p.order) for p in walk)
+    labelled = any(a.label for a in schema.assets)
+    for s in sentences:
+        words = re.findall(r"\S*_\S*|[a-z][a-z'\-]*", s)
+        if (lexicon.SENTENCE_CONTENT_RE.search(s) or lexicon.FREEDOM_SENTENCE_RE.search(s) or lexicon.RESTATED_GOAL_RE.match(s)
+                or (ordered and lexicon.ORDER_WORDS.search(s)) or (labelled and re.search(r"\b[a-z]\b", s))
+                or all(w in lexicon.FUNCTION_WORDS or "_" in w for w in words)):
+            continue  # (a sentence of function words alone is what a rewrite left of framing: "that would be")
+        return s
+    return None
+
+
 def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     """The first word or mention of the instruction that ``schema`` has no place for, as the
     ParseError to raise; None when every label, colour, count, patch, place and relation is in it."""
@@ -849,6 +872,11 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     if short:  # "place a pink cube ..., then a pink cube on the cyan one": each "a pink cube" is one more
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but it says 'a {short[0]} "
                           f"block' {said[short[0]]} times and that task has {have[short[0]]}. Rephrase, or use --model")
+    idle = _sentence_without_content(f.text, schema)
+    if idle:  # "Stack the red cube on the blue cube. Rotate.": a sentence no reader read (it had been ignored)
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the sentence '{idle}' names nothing "
+                          "that task holds (no cube, colour, count, place, relation or structure), and its words may change "
+                          "what the task asks. Rephrase it as a place for cubes, leave it out, or use --model")
     try:
         account_named(f.text, schema)
     except UnaccountedMention as exc:

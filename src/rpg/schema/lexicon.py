@@ -240,6 +240,43 @@ ROBOT_VIEWPOINT_RE = re.compile(r"(?:^|(?<=[.;:!?]\s))(?:(?:as\s+)?(?:seen|viewe
 """A viewpoint that is the robot's ("From the robot's point of view, ...", "Seen from the robot, ..."): rpg's own
 frame, dropped before viewpoints are refused."""
 
+FRAMING_SENTENCE_HAZARD_RE = re.compile(
+    r"\b(?:not|no|never|none|nothing|nobody|nowhere|neither|nor|without|except|unless|avoid\w*|[a-z]+n't|cannot"
+    r"|should|must|shall|need|needs|needed|has\s+to|have\s+to|had\s+to|ought|require\w*|want\w*|expect\w*|make\s+sure"
+    r"|then|after|afterwards?|next|finally|later|before|first|second|third|last|again|once|twice|thrice|times|repeat\w*"
+    r"|more|less|fewer|most|least|many|much|several|few|only|same|other|another|else|different|instead|rather|vice|versa"
+    r"|revers\w*|backwards?|opposite|undo|redo|reset|revert|keep|keeps|kept|stay\w*|remain\w*|leave|leaves|left|alone|still|already"
+    r"|upside|sideways|diagonal\w*|mirror\w*|flip\w*|rotat\w*|turn\w*|swap\w*|switch\w*|shuffl\w*|scatter\w*|spread\w*"
+    r"|tid(?:y|ied|ies)|clean\w*|clear\w*|knock\w*|toppl\w*|tilt\w*|fac(?:e|es|ed|ing)|vertical\w*|horizontal\w*|straight\w*"
+    r"|neat\w*|tight\w*|touch\w*|close|closer|away|apart|together|align\w*|square|round|around|up|down|over|inside|outside"
+    r"|second|seconds|minutes?|hours?|fast|faster|quick\w*|slow\w*|within|timer|time|hurry|soon"
+    r"|it|its|itself|they|them|their|those|these|everything|something|each|all|both|either|one|ones|everyone"
+    r"|same|every|alternat\w*|rainbow|gradient|sort\w*|ascending|descending|increasing|decreasing|alphabetic\w*|order\w*"
+    r"|colou?r\w*|shade\w*|size|big|bigger|small|smaller|large|tall|high|low|wide|long|short"
+    r"|beneath|underneath|atop|upon|against|adjacent|across|along|beyond|past|toward|towards|via|through|off|out|flat|lying|lie|lay"
+    r"|offset|centred|centered|spaced|evenly|equal\w*|distance|far|near|nearby|by|beside|opposite|corner\w*|edge\w*|diagonal\w*"
+    r"|mean|meant|correction|actually|oops|scratch|wait|instead|typo|rather|i\s+mean|return\w*|restor\w*|put|place|move)\b"
+    r"|\d")
+"""What keeps a sentence that names nothing of the task (no :data:`TASK_CONTENT_RE`, :data:`ASIDE_CONTENT_RE` word)
+from being dropped as framing by :func:`rpg.schema.reading.drop_asides`: a negation, a requirement, a step of a
+sequence, a repetition or quantity, a reversal or another change of the scene, a manner or pose, time, a pronoun or
+quantifier that may stand for cubes, an order, a colour, a size or a number.  Such a sentence may change what the task
+asks ("Then reset.", "Nothing else may move.", "Twice.", "Quickly."), so it stays, to be read or refused."""
+
+OPERATOR_VERBS: frozenset[str] = frozenset("""
+go start begin let enjoy have see note check feel ask tell contact email ping thank record film watch relax wait
+stand get hold remember find read ship send run press hit launch queue good bye
+""".split())
+"""Verbs that open a sentence addressed to a person rather than to the robot ("Go when ready.", "Start recording.",
+"Let me know if anything's unclear.", "Enjoy."): such an imperative with nothing of the task in it is framing
+(:func:`rpg.schema.reading.drop_asides`); an imperative of any other verb ("Tidy up.", "Demolish.") may change the
+goal, so it stays."""
+
+AUXILIARY_WORDS: frozenset[str] = frozenset("""
+is are was were be been being am has have had do does did will would can could may might shall should must 's
+""".split())
+"""Words after a sentence's first word that make it a statement, not a command ("Code is linked below.")."""
+
 INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("question", r"(?:^|[.!;]\s+)(?:which|what|where|who|whose|why|how\s+many|how\s+much|when)\b[^.!;]*\?"
                  r"|^\s*(?:which|what)\s+(?:of\s+the\s+|one\s+of\s+the\s+)?(?:[a-z]+\s+)?(?:blocks?|cubes?|ones?)\s+(?:is|are|was|were|has|have)\b"
@@ -409,6 +446,10 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "towers of three gray cubes\")"),
     ("contradiction", r"\bboth\s+(?:at|on)\s+(?:the\s+)?(?:bottom|base|top)\s+and\s+(?:at|on)\s+(?:the\s+)?(?:top|bottom|base)\b",
      "puts one cube at both ends of a tower: a cube stands in one place at the end of the episode; say which end"),
+    ("contradiction", rf"\bthe\s+(?P<c>{'|'.join(COLORS)}|grey)\s+(?:cube|block|one)\b[^.;]*?\b(?P<w>the\s+(?:very\s+)?same\s+(?P=c)\s+"
+                      r"(?:cube|block|one))\s+(?:is\s+)?(?:also\s+|too\s+)?(?:at|on|in|under|next|beside|behind|left|right|as)\b",
+     "gives the cube named before a second place: one cube stands in one place at the end of the episode, so the two "
+     "places contradict each other; say one place for it, or say two cubes of that colour"),
 )
 """Meaning the domain cannot express, by class: (class, pattern over the lower-cased text,
 why; a group named ``w``, where it matched, holds the words to name).  An instruction that
@@ -903,9 +944,10 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 r"(?=(?:on|onto|in|into|at|next|beside|behind|under|in\s+front)\b)"),
      r"\1 \2\3another \2 "),
     # "put the red cube next to the blue cube but far from the green cube": the second relation is the subject's too
-    (re.compile(rf"\b(the\s+(?:{COLOR_RE})\s+(?:cube|block))\s+((?:next\s+to|beside|near|behind|in\s+front\s+of|(?:to\s+the\s+)?(?:left|right)"
-                rf"\s+of|far\s+from|away\s+from)\s+the\s+(?:{COLOR_RE})\s+(?:cube|block))\s*,?\s+(?:but|and)\s+(?:also\s+|still\s+)?"
-                r"(?=(?:far\s+from|away\s+from|next\s+to|beside|near|behind|in\s+front\s+of|(?:to\s+the\s+)?(?:left|right)\s+of)\s+the\b)"),
+    # (the relations' words are the predicates' own phrases: "far away from ... but next to ..." had related the second
+    # relation to the first one's object)
+    (re.compile(rf"\b(the\s+(?:{COLOR_RE})\s+(?:cube|block))\s+((?:{_PAIRWISE_WORDS}|away\s+from)\s+the\s+(?:{COLOR_RE})\s+(?:cube|block))"
+                rf"\s*,?\s+(?:but|and)\s+(?:also\s+|still\s+)?(?=(?:{_PAIRWISE_WORDS}|away\s+from)\s+the\b)"),
      r"\1 \2 and \1 "),
     # "... at the same time", "simultaneously": every part of a goal is checked at once, at the end of the episode
     (re.compile(r"\s*,?\s*\b(?:at\s+the\s+same\s+time|simultaneously|all\s+at\s+once)\b"), ""),
@@ -1883,6 +1925,34 @@ TASK_CONTENT_RE = re.compile(
 relations, placement verbs and references.  A sentence with none of them, only fillers and
 unknown nouns ("My supervisor wants this for the demo.") says nothing of the task: its unknown
 words are no reason to refuse (:func:`rpg.schema.reading._idle_sentence`)."""
+
+SENTENCE_CONTENT_RE = re.compile(
+    r"\b(?:" + "|".join(COLORS) + r"|grey|\d+|blocks?|cubes?|bricks?|box(?:es)?|pieces?|patch(?:es)?|pads?|mats?|tiles?|squares?|areas?"
+    r"|zones?|towers?|stacks?|stacked|stacking|stack|piles?|lines?|rows?|columns?|pillars?|pyramids?|walls?|grids?|circles?|rings?"
+    r"|bridges?|letters?|digits?|numbers?|labels?|words?|spell\w*|reads?|left|right|front|back|rear|behind|middle|cent(?:er|re)"
+    r"|corners?|edges?|sides?|top|bottom|base|next|near|beside|between|far|apart|on|onto|under|underneath|beneath|above|below|over"
+    r"|table|two|three|four|five|six|seven|eight|nine|ten|layers?|levels?|tiers?|storeys?|stories|colou?r(?:s|ed)?)\b|@region_")
+"""What makes a sentence of a normalised instruction part of its task: a cube, colour, count, patch, place, relation,
+structure or spelled word (a pronoun alone is not: "lift it.").  A sentence with none of them (when the instruction
+has more than one) was read by no reader: the compile refuses it (:func:`rpg.schema.accounting.unaccounted`)."""
+
+FREEDOM_SENTENCE_RE = re.compile(r"\b(?:any|whatever|every)\b[^.;]*\b(?:order|colou?rs?)\b|\b(?:order|colou?rs?)\b[^.;]*\b(?:matters?|fine"
+                                 r"|okay|ok|free|unimportant|irrelevant|up\s+to\s+you|your\s+choice)\b")
+"""A sentence that leaves the order or the colours free ("Any colours, any order.", "The order doesn't matter."): read by
+the free-choice rules, so part of the task (:func:`rpg.schema.accounting.unaccounted`'s sentence check)."""
+
+RESTATED_GOAL_RE = re.compile(r"^(?:(?:please|now|just|then|and|so)\s+)*(?:arrange|build|make|do|create|form|set\s+up|go\s+ahead|put|place|set)"
+                              r"(?:\s+(?:it|them|this|that|these|those|so|exactly\s+(?:that|this)|it\s+so|that\s+happen|this\s+happen))?"
+                              r"(?:\s+please)?\s*[.!]?$")
+"""A sentence that only asks for the goal said before ("Arrange them.", "Build exactly that.", "Please do."): part of the
+task, adding nothing (:func:`rpg.schema.accounting.unaccounted`'s sentence check)."""
+
+FUNCTION_WORDS: frozenset[str] = frozenset("""
+that it its they them their this these those there here what which who is are was were be been would will could should
+can may might does did have has had of for to from with by as at in and or but so if than too very just also the a an
+please my our your me us i we you great good fine okay ok thanks want wants need needs like
+""".split())
+"""Words that carry nothing alone: a sentence of these is what a rewrite left of framing."""
 
 ORDER_WORDS = re.compile(r"\b(rainbow|alternat\w*|(?<!any\s)order\w*|sequence|gradient|sort\w*|ascending|descending|"
                          r"bottom|base|first|last|then|lightest|darkest|top(?! of (each other|one another)))\b")

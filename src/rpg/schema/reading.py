@@ -158,15 +158,61 @@ def rearranged(m: re.Match) -> str:
     return f"arranged in the order {m.group('then')}"
 
 
-def drop_asides(text: str) -> str:
-    """``text`` without its exclaimed asides (:data:`lexicon.EXCLAIMED_SENTENCE_RE`: "Put the green block on the
-    purple block. What a tower!"): an aside names nothing of a goal (:data:`lexicon.ASIDE_CONTENT_RE`) and nothing
-    the domain cannot express ("Quickly!" stays, to be refused); the text as it is when nothing else is left."""
+def _framing_sentence(sentence: str) -> bool:
+    """Whether a sentence that does not end with "!" is framing (:func:`drop_asides`): a statement or a request to a
+    person that names nothing of the task ("Code is linked in the description.", "Go when ready.", "Let me know if
+    anything's unclear."): no word of a goal (:data:`lexicon.TASK_CONTENT_RE`, :data:`lexicon.ASIDE_CONTENT_RE`), nothing
+    that may change what the task asks (:data:`lexicon.FRAMING_SENTENCE_HAZARD_RE`), every word one of the dictionary or
+    a name, and, when it opens with a verb, one said to a person (:data:`lexicon.OPERATOR_VERBS`)."""
+    low = sentence.lower()
+    unconditioned = re.sub(r"\b(?:if|when)\b", " ", low)  # a condition on a person ("Go when ready.") conditions no goal
+    if lexicon.TASK_CONTENT_RE.search(low) or lexicon.ASIDE_CONTENT_RE.search(unconditioned) \
+            or lexicon.FRAMING_SENTENCE_HAZARD_RE.search(low):
+        return False
+    if any(k not in ("condition", "question") for k, _, _ in _inexpressible(low)):
+        return False  # a size, an object, an action...: refused for it, not dropped
+    words = re.findall(r"[A-Za-z][A-Za-z']*", sentence)
+    if not words:
+        return False
+    for i, w in enumerate(words):
+        base = w.lower().removesuffix("'s")
+        if not (base in VOCAB or base in lexicon.IDLE_WORDS or lexicon.is_dictionary_word(base) or (i and w[0].isupper())):
+            return False  # an unknown word (a capital inside the sentence is a name): the unknown-word rules decide
+    for w in words:
+        pos = lexicon.parts_of_speech(w.lower())
+        if pos & {"ADJ", "ADV"} and not pos & {"NOUN", "VERB"} and w.lower() not in (
+                lexicon.IDLE_WORDS | lexicon.CHAT_WORDS | lexicon.FUNCTION_WORDS | {"when", "where", "how", "why", "sorry"}):
+            return False  # a manner or a property ("Wobbly.", "Loosely."): the domain may lack it, so it is not dropped
+    opening = [w.lower() for w in words if w.lower() not in ("please", "just", "now", "and", "so", "ok", "okay", "also")]
+    if opening and "VERB" in lexicon.parts_of_speech(opening[0]) and opening[0] not in lexicon.OPERATOR_VERBS and (
+            len(opening) == 1 or opening[1] not in lexicon.AUXILIARY_WORDS):
+        return False  # an imperative to the robot ("Demolish.", "Tidy up."): it may change the goal
+    return True
+
+
+def drop_asides(text: str) -> tuple[str, list[str]]:
+    """``text`` without its asides, and the asides dropped: exclaimed sentences (:data:`lexicon.EXCLAIMED_SENTENCE_RE`:
+    "Put the green block on the purple block. What a tower!") that name nothing of a goal
+    (:data:`lexicon.ASIDE_CONTENT_RE`) and nothing the domain cannot express ("Quickly!" stays, to be refused), and
+    other sentences that are framing (:func:`_framing_sentence`: "Code is linked in the description."), when a sentence
+    of the task is left; the text as it is when nothing else is left."""
+    dropped: list[str] = []
+
     def aside(m: re.Match) -> str:
         said = m.group(0)
-        return said if lexicon.ASIDE_CONTENT_RE.search(said) or _inexpressible(said.lower()) else ""
+        if lexicon.ASIDE_CONTENT_RE.search(said) or _inexpressible(said.lower()):
+            return said
+        dropped.append(said.strip())
+        return ""
     kept = re.sub(r"\s{2,}", " ", lexicon.EXCLAIMED_SENTENCE_RE.sub(aside, text)).strip()
-    return kept if re.search(r"[a-z]", kept, re.I) else text
+    if not re.search(r"[a-z]", kept, re.I):
+        return text, []
+    sentences = re.split(r"(?<=[.!?])\s+", kept)
+    framing = [s for s in sentences if not s.endswith("!") and _framing_sentence(s)]
+    if framing and len(framing) < len(sentences):
+        kept = " ".join(s for s in sentences if s not in framing)
+        dropped += framing
+    return kept, dropped
 
 
 def _refuse_unresolved_pronoun(text: str, original: str) -> None:
@@ -474,8 +520,8 @@ def _idle_sentence(sentence: str, unknown: set[str]) -> bool:
     nor a known word beyond fillers and function words, and every unknown one a noun only (an
     adverb or adjective - "Diagonally.", "Sideways.", "Vice versa." - may change what the task asks)."""
     words = re.findall(r"[a-z][a-z'\-]*|\d+", sentence)
-    if len(words) < 2 or lexicon.TASK_CONTENT_RE.search(sentence):
-        return False
+    if len(words) < 2 or lexicon.TASK_CONTENT_RE.search(sentence) or lexicon.FRAMING_SENTENCE_HAZARD_RE.search(sentence):
+        return False  # ("Return everything.": it may change the goal)
     for w in words:
         if w in unknown:
             pos = lexicon.parts_of_speech(w)
@@ -860,7 +906,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         original = pattern.sub(written, original)
     for pattern in lexicon.GRADING_FRAME_RES:  # "Q3. (4 points) ...", "full marks if ...; zero otherwise"
         original = pattern.sub("", original).strip()
-    original = drop_asides(original)  # "Put the green block on the purple block. What a tower!"
+    original, asides = drop_asides(original)  # "Put the green block on the purple block. What a tower!"
     original = lexicon.FILLER_RE.sub("", original).strip()
     original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", original)  # texting's "2" for "to"
     original = lexicon.TEXTED_YOU_RE.sub("you", original)  # "can u build ...": texting's "u"
@@ -931,6 +977,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.OPPOSITE_NEGATED_RE.sub(_restated, text)  # "in front of the grey cube, not behind it": said again
     text = lexicon.OTHER_WAY_DENIED_RE.sub("", text)  # "..., not the other way round": said again
     effectors = [(m.group("what"), "the effector or robot that does it") for m in lexicon.EFFECTOR_RE.finditer(text)]
+    effectors += [(said, "a sentence that names nothing of the task") for said in asides]
     text = lexicon.EFFECTOR_RE.sub(" ", text).strip()
     text = lexicon.rewrite(lexicon.OUTCOME_VERB_REWRITES, text)
     for pattern, written in lexicon.FREE_PHRASE_REWRITES:  # "Colours of the cubes are not specified.", "thats it"

@@ -70,22 +70,34 @@ def free_unnamed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
     another part of the goal or in a structure rho_0 starts ("reverse the tower") keeps the order."""
     if lexicon.ORDER_WORDS.search(f.text.lower()):
         return schema
-    named = {c for _, c in color_mentions(f.text)}
+    # a colour that names a goal patch names no cube ("stack two blocks on the blue patch": any two blocks)
+    named = {c for i, c in color_mentions(f.text)
+             if not re.match(r"\S*\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|tile|area)\b", f.text[i:])}
     colors = {a.name: a.color for a in schema.assets if a.kind == "colored_cube"}
     goal = schema.goal_predicate()
     parts = goal.children() if isinstance(goal, And) else [goal]
     started = {n for st in schema.initial_state.structures for n in st}  # told apart by where rho_0 puts them
 
+    def placed(q, p) -> bool:
+        # a region the stack stands in, or the goal patch its base rests on, relates its base only as the
+        # whole stack's place: every cube of a stack stands over the same spot, whichever is at the bottom
+        return isinstance(q, InRegion) or (type(q) is OnPatch and q.a == p.objects[0])
+
     def free(p):
-        # a region the stack stands in relates its base only as the whole stack's place: every
-        # cube of a stack stands over the same spot, whichever is at the bottom
-        elsewhere = {n for q in parts if q is not p and not isinstance(q, InRegion) for n in q.object_names()}
-        if (type(p) is Stack and len(p.objects) > 1 and not set(p.objects) & (elsewhere | started)
+        if type(p) is not Stack:
+            return p
+        elsewhere = {n for q in parts if q is not p and not placed(q, p) for n in q.object_names()}
+        if (len(p.objects) > 1 and not set(p.objects) & (elsewhere | started)
                 and all(n in colors and colors[n] not in named for n in p.objects)):
             return UnorderedStack(objects=p.objects)
         return p
 
-    return _with_parts(schema, goal, parts, [free(p) for p in parts])
+    new = [free(p) for p in parts]
+    for p, q in zip(parts, new, strict=True):  # "a tower of three blocks on the red patch": some cube of it on the patch
+        if q is not p:
+            new = [StackOnPatch(r.a, r.patch, tuple(sorted(p.objects))) if type(r) is OnPatch and r.a == p.objects[0] else r
+                   for r in new]
+    return _with_parts(schema, goal, parts, new)
 
 
 def _with_parts(schema: TaskSchema, goal, parts: list, new: list) -> TaskSchema:

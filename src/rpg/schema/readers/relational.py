@@ -220,9 +220,10 @@ class RelationalReading:
             if shared and not b_m.ref and not self.stackish:
                 self.relate_group(shared, kind, b_m)
                 continue
-            if self.last_pair and a_m is self.last_pair[1] and re.fullmatch(r"\s*(?:,\s*(?:and\s+)?|and\s+)(?:also\s+|but\s+)?",
+            if self.last_pair and a_m is self.last_pair[1] and re.fullmatch(r"\s*(?:,\s*(?:and\s+|but\s+)?|and\s+|but\s+|yet\s+)(?:also\s+|but\s+|still\s+|yet\s+)?",
                                                                     clause[a_m.end: rm.start()]):
-                a_m = self.last_pair[0]  # "X left of Y and behind Z", "X in front of Y, close to it": X is behind Z
+                a_m = self.last_pair[0]  # "X left of Y and behind Z", "X in front of Y, close to it": X is behind Z; "X far
+                # from Y but near Z": X is near Z (a plain "but" had related Y to Z)
             self.last_pair[:] = [a_m, b_m]
             related[:] = [a_m]
             if a_m.ref:
