@@ -80,8 +80,10 @@ def free_unnamed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
 
     def placed(q, p) -> bool:
         # a region the stack stands in, or the goal patch its base rests on, relates its base only as the
-        # whole stack's place: every cube of a stack stands over the same spot, whichever is at the bottom
-        return isinstance(q, InRegion) or (type(q) is OnPatch and q.a == p.objects[0])
+        # whole stack's place: every cube of a stack stands over the same spot, whichever is at the bottom (a stack
+        # of one colour on a patch is left as it is: its cubes trade places anyway, evaluate_goal's assignment)
+        return isinstance(q, InRegion) or (type(q) is OnPatch and q.a == p.objects[0]
+                                           and len({colors.get(n) for n in p.objects}) > 1)
 
     def free(p):
         if type(p) is not Stack:
