@@ -4123,3 +4123,27 @@ def test_the_same_coloured_cube_given_a_second_place_is_a_contradiction(text):
     with pytest.raises(Inexpressible) as err:
         parse(text)
     assert err.value.kind == "contradiction"
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Level 4 card: put the red block between the yellow patch and the green patch, and put the blue block on the green "
+     "patch.", ["between(red;patch:green,patch:yellow)", "on_patch(blue,patch:green)"]),
+    ("Challenge: Wall Builder. Build a wall that is three blocks long and two blocks high, bottom row all brown, top row "
+     "all orange.", ["wall(brown,brown,brown|orange,orange,orange)"]),
+    ("CHALLENGE 2 - Tower Rush. Goal: a four-block tower, order from the bottom: green, cyan, blue, purple.",
+     ["stack(green,cyan,blue,purple)"]),
+    ("== Task 4 == Stack the pink cube on the orange cube.", ["stack(orange,pink)"]),
+    ("Realise a pyramid with three blue cubes at the base, two red cubes above, and one yellow cube at the summit.",
+     ["pyramid(blue,blue,blue|red,red|yellow)"]),
+])
+def test_titles_headings_and_verbs_of_other_englishes(text, expected):
+    """A capitalised title whose task words the text says again, a numbered heading before a colon, a wiki's
+    "== heading ==", and "realise"/"chuck" as build/put."""
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", ["Upside Down. Stack red on blue.", "Quickly Now. Stack red on blue.",
+                                  "Stack Them Twice. Stack red on blue."])
+def test_a_title_that_may_change_the_task_is_not_dropped(text):
+    with pytest.raises(ParseError):
+        parse(text)

@@ -263,6 +263,10 @@ sequence, a repetition or quantity, a reversal or another change of the scene, a
 quantifier that may stand for cubes, an order, a colour, a size or a number.  Such a sentence may change what the task
 asks ("Then reset.", "Nothing else may move.", "Twice.", "Quickly."), so it stays, to be read or refused."""
 
+TITLE_MAX_WORDS = 4
+"""The most words of a capitalised title over a task ("Challenge: Wall Builder.", "CHALLENGE 2 - Tower Rush."), which
+:func:`rpg.schema.reading.drop_asides` drops when the text after it says every word of the task it has."""
+
 OPERATOR_VERBS: frozenset[str] = frozenset("""
 go start begin let enjoy have see note check feel ask tell contact email ping thank record film watch relax wait
 stand get hold remember find read ship send run press hit launch queue good bye
@@ -737,6 +741,7 @@ PLACEMENT_VERBS: dict[str, str] = {
     "build": "build", "make": "build", "create": "build", "construct": "build", "assemble": "build",
     "form": "build", "erect": "build", "stack": "stack", "pile": "stack", "pull": "place", "drag": "place",
     "pop": "place", "plonk": "place", "plop": "place", "stick": "place", "gather": "place",
+    "chuck": "place", "bung": "place", "realise": "build", "realize": "build",
 }
 """Verbs that ask for objects to end up somewhere, by lemma -> the parser's verb."""
 
@@ -1369,6 +1374,7 @@ prepositions; a count for a count; a word in capitals for one; other words for t
 
 MARKUP_RES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"~~[^~]*~~"), " "),  # ~~struck out~~: withdrawn by its writer
+    (re.compile(r"(?m)^\s*={2,6}\s*(?P<h>[^=\n]{1,60}?)\s*={2,6}\s*"), r"\g<h>: "),  # a wiki's "== Example task ==": its heading
     (re.compile(r"(?m)^\s*#{1,6}\s+(?P<h>(?:[A-Za-z][a-z]*\s+){1,4}?)(?=[A-Z][a-z]+\s)"), r"\g<h>: "),  # "## Task Stack ...": its heading
     (re.compile(r"(?m)^\s*(?:#{1,6}|//|>)\s+"), ""),  # a Markdown heading's hashes, a quote's mark, a code comment's marker
     (re.compile(r"(?m)^\s*[-*+]?\s*\[[ xX]\]\s*"), ""),  # a task checkbox "- [ ] ..."
@@ -1728,9 +1734,9 @@ LETTER_SIGNATURE_RE = re.compile(r"(?<=[.!?])\s*(?i:thanks|thank\s+you|cheers|be
 greeting."""
 
 
-LABEL_RE = re.compile(r"(?:^|(?<=[.!?;|]\s))\s*(?P<label>[a-z@][a-z'\-@, ]{0,140}?(?:\s+#?\d+)?(?:\s*\([a-z'\- ]{1,30}\))?)\s*:(?:\s+|$)")
+LABEL_RE = re.compile(r"(?:^|(?<=[.!?;|]\s))\s*(?P<label>[a-z@][a-z'\-@, ]{0,140}?(?:\s+#?\d+(?:\s+[a-z][a-z'\-]*){0,3})?(?:\s*\([a-z'\- ]{1,30}\))?)\s*:(?:\s+|$)")
 """A label before a colon, at the start of the text or of a sentence ("Obj: red on blue.",
-"Checklist: ...", "Objective (bonus stage): ..."): dropped by
+"Checklist: ...", "Objective (bonus stage): ...", "Level 4 card: ..."): dropped by
 :func:`rpg.schema.reading.normalize_words` when none of its words (at most
 :data:`LABEL_MAX_WORDS`) is a word of the task (:data:`TASK_CONTENT_RE`) or says what the domain
 cannot ("Never: ..." stays, and is refused)."""

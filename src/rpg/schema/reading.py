@@ -190,6 +190,22 @@ def _framing_sentence(sentence: str) -> bool:
     return True
 
 
+def _title_heading(sentence: str, rest: str) -> bool:
+    """Whether ``sentence`` is a title over the ``rest`` of the text ("Challenge: Wall Builder.", "CHALLENGE 2 - Tower
+    Rush."): at most :data:`lexicon.TITLE_MAX_WORDS` words, each capitalised (numbers are its identifier), no word
+    that may change the task (:data:`lexicon.FRAMING_SENTENCE_HAZARD_RE`, a structure word aside), and every word of
+    the task in it said again in the rest (a title that says more than the text, "Red Tower. Build a tower of three.",
+    is no title: its colour would be lost)."""
+    words = re.findall(r"[A-Za-z][A-Za-z'\-]*", sentence)
+    if not rest.strip() or not words or len(words) > lexicon.TITLE_MAX_WORDS or not all(w[0].isupper() for w in words):
+        return False
+    low = " ".join(w.lower() for w in words)
+    content = {m.group(0) for m in lexicon.TASK_CONTENT_RE.finditer(low)}
+    hazards = {m.group(0) for m in lexicon.FRAMING_SENTENCE_HAZARD_RE.finditer(low)} - content
+    rest_words = set(re.findall(r"[a-z]+", rest.lower()))
+    return not hazards and all(c in rest_words or c.rstrip("s") in rest_words or f"{c}s" in rest_words for c in content)
+
+
 def drop_asides(text: str) -> tuple[str, list[str]]:
     """``text`` without its asides, and the asides dropped: exclaimed sentences (:data:`lexicon.EXCLAIMED_SENTENCE_RE`:
     "Put the green block on the purple block. What a tower!") that name nothing of a goal
@@ -208,7 +224,8 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
     if not re.search(r"[a-z]", kept, re.I):
         return text, []
     sentences = re.split(r"(?<=[.!?])\s+", kept)
-    framing = [s for s in sentences if not s.endswith("!") and _framing_sentence(s)]
+    framing = [s for i, s in enumerate(sentences) if not s.endswith("!") and (
+        _framing_sentence(s) or _title_heading(s, " ".join(sentences[i + 1:])))]
     if framing and len(framing) < len(sentences):
         kept = " ".join(s for s in sentences if s not in framing)
         dropped += framing
@@ -1019,7 +1036,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         text = text[dash.end():]
     labels = [m for m in lexicon.LABEL_RE.finditer(text)
               if len(re.findall(r"[a-z]+", m.group("label"))) <= lexicon.LABEL_MAX_WORDS
-              and not lexicon.TASK_CONTENT_RE.search(re.sub(r"(?<=[a-z])\s+#?\d+\s*$|\b(?:just\s+|only\s+)?one\s+(?:task|relation|goal|"
+              and not lexicon.TASK_CONTENT_RE.search(re.sub(r"(?<=[a-z])\s+#?\d+(?=\s|$)|\b(?:just\s+|only\s+)?one\s+(?:task|relation|goal|"
                                                             r"thing|check|condition|episode|run|trial)\b", "",
                                                             m.group("label")))  # "item 2", "just one task"
               and not _inexpressible(m.group("label"))
