@@ -4147,3 +4147,50 @@ def test_titles_headings_and_verbs_of_other_englishes(text, expected):
 def test_a_title_that_may_change_the_task_is_not_dropped(text):
     with pytest.raises(ParseError):
         parse(text)
+
+
+@pytest.mark.parametrize("text", [
+    # a follow-up relation with no cube (a hostile tester's class A): it had been read as nothing
+    "Put the red block left of the blue block. Okay, right of it.", "Put the red block on the blue block. Under it.",
+    "Put the red block on the blue block. Below it, actually.", "Put the red block in front of the blue block. Behind it.",
+    # a reversal read by nothing (class B): the order said before had been kept
+    "Put the red block on the blue block. Then flip the tower.", "Put the red block on the blue block, reversed.",
+    "Put the red block on the blue block. Reverse the order of the blocks.",
+    "Make a row: red, green, yellow, left to right, but reversed.", "Put the red block on the blue block in reverse order.",
+    # an alternative left over (class C): both goals had been kept
+    "Instead of putting the red block next to the blue block, put the green block on the yellow block.",
+    "Put the red block next to the blue block. Instead, put the green block on the yellow block.",
+])
+def test_corrections_reversals_and_alternatives_no_reader_reads_are_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Stack the red cube, the white cube, the yellow cube in the reversed order", ["stack(yellow,white,red)"]),
+    ("Sort the letters Z, Y and X in reverse alphabetical order, left to right.", ["line[left_to_right](Z,Y,X)"]),
+    ("Put the red cube next to the blue cube instead of on top.", ["next_to(blue,red)"]),
+    ("User: put the yellow cube between the green and the pink cubes. Assistant: On it.", ["between(yellow;green,pink)"]),
+    ("Put the red and orange blocks far from the blue block but next to the green block.",
+     ["far_from(blue,orange)", "far_from(blue,red)", "next_to(green,orange)", "next_to(green,red)"]),
+])
+def test_reversals_alternatives_and_replies_the_readers_read(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("The red cube starts on top of the blue cube. Unstack it and leave both cubes on the table.",
+     ["on_table(red)", "start:stack(blue,red)"]),
+    ("Start with a tower of green (bottom), yellow, white (top). Take it apart so that every cube stands on the table.",
+     ["on_table(white)", "on_table(yellow)", "start:stack(green,yellow,white)"]),
+])
+def test_a_start_said_with_start_with_or_starts_on_then_taken_apart(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", ["Put the red block next to the green block but on the blue patch.",
+                                  "Put the red block next to the green block and on the blue patch.",
+                                  "Put the red block far from the green block but on the blue patch."])
+def test_a_patch_after_but_or_and_is_the_subject_s(text):
+    """The subject carried over takes the patch too (the green block had been put on it, silently wrong)."""
+    assert "on_patch(red,patch:blue)" in meaning(parse(text))

@@ -741,7 +741,7 @@ def _sentence_without_content(text: str, schema: TaskSchema) -> str | None:
     sentences = [s.strip() for s in re.split(r"(?<=[.!?;])\s+", text) if re.search(r"[a-z0-9]", s)]
     if len(sentences) < 2:
         return None
-    walk = list(schema.goal_predicate().walk())
+    walk = list(schema.goal_predicate().walk())  # (the sentence check's own)
     # "Sort the digits 1, 2, 3. Ascending.", "Lesson 3: Ordering.": an order word where the goal sorts, reads or orders a line
     ordered = any(isinstance(p, (P.SortedBy, P.Reads)) or (isinstance(p, P.InLine) and p.order) for p in walk)
     labelled = any(a.label for a in schema.assets)
@@ -872,6 +872,26 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     if short:  # "place a pink cube ..., then a pink cube on the cyan one": each "a pink cube" is one more
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but it says 'a {short[0]} "
                           f"block' {said[short[0]]} times and that task has {have[short[0]]}. Rephrase, or use --model")
+    walk = list(schema.goal_predicate().walk())
+    follow_up = lexicon.SUBJECTLESS_RELATION_RE.search(f.text)
+    if follow_up and len(re.findall(r"[.!?;]\s", f.text[:follow_up.start() + 1])) + (follow_up.start() > 0) > 0:
+        # "Put the red block left of the blue block. Right of it.": it had been read as nothing (left of blue kept)
+        return ParseError(f"\"{f.original[:80]}\": '{follow_up.group(0).strip()}' says a relation without the cube it is for: "
+                          "a correction of what was said before, or one more relation? Say the whole goal once (e.g. \"put the "
+                          "red block to the right of the blue block\"), or use --model")
+    turned = lexicon.REVERSAL_RE.search(f.text) or (
+        lexicon.REVERSE_ORDER_RE.search(f.text) if not lexicon.LISTED_REVERSE_ORDER_RE.search(f.text) else None)
+    if turned and not schema.initial_state.structures and not any(isinstance(p, (P.SortedBy, P.Reads)) for p in walk):
+        # "Put the red block on the blue block, reversed.": the order said before had been kept
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{turned.group(0)}' turns an order or a "
+                          "structure around, and that task reads nothing it turns. Say the final order once (e.g. \"stack the "
+                          "blue block on the red block\"), or use --model")
+    instead = lexicon.LEFT_OVER_ALTERNATIVE_RE.search(f.text)
+    if instead and re.fullmatch(r"instead\s*[.!]?\s*", f.text[instead.start():]) and not re.search(r"[.;!?]\s", f.text):
+        instead = None  # one sentence ending "... instead" (a steering edit's replacement): no other goal is said
+    if instead:  # "Instead of putting red next to blue, put green on yellow.": both goals had been kept
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{instead.group(0)}' sets one goal against "
+                          "another, and that task keeps both. Say only the goal that stands, or use --model")
     idle = _sentence_without_content(f.text, schema)
     if idle:  # "Stack the red cube on the blue cube. Rotate.": a sentence no reader read (it had been ignored)
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the sentence '{idle}' names nothing "

@@ -1051,6 +1051,13 @@ BOTH_OF_THEM_RE = re.compile(rf"\b(?P<subj>the\s+(?P<c>{_COLOR_WORD})\s+(?:block
 (:func:`rpg.schema.reading.normalize_words` writes them out when exactly two are)."""
 
 DISTRIBUTED_RELATIONS: tuple[tuple[re.Pattern, str], ...] = (
+    # "the red and orange blocks far from the blue block but next to the green block": each of them, both relations
+    # (the second had gone to the orange block alone)
+    (re.compile(rf"(?<!stack\s)(?<!pile\s)\bthe\s+(?P<a>{_COLOR_WORD})\s+and\s+(?:the\s+)?(?P<b>{_COLOR_WORD})\s+(?P<n>block|cube)s\s+"
+                rf"(?P<rel>{_PAIRWISE_WORDS})\s+the\s+(?P<c>{_COLOR_WORD})\s+(?:block|cube)\s*,?\s+(?:but|and|yet)\s+(?:also\s+|still\s+)?"
+                rf"(?P<rel2>{_PAIRWISE_WORDS})\s+the\s+(?P<d>{_COLOR_WORD})\s+(?:block|cube)\b"),
+     r"the \g<a> \g<n> \g<rel> the \g<c> \g<n> and the \g<a> \g<n> \g<rel2> the \g<d> \g<n> and "
+     r"the \g<b> \g<n> \g<rel> the \g<c> \g<n> and the \g<b> \g<n> \g<rel2> the \g<d> \g<n>"),
     # "the red and green blocks next to the blue block": each of them
     (re.compile(rf"(?<!stack\s)(?<!pile\s)\bthe\s+(?P<a>{_COLOR_WORD})\s+and\s+(?:the\s+)?(?P<b>{_COLOR_WORD})\s+(?P<n>block|cube)s\s+"
                 rf"(?P<rel>{_PAIRWISE_WORDS})\s+the\s+(?P<c>{_COLOR_WORD})\s+(?:block|cube)\b"),
@@ -1959,6 +1966,41 @@ can may might does did have has had of for to from with by as at in and or but s
 please my our your me us i we you great good fine okay ok thanks want wants need needs like
 """.split())
 """Words that carry nothing alone: a sentence of these is what a rewrite left of framing."""
+
+_FOLLOW_UP_FILLER = r"(?:(?:ok(?:ay)?|well|no|nope|actually|instead|now|then|sorry|oops|rather|and|but|so|or|i\s+mean|make\s+(?:it|that))\s*,?\s+)*"
+SUBJECTLESS_RELATION_RE = re.compile(
+    r"(?:^|(?<=[.!?;]\s))" + _FOLLOW_UP_FILLER
+    + r"(?:(?:to\s+the\s+)?(?:left|right)(?:\s+of)?|in\s+front(?:\s+of)?|behind|under(?:neath)?|below|beneath|above|on\s+top(?:\s+of)?"
+      r"|next\s+to|beside|near|far\s+(?:away\s+)?from|between|on|onto|over)\s+(?:(?<!\bon\s)(?<!\bonto\s)(?:it|them|that)|the\s+(?!table\b)[a-z]+(?:\s+(?:cube|block|one|patch))?)"
+      r"\s*(?:,?\s*(?:actually|instead|please|then|i\s+mean|rather))?\s*[.!?]?\s*$|(?:^|(?<=[.!?;]\s))" + _FOLLOW_UP_FILLER
+    + r"(?:(?:to\s+the\s+)?(?:left|right)(?:\s+of)?|in\s+front(?:\s+of)?|behind|under(?:neath)?|below|beneath|above|on\s+top(?:\s+of)?"
+      r"|next\s+to|beside|near|far\s+(?:away\s+)?from|on|onto|over)\s+(?:(?<!\bon\s)(?<!\bonto\s)(?:it|them|that)|the\s+(?!table\b)[a-z]+(?:\s+(?:cube|block|one|patch))?)"
+      r"\s*(?:,?\s*(?:actually|instead|please|then|i\s+mean|rather))?\s*[.!?;]\s")
+"""A sentence after the first that is only a relation, with no cube said to be in it ("Right of it.", "Okay, under it.",
+"Behind it, actually."): a correction of the relation said before, or another one for some cube?  Refused
+(:func:`rpg.schema.accounting.unaccounted`): every such follow-up had been read as nothing, or as an addition."""
+
+REVERSAL_RE = re.compile(r"\b(?:revers(?:ed|es|ing|e)(?!\s+(?:alphabetical|numerical|numeric)\b|d?\s+order\b|,)|backwards?"
+                         r"|opposite\s+(?:order|way|direction|sequence)|in\s+the\s+opposite\b|flip(?:s|ped|ping)?"
+                         r"|invert\w*|upside[\s-]down|the\s+other\s+way(?:\s+(?:round|around))?|mirror\w*)\b")
+"""Words that turn an order or a structure around ("reversed", "backwards", "in the opposite order", "flip the tower"):
+read only where rho_0 starts the structure they turn, or as a sort's direction ("in (the) reverse(d) order" of a list,
+"reverse alphabetical", and "the reverse, ..." before the order written out are the readers'); any other reading had
+kept the order said before them (refused: :func:`rpg.schema.accounting.unaccounted`)."""
+
+REVERSE_ORDER_RE = re.compile(r"\brevers(?:e|ed)\s+order\b")
+LISTED_REVERSE_ORDER_RE = re.compile(r"[a-z0-9]+(?:\s+(?:cube|block|one))?\s*,\s*(?:and\s+)?(?:the\s+)?[a-z0-9][^.;]*?\bin\s+(?:the\s+)?"
+                                     r"revers(?:e|ed)\s+order\b|\brevers(?:e|ed)\s+order\s*:")
+"""A reverse order said of a list ("Stack the red cube, the white cube, the yellow cube in the reversed order", "in reverse
+order: blue at the bottom, ..."), which the stack reader reads; said of anything else ("Put the red block on the blue
+block in reverse order.") it is a :data:`REVERSAL_RE` word."""
+
+LEFT_OVER_ALTERNATIVE_RE = re.compile(r"\b(?:instead(?!\s+of\s+(?:on|onto|next|beside|behind|in\s+front|to\s+the|under|below|above|left|right"
+                                      r"|far|near|between|at)\b)|rather\s+than|in\s+place\s+of(?:\s+that)?|rather\s*,)\b")
+"""An alternative said and not read as a contrast (:func:`rpg.schema.reading.drop_contrasts`) nor as a corrected
+relation ("... next to the blue cube instead of on top", the relational reader's): "Instead of putting the red block
+next to the blue block, put ...", "... Instead, put ...": which of the two goals stands was kept both ways
+(refused: :func:`rpg.schema.accounting.unaccounted`)."""
 
 ORDER_WORDS = re.compile(r"\b(rainbow|alternat\w*|(?<!any\s)order\w*|sequence|gradient|sort\w*|ascending|descending|"
                          r"bottom|base|first|last|then|lightest|darkest|top(?! of (each other|one another)))\b")

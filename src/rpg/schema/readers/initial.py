@@ -35,7 +35,7 @@ START_SENTENCE_RE = re.compile(
     r"|the\s+(?:start|beginning)\s+is\b"
     r"|(?:scene\s+)?init(?:ial)?(?:\s+(?:state|scene|config(?:uration)?))?\s*:"
     r"|(?:setup|start|before|init)\s*:|(?:the\s+)?(?:scene|episode|table|task)\s+(?:starts|begins)\s+(?:with|as)"
-    r"|(?:it\s+)?(?:starts|begins)\s+(?:out\s+)?with(?=\s+(?:the|a|an|one)\s)"
+    r"|(?:it\s+)?(?:starts|begins)\s+(?:out\s+)?with(?=\s+(?:the|a|an|one)\s)|(?:start|begin)\s+(?:out\s+)?with(?=\s+(?:a|an|one)\s+(?:stack|tower|column)\b)"
     r"|there(?:'s|\s+is)\s+(?=(?:an?|one)\s+(?:stack|tower|column)\s+of\b)|we\s+start\s+(?:with|from)|(?:the\s+)?(?:(?:letter|digit|number|colou?red)\s+)?(?:cubes|blocks)\s+start(?:\s+out)?(?:\s+as|\s+in|\s*:)?)"
     r"\s*[:,\-\u2014]?\s*")
 """Words that open a statement of the initial scene ("Initially, ...", "At the start, ...",
@@ -267,8 +267,8 @@ def split(instruction: str) -> InitialScene | None:
         stacks = _facts(clause.group("fact"))
         subject = f"the {clause.group('top')} cube"
         rest = clause.group("rest").strip()
-        rest = rest if re.match(r"(?i)(?:put|place|move|take|stack|build|make|set|bring|now|then|goal|the|a|an)\b", rest) \
-            else f"{subject} {rest}"  # "... and must end up on the table": the subject carried over
+        rest = rest if re.match(r"(?i)(?:put|place|move|take|stack|unstack|dismantle|leave|build|make|set|bring|now|then|goal|the|a|an)\b",
+                                rest) else f"{subject} {rest}"  # "... and must end up on the table": the subject carried over
         rest = re.sub(r"(?i)^((?:then\s+)?(?:put|place|move|take|set|bring|slide|push)\s+)it\b", rf"\1{subject}", rest)  # "Put it ..."
         return InitialScene(tuple(stacks), GOAL_OPENER_RE.sub("", rest, count=1)) if stacks else None
     sentences = [s for s in re.split(r"(?<=[.;!?])\s+|\s*(?=\b(?:[Gg]oal|[Tt]arget)\s*:)", instruction.strip()) if s.strip()]
@@ -292,12 +292,15 @@ def split(instruction: str) -> InitialScene | None:
 
 
 ALL_ON_TABLE_GOAL_RE = re.compile(
-    r"(?i)^\s*(?:(?:put|place|set|lay|leave|get)\s+)?(?:both|all|every|the\s+(?:two|three|four|five|\d+))\s+(?:of\s+)?(?:the\s+)?"
+    r"(?i)^\s*(?:(?:unstack|dismantle|take\s+apart)\s+(?:it|them|the\s+(?:tower|stack))\s*,?\s*(?:and\s+|so\s+(?:that\s+)?)?"
+    r"|take\s+(?:it|them|the\s+(?:tower|stack))\s+apart\s*,?\s*(?:and\s+|so\s+(?:that\s+)?)?)?"
+    r"(?:(?:put|place|set|lay|leave|get)\s+)?(?:both|all|every|each|the\s+(?:two|three|four|five|\d+))\s+(?:of\s+)?(?:the\s+)?"
     r"(?:cubes|blocks|cube|block|ones|of\s+them|them)?\s*(?:(?:must|should|have\s+to|need\s+to|will)\s+)?(?:(?:be|end\s+up|ends\s+up"
     r"|sit|sits|sitting|stand|stands|standing|lie|lies|lying|rest|rests|resting|placed|are|is|go|stay)\s+){0,2}"
     r"(?:(?:flat|back|down|separately)\s+)?(?:on|onto)\s+the\s+table\s*[.!]?$")
 """A goal that sends every cube the start stacks to the table ("both cubes sit on the table",
-"put all the blocks on the table"): each cube a stack holds above another on the table."""
+"put all the blocks on the table", "unstack it and leave both cubes on the table"): each cube a stack holds above
+another on the table."""
 
 
 START_CUBES_RE = re.compile(r"(?i)\b(?:both(?:\s+(?:of\s+the\s+)?(?:cubes|blocks))?|the\s+(?:(?:two|three|four|2|3|4)\s+)?(?:cubes|blocks)"

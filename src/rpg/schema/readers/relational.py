@@ -220,10 +220,11 @@ class RelationalReading:
             if shared and not b_m.ref and not self.stackish:
                 self.relate_group(shared, kind, b_m)
                 continue
+            carried = False
             if self.last_pair and a_m is self.last_pair[1] and re.fullmatch(r"\s*(?:,\s*(?:and\s+|but\s+)?|and\s+|but\s+|yet\s+)(?:also\s+|but\s+|still\s+|yet\s+)?",
                                                                     clause[a_m.end: rm.start()]):
-                a_m = self.last_pair[0]  # "X left of Y and behind Z", "X in front of Y, close to it": X is behind Z; "X far
-                # from Y but near Z": X is near Z (a plain "but" had related Y to Z)
+                a_m, carried = self.last_pair[0], True  # "X left of Y and behind Z", "X in front of Y, close to it": X is
+                # behind Z; "X far from Y but near Z": X is near Z (a plain "but" had related Y to Z)
             self.last_pair[:] = [a_m, b_m]
             related[:] = [a_m]
             if a_m.ref:
@@ -295,7 +296,8 @@ class RelationalReading:
                 # "the red block, the blue block and the green block onto ...", not the object of an earlier
                 # relation ("red on the blue block and the blue block on the green patch": one blue cube)
                 objects = {id(next((m for m in ms if m.start >= x.end()), None)) for x in found if x.end() <= rm.start()}
-                group = _listed_group(clause, left, stop=objects)
+                # ("X next to Y but on the blue patch": X, the subject carried over; Y had been put on the patch)
+                group = [a_m] if carried else _listed_group(clause, left, stop=objects)
                 for member in group:
                     for i in range(member.count):
                         self.onpatch.append((self.obj(member, i), self.obj(b_m)))
