@@ -4194,3 +4194,20 @@ def test_a_start_said_with_start_with_or_starts_on_then_taken_apart(text, expect
 def test_a_patch_after_but_or_and_is_the_subject_s(text):
     """The subject carried over takes the patch too (the green block had been put on it, silently wrong)."""
     assert "on_patch(red,patch:blue)" in meaning(parse(text))
+
+
+@pytest.mark.parametrize("text", ["Stack the red block on top of two blocks.", "Put the red block on two stacked blocks.",
+                                  "Put the red block on a stack of two blocks.",
+                                  "Put the red block on the blue patch and stack two blocks on it."])
+def test_cubes_counted_under_or_on_a_named_cube_are_besides_it(text):
+    """The count had been met by the named cube itself (a tower of two: one block lost): refused unless the task holds
+    that many more."""
+    with pytest.raises(ParseError, match="besides"):
+        parse(text)
+
+
+def test_the_colour_one_after_a_patch_is_a_patch():
+    assert sorted(meaning(parse("Put the red block on the blue patch and the green block on the yellow one."))) == [
+        "on_patch(green,patch:yellow)", "on_patch(red,patch:blue)"]
+    assert sorted(meaning(parse("Put the red block on the blue block and the green block on the yellow one."))) == [
+        "stack(blue,red)", "stack(yellow,green)"]

@@ -886,6 +886,12 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{turned.group(0)}' turns an order or a "
                           "structure around, and that task reads nothing it turns. Say the final order once (e.g. \"stack the "
                           "blue block on the red block\"), or use --model")
+    for m in lexicon.COUNTED_OTHERS_RE.finditer(f.text):  # "Stack the red block on top of two blocks": three cubes
+        n = int(m.group("n") or m.group("m"))
+        if len(cubes) < n + 1:
+            return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group(0)}' counts {n} cubes "
+                              f"besides the one they carry or hold, and that task has {len(cubes)} in all. Say the whole "
+                              "structure (e.g. \"a tower of three blocks with the red block on top\"), or use --model")
     instead = lexicon.LEFT_OVER_ALTERNATIVE_RE.search(f.text)
     if instead and re.fullmatch(r"instead\s*[.!]?\s*", f.text[instead.start():]) and not re.search(r"[.;!?]\s", f.text):
         instead = None  # one sentence ending "... instead" (a steering edit's replacement): no other goal is said

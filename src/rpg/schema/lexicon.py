@@ -1995,6 +1995,15 @@ LISTED_REVERSE_ORDER_RE = re.compile(r"[a-z0-9]+(?:\s+(?:cube|block|one))?\s*,\s
 order: blue at the bottom, ..."), which the stack reader reads; said of anything else ("Put the red block on the blue
 block in reverse order.") it is a :data:`REVERSAL_RE` word."""
 
+COUNTED_OTHERS_RE = re.compile(
+    r"\b(?:on|onto|on\s+top\s+of|atop|under|underneath|beneath|below|above|over)\s+(?:a\s+(?:stack|tower|pile|column)\s+of\s+)?(?P<n>\d+)\s+"
+    r"(?:stacked\s+|other\s+)?(?:blocks|cubes)\b"
+    r"|\b(?P<m>\d+)\s+(?:other\s+|more\s+)?(?:blocks|cubes)\s+(?:on|onto|on\s+top\s+of|atop|under|beneath|below)\s+"
+    r"(?:it|top\s+of\s+it|the\s+(?:" + "|".join(COLORS) + r")\s+(?:block|cube|one))\b")
+"""Cubes counted as what a named cube stands on or carries ("the red block on top of two blocks", "on a stack of two
+blocks", "stack two blocks on it"): as many cubes besides that one, so the task holds at least one more than the
+count (:func:`rpg.schema.accounting.unaccounted`; the count had been met by the named cube itself, one block lost)."""
+
 LEFT_OVER_ALTERNATIVE_RE = re.compile(r"\b(?:instead(?!\s+of\s+(?:on|onto|next|beside|behind|in\s+front|to\s+the|under|below|above|left|right"
                                       r"|far|near|between|at)\b)|rather\s+than|in\s+place\s+of(?:\s+that)?|rather\s*,)\b")
 """An alternative said and not read as a contrast (:func:`rpg.schema.reading.drop_contrasts`) nor as a corrected
@@ -3080,13 +3089,25 @@ MAP_WORD_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 )
 """Language-Table's map words ("the top left corner", "the top of the table"): the table's back and front."""
 
+def _one_noun(m: re.Match) -> str:
+    """The noun "one" stands for in "the yellow one": a patch where the same place word last named a patch ("the red block
+    on the blue patch and the green block on the yellow one": the yellow patch, which had become a block), else a block."""
+    before = m.string[:m.start()]
+    place = re.search(r"\b(on|onto|in|into|to)\s+the\s+$", before)
+    if place:
+        said = re.findall(rf"\b(?:on|onto|in|into|to)\s+the\s+(?:{COLOR_RE})\s+(?:goal\s+)?(patch|pad|mat|block|cube)\b", before)
+        if said and said[-1] in ("patch", "pad", "mat"):
+            return "patch"
+    return "block"
+
+
 LABEL_CUBE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "stack the letter A on the letter B": those are cubes
     (re.compile(r"\b(?:(\w+)\s+)?((?:the|a|an)\s+(?:letter|digit|number)\s+'?[a-z0-9]'?)(?=\s|[.,;!]|$)(?!\s+(?:block|cube|box))"),
      lambda m: m.group(0) if m.group(1) in ("with", "showing", "labeled", "labelled", "marked", "bearing")
      else m.group(0) + " block"),
     (re.compile(rf"\b({COLOR_RE})\s+one(s?)\b"),
-     lambda m: f"{m.group(1)} block{'s' if m.group(2) else ''}"),
+     lambda m: f"{m.group(1)} {_one_noun(m)}{'s' if m.group(2) else ''}"),
 )
 """Label cubes named without their noun ("the letter A") and "red ones": cubes."""
 
