@@ -4211,3 +4211,24 @@ def test_the_colour_one_after_a_patch_is_a_patch():
         "on_patch(green,patch:yellow)", "on_patch(red,patch:blue)"]
     assert sorted(meaning(parse("Put the red block on the blue block and the green block on the yellow one."))) == [
         "stack(blue,red)", "stack(yellow,green)"]
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Place four cubes on the yellow patch: two red and two blue.", ["on_patch(blue,blue,red,red,patch:yellow)"]),
+    ("Build a tower of four cubes. The bottom one is black and the top one is yellow; the two in between are both blue.",
+     ["stack(black,blue,blue,yellow)"]),
+    ("Stack five cubes. The base is black and the top is white; the three in between are gray.",
+     ["stack(black,gray,gray,gray,white)"]),
+    ("Make a tower with the cyan cube at the bottom and the red cube at the top, with the blue cube between them.",
+     ["stack(cyan,blue,red)"]),
+])
+def test_counts_broken_down_by_colour_and_a_tower_s_middle(text, expected):
+    """A count then its colours after a colon; a tower's middle cubes given one colour (it had reached one of three:
+    silently wrong once the middle was read as a role); "between them" in a tower whose ends are given."""
+    assert meaning(parse(text)) == expected
+
+
+def test_one_cube_on_top_of_another_is_two_unnamed_cubes_in_any_order():
+    from rpg.domain.predicates import UnorderedStack
+
+    assert isinstance(parse("Please put one cube on top of another.").goal_predicate(), UnorderedStack)

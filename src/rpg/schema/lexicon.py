@@ -2004,6 +2004,21 @@ COUNTED_OTHERS_RE = re.compile(
 blocks", "stack two blocks on it"): as many cubes besides that one, so the task holds at least one more than the
 count (:func:`rpg.schema.accounting.unaccounted`; the count had been met by the named cube itself, one block lost)."""
 
+_BREAKDOWN_GROUP = rf"\d+\s+(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?|ones?))?"
+COUNT_BREAKDOWN_RE = re.compile(rf"\b(?P<n>\d+)\s+(?P<noun>cubes|blocks)(?P<rest>[^:.;]*?)\s*:\s*(?P<groups>{_BREAKDOWN_GROUP}"
+                                rf"(?:\s*(?:,\s*(?:and\s+)?|and\s+){_BREAKDOWN_GROUP})+)\s*(?=[.;!]|$)")
+"""A count of cubes, then the same cubes by colour after a colon ("place 4 cubes on the yellow patch: 2 red and 2 blue"):
+read by :func:`rpg.schema.reading.normalize_words` as the groups themselves when they add up to the count."""
+
+ONE_ON_ANOTHER_RE = re.compile(r"\b(?:put|place|set|stack)\s+(?:1|a|an)\s+(?:cube|block)\s+(?:on\s+top\s+of|on|onto|atop)\s+another"
+                               r"(?:\s+(?:1|cube|block))?\b")
+"""Two unnamed cubes said as one on another ("Please put one cube on top of another."): a stack of two, in any order."""
+
+MIDDLE_GROUP_COLOUR_RE = re.compile(rf"(?P<head>\bthe\s+(?P<n>\d+)\s+(?:cubes\s+|blocks\s+|ones\s+)?(?:in\s+the\s+middle|in\s+between)"
+                                    rf"\s+(?:are|is|should\s+be|must\s+be)(?:\s+(?:all|both))?)\s+(?P<c>{COLOR_RE})\b")
+"""The middle cubes of a tower or row given one colour ("the three in between are gray"): the colour of each of them
+(it had reached one, the others made up)."""
+
 LEFT_OVER_ALTERNATIVE_RE = re.compile(r"\b(?:instead(?!\s+of\s+(?:on|onto|next|beside|behind|in\s+front|to\s+the|under|below|above|left|right"
                                       r"|far|near|between|at)\b)|rather\s+than|in\s+place\s+of(?:\s+that)?|rather\s*,)\b")
 """An alternative said and not read as a contrast (:func:`rpg.schema.reading.drop_contrasts`) nor as a corrected
@@ -2120,7 +2135,13 @@ def names_a_role(before: str, text: str) -> bool:
     than a place on the table; ``text`` is the whole instruction."""
     return bool(ROLE_BEFORE.search(before) or ROLE_LIST_BEFORE.search(before) or END_ROLE_LIST_BEFORE.search(before)
                 or COLON_ROLE_LIST_BEFORE.search(before) or SORT_END_BEFORE.search(before)
-                or (LAYER_LIST_BEFORE.search(before) and LAYERED_TEXT.search(text)))
+                or (LAYER_LIST_BEFORE.search(before) and LAYERED_TEXT.search(text))
+                or (MIDDLE_GROUP_BEFORE.search(before) and re.search(r"\b(?:towers?|stacks?|rows?|lines?)\b", text)))
+
+
+MIDDLE_GROUP_BEFORE = re.compile(r"(?:^|[;,.]\s*|\band\s+)the\s+(?:other\s+)?\d+(?:\s+(?:cubes|blocks|ones))?\s*$")
+"""Text before "in the middle" that makes it the middle cubes of a tower or row whose ends were given ("the bottom one is
+black and the top one is yellow; the two in the middle are both blue"), not the table's centre."""
 
 
 TOP_ROLE_SAID_RE = re.compile(rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:is\s+|goes\s+)?(?:on\s+top|at\s+the\s+top)\b(?!\s+of\b)")
@@ -3199,6 +3220,10 @@ LABEL_ARTICLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 TOWER_BETWEEN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\b(?:goes\s+|is\s+|sits\s+|stands\s+)?in\s+between\b(?!\s+(?:the|them|those|these|of|a|an|it|each)\b)"),
      "in the middle"),
+    # "a tower with cyan at the bottom and red at the top, with the blue cube between them": its middle
+    (re.compile(rf"(?<=\bwith\s)((?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?)\s+(?:in\s+)?between\s+(?:them|those\s+two|the\s+two)\b"
+                rf"(?=\s*[.!]?\s*$)"),
+     r"\1 in the middle"),
 )
 """In a tower, "the green one goes in between" (a middle left unnamed): in the middle."""
 

@@ -1339,7 +1339,22 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     for w, n in NUMBER_WORDS.items():
         text = re.sub(rf"\b{w}\b", str(n), text)
     text = lexicon.rewrite(lexicon.SPELLING_REWRITES, text)
+    text = lexicon.COUNT_BREAKDOWN_RE.sub(_count_breakdown, text)  # "4 cubes on the yellow patch: 2 red and 2 blue"
+    text = lexicon.ONE_ON_ANOTHER_RE.sub("stack 2 blocks", text)  # "put one cube on top of another": two, either on top
+    if re.search(r"\b(?:towers?|stacks?|stacked|columns?)\b", text):  # "the 3 in the middle are gray": all 3 (a row reads it)
+        text = lexicon.MIDDLE_GROUP_COLOUR_RE.sub(r"\g<head> \g<n> \g<c>", text)
     return " ".join(_structure_phrases(" ".join(text.split())).split()), original, dropped
+
+
+def _count_breakdown(m: re.Match) -> str:
+    """Cubes counted, then said by colour after a colon (:data:`lexicon.COUNT_BREAKDOWN_RE`): the groups in the count's
+    place when they add up to it ("4 cubes on the yellow patch: 2 red and 2 blue" -> "2 red cubes and 2 blue cubes on the
+    yellow patch"; the groups had been read as more cubes); as written otherwise (refused by the accounting)."""
+    groups = re.findall(rf"(\d+)\s+({COLOR_RE})", m.group("groups"))
+    if sum(int(n) for n, _ in groups) != int(m.group("n")):
+        return m.group(0)
+    noun = m.group("noun")
+    return " and ".join(f"{n} {c} {noun}" for n, c in groups) + m.group("rest")
 
 
 _GROUP = rf"(?P<n{{i}}>\d+)\s+(?P<c{{i}}>{COLOR_RE})(?:\s+(?:blocks|cubes))?"
