@@ -4232,3 +4232,35 @@ def test_one_cube_on_top_of_another_is_two_unnamed_cubes_in_any_order():
     from rpg.domain.predicates import UnorderedStack
 
     assert isinstance(parse("Please put one cube on top of another.").goal_predicate(), UnorderedStack)
+
+
+@pytest.mark.parametrize("text", [
+    # a start said as a plain fact, then a move: both had been demanded (red on blue and behind it)
+    "The red cube is on the blue cube. Move the red cube behind the blue cube.",
+    "Put the red cube on the blue patch and left of the blue patch.",
+    # some of a group: which ones is not said (three had been stacked for "any two")
+    "The table has a red, a green and a yellow cube. Stack any two of them.", "Stack two of the red, green and blue cubes.",
+])
+def test_second_session_attack_classes_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Start with the red cube on the blue cube. Move the red cube to the left of the blue cube.",
+     ["left_of(red,blue)", "start:stack(blue,red)"]),
+    ("Build a tower of red, green and blue, starting with blue.", ["stack(blue,red,green)"]),  # (a fourth cube had been made)
+    ("Make a tower from the yellow, purple and white blocks, yellow first.", ["stack(yellow,purple,white)"]),
+    ("Put the gray cube in front of the brown cube, which should be in the center.",
+     ["in_front_of(gray,brown)", "in_region(brown,center)"]),
+    ("Put the red cube onto the yellow spot.", ["on_patch(red,patch:yellow)"]),
+])
+def test_second_session_attack_classes_read(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+def test_a_tower_s_first_cube_is_its_bottom_and_the_rest_free():
+    from rpg.domain.predicates import AnchoredStack
+
+    goal = parse("Build a tower of red, green and blue, starting with blue.").goal_predicate()
+    assert isinstance(goal, AnchoredStack) and goal.bottom and not goal.top and goal.objects[0] == "blue"

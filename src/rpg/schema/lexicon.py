@@ -438,7 +438,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("contradiction", BUT_CORRECTION_RE,
      "may correct what was said before it or add to it: one of the two end states; say the one the task should have"),
     ("reference", VIEWPOINT_RE, VIEWPOINT_WHY),
-    ("reference", r"\band\s+another\s+one\s*(?:[.!;]|$)|\b(?:only|just)\s+(?:\d+|one|two|three|four|five|some|a\s+few)\s+of\s+(?:them|those|these)\b"
+    ("reference", r"\band\s+another\s+one\s*(?:[.!;]|$)|\b(?:only|just|any)\s+(?:\d+|one|two|three|four|five|some|a\s+few)\s+of\s+(?:them|those|these)\b"
+                  rf"|\b(?:\d+|two|three|four|five|some|a\s+few)\s+of\s+the\s+(?:{'|'.join(COLORS)})(?:\s*,\s*(?:{'|'.join(COLORS)}))*"
+                  rf"(?:,?\s+(?:and|or)\s+(?:{'|'.join(COLORS)}))\s+(?:cubes|blocks)\b"
                   r"|\b(?:build|stack)\s+(?:\d+|one|two|three|four|five|some)\s+of\s+(?:them|those|these)\b",
      "picks some of a group described earlier: which ones is not said; describe only what the goal has (e.g. \"build "
      "one tower of two cubes\")"),
@@ -2018,6 +2020,20 @@ MIDDLE_GROUP_COLOUR_RE = re.compile(rf"(?P<head>\bthe\s+(?P<n>\d+)\s+(?:cubes\s+
                                     rf"\s+(?:are|is|should\s+be|must\s+be)(?:\s+(?:all|both))?)\s+(?P<c>{COLOR_RE})\b")
 """The middle cubes of a tower or row given one colour ("the three in between are gray"): the colour of each of them
 (it had reached one, the others made up)."""
+
+TOWER_FIRST_RE = re.compile(rf"\s*,?\s*(?:(?:starting|beginning)\s+with\s+(?:the\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?"
+                            rf"|(?:the\s+)?(?P<c2>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+first)(?=\s*(?:[.;!]|$))")
+"""A tower's first cube said after its list ("a tower of red, green and blue, starting with blue", "..., yellow first"):
+its bottom, as a tower is built from the bottom up."""
+
+WHICH_PLACE_RE = re.compile(rf"(?P<cube>\bthe\s+(?:{COLOR_RE})\s+(?:cube|block))\s*,\s*which\s+(?:should\s+be|must\s+be|is|sits|stands|goes"
+                            r"|needs\s+to\s+be|has\s+to\s+be)\s+(?P<place>(?:in|at|on|to)\s+(?:the\s+)?[a-z@_]+(?:\s+[a-z@_]+){0,4}?)"
+                            r"(?=\s*(?:[.;!]|$))")
+"""A place said of a cube in a relative clause ("put the gray cube in front of the brown cube, which should be in the
+center"): the place of that cube (it had gone to the sentence's subject)."""
+
+COLOUR_SPOT_RE = re.compile(rf"\b({COLOR_RE})\s+(?:spot|dot|circle\s+on\s+the\s+table)\b")
+"""A coloured spot on the table ("the yellow spot"): a goal patch (it had been read as a yellow cube)."""
 
 LEFT_OVER_ALTERNATIVE_RE = re.compile(r"\b(?:instead(?!\s+of\s+(?:on|onto|next|beside|behind|in\s+front|to\s+the|under|below|above|left|right"
                                       r"|far|near|between|at)\b)|rather\s+than|in\s+place\s+of(?:\s+that)?|rather\s*,)\b")

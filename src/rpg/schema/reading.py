@@ -1105,6 +1105,10 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         before = {c for c in re.findall(rf"\b({COLOR_RE})\s+(?:goal\s+)?(?:patch|pad|mat|tile|area)\b", text[:m.start()])}
         if len(before) == 1:
             text = text[:m.start()] + f"the {before.pop()} patch" + text[m.end():]
+    if re.search(r"\b(?:stack\w*|towers?|columns?)\b", text) and not re.search(r"\b(?:rows?|lines?|line\s+up|circles?|rings?)\b", text):
+        # "a tower of red, green and blue, starting with blue", "..., yellow first": the tower's bottom (a fourth cube had
+        # been made up; "yellow first" had been dropped as the list's own first, and the list's order freed)
+        text = lexicon.TOWER_FIRST_RE.sub(lambda m: f", with the {m.group('c') or m.group('c2')} cube at the bottom", text)
     if re.search(r"\b(?:rows?|lines?|line\s+up|stack\w*|towers?)\b", text):  # "a row of red, blue and green, red first, from left to right"
         said_first = re.search(rf"\s*,\s*(?:with\s+)?(?:the\s+)?({COLOR_RE})(?:\s+(?:cube|block|one))?\s+first\b(?=\s*(?:[,.;!]|$))", text)
         listed_first = re.search(rf"\b({COLOR_RE})\b", text)
@@ -1340,6 +1344,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         text = re.sub(rf"\b{w}\b", str(n), text)
     text = lexicon.rewrite(lexicon.SPELLING_REWRITES, text)
     text = lexicon.COUNT_BREAKDOWN_RE.sub(_count_breakdown, text)  # "4 cubes on the yellow patch: 2 red and 2 blue"
+    text = lexicon.WHICH_PLACE_RE.sub(r"\g<cube>, and \g<cube> is \g<place>", text)  # "..., which should be in the center"
+    text = lexicon.COLOUR_SPOT_RE.sub(r"\1 patch", text)  # "the yellow spot": a goal patch
     text = lexicon.ONE_ON_ANOTHER_RE.sub("stack 2 blocks", text)  # "put one cube on top of another": two, either on top
     if re.search(r"\b(?:towers?|stacks?|stacked|columns?)\b", text):  # "the 3 in the middle are gray": all 3 (a row reads it)
         text = lexicon.MIDDLE_GROUP_COLOUR_RE.sub(r"\g<head> \g<n> \g<c>", text)

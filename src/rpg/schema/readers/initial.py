@@ -35,7 +35,7 @@ START_SENTENCE_RE = re.compile(
     r"|the\s+(?:start|beginning)\s+is\b"
     r"|(?:scene\s+)?init(?:ial)?(?:\s+(?:state|scene|config(?:uration)?))?\s*:"
     r"|(?:setup|start|before|init)\s*:|(?:the\s+)?(?:scene|episode|table|task)\s+(?:starts|begins)\s+(?:with|as)"
-    r"|(?:it\s+)?(?:starts|begins)\s+(?:out\s+)?with(?=\s+(?:the|a|an|one)\s)|(?:start|begin)\s+(?:out\s+)?with(?=\s+(?:a|an|one)\s+(?:stack|tower|column)\b)"
+    r"|(?:it\s+)?(?:starts|begins)\s+(?:out\s+)?with(?=\s+(?:the|a|an|one)\s)|(?:start|begin)\s+(?:out\s+)?with(?=\s+(?:a|an|one|the)\s)"
     r"|there(?:'s|\s+is)\s+(?=(?:an?|one)\s+(?:stack|tower|column)\s+of\b)|we\s+start\s+(?:with|from)|(?:the\s+)?(?:(?:letter|digit|number|colou?red)\s+)?(?:cubes|blocks)\s+start(?:\s+out)?(?:\s+as|\s+in|\s*:)?)"
     r"\s*[:,\-\u2014]?\s*")
 """Words that open a statement of the initial scene ("Initially, ...", "At the start, ...",

@@ -467,7 +467,9 @@ def _refuse_crossed_relations(f: Features, rels: list, touching: list[tuple[str,
     "behind the red one and to its left": each relation needs the cubes level across its
     axis, ``RELATION_MAX_OFF_AXIS``), or a cycle along one axis (red left of blue, blue left of red);
     and "far from" between objects that touch: next to each other, or one on the other or on a
-    patch (``touching``: the (cube, support) pairs of the reading's stacking and patch relations).
+    patch (``touching``: the (cube, support) pairs of the reading's stacking and patch relations);
+    and a directional relation between a cube and the cube or patch it rests on: they stand over one spot ("The red cube is on the blue cube.
+    Move the red cube behind the blue cube." had demanded both).
 
     Raises:
         ParseError: naming the relations that contradict each other.
@@ -488,6 +490,12 @@ def _refuse_crossed_relations(f: Features, rels: list, touching: list[tuple[str,
         how = "next to" if frozenset((far[0].a, far[0].b)) in near else "on"
         raise ParseError(f"the relations of \"{f.original[:80]}\" contradict each other ({far[0].describe()}; "
                          f"{far[0].a} {how} {far[0].b}): objects that touch cannot be far apart; say one")
+    over = next((q for q in directional if (q.a, q.b) in set(touching) or (q.b, q.a) in set(touching)), None)
+    if over is not None:
+        raise ParseError(f"the relations of \"{f.original[:80]}\" contradict each other ({over.describe()}, and one stands on "
+                         "the other): objects stacked on each other stand over one spot. If one sentence says how the cubes "
+                         "start, say it as 'Initially ...' (e.g. \"Initially the red cube is on the blue cube. Move it behind "
+                         "the blue cube.\"); else say one relation")
     crossed = next((ways for ways in by_pair.values() if len(ways) > 1), None)
     cycle = next((c for g in graphs.values() for c in [next(iter(nx.simple_cycles(g)), None)] if c), None)
     if crossed or cycle:
