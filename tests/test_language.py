@@ -4264,3 +4264,23 @@ def test_a_tower_s_first_cube_is_its_bottom_and_the_rest_free():
 
     goal = parse("Build a tower of red, green and blue, starting with blue.").goal_predicate()
     assert isinstance(goal, AnchoredStack) and goal.bottom and not goal.top and goal.objects[0] == "blue"
+
+
+@pytest.mark.parametrize("text", [
+    "Place the green cube between the red cube and the blue cube, in a line.",
+    "Line up the red, blue and yellow cubes with blue at one end.",
+    "Place the red, green, and blue cubes in a row in reverse order.",
+    "Make a row of three red cubes and two blue cubes with the blue cubes at the ends.",
+    "Line up the red, blue and yellow cubes with the red cube between the other two.",
+])
+def test_a_place_in_a_line_that_no_reader_read_is_refused(text):
+    """The line had been read in any order, the cube's place in it dropped (a goal weaker than the words)."""
+    with pytest.raises(ParseError):
+        parse(text)
+
+
+def test_two_cubes_put_on_a_third_stand_above_it_in_any_order():
+    from rpg.domain.predicates import AnchoredStack
+
+    goal = parse("Put the red and green cubes on the blue cube.").goal_predicate()
+    assert isinstance(goal, AnchoredStack) and goal.bottom and not goal.top and goal.objects[0] == "blue"

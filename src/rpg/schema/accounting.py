@@ -892,6 +892,13 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
             return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group(0)}' counts {n} cubes "
                               f"besides the one they carry or hold, and that task has {len(cubes)} in all. Say the whole "
                               "structure (e.g. \"a tower of three blocks with the red block on top\"), or use --model")
+    loose_lines = [p for p in walk if isinstance(p, P.InLine) and not p.order and len(p.objects) > 2]  # (of two, each is an end)
+    if loose_lines and not any(isinstance(p, P.Between) for p in walk):
+        role = lexicon.LINE_ROLE_RE.search(lexicon.FREEDOM_SENTENCE_RE.sub(" ", re.sub(r"\bin\s+any\s+order\b", " ", f.text)))
+        if role:  # "Line up the red, blue and yellow cubes with blue at one end.": the line had been read in any order
+            return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{role.group(0)}' gives a cube a place "
+                              "in the line and that task orders none of it. Say the whole order (e.g. \"from left to right: "
+                              "red, green, blue\"), or use --model")
     instead = lexicon.LEFT_OVER_ALTERNATIVE_RE.search(f.text)
     if instead and re.fullmatch(r"instead\s*[.!]?\s*", f.text[instead.start():]) and not re.search(r"[.;!?]\s", f.text):
         instead = None  # one sentence ending "... instead" (a steering edit's replacement): no other goal is said

@@ -2035,6 +2035,19 @@ center"): the place of that cube (it had gone to the sentence's subject)."""
 COLOUR_SPOT_RE = re.compile(rf"\b({COLOR_RE})\s+(?:spot|dot|circle\s+on\s+the\s+table)\b")
 """A coloured spot on the table ("the yellow spot"): a goal patch (it had been read as a yellow cube)."""
 
+PAIR_ON_CUBE_RE = re.compile(rf"^(?:(?:please\s+)?(?:put|place|set|stack)\s+)the\s+(?P<a>{COLOR_RE})\s+and\s+(?:the\s+)?(?P<b>{COLOR_RE})\s+"
+                             rf"(?:cubes|blocks)\s+(?:both\s+)?(?:on\s+top\s+of|on|onto|atop)\s+the\s+(?P<c>{COLOR_RE})\s+(?:cube|block)\s*[.!]?$")
+"""Two cubes put on a third, said as a pair ("put the red and green cubes on the blue cube"): a stack with the third at
+the bottom and the pair above it in any order (a sentence of its own; "on both" is a bridge, read elsewhere)."""
+
+LINE_ROLE_RE = re.compile(rf"\b(?:between\s+(?:the\s+)?(?:(?:{COLOR_RE})\s+(?:and\s+(?:the\s+)?(?:{COLOR_RE})\s+)?(?:cubes?|blocks?|ones?)|them|the\s+other)"
+                          rf"|ends?(?!\s+up\b)|revers\w*|(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:is\s+|goes\s+|sits\s+)?in\s+the\s+middle"
+                          r"|leftmost|rightmost|frontmost|backmost|ordered"
+                          rf"|(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:first|last)|(?:the\s+)?(?:first|last)\s+(?:is|should|must|one|cube|block)"
+                          r"|(?:in|that|this|the\s+same|the\s+listed|the\s+given)\s+order(?!\s+to\b))\b")
+"""Words that give a cube a place in a line ("with blue at one end", "the red cube between the other two", "in reverse
+order"): where the task's line has no order, nobody read them (refused: :func:`rpg.schema.accounting.unaccounted`)."""
+
 LEFT_OVER_ALTERNATIVE_RE = re.compile(r"\b(?:instead(?!\s+of\s+(?:on|onto|next|beside|behind|in\s+front|to\s+the|under|below|above|left|right"
                                       r"|far|near|between|at)\b)|rather\s+than|in\s+place\s+of(?:\s+that)?|rather\s*,)\b")
 """An alternative said and not read as a contrast (:func:`rpg.schema.reading.drop_contrasts`) nor as a corrected

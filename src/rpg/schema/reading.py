@@ -1346,6 +1346,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.COUNT_BREAKDOWN_RE.sub(_count_breakdown, text)  # "4 cubes on the yellow patch: 2 red and 2 blue"
     text = lexicon.WHICH_PLACE_RE.sub(r"\g<cube>, and \g<cube> is \g<place>", text)  # "..., which should be in the center"
     text = lexicon.COLOUR_SPOT_RE.sub(r"\1 patch", text)  # "the yellow spot": a goal patch
+    # "put the red and green cubes on the blue cube": the blue cube at the bottom, the two above in any order (red had
+    # been demanded under green)
+    text = lexicon.PAIR_ON_CUBE_RE.sub(r"stack the \g<a>, \g<b> and \g<c> blocks with the \g<c> block at the bottom", text)
     text = lexicon.ONE_ON_ANOTHER_RE.sub("stack 2 blocks", text)  # "put one cube on top of another": two, either on top
     if re.search(r"\b(?:towers?|stacks?|stacked|columns?)\b", text):  # "the 3 in the middle are gray": all 3 (a row reads it)
         text = lexicon.MIDDLE_GROUP_COLOUR_RE.sub(r"\g<head> \g<n> \g<c>", text)
