@@ -4284,3 +4284,17 @@ def test_two_cubes_put_on_a_third_stand_above_it_in_any_order():
 
     goal = parse("Put the red and green cubes on the blue cube.").goal_predicate()
     assert isinstance(goal, AnchoredStack) and goal.bottom and not goal.top and goal.objects[0] == "blue"
+
+
+@pytest.mark.parametrize("text", [
+    "Spell GO in a tower, with G at the bottom.",  # a spelled tower reads top to bottom: G had been put on top
+    "There are four cubes: red, green, blue and yellow. Stack all of them into one tower.",  # a fifth had been made up
+])
+def test_an_end_or_a_scene_count_the_reading_contradicts_is_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)
+
+
+def test_both_objects_of_between_stay_off_a_later_patch():
+    assert sorted(meaning(parse("Put the orange cube between the red and yellow cubes, and the red cube on the purple "
+                                "patch."))) == ["between(orange;red,yellow)", "on_patch(red,patch:purple)"]

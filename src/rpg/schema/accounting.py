@@ -892,6 +892,18 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
             return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group(0)}' counts {n} cubes "
                               f"besides the one they carry or hold, and that task has {len(cubes)} in all. Say the whole "
                               "structure (e.g. \"a tower of three blocks with the red block on top\"), or use --model")
+    for m in lexicon.LABEL_END_SAID_RE.finditer(f.text):  # "Spell GO in a tower, with G at the bottom": G had been on top
+        label, end = m.group("l").upper(), -1 if m.group("end") == "top" else 0
+        held = [st.objects for st in walk if isinstance(st, P.Stack)
+                and any(a.name == n and a.label == label for n in st.objects for a in schema.assets)]
+        if held and not any(next((a.label for a in schema.assets if a.name == st[end]), None) == label for st in held):
+            return ParseError(f"\"{f.original[:80]}\" contradicts itself: '{m.group(0)}' puts {label} at the "
+                              f"{'top' if end else 'bottom'}, and the rest of it reads {schema.goal_summary}. Say the order once "
+                              "(e.g. \"a tower of letter cubes, G at the bottom and O on top\"), or use --model")
+    told = lexicon.SCENE_COUNT_RE.search(f.text)
+    if told and int(told.group("n") or told.group("n2")) != len(cubes):  # "There are four cubes: red, green, blue and yellow. Stack all of them."
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{told.group(0)}' says the task has "
+                          f"{told.group('n') or told.group('n2')} cubes and that task has {len(cubes)}. Rephrase, or use --model")
     loose_lines = [p for p in walk if isinstance(p, P.InLine) and not p.order and len(p.objects) > 2]  # (of two, each is an end)
     if loose_lines and not any(isinstance(p, P.Between) for p in walk):
         role = lexicon.LINE_ROLE_RE.search(lexicon.FREEDOM_SENTENCE_RE.sub(" ", re.sub(r"\bin\s+any\s+order\b", " ", f.text)))

@@ -2048,6 +2048,16 @@ LINE_ROLE_RE = re.compile(rf"\b(?:between\s+(?:the\s+)?(?:(?:{COLOR_RE})\s+(?:an
 """Words that give a cube a place in a line ("with blue at one end", "the red cube between the other two", "in reverse
 order"): where the task's line has no order, nobody read them (refused: :func:`rpg.schema.accounting.unaccounted`)."""
 
+LABEL_END_SAID_RE = re.compile(r"\b(?:letter|digit|number)\s+(?P<l>[a-z0-9])\s+(?:block|cube)\s+(?:is\s+|goes\s+)?(?:at|on)\s+the\s+"
+                               r"(?P<end>bottom|base|top)\b(?!\s+of\b)")
+"""A letter or digit cube given an end of a tower ("spell GO in a tower, with G at the bottom"): the tower must have it
+there (:func:`rpg.schema.accounting.unaccounted`; a spelled tower reads top to bottom, and G had been put on top)."""
+
+SCENE_COUNT_RE = re.compile(r"\bthere\s+(?:are|will\s+be)\s+(?P<n>\d+)\s+(?:cubes|blocks)\s*(?::|on\s+the\s+table|in\s+(?:total|all)|\.)"
+                            r"|\b(?P<n2>\d+)\s+(?:cubes|blocks)\s+in\s+(?:total|all)\b")
+"""The number of cubes the whole scene holds ("There are four cubes: ...", "6 blocks in total"): the task holds exactly
+that many (a fifth cube had been made up)."""
+
 LEFT_OVER_ALTERNATIVE_RE = re.compile(r"\b(?:instead(?!\s+of\s+(?:on|onto|next|beside|behind|in\s+front|to\s+the|under|below|above|left|right"
                                       r"|far|near|between|at)\b)|rather\s+than|in\s+place\s+of(?:\s+that)?|rather\s*,)\b")
 """An alternative said and not read as a contrast (:func:`rpg.schema.reading.drop_contrasts`) nor as a corrected

@@ -145,7 +145,7 @@ class RelationalReading:
         # a relation word followed by a label's dash or colon is a role ("below - black"), not a relation
         found = [m for m in re.finditer(rel_re, clause) if not LABEL_SEPARATOR_AFTER.match(clause, m.end())]
         for k, rm in enumerate(found):
-            kind = next(REL_PATTERNS[i][1] for i in range(len(REL_PATTERNS)) if rm.group(f"r{i}"))
+            kind = _kind_of(rm)
             left = [m for m in ms if m.end <= rm.start() and not m.patch]
             right = [m for m in ms if m.start >= rm.end()]
             if kind == "region":  # resolved once the stacks are known
@@ -295,7 +295,10 @@ class RelationalReading:
             if kind == "on" and b_m.patch:
                 # "the red block, the blue block and the green block onto ...", not the object of an earlier
                 # relation ("red on the blue block and the blue block on the green patch": one blue cube)
-                objects = {id(next((m for m in ms if m.start >= x.end()), None)) for x in found if x.end() <= rm.start()}
+                objects = {id(m) for x in found if x.end() <= rm.start()
+                           for m in [m for m in ms if m.start >= x.end()][:2 if _kind_of(x) == "between" else 1]}
+                # (both objects of a "between": "between the red and yellow cubes, and the red cube on the patch" had put
+                # the yellow cube on the patch too)
                 # ("X next to Y but on the blue patch": X, the subject carried over; Y had been put on the patch)
                 group = [a_m] if carried else _listed_group(clause, left, stop=objects)
                 for member in group:
@@ -459,6 +462,11 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         b.structures.append([by_color[bottom], by_color[top]])
         b.summary.append(f"initially {top} is stacked on {bottom}")
     return True
+
+
+def _kind_of(rm: re.Match) -> str:
+    """The relation kind a match of the relational pattern names (:data:`REL_PATTERNS`)."""
+    return next(REL_PATTERNS[i][1] for i in range(len(REL_PATTERNS)) if rm.group(f"r{i}"))
 
 
 def _refuse_crossed_relations(f: Features, rels: list, touching: list[tuple[str, str]] = ()) -> None:
