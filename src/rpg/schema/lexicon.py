@@ -1930,23 +1930,24 @@ a an the this these those is are was were be been being am i me my we our us you
 so do does did have has had will would can could should just very really as wants want""".split())
 """Known words a sentence that says nothing of the task may hold (fillers and function words)."""
 
+_TASK_THINGS = ("|".join(COLORS) + r"|grey|\d+|blocks?|cubes?|bricks?|box(?:es)?|patch(?:es)?|pads?|mats?|tiles?|squares?"
+                r"|towers?|stacks?|stacked|stacking|piles?|lines?|rows?|columns?|pillars?|pyramids?|walls?|grids?|circles?|rings?"
+                r"|letters?|digits?|numbers?|labels?|left|right|front|back|rear|behind|middle|cent(?:er|re)|corners?|edges?|sides?"
+                r"|top|bottom|base|next|near|beside|between|far|apart|on|onto|under|above|below|table"
+                r"|two|three|four|five|six|seven|eight|nine|ten")
+"""The words of the task's things, places and counts that both :data:`TASK_CONTENT_RE` and :data:`SENTENCE_CONTENT_RE`
+count as the task's."""
+
 TASK_CONTENT_RE = re.compile(
-    r"\b(?:" + "|".join(COLORS) + r"|grey|\d+|blocks?|cubes?|bricks?|box(?:es)?|patch(?:es)?|pads?|mats?|tiles?|squares?"
-    r"|towers?|stacks?|stacked|stacking|piles?|lines?|rows?|columns?|pillars?|pyramids?|walls?|grids?|circles?|rings?"
-    r"|letters?|digits?|numbers?|labels?|left|right|front|back|rear|behind|middle|cent(?:er|re)|corners?|edges?|sides?"
-    r"|top|bottom|base|next|near|beside|between|far|apart|on|onto|under|above|below|table|put|place|move|build|make|arrange"
-    r"|set|spell|sort|order|one|two|three|four|five|six|seven|eight|nine|ten|it|them|each|every|all|both)\b")
+    r"\b(?:" + _TASK_THINGS + r"|put|place|move|build|make|arrange|set|spell|sort|order|one|it|them|each|every|all|both)\b")
 """Words that make a sentence part of the task: cubes, colours, counts, structures, places,
 relations, placement verbs and references.  A sentence with none of them, only fillers and
 unknown nouns ("My supervisor wants this for the demo.") says nothing of the task: its unknown
 words are no reason to refuse (:func:`rpg.schema.reading._idle_sentence`)."""
 
 SENTENCE_CONTENT_RE = re.compile(
-    r"\b(?:" + "|".join(COLORS) + r"|grey|\d+|blocks?|cubes?|bricks?|box(?:es)?|pieces?|patch(?:es)?|pads?|mats?|tiles?|squares?|areas?"
-    r"|zones?|towers?|stacks?|stacked|stacking|stack|piles?|lines?|rows?|columns?|pillars?|pyramids?|walls?|grids?|circles?|rings?"
-    r"|bridges?|letters?|digits?|numbers?|labels?|words?|spell\w*|reads?|left|right|front|back|rear|behind|middle|cent(?:er|re)"
-    r"|corners?|edges?|sides?|top|bottom|base|next|near|beside|between|far|apart|on|onto|under|underneath|beneath|above|below|over"
-    r"|table|two|three|four|five|six|seven|eight|nine|ten|layers?|levels?|tiers?|storeys?|stories|colou?r(?:s|ed)?)\b|@region_")
+    r"\b(?:" + _TASK_THINGS + r"|pieces?|areas?|zones?|bridges?|words?|spell\w*|reads?|underneath|beneath|over"
+    r"|layers?|levels?|tiers?|storeys?|stories|colou?r(?:s|ed)?)\b|@region_")
 """What makes a sentence of a normalised instruction part of its task: a cube, colour, count, patch, place, relation,
 structure or spelled word (a pronoun alone is not: "lift it.").  A sentence with none of them (when the instruction
 has more than one) was read by no reader: the compile refuses it (:func:`rpg.schema.accounting.unaccounted`)."""
