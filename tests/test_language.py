@@ -4298,3 +4298,14 @@ def test_an_end_or_a_scene_count_the_reading_contradicts_is_refused(text):
 def test_both_objects_of_between_stay_off_a_later_patch():
     assert sorted(meaning(parse("Put the orange cube between the red and yellow cubes, and the red cube on the purple "
                                 "patch."))) == ["between(orange;red,yellow)", "on_patch(red,patch:purple)"]
+
+
+@pytest.mark.parametrize("text", [
+    "Put the red cube next to the green cube and then stack it on the blue cube.",  # "it" had been green, stacked under blue
+    "Put the red and green cubes in one pile and the blue cube in another pile.",  # the two piles had been merged
+    "Put the red block on the blue block. Then tidy up the table.",  # "tidy" had been dropped as a filler
+    "Put the red block next to the blue block. The blue block should stay put.",  # the constraint had been dropped
+])
+def test_older_silent_classes_the_second_tester_left_are_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)

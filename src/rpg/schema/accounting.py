@@ -900,6 +900,22 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
             return ParseError(f"\"{f.original[:80]}\" contradicts itself: '{m.group(0)}' puts {label} at the "
                               f"{'top' if end else 'bottom'}, and the rest of it reads {schema.goal_summary}. Say the order once "
                               "(e.g. \"a tower of letter cubes, G at the bottom and O on top\"), or use --model")
+    moved = lexicon.PRONOUN_MOVED_RE.search(f.text)
+    if moved and moved.group("p") == "it" and len({c for _, c in color_mentions(f.text[:moved.start()])}) > 1 \
+            and not re.search(r"[.;!?]\s", f.text[:moved.start()]) and re.search(r"\b(?:next\s+to|beside|behind|in\s+front\s+of|left"
+                                                                               r"|right|far|near|between)\b", f.text[:moved.start()]):
+        # "Put the red cube next to the green cube and then stack it on the blue cube": red or green? (green had been taken)
+        return ParseError(f"\"{f.original[:80]}\": '{moved.group(0)}' may mean any cube named before it; name the cube (e.g. "
+                          "\"stack the red cube on the blue cube\"), or use --model")
+    piles = [m for m in lexicon.PILES_SAID_RE.finditer(f.text)]
+    if piles:
+        said = max(piles, key=lambda m: int(m.group("n")) if m.group("n") else 2)
+        want = int(said.group("n")) if said.group("n") else 2
+        have_piles = sum(len(p.groups) for p in walk if isinstance(p, P.Piles))
+        if have_piles and have_piles < want:  # "in one pile ... in another pile": the piles had been merged
+            return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{said.group(0)}' says {want} "
+                              f"piles and that task has {have_piles}. Say each pile's cubes (e.g. \"a pile of the red and "
+                              "green cubes and a pile of the blue cube\"), or use --model")
     told = lexicon.SCENE_COUNT_RE.search(f.text)
     if told and int(told.group("n") or told.group("n2")) != len(cubes):  # "There are four cubes: red, green, blue and yellow. Stack all of them."
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{told.group(0)}' says the task has "

@@ -409,6 +409,11 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"(?:to\s+the\s+)?(?:left|right|forward|forwards|backward|backwards|back|up|down|closer|nearer|further|farther|away|apart)\b",
      "refers to where the cubes stand now (moved closer, further, a bit to one side): a task's goal says where "
      "they end up, not how far they moved; say the end state (e.g. \"put the red block next to the blue block\")"),
+    ("action", r"\b(?:then|and|also|afterwards?|finally|after\s+that)\s*,?\s+(?:please\s+)?(?:tid(?:y|ies|ied|ying)|clean(?:s|ed|ing)?"
+               r"|clear(?:s|ed|ing)?)\s+(?:\w+\s+)?(?:up|away)\b|\bput\s+(?:\w+\s+){0,3}?away\b"
+               r"|\breset(?:s|ting)?\b|\b(?:stay|stays|remain|remains)\s+put\b",
+     "is an action or a keeping the domain does not have (tidying up, putting away, resetting, staying put): a task's goal "
+     "says where the cubes end up; say where each should be"),
     ("action", r"\boff\s+(?:of\s+)?the\s+(?:table|table's\s+edge|edge\s+of\s+the\s+table|workspace)\b",
      "is an action the domain does not have: its cubes stay on the table, and a task's goal says where on it they "
      "end up"),
@@ -2058,6 +2063,15 @@ SCENE_COUNT_RE = re.compile(r"\bthere\s+(?:are|will\s+be)\s+(?P<n>\d+)\s+(?:cube
                             r"|\b(?P<n2>\d+)\s+(?:cubes|blocks)\s+in\s+(?:total|all)\b")
 """The number of cubes the whole scene holds ("There are four cubes: ...", "6 blocks in total"): the task holds exactly
 that many (a fifth cube had been made up)."""
+
+PRONOUN_MOVED_RE = re.compile(r"\b(?:stack|put|place|set|move|lay|slide|push)\s+(?P<p>it|them)\s+(?:on\s+top\s+of|on|onto|atop|under|next\s+to"
+                              r"|beside|behind|in\s+front\s+of|to\s+the\s+(?:left|right)\s+of)\b")
+"""A pronoun as the cube moved ("... and then stack it on the blue cube"): with two cubes named before, which one?
+(refused, :func:`rpg.schema.accounting.unaccounted`; it had taken the last one named, and the stack read upside down)."""
+
+PILES_SAID_RE = re.compile(r"\b(?:another|a\s+second|a\s+separate|a\s+different|separate|(?P<n>\d+))\s+piles?\b")
+"""More than one pile said ("in one pile and the blue cube in another pile", "3 piles"): the task must hold that many
+(they had been merged into one)."""
 
 LEFT_OVER_ALTERNATIVE_RE = re.compile(r"\b(?:instead(?!\s+of\s+(?:on|onto|next|beside|behind|in\s+front|to\s+the|under|below|above|left|right"
                                       r"|far|near|between|at)\b)|rather\s+than|in\s+place\s+of(?:\s+that)?|rather\s*,)\b")
