@@ -755,6 +755,12 @@ def _sentence_without_content(text: str, schema: TaskSchema) -> str | None:
     return None
 
 
+def _unread(f: Features, schema: TaskSchema, said: str, why: str) -> ParseError:
+    """The refusal of a reading of ``f`` that leaves the words ``said`` unread: what it read, the words, and ``why``
+    (which says how to say it instead)."""
+    return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{said}' {why}")
+
+
 def _follow_up_relation(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
     """A follow-up sentence that is only a relation ("Put the red block left of the blue block. Right of it."): it had
     been read as nothing (:data:`lexicon.SUBJECTLESS_RELATION_RE`)."""
@@ -772,9 +778,9 @@ def _unread_reversal(f: Features, schema: TaskSchema, cubes: list, walk: list) -
     turned = lexicon.REVERSAL_RE.search(f.text) or (
         lexicon.REVERSE_ORDER_RE.search(f.text) if not lexicon.LISTED_REVERSE_ORDER_RE.search(f.text) else None)
     if turned and not schema.initial_state.structures and not any(isinstance(p, (P.SortedBy, P.Reads)) for p in walk):
-        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{turned.group(0)}' turns an order or a "
-                          "structure around, and that task reads nothing it turns. Say the final order once (e.g. \"stack the "
-                          "blue block on the red block\"), or use --model")
+        return _unread(f, schema, turned.group(0), "turns an order or a "
+                       "structure around, and that task reads nothing it turns. Say the final order once (e.g. \"stack the "
+                       "blue block on the red block\"), or use --model")
     return None
 
 
@@ -784,9 +790,9 @@ def _counted_others(f: Features, schema: TaskSchema, cubes: list, walk: list) ->
     for m in lexicon.COUNTED_OTHERS_RE.finditer(f.text):
         n = int(m.group("n") or m.group("m"))
         if len(cubes) < n + 1:
-            return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group(0)}' counts {n} cubes "
-                              f"besides the one they carry or hold, and that task has {len(cubes)} in all. Say the whole "
-                              "structure (e.g. \"a tower of three blocks with the red block on top\"), or use --model")
+            return _unread(f, schema, m.group(0), f"counts {n} cubes "
+                           f"besides the one they carry or hold, and that task has {len(cubes)} in all. Say the whole "
+                           "structure (e.g. \"a tower of three blocks with the red block on top\"), or use --model")
     return None
 
 
@@ -827,9 +833,9 @@ def _piles_said(f: Features, schema: TaskSchema, cubes: list, walk: list) -> Par
     want = int(said.group("n")) if said.group("n") else 2
     have_piles = sum(len(p.groups) for p in walk if isinstance(p, P.Piles))
     if have_piles and have_piles < want:
-        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{said.group(0)}' says {want} "
-                          f"piles and that task has {have_piles}. Say each pile's cubes (e.g. \"a pile of the red and "
-                          "green cubes and a pile of the blue cube\"), or use --model")
+        return _unread(f, schema, said.group(0), f"says {want} "
+                       f"piles and that task has {have_piles}. Say each pile's cubes (e.g. \"a pile of the red and "
+                       "green cubes and a pile of the blue cube\"), or use --model")
     return None
 
 
@@ -839,8 +845,8 @@ def _scene_count(f: Features, schema: TaskSchema, cubes: list, walk: list) -> Pa
     told = lexicon.SCENE_COUNT_RE.search(f.text)
     n = int(told.group("n") or told.group("n2")) if told else len(cubes)
     if n != len(cubes):
-        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{told.group(0)}' says the task has "
-                          f"{n} cubes and that task has {len(cubes)}. Rephrase, or use --model")
+        return _unread(f, schema, told.group(0), f"says the task has "
+                       f"{n} cubes and that task has {len(cubes)}. Rephrase, or use --model")
     return None
 
 
@@ -852,9 +858,9 @@ def _line_roles(f: Features, schema: TaskSchema, cubes: list, walk: list) -> Par
         return None
     role = lexicon.LINE_ROLE_RE.search(lexicon.FREEDOM_SENTENCE_RE.sub(" ", re.sub(r"\bin\s+any\s+order\b", " ", f.text)))
     if role:
-        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{role.group(0)}' gives a cube a place "
-                          "in the line and that task orders none of it. Say the whole order (e.g. \"from left to right: "
-                          "red, green, blue\"), or use --model")
+        return _unread(f, schema, role.group(0), "gives a cube a place "
+                       "in the line and that task orders none of it. Say the whole order (e.g. \"from left to right: "
+                       "red, green, blue\"), or use --model")
     return None
 
 
@@ -866,8 +872,8 @@ def _left_over_alternative(f: Features, schema: TaskSchema, cubes: list, walk: l
     if instead and re.fullmatch(r"instead\s*[.!]?\s*", f.text[instead.start():]) and not re.search(r"[.;!?]\s", f.text):
         return None
     if instead:
-        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{instead.group(0)}' sets one goal against "
-                          "another, and that task keeps both. Say only the goal that stands, or use --model")
+        return _unread(f, schema, instead.group(0), "sets one goal against "
+                       "another, and that task keeps both. Say only the goal that stands, or use --model")
     return None
 
 
