@@ -955,12 +955,6 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b(one|a|an)\s+((?:(?:{COLOR_RE})\s+)?(?:cube|block))\b(.*?)\banother\s+"
                 r"(?=(?:on|onto|in|into|at|next|beside|behind|under|in\s+front)\b)"),
      r"\1 \2\3another \2 "),
-    # "put the red cube next to the blue cube but far from the green cube": the second relation is the subject's too
-    # (the relations' words are the predicates' own phrases: "far away from ... but next to ..." had related the second
-    # relation to the first one's object)
-    (re.compile(rf"\b(the\s+(?:{COLOR_RE})\s+(?:cube|block))\s+((?:{_PAIRWISE_WORDS}|away\s+from)\s+the\s+(?:{COLOR_RE})\s+(?:cube|block))"
-                rf"\s*,?\s+(?:but|and)\s+(?:also\s+|still\s+)?(?=(?:{_PAIRWISE_WORDS}|away\s+from)\s+the\b)"),
-     r"\1 \2 and \1 "),
     # "... at the same time", "simultaneously": every part of a goal is checked at once, at the end of the episode
     (re.compile(r"\s*,?\s*\b(?:at\s+the\s+same\s+time|simultaneously|all\s+at\s+once)\b"), ""),
     # "red closest to the front" of a line: that end ("with red at the front"), which the line's roles read
