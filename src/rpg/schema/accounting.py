@@ -732,16 +732,15 @@ def _pair_relation_dropped(f: Features, schema: TaskSchema, cubes: list) -> Pars
     return None
 
 
-def _sentence_without_content(text: str, schema: TaskSchema) -> str | None:
+def _sentence_without_content(text: str, schema: TaskSchema, walk: list) -> str | None:
     """The first sentence of normalised ``text`` (when it has more than one) that names nothing a task is made of
     (:data:`lexicon.SENTENCE_CONTENT_RE`: a cube, colour, label, count, patch, place, relation or structure; an order
-    word only where the goal sorts cubes), or None.  Such a sentence ("rotate.", "lift it.", "and the opposite.")
+    word only where the goal, whose predicates are ``walk``, sorts, reads or orders a line), or None.  Such a sentence ("rotate.", "lift it.", "and the opposite.")
     was read by no reader, and what it says may change the task, so the compile refuses rather than drop it (framing
     that names nothing of the task was dropped before: :func:`rpg.schema.reading.drop_asides`)."""
     sentences = [s.strip() for s in re.split(r"(?<=[.!?;])\s+", text) if re.search(r"[a-z0-9]", s)]
     if len(sentences) < 2:
         return None
-    walk = list(schema.goal_predicate().walk())  # (the sentence check's own)
     # "Sort the digits 1, 2, 3. Ascending.", "Lesson 3: Ordering.": an order word where the goal sorts, reads or orders a line
     ordered = any(isinstance(p, (P.SortedBy, P.Reads)) or (isinstance(p, P.InLine) and p.order) for p in walk)
     labelled = any(a.label for a in schema.assets)
@@ -880,7 +879,7 @@ def _left_over_alternative(f: Features, schema: TaskSchema, cubes: list, walk: l
 def _idle_sentence(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
     """A sentence that names nothing the task holds ("Stack the red cube on the blue cube. Rotate.": it had been
     ignored; :func:`_sentence_without_content`)."""
-    idle = _sentence_without_content(f.text, schema)
+    idle = _sentence_without_content(f.text, schema, walk)
     if idle:
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the sentence '{idle}' names nothing "
                           "that task holds (no cube, colour, count, place, relation or structure), and its words may change "

@@ -162,8 +162,10 @@ def _framing_sentence(sentence: str) -> bool:
     """Whether a sentence that does not end with "!" is framing (:func:`drop_asides`): a statement or a request to a
     person that names nothing of the task ("Code is linked in the description.", "Go when ready.", "Let me know if
     anything's unclear."): no word of a goal (:data:`lexicon.TASK_CONTENT_RE`, :data:`lexicon.ASIDE_CONTENT_RE`), nothing
-    that may change what the task asks (:data:`lexicon.FRAMING_SENTENCE_HAZARD_RE`), every word one of the dictionary or
-    a name, and, when it opens with a verb, one said to a person (:data:`lexicon.OPERATOR_VERBS`)."""
+    that may change what the task asks (:data:`lexicon.FRAMING_SENTENCE_HAZARD_RE`) nor any other domain refusal than a
+    condition or a question (a condition on a person conditions no goal), every word one of the dictionary or a name, no
+    adjective or adverb of manner beyond fillers ("Wobbly.", "Loosely." stay), and, when it opens with a verb, one said
+    to a person (:data:`lexicon.OPERATOR_VERBS`)."""
     low = sentence.lower()
     unconditioned = re.sub(r"\b(?:if|when)\b", " ", low)  # a condition on a person ("Go when ready.") conditions no goal
     if lexicon.TASK_CONTENT_RE.search(low) or lexicon.ASIDE_CONTENT_RE.search(unconditioned) \
