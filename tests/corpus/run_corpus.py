@@ -65,7 +65,8 @@ STRANGER_SETS = {
     "stranger28": ("stranger28.yaml", "STRANGER set 28 (stranger28.yaml, development material, first run at the twentieth session's start)"),
     "stranger29": ("stranger29.yaml", "STRANGER set 29 (stranger29.yaml, development material, read from the twentieth session's middle)"),
     "stranger30": ("stranger30.yaml", "STRANGER set 30 (stranger30.yaml, development material, read from the twenty-first session's start)"),
-    "stranger31": ("stranger31.yaml", "STRANGER set 31 (stranger31.yaml, transfer measure of the twenty-first session: aggregates only until its end)"),
+    "stranger31": ("stranger31.yaml", "STRANGER set 31 (stranger31.yaml, development material, read from the twenty-second session's start)"),
+    "stranger32": ("stranger32.yaml", "STRANGER set 32 (stranger32.yaml, transfer measure of the twenty-second session: aggregates only until its end)"),
 }
 SPLITS = HERE / "splits.yaml"
 
