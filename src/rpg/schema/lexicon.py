@@ -3061,6 +3061,17 @@ PATCH_CENTRE_AND_START_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 """"into the middle of the black patch" (on it) and "starting from the left with blue" (blue first from the left)."""
 
 LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # the robot as a landmark: its side of the table is the front, its left and right the table's (rpg's frame,
+    # :mod:`rpg.domain.constants`) ("in front of the robot", "on the robot's left": a region of the table; the words
+    # had been dropped with "robot's", ignorable, and a row or two cubes read anywhere)
+    (re.compile(r"\b(?:in\s+front\s+of|(?:near(?:est)?|clos(?:e|er|est))(?:\s+to)?|right\s+by)\s+(?:the\s+|your\s+)?robot(?:'s\s+base)?\b"),
+     "at the front of the table"),
+    (re.compile(r"\b(?:far(?:thest)?\s+(?:away\s+)?from|away\s+from)\s+(?:the\s+|your\s+)?robot(?:'s\s+base)?\b"),
+     "at the back of the table"),
+    (re.compile(r"\b(?:on|to|at|in)\s+the\s+robot's\s+(left|right)(?:[\s-]*hand)?(?:\s+side)?\b(?!\s+of\b)"),
+     r"on the \1 side of the table"),
+    (re.compile(r"\b(?:to\s+the\s+|on\s+the\s+)?(left|right)(?:[\s-]*hand\s+side)?\s+of\s+the\s+robot(?:'s\s+base)?\b"),
+     r"on the \1 side of the table"),
     (re.compile(r"\btoward(?:s)?\b"),
      "to"),
     # "put green cube to yellow cube left side", "to the blue block's right": a side of the landmark cube

@@ -1182,7 +1182,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         text = re.sub(said, r"\1 \2 of the table", text)
     # "with yellow as the base": a cube of that colour at that end (read as a tower of yellow cubes)
     # "with red on top": a cube at that end, the one already named when its colour was ("a red cube, ... with red on top")
-    text = re.sub(rf"\bwith\s+({COLOR_RE})\s+(as|at|on)\s+(the\s+)?(base|bottom|top)\b", _end_cube, text)
+    text = re.sub(rf"\bwith\s+({COLOR_RE})\s+(as|at|on)\s+(the\s+)?(base|bottom|top)\b(?!\s+(?:layer|row|level|tier|course|floor)s?\b)",
+                  _end_cube, text)  # ("with red on the bottom layer": the whole layer, read by the pyramid's reader)
     text = lexicon.LAYER_SYNONYM_RE.sub(lambda m: "bottom " if m.group("low") else "top ", text)
     # "the green one goes in between" (a middle left unnamed): in the middle
     if re.search(r"\b(?:stack|stacked|tower|towers|stacks)\b", text):
