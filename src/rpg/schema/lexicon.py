@@ -263,6 +263,43 @@ sequence, a repetition or quantity, a reversal or another change of the scene, a
 quantifier that may stand for cubes, an order, a colour, a size or a number.  Such a sentence may change what the task
 asks ("Then reset.", "Nothing else may move.", "Twice.", "Quickly."), so it stays, to be read or refused."""
 
+EVALUATION_WORD_RE = re.compile(
+    r"\b(?:episodes?|seeds?|trials?|rollouts?|success(?:\s+(?:rates?|checks?|criteri(?:on|a)|conditions?|detectors?))?"
+    r"|scores?|scored|scoring|leaderboards?|entr(?:y|ies)|baselines?|polic(?:y|ies)|metrics?|benchmarks?|accuracy|percent"
+    r"|rank(?:ed|ing|s)?|averaged|evaluat(?:ed|ion|ions)|checkpoints?|submissions?|fires?|fails?|failed|failures?|passes"
+    r"|sims?|simulations?|runs?)\b|%")
+"""Words of a policy's evaluation, not of its task ("Ranked by success rate over 100 episodes.", "Scores are averaged
+over 5 seeds.", "Best entry so far: 71%.", "(fails on roughly 30% of seeds)"): a sentence or parenthesis that has one
+and names no cube, colour, structure, place, placement verb or pronoun for cubes (:data:`EVALUATION_BLOCKER_RE`)
+reports on evaluating the task, and :func:`rpg.schema.reading.drop_asides` drops and lists it (its numbers count
+episodes and seeds, its negations and superlatives judge policies: none is the goal's)."""
+
+_GOAL_THINGS = (r"(?:" + "|".join(COLORS) + r"|grey|blocks?|cubes?|bricks?|box(?:es)?|patch(?:es)?|pads?|mats?|tiles?|squares?"
+                r"|towers?|stacks?|stacked|stacking|piles?|lines?|rows?|columns?|pillars?|pyramids?|walls?|grids?|circles?|rings?"
+                r"|letters?|digits?|labels?|left|right|front|back|rear|behind|middle|cent(?:er|re)|corners?|edges?|sides?"
+                r"|top|bottom|base|next|near|beside|between|far|apart|onto|under|above|below|table)")
+"""The words of a goal's things, places and relations (no counts: a report's numbers count episodes and steps)."""
+
+GOAL_THING_RE = re.compile(rf"\b{_GOAL_THINGS}\b")
+
+EVALUATION_BLOCKER_RE = re.compile(
+    r"\b(?:" + _GOAL_THINGS + r"|put|place|move|set|lay|bring|build|make|arrange|group|line"
+    + r"|stack|spell\w*|sort\w*|order\w*|reads?|it|its|they|them|their|those|these|must|should|has\s+to|have\s+to|needs?\s+to"
+    r"|then|after|afterwards|finally|instead|keep|stay\w*|remain\w*|leave|until|while|during|push\w*|pull\w*|knock\w*"
+    r"|throw\w*|shak\w*|drop\w*|lift\w*|pick\w*|grasp\w*|grab\w*|rotat\w*|flip\w*|turn\w*|slid\w*|toss\w*|tip\w*"
+    r"|toppl\w*|touch\w*|hold\w*|carr\w*|remov\w*|take|swap\w*|tid\w*|clean\w*|clear\w*|reset\w*|undo|everything"
+    r"|anything|something|nothing)\b")
+"""What keeps a sentence with an evaluation word (:data:`EVALUATION_WORD_RE`) in the task: anything of a goal or a
+requirement or sequence that may constrain one ("In every episode the red cube must stay on the patch."), or a
+verb that moves cubes."""
+
+QUOTED_TASK_RE = re.compile(r"(?i)\b(?:the\s+)?(?:task|instruction|prompt|command)\s*(?:=|:|is|was)?\s*[\"\u201c](?P<q>[^\"\u201d]{8,400})[\"\u201d]")
+"""A task quoted inside a report of it ('Repro: 1. reset the sim 2. give the task "put the cyan cube behind the red cube" 3.
+the success check never fires'): when the words outside the quote name no cube, colour, structure, place or relation
+(:data:`GOAL_THING_RE`), the quote is the task and the rest is dropped and listed
+(:func:`rpg.schema.reading.drop_asides`); otherwise the whole text is read (an expected result restated outside the
+quote is read with it, and refused where it cannot be)."""
+
 TITLE_MAX_WORDS = 4
 """The most words of a capitalised title over a task ("Challenge: Wall Builder.", "CHALLENGE 2 - Tower Rush."), which
 :func:`rpg.schema.reading.drop_asides` drops when the text after it says every word of the task it has."""
@@ -1229,8 +1266,10 @@ FREE_CHOICE_RE = re.compile(
     r"|[,;(\u2013\u2014-]?\s*\bwhich\s+(?:cubes?|blocks?|ones?)\s+(?:do\s*n[o']?t|don't|do\s+not|does\s*n[o']?t|doesn't|does\s+not)"
     r"\s+matter\b"
     r"|[,;(\u2013\u2014-]?\s*\b(?:it\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\s+which\s+(?:cubes?|blocks?|ones?)\b"
-    # "a tower of three, pink bottom, rest whatever", "the rest can be any colour": only with a count said elsewhere
-    r"|[,;(\u2013\u2014-]?\s*\b(?:and\s+)?(?:the\s+)?rest(?:\s+of\s+(?:them|the\s+(?:cubes|blocks)))?\s+(?:whatever|anything"
+    # "a tower of three, pink bottom, rest whatever", "the rest / the other blocks can be any colour": only with a count
+    # said elsewhere
+    r"|[,;(\u2013\u2014-]?\s*\b(?:and\s+)?(?:the\s+)?(?:rest(?:\s+of\s+(?:them|the\s+(?:cubes|blocks)))?|others|other\s+(?:cubes|blocks|ones))"
+    r"\s+(?:whatever|anything"
     r"|(?:can|may|could)\s+be\s+(?:any(?:thing|\s+colou?rs?)?|whatever)|(?:do\s*n[o']?t|don't|do\s+not)\s+matter"
     r"|(?:is|are)\s+(?:free|up\s+to\s+you|your\s+choice))\b")
 """Words that leave free what the goal does not judge anyway ("All other cubes may be anywhere.",
@@ -1481,6 +1520,13 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:in\s+order\s+)?to\s+(?:complete|solve|finish|pass)\s+(?:this|the)\s+(?:task|episode|level)\s*,\s*"),
     # a dotted section number before the text ("5.3 The tower ...")
     re.compile(r"^\s*\d+(?:\.\d+)+\.?\s+(?=[A-Za-z])"),
+    # "Deliverable D4 describes the evaluation task, in which the robot builds ...", "In Year 2 we evaluated the policy
+    # on a stacking task in which the robot places ...": a report's words before the task it names, which say nothing
+    # of cubes, colours or places and deny nothing (they had been refused for 'describes', 'policy')
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:(?!(?:" + "|".join(COLORS) + r"|grey|cubes?|blocks?|bricks?|patch(?:es)?|left|right|front|back"
+               r"|not|no|never|without|except|unless|[a-z]+n't|it|them)\b)[\w'\-]+,?\s+){0,14}?(?:an?|the|our|this)\s+(?:[\w\-]+\s+){0,3}?"
+               r"(?:task|benchmark|environment|setting|challenge|scenario|problem)\s*,?\s+(?:in\s+which|where(?:in)?)\s+"
+               r"(?=(?:the\s+)?(?:robot|agent|arm|policy)\b)"),
     # "We evaluate a tower-building task in which the policy must ...": the task it names follows
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:we\s+(?:evaluate|consider|study|use|define|propose)|consider|this\s+is)\s+an?\s+"
                r"(?:[\w-]+\s+){0,3}?(?:task|benchmark|environment|setting)\s+(?:in\s+which|where)\s+"),
@@ -1501,7 +1547,8 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
                r"(?:orientation|rotation|yaw|heading)\s*[.!]?\s*"),
     # "In this task(,) the agent must ...", "The policy must ...": the task follows
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:in\s+this\s+(?:task|episode|environment|setting)\s*,?\s*)?(?:the\s+)?"
-               r"(?:agent|robot|policy|controller|learner)\s+(?:must|should|has\s+to|needs\s+to|is\s+(?:required|asked)\s+to)\s+"),
+               r"(?:agents?|robots?|polic(?:y|ies)|controllers?|learners?)\s+(?:must|should|has\s+to|have\s+to|needs?\s+to"
+               r"|(?:is|are)\s+(?:required|asked)\s+to)\s+"),
     # "The episode is successful if ...", "the task succeeds when ...", "Success when ...": the goal follows
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:episode|task|trial|rollout|attempt)\s+(?:is\s+(?:considered\s+|deemed\s+|"
                r"counted\s+as\s+)?(?:successful|a\s+success|solved|completed?)|succeeds|counts\s+as\s+(?:a\s+)?success(?:ful)?)\s+"
@@ -3285,6 +3332,26 @@ TOWER_BETWEEN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      r"\1 in the middle"),
 )
 """In a tower, "the green one goes in between" (a middle left unnamed): in the middle."""
+
+
+def _tower_and_more(m: re.Match) -> str:
+    up = m.group("end") in ("bottom", "base")
+    if up != (m.group("dir") in ("on", "on top of", "above")):
+        return m.group(0)  # "red at the bottom and two more under it": a contradiction, left to the readers
+    n = int(NUMBER_WORDS.get(m.group("n"), m.group("n")))
+    return f"{m.group('s')} of {n + 1} cubes with the {m.group('c')} cube at the {'bottom' if up else 'top'}"
+
+
+TOWER_MORE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "a tower with the red cube at the bottom and two more cubes (of any colour) on it": a tower of three, red at the
+    # bottom, the others free (the two had been read as more red cubes)
+    (re.compile(rf"\b(?P<s>tower|stack)\s*(?::\s*|\s+with\s+)(?:the\s+|a\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on|as)\s+"
+                rf"(?:the\s+)?(?P<end>bottom|base|top)\s*,?\s+(?:and|with|plus)\s+(?P<n>\d+|{COUNT_WORD_RE})\s+(?:more|other|further|additional)\s+"
+                r"(?:cubes|blocks|ones)(?:\s+of\s+any\s+colou?rs?)?\s+(?P<dir>on\s+top\s+of|on|above|under(?:neath)?|below|beneath)"
+                r"(?:\s+(?:it|that|them))?\b"),
+     _tower_and_more),
+)
+"""A tower said by one end and how many more cubes stand on it or under it: a tower of that many, that end said."""
 
 READING_END_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\bfrom\s+(?:the\s+)?(left|right|front|back)(?:\s+(?:side|end))?\b(?!\s*(?:to|of|side|end|corner|edge|half|part)\b)"),

@@ -192,6 +192,19 @@ def _framing_sentence(sentence: str) -> bool:
     return True
 
 
+def _evaluation_report(sentence: str) -> bool:
+    """Whether a sentence (or a parenthesis) reports on evaluating the task, not the task ("Ranked by success rate over
+    100 episodes.", "Best entry so far: 71%.", "fails on roughly 30% of seeds"): it has a word of evaluation
+    (:data:`lexicon.EVALUATION_WORD_RE`) and nothing of a goal, requirement or sequence
+    (:data:`lexicon.EVALUATION_BLOCKER_RE`), and no word the domain cannot express but a quantity, a size, a negation,
+    time, a condition or an action other than a move of cubes (those judge policies here: "never fires", "best",
+    "roughly", "over 100 episodes")."""
+    low = re.sub(r"\b(?:so|thus)\s+far\b", " ", sentence.lower())  # "Best entry so far: 71%.": a time, not a distance
+    if not lexicon.EVALUATION_WORD_RE.search(low) or lexicon.EVALUATION_BLOCKER_RE.search(low):
+        return False
+    return all(k in ("quantity", "size", "negation", "time", "condition", "question", "action") for k, _, _ in _inexpressible(low))
+
+
 def _title_heading(sentence: str, rest: str) -> bool:
     """Whether ``sentence`` is a title over the ``rest`` of the text ("Challenge: Wall Builder.", "CHALLENGE 2 - Tower
     Rush."): at most :data:`lexicon.TITLE_MAX_WORDS` words, each capitalised (numbers are its identifier), no word
@@ -213,7 +226,13 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
     "Put the green block on the purple block. What a tower!") that name nothing of a goal
     (:data:`lexicon.ASIDE_CONTENT_RE`) and nothing the domain cannot express ("Quickly!" stays, to be refused), and
     other sentences that are framing (:func:`_framing_sentence`: "Code is linked in the description."), when a sentence
-    of the task is left; the text as it is when nothing else is left."""
+    of the task is left; the text as it is when nothing else is left.  A task quoted in a report of it
+    (:data:`lexicon.QUOTED_TASK_RE`) is the quote alone when the report says nothing of cubes or places."""
+    quoted = list(lexicon.QUOTED_TASK_RE.finditer(text))
+    if len(quoted) == 1:  # 'give the task "put the cyan cube behind the red cube"': the quote, its report dropped
+        rest = text[:quoted[0].start("q")] + text[quoted[0].end("q"):]
+        if not lexicon.GOAL_THING_RE.search(rest.lower()) and lexicon.GOAL_THING_RE.search(quoted[0].group("q").lower()):
+            return quoted[0].group("q").strip(), [rest.strip()]
     dropped: list[str] = []
 
     def aside(m: re.Match) -> str:
@@ -225,9 +244,16 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
     kept = re.sub(r"\s{2,}", " ", lexicon.EXCLAIMED_SENTENCE_RE.sub(aside, text)).strip()
     if not re.search(r"[a-z]", kept, re.I):
         return text, []
+    def report(m: re.Match) -> str:
+        if not _evaluation_report(m.group(1)):
+            return m.group(0)
+        dropped.append(m.group(0).strip())
+        return ""
+    reported = re.sub(r"\s{2,}", " ", re.sub(r"\s*\(([^()]{3,200})\)", report, kept)).strip()
+    kept = reported if re.search(r"[a-z]", reported, re.I) else kept
     sentences = re.split(r"(?<=[.!?])\s+", kept)
     framing = [s for i, s in enumerate(sentences) if not s.endswith("!") and (
-        _framing_sentence(s) or _title_heading(s, " ".join(sentences[i + 1:])))]
+        _framing_sentence(s) or _evaluation_report(s) or _title_heading(s, " ".join(sentences[i + 1:])))]
     if framing and len(framing) < len(sentences):
         kept = " ".join(s for s in sentences if s not in framing)
         dropped += framing
@@ -1188,6 +1214,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     # "the green one goes in between" (a middle left unnamed): in the middle
     if re.search(r"\b(?:stack|stacked|tower|towers|stacks)\b", text):
         text = lexicon.rewrite(lexicon.TOWER_BETWEEN_REWRITES, text)
+        text = lexicon.rewrite(lexicon.TOWER_MORE_REWRITES, text)
     text = lexicon.rewrite(lexicon.PATCH_CENTRE_AND_START_REWRITES, text)
     first = re.search(rf"\b(?:{COLOR_RE})\b", text)  # "... starting with red on the left": red first, left to right
     text = lexicon.END_SIDE_RE.sub(lambda m: f"{m.group('verb')} with {m.group('c')} from {lexicon.END_SIDE_DIRECTION[m.group('side')]}"
