@@ -19,6 +19,7 @@ from dataclasses import dataclass
 from rpg.domain.layouts import stack_layout
 from rpg.errors import BadInput
 from rpg.schema import lexicon
+from rpg.domain.predicates import Stack
 from rpg.schema.builder import Builder
 from rpg.schema.lexicon import COLOR_RE, MARKUP_RES, NUMBER_WORDS
 from rpg.schema.model import TaskSchema
@@ -35,6 +36,7 @@ START_SENTENCE_RE = re.compile(
     r"|the\s+(?:start|beginning)\s+is\b"
     r"|(?:scene\s+)?init(?:ial)?(?:\s+(?:state|scene|config(?:uration)?))?\s*:"
     r"|(?:setup|start|before|init)\s*:|(?:the\s+)?(?:scene|episode|table|task)\s+(?:starts|begins)\s+(?:with|as)"
+    r"|(?:it|the\s+(?:tower|stack|column))\s+(?:starts|begins)\s+(?:out\s+)?as\b"
     r"|(?:it\s+)?(?:starts|begins)\s+(?:out\s+)?with(?=\s+(?:the|a|an|one)\s)|(?:start|begin)\s+(?:out\s+)?with(?=\s+(?:a|an|one|the)\s)"
     r"|there(?:'s|\s+is)\s+(?=(?:an?|one)\s+(?:stack|tower|column)\s+of\b)|we\s+start\s+(?:with|from)|(?:the\s+)?(?:(?:letter|digit|number|colou?red)\s+)?(?:cubes|blocks)\s+start(?:\s+out)?(?:\s+as|\s+in|\s*:)?)"
     r"\s*[:,\-\u2014]?\s*")
@@ -121,10 +123,13 @@ class InitialScene:
     Attributes:
         stacks: each initial stack's colours, bottom to top.
         goal: the rest of the instruction (the goal, read by the whole front end).
+        kept: stacks of the start (bottom to top) the goal says to leave as they are ("leave the other two as they
+            are"): part of the goal.
     """
 
     stacks: tuple[tuple[str, ...], ...]
     goal: str
+    kept: tuple[tuple[str, ...], ...] = ()
 
 
 _COUNTED_TOWER_RE = re.compile(
@@ -202,6 +207,29 @@ def _facts(content: str) -> list[tuple[str, ...]] | None:
     return merged
 
 
+def _stacks_read(content: str) -> list[tuple[str, ...]] | None:
+    """The stacks (bottom to top) a statement of the start says, read by the whole front end as if it were a goal
+    ("red cube stacked on a white cube stacked on a black cube", "blue on the bottom, then orange, then white on
+    top"), or None unless that reading is only stacks in one order, of cubes each of its own colour or label, and
+    accounts for every word (a tower "in any order", a row, a place: no start rpg builds)."""
+    from rpg.schema.readers import parse  # the front end reading this start's words (it calls this module first)
+
+    content = re.sub(r"(?i)^\s*(?:the|a|one)\s+(tower|stack|column)\s+(?:is|was|has|looks\s+like)\s*:?\s*", r"a \1: ", content)
+    try:  # ("the tower is blue on the bottom, ...": the tower the start describes)
+        schema = parse(content)
+    except BadInput:
+        return None
+    if schema.initial_state.structures:
+        return None  # a start inside the start
+    parts = schema.goal_predicate().conjuncts()
+    if not parts or any(type(p) is not Stack for p in parts):
+        return None
+    names = {a.name: (a.label if a.label else a.color) for a in schema.assets}
+    stacks = [tuple(names.get(o) for o in p.objects) for p in parts]
+    said = [c for st in stacks for c in st]
+    return stacks if all(said) and len(said) == len(set(said)) else None
+
+
 def _canon(name: str) -> str:
     """A colour's palette name, or a label as it is written ("A", "3")."""
     return name if re.fullmatch(r"[A-Z]|\d", name) else canon_color(name.lower())
@@ -227,11 +255,45 @@ def _merged(stacks: list[tuple[str, ...]]) -> list[tuple[str, ...]] | None:
     return [tuple(t) for t in towers] if len(colors) == len(set(colors)) else None
 
 
-_TAKE_OFF_RE = re.compile(rf"(?i)^\s*(?:then\s+)?take\s+(the\s+(?:{COLOR_RE}|(?-i:[A-Z])|\d)(?:\s+(?:one|cube|block))?)\s+off"
-                         r"(?:\s+(?:of\s+)?(?:the\s+)?(?:tower|stack|top))?\s*,?\s*(?:and\s+)?(?:then\s+)?(?:just\s+)?(?:set|put|place|lay|leave|drop)\s+it"
-                         r"\s+(?:down\s+)?(?:on|onto)\s+the\s+table")
-"""A cube taken off the start's tower and set on the table ("Take the red one off and set it on the
-table"): the cube sent to the table."""
+_TAKEN = rf"the\s+(?:{COLOR_RE}|(?-i:[A-Z])|\d)(?:\s+(?:one|cube|block))?"
+_TAKE_OFF_RE = re.compile(
+    rf"(?i)^\s*(?:then\s+)?(?:take|lift|remove|pick)\s+(?:(?P<a>{_TAKEN})\s+off|off\s+(?P<b>{_TAKEN}))"
+    rf"(?:\s+(?:of\s+)?(?:the\s+)?(?:tower|stack|top|(?P<below>{_TAKEN})))?\s*,?\s*(?:and\s+)?(?:then\s+)?(?:just\s+)?"
+    r"(?:set|put|place|lay|leave|drop)\s+it\s+(?:down\s+)?(?:(?P<table>(?:on|onto)\s+the\s+table)"
+    r"|(?P<rel>next\s+to|beside|to\s+the\s+(?:left|right)\s+of|in\s+front\s+of|behind)\s+(?P<obj>it\b|" + _TAKEN + r"))")
+"""A cube taken off the start's tower and set on the table or beside a cube ("Take the red one off and set it on the
+table", "take off the red cube and put it on the table", "take the orange block off the brown block and set it down next
+to it": 'it' the cube it came off): where the cube goes."""
+
+
+LEAVE_REST_RE = re.compile(
+    r"(?i)\s*[;,]?\s*(?:and\s+)?(?:(?:leave|keep)\s+(?:the\s+)?(?:other\s+(?:two|three|four|\d+|ones|cubes|blocks)|rest|others)"
+    r"(?:\s+(?:cubes|blocks|of\s+(?:them|the\s+(?:tower|stack))))?|(?:the\s+)?(?:other\s+(?:two|three|four|\d+|ones|cubes|blocks)|rest|others)"
+    r"(?:\s+(?:cubes|blocks))?\s+(?:stay|stays|remain|remains)|(?:don't|do\s+not)\s+(?:touch|move)\s+the\s+(?:rest|others"
+    r"|other\s+(?:two|three|\d+|ones|cubes|blocks)))(?:\s+(?:as\s+(?:they\s+are|it\s+is|is)|where\s+they\s+are|in\s+place|stacked"
+    r"|alone|untouched|standing))?(?=\s*[.!;]?\s*$)")
+"""A goal's words that leave the rest of the start's stack as it is ("...; leave the other two as they are", "the rest
+stay where they are"): those cubes' stack is part of the goal (:attr:`InitialScene.kept`)."""
+
+
+UNDO_START_RE = re.compile(r"(?i)^\s*(?:please\s+)?(?:unstack|dismantle|take\s+apart|disassemble)\s+(?:it|them|the\s+(?:tower|stack))"
+                           r"\s*[.!]?\s*$|^\s*take\s+(?:it|the\s+(?:tower|stack))\s+apart\s*[.!]?\s*$")
+"""A goal sentence that only undoes the start's stack ("Unstack the tower."): every cube on the table, or, when
+another goal sentence follows, what that one says."""
+
+
+def _taken_off(m: re.Match) -> str:
+    cube = m.group("a") or m.group("b")
+    if m.group("table"):
+        return f"put {cube} on the table"
+    obj = m.group("below") if m.group("obj").lower() == "it" else m.group("obj")
+    return f"put {cube} {m.group('rel')} {obj}" if obj else m.group(0)
+
+
+STARTS_FACT_RE = re.compile(rf"(?i)^\s*{_CUBE.format(g='top')}\s+(?:starts|begins|is\s+initially|starts\s+out|sits\s+initially)\s+"
+                            rf"(?:stacked\s+|sitting\s+|resting\s+)?(?:on\s+top\s+of|on|atop)\s+{_CUBE.format(g='bottom')}\s*[.!;]?\s*$")
+"""A sentence that only says where a cube starts ("The orange block starts on top of the brown one."), before or after
+the goal: a fact of the start."""
 
 
 _UNSTACK_RE = re.compile(
@@ -270,31 +332,53 @@ def split(instruction: str) -> InitialScene | None:
         rest = rest if re.match(r"(?i)(?:put|place|move|take|stack|unstack|dismantle|leave|build|make|set|bring|now|then|goal|the|a|an)\b",
                                 rest) else f"{subject} {rest}"  # "... and must end up on the table": the subject carried over
         rest = re.sub(r"(?i)^((?:then\s+)?(?:put|place|move|take|set|bring|slide|push)\s+)it\b", rf"\1{subject}", rest)  # "Put it ..."
+        rest = "put all the cubes on the table." if UNDO_START_RE.match(rest) else rest  # "... Unstack it."
         return InitialScene(tuple(stacks), GOAL_OPENER_RE.sub("", rest, count=1)) if stacks else None
-    sentences = [s for s in re.split(r"(?<=[.;!?])\s+|\s*(?=\b(?:[Gg]oal|[Tt]arget)\s*:)", instruction.strip()) if s.strip()]
+    sentences = [s for s in re.split(r"(?<=[.;!?])\s+|\s*(?=\b(?:[Gg]oal|[Tt]arget)\s*:)|\s*,?\s*\band\s+(?=(?:at|in)\s+the\s+end\b)",
+                                      instruction.strip()) if s.strip()]
     start, goal = [], []
-    sentences = [_TAKE_OFF_RE.sub(r"put \1 on the table", s) for s in sentences]
+    sentences = [_TAKE_OFF_RE.sub(_taken_off, s) for s in sentences]
     for s in sentences:
         m = START_SENTENCE_RE.match(s)
-        if m and not goal:
+        if m:  # a start said before the goal or after it ("... next to it. The orange block starts on the brown one.")
             start.append(s[m.end():])
+        elif STARTS_FACT_RE.match(s):
+            start.append(s)
         else:
             opened = GOAL_OPENER_RE.sub("", s, count=1)
-            goal.append(GOAL_OPENER_RE.sub("", opened, count=1) if opened != s else opened)  # "Goal: take the tower apart so ..."
+            opened = GOAL_OPENER_RE.sub("", opened, count=1) if opened != s else opened  # "Goal: take the tower apart so ..."
+            goal.append(_TAKE_OFF_RE.sub(_taken_off, opened))  # "Goal: take off the red cube and put it on the table"
     if not start:
         return None
+    leave = LEAVE_REST_RE.search(" ".join(goal))
+    if leave:  # "take off the red cube ...; leave the other two as they are": the rest of its stack stays stacked
+        goal = [" ".join(goal)[:leave.start()] + " ".join(goal)[leave.end():]]
+    if len(goal) > 1 and UNDO_START_RE.match(goal[0]):
+        goal = goal[1:]  # "Unstack the tower. ... At the end all three cubes should be on the table.": the end said after
+    elif len(goal) == 1 and UNDO_START_RE.match(goal[0]):
+        goal = ["put all the cubes on the table."]  # "Unstack the tower.": every cube off the others
     stacks = _facts(" , ".join(start))
+    if stacks is None:  # a start the whole front end reads as stacks ("red stacked on white stacked on black")
+        stacks = _stacks_read(" ".join(f.strip().rstrip(".;,") + "." for f in start))
     if stacks is None:  # a start this module cannot build: refused, never read as part of the goal
         raise Inexpressible("time", [start[0].strip()[:60]], "states a starting scene rpg does not build: rho_0 starts only "
                             "stacks of named cubes, each cube once, the rest scattered (e.g. \"Initially the red cube is on the "
                             "blue cube. Put ...\"); say only where the cubes must end up", instruction)
-    return InitialScene(tuple(stacks), " ".join(goal).strip())
+    kept: list[tuple[str, ...]] = []
+    if leave:
+        moved = {_canon(c) for c in re.findall(rf"(?i)\b(?:{COLOR_RE})\b", " ".join(goal))}
+        for st in stacks:
+            rest = tuple(c for c in st if c not in moved)
+            if st[:len(rest)] != rest or not moved & set(st):
+                return None  # a cube taken from under another, or nothing of this stack moved: read as written (refused)
+            kept += [rest] if len(rest) > 1 else []
+    return InitialScene(tuple(stacks), " ".join(goal).strip(), tuple(kept))
 
 
 ALL_ON_TABLE_GOAL_RE = re.compile(
     r"(?i)^\s*(?:(?:unstack|dismantle|take\s+apart)\s+(?:it|them|the\s+(?:tower|stack))\s*,?\s*(?:and\s+|so\s+(?:that\s+)?)?"
     r"|take\s+(?:it|them|the\s+(?:tower|stack))\s+apart\s*,?\s*(?:and\s+|so\s+(?:that\s+)?)?)?"
-    r"(?:(?:put|place|set|lay|leave|get)\s+)?(?:both|all|every|each|the\s+(?:two|three|four|five|\d+))\s+(?:of\s+)?(?:the\s+)?"
+    r"(?:(?:put|place|set|lay|leave|get)\s+)?(?:both|all|every|each|the)(?:\s+(?:of\s+the\s+)?(?P<n>two|three|four|five|six|\d+))?\s+(?:of\s+)?(?:the\s+)?"
     r"(?:cubes|blocks|cube|block|ones|of\s+them|them)?\s*(?:(?:must|should|have\s+to|need\s+to|will)\s+)?(?:(?:be|end\s+up|ends\s+up"
     r"|sit|sits|sitting|stand|stands|standing|lie|lies|lying|rest|rests|resting|placed|are|is|go|stay)\s+){0,2}"
     r"(?:(?:flat|back|down|separately)\s+)?(?:on|onto)\s+the\s+table\s*[.!]?$")
@@ -336,6 +420,9 @@ def on_table_goal(scene: InitialScene) -> TaskSchema | None:
     m = None if every else ON_TABLE_GOAL_RE.match(scene.goal)
     if m is None and every is None:
         return None
+    said = every.group("n") if every else None
+    if said and NUMBER_WORDS.get(said, int(said) if said.isdigit() else 0) != sum(len(st) for st in scene.stacks):
+        return None  # "all four cubes on the table" of a start of three: not these cubes
     colors = [c for s in scene.stacks for c in s[1:]] if every else [canon_color(m.group("c"))]
     if not colors or not all(any(c in s[1:] for s in scene.stacks) for c in colors):
         return None  # it starts on the table: the goal would hold before anything moved
@@ -380,6 +467,10 @@ def attach(head: TaskSchema, scene: InitialScene, instruction: str) -> TaskSchem
         b.summary.append("initially a stack bottom to top: " + ", ".join(names))
     raised = {n for st in b.structures for n in st[1:]}  # cubes that start on another cube
     b.preds = [p for q in b.preds for p in _resting_on(q, raised)]
+    by_color = {a.label or a.color: a.name for a in b.assets if a.kind != "goal_patch"}
+    for colors in scene.kept:  # "leave the other two as they are": their stack is the goal's too
+        b.preds.append(Stack(objects=tuple(by_color[c] for c in colors)))
+        b.summary.append("left stacked bottom to top: " + ", ".join(by_color[c] for c in colors))
     return b.schema(task_slug(instruction), paraphrases=list(head.paraphrases))
 
 
