@@ -4309,3 +4309,105 @@ def test_both_objects_of_between_stay_off_a_later_patch():
 def test_older_silent_classes_the_second_tester_left_are_refused(text):
     with pytest.raises(ParseError):
         parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    # the robot as a landmark: a region of the table (the words had been dropped with the ignorable "robot's")
+    ("we want 3 pink blocks lined up left to right in front of the robot", ["line[left_to_right](pink,pink,pink)@front"]),
+    ("eval task: white cube on the robot's left, black cube on the robot's right",
+     ["in_region(black,right)", "in_region(white,left)"]),
+    ("put the red block far from the robot", ["in_region(red,back)"]),
+    ("put the red cube next to the blue cube, on its left", ["left_of(red,blue)", "next_to(blue,red)"]),  # its: the cube's
+    # a layer's colour reaches every cube of it (one red cube had been put at the bottom, two made up)
+    ("Build a 3-2-1 pyramid with red on the bottom layer, green in the middle layer and blue on top.",
+     ["pyramid(red,red,red|green,green|blue)"]),
+])
+def test_places_said_by_the_robot_and_layers_said_by_colour_are_read(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Stack-3-Ordered: agents must build a tower with blue at the base, green in the middle and red at the top. "
+     "Ranked by success rate over 100 episodes.", ["stack(blue,green,red)"]),
+    ("Repro task: the purple block should be placed far from the pink block (fails on roughly 30% of seeds)",
+     ["far_from(pink,purple)"]),
+    ("Deliverable D4 describes the evaluation task, in which the robot builds a pyramid of three cubes, with two white "
+     "cubes forming the base and a black cube at the apex.", ["pyramid(white,white|black)"]),
+    ('Repro: 1. reset the sim 2. give the task "put the cyan cube behind the red cube" 3. the success check never fires',
+     ["behind(cyan,red)"]),
+    ("Build a tower with the red cube at the bottom and two more cubes of any colour on it", ["stack(red,blue,green)"]),
+    ("Build a tower that is 4 blocks tall with a white block on top. The other blocks can be any colour.",
+     ["stack(red,blue,green,white)"]),
+])
+def test_reports_on_evaluating_a_task_and_towers_said_by_one_end_are_read(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "Stack the red cube on the blue cube. In every episode nothing else may move.",  # a constraint, not a report
+    "Stack the red cube on the blue cube. Best policy so far knocks everything over.",  # a move of cubes
+    "Stack the red cube on the blue cube. Run it for 5 seeds.",  # 'it' may stand for a cube
+    "We never used the task where the robot stacks the red cube on the blue cube.",  # a denial before the task
+    'task: "stack red on blue" but never in the corner',  # the words outside the quote say a place
+    "Stack the red cube on the blue cube, the others can be any colour",  # no count: which others?
+])
+def test_reports_that_may_say_something_of_the_goal_are_not_dropped(text):
+    with pytest.raises(ParseError):
+        parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Start: red cube stacked on a white cube stacked on a black cube. Goal: take off the red cube and put it on the "
+     "table; leave the other two as they are.", ["on_table(red)", "stack(black,white)", "start:stack(black,white,red)"]),
+    ("Unstack the tower. It starts as blue on the bottom, then orange, then white on top, and at the end all three "
+     "cubes should be on the table.", ["on_table(orange)", "on_table(white)", "start:stack(blue,orange,white)"]),
+    ("take the orange block off the brown block and set it down next to it. the orange block starts on top of the "
+     "brown one", ["next_to(brown,orange)", "start:stack(brown,orange)"]),
+    ("The red cube starts on the blue cube. Unstack it.", ["on_table(red)", "start:stack(blue,red)"]),
+    ("Initially the tower is blue on the bottom, then orange, then white on top. Put all three cubes on the table.",
+     ["on_table(orange)", "on_table(white)", "start:stack(blue,orange,white)"]),
+])
+def test_starts_are_read_by_the_whole_front_end_before_or_after_the_goal(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "Start: red on white on black. Goal: put the white cube on the table; leave the others as they are.",  # from under red
+    "Start: red on blue. Goal: all three cubes on the table.",  # the start has two
+    "Start: a tower of three cubes. Goal: all cubes on the table.",  # which cubes start where is not said
+])
+def test_starts_that_are_not_stacks_of_named_cubes_are_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)
+
+
+@pytest.mark.parametrize("text", [
+    # from a hostile tester of this session's features: each had compiled with words dropped
+    "Stack the red cube on the blue cube (success rate 80%, in reverse).",  # an order change inside a report
+    "Stack the red cube on the blue cube (50 episodes, upside down).",
+    "Reverse the task in which the robot stacks the red cube on the blue cube.",  # a frame that changes the task
+    'Do not give the task "stack the red cube on the blue cube".',  # a negation outside the quote
+    'give the task "stack the red cube on the blue cube" in reverse',
+    "Put the cube nearest the robot on the blue cube.",  # a cube picked by where it is
+    "Put the red cube on the cube near the robot.",
+    "Build a tower with the red cube at the bottom and three more cubes on the blue cube.",
+    "Start: the red cube is on the blue cube. Take the blue cube off the red cube and set it down next to it.",
+    "Start: the red cube is on the blue cube. Take the red cube off the green cube and set it down next to it.",
+    "Start: the red cube is on the blue cube, which is on the green cube. Take the red cube off the blue cube and set it "
+    "down next to it; leave the other three as they are.",  # two others, not three
+    "Start: red on blue on green. Unstack the tower. Put the red cube on the green cube.",  # blue's end unsaid
+    "Start: red on blue, green on yellow. Unstack the tower.",  # which tower
+])
+def test_attacks_on_reports_quotes_robot_places_and_starts_are_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)
+
+
+def test_the_rest_of_a_start_stack_left_as_it_is_keeps_the_cubes_under_the_one_moved():
+    text = ("Start: the red cube is on the blue cube, which is on the green cube. Take the red cube off the blue cube and "
+            "set it down next to it; leave the other two as they are.")
+    assert sorted(meaning(parse(text))) == ["next_to(blue,red)", "stack(green,blue)", "start:stack(green,blue,red)"]
+
+
+def test_three_piles_of_one_colour_take_any_split():
+    assert sorted(meaning(parse("make three separate piles, each of two brown cubes"))) == ["pile(brown,brown)"] * 3

@@ -288,10 +288,18 @@ EVALUATION_BLOCKER_RE = re.compile(
     r"|then|after|afterwards|finally|instead|keep|stay\w*|remain\w*|leave|until|while|during|push\w*|pull\w*|knock\w*"
     r"|throw\w*|shak\w*|drop\w*|lift\w*|pick\w*|grasp\w*|grab\w*|rotat\w*|flip\w*|turn\w*|slid\w*|toss\w*|tip\w*"
     r"|toppl\w*|touch\w*|hold\w*|carr\w*|remov\w*|take|swap\w*|tid\w*|clean\w*|clear\w*|reset\w*|undo|everything"
-    r"|anything|something|nothing)\b")
+    r"|anything|something|nothing|revers\w*|backwards?|opposite|invers\w*|invert\w*|mirror\w*|vice|versa|other\s+way|twice"
+    r"|thrice|times|repeat\w*|again|doubl\w*|half|upside|sideways|alternat\w*|only|except|but|also|plus|taller|shorter"
+    r"|higher|lower|more|less|swap\w*|within|cm|mm|inch\w*|degrees?)\b")
 """What keeps a sentence with an evaluation word (:data:`EVALUATION_WORD_RE`) in the task: anything of a goal or a
 requirement or sequence that may constrain one ("In every episode the red cube must stay on the patch."), or a
 verb that moves cubes."""
+
+QUOTED_TASK_REPORT_RE = re.compile(
+    r"^(?:\s*(?:\d+[.)]|[-*\u2022]|;|,|\.|:|repro(?:duce)?|steps?|str|to|give|run|ran|the|a|task|instruction|prompt|command|reset|sim"
+    r"|simulation|env(?:ironment)?|scene|bug|issue|with|using|when|i|we|expected|actual|result|=|:|\(|\))\s*)*$")
+"""The words of a bug report around a quoted task ("Repro: 1. reset the sim 2. give the task"): each segment of the text
+outside the quote must be these or a report on evaluating (:data:`EVALUATION_WORD_RE`)."""
 
 QUOTED_TASK_RE = re.compile(r"(?i)\b(?:the\s+)?(?:task|instruction|prompt|command)\s*(?:=|:|is|was)?\s*[\"\u201c](?P<q>[^\"\u201d]{8,400})[\"\u201d]")
 """A task quoted inside a report of it ('Repro: 1. reset the sim 2. give the task "put the cyan cube behind the red cube" 3.
@@ -664,7 +672,8 @@ one introduced ("a tower of three blocks", "build ...") or a cube put on another
 PLACE_PICKED_RE = re.compile(
     r"\bthe\s+(?:top|bottom|topmost|uppermost|highest|lowest|bottommost|middle|center|centre|left|right|front|back"
     r"|closest|nearest|farthest|furthest|near|far)\s+(?:blocks?|cubes?|ones?|boxes|box)\b"
-    r"(?!\s+(?:stacks?|towers?|piles?|lines?|rows?|columns?)\b)")  # "the highest block stack": a structure
+    r"(?!\s+(?:stacks?|towers?|piles?|lines?|rows?|columns?)\b)"  # "the highest block stack": a structure
+    r"|\b(?:blocks?|cubes?|ones?)\s+(?:that\s+is\s+|which\s+is\s+|that's\s+)?(?:closest|nearest|farthest|furthest)\b")  # "the cube nearest the robot"
 """"The top block", "the left one", "the nearest cube": a cube picked by its place.  It must be a
 place in a structure described before it (:data:`PLACED_PART_INTRO_RE`: "build a tower of three
 and make the top block red"); otherwise it is a place in the scene the speaker sees, which a task
@@ -1472,6 +1481,14 @@ CHAT_TURN_RES: tuple[tuple[re.Pattern, str], ...] = (
 "alice> ..."): each turn read as a sentence, its speaker's name then dropped as a label
 (:data:`LABEL_RE`)."""
 
+_REPORT_FRAME_WORDS = (r"(?:describes?|described|evaluat(?:e|es|ed|ing)|uses?|used|consider(?:s|ed)?|stud(?:y|ies|ied)|defines?|defined"
+                       r"|propos(?:e|es|ed)|reports?|reported|present(?:s|ed)?|introduc(?:e|es|ed)|deliverables?|milestones?|years?"
+                       r"|quarters?|months?|sections?|papers?|work|package|phase|period|reporting|policy|policies|benchmarks?"
+                       r"|evaluation|project|lab|team|we|our|i|in|on|for|of|the|a|an|this|that|is|was|here|below|following|as)")
+"""The words of a report before the task it names ("Deliverable D4 describes the evaluation task, in which ..."): nothing
+else may stand there (a frame that reverses, repeats, negates or changes the task, "Reverse the task in which ...", is
+not dropped)."""
+
 TASK_FRAME_RES: tuple[re.Pattern, ...] = (
     # the writer's picture of the goal ("Think of a pyramid made of six cubes.", "Picture three towers ...", "I am
     # picturing a tidy table with ...", "What I have in mind is a small tower ...", "For this scene, picture a row ..."):
@@ -1523,8 +1540,8 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
     # "Deliverable D4 describes the evaluation task, in which the robot builds ...", "In Year 2 we evaluated the policy
     # on a stacking task in which the robot places ...": a report's words before the task it names, which say nothing
     # of cubes, colours or places and deny nothing (they had been refused for 'describes', 'policy')
-    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:(?!(?:" + "|".join(COLORS) + r"|grey|cubes?|blocks?|bricks?|patch(?:es)?|left|right|front|back"
-               r"|not|no|never|without|except|unless|[a-z]+n't|it|them)\b)[\w'\-]+,?\s+){0,14}?(?:an?|the|our|this)\s+(?:[\w\-]+\s+){0,3}?"
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:(?:" + _REPORT_FRAME_WORDS + r"|[a-z]*\d[\w\-]*)\s*,?\s+){0,14}?(?:an?|the|our|this)\s+"
+               r"(?:(?:" + _REPORT_FRAME_WORDS + r"|[a-z]+ing|[a-z]+-[a-z]+)\s+){0,3}?"
                r"(?:task|benchmark|environment|setting|challenge|scenario|problem)\s*,?\s+(?:in\s+which|where(?:in)?)\s+"
                r"(?=(?:the\s+)?(?:robot|agent|arm|policy)\b)"),
     # "We evaluate a tower-building task in which the policy must ...": the task it names follows
@@ -3107,18 +3124,30 @@ PATCH_CENTRE_AND_START_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 )
 """"into the middle of the black patch" (on it) and "starting from the left with blue" (blue first from the left)."""
 
+def _robot_side(m: re.Match, side: str) -> str:
+    """A place said from the robot, as a side of the table; said of an unnamed cube just before it ("on the cube near the
+    robot") or as a superlative ("the cube nearest the robot"), the words as written (a cube picked by where it is,
+    refused)."""
+    before = m.string[:m.start()]
+    noun = re.search(r"\b(?P<det>the|a|an|one)\s+(?:(?P<c>[a-z]+)\s+)?(?:cubes?|blocks?|ones?)\s+(?:that\s+is\s+|which\s+is\s+|that's\s+)?$",
+                     before)
+    if noun and (re.match(r"(?:near|clos|far)\w*est\b", m.group(0)) or noun.group("c") not in COLORS):
+        return m.group(0)  # "the cube nearest the robot", "on the cube near the robot": a cube picked by where it is (refused)
+    return side
+
+
 LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # the robot as a landmark: its side of the table is the front, its left and right the table's (rpg's frame,
     # :mod:`rpg.domain.constants`) ("in front of the robot", "on the robot's left": a region of the table; the words
     # had been dropped with "robot's", ignorable, and a row or two cubes read anywhere)
     (re.compile(r"\b(?:in\s+front\s+of|(?:near(?:est)?|clos(?:e|er|est))(?:\s+to)?|right\s+by)\s+(?:the\s+|your\s+)?robot(?:'s\s+base)?\b"),
-     "at the front of the table"),
+     lambda m: _robot_side(m, "at the front of the table")),
     (re.compile(r"\b(?:far(?:thest)?\s+(?:away\s+)?from|away\s+from)\s+(?:the\s+|your\s+)?robot(?:'s\s+base)?\b"),
-     "at the back of the table"),
+     lambda m: _robot_side(m, "at the back of the table")),
     (re.compile(r"\b(?:on|to|at|in)\s+the\s+robot's\s+(left|right)(?:[\s-]*hand)?(?:\s+side)?\b(?!\s+of\b)"),
-     r"on the \1 side of the table"),
+     lambda m: _robot_side(m, f"on the {m.group(1)} side of the table")),
     (re.compile(r"\b(?:to\s+the\s+|on\s+the\s+)?(left|right)(?:[\s-]*hand\s+side)?\s+of\s+the\s+robot(?:'s\s+base)?\b"),
-     r"on the \1 side of the table"),
+     lambda m: _robot_side(m, f"on the {m.group(1)} side of the table")),
     (re.compile(r"\btoward(?:s)?\b"),
      "to"),
     # "put green cube to yellow cube left side", "to the blue block's right": a side of the landmark cube
@@ -3348,7 +3377,7 @@ TOWER_MORE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b(?P<s>tower|stack)\s*(?::\s*|\s+with\s+)(?:the\s+|a\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on|as)\s+"
                 rf"(?:the\s+)?(?P<end>bottom|base|top)\s*,?\s+(?:and|with|plus)\s+(?P<n>\d+|{COUNT_WORD_RE})\s+(?:more|other|further|additional)\s+"
                 r"(?:cubes|blocks|ones)(?:\s+of\s+any\s+colou?rs?)?\s+(?P<dir>on\s+top\s+of|on|above|under(?:neath)?|below|beneath)"
-                r"(?:\s+(?:it|that|them))?\b"),
+                r"(?:\s+(?:it|that))?(?=\s*(?:[.,;!]|$))"),
      _tower_and_more),
 )
 """A tower said by one end and how many more cubes stand on it or under it: a tower of that many, that end said."""

@@ -231,7 +231,9 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
     quoted = list(lexicon.QUOTED_TASK_RE.finditer(text))
     if len(quoted) == 1:  # 'give the task "put the cyan cube behind the red cube"': the quote, its report dropped
         rest = text[:quoted[0].start("q")] + text[quoted[0].end("q"):]
-        if not lexicon.GOAL_THING_RE.search(rest.lower()) and lexicon.GOAL_THING_RE.search(quoted[0].group("q").lower()):
+        segments = [g for g in re.split(r"(?<=[.!?;])\s+|\s+(?=\d+[.)]\s)|[\"\u201c\u201d]", rest) if g.strip()]
+        reported = all(lexicon.QUOTED_TASK_REPORT_RE.match(g.lower()) or _evaluation_report(g) for g in segments)
+        if reported and lexicon.GOAL_THING_RE.search(quoted[0].group("q").lower()):
             return quoted[0].group("q").strip(), [rest.strip()]
     dropped: list[str] = []
 

@@ -337,6 +337,8 @@ def split(instruction: str) -> InitialScene | None:
     sentences = [s for s in re.split(r"(?<=[.;!?])\s+|\s*(?=\b(?:[Gg]oal|[Tt]arget)\s*:)|\s*,?\s*\band\s+(?=(?:at|in)\s+the\s+end\b)",
                                       instruction.strip()) if s.strip()]
     start, goal = [], []
+    taken = [(m.group("a") or m.group("b"), m.group("below")) for t in sentences
+             for m in _TAKE_OFF_RE.finditer(GOAL_OPENER_RE.sub("", t, count=1))]
     sentences = [_TAKE_OFF_RE.sub(_taken_off, s) for s in sentences]
     for s in sentences:
         m = START_SENTENCE_RE.match(s)
@@ -353,10 +355,10 @@ def split(instruction: str) -> InitialScene | None:
     leave = LEAVE_REST_RE.search(" ".join(goal))
     if leave:  # "take off the red cube ...; leave the other two as they are": the rest of its stack stays stacked
         goal = [" ".join(goal)[:leave.start()] + " ".join(goal)[leave.end():]]
-    if len(goal) > 1 and UNDO_START_RE.match(goal[0]):
-        goal = goal[1:]  # "Unstack the tower. ... At the end all three cubes should be on the table.": the end said after
-    elif len(goal) == 1 and UNDO_START_RE.match(goal[0]):
-        goal = ["put all the cubes on the table."]  # "Unstack the tower.": every cube off the others
+    if goal and UNDO_START_RE.match(goal[0]):
+        if len(goal) > 1 and not ALL_ON_TABLE_GOAL_RE.match(" ".join(goal[1:])):
+            return None  # "Unstack the tower. Put red on green.": blue's end is not said (read as written, refused)
+        goal = goal[1:] or ["put all the cubes on the table."]  # "Unstack the tower.": every cube off the others
     stacks = _facts(" , ".join(start))
     if stacks is None:  # a start the whole front end reads as stacks ("red stacked on white stacked on black")
         stacks = _stacks_read(" ".join(f.strip().rstrip(".;,") + "." for f in start))
@@ -364,13 +366,24 @@ def split(instruction: str) -> InitialScene | None:
         raise Inexpressible("time", [start[0].strip()[:60]], "states a starting scene rpg does not build: rho_0 starts only "
                             "stacks of named cubes, each cube once, the rest scattered (e.g. \"Initially the red cube is on the "
                             "blue cube. Put ...\"); say only where the cubes must end up", instruction)
+    if len(stacks) > 1 and re.search(r"(?i)\b(?:unstack|dismantle|take\s+apart)\s+(?:it|the\s+(?:tower|stack))\b", instruction):
+        return None  # "the tower" of a start with two: which one is not said
+    for cube, below in taken:  # "take the red cube off the blue cube": it must stand on top, on that cube
+        c = _canon(re.sub(r"(?i)^the\s+|\s+(?:one|cube|block)$", "", cube.strip()).strip())
+        b_ = _canon(re.sub(r"(?i)^the\s+|\s+(?:one|cube|block)$", "", below.strip()).strip()) if below else None
+        if not any(st[-1] == c and len(st) > 1 and (b_ is None or st[-2] == b_) for st in stacks):
+            return None
     kept: list[tuple[str, ...]] = []
     if leave:
-        moved = {_canon(c) for c in re.findall(rf"(?i)\b(?:{COLOR_RE})\b", " ".join(goal))}
+        moved = {_canon(c) for c in re.findall(rf"(?i)\b(?:put|place|move|set|lay|lift|take|bring)\s+the\s+({COLOR_RE})\b", " ".join(goal))}
+        said = re.search(r"(?i)\b(two|three|four|\d+)\b", leave.group(0))
+        left = sum(1 for st in stacks for c in st if c not in moved)
+        if not moved or (said and NUMBER_WORDS.get(said.group(1).lower(), int(said.group(1)) if said.group(1).isdigit() else 0) != left):
+            return None  # no cube moved, or "the other three" of two: read as written (refused)
         for st in stacks:
             rest = tuple(c for c in st if c not in moved)
-            if st[:len(rest)] != rest or not moved & set(st):
-                return None  # a cube taken from under another, or nothing of this stack moved: read as written (refused)
+            if st[:len(rest)] != rest:
+                return None  # a cube taken from under another: read as written (refused)
             kept += [rest] if len(rest) > 1 else []
     return InitialScene(tuple(stacks), " ".join(goal).strip(), tuple(kept))
 

@@ -509,14 +509,14 @@ def recognize_piles(f: Features, b: Builder) -> bool:
             return _one_pile(f, b)
         if k is None and not several and _one_pile(f, b, strict=False):  # "pile four cubes": one pile of them
             return True
-        sized = re.search(r"\b(\d+)\s+(?:piles|heaps|groups|clusters|bunches)\s+of\s+(\d+)\b", f.text)
+        sized = re.search(r"\b(\d+)\s+(?:separate\s+)?(?:piles|heaps|groups|clusters|bunches)\s*,?\s+(?:each\s+)?(?:of\s+|with\s+)(\d+)\b", f.text)
         if sized and not f.color_list() and not per_color and f.has(*lexicon.DIFFERENT_WORDS):
             raise ParseError(f"\"{f.original[:80]}\" says the cubes differ but names no colour; say the colours, or use --model")
-        if sized and not f.color_list() and not per_color:
+        if sized and len(set(f.color_list())) <= 1 and not per_color:
             # "two piles of three cubes": no colour said, so which cubes share a pile is free; cubes of one colour are
             # interchangeable (evaluate_goal tries their assignments), so any split into piles of three passes (two piles
-            # of two, one red and one blue, had been demanded)
-            one = colors_for(1, f)[0]
+            # of two, one red and one blue, had been demanded); "three piles, each of two brown cubes": that colour
+            one = f.color_list()[0] if f.color_list() else colors_for(1, f)[0]
             groups = [[b.cube(one) for _ in range(int(sized.group(2)))] for _ in range(int(sized.group(1)))]
             b.place(cluster_layout(groups, b.unit_centers(len(groups), 0.16)))
             b.preds.append(Piles(groups=tuple(tuple(g) for g in groups)))
