@@ -17,9 +17,9 @@ import re
 from dataclasses import dataclass
 
 from rpg.domain.layouts import stack_layout
+from rpg.domain.predicates import Stack
 from rpg.errors import BadInput
 from rpg.schema import lexicon
-from rpg.domain.predicates import Stack
 from rpg.schema.builder import Builder
 from rpg.schema.lexicon import COLOR_RE, MARKUP_RES, NUMBER_WORDS
 from rpg.schema.model import TaskSchema
@@ -212,7 +212,9 @@ def _stacks_read(content: str) -> list[tuple[str, ...]] | None:
     ("red cube stacked on a white cube stacked on a black cube", "blue on the bottom, then orange, then white on
     top"), or None unless that reading is only stacks in one order, of cubes each of its own colour or label, and
     accounts for every word (a tower "in any order", a row, a place: no start rpg builds)."""
-    from rpg.schema.readers import parse  # the front end reading this start's words (it calls this module first)
+    from rpg.schema.readers import (
+        parse,  # the front end reading this start's words (it calls this module first)
+    )
 
     content = re.sub(r"(?i)^\s*(?:the|a|one)\s+(tower|stack|column)\s+(?:is|was|has|looks\s+like)\s*:?\s*", r"a \1: ", content)
     try:  # ("the tower is blue on the bottom, ...": the tower the start describes)
