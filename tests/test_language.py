@@ -4411,3 +4411,27 @@ def test_the_rest_of_a_start_stack_left_as_it_is_keeps_the_cubes_under_the_one_m
 
 def test_three_piles_of_one_colour_take_any_split():
     assert sorted(meaning(parse("make three separate piles, each of two brown cubes"))) == ["pile(brown,brown)"] * 3
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("make a line of blocks: purple on the far left, cyan on the far right, and two gray blocks in between",
+     ["line[left_to_right](purple,gray,gray,cyan)"]),
+    ("The goal is a row of five cubes with the black cube exactly in the middle and the others white.",
+     ["line[left_to_right](white,white,black,white,white)"]),
+    ("the leftmost cube in the row should be yellow, then green, then pink on the far right",
+     ["line[left_to_right](yellow,green,pink)"]),
+    # a cube named by no colour takes one its clause gives no other cube (it had been a second red cube)
+    ("Put a block between the red block and the green block.", ["between(blue;green,red)"]),
+])
+def test_a_row_said_by_its_ends_and_middle_and_an_unnamed_cube_beside_named_ones(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "make a row of five blocks: purple on the far left, cyan on the far right, and two gray blocks in between",  # 4 said
+    "the leftmost cube in the row should be yellow, then green, then pink on the far left",  # pink at both ends
+    "a row of four cubes with the black cube in the middle and the others white",  # an even row has no middle cube
+])
+def test_a_row_whose_roles_do_not_add_up_is_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)

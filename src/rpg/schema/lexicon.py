@@ -1007,10 +1007,14 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"(?:,\s*|\s+with\s+)(?:the\s+)?({COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:is\s+|being\s+)?(?:closest|nearest)\s+to\s+"
                 r"(?:the\s+)?(front|back|left|right)(?:\s+(?:edge|side|end))?\b"), r", with \1 at the \2"),
     # "leftmost should be the red cube, then blue, then yellow": the order from that side
-    (re.compile(rf"(?:^|(?<=[.;:]\s))(?:the\s+)?(left|right|front|back)(?:most)?(?:\s+(?:one|cube|block))?\s+(?:should\s+be|must\s+be|is|will\s+be"
-                rf"|goes|comes\s+first)\s*:?\s*(?=(?:the\s+)?(?:{COLOR_RE})\b[^.;]*\bthen\b)"),
-     lambda m: {"left": "from left to right: ", "right": "from right to left: ", "front": "from front to back: ",
+    (re.compile(rf"(?:^|(?<=[.;:]\s))(?:the\s+)?(left|right|front|back)(?:most)?(?:\s+(?:one|cube|block))?(?:\s+(?:in|of)\s+the\s+(row|line))?"
+                rf"\s+(?:should\s+be|must\s+be|is|will\s+be|goes|comes\s+first)\s*:?\s*(?=(?:the\s+)?(?:{COLOR_RE})\b[^.;]*\bthen\b)"),
+     lambda m: (f"a {m.group(2)} " if m.group(2) else "") + {"left": "from left to right: ", "right": "from right to left: ", "front": "from front to back: ",
                 "back": "from back to front: "}[m.group(1)]),
+    # "... yellow, then green, then pink on the far right": the last cube at the far end of the order said (said again)
+    (re.compile(rf"\b(from\s+(left|right|front|back)\s+to\s+(left|right|front|back):\s+[^.;]*?\bthen\s+(?:the\s+)?(?:{COLOR_RE})"
+                r"(?:\s+(?:cube|block|one))?)\s+(?:on|at)\s+the\s+(?:far\s+|very\s+)?(left|right|front|back)(?:\s+end)?\b(?=\s*(?:[.;!]|$))"),
+     lambda m: m.group(1) if m.group(4) == m.group(3) else m.group(0)),
     # "stand left beside the gray cube" (German "links neben"): on that side of it ("right next to" is only "next to")
     (re.compile(rf"\b(left)\s+(?:beside|next\s+to|alongside)\s+(?=the\s+(?:{COLOR_RE})\b)"), r"to the \1 of "),
     # "well away from", "well behind": the degree adds nothing a qualitative relation could judge

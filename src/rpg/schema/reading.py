@@ -1484,7 +1484,48 @@ def _role_clauses(m: re.Match) -> str:
     return f": from {axis[0]} to {axis[1]}: " + ", ".join([ends[axis[0]], *middle, ends[axis[1]]])
 
 
+_LINE_END = (r"(?:the\s+|an?\s+|1\s+)?(?P<{g}>" + COLOR_RE + r")(?:\s+(?:cube|block|one))?\s+(?:is\s+|goes\s+|sits\s+|stands\s+)?"
+             r"(?:(?:on|at|to)\s+the\s+(?:far|very|extreme)\s+(?P<{g}s>left|right)(?:\s+end)?|(?:on|at)\s+the\s+(?P<{g}e>left|right)\s+end"
+             r"|(?P<{g}m>left|right)most)")
+_LINE_MIDDLE = (r"(?:(?P<n>\d+|" + lexicon.COUNT_WORD_RE + r"|an?|the)\s+)?(?P<m>" + COLOR_RE + r")(?:\s+(?:cubes?|blocks?|ones?))?\s+"
+                r"(?:in\s+between|between\s+them|in\s+the\s+middle)")
+_LINE_ROLES_RE = re.compile(rf"(?:\s*[:;,]\s*|\s+with\s+){_LINE_END.format(g='a')}\s*,?\s+(?:and\s+)?(?:with\s+)?"
+                            rf"{_LINE_END.format(g='b')}\s*,?\s+(?:and\s+)?(?:with\s+)?{_LINE_MIDDLE}\b")
+
+
+def _line_roles(m: re.Match) -> str:
+    """"a line of blocks: purple on the far left, cyan on the far right, and two gray blocks in between" -> ": from left to
+    right: purple, gray, gray, cyan" (each end once, the middle counted; only of a row or a line: the words as they were
+    otherwise, where "the far left" may be the table's)."""
+    sides = {k: next(m.group(f"{k}{x}") for x in ("s", "e", "m") if m.group(f"{k}{x}")) for k in ("a", "b")}
+    if {sides["a"], sides["b"]} != {"left", "right"} or not re.search(r"\b(?:rows?|lines?|line\s+up|lined)\b", m.string):
+        return m.group(0)
+    n = m.group("n") or "1"
+    n = 1 if n in ("a", "an", "the") else int(lexicon.NUMBER_WORDS.get(n, n))
+    left, right = (m.group("a"), m.group("b")) if sides["a"] == "left" else (m.group("b"), m.group("a"))
+    return ": from left to right: " + ", ".join([left] + [m.group("m")] * n + [right])
+
+
+_MIDDLE_OF_ODD_ROW_RE = re.compile(
+    rf"\b(?P<s>row|line)\s+of\s+(?P<n>\d+)\s+(?:cubes|blocks)\s*,?\s+(?:with\s+)?(?:the\s+|an?\s+)?(?P<m>{COLOR_RE})(?:\s+(?:cube|block|one))?"
+    rf"\s+(?:exactly\s+|right\s+|dead\s+)?in\s+the\s+(?:middle|center|centre)\s*,?\s+and\s+(?:the\s+)?(?:others|rest|other\s+(?:\d+\s+)?"
+    rf"(?:cubes|blocks|ones))\s+(?:are\s+|all\s+|being\s+)*(?P<o>{COLOR_RE})\b")
+"""A row of an odd count with one cube in its middle and the others one colour ("a row of five cubes with the black cube
+exactly in the middle and the others white"): read as that row from left to right."""
+
+
+def _middle_of_odd_row(m: re.Match) -> str:
+    n = int(m.group("n"))
+    if n % 2 == 0 or n < 3:
+        return m.group(0)  # an even row has no middle cube
+    side = [m.group("o")] * (n // 2)
+    return f"{m.group('s')} from left to right: " + ", ".join(side + [m.group("m")] + side)
+
+
 STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
+    # "a line: purple on the far left, cyan on the far right, and two gray blocks in between": the ends and the middle
+    (_LINE_ROLES_RE, _line_roles),
+    (_MIDDLE_OF_ODD_ROW_RE, _middle_of_odd_row),
     # "stack four cubes; the bottom one is blue, the top one is red and the two in between are green": every cube
     # (the middle's count had reached one cube, the other made up)
     (_ROLE_CLAUSES_RE, _role_clauses),

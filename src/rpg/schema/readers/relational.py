@@ -64,6 +64,8 @@ class RelationalReading:
     stackish: bool
     """The instruction asks for a stack ("stack", "tower", "pile up")."""
     objects: dict[tuple, list[str]] = field(default_factory=dict)
+    clause: str = ""
+    """The clause being read (an unnamed cube takes a colour it does not name for another cube)."""
     patch_names: dict[tuple, str] = field(default_factory=dict)
     on_edges: list[tuple[str, str]] = field(default_factory=list)
     rels: list = field(default_factory=list)
@@ -125,12 +127,14 @@ class RelationalReading:
         elif mn.another and mn.color and not mn.label and i == 0:  # "another green block": one more of that colour
             i = self.fresh.setdefault(id(mn), len(lst))
         while len(lst) <= i:
-            lst.append(self.b.semantic(mn.label) if mn.label else self.b.cube(mn.color or _next_default(self.b, self.objects)))
+            lst.append(self.b.semantic(mn.label) if mn.label else self.b.cube(mn.color or _next_default(
+                self.b, self.objects, self.clause if mn.count <= 1 else "")))  # ("three cubes: a red one, ...": named after)
         return lst[i]
 
     def read_clause(self, clause: str) -> None:
         """Read one clause's mentions and relation words into the reading."""
         ms = mentions_in(clause)
+        self.clause = clause
         related: list[Mention] = []  # the subject of this clause's relation, if it has one
         self.group, self.group_end = [], -1
         self.group_names = []
@@ -609,9 +613,13 @@ def _resolve_structure(b: Builder, objects: dict, on_edges: list, rels: list, on
         rels.append(_RELATIONS[kind](cube, tower[0]))
 
 
-def _next_default(b: Builder, objects: dict) -> str:
+def _next_default(b: Builder, objects: dict, clause: str = "") -> str:
+    """The colour of a cube named by no colour: the first default colour no cube has yet and, where there is one, that the
+    ``clause`` it is said in names for no other cube ("put a block between the red block and the green block": it had
+    been red, a second red cube, and the instruction refused for naming one)."""
+    said = {canon_color(w) for w in re.findall(rf"\b(?:{COLOR_RE})\b", clause)}
     used = {k[1] for k in objects if k[0] == "cube"} | {a.color for a in b.assets}
-    return next(c for c in DEFAULT_COLORS if c not in used)
+    return next((c for c in DEFAULT_COLORS if c not in used | said), None) or next(c for c in DEFAULT_COLORS if c not in used)
 
 
 def _chains(edges: list[tuple[str, str]]) -> list[list[str]] | None:
