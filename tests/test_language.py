@@ -4435,3 +4435,23 @@ def test_a_row_said_by_its_ends_and_middle_and_an_unnamed_cube_beside_named_ones
 def test_a_row_whose_roles_do_not_add_up_is_refused(text):
     with pytest.raises(ParseError):
         parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Build a tower of three: blue at the bottom, red at the top, and a green one between them.", ["stack(blue,green,red)"]),
+    ("the topmost block of the tower should be green and the bottom one should be cyan, three blocks total",
+     ["stack(cyan,red,green)"]),  # the goal's tower described (the middle cube is the only one left: no colour said)
+    ("line up 4 cubes in the back row of the table, left to right: pink, pink, cyan, cyan",
+     ["line[left_to_right](pink,pink,cyan,cyan)@back"]),
+    # the paper's restack: the cube placed on top starts under the one it goes on (that one comes down first)
+    ("Stack the red block on top of the yellow block; yellow starts stacked on red", ["stack(yellow,red)", "start:stack(red,yellow)"]),
+])
+def test_a_tower_described_by_its_roles_and_a_row_at_the_table_s_back_are_read(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+def test_a_start_after_the_goal_whose_top_cube_goes_under_keeps_a_whole_stack_goal():
+    from rpg.domain.predicates import Stack
+
+    goal = parse("Put the red cube on the yellow cube. The yellow cube starts on top of the red cube.").goal_predicate()
+    assert type(goal) is Stack and goal.objects == ("yellow", "red")  # not On(red, yellow): red's chain ends at the table

@@ -135,7 +135,7 @@ SYNONYMS: dict[str, str] = {
     "subsequently": "then", "organize": "arrange", "organise": "arrange", "organized": "arranged", "rearrange": "arrange",
     "rearranged": "arranged", "reorder": "arrange", "reorganize": "arrange", "reorganise": "arrange",
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
-    "uppermost": "topmost", "lowermost": "bottommost", "upon": "on", "right-hand": "right", "left-hand": "left",
+    "uppermost": "top", "lowermost": "bottom", "topmost": "top", "bottommost": "bottom", "upon": "on", "right-hand": "right", "left-hand": "left",
     "stays": "is", "remains": "is", "bot": "robot", "midpoint": "center", "tower's": "tower", "within": "in", "inside": "in", "quadrant": "corner",
     "summit": "top", "apex": "top", **TYPOS, **ABBREVIATIONS,
 }
@@ -775,9 +775,9 @@ START_SIDE_RE = re.compile(r"\b(?:starting|beginning|going|counting|reading)\s+(
 starting from the left"): read as the direction words (:data:`END_SIDE_DIRECTION`). Not a place
 ("starting at the left edge of the table")."""
 
-TOTAL_RE = re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:(blocks?|cubes?)\s+)?in\s+total\b"
+TOTAL_RE = re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:(blocks?|cubes?)\s+)?(?:in\s+)?total\b"
                       r"|\bin\s+total\s*,?\s+(?=\d|one|two|three|four|five|six|seven|eight|nine|ten)")
-"""A count said as a total ("six in total", "in total 4 blocks"): read as "N blocks"."""
+"""A count said as a total ("six in total", "in total 4 blocks", "three blocks total"): read as "N blocks"."""
 
 NO_GOAL_RE = re.compile(r"\b(?:pick(?:\s+(?:it|them))?\s+up|pick|grab|grasp|take|lift|raise|hold|get|find|locate|point\s+(?:at|to)"
                         r"|look\s+at|reach(?:\s+for)?)\b"
@@ -3154,6 +3154,9 @@ LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      lambda m: _robot_side(m, f"on the {m.group(1)} side of the table")),
     (re.compile(r"\btoward(?:s)?\b"),
      "to"),
+    # "line up 4 cubes in the back row of the table": the table's back (a row of the table is its side)
+    (re.compile(r"\b(?:in|along|on|at)\s+the\s+(front|back|rear)\s+(?:row|line|strip)\s+of\s+the\s+(?:table|workspace)\b"),
+     r"at the \1 of the table"),
     # "put green cube to yellow cube left side", "to the blue block's right": a side of the landmark cube
     (re.compile(rf"\b(?:to|on|at)\s+(the\s+(?:{COLOR_RE})\s+(?:block|cube|one))(?:'s)?\s+(?:the\s+)?(left|right)(?:\s*-?\s*hand)?"
                 rf"(?:\s+side)?\b(?!\s+(?:of|corner|edge|half|part)\b)"),
@@ -3360,7 +3363,8 @@ TOWER_BETWEEN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\b(?:goes\s+|is\s+|sits\s+|stands\s+)?in\s+between\b(?!\s+(?:the|them|those|these|of|a|an|it|each)\b)"),
      "in the middle"),
     # "a tower with cyan at the bottom and red at the top, with the blue cube between them": its middle
-    (re.compile(rf"(?<=\bwith\s)((?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?)\s+(?:in\s+)?between\s+(?:them|those\s+two|the\s+two)\b"
+    (re.compile(rf"(?:(?<=\bwith\s)|(?<=,\sand\s)|(?<=,\s))((?:the\s+|an?\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?)\s+(?:in\s+)?between\s+"
+                r"(?:them|those\s+two|the\s+two)\b"
                 rf"(?=\s*[.!]?\s*$)"),
      r"\1 in the middle"),
 )
@@ -3376,6 +3380,11 @@ def _tower_and_more(m: re.Match) -> str:
 
 
 TOWER_MORE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "the top block of the tower should be green and the bottom one cyan, three blocks total": the goal's tower
+    # described, not one the speaker sees (it had been refused as a reference); only where the text begins so
+    (re.compile(r"^(?:the\s+)?(top|bottom|base)\s+(?:block|cube|one)\s+of\s+the\s+(tower|stack)\s+(?=(?:should|must|has\s+to|needs\s+to|will)"
+                r"\s+be\b)"),
+     r"in a \2, the \1 block "),
     # "a tower with the red cube at the bottom and two more cubes (of any colour) on it": a tower of three, red at the
     # bottom, the others free (the two had been read as more red cubes)
     (re.compile(rf"\b(?P<s>tower|stack)\s*(?::\s*|\s+with\s+)(?:the\s+|a\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on|as)\s+"

@@ -342,12 +342,12 @@ def split(instruction: str) -> InitialScene | None:
     taken = [(m.group("a") or m.group("b"), m.group("below")) for t in sentences
              for m in _TAKE_OFF_RE.finditer(GOAL_OPENER_RE.sub("", t, count=1))]
     sentences = [_TAKE_OFF_RE.sub(_taken_off, s) for s in sentences]
-    for s in sentences:
+    for i, s in enumerate(sentences):
         m = START_SENTENCE_RE.match(s)
         if m:  # a start said before the goal or after it ("... next to it. The orange block starts on the brown one.")
             start.append(s[m.end():])
-        elif STARTS_FACT_RE.match(s):
-            start.append(s)
+        elif STARTS_FACT_RE.match(s) and not (i and sentences[i - 1].rstrip().endswith(";")):
+            start.append(s)  # (after a ';' the relational reader reads it with its goal: "stack red on yellow; yellow starts on red")
         else:
             opened = GOAL_OPENER_RE.sub("", s, count=1)
             opened = GOAL_OPENER_RE.sub("", opened, count=1) if opened != s else opened  # "Goal: take the tower apart so ..."
@@ -481,7 +481,8 @@ def attach(head: TaskSchema, scene: InitialScene, instruction: str) -> TaskSchem
         b.structures.append(names)
         b.summary.append("initially a stack bottom to top: " + ", ".join(names))
     raised = {n for st in b.structures for n in st[1:]}  # cubes that start on another cube
-    b.preds = [p for q in b.preds for p in _resting_on(q, raised)]
+    below = {st[i]: set(st[:i]) for st in b.structures for i in range(len(st))}  # the cubes each starts above
+    b.preds = [p for q in b.preds for p in _resting_on(q, raised, below)]
     by_color = {a.label or a.color: a.name for a in b.assets if a.kind != "goal_patch"}
     for colors in scene.kept:  # "leave the other two as they are": their stack is the goal's too
         b.preds.append(Stack(objects=tuple(by_color[c] for c in colors)))
@@ -489,11 +490,13 @@ def attach(head: TaskSchema, scene: InitialScene, instruction: str) -> TaskSchem
     return b.schema(task_slug(instruction), paraphrases=list(head.paraphrases))
 
 
-def _resting_on(p, raised: set[str]) -> list:
+def _resting_on(p, raised: set[str], below: dict[str, set[str]]) -> list:
     """``p``, or, when it is a stack whose bottom cube starts on another cube, its cubes each on
-    the one below: "put C on A" where A starts on B asks C on A, not A moved to the table."""
+    the one below: "put C on A" where A starts on B asks C on A, not A moved to the table; unless a
+    cube of the stack starts under its bottom ("stack red on yellow; yellow starts on red": yellow
+    must come down to the table first)."""
     from rpg.domain.predicates import On, Stack
 
-    if type(p) is Stack and p.objects[0] in raised:
+    if type(p) is Stack and p.objects[0] in raised and not below.get(p.objects[0], set()) & set(p.objects):
         return [On(a, b) for b, a in zip(p.objects, p.objects[1:], strict=False)]
     return [p]
