@@ -4455,3 +4455,27 @@ def test_a_start_after_the_goal_whose_top_cube_goes_under_keeps_a_whole_stack_go
 
     goal = parse("Put the red cube on the yellow cube. The yellow cube starts on top of the red cube.").goal_predicate()
     assert type(goal) is Stack and goal.objects == ("yellow", "red")  # not On(red, yellow): red's chain ends at the table
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("For the pilot set, line up the green, purple and orange cubes.", ["line(green,orange,purple)"]),
+    ("Okay sweetie, the robot's job is to put the green block on top of the yellow block.", ["stack(yellow,green)"]),
+    ("The task consists in to place the yellow block at the right of the black block.", ["right_of(yellow,black)"]),
+    ("In this experiment, the robot was instructed to place the green cube to the right of the blue cube.",
+     ["right_of(green,blue)"]),
+    ("stack four blue cubes into one tower and put a white cube in the front left corner.",  # white had joined the tower
+     ["in_region(white,front_left)", "stack(blue,blue,blue,blue)"]),
+])
+def test_words_that_frame_a_task_for_a_person_are_dropped(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "Use the ruler to line up the three black cubes.",  # a tool the domain lacks
+    "Using a spatula, put the red cube on the blue cube",
+    "Okay so, stack those on the blue cube.",  # 'those': cubes nobody named
+    "Like the demo task, put the red cube on the blue cube.",  # what the words point at
+])
+def test_opening_words_that_may_change_the_task_are_not_dropped(text):
+    with pytest.raises(ParseError):
+        parse(text)

@@ -295,6 +295,52 @@ EVALUATION_BLOCKER_RE = re.compile(
 requirement or sequence that may constrain one ("In every episode the red cube must stay on the patch."), or a
 verb that moves cubes."""
 
+FRAME_PREFIX_RE = re.compile(
+    r"^(?P<p>[^.;!?\"]{2,120}?)(?:\s*[,:]\s+|\s+(?:is|was|are|were)\s+to\s+|\s+to\s+)"
+    r"(?=(?:please\s+)?(?:put|place|set|move|bring|position|lay|build|make|create|construct|assemble|form|stack|pile|arrange|line"
+    r"|spell|sort|align|group|get)\b)")
+"""Words before the imperative of a task that frame it for a person ("For the pilot set, line up ...", "Okay sweetie,
+the robot's job is to put ...", "The task consists in to place ..."): dropped and listed by
+:func:`rpg.schema.reading.drop_asides` when they name nothing of a goal (:data:`GOAL_THING_RE`), hold no word of
+:data:`FRAME_PREFIX_HAZARD_RE` and every word is a dictionary word or a name (their unknown words had refused the
+task)."""
+
+FRAME_NOUN_RE = re.compile(
+    r"\b(?:jobs?|tasks?|goals?|objectives?|assignments?|homework|lessons?|exercises?|experiments?|trials?|study|studies|pilot"
+    r"|sets?|variants?|ablations?|evals?|evaluations?|benchmarks?|challenges?|levels?|rounds?|episodes?|sessions?|projects?"
+    r"|deliverables?|milestones?|reports?|papers?|sections?|protocols?|recipes?|drills?|activit(?:y|ies)|missions?|quests?"
+    r"|sweetie|honey|sweetheart|darling|kiddo|buddy|mate|pal|sir|madam|ma'am|team|folks|guys|everyone|everybody|robot"
+    r"|necessary|needed|required|consists?)\b")
+"""What makes a task's opening words a frame (:data:`FRAME_PREFIX_RE`): they name the task as a task, an exercise or an
+experiment ("For the pilot set,", "the robot's job is to"), address a person ("Okay sweetie,", "Sir,") or say the task
+is needed ("Is necessary to"); other opening words are read with the task."""
+
+FRAME_VERBS: frozenset[str] = frozenset("""
+is was are were be been being am consists consist instructed asked told want wants wanted need needs needed required
+would should must shall will can could may might has have had let lets going gonna wanna
+""".split())
+"""The only verbs a task's opening frame may have (:func:`rpg.schema.reading._frame_prefix`: "the robot was instructed
+to", "the task consists in to"); another verb may say what was done or seen ("Do what you did: ...")."""
+
+FRAME_PREFIX_HAZARD_RE = re.compile(
+    r"\b(?:not|no|never|none|nothing|without|except|unless|[a-z]+n't|cannot|if|when|whenever|once|until|till|while|after|before"
+    r"|then|first|second|third|next|finally|last|again|twice|thrice|times|repeat\w*|revers\w*|opposite|backwards?|invers\w*"
+    r"|invert\w*|mirror\w*|swap\w*|flip\w*|upside|sideways|rotat\w*|turn\w*|tilt\w*|it|its|itself|them|they|their|those|these"
+    r"|each|every|all|both|only|other|another|same|different|more|less|fewer|most|least|many|much|several|few|like|unlike"
+    r"|as|instead|rather|else|except|alternat\w*|order\w*|colou?r\w*|size|big|small|large|tall|high|low|wide|long|short"
+    r"|quick\w*|slow\w*|fast|time|minutes?|seconds?|hours?|touch\w*|knock\w*|toppl\w*|push\w*|pull\w*|remov\w*|take|hold\w*"
+    r"|start\w*|begin\w*|initial\w*|keep|stay\w*|leave|remain\w*|undo|reset|again|spell\w*|sort\w*|word|words|letter\w*"
+    r"|digit\w*|number\w*|\d+\s*(?:x|by)\s*\d+|use|uses|used|using|with|via|through|holding|wearing|by\s+means"
+    r"|pictur\w*|photo\w*|images?|diagram\w*|sketch\w*|draw\w*|figures?|screenshots?|videos?|demo\w*|examples?|cards?|plans?"
+    r"|blueprints?|templates?|models?|referenc\w*|memory|remember\w*|recall\w*|original\w*|previous\w*|earlier|yesterday|today"
+    r"|usual\w*|shown|show\w*|see|seen|saw|sees|look\w*|follow\w*|according|per|copy\w*|match\w*|mimic\w*|replicat\w*"
+    r"|recreat\w*|reproduc\w*|scenes?|setups?|configurations?|arrangements?|layouts?|patterns?|designs?|instructions?|here|there"
+    r"|this|that|now|current\w*|already|still|back|return\w*)\b")
+"""What keeps a task's opening words from being framing (:data:`FRAME_PREFIX_RE`): a negation, a condition, time, a
+step, a repetition or reversal, a pronoun or quantifier for cubes, a comparison or simile, an order, colour or size,
+a change of the scene, a start, what the task spells or sorts, a tool ("Use the ruler to ...": an object the
+domain lacks), or a picture, scene, time or memory the words may point at ("Following the sketch, ...")."""
+
 QUOTED_TASK_REPORT_RE = re.compile(
     r"^(?:\s*(?:\d+[.)]|[-*\u2022]|;|,|\.|:|repro(?:duce)?|steps?|str|to|give|run|ran|the|a|task|instruction|prompt|command|reset|sim"
     r"|simulation|env(?:ironment)?|scene|bug|issue|with|using|when|i|we|expected|actual|result|=|:|\(|\))\s*)*$")
@@ -3154,6 +3200,8 @@ LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      lambda m: _robot_side(m, f"on the {m.group(1)} side of the table")),
     (re.compile(r"\btoward(?:s)?\b"),
      "to"),
+    (re.compile(r"\b(?:inside|within)\s+of\s+(?=the\b)"),  # "inside of the orange patch"
+     "in "),
     # "line up 4 cubes in the back row of the table": the table's back (a row of the table is its side)
     (re.compile(r"\b(?:in|along|on|at)\s+the\s+(front|back|rear)\s+(?:row|line|strip)\s+of\s+the\s+(?:table|workspace)\b"),
      r"at the \1 of the table"),

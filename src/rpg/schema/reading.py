@@ -192,6 +192,27 @@ def _framing_sentence(sentence: str) -> bool:
     return True
 
 
+def _frame_prefix(words: str) -> bool:
+    """Whether the words before a task's imperative frame it for a person (:data:`lexicon.FRAME_PREFIX_RE`): words that
+    name the task, address a person or say it is needed (:data:`lexicon.FRAME_NOUN_RE`), nothing of a goal, no hazard (:data:`lexicon.FRAME_PREFIX_HAZARD_RE`), nothing the domain refuses (an object: "Use the ruler
+    to ..."), and every word a dictionary word, a name or a number."""
+    low = re.sub(r"\b(?:in|for|during)\s+this\s+(?:experiment|task|episode|run|variant|setting|study|trial|eval(?:uation)?|benchmark"
+                 r"|section|lesson|level|round|version|exercise|challenge|test)\b", " ", words.lower())  # "In this experiment,"
+    if lexicon.GOAL_THING_RE.search(low) or lexicon.FRAME_PREFIX_HAZARD_RE.search(low) \
+            or not lexicon.FRAME_NOUN_RE.search(words.lower()):
+        return False
+    if _inexpressible(low):
+        return False  # an object ("Use the ruler to line up ..."), an action, a time...: refused for it, not dropped
+    tokens = re.findall(r"[A-Za-z][A-Za-z'\-]*", words)
+    for t in tokens:  # a verb of its own may say what was done or seen ("Do what you did:"): only a frame's verbs
+        pos = lexicon.parts_of_speech(t.lower())
+        if "VERB" in pos and not pos & {"NOUN", "ADJ", "PROPN"} and t.lower() not in lexicon.FRAME_VERBS:
+            return False
+    return bool(tokens) and all(
+        t.lower().removesuffix("'s") in VOCAB or t.lower() in lexicon.IDLE_WORDS or lexicon.is_dictionary_word(t.lower().removesuffix("'s"))
+        or (i and t[0].isupper()) for i, t in enumerate(tokens))
+
+
 def _evaluation_report(sentence: str) -> bool:
     """Whether a sentence (or a parenthesis) reports on evaluating the task, not the task ("Ranked by success rate over
     100 episodes.", "Best entry so far: 71%.", "fails on roughly 30% of seeds"): it has a word of evaluation
@@ -236,6 +257,12 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
         if reported and lexicon.GOAL_THING_RE.search(quoted[0].group("q").lower()):
             return quoted[0].group("q").strip(), [rest.strip()]
     dropped: list[str] = []
+    for _ in range(2):  # "In this experiment, the robot was instructed to place ...": two frames, one after the other
+        frame = lexicon.FRAME_PREFIX_RE.match(text)
+        if frame is None or not _frame_prefix(frame.group("p")):
+            break
+        dropped.append(frame.group(0).strip())
+        text = text[frame.end():]
 
     def aside(m: re.Match) -> str:
         said = m.group(0)

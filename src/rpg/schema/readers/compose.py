@@ -225,10 +225,11 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
     caps = set(re.findall(r"\b[A-Z]{2,}\b", f.original))
     if part and caps:  # "spell HAT ... at the back of the table": the word in its capitals again (it had read as 'hat')
         part = re.sub(r"\b[a-z]{2,}\b", lambda w: w.group(0).upper() if w.group(0).upper() in caps else w.group(0), part)
-    if part and re.search(r"(?:[.;!]|,?\s+then|,\s*and)\s+(?:then\s+)?(?:put|place|move|set|add|bring)\s+(?:a|an|one|another|the)\s+"
+    if part and re.search(r"(?:[.;!]|,?\s+then|,?\s*\band)\s+(?:then\s+)?(?:put|place|move|set|add|bring)\s+(?:a|an|one|another|the)\s+"
                           r"(?:[a-z]+\s+)?(?:cube|block)\b(?!\s+(?:on|onto|atop|over|above)\b)"
                           rf"|,?\s+then\s+(?:the\s+|a\s+)?(?:{COLOR_RE})\s+(?:cube|block)\s*$", part):
-        return False  # "a tower of ... then put a brown cube in the back left corner": the place is the last cube's (it had joined the tower)
+        return False  # "a tower of ... then put a brown cube in the back left corner": the place is the last cube's (it had
+        # joined the tower; "stack four blue cubes into one tower and put a white cube in the front left corner" too)
     heads = _read_parts([part]) if m else None
     if heads is None:
         return False
