@@ -4479,3 +4479,23 @@ def test_words_that_frame_a_task_for_a_person_are_dropped(text, expected):
 def test_opening_words_that_may_change_the_task_are_not_dropped(text):
     with pytest.raises(ParseError):
         parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Left to right: red, green, blue.", ["line[left_to_right](red,green,blue)"]),  # an order alone is a row
+    ("Place the cubes from front to back: cyan, brown, purple.", ["line[front_to_back](cyan,brown,purple)"]),
+    ("Leftmost: gray. Rightmost: orange. Middle: white.", ["line[left_to_right](gray,white,orange)"]),
+    ("Put any block on top of the red one.", ["stack(red,blue)"]),  # one more cube, whichever
+    ("put one blue cube in each of the two back corners", ["in_region(blue,back_left)", "in_region(blue,back_right)"]),
+])
+def test_a_row_said_by_its_order_or_places_alone_and_corners_said_two_at_a_time(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "Left to right: red, green, blue, in a tower",  # the order is no tower's
+    "leftmost: orange, leftmost: gray, rightmost: pink",  # a place said twice
+])
+def test_an_order_said_of_something_else_is_not_made_a_row(text):
+    with pytest.raises(ParseError):
+        parse(text)

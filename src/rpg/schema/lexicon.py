@@ -3186,6 +3186,42 @@ def _robot_side(m: re.Match, side: str) -> str:
     return side
 
 
+_ROW_ROLE_WORDS = {"left": 0, "leftmost": 0, "middle": 1, "center": 1, "centre": 1, "right": 2, "rightmost": 2}
+
+
+def _row_roles(m: re.Match) -> str:
+    said = {_ROW_ROLE_WORDS[m.group(f"r{i}").lower()]: m.group(f"c{i}") for i in (1, 2, 3)}
+    if sorted(said) != [0, 1, 2]:
+        return m.group(0)  # a role said twice: left as written (refused)
+    return "a row from left to right: " + ", ".join(said[k] for k in (0, 1, 2))
+
+
+_ROW_ROLE = r"(?:the\s+)?(?P<r{i}>left(?:most)?|middle|cent(?:er|re)|right(?:most)?)(?:\s+(?:one|cube|block))?\s*[:=]\s*(?P<c{i}>" + COLOR_RE + r")"
+
+ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "Left to right: red, green, blue.", "Place the cubes from front to back: cyan, brown, purple.": an order along an
+    # axis with nothing else to be in it is a row (it had found no task)
+    (re.compile(r"(?i)^(?:(?:place|put|arrange|set|lay|order|line\s+up)\s+(?:the\s+|all\s+(?:the\s+)?)?(?:cubes|blocks)\s+)?(?:from\s+)?"
+                r"(?P<d>left\s+to\s+right|right\s+to\s+left|front\s+to\s+back|back\s+to\s+front)\s*:\s*(?=\S)"),
+     lambda m: m.group(0) if re.search(rf"\b(?:{STRUCTURE_NOUN}|rows?|lines?|piles?|walls?|spell\w*|sort\w*|patch\w*)\b", m.string)
+     else f"a row from {m.group('d')}: "),
+    # "leftmost: orange, middle: gray, rightmost: pink": a row by its three places
+    (re.compile(r"(?i)^" + _ROW_ROLE.format(i=1) + r"\s*[,;.]\s*" + _ROW_ROLE.format(i=2) + r"\s*[,;.]\s*" + _ROW_ROLE.format(i=3)
+                + r"(?=\s*[.!]?\s*$)"),
+     _row_roles),
+    # "put one blue cube in each of the two back corners": one in each of those two corners
+    (re.compile(rf"(?i)\b(?P<v>put|place|set)\s+(?:one|a|1)\s+(?P<c>(?:{COLOR_RE})\s+)?(?P<n>cube|block)\s+(?:in|into|at)\s+each\s+of\s+the\s+"
+                r"(?:two|2)\s+(?P<s>back|front|left|right)\s+corners\b"),
+     lambda m: (f"{m.group('v')} a {m.group('c') or ''}{m.group('n')} in the " + " corner and a {c}{n} in the ".join(
+         [f"{m.group('s')} left", f"{m.group('s')} right"] if m.group("s") in ("back", "front") else
+         [f"back {m.group('s')}", f"front {m.group('s')}"]).format(c=m.group("c") or "", n=m.group("n")) + " corner")),
+    # "put any block on top of the red one": a cube of any colour (one more, whichever)
+    (re.compile(r"(?i)\b(put|place|set|stack)\s+any\s+(cube|block)\b(?=\s+(?:on|onto|next\s+to|beside|behind|in\s+front\s+of|to\s+the))"),
+     r"\1 a \2"),
+)
+"""A row said by its order or its places alone, corners said two at a time, a cube of any colour."""
+
+
 LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # the robot as a landmark: its side of the table is the front, its left and right the table's (rpg's frame,
     # :mod:`rpg.domain.constants`) ("in front of the robot", "on the robot's left": a region of the table; the words

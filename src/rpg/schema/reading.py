@@ -976,6 +976,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     if lexicon.LETTER_SIGNATURE_RE.search(original):  # "Hi Sam, ... Thanks, Priya": a signed message
         original = lexicon.LETTER_GREETING_RE.sub("", lexicon.LETTER_SIGNATURE_RE.sub("", original)).strip() or original
     original = _unshouted(original)
+    original = lexicon.rewrite(lexicon.ROW_SAID_BY_ORDER_REWRITES, original)  # "Left to right: red, green, blue."
     for pattern, written in lexicon.LEGAL_RES:  # "the aforementioned green cube", "(hereinafter 'the Cube')"
         original = pattern.sub(written, original)
     for pattern in lexicon.GRADING_FRAME_RES:  # "Q3. (4 points) ...", "full marks if ...; zero otherwise"
