@@ -4499,3 +4499,23 @@ def test_a_row_said_by_its_order_or_places_alone_and_corners_said_two_at_a_time(
 def test_an_order_said_of_something_else_is_not_made_a_row(text):
     with pytest.raises(ParseError):
         parse(text)
+
+
+@pytest.mark.parametrize("text", [
+    # from a second hostile tester of this session's features
+    "Okay sweetie, the robot's former job was to put the red block on the blue block.",  # not the job now
+    "The task consists in part in to place the red cube on the green cube.",  # only a part of the task
+    "In this experiment, the robot was wrongly instructed to place the yellow cube on the red cube.",
+    "In this experiment, the human was instructed to place the yellow cube on the red cube.",  # not the robot's task
+    "For the pilot set of three runs, line up the red, blue and green cubes from left to right.",  # a count in the frame
+    "a line of blocks: purple on the far left, cyan on the far right, and gray blocks in between",  # how many?
+    "the leftmost cube in the row should be yellow, then green, then pink on the far right of the table",  # whose place?
+])
+def test_second_attack_on_frames_and_rows_is_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)
+
+
+def test_cubes_between_a_row_s_ends_whose_colour_is_not_said_take_any_cubes():
+    m = meaning(parse("a line of blocks: purple on the far left, cyan on the far right, and two blocks in between"))
+    assert m == ["line[left_to_right](purple,red,red,cyan)"]  # one colour: any two cubes may stand there

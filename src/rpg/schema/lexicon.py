@@ -335,11 +335,14 @@ FRAME_PREFIX_HAZARD_RE = re.compile(
     r"|blueprints?|templates?|models?|referenc\w*|memory|remember\w*|recall\w*|original\w*|previous\w*|earlier|yesterday|today"
     r"|usual\w*|shown|show\w*|see|seen|saw|sees|look\w*|follow\w*|according|per|copy\w*|match\w*|mimic\w*|replicat\w*"
     r"|recreat\w*|reproduc\w*|scenes?|setups?|configurations?|arrangements?|layouts?|patterns?|designs?|instructions?|here|there"
-    r"|this|that|now|current\w*|already|still|back|return\w*)\b")
+    r"|this|that|now|current\w*|already|still|back|return\w*|former\w*|also|too|mostly|almost|partly|part|might|would|could"
+    r"|may|wrong\w*|mistak\w*|suppos\w*|allegedly|among|human|person|people|students?|child|children|kids?|participants?"
+    r"|subjects?|operators?|users?|teachers?|one|two|three|four|five|six|seven|eight|nine|ten|\d+)\b")
 """What keeps a task's opening words from being framing (:data:`FRAME_PREFIX_RE`): a negation, a condition, time, a
 step, a repetition or reversal, a pronoun or quantifier for cubes, a comparison or simile, an order, colour or size,
 a change of the scene, a start, what the task spells or sorts, a tool ("Use the ruler to ...": an object the
-domain lacks), or a picture, scene, time or memory the words may point at ("Following the sketch, ...")."""
+domain lacks), a picture, scene, time or memory the words may point at ("Following the sketch, ..."), a hedge, a part or
+a doubt ("the robot's former job", "mostly", "wrongly instructed"), a person other than the robot, or a count."""
 
 QUOTED_TASK_REPORT_RE = re.compile(
     r"^(?:\s*(?:\d+[.)]|[-*\u2022]|;|,|\.|:|repro(?:duce)?|steps?|str|to|give|run|ran|the|a|task|instruction|prompt|command|reset|sim"
@@ -1054,7 +1057,8 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 r"(?:the\s+)?(front|back|left|right)(?:\s+(?:edge|side|end))?\b"), r", with \1 at the \2"),
     # "leftmost should be the red cube, then blue, then yellow": the order from that side
     (re.compile(rf"(?:^|(?<=[.;:]\s))(?:the\s+)?(left|right|front|back)(?:most)?(?:\s+(?:one|cube|block))?(?:\s+(?:in|of)\s+the\s+(row|line))?"
-                rf"\s+(?:should\s+be|must\s+be|is|will\s+be|goes|comes\s+first)\s*:?\s*(?=(?:the\s+)?(?:{COLOR_RE})\b[^.;]*\bthen\b)"),
+                rf"\s+(?:should\s+be|must\s+be|is|will\s+be|goes|comes\s+first)\s*:?\s*(?=(?:the\s+)?(?:{COLOR_RE})\b[^.;]*\bthen\b)"
+                r"(?![^.;]*\bof\s+the\s+(?:table|workspace)\b)"),  # (a place of the table's said with it: which cube's?)
      lambda m: (f"a {m.group(2)} " if m.group(2) else "") + {"left": "from left to right: ", "right": "from right to left: ", "front": "from front to back: ",
                 "back": "from back to front: "}[m.group(1)]),
     # "... yellow, then green, then pink on the far right": the last cube at the far end of the order said (said again)

@@ -21,6 +21,7 @@ from rapidfuzz import fuzz, process
 from rpg.domain.palette import COLOR_ALIASES
 from rpg.errors import BadInput
 from rpg.schema import lexicon, senses
+from rpg.schema.builder import DEFAULT_COLORS
 from rpg.schema.lexicon import (
     COLOR_RE,
     COLORS,
@@ -198,6 +199,9 @@ def _frame_prefix(words: str) -> bool:
     to ..."), and every word a dictionary word, a name or a number."""
     low = re.sub(r"\b(?:in|for|during)\s+this\s+(?:experiment|task|episode|run|variant|setting|study|trial|eval(?:uation)?|benchmark"
                  r"|section|lesson|level|round|version|exercise|challenge|test)\b", " ", words.lower())  # "In this experiment,"
+    low = re.sub(r"\b(?:[a-z]+[-_]?\d[\w\-]*|\d+[a-z][\w\-]*)\b|\b(?:tasks?|homework|levels?|projects?|sections?|lessons?|exercises?"
+                 r"|steps?|parts?|stages?|rounds?|trials?|episodes?|activit(?:y|ies)|challenges?|questions?|q|items?|cards?|tickets?"
+                 r"|deliverables?|milestones?|protocols?)\s*#?\d+(?:\.\d+)*[a-z]?\b", " ", low)  # "Homework 1", "Project RB-7": names
     if lexicon.GOAL_THING_RE.search(low) or lexicon.FRAME_PREFIX_HAZARD_RE.search(low) \
             or not lexicon.FRAME_NOUN_RE.search(words.lower()):
         return False
@@ -1515,8 +1519,8 @@ def _role_clauses(m: re.Match) -> str:
 _LINE_END = (r"(?:the\s+|an?\s+|1\s+)?(?P<{g}>" + COLOR_RE + r")(?:\s+(?:cube|block|one))?\s+(?:is\s+|goes\s+|sits\s+|stands\s+)?"
              r"(?:(?:on|at|to)\s+the\s+(?:far|very|extreme)\s+(?P<{g}s>left|right)(?:\s+end)?|(?:on|at)\s+the\s+(?P<{g}e>left|right)\s+end"
              r"|(?P<{g}m>left|right)most)")
-_LINE_MIDDLE = (r"(?:(?P<n>\d+|" + lexicon.COUNT_WORD_RE + r"|an?|the)\s+)?(?P<m>" + COLOR_RE + r")(?:\s+(?:cubes?|blocks?|ones?))?\s+"
-                r"(?:in\s+between|between\s+them|in\s+the\s+middle)")
+_LINE_MIDDLE = (r"(?:(?P<n>\d+|" + lexicon.COUNT_WORD_RE + r"|an?|the)\s+)?(?:(?P<m>" + COLOR_RE + r")\s+)?(?P<noun>cubes?|blocks?|ones?)?\s*"
+                r"(?<=\w)\s+(?:in\s+between|between\s+them|in\s+the\s+middle)")
 _LINE_ROLES_RE = re.compile(rf"(?:\s*[:;,]\s*|\s+with\s+){_LINE_END.format(g='a')}\s*,?\s+(?:and\s+)?(?:with\s+)?"
                             rf"{_LINE_END.format(g='b')}\s*,?\s+(?:and\s+)?(?:with\s+)?{_LINE_MIDDLE}\b")
 
@@ -1528,10 +1532,17 @@ def _line_roles(m: re.Match) -> str:
     sides = {k: next(m.group(f"{k}{x}") for x in ("s", "e", "m") if m.group(f"{k}{x}")) for k in ("a", "b")}
     if {sides["a"], sides["b"]} != {"left", "right"} or not re.search(r"\b(?:rows?|lines?|line\s+up|lined)\b", m.string):
         return m.group(0)
+    if not m.group("m") and not m.group("noun"):
+        return m.group(0)
+    if not m.group("n") and (m.group("noun") or "").endswith("s"):
+        raise ParseError(f"\"{m.string[:80]}\" puts cubes between the row's ends without saying how many; say the count "
+                         "(e.g. \"two gray blocks in between\"), or use --model")  # (a plural had become one cube)
     n = m.group("n") or "1"
     n = 1 if n in ("a", "an", "the") else int(lexicon.NUMBER_WORDS.get(n, n))
     left, right = (m.group("a"), m.group("b")) if sides["a"] == "left" else (m.group("b"), m.group("a"))
-    return ": from left to right: " + ", ".join([left] + [m.group("m")] * n + [right])
+    named = {canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", m.string)}
+    middle = m.group("m") or next(c for c in DEFAULT_COLORS if c not in named)  # "two blocks in between": any cubes, one
+    return ": from left to right: " + ", ".join([left] + [middle] * n + [right])  # colour so that any of them may stand there
 
 
 _MIDDLE_OF_ODD_ROW_RE = re.compile(
