@@ -195,8 +195,10 @@ def _framing_sentence(sentence: str) -> bool:
 
 def _frame_prefix(words: str) -> bool:
     """Whether the words before a task's imperative frame it for a person (:data:`lexicon.FRAME_PREFIX_RE`): words that
-    name the task, address a person or say it is needed (:data:`lexicon.FRAME_NOUN_RE`), nothing of a goal, no hazard (:data:`lexicon.FRAME_PREFIX_HAZARD_RE`), nothing the domain refuses (an object: "Use the ruler
-    to ..."), and every word a dictionary word, a name or a number."""
+    name the task, address a person or say it is needed (:data:`lexicon.FRAME_NOUN_RE`), nothing of a goal, no hazard
+    (:data:`lexicon.FRAME_PREFIX_HAZARD_RE`; names with numbers, "Homework 1", "Project RB-7", are no count), nothing
+    the domain refuses (an object: "Use the ruler to ..."), no verb but a frame's (:data:`lexicon.FRAME_VERBS`), and
+    every word a dictionary word, a name or a number."""
     low = re.sub(r"\b(?:in|for|during)\s+this\s+(?:experiment|task|episode|run|variant|setting|study|trial|eval(?:uation)?|benchmark"
                  r"|section|lesson|level|round|version|exercise|challenge|test)\b", " ", words.lower())  # "In this experiment,"
     low = re.sub(r"\b(?:[a-z]+[-_]?\d[\w\-]*|\d+[a-z][\w\-]*)\b|\b(?:tasks?|homework|levels?|projects?|sections?|lessons?|exercises?"

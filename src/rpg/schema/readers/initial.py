@@ -212,9 +212,8 @@ def _stacks_read(content: str) -> list[tuple[str, ...]] | None:
     ("red cube stacked on a white cube stacked on a black cube", "blue on the bottom, then orange, then white on
     top"), or None unless that reading is only stacks in one order, of cubes each of its own colour or label, and
     accounts for every word (a tower "in any order", a row, a place: no start rpg builds)."""
-    from rpg.schema.readers import (
-        parse,  # the front end reading this start's words (it calls this module first)
-    )
+    # the front end, which calls this module first (imported here, when a start is read)
+    from rpg.schema.readers import parse
 
     content = re.sub(r"(?i)^\s*(?:the|a|one)\s+(tower|stack|column)\s+(?:is|was|has|looks\s+like)\s*:?\s*", r"a \1: ", content)
     try:  # ("the tower is blue on the bottom, ...": the tower the start describes)
