@@ -296,7 +296,7 @@ requirement or sequence that may constrain one ("In every episode the red cube m
 verb that moves cubes."""
 
 FRAME_PREFIX_RE = re.compile(
-    r"^(?P<p>[^.;!?\"]{2,120}?)(?:\s*[,:]\s+|\s+(?:is|was|are|were)\s+to\s+|\s+to\s+)"
+    r"^(?P<p>[^.;!?\"():]{2,120}?)(?:\s*[,:]\s+|\s+(?:is|was|are|were)\s+to\s+|\s+to\s+)"
     r"(?=(?:please\s+)?(?:put|place|set|move|bring|position|lay|build|make|create|construct|assemble|form|stack|pile|arrange|line"
     r"|spell|sort|align|group|get)\b)")
 """Words before the imperative of a task that frame it for a person ("For the pilot set, line up ...", "Okay sweetie,
@@ -3190,6 +3190,12 @@ def _robot_side(m: re.Match, side: str) -> str:
     return side
 
 
+BARE_ORDER_RE = re.compile(
+    r"(?i)^(?:(?:place|put|arrange|set|lay|order|line\s+up)\s+(?:the\s+|all\s+(?:the\s+)?)?(?:cubes|blocks)\s+)?(?:from\s+)?"
+    r"(?P<d>left\s+to\s+right|right\s+to\s+left|front\s+to\s+back|back\s+to\s+front)\s*:\s*(?=\S)")
+"""An order along an axis said alone ("Left to right: red, green, blue."): a row as a task (:data:`ROW_SAID_BY_ORDER_REWRITES`),
+a new order of the task's cubes as a steering edit (:func:`rpg.steer.edits.looks_standalone`)."""
+
 _ROW_ROLE_WORDS = {"left": 0, "leftmost": 0, "middle": 1, "center": 1, "centre": 1, "right": 2, "rightmost": 2}
 
 
@@ -3205,8 +3211,7 @@ _ROW_ROLE = r"(?:the\s+)?(?P<r{i}>left(?:most)?|middle|cent(?:er|re)|right(?:mos
 ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "Left to right: red, green, blue.", "Place the cubes from front to back: cyan, brown, purple.": an order along an
     # axis with nothing else to be in it is a row (it had found no task)
-    (re.compile(r"(?i)^(?:(?:place|put|arrange|set|lay|order|line\s+up)\s+(?:the\s+|all\s+(?:the\s+)?)?(?:cubes|blocks)\s+)?(?:from\s+)?"
-                r"(?P<d>left\s+to\s+right|right\s+to\s+left|front\s+to\s+back|back\s+to\s+front)\s*:\s*(?=\S)"),
+    (BARE_ORDER_RE,
      lambda m: m.group(0) if re.search(rf"\b(?:{STRUCTURE_NOUN}|rows?|lines?|piles?|walls?|spell\w*|sort\w*|patch\w*)\b", m.string)
      else f"a row from {m.group('d')}: "),
     # "leftmost: orange, middle: gray, rightmost: pink": a row by its three places

@@ -24,6 +24,7 @@ from rpg.domain.palette import GRADIENT_ORDER
 from rpg.errors import BadInput
 from rpg.schema.builder import DEFAULT_COLORS
 from rpg.schema.lexicon import (
+    BARE_ORDER_RE,
     COLOR_RE,
     COUNT_WORD_RE,
     EDIT_ADDITIVE_RE,
@@ -719,9 +720,10 @@ TASK_NOUN_RE = re.compile(r"\b(?:towers?|stacks?|stacked|lines?|rows?|circles?|c
 
 def looks_standalone(t: str) -> bool:
     """True when a normalised edit reads as a whole task rather than a change to one (an
-    addition, "also ...", "and a yellow block on the blue one", keeps the task)."""
+    addition, "also ...", "and a yellow block on the blue one", keeps the task; an order alone,
+    "left to right: blue, red, green", orders the task's cubes)."""
     return not ANAPHORA_RE.search(t) and not EDIT_ADDITIVE_RE.search(t) and not re.match(r"\s*and\b", t) \
-        and not EDIT_CONTINUES_RE.match(t) and bool(TASK_NOUN_RE.search(t))
+        and not EDIT_CONTINUES_RE.match(t) and not BARE_ORDER_RE.match(t) and bool(TASK_NOUN_RE.search(t))
 
 
 def names_cubes(t: str) -> bool:

@@ -128,7 +128,8 @@ class RelationalReading:
             i = self.fresh.setdefault(id(mn), len(lst))
         while len(lst) <= i:
             lst.append(self.b.semantic(mn.label) if mn.label else self.b.cube(mn.color or _next_default(
-                self.b, self.objects, self.clause if mn.count <= 1 else "")))  # ("three cubes: a red one, ...": named after)
+                self.b, self.objects, self.clause if mn.count <= 1 and re.search(r"\b(?:a|an|one|another|any)\s+(?:\w+\s+)?$", self.clause[:mn.end].rsplit(" ", 1)[0] + " ")
+                else "")))  # ("three cubes: a red one, ...": named after; "put that block": a cube said before)
         return lst[i]
 
     def read_clause(self, clause: str) -> None:
@@ -617,7 +618,7 @@ def _next_default(b: Builder, objects: dict, clause: str = "") -> str:
     """The colour of a cube named by no colour: the first default colour no cube has yet and, where there is one, that the
     ``clause`` it is said in names for no other cube ("put a block between the red block and the green block": it had
     been red, a second red cube, and the instruction refused for naming one)."""
-    said = {canon_color(w) for w in re.findall(rf"\b(?:{COLOR_RE})\b", clause)}
+    said = {canon_color(w) for w in re.findall(rf"\b(?:{COLOR_RE})\b(?!\s+(?:goal\s+|target\s+)?patch)", clause)}  # cubes' colours
     used = {k[1] for k in objects if k[0] == "cube"} | {a.color for a in b.assets}
     return next((c for c in DEFAULT_COLORS if c not in used | said), None) or next(c for c in DEFAULT_COLORS if c not in used)
 
