@@ -4519,3 +4519,13 @@ def test_second_attack_on_frames_and_rows_is_refused(text):
 def test_cubes_between_a_row_s_ends_whose_colour_is_not_said_take_any_cubes():
     m = meaning(parse("a line of blocks: purple on the far left, cyan on the far right, and two blocks in between"))
     assert m == ["line[left_to_right](purple,red,red,cyan)"]  # one colour: any two cubes may stand there
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Stack three cubes; the colours do not matter but the top one must be white.", ["stack(red,blue,white)"]),
+    ("Make two towers: one of three green cubes on the left, one of three red cubes on the right.",
+     ["stack(green,green,green)@left", "stack(red,red,red)@right"]),
+    ("Make two rows: one of three red cubes, one of three blue cubes.", ["line(blue,blue,blue)", "line(red,red,red)"]),
+])
+def test_freedom_with_a_but_and_two_structures_said_after_a_colon_are_read(text, expected):
+    assert sorted(meaning(parse(text))) == expected

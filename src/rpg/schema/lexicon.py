@@ -3224,11 +3224,16 @@ ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      lambda m: (f"{m.group('v')} a {m.group('c') or ''}{m.group('n')} in the " + " corner and a {c}{n} in the ".join(
          [f"{m.group('s')} left", f"{m.group('s')} right"] if m.group("s") in ("back", "front") else
          [f"back {m.group('s')}", f"front {m.group('s')}"]).format(c=m.group("c") or "", n=m.group("n")) + " corner")),
+    # "Make two towers: one of three green cubes on the left, one of three red cubes on the right": each said in turn
+    (re.compile(r"(?i)\b(?P<v>make|build|create|form|stack|line\s+up)\s+(?:two|2)\s+(?P<s>tower|stack|row|line|pile)s\s*:\s*one\s+of\s+"
+                r"(?P<a>[^,;:.]+?)\s*[,;]\s*(?:and\s+)?(?:one|the\s+other)\s+of\s+(?P<b>[^,;:.]+?)(?=\s*(?:[.!]|$))"),
+     lambda m: f"{m.group('v')} a {m.group('s')} of {m.group('a')} and a {m.group('s')} of {m.group('b')}"),
     # "put any block on top of the red one": a cube of any colour (one more, whichever)
     (re.compile(r"(?i)\b(put|place|set|stack)\s+any\s+(cube|block)\b(?=\s+(?:on|onto|next\s+to|beside|behind|in\s+front\s+of|to\s+the))"),
      r"\1 a \2"),
 )
-"""A row said by its order or its places alone, corners said two at a time, a cube of any colour."""
+"""A row said by its order or its places alone, corners said two at a time, two structures said after a colon, a cube of
+any colour."""
 
 
 LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (

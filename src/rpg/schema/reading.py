@@ -1085,7 +1085,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
             raise Inexpressible("contradiction", [m.group(0).strip(" ,;(\u2013\u2014-")], "leaves the colours free, but the "
                                 "instruction names its cubes by colour, which is how the goal tells them apart; say one of "
                                 "the two", original)
-    text = lexicon.FREE_CHOICE_RE.sub("", text)
+    text, freed = lexicon.FREE_CHOICE_RE.subn("", text)
+    if freed:  # "Stack three cubes; the colours do not matter but the top one must be white": what the 'but' kept
+        text = re.sub(r"([;,])?\s*\bbut\s+(?=(?:the|a|an)\s)", lambda m: (m.group(1) or ",") + " ", text, count=1)
     for pattern, written in lexicon.CHAT_TURN_RES:  # "[10:32] alice: stack blue on green [10:33] bob: ok on it"
         text = pattern.sub(written, text)
     text = re.sub(r"^[\s.]+", "", text)
