@@ -278,19 +278,25 @@ _GOAL_THINGS = (r"(?:" + "|".join(COLORS) + r"|grey|blocks?|cubes?|bricks?|box(?
                 r"|towers?|stacks?|stacked|stacking|piles?|lines?|rows?|columns?|pillars?|pyramids?|walls?|grids?|circles?|rings?"
                 r"|letters?|digits?|labels?|left|right|front|back|rear|behind|middle|cent(?:er|re)|corners?|edges?|sides?"
                 r"|top|bottom|base|next|near|beside|between|far|apart|onto|under|above|below|table)")
-"""The words of a goal's things, places and relations (no counts: a report's numbers count episodes and steps)."""
+"""The words of a goal's things, places and relations (no counts: a report's numbers count episodes and steps);
+:data:`_TASK_THINGS` adds the counts and "on"."""
 
 GOAL_THING_RE = re.compile(rf"\b{_GOAL_THINGS}\b")
 
+_TURNED_OR_REPEATED = (r"revers\w*|backwards?|opposite|invers\w*|invert\w*|mirror\w*|swap\w*|flip\w*|upside|sideways|rotat\w*"
+                       r"|turn\w*|twice|thrice|times|repeat\w*|again|alternat\w*")
+"""Words that turn a task around or say it again, which neither an evaluation report nor a task's frame may hold."""
+
+_HANDLED = r"push\w*|pull\w*|knock\w*|toppl\w*|touch\w*|hold\w*|remov\w*|take"
+"""Verbs of handling cubes, which neither an evaluation report nor a task's frame may hold."""
+
 EVALUATION_BLOCKER_RE = re.compile(
-    r"\b(?:" + _GOAL_THINGS + r"|put|place|move|set|lay|bring|build|make|arrange|group|line"
-    + r"|stack|spell\w*|sort\w*|order\w*|reads?|it|its|they|them|their|those|these|must|should|has\s+to|have\s+to|needs?\s+to"
-    r"|then|after|afterwards|finally|instead|keep|stay\w*|remain\w*|leave|until|while|during|push\w*|pull\w*|knock\w*"
-    r"|throw\w*|shak\w*|drop\w*|lift\w*|pick\w*|grasp\w*|grab\w*|rotat\w*|flip\w*|turn\w*|slid\w*|toss\w*|tip\w*"
-    r"|toppl\w*|touch\w*|hold\w*|carr\w*|remov\w*|take|swap\w*|tid\w*|clean\w*|clear\w*|reset\w*|undo|everything"
-    r"|anything|something|nothing|revers\w*|backwards?|opposite|invers\w*|invert\w*|mirror\w*|vice|versa|other\s+way|twice"
-    r"|thrice|times|repeat\w*|again|doubl\w*|half|upside|sideways|alternat\w*|only|except|but|also|plus|taller|shorter"
-    r"|higher|lower|more|less|swap\w*|within|cm|mm|inch\w*|degrees?)\b")
+    r"\b(?:" + _GOAL_THINGS + "|" + _TURNED_OR_REPEATED + "|" + _HANDLED + r"|put|place|move|set|lay|bring|build|make|arrange|group"
+    r"|line|stack|spell\w*|sort\w*|order\w*|reads?|it|its|they|them|their|those|these|must|should|has\s+to|have\s+to|needs?\s+to"
+    r"|then|after|afterwards|finally|instead|keep|stay\w*|remain\w*|leave|until|while|during|throw\w*|shak\w*|drop\w*|lift\w*"
+    r"|pick\w*|grasp\w*|grab\w*|slid\w*|toss\w*|tip\w*|carr\w*|tid\w*|clean\w*|clear\w*|reset\w*|undo|everything|anything"
+    r"|something|nothing|vice|versa|other\s+way|doubl\w*|half|only|except|but|also|plus|taller|shorter|higher|lower|more|less"
+    r"|within|cm|mm|inch\w*|degrees?)\b")
 """What keeps a sentence with an evaluation word (:data:`EVALUATION_WORD_RE`) in the task: anything of a goal or a
 requirement or sequence that may constrain one ("In every episode the red cube must stay on the patch."), or a
 verb that moves cubes."""
@@ -323,14 +329,13 @@ would should must shall will can could may might has have had let lets going gon
 to", "the task consists in to"); another verb may say what was done or seen ("Do what you did: ...")."""
 
 FRAME_PREFIX_HAZARD_RE = re.compile(
-    r"\b(?:not|no|never|none|nothing|without|except|unless|[a-z]+n't|cannot|if|when|whenever|once|until|till|while|after|before"
-    r"|then|first|second|third|next|finally|last|again|twice|thrice|times|repeat\w*|revers\w*|opposite|backwards?|invers\w*"
-    r"|invert\w*|mirror\w*|swap\w*|flip\w*|upside|sideways|rotat\w*|turn\w*|tilt\w*|it|its|itself|them|they|their|those|these"
-    r"|each|every|all|both|only|other|another|same|different|more|less|fewer|most|least|many|much|several|few|like|unlike"
-    r"|as|instead|rather|else|except|alternat\w*|order\w*|colou?r\w*|size|big|small|large|tall|high|low|wide|long|short"
-    r"|quick\w*|slow\w*|fast|time|minutes?|seconds?|hours?|touch\w*|knock\w*|toppl\w*|push\w*|pull\w*|remov\w*|take|hold\w*"
-    r"|start\w*|begin\w*|initial\w*|keep|stay\w*|leave|remain\w*|undo|reset|again|spell\w*|sort\w*|word|words|letter\w*"
-    r"|digit\w*|number\w*|\d+\s*(?:x|by)\s*\d+|use|uses|used|using|with|via|through|holding|wearing|by\s+means"
+    r"\b(?:" + _TURNED_OR_REPEATED + "|" + _HANDLED + r"|not|no|never|none|nothing|without|except|unless|[a-z]+n't|cannot|if|when"
+    r"|whenever|once|until|till|while|after|before|then|first|second|third|next|finally|last|tilt\w*|it|its|itself|them|they"
+    r"|their|those|these|each|every|all|both|only|other|another|same|different|more|less|fewer|most|least|many|much|several"
+    r"|few|like|unlike|as|instead|rather|else|order\w*|colou?r\w*|size|big|small|large|tall|high|low|wide|long|short"
+    r"|quick\w*|slow\w*|fast|time|minutes?|seconds?|hours?|start\w*|begin\w*|initial\w*|keep|stay\w*|leave|remain\w*|undo"
+    r"|reset|spell\w*|sort\w*|word|words|letter\w*|digit\w*|number\w*|\d+\s*(?:x|by)\s*\d+|use|uses|used|using|with|via"
+    r"|through|holding|wearing|by\s+means"
     r"|pictur\w*|photo\w*|images?|diagram\w*|sketch\w*|draw\w*|figures?|screenshots?|videos?|demo\w*|examples?|cards?|plans?"
     r"|blueprints?|templates?|models?|referenc\w*|memory|remember\w*|recall\w*|original\w*|previous\w*|earlier|yesterday|today"
     r"|usual\w*|shown|show\w*|see|seen|saw|sees|look\w*|follow\w*|according|per|copy\w*|match\w*|mimic\w*|replicat\w*"
@@ -2047,11 +2052,7 @@ a an the this these those is are was were be been being am i me my we our us you
 so do does did have has had will would can could should just very really as wants want""".split())
 """Known words a sentence that says nothing of the task may hold (fillers and function words)."""
 
-_TASK_THINGS = ("|".join(COLORS) + r"|grey|\d+|blocks?|cubes?|bricks?|box(?:es)?|patch(?:es)?|pads?|mats?|tiles?|squares?"
-                r"|towers?|stacks?|stacked|stacking|piles?|lines?|rows?|columns?|pillars?|pyramids?|walls?|grids?|circles?|rings?"
-                r"|letters?|digits?|numbers?|labels?|left|right|front|back|rear|behind|middle|cent(?:er|re)|corners?|edges?|sides?"
-                r"|top|bottom|base|next|near|beside|between|far|apart|on|onto|under|above|below|table"
-                r"|two|three|four|five|six|seven|eight|nine|ten")
+_TASK_THINGS = _GOAL_THINGS + r"|\d+|numbers?|on|two|three|four|five|six|seven|eight|nine|ten"
 """The words of the task's things, places and counts that both :data:`TASK_CONTENT_RE` and :data:`SENTENCE_CONTENT_RE`
 count as the task's."""
 
@@ -3206,6 +3207,15 @@ def _row_roles(m: re.Match) -> str:
     return "a row from left to right: " + ", ".join(said[k] for k in (0, 1, 2))
 
 
+def _two_corners(m: re.Match) -> str:
+    """"put one blue cube in each of the two back corners" -> "put a blue cube in the back left corner and a blue cube in
+    the back right corner"."""
+    side = m.group("s")
+    corners = [f"{side} left", f"{side} right"] if side in ("back", "front") else [f"back {side}", f"front {side}"]
+    cube = f"a {m.group('c') or ''}{m.group('n')}"
+    return f"{m.group('v')} " + " and ".join(f"{cube} in the {c} corner" for c in corners)
+
+
 _ROW_ROLE = r"(?:the\s+)?(?P<r{i}>left(?:most)?|middle|cent(?:er|re)|right(?:most)?)(?:\s+(?:one|cube|block))?\s*[:=]\s*(?P<c{i}>" + COLOR_RE + r")"
 
 ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
@@ -3221,9 +3231,7 @@ ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "put one blue cube in each of the two back corners": one in each of those two corners
     (re.compile(rf"(?i)\b(?P<v>put|place|set)\s+(?:one|a|1)\s+(?P<c>(?:{COLOR_RE})\s+)?(?P<n>cube|block)\s+(?:in|into|at)\s+each\s+of\s+the\s+"
                 r"(?:two|2)\s+(?P<s>back|front|left|right)\s+corners\b"),
-     lambda m: (f"{m.group('v')} a {m.group('c') or ''}{m.group('n')} in the " + " corner and a {c}{n} in the ".join(
-         [f"{m.group('s')} left", f"{m.group('s')} right"] if m.group("s") in ("back", "front") else
-         [f"back {m.group('s')}", f"front {m.group('s')}"]).format(c=m.group("c") or "", n=m.group("n")) + " corner")),
+     _two_corners),
     # "Make two towers: one of three green cubes on the left, one of three red cubes on the right": each said in turn
     (re.compile(r"(?i)\b(?P<v>make|build|create|form|stack|line\s+up)\s+(?:two|2)\s+(?P<s>tower|stack|row|line|pile)s\s*:\s*one\s+of\s+"
                 r"(?P<a>[^,;:.]+?)\s*[,;]\s*(?:and\s+)?(?:one|the\s+other)\s+of\s+(?P<b>[^,;:.]+?)(?=\s*(?:[.!]|$))"),
@@ -3491,7 +3499,9 @@ TOWER_MORE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 r"(?:\s+(?:it|that))?(?=\s*(?:[.,;!]|$))"),
      _tower_and_more),
 )
-"""A tower said by one end and how many more cubes stand on it or under it: a tower of that many, that end said."""
+"""Towers said by their parts: the goal's tower described by its top or bottom block ("the top block of the tower should
+be green ..."), and a tower said by one end and how many more cubes stand on it or under it (a tower of that many, that
+end said)."""
 
 READING_END_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\bfrom\s+(?:the\s+)?(left|right|front|back)(?:\s+(?:side|end))?\b(?!\s*(?:to|of|side|end|corner|edge|half|part)\b)"),
