@@ -4529,3 +4529,8 @@ def test_cubes_between_a_row_s_ends_whose_colour_is_not_said_take_any_cubes():
 ])
 def test_freedom_with_a_but_and_two_structures_said_after_a_colon_are_read(text, expected):
     assert sorted(meaning(parse(text))) == expected
+
+
+def test_uncoloured_cubes_in_each_of_two_corners_are_not_given_one_corner_each():
+    with pytest.raises(ParseError):  # it had demanded a red cube back left and a blue one front left: a goal stricter than the words
+        parse("put a cube in each of the two left corners")

@@ -3212,7 +3212,7 @@ def _two_corners(m: re.Match) -> str:
     the back right corner"."""
     side = m.group("s")
     corners = [f"{side} left", f"{side} right"] if side in ("back", "front") else [f"back {side}", f"front {side}"]
-    cube = f"a {m.group('c') or ''}{m.group('n')}"
+    cube = f"a {m.group('c')}{m.group('n')}"
     return f"{m.group('v')} " + " and ".join(f"{cube} in the {c} corner" for c in corners)
 
 
@@ -3228,8 +3228,9 @@ ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"(?i)^" + _ROW_ROLE.format(i=1) + r"\s*[,;.]\s*" + _ROW_ROLE.format(i=2) + r"\s*[,;.]\s*" + _ROW_ROLE.format(i=3)
                 + r"(?=\s*[.!]?\s*$)"),
      _row_roles),
-    # "put one blue cube in each of the two back corners": one in each of those two corners
-    (re.compile(rf"(?i)\b(?P<v>put|place|set)\s+(?:one|a|1)\s+(?P<c>(?:{COLOR_RE})\s+)?(?P<n>cube|block)\s+(?:in|into|at)\s+each\s+of\s+the\s+"
+    # "put one blue cube in each of the two back corners": one in each of those two corners (with a colour: two cubes of
+    # colours nobody said would each be demanded in one corner)
+    (re.compile(rf"(?i)\b(?P<v>put|place|set)\s+(?:one|a|1)\s+(?P<c>(?:{COLOR_RE})\s+)(?P<n>cube|block)\s+(?:in|into|at)\s+each\s+of\s+the\s+"
                 r"(?:two|2)\s+(?P<s>back|front|left|right)\s+corners\b"),
      _two_corners),
     # "Make two towers: one of three green cubes on the left, one of three red cubes on the right": each said in turn
