@@ -4534,3 +4534,54 @@ def test_freedom_with_a_but_and_two_structures_said_after_a_colon_are_read(text,
 def test_uncoloured_cubes_in_each_of_two_corners_are_not_given_one_corner_each():
     with pytest.raises(ParseError):  # it had demanded a red cube back left and a blue one front left: a goal stricter than the words
         parse("put a cube in each of the two left corners")
+
+
+@pytest.mark.parametrize("text, expected", [
+    # twenty-third session, read from stranger32 (the twenty-second session's transfer measure)
+    ("Row of cubes along the back edge of the table: cyan, cyan, purple, in any order.", ["line(cyan,cyan,purple)@back"]),
+    ("Make a row of two cyan cubes and a purple cube, in any order.", ["line(cyan,cyan,purple)"]),
+    ("Goal: wall. Lower layer: white, gray, white. Upper layer: black, black, black.",
+     ["wall(gray,white,white|black,black,black)"]),
+])
+def test_a_list_freed_by_in_any_order_and_layers_said_as_lower_and_upper(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+def test_a_row_listing_a_colour_twice_keeps_its_order_unless_freed():
+    assert meaning(parse("Make a row of cyan, purple, cyan cubes.")) == ["line[sequence](cyan,purple,cyan)"]
+
+
+def test_cubes_that_should_end_up_stacked_are_stacked_in_any_order():
+    goal = parse("the black, brown and pink cubes should end up stacked in one column").goal_predicate()
+    assert type(goal).__name__ == "UnorderedStack"
+    assert type(parse("the black cube should end up on the pink cube").goal_predicate()).__name__ == "Stack"
+
+
+def test_a_pyramid_s_peak_cites_the_word_peak():
+    from rpg.schema.citations import uncited
+    schema = parse("stack a three-block pyramid using the pink, cyan and gray cubes with pink at the peak")
+    assert meaning(schema) == ["pyramid(cyan,gray|pink)"] and uncited(schema) == []
+
+
+@pytest.mark.parametrize("text", ["stack the green triangle on top of the white cube", "put a red wedge next to the blue cube"])
+def test_a_coloured_triangle_or_wedge_is_a_piece_the_domain_lacks(text):
+    with pytest.raises(Inexpressible, match="shape the domain does not have"):
+        parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("The white cube shall stand left from the black cube.", ["left_of(white,black)"]),
+    ("Put gray cube on the right side from the white cube.", ["right_of(gray,white)"]),
+    ("The red one must go in front to the blue one.", ["in_front_of(red,blue)"]),
+    ("Place green cube to left from yellow cube, orange cube - to right from yellow.",
+     ["left_of(green,yellow)", "right_of(orange,yellow)"]),
+])
+def test_a_learner_s_side_from_a_cube_is_its_side(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+def test_a_tower_s_count_with_only_its_ends_said_as_headings_leaves_the_middle_free():
+    goal = parse("Tower of 4. Base: gray. Top: yellow.").goal_predicate()
+    assert type(goal).__name__ == "AnchoredStack" and len(goal.objects) == 4
+    assert meaning(parse("Tower. Base: gray. Top: yellow.")) == ["stack(gray,yellow)"]
+    assert meaning(parse("I want a tower of three where the middle block is yellow")) == ["stack(red,yellow,blue)"]

@@ -48,7 +48,7 @@ from rpg.schema.meaning import descriptor
 from rpg.schema.model import TaskSchema
 
 ORDER_CUE = re.compile(
-    r"\b(?:on|onto|upon|atop|above|over|under|below|beneath|underneath|top|bottom|base|first|second|third|then|"
+    r"\b(?:on|onto|upon|atop|above|over|under|below|beneath|underneath|top|peak|apex|tip|summit|bottom|base|first|second|third|then|"
     r"last|next|finally|after|before|order\w*|sequence|from|higher|lower|left|right|front|behind|back|between|"
     r"middle|center|centre|rainbow|gradient|alternat\w*|alphabet\w*|sort\w*|ascending|descending|increasing|"
     r"decreasing|reverse\w*|followed|ending|starting|beginning|end|start|begin)\b")
@@ -60,7 +60,7 @@ SELF_ORDERING = re.compile(r"\b(?:rainbow|gradient|alternat\w*|alphabet\w*|sort\
 
 ROLE_CUES = {
     "bottom": re.compile(r"\b(?:bottom|base|lowest|bottommost|foundation|start\w*|begin\w*)\b"),
-    "top": re.compile(r"\b(?:top|topmost|highest|uppermost|end\w*|finish\w*)\b"),
+    "top": re.compile(r"\b(?:top|topmost|highest|uppermost|peak|apex|tip|summit|end\w*|finish\w*)\b"),
 }
 """Words that put a cube at an end of a stack (:class:`~rpg.domain.predicates.AnchoredStack`)."""
 

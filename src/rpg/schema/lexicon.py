@@ -560,6 +560,11 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                       r"(?:cube|block|one))\s+(?:is\s+)?(?:also\s+|too\s+)?(?:at|on|in|under|next|beside|behind|left|right|as)\b",
      "gives the cube named before a second place: one cube stands in one place at the end of the episode, so the two "
      "places contradict each other; say one place for it, or say two cubes of that colour"),
+    ("shape", rf"\b(?:the|a|an|one|each)\s+(?:{'|'.join(COLORS)}|grey)\s+(?:triangles?|triangular\s+(?:blocks?|pieces?|prisms?)"
+              r"|prisms?|wedges?)\b(?!\s+of\b)",
+     "names a piece of a shape the domain does not have (a triangle, prism or wedge): it has only 5 cm cubes "
+     "(coloured, optionally labelled) and flat coloured patches; a pyramid is built of cubes (e.g. \"a pyramid of 3 "
+     "cubes\")"),
 )
 """Meaning the domain cannot express, by class: (class, pattern over the lower-cased text,
 why; a group named ``w``, where it matched, holds the words to name).  An instruction that
@@ -1127,6 +1132,10 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "a tower whose base is blue and whose top is yellow": the ends said as the tower's own
     (re.compile(rf"\bwhose\s+(?:base|bottom)\s+(?:block\s+|cube\s+)?is\s+({COLOR_RE})\b"), r"with \1 at the bottom"),
     (re.compile(rf"\b(?:and\s+)?whose\s+top\s+(?:block\s+|cube\s+)?is\s+({COLOR_RE})\b"), r"and \1 on top"),
+    # "a tower of three where the middle block is yellow": a role said in a clause of the tower's
+    (re.compile(rf"\b(?<=(?:tower|stack)\s)(?:of\s+)?((?:\d+|two|three|four|five|six)\s+(?:(?:blocks?|cubes?)\s+)?)?(?:where|in\s+which)\s+the\s+(middle|center|centre)"
+                rf"\s+(?:block|cube|one)\s+is\s+(?:the\s+)?({COLOR_RE})(?:\s+(?:one|block|cube))?\b"),
+     lambda m: f"{'of ' + m.group(1) if m.group(1) else ''}with {m.group(3)} in the middle"),
     # "with one red block in between" (its ends said): the middle of the structure
     (re.compile(r"\b(with\s+(?:a|an|1|one|the)\s+[a-z]+\s+(?:block|cube))\s+in\s+between\b(?!\s+(?:the|them|those))"), r"\1 in the middle"),
     # "with one red block in the middle": one cube given a role, not a count of the structure
@@ -2057,9 +2066,10 @@ _TASK_THINGS = _GOAL_THINGS + r"|\d+|numbers?|on|two|three|four|five|six|seven|e
 count as the task's."""
 
 TASK_CONTENT_RE = re.compile(
-    r"\b(?:" + _TASK_THINGS + r"|put|place|move|build|make|arrange|set|spell|sort|order|one|it|them|each|every|all|both)\b")
+    r"\b(?:" + _TASK_THINGS + r"|put|place|move|build|make|arrange|set|spell|sort|order|one|it|them|each|every|all|both"
+    r"|layers?|tiers?|storeys?|upper|lower)\b")
 """Words that make a sentence part of the task: cubes, colours, counts, structures, places,
-relations, placement verbs and references.  A sentence with none of them, only fillers and
+the layers of one ("Lower layer: white, gray, white."), relations, placement verbs and references.  A sentence with none of them, only fillers and
 unknown nouns ("My supervisor wants this for the demo.") says nothing of the task: its unknown
 words are no reason to refuse (:func:`rpg.schema.reading._idle_sentence`)."""
 
@@ -2212,9 +2222,11 @@ states an anchored stack of coloured cubes only)."""
 STACK_FREE_PHRASES = re.compile(
     r"\bon\s+top\s+of\s+(?:each\s+other|one\s+another)\b|\b(?:on|onto|upon|over|above)\s+(?:each\s+other|one\s+another)\b"
     r"|\b(?:on|onto)\s+(?:the\s+|a\s+)?(?:[a-z]+\s+)?(?:goal\s+)?patch(?:es)?\b|\b(?:on|onto)\s+the\s+table\b"
-    r"|@region_[a-z_]+|\b(?:on|at|to)\s+the\s+(?:left|right|front|back)\b|\bin\s+any\s+order\b")
+    r"|@region_[a-z_]+|\b(?:on|at|to)\s+the\s+(?:left|right|front|back)\b|\bin\s+any\s+order\b"
+    r"|\b(?:end|ends|ended|wind|winds|wound)\s+up\b")
 """Phrases of a stack instruction that put no cube above another: the stack as a whole ("on
-top of each other"), where it stands ("on the green patch", "on the table", a region)."""
+top of each other"), where it stands ("on the green patch", "on the table", a region), the
+end state ("should end up stacked")."""
 
 CUBE_ORDER_RE = re.compile(r"\b(?:on|onto|upon|atop|above|over|under|below|beneath|underneath|higher|lower|followed|"
                            r"after|before|next|from(?=[^.;]*\bto\b)|starting|ending|beginning|respectively|that|this|listed|given|"
@@ -3293,6 +3305,11 @@ LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      r"\1 "),
     (re.compile(r"\b(?:to|on|at)\s+the\s+(left|right)(?:[\s-]+hand)?\s+side\s+of\b(?!\s+the\s+(?:table|workspace)\b)"),
      r"to the \1 of"),
+    # "left from the black cube", "to the right side from the white cube", "in front to the blue one": a learner's
+    # preposition for the side of a cube (a side of the table is not said so)
+    (re.compile(rf"\b(?:(?:to|on|at)\s+(?:the\s+)?)?(left|right)(?:\s+side)?\s+from\s+(?=(?:the\s+)?(?:(?:{COLOR_RE})\b|it\b))"),
+     r"to the \1 of "),
+    (re.compile(rf"\bin\s+front\s+to\s+(?=(?:the\s+)?(?:(?:{COLOR_RE})\b|it\b))"), "in front of "),
     (re.compile(r"\bon\s+top\s+(?=the\b)"),
      "on top of "),
     # "stack of pink cubes, three pink, on the right": the count said after the cubes, with their colour again

@@ -1202,7 +1202,12 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         if other:  # "top=orange, middle=white, bottom=black, extra=red": a cube of no place (it had gone on top)
             raise ParseError(f"'{other.group(0)}' in \"{original[:80]}\" names a cube with no place in the tower its roles "
                              "say; say where it goes, or use --model")
-        text = text[:said[0].start()] + "from bottom to top: " + ", ".join(roles[r] for r in order) + rest
+        count = re.search(r"\b(?:towers?|stacks?)\s+of\s+(\d+)\b|\b(\d+)[\s-]+(?:blocks?|cubes?)?[\s-]*(?:tall|high)\b", text)
+        if order == ("bottom", "top") and count and int(count.group(1) or count.group(2)) > 2:
+            # "Tower of 3. Base: gray. Top: yellow.": the ends given, the cubes between them free
+            text = text[:said[0].start()] + f"with {roles['bottom']} at the bottom and {roles['top']} on top" + rest
+        else:
+            text = text[:said[0].start()] + "from bottom to top: " + ", ".join(roles[r] for r in order) + rest
     text = lexicon.rewrite(lexicon.TOP_LIST_REWRITES, text)
     if re.search(r"\b(?:rows?|lines?|line\s+up)\b", text):
         text = lexicon.rewrite(lexicon.ROW_ROLE_REWRITES, text)

@@ -712,8 +712,9 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
     if not explicit and not order and listed and not alternating:
         seq = re.findall(rf"\b(?:{COLOR_RE})\b", listed.group(1))
         if re.search(r"\b(?:left to right|right to left|front to back|back to front)\b", f.text) or \
-                len(set(seq)) < len(seq) or THIS_ORDER_RE.search(f.text):
-            # "red, blue, red, blue": a repeated colour only makes sense as an order; "red, green and blue in that order": said
+                (len(set(seq)) < len(seq) and not re.search(r"\bin any order\b", f.text)) or THIS_ORDER_RE.search(f.text):
+            # "red, blue, red, blue": a repeated colour only makes sense as an order, unless "in any order" frees it
+            # ("cyan, cyan, purple, in any order": which cubes, not where); "red, green and blue in that order": said
             explicit = listed
     if alternating and not explicit:
         explicit = re.search(r"(.+)", ", ".join(alternating))
@@ -801,7 +802,10 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
             raise ParseError("a line \"sorted by colour\" names no order of the colours; say it (\"red, green, blue "
                              "from left to right\", \"in rainbow order\") or use --model")
         distinct = list(dict.fromkeys(f.color_list()))
-        n = stated_count(f, default=len(distinct) if len(distinct) >= 2 else 4)
+        # a list with a colour said twice, freed by "in any order" ("cyan, cyan, purple, in any order"): its cubes
+        said = [canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", listed.group(1))] if listed else []
+        said = said if len(set(said)) < len(said) and not alternating else []
+        n = stated_count(f, default=len(said) or (len(distinct) if len(distinct) >= 2 else 4))
         material = material_of(f)
         if material == "mixed" or (material != "colors" and f.has("alternating", "alternate", "alternately")):
             raise ParseError("a line mixing letters and digits in a pattern is beyond the builtin parser; "
@@ -811,6 +815,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
             names = [b.semantic(lab) for lab in labels]
         elif (groups := counted_groups(f)) and sum(k for k, _ in groups) == n:  # "2 red and 2 blue blocks"
             names = [b.cube(c) for k, c in groups for _ in range(k)]
+        elif said and len(said) == n:
+            names = [b.cube(c) for c in said]
         else:
             names = [b.cube(c) for c in (distinct * n if len(distinct) == 1 else colors_for(n, f))]
         middle = re.search(rf"\b({COLOR_RE})\s+(?:block\s+|cube\s+)?(?:is\s+)?(?:in|at)\s+the\s+(?:middle|center|centre)\b", f.text)
