@@ -542,6 +542,9 @@ class _Relation(Predicate):
     axis: ClassVar[int] = 1
     sign: ClassVar[float] = 1.0
     words: ClassVar[str] = ""
+    converse: ClassVar[str] = ""
+    """The relation that holds exactly when this one does with ``a`` and ``b`` swapped (same axis, opposite sign:
+    ``left_of(a, b)`` is ``right_of(b, a)``)."""
 
     def _evaluate(self, state):
         a, b = state[self.a], state[self.b]
@@ -576,6 +579,7 @@ class LeftOf(_Relation):
     axis: ClassVar[int] = 1
     sign: ClassVar[float] = 1.0
     words: ClassVar[str] = "left of"
+    converse: ClassVar[str] = "right_of"
 
 
 @dataclass(frozen=True, repr=False)
@@ -590,6 +594,7 @@ class RightOf(_Relation):
     axis: ClassVar[int] = 1
     sign: ClassVar[float] = -1.0
     words: ClassVar[str] = "right of"
+    converse: ClassVar[str] = "left_of"
 
 
 @dataclass(frozen=True, repr=False)
@@ -604,6 +609,7 @@ class InFrontOf(_Relation):
     axis: ClassVar[int] = 0
     sign: ClassVar[float] = -1.0
     words: ClassVar[str] = "in front of"
+    converse: ClassVar[str] = "behind"
 
 
 @dataclass(frozen=True, repr=False)
@@ -618,6 +624,7 @@ class Behind(_Relation):
     axis: ClassVar[int] = 0
     sign: ClassVar[float] = 1.0
     words: ClassVar[str] = "behind"
+    converse: ClassVar[str] = "in_front_of"
 
 
 @dataclass(frozen=True, repr=False)

@@ -244,9 +244,11 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
             out.append(Mention(m.group(0), "bare place", region=BARE_PLACES[m.group("side")]))
         elif m.group("side") in SIDE_RELATIONS:  # "a line of red, green and blue with blue on the right": an end
             said = before[before.rfind("with"):]
-            role = re.findall(rf"\b({colors})\b", said)  # the cube said last before the side ("..., and blue on the right")
+            # the cube said last before the side ("..., and blue on the right"; "with 3 on the far left": a label)
+            role = re.findall(rf"\b({colors}|\d|[a-z](?=\s+(?:is\s+|as\s+)?$))\b", said)
             out.append(Mention(said.strip() + " " + m.group(0), "end role",
-                               color=canon(role[-1]) if role else None, region=m.group("side")))
+                               color=(role[-1] if re.fullmatch(r"\d|[a-z]", role[-1]) else canon(role[-1])) if role else None,
+                               region=m.group("side")))
     for m in re.finditer(rf"(?<!,\s)(?<!and\s)(?<!or\s)\b(?:all\s+(?:of\s+)?(?:the\s+)?|the\s+)(?P<c>{colors})\s+"
                          r"(?:cubes|blocks|ones|bricks|boxes)\b",
                          text):  # "the pink cubes", "all red cubes": several of that colour (a listed "red and blue blocks" is not)
@@ -565,7 +567,11 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                                          "colour or label)")
             record.append({"mention": m.words, "kind": "place", "consumed_by": ", ".join(carried)})
         elif m.kind == "end role":
-            ends = _ends_at(goal, m.region, {a.name: a.color for a in schema.assets}, m.color)
+            said_by = {a.name: a.color or (a.label or "").lower() or None for a in schema.assets}
+            ends = _ends_at(goal, m.region, said_by, m.color)
+            if not ends and m.color and _ends_at(goal, m.region, said_by, None):
+                raise UnaccountedMention(f"it contradicts itself: '{m.words}' puts {m.color} at the {m.region} end and the "
+                                         "rest of it puts another cube there (say the order once)")
             if not ends:
                 raise UnaccountedMention(f"'{m.words}' puts a cube at the {m.region} end and the task read leaves "
                                          "that end free (say the whole order, e.g. 'from left to right: red, green, blue')")

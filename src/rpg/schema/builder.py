@@ -111,7 +111,12 @@ class Builder:
     # -- result ----------------------------------------------------------------
     def schema(self, name: str, paraphrases: list[str] | None = None) -> TaskSchema:
         self.finalize_names()
-        goal = self.preds[0] if len(self.preds) == 1 else And(self.preds)
+        preds: list = []
+        for p in self.preds:  # "green left of yellow, so yellow is right of green": one relation said twice, kept once
+            conv = getattr(p, "converse", "")
+            if not (conv and any(q.name == conv and q.object_names() == p.object_names()[::-1] for q in preds)):
+                preds.append(p)
+        goal = preds[0] if len(preds) == 1 else And(preds)
         patches = {a.name for a in self.assets if a.kind == "goal_patch"}
         summary = "; ".join(self.summary) or goal.describe()
         return TaskSchema(

@@ -565,6 +565,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "names a piece of a shape the domain does not have (a triangle, prism or wedge): it has only 5 cm cubes "
      "(coloured, optionally labelled) and flat coloured patches; a pyramid is built of cubes (e.g. \"a pyramid of 3 "
      "cubes\")"),
+    ("size", rf"\b(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge|giant|mini)\s+"
+             rf"(?:{'|'.join(COLORS)}|grey)(?=\s*(?:$|[,.;!?]|(?:on|onto|under|below|next|beside|behind|to|in|at|and|one)\b))",
+     "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
 )
 """Meaning the domain cannot express, by class: (class, pattern over the lower-cased text,
 why; a group named ``w``, where it matched, holds the words to name).  An instruction that
@@ -1075,6 +1078,10 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b(from\s+(left|right|front|back)\s+to\s+(left|right|front|back):\s+[^.;]*?\bthen\s+(?:the\s+)?(?:{COLOR_RE})"
                 r"(?:\s+(?:cube|block|one))?)\s+(?:on|at)\s+the\s+(?:far\s+|very\s+)?(left|right|front|back)(?:\s+end)?\b(?=\s*(?:[.;!]|$))"),
      lambda m: m.group(1) if m.group(4) == m.group(3) else m.group(0)),
+    # "the leftmost block in the row should be red, then blue, then the rightmost is green": the far end said as the last
+    (re.compile(rf"(\bfrom\s+(?:left|right|front|back)\s+to\s+(?P<b>left|right|front|back):\s+[^.;:]*?),?\s+(?:and\s+)?then\s+"
+                rf"the\s+(?P=b)(?:most)?(?:\s+(?:one|block|cube))?\s+(?:is|should\s+be|must\s+be)\s+(?P<c>{COLOR_RE})\b"),
+     r"\1, then \g<c>"),
     # "stand left beside the gray cube" (German "links neben"): on that side of it ("right next to" is only "next to")
     (re.compile(rf"\b(left)\s+(?:beside|next\s+to|alongside)\s+(?=the\s+(?:{COLOR_RE})\b)"), r"to the \1 of "),
     # "well away from", "well behind": the degree adds nothing a qualitative relation could judge
@@ -3228,6 +3235,20 @@ def _two_corners(m: re.Match) -> str:
     return f"{m.group('v')} " + " and ".join(f"{cube} in the {c} corner" for c in corners)
 
 
+def _towers_listed(m: re.Match) -> str:
+    """"Three towers, each two cubes tall: red on blue, green on yellow, white on black." -> the towers themselves, when
+    as many are listed as counted, each as tall as said (otherwise unchanged: the readers decide)."""
+    towers = [t for t in re.split(r"\s*(?:,\s*(?:and\s+)?|;\s*|\s+and\s+)", m.group("list").strip()) if t]
+    want = int(NUMBER_WORDS.get(m.group("n").lower(), m.group("n")))
+    tall = m.group("h") and int(NUMBER_WORDS.get(m.group("h").lower(), m.group("h")))
+    colors = re.findall(rf"\b(?:{COLOR_RE})\b", m.group("list"))
+    if len(towers) != want or any(tall and len(re.findall(r"\bon\b", t)) != tall - 1 for t in towers) \
+            or len(set(colors)) != len(colors):  # a colour said twice: which cube is which is the towers' own reading
+        return m.group(0)
+    verb = m.group("v") or ("" if m.string[:m.start()].strip(" ,;:") else "put")  # "I want three towers: ...": the want kept
+    return f"{verb} ".lstrip() + ", ".join(towers[:-1]) + " and " + towers[-1]
+
+
 _ROW_ROLE = r"(?:the\s+)?(?P<r{i}>left(?:most)?|middle|cent(?:er|re)|right(?:most)?)(?:\s+(?:one|cube|block))?\s*[:=]\s*(?P<c{i}>" + COLOR_RE + r")"
 
 ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
@@ -3246,9 +3267,16 @@ ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 r"(?:two|2)\s+(?P<s>back|front|left|right)\s+corners\b"),
      _two_corners),
     # "Make two towers: one of three green cubes on the left, one of three red cubes on the right": each said in turn
-    (re.compile(r"(?i)\b(?P<v>make|build|create|form|stack|line\s+up)\s+(?:two|2)\s+(?P<s>tower|stack|row|line|pile)s\s*:\s*one\s+of\s+"
-                r"(?P<a>[^,;:.]+?)\s*[,;]\s*(?:and\s+)?(?:one|the\s+other)\s+of\s+(?P<b>[^,;:.]+?)(?=\s*(?:[.!]|$))"),
+    # ("make two separate piles: one with the brown and pink blocks, one with the white and cyan blocks")
+    (re.compile(r"(?i)\b(?P<v>make|build|create|form|stack|line\s+up)\s+(?:two|2)\s+(?:separate\s+)?(?P<s>tower|stack|row|line|pile)s\s*:"
+                r"\s*one\s+(?:of|with)\s+(?P<a>[^,;:.]+?)\s*[,;]\s*(?:and\s+)?(?:one|the\s+other)\s+(?:of|with)\s+(?P<b>[^,;:.]+?)(?=\s*(?:[.!]|$))"),
      lambda m: f"{m.group('v')} a {m.group('s')} of {m.group('a')} and a {m.group('s')} of {m.group('b')}"),
+    # "Three towers, each two cubes tall: red on blue, green on yellow, white on black.": each tower said in turn
+    (re.compile(rf"(?i)(?:\b(?P<v>make|build|create|form|stack)\s+)?\b(?P<n>\d+|{COUNT_WORD_RE})\s+(?:towers|stacks)"
+                rf"(?:\s*,?\s*each\s+(?:of\s+)?(?P<h>\d+|{COUNT_WORD_RE})\s+(?:cubes?\s+|blocks?\s+)?(?:tall|high))?\s*:\s*"
+                rf"(?P<list>(?:{COLOR_RE})(?:\s+on\s+(?:{COLOR_RE}))+(?:\s*(?:,\s*(?:and\s+)?|;\s*|\s+and\s+)(?:{COLOR_RE})"
+                rf"(?:\s+on\s+(?:{COLOR_RE}))+)+)(?=\s*(?:[.!]|$))"),
+     _towers_listed),
     # "put any block on top of the red one": a cube of any colour (one more, whichever)
     (re.compile(r"(?i)\b(put|place|set|stack)\s+any\s+(cube|block)\b(?=\s+(?:on|onto|next\s+to|beside|behind|in\s+front\s+of|to\s+the))"),
      r"\1 a \2"),
@@ -3296,6 +3324,11 @@ LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      "next to"),
     (re.compile(r"\bfollowed\s+by\b|\btopped\s+(?:off\s+)?(?:with|by)\b"),
      "then"),
+    # "first the orange, after the purple, last the pink": a list said by its steps (a learner's "after" for "then")
+    (re.compile(rf"\bfirst\s+(?:the\s+)?({COLOR_RE})(?:\s+(?:cube|block|one))?\s*,\s*(?:after|then|next|afterwards)\s+(?:the\s+)?"
+                rf"({COLOR_RE})(?:\s+(?:cube|block|one))?\s*,?\s+(?:and\s+)?(?:last|lastly|finally|at\s+last)\s+(?:the\s+)?({COLOR_RE})"
+                r"(?:\s+(?:cube|block|one))?\b"),
+     r"\1, then \2, then \3"),
     # "and finish with a white cube at the top": the last of a sequence
     # only after a sequence ("add yellow, then orange, and finish with white")
     (re.compile(r"\b(?:(and)\s+)?(?:finish|end)(?:\s+(?:it|them|the\s+(?:tower|stack|row|line)))?(?:\s+off)?\s+with\b"),
@@ -3310,6 +3343,20 @@ LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b(?:(?:to|on|at)\s+(?:the\s+)?)?(left|right)(?:\s+side)?\s+from\s+(?=(?:the\s+)?(?:(?:{COLOR_RE})\b|it\b))"),
      r"to the \1 of "),
     (re.compile(rf"\bin\s+front\s+to\s+(?=(?:the\s+)?(?:(?:{COLOR_RE})\b|it\b))"), "in front of "),
+    # "put the red cube and the blue cube next to each other in the front half": the pair's place, both cubes in it (a
+    # cube picked by where it stands now is no task's)
+    # ("next to the blue cube on the left" may be the blue cube's left: only a half or a side "of the table" is the pair's)
+    (re.compile(r"\b((?:next\s+to|beside)\s+(?:each\s+other|one\s+another)|side\s+by\s+side)\s+(?=(?:in|at|on)\s+the\s+"
+                r"(?:front|back|rear|left|right)(?:\s+(?:half|side|part))?(?:\s+of\s+the\s+(?:table|workspace))?\s*(?:[.,;!]|$))"
+                rf"|\b((?:next\s+to|beside)\s+the\s+(?:{COLOR_RE})\s+(?:cube|block))\s+(?=(?:in|at|on)\s+the\s+(?:front|back|rear|left|right)"
+                r"(?:\s+half|(?:\s+(?:side|part|edge))?\s+of\s+the\s+(?:table|workspace))\s*(?:[.,;!]|$))"),
+     lambda m: f"{m.group(1) or m.group(2)}, both "),
+    (re.compile(r"\b((?:in|at|on)\s+the\s+(?:front|back|rear|left|right)(?:\s+(?:half|side|part))?(?:\s+of\s+the\s+(?:table|workspace))?)"
+                r"\s*,?\s+(next\s+to\s+(?:each\s+other|one\s+another)|side\s+by\s+side|beside\s+(?:each\s+other|one\s+another))"
+                r"(?=\s*(?:[.,;!]|$))"),
+     r"\2, both \1"),
+    # "with 3 as the leftmost" ("leftmost" read "left"): the cube at that end of the row
+    (re.compile(r"\bas\s+the\s+(left|right)(?:\s+(?:one|cube|block|end))?(?=\s*(?:[,.;!]|$|and\b))"), r"on the far \1"),
     (re.compile(r"\bon\s+top\s+(?=the\b)"),
      "on top of "),
     # "stack of pink cubes, three pink, on the right": the count said after the cubes, with their colour again

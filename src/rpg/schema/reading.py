@@ -1528,7 +1528,7 @@ def _role_clauses(m: re.Match) -> str:
 _LINE_END = (r"(?:the\s+|an?\s+|1\s+)?(?P<{g}>" + COLOR_RE + r")(?:\s+(?:cube|block|one))?\s+(?:is\s+|goes\s+|sits\s+|stands\s+)?"
              r"(?:(?:on|at|to)\s+the\s+(?:far|very|extreme)\s+(?P<{g}s>left|right)(?:\s+end)?|(?:on|at)\s+the\s+(?P<{g}e>left|right)\s+end"
              r"|(?P<{g}m>left|right)most)")
-_LINE_MIDDLE = (r"(?:(?P<n>\d+|" + lexicon.COUNT_WORD_RE + r"|an?|the)\s+)?(?:(?P<m>" + COLOR_RE + r")\s+)?(?P<noun>cubes?|blocks?|ones?)?\s*"
+_LINE_MIDDLE = (r"(?:(?P<n>\d+|" + lexicon.COUNT_WORD_RE + r"|an?|the)\s+)?(?:(?P<m>" + COLOR_RE + r")\b)?(?:\s*\b(?P<noun>cubes?|blocks?|ones?))?"
                 r"(?<=\w)\s+(?:in\s+between|between\s+them|in\s+the\s+middle)")
 _LINE_ROLES_RE = re.compile(rf"(?:\s*[:;,]\s*|\s+with\s+){_LINE_END.format(g='a')}\s*,?\s+(?:and\s+)?(?:with\s+)?"
                             rf"{_LINE_END.format(g='b')}\s*,?\s+(?:and\s+)?(?:with\s+)?{_LINE_MIDDLE}\b")
@@ -1594,8 +1594,13 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
      r"make a \g<s> from left to right: \g<e>, \g<m>, \g<e>"),
     (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(?:an?\s+|the\s+)?(?P<m>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+in\s+the\s+(?:middle|center"
                 rf"|centre)\s*,?\s+(?:and\s+)?(?:an?\s+|the\s+)?(?P<e>{COLOR_RE})(?:\s+(?:cubes?|blocks?|ones?))?\s+(?:at|on)\s+"
-                r"(?:each|both|either|the\s+two|2)\s+ends?\b"),
+                r"(?:each|both|either|the\s+two|2)\s+(?:ends?|sides?(?:\s+of\s+(?:it|them))?)\b"),
      r": from left to right: \g<e>, \g<m>, \g<e>"),
+    # "the black cube goes in the middle of a row of three, with a white block on each side of it": the middle said first
+    (re.compile(rf"\b(?:the\s+|an?\s+)?(?P<m>{COLOR_RE})\s+(?:cube|block)\s+(?:goes\s+|is\s+|sits\s+|stands\s+|(?:should|must)\s+be\s+)?"
+                r"in\s+the\s+(?:middle|center|centre)\s+of\s+a\s+(?P<s>row|line)\s+of\s+3\s*,?\s+(?:with\s+)?(?:an?|1|one)\s+"
+                rf"(?P<e>{COLOR_RE})\s+(?:cube|block)\s+(?:at|on)\s+(?:each|both|either)\s+(?:ends?|sides?)(?:\s+of\s+(?:it|them))?\b"),
+     r"make a \g<s> from left to right: \g<e>, \g<m>, \g<e>"),
     # "build a stack of two blue cubes and put the green cube on top", "stack 2 blue cubes with a green one on top":
     # the counted cubes, then the one on top (the count had reached only one of them)
     (re.compile(rf"\b(?:(?:build|make|create|form)\s+a\s+(?:{TOWER_NOUNS})\s+of|stack)\s+(?:the\s+)?(\d+)\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)"

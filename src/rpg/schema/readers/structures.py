@@ -426,6 +426,13 @@ def recognize_grid(f: Features, b: Builder) -> bool:
     n = r * c
     if n > C.MAX_OBJECTS:
         raise ParseError(f"a {r}x{c} grid needs {n} cubes; the most a task holds is {C.MAX_OBJECTS}")
+    rows_said = re.search(r"\b(?:top|bottom|front|back|rear|first|second|third|middle|left|right|near|far|upper|lower)\s+"
+                          r"(?:rows?|columns?|lines?|layers?)\b", f.text)
+    if rows_said and len(set(f.color_list())) > 1:  # the goal checks a lattice, any cube at any site: the rows' colours
+        # would be dropped (a goal weaker than the words)
+        raise ParseError(f"'{rows_said.group(0)}' gives a row of the grid its own cubes, and rpg's grid goal checks the "
+                         "lattice with any cube at any site; say the grid without row colours, or the rows as lines "
+                         "(e.g. \"a row of two green cubes with a row of two orange cubes behind it\"), or use --model")
     names = fill_structure(f, b, n, material_of(f), ordering_of(f), lambda ns: grid_layout(ns, r, c))
     b.preds.insert(0, Grid(tuple(names), r, c))
     b.primitives += ["arrange"]
