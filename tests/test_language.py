@@ -4655,3 +4655,37 @@ def test_a_grid_whose_rows_are_given_colours_is_refused_not_weakened():
 ])
 def test_a_row_said_by_its_ends_middle_and_steps(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("stack the green and white blocks, doesnt matter which is on top", ["stack(green,white)"]),
+    ("stack the green and white blocks, I don't mind which one goes on top", ["stack(green,white)"]),
+    ("For this episode the purple block has to finish on top of the white block.", ["stack(white,purple)"]),
+    ("My goal: move the gray block to the front of the table and leave it there.", ["in_region(gray,front)"]),
+    ("The blue block belongs on the yellow patch.", ["on_patch(blue,patch:yellow)"]),
+    ("Goal: the letter blocks spell out RED from left to right",
+     ["line[left_to_right](R,E,D)", "reads(R,E,D;direction=left_to_right,face=up,text=RED)"]),
+    ("I reckon the task is a tower: brown on the bottom, then orange, then yellow up top.", ["stack(brown,orange,yellow)"]),
+    ("Great question! What you want is a pyramid: two pink cubes on the bottom and one white cube on top.",
+     ["pyramid(pink,pink|white)"]),
+    ("Thanks for your patience. The task you are describing is three cubes, red, white and blue, in a line from left to "
+     "right. Happy to help further.", ["line[left_to_right](red,white,blue)"]),
+])
+def test_freedom_end_states_and_replies_around_a_task_are_read(text, expected):
+    assert meaning(parse(text)) == expected
+    if "doesnt" in text or "mind" in text:
+        assert type(parse(text).goal_predicate()).__name__ == "UnorderedStack"
+
+
+def test_a_colour_word_spelled_is_a_word_but_a_cube_of_that_colour_still_needs_a_place():
+    with pytest.raises(ParseError, match="red cube"):
+        parse("spell RED with the letter blocks from left to right and put the red cube behind them")
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("move blue blok to rigth side of table", ["in_region(blue,right)"]),
+    ("Keep the green cube besides the white cube.", ["next_to(green,white)"]),
+    ("Please keep the cyan cube in front side of the purple cube.", ["in_front_of(cyan,purple)"]),
+])
+def test_misspellings_and_a_learner_s_prepositions(text, expected):
+    assert meaning(parse(text)) == expected

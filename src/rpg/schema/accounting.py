@@ -673,7 +673,9 @@ def account_named(text: str, schema: TaskSchema) -> list[dict]:
         UnaccountedMention: the first mention with no part in the schema.
     """
     placed = set(schema.goal_predicate().object_names()) | {n for s in schema.initial_state.structures for n in s}
-    missing = sorted({c for _, c in color_mentions(text)}
+    spelled = {p.text.lower() for p in schema.goal_predicate().walk() if isinstance(p, P.Reads)}  # "spell RED": a word
+    missing = sorted({c for i, c in color_mentions(text) if not (
+        re.match(r"[a-z]+", text[i:]).group(0) in spelled and re.search(r"\b(?:spell\w*|reads?|read\s+as|words?)\s+(?:out\s+)?['\"]?$", text[:i]))}
                      - {a.color for a in schema.assets if a.name in placed or a.kind == "goal_patch"})
     if missing:  # no cube of that colour, or one the goal and rho_0 leave where it falls
         raise UnaccountedMention(f"the {', '.join(missing)} cube(s) it names have no place in that task")

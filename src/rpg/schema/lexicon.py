@@ -73,6 +73,7 @@ TYPOS: dict[str, str] = {
     "towr": "tower", "pyramd": "pyramid", "rite": "right", "da": "the", "teh": "the", "ontop": "on top",
     "insted": "instead", "instaed": "instead", "isntead": "instead", "mak": "make", "midle": "middle", "middel": "middle",
     "nxt": "next", "mor": "more", "swtich": "switch", "swich": "switch", "swithc": "switch", "revese": "reverse", "reverce": "reverse",
+    "blok": "block", "bloks": "blocks", "rigth": "right", "rihgt": "right", "lefft": "left", "cubs": "cubes",
 }
 """Misspellings of a word of the vocabulary, each read as that word (curated, never a guess; the
 steering corrects an edit's words with this table before reading it)."""
@@ -137,7 +138,7 @@ SYNONYMS: dict[str, str] = {
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
     "uppermost": "top", "lowermost": "bottom", "topmost": "top", "bottommost": "bottom", "upon": "on", "right-hand": "right", "left-hand": "left",
     "stays": "is", "remains": "is", "bot": "robot", "midpoint": "center", "tower's": "tower", "within": "in", "inside": "in", "quadrant": "corner",
-    "summit": "top", "apex": "top", **TYPOS, **ABBREVIATIONS,
+    "summit": "top", "apex": "top", "belongs": "goes", "belong": "go", **TYPOS, **ABBREVIATIONS,
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
@@ -1294,7 +1295,8 @@ ANY_ORDER_RE = re.compile(
     r"|(?:either|any|whichever)\s+(?:one\s+|1\s+|cube\s+|block\s+)?(?:on\s+top|at\s+the\s+(?:top|bottom))(?:\s+(?:is\s+)?(?:fine|ok(?:ay)?))?"
     r"|whichever\s+way(?:\s+(?:is\s+)?(?:fine|round|around))?"
     r"|(?:it\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\s+(?:in\s+)?(?:which|what)\s+order"
-    r"|(?:it\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\s+which\s+(?:one|cube|block|colou?r)(?:'s|\s+is|\s+goes|\s+ends\s+up|\s+sits)"
+    r"|(?:(?:it\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter|(?:i\s+|we\s+)?(?:do\s*n[o']?t|don't|do\s+not)\s+(?:care|mind))"
+    r"\s+which(?:\s+(?:one|cube|block|colou?r))?(?:'s|\s+is|\s+goes|\s+ends\s+up|\s+sits)"
     r"\s+(?:at\s+the\s+(?:bottom|top|base)|on\s+(?:the\s+)?(?:top|bottom)|first|last)"
     r"|(?:in\s+)?(?:which|what)\s+order\s+(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter)\b\)?")
 """Words that leave the cubes' order free ("stack them in any order", ", any order is fine",
@@ -1381,9 +1383,11 @@ SMALL_TALK_RE = re.compile(
     r"\b(?:i\s+)?hope\s+(?:you(?:'re|\s+are)|you\s+have\s+been|all\s+is|it(?:'s|\s+is))\s+(?:doing\s+|going\s+)?"
     r"(?:well|good|great|fine|ok(?:ay)?)(?:\s+today)?\s*[.!,]?"
     r"|[,.!]?\s*\b(?:thanks|thank\s+you|cheers)\s+(?:a\s+(?:bunch|lot|million|ton)|heaps|loads|in\s+advance)\b\s*[.!]?"
-    r"|\b(?:ok(?:ay)?|sure|will\s+do|roger|got\s+it)[,!.]?\s+(?:i'?m\s+)?on\s+it\b\s*[.!]*")
+    r"|\b(?:ok(?:ay)?|sure|will\s+do|roger|got\s+it)[,!.]?\s+(?:i'?m\s+)?on\s+it\b\s*[.!]*"
+    r"|(?:^|(?<=[.!?]\s))(?:(?:i'?m|i\s+am|we'?re|we\s+are)\s+)?(?:always\s+)?(?:happy|glad)\s+to\s+(?:help|assist)"
+    r"(?:\s+(?:further|more|again|anytime|any\s+time))?\s*[.!]*(?=\s|$)")
 """Small talk that says nothing of the task ("Hope you're doing well.", "Thanks a bunch!",
-"thanks in advance"): dropped (:func:`rpg.schema.reading.normalize`)."""
+"thanks in advance", "Happy to help further."): dropped (:func:`rpg.schema.reading.normalize`)."""
 
 MATERIAL_SAID_RE = re.compile(r"\b(?:letter|digit|number|alphabet|lettered|numbered|label(?:l?ed)?)\s+(?:cubes?|blocks?|bricks?)\b")
 """Cubes named by their material ("2 letter cubes", "the digit blocks"): the task must hold
@@ -2866,6 +2870,13 @@ OUTCOME_VERB_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 """A motion said by its outcome ("cover the green patch with the red block", "slide it until it touches ..."): the relation it ends in."""
 
 GOAL_FRAME_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "I reckon the task is a tower: ...", "What you want is a pyramid: ...", "The task you are describing is ...",
+    # "For your case the goal would be ...": the task said with an opinion or a reply around it
+    (re.compile(r"(?:^|(?<=[.!?;]\s))(?:i\s+(?:think|reckon|guess|believe|suppose|figure)|(?:for|in)\s+(?:your|this)\s+case\s*,?)\s+"
+                r"(?=(?:the|your|our)\s+(?:task|goal|target|objective)\b)"), ""),
+    (re.compile(r"(?:^|(?<=[.!?;]\s))what\s+(?:you|we|i)\s+(?:want|need|are\s+after|are\s+looking\s+for)\s+is\s+(?=an?\s)"), "the task is "),
+    (re.compile(r"\b(the\s+(?:task|goal))\s+(?:you\s+are|you're)\s+(?:describing|asking\s+(?:for|about)|after|looking\s+for)\s+(?=is\b)"),
+     r"\1 "),
     (re.compile(r"^\s*(?:about|regarding|re|concerning)\s+(?=the\s+(?:tower|stack|row|line|pyramid|wall|grid|circle)\s*:)"),
      ""),
     # "three cubes of arbitrary colour"
@@ -3324,6 +3335,10 @@ LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      "next to"),
     (re.compile(r"\bfollowed\s+by\b|\btopped\s+(?:off\s+)?(?:with|by)\b"),
      "then"),
+    # "the purple block has to finish on top of the white block": where it ends up; "... and leave it there": the same end
+    (re.compile(r"\b(?:finish|finishes|finished|finishing)\s+(?=(?:on|in|at|next\s+to|beside|behind|under|below|above|inside|left|right"
+                r"|to\s+the|in\s+front)\b)"), "end up "),
+    (re.compile(r"\s*,?\s+and\s+(?:then\s+)?leave\s+(?:it|them)\s+(?:there|that\s+way|like\s+that)(?=\s*(?:[.!;]|$))"), ""),
     # "first the orange, after the purple, last the pink": a list said by its steps (a learner's "after" for "then")
     (re.compile(rf"\bfirst\s+(?:the\s+)?({COLOR_RE})(?:\s+(?:cube|block|one))?\s*,\s*(?:after|then|next|afterwards)\s+(?:the\s+)?"
                 rf"({COLOR_RE})(?:\s+(?:cube|block|one))?\s*,?\s+(?:and\s+)?(?:last|lastly|finally|at\s+last)\s+(?:the\s+)?({COLOR_RE})"
@@ -3342,7 +3357,9 @@ LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # preposition for the side of a cube (a side of the table is not said so)
     (re.compile(rf"\b(?:(?:to|on|at)\s+(?:the\s+)?)?(left|right)(?:\s+side)?\s+from\s+(?=(?:the\s+)?(?:(?:{COLOR_RE})\b|it\b))"),
      r"to the \1 of "),
-    (re.compile(rf"\bin\s+front\s+to\s+(?=(?:the\s+)?(?:(?:{COLOR_RE})\b|it\b))"), "in front of "),
+    (re.compile(rf"\bin\s+(?:the\s+)?front\s+(?:side\s+)?(?:to|of)\s+(?=(?:the\s+)?(?:(?:{COLOR_RE})\b|it\b))"), "in front of "),
+    # "Keep the green cube besides the white cube.": beside it ("besides that, ..." adds, and stays)
+    (re.compile(rf"\bbesides\s+(?=the\s+(?:{COLOR_RE})\s+(?:cube|block|one)\b)"), "beside "),
     # "put the red cube and the blue cube next to each other in the front half": the pair's place, both cubes in it (a
     # cube picked by where it stands now is no task's)
     # ("next to the blue cube on the left" may be the blue cube's left: only a half or a side "of the table" is the pair's)
