@@ -461,7 +461,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|\b(?:i|you|we)(?:'m|'re|\s+am|\s+are)\s+(?:holding|touching)\b|\b(?:in|from)\s+(?:my|your|the\s+robot's)\s+(?:hand|gripper)\b"
                   r"|\b(?:again|undo|restore|original(?:ly)?|previous(?:ly)?|remaining|as\s+(?:before|it\s+was|they\s+were))\b"
                   r"|\b(?:as|like)\s+(?:last\s+time|yesterday|the\s+last\s+(?:one|time)|before|earlier|previously|we\s+did|you\s+did)\b"
-                  r"|\bthe\s+rest\b|\bwhere\s+(?:it|they|the\s+(?:[a-z]+\s+){0,2}?(?:blocks?|cubes?|ones?))\s+(?:was|were|used\s+to\s+be|started|began)\b"
+                  r"|(?<!leave\s)(?<!keep\s)\bthe\s+rest\b(?!\s+(?:as\s+(?:it\s+is|is|they\s+are)|where\s+they\s+are|in\s+place|alone|untouched)"
+                  r"\s*[.!;]?\s*$)|\bwhere\s+(?:it|they|the\s+(?:[a-z]+\s+){0,2}?(?:blocks?|cubes?|ones?))\s+(?:was|were|used\s+to\s+be|started|began)\b"
                   r"|\bthe\s+same\s+(?:order|sequence|positions?|places?|spots?)\b"
                   r"|\b(?:blocks?|cubes?|ones?|place|position|spot|patch)\s+(?:that\s+|which\s+)?(?:it|they)\s+(?:was|were|had\s+been|started)\s+(?:on|in|at)\b"
                   r"|\b(?:closest|nearest|farthest|furthest)\s+to\s+(?:you|me|us|the\s+(?:robot|camera|gripper|viewer))\b"
@@ -3242,7 +3243,7 @@ def _two_corners(m: re.Match) -> str:
     the back right corner"."""
     side = m.group("s")
     corners = [f"{side} left", f"{side} right"] if side in ("back", "front") else [f"back {side}", f"front {side}"]
-    cube = f"a {m.group('c')}{m.group('n')}"
+    cube = f"a {m.group('c') or ''}{m.group('n')}"  # (no colour: two cubes of one colour, either in either corner)
     return f"{m.group('v')} " + " and ".join(f"{cube} in the {c} corner" for c in corners)
 
 
@@ -3272,9 +3273,8 @@ ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"(?i)^" + _ROW_ROLE.format(i=1) + r"\s*[,;.]\s*" + _ROW_ROLE.format(i=2) + r"\s*[,;.]\s*" + _ROW_ROLE.format(i=3)
                 + r"(?=\s*[.!]?\s*$)"),
      _row_roles),
-    # "put one blue cube in each of the two back corners": one in each of those two corners (with a colour: two cubes of
-    # colours nobody said would each be demanded in one corner)
-    (re.compile(rf"(?i)\b(?P<v>put|place|set)\s+(?:one|a|1)\s+(?P<c>(?:{COLOR_RE})\s+)(?P<n>cube|block)\s+(?:in|into|at)\s+each\s+of\s+the\s+"
+    # "put one blue cube in each of the two back corners": one in each of those two corners
+    (re.compile(rf"(?i)\b(?P<v>put|place|set)\s+(?:one|a|1)\s+(?P<c>(?:{COLOR_RE})\s+)?(?P<n>cube|block)\s+(?:in|into|at)\s+each\s+of\s+the\s+"
                 r"(?:two|2)\s+(?P<s>back|front|left|right)\s+corners\b"),
      _two_corners),
     # "Make two towers: one of three green cubes on the left, one of three red cubes on the right": each said in turn

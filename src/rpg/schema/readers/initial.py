@@ -64,6 +64,23 @@ FROM_START_RE = re.compile(
 """A start said as the scene a goal starts from ("From a start where blue sits on yellow, move the
 blue cube onto the red patch"): read as "Initially ... . <goal>" (its tower had been read as the goal)."""
 
+_CHAIN_SAID = rf"(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:(?:\s+(?:stacked\s+|sitting\s+|resting\s+)?(?:on\s+top\s+of|on|atop)\s+|-on-)(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?)+"
+FROM_STRUCTURE_RE = re.compile(
+    rf"(?i)^\s*(?:(?:(?:starting|beginning)\s+)?from|(?:starting|beginning)\s+with)\s+(?:(?:(?:a|the)\s+(?:tower|stack|column)\s+(?:of\s+)?)?"
+    rf"(?P<fact>{_CHAIN_SAID})|(?:a|the)\s+(?P<fact3>(?:{COLOR_RE})(?:-on-(?:{COLOR_RE}))+)\s+(?:tower|stack|column))\s*[,;:]\s*(?:then\s+)?(?P<goal>.+)$"
+    rf"|^\s*with\s+(?P<fact2>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:stacked|sitting|resting|starting)\s+(?:on\s+top\s+of|on|atop)"
+    rf"\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?)\s*[,;]\s*(?:then\s+)?(?P<goal2>(?:put|place|move|set|take|bring|stack|unstack|slide"
+    r"|push|lift|lay|arrange|line)\b.+)$")
+"""A start said as the structure or the state a goal starts from ("from the tower of pink on cyan, put pink next to
+the white block", "starting with red on blue, ...", "with the red cube stacked on the blue cube, move ..."): read as
+"Initially ... . <goal>" (its tower had been read as part of the goal: silently wrong)."""
+
+
+def _from_structure(m: re.Match) -> str:
+    fact = (m.group("fact") or m.group("fact2") or m.group("fact3")).replace("-on-", " on ")
+    return f"Initially {fact}. {m.group('goal') or m.group('goal2')}"
+
+
 START_STRUCTURE_RE = re.compile(r"(?i)^\s*(?:the\s+)?(?:initial|starting|start|original)\s+(tower|stack|column)\s*(?:is|:|-|\u2014)\s*"
                                 r"(?=(?:the\s+)?(?:" + COLOR_RE + r")\b)")
 """A start said as the structure the episode starts with ("The initial tower is red, blue, green from
@@ -169,7 +186,9 @@ def _facts(content: str) -> list[tuple[str, ...]] | None:
     towers = [m.group(0).strip() for m in _TOWER_IN_RE.finditer(content)]
     content = _TOWER_IN_RE.sub(" , ", content)
     for fact in towers + re.split(r"\s*(?:[,;]\s*(?:and\s+|while\s+)?|\s+and\s+|\s+while\s+)\s*", content.strip(" .:")):
-        fact = fact.strip()
+        fact = re.sub(r"(?i)^\s*(?:the|a|one)\s+(?:tower|stack|column)\s+(?:(?:is|was)\s+(?=(?:the\s+)?(?:" + COLOR_RE + r")\b)"
+                      r"|of\s+(?=(?:" + COLOR_RE + r")\s+on\b))", "", fact.strip())  # "the tower is red on blue", "a stack of pink on
+        # cyan": the chain
         if not fact or _IDLE_FACT_RE.match(fact):
             continue
         tower = _TOWER_RE.match(fact)
@@ -258,10 +277,12 @@ def _merged(stacks: list[tuple[str, ...]]) -> list[tuple[str, ...]] | None:
 
 _TAKEN = rf"the\s+(?:{COLOR_RE}|(?-i:[A-Z])|\d)(?:\s+(?:one|cube|block))?"
 _TAKE_OFF_RE = re.compile(
-    rf"(?i)^\s*(?:then\s+)?(?:take|lift|remove|pick)\s+(?:(?P<a>{_TAKEN})\s+off|off\s+(?P<b>{_TAKEN}))"
-    rf"(?:\s+(?:of\s+)?(?:the\s+)?(?:tower|stack|top|(?P<below>{_TAKEN})))?\s*,?\s*(?:and\s+)?(?:then\s+)?(?:just\s+)?"
+    rf"(?i)^\s*(?:then\s+)?(?:(?:take|lift|remove|pick)\s+(?:just\s+|only\s+)?(?:(?P<a>{_TAKEN})\s+off|off\s+(?P<b>{_TAKEN}))"
+    rf"|remove\s+(?:just\s+|only\s+)?(?P<c>{_TAKEN})(?!\s+off\b))"
+    rf"(?:\s+(?:of\s+)?(?:the\s+)?(?:tower|stack|top|(?P<below>{_TAKEN})))?(?:\s*,?\s*(?:and\s+)?(?:then\s+)?(?:just\s+)?"
     r"(?:set|put|place|lay|leave|drop)\s+it\s+(?:down\s+)?(?:(?P<table>(?:on|onto)\s+the\s+table)"
-    r"|(?P<rel>next\s+to|beside|to\s+the\s+(?:left|right)\s+of|in\s+front\s+of|behind)\s+(?P<obj>it\b|" + _TAKEN + r"))")
+    r"|(?P<rel>next\s+to|beside|to\s+the\s+(?:left|right)\s+of|in\s+front\s+of|behind)\s+(?P<obj>it\b|" + _TAKEN + r"))"
+    r"|(?P<bare>(?=\s*(?:[.!;]|$|,?\s+(?:and\s+)?(?:leave|keep)\s+the\s+(?:rest|others?)\b))))")
 """A cube taken off the start's tower and set on the table or beside a cube ("Take the red one off and set it on the
 table", "take off the red cube and put it on the table", "take the orange block off the brown block and set it down next
 to it": 'it' the cube it came off): where the cube goes."""
@@ -284,8 +305,8 @@ another goal sentence follows, what that one says."""
 
 
 def _taken_off(m: re.Match) -> str:
-    cube = m.group("a") or m.group("b")
-    if m.group("table"):
+    cube = m.group("a") or m.group("b") or m.group("c")
+    if m.group("table") or m.group("bare") is not None:  # taken off and set nowhere else: on the table, where it can rest
         return f"put {cube} on the table"
     obj = m.group("below") if m.group("obj").lower() == "it" else m.group("obj")
     return f"put {cube} {m.group('rel')} {obj}" if obj else m.group(0)
@@ -317,6 +338,7 @@ def split(instruction: str) -> InitialScene | None:
     instruction = lexicon.tower_ends_said(instruction)  # "red (bottom), blue, yellow (top)"
     instruction = ROBOT_STARTS_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     instruction = FROM_START_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
+    instruction = FROM_STRUCTURE_RE.sub(_from_structure, instruction.strip())
     instruction = START_STRUCTURE_RE.sub(r"Initially: a \1 of ", instruction.strip())
     unstack = _UNSTACK_RE.match(instruction.strip())
     if unstack:
@@ -338,7 +360,11 @@ def split(instruction: str) -> InitialScene | None:
     sentences = [s for s in re.split(r"(?<=[.;!?])\s+|\s*(?=\b(?:[Gg]oal|[Tt]arget)\s*:)|\s*,?\s*\band\s+(?=(?:at|in)\s+the\s+end\b)",
                                       instruction.strip()) if s.strip()]
     start, goal = [], []
-    taken = [(m.group("a") or m.group("b"), m.group("below")) for t in sentences
+    if sentences and re.match(r"(?i)\s*(?:the|a)\s+(?:tower|stack|column)\s+is\s+(?:the\s+)?(?:" + COLOR_RE + r")\b", sentences[0]) and any(
+            re.match(r"(?i)\s*(?:then\s+)?(?:take|remove|lift|pick|unstack|dismantle|disassemble)\b", t) for t in sentences[1:]):
+        sentences[0] = "Initially " + sentences[0]  # "The tower is red on blue. Take the top one off ...": what is there now
+    sentences = _start_ends_named(sentences)
+    taken = [(m.group("a") or m.group("b") or m.group("c"), m.group("below")) for t in sentences
              for m in _TAKE_OFF_RE.finditer(GOAL_OPENER_RE.sub("", t, count=1))]
     sentences = [_TAKE_OFF_RE.sub(_taken_off, s) for s in sentences]
     for i, s in enumerate(sentences):
@@ -389,6 +415,26 @@ def split(instruction: str) -> InitialScene | None:
     return InitialScene(tuple(stacks), " ".join(goal).strip(), tuple(kept))
 
 
+_START_END_RE = re.compile(r"(?i)\bthe\s+(?:(?P<top>top|topmost|uppermost|highest)|(?P<bottom>bottom|bottommost|lowest|base))\s+"
+                           r"(?:cube|block|one)\b|\bthe\s+(?:cube|block|one)\s+(?:on\s+(?P<top2>top)|at\s+the\s+(?P<bottom2>bottom))\b(?!\s+of\b)")
+"""The goal's words for an end of the start's one stack ("Take the top one off", "the cube at the bottom")."""
+
+
+def _start_ends_named(sentences: list[str]) -> list[str]:
+    """``sentences`` with the goal's words for an end of the start's stack (:data:`_START_END_RE`) naming its cube, when
+    the start says exactly one stack ("Initially red is on blue. Take the top cube off and put it on the table.": the
+    red cube); otherwise as they are (which stack's top would be a guess)."""
+    start = [s[m.end():] for s in sentences if (m := START_SENTENCE_RE.match(s))] + [s for s in sentences if STARTS_FACT_RE.match(s)]
+    stacks = _facts(" , ".join(start)) if start else None
+    if not stacks or len(stacks) != 1 or len(stacks[0]) < 2:
+        return sentences
+
+    def named(m: re.Match) -> str:
+        return f"the {stacks[0][-1] if m.group('top') or m.group('top2') else stacks[0][0]} cube"
+
+    return [s if START_SENTENCE_RE.match(s) or STARTS_FACT_RE.match(s) else _START_END_RE.sub(named, s) for s in sentences]
+
+
 ALL_ON_TABLE_GOAL_RE = re.compile(
     r"(?i)^\s*(?:(?:unstack|dismantle|take\s+apart)\s+(?:it|them|the\s+(?:tower|stack))\s*,?\s*(?:and\s+|so\s+(?:that\s+)?)?"
     r"|take\s+(?:it|them|the\s+(?:tower|stack))\s+apart\s*,?\s*(?:and\s+|so\s+(?:that\s+)?)?)?"
@@ -414,7 +460,9 @@ def with_start_cubes(scene: InitialScene) -> InitialScene:
     wrong).  ``scene`` itself when the goal names a cube, or says a count the start does not have."""
     cubes = [c for st in scene.stacks for c in st]
     m = START_CUBES_RE.search(scene.goal)
-    if m is None or re.search(rf"(?i)\b(?:{COLOR_RE})\b|\b(?:letter|digit|number)\b|(?<![\w'])[A-Z0-9](?![\w'])", scene.goal):
+    # (a patch's colour names no cube: "put both cubes on the green patch")
+    if m is None or re.search(rf"(?i)\b(?:{COLOR_RE})\b(?!\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|area|zone)\b)"
+                              r"|\b(?:letter|digit|number)\b|(?<![\w'])[A-Z0-9](?![\w'])", scene.goal):
         return scene
     said = re.search(r"(?i)\b(two|three|four|2|3|4|both)\b", m.group(0))
     if said and NUMBER_WORDS.get(said.group(1).lower(), int(said.group(1)) if said.group(1).isdigit() else 0) != len(cubes):
