@@ -4728,3 +4728,38 @@ def test_the_rest_without_a_start_and_a_with_clause_that_is_no_start(text):
 def test_unnamed_cubes_take_one_colour_so_either_may_stand_in_either_place():
     assert sorted(meaning(parse("put a cube in the back left corner and a cube in the front left corner"))) == [
         "in_region(red,back_left)", "in_region(red,front_left)"]
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("two blue and one orange in a row, orange in the centre", ["between(orange;blue,blue)", "line(blue,blue,orange)"]),
+    ("LINE front edge: red, red, red", ["line(red,red,red)@front"]),  # a list before the place: the line's place
+    ("put the red cube in the front half, left of the blue cube", ["in_region(red,front)", "left_of(red,blue)"]),
+    ("put the red cube in the front half and make sure it is left of the blue cube", ["in_region(red,front)", "left_of(red,blue)"]),
+    ("the task is done when the pink cube is on the red patch", ["on_patch(pink,patch:red)"]),
+    ("get the black cube into the right half", ["in_region(black,right)"]),
+    ("make a 3-block tower using pink blocks", ["stack(pink,pink,pink)"]),
+    ("one cube per corner: blue back left, red back right, green front left, yellow front right",
+     ["in_region(blue,back_left)", "in_region(green,front_left)", "in_region(red,back_right)", "in_region(yellow,front_right)"]),
+    ("stack the cubes so the colours run gray, red, blue going downward", ["stack(blue,red,gray)"]),
+    ("put the blue cube left of the tower of two pink cubes", ["left_of(blue,pink)", "stack(pink,pink)"]),
+])
+def test_roles_halves_completions_and_landmark_structures(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text, reason", [
+    ("line up minus two gray cubes", "quantity"),
+    ("put zero cubes on the blue patch", "quantity"),
+    ("stack the red cube on itself", "itself"),
+    ("arrange the cubes into prisms", "shape"),
+    ("put that one over there on the blue patch", "current scene"),
+])
+def test_must_refuse_texts_name_their_real_reason(text, reason):
+    with pytest.raises(Inexpressible, match=reason):
+        parse(text)
+
+
+def test_more_cubes_than_a_task_holds_is_refused_as_a_quantity():
+    from rpg.schema.feasibility import InfeasibleTask
+    with pytest.raises(InfeasibleTask, match="quantity"):
+        check_feasibility(parse("build a tower of 300 red blocks"))

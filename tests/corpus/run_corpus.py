@@ -67,7 +67,8 @@ STRANGER_SETS = {
     "stranger30": ("stranger30.yaml", "STRANGER set 30 (stranger30.yaml, development material, read from the twenty-first session's start)"),
     "stranger31": ("stranger31.yaml", "STRANGER set 31 (stranger31.yaml, development material, read from the twenty-second session's start)"),
     "stranger32": ("stranger32.yaml", "STRANGER set 32 (stranger32.yaml, development material, read from the twenty-third session's start)"),
-    "stranger33": ("stranger33.yaml", "STRANGER set 33 (stranger33.yaml, transfer measure of the twenty-third session: aggregates only until its end)"),
+    "stranger33": ("stranger33.yaml", "STRANGER set 33 (stranger33.yaml, transfer measure of the twenty-third session's start: aggregates only; a helper reported its failure classes mid-session)"),
+    "stranger34": ("stranger34.yaml", "STRANGER set 34 (stranger34.yaml, transfer measure of the twenty-third session's end: aggregates only)"),
 }
 SPLITS = HERE / "splits.yaml"
 

@@ -31,7 +31,7 @@ def check_feasibility(schema: TaskSchema) -> TaskSchema:
     """
     cubes = [a for a in schema.assets if a.kind != "goal_patch"]
     if len(cubes) > C.MAX_OBJECTS:
-        raise InfeasibleTask(f"{len(cubes)} cubes exceed the limit of {C.MAX_OBJECTS}; use fewer cubes")
+        raise InfeasibleTask(f"{len(cubes)} cubes exceed the limit of {C.MAX_OBJECTS}, a quantity no task holds; use fewer cubes")
     top = max(p.position[2] for p in schema.goal_layout.values()) - C.TABLE_TOP_Z
     if top > C.MAX_TOWER_HEIGHT:
         n = int(round(top / C.CUBE_EDGE + 0.5))

@@ -567,6 +567,11 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "names a piece of a shape the domain does not have (a triangle, prism or wedge): it has only 5 cm cubes "
      "(coloured, optionally labelled) and flat coloured patches; a pyramid is built of cubes (e.g. \"a pyramid of 3 "
      "cubes\")"),
+    ("quantity", r"\b(?:minus|negative)\s+(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b|\bzero\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b",
+     "is a quantity the domain cannot hold (a count below one): a task places whole cubes, one or more; say how many cubes"),
+    ("contradiction", r"\b(?:on|onto|on\s+top\s+of|atop|under|below|beneath|next\s+to|beside|left\s+of|right\s+of|behind|in\s+front\s+of)"
+                      r"\s+(?:itself|themselves)\b",
+     "relates a cube to itself, which contradicts what a relation is: a cube cannot stand on or beside itself; name two cubes"),
     ("size", rf"\b(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge|giant|mini)\s+"
              rf"(?:{'|'.join(COLORS)}|grey)(?=\s*(?:$|[,.;!?]|(?:on|onto|under|below|next|beside|behind|to|in|at|and|one)\b))",
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
@@ -656,7 +661,7 @@ UNKNOWN_KIND_EXEMPLARS: dict[str, tuple[str, ...]] = {
     "action": tuple("rotate spin throw flip roll shake topple knock pour cut open close twist wipe sweep toss".split()),
     "object": tuple("ball cup mug bottle bowl plate peg nut rope disk cylinder sphere container drawer shelf basket "
                     "tray".split()),
-    "shape": tuple("triangle star heart hexagon oval arch staircase spiral smiley".split()),
+    "shape": tuple("triangle star heart hexagon oval arch staircase spiral smiley prism wedge".split()),
     "reference": tuple("previous earlier original former latter remaining".split()),
 }
 """Words of meaning the domain cannot express, by class (:data:`INEXPRESSIBLE`,
@@ -2327,7 +2332,13 @@ def names_a_role(before: str, text: str) -> bool:
     return bool(ROLE_BEFORE.search(before) or ROLE_LIST_BEFORE.search(before) or END_ROLE_LIST_BEFORE.search(before)
                 or COLON_ROLE_LIST_BEFORE.search(before) or SORT_END_BEFORE.search(before)
                 or (LAYER_LIST_BEFORE.search(before) and LAYERED_TEXT.search(text))
-                or (MIDDLE_GROUP_BEFORE.search(before) and re.search(r"\b(?:towers?|stacks?|rows?|lines?)\b", text)))
+                or (MIDDLE_GROUP_BEFORE.search(before) and re.search(r"\b(?:towers?|stacks?|rows?|lines?)\b", text))
+                or (COMMA_ROLE_BEFORE.search(before) and re.search(r"\b(?:rows?|lines?|line\s+up)\b", text)))
+
+
+COMMA_ROLE_BEFORE = re.compile(rf",\s*(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:block|cube|one))?(?:\s+(?:is|goes|sits))?\s*$")
+"""Text before a bare side that makes it the place of a cube said after a comma in a row ("two blue and one orange in a
+row, orange in the centre"): its place in the row, not the table's."""
 
 
 MIDDLE_GROUP_BEFORE = re.compile(r"(?:^|[;,.]\s*|\band\s+)the\s+(?:other\s+)?\d+(?:\s+(?:cubes|blocks|ones))?\s*$")
@@ -2871,6 +2882,12 @@ OUTCOME_VERB_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 """A motion said by its outcome ("cover the green patch with the red block", "slide it until it touches ..."): the relation it ends in."""
 
 GOAL_FRAME_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "the task is done when the pink cube is on the red patch": the end state that completes it is the goal
+    (re.compile(r"(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:task|job|episode|run|it|you)\s*(?:is|are|'s|'re)\s+(?:done|finished|complete|completed"
+                r"|over|successful|solved|a\s+success)\s+(?:when|once|as\s+soon\s+as|if)\s+"), ""),
+    # "make a 3-block tower using pink blocks": what it is made of
+    (re.compile(rf"\b(towers?|stacks?|rows?|lines?|pyramids?|walls?|piles?)\s+(?:using|with|out\s+of|from)\s+(?=(?:the\s+)?(?:\d+\s+)?"
+                rf"(?:{COLOR_RE})\s+(?:blocks|cubes)\s*(?:[.,;!]|$))"), r"\1 of "),
     # "I reckon the task is a tower: ...", "What you want is a pyramid: ...", "The task you are describing is ...",
     # "For your case the goal would be ...": the task said with an opinion or a reply around it
     (re.compile(r"(?:^|(?<=[.!?;]\s))(?:i\s+(?:think|reckon|guess|believe|suppose|figure)|(?:for|in)\s+(?:your|this)\s+case\s*,?)\s+"
@@ -3288,6 +3305,16 @@ ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 rf"(?P<list>(?:{COLOR_RE})(?:\s+on\s+(?:{COLOR_RE}))+(?:\s*(?:,\s*(?:and\s+)?|;\s*|\s+and\s+)(?:{COLOR_RE})"
                 rf"(?:\s+on\s+(?:{COLOR_RE}))+)+)(?=\s*(?:[.!]|$))"),
      _towers_listed),
+    # "Corners: red back-left, blue back-right, ...", "one cube per corner: blue back left, ...": each cube's corner
+    (re.compile(rf"(?i)(?:\b(?:put\s+)?(?:one|a|1)\s+(?:cube|block)\s+(?:per|in\s+each|for\s+each|at\s+each)\s+corner|(?:^|(?<=[.;]\s))(?:the\s+)?"
+                rf"corners?)\s*[:\-\u2014]\s*(?P<list>(?:{COLOR_RE})\s+(?:front|back|rear)[\s-]+(?:left|right)(?:\s+corner)?(?:\s*(?:[,;]\s*(?:and\s+)?"
+                rf"|\s+and\s+)(?:{COLOR_RE})\s+(?:front|back|rear)[\s-]+(?:left|right)(?:\s+corner)?)+)"),
+     lambda m: "put " + ", ".join(f"the {c.lower()} cube in the {fb.lower().replace('rear', 'back')} {lr.lower()} corner" for c, fb, lr in
+                                  re.findall(rf"(?i)\b({COLOR_RE})\s+(front|back|rear)[\s-]+(left|right)", m.group("list")))),
+    # "so the colours run gray, red, blue going downward": the order from the top
+    (re.compile(rf"(?i)(?:,?\s*so\s+(?:that\s+)?(?:the\s+)?colou?rs\s+(?:run|go|read)\s+|\b)(?P<list>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE}))+"
+                rf"(?:\s*,?\s+and\s+(?:{COLOR_RE}))?)\s*,?\s+going\s+(?P<d>down(?:ward|wards)?|up(?:ward|wards)?)\b"),
+     lambda m: (" from top to bottom: " if m.group("d").lower().startswith("down") else " from bottom to top: ") + m.group("list")),
     # "put any block on top of the red one": a cube of any colour (one more, whichever)
     (re.compile(r"(?i)\b(put|place|set|stack)\s+any\s+(cube|block)\b(?=\s+(?:on|onto|next\s+to|beside|behind|in\s+front\s+of|to\s+the))"),
      r"\1 a \2"),
@@ -3358,6 +3385,15 @@ LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b(?:(?:to|on|at)\s+(?:the\s+)?)?(left|right)(?:\s+side)?\s+from\s+(?=(?:the\s+)?(?:(?:{COLOR_RE})\b|it\b))"),
      r"to the \1 of "),
     (re.compile(rf"\bin\s+(?:the\s+)?front\s+(?:side\s+)?(?:to|of)\s+(?=(?:the\s+)?(?:(?:{COLOR_RE})\b|it\b))"), "in front of "),
+    # "put the blue cube left of the tower of two pink cubes": the tower described where it is the landmark, built first
+    (re.compile(rf"\b(?P<v>put|place|move|set)\s+(?P<x>the\s+(?:{COLOR_RE})\s+(?:cube|block))\s+(?P<rel>(?:to\s+the\s+)?(?:left|right)\s+of"
+                rf"|in\s+front\s+of|behind|next\s+to|beside)\s+(?:the|a)\s+(?P<s>tower|stack|row|line)\s+of\s+(?P<of>(?:\d+|two|three|four|five)"
+                rf"\s+(?:{COLOR_RE})\s+(?:cubes|blocks))(?=\s*(?:[.!;]|$))"),  # (of cubes of one colour: a listed tower related by its base
+    # would keep its list's order, which the words leave free)
+     r"build a \g<s> of \g<of> and \g<v> \g<x> \g<rel> it"),
+    # "get the black cube into the right half": put it there
+    (re.compile(r"\bget\s+(?=(?:the|a|an|both|all)\s+(?:[a-z]+\s+){0,3}?(?:cube|block)s?\s+(?:in|into|onto|on|to|next\s+to|beside|behind"
+                r"|under|over|in\s+front|left|right|@region)\b)"), "put "),
     # "Keep the green cube besides the white cube.": beside it ("besides that, ..." adds, and stays)
     (re.compile(rf"\bbesides\s+(?=the\s+(?:{COLOR_RE})\s+(?:cube|block|one)\b)"), "beside "),
     # "put the red cube and the blue cube next to each other in the front half": the pair's place, both cubes in it (a

@@ -333,8 +333,8 @@ def _refuse_unresolved_pronoun(text: str, original: str) -> None:
                             "speaker shows): list it (e.g. \"stack the red, green and blue blocks in that order\")", original)
     for m in lexicon.DEICTIC_RE.finditer(text):
         if m.group("d") in ("this", "these") or not lexicon.ANTECEDENT_RE.search(text[:m.start()]):
-            raise Inexpressible("reference", [m.group(0)], "points at cubes in a scene the instruction does not describe "
-                                "(ones the speaker sees): rpg's cubes are known only by colour and label; name them "
+            raise Inexpressible("reference", [m.group(0)], "refers to cubes in the current scene, which the instruction does "
+                                "not describe (ones the speaker sees): rpg's cubes are known only by colour and label; name them "
                                 "(e.g. \"put the red block on the blue block\")", original)
     for m in lexicon.OTHER_RE.finditer(text):
         if not lexicon.OTHER_SET_RE.search(text[:m.start()]):
@@ -1972,7 +1972,8 @@ def mark_regions(text: str) -> str:
     def sub(m: re.Match) -> str:
         corner = "corner" in m.group("part")
         edge = "edge" in m.group("part")  # "near the front edge": a side of the table, not of a cube
-        edge = edge or bool(re.search(r"area|region|zone", m.group("part")))  # "in the back region": of the table, too
+        edge = edge or bool(re.search(r"area|region|zone|half", m.group("part")))  # "in the back region", "in the front half": of
+        # the table, too (a cube has no halves)
         word = m.group("lr") or m.group("lr2")
         bare_center = (word in ("center", "centre", "middle") and m.group(0).split()[0] in ("in", "at", "to", "into")  # "in the center"
                        and not names_a_role(m.string[:m.start()], m.string)

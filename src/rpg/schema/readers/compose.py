@@ -234,8 +234,11 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
     if heads is None:
         return False
     head = heads[0]
-    if re.search(rf"\bwith\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:block|cube|one))?\s*$", part):
-        return False  # "line up yellow and blue with blue on the left": the cube's end of the line, not the line's place
+    said_last = re.search(rf"(?P<w>\S+)\s*,\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:block|cube|one))?\s*$", part)
+    if re.search(rf"\bwith\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:block|cube|one))?\s*$", part) or (
+            said_last and region == "center" and not re.fullmatch(rf"(?:{COLOR_RE})", said_last.group("w"))):
+        return False  # "line up yellow and blue with blue on the left", "two blue and one orange in a row, orange in the
+        # centre": the cube's place in the line, not the line's place ("line: red, red, red" at the front is the line's)
     if len(re.findall(rf"\b(?:a|an|one|1|another)\s+(?:[\w-]+\s+){{0,2}}?{_WHOLE_NOUN}", part)) > 1:
         return False  # "a tower of 3 red blocks and a line of 3 blue blocks on the right": the place of the last one only
     if (region not in C.REGION_NAMES or len(head.assets) < 2 or head.initial_state.structures

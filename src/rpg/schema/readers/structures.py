@@ -828,9 +828,11 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
             names = [b.cube(c) for c in (distinct * n if len(distinct) == 1 else colors_for(n, f))]
         middle = re.search(rf"\b({COLOR_RE})\s+(?:block\s+|cube\s+)?(?:is\s+)?(?:in|at)\s+the\s+(?:middle|center|centre)\b", f.text)
         mid = canon_color(middle.group(1)) if middle else None
-        if mid and n == 3 and mid in distinct and len(distinct) == 3:  # "red, blue and green with blue in the middle"
-            ends = [nm for nm, c in zip(names, distinct, strict=True) if c != mid]
-            names = [ends[0], names[distinct.index(mid)], ends[1]]
+        color_of = {a.name: a.color for a in b.assets}
+        if mid and n == 3 and [color_of.get(nm) for nm in names].count(mid) == 1:
+            # "red, blue and green with blue in the middle", "two blue and one orange in a row, orange in the centre"
+            ends = [nm for nm in names if color_of.get(nm) != mid]
+            names = [ends[0], next(nm for nm in names if color_of.get(nm) == mid), ends[1]]
             b.preds.append(Between(names[1], names[0], names[2]))
         axis = line_axis_said(f)
         b.place(line_layout(names, axis=axis or "y"))
