@@ -864,6 +864,9 @@ PLACEMENT_VERBS: dict[str, str] = {
     "form": "build", "erect": "build", "stack": "stack", "pile": "stack", "pull": "place", "drag": "place",
     "pop": "place", "plonk": "place", "plop": "place", "stick": "place", "gather": "place",
     "chuck": "place", "bung": "place", "realise": "build", "realize": "build",
+    "hoist": "place", "heave": "place", "ease": "place", "nudge": "place", "scoot": "place", "shove": "place", "haul": "place",
+    "carry": "place", "lug": "place", "deposit": "place", "park": "place", "plant": "place", "station": "place",
+    "seat": "place", "perch": "place", "deliver": "place",
 }
 """Verbs that ask for objects to end up somewhere, by lemma -> the parser's verb."""
 
@@ -1423,6 +1426,16 @@ is be will it'll gonna fun easy peasy
 """Words of a sentence that only cheers, greets or addresses ("Good job!", "Yay!", "Here we
 go, folks!"): a sentence made of these alone is dropped (:data:`ADDRESS_RE` for an address
 inside a sentence)."""
+
+INTERJECTIONS: frozenset[str] = frozenset("""
+hey hi hello hiya howdy yo oi ahoy arr arrr aye ahem psst hmm hm um uh er erm oh ah aha alas wow whoa welp yep yup nope
+gee golly gosh heck jeez sheesh ugh yikes oops whew phew huzzah hurrah hooray yay woohoo ooh alrighty okey dokey lo behold
+hark prithee pray forsooth verily yea nay egad zounds matey mateys landlubber landlubbers ye thee thou y'all yall ya
+bro dude fam buddy folks partner sir maam ma'am madam miss mister captain cap'n chief boss team crew gang guys savvy
+recruit recruits cadet cadets private soldier soldiers maggot maggots trooper troopers sergeant
+""".split())
+"""Words that only call out to a listener or exclaim (interjections and nouns of address: "hey", "arr matey", "listen
+up, recruit"): a chunk of them alone at a sentence's edge is dropped (:func:`rpg.schema.reading.drop_asides`)."""
 
 ADDRESS_RE = re.compile(r"(?:,\s*|^)(?:(?:okay|ok|now|right)\s+)?(?:sweetie|sweetheart|honey|dear|buddy|pal|mate|folks|everyone|kiddo"
                         r"|there'?s\s+a\s+(?:good\s+)?(?:chap|lad|girl|boy|dear|love))\s*(?=[,.!?]|$)")

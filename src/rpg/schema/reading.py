@@ -248,6 +248,44 @@ def _title_heading(sentence: str, rest: str) -> bool:
     return not hazards and all(c in rest_words or c.rstrip("s") in rest_words or f"{c}s" in rest_words for c in content)
 
 
+def _address_chunk(chunk: str) -> bool:
+    """Whether a chunk at a sentence's edge, set off by a comma, colon or dash, only calls out to a listener or exclaims
+    ("Arr matey, ...", "..., recruit!", "Hey team: ..."): at most four words, each an interjection or a noun of address
+    (:data:`lexicon.INTERJECTIONS`), a filler (:data:`lexicon.IDLE_WORDS`, :data:`lexicon.CHAT_WORDS`) or "listen up",
+    and nothing of a goal, no hazard and nothing the domain refuses."""
+    low = chunk.lower().strip(" ,:;!?-\u2013\u2014")
+    words = re.findall(r"[a-z][a-z']*", low)
+    if not words or len(words) > 4 or re.search(r"\d", low):
+        return False
+    if lexicon.TASK_CONTENT_RE.search(low) or lexicon.GOAL_THING_RE.search(low) or lexicon.FRAMING_SENTENCE_HAZARD_RE.search(low) \
+            or _inexpressible(low):
+        return False
+    if any(len(w) == 1 for w in words):
+        return False  # "..., A.": a letter cube's label, not a call
+    low = re.sub(r"\blisten\s+up\b", " hey ", re.sub(r"\bmy\s+(?=\w)|\bdear\s+(?=\w)", " ", low))
+    words = re.findall(r"[a-z][a-z']*", low)
+    return any(w in lexicon.INTERJECTIONS or w in lexicon.CHAT_WORDS for w in words) and all(
+        w in lexicon.INTERJECTIONS or w in lexicon.IDLE_WORDS or w in lexicon.CHAT_WORDS for w in words)
+
+
+def _without_address(sentence: str) -> str:
+    """``sentence`` without the chunks at its start and end that only call out to a listener (:func:`_address_chunk`)."""
+    for _ in range(2):
+        m = re.match(r"\s*([^,:;\u2013\u2014]{1,40}?)\s*(?:[,:\u2013\u2014]|\s-)\s+(?=\S)", sentence)
+        if not (m and _address_chunk(m.group(1))):
+            break
+        sentence = sentence[m.end():]
+    for _ in range(2):
+        m = re.search(r"\s*,\s*([^,:;]{1,40}?)\s*(?P<end>[.!?]*)\s*$", sentence)
+        if not (m and _address_chunk(m.group(1))):
+            break
+        asks = re.match(r"\s*(?:how|what|which|where|why|who|whom|whose|when|is|are|was|were|do|does|did|can|will|shall|should"
+                        r"|has|have)\b", sentence, re.IGNORECASE)  # a question stays one ("How many ..., sweetie?")
+        sentence = sentence[:m.start()] + (m.group("end") if asks else m.group("end").replace("?", "."))  # "..., savvy?": the
+        # tag's question mark goes with it
+    return sentence
+
+
 def drop_asides(text: str) -> tuple[str, list[str]]:
     """``text`` without its asides, and the asides dropped: exclaimed sentences (:data:`lexicon.EXCLAIMED_SENTENCE_RE`:
     "Put the green block on the purple block. What a tower!") that name nothing of a goal
@@ -263,6 +301,12 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
         if reported and lexicon.GOAL_THING_RE.search(quoted[0].group("q").lower()):
             return quoted[0].group("q").strip(), [rest.strip()]
     dropped: list[str] = []
+    pieces = re.split(r"((?<=[.!?])\s+)", text)  # sentences and the spaces between them, kept as they are
+    addressed = "".join(piece if i % 2 else _without_address(piece) for i, piece in enumerate(pieces))
+    if addressed != text and lexicon.GOAL_THING_RE.search(addressed.lower()):
+        # "Arr matey, put ..., savvy?": the call to a listener (kept where no task is left: "Thanks, that's all for today.")
+        dropped.append(text)
+        text = addressed
     for _ in range(2):  # "In this experiment, the robot was instructed to place ...": two frames, one after the other
         frame = lexicon.FRAME_PREFIX_RE.match(text)
         if frame is None or not _frame_prefix(frame.group("p")):

@@ -565,6 +565,11 @@ def _refuse_made_up_cubes(edit: str, ref: TaskSchema, schema: TaskSchema, refere
         return
     had = {a.color or a.label for a in ref.assets if a.kind != "goal_patch"}
     new = sorted({a.color or a.label for a in schema.assets if a.kind != "goal_patch"} - had)  # (more of its colours: a size)
+    ref_colors = Counter(a.color or a.label for a in ref.assets if a.kind != "goal_patch")
+    if not new and len(ref_colors) > 1:  # several of one colour where the task had one of each: cubes given one colour
+        # because nobody named theirs ("3 towers like that" of a yellow-orange-red tower read as six red cubes)
+        more = Counter(a.color or a.label for a in schema.assets if a.kind != "goal_patch") - ref_colors
+        new = sorted(more) if len(more) == 1 and sum(more.values()) > 1 else []
     if new:
         raise SteerError(f"the edit reads as a new task ({schema.goal_summary}) with cubes of colours v{reference} does not "
                          f"have ({', '.join(new)}) and the edit names none; say what changes in "

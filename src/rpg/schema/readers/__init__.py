@@ -14,11 +14,15 @@ way), and one module per family: :mod:`.places`, :mod:`.structures`, :mod:`.temp
 
 from __future__ import annotations
 
+import itertools
+import json
+import math
 import re
 
 from pydantic import ValidationError
 
 from rpg.domain.predicates import (
+    MAX_ASSIGNMENTS,
     AnchoredStack,
     And,
     InRegion,
@@ -100,6 +104,80 @@ def free_unnamed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
             new = [StackOnPatch(r.a, r.patch, tuple(sorted(p.objects))) if type(r) is OnPatch and r.a == p.objects[0] else r
                    for r in new]
     return _with_parts(schema, goal, parts, new)
+
+
+_UNORDERED_FIELDS = {"unordered_stack": ("objects",), "stack_on_patch": ("among",), "next_to": ("a", "b"), "far_from": ("a", "b")}
+"""Predicates whose named fields hold their objects as a set (their order says nothing), by predicate name."""
+
+_PLACING = frozenset({"in_region", "left_of", "right_of", "in_front_of", "behind", "on_patch", "between", *_UNORDERED_FIELDS})
+"""The predicates :func:`one_colour_for_unnamed` weighs: where cubes go (a structure of colours a reader chose for what
+they are, "a colour gradient", is left as read)."""
+
+
+def _canonical(p) -> str:
+    """One conjunct of G as a string that two readings share when they differ only by the order of a set of objects."""
+    d = p.to_dict()
+    if p.name == "stack_on_patch":
+        d.pop("a", None)  # some cube of the stack on the patch: which one is named says nothing
+    fields = _UNORDERED_FIELDS.get(p.name, ())
+    if len(fields) == 1 and isinstance(d.get(fields[0]), list):
+        d[fields[0]] = sorted(d[fields[0]])
+    elif len(fields) == 2:
+        d[fields[0]], d[fields[1]] = sorted((d[fields[0]], d[fields[1]]))
+    return json.dumps(d, sort_keys=True, default=str)
+
+
+def one_colour_for_unnamed(f: Features, schema: TaskSchema) -> TaskSchema:
+    """Cubes the instruction names by no colour, given default colours that differ, take one colour when G would tell
+    them apart: "put a cube in the back left corner and a cube in the front left corner" had demanded the red cube
+    back left and the blue one front left, a goal stricter than the words (issue 30); of one colour they are
+    interchangeable, and G accepts either in either place.  Where swapping them leaves G as it is ("stack two blocks",
+    "both blocks onto the goal patch", "side by side") their colours stay apart."""
+    said = {c for i, c in color_mentions(f.text)  # the colours of cubes said (a patch's colour names no cube)
+            if not re.match(r"[a-z]+\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|tile|area|zone)\b", f.text[i:])}
+    patch_colors = {a.color for a in schema.assets if a.kind == "goal_patch"}  # "each object into its corresponding patch": a
+    # cube of a patch's colour may be matched to it by colour
+    unnamed = [a for a in schema.assets if a.kind == "colored_cube" and a.color and a.color not in said | patch_colors]
+    colors = list(dict.fromkeys(a.color for a in unnamed))
+    group = [a for a in schema.assets if a.kind == "colored_cube" and a.color in colors]
+    if len(colors) < 2 or math.factorial(len(group)) > MAX_ASSIGNMENTS:
+        return schema  # (more cubes of one colour than evaluate_goal tries the assignments of: left as read)
+    goal = schema.goal_predicate()
+    parts = goal.conjuncts()
+    names = {a.name for a in unnamed}
+    if any(set(p.object_names()) & names and p.name not in _PLACING for p in parts) or schema.initial_state.structures:
+        return schema
+    before = sorted(_canonical(p) for p in parts)
+    for x, y in itertools.combinations(unnamed, 2):
+        if x.color == y.color:
+            continue
+        swapped = sorted(_canonical(p.rename({x.name: y.name, y.name: x.name})) for p in parts)
+        if swapped != before:
+            break
+    else:
+        return schema  # no swap of them changes G: their colours demand nothing
+    taken = {a.name for a in schema.assets}
+    mapping: dict[str, str] = {}
+    for a in unnamed:
+        if a.color != colors[0]:
+            k = 1
+            while f"{colors[0]}_{k}" in taken:
+                k += 1
+            mapping[a.name] = f"{colors[0]}_{k}"
+            taken.add(mapping[a.name])
+    doc = schema.model_dump()
+    for a in doc["assets"]:
+        if a["name"] in mapping:
+            a["name"], a["color"] = mapping[a["name"]], colors[0]
+    doc["goal"] = goal.rename(mapping)
+    doc["goal_layout"] = {mapping.get(k, k): v for k, v in doc["goal_layout"].items()}
+    init = doc["initial_state"]
+    init["structures"] = [[mapping.get(n, n) for n in st] for st in init["structures"]]
+    init["fixed"] = {mapping.get(k, k): v for k, v in init["fixed"].items()}
+    init["orientations"] = {mapping.get(k, k): v for k, v in init["orientations"].items()}
+    doc["goal_summary"] = "; ".join(p.describe() for p in doc["goal"].conjuncts())
+    doc["paraphrases"] = make_paraphrases(doc["goal_summary"])
+    return TaskSchema.model_validate(doc)
 
 
 def _with_parts(schema: TaskSchema, goal, parts: list, new: list) -> TaskSchema:
@@ -314,7 +392,8 @@ def _read(instruction: str) -> TaskSchema:
                 # parameter a reader sets, such as a default count). A structure filled up with
                 # cubes nobody named makes this reading fail (the next reader may do better)
                 try:
-                    read = citations.enforce(free_listed_orders(f, free_unnamed_orders(f, schema)), refuse=False)
+                    read = one_colour_for_unnamed(f, citations.enforce(free_listed_orders(f, free_unnamed_orders(f, schema)),
+                                                                       refuse=False))
                 except citations.UncitedConstraint as exc:
                     gap = ParseError(f"\"{f.original[:80]}\": {exc}; or use --model")
                 else:

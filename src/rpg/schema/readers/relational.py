@@ -94,10 +94,6 @@ class RelationalReading:
     the white patch"): the stack itself stays off the patch."""
     fresh: dict[int, int] = field(default_factory=dict)
     """id of a mention said as one more of its colour (:attr:`Mention.another`) -> its cube's index."""
-    unnamed: str | None = None
-    """The colour every cube named by no colour takes ("a cube in the back left corner and a cube in the front left
-    corner"): one colour, so the goal's interchangeable cubes may stand either way round (two colours nobody said would
-    each have been demanded in one place, a goal stricter than the words; issue 30)."""
     group: list[Mention] = field(default_factory=list)
     """The cubes a "both" or a relation after "next to each other" refers to: the last pairwise
     relation's two cubes, or the cubes said next to each other (within the current clause)."""
@@ -131,21 +127,10 @@ class RelationalReading:
         elif mn.another and mn.color and not mn.label and i == 0:  # "another green block": one more of that colour
             i = self.fresh.setdefault(id(mn), len(lst))
         while len(lst) <= i:
-            lst.append(self.b.semantic(mn.label) if mn.label else self.b.cube(mn.color or self._unnamed_color(mn)))
+            lst.append(self.b.semantic(mn.label) if mn.label else self.b.cube(mn.color or _next_default(
+                self.b, self.objects, self.clause if mn.count <= 1 and re.search(r"\b(?:a|an|one|another|any)\s+(?:\w+\s+)?$", self.clause[:mn.end].rsplit(" ", 1)[0] + " ")
+                else "")))  # ("three cubes: a red one, ...": named after; "put that block": a cube said before)
         return lst[i]
-
-    def _unnamed_color(self, mn: Mention) -> str:
-        """The colour of a cube named by no colour: :attr:`unnamed`, first chosen as a default colour no cube has and
-        the clause names for no other cube ("three cubes: a red one, ...": named after; "put that block": a cube said
-        before), again while the clause names no cube of it."""
-        indefinite = mn.count <= 1 and re.search(r"\b(?:a|an|one|another|any)\s+(?:\w+\s+)?$",
-                                                 self.clause[:mn.end].rsplit(" ", 1)[0] + " ")
-        said = {canon_color(w) for w in re.findall(rf"\b(?:{COLOR_RE})\b(?!\s+(?:goal\s+|target\s+)?patch)", self.clause)}
-        if self.unnamed and self.unnamed not in said and ("cube", self.unnamed, None) not in self.objects:
-            return self.unnamed
-        color = _next_default(self.b, self.objects, self.clause if indefinite else "")
-        self.unnamed = self.unnamed or color
-        return color
 
     def read_clause(self, clause: str) -> None:
         """Read one clause's mentions and relation words into the reading."""
