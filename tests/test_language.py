@@ -4794,3 +4794,14 @@ def test_unnamed_cubes_told_apart_by_g_take_one_colour_and_others_keep_theirs():
         schema = parse(text)  # swapping them changes nothing G asks, or their colours are what G asks: kept as read
         cubes = [a for a in schema.assets if a.kind == "colored_cube"]
         assert len({a.color for a in cubes}) == len(cubes), text
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("make a pyramid with three red cubes at the base, two blue above, and a white one topping it",
+     ["pyramid(red,red,red|blue,blue|white)"]),  # the white cube had gone into the second layer, a blue one on top
+    ("make a pyramid with three red cubes at the base, two blue above, and a white one crowning it",
+     ["pyramid(red,red,red|blue,blue|white)"]),
+    ("put the red cube in the back left corner and the cyan block in the front", ["in_region(cyan,front)", "in_region(red,back_left)"]),
+])
+def test_a_cube_topping_a_structure_and_a_second_cube_s_own_place(text, expected):
+    assert sorted(meaning(parse(text))) == expected

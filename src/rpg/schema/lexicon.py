@@ -3373,8 +3373,11 @@ LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      r"\1 the \2 next to \3"),
     (re.compile(r"\b(?:so\s+(?:that\s+)?it(?:'s|\s+is)\s+)?touch(?:ing|es)?\b"),
      "next to"),
-    (re.compile(r"\bfollowed\s+by\b|\btopped\s+(?:off\s+)?(?:with|by)\b"),
+    (re.compile(r"\bfollowed\s+by\b|\b(?:topped|crowned|capped)\s+(?:off\s+)?(?:with|by)\b"),
      "then"),
+    # "and a white one topping it", "a white cube crowning the pyramid": that cube on top
+    (re.compile(r"\b(?:topping|crowning|capping)\s+(?:it|them|the\s+(?:pyramid|tower|stack|structure|pile|whole\s+thing))(?:\s+off)?\b"),
+     "on top"),
     # "the purple block has to finish on top of the white block": where it ends up; "... and leave it there": the same end
     (re.compile(r"\b(?:finish|finishes|finished|finishing)\s+(?=(?:on|in|at|next\s+to|beside|behind|under|below|above|inside|left|right"
                 r"|to\s+the|in\s+front)\b)"), "end up "),

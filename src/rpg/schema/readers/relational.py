@@ -156,6 +156,8 @@ class RelationalReading:
             if kind == "region":  # resolved once the stacks are known
                 prev = found[k - 1].end() if k else None
                 objects = [m for m in ms if prev is not None and m.start >= prev][:1]  # the previous relation's object
+                if k and _kind_of(found[k - 1]) == "region":  # (a place has none: "... in the back left corner and the cyan
+                    objects = []  # block in the front" places the cyan block)
                 own = [m for m in left if prev is not None and m.start >= prev and m not in objects and (m.color or m.label)]
                 # "red on the green patch and the white cube in the centre": the cube said after the last relation
                 group = own[-1:] or related[:1] or (_listed_group(clause, left) if left else [])
