@@ -572,6 +572,13 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("contradiction", r"\b(?:on|onto|on\s+top\s+of|atop|under|below|beneath|next\s+to|beside|left\s+of|right\s+of|behind|in\s+front\s+of)"
                       r"\s+(?:itself|themselves)\b",
      "relates a cube to itself, which contradicts what a relation is: a cube cannot stand on or beside itself; name two cubes"),
+    ("time", r"\b(?:which|that|who)\s+(?:starts|begins|is\s+initially|sits\s+initially|started|began)\s+(?:out\s+)?(?:on|in|at|atop|under"
+             r"|beneath|below|next|beside|behind|stacked|sitting|resting|standing)\b",
+     "states a start inside a clause of the goal, which rpg does not read there: say the start first (e.g. \"Initially "
+     "the blue cube is on the green cube. Put the red cube on the blue cube.\")"),
+    ("question", r"^\s*(?:(?:hey|hi|so|ok(?:ay)?)\s*,?\s+)?(?:did|have|has|had)\s+(?:you|the\s+robot|it|we|they)\b",
+     "asks a question about what was done: a task is an instruction whose goal says where cubes end up; ask for the "
+     "arrangement instead (e.g. \"put the red block on the blue block\")"),
     ("size", rf"\b(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge|giant|mini)\s+"
              rf"(?:{'|'.join(COLORS)}|grey)(?=\s*(?:$|[,.;!?]|(?:on|onto|under|below|next|beside|behind|to|in|at|and|one)\b))",
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
@@ -2346,7 +2353,8 @@ def names_a_role(before: str, text: str) -> bool:
                 or COLON_ROLE_LIST_BEFORE.search(before) or SORT_END_BEFORE.search(before)
                 or (LAYER_LIST_BEFORE.search(before) and LAYERED_TEXT.search(text))
                 or (MIDDLE_GROUP_BEFORE.search(before) and re.search(r"\b(?:towers?|stacks?|rows?|lines?)\b", text))
-                or (COMMA_ROLE_BEFORE.search(before) and re.search(r"\b(?:rows?|lines?|line\s+up)\b", text)))
+                or (COMMA_ROLE_BEFORE.search(before) and re.search(r"\b(?:rows?|lines?|line\s+up)\b", text)
+                    and not re.search(r"\b(?:towers?|stacks?|stacked|columns?|piles?)\b", text)))
 
 
 COMMA_ROLE_BEFORE = re.compile(rf",\s*(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:block|cube|one))?(?:\s+(?:is|goes|sits))?\s*$")
@@ -3277,6 +3285,16 @@ def _two_corners(m: re.Match) -> str:
     return f"{m.group('v')} " + " and ".join(f"{cube} in the {c} corner" for c in corners)
 
 
+def _corners_listed(m: re.Match) -> str:
+    """"one cube per corner: blue back left, red back right, ..." -> each cube put in its corner; unchanged when a corner
+    is said twice ("one per corner" of two cubes in one: the readers refuse it)."""
+    items = [(c.lower(), fb.lower().replace("rear", "back"), lr.lower())
+             for c, fb, lr in re.findall(rf"(?i)\b({COLOR_RE})\s+(front|back|rear)[\s-]+(left|right)", m.group("list"))]
+    if len({(fb, lr) for _, fb, lr in items}) != len(items):
+        return m.group(0)
+    return "put " + ", ".join(f"the {c} cube in the {fb} {lr} corner" for c, fb, lr in items)
+
+
 def _towers_listed(m: re.Match) -> str:
     """"Three towers, each two cubes tall: red on blue, green on yellow, white on black." -> the towers themselves, when
     as many are listed as counted, each as tall as said (otherwise unchanged: the readers decide)."""
@@ -3305,7 +3323,7 @@ ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      _row_roles),
     # "put one blue cube in each of the two back corners": one in each of those two corners
     (re.compile(rf"(?i)\b(?P<v>put|place|set)\s+(?:one|a|1)\s+(?P<c>(?:{COLOR_RE})\s+)?(?P<n>cube|block)\s+(?:in|into|at)\s+each\s+of\s+the\s+"
-                r"(?:two|2)\s+(?P<s>back|front|left|right)\s+corners\b"),
+                r"(?:two|2)\s+(?P<s>back|front|left|right)\s+corners\b(?=\s*(?:[.!;]|$))"),  # (what follows may refer to them)
      _two_corners),
     # "Make two towers: one of three green cubes on the left, one of three red cubes on the right": each said in turn
     # ("make two separate piles: one with the brown and pink blocks, one with the white and cyan blocks")
@@ -3322,8 +3340,7 @@ ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"(?i)(?:\b(?:put\s+)?(?:one|a|1)\s+(?:cube|block)\s+(?:per|in\s+each|for\s+each|at\s+each)\s+corner|(?:^|(?<=[.;]\s))(?:the\s+)?"
                 rf"corners?)\s*[:\-\u2014]\s*(?P<list>(?:{COLOR_RE})\s+(?:front|back|rear)[\s-]+(?:left|right)(?:\s+corner)?(?:\s*(?:[,;]\s*(?:and\s+)?"
                 rf"|\s+and\s+)(?:{COLOR_RE})\s+(?:front|back|rear)[\s-]+(?:left|right)(?:\s+corner)?)+)"),
-     lambda m: "put " + ", ".join(f"the {c.lower()} cube in the {fb.lower().replace('rear', 'back')} {lr.lower()} corner" for c, fb, lr in
-                                  re.findall(rf"(?i)\b({COLOR_RE})\s+(front|back|rear)[\s-]+(left|right)", m.group("list")))),
+     _corners_listed),
     # "so the colours run gray, red, blue going downward": the order from the top
     (re.compile(rf"(?i)(?:,?\s*so\s+(?:that\s+)?(?:the\s+)?colou?rs\s+(?:run|go|read)\s+|\b)(?P<list>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE}))+"
                 rf"(?:\s*,?\s+and\s+(?:{COLOR_RE}))?)\s*,?\s+going\s+(?P<d>down(?:ward|wards)?|up(?:ward|wards)?)\b"),
@@ -3386,7 +3403,7 @@ LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\bfirst\s+(?:the\s+)?({COLOR_RE})(?:\s+(?:cube|block|one))?\s*,\s*(?:after|then|next|afterwards)\s+(?:the\s+)?"
                 rf"({COLOR_RE})(?:\s+(?:cube|block|one))?\s*,?\s+(?:and\s+)?(?:last|lastly|finally|at\s+last)\s+(?:the\s+)?({COLOR_RE})"
                 r"(?:\s+(?:cube|block|one))?\b"),
-     r"\1, then \2, then \3"),
+     r"\1, \2, \3 in that order"),
     # "and finish with a white cube at the top": the last of a sequence
     # only after a sequence ("add yellow, then orange, and finish with white")
     (re.compile(r"\b(?:(and)\s+)?(?:finish|end)(?:\s+(?:it|them|the\s+(?:tower|stack|row|line)))?(?:\s+off)?\s+with\b"),

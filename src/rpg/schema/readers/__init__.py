@@ -133,6 +133,8 @@ def one_colour_for_unnamed(f: Features, schema: TaskSchema) -> TaskSchema:
     back left and the blue one front left, a goal stricter than the words (issue 30); of one colour they are
     interchangeable, and G accepts either in either place.  Where swapping them leaves G as it is ("stack two blocks",
     "both blocks onto the goal patch", "side by side") their colours stay apart."""
+    if re.search(r"\b(?:different|distinct|other|not\s+the\s+same|unlike)\s+colou?rs?\b|\bcolou?rs?\s+(?:differ|that\s+differ)", f.text):
+        return schema  # "..., different colours": their colours are said to differ
     said = {c for i, c in color_mentions(f.text)  # the colours of cubes said (a patch's colour names no cube)
             if not re.match(r"[a-z]+\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|tile|area|zone)\b", f.text[i:])}
     patch_colors = {a.color for a in schema.assets if a.kind == "goal_patch"}  # "each object into its corresponding patch": a

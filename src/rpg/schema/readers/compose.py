@@ -236,7 +236,8 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
     head = heads[0]
     said_last = re.search(rf"(?P<w>\S+)\s*,\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:block|cube|one))?\s*$", part)
     if re.search(rf"\bwith\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:block|cube|one))?\s*$", part) or (
-            said_last and region == "center" and not re.fullmatch(rf"(?:{COLOR_RE})", said_last.group("w"))):
+            said_last and region == "center" and not re.fullmatch(rf"(?:{COLOR_RE})", said_last.group("w"))
+            and re.search(r"\b(?:rows?|lines?|line\s+up)\b", part) and not re.search(r"\b(?:towers?|stacks?|stacked|columns?|piles?)\b", part)):
         return False  # "line up yellow and blue with blue on the left", "two blue and one orange in a row, orange in the
         # centre": the cube's place in the line, not the line's place ("line: red, red, red" at the front is the line's)
     if len(re.findall(rf"\b(?:a|an|one|1|another)\s+(?:[\w-]+\s+){{0,2}}?{_WHOLE_NOUN}", part)) > 1:

@@ -842,8 +842,37 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         kind = {"letters": "letter ", "digits": "digit "}.get(material, "") if not distinct else ""
         b.summary.append(f"{n} {kind}cubes in one straight {({'y': 'left-right ', 'x': 'front-back '}).get(axis, '')}line"
                          + (f" with {names[1]} in the middle" if len(b.preds) > 1 else ""))
+    _middle_kept(f, b)
     b.primitives += ["arrange"]
     return True
+
+
+_COMMA_MIDDLE_RE = re.compile(rf",\s*(?:the\s+)?({COLOR_RE})(?:\s+(?:block|cube|one))?\s+(?:is\s+|goes\s+|sits\s+)?(?:in|at)\s+the\s+"
+                              r"(?:middle|center|centre)\b(?!\s+of\b)")
+"""A cube given a row's middle after a comma ("two blue and one orange in a row, orange in the centre")."""
+
+
+def _middle_kept(f: Features, b: Builder) -> None:
+    """Refuse a row whose middle a comma gives a cube (:data:`_COMMA_MIDDLE_RE`) that the reading does not put there: a
+    cube between the others, or the middle of an ordered row of an odd count, of that colour.
+
+    Raises:
+        ParseError: the middle said is not the reading's (it had been dropped, or a cube made up for it).
+    """
+    said = _COMMA_MIDDLE_RE.search(f.text)
+    if said is None:
+        return
+    mid = canon_color(said.group(1))
+    color_of = {a.name: a.color for a in b.assets}
+    for p in b.preds:
+        if isinstance(p, Between) and color_of.get(p.a) == mid:
+            return
+        if isinstance(p, InLine) and p.order is not None and len(p.objects) % 2 and color_of.get(p.objects[len(p.objects) // 2]) == mid \
+                and sum(color_of.get(o) == mid for o in p.objects) == 1:
+            return
+    raise ParseError(f"'{said.group(0).strip(', ')}' gives a cube the row's middle, and the row read "
+                     f"({'; '.join(b.summary) or 'its cubes'}) does not put it there with the others on each side; "
+                     "say the whole order (e.g. \"from left to right: blue, orange, blue\"), or use --model")
 
 
 SEQ_RELATION_RE = re.compile(r"\b(?:on top of|onto|on|atop|above|over|under|underneath|beneath|below|left|right|"
