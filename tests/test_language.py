@@ -4831,3 +4831,8 @@ def test_cubes_said_to_differ_in_colour_keep_their_colours_and_steps_keep_their_
     assert meaning(parse("put in a row: first the orange, after the purple, last the pink")) == ["line[sequence](orange,purple,pink)"]
     assert meaning(parse("Make a line, from left to right, that starts with the black cube and ends with the white cube, "
                          "with the gray cube in the middle.")) == ["line[left_to_right](black,gray,white)"]
+
+
+def test_two_cubes_placed_then_related_together_are_refused_not_half_read():
+    with pytest.raises(ParseError, match="beyond the builtin parser"):  # red had lost 'left of the blue cube'
+        parse("put the red and green cubes in the front half, left of the blue cube")
