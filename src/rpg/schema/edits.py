@@ -71,6 +71,22 @@ def move_into_workspace(schema: TaskSchema, failure: dict | None = None, stage: 
                                            f"shifted the goal layout by {np.round(shift, 3).tolist()} m", stage))
 
 
+def renamed_doc(schema: TaskSchema, mapping: dict[str, str], color: str) -> dict:
+    """``schema`` as a dict whose assets named in ``mapping`` take their new names and ``color``, renamed consistently
+    in the goal, the goal layout and rho_0 (structures, fixed poses, orientations); the texts are left to the caller."""
+    doc = schema.model_dump()
+    for a in doc["assets"]:
+        if a["name"] in mapping:
+            a["color"], a["name"] = color, mapping[a["name"]]
+    doc["goal"] = schema.goal.rename(mapping)
+    doc["goal_layout"] = {mapping.get(k, k): v for k, v in doc["goal_layout"].items()}
+    init = doc["initial_state"]
+    init["structures"] = [[mapping.get(n, n) for n in st] for st in init["structures"]]
+    init["fixed"] = {mapping.get(k, k): v for k, v in init["fixed"].items()}
+    init["orientations"] = {mapping.get(k, k): v for k, v in init["orientations"].items()}
+    return doc
+
+
 def recolor(schema: TaskSchema, old: str, new: str, merge: bool = False) -> TaskSchema:
     """A colour tweak applied to any task (relations, patches, temporal order): every asset
     of colour ``old`` becomes ``new``, renamed consistently in the goal, layout and rho_0.
@@ -90,16 +106,7 @@ def recolor(schema: TaskSchema, old: str, new: str, merge: bool = False) -> Task
     for a in hits:
         renamed = re.sub(rf"^{re.escape(old)}(?=_|$)", new, a.name)
         mapping[a.name] = renamed if renamed not in names and renamed not in mapping.values() else f"{new}_{a.name}"
-    doc = schema.model_dump()
-    for a in doc["assets"]:
-        if a["color"] == old:
-            a["color"], a["name"] = new, mapping[a["name"]]
-    doc["goal"] = schema.goal.rename(mapping)
-    doc["goal_layout"] = {mapping.get(k, k): v for k, v in doc["goal_layout"].items()}
-    init = doc["initial_state"]
-    init["structures"] = [[mapping.get(n, n) for n in st] for st in init["structures"]]
-    init["fixed"] = {mapping.get(k, k): v for k, v in init["fixed"].items()}
-    init["orientations"] = {mapping.get(k, k): v for k, v in init["orientations"].items()}
+    doc = renamed_doc(schema, mapping, new)
     word = re.compile(rf"\b{re.escape(old)}\b")
     for key in ("instruction", "goal_summary"):
         doc[key] = word.sub(new, doc[key])

@@ -64,6 +64,13 @@ from rpg.schema.reading import (
 from rpg.schema.structures import STRUCTURE_RE, STRUCTURE_WORDS
 
 
+def _cube_colours_said(text: str) -> set[str]:
+    """The colours ``text`` names cubes by: a colour that names a goal patch names no cube ("stack two blocks on the
+    blue patch": any two blocks)."""
+    return {c for i, c in color_mentions(text)
+            if not re.match(r"\S*\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|tile|area|zone)\b", text[i:])}
+
+
 def free_unnamed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
     """A stack none of whose cubes the instruction names, gives a role or relates to anything
     else becomes an :class:`~rpg.domain.predicates.UnorderedStack`: "stack two blocks on top
@@ -74,9 +81,7 @@ def free_unnamed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
     another part of the goal or in a structure rho_0 starts ("reverse the tower") keeps the order."""
     if lexicon.ORDER_WORDS.search(f.text.lower()):
         return schema
-    # a colour that names a goal patch names no cube ("stack two blocks on the blue patch": any two blocks)
-    named = {c for i, c in color_mentions(f.text)
-             if not re.match(r"\S*\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|tile|area)\b", f.text[i:])}
+    named = _cube_colours_said(f.text)
     colors = {a.name: a.color for a in schema.assets if a.kind == "colored_cube"}
     goal = schema.goal_predicate()
     parts = goal.children() if isinstance(goal, And) else [goal]
@@ -131,12 +136,14 @@ def one_colour_for_unnamed(f: Features, schema: TaskSchema) -> TaskSchema:
     """Cubes the instruction names by no colour, given default colours that differ, take one colour when G would tell
     them apart: "put a cube in the back left corner and a cube in the front left corner" had demanded the red cube
     back left and the blue one front left, a goal stricter than the words (issue 30); of one colour they are
-    interchangeable, and G accepts either in either place.  Where swapping them leaves G as it is ("stack two blocks",
-    "both blocks onto the goal patch", "side by side") their colours stay apart."""
+    interchangeable, and G accepts either in either place.  Their colours stay as read where swapping them leaves G as it
+    is ("stack two blocks", "both blocks onto the goal patch", "side by side"), where they are in a predicate other
+    than a place or a relation (:data:`_PLACING`: "a colour gradient" chose them) or a stack rho_0 starts, where a
+    patch of their colour may match them ("its corresponding patch"), where the words say the colours differ, and where
+    one colour would give more interchangeable cubes than :data:`~rpg.domain.predicates.MAX_ASSIGNMENTS` covers."""
     if re.search(r"\b(?:different|distinct|other|not\s+the\s+same|unlike)\s+colou?rs?\b|\bcolou?rs?\s+(?:differ|that\s+differ)", f.text):
         return schema  # "..., different colours": their colours are said to differ
-    said = {c for i, c in color_mentions(f.text)  # the colours of cubes said (a patch's colour names no cube)
-            if not re.match(r"[a-z]+\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|tile|area|zone)\b", f.text[i:])}
+    said = _cube_colours_said(f.text)
     patch_colors = {a.color for a in schema.assets if a.kind == "goal_patch"}  # "each object into its corresponding patch": a
     # cube of a patch's colour may be matched to it by colour
     unnamed = [a for a in schema.assets if a.kind == "colored_cube" and a.color and a.color not in said | patch_colors]
@@ -167,16 +174,9 @@ def one_colour_for_unnamed(f: Features, schema: TaskSchema) -> TaskSchema:
                 k += 1
             mapping[a.name] = f"{colors[0]}_{k}"
             taken.add(mapping[a.name])
-    doc = schema.model_dump()
-    for a in doc["assets"]:
-        if a["name"] in mapping:
-            a["name"], a["color"] = mapping[a["name"]], colors[0]
-    doc["goal"] = goal.rename(mapping)
-    doc["goal_layout"] = {mapping.get(k, k): v for k, v in doc["goal_layout"].items()}
-    init = doc["initial_state"]
-    init["structures"] = [[mapping.get(n, n) for n in st] for st in init["structures"]]
-    init["fixed"] = {mapping.get(k, k): v for k, v in init["fixed"].items()}
-    init["orientations"] = {mapping.get(k, k): v for k, v in init["orientations"].items()}
+    from rpg.schema.edits import renamed_doc
+
+    doc = renamed_doc(schema, mapping, colors[0])
     doc["goal_summary"] = "; ".join(p.describe() for p in doc["goal"].conjuncts())
     doc["paraphrases"] = make_paraphrases(doc["goal_summary"])
     return TaskSchema.model_validate(doc)

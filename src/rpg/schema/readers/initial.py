@@ -285,7 +285,8 @@ _TAKE_OFF_RE = re.compile(
     r"|(?P<bare>(?=\s*(?:[.!;]|$|,?\s+(?:and\s+)?(?:leave|keep)\s+the\s+(?:rest|others?)\b))))")
 """A cube taken off the start's tower and set on the table or beside a cube ("Take the red one off and set it on the
 table", "take off the red cube and put it on the table", "take the orange block off the brown block and set it down next
-to it": 'it' the cube it came off): where the cube goes."""
+to it": 'it' the cube it came off), or taken off or removed and set nowhere else ("Take the red cube off.", "Remove just
+the top cube and leave the rest as is": on the table): where the cube goes."""
 
 
 LEAVE_REST_RE = re.compile(
