@@ -4836,3 +4836,38 @@ def test_cubes_said_to_differ_in_colour_keep_their_colours_and_steps_keep_their_
 def test_two_cubes_placed_then_related_together_are_refused_not_half_read():
     with pytest.raises(ParseError, match="beyond the builtin parser"):  # red had lost 'left of the blue cube'
         parse("put the red and green cubes in the front half, left of the blue cube")
+
+
+@pytest.mark.parametrize("text, expected", [
+    # twenty-fourth session, from stranger34 and stranger33 (each had compiled silently wrong)
+    ("make a red-on-yellow tower on the left side of the table", ["stack(yellow,red)@left"]),  # read as a list, red under
+    ("a green-on-blue-on-red stack", ["stack(red,blue,green)"]),
+    ("Make a tower where the purple cube is on top of the orange cube.", ["stack(orange,purple)"]),  # 'on top' read as an end
+    ("the white cube should be at the top of a three block tower whose bottom cube is gray", ["stack(gray,red,white)"]),
+    ("starting from yellow on cyan on red (red at the bottom), put the yellow and the cyan blocks down on the table",
+     ["on_table(cyan)", "on_table(yellow)", "start:stack(red,cyan,yellow)"]),
+    ("unstack everything: the tower is pink on top of yellow on top of green, and all of them should end up on the table",
+     ["on_table(pink)", "on_table(yellow)", "start:stack(green,yellow,pink)"]),
+    ("Unstack the tower: it is red on blue.", ["on_table(red)", "start:stack(blue,red)"]),
+])
+def test_hyphened_towers_a_cube_s_end_said_first_and_starts_said_with_their_undoing(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text, match", [
+    ("starting from a stack of red on blue", "says where the cubes start"),  # no goal: the start had been the goal
+    ("starting from red on blue", "says where the cubes start"),
+    ("starting from a row of red and blue, put red on blue", "says where the cubes start"),  # a row starts nothing rpg builds
+    ("starting from yellow on cyan on red (red at the top), put the yellow and the cyan blocks down on the table",
+     "starting scene"),  # the parenthesis contradicts the chain
+    ("unstack everything: the tower is pink on top of yellow, and put the green cube on the blue cube",
+     "undoes the start's tower"),  # where pink and yellow end is not said
+])
+def test_a_start_that_cannot_be_read_is_refused_never_read_as_the_goal(text, match):
+    with pytest.raises(ParseError, match=match):
+        parse(text)
+
+
+def test_a_listed_cube_that_starts_on_the_table_keeps_its_place_in_the_goal():
+    schema = parse("Initially yellow is on cyan. Put yellow and cyan on the table")
+    assert {p.a for p in schema.goal_predicate().walk() if type(p).__name__ == "OnTable"} == {"yellow", "cyan"}

@@ -68,7 +68,8 @@ STRANGER_SETS = {
     "stranger31": ("stranger31.yaml", "STRANGER set 31 (stranger31.yaml, development material, read from the twenty-second session's start)"),
     "stranger32": ("stranger32.yaml", "STRANGER set 32 (stranger32.yaml, development material, read from the twenty-third session's start)"),
     "stranger33": ("stranger33.yaml", "STRANGER set 33 (stranger33.yaml, transfer measure of the twenty-third session's start: aggregates only; a helper reported its failure classes mid-session)"),
-    "stranger34": ("stranger34.yaml", "STRANGER set 34 (stranger34.yaml, transfer measure of the twenty-third session's end: aggregates only)"),
+    "stranger34": ("stranger34.yaml", "STRANGER set 34 (stranger34.yaml, development material, read from the twenty-fourth session's start)"),
+    "stranger35": ("stranger35.yaml", "STRANGER set 35 (stranger35.yaml, transfer measure of the twenty-fourth session: aggregates only)"),
 }
 SPLITS = HERE / "splits.yaml"
 

@@ -1781,6 +1781,10 @@ HYPHENED_DIRECTION_RE = re.compile(r"(?i)\b(left|right|front|back|bottom|top)-to
 """A direction written with hyphens ("right-to-left", "bottom-to-top"): its words apart, as the readers read it
 (the direction had been dropped, a sort read left to right)."""
 
+HYPHENED_RELATION_RE = re.compile(rf"(?i)\b({COLOR_RE})-(on|over|atop|above|on-top-of|under|below|beneath)-(?=(?:{COLOR_RE})\b)")
+"""A tower's cubes said as one hyphenated word ("a red-on-yellow tower", "green-on-blue-on-red"): its words apart,
+as the readers read "red on yellow" (it had been read as a list, bottom up: red under yellow)."""
+
 ARROW_DIRECTIONS: dict[tuple[str, str], str] = {
     ("l", "r"): "left to right", ("r", "l"): "right to left", ("f", "b"): "front to back", ("b", "f"): "back to front",
     ("b", "t"): "bottom to top", ("t", "b"): "top to bottom",

@@ -1018,6 +1018,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         original = pattern.sub(written, original).strip()
     original = lexicon.EMOJI_RE.sub(" ", original).strip()
     original = lexicon.HYPHENED_DIRECTION_RE.sub(r"\1 to \2", original)
+    original = lexicon.HYPHENED_RELATION_RE.sub(lambda m: f"{m.group(1)} {m.group(2).replace('-', ' ')} ", original)
     original = lexicon.ARROW_DIRECTION_RE.sub(lexicon.arrow_direction, original)  # "l->r", "bottom -> top"
     original = lexicon.STRUCTURE_NAME_RE.sub(r"\1", original)  # "Tower A: ...", "tower B is pink on gray"
     original = lexicon.MEASURE_WORD_RE.sub(lambda m: f"{m.group(1)} {(m.group('c') or '') + ' ' if m.group('c') else ''}"
@@ -1767,9 +1768,16 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     (re.compile(rf"\b(?:one|1)\s+({TOWER_NOUNS})\s+of\s+{_GROUP.format(i=1)}\s*,?\s+and\s+(?:one|1|another|the\s+other)"
                 rf"(?:\s+{TOWER_NOUNS})?\s+of\s+{_GROUP.format(i=2)}"),
      r"a \1 of \g<n1> \g<c1> blocks and a \1 of \g<n2> \g<c2> blocks"),
-    # roles said as a clause: "where the yellow one is at the top" is "with the yellow block at the top"
+    # the cube first, its place in the tower after: "the white cube should be at the top of a three block tower whose
+    # bottom cube is gray" is the tower with a white block on top (the white cube had gone into the tower's middle)
+    (re.compile(rf"^(?:the\s+)?({COLOR_RE})\s+(?:block|cube)\s+(?:should|must|has\s+to|needs\s+to|will)\s+(?:be|end\s+up|sit)\s+"
+                rf"(?:at|on)\s+the\s+(top|bottom)\s+of\s+((?:a|an|one)\s+(?:{TOWER_NOUNS})\s+of\s+\d+\s+(?:blocks|cubes)\b[^.;!?]*)"),
+     lambda m: f"build {m.group(3)}{' and' if ' with ' in m.group(3) else ' with'} a {m.group(1)} block "
+               f"{'on top' if m.group(2) == 'top' else 'at the bottom'}"),
+    # roles said as a clause: "where the yellow one is at the top" is "with the yellow block at the top" (not "is on
+    # top of the orange cube": a relation, its cube below said)
     (re.compile(rf"\s*,?\s+(?:where|in\s+which|so\s+that|such\s+that)\s+the\s+({COLOR_RE})\s+(block|cube)\s+"
-                rf"(?:is|sits|stands|goes|should\s+be|must\s+be|ends\s+up)\s+(at|on)\s+(?:the\s+)?(top|bottom|base)\b"),
+                rf"(?:is|sits|stands|goes|should\s+be|must\s+be|ends\s+up)\s+(at|on)\s+(?:the\s+)?(top|bottom|base)\b(?!\s+of\b)"),
      r" with the \1 \2 at the \4"),
     # "The green cube must be the bottom one", "..., and the red cube is the top one": a cube given an end (it had been
     # put at the other end)

@@ -362,6 +362,12 @@ def parse(instruction: str, _framed: bool = False) -> TaskSchema:
         except BadInput as exc:  # read as written below, where a reader may read the start itself ("... starts on ...;
             goal_gap = exc       # move it to the table"); a reading as written with no start is refused below
     schema = _read(instruction)
+    claimed = initial.START_CLAIM_RE.search(instruction)
+    if claimed and not schema.initial_state.structures:  # "starting from a row of red and blue, put red on blue"
+        words = re.split(r"\s*[,;:(]\s*", instruction[claimed.start():].strip(" .;!?"))[0][:60]
+        raise ParseError(f"\"{instruction[:80]}\": '{words}' says where the cubes start, and rpg reads no start there (rho_0 "
+                         "starts only stacks of named cubes, and a goal must say where they end up, e.g. \"Starting from red on "
+                         "blue, put red on the table.\"); or use --model")
     if scene is not None and not schema.initial_state.structures:
         # the start's "X is on Y" had become the goal ("Initially yellow is on white. Put both cubes on the table." had
         # compiled to yellow on white: silently wrong): refused as the goal alone is

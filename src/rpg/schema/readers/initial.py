@@ -67,7 +67,8 @@ blue cube onto the red patch"): read as "Initially ... . <goal>" (its tower had 
 _CHAIN_SAID = rf"(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:(?:\s+(?:stacked\s+|sitting\s+|resting\s+)?(?:on\s+top\s+of|on|atop)\s+|-on-)(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?)+"
 FROM_STRUCTURE_RE = re.compile(
     rf"(?i)^\s*(?:(?:(?:starting|beginning)\s+)?from|(?:starting|beginning)\s+with)\s+(?:(?:(?:a|the)\s+(?:tower|stack|column)\s+(?:of\s+)?)?"
-    rf"(?P<fact>{_CHAIN_SAID})|(?:a|the)\s+(?P<fact3>(?:{COLOR_RE})(?:-on-(?:{COLOR_RE}))+)\s+(?:tower|stack|column))\s*[,;:]\s*(?:then\s+)?(?P<goal>.+)$"
+    rf"(?P<fact>{_CHAIN_SAID})|(?:a|the)\s+(?P<fact3>(?:{COLOR_RE})(?:-on-(?:{COLOR_RE}))+)\s+(?:tower|stack|column))"
+    rf"(?:\s*\((?:the\s+)?(?P<end_c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on)\s+(?:the\s+)?(?P<end>bottom|top)\))?\s*[,;:]\s*(?:then\s+)?(?P<goal>.+)$"
     rf"|^\s*with\s+(?P<fact2>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:stacked|sitting|resting|starting)\s+(?:on\s+top\s+of|on|atop)"
     rf"\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?)\s*[,;]\s*(?:then\s+)?(?P<goal2>(?:put|place|move|set|take|bring|stack|unstack|slide"
     r"|push|lift|lay|arrange|line)\b.+)$")
@@ -76,8 +77,33 @@ the white block", "starting with red on blue, ...", "with the red cube stacked o
 "Initially ... . <goal>" (its tower had been read as part of the goal: silently wrong)."""
 
 
+START_CLAIM_RE = re.compile(
+    rf"(?i)(?:^|[.;!?]\s+)\s*(?:starting|beginning)\s+(?:from|with)\s+(?:(?:a|an|the)\s+(?:[\w-]+\s+)?(?:stack|tower|column|row|line|pile)\b"
+    rf"|(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:stacked\s+|sitting\s+|resting\s+)?(?:on\s+top\s+of|on|onto|atop|over)\s+"
+    rf"(?:the\s+|a\s+)?(?:{COLOR_RE})\b)")
+"""A sentence opened by the scene the goal starts from ("Starting from a stack of red on blue, ...", "starting with
+orange stacked on brown"): when :func:`split` reads no start from the text, the parser refuses it (its tower or row had
+been read as the goal: silently wrong)."""
+
+UNSTACK_SAID_RE = re.compile(
+    rf"(?i)^\s*(?:please\s+)?(?:unstack|dismantle|disassemble|take\s+apart)\s+(?:everything|it\s+all|all\s+of\s+it|the\s+(?:tower|stack))"
+    rf"\s*[:,\-\u2014]\s*(?:the\s+(?:tower|stack)\s+is|it\s+is|it's)\s+(?P<fact>{_CHAIN_SAID})\s*(?:[.;,]\s*(?:and\s+)?(?P<goal>.+?))?\s*[.!]?$")
+"""The undoing said first, the tower it undoes after ("unstack everything: the tower is pink on top of yellow on top of
+green, and all of them should end up on the table"): read as "Initially <tower>. <goal>", every cube on the table when
+no goal follows (the start's tower had been read as the goal: silently wrong); another goal besides is refused by
+:func:`split` (where the undone cubes end is not said)."""
+
+
+def _unstack_said(m: re.Match) -> str:
+    return f"Initially {m.group('fact')}. {m.group('goal') or 'put all the cubes on the table.'}"
+
+
 def _from_structure(m: re.Match) -> str:
     fact = (m.group("fact") or m.group("fact2") or m.group("fact3")).replace("-on-", " on ")
+    end = m.group("end")  # "(red at the bottom)": kept in the fact when it is not the chain's end (refused there)
+    if end and not re.search(rf"(?i)\b{re.escape(m.group('end_c'))}(?:\s+(?:cube|block))?\s*$" if end == "bottom"
+                             else rf"(?i)^\s*(?:the\s+)?{re.escape(m.group('end_c'))}\b", fact):
+        fact = f"{fact} ({m.group('end_c')} at the {end})"
     return f"Initially {fact}. {m.group('goal') or m.group('goal2')}"
 
 
@@ -122,6 +148,14 @@ ON_TABLE_GOAL_RE = re.compile(
     rf"|(?:off|from)\s+(?:of\s+)?(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?(?:\s+and)?)\s+)*(?:on|onto)\s+the\s+table\s*[.!]?$")
 """A goal that only sends a cube to the table ("the pink cube must end up on the table", "put
 red on the table"): read here, where the start stacks that cube (alone it asks nothing)."""
+
+_LISTED = rf"(?:the\s+)?(?:(?:letter|digit|number)\s+)?(?:block\s+|cube\s+)?{_NAME}(?:\s+(?:cube|block|one))?"
+ON_TABLE_LIST_GOAL_RE = re.compile(
+    rf"(?i)^\s*(?:(?:put|place|move|set|lay|take|bring|get|lower|return)\s+)?(?:both\s+)?(?P<list>{_LISTED}(?:\s*,\s*{_LISTED})*"
+    rf"\s*,?\s+(?:and|&)\s+{_LISTED})(?:\s+(?:cubes|blocks|ones))?\s+(?:(?:must|should|have\s+to|need\s+to|will)\s+)?"
+    r"(?:(?:be|end\s+up|finish|stay|go|sit|lie|rest|placed|are|back|down|both|all)\s+)*(?:on|onto)\s+the\s+table\s*[.!]?$")
+"""A goal that sends several cubes the start stacks to the table, listed ("put the yellow and the cyan blocks down on the
+table", "red and blue must end up on the table"): each listed cube on the table."""
 
 _TOWER_IN_RE = re.compile(
     rf"(?i)(?:\ban?\s+|\bone\s+)?\b(?:stack|tower|column)\s+(?:of\s+)?(?:(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?))?"
@@ -340,6 +374,13 @@ def split(instruction: str) -> InitialScene | None:
     instruction = ROBOT_STARTS_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     instruction = FROM_START_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     instruction = FROM_STRUCTURE_RE.sub(_from_structure, instruction.strip())
+    undone = UNSTACK_SAID_RE.match(instruction.strip())
+    if undone and undone.group("goal") and not ALL_ON_TABLE_GOAL_RE.match(undone.group("goal")):
+        raise Inexpressible("time", [re.split(r"\s*[:,;\-\u2014]\s*", undone.group(0).strip())[0][:40]],
+                            "undoes the start's tower and asks another goal besides: where each of the tower's cubes must "
+                            "end up is not said; say it (e.g. \"Initially pink is on yellow. Put pink on the table and the "
+                            "green cube on the blue cube.\")", instruction)
+    instruction = UNSTACK_SAID_RE.sub(_unstack_said, instruction.strip())
     instruction = START_STRUCTURE_RE.sub(r"Initially: a \1 of ", instruction.strip())
     unstack = _UNSTACK_RE.match(instruction.strip())
     if unstack:
@@ -481,13 +522,19 @@ def on_table_goal(scene: InitialScene) -> TaskSchema | None:
 
     every = ALL_ON_TABLE_GOAL_RE.match(scene.goal)
     m = None if every else ON_TABLE_GOAL_RE.match(scene.goal)
-    if m is None and every is None:
+    listed = None if every or m else ON_TABLE_LIST_GOAL_RE.match(scene.goal)
+    if m is None and every is None and listed is None:
         return None
     said = every.group("n") if every else None
     if said and NUMBER_WORDS.get(said, int(said) if said.isdigit() else 0) != sum(len(st) for st in scene.stacks):
         return None  # "all four cubes on the table" of a start of three: not these cubes
-    colors = [c for s in scene.stacks for c in s[1:]] if every else [canon_color(m.group("c"))]
-    if not colors or not all(any(c in s[1:] for s in scene.stacks) for c in colors):
+    colors = [c for s in scene.stacks for c in s[1:]] if every else [canon_color(m.group("c"))] if m else \
+        [_canon(c) for c in re.findall(rf"\b{_NAME}", listed.group("list"))]
+    if len(set(colors)) != len(colors):
+        return None  # a cube listed twice: read as written
+    if listed and all(any(c in s for s in scene.stacks) for c in colors) and any(c in s[1:] for s in scene.stacks for c in colors):
+        pass  # a listed cube that starts on the table stays there (the others move: the goal does not hold at the start)
+    elif not colors or not all(any(c in s[1:] for s in scene.stacks) for c in colors):
         return None  # it starts on the table: the goal would hold before anything moved
     b = Builder(scene.goal)
     for c, xy in zip(colors, b.unit_centers(len(colors)), strict=True):
