@@ -4871,3 +4871,38 @@ def test_a_start_that_cannot_be_read_is_refused_never_read_as_the_goal(text, mat
 def test_a_listed_cube_that_starts_on_the_table_keeps_its_place_in_the_goal():
     schema = parse("Initially yellow is on cyan. Put yellow and cyan on the table")
     assert {p.a for p in schema.goal_predicate().walk() if type(p).__name__ == "OnTable"} == {"yellow", "cyan"}
+
+
+@pytest.mark.parametrize("text, expected", [
+    # what success requires, and when the goal holds, said around it (their words had been unknown)
+    ("Success requires both white cubes to be on the black patch.", ["on_patch(white,white,patch:black)"]),
+    ("Task T3 requires arranging digit cubes 1-3 in ascending order from left to right", ["line[left_to_right](1,2,3)"]),
+    ("The yellow cube is placed behind the green patch in the final state.", ["behind(yellow,patch:green)"]),
+    ("build a wall of eight grey blocks, four along and two high", ["wall(gray,gray,gray,gray,gray,gray,gray,gray)"]),
+    # a row with one end named, a row said by its middle and its sides, a tower's one middle cube counted
+    ("arange four blocks in a row, the leftmost one cyan", ["line[left_to_right](cyan,red,red,red)"]),
+    ("put 4 cubes in a line; the rightmost one must be red", ["line[left_to_right](blue,blue,blue,red)"]),
+    ("a row of three with the blue cube in the middle, red on its left and green on its right", ["line[left_to_right](red,blue,green)"]),
+    ("tower: brown bottom, pink top, one gray block between them", ["stack(brown,gray,pink)"]),
+])
+def test_requirements_final_states_row_ends_and_a_counted_middle(text, expected):
+    schema = parse(text)
+    assert sorted(meaning(schema)) == expected
+    from rpg.schema.citations import uncited
+    assert uncited(schema) == []
+
+
+@pytest.mark.parametrize("text", [
+    "Success requires that red is not on blue",  # the negation is still read
+    "the red cube is on blue in the final state of the previous run",  # a reference is still read
+    "a wall of 6 cubes, 3 across and 3 high",  # 9 cubes, not 6
+    "a row of three with the blue cube in the middle, red on its left and green on its left",
+])
+def test_requirements_and_row_roles_that_contradict_or_refer_are_still_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)
+
+
+def test_a_row_s_unnamed_cubes_share_one_colour_so_any_may_stand_anywhere():
+    schema = parse("a row of four blocks with a cyan block on the far left")
+    assert sorted(a.color for a in schema.assets) == ["cyan", "red", "red", "red"]

@@ -2906,7 +2906,20 @@ OUTCOME_VERB_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 )
 """A motion said by its outcome ("cover the green patch with the red block", "slide it until it touches ..."): the relation it ends in."""
 
+_REQUIRER = r"(?:^|(?<=[.!?;:]\s))(?:success|completion|(?:the\s+)?(?:\w+\s+)?(?:task|goal|test|episode)(?:\s+[a-z]*\d[\w-]*)?)\s+(?:requires|needs|demands)\s+"
 GOAL_FRAME_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "Success requires the pink cube to be placed on the table", "Task T3 requires arranging ...", "success requires that
+    # ...": what success requires is the goal (its words had been unknown: refused)
+    (re.compile(_REQUIRER + r"(?=\w+ing\b)"), "the task is "),
+    (re.compile(_REQUIRER + r"(?:that\s+)?(?=[^.;!?]*?\s+(?:to\s+be|be|is|are)\s)(?P<np>[^.;!?]*?)\s+(?:to\s+be|be)\s+"),
+     r"\g<np> must be "),
+    (re.compile(_REQUIRER + r"that\s+"), ""),
+    # "a wall of 6 cubes, 3 across and 2 high", "four along and two high": its width ('across' and 'along' had been unknown)
+    (re.compile(rf"\b(\d+|{'|'.join(NUMBER_WORDS)})\s+(?:blocks?\s+|cubes?\s+)?(?:across|along)\s+"
+                rf"(?=(?:and|by|x)\s+(?:\d+|{'|'.join(NUMBER_WORDS)})\s+(?:blocks?\s+|cubes?\s+)?(?:high|tall)\b)"), r"\1 wide "),
+    # "... behind the green patch in the final state": when the goal holds (every goal is checked at the episode's end)
+    (re.compile(r"\s*,?\s+(?:in|at)\s+the\s+(?:final|end|goal|target)\s+(?:state|scene|configuration)(?=\s*[.!;]?\s*$)"), ""),
+    (re.compile(r"^\s*(?:in|at)\s+the\s+(?:final|end|goal|target)\s+(?:state|scene|configuration)\s*,\s*"), ""),
     # "the task is done when the pink cube is on the red patch": the end state that completes it is the goal
     (re.compile(r"(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:task|job|episode|run|it|you)\s*(?:is|are|'s|'re)\s+(?:done|finished|complete|completed"
                 r"|over|successful|solved|a\s+success)\s+(?:when|once|as\s+soon\s+as|if)\s+"), ""),
@@ -3623,8 +3636,9 @@ LABEL_ARTICLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 TOWER_BETWEEN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\b(?:goes\s+|is\s+|sits\s+|stands\s+)?in\s+between\b(?!\s+(?:the|them|those|these|of|a|an|it|each)\b)"),
      "in the middle"),
-    # "a tower with cyan at the bottom and red at the top, with the blue cube between them": its middle
-    (re.compile(rf"(?:(?<=\bwith\s)|(?<=,\sand\s)|(?<=,\s))((?:the\s+|an?\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?)\s+(?:in\s+)?between\s+"
+    # "a tower with cyan at the bottom and red at the top, with the blue cube between them", "..., one gray block between
+    # them": its middle
+    (re.compile(rf"(?:(?<=\bwith\s)|(?<=,\sand\s)|(?<=,\s))(?:1\s+|one\s+)?((?:the\s+|an?\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?)\s+(?:in\s+)?between\s+"
                 r"(?:them|those\s+two|the\s+two)\b"
                 rf"(?=\s*[.!]?\s*$)"),
      r"\1 in the middle"),

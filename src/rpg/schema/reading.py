@@ -1599,6 +1599,44 @@ def _line_roles(m: re.Match) -> str:
     return ": from left to right: " + ", ".join([left] + [middle] * n + [right])  # colour so that any of them may stand there
 
 
+_ROW_END_NAMED_RE = re.compile(
+    rf"\b(?P<row>(?:row|line)\s+of\s+(?P<n>\d+)\s+(?:cubes|blocks)|(?P<n2>\d+)\s+(?:cubes|blocks)\s+in\s+(?:a|one)\s+(?:row|line))"
+    rf"(?:\s*[,;:]\s*(?:and\s+)?|\s+with\s+)(?:(?:the\s+)?(?:far\s+)?(?P<e>left|right)(?:\s+(?:1|one|block|cube))?\s+"
+    rf"(?:is\s+|being\s+|(?:should|must)\s+be\s+)?(?:an?\s+)?(?P<c>{COLOR_RE})(?:\s+(?:1|one|block|cube))?"
+    rf"|(?:a|an|the)\s+(?P<c2>{COLOR_RE})\s+(?:block|cube|1|one)\s+(?:on|at)\s+the\s+(?:far\s+)?(?P<e2>left|right)(?:\s+end)?)"
+    r"(?=\s*(?:[.;!]|$))")
+"""A row of a count with only one end's cube named ("arrange four blocks in a row, the leftmost one cyan", "a row of four
+blocks with a cyan block on the far left"): read as that row from left to right, the other cubes of one colour that no
+word names, so that any of them may stand in any other place (the end's cube had been counted as the whole row: refused)."""
+
+
+def _row_end_named(m: re.Match) -> str:
+    n = int(m.group("n") or m.group("n2"))
+    if n < 2:
+        return m.group(0)
+    end, color = (m.group("e"), m.group("c")) if m.group("c") else (m.group("e2"), m.group("c2"))
+    named = {canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", m.string)}
+    other = next(c for c in DEFAULT_COLORS if c not in named)
+    cubes = [color] + [other] * (n - 1) if end == "left" else [other] * (n - 1) + [color]
+    return f"{m.group('row')}: from left to right: " + ", ".join(cubes)
+
+
+_SIDE_OF_MIDDLE = rf"(?:the\s+|an?\s+)?(?P<{{c}}>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:is\s+)?(?:on|to)\s+(?:its|the)\s+(?P<{{s}}>left|right)(?:\s+of\s+it)?"
+_MIDDLE_AND_SIDES_RE = re.compile(
+    rf"\b(?P<row>(?:row|line)(?:\s+of\s+3(?:\s+(?:cubes|blocks))?)?)(?:\s*[,:]\s*|\s+with\s+)(?:the\s+|an?\s+)?(?P<m>{COLOR_RE})(?:\s+(?:cube|block|one))?"
+    rf"\s+(?:is\s+)?in\s+the\s+(?:middle|center|centre)\s*,?\s+(?:and\s+|with\s+)?{_SIDE_OF_MIDDLE.format(c='a', s='sa')}\s*,?\s+(?:and\s+)?"
+    rf"{_SIDE_OF_MIDDLE.format(c='b', s='sb')}(?=\s*(?:[.;!]|$))")
+"""A row of three said by its middle and each side of it ("a row of three with the blue cube in the middle, red on its left
+and green on its right"): read as that row from left to right (it had found no task)."""
+
+
+def _middle_and_sides(m: re.Match) -> str:
+    if {m.group("sa"), m.group("sb")} != {"left", "right"}:
+        return m.group(0)
+    left, right = (m.group("a"), m.group("b")) if m.group("sa") == "left" else (m.group("b"), m.group("a"))
+    return f"{m.group('row')}: from left to right: {left}, {m.group('m')}, {right}"
+
+
 _MIDDLE_OF_ODD_ROW_RE = re.compile(
     rf"\b(?P<s>row|line)\s+of\s+(?P<n>\d+)\s+(?:cubes|blocks)\s*,?\s+(?:with\s+)?(?:the\s+|an?\s+)?(?P<m>{COLOR_RE})(?:\s+(?:cube|block|one))?"
     rf"\s+(?:exactly\s+|right\s+|dead\s+)?in\s+the\s+(?:middle|center|centre)\s*,?\s+and\s+(?:the\s+)?(?:others|rest|other\s+(?:\d+\s+)?"
@@ -1619,6 +1657,8 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     # "a line: purple on the far left, cyan on the far right, and two gray blocks in between": the ends and the middle
     (_LINE_ROLES_RE, _line_roles),
     (_MIDDLE_OF_ODD_ROW_RE, _middle_of_odd_row),
+    (_ROW_END_NAMED_RE, _row_end_named),
+    (_MIDDLE_AND_SIDES_RE, _middle_and_sides),
     # "stack four cubes; the bottom one is blue, the top one is red and the two in between are green": every cube
     # (the middle's count had reached one cube, the other made up)
     (_ROLE_CLAUSES_RE, _role_clauses),

@@ -117,7 +117,7 @@ GOAL_OPENER_RE = re.compile(r"(?i)^\s*(?:(?:the\s+)?(?:goal|target|task|objectiv
                             r"|then\s*,?|now\s*,?|your\s+task\s*(?:is\s+to|:)|(?:at|in)\s+the\s+end\s*[,:]?|finally\s*,?"
                             r"|(?:unstack|dismantle|take\s+apart)\s+(?:it|them|the\s+(?:tower|stack))\s*,?\s*so\s+(?:that\s+)?"
                             r"|take\s+(?:it|them|the\s+(?:tower|stack))\s+apart\s*,?\s*so\s+(?:that\s+)?"
-                            r"|success(?:\s+(?:when|if))?\s*:?)\s*")
+                            r"|success(?!\s+(?:requires|needs|demands)\b)(?:\s+(?:when|if))?\s*:?)\s*")
 """Words that open the goal after the start ("Goal: ...", "Then ...", "The task is to ...")."""
 
 _REL_ON = r"(?:(?:is|sits|lies|rests|stands|starts|begins)\s+(?:initially\s+|out\s+)?)?(?:stacked\s+|placed\s+|sitting\s+|resting\s+)?(?:on\s+top\s+of|on|atop|upon)"
