@@ -4906,3 +4906,41 @@ def test_requirements_and_row_roles_that_contradict_or_refer_are_still_refused(t
 def test_a_row_s_unnamed_cubes_share_one_colour_so_any_may_stand_anywhere():
     schema = parse("a row of four blocks with a cyan block on the far left")
     assert sorted(a.color for a in schema.assets) == ["cyan", "red", "red", "red"]
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("put a cube in each of the four corners",  # unnamed: four cubes of one colour, any in any corner
+     ["in_region(red,back_left)", "in_region(red,back_right)", "in_region(red,front_left)", "in_region(red,front_right)"]),
+    ("the stack should be three blocks tall with a purple block somewhere in it", ["stack(purple,red,red)"]),
+    ("the blocks start stacked green, yellow, pink from bottom to top. unstack them all so every block is on the table",
+     ["on_table(pink)", "on_table(yellow)", "start:stack(green,yellow,pink)"]),
+    ("from a stack of brown, gray, red (bottom to top), remove the top two blocks and set them on the table",
+     ["on_table(gray)", "on_table(red)", "start:stack(brown,gray,red)"]),
+    ("initially the white cube is on the black cube. swap them so the black one ends on top",
+     ["stack(white,black)", "start:stack(black,white)"]),
+    ("the letter cubes should spell HAT along the back edge, left to right",
+     ["line[left_to_right](H,A,T)@back", "reads(H,A,T;direction=left_to_right,face=up,text=HAT)"]),
+    ("the bottom of the tower is green and the top is blue, with nothing in between", ["stack(green,blue)"]),
+    ("given a red cube sitting on a blue cube, put a green cube on the red cube", ["stack(red,green)", "start:stack(blue,red)"]),
+])
+def test_unnamed_corners_a_cube_somewhere_in_a_tower_and_more_starts(text, expected):
+    schema = parse(text)
+    assert sorted(meaning(schema)) == expected
+    from rpg.schema.citations import uncited
+    assert uncited(schema) == []
+
+
+def test_a_tower_with_a_cube_somewhere_in_it_leaves_the_order_free():
+    assert type(parse("a tower of four cubes, one of them purple").goal_predicate()).__name__ == "UnorderedStack"
+
+
+@pytest.mark.parametrize("text", [
+    "initially the white cube is on the black cube. swap them so the white one ends on top",  # contradicts the swap
+    "Initially red is on blue and blue is on green. swap them",  # which two is not said
+    "a tower of three with green at the bottom and blue on top, nothing in between",  # three, and nothing between two
+    "put red next to blue with nothing in between",  # a negation still
+    "from a stack of brown, gray, red (bottom to top), remove the top three blocks",  # the whole stack: no 'top' ones
+])
+def test_swaps_and_top_cubes_that_do_not_fit_the_start_are_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)

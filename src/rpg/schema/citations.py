@@ -55,8 +55,9 @@ ORDER_CUE = re.compile(
 """Words that give named cubes places in an order or in roles."""
 
 SELF_ORDERING = re.compile(r"\b(?:rainbow|gradient|alternat\w*|alphabet\w*|sort\w*|ascending|descending|"
-                           r"increasing|decreasing|reverse\w*|spell\w*|words?|equation|reads?|reading)\b")
-"""Words that fix an order of their own, without naming each cube's place ("so they read KATE")."""
+                           r"increasing|decreasing|reverse\w*|swap\w*|switch\w*|spell\w*|words?|equation|reads?|reading)\b")
+"""Words that fix an order of their own, without naming each cube's place ("so they read KATE", "swap them": the start's
+order reversed)."""
 
 ROLE_CUES = {
     "bottom": re.compile(r"\b(?:bottom|base|lowest|bottommost|foundation|start\w*|begin\w*)\b"),

@@ -2917,6 +2917,10 @@ GOAL_FRAME_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "a wall of 6 cubes, 3 across and 2 high", "four along and two high": its width ('across' and 'along' had been unknown)
     (re.compile(rf"\b(\d+|{'|'.join(NUMBER_WORDS)})\s+(?:blocks?\s+|cubes?\s+)?(?:across|along)\s+"
                 rf"(?=(?:and|by|x)\s+(?:\d+|{'|'.join(NUMBER_WORDS)})\s+(?:blocks?\s+|cubes?\s+)?(?:high|tall)\b)"), r"\1 wide "),
+    # "..., with nothing in between" after a tower's two ends: the two cubes are the tower (its negation had been refused)
+    (re.compile(r"\s*,?\s*(?:and\s+|with\s+)?nothing\s+(?:else\s+)?(?:in\s+)?between(?:\s+(?:them|the\s+two))?(?=\s*[.!]?\s*$)"),
+     lambda m: "" if re.search(r"\b(?:tower|stack)\b", m.string) and re.search(r"\b(?:bottom|base)\b", m.string)
+     and re.search(r"\btop\b", m.string) and not re.search(rf"\b(?:\d+|{'|'.join(NUMBER_WORDS)})\b", m.string) else m.group(0)),
     # "... behind the green patch in the final state": when the goal holds (every goal is checked at the episode's end)
     (re.compile(r"\s*,?\s+(?:in|at)\s+the\s+(?:final|end|goal|target)\s+(?:state|scene|configuration)(?=\s*[.!;]?\s*$)"), ""),
     (re.compile(r"^\s*(?:in|at)\s+the\s+(?:final|end|goal|target)\s+(?:state|scene|configuration)\s*,\s*"), ""),
@@ -3657,8 +3661,8 @@ def _tower_and_more(m: re.Match) -> str:
 TOWER_MORE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "the top block of the tower should be green and the bottom one cyan, three blocks total": the goal's tower
     # described, not one the speaker sees (it had been refused as a reference); only where the text begins so
-    (re.compile(r"^(?:the\s+)?(top|bottom|base)\s+(?:block|cube|one)\s+of\s+the\s+(tower|stack)\s+(?=(?:should|must|has\s+to|needs\s+to|will)"
-                r"\s+be\b)"),
+    (re.compile(r"^(?:the\s+)?(top|bottom|base)(?:\s+(?:block|cube|one))?\s+of\s+the\s+(tower|stack)\s+(?=(?:(?:should|must|has\s+to|needs\s+to|will)"
+                r"\s+be|is)\b)"),
      r"in a \2, the \1 block "),
     # "a tower with the red cube at the bottom and two more cubes (of any colour) on it": a tower of three, red at the
     # bottom, the others free (the two had been read as more red cubes)

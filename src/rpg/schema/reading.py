@@ -1637,6 +1637,24 @@ def _middle_and_sides(m: re.Match) -> str:
     return f"{m.group('row')}: from left to right: {left}, {m.group('m')}, {right}"
 
 
+_ONE_CUBE_IN_TOWER_RE = re.compile(
+    rf"\b(?P<s>tower|stack|column)\s+(?:of|(?:should|must|will)\s+be|is)\s+(?P<n>\d+)\s+(?:blocks|cubes)(?:\s+(?:tall|high))?\s*,?\s+"
+    rf"(?:with\s+(?:a|an|1)\s+(?P<c>{COLOR_RE})\s+(?:block|cube|one)\s+in\s+it|(?:1|one)\s+of\s+(?:them|which)\s+(?:is\s+)?(?P<c2>{COLOR_RE}))"
+    r"(?=\s*(?:[.;!]|$))")
+"""A tower of a count with one cube of a colour somewhere in it ("the stack should be three blocks tall with a purple block
+somewhere in it", "a tower of four cubes, one of them purple"): that cube and the others of one colour no word names,
+in any order (it had found no task)."""
+
+
+def _one_cube_in_tower(m: re.Match) -> str:
+    n = int(m.group("n"))
+    if n < 2:
+        return m.group(0)
+    named = {canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", m.string)}
+    other = next(c for c in DEFAULT_COLORS if c not in named)
+    return f"{m.group('s')} of 1 {m.group('c') or m.group('c2')} block and {n - 1} {other} blocks, in any order"
+
+
 _MIDDLE_OF_ODD_ROW_RE = re.compile(
     rf"\b(?P<s>row|line)\s+of\s+(?P<n>\d+)\s+(?:cubes|blocks)\s*,?\s+(?:with\s+)?(?:the\s+|an?\s+)?(?P<m>{COLOR_RE})(?:\s+(?:cube|block|one))?"
     rf"\s+(?:exactly\s+|right\s+|dead\s+)?in\s+the\s+(?:middle|center|centre)\s*,?\s+and\s+(?:the\s+)?(?:others|rest|other\s+(?:\d+\s+)?"
@@ -1654,11 +1672,17 @@ def _middle_of_odd_row(m: re.Match) -> str:
 
 
 STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
+    # "spell HAT along the back edge, left to right": the reading direction said last goes before the place (the place
+    # had been dropped, refused)
+    (re.compile(r"\b(spell\s+\S+)\s+((?:on|at|along|in)\s+the\s+(?:front|back|left|right|middle|cent(?:er|re))(?:\s+(?:edge|side|half|part))?"
+                r"(?:\s+of\s+the\s+table)?)\s*,?\s*((?:from\s+)?(?:left|right|front|back)\s+to\s+(?:right|left|front|back))(?=\s*(?:[.!;]|$))"),
+     r"\1 \3 \2"),
     # "a line: purple on the far left, cyan on the far right, and two gray blocks in between": the ends and the middle
     (_LINE_ROLES_RE, _line_roles),
     (_MIDDLE_OF_ODD_ROW_RE, _middle_of_odd_row),
     (_ROW_END_NAMED_RE, _row_end_named),
     (_MIDDLE_AND_SIDES_RE, _middle_and_sides),
+    (_ONE_CUBE_IN_TOWER_RE, _one_cube_in_tower, True),
     # "stack four cubes; the bottom one is blue, the top one is red and the two in between are green": every cube
     # (the middle's count had reached one cube, the other made up)
     (_ROLE_CLAUSES_RE, _role_clauses),

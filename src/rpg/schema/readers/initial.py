@@ -64,16 +64,21 @@ FROM_START_RE = re.compile(
 """A start said as the scene a goal starts from ("From a start where blue sits on yellow, move the
 blue cube onto the red patch"): read as "Initially ... . <goal>" (its tower had been read as the goal)."""
 
-_CHAIN_SAID = rf"(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:(?:\s+(?:stacked\s+|sitting\s+|resting\s+)?(?:on\s+top\s+of|on|atop)\s+|-on-)(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?)+"
+_CHAIN_SAID = rf"(?:the\s+|an?\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:(?:\s+(?:stacked\s+|sitting\s+|resting\s+)?(?:on\s+top\s+of|on|atop)\s+|-on-)(?:the\s+|an?\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?)+"
+_LISTED_CUBE = rf"(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?"
+_LIST_SAID = rf"{_LISTED_CUBE}(?:\s*,\s*(?:and\s+)?{_LISTED_CUBE}|\s+and\s+{_LISTED_CUBE})+"
 FROM_STRUCTURE_RE = re.compile(
-    rf"(?i)^\s*(?:(?:(?:starting|beginning)\s+)?from|(?:starting|beginning)\s+with)\s+(?:(?:(?:a|the)\s+(?:tower|stack|column)\s+(?:of\s+)?)?"
-    rf"(?P<fact>{_CHAIN_SAID})|(?:a|the)\s+(?P<fact3>(?:{COLOR_RE})(?:-on-(?:{COLOR_RE}))+)\s+(?:tower|stack|column))"
+    rf"(?i)^\s*(?:(?:(?:starting|beginning)\s+)?from|(?:starting|beginning)\s+with|given)\s+(?:(?:(?:a|the)\s+(?:tower|stack|column)\s+(?:of\s+)?)?"
+    rf"(?P<fact>{_CHAIN_SAID})|(?:a|the)\s+(?P<fact3>(?:{COLOR_RE})(?:-on-(?:{COLOR_RE}))+)\s+(?:tower|stack|column)"
+    rf"|(?P<fact4>(?:a|the)\s+(?:tower|stack|column)\s+of\s+{_LIST_SAID}\s*\(\s*(?:from\s+)?(?:the\s+)?(?:bottom|top)\s+(?:to|up\s+to|down\s+to)"
+    r"\s+(?:the\s+)?(?:top|bottom)\s*\)))"
     rf"(?:\s*\((?:the\s+)?(?P<end_c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on)\s+(?:the\s+)?(?P<end>bottom|top)\))?\s*[,;:]\s*(?:then\s+)?(?P<goal>.+)$"
     rf"|^\s*with\s+(?P<fact2>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:stacked|sitting|resting|starting)\s+(?:on\s+top\s+of|on|atop)"
     rf"\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?)\s*[,;]\s*(?:then\s+)?(?P<goal2>(?:put|place|move|set|take|bring|stack|unstack|slide"
     r"|push|lift|lay|arrange|line)\b.+)$")
 """A start said as the structure or the state a goal starts from ("from the tower of pink on cyan, put pink next to
-the white block", "starting with red on blue, ...", "with the red cube stacked on the blue cube, move ..."): read as
+the white block", "starting with red on blue, ...", "from a stack of brown, gray, red (bottom to top), ...", "with the
+red cube stacked on the blue cube, move ..."): read as
 "Initially ... . <goal>" (its tower had been read as part of the goal: silently wrong)."""
 
 
@@ -99,7 +104,7 @@ def _unstack_said(m: re.Match) -> str:
 
 
 def _from_structure(m: re.Match) -> str:
-    fact = (m.group("fact") or m.group("fact2") or m.group("fact3")).replace("-on-", " on ")
+    fact = (m.group("fact") or m.group("fact2") or m.group("fact3") or m.group("fact4")).replace("-on-", " on ")
     end = m.group("end")  # "(red at the bottom)": kept in the fact when it is not the chain's end (refused there)
     if end and not re.search(rf"(?i)\b{re.escape(m.group('end_c'))}(?:\s+(?:cube|block))?\s*$" if end == "bottom"
                              else rf"(?i)^\s*(?:the\s+)?{re.escape(m.group('end_c'))}\b", fact):
@@ -115,8 +120,8 @@ the goal, and the goal's cube lost)."""
 
 GOAL_OPENER_RE = re.compile(r"(?i)^\s*(?:(?:the\s+)?(?:goal|target|task|objective)\s*(?:is\s*(?:to\s+)?|:|-|\u2014)"
                             r"|then\s*,?|now\s*,?|your\s+task\s*(?:is\s+to|:)|(?:at|in)\s+the\s+end\s*[,:]?|finally\s*,?"
-                            r"|(?:unstack|dismantle|take\s+apart)\s+(?:it|them|the\s+(?:tower|stack))\s*,?\s*so\s+(?:that\s+)?"
-                            r"|take\s+(?:it|them|the\s+(?:tower|stack))\s+apart\s*,?\s*so\s+(?:that\s+)?"
+                            r"|(?:unstack|dismantle|take\s+apart)\s+(?:(?:it|them)(?:\s+all)?|all\s+of\s+(?:it|them)|everything|the\s+(?:tower|stack))\s*,?\s*so\s+(?:that\s+)?"
+                            r"|take\s+(?:(?:it|them)(?:\s+all)?|all\s+of\s+(?:it|them)|everything|the\s+(?:tower|stack))\s+apart\s*,?\s*so\s+(?:that\s+)?"
                             r"|success(?!\s+(?:requires|needs|demands)\b)(?:\s+(?:when|if))?\s*:?)\s*")
 """Words that open the goal after the start ("Goal: ...", "Then ...", "The task is to ...")."""
 
@@ -333,7 +338,7 @@ LEAVE_REST_RE = re.compile(
 stay where they are"): those cubes' stack is part of the goal (:attr:`InitialScene.kept`)."""
 
 
-UNDO_START_RE = re.compile(r"(?i)^\s*(?:please\s+)?(?:unstack|dismantle|take\s+apart|disassemble)\s+(?:it|them|the\s+(?:tower|stack))"
+UNDO_START_RE = re.compile(r"(?i)^\s*(?:please\s+)?(?:unstack|dismantle|take\s+apart|disassemble)\s+(?:(?:it|them)(?:\s+all)?|all\s+of\s+(?:it|them)|everything|the\s+(?:tower|stack))"
                            r"\s*[.!]?\s*$|^\s*take\s+(?:it|the\s+(?:tower|stack))\s+apart\s*[.!]?\s*$")
 """A goal sentence that only undoes the start's stack ("Unstack the tower."): every cube on the table, or, when
 another goal sentence follows, what that one says."""
@@ -474,12 +479,41 @@ def _start_ends_named(sentences: list[str]) -> list[str]:
     def named(m: re.Match) -> str:
         return f"the {stacks[0][-1] if m.group('top') or m.group('top2') else stacks[0][0]} cube"
 
-    return [s if START_SENTENCE_RE.match(s) or STARTS_FACT_RE.match(s) else _START_END_RE.sub(named, s) for s in sentences]
+    def top_ones(m: re.Match) -> str:  # "remove the top two blocks and set them on the table": those cubes to the table
+        n = int(NUMBER_WORDS.get(m.group("n").lower(), m.group("n")))
+        if not 1 < n < len(stacks[0]):
+            return m.group(0)
+        return "put " + " and ".join(f"the {c}" for c in stacks[0][-n:]) + " cubes on the table"
+
+    def swapped(m: re.Match) -> str:  # "swap them so the black one ends on top": the start's stack of two reversed
+        if len(stacks[0]) != 2 or (m.group("c") and _canon(m.group("c").lower() if len(m.group("c")) > 1 else m.group("c"))
+                                   != stacks[0][0 if m.group("top") else 1]):
+            return m.group(0)  # a taller stack (which two is not said), or the 'so that' contradicting the swap: as written
+        return f"put the {stacks[0][0]} cube on the {stacks[0][1]} cube"
+
+    return [s if START_SENTENCE_RE.match(s) or STARTS_FACT_RE.match(s) else
+            _START_END_RE.sub(named, _SWAP_START_RE.sub(swapped, _TOP_ONES_OFF_RE.sub(top_ones, s))) for s in sentences]
+
+
+_SWAP_START_RE = re.compile(
+    r"(?i)^\s*(?:then\s+)?(?:swap|switch|reverse|flip)\s+(?:them|the\s+two(?:\s+(?:cubes|blocks))?|the\s+(?:cubes|blocks)|their\s+order"
+    r"|the\s+(?:tower|stack)|the\s+order)(?:\s*,?\s*so\s+(?:that\s+)?(?:the\s+)?(?P<c>" + _NAME + r")(?:\s+(?:cube|block|one))?\s+"
+    r"(?:ends?\s+(?:up\s+)?|is\s+|sits\s+|goes\s+)(?:on\s+(?P<top>top)|at\s+the\s+(?P<bottom>bottom)))?\s*[.!]?\s*$")
+"""A goal that swaps the start's stack of two ("swap them so the black one ends on top"): its bottom cube put on its top
+one; a 'so that' naming the cube that ends on top (or at the bottom) must agree with the swap."""
+
+
+_TOP_ONES_OFF_RE = re.compile(
+    r"(?i)^\s*(?:then\s+)?(?:remove|take\s+off|take|lift\s+off|lift)\s+the\s+top\s+(?P<n>two|three|2|3)\s+(?:blocks|cubes|ones)(?:\s+off)?"
+    r"(?:\s+(?:of\s+)?(?:the\s+)?(?:tower|stack))?(?:\s*,?\s*(?:and\s+)?(?:then\s+)?(?:set|put|place|lay|leave)\s+(?:them|both)\s+(?:down\s+)?"
+    r"(?:on|onto)\s+the\s+table)?\s*[.!]?\s*$")
+"""A goal that takes the start's one stack's top cubes off ("remove the top two blocks and set them on the table"): those
+cubes, named, sent to the table (:data:`ON_TABLE_LIST_GOAL_RE`)."""
 
 
 ALL_ON_TABLE_GOAL_RE = re.compile(
-    r"(?i)^\s*(?:(?:unstack|dismantle|take\s+apart)\s+(?:it|them|the\s+(?:tower|stack))\s*,?\s*(?:and\s+|so\s+(?:that\s+)?)?"
-    r"|take\s+(?:it|them|the\s+(?:tower|stack))\s+apart\s*,?\s*(?:and\s+|so\s+(?:that\s+)?)?)?"
+    r"(?i)^\s*(?:(?:unstack|dismantle|take\s+apart)\s+(?:(?:it|them)(?:\s+all)?|all\s+of\s+(?:it|them)|everything|the\s+(?:tower|stack))\s*,?\s*(?:and\s+|so\s+(?:that\s+)?)?"
+    r"|take\s+(?:(?:it|them)(?:\s+all)?|all\s+of\s+(?:it|them)|everything|the\s+(?:tower|stack))\s+apart\s*,?\s*(?:and\s+|so\s+(?:that\s+)?)?)?"
     r"(?:(?:put|place|set|lay|leave|get)\s+)?(?:both|all|every|each|the)(?:\s+(?:of\s+the\s+)?(?P<n>two|three|four|five|six|\d+))?\s+(?:of\s+)?(?:the\s+)?"
     r"(?:cubes|blocks|cube|block|ones|of\s+them|them)?\s*(?:(?:must|should|have\s+to|need\s+to|will)\s+)?(?:(?:be|end\s+up|ends\s+up"
     r"|sit|sits|sitting|stand|stands|standing|lie|lies|lying|rest|rests|resting|placed|are|is|go|stay)\s+){0,2}"

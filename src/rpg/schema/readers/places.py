@@ -61,11 +61,11 @@ def recognize_move_to_region(f: Features, b: Builder) -> bool:
 
 
 EACH_CORNER_RE = re.compile(
-    rf"(?:place|put|set|move|position)\s+(?:(?P<one>a|an|1)\s+(?P<c>{COLOR_RE})\s+(?:block|cube|box)"
+    rf"(?:place|put|set|move|position)\s+(?:(?P<one>a|an|1)\s+(?:(?P<c>{COLOR_RE})\s+)?(?:block|cube|box)"
     rf"|(?P<n>4)\s+(?:(?P<c4>{COLOR_RE})\s+)?(?:blocks|cubes|boxes),?\s+(?:1|one))"
     r"\s+(?:in|at|on|into)\s+(?:each|every)\s+(?:1\s+)?(?:of\s+the\s+(?:4\s+)?)?corners?(?:\s+of\s+the\s+(?:table|workspace))?\s*[.!]?")
 """One cube in each corner of the table: "put a red block in each corner", "place 4 cubes, one
-in each corner"."""
+in each corner", "put a cube in each of the four corners" (no colour said: four cubes of one colour)."""
 
 
 @reader(order=11)
