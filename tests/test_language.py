@@ -4944,3 +4944,30 @@ def test_a_tower_with_a_cube_somewhere_in_it_leaves_the_order_free():
 def test_swaps_and_top_cubes_that_do_not_fit_the_start_are_refused(text):
     with pytest.raises(ParseError):
         parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Task: build a tower with the letter cubes so that reading from the top down it says CUP",
+     ["reads(C,U,P;direction=top_to_bottom,face=front,text=CUP)", "stack(P,U,C)"]),
+    ("digits 9, 4, 7: put them in a row, biggest on the left", ["line[left_to_right](9,7,4)"]),  # the heading is the cubes
+    ("place a cube in the front left corner and another one in the back right corner",
+     ["in_region(red,back_right)", "in_region(red,front_left)"]),  # one cube had been put in both corners
+    ("put a red cube on the blue patch and another one on the green patch", ["on_patch(red,patch:blue)", "on_patch(red,patch:green)"]),
+    ("a tower of green on red, and next to the tower a single yellow block", ["next_to(red,yellow)", "stack(red,green)"]),
+    ("unstack the three-block tower (red, white, black from the bottom up) so all three blocks are on the table",
+     ["on_table(black)", "on_table(white)", "start:stack(red,white,black)"]),
+    ("take the top cube off the stack of white, gray, brown (white at the bottom) and put it on the table",
+     ["on_table(brown)", "start:stack(white,gray,brown)"]),
+])
+def test_says_a_heading_of_cubes_another_one_a_fronted_place_and_starts_listed_in_the_goal(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "unstack the two-block tower (red, white, black from the bottom up) so all the blocks are on the table",  # 2 is not 3
+    "take the top cube off the stack of white, gray, brown and put it on the table",  # which end is the top: not said
+    "take the top cube off the stack of white, gray, brown (gray at the bottom) and put it on the table",  # gray is no end
+])
+def test_a_start_listed_in_the_goal_that_miscounts_or_leaves_its_top_unsaid_is_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)

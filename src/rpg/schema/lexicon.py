@@ -2921,6 +2921,16 @@ GOAL_FRAME_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\s*,?\s*(?:and\s+|with\s+)?nothing\s+(?:else\s+)?(?:in\s+)?between(?:\s+(?:them|the\s+two))?(?=\s*[.!]?\s*$)"),
      lambda m: "" if re.search(r"\b(?:tower|stack)\b", m.string) and re.search(r"\b(?:bottom|base)\b", m.string)
      and re.search(r"\btop\b", m.string) and not re.search(rf"\b(?:\d+|{'|'.join(NUMBER_WORDS)})\b", m.string) else m.group(0)),
+    # "place a cube in the front left corner and another one in the back right corner": another cube (one cube had been
+    # put in both corners: refused as a contradiction)
+    (re.compile(rf"\b((?:a|an|one)\s+(?:(?P<c>{COLOR_RE})\s+)?(?P<n>cube|block)\b[^.;!?]*?\banother)\s+one\b"),
+     lambda m: f"{m.group(1)} {m.group('c') + ' ' if m.group('c') else ''}{m.group('n')}"),
+    # "a tower of green on red, and next to the tower a single yellow block": the cube said after the place it goes
+    (re.compile(rf"\b(next\s+to|beside|(?:to\s+the\s+)?(?:left|right)\s+of|in\s+front\s+of|behind)\s+(the\s+(?:tower|stack|row|line|pile))\s*,?\s+"
+                rf"(?:put\s+|place\s+|goes\s+|sits\s+|stands\s+|there\s+is\s+)?(?:a|one|a\s+single|1)\s+(?:single\s+)?({COLOR_RE})\s+(block|cube)(?=\s*[.!;]?\s*$)"),
+     r"a \3 \4 \1 \2"),
+    # "so that reading from the top down it says CUP": it spells the word
+    (re.compile(r"(\bread(?:ing|s)?\b[^.;!?]{0,40}?\b(?:it|they))\s+says?\b"), r"\1 spells"),
     # "... behind the green patch in the final state": when the goal holds (every goal is checked at the episode's end)
     (re.compile(r"\s*,?\s+(?:in|at)\s+the\s+(?:final|end|goal|target)\s+(?:state|scene|configuration)(?=\s*[.!;]?\s*$)"), ""),
     (re.compile(r"^\s*(?:in|at)\s+the\s+(?:final|end|goal|target)\s+(?:state|scene|configuration)\s*,\s*"), ""),

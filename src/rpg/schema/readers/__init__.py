@@ -301,6 +301,8 @@ def _identifier_label(instruction: str) -> tuple[str, str] | None:
                for w in words):
         return None
     body = m.group("body")
+    if re.search(r"(?i)\b(?:them|they|those|these)\b", body) and len(re.findall(r"\d", m.group("label"))) > 1:
+        return None  # "digits 9, 4, 7: put them in a row ...": the cubes the body refers to (no identifier)
     if m.group("params"):  # "spell-word [word=SUN]: letter cubes in a row": the parameter's words join the text
         key, _, value = (p.strip() for p in m.group("params").partition("="))
         said = lexicon.LABEL_PARAMS.get(key.lower())

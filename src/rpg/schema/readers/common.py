@@ -193,7 +193,7 @@ def spelled_word(f: Features) -> str | None:
     m = re.search(r"\bword\s+'?([A-Za-z]{2,})'?", f.original, re.IGNORECASE)
     if m:
         return m.group(1).upper()
-    m = re.search(r"\b(?:read|reads|reading|show|shows|showing)\s+'?([A-Z]{2,})'?(?![A-Za-z])", f.original)
+    m = re.search(r"\b(?:read|reads|reading|show|shows|showing|say|says|saying)\s+'?([A-Z]{2,})'?(?![A-Za-z])", f.original)
     if m:
         return m.group(1)
     return None

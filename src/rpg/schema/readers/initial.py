@@ -99,6 +99,20 @@ no goal follows (the start's tower had been read as the goal: silently wrong); a
 :func:`split` (where the undone cubes end is not said)."""
 
 
+TAKE_FROM_LISTED_RE = re.compile(
+    rf"(?i)^\s*(?P<verb>take|remove|lift)\s+the\s+top\s+(?:cube|block|one)\s+off\s+(?:of\s+)?the\s+(?P<s>stack|tower)\s+of\s+(?P<list>{_LIST_SAID})"
+    rf"\s*(?:\(\s*(?:(?P<end_c>{COLOR_RE})\s+(?:is\s+)?(?:at|on)\s+the\s+(?P<end>bottom|top)|(?P<dir>(?:from\s+)?(?:the\s+)?(?:bottom|top)\s+"
+    rf"(?:up|down|to\s+(?:the\s+)?(?:top|bottom))))\s*\))(?P<rest>\s*,?\s*(?:and\s+)?(?:then\s+)?(?:put|set|place|lay|leave)\s+it\b.*)$")
+"""A cube taken off a stack that the same sentence lists with its order ("take the top cube off the stack of white, gray,
+brown (white at the bottom) and put it on the table"): read as "Initially a stack of ... . Take the top cube off and put
+it ..." (a list without its order leaves the top cube unsaid: not read here)."""
+
+
+def _take_from_listed(m: re.Match) -> str:
+    order = f" {m.group('dir')}" if m.group("dir") else f", with {m.group('end_c')} at the {m.group('end')}" if m.group("end") else ""
+    return f"Initially a {m.group('s')} of {m.group('list')}{order}. {m.group('verb')} the top cube off{m.group('rest')}"
+
+
 def _unstack_said(m: re.Match) -> str:
     return f"Initially {m.group('fact')}. {m.group('goal') or 'put all the cubes on the table.'}"
 
@@ -362,7 +376,9 @@ _UNSTACK_RE = re.compile(
     rf"(?i)^\s*(?:please\s+)?unstack\s+(?:the\s+)?(?:(?:tower|stack)\s+(?:of\s+)?(?P<a>(?:{COLOR_RE})(?:\s+on(?:\s+top\s+of)?\s+(?:{COLOR_RE}))+)"
     rf"|(?P<b>(?:{COLOR_RE})(?:-on-(?:{COLOR_RE}))+)\s+(?:tower|stack)"
     rf"|(?:tower|stack)\s*\(\s*(?P<c>(?:from\s+)?(?:the\s+)?(?:bottom|top)\s+(?:to|up\s+to|down\s+to)\s+(?:the\s+)?(?:top|bottom)\s*:\s*"
-    rf"(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})|\s+and\s+(?:{COLOR_RE}))+)\s*\))"
+    rf"(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})|\s+and\s+(?:{COLOR_RE}))+)\s*\)"
+    rf"|(?:(?P<dn>two|three|four|five|six|[2-6])[\s-](?:block|cube)\s+)?(?:tower|stack)\s*\(\s*(?P<d>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})|\s+and\s+(?:{COLOR_RE}))+\s*,?\s*"
+    rf"(?:from\s+)?(?:the\s+)?(?:bottom|top)\s+(?:up|down|to\s+(?:the\s+)?(?:top|bottom)))\s*\))"
     rf"\s*,?\s*(?:so\s+(?:that\s+)?|and\s+(?:then\s+)?)(?P<goal>.+)$")
 """The start said by the verb that undoes it ("Unstack the yellow-on-white tower so both cubes sit on
 the table"): the tower named is rho_0's stack, what follows the goal."""
@@ -386,13 +402,17 @@ def split(instruction: str) -> InitialScene | None:
                             "end up is not said; say it (e.g. \"Initially pink is on yellow. Put pink on the table and the "
                             "green cube on the blue cube.\")", instruction)
     instruction = UNSTACK_SAID_RE.sub(_unstack_said, instruction.strip())
+    instruction = TAKE_FROM_LISTED_RE.sub(_take_from_listed, instruction.strip())
     instruction = START_STRUCTURE_RE.sub(r"Initially: a \1 of ", instruction.strip())
     unstack = _UNSTACK_RE.match(instruction.strip())
     if unstack:
         listed = unstack.group("c")  # "Unstack the tower (bottom to top: green, yellow, red) so ...": that tower
         said = f"a tower of {listed.split(':')[1].strip()} from the {listed.split(':')[0].split()[-3 if listed.startswith('from') else 0]}" \
-            if listed else (unstack.group("a") or unstack.group("b")).replace("-", " ")
+            if listed else f"a tower of {unstack.group('d')}" if unstack.group("d") else (unstack.group("a") or unstack.group("b")).replace("-", " ")
         stacks = _facts(said)
+        counted = unstack.group("dn") and NUMBER_WORDS.get(unstack.group("dn").lower(), unstack.group("dn"))
+        if stacks and counted and int(counted) != sum(len(st) for st in stacks):
+            return None  # "the two-block tower (red, white, black ...)": read as written (refused)
         return InitialScene(tuple(stacks), unstack.group("goal")) if stacks else None
     clause = STARTS_CLAUSE_RE.match(instruction.strip())
     if clause:
