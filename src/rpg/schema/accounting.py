@@ -497,6 +497,10 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
             used = sorted({c.name for p in goal for c in type(p).__mro__ if "name" in vars(c)} & set(m.predicates))
             if not used and "stack" in m.predicates and schema.initial_state.structures:
                 used = ["initial_state.structures"]  # "starting from a stack of red on blue"
+            if used == ["grid"] and re.search(r"\b(?:tower|stack|column)s?\b", m.words) and (
+                    re.search(r"\b(?:walls?|grids?|squares?|arrays?|\d+x\d+)\b", text)
+                    or not any(isinstance(p, P.Grid) and p.layers > 1 for p in goal)):
+                used = []  # "a wall 3 wide and 2 high and a red on blue tower": the tower is not the wall (it had been dropped)
             if not used:
                 raise UnaccountedMention(f"the {m.words} it names has no part in the task read")
             record.append({"mention": m.words, "kind": "structure", "consumed_by": ", ".join(used)})

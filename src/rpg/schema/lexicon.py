@@ -582,6 +582,10 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("size", rf"\b(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge|giant|mini)\s+"
              rf"(?:{'|'.join(COLORS)}|grey)(?=\s*(?:$|[,.;!?]|(?:on|onto|under|below|next|beside|behind|to|in|at|and|one)\b))",
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
+    # "a big-on-small tower": sizes said as the tower's cubes (they had been dropped: a tower of two made-up cubes)
+    ("size", r"\b(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge)\s*[-\u2013]?\s*(?:on|over|atop|under|below)"
+             r"\s*[-\u2013]?\s*(?:the\s+)?(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge)\b",
+     "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
 )
 """Meaning the domain cannot express, by class: (class, pattern over the lower-cased text,
 why; a group named ``w``, where it matched, holds the words to name).  An instruction that
@@ -1781,9 +1785,58 @@ HYPHENED_DIRECTION_RE = re.compile(r"(?i)\b(left|right|front|back|bottom|top)-to
 """A direction written with hyphens ("right-to-left", "bottom-to-top"): its words apart, as the readers read it
 (the direction had been dropped, a sort read left to right)."""
 
-HYPHENED_RELATION_RE = re.compile(rf"(?i)\b({COLOR_RE})-(on|over|atop|above|on-top-of|under|below|beneath)-(?=(?:{COLOR_RE})\b)")
-"""A tower's cubes said as one hyphenated word ("a red-on-yellow tower", "green-on-blue-on-red"): its words apart,
-as the readers read "red on yellow" (it had been read as a list, bottom up: red under yellow)."""
+HYPHENED_RELATION_RE = re.compile(r"(?i)(?<!\w)([a-z]+|\d)\s*[-\u2013\u2014]\s*(on|over|atop|above|on-top-of|under|below|beneath)\s*[-\u2013\u2014]\s*"
+                                  r"(?=([a-z]+|\d)(?![\w]))")
+"""A tower's cubes said as one hyphenated word ("a red-on-yellow tower", "green-on-blue-on-red", "red - on - yellow", a
+typo "red-on-yelow", digit cubes "1-on-2"): its words apart, as the readers read "red on yellow" (it had been read as a
+list, bottom up: red under yellow); see :func:`hyphened_relation`."""
+
+
+COUNTED_TOWER_SAID_RE = re.compile(
+    rf"(?i)\b(a|an|one|the)\s+(\d+|two|three|four|five|six)[-\s](?:block|cube)s?\s+((?:{COLOR_RE})(?:\s+(?:on|over|atop|on\s+top\s+of|under|below|beneath)"
+    rf"\s+(?:{COLOR_RE}))*)\s+(tower|stack|column)\b")
+"""A tower's count and its colour or chain said before its noun ("a three-block red-on-yellow tower", "a 3-block red
+tower"): read as "a 3 block tower of red on yellow", whose count the readers check against the chain (it had been
+dropped: a tower of two, or no task)."""
+
+DIGIT_CHAIN_TOWER_RE = re.compile(r"(?i)\b(?:a|an|the)\s+(\d(?:\s*[-\u2013]?\s*(?:on|over|atop|on-top-of)\s*[-\u2013]?\s*\d)+)\s+(tower|stack|column)\b")
+"""A tower of digit cubes said as a chain before its noun ("a 1-on-2 tower", "a 3 on 1 on 2 stack"): read as "a tower of
+the 1 cube on the 2 cube" (the labels had been dropped: a tower of two made-up cubes); see :func:`digit_chain_tower`."""
+
+
+def digit_chain_tower(m: re.Match) -> str:
+    digits = re.findall(r"\d", m.group(1))
+    return f"a {m.group(2)} of " + " on ".join(f"the {d} cube" for d in digits)
+
+
+def hyphened_relation(m: re.Match) -> str:
+    """The words of :data:`HYPHENED_RELATION_RE`'s match apart, when both ends are cubes' names (a colour, a colour's
+    misspelling, a digit); the match as written otherwise."""
+    import difflib
+
+    def cube_word(w: str) -> bool:
+        return w.isdigit() or w.lower() in COLORS or bool(difflib.get_close_matches(w.lower(), COLORS, n=1, cutoff=0.8))
+
+    if not (cube_word(m.group(1)) and cube_word(m.group(3))):
+        return m.group(0)
+    if m.group(1).isdigit() or m.group(3).isdigit():  # "a 1-on-2 tower": digit cubes, read by DIGIT_CHAIN_TOWER_RE
+        return m.group(0)
+    return f"{m.group(1)} {m.group(2).replace('-', ' ')} "
+
+_CHAIN_WORDS = rf"(?:{COLOR_RE})\s+(?:on|on\s+top\s+of|atop|over|under|below|beneath)\s+(?:the\s+)?(?:{COLOR_RE})"
+A_TOWER_RE = re.compile(rf"\b(?:a|an|one|another|second)\s+(?:{_CHAIN_WORDS}(?:\s+(?:on|under)\s+(?:{COLOR_RE}))*\s+(?:tower|stack|column)"
+                        rf"|(?:tower|stack|column)\s+of\s+{_CHAIN_WORDS})\b")
+"""A tower said as one of its own by its chain ("a red on yellow tower", "another tower of blue on red"): each asks for a
+tower of its own."""
+
+
+TABLE_SAID_RE = re.compile(
+    rf"\b(?:(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?|(?P<p>it|them))\s+(?:(?:must|should|will|has\s+to|needs\s+to)\s+)?"
+    r"(?:(?:be|end\s+up|ends\s+up|stay|stays|go|goes|sit|sits|lie|lies|rest|rests|placed|is|back|down|directly|flat)\s+)*"
+    r"(?:on|onto)\s+the\s+table\b")
+"""A cube said to end on the table ("put red on the table", "the red cube must end up on the table", "put it on the table":
+``p``, a pronoun): where the goal stacks every cube of that colour (of a pronoun: any cube) on another, the words contradict each other (refused by the relational reader); where the
+start stacks it, the goal takes it off (:func:`rpg.schema.readers.initial.attach`)."""
 
 ARROW_DIRECTIONS: dict[tuple[str, str], str] = {
     ("l", "r"): "left to right", ("r", "l"): "right to left", ("f", "b"): "front to back", ("b", "f"): "back to front",
@@ -2929,6 +2982,13 @@ GOAL_FRAME_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b(next\s+to|beside|(?:to\s+the\s+)?(?:left|right)\s+of|in\s+front\s+of|behind)\s+(the\s+(?:tower|stack|row|line|pile))\s*,?\s+"
                 rf"(?:put\s+|place\s+|goes\s+|sits\s+|stands\s+|there\s+is\s+)?(?:a|one|a\s+single|1)\s+(?:single\s+)?({COLOR_RE})\s+(block|cube)(?=\s*[.!;]?\s*$)"),
      r"a \3 \4 \1 \2"),
+    # "right now", "right away": a time, not the right side of the table ("... on the blue cube right now" had put red on
+    # the right of blue)
+    (re.compile(r"\bright\s+(?:(now)|away)\b"), lambda m: m.group(1) or ""),
+    # "arranging ... in a row, then stacking them": a later step said as a gerund is a step (it had been dropped)
+    (re.compile(r"\b(then|and\s+then|after\s+that|afterwards)\s+(stack|plac|putt|lin|arrang|build|mak|mov|pil)ing\b"),
+     lambda m: f"{m.group(1)} " + {"stack": "stack", "plac": "place", "putt": "put", "lin": "line", "arrang": "arrange", "build": "build",
+                                   "mak": "make", "mov": "move", "pil": "pile"}[m.group(2)]),
     # "so that reading from the top down it says CUP": it spells the word
     (re.compile(r"(\bread(?:ing|s)?\b[^.;!?]{0,40}?\b(?:it|they))\s+says?\b"), r"\1 spells"),
     # "... behind the green patch in the final state": when the goal holds (every goal is checked at the episode's end)

@@ -1018,7 +1018,9 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         original = pattern.sub(written, original).strip()
     original = lexicon.EMOJI_RE.sub(" ", original).strip()
     original = lexicon.HYPHENED_DIRECTION_RE.sub(r"\1 to \2", original)
-    original = lexicon.HYPHENED_RELATION_RE.sub(lambda m: f"{m.group(1)} {m.group(2).replace('-', ' ')} ", original)
+    original = lexicon.HYPHENED_RELATION_RE.sub(lexicon.hyphened_relation, original)
+    original = lexicon.DIGIT_CHAIN_TOWER_RE.sub(lexicon.digit_chain_tower, original)
+    original = lexicon.COUNTED_TOWER_SAID_RE.sub(r"\1 \2 block \4 of \3", original)
     original = lexicon.ARROW_DIRECTION_RE.sub(lexicon.arrow_direction, original)  # "l->r", "bottom -> top"
     original = lexicon.STRUCTURE_NAME_RE.sub(r"\1", original)  # "Tower A: ...", "tower B is pink on gray"
     original = lexicon.MEASURE_WORD_RE.sub(lambda m: f"{m.group(1)} {(m.group('c') or '') + ' ' if m.group('c') else ''}"
@@ -1638,12 +1640,13 @@ def _middle_and_sides(m: re.Match) -> str:
 
 
 _ONE_CUBE_IN_TOWER_RE = re.compile(
-    rf"\b(?P<s>tower|stack|column)\s+(?:of|(?:should|must|will)\s+be|is)\s+(?P<n>\d+)\s+(?:blocks|cubes)(?:\s+(?:tall|high))?\s*,?\s+"
+    rf"\b(?P<s>tower|stack|column|row|line)\s+(?:of|(?:should|must|will)\s+be|is)\s+(?P<n>\d+)\s+(?:blocks|cubes)(?:\s+(?:tall|high|long))?\s*,?\s+"
     rf"(?:with\s+(?:a|an|1)\s+(?P<c>{COLOR_RE})\s+(?:block|cube|one)\s+in\s+it|(?:1|one)\s+of\s+(?:them|which)\s+(?:is\s+)?(?P<c2>{COLOR_RE}))"
+    rf"(?:\s*,?\s+and\s+(?:a|an|the|1)\s+(?P<e>{COLOR_RE})\s+(?:block|cube|one)\s+(?:(?P<top>on\s+top|at\s+the\s+top)|at\s+the\s+(?:bottom|base)))?"
     r"(?=\s*(?:[.;!]|$))")
-"""A tower of a count with one cube of a colour somewhere in it ("the stack should be three blocks tall with a purple block
-somewhere in it", "a tower of four cubes, one of them purple"): that cube and the others of one colour no word names,
-in any order (it had found no task)."""
+"""A tower or a row of a count with one cube of a colour somewhere in it ("the stack should be three blocks tall with a
+purple block somewhere in it", "a tower of four cubes, one of them purple", "a row of four cubes, one of them purple"):
+that cube and the others of one colour no word names, in any order (it had found no task, or made every cube purple)."""
 
 
 def _one_cube_in_tower(m: re.Match) -> str:
@@ -1652,6 +1655,12 @@ def _one_cube_in_tower(m: re.Match) -> str:
         return m.group(0)
     named = {canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", m.string)}
     other = next(c for c in DEFAULT_COLORS if c not in named)
+    if m.group("e"):  # "... and a green block on top": that end said, the rest in any order
+        if n < 3 or m.group("s") in ("row", "line"):
+            return m.group(0)
+        end = "on top" if m.group("top") else "at the bottom"
+        return (f"{m.group('s')} of 1 {m.group('c') or m.group('c2')} block, {n - 2} {other} blocks and 1 {m.group('e')} block, "
+                f"with the {m.group('e')} block {end}, in any order")
     return f"{m.group('s')} of 1 {m.group('c') or m.group('c2')} block and {n - 1} {other} blocks, in any order"
 
 
@@ -1682,7 +1691,7 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     (_MIDDLE_OF_ODD_ROW_RE, _middle_of_odd_row),
     (_ROW_END_NAMED_RE, _row_end_named),
     (_MIDDLE_AND_SIDES_RE, _middle_and_sides),
-    (_ONE_CUBE_IN_TOWER_RE, _one_cube_in_tower, True),
+    (_ONE_CUBE_IN_TOWER_RE, _one_cube_in_tower),
     # "stack four cubes; the bottom one is blue, the top one is red and the two in between are green": every cube
     # (the middle's count had reached one cube, the other made up)
     (_ROLE_CLAUSES_RE, _role_clauses),
@@ -1772,8 +1781,9 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     # "a 4-high white stack", "a 3 block tall cyan tower", "a four-story tower": the count and
     # the colour are the whole tower's ("a green 3-high tower" too)
     (re.compile(rf"\b(a|an|one|1|the)\s+({COLOR_RE})\s+(\d+)\s+{HEIGHT_WORDS}\s+({TOWER_NOUNS})\b"), r"\1 \4 of \3 \2 blocks"),
-    (re.compile(rf"\b(a|an|one|1|the)\s+(\d+)\s+{HEIGHT_WORDS}\s+(?:({COLOR_RE})\s+)?({TOWER_NOUNS})\b"),
-     r"\1 \4 of \2 \3 blocks"),
+    (re.compile(rf"\b(a|an|one|1|the)\s+(\d+)\s+{HEIGHT_WORDS}\s+(?:({COLOR_RE})\s+)?({TOWER_NOUNS})\b"
+                rf"(?!\s+of\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:on|onto|atop|over|under|below|beneath)\b)"),
+     r"\1 \4 of \2 \3 blocks"),  # (not "a 3 block tower of red on yellow": its chain is not the count's colour)
     # "two 3-high towers of green blocks": towers of that height each
     (re.compile(rf"\b(\d+)\s+(\d+)\s+{HEIGHT_WORDS}\s+({TOWER_NOUNS})s\b(?:\s+of\s+({COLOR_RE})\s+(?:blocks|cubes|bricks))?"),
      r"\1 \3s of \2 \4 blocks"),
@@ -1857,6 +1867,13 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     (re.compile(rf"(?:\s*[,.;]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)(?:make\s+(?:sure\s+)?(?:that\s+)?)?the\s+(?:bottom|lowest|base|bottommost)"
                 rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?({COLOR_RE})"
                 rf"(?:\s+(?:block|cube|one|1))?\b"), r" with a \1 block at the bottom"),
+    # "..., with one cube in between": a middle cube of a colour no word names (it had been dropped: a tower of two)
+    (re.compile(r"\b(?:with\s+)?(?:1|a|an)\s+(?:other\s+|more\s+)?(?:cube|block)\s+in\s+the\s+middle\b"),
+     lambda m: "with a " + next(c for c in DEFAULT_COLORS if not re.search(rf"\b{c}\b", m.string)) + " block in the middle", True),
+    # "... and the middle block is blue": the middle cube's colour (it had been dropped: a tower of two)
+    (re.compile(rf"(?:\s*[,.;]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)(?:make\s+(?:sure\s+)?(?:that\s+)?)?the\s+(?:middle|center|centre)"
+                rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?({COLOR_RE})"
+                rf"(?:\s+(?:block|cube|one|1))?\b"), r" with a \1 block in the middle", True),
 ))
 """Ways of describing a tower, rewritten to the form the readers take ("a tower of N <colour>
 blocks"): a count or colour before the structure noun is the whole structure's, a group

@@ -22,6 +22,7 @@ from rpg.domain.predicates import (
     region_boxes,
 )
 from rpg.domain.state import Pose
+from rpg.schema import lexicon
 from rpg.schema.builder import DEFAULT_COLORS, Builder
 from rpg.schema.lexicon import COLOR_RE, REF_PREP, VOCAB
 from rpg.schema.model import RepairRecord
@@ -501,3 +502,17 @@ def tower_order(f: Features) -> bool | None:
     if order is None:
         return None
     return order[1] != bool(re.search(r"\btop to bottom\b|\bgoing down\b|\bdownwards?\b", f.text))
+
+
+def refuse_towers_merged(text: str, original: str, towers: int) -> None:
+    """Refuse a reading of ``towers`` towers (one or more) where ``text`` asks for more, each said as one of its own
+    (:data:`rpg.schema.lexicon.A_TOWER_RE`: "a red-on-yellow tower and a blue-on-red tower" had become one tower, the red cube shared).
+
+    Raises:
+        ParseError: naming both counts.
+    """
+    said = len(lexicon.A_TOWER_RE.findall(text))
+    if said > towers >= 1:
+        raise ParseError(f"\"{original[:80]}\" asks for {said} towers, and its cubes make {towers}: a colour said in two "
+                         "towers names one cube; give the towers different colours or count the cubes (e.g. \"two red "
+                         "cubes\"), or use --model")

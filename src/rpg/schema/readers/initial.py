@@ -17,7 +17,7 @@ import re
 from dataclasses import dataclass
 
 from rpg.domain.layouts import stack_layout
-from rpg.domain.predicates import Stack
+from rpg.domain.predicates import OnTable, Stack
 from rpg.errors import BadInput
 from rpg.schema import lexicon
 from rpg.schema.builder import Builder
@@ -68,11 +68,13 @@ _CHAIN_SAID = rf"(?:the\s+|an?\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:(?:\s+
 _LISTED_CUBE = rf"(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?"
 _LIST_SAID = rf"{_LISTED_CUBE}(?:\s*,\s*(?:and\s+)?{_LISTED_CUBE}|\s+and\s+{_LISTED_CUBE})+"
 FROM_STRUCTURE_RE = re.compile(
-    rf"(?i)^\s*(?:(?:(?:starting|beginning)\s+)?from|(?:starting|beginning)\s+with|given)\s+(?:(?:(?:a|the)\s+(?:tower|stack|column)\s+(?:of\s+)?)?"
+    rf"(?i)^\s*(?:(?:(?:starting|beginning|start|begin)(?:\s+out)?\s+)?from|(?:starting|beginning|start|begin)(?:\s+out)?\s+with|given)\s*:?\s+"
+    rf"(?:(?:(?:a|the)\s+(?:tower|stack|column)\s+(?:of\s+)?)?"
     rf"(?P<fact>{_CHAIN_SAID})|(?:a|the)\s+(?P<fact3>(?:{COLOR_RE})(?:-on-(?:{COLOR_RE}))+)\s+(?:tower|stack|column)"
     rf"|(?P<fact4>(?:a|the)\s+(?:tower|stack|column)\s+of\s+{_LIST_SAID}\s*\(\s*(?:from\s+)?(?:the\s+)?(?:bottom|top)\s+(?:to|up\s+to|down\s+to)"
     r"\s+(?:the\s+)?(?:top|bottom)\s*\)))"
-    rf"(?:\s*\((?:the\s+)?(?P<end_c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on)\s+(?:the\s+)?(?P<end>bottom|top)\))?\s*[,;:]\s*(?:then\s+)?(?P<goal>.+)$"
+    rf"(?:\s*\((?:the\s+)?(?P<end_c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on)\s+(?:the\s+)?(?P<end>bottom|top)\))?\s*(?:[,;:.]|\s+and(?=\s+(?:then\s+)?(?:put|place|move|set|take|stack|unstack|build|make|lay|bring|slide"
+    rf"|push|lift|get)\b))\s*(?:then\s+)?(?P<goal>.+)$"
     rf"|^\s*with\s+(?P<fact2>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:stacked|sitting|resting|starting)\s+(?:on\s+top\s+of|on|atop)"
     rf"\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?)\s*[,;]\s*(?:then\s+)?(?P<goal2>(?:put|place|move|set|take|bring|stack|unstack|slide"
     r"|push|lift|lay|arrange|line)\b.+)$")
@@ -83,8 +85,8 @@ red cube stacked on the blue cube, move ..."): read as
 
 
 START_CLAIM_RE = re.compile(
-    rf"(?i)(?:^|[.;!?]\s+)\s*(?:starting|beginning)\s+(?:from|with)\s+(?:(?:a|an|the)\s+(?:[\w-]+\s+)?(?:stack|tower|column|row|line|pile)\b"
-    rf"|(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:stacked\s+|sitting\s+|resting\s+)?(?:on\s+top\s+of|on|onto|atop|over)\s+"
+    rf"(?i)(?:^|[.;!?]\s+)\s*(?:starting|beginning|start|begin)(?:\s+out)?\s+(?:from|with)\s*:?\s+(?:(?:a|an|the)\s+(?:[\w-]+\s+)?(?:stack|tower|column|row|line|pile)\b"
+    rf"|(?:the\s+|an?\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:stacked\s+|sitting\s+|resting\s+)?(?:on\s+top\s+of|on|onto|atop|over|under(?:neath)?|beneath|below)\s+"
     rf"(?:the\s+|a\s+)?(?:{COLOR_RE})\b)")
 """A sentence opened by the scene the goal starts from ("Starting from a stack of red on blue, ...", "starting with
 orange stacked on brown"): when :func:`split` reads no start from the text, the parser refuses it (its tower or row had
@@ -572,8 +574,6 @@ def on_table_goal(scene: InitialScene) -> TaskSchema | None:
     """The task whose goal only sends a cube the start stacks to the table (:data:`ON_TABLE_GOAL_RE`),
     or every such cube (:data:`ALL_ON_TABLE_GOAL_RE`); None when the goal is not of that form or
     the cube starts on the table."""
-    from rpg.domain.predicates import OnTable
-
     every = ALL_ON_TABLE_GOAL_RE.match(scene.goal)
     m = None if every else ON_TABLE_GOAL_RE.match(scene.goal)
     listed = None if every or m else ON_TABLE_LIST_GOAL_RE.match(scene.goal)
@@ -592,7 +592,7 @@ def on_table_goal(scene: InitialScene) -> TaskSchema | None:
         return None  # it starts on the table: the goal would hold before anything moved
     b = Builder(scene.goal)
     for c, xy in zip(colors, b.unit_centers(len(colors)), strict=True):
-        cube = b.cube(c)
+        cube = b.semantic(c) if re.fullmatch(r"[A-Z]|\d", c) else b.cube(c)  # a letter or digit cube by its label
         b.place(stack_layout([cube], xy))
         b.preds.append(OnTable(cube))
         b.summary.append(f"{cube} on the table")
@@ -632,6 +632,12 @@ def attach(head: TaskSchema, scene: InitialScene, instruction: str) -> TaskSchem
     raised = {n for st in b.structures for n in st[1:]}  # cubes that start on another cube
     below = {st[i]: set(st[:i]) for st in b.structures for i in range(len(st))}  # the cubes each starts above
     b.preds = [p for q in b.preds for p in _resting_on(q, raised, below)]
+    by_colour = {a.color: a.name for a in b.assets if a.kind == "colored_cube"}
+    for m in lexicon.TABLE_SAID_RE.finditer(scene.goal.lower()):  # "..., then put red on the table": red off its start
+        name = by_colour.get(canon_color(m.group("c"))) if m.group("c") else None
+        if name in raised and not any(type(p) is OnTable and p.a == name for p in b.preds):
+            b.preds.append(OnTable(name))
+            b.summary.append(f"{name} on the table")
     by_color = {a.label or a.color: a.name for a in b.assets if a.kind != "goal_patch"}
     for colors in scene.kept:  # "leave the other two as they are": their stack is the goal's too
         b.preds.append(Stack(objects=tuple(by_color[c] for c in colors)))

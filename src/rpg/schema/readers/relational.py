@@ -46,6 +46,7 @@ from rpg.schema.readers.common import (
     mark_references,
     mentions_in,
     patch_spots,
+    refuse_towers_merged,
     region_spots,
     stated_count,
     structure_colors,
@@ -437,6 +438,12 @@ def recognize_relational(f: Features, b: Builder) -> bool:
     placed_in = _resolve_regions(r.regions, r.on_edges, r.obj, stackish, r.previous)
     if not r.on_edges and not r.rels and not r.onpatch and not placed_in:
         return False
+    stacked = {n for edge in r.on_edges for n in edge}
+    loose = [a for a in dict.fromkeys(r.on_patch_as_stack) if a not in stacked]
+    if loose and len(loose) == sum(a == "*" for a, _ in r.onpatch):  # "put the pink cube on the orange patch ... then make a
+        spare = iter(loose)  # tower of brown on gray": pink itself goes on the patch (the tower's base had gone there instead)
+        r.onpatch = [(next(spare) if a == "*" else a, p) for a, p in r.onpatch]
+        r.named_on_patch = True
     if len({p for a, p in r.onpatch if a == "*"}) > 1:
         raise ParseError("one stack cannot stand on several patches; say which cubes go on which patch")
     if any(a == "*" for a, _ in r.onpatch) or (stackish and r.onpatch and not r.named_on_patch):
@@ -452,6 +459,8 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         raise ParseError(f"the stacking relations of \"{f.original[:80]}\" contradict each other ({cycle}: "
                          "something would be on itself); say once which cube goes on which, or use --model")
     _refuse_crossed_relations(f, r.rels, [*r.onpatch, *r.on_edges])
+    _refuse_raised_on_table(f, b, chains)
+    refuse_towers_merged(f.text, f.original, len([c for c in chains if len(c) > 1]))
     _layout_relational(b, chains, r.rels, r.onpatch, placed_in)
     for ch in chains:
         b.preds.append(Stack(tuple(ch)) if len(ch) > 1 else OnTable(ch[0]))
@@ -474,6 +483,24 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         b.structures.append([by_color[bottom], by_color[top]])
         b.summary.append(f"initially {top} is stacked on {bottom}")
     return True
+
+
+def _refuse_raised_on_table(f: Features, b: Builder, chains: list[list[str]]) -> None:
+    """Refuse a text that sends a cube to the table and stacks every cube of its colour on another ("put red on blue and
+    put red on the table": it had compiled to red on blue, the table dropped).
+
+    Raises:
+        ParseError: naming the cube and the two places.
+    """
+    color_of = {a.name: a.color for a in b.assets if a.kind == "colored_cube"}
+    raised = {color_of.get(n) for ch in chains for n in ch[1:]}
+    grounded = {color_of.get(ch[0]) for ch in chains}
+    for m in lexicon.TABLE_SAID_RE.finditer(f.text):
+        c = canon_color(m.group("c")) if m.group("c") else next(iter(sorted(raised - {None})), None)
+        if c in raised and c not in grounded:
+            raise ParseError(f"\"{f.original[:80]}\" puts the {c} cube on the table and on another cube; a goal is checked "
+                             "once, at the end of the episode: say where it must end up (if it starts stacked, say so: "
+                             "\"Initially the red cube is on the blue cube. Put it on the table.\"), or use --model")
 
 
 def _kind_of(rm: re.Match) -> str:
@@ -789,7 +816,15 @@ def _per_tower_colors(text: str, k: int, height: int) -> list[list[str]] | None:
     return [[canon_color(run[0])] * (len(run) if len(run) > 1 else height) for run in runs]
 
 
+_TOWER_CHAIN_RE = re.compile(rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:\s+(?P<rel>on\s+top\s+of|on|atop|under|beneath|below)\s+(?:the\s+)?"
+                             rf"(?:{COLOR_RE})(?:\s+(?:cube|block))?)+")
+"""A tower's cubes said as a chain ("red on yellow", "blue under green under red"), in a text that asks for several towers."""
+
+
 def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
+    if re.search(r"\b(?:1|one)\s+of\s+(?:them|which|those)\b", f.text):  # "two towers of four cubes, one of them purple":
+        raise ParseError(f"\"{f.original[:80]}\" picks 'one of them' among several towers: which tower or cube is not "  # (every
+                         "said; say each tower (e.g. \"one tower of purple cubes and one of red cubes\"), or use --model")  # cube purple)
     colors = list(dict.fromkeys(f.color_list()))
     each = re.search(r"\b(?:towers|stacks)\s+(?:of|with)\s+(\d+)\b|\b(\d+)\s+(?:blocks?|cubes?)\s+(?:high|tall|each)\b", f.text)
     if each and int(each.group(1) or each.group(2)) < 2:  # "four towers of one cube" (it had been four towers of four)
@@ -819,6 +854,17 @@ def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
         palette = colors_for(k, f, prefer=colors)
         stack_colors = [[c] * height for c in palette] if (matching or with_patches or len(colors) <= 1) else [
             colors_for(height, f) for _ in range(k)]
+        chain = _TOWER_CHAIN_RE.search(f.text)  # "two towers, each red on yellow": every tower yellow under red (the list
+        if chain and not (matching or with_patches):  # order had put red at the bottom: silently wrong)
+            said = [canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", chain.group(0))]
+            up = said[::-1] if chain.group("rel") != "under" else said
+            if not each and stated_count(f, "block|cube", default=None) is None:
+                height = len(said)  # "two towers of red on yellow on blue": as tall as the chain
+            if len(set(said)) != len(said) or set(said) != set(colors) or len(said) != height:
+                raise ParseError(f"\"{f.original[:80]}\" stacks '{chain.group(0)}' in {k} towers of {height} cubes: which "
+                                 "cubes make each tower is not said; say each tower (e.g. \"one tower of red on blue and one "
+                                 "of green on yellow\"), or use --model")
+            stack_colors = [list(up) for _ in range(k)]
     centers = b.unit_centers(k, 0.16)
     for cols, xy in zip(stack_colors, centers, strict=True):
         names = [b.cube(c) for c in cols]

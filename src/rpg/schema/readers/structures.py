@@ -70,6 +70,7 @@ from rpg.schema.readers.common import (
     material_of,
     ordering_of,
     outlier_count,
+    refuse_towers_merged,
     region_spots,
     spectrum_of,
     spelled_word,
@@ -1111,6 +1112,7 @@ def recognize_tower_clauses(f: Features, b: Builder) -> bool:
                          + ", ".join(layer[0] for layer in plan.wall))
         b.summary.append(b.preds[-1].describe())
         return True
+    refuse_towers_merged(f.text, f.original, len(plan.towers))
     spots: list[tuple[float, float] | None] = []
     unplaced = sum(r is None for r in plan.regions)
     free = iter(b.unit_centers(unplaced, 0.16) if unplaced else [])
