@@ -5027,3 +5027,23 @@ def test_attack_texts_that_contradict_or_leave_cubes_unsaid_are_refused(text):
 def test_a_cube_somewhere_in_a_tower_with_its_top_said_leaves_the_rest_free():
     goal = parse("the stack should be three blocks tall with a purple block somewhere in it and a green block on top").goal_predicate()
     assert type(goal).__name__ == "AnchoredStack" and goal.top and goal.objects[-1] == "green"
+
+
+@pytest.mark.parametrize("text", [
+    "stack green, yellow, pink from bottom to top, and put a blue block on the table",  # blue had joined the tower
+    "the red cube is now on the blue cube; put it on the table",  # which cube, or a contradiction
+    "unstack everything: the tower is pink, yellow, green, and all of them should end up on the table",  # order unsaid
+    "build a blue-on-red tower after unstacking the green-on-yellow tower",  # 'unstacking' had been read as 'stacking'
+    "make the tower taller",  # the comparison had been dropped
+    "Initially red is on blue. Build a tower of red on blue.",  # the goal holds at the start
+])
+def test_undone_towers_tables_comparisons_and_goals_that_hold_at_the_start_are_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)
+
+
+def test_an_undone_tower_listed_with_its_order_is_the_start_and_a_prefix_is_never_stripped_by_a_typo_fix():
+    assert sorted(meaning(parse("unstack everything: the tower is pink, yellow, green from top to bottom, and all of them "
+                                "should end up on the table"))) == ["on_table(pink)", "on_table(yellow)", "start:stack(green,yellow,pink)"]
+    assert "unstack" in normalize("build a blue on red tower after unstacking the green on yellow tower")[0]
+    assert meaning(parse("Put the yellow cube inbetween the red cube and the blue cube.")) == ["between(yellow;blue,red)"]

@@ -899,8 +899,54 @@ def _idle_sentence(f: Features, schema: TaskSchema, cubes: list, walk: list) -> 
     return None
 
 
+def _raised_on_table(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
+    """A cube said to end on the table (:data:`lexicon.TABLE_SAID_RE`) that the goal stacks on another, every cube of its
+    colour ("stack green, yellow, pink from bottom to top, and put a blue block on the table": blue had joined the
+    tower; "put red on blue and put red on the table": the table had been dropped; "put it on the table" of a goal that
+    stacks cubes and says no tower: which cube is not said)."""
+    raised: set[str] = set()
+    for p in walk:
+        if type(p) is P.On:
+            raised.add(p.a)
+        elif type(p) is P.Stack or (type(p) is P.AnchoredStack and p.bottom):
+            raised.update(p.objects[1:])
+    for m in lexicon.TABLE_SAID_RE.finditer(f.text):
+        if not m.group("c") and raised and not re.search(r"\b(?:towers?|stacks?|piles?)\b", f.text):
+            named, said = raised, "a"  # "the red cube is now on the blue cube; put it on the table": which cube, or a contradiction
+        else:
+            named = {a.name for a in cubes if m.group("c") and a.color == canon_color(m.group("c"))}
+            said = f"the {canon_color(m.group('c'))}" if m.group("c") else ""
+        if named and named <= raised:
+            return ParseError(f"\"{f.original[:80]}\" puts {said} cube on the table and on another "
+                              "cube; a goal is checked once, at the end of the episode: say where it must end up (if it "
+                              "starts stacked, say so: \"Initially the red cube is on the blue cube. Put it on the table.\"), "
+                              "or use --model")
+    return None
+
+
+_UNDONE_RE = re.compile(rf"\b(?:unstack\w*|dismantl\w*|disassembl\w*|tak(?:e|ing)\s+apart|break\w*\s+(?:up|down))\s+(?:the\s+|a\s+)?(?:(?:tower|stack)\s+(?:of\s+)?)?"
+                        rf"(?P<chain>(?:{COLOR_RE})(?:\s+(?:on|on\s+top\s+of|atop|under)\s+(?:the\s+)?(?:{COLOR_RE}))+)")
+
+
+def _undone_kept(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
+    """A tower the words undo ("after unstacking the green-on-yellow tower") that the goal keeps stacked (it had been read as
+    a tower to build)."""
+    pairs = {(p.a, p.b) for p in walk if type(p) is P.On} | {
+        (st.objects[i + 1], st.objects[i]) for st in walk if type(st) is P.Stack for i in range(len(st.objects) - 1)}
+    color_of = {a.name: a.color for a in cubes}
+    kept = {(color_of.get(a), color_of.get(b)) for a, b in pairs}
+    for m in _UNDONE_RE.finditer(f.text):
+        said = [canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", m.group("chain"))]
+        under = " under " in m.group("chain")
+        links = list(zip(said, said[1:], strict=False)) if not under else [(b, a) for a, b in zip(said, said[1:], strict=False)]
+        if any(link in kept for link in links):
+            return ParseError(f"\"{f.original[:80]}\" undoes '{m.group(0)}' and that task keeps it stacked; if it is how the "
+                              "cubes start, say so (\"Initially the green cube is on the yellow cube. ...\"), or use --model")
+    return None
+
+
 WORD_CHECKS = (_follow_up_relation, _unread_reversal, _counted_others, _label_end, _moved_pronoun, _piles_said,
-               _scene_count, _line_roles, _left_over_alternative, _idle_sentence)
+               _scene_count, _line_roles, _left_over_alternative, _idle_sentence, _raised_on_table, _undone_kept)
 """Checks that words of the instruction a reading leaves unread do not change what it asks, in order: each takes
 (features, schema, its cubes, its goal's predicates) and returns the ParseError to raise, or None
 (:func:`unaccounted` runs them; a new check is one function added here)."""

@@ -582,6 +582,11 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("size", rf"\b(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge|giant|mini)\s+"
              rf"(?:{'|'.join(COLORS)}|grey)(?=\s*(?:$|[,.;!?]|(?:on|onto|under|below|next|beside|behind|to|in|at|and|one)\b))",
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
+    # "make the tower taller": a structure changed against itself (the comparison had been dropped: a tower of two)
+    ("reference", r"\b(?:make|build|get|have)\s+(?:the|it|this|that|your|my|our)\s*(?:(?:tower|stack|row|line|pile|wall|pyramid|column)\s+)?"
+                  r"(?:a\s+(?:bit|little|lot)\s+|much\s+|even\s+)?(?:taller|shorter|higher|lower|longer|wider|bigger|smaller|larger)\b",
+     "compares a structure with how it stands now (taller, longer): a task's goal says where the cubes end up; say the "
+     "structure whole (e.g. \"a tower of three cubes: red on blue on green\")"),
     # "a big-on-small tower": sizes said as the tower's cubes (they had been dropped: a tower of two made-up cubes)
     ("size", r"\b(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge)\s*[-\u2013]?\s*(?:on|over|atop|under|below)"
              r"\s*[-\u2013]?\s*(?:the\s+)?(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge)\b",

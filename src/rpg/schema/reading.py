@@ -1334,6 +1334,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         if "-" in w and all(p in VOCAB or p in COLORS or p in NUMBER_WORDS for p in w.split("-") if p):
             continue
         lemma = next((x for x in lexicon.lemmas(w) if x in VOCAB or x in lexicon.PLACEMENT_VERBS), None)
+        if lemma is None and w.startswith("un"):  # "unstacking" -> unstack (lemminflect knows only "stacking")
+            lemma = next((f"un{x}" for x in lexicon.lemmas(w[2:]) if f"un{x}" in VOCAB), None)
         if lemma is not None:  # an inflection of a known word: "built" -> build, "constructs" -> build
             fixed[w] = lemma if lemma in VOCAB else lexicon.PLACEMENT_VERBS[lemma]
             continue
@@ -1347,6 +1349,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                                            if len(w) >= 4 else None)  # "purpel", "rigth": two letters swapped
         if match and lexicon.is_dictionary_word(w) and not w.startswith(match[0]):
             match = None  # a real word is never "corrected" into another ("bring" is not "ring"); "vertically" -> "vertical"
+        if match and w.endswith(match[0]) and w[:len(w) - len(match[0])] in ("un", "dis", "non", "re", "de", "mis"):
+            match = None  # nor stripped of a prefix that changes it ("unstacking" is not "stacking", "restack" not "stack")
         if match:
             fixed[w] = match[0]
         else:

@@ -94,7 +94,9 @@ been read as the goal: silently wrong)."""
 
 UNSTACK_SAID_RE = re.compile(
     rf"(?i)^\s*(?:please\s+)?(?:unstack|dismantle|disassemble|take\s+apart)\s+(?:everything|it\s+all|all\s+of\s+it|the\s+(?:tower|stack))"
-    rf"\s*[:,\-\u2014]\s*(?:the\s+(?:tower|stack)\s+is|it\s+is|it's)\s+(?P<fact>{_CHAIN_SAID})\s*(?:[.;,]\s*(?:and\s+)?(?P<goal>.+?))?\s*[.!]?$")
+    rf"\s*[:,\-\u2014]\s*(?:the\s+(?:tower|stack)\s+is|it\s+is|it's)\s+(?:(?P<fact>{_CHAIN_SAID})|(?P<list>{_LIST_SAID})\s*,?\s*\(?(?P<dir>(?:from\s+)?"
+    rf"(?:the\s+)?(?:top|bottom)\s+(?:to|up\s+to|down\s+to)\s+(?:the\s+)?(?:top|bottom)|from\s+(?:the\s+)?(?:top|bottom)\s+(?:up|down))\)?)"
+    rf"\s*(?:[.;,]\s*(?:and\s+)?(?P<goal>.+?))?\s*[.!]?$")
 """The undoing said first, the tower it undoes after ("unstack everything: the tower is pink on top of yellow on top of
 green, and all of them should end up on the table"): read as "Initially <tower>. <goal>", every cube on the table when
 no goal follows (the start's tower had been read as the goal: silently wrong); another goal besides is refused by
@@ -116,7 +118,8 @@ def _take_from_listed(m: re.Match) -> str:
 
 
 def _unstack_said(m: re.Match) -> str:
-    return f"Initially {m.group('fact')}. {m.group('goal') or 'put all the cubes on the table.'}"
+    fact = m.group("fact") or f"a tower of {m.group('list')} {m.group('dir')}"  # "pink, yellow, green from top to bottom"
+    return f"Initially {fact}. {m.group('goal') or 'put all the cubes on the table.'}"
 
 
 def _from_structure(m: re.Match) -> str:
@@ -398,6 +401,12 @@ def split(instruction: str) -> InitialScene | None:
     instruction = FROM_START_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     instruction = FROM_STRUCTURE_RE.sub(_from_structure, instruction.strip())
     undone = UNSTACK_SAID_RE.match(instruction.strip())
+    opened = re.match(r"(?i)^\s*(?:please\s+)?(?:unstack|dismantle|disassemble|take\s+apart)\s+(?:everything|it\s+all|all\s+of\s+it|the\s+(?:tower|stack))"
+                      r"\s*[:,\-\u2014]\s*(?:the\s+(?:tower|stack)\s+is|it\s+is|it's)\s", instruction.strip())
+    if opened and not undone:  # "unstack everything: the tower is pink, yellow, green, and ...": which end is the top is
+        raise Inexpressible("time", [opened.group(0).strip()[:40]], "describes the tower it undoes without its order: say "  # unsaid
+                            "it from the bottom (e.g. \"the tower is pink on yellow on green\" or \"pink, yellow, green from top "
+                            "to bottom\")", instruction)
     if undone and undone.group("goal") and not ALL_ON_TABLE_GOAL_RE.match(undone.group("goal")):
         raise Inexpressible("time", [re.split(r"\s*[:,;\-\u2014]\s*", undone.group(0).strip())[0][:40]],
                             "undoes the start's tower and asks another goal besides: where each of the tower's cubes must "
@@ -642,6 +651,9 @@ def attach(head: TaskSchema, scene: InitialScene, instruction: str) -> TaskSchem
     for colors in scene.kept:  # "leave the other two as they are": their stack is the goal's too
         b.preds.append(Stack(objects=tuple(by_color[c] for c in colors)))
         b.summary.append("left stacked bottom to top: " + ", ".join(by_color[c] for c in colors))
+    if b.preds and all(type(p) is Stack and list(p.objects) in b.structures for p in b.preds):
+        raise BadInput(f"\"{instruction[:80]}\": the goal is the stack the cubes start in, so it holds before anything moves; "
+                       "say where they must end up (e.g. \"... Put the red cube on the table.\"), or use --model")
     return b.schema(task_slug(instruction), paraphrases=list(head.paraphrases))
 
 

@@ -459,7 +459,6 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         raise ParseError(f"the stacking relations of \"{f.original[:80]}\" contradict each other ({cycle}: "
                          "something would be on itself); say once which cube goes on which, or use --model")
     _refuse_crossed_relations(f, r.rels, [*r.onpatch, *r.on_edges])
-    _refuse_raised_on_table(f, b, chains)
     refuse_towers_merged(f.text, f.original, len([c for c in chains if len(c) > 1]))
     _layout_relational(b, chains, r.rels, r.onpatch, placed_in)
     for ch in chains:
@@ -483,24 +482,6 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         b.structures.append([by_color[bottom], by_color[top]])
         b.summary.append(f"initially {top} is stacked on {bottom}")
     return True
-
-
-def _refuse_raised_on_table(f: Features, b: Builder, chains: list[list[str]]) -> None:
-    """Refuse a text that sends a cube to the table and stacks every cube of its colour on another ("put red on blue and
-    put red on the table": it had compiled to red on blue, the table dropped).
-
-    Raises:
-        ParseError: naming the cube and the two places.
-    """
-    color_of = {a.name: a.color for a in b.assets if a.kind == "colored_cube"}
-    raised = {color_of.get(n) for ch in chains for n in ch[1:]}
-    grounded = {color_of.get(ch[0]) for ch in chains}
-    for m in lexicon.TABLE_SAID_RE.finditer(f.text):
-        c = canon_color(m.group("c")) if m.group("c") else next(iter(sorted(raised - {None})), None)
-        if c in raised and c not in grounded:
-            raise ParseError(f"\"{f.original[:80]}\" puts the {c} cube on the table and on another cube; a goal is checked "
-                             "once, at the end of the episode: say where it must end up (if it starts stacked, say so: "
-                             "\"Initially the red cube is on the blue cube. Put it on the table.\"), or use --model")
 
 
 def _kind_of(rm: re.Match) -> str:
