@@ -875,6 +875,64 @@ def _line_roles(f: Features, schema: TaskSchema, cubes: list, walk: list) -> Par
     return None
 
 
+_ORDERED_LINE_ROLE_RE = re.compile(
+    rf"(?:,\s*|\bwith\s+)(?:the\s+)?(?P<c>{COLOR_RE}|\d)(?:\s+(?:cube|block|one))?\s+(?:is\s+|goes\s+|sits\s+)?"
+    r"(?:(?:on|at)\s+the\s+(?:far\s+)?(?P<side>left|right)(?:\s+end)?(?!\s+(?:side|half|edge|of|corner))|in\s+the\s+(?P<mid>middle|cent(?:er|re))"
+    r"|(?:the\s+)?(?P<most>leftmost|rightmost))\b")
+
+
+def _ordered_line_roles(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
+    """A cube given an end or the middle of a line the task orders, at another place there ("line up red, blue, green from
+    left to right with red in the middle", "a row of red, blue, green from left to right, green on the left": the order
+    had won silently), or an ordered line said to be in any order."""
+    lines = [p for p in walk if isinstance(p, P.InLine) and p.order in ("left_to_right", "right_to_left") and len(p.objects) > 2]
+    if not lines:
+        return None
+    if re.search(r"\bin\s+any\s+order\b", f.text) and re.search(r"\b(?:left|right)\s+to\s+(?:the\s+)?(?:right|left)\b", f.text):
+        return ParseError(f"\"{f.original[:80]}\" contradicts itself: it says an order from one side to the other and 'in any "
+                          "order'; say one, or use --model")
+    name_of = {a.name: (a.label or a.color) for a in cubes}
+    for m in _ORDERED_LINE_ROLE_RE.finditer(f.text):
+        said = m.group("c") if m.group("c").isdigit() else canon_color(m.group("c"))
+        for line in lines:
+            who = [name_of.get(n) for n in line.objects]
+            if said not in who:
+                continue
+            left = line.order == "left_to_right"
+            if m.group("mid"):
+                places = [len(who) // 2] if len(who) % 2 else []
+            else:
+                side = m.group("side") or ("left" if m.group("most") == "leftmost" else "right")
+                places = [0 if (side == "left") == left else len(who) - 1]
+            if not any(who[i] == said for i in places):
+                return ParseError(f"\"{f.original[:80]}\" contradicts itself: '{m.group(0).strip(' ,')}' and the line's order "
+                                  f"({schema.goal_summary}) disagree; say the order once, or use --model")
+    return None
+
+
+_A_CUBE_RE = re.compile(r"\b(?:a|an|another)\s+(?:cube|block)\b(?!\s+(?:of|tower|stack|high|tall|wide|long|row|line|each|per)\b|-)")
+
+
+def _unnamed_merged(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
+    """More cubes said one by one with no colour ("a cube on the red patch and a cube in the back left corner") than the
+    task has: two of them had been read as one cube, put in both places."""
+    said = len(_A_CUBE_RE.findall(f.text))
+    if said > len(cubes):
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but it says {said} cubes one by one and that "
+                          f"task has {len(cubes)}: two of them were read as one. Give them colours (e.g. \"a red cube ... and "
+                          "a blue cube ...\"), or use --model")
+    counted = re.search(rf"\b(?:\d+|{'|'.join(lexicon.NUMBER_WORDS)}|cubes|blocks|bricks|ones|all|each|every|both|pair|towers?|stacks|(?:a|the)\s+stack|rows?"
+                        r"|lines?|piles?|walls?|grids?|pyramids?|circles?|rings?|columns?|letters?|digits?|numbers?)\b", f.text)
+    own = {canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b(?!\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|area|zone))", f.text)}
+    unnamed = [a for a in cubes if not a.label and a.color not in own]
+    mentioned = len(re.findall(rf"\b(?:a|an|another|the|one|this|that|other)\s+(?:(?!(?:{COLOR_RE})\b)[a-z]+\s+)?(?:cube|block|one)\b", f.text))
+    if not counted and said and len(unnamed) > max(said, mentioned):  # "put a cube on the red patch and stack a block on it"
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but it says {said} cubes without a colour "
+                          f"and that task has {len(unnamed)}: a cube nobody said was made up. Give the cubes colours, or use "
+                          "--model")
+    return None
+
+
 def _left_over_alternative(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
     """An alternative no contrast read ("Instead of putting red next to blue, put green on yellow.": both goals had been
     kept; :data:`lexicon.LEFT_OVER_ALTERNATIVE_RE`); one sentence ending "... instead" (a steering edit's replacement)
@@ -946,7 +1004,8 @@ def _undone_kept(f: Features, schema: TaskSchema, cubes: list, walk: list) -> Pa
 
 
 WORD_CHECKS = (_follow_up_relation, _unread_reversal, _counted_others, _label_end, _moved_pronoun, _piles_said,
-               _scene_count, _line_roles, _left_over_alternative, _idle_sentence, _raised_on_table, _undone_kept)
+               _scene_count, _line_roles, _left_over_alternative, _idle_sentence, _raised_on_table, _undone_kept,
+               _ordered_line_roles, _unnamed_merged)
 """Checks that words of the instruction a reading leaves unread do not change what it asks, in order: each takes
 (features, schema, its cubes, its goal's predicates) and returns the ParseError to raise, or None
 (:func:`unaccounted` runs them; a new check is one function added here)."""

@@ -582,6 +582,14 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("size", rf"\b(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge|giant|mini)\s+"
              rf"(?:{'|'.join(COLORS)}|grey)(?=\s*(?:$|[,.;!?]|(?:on|onto|under|below|next|beside|behind|to|in|at|and|one)\b))",
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
+    # "Hey you in the front left corner, put ...": a listener called by where they stand (the place had become the goal's)
+    ("reference", r"^\s*(?:hey|hi|oi|yo)\s*,?\s+(?:you|there)\s+(?:in|at|on|over|by|near)\s+the\s+[^,:;.!?]*",
+     "calls someone by where they stand, which refers to the scene now, not to where cubes end up; leave it out or say "
+     "where the cubes must go"),
+    # "Reversed, stack red, green, blue": an order reversed from one nobody said (the word had been dropped)
+    ("reference", r"^\s*(?:reversed|in\s+reverse(?:\s+order)?|backwards|the\s+other\s+way\s+round)\s*[,:;\-\u2014]",
+     "refers to an order said before (reversed, backwards): say the order itself (e.g. \"from bottom to top: blue, green, "
+     "red\")"),
     # "make the tower taller": a structure changed against itself (the comparison had been dropped: a tower of two)
     ("reference", r"\b(?:make|build|get|have)\s+(?:the|it|this|that|your|my|our)\s*(?:(?:tower|stack|row|line|pile|wall|pyramid|column)\s+)?"
                   r"(?:a\s+(?:bit|little|lot)\s+|much\s+|even\s+)?(?:taller|shorter|higher|lower|longer|wider|bigger|smaller|larger)\b",
@@ -2995,6 +3003,9 @@ GOAL_FRAME_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\b(then|and\s+then|after\s+that|afterwards)\s+(stack|plac|putt|lin|arrang|build|mak|mov|pil)ing\b"),
      lambda m: f"{m.group(1)} " + {"stack": "stack", "plac": "place", "putt": "put", "lin": "line", "arrang": "arrange", "build": "build",
                                    "mak": "make", "mov": "move", "pil": "pile"}[m.group(2)]),
+    # "in front to the left of the blue cube": both relations to that cube (in front had been dropped)
+    (re.compile(rf"\b(in\s+front|behind)\s+(?:and\s+)?(to\s+the\s+(?:left|right)\s+of)\s+(the\s+(?:{COLOR_RE})(?:\s+(?:cube|block))?)"),
+     lambda m: f"{m.group(1)}{'' if m.group(1) == 'behind' else ' of'} {m.group(3)} and {m.group(2)} {m.group(3)}"),
     # "so that reading from the top down it says CUP": it spells the word
     (re.compile(r"(\bread(?:ing|s)?\b[^.;!?]{0,40}?\b(?:it|they))\s+says?\b"), r"\1 spells"),
     # "... behind the green patch in the final state": when the goal holds (every goal is checked at the episode's end)

@@ -1062,6 +1062,15 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         below = max(0, len(items) // 2 - len(bottom))  # the middle cube at the middle of the whole tower
         listed = items
         items = bottom + rest[:below] + middle + rest[below:] + top
+        direction = re.search(r"\b(?:(bottom)\s+(?:to|up\s+to)\s+(?:the\s+)?top|(top)\s+(?:to|down\s+to)\s+(?:the\s+)?bottom|from\s+the\s+(?:(bottom)\s+up"
+                              r"|(top)\s+down))\b", f.text)
+        if direction and not levels and not filled:  # "from top to bottom: red, blue, green, with red on top": the roles
+            said = listed[::-1] if direction.group(2) or direction.group(4) else listed  # must agree with the order said
+            at = {"bottom": 0, "top": len(said) - 1, "middle": len(said) // 2}  # (red had been put on top of the list read
+            if any(said[at[h]] != listed[i] for i, h in role.items() if h in at):  # upward: silently wrong)
+                raise ParseError(f"\"{f.original[:80]}\" contradicts itself: the order it says ({direction.group(0)}) and "
+                                 "the end or middle it gives a cube disagree; say the order once, or use --model")
+            items = said
         if not middle and not filled and items != listed and len(rest) >= 2 and all(lab for _, lab in items) and not may_order_cubes(
                 re.sub(r"\b(?:so|such)\s+that\b", " ", SEQ_HINT_RE.sub(" ", f.text))):
             # "stack T, O, P so that O is on top": the role moved a cube the list had elsewhere, so the list is
