@@ -5047,3 +5047,48 @@ def test_an_undone_tower_listed_with_its_order_is_the_start_and_a_prefix_is_neve
                                 "should end up on the table"))) == ["on_table(pink)", "on_table(yellow)", "start:stack(green,yellow,pink)"]
     assert "unstack" in normalize("build a blue on red tower after unstacking the green on yellow tower")[0]
     assert meaning(parse("Put the yellow cube inbetween the red cube and the blue cube.")) == ["between(yellow;blue,red)"]
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("a tower from top to bottom: red, blue, green, with red on top", ["stack(green,blue,red)"]),  # red had gone on the wrong end
+    ("In the final picture all the cubes are stacked in a single tower, bottom cube red, top cube cyan, with a yellow cube "
+     "in between.", ["stack(red,yellow,cyan)"]),
+    ("a row of four cubes, two of them purple", ["line(purple,purple,red,red)"]),
+    ("a row of three cubes, one of them purple, the others red", ["line(purple,red,red)"]),
+    ("build a red on-yellow tower", ["stack(yellow,red)"]),
+    ("build two towers of red onto yellow", ["stack(yellow,red)", "stack(yellow,red)"]),
+    ("3 by 3 grid of blocks, all of them orange", ["grid(3x3:orange,orange,orange,orange,orange,orange,orange,orange,orange)"]),
+])
+def test_roles_with_an_order_some_of_them_and_one_sided_hyphens(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "stack red, blue, green from bottom to top with blue at the bottom",  # the role had reordered the list said
+    "a tower from top to bottom: red, blue, green, with green on top",
+    "line up red, blue, green from left to right with red in the middle",
+    "a row of red, blue, green from left to right, green on the left",
+    "line up 1, 2, 3 in ascending order with 1 in the middle",
+    "Row left to right: red, blue, green, in any order",
+    "put the red cube in front to the left of the blue cube",  # in front had been dropped
+    "Hey you in the front left corner, put red on blue",  # the listener's place had become the goal's
+    "Reversed, stack red, green, blue",
+    "put a cube on the red patch and a cube in the back left corner",  # two cubes merged into one
+    "put a cube on the red patch and stack a block on it",  # a third cube made up
+    "start with cube 1 on cube 2, put cube 1 on the table",  # the start had become the goal
+    "start with two towers of red on blue, put both reds on the table",
+    "start with red beside blue, put red on blue",
+    "given red on blue, green on yellow, put red on green",  # the second fact had joined the goal
+    "put red on blue and then on the table",  # the table had been dropped
+    "red ends on the table and on blue",
+    "a row of four cubes, one of them purple, from left to right",  # every cube had been purple
+    "a row of four cubes, at least one of them purple",
+    "a tower: the middle block is blue, the others red",  # the middle had been dropped
+    "a tower of three: the middle block is blue, the others red",  # the others had kept other colours
+    "make the red-on-blue tower taller",
+    "right now red is on blue. put green next to red",  # the scene now had become part of the goal
+    "red is currently on blue; put red next to blue",
+])
+def test_second_attack_on_the_twenty_fourth_session_s_features_is_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)

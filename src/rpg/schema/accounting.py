@@ -905,8 +905,9 @@ def _ordered_line_roles(f: Features, schema: TaskSchema, cubes: list, walk: list
                 side = m.group("side") or ("left" if m.group("most") == "leftmost" else "right")
                 places = [0 if (side == "left") == left else len(who) - 1]
             if not any(who[i] == said for i in places):
-                return ParseError(f"\"{f.original[:80]}\" contradicts itself: '{m.group(0).strip(' ,')}' and the line's order "
-                                  f"({schema.goal_summary}) disagree; say the order once, or use --model")
+                return ParseError(f"\"{f.original[:80]}\" contradicts itself: '{m.group(0).strip(' ,')}' gives a cube an end or the "
+                                  f"middle of the line, and the line's order ({schema.goal_summary}) puts it elsewhere; say the order "
+                                  "once, or use --model")
     return None
 
 
@@ -930,6 +931,37 @@ def _unnamed_merged(f: Features, schema: TaskSchema, cubes: list, walk: list) ->
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but it says {said} cubes without a colour "
                           f"and that task has {len(unnamed)}: a cube nobody said was made up. Give the cubes colours, or use "
                           "--model")
+    return None
+
+
+def _some_of_them(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
+    """"N of them C" (or "the first of them", "at least one of them") left unread ("a row of four cubes, one of them
+    purple, from left to right" had made every cube purple): the task must have exactly N cubes of that colour."""
+    for m in re.finditer(rf"\b(?P<q>at\s+(?:least|most)\s+|the\s+(?:first|last|second)\s+)?(?P<k>\d+)?\s*of\s+(?:them|which|those)\s+"
+                         rf"(?:is\s+|are\s+|being\s+)?(?P<c>{COLOR_RE})\b", f.text):
+        if not m.group("q") and not m.group("k"):
+            continue  # "all of them orange", "each of them": every cube
+        have = sum(a.color == canon_color(m.group("c")) for a in cubes)
+        if m.group("q") or have != int(m.group("k")):
+            return _unread(f, schema, m.group(0), f"gives {m.group('k') or 'some'} of the cubes a colour and that task has {have} "
+                           f"{canon_color(m.group('c'))}. Say each group (e.g. \"a row of one purple and three red cubes, in any "
+                           "order\"), or use --model")
+    return None
+
+
+_OTHERS_COLOUR_RE = re.compile(rf"\b(?:the\s+)?(?:others|rest|other\s+(?:\d+\s+)?(?:cubes|blocks|ones))\s+(?:are\s+|all\s+|being\s+|should\s+be\s+|"
+                               rf"must\s+be\s+)*(?P<c>{COLOR_RE})\b(?!\s+(?:cube|block|one|patch))")
+
+
+def _others_colour(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
+    """"The others red" left unread ("the middle block is blue, the others red" had kept red, blue, green): every cube of a
+    colour not said elsewhere must be that colour."""
+    for m in _OTHERS_COLOUR_RE.finditer(f.text):
+        c = canon_color(m.group("c"))
+        said = {canon_color(w) for w in re.findall(rf"\b(?:{COLOR_RE})\b", f.text[:m.start()] + " " + f.text[m.end():])}
+        if any(a.color not in said | {c} for a in cubes if not a.label) or not any(a.color == c for a in cubes):
+            return _unread(f, schema, m.group(0), "gives the other cubes a colour and that task has others of other colours. "
+                           "Say each cube (e.g. \"from bottom to top: red, blue, red\"), or use --model")
     return None
 
 
@@ -1005,7 +1037,7 @@ def _undone_kept(f: Features, schema: TaskSchema, cubes: list, walk: list) -> Pa
 
 WORD_CHECKS = (_follow_up_relation, _unread_reversal, _counted_others, _label_end, _moved_pronoun, _piles_said,
                _scene_count, _line_roles, _left_over_alternative, _idle_sentence, _raised_on_table, _undone_kept,
-               _ordered_line_roles, _unnamed_merged)
+               _ordered_line_roles, _unnamed_merged, _some_of_them, _others_colour)
 """Checks that words of the instruction a reading leaves unread do not change what it asks, in order: each takes
 (features, schema, its cubes, its goal's predicates) and returns the ParseError to raise, or None
 (:func:`unaccounted` runs them; a new check is one function added here)."""

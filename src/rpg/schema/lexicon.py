@@ -590,8 +590,13 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("reference", r"^\s*(?:reversed|in\s+reverse(?:\s+order)?|backwards|the\s+other\s+way\s+round)\s*[,:;\-\u2014]",
      "refers to an order said before (reversed, backwards): say the order itself (e.g. \"from bottom to top: blue, green, "
      "red\")"),
+    # "now red is on blue. put ...", "red is currently on blue": the scene now (it had become part of the goal)
+    ("reference", rf"\b(?:right\s+)?now\s*,?\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:is|sits|stands|lies|rests)\b"
+                  r"|\b(?:is|are|sits|stands|lies|rests)\s+(?:currently|presently|at\s+the\s+moment)\b|\bcurrently\b",
+     "describes the scene now (currently, now ... is), which refers to where cubes stand, not where they must end up; "
+     "say the start as \"Initially the red cube is on the blue cube.\" and then the goal"),
     # "make the tower taller": a structure changed against itself (the comparison had been dropped: a tower of two)
-    ("reference", r"\b(?:make|build|get|have)\s+(?:the|it|this|that|your|my|our)\s*(?:(?:tower|stack|row|line|pile|wall|pyramid|column)\s+)?"
+    ("reference", r"\b(?:make|build|get|have)\s+(?:the|it|this|that|your|my|our)\s*(?:(?:[\w-]+\s+){0,3}?(?:tower|stack|row|line|pile|wall|pyramid|column)\s+)?"
                   r"(?:a\s+(?:bit|little|lot)\s+|much\s+|even\s+)?(?:taller|shorter|higher|lower|longer|wider|bigger|smaller|larger)\b",
      "compares a structure with how it stands now (taller, longer): a task's goal says where the cubes end up; say the "
      "structure whole (e.g. \"a tower of three cubes: red on blue on green\")"),
@@ -1799,21 +1804,21 @@ HYPHENED_DIRECTION_RE = re.compile(r"(?i)\b(left|right|front|back|bottom|top)-to
 """A direction written with hyphens ("right-to-left", "bottom-to-top"): its words apart, as the readers read it
 (the direction had been dropped, a sort read left to right)."""
 
-HYPHENED_RELATION_RE = re.compile(r"(?i)(?<!\w)([a-z]+|\d)\s*[-\u2013\u2014]\s*(on|over|atop|above|on-top-of|under|below|beneath)\s*[-\u2013\u2014]\s*"
-                                  r"(?=([a-z]+|\d)(?![\w]))")
+_CHAIN_REL = r"(?:on|onto|upon|over|atop|above|on-top-of|ontop|under|below|beneath)"
+HYPHENED_RELATION_RE = re.compile(rf"(?i)(?<!\w)([a-z]+|\d)\s*[-\u2013\u2014]\s*({_CHAIN_REL})\s*[-\u2013\u2014]\s*(?=([a-z]+|\d)(?![\w]))")
 """A tower's cubes said as one hyphenated word ("a red-on-yellow tower", "green-on-blue-on-red", "red - on - yellow", a
 typo "red-on-yelow", digit cubes "1-on-2"): its words apart, as the readers read "red on yellow" (it had been read as a
 list, bottom up: red under yellow); see :func:`hyphened_relation`."""
 
 
 COUNTED_TOWER_SAID_RE = re.compile(
-    rf"(?i)\b(a|an|one|the)\s+(\d+|two|three|four|five|six)[-\s](?:block|cube)s?\s+((?:{COLOR_RE})(?:\s+(?:on|over|atop|on\s+top\s+of|under|below|beneath)"
+    rf"(?i)\b(a|an|one|the)\s+(\d+|two|three|four|five|six)[-\s](?:block|cube)s?\s+((?:{COLOR_RE})(?:\s+(?:on|onto|upon|over|atop|on\s+top\s+of|under|below|beneath)"
     rf"\s+(?:{COLOR_RE}))*)\s+(tower|stack|column)\b")
 """A tower's count and its colour or chain said before its noun ("a three-block red-on-yellow tower", "a 3-block red
 tower"): read as "a 3 block tower of red on yellow", whose count the readers check against the chain (it had been
 dropped: a tower of two, or no task)."""
 
-DIGIT_CHAIN_TOWER_RE = re.compile(r"(?i)\b(?:a|an|the)\s+(\d(?:\s*[-\u2013]?\s*(?:on|over|atop|on-top-of)\s*[-\u2013]?\s*\d)+)\s+(tower|stack|column)\b")
+DIGIT_CHAIN_TOWER_RE = re.compile(r"(?i)\b(?:a|an|the)\s+(\d(?:\s*[-\u2013]?\s*(?:on|onto|upon|over|atop|on-top-of)\s*[-\u2013]?\s*\d)+)\s+(tower|stack|column)\b")
 """A tower of digit cubes said as a chain before its noun ("a 1-on-2 tower", "a 3 on 1 on 2 stack"): read as "a tower of
 the 1 cube on the 2 cube" (the labels had been dropped: a tower of two made-up cubes); see :func:`digit_chain_tower`."""
 
@@ -1823,19 +1828,36 @@ def digit_chain_tower(m: re.Match) -> str:
     return f"a {m.group(2)} of " + " on ".join(f"the {d} cube" for d in digits)
 
 
-def hyphened_relation(m: re.Match) -> str:
-    """The words of :data:`HYPHENED_RELATION_RE`'s match apart, when both ends are cubes' names (a colour, a colour's
-    misspelling, a digit); the match as written otherwise."""
+def hyphened_chains(text: str) -> str:
+    """``text`` with towers said as hyphened chains written as words (:data:`HYPHENED_RELATION_RE`, one hyphen left out
+    or a zero-width joiner too: "red on-yellow", "red\u2060-on-yellow"), digit chains before a tower's noun
+    (:data:`DIGIT_CHAIN_TOWER_RE`) and a count before a chained tower (:data:`COUNTED_TOWER_SAID_RE`)."""
+    text = re.sub(r"[\u2060\u200b\u200c\u200d]", "", text)
+    def joined(m: re.Match) -> str:  # "red on-yellow", "red-on yellow": both hyphens, when both ends name cubes
+        return f"{m.group(1)}-{m.group(2)}-" if _cube_word(m.group(1)) and _cube_word(m.group(3)) else m.group(0)
+
+    text = re.sub(rf"(?i)\b([a-z]+|\d)\s+({_CHAIN_REL})\s*[-\u2013\u2014]\s*(?=([a-z]+|\d)\b)", joined, text)
+    text = re.sub(rf"(?i)\b([a-z]+|\d)\s*[-\u2013\u2014]\s*({_CHAIN_REL})\s+(?=([a-z]+|\d)\b)", joined, text)
+    text = HYPHENED_RELATION_RE.sub(hyphened_relation, text)
+    text = DIGIT_CHAIN_TOWER_RE.sub(digit_chain_tower, text)
+    return COUNTED_TOWER_SAID_RE.sub(r"\1 \2 block \4 of \3", text)
+
+
+def _cube_word(w: str) -> bool:
+    """Whether ``w`` names a cube in a chain: a digit, a colour or a colour's misspelling."""
     import difflib
 
-    def cube_word(w: str) -> bool:
-        return w.isdigit() or w.lower() in COLORS or bool(difflib.get_close_matches(w.lower(), COLORS, n=1, cutoff=0.8))
+    return w.isdigit() or w.lower() in COLORS or bool(difflib.get_close_matches(w.lower(), COLORS, n=1, cutoff=0.8))
 
-    if not (cube_word(m.group(1)) and cube_word(m.group(3))):
+
+def hyphened_relation(m: re.Match) -> str:
+    """The words of :data:`HYPHENED_RELATION_RE`'s match apart, when both ends are cubes' names (:func:`_cube_word`);
+    the match as written otherwise."""
+    if not (_cube_word(m.group(1)) and _cube_word(m.group(3))):
         return m.group(0)
     if m.group(1).isdigit() or m.group(3).isdigit():  # "a 1-on-2 tower": digit cubes, read by DIGIT_CHAIN_TOWER_RE
         return m.group(0)
-    return f"{m.group(1)} {m.group(2).replace('-', ' ')} "
+    return f"{m.group(1)} {m.group(2).lower().replace('-', ' ').replace('ontop', 'on top of')} "
 
 _CHAIN_WORDS = rf"(?:{COLOR_RE})\s+(?:on|on\s+top\s+of|atop|over|under|below|beneath)\s+(?:the\s+)?(?:{COLOR_RE})"
 A_TOWER_RE = re.compile(rf"\b(?:a|an|one|another|second)\s+(?:{_CHAIN_WORDS}(?:\s+(?:on|under)\s+(?:{COLOR_RE}))*\s+(?:tower|stack|column)"
@@ -1846,8 +1868,9 @@ tower of its own."""
 
 TABLE_SAID_RE = re.compile(
     rf"\b(?:(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?|(?P<p>it|them))\s+(?:(?:must|should|will|has\s+to|needs\s+to)\s+)?"
-    r"(?:(?:be|end\s+up|ends\s+up|stay|stays|go|goes|sit|sits|lie|lies|rest|rests|placed|is|back|down|directly|flat)\s+)*"
-    r"(?:on|onto)\s+the\s+table\b")
+    r"(?:(?:be|end\s+up|ends\s+up|ends?|finish(?:es)?|stay|stays|go|goes|sit|sits|lie|lies|rest|rests|placed|is|back|down|directly|flat)\s+)*"
+    r"(?:on|onto)\s+the\s+table\b"
+    r"|(?P<q>(?:\band|,)\s+(?:(?:then|finally|afterwards|later|after\s+that)\s+)?(?:back\s+|down\s+)?)(?:on|onto)\s+the\s+table\b")
 """A cube said to end on the table ("put red on the table", "the red cube must end up on the table", "put it on the table":
 ``p``, a pronoun): where the goal stacks every cube of that colour (of a pronoun: any cube) on another, the words contradict each other (refused by the relational reader); where the
 start stacks it, the goal takes it off (:func:`rpg.schema.readers.initial.attach`)."""

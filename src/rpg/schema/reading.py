@@ -1018,9 +1018,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         original = pattern.sub(written, original).strip()
     original = lexicon.EMOJI_RE.sub(" ", original).strip()
     original = lexicon.HYPHENED_DIRECTION_RE.sub(r"\1 to \2", original)
-    original = lexicon.HYPHENED_RELATION_RE.sub(lexicon.hyphened_relation, original)
-    original = lexicon.DIGIT_CHAIN_TOWER_RE.sub(lexicon.digit_chain_tower, original)
-    original = lexicon.COUNTED_TOWER_SAID_RE.sub(r"\1 \2 block \4 of \3", original)
+    original = lexicon.hyphened_chains(original)  # "a red-on-yellow tower", "a 1-on-2 tower", "a three-block ..."
     original = lexicon.ARROW_DIRECTION_RE.sub(lexicon.arrow_direction, original)  # "l->r", "bottom -> top"
     original = lexicon.STRUCTURE_NAME_RE.sub(r"\1", original)  # "Tower A: ...", "tower B is pink on gray"
     original = lexicon.MEASURE_WORD_RE.sub(lambda m: f"{m.group(1)} {(m.group('c') or '') + ' ' if m.group('c') else ''}"
@@ -1644,28 +1642,32 @@ def _middle_and_sides(m: re.Match) -> str:
 
 
 _ONE_CUBE_IN_TOWER_RE = re.compile(
-    rf"\b(?P<s>tower|stack|column|row|line)\s+(?:of|(?:should|must|will)\s+be|is)\s+(?P<n>\d+)\s+(?:blocks|cubes)(?:\s+(?:tall|high|long))?\s*,?\s+"
-    rf"(?:with\s+(?:a|an|1)\s+(?P<c>{COLOR_RE})\s+(?:block|cube|one)\s+in\s+it|(?:1|one)\s+of\s+(?:them|which)\s+(?:is\s+)?(?P<c2>{COLOR_RE}))"
+    rf"\b(?P<s>tower|stack|column|row|line|circle|ring)\s+(?:of|(?:should|must|will)\s+be|is)\s+(?P<n>\d+)\s+(?:blocks|cubes)(?:\s+(?:tall|high|long))?\s*,?\s+"
+    rf"(?:with\s+(?:a|an|1)\s+(?P<c>{COLOR_RE})\s+(?:block|cube|one)\s+in\s+it|(?:with\s+)?(?:(?:exactly|just|only)\s+)?(?P<k>\d+)\s+of\s+(?:them|which)\s+"
+    rf"(?:is\s+|are\s+|being\s+)?(?P<c2>{COLOR_RE}))"
+    rf"(?:\s*,?\s*(?:and\s+)?the\s+(?:others|rest|other\s+(?:\d+\s+)?(?:cubes|blocks|ones))\s+(?:are\s+|all\s+|being\s+)*(?P<o>{COLOR_RE}))?"
     rf"(?:\s*,?\s+and\s+(?:a|an|the|1)\s+(?P<e>{COLOR_RE})\s+(?:block|cube|one)\s+(?:(?P<top>on\s+top|at\s+the\s+top)|at\s+the\s+(?:bottom|base)))?"
     r"(?=\s*(?:[.;!]|$))")
-"""A tower or a row of a count with one cube of a colour somewhere in it ("the stack should be three blocks tall with a
-purple block somewhere in it", "a tower of four cubes, one of them purple", "a row of four cubes, one of them purple"):
-that cube and the others of one colour no word names, in any order (it had found no task, or made every cube purple)."""
+"""A tower, row or circle of a count with some cubes of a colour somewhere in it ("the stack should be three blocks tall
+with a purple block somewhere in it", "a row of four cubes, two of them purple", "..., one of them purple, the others
+red"): those cubes and the others of the colour said or of one colour no word names, in any order (it had found no task,
+or made every cube purple)."""
 
 
 def _one_cube_in_tower(m: re.Match) -> str:
-    n = int(m.group("n"))
-    if n < 2:
-        return m.group(0)
+    n, k = int(m.group("n")), int(m.group("k") or 1)
+    if n < 2 or k >= n:
+        return m.group(0)  # "four cubes, four of them purple": as written (the accounting refuses a count that disagrees)
     named = {canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", m.string)}
-    other = next(c for c in DEFAULT_COLORS if c not in named)
+    other = m.group("o") or next(c for c in DEFAULT_COLORS if c not in named)
+    color = m.group("c") or m.group("c2")
     if m.group("e"):  # "... and a green block on top": that end said, the rest in any order
-        if n < 3 or m.group("s") in ("row", "line"):
+        if n - k < 2 or m.group("s") not in ("tower", "stack", "column"):
             return m.group(0)
         end = "on top" if m.group("top") else "at the bottom"
-        return (f"{m.group('s')} of 1 {m.group('c') or m.group('c2')} block, {n - 2} {other} blocks and 1 {m.group('e')} block, "
+        return (f"{m.group('s')} of {k} {color} blocks, {n - k - 1} {other} blocks and 1 {m.group('e')} block, "
                 f"with the {m.group('e')} block {end}, in any order")
-    return f"{m.group('s')} of 1 {m.group('c') or m.group('c2')} block and {n - 1} {other} blocks, in any order"
+    return f"{m.group('s')} of {k} {color} blocks and {n - k} {other} blocks, in any order"
 
 
 _MIDDLE_OF_ODD_ROW_RE = re.compile(
@@ -1875,7 +1877,7 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     (re.compile(r"\b(?:with\s+)?(?:1|a|an)\s+(?:other\s+|more\s+)?(?:cube|block)\s+in\s+the\s+middle\b"),
      lambda m: "with a " + next(c for c in DEFAULT_COLORS if not re.search(rf"\b{c}\b", m.string)) + " block in the middle", True),
     # "... and the middle block is blue": the middle cube's colour (it had been dropped: a tower of two)
-    (re.compile(rf"(?:\s*[,.;]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)(?:make\s+(?:sure\s+)?(?:that\s+)?)?the\s+(?:middle|center|centre)"
+    (re.compile(rf"(?:\s*[,.;:]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)(?:make\s+(?:sure\s+)?(?:that\s+)?)?the\s+(?:middle|center|centre)"
                 rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?({COLOR_RE})"
                 rf"(?:\s+(?:block|cube|one|1))?\b"), r" with a \1 block in the middle", True),
 ))

@@ -74,7 +74,7 @@ FROM_STRUCTURE_RE = re.compile(
     rf"|(?P<fact4>(?:a|the)\s+(?:tower|stack|column)\s+of\s+{_LIST_SAID}\s*\(\s*(?:from\s+)?(?:the\s+)?(?:bottom|top)\s+(?:to|up\s+to|down\s+to)"
     r"\s+(?:the\s+)?(?:top|bottom)\s*\)))"
     rf"(?:\s*\((?:the\s+)?(?P<end_c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on)\s+(?:the\s+)?(?P<end>bottom|top)\))?\s*(?:[,;:.]|\s+and(?=\s+(?:then\s+)?(?:put|place|move|set|take|stack|unstack|build|make|lay|bring|slide"
-    rf"|push|lift|get)\b))\s*(?:then\s+)?(?P<goal>.+)$"
+    rf"|push|lift|get)\b))\s*(?:then\s+)?(?!\s*(?:and\s+)?(?:with\s+)?(?:the\s+|an?\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:on|atop|under|on\s+top\s+of)\s)(?P<goal>.+)$"
     rf"|^\s*with\s+(?P<fact2>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:stacked|sitting|resting|starting)\s+(?:on\s+top\s+of|on|atop)"
     rf"\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?)\s*[,;]\s*(?:then\s+)?(?P<goal2>(?:put|place|move|set|take|bring|stack|unstack|slide"
     r"|push|lift|lay|arrange|line)\b.+)$")
@@ -85,9 +85,10 @@ red cube stacked on the blue cube, move ..."): read as
 
 
 START_CLAIM_RE = re.compile(
-    rf"(?i)(?:^|[.;!?]\s+)\s*(?:starting|beginning|start|begin)(?:\s+out)?\s+(?:from|with)\s*:?\s+(?:(?:a|an|the)\s+(?:[\w-]+\s+)?(?:stack|tower|column|row|line|pile)\b"
-    rf"|(?:the\s+|an?\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:stacked\s+|sitting\s+|resting\s+)?(?:on\s+top\s+of|on|onto|atop|over|under(?:neath)?|beneath|below)\s+"
-    rf"(?:the\s+|a\s+)?(?:{COLOR_RE})\b)")
+    rf"(?i)(?:^|[.;!?]\s+)\s*(?:(?:starting|beginning|start|begin)(?:\s+out)?\s+(?:from|with)|given)\s*:?\s+(?:(?:a|an|the|two|three|four|\d+)\s+(?:[\w-]+\s+)?(?:stacks?|towers?|columns?|rows?|lines?|piles?)\b"
+    rf"|(?:the\s+|an?\s+)?(?:(?:cube|block|letter|digit|number)\s+)?(?:{COLOR_RE}|(?-i:[A-Z])|\d)(?:\s+(?:cube|block))?\s+(?:stacked\s+|sitting\s+|resting\s+|is\s+)?"
+    rf"(?:on\s+top\s+of|on|onto|atop|over|under(?:neath)?|beneath|below|next\s+to|beside|(?:to\s+the\s+)?(?:left|right)\s+of|in\s+front\s+of|behind|between|in\s+the)\s+"
+    rf"|(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})|\s+and\s+(?:{COLOR_RE}))+\s+(?:in\s+a\s+(?:row|line|stack|tower|pile)|stacked|lined))")
 """A sentence opened by the scene the goal starts from ("Starting from a stack of red on blue, ...", "starting with
 orange stacked on brown"): when :func:`split` reads no start from the text, the parser refuses it (its tower or row had
 been read as the goal: silently wrong)."""

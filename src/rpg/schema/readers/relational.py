@@ -797,7 +797,7 @@ def _per_tower_colors(text: str, k: int, height: int) -> list[list[str]] | None:
     return [[canon_color(run[0])] * (len(run) if len(run) > 1 else height) for run in runs]
 
 
-_TOWER_CHAIN_RE = re.compile(rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:\s+(?P<rel>on\s+top\s+of|on|atop|under|beneath|below)\s+(?:the\s+)?"
+_TOWER_CHAIN_RE = re.compile(rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:\s+(?P<rel>on\s+top\s+of|onto|upon|on|atop|under|beneath|below)\s+(?:the\s+)?"
                              rf"(?:{COLOR_RE})(?:\s+(?:cube|block))?)+")
 """A tower's cubes said as a chain ("red on yellow", "blue under green under red"), in a text that asks for several towers."""
 

@@ -964,6 +964,7 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
     grouped: list[int] = []  # counts said of one colour ("2 white cubes")
     filled = False
     hints: dict[int, str] = {}
+    about_listed: set[int] = set()  # hints about a cube listed before them ("red, blue, green ... with blue at the bottom")
     said = stated_count(f, default=None)
     for k, m in enumerate(mentions):
         item = (None, m.group("label").upper()) if m.group("label") else (canon_color(m.group("color")), None)
@@ -974,6 +975,7 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
             # (not a step of a sequence: "red base, then blue, then red, then blue on top" has two blue cubes)
             at = items.index(item) if hint.group(1) != "top" else len(items) - 1 - items[::-1].index(item)
             hints[at] = hint.group(1)  # a colour listed twice: its bottom one is the base, its top one the top
+            about_listed.add(at)
             continue
         count = re.search(r"\b(\d+)\s+$", text[max(0, m.start() - 4): m.start()]) if not m.group("label") else None
         if count and 1 < int(count.group(1)) <= 6:
@@ -1067,10 +1069,10 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         if direction and not levels and not filled:  # "from top to bottom: red, blue, green, with red on top": the roles
             said = listed[::-1] if direction.group(2) or direction.group(4) else listed  # must agree with the order said
             at = {"bottom": 0, "top": len(said) - 1, "middle": len(said) // 2}  # (red had been put on top of the list read
-            if any(said[at[h]] != listed[i] for i, h in role.items() if h in at):  # upward: silently wrong)
+            if any(said[at[h]] != listed[i] for i, h in role.items() if h in at and i in about_listed):  # upward: silently wrong)
                 raise ParseError(f"\"{f.original[:80]}\" contradicts itself: the order it says ({direction.group(0)}) and "
                                  "the end or middle it gives a cube disagree; say the order once, or use --model")
-            items = said
+            items = said if any(i in about_listed for i in role) else items
         if not middle and not filled and items != listed and len(rest) >= 2 and all(lab for _, lab in items) and not may_order_cubes(
                 re.sub(r"\b(?:so|such)\s+that\b", " ", SEQ_HINT_RE.sub(" ", f.text))):
             # "stack T, O, P so that O is on top": the role moved a cube the list had elsewhere, so the list is
