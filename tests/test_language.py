@@ -5092,3 +5092,16 @@ def test_roles_with_an_order_some_of_them_and_one_sided_hyphens(text, expected):
 def test_second_attack_on_the_twenty_fourth_session_s_features_is_refused(text):
     with pytest.raises(ParseError):
         parse(text)
+
+
+@pytest.mark.parametrize("text", [
+    "build a red-next-to-yellow tower",  # a chain word no rewrite reads (it had been a stack)
+    "build two 1-on-2 towers",  # the labels had been dropped
+    "a 9-on-10 tower",
+    "build two red-on-yellow towers and one yellow tower",  # the third tower had been dropped
+    "a tower of three: the middle block is red and yellow",
+    "build a 0-block tower of red on yellow",
+])
+def test_chain_words_no_rewrite_reads_and_towers_around_a_chain_are_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)

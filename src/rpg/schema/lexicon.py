@@ -595,6 +595,14 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|\b(?:is|are|sits|stands|lies|rests)\s+(?:currently|presently|at\s+the\s+moment)\b|\bcurrently\b",
      "describes the scene now (currently, now ... is), which refers to where cubes stand, not where they must end up; "
      "say the start as \"Initially the red cube is on the blue cube.\" and then the goal"),
+    # "a 0-block tower of red on yellow": a structure of no cubes (the count had been dropped)
+    ("quantity", r"\b(?:0|zero)\s*[- ]\s*(?:blocks?|cubes?)\b(?=\s+(?:tall\s+|high\s+)?(?:tower|stack|column|row|line|wall|pile)\b)",
+     "asks for a structure of no cubes: a quantity below one; say how many cubes it has"),
+    # "a 9-on-10 tower", "a red-next-to-yellow tower", "two 1-on-2 towers": a chain as one word that no rewrite read
+    # (lexicon.hyphened_chains; it had been dropped, a tower of made-up cubes)
+    ("object", r"\b[\w]+-(?:on|onto|upon|over|atop|above|under|below|beneath|next-to|beside|left-of|right-of|ontop|on-top-of)-[\w]+\b",
+     "names a tower as one hyphenated word, which rpg reads only between two colours or two digits before 'tower' (\"a "
+     "red-on-blue tower\", \"a 1-on-2 tower\"): say it in words (e.g. \"the 1 cube on the 2 cube\")"),
     # "make the tower taller": a structure changed against itself (the comparison had been dropped: a tower of two)
     ("reference", r"\b(?:make|build|get|have)\s+(?:the|it|this|that|your|my|our)\s*(?:(?:[\w-]+\s+){0,3}?(?:tower|stack|row|line|pile|wall|pyramid|column)\s+)?"
                   r"(?:a\s+(?:bit|little|lot)\s+|much\s+|even\s+)?(?:taller|shorter|higher|lower|longer|wider|bigger|smaller|larger)\b",
@@ -1812,7 +1820,7 @@ list, bottom up: red under yellow); see :func:`hyphened_relation`."""
 
 
 COUNTED_TOWER_SAID_RE = re.compile(
-    rf"(?i)\b(a|an|one|the)\s+(\d+|two|three|four|five|six)[-\s](?:block|cube)s?\s+((?:{COLOR_RE})(?:\s+(?:on|onto|upon|over|atop|on\s+top\s+of|under|below|beneath)"
+    rf"(?i)\b(a|an|one|the)\s+([1-9]\d*|two|three|four|five|six)[-\s](?:block|cube)s?\s+((?:{COLOR_RE})(?:\s+(?:on|onto|upon|over|atop|on\s+top\s+of|under|below|beneath)"
     rf"\s+(?:{COLOR_RE}))*)\s+(tower|stack|column)\b")
 """A tower's count and its colour or chain said before its noun ("a three-block red-on-yellow tower", "a 3-block red
 tower"): read as "a 3 block tower of red on yellow", whose count the readers check against the chain (it had been

@@ -1879,7 +1879,7 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     # "... and the middle block is blue": the middle cube's colour (it had been dropped: a tower of two)
     (re.compile(rf"(?:\s*[,.;:]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)(?:make\s+(?:sure\s+)?(?:that\s+)?)?the\s+(?:middle|center|centre)"
                 rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?({COLOR_RE})"
-                rf"(?:\s+(?:block|cube|one|1))?\b"), r" with a \1 block in the middle", True),
+                rf"(?:\s+(?:block|cube|one|1))?\b(?!\s+(?:and|or)\s+(?:{COLOR_RE})\b)"), r" with a \1 block in the middle", True),
 ))
 """Ways of describing a tower, rewritten to the form the readers take ("a tower of N <colour>
 blocks"): a count or colour before the structure noun is the whole structure's, a group

@@ -837,6 +837,9 @@ def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
             colors_for(height, f) for _ in range(k)]
         chain = _TOWER_CHAIN_RE.search(f.text)  # "two towers, each red on yellow": every tower yellow under red (the list
         if chain and not (matching or with_patches):  # order had put red at the bottom: silently wrong)
+            if len(re.findall(r"\b(?:towers?|stacks?|columns?)\b", f.text)) > 1:  # "two red-on-yellow towers and one yellow
+                raise ParseError(f"\"{f.original[:80]}\" names towers of more than one kind around the chain "  # tower"
+                                 f"'{chain.group(0)}'; say each tower in a sentence of its own, or use --model")
             said = [canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", chain.group(0))]
             up = said[::-1] if chain.group("rel") != "under" else said
             if not each and stated_count(f, "block|cube", default=None) is None:
