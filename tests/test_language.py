@@ -5105,3 +5105,10 @@ def test_second_attack_on_the_twenty_fourth_session_s_features_is_refused(text):
 def test_chain_words_no_rewrite_reads_and_towers_around_a_chain_are_refused(text):
     with pytest.raises(ParseError):
         parse(text)
+
+
+def test_a_role_said_before_the_tower_names_its_listed_cube():
+    # a second red cube had been made for "red at the bottom"
+    assert meaning(parse("starting with red at the bottom, build a tower of red, blue and green")) == ["stack(red,blue,green)"]
+    with pytest.raises(ParseError):  # the order said puts red on top: a contradiction
+        parse("starting with red at the bottom, build a tower of red, blue and green from top to bottom")

@@ -985,6 +985,15 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         if hint:
             hints[len(items)] = hint.group(1)
         items.append(item)
+    first_hint = min(hints) if hints else None
+    if first_hint == 0 and not re.search(r"\bthen\b", f.text) and items.count(items[0]) == 2 and not grouped \
+            and re.search(rf"\b(?:{TOWER_NOUNS})\s+of\b", text[mentions[0].end():]):
+        # "starting with red at the bottom, build a tower of red, blue and green": the role said before the tower names
+        # the listed cube (a second red cube had been made)
+        again = items.index(items[0], 1)
+        hints = {again - 1 if i > again else (again - 1 if i == 0 else i): h for i, h in hints.items()}
+        about_listed.add(again - 1)
+        items.pop(0)
     if said is not None and said in grouped and not re.search(rf"(?<!the )\b(?:\d+|{COUNT_WORD_RE})[- ](?:cubes?|blocks?)\b",
                                                             f.original.lower()) \
             and not re.search(rf"\b(?:{TOWER_NOUNS})\s+of\s+{said}\b", f.text):  # not "a two-cube tower of ...", "a tower of 2
