@@ -138,10 +138,13 @@ START_STRUCTURE_RE = re.compile(r"(?i)^\s*(?:the\s+)?(?:initial|starting|start|o
 the bottom up. The goal is ..."): read as "Initially: a tower of ..." (its tower had been read as
 the goal, and the goal's cube lost)."""
 
+_UNDONE = r"(?:(?:it|them)(?:\s+all)?|all\s+of\s+(?:it|them)|everything|the\s+(?:tower|stack))"
+"""What an undoing verb undoes ("unstack it", "take them all apart", "dismantle everything", "unstack the tower")."""
+
 GOAL_OPENER_RE = re.compile(r"(?i)^\s*(?:(?:the\s+)?(?:goal|target|task|objective)\s*(?:is\s*(?:to\s+)?|:|-|\u2014)"
                             r"|then\s*,?|now\s*,?|your\s+task\s*(?:is\s+to|:)|(?:at|in)\s+the\s+end\s*[,:]?|finally\s*,?"
-                            r"|(?:unstack|dismantle|take\s+apart)\s+(?:(?:it|them)(?:\s+all)?|all\s+of\s+(?:it|them)|everything|the\s+(?:tower|stack))\s*,?\s*so\s+(?:that\s+)?"
-                            r"|take\s+(?:(?:it|them)(?:\s+all)?|all\s+of\s+(?:it|them)|everything|the\s+(?:tower|stack))\s+apart\s*,?\s*so\s+(?:that\s+)?"
+                            rf"|(?:unstack|dismantle|take\s+apart)\s+{_UNDONE}\s*,?\s*so\s+(?:that\s+)?"
+                            rf"|take\s+{_UNDONE}\s+apart\s*,?\s*so\s+(?:that\s+)?"
                             r"|success(?!\s+(?:requires|needs|demands)\b)(?:\s+(?:when|if))?\s*:?)\s*")
 """Words that open the goal after the start ("Goal: ...", "Then ...", "The task is to ...")."""
 
@@ -358,7 +361,7 @@ LEAVE_REST_RE = re.compile(
 stay where they are"): those cubes' stack is part of the goal (:attr:`InitialScene.kept`)."""
 
 
-UNDO_START_RE = re.compile(r"(?i)^\s*(?:please\s+)?(?:unstack|dismantle|take\s+apart|disassemble)\s+(?:(?:it|them)(?:\s+all)?|all\s+of\s+(?:it|them)|everything|the\s+(?:tower|stack))"
+UNDO_START_RE = re.compile(rf"(?i)^\s*(?:please\s+)?(?:unstack|dismantle|take\s+apart|disassemble)\s+{_UNDONE}"
                            r"\s*[.!]?\s*$|^\s*take\s+(?:it|the\s+(?:tower|stack))\s+apart\s*[.!]?\s*$")
 """A goal sentence that only undoes the start's stack ("Unstack the tower."): every cube on the table, or, when
 another goal sentence follows, what that one says."""
@@ -518,8 +521,7 @@ def _start_ends_named(sentences: list[str]) -> list[str]:
         return "put " + " and ".join(f"the {c}" for c in stacks[0][-n:]) + " cubes on the table"
 
     def swapped(m: re.Match) -> str:  # "swap them so the black one ends on top": the start's stack of two reversed
-        if len(stacks[0]) != 2 or (m.group("c") and _canon(m.group("c").lower() if len(m.group("c")) > 1 else m.group("c"))
-                                   != stacks[0][0 if m.group("top") else 1]):
+        if len(stacks[0]) != 2 or (m.group("c") and _canon(m.group("c")) != stacks[0][0 if m.group("top") else 1]):
             return m.group(0)  # a taller stack (which two is not said), or the 'so that' contradicting the swap: as written
         return f"put the {stacks[0][0]} cube on the {stacks[0][1]} cube"
 
@@ -544,8 +546,8 @@ cubes, named, sent to the table (:data:`ON_TABLE_LIST_GOAL_RE`)."""
 
 
 ALL_ON_TABLE_GOAL_RE = re.compile(
-    r"(?i)^\s*(?:(?:unstack|dismantle|take\s+apart)\s+(?:(?:it|them)(?:\s+all)?|all\s+of\s+(?:it|them)|everything|the\s+(?:tower|stack))\s*,?\s*(?:and\s+|so\s+(?:that\s+)?)?"
-    r"|take\s+(?:(?:it|them)(?:\s+all)?|all\s+of\s+(?:it|them)|everything|the\s+(?:tower|stack))\s+apart\s*,?\s*(?:and\s+|so\s+(?:that\s+)?)?)?"
+    rf"(?i)^\s*(?:(?:unstack|dismantle|take\s+apart)\s+{_UNDONE}\s*,?\s*(?:and\s+|so\s+(?:that\s+)?)?"
+    rf"|take\s+{_UNDONE}\s+apart\s*,?\s*(?:and\s+|so\s+(?:that\s+)?)?)?"
     r"(?:(?:put|place|set|lay|leave|get)\s+)?(?:both|all|every|each|the)(?:\s+(?:of\s+the\s+)?(?P<n>two|three|four|five|six|\d+))?\s+(?:of\s+)?(?:the\s+)?"
     r"(?:cubes|blocks|cube|block|ones|of\s+them|them)?\s*(?:(?:must|should|have\s+to|need\s+to|will)\s+)?(?:(?:be|end\s+up|ends\s+up"
     r"|sit|sits|sitting|stand|stands|standing|lie|lies|lying|rest|rests|resting|placed|are|is|go|stay)\s+){0,2}"
@@ -596,9 +598,10 @@ def on_table_goal(scene: InitialScene) -> TaskSchema | None:
         [_canon(c) for c in re.findall(rf"\b{_NAME}", listed.group("list"))]
     if len(set(colors)) != len(colors):
         return None  # a cube listed twice: read as written
-    if listed and all(any(c in s for s in scene.stacks) for c in colors) and any(c in s[1:] for s in scene.stacks for c in colors):
-        pass  # a listed cube that starts on the table stays there (the others move: the goal does not hold at the start)
-    elif not colors or not all(any(c in s[1:] for s in scene.stacks) for c in colors):
+    # a listed cube that starts on the table may stay there while the others move (the goal does not hold at the start)
+    listed_moves = listed and all(any(c in s for s in scene.stacks) for c in colors) and any(
+        c in s[1:] for s in scene.stacks for c in colors)
+    if not listed_moves and (not colors or not all(any(c in s[1:] for s in scene.stacks) for c in colors)):
         return None  # it starts on the table: the goal would hold before anything moved
     b = Builder(scene.goal)
     for c, xy in zip(colors, b.unit_centers(len(colors)), strict=True):
