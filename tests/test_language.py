@@ -5112,3 +5112,46 @@ def test_a_role_said_before_the_tower_names_its_listed_cube():
     assert meaning(parse("starting with red at the bottom, build a tower of red, blue and green")) == ["stack(red,blue,green)"]
     with pytest.raises(ParseError):  # the order said puts red on top: a contradiction
         parse("starting with red at the bottom, build a tower of red, blue and green from top to bottom")
+
+
+@pytest.mark.parametrize("text, expected", [
+    # the twenty-fifth session's reading of stranger35 (each had been refused or read wrong)
+    ("Build a pyramid with three blue cubes on the bottom, two red cubes in the middle and one red cube on top.",
+     ["pyramid(blue,blue,blue|red,red|red)"]),  # a colour in two layers had been refused as a contradiction
+    ("Four blocks, two orange and two purple, form a wall two high. The orange pair is on the bottom.",
+     ["wall(orange,orange|purple,purple)"]),  # 'the orange pair' had read 'the orange 2': the layer dropped
+    ("The blue cube starts on top of the green cube. Take it off and put it on the table.",
+     ["on_table(blue)", "start:stack(green,blue)"]),
+    ("The green block starts on the brown block. Put the gray block on top of it.",
+     ["stack(green,gray)", "start:stack(brown,green)"]),
+    ("Initially green is on brown. Put gray on top.", ["stack(green,gray)", "start:stack(brown,green)"]),
+    ("Initially red is stacked on yellow. Swap them so yellow is on red.", ["stack(red,yellow)", "start:stack(yellow,red)"]),
+    ("Make a horizontal row of the yellow, green and cyan cubes with yellow leftmost and cyan rightmost.",
+     ["line[left_to_right](yellow,green,cyan)"]),
+    ("The purple and yellow blocks should end up in a row along with the green block.", ["line(green,purple,yellow)"]),
+    ("Place the cyan, purple and brown cubes in a row running from the front of the table to the back, in that order.",
+     ["line[front_to_back](cyan,purple,brown)"]),
+    ("Build a tower of three blocks with the black block on top and two yellow blocks below it.",
+     ["stack(yellow,yellow,black)"]),
+    ("Episode ends when the black cube is in the front left corner.", ["in_region(black,front_left)"]),
+    ("End the episode when red is on blue.", ["stack(blue,red)"]),
+])
+def test_layers_shared_by_a_colour_starts_taken_off_or_topped_and_episode_ends(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text, why", [
+    ("Make a row of exactly three cubes using two purple cubes, two cyan cubes and one brown cube.", "row of exactly 3"),
+    ("build a pyramid with the red cube at the bottom and the red cube on top", "two layers"),
+    ("Move the white cube to the front right corner and keep it in the back left corner.", "contradict"),
+    ("Build the same tower you built last time.", "earlier"),
+    ("Make the same row we made yesterday.", "earlier"),
+    ("Initially red is stacked on yellow. Swap them so yellow is on blue.", None),
+    # a fourth digit had been added to the tower ('1 at the bottom, then 2, then 3' read as a sorted tower of the default 4)
+    ("Build a tower of number blocks: 1 at the bottom, then 2, then 3.", None),
+])
+def test_counts_exactly_said_one_cube_in_two_places_and_earlier_structures_are_refused(text, why):
+    with pytest.raises(ParseError) as err:
+        check_feasibility(parse(text))
+    if why:
+        assert why in str(err.value)

@@ -206,7 +206,7 @@ def _count_re(colors: str) -> re.Pattern:
         rf"(?P<colors>(?:(?:{colors})(?:\s*,\s*|\s+and\s+|\s+or\s+))*(?:{colors})\s+)?"
         rf"(?:(?!(?:with|of|on|in|to|for|from|and|or|by|at|the|a|an|than)\b)[a-z\-]+\s+){{0,2}}?{CUBE_NOUNS}\b"
         rf"|(?<![a-z'@])(?P<n3>\d+)\s+(?P<color3>{colors})\b(?!\s+(?:goal\s+)?patch)"
-        rf"|\b(?:tower|stack|column|pile|row|line|pillar)\s+of\s+(?P<n2>\d+)\s+(?:(?P<color2>{colors})\b)?")
+        rf"|\b(?:tower|stack|column|pile|row|line|pillar)\s+of\s+(?:exactly\s+|only\s+|just\s+)?(?P<n2>\d+)\s+(?:(?P<color2>{colors})\b)?")
 
 
 def mentions(text: str, colors: str, canon) -> list[Mention]:
@@ -485,7 +485,7 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
             what = f"{m.color} cubes" if m.color else "cubes"
             if have < m.count:
                 raise UnaccountedMention(f"'{m.words}' asks for {m.count} {what} but the task read has {have}")
-            sized = re.fullmatch(r"(tower|stack|column|pillar|row|line) of \d+", m.words)
+            sized = re.fullmatch(r"(tower|stack|column|pillar|row|line) of (?:exactly |only |just )?\d+", m.words)
             if sized:  # "a tower of 3 blocks": some tower of exactly 3 (a tower of 4 held 'at least 3')
                 sizes = _structure_sizes(schema, "stack" if sized.group(1) not in ("row", "line") else "line")
                 if m.count not in sizes:

@@ -461,6 +461,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|\b(?:i|you|we)(?:'m|'re|\s+am|\s+are)\s+(?:holding|touching)\b|\b(?:in|from)\s+(?:my|your|the\s+robot's)\s+(?:hand|gripper)\b"
                   r"|\b(?:again|undo|restore|original(?:ly)?|previous(?:ly)?|remaining|as\s+(?:before|it\s+was|they\s+were))\b"
                   r"|\b(?:as|like)\s+(?:last\s+time|yesterday|the\s+last\s+(?:one|time)|before|earlier|previously|we\s+did|you\s+did)\b"
+                  r"|\blast\s+time\b|\b(?:you|we|i)\s+(?:built|made|did|stacked|arranged)\s+(?:it\s+)?(?:before|earlier|yesterday|previously)\b"
+                  r"|\bthe\s+same\s+(?:towers?|stacks?|rows?|lines?|structures?|pyramids?|walls?|grids?|circles?|piles?|arrangements?"
+                  r"|patterns?|configurations?|layouts?|shapes?|setups?)\s+(?:as\s+|that\s+|which\s+)?(?:you|we|i)\b"
                   r"|(?<!leave\s)(?<!keep\s)\bthe\s+rest\b(?!\s+(?:as\s+(?:it\s+is|is|they\s+are)|where\s+they\s+are|in\s+place|alone|untouched)"
                   r"\s*[.!;]?\s*$)|\bwhere\s+(?:it|they|the\s+(?:[a-z]+\s+){0,2}?(?:blocks?|cubes?|ones?))\s+(?:was|were|used\s+to\s+be|started|began)\b"
                   r"|\bthe\s+same\s+(?:order|sequence|positions?|places?|spots?)\b"
@@ -1103,9 +1106,11 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\b(must|should|has\s+to|have\s+to|needs?\s+to|will)\s+(?:to\s+)?(?:stay|remain)\b"), r"\1 be"),
     (re.compile(r"\b(?:stays|remains)\s+(?=(?:on|onto|at|in|inside|next\s+to|beside|behind|under|to\s+the|near|far|between|in\s+front)\b)"),
      "is "),
-    # "leave the pair in the back left corner", "keep all the red cubes in the front side": put them there
-    (re.compile(r"\b(?:leave|keep)\s+(?=(?:all\s+)?(?:the|both|all|these|those)\s+(?:[a-z]+\s+){0,3}?(?:cubes?|blocks?|pair|ones?|tower|stack"
-                r"|row|line)\s+(?:on|onto|at|in|inside|next\s+to|beside|behind|in\s+front\s+of|to\s+the|near|far|between|under)\b)"), "put "),
+    # "leave the pair in the back left corner", "keep all the red cubes in the front side", "keep it in the corner": put
+    # them there
+    (re.compile(r"\b(?:leave|keep)\s+(?=(?:(?:all\s+)?(?:the|both|all|these|those)\s+(?:[a-z]+\s+){0,3}?(?:cubes?|blocks?|pair|ones?|tower"
+                r"|stack|row|line)|it|them)\s+(?:on|onto|at|in|inside|next\s+to|beside|behind|in\s+front\s+of|to\s+the|near|far|between"
+                r"|under)\b)"), "put "),
     # "put one cube on the red patch and another on the blue patch": another cube (it had been the first cube again)
     (re.compile(rf"\b(one|a|an)\s+((?:(?:{COLOR_RE})\s+)?(?:cube|block))\b(.*?)\banother\s+"
                 r"(?=(?:on|onto|in|into|at|next|beside|behind|under|in\s+front)\b)"),
@@ -1167,6 +1172,14 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 r"on\s+(?:it|top(?:\s+of\s+it)?)\b"), r"put the \2 \3 on the \1 patch"),
     # "fill the red patch with the three red cubes": those cubes on it
     (re.compile(rf"\bfill\s+the\s+({COLOR_RE})\s+patch\s+with\s+"), r"put on the \1 patch "),
+    # "a tower with the black block on top and two yellow blocks below it": below the top cube, the rest of the tower
+    (re.compile(r"(\bon\s+top\b[^.;]*?\b(?:blocks?|cubes?|ones?)\s+)(?:below|under|beneath|underneath)\s+(?:it|that\s+one)\b"
+                r"(?=\s*(?:[.,;]|$))"), r"\1below"),
+    # "in a row along with the green block": together with it
+    (re.compile(r"\balong\s+with\b"), "together with"),
+    # "a row running from the front of the table to the back": the row's direction, its verb of extent dropped
+    (re.compile(r"\b(rows?|lines?)\s+(?:running|going|extending|stretching|(?:that|which)\s+(?:runs?|goes|go|extends?|stretch(?:es)?))"
+                r"\s+(?=from\b)"), r"\1 "),
     # "from the left to the right": a direction said with articles, as "from left to right" says it
     (re.compile(r"\bfrom\s+the\s+(left|right|front|back|bottom|top)\s+to\s+the\s+(left|right|front|back|bottom|top)\b"
                 r"(?!\s+(?:of|side|edge|corner|end)\b)"), r"from \1 to \2"),
@@ -1702,10 +1715,14 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:in\s+this\s+(?:task|episode|environment|setting)\s*,?\s*)?(?:the\s+)?"
                r"(?:agents?|robots?|polic(?:y|ies)|controllers?|learners?)\s+(?:must|should|has\s+to|have\s+to|needs?\s+to"
                r"|(?:is|are)\s+(?:required|asked)\s+to)\s+"),
-    # "The episode is successful if ...", "the task succeeds when ...", "Success when ...": the goal follows
+    # "The episode is successful if ...", "the task succeeds when ...", "Success when ...", "Episode ends when ...": the goal
+    # follows (an episode ends on success)
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:episode|task|trial|rollout|attempt)\s+(?:is\s+(?:considered\s+|deemed\s+|"
-               r"counted\s+as\s+)?(?:successful|a\s+success|solved|completed?)|succeeds|counts\s+as\s+(?:a\s+)?success(?:ful)?)\s+"
-               r"(?:if|when|once|as\s+soon\s+as)\s+"),
+               r"counted\s+as\s+)?(?:successful|a\s+success|solved|completed?)|succeeds|counts\s+as\s+(?:a\s+)?success(?:ful)?"
+               r"|(?:ends|terminates|stops|finishes)(?:\s+(?:successfully|with\s+(?:a\s+)?success))?)\s+"
+               r"(?:if|when|once|as\s+soon\s+as)\s+"
+               r"|(?:^|(?<=[.!?;:]\s))(?:end|terminate|stop)\s+(?:the\s+)?(?:episode|task|trial|rollout|run)\s+"
+               r"(?:successfully\s+)?(?:when|once|as\s+soon\s+as)\s+"),
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:episode\s+)?success(?:\s+(?:condition|criterion))?\s*(?:(?:is\s+(?:achieved\s+|reached\s+)?)?"
                r"(?:when|if|once)\s+|:=\s*|=\s*)"),
     # a config comment's "done when ...", "reward = 1 iff ...", "returns True if ...": the goal follows
@@ -2302,6 +2319,11 @@ center"): the place of that cube (it had gone to the sentence's subject)."""
 
 COLOUR_SPOT_RE = re.compile(rf"\b({COLOR_RE})\s+(?:spot|dot|circle\s+on\s+the\s+table)\b")
 """A coloured spot on the table ("the yellow spot"): a goal patch (it had been read as a yellow cube)."""
+
+COLOUR_GROUP_NOUN_RE = re.compile(rf"\bthe\s+(?P<c>{COLOR_RE})\s+(?P<noun>pair|couple)\b(?!\s+of\b)")
+"""Two cubes of one colour named as a pair ("The orange pair is on the bottom"): written as "the 2 orange blocks"
+before number words are read (:data:`NUMBER_WORDS` reads "pair" alone as 2, which left "the orange 2")."""
+
 
 PAIR_ON_CUBE_RE = re.compile(rf"^(?:(?:please\s+)?(?:put|place|set|stack)\s+)the\s+(?P<a>{COLOR_RE})\s+and\s+(?:the\s+)?(?P<b>{COLOR_RE})\s+"
                              rf"(?:cubes|blocks)\s+(?:both\s+)?(?:on\s+top\s+of|on|onto|atop)\s+the\s+(?P<c>{COLOR_RE})\s+(?:cube|block)\s*[.!]?$")

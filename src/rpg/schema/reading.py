@@ -1462,6 +1462,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
             text = f"{text[:m.start()]}the {before[0]} patch and the {before[1]} patch{text[m.end():]}"
     for pattern, written_out in lexicon.DISTRIBUTED_RELATIONS:
         text = pattern.sub(written_out, text)
+    text = lexicon.COLOUR_GROUP_NOUN_RE.sub(r"the 2 \g<c> blocks", text)  # "the orange pair": the 2 orange blocks
     for w, n in NUMBER_WORDS.items():
         text = re.sub(rf"\b{w}\b", str(n), text)
     text = lexicon.rewrite(lexicon.SPELLING_REWRITES, text)

@@ -437,6 +437,8 @@ def split(instruction: str) -> InitialScene | None:
         rest = rest if re.match(r"(?i)(?:put|place|move|take|stack|unstack|dismantle|leave|build|make|set|bring|now|then|goal|the|a|an)\b",
                                 rest) else f"{subject} {rest}"  # "... and must end up on the table": the subject carried over
         rest = re.sub(r"(?i)^((?:then\s+)?(?:put|place|move|take|set|bring|slide|push)\s+)it\b", rf"\1{subject}", rest)  # "Put it ..."
+        rest = _start_ends_named([f"{clause.group('fact')}.", rest])[1]  # "... Put the gray block on top.": on its top cube
+        rest = _TAKE_OFF_RE.sub(_taken_off, rest)  # "... Take it off and put it on the table.": where it goes
         rest = "put all the cubes on the table." if UNDO_START_RE.match(rest) else rest  # "... Unstack it."
         return InitialScene(tuple(stacks), GOAL_OPENER_RE.sub("", rest, count=1)) if stacks else None
     sentences = [s for s in re.split(r"(?<=[.;!?])\s+|\s*(?=\b(?:[Gg]oal|[Tt]arget)\s*:)|\s*,?\s*\band\s+(?=(?:at|in)\s+the\s+end\b)",
@@ -521,20 +523,46 @@ def _start_ends_named(sentences: list[str]) -> list[str]:
         return "put " + " and ".join(f"the {c}" for c in stacks[0][-n:]) + " cubes on the table"
 
     def swapped(m: re.Match) -> str:  # "swap them so the black one ends on top": the start's stack of two reversed
-        if len(stacks[0]) != 2 or (m.group("c") and _canon(m.group("c")) != stacks[0][0 if m.group("top") else 1]):
+        if len(stacks[0]) != 2 or (m.group("c") and _canon(m.group("c")) != stacks[0][0 if m.group("top") or m.group("d") else 1]) \
+                or (m.group("d") and _canon(m.group("d")) != stacks[0][1]):
             return m.group(0)  # a taller stack (which two is not said), or the 'so that' contradicting the swap: as written
         return f"put the {stacks[0][0]} cube on the {stacks[0][1]} cube"
 
+    subject = re.match(rf"(?i)\s*(?:initially,?\s+|at\s+the\s+start,?\s+)?the\s+(?P<c>{_NAME})\b", " ".join(start))
+    top_said = subject is not None and _canon(subject.group("c")) == stacks[0][-1]
+
+    def it_taken(m: re.Match) -> str:  # "The blue cube starts on top of the green cube. Take it off ...": the top cube
+        return f"{m.group('verb')} the {stacks[0][-1]} cube off" if top_said else m.group(0)
+
+    def on_top(m: re.Match) -> str:  # "Initially green is on brown. Put gray on top.": on the stack's top cube
+        return f"{m.group('head')}on the {stacks[0][-1]} cube"
+
     return [s if START_SENTENCE_RE.match(s) or STARTS_FACT_RE.match(s) else
-            _START_END_RE.sub(named, _SWAP_START_RE.sub(swapped, _TOP_ONES_OFF_RE.sub(top_ones, s))) for s in sentences]
+            _ON_TOP_RE.sub(on_top, _START_END_RE.sub(named, _SWAP_START_RE.sub(swapped, _TOP_ONES_OFF_RE.sub(
+                top_ones, _IT_TAKEN_RE.sub(it_taken, s)))))
+            for s in sentences]
+
+
+_ON_TOP_RE = re.compile(rf"(?i)(?P<head>^\s*(?:then\s+)?(?:put|place|set|stack|add|lay)\s+(?:the\s+|a\s+|an\s+)?{_NAME}"
+                        r"(?:\s+(?:cube|block|one))?\s+)(?:on\s+(?:the\s+)?top(?:\s+of\s+(?:it|the\s+(?:tower|stack)))?"
+                        r"|onto\s+(?:it|the\s+(?:tower|stack)))(?=\s*(?:[.!;,]|$|\bso\b))")
+"""A goal that adds a cube on top of the start's one stack ("Put gray on top.", "Put the gray block on top of it."):
+the stack's top cube named (:func:`_start_ends_named`)."""
+
+
+_IT_TAKEN_RE = re.compile(r"(?i)^\s*(?:then\s+)?(?P<verb>take|lift|remove|pick)\s+it\s+off\b")
+"""A goal that takes 'it' off the start's one stack ("The blue cube starts on top of the green cube. Take it off and put it
+on the table."): the cube the start sentence is about, named when it is the stack's top (:func:`_start_ends_named`)."""
 
 
 _SWAP_START_RE = re.compile(
     r"(?i)^\s*(?:then\s+)?(?:swap|switch|reverse|flip)\s+(?:them|the\s+two(?:\s+(?:cubes|blocks))?|the\s+(?:cubes|blocks)|their\s+order"
     r"|the\s+(?:tower|stack)|the\s+order)(?:\s*,?\s*so\s+(?:that\s+)?(?:the\s+)?(?P<c>" + _NAME + r")(?:\s+(?:cube|block|one))?\s+"
-    r"(?:ends?\s+(?:up\s+)?|is\s+|sits\s+|goes\s+)(?:on\s+(?P<top>top)|at\s+the\s+(?P<bottom>bottom)))?\s*[.!]?\s*$")
-"""A goal that swaps the start's stack of two ("swap them so the black one ends on top"): its bottom cube put on its top
-one; a 'so that' naming the cube that ends on top (or at the bottom) must agree with the swap."""
+    r"(?:ends?\s+(?:up\s+)?|is\s+|sits\s+|goes\s+)(?:on\s+(?P<top>top)|at\s+the\s+(?P<bottom>bottom)"
+    r"|(?:on|on\s+top\s+of|atop)\s+(?:the\s+)?(?P<d>" + _NAME + r")(?:\s+(?:cube|block|one))?))?\s*[.!]?\s*$")
+"""A goal that swaps the start's stack of two ("swap them so the black one ends on top", "swap them so yellow is on
+red"): its bottom cube put on its top one; a 'so that' naming the cube that ends on top (or at the bottom, or the two
+cubes' order) must agree with the swap."""
 
 
 _TOP_ONES_OFF_RE = re.compile(

@@ -84,17 +84,20 @@ THEN_LAYER_RE = re.compile(rf"\bthen\s+(?:(?P<n>\d+)\s+)?(?P<c>{COLOR_RE})\b")
 """A layer said after the one below it ("..., then 2 red, then 1 yellow")."""
 
 
-def layer_roles(f: Features, levels: int) -> dict[str, tuple[int, int | None]]:
+def layer_roles(f: Features, levels: int) -> dict[tuple[str, int], int | None]:
     """The colours the text gives a layer of a structure ``levels`` layers high ("yellow on
-    top", "3 red blocks at the base", "a blue base"): colour -> (layer, cubes), layer 0 on the
+    top", "3 red blocks at the base", "a blue base"): (colour, layer) -> cubes, layer 0 on the
     table, cubes None for the whole layer ("red blocks", "a red base") else how many ("a red
-    block": 1, "2 green": 2).
+    block": 1, "2 green": 2).  A colour may stand in two layers ("two red cubes in the middle
+    and one red cube on top").
 
     Raises:
-        ParseError: a colour given two layers, or "middle" of a structure that has no one
-            middle layer (two layers, or more than three).
+        ParseError: one cube given two layers ("the red cube at the bottom and the red cube on
+            top"), or "middle" of a structure that has no one middle layer (two layers, or more
+            than three).
     """
-    out: dict[str, tuple[int, int | None]] = {}
+    out: dict[tuple[str, int], int | None] = {}
+    definite: dict[str, int] = {}  # a colour said as "the <colour> cube": one cube, so one layer
     for m in LAYER_ROLE_RE.finditer(f.text):
         i = next(k for k in range(5) if m.group(f"c{k}"))
         word = m.group(f"role{i}")
@@ -110,16 +113,20 @@ def layer_roles(f: Features, levels: int) -> dict[str, tuple[int, int | None]]:
         noun = m.groupdict().get(f"noun{i}") or ""
         n = int(count) if count and count.isdigit() and len(colors) == 1 else \
             1 if noun in ("block", "cube", "one") else None
+        the = m.groupdict().get(f"n{i}") == "the" and noun in ("block", "cube")
         for color in colors:
-            if color in out and out[color][0] != k:
-                raise ParseError(f"the {color} cubes are given two layers in \"{f.original.strip()}\"")
-            out[color] = (k, n)
-    if out and {lv for lv, _ in out.values()} == {0}:  # "3 blue at the base then 2 red then 1 yellow": layer by layer
+            placed = {lv for c, lv in out if c == color}
+            if placed - {k} and (the or color in definite):
+                raise ParseError(f"the {color} cube is given two layers in \"{f.original.strip()}\"")
+            if the:
+                definite[color] = k
+            out[(color, k)] = n
+    if out and {lv for _, lv in out} == {0}:  # "3 blue at the base then 2 red then 1 yellow": layer by layer
         for k, m in enumerate(THEN_LAYER_RE.finditer(f.text), start=1):
             color = canon_color(m.group("c"))
-            if k >= levels or color in out:
+            if k >= levels or any(c == color for c, _ in out):
                 break
-            out[color] = (k, int(m.group("n")) if m.group("n") else None)
+            out[(color, k)] = int(m.group("n")) if m.group("n") else None
     return out
 
 
@@ -129,7 +136,7 @@ ALL_ONE_COLOR_RE = re.compile(rf"\b(?:all|every\s+(?:cube|block|one)|each\s+(?:c
 ("all purple cubes at the bottom")."""
 
 
-def fill_layers(f: Features, b: Builder, sizes: list[int], roles: dict[str, tuple[int, int | None]]) -> list[str]:
+def fill_layers(f: Features, b: Builder, sizes: list[int], roles: dict[tuple[str, int], int | None]) -> list[str]:
     """Cubes for a structure of layers ``sizes`` (bottom first) whose layers ``roles``
     (:func:`layer_roles`) names: each named colour in its layer, the other sites filled with
     the colours the text names for no layer (counted groups keep their counts; one colour
@@ -141,7 +148,7 @@ def fill_layers(f: Features, b: Builder, sizes: list[int], roles: dict[str, tupl
     """
     slots: list[list[str | None]] = []
     for k, size in enumerate(sizes):
-        here = [(c, n) for c, (lv, n) in roles.items() if lv == k]
+        here = [(c, n) for (c, lv), n in roles.items() if lv == k]
         whole = [c for c, n in here if n is None]
         counted = sum(n for _, n in here if n is not None)
         share, rest = divmod(size - counted, len(whole)) if whole else (0, 0)
@@ -152,13 +159,14 @@ def fill_layers(f: Features, b: Builder, sizes: list[int], roles: dict[str, tupl
         cols += [c for c in whole for _ in range(share)] if whole else [None] * (size - counted)
         slots.append(cols)
     free = sum(c is None for layer in slots for c in layer)
-    groups = [(n, c) for n, c in counted_groups(f) if c not in roles]
-    listed = [c for c in dict.fromkeys(f.color_list()) if c not in roles]
+    given = {c for c, _ in roles}
+    groups = [(n, c) for n, c in counted_groups(f) if c not in given]
+    listed = [c for c in dict.fromkeys(f.color_list()) if c not in given]
     every = ALL_ONE_COLOR_RE.search(f.text)
     if every and re.search(r"\b(?:top|bottom|base|middle|upper|lower|first|second|third)(?:\s+(?:row|layer|level|tier))?\s*$",
                            f.text[:every.start()]):
         every = None  # "top row all purple": a layer's colour (a role), not every cube's
-    if every and any(c != canon_color(every.group("c")) for c in roles):
+    if every and any(c != canon_color(every.group("c")) for c in given):
         raise ParseError(f"\"{f.original[:80]}\" gives every cube one colour ('{every.group(0)}') and some cubes "
                          "another: a contradiction; say the colours once")
     if every and not listed:  # "four purple cubes at the bottom, then three, ..., all purple"
@@ -170,7 +178,7 @@ def fill_layers(f: Features, b: Builder, sizes: list[int], roles: dict[str, tupl
     elif listed:
         pool = [listed[i % len(listed)] for i in range(free)]
     else:
-        pool = [c for c in DEFAULT_COLORS if c not in roles][:free]
+        pool = [c for c in DEFAULT_COLORS if c not in given][:free]
         pool += [pool[-1] if pool else "red"] * (free - len(pool))
     fill = iter(pool)
     names = [b.cube(c if c is not None else next(fill)) for layer in slots for c in layer]
@@ -376,7 +384,7 @@ def _counted_layers(f: Features, height: int) -> list[int] | None:
     except ParseError:
         return None
     per: dict[int, int] = {}
-    for layer, n in roles.values():
+    for (_, layer), n in roles.items():
         if n is None:
             return None
         per[layer] = per.get(layer, 0) + n
@@ -619,9 +627,10 @@ _REVERSE_LIST_RE = re.compile(r"\bin\s+(?:the\s+)?(?:reverse(?:d)?|opposite|back
 
 _END_ROLE_RE = re.compile(rf"\b(?P<c>{COLOR_RE})(?:\s+(?:block|cube|one))?\s+(?:(?:is|goes|sits|stands|being|should\s+be|must\s+be)\s+)?"
                           r"(?:(?:on|at|to|in)\s+the\s+(?:far\s+|very\s+)?(?P<side>left|right|middle|center|centre)(?:\s+(?:end|side))?"
-                          r"|(?<=is\s)(?P<side2>left|right))\b(?!\s+(?:of|half|part|corner|edge)\b)")
+                          r"|(?<=is\s)(?P<side2>left|right)|(?<=[a-z]\s)(?P<side3>left|right)(?=\s*(?:[,.;]|$|\s+and\b)))\b"
+                          r"(?!\s+(?:of|half|part|corner|edge)\b)")
 """A cube of a line given its place in it ("with red on the left", "blue on the far right", "green
-in the middle", "orange is leftmost": "leftmost" reads "left")."""
+in the middle", "orange is leftmost", "with yellow leftmost and cyan rightmost": "leftmost" reads "left")."""
 
 
 _START_END_RE = re.compile(rf"\b(?P<w>start(?:s|ing)?|begin(?:s|ning)?|end(?:s|ing)?|finish(?:es|ing)?)\s+with\s+"
@@ -640,7 +649,7 @@ def _order_by_end_roles(f: Features) -> list[str] | None:
     listed = len(f.color_list()) >= 2 * len(colors) - 1  # the cubes listed, then (most of) them given a place
     said: list[tuple[str, str]] = []  # (place in the line, colour)
     for m in _END_ROLE_RE.finditer(f.text):
-        side = m.group("side") or m.group("side2")
+        side = m.group("side") or m.group("side2") or m.group("side3")
         said.append(({"center": "middle", "centre": "middle"}.get(side, side), canon_color(m.group("c"))))
     if direction_stated(f) and line_axis_said(f) == "y":  # "from left to right, starts with black and ends with white"
         first, last = ("right", "left") if direction_of(f) == "right_to_left" else ("left", "right")
@@ -917,8 +926,10 @@ def recognize_sorted_tower(f: Features, b: Builder) -> bool:
     if material not in ("letters", "digits") or explicit_labels(f) or spelled_word(f):
         return False
     if len(set(re.findall(r"\b(?:letter|digit|number)\s+'?([a-z0-9])\b", f.text))) >= 2 or len(set(re.findall(
-            r"\b([a-z0-9])\s+(?:(?:is|goes|sits)\s+)?(?:on|at|in)\s+(?:the\s+)?(?:bottom|base|top|middle)\b", f.text))) >= 2:
-        return False  # "with A at the bottom, then B, then C on top", "3 on the bottom ... 1 on top": the cubes are named
+            r"\b([a-z0-9])\s+(?:(?:is|goes|sits)\s+)?(?:on|at|in)\s+(?:the\s+)?(?:bottom|base|top|middle)\b", f.text))) >= 2 \
+            or re.search(r"(?:,|\band)\s+then\s+[a-z0-9]\b", f.text):
+        return False  # "with A at the bottom, then B, then C on top", "3 on the bottom ... 1 on top", "1 at the bottom, then 2,
+        # then 3": the cubes are named (a fourth had been added to a sorted tower)
     descending = tower_order(f)
     if descending is None:
         return False
