@@ -5155,3 +5155,21 @@ def test_counts_exactly_said_one_cube_in_two_places_and_earlier_structures_are_r
         check_feasibility(parse(text))
     if why:
         assert why in str(err.value)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("The goal is a wall made of six cubes: a bottom course of orange cubes and a top course of purple cubes, three each.",
+     ["wall(orange,orange,orange|purple,purple,purple)"]),  # 'course' (a wall's row of bricks) had been an unknown word
+    ("Put red on blue and, of course, green on red.", ["stack(blue,red,green)"]),  # "of course" is no row
+    ("Place the number cubes 5 and 8 in a row, 8 on the left.", ["line[left_to_right](8,5)"]),
+    ("Place the number cubes 5 and 8 in a row, 5 on the left.", ["line[left_to_right](5,8)"]),
+    ("Put the digit cubes 1, 2 and 3 in a row with 3 on the left and 1 on the right.", ["line[left_to_right](3,2,1)"]),
+    ("Put the letters A and B in a row with B on the left.", ["line[left_to_right](B,A)"]),
+])
+def test_courses_of_a_wall_and_labelled_rows_whose_ends_are_said(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+def test_a_labelled_row_with_one_end_said_twice_is_refused():
+    with pytest.raises(ParseError):
+        parse("Put the number cubes 5 and 8 in a row, 8 on the left, 5 on the left.")

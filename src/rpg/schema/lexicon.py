@@ -131,6 +131,7 @@ read as the sort words the readers know ("from smallest to largest"); it had bee
 
 SYNONYMS: dict[str, str] = {
     "brick": "block", "bricks": "blocks", "ground": "table", "floor": "table", "tabletop": "table",
+    "course": "row", "courses": "rows",  # a wall's course of bricks is a row ("of course" is a filler: FILLER_RE)
     "desk": "table", "rightmost": "right", "leftmost": "left", "frontmost": "front", "backmost": "back",
     "furthest": "far", "farthest": "far", "lastly": "finally", "afterwards": "then", "afterward": "then",
     "subsequently": "then", "organize": "arrange", "organise": "arrange", "organized": "arranged", "rearrange": "arrange",
@@ -1815,7 +1816,8 @@ FILLER_RE = re.compile(r"(?i)(?:^|(?<=[.!?]\s))(?:prego|allora|ecco|dai|senti|go
                        r"|(?:^|(?<=[.!?;]\s))(?:separately|independently|additionally|in\s+addition|besides|furthermore|moreover"
                        r"|on\s+top\s+of\s+that|apart\s+from\s+that|as\s+a\s+second\s+(?:part|step))\s*,\s*"
                        r"|\b(?:(?:in\s+the\s+)?same\s+way)\s+(?=(?:put|place|keep|move|set)\b)"
-                       r"|,?\s*\b(?:va\s+bene|capisci|ok\?|okay\?|right\?|yeah\?)\s*(?=[.!?]*\s*$)")
+                       r"|,?\s*\b(?:va\s+bene|capisci|ok\?|okay\?|right\?|yeah\?)\s*(?=[.!?]*\s*$)"
+                       r"|,?\s*\bof\s+course\b\s*,?")
 """Interjections said around a task in several languages' habits ("Prego, ...", "Allora, ...",
 "..., va bene?", "God willing, ...", "omg"), and a sentence's opening that only joins it to the
 one before ("Separately, put ...", "In addition, ..."; every sentence of a goal holds together): dropped."""
@@ -2481,9 +2483,9 @@ def names_a_role(before: str, text: str) -> bool:
                     and not re.search(r"\b(?:towers?|stacks?|stacked|columns?|piles?)\b", text)))
 
 
-COMMA_ROLE_BEFORE = re.compile(rf",\s*(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:block|cube|one))?(?:\s+(?:is|goes|sits))?\s*$")
+COMMA_ROLE_BEFORE = re.compile(rf",\s*(?:the\s+)?(?:{COLOR_RE}|\d)(?:\s+(?:block|cube|one))?(?:\s+(?:is|goes|sits))?\s*$")
 """Text before a bare side that makes it the place of a cube said after a comma in a row ("two blue and one orange in a
-row, orange in the centre"): its place in the row, not the table's."""
+row, orange in the centre", "5 and 8 in a row, 8 on the left"): its place in the row, not the table's."""
 
 
 MIDDLE_GROUP_BEFORE = re.compile(r"(?:^|[;,.]\s*|\band\s+)the\s+(?:other\s+)?\d+(?:\s+(?:cubes|blocks|ones))?\s*$")

@@ -701,6 +701,28 @@ def _list_the_direction_orders(f: Features, lists: list[re.Match]) -> re.Match |
                      f"{', '.join(seqs[-1])}\"), or use --model")
 
 
+_LABEL_END_ROLE_RE = re.compile(r"\b(?P<lab>[A-Z]|\d)\s+(?:(?:cube\s+|block\s+)?(?:is|goes|sits|stands|being)\s+)?(?:on|at|to)\s+the\s+"
+                                r"(?:far\s+|very\s+)?(?P<side>left|right)(?:\s+end)?\b(?!\s+(?:of|side|half|corner|edge)\b)")
+"""A labelled cube of a line given its end ("..., 8 on the left", "with C at the right end"), read in the original's case
+(a lone capital is a letter cube's label, "a" an article)."""
+
+
+def _labels_by_end_roles(f: Features, labels: list[str]) -> list[str] | None:
+    """The labels of a line from left to right when its words give the ends so that every place is fixed (two labels and
+    one end said, or three and both ends); None otherwise."""
+    ends: dict[str, str] = {}
+    for m in _LABEL_END_ROLE_RE.finditer(f.original):
+        lab = m.group("lab").upper()
+        if lab not in labels or ends.get(m.group("side"), lab) != lab:
+            return None
+        ends[m.group("side")] = lab
+    if not ends or len(set(ends.values())) != len(ends) or len(labels) > 3 or len(labels) - len(ends) > 1:
+        return None
+    rest = [lab for lab in labels if lab not in ends.values()]
+    return [ends["left"] if "left" in ends else rest.pop(0), *rest, ends["right"] if "right" in ends else rest.pop()][:len(labels)] \
+        if len(labels) == 3 else ([ends["left"], *rest] if "left" in ends else [*rest, ends["right"]])
+
+
 @reader(order=160)
 def recognize_ordered_line(f: Features, b: Builder) -> bool:
     order = ordering_of(f)
@@ -769,10 +791,13 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
             labels = sorted(labels, key=lambda lab: (not lab.isdigit(), lab), reverse=order[1])
         elif _REVERSE_LIST_RE.search(f.text):  # "the digits 7, 3, 5 in a row in reverse order": the list read backwards
             labels = labels[::-1]
+        by_ends = None if reads or order else _labels_by_end_roles(f, labels)
+        if by_ends:  # "the number cubes 5 and 8 in a row, 8 on the left": each end's cube said
+            labels, direction = by_ends, "left_to_right"
         names = [b.semantic(lab) for lab in labels]
         b.place(directed_line(names, direction))
         said_as_word = bool(reads or READ_WORDS_RE.search(f.text))
-        if direction_stated(f) or said_as_word or order:
+        if direction_stated(f) or said_as_word or order or by_ends:
             b.preds.append(InLine(tuple(names), axis=line_axis(direction), order=direction))
         else:  # "put the A and the B in a line": the listed order from either end, no reading direction said
             b.preds.append(InLine(tuple(names), axis=None, order="sequence"))
