@@ -378,6 +378,9 @@ def test_parser_reads_phrasings_beyond_the_paper(text, summary):
     # two cubes next to one: the second had been laid out where the first stood
     "put the green cube next to the orange cube and the blue cube next to the orange cube",
     "put the red cube left of the blue cube and the green cube left of the blue cube",
+    # a structure wider than the centre third stands with its middle there (it had been refused as not fitting)
+    "Form a circle of four purple cubes in the centre of the table.",
+    "build a row of four black blocks in the middle of the table",
 ])
 def test_new_phrasings_compile_to_valid_tasks(text, tmp_path):
     r = compile_instruction(text, tmp_path)

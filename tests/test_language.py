@@ -5173,3 +5173,26 @@ def test_courses_of_a_wall_and_labelled_rows_whose_ends_are_said(text, expected)
 def test_a_labelled_row_with_one_end_said_twice_is_refused():
     with pytest.raises(ParseError):
         parse("Put the number cubes 5 and 8 in a row, 8 on the left, 5 on the left.")
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Form a circle of four purple cubes in the centre of the table.", ["circle(purple,purple,purple,purple)@center"]),
+    ("Form a circle with four purple cubes around the centre of the table.", ["circle(purple,purple,purple,purple)@center"]),
+    ("build a row of four black blocks in the middle of the table", ["line(black,black,black,black)@center"]),
+])
+def test_a_structure_wider_than_the_centre_stands_with_its_middle_there(text, expected):
+    schema = check_feasibility(parse(text))
+    assert meaning(schema) == expected
+    centred = [p for p in schema.goal_predicate().walk() if p.name == "centred_in"]
+    assert len(centred) == 1 and not [p for p in schema.goal_predicate().walk() if p.name == "in_region"]
+    # the goal layout holds it: the cubes' middle in the centre third, some cube outside it
+    (x0, x1), (y0, y1) = region_boxes("center")[0]
+    xy = np.array([schema.goal_layout[n].position[:2] for n in centred[0].objects])
+    assert x0 <= xy[:, 0].mean() <= x1 and y0 <= xy[:, 1].mean() <= y1
+    assert any(not (x0 <= x <= x1 and y0 <= y <= y1) for x, y in xy)
+
+
+def test_a_structure_that_fits_the_centre_keeps_every_cube_there():
+    schema = parse("build a row of two black blocks in the middle of the table")
+    assert {p.name for p in schema.goal_predicate().walk()} >= {"in_region"}
+    assert not [p for p in schema.goal_predicate().walk() if p.name == "centred_in"]

@@ -10,6 +10,7 @@ from rpg.domain.predicates import (
     And,
     Behind,
     Between,
+    CentredIn,
     Equation,
     FarFrom,
     Grid,
@@ -118,6 +119,19 @@ def test_regions_split_the_workspace_in_thirds():
     assert from_dict(InRegion("a", "back_left").to_dict()) == InRegion("a", "back_left")
     with pytest.raises(ValueError, match="unknown region 'top'"):
         InRegion("a", "top")
+
+
+def test_a_structure_centred_in_a_region_is_judged_by_its_middle():
+    # a circle of four around the table's centre: no cube in the centre third, its middle there
+    ring = [cube(n, 0.55 + dx, dy) for n, (dx, dy) in zip("abcd", ((0.07, 0), (-0.07, 0), (0, 0.1), (0, -0.1)), strict=True)]
+    assert not any(InRegion(o.name, "center").evaluate(state(*ring)) for o in ring)
+    assert CentredIn(tuple("abcd"), "center").evaluate(state(*ring))
+    moved = [cube(o.name, float(o.pos[0]), float(o.pos[1]) + 0.15) for o in ring]  # the whole ring moved to the left
+    r = CentredIn(tuple("abcd"), "center").evaluate(state(*moved))
+    assert not r and "is not in the center" in r.reason
+    assert from_dict(CentredIn(("a", "b"), "center").to_dict()) == CentredIn(("a", "b"), "center")
+    with pytest.raises(ValueError):
+        CentredIn(("a",), "center")
 
 
 def test_a_region_group_holds_in_any_of_its_members():

@@ -21,6 +21,7 @@ from rpg.domain.predicates import (
     Behind,
     Between,
     Bridge,
+    CentredIn,
     Equation,
     FarFrom,
     Grid,
@@ -54,7 +55,7 @@ from rpg.domain.state import Pose, quat_mul, yaw_quat
 from rpg.domain.task_code import BlockTask
 
 __all__ = [
-    "AnchoredStack", "And", "Behind", "Between", "BlockTask", "Bridge", "ColoredCube", "Equation", "FarFrom", "GoalPatch", "Grid",
+    "AnchoredStack", "And", "Behind", "Between", "BlockTask", "Bridge", "CentredIn", "ColoredCube", "Equation", "FarFrom", "GoalPatch", "Grid",
     "InCircle", "InFrontOf", "InLayers", "InLine", "InOrder", "InRegion", "LabelFacing", "LayersUniform", "LeftOf",
     "NextTo", "Not", "On", "OnPatch", "OnTable", "Piles", "Pose", "Pyramid", "Reads",
     "RightOf", "SemanticCube", "SortedBy", "Stack", "StackOnPatch", "TemporalMonitor", "UnorderedStack", "Upright",

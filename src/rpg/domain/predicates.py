@@ -759,6 +759,39 @@ class InRegion(Predicate):
 
 
 @dataclass(frozen=True, repr=False)
+class CentredIn(Predicate):
+    """The mean of ``objects``' centres (a structure's middle) lies in a region of the workspace
+    (constants.REGION_NAMES or REGION_GROUPS), m, world frame: "a circle of four cubes in the
+    centre of the table", whose cubes cannot all stand in the centre third (issue 30: the words
+    place the structure, not each cube)."""
+
+    objects: tuple[str, ...]
+    region: str
+    name: ClassVar[str] = "centred_in"
+    list_fields: ClassVar[tuple[str, ...]] = ("objects",)
+
+    def __post_init__(self) -> None:
+        super().__post_init__()
+        region_boxes(self.region)  # raises on an unknown region
+        if len(self.objects) < 2:
+            raise ValueError("centred_in: a structure of two or more objects (one cube: in_region)")
+
+    def _evaluate(self, state):
+        x, y = (float(v) for v in np.mean([state[n].pos[:2] for n in self.objects], axis=0))
+        boxes = region_boxes(self.region)
+        ok = any(x0 <= x <= x1 and y0 <= y <= y1 for (x0, x1), (y0, y1) in boxes)
+        return self._result(ok, f"the middle of {', '.join(self.objects)} {'is' if ok else 'is not'} in "
+                                f"{describe_region(self.region)} of the workspace (at x {x:.3f}, y {y:.3f})",
+                            {"x": x, "y": y}, {"boxes": [[list(bx), list(by)] for bx, by in boxes]})
+
+    def constraints(self):
+        return [("members", {"objects": self.objects}), ("place", {"object": self.objects, "region": self.region})]
+
+    def describe(self):
+        return f"the middle of {', '.join(self.objects)} in {describe_region(self.region)} of the workspace"
+
+
+@dataclass(frozen=True, repr=False)
 class Between(Predicate):
     """``a`` lies between ``b`` and ``c``: on the segment b-c (within LINE_TOL*2), not at its ends."""
 

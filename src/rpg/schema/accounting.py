@@ -458,7 +458,7 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
     cubes = [a for a in schema.assets if a.kind != "goal_patch"]
     by_color = Counter(a.color for a in cubes if a.color)
     goal = list(schema.goal_predicate().walk())
-    regions = {p.region for p in goal if isinstance(p, P.InRegion)}
+    regions = {p.region for p in goal if isinstance(p, P.InRegion | P.CentredIn)}
     patches = {a.color or "gray" for a in schema.assets if a.kind == "goal_patch"}
     patch_count = Counter(a.color or "gray" for a in schema.assets if a.kind == "goal_patch")
     record = []

@@ -249,9 +249,10 @@ def _order(leaf, fields, scene) -> list[Constraint]:
 def _place(leaf, fields, scene) -> list[Constraint]:
     a = fields["object"]
     where = scene.d(fields["patch"]) if "patch" in fields else fields["region"]
-    if isinstance(a, tuple):  # a stack, whichever of its cubes is at the bottom
+    if isinstance(a, tuple):  # a stack, whichever of its cubes is at the bottom; or a structure's middle (centred_in)
         descs = ", ".join(sorted(scene.d(n) for n in a))
-        who, subject, names = f"stack:{descs}", f"the stack of {descs}", a
+        whole = "middle" if getattr(leaf, "name", "") == "centred_in" else "stack"
+        who, subject, names = f"{whole}:{descs}", f"the {whole} of {descs}", a
     else:
         who, subject, names = scene.d(a), _phrase(scene.d(a)), (a,)
     if where == "table":

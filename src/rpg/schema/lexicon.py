@@ -1190,8 +1190,10 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 r"|\bfrom\s+the\s+(left|right|front|back)\s+(?:side|edge|end)\s+(?:to|towards?)\s+the\s+(left|right|front|back)"
                 r"(?:\s+(?:side|edge|end))?\b(?!\s+of\b)"),
      lambda m: f"from {m.group(1) or m.group(3)} to {m.group(2) or m.group(4)}"),
-    # "a circle around the center of the table": the structure at the centre, around it
-    (re.compile(r"\b(?:circle|ring)\s+around\s+(?=the\s+(?:center|centre|middle)\s+of\s+the\s+(?:table|workspace)\b)"), "circle in "),
+    # "a circle around the center of the table", "a circle with four cubes around the centre of the table": the structure
+    # with its middle at the centre
+    (re.compile(r"\b(circle|ring)\b([^.;]{0,40}?)\s+around\s+(?=the\s+(?:center|centre|middle)\s+of\s+the\s+(?:table|workspace)\b)"),
+     r"\1\2 in "),
     # "along the left side": a side of the table the structure runs along
     (re.compile(r"\balong\s+the\s+(?=(?:left|right|front|back)\s+(?:side|edge)\b)"), "on the "),
     (re.compile(r"\bin\s+back\b(?!\s+of\b)"), "at the back"),  # "a tower of 2 red blocks in back"

@@ -6,7 +6,8 @@ letter/digit cube by its label, a goal patch as ``patch:<colour>``).  Examples::
 
     stack(red,blue,green)                 a tower, bottom to top
     stack(yellow,yellow)@back_left        a tower standing in a region of the table
-    line(red,red,red)@back                a structure all of whose cubes stand in one region
+    line(red,red,red)@back                a structure all of whose cubes stand in one region (or, wider than
+                                          the centre third, whose middle stands there: ``centred_in``)
     on_patch(red,red,patch:green)         left_of(red,blue)    next_to(blue,red)
     line(green,green,green)               line[left_to_right](red,green,blue)
     wall(red,red,red|blue,blue,blue)      layers bottom to top (rows, walls, 3D blocks)
@@ -110,6 +111,9 @@ def meaning(schema: TaskSchema) -> list[str]:
         elif isinstance(p, P.InRegion):
             regions[p.a] = p.region
             used.add(p.a)
+        elif isinstance(p, P.CentredIn):  # a structure standing with its middle in a region: "circle(...)@center" too
+            regions.update(dict.fromkeys(p.objects, p.region))
+            used.update(p.objects)
         elif isinstance(p, P.OnPatch):
             on_patch.setdefault(p.patch, []).append(p.a)
         elif isinstance(p, _SYMMETRIC):

@@ -15,6 +15,7 @@ import numpy as np
 from rpg.domain import constants as C
 from rpg.domain.predicates import (
     AnchoredStack,
+    CentredIn,
     InRegion,
     OnPatch,
     Stack,
@@ -159,14 +160,17 @@ def recognize_structures_in_places(f: Features, b: Builder) -> bool:
     return True
 
 
-def _fitted(head: TaskSchema, region: str) -> dict[str, tuple[float, float, float]] | None:
+def _fitted(head: TaskSchema, region: str, whole: bool = True) -> dict[str, tuple[float, float, float]] | None:
     """The part's goal poses moved (and, when no predicate of it fixes an axis, turned a
     quarter) so that every cube's centre lies in ``region`` with :data:`REGION_MARGIN` to
-    spare; None when it cannot fit."""
+    spare (``whole``), or only so that the structure's middle is the region's centre and every
+    cube stands in the workspace (not ``whole``); None when it cannot fit."""
     cubes = [a.name for a in head.assets if a.kind != "goal_patch"]
     xyz = np.array([head.goal_layout[n].position for n in cubes], float)
     (x0, x1), (y0, y1) = region_boxes(region)[0]
     centre = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+    if not whole:
+        (x0, x1), (y0, y1) = C.WORKSPACE_X, C.WORKSPACE_Y
     free = all(getattr(p, "axis", None) is None and p.name not in PAIRWISE_RELATIONS for p in head.goal_predicate().walk())
     for turn in ((False, True) if free else (False,)):
         xy = xyz[:, :2] - xyz[:, :2].mean(axis=0)
@@ -247,6 +251,10 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
             or any(isinstance(p, InRegion) or p.name in (*PAIRWISE_RELATIONS, "between") for p in head.goal_predicate().walk())):
         return False  # relations between cubes are no structure: "red left of blue, in the back" places red (the relational reader)
     poses = _fitted(head, region)
+    centred = poses is None and region == "center"
+    if centred:  # "a circle of four cubes in the middle of the table": wider than the centre third, so the structure
+        # stands with its middle there (every cube in it could not; the words place the structure)
+        poses = _fitted(head, region, whole=False)
     if poses is None:
         raise ParseError(f"the structure of \"{f.original[:80]}\" does not fit in {describe_region(region)}; "
                          "use fewer cubes, a larger place, or say the structure's direction")
@@ -254,8 +262,10 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
     b._names.update(a.name for a in head.assets)
     b.place({n: Pose(xyz) for n, xyz in poses.items()})
     b.orientations.update(head.initial_state.orientations)
-    b.preds += head.goal_predicate().conjuncts() + [InRegion(n, region) for n in poses]
-    b.summary += [head.goal_summary, f"all of it in {describe_region(region)}"]
+    b.preds += head.goal_predicate().conjuncts() + ([CentredIn(tuple(poses), region)] if centred
+                                                     else [InRegion(n, region) for n in poses])
+    b.summary += [head.goal_summary, f"its middle in {describe_region(region)}" if centred
+                  else f"all of it in {describe_region(region)}"]
     b.primitives += list(head.primitives)
     if head.reasoning != "spatial":
         b.reasoning = head.reasoning
