@@ -5196,3 +5196,20 @@ def test_a_structure_that_fits_the_centre_keeps_every_cube_there():
     schema = parse("build a row of two black blocks in the middle of the table")
     assert {p.name for p in schema.goal_predicate().walk()} >= {"in_region"}
     assert not [p for p in schema.goal_predicate().walk() if p.name == "centred_in"]
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Make a column of three blue cubes running from front to back.", ["line[front_to_back](blue,blue,blue)"]),
+    ("Line up 4 gray blocks running from the front of the table to the back.", ["line[front_to_back](gray,gray,gray,gray)"]),
+    ("a row of three cubes (red, green, blue) running from front to back.", ["line[front_to_back](red,green,blue)"]),
+])
+def test_a_structure_running_from_one_side_to_the_other(text, expected):
+    assert meaning(check_feasibility(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "Build the tower from the example.", "Stack the cubes like in the example.", "Build a tower like in the demo.",
+])
+def test_a_structure_from_an_example_nobody_gave_is_refused_as_a_reference(text):
+    with pytest.raises(Inexpressible, match="shown or seen"):
+        parse(text)

@@ -502,7 +502,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"(?:in|before|earlier|last|for|from|at)\b"
                   r"|\b(?:this|that|these|those|the\s+same|the\s+following|the\s+given)\s+(?:arrangement|configuration|layout"
                   r"|pattern|formation|scene|setup|set-up|picture|image|way|design)s?\b"
-                  r"|\b(?:picture|image|photo|photograph|diagram|figure|screen|video|illustration|drawing|sketch|screenshot)s?\b",
+                  r"|\b(?:picture|image|photo|photograph|diagram|figure|screen|video|illustration|drawing|sketch|screenshot)s?\b"
+                  r"|\b(?:from|like|as\s+in|like\s+in|in|of)\s+the\s+(?:(?:last|previous|first|earlier|given)\s+)?(?:example|demo"
+                  r"|demonstration|sample|template|reference|model)\b",
      "refers to something shown or seen (a picture, the scene, an arrangement) that a task cannot see: say the "
      "arrangement in words (e.g. \"stack the red block on the blue block\")"),
     ("reference", r"\b(?:swap|swapping|swapped|interchange|exchange)\b|\bswitch(?:es|ed|ing)?\s+(?:the\s+)?(?:places|positions|spots)\b",
@@ -1178,9 +1180,11 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 r"(?=\s*(?:[.,;]|$))"), r"\1below"),
     # "in a row along with the green block": together with it
     (re.compile(r"\balong\s+with\b"), "together with"),
-    # "a row running from the front of the table to the back": the row's direction, its verb of extent dropped
-    (re.compile(r"\b(rows?|lines?)\s+(?:running|going|extending|stretching|(?:that|which)\s+(?:runs?|goes|go|extends?|stretch(?:es)?))"
-                r"\s+(?=from\b)"), r"\1 "),
+    # "a row running from the front of the table to the back", "a column of three blue cubes running from front to back":
+    # the structure's direction, its verb of extent dropped
+    (re.compile(r"(\b(?:rows?|lines?|columns?|cubes|blocks)|\))\s+(?:running|going|extending|stretching|(?:that|which)\s+(?:runs?|goes|go"
+                r"|extends?|stretch(?:es)?))\s+(?=(?:from\s+)?(?:the\s+)?(?:left|right|front|back)\b[^.;]{0,40}?\b(?:to|towards?)\s+"
+                r"(?:the\s+)?(?:left|right|front|back)\b)"), r"\1 "),
     # "from the left to the right": a direction said with articles, as "from left to right" says it
     (re.compile(r"\bfrom\s+the\s+(left|right|front|back|bottom|top)\s+to\s+the\s+(left|right|front|back|bottom|top)\b"
                 r"(?!\s+(?:of|side|edge|corner|end)\b)"), r"from \1 to \2"),
