@@ -5213,3 +5213,27 @@ def test_a_structure_running_from_one_side_to_the_other(text, expected):
 def test_a_structure_from_an_example_nobody_gave_is_refused_as_a_reference(text):
     with pytest.raises(Inexpressible, match="shown or seen"):
         parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    # cubes sent to places of their own, one group after another (each had found no task)
+    ("put the two green blocks in the back and the two blue blocks in the front",
+     ["in_region(blue,front)", "in_region(blue,front)", "in_region(green,back)", "in_region(green,back)"]),
+    ("all the green blocks go in the back, all the blue blocks go in the front",
+     ["in_region(blue,front)", "in_region(blue,front)", "in_region(green,back)", "in_region(green,back)"]),
+    ("put every green block in the back and every blue block in the front", ["in_region(blue,front)", "in_region(green,back)"]),
+    # the first part's verb carried to the second (the blue cubes had been read as cubes put on the right, not piled)
+    ("Pile the red cubes on the left and the blue cubes on the right.", ["pile(blue,blue,blue)@right", "pile(red,red,red)@left"]),
+])
+def test_groups_of_cubes_each_sent_to_its_own_place(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    "put the red block on the left and the blue block on the right of it",  # 'it' refers across the parts
+    "stack the red cubes on the left and the blue cubes on the right",  # a stack cannot stand in two sides
+    "make a tower of two blue blocks on the right and put the red block on the left",
+])
+def test_parts_that_refer_to_each_other_or_contradict_are_not_split(text):
+    with pytest.raises(ParseError):
+        check_feasibility(parse(text))

@@ -377,10 +377,14 @@ def recognize_spelled_out_sort(f: Features, b: Builder) -> bool:
 PART_SPLIT_RE = re.compile(
     r"\s*(?:[.;!]\s+|,?\s+and\s+then\s+|,\s*then\s+|\s+then\s+"
     r"|,?\s+and\s+(?=(?:put|place|build|make|stack|move|set|arrange|line\s+up|create|form|pile|slide|push|bring)\b)"
-    rf"|,?\s+and\s+(?=(?:a|an|\d+)\s+(?:[\w-]+\s+){{0,2}}?{STRUCTURE_NOUN}s?\b))")
+    rf"|,?\s+and\s+(?=(?:a|an|\d+)\s+(?:[\w-]+\s+){{0,2}}?{STRUCTURE_NOUN}s?\b)"
+    rf"|(?:,?\s+and|,)\s+(?=(?:the\s+|all\s+(?:of\s+)?the\s+|every\s+|each\s+)(?:\d+\s+)?(?:{COLOR_RE})\s+(?:blocks?|cubes?)\s+"
+    r"(?:(?:go|goes|should\s+go|must\s+go)\s+)?(?:in|on|at|into|to)\s+the\b))")
 """Where one task said after another begins: a new sentence, "then", or "and" before a verb
-("make a tower of two blue blocks and put the red block on the left") or before a new structure
-("a line of 4 gray cubes at the front and a circle of 5 orange cubes at the back")."""
+("make a tower of two blue blocks and put the red block on the left"), before a new structure
+("a line of 4 gray cubes at the front and a circle of 5 orange cubes at the back") or before
+cubes sent to a place of their own ("put the two green blocks in the back and the two blue
+blocks in the front")."""
 
 REFERS_ACROSS_RE = re.compile(
     r"\b(?:there|it|its|them|they|their|those|these|that|this|same|another|other|others|opposite|second|again|too|also"
@@ -480,9 +484,14 @@ def recognize_independent_parts(f: Features, b: Builder) -> bool:
     one another ("next to it") or cannot be laid out apart are not read here."""
     texts = [t.strip(" ,.;!") for t in PART_SPLIT_RE.split(f.text)]
     texts = [t for t in texts if t]
-    if (len(texts) < 2 or not _said_apart(texts)
-            or any(_bare_place(t) or REFERS_ACROSS_RE.search(t) for t in texts)):
-        return False
+    verb = re.match(r"(?:please\s+)?((?:put|place|move|set|bring|pile|stack|line\s+up|arrange|gather|group|heap)\s)", texts[0]) \
+        if texts else None
+    texts = [f"{verb.group(1)}{t}" if i and verb and re.match(r"(?:the|all|every|each)\b", t) else t
+             for i, t in enumerate(texts)]  # "pile the red cubes on the left and the blue cubes on the right": both piled
+    placed = [_bare_place(t) for t in texts]
+    if (len(texts) < 2 or not _said_apart(texts) or any(REFERS_ACROSS_RE.search(t) for t in texts)
+            or (any(placed) and not all(placed))):  # a side may be another part's ("a tower, and red on the left"),
+        return False  # unless every part is given its own ("two green in the back and two blue in the front": the table's)
     heads = _read_parts(texts)
     if heads is None or any(h.initial_state.structures or any(a.kind == "semantic_cube" for a in h.assets) for h in heads):
         return False  # labels ("the numbers 1 to 3", "the number 2") are not told apart by colour: parts may share a cube
