@@ -1478,8 +1478,6 @@ def test_attacked_phrasings_read_as_said(text, expected):
     ("build a tower of over three blocks", "quantity"),
     ("build a tower with at least 3 red blocks", "quantity"),
     ("build a centered stack of red, blue and green", "'centered'"),
-    # two towers said with their sides were read as one tower and a relation
-    ("build a tower of red and blue on the left and a tower of green and yellow on the right", "2 towers"),
     # "the red block ... a red block" is two red cubes (one cube was put on both patches)
     ("put the red block on the green patch and a red block on the yellow patch", "2 red cubes"),
     ("make a row of red, green and blue with red on the left, blue in the middle and blue on the right", "two cubes in one place"),
@@ -5237,3 +5235,28 @@ def test_groups_of_cubes_each_sent_to_its_own_place(text, expected):
 def test_parts_that_refer_to_each_other_or_contradict_are_not_split(text):
     with pytest.raises(ParseError):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("need a 3-block tower asap, green on top, two orange under it", ["stack(orange,orange,green)"]),
+    ("Put the white cube at the bottom of a three-cube tower, with the two pink cubes above it.", ["stack(white,pink,pink)"]),
+    ("put one cube in each corner of the table: red front left, blue front right, green back left, yellow back right",
+     ["in_region(blue,front_right)", "in_region(green,back_left)", "in_region(red,front_left)", "in_region(yellow,back_right)"]),
+    ("one cube is moved to each corner: red to back-left, blue to back-right, green to front-left and yellow to front-right.",
+     ["in_region(blue,back_right)", "in_region(green,front_left)", "in_region(red,back_left)", "in_region(yellow,front_right)"]),
+    ("Goal: yellow cube in the back, green cube in the front.", ["in_region(green,front)", "in_region(yellow,back)"]),
+])
+def test_roles_below_or_above_the_named_end_corners_listed_and_places_said_in_turn(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+def test_each_corner_with_a_corner_left_out_is_refused():
+    with pytest.raises(ParseError):
+        parse("put one cube in each corner of the table: red front left, blue front right")
+
+
+def test_two_towers_each_said_with_its_side_are_two_unordered_towers():
+    # they had been read as one tower and a relation (then refused); each tower's order is not said
+    schema = parse("build a tower of red and blue on the left and a tower of green and yellow on the right")
+    assert sorted(meaning(schema)) == ["stack(green,yellow)@right", "stack(red,blue)@left"]
+    assert [p.name for p in schema.goal_predicate().walk()].count("unordered_stack") == 2

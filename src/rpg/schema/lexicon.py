@@ -1176,8 +1176,15 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "fill the red patch with the three red cubes": those cubes on it
     (re.compile(rf"\bfill\s+the\s+({COLOR_RE})\s+patch\s+with\s+"), r"put on the \1 patch "),
     # "a tower with the black block on top and two yellow blocks below it": below the top cube, the rest of the tower
-    (re.compile(r"(\bon\s+top\b[^.;]*?\b(?:blocks?|cubes?|ones?)\s+)(?:below|under|beneath|underneath)\s+(?:it|that\s+one)\b"
+    (re.compile(rf"(\bon\s+top\b[^.;]*?\b(?:blocks?|cubes?|ones?|{COLOR_RE})\s+)(?:below|under|beneath|underneath)\s+(?:it|that\s+one)\b"
                 r"(?=\s*(?:[.,;]|$))"), r"\1below"),
+    # "the white cube at the bottom of a three-cube tower, with the two pink cubes above it": above the bottom cube
+    (re.compile(rf"(\b(?:at|on)\s+the\s+(?:bottom|base)\b[^.;]*?\b(?:blocks?|cubes?|ones?|{COLOR_RE})\s+)(?:above|over|on\s+top\s+of)"
+                r"\s+(?:it|that\s+one)\b(?=\s*(?:[.,;]|$))"), r"\1above"),
+    # "yellow cube in the back, green cube in the front": each cube's place said in turn, as "... and ..." says it
+    (re.compile(rf"(\b(?:cube|block)s?\s+(?:in|on|at)\s+the\s+(?:(?:front|back)\s+)?(?:front|back|left|right|center|centre|middle)"
+                rf"(?:\s+(?:corner|side|half|edge))?)\s*,\s+(?=(?P<the>the\s+)?(?:{COLOR_RE})\s+(?:cube|block)s?\s+(?:in|on|at)\s+the\s+"
+                r"(?:front|back|left|right|center|centre|middle)\b)"), lambda m: f"{m.group(1)} and {'' if m.group('the') else 'the '}"),
     # "in a row along with the green block": together with it
     (re.compile(r"\balong\s+with\b"), "together with"),
     # "a row running from the front of the table to the back", "a column of three blue cubes running from front to back":
@@ -3454,13 +3461,18 @@ def _two_corners(m: re.Match) -> str:
     return f"{m.group('v')} " + " and ".join(f"{cube} in the {c} corner" for c in corners)
 
 
+_CORNER_ITEM = r"(?:(?:to|in|at|into)\s+(?:the\s+)?)?(?:front|back|rear)[\s-]+(?:left|right)(?:\s+corner)?"
+"""A cube's corner in a list of corners ("back left", "to back-left", "in the front right corner")."""
+
+
 def _corners_listed(m: re.Match) -> str:
     """"one cube per corner: blue back left, red back right, ..." -> each cube put in its corner; unchanged when a corner
     is said twice ("one per corner" of two cubes in one: the readers refuse it)."""
     items = [(c.lower(), fb.lower().replace("rear", "back"), lr.lower())
-             for c, fb, lr in re.findall(rf"(?i)\b({COLOR_RE})\s+(front|back|rear)[\s-]+(left|right)", m.group("list"))]
-    if len({(fb, lr) for _, fb, lr in items}) != len(items):
-        return m.group(0)
+             for c, fb, lr in re.findall(rf"(?i)\b({COLOR_RE})\s+(?:(?:to|in|at|into)\s+(?:the\s+)?)?(front|back|rear)[\s-]+(left|right)",
+                                         m.group("list"))]
+    if len({(fb, lr) for _, fb, lr in items}) != len(items) or (re.search(r"(?i)\beach\b", m.group(0)) and len(items) != 4):
+        return m.group(0)  # (a corner said twice, or "each corner" with a corner left out: as written, refused)
     return "put " + ", ".join(f"the {c} cube in the {fb} {lr} corner" for c, fb, lr in items)
 
 
@@ -3506,9 +3518,11 @@ ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 rf"(?:\s+on\s+(?:{COLOR_RE}))+)+)(?=\s*(?:[.!]|$))"),
      _towers_listed),
     # "Corners: red back-left, blue back-right, ...", "one cube per corner: blue back left, ...": each cube's corner
-    (re.compile(rf"(?i)(?:\b(?:put\s+)?(?:one|a|1)\s+(?:cube|block)\s+(?:per|in\s+each|for\s+each|at\s+each)\s+corner|(?:^|(?<=[.;]\s))(?:the\s+)?"
-                rf"corners?)\s*[:\-\u2014]\s*(?P<list>(?:{COLOR_RE})\s+(?:front|back|rear)[\s-]+(?:left|right)(?:\s+corner)?(?:\s*(?:[,;]\s*(?:and\s+)?"
-                rf"|\s+and\s+)(?:{COLOR_RE})\s+(?:front|back|rear)[\s-]+(?:left|right)(?:\s+corner)?)+)"),
+    # ("put one cube in each corner of the table: red front left, ...", "one cube is moved to each corner: red to back-left, ...")
+    (re.compile(rf"(?i)(?:\b(?:put\s+)?(?:one|a|1)\s+(?:cube|block)\s+(?:is\s+|goes\s+)?(?:moved\s+|placed\s+|put\s+)?(?:per|in\s+each"
+                r"|for\s+each|at\s+each|to\s+each|into\s+each)\s+corner(?:\s+of\s+the\s+(?:table|workspace))?|(?:^|(?<=[.;]\s))(?:the\s+)?"
+                rf"corners?)\s*[:\-\u2014]\s*(?P<list>(?:{COLOR_RE})\s+{_CORNER_ITEM}(?:\s*(?:[,;]\s*(?:and\s+)?"
+                rf"|\s+and\s+)(?:{COLOR_RE})\s+{_CORNER_ITEM})+)"),
      _corners_listed),
     # "so the colours run gray, red, blue going downward": the order from the top
     (re.compile(rf"(?i)(?:,?\s*so\s+(?:that\s+)?(?:the\s+)?colou?rs\s+(?:run|go|read)\s+|\b)(?P<list>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE}))+"

@@ -486,8 +486,9 @@ def recognize_independent_parts(f: Features, b: Builder) -> bool:
     texts = [t for t in texts if t]
     verb = re.match(r"(?:please\s+)?((?:put|place|move|set|bring|pile|stack|line\s+up|arrange|gather|group|heap)\s)", texts[0]) \
         if texts else None
-    texts = [f"{verb.group(1)}{t}" if i and verb and re.match(r"(?:the|all|every|each)\b", t) else t
+    texts = [f"{verb.group(1)}{t}" if i and verb and re.match(r"(?:the|all|every|each)\b", t) and _bare_place(t) else t
              for i, t in enumerate(texts)]  # "pile the red cubes on the left and the blue cubes on the right": both piled
+    # (only cubes sent to a place of their own: "line up the pink cubes, then the brown ones" is one line or two)
     placed = [_bare_place(t) for t in texts]
     if (len(texts) < 2 or not _said_apart(texts) or any(REFERS_ACROSS_RE.search(t) for t in texts)
             or (any(placed) and not all(placed))):  # a side may be another part's ("a tower, and red on the left"),
