@@ -1747,3 +1747,19 @@ def test_a_variant_label_keeps_the_edit_as_said(tmp_path):
     fam = Family(create_family(compile_instruction("Stack a blue cube on a red cube", tmp_path, name="fam").path).path)
     r = steer(fam.path, "v2: add a green cube on top")
     assert r.valid and fam.load().get(r.version).description == "v2: add a green cube on top"
+
+
+def test_a_tower_put_on_a_patch_then_the_version_before_the_patch(tmp_path):
+    """steer_stranger18 z037: 'put the stack on the white patch' had lost the tower's middle cube (refused), and 'go back to
+    the one before the patch' had picked the version with the patch (silently wrong)."""
+    got = _steered(tmp_path, "Stack three cubes: orange on the bottom, then green, then purple on top",
+                   "put the stack on the white patch", "take the purple off",
+                   "go back to the one before the patch, and add a brown cube on top")
+    assert got[0] == ("extend", ["on_patch(orange,patch:white)", "stack(orange,green,purple)"])
+    assert got[-1][1] == ["stack(orange,green,purple,brown)"]
+
+
+def test_a_cube_put_between_the_task_s_two_cubes(tmp_path):
+    """'put a green cube between them' had found no change to read."""
+    got = _steered(tmp_path, "Put the red cube to the left of the blue cube", "put a green cube between them")
+    assert got == [("extend", ["between(green;blue,red)", "left_of(red,blue)"])]

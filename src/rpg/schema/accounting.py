@@ -206,7 +206,13 @@ def _count_re(colors: str) -> re.Pattern:
         rf"(?P<colors>(?:(?:{colors})(?:\s*,\s*|\s+and\s+|\s+or\s+))*(?:{colors})\s+)?"
         rf"(?:(?!(?:with|of|on|in|to|for|from|and|or|by|at|the|a|an|than)\b)[a-z\-]+\s+){{0,2}}?{CUBE_NOUNS}\b"
         rf"|(?<![a-z'@])(?P<n3>\d+)\s+(?P<color3>{colors})\b(?!\s+(?:goal\s+)?patch)"
-        rf"|\b(?:tower|stack|column|pile|row|line|pillar)\s+of\s+(?:exactly\s+|only\s+|just\s+)?(?P<n2>\d+)\s+(?:(?P<color2>{colors})\b)?")
+        rf"|\b(?:tower|stack|column|pile|row|line|pillar)\s+of\s+(?:exactly\s+|only\s+|just\s+)?(?P<n2>\d+)\s+(?:(?P<color2>{colors})\b)?"
+        rf"|\b(?:pyramid|wall|circle|ring)\s+of\s+(?:exactly\s+|only\s+|just\s+)?(?P<n4>\d+)\s+(?:(?P<color4>{colors})\s+)?{CUBE_NOUNS}\b")
+
+
+SIZED_KINDS = {"tower": "stack", "stack": "stack", "column": "stack", "pillar": "stack", "row": "line", "line": "line",
+               "pyramid": "pyramid", "wall": "wall", "circle": "circle", "ring": "circle"}
+"""A structure noun counted ("a pyramid of 5 cubes") -> the meaning atom whose cubes must number that many."""
 
 
 def mentions(text: str, colors: str, canon) -> list[Mention]:
@@ -220,14 +226,15 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
     out: list[Mention] = []
     said: dict[tuple[str, ...], int] = {}  # cubes counted so far, per colour set
     for m in _count_re(colors).finditer(text):
-        n = int(m.group("n") or m.group("n2") or m.group("n3"))
+        n = int(m.group("n") or m.group("n2") or m.group("n3") or m.group("n4"))
         listed = (re.findall(rf"\b(?:{colors})\b", m.group("colors") or "")
-                  or [c for c in [m.group("color2"), m.group("color3")] if c])
+                  or [c for c in [m.group("color2"), m.group("color3"), m.group("color4")] if c])
         named = tuple(sorted({canon(c) for c in listed}))
         if re.search(r"\b(?:more|additional|extra)\b", m.group(0)):  # "three blue cubes ... three more blue cubes": six
             n += said.get(named, 0)
         said[named] = n
-        out.append(Mention(m.group(0).strip(), "count", count=n, color=",".join(named) or None))
+        exact = bool(re.search(r"\b(?:only|exactly|just)\s+$", text[:m.start()]))  # "using only two green cubes"
+        out.append(Mention(m.group(0).strip(), "count", count=n, color=",".join(named) or None, region="exact" if exact else None))
     for m in re.finditer(rf"(?:\b(?P<n>\d+)\s+)?\b(?P<c>{colors})\s+(?:goal\s+)?patch(?P<pl>es)?\b", text):
         # "the two green patches": that many patches of the colour ("the red and the blue patch" is two colours)
         many = int(m.group("n")) if m.group("n") else 2 if m.group("pl") else 1
@@ -483,15 +490,19 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
         elif m.kind == "count":
             have = sum(by_color[c] for c in m.color.split(",")) if m.color else len(cubes)
             what = f"{m.color} cubes" if m.color else "cubes"
-            if have < m.count:
-                raise UnaccountedMention(f"'{m.words}' asks for {m.count} {what} but the task read has {have}")
-            sized = re.fullmatch(r"(tower|stack|column|pillar|row|line) of (?:exactly |only |just )?\d+", m.words)
-            if sized:  # "a tower of 3 blocks": some tower of exactly 3 (a tower of 4 held 'at least 3')
-                sizes = _structure_sizes(schema, "stack" if sized.group(1) not in ("row", "line") else "line")
+            if have < m.count or (m.region == "exact" and have != m.count):
+                raise UnaccountedMention(f"'{m.words}' asks for {'only ' if m.region == 'exact' else ''}{m.count} {what} but "
+                                         f"the task read has {have}")
+            sized = re.fullmatch(r"(tower|stack|column|pillar|row|line) of (?:exactly |only |just )?\d+"
+                                 r"|(pyramid|wall|circle|ring) of (?:exactly |only |just )?\d+ (?:cubes?|blocks?|bricks?)", m.words)  # (with
+            # a colour, "a circle of 3 red and 3 blue blocks", the count is that colour's)
+            if sized:  # "a tower of 3 blocks": some tower of exactly 3 (a tower of 4 held 'at least 3'); "a pyramid of 5 cubes"
+                sizes = _structure_sizes(schema, SIZED_KINDS[sized.group(1) or sized.group(2)])
                 if m.count not in sizes:
-                    raise UnaccountedMention(f"'{m.words}' asks for a {sized.group(1)} of {m.count} but the task read has "
+                    kind = sized.group(1) or sized.group(2)
+                    raise UnaccountedMention(f"'{m.words}' asks for a {kind} of {m.count} but the task read has "
                                              f"{' and '.join(map(str, sizes)) or 'no'} {'cubes in one' if sizes else ''} "
-                                             f"{sized.group(1)}".replace("  ", " "))
+                                             f"{kind}".replace("  ", " "))
             record.append({"mention": m.words, "kind": "count", "consumed_by": f"{have} {what}"})
         elif m.kind == "structure":  # a predicate counts as each registered class it derives from
             used = sorted({c.name for p in goal for c in type(p).__mro__ if "name" in vars(c)} & set(m.predicates))

@@ -1097,6 +1097,18 @@ INNER_POSITION_RE = re.compile(rf"\b(?:with|where|and)\s+(?:the\s+)?(?P<c>{COLOR
 refused, naming it (it had been read as one more cube of that colour); a structure said role by
 role ("the bottom one is green, the second from the bottom is yellow, ...") is read elsewhere."""
 
+def _rest_of_tower(m: re.Match) -> bool:
+    """Whether the cubes said below (or above) 'it' in ``m`` are counted and, with the end cube, make the whole tower: no
+    tower size said, or one more than their count ("a 3-block tower, green on top, two orange under it")."""
+    said = re.search(rf"\b(\d+|{COUNT_WORD_RE})\s+(?:(?:{COLOR_RE})\s+)?(?:(?:blocks?|cubes?|ones?)\s+)?$", m.group(1))
+    if said is None:
+        return False
+    size = re.search(rf"\b(?:tower|stack)\s+of\s+(\d+|{COUNT_WORD_RE})\b|\b(\d+|{COUNT_WORD_RE})[\s-](?:blocks?|cubes?)[\s-](?:tall\s+)?"
+                     r"(?:tower|stack)\b", m.string)
+    count = int(NUMBER_WORDS.get(said.group(1), said.group(1)))
+    return size is None or int(NUMBER_WORDS.get(size.group(1) or size.group(2), size.group(1) or size.group(2))) == count + 1
+
+
 PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "put the blue cube on the same coloured patch", "... on the patch that matches it", "... on its own patch": the
     # patch of that cube's colour (a red and a gray patch had been made up)
@@ -1176,17 +1188,23 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "fill the red patch with the three red cubes": those cubes on it
     (re.compile(rf"\bfill\s+the\s+({COLOR_RE})\s+patch\s+with\s+"), r"put on the \1 patch "),
     # "a tower with the black block on top and two yellow blocks below it": below the top cube, the rest of the tower
+    # (only when the cubes said below are counted and fill the rest of the tower: "a tower of four blocks: black on top,
+    # yellow under it" puts yellow right under black, not at the bottom)
     (re.compile(rf"(\bon\s+top\b[^.;]*?\b(?:blocks?|cubes?|ones?|{COLOR_RE})\s+)(?:below|under|beneath|underneath)\s+(?:it|that\s+one)\b"
-                r"(?=\s*(?:[.,;]|$))"), r"\1below"),
+                r"(?=\s*(?:[.,;]|$))"), lambda m: f"{m.group(1)}below" if _rest_of_tower(m) else m.group(0)),
     # "the white cube at the bottom of a three-cube tower, with the two pink cubes above it": above the bottom cube
     (re.compile(rf"(\b(?:at|on)\s+the\s+(?:bottom|base)\b[^.;]*?\b(?:blocks?|cubes?|ones?|{COLOR_RE})\s+)(?:above|over|on\s+top\s+of)"
-                r"\s+(?:it|that\s+one)\b(?=\s*(?:[.,;]|$))"), r"\1above"),
+                r"\s+(?:it|that\s+one)\b(?=\s*(?:[.,;]|$))"), lambda m: f"{m.group(1)}above" if _rest_of_tower(m) else m.group(0)),
     # "yellow cube in the back, green cube in the front": each cube's place said in turn, as "... and ..." says it
     (re.compile(rf"(\b(?:cube|block)s?\s+(?:in|on|at)\s+the\s+(?:(?:front|back)\s+)?(?:front|back|left|right|center|centre|middle)"
                 rf"(?:\s+(?:corner|side|half|edge))?)\s*,\s+(?=(?P<the>the\s+)?(?:{COLOR_RE})\s+(?:cube|block)s?\s+(?:in|on|at)\s+the\s+"
                 r"(?:front|back|left|right|center|centre|middle)\b)"), lambda m: f"{m.group(1)} and {'' if m.group('the') else 'the '}"),
+    # "build towers of 3 and 2 blocks", "two towers, of 3 and 2 blocks": one of each size (both had been one size)
+    (re.compile(rf"\b(?:(?:2|two)\s+)?(tower|stack|row|line|pile|column)s\s*,?\s+(?:of\s+|with\s+)(\d+|{COUNT_WORD_RE})\s+and\s+"
+                rf"(\d+|{COUNT_WORD_RE})\s+(blocks|cubes)\b"), r"a \1 of \2 \4 and a \1 of \3 \4"),
     # "in a row along with the green block": together with it
-    (re.compile(r"\balong\s+with\b"), "together with"),
+    (re.compile(r"\b(rows?|lines?|circles?|piles?)\s+along\s+with\b"), r"\1 together with"),  # (after a tower, "along with a
+    # green cube" may be beside it or in it: not read)
     # "a row running from the front of the table to the back", "a column of three blue cubes running from front to back":
     # the structure's direction, its verb of extent dropped
     (re.compile(r"(\b(?:rows?|lines?|columns?|cubes|blocks)|\))\s+(?:running|going|extending|stretching|(?:that|which)\s+(?:runs?|goes|go"
@@ -2338,6 +2356,19 @@ COLOUR_SPOT_RE = re.compile(rf"\b({COLOR_RE})\s+(?:spot|dot|circle\s+on\s+the\s+
 COLOUR_GROUP_NOUN_RE = re.compile(rf"\bthe\s+(?P<c>{COLOR_RE})\s+(?P<noun>pair|couple)\b(?!\s+of\b)")
 """Two cubes of one colour named as a pair ("The orange pair is on the bottom"): written as "the 2 orange blocks"
 before number words are read (:data:`NUMBER_WORDS` reads "pair" alone as 2, which left "the orange 2")."""
+
+
+BARE_NUMBERS_RE = re.compile(r"\b(?:put|place|set|move|stack|arrange|line\s+up|lay)\s+(?P<nums>\d+\s*(?:,\s*(?:and\s+)?|\s+and\s+|\s*&\s*)\d+)"
+                             r"(?![\w.-])(?!\s+(?:x|by)\b)"
+                             r"(?=\s+(?:in|into|on|onto|at|next|beside|left|right|behind|from|as|together)\b|\s*[.!,;]?\s*$)")
+"""Two numbers after a verb joined with nothing that says what they are ("put 5 and 8 in a row"): counts of cubes or the labels of
+digit cubes; refused unless the text says digit cubes (:data:`rpg.schema.reading.LABEL_CUBES_SAID_RE`)."""
+
+
+BETWEEN_THEM_RE = re.compile(r"\bbetween\s+(?:them|those\s+two|these\s+two|the\s+two(?:\s+(?:cubes|blocks))?|both\s+of\s+them)\b"
+                             r"(?!\s+(?:cubes|blocks|patches))")
+"""A cube put between the two cubes named before ("red left of blue, then a green cube between them"): written out as
+"between the red cube and the blue cube" when exactly two cubes were named (:func:`rpg.schema.reading.normalize_words`)."""
 
 
 PAIR_ON_CUBE_RE = re.compile(rf"^(?:(?:please\s+)?(?:put|place|set|stack)\s+)the\s+(?P<a>{COLOR_RE})\s+and\s+(?:the\s+)?(?P<b>{COLOR_RE})\s+"

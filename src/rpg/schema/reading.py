@@ -1460,11 +1460,21 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                                                text[:m.start()])))
         if len(before) == 2:
             text = f"{text[:m.start()]}the {before[0]} patch and the {before[1]} patch{text[m.end():]}"
+    for m in reversed(list(lexicon.BETWEEN_THEM_RE.finditer(text))):  # "red left of blue ... a green cube between them"
+        said = re.findall(rf"\b({COLOR_RE})\s+(?:cube|block|one)\b(?!\s+patch)", text[:m.start()])
+        before = list(dict.fromkeys(said[:-1]))  # the cube said last is the one put between them
+        if len(before) == 2 and said[-1] not in before:  # the two cubes named before it (with more, which two is not
+            # said: left as it is, refused)
+            text = f"{text[:m.start()]}between the {before[0]} cube and the {before[1]} cube{text[m.end():]}"
     for pattern, written_out in lexicon.DISTRIBUTED_RELATIONS:
         text = pattern.sub(written_out, text)
     text = lexicon.COLOUR_GROUP_NOUN_RE.sub(r"the 2 \g<c> blocks", text)  # "the orange pair": the 2 orange blocks
     for w, n in NUMBER_WORDS.items():
         text = re.sub(rf"\b{w}\b", str(n), text)
+    bare = lexicon.BARE_NUMBERS_RE.search(text)
+    if bare and not LABEL_CUBES_SAID_RE.search(original) and not re.search(r"(?i)\b(?:label\w*|numbered|digits?|numbers?)\b", original):  # "put 5 and 8 in a row": four coloured cubes had been made
+        raise ParseError(f"'{bare.group('nums')}' in \"{original[:80]}\" may count cubes or name digit cubes; say which "
+                         "(e.g. \"the digit cubes 5 and 8\" or \"5 red cubes\"), or use --model")
     text = lexicon.rewrite(lexicon.SPELLING_REWRITES, text)
     text = lexicon.COUNT_BREAKDOWN_RE.sub(_count_breakdown, text)  # "4 cubes on the yellow patch: 2 red and 2 blue"
     text = lexicon.WHICH_PLACE_RE.sub(r"\g<cube>, and \g<cube> is \g<place>", text)  # "..., which should be in the center"
@@ -1572,6 +1582,10 @@ def _role_clauses(m: re.Match) -> str:
         return m.group(0)
     if axis == ("first", "last"):  # "the first is white, the last is black": in the direction said, where one is
         return ": " + ", ".join([ends["first"], *middle, ends["last"]]) if lexicon.DIRECTION_SAID_RE.search(m.string) else m.group(0)
+    if axis == ("bottom", "top") and re.search(r"\b(?:walls?|pyramids?|grids?|layers|rows|levels|tiers|courses|wide)\b", m.string):
+        # a wall's or pyramid's layers ("a wall of three rows: bottom red, middle green, top blue"): each a whole layer's
+        # colour (the three had been read as one listed row and the other layers given colours nobody said)
+        return m.group(0) if len(middle) != 1 else f": bottom row {ends['bottom']}, middle row {middle[0]}, top row {ends['top']}"
     return f": from {axis[0]} to {axis[1]}: " + ", ".join([ends[axis[0]], *middle, ends[axis[1]]])
 
 

@@ -113,8 +113,9 @@ class Op:
 class RefCue:
     """What the edit says about the version it builds on."""
 
-    kind: str = "current"  # current | version | original | previous | redo | search
+    kind: str = "current"  # current | version | original | previous | redo | search | before
     version: int | None = None
+    lacks: str | None = None  # ``before``: what the version lacks ("patch", "cube") that later ones gained
     steps: int = 1  # how many versions back ("go back two versions"), for ``previous``
     colors: tuple[str, ...] = ()
     exact: bool = False
@@ -273,6 +274,13 @@ def find_reference(t: str) -> RefCue:
     region = t[back.start():] if back is named else t[back.end():]
     cut = CUT_RE.search(region)
     region = region[: cut.start()] if cut else region
+    gained = re.search(rf"\bbefore\s+(?:(?:you|we|i)\s+(?:added|put|placed)\s+|adding\s+)?(?:the|a|an)\s+(?:(?P<c>{COLOR_RE})\s+)?"
+                       r"(?P<what>patch|cube|block)\b", region)
+    if gained and (gained.group("what") == "patch" or gained.group("c")):  # "go back to the one before the patch", "before
+        # you added the green cube": the latest version, back from the head, without it
+        c = gained.group("c")
+        return RefCue("before", colors=(canon_color(c),) if c else (), lacks="patch" if gained.group("what") == "patch" else "cube",
+                      phrase=(back.group(0) + region[:gained.end()]).strip())
     many = re.search(rf"\b(\d+|{COUNT_WORD_RE})\s+(?:versions?|steps?|edits?|changes?)(?:\s+(?:back|ago|earlier))?\b|\b(twice)\b"
                      r"|(?<![\w-])[x\u00d7]\s*(\d)\b|\b(\d)\s*[x\u00d7](?![\w-])", region)  # "undo x2", "undo 2x"
     region = region.replace(many.group(0), " ") if many else region  # "go back two versions": how far, not which

@@ -37,6 +37,7 @@ from rpg.schema.edits import recolor
 from rpg.schema.feasibility import check_feasibility
 from rpg.schema.lexicon import (
     ADDED_CUBE_RE,
+    BETWEEN_THEM_RE,
     COLOR_RE,
     EDIT_ADDITIVE_RE,
     EDIT_CONTINUES_RE,
@@ -164,6 +165,18 @@ def resolve_reference(plan: EditPlan, hist: FamilyHistory, fam: Family) -> tuple
             ref = parent if parent is not None else max(ref - 1, 0)
         return ref, [f"back-reference {cue.phrase!r}: the version before v{head}" if cue.steps == 1 else
                      f"back-reference {cue.phrase!r}: {cue.steps} versions before v{head}"]
+    if cue.kind == "before":  # "the one before the patch": back along the lineage to the first version without it
+        ref: int | None = head
+        while ref is not None:
+            schema, _ = _spec_of(fam, ref)
+            kind = "goal_patch" if cue.lacks == "patch" else None
+            has = any((a.kind == kind if kind else a.kind != "goal_patch") and (not cue.colors or a.color in cue.colors)
+                      for a in schema.assets)
+            if not has:
+                return ref, [f"back-reference {cue.phrase!r}: v{ref}, the latest version before it was added"]
+            ref = hist.get(ref).parent
+        raise SteerError(f"{cue.phrase!r}: every version back to the first has it; versions: " +
+                         "; ".join(f"v{v.version_id}: {v.goal_summary}" for v in hist.versions))
     if cue.kind == "redo":  # after going back to the head: the latest version built on it, whose change is made again
         children = [v.version_id for v in hist.versions if v.parent == head and v.version_id > head]
         if not children:
@@ -719,6 +732,10 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
                                                           r"(?:left|right)\s+of|near|on\s+top\s+of|atop|above|below)\s+it\b", plan.text):
         one = f"the {cubes[0].color} block" if cubes[0].color else f"the {cubes[0].label} block"  # the task's one cube
         clause = addition_clause(re.sub(r"(?i)\bit\b", one, plan.text))
+    named = [f"the {a.color} block" if a.color else f"the {a.label} block" for a in cubes]
+    if clause is None and len(cubes) == 2 and len(set(named)) == 2 and BETWEEN_THEM_RE.search(plan.text.lower()):
+        # "put a green cube between them": between the task's two cubes
+        clause = addition_clause(BETWEEN_THEM_RE.sub(f"between {named[0]} and {named[1]}", plan.text.lower()))
     action = NO_GOAL_RE.search(plan.text.lower())
     if action is not None and not re.search(r"\b(?:on|onto|in|into|next|beside|behind|under|left|right|front|top)\b", plan.text.lower()):
         raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\" to {where}: it says no end state: "

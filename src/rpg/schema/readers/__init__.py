@@ -266,9 +266,20 @@ def disjoint_regions(f: Features, schema: TaskSchema) -> ParseError | None:
     apart): no placement satisfies it."""
     seen: dict[str, list[str]] = {}
     patched: dict[str, list[str]] = {}
+    cubes = {a.name for a in schema.assets if a.kind != "goal_patch"}
+    tower = {c: c for c in cubes}  # a cube -> the bottom of the tower it stands in (stacked cubes share one place)
+
+    def bottom(c: str) -> str:
+        while tower[c] != c:
+            c = tower[c]
+        return c
+    for upper, lower in schema.goal_predicate().support_edges():
+        if upper in cubes and lower in cubes and bottom(lower) != upper:
+            tower[bottom(upper)] = bottom(lower)
     for p in schema.goal_predicate().walk():
-        if isinstance(p, InRegion):
-            seen.setdefault(p.a, []).append(p.region)
+        if isinstance(p, InRegion):  # "red in the back left corner, yellow in the front right one, red on yellow": the
+            # tower would stand in both
+            seen.setdefault(bottom(p.a) if p.a in cubes else p.a, []).append(p.region)
         elif type(p) is OnPatch:
             patched.setdefault(p.a, []).append(p.patch)
     for cube, on in sorted(patched.items()):

@@ -19,6 +19,7 @@ from rpg.domain.predicates import (
     InRegion,
     OnPatch,
     Stack,
+    StackOnPatch,
     UnorderedStack,
     describe_region,
     region_boxes,
@@ -316,6 +317,43 @@ def recognize_structure_on_patch(f: Features, b: Builder) -> bool:
     return True
 
 
+TOWER_ONTO_PATCH_RE = re.compile(
+    rf"^(?P<head>[^@]+?)\s*[.;,]\s*(?:and\s+)?(?:then\s+)?(?:put|place|move|set|stand)\s+(?:the\s+(?:whole\s+)?(?:tower|stack)|it)\s+"
+    rf"(?:on|onto|on\s+top\s+of)\s+the\s+(?P<c>{COLOR_RE})\s+(?:goal\s+|target\s+)?patch[\s.!]*$")
+"""A tower said, then put on a goal patch in a sentence of its own ("Build a tower: orange on the bottom, then green,
+then purple on top. Put the tower on the white patch.")."""
+
+
+@reader(order=189)
+def recognize_tower_onto_patch(f: Features, b: Builder) -> bool:
+    """One tower read by the whole front end (its own sentence, naming no place, patch or
+    start), then put on a goal patch: its bottom cube rests on the patch (whichever cube that
+    is when the tower's order is free).  The relational reader had read the tower's "then"
+    steps as relations and dropped a cube."""
+    m = TOWER_ONTO_PATCH_RE.match(f.text)
+    heads = _read_parts([m.group("head")]) if m else None
+    if heads is None:
+        return False
+    head = heads[0]
+    goal = head.goal_predicate().conjuncts()
+    towers = [p for p in goal if isinstance(p, STACK_KINDS)]
+    if (len(towers) != 1 or not _single_spot(head) or set(towers[0].objects) != {a.name for a in head.assets}
+            or any(not isinstance(p, STACK_KINDS) and p.name != "in_layers" for p in goal)):
+        return False
+    patch = b.patch(canon_color(m.group("c")))
+    b.assets += [a.model_copy() for a in head.assets]
+    b._names.update(a.name for a in head.assets)
+    b.place_patch(patch, (0.0, 0.0))
+    b.place({n: Pose((0.0, 0.0, float(head.goal_layout[n].position[2]))) for n in towers[0].objects})
+    b.orientations.update(head.initial_state.orientations)
+    base = towers[0].objects[0]  # whichever cube is at the bottom when the order is free
+    b.preds += goal + [StackOnPatch(base, patch, tuple(sorted(towers[0].objects))) if isinstance(towers[0], UnorderedStack)
+                       else OnPatch(base, patch)]
+    b.summary += [head.goal_summary, f"its bottom cube on {patch}"]
+    b.primitives += list(head.primitives)
+    return True
+
+
 LISTED_TOWERS_RE = re.compile(r"\b(?P<k>\d+)\s+(?P<noun>tower|stack|column|pile|pillar)s(?:\s+of\s+(?:blocks|cubes))?\s*(?P<sep>[:;,\-])\s*(?P<body>.+?)\s*[.!]?$")
 """Towers counted, then each said after a colon: "two stacks: white on black, and black on white"."""
 
@@ -484,11 +522,14 @@ def recognize_independent_parts(f: Features, b: Builder) -> bool:
     one another ("next to it") or cannot be laid out apart are not read here."""
     texts = [t.strip(" ,.;!") for t in PART_SPLIT_RE.split(f.text)]
     texts = [t for t in texts if t]
-    verb = re.match(r"(?:please\s+)?((?:put|place|move|set|bring|pile|stack|line\s+up|arrange|gather|group|heap)\s)", texts[0]) \
-        if texts else None
-    texts = [f"{verb.group(1)}{t}" if i and verb and re.match(r"(?:the|all|every|each)\b", t) and _bare_place(t) else t
-             for i, t in enumerate(texts)]  # "pile the red cubes on the left and the blue cubes on the right": both piled
-    # (only cubes sent to a place of their own: "line up the pink cubes, then the brown ones" is one line or two)
+    verb = re.match(r"(?:please\s+)?((?:put|place|move|set|bring|pile|stack|line\s+up|arrange|gather|group|heap|cluster)\s+)"
+                    r"(?=(?:the|all|every|each|both)\b)", texts[0]) if texts else None
+    bare = [bool(i and re.match(r"(?:the|all|every|each)\b", t)) for i, t in enumerate(texts)]  # a later part with no verb
+    if any(bare) and verb is None and not re.match(r"(?:the|all|every|each)\b", texts[0]):
+        return False  # "build a tower of the two green blocks in the back and the two blue blocks in the front": a tower too?
+    texts = [f"{verb.group(1)}{t}" if verb and b_ and _bare_place(t) else t for t, b_ in zip(texts, bare, strict=True)]
+    # "pile the red cubes on the left and the blue cubes on the right": both piled (only cubes sent to a place of their
+    # own: "line up the pink cubes, then the brown ones" is one line or two)
     placed = [_bare_place(t) for t in texts]
     if (len(texts) < 2 or not _said_apart(texts) or any(REFERS_ACROSS_RE.search(t) for t in texts)
             or (any(placed) and not all(placed))):  # a side may be another part's ("a tower, and red on the left"),

@@ -534,8 +534,13 @@ def _start_ends_named(sentences: list[str]) -> list[str]:
     def it_taken(m: re.Match) -> str:  # "The blue cube starts on top of the green cube. Take it off ...": the top cube
         return f"{m.group('verb')} the {stacks[0][-1]} cube off" if top_said else m.group(0)
 
-    def on_top(m: re.Match) -> str:  # "Initially green is on brown. Put gray on top.": on the stack's top cube
-        return f"{m.group('head')}on the {stacks[0][-1]} cube"
+    goal_sentences = [s for s in sentences if not (START_SENTENCE_RE.match(s) or STARTS_FACT_RE.match(s))]
+    topped = sum(bool(_ON_TOP_RE.search(s)) for s in goal_sentences) == 1 and not any(
+        re.search(r"(?i)on\s+top", s) for s in goal_sentences if not _ON_TOP_RE.search(s))
+
+    def on_top(m: re.Match) -> str:  # "Initially green is on brown. Put gray on top.": on the stack's top cube (once: "...
+        # Put white on top." after it is on gray, whose top the start does not say)
+        return f"{m.group('head')}on the {stacks[0][-1]} cube" if topped else m.group(0)
 
     return [s if START_SENTENCE_RE.match(s) or STARTS_FACT_RE.match(s) else
             _ON_TOP_RE.sub(on_top, _START_END_RE.sub(named, _SWAP_START_RE.sub(swapped, _TOP_ONES_OFF_RE.sub(

@@ -113,7 +113,8 @@ def layer_roles(f: Features, levels: int) -> dict[tuple[str, int], int | None]:
         noun = m.groupdict().get(f"noun{i}") or ""
         n = int(count) if count and count.isdigit() and len(colors) == 1 else \
             1 if noun in ("block", "cube", "one") else None
-        the = m.groupdict().get(f"n{i}") == "the" and noun in ("block", "cube")
+        the = (m.groupdict().get(f"n{i}") == "the" and noun in ("block", "cube")) or (  # "the orange pair" (the 2 orange
+            m.groupdict().get(f"n{i}") not in (None, "the", "a", "an", "one") and f.text[:m.start()].endswith("the "))  # blocks)
         for color in colors:
             placed = {lv for c, lv in out if c == color}
             if placed - {k} and (the or color in definite):
@@ -741,7 +742,9 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
     if re.search(r"\b(?:bottom[\s-]+(?:to|up\s+to)[\s-]+top|top[\s-]+(?:to|down\s+to)[\s-]+bottom)\b", f.text):
         return False  # "bottom-to-top order blue, yellow, red": a tower's order, never a line's
     direction = direction_of(f)
-    item = rf"(?:{COLOR_RE})(?:\s+(?:blocks?|cubes?))?(?:\s+first)?"  # "the blue block first, then the red block"
+    item = (rf"(?:{COLOR_RE})(?:\s+(?:blocks?|cubes?))?(?:\s+first)?"  # "the blue block first, then the red block"
+            r"(?!\s+(?:(?:is|goes|sits|on|at|in|to)\s+)?(?:the\s+)?(?:far\s+|very\s+)?(?:left|right|middle|center|centre)\b)")
+    # (a cube given its place after the list, "..., yellow leftmost and cyan rightmost", is no further item of it)
     by_roles = _order_by_end_roles(f)  # "with red on the left, green in the middle and blue on the right"
     lists = list(re.finditer(rf"\b((?:{item})(?:\s*(?:,\s*and|,|and|then)\s+(?:then\s+)?(?:the\s+|an?\s+)?(?:{item})\b)+)", f.text))
     listed = _list_the_direction_orders(f, lists)
