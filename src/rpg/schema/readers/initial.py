@@ -538,9 +538,13 @@ def _start_ends_named(sentences: list[str]) -> list[str]:
     topped = sum(bool(_ON_TOP_RE.search(s)) for s in goal_sentences) == 1 and not any(
         re.search(r"(?i)on\s+top", s) for s in goal_sentences if not _ON_TOP_RE.search(s))
 
-    def on_top(m: re.Match) -> str:  # "Initially green is on brown. Put gray on top.": on the stack's top cube (once: "...
-        # Put white on top." after it is on gray, whose top the start does not say)
-        return f"{m.group('head')}on the {stacks[0][-1]} cube" if topped else m.group(0)
+    def on_top(m: re.Match) -> str:  # "Initially green is on brown. Put gray on top.": the tower with gray on top (once: "...
+        # Put white on top." after it is on gray, whose top the start does not say); gray on green alone had let green
+        # leave brown, though "on top" is the tower's top
+        tower = [*stacks[0], _canon(m.group("new"))]
+        if not topped or not all(re.fullmatch(COLOR_RE, c) for c in tower) or len(set(tower)) != len(tower):
+            return m.group(0)
+        return "build a tower from bottom to top: " + ", ".join(tower)
 
     return [s if START_SENTENCE_RE.match(s) or STARTS_FACT_RE.match(s) else
             _ON_TOP_RE.sub(on_top, _START_END_RE.sub(named, _SWAP_START_RE.sub(swapped, _TOP_ONES_OFF_RE.sub(
@@ -548,11 +552,11 @@ def _start_ends_named(sentences: list[str]) -> list[str]:
             for s in sentences]
 
 
-_ON_TOP_RE = re.compile(rf"(?i)(?P<head>^\s*(?:then\s+)?(?:put|place|set|stack|add|lay)\s+(?:the\s+|a\s+|an\s+)?{_NAME}"
+_ON_TOP_RE = re.compile(rf"(?i)(?P<head>^\s*(?:then\s+)?(?:put|place|set|stack|add|lay)\s+(?:the\s+|a\s+|an\s+)?(?P<new>{_NAME})"
                         r"(?:\s+(?:cube|block|one))?\s+)(?:on\s+(?:the\s+)?top(?:\s+of\s+(?:it|the\s+(?:tower|stack)))?"
                         r"|onto\s+(?:it|the\s+(?:tower|stack)))(?=\s*(?:[.!;,]|$|\bso\b))")
-"""A goal that adds a cube on top of the start's one stack ("Put gray on top.", "Put the gray block on top of it."):
-the stack's top cube named (:func:`_start_ends_named`)."""
+"""A goal that adds a cube on top of the start's one stack ("Put gray on top.", "Put the gray block on top of it."): the
+tower, the start's cubes with it on top (:func:`_start_ends_named`)."""
 
 
 _IT_TAKEN_RE = re.compile(r"(?i)^\s*(?:then\s+)?(?P<verb>take|lift|remove|pick)\s+it\s+off\b")
