@@ -5318,3 +5318,23 @@ def test_a_line_said_by_its_ends_and_middle_in_a_direction_is_read_in_order():
     # black had been dropped (then the text was refused); the middle's colour is no further item of a list
     assert meaning(parse("a line from left to right starting with black and ending with white, grey in the middle")) == [
         "line[left_to_right](black,gray,white)"]
+
+
+@pytest.mark.parametrize("text", [
+    "a row of four cubes with red next to blue",  # the row alone had carried 'next to': the relation was dropped
+    "a row of four cubes with red on blue",
+    "a circle of four cubes with red opposite blue",
+    "make a row of three cubes with the red cube next to the blue cube",
+])
+def test_a_relation_inside_a_structure_s_with_clause_that_the_goal_does_not_carry_is_refused(text):
+    with pytest.raises(ParseError, match="relates two cubes"):
+        parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("a row of red, green and blue from left to right with red next to green", ["line[left_to_right](red,green,blue)"]),
+    ("Black cube on top of the brown cube, with the brown cube sitting on the green patch.",
+     ["on_patch(brown,patch:green)", "stack(brown,black)"]),
+])
+def test_a_relation_in_a_with_clause_that_the_goal_carries_is_read(text, expected):
+    assert sorted(meaning(parse(text))) == expected

@@ -1046,9 +1046,40 @@ def _undone_kept(f: Features, schema: TaskSchema, cubes: list, walk: list) -> Pa
     return None
 
 
+_WITH_RELATION_RE = re.compile(
+    rf"\bwith\s+(?:the\s+)?(?P<a>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:(?:is|sits|goes|stands|right|directly|just)\s+)*"
+    r"(?P<rel>next\s+to|beside|on\s+top\s+of|on|atop|opposite|across\s+from|(?:to\s+the\s+)?(?:left|right)\s+of|in\s+front\s+of"
+    rf"|behind|under|below|above|over)\s+(?:the\s+)?(?P<b>{COLOR_RE})\b(?!\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|square|area)\b)")
+
+
+def _with_relation(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
+    """A relation between two named cubes said inside a structure's "with" clause ("a row of four cubes with red next to
+    blue", "a circle of four cubes with red opposite blue"): some goal predicate must relate those two cubes themselves
+    (a relation over both, or a tower or ordered row in which they stand side by side); the structure alone had carried
+    the words, and the relation was dropped."""
+    for m in _WITH_RELATION_RE.finditer(f.text):
+        a, b = canon_color(m.group("a")), canon_color(m.group("b"))
+        names = {c: {x.name for x in cubes if x.color == c} for c in (a, b)}
+        related = False
+        for p in walk:
+            objs = list(getattr(p, "objects", ()) or p.object_names())
+            if (type(p) is P.Stack or isinstance(p, P.InLine)) and getattr(p, "order", "x") is not None:  # (an unordered
+                # tower or row puts no two cubes side by side)
+                pairs = list(zip(objs, objs[1:]))
+            elif p.name in (*PAIRWISE_RELATIONS, "on"):
+                pairs = [tuple(p.object_names()[:2])]
+            else:
+                continue
+            related = related or any({u, v} & names[a] and {u, v} & names[b] and u != v for u, v in pairs)
+        if not related:
+            return _unread(f, schema, m.group(0)[len("with "):].strip(), "relates two cubes that the task read does not "
+                           "relate to each other. Say the relation in a sentence of its own, or use --model")
+    return None
+
+
 WORD_CHECKS = (_follow_up_relation, _unread_reversal, _counted_others, _label_end, _moved_pronoun, _piles_said,
                _scene_count, _line_roles, _left_over_alternative, _idle_sentence, _raised_on_table, _undone_kept,
-               _ordered_line_roles, _unnamed_merged, _some_of_them, _others_colour)
+               _ordered_line_roles, _unnamed_merged, _some_of_them, _others_colour, _with_relation)
 """Checks that words of the instruction a reading leaves unread do not change what it asks, in order: each takes
 (features, schema, its cubes, its goal's predicates) and returns the ParseError to raise, or None
 (:func:`unaccounted` runs them; a new check is one function added here)."""
