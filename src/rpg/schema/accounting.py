@@ -15,6 +15,7 @@ Colours and labels are checked by the builtin front end (:func:`unaccounted` and
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections import Counter
 from dataclasses import dataclass
@@ -1065,7 +1066,7 @@ def _with_relation(f: Features, schema: TaskSchema, cubes: list, walk: list) -> 
             objs = list(getattr(p, "objects", ()) or p.object_names())
             if (type(p) is P.Stack or isinstance(p, P.InLine)) and getattr(p, "order", "x") is not None:  # (an unordered
                 # tower or row puts no two cubes side by side)
-                pairs = list(zip(objs, objs[1:]))
+                pairs = list(itertools.pairwise(objs))
             elif p.name in (*PAIRWISE_RELATIONS, "on"):
                 pairs = [tuple(p.object_names()[:2])]
             else:
