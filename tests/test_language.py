@@ -5338,3 +5338,14 @@ def test_a_relation_inside_a_structure_s_with_clause_that_the_goal_does_not_carr
 ])
 def test_a_relation_in_a_with_clause_that_the_goal_carries_is_read(text, expected):
     assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "a row of three cubes from left to right, red first",  # every cube had been red
+    "a row of three cubes from left to right starting with red",
+    "a tower of letter cubes with A on top",  # B, C and D had been made up under A
+    "a tower of letters with A at the bottom",
+])
+def test_one_end_said_of_a_structure_whose_other_cubes_are_unsaid_is_refused(text):
+    with pytest.raises(ParseError):
+        parse(text)

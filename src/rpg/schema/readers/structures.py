@@ -863,6 +863,13 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         elif said and len(said) == n:
             names = [b.cube(c) for c in said]
         else:
+            role = re.search(rf"\b(?:(?:start|begin|end|finish)(?:s|ing)?\s+with\s+(?:the\s+|a\s+|an\s+)?(?:{COLOR_RE})\b"
+                             rf"|\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:first|last)\b)", f.text)
+            if len(distinct) == 1 and n > 1 and role:  # "a row of three cubes from left to right, red first": one cube's
+                # colour, not the row's (every cube had been made red)
+                raise ParseError(f"'{role.group(0)}' in \"{f.original[:80]}\" gives one cube a colour and a place at one end "
+                                 "of the row and says nothing of the others' colours; say every cube's colour (e.g. \"red, "
+                                 "blue, blue from left to right\"), or use --model")
             names = [b.cube(c) for c in (distinct * n if len(distinct) == 1 else colors_for(n, f))]
         middle = re.search(rf"\b({COLOR_RE})\s+(?:block\s+|cube\s+)?(?:is\s+)?(?:in|at)\s+the\s+(?:middle|center|centre)\b", f.text)
         mid = canon_color(middle.group(1)) if middle else None
@@ -946,7 +953,8 @@ SORTED_TOWER_DEFAULT = 4
 @reader(order=170)
 def recognize_sorted_tower(f: Features, b: Builder) -> bool:
     """A tower of letter or digit cubes in sorted order ("stack the number blocks in
-    increasing order from bottom to top", "a tower of letters with A at the bottom").
+    increasing order from bottom to top", "a tower of four letters with A at the bottom";
+    with no count, an end's label leaves which labels follow it unsaid: not read).
     The order is bottom to top; labels face every side, so the front reads it."""
     if not f.has("stack", "tower", "stacked") or f.has("towers", "stacks", "patch", "patches", "pyramid", "each other"):
         return False
@@ -961,7 +969,12 @@ def recognize_sorted_tower(f: Features, b: Builder) -> bool:
     descending = tower_order(f)
     if descending is None:
         return False
-    n = stated_count(f, default=None) or SORTED_TOWER_DEFAULT
+    n = stated_count(f, default=None)
+    if n is None and re.search(r"\b(?:(?:letter|digit|number)\s+)?[a-z0-9](?:\s+(?:block|cube))?\s+(?:(?:is|goes|sits)\s+)?(?:on|at|in)\s+"
+                               r"(?:the\s+)?(?:top|bottom|base)\b", f.text) and not re.search(
+            r"\b(?:order\w*|alphabetical\w*|ascending|descending|increasing|decreasing|sorted|sort)\b", f.text):
+        return False  # "a tower of letter cubes with A on top": which letters lie under A is not said (B, C, D had been made)
+    n = n or SORTED_TOWER_DEFAULT
     labels, strict = label_sequence(material, n, b, ordered=True)
     if descending:
         labels.reverse()
