@@ -5349,3 +5349,19 @@ def test_a_relation_in_a_with_clause_that_the_goal_carries_is_read(text, expecte
 def test_one_end_said_of_a_structure_whose_other_cubes_are_unsaid_is_refused(text):
     with pytest.raises(ParseError):
         parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Put the letter cubes A and B next to each other.", ["next_to(A,B)"]),  # two coloured cubes had been made
+    ("Place the number cubes 3 and 7 beside each other", ["next_to(3,7)"]),
+    ("Put the letter cubes A and B next to each other with B to the left of A.", ["left_of(B,A)", "next_to(A,B)"]),
+])
+def test_labelled_cubes_next_to_each_other_and_a_second_relation_after_with(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+def test_a_start_topped_twice_is_refused_even_when_the_second_says_on_top_of_a_cube():
+    # (the guard against a second 'on top' had held a backspace for its word boundary, so it never matched; this text is
+    # refused because 'gray on top' and white on gray contradict)
+    with pytest.raises(ParseError):
+        parse("Initially green is on brown. Put gray on top. Put white on top of the gray cube.")

@@ -1195,6 +1195,10 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "the white cube at the bottom of a three-cube tower, with the two pink cubes above it": above the bottom cube
     (re.compile(rf"(\b(?:at|on)\s+the\s+(?:bottom|base)\b[^.;]*?\b(?:blocks?|cubes?|ones?|{COLOR_RE})\s+)(?:above|over|on\s+top\s+of)"
                 r"\s+(?:it|that\s+one)\b(?=\s*(?:[.,;]|$))"), lambda m: f"{m.group(1)}above" if _rest_of_tower(m) else m.group(0)),
+    # "the letter A cube next to the letter B cube with the letter B block to the left of the letter A block": a second
+    # relation of the same labelled cubes, as "and" says it (a coloured cube had been made for 'B' after 'with')
+    (re.compile(r"(?i)\bwith\s+(?=the\s+(?:letter|digit)\s+[a-z0-9]\s+(?:block|cube)\s+(?:to\s+the\s+(?:left|right)\s+of|in\s+front\s+of"
+                r"|behind|next\s+to|beside|on\s+top\s+of|on|under|far\s+from)\b)"), "and "),
     # "yellow cube in the back, green cube in the front": each cube's place said in turn, as "... and ..." says it
     (re.compile(rf"(\b(?:cube|block)s?\s+(?:in|on|at)\s+the\s+(?:(?:front|back)\s+)?(?:front|back|left|right|center|centre|middle)"
                 rf"(?:\s+(?:corner|side|half|edge))?)\s*,\s+(?=(?P<the>the\s+)?(?:{COLOR_RE})\s+(?:cube|block)s?\s+(?:in|on|at)\s+the\s+"
@@ -3821,8 +3825,14 @@ LABEL_NOUN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\b(block|cube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))"
                 r"(?<!\bI(?='[a-z]|\s+(?:[a-z]+ed|[a-z]+ing|am|have|had|want|need|would|will|just|think|said|mean|like|told|see|saw|look|can)\b))"),
      lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1)}"),
+    # "the letter cubes A and B next to each other": the one next to the other (two coloured cubes had been made)
+    (re.compile(r"\b[Tt]he\s+(letter|digit|number)\s+(?:cubes|blocks)\s+([A-Z]|\d)\s+and\s+([A-Z]|\d)\s+(next\s+to|beside)\s+"
+                r"(?:each\s+other|one\s+another)\b"),
+     lambda m: f"the {'digit' if m.group(1) == 'number' else m.group(1)} {m.group(2)} cube {m.group(4)} the "
+               f"{'digit' if m.group(1) == 'number' else m.group(1)} {m.group(3)} cube"),
 )
-"""A label cube named with its noun first ("the cube with the M", "block 4"): "the letter M cube"."""
+"""A label cube named with its noun first ("the cube with the M", "block 4"): "the letter M cube"; two said next to each
+other."""
 
 LABEL_ARTICLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\b(the|a|an)\s+([A-Z])\s+(block|cube)\b"), r"\1 letter \2 \3"),  # "the A block"

@@ -536,7 +536,7 @@ def _start_ends_named(sentences: list[str]) -> list[str]:
 
     goal_sentences = [s for s in sentences if not (START_SENTENCE_RE.match(s) or STARTS_FACT_RE.match(s))]
     topped = sum(bool(_ON_TOP_RE.search(s)) for s in goal_sentences) == 1 and not any(
-        re.search(r"(?i)on\s+top", s) for s in goal_sentences if not _ON_TOP_RE.search(s))
+        re.search(r"(?i)\bon\s+top\b(?!\s+of\s+(?:the\s+)?(?!tower|stack)\w)", s) for s in goal_sentences if not _ON_TOP_RE.search(s))
 
     def on_top(m: re.Match) -> str:  # "Initially green is on brown. Put gray on top.": the tower with gray on top (once: "...
         # Put white on top." after it is on gray, whose top the start does not say); gray on green alone had let green
