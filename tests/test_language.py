@@ -5365,3 +5365,17 @@ def test_a_start_topped_twice_is_refused_even_when_the_second_says_on_top_of_a_c
     # refused because 'gray on top' and white on gray contradict)
     with pytest.raises(ParseError):
         parse("Initially green is on brown. Put gray on top. Put white on top of the gray cube.")
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Place the number cubes 5 and 8 in a row, 8 on the left of 5.", ["line[left_to_right](8,5)"]),  # had been a sequence
+    ("Place the number cubes 5 and 8 in a row, 8 right of 5.", ["line[left_to_right](5,8)"]),
+    ("Put the digit cubes 1 and 2 in a row with 2 to the left of 1.", ["line[left_to_right](2,1)"]),
+])
+def test_a_labelled_row_of_two_ordered_by_one_side_of_the_other(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_one_label_beside_another_in_a_longer_row_is_refused():
+    with pytest.raises(ParseError, match="orders two cubes"):
+        parse("Place the number cubes 5, 8 and 3 in a row, 8 left of 5.")

@@ -708,9 +708,26 @@ _LABEL_END_ROLE_RE = re.compile(r"\b(?P<lab>[A-Z]|\d)\s+(?:(?:cube\s+|block\s+)?
 (a lone capital is a letter cube's label, "a" an article)."""
 
 
+_LABEL_SIDE_OF_RE = re.compile(r"\b(?P<a>[A-Z]|\d)\s+(?:(?:cube|block)\s+)?(?:(?:is|goes|sits|stands)\s+)?(?:(?:on|to)\s+the\s+)?(?P<side>left|right)\s+"
+                               r"of\s+(?:the\s+)?(?:(?:letter|digit|number)\s+)?(?P<b>[A-Z]|\d)\b")
+"""One labelled cube of a row said left or right of another ("..., 8 on the left of 5")."""
+
+
 def _labels_by_end_roles(f: Features, labels: list[str]) -> list[str] | None:
     """The labels of a line from left to right when its words give the ends so that every place is fixed (two labels and
-    one end said, or three and both ends); None otherwise."""
+    one end said, or three and both ends, or two and one said left or right of the other); None otherwise.
+
+    Raises:
+        ParseError: one label said left or right of another in a row of more than two (the row's order is not said).
+    """
+    side_of = _LABEL_SIDE_OF_RE.search(f.original)
+    if side_of and {side_of.group("a"), side_of.group("b")} <= set(labels) and side_of.group("a") != side_of.group("b"):
+        if len(labels) != 2:
+            raise ParseError(f"'{side_of.group(0)}' in \"{f.original[:80]}\" orders two cubes of a row of {len(labels)} and "
+                             "leaves the rest of its order unsaid; say the whole order (e.g. \"from left to right: 8, 5, 3\"), "
+                             "or use --model")
+        a, b_ = side_of.group("a"), side_of.group("b")
+        return [a, b_] if side_of.group("side") == "left" else [b_, a]
     ends: dict[str, str] = {}
     for m in _LABEL_END_ROLE_RE.finditer(f.original):
         lab = m.group("lab").upper()
