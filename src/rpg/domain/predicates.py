@@ -712,6 +712,15 @@ def region_boxes(region: str) -> list[tuple[tuple[float, float], tuple[float, fl
     return [region_bounds(region)]
 
 
+def point_in_region(x: float, y: float, region: str) -> bool:
+    """Whether the point (x, y), m, world frame, lies in a region or region group (:func:`region_boxes`; edges included).
+
+    Raises:
+        ValueError: ``region`` is neither a region nor a group.
+    """
+    return any(x0 <= x <= x1 and y0 <= y <= y1 for (x0, x1), (y0, y1) in region_boxes(region))
+
+
 def describe_region(region: str) -> str:
     """How a region or region group is said: "the back left corner", "the left side", "a corner"."""
     where = region.replace("_", " ")
@@ -741,7 +750,7 @@ class InRegion(Predicate):
     def _evaluate(self, state):
         boxes = region_boxes(self.region)
         x, y = (float(v) for v in state[self.a].pos[:2])
-        ok = any(x0 <= x <= x1 and y0 <= y <= y1 for (x0, x1), (y0, y1) in boxes)
+        ok = point_in_region(x, y, self.region)
         spans = "; ".join(f"x {x0:.3f}..{x1:.3f}, y {y0:.3f}..{y1:.3f}" for (x0, x1), (y0, y1) in boxes)
         # a named region keeps its message and tolerance as before groups (validation logs, hashes)
         where = describe_region(self.region) if self.region in C.REGION_GROUPS else f"the {self.region.replace('_', ' ')}"
@@ -779,7 +788,7 @@ class CentredIn(Predicate):
     def _evaluate(self, state):
         x, y = (float(v) for v in np.mean([state[n].pos[:2] for n in self.objects], axis=0))
         boxes = region_boxes(self.region)
-        ok = any(x0 <= x <= x1 and y0 <= y <= y1 for (x0, x1), (y0, y1) in boxes)
+        ok = point_in_region(x, y, self.region)
         return self._result(ok, f"the middle of {', '.join(self.objects)} {'is' if ok else 'is not'} in "
                                 f"{describe_region(self.region)} of the workspace (at x {x:.3f}, y {y:.3f})",
                             {"x": x, "y": y}, {"boxes": [[list(bx), list(by)] for bx, by in boxes]})
