@@ -437,7 +437,7 @@ def split(instruction: str) -> InitialScene | None:
         rest = rest if re.match(r"(?i)(?:put|place|move|take|stack|unstack|dismantle|leave|build|make|set|bring|now|then|goal|the|a|an)\b",
                                 rest) else f"{subject} {rest}"  # "... and must end up on the table": the subject carried over
         rest = re.sub(r"(?i)^((?:then\s+)?(?:put|place|move|take|set|bring|slide|push)\s+)it\b", rf"\1{subject}", rest)  # "Put it ..."
-        rest = _start_ends_named([f"{clause.group('fact')}.", rest])[1]  # "... Put the gray block on top.": on its top cube
+        rest = _start_ends_named([f"{clause.group('fact')}.", rest])[1]  # "... Put the gray block on top.": the tower topped
         rest = _TAKE_OFF_RE.sub(_taken_off, rest)  # "... Take it off and put it on the table.": where it goes
         rest = "put all the cubes on the table." if UNDO_START_RE.match(rest) else rest  # "... Unstack it."
         return InitialScene(tuple(stacks), GOAL_OPENER_RE.sub("", rest, count=1)) if stacks else None
@@ -507,7 +507,8 @@ _START_END_RE = re.compile(r"(?i)\bthe\s+(?:(?P<top>top|topmost|uppermost|highes
 def _start_ends_named(sentences: list[str]) -> list[str]:
     """``sentences`` with the goal's words for an end of the start's stack (:data:`_START_END_RE`) naming its cube, when
     the start says exactly one stack ("Initially red is on blue. Take the top cube off and put it on the table.": the
-    red cube); otherwise as they are (which stack's top would be a guess)."""
+    red cube; "take it off" of the cube the start is about, :data:`_IT_TAKEN_RE`; "put gray on top", the tower topped,
+    :data:`_ON_TOP_RE`); otherwise as they are (which stack's top would be a guess)."""
     start = [s[m.end():] for s in sentences if (m := START_SENTENCE_RE.match(s))] + [s for s in sentences if STARTS_FACT_RE.match(s)]
     stacks = _facts(" , ".join(start)) if start else None
     if not stacks or len(stacks) != 1 or len(stacks[0]) < 2:
