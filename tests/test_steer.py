@@ -1763,3 +1763,16 @@ def test_a_cube_put_between_the_task_s_two_cubes(tmp_path):
     """'put a green cube between them' had found no change to read."""
     got = _steered(tmp_path, "Put the red cube to the left of the blue cube", "put a green cube between them")
     assert got == [("extend", ["between(green;blue,red)", "left_of(red,blue)"])]
+
+
+def test_an_addition_that_says_the_count_it_makes(tmp_path):
+    """'same but four cubes, put a yellow one on the very top' of a tower of three: the four is the count the addition
+    makes (it had been refused as a number with no place); a count the addition does not make stays refused."""
+    from rpg.errors import BadInput
+
+    got = _steered(tmp_path, "Stack a blue cube on a red cube", "add a green cube on top",
+                   "same but four cubes, put a yellow one on the very top")
+    assert got[-1] == ("extend", ["stack(red,blue,green,yellow)"])
+    fam = Family(create_family(compile_instruction("Stack a blue cube on a red cube", tmp_path, name="fam2").path).path)
+    with pytest.raises(BadInput):
+        steer(fam.path, "same but five cubes, put a yellow one on the very top")

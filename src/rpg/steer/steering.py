@@ -364,8 +364,16 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     if ref_spec is None:
         raise SteerError(f"v{reference} ({ref_schema.goal_summary}) is not a structure the builtin steering edits in place; "
                          "state the whole new task in the edit, or use --model")
+    numbers = unread_numbers(plan)
+    if numbers and all(o.op == "add" for o in plan.ops):  # "same but four cubes, put a yellow one on the very top" of a
+        # tower of three: the count the addition makes, said again
+        try:
+            made = len(apply_ops(ref_spec, plan.ops, keep_layers=carried.layers, anchors=carried.ends).items)
+        except SteerError:
+            made = None
+        numbers = [n for n in numbers if int(n) != made]
     unread = [c for c in unread_colors(plan)  # "make that seven pink cubes" of a pink row: its own colour, not a change
-              if not (set(ref_spec.colors()) == {c} and all(o.op == "count" for o in plan.ops))] + unread_numbers(plan)
+              if not (set(ref_spec.colors()) == {c} and all(o.op == "count" for o in plan.ops))] + numbers
     if unread:
         raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": {', '.join(repr(c) for c in unread)} has no place in the "
                          f"change read ({', '.join(o.op for o in plan.ops)}); say it in a separate edit, or use --model")
