@@ -62,6 +62,7 @@ class Mention:
     color: str | None = None
     region: str | None = None
     predicates: tuple[str, ...] = ()  # relation, structure: the goal predicates that can carry it
+    exact: bool = False  # count: said as "only" / "exactly" N, so no more than N either
 
 
 RELATION_WORDS: tuple[tuple[str, str], ...] = tuple(
@@ -235,7 +236,7 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
             n += said.get(named, 0)
         said[named] = n
         exact = bool(re.search(r"\b(?:only|exactly|just)\s+$", text[:m.start()]))  # "using only two green cubes"
-        out.append(Mention(m.group(0).strip(), "count", count=n, color=",".join(named) or None, region="exact" if exact else None))
+        out.append(Mention(m.group(0).strip(), "count", count=n, color=",".join(named) or None, exact=exact))
     for m in re.finditer(rf"(?:\b(?P<n>\d+)\s+)?\b(?P<c>{colors})\s+(?:goal\s+)?patch(?P<pl>es)?\b", text):
         # "the two green patches": that many patches of the colour ("the red and the blue patch" is two colours)
         many = int(m.group("n")) if m.group("n") else 2 if m.group("pl") else 1
@@ -491,8 +492,8 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
         elif m.kind == "count":
             have = sum(by_color[c] for c in m.color.split(",")) if m.color else len(cubes)
             what = f"{m.color} cubes" if m.color else "cubes"
-            if have < m.count or (m.region == "exact" and have != m.count):
-                raise UnaccountedMention(f"'{m.words}' asks for {'only ' if m.region == 'exact' else ''}{m.count} {what} but "
+            if have < m.count or (m.exact and have != m.count):
+                raise UnaccountedMention(f"'{m.words}' asks for {'only ' if m.exact else ''}{m.count} {what} but "
                                          f"the task read has {have}")
             sized = re.fullmatch(r"(tower|stack|column|pillar|row|line) of (?:exactly |only |just )?\d+"
                                  r"|(pyramid|wall|circle|ring) of (?:exactly |only |just )?\d+ (?:cubes?|blocks?|bricks?)", m.words)  # (with

@@ -274,7 +274,7 @@ def disjoint_regions(f: Features, schema: TaskSchema) -> ParseError | None:
             c = tower[c]
         return c
     for upper, lower in schema.goal_predicate().support_edges():
-        if upper in cubes and lower in cubes and bottom(lower) != upper:
+        if upper in cubes and lower in cubes and bottom(lower) != bottom(upper):
             tower[bottom(upper)] = bottom(lower)
     for p in schema.goal_predicate().walk():
         if isinstance(p, InRegion):  # "red in the back left corner, yellow in the front right one, red on yellow": the

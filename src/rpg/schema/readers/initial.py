@@ -553,7 +553,7 @@ def _start_ends_named(sentences: list[str]) -> list[str]:
             for s in sentences]
 
 
-_ON_TOP_RE = re.compile(rf"(?i)(?P<head>^\s*(?:then\s+)?(?:put|place|set|stack|add|lay)\s+(?:the\s+|a\s+|an\s+)?(?P<new>{_NAME})"
+_ON_TOP_RE = re.compile(rf"(?i)(?:^\s*(?:then\s+)?(?:put|place|set|stack|add|lay)\s+(?:the\s+|a\s+|an\s+)?(?P<new>{_NAME})"
                         r"(?:\s+(?:cube|block|one))?\s+)(?:on\s+(?:the\s+)?top(?:\s+of\s+(?:it|the\s+(?:tower|stack)))?"
                         r"|onto\s+(?:it|the\s+(?:tower|stack)))(?=\s*(?:[.!;,]|$|\bso\b))")
 """A goal that adds a cube on top of the start's one stack ("Put gray on top.", "Put the gray block on top of it."): the

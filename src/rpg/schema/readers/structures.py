@@ -97,7 +97,7 @@ def layer_roles(f: Features, levels: int) -> dict[tuple[str, int], int | None]:
             than three).
     """
     out: dict[tuple[str, int], int | None] = {}
-    definite: dict[str, int] = {}  # a colour said as "the <colour> cube": one cube, so one layer
+    definite: set[str] = set()  # colours said as "the <colour> cube": one cube, so one layer
     for m in LAYER_ROLE_RE.finditer(f.text):
         i = next(k for k in range(5) if m.group(f"c{k}"))
         word = m.group(f"role{i}")
@@ -120,7 +120,7 @@ def layer_roles(f: Features, levels: int) -> dict[tuple[str, int], int | None]:
             if placed - {k} and (the or color in definite):
                 raise ParseError(f"the {color} cube is given two layers in \"{f.original.strip()}\"")
             if the:
-                definite[color] = k
+                definite.add(color)
             out[(color, k)] = n
     if out and {lv for _, lv in out} == {0}:  # "3 blue at the base then 2 red then 1 yellow": layer by layer
         for k, m in enumerate(THEN_LAYER_RE.finditer(f.text), start=1):
@@ -737,8 +737,9 @@ def _labels_by_end_roles(f: Features, labels: list[str]) -> list[str] | None:
     if not ends or len(set(ends.values())) != len(ends) or len(labels) > 3 or len(labels) - len(ends) > 1:
         return None
     rest = [lab for lab in labels if lab not in ends.values()]
-    return [ends["left"] if "left" in ends else rest.pop(0), *rest, ends["right"] if "right" in ends else rest.pop()][:len(labels)] \
-        if len(labels) == 3 else ([ends["left"], *rest] if "left" in ends else [*rest, ends["right"]])
+    if len(labels) == 3:  # both ends said (one label left between them)
+        return [ends["left"], *rest, ends["right"]]
+    return [ends["left"], *rest] if "left" in ends else [*rest, ends["right"]]
 
 
 @reader(order=160)
