@@ -5379,3 +5379,9 @@ def test_a_labelled_row_of_two_ordered_by_one_side_of_the_other(text, expected):
 def test_one_label_beside_another_in_a_longer_row_is_refused():
     with pytest.raises(ParseError, match="orders two cubes"):
         parse("Place the number cubes 5, 8 and 3 in a row, 8 left of 5.")
+
+
+def test_a_labelled_row_of_two_with_both_ends_said():
+    # (found in review: the row had kept only the left end's cube, and the other was refused as having no place)
+    assert meaning(parse("Place the number cubes 5 and 8 in a row, 8 on the left and 5 on the right.")) == [
+        "line[left_to_right](8,5)"]

@@ -737,7 +737,7 @@ def _labels_by_end_roles(f: Features, labels: list[str]) -> list[str] | None:
     if not ends or len(set(ends.values())) != len(ends) or len(labels) > 3 or len(labels) - len(ends) > 1:
         return None
     rest = [lab for lab in labels if lab not in ends.values()]
-    if len(labels) == 3:  # both ends said (one label left between them)
+    if len(ends) == 2:  # both ends said (with a third label, it stands between them)
         return [ends["left"], *rest, ends["right"]]
     return [ends["left"], *rest] if "left" in ends else [*rest, ends["right"]]
 
