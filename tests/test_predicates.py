@@ -422,3 +422,13 @@ def test_reading_order_groups_rows_and_layers_by_proximity_not_by_bins():
     assert [o.label for o in ordered] == list("ABCDEFGHIJ")
     names = tuple(o.name for o in [*base, top])
     assert SortedBy(names, direction="reading").evaluate(state(*base, top))
+
+
+def test_a_diagonal_relation_leaves_the_other_axis_free():
+    ref = cube("b", 0.5, 0.0)
+    off = state(cube("a", 0.38, -0.15), ref)  # in front of and to the right of b, 15 cm across each axis
+    assert not RightOf("a", "b").evaluate(off) and not InFrontOf("a", "b").evaluate(off)  # level demanded
+    assert RightOf("a", "b", diagonal=True).evaluate(off) and InFrontOf("a", "b", diagonal=True).evaluate(off)
+    assert not LeftOf("a", "b", diagonal=True).evaluate(off)  # the side itself still judged
+    assert from_dict(RightOf("a", "b", diagonal=True).to_dict()) == RightOf("a", "b", diagonal=True)
+    assert RightOf("a", "b").to_dict() == {"predicate": "right_of", "a": "a", "b": "b"}

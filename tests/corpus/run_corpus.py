@@ -70,7 +70,8 @@ STRANGER_SETS = {
     "stranger33": ("stranger33.yaml", "STRANGER set 33 (stranger33.yaml, transfer measure of the twenty-third session's start: aggregates only; a helper reported its failure classes mid-session)"),
     "stranger34": ("stranger34.yaml", "STRANGER set 34 (stranger34.yaml, development material, read from the twenty-fourth session's start)"),
     "stranger35": ("stranger35.yaml", "STRANGER set 35 (stranger35.yaml, transfer measure of the twenty-fourth session; development material, read from the twenty-fifth session's start)"),
-    "stranger36": ("stranger36.yaml", "STRANGER set 36 (stranger36.yaml, transfer measure of the twenty-fifth session: aggregates only)"),
+    "stranger36": ("stranger36.yaml", "STRANGER set 36 (stranger36.yaml, transfer measure of the twenty-fifth session; development material, read from the twenty-sixth session's start)"),
+    "stranger37": ("stranger37.yaml", "STRANGER set 37 (stranger37.yaml, transfer measure of the twenty-sixth session: aggregates only)"),
 }
 SPLITS = HERE / "splits.yaml"
 

@@ -129,6 +129,8 @@ class Predicate:
     name: ClassVar[str] = "predicate"
     object_fields: ClassVar[tuple[str, ...]] = ()
     list_fields: ClassVar[tuple[str, ...]] = ()
+    quiet_defaults: ClassVar[tuple[str, ...]] = ()
+    """Fields left out of :meth:`args` and :meth:`to_dict` while at their default (added after tasks were written)."""
     semantic: ClassVar[bool] = False
     swap_invariant: ClassVar[bool] = False
     """True when the result cannot change by swapping interchangeable objects (the predicate
@@ -189,7 +191,12 @@ class Predicate:
         names = _FIELD_NAMES.get(type(self))
         if names is None:
             names = _FIELD_NAMES.setdefault(type(self), tuple(f.name for f in fields(self)))
-        return {n: getattr(self, n) for n in names}
+        return {n: getattr(self, n) for n in names if not self._quiet(n)}
+
+    def _quiet(self, name: str) -> bool:
+        """Whether field ``name`` is left out of :meth:`args` and :meth:`to_dict`: one of ``quiet_defaults`` at its
+        default (a field added later, so the files and hashes of tasks written before it stay as they were)."""
+        return name in self.quiet_defaults and getattr(self, name) == next(f.default for f in fields(self) if f.name == name)
 
     def object_names(self) -> list[str]:
         """Every object the predicate mentions, in order of appearance."""
@@ -284,6 +291,8 @@ class Predicate:
         """Plain-data form: ``{"predicate": name, <field>: value, ...}``."""
         doc: dict[str, Any] = {"predicate": self.name}
         for f in fields(self):
+            if self._quiet(f.name):
+                continue
             v = getattr(self, f.name)
             if isinstance(v, tuple) and v and isinstance(v[0], Predicate):
                 doc[f.name] = [c.to_dict() for c in v]
@@ -536,9 +545,16 @@ class Upright(Predicate):
 
 @dataclass(frozen=True, repr=False)
 class _Relation(Predicate):
+    """``a`` stands on one side of ``b`` along the relation's axis, at least ``RELATION_MIN_GAP`` (m) beyond it, and
+    level with it across that axis (within ``RELATION_MAX_OFF_AXIS``), unless ``diagonal``: one of two relations
+    between the same cubes along both axes ("to the right of the white block and in front of it": diagonally), where
+    each relation leaves the other axis to the other."""
+
     a: str
     b: str
+    diagonal: bool = False
     object_fields: ClassVar[tuple[str, ...]] = ("a", "b")
+    quiet_defaults: ClassVar[tuple[str, ...]] = ("diagonal",)
     axis: ClassVar[int] = 1
     sign: ClassVar[float] = 1.0
     words: ClassVar[str] = ""
@@ -551,12 +567,12 @@ class _Relation(Predicate):
         d = np.asarray(a.pos) - np.asarray(b.pos)
         along = float(self.sign * d[self.axis])
         across = float(abs(d[1 - self.axis]))
-        ok = along >= C.RELATION_MIN_GAP and across <= C.RELATION_MAX_OFF_AXIS
+        ok = along >= C.RELATION_MIN_GAP and (self.diagonal or across <= C.RELATION_MAX_OFF_AXIS)
         return self._result(
             ok,
             f"{self.a} {'is' if ok else 'is not'} {self.words} {self.b} (along {along * 100:.1f} cm, across {across * 100:.1f} cm)",
             {"along": along, "across": across},
-            {"min_along": C.RELATION_MIN_GAP, "max_across": C.RELATION_MAX_OFF_AXIS},
+            {"min_along": C.RELATION_MIN_GAP} if self.diagonal else {"min_along": C.RELATION_MIN_GAP, "max_across": C.RELATION_MAX_OFF_AXIS},
         )
 
     def constraints(self):
@@ -564,7 +580,7 @@ class _Relation(Predicate):
                 ("order", {"relation": self.name, "pairs": ((self.a, self.b),)})]
 
     def describe(self):
-        return f"{self.a} {self.words} {self.b}"
+        return f"{self.a} {self.words} {self.b}"  # diagonal: said by the pair's other relation
 
 
 @dataclass(frozen=True, repr=False)

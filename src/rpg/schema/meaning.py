@@ -9,6 +9,7 @@ letter/digit cube by its label, a goal patch as ``patch:<colour>``).  Examples::
     line(red,red,red)@back                a structure all of whose cubes stand in one region (or, wider than
                                           the centre third, whose middle stands there: ``centred_in``)
     on_patch(red,red,patch:green)         left_of(red,blue)    next_to(blue,red)
+    right_of(red,blue); in_front_of(red,blue)   two relations of one pair along both axes: diagonally
     line(green,green,green)               line[left_to_right](red,green,blue)
     wall(red,red,red|blue,blue,blue)      layers bottom to top (rows, walls, 3D blocks)
     pyramid(blue,green,red|yellow)        layers bottom to top, each layer sorted
@@ -154,7 +155,9 @@ def meaning(schema: TaskSchema) -> list[str]:
         else:
             objs = p.object_names()
             used.update(objs)
-            extra = {k: v for k, v in p.args().items() if not isinstance(v, (list, tuple)) and k not in p.object_fields}
+            # a relation's diagonal flag is implied by its pair's second relation along the other axis: not written
+            extra = {k: v for k, v in p.args().items() if not isinstance(v, (list, tuple)) and k not in p.object_fields
+                     and k != "diagonal"}
             arg = ",".join(d.get(n, n) for n in objs)
             atoms.append(f"{p.name}({arg}{';' if extra and arg else ''}{','.join(f'{k}={v}' for k, v in sorted(extra.items()))})")
     for i, objs in placed:  # a structure every cube of which stands in one region: "line(red,red,red)@back"

@@ -10,7 +10,7 @@ from __future__ import annotations
 import itertools
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from rpg.domain import constants as C
 from rpg.domain.layouts import (
@@ -458,6 +458,7 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         cycle = ", ".join(f"{a} on {b_}" for a, b_ in r.on_edges)
         raise ParseError(f"the stacking relations of \"{f.original[:80]}\" contradict each other ({cycle}: "
                          "something would be on itself); say once which cube goes on which, or use --model")
+    r.rels = _diagonal(r.rels)
     _refuse_crossed_relations(f, r.rels, [*r.onpatch, *r.on_edges])
     refuse_towers_merged(f.text, f.original, len([c for c in chains if len(c) > 1]))
     _layout_relational(b, chains, r.rels, r.onpatch, placed_in)
@@ -487,6 +488,20 @@ def recognize_relational(f: Features, b: Builder) -> bool:
 def _kind_of(rm: re.Match) -> str:
     """The relation kind a match of the relational pattern names (:data:`REL_PATTERNS`)."""
     return next(REL_PATTERNS[i][1] for i in range(len(REL_PATTERNS)) if rm.group(f"r{i}"))
+
+
+def _diagonal(rels: list) -> list:
+    """The directional relations with two said of one pair of cubes along both axes ("to the right of the white
+    block and in front of it") marked ``diagonal``: each leaves the other axis to the other (the pair stands
+    diagonally), where one alone keeps the cubes level.  Two along one axis are left for
+    :func:`_refuse_crossed_relations`."""
+    ways: dict[frozenset, set] = {}
+    for q in rels:
+        if hasattr(type(q), "axis") and hasattr(type(q), "sign") and q.a != q.b:
+            lo, hi = (q.b, q.a) if q.sign > 0 else (q.a, q.b)  # along the axis, lo comes before hi
+            ways.setdefault(frozenset((q.a, q.b)), set()).add((type(q).axis, lo, hi))
+    slanted = {pair for pair, w in ways.items() if len(w) == 2 and len({axis for axis, _, _ in w}) == 2}
+    return [replace(q, diagonal=True) if hasattr(type(q), "sign") and frozenset((q.a, q.b)) in slanted else q for q in rels]
 
 
 def _refuse_crossed_relations(f: Features, rels: list, touching: list[tuple[str, str]] = ()) -> None:
@@ -524,7 +539,7 @@ def _refuse_crossed_relations(f: Features, rels: list, touching: list[tuple[str,
                          "the other): objects stacked on each other stand over one spot. If one sentence says how the cubes "
                          "start, say it as 'Initially ...' (e.g. \"Initially the red cube is on the blue cube. Move it behind "
                          "the blue cube.\"); else say one relation")
-    crossed = next((ways for ways in by_pair.values() if len(ways) > 1), None)
+    crossed = next((ways for ways in by_pair.values() if len(ways) > 1 and len({axis for axis, _, _ in ways}) < len(ways)), None)
     cycle = next((c for g in graphs.values() for c in [next(iter(nx.simple_cycles(g)), None)] if c), None)
     if crossed or cycle:
         said = "; ".join(q.describe() for q in directional)
@@ -668,6 +683,8 @@ def _free_offset(placed: dict[str, tuple[float, float]], anchor: tuple[float, fl
     dx, dy = sign * offset[0], sign * offset[1]
     if relation in ("next_to", "far_from"):
         candidates = [(dx, dy), (-dx, -dy), (dy, dx), (-dy, -dx)]
+    elif dx and dy:  # diagonal: farther out the same way
+        candidates = [(k * dx, k * dy) for k in (1.0, 1.5, 2.0)]
     else:
         side = C.CUBE_EDGE + 0.02
         candidates = [(dx, dy)] + [(dx + s * side * (dy != 0), dy + s * side * (dx != 0)) for s in (1, -1, 2, -2)]
@@ -729,6 +746,10 @@ def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch:
             placed.setdefault(c2, (ax, ay - 0.08))
             continue
         dx, dy = offset[r.name]
+        if getattr(r, "diagonal", False):  # with the pair's other relation: the offset along both axes
+            other = next(q for q in rels if q is not r and getattr(q, "diagonal", False) and {q.a, q.b} == {r.a, r.b})
+            ox, oy = offset[other.name]
+            dx, dy = (dx + ox, dy + oy) if other.a == r.a else (dx - ox, dy - oy)
         if c not in placed and a not in placed:
             placed[c] = (cx - dx / 2, cy - dy / 2)
         if c in placed and a not in placed:
