@@ -5421,3 +5421,15 @@ def test_a_diagonal_pair_compiles_and_its_goal_state_meets_both(tmp_path):
     result = compile_instruction("Place the yellow block to the right of the white block and also in front of it.",
                                  tmp_path, name="diag")
     assert result.valid, result.gates
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a tower's count said after "with", "out of" or a comma, and its one colour after it (had found no task)
+    ("Tall tower, six cubes, all of them red.", ["stack(red,red,red,red,red,red)"]),
+    ("make a tower with 5 cubes all pink", ["stack(pink,pink,pink,pink,pink)"]),
+    ("build a tower out of 4 cubes, all yellow", ["stack(yellow,yellow,yellow,yellow)"]),
+    ("a tower with four cubes, every one of them blue", ["stack(blue,blue,blue,blue)"]),
+    ("tower, 3 cubes, red", ["stack(red,red,red)"]),
+])
+def test_a_towers_count_after_with_or_a_comma_and_its_one_colour(text, expected):
+    assert meaning(parse(text)) == expected

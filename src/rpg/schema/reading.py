@@ -1836,8 +1836,11 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s+(?:(?:made|built)\s+)?(?:(?:only|entirely|solely|just|all|purely)\s+)?"
                 rf"(?:out\s+)?of\s+({COLOR_RE})(?:\s+(?:blocks|cubes|bricks))?\b"),
      r"\1 of \2 \3 blocks"),
+    # "a tower with 5 cubes", "tall tower, six cubes, all of them red", "a tower out of 4 cubes": a tower of that many
+    (re.compile(rf"\b({TOWER_NOUNS})\s*(?:,|with|using|from|out\s+of|made\s+(?:of|from|with|out\s+of)|having|containing|consisting\s+of)"
+                r"\s+(\d+)\s+(blocks|cubes|bricks)\b"), r"\1 of \2 \3"),
     # "a tower, 3 blocks high, all green", "..., every cube red", "a tower 3 high, green": every cube of it
-    (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s*,?\s+(?:all|each|every)(?:\s+(?:one|block|cube|of\s+them))?\s+"
+    (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s*,?\s+(?:all|each|every)(?:\s+(?:one|1|block|cube))?(?:\s+of\s+them)?\s+"
                 rf"(?:(?:are|is|being|in)\s+)?({COLOR_RE})\b(?!\s+(?:blocks?|cubes?|patch))"),
      r"\1 of \2 \3 blocks"),
     (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s*,\s*({COLOR_RE})(?=\s*[.!]?\s*$)"), r"\1 of \2 \3 blocks"),
