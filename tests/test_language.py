@@ -5433,3 +5433,28 @@ def test_a_diagonal_pair_compiles_and_its_goal_state_meets_both(tmp_path):
 ])
 def test_a_towers_count_after_with_or_a_comma_and_its_one_colour(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a tower said cube by cube, each by an end or by the cube said before (had found no task, or lost a cube)
+    ("Put a green cube down, a white cube on it, and another green cube on top of that.", ["stack(green,white,green)"]),
+    ("Place red block as the base, green block above it, and blue block at the top.", ["stack(red,green,blue)"]),
+    ("Leave the purple block on the table, put the orange one on it, then the red one ontop of that.",
+     ["stack(purple,orange,red)"]),
+    ("Your job is to build a tower of three: a purple block at the base and both pink blocks on it.", ["stack(purple,pink,pink)"]),
+    # "it" here is the middle cube, the first said: the only reading that gives each cube one place
+    ("Make a stack of three cubes with the red one in the middle, a blue one below it and a green one above it.",
+     ["stack(blue,red,green)"]),
+])
+def test_a_tower_said_cube_by_cube(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "put the red block on the table, and the blue block beneath it",  # below a cube on the table: no tower
+    "build a tower of 4 with red at the bottom, blue on it and green on top",  # four said, three placed
+    "Put the red block down and the blue block on that, but not the green",
+])
+def test_a_tower_said_cube_by_cube_that_places_no_cube_once_is_refused(text):
+    with pytest.raises(BadInput):
+        parse(text)

@@ -12,6 +12,7 @@ Frame conventions: see :mod:`rpg.domain.constants`.
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -1228,6 +1229,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                 raise ParseError(f"'{said_first.group(1)} first' in \"{original[:80]}\" puts first a cube the list does not "
                                  "start with; say the order once, or use --model")
             text = text[:said_first.start()] + text[said_first.end():]  # said again: the list's first (it had been a 4th cube)
+    text = tower_chain(text)
     text = lexicon.rewrite(lexicon.TOP_DOWN_REWRITES, text)
     # "Make a tower. Top: red. Middle: green. Bottom: blue.": each role's cube, whatever order the roles are said in (the
     # colours had been read as a list from the bottom, red at the bottom)
@@ -1538,6 +1540,79 @@ def _roles_first(m: re.Match) -> str:
     if len(set(ranks)) != len(ranks) or not {0, 2} <= set(ranks):
         return m.group(0)
     return "from bottom to top: " + ", ".join(c for _, c in sorted(said))
+
+
+_CHAIN_ROLES = (
+    ("above", r"(?:on|onto|on\s+top\s+of|above|over|atop|upon)\s+(?:it|that|this)(?:\s+one)?"),
+    ("below", r"(?:below|under|underneath|beneath)\s+(?:it|that|this)(?:\s+one)?"),
+    ("bottom", r"down|(?:at|on|in)\s+the\s+(?:very\s+)?(?:bottom|base)|as\s+the\s+(?:base|bottom)|(?:at|on)\s+the\s+table"),
+    ("top", r"(?:at|on)\s+the\s+(?:very\s+)?top|on\s+top|as\s+the\s+top"),
+    ("middle", r"in\s+the\s+middle"),
+)
+"""Where one cube of a tower said cube by cube goes (:func:`tower_chain`): above or below the cube said before (or the
+first cube said), at an end, or in the middle."""
+_CHAIN_ITEM_RE = re.compile(
+    rf"(?:(?:then|and|also|next|finally|lastly)\s+)*(?:(?:put|place|set|stack|add|leave|lay)\s+)?(?:(?:a|an|the|another|1|(?:the\s+)?(?P<n>\d+|two|three|four|five|six|both))\s+)?"
+    rf"(?P<c>{COLOR_RE})(?:\s+(?:blocks?|cubes?|bricks?|ones?))?\s+(?:(?:is|goes|sits|should\s+be|must\s+be|comes)\s+)?"
+    r"(?P<role>" + "|".join(f"(?P<{k}>{r})" for k, r in _CHAIN_ROLES) + r")")
+_CHAIN_SEP_RE = re.compile(r"\s*(?:,\s*(?:and\s+)?(?:then\s+)?|;\s*|\s+and\s+(?:then\s+)?|\s+then\s+)")
+_CHAIN_HEAD_RE = re.compile(rf"(?:(?:please|now)\s+)*(?:make|build|create|form|construct|stack|assemble)\s+(?:a|an|1)\s+(?P<noun>{TOWER_NOUNS})"
+                            rf"(?:\s+of\s+(?P<count>\d+|{lexicon.COUNT_WORD_RE})(?:\s+(?:blocks|cubes|bricks))?)?\s*(?:with|:|,|-)\s*")
+
+
+def _count(word: str) -> int:
+    """A count said in digits or a number word ("3", "three", "both")."""
+    return int(word) if word.isdigit() else lexicon.NUMBER_WORDS[word]
+
+
+def tower_chain(text: str) -> str:
+    """A tower said cube by cube, each cube's place by an end or by the cube said before ("put a green cube down, a
+    white cube on it, and another green cube on top of that"; "a stack of 3 cubes with the red one in the middle, a
+    blue one below it and a green one above it"; "a purple block at the base and 2 pink blocks on it") -> "build a
+    tower from bottom to top: ...".  "it" may stand for the cube said just before or the first cube said: the text is
+    rewritten only when every reading that places each cube once gives one order (and the tower's count, if said,
+    is the cubes said), and the whole text is the tower (nothing else said); otherwise it is returned as it is."""
+    body = text.strip().rstrip(".!").strip()
+    head = _CHAIN_HEAD_RE.match(body)
+    rest = body[head.end():] if head else body
+    items, pos = [], 0
+    while pos < len(rest):
+        m = _CHAIN_ITEM_RE.match(rest, pos)
+        if m is None:
+            return text
+        role = next(k for k, _ in _CHAIN_ROLES if m.group(k))
+        items.append((m.group("c"), _count(m.group("n") or "1"), role))
+        pos = m.end()
+        sep = _CHAIN_SEP_RE.match(rest, pos)
+        if pos < len(rest) and sep is None:
+            return text
+        pos = sep.end() if sep else pos
+    if len(items) < 2 or not (head or any(r in ("above", "below") for _, _, r in items)):
+        return text
+    cubes = [(c, role if j == 0 else ("above" if role in ("above", "bottom") else role), i, j)
+             for i, (c, n, role) in enumerate(items) for j in range(n)]
+    if any(n > 1 and role not in ("above", "bottom") for _, n, role in items):
+        return text
+    total = len(cubes)
+    if (head and head.group("count") and _count(head.group("count")) != total) or total > 6:
+        return text
+    orders = set()
+    for to_first in (False, True):  # "it": the cube said just before, or the first cube said
+        for perm in itertools.permutations(range(total)):
+            at = {k: perm.index(k) for k in range(total)}  # cube k stands at height at[k]
+            ok = True
+            for k, (_, role, i, j) in enumerate(cubes):
+                ref = k - 1 if j or not to_first else 0
+                want = {"bottom": 0, "top": total - 1, "middle": total // 2 if total % 2 else None,
+                        "above": at[ref] + 1 if k else None, "below": at[ref] - 1 if k else None}[role]
+                if want is None or at[k] != want:
+                    ok = False
+                    break
+            if ok:
+                orders.add(tuple(cubes[k][0] for k in perm))
+    if len(orders) != 1:
+        return text
+    return "build a tower from bottom to top: " + ", ".join(orders.pop()) + "."
 
 
 _END_WORDS = {"bottom": "bottom", "lowest": "bottom", "lower": "bottom", "bottommost": "bottom", "top": "top", "highest": "top",
