@@ -1589,8 +1589,8 @@ def tower_chain(text: str) -> str:
         pos = sep.end() if sep else pos
     if len(items) < 2 or not (head or any(r in ("above", "below") for _, _, r in items)):
         return text
-    cubes = [(c, role if j == 0 else ("above" if role in ("above", "bottom") else role), i, j)
-             for i, (c, n, role) in enumerate(items) for j in range(n)]
+    cubes = [(c, role if j == 0 else ("above" if role in ("above", "bottom") else role), j)
+             for c, n, role in items for j in range(n)]
     if any(n > 1 and role not in ("above", "bottom") for _, n, role in items):
         return text
     total = len(cubes)
@@ -1601,7 +1601,7 @@ def tower_chain(text: str) -> str:
         for perm in itertools.permutations(range(total)):
             at = {k: perm.index(k) for k in range(total)}  # cube k stands at height at[k]
             ok = True
-            for k, (_, role, i, j) in enumerate(cubes):
+            for k, (_, role, j) in enumerate(cubes):
                 ref = k - 1 if j or not to_first else 0
                 want = {"bottom": 0, "top": total - 1, "middle": total // 2 if total % 2 else None,
                         "above": at[ref] + 1 if k else None, "below": at[ref] - 1 if k else None}[role]
