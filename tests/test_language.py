@@ -5458,3 +5458,13 @@ def test_a_tower_said_cube_by_cube(text, expected):
 def test_a_tower_said_cube_by_cube_that_places_no_cube_once_is_refused(text):
     with pytest.raises(BadInput):
         parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    # layers listed from the bottom with "then", and a base of single cubes with one noun (had been misread and refused)
+    ("Construct a pyramid, bottom layer blue blue blue, then red red, then yellow.", ["pyramid(blue,blue,blue|red,red|yellow)"]),
+    ("A two-level pyramid: a base of a cyan and a brown block, with a white block on top.", ["pyramid(brown,cyan|white)"]),
+    ("a wall, bottom row red, red, red, then blue, blue, blue", ["wall(red,red,red|blue,blue,blue)"]),
+])
+def test_layers_said_in_turn_from_the_bottom(text, expected):
+    assert meaning(parse(text)) == expected

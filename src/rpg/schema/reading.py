@@ -1201,6 +1201,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = repeated_indefinites(text)  # "a grey cube on the blue patch and a grey cube on the red patch": two cubes
     if re.search(r"\b(?:walls?|towers?|stacks?)\b", text):  # "yellow down, cyan up", "down row gray gray gray"
         text = lexicon.rewrite(lexicon.UP_DOWN_ROLE_REWRITES, text)
+    if re.search(r"\b(?:walls?|pyramids?)\b", text):  # "a pyramid, bottom layer blue blue blue, then red red, then yellow"
+        text = layers_said_in_turn(text)
     if re.search(r"\bwalls?\b", text):  # "a two-layer wall with blue on the bottom, three cubes per layer"
         text = lexicon.rewrite(lexicon.WALL_ROW_REWRITES, text)
         text = lexicon.WALL_LAYER_ROLE_RE.sub(lambda m: f"{m.group('where')} layer {m.group('c')}", text)
@@ -1613,6 +1615,31 @@ def tower_chain(text: str) -> str:
     if len(orders) != 1:
         return text
     return "build a tower from bottom to top: " + ", ".join(orders.pop()) + "."
+
+
+_LAYER_LIST = rf"(?:{COLOR_RE})(?:(?:\s*,\s*|\s+)(?:{COLOR_RE}))*"
+_THEN_LAYERS_RE = re.compile(rf"\b(?:bottom|base|lowest|first)\s+(?P<noun>layer|row|level|tier|course)\s*:?\s*(?:of\s+)?(?P<l0>{_LAYER_LIST})"
+                             + "".join(rf"(?:\s*,?\s*(?:and\s+)?then\s+(?P<l{i}>{_LAYER_LIST}))" + ("" if i == 1 else "?") for i in (1, 2, 3))
+                             + r"(?=\s*(?:[,.;!]|$))")
+_BASE_OF_ONES_RE = re.compile(rf"\bbase\s+of\s+(?P<list>(?:(?:a|an)\s+(?:{COLOR_RE})(?:\s+(?:block|cube))?(?:\s*,\s*|\s*,?\s+and\s+))+)"
+                              rf"(?:a|an)\s+(?P<last>{COLOR_RE})\s+(?:block|cube)\b")
+_LAYER_NAMES = {2: ("bottom", "top"), 3: ("bottom", "middle", "top"), 4: ("bottom", "second", "third", "top")}
+
+
+def layers_said_in_turn(text: str) -> str:
+    """A pyramid's or wall's layers listed from the bottom with "then" ("bottom layer blue blue blue, then red red,
+    then yellow") -> each layer named ("bottom layer blue blue blue, middle layer red red, top layer yellow"); a base
+    of single cubes with one noun at the end ("a base of a cyan and a brown block") -> each with its own ("a base of a
+    cyan block and a brown block").  Other text is returned as it is."""
+    def named(m: re.Match) -> str:
+        layers = [m.group(f"l{i}") for i in range(4) if m.group(f"l{i}")]
+        return ", ".join(f"{role} {m.group('noun')} {layer}" for role, layer in zip(_LAYER_NAMES[len(layers)], layers, strict=True))
+
+    def ones(m: re.Match) -> str:
+        colours = re.findall(rf"\b(?:{COLOR_RE})\b", m.group("list")) + [m.group("last")]
+        said = [f"a {c} block" for c in colours]
+        return "base of " + ", ".join(said[:-1]) + " and " + said[-1]
+    return _BASE_OF_ONES_RE.sub(ones, _THEN_LAYERS_RE.sub(named, text))
 
 
 _END_WORDS = {"bottom": "bottom", "lowest": "bottom", "lower": "bottom", "bottommost": "bottom", "top": "top", "highest": "top",
