@@ -5468,3 +5468,16 @@ def test_a_tower_said_cube_by_cube_that_places_no_cube_once_is_refused(text):
 ])
 def test_layers_said_in_turn_from_the_bottom(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Stack the letter cubes so that the tower says HAT from top to bottom.",
+     ["reads(H,A,T;direction=top_to_bottom,face=front,text=HAT)", "stack(T,A,H)"]),  # "says": what it reads
+    ("Construct a wall whose bottom row is orange, purple, orange and whose top row is purple, orange, purple.",
+     ["wall(orange,orange,purple|orange,purple,purple)"]),
+    ("Sort the cubes into piles by colour: the two red ones in one pile and the two green ones in another.",
+     ["piles(green,green,red,red;by=color)"]),  # one pile, and another: two
+    ("Two towers please. One has green on red, the other has yellow on purple.", ["stack(purple,yellow)", "stack(red,green)"]),
+])
+def test_says_whose_one_pile_and_another_and_towers_said_after_them(text, expected):
+    assert sorted(meaning(parse(text))) == expected

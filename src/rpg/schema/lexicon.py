@@ -3277,6 +3277,18 @@ NOTATION_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 """Counts and goals written as notation ("3x white", "2 rows x 3", "on(red, green)") and articles a terse writer leaves out."""
 
 WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "a wall whose bottom row is orange, purple, orange and whose top row is ...": its rows, as "where the" says them
+    (re.compile(r"\b((?:wall|pyramid|tower|stack|row|line|grid)s?\s+)whose\b(?P<rest>[^.;]*)"),
+     lambda m: m.group(1) + "where the" + re.sub(r"\b(and|,)\s+whose\b", r"\1 the", m.group("rest"))),
+    # "into piles by colour: the two red ones in one pile and the two green ones in another": two piles, as listed
+    (re.compile(r"\b(into|in)\s+piles\b(?=(?:\s+by\s+colou?r)?\s*:\s*[^.;:]*\bin\s+(?:1|one)\s+pile\b[^.;:]*\band\s+[^.;:]*"
+                r"\b(?:in\s+)?another(?:\s+(?:one|pile))?\s*(?:[.!]|$))"), r"\1 2 piles"),
+    # "Two towers please. One has green on red, the other has yellow on purple.": each tower said after them
+    (re.compile(r"\b((?:2|two)\s+(?:towers|stacks))(?:\s*,?\s*please)?\s*[.!:]\s+(?:1|one)\s+(?:has|with|having|is)\b"
+                r"(?=[^.;]*\bthe\s+other\s+(?:has|with|having|is)\b)"), r"\1: one is"),
+    (re.compile(r"(?<=,\s)the\s+other\s+(?:has|with|having)\b"), "the other is"),
+    # "the tower says H, A, T", "so the row shows CAT": what a structure of label cubes says is what it reads
+    (re.compile(r"\b((?:tower|stack|column|row|line|word)\s+(?:should\s+|must\s+|will\s+|has\s+to\s+)?)(?:says|say|shows|show)\b"), r"\1reads"),
     # "put digit 7 on top of digit 2": a label cube named without its article
     (re.compile(r"(?<![\w'])(?<!the\s)(?<!a\s)(?<!each\s)(?<!every\s)(?<!any\s)\b(digit|number|letter)\s+(?=(?:\d|[A-Z])\b(?!\s*(?:,|to\b|-)))"),
      r"the \1 "),
