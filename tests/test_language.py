@@ -5481,3 +5481,20 @@ def test_layers_said_in_turn_from_the_bottom(text, expected):
 ])
 def test_says_whose_one_pile_and_another_and_towers_said_after_them(text, expected):
     assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a pronoun before a colon's list stands for the cubes listed (had been refused as naming nothing)
+    ("stack them in this order from the table up: cyan, white, cyan", ["stack(cyan,white,cyan)"]),
+    ("put them in a row, left to right: red, blue, green", ["line[left_to_right](red,blue,green)"]),
+    # a row's cubes listed after its colon are its order, either way along it
+    ("line them up: yellow, blue, red", ["line[sequence](yellow,blue,red)"]),
+    ("Row: yellow, blue, red", ["line[sequence](yellow,blue,red)"]),
+])
+def test_a_pronoun_before_a_colons_list_and_a_rows_list_after_its_colon(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_a_pronoun_before_a_colon_with_one_cube_still_refers_to_nothing():
+    with pytest.raises(Inexpressible):
+        parse("stack them: red")

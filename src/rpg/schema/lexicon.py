@@ -3287,6 +3287,14 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\b((?:2|two)\s+(?:towers|stacks))(?:\s*,?\s*please)?\s*[.!:]\s+(?:1|one)\s+(?:has|with|having|is)\b"
                 r"(?=[^.;]*\bthe\s+other\s+(?:has|with|having|is)\b)"), r"\1: one is"),
     (re.compile(r"(?<=,\s)the\s+other\s+(?:has|with|having)\b"), "the other is"),
+    # "stack them in this order from the table up: cyan, white, cyan": the pronoun stands for the cubes listed after
+    (re.compile(rf"\b(stack|put|place|arrange|set|order|lay\s+out|line\s+up|line)\s+(?:them|these|those)(\s+up)?\b"
+                rf"(?=[^.;:]*:\s*(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:the\s+)?(?:{COLOR_RE})\b)"),
+     lambda m: f"{m.group(1)}{m.group(2) or ''} the cubes"),
+    # "line them up: yellow, blue, red", "row: red, green, blue": a row's cubes listed after its colon are its order
+    # (either way along it: no side is said)
+    (re.compile(rf"\b(row|line|line\s+up(?:\s+the\s+cubes)?|line\s+the\s+cubes\s+up)\s*:\s*(?=(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})){{2,}}"
+                r"\s*[.!]?\s*$)"), r"\1 in this order: "),
     # "the tower says H, A, T", "so the row shows CAT": what a structure of label cubes says is what it reads
     (re.compile(r"\b((?:tower|stack|column|row|line|word)\s+(?:should\s+|must\s+|will\s+|has\s+to\s+)?)(?:says|say|shows|show)\b"), r"\1reads"),
     # "put digit 7 on top of digit 2": a label cube named without its article
