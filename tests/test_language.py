@@ -5498,3 +5498,22 @@ def test_a_pronoun_before_a_colons_list_and_a_rows_list_after_its_colon(text, ex
 def test_a_pronoun_before_a_colon_with_one_cube_still_refers_to_nothing():
     with pytest.raises(Inexpressible):
         parse("stack them: red")
+
+
+@pytest.mark.parametrize("text, expected", [
+    # "the other blue cube" set apart by the one blue cube said before it: a second blue cube (had been refused)
+    ("line up the blue cube, the yellow cube and the other blue cube, from left to right.", ["line[left_to_right](blue,yellow,blue)"]),
+    ("put the blue cube on the red patch and the other blue cube on the green patch",
+     ["on_patch(blue,patch:green)", "on_patch(blue,patch:red)"]),
+])
+def test_the_other_cube_of_a_colour_said_before(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "put the other blue cube on the red patch",  # no blue cube said before: one the speaker sees
+    "Initially the blue cube is on the red cube. Put the other blue cube on the green patch.",  # contrasted with the start's
+])
+def test_the_other_cube_of_a_colour_nobody_set_apart_is_still_refused(text):
+    with pytest.raises(Inexpressible):
+        parse(text)

@@ -916,6 +916,26 @@ def drop_contrasts(text: str) -> str:
     return text.strip()
 
 
+_OTHER_OF_COLOUR_RE = re.compile(rf"\bthe\s+other\s+(?P<c>{COLOR_RE})\s+(?P<n>cube|block|brick)\b")
+
+
+def other_of_a_colour(text: str) -> str:
+    """"the blue cube, the yellow cube and the other blue cube": "the other blue cube" is set apart by the one blue cube
+    said before it (a second cube of that colour): both are written as indefinites ("a blue cube ... a blue cube"),
+    which :func:`repeated_indefinites` and the readers count as two.  Left as written where that colour is said
+    more than once before, in a start ("initially ..."), or not at all (then "the other" contrasts with a cube the
+    speaker sees, refused as a reference)."""
+    m = _OTHER_OF_COLOUR_RE.search(text)
+    if m is None or re.search(r"\b(?:initially|start\w*|begin\w*|currently|now)\b", text):
+        return text
+    before = list(re.finditer(rf"\b(?:the|a|an|one)\s+{m.group('c')}\s+(?:cube|block|brick)\b", text[:m.start()]))
+    if len(before) != 1 or _OTHER_OF_COLOUR_RE.search(text, m.end()):
+        return text
+    b = before[0]
+    return (text[:b.start()] + f"a {m.group('c')} {m.group('n')}" + text[b.end():m.start()] + f"a {m.group('c')} {m.group('n')}"
+            + text[m.end():])
+
+
 def repeated_indefinites(text: str) -> str:
     """``text`` with each indefinite cube of a colour said again (:data:`lexicon.INDEFINITE_CUBE_RE`) written as
     "another" cube of it: "a red cube on the blue patch and a red cube on the green patch" -> "... and another red cube
@@ -1198,7 +1218,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.COLOUR_PLURAL_RE.sub(r"the \1 ones", text)  # "reds at the bottom"
     text = lexicon.TEXTURED_RE.sub(lambda m: f"the {m.group('c')} block" if m.group("c") in COLORS else m.group(0), text)
     text = lexicon.rewrite(lexicon.NOTATION_REWRITES, text)
-    text = repeated_indefinites(text)  # "a grey cube on the blue patch and a grey cube on the red patch": two cubes
+    text = repeated_indefinites(other_of_a_colour(text))  # "a grey cube on the blue patch and a grey cube on the red patch": two cubes
     if re.search(r"\b(?:walls?|towers?|stacks?)\b", text):  # "yellow down, cyan up", "down row gray gray gray"
         text = lexicon.rewrite(lexicon.UP_DOWN_ROLE_REWRITES, text)
     if re.search(r"\b(?:walls?|pyramids?)\b", text):  # "a pyramid, bottom layer blue blue blue, then red red, then yellow"
