@@ -5517,3 +5517,14 @@ def test_the_other_cube_of_a_colour_said_before(text, expected):
 def test_the_other_cube_of_a_colour_nobody_set_apart_is_still_refused(text):
     with pytest.raises(Inexpressible):
         parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("make two towers one red on green the other white on black", ["stack(black,white)", "stack(green,red)"]),
+    ("The image shows two separate towers. One is green on yellow. The other is blue on pink.", ["stack(pink,blue)", "stack(yellow,green)"]),
+    # a start said as "there is a tower with ...", then the cube taken off
+    ("There is a tower with the purple cube on top of the yellow cube. Take the purple one off and put it on the table.",
+     ["on_table(purple)", "start:stack(yellow,purple)"]),
+])
+def test_two_towers_each_said_after_them_and_a_start_said_with_there_is(text, expected):
+    assert sorted(meaning(parse(text))) == expected

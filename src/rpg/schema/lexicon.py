@@ -3276,6 +3276,9 @@ NOTATION_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 )
 """Counts and goals written as notation ("3x white", "2 rows x 3", "on(red, green)") and articles a terse writer leaves out."""
 
+_CHAINED_PAIR = rf"(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+on(?:\s+top\s+of)?\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?"
+"""One cube on another, by colour ("green on red", "the green cube on top of the red one")."""
+
 WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "a wall whose bottom row is orange, purple, orange and whose top row is ...": its rows, as "where the" says them
     (re.compile(r"\b((?:wall|pyramid|tower|stack|row|line|grid)s?\s+)whose\b(?P<rest>[^.;]*)"),
@@ -3283,10 +3286,12 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "into piles by colour: the two red ones in one pile and the two green ones in another": two piles, as listed
     (re.compile(r"\b(into|in)\s+piles\b(?=(?:\s+by\s+colou?r)?\s*:\s*[^.;:]*\bin\s+(?:1|one)\s+pile\b[^.;:]*\band\s+[^.;:]*"
                 r"\b(?:in\s+)?another(?:\s+(?:one|pile))?\s*(?:[.!]|$))"), r"\1 2 piles"),
-    # "Two towers please. One has green on red, the other has yellow on purple.": each tower said after them
-    (re.compile(r"\b((?:2|two)\s+(?:towers|stacks))(?:\s*,?\s*please)?\s*[.!:]\s+(?:1|one)\s+(?:has|with|having|is)\b"
-                r"(?=[^.;]*\bthe\s+other\s+(?:has|with|having|is)\b)"), r"\1: one is"),
-    (re.compile(r"(?<=,\s)the\s+other\s+(?:has|with|having)\b"), "the other is"),
+    # "Two towers please. One has green on red, the other has yellow on purple.", "two separate towers. One is green on
+    # yellow. The other is blue on pink.", "two towers one red on green the other white on black": each tower said after them
+    (re.compile(rf"\b((?:2|two)\s+(?:separate\s+|different\s+)?(?:towers|stacks))(?:\s*,?\s*please)?\s*[.!:,;]?\s+(?:1|one)(?:\s+(?:tower|stack))?"
+                rf"(?:\s+(?:has|with|having|is)|\s*:)?\s+(?P<a>{_CHAINED_PAIR})\s*[.,;]?\s*(?:and\s+)?the\s+other(?:\s+(?:one|tower|stack))?"
+                rf"(?:\s+(?:has|with|having|is)|\s*:)?\s+(?P<b>{_CHAINED_PAIR})\s*(?=[.!]?\s*$)"),
+     lambda m: f"{m.group(1)}: one is {m.group('a')}, the other is {m.group('b')}"),
     # "stack them in this order from the table up: cyan, white, cyan": the pronoun stands for the cubes listed after
     (re.compile(rf"\b(stack|put|place|arrange|set|order|lay\s+out|line\s+up|line)\s+(?:them|these|those)(\s+up)?\b"
                 rf"(?=[^.;:]*:\s*(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:the\s+)?(?:{COLOR_RE})\b)"),

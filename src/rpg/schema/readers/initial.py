@@ -38,7 +38,7 @@ START_SENTENCE_RE = re.compile(
     r"|(?:setup|start|before|init)\s*:|(?:the\s+)?(?:scene|episode|table|task)\s+(?:starts|begins)\s+(?:with|as)"
     r"|(?:it|the\s+(?:tower|stack|column))\s+(?:starts|begins)\s+(?:out\s+)?as\b"
     r"|(?:it\s+)?(?:starts|begins)\s+(?:out\s+)?with(?=\s+(?:the|a|an|one)\s)|(?:start|begin)\s+(?:out\s+)?with(?=\s+(?:a|an|one|the)\s)"
-    r"|there(?:'s|\s+is)\s+(?=(?:an?|one)\s+(?:stack|tower|column)\s+of\b)|we\s+start\s+(?:with|from)|(?:the\s+)?(?:(?:letter|digit|number|colou?red)\s+)?(?:cubes|blocks)\s+start(?:\s+out)?(?:\s+as|\s+in|\s*:)?)"
+    r"|there(?:'s|s|\s+is)\s+(?=(?:an?|one)\s+(?:stack|tower|column)\s+(?:of|with)\b)|we\s+start\s+(?:with|from)|(?:the\s+)?(?:(?:letter|digit|number|colou?red)\s+)?(?:cubes|blocks)\s+start(?:\s+out)?(?:\s+as|\s+in|\s*:)?)"
     r"\s*[:,\-\u2014]?\s*")
 """Words that open a statement of the initial scene ("Initially, ...", "At the start, ...",
 "Initial state: ...", "Setup: ...", "The scene starts with ...")."""
