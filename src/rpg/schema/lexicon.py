@@ -3298,7 +3298,8 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      lambda m: f"{m.group(1)}{m.group(2) or ''} the cubes"),
     # "line them up: yellow, blue, red", "row: red, green, blue": a row's cubes listed after its colon are its order
     # (either way along it: no side is said)
-    (re.compile(rf"\b(row|line|line\s+up(?:\s+the\s+cubes)?|line\s+the\s+cubes\s+up)\s*:\s*(?=(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})){{2,}}"
+    # (at a sentence's start only: "4 blocks in a single straight line: red, blue, ..." lists the cubes, in no order)
+    (re.compile(rf"(?:^|(?<=[.!?]\s))((?:(?:a|one|1)\s+)?(?:row|line)|line\s+up(?:\s+the\s+cubes)?|line\s+the\s+cubes\s+up)\s*:\s*(?=(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})){{2,}}"
                 r"\s*[.!]?\s*$)"), r"\1 in this order: "),
     # "the tower says H, A, T", "so the row shows CAT": what a structure of label cubes says is what it reads
     (re.compile(r"\b((?:tower|stack|column|row|line|word)\s+(?:should\s+|must\s+|will\s+|has\s+to\s+)?)(?:says|say|shows|show)\b"), r"\1reads"),
