@@ -5445,15 +5445,23 @@ def test_a_towers_count_after_with_or_a_comma_and_its_one_colour(text, expected)
     # "it" here is the middle cube, the first said: the only reading that gives each cube one place
     ("Make a stack of three cubes with the red one in the middle, a blue one below it and a green one above it.",
      ["stack(blue,red,green)"]),
+    # the tower's cubes listed, then roles by ends and by cubes named
+    ("Puzzle: build a tower of the red, blue and yellow cubes so that red is directly above blue and yellow is at the "
+     "very bottom.", ["stack(yellow,blue,red)"]),
+    ("Build a tower of the blue, green and orange cubes on the white patch, blue at the bottom and orange at the top.",
+     ["on_patch(blue,patch:white)", "stack(blue,green,orange)"]),
+    ("Stack the cubes so that orange is on top, blue is under it, and green is at the very bottom.", ["stack(green,blue,orange)"]),
 ])
 def test_a_tower_said_cube_by_cube(text, expected):
-    assert meaning(parse(text)) == expected
+    assert sorted(meaning(parse(text))) == expected
 
 
 @pytest.mark.parametrize("text", [
     "put the red block on the table, and the blue block beneath it",  # below a cube on the table: no tower
     "build a tower of 4 with red at the bottom, blue on it and green on top",  # four said, three placed
     "Put the red block down and the blue block on that, but not the green",
+    "build a tower of the red, blue and yellow cubes so that red is above blue",  # three orders do
+    "build a tower of the red, blue and green cubes, red on blue",  # green above or below them
 ])
 def test_a_tower_said_cube_by_cube_that_places_no_cube_once_is_refused(text):
     with pytest.raises(BadInput):

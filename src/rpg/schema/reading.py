@@ -1564,22 +1564,35 @@ def _roles_first(m: re.Match) -> str:
     return "from bottom to top: " + ", ".join(c for _, c in sorted(said))
 
 
+_CHAIN_REF = rf"(?:the\s+)?(?P<{{g}}>{COLOR_RE})(?:\s+(?:cube|block|one))?"
 _CHAIN_ROLES = (
     ("above", r"(?:on|onto|on\s+top\s+of|above|over|atop|upon)\s+(?:it|that|this)(?:\s+one)?"),
     ("below", r"(?:below|under|underneath|beneath)\s+(?:it|that|this)(?:\s+one)?"),
+    ("on", r"(?:(?:directly|right|just|immediately)\s+)?(?:on|onto|on\s+top\s+of|atop|upon)\s+" + _CHAIN_REF.format(g="on_ref")
+     + r"|(?:directly|right|just|immediately)\s+(?:above|over)\s+" + _CHAIN_REF.format(g="on_ref2")),
+    ("under", r"(?:directly|right|just|immediately)\s+(?:below|under|underneath|beneath)\s+" + _CHAIN_REF.format(g="under_ref")),
+    ("higher", r"(?:above|over|higher\s+than)\s+" + _CHAIN_REF.format(g="higher_ref")),
+    ("lower", r"(?:below|under|underneath|beneath|lower\s+than)\s+" + _CHAIN_REF.format(g="lower_ref")),
     ("bottom", r"down|(?:at|on|in)\s+the\s+(?:very\s+)?(?:bottom|base)|as\s+the\s+(?:base|bottom)|(?:at|on)\s+the\s+table"),
     ("top", r"(?:at|on)\s+the\s+(?:very\s+)?top|on\s+top|as\s+the\s+top"),
     ("middle", r"in\s+the\s+middle"),
 )
-"""Where one cube of a tower said cube by cube goes (:func:`tower_chain`): above or below the cube said before (or the
-first cube said), at an end, or in the middle."""
+"""Where one cube of a tower said cube by cube goes (:func:`tower_chain`): on or under the cube said before (or the first
+cube said: "it"), on or under a cube named ("directly above the blue one"), anywhere above or below one ("above blue"),
+at an end, or in the middle."""
 _CHAIN_ITEM_RE = re.compile(
     rf"(?:(?:then|and|also|next|finally|lastly)\s+)*(?:(?:put|place|set|stack|add|leave|lay)\s+)?(?:(?:a|an|the|another|1|(?:the\s+)?(?P<n>\d+|two|three|four|five|six|both))\s+)?"
-    rf"(?P<c>{COLOR_RE})(?:\s+(?:blocks?|cubes?|bricks?|ones?))?\s+(?:(?:is|goes|sits|should\s+be|must\s+be|comes)\s+)?"
+    rf"(?P<c>{COLOR_RE})(?:\s+(?:blocks?|cubes?|bricks?|ones?))?\s+(?:(?:is|goes|sits|should\s+be|must\s+be|comes|stands)\s+)?"
     r"(?P<role>" + "|".join(f"(?P<{k}>{r})" for k, r in _CHAIN_ROLES) + r")")
 _CHAIN_SEP_RE = re.compile(r"\s*(?:,\s*(?:and\s+)?(?:then\s+)?|;\s*|\s+and\s+(?:then\s+)?|\s+then\s+)")
-_CHAIN_HEAD_RE = re.compile(rf"(?:(?:please|now)\s+)*(?:make|build|create|form|construct|stack|assemble)\s+(?:a|an|1)\s+(?P<noun>{TOWER_NOUNS})"
-                            rf"(?:\s+of\s+(?P<count>\d+|{lexicon.COUNT_WORD_RE})(?:\s+(?:blocks|cubes|bricks))?)?\s*(?:with|:|,|-)\s*")
+_CHAIN_HEAD_RE = re.compile(
+    rf"(?:(?:please|now|puzzle\s*:)\s+)*(?:(?:make|build|create|form|construct|stack|assemble)\s+(?:a|an|1)\s+(?P<noun>{TOWER_NOUNS})"
+    rf"(?:\s+(?:of|from|with|out\s+of|using)\s+(?:(?P<count>\d+|{lexicon.COUNT_WORD_RE})(?:\s+(?:blocks|cubes|bricks))?"
+    rf"|(?:the\s+)?(?P<set>(?:{COLOR_RE})(?:\s*,\s*(?:{COLOR_RE}))*\s*,?\s+and\s+(?:{COLOR_RE}))\s+(?:cubes|blocks|bricks)"
+    rf"(?P<where>\s+on\s+the\s+(?:{COLOR_RE})\s+(?:goal\s+)?patch)?))?"
+    r"|(?:stack|arrange|order)\s+(?:the|these|all\s+the)\s+(?:cubes|blocks))\s*(?:with|so\s+that|such\s+that|where|:|,|-)\s*")
+_CHAIN_RELATIVE = {"on": +1, "under": -1, "higher": +1, "lower": -1}
+"""A role by a cube named -> the side of it the cube stands (+1 above)."""
 
 
 def _count(word: str) -> int:
@@ -1588,12 +1601,13 @@ def _count(word: str) -> int:
 
 
 def tower_chain(text: str) -> str:
-    """A tower said cube by cube, each cube's place by an end or by the cube said before ("put a green cube down, a
-    white cube on it, and another green cube on top of that"; "a stack of 3 cubes with the red one in the middle, a
-    blue one below it and a green one above it"; "a purple block at the base and 2 pink blocks on it") -> "build a
-    tower from bottom to top: ...".  "it" may stand for the cube said just before or the first cube said: the text is
-    rewritten only when every reading that places each cube once gives one order (and the tower's count, if said,
-    is the cubes said), and the whole text is the tower (nothing else said); otherwise it is returned as it is."""
+    """A tower said cube by cube, each cube's place by an end, by the cube said before or by a cube named ("put a green
+    cube down, a white cube on it, and another green cube on top of that"; "a stack of 3 cubes with the red one in the
+    middle, a blue one below it and a green one above it"; "a tower of the red, blue and yellow cubes so that red is
+    directly above blue and yellow is at the very bottom") -> "build a tower from bottom to top: ...".  "it" may stand
+    for the cube said just before or the first cube said: the text is rewritten only when every reading that places
+    each cube once gives one order (and the tower's count or listed cubes, if said, are the cubes placed), and the
+    whole text is the tower (nothing else said); otherwise it is returned as it is."""
     body = text.strip().rstrip(".!").strip()
     head = _CHAIN_HEAD_RE.match(body)
     rest = body[head.end():] if head else body
@@ -1603,30 +1617,60 @@ def tower_chain(text: str) -> str:
         if m is None:
             return text
         role = next(k for k, _ in _CHAIN_ROLES if m.group(k))
-        items.append((m.group("c"), _count(m.group("n") or "1"), role))
+        ref = next((m.group(g) for g in ("on_ref", "on_ref2", "under_ref", "higher_ref", "lower_ref") if m.group(g)), None)
+        items.append((m.group("c"), _count(m.group("n") or "1"), role, ref))
         pos = m.end()
         sep = _CHAIN_SEP_RE.match(rest, pos)
         if pos < len(rest) and sep is None:
             return text
         pos = sep.end() if sep else pos
-    if len(items) < 2 or not (head or any(r in ("above", "below") for _, _, r in items)):
+    if not items or not (head or any(r in ("above", "below") for _, _, r, _ in items)) or (len(items) < 2 and not (head and head.group("set"))):
         return text
-    cubes = [(c, role if j == 0 else ("above" if role in ("above", "bottom") else role), j)
-             for c, n, role in items for j in range(n)]
-    if any(n > 1 and role not in ("above", "bottom") for _, n, role in items):
+    if any(n > 1 and role not in ("above", "bottom") for _, n, role, _ in items):
         return text
+    listed = re.findall(rf"\b(?:{COLOR_RE})\b", head.group("set")) if head and head.group("set") else None
+    if listed is not None:  # the cubes listed; each said one a different one of them
+        said = [c for c, n, _, _ in items for _ in range(n)]
+        if len(set(listed)) != len(listed) or len(set(said)) != len(said) or not set(said) <= set(listed):
+            return text
+        cubes = [(c, next((role for ic, _, role, _ in items if ic == c), None), 0) for c in listed]
+        refs = {c: r for c, _, _, r in items}
+        previous = {c: items[i - 1][0] for i, (c, _, _, _) in enumerate(items) if i}
+        first = items[0][0]
+    else:
+        cubes = [(c, role if j == 0 else ("above" if role in ("above", "bottom") else role), j) for c, n, role, _ in items for j in range(n)]
+        refs = {k: r for k, (c, n, role, r) in enumerate(x for x in items for _ in range(x[1]))}
+        previous, first = None, None
     total = len(cubes)
     if (head and head.group("count") and _count(head.group("count")) != total) or total > 6:
         return text
+    colour_at = {c: k for k, (c, _, _) in enumerate(cubes)}
+    if any(r is not None and (r not in colour_at or list(c for c, _, _ in cubes).count(r) != 1) for r in refs.values()):
+        return text  # a cube named that the tower does not have once
     orders = set()
     for to_first in (False, True):  # "it": the cube said just before, or the first cube said
         for perm in itertools.permutations(range(total)):
             at = {k: perm.index(k) for k in range(total)}  # cube k stands at height at[k]
             ok = True
-            for k, (_, role, j) in enumerate(cubes):
-                ref = k - 1 if j or not to_first else 0
+            for k, (c, role, j) in enumerate(cubes):
+                if role is None:
+                    continue
+                if listed is not None:
+                    ref = colour_at.get(refs.get(c)) if refs.get(c) else (colour_at[first] if to_first else colour_at.get(previous.get(c)))
+                    pronoun_ok = c in previous
+                else:
+                    ref = colour_at[refs[k]] if refs.get(k) else (None if k == 0 else k - 1 if j or not to_first else 0)
+                    pronoun_ok = k > 0
+                if role in ("higher", "lower"):
+                    side = _CHAIN_RELATIVE[role]
+                    if ref is None or (at[k] - at[ref]) * side <= 0:
+                        ok = False
+                        break
+                    continue
                 want = {"bottom": 0, "top": total - 1, "middle": total // 2 if total % 2 else None,
-                        "above": at[ref] + 1 if k else None, "below": at[ref] - 1 if k else None}[role]
+                        "above": at[ref] + 1 if pronoun_ok and ref is not None else None,
+                        "below": at[ref] - 1 if pronoun_ok and ref is not None else None,
+                        "on": at[ref] + 1 if ref is not None else None, "under": at[ref] - 1 if ref is not None else None}[role]
                 if want is None or at[k] != want:
                     ok = False
                     break
@@ -1634,7 +1678,8 @@ def tower_chain(text: str) -> str:
                 orders.add(tuple(cubes[k][0] for k in perm))
     if len(orders) != 1:
         return text
-    return "build a tower from bottom to top: " + ", ".join(orders.pop()) + "."
+    where = head.group("where") if head and head.group("set") else None
+    return "build a tower from bottom to top: " + ", ".join(orders.pop()) + (f",{where}" if where else "") + "."
 
 
 _LAYER_LIST = rf"(?:{COLOR_RE})(?:(?:\s*,\s*|\s+)(?:{COLOR_RE}))*"
