@@ -5536,3 +5536,19 @@ def test_the_other_cube_of_a_colour_nobody_set_apart_is_still_refused(text):
 ])
 def test_two_towers_each_said_after_them_and_a_start_said_with_there_is(text, expected):
     assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Place the blue cube at the corner behind, on the right of the table.", ["in_region(blue,back_right)"]),
+    ("Put the cube brown in the corner of the front at the left.", ["in_region(brown,front_left)"]),
+    ("two towers: (1) cyan on purple (2) white on black", ["stack(black,white)", "stack(purple,cyan)"]),
+])
+def test_a_corner_said_by_its_two_sides_apart_and_numbered_towers(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", ["put red in the corner at the back", "put red in a corner at the front"])
+def test_a_corner_said_by_one_side_is_refused(text):
+    # (it had been read as the back or front edge, the corner dropped)
+    with pytest.raises(ParseError, match="names no one corner"):
+        parse(text)

@@ -3301,6 +3301,14 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # (at a sentence's start only: "4 blocks in a single straight line: red, blue, ..." lists the cubes, in no order)
     (re.compile(rf"(?:^|(?<=[.!?]\s))((?:(?:a|one|1)\s+)?(?:row|line)|line\s+up(?:\s+the\s+cubes)?|line\s+the\s+cubes\s+up)\s*:\s*(?=(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})){{2,}}"
                 r"\s*[.!]?\s*$)"), r"\1 in this order: "),
+    # "the corner behind, on the right of the table", "the corner of the front at the left": that corner
+    (re.compile(r"\b(?:the\s+)?corner\s+(?:of\s+)?(?:the\s+)?(?P<fb>behind|back|rear|front)\s*,?\s*(?:(?:on|at|to|in|of)\s+the\s+)?"
+                r"(?P<lr>left|right)\b(?:\s+(?:hand\s+)?(?:side\s+)?(?:of\s+the\s+table)?)?"),
+     lambda m: f"the {'front' if m.group('fb') == 'front' else 'back'} {m.group('lr')} corner"),
+    # "two towers: (1) cyan on purple (2) white on black": each tower numbered
+    (re.compile(rf"\b((?:2|two)\s+(?:separate\s+|different\s+)?(?:towers|stacks))\s*:?\s*(?:\(?(?:1|a|i)[.)]\s*)?(?P<a>{_CHAINED_PAIR})\s*[,;]?\s*"
+                rf"(?:and\s+)?\(?(?:2|b|ii)[.)]\s*(?P<b>{_CHAINED_PAIR})\s*(?=[.!]?\s*$)"),
+     lambda m: f"{m.group(1)}: one is {m.group('a')}, the other is {m.group('b')}"),
     # "the tower says H, A, T", "so the row shows CAT": what a structure of label cubes says is what it reads
     (re.compile(r"\b((?:tower|stack|column|row|line|word)\s+(?:should\s+|must\s+|will\s+|has\s+to\s+)?)(?:says|say|shows|show)\b"), r"\1reads"),
     # "put digit 7 on top of digit 2": a label cube named without its article

@@ -2314,5 +2314,9 @@ def mark_regions(text: str) -> str:
         return f" @region_{region_name(fb, word)} "
     text = CORNER_PAIR_RE.sub(lambda m: f"{m.group('prep')} the {m.group('a')} corner and {m.group('prep')} the "
                               f"{m.group('b')} corner", text)  # "each of": the reader reads it in the text
+    half = re.search(r"\bcorners?\s+(?:at|in|on|towards?|of|to)\s+the\s+(?:back|front|rear|left|right)\b(?!\s+(?:left|right|hand|back|front))", text)
+    if half:  # "in the corner at the back": the back edge had been read, the corner dropped
+        raise ParseError(f"'{half.group(0).strip()}' names no one corner: a corner of the table is front or back and "
+                         "left or right (e.g. 'the back right corner')")
     text = REGION_RE.sub(sub, text)
     return " ".join(REGION_GROUP_RE.sub(lambda m: f" @region_{m.group('g')} ", text).split())
