@@ -5552,3 +5552,18 @@ def test_a_corner_said_by_one_side_is_refused(text):
     # (it had been read as the back or front edge, the corner dropped)
     with pytest.raises(ParseError, match="names no one corner"):
         parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Build a 4-block tower. Bottom: brown. Then orange, then yellow. Top: white.", ["stack(brown,orange,yellow,white)"]),
+    ("Challenge: Tower of 3. Middle cube must be white. Others: any.", None),  # white in the middle, the ends free
+    ("a tower of 4 cubes. The cube at the top is orange and the cube at the bottom is purple.", None),
+])
+def test_a_towers_roles_said_as_sentences_or_with_then_between_its_ends(text, expected):
+    spec = parse(text)
+    if expected is not None:
+        assert meaning(spec) == expected
+    elif "Middle" in text:
+        assert [p.name for p in spec.goal.conjuncts()] == ["unordered_stack", "in_layers"]
+    else:
+        assert spec.goal.name == "anchored_stack" and spec.goal.bottom and spec.goal.top and len(spec.goal.objects) == 4

@@ -1255,28 +1255,40 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.rewrite(lexicon.TOP_DOWN_REWRITES, text)
     # "Make a tower. Top: red. Middle: green. Bottom: blue.": each role's cube, whatever order the roles are said in (the
     # colours had been read as a list from the bottom, red at the bottom)
+    if re.search(r"\b(?:towers?|stacks?|stacked)\b", text):  # "The cube at the top is orange", "Middle cube must be white."
+        text = _role_sentences(text)
     said = list(re.finditer(rf"(?<!\bto\s)\b(top|upper|middle|mid|lower|bottom|base|second|third|fourth|fifth)\s*[:=]\s*"
                             rf"({COLOR_RE})\b(?!\s*,\s*(?:{COLOR_RE}))", text))
     same = {"base": "bottom", "mid": "middle"}
     roles = {same.get(m.group(1), m.group(1)): m.group(2) for m in said}
-    if said and re.search(r"\b(?:towers?|stacks?|stacked)\b", text):
-        orders = (("bottom", "top"), ("bottom", "middle", "top"), ("bottom", "lower", "upper", "top"))
-        order = next((o for o in orders if set(o) == set(roles)), None)
-        if order is None or len(said) != len(roles):  # "top=orange, middle=white" (no bottom), "second=white": which order?
-            raise ParseError(f"the roles said in \"{original[:80]}\" ({', '.join(m.group(0) for m in said)}) do not give every cube "
-                             "of the tower one place; say top and bottom (and middle), or list the order (e.g. \"from bottom to "
-                             "top: black, white, orange\"), or use --model")
-        rest = text[said[-1].end():]
-        other = re.search(rf"\b[a-z]+\s*[:=]\s*(?:{COLOR_RE})\b", rest)
-        if other:  # "top=orange, middle=white, bottom=black, extra=red": a cube of no place (it had gone on top)
-            raise ParseError(f"'{other.group(0)}' in \"{original[:80]}\" names a cube with no place in the tower its roles "
-                             "say; say where it goes, or use --model")
-        count = re.search(r"\b(?:towers?|stacks?)\s+of\s+(\d+)\b|\b(\d+)[\s-]+(?:blocks?|cubes?)?[\s-]*(?:tall|high)\b", text)
-        if order == ("bottom", "top") and count and int(count.group(1) or count.group(2)) > 2:
-            # "Tower of 3. Base: gray. Top: yellow.": the ends given, the cubes between them free
-            text = text[:said[0].start()] + f"with {roles['bottom']} at the bottom and {roles['top']} on top" + rest
+    if said and re.search(r"\b(?:towers?|stacks?|stacked)\b", text) and set(roles) == {"middle"} and len(said) == 1:
+        # "Tower of 3. Middle cube must be white.": that cube in the middle, the others free
+        text = text[:said[0].start()] + f"with {roles['middle']} in the middle" + text[said[0].end():]
+    elif said and re.search(r"\b(?:towers?|stacks?|stacked)\b", text):
+        between = re.fullmatch(rf"\s*[.,;]?\s*((?:(?:and\s+)?then\s+(?:{COLOR_RE})\s*[.,;]?\s*)+)", text[said[0].end():said[-1].start()])
+        if len(said) == 2 and between and [same.get(m.group(1), m.group(1)) for m in said] == ["bottom", "top"]:
+            # "Bottom: brown. Then orange, then yellow. Top: white.": the cubes said between the ends, in order
+            middle = re.findall(rf"\b(?:{COLOR_RE})\b", between.group(1))
+            text = text[:said[0].start()] + "from bottom to top: " + ", ".join([roles["bottom"], *middle, roles["top"]]) + text[said[-1].end():]
         else:
-            text = text[:said[0].start()] + "from bottom to top: " + ", ".join(roles[r] for r in order) + rest
+            orders = (("bottom", "top"), ("bottom", "middle", "top"), ("bottom", "lower", "upper", "top"))
+            order = next((o for o in orders if set(o) == set(roles)), None)
+            if order is None or len(said) != len(roles):  # "top=orange, middle=white" (no bottom), "second=white": which order?
+                raise ParseError(f"the roles said in \"{original[:80]}\" ({', '.join(m.group(0) for m in said)}) do not give every cube "
+                                 "of the tower one place; say top and bottom (and middle), or list the order (e.g. \"from bottom to "
+                                 "top: black, white, orange\"), or use --model")
+            rest = text[said[-1].end():]
+            other = re.search(rf"\b[a-z]+\s*[:=]\s*(?:{COLOR_RE})\b", rest)
+            if other:  # "top=orange, middle=white, bottom=black, extra=red": a cube of no place (it had gone on top)
+                raise ParseError(f"'{other.group(0)}' in \"{original[:80]}\" names a cube with no place in the tower its roles "
+                                 "say; say where it goes, or use --model")
+            n = rf"(\d+|{lexicon.COUNT_WORD_RE})"  # number words are not yet digits here
+            count = re.search(rf"\b(?:towers?|stacks?)\s+of\s+{n}\b|\b{n}[\s-]+(?:blocks?|cubes?)?[\s-]*(?:tall|high)\b", text)
+            if order == ("bottom", "top") and count and _count(count.group(1) or count.group(2)) > 2:
+                # "Tower of 3. Base: gray. Top: yellow.": the ends given, the cubes between them free
+                text = text[:said[0].start()] + f"with {roles['bottom']} at the bottom and {roles['top']} on top" + rest
+            else:
+                text = text[:said[0].start()] + "from bottom to top: " + ", ".join(roles[r] for r in order) + rest
     text = lexicon.rewrite(lexicon.TOP_LIST_REWRITES, text)
     if re.search(r"\b(?:rows?|lines?|line\s+up)\b", text):
         text = lexicon.rewrite(lexicon.ROW_ROLE_REWRITES, text)
@@ -1562,6 +1574,27 @@ def _roles_first(m: re.Match) -> str:
     if len(set(ranks)) != len(ranks) or not {0, 2} <= set(ranks):
         return m.group(0)
     return "from bottom to top: " + ", ".join(c for _, c in sorted(said))
+
+
+_ROLE_SENTENCE_RE = re.compile(
+    rf"\b(?:the\s+)?(?:(?:cube|block|one)\s+(?:at|on)\s+the\s+(?:very\s+)?(?P<r1>top|bottom|base)|(?P<r2>top|bottom|middle|base)\s+(?:cube|block|one))"
+    rf"\s+(?:is|must\s+be|should\s+be|has\s+to\s+be|will\s+be)\s+(?:the\s+|a\s+|an\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\b"
+    rf"(?!\s+(?:or|and)\s+(?:the\s+)?(?:{COLOR_RE}))")
+"""A tower's end or middle cube said as a sentence ("The cube at the top is orange", "Middle cube must be white"):
+read as "top: orange" (:func:`normalize_words`'s roles)."""
+def _role_sentences(text: str) -> str:
+    """A tower's two ends, or its middle alone, each said as a sentence (:data:`_ROLE_SENTENCE_RE`) -> "top: orange"
+    and "bottom: purple" (or "middle: white"), which the roles of :func:`normalize_words` read; left as written when
+    other cubes are placed too ("the two in between are green", "the second from the bottom"), which other rules read."""
+    said = [(m.group("r1") or m.group("r2")).replace("base", "bottom") for m in _ROLE_SENTENCE_RE.finditer(text)]
+    if sorted(said) == ["bottom", "top"]:
+        others = r"\b(?:between|rest|second|third|middle|others?)\b"
+    elif said == ["middle"]:
+        others = r"\b(?:top|bottom|base|topmost|between|second|third)\b"
+    else:
+        return text
+    out = _ROLE_SENTENCE_RE.sub(lambda m: f"{(m.group('r1') or m.group('r2')).replace('base', 'bottom')}: {m.group('c')}", text)
+    return text if re.search(others, out) else out
 
 
 _CHAIN_REF = rf"(?:the\s+)?(?P<{{g}}>{COLOR_RE})(?:\s+(?:cube|block|one))?"
