@@ -5567,3 +5567,8 @@ def test_a_towers_roles_said_as_sentences_or_with_then_between_its_ends(text, ex
         assert [p.name for p in spec.goal.conjuncts()] == ["unordered_stack", "in_layers"]
     else:
         assert spec.goal.name == "anchored_stack" and spec.goal.bottom and spec.goal.top and len(spec.goal.objects) == 4
+
+
+def test_a_list_of_cubes_said_without_its_commas():
+    assert meaning(parse("ok so line up the blue cube the white cube and the black cube from left to right")) == [
+        "line[left_to_right](blue,white,black)"]

@@ -3309,6 +3309,9 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b((?:2|two)\s+(?:separate\s+|different\s+)?(?:towers|stacks))\s*:?\s*(?:\(?(?:1|a|i)[.)]\s*)?(?P<a>{_CHAINED_PAIR})\s*[,;]?\s*"
                 rf"(?:and\s+)?\(?(?:2|b|ii)[.)]\s*(?P<b>{_CHAINED_PAIR})\s*(?=[.!]?\s*$)"),
      lambda m: f"{m.group(1)}: one is {m.group('a')}, the other is {m.group('b')}"),
+    # "line up the blue cube the white cube and the black cube": a list said without its commas
+    (re.compile(rf"\b((?:the|a|an)\s+(?:{COLOR_RE})\s+(?:cube|block))\s+(?=(?:the|a|an)\s+(?:{COLOR_RE})\s+(?:cube|block)\b"
+                rf"(?:\s+(?:the|a|an)\s+(?:{COLOR_RE})\s+(?:cube|block)\b)*\s*,?\s+and\s+(?:the|a|an)\s+(?:{COLOR_RE})\s+(?:cube|block)\b)"), r"\1, "),
     # "the tower says H, A, T", "so the row shows CAT": what a structure of label cubes says is what it reads
     (re.compile(r"\b((?:tower|stack|column|row|line|word)\s+(?:should\s+|must\s+|will\s+|has\s+to\s+)?)(?:says|say|shows|show)\b"), r"\1reads"),
     # "put digit 7 on top of digit 2": a label cube named without its article
