@@ -3276,6 +3276,15 @@ NOTATION_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 )
 """Counts and goals written as notation ("3x white", "2 rows x 3", "on(red, green)") and articles a terse writer leaves out."""
 
+def _restated_tower(m: re.Match) -> str:
+    """The tower a result clause lists (``list``, read ``way``), when its top is the cube put on top (``c``)."""
+    way = m.group("way")
+    up = "top" not in way or way.index("bottom") < way.index("top") if "bottom" in way else False
+    cubes = re.findall(rf"\b(?:{COLOR_RE})\b", m.group("list"))
+    cubes = cubes if up else cubes[::-1]
+    return f"build a tower from bottom to top: {', '.join(cubes)}" if cubes[-1] == m.group("c") else m.group(0)
+
+
 _CHAINED_PAIR = rf"(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+on(?:\s+top\s+of)?\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?"
 """One cube on another, by colour ("green on red", "the green cube on top of the red one")."""
 
@@ -3312,6 +3321,13 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "line up the blue cube the white cube and the black cube": a list said without its commas
     (re.compile(rf"\b((?:the|a|an)\s+(?:{COLOR_RE})\s+(?:cube|block))\s+(?=(?:the|a|an)\s+(?:{COLOR_RE})\s+(?:cube|block)\b"
                 rf"(?:\s+(?:the|a|an)\s+(?:{COLOR_RE})\s+(?:cube|block)\b)*\s*,?\s+and\s+(?:the|a|an)\s+(?:{COLOR_RE})\s+(?:cube|block)\b)"), r"\1, "),
+    # "put a brown cube on top, so the tower reads white, blue, brown from the bottom": the result restates the whole
+    # tower, its top the cube put there (the cube had been counted twice, a fourth under the tower)
+    (re.compile(rf"\b(?:put|place|set|add|stack)\s+(?:a|an|the|one)\s+(?P<c>{COLOR_RE})\s+(?:cube|block)\s+on\s+top\s*,?\s*so\s+(?:that\s+)?"
+                rf"(?:the\s+)?(?:tower|stack)\s+(?:reads|is|becomes|ends\s+up\s+as|goes)\s*:?\s*(?P<list>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})"
+                rf"|\s+and\s+(?:{COLOR_RE}))+)\s*,?\s+(?P<way>from\s+(?:the\s+)?bottom(?:\s+(?:up|to\s+(?:the\s+)?top))?|bottom\s+to\s+top"
+                r"|from\s+(?:the\s+)?top(?:\s+(?:down|to\s+(?:the\s+)?bottom))?|top\s+to\s+bottom)\b"),
+     lambda m: _restated_tower(m)),
     # "the tower says H, A, T", "so the row shows CAT": what a structure of label cubes says is what it reads
     (re.compile(r"\b((?:tower|stack|column|row|line|word)\s+(?:should\s+|must\s+|will\s+|has\s+to\s+)?)(?:says|say|shows|show)\b"), r"\1reads"),
     # "put digit 7 on top of digit 2": a label cube named without its article

@@ -100,8 +100,9 @@ def meaning(schema: TaskSchema) -> list[str]:
     starts = [list(s) for s in schema.initial_state.structures]
     started_on = {n for s in starts for n in s[1:]}  # cubes rho_0 stacks on another
     conjuncts = _conjuncts(schema.goal_predicate())
+    based = {p.objects[0] for p in conjuncts if isinstance(p, P.Stack)}  # a stack's bottom rests on the table: said by it
     for p in conjuncts:
-        if isinstance(p, P.OnTable) and p.a in started_on:
+        if isinstance(p, P.OnTable) and p.a in started_on and p.a not in based:
             atoms.append(f"on_table({names([p.a])})")
         elif isinstance(p, _SKIP):
             used.update(p.object_names())

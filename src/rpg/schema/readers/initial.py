@@ -542,6 +542,9 @@ def _start_ends_named(sentences: list[str]) -> list[str]:
     def on_top(m: re.Match) -> str:  # "Initially green is on brown. Put gray on top.": the tower with gray on top (once: "...
         # Put white on top." after it is on gray, whose top the start does not say); gray on green alone had let green
         # leave brown, though "on top" is the tower's top
+        onto = m.group("onto") or m.group("onto2") or m.group("onto3")
+        if onto and _canon(onto) != stacks[0][-1]:
+            return m.group(0)  # on another cube than the start's top: as written
         tower = [*stacks[0], _canon(m.group("new"))]
         if not topped or not all(re.fullmatch(COLOR_RE, c) for c in tower) or len(set(tower)) != len(tower):
             return m.group(0)
@@ -554,10 +557,13 @@ def _start_ends_named(sentences: list[str]) -> list[str]:
 
 
 _ON_TOP_RE = re.compile(rf"(?i)(?:^\s*(?:then\s+)?(?:put|place|set|stack|add|lay)\s+(?:the\s+|a\s+|an\s+)?(?P<new>{_NAME})"
-                        r"(?:\s+(?:cube|block|one))?\s+)(?:on\s+(?:the\s+)?top(?:\s+of\s+(?:it|the\s+(?:tower|stack)))?"
-                        r"|onto\s+(?:it|the\s+(?:tower|stack)))(?=\s*(?:[.!;,]|$|\bso\b))")
-"""A goal that adds a cube on top of the start's one stack ("Put gray on top.", "Put the gray block on top of it."): the
-tower, the start's cubes with it on top (:func:`_start_ends_named`)."""
+                        r"(?:\s+(?:cube|block|one))?\s+)(?:on\s+(?:the\s+)?top(?:\s+of\s+(?:it|the\s+(?:tower|stack)"
+                        rf"|the\s+(?P<onto>{_NAME})(?:\s+(?:cube|block|one))?))?"
+                        rf"|onto\s+(?:it|the\s+(?:tower|stack)|the\s+(?P<onto2>{_NAME})(?:\s+(?:cube|block|one))?)"
+                        rf"|on\s+the\s+(?P<onto3>{_NAME})(?:\s+(?:cube|block|one))?)(?=\s*(?:[.!;,]|$|\bso\b))")
+"""A goal that adds a cube on top of the start's one stack ("Put gray on top.", "Put the gray block on top of it.", "Put
+the white block on top of the orange block", orange the stack's top): the tower, the start's cubes with it on top
+(:func:`_start_ends_named`; a cube named that is not the stack's top leaves the words as they are)."""
 
 
 _IT_TAKEN_RE = re.compile(r"(?i)^\s*(?:then\s+)?(?P<verb>take|lift|remove|pick)\s+it\s+off\b")
