@@ -5596,3 +5596,20 @@ def test_what_the_unread_sets_silent_errors_were(text, expected):
 def test_a_cube_put_on_the_start_towers_bottom_cube_is_still_as_said():
     assert sorted(meaning(parse("Initially the orange block is on the brown block. Put the white block on the brown block."))) == [
         "stack(brown,white)", "start:stack(brown,orange)"]
+
+
+@pytest.mark.parametrize("text, expected", [
+    # the ordinary refusal classes a helper described in the unread set (these examples are the helper's own)
+    ("Set the pink cube on the orange cube, and after that set the gray cube on top of that.", ["stack(orange,pink,gray)"]),
+    ("Put the brown block on the table, stack the gray block on it, and finish by placing the orange block on the gray one.",
+     ["stack(brown,gray,orange)"]),
+    ("we want a row running left to right of black, orange, orange", ["line[left_to_right](black,orange,orange)"]),
+    ("Put the two gray cubes in one pile and the two pink cubes in a separate pile.", ["piles(gray,gray,pink,pink;by=color)"]),
+])
+def test_steps_after_that_a_rows_direction_with_a_verb_and_a_separate_pile(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+def test_piles_of_groups_nobody_counted_are_still_refused():
+    with pytest.raises(BadInput):
+        parse("put the red cubes in one pile and the blue cubes in another")

@@ -3285,6 +3285,9 @@ def _restated_tower(m: re.Match) -> str:
     return f"build a tower from bottom to top: {', '.join(cubes)}" if cubes[-1] == m.group("c") else m.group(0)
 
 
+_COUNTED_GROUP = rf"(?:the\s+|all\s+)?(?:\d+|two|three|four|five|six|both)\s+(?:{COLOR_RE})\s+(?:cubes|blocks|ones)"
+"""A counted group of cubes of one colour ("the two gray cubes", "3 red blocks")."""
+
 _CHAINED_PAIR = rf"(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+on(?:\s+top\s+of)?\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?"
 """One cube on another, by colour ("green on red", "the green cube on top of the red one")."""
 
@@ -3328,6 +3331,20 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 rf"|\s+and\s+(?:{COLOR_RE}))+)\s*,?\s+(?P<way>from\s+(?:the\s+)?bottom(?:\s+(?:up|to\s+(?:the\s+)?top))?|bottom\s+to\s+top"
                 r"|from\s+(?:the\s+)?top(?:\s+(?:down|to\s+(?:the\s+)?bottom))?|top\s+to\s+bottom)\b"),
      lambda m: _restated_tower(m)),
+    # "a row running left to right of black, orange, orange", "a row of red, blue, green going left to right": the
+    # row's direction said with a verb of motion, or before its cubes
+    (re.compile(r"\b(?:running|going|reading|heading)\s+(?:from\s+)?(?=(?:the\s+)?(?:left|right)\s+to\s+(?:the\s+)?(?:left|right)\b)"), "from "),
+    (re.compile(rf"\b(row|line)\s+from\s+(?:the\s+)?(left\s+to\s+(?:the\s+)?right|right\s+to\s+(?:the\s+)?left)\s+(?:of|with)\s+"
+                rf"(?P<list>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})|\s+and\s+(?:{COLOR_RE}))+)(?=\s*[.!]?\s*$)"),
+     r"\1 of \g<list> from \2"),
+    # "put the two gray cubes in one pile and the two pink cubes in a separate pile": two piles, each its cubes
+    # (each group counted: "the two gray cubes"; a group of no count would leave how many cubes to a default)
+    (re.compile(rf"^(?:please\s+)?(?:put|place|set|gather|group|move)\s+(?P<a>{_COUNTED_GROUP})\s+in\s+(?:1|one)\s+pile\s+and\s+(?P<b>{_COUNTED_GROUP})\s+in\s+"
+                r"(?:a\s+separate|another|a\s+second|a\s+different|the\s+other)(?:\s+(?:one|pile))?\s*[.!]?\s*$"),
+     r"make 2 piles: \g<a> in one pile and \g<b> in another."),
+    # "..., and finish by placing the orange block on the gray one": the last step
+    (re.compile(r"\b(?:and\s+)?(?:finish|end)\s+(?:off\s+|up\s+)?by\s+(plac|putt|sett|stack|add|lay)ing\b"),
+     lambda m: "then " + {"plac": "place", "putt": "put", "sett": "set"}.get(m.group(1), m.group(1))),
     # "the tower says H, A, T", "so the row shows CAT": what a structure of label cubes says is what it reads
     (re.compile(r"\b((?:tower|stack|column|row|line|word)\s+(?:should\s+|must\s+|will\s+|has\s+to\s+)?)(?:says|say|shows|show)\b"), r"\1reads"),
     # "put digit 7 on top of digit 2": a label cube named without its article

@@ -1614,7 +1614,7 @@ _CHAIN_ROLES = (
 cube said: "it"), on or under a cube named ("directly above the blue one"), anywhere above or below one ("above blue"),
 at an end, or in the middle."""
 _CHAIN_ITEM_RE = re.compile(
-    rf"(?:(?:then|and|also|next|finally|lastly)\s+)*(?:(?:put|place|set|stack|add|leave|lay)\s+)?(?:(?:a|an|the|another|1|(?:the\s+)?(?P<n>\d+|two|three|four|five|six|both))\s+)?"
+    rf"(?:(?:then|and|also|next|finally|lastly|after\s+that,?|afterwards,?)\s+)*(?:(?:put|place|set|stack|add|leave|lay)\s+)?(?:(?:a|an|the|another|1|(?:the\s+)?(?P<n>\d+|two|three|four|five|six|both))\s+)?"
     rf"(?P<c>{COLOR_RE})(?:\s+(?:blocks?|cubes?|bricks?|ones?))?\s+(?:(?:is|goes|sits|should\s+be|must\s+be|comes|stands)\s+)?"
     r"(?P<role>" + "|".join(f"(?P<{k}>{r})" for k, r in _CHAIN_ROLES) + r")")
 _CHAIN_SEP_RE = re.compile(r"\s*(?:,\s*(?:and\s+)?(?:then\s+)?|;\s*|\s+and\s+(?:then\s+)?|\s+then\s+)")
@@ -1673,6 +1673,8 @@ def tower_chain(text: str) -> str:
     else:
         cubes = [(c, role if j == 0 else ("above" if role in ("above", "bottom") else role), j) for c, n, role, _ in items for j in range(n)]
         refs = {k: r for k, (c, n, role, r) in enumerate(x for x in items for _ in range(x[1]))}
+        said = {c for c, _, _ in cubes}
+        cubes += [(r, None, 0) for r in dict.fromkeys(r for r in refs.values() if r and r not in said)]  # "pink on the orange cube"
         previous, first = None, None
     total = len(cubes)
     if (head and head.group("count") and _count(head.group("count")) != total) or total > 6:
