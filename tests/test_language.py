@@ -5613,3 +5613,23 @@ def test_steps_after_that_a_rows_direction_with_a_verb_and_a_separate_pile(text,
 def test_piles_of_groups_nobody_counted_are_still_refused():
     with pytest.raises(BadInput):
         parse("put the red cubes in one pile and the blue cubes in another")
+
+
+@pytest.mark.parametrize("text", [
+    # a hostile helper's silent errors against this session's readings, each now refused
+    "make a tower with 5 cubes, all pink but one",  # "but one" had been dropped: all pink
+    "make a tower with 5 cubes all pink and one red",  # six cubes, red put on top by no word
+    "build a pyramid with a base of a cyan, a brown and a pink block",  # pink had gone to the top
+    "put the green cube down, a white cube on it, and the green cube on top of that",  # one cube in two places
+    "stack the cubes so that orange is on top, blue is under it, and orange is at the very bottom",
+    "stack them from the table up: cyan, white, red, and put the blue cube next to them",  # a red had been added
+    "stack them in this order from the table up: cyan, white, red on the green patch",  # a blue cube had been made up
+])
+def test_the_sessions_readings_attacked_refuse(text):
+    with pytest.raises(BadInput):
+        parse(text)
+
+
+def test_a_tower_says_a_list_of_letters_as_reads_does():
+    # ("says" had been rewritten after the labels were read: H at the bottom, the reading dropped)
+    assert sorted(meaning(parse("the tower says H, A, T"))) == sorted(meaning(parse("the tower reads H, A, T")))

@@ -3288,6 +3288,10 @@ def _restated_tower(m: re.Match) -> str:
 _COUNTED_GROUP = rf"(?:the\s+|all\s+)?(?:\d+|two|three|four|five|six|both)\s+(?:{COLOR_RE})\s+(?:cubes|blocks|ones)"
 """A counted group of cubes of one colour ("the two gray cubes", "3 red blocks")."""
 
+SAYS_RE = re.compile(r"(?i)\b((?:tower|stack|column|row|line|word)\s+(?:should\s+|must\s+|will\s+|has\s+to\s+)?)(?:says|say|shows|show)\b")
+"""What a structure of label cubes says ("the tower says H, A, T", "so the row shows CAT") is what it reads: rewritten
+before the labels are read (:func:`rpg.schema.reading.normalize_words`), so a listed word is spelled as "reads" spells it."""
+
 _CHAINED_PAIR = rf"(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+on(?:\s+top\s+of)?\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?"
 """One cube on another, by colour ("green on red", "the green cube on top of the red one")."""
 
@@ -3306,7 +3310,8 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      lambda m: f"{m.group(1)}: one is {m.group('a')}, the other is {m.group('b')}"),
     # "stack them in this order from the table up: cyan, white, cyan": the pronoun stands for the cubes listed after
     (re.compile(rf"\b(stack|put|place|arrange|set|order|lay\s+out|line\s+up|line)\s+(?:them|these|those)(\s+up)?\b"
-                rf"(?=[^.;:]*:\s*(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:the\s+)?(?:{COLOR_RE})\b)"),
+                rf"(?=[^.;:]*:\s*(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:(?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:the\s+)?(?:{COLOR_RE})"
+                rf"(?:\s+(?:cube|block))?)+\s*[.!]?\s*$)"),  # (the list ends the text: what follows it would be a guess)
      lambda m: f"{m.group(1)}{m.group(2) or ''} the cubes"),
     # "line them up: yellow, blue, red", "row: red, green, blue": a row's cubes listed after its colon are its order
     # (either way along it: no side is said)
@@ -3345,8 +3350,6 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "..., and finish by placing the orange block on the gray one": the last step
     (re.compile(r"\b(?:and\s+)?(?:finish|end)\s+(?:off\s+|up\s+)?by\s+(plac|putt|sett|stack|add|lay)ing\b"),
      lambda m: "then " + {"plac": "place", "putt": "put", "sett": "set"}.get(m.group(1), m.group(1))),
-    # "the tower says H, A, T", "so the row shows CAT": what a structure of label cubes says is what it reads
-    (re.compile(r"\b((?:tower|stack|column|row|line|word)\s+(?:should\s+|must\s+|will\s+|has\s+to\s+)?)(?:says|say|shows|show)\b"), r"\1reads"),
     # "put digit 7 on top of digit 2": a label cube named without its article
     (re.compile(r"(?<![\w'])(?<!the\s)(?<!a\s)(?<!each\s)(?<!every\s)(?<!any\s)\b(digit|number|letter)\s+(?=(?:\d|[A-Z])\b(?!\s*(?:,|to\b|-)))"),
      r"the \1 "),

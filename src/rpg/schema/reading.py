@@ -1038,6 +1038,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     for pattern, written in lexicon.MARKUP_RES:  # "the **blue** patch", "## Goal", "`red`"
         original = pattern.sub(written, original).strip()
     original = lexicon.EMOJI_RE.sub(" ", original).strip()
+    original = lexicon.SAYS_RE.sub(r"\1reads", original)  # "the tower says H, A, T"
     original = lexicon.HYPHENED_DIRECTION_RE.sub(r"\1 to \2", original)
     original = lexicon.hyphened_chains(original)  # "a red-on-yellow tower", "a 1-on-2 tower", "a three-block ..."
     original = lexicon.ARROW_DIRECTION_RE.sub(lexicon.arrow_direction, original)  # "l->r", "bottom -> top"
@@ -1651,6 +1652,12 @@ def tower_chain(text: str) -> str:
             return text
         role = next(k for k, _ in _CHAIN_ROLES if m.group(k))
         ref = next((m.group(g) for g in ("on_ref", "on_ref2", "under_ref", "higher_ref", "lower_ref") if m.group(g)), None)
+        if any(c == m.group("c") for c, _, _, _ in items) and not re.match(r"(?:(?:then|and|also|next|finally|lastly|after\s+that,?"
+                                                                            r"|afterwards,?)\s+)*(?:(?:put|place|set|stack|add|leave|lay)\s+)?"
+                                                                            r"(?:another|an?|1)\s", m.group(0)):
+            return text  # "the green cube" said again: the same cube in two places
+        if role in ("above", "below") and re.search(r"\bit\s*$", m.group(0)) and items and items[-1][3]:
+            return text  # "red on the blue block, then green on it": red or blue? (not said)
         items.append((m.group("c"), _count(m.group("n") or "1"), role, ref))
         pos = m.end()
         sep = _CHAIN_SEP_RE.match(rest, pos)
@@ -1721,8 +1728,10 @@ _LAYER_LIST = rf"(?:{COLOR_RE})(?:(?:\s*,\s*|\s+)(?:{COLOR_RE}))*"
 _THEN_LAYERS_RE = re.compile(rf"\b(?:bottom|base|lowest|first)\s+(?P<noun>layer|row|level|tier|course)\s*:?\s*(?:of\s+)?(?P<l0>{_LAYER_LIST})"
                              + "".join(rf"(?:\s*,?\s*(?:and\s+)?then\s+(?P<l{i}>{_LAYER_LIST}))" + ("" if i == 1 else "?") for i in (1, 2, 3))
                              + r"(?=\s*(?:[,.;!]|$))")
-_BASE_OF_ONES_RE = re.compile(rf"\bbase\s+of\s+(?P<list>(?:(?:a|an)\s+(?:{COLOR_RE})(?:\s+(?:block|cube))?(?:\s*,\s*|\s*,?\s+and\s+))+)"
-                              rf"(?:a|an)\s+(?P<last>{COLOR_RE})\s+(?:block|cube)\b")
+_BASE_OF_ONES_RE = re.compile(rf"\bbase\s+of\s+(?P<list>(?:a|an)\s+(?:{COLOR_RE})\s+and\s+)(?:a|an)\s+(?P<last>{COLOR_RE})\s+(?:block|cube)\b"
+                              rf"(?!\s*,?\s*(?:and\s+)?(?:a|an|the)\s+(?:{COLOR_RE})\s+(?:block|cube|one)\b)")
+"""A base of two single cubes with one noun ("a base of a cyan and a brown block"); three or more are left to the
+layer readers (a third cube said after them had been moved to the top)."""
 _LAYER_NAMES = {2: ("bottom", "top"), 3: ("bottom", "middle", "top"), 4: ("bottom", "second", "third", "top")}
 
 
@@ -2043,7 +2052,7 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
                 r"\s+(\d+)\s+(blocks|cubes|bricks)\b"), r"\1 of \2 \3"),
     # "a tower, 3 blocks high, all green", "..., every cube red", "a tower 3 high, green": every cube of it
     (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s*,?\s+(?:all|each|every)(?:\s+(?:one|1|block|cube))?(?:\s+of\s+them)?\s+"
-                rf"(?:(?:are|is|being|in)\s+)?({COLOR_RE})\b(?!\s+(?:blocks?|cubes?|patch))"),
+                rf"(?:(?:are|is|being|in)\s+)?({COLOR_RE})\b(?!\s+(?:blocks?|cubes?|patch))(?!\s*,?\s*(?:but|except|save|apart|other|and|plus)\b)"),
      r"\1 of \2 \3 blocks"),
     (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s*,\s*({COLOR_RE})(?=\s*[.!]?\s*$)"), r"\1 of \2 \3 blocks"),
     # "stack the red, green and blue blocks, green in the middle": a role said after a comma (the
