@@ -71,7 +71,7 @@ STRANGER_SETS = {
     "stranger34": ("stranger34.yaml", "STRANGER set 34 (stranger34.yaml, development material, read from the twenty-fourth session's start)"),
     "stranger35": ("stranger35.yaml", "STRANGER set 35 (stranger35.yaml, transfer measure of the twenty-fourth session; development material, read from the twenty-fifth session's start)"),
     "stranger36": ("stranger36.yaml", "STRANGER set 36 (stranger36.yaml, transfer measure of the twenty-fifth session; development material, read from the twenty-sixth session's start)"),
-    "stranger37": ("stranger37.yaml", "STRANGER set 37 (stranger37.yaml, transfer measure of the twenty-sixth session: aggregates only)"),
+    "stranger37": ("stranger37.yaml", "STRANGER set 37 (stranger37.yaml, transfer measure of the twenty-sixth session: aggregates only, and a helper's abstract failure classes mid-session)"),
 }
 SPLITS = HERE / "splits.yaml"
 
