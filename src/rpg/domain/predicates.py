@@ -55,6 +55,8 @@ def _clean(value: Any) -> Any:
 
 _FIELD_NAMES: dict[type, tuple[str, ...]] = {}
 """Field names of each predicate class (``dataclasses.fields`` is slow for a per-step call)."""
+_QUIET_DEFAULTS: dict[type, dict[str, object]] = {}
+"""Default of each ``quiet_defaults`` field of each predicate class (:meth:`Predicate._quiet`)."""
 
 
 @dataclass
@@ -196,7 +198,12 @@ class Predicate:
     def _quiet(self, name: str) -> bool:
         """Whether field ``name`` is left out of :meth:`args` and :meth:`to_dict`: one of ``quiet_defaults`` at its
         default (a field added later, so the files and hashes of tasks written before it stay as they were)."""
-        return name in self.quiet_defaults and getattr(self, name) == next(f.default for f in fields(self) if f.name == name)
+        if name not in self.quiet_defaults:
+            return False
+        defaults = _QUIET_DEFAULTS.get(type(self))
+        if defaults is None:  # args() runs per step: fields() once per class
+            defaults = _QUIET_DEFAULTS.setdefault(type(self), {f.name: f.default for f in fields(self) if f.name in self.quiet_defaults})
+        return getattr(self, name) == defaults[name]
 
     def object_names(self) -> list[str]:
         """Every object the predicate mentions, in order of appearance."""

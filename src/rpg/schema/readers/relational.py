@@ -496,12 +496,21 @@ def _diagonal(rels: list) -> list:
     diagonally), where one alone keeps the cubes level.  Two along one axis are left for
     :func:`_refuse_crossed_relations`."""
     ways: dict[frozenset, set] = {}
-    for q in rels:
-        if hasattr(type(q), "axis") and hasattr(type(q), "sign") and q.a != q.b:
-            lo, hi = (q.b, q.a) if q.sign > 0 else (q.a, q.b)  # along the axis, lo comes before hi
-            ways.setdefault(frozenset((q.a, q.b)), set()).add((type(q).axis, lo, hi))
+    for q in filter(_directional, rels):
+        ways.setdefault(frozenset((q.a, q.b)), set()).add(_way(q))
     slanted = {pair for pair, w in ways.items() if len(w) == 2 and len({axis for axis, _, _ in w}) == 2}
-    return [replace(q, diagonal=True) if hasattr(type(q), "sign") and frozenset((q.a, q.b)) in slanted else q for q in rels]
+    return [replace(q, diagonal=True) if _directional(q) and frozenset((q.a, q.b)) in slanted else q for q in rels]
+
+
+def _directional(q) -> bool:
+    """Whether ``q`` is a relation along one axis of the table between two cubes (left of, behind ...)."""
+    return hasattr(type(q), "axis") and hasattr(type(q), "sign") and q.a != q.b
+
+
+def _way(q) -> tuple:
+    """(axis, the cube before, the cube after) along ``q``'s axis."""
+    lo, hi = (q.b, q.a) if q.sign > 0 else (q.a, q.b)
+    return type(q).axis, lo, hi
 
 
 def _refuse_crossed_relations(f: Features, rels: list, touching: list[tuple[str, str]] = ()) -> None:
@@ -519,13 +528,13 @@ def _refuse_crossed_relations(f: Features, rels: list, touching: list[tuple[str,
     """
     import networkx as nx
 
-    directional = [q for q in rels if hasattr(type(q), "axis") and hasattr(type(q), "sign") and q.a != q.b]
+    directional = list(filter(_directional, rels))
     by_pair: dict[frozenset, set] = {}
     graphs: dict[int, nx.DiGraph] = {}
     for q in directional:
-        lo, hi = (q.b, q.a) if q.sign > 0 else (q.a, q.b)  # along the axis, lo comes before hi
-        by_pair.setdefault(frozenset((q.a, q.b)), set()).add((type(q).axis, lo, hi))
-        graphs.setdefault(type(q).axis, nx.DiGraph()).add_edge(lo, hi, rel=q.describe())
+        axis, lo, hi = _way(q)  # along the axis, lo comes before hi
+        by_pair.setdefault(frozenset((q.a, q.b)), set()).add((axis, lo, hi))
+        graphs.setdefault(axis, nx.DiGraph()).add_edge(lo, hi, rel=q.describe())
     near = {frozenset((q.a, q.b)) for q in rels if isinstance(q, NextTo)}
     on = {frozenset(pair) for pair in touching if "*" not in pair}  # a cube on a patch or on another cube
     far = [q for q in rels if isinstance(q, FarFrom) and frozenset((q.a, q.b)) in near | on]
