@@ -46,7 +46,7 @@ help wood wooden plastic properly securely stably steadily safely accurately com
 basically essentially literally honestly yo hello ty thx hiya howdy asap today tonight morning afternoon evening fine
 quick quickly haha lol good love exercise cheers tbh imo itself kindly tomorrow tmrw tmr
 someone somebody anyone anybody everyone everybody friends guys folks buddy boys girls kids children
-task episode eval evaluation benchmark dataset proposal experiment
+task episode eval evaluation benchmark dataset proposal experiment policy policies week weekend
 fwiw lowkey ngl btw sim simulator simulation
 honey sweetie sweetheart darling dear abeg
 """.split())
@@ -74,6 +74,7 @@ TYPOS: dict[str, str] = {
     "insted": "instead", "instaed": "instead", "isntead": "instead", "mak": "make", "midle": "middle", "middel": "middle",
     "nxt": "next", "mor": "more", "swtich": "switch", "swich": "switch", "swithc": "switch", "revese": "reverse", "reverce": "reverse",
     "blok": "block", "bloks": "blocks", "rigth": "right", "rihgt": "right", "lefft": "left", "cubs": "cubes",
+    "seprate": "separate", "seperate": "separate", "seperately": "separately", "seprately": "separately",
 }
 """Misspellings of a word of the vocabulary, each read as that word (curated, never a guess; the
 steering corrects an edit's words with this table before reading it)."""
@@ -385,6 +386,7 @@ is are was were be been being am has have had do does did will would can could m
 INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("question", r"(?:^|[.!;]\s+)(?:which|what|where|who|whose|why|how\s+many|how\s+much|when)\b[^.!;]*\?"
                  r"|^\s*(?:which|what)\s+(?:of\s+the\s+|one\s+of\s+the\s+)?(?:[a-z]+\s+)?(?:blocks?|cubes?|ones?)\s+(?:is|are|was|were|has|have)\b"
+                 r"|^\s*(?:which|what)\s+(?:colou?rs?|labels?|letters?|digits?|numbers?)\s+(?:is|are|was|were|does|do|did)\s+(?:the|a|an|it|this|that)\b"
                  r"|^\s*(?:where|why|how)\s+(?:is|are|was|were|does|do|did)\s+(?:the|a|an)\b"
                  r"|(?:^|[.!;?]\s+)(?:is|are|was|were|does|do|did|has|have|had)\s+(?:the|a|an|there|it|this|that|any|all"
                  r"|every|some|each|these|those)\b[^.!;]*\?"
@@ -767,7 +769,8 @@ DEFINITE_STRUCTURE_RE = re.compile(
     r"\b(?:on|onto|upon|to|into|next\s+to|beside|behind|in\s+front\s+of|near|left\s+of|right\s+of|top\s+of|from|off|of"
     r"|put|place|move|set|slide|push|shift|bring|carry|relocate|transfer|position)"
     r"\s+the\s+(?:existing\s+|current\s+|whole\s+|entire\s+)?"
-    r"(?P<noun>tower|stack|pile|structure|pyramid|wall|row|line|column|circle|ring|grid)\b(?!\s+of\b)")
+    r"(?P<noun>tower|stack|pile|structure|pyramid|wall|row|line|column|circle|ring|grid)\b"
+    r"(?!\s+(?:of|(?:made|built|composed|formed)\s+(?:up\s+)?(?:out\s+)?(?:of|from)|consisting\s+of)\b)")
 """A structure an instruction places something in relation to ("put the blue block on top of
 the stack") or moves ("put the tower centrally"): it must have been described before it
 (:data:`STRUCTURE_INTRO_RE`); otherwise it is one the speaker sees, which a task cannot know."""
@@ -1232,6 +1235,9 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\bin\s+back\b(?!\s+of\b)"), "at the back"),  # "a tower of 2 red blocks in back"
     # "at the back of the green cube": behind it (a cube's back, not the table's)
     (re.compile(rf"\b(?:at|to)\s+the\s+back\s+of\s+(?=(?:the\s+)?(?:(?:{COLOR_RE})\s+(?:block|cube|one|patch)|it\b|them\b))"), "behind "),
+    # "a pyramid whose base is red": the whole bottom layer of a layered structure (a tower's base is its one bottom cube)
+    (re.compile(rf"\b(pyramids?|walls?)\s+whose\s+(?:base|bottom)\s+(?:layer\s+|row\s+)?is\s+({COLOR_RE})\b(?!\s*(?:,|and)\s*(?:{COLOR_RE})\b)"),
+     r"\1 with a \2 base"),
     # "a tower whose base is blue and whose top is yellow": the ends said as the tower's own
     (re.compile(rf"\bwhose\s+(?:base|bottom)\s+(?:block\s+|cube\s+)?is\s+({COLOR_RE})\b"), r"with \1 at the bottom"),
     (re.compile(rf"\b(?:and\s+)?whose\s+top\s+(?:block\s+|cube\s+)?is\s+({COLOR_RE})\b"), r"and \1 on top"),
@@ -1393,7 +1399,9 @@ ANY_ORDER_RE = re.compile(
     r"|(?:(?:it\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter|(?:i\s+|we\s+)?(?:do\s*n[o']?t|don't|do\s+not)\s+(?:care|mind))"
     r"\s+which(?:\s+(?:one|cube|block|colou?r))?(?:'s|\s+is|\s+goes|\s+ends\s+up|\s+sits)"
     r"\s+(?:at\s+the\s+(?:bottom|top|base)|on\s+(?:the\s+)?(?:top|bottom)|first|last)"
-    r"|(?:in\s+)?(?:which|what)\s+order\s+(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter)\b\)?")
+    r"|(?:in\s+)?(?:which|what)\s+order\s+(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter"
+    r"|(?:i\s+|we\s+)?(?:do\s*n[o']?t|don't|do\s+not)\s+(?:really\s+)?(?:care|mind)\s+(?:about\s+the\s+order|(?:in\s+)?what\s+order"
+    r"|which(?:\s+(?:one|cube|block))?\s+goes\s+where))\b\)?")
 """Words that leave the cubes' order free ("stack them in any order", ", any order is fine",
 "the order doesn't matter", "in no particular order"): read as the one phrase " in any order"
 before negations are refused (:func:`rpg.schema.reading.normalize`), which no order word
@@ -1852,10 +1860,15 @@ FILLER_RE = re.compile(r"(?i)(?:^|(?<=[.!?]\s))(?:prego|allora|ecco|dai|senti|go
                        r"|on\s+top\s+of\s+that|apart\s+from\s+that|as\s+a\s+second\s+(?:part|step))\s*,\s*"
                        r"|\b(?:(?:in\s+the\s+)?same\s+way)\s+(?=(?:put|place|keep|move|set)\b)"
                        r"|,?\s*\b(?:va\s+bene|capisci|ok\?|okay\?|right\?|yeah\?)\s*(?=[.!?]*\s*$)"
-                       r"|,?\s*\bof\s+course\b\s*,?")
+                       r"|,?\s*\bof\s+course\b\s*,?"
+                       r"|(?:^|(?<=[.!?]\s))(?:take\s+your\s+time|no\s+rush|no\s+hurry|there'?s\s+no\s+rush)\s*[.!]*\s*"
+                       r"|\s+for\s+(?:the|our|my|this|a)\s+(?:new\s+|latest\s+|current\s+|next\s+)?(?:policy|policies|model|agent|baseline)"
+                       r"(?=\s*[.!:])")
 """Interjections said around a task in several languages' habits ("Prego, ...", "Allora, ...",
-"..., va bene?", "God willing, ...", "omg"), and a sentence's opening that only joins it to the
-one before ("Separately, put ...", "In addition, ..."; every sentence of a goal holds together): dropped."""
+"..., va bene?", "God willing, ...", "omg"), a sentence's opening that only joins it to the
+one before ("Separately, put ...", "In addition, ..."; every sentence of a goal holds together), a pace nobody checks
+("Take your time.": a task's goal is judged at the episode's end) and who the task is for ("Corner task for the new
+policy."): dropped."""
 
 DISFLUENCY_RE = re.compile(r"(?i)(?P<lead>\s*,)?\s*\b(?:uh+m?|um+|erm*|uhm+)\b(?!\s*,?\s*no\b)\s*(?P<trail>,)?(?=\s|$)")
 """A speaker's hesitation in a transcript ("put the uh orange cube"): dropped.  A hesitation between
@@ -2455,7 +2468,8 @@ LAYER_ROLE_RE = re.compile(
     r"(?:(?:is|are|goes|go|sits?|stands?)\s+)?(?:on|at|as|in|for|forms?|making|makes)\s+(?:the\s+)?"
     + _LAYER_ROLE.format(i=0) + r"\b(?!\s+of\b)"
     r"|\b" + _LAYER_ROLE.format(i=1) + r"(?:\s+(?:layer|level|row|tier|block|cube|one))?\s+"
-    r"(?:is|are|of|made\s+of|with|in)\s+(?:the\s+|a\s+|an\s+)?(?:\d+\s+)?(?P<c1>" + "|".join(COLORS) + r")\b"
+    r"(?:is|are|of|made\s+of|with|in)\s+(?:the\s+|a\s+|an\s+)?(?:\d+\s+)?(?P<c1>(?:" + "|".join(COLORS) + r")(?:(?:\s*,\s*|,?\s+and\s+)"
+    r"(?:" + "|".join(COLORS) + r")\b(?!\s+(?:(?:blocks?|cubes?|ones?)\s+)?(?:on|onto|at|in|to|of|is|are)\b))*)\b"
     r"(?:\s+(?P<noun1>blocks?|cubes?|ones?))?"
     r"|(?:\b(?:a|an|the)\s+|(?<=,\s)|(?<=:\s)|(?<=;\s))(?P<c2>" + "|".join(COLORS) + r")\s+" + _LAYER_ROLE.format(i=2)
     + r"\b(?!\s+of\b)"
@@ -3264,6 +3278,9 @@ NOTATION_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      r"\1 \2 cubes"),
     (re.compile(r"\b(\d+)(?:\s+|\s*-\s*)by(?:\s+|\s*-\s*)(?=\d)"),
      r"\1x"),
+    # "a two by two grid": the size in words (number words become digits later, after these rewrites)
+    (re.compile(r"\b(two|three|four|five)(?:\s+|\s*-\s*)by(?:\s+|\s*-\s*)(two|three|four|five)(?=\s+(?:grid|square|array|block|arrangement)s?\b)"),
+     lambda m: f"{NUMBER_WORDS[m.group(1)]}x{NUMBER_WORDS[m.group(2)]}"),
     # "on(red, green)", "(on red green)": a goal written as a planning predicate
     (re.compile(rf"\(?\bon\s*(?:\(\s*|\s+)({COLOR_RE})\s*,?\s+({COLOR_RE})\s*\)"),
      r"the \1 block on the \2 block"),
@@ -3295,7 +3312,41 @@ before the labels are read (:func:`rpg.schema.reading.normalize_words`), so a li
 _CHAINED_PAIR = rf"(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+on(?:\s+top\s+of)?\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?"
 """One cube on another, by colour ("green on red", "the green cube on top of the red one")."""
 
+_CUBES_NP = (r"(?:(?:a|an|the|one|two|three|four|five|six|both|\d+)\s+)?(?:(?:" + COLOR_RE + r")\s+)?(?:cubes?|blocks?)"
+             r"(?:(?:\s*,\s*|\s*,?\s+and\s+)(?:(?:a|an|the|one|two|three|four|five|six|\d+)\s+)?(?:(?:" + COLOR_RE
+             + r")\s+)?(?:cubes?|blocks?))*")
+"""Cubes said by count and colour ("two blue cubes", "a red cube and a blue cube"), for :data:`INTRODUCED_CUBES_RE`."""
+
+INTRODUCED_CUBES_RE = re.compile(
+    r"(?:^|(?<=[.!?;]\s))(?:there\s+(?:is|are)|you\s+have|we\s+have|you(?:'ve|\s+have)\s+got|here\s+(?:is|are)"
+    r"|(?:take|grab|pick\s+up|get))\s+(?P<np>" + _CUBES_NP + r")(?:\s+(?:on|from)\s+the\s+table)?\s*[.;:]\s+(?:then\s+)?"
+    r"(?P<verb>put|place|set|move|stack|arrange|bring|slide|push|lay)\s+"
+    r"(?:them\s+(?:both|all)|both\s+of\s+them|all\s+of\s+them|them|it|both)\b")
+"""Cubes introduced in a sentence of their own and placed in the next by a pronoun ("There are two blue cubes on the
+table. Place both of them on the blue patch."; "Pick up the red cube. Put it on the green patch."): read as one
+command naming them ("place two blue cubes on the blue patch"); each sentence had been read alone (no task in the
+first, nothing named in the second)."""
+
+BARE_PLACED_THEN_RE = re.compile(
+    rf"(?:^|(?<=[.!?;:]\s))(?:first\s*,?\s*)?(?:place|put|set)\s+(?:down\s+)?the\s+(?P<a>{COLOR_RE})\s+(?:block|cube)(?:\s+down)?(?:\s+first)?"
+    r"\s*(?:,\s*|\s+and\s+|[.;]\s+)(?:and\s+)?then\s*,?\s+(?:(?:place|put|set|add)\s+)?(?P<b>the\s+(?:" + COLOR_RE + r")\s+(?:block|cube))\s+"
+    r"(?P<rel>to\s+its\s+(?:left|right)(?:\s+side)?|in\s+front\s+of\s+it|behind\s+it|next\s+to\s+it|beside\s+it|on\s+(?:top\s+of\s+)?it)\b")
+"""A cube put down with no place ("Place the blue block, then the yellow block to its right"), then another related to
+"it": the first is the referent, read as "place the yellow block to the right of the blue block" (the first clause had
+no relation, so "its" had nothing to refer to and the first cube no place)."""
+
+
+def _bare_placed_then(m: re.Match) -> str:
+    """:data:`BARE_PLACED_THEN_RE` -> one relation, the pronoun written as the cube put down first."""
+    cube = f"the {m.group('a')} block"
+    rel = re.sub(r"\bits\s+(left|right)(?:\s+side)?", rf"the \1 of {cube}", m.group("rel"))
+    rel = re.sub(r"\bit$", cube, rel)
+    return f"place {m.group('b')} {rel}"
+
+
 WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    (INTRODUCED_CUBES_RE, lambda m: f"{m.group('verb')} {m.group('np')}"),
+    (BARE_PLACED_THEN_RE, _bare_placed_then),
     # "a wall whose bottom row is orange, purple, orange and whose top row is ...": its rows, as "where the" says them
     (re.compile(r"\b((?:wall|pyramid|tower|stack|row|line|grid)s?\s+)whose\b(?P<rest>[^.;]*)"),
      lambda m: m.group(1) + "where the" + re.sub(r"\b(and|,)\s+whose\b", r"\1 the", m.group("rest"))),

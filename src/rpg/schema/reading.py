@@ -2097,11 +2097,11 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
      else f" with a {m.group(1)} block {'on top' if m.group(2) else 'at the bottom'}"),  # (a colour listed too: left as said)
     # roles: "the top one is white", "the bottom block black", ". The top one is red", "and make the top block red"
     (re.compile(rf"(?:\s*[,.;]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)(?:make\s+(?:sure\s+)?(?:that\s+)?)?the\s+(?:top|topmost|uppermost|highest)"
-                rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?({COLOR_RE})"
-                rf"(?:\s+(?:block|cube|one|1))?\b"), r" with a \1 block on top"),
+                rf"(?P<noun>\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?({COLOR_RE})"
+                rf"(?P<noun2>\s+(?:block|cube|one|1))?\b"), lambda m: _layer_or_end_cube(m, "on top")),
     (re.compile(rf"(?:\s*[,.;]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)(?:make\s+(?:sure\s+)?(?:that\s+)?)?the\s+(?:bottom|lowest|base|bottommost)"
-                rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?({COLOR_RE})"
-                rf"(?:\s+(?:block|cube|one|1))?\b"), r" with a \1 block at the bottom"),
+                rf"(?P<noun>\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?({COLOR_RE})"
+                rf"(?P<noun2>\s+(?:block|cube|one|1))?\b"), lambda m: _layer_or_end_cube(m, "at the bottom")),
     # "..., with one cube in between": a middle cube of a colour no word names (it had been dropped: a tower of two)
     (re.compile(r"\b(?:with\s+)?(?:1|a|an)\s+(?:other\s+|more\s+)?(?:cube|block)\s+in\s+the\s+middle\b"),
      lambda m: "with a " + next(c for c in DEFAULT_COLORS if not re.search(rf"\b{c}\b", m.string)) + " block in the middle", True),
@@ -2113,6 +2113,14 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
 """Ways of describing a tower, rewritten to the form the readers take ("a tower of N <colour>
 blocks"): a count or colour before the structure noun is the whole structure's, a group
 after "one of" is one tower's, "the top one is white" is the top cube's colour."""
+
+
+def _layer_or_end_cube(m: re.Match, where: str) -> str:
+    """"the top one is white" -> " with a white block on top" (``where``); in a pyramid or wall "the base is red" names
+    no cube, so it is the whole layer's colour (left as said, which the layer roles read: one red cube had been made)."""
+    if not m.group("noun") and not m.group("noun2") and re.search(r"\b(?:pyramid|wall)s?\b", m.string):
+        return m.group(0)
+    return f" with a {m.group(m.re.groups - 1)} block {where}"
 
 
 def _structure_phrases(text: str) -> str:

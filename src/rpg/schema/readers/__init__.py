@@ -25,8 +25,13 @@ from rpg.domain.predicates import (
     MAX_ASSIGNMENTS,
     AnchoredStack,
     And,
+    Behind,
+    FarFrom,
+    InFrontOf,
     InRegion,
+    LeftOf,
     OnPatch,
+    RightOf,
     Stack,
     StackOnPatch,
     UnorderedStack,
@@ -212,6 +217,11 @@ def _listed_roles(text: str) -> dict[str, str] | None:
     return roles
 
 
+_PLANAR_RELATIONS = (LeftOf, RightOf, InFrontOf, Behind, FarFrom)
+"""Relations judged in the table's plane alone (:class:`~rpg.domain.predicates.NextTo` also needs the cubes level): one to
+a cube of a stack holds of every cube of it."""
+
+
 def free_listed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
     """A stack of named cubes that the instruction only lists gets no order from the list:
     "stack the red and blue blocks" or "put the red, blue and green blocks on top of each
@@ -239,8 +249,10 @@ def free_listed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
             # interchangeable cubes (one colour) has no order to drop
         objs = list(p.objects)
         others = [q for q in parts if q is not p and set(q.object_names()) & set(objs)]
-        if not all(isinstance(q, InRegion) or (type(q) is OnPatch and q.a == objs[0]) for q in others):
-            continue  # a cube of the stack related to something else by itself: its place is said
+        if not all(isinstance(q, InRegion) or (type(q) is OnPatch and q.a == objs[0])
+                   or (isinstance(q, _PLANAR_RELATIONS) and len(set(q.object_names()) & set(objs)) == 1) for q in others):
+            continue  # a cube of the stack related to something else by itself: its place is said (a relation in the
+            # plane to one cube of it holds of the whole tower, its cubes standing one above another: "put green behind it")
         ends = {end: [n for n in objs if colors[n] == c] for end, c in roles.items()}
         if any(len(v) != 1 for v in ends.values()):
             continue  # a role colour missing from this stack, or shared by two of its cubes

@@ -105,17 +105,24 @@ no goal follows (the start's tower had been read as the goal: silently wrong); a
 
 
 TAKE_FROM_LISTED_RE = re.compile(
-    rf"(?i)^\s*(?P<verb>take|remove|lift)\s+the\s+top\s+(?:cube|block|one)\s+off\s+(?:of\s+)?the\s+(?P<s>stack|tower)\s+of\s+(?P<list>{_LIST_SAID})"
+    rf"(?i)^\s*(?P<verb>take|remove|lift)\s+the\s+top\s+(?:cube|block|one)\s+(?:off|from)\s+(?:of\s+)?the\s+"
+    rf"(?:(?P<s>stack|tower)\s+of\s+(?P<list>{_LIST_SAID})|(?P<hy>(?:{COLOR_RE})(?:-(?:{COLOR_RE}))+)\s+(?P<s2>stack|tower))"
     rf"\s*(?:\(\s*(?:(?P<end_c>{COLOR_RE})\s+(?:is\s+)?(?:at|on)\s+the\s+(?P<end>bottom|top)|(?P<dir>(?:from\s+)?(?:the\s+)?(?:bottom|top)\s+"
-    rf"(?:up|down|to\s+(?:the\s+)?(?:top|bottom))))\s*\))(?P<rest>\s*,?\s*(?:and\s+)?(?:then\s+)?(?:put|set|place|lay|leave)\s+it\b.*)$")
+    rf"(?:up|down|to\s+(?:the\s+)?(?:top|bottom))))\s*\))(?P<rest>\s*,?\s*(?:and\s+)?(?:then\s+)?(?:put|set|place|lay|leave)\s+it\b.*)$"
+    rf"|^\s*(?P<verb2>take|remove|lift)\s+the\s+top\s+(?:cube|block|one)\s+(?:off|from)\s+(?:of\s+)?the\s+"
+    rf"(?:(?:stack|tower)\s+of\s+(?P<chain>{_CHAIN_SAID})|(?P<chain2>{_CHAIN_SAID})\s+(?:stack|tower))"
+    rf"(?P<rest2>\s*,?\s*(?:and\s+)?(?:then\s+)?(?:put|set|place|lay|leave)\s+it\b.*)$")
 """A cube taken off a stack that the same sentence lists with its order ("take the top cube off the stack of white, gray,
 brown (white at the bottom) and put it on the table"): read as "Initially a stack of ... . Take the top cube off and put
 it ..." (a list without its order leaves the top cube unsaid: not read here)."""
 
 
 def _take_from_listed(m: re.Match) -> str:
+    if m.group("verb2"):  # "the tower of purple on orange", "the purple on orange tower": the chain says the order
+        return f"Initially {m.group('chain') or m.group('chain2')}. {m.group('verb2')} the top cube off{m.group('rest2')}"
     order = f" {m.group('dir')}" if m.group("dir") else f", with {m.group('end_c')} at the {m.group('end')}" if m.group("end") else ""
-    return f"Initially a {m.group('s')} of {m.group('list')}{order}. {m.group('verb')} the top cube off{m.group('rest')}"
+    listed = m.group("list") or ", ".join(m.group("hy").split("-"))  # "the orange-purple tower (orange at the bottom)"
+    return f"Initially a {m.group('s') or m.group('s2')} of {listed}{order}. {m.group('verb')} the top cube off{m.group('rest')}"
 
 
 def _unstack_said(m: re.Match) -> str:
@@ -550,10 +557,24 @@ def _start_ends_named(sentences: list[str]) -> list[str]:
             return m.group(0)
         return "build a tower from bottom to top: " + ", ".join(tower)
 
+    def taken_then_put(m: re.Match) -> str:  # "take the purple cube off and put it on the red patch": put it there
+        if _canon(m.group("c")) != stacks[0][-1] or re.search(r"(?i)\bits?\b", m.string[m.end():]):
+            return m.group(0)  # (another "it" after: "... off the brown block and set it down next to it", the brown one)
+        return f"{m.group('verb')} the {stacks[0][-1]} cube"
+
     return [s if START_SENTENCE_RE.match(s) or STARTS_FACT_RE.match(s) else
-            _ON_TOP_RE.sub(on_top, _START_END_RE.sub(named, _SWAP_START_RE.sub(swapped, _TOP_ONES_OFF_RE.sub(
-                top_ones, _IT_TAKEN_RE.sub(it_taken, s)))))
+            _TAKEN_THEN_PUT_RE.sub(taken_then_put, _ON_TOP_RE.sub(on_top, _START_END_RE.sub(named, _SWAP_START_RE.sub(
+                swapped, _TOP_ONES_OFF_RE.sub(top_ones, _IT_TAKEN_RE.sub(it_taken, s))))))
             for s in sentences]
+
+
+_TAKEN_THEN_PUT_RE = re.compile(
+    rf"(?i)^\s*(?:then\s+)?(?:take|lift|remove|pick)\s+(?:up\s+)?the\s+(?P<c>{_NAME})(?:\s+(?:cube|block|one))?\s+off"
+    rf"(?:\s+(?:of\s+)?(?:it|the\s+(?:tower|stack)|the\s+{_NAME}(?:\s+(?:cube|block|one))?))?\s*,?\s*(?:and\s+)?(?:then\s+)?"
+    r"(?P<verb>put|place|set|move|lay)\s+it\b")
+"""A goal that takes the start's top cube off and puts it somewhere ("take the purple cube off and put it on the red
+patch"): the placing alone ("put the purple cube on the red patch"; taking it off is how it gets there), read when the
+cube is the start's one stack's top (:func:`_start_ends_named`; "off" had been refused as taking a cube off no stack)."""
 
 
 _ON_TOP_RE = re.compile(rf"(?i)(?:^\s*(?:then\s+)?(?:put|place|set|stack|add|lay)\s+(?:the\s+|a\s+|an\s+)?(?P<new>{_NAME})"
