@@ -5686,3 +5686,25 @@ def test_a_tower_listed_without_order_and_related_in_the_plane_stays_unordered()
     # (this one had been refused: the order said free and the tower read in order)
     s = parse("make a tower of red, green and blue, doesn't matter which order, and put yellow to the left of it")
     assert type(s.goal.children()[0]).__name__ == "UnorderedStack" and s.goal.children()[1].name == "left_of"
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a voice's commentary around a task said in sentences of its own: dropped (each had been refused for its words)
+    ("Stack the red cube on the blue cube. Wave goodbye to the audience.", ["stack(blue,red)"]),
+    ("Put the red cube on the blue cube. What do you do?", ["stack(blue,red)"]),
+    ("Ship's log. Put the gray cube in the front right corner of the table. Calm seas.", ["in_region(gray,front_right)"]),
+])
+def test_a_voices_commentary_sentences_are_dropped(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "Stack the red cube on the blue cube. Mix well.",  # a verb that may change the scene
+    "Stack the red cube on the blue cube. Under a maroon sky.",  # a colour the palette lacks
+    "Stack the red cube on the blue cube. Never twice.",
+    "Stack the red cube on the blue cube. Then celebrate.",  # a step after the task
+    "Stack the red cube on the blue cube. Then scramble everything.",
+])
+def test_sentences_that_may_bear_on_the_goal_are_not_commentary(text):
+    with pytest.raises(BadInput):
+        parse(text)

@@ -266,6 +266,24 @@ sequence, a repetition or quantity, a reversal or another change of the scene, a
 quantifier that may stand for cubes, an order, a colour, a size or a number.  Such a sentence may change what the task
 asks ("Then reset.", "Nothing else may move.", "Twice.", "Quickly."), so it stays, to be read or refused."""
 
+SCENE_CHANGING_VERBS: frozenset[str] = frozenset("""
+mix stir scramble jumble shuffle scatter spread demolish destroy wreck break smash crush dismantle disassemble unstack
+topple knock tip tilt hide cover uncover remove throw toss drop spill pour spin rotate turn flip roll return restore
+reset undo sweep collect gather separate split divide group combine merge join attach connect insert fill empty lift
+raise lower push pull slide shift carry bring take grab hold pick stack pile place put move set arrange build make line
+assemble construct form create stand lay rest balance swap switch exchange reverse invert mirror sort order clear clean
+tidy keep leave stay remain repeat continue finish start begin complete align centre center space close open shake
+""".split())
+"""Verbs that, said in a sentence naming no cube, may still change what the scene must become ("Mix well.", "Then
+scramble.", "Hide the evidence."): such a sentence is never dropped as commentary
+(:func:`rpg.schema.reading.drop_asides`), matched by lemma."""
+
+COMMENTARY_BLOCKING_KINDS: frozenset[str] = frozenset({"negation", "time", "quantity", "size", "shape", "reference",
+                                                       "contradiction", "same_colour", "alternative", "no_goal", "colour"})
+""":data:`INEXPRESSIBLE` classes (and the colour class) that keep a sentence naming no cube from being dropped as
+commentary: each may bear on the goal ("Never twice.", "Under a golden sky."); an object, an action on no cube, a
+condition on a person or a question to one ("Serve with a smile.", "What do you do?") bears on none."""
+
 EVALUATION_WORD_RE = re.compile(
     r"\b(?:episodes?|seeds?|trials?|rollouts?|success(?:\s+(?:rates?|checks?|criteri(?:on|a)|conditions?|detectors?))?"
     r"|scores?|scored|scoring|leaderboards?|entr(?:y|ies)|baselines?|polic(?:y|ies)|metrics?|benchmarks?|accuracy|percent"
@@ -3279,7 +3297,7 @@ NOTATION_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\b(\d+)(?:\s+|\s*-\s*)by(?:\s+|\s*-\s*)(?=\d)"),
      r"\1x"),
     # "a two by two grid": the size in words (number words become digits later, after these rewrites)
-    (re.compile(r"\b(two|three|four|five)(?:\s+|\s*-\s*)by(?:\s+|\s*-\s*)(two|three|four|five)(?=\s+(?:grid|square|array|block|arrangement)s?\b)"),
+    (re.compile(r"\b(two|three|four|five)(?:\s+|\s*-\s*)by(?:\s+|\s*-\s*)(two|three|four|five)(?=\s+(?:grid|square|array|arrangement)s?\b)"),
      lambda m: f"{NUMBER_WORDS[m.group(1)]}x{NUMBER_WORDS[m.group(2)]}"),
     # "on(red, green)", "(on red green)": a goal written as a planning predicate
     (re.compile(rf"\(?\bon\s*(?:\(\s*|\s+)({COLOR_RE})\s*,?\s+({COLOR_RE})\s*\)"),

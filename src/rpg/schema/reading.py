@@ -194,6 +194,30 @@ def _framing_sentence(sentence: str) -> bool:
     return True
 
 
+def _commentary_sentence(sentence: str) -> bool:
+    """Whether a sentence of a text that says its task elsewhere is a voice's commentary (a recipe's "Season to taste.", a
+    ship's log's "Calm seas.", a commentator's "The crowd goes wild."), dropped by :func:`drop_asides`: at least two
+    words; no word of a goal, count or digit (:data:`lexicon.TASK_CONTENT_RE`, :data:`lexicon.ASIDE_CONTENT_RE`); nothing
+    that may change what the task asks (:data:`lexicon.FRAMING_SENTENCE_HAZARD_RE`, a verb of
+    :data:`lexicon.SCENE_CHANGING_VERBS`); no domain refusal that may bear on a goal
+    (:data:`lexicon.COMMENTARY_BLOCKING_KINDS`).  Unlike :func:`_framing_sentence` its words need not be the
+    dictionary's, nor plain: a voice's words are its own, and none of them names a cube."""
+    low = sentence.lower()
+    words = re.findall(r"[a-z][a-z'\-]*", low)
+    if len(words) < 2 or re.search(r"\d", low) or lexicon.TASK_CONTENT_RE.search(low) or lexicon.ASIDE_CONTENT_RE.search(low) \
+            or lexicon.FRAMING_SENTENCE_HAZARD_RE.search(low):
+        return False
+    for w in words:
+        for part in w.split("-"):
+            base = part.removesuffix("'s")
+            if base in lexicon.SCENE_CHANGING_VERBS or any(x in lexicon.SCENE_CHANGING_VERBS for x in lexicon.lemmas(base)):
+                return False
+            if base in COLORS or base in lexicon.colour_names() or (
+                    base not in VOCAB and senses.sense(base).kind in lexicon.COMMENTARY_BLOCKING_KINDS):
+                return False
+    return not any(k in lexicon.COMMENTARY_BLOCKING_KINDS for k, _, _ in _inexpressible(low))
+
+
 def _frame_prefix(words: str) -> bool:
     """Whether the words before a task's imperative frame it for a person (:data:`lexicon.FRAME_PREFIX_RE`): words that
     name the task, address a person or say it is needed (:data:`lexicon.FRAME_NOUN_RE`), nothing of a goal, no hazard
@@ -317,7 +341,7 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
 
     def aside(m: re.Match) -> str:
         said = m.group(0)
-        if lexicon.ASIDE_CONTENT_RE.search(said) or _inexpressible(said.lower()):
+        if (lexicon.ASIDE_CONTENT_RE.search(said) or _inexpressible(said.lower())) and not _commentary_sentence(said.strip()):
             return said
         dropped.append(said.strip())
         return ""
@@ -334,6 +358,9 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
     sentences = re.split(r"(?<=[.!?])\s+", kept)
     framing = [s for i, s in enumerate(sentences) if not s.endswith("!") and (
         _framing_sentence(s) or _evaluation_report(s) or _title_heading(s, " ".join(sentences[i + 1:])))]
+    task = [s for s in sentences if s not in framing and not _commentary_sentence(s)]
+    if task and any(lexicon.GOAL_THING_RE.search(s.lower()) for s in task):  # a voice's commentary around a task said
+        framing = [s for s in sentences if s not in task]
     if framing and len(framing) < len(sentences):
         kept = " ".join(s for s in sentences if s not in framing)
         dropped += framing
