@@ -5708,3 +5708,23 @@ def test_a_voices_commentary_sentences_are_dropped(text, expected):
 def test_sentences_that_may_bear_on_the_goal_are_not_commentary(text):
     with pytest.raises(BadInput):
         parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    # read development sets' refusals, twenty-seventh session
+    ("The pink cube starts stacked on the black one. Unstack it and place it on the cyan patch.",
+     ["on_patch(pink,patch:cyan)", "start:stack(black,pink)"]),
+    ("The episode starts with the pink cube stacked on the brown cube; success requires the pink cube to be placed on the table.",
+     ["on_table(pink)", "start:stack(brown,pink)"]),
+    ("Goal: the letters B, E, D spelled out left to right.",
+     ["line[left_to_right](B,E,D)", "reads(B,E,D;direction=left_to_right,face=up,text=BED)"]),
+    ("Digits 3, 1, 2, left to right.", ["line[left_to_right](3,1,2)"]),
+])
+def test_starts_undone_by_unstack_it_and_label_lists_along_a_direction(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", ["build 3-stack, middle must be yellow", "build a stack of 3, middle must be yellow"])
+def test_a_towers_middle_said_without_its_article(text):
+    s = parse(text)
+    assert len(set(s.goal_predicate().object_names())) == 3 and "with yellow second from the bottom" in s.goal_summary

@@ -3296,6 +3296,8 @@ NOTATION_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      r"\1 \2 cubes"),
     (re.compile(r"\b(\d+)(?:\s+|\s*-\s*)by(?:\s+|\s*-\s*)(?=\d)"),
      r"\1x"),
+    # "build 3-stack": a tower of that many cubes, its count glued to its noun
+    (re.compile(r"\b(?:a\s+)?(\d+)-(stack|tower)\b"), r"a \2 of \1"),
     # "a two by two grid": the size in words (number words become digits later, after these rewrites)
     (re.compile(r"\b(two|three|four|five)(?:\s+|\s*-\s*)by(?:\s+|\s*-\s*)(two|three|four|five)(?=\s+(?:grid|square|array|arrangement)s?\b)"),
      lambda m: f"{NUMBER_WORDS[m.group(1)]}x{NUMBER_WORDS[m.group(2)]}"),
@@ -3709,6 +3711,13 @@ ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "put any block on top of the red one": a cube of any colour (one more, whichever)
     (re.compile(r"(?i)\b(put|place|set|stack)\s+any\s+(cube|block)\b(?=\s+(?:on|onto|next\s+to|beside|behind|in\s+front\s+of|to\s+the))"),
      r"\1 a \2"),
+    # "the letters B, E, D spelled out left to right", "letters S, T, O, P, left to right": label cubes listed in their
+    # order along a direction, with no structure said (it had found no task): spelled, or a row
+    (re.compile(r"(?:^|(?<=[.;:]\s))(?i:(?:goal\s*:\s*)?(?:the\s+)?(?:letters?|digits?|numbers?)(?:\s+(?:cubes|blocks))?)\s+"
+                r"(?P<l>[A-Z0-9](?:\s*,\s*(?:and\s+)?[A-Z0-9])+)\s*,?\s+(?P<sp>(?i:(?:spelled|spelt|written)(?:\s+out)?\s+))?"
+                r"(?P<d>(?i:(?:from\s+)?(?:left\s+to\s+right|right\s+to\s+left)))\b"),
+     lambda m: f"spell {m.group('l')} {m.group('d')}" if m.group("sp")
+     else f"a row of the letter cubes {m.group('l')} {m.group('d') if m.group('d').lower().startswith('from') else 'from ' + m.group('d')}"),
 )
 """A row said by its order or its places alone, corners said two at a time, two structures said after a colon, a cube of
 any colour."""

@@ -177,8 +177,9 @@ cube with nothing on it ("A is clear", checked against the stacks said)."""
 
 
 ON_TABLE_GOAL_RE = re.compile(
-    rf"(?i)^\s*(?:(?:put|place|move|set|lay|take|bring|get|lower|return)\s+)?{_CUBE.format(g='c')}\s+(?:(?:must|should|has\s+to|"
-    r"needs\s+to|will)\s+)?(?:(?:be|end\s+up|ends\s+up|finish(?:es)?|stay|stays|go|goes|sit|sits|sitting|lie|lies|lying|rest|rests"
+    rf"(?i)^\s*(?:success\s+(?:requires|needs|means)\s+)?"
+    rf"(?:(?:put|place|move|set|lay|take|bring|get|lower|return)\s+)?{_CUBE.format(g='c')}\s+(?:(?:must|should|has\s+to|"
+    r"needs\s+to|will|to)\s+)?(?:(?:be|end\s+up|ends\s+up|finish(?:es)?|stay|stays|go|goes|sit|sits|sitting|lie|lies|lying|rest|rests"
     r"|resting|standing|placed|is|back|down"
     rf"|(?:off|from)\s+(?:of\s+)?(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?(?:\s+and)?)\s+)*(?:on|onto)\s+the\s+table\s*[.!]?$")
 """A goal that only sends a cube to the table ("the pink cube must end up on the table", "put
@@ -540,7 +541,7 @@ def _start_ends_named(sentences: list[str]) -> list[str]:
     top_said = subject is not None and _canon(subject.group("c")) == stacks[0][-1]
 
     def it_taken(m: re.Match) -> str:  # "The blue cube starts on top of the green cube. Take it off ...": the top cube
-        return f"{m.group('verb')} the {stacks[0][-1]} cube off" if top_said else m.group(0)
+        return f"{m.group('verb') or 'take'} the {stacks[0][-1]} cube off" if top_said else m.group(0)
 
     goal_sentences = [s for s in sentences if not (START_SENTENCE_RE.match(s) or STARTS_FACT_RE.match(s))]
     topped = sum(bool(_ON_TOP_RE.search(s)) for s in goal_sentences) == 1 and not any(
@@ -587,7 +588,7 @@ the white block on top of the orange block", orange the stack's top): the tower,
 (:func:`_start_ends_named`; a cube named that is not the stack's top leaves the words as they are)."""
 
 
-_IT_TAKEN_RE = re.compile(r"(?i)^\s*(?:then\s+)?(?P<verb>take|lift|remove|pick)\s+it\s+off\b")
+_IT_TAKEN_RE = re.compile(r"(?i)^\s*(?:then\s+)?(?:(?P<verb>take|lift|remove|pick)\s+it\s+off\b|(?:unstack|remove)\s+it\b(?=\s*,?\s*(?:and\s+)?(?:then\s+)?(?:put|place|set|move|lay)\s+it\b))")
 """A goal that takes 'it' off the start's one stack ("The blue cube starts on top of the green cube. Take it off and put it
 on the table."): the cube the start sentence is about, named when it is the stack's top (:func:`_start_ends_named`)."""
 
