@@ -5728,3 +5728,27 @@ def test_starts_undone_by_unstack_it_and_label_lists_along_a_direction(text, exp
 def test_a_towers_middle_said_without_its_article(text):
     s = parse(text)
     assert len(set(s.goal_predicate().object_names())) == 3 and "with yellow second from the bottom" in s.goal_summary
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a tower or row said cube by cube by ordinals: its colours in that order
+    ("Build a tower of four: the first cube is white, the second black, the third white, the last black, counting from "
+     "the bottom.", ["stack(white,black,white,black)"]),
+    ("The first block of the tower (the bottom one) is purple, the second is pink and the third is purple again.",
+     ["stack(purple,pink,purple)"]),
+    ("Row of three, left to right: the first block is white, the second is black, the third is white.",
+     ["line[left_to_right](white,black,white)"]),
+    ("Build a tower of three. Counting from the top, the first cube is red, the second is blue, the third green.",
+     ["stack(green,blue,red)"]),
+])
+def test_structures_said_by_ordinals(text, expected):
+    assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "Make a row of three: the first block is white, the second is black, the third is white.",  # which end is first?
+    "Build a tower: the first cube is red, the third is blue.",  # a gap in the ordinals
+])
+def test_ordinals_without_an_end_or_with_a_gap_are_refused(text):
+    with pytest.raises(BadInput):
+        parse(text)

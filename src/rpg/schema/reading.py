@@ -1229,6 +1229,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     spelled = ({w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)} - lexicon.CAPS_NEVER_SPELLED) | {  # "spell BOOK": a word
         w.lower() for w in re.findall(r"(?i:\b(?:spell(?:s|ing)?|reads?|word)\s+(?:the\s+word\s+)?)([A-Z]{2,})\b", original)}
     text = lexicon.ROBOT_VIEWPOINT_RE.sub("", text)  # "From the robot's point of view, ...": rpg's own frame
+    text = ordinal_roles(text)  # "the first cube is white, the second black, ...": listed (before "the first cube" is refused)
     refused = [(kind, ws, why) for kind, ws, why in _inexpressible(text)
                if not all(w in spelled for w in ws)]  # refused below, with what the unknown words say as well
     text = lexicon.FRAMING_RE.sub("", text)
@@ -1610,6 +1611,60 @@ _ROLE_SENTENCE_RE = re.compile(
     rf"(?!\s+(?:or|and)\s+(?:the\s+)?(?:{COLOR_RE}))")
 """A tower's end or middle cube said as a sentence ("The cube at the top is orange", "Middle cube must be white"):
 read as "top: orange" (:func:`normalize_words`'s roles)."""
+_ORDINALS = ("first", "second", "third", "fourth", "fifth", "sixth")
+_ORDINAL_ITEM_RE = re.compile(
+    r"\bthe\s+(?P<o>first|second|third|fourth|fifth|sixth|1st|2nd|3rd|4th|5th|6th|last|final|top|topmost)"
+    r"(?:\s+(?:cube|block|one))?(?:\s+of\s+the\s+(?P<s>tower|stack|row|line))?(?:\s*\((?P<p>[^()]{1,40})\))?"
+    r"(?:\s+(?:is|should\s+be|must\s+be|will\s+be))?\s+(?:the\s+|a\s+)?(?P<c>" + COLOR_RE + r")(?:\s+(?:cube|block|one))?(?:\s+again)?\b")
+_ORDINAL_SEP_RE = re.compile(r"\s*(?:,\s*(?:and\s+)?|;\s*|\s+and\s+)")
+_COUNTING_FROM_RE = re.compile(r"\s*,?\s*(?:counting|counted|going)\s+from\s+the\s+(bottom|top|left|right)(?:\s+up|\s+down)?\b")
+
+
+def ordinal_roles(text: str) -> str:
+    """A tower or row said cube by cube by ordinals ("the first cube is white, the second black, the third white, the
+    last black"; "the first block of the tower (the bottom one) is purple, the second is pink and the third is purple
+    again"; "row of three, left to right: the first block is white, the second is black, ...") -> its colours listed in
+    that order ("white, black, white, black"), with the direction the words give: a tower's first cube is its bottom
+    unless "counting from the top" or "(the top one)" says otherwise; a row's direction must be said ("left to right")
+    and is kept where it is.  Left as written unless the ordinals run first, second, ... with no gap (a last one may
+    end the run) and one structure is said; a row with no direction is left (and refused)."""
+    items, end = [], None
+    for m in _ORDINAL_ITEM_RE.finditer(text):
+        if items and not _ORDINAL_SEP_RE.fullmatch(text[end:m.start()]):
+            break
+        items.append(m)
+        end = m.end()
+    if len(items) < 2:
+        return text
+    said = [m.group("o").replace("1st", "first").replace("2nd", "second").replace("3rd", "third").replace("4th", "fourth")
+            .replace("5th", "fifth").replace("6th", "sixth") for m in items]
+    last = said[-1] in ("last", "final", "top", "topmost")
+    if said[:len(said) - last] != list(_ORDINALS[:len(said) - last]) or (last and len(said) < 3) or re.search(
+            r"\b(?:middle|between|rest|others?|remaining|second|third|fourth)\b", text[items[-1].end():]):
+        return text  # (a gap, "the first ..., the last ..." with the cubes between said otherwise: other rules read it)
+    nouns = set(re.findall(r"\b(tower|stack|row|line|column)s?\b", text))
+    tower = nouns <= {"tower", "stack", "column"} and bool(nouns)
+    if len(nouns) != 1 and not (tower and len(nouns) == 2 and nouns <= {"tower", "stack"}):
+        return text  # no structure, or two: which one the ordinals count is not said
+    counting = _COUNTING_FROM_RE.search(text)
+    where = " ".join(filter(None, [items[0].group("p") or "", counting.group(1) if counting else ""]))
+    top_down = bool(re.search(r"\btop\b", where)) and tower
+    if not tower and not re.search(r"\b(?:left|right)\s+to\s+(?:the\s+)?(?:left|right)\b|\b(?:front|back)\s+to\s+(?:the\s+)?(?:front|back)\b",
+                                   text):
+        return text  # a row's first cube is at one end, and which end is not said
+    colors = [m.group("c") for m in items]
+    listed = ", ".join(colors)
+    if tower:
+        listed = f"from {'top to bottom' if top_down else 'bottom to top'}: {listed}"
+    head = text[:items[0].start()]
+    if items[0].group("s") and not re.search(r"\b(?:tower|stack|row|line|column)s?\b", head):
+        head = f"{head}the {items[0].group('s')} "  # "the first block of the tower ... is purple": the tower said there
+        if not tower:
+            listed = f"in a row: {listed}"
+    out = f"{head}{listed}{text[items[-1].end():]}"
+    return _COUNTING_FROM_RE.sub("", out)
+
+
 def _role_sentences(text: str) -> str:
     """A tower's two ends, or its middle alone, each said as a sentence (:data:`_ROLE_SENTENCE_RE`) -> "top: orange"
     and "bottom: purple" (or "middle: white"), which the roles of :func:`normalize_words` read; left as written when
