@@ -5752,3 +5752,13 @@ def test_structures_said_by_ordinals(text, expected):
 def test_ordinals_without_an_end_or_with_a_gap_are_refused(text):
     with pytest.raises(BadInput):
         parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Stack the three red cubes into a tower, then crown it with the yellow cube.", ["stack(red,red,red,yellow)"]),
+    ("Stack red on blue and top it off with a green cube.", ["stack(blue,red,green)"]),
+    ("Dump all the cyan cubes in a heap on the left side.", ["pile(cyan,cyan,cyan)@left"]),
+    ("Tuck the red cube behind the blue cube.", ["behind(red,blue)"]),
+])
+def test_crown_it_with_dump_and_tuck(text, expected):
+    assert meaning(parse(text)) == expected

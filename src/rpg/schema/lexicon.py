@@ -930,7 +930,7 @@ PLACEMENT_VERBS: dict[str, str] = {
     "chuck": "place", "bung": "place", "realise": "build", "realize": "build",
     "hoist": "place", "heave": "place", "ease": "place", "nudge": "place", "scoot": "place", "shove": "place", "haul": "place",
     "carry": "place", "lug": "place", "deposit": "place", "park": "place", "plant": "place", "station": "place",
-    "seat": "place", "perch": "place", "deliver": "place",
+    "seat": "place", "perch": "place", "deliver": "place", "dump": "place", "tuck": "place",
 }
 """Verbs that ask for objects to end up somewhere, by lemma -> the parser's verb."""
 
@@ -3367,6 +3367,10 @@ def _bare_placed_then(m: re.Match) -> str:
 WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (INTRODUCED_CUBES_RE, lambda m: f"{m.group('verb')} {m.group('np')}"),
     (BARE_PLACED_THEN_RE, _bare_placed_then),
+    # "stack the red cubes into a tower, then crown it with the yellow cube": that cube on top
+    (re.compile(rf"\b(?:crown|cap|top)\s+(?:it|them|the\s+(?:tower|stack|pile))(?:\s+off)?\s+with\s+(?P<np>(?:a|an|the|one|1)\s+"
+                rf"(?:single\s+)?(?:{COLOR_RE})\s+(?:cube|block|brick|one))\b"),
+     r"put \g<np> on top"),
     # "a wall whose bottom row is orange, purple, orange and whose top row is ...": its rows, as "where the" says them
     (re.compile(r"\b((?:wall|pyramid|tower|stack|row|line|grid)s?\s+)whose\b(?P<rest>[^.;]*)"),
      lambda m: m.group(1) + "where the" + re.sub(r"\b(and|,)\s+whose\b", r"\1 the", m.group("rest"))),
