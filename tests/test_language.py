@@ -41,7 +41,6 @@ from rpg.schema.meaning import matches, meaning
      ["left_of(blue,green)", "left_of(red,green)", "left_of(yellow,green)", "stack(red,blue,yellow)"]),
     ("put three blue blocks in a row in front of the yellow block",
      ["in_front_of(blue,yellow)", "in_front_of(blue,yellow)", "in_front_of(blue,yellow)", "line(blue,blue,blue)"]),
-    ("build a stack of red, green and blue blocks next to the yellow block", ["next_to(red,yellow)", "stack(red,green,blue)"]),
     # taking a cube off: rho_0 starts the stack, G is the top cube on the table (PlanBench's
     # "unstack ... from on top of ..." once compiled to the very stack it takes apart)
     ("unstack the blue block from on top of the red block", ["start:stack(red,blue)", "on_table(blue)"]),
@@ -694,7 +693,7 @@ def test_a_structure_nobody_described_is_not_invented(text):
 @pytest.mark.parametrize("text, want", [
     ("stack the red block on the blue block, then put the green block on the stack", "stack(blue,red,green)"),
     ("put the red block on the blue block, then the green block on top of the tower", "stack(blue,red,green)"),
-    ("build a tower of red and blue blocks and put the green block next to the tower", "next_to(green,red); stack(red,blue)"),
+    ("build a tower of the red and blue blocks and put the green block behind the tower", "behind(green,red); stack(red,blue)"),
 ])
 def test_the_stack_built_before_is_the_one_referred_to(text, want):
     """"... then put the green block on the stack" put green between blue and red."""
@@ -5681,8 +5680,6 @@ def test_a_tower_listed_without_order_and_related_in_the_plane_stays_unordered()
     # "behind it" holds of every cube of a tower; the list says no order (red had been demanded at the bottom)
     s = parse("Build a tower of the red and blue blocks and put the green block behind it.")
     assert "any order" in s.goal_summary
-    s = parse("Put the green block behind the tower made of the red and blue blocks.")
-    assert "any order" in s.goal_summary
     # (this one had been refused: the order said free and the tower read in order)
     s = parse("make a tower of red, green and blue, doesn't matter which order, and put yellow to the left of it")
     assert type(s.goal.children()[0]).__name__ == "UnorderedStack" and s.goal.children()[1].name == "left_of"
@@ -5762,3 +5759,64 @@ def test_ordinals_without_an_end_or_with_a_gap_are_refused(text):
 ])
 def test_crown_it_with_dump_and_tuck(text, expected):
     assert meaning(parse(text)) == expected
+
+
+@pytest.mark.parametrize("text", [
+    # a hostile helper's attack on this session's readings: each had compiled silently wrong, now refused
+    "You have a red cube and a blue cube. Put it on the green patch.",  # "it" of two cubes
+    "There are three blue cubes on the table. Place both of them on the blue patch.",  # "both" of three
+    "There are two blue cubes and one red cube. Put both on the blue patch.",
+    "There is a blue cube on the table. Place both of them on the blue patch.",
+    "Place the blue block, then the yellow block to its right, each on the green patch",  # "each" had been dropped
+    "Place the blue block, then the yellow block to its right, then the red block to its right",  # which "its"?
+    "Set the green block next to the tower made of wood.",  # a tower invented
+    "Set the green block next to the tower made of red blocks.",
+    "build 3-stack, middle must be yellow, top must be red",  # red had gone to the bottom
+    "build 3-stack of blue cubes, middle must be yellow",  # a red cube invented
+    "Stack red on blue. Just kidding.", "Stack red on blue. Ignore that.", "Stack red on blue. April fools.",
+    "Build a tower of three. Counting from the top, the first cube (the bottom one) is red, the second is blue, the third green.",
+    "Build a tower of four: the first cube is white, the second black, the third white, the next-to-last black, counting "
+    "from the bottom.",
+    "Row of three, left to right: the first block is white, the second is black, the third is red, counting from the right.",
+    "Build a tower of three: the first cube is red, the second blue, the third green, counting from the left.",
+    # a listed tower with a cube next to it: judged against its bottom cube, which the list does not say (red had been
+    # demanded at the bottom)
+    "Build a tower of the red and blue blocks and put the green block next to it.",
+    "build a tower of red and blue blocks and put the green block next to the tower",
+    "build a stack of red, green and blue blocks next to the yellow block",
+])
+def test_this_sessions_readings_attacked_refuse(text):
+    with pytest.raises(BadInput):
+        parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    # taken off the start's stack and put in a place of the table: on the table there (it could have stayed on its base)
+    ("The pink cube starts stacked on the black one. Unstack it and place it in the left half.",
+     ["in_region(pink,left)", "on_table(pink)", "start:stack(black,pink)"]),
+    ("The episode starts with the pink cube stacked on the brown cube; success requires the pink cube to be placed on the "
+     "table in the back left corner.", ["in_region(pink,back_left)", "on_table(pink)", "start:stack(brown,pink)"]),
+])
+def test_taken_off_and_put_in_a_place_stays_on_the_table(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+def test_a_step_after_a_listed_stack_leaves_its_order_free():
+    s = parse("Stack the red and blue blocks, then put yellow on the table next to the green block.")
+    assert "any order" in s.goal_summary
+
+
+@pytest.mark.parametrize("text, expected", [
+    # what is there now, one cube on another, then a command moving the top one: the start (the stack had been the goal
+    # and "it" the stack)
+    ("There is a red cube on top of the blue cube. Put it on the green patch.", ["on_patch(red,patch:green)", "start:stack(blue,red)"]),
+    ("The red cube is stacked on the blue cube. Put it on the green patch.", ["on_patch(red,patch:green)", "start:stack(blue,red)"]),
+    ("There is a red cube on top of the blue cube. Put it on the table.", ["on_table(red)", "start:stack(blue,red)"]),
+])
+def test_a_start_said_as_what_is_there_now(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+def test_a_stack_said_with_another_cube_moved_stays_the_goal():
+    assert sorted(meaning(parse("The red cube is stacked on the blue cube. Put the green cube next to it."))) == [
+        "next_to(blue,green)", "stack(blue,red)"]

@@ -278,6 +278,11 @@ tidy keep leave stay remain repeat continue finish start begin complete align ce
 scramble.", "Hide the evidence."): such a sentence is never dropped as commentary
 (:func:`rpg.schema.reading.drop_asides`), matched by lemma."""
 
+RETRACTION_RE = re.compile(r"\b(?:kidding|joking|jokes?|jk|ignore\w*|forget|scrap|cancel\w*|disregard\w*|nevermind|never\s+mind"
+                           r"|april\s+fools?|fooled|pretend\w*|lie|lying|strike|delete|erase|withdraw\w*|retract\w*|that|this|those|these)\b")
+"""Words by which a sentence may take back or point at what was said ("Just kidding.", "Ignore that.", "April fools."):
+such a sentence is never dropped as a voice's commentary (:func:`rpg.schema.reading.drop_asides`)."""
+
 COMMENTARY_BLOCKING_KINDS: frozenset[str] = frozenset({"negation", "time", "quantity", "size", "shape", "reference",
                                                        "contradiction", "same_colour", "alternative", "no_goal", "colour"})
 """:data:`INEXPRESSIBLE` classes (and the colour class) that keep a sentence naming no cube from being dropped as
@@ -787,8 +792,7 @@ DEFINITE_STRUCTURE_RE = re.compile(
     r"\b(?:on|onto|upon|to|into|next\s+to|beside|behind|in\s+front\s+of|near|left\s+of|right\s+of|top\s+of|from|off|of"
     r"|put|place|move|set|slide|push|shift|bring|carry|relocate|transfer|position)"
     r"\s+the\s+(?:existing\s+|current\s+|whole\s+|entire\s+)?"
-    r"(?P<noun>tower|stack|pile|structure|pyramid|wall|row|line|column|circle|ring|grid)\b"
-    r"(?!\s+(?:of|(?:made|built|composed|formed)\s+(?:up\s+)?(?:out\s+)?(?:of|from)|consisting\s+of)\b)")
+    r"(?P<noun>tower|stack|pile|structure|pyramid|wall|row|line|column|circle|ring|grid)\b(?!\s+of\b)")
 """A structure an instruction places something in relation to ("put the blue block on top of
 the stack") or moves ("put the tower centrally"): it must have been described before it
 (:data:`STRUCTURE_INTRO_RE`); otherwise it is one the speaker sees, which a task cannot know."""
@@ -1960,7 +1964,7 @@ tower of its own."""
 
 
 TABLE_SAID_RE = re.compile(
-    rf"\b(?:(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?|(?P<p>it|them))\s+(?:(?:must|should|will|has\s+to|needs\s+to)\s+)?"
+    rf"\b(?:(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?|(?P<p>it|them))\s+(?:(?:must|should|will|has\s+to|needs\s+to|to)\s+)?"
     r"(?:(?:be|end\s+up|ends\s+up|ends?|finish(?:es)?|stay|stays|go|goes|sit|sits|lie|lies|rest|rests|placed|is|back|down|directly|flat)\s+)*"
     r"(?:on|onto)\s+the\s+table\b"
     r"|(?P<q>(?:\band|,)\s+(?:(?:then|finally|afterwards|later|after\s+that)\s+)?(?:back\s+|down\s+)?)(?:on|onto)\s+the\s+table\b")
@@ -2465,7 +2469,8 @@ STACK_FREE_PHRASES = re.compile(
     r"\bon\s+top\s+of\s+(?:each\s+other|one\s+another)\b|\b(?:on|onto|upon|over|above)\s+(?:each\s+other|one\s+another)\b"
     r"|\b(?:on|onto)\s+(?:the\s+|a\s+)?(?:[a-z]+\s+)?(?:goal\s+)?patch(?:es)?\b|\b(?:on|onto)\s+the\s+table\b"
     r"|@region_[a-z_]+|\b(?:on|at|to)\s+the\s+(?:left|right|front|back)\b|\bin\s+any\s+order\b"
-    r"|\b(?:end|ends|ended|wind|winds|wound)\s+up\b")
+    r"|\b(?:end|ends|ended|wind|winds|wound)\s+up\b"
+    r"|\b(?:and\s+)?then\s+(?=(?:put|place|set|move|lay|slide|push|bring|make|build|line)\b)")
 """Phrases of a stack instruction that put no cube above another: the stack as a whole ("on
 top of each other"), where it stands ("on the green patch", "on the table", a region), the
 end state ("should end up stacked")."""
@@ -3341,7 +3346,7 @@ INTRODUCED_CUBES_RE = re.compile(
     r"(?:^|(?<=[.!?;]\s))(?:there\s+(?:is|are)|you\s+have|we\s+have|you(?:'ve|\s+have)\s+got|here\s+(?:is|are)"
     r"|(?:take|grab|pick\s+up|get))\s+(?P<np>" + _CUBES_NP + r")(?:\s+(?:on|from)\s+the\s+table)?\s*[.;:]\s+(?:then\s+)?"
     r"(?P<verb>put|place|set|move|stack|arrange|bring|slide|push|lay)\s+"
-    r"(?:them\s+(?:both|all)|both\s+of\s+them|all\s+of\s+them|them|it|both)\b")
+    r"(?P<pro>them\s+(?:both|all)|both\s+of\s+them|all\s+of\s+them|them|it|both)\b")
 """Cubes introduced in a sentence of their own and placed in the next by a pronoun ("There are two blue cubes on the
 table. Place both of them on the blue patch."; "Pick up the red cube. Put it on the green patch."): read as one
 command naming them ("place two blue cubes on the blue patch"); each sentence had been read alone (no task in the
@@ -3358,14 +3363,46 @@ no relation, so "its" had nothing to refer to and the first cube no place)."""
 
 def _bare_placed_then(m: re.Match) -> str:
     """:data:`BARE_PLACED_THEN_RE` -> one relation, the pronoun written as the cube put down first."""
+    rest = re.split(r"[.!?;]", m.string[m.end():], maxsplit=1)[0]
+    if re.search(r"\b(?:it|its|them|their|they|each|both|all)\b", rest):
+        return m.group(0)  # ("..., then the red block to its right": which cube "its" is now is not said; "each on ...")
     cube = f"the {m.group('a')} block"
     rel = re.sub(r"\bits\s+(left|right)(?:\s+side)?", rf"the \1 of {cube}", m.group("rel"))
     rel = re.sub(r"\bit$", cube, rel)
     return f"place {m.group('b')} {rel}"
 
 
+def _introduced_cubes(m: re.Match) -> str:
+    """:data:`INTRODUCED_CUBES_RE` -> one command naming the cubes, when the pronoun agrees with them: "it" one cube,
+    "both" two, "them"/"all" more than one; otherwise as written (and refused: which cubes is not clear)."""
+    np, pro = m.group("np"), m.group("pro")
+    counts = [NUMBER_WORDS.get(w, int(w) if w.isdigit() else 1) if w else 1
+              for w in re.findall(r"(?:\b(a|an|the|one|two|three|four|five|six|both|\d+)\s+)?(?:(?:" + COLOR_RE + r")\s+)?(?:cubes?|blocks?)\b", np)]
+    plural_noun = bool(re.search(r"\b(?:cubes|blocks)\b", np))
+    n = sum(counts) if not plural_noun or any(c > 1 for c in counts) else None  # "the red cubes": how many is not said
+    if pro == "it":
+        ok = n == 1
+    elif pro.startswith("both") or pro.endswith("both"):
+        ok = n == 2
+    else:
+        ok = n is not None and n > 1
+    return f"{m.group('verb')} {np}" if ok else m.group(0)
+
+
+_MADE_CUBE = rf"(?:a|an|the)\s+(?:{COLOR_RE})\s+(?:block|cube)"
+RELATED_TO_MADE_TOWER_RE = re.compile(
+    rf"^(?:please\s+)?(?P<v>put|place|set|move)\s+(?P<x>the\s+(?:{COLOR_RE})\s+(?:block|cube))\s+(?P<rel>next\s+to|beside|behind|in\s+front\s+of"
+    r"|to\s+the\s+(?:left|right)\s+of|(?:left|right)\s+of|near)\s+the\s+(?P<s>tower|stack)\s+(?:that\s+is\s+|which\s+is\s+)?"
+    r"(?:made\s+(?:up\s+)?of|consisting\s+of|built\s+(?:from|of|out\s+of)|composed\s+of)\s+"
+    rf"(?P<chain>{_MADE_CUBE}\s+(?:on\s+top\s+of|on|atop)\s+{_MADE_CUBE})\s*(?=[.!]?\s*$)")
+"""A cube related to a tower described after it by its two cubes, one on the other ("Set the green block next to the
+tower made of a red block on top of a blue block"): read as the tower built, then the cube related to it (the tower
+had been one the speaker sees).  Only this one shape: a description after the noun that does not give the tower's
+cubes and their order ("the tower made of wood") is left a reference, refused."""
+
 WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
-    (INTRODUCED_CUBES_RE, lambda m: f"{m.group('verb')} {m.group('np')}"),
+    (INTRODUCED_CUBES_RE, _introduced_cubes),
+    (RELATED_TO_MADE_TOWER_RE, lambda m: f"build a {m.group('s')} of {m.group('chain')} and {m.group('v')} {m.group('x')} {m.group('rel')} it"),
     (BARE_PLACED_THEN_RE, _bare_placed_then),
     # "stack the red cubes into a tower, then crown it with the yellow cube": that cube on top
     (re.compile(rf"\b(?:crown|cap|top)\s+(?:it|them|the\s+(?:tower|stack|pile))(?:\s+off)?\s+with\s+(?P<np>(?:a|an|the|one|1)\s+"

@@ -205,7 +205,7 @@ def _commentary_sentence(sentence: str) -> bool:
     low = sentence.lower()
     words = re.findall(r"[a-z][a-z'\-]*", low)
     if len(words) < 2 or re.search(r"\d", low) or lexicon.TASK_CONTENT_RE.search(low) or lexicon.ASIDE_CONTENT_RE.search(low) \
-            or lexicon.FRAMING_SENTENCE_HAZARD_RE.search(low):
+            or lexicon.FRAMING_SENTENCE_HAZARD_RE.search(low) or lexicon.RETRACTION_RE.search(low):
         return False
     for w in words:
         for part in w.split("-"):
@@ -1639,19 +1639,22 @@ def ordinal_roles(text: str) -> str:
     said = [m.group("o").replace("1st", "first").replace("2nd", "second").replace("3rd", "third").replace("4th", "fourth")
             .replace("5th", "fifth").replace("6th", "sixth") for m in items]
     last = said[-1] in ("last", "final", "top", "topmost")
+    tail = _COUNTING_FROM_RE.sub("", text[items[-1].end():])
     if said[:len(said) - last] != list(_ORDINALS[:len(said) - last]) or (last and len(said) < 3) or re.search(
-            r"\b(?:middle|between|rest|others?|remaining|second|third|fourth)\b", text[items[-1].end():]):
+            r"\b(?:middle|between|rest|others?|remaining|second|third|fourth|fifth|last|next|final|penultimate|top|bottom)\b", tail):
         return text  # (a gap, "the first ..., the last ..." with the cubes between said otherwise: other rules read it)
     nouns = set(re.findall(r"\b(tower|stack|row|line|column)s?\b", text))
     tower = nouns <= {"tower", "stack", "column"} and bool(nouns)
     if len(nouns) != 1 and not (tower and len(nouns) == 2 and nouns <= {"tower", "stack"}):
         return text  # no structure, or two: which one the ordinals count is not said
     counting = _COUNTING_FROM_RE.search(text)
-    where = " ".join(filter(None, [items[0].group("p") or "", counting.group(1) if counting else ""]))
-    top_down = bool(re.search(r"\btop\b", where)) and tower
-    if not tower and not re.search(r"\b(?:left|right)\s+to\s+(?:the\s+)?(?:left|right)\b|\b(?:front|back)\s+to\s+(?:the\s+)?(?:front|back)\b",
-                                   text):
-        return text  # a row's first cube is at one end, and which end is not said
+    ends = {e for e in [*re.findall(r"\b(bottom|top|left|right|front|back)\b", items[0].group("p") or ""),
+                        counting.group(1) if counting else None] if e}
+    direction = re.search(r"\b(left|right|front|back)\s+to\s+(?:the\s+)?(?:left|right|front|back)\b", text)
+    if len(ends) > 1 or (tower and ends - {"bottom", "top"}) or (not tower and (not direction or ends - {direction.group(1)})):
+        return text  # the first cube's end said twice apart, a tower counted from a side, a row's first end not said or
+        # not the end its direction starts from: left as written (refused)
+    top_down = ends == {"top"}
     colors = [m.group("c") for m in items]
     listed = ", ".join(colors)
     if tower:
@@ -2190,11 +2193,23 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     # "... and the middle block is blue": the middle cube's colour (it had been dropped: a tower of two)
     (re.compile(rf"(?:\s*[,.;:]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)(?:make\s+(?:sure\s+)?(?:that\s+)?)?(?:the\s+|(?<=[,;:]\s))(?:middle|center|centre)"
                 rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?({COLOR_RE})"
-                rf"(?:\s+(?:block|cube|one|1))?\b(?!\s+(?:and|or)\s+(?:{COLOR_RE})\b)"), r" with a \1 block in the middle", True),
+                rf"(?:\s+(?:block|cube|one|1))?\b(?!\s+(?:and|or)\s+(?:{COLOR_RE})\b)"), lambda m: _middle_cube(m), True),
 ))
 """Ways of describing a tower, rewritten to the form the readers take ("a tower of N <colour>
 blocks"): a count or colour before the structure noun is the whole structure's, a group
 after "one of" is one tower's, "the top one is white" is the top cube's colour."""
+
+
+def _middle_cube(m: re.Match) -> str:
+    """"... and the middle block is blue" -> " with a blue block in the middle"; said without its article ("build 3-stack,
+    middle must be yellow") only where nothing else of the tower is said (another colour, an end, "all": those words
+    had been read as more cubes in some order, red at the bottom for "top must be red")."""
+    color = m.group(m.re.groups)
+    if not re.search(r"\bthe\s+(?:middle|center|centre)\b", m.group(0)) and (
+            {c for c in re.findall(rf"\b({COLOR_RE})\b", m.string)} != {color}
+            or re.search(r"\b(?:top|topmost|bottom|base|lowest|highest|all|every|each|first|last|second|third)\b", m.string)):
+        return m.group(0)
+    return f" with a {color} block in the middle"
 
 
 def _layer_or_end_cube(m: re.Match, where: str) -> str:

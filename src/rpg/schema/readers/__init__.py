@@ -30,6 +30,7 @@ from rpg.domain.predicates import (
     InFrontOf,
     InRegion,
     LeftOf,
+    NextTo,
     OnPatch,
     RightOf,
     Stack,
@@ -212,6 +213,7 @@ def _listed_roles(text: str) -> dict[str, str] | None:
             return None
         roles[end] = color
     rest = lexicon.STACK_FREE_PHRASES.sub(" ", lexicon.STACK_ROLE_RE.sub(" ", text))
+    rest = re.sub(r"\bnext\s+to\b", " beside ", rest)  # a relation, not a step ("next, ...")
     if lexicon.ORDER_WORDS.search(rest) or lexicon.CUBE_ORDER_RE.search(rest):
         return None
     return roles
@@ -251,7 +253,11 @@ def free_listed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
         others = [q for q in parts if q is not p and set(q.object_names()) & set(objs)]
         if not all(isinstance(q, InRegion) or (type(q) is OnPatch and q.a == objs[0])
                    or (isinstance(q, _PLANAR_RELATIONS) and len(set(q.object_names()) & set(objs)) == 1) for q in others):
-            continue  # a cube of the stack related to something else by itself: its place is said (a relation in the
+            if any(type(q) is NextTo and len(set(q.object_names()) & set(objs)) == 1 and objs[0] in q.object_names()
+                   for q in others):
+                raise ParseError(f"\"{f.original[:80]}\" lists a tower's cubes without their order and puts a cube next to "
+                                 "it, which is judged against its bottom cube; say the tower bottom to top (e.g. \"stack red "
+                                 "on blue\"), or use --model")  # (the list's first cube had been demanded at the bottom)  # a cube of the stack related to something else by itself: its place is said (a relation in the
             # plane to one cube of it holds of the whole tower, its cubes standing one above another: "put green behind it")
         ends = {end: [n for n in objs if colors[n] == c] for end, c in roles.items()}
         if any(len(v) != 1 for v in ends.values()):

@@ -401,6 +401,25 @@ _UNSTACK_RE = re.compile(
 the table"): the tower named is rho_0's stack, what follows the goal."""
 
 
+THERE_IS_START_RE = re.compile(
+    rf"(?i)^\s*(?:there(?:'s|\s+is)\s+(?:a|an|the)\s+(?P<top>{_NAME})(?:\s+(?:cube|block))?\s+(?:(?:stacked|sitting|resting|placed)\s+)?"
+    rf"|(?:the\s+)?(?P<top2>{_NAME})(?:\s+(?:cube|block))?\s+is\s+(?:currently\s+|now\s+|already\s+)?(?:stacked|sitting|resting)\s+)"
+    rf"(?:on\s+top\s+of|on|atop)\s+(?:a|an|the)\s+(?P<bottom>{_NAME})(?:\s+(?:cube|block|one))?\s*[.;]\s+"
+    r"(?P<verb>(?:then\s+)?(?:put|place|move|take|set|bring|slide|push|lift|remove|unstack))\s+(?P<obj>it\b|the\s+(?P<moved>\w+))")
+"""A start said as what is there now, one cube on another, before a command that moves the top one ("There is a red cube on
+top of the blue cube. Put it on the green patch.", "The red cube is stacked on the blue cube. Take it off ..."): read
+as "Initially ..." (the stack had been read as the goal, and "it" as the stack: silently wrong).  Only where the command
+moves "it" or the top cube named: moved, the top cube cannot also be the goal's."""
+
+
+def _there_is_start(m: re.Match) -> str:
+    top = m.group("top") or m.group("top2")
+    if m.group("moved") and m.group("moved").lower() != top.lower():
+        return m.group(0)  # another cube moved: "the red cube is stacked on the blue cube" may be the goal's
+    obj = f"the {top} cube" if m.group("obj").lower() == "it" else m.group("obj")
+    return f"Initially the {top} cube is on the {m.group('bottom')} cube. {m.group('verb')} {obj}"
+
+
 def split(instruction: str) -> InitialScene | None:
     """The initial scene and the goal of ``instruction``, or None when it states no start this
     module reads (see the module docstring)."""
@@ -410,6 +429,7 @@ def split(instruction: str) -> InitialScene | None:
                          instruction.strip())  # "# goal (unstack): the pink cube starts ...": its label
     instruction = lexicon.tower_ends_said(instruction)  # "red (bottom), blue, yellow (top)"
     instruction = ROBOT_STARTS_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
+    instruction = THERE_IS_START_RE.sub(_there_is_start, instruction.strip())
     instruction = FROM_START_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     instruction = FROM_STRUCTURE_RE.sub(_from_structure, instruction.strip())
     undone = UNSTACK_SAID_RE.match(instruction.strip())
@@ -561,6 +581,10 @@ def _start_ends_named(sentences: list[str]) -> list[str]:
     def taken_then_put(m: re.Match) -> str:  # "take the purple cube off and put it on the red patch": put it there
         if _canon(m.group("c")) != stacks[0][-1] or re.search(r"(?i)\bits?\b", m.string[m.end():]):
             return m.group(0)  # (another "it" after: "... off the brown block and set it down next to it", the brown one)
+        rest = m.string[m.end():]
+        if re.match(r"(?i)\s+(?:down\s+)?(?:in|at|into|to)\s+the\s+(?:[a-z]+\s+){0,2}?(?:half|side|corner|cent(?:er|re)|middle|front|back|left|right"
+                    r"|edge)\b(?!\s+of\s+(?:the\s+)?(?!table)\w)", rest):  # a place on the table: taken off, so on the table there
+            return f"{m.group('verb')} the {stacks[0][-1]} cube on the table"
         return f"{m.group('verb')} the {stacks[0][-1]} cube"
 
     return [s if START_SENTENCE_RE.match(s) or STARTS_FACT_RE.match(s) else
