@@ -522,6 +522,10 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "picks a cube by its place in an order nobody defined or by what happened earlier: rpg's cubes are known "
      "only by colour and label; name the cube (e.g. \"the red block\"), or say the structure it is part of "
      "(\"the top block of the tower\")"),
+    ("reference", r"\b(?:on|onto|to|in|into)\s+(?:(?:two|three|2|3|their|own|different|separate|distinct|individual)\s+)+(?:goal\s+)?patches\b"
+                  r"(?!\s*(?:[:,(]|of\s+(?:the\s+)?(?:same|their|its|matching)))",
+     "does not say which patch each cube goes on (patches are known by colour): name each one (e.g. \"the red cube on "
+     "the red patch and the blue cube on the green patch\")"),
     ("reference", r"\b(?:as\s+)?(?:shown|displayed|depicted|pictured|illustrated|demonstrated)\b"
                   r"|\bthe\s+same\s+(?:[a-z]+\s+)?(?:pyramid|tower|stack|row|line|wall|grid|circle|structure|task|thing|one)\s+as\s+"
                   r"(?:in|before|earlier|last|for|from|at)\b"
