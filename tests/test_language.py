@@ -5820,3 +5820,26 @@ def test_a_start_said_as_what_is_there_now(text, expected):
 def test_a_stack_said_with_another_cube_moved_stays_the_goal():
     assert sorted(meaning(parse("The red cube is stacked on the blue cube. Put the green cube next to it."))) == [
         "next_to(blue,green)", "stack(blue,red)"]
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Build a tower of number blocks with 1 at the bottom, then 2, then 3 on top.", ["stack(1,2,3)"]),
+    ("Build a tower of letter cubes: A at the bottom, then B, then C on top.", ["stack(A,B,C)"]),
+    # a start said as what sits there, then a cube put on top and the tower restated
+    ("A green block sits on a brown block. Put a gray block on top so the tower is brown, green, gray.",
+     ["stack(brown,green,gray)", "start:stack(brown,green)"]),
+    # the restated tower without its direction: it runs from the cube put on top (a fourth cube had been made)
+    ("Put a gray block on top so the tower is brown, green, gray.", ["stack(brown,green,gray)"]),
+])
+def test_label_towers_from_the_bottom_and_restated_towers(text, expected):
+    assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "Initially green is on brown. Put a gray block on top so the tower is gray, green, brown.",  # not that tower
+    "Put a gray block on top so the tower is green, gray, brown.",  # gray at neither end
+    "Put the red cube and the blue cube on different patches.",  # which patch each? (both had gone on one gray patch)
+])
+def test_restated_towers_that_disagree_and_unnamed_patches_are_refused(text):
+    with pytest.raises(BadInput):
+        parse(text)

@@ -3322,11 +3322,25 @@ NOTATION_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 )
 """Counts and goals written as notation ("3x white", "2 rows x 3", "on(red, green)") and articles a terse writer leaves out."""
 
+RESTATED_TOWER_RE = re.compile(rf"\b(?:put|place|set|add|stack)\s+(?:a|an|the|one)\s+(?P<c>{COLOR_RE})\s+(?:cube|block)\s+on\s+top\s*,?\s*so\s+(?:that\s+)?"
+                rf"(?:the\s+)?(?:tower|stack)\s+(?:reads|is|becomes|ends\s+up\s+as|goes)\s*:?\s*(?P<list>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})"
+                rf"|\s+and\s+(?:{COLOR_RE}))+)(?:\s*,?\s+(?P<way>from\s+(?:the\s+)?bottom(?:\s+(?:up|to\s+(?:the\s+)?top))?|bottom\s+to\s+top"
+                r"|from\s+(?:the\s+)?top(?:\s+(?:down|to\s+(?:the\s+)?bottom))?|top\s+to\s+bottom)\b)?")
+"""A cube put on top, then the whole tower restated ("put a brown cube on top, so the tower reads white, blue, brown from the
+bottom"): read as that tower (:func:`_restated_tower`); one whose list does not end at the cube put on top is refused
+(:func:`rpg.schema.reading.normalize_words`; it had been read as a fourth cube)."""
+
+
 def _restated_tower(m: re.Match) -> str:
     """The tower a result clause lists (``list``, read ``way``), when its top is the cube put on top (``c``)."""
-    way = m.group("way")
-    up = "top" not in way or way.index("bottom") < way.index("top") if "bottom" in way else False
     cubes = re.findall(rf"\b(?:{COLOR_RE})\b", m.group("list"))
+    way = m.group("way")
+    if way is None:  # no direction said: the list runs from the cube put on top, if it is at exactly one end
+        if (cubes[0] == m.group("c")) == (cubes[-1] == m.group("c")):
+            return m.group(0)
+        up = cubes[-1] == m.group("c")
+    else:
+        up = "top" not in way or way.index("bottom") < way.index("top") if "bottom" in way else False
     cubes = cubes if up else cubes[::-1]
     return f"build a tower from bottom to top: {', '.join(cubes)}" if cubes[-1] == m.group("c") else m.group(0)
 
@@ -3447,11 +3461,7 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 rf"(?:\s+(?:the|a|an)\s+(?:{COLOR_RE})\s+(?:cube|block)\b)*\s*,?\s+and\s+(?:the|a|an)\s+(?:{COLOR_RE})\s+(?:cube|block)\b)"), r"\1, "),
     # "put a brown cube on top, so the tower reads white, blue, brown from the bottom": the result restates the whole
     # tower, its top the cube put there (the cube had been counted twice, a fourth under the tower)
-    (re.compile(rf"\b(?:put|place|set|add|stack)\s+(?:a|an|the|one)\s+(?P<c>{COLOR_RE})\s+(?:cube|block)\s+on\s+top\s*,?\s*so\s+(?:that\s+)?"
-                rf"(?:the\s+)?(?:tower|stack)\s+(?:reads|is|becomes|ends\s+up\s+as|goes)\s*:?\s*(?P<list>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})"
-                rf"|\s+and\s+(?:{COLOR_RE}))+)\s*,?\s+(?P<way>from\s+(?:the\s+)?bottom(?:\s+(?:up|to\s+(?:the\s+)?top))?|bottom\s+to\s+top"
-                r"|from\s+(?:the\s+)?top(?:\s+(?:down|to\s+(?:the\s+)?bottom))?|top\s+to\s+bottom)\b"),
-     lambda m: _restated_tower(m)),
+    (RESTATED_TOWER_RE, lambda m: _restated_tower(m)),
     # "a row running left to right of black, orange, orange", "a row of red, blue, green going left to right": the
     # row's direction said with a verb of motion, or before its cubes
     (re.compile(r"\b(?:running|going|reading|heading)\s+(?:from\s+)?(?=(?:the\s+)?(?:left|right)\s+to\s+(?:the\s+)?(?:left|right)\b)"), "from "),
@@ -3756,6 +3766,13 @@ ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "put any block on top of the red one": a cube of any colour (one more, whichever)
     (re.compile(r"(?i)\b(put|place|set|stack)\s+any\s+(cube|block)\b(?=\s+(?:on|onto|next\s+to|beside|behind|in\s+front\s+of|to\s+the))"),
      r"\1 a \2"),
+    # "a tower of number blocks with 1 at the bottom, then 2, then 3 on top": the labels listed from the bottom (the
+    # digits had been read as counts)
+    (re.compile(r"(?i)\b(?P<s>tower|stack)\s+of\s+(?P<k>digit|number|numbered|letter|lettered)\s+(?P<n>blocks|cubes)\s*(?:,\s*)?(?:with\s+|:\s*)"
+                r"(?P<a>(?-i:[A-Z]|\d))\s+(?:at|on)\s+the\s+(?:bottom|base)\s*,?\s+(?P<mid>(?:then\s+(?-i:[A-Z]|\d)\s*,?\s+)*)"
+                r"(?:then\s+|and\s+)?(?P<z>(?-i:[A-Z]|\d))\s+(?:on\s+top|at\s+the\s+top)\b"),
+     lambda m: f"{m.group('s')} of {m.group('k')} {m.group('n')} from bottom to top: "
+     + ", ".join([m.group("a"), *re.findall(r"[A-Z]|\d", m.group("mid")), m.group("z")])),
     # "the letters B, E, D spelled out left to right", "letters S, T, O, P, left to right": label cubes listed in their
     # order along a direction, with no structure said (it had found no task): spelled, or a row
     (re.compile(r"(?:^|(?<=[.;:]\s))(?i:(?:goal\s*:\s*)?(?:the\s+)?(?:letters?|digits?|numbers?)(?:\s+(?:cubes|blocks))?)\s+"

@@ -1258,6 +1258,10 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         text = lexicon.PER_LAYER_RE.sub(_per_layer, text)
     text = _label_tower_roles(text)
     text = lexicon.rewrite(lexicon.WORD_ORDER_REWRITES, text)
+    restated = lexicon.RESTATED_TOWER_RE.search(text)
+    if restated:  # "put a gray block on top so the tower is green, gray, brown": its top is not the cube put there
+        raise ParseError(f"'{restated.group(0)}' in \"{original[:80]}\" restates a tower whose top is not the "
+                         f"{restated.group('c')} cube put on top; say the tower once, from bottom to top, or use --model")
     two_colours = re.search(rf"\b(?:the|a|an)\s+((?:{COLOR_RE})\s+(?:{COLOR_RE}))\s+(?:block|cube|one)\b(?!s)", text)
     if two_colours and len(set(two_colours.group(1).split())) == 2:  # "put the blue green cube on ...": one cube, two colours
         raise ParseError(f"'{two_colours.group(0)}' in \"{original[:80]}\" names one cube by two colours; say which colour it "

@@ -23,7 +23,7 @@ from rpg.schema import lexicon
 from rpg.schema.builder import Builder
 from rpg.schema.lexicon import COLOR_RE, MARKUP_RES, NUMBER_WORDS
 from rpg.schema.model import TaskSchema
-from rpg.schema.reading import Inexpressible, canon_color, task_slug
+from rpg.schema.reading import Inexpressible, ParseError, canon_color, task_slug
 
 _NAME = rf"(?:{COLOR_RE}|(?-i:[A-Z])(?![\w'])|\d(?!\w))"
 """A cube's name in a start: a colour, or a letter or digit cube's label ("block A", "the 3 cube")."""
@@ -403,9 +403,11 @@ the table"): the tower named is rho_0's stack, what follows the goal."""
 
 THERE_IS_START_RE = re.compile(
     rf"(?i)^\s*(?:there(?:'s|\s+is)\s+(?:a|an|the)\s+(?P<top>{_NAME})(?:\s+(?:cube|block))?\s+(?:(?:stacked|sitting|resting|placed)\s+)?"
-    rf"|(?:the\s+)?(?P<top2>{_NAME})(?:\s+(?:cube|block))?\s+is\s+(?:currently\s+|now\s+|already\s+)?(?:stacked|sitting|resting)\s+)"
+    rf"|(?:the\s+|an?\s+)?(?P<top2>{_NAME})(?:\s+(?:cube|block))?\s+(?:is\s+(?:currently\s+|now\s+|already\s+)?(?:stacked|sitting|resting|standing)"
+    r"|sits|rests|stands)\s+)"
     rf"(?:on\s+top\s+of|on|atop)\s+(?:a|an|the)\s+(?P<bottom>{_NAME})(?:\s+(?:cube|block|one))?\s*[.;]\s+"
-    r"(?P<verb>(?:then\s+)?(?:put|place|move|take|set|bring|slide|push|lift|remove|unstack))\s+(?P<obj>it\b|the\s+(?P<moved>\w+))")
+    r"(?:(?P<verb>(?:then\s+)?(?:put|place|move|take|set|bring|slide|push|lift|remove|unstack))\s+(?P<obj>it\b|the\s+(?P<moved>\w+))"
+    rf"|(?=(?:then\s+)?(?:put|place|set|stack|add)\s+(?:a|an|the)\s+{_NAME}\s+(?:cube|block)\s+on\s+top\b(?!\s+of)))")
 """A start said as what is there now, one cube on another, before a command that moves the top one ("There is a red cube on
 top of the blue cube. Put it on the green patch.", "The red cube is stacked on the blue cube. Take it off ..."): read
 as "Initially ..." (the stack had been read as the goal, and "it" as the stack: silently wrong).  Only where the command
@@ -416,6 +418,8 @@ def _there_is_start(m: re.Match) -> str:
     top = m.group("top") or m.group("top2")
     if m.group("moved") and m.group("moved").lower() != top.lower():
         return m.group(0)  # another cube moved: "the red cube is stacked on the blue cube" may be the goal's
+    if not m.group("verb"):  # "... Put a gray block on top": the start's tower topped
+        return f"Initially the {top} cube is on the {m.group('bottom')} cube. "
     obj = f"the {top} cube" if m.group("obj").lower() == "it" else m.group("obj")
     return f"Initially the {top} cube is on the {m.group('bottom')} cube. {m.group('verb')} {obj}"
 
@@ -576,6 +580,14 @@ def _start_ends_named(sentences: list[str]) -> list[str]:
         tower = [*stacks[0], _canon(m.group("new"))]
         if not topped or not all(re.fullmatch(COLOR_RE, c) for c in tower) or len(set(tower)) != len(tower):
             return m.group(0)
+        if m.group("restated"):  # "..., so the tower is brown, green, gray": said again, the same tower or refused
+            said = [_canon(c) for c in re.findall(rf"(?i)\b(?:{COLOR_RE})\b", m.group("rlist"))]
+            way = (m.group("rway") or "").lower()
+            if way.startswith("top") or way.startswith("from the top") or way.startswith("from top"):
+                said = said[::-1]
+            if said != tower:
+                raise ParseError(f"'{m.group('restated').strip(' ,')}' is not the tower the start and the cube put on top "
+                                 f"make (bottom to top: {', '.join(tower)}); say the tower once, or use --model")
         return "build a tower from bottom to top: " + ", ".join(tower)
 
     def taken_then_put(m: re.Match) -> str:  # "take the purple cube off and put it on the red patch": put it there
@@ -606,7 +618,12 @@ _ON_TOP_RE = re.compile(rf"(?i)(?:^\s*(?:then\s+)?(?:put|place|set|stack|add|lay
                         r"(?:\s+(?:cube|block|one))?\s+)(?:on\s+(?:the\s+)?top(?:\s+of\s+(?:it|the\s+(?:tower|stack)"
                         rf"|the\s+(?P<onto>{_NAME})(?:\s+(?:cube|block|one))?))?"
                         rf"|onto\s+(?:it|the\s+(?:tower|stack)|the\s+(?P<onto2>{_NAME})(?:\s+(?:cube|block|one))?)"
-                        rf"|on\s+the\s+(?P<onto3>{_NAME})(?:\s+(?:cube|block|one))?)(?=\s*(?:[.!;,]|$|\bso\b))")
+                        rf"|on\s+the\s+(?P<onto3>{_NAME})(?:\s+(?:cube|block|one))?)"
+                        rf"(?P<restated>\s*,?\s*so\s+(?:that\s+)?(?:the\s+)?(?:tower|stack)\s+(?:reads|is|becomes|goes)\s*:?\s*"
+                        rf"(?P<rlist>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})|\s+and\s+(?:{COLOR_RE}))+)"
+                        r"(?:\s*,?\s+(?P<rway>from\s+(?:the\s+)?(?:bottom|top)(?:\s+(?:up|down|to\s+(?:the\s+)?(?:top|bottom)))?"
+                        r"|bottom\s+to\s+top|top\s+to\s+bottom))?)?"
+                        r"(?=\s*(?:[.!;,]|$|\bso\b))")
 """A goal that adds a cube on top of the start's one stack ("Put gray on top.", "Put the gray block on top of it.", "Put
 the white block on top of the orange block", orange the stack's top): the tower, the start's cubes with it on top
 (:func:`_start_ends_named`; a cube named that is not the stack's top leaves the words as they are)."""
