@@ -5843,3 +5843,13 @@ def test_label_towers_from_the_bottom_and_restated_towers(text, expected):
 def test_restated_towers_that_disagree_and_unnamed_patches_are_refused(text):
     with pytest.raises(BadInput):
         parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("new task -> red near blue, green far from both", ["far_from(blue,green)", "far_from(green,red)", "next_to(blue,red)"]),
+    ("pile - 4 brwon cubes - back right", ["pile(brown,brown,brown,brown)@back_right"]),
+    ("note for Tues demo - put the yelow cube on top of the green one, then both of them on the blue patch",
+     ["on_patch(green,patch:blue)", "stack(green,yellow)"]),
+])
+def test_far_from_both_a_specs_last_place_and_a_stack_then_onto_a_patch(text, expected):
+    assert sorted(meaning(parse(text))) == expected

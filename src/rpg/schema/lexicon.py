@@ -1293,7 +1293,7 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 before one plural patch noun, "respectively", "keep", the table's centre and sides.  A "centered"
 left after them says no place and is refused."""
 
-BOTH_OF_THEM_RE = re.compile(rf"\b(?P<subj>the\s+(?P<c>{_COLOR_WORD})\s+(?:block|cube))\s+"
+BOTH_OF_THEM_RE = re.compile(rf"\b(?P<subj>(?:the\s+(?P<c>{_COLOR_WORD})\s+(?:block|cube))|(?<![\w-]\s)(?P<c2>{_COLOR_WORD}))\s+"
                              r"(?:(?:goes|go|is|sits|stays|ends\s+up|(?:should|must)\s+(?:be|go|end\s+up))\s+)?"
                              rf"(?P<rel>{_PAIRWISE_WORDS})\s+"
                              r"(?:both\s+of\s+them|them\s+both|both|each\s+of\s+them|the\s+two\s+of\s+them|all\s+of\s+them|them\s+all)\b")
@@ -3305,6 +3305,9 @@ NOTATION_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      r"\1 \2 cubes"),
     (re.compile(r"\b(\d+)(?:\s+|\s*-\s*)by(?:\s+|\s*-\s*)(?=\d)"),
      r"\1x"),
+    # "pile - 4 brown cubes - back right": a spec's last field, the place on the table
+    (re.compile(r"\s+-\s+(?=(?:(?:front|back|rear)[\s-]+(?:left|right)|left|right|front|back|cent(?:er|re)|middle)\s*$)"),
+     " in the "),
     # "build 3-stack": a tower of that many cubes, its count glued to its noun
     (re.compile(r"\b(?:a\s+)?(\d+)-(stack|tower)\b"), r"a \2 of \1"),
     # "a two by two grid": the size in words (number words become digits later, after these rewrites)
@@ -3418,7 +3421,18 @@ tower made of a red block on top of a blue block"): read as the tower built, the
 had been one the speaker sees).  Only this one shape: a description after the noun that does not give the tower's
 cubes and their order ("the tower made of wood") is left a reference, refused."""
 
+def _both_onto_patch(m: re.Match) -> str:
+    """"put the yellow cube on top of the green one, then both of them on the blue patch": the stack said before, on the
+    patch ("... on the green one on the blue patch"), when the text before is that one stack of two named cubes."""
+    if not re.fullmatch(rf"(?:put|place|stack|set)\s+the\s+(?:{COLOR_RE})\s+(?:cube|block)\s+on(?:\s+top\s+of)?\s+the\s+(?:{COLOR_RE})"
+                        r"\s+(?:cube|block|one)", m.string[:m.start()].strip()):
+        return m.group(0)
+    return " "
+
+
 WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    (re.compile(rf"\s*,?\s*(?:and\s+)?then\s+(?:put\s+|place\s+|move\s+|set\s+)?(?:both\s+of\s+them|them\s+both|both)\s+"
+                rf"(?=on\s+(?:to\s+)?the\s+(?:{COLOR_RE})\s+(?:goal\s+)?patch\s*[.!]?\s*$)"), _both_onto_patch),
     (INTRODUCED_CUBES_RE, _introduced_cubes),
     (RELATED_TO_MADE_TOWER_RE, lambda m: f"build a {m.group('s')} of {m.group('chain')} and {m.group('v')} {m.group('x')} {m.group('rel')} it"),
     (BARE_PLACED_THEN_RE, _bare_placed_then),

@@ -1502,7 +1502,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     text = lexicon.rewrite(lexicon.LABEL_CUBE_REWRITES, text)
     for m in reversed(list(lexicon.BOTH_OF_THEM_RE.finditer(text))):  # "... far from both of them": the cubes before
         named = [c for c in dict.fromkeys(re.findall(rf"\b({COLOR_RE})\b(?!\s+(?:goal\s+|target\s+)?patch)", text[:m.start()]))
-                 if c != m.group("c")]
+                 if c != (m.group("c") or m.group("c2"))]
         if len(named) < 2 or (len(named) > 2 and not re.search(r"\ball\b", m.group(0))):
             raise ParseError(f"'{m.group(0)}' in \"{original[:80]}\" does not say which cubes ({len(named)} other colours are "
                              "named before it); name them (e.g. \"far from the red and the blue blocks\")")
