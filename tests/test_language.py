@@ -5853,3 +5853,11 @@ def test_restated_towers_that_disagree_and_unnamed_patches_are_refused(text):
 ])
 def test_far_from_both_a_specs_last_place_and_a_stack_then_onto_a_patch(text, expected):
     assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", ["Put the yellow block on them.", "Put the yellow block next to them."])
+def test_them_with_one_cube_named_is_refused(text):
+    # (a red and a blue cube had been made up for "them")
+    with pytest.raises(Inexpressible) as exc:
+        parse(text)
+    assert exc.value.kind == "reference"

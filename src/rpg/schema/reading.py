@@ -373,7 +373,11 @@ def _refuse_unresolved_pronoun(text: str, original: str) -> None:
     (:data:`lexicon.REFERENCE_PRONOUN_RE`, :data:`lexicon.ANTECEDENT_RE`), or "the other block"
     has no cube set apart before it (:data:`lexicon.OTHER_RE`)."""
     for m in lexicon.REFERENCE_PRONOUN_RE.finditer(text):
-        if not lexicon.ANTECEDENT_RE.search(text[:m.start()]):
+        before = text[:m.start()]
+        plural = m.group(0) in ("them", "they") and not re.search(r"\b(?:cubes|blocks|bricks|ones|tower|stack|pile|row|line|digits|letters|numbers|labels|both|all)\b", before)
+        if not lexicon.ANTECEDENT_RE.search(before) or (  # "put the yellow block on them": one cube named, "them" no others
+                plural and len(re.findall(rf"\b(?:{COLOR_RE})\b(?!\s+(?:goal\s+)?patch)|\b[a-z]\s+(?:block|cube)\b|\b\d\s+(?:block|cube)\b",
+                                          before)) < 2):
             word = m.group(0)
             raise Inexpressible("reference", [word], "refers to something the instruction has not named (a cube the "
                                 "speaker sees, or one from an earlier turn): rpg's cubes are known only by colour "
