@@ -5861,3 +5861,36 @@ def test_them_with_one_cube_named_is_refused(text):
     with pytest.raises(Inexpressible) as exc:
         parse(text)
     assert exc.value.kind == "reference"
+
+
+@pytest.mark.parametrize("text, expected", [
+    # classes a helper reported from the session's unread set (these examples are the helper's own)
+    ("Stack for the test. Base: red. Next: white. Top: green.", ["stack(red,white,green)"]),  # (white had been dropped)
+    ("Tower. Base: blue. Then: yellow. Top: black.", ["stack(blue,yellow,black)"]),
+    ("Tower task. Base: red. Next: white. Next: blue. Top: green.", ["stack(red,white,blue,green)"]),
+    ("build a tower: red first, then white on it, then blue on the white", ["stack(red,white,blue)"]),  # (a green cube made up)
+    ("Set the red cube in the gap between the blue cube and the yellow cube.", ["between(red;blue,yellow)"]),
+    ("For this trial the red cube should end up on the blue cube.", ["stack(blue,red)"]),
+    ("Put the green cube balanced on the red cube.", ["stack(red,green)"]),
+    ("put the white cube in the back right corner and the gray cube right next to it",
+     ["in_region(white,back_right)", "next_to(gray,white)"]),
+    ("a line running front to back: yellow at the front, then gray, then pink", ["line[front_to_back](yellow,gray,pink)"]),
+    ("line of three cubes from left to right with red on the left, then white, then blue", ["line[left_to_right](red,white,blue)"]),
+])
+def test_the_unread_sets_classes_read(text, expected):
+    assert sorted(meaning(parse(text))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    "Tower. Top: black. Next: yellow. Base: blue.",  # a cube between the roles said top first: where?
+    "line of three cubes from left to right with red on the right, then white, then blue",
+])
+def test_roles_between_ends_said_top_first_and_an_end_against_the_direction_are_refused(text):
+    with pytest.raises(BadInput):
+        parse(text)
+
+
+def test_a_cube_picked_by_its_place_now_is_refused_as_a_reference_to_the_current_scene():
+    with pytest.raises(Inexpressible, match="current scene") as exc:
+        parse("Put the rightmost cube on the green cube.")
+    assert exc.value.kind == "reference"

@@ -1105,8 +1105,8 @@ def _completed(head: str) -> str:
             return head + tail
     return head
 REGION_ANTECEDENT_RE = re.compile(
-    rf"\b(?P<c>{COLOR_RE})\s+(?:block|cube|box)\s+(?P<place>(?:in|at|on|to)\s+the\s+(?:far\s+|very\s+)?(?:left|right|front|back|rear|center"
-    r"|centre|middle)(?:\s+(?:side|half|edge|end|part|area|region|zone))?(?:\s+of\s+the\s+(?:table|workspace))?)\s*,?\s+and\s+"
+    rf"\b(?P<c>{COLOR_RE})\s+(?:block|cube|box)\s+(?:(?:goes|is|sits)\s+)?(?P<place>(?:in|at|on|to|into)\s+the\s+(?:far\s+|very\s+)?(?:(?:front|back|rear)[\s-]+(?:left|right)\s+corner"
+    r"|left|right|front|back|rear|center|centre|middle)(?:\s+(?:side|half|edge|end|part|area|region|zone))?(?:\s+of\s+the\s+(?:table|workspace))?)\s*,?\s+and\s+"
     rf"(?P<rest>(?:(?:put|place|set|move)\s+)?the\s+(?:{COLOR_RE})\s+(?:block|cube|one)\s+(?:[a-z]+\s+){{0,3}}?)"
     r"(?P<pro>(?:to\s+)?its\s+(?P<side>left|right|front|back)(?:\s+side)?|it)\b(?!\s*(?:'s|is)\b)")
 """A cube placed in a region, then another cube related to "it" ("Put the red cube in the center and
@@ -3430,7 +3430,25 @@ def _both_onto_patch(m: re.Match) -> str:
     return " "
 
 
+_END_THEN_RE = re.compile(
+    rf"\b(?P<first>{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:at\s+the\s+(?P<end>front|back|left|right)|on\s+the\s+(?P<end2>left|right)|(?P<f>first))"
+    rf"\s*,?\s*(?P<rest>then\s+(?:{COLOR_RE})(?:\s*,?\s*(?:and\s+)?then\s+(?:{COLOR_RE}))*)\b")
+"""A sequence whose first item is said with its end ("yellow at the front, then gray, then pink", "with red on the left,
+then white, then blue"): read as the list, when the direction said elsewhere starts from that end (:func:`_end_then`)."""
+
+
+def _end_then(m: re.Match) -> str:
+    end = m.group("end") or m.group("end2")
+    said = re.search(r"\b(front|back|left|right)\s+to\s+(?:the\s+)?(?:front|back|left|right)\b|\b(bottom)\s+(?:to|up)\b", m.string)
+    if end and not (said and said.group(1) == end):
+        return m.group(0)  # the end is not where the direction said starts (or none is said): left as written
+    if not end and not said:
+        return m.group(0)  # "red first": first from which end?
+    return ", ".join([m.group("first"), *re.findall(rf"\b(?:{COLOR_RE})\b", m.group("rest"))])
+
+
 WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    (_END_THEN_RE, _end_then),
     (re.compile(rf"\s*,?\s*(?:and\s+)?then\s+(?:put\s+|place\s+|move\s+|set\s+)?(?:both\s+of\s+them|them\s+both|both)\s+"
                 rf"(?=on\s+(?:to\s+)?the\s+(?:{COLOR_RE})\s+(?:goal\s+)?patch\s*[.!]?\s*$)"), _both_onto_patch),
     (INTRODUCED_CUBES_RE, _introduced_cubes),
@@ -3541,6 +3559,13 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 """Word orders of other languages and terse notes ("the cube brown", "the corner back right", "in bottom", "3 reds", separators): English order."""
 
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "in the gap between the blue cube and the yellow cube", "balanced on the red cube", ", whatever arrangement"
+    (re.compile(r"\b(?:in|into)\s+the\s+(?:gap|space)\s+between\b"), "between"),
+    (re.compile(r"\bbalanced\s+(?=(?:on|onto|atop|upon)\b)"), ""),
+    (re.compile(r"\s*,?\s*\b(?:in\s+)?(?:whatever|any|whichever)\s+arrangement(?:\s+(?:you\s+like|is\s+fine))?\b"), " in any order"),
+    # "For this trial the red cube should end up on the blue cube": the trial named, no comma after it
+    (re.compile(r"^for\s+this\s+(?:trial|run|task|episode|test|eval(?:uation)?|experiment|demo|variant|one)\s+(?=(?:the|a|an)\s|"
+                r"(?:put|place|stack|build|make|arrange|set|move|line)\b)"), ""),
     # "blue blue red red", "red blue red blue": a transcript's list of cubes with no commas, a colour
     # said again for each cube; "the red red block" is one cube (a stutter)
     (re.compile(rf"(?P<det>\b(?:the|a|an)\s+)?\b(?P<run>(?:{COLOR_RE})(?:\s+(?:{COLOR_RE}))+)\b(?P<noun>\s+(?:block|cube|one)\b)?"),

@@ -393,8 +393,8 @@ def _refuse_unresolved_pronoun(text: str, original: str) -> None:
     for m in lexicon.PLACE_PICKED_RE.finditer(text):
         before = re.sub(r"\b(?:stack|pile|line|row)\s*$", "", text[:m.start()])  # "stack the top block": a verb
         if not lexicon.PLACED_PART_INTRO_RE.search(before):
-            raise Inexpressible("reference", [m.group(0)], "picks a cube by its place in a scene the instruction has not "
-                                "described (where the speaker sees it): name the cube by colour or label, or describe "
+            raise Inexpressible("reference", [m.group(0)], "picks a cube by its place in the current scene, which the "
+                                "instruction has not described (where the speaker sees it): name the cube by colour or label, or describe "
                                 "the structure it stands in first (e.g. \"build a tower of three blocks and make the "
                                 "top block red\")", original)
     order = lexicon.THIS_ORDER_RE.search(text)
@@ -1204,6 +1204,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
                                                             r"thing|check|condition|episode|run|trial)\b", "",
                                                             m.group("label")))  # "item 2", "just one task"
               and not _inexpressible(m.group("label"))
+              and not re.fullmatch(r"\s*(?:next|then|second|third|fourth|fifth|2nd|3rd|4th|5th|after\s+that|afterwards|middle|mid"
+                                   r"|upper|lower)\s*", m.group("label"))  # "Base: red. Next: white. Top: green.": a role
               and not lexicon.START_WORD_RE.search(m.group("label"))]  # "Let me describe the start: ...": the start, not a label
     for m in reversed(labels):  # "Obj: red on blue.", "Checklist: ...": a label that names nothing of the task
         text = text[:m.start("label")] + text[m.end():]
@@ -1294,6 +1296,13 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
     # colours had been read as a list from the bottom, red at the bottom)
     if re.search(r"\b(?:towers?|stacks?|stacked)\b", text):  # "The cube at the top is orange", "Middle cube must be white."
         text = _role_sentences(text)
+    ends = [m.group(1) for m in re.finditer(r"\b(bottom|base|top)\s*[:=]", text)]
+    if ends in (["bottom", "top"], ["base", "top"]):
+        # "Base: red. Next: white. Top: green.", "Base: red. Second: white. Third: blue. Top: green.": the cubes between
+        # the ends in turn (the labels "Next:" had been dropped as headings, the tower's middle with them)
+        ordinals = re.findall(r"\b(second|third|fourth|fifth)\s*[:=]", text)
+        if ordinals == ["second", "third", "fourth", "fifth"][:len(ordinals)]:
+            text = re.sub(rf"\b(?:next|then|after\s+that|second|third|fourth|fifth)\s*[:=]\s*(?=(?:{COLOR_RE})\b)", "then ", text)
     said = list(re.finditer(rf"(?<!\bto\s)\b(top|upper|middle|mid|lower|bottom|base|second|third|fourth|fifth)\s*[:=]\s*"
                             rf"({COLOR_RE})\b(?!\s*,\s*(?:{COLOR_RE}))", text))
     same = {"base": "bottom", "mid": "middle"}
@@ -1308,6 +1317,13 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
             middle = re.findall(rf"\b(?:{COLOR_RE})\b", between.group(1))
             text = text[:said[0].start()] + "from bottom to top: " + ", ".join([roles["bottom"], *middle, roles["top"]]) + text[said[-1].end():]
         else:
+            at = {m.start() for m in said}
+            stray = next((m for m in re.finditer(rf"\b([a-z]+)\s*[:=]\s*(?:{COLOR_RE})\b", text[said[0].start():said[-1].end()])
+                          if m.start() + said[0].start() not in at), None)
+            if stray:  # "Top: black. Next: yellow. Base: blue.": a cube between the roles with no place they give
+                raise ParseError(f"'{stray.group(0)}' in \"{original[:80]}\" names a cube between the tower's roles with no place "
+                                 "among them; say the tower from bottom to top (e.g. \"Base: blue. Next: yellow. Top: black.\"), "
+                                 "or use --model")
             orders = (("bottom", "top"), ("bottom", "middle", "top"), ("bottom", "lower", "upper", "top"))
             order = next((o for o in orders if set(o) == set(roles)), None)
             if order is None or len(said) != len(roles):  # "top=orange, middle=white" (no bottom), "second=white": which order?
@@ -1700,7 +1716,7 @@ _CHAIN_ROLES = (
     ("under", r"(?:directly|right|just|immediately)\s+(?:below|under|underneath|beneath)\s+" + _CHAIN_REF.format(g="under_ref")),
     ("higher", r"(?:above|over|higher\s+than)\s+" + _CHAIN_REF.format(g="higher_ref")),
     ("lower", r"(?:below|under|underneath|beneath|lower\s+than)\s+" + _CHAIN_REF.format(g="lower_ref")),
-    ("bottom", r"down|(?:at|on|in)\s+the\s+(?:very\s+)?(?:bottom|base)|as\s+the\s+(?:base|bottom)|(?:at|on)\s+the\s+table"),
+    ("bottom", r"down|(?:at|on|in)\s+the\s+(?:very\s+)?(?:bottom|base)|as\s+the\s+(?:base|bottom)|(?:at|on)\s+the\s+table|first"),
     ("top", r"(?:at|on)\s+the\s+(?:very\s+)?top|on\s+top|as\s+the\s+top"),
     ("middle", r"in\s+the\s+middle"),
 )
