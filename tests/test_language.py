@@ -5894,3 +5894,15 @@ def test_a_cube_picked_by_its_place_now_is_refused_as_a_reference_to_the_current
     with pytest.raises(Inexpressible, match="current scene") as exc:
         parse("Put the rightmost cube on the green cube.")
     assert exc.value.kind == "reference"
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Make one pile of the two green cubes and another pile of the two white cubes.", ["pile(green,green)", "pile(white,white)"]),
+    ("Task: a row of five cubes. Two blue on the left, then one yellow, then two blue on the right.",
+     ["line[left_to_right](blue,blue,yellow,blue,blue)"]),
+    ("Put the pink cube left of the gray cube and the cyan cube right of the gray cube, all three in a row.",
+     ["line[left_to_right](pink,gray,cyan)"]),
+    ("Front to back: yellow first, then red, then green last.", ["line[front_to_back](yellow,red,green)"]),
+])
+def test_counted_piles_counted_row_groups_and_sides_in_a_row(text, expected):
+    assert sorted(meaning(parse(text))) == expected

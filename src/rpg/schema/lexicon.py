@@ -3431,7 +3431,7 @@ def _both_onto_patch(m: re.Match) -> str:
 
 
 _END_THEN_RE = re.compile(
-    rf"\b(?P<first>{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:at\s+the\s+(?P<end>front|back|left|right)|on\s+the\s+(?P<end2>left|right)|(?P<f>first))"
+    rf"\b(?P<first>{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:at\s+the\s+(?P<end>front|back|left|right)|on\s+the\s+(?P<end2>left|right))"
     rf"\s*,?\s*(?P<rest>then\s+(?:{COLOR_RE})(?:\s*,?\s*(?:and\s+)?then\s+(?:{COLOR_RE}))*)\b")
 """A sequence whose first item is said with its end ("yellow at the front, then gray, then pink", "with red on the left,
 then white, then blue"): read as the list, when the direction said elsewhere starts from that end (:func:`_end_then`)."""
@@ -3440,14 +3440,49 @@ then white, then blue"): read as the list, when the direction said elsewhere sta
 def _end_then(m: re.Match) -> str:
     end = m.group("end") or m.group("end2")
     said = re.search(r"\b(front|back|left|right)\s+to\s+(?:the\s+)?(?:front|back|left|right)\b|\b(bottom)\s+(?:to|up)\b", m.string)
-    if end and not (said and said.group(1) == end):
-        return m.group(0)  # the end is not where the direction said starts (or none is said): left as written
-    if not end and not said:
-        return m.group(0)  # "red first": first from which end?
+    if not (said and said.group(1) == end) or re.match(r"\s*,?\s*(?:last|at\s+the\s+(?:end|back|front|left|right))\b", m.string[m.end():]):
+        return m.group(0)  # the end is not where the direction said starts (or none is said), or the last one is placed
+        # too: left as written
     return ", ".join([m.group("first"), *re.findall(rf"\b(?:{COLOR_RE})\b", m.group("rest"))])
 
 
+_GROUP = rf"(?:one|two|three|four|five|a|an|\d)\s+(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?|ones?))?"
+COUNTED_ROW_GROUPS_RE = re.compile(
+    rf"\b(?P<first>{_GROUP})\s+on\s+the\s+left\s*(?P<rest>(?:,\s*(?:and\s+)?then\s+{_GROUP}(?!\s+on\s+the\s+left\b))+)"
+    r"(?:\s+on\s+the\s+right)?\b")
+"""A row said by counted colour groups from its left end ("two blue on the left, then one yellow, then two blue on the
+right"): read as the row's cubes from left to right (:func:`_counted_row_groups`), where the text says a row or line."""
+
+
+def _counted_row_groups(m: re.Match) -> str:
+    if not re.search(r"\b(?:row|line)s?\b", m.string):
+        return m.group(0)
+    cubes = []
+    for n, c in re.findall(rf"\b(one|two|three|four|five|a|an|\d)\s+({COLOR_RE})\b", m.group(0)):
+        cubes += [c] * (int(n) if n.isdigit() else NUMBER_WORDS.get(n, 1))
+    return "from left to right: " + ", ".join(cubes)
+
+
+_SIDE_OF = r"(?:goes\s+|is\s+|sits\s+)?(?:to\s+the\s+|on\s+the\s+)?(?P<r{i}>left|right)\s+of\s+the\s+(?P<b{i}>" + COLOR_RE + r")\s+(?:cube|block)"
+SIDES_IN_A_ROW_RE = re.compile(
+    rf"(?:(?:put|place|set)\s+)?the\s+(?P<a>{COLOR_RE})\s+(?:cube|block)\s+{_SIDE_OF.format(i=1)}\s*,?\s+and\s+(?:(?:put|place|set)\s+)?the\s+"
+    rf"(?P<c>{COLOR_RE})\s+(?:cube|block)\s+{_SIDE_OF.format(i=2)}\s*,\s*(?:with\s+)?all\s+(?:three|3\s+)?\s*(?:of\s+them\s+)?in\s+(?:a|one)\s+"
+    r"(?:straight\s+)?(?:row|line)\b")
+"""Two cubes on either side of a third, then "all three in a row": the row, left to right (the summary had found no
+place in the relations' reading)."""
+
+
+def _sides_in_a_row(m: re.Match) -> str:
+    a, b, c = m.group("a"), m.group("b1"), m.group("c")
+    if m.group("b2") != b or m.group("r1") == m.group("r2") or len({a, b, c}) < 3:
+        return m.group(0)
+    left, right = (a, c) if m.group("r1") == "left" else (c, a)
+    return f"a row from left to right: {left}, {b}, {right}"
+
+
 WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    (SIDES_IN_A_ROW_RE, _sides_in_a_row),
+    (COUNTED_ROW_GROUPS_RE, _counted_row_groups),
     (_END_THEN_RE, _end_then),
     (re.compile(rf"\s*,?\s*(?:and\s+)?then\s+(?:put\s+|place\s+|move\s+|set\s+)?(?:both\s+of\s+them|them\s+both|both)\s+"
                 rf"(?=on\s+(?:to\s+)?the\s+(?:{COLOR_RE})\s+(?:goal\s+)?patch\s*[.!]?\s*$)"), _both_onto_patch),

@@ -502,7 +502,7 @@ def recognize_piles(f: Features, b: Builder) -> bool:
     groups: list[list[str]] = []
     each_said = list(_PILE_OF_RE.finditer(f.text))
     if len(each_said) >= 2:  # "a pile of red and blue and a pile of green": each pile's cubes said (they had merged into one)
-        groups = [[b.cube(canon_color(c)) for c in re.findall(rf"\b(?:{COLOR_RE})\b", m.group("list"))] for m in each_said]
+        groups = [[b.cube(c) for c in _pile_cubes(m.group("list"))] for m in each_said]
         centers = b.unit_centers(len(groups), 0.16)
         b.place(cluster_layout(groups, centers))
         b.preds.append(Piles(groups=tuple(tuple(g) for g in groups)))
@@ -582,10 +582,16 @@ def recognize_piles(f: Features, b: Builder) -> bool:
     return True
 
 
-_PILE_OF_RE = re.compile(rf"\b(?:a|one|another|the\s+other|a\s+second|a\s+third)\s+(?:pile|heap|group|cluster|bunch)\s+of\s+(?:the\s+)?"
-                         rf"(?P<list>(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?))?(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+)(?:the\s+)?(?:{COLOR_RE})"
-                         rf"(?:\s+(?:cubes?|blocks?))?(?!\s+(?:pile|heap|group|cluster|bunch)))*)")
-"""One pile's cubes said with it ("a pile of red and blue", "another pile of green"): each colour one cube."""
+_PILE_OF_RE = re.compile(rf"\b(?:a|one|1|another|the\s+other|a\s+second|a\s+third)\s+(?:pile|heap|group|cluster|bunch)\s+of\s+(?:the\s+)?"
+                         rf"(?P<list>(?:\d\s+)?(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?))?(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+)(?:the\s+)?(?:\d\s+)?"
+                         rf"(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?))?(?!\s+(?:pile|heap|group|cluster|bunch)))*)")
+"""One pile's cubes said with it ("a pile of red and blue", "another pile of green", "one pile of the two green cubes"):
+each colour one cube, or as many as its count says."""
+
+
+def _pile_cubes(listed: str) -> list[str]:
+    """The colours of one pile's list (:data:`_PILE_OF_RE`), a counted colour as many times as its count."""
+    return [canon_color(c) for n, c in re.findall(rf"(?:\b(\d)\s+)?\b({COLOR_RE})\b", listed) for _ in range(int(n or 1))]
 
 
 def _one_pile(f: Features, b: Builder, strict: bool = True) -> bool:
