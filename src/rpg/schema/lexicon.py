@@ -279,7 +279,9 @@ scramble.", "Hide the evidence."): such a sentence is never dropped as commentar
 (:func:`rpg.schema.reading.drop_asides`), matched by lemma."""
 
 RETRACTION_RE = re.compile(r"\b(?:kidding|joking|jokes?|jk|ignore\w*|forget|scrap|cancel\w*|disregard\w*|nevermind|never\s+mind"
-                           r"|april\s+fools?|fooled|pretend\w*|lie|lying|strike|delete|erase|withdraw\w*|retract\w*|that|this|those|these)\b")
+                           r"|april\s+fools?|fooled|pretend\w*|lie|lying|strike|delete|erase|withdraw\w*|retract\w*|that|this|those|these"
+                           r"|false|alarm|mistakes?|wrong|topsy|turvy|whichever|whatever|anything|anyhow|anyway|ways?|arrangement\w*"
+                           r"|goes|height|heights|taller|shorter|higher|lower|bigger|smaller|better|worse|best|bonus|extra|credit|points?)\b")
 """Words by which a sentence may take back or point at what was said ("Just kidding.", "Ignore that.", "April fools."):
 such a sentence is never dropped as a voice's commentary (:func:`rpg.schema.reading.drop_asides`)."""
 
@@ -3345,7 +3347,10 @@ def _restated_tower(m: re.Match) -> str:
     else:
         up = "top" not in way or way.index("bottom") < way.index("top") if "bottom" in way else False
     cubes = cubes if up else cubes[::-1]
-    return f"build a tower from bottom to top: {', '.join(cubes)}" if cubes[-1] == m.group("c") else m.group(0)
+    if cubes[-1] != m.group("c"):
+        return m.group(0)
+    more = re.match(r"\s*,?\s*and\s+", m.string[m.end():])  # "..., gray and the pink cube on the red patch": another clause
+    return f"build a tower from bottom to top: {', '.join(cubes)}" + ("." if more else "")
 
 
 _COUNTED_GROUP = rf"(?:the\s+|all\s+)?(?:\d+|two|three|four|five|six|both)\s+(?:{COLOR_RE})\s+(?:cubes|blocks|ones)"
@@ -3448,19 +3453,21 @@ def _end_then(m: re.Match) -> str:
 
 _GROUP = rf"(?:one|two|three|four|five|a|an|\d)\s+(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?|ones?))?"
 COUNTED_ROW_GROUPS_RE = re.compile(
-    rf"\b(?P<first>{_GROUP})\s+on\s+the\s+left\s*(?P<rest>(?:,\s*(?:and\s+)?then\s+{_GROUP}(?!\s+on\s+the\s+left\b))+)"
+    r"\b(?:a|one)\s+(?:row|line)\s+of\s+(?P<n>one|two|three|four|five|six|seven|eight|\d+)\s+(?:cubes|blocks)\s*[.:,;]\s*"
+    rf"(?P<first>{_GROUP})\s+on\s+the\s+left\s*(?P<rest>(?:,\s*(?:and\s+)?then\s+{_GROUP}(?!\s+on\s+the\s+left\b))+)"
     r"(?:\s+on\s+the\s+right)?\b")
 """A row said by counted colour groups from its left end ("two blue on the left, then one yellow, then two blue on the
 right"): read as the row's cubes from left to right (:func:`_counted_row_groups`), where the text says a row or line."""
 
 
 def _counted_row_groups(m: re.Match) -> str:
-    if not re.search(r"\b(?:row|line)s?\b", m.string):
-        return m.group(0)
     cubes = []
-    for n, c in re.findall(rf"\b(one|two|three|four|five|a|an|\d)\s+({COLOR_RE})\b", m.group(0)):
+    for n, c in re.findall(rf"\b(one|two|three|four|five|a|an|\d)\s+({COLOR_RE})\b", m.group(0)[m.start("first") - m.start():]):
         cubes += [c] * (int(n) if n.isdigit() else NUMBER_WORDS.get(n, 1))
-    return "from left to right: " + ", ".join(cubes)
+    said = int(m.group("n")) if m.group("n").isdigit() else NUMBER_WORDS[m.group("n")]
+    if said != len(cubes):
+        return m.group(0)  # the row's count and its groups disagree: left as written (and refused)
+    return "a row from left to right: " + ", ".join(cubes)
 
 
 _SIDE_OF = r"(?:goes\s+|is\s+|sits\s+)?(?:to\s+the\s+|on\s+the\s+)?(?P<r{i}>left|right)\s+of\s+the\s+(?P<b{i}>" + COLOR_RE + r")\s+(?:cube|block)"

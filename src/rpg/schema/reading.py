@@ -1264,6 +1264,14 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         text = lexicon.PER_LAYER_RE.sub(_per_layer, text)
     text = _label_tower_roles(text)
     text = lexicon.rewrite(lexicon.WORD_ORDER_REWRITES, text)
+    unread = re.search(rf"\bso\s+(?:that\s+)?the\s+(?:tower|stack)\s+(?:is|reads|has|becomes|looks|goes|ends)\b[^.;]*\b(?:{COLOR_RE})\b[^.;]*", text)
+    if unread and not lexicon.RESTATED_TOWER_RE.search(text):
+        # "put two gray blocks on top so the tower is brown, gray, gray", "... at the bottom so the tower is ...": the
+        # tower restated in a way only "put a <colour> cube on top, so the tower reads ..." is read (its cubes had been
+        # counted twice)
+        raise ParseError(f"'{unread.group(0).strip()}' in \"{original[:80]}\" says the tower again after what is done to it; "
+                         "say the tower once, from bottom to top (e.g. \"a tower of brown, green, gray from the bottom\"), or "
+                         "use --model")
     restated = lexicon.RESTATED_TOWER_RE.search(text)
     if restated:  # "put a gray block on top so the tower is green, gray, brown": its top is not the cube put there
         raise ParseError(f"'{restated.group(0)}' in \"{original[:80]}\" restates a tower whose top is not the "
@@ -1311,7 +1319,13 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         # "Tower of 3. Middle cube must be white.": that cube in the middle, the others free
         text = text[:said[0].start()] + f"with {roles['middle']} in the middle" + text[said[0].end():]
     elif said and re.search(r"\b(?:towers?|stacks?|stacked)\b", text):
-        between = re.fullmatch(rf"\s*[.,;]?\s*((?:(?:and\s+)?then\s+(?:{COLOR_RE})\s*[.,;]?\s*)+)", text[said[0].end():said[-1].start()])
+        between = re.fullmatch(rf"\s*(?:(?:cube|block|one)\s*)?[.,;]?\s*((?:(?:and\s+)?then\s+(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s*[.,;]?\s*)+)",
+                               text[said[0].end():said[-1].start()])
+        after = text[said[-1].end():]
+        if re.search(r"\b(?:then|next)\b", after) and [same.get(m.group(1), m.group(1)) for m in said][-1] == "top":
+            # "Base: red. Top: green. Next: white.": a cube said after the top, whose place the roles do not give
+            raise ParseError(f"\"{original[:80]}\" says a cube after the tower's top; say the tower from bottom to top once "
+                             "(e.g. \"Base: red. Next: white. Top: green.\"), or use --model")
         if len(said) == 2 and between and [same.get(m.group(1), m.group(1)) for m in said] == ["bottom", "top"]:
             # "Bottom: brown. Then orange, then yellow. Top: white.": the cubes said between the ends, in order
             middle = re.findall(rf"\b(?:{COLOR_RE})\b", between.group(1))
@@ -1320,6 +1334,8 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
             at = {m.start() for m in said}
             stray = next((m for m in re.finditer(rf"\b([a-z]+)\s*[:=]\s*(?:{COLOR_RE})\b", text[said[0].start():said[-1].end()])
                           if m.start() + said[0].start() not in at), None)
+            if stray is None:  # "Next: any": no colour read
+                stray = re.search(r"\b(?:then|next)\b[^.;]*", text[said[0].end():said[-1].start()])
             if stray:  # "Top: black. Next: yellow. Base: blue.": a cube between the roles with no place they give
                 raise ParseError(f"'{stray.group(0)}' in \"{original[:80]}\" names a cube between the tower's roles with no place "
                                  "among them; say the tower from bottom to top (e.g. \"Base: blue. Next: yellow. Top: black.\"), "
@@ -1637,7 +1653,7 @@ _ROLE_SENTENCE_RE = re.compile(
 read as "top: orange" (:func:`normalize_words`'s roles)."""
 _ORDINALS = ("first", "second", "third", "fourth", "fifth", "sixth")
 _ORDINAL_ITEM_RE = re.compile(
-    r"\bthe\s+(?P<o>first|second|third|fourth|fifth|sixth|1st|2nd|3rd|4th|5th|6th|last|final|top|topmost)"
+    r"\bthe\s+(?P<o>first|second|third|fourth|fifth|sixth|1st|2nd|3rd|4th|5th|6th|last|final)"
     r"(?:\s+(?:cube|block|one))?(?:\s+of\s+the\s+(?P<s>tower|stack|row|line))?(?:\s*\((?P<p>[^()]{1,40})\))?"
     r"(?:\s+(?:is|should\s+be|must\s+be|will\s+be))?\s+(?:the\s+|a\s+)?(?P<c>" + COLOR_RE + r")(?:\s+(?:cube|block|one))?(?:\s+again)?\b")
 _ORDINAL_SEP_RE = re.compile(r"\s*(?:,\s*(?:and\s+)?|;\s*|\s+and\s+)")
@@ -1662,10 +1678,11 @@ def ordinal_roles(text: str) -> str:
         return text
     said = [m.group("o").replace("1st", "first").replace("2nd", "second").replace("3rd", "third").replace("4th", "fourth")
             .replace("5th", "fifth").replace("6th", "sixth") for m in items]
-    last = said[-1] in ("last", "final", "top", "topmost")
+    last = said[-1] in ("last", "final")
     tail = _COUNTING_FROM_RE.sub("", text[items[-1].end():])
     if said[:len(said) - last] != list(_ORDINALS[:len(said) - last]) or (last and len(said) < 3) or re.search(
-            r"\b(?:middle|between|rest|others?|remaining|second|third|fourth|fifth|last|next|final|penultimate|top|bottom)\b", tail):
+            r"\b(?:middle|between|rest|others?|remaining|second|third|fourth|fifth|last|next|final|penultimate|top|bottom)\b", tail) \
+            or re.search(r"\bthe\s+(?:top|topmost|bottom|lowest|highest)\b", _COUNTING_FROM_RE.sub("", re.sub(r"\([^()]*\)", "", text))):
         return text  # (a gap, "the first ..., the last ..." with the cubes between said otherwise: other rules read it)
     nouns = set(re.findall(r"\b(tower|stack|row|line|column)s?\b", text))
     tower = nouns <= {"tower", "stack", "column"} and bool(nouns)

@@ -403,8 +403,8 @@ the table"): the tower named is rho_0's stack, what follows the goal."""
 
 THERE_IS_START_RE = re.compile(
     rf"(?i)^\s*(?:there(?:'s|\s+is)\s+(?:a|an|the)\s+(?P<top>{_NAME})(?:\s+(?:cube|block))?\s+(?:(?:stacked|sitting|resting|placed)\s+)?"
-    rf"|(?:the\s+|an?\s+)?(?P<top2>{_NAME})(?:\s+(?:cube|block))?\s+(?:is\s+(?:currently\s+|now\s+|already\s+)?(?:stacked|sitting|resting|standing)"
-    r"|sits|rests|stands)\s+)"
+    rf"|(?:the\s+|an?\s+)?(?P<top2>{_NAME})(?:\s+(?:cube|block))?\s+(?:is\s+(?:currently\s+|now\s+|already\s+)?(?:stacked|sitting|resting|standing"
+    r"|lying|placed|set)|is(?=\s+(?:on|atop))|sits|rests|stands|lies)\s+)"
     rf"(?:on\s+top\s+of|on|atop)\s+(?:a|an|the)\s+(?P<bottom>{_NAME})(?:\s+(?:cube|block|one))?\s*[.;]\s+"
     r"(?:(?P<verb>(?:then\s+)?(?:put|place|move|take|set|bring|slide|push|lift|remove|unstack))\s+(?P<obj>it\b|the\s+(?P<moved>\w+))"
     rf"|(?=(?:then\s+)?(?:put|place|set|stack|add)\s+(?:a|an|the)\s+{_NAME}\s+(?:cube|block)\s+on\s+top\b(?!\s+of)))")
@@ -416,8 +416,9 @@ moves "it" or the top cube named: moved, the top cube cannot also be the goal's.
 
 def _there_is_start(m: re.Match) -> str:
     top = m.group("top") or m.group("top2")
-    if m.group("moved") and m.group("moved").lower() != top.lower():
-        return m.group(0)  # another cube moved: "the red cube is stacked on the blue cube" may be the goal's
+    if m.group("moved") and m.group("moved").lower() != top.lower() and not m.group("top"):
+        return m.group(0)  # another cube moved: "the red cube is stacked on the blue cube" may be the goal's ("there is"
+        # says what is there now, whichever cube moves)
     if not m.group("verb"):  # "... Put a gray block on top": the start's tower topped
         return f"Initially the {top} cube is on the {m.group('bottom')} cube. "
     obj = f"the {top} cube" if m.group("obj").lower() == "it" else m.group("obj")
