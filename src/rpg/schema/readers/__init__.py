@@ -30,7 +30,6 @@ from rpg.domain.predicates import (
     InFrontOf,
     InRegion,
     LeftOf,
-    NextTo,
     OnPatch,
     RightOf,
     Stack,
@@ -253,12 +252,9 @@ def free_listed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
         others = [q for q in parts if q is not p and set(q.object_names()) & set(objs)]
         if not all(isinstance(q, InRegion) or (type(q) is OnPatch and q.a == objs[0])
                    or (isinstance(q, _PLANAR_RELATIONS) and len(set(q.object_names()) & set(objs)) == 1) for q in others):
-            if any(type(q) is NextTo and len(set(q.object_names()) & set(objs)) == 1 and objs[0] in q.object_names()
-                   for q in others):
-                raise ParseError(f"\"{f.original[:80]}\" lists a tower's cubes without their order and puts a cube next to "
-                                 "it, which is judged against its bottom cube; say the tower bottom to top (e.g. \"stack red "
-                                 "on blue\"), or use --model")  # (the list's first cube had been demanded at the bottom)  # a cube of the stack related to something else by itself: its place is said (a relation in the
-            # plane to one cube of it holds of the whole tower, its cubes standing one above another: "put green behind it")
+            continue  # a cube of the stack related to something else by itself: its place is said ("next to it" is
+            # judged against the tower's bottom cube, so the order read is kept; a relation in the plane to one cube of it
+            # holds of the whole tower, its cubes standing one above another: "put green behind it")
         ends = {end: [n for n in objs if colors[n] == c] for end, c in roles.items()}
         if any(len(v) != 1 for v in ends.values()):
             continue  # a role colour missing from this stack, or shared by two of its cubes
