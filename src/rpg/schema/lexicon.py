@@ -3327,10 +3327,11 @@ NOTATION_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 )
 """Counts and goals written as notation ("3x white", "2 rows x 3", "on(red, green)") and articles a terse writer leaves out."""
 
-RESTATED_TOWER_RE = re.compile(rf"\b(?:put|place|set|add|stack)\s+(?:a|an|the|one)\s+(?P<c>{COLOR_RE})\s+(?:cube|block)\s+on\s+top\s*,?\s*so\s+(?:that\s+)?"
-                rf"(?:the\s+)?(?:tower|stack)\s+(?:reads|is|becomes|ends\s+up\s+as|goes)\s*:?\s*(?P<list>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})"
-                rf"|\s+and\s+(?:{COLOR_RE}))+)(?:\s*,?\s+(?P<way>from\s+(?:the\s+)?bottom(?:\s+(?:up|to\s+(?:the\s+)?top))?|bottom\s+to\s+top"
-                r"|from\s+(?:the\s+)?top(?:\s+(?:down|to\s+(?:the\s+)?bottom))?|top\s+to\s+bottom)\b)?")
+RESTATED_TOWER_RE = re.compile(
+    rf"\b(?:put|place|set|add|stack)\s+(?:a|an|the|one)\s+(?P<c>{COLOR_RE})\s+(?:cube|block)\s+on\s+top\s*,?\s*so\s+(?:that\s+)?"
+    rf"(?:the\s+)?(?:tower|stack)\s+(?:reads|is|becomes|ends\s+up\s+as|goes)\s*:?\s*(?P<list>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})"
+    rf"|\s+and\s+(?:{COLOR_RE}))+)(?:\s*,?\s+(?P<way>from\s+(?:the\s+)?bottom(?:\s+(?:up|to\s+(?:the\s+)?top))?|bottom\s+to\s+top"
+    r"|from\s+(?:the\s+)?top(?:\s+(?:down|to\s+(?:the\s+)?bottom))?|top\s+to\s+bottom)\b)?")
 """A cube put on top, then the whole tower restated ("put a brown cube on top, so the tower reads white, blue, brown from the
 bottom"): read as that tower (:func:`_restated_tower`); one whose list does not end at the cube put on top is refused
 (:func:`rpg.schema.reading.normalize_words`; it had been read as a fourth cube)."""
