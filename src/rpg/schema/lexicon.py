@@ -1299,8 +1299,9 @@ BOTH_OF_THEM_RE = re.compile(rf"\b(?P<subj>(?:the\s+(?P<c>{_COLOR_WORD})\s+(?:bl
                              r"(?:(?:goes|go|is|sits|stays|ends\s+up|(?:should|must)\s+(?:be|go|end\s+up))\s+)?"
                              rf"(?P<rel>{_PAIRWISE_WORDS})\s+"
                              r"(?:both\s+of\s+them|them\s+both|both|each\s+of\s+them|the\s+two\s+of\s+them|all\s+of\s+them|them\s+all)\b")
-""""The brown cube far from both of them": a relation to each of the two cubes named before it
-(:func:`rpg.schema.reading.normalize_words` writes them out when exactly two are)."""
+""""The brown cube far from both of them", "..., green far from both": a relation to each of the two cubes named before
+it (:func:`rpg.schema.reading.normalize_words` writes them out when exactly two are); the subject ``c`` as "the <colour>
+cube", or ``c2`` a bare colour opening its clause."""
 
 DISTRIBUTED_RELATIONS: tuple[tuple[re.Pattern, str], ...] = (
     # "the red and orange blocks far from the blue block but next to the green block": each of them, both relations
@@ -3338,7 +3339,10 @@ bottom"): read as that tower (:func:`_restated_tower`); one whose list does not 
 
 
 def _restated_tower(m: re.Match) -> str:
-    """The tower a result clause lists (``list``, read ``way``), when its top is the cube put on top (``c``)."""
+    """The tower a result clause lists (``list``, read ``way``; with no way said, from whichever end the cube put on top
+    (``c``) stands at, if at exactly one), when its top is that cube; otherwise the words as they are (refused by
+    :func:`rpg.schema.reading.normalize_words`).  A clause after the list ("... and the pink cube on the red patch") is
+    cut off from the tower by a full stop."""
     cubes = re.findall(rf"\b(?:{COLOR_RE})\b", m.group("list"))
     way = m.group("way")
     if way is None:  # no direction said: the list runs from the cube put on top, if it is at exactly one end

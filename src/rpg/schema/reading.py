@@ -1322,7 +1322,7 @@ def normalize_words(instruction: str, strict: bool = True) -> tuple[str, str, li
         between = re.fullmatch(rf"\s*(?:(?:cube|block|one)\s*)?[.,;]?\s*((?:(?:and\s+)?then\s+(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s*[.,;]?\s*)+)",
                                text[said[0].end():said[-1].start()])
         after = text[said[-1].end():]
-        if re.search(r"\b(?:then|next)\b", after) and [same.get(m.group(1), m.group(1)) for m in said][-1] == "top":
+        if re.search(r"\b(?:then|next)\b", after) and said[-1].group(1) == "top":
             # "Base: red. Top: green. Next: white.": a cube said after the top, whose place the roles do not give
             raise ParseError(f"\"{original[:80]}\" says a cube after the tower's top; say the tower from bottom to top once "
                              "(e.g. \"Base: red. Next: white. Top: green.\"), or use --model")
@@ -1652,6 +1652,7 @@ _ROLE_SENTENCE_RE = re.compile(
 """A tower's end or middle cube said as a sentence ("The cube at the top is orange", "Middle cube must be white"):
 read as "top: orange" (:func:`normalize_words`'s roles)."""
 _ORDINALS = ("first", "second", "third", "fourth", "fifth", "sixth")
+_ORDINAL_WORD = {"1st": "first", "2nd": "second", "3rd": "third", "4th": "fourth", "5th": "fifth", "6th": "sixth"}
 _ORDINAL_ITEM_RE = re.compile(
     r"\bthe\s+(?P<o>first|second|third|fourth|fifth|sixth|1st|2nd|3rd|4th|5th|6th|last|final)"
     r"(?:\s+(?:cube|block|one))?(?:\s+of\s+the\s+(?P<s>tower|stack|row|line))?(?:\s*\((?P<p>[^()]{1,40})\))?"
@@ -1676,8 +1677,7 @@ def ordinal_roles(text: str) -> str:
         end = m.end()
     if len(items) < 2:
         return text
-    said = [m.group("o").replace("1st", "first").replace("2nd", "second").replace("3rd", "third").replace("4th", "fourth")
-            .replace("5th", "fifth").replace("6th", "sixth") for m in items]
+    said = [_ORDINAL_WORD.get(m.group("o"), m.group("o")) for m in items]
     last = said[-1] in ("last", "final")
     tail = _COUNTING_FROM_RE.sub("", text[items[-1].end():])
     if said[:len(said) - last] != list(_ORDINALS[:len(said) - last]) or (last and len(said) < 3) or re.search(
@@ -2223,17 +2223,17 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
      else f" with a {m.group(1)} block {'on top' if m.group(2) else 'at the bottom'}"),  # (a colour listed too: left as said)
     # roles: "the top one is white", "the bottom block black", ". The top one is red", "and make the top block red"
     (re.compile(rf"(?:\s*[,.;]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)(?:make\s+(?:sure\s+)?(?:that\s+)?)?the\s+(?:top|topmost|uppermost|highest)"
-                rf"(?P<noun>\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?({COLOR_RE})"
+                rf"(?P<noun>\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?(?P<c>{COLOR_RE})"
                 rf"(?P<noun2>\s+(?:block|cube|one|1))?\b"), lambda m: _layer_or_end_cube(m, "on top")),
     (re.compile(rf"(?:\s*[,.;]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)(?:make\s+(?:sure\s+)?(?:that\s+)?)?the\s+(?:bottom|lowest|base|bottommost)"
-                rf"(?P<noun>\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?({COLOR_RE})"
+                rf"(?P<noun>\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?(?P<c>{COLOR_RE})"
                 rf"(?P<noun2>\s+(?:block|cube|one|1))?\b"), lambda m: _layer_or_end_cube(m, "at the bottom")),
     # "..., with one cube in between": a middle cube of a colour no word names (it had been dropped: a tower of two)
     (re.compile(r"\b(?:with\s+)?(?:1|a|an)\s+(?:other\s+|more\s+)?(?:cube|block)\s+in\s+the\s+middle\b"),
      lambda m: "with a " + next(c for c in DEFAULT_COLORS if not re.search(rf"\b{c}\b", m.string)) + " block in the middle", True),
     # "... and the middle block is blue": the middle cube's colour (it had been dropped: a tower of two)
     (re.compile(rf"(?:\s*[,.;:]\s*(?:and\s+)?|\s+(?:with|where|and|in\s+which)\s+)(?:make\s+(?:sure\s+)?(?:that\s+)?)?(?:the\s+|(?<=[,;:]\s))(?:middle|center|centre)"
-                rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?({COLOR_RE})"
+                rf"(?:\s+(?:block|cube|one|1))?\s+(?:is\s+|being\s+|(?:should|must|will|has\s+to|needs\s+to)\s+be\s+)?(?P<c>{COLOR_RE})"
                 rf"(?:\s+(?:block|cube|one|1))?\b(?!\s+(?:and|or)\s+(?:{COLOR_RE})\b)"), lambda m: _middle_cube(m), True),
 ))
 """Ways of describing a tower, rewritten to the form the readers take ("a tower of N <colour>
@@ -2245,7 +2245,7 @@ def _middle_cube(m: re.Match) -> str:
     """"... and the middle block is blue" -> " with a blue block in the middle"; said without its article ("build 3-stack,
     middle must be yellow") only where nothing else of the tower is said (another colour, an end, "all": those words
     had been read as more cubes in some order, red at the bottom for "top must be red")."""
-    color = m.group(m.re.groups)
+    color = m.group("c")
     if not re.search(r"\bthe\s+(?:middle|center|centre)\b", m.group(0)) and (
             {c for c in re.findall(rf"\b({COLOR_RE})\b", m.string)} != {color}
             or re.search(r"\b(?:top|topmost|bottom|base|lowest|highest|all|every|each|first|last|second|third)\b", m.string)):
@@ -2258,7 +2258,7 @@ def _layer_or_end_cube(m: re.Match, where: str) -> str:
     no cube, so it is the whole layer's colour (left as said, which the layer roles read: one red cube had been made)."""
     if not m.group("noun") and not m.group("noun2") and re.search(r"\b(?:pyramid|wall)s?\b", m.string):
         return m.group(0)
-    return f" with a {m.group(m.re.groups - 1)} block {where}"
+    return f" with a {m.group('c')} block {where}"
 
 
 def _structure_phrases(text: str) -> str:

@@ -411,7 +411,8 @@ THERE_IS_START_RE = re.compile(
 """A start said as what is there now, one cube on another, before a command that moves the top one ("There is a red cube on
 top of the blue cube. Put it on the green patch.", "The red cube is stacked on the blue cube. Take it off ..."): read
 as "Initially ..." (the stack had been read as the goal, and "it" as the stack: silently wrong).  Only where the command
-moves "it" or the top cube named: moved, the top cube cannot also be the goal's."""
+moves "it" or the top cube named (moved, the top cube cannot also be the goal's), moves any cube after "there is" (what
+is there now), or puts a named cube on top ("A green block sits on a brown block. Put a gray block on top.")."""
 
 
 def _there_is_start(m: re.Match) -> str:
