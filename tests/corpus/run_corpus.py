@@ -72,7 +72,7 @@ STRANGER_SETS = {
     "stranger35": ("stranger35.yaml", "STRANGER set 35 (stranger35.yaml, transfer measure of the twenty-fourth session; development material, read from the twenty-fifth session's start)"),
     "stranger36": ("stranger36.yaml", "STRANGER set 36 (stranger36.yaml, transfer measure of the twenty-fifth session; development material, read from the twenty-sixth session's start)"),
     "stranger37": ("stranger37.yaml", "STRANGER set 37 (stranger37.yaml, transfer measure of the twenty-sixth session; development material, read from the twenty-seventh session's start)"),
-    "stranger38": ("stranger38.yaml", "STRANGER set 38 (stranger38.yaml, transfer measure of the twenty-seventh session: aggregates only, and a helper's abstract failure classes mid-session)"),
+    "stranger38": ("stranger38.yaml", "STRANGER set 38 (stranger38.yaml, transfer measure of the twenty-seventh session; development material from the twenty-eighth)"),
 }
 SPLITS = HERE / "splits.yaml"
 
