@@ -5222,13 +5222,18 @@ def test_groups_of_cubes_each_sent_to_its_own_place(text, expected):
 
 
 @pytest.mark.parametrize("text", [
-    "put the red block on the left and the blue block on the right of it",  # 'it' refers across the parts
     "stack the red cubes on the left and the blue cubes on the right",  # a stack cannot stand in two sides
     "make a tower of two blue blocks on the right and put the red block on the left",
 ])
 def test_parts_that_refer_to_each_other_or_contradict_are_not_split(text):
     with pytest.raises(ParseError):
         check_feasibility(parse(text))
+
+
+def test_a_part_that_refers_to_the_cube_placed_before_is_read_with_it():
+    # 'it' refers across the parts: the cube of the part before (it had been refused, as parts not to split)
+    assert sorted(meaning(check_feasibility(parse("put the red block on the left and the blue block on the right of it")))) \
+        == ["in_region(red,left)", "right_of(blue,red)"]
 
 
 @pytest.mark.parametrize("text, expected", [
@@ -5931,3 +5936,45 @@ def test_the_latest_readings_attacked_refuse(text):
 ])
 def test_the_latest_readings_attacked_read(text, expected):
     assert sorted(meaning(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    # twenty-eighth session, from stranger38 (read): a stressed relation after a cube placed in a corner ("it" was lost)
+    ("ok so the red cube goes in the back right corner and the yellow cube goes right next to it",
+     ["in_region(red,back_right)", "next_to(red,yellow)"]),
+    ("Put the red cube in the center and the blue cube directly to the left of it", ["in_region(red,center)", "left_of(blue,red)"]),
+    # a diagonal said by a corner's name or by two relations together: the two relations, a diagonal pair
+    ("goal: blue cube diagonally in front of and to the right of the red cube", ["in_front_of(blue,red)", "right_of(blue,red)"]),
+    ("Put the blue cube to the front-right of the red cube.", ["in_front_of(blue,red)", "right_of(blue,red)"]),
+    ("Put the 5 block to the back-left of the 2 block.", ["behind(5,2)", "left_of(5,2)"]),
+    ("Task: a horizontal row of five cubes. Two white on the left, then one red, then two white on the right.",
+     ["line[left_to_right](white,white,red,white,white)"]),
+    # a voice's sentence that points at no cube: its words of quantity, condition and time bear on none
+    ("Put the red cube on the blue cube. Call the clinic if symptoms persist.", ["stack(blue,red)"]),
+    ("Put the red cube on the blue cube. Thank you ever so much.", ["stack(blue,red)"]),
+    ("Now, dear, would you kindly set the grey block over by the left side of the table? Thank you ever so much.",
+     ["in_region(gray,left)"]),
+])
+def test_stressed_relations_diagonal_pairs_and_idle_commentary(text, expected):
+    schema = parse(text)
+    assert sorted(meaning(schema)) == expected
+    if "diagonal" in text or "front-right" in text or "back-left" in text:
+        assert all(getattr(p, "diagonal", False) for p in schema.goal.children())  # each relation leaves the other axis free
+
+
+@pytest.mark.parametrize("text, kind", [
+    ("Put the blue cube diagonally behind the red cube.", "action"),  # which side? a pose word alone stays refused
+    ("Put the blue block to the top left of the red block.", None),  # a map's "top": above, or behind?
+    ("Stack the red blocks. As many as you can.", "quantity"),
+    ("Put the red cube on the blue cube. Avoid collisions.", "negation"),  # a negation still keeps its sentence
+    ("Put the red cube on the blue cube. Mix well.", "action"),
+    ("Stack red on blue. Once more.", None),
+    ("Stack red on blue. If it falls, retry.", "condition"),  # "it": the sentence points at a cube
+    ("Lay out the blue blocks in an arrow shape pointing left.", "shape"),
+    ("Arrange the blocks in the shape of a boat.", "shape"),
+])
+def test_diagonal_words_and_pointing_commentary_still_refused(text, kind):
+    with pytest.raises(BadInput) as e:
+        parse(text)
+    if kind is not None:
+        assert isinstance(e.value, Inexpressible) and kind in {k for k, _, _ in e.value.reasons}
