@@ -5947,19 +5947,24 @@ def test_the_latest_readings_attacked_read(text, expected):
     ("goal: blue cube diagonally in front of and to the right of the red cube", ["in_front_of(blue,red)", "right_of(blue,red)"]),
     ("Put the blue cube to the front-right of the red cube.", ["in_front_of(blue,red)", "right_of(blue,red)"]),
     ("Put the 5 block to the back-left of the 2 block.", ["behind(5,2)", "left_of(5,2)"]),
+    ("Put the red cube to the right front of the blue cube", ["in_front_of(red,blue)", "right_of(red,blue)"]),
+    ("Put the red cube to the back right of the letter A", ["behind(red,A)", "right_of(red,A)"]),
+    ("Put the blue cube in the center and the red cube to the front-right of it.",
+     ["in_front_of(red,blue)", "in_region(blue,center)", "right_of(red,blue)"]),
+    # "it" after a cube placed in a place is that cube only where no other cube is said between
+    ("Put the red cube in the center and the blue cube left of yellow and behind it.",
+     ["behind(blue,yellow)", "in_region(red,center)", "left_of(blue,yellow)"]),
     ("Task: a horizontal row of five cubes. Two white on the left, then one red, then two white on the right.",
      ["line[left_to_right](white,white,red,white,white)"]),
-    # a voice's sentence that points at no cube: its words of quantity, condition and time bear on none
-    ("Put the red cube on the blue cube. Call the clinic if symptoms persist.", ["stack(blue,red)"]),
-    ("Put the red cube on the blue cube. Thank you ever so much.", ["stack(blue,red)"]),
+    ("Put the red cube on the blue cube. Thank you ever so much.", ["stack(blue,red)"]),  # thanks, no quantity
     ("Now, dear, would you kindly set the grey block over by the left side of the table? Thank you ever so much.",
      ["in_region(gray,left)"]),
 ])
 def test_stressed_relations_diagonal_pairs_and_idle_commentary(text, expected):
     schema = parse(text)
     assert sorted(meaning(schema)) == expected
-    if "diagonal" in text or "front-right" in text or "back-left" in text:
-        assert all(getattr(p, "diagonal", False) for p in schema.goal.children())  # each relation leaves the other axis free
+    if "diagonal" in text or "front-right" in text or "back-left" in text or "right front" in text:
+        assert all(getattr(p, "diagonal", False) for p in schema.goal.children() if p.name in ("in_front_of", "behind", "left_of", "right_of"))  # each relation leaves the other axis free
 
 
 @pytest.mark.parametrize("text, kind", [
@@ -5969,7 +5974,18 @@ def test_stressed_relations_diagonal_pairs_and_idle_commentary(text, expected):
     ("Put the red cube on the blue cube. Avoid collisions.", "negation"),  # a negation still keeps its sentence
     ("Put the red cube on the blue cube. Mix well.", "action"),
     ("Stack red on blue. Once more.", None),
-    ("Stack red on blue. If it falls, retry.", "condition"),  # "it": the sentence points at a cube
+    ("Stack red on blue. If it falls, retry.", "condition"),
+    # a sentence that names no cube may still bear on the task with a quantity, a time or a condition (a hostile
+    # helper's attack on a rule that had dropped such sentences mid-session, reverted)
+    ("Build a tower of blue cubes. Several levels, please.", "quantity"),
+    ("Build a line of red cubes. Use plenty.", "quantity"),
+    ("Put the red cube on the blue cube. There is a strict time limit.", None),
+    ("Put the red cube on the blue cube. Do so if the gripper is free.", "condition"),
+    ("Put the red cube on the blue cube. Call the clinic if symptoms persist.", "condition"),
+    # a hostile helper's attack on the diagonal and "it" readings: each had compiled silently wrong mid-session
+    ("Put the red cube to the back-right of the blue patch.", None),  # a blue cube had been made up
+    ("Move the cube to the front-right of the blue cube onto the green cube.", None),  # a cube picked by its place
+    ("Put the red cube in the front and the blue cube away from green next to it.", None),
     ("Lay out the blue blocks in an arrow shape pointing left.", "shape"),
     ("Arrange the blocks in the shape of a boat.", "shape"),
 ])

@@ -285,23 +285,6 @@ RETRACTION_RE = re.compile(r"\b(?:kidding|joking|jokes?|jk|ignore\w*|forget|scra
 """Words by which a sentence may take back or point at what was said ("Just kidding.", "Ignore that.", "April fools."):
 such a sentence is never dropped as a voice's commentary (:func:`rpg.schema.reading.drop_asides`)."""
 
-SCENE_HANDLE_RE = re.compile(r"\b(?:it|its|them|they|their|this|that|these|those|everything|anything|something|nothing|one|ones"
-                             r"|each|every|all|both|either|neither|rest|same|other|another|only|twice|thrice|times)\b"
-                             r"|\bas\s+(?:many|much|few|little)\b|\bonce\s+(?:more|again)\b|\d")
-"""Words by which a sentence may point at cubes without naming one ("Do it now.", "All of them.", "Twice.", "As many as
-you can."): a sentence with one keeps its words of quantity, condition and time as hazards (:data:`IDLE_HAZARD_RE`)."""
-
-IDLE_HAZARD_RE = re.compile(r"\b(?:many|much|several|few|plenty|enough|lots?|dozens?|if|when|whenever"
-                            r"|unless|otherwise|once|daily|soon|now|today|tonight|years?|days?|evenings?|nights?|time)\b")
-"""Words of quantity, condition and time that bear on no cube in a voice's sentence that names none and points at none
-(:data:`SCENE_HANDLE_RE`): "Thank you ever so much.", "Call the clinic if symptoms persist."; "Let me know if it's
-unclear." is no such sentence ("it"), and a step of a sequence ("Then celebrate.") keeps its word "then".  Such a sentence is dropped as commentary
-(:func:`rpg.schema.reading._commentary_sentence`) as one without them is; a negation, a verb that changes the scene
-("Mix well.") or a repetition ("Twice.") still keeps it."""
-
-IDLE_HAZARD_KINDS: frozenset[str] = frozenset({"quantity", "condition", "time"})
-"""The :data:`INEXPRESSIBLE` classes of :data:`IDLE_HAZARD_RE`'s words."""
-
 COMMENTARY_BLOCKING_KINDS: frozenset[str] = frozenset({"negation", "time", "quantity", "size", "shape", "reference",
                                                        "contradiction", "same_colour", "alternative", "no_goal", "colour"})
 """:data:`INEXPRESSIBLE` classes (and the colour class) that keep a sentence naming no cube from being dropped as
@@ -1126,7 +1109,8 @@ def _completed(head: str) -> str:
 REGION_ANTECEDENT_RE = re.compile(
     rf"\b(?P<c>{COLOR_RE})\s+(?:block|cube|box)\s+(?:(?:goes|is|sits)\s+)?(?P<place>(?:in|at|on|to|into)\s+the\s+(?:far\s+|very\s+)?(?:(?:front|back|rear)[\s-]+(?:left|right)\s+corner"
     r"|left|right|front|back|rear|center|centre|middle)(?:\s+(?:side|half|edge|end|part|area|region|zone))?(?:\s+of\s+the\s+(?:table|workspace))?)\s*,?\s+and\s+"
-    rf"(?P<rest>(?:(?:put|place|set|move)\s+)?the\s+(?:{COLOR_RE})\s+(?:block|cube|one)\s+(?:[a-z]+\s+){{0,5}}?)"
+    rf"(?P<rest>(?:(?:put|place|set|move)\s+)?the\s+(?:{COLOR_RE})\s+(?:block|cube|one)\s+(?:(?:in\s+front\s+of|behind)\s+and\s+)?"
+    rf"(?:(?!(?:{COLOR_RE}|grey|and|or|but|not|cubes?|blocks?|patch)\b)[a-z]+\s+){{0,5}}?)"
     r"(?P<pro>(?:to\s+)?its\s+(?P<side>left|right|front|back)(?:\s+side)?|it)\b(?!\s*(?:'s|is)\b)")
 """A cube placed in a region, then another cube related to "it" ("Put the red cube in the center and
 the blue cube to its left", "... on the right side and the green one beside it"): the pronoun is the
@@ -1477,7 +1461,7 @@ HARMLESS_NEGATION_RE = re.compile(r"[,;(\u2013\u2014-]?\s*\b(?:nothing|none?\s+t
                                   r"(?:fancy|special|complicated|elaborate|too\s+fancy)\b\)?"
                                   r"|[,;]?\s*\b(?:i'?m|i\s+am|we'?re|we\s+are)\s+not\s+(?:fussy|picky|particular)\b"
                                   r"|[,;]?\s*\bif\s+you\s+(?:don'?t|do\s+not)\s+mind\b"
-                                  r"|[,;.!]?\s*\b(?:thanks|thank\s+you)\s+(?:so|very)\s+much\b")
+                                  r"|[,;.!]?\s*\b(?:thanks|thank\s+you)\s+(?:ever\s+so|so|very)\s+much\b")
 """A negation about the manner, not the end state ("..., nothing fancy", "I'm not fussy", "if
 you don't mind", "thanks so much"): dropped before
 negations are refused (:func:`rpg.schema.reading.normalize`)."""
@@ -1927,8 +1911,10 @@ HYPHENED_DIRECTION_RE = re.compile(r"(?i)\b(left|right|front|back|bottom|top)-to
 
 _SIDE_REL = r"(?:to\s+the\s+(?:left|right)\s+of|(?:on\s+the\s+)?(?:left|right)\s+of|in\s+front\s+of|behind)"
 DIAGONAL_PLACE_RE = re.compile(
-    r"(?i)\b(?:diagonally\s+)?(?:(?:to|at|on)\s+the\s+)?(?P<depth>front|back|rear)[\s-]+(?P<side>left|right)\s+(?:side\s+)?of\s+"
-    rf"(?=(?:the\s+)?(?:{COLOR_RE}|grey|it\b|[A-Z0-9]\s+(?:cube|block)))"
+    r"(?i)\b(?:diagonally\s+)?(?:(?:to|at|on)\s+the\s+)?(?:(?P<depth>front|back|rear)[\s-]+(?P<side>left|right)"
+    r"|(?P<side2>left|right)[\s-]+(?P<depth2>front|back|rear))\s+(?:side\s+)?of\s+"
+    rf"(?=(?:the\s+)?(?:(?:{COLOR_RE}|grey)\b(?!\s+(?:goal\s+|target\s+)?patch)|it\b|(?-i:[A-Z0-9])\b"
+    r"|(?:cube|block|letter|digit|number)\s+(?-i:[A-Z0-9])\b))"
     rf"|\bdiagonally\s+(?=(?P<first>{_SIDE_REL})\s+(?:and|,)\s+(?P<second>{_SIDE_REL})\s)")
 """A cube placed diagonally from another, by a corner's name ("to the front-right of the red cube", "diagonally back
 left of it") or by two relations of both axes said together ("diagonally in front of and to the right of the red
@@ -1938,11 +1924,14 @@ stays refused (above, or behind?); "diagonally" alone ("diagonally behind the re
 
 
 def diagonal_place(m: re.Match) -> str:
-    """The two relations of :data:`DIAGONAL_PLACE_RE`'s match."""
-    if m.group("depth") is None:
+    """The two relations of :data:`DIAGONAL_PLACE_RE`'s match; as written after a cube said by no colour or label ("move
+    the cube to the front-right of the blue cube onto ...": a cube picked by its place, refused)."""
+    if re.search(r"(?i)\b(?:the|a|an|any|that)\s+(?:cube|block|one)\s+$", m.string[:m.start()]):
+        return m.group(0)
+    depth, side = m.group("depth") or m.group("depth2"), m.group("side") or m.group("side2")
+    if depth is None:
         return ""  # "diagonally" before two relations said together: the two relations say it
-    depth = "in front of" if m.group("depth").lower() == "front" else "behind"
-    return f"{depth} and to the {m.group('side').lower()} of "
+    return f"{'in front of' if depth.lower() == 'front' else 'behind'} and to the {side.lower()} of "
 
 
 _CHAIN_REL = r"(?:on|onto|upon|over|atop|above|on-top-of|ontop|under|below|beneath)"

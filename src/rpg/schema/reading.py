@@ -201,19 +201,12 @@ def _commentary_sentence(sentence: str) -> bool:
     words; no word of a goal, count or digit (:data:`lexicon.TASK_CONTENT_RE`, :data:`lexicon.ASIDE_CONTENT_RE`); nothing
     that may change what the task asks (:data:`lexicon.FRAMING_SENTENCE_HAZARD_RE`, a verb of
     :data:`lexicon.SCENE_CHANGING_VERBS`); no domain refusal that may bear on a goal
-    (:data:`lexicon.COMMENTARY_BLOCKING_KINDS`), though words of quantity, condition and time stand in one that points
-    at no cube (:data:`lexicon.IDLE_HAZARD_RE`, :data:`lexicon.SCENE_HANDLE_RE`: "Call the clinic if symptoms persist.").  Unlike :func:`_framing_sentence` its words need not be the
+    (:data:`lexicon.COMMENTARY_BLOCKING_KINDS`).  Unlike :func:`_framing_sentence` its words need not be the
     dictionary's, nor plain: a voice's words are its own, and none of them names a cube."""
     low = sentence.lower()
     words = re.findall(r"[a-z][a-z'\-]*", low)
-    if len(words) < 2 or lexicon.RETRACTION_RE.search(low):
-        return False
-    kept_kinds = lexicon.COMMENTARY_BLOCKING_KINDS
-    if not (lexicon.SCENE_HANDLE_RE.search(low) or lexicon.TASK_CONTENT_RE.search(low)):
-        low = lexicon.IDLE_HAZARD_RE.sub(" ", low)  # "Call the clinic if symptoms persist.": it points at no cube
-        kept_kinds = kept_kinds - lexicon.IDLE_HAZARD_KINDS
-    if re.search(r"\d", low) or lexicon.TASK_CONTENT_RE.search(low) or lexicon.ASIDE_CONTENT_RE.search(low) \
-            or lexicon.FRAMING_SENTENCE_HAZARD_RE.search(low):
+    if len(words) < 2 or re.search(r"\d", low) or lexicon.TASK_CONTENT_RE.search(low) or lexicon.ASIDE_CONTENT_RE.search(low) \
+            or lexicon.FRAMING_SENTENCE_HAZARD_RE.search(low) or lexicon.RETRACTION_RE.search(low):
         return False
     for w in words:
         for part in w.split("-"):
@@ -221,9 +214,9 @@ def _commentary_sentence(sentence: str) -> bool:
             if base in lexicon.SCENE_CHANGING_VERBS or any(x in lexicon.SCENE_CHANGING_VERBS for x in lexicon.lemmas(base)):
                 return False
             if base in COLORS or base in lexicon.colour_names() or (
-                    base not in VOCAB and senses.sense(base).kind in kept_kinds):
+                    base not in VOCAB and senses.sense(base).kind in lexicon.COMMENTARY_BLOCKING_KINDS):
                 return False
-    return not any(k in kept_kinds for k, _, _ in _inexpressible(low))
+    return not any(k in lexicon.COMMENTARY_BLOCKING_KINDS for k, _, _ in _inexpressible(low))
 
 
 def _frame_prefix(words: str) -> bool:
@@ -455,7 +448,8 @@ def _unknown_word_classes(text: str, unknown: list[str]) -> list[tuple[str, str,
             continue
         pos = lexicon.parts_of_speech(word)
         lemma = (lexicon.lemmas(word) or (word,))[0]
-        if any(_SHAPE_AFTER.match(after) or _SHAPE_BEFORE.search(before) for before, after in where(word)):
+        if not (pos and pos <= {"ADJ", "ADV"}) and word != "file" and any(
+                _SHAPE_AFTER.match(after) or _SHAPE_BEFORE.search(before) for before, after in where(word)):
             found.append((word, "shape", lexicon.SHAPE_WHY))  # "in an arrow shape", "in the shape of a boat"
         elif "NOUN" in pos and word not in lexicon.NOT_OBJECTS and lemma not in lexicon.NOT_OBJECTS and any(
                 _heads_a_phrase(before, after) for before, after in where(word)):
