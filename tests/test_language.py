@@ -5994,3 +5994,31 @@ def test_diagonal_words_and_pointing_commentary_still_refused(text, kind):
         parse(text)
     if kind is not None:
         assert isinstance(e.value, Inexpressible) and kind in {k for k, _, _ in e.value.reasons}
+
+
+@pytest.mark.parametrize("text", [
+    # a hostile helper's finds, each silently wrong at the session's start
+    "Put the blue cube nowhere near the red cube.",  # had been next_to: "nowhere" dropped
+    "Put the blue cube nowhere behind the red cube.",
+    "Stack the red cube on the blue cube. Unstack.",  # "Unstack." had been dropped as framing
+    "Stack the red cube on the blue cube. Add two more.",  # more cubes than named, dropped
+    "Stack the red cube on the blue cube. Add another on top.",
+    "Stack the red cube on the blue cube. Make three of these.",
+    "Put the red cube in front of and the green cube to the right of the blue cube.",  # had been in_front_of(red,green)
+])
+def test_dropped_negations_removals_extra_cubes_and_gapped_relations_refuse(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a second structure said "another one of ...": two towers (one tower of six had been read)
+    ("build a tower of red, blue and green, then another one of yellow, pink and white",
+     ["stack(red,blue,green)", "stack(yellow,pink,white)"]),
+    ("Build a tower of red, blue and green. Then build another tower of yellow, pink and white.",
+     ["stack(red,blue,green)", "stack(yellow,pink,white)"]),
+    ("Stack the red cube on the blue cube. Add another red cube on top.", ["stack(blue,red,red)"]),
+    ("put one more blue block next to the red block", ["next_to(blue,red)"]),
+])
+def test_another_structure_and_named_extra_cubes_are_read(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected

@@ -278,6 +278,12 @@ tidy keep leave stay remain repeat continue finish start begin complete align ce
 scramble.", "Hide the evidence."): such a sentence is never dropped as commentary
 (:func:`rpg.schema.reading.drop_asides`), matched by lemma."""
 
+OPERATOR_SCENE_VERBS: frozenset[str] = frozenset(
+    "start begin continue finish complete repeat open close hold stand turn set take make form create keep leave stay remain rest".split())
+""":data:`SCENE_CHANGING_VERBS` that a sentence said to a person uses of other things ("Start recording.", "Take a
+picture.", "Hold on."): they keep no framing sentence (:func:`rpg.schema.reading._framing_sentence`); the rest do
+("Unstack.", "Remove.", "Scatter them.")."""
+
 RETRACTION_RE = re.compile(r"\b(?:kidding|joking|jokes?|jk|ignore\w*|forget|scrap|cancel\w*|disregard\w*|nevermind|never\s+mind"
                            r"|april\s+fools?|fooled|pretend\w*|lie|lying|strike|delete|erase|withdraw\w*|retract\w*|that|this|those|these"
                            r"|false|alarm|mistakes?|wrong|topsy|turvy|whichever|whatever|anything|anyhow|anyway|ways?|arrangement\w*"
@@ -440,7 +446,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      MOTION_WHY),
     ("action", TURNED_OVER_RE,
      MOTION_WHY),
-    ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none)\b|n't\b"
+    ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none|nowhere)\b|n't\b"
                  r"|\b(?:rather\s+than|instead\s+of)\s+(?=(?:(?:to\s+the\s+)?(?:left|right)|in\s+front|behind|next|beside|near|on(?:\s+top)?|onto"
                  r"|under|in|at|far(?:\s+away)?|above|below)(?:\s+(?:of|to|from))?\s+the\s+[a-z\-]+(?:\s+[a-z\-]+)?\s+(?:cube|block|one|patch"
                  r"|corner|side|half|edge|region)\b)"
@@ -587,6 +593,11 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|\b(?:build|stack)\s+(?:\d+|one|two|three|four|five|some)\s+of\s+(?:them|those|these)\b",
      "picks some of a group described earlier: which ones is not said; describe only what the goal has (e.g. \"build "
      "one tower of two cubes\")"),
+    ("reference", rf"\b(?:\d+|one|two|three|four|five|six|a\s+few|some|several|a\s+couple)\s+more\b(?!\s+(?:(?:{'|'.join(COLORS)}|grey)\b"
+                  r"|(?:[a-z]+\s+)?(?:cubes?|blocks?|bricks?)\b|than\b))|\b(?:add|stack|put|place|pile|set)\s+another\s*(?=on\b|onto\b|[.!;,]|$)"
+                  r"|\b(?:make|build|do|add)\s+(?:\d+|one|two|three|four|five|another)\s+(?:more\s+)?(?:of\s+)?(?:these|those|this|that|them)\b",
+     "asks for more cubes or copies than it names (\"two more\", \"another\", \"three of these\"): which cubes, and "
+     "where, is not said; name each cube of the goal (e.g. \"stack the green block on the red block\")"),
     ("condition", r"\b(?:maybe|perhaps|possibly|ideally|preferably|or\s+else)\s+(?:even\s+)?(?:on|onto|in|into|at|next|near|behind|under"
                   r"|beside|to|left|right|in\s+front|far|stacked)\b",
      "hedges between two goals ('maybe on it'): a task has one goal, checked at the end; say the one end state"),
@@ -1932,6 +1943,21 @@ def diagonal_place(m: re.Match) -> str:
     if depth is None:
         return ""  # "diagonally" before two relations said together: the two relations say it
     return f"{'in front of' if depth.lower() == 'front' else 'behind'} and to the {side.lower()} of "
+
+
+_STRUCTURE_NOUN = r"(?:tower|stack|row|line|pile|column|circle|ring|grid|wall|pyramid)"
+ANOTHER_STRUCTURE_RE = re.compile(rf"\banother\s+(?:one|(?P<noun>{_STRUCTURE_NOUN}))\s+(?=of\b)")
+"""A second structure said as "another one of ..." or "another tower of ..." after a first ("build a tower of red, blue
+and green and another one of yellow, pink and white"): written "a tower of ..." as the first is (the two towers had
+been read as one tower of six cubes); see :func:`another_structure`."""
+
+
+def another_structure(m: re.Match) -> str:
+    """``a <noun> `` for :data:`ANOTHER_STRUCTURE_RE`'s match, the noun the one said before it (as written where none
+    is said before)."""
+    said = list(re.finditer(rf"\b(?:a|one)\s+(?:[a-z\-]+\s+){{0,2}}?({_STRUCTURE_NOUN})\s+of\b", m.string[:m.start()]))
+    noun = m.group("noun") or (said[-1].group(1) if said else None)
+    return f"a {noun} " if said and noun else m.group(0)
 
 
 _CHAIN_REL = r"(?:on|onto|upon|over|atop|above|on-top-of|ontop|under|below|beneath)"

@@ -177,8 +177,8 @@ def _framing_sentence(sentence: str) -> bool:
     if any(k not in ("condition", "question") for k, _, _ in _inexpressible(low)):
         return False  # a size, an object, an action...: refused for it, not dropped
     words = re.findall(r"[A-Za-z][A-Za-z']*", sentence)
-    if not words:
-        return False
+    if not words or any(w.lower() in lexicon.SCENE_CHANGING_VERBS - lexicon.OPERATOR_SCENE_VERBS for w in words):
+        return False  # "Unstack.": a verb that changes the scene (it had been dropped as framing, the tower kept)
     for i, w in enumerate(words):
         base = w.lower().removesuffix("'s")
         if not (base in VOCAB or base in lexicon.IDLE_WORDS or lexicon.is_dictionary_word(base) or (i and w[0].isupper())):
@@ -1549,7 +1549,14 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
             raise ParseError(f"'{m.group(0)}' in \"{original[:80]}\": '{w}' stands where a cube's colour or label does, but is "
                              "neither; name the colour (e.g. \"the white cube\"), or use --model")
     text = lexicon.rewrite(lexicon.STRUCTURE_NOUN_REWRITES, text)
+    text = lexicon.ANOTHER_STRUCTURE_RE.sub(lexicon.another_structure, text)  # "a tower of ... and another one of ..."
     # a map's "top left corner" is the far one (the robot at the bottom edge; lexicon's compass)
+    gapped = re.search(rf"\b(?:in\s+front\s+of|behind|(?:to\s+the\s+)?(?:left|right)\s+of|next\s+to|beside|on\s+top\s+of|onto|under"
+                       rf"|near|far\s+from)\s+and\s+(?:the\s+)?(?:{COLOR_RE})\b", text)
+    if gapped:  # "red in front of and green to the right of the blue cube": the first relation's cube said only at the end
+        raise ParseError(f"'{gapped.group(0)}' in \"{original[:80]}\" leaves a relation without its cube until the end of a "
+                         "second one; say each relation with its cube (e.g. \"the red cube in front of the blue cube and the "
+                         "green cube to the right of the blue cube\"), or use --model")
     diagonal = re.search(r"\b(?:top|bottom|upper|lower|front|back|rear)[\s-]+(?:left|right)\s+(?:side\s+)?of\s+"
                          r"(?!(?:the\s+)?(?:table|workspace)\b)(?:the\s+)?[a-z]+", text)
     if diagonal:  # "to the top left of the blue block": two relations at once, or a corner of the cube?
