@@ -6022,3 +6022,29 @@ def test_dropped_negations_removals_extra_cubes_and_gapped_relations_refuse(text
 ])
 def test_another_structure_and_named_extra_cubes_are_read(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a helper's abstract classes of stranger39's silent errors, with its own examples
+    ("four yellow cubes in a column, moving away from the robot", ["line[front_to_back](yellow,yellow,yellow,yellow)"]),
+    ("a column of three cyan cubes going toward the robot", ["line[back_to_front](cyan,cyan,cyan)"]),  # (read as front to back reversed)
+    ("a row of three white cubes running away from the robot", ["line[front_to_back](white,white,white)"]),
+    ("stack three red cubes in a column", ["stack(red,red,red)"]),
+    ("Make a row of three with the white cube in the middle and one black cube on each side.",
+     ["line[left_to_right](black,white,black)"]),  # a red cube had been made up
+    ("a pyramid with 3 blue cubes at the bottom, then 2 green cubes, then 1 red cube on top", ["pyramid(blue,blue,blue|green,green|red)"]),
+])
+def test_columns_running_from_the_robot_and_rows_with_a_middle_cube(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    # a base of three and one cube on top: rpg's pyramids step in by one cube a layer, so a middle layer had been made up
+    "Make a pyramid whose base is three cubes (pink, orange, cyan) with a white cube at the apex.",
+    "a pyramid with white, pink and cyan forming the base and a gray cube at the top",
+    "a pyramid with three cubes on the bottom and one on top",
+    "pyramid: bottom layer pink, orange, cyan; top layer white",
+])
+def test_a_pyramid_with_no_layer_between_base_and_top_is_refused(text):
+    with pytest.raises(ParseError, match="no layer between"):
+        check_feasibility(parse(text))

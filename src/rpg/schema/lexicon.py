@@ -1945,6 +1945,24 @@ def diagonal_place(m: re.Match) -> str:
     return f"{'in front of' if depth.lower() == 'front' else 'behind'} and to the {side.lower()} of "
 
 
+_HEADING = r"(?:goes|going|go|moves|moving|runs|running|leads|leading|stretch(?:es|ing)?|heads|heading|extends|extending|points|pointing|travels|travell?ing|reaches|reaching)"
+ROBOT_DIRECTION_RE = re.compile(
+    r"(?i)\b(?:(?P<column>column)|(?P<line>row|line|file))\b(?P<mid>[^.;:!?]{0,60}?)\s*,?\s*"
+    rf"(?:(?:that\s+|which\s+)?(?P<verb>{_HEADING})\s+(?:straight\s+)?)?(?P<dir>away\s+from|toward|towards)\s+(?:the\s+|our\s+|your\s+)?robot\b")
+"""A column or row said to run away from the robot or toward it ("four yellow cubes in a column, moving away from the
+robot", "a row of cubes going toward the robot"): a line from front to back (or back to front), on the table; a column
+had been read as a tower standing in the back half.  A row or line needs the verb of its running ("a row of three white
+cubes away from the robot" may name the far half, and is left to the region reading)."""
+
+
+def robot_direction(m: re.Match) -> str:
+    """:data:`ROBOT_DIRECTION_RE`'s match as a line with its direction."""
+    if m.group("line") and not m.group("verb"):
+        return m.group(0)
+    way = "from front to back" if m.group("dir").lower().startswith("away") else "from back to front"
+    return f"line{m.group('mid')} {way}" if m.group("column") else f"{m.group('line')}{m.group('mid')} {way}"
+
+
 _STRUCTURE_NOUN = r"(?:tower|stack|row|line|pile|column|circle|ring|grid|wall|pyramid)"
 ANOTHER_STRUCTURE_RE = re.compile(rf"\banother\s+(?:one|(?P<noun>{_STRUCTURE_NOUN}))\s+(?=of\b)")
 """A second structure said as "another one of ..." or "another tower of ..." after a first ("build a tower of red, blue

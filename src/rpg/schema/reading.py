@@ -1095,6 +1095,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     original = lexicon.SAYS_RE.sub(r"\1reads", original)  # "the tower says H, A, T"
     original = lexicon.HYPHENED_DIRECTION_RE.sub(r"\1 to \2", original)
     original = lexicon.DIAGONAL_PLACE_RE.sub(lexicon.diagonal_place, original)  # "to the front-right of the red cube"
+    original = lexicon.ROBOT_DIRECTION_RE.sub(lexicon.robot_direction, original)  # "a column ... away from the robot"
     original = lexicon.hyphened_chains(original)  # "a red-on-yellow tower", "a 1-on-2 tower", "a three-block ..."
     original = lexicon.ARROW_DIRECTION_RE.sub(lexicon.arrow_direction, original)  # "l->r", "bottom -> top"
     original = lexicon.STRUCTURE_NAME_RE.sub(r"\1", original)  # "Tower A: ...", "tower B is pink on gray"
@@ -2100,7 +2101,7 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
                 r"(?:\s+(?:cube|block|one))?\s+(?:in\s+between|between\s+them|in\s+the\s+(?:middle|center|centre))\b"),
      r"make a \g<s> from left to right: \g<e>, \g<m>, \g<e>"),
     (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(?:an?\s+|the\s+)?(?P<m>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+in\s+the\s+(?:middle|center"
-                rf"|centre)\s*,?\s+(?:and\s+)?(?:an?\s+|the\s+)?(?P<e>{COLOR_RE})(?:\s+(?:cubes?|blocks?|ones?))?\s+(?:at|on)\s+"
+                rf"|centre)\s*,?\s+(?:and\s+)?(?:an?\s+|the\s+|1\s+)?(?P<e>{COLOR_RE})(?:\s+(?:cubes?|blocks?|ones?))?\s+(?:at|on)\s+"
                 r"(?:each|both|either|the\s+two|2)\s+(?:ends?|sides?(?:\s+of\s+(?:it|them))?)\b"),
      r": from left to right: \g<e>, \g<m>, \g<e>"),
     # "the black cube goes in the middle of a row of three, with a white block on each side of it": the middle said first

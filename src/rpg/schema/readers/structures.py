@@ -213,6 +213,29 @@ def recognize_bridge(f: Features, b: Builder) -> bool:
     return True
 
 
+_ONE_ON_TOP_RE = re.compile(r"\b(?:1|one|a|an|single)\s+(?:[a-z]+\s+){0,2}?(?:(?:cube|block|one)\s+)?(?:(?:is|goes|sits|sitting|placed|resting)\s+)?"
+                            r"(?:on\s+(?:the\s+)?top|at\s+the\s+(?:very\s+)?(?:top|apex|peak|tip|summit)|as\s+the\s+(?:top|apex|peak))\b"
+                            r"|\b(?:top|upper)\s+(?:layer|level|row|tier)\s*(?::|is|=)?\s*(?:the\s+)?[a-z]+(?:\s+(?:cube|block))?\s*(?:[.;]|$)")
+_LAYERS_BETWEEN_SAID_RE = re.compile(r"\b(?:middle|second|2nd|third|3rd|between)\b|\b\d+[\s-]+(?:layers?|levels?|tiers?|rows?|stor(?:y|ey|ies|eys))\b"
+                                     r"|\b(?:6|10|15)\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b|\bpyramid\s+of\s+(?:6|10|15)\b|\b\d+-\d+-\d+\b"
+                                     r"|\bthen\s+\d+\b|\b2\s+[a-z]+")
+
+
+def _refuse_skipped_layers(f: Features, base: int, dims: int, roles: dict) -> None:
+    """Refuse a pyramid said as a base of three or more and one cube on top with nothing of the layers between ("a
+    pyramid whose base is pink, orange and cyan with a white cube at the apex", "three cubes on the bottom and one on
+    top"): rpg's pyramids step in by one cube a layer, so the layers between would be cubes (and colours) nobody named
+    (a middle layer had been made up)."""
+    if dims != 2 or base < 3 or _LAYERS_BETWEEN_SAID_RE.search(f.text) or not _ONE_ON_TOP_RE.search(f.text):
+        return
+    if any(0 < level < base - 1 for _, level in roles):
+        return
+    raise ParseError(f"\"{f.original[:80]}\" names a pyramid's base of {base} and one cube on top, but no layer between: a "
+                     f"pyramid of cubes steps in by one cube a layer ({', '.join(str(base - k) for k in range(base))}), so "
+                     "the cubes between would be made up; say the middle layer (e.g. \"... two green cubes in the middle "
+                     "...\"), or use --model")
+
+
 @reader(order=100)
 def recognize_pyramid(f: Features, b: Builder) -> bool:
     if not f.has("pyramid", "pyramids", "triangle", "triangular"):
@@ -249,6 +272,7 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
     order = ordering_of(f)
     sizes = [(base - k) ** (dims - 1) for k in range(base)]
     roles = layer_roles(f, base) if material == "colors" else {}
+    _refuse_skipped_layers(f, base, dims, roles)
     if roles:
         names = fill_layers(f, b, sizes, roles)
         b.place(pyramid_layout(names, base, dims))
