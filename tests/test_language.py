@@ -6048,3 +6048,18 @@ def test_columns_running_from_the_robot_and_rows_with_a_middle_cube(text, expect
 def test_a_pyramid_with_no_layer_between_base_and_top_is_refused(text):
     with pytest.raises(ParseError, match="no layer between"):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a helper's abstract classes of stranger39's refusals, with its own examples
+    ("In a single line, put the gray cube at the far left, the pink cube in the center and the green cube at the far right.",
+     ["line[left_to_right](gray,pink,green)"]),  # the ends and the middle are the ordered row's, not regions
+    ("a line of five: an orange cube in the middle, two brown cubes on each side", ["line[left_to_right](brown,brown,orange,brown,brown)"]),
+    # a start said as what is there now, then a cube put on its top cube
+    ("Right now the green cube sits on the blue cube. Put the white cube on top of the green cube.",
+     ["stack(blue,green,white)", "start:stack(blue,green)"]),
+    ("The red cube is on the blue cube. Put the green cube on the red cube.", ["stack(blue,red,green)", "start:stack(blue,red)"]),
+    ("Currently the red cube is on the blue cube. Move it to the left of the green cube.", ["left_of(red,green)", "start:stack(blue,red)"]),
+])
+def test_row_ends_as_sides_counted_sides_and_starts_topped(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected

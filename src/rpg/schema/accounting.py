@@ -321,6 +321,15 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
     return out
 
 
+def _ordered_lines(goal: list[P.Predicate], side: str, odd: bool = False) -> set[str]:
+    """The ordered lines of ``goal`` that run along ``side``'s axis (:data:`AXIS_ORDERS`), as ``line <direction>``: the
+    parts that carry a row's ends said as sides of the table ("at the far left ... at the far right"), and with ``odd``
+    (an odd count of cubes) its middle ("in the center")."""
+    along = AXIS_ORDERS.get(side, frozenset())
+    return {f"line {p.order}" for p in goal if isinstance(p, P.InLine) and getattr(p, "order", None) in along
+            and (not odd or len(p.objects) % 2)}
+
+
 def _orders(goal: list[P.Predicate]) -> set[str]:
     """The order relations of ``goal``'s parts (:meth:`Predicate.constraints`' ``order`` kinds:
     ``left_of``, ``on``, a line's ``left_to_right``...) and the directions its readings run in."""
@@ -596,7 +605,8 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
         elif m.kind == "bare place":  # a side of the table, or the sides of a relation ("red on the left, blue on the right")
             paired = any(o.kind == "bare place" and o.region in _OPPOSITE.get(m.region, ()) for o in named)
             sides = {r for r in regions if m.region in r.split("_")} | {
-                name for p in goal for name in SIDE_RELATIONS.get(m.region, ()) if p.name == name and paired}
+                name for p in goal for name in SIDE_RELATIONS.get(m.region, ()) if p.name == name and paired} | (
+                _ordered_lines(goal, m.region) if paired else set())  # "gray at the far left, ..., green at the far right"
             if not sides:
                 raise UnaccountedMention(f"the place '{m.region}' has no part in the task read")
             record.append({"mention": m.words, "kind": "place", "consumed_by": ", ".join(sorted(sides))})
@@ -607,6 +617,12 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                                          f"{len(corners) or 'no'} corner(s)")
             record.append({"mention": m.words, "kind": "place", "consumed_by": "in_region " + ", ".join(corners)})
         else:
+            ends_said = {o.region for o in named if o.kind == "bare place"}
+            middles = set().union(*(_ordered_lines(goal, side, odd=True) for side in ("left", "front") if
+                                    {side, _OPPOSITE[side][0]} <= ends_said)) if m.region == "center" else set()
+            if middles:  # "the pink cube in the center" between the ends said: the middle of a row of an odd count
+                record.append({"mention": m.region, "kind": "place", "consumed_by": ", ".join(sorted(middles))})
+                continue
             if m.region not in regions:
                 place = m.region.replace("_", " ")
                 raise UnaccountedMention(f"the place '{place}' has no part in the task read")

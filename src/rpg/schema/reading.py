@@ -2085,6 +2085,14 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     # "stack four cubes; the bottom one is blue, the top one is red and the two in between are green": every cube
     # (the middle's count had reached one cube, the other made up)
     (_ROLE_CLAUSES_RE, _role_clauses),
+    # "a line of five: an orange cube in the middle, two brown cubes on each side": the middle, the sides counted (the
+    # middle cube had been refused as a place the row does not order)
+    (re.compile(rf"\b(?P<row>(?:row|line)\s+of\s+(?P<n>\d+)(?:\s+(?:cubes|blocks))?)\s*[:,]\s*(?:an?\s+|the\s+|1\s+)?(?P<m>{COLOR_RE})"
+                rf"(?:\s+(?:cube|block|one))?\s+in\s+the\s+(?:middle|center|centre)\s*,?\s+(?:and\s+|with\s+)*(?P<k>\d+)\s+(?P<e>{COLOR_RE})"
+                r"(?:\s+(?:cubes|blocks|ones))?\s+(?:at|on)\s+(?:each|both|either)\s+(?:ends?|sides?)(?:\s+of\s+(?:it|them))?\b"),
+     lambda m: (f"{m.group('row')}: from left to right: " + ", ".join([m.group("e")] * int(m.group("k")) + [m.group("m")]
+                                                                 + [m.group("e")] * int(m.group("k"))))
+     if 2 * int(m.group("k")) + 1 == int(m.group("n")) else m.group(0)),
     # "a row of five: a red cube at each end and three white cubes between them": the ends, the middle counted
     (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(?:a|an|1|one)\s+({COLOR_RE})\s+(?:cube|block)\s+(?:at|on)\s+(?:each|both|either)\s+ends?\s+"
                 rf"and\s+(\d+)\s+({COLOR_RE})\s+(?:cubes|blocks)\s+(?:in\s+)?between(?:\s+(?:them|those))?\b"),

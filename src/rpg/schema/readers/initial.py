@@ -402,24 +402,28 @@ the table"): the tower named is rho_0's stack, what follows the goal."""
 
 
 THERE_IS_START_RE = re.compile(
-    rf"(?i)^\s*(?:there(?:'s|\s+is)\s+(?:a|an|the)\s+(?P<top>{_NAME})(?:\s+(?:cube|block))?\s+(?:(?:stacked|sitting|resting|placed)\s+)?"
+    rf"(?i)^\s*(?:(?:right\s+now|for\s+now|currently|at\s+(?:the\s+)?(?:moment|present|start|outset))\s*,?\s+)?(?:there(?:'s|\s+is)\s+(?:a|an|the)\s+(?P<top>{_NAME})(?:\s+(?:cube|block))?\s+(?:(?:stacked|sitting|resting|placed)\s+)?"
     rf"|(?:the\s+|an?\s+)?(?P<top2>{_NAME})(?:\s+(?:cube|block))?\s+(?:is\s+(?:currently\s+|now\s+|already\s+)?(?:stacked|sitting|resting|standing"
     r"|lying|placed|set)|is(?=\s+(?:on|atop))|sits|rests|stands|lies)\s+)"
     rf"(?:on\s+top\s+of|on|atop)\s+(?:a|an|the)\s+(?P<bottom>{_NAME})(?:\s+(?:cube|block|one))?\s*[.;]\s+"
     r"(?:(?P<verb>(?:then\s+)?(?:put|place|move|take|set|bring|slide|push|lift|remove|unstack))\s+(?P<obj>it\b|the\s+(?P<moved>\w+))"
-    rf"|(?=(?:then\s+)?(?:put|place|set|stack|add)\s+(?:a|an|the)\s+{_NAME}\s+(?:cube|block)\s+on\s+top\b(?!\s+of)))")
+    rf"|(?=(?:then\s+)?(?:put|place|set|stack|add)\s+(?:a|an|the)\s+{_NAME}\s+(?:cube|block)\s+(?:on\s+top\b(?!\s+of)"
+    r"|(?:on\s+top\s+of|onto|on)\s+(?:it\b|the\s+(?:(?P=top)|(?P=top2))\b))))")
 """A start said as what is there now, one cube on another, before a command that moves the top one ("There is a red cube on
 top of the blue cube. Put it on the green patch.", "The red cube is stacked on the blue cube. Take it off ..."): read
 as "Initially ..." (the stack had been read as the goal, and "it" as the stack: silently wrong).  Only where the command
 moves "it" or the top cube named (moved, the top cube cannot also be the goal's), moves any cube after "there is" (what
-is there now), or puts a named cube on top ("A green block sits on a brown block. Put a gray block on top.")."""
+is there now), or puts a named cube on top ("A green block sits on a brown block. Put a gray block on top.", "... on top
+of the green block", "... on it"); "Right now", "currently" or "at the moment" may open it."""
 
 
 def _there_is_start(m: re.Match) -> str:
     top = m.group("top") or m.group("top2")
-    if m.group("moved") and m.group("moved").lower() != top.lower() and not m.group("top"):
+    onto_top = m.group("moved") and re.match(rf"(?i)\s+(?:cube|block)\s+(?:on\s+top\s+of|onto|on)\s+(?:it|the\s+{re.escape(top)})\b",
+                                             m.string[m.end():])
+    if m.group("moved") and m.group("moved").lower() != top.lower() and not m.group("top") and not onto_top:
         return m.group(0)  # another cube moved: "the red cube is stacked on the blue cube" may be the goal's ("there is"
-        # says what is there now, whichever cube moves)
+        # says what is there now, whichever cube moves); put on the top cube, the start's tower topped
     if not m.group("verb"):  # "... Put a gray block on top": the start's tower topped
         return f"Initially the {top} cube is on the {m.group('bottom')} cube. "
     obj = f"the {top} cube" if m.group("obj").lower() == "it" else m.group("obj")
