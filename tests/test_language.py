@@ -6063,3 +6063,11 @@ def test_a_pyramid_with_no_layer_between_base_and_top_is_refused(text):
 ])
 def test_row_ends_as_sides_counted_sides_and_starts_topped(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == expected
+
+
+def test_opposite_corners_with_far_from_each_other_is_far_from():
+    # the corners only say how far apart ("far from each other" says the relation); alone they stay unread
+    text = "Keep the gray cube and the orange cube at opposite corners of the table, far from each other."
+    assert sorted(meaning(check_feasibility(parse(text)))) == ["far_from(gray,orange)"]
+    with pytest.raises(BadInput):
+        parse("put the gray cube and the orange cube at opposite corners")

@@ -586,7 +586,9 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                 raise UnaccountedMention(f"'{m.words}' says which way the cubes lie and the task read puts none that way")
             record.append({"mention": m.words, "kind": "axis", "consumed_by": ", ".join(along)})
         elif m.kind == "place word":
-            carried = _carries_place_word(m.region, goal, regions)
+            carried = _carries_place_word(m.region, goal, regions) or (
+                ["far_from"] if any(isinstance(p, P.FarFrom) for p in goal) and re.search(
+                    rf"\bopposite\s+{re.escape(m.words)}\b", text) else [])  # "at opposite corners, far from each other"
             if not carried:
                 raise UnaccountedMention(f"the place word '{m.words}' has no part in the task read (a cube picked by where it "
                                          "stands now refers to the current scene, which a task cannot see: name it by "
