@@ -6071,3 +6071,8 @@ def test_opposite_corners_with_far_from_each_other_is_far_from():
     assert sorted(meaning(check_feasibility(parse(text)))) == ["far_from(gray,orange)"]
     with pytest.raises(BadInput):
         parse("put the gray cube and the orange cube at opposite corners")
+
+
+def test_a_pyramid_whose_base_is_not_said_keeps_its_default_size_with_a_top_cube():
+    # the skipped-layer refusal is only for a base said (it had refused this, and a steering edit with it)
+    assert meaning(check_feasibility(parse("a pyramid with a red cube on top"))) == ["pyramid(blue,green,yellow|orange,purple|red)"]

@@ -221,15 +221,26 @@ _LAYERS_BETWEEN_SAID_RE = re.compile(r"\b(?:middle|second|2nd|third|3rd|between)
                                      r"|\bthen\s+\d+\b|\b2\s+[a-z]+")
 
 
+_BASE_SAID_RE = re.compile(r"\b\d\s+(?:[a-z]+\s+){0,2}?(?:(?:block|cube)s?\s+)?(?:[a-z]+\s+)?(?:on|at|as|in|forming|form)\s+(?:the\s+)?"
+                           r"(?:base|bottom)\b|\b(?:base|bottom)(?:\s+(?:layer|row|level|tier))?\s*(?:is\s+|are\s+|of\s+|:\s*)?(?:\d+\s+(?:[a-z]+\s+)?"
+                           rf"(?:cubes|blocks)\s*)?[(:,\-]?\s*(?:the\s+)?(?:{COLOR_RE})\s*(?:,|and\b)")
+"""A pyramid's base said as the cubes that stand in it ("three cubes on the bottom", "3 red cubes at the base", "whose
+base is three cubes (pink, orange, cyan)", "bottom layer pink, orange, cyan"), not its size ("a base of 3": a pyramid of
+that size, whose layers a reader knows)."""
+
+
 def _refuse_skipped_layers(f: Features, base: int, dims: int, roles: dict) -> None:
-    """Refuse a pyramid said as a base of three or more and one cube on top with nothing of the layers between ("a
-    pyramid whose base is pink, orange and cyan with a white cube at the apex", "three cubes on the bottom and one on
-    top"): rpg's pyramids step in by one cube a layer, so the layers between would be cubes (and colours) nobody named
-    (a middle layer had been made up)."""
+    """Refuse a pyramid said as a base of three or more (its colours or its count) and one cube on top with nothing of the
+    layers between ("a pyramid whose base is pink, orange and cyan with a white cube at the apex", "three cubes on the
+    bottom and one on top"): rpg's pyramids step in by one cube a layer, so the layers between would be cubes (and
+    colours) nobody named (a middle layer had been made up).  A pyramid whose base is not said ("a pyramid with a red
+    cube on top") keeps the default size."""
     if dims != 2 or base < 3 or _LAYERS_BETWEEN_SAID_RE.search(f.text) or not _ONE_ON_TOP_RE.search(f.text):
         return
     if any(0 < level < base - 1 for _, level in roles):
         return
+    if not any(level == 0 for _, level in roles) and not _BASE_SAID_RE.search(f.text):
+        return  # "a pyramid with a red cube on top", "... with a base of 3 and 1 red cube on top": a size, not its cubes
     raise ParseError(f"\"{f.original[:80]}\" names a pyramid's base of {base} and one cube on top, but no layer between: a "
                      f"pyramid of cubes steps in by one cube a layer ({', '.join(str(base - k) for k in range(base))}), so "
                      "the cubes between would be made up; say the middle layer (e.g. \"... two green cubes in the middle "
