@@ -402,7 +402,7 @@ the table"): the tower named is rho_0's stack, what follows the goal."""
 
 
 THERE_IS_START_RE = re.compile(
-    rf"(?i)^\s*(?:(?:right\s+now|for\s+now|currently|at\s+(?:the\s+)?(?:moment|present|start|outset))\s*,?\s+)?(?:there(?:'s|\s+is)\s+(?:a|an|the)\s+(?P<top>{_NAME})(?:\s+(?:cube|block))?\s+(?:(?:stacked|sitting|resting|placed)\s+)?"
+    rf"(?i)^\s*(?:there(?:'s|\s+is)\s+(?:a|an|the)\s+(?P<top>{_NAME})(?:\s+(?:cube|block))?\s+(?:(?:stacked|sitting|resting|placed)\s+)?"
     rf"|(?:the\s+|an?\s+)?(?P<top2>{_NAME})(?:\s+(?:cube|block))?\s+(?:is\s+(?:currently\s+|now\s+|already\s+)?(?:stacked|sitting|resting|standing"
     r"|lying|placed|set)|is(?=\s+(?:on|atop))|sits|rests|stands|lies)\s+)"
     rf"(?:on\s+top\s+of|on|atop)\s+(?:a|an|the)\s+(?P<bottom>{_NAME})(?:\s+(?:cube|block|one))?\s*[.;]\s+"
@@ -414,7 +414,8 @@ top of the blue cube. Put it on the green patch.", "The red cube is stacked on t
 as "Initially ..." (the stack had been read as the goal, and "it" as the stack: silently wrong).  Only where the command
 moves "it" or the top cube named (moved, the top cube cannot also be the goal's), moves any cube after "there is" (what
 is there now), or puts a named cube on top ("A green block sits on a brown block. Put a gray block on top.", "... on top
-of the green block", "... on it"); "Right now", "currently" or "at the moment" may open it."""
+of the green block", "... on it").  "Right now" and "currently" stay refused (the scene now): the citations of a goal
+read the text as written, where they are."""
 
 
 def _there_is_start(m: re.Match) -> str:
