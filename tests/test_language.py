@@ -5674,8 +5674,7 @@ def test_a_lower_case_question_without_its_mark_is_refused_as_a_question():
     assert exc.value.kind == "question"
 
 
-@pytest.mark.parametrize("text", ["Build a pyramid where the base is red.", "Build a pyramid. The base is red.",
-                                  "Build a pyramid whose base is red and blue on top."])
+@pytest.mark.parametrize("text", ["Build a pyramid where the base is red.", "Build a pyramid. The base is red."])
 def test_a_pyramids_base_said_by_colour_is_its_whole_bottom_layer(text):
     # (one red cube had been put in the base and the other two given colours nobody said)
     bottom = meaning(parse(text))[0].split("(")[1].split("|")[0]
@@ -6084,3 +6083,26 @@ def test_opposite_corners_with_far_from_each_other_is_far_from():
 def test_a_pyramid_whose_base_is_not_said_keeps_its_default_size_with_a_top_cube():
     # the skipped-layer refusal is only for a base said (it had refused this, and a steering edit with it)
     assert meaning(check_feasibility(parse("a pyramid with a red cube on top"))) == ["pyramid(blue,green,yellow|orange,purple|red)"]
+
+
+@pytest.mark.parametrize("text", [
+    # a second hostile helper's attack on the column, start and pyramid readings (each had compiled silently wrong)
+    "The green cube sits on the blue cube. Put the white cube on top of the green cube, then put the whole tower on the red cube.",
+    "Build a pyramid with pink, orange and cyan on the bottom and red on top.",  # a middle layer made up
+    "Build a pyramid. Base: pink, orange, cyan. Top: red.",
+    "Build a pyramid whose base is red and blue on top.",  # (once read with a middle layer of colours nobody said)
+    "Build a tower of red and blue. Build another one.",  # the second tower had been dropped
+])
+def test_the_latest_readings_attacked_again_refuse(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a column kept upright by its words is no line ("stacked"; "move it away": the column moved)
+    ("Make a column of four yellow cubes, moving away from the robot, stacked.", ["stack(yellow,yellow,yellow,yellow)@back"]),
+    ("The green cube sits on the blue cube. Put the white cube on top of the green cube. Then put the blue cube on the red cube.",
+     ["stack(red,blue,green,white)"]),  # no start read where more is said after the topping
+])
+def test_columns_kept_upright_and_starts_read_only_when_the_topping_ends_the_text(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected

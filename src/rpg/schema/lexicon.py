@@ -594,7 +594,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "picks some of a group described earlier: which ones is not said; describe only what the goal has (e.g. \"build "
      "one tower of two cubes\")"),
     ("reference", rf"\b(?:\d+|one|two|three|four|five|six|a\s+few|some|several|a\s+couple)\s+more\b(?!\s+(?:(?:{'|'.join(COLORS)}|grey)\b"
-                  r"|(?:[a-z]+\s+)?(?:cubes?|blocks?|bricks?)\b|than\b))|\b(?:add|stack|put|place|pile|set)\s+another\s*(?=on\b|onto\b|[.!;,]|$)"
+                  r"|(?:[a-z]+\s+)?(?:cubes?|blocks?|bricks?)\b|than\b))|\b(?:add|stack|put|place|pile|set|build|make|create|do)\s+another(?:\s+one)?\s*(?=on\b|onto\b|next\b|behind\b|beside\b|[.!;,]|$)"
                   r"|\b(?:make|build|do|add)\s+(?:\d+|one|two|three|four|five|another)\s+(?:more\s+)?(?:of\s+)?(?:these|those|this|that|them)\b",
      "asks for more cubes or copies than it names (\"two more\", \"another\", \"three of these\"): which cubes, and "
      "where, is not said; name each cube of the goal (e.g. \"stack the green block on the red block\")"),
@@ -1947,7 +1947,7 @@ def diagonal_place(m: re.Match) -> str:
 
 _HEADING = r"(?:goes|going|go|moves|moving|runs|running|leads|leading|stretch(?:es|ing)?|heads|heading|extends|extending|points|pointing|travels|travell?ing|reaches|reaching)"
 ROBOT_DIRECTION_RE = re.compile(
-    r"(?i)\b(?:(?P<column>column)|(?P<line>row|line|file))\b(?P<mid>[^.;:!?]{0,60}?)\s*,?\s*"
+    r"(?i)\b(?:(?P<column>column)|(?P<line>row|line|file))\b(?P<mid>\s+of\s+[^.;:!?,]{0,50}?)?\s*,?\s*"
     rf"(?:(?:that\s+|which\s+)?(?P<verb>{_HEADING})\s+(?:straight\s+)?)?(?P<dir>away\s+from|toward|towards)\s+(?:the\s+|our\s+|your\s+)?robot\b")
 """A column or row said to run away from the robot or toward it ("four yellow cubes in a column, moving away from the
 robot", "a row of cubes going toward the robot"): a line from front to back (or back to front), on the table; a column
@@ -1955,12 +1955,21 @@ had been read as a tower standing in the back half.  A row or line needs the ver
 cubes away from the robot" may name the far half, and is left to the region reading)."""
 
 
+_VERTICAL_CUE_RE = re.compile(r"(?i)\b(?:stack\w*|towers?|tops?|bottom|base|rest\w*|above|below|under\w*|up|tall|high|vertical\w*"
+                              r"|upright|closest|nearest|farthest|furthest|first|last|it|then)\b")
+"""Words that keep a column upright, or order it by other words, in the sentence of :data:`ROBOT_DIRECTION_RE` ("a column
+of three cubes heading away from the robot, red at the bottom", "green closest"): it is left as written."""
+
+
 def robot_direction(m: re.Match) -> str:
     """:data:`ROBOT_DIRECTION_RE`'s match as a line with its direction."""
-    if m.group("line") and not m.group("verb"):
+    start = max(m.string.rfind(".", 0, m.start()), m.string.rfind(";", 0, m.start())) + 1
+    stop = min([i for i in (m.string.find(".", m.end()), m.string.find(";", m.end())) if i >= 0] or [len(m.string)])
+    if (m.group("line") and not m.group("verb")) or _VERTICAL_CUE_RE.search(m.string[start:stop]):
         return m.group(0)
     way = "from front to back" if m.group("dir").lower().startswith("away") else "from back to front"
-    return f"line{m.group('mid')} {way}" if m.group("column") else f"{m.group('line')}{m.group('mid')} {way}"
+    mid = m.group("mid") or ""
+    return f"line{mid} {way}" if m.group("column") else f"{m.group('line')}{mid} {way}"
 
 
 _STRUCTURE_NOUN = r"(?:tower|stack|row|line|pile|column|circle|ring|grid|wall|pyramid)"

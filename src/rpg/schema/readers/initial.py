@@ -408,7 +408,7 @@ THERE_IS_START_RE = re.compile(
     rf"(?:on\s+top\s+of|on|atop)\s+(?:a|an|the)\s+(?P<bottom>{_NAME})(?:\s+(?:cube|block|one))?\s*[.;]\s+"
     r"(?:(?P<verb>(?:then\s+)?(?:put|place|move|take|set|bring|slide|push|lift|remove|unstack))\s+(?P<obj>it\b|the\s+(?P<moved>\w+))"
     rf"|(?=(?:then\s+)?(?:put|place|set|stack|add)\s+(?:a|an|the)\s+{_NAME}\s+(?:cube|block)\s+(?:on\s+top\b(?!\s+of)"
-    r"|(?:on\s+top\s+of|onto|on)\s+(?:it\b|the\s+(?:(?P=top)|(?P=top2))\b))))")
+    r"|(?:on\s+top\s+of|onto|on)\s+(?:it\b|the\s+(?:(?P=top)|(?P=top2))(?:\s+(?:cube|block))?)\s*[.!]?\s*$)))")
 """A start said as what is there now, one cube on another, before a command that moves the top one ("There is a red cube on
 top of the blue cube. Put it on the green patch.", "The red cube is stacked on the blue cube. Take it off ..."): read
 as "Initially ..." (the stack had been read as the goal, and "it" as the stack: silently wrong).  Only where the command
@@ -420,8 +420,8 @@ read the text as written, where they are."""
 
 def _there_is_start(m: re.Match) -> str:
     top = m.group("top") or m.group("top2")
-    onto_top = m.group("moved") and re.match(rf"(?i)\s+(?:cube|block)\s+(?:on\s+top\s+of|onto|on)\s+(?:it|the\s+{re.escape(top)})\b",
-                                             m.string[m.end():])
+    onto_top = m.group("moved") and re.match(rf"(?i)\s+(?:cube|block)\s+(?:on\s+top\s+of|onto|on)\s+(?:it|the\s+{re.escape(top)})"
+                                             r"(?:\s+(?:cube|block))?\s*[.!]?\s*$", m.string[m.end():])  # the text's last words
     if m.group("moved") and m.group("moved").lower() != top.lower() and not m.group("top") and not onto_top:
         return m.group(0)  # another cube moved: "the red cube is stacked on the blue cube" may be the goal's ("there is"
         # says what is there now, whichever cube moves); put on the top cube, the start's tower topped

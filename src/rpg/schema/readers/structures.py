@@ -221,7 +221,7 @@ _LAYERS_BETWEEN_SAID_RE = re.compile(r"\b(?:middle|second|2nd|third|3rd|between)
                                      r"|\bthen\s+\d+\b|\b2\s+[a-z]+")
 
 
-_BASE_SAID_RE = re.compile(r"\b\d\s+(?:[a-z]+\s+){0,2}?(?:(?:block|cube)s?\s+)?(?:[a-z]+\s+)?(?:on|at|as|in|forming|form)\s+(?:the\s+)?"
+_BASE_SAID_RE = re.compile(r"\b\d\s+(?!(?:wide|across|long)\b)(?:[a-z]+\s+){0,2}?(?:(?:block|cube)s?\s+)?(?:[a-z]+\s+)?(?:on|at|as|in|forming|form)\s+(?:the\s+)?"
                            r"(?:base|bottom)\b|\b(?:base|bottom)(?:\s+(?:layer|row|level|tier))?\s*(?:is\s+|are\s+|of\s+|:\s*)?(?:\d+\s+(?:[a-z]+\s+)?"
                            rf"(?:cubes|blocks)\s*)?[(:,\-]?\s*(?:the\s+)?(?:{COLOR_RE})\s*(?:,|and\b)")
 """A pyramid's base said as the cubes that stand in it ("three cubes on the bottom", "3 red cubes at the base", "whose
@@ -235,9 +235,12 @@ def _refuse_skipped_layers(f: Features, base: int, dims: int, roles: dict) -> No
     bottom and one on top"): rpg's pyramids step in by one cube a layer, so the layers between would be cubes (and
     colours) nobody named (a middle layer had been made up).  A pyramid whose base is not said ("a pyramid with a red
     cube on top") keeps the default size."""
-    if dims != 2 or base < 3 or _LAYERS_BETWEEN_SAID_RE.search(f.text) or not _ONE_ON_TOP_RE.search(f.text):
+    levels = {level for _, level in roles}
+    if dims != 2 or base < 3 or _LAYERS_BETWEEN_SAID_RE.search(f.text) or any(0 < level < base - 1 for level in levels):
         return
-    if any(0 < level < base - 1 for _, level in roles):
+    if {0, base - 1} <= levels:
+        pass  # "pink, orange and cyan on the bottom and red on top": both ends' colours said, none between
+    elif not _ONE_ON_TOP_RE.search(f.text):
         return
     if not any(level == 0 for _, level in roles) and not _BASE_SAID_RE.search(f.text):
         return  # "a pyramid with a red cube on top", "... with a base of 3 and 1 red cube on top": a size, not its cubes
