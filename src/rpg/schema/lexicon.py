@@ -1926,7 +1926,7 @@ DIAGONAL_PLACE_RE = re.compile(
     r"|(?P<side2>left|right)[\s-]+(?P<depth2>front|back|rear))\s+(?:side\s+)?of\s+"
     rf"(?=(?:the\s+)?(?:(?:{COLOR_RE}|grey)\b(?!\s+(?:goal\s+|target\s+)?patch)|it\b|(?-i:[A-Z0-9])\b"
     r"|(?:cube|block|letter|digit|number)\s+(?-i:[A-Z0-9])\b))"
-    rf"|\bdiagonally\s+(?=(?P<first>{_SIDE_REL})\s+(?:and|,)\s+(?P<second>{_SIDE_REL})\s)")
+    rf"|\bdiagonally\s+(?={_SIDE_REL}\s+(?:and|,)\s+{_SIDE_REL}\s)")
 """A cube placed diagonally from another, by a corner's name ("to the front-right of the red cube", "diagonally back
 left of it") or by two relations of both axes said together ("diagonally in front of and to the right of the red
 cube"): written as the two relations, which hold together as a diagonal pair (:class:`rpg.domain.predicates._Relation`;
