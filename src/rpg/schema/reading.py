@@ -2081,6 +2081,11 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     (_MIDDLE_OF_ODD_ROW_RE, _middle_of_odd_row),
     (_ROW_END_NAMED_RE, _row_end_named),
     (_MIDDLE_AND_SIDES_RE, _middle_and_sides),
+    # "a row of three cubes, one blue on each side of the red one": the sides' colour, then the middle (a green cube had
+    # been made up, the order dropped)
+    (re.compile(rf"\b(?P<row>(?:row|line)(?:\s+of\s+3(?:\s+(?:cubes|blocks))?)?)\s*(?:[,:]\s*|\s+with\s+)(?:a|an|1)\s+(?P<e>{COLOR_RE})"
+                rf"(?:\s+(?:cube|block|one))?\s+on\s+(?:each|either|both)\s+sides?\s+of\s+the\s+(?P<m>{COLOR_RE})\s+(?:cube|block|one)\b"),
+     r"\g<row>: from left to right: \g<e>, \g<m>, \g<e>"),
     (_ONE_CUBE_IN_TOWER_RE, _one_cube_in_tower),
     # "stack four cubes; the bottom one is blue, the top one is red and the two in between are green": every cube
     # (the middle's count had reached one cube, the other made up)
