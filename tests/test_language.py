@@ -6033,6 +6033,7 @@ def test_another_structure_and_named_extra_cubes_are_read(text, expected):
     ("Make a row of three with the white cube in the middle and one black cube on each side.",
      ["line[left_to_right](black,white,black)"]),  # a red cube had been made up
     ("Make a row of three cubes, one blue on each side of the red one.", ["line[left_to_right](blue,red,blue)"]),  # (green)
+    ("Build a row of three red cubes toward the robot.", ["line(red,red,red)@front"]),  # "toward the robot" had been dropped
     ("a pyramid with 3 blue cubes at the bottom, then 2 green cubes, then 1 red cube on top", ["pyramid(blue,blue,blue|green,green|red)"]),
 ])
 def test_columns_running_from_the_robot_and_rows_with_a_middle_cube(text, expected):

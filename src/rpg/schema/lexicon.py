@@ -3952,9 +3952,9 @@ any colour."""
 
 LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # the robot as a landmark: its side of the table is the front, its left and right the table's (rpg's frame,
-    # :mod:`rpg.domain.constants`) ("in front of the robot", "on the robot's left": a region of the table; the words
-    # had been dropped with "robot's", ignorable, and a row or two cubes read anywhere)
-    (re.compile(r"\b(?:in\s+front\s+of|(?:near(?:est)?|clos(?:e|er|est))(?:\s+to)?|right\s+by)\s+(?:the\s+|your\s+)?robot(?:'s\s+base)?\b"),
+    # :mod:`rpg.domain.constants`) ("in front of the robot", "toward the robot", "on the robot's left": a region of the
+    # table; the words had been dropped with "robot's", ignorable, and a row or two cubes read anywhere)
+    (re.compile(r"\b(?:in\s+front\s+of|(?:near(?:est)?|clos(?:e|er|est))(?:\s+to)?|right\s+by|towards?)\s+(?:the\s+|your\s+)?robot(?:'s\s+base)?\b"),
      lambda m: _robot_side(m, "at the front of the table")),
     (re.compile(r"\b(?:far(?:thest)?\s+(?:away\s+)?from|away\s+from)\s+(?:the\s+|your\s+)?robot(?:'s\s+base)?\b"),
      lambda m: _robot_side(m, "at the back of the table")),
