@@ -238,12 +238,11 @@ def _refuse_skipped_layers(f: Features, base: int, dims: int, roles: dict) -> No
     levels = {level for _, level in roles}
     if dims != 2 or base < 3 or _LAYERS_BETWEEN_SAID_RE.search(f.text) or any(0 < level < base - 1 for level in levels):
         return
-    if {0, base - 1} <= levels:
-        pass  # "pink, orange and cyan on the bottom and red on top": both ends' colours said, none between
-    elif not _ONE_ON_TOP_RE.search(f.text):
+    ends_said = {0, base - 1} <= levels  # "pink, orange and cyan on the bottom and red on top": both ends' colours
+    # a base said by its cubes, not its size ("a base of 3 and 1 red cube on top"), nor unsaid ("a red cube on top")
+    base_said = 0 in levels or _BASE_SAID_RE.search(f.text)
+    if not (ends_said or (base_said and _ONE_ON_TOP_RE.search(f.text))):
         return
-    if not any(level == 0 for _, level in roles) and not _BASE_SAID_RE.search(f.text):
-        return  # "a pyramid with a red cube on top", "... with a base of 3 and 1 red cube on top": a size, not its cubes
     raise ParseError(f"\"{f.original[:80]}\" names a pyramid's base of {base} and one cube on top, but no layer between: a "
                      f"pyramid of cubes steps in by one cube a layer ({', '.join(str(base - k) for k in range(base))}), so "
                      "the cubes between would be made up; say the middle layer (e.g. \"... two green cubes in the middle "
