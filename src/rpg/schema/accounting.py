@@ -326,8 +326,7 @@ def _ordered_lines(goal: list[P.Predicate], side: str, odd: bool = False) -> set
     parts that carry a row's ends said as sides of the table ("at the far left ... at the far right"), and with ``odd``
     (an odd count of cubes) its middle ("in the center")."""
     along = AXIS_ORDERS.get(side, frozenset())
-    return {f"line {p.order}" for p in goal if isinstance(p, P.InLine) and getattr(p, "order", None) in along
-            and (not odd or len(p.objects) % 2)}
+    return {f"line {p.order}" for p in goal if isinstance(p, P.InLine) and p.order in along and (not odd or len(p.objects) % 2)}
 
 
 def _orders(goal: list[P.Predicate]) -> set[str]:
@@ -619,9 +618,11 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                                          f"{len(corners) or 'no'} corner(s)")
             record.append({"mention": m.words, "kind": "place", "consumed_by": "in_region " + ", ".join(corners)})
         else:
-            ends_said = {o.region for o in named if o.kind == "bare place"}
-            middles = set().union(*(_ordered_lines(goal, side, odd=True) for side in ("left", "front") if
-                                    {side, _OPPOSITE[side][0]} <= ends_said)) if m.region == "center" else set()
+            middles = set()
+            if m.region == "center":  # the middle of a row whose two ends are said as sides
+                ends_said = {o.region for o in named if o.kind == "bare place"}
+                middles = set().union(*(_ordered_lines(goal, side, odd=True) for side in ("left", "front")
+                                        if {side, _OPPOSITE[side][0]} <= ends_said))
             if middles:  # "the pink cube in the center" between the ends said: the middle of a row of an odd count
                 record.append({"mention": m.region, "kind": "place", "consumed_by": ", ".join(sorted(middles))})
                 continue

@@ -284,6 +284,9 @@ OPERATOR_SCENE_VERBS: frozenset[str] = frozenset(
 picture.", "Hold on."): they keep no framing sentence (:func:`rpg.schema.reading._framing_sentence`); the rest do
 ("Unstack.", "Remove.", "Scatter them.")."""
 
+TASK_SCENE_VERBS: frozenset[str] = SCENE_CHANGING_VERBS - OPERATOR_SCENE_VERBS
+"""The :data:`SCENE_CHANGING_VERBS` that keep a framing sentence: all but :data:`OPERATOR_SCENE_VERBS`."""
+
 RETRACTION_RE = re.compile(r"\b(?:kidding|joking|jokes?|jk|ignore\w*|forget|scrap|cancel\w*|disregard\w*|nevermind|never\s+mind"
                            r"|april\s+fools?|fooled|pretend\w*|lie|lying|strike|delete|erase|withdraw\w*|retract\w*|that|this|those|these"
                            r"|false|alarm|mistakes?|wrong|topsy|turvy|whichever|whatever|anything|anyhow|anyway|ways?|arrangement\w*"

@@ -177,7 +177,7 @@ def _framing_sentence(sentence: str) -> bool:
     if any(k not in ("condition", "question") for k, _, _ in _inexpressible(low)):
         return False  # a size, an object, an action...: refused for it, not dropped
     words = re.findall(r"[A-Za-z][A-Za-z']*", sentence)
-    if not words or any(w.lower() in lexicon.SCENE_CHANGING_VERBS - lexicon.OPERATOR_SCENE_VERBS for w in words):
+    if not words or any(w.lower() in lexicon.TASK_SCENE_VERBS for w in words):
         return False  # "Unstack.": a verb that changes the scene (it had been dropped as framing, the tower kept)
     for i, w in enumerate(words):
         base = w.lower().removesuffix("'s")
