@@ -434,9 +434,12 @@ CITERS: dict[str, Callable[[Constraint, _Reading], list[str]]] = {
 
 
 def _reading(schema: TaskSchema, text: str) -> _Reading:
+    from rpg.schema import lexicon
     from rpg.schema.accounting import UnaccountedMention, check_mentions
     from rpg.schema.reading import mark_regions, normalize
 
+    if schema.initial_state.structures:  # "Currently red is on blue. Put ...": the start read, the goal's words after it
+        text = lexicon.SCENE_NOW_OPENING_RE.sub("", text, count=1)
     try:
         record = check_mentions(text, schema)
     except (UnaccountedMention, BadInput):

@@ -849,6 +849,20 @@ EPISODE_END_RE = re.compile(r"\s*,?\s*\b(?:at|by)\s+the\s+(?:very\s+)?end\s+of\s
 """When the goal is checked, said ("The gray cube should be far from the black cube at the end of
 the episode."): a goal is always checked at the episode's end, so the words add nothing (dropped)."""
 
+SCENE_NOW_OPENING_RE = re.compile(r"(?i)^\s*(?:currently|right\s+now|at\s+the\s+moment|at\s+present)\s*,?\s+")
+"""The opening of a text that says the scene now ("Currently the pink cube is on the orange cube. Add ..."): a start
+where the initial-scene reader reads one there (:func:`rpg.schema.readers.initial.split`), refused elsewhere."""
+
+
+SWAP_HEADING_RE = re.compile(
+    rf"(?i)^\s*(?:swap|switch|exchange)\s+(?:places|positions|spots)\s*:\s*(?=(?:the\s+)?(?P<a>{COLOR_RE})\s+(?:cube|block)\s+"
+    rf"(?:goes|moves|must\s+go|should\s+go)\s+(?:on|onto|to)\s+the\s+(?P<b>{COLOR_RE})\s+patch\s*,?\s+and\s+(?:the\s+)?(?P=b)\s+(?:cube|block)\s+"
+    rf"(?:goes|moves|must\s+go|should\s+go)\s+(?:on|onto|to)\s+the\s+(?P=a)\s+patch\s*[.!]?\s*$)")
+"""A heading "Swap places:" over a text that says each cube's end place ("Swap places: the yellow cube goes on the cyan
+patch and the cyan cube goes on the yellow patch"): the swap is said by those places, so the heading is dropped (a swap
+said alone refers to where the cubes stand now, refused)."""
+
+
 FRAMING_RE = re.compile(
     r"^(?:(?:ok(?:ay)?|so|alright|right)\s*,?\s+)*(?:(?:so\s+)?here(?:'s|\s+is)\s+what\s+(?:i|we)\s+(?:want|need|would\s+like)"
     r"(?:\s+you\s+to\s+do)?\s*[.:,]\s*)?"
@@ -1187,6 +1201,20 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 r"(?![^.;]*\bof\s+the\s+(?:table|workspace)\b)"),  # (a place of the table's said with it: which cube's?)
      lambda m: (f"a {m.group(2)} " if m.group(2) else "") + {"left": "from left to right: ", "right": "from right to left: ", "front": "from front to back: ",
                 "back": "from back to front: "}[m.group(1)]),
+    # "so that green is leftmost, then blue, then pink, with red rightmost" ("leftmost" read "left"): the order from that
+    # side, its far end's cube the last (the places had been left unread)
+    (re.compile(rf"\b(?:so\s+that|such\s+that)\s+(?:the\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+is\s+(?:the\s+)?"
+                rf"(?:(?:at|on)\s+the\s+)?(?:far\s+)?(?P<a>left|right)(?:\s+(?:end|one))?\s*,\s*(?P<mid>then\s+(?:the\s+)?(?:{COLOR_RE})"
+                rf"(?:\s*,\s*then\s+(?:the\s+)?(?:{COLOR_RE}))*)\s*,?\s+(?:and|with)\s+(?:the\s+)?(?P<z>{COLOR_RE})(?:\s+(?:cube|block|one))?"
+                r"\s+(?:is\s+)?(?:the\s+)?(?:(?:at|on)\s+the\s+)?(?:far\s+)?(?P<b>left|right)(?:\s+(?:end|one))?(?=\s*(?:[.;!]|$))"),
+     lambda m: m.group(0) if m.group("a") == m.group("b") else
+     f"from {m.group('a')} to {m.group('b')}: {m.group('c')}, " + re.sub(r"\bthe\s+", "", m.group("mid")) + f", then {m.group('z')}"),
+    # "the rightmost is pink, next to it is orange, and the leftmost is gray" of a row of three: from that end
+    (re.compile(rf"\b(?:the\s+)?(?P<a>left|right)(?:\s+(?:one|cube|block))?\s+(?:is|should\s+be|must\s+be)\s+(?P<c1>{COLOR_RE})\s*,\s*(?:and\s+)?"
+                rf"next\s+to\s+it\s+(?:is|should\s+be|must\s+be|comes)\s+(?P<c2>{COLOR_RE})\s*,?\s+(?:and\s+)?(?:then\s+)?(?:the\s+)?"
+                rf"(?P<b>left|right)(?:\s+(?:one|cube|block))?\s+(?:is|should\s+be|must\s+be)\s+(?P<c3>{COLOR_RE})(?=\s*(?:[.;!]|$))"),
+     lambda m: m.group(0) if m.group("a") == m.group("b") or not re.search(r"\b(?:3|three)\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b", m.string)
+     else f"from {m.group('a')} to {m.group('b')}: {m.group('c1')}, then {m.group('c2')}, then {m.group('c3')}"),
     # "... yellow, then green, then pink on the far right": the last cube at the far end of the order said (said again)
     (re.compile(rf"\b(from\s+(left|right|front|back)\s+to\s+(left|right|front|back):\s+[^.;]*?\bthen\s+(?:the\s+)?(?:{COLOR_RE})"
                 r"(?:\s+(?:cube|block|one))?)\s+(?:on|at)\s+the\s+(?:far\s+|very\s+)?(left|right|front|back)(?:\s+end)?\b(?=\s*(?:[.;!]|$))"),
@@ -1223,7 +1251,8 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b(put|place|set)\s+(?:a|an|1|one|(?:the\s+)?(?:2|two))\s+({COLOR_RE})\s+(block|cube)s?\s+on\s+(?:each|either|both|2|opposite)\s+"
                 rf"sides?\s+of\s+the\s+({COLOR_RE})\s+(block|cube)\b"), r"\1 the \4 \5 between the 2 \2 \3s"),
     (re.compile(rf"\band\s+(?:(?:put|place|set)\s+)?(?:the\s+)?(?:2|two)\s+({COLOR_RE})\s+(block|cube)s\s+on\s+(?:each|either|both|2|opposite)\s+"
-                r"sides?\s+of\s+it\b"), r"and put it between the 2 \1 \2s"),
+                r"sides?\s+of\s+it\b"),  # (in a row of five, "two white cubes on each side" are four: the row's own reading)
+     lambda m: m.group(0) if re.search(r"\b(?:row|line)\s+of\s+(?:5|five)\b", m.string) else f"and put it between the 2 {m.group(1)} {m.group(2)}s"),
     # "three red cubes in the bottom row and three blue cubes in the row above": the second row
     (re.compile(r"(?<=\bbottom\s)(row|layer|level)\b(.*?)(?:\b(?:in|on)\s+the\s+(?:(?:next|following)\s+(?:row|layer|level)|(?:row|layer|level)\s+"
                 r"(?:above|on\s+top)(?:\s+(?:it|that|them|of\s+(?:it|that|them)))?)|\bon\s+top\s+of\s+(?:them|it|those|that))\b"),
@@ -3688,6 +3717,13 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 """Word orders of other languages and terse notes ("the cube brown", "the corner back right", "in bottom", "3 reds", separators): English order."""
 
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "the cyan cube goes on the table first, the brown one goes on it": the tower's first cube, at its bottom
+    (re.compile(r"\b(goes|go|is|sits|stands|comes)\s+(?:down\s+)?(on|onto)\s+the\s+table\s+first\b(?=\s*,[^.;]*\bon\s+(?:it|top)\b)"),
+     r"\1 \2 the table"),
+    # "and the gray one finishes the tower", "tops it off", "crowns the stack": the cube on top of it
+    (re.compile(r"\b(?:finishes|completes|crowns|caps|tops)\s+(?:(?:it|the\s+(?:tower|stack))(?:\s+off)?|off\s+the\s+(?:tower|stack))\b"
+                r"(?=\s*[.;!]?\s*$)"),
+     "goes on top"),
     # "in the gap between the blue cube and the yellow cube", "balanced on the red cube", ", whatever arrangement"
     (re.compile(r"\b(?:in|into)\s+the\s+(?:gap|space)\s+between\b"), "between"),
     (re.compile(r"\bbalanced\s+(?=(?:on|onto|atop|upon)\b)"), ""),
@@ -3953,7 +3989,29 @@ ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 any colour."""
 
 
+_AXIS_END_MARKS = {
+    "front": r"(?:(?:near(?:est)?|clos(?:e|er|est))(?:\s+to)?\s+(?:the\s+|your\s+)?robot|at\s+the\s+(?:very\s+)?front|in\s+front)",
+    "back": r"(?:far(?:\s+away)?(?:\s+from\s+(?:the\s+|your\s+)?robot)?|at\s+the\s+(?:very\s+)?back|in\s+the\s+back)",
+}
+"""Words that mark a cube as the one at the front or the back end of a list ("blue nearest the robot", "red farthest away";
+"farthest" is read "far")."""
+
+
+def _axis_ends(m: re.Match) -> str:
+    """"from front to back: blue nearest the robot, then yellow, then red farthest away" -> "from front to back: blue, then
+    yellow, then red": the marks on the list's first and last cubes say again which end each is (they had been read as a
+    place of the table, and the first cube left out of the line); a mark that names the other end stays (refused)."""
+    start, end, items = m.group("a"), m.group("b"), m.group("list")
+    cube = rf"(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?"
+    items = re.sub(rf"^({cube})\s+(?:is\s+)?{_AXIS_END_MARKS[start]}(?=\s*,)", r"\1", items)
+    items = re.sub(rf"(\bthen\s+{cube})\s+(?:is\s+)?{_AXIS_END_MARKS[end]}\s*$", r"\1", items)
+    return f"from {start} to {end}: {items}"
+
+
 LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "from front to back: blue nearest the robot, then yellow, then red farthest away": the ends' marks said again
+    (re.compile(r"\bfrom\s+(?P<a>front|back)\s+to\s+(?P<b>front|back)\s*:\s*(?P<list>[^.;:]*?)(?=\s*(?:[.;!]|$))"),
+     _axis_ends),
     # the robot as a landmark: its side of the table is the front, its left and right the table's (rpg's frame,
     # :mod:`rpg.domain.constants`) ("in front of the robot", "toward the robot", "on the robot's left": a region of the
     # table; the words had been dropped with "robot's", ignorable, and a row or two cubes read anywhere)
@@ -4227,8 +4285,9 @@ TOWER_BETWEEN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      "in the middle"),
     # "a tower with cyan at the bottom and red at the top, with the blue cube between them", "..., one gray block between
     # them": its middle
-    (re.compile(rf"(?:(?<=\bwith\s)|(?<=,\sand\s)|(?<=,\s))(?:1\s+|one\s+)?((?:the\s+|an?\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?)\s+(?:in\s+)?between\s+"
-                r"(?:them|those\s+two|the\s+two)\b"
+    # ("purple is at the bottom and green is between them": the same, said as a state)
+    (re.compile(rf"(?:(?<=\bwith\s)|(?<=,\sand\s)|(?<=,\s)|(?<=\sand\s))(?:1\s+|one\s+)?((?:the\s+|an?\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?)\s+"
+                r"(?:(?:is|goes|sits|stands)\s+)?(?:in\s+)?between\s+(?:them|those\s+two|the\s+two)\b"
                 rf"(?=\s*[.!]?\s*$)"),
      r"\1 in the middle"),
 )

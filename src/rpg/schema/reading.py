@@ -1111,6 +1111,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     for pattern in lexicon.GRADING_FRAME_RES:  # "Q3. (4 points) ...", "full marks if ...; zero otherwise"
         original = pattern.sub("", original).strip()
     original, asides = drop_asides(original)  # "Put the green block on the purple block. What a tower!"
+    original = lexicon.SWAP_HEADING_RE.sub("", original)  # "Swap places: the yellow cube goes on the cyan patch and ..."
     original = lexicon.FILLER_RE.sub("", original).strip()
     original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", original)  # texting's "2" for "to"
     original = lexicon.TEXTED_YOU_RE.sub("you", original)  # "can u build ...": texting's "u"
@@ -1778,7 +1779,8 @@ _CHAIN_ITEM_RE = re.compile(
     r"(?P<role>" + "|".join(f"(?P<{k}>{r})" for k, r in _CHAIN_ROLES) + r")")
 _CHAIN_SEP_RE = re.compile(r"\s*(?:,\s*(?:and\s+)?(?:then\s+)?|;\s*|\s+and\s+(?:then\s+)?|\s+then\s+)")
 _CHAIN_HEAD_RE = re.compile(
-    rf"(?:(?:please|now|puzzle\s*:)\s+)*(?:(?:make|build|create|form|construct|stack|assemble)\s+(?:a|an|1)\s+(?P<noun>{TOWER_NOUNS})"
+    rf"(?:(?:please|now|puzzle\s*:)\s+)*(?:(?:make|build|create|form|construct|stack|assemble|(?:i|we)\s+(?:want|need)"
+    rf"|(?:i|we)\s+would\s+like)\s+(?:a|an|1)\s+(?P<noun>{TOWER_NOUNS})"
     rf"(?:\s+(?:of|from|with|out\s+of|using)\s+(?:(?P<count>\d+|{lexicon.COUNT_WORD_RE})(?:\s+(?:blocks|cubes|bricks))?"
     rf"|(?:the\s+)?(?P<set>(?:{COLOR_RE})(?:\s*,\s*(?:{COLOR_RE}))*\s*,?\s+and\s+(?:{COLOR_RE}))\s+(?:cubes|blocks|bricks)"
     rf"(?P<where>\s+on\s+the\s+(?:{COLOR_RE})\s+(?:goal\s+)?patch)?))?"
@@ -2092,7 +2094,8 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     (_ROLE_CLAUSES_RE, _role_clauses),
     # "a line of five: an orange cube in the middle, two brown cubes on each side": the middle, the sides counted (the
     # middle cube had been refused as a place the row does not order)
-    (re.compile(rf"\b(?P<row>(?:row|line)\s+of\s+(?P<n>\d+)(?:\s+(?:cubes|blocks))?)\s*[:,]\s*(?:an?\s+|the\s+|1\s+)?(?P<m>{COLOR_RE})"
+    # ("a row of five cubes with a black cube in the middle and two white cubes on each side of it": the same)
+    (re.compile(rf"\b(?P<row>(?:row|line)\s+of\s+(?P<n>\d+)(?:\s+(?:cubes|blocks))?)(?:\s*[:,]\s*|\s+with\s+)(?:an?\s+|the\s+|1\s+)?(?P<m>{COLOR_RE})"
                 rf"(?:\s+(?:cube|block|one))?\s+in\s+the\s+(?:middle|center|centre)\s*,?\s+(?:and\s+|with\s+)*(?P<k>\d+)\s+(?P<e>{COLOR_RE})"
                 r"(?:\s+(?:cubes|blocks|ones))?\s+(?:at|on)\s+(?:each|both|either)\s+(?:ends?|sides?)(?:\s+of\s+(?:it|them))?\b"),
      lambda m: (f"{m.group('row')}: from left to right: " + ", ".join([m.group("e")] * int(m.group("k")) + [m.group("m")]

@@ -414,8 +414,8 @@ top of the blue cube. Put it on the green patch.", "The red cube is stacked on t
 as "Initially ..." (the stack had been read as the goal, and "it" as the stack: silently wrong).  Only where the command
 moves "it" or the top cube named (moved, the top cube cannot also be the goal's), moves any cube after "there is" (what
 is there now), or puts a named cube on top ("A green block sits on a brown block. Put a gray block on top.", "... on top
-of the green block", "... on it").  "Right now" and "currently" stay refused (the scene now): the citations of a goal
-read the text as written, where they are."""
+of the green block", "... on it").  Said after "Currently" or "Right now" (the scene now,
+:data:`lexicon.SCENE_NOW_OPENING_RE`) it is the same start; the citations read the goal's words without that opening."""
 
 
 def _there_is_start(m: re.Match) -> str:
@@ -440,7 +440,11 @@ def split(instruction: str) -> InitialScene | None:
                          instruction.strip())  # "# goal (unstack): the pink cube starts ...": its label
     instruction = lexicon.tower_ends_said(instruction)  # "red (bottom), blue, yellow (top)"
     instruction = ROBOT_STARTS_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
-    instruction = THERE_IS_START_RE.sub(_there_is_start, instruction.strip())
+    # "Currently the pink cube is on the orange cube. Add ...": the scene now said before a command that moves or tops its
+    # top cube is the start (elsewhere "currently" stays refused: which words are the goal's?)
+    now = lexicon.SCENE_NOW_OPENING_RE.sub("", instruction.strip(), count=1)
+    started = THERE_IS_START_RE.sub(_there_is_start, now)
+    instruction = started if started != now else THERE_IS_START_RE.sub(_there_is_start, instruction.strip())
     instruction = FROM_START_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     instruction = FROM_STRUCTURE_RE.sub(_from_structure, instruction.strip())
     undone = UNSTACK_SAID_RE.match(instruction.strip())
