@@ -300,6 +300,18 @@ COMMENTARY_BLOCKING_KINDS: frozenset[str] = frozenset({"negation", "time", "quan
 commentary: each may bear on the goal ("Never twice.", "Under a golden sky."); an object, an action on no cube, a
 condition on a person or a question to one ("Serve with a smile.", "What do you do?") bears on none."""
 
+OFF_TOPIC_ANCHORS: frozenset[str] = frozenset("""
+it its them they their this that these those one ones so here there both all each every rest others other another else
+anything everything something nothing anyone robot robots gripper grippers arm arms hand hands camera time limit limits timer
+timeout deadline seconds second minutes minute steps step attempts attempt tries try episode episodes trial trials speed fast
+slow slowly quickly quick gently carefully careful same""".split())
+"""Words that keep a sentence naming no cube tied to the task, so that a negation, a quantity, time or a condition in it may
+bear on the goal or its episode: references that may stand for cubes ("Do it twice.", "Nothing else."), the robot and its
+parts ("Do so if the gripper is free."), the episode's time, tries and speed ("There is a strict time limit.").  A sentence
+with none of them whose words of those kinds are said of a topic of its own ("No smokers.", "Would buy again.", "Serve at
+room temperature.") is a voice's commentary (:func:`rpg.schema.reading._off_topic_sentence`)."""
+
+
 EVALUATION_WORD_RE = re.compile(
     r"\b(?:episodes?|seeds?|trials?|rollouts?|success(?:\s+(?:rates?|checks?|criteri(?:on|a)|conditions?|detectors?))?"
     r"|scores?|scored|scoring|leaderboards?|entr(?:y|ies)|baselines?|polic(?:y|ies)|metrics?|benchmarks?|accuracy|percent"
@@ -969,6 +981,10 @@ PLACEMENT_VERBS: dict[str, str] = {
     "hoist": "place", "heave": "place", "ease": "place", "nudge": "place", "scoot": "place", "shove": "place", "haul": "place",
     "carry": "place", "lug": "place", "deposit": "place", "park": "place", "plant": "place", "station": "place",
     "seat": "place", "perch": "place", "deliver": "place", "dump": "place", "tuck": "place",
+    # a cube's own travel to where it ends ("the black cube glides to the left of the white cube", "the red cube travels
+    # onto the green patch"): a voice that makes the cubes dancers or travellers (a spin, a roll or a toss stays refused)
+    "glide": "place", "travel": "place", "drift": "place", "wander": "place", "stroll": "place", "waltz": "place",
+    "sashay": "place", "tiptoe": "place", "scurry": "place", "hop": "place", "shimmy": "place",
 }
 """Verbs that ask for objects to end up somewhere, by lemma -> the parser's verb."""
 

@@ -196,6 +196,12 @@ def _framing_sentence(sentence: str) -> bool:
 
 
 def _commentary_sentence(sentence: str) -> bool:
+    """Whether a sentence of a text that says its task elsewhere is a voice's commentary, dropped by :func:`drop_asides`:
+    idle (:func:`_idle_commentary`) or talking of a topic of its own (:func:`_off_topic_sentence`)."""
+    return _idle_commentary(sentence) or _off_topic_sentence(sentence)
+
+
+def _idle_commentary(sentence: str) -> bool:
     """Whether a sentence of a text that says its task elsewhere is a voice's commentary (a recipe's "Season to taste.", a
     ship's log's "Calm seas.", a commentator's "The crowd goes wild."), dropped by :func:`drop_asides`: at least two
     words; no word of a goal, count or digit (:data:`lexicon.TASK_CONTENT_RE`, :data:`lexicon.ASIDE_CONTENT_RE`); nothing
@@ -217,6 +223,41 @@ def _commentary_sentence(sentence: str) -> bool:
                     base not in VOCAB and senses.sense(base).kind in lexicon.COMMENTARY_BLOCKING_KINDS):
                 return False
     return not any(k in lexicon.COMMENTARY_BLOCKING_KINDS for k, _, _ in _inexpressible(low))
+
+
+def _off_topic_sentence(sentence: str) -> bool:
+    """Whether a sentence of a text that says its task elsewhere talks of a topic of its own, so that its negation,
+    quantity, time or condition bears on that topic, not on the goal (a dating profile's "No smokers.", a review's "Would
+    buy again.", a tasting note's "Serve at room temperature."; they had refused the task around them): at least two words;
+    no digit, word of a goal, colour, retraction or verb that changes the scene; no word that keeps it tied to the task
+    (:data:`lexicon.OFF_TOPIC_ANCHORS`: "Do it twice.", "There is a strict time limit."); no object the domain lacks
+    ("Mind the coffee mug.": refused for it); and a noun or verb of its own beyond those the domain refuses and the
+    fillers ("Never again.", "Not yet." have none, and stay refused)."""
+    low = sentence.lower()
+    words = re.findall(r"[a-z][a-z'\-]*", low)
+    if len(words) < 2 or re.search(r"\d", low) or lexicon.TASK_CONTENT_RE.search(low) or lexicon.GOAL_THING_RE.search(low) \
+            or lexicon.RETRACTION_RE.search(low):
+        return False
+    refused = _inexpressible(low)
+    if any(k == "object" for k, _, _ in refused):
+        return False
+    said = {w for _, ws, _ in refused for phrase in ws for w in re.findall(r"[a-z][a-z'\-]*", phrase.lower())}
+    topic = False
+    for w in words:
+        base = w.removesuffix("'s")
+        if base in lexicon.OFF_TOPIC_ANCHORS or base in COLORS or base in lexicon.colour_names() \
+                or base in lexicon.SCENE_CHANGING_VERBS or any(x in lexicon.SCENE_CHANGING_VERBS for x in lexicon.lemmas(base)):
+            return False
+        if base in said or base in VOCAB or base in lexicon.FUNCTION_WORDS or base in lexicon.IDLE_WORDS \
+                or base in lexicon.CHAT_WORDS or base in lexicon.AUXILIARY_WORDS or base in lexicon.INTERJECTIONS:
+            continue
+        kind = senses.sense(base).kind
+        if kind == "object":
+            return False
+        if kind not in lexicon.COMMENTARY_BLOCKING_KINDS and kind != "action" \
+                and lexicon.parts_of_speech(base) & {"NOUN", "PROPN", "VERB"}:
+            topic = True
+    return topic
 
 
 def _frame_prefix(words: str) -> bool:
