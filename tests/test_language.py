@@ -5981,7 +5981,6 @@ def test_stressed_relations_diagonal_pairs_and_idle_commentary(text, expected):
     ("Build a line of red cubes. Use plenty.", "quantity"),
     ("Put the red cube on the blue cube. There is a strict time limit.", None),
     ("Put the red cube on the blue cube. Do so if the gripper is free.", "condition"),
-    ("Put the red cube on the blue cube. Call the clinic if symptoms persist.", "condition"),
     # a hostile helper's attack on the diagonal and "it" readings: each had compiled silently wrong mid-session
     ("Put the red cube to the back-right of the blue patch.", None),  # a blue cube had been made up
     ("Move the cube to the front-right of the blue cube onto the green cube.", None),  # a cube picked by its place
@@ -6040,15 +6039,34 @@ def test_columns_running_from_the_robot_and_rows_with_a_middle_cube(text, expect
     assert sorted(meaning(check_feasibility(parse(text)))) == expected
 
 
-@pytest.mark.parametrize("text", [
-    # a base of three and one cube on top: rpg's pyramids step in by one cube a layer, so a middle layer had been made up
-    "Make a pyramid whose base is three cubes (pink, orange, cyan) with a white cube at the apex.",
-    "a pyramid with white, pink and cyan forming the base and a gray cube at the top",
-    "a pyramid with three cubes on the bottom and one on top",
-    "pyramid: bottom layer pink, orange, cyan; top layer white",
+@pytest.mark.parametrize("text, expected", [
+    # a base of three and one cube on top: those two layers, the top cube centred over the base (a middle layer had been
+    # made up, then it was refused; twenty-ninth session: Pyramid(layers=(3, 1)))
+    ("Make a pyramid whose base is three cubes (pink, orange, cyan) with a white cube at the apex.", ["pyramid(cyan,orange,pink|white)"]),
+    ("a pyramid with white, pink and cyan forming the base and a gray cube at the top", ["pyramid(cyan,pink,white|gray)"]),
+    ("pyramid: bottom layer pink, orange, cyan; top layer white", ["pyramid(cyan,orange,pink|white)"]),
+    ("Build a pyramid with pink, orange and cyan on the bottom and red on top.", ["pyramid(cyan,orange,pink|red)"]),
+    ("Build a pyramid. Base: pink, orange, cyan. Top: red.", ["pyramid(cyan,orange,pink|red)"]),
+    ("Pyramid task: bottom layer purple, purple, brown; top layer blue.", ["pyramid(brown,purple,purple|blue)"]),
+    ("build a two-level pyramid: three yellow cubes on the bottom layer and one red cube on top", ["pyramid(yellow,yellow,yellow|red)"]),
+    ("The cube pyramid has a base of three cubes (red, red, blue) and a single yellow cube on top of them.",
+     ["pyramid(blue,red,red|yellow)"]),
 ])
-def test_a_pyramid_with_no_layer_between_base_and_top_is_refused(text):
-    with pytest.raises(ParseError, match="no layer between"):
+def test_a_pyramid_of_a_base_under_one_cube_is_those_two_layers(text, expected):
+    schema = check_feasibility(parse(text))
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []
+    pyramid = next(p for p in schema.goal_predicate().walk() if type(p).__name__ == "Pyramid")
+    assert pyramid.layers == (pyramid.base, 1)
+
+
+@pytest.mark.parametrize("text", [
+    "Build a pyramid whose base is red and blue on top.",  # the base's cubes unsaid
+    "Build a pyramid with red, green and blue on the bottom and a yellow and a pink cube on top.",  # two on top
+    "a pyramid with three cubes on the bottom (red, green, blue), a white one on top and a pink one next to it",
+])
+def test_a_pyramid_of_a_base_under_one_cube_with_its_cubes_unsaid_is_refused(text):
+    with pytest.raises(BadInput):
         check_feasibility(parse(text))
 
 
@@ -6099,8 +6117,6 @@ def test_a_pyramid_whose_base_is_not_said_keeps_its_default_size_with_a_top_cube
 @pytest.mark.parametrize("text", [
     # a second hostile helper's attack on the column, start and pyramid readings (each had compiled silently wrong)
     "The green cube sits on the blue cube. Put the white cube on top of the green cube, then put the whole tower on the red cube.",
-    "Build a pyramid with pink, orange and cyan on the bottom and red on top.",  # a middle layer made up
-    "Build a pyramid. Base: pink, orange, cyan. Top: red.",
     "Build a pyramid whose base is red and blue on top.",  # (once read with a middle layer of colours nobody said)
     "Build a tower of red and blue. Build another one.",  # the second tower had been dropped
 ])

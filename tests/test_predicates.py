@@ -229,6 +229,26 @@ def test_pyramid_2d_and_3d():
     assert not Pyramid(tuple(o.name for o in p3), base=3, dims=2).evaluate(state(*p3))
 
 
+def test_pyramid_of_layers_said_one_by_one():
+    # three on the bottom and one on top: the top cube over the middle one (a stepped pyramid's top stands over a gap)
+    from rpg.domain.layouts import pyramid_layout
+
+    names = ("a", "b", "c", "d")
+    pyramid = Pyramid(names, base=3, layers=(3, 1))
+    goal = pyramid_layout(names, 3, 2, layers=(3, 1))
+    assert abs(goal["d"].pos[1] - goal["b"].pos[1]) < 1e-9
+    built = [cube(n, 0.55, -c * E, Z0) for c, n in enumerate(names[:3])] + [cube("d", 0.55, -1 * E, Z0 + E)]
+    assert pyramid.evaluate(state(*built))
+    over_gap = built[:3] + [cube("d", 0.55, -0.5 * E, Z0 + E)]
+    assert not pyramid.evaluate(state(*over_gap))
+    assert not Pyramid(names, base=3, layers=(3, 1)).evaluate(state(*built[:3], cube("d", 0.55, -3 * E, Z0)))
+    assert pyramid.expected_count() == 4 and pyramid.to_dict()["layers"] == [3, 1]
+    assert "layers" not in Pyramid(names[:3], base=2).to_dict()  # pyramids written before the field keep their hashes
+    for bad in ((2, 2), (3, 2, 3), (3,), (4, 1), (3, 0)):
+        with pytest.raises(ValueError):
+            Pyramid(names, base=3, layers=bad)
+
+
 def test_piles_by_color_and_groups():
     objs = [cube("r1", 0.45, 0.15), cube("r2", 0.45, 0.2), cube("b1", 0.65, -0.15, color="blue"), cube("b2", 0.65, -0.2, color="blue")]
     names = tuple(o.name for o in objs)

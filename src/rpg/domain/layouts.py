@@ -106,19 +106,34 @@ def pyramid_sites(base: int, dims: int) -> list[tuple[int, int, int]]:
     return sites
 
 
+def layered_sites(layers: Sequence[int]) -> list[tuple[int, float]]:
+    """(layer, offset along the base in cube pitches from its left end) of every site of a 2D pyramid whose layers hold
+    ``layers`` cubes from the bottom up, each layer centred over the one below ("three on the bottom and one on top":
+    ``(3, 1)``, the top cube over the middle one); a pyramid that steps in by one cube a layer is ``(n, n-1, ..., 1)``."""
+    base = layers[0]
+    return [(k, (base - m) / 2 + c) for k, m in enumerate(layers) for c in range(m)]
+
+
 def pyramid_layout(
     names: Sequence[str], base: int, dims: int = 2,
     center: tuple[float, float] = C.WORKSPACE_CENTER, edge: float = C.CUBE_EDGE,
+    layers: Sequence[int] = (),
 ) -> dict[str, Pose]:
     """A pyramid with a base of ``base`` (2D wall along y, or 3D with a base x base square).
 
     ``names`` fill :func:`pyramid_sites` in order: bottom layer first, rows front to back,
-    left to right; each upper cube sits over the gap between the cubes below.
+    left to right; each upper cube sits over the gap between the cubes below.  ``layers``
+    (2D only): the cubes of each layer from the bottom up, each layer centred over the one
+    below (:func:`layered_sites`), where they do not step in by one.
     """
     p = edge + LAYOUT_GAP
     x0 = center[0] - ((base - 1) * p / 2 if dims == 3 else 0.0)
     y0 = center[1] + (base - 1) * p / 2
     out = {}
+    if layers:
+        for name, (k, offset) in zip(names, layered_sites(layers), strict=True):
+            out[name] = Pose((x0, y0 - offset * p, _z(k, edge)))
+        return out
     for name, (k, r, c) in zip(names, pyramid_sites(base, dims), strict=True):
         dx = (k / 2 + r) * p if dims == 3 else 0.0
         out[name] = Pose((x0 + dx, y0 - (k / 2 + c) * p, _z(k, edge)))

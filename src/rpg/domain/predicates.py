@@ -30,6 +30,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from rpg.domain import constants as C
+from rpg.domain.layouts import layered_sites
 from rpg.domain.palette import GRADIENT_ORDER
 from rpg.domain.state import DIRECTIONS, ObjectState, WorldState
 
@@ -1215,22 +1216,48 @@ class Pyramid(Predicate):
 
     ``dims=2``: a wall facing the camera, layers of N, N-1, ... 1 cubes along y, each cube
     resting on the two below it.  ``dims=3``: layers of NxN, (N-1)x(N-1), ... 1, each cube
-    resting on the four below it.
+    resting on the four below it.  ``layers`` (2D only; empty for the steps above): the
+    cubes of each layer from the bottom up, ``layers[0] == base``, none wider than the one
+    below, each centred over it ("three on the bottom and one on top": ``(3, 1)``, the top
+    cube on the middle one; :func:`rpg.domain.layouts.layered_sites`).
+
+    Raises:
+        ValueError: ``layers`` given for a 3D pyramid, not starting with ``base``, widening
+            upwards or of fewer than two layers.
     """
 
     objects: tuple[str, ...]
     base: int
     dims: int = 2
+    layers: tuple[int, ...] = ()
     name: ClassVar[str] = "pyramid"
     cue: ClassVar[str] = r"\b(?:pyramids?|triangle|triangular)\b"
     swap_invariant: ClassVar[bool] = True
     list_fields: ClassVar[tuple[str, ...]] = ("objects",)
+    quiet_defaults: ClassVar[tuple[str, ...]] = ("layers",)  # (pyramids written before it keep their hashes)
+
+    def __post_init__(self) -> None:
+        super().__post_init__()
+        object.__setattr__(self, "layers", tuple(self.layers))
+        layers = self.layers
+        if layers and (self.dims != 2 or len(layers) < 2 or layers[0] != self.base or min(layers) < 1
+                       or any(b > a for a, b in zip(layers, layers[1:]))):
+            raise ValueError(f"a pyramid's layers {list(layers)} must start with its base {self.base}, narrow upwards, "
+                             "have two or more layers and stand in 2D")
+
+    def layer_sizes(self) -> list[int]:
+        """The cubes of each layer from the bottom up (squared in 3D)."""
+        if self.layers:
+            return list(self.layers)
+        return [(self.base - k) ** (self.dims - 1) for k in range(self.base)]
 
     def expected_count(self) -> int:
-        return sum((self.base - k) ** (self.dims - 1) for k in range(self.base))
+        return sum(self.layer_sizes())
 
     def counts(self) -> set[int]:
         """The whole, the base and each layer's cubes (N, N-1, ... 1; squared in 3D)."""
+        if self.layers:
+            return super().counts() | set(self.layers)
         return super().counts() | {m ** (self.dims - 1) for m in range(1, self.base + 1)}
 
     def _evaluate(self, state):
@@ -1241,7 +1268,9 @@ class Pyramid(Predicate):
                                 {"count": len(objs)}, {"count": n})
         origin, p = _bottom_origin(objs)
         sites = []
-        for k in range(self.base):
+        if self.layers:
+            sites = [origin + [0.0, -offset * p, k * p] for k, offset in layered_sites(self.layers)]
+        for k in range(0 if self.layers else self.base):
             m = self.base - k
             rows = range(m) if self.dims == 3 else range(1)
             for r in rows:
@@ -1260,6 +1289,8 @@ class Pyramid(Predicate):
         return [(n, "table") for n in self.objects[: self.base ** (self.dims - 1)]]
 
     def describe(self):
+        if self.layers:
+            return f"2D pyramid with layers of {'-'.join(str(m) for m in self.layers)} cubes from the bottom"
         base = f"{self.base}x{self.base}" if self.dims == 3 else str(self.base)
         return f"{self.dims}D pyramid with a base of {base}"
 

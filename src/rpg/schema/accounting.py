@@ -430,13 +430,14 @@ def _structure_sizes(schema: TaskSchema, kind: str) -> list[int]:
 
 def _heights(schema: TaskSchema) -> list[int]:
     """How high each structure of the goal stands, in cubes: a tower's cubes (any :class:`P.Stack`), a
-    pyramid's base (a pyramid with a base of n is n layers high), a layered grid's (a wall's) layers."""
+    pyramid's layers (a pyramid with a base of n is n layers high, one of a base under one cube two), a layered
+    grid's (a wall's) layers."""
     out = set()
     for p in schema.goal_predicate().walk():
         if isinstance(p, P.Stack):
             out.add(len(p.objects))
         elif isinstance(p, P.Pyramid):
-            out.add(p.base)
+            out.add(len(p.layer_sizes()) if p.dims == 2 else p.base)  # (3 under 1: two high)
         elif isinstance(p, P.Grid) and p.layers > 1:
             out.add(p.layers)
     return sorted(out)

@@ -304,12 +304,25 @@ OFF_TOPIC_ANCHORS: frozenset[str] = frozenset("""
 it its them they their this that these those one ones so here there both all each every rest others other another else
 anything everything something nothing anyone robot robots gripper grippers arm arms hand hands camera time limit limits timer
 timeout deadline seconds second minutes minute steps step attempts attempt tries try episode episodes trial trials speed fast
-slow slowly quickly quick gently carefully careful same""".split())
+slow slowly quickly quick gently carefully careful same then next after afterwards finally lastly first before later once more
+colour colours color colors order orders shape shapes size sizes position positions place places collision collisions
+collide crash bump hit touch touching knock""".split())
 """Words that keep a sentence naming no cube tied to the task, so that a negation, a quantity, time or a condition in it may
 bear on the goal or its episode: references that may stand for cubes ("Do it twice.", "Nothing else."), the robot and its
-parts ("Do so if the gripper is free."), the episode's time, tries and speed ("There is a strict time limit.").  A sentence
+parts ("Do so if the gripper is free."), the episode's time, tries, speed and collisions ("There is a strict time limit.",
+"Avoid collisions."), a step of a sequence ("Then celebrate.", "Once more."), the cubes' colours, order and places
+("Colours don't matter.").  A sentence
 with none of them whose words of those kinds are said of a topic of its own ("No smokers.", "Would buy again.", "Serve at
 room temperature.") is a voice's commentary (:func:`rpg.schema.reading._off_topic_sentence`)."""
+
+
+OFF_TOPIC_HAZARD_RE = re.compile(
+    r"(?:not|no|never|none|nobody|neither|nor|without|except|unless|[a-z]+n't|cannot|should|must|shall|need|needs|needed"
+    r"|has\s+to|have\s+to|had\s+to|ought|require\w*|want\w*|expect\w*|again|still|already|only|much|many|by|up|down|out|off"
+    r"|over|through|long|equal\w*)")
+"""The words of :data:`FRAMING_SENTENCE_HAZARD_RE` a sentence talking of a topic of its own may hold, said of that topic
+("No smokers.", "Must be a team player.", "Would buy again.", "Apply by Friday."): a negation, a need or wish, a
+repetition, particles.  Any other ("Vice versa.", "Diagonal please.", "Then celebrate.") keeps it tied to the task."""
 
 
 EVALUATION_WORD_RE = re.compile(

@@ -229,14 +229,16 @@ def _off_topic_sentence(sentence: str) -> bool:
     """Whether a sentence of a text that says its task elsewhere talks of a topic of its own, so that its negation,
     quantity, time or condition bears on that topic, not on the goal (a dating profile's "No smokers.", a review's "Would
     buy again.", a tasting note's "Serve at room temperature."; they had refused the task around them): at least two words;
-    no digit, word of a goal, colour, retraction or verb that changes the scene; no word that keeps it tied to the task
+    no digit, word of a goal, colour, retraction or verb that changes the scene; no hazard but a negation, a need or a
+    repetition said of its topic (:data:`lexicon.OFF_TOPIC_HAZARD_RE`); no word that keeps it tied to the task
     (:data:`lexicon.OFF_TOPIC_ANCHORS`: "Do it twice.", "There is a strict time limit."); no object the domain lacks
     ("Mind the coffee mug.": refused for it); and a noun or verb of its own beyond those the domain refuses and the
     fillers ("Never again.", "Not yet." have none, and stay refused)."""
     low = sentence.lower()
     words = re.findall(r"[a-z][a-z'\-]*", low)
     if len(words) < 2 or re.search(r"\d", low) or lexicon.TASK_CONTENT_RE.search(low) or lexicon.GOAL_THING_RE.search(low) \
-            or lexicon.RETRACTION_RE.search(low):
+            or lexicon.RETRACTION_RE.search(low) or any(not lexicon.OFF_TOPIC_HAZARD_RE.fullmatch(m.group(0))
+                                                        for m in lexicon.FRAMING_SENTENCE_HAZARD_RE.finditer(low)):
         return False
     refused = _inexpressible(low)
     if any(k == "object" for k, _, _ in refused):
@@ -248,8 +250,12 @@ def _off_topic_sentence(sentence: str) -> bool:
         if base in lexicon.OFF_TOPIC_ANCHORS or base in COLORS or base in lexicon.colour_names() \
                 or base in lexicon.SCENE_CHANGING_VERBS or any(x in lexicon.SCENE_CHANGING_VERBS for x in lexicon.lemmas(base)):
             return False
-        if base in said or base in VOCAB or base in lexicon.FUNCTION_WORDS or base in lexicon.IDLE_WORDS \
-                or base in lexicon.CHAT_WORDS or base in lexicon.AUXILIARY_WORDS or base in lexicon.INTERJECTIONS:
+        if base in lexicon.FUNCTION_WORDS or base in lexicon.IDLE_WORDS or base in lexicon.CHAT_WORDS \
+                or base in lexicon.AUXILIARY_WORDS or base in lexicon.INTERJECTIONS:
+            continue
+        if base in VOCAB:
+            return False  # a word of the domain ("Beneath, I mean."): the sentence may bear on the goal
+        if base in said:
             continue
         kind = senses.sense(base).kind
         if kind == "object":

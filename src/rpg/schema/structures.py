@@ -347,7 +347,8 @@ class PyramidKind(StructureKind):
     carriers = ("pyramid",)
 
     def extract(self, parts, seq):
-        if isinstance(parts.main, Pyramid) and parts.kinds <= {Pyramid, SortedBy, LayersUniform}:
+        # (a pyramid of layers said one by one, "three on the bottom and one on top", is not one a spec states)
+        if isinstance(parts.main, Pyramid) and not parts.main.layers and parts.kinds <= {Pyramid, SortedBy, LayersUniform}:
             m = parts.main
             return TaskSpec("pyramid", seq(m.objects), (m.base, m.dims), layer_colors=parts.layers, **parts.ordering)
         return None

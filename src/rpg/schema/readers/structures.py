@@ -229,24 +229,79 @@ base is three cubes (pink, orange, cyan)", "bottom layer pink, orange, cyan"), n
 that size, whose layers a reader knows)."""
 
 
-def _refuse_skipped_layers(f: Features, base: int, dims: int, roles: dict) -> None:
-    """Refuse a pyramid said as a base of three or more (its colours or its count) and one cube on top with nothing of the
-    layers between ("a pyramid whose base is pink, orange and cyan with a white cube at the apex", "three cubes on the
-    bottom and one on top"): rpg's pyramids step in by one cube a layer, so the layers between would be cubes (and
-    colours) nobody named (a middle layer had been made up).  A pyramid whose base is not said ("a pyramid with a red
-    cube on top") keeps the default size."""
+def _skipped_layers(f: Features, base: int, dims: int, roles: dict) -> bool:
+    """Whether a pyramid is said as a base of three or more (its colours or its count) and one cube on top with nothing
+    of the layers between ("a pyramid whose base is pink, orange and cyan with a white cube at the apex", "three cubes on
+    the bottom and one on top"): the layers said are the pyramid's (:func:`_layered_pyramid`; a middle layer had been made
+    up).  A pyramid whose base is not said ("a pyramid with a red cube on top") keeps the default size."""
     levels = {level for _, level in roles}
-    if dims != 2 or base < 3 or _LAYERS_BETWEEN_SAID_RE.search(f.text) or any(0 < level < base - 1 for level in levels):
-        return
+    two_said = re.sub(r"\b(?:2|two)[\s-]+(?:layers?|levels?|tiers?|stor(?:y|ey|ies|eys))\b", " ", f.text)  # "a two-level pyramid"
+    if dims != 2 or base < 3 or _LAYERS_BETWEEN_SAID_RE.search(two_said) or any(0 < level < base - 1 for level in levels):
+        return False
+    if two_said != f.text:
+        return bool(_ONE_ON_TOP_RE.search(f.text))
     ends_said = {0, base - 1} <= levels  # "pink, orange and cyan on the bottom and red on top": both ends' colours
     # a base said by its cubes, not its size ("a base of 3 and 1 red cube on top"), nor unsaid ("a red cube on top")
     base_said = 0 in levels or _BASE_SAID_RE.search(f.text)
-    if not (ends_said or (base_said and _ONE_ON_TOP_RE.search(f.text))):
-        return
-    raise ParseError(f"\"{f.original[:80]}\" names a pyramid's base of {base} and one cube on top, but no layer between: a "
-                     f"pyramid of cubes steps in by one cube a layer ({', '.join(str(base - k) for k in range(base))}), so "
-                     "the cubes between would be made up; say the middle layer (e.g. \"... two green cubes in the middle "
-                     "...\"), or use --model")
+    return bool(ends_said or (base_said and _ONE_ON_TOP_RE.search(f.text)))
+
+
+_BASE_LIST = rf"(?P<list>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})|\s+and\s+(?:{COLOR_RE}))+)"
+_LISTED_BASE_RE = re.compile(
+    rf"\b(?:base|bottom)(?:\s+(?:layer|row|level|tier))?\s*(?:is\s+|are\s+|:\s*|of\s+)?(?:\d+\s+(?:cubes|blocks)\s*)?\(?\s*{_BASE_LIST}"
+    r"\s*\)?(?!\s*(?:cubes|blocks|ones|on|at|in|as)\b)"
+    rf"|{_BASE_LIST.replace('list', 'list2')}\s+(?:(?:cubes|blocks)\s+)?(?:on|at|as|in|forming|form)\s+(?:the\s+)?(?:bottom|base)\b"
+    rf"|\b(?:on|at|as|in)\s+(?:the\s+)?(?:bottom|base)(?:\s+(?:layer|row|level|tier))?\s*\(\s*{_BASE_LIST.replace('list', 'list3')}\s*\)")
+"""A pyramid's bottom layer said cube by cube ("bottom layer purple, purple, brown", "green, green and orange on the
+bottom", "three cubes on the bottom (red, green, blue)"): one cube per colour said."""
+
+
+_ONE_COLOURED_TOP_RE = re.compile(rf"\b(?:a|an|one|1|single)(?:\s+(?:1|single))?\s+(?P<c>{COLOR_RE})\s+(?:cube|block|one)\s+"
+                                  r"(?:on\s+top|at\s+the\s+(?:very\s+)?(?:top|apex|peak|tip|summit))\b")
+"""One cube of a colour said on top of a pyramid ("and a single yellow cube on top of them")."""
+
+
+def listed_base(text: str) -> list[str] | None:
+    """The colours of a pyramid's bottom layer said cube by cube (:data:`_LISTED_BASE_RE`), or None."""
+    m = _LISTED_BASE_RE.search(text)
+    if m is None:
+        return None
+    return [canon_color(c) for c in re.findall(COLOR_RE, m.group("list") or m.group("list2") or m.group("list3"))]
+
+
+def _layered_pyramid(f: Features, b: Builder, base: int, counted: bool) -> list[str]:
+    """Cubes of a 2D pyramid of two layers, ``base`` cubes under one on top (:func:`_skipped_layers`): the base's cubes
+    as listed or counted, the top's colour if said, any cube nobody names a colour the task does not use; each named
+    one judged in its layer (:class:`InLayers`, appended by :func:`fill_layers`).
+
+    Raises:
+        ParseError: the base's size said neither by a count (``counted``) nor by its cubes one by one, more than one
+            cube named for the top, or a colour said that neither layer holds (which cube is it?).
+    """
+    roles = layer_roles(f, 2)
+    listed = listed_base(f.text)
+    tops = {(c, lv): n for (c, lv), n in roles.items() if lv == 1}
+    top = _ONE_COLOURED_TOP_RE.search(f.text)
+    if not tops and top:  # "and a single yellow cube on top of them"
+        tops = {(canon_color(top.group("c")), 1): 1}
+    if listed is not None:
+        bottom = {(c, 0): listed.count(c) for c in dict.fromkeys(listed)}
+    else:
+        bottom = {(c, lv): n for (c, lv), n in roles.items() if lv == 0}
+    said = sum(n for n in bottom.values() if n is not None)
+    if (None in bottom.values() or said not in (0, base)) or (not counted and said != base):
+        raise ParseError(f"\"{f.original[:80]}\" names a pyramid's base and one cube on top but not how many cubes of "
+                         "each colour the base has; say them (e.g. \"three cubes on the bottom: red, green and blue, and a "
+                         "yellow cube on top\"), or use --model")
+    if sum(n or 1 for n in tops.values()) > 1:
+        raise ParseError(f"\"{f.original[:80]}\" puts more than one cube on top of a pyramid with no layer between; say "
+                         "each layer, or use --model")
+    placed = {c for c, _ in bottom} | {c for c, _ in tops}
+    stray = [c for c in dict.fromkeys(f.color_list()) if c not in placed]
+    if stray:
+        raise ParseError(f"\"{f.original[:80]}\" names {', '.join(stray)} for a pyramid of a base and one cube on top, "
+                         "but neither layer as read holds it; say each layer's cubes, or use --model")
+    return fill_layers(f, b, [base, 1], {**bottom, **{k: 1 for k in tops}})
 
 
 @reader(order=100)
@@ -275,7 +330,9 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
         if said and total == int(said.group(1)) and from_total is None and not m:  # "a pyramid of four": none has four
             raise ParseError(f"a pyramid of {total} cubes: a pyramid of cubes, each layer one shorter, has 3, 6, 10 or 15; "
                              "say one of those, or its base (e.g. \"a pyramid with a base of 3\")")
-        base, dims = (int(m.group(1)) if m else from_total or (3 if middle else from_named) or size), 2
+        listed = listed_base(f.text)  # "bottom layer purple, purple, brown; top layer blue": a base of 3
+        base, dims = (int(m.group(1)) if m else (len(listed) if listed and len(listed) >= 2 else None) or from_total
+                      or (3 if middle else from_named) or size), 2
     if base < 2:
         raise ParseError("a pyramid needs a base of at least 2")
     n = sum((base - k) ** (dims - 1) for k in range(base))
@@ -285,7 +342,15 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
     order = ordering_of(f)
     sizes = [(base - k) ** (dims - 1) for k in range(base)]
     roles = layer_roles(f, base) if material == "colors" else {}
-    _refuse_skipped_layers(f, base, dims, roles)
+    if material == "colors" and _skipped_layers(f, base, dims, roles):
+        # "three cubes on the bottom (red, green, blue) and a yellow cube on top": those two layers, the top cube
+        # centred over the base
+        names = _layered_pyramid(f, b, base, counted=bool(dims_m or m))
+        b.place(pyramid_layout(names, base, dims, layers=(base, 1)))
+        b.preds.insert(0, Pyramid(tuple(names), base=base, dims=dims, layers=(base, 1)))
+        b.primitives += ["stack"]
+        b.summary.insert(0, f"a 2D pyramid of {base} cubes under 1 on top ({base + 1} cubes)")
+        return True
     if roles:
         names = fill_layers(f, b, sizes, roles)
         b.place(pyramid_layout(names, base, dims))
