@@ -1776,3 +1776,14 @@ def test_an_addition_that_says_the_count_it_makes(tmp_path):
     fam = Family(create_family(compile_instruction("Stack a blue cube on a red cube", tmp_path, name="fam2").path).path)
     with pytest.raises(BadInput):
         steer(fam.path, "same but five cubes, put a yellow one on the very top")
+
+
+def test_the_task_s_cubes_restated_in_other_structures_are_a_pivot(tmp_path):
+    """"now split it into two towers of two: red under blue, green under yellow", "now the same three in a tower, red at
+    the bottom, ...": the task's own cubes in the structures listed (they had been refused: 'names no change')."""
+    assert _steered(tmp_path, "Stack a blue cube on a red cube", "add a green cube on top", "add a yellow one on the very top",
+                    "now split it into two towers of two: red under blue, green under yellow")[-1] == \
+        ("pivot", ["stack(green,yellow)", "stack(red,blue)"])
+    assert _steered(tmp_path / "b", "Put the red cube to the left of the blue cube", "put a green cube between them",
+                    "now the same three in a tower, red at the bottom, then green, blue on top")[-1] == \
+        ("pivot", ["stack(red,green,blue)"])

@@ -2845,6 +2845,17 @@ EDIT_OPENING = r"^\s*(?:(?i:nah|no|ok(?:ay)?|so|and|then|hmm|actually|now)[\s,]+
 "actually, left to right: ..."): they change nothing."""
 
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
+    # "now split it into two towers of two: red under blue, green under yellow": the task's cubes in the structures then
+    # listed, a whole task (a pivot; the steering checks they are the task's own cubes)
+    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|now|so|then|next)\s*,?\s*)*(?:split|break|divide|separate|turn|rebuild|rearrange|make|change"
+                r"|reorganize|reorganise)\s+(?:it|them|this|the\s+(?:tower|stack|row|line|pyramid|structure|cubes|blocks))\s+(?:up\s+)?"
+                r"(?:into|in)\s+(?=(?:a|an|one|two|three|2|3)\s+(?:separate\s+)?(?:towers?|stacks?|rows?|lines?|piles?)\b[^:]*:\s*\S)"),
+     "make "),
+    # "now the same three in a tower, red at the bottom, then green, blue on top": the task's cubes in that structure
+    (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|now|so|then|next)\s*,?\s*)*(?:(?:put|make|arrange|place|stack|build)\s+)?(?:the\s+)?same\s+"
+                rf"(?:\d+|{COUNT_WORD_RE})(?:\s+(?:cubes|blocks|ones))?\s+(?:in(?:to)?|as)\s+(?=(?:a|an|one)\s+(?:tower|stack|row|line|circle|pile)\b"
+                r"\s*,?\s*(?:with\s+)?(?:the\s+)?[a-z]+\b)"),
+     "make "),
     # "make it HELLO", "BED -> RED": another word (capitals: a word the cubes spell, not a colour or a count)
     (re.compile(rf"^\s*(?:(?:nah|ok(?:ay)?|now|so|then|actually)\s*,?\s*)*(?:make|change|turn)\s+it\s+(?:to\s+|into\s+)?(?!(?i:{COLOR_RE})\b)([A-Z]{{2,}})\s*[.!]?\s*$"),
      r"make it spell \1"),
@@ -3948,8 +3959,14 @@ def _towers_listed(m: re.Match) -> str:
     """"Three towers, each two cubes tall: red on blue, green on yellow, white on black." -> the towers themselves, when
     as many are listed as counted, each as tall as said (otherwise unchanged: the readers decide)."""
     towers = [t for t in re.split(r"\s*(?:,\s*(?:and\s+)?|;\s*|\s+and\s+)", m.group("list").strip()) if t]
+    mixed = [t for t in towers if re.search(r"\bon\b", t) and re.search(r"\bunder\b", t)]
+    if mixed:
+        return m.group(0)  # "red on blue under green": which way up? (the readers decide)
+    # "red under blue" -> "blue on red": each tower as "on" from its top
+    towers = [" on ".join(reversed(re.split(r"\s+under\s+", t))) if re.search(r"\bunder\b", t) else t for t in towers]
     want = int(NUMBER_WORDS.get(m.group("n").lower(), m.group("n")))
-    tall = m.group("h") and int(NUMBER_WORDS.get(m.group("h").lower(), m.group("h")))
+    height = m.group("h") or m.group("h2")
+    tall = height and int(NUMBER_WORDS.get(height.lower(), height))
     colors = re.findall(rf"\b(?:{COLOR_RE})\b", m.group("list"))
     if len(towers) != want or any(tall and len(re.findall(r"\bon\b", t)) != tall - 1 for t in towers) \
             or len(set(colors)) != len(colors):  # a colour said twice: which cube is which is the towers' own reading
@@ -3980,10 +3997,12 @@ ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 r"\s*one\s+(?:of|with)\s+(?P<a>[^,;:.]+?)\s*[,;]\s*(?:and\s+)?(?:one|the\s+other)\s+(?:of|with)\s+(?P<b>[^,;:.]+?)(?=\s*(?:[.!]|$))"),
      lambda m: f"{m.group('v')} a {m.group('s')} of {m.group('a')} and a {m.group('s')} of {m.group('b')}"),
     # "Three towers, each two cubes tall: red on blue, green on yellow, white on black.": each tower said in turn
+    # ("two towers of two: red under blue, green under yellow": each tower said from its bottom, "under")
     (re.compile(rf"(?i)(?:\b(?P<v>make|build|create|form|stack)\s+)?\b(?P<n>\d+|{COUNT_WORD_RE})\s+(?:towers|stacks)"
-                rf"(?:\s*,?\s*each\s+(?:of\s+)?(?P<h>\d+|{COUNT_WORD_RE})\s+(?:cubes?\s+|blocks?\s+)?(?:tall|high))?\s*:\s*"
-                rf"(?P<list>(?:{COLOR_RE})(?:\s+on\s+(?:{COLOR_RE}))+(?:\s*(?:,\s*(?:and\s+)?|;\s*|\s+and\s+)(?:{COLOR_RE})"
-                rf"(?:\s+on\s+(?:{COLOR_RE}))+)+)(?=\s*(?:[.!]|$))"),
+                rf"(?:\s*,?\s*each\s+(?:of\s+)?(?P<h>\d+|{COUNT_WORD_RE})\s+(?:cubes?\s+|blocks?\s+)?(?:tall|high)"
+                rf"|\s+of\s+(?P<h2>\d+|{COUNT_WORD_RE})(?:\s+(?:cubes|blocks))?(?:\s+each)?)?\s*:\s*"
+                rf"(?P<list>(?:{COLOR_RE})(?:\s+(?:on|under)\s+(?:{COLOR_RE}))+(?:\s*(?:,\s*(?:and\s+)?|;\s*|\s+and\s+)(?:{COLOR_RE})"
+                rf"(?:\s+(?:on|under)\s+(?:{COLOR_RE}))+)+)(?=\s*(?:[.!]|$))"),
      _towers_listed),
     # "Corners: red back-left, blue back-right, ...", "one cube per corner: blue back left, ...": each cube's corner
     # ("put one cube in each corner of the table: red front left, ...", "one cube is moved to each corner: red to back-left, ...")
