@@ -6167,3 +6167,48 @@ def test_row_ends_marked_again_towers_finished_and_swaps_said_by_places(text, ex
 def test_row_ends_and_swaps_that_leave_a_cube_unsaid_are_refused(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text", [
+    # twenty-ninth session: a hostile helper's attack on the session's readings and a helper's probes of stranger40 (each
+    # had compiled silently wrong)
+    "Build a pyramid: three cubes on the bottom (red, green, blue) and a yellow cube on top, sitting on the red and green cubes.",
+    "Build a pyramid: three yellow cubes on the bottom layer and one red cube on top. Make another pyramid just like it.",
+    "Build a tower of red on blue. Make another tower just like it.",  # (one tower had been built)
+    "Build a pyramid: three cubes on the bottom (red, green, blue) and one yellow cube above them.",  # a middle layer made up
+    "Build a pyramid with a yellow cube on top and red, green and blue below it.",
+    "Build a pyramid: three cubes on the bottom, red, green and blue, and the yellow cube on top.",
+    "Build a pyramid: blue, green and pink on the bottom, red on top, and orange in the middle.",  # one orange made two
+    "Build a pyramid: the bottom has red, green and blue, the second layer has white and black, and the top has yellow.",
+    "Stack the red cube on the blue cube. No reds.",  # a commentary sentence about the cubes
+    "Stack the red cube on the blue cube. Not necessary.",
+    "Stack the red cube on the blue cube. Would skip.",
+    "Make a line running from front to back: blue nearest the robot, then yellow, and red farthest from the yellow cube.",
+    "Make a line of red, green and blue from left to right. Green is rightmost.",  # a role after the line contradicts it
+    "Place three cubes in a row; the rightmost is pink, next to it is orange, and the leftmost is gray. The rightmost is orange.",
+    "Make a row of five cubes with a black cube in the middle and two white cubes on each side of it. The middle is white.",
+    "The black cube glides from the left of the white cube.",  # where it starts, not where it ends
+    "The black cube travels from the left of the white cube to the green patch.",
+    "Take the black cube out from under the white cube.",  # (it had been put on top of it)
+    "Place the tall red block behind the green block.",  # a size
+    "Take down the tower.",  # an undoing of a tower nobody described (a tower had been built)
+])
+def test_the_twenty_ninth_session_s_attacks_are_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Form a row moving away from the robot: pink, then yellow, then white.", ["line[front_to_back](pink,yellow,white)"]),
+    ("A wall two rows high, each row three green blocks wide.", ["wall(green,green,green,green,green,green)"]),
+    ("Take down the stack of blue on yellow so both end up on the table.", ["on_table(blue)", "start:stack(yellow,blue)"]),
+    ("Hey! Your job is to put the red cube on the blue cube.", ["stack(blue,red)"]),  # ("Your" had lost its "Yo")
+    ("Stack the red cube on the blue cube. No experience necessary.", ["stack(blue,red)"]),  # a topic of its own
+    ("Put the red cube on the blue cube. Call the clinic if symptoms persist.", ["stack(blue,red)"]),
+    ("The black cube glides to the left of the white cube.", ["left_of(black,white)"]),
+    ("Make a line of red, green and blue from left to right. Blue is rightmost.", ["line[left_to_right](red,green,blue)"]),
+])
+def test_the_twenty_ninth_session_s_attacks_read_right(text, expected):
+    schema = check_feasibility(parse(text))
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []

@@ -1241,7 +1241,7 @@ class Pyramid(Predicate):
         object.__setattr__(self, "layers", tuple(self.layers))
         layers = self.layers
         if layers and (self.dims != 2 or len(layers) < 2 or layers[0] != self.base or min(layers) < 1
-                       or any(b > a for a, b in zip(layers, layers[1:]))):
+                       or any(b > a for a, b in itertools.pairwise(layers))):
             raise ValueError(f"a pyramid's layers {list(layers)} must start with its base {self.base}, narrow upwards, "
                              "have two or more layers and stand in 2D")
 

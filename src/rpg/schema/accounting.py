@@ -909,9 +909,13 @@ def _line_roles(f: Features, schema: TaskSchema, cubes: list, walk: list) -> Par
 
 
 _ORDERED_LINE_ROLE_RE = re.compile(
-    rf"(?:,\s*|\bwith\s+)(?:the\s+)?(?P<c>{COLOR_RE}|\d)(?:\s+(?:cube|block|one))?\s+(?:is\s+|goes\s+|sits\s+)?"
+    rf"(?:,\s*|\bwith\s+|(?:^|(?<=[.;!]\s))(?=(?:the\s+)?(?:{COLOR_RE}|\d)(?:\s+(?:cube|block|one))?\s+is\s))(?:the\s+)?(?P<c>{COLOR_RE}|\d)"
+    r"(?:\s+(?:cube|block|one))?\s+(?:is\s+|goes\s+|sits\s+)?"
     r"(?:(?:on|at)\s+the\s+(?:far\s+)?(?P<side>left|right)(?:\s+end)?(?!\s+(?:side|half|edge|of|corner))|in\s+the\s+(?P<mid>middle|cent(?:er|re))"
-    r"|(?:the\s+)?(?P<most>leftmost|rightmost))\b")
+    r"|(?:the\s+)?(?P<most>leftmost|rightmost)|(?:the\s+)?(?P<bare>left|right)(?:\s+(?:one|end))?(?=\s*(?:[.;!]|$)))\b"
+    # "... The rightmost is orange." ("rightmost" read "right"): the end's cube said after the line
+    rf"|(?:^|(?<=[.;!]\s))the\s+(?:(?P<end>left|right)(?:most)?|(?P<mid2>middle|cent(?:er|re)))(?:\s+(?:one|cube|block|end))?\s+(?:is|should\s+be|must\s+be)\s+"
+    rf"(?:the\s+)?(?P<c2>{COLOR_RE}|\d)\b(?=[^.;!]*(?:[.;!]|$))")
 
 
 def _ordered_line_roles(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
@@ -926,16 +930,17 @@ def _ordered_line_roles(f: Features, schema: TaskSchema, cubes: list, walk: list
                           "order'; say one, or use --model")
     name_of = {a.name: (a.label or a.color) for a in cubes}
     for m in _ORDERED_LINE_ROLE_RE.finditer(f.text):
-        said = m.group("c") if m.group("c").isdigit() else canon_color(m.group("c"))
+        c = m.group("c") or m.group("c2")
+        said = c if c.isdigit() else canon_color(c)
         for line in lines:
             who = [name_of.get(n) for n in line.objects]
             if said not in who:
                 continue
             left = line.order == "left_to_right"
-            if m.group("mid"):
+            if m.group("mid") or m.group("mid2"):
                 places = [len(who) // 2] if len(who) % 2 else []
             else:
-                side = m.group("side") or ("left" if m.group("most") == "leftmost" else "right")
+                side = m.group("side") or m.group("bare") or m.group("end") or ("left" if m.group("most") == "leftmost" else "right")
                 places = [0 if (side == "left") == left else len(who) - 1]
             if not any(who[i] == said for i in places):
                 return ParseError(f"\"{f.original[:80]}\" contradicts itself: '{m.group(0).strip(' ,')}' gives a cube an end or the "

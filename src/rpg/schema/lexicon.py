@@ -258,7 +258,7 @@ FRAMING_SENTENCE_HAZARD_RE = re.compile(
     r"|colou?r\w*|shade\w*|size|big|bigger|small|smaller|large|tall|high|low|wide|long|short"
     r"|beneath|underneath|atop|upon|against|adjacent|across|along|beyond|past|toward|towards|via|through|off|out|flat|lying|lie|lay"
     r"|offset|centred|centered|spaced|evenly|equal\w*|distance|far|near|nearby|by|beside|opposite|corner\w*|edge\w*|diagonal\w*"
-    r"|mean|meant|correction|actually|oops|scratch|wait|instead|typo|rather|i\s+mean|return\w*|restor\w*|put|place|move)\b"
+    r"|mean|meant|correction|actually|oops|scratch|wait|instead|typo|rather|i\s+mean|return\w*|restor\w*|put|place|move|skip\w*|declin\w*)\b"
     r"|\d")
 """What keeps a sentence that names nothing of the task (no :data:`TASK_CONTENT_RE`, :data:`ASIDE_CONTENT_RE` word)
 from being dropped as framing by :func:`rpg.schema.reading.drop_asides`: a negation, a requirement, a step of a
@@ -287,7 +287,7 @@ picture.", "Hold on."): they keep no framing sentence (:func:`rpg.schema.reading
 TASK_SCENE_VERBS: frozenset[str] = SCENE_CHANGING_VERBS - OPERATOR_SCENE_VERBS
 """The :data:`SCENE_CHANGING_VERBS` that keep a framing sentence: all but :data:`OPERATOR_SCENE_VERBS`."""
 
-RETRACTION_RE = re.compile(r"\b(?:kidding|joking|jokes?|jk|ignore\w*|forget|scrap|cancel\w*|disregard\w*|nevermind|never\s+mind"
+RETRACTION_RE = re.compile(r"\b(?:kidding|joking|jokes?|jk|ignore\w*|forget|scrap|cancel\w*|disregard\w*|nevermind|never\s+mind|skip\w*|declin\w*"
                            r"|april\s+fools?|fooled|pretend\w*|lie|lying|strike|delete|erase|withdraw\w*|retract\w*|that|this|those|these"
                            r"|false|alarm|mistakes?|wrong|topsy|turvy|whichever|whatever|anything|anyhow|anyway|ways?|arrangement\w*"
                            r"|goes|height|heights|taller|shorter|higher|lower|bigger|smaller|better|worse|best|bonus|extra|credit|points?)\b")
@@ -306,14 +306,21 @@ anything everything something nothing anyone robot robots gripper grippers arm a
 timeout deadline seconds second minutes minute steps step attempts attempt tries try episode episodes trial trials speed fast
 slow slowly quickly quick gently carefully careful same then next after afterwards finally lastly first before later once more
 colour colours color colors order orders shape shapes size sizes position positions place places collision collisions
-collide crash bump hit touch touching knock""".split())
+collide crash bump hit touch touching knock skip skipped higher lower taller shorter""".split())
 """Words that keep a sentence naming no cube tied to the task, so that a negation, a quantity, time or a condition in it may
 bear on the goal or its episode: references that may stand for cubes ("Do it twice.", "Nothing else."), the robot and its
 parts ("Do so if the gripper is free."), the episode's time, tries, speed and collisions ("There is a strict time limit.",
 "Avoid collisions."), a step of a sequence ("Then celebrate.", "Once more."), the cubes' colours, order and places
-("Colours don't matter.").  A sentence
+("Colours don't matter."), skipping it or a height ("Would skip.", "Would stack higher.").  A sentence
 with none of them whose words of those kinds are said of a topic of its own ("No smokers.", "Would buy again.", "Serve at
 room temperature.") is a voice's commentary (:func:`rpg.schema.reading._off_topic_sentence`)."""
+
+
+OFF_TOPIC_VERDICT_WORDS: frozenset[str] = frozenset("""
+necessary unnecessary required needed optional mandatory essential important possible impossible allowed permitted welcome
+""".split())
+"""Words that judge what they are said of ("No experience necessary.", "Not necessary."): no topic of a sentence's own, so a
+sentence of them alone ("Not required.") says something of the task (:func:`rpg.schema.reading._off_topic_sentence`)."""
 
 
 OFF_TOPIC_HAZARD_RE = re.compile(
@@ -552,6 +559,13 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   # "the red cube, which is currently on blue, ...": where it stands now (it had been read as the goal)
                   r"|,\s*(?:which|that)\s+(?:is|are|was|were)\s+(?:currently|now|already|still)\s+(?:(?:sitting|lying|resting|standing"
                   r"|stacked|placed)\s+)?(?:on|on\s+top\s+of|under|underneath|in|inside|at)\b"
+                  # "the black cube glides from the left of the white cube (to ...)", "take it out from under the white cube":
+                  # where a cube starts, not where it ends (the start place had become the goal)
+                  r"|\b(?:cubes?|blocks?|ones?)\s+(?:glid|travel|drift|wander|stroll|waltz|sashay|tiptoe|scurr|hop|shimm|mov|slid|go|head"
+                  r"|scoot|shift|mak)\w*\s+(?:its\s+way\s+)?(?:out\s+|back\s+|over\s+)?from\b"
+                  r"(?!\s+(?:the\s+)?(?:left|right|front|back|top|bottom|near|far)\w*(?:\s+(?:end|side|edge))?(?:\s+of\s+the\s+(?:table|workspace))?\s+"
+                  r"(?:to|towards?)\b)"  # ("cubes going from left to right": the line's direction)
+                  r"|\bout\s+from\s+(?:under|underneath|beneath|behind|between)\b"
                   # "take the block from the green patch": a cube picked by where it stands now
                   r"|\b(?:take|move|pick|grab|lift|remove|get|bring|slide|push)\s+(?:up\s+)?the\s+(?:[a-z]+\s+){0,2}?(?:blocks?|cubes?|box"
                   r"|boxes|bricks?|ones?)\s+(?:up\s+)?from\s+(?:the\s+|its\s+|their\s+)",
@@ -623,7 +637,13 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "one tower of two cubes\")"),
     ("reference", rf"\b(?:\d+|one|two|three|four|five|six|a\s+few|some|several|a\s+couple)\s+more\b(?!\s+(?:(?:{'|'.join(COLORS)}|grey)\b"
                   r"|(?:[a-z]+\s+)?(?:cubes?|blocks?|bricks?)\b|than\b))|\b(?:add|stack|put|place|pile|set|build|make|create|do)\s+another(?:\s+one)?\s*(?=on\b|onto\b|next\b|behind\b|beside\b|[.!;,]|$)"
-                  r"|\b(?:make|build|do|add)\s+(?:\d+|one|two|three|four|five|another)\s+(?:more\s+)?(?:of\s+)?(?:these|those|this|that|them)\b",
+                  r"|\b(?:make|build|do|add)\s+(?:\d+|one|two|three|four|five|another)\s+(?:more\s+)?(?:of\s+)?(?:these|those|this|that|them)\b"
+                  # "Make another tower just like it.", "an identical pyramid next to it": a copy of a structure said
+                  r"|\b(?:another|a\s+second|an\s+identical|a\s+matching|a\s+copy\s+of\s+the)\s+(?:(?:identical|matching|similar|same)\s+)?"
+                  r"(?:one|tower|stack|pyramid|row|line|wall|grid|circle|pile|structure)s?\b(?=\s+(?:just\s+|exactly\s+)?(?:like|as|identical"
+                  r"|the\s+same|next\s+to\s+(?:it|that|this)|beside\s+(?:it|that|this))\b)"
+                  r"|\b(?:make|build|add|create|stack|construct)\s+(?:another|a\s+second|an\s+identical)\s+(?:one|tower|stack|pyramid|row|line|wall"
+                  r"|grid|circle|pile|structure)\b(?=\s*[.!;]?\s*$)",
      "asks for more cubes or copies than it names (\"two more\", \"another\", \"three of these\"): which cubes, and "
      "where, is not said; name each cube of the goal (e.g. \"stack the green block on the red block\")"),
     ("condition", r"\b(?:maybe|perhaps|possibly|ideally|preferably|or\s+else)\s+(?:even\s+)?(?:on|onto|in|into|at|next|near|behind|under"
@@ -655,8 +675,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("question", r"^\s*(?:(?:hey|hi|so|ok(?:ay)?)\s*,?\s+)?(?:did|have|has|had)\s+(?:you|the\s+robot|it|we|they)\b",
      "asks a question about what was done: a task is an instruction whose goal says where cubes end up; ask for the "
      "arrangement instead (e.g. \"put the red block on the blue block\")"),
-    ("size", rf"\b(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge|giant|mini)\s+"
-             rf"(?:{'|'.join(COLORS)}|grey)(?=\s*(?:$|[,.;!?]|(?:on|onto|under|below|next|beside|behind|to|in|at|and|one)\b))",
+    ("size", rf"\b(?:big|bigger|biggest|large|larger|largest|small|smaller|smallest|little|tiny|huge|giant|mini|tall|taller"
+             r"|tallest|short|shorter|shortest|wide|wider|widest|narrow|thin|thick|fat|heavy|heavier|heaviest)\s+"
+             rf"(?:{'|'.join(COLORS)}|grey)(?=\s*(?:$|[,.;!?]|(?:on|onto|under|below|next|beside|behind|to|in|at|and|one|cube|block|brick)\b))",
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
     # "Hey you in the front left corner, put ...": a listener called by where they stand (the place had become the goal's)
     ("reference", r"^\s*(?:hey|hi|oi|yo)\s*,?\s+(?:you|there)\s+(?:in|at|on|over|by|near)\s+the\s+[^,:;.!?]*",
@@ -873,6 +894,12 @@ EPISODE_END_RE = re.compile(r"\s*,?\s*\b(?:at|by)\s+the\s+(?:very\s+)?end\s+of\s
                             r"|\s*,?\s*\bat\s+(?:episode|task|trial)\s+end\b")
 """When the goal is checked, said ("The gray cube should be far from the black cube at the end of
 the episode."): a goal is always checked at the episode's end, so the words add nothing (dropped)."""
+
+TAKE_DOWN_RE = re.compile(r"(?i)\b(?:take|tear|pull|knock|bring)\s+down\s+(?=(?:the|this|that)\s+(?:(?:\d+|two|three|four)[\s-]+(?:block|cube)\s+)?"
+                          r"(?:tower|stack)\b)|\bbreak\s+up\s+(?=(?:the|this|that)\s+(?:tower|stack)\b)")
+"""Verbs that undo a tower said another way ("Take down the stack of blue on yellow so both end up on the table"): read as
+"unstack" (the tower had been built instead)."""
+
 
 SCENE_NOW_OPENING_RE = re.compile(r"(?i)^\s*(?:currently|right\s+now|at\s+the\s+moment|at\s+present)\s*,?\s+")
 """The opening of a text that says the scene now ("Currently the pink cube is on the orange cube. Add ..."): a start
@@ -1956,7 +1983,7 @@ a label, a quantifier, a negation, a condition."""
 
 
 FILLER_RE = re.compile(r"(?i)(?:^|(?<=[.!?]\s))(?:prego|allora|ecco|dai|senti|god\s+willing|inshallah|insha'?allah|yalla|omg|lol"
-                       r"|yo|hey\s+there|alright\s+then|okay\s+so|ok\s+so|aigoo|jeez|arre+y?|arey|do\s+one\s+thing)\s*[,!.]*\s*"
+                       r"|yo|hey\s+there|alright\s+then|okay\s+so|ok\s+so|aigoo|jeez|arre+y?|arey|do\s+one\s+thing)\b\s*[,!.]*\s*"  # ("Your": no "yo")
                        r"|(?:^|(?<=[.!?;]\s))(?:look|listen|hey\s+look)\s*,\s*(?=\S)"
                        r"|(?:^|(?<=[.!?;]\s))(?:separately|independently|additionally|in\s+addition|besides|furthermore|moreover"
                        r"|on\s+top\s+of\s+that|apart\s+from\s+that|as\s+a\s+second\s+(?:part|step))\s*,\s*"
@@ -2026,6 +2053,9 @@ def robot_direction(m: re.Match) -> str:
     """:data:`ROBOT_DIRECTION_RE`'s match as a line with its direction."""
     start = max(m.string.rfind(".", 0, m.start()), m.string.rfind(";", 0, m.start())) + 1
     stop = min([i for i in (m.string.find(".", m.end()), m.string.find(";", m.end())) if i >= 0] or [len(m.string)])
+    if re.match(r"\s*:", m.string[m.end():stop]):  # "a row moving away from the robot: pink, then yellow, then white":
+        stop = m.end()  # the list after the colon is the line's order from that end ("then" had left it as written,
+        # an unordered line in the back half: silently wrong)
     if (m.group("line") and not m.group("verb")) or _VERTICAL_CUE_RE.search(m.string[start:stop]):
         return m.group(0)
     way = "from front to back" if m.group("dir").lower().startswith("away") else "from back to front"
@@ -4051,9 +4081,11 @@ def _axis_ends(m: re.Match) -> str:
     place of the table, and the first cube left out of the line); a mark that names the other end stays (refused)."""
     start, end, items = m.group("a"), m.group("b"), m.group("list")
     cube = rf"(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?"
-    items = re.sub(rf"^({cube})\s+(?:is\s+)?{_AXIS_END_MARKS[start]}(?=\s*,)", r"\1", items)
-    items = re.sub(rf"(\bthen\s+{cube})\s+(?:is\s+)?{_AXIS_END_MARKS[end]}\s*$", r"\1", items)
-    return f"from {start} to {end}: {items}"
+    listed = re.fullmatch(rf"(?P<first>{cube})(?:\s+(?:is\s+)?{_AXIS_END_MARKS[start]})?(?P<mid>(?:\s*,\s*(?:and\s+)?then\s+{cube})*)"
+                          rf"\s*,?\s*(?:and\s+)?(?P<last>then\s+{cube})(?:\s+(?:is\s+)?{_AXIS_END_MARKS[end]})?", items)
+    if listed is None:  # more said in the list ("and red farthest from the yellow cube"): as written, for the readers
+        return m.group(0)
+    return f"from {start} to {end}: {listed.group('first')}{listed.group('mid')}, {listed.group('last')}"
 
 
 LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
@@ -4278,6 +4310,11 @@ WALL_ROW_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 rf"(?:is|are|of|has|:|=)\s*(?:made\s+of\s+)?(?P<n>\d+|{COUNT_WORD_RE})\s+(?P<c>{COLOR_RE})(?:\s+(?:cubes|blocks))?\b"),
      lambda m: f"{NUMBER_WORDS.get(m.group('n'), m.group('n'))} {m.group('c')} cubes "
      + ("on the bottom" if m.group("where") in ("bottom", "lower") else "on top")),
+    # "a wall two rows high, each row three green blocks wide": every row that wide and of that colour (a second row of
+    # another colour had been made up)
+    (re.compile(rf"\s*,?\s*(?:with\s+)?each\s+(?:row|layer|level|tier|course)\s+(?:is\s+|has\s+|of\s+)?(?P<n>\d+|{COUNT_WORD_RE})\s+(?P<c>{COLOR_RE})\s+"
+                r"(?:cubes|blocks)(?:\s+wide|\s+across|\s+long)?\b"),
+     lambda m: f" with {NUMBER_WORDS.get(m.group('n'), m.group('n'))} wide, all {m.group('c')}"),
 )
 """A wall's layers said row by row with their counts: "N c cubes on the bottom", which the wall reader reads."""
 

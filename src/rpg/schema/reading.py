@@ -248,10 +248,11 @@ def _off_topic_sentence(sentence: str) -> bool:
     for w in words:
         base = w.removesuffix("'s")
         if base in lexicon.OFF_TOPIC_ANCHORS or base in COLORS or base in lexicon.colour_names() \
+                or base.removesuffix("s") in COLORS or base.removesuffix("s") in lexicon.colour_names() \
                 or base in lexicon.SCENE_CHANGING_VERBS or any(x in lexicon.SCENE_CHANGING_VERBS for x in lexicon.lemmas(base)):
             return False
         if base in lexicon.FUNCTION_WORDS or base in lexicon.IDLE_WORDS or base in lexicon.CHAT_WORDS \
-                or base in lexicon.AUXILIARY_WORDS or base in lexicon.INTERJECTIONS:
+                or base in lexicon.AUXILIARY_WORDS or base in lexicon.INTERJECTIONS or base in lexicon.OFF_TOPIC_VERDICT_WORDS:
             continue
         if base in VOCAB:
             return False  # a word of the domain ("Beneath, I mean."): the sentence may bear on the goal
@@ -1159,6 +1160,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
         original = pattern.sub("", original).strip()
     original, asides = drop_asides(original)  # "Put the green block on the purple block. What a tower!"
     original = lexicon.SWAP_HEADING_RE.sub("", original)  # "Swap places: the yellow cube goes on the cyan patch and ..."
+    original = lexicon.TAKE_DOWN_RE.sub("unstack ", original)  # "Take down the tower.": an undoing (a tower had been built)
     original = lexicon.FILLER_RE.sub("", original).strip()
     original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", original)  # texting's "2" for "to"
     original = lexicon.TEXTED_YOU_RE.sub("you", original)  # "can u build ...": texting's "u"

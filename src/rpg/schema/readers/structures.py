@@ -9,6 +9,7 @@ from __future__ import annotations
 import itertools
 import math
 import re
+from collections import Counter
 
 from rpg.domain import constants as C
 from rpg.domain.layouts import (
@@ -251,7 +252,11 @@ _LISTED_BASE_RE = re.compile(
     rf"\b(?:base|bottom)(?:\s+(?:layer|row|level|tier))?\s*(?:is\s+|are\s+|:\s*|of\s+)?(?:\d+\s+(?:cubes|blocks)\s*)?\(?\s*{_BASE_LIST}"
     r"\s*\)?(?!\s*(?:cubes|blocks|ones|on|at|in|as)\b)"
     rf"|{_BASE_LIST.replace('list', 'list2')}\s+(?:(?:cubes|blocks)\s+)?(?:on|at|as|in|forming|form)\s+(?:the\s+)?(?:bottom|base)\b"
-    rf"|\b(?:on|at|as|in)\s+(?:the\s+)?(?:bottom|base)(?:\s+(?:layer|row|level|tier))?\s*\(\s*{_BASE_LIST.replace('list', 'list3')}\s*\)")
+    rf"|\b(?:on|at|as|in)\s+(?:the\s+)?(?:bottom|base)(?:\s+(?:layer|row|level|tier))?\s*(?:\(\s*{_BASE_LIST.replace('list', 'list3')}\s*\)"
+    rf"|,\s*{_BASE_LIST.replace('list', 'list4')}\s*,)"  # "three cubes on the bottom, red, green and blue, and ..."
+    rf"|{_BASE_LIST.replace('list', 'list5')}\s+(?:(?:cubes|blocks)\s+)?(?:below|under|underneath|beneath)\s+(?:it|them)\b"
+    rf"|\bthe\s+(?:bottom|base)(?:\s+(?:layer|row|level|tier))?\s+(?:has|holds|gets|is\s+made\s+of|consists\s+of)\s+"
+    rf"{_BASE_LIST.replace('list', 'list6')}")
 """A pyramid's bottom layer said cube by cube ("bottom layer purple, purple, brown", "green, green and orange on the
 bottom", "three cubes on the bottom (red, green, blue)"): one cube per colour said."""
 
@@ -266,7 +271,8 @@ def listed_base(text: str) -> list[str] | None:
     m = _LISTED_BASE_RE.search(text)
     if m is None:
         return None
-    return [canon_color(c) for c in re.findall(COLOR_RE, m.group("list") or m.group("list2") or m.group("list3"))]
+    said = next(m.group(g) for g in ("list", "list2", "list3", "list4", "list5", "list6") if m.group(g))
+    return [canon_color(c) for c in re.findall(COLOR_RE, said)]
 
 
 def _layered_pyramid(f: Features, b: Builder, base: int, counted: bool) -> list[str]:
@@ -276,7 +282,8 @@ def _layered_pyramid(f: Features, b: Builder, base: int, counted: bool) -> list[
 
     Raises:
         ParseError: the base's size said neither by a count (``counted``) nor by its cubes one by one, more than one
-            cube named for the top, or a colour said that neither layer holds (which cube is it?).
+            cube named for the top, a colour said more often than the layers hold it ("sitting on the red and green
+            cubes"), or a colour said that neither layer holds (which cube is it?).
     """
     roles = layer_roles(f, 2)
     listed = listed_base(f.text)
@@ -297,11 +304,39 @@ def _layered_pyramid(f: Features, b: Builder, base: int, counted: bool) -> list[
         raise ParseError(f"\"{f.original[:80]}\" puts more than one cube on top of a pyramid with no layer between; say "
                          "each layer, or use --model")
     placed = {c for c, _ in bottom} | {c for c, _ in tops}
+    mentions = len(re.findall(rf"\b(?:{COLOR_RE})\b", f.text))
+    if mentions > (len(listed) if listed is not None else len(bottom)) + len(tops):
+        # "... and a yellow cube on top, sitting on the red and green cubes": more said of the cubes than the two layers
+        raise ParseError(f"\"{f.original[:80]}\" says more of a pyramid's cubes than its two layers (a base and one cube on "
+                         "top); say each layer once, or use --model")
     stray = [c for c in dict.fromkeys(f.color_list()) if c not in placed]
     if stray:
         raise ParseError(f"\"{f.original[:80]}\" names {', '.join(stray)} for a pyramid of a base and one cube on top, "
                          "but neither layer as read holds it; say each layer's cubes, or use --model")
     return fill_layers(f, b, [base, 1], {**bottom, **{k: 1 for k in tops}})
+
+
+def _refuse_made_up_layer_cubes(f: Features, b: Builder) -> None:
+    """Refuse a pyramid whose base is said cube by cube (:func:`listed_base`) and that holds more cubes of a colour than
+    the text says, every mention of it a single cube ("three cubes on the bottom (red, green, blue) and one yellow cube
+    above them", "blue, green and pink on the bottom, red on top, and orange in the middle"): the upper layers' cubes
+    would be made up of the colours said (a second green and red had been invented, one orange said had made two); or
+    whose layers, said, were not read at all (their order had been dropped)."""
+    if listed_base(f.text) is None:
+        return
+    if not any(isinstance(p, InLayers) for p in b.preds):  # the layers said, none read ("the second layer has ...")
+        raise ParseError(f"\"{f.original[:80]}\" says a pyramid layer by layer, and the builtin parser did not read which "
+                         "cubes stand in which layer; say them as \"bottom layer ...; middle layer ...; top layer ...\", or use "
+                         "--model")
+    built = Counter(a.color for a in b.assets if a.kind != "goal_patch")
+    for c, n in built.items():
+        said = [m for m in re.finditer(rf"\b{c}\b", f.text)]
+        counted = any(re.search(rf"\b(?:\d+|{COUNT_WORD_RE}|all|every|only)\s+(?:[a-z]+\s+)?$", f.text[:m.start()])
+                      or re.match(r"\s+(?:[a-z]+\s+)?(?:cubes|blocks|ones)\b", f.text[m.end():]) for m in said)
+        if said and not counted and n > len(said):
+            raise ParseError(f"\"{f.original[:80]}\" says {len(said)} {c} cube{'s' if len(said) > 1 else ''} and the pyramid "
+                             f"it lists needs {n}: the layers above its base are not all said; say each layer's cubes (e.g. "
+                             "\"... two white cubes in the middle and a yellow cube on top\"), or use --model")
 
 
 @reader(order=100)
@@ -374,6 +409,7 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
         # "a pyramid of 3-2-1 with rainbow colored ordering": the colours layer by layer, bottom first
         b.preds.append(InLayers(tuple(names), tuple(k for k, size in enumerate(sizes) for _ in range(size))))
         b.summary.append(b.preds[-1].describe())
+    _refuse_made_up_layer_cubes(f, b)
     b.preds.insert(0, Pyramid(tuple(names), base=base, dims=dims))
     b.primitives += ["stack"]
     shape = f"{base}x{base}" if dims == 3 else str(base)
