@@ -6212,3 +6212,28 @@ def test_the_twenty_ninth_session_s_attacks_read_right(text, expected):
     schema = check_feasibility(parse(text))
     assert sorted(meaning(schema)) == expected
     assert uncited(schema, text) == []
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a helper's abstract classes of stranger40's ordinary refusals, with its own examples
+    ("Pyramid: bottom row orange, orange, orange; middle row pink, pink; top row cyan.",
+     ["pyramid(orange,orange,orange|pink,pink|cyan)"]),  # a pyramid's rows are its layers
+    ("Make a wall of three green blocks with three orange blocks on top of them.", ["wall(green,green,green|orange,orange,orange)"]),
+    ("Unstack the 2-block stack of blue on yellow so both cubes are on the table.", ["on_table(blue)", "start:stack(yellow,blue)"]),
+    ("Build a tower: blue at the bottom, red at the top, and yellow wedged in between.", ["stack(blue,yellow,red)"]),
+    ("Arrange the cubes in a row so the cyan cube is at the far left, the pink cube is at the far right and the brown cube is "
+     "in the middle.", ["line[left_to_right](cyan,brown,pink)"]),
+    ("Slide the green cube to the back edge of the table, far from the robot.", ["in_region(green,back)"]),
+    ("There's a tower of the pink cube on the yellow cube. Put the brown cube on top.",
+     ["stack(yellow,pink,brown)", "start:stack(yellow,pink)"]),
+    ("Build a pyramid with a bottom row of four cubes.", ["pyramid(red,red,red,red,red,red,red,red,red,red)"]),  # base 4
+])
+def test_stranger40_s_ordinary_classes_read_right(text, expected):
+    schema = check_feasibility(parse(text))
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []
+
+
+def test_which_cube_goes_at_the_bottom_left_free_is_a_stack_in_any_order():
+    schema = check_feasibility(parse("Stack the red and the yellow cube; which one goes at the bottom isn't important."))
+    assert [type(p).__name__ for p in schema.goal_predicate().walk()] == ["UnorderedStack"]

@@ -901,6 +901,10 @@ TAKE_DOWN_RE = re.compile(r"(?i)\b(?:take|tear|pull|knock|bring)\s+down\s+(?=(?:
 "unstack" (the tower had been built instead)."""
 
 
+PYRAMID_ROW_RE = re.compile(r"\b(bottom|middle|top|lower|upper|base|second|third|first)\s+rows?\b")
+"""A pyramid's layer called a row ("bottom row orange, orange, orange; middle row pink, pink; top row cyan"): its layer."""
+
+
 SCENE_NOW_OPENING_RE = re.compile(r"(?i)^\s*(?:currently|right\s+now|at\s+the\s+moment|at\s+present)\s*,?\s+")
 """The opening of a text that says the scene now ("Currently the pink cube is on the orange cube. Add ..."): a start
 where the initial-scene reader reads one there (:func:`rpg.schema.readers.initial.split`), refused elsewhere."""
@@ -1257,6 +1261,8 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 r"(?![^.;]*\bof\s+the\s+(?:table|workspace)\b)"),  # (a place of the table's said with it: which cube's?)
      lambda m: (f"a {m.group(2)} " if m.group(2) else "") + {"left": "from left to right: ", "right": "from right to left: ", "front": "from front to back: ",
                 "back": "from back to front: "}[m.group(1)]),
+    # "in a row so the cyan cube is at the far left, ...": "so that" (its roles had been left unread)
+    (re.compile(rf"\bso\s+(?=the\s+(?:{COLOR_RE})\s+(?:cube|block|one)\s+(?:is|ends\s+up|sits|stands)\b)"), "so that "),
     # "so that green is leftmost, then blue, then pink, with red rightmost" ("leftmost" read "left"): the order from that
     # side, its far end's cube the last (the places had been left unread)
     (re.compile(rf"\b(?:so\s+that|such\s+that)\s+(?:the\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+is\s+(?:the\s+)?"
@@ -1476,8 +1482,10 @@ FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # your call")
     (re.compile(r"\s*[,;.]?\s*\b(?:the\s+)?exact\s+order(?:\s+(?:around|along|in)\s+the\s+(?:circle|ring|row|line|tower|stack))?\s+"
                 r"(?:is\s+not\s+important|is\s+unimportant|does\s+not\s+matter|doesn't\s+matter)\b"), " in any order"),
-    (re.compile(r"\s*[,;\u2013\u2014-]\s*which\s+(?:one\s+)?goes\s+where\s+(?:is\s+(?:your|the\s+robot's)\s+(?:call|choice)|is\s+up\s+to\s+you"
-                r"|does\s+not\s+matter|doesn't\s+matter)\b"),
+    # ("Stack the red and the yellow cube; which one goes at the bottom isn't important")
+    (re.compile(r"\s*[,;\u2013\u2014-]\s*which\s+(?:one\s+|cube\s+|block\s+)?goes\s+(?:where|at\s+the\s+(?:bottom|top)|on\s+(?:the\s+)?(?:top|bottom)"
+                r"|first|underneath|below)\s+(?:is\s+(?:your|the\s+robot's)\s+(?:call|choice)|is\s+up\s+to\s+you"
+                r"|does\s+not\s+matter|doesn't\s+matter|is\s*n[o']?t\s+important|isn't\s+important|is\s+not\s+important|is\s+unimportant)\b"),
      lambda m: " in any order" if re.search(r"\b(?:tower|stack|row|line|column)\b", m.string) and "patch" not in m.string else m.group(0)),
     # an arrangement the goal does not judge anyway ("How they are arranged inside that front half does not matter.",
     # "The order of the towers along the table is not something I care about."): dropped
@@ -4089,6 +4097,13 @@ def _axis_ends(m: re.Match) -> str:
 
 
 LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "to the back edge of the table, far from the robot": the robot's words say that side again (the side had been
+    # read twice, refused)
+    (re.compile(r"\b((?:the\s+)?back\s+(?:edge|side|half|end|part|row)(?:\s+of\s+the\s+(?:table|workspace))?)\s*,\s*(?:far(?:thest)?\s+(?:away\s+)?"
+                r"|away\s+)from\s+(?:the\s+|your\s+)?robot\b"
+                r"|\b((?:the\s+)?front\s+(?:edge|side|half|end|part|row)(?:\s+of\s+the\s+(?:table|workspace))?)\s*,\s*(?:near(?:est)?|clos(?:e|est))"
+                r"(?:\s+to)?\s+(?:the\s+|your\s+)?robot\b"),
+     lambda m: m.group(1) or m.group(2)),
     # "from front to back: blue nearest the robot, then yellow, then red farthest away": the ends' marks said again
     (re.compile(r"\bfrom\s+(?P<a>front|back)\s+to\s+(?P<b>front|back)\s*:\s*(?P<list>[^.;:]*?)(?=\s*(?:[.;!]|$))"),
      _axis_ends),
@@ -4310,6 +4325,12 @@ WALL_ROW_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 rf"(?:is|are|of|has|:|=)\s*(?:made\s+of\s+)?(?P<n>\d+|{COUNT_WORD_RE})\s+(?P<c>{COLOR_RE})(?:\s+(?:cubes|blocks))?\b"),
      lambda m: f"{NUMBER_WORDS.get(m.group('n'), m.group('n'))} {m.group('c')} cubes "
      + ("on the bottom" if m.group("where") in ("bottom", "lower") else "on top")),
+    # "a wall of three green blocks with three orange blocks on top of them": two courses, the first at the bottom (read
+    # as a wall 2 wide and 2 high)
+    (re.compile(rf"\bwall\s+of\s+(?P<n>\d+|{COUNT_WORD_RE})\s+(?P<c>{COLOR_RE})\s+(?:cubes|blocks)\s*,?\s+(?:with|and)\s+(?P<n2>\d+|{COUNT_WORD_RE})\s+"
+                rf"(?P<c2>{COLOR_RE})\s+(?:cubes|blocks)\s+(?:on\s+top(?:\s+of\s+(?:them|those|it))?|above\s+(?:them|those))\b"),
+     lambda m: f"wall with {NUMBER_WORDS.get(m.group('n'), m.group('n'))} {m.group('c')} cubes on the bottom and "
+               f"{NUMBER_WORDS.get(m.group('n2'), m.group('n2'))} {m.group('c2')} cubes on top"),
     # "a wall two rows high, each row three green blocks wide": every row that wide and of that colour (a second row of
     # another colour had been made up)
     (re.compile(rf"\s*,?\s*(?:with\s+)?each\s+(?:row|layer|level|tier|course)\s+(?:is\s+|has\s+|of\s+)?(?P<n>\d+|{COUNT_WORD_RE})\s+(?P<c>{COLOR_RE})\s+"
@@ -4366,8 +4387,9 @@ LABEL_ARTICLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 """A label between an article and a cube's noun ("the A block", "the 3 cube"): a letter or digit cube."""
 
 TOWER_BETWEEN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
-    (re.compile(r"\b(?:goes\s+|is\s+|sits\s+|stands\s+)?in\s+between\b(?!\s+(?:the|them|those|these|of|a|an|it|each)\b)"),
-     "in the middle"),
+    (re.compile(r"\b(?:goes\s+|is\s+|sits\s+|stands\s+)?(?:(?:wedged|squeezed|sandwiched|tucked|nestled)\s+)?in\s+between\b"
+                r"(?!\s+(?:the|them|those|these|of|a|an|it|each)\b)"),
+     "in the middle"),  # ("yellow wedged in between")
     # "a tower with cyan at the bottom and red at the top, with the blue cube between them", "..., one gray block between
     # them": its middle
     # ("purple is at the bottom and green is between them": the same, said as a state)

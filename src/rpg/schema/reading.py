@@ -1331,6 +1331,8 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     text = repeated_indefinites(other_of_a_colour(text))  # "a grey cube on the blue patch and a grey cube on the red patch": two cubes
     if re.search(r"\b(?:walls?|towers?|stacks?)\b", text):  # "yellow down, cyan up", "down row gray gray gray"
         text = lexicon.rewrite(lexicon.UP_DOWN_ROLE_REWRITES, text)
+    if re.search(r"\bpyramids?\b", text):  # "Pyramid: bottom row orange, orange, orange; middle row pink, pink; top row cyan."
+        text = lexicon.PYRAMID_ROW_RE.sub(r"\1 layer", text)  # a pyramid's rows are its layers
     if re.search(r"\b(?:walls?|pyramids?)\b", text):  # "a pyramid, bottom layer blue blue blue, then red red, then yellow"
         text = layers_said_in_turn(text)
     if re.search(r"\bwalls?\b", text):  # "a two-layer wall with blue on the bottom, three cubes per layer"

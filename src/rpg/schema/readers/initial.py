@@ -390,7 +390,8 @@ the goal: a fact of the start."""
 
 
 _UNSTACK_RE = re.compile(
-    rf"(?i)^\s*(?:please\s+)?unstack\s+(?:the\s+)?(?:(?:tower|stack)\s+(?:of\s+)?(?P<a>(?:{COLOR_RE})(?:\s+on(?:\s+top\s+of)?\s+(?:{COLOR_RE}))+)"
+    rf"(?i)^\s*(?:please\s+)?unstack\s+(?:the\s+)?(?:(?:(?P<an>two|three|four|five|six|[2-6])[\s-](?:block|cube)\s+)?(?:tower|stack)\s+(?:of\s+)?"
+    rf"(?P<a>(?:{COLOR_RE})(?:\s+on(?:\s+top\s+of)?\s+(?:{COLOR_RE}))+)"
     rf"|(?P<b>(?:{COLOR_RE})(?:-on-(?:{COLOR_RE}))+)\s+(?:tower|stack)"
     rf"|(?:tower|stack)\s*\(\s*(?P<c>(?:from\s+)?(?:the\s+)?(?:bottom|top)\s+(?:to|up\s+to|down\s+to)\s+(?:the\s+)?(?:top|bottom)\s*:\s*"
     rf"(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})|\s+and\s+(?:{COLOR_RE}))+)\s*\)"
@@ -402,7 +403,8 @@ the table"): the tower named is rho_0's stack, what follows the goal."""
 
 
 THERE_IS_START_RE = re.compile(
-    rf"(?i)^\s*(?:there(?:'s|\s+is)\s+(?:a|an|the)\s+(?P<top>{_NAME})(?:\s+(?:cube|block))?\s+(?:(?:stacked|sitting|resting|placed)\s+)?"
+    rf"(?i)^\s*(?:there(?:'s|\s+is)\s+(?:a|an|the)\s+(?:(?:tower|stack)\s+of\s+(?:the\s+|a\s+)?)?(?P<top>{_NAME})(?:\s+(?:cube|block))?\s+"
+    r"(?:(?:stacked|sitting|resting|placed)\s+)?"
     rf"|(?:the\s+|an?\s+)?(?P<top2>{_NAME})(?:\s+(?:cube|block))?\s+(?:is\s+(?:currently\s+|now\s+|already\s+)?(?:stacked|sitting|resting|standing"
     r"|lying|placed|set)|is(?=\s+(?:on|atop))|sits|rests|stands|lies)\s+)"
     rf"(?:on\s+top\s+of|on|atop)\s+(?:a|an|the)\s+(?P<bottom>{_NAME})(?:\s+(?:cube|block|one))?\s*[.;]\s+"
@@ -469,7 +471,8 @@ def split(instruction: str) -> InitialScene | None:
         said = f"a tower of {listed.split(':')[1].strip()} from the {listed.split(':')[0].split()[-3 if listed.startswith('from') else 0]}" \
             if listed else f"a tower of {unstack.group('d')}" if unstack.group("d") else (unstack.group("a") or unstack.group("b")).replace("-", " ")
         stacks = _facts(said)
-        counted = unstack.group("dn") and NUMBER_WORDS.get(unstack.group("dn").lower(), unstack.group("dn"))
+        said_count = unstack.group("dn") or unstack.group("an")  # "the 2-block stack of blue on yellow"
+        counted = said_count and NUMBER_WORDS.get(said_count.lower(), said_count)
         if stacks and counted and int(counted) != sum(len(st) for st in stacks):
             return None  # "the two-block tower (red, white, black ...)": read as written (refused)
         return InitialScene(tuple(stacks), unstack.group("goal")) if stacks else None

@@ -351,7 +351,7 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
     if dims_m:
         base, dims = int(dims_m.group(1)), 3
     else:
-        m = re.search(r"base\s+(?:of\s+|is\s+|with\s+)?(\d+)", f.text) or re.search(r"(\d+)\s+(?:[a-z]+\s+){0,2}?(?:(?:block|cube)s?\s+)?(?:(?:go|goes|sit|sits|are|stand|must\s+be|should\s+be)\s+)?(?:on|at|as|in)\s+(?:the\s+)?(?:base|bottom)\b", f.text)
+        m = re.search(r"(?:base|bottom\s+(?:layer|level|tier))\s+(?:of\s+|is\s+|with\s+|has\s+)?(\d+)", f.text) or re.search(r"(\d+)\s+(?:[a-z]+\s+){0,2}?(?:(?:block|cube)s?\s+)?(?:(?:go|goes|sit|sits|are|stand|must\s+be|should\s+be)\s+)?(?:on|at|as|in)\s+(?:the\s+)?(?:base|bottom)\b", f.text)
         layers = re.search(r"\b(\d+)\s+(?:layers?|levels?|tiers?|stor(?:y|ey|ies|eys))\b", f.text)
         m = m or layers
         total = stated_count(f, default=None)
