@@ -6237,3 +6237,30 @@ def test_stranger40_s_ordinary_classes_read_right(text, expected):
 def test_which_cube_goes_at_the_bottom_left_free_is_a_stack_in_any_order():
     schema = check_feasibility(parse("Stack the red and the yellow cube; which one goes at the bottom isn't important."))
     assert [type(p).__name__ for p in schema.goal_predicate().walk()] == ["UnorderedStack"]
+
+
+@pytest.mark.parametrize("text, expected", [
+    # voices' frames and asides (a helper's classes of stranger40's voice refusals, with its own examples)
+    ("Set the yellow block left of the purple block, no pressure.", ["left_of(yellow,purple)"]),  # a trailing aside
+    ("Three orange cubes in a line, reminding me of home.", ["line(orange,orange,orange)"]),
+    ("The clever trick is to put the red cube on the cyan patch.", ["on_patch(red,patch:cyan)"]),
+    ("For triple credit, put the red cube on the cyan patch.", ["on_patch(red,patch:cyan)"]),
+    ("Zoom the green block onto the blue patch.", ["on_patch(green,patch:blue)"]),
+    ("Whip up a tower of the pink cube on the yellow cube.", ["stack(yellow,pink)"]),
+    ("Relax and put the pink cube on the yellow cube.", ["stack(yellow,pink)"]),
+])
+def test_voices_frames_and_trailing_asides_read_right(text, expected):
+    schema = check_feasibility(parse(text))
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []
+
+
+@pytest.mark.parametrize("text", [
+    "Line up the red cubes in a row, no gaps.",  # an aside about the cubes' spacing
+    "Put the red cube on the blue cube, not the green one.",
+    "Put the red cube on the blue cube, no stacking.",
+    "Put the red cube on the blue cube, then wave at the camera.",  # a further step: an action
+])
+def test_trailing_asides_that_bear_on_the_task_stay_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

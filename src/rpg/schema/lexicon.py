@@ -306,7 +306,8 @@ anything everything something nothing anyone robot robots gripper grippers arm a
 timeout deadline seconds second minutes minute steps step attempts attempt tries try episode episodes trial trials speed fast
 slow slowly quickly quick gently carefully careful same then next after afterwards finally lastly first before later once more
 colour colours color colors order orders shape shapes size sizes position positions place places collision collisions
-collide crash bump hit touch touching knock skip skipped higher lower taller shorter""".split())
+collide crash bump hit touch touching knock skip skipped higher lower taller shorter gap gaps space spaces spacing overlap
+overlaps distance room edge edges wobble wobbling tilt tilted""".split())
 """Words that keep a sentence naming no cube tied to the task, so that a negation, a quantity, time or a condition in it may
 bear on the goal or its episode: references that may stand for cubes ("Do it twice.", "Nothing else."), the robot and its
 parts ("Do so if the gripper is free."), the episode's time, tries, speed and collisions ("There is a strict time limit.",
@@ -385,7 +386,7 @@ FRAME_NOUN_RE = re.compile(
     r"|sets?|variants?|ablations?|evals?|evaluations?|benchmarks?|challenges?|levels?|rounds?|episodes?|sessions?|projects?"
     r"|deliverables?|milestones?|reports?|papers?|sections?|protocols?|recipes?|drills?|activit(?:y|ies)|missions?|quests?"
     r"|sweetie|honey|sweetheart|darling|kiddo|buddy|mate|pal|sir|madam|ma'am|team|folks|guys|everyone|everybody|robot"
-    r"|necessary|needed|required|consists?)\b")
+    r"|necessary|needed|required|consists?|tricks?|ideas?|plans?|aims?)\b")
 """What makes a task's opening words a frame (:data:`FRAME_PREFIX_RE`): they name the task as a task, an exercise or an
 experiment ("For the pilot set,", "the robot's job is to"), address a person ("Okay sweetie,", "Sir,") or say the task
 is needed ("Is necessary to"); other opening words are read with the task."""
@@ -1028,7 +1029,8 @@ PLACEMENT_VERBS: dict[str, str] = {
     # a cube's own travel to where it ends ("the black cube glides to the left of the white cube", "the red cube travels
     # onto the green patch"): a voice that makes the cubes dancers or travellers (a spin, a roll or a toss stays refused)
     "glide": "place", "travel": "place", "drift": "place", "wander": "place", "stroll": "place", "waltz": "place",
-    "sashay": "place", "tiptoe": "place", "scurry": "place", "hop": "place", "shimmy": "place",
+    "sashay": "place", "tiptoe": "place", "scurry": "place", "hop": "place", "shimmy": "place", "zoom": "place",
+    "whisk": "place",
 }
 """Verbs that ask for objects to end up somewhere, by lemma -> the parser's verb."""
 
@@ -1993,6 +1995,9 @@ a label, a quantifier, a negation, a condition."""
 FILLER_RE = re.compile(r"(?i)(?:^|(?<=[.!?]\s))(?:prego|allora|ecco|dai|senti|god\s+willing|inshallah|insha'?allah|yalla|omg|lol"
                        r"|yo|hey\s+there|alright\s+then|okay\s+so|ok\s+so|aigoo|jeez|arre+y?|arey|do\s+one\s+thing)\b\s*[,!.]*\s*"  # ("Your": no "yo")
                        r"|(?:^|(?<=[.!?;]\s))(?:look|listen|hey\s+look)\s*,\s*(?=\S)"
+                       # "Relax and put the pink cube on ...": a word to the listener before the task
+                       r"|(?:^|(?<=[.!?;]\s))(?:relax|chill(?:\s+out)?|breathe|take\s+a\s+(?:deep\s+)?breath)\s*,?\s+and\s+(?=(?:just\s+)?(?:put|place"
+                       r"|set|move|stack|build|make|line|arrange)\b)"
                        r"|(?:^|(?<=[.!?;]\s))(?:separately|independently|additionally|in\s+addition|besides|furthermore|moreover"
                        r"|on\s+top\s+of\s+that|apart\s+from\s+that|as\s+a\s+second\s+(?:part|step))\s*,\s*"
                        r"|\b(?:(?:in\s+the\s+)?same\s+way)\s+(?=(?:put|place|keep|move|set)\b)"
@@ -2237,6 +2242,9 @@ GRADING_FRAME_RES: tuple[re.Pattern, ...] = (
                r"(?:none|n/?a|nothing|unlimited|no\s+limit|easy|medium|hard|normal)\s*[.!]?\s*(?=$|\S)"),
     re.compile(r"(?i)(?:^|(?<=[.!?;:]\s))q\s*\d+\s*(?:\([^)]{0,20}\))?\s*[.:)]\s*"),  # "Q3.", "Q5 (bonus)."
     re.compile(r"(?i)\s*\(\s*\d+\s+(?:points?|pts?|marks?)\s*\)"),  # "(4 points)"
+    # a game's reward before the task ("For triple credit, put ...", "For 50 bonus points: ...")
+    re.compile(r"(?i)^\s*for\s+(?:(?:double|triple|extra|bonus|full|\d+|one|two|three|five|ten|a\s+hundred)\s+)+(?:bonus\s+)?"
+               r"(?:credit|points?|pts|marks|stars?|coins?|prizes?)\s*[,:]\s*(?=\S)"),
     re.compile(r"(?i)(?:^|(?<=[.!?;:]\s))(?:(?:full\s+(?:marks|credit)|pass(?:es)?|correct)\s+(?:if|when|where)"
                r"|accept\s+(?:any|an|the)\s+(?:answer|solution|response|attempt)\s+(?:where|in\s+which|that\s+has)"
                r"|an?\s+correct\s+(?:answer|solution|response)\s+(?:has|shows|puts|leaves))\s+"),
@@ -3795,6 +3803,9 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 """Word orders of other languages and terse notes ("the cube brown", "the corner back right", "in bottom", "3 reds", separators): English order."""
 
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "whip up a tower of the pink cube on the yellow cube": build one
+    (re.compile(r"\b(?:whip|rustle|knock|cook|throw)\s+(?:up|together)\s+(?=(?:a|an|one|the)\s+(?:tower|stack|row|line|pyramid|wall|circle|grid"
+                r"|pile)\b)"), "build "),
     # "the cyan cube goes on the table first, the brown one goes on it": the tower's first cube, at its bottom
     (re.compile(r"\b(goes|go|is|sits|stands|comes)\s+(?:down\s+)?(on|onto)\s+the\s+table\s+first\b(?=\s*,[^.;]*\bon\s+(?:it|top)\b)"),
      r"\1 \2 the table"),

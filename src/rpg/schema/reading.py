@@ -267,6 +267,17 @@ def _off_topic_sentence(sentence: str) -> bool:
     return topic
 
 
+def _off_topic_aside(chunk: str) -> bool:
+    """Whether a chunk after a sentence's last comma talks of a topic of its own (:func:`_off_topic_sentence`: ", no
+    pressure", ", reminding me of home") and holds no verb but a participle: a verb there may be a further step, an
+    action the domain lacks (", then wave at the camera"), which is refused for it."""
+    words = re.findall(r"[a-z][a-z'\-]*", chunk.lower())
+    if any(lexicon.parts_of_speech(w) & {"VERB", "AUX"} and not lexicon.parts_of_speech(w) & {"NOUN", "ADJ"}
+           and not w.endswith("ing") for w in words if w not in lexicon.FUNCTION_WORDS):
+        return False
+    return _off_topic_sentence(chunk)
+
+
 def _frame_prefix(words: str) -> bool:
     """Whether the words before a task's imperative frame it for a person (:data:`lexicon.FRAME_PREFIX_RE`): words that
     name the task, address a person or say it is needed (:data:`lexicon.FRAME_NOUN_RE`), nothing of a goal, no hazard
@@ -351,8 +362,8 @@ def _without_address(sentence: str) -> str:
         sentence = sentence[m.end():]
     for _ in range(2):
         m = re.search(r"\s*,\s*([^,:;]{1,40}?)\s*(?P<end>[.!?]*)\s*$", sentence)
-        if not (m and _address_chunk(m.group(1))):
-            break
+        if not (m and (_address_chunk(m.group(1)) or _off_topic_aside(m.group(1)))):
+            break  # (a trailing aside of a topic of its own, ", no pressure", ", reminding me of home", goes too)
         asks = re.match(r"\s*(?:how|what|which|where|why|who|whom|whose|when|is|are|was|were|do|does|did|can|will|shall|should"
                         r"|has|have)\b", sentence, re.IGNORECASE)  # a question stays one ("How many ..., sweetie?")
         sentence = sentence[:m.start()] + (m.group("end") if asks else m.group("end").replace("?", "."))  # "..., savvy?": the
