@@ -5981,6 +5981,7 @@ def test_stressed_relations_diagonal_pairs_and_idle_commentary(text, expected):
     ("Build a line of red cubes. Use plenty.", "quantity"),
     ("Put the red cube on the blue cube. There is a strict time limit.", None),
     ("Put the red cube on the blue cube. Do so if the gripper is free.", "condition"),
+    ("Put the red cube on the blue cube. Call the clinic if symptoms persist.", "condition"),
     # a hostile helper's attack on the diagonal and "it" readings: each had compiled silently wrong mid-session
     ("Put the red cube to the back-right of the blue patch.", None),  # a blue cube had been made up
     ("Move the cube to the front-right of the blue cube onto the green cube.", None),  # a cube picked by its place
@@ -6203,8 +6204,6 @@ def test_the_twenty_ninth_session_s_attacks_are_refused(text):
     ("A wall two rows high, each row three green blocks wide.", ["wall(green,green,green,green,green,green)"]),
     ("Take down the stack of blue on yellow so both end up on the table.", ["on_table(blue)", "start:stack(yellow,blue)"]),
     ("Hey! Your job is to put the red cube on the blue cube.", ["stack(blue,red)"]),  # ("Your" had lost its "Yo")
-    ("Stack the red cube on the blue cube. No experience necessary.", ["stack(blue,red)"]),  # a topic of its own
-    ("Put the red cube on the blue cube. Call the clinic if symptoms persist.", ["stack(blue,red)"]),
     ("The black cube glides to the left of the white cube.", ["left_of(black,white)"]),
     ("Make a line of red, green and blue from left to right. Blue is rightmost.", ["line[left_to_right](red,green,blue)"]),
 ])
@@ -6241,15 +6240,11 @@ def test_which_cube_goes_at_the_bottom_left_free_is_a_stack_in_any_order():
 
 @pytest.mark.parametrize("text, expected", [
     # voices' frames and asides (a helper's classes of stranger40's voice refusals, with its own examples)
-    ("Set the yellow block left of the purple block, no pressure.", ["left_of(yellow,purple)"]),  # a trailing aside
-    ("Three orange cubes in a line, reminding me of home.", ["line(orange,orange,orange)"]),
-    ("The clever trick is to put the red cube on the cyan patch.", ["on_patch(red,patch:cyan)"]),
     ("For triple credit, put the red cube on the cyan patch.", ["on_patch(red,patch:cyan)"]),
-    ("Zoom the green block onto the blue patch.", ["on_patch(green,patch:blue)"]),
     ("Whip up a tower of the pink cube on the yellow cube.", ["stack(yellow,pink)"]),
     ("Relax and put the pink cube on the yellow cube.", ["stack(yellow,pink)"]),
 ])
-def test_voices_frames_and_trailing_asides_read_right(text, expected):
+def test_voices_frames_read_right(text, expected):
     schema = check_feasibility(parse(text))
     assert sorted(meaning(schema)) == expected
     assert uncited(schema, text) == []
@@ -6260,7 +6255,38 @@ def test_voices_frames_and_trailing_asides_read_right(text, expected):
     "Put the red cube on the blue cube, not the green one.",
     "Put the red cube on the blue cube, no stacking.",
     "Put the red cube on the blue cube, then wave at the camera.",  # a further step: an action
+    # a rule that dropped sentences and trailing asides talking of a topic of their own ("No smokers.", ", no pressure")
+    # was reverted: a hostile helper's attack showed such topics stand for the task's ("No neighbours.", "No penthouse.",
+    # ", no doubles", "Due by lunchtime.", "Must be neighbours.")
+    "Put the red cube left of the blue cube. No neighbours.",
+    "Stack the red cube on the blue cube. No penthouse.",
+    "Three orange cubes in a line, no doubles.",
+    "Stack the red cube on the blue cube. Due by lunchtime.",
+    "Put the red cube left of the blue cube. Must be neighbours.",
+    "The dumb idea is to put the red cube on the blue cube.",  # (an 'idea' frame was reverted too)
+    "Zoom in on the green block on the blue patch.",  # camera talk ('zoom' is no placement)
 ])
 def test_trailing_asides_that_bear_on_the_task_stay_refused(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text", [
+    # a second hostile helper's attack on the session's later readings (each had compiled silently wrong)
+    "Build two pyramids: bottom row orange, orange, orange; middle row pink, pink; top row cyan.",  # one had been built
+    "Build a pyramid: bottom row orange, orange, orange; middle row pink, pink.",  # a red top had been made up
+    "Stack the red and the yellow cube; which one goes at the bottom isn't important, but yellow.",  # a third cube
+])
+def test_the_second_attack_on_the_session_s_readings_is_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Take the stack of blue on yellow down so both end up on the table.", ["on_table(blue)", "start:stack(yellow,blue)"]),
+    ("A wall two rows high, each row three blocks wide.", ["wall(red,red,red,red,red,red)"]),  # no colour asked of a row
+])
+def test_the_second_attack_on_the_session_s_readings_reads_right(text, expected):
+    schema = check_feasibility(parse(text))
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []

@@ -1787,3 +1787,18 @@ def test_the_task_s_cubes_restated_in_other_structures_are_a_pivot(tmp_path):
     assert _steered(tmp_path / "b", "Put the red cube to the left of the blue cube", "put a green cube between them",
                     "now the same three in a tower, red at the bottom, then green, blue on top")[-1] == \
         ("pivot", ["stack(red,green,blue)"])
+
+
+def test_an_addition_that_keeps_a_cube_where_it_is_adds_only(tmp_path):
+    """"also put a pink cube on a blue patch, keep the yellow one where it is": the keeping is what an addition does
+    anyway (it had been refused: 'keep' an action)."""
+    assert _steered(tmp_path, "Put the yellow cube on the green patch",
+                    "also put a pink cube on a blue patch, keep the yellow one where it is") == [
+        ("extend", ["on_patch(pink,patch:blue)", "on_patch(yellow,patch:green)"])]
+
+
+def test_a_question_edit_is_refused_as_a_question():
+    from rpg.steer.edits import SteerError, interpret
+
+    with pytest.raises(SteerError, match="asks a question"):
+        interpret("wait, which of the two patches is closer to the robot right now?")  # (it had been read as a distance)

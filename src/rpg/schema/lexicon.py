@@ -300,39 +300,6 @@ COMMENTARY_BLOCKING_KINDS: frozenset[str] = frozenset({"negation", "time", "quan
 commentary: each may bear on the goal ("Never twice.", "Under a golden sky."); an object, an action on no cube, a
 condition on a person or a question to one ("Serve with a smile.", "What do you do?") bears on none."""
 
-OFF_TOPIC_ANCHORS: frozenset[str] = frozenset("""
-it its them they their this that these those one ones so here there both all each every rest others other another else
-anything everything something nothing anyone robot robots gripper grippers arm arms hand hands camera time limit limits timer
-timeout deadline seconds second minutes minute steps step attempts attempt tries try episode episodes trial trials speed fast
-slow slowly quickly quick gently carefully careful same then next after afterwards finally lastly first before later once more
-colour colours color colors order orders shape shapes size sizes position positions place places collision collisions
-collide crash bump hit touch touching knock skip skipped higher lower taller shorter gap gaps space spaces spacing overlap
-overlaps distance room edge edges wobble wobbling tilt tilted""".split())
-"""Words that keep a sentence naming no cube tied to the task, so that a negation, a quantity, time or a condition in it may
-bear on the goal or its episode: references that may stand for cubes ("Do it twice.", "Nothing else."), the robot and its
-parts ("Do so if the gripper is free."), the episode's time, tries, speed and collisions ("There is a strict time limit.",
-"Avoid collisions."), a step of a sequence ("Then celebrate.", "Once more."), the cubes' colours, order and places
-("Colours don't matter."), skipping it or a height ("Would skip.", "Would stack higher.").  A sentence
-with none of them whose words of those kinds are said of a topic of its own ("No smokers.", "Would buy again.", "Serve at
-room temperature.") is a voice's commentary (:func:`rpg.schema.reading._off_topic_sentence`)."""
-
-
-OFF_TOPIC_VERDICT_WORDS: frozenset[str] = frozenset("""
-necessary unnecessary required needed optional mandatory essential important possible impossible allowed permitted welcome
-""".split())
-"""Words that judge what they are said of ("No experience necessary.", "Not necessary."): no topic of a sentence's own, so a
-sentence of them alone ("Not required.") says something of the task (:func:`rpg.schema.reading._off_topic_sentence`)."""
-
-
-OFF_TOPIC_HAZARD_RE = re.compile(
-    r"(?:not|no|never|none|nobody|neither|nor|without|except|unless|[a-z]+n't|cannot|should|must|shall|need|needs|needed"
-    r"|has\s+to|have\s+to|had\s+to|ought|require\w*|want\w*|expect\w*|again|still|already|only|much|many|by|up|down|out|off"
-    r"|over|through|long|equal\w*)")
-"""The words of :data:`FRAMING_SENTENCE_HAZARD_RE` a sentence talking of a topic of its own may hold, said of that topic
-("No smokers.", "Must be a team player.", "Would buy again.", "Apply by Friday."): a negation, a need or wish, a
-repetition, particles.  Any other ("Vice versa.", "Diagonal please.", "Then celebrate.") keeps it tied to the task."""
-
-
 EVALUATION_WORD_RE = re.compile(
     r"\b(?:episodes?|seeds?|trials?|rollouts?|success(?:\s+(?:rates?|checks?|criteri(?:on|a)|conditions?|detectors?))?"
     r"|scores?|scored|scoring|leaderboards?|entr(?:y|ies)|baselines?|polic(?:y|ies)|metrics?|benchmarks?|accuracy|percent"
@@ -386,7 +353,7 @@ FRAME_NOUN_RE = re.compile(
     r"|sets?|variants?|ablations?|evals?|evaluations?|benchmarks?|challenges?|levels?|rounds?|episodes?|sessions?|projects?"
     r"|deliverables?|milestones?|reports?|papers?|sections?|protocols?|recipes?|drills?|activit(?:y|ies)|missions?|quests?"
     r"|sweetie|honey|sweetheart|darling|kiddo|buddy|mate|pal|sir|madam|ma'am|team|folks|guys|everyone|everybody|robot"
-    r"|necessary|needed|required|consists?|tricks?|ideas?|plans?|aims?)\b")
+    r"|necessary|needed|required|consists?)\b")
 """What makes a task's opening words a frame (:data:`FRAME_PREFIX_RE`): they name the task as a task, an exercise or an
 experiment ("For the pilot set,", "the robot's job is to"), address a person ("Okay sweetie,", "Sir,") or say the task
 is needed ("Is necessary to"); other opening words are read with the task."""
@@ -901,6 +868,10 @@ TAKE_DOWN_RE = re.compile(r"(?i)\b(?:take|tear|pull|knock|bring)\s+down\s+(?=(?:
 """Verbs that undo a tower said another way ("Take down the stack of blue on yellow so both end up on the table"): read as
 "unstack" (the tower had been built instead)."""
 
+TAKE_DOWN_AFTER_RE = re.compile(rf"(?i)\b(?:take|tear|pull|knock|bring)\s+(the\s+(?:(?:\d+|two|three|four)[\s-]+(?:block|cube)\s+)?(?:tower|stack)"
+                                rf"(?:\s+of\s+(?:{COLOR_RE})(?:\s+on(?:\s+top\s+of)?\s+(?:{COLOR_RE}))+)?)\s+down\b")
+"""The same with the particle after the tower ("Take the stack of blue on yellow down so ..."): "unstack <the tower>"."""
+
 
 PYRAMID_ROW_RE = re.compile(r"\b(bottom|middle|top|lower|upper|base|second|third|first)\s+rows?\b")
 """A pyramid's layer called a row ("bottom row orange, orange, orange; middle row pink, pink; top row cyan"): its layer."""
@@ -1029,8 +1000,7 @@ PLACEMENT_VERBS: dict[str, str] = {
     # a cube's own travel to where it ends ("the black cube glides to the left of the white cube", "the red cube travels
     # onto the green patch"): a voice that makes the cubes dancers or travellers (a spin, a roll or a toss stays refused)
     "glide": "place", "travel": "place", "drift": "place", "wander": "place", "stroll": "place", "waltz": "place",
-    "sashay": "place", "tiptoe": "place", "scurry": "place", "hop": "place", "shimmy": "place", "zoom": "place",
-    "whisk": "place",
+    "sashay": "place", "tiptoe": "place", "scurry": "place", "hop": "place", "shimmy": "place",
 }
 """Verbs that ask for objects to end up somewhere, by lemma -> the parser's verb."""
 
@@ -1487,7 +1457,8 @@ FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # ("Stack the red and the yellow cube; which one goes at the bottom isn't important")
     (re.compile(r"\s*[,;\u2013\u2014-]\s*which\s+(?:one\s+|cube\s+|block\s+)?goes\s+(?:where|at\s+the\s+(?:bottom|top)|on\s+(?:the\s+)?(?:top|bottom)"
                 r"|first|underneath|below)\s+(?:is\s+(?:your|the\s+robot's)\s+(?:call|choice)|is\s+up\s+to\s+you"
-                r"|does\s+not\s+matter|doesn't\s+matter|is\s*n[o']?t\s+important|isn't\s+important|is\s+not\s+important|is\s+unimportant)\b"),
+                r"|does\s+not\s+matter|doesn't\s+matter|is\s*n[o']?t\s+important|isn't\s+important|is\s+not\s+important|is\s+unimportant)\b"
+                r"(?=\s*(?:[.!;]|$))"),  # (", ..., but yellow": the order said after all, left to the readers)
      lambda m: " in any order" if re.search(r"\b(?:tower|stack|row|line|column)\b", m.string) and "patch" not in m.string else m.group(0)),
     # an arrangement the goal does not judge anyway ("How they are arranged inside that front half does not matter.",
     # "The order of the towers along the table is not something I care about."): dropped
@@ -2891,11 +2862,16 @@ EDIT_OPENING = r"^\s*(?:(?i:nah|no|ok(?:ay)?|so|and|then|hmm|actually|now)[\s,]+
 "actually, left to right: ..."): they change nothing."""
 
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
+    # "also put a pink cube on a blue patch, keep the yellow one where it is": what an addition keeps anyway
+    (re.compile(rf"(?i)\s*[,;]\s*(?:and\s+)?(?:keep|leave)\s+(?:the\s+)?(?:(?:{COLOR_RE})\s+)?(?:one|cube|block|tower|stack|row|rest|others?"
+                r"|everything\s+else)\s+(?:where\s+(?:it|they)\s+(?:is|are)|as\s+(?:it|they)\s+(?:is|are)|in\s+place|unchanged|alone)"
+                r"(?=\s*[.!]?\s*$)"),
+     ""),
     # "now split it into two towers of two: red under blue, green under yellow": the task's cubes in the structures then
     # listed, a whole task (a pivot; the steering checks they are the task's own cubes)
     (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|now|so|then|next)\s*,?\s*)*(?:split|break|divide|separate|turn|rebuild|rearrange|make|change"
                 r"|reorganize|reorganise)\s+(?:it|them|this|the\s+(?:tower|stack|row|line|pyramid|structure|cubes|blocks))\s+(?:up\s+)?"
-                r"(?:into|in)\s+(?=(?:a|an|one|two|three|2|3)\s+(?:separate\s+)?(?:towers?|stacks?|rows?|lines?|piles?)\b[^:]*:\s*\S)"),
+                r"(?:into|in)\s+(?=(?:a|an|one|two|three|2|3)\s+(?:separate\s+|single\s+)?(?:towers?|stacks?|rows?|lines?|piles?)\b[^:]*:\s*\S)"),
      "make "),
     # "now the same three in a tower, red at the bottom, then green, blue on top": the task's cubes in that structure
     (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|now|so|then|next)\s*,?\s*)*(?:(?:put|make|arrange|place|stack|build)\s+)?(?:the\s+)?same\s+"
@@ -4344,9 +4320,9 @@ WALL_ROW_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                f"{NUMBER_WORDS.get(m.group('n2'), m.group('n2'))} {m.group('c2')} cubes on top"),
     # "a wall two rows high, each row three green blocks wide": every row that wide and of that colour (a second row of
     # another colour had been made up)
-    (re.compile(rf"\s*,?\s*(?:with\s+)?each\s+(?:row|layer|level|tier|course)\s+(?:is\s+|has\s+|of\s+)?(?P<n>\d+|{COUNT_WORD_RE})\s+(?P<c>{COLOR_RE})\s+"
-                r"(?:cubes|blocks)(?:\s+wide|\s+across|\s+long)?\b"),
-     lambda m: f" with {NUMBER_WORDS.get(m.group('n'), m.group('n'))} wide, all {m.group('c')}"),
+    (re.compile(rf"\s*,?\s*(?:with\s+)?each\s+(?:row|layer|level|tier|course)\s+(?:is\s+|has\s+|of\s+)?(?P<n>\d+|{COUNT_WORD_RE})\s+(?:(?P<c>{COLOR_RE})\s+)?"
+                r"(?:cubes|blocks)(?:\s+wide|\s+across|\s+long)?\b"),  # (no colour: "each row" asks no colour of a row)
+     lambda m: f" with {NUMBER_WORDS.get(m.group('n'), m.group('n'))} wide" + (f", all {m.group('c')}" if m.group("c") else "")),
 )
 """A wall's layers said row by row with their counts: "N c cubes on the bottom", which the wall reader reads."""
 

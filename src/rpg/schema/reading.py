@@ -196,12 +196,6 @@ def _framing_sentence(sentence: str) -> bool:
 
 
 def _commentary_sentence(sentence: str) -> bool:
-    """Whether a sentence of a text that says its task elsewhere is a voice's commentary, dropped by :func:`drop_asides`:
-    idle (:func:`_idle_commentary`) or talking of a topic of its own (:func:`_off_topic_sentence`)."""
-    return _idle_commentary(sentence) or _off_topic_sentence(sentence)
-
-
-def _idle_commentary(sentence: str) -> bool:
     """Whether a sentence of a text that says its task elsewhere is a voice's commentary (a recipe's "Season to taste.", a
     ship's log's "Calm seas.", a commentator's "The crowd goes wild."), dropped by :func:`drop_asides`: at least two
     words; no word of a goal, count or digit (:data:`lexicon.TASK_CONTENT_RE`, :data:`lexicon.ASIDE_CONTENT_RE`); nothing
@@ -223,59 +217,6 @@ def _idle_commentary(sentence: str) -> bool:
                     base not in VOCAB and senses.sense(base).kind in lexicon.COMMENTARY_BLOCKING_KINDS):
                 return False
     return not any(k in lexicon.COMMENTARY_BLOCKING_KINDS for k, _, _ in _inexpressible(low))
-
-
-def _off_topic_sentence(sentence: str) -> bool:
-    """Whether a sentence of a text that says its task elsewhere talks of a topic of its own, so that its negation,
-    quantity, time or condition bears on that topic, not on the goal (a dating profile's "No smokers.", a review's "Would
-    buy again.", a tasting note's "Serve at room temperature."; they had refused the task around them): at least two words;
-    no digit, word of a goal, colour, retraction or verb that changes the scene; no hazard but a negation, a need or a
-    repetition said of its topic (:data:`lexicon.OFF_TOPIC_HAZARD_RE`); no word that keeps it tied to the task
-    (:data:`lexicon.OFF_TOPIC_ANCHORS`: "Do it twice.", "There is a strict time limit."); no object the domain lacks
-    ("Mind the coffee mug.": refused for it); and a noun or verb of its own beyond those the domain refuses and the
-    fillers ("Never again.", "Not yet." have none, and stay refused)."""
-    low = sentence.lower()
-    words = re.findall(r"[a-z][a-z'\-]*", low)
-    if len(words) < 2 or re.search(r"\d", low) or lexicon.TASK_CONTENT_RE.search(low) or lexicon.GOAL_THING_RE.search(low) \
-            or lexicon.RETRACTION_RE.search(low) or any(not lexicon.OFF_TOPIC_HAZARD_RE.fullmatch(m.group(0))
-                                                        for m in lexicon.FRAMING_SENTENCE_HAZARD_RE.finditer(low)):
-        return False
-    refused = _inexpressible(low)
-    if any(k == "object" for k, _, _ in refused):
-        return False
-    said = {w for _, ws, _ in refused for phrase in ws for w in re.findall(r"[a-z][a-z'\-]*", phrase.lower())}
-    topic = False
-    for w in words:
-        base = w.removesuffix("'s")
-        if base in lexicon.OFF_TOPIC_ANCHORS or base in COLORS or base in lexicon.colour_names() \
-                or base.removesuffix("s") in COLORS or base.removesuffix("s") in lexicon.colour_names() \
-                or base in lexicon.SCENE_CHANGING_VERBS or any(x in lexicon.SCENE_CHANGING_VERBS for x in lexicon.lemmas(base)):
-            return False
-        if base in lexicon.FUNCTION_WORDS or base in lexicon.IDLE_WORDS or base in lexicon.CHAT_WORDS \
-                or base in lexicon.AUXILIARY_WORDS or base in lexicon.INTERJECTIONS or base in lexicon.OFF_TOPIC_VERDICT_WORDS:
-            continue
-        if base in VOCAB:
-            return False  # a word of the domain ("Beneath, I mean."): the sentence may bear on the goal
-        if base in said:
-            continue
-        kind = senses.sense(base).kind
-        if kind == "object":
-            return False
-        if kind not in lexicon.COMMENTARY_BLOCKING_KINDS and kind != "action" \
-                and lexicon.parts_of_speech(base) & {"NOUN", "PROPN", "VERB"}:
-            topic = True
-    return topic
-
-
-def _off_topic_aside(chunk: str) -> bool:
-    """Whether a chunk after a sentence's last comma talks of a topic of its own (:func:`_off_topic_sentence`: ", no
-    pressure", ", reminding me of home") and holds no verb but a participle: a verb there may be a further step, an
-    action the domain lacks (", then wave at the camera"), which is refused for it."""
-    words = re.findall(r"[a-z][a-z'\-]*", chunk.lower())
-    if any(lexicon.parts_of_speech(w) & {"VERB", "AUX"} and not lexicon.parts_of_speech(w) & {"NOUN", "ADJ"}
-           and not w.endswith("ing") for w in words if w not in lexicon.FUNCTION_WORDS):
-        return False
-    return _off_topic_sentence(chunk)
 
 
 def _frame_prefix(words: str) -> bool:
@@ -362,8 +303,8 @@ def _without_address(sentence: str) -> str:
         sentence = sentence[m.end():]
     for _ in range(2):
         m = re.search(r"\s*,\s*([^,:;]{1,40}?)\s*(?P<end>[.!?]*)\s*$", sentence)
-        if not (m and (_address_chunk(m.group(1)) or _off_topic_aside(m.group(1)))):
-            break  # (a trailing aside of a topic of its own, ", no pressure", ", reminding me of home", goes too)
+        if not (m and _address_chunk(m.group(1))):
+            break
         asks = re.match(r"\s*(?:how|what|which|where|why|who|whom|whose|when|is|are|was|were|do|does|did|can|will|shall|should"
                         r"|has|have)\b", sentence, re.IGNORECASE)  # a question stays one ("How many ..., sweetie?")
         sentence = sentence[:m.start()] + (m.group("end") if asks else m.group("end").replace("?", "."))  # "..., savvy?": the
@@ -1172,6 +1113,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     original, asides = drop_asides(original)  # "Put the green block on the purple block. What a tower!"
     original = lexicon.SWAP_HEADING_RE.sub("", original)  # "Swap places: the yellow cube goes on the cyan patch and ..."
     original = lexicon.TAKE_DOWN_RE.sub("unstack ", original)  # "Take down the tower.": an undoing (a tower had been built)
+    original = lexicon.TAKE_DOWN_AFTER_RE.sub(r"unstack \1", original)
     original = lexicon.FILLER_RE.sub("", original).strip()
     original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", original)  # texting's "2" for "to"
     original = lexicon.TEXTED_YOU_RE.sub("you", original)  # "can u build ...": texting's "u"

@@ -228,7 +228,9 @@ def refuse_inexpressible(edit: str, t: str) -> None:
         raise SteerError(f"cannot apply the edit \"{edit.strip()[:80]}\": '{vague.group(0)}' is a vague quantity: rpg's counts are "
                          "exact and its relations qualitative; say how many blocks (e.g. \"make it 5 blocks tall\")")
     inherited = (c for c in INEXPRESSIBLE if c[0] != "reference" and c[1] not in INSTRUCTION_ONLY)
-    for _cls, pattern, why in (*EDIT_INEXPRESSIBLE, *inherited):
+    classes = (*EDIT_INEXPRESSIBLE, *inherited)
+    # a question first ("which of the two patches is closer to the robot right now?": a question, whatever it asks about)
+    for _cls, pattern, why in sorted(classes, key=lambda c: c[0] != "question"):
         m = re.search(pattern, t)
         if m:
             raise SteerError(f"cannot apply the edit \"{edit.strip()[:80]}\": '{said(m)}' {why}")

@@ -329,6 +329,11 @@ def _refuse_made_up_layer_cubes(f: Features, b: Builder) -> None:
                          "cubes stand in which layer; say them as \"bottom layer ...; middle layer ...; top layer ...\", or use "
                          "--model")
     built = Counter(a.color for a in b.assets if a.kind != "goal_patch")
+    unsaid = [c for c in built if not re.search(rf"\b{c}\b", f.text)]
+    if unsaid:  # "bottom row orange, orange, orange; middle row pink, pink.": a red top made up
+        raise ParseError(f"\"{f.original[:80]}\" lists a pyramid's cubes layer by layer but not all its layers: its "
+                         f"{', '.join(unsaid)} cube{'s' if len(unsaid) > 1 else ''} would be made up; say each layer's cubes, "
+                         "or use --model")
     for c, n in built.items():
         said = [m for m in re.finditer(rf"\b{c}\b", f.text)]
         counted = any(re.search(rf"\b(?:\d+|{COUNT_WORD_RE}|all|every|only)\s+(?:[a-z]+\s+)?$", f.text[:m.start()])
@@ -343,6 +348,10 @@ def _refuse_made_up_layer_cubes(f: Features, b: Builder) -> None:
 def recognize_pyramid(f: Features, b: Builder) -> bool:
     if not f.has("pyramid", "pyramids", "triangle", "triangular"):
         return False
+    several = re.search(rf"\b(?:(?:\d+|{COUNT_WORD_RE}|several|some|a\s+(?:pair|couple)\s+of)\s+(?:[a-z]+\s+)?pyramids|pyramids)\b", f.text)
+    if several:  # "Build two pyramids: bottom row ...": the builtin parser builds one (one had been built)
+        raise ParseError(f"'{several.group(0)}' in \"{f.original[:80]}\" asks for more than one pyramid; the builtin parser "
+                         "builds one pyramid a task; say one, or use --model")
     if not f.has("pyramid", "pyramids", "stack", "stacked", "stacking", "tower", "layer", "layers", "level", "levels",
                  "base", "bottom", "top", "on top", "tier", "tiers", "vertical", "upright"):
         raise ParseError(f"'triangle' in \"{f.original[:80]}\" names no one shape: a pyramid (a layer of cubes on a wider "
