@@ -6290,3 +6290,20 @@ def test_the_second_attack_on_the_session_s_readings_reads_right(text, expected)
     schema = check_feasibility(parse(text))
     assert sorted(meaning(schema)) == expected
     assert uncited(schema, text) == []
+
+
+@pytest.mark.parametrize("text", [
+    # silent errors of the session's start the attacks found (pre-existing)
+    "Three orange cubes in a line, four actually.",  # a count said again after a comma (it had been dropped)
+    "Three orange cubes in a line, make it five.",
+    "Move the black cube to the left of the white cube until it touches the red cube.",  # (white had been put next to red)
+])
+def test_afterthought_counts_and_touching_after_a_relation_are_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))
+
+
+def test_a_count_in_and_a_cube_slid_until_it_touches_still_read():
+    assert meaning(check_feasibility(parse("Slide the red block until it touches the blue block."))) == ["next_to(blue,red)"]
+    assert meaning(check_feasibility(parse("Build two towers of two cubes each, one all green and one all pink."))) == [
+        "stack(green,green)", "stack(pink,pink)"]

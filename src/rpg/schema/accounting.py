@@ -175,6 +175,11 @@ a digit cube or a number of cubes, which the task must have (not a list marker "
 a grid size "3x3" or "3 by 3", an id "T-88", a time "10:32" or a heading "Task 4:", "Task 5 - ...", "level 3 ->")."""
 
 
+_AFTERTHOUGHT_COUNT_RE = re.compile(r"(?<!\d),\s*(?:(?:no|or|wait|sorry|actually|make\s+(?:it|that|them))\s*,?\s*)*([2-9]|1[0-9])\s*"
+                                    r"(?:actually|instead|please|pls|now|rather|really)?\s*(?=[.!?;]|$)")
+"""A number said after a comma with no noun of its own ("..., 4 actually", "..., make it 5"): a count the task must have."""
+
+
 COLOR_LIST_RE = re.compile(rf"\b(?:{COLOR_RE})(?:\s*(?:,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+)(?:the\s+)?"
                            rf"(?:{COLOR_RE})\b(?!\s+(?:patch|pad|mat|tile)))+")
 """A list of colours with nothing but separators between them ("white, white, then black, black"):
@@ -1180,6 +1185,9 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
     lone = [m.group(1) for m in LONE_DIGIT_RE.finditer(f.original) if m.group(1) not in labels and int(m.group(1)) not in sizes]
     lone += [m.group("l") for m in LABEL_ROLE_RE.finditer(f.original)  # "9 at the bottom": a digit given a place, no cube
              if m.group("l") and m.group("l").isdigit() and m.group("l") not in labels and int(m.group("l")) not in sizes]
+    # "Three orange cubes in a line, four actually.", ", make it five": a count said again after a comma, which no
+    # mention holds (it had been dropped)
+    lone += [m.group(1) for m in _AFTERTHOUGHT_COUNT_RE.finditer(f.text) if m.group(1) not in labels and int(m.group(1)) not in sizes]
     if lone:  # "line 1 2 3" read as a line of four coloured cubes: a digit no cube and no count of the task carries
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the number {lone[0]!r} is neither a "
                           "digit cube nor a count of that task. Rephrase (e.g. \"the digit cubes 1, 2 and 3\", \"3 cubes\"), "

@@ -3288,9 +3288,12 @@ OUTCOME_VERB_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "slide the red block until it touches the blue block": next to it; "until it reaches the patch": on it
     (re.compile(rf"\buntil\s+(?:it|they)\s+(?:reach(?:es)?|is\s+on|are\s+on)\s+(?=the\s+(?:(?:{COLOR_RE})\s+)?(?:goal\s+)?patch\b)"),
      "onto "),
+    # (only right after the moved cube: "to the left of the white cube until it touches the red cube" had put the
+    # white cube next to the red one)
     (re.compile(rf"\b(?:until\s+(?:it|they)\s+(?:touch(?:es)?|hits?|bumps?\s+into|reach(?:es)?)|against)\s+"
                 rf"(?=the\s+(?:{COLOR_RE})\s+(?:block|cube|one)\b)"),
-     "next to "),
+     lambda m: m.group(0) if re.search(r"\b(?:left|right|front|behind|next|beside|near|on|onto|between|patch|corner|far|under|above)\b",
+                                       re.split(r"[.;!?,]", m.string[:m.start()])[-1]) else "next to "),
 )
 """A motion said by its outcome ("cover the green patch with the red block", "slide it until it touches ..."): the relation it ends in."""
 
