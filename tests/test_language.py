@@ -6307,3 +6307,28 @@ def test_a_count_in_and_a_cube_slid_until_it_touches_still_read():
     assert meaning(check_feasibility(parse("Slide the red block until it touches the blue block."))) == ["next_to(blue,red)"]
     assert meaning(check_feasibility(parse("Build two towers of two cubes each, one all green and one all pink."))) == [
         "stack(green,green)", "stack(pink,pink)"]
+
+
+@pytest.mark.parametrize("text", [
+    # pre-existing silent errors the attacks found, refused now
+    "Stack the red cube on the blue cube. Needs a roof.",  # another cube on top, nobody named (it had been dropped as idle)
+    "Stack the red cube on the blue cube. Must have a hat.",
+    "Put every cube to the left of the white cube.",  # all the scene's cubes (one red cube had been made up)
+    "Put every cube on the blue patch.",
+])
+def test_needs_and_every_cube_of_the_scene_are_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # "in a row"'s "a" had read as a letter label, so the goal had kept cubes of its own (a red one made up)
+    ("Unstack the stack of blue on yellow so both cubes are in a row.", ["line(blue,yellow)", "start:stack(yellow,blue)"]),
+    ("Initially yellow is on red. Put both cubes in a row.", ["line(red,yellow)", "start:stack(red,yellow)"]),
+    ("Put every cube on the patch of its own colour: red ones on the red patch, green ones on the green patch.",
+     ["on_patch(green,patch:green)", "on_patch(red,patch:red)"]),
+])
+def test_the_start_s_cubes_in_a_row_and_each_cube_on_its_own_patch(text, expected):
+    schema = check_feasibility(parse(text))
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []

@@ -631,6 +631,14 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "names a piece of a shape the domain does not have (a triangle, prism or wedge): it has only 5 cm cubes "
      "(coloured, optionally labelled) and flat coloured patches; a pyramid is built of cubes (e.g. \"a pyramid of 3 "
      "cubes\")"),
+    # "Put every cube to the left of the white cube.", "Put every cube on the blue patch.": all the scene's cubes, of a
+    # count and colours nobody said (one red cube had been made up)
+    ("quantity", rf"\b(?:put|place|move|set|bring|slide)\s+(?:every|each|all(?:\s+(?:of\s+)?the)?|all\s+other)\s+(?:other\s+|remaining\s+)?"
+                 rf"(?:cubes?|blocks?)\b(?=\s+(?:to\s+the\s+(?:left|right)\s+of|next\s+to|beside|behind|in\s+front\s+of|near|far\s+from|under"
+                 rf"|on\s+top\s+of|on|onto|in|into)\s+the\s+(?:(?:{'|'.join(COLORS)})\s+(?:cube|block|patch|goal\s+patch)|patch)\b"
+                 r"(?!\s+(?:of\s+(?:its|their)|that\s+match|matching|:)))",  # ("on the patch of its own colour: ...": each said)
+     "asks for every cube of the scene, whose count and colours the instruction does not say: name the cubes (e.g. \"put "
+     "the red and the green cube on the blue patch\")"),
     ("quantity", r"\b(?:minus|negative)\s+(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b|\bzero\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b",
      "is a quantity the domain cannot hold (a count below one): a task places whole cubes, one or more; say how many cubes"),
     ("contradiction", r"\b(?:on|onto|on\s+top\s+of|atop|under|below|beneath|next\s+to|beside|left\s+of|right\s+of|behind|in\s+front\s+of)"
@@ -871,6 +879,13 @@ TAKE_DOWN_RE = re.compile(r"(?i)\b(?:take|tear|pull|knock|bring)\s+down\s+(?=(?:
 TAKE_DOWN_AFTER_RE = re.compile(rf"(?i)\b(?:take|tear|pull|knock|bring)\s+(the\s+(?:(?:\d+|two|three|four)[\s-]+(?:block|cube)\s+)?(?:tower|stack)"
                                 rf"(?:\s+of\s+(?:{COLOR_RE})(?:\s+on(?:\s+top\s+of)?\s+(?:{COLOR_RE}))+)?)\s+down\b")
 """The same with the particle after the tower ("Take the stack of blue on yellow down so ..."): "unstack <the tower>"."""
+
+
+NEEDS_MORE_RE = re.compile(r"(?i)(?:^|(?<=[.!?;]\s))(?:it\s+|this\s+|the\s+(?:tower|stack|row|line|pyramid|wall)\s+)?(?:needs|must\s+have"
+                           r"|should\s+have|requires|wants|is\s+missing|lacks)\s+(?:a|an|some|more|another|its|one)\s+[a-z]+(?:\s+[a-z]+)?\s*[.!]?(?=\s|$)")
+"""A sentence that says the task needs something more ("Needs a roof.", "Must have a hat.", "The tower needs a
+foundation."): a cube or a structure nobody named, which the builtin parser does not read (the sentence had been dropped
+as idle: a roof is another cube on top)."""
 
 
 PYRAMID_ROW_RE = re.compile(r"\b(bottom|middle|top|lower|upper|base|second|third|first)\s+rows?\b")

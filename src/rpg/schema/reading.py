@@ -1112,6 +1112,10 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
         original = pattern.sub("", original).strip()
     original, asides = drop_asides(original)  # "Put the green block on the purple block. What a tower!"
     original = lexicon.SWAP_HEADING_RE.sub("", original)  # "Swap places: the yellow cube goes on the cyan patch and ..."
+    needs = lexicon.NEEDS_MORE_RE.search(original)
+    if needs and strict and not lexicon.GOAL_THING_RE.search(needs.group(0).lower()):
+        raise ParseError(f"'{needs.group(0).strip()}' in \"{original[:80]}\" says the task needs something it does not name as "
+                         "cubes; say which cube goes where (e.g. \"put a green cube on top\"), or use --model")
     original = lexicon.TAKE_DOWN_RE.sub("unstack ", original)  # "Take down the tower.": an undoing (a tower had been built)
     original = lexicon.TAKE_DOWN_AFTER_RE.sub(r"unstack \1", original)
     original = lexicon.FILLER_RE.sub("", original).strip()

@@ -695,7 +695,8 @@ def with_start_cubes(scene: InitialScene) -> InitialScene:
     m = START_CUBES_RE.search(scene.goal)
     # (a patch's colour names no cube: "put both cubes on the green patch")
     if m is None or re.search(rf"(?i)\b(?:{COLOR_RE})\b(?!\s+(?:goal\s+|target\s+)?(?:patch|pad|mat|area|zone)\b)"
-                              r"|\b(?:letter|digit|number)\b|(?<![\w'])[A-Z0-9](?![\w'])", scene.goal):
+                              r"|\b(?:letter|digit|number)\b|(?-i:(?<![\w'])[A-Z0-9](?![\w']))", scene.goal):  # (a label in capitals:
+        # "in a row"'s "a" had kept the goal's own cubes, a red one made up)
         return scene
     said = re.search(r"(?i)\b(two|three|four|2|3|4|both)\b", m.group(0))
     if said and NUMBER_WORDS.get(said.group(1).lower(), int(said.group(1)) if said.group(1).isdigit() else 0) != len(cubes):
