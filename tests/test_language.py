@@ -6332,3 +6332,13 @@ def test_the_start_s_cubes_in_a_row_and_each_cube_on_its_own_patch(text, expecte
     schema = check_feasibility(parse(text))
     assert sorted(meaning(schema)) == expected
     assert uncited(schema, text) == []
+
+
+def test_a_cube_put_in_one_place_then_another_is_refused():
+    # the first place had been kept ("then to its right" dropped)
+    with pytest.raises(BadInput, match="in one place and then in another"):
+        parse("Put the black cube to the left of the white cube, then to its right.")
+    assert meaning(check_feasibility(parse("Put the red cube on the blue cube, then the green cube on the red cube."))) == [
+        "stack(blue,red,green)"]
+    assert sorted(meaning(check_feasibility(parse("Place each block on the patch of the same color")))) == [
+        "on_patch(blue,patch:blue)", "on_patch(red,patch:red)"]  # each cube's own patch, not every cube of the scene

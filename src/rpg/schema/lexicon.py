@@ -582,6 +582,13 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                r"|\bface[\s-]+down\b",
      "is a pose the domain does not have: every cube rests flat on one of its faces, upright; a task's goal says where "
      "cubes end up and, for a labelled cube, which face shows up or toward the camera"),
+    # "Put the black cube to the left of the white cube, then to its right.": one cube put in one place, then in another
+    # with no subject of its own (the first place had been kept)
+    ("time", r"\b(?:to\s+the\s+(?:left|right)\s+of|behind|in\s+front\s+of|next\s+to|beside|on(?:\s+top\s+of)?|onto|under|near|far\s+from)"
+             r"\s+the\s+[a-z]+\s+(?:cube|block)\s*,?\s*(?:and\s+)?then\s+(?:(?:move\s+|put\s+|slide\s+)?(?:it|them)\s+)?"
+             r"(?:to\s+(?:the\s+)?(?:left|right)|to\s+its\s+(?:left|right)|behind|in\s+front|next\s+to|beside|on\s+top|onto|under)\b",
+     "puts a cube in one place and then in another: a task's goal is checked once, at the end of the episode; say only "
+     "where it must end up"),
     ("time", r"\b(?:used\s+to\s+be|had\s+been|(?:was|were)\s+(?:\w+\s+)?(?:on|in|at|next|beside|behind|under|left|right|stacked|"
              r"placed|lying|sitting|standing|resting))\b|\b(?:originally|beforehand|to\s+begin\s+with|at\s+first"
              r"|in\s+the\s+beginning|in\s+the\s+(?:morning|afternoon|evening)|at\s+(?:night|noon|midnight)|tomorrow|yesterday)\b"
@@ -636,7 +643,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("quantity", rf"\b(?:put|place|move|set|bring|slide)\s+(?:every|each|all(?:\s+(?:of\s+)?the)?|all\s+other)\s+(?:other\s+|remaining\s+)?"
                  rf"(?:cubes?|blocks?)\b(?=\s+(?:to\s+the\s+(?:left|right)\s+of|next\s+to|beside|behind|in\s+front\s+of|near|far\s+from|under"
                  rf"|on\s+top\s+of|on|onto|in|into)\s+the\s+(?:(?:{'|'.join(COLORS)})\s+(?:cube|block|patch|goal\s+patch)|patch)\b"
-                 r"(?!\s+(?:of\s+(?:its|their)|that\s+match|matching|:)))",  # ("on the patch of its own colour: ...": each said)
+                 r"(?!\s+(?:of\s+(?:its|their|the\s+same|a\s+matching|matching)|that\s+match|matching|:)))",  # ("on the patch of its
+                 # own colour: ...", "on the patch of the same color": each cube's own patch)
      "asks for every cube of the scene, whose count and colours the instruction does not say: name the cubes (e.g. \"put "
      "the red and the green cube on the blue patch\")"),
     ("quantity", r"\b(?:minus|negative)\s+(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b|\bzero\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b",
