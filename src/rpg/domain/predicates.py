@@ -1267,16 +1267,17 @@ class Pyramid(Predicate):
             return self._result(False, f"a {self.dims}D pyramid with base {self.base} needs {n} cubes, got {len(objs)}",
                                 {"count": len(objs)}, {"count": n})
         origin, p = _bottom_origin(objs)
-        sites = []
-        if self.layers:
+        if self.layers:  # each layer centred over the one below
             sites = [origin + [0.0, -offset * p, k * p] for k, offset in layered_sites(self.layers)]
-        for k in range(0 if self.layers else self.base):
-            m = self.base - k
-            rows = range(m) if self.dims == 3 else range(1)
-            for r in rows:
-                for c in range(m):
-                    dx = (k / 2 + r) * p if self.dims == 3 else 0.0
-                    sites.append(origin + [dx, -(k / 2 + c) * p, k * p])
+        else:
+            sites = []
+            for k in range(self.base):
+                m = self.base - k
+                rows = range(m) if self.dims == 3 else range(1)
+                for r in rows:
+                    for c in range(m):
+                        dx = (k / 2 + r) * p if self.dims == 3 else 0.0
+                        sites.append(origin + [dx, -(k / 2 + c) * p, k * p])
         ok, worst, missing = _match_sites(objs, np.array(sites))
         table = abs(origin[2] - C.TABLE_TOP_Z - p / 2)
         ok = ok and table <= C.TABLE_Z_TOL

@@ -889,6 +889,12 @@ TAKE_DOWN_AFTER_RE = re.compile(rf"(?i)\b(?:take|tear|pull|knock|bring)\s+(the\s
 """The same with the particle after the tower ("Take the stack of blue on yellow down so ..."): "unstack <the tower>"."""
 
 
+def taken_down_as_unstack(text: str) -> str:
+    """``text`` with a tower's undoing said as taking it down (:data:`TAKE_DOWN_RE`, :data:`TAKE_DOWN_AFTER_RE`) said as
+    "unstack" ("Take the stack of blue on yellow down so ..." -> "unstack the stack of blue on yellow so ...")."""
+    return TAKE_DOWN_AFTER_RE.sub(r"unstack \1", TAKE_DOWN_RE.sub("unstack ", text))
+
+
 NEEDS_MORE_RE = re.compile(r"(?i)(?:^|(?<=[.!?;]\s))(?:it\s+|this\s+|the\s+(?:tower|stack|row|line|pyramid|wall)\s+)?(?:needs|must\s+have"
                            r"|should\s+have|requires|wants|is\s+missing|lacks)\s+(?:a|an|some|more|another|its|one)\s+[a-z]+(?:\s+[a-z]+)?\s*[.!]?(?=\s|$)")
 """A sentence that says the task needs something more ("Needs a roof.", "Must have a hat.", "The tower needs a

@@ -1116,8 +1116,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     if needs and strict and not lexicon.GOAL_THING_RE.search(needs.group(0).lower()):
         raise ParseError(f"'{needs.group(0).strip()}' in \"{original[:80]}\" says the task needs something it does not name as "
                          "cubes; say which cube goes where (e.g. \"put a green cube on top\"), or use --model")
-    original = lexicon.TAKE_DOWN_RE.sub("unstack ", original)  # "Take down the tower.": an undoing (a tower had been built)
-    original = lexicon.TAKE_DOWN_AFTER_RE.sub(r"unstack \1", original)
+    original = lexicon.taken_down_as_unstack(original)  # "Take down the tower.": an undoing (a tower had been built)
     original = lexicon.FILLER_RE.sub("", original).strip()
     original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", original)  # texting's "2" for "to"
     original = lexicon.TEXTED_YOU_RE.sub("you", original)  # "can u build ...": texting's "u"

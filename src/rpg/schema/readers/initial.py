@@ -441,8 +441,7 @@ def split(instruction: str) -> InitialScene | None:
     instruction = re.sub(r"^\s*[A-Za-z][\w\-]*(?:\s+[\w\-]+){0,3}?\s*(?:\([^)]{0,30}\))?\s*:\s*(?=\S)(?=.*\b(?:starts?|initial(?:ly)?)\b)", "",
                          instruction.strip())  # "# goal (unstack): the pink cube starts ...": its label
     instruction = lexicon.tower_ends_said(instruction)  # "red (bottom), blue, yellow (top)"
-    instruction = lexicon.TAKE_DOWN_RE.sub("unstack ", instruction)  # "take down the stack of blue on yellow so ..."
-    instruction = lexicon.TAKE_DOWN_AFTER_RE.sub(r"unstack \1", instruction)  # "take the stack of blue on yellow down"
+    instruction = lexicon.taken_down_as_unstack(instruction)  # "take (down) the stack of blue on yellow (down) so ..."
     instruction = ROBOT_STARTS_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     # "Currently the pink cube is on the orange cube. Add ...": the scene now said before a command that moves or tops its
     # top cube is the start (elsewhere "currently" stays refused: which words are the goal's?)

@@ -335,7 +335,7 @@ def _refuse_made_up_layer_cubes(f: Features, b: Builder) -> None:
                          f"{', '.join(unsaid)} cube{'s' if len(unsaid) > 1 else ''} would be made up; say each layer's cubes, "
                          "or use --model")
     for c, n in built.items():
-        said = [m for m in re.finditer(rf"\b{c}\b", f.text)]
+        said = list(re.finditer(rf"\b{c}\b", f.text))
         counted = any(re.search(rf"\b(?:\d+|{COUNT_WORD_RE}|all|every|only)\s+(?:[a-z]+\s+)?$", f.text[:m.start()])
                       or re.match(r"\s+(?:[a-z]+\s+)?(?:cubes|blocks|ones)\b", f.text[m.end():]) for m in said)
         if said and not counted and n > len(said):
