@@ -74,7 +74,7 @@ STRANGER_SETS = {
     "stranger37": ("stranger37.yaml", "STRANGER set 37 (stranger37.yaml, transfer measure of the twenty-sixth session; development material, read from the twenty-seventh session's start)"),
     "stranger38": ("stranger38.yaml", "STRANGER set 38 (stranger38.yaml, transfer measure of the twenty-seventh session; development material from the twenty-eighth)"),
     "stranger39": ("stranger39.yaml", "STRANGER set 39 (stranger39.yaml, transfer measure of the twenty-eighth session; development material from the twenty-ninth)"),
-    "stranger40": ("stranger40.yaml", "STRANGER set 40 (stranger40.yaml, transfer measure of the twenty-ninth session: aggregates only, and a helper's abstract failure classes mid-session)"),
+    "stranger40": ("stranger40.yaml", "STRANGER set 40 (stranger40.yaml, transfer measure of the twenty-ninth session; development material from the thirtieth)"),
 }
 SPLITS = HERE / "splits.yaml"
 
