@@ -1802,3 +1802,52 @@ def test_a_question_edit_is_refused_as_a_question():
 
     with pytest.raises(SteerError, match="asks a question"):
         interpret("wait, which of the two patches is closer to the robot right now?")  # (it had been read as a distance)
+
+
+@pytest.mark.parametrize("edit, expected", [
+    ("swap the two middle ones", "stack(red,yellow,orange,green)"),
+    ("the 2 middle ones swap", "stack(red,yellow,orange,green)"),
+    ("swap the 2 bottom ones", "stack(orange,red,yellow,green)"),
+    ("the green and red trade places", "stack(green,orange,yellow,red)"),
+    ("make both ends purple", "stack(purple,orange,yellow,purple)"),
+    ("the ends should be white", "stack(white,orange,yellow,white)"),
+    ("all of them pink", "stack(pink,pink,pink,pink)"),
+    ("change all orange to pink", "stack(red,pink,yellow,green)"),
+    ("top one white", "stack(red,orange,yellow,white)"),
+])
+def test_positional_swaps_ends_and_recolours_said_tersely(tmp_path, edit, expected):
+    """Steering written by strangers (steer_stranger17/18, thirtieth session): a pair named by its
+    place before the noun, two cubes that "trade places", both ends recoloured, every cube one colour
+    and a terse "top one white" had been refused (or, for "change all orange", read without its colour)."""
+    assert _steered(tmp_path, "Build a tower of four cubes: red, orange, yellow, green from bottom to top", edit) == [
+        (("modify" if "swap" in edit or "trade" in edit else "tweak"), [expected])]
+
+
+def test_the_rest_staying_a_colour_is_checked_not_applied(tmp_path):
+    """"..., the ones in between stay blue" had stopped the recolour before it; it is a check: the
+    other cubes must be that colour already, or the edit is refused."""
+    assert _steered(tmp_path, "Make a row of six blue cubes from left to right",
+                    "ok and make both ends orange, the ones in between stay blue") == [
+        ("tweak", ["line[left_to_right](orange,blue,blue,blue,blue,orange)"])]
+    with pytest.raises(SteerError, match="other cubes stay pink"):
+        _steered(tmp_path / "b", "Make a row of six blue cubes from left to right", "make the first one red, the rest stay pink")
+    with pytest.raises(SteerError, match="keep their colour"):
+        _steered(tmp_path / "c", "Make a row of six blue cubes from left to right", "add a red one on the left, the rest stay blue")
+
+
+def test_a_change_after_going_back_is_applied_to_that_version(tmp_path):
+    """"compare with the first one, but with the middle cube green", "revert that and add ...":
+    the version named, then the change (it had been refused: go back first, change next)."""
+    assert _steered(tmp_path, "Put three blue cubes in a row from left to right", "make the left one red",
+                    "compare with the first one, but with the middle cube green")[-1] == (
+        "tweak", ["line[left_to_right](blue,green,blue)"])
+    assert _steered(tmp_path / "b", "Put the yellow cube on the red patch", "move the yellow cube to the green patch",
+                    "revert that and add a blue cube on the same patch")[-1] == ("extend", ["on_patch(blue,yellow,patch:red)"])
+    assert _steered(tmp_path / "c", "Put the blue cube in the back left corner", "move it to the center",
+                    "compare with the first one, but in the front left corner")[-1] == ("modify", ["in_region(blue,front_left)"])
+
+
+@pytest.mark.parametrize("edit", ["make it one long row", "# next variant: collapse it into one long row"])
+def test_one_long_row_is_a_row_of_every_cube(tmp_path, edit):
+    """"one long row" had read "one long" as a count: a 3x1 grid of three of a 3x3 grid's nine cubes (silently wrong)."""
+    assert _steered(tmp_path, "Arrange four white cubes in a 2x2 grid", edit) == [("pivot", ["line(white,white,white,white)"])]

@@ -2890,7 +2890,50 @@ EDIT_OPENING = r"^\s*(?:(?i:nah|no|ok(?:ay)?|so|and|then|hmm|actually|now)[\s,]+
 """The words an edit may open with before what it says ("nah, other way round", "ok so instead of ...",
 "actually, left to right: ..."): they change nothing."""
 
+EDIT_REST_STAYS_RE = re.compile(
+    rf"(?i)\s*[,;]\s*(?:and\s+|but\s+|while\s+)?(?:the\s+|all\s+the\s+)?(?:rest|others|other\s+(?:ones|cubes|blocks)|ones\s+in\s+between"
+    r"|(?:ones|cubes|blocks)\s+in\s+(?:between|the\s+middle)|middle\s+ones|everything\s+else|remaining\s+(?:ones|cubes|blocks))\s+"
+    rf"(?:(?:should|must|will|can)\s+)?(?:stay|stays|remain|remains|keep|keeps|are\s+still|still)\s+(?P<c>{COLOR_RE})\s*[.!]?\s*$")
+"""A recolour's closing clause that says the other cubes keep their colour ("make both ends orange, the ones in between
+stay blue", "bottom layer cyan, rest stay orange"): checked, not applied (the steering refuses when they are not)."""
+
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
+    # "collapse it into one long row", "squash them into a tower": the task's cubes made into that structure
+    (re.compile(r"(?i)\b(?:collapse|squash|condense|fold|merge|combine|consolidate)\s+(it|them|everything|the\s+(?:whole\s+)?(?:grid|tower|stack"
+                r"|row|line|pyramid|wall|circle|ring|cubes|blocks|towers|stacks|rows|lines))\s+(?:down\s+|up\s+)?into\b"),
+     r"turn \1 into"),
+    # "swap the two middle ones", "the 2 bottom ones swap", "the two middle ones trade places": the pair by its place
+    (re.compile(r"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|and|then|level\s+\d+\s*->)\s*,?\s*)*(?:swap|switch|exchange|flip)\s+the\s+(?:two|2)\s+"
+                r"(middle|bottom|top|first|last|left|leftmost|right|rightmost|lowest|highest)(?:\s+(?:ones|cubes|blocks))?\s*[.!]?\s*$"),
+     r"swap the \1 two"),
+    (re.compile(r"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|and|then)\s*,?\s*)*the\s+(?:two|2)\s+(middle|bottom|top|first|last|left|leftmost|right"
+                r"|rightmost|lowest|highest)(?:\s+(?:ones|cubes|blocks))?\s+(?:should\s+|must\s+)?(?:swap|switch|exchange|trade)"
+                r"(?:\s+(?:places|spots|positions))?\s*[.!]?\s*$"),
+     r"swap the \1 two"),
+    # "the green and red trade places", "let red and blue switch places": the two exchanged
+    (re.compile(rf"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|and|then|let)\s*,?\s*)*(?:have\s+)?(?:the\s+)?({COLOR_RE})(?:\s+(?:one|cube|block))?\s+and\s+"
+                rf"(?:the\s+)?({COLOR_RE})(?:\s+(?:ones?|cubes?|blocks?))?\s+(?:should\s+|must\s+)?(?:swap|switch|exchange|trade)\s+"
+                r"(?:places|spots|positions)\s*[.!]?\s*$"),
+     r"swap \1 and \2"),
+    # "bottom layer cyan", "top one green": that place made that colour (terse, no verb)
+    (re.compile(rf"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|and|then)\s*,?\s*)*(?:the\s+)?(top|bottom|base|middle|first|last)"
+                rf"(\s+(?:layer|row|level|tier|one|cube|block))?\s+({COLOR_RE})(?:\s+(?:now|instead|please))*\s*[.!]?\s*$"),
+     r"make the \1\2 \3"),
+    # "make both ends orange", "the ends should be yellow": the first and the last cube that colour
+    (re.compile(rf"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|and|then)\s*,?\s*)*(?:make|paint|turn|colou?r)\s+(?:both\s+(?:the\s+)?|the\s+(?:two\s+)?)ends\s+"
+                rf"(?:of\s+(?:it|the\s+(?:tower|stack|row|line))\s+)?({COLOR_RE})\s*[.!]?\s*$"),
+     r"make the first one \1 and the last one \1"),
+    (re.compile(rf"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|and|then)\s*,?\s*)*(?:both\s+(?:the\s+)?|the\s+(?:two\s+)?)ends\s+(?:should\s+be|must\s+be|become|are)\s+"
+                rf"({COLOR_RE})\s*[.!]?\s*$"),
+     r"make the first one \1 and the last one \1"),
+    # "all of them orange", "all pink now": every cube that colour
+    (re.compile(rf"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|and|then)\s*,?\s*)*(?:all\s+of\s+them|them\s+all|all(?:\s+the)?\s+(?:cubes|blocks))\s+"
+                rf"(?:in\s+)?({COLOR_RE})(?:\s+(?:now|instead|please))*\s*[.!]?\s*$"),
+     r"make them all \1"),
+    # "change all purple to red", "turn every purple one red": each cube of that colour
+    (re.compile(rf"(?i)\b(change|turn|make|paint|recolou?r)\s+(?:all|every|each)\s+(?:of\s+)?(?:the\s+)?({COLOR_RE})(?:\s+(?:ones?|cubes?|blocks?))?"
+                rf"\s+(?:(?:to|into)\s+)?(?=(?:{COLOR_RE})\b)"),
+     r"\1 the \2 blocks to "),
     # "also put a pink cube on a blue patch, keep the yellow one where it is": what an addition keeps anyway
     (re.compile(rf"(?i)\s*[,;]\s*(?:and\s+)?(?:keep|leave)\s+(?:the\s+)?(?:(?:{COLOR_RE})\s+)?(?:one|cube|block|tower|stack|row|rest|others?"
                 r"|everything\s+else)\s+(?:where\s+(?:it|they)\s+(?:is|are)|as\s+(?:it|they)\s+(?:is|are)|in\s+place|unchanged|alone)"

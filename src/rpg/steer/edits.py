@@ -41,6 +41,7 @@ from rpg.schema.lexicon import (
     EDIT_MORE_ALONE_RE,
     EDIT_OPENING,
     EDIT_REFERS_RE,
+    EDIT_REST_STAYS_RE,
     EDIT_REWRITES,
     EDIT_SHOULD_BE_RE,
     EDIT_SWAP_BOTH_RE,
@@ -89,7 +90,7 @@ OP_INTENT = {
     "material": "modify", "ordering": "modify", "reverse": "modify", "outliers": "modify",
     "relabel": "tweak", "swap": "modify", "word": "modify", "colors": "tweak", "structure": "pivot",
     "move": "modify", "pattern": "tweak", "direction": "modify", "keep": "tweak", "region": "modify", "add_layer": "extend",
-    "arrange": "modify",
+    "arrange": "modify", "rest": "tweak",
 }
 """The intent each operation implies; an edit's intent is the strongest of its operations."""
 
@@ -135,6 +136,7 @@ class EditPlan:
     ops: list[Op] = field(default_factory=list)
     standalone: bool = False
     fresh: bool = False
+    adds: bool = False  # a clause added to a version named by the cue ("revert that and add ..."), read as an addition
 
     def parameters(self) -> dict:
         cue = {k: v for k, v in asdict(self.cue).items() if v not in (None, (), False, "") and not (k == "steps" and v == 1)}
@@ -183,7 +185,8 @@ def normalize_edit(text: str) -> str:
     t = re.sub(r"\b(\d+)\s*(?:by|\u00d7)\s*(\d+)\b", r"\1x\2", t)
     t = re.sub(rf"\b(?:the|all|both)\s+({COLOR_RE})s\b", r"the \1 blocks", t)  # "change the blues to green"
     # "one" is a count only where a count stands ("one more block", "just one"); "the orange one" is a cube
-    t = re.sub(r"\bone\b(?=\s+(?:more|fewer|less|blocks?|cubes?|layers?|rows?|levels?|tall|high|wide|long)\b)"
+    t = re.sub(r"\bone\b(?!\s+(?:tall|high|wide|long)\s+(?:rows?|lines?|towers?|stacks?|columns?|walls?|piles?)\b)"  # "one long row": a row
+               r"(?=\s+(?:more|fewer|less|blocks?|cubes?|layers?|rows?|levels?|tall|high|wide|long)\b)"
                r"|\b((?:just|only|like|use|with|to|have) )one\b(?!\s+(?:of|at|on|in)\b)", lambda m: (m.group(1) or "") + "1", t)
     for w, n in NUMBER_WORDS.items():
         if w not in ("single", "pair", "couple", "both", "one"):
@@ -657,7 +660,7 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("count", {"delta": 1}))
     elif re.search(r"\b(?:shorter|smaller|lower)\b", t) and not any(o.op in ("remove", "dims", "count") for o in ops):
         ops.append(Op("count", {"delta": -1}))
-    shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out|use|do|spell)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+|one\s+|a\s+single\s+)(?:\d+x\d+(?:x\d+)?\s+)?"
+    shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out|use|do|spell)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+|one\s+|a\s+single\s+)(?:\d+x\d+(?:x\d+)?\s+|(?:long|tall|single|straight|big)\s+)?"
                       rf"{STRUCTURE_RE}", t)
     stack_all = re.search(r"\b(?:stack|pile)\s+(?:them|all|everything|(?:all\s+)?the\s+(?:blocks|cubes))(?:\s+(?:up|instead|together"
                           r"|on top of each other|on top of one another))*(?:\W*$|\s*[,;]\s*(?=(?:the\s+)?(?:smallest|largest|biggest|lowest|highest)"
@@ -772,9 +775,23 @@ def intent_of_standalone(new: TaskSpec | None, ref: TaskSpec | None) -> str:
 def interpret(edit: str) -> EditPlan:
     """Read an edit into a plan (reference cue, operations or a whole new task).
 
+    A closing clause saying the other cubes keep their colour ("make both ends orange, the ones in
+    between stay blue": :data:`EDIT_REST_STAYS_RE`) becomes a ``rest`` operation that checks it.
+
     Raises:
-        SteerError: empty edit.
+        SteerError: empty edit; such a clause beside no recolour.
     """
+    rest = EDIT_REST_STAYS_RE.search(edit or "")
+    if rest is None:
+        return _interpret(edit)
+    plan = _interpret(edit[:rest.start()] + edit[rest.end():])
+    if plan.standalone or not plan.ops or not all(o.op in ("recolor", "relabel") for o in plan.ops):
+        raise SteerError(f"'{rest.group(0).strip(' ,;.!')}' says which cubes keep their colour, which the builtin steering reads only "
+                         "after a change of colour (e.g. \"make the top one red, the rest stay blue\"); or use --model")
+    return replace(plan, ops=[*plan.ops, Op("rest", {"color": canon_color(rest.group("c"))})])
+
+
+def _interpret(edit: str) -> EditPlan:
     if not edit or not edit.strip():
         raise SteerError("the edit is empty; say what to change, e.g. \"add a green block on top\"")
     edit = " ".join(edit.split())  # runs of blanks say nothing, and patterns with optional blanks had taken minutes on them
@@ -816,6 +833,9 @@ def interpret(edit: str) -> EditPlan:
             pass  # not a whole task after all: read it as a change
     ops = read_ops(t)
     if not ops and cue.kind != "current" and cue.phrase and (change := REF_CHANGE_RE.search(t, t.find(cue.phrase) + len(cue.phrase))):
+        then = _change_after_reference(change.group(0))
+        if then is not None:  # "revert that and add a blue cube on the same patch": that version, then the change
+            return replace(then, cue=cue)
         raise SteerError(f"'{change.group(0).strip()}' after '{cue.phrase}' asks for a change the builtin steering did not read; "
                          f"go back to it in one edit (\"{cue.phrase}\") and say the change in the next, or use --model")
     if ops or cue.kind != "current":
@@ -825,6 +845,30 @@ def interpret(edit: str) -> EditPlan:
     return EditPlan(edit, cue, standalone=not (REFERS_RE.search(t) or EDIT_ADDITIVE_RE.search(t) or EDIT_VERB_RE.search(t)
                                                or re.match(r"\s*(?:and|plus)\b", t)  # "and the blue block in the corner"
                                                or EDIT_CONTINUES_RE.match(t)))  # "then put C on A"
+
+
+def _change_after_reference(said: str) -> EditPlan | None:
+    """The change an edit asks for after naming the version it builds on ("compare with the first
+    one, but with the middle cube green", "revert that and add a blue cube on the same patch",
+    "like v1 but in the front left corner"), read as an edit of its own; None when it names no
+    version of its own, reads as a whole new task or as no change."""
+    m = re.match(r"(?:but|and)\s+(?:then\s+)?(?P<rest>.+)", said.strip())
+    if m is None:
+        return None  # "except ...", "with ...": what is kept and what is not is unsaid
+    rest = m.group("rest").strip()
+    rest = re.sub(rf"^with\s+(the\s+(?:[a-z0-9]+\s+){{0,3}}?(?:one|cube|block|layer|row))\s+(?:in\s+)?((?:{COLOR_RE}))\s*[.!]?$",
+                  r"make \1 \2", rest)  # "but with the middle cube green"
+    rest = re.sub(r"^(?:in|into|at|on)\s+(?=the\s+(?:front|back|left|right|middle|center|centre)\b)", "move it to ", rest)  # "but in the back"
+    try:
+        plan = _interpret(rest)
+    except SteerError:
+        return None
+    if plan.cue.kind != "current" or plan.standalone or plan.fresh:
+        return None
+    if plan.ops:
+        return plan
+    adds = re.match(r"(?:also\s+)?(?:add|put|place|stack|set)\b", rest)
+    return replace(plan, adds=True) if adds else None
 
 
 REFERS_RE = EDIT_REFERS_RE
@@ -1204,7 +1248,7 @@ def _fit_structure(spec: TaskSpec, target: str) -> TaskSpec:
 
 
 APPLY_ORDER = ("keep", "region", "structure", "add_layer", "material", "word", "dims", "count", "colors", "remove", "recolor", "relabel", "pattern", "add",
-               "move", "swap", "reverse", "ordering", "arrange", "direction", "outliers")
+               "move", "swap", "reverse", "ordering", "arrange", "direction", "outliers", "rest")
 """Order in which an edit's operations are applied to the spec."""
 
 
@@ -1253,9 +1297,15 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
     Raises:
         SteerError: an operation does not fit the structure (the message says what would).
     """
+    touched: set[int] = set()  # the cubes recoloured, for a "rest" op ("the rest stay blue")
     for o in sorted(ops, key=lambda o: APPLY_ORDER.index(o.op)):
         p = o.params
-        if o.op == "keep":
+        if o.op == "rest":
+            other = [it for i, it in enumerate(spec.items) if i not in touched]
+            if not other or any(it.color != p["color"] for it in other):
+                raise SteerError(f"the edit says the other cubes stay {p['color']}, but the {spec.structure}'s other cubes are "
+                                 f"{', '.join(it.phrase() for it in other) or 'none'}; say the colour of each cube to change")
+        elif o.op == "keep":
             if p["structure"] != spec.structure:
                 raise SteerError(f"the edit keeps a {p['structure']}, but the version it builds on is a {spec.structure}; "
                                  "name the version to build on (e.g. \"go back to the tower\"), or state the whole new task")
@@ -1415,6 +1465,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
                 raise SteerError(f"the task has no cube matching {p['select']}; it has "
                                  f"{', '.join(i.phrase() for i in spec.items)}")
             items = list(spec.items)
+            touched.update(idx)
             for i in idx:
                 items[i] = Item(**p["to"])
             spec = replace(spec.with_items(items), layer_colors=False if spec.layer_colors and len(idx) < len(items) else spec.layer_colors)

@@ -297,7 +297,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     if chained is not None:  # "reverse the order" of green left of red left of blue: a chain read as its order
         return chained
     if not plan.ops:
-        if plan.cue.kind != "current":  # "go back to version 1": that version as it is, named by the change from the head
+        if plan.cue.kind != "current" and not plan.adds:  # "go back to version 1": that version as it is, named by the change from the head
             return ref_schema, ref_schema.instruction, _change_from_head(fam, ref_schema)
         return _addition(plan, reference, ref_schema)
     if all(o.op == "keep" for o in plan.ops) and EDIT_KEEP_THEN_ADD_RE.search(plan.text):
