@@ -6342,3 +6342,15 @@ def test_a_cube_put_in_one_place_then_another_is_refused():
         "stack(blue,red,green)"]
     assert sorted(meaning(check_feasibility(parse("Place each block on the patch of the same color")))) == [
         "on_patch(blue,patch:blue)", "on_patch(red,patch:red)"]  # each cube's own patch, not every cube of the scene
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Put the letter cubes B, A and T in a row, any order", ["line(A,B,T)"]),
+    ("Line up the digit cubes 4, 1 and 7 in any order", ["line(1,4,7)"]),
+])
+def test_labelled_cubes_in_a_row_in_any_order_are_unordered(text, expected):
+    """Labelled cubes listed "in any order" had been held to the listed order from either end (the
+    middle cube fixed: stricter than the words)."""
+    from rpg.schema.meaning import meaning
+
+    assert sorted(meaning(parse(text))) == expected

@@ -1553,12 +1553,12 @@ def test_second_attack_steering(tmp_path, base, edits, expected):
 
 
 def test_a_structure_with_a_role_is_not_read_as_a_recolour(tmp_path):
-    """"make it a tower with red on top" of a tower in any order had turned every cube red."""
-    from rpg.errors import BadInput
-
-    fam = Family(create_family(compile_instruction("Make a tower of red, green and blue in any order", tmp_path, name="fam").path).path)
-    with pytest.raises(BadInput):
-        steer(fam.path, "make it a tower with red on top")
+    """"make it a tower with red on top" of a tower in any order had turned every cube red (then it
+    was refused); it is the same cubes with red on top, the rest in any order: a Modify."""
+    assert _steered(tmp_path, "Make a tower of red, green and blue in any order", "make it a tower with red on top") == [
+        ("modify", ["stack(green,blue,red)"])]
+    fam = Family(tmp_path / "fam")
+    assert "red on top, the rest in any order" in fam.schema(1).goal_summary
 
 
 @pytest.mark.parametrize("base,edits,expected", [
@@ -1571,7 +1571,6 @@ def test_steer_stranger16_undo_twice(tmp_path, base, edits, expected):
 
 
 @pytest.mark.parametrize("base,edit", [
-    ("Make a row of white, gray and black cubes from front to back", "turn it into a tower, white at the bottom"),  # (all white)
     ("Stack yellow on orange on red", "3 towers like that"),  # (three towers of made-up colours)
     ("Stack the yellow cube on the purple cube and put the orange cube on the green patch", "tower in the back instead"),
 ])
@@ -1726,8 +1725,6 @@ def test_steer_stranger18_classes(tmp_path, base, edits, expected):
     # silent errors of steer_stranger18's first run, refused now
     ("Put a green cube on a yellow cube and a pink cube next to the yellow cube", ["put the pink one on the red patch instead"],
      "'instead' replaces"),  # (the old relation had been kept)
-    ("Put the pink cube between the two purple cubes", ["put the whole thing into a tower, pink in the middle"],
-     "'pink' has no place"),  # (pink had gone to the bottom)
     ("Place a cyan cube on the yellow patch", ["add a green cube on top of the cyan one",
                                                "the cube you added before that should be brown"], "before the last"),
     ("Place a cyan cube on the yellow patch", ["the cube you added should be brown"], "is the base task"),
@@ -1851,3 +1848,30 @@ def test_a_change_after_going_back_is_applied_to_that_version(tmp_path):
 def test_one_long_row_is_a_row_of_every_cube(tmp_path, edit):
     """"one long row" had read "one long" as a count: a 3x1 grid of three of a 3x3 grid's nine cubes (silently wrong)."""
     assert _steered(tmp_path, "Arrange four white cubes in a 2x2 grid", edit) == [("pivot", ["line(white,white,white,white)"])]
+
+
+@pytest.mark.parametrize("base, edit, expected", [
+    ("Put the pink cube between the two black cubes", "put the whole thing into a tower, pink in the middle", ["stack(black,pink,black)"]),
+    ("Make a pyramid of three pink cubes", "now tower, yellow on top", None),
+    ("Stack the letter cubes B, A and T, B at the bottom and T on top", "keep the letters, row instead, reading BAT",
+     ["line[left_to_right](B,A,T)", "reads(B,A,T;direction=left_to_right,face=up,text=BAT)"]),
+    ("Stack the letter cubes B, A and T, B at the bottom and T on top", "make it a row", ["line(A,B,T)"]),
+    # (these two had been refused: the roles unread; the first once with made-up cubes, all white)
+    ("Make a row of white, gray and black cubes from front to back", "turn it into a tower, white at the bottom",
+     ["stack(white,gray,black)"]),
+    ("Put the pink cube between the two purple cubes", "put the whole thing into a tower, pink in the middle", ["stack(purple,pink,purple)"]),
+])
+def test_a_pivot_reads_the_roles_it_gives_the_task_cubes(tmp_path, base, edit, expected):
+    """A pivot with roles ("into a tower, pink in the middle", "row instead, reading BAT") is the
+    task's own cubes in the new structure, the roles read by the parser; "make it a row" of a letter
+    tower keeps its letters (three made-up letters A, B, C had replaced B, A, T, silently)."""
+    steps = [edit] if expected is not None else ["make the top one yellow", edit]
+    got = _steered(tmp_path, base, *steps)[-1]
+    assert got == ("pivot", expected or ["stack(pink,pink,yellow)"])
+
+
+def test_a_pivot_of_one_of_two_structures_is_not_read_as_all_cubes(tmp_path):
+    """"turn the red row into a pyramid" of a green row and a red row had become one pyramid of all
+    six cubes (silently wrong); it is refused."""
+    with pytest.raises(SteerError):
+        _steered(tmp_path, "Make a row of three green cubes and a row of three red cubes", "turn the red row into a pyramid")

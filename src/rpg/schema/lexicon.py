@@ -2902,6 +2902,11 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(r"(?i)\b(?:collapse|squash|condense|fold|merge|combine|consolidate)\s+(it|them|everything|the\s+(?:whole\s+)?(?:grid|tower|stack"
                 r"|row|line|pyramid|wall|circle|ring|cubes|blocks|towers|stacks|rows|lines))\s+(?:down\s+|up\s+)?into\b"),
      r"turn \1 into"),
+    # "now tower, yellow on top", "keep the letters, row instead, reading BAT", "stack it instead, D at the bottom": the
+    # task's cubes made into that structure (the roles after it are read with them)
+    (re.compile(r"(?i)^\s*(?:(?:now|then|ok(?:ay)?|so)\s*,?\s*)+(tower|stack|row|line|pyramid|circle|ring)\s*(?=,)"), r"make it a \1"),
+    (re.compile(r"(?i)(?<=,)\s*(tower|stack|row|line|pyramid|circle|ring)\s+instead\s*(?=,)"), r" make it a \1 instead"),
+    (re.compile(r"(?i)^\s*(?:(?:now|then|ok(?:ay)?|so)\s*,?\s*)*(?:stack|pile)\s+(?:it|them)(?:\s+up)?\s+instead\s*(?=,)"), r"make it a tower instead"),
     # "swap the two middle ones", "the 2 bottom ones swap", "the two middle ones trade places": the pair by its place
     (re.compile(r"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|and|then|level\s+\d+\s*->)\s*,?\s*)*(?:swap|switch|exchange|flip)\s+the\s+(?:two|2)\s+"
                 r"(middle|bottom|top|first|last|left|leftmost|right|rightmost|lowest|highest)(?:\s+(?:ones|cubes|blocks))?\s*[.!]?\s*$"),

@@ -313,6 +313,10 @@ class Line(StructureKind):
             where = " from front to back" if spec.axis == "x" else ""
             if spec.material == "colors":
                 return f"Align {n} blocks in a single straight line{where}: {', '.join(spec.colors())}"
+            labels = [i.label for i in spec.items]
+            if spec.direction is None and not where and n >= 2 and all(labels):  # the cubes named, none given a place
+                what = "letter" if spec.material == "letters" else "digit"  # (they had been made up: "3 letter blocks")
+                return f"Put the {what} cubes {', '.join(labels[:-1])} and {labels[-1]} in a row, in any order"
             return f"Align {n} {material_phrase(spec)} in a single straight line{where}"
         d = "from " + spec.direction.replace("_", " ")
         word = "".join(i.label or "" for i in spec.items)

@@ -249,6 +249,53 @@ def _refuse_addition_that_drops(plan: EditPlan, fam: Family, reference: int | No
                          "or use --model")
 
 
+_STRUCTURE_NOUN = {"tower": "tower", "line": "row", "pyramid": "pyramid", "circle": "circle", "grid": "grid"}
+"""The noun a structure op's kind is said with when the steering states a pivot as a whole task."""
+
+
+def _pivot_with_roles(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str, str] | None:
+    """The task's own cubes made into the structure an edit names, with the roles it gives them ("put
+    the whole thing into a tower, pink in the middle", "keep the letters, row instead, reading BAT",
+    "now tower, yellow on top"): stated as a whole task ("Build a tower of the black, pink and black
+    cubes, pink in the middle") and read by the parser.  None when the edit is no such pivot, the task
+    has patches or cubes of both kinds, or the reading's cubes are not exactly the task's.
+    """
+    pivots = [o for o in plan.ops if o.op == "structure" and o.params.get("to") in _STRUCTURE_NOUN and not o.params.get("dims")]
+    if len(pivots) != 1 or any(o.op not in ("structure", "keep", "material") for o in plan.ops) \
+            or any(a.kind == "goal_patch" for a in ref.assets):
+        return None
+    cubes = [a for a in ref.assets if a.kind != "goal_patch"]
+    text = re.sub(r"^\s*#\s*", "", plan.text)
+    nouns = list(re.finditer(rf"(?i)\b{STRUCTURE_RE}", text))
+    if len(nouns) != 1 or not cubes:
+        return None  # ("turn the red row into a pyramid": which structure's cubes is the edit's own choice)
+    noun = nouns[0]
+    roles = text[noun.end():]
+    roles = roles[roles.index(":") + 1:] if ":" in roles else re.sub(r"(?i)^\s*(?:instead|now|please|then)\b", "", roles)
+    roles = roles.strip(" ,;.!")
+    if not (re.search(rf"(?i)\b(?:{COLOR_RE})\b|\breading\b|\bspell", roles) or re.search(r"\b[A-Z0-9]\b", roles)) \
+            or not re.match(r"[\w']", roles):
+        return None
+    if all(a.kind == "colored_cube" for a in cubes):
+        names = [a.color for a in cubes]
+        listed = f"the {', '.join(names[:-1])} and {names[-1]} cubes" if len(names) > 1 else f"the {names[0]} cube"
+    elif all(a.label for a in cubes) and len({a.kind for a in cubes}) == 1:
+        names = [a.label for a in cubes]
+        kind = "digit" if names[0].isdigit() else "letter"
+        listed = f"the {kind} cubes {', '.join(names[:-1])} and {names[-1]}"
+    else:
+        return None
+    instruction = f"Build a {_STRUCTURE_NOUN[pivots[0].params['to']]} of {listed}, {roles}"
+    try:
+        schema = parse(instruction)
+    except BadInput:
+        return None
+    if sorted(a.color or a.label for a in schema.assets if a.kind != "goal_patch") != sorted(names):
+        return None  # cubes made up or lost ("the red-yellow pair on top" read as two more cubes)
+    before = extract(ref)
+    return schema, instruction, "modify" if before is not None and before.structure == pivots[0].params["to"] else "pivot"
+
+
 def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[TaskSchema, str, str]:
     """The new version's schema, its canonical instruction and the intent.
 
@@ -332,7 +379,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
             o.op in ("structure", "count", "dims", "recolor", "keep") for o in plan.ops):
         # "put them in a tower instead": the task's cubes, in no order, as the structure named
         unread = [c for c in unread_colors(plan) if not any(o.op == "recolor" for o in plan.ops)]
-        if unread:  # "put the whole thing into a tower, pink in the middle": the role had been dropped
+        if unread and (roled := _pivot_with_roles(plan, ref_schema)) is not None:
+            return roled  # "put the whole thing into a tower, pink in the middle": the roles read with the cubes
+        if unread:  # (the role had been dropped)
             raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": {', '.join(repr(c) for c in unread)} has no place "
                              "in the change read (the task's cubes as the structure named, in no order); say the order "
                              "(e.g. \"from bottom to top: red, green, blue\"), or use --model")
@@ -374,6 +423,10 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         numbers = [n for n in numbers if int(n) != made]
     unread = [c for c in unread_colors(plan)  # "make that seven pink cubes" of a pink row: its own colour, not a change
               if not (set(ref_spec.colors()) == {c} and all(o.op == "count" for o in plan.ops))] + numbers
+    if (unread or re.search(r"(?i)\b(?:reading|reads?|spell(?:s|ing)?)\b", plan.text)) and \
+            (roled := _pivot_with_roles(plan, ref_schema)) is not None:
+        return roled  # "turn it into a single tower, same cubes: the reds at the bottom, ...", "row instead, reading BAT": the
+        # roles read with the cubes (the word had been dropped)
     if unread:
         raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": {', '.join(repr(c) for c in unread)} has no place in the "
                          f"change read ({', '.join(o.op for o in plan.ops)}); say it in a separate edit, or use --model")

@@ -973,6 +973,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         said_as_word = bool(reads or READ_WORDS_RE.search(f.text))
         if direction_stated(f) or said_as_word or order or by_ends:
             b.preds.append(InLine(tuple(names), axis=line_axis(direction), order=direction))
+        elif re.search(r"\bin any order\b", f.text):  # "the letter cubes B, A and T in a row, any order": which cubes, not where
+            b.preds.append(InLine(tuple(names), axis=None, order=None))
         else:  # "put the A and the B in a line": the listed order from either end, no reading direction said
             b.preds.append(InLine(tuple(names), axis=None, order="sequence"))
         if said_as_word:  # the labels read as a word: their faces up (not said otherwise)
