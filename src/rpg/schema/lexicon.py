@@ -1484,7 +1484,7 @@ FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\s*[,;.]?\s*\b(?:the\s+)?exact\s+order(?:\s+(?:around|along|in)\s+the\s+(?:circle|ring|row|line|tower|stack))?\s+"
                 r"(?:is\s+not\s+important|is\s+unimportant|does\s+not\s+matter|doesn't\s+matter)\b"), " in any order"),
     # ("Stack the red and the yellow cube; which one goes at the bottom isn't important")
-    (re.compile(r"\s*[,;\u2013\u2014-]\s*which\s+(?:one\s+|cube\s+|block\s+)?goes\s+(?:where|at\s+the\s+(?:bottom|top)|on\s+(?:the\s+)?(?:top|bottom)"
+    (re.compile(r"\s*[,;\u2013\u2014-]\s*which\s+(?:one\s+|cube\s+|block\s+)?(?:goes|is|sits|ends\s+up|stands|lies)\s+(?:where|at\s+the\s+(?:bottom|top)|on\s+(?:the\s+)?(?:top|bottom)"
                 r"|first|underneath|below)\s+(?:is\s+(?:your|the\s+robot's)\s+(?:call|choice)|is\s+up\s+to\s+you"
                 r"|does\s+not\s+matter|doesn't\s+matter|is\s*n[o']?t\s+important|isn't\s+important|is\s+not\s+important|is\s+unimportant)\b"
                 r"(?=\s*(?:[.!;]|$))"),  # (", ..., but yellow": the order said after all, left to the readers)
@@ -3809,7 +3809,7 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\b(?:and\s+)?(?:finish|end)\s+(?:off\s+|up\s+)?by\s+(plac|putt|sett|stack|add|lay)ing\b"),
      lambda m: "then " + {"plac": "place", "putt": "put", "sett": "set"}.get(m.group(1), m.group(1))),
     # "put digit 7 on top of digit 2": a label cube named without its article
-    (re.compile(r"(?<![\w'])(?<!the\s)(?<!a\s)(?<!each\s)(?<!every\s)(?<!any\s)\b(digit|number|letter)\s+(?=(?:\d|[A-Z])\b(?!\s*(?:,|to\b|-)))"),
+    (re.compile(r"(?<![\w'])(?<!the\s)(?<!a\s)(?<!each\s)(?<!every\s)(?<!any\s)\b(digit|number|letter)\s+(?=(?:\d|[A-Z])\b(?!\s*(?:,|to\b|-))|(?:\d|[A-Z])\s*,\s*(?:and\s+)?(?:digit|number|letter)\s+(?:\d|[A-Z])\b)"),
      r"the \1 "),
     # "the cube the blue on the cube the red": a colour after its noun and an article (Italian, Arabic)
     (re.compile(rf"\bthe\s+(cubes?|blocks?|box(?:es)?|patch(?:es)?)\s+the\s+({COLOR_RE})\b"
@@ -4143,7 +4143,7 @@ any colour."""
 
 
 _AXIS_END_MARKS = {
-    "front": r"(?:(?:near(?:est)?|clos(?:e|er|est))(?:\s+to)?\s+(?:the\s+|your\s+)?robot|at\s+the\s+(?:very\s+)?front|in\s+front)",
+    "front": r"(?:(?:near(?:est)?|clos(?:e|er|est))(?:(?:\s+to)?\s+(?:the\s+|your\s+)?robot)?|at\s+the\s+(?:very\s+)?front|in\s+front)",
     "back": r"(?:far(?:\s+away)?(?:\s+from\s+(?:the\s+|your\s+)?robot)?|at\s+the\s+(?:very\s+)?back|in\s+the\s+back)",
 }
 """Words that mark a cube as the one at the front or the back end of a list ("blue nearest the robot", "red farthest away";
@@ -4171,6 +4171,11 @@ LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 r"|\b((?:the\s+)?front\s+(?:edge|side|half|end|part|row)(?:\s+of\s+the\s+(?:table|workspace))?)\s*,\s*(?:near(?:est)?|clos(?:e|est))"
                 r"(?:\s+to)?\s+(?:the\s+|your\s+)?robot\b"),
      lambda m: m.group(1) or m.group(2)),
+    # "near the robot, at the front edge of the table": the same, the robot's words first
+    (re.compile(r"\b(?:(?:near(?:est)?|clos(?:e|est))(?:\s+to)?|next\s+to)\s+(?:the\s+|your\s+)?robot\s*,\s*(?=(?:at|on|along|to|in)\s+(?:the\s+)?"
+                r"front\s+(?:edge|side|half|end|part|row)\b)"
+                r"|\b(?:far(?:thest)?\s+(?:away\s+)?|away\s+)from\s+(?:the\s+|your\s+)?robot\s*,\s*(?=(?:at|on|along|to|in)\s+(?:the\s+)?"
+                r"back\s+(?:edge|side|half|end|part|row)\b)"), ""),
     # "from front to back: blue nearest the robot, then yellow, then red farthest away": the ends' marks said again
     (re.compile(r"\bfrom\s+(?P<a>front|back)\s+to\s+(?P<b>front|back)\s*:\s*(?P<list>[^.;:]*?)(?=\s*(?:[.;!]|$))"),
      _axis_ends),
@@ -4392,9 +4397,10 @@ WALL_ROW_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 rf"(?:is|are|of|has|:|=)\s*(?:made\s+of\s+)?(?P<n>\d+|{COUNT_WORD_RE})\s+(?P<c>{COLOR_RE})(?:\s+(?:cubes|blocks))?\b"),
      lambda m: f"{NUMBER_WORDS.get(m.group('n'), m.group('n'))} {m.group('c')} cubes "
      + ("on the bottom" if m.group("where") in ("bottom", "lower") else "on top")),
-    # "a wall of three green blocks with three orange blocks on top of them": two courses, the first at the bottom (read
-    # as a wall 2 wide and 2 high)
-    (re.compile(rf"\bwall\s+of\s+(?P<n>\d+|{COUNT_WORD_RE})\s+(?P<c>{COLOR_RE})\s+(?:cubes|blocks)\s*,?\s+(?:with|and)\s+(?P<n2>\d+|{COUNT_WORD_RE})\s+"
+    # "a wall of three green blocks (in one layer) with three orange blocks on top of them": two courses, the first at the
+    # bottom (read as a wall 2 wide and 2 high)
+    (re.compile(rf"\bwall\s+of\s+(?P<n>\d+|{COUNT_WORD_RE})\s+(?P<c>{COLOR_RE})\s+(?:cubes|blocks)(?:\s+(?:in|as)\s+(?:one|1|a|a\s+single)\s+"
+                rf"(?:layer|row|course|level|line|tier))?\s*,?\s+(?:with|and)\s+(?P<n2>\d+|{COUNT_WORD_RE})\s+"
                 rf"(?P<c2>{COLOR_RE})\s+(?:cubes|blocks)\s+(?:on\s+top(?:\s+of\s+(?:them|those|it))?|above\s+(?:them|those))\b"),
      lambda m: f"wall with {NUMBER_WORDS.get(m.group('n'), m.group('n'))} {m.group('c')} cubes on the bottom and "
                f"{NUMBER_WORDS.get(m.group('n2'), m.group('n2'))} {m.group('c2')} cubes on top"),
@@ -4434,8 +4440,8 @@ LABEL_NOUN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\b([Tt]he|[Aa]n?)\s+(block|cube)\s+(?:with|bearing|showing|that\s+(?:has|shows))\s+(?:the\s+|an?\s+)?"
                 r"(?:(?:letter|digit|number)\s+)?'?([A-Z]|\d)'?(?:\s+on\s+it)?\b(?!'|\s*(?:[x\u00d7+\-=*]|\w+\s+(?:blocks?|cubes?)\b))"),
      lambda m: f"{m.group(1)} {'letter' if m.group(3).isalpha() else 'digit'} {m.group(3)} {m.group(2)}"),
-    # "block 4", "cube labelled B": a label after its cube's noun ("I" as a pronoun stays)
-    (re.compile(r"\b(block|cube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))"
+    # "block 4", "cube labelled B", "digit cube 3": a label after its cube's noun ("I" as a pronoun stays)
+    (re.compile(r"\b(?:(?:[Ll]etter|[Dd]igit|[Nn]umber)\s+)?(block|cube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))"
                 r"(?<!\bI(?='[a-z]|\s+(?:[a-z]+ed|[a-z]+ing|am|have|had|want|need|would|will|just|think|said|mean|like|told|see|saw|look|can)\b))"),
      lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1)}"),
     # "the letter cubes A and B next to each other": the one next to the other (two coloured cubes had been made)
@@ -4454,6 +4460,9 @@ LABEL_ARTICLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 """A label between an article and a cube's noun ("the A block", "the 3 cube"): a letter or digit cube."""
 
 TOWER_BETWEEN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "the cyan cube is sandwiched between them", "with the blue one squeezed in the middle": the middle said plainly
+    (re.compile(r"\b(?:wedged|squeezed|sandwiched|tucked|nestled)\s+(?=(?:in\s+)?between\s+(?:them|those\s+two|the\s+two)\b"
+                r"|in\s+the\s+middle\b)"), ""),
     (re.compile(r"\b(?:goes\s+|is\s+|sits\s+|stands\s+)?(?:(?:wedged|squeezed|sandwiched|tucked|nestled)\s+)?in\s+between\b"
                 r"(?!\s+(?:the|them|those|these|of|a|an|it|each)\b)"),
      "in the middle"),  # ("yellow wedged in between")

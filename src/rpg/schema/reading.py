@@ -2446,8 +2446,12 @@ def _table_side(m: re.Match) -> bool:
     return (_side_part_ok(m) and m.group(0).split()[0] in ("on", "to", "at", "in")
             and (m.group("lr") or m.group("lr2")) not in ("middle", "center", "centre")  # a role or the centre: above
             and re.fullmatch(r"\s*[.!]?\s*", m.string[m.end():]) is not None
-            and _RELATIVE_RE.search(m.string[:m.start()]) is None
+            and _RELATIVE_RE.search(_COLOUR_LIST_COMMA_RE.sub(r"\1 ", m.string[:m.start()])) is None  # (a list's commas: no clause)
             and not names_a_role(m.string[:m.start()], m.string))  # "line up yellow and blue with blue on the left"
+
+
+_COLOUR_LIST_COMMA_RE = re.compile(rf"\b(?<![\w-])((?:{COLOR_RE}))\s*,\s*(?=(?:the\s+)?(?:{COLOR_RE})\b)")
+"""A comma between two colours of a list ("the orange, cyan and white cubes"): no second clause a bare side could belong to."""
 
 
 _CLAUSE_SIDE_BEFORE = re.compile(rf"(?:^|[.;:]\s*|\b(?:and|then)\s+)(?:(?:put|place|set|move|leave|keep)\s+)?(?:the\s+|a\s+|an\s+)?"
