@@ -704,10 +704,8 @@ def test_edit_instructions_state_exactly_what_was_asked(base, edit, expected):
     ("Build a tower of red, green and blue blocks", "make it 2 towers", "names no change"),
     ("Align 3 blocks in a single straight line: red, green, blue", "add a yellow block at the right end", "gives no cube a place"),
     ("Align 3 blocks in a single straight line: red, green, blue", "reverse it", "no order"),
-    # a pivot that would change how many cubes there are, a swap of unequal sets, a colour left unread
+    # a pivot that would change how many cubes there are, a colour left unread
     ("Place 5 blocks in a circle", "make it a square instead", "not made of 5 cubes"),
-    ("Build a pyramid with 3 red blocks at the bottom, 2 green in the middle and 1 blue on top",
-     "swap the colours of the top and bottom layers", "cannot swap"),
 ])
 def test_edits_not_applied_exactly_are_refused_before_compiling(base, edit, needle):
     from rpg.steer.steering import plan_schema
@@ -1875,3 +1873,38 @@ def test_a_pivot_of_one_of_two_structures_is_not_read_as_all_cubes(tmp_path):
     six cubes (silently wrong); it is refused."""
     with pytest.raises(SteerError):
         _steered(tmp_path, "Make a row of three green cubes and a row of three red cubes", "turn the red row into a pyramid")
+
+
+@pytest.mark.parametrize("base, edits, expected", [
+    ("Spell CAT with letter cubes from left to right", ["v2: CART"],
+     ("extend", ["line[left_to_right](C,A,R,T)", "reads(C,A,R,T;direction=left_to_right,face=up,text=CART)"])),
+    ("Spell BED with letter cubes from left to right", ["reverse the letters", "jk put it back, and add an S at the end"],
+     ("extend", ["line[left_to_right](B,E,D,S)", "reads(B,E,D,S;direction=left_to_right,face=up,text=BEDS)"])),
+    ("Spell DOG with letter cubes, left to right", ["change G to T", "T go to first"],
+     ("modify", ["line[left_to_right](T,D,O)", "reads(T,D,O;direction=left_to_right,face=up,text=TDO)"])),
+    ("Stack green on orange", ["make it 3 tall with a pink one on top"], ("extend", ["stack(orange,green,pink)"])),
+    ("Stack two green cubes", ["make it three", "v3: four, and the top one orange"], ("tweak", ["stack(green,green,green,orange)"])),
+    ("Make a row of red, yellow and blue cubes from left to right", ["all row to back side"],
+     ("modify", ["line[left_to_right](red,yellow,blue)@back"])),
+    ("Put the green cube next to the pink cube", ["add brown also close to green"], ("extend", ["next_to(brown,green)", "next_to(green,pink)"])),
+    ("Build a tower with a blue cube on the bottom, then cyan, then white", ["cyan take out"], ("tweak", ["stack(blue,white)"])),
+    ("Build a pyramid with three green cubes at the bottom, two white cubes in the middle and a black cube on top",
+     ["swap the green and the white layers"], ("modify", ["pyramid(white,white,white|green,green|black)"])),
+    # the colours of two layers of different sizes exchanged (it had been refused as a swap of unequal sets)
+    ("Build a pyramid with 3 red blocks at the bottom, 2 green in the middle and 1 blue on top",
+     ["swap the colours of the top and bottom layers"], ("modify", ["pyramid(blue,blue,blue|green,green|red)"])),
+    ("Build a pyramid with three green cubes at the bottom, two white cubes in the middle and a black cube on top",
+     ["swap the green and the white layers", "undo the swap"], ("tweak", ["pyramid(green,green,green|white,white|black)"])),
+    ("Stack a blue cube on top of a yellow cube on the orange patch", ["swap the two cube colours"],
+     ("modify", ["on_patch(blue,patch:orange)", "stack(blue,yellow)"])),
+])
+def test_terse_edits_of_steer_stranger17_and_18(tmp_path, base, edits, expected):
+    """Edits written by strangers that had been refused (or, "undo the swap", read as no change;
+    "jk put it back, and add an S", read as an addition to the reversed word: silently wrong)."""
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+def test_a_bare_command_in_capitals_is_no_word_to_spell(tmp_path):
+    """"UNDO" is the command, not a word for the cubes to spell."""
+    assert _steered(tmp_path, "Spell SUN using letter cubes from left to right", "make it spell RUN", "UNDO")[-1] == (
+        "modify", ["line[left_to_right](S,U,N)", "reads(S,U,N;direction=left_to_right,face=up,text=SUN)"])

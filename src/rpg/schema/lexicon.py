@@ -2907,6 +2907,31 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(r"(?i)^\s*(?:(?:now|then|ok(?:ay)?|so)\s*,?\s*)+(tower|stack|row|line|pyramid|circle|ring)\s*(?=,)"), r"make it a \1"),
     (re.compile(r"(?i)(?<=,)\s*(tower|stack|row|line|pyramid|circle|ring)\s+instead\s*(?=,)"), r" make it a \1 instead"),
     (re.compile(r"(?i)^\s*(?:(?:now|then|ok(?:ay)?|so)\s*,?\s*)*(?:stack|pile)\s+(?:it|them)(?:\s+up)?\s+instead\s*(?=,)"), r"make it a tower instead"),
+    # "make it 3 tall with a pink one on top": the cube added there (the count said again, checked)
+    (re.compile(rf"(?i)\b(tall|high|long)\s+with\s+(an?\s+(?:{COLOR_RE})\s+(?:one|cube|block))\s+(on\s+top|at\s+the\s+(?:top|bottom|end|start))\b"),
+     r"\1, put \2 \3"),
+    # "four, and the top one orange": that count, and the change after it
+    (re.compile(rf"(?i)^\s*(?:(?:now|ok(?:ay)?|then)\s*,?\s*)*(\d+|{COUNT_WORD_RE})\s*,\s*(?=and\s+)"), r"make it \1, "),
+    # "all row to back side": the whole structure moved to that side
+    (re.compile(r"(?i)^\s*(?:move\s+|put\s+)?all\s+(row|tower|stack|line|pyramid|wall|grid|circle)\s+(?:to|in|on)\s+(?:the\s+)?"
+                r"(back|front|left|right)(?:\s+(side|half|edge))?\s*[.!]?\s*$"),
+     lambda m: f"move the whole {m.group(1)} to the {m.group(2)} {m.group(3) or 'side'}"),
+    # "add brown also close to green": a cube of that colour added there
+    (re.compile(rf"(?i)\badd\s+({COLOR_RE})\s+(?:also\s+)?(?=(?:close\s+to|next\s+to|near|beside|behind|in\s+front\s+of|on\s+top\s+of|on|to\s+the)\b)"),
+     r"add a \1 cube "),
+    # "cyan take out": that cube removed
+    (re.compile(rf"(?i)^\s*(?:the\s+)?({COLOR_RE})(?:\s+(?:one|cube|block))?\s+(?:take\s+out|take\s+away|take\s+off|remove|out|away)\s*"
+                r"(?:please|pls)?\s*[.!]?\s*$"), r"remove the \1 one"),
+    # "jk put it back, and add an S at the end": the change before undone (then the rest applied to it)
+    (re.compile(r"(?i)^\s*(?:(?:jk|j/k|just\s+kidding|kidding|no|nah|oops|hmm+|actually|wait)\s*[,.!]?\s*)*(?:please\s+)?(?:put|change|set|turn|switch)\s+"
+                r"it\s+back(?:\s+(?:the\s+way\s+it\s+was|to\s+(?:how|what)\s+it\s+was|again))?(?=\s*(?:[,;.!]|$|\band\b))"), "undo"),
+    # "swap the two cube colours": the colours exchanged; "all three the same colour: cyan": every cube that colour
+    (re.compile(r"(?i)\b(swap|switch|exchange|flip)\s+the\s+(?:two|2)\s+(?:cube\s+|block\s+)?(colou?rs)\b"), r"\1 the \2"),
+    (re.compile(rf"(?i)^\s*(?:(?:now|ok(?:ay)?|then)\s*,?\s*)*(?:make\s+)?(?:all\s+(?:\d+|{COUNT_WORD_RE}|of\s+them)|them\s+all|both)\s+"
+                rf"(?:(?:the\s+)?same\s+colou?r|one\s+colou?r)\s*[:,-]?\s*({COLOR_RE})\s*[.!]?\s*$"), r"make them all \1"),
+    # "undo the swap", "revert that change": the last change taken back (a version had been searched for "swap")
+    (re.compile(r"(?i)\b(undo|revert)\s+(?:the|that|this|my|your)\s+(?:last\s+)?(?:swap|change|edit|recolou?r\w*|move|addition|reversal|flip|step"
+                r"|rotation|pivot|tweak)\b"), r"\1"),
     # "swap the two middle ones", "the 2 bottom ones swap", "the two middle ones trade places": the pair by its place
     (re.compile(r"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|and|then|level\s+\d+\s*->)\s*,?\s*)*(?:swap|switch|exchange|flip)\s+the\s+(?:two|2)\s+"
                 r"(middle|bottom|top|first|last|left|leftmost|right|rightmost|lowest|highest)(?:\s+(?:ones|cubes|blocks))?\s*[.!]?\s*$"),
@@ -3063,10 +3088,15 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "now FUN" (the word spelled), "put it in corner, front right" (that corner), "the row should be in the back of the
     # table" (the structure moved there)
     (re.compile(r"(?i)\bmore\s+(one|\d+)\b(?!\s+(?:than|of)\b)"), r"\1 more"),
-    (re.compile(rf"(?i)^\s*(?:the\s+)?({COLOR_RE})(?:\s+(?:one|cube|block))?\s+(?:go|goes|should\s+go|must\s+go|to)\s+(?:to\s+)?(?:the\s+)?"
+    (re.compile(rf"(?i)^\s*(?:the\s+)?({COLOR_RE}|(?:(?:letter|digit|number)\s+)?(?-i:[A-Z])|(?:(?:digit|number)\s+)?\d)(?:\s+(?:one|cube|block))?\s+"
+                r"(?:go|goes|should\s+go|must\s+go|to)\s+(?:to\s+)?(?:the\s+)?"
                 r"(end|last|start|beginning|first)(?:\s+place)?\s*(?:please|pls|plz)?\s*[.!]?\s*$"),
-     lambda m: f"move the {m.group(1)} one to the {'end' if m.group(2).lower() in ('end', 'last') else 'start'}"),
-    (re.compile(rf"^\s*(?:(?:now|then|and\s+now|ok(?:ay)?\s+now)\s*,?\s*)'?(?!(?i:{COLOR_RE})\b)([A-Z]{{2,}})'?\s*[.!]?\s*$"),
+     lambda m: ("move the " + (f"{m.group(1)} one" if re.fullmatch(COLOR_RE, m.group(1), re.I) else
+                               f"{'digit' if m.group(1)[-1].isdigit() else 'letter'} {m.group(1).split()[-1]} cube")
+                + f" to the {'end' if m.group(2).lower() in ('end', 'last') else 'start'}")),
+    # "now FUN", "v2: CART" (the label already gone): the word spelled (not a command said in capitals: "UNDO")
+    (re.compile(rf"^\s*(?:(?:now|then|and\s+now|ok(?:ay)?\s+now)\s*,?\s*)?'?(?!(?i:{COLOR_RE})\b)(?!(?:UNDO|REDO|REVERT|RESET|BACK|DONE|OK|OKAY|YES|NO|STOP|NEW|FRESH|AGAIN|SAME)\b)"
+                r"([A-Z]{2,})'?\s*[.!]?\s*$"),
      r"make it spell \1"),
     (re.compile(r"(?i)\b(in|to|into)\s+(?:the\s+)?corner\s*,\s*(front|back)[\s-]+(left|right)\b"), r"\1 the \2 \3 corner"),
     (re.compile(r"(?i)\bthe\s+(tower|stack|row|line|pyramid|wall|grid|circle|pile)\s+(?:should|must|needs\s+to|has\s+to)\s+"

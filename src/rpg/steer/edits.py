@@ -437,7 +437,8 @@ def read_ops(t: str) -> list[Op]:
         m = re.search(r"\b(\d+)\s+outliers?\b", t)
         ops.append(Op("outliers", {"per_pile": int(m.group(1)) if m else 1}))
     reverse = re.search(r"\b(?:flip|reverse|invert|mirror|swap)\b[^.;]*\border\b|\bupside down\b|\breverse(?:d)? order\b|\bother\s+way\s+up\b|"
-                        r"\b(?:flip|reverse|invert)\s+(?:it|them|the\s+(?:whole\s+|entire\s+)?(?:tower|stack|line|row|gradient|sequence|colou?rs|word))\b"
+                        r"\b(?:flip|reverse|invert)\s+(?:it|them|the\s+(?:whole\s+|entire\s+)?(?:tower|stack|line|row|gradient|sequence|colou?rs|word|letters|digits"
+                        r"|numbers|labels|cubes|blocks))\b"
                         r"|\b(?:spell|write|read|arrange|put|place)\s+(?:it|them|the\s+word)\s+backwards?\b", t)
     if reverse:
         keep = re.search(r"\bkeep(?:ing)?\s+(?:the\s+)?(.+?)\s+(?:on top|at the top|in place|where it is|at the bottom|fixed)\b", t)
@@ -690,6 +691,11 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("structure", {"to": "tower", **_kept_order(t), **_stated_on(t), **ended_order}))  # "stack them": the task's cubes
     elif bare_shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
         ops.append(Op("structure", {"to": structure_of_word(bare_shape.group(1)), **ended_order}))  # "now a line instead"
+    trail = re.search(rf"(?:,|;|\band\b)\s+(?:make\s+)?(?P<old>the\s+(?:top|bottom|first|last|middle|base|lowest|highest)"
+                      rf"(?:\s+(?:one|cube|block|layer|row|level))?)\s+(?:is\s+|should\s+be\s+|to\s+)?(?P<new>{COLOR_RE})\s*[.!]?\s*$", t)
+    if trail and not any(o.op in ("recolor", "relabel", "reverse") for o in ops) and _selector(trail.group("old")):
+        # "make it four, and the top one orange": the count, then the cube at that place that colour
+        ops.append(Op("recolor", {"select": _selector(trail.group("old")), "to": {"color": canon_color(trail.group("new"))}}))
     recolors = [o for o in ops if o.op == "recolor" and set(o.params["select"]) == {"color"} and "color" in o.params["to"]]
     if len(recolors) == 2 and recolors[0].params["select"]["color"] == recolors[1].params["to"]["color"] \
             and recolors[1].params["select"]["color"] == recolors[0].params["to"]["color"]:
@@ -755,11 +761,16 @@ def intent_of_ops(ops: list[Op], spec: TaskSpec | None = None) -> str:
         ops = [o for o in ops if not (o.op == "ordering" and spec.ordering == kept.get(o.params["key"], o.params["key"])
                                       and bool(spec.descending) == o.params.get("descending", False) and len(ops) > 1)]
     old = (spec.word or "".join(it.label or "" for it in spec.items)) if spec is not None else ""
-    grown = [o for o in ops if o.op == "word" and old and len(o.params["word"]) > len(old)
-             and (o.params["word"].startswith(old) or o.params["word"].endswith(old))]
+    grown = [o for o in ops if o.op == "word" and old and len(o.params["word"]) > len(old) and _keeps_in_order(old, o.params["word"])]
     if grown and len(grown) == len(ops):  # "make it DOGS", "put a T before it so it says TONE": letters added to the word
         return "extend"
     return max((OP_INTENT[o.op] for o in ops), key=INTENTS.index, default="tweak")
+
+
+def _keeps_in_order(old: str, new: str) -> bool:
+    """Whether ``new`` is ``old`` with letters added anywhere ("CAT" -> "CART", "DOG" -> "DOGS"): a subsequence."""
+    rest = iter(new)
+    return all(ch in rest for ch in old)
 
 
 def intent_of_standalone(new: TaskSpec | None, ref: TaskSpec | None) -> str:
@@ -1512,7 +1523,13 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             ia, ib = _indices(spec, p["a"], anchors), _indices(spec, p["b"], anchors)
             if not ia or not ib:
                 raise SteerError(f"the task has no cube matching {p['a'] if not ia else p['b']}")
-            if len(ia) != len(ib) or (len(ia) > 1 and not (len({spec.items[i] for i in ia}) == len({spec.items[i] for i in ib}) == 1)):
+            one_each = len({spec.items[i] for i in ia}) == len({spec.items[i] for i in ib}) == 1
+            if len(ia) != len(ib) and one_each and spec.kind.layered and set(ia).isdisjoint(ib):
+                # "swap the green and the white layers" of a pyramid (3 and 2 cubes): the two layers' colours exchanged
+                a, b = spec.items[ia[0]], spec.items[ib[0]]
+                spec = spec.with_items([b if i in ia else a if i in ib else it for i, it in enumerate(spec.items)])
+                continue
+            if len(ia) != len(ib) or (len(ia) > 1 and not one_each):
                 raise SteerError(f"cannot swap {p['a']} ({len(ia)} cubes) with {p['b']} ({len(ib)} cubes); name one cube of each")
             items = list(spec.items)
             for i, j in zip(ia, ib, strict=True):
