@@ -1908,3 +1908,16 @@ def test_a_bare_command_in_capitals_is_no_word_to_spell(tmp_path):
     """"UNDO" is the command, not a word for the cubes to spell."""
     assert _steered(tmp_path, "Spell SUN using letter cubes from left to right", "make it spell RUN", "UNDO")[-1] == (
         "modify", ["line[left_to_right](S,U,N)", "reads(S,U,N;direction=left_to_right,face=up,text=SUN)"])
+
+
+def test_every_cube_moved_to_one_region_and_a_layer_recoloured_cube_by_cube(tmp_path):
+    """"please change it so both are on the left side" (both cubes there) and "change the bottom layer
+    so it goes orange, green, orange" (each cube of it in turn) had been refused ('change' read as an
+    action); a list that does not fit the layer is refused."""
+    assert _steered(tmp_path, "Put the red cube on the left side of the table and the blue cube on the right side",
+                    "please change it so both are on the left side") == [("modify", ["in_region(blue,left)", "in_region(red,left)"])]
+    base = "Build a pyramid of six cubes: three orange on the bottom, two yellow in the middle, one red on top"
+    assert _steered(tmp_path / "b", base, "please change the bottom layer so it goes orange, green, orange") == [
+        ("tweak", ["pyramid(green,orange,orange|yellow,yellow|red)"])]
+    with pytest.raises(SteerError, match="2 colours are said for 3 cubes"):
+        _steered(tmp_path / "c", base, "make the bottom layer red, blue")

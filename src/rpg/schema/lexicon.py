@@ -3033,7 +3033,11 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "make it so that the green cube is the lowest one", "make sure the top one is green": what is to hold (the words before
     # it had been read as a recolour of every cube to green); "the green cube should be at the bottom", "make the green one
     # the top one": that cube moved to that end
-    (re.compile(r"(?i)^\s*(?:please\s+)?make\s+(?:it\s+)?so\s+(?:that\s+)?|^\s*(?:please\s+)?make\s+sure\s+(?:that\s+)?"), ""),
+    (re.compile(r"(?i)^\s*(?:please\s+)?make\s+(?:it\s+)?so\s+(?:that\s+)?|^\s*(?:please\s+)?make\s+sure\s+(?:that\s+)?"
+                r"|^\s*(?:please\s+)?change\s+(?:it|this|that|the\s+task)\s+so\s+(?:that\s+)?"), ""),  # ("change it so both are ...")
+    # "change the bottom layer so it goes orange, green, orange": that layer's colours, in turn
+    (re.compile(r"(?i)^\s*(?:please\s+)?change\s+(the\s+(?:top|bottom|middle|base|first|second|third|lowest|upper|lower)\s+(?:layer|row|level|tier))\s+"
+                r"so\s+(?:that\s+)?(?:it|its\s+(?:cubes|blocks|colou?rs))\s+(?:goes|go|reads?|is|are|runs?)\s+"), r"make \1 "),
     (re.compile(rf"(?i)^\s*(?:please\s+)?(?:i\s+want\s+)?(?:the\s+)?({COLOR_RE})\s+(?:cube\s+|block\s+|one\s+)?(?:is|should\s+be|must\s+be|becomes|goes|sits|ends\s+up)\s+"
                 r"(?:the\s+|at\s+the\s+|on\s+the\s+|in\s+the\s+|on\s+)?(lowest|bottom|base|bottommost|highest|top|topmost|uppermost)"
                 r"(?:\s+(?:one|cube|block|of\s+(?:the\s+)?(?:tower|stack)))?\s*(?:please|instead|now)?\s*[.!]?\s*$"),

@@ -612,7 +612,11 @@ def read_ops(t: str) -> list[Op]:
         bare = re.fullmatch(r"\s*'?([a-z0-9])'?\s*[.!]?", repl.group("new"))
         if sel and "label" in sel and new is None and bare:  # "change the 3 to 5": a label for a label
             new = {"label": bare.group(1).upper()}
-        if sel and new:
+        run = re.match(rf"(?:{COLOR_RE})(?:\s*(?:,\s*(?:and\s+)?|\band\s+)(?:{COLOR_RE})\b)+", t[repl.start("new"):])
+        listed = [canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", run.group(0))] if run and sel and "layer" in sel else []
+        if sel and new and len(listed) >= 2:  # "make the bottom layer orange, green, orange": each cube of it
+            ops.append(Op("recolor", {"select": sel, "to": {"colors": listed}}))
+        elif sel and new:
             ops.append(Op("recolor" if "color" in new else "relabel", {"select": sel, "to": new}))
             first = re.search(rf"\b(?:{COLOR_RE})\b|\b(?:letter|digit)\s+[a-z0-9]\b", t[repl.start("new"):])
             rest = t[repl.start("new") + first.end():] if first else ""
@@ -1477,6 +1481,12 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
                                  f"{', '.join(i.phrase() for i in spec.items)}")
             items = list(spec.items)
             touched.update(idx)
+            if "colors" in p["to"]:  # a layer's cubes given one colour each, in the order said
+                if len(p["to"]["colors"]) != len(idx):
+                    raise SteerError(f"{len(p['to']['colors'])} colours are said for {len(idx)} cubes; say one colour per cube")
+                for i, c in zip(idx, p["to"]["colors"], strict=True):
+                    items[i] = Item(color=c)
+                idx = []
             for i in idx:
                 items[i] = Item(**p["to"])
             spec = replace(spec.with_items(items), layer_colors=False if spec.layer_colors and len(idx) < len(items) else spec.layer_colors)

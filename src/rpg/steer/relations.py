@@ -450,6 +450,9 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         if re.search(rf"\b(?:an?|another|one\s+more)\s+(?:(?:{COLOR_RE})\s+)?(?:block|cube)\b", t):
             return None  # "also a red block in the front right corner": one more cube, not this one moved
         which = [i for i, (c, _) in enumerate(placed) if c in named] or ([0] if len(placed) == 1 else [])
+        if not named and len(placed) > 1 and re.search(r"\b(?:both|them|all|everything|each\s+of\s+them)\b", t) \
+                and any(r != region for _, r in placed):  # "move both to the left side": every cube of the task there
+            return ", then ".join(f"place the {c} block {region_phrase(region)}" for c, _ in placed).capitalize(), "modify"
         if len(which) != 1 or placed[which[0]][1] == region:
             return None
         placed[which[0]] = (placed[which[0]][0], region)
