@@ -1921,3 +1921,26 @@ def test_every_cube_moved_to_one_region_and_a_layer_recoloured_cube_by_cube(tmp_
         ("tweak", ["pyramid(green,orange,orange|yellow,yellow|red)"])]
     with pytest.raises(SteerError, match="2 colours are said for 3 cubes"):
         _steered(tmp_path / "c", base, "make the bottom layer red, blue")
+
+
+@pytest.mark.parametrize("base, edit, expected", [
+    ("Stack red on blue. Stack pink on white.", "one long row", ("pivot", ["line(blue,pink,red,white)"])),
+    ("Stack red on blue. Stack pink on white.", "row", ("pivot", ["line(blue,pink,red,white)"])),
+    ("Put pink, white and cyan in a row from left to right", "one tower", ("pivot", ["stack(pink,white,cyan)"])),
+    ("Build a tower of five blue cubes", "make the 2 top ones white", ("tweak", ["stack(blue,blue,blue,white,white)"])),
+])
+def test_attack_on_terse_pivots_and_counted_ends(tmp_path, base, edit, expected):
+    """A hostile helper's silent errors: a bare structure noun had read as a default task of made-up
+    cubes; "the 2 top ones" had recoloured one cube."""
+    assert _steered(tmp_path, base, edit) == [expected]
+
+
+@pytest.mark.parametrize("base, edit, needle", [
+    ("Build a tower of five blue cubes", "make all but the ends pink", "by the ones they are not"),  # (all five had been pink)
+    ("Put red, blue, green and yellow in a row from left to right", "swap the 2 bottom ones", "no bottom two"),  # (a row's left two)
+    ("Stack red on blue", "add a green cube on the same patch", "has none"),  # (a gray patch had been made up)
+    ("Put red, blue and green in a row from left to right", "stack it instead, D at the bottom", "no such cube"),  # (D dropped)
+])
+def test_attack_on_selectors_and_roles_is_refused(tmp_path, base, edit, needle):
+    with pytest.raises(SteerError, match=needle):
+        _steered(tmp_path, base, edit)

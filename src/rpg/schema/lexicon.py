@@ -2076,6 +2076,23 @@ def robot_direction(m: re.Match) -> str:
     return f"line{mid} {way}" if m.group("column") else f"{m.group('line')}{mid} {way}"
 
 
+LINE_UP_DIRECTION_RE = re.compile(
+    rf"(?i)\b(?P<verb>line\s+up|lined\s+up|lining\s+up)\b(?P<mid>\s+[^.;:!?]{{1,60}}?)\s*,?\s*(?:{_HEADING})\s+(?:straight\s+)?"
+    r"(?P<dir>away\s+from|toward|towards)\s+(?:the\s+|our\s+|your\s+)?robot\b")
+"""Cubes lined up running away from the robot or toward it ("line up the pink, cyan and white cubes going away from the
+robot"): a line from front to back (or back to front); the robot's words had been read as the back of the table, an
+unordered line there (silently wrong).  Left as written where the sentence stacks or orders by other words."""
+
+
+def line_up_direction(m: re.Match) -> str:
+    """:data:`LINE_UP_DIRECTION_RE`'s match as a line with its direction."""
+    stop = min([i for i in (m.string.find(".", m.end()), m.string.find(";", m.end())) if i >= 0] or [len(m.string)])
+    if not re.match(r"\s*:", m.string[m.end():stop]) and _VERTICAL_CUE_RE.search(m.string[m.end("verb"):stop]):
+        return m.group(0)
+    way = "from front to back" if m.group("dir").lower().startswith("away") else "from back to front"
+    return f"{m.group('verb')}{m.group('mid')} in a line {way}"
+
+
 _STRUCTURE_NOUN = r"(?:tower|stack|row|line|pile|column|circle|ring|grid|wall|pyramid)"
 ANOTHER_STRUCTURE_RE = re.compile(rf"\banother\s+(?:one|(?P<noun>{_STRUCTURE_NOUN}))\s+(?=of\b)")
 """A second structure said as "another one of ..." or "another tower of ..." after a first ("build a tower of red, blue
@@ -2932,6 +2949,11 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "undo the swap", "revert that change": the last change taken back (a version had been searched for "swap")
     (re.compile(r"(?i)\b(undo|revert)\s+(?:the|that|this|my|your)\s+(?:last\s+)?(?:swap|change|edit|recolou?r\w*|move|addition|reversal|flip|step"
                 r"|rotation|pivot|tweak)\b"), r"\1"),
+    # "row", "one long row", "a single tower instead": the task's cubes in that structure (a default task of made-up cubes
+    # had been read)
+    (re.compile(r"(?i)^\s*(?:(?:now|ok(?:ay)?|then|so|actually)\s*,?\s*)*(?:as\s+|into\s+)?(?:one|a|an|the|single|a\s+single)?\s*"
+                r"(?:(?:long|big|tall|single|straight|neat)\s+)?(row|line|tower|stack|pyramid|circle|ring)\s*(?:instead|please|now|then)*\s*[.!]?\s*$"),
+     r"make it a \1"),
     # "swap the two middle ones", "the 2 bottom ones swap", "the two middle ones trade places": the pair by its place
     (re.compile(r"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|and|then|level\s+\d+\s*->)\s*,?\s*)*(?:swap|switch|exchange|flip)\s+the\s+(?:two|2)\s+"
                 r"(middle|bottom|top|first|last|left|leftmost|right|rightmost|lowest|highest)(?:\s+(?:ones|cubes|blocks))?\s*[.!]?\s*$"),
@@ -3601,8 +3623,12 @@ NOTATION_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "build 3-stack": a tower of that many cubes, its count glued to its noun
     (re.compile(r"\b(?:a\s+)?(\d+)-(stack|tower)\b"), r"a \2 of \1"),
     # "a two by two grid": the size in words (number words become digits later, after these rewrites)
-    (re.compile(r"\b(two|three|four|five)(?:\s+|\s*-\s*)by(?:\s+|\s*-\s*)(two|three|four|five)(?=\s+(?:grid|square|array|arrangement)s?\b)"),
-     lambda m: f"{NUMBER_WORDS[m.group(1)]}x{NUMBER_WORDS[m.group(2)]}"),
+    # ("a three-by-three wall", "a wall of orange blocks, two by two": a wall's size, which had been dropped: a 3x2 wall
+    # made up)
+    (re.compile(r"\b(one|two|three|four|five)(?:\s+|\s*-\s*)by(?:\s+|\s*-\s*)(one|two|three|four|five)(?=\s+(?:grid|square|array|arrangement|wall)s?\b)"
+                r"|(?<=\bwall\s)(?:of\s+[a-z]+\s+(?:blocks|cubes)\s*,\s*)?\b(one|two|three|four|five)\s+by\s+(one|two|three|four|five)(?=\s*(?:[.;!]|$))"),
+     lambda m: m.group(0)[:m.start(3) - m.start()] + f"{NUMBER_WORDS[m.group(3)]}x{NUMBER_WORDS[m.group(4)]}" if m.group(3)
+     else f"{NUMBER_WORDS[m.group(1)]}x{NUMBER_WORDS[m.group(2)]}"),
     # "on(red, green)", "(on red green)": a goal written as a planning predicate
     (re.compile(rf"\(?\bon\s*(?:\(\s*|\s+)({COLOR_RE})\s*,?\s+({COLOR_RE})\s*\)"),
      r"the \1 block on the \2 block"),
@@ -4191,7 +4217,7 @@ def _axis_ends(m: re.Match) -> str:
     start, end, items = m.group("a"), m.group("b"), m.group("list")
     cube = rf"(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?"
     listed = re.fullmatch(rf"(?P<first>{cube})(?:\s+(?:is\s+)?{_AXIS_END_MARKS[start]})?(?P<mid>(?:\s*,\s*(?:and\s+)?then\s+{cube})*)"
-                          rf"\s*,?\s*(?:and\s+)?(?P<last>then\s+{cube})(?:\s+(?:is\s+)?{_AXIS_END_MARKS[end]})?", items)
+                          rf"\s*,?\s*(?:and\s+)?(?P<last>(?:then\s+)?{cube})(?:\s+(?:is\s+)?{_AXIS_END_MARKS[end]})?", items)
     if listed is None:  # more said in the list ("and red farthest from the yellow cube"): as written, for the readers
         return m.group(0)
     return f"from {start} to {end}: {listed.group('first')}{listed.group('mid')}, {listed.group('last')}"

@@ -22,6 +22,8 @@ since any of them may stand anywhere.  An expected atom whose objects are all wi
 (``pyramid(?,?|?)``) or all one colour (``wall(red,red|red,red)``) matches either form with as
 many objects.
     start:stack(red,blue); on_table(blue) a stack rho_0 starts, and its top cube taken off
+    start:stack(red,blue); on_table(blue); on_table(red)  ... and both cubes on the table (a start's bottom cube is
+                                          listed where the goal sends it to the table too: "unstack it")
 
 The development corpus (``tests/corpus/instructions.yaml``) states each instruction's
 expected meaning in this notation, with two wildcards: ``?`` for any one object and ``red*``
@@ -102,7 +104,7 @@ def meaning(schema: TaskSchema) -> list[str]:
     conjuncts = _conjuncts(schema.goal_predicate())
     based = {p.objects[0] for p in conjuncts if isinstance(p, P.Stack)}  # a stack's bottom rests on the table: said by it
     for p in conjuncts:
-        if isinstance(p, P.OnTable) and p.a in started_on and p.a not in based:
+        if isinstance(p, P.OnTable) and (p.a in started_on or starts) and p.a not in based:
             atoms.append(f"on_table({names([p.a])})")
         elif isinstance(p, _SKIP):
             used.update(p.object_names())

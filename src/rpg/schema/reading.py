@@ -1047,6 +1047,13 @@ def _label_tower_roles(text: str) -> str:
         # bottom, then B, then C on top"): read there
     if len(found) < 2:
         return text  # one label with a place: a relation or a role the readers read ("stack 3 on the red cube")
+    big = re.search(r"\b\d\d+\b", text[found[0].start():found[-1].end()])
+    if big:  # "3 at the bottom, 12 in the middle and 1 on top": no digit cube (a 2 had been made up between 3 and 1)
+        raise ParseError(f"'{big.group(0)}' in \"{text[:80]}\" is given a place in the tower, but digit cubes carry 0-9; "
+                         "name each cube of the tower, or use --model")
+    if re.search(rf"\b(?:{COLOR_RE})\b", text[found[0].start():found[-1].end()]):
+        return text  # a coloured cube given a place among them ("3 at the bottom, red in the middle and 1 on top"): read
+        # as written (it had been dropped)
     if len(found) > 3 or len(set(ranks)) != len(ranks) or {0, 2} - set(ranks) or len(set(labels)) != len(found):
         raise ParseError(f"the labelled cubes of \"{text[:80]}\" are given places in the tower that do not make one order "
                          "(each label once, one at the bottom and one on top); say the order from the bottom (e.g. \"stack "
@@ -1096,6 +1103,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     original = lexicon.HYPHENED_DIRECTION_RE.sub(r"\1 to \2", original)
     original = lexicon.DIAGONAL_PLACE_RE.sub(lexicon.diagonal_place, original)  # "to the front-right of the red cube"
     original = lexicon.ROBOT_DIRECTION_RE.sub(lexicon.robot_direction, original)  # "a column ... away from the robot"
+    original = lexicon.LINE_UP_DIRECTION_RE.sub(lexicon.line_up_direction, original)  # "line up ... going away from the robot"
     original = lexicon.hyphened_chains(original)  # "a red-on-yellow tower", "a 1-on-2 tower", "a three-block ..."
     original = lexicon.ARROW_DIRECTION_RE.sub(lexicon.arrow_direction, original)  # "l->r", "bottom -> top"
     original = lexicon.STRUCTURE_NAME_RE.sub(r"\1", original)  # "Tower A: ...", "tower B is pink on gray"
@@ -1195,6 +1203,8 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     text = lexicon.NOT_IMPORTANT_RE.sub(r"\1 unimportant", text)  # "the colours are not important": no negation
     text = lexicon.FREE_PAIR_RE.sub("colours do not matter, in any order", text)
     text = lexicon.ANY_ORDER_RE.sub(" in any order", text)  # before "doesn't" is refused as a negation
+    text = re.sub(r"(\s+(?:at|in|on|along|across|toward|towards)\s+the\s+(?:[a-z-]+\s+){1,3}?of\s+the\s+(?:table|workspace))\s+in\s+any\s+order\b",
+                  r" in any order\1", text)  # "... in a row at the back of the table, in any order": the place ends the clause
     text = lexicon.HARMLESS_NEGATION_RE.sub("", text)
     for m in lexicon.FREE_CHOICE_RE.finditer(text):  # "put the red cube left of the blue cube. colours don't matter"
         rest = text[:m.start()] + text[m.end():]

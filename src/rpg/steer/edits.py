@@ -311,7 +311,15 @@ def _selector(text: str) -> dict | None:
     """Which cubes a phrase names: a position (of a cube, or of a layer: "the bottom layer"),
     a colour, a label, some of them ("two of them"), both of two, or all of them."""
     text = text.strip()
-    ends = re.search(r"\b(top|bottom|first|last|lowest|highest)\s+(\d+)\b", text)
+    other = re.search(r"\b(?:all|every\w*|each|them)\b.*?\b(?:but|except|other\s+than|apart\s+from|besides)\b|\ball\s+(?:the\s+)?other\b"
+                      r"|\bbetween\s+the\s+ends\b", text)
+    if other:  # "all but the ends", "every cube but the bottom one": every cube had been taken
+        raise SteerError(f"'{text}' names cubes by the ones they are not, which the builtin steering does not read; name them by "
+                         "colour or place (e.g. \"make the 2nd and 3rd from the bottom pink\" in two edits), or use --model")
+    ends = re.search(r"\b(top|bottom|first|last|lowest|highest)\s+(\d+)\b", text) or re.search(
+        r"\b(?P<n>\d+)\s+(?P<e>top|bottom|first|last|lowest|highest)(?:\s+(?:ones|cubes|blocks))?\b", text)
+    if ends and "e" in ends.re.groupindex:  # "the 2 top ones": that many from that end
+        return {"end": "bottom" if ends.group("e") in ("bottom", "first", "lowest") else "top", "n": int(ends.group("n"))}
     if ends:
         return {"end": "bottom" if ends.group(1) in ("bottom", "first", "lowest") else "top", "n": int(ends.group(2))}
     sides = re.search(r"\b(left|right)(?:most)?\s+(\d+)\b|\b(\d+)\s+(left|right)(?:most)?(?:\s+(?:ones|cubes|blocks))?\b"
@@ -1000,6 +1008,9 @@ def _indices(spec: TaskSpec, sel: dict, anchors: frozenset[str] = frozenset()) -
         if not _orders_cubes(spec) or n < 3:
             raise SteerError(f"the {sel['pair']} two of a {spec.structure} of {n} cubes"
                              + ("" if _orders_cubes(spec) else " whose goal gives no cube a place") + " name no pair; name them by colour")
+        if sel["pair"] in ("bottom", "top") and spec.structure not in ANCHORED_KINDS:
+            raise SteerError(f"a {spec.structure} has no {sel['pair']} two (its cubes stand side by side); name them by colour or "
+                             "by side (e.g. \"the left two\")")
         if sel["pair"] in ("left", "right"):
             if spec.direction not in ("left_to_right", "right_to_left") or spec.structure in ANCHORED_KINDS:
                 raise SteerError(f"the {sel['pair']} two of a {spec.structure} whose goal runs no way left to right name no "

@@ -285,11 +285,16 @@ def _pivot_with_roles(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str,
         listed = f"the {kind} cubes {', '.join(names[:-1])} and {names[-1]}"
     else:
         return None
+    said = {canon_color(c) for c in re.findall(rf"(?i)\b(?:{COLOR_RE})\b", roles)} | set(re.findall(r"\b([A-Z]|\d)\b", roles))
+    if said - set(names):  # "stack it instead, D at the bottom" of cubes with no D (it had been dropped)
+        raise SteerError(f"the edit gives {', '.join(sorted(said - set(names)))} a place in the {pivots[0].params['to']}, but "
+                         f"the task has no such cube ({', '.join(names)}); name the task's cubes, or state the whole new task")
     instruction = f"Build a {_STRUCTURE_NOUN[pivots[0].params['to']]} of {listed}, {roles}"
     try:
         schema = parse(instruction)
-    except BadInput:
-        return None
+    except BadInput as exc:  # roles said but not read: refused, not dropped
+        raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": read as \"{instruction[:100]}\", "
+                         f"{str(exc).splitlines()[0][:160]}") from None
     if sorted(a.color or a.label for a in schema.assets if a.kind != "goal_patch") != sorted(names):
         return None  # cubes made up or lost ("the red-yellow pair on top" read as two more cubes)
     before = extract(ref)
@@ -307,6 +312,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     patches = sorted({a.color or "gray" for a in ref_schema.assets if a.kind == "goal_patch"}) if ref_schema else []
     if len(patches) == 1:  # "also a blue cube on the same patch": the task's one patch
         plan = replace(plan, text=SAME_PATCH_RE.sub(f"the {patches[0]} patch", plan.text))
+    elif ref_schema is not None and not patches and SAME_PATCH_RE.search(plan.text):  # (a gray patch had been made up)
+        raise SteerError(f"'{SAME_PATCH_RE.search(plan.text).group(0)}' names a patch, but v{reference} has none; say which patch "
+                         "(e.g. \"on a red patch\"), or use --model")
     if ref_schema is not None and (roles := between_roles(plan.text, ref_schema)) != plan.text:  # "the middle one"
         plan = replace(interpret(roles), cue=plan.cue)
     if ref_schema is not None:
@@ -423,7 +431,8 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         numbers = [n for n in numbers if int(n) != made]
     unread = [c for c in unread_colors(plan)  # "make that seven pink cubes" of a pink row: its own colour, not a change
               if not (set(ref_spec.colors()) == {c} and all(o.op == "count" for o in plan.ops))] + numbers
-    if (unread or re.search(r"(?i)\b(?:reading|reads?|spell(?:s|ing)?)\b", plan.text)) and \
+    if (unread or re.search(r"(?i)\b(?:reading|reads?|spell(?:s|ing)?)\b|\b[A-Z0-9]\s+(?:at|on)\s+(?:the\s+)?(?:bottom|top|base)\b",
+                            plan.text)) and \
             (roled := _pivot_with_roles(plan, ref_schema)) is not None:
         return roled  # "turn it into a single tower, same cubes: the reds at the bottom, ...", "row instead, reading BAT": the
         # roles read with the cubes (the word had been dropped)

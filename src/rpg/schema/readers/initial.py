@@ -717,12 +717,13 @@ def on_table_goal(scene: InitialScene) -> TaskSchema | None:
     said = every.group("n") if every else None
     if said and NUMBER_WORDS.get(said, int(said) if said.isdigit() else 0) != sum(len(st) for st in scene.stacks):
         return None  # "all four cubes on the table" of a start of three: not these cubes
-    colors = [c for s in scene.stacks for c in s[1:]] if every else [canon_color(m.group("c"))] if m else \
-        [_canon(c) for c in re.findall(rf"\b{_NAME}", listed.group("list"))]
+    colors = [c for s in scene.stacks for c in s] if every else [canon_color(m.group("c"))] if m else \
+        [_canon(c) for c in re.findall(rf"\b{_NAME}", listed.group("list"))]  # ("all three cubes on the table": the bottom
+    # one too, though it starts there: the words demand it at the end; it had been left out)
     if len(set(colors)) != len(colors):
         return None  # a cube listed twice: read as written
     # a listed cube that starts on the table may stay there while the others move (the goal does not hold at the start)
-    listed_moves = listed and all(any(c in s for s in scene.stacks) for c in colors) and any(
+    listed_moves = (listed or every) and all(any(c in s for s in scene.stacks) for c in colors) and any(
         c in s[1:] for s in scene.stacks for c in colors)
     if not listed_moves and (not colors or not all(any(c in s[1:] for s in scene.stacks) for c in colors)):
         return None  # it starts on the table: the goal would hold before anything moved

@@ -413,6 +413,8 @@ def recognize_relational(f: Features, b: Builder) -> bool:
             names = [r.obj(ms[0], i) for i in range(n)]
         elif len(ms) > n and len({(m.color, m.label) for m in ms}) == len(ms):  # "a tower of red, green and blue"
             names = [r.obj(m) for m in ms]
+            if re.search(r"\btop\s+(?:to|down\s+to)\s+(?:the\s+)?bottom\b|\bfrom\s+the\s+top\s+down\b", said):
+                names = names[::-1]  # "from top to bottom: digit 1, digit 2, digit 3": listed from the top (read upward, silently)
         elif stated_count(f, default=None) is None and len(ms) > 2 and all(m.count == 1 for m in ms) and all(
                 lexicon.LIST_GAP_RE.fullmatch(said[a.end:b.start]) for a, b in itertools.pairwise(ms)) and not any(
                 lexicon.ROLE_AFTER_RE.match(said, m.end) for m in ms):  # "a tower of red and white, white on top": a role, no third cube

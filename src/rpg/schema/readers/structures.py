@@ -116,7 +116,10 @@ def layer_roles(f: Features, levels: int) -> dict[tuple[str, int], int | None]:
             1 if noun in ("block", "cube", "one") else None
         the = (m.groupdict().get(f"n{i}") == "the" and noun in ("block", "cube")) or (  # "the orange pair" (the 2 orange
             m.groupdict().get(f"n{i}") not in (None, "the", "a", "an", "one") and f.text[:m.start()].endswith("the "))  # blocks)
-        for color in colors:
+        repeated = n is None and 1 < len(set(colors)) < len(colors)  # "base orange, gray, orange": each listed cube, counted
+        for color in dict.fromkeys(colors) if repeated else colors:
+            if repeated:
+                n = colors.count(color)
             placed = {lv for c, lv in out if c == color}
             if placed - {k} and (the or color in definite):
                 raise ParseError(f"the {color} cube is given two layers in \"{f.original.strip()}\"")
@@ -958,9 +961,14 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
             b.preds.append(InLine(tuple(names), axis=None, order="sequence"))
             b.summary.append(b.preds[-1].describe())
     elif labels:
-        reads = re.search(r"\b(?:reads?|read as|shows?|spells?)\s+'?([A-Za-z0-9]{2,})'?", f.original, re.IGNORECASE) or said_word
+        reads = re.search(r"\b(?:reads?|reading|read as|shows?|showing|spells?|spelling)\s+'?([A-Za-z0-9]{2,})'?", f.original,
+                          re.IGNORECASE) or said_word
         if reads and sorted(re.sub(r"[\s,]", "", reads.group(1)).upper()) == sorted(labels):  # "the digits 1, 2, 3 so they read 321"
             labels = list(re.sub(r"[\s,]", "", reads.group(1)).upper())
+        elif reads and re.fullmatch(r"[A-Z0-9]{2,}", reads.group(1)) and len(reads.group(1)) == len(labels):
+            # "the letter cubes T, A and B in a row, reading CAT": the word is not of the cubes listed (TAB had been read)
+            raise ParseError(f"\"{f.original[:80]}\" lists the cubes {', '.join(labels)} and asks them to read "
+                             f"'{reads.group(1)}'; say the cubes of the word, or use --model")
         elif order:  # the listed labels are the set; the ordering arranges them
             labels = sorted(labels, key=lambda lab: (not lab.isdigit(), lab), reverse=order[1])
         elif _REVERSE_LIST_RE.search(f.text):  # "the digits 7, 3, 5 in a row in reverse order": the list read backwards
@@ -971,6 +979,9 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         names = [b.semantic(lab) for lab in labels]
         b.place(directed_line(names, direction))
         said_as_word = bool(reads or READ_WORDS_RE.search(f.text))
+        if re.search(r"\bin any order\b", f.text) and (said_as_word or reads):  # (the word had been read, the order kept)
+            raise ParseError(f"\"{f.original[:80]}\" asks the labels to read (or face up) in a row and leaves their order free; "
+                             "say one (e.g. \"... reading CAT from left to right\", or \"... in any order\" alone), or use --model")
         if direction_stated(f) or said_as_word or order or by_ends:
             b.preds.append(InLine(tuple(names), axis=line_axis(direction), order=direction))
         elif re.search(r"\bin any order\b", f.text):  # "the letter cubes B, A and T in a row, any order": which cubes, not where
