@@ -6429,3 +6429,17 @@ def test_stranger41_classes(text, expected):
 def test_labels_given_places_they_cannot_have_are_refused(text):
     with pytest.raises((ParseError, Inexpressible)):
         parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Currently pink rests on gray. Unstack both.", ["on_table(gray)", "on_table(pink)", "start:stack(gray,pink)"]),
+    ("Currently pink is on gray. Unstack it.", ["on_table(gray)", "on_table(pink)", "start:stack(gray,pink)"]),
+    ("The red cube is on the blue cube. Unstack them.", ["on_table(blue)", "on_table(red)", "start:stack(blue,red)"]),
+    ("Currently pink is on gray. Take it off.", ["on_table(pink)", "start:stack(gray,pink)"]),
+])
+def test_a_start_said_now_then_undone(text, expected):
+    """A start said as the scene now ("Currently pink rests on gray.", bare colours), then undone by "Unstack both/them/it"
+    (refused before: the start had not been read without articles, and "both" not as the stack's cubes)."""
+    schema = parse(text)
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []

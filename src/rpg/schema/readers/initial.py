@@ -407,8 +407,9 @@ THERE_IS_START_RE = re.compile(
     r"(?:(?:stacked|sitting|resting|placed)\s+)?"
     rf"|(?:the\s+|an?\s+)?(?P<top2>{_NAME})(?:\s+(?:cube|block))?\s+(?:is\s+(?:currently\s+|now\s+|already\s+)?(?:stacked|sitting|resting|standing"
     r"|lying|placed|set)|is(?=\s+(?:on|atop))|sits|rests|stands|lies)\s+)"
-    rf"(?:on\s+top\s+of|on|atop)\s+(?:a|an|the)\s+(?P<bottom>{_NAME})(?:\s+(?:cube|block|one))?\s*[.;]\s+"
-    r"(?:(?P<verb>(?:then\s+)?(?:put|place|move|take|set|bring|slide|push|lift|remove|unstack))\s+(?P<obj>it\b|the\s+(?P<moved>\w+))"
+    rf"(?:on\s+top\s+of|on|atop)\s+(?:(?:a|an|the)\s+)?(?P<bottom>{_NAME})(?:\s+(?:cube|block|one))?\s*[.;]\s+"
+    r"(?:(?P<verb>(?:then\s+)?(?:put|place|move|take|set|bring|slide|push|lift|remove|unstack))\s+(?P<obj>it\b|the\s+(?P<moved>\w+)"
+    r"|(?<=unstack\s)(?:them|both)(?:\s+(?:cubes|blocks))?(?=\s*[.!]?\s*$))"
     rf"|(?=(?:then\s+)?(?:put|place|set|stack|add)\s+(?:a|an|the)\s+{_NAME}\s+(?:cube|block)\s+(?:on\s+top\b(?!\s+of)"
     r"|(?:on\s+top\s+of|onto|on)\s+(?:it\b|the\s+(?:(?P=top)|(?P=top2))(?:\s+(?:cube|block))?)\s*[.!]?\s*$)))")
 """A start said as what is there now, one cube on another, before a command that moves the top one ("There is a red cube on
@@ -429,6 +430,9 @@ def _there_is_start(m: re.Match) -> str:
         # says what is there now, whichever cube moves); put on the top cube, the start's tower topped
     if not m.group("verb"):  # "... Put a gray block on top": the start's tower topped
         return f"Initially the {top} cube is on the {m.group('bottom')} cube. "
+    if re.search(r"(?i)unstack$", m.group("verb")) and re.match(r"(?i)(?:them|both|it)\b", m.group("obj")):
+        return f"Initially the {top} cube is on the {m.group('bottom')} cube. Unstack it"  # "Currently pink rests on gray.
+        # Unstack both.": the start undone, every cube on the table
     obj = f"the {top} cube" if m.group("obj").lower() == "it" else m.group("obj")
     return f"Initially the {top} cube is on the {m.group('bottom')} cube. {m.group('verb')} {obj}"
 
