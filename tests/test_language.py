@@ -6443,3 +6443,14 @@ def test_a_start_said_now_then_undone(text, expected):
     schema = parse(text)
     assert sorted(meaning(schema)) == expected
     assert uncited(schema, text) == []
+
+
+def test_the_towers_middle_said_before_its_ends():
+    """"The middle cube of the tower is pink; gray is at the base and white at the top": the tower the text goes on to
+    describe (refused before as a tower nobody described); a tower named with nothing else said of it stays refused."""
+    text = "The middle cube of the tower is pink; gray is at the base and white at the top."
+    schema = parse(text)
+    assert sorted(meaning(schema)) == ["stack(gray,pink,white)"]
+    assert uncited(schema, text) == []
+    with pytest.raises((ParseError, Inexpressible)):
+        parse("Put the red cube on top of the tower.")

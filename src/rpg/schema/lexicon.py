@@ -4520,6 +4520,12 @@ LABEL_ARTICLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 """A label between an article and a cube's noun ("the A block", "the 3 cube"): a letter or digit cube."""
 
 TOWER_BETWEEN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "The middle cube of the tower is pink; gray is at the base and white at the top": the tower the text goes on to
+    # describe, said as "the tower's middle cube" (it had been refused as a tower nobody described); only where the text
+    # gives a second place of the tower to another cube
+    (re.compile(r"(?i)^\s*the\s+(middle|top|bottom|base|lowest|highest)\s+(cube|block|one)?\s*of\s+the\s+(tower|stack)\s+(?=(?:is|should\s+be|must\s+be)\s+"
+                r"[a-z]+\s*[;,.]\s*(?:and\s+)?[a-z]+\s+(?:is\s+|goes\s+|sits\s+)?(?:at|on)\s+(?:the\s+)?(?:base|bottom|top)\b)"),
+     lambda m: f"the {m.group(3)}'s {m.group(1)} {m.group(2) or 'cube'} "),
     # "the cyan cube is sandwiched between them", "with the blue one squeezed in the middle": the middle said plainly
     (re.compile(r"\b(?:wedged|squeezed|sandwiched|tucked|nestled)\s+(?=(?:in\s+)?between\s+(?:them|those\s+two|the\s+two)\b"
                 r"|in\s+the\s+middle\b)"), ""),
