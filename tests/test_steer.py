@@ -1944,3 +1944,9 @@ def test_attack_on_terse_pivots_and_counted_ends(tmp_path, base, edit, expected)
 def test_attack_on_selectors_and_roles_is_refused(tmp_path, base, edit, needle):
     with pytest.raises(SteerError, match=needle):
         _steered(tmp_path, base, edit)
+
+
+def test_a_count_among_a_pivots_roles_is_no_label(tmp_path):
+    """Review: a digit among a coloured task's roles ("a tower of 3, pink on top") is a count, not a cube the task lacks."""
+    assert _steered(tmp_path, "Make a pyramid of three pink cubes", "make it a tower of 3, pink on top") == [
+        ("pivot", ["stack(pink,pink,pink)"])]

@@ -259,6 +259,10 @@ def _pivot_with_roles(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str,
     "now tower, yellow on top"): stated as a whole task ("Build a tower of the black, pink and black
     cubes, pink in the middle") and read by the parser.  None when the edit is no such pivot, the task
     has patches or cubes of both kinds, or the reading's cubes are not exactly the task's.
+
+    Raises:
+        SteerError: the roles name a cube the task lacks ("stack it instead, D at the bottom" of
+            coloured cubes), or the parser cannot read them (they are refused, not dropped).
     """
     pivots = [o for o in plan.ops if o.op == "structure" and o.params.get("to") in _STRUCTURE_NOUN and not o.params.get("dims")]
     if len(pivots) != 1 or any(o.op not in ("structure", "keep", "material") for o in plan.ops) \
@@ -276,6 +280,9 @@ def _pivot_with_roles(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str,
     if not (re.search(rf"(?i)\b(?:{COLOR_RE})\b|\breading\b|\bspell", roles) or re.search(r"\b[A-Z0-9]\b", roles)) \
             or not re.match(r"[\w']", roles):
         return None
+    def kind_of_labels(names: list[str]) -> bool:
+        return all(re.fullmatch(r"[A-Z0-9]", n) for n in names)
+
     if all(a.kind == "colored_cube" for a in cubes):
         names = [a.color for a in cubes]
         listed = f"the {', '.join(names[:-1])} and {names[-1]} cubes" if len(names) > 1 else f"the {names[0]} cube"
@@ -285,7 +292,8 @@ def _pivot_with_roles(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str,
         listed = f"the {kind} cubes {', '.join(names[:-1])} and {names[-1]}"
     else:
         return None
-    said = {canon_color(c) for c in re.findall(rf"(?i)\b(?:{COLOR_RE})\b", roles)} | set(re.findall(r"\b([A-Z]|\d)\b", roles))
+    said = {canon_color(c) for c in re.findall(rf"(?i)\b(?:{COLOR_RE})\b", roles)} | (  # (a digit among colours is a count)
+        set(re.findall(r"\b([A-Z]|\d)\b", roles)) if kind_of_labels(names) else set(re.findall(r"\b([A-Z])\b", roles)))
     if said - set(names):  # "stack it instead, D at the bottom" of cubes with no D (it had been dropped)
         raise SteerError(f"the edit gives {', '.join(sorted(said - set(names)))} a place in the {pivots[0].params['to']}, but "
                          f"the task has no such cube ({', '.join(names)}); name the task's cubes, or state the whole new task")
