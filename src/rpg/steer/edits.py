@@ -309,19 +309,23 @@ def find_reference(t: str) -> RefCue:
 
 def _selector(text: str) -> dict | None:
     """Which cubes a phrase names: a position (of a cube, or of a layer: "the bottom layer"),
-    a colour, a label, some of them ("two of them"), both of two, or all of them."""
+    a colour, a label, some of them ("two of them"), that many from an end ("the top 2", "the 2 top
+    ones"), both of two, or all of them.
+
+    Raises:
+        SteerError: the phrase names cubes by the ones they are not ("all but the ends"), or several
+            places at once."""
     text = text.strip()
     other = re.search(r"\b(?:all|every\w*|each|them)\b.*?\b(?:but|except|other\s+than|apart\s+from|besides)\b|\ball\s+(?:the\s+)?other\b"
                       r"|\bbetween\s+the\s+ends\b", text)
     if other:  # "all but the ends", "every cube but the bottom one": every cube had been taken
         raise SteerError(f"'{text}' names cubes by the ones they are not, which the builtin steering does not read; name them by "
                          "colour or place (e.g. \"make the 2nd and 3rd from the bottom pink\" in two edits), or use --model")
-    ends = re.search(r"\b(top|bottom|first|last|lowest|highest)\s+(\d+)\b", text) or re.search(
-        r"\b(?P<n>\d+)\s+(?P<e>top|bottom|first|last|lowest|highest)(?:\s+(?:ones|cubes|blocks))?\b", text)
-    if ends and "e" in ends.re.groupindex:  # "the 2 top ones": that many from that end
-        return {"end": "bottom" if ends.group("e") in ("bottom", "first", "lowest") else "top", "n": int(ends.group("n"))}
+    ends = re.search(r"\b(?P<e>top|bottom|first|last|lowest|highest)\s+(?P<n>\d+)\b"  # "the top 2"
+                     r"|\b(?P<n2>\d+)\s+(?P<e2>top|bottom|first|last|lowest|highest)(?:\s+(?:ones|cubes|blocks))?\b", text)  # "the 2 top ones"
     if ends:
-        return {"end": "bottom" if ends.group(1) in ("bottom", "first", "lowest") else "top", "n": int(ends.group(2))}
+        end, n = ends.group("e") or ends.group("e2"), ends.group("n") or ends.group("n2")
+        return {"end": "bottom" if end in ("bottom", "first", "lowest") else "top", "n": int(n)}
     sides = re.search(r"\b(left|right)(?:most)?\s+(\d+)\b|\b(\d+)\s+(left|right)(?:most)?(?:\s+(?:ones|cubes|blocks))?\b"
                       r"|\b(\d+)\s+(?:(?:ones|cubes|blocks)\s+)?(?:on|at)\s+the\s+(?:far\s+)?(left|right)(?:\s+end)?\b", text)
     if sides:  # "the two leftmost ones", "the left 2", "the 2 on the right": that many from that end of a row
@@ -705,9 +709,9 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("structure", {"to": structure_of_word(bare_shape.group(1)), **ended_order}))  # "now a line instead"
     trail = re.search(rf"(?:,|;|\band\b)\s+(?:make\s+)?(?P<old>the\s+(?:top|bottom|first|last|middle|base|lowest|highest)"
                       rf"(?:\s+(?:one|cube|block|layer|row|level))?)\s+(?:is\s+|should\s+be\s+|to\s+)?(?P<new>{COLOR_RE})\s*[.!]?\s*$", t)
-    if trail and not any(o.op in ("recolor", "relabel", "reverse") for o in ops) and _selector(trail.group("old")):
-        # "make it four, and the top one orange": the count, then the cube at that place that colour
-        ops.append(Op("recolor", {"select": _selector(trail.group("old")), "to": {"color": canon_color(trail.group("new"))}}))
+    trailed = _selector(trail.group("old")) if trail and not any(o.op in ("recolor", "relabel", "reverse") for o in ops) else None
+    if trailed:  # "make it four, and the top one orange": the count, then the cube at that place that colour
+        ops.append(Op("recolor", {"select": trailed, "to": {"color": canon_color(trail.group("new"))}}))
     recolors = [o for o in ops if o.op == "recolor" and set(o.params["select"]) == {"color"} and "color" in o.params["to"]]
     if len(recolors) == 2 and recolors[0].params["select"]["color"] == recolors[1].params["to"]["color"] \
             and recolors[1].params["select"]["color"] == recolors[0].params["to"]["color"]:
@@ -1492,14 +1496,12 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
                                  f"{', '.join(i.phrase() for i in spec.items)}")
             items = list(spec.items)
             touched.update(idx)
-            if "colors" in p["to"]:  # a layer's cubes given one colour each, in the order said
-                if len(p["to"]["colors"]) != len(idx):
-                    raise SteerError(f"{len(p['to']['colors'])} colours are said for {len(idx)} cubes; say one colour per cube")
-                for i, c in zip(idx, p["to"]["colors"], strict=True):
-                    items[i] = Item(color=c)
-                idx = []
-            for i in idx:
-                items[i] = Item(**p["to"])
+            colours = p["to"].get("colors")  # a layer's cubes given one colour each, in the order said
+            if colours is not None and len(colours) != len(idx):
+                raise SteerError(f"{len(colours)} colours are said for {len(idx)} cubes; say one colour per cube")
+            made = [Item(color=c) for c in colours] if colours is not None else [Item(**p["to"])] * len(idx)
+            for i, item in zip(idx, made, strict=True):
+                items[i] = item
             spec = replace(spec.with_items(items), layer_colors=False if spec.layer_colors and len(idx) < len(items) else spec.layer_colors)
             if spec.word:  # "change the B to a C": the word spelled is the cubes' now
                 spec = replace(spec, word="".join(i.label or "?" for i in spec.items))

@@ -280,9 +280,6 @@ def _pivot_with_roles(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str,
     if not (re.search(rf"(?i)\b(?:{COLOR_RE})\b|\breading\b|\bspell", roles) or re.search(r"\b[A-Z0-9]\b", roles)) \
             or not re.match(r"[\w']", roles):
         return None
-    def kind_of_labels(names: list[str]) -> bool:
-        return all(re.fullmatch(r"[A-Z0-9]", n) for n in names)
-
     if all(a.kind == "colored_cube" for a in cubes):
         names = [a.color for a in cubes]
         listed = f"the {', '.join(names[:-1])} and {names[-1]} cubes" if len(names) > 1 else f"the {names[0]} cube"
@@ -292,8 +289,8 @@ def _pivot_with_roles(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str,
         listed = f"the {kind} cubes {', '.join(names[:-1])} and {names[-1]}"
     else:
         return None
-    said = {canon_color(c) for c in re.findall(rf"(?i)\b(?:{COLOR_RE})\b", roles)} | (  # (a digit among colours is a count)
-        set(re.findall(r"\b([A-Z]|\d)\b", roles)) if kind_of_labels(names) else set(re.findall(r"\b([A-Z])\b", roles)))
+    labels = re.findall(r"\b([A-Z]|\d)\b" if cubes[0].label else r"\b([A-Z])\b", roles)  # (a digit among colours is a count)
+    said = {canon_color(c) for c in re.findall(rf"(?i)\b(?:{COLOR_RE})\b", roles)} | set(labels)
     if said - set(names):  # "stack it instead, D at the bottom" of cubes with no D (it had been dropped)
         raise SteerError(f"the edit gives {', '.join(sorted(said - set(names)))} a place in the {pivots[0].params['to']}, but "
                          f"the task has no such cube ({', '.join(names)}); name the task's cubes, or state the whole new task")
