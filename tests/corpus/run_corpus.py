@@ -75,7 +75,8 @@ STRANGER_SETS = {
     "stranger38": ("stranger38.yaml", "STRANGER set 38 (stranger38.yaml, transfer measure of the twenty-seventh session; development material from the twenty-eighth)"),
     "stranger39": ("stranger39.yaml", "STRANGER set 39 (stranger39.yaml, transfer measure of the twenty-eighth session; development material from the twenty-ninth)"),
     "stranger40": ("stranger40.yaml", "STRANGER set 40 (stranger40.yaml, transfer measure of the twenty-ninth session; development material from the thirtieth)"),
-    "stranger41": ("stranger41.yaml", "STRANGER set 41 (stranger41.yaml, transfer measure of the thirtieth session: aggregates only, and a helper's abstract failure classes mid-session)"),
+    "stranger41": ("stranger41.yaml", "STRANGER set 41 (stranger41.yaml, transfer measure of the thirtieth session; development material from the thirty-first)"),
+    "stranger42": ("stranger42.yaml", "STRANGER set 42 (stranger42.yaml, transfer measure of the thirty-first session: aggregates only)"),
 }
 SPLITS = HERE / "splits.yaml"
 
