@@ -6448,9 +6448,37 @@ def test_a_start_said_now_then_undone(text, expected):
 def test_the_towers_middle_said_before_its_ends():
     """"The middle cube of the tower is pink; gray is at the base and white at the top": the tower the text goes on to
     describe (refused before as a tower nobody described); a tower named with nothing else said of it stays refused."""
-    text = "The middle cube of the tower is pink; gray is at the base and white at the top."
-    schema = parse(text)
-    assert sorted(meaning(schema)) == ["stack(gray,pink,white)"]
-    assert uncited(schema, text) == []
+    for text in ("The middle cube of the tower is pink; gray is at the base and white at the top.",
+                 "The middle of the tower should be the pink cube; gray goes on the bottom and white goes on top."):
+        schema = parse(text)
+        assert sorted(meaning(schema)) == ["stack(gray,pink,white)"]
+        assert uncited(schema, text) == []
     with pytest.raises((ParseError, Inexpressible)):
         parse("Put the red cube on top of the tower.")
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Put a green cube on each of the two patches, the red patch and the blue patch.",
+     ["on_patch(green,patch:blue)", "on_patch(green,patch:red)"]),
+    ("Put a green cube on each of the red and blue patches, and a red cube on the yellow patch.",
+     ["on_patch(green,patch:blue)", "on_patch(green,patch:red)", "on_patch(red,patch:yellow)"]),
+])
+def test_a_cube_on_each_of_two_patches_named(text, expected):
+    """"a green cube on each of the red and blue patches": one green cube on each patch named (refused before: how many
+    patches, or each patch said twice); a third patch listed is not cut off (refused, not read as two)."""
+    schema = parse(text)
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []
+    with pytest.raises((ParseError, Inexpressible)):
+        parse("put a green cube on each of the red patch and the blue patch and the yellow patch")
+
+
+def test_a_cube_moved_from_the_start_stack():
+    """"There is a stack of blue on red. Move the blue cube from the stack onto the yellow patch.": "from the stack" is the
+    start's stack (refused before as a cube picked by where it stands); said with no start, it stays refused."""
+    text = "There is a stack of blue on red. Move the blue cube from the stack onto the yellow patch."
+    schema = parse(text)
+    assert sorted(meaning(schema)) == ["on_patch(blue,patch:yellow)", "start:stack(red,blue)"]
+    assert uncited(schema, text) == []
+    with pytest.raises((ParseError, Inexpressible)):
+        parse("Move the blue cube from the stack onto the yellow patch.")

@@ -895,6 +895,21 @@ def taken_down_as_unstack(text: str) -> str:
     return TAKE_DOWN_AFTER_RE.sub(r"unstack \1", TAKE_DOWN_RE.sub("unstack ", text))
 
 
+FROM_START_STACK_RE = re.compile(
+    r"(?i)^(?=\s*(?:there(?:'s|\s+is)|currently|right\s+now)\b[^.;!?]*\b(?:stack|tower|on|atop)\b[^.;!?]*[.;])"
+    r"(?P<before>[^.;!?]*[.;][^.!?]*?\b(?:cube|block|it))\s+from\s+(?:the|that|this)\s+(?:stack|tower)\b"
+    r"(?=\s+(?:on|onto|to|into|in|next|beside|behind)\b)")
+"""A cube moved "from the stack" after a first sentence that says the stack there now ("There is a stack of blue on red.
+Move the blue cube from the stack onto the yellow patch."): that start's stack, which the words before said; the source
+dropped by :func:`start_stack_source` (it had been refused as a cube picked by where it stands; said with no start before
+it, it stays refused)."""
+
+
+def start_stack_source(text: str) -> str:
+    """``text`` without "from the stack" where it is the start said in its first sentence (:data:`FROM_START_STACK_RE`)."""
+    return FROM_START_STACK_RE.sub(r"\g<before>", text, count=1)
+
+
 NEEDS_MORE_RE = re.compile(r"(?i)(?:^|(?<=[.!?;]\s))(?:it\s+|this\s+|the\s+(?:tower|stack|row|line|pyramid|wall)\s+)?(?:needs|must\s+have"
                            r"|should\s+have|requires|wants|is\s+missing|lacks)\s+(?:a|an|some|more|another|its|one)\s+[a-z]+(?:\s+[a-z]+)?\s*[.!]?(?=\s|$)")
 """A sentence that says the task needs something more ("Needs a roof.", "Must have a hat.", "The tower needs a
@@ -4055,8 +4070,16 @@ EDGE_AND_EACH_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b(?:a|one)\s+({COLOR_RE})\s+(tower|stack|column)\s+and\s+(?:a|one|another)\s+({COLOR_RE})\s+(?:tower|stack|column)"
                 r",?\s+(?:each|both)\s+(\d+|two|three|four|five|six)\s+(?:(?:blocks?|cubes?|levels?|stor(?:y|ey|ies|eys))\s+)?(?:high|tall)\b"),
      r"a \2 of \4 \1 blocks and a \2 of \4 \3 blocks"),
+    # "a green cube on each of the two patches, the red patch and the blue patch", "... on each of the red and blue
+    # patches": the two patches named, a cube of that colour on each (refused before: how many patches, or each said twice)
+    (re.compile(rf"\b(?:a|one|1)\s+(?:({COLOR_RE})\s+)?(block|cube)\s+(?:on|onto)\s+(?:each|both)\s+(?:of\s+)?(?:the\s+)?"
+                rf"(?:(?:2|two)\s+(?:goal\s+)?patches\s*(?:[,:]|\s-|\u2014)\s*(?:the\s+)?({COLOR_RE})(?:\s+patch)?\s+and\s+(?:the\s+)?({COLOR_RE})\s+patch"
+                rf"|({COLOR_RE})\s+(?:patch\s+)?and\s+(?:the\s+)?({COLOR_RE})\s+(?:goal\s+)?patch(?:es)?)\b(?!\s*,?\s*(?:and\s+)?(?:the\s+)?(?:{COLOR_RE})(?:\s+patch|\s*[.,]|\s+and))"),
+     lambda m: (lambda c, p1, p2: f"a {c}{m.group(2)} on the {p1} patch and another {c}{m.group(2)} on the {p2} patch")(
+         f"{m.group(1)} " if m.group(1) else "", m.group(3) or m.group(5), m.group(4) or m.group(6))),
 )
-""""along the back edge" (at that edge) and "each three high" (the height reaches each tower)."""
+""""along the back edge" (at that edge), "each three high" (the height reaches each tower) and "a green cube on each of
+the red and blue patches" (one on each patch named)."""
 
 PATCH_CENTRE_AND_START_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "into the middle of the black patch": on it (a cube on a patch is on it wherever it stands there)
@@ -4524,7 +4547,7 @@ TOWER_BETWEEN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # describe, said as "the tower's middle cube" (it had been refused as a tower nobody described); only where the text
     # gives a second place of the tower to another cube
     (re.compile(r"(?i)^\s*the\s+(middle|top|bottom|base|lowest|highest)\s+(cube|block|one)?\s*of\s+the\s+(tower|stack)\s+(?=(?:is|should\s+be|must\s+be)\s+"
-                r"[a-z]+\s*[;,.]\s*(?:and\s+)?[a-z]+\s+(?:is\s+|goes\s+|sits\s+)?(?:at|on)\s+(?:the\s+)?(?:base|bottom|top)\b)"),
+                r"(?:the\s+)?[a-z]+(?:\s+(?:cube|block|one))?\s*[;,.]\s*(?:and\s+)?[a-z]+\s+(?:is\s+|goes\s+|sits\s+)?(?:at|on)\s+(?:the\s+)?(?:base|bottom|top)\b)"),
      lambda m: f"the {m.group(3)}'s {m.group(1)} {m.group(2) or 'cube'} "),
     # "the cyan cube is sandwiched between them", "with the blue one squeezed in the middle": the middle said plainly
     (re.compile(r"\b(?:wedged|squeezed|sandwiched|tucked|nestled)\s+(?=(?:in\s+)?between\s+(?:them|those\s+two|the\s+two)\b"

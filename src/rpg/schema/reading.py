@@ -1125,6 +1125,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
         raise ParseError(f"'{needs.group(0).strip()}' in \"{original[:80]}\" says the task needs something it does not name as "
                          "cubes; say which cube goes where (e.g. \"put a green cube on top\"), or use --model")
     original = lexicon.taken_down_as_unstack(original)  # "Take down the tower.": an undoing (a tower had been built)
+    original = lexicon.start_stack_source(original)  # "There is a stack of blue on red. Move blue from the stack onto ..."
     original = lexicon.FILLER_RE.sub("", original).strip()
     original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", original)  # texting's "2" for "to"
     original = lexicon.TEXTED_YOU_RE.sub("you", original)  # "can u build ...": texting's "u"
