@@ -1950,3 +1950,24 @@ def test_a_count_among_a_pivots_roles_is_no_label(tmp_path):
     """Review: a digit among a coloured task's roles ("a tower of 3, pink on top") is a count, not a cube the task lacks."""
     assert _steered(tmp_path, "Make a pyramid of three pink cubes", "make it a tower of 3, pink on top") == [
         ("pivot", ["stack(pink,pink,pink)"])]
+
+
+def test_bare_colours_added_and_the_count_said_again(tmp_path):
+    """"five cubes, add a yellow and an orange at the right end" (colours with no noun, the count the additions reach) and
+    "same five but reversed" (the count said again, then the change) were refused; a count the version does not have
+    stays refused, and so does an addition that misses the count said."""
+    base = "Put three cubes in a row from left to right: red, green, blue"
+    assert _steered(tmp_path, base, "five cubes, add a yellow and an orange at the right end, in that order",
+                    "same five but reversed") == [
+        ("extend", ["line[left_to_right](red,green,blue,yellow,orange)"]),
+        ("modify", ["line[left_to_right](orange,yellow,blue,green,red)"])]
+    fam = Family(create_family(compile_instruction(base, tmp_path / "b", name="fam").path).path)
+    for edit in ("same four but reversed", "six cubes, add a yellow and an orange at the right end"):
+        with pytest.raises(SteerError):
+            steer(fam.path, edit)
+
+
+def test_the_letters_stacked_instead(tmp_path):
+    """"stack the letters instead, C at the bottom" of a spelled word was refused as changing nothing."""
+    assert _steered(tmp_path, "Spell CAT with letter cubes from left to right", "stack the letters instead, C at the bottom") == [
+        ("pivot", ["stack(C,A,T)"])]

@@ -2922,6 +2922,12 @@ EDIT_OPENING = r"^\s*(?:(?i:nah|no|ok(?:ay)?|so|and|then|hmm|actually|now)[\s,]+
 """The words an edit may open with before what it says ("nah, other way round", "ok so instead of ...",
 "actually, left to right: ..."): they change nothing."""
 
+EDIT_SAME_COUNT_RE = re.compile(
+    rf"(?i)^\s*(?:(?:now|ok(?:ay)?|then)\s*,?\s*)*(?:the\s+)?same\s+(?P<n>\d+|{COUNT_WORD_RE})\s*(?:cubes|blocks|ones|letters|digits)?\s*,?\s*"
+    r"(?:but\s+)?(?=\S)")
+"""An edit that opens by saying the count of the version it builds on again ("same five but reversed", "same 4, but
+pink on top"): checked, not applied (the steering refuses when the version has another count); the rest is the change."""
+
 EDIT_REST_STAYS_RE = re.compile(
     rf"(?i)\s*[,;]\s*(?:and\s+|but\s+|while\s+)?(?:the\s+|all\s+the\s+)?(?:rest|others|other\s+(?:ones|cubes|blocks)|ones\s+in\s+between"
     r"|(?:ones|cubes|blocks)\s+in\s+(?:between|the\s+middle)|middle\s+ones|everything\s+else|remaining\s+(?:ones|cubes|blocks))\s+"
@@ -2938,12 +2944,20 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # task's cubes made into that structure (the roles after it are read with them)
     (re.compile(r"(?i)^\s*(?:(?:now|then|ok(?:ay)?|so)\s*,?\s*)+(tower|stack|row|line|pyramid|circle|ring)\s*(?=,)"), r"make it a \1"),
     (re.compile(r"(?i)(?<=,)\s*(tower|stack|row|line|pyramid|circle|ring)\s+instead\s*(?=,)"), r" make it a \1 instead"),
-    (re.compile(r"(?i)^\s*(?:(?:now|then|ok(?:ay)?|so)\s*,?\s*)*(?:stack|pile)\s+(?:it|them)(?:\s+up)?\s+instead\s*(?=,)"), r"make it a tower instead"),
+    (re.compile(r"(?i)^\s*(?:(?:now|then|ok(?:ay)?|so)\s*,?\s*)*(?:stack|pile)\s+(?:it|them|them\s+all|all\s+of\s+them|everything"
+                r"|(?:all\s+)?the\s+(?:letters|digits|numbers|cubes|blocks|letter\s+cubes|digit\s+cubes))(?:\s+up)?\s+instead\s*(?=,)"),
+     r"make it a tower instead"),
     # "make it 3 tall with a pink one on top": the cube added there (the count said again, checked)
     (re.compile(rf"(?i)\b(tall|high|long)\s+with\s+(an?\s+(?:{COLOR_RE})\s+(?:one|cube|block))\s+(on\s+top|at\s+the\s+(?:top|bottom|end|start))\b"),
      r"\1, put \2 \3"),
     # "four, and the top one orange": that count, and the change after it
     (re.compile(rf"(?i)^\s*(?:(?:now|ok(?:ay)?|then)\s*,?\s*)*(\d+|{COUNT_WORD_RE})\s*,\s*(?=and\s+)"), r"make it \1, "),
+    # "reversed", "but backwards", "same cubes but in reverse order": the task reversed
+    (re.compile(r"(?i)^\s*(?:(?:now|ok(?:ay)?|then|but|and)\s*,?\s*)*(?:(?:the\s+)?same\s+(?:cubes|blocks|ones|letters|digits|thing)\s*,?\s*(?:but\s+)?)?"
+                r"(?:reversed|in\s+reverse(?:\s+order)?|backwards|the\s+other\s+way\s+(?:round|around))\s*[.!]?\s*$"), "reverse it"),
+    # "five cubes, add a yellow and an orange at the right end": the count the additions reach (checked), then the additions
+    (re.compile(rf"(?i)^\s*(?:(?:now|ok(?:ay)?|then)\s*,?\s*)*(\d+|{COUNT_WORD_RE})\s+(cubes|blocks)\s*,\s*(?=(?:and\s+)?add\s)"),
+     r"make it \1 \2, "),
     # "all row to back side": the whole structure moved to that side
     (re.compile(r"(?i)^\s*(?:move\s+|put\s+)?all\s+(row|tower|stack|line|pyramid|wall|grid|circle)\s+(?:to|in|on)\s+(?:the\s+)?"
                 r"(back|front|left|right)(?:\s+(side|half|edge))?\s*[.!]?\s*$"),
@@ -2951,6 +2965,9 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "add brown also close to green": a cube of that colour added there
     (re.compile(rf"(?i)\badd\s+({COLOR_RE})\s+(?:also\s+)?(?=(?:close\s+to|next\s+to|near|beside|behind|in\s+front\s+of|on\s+top\s+of|on|to\s+the)\b)"),
      r"add a \1 cube "),
+    # "add a yellow and an orange at the right end", "add yellow and orange on top": a cube of each colour added there
+    (re.compile(rf"(?i)\badd\s+(?:(?:a|an|one)\s+)?({COLOR_RE})\s+and\s+(?:(?:a|an|one)\s+)?({COLOR_RE})\b(?!\s+(?:ones?|cubes?|blocks?)\b)"),
+     lambda m: "add " + " and ".join(("an " if c[0] in "aeiou" else "a ") + f"{c} cube" for c in m.group(1, 2))),
     # "cyan take out": that cube removed
     (re.compile(rf"(?i)^\s*(?:the\s+)?({COLOR_RE})(?:\s+(?:one|cube|block))?\s+(?:take\s+out|take\s+away|take\s+off|remove|out|away)\s*"
                 r"(?:please|pls)?\s*[.!]?\s*$"), r"remove the \1 one"),

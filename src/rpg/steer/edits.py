@@ -42,6 +42,7 @@ from rpg.schema.lexicon import (
     EDIT_OPENING,
     EDIT_REFERS_RE,
     EDIT_REST_STAYS_RE,
+    EDIT_SAME_COUNT_RE,
     EDIT_REWRITES,
     EDIT_SHOULD_BE_RE,
     EDIT_SWAP_BOTH_RE,
@@ -90,7 +91,7 @@ OP_INTENT = {
     "material": "modify", "ordering": "modify", "reverse": "modify", "outliers": "modify",
     "relabel": "tweak", "swap": "modify", "word": "modify", "colors": "tweak", "structure": "pivot",
     "move": "modify", "pattern": "tweak", "direction": "modify", "keep": "tweak", "region": "modify", "add_layer": "extend",
-    "arrange": "modify", "rest": "tweak",
+    "arrange": "modify", "rest": "tweak", "same": "tweak",
 }
 """The intent each operation implies; an edit's intent is the strongest of its operations."""
 
@@ -803,11 +804,22 @@ def interpret(edit: str) -> EditPlan:
     """Read an edit into a plan (reference cue, operations or a whole new task).
 
     A closing clause saying the other cubes keep their colour ("make both ends orange, the ones in
-    between stay blue": :data:`EDIT_REST_STAYS_RE`) becomes a ``rest`` operation that checks it.
+    between stay blue": :data:`EDIT_REST_STAYS_RE`) becomes a ``rest`` operation that checks it; an
+    opening that says the count again ("same five but reversed": :data:`EDIT_SAME_COUNT_RE`) a ``same``
+    operation that checks the version's count.
 
     Raises:
         SteerError: empty edit; such a clause beside no recolour.
     """
+    same = EDIT_SAME_COUNT_RE.match(edit or "")
+    if same:  # "same five but reversed": the count checked against the version built on, the rest read as the change
+        try:
+            plan = interpret(edit[same.end():])
+        except BadInput:
+            plan = None
+        if plan is not None and not plan.standalone and plan.ops:  # (otherwise the whole edit is read: "now the same three
+            # in a tower" restates the task's cubes)
+            return replace(plan, ops=[Op("same", {"n": int(NUMBER_WORDS.get(same.group("n").lower(), same.group("n")))}), *plan.ops])
     rest = EDIT_REST_STAYS_RE.search(edit or "")
     if rest is None:
         return _interpret(edit)
@@ -1277,7 +1289,7 @@ def _fit_structure(spec: TaskSpec, target: str) -> TaskSpec:
         raise SteerError(f"cannot turn a {spec.structure} into a {target}: {exc}") from None
 
 
-APPLY_ORDER = ("keep", "region", "structure", "add_layer", "material", "word", "dims", "count", "colors", "remove", "recolor", "relabel", "pattern", "add",
+APPLY_ORDER = ("same", "keep", "region", "structure", "add_layer", "material", "word", "dims", "count", "colors", "remove", "recolor", "relabel", "pattern", "add",
                "move", "swap", "reverse", "ordering", "arrange", "direction", "outliers", "rest")
 """Order in which an edit's operations are applied to the spec."""
 
@@ -1330,7 +1342,11 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
     touched: set[int] = set()  # the cubes recoloured, for a "rest" op ("the rest stay blue")
     for o in sorted(ops, key=lambda o: APPLY_ORDER.index(o.op)):
         p = o.params
-        if o.op == "rest":
+        if o.op == "same":
+            if len(spec.items) != p["n"]:
+                raise SteerError(f"the edit says the same {p['n']} cubes, but the version it builds on has {len(spec.items)}; "
+                                 "name the version to build on, or say the change without the count")
+        elif o.op == "rest":
             other = [it for i, it in enumerate(spec.items) if i not in touched]
             if not other or any(it.color != p["color"] for it in other):
                 raise SteerError(f"the edit says the other cubes stay {p['color']}, but the {spec.structure}'s other cubes are "
