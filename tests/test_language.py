@@ -6482,3 +6482,21 @@ def test_a_cube_moved_from_the_start_stack():
     assert uncited(schema, text) == []
     with pytest.raises((ParseError, Inexpressible)):
         parse("Move the blue cube from the stack onto the yellow patch.")
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("In this environment, the green cube must end up in the right half of the table.", ["in_region(green,right)"]),
+    ("This tutorial task asks the agent to stack the red cube on the blue cube.", ["stack(blue,red)"]),
+    ("The policy is evaluated on placing the blue cube between the red and yellow cubes.", ["between(blue;red,yellow)"]),
+])
+def test_a_papers_framing_of_the_task(text, expected):
+    """How a paper frames a task ("In this environment, ...", "This tutorial task asks the agent to ...", "The policy is
+    evaluated on placing ...") had been refused for 'environment', 'agent', 'evaluated'; a colour before "task" is not
+    dropped as framing (refused), and a negation after the framing stays refused."""
+    schema = parse(text)
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []
+    for refused in ("This red task asks the robot to stack the blue cube on the green cube.",
+                    "In this environment, do not put red on blue."):
+        with pytest.raises((ParseError, Inexpressible)):
+            parse(refused)

@@ -1909,6 +1909,14 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
     # "Success requires no particular orientation.": no goal judges a cube's yaw unless it says so
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:success|the\s+goal|it)\s+(?:requires|needs|demands|has)\s+no\s+particular\s+"
                r"(?:orientation|rotation|yaw|heading)\s*[.!]?\s*"),
+    # "In this environment, the green cube must ...", "For this benchmark, put ...": the setting a paper names, no content
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:in|for)\s+this\s+(?:task|episode|environment|setting|benchmark|experiment|study|scenario"
+               r"|eval(?:uation)?|variant|level)\s*,\s*"),
+    # "This tutorial task asks the agent to build ...", "The benchmark requires the robot to ...": what it asks is the task
+    # (its own words before "task" are no colour and no number)
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:this|the|our|each)\s+(?:(?!(?:" + COLOR_RE + r"|\d+|one|two|three|four|five|six)\b)[a-z]+\s+){0,2}?"
+               r"(?:task|benchmark|environment|episode|challenge|exercise|test|experiment|scenario)\s+(?:asks|requires|tells|instructs"
+               r"|wants|expects|challenges)\s+(?:the\s+)?(?:agent|robot|policy|arm|learner|controller)\s+to\s+"),
     # "In this task(,) the agent must ...", "The policy must ...": the task follows
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:in\s+this\s+(?:task|episode|environment|setting)\s*,?\s*)?(?:the\s+)?"
                r"(?:agents?|robots?|polic(?:y|ies)|controllers?|learners?)\s+(?:must|should|has\s+to|have\s+to|needs?\s+to"
@@ -3488,6 +3496,12 @@ GOAL_FRAME_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "right now", "right away": a time, not the right side of the table ("... on the blue cube right now" had put red on
     # the right of blue)
     (re.compile(r"\bright\s+(?:(now)|away)\b"), lambda m: m.group(1) or ""),
+    # "The policy is evaluated on placing the blue cube between ...": the act it is judged on is the task
+    (re.compile(r"(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:agent|robot|policy|arm|learner|controller)\s+is\s+(?:evaluated|tested|scored|judged"
+                r"|assessed|graded|rewarded)\s+(?:on|for)\s+(?:(?:its\s+ability\s+to|how\s+well\s+it\s+can)\s+(?=[a-z]+\s)|(stack|plac|putt|lin"
+                r"|arrang|build|mak|mov|pil)ing\b)"),
+     lambda m: "" if not m.group(1) else {"stack": "stack", "plac": "place", "putt": "put", "lin": "line", "arrang": "arrange",
+                                          "build": "build", "mak": "make", "mov": "move", "pil": "pile"}[m.group(1)]),
     # "arranging ... in a row, then stacking them": a later step said as a gerund is a step (it had been dropped)
     (re.compile(r"\b(then|and\s+then|after\s+that|afterwards)\s+(stack|plac|putt|lin|arrang|build|mak|mov|pil)ing\b"),
      lambda m: f"{m.group(1)} " + {"stack": "stack", "plac": "place", "putt": "put", "lin": "line", "arrang": "arrange", "build": "build",
