@@ -6500,3 +6500,22 @@ def test_a_papers_framing_of_the_task(text, expected):
                     "In this environment, do not put red on blue."):
         with pytest.raises((ParseError, Inexpressible)):
             parse(refused)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Two rows: three red cubes at the front and three blue cubes at the back.",
+     ["line(blue,blue,blue)@back", "line(red,red,red)@front"]),
+    ("Place one cube on each patch: red cube on the blue patch, blue cube on the red patch.",
+     ["on_patch(blue,patch:red)", "on_patch(red,patch:blue)"]),
+])
+def test_a_heading_said_again_by_its_parts(text, expected):
+    """"Two rows: <one group>, <another>" (no structure had been read) and "one cube on each patch: <each cube's patch>"
+    (refused as each said twice); three rows said for two groups, or two cubes on one patch under "each patch", stay
+    refused."""
+    schema = parse(text)
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []
+    for refused in ("Three rows: three red cubes and three blue cubes.",
+                    "Place one cube on each patch: red cube on the blue patch, blue cube on the blue patch."):
+        with pytest.raises((ParseError, Inexpressible)):
+            parse(refused)

@@ -4108,6 +4108,12 @@ EDGE_AND_EACH_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 rf"|({COLOR_RE})\s+(?:patch\s+)?and\s+(?:the\s+)?({COLOR_RE})\s+(?:goal\s+)?patch(?:es)?)\b(?!\s*,?\s*(?:and\s+)?(?:the\s+)?(?:{COLOR_RE})(?:\s+patch|\s*[.,]|\s+and))"),
      lambda m: (lambda c, p1, p2: f"a {c}{m.group(2)} on the {p1} patch and another {c}{m.group(2)} on the {p2} patch")(
          f"{m.group(1)} " if m.group(1) else "", m.group(3) or m.group(5), m.group(4) or m.group(6))),
+    # "place one cube on each patch: red cube on the blue patch, blue cube on the red patch": the heading said again by
+    # the assignments after it, each to another patch (refused before as each said twice)
+    (re.compile(rf"\b(?:place|put|set)\s+(?:one|a|1)\s+(?:cube|block)\s+on\s+each\s+(?:goal\s+)?patch\s*:\s*"
+                rf"(?=(?:the\s+)?(?:{COLOR_RE})\s+(?:cube|block)\s+(?:on|onto)\s+the\s+(?P<p1>{COLOR_RE})\s+(?:goal\s+)?patch\s*(?:,|and)\s*"
+                rf"(?:and\s+)?(?:the\s+)?(?:{COLOR_RE})\s+(?:cube|block)\s+(?:on|onto)\s+the\s+(?P<p2>{COLOR_RE})\s+(?:goal\s+)?patch\s*[.!]?\s*$)"),
+     lambda m: m.group(0) if m.group("p1") == m.group("p2") else "put the "),
 )
 """"along the back edge" (at that edge), "each three high" (the height reaches each tower) and "a green cube on each of
 the red and blue patches" (one on each patch named)."""
@@ -4406,6 +4412,14 @@ STRUCTURE_NOUN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "two separate towers, one of two red cubes and one of two blue cubes": several structures are apart anyway
     (re.compile(rf"\b(\d+|{COUNT_WORD_RE})\s+(?:separate|distinct|different|individual|independent)\s+(?=(?:towers|stacks|rows|lines|piles|columns)\b)"),
      r"\1 "),
+    # "two rows: three red cubes at the front and three blue cubes at the back", "build two rows, one of three red cubes
+    # and one of three blue cubes": a row of each (refused before: no structure read); two rows, two groups said
+    (re.compile(rf"^\s*(?:(?:make|build|form|create)\s+)?(2|two)\s+(rows|lines)\s*(?::|,\s*one\s+of)\s*"
+                rf"(?P<a>\d+|{COUNT_WORD_RE})\s+(?P<ca>{COLOR_RE})\s+(?:cubes|blocks)(?P<pa>\s+(?:at|in|along)\s+the\s+(?:front|back|left|right)(?:\s+(?:side|edge))?)?"
+                rf"\s*,?\s+and\s+(?:one\s+of\s+)?(?P<b>\d+|{COUNT_WORD_RE})\s+(?P<cb>{COLOR_RE})\s+(?:cubes|blocks)"
+                rf"(?P<pb>\s+(?:at|in|along)\s+the\s+(?:front|back|left|right)(?:\s+(?:side|edge))?)?(?=\s*[.!]?\s*$)"),
+     lambda m: f"make a {m.group(2)[:-1]} of {m.group('a')} {m.group('ca')} cubes{m.group('pa') or ''} and a {m.group(2)[:-1]} of "
+               f"{m.group('b')} {m.group('cb')} cubes{m.group('pb') or ''}"),
     (re.compile(r"\bvertical (?:column|stack)\b|\bpillar\b"),
      "tower"),
     # "a column of three cubes going from front to back" lies along the table
