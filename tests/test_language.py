@@ -6519,3 +6519,18 @@ def test_a_heading_said_again_by_its_parts(text, expected):
                     "Place one cube on each patch: red cube on the blue patch, blue cube on the blue patch."):
         with pytest.raises((ParseError, Inexpressible)):
             parse(refused)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Put the red cube and the blue cube next to the cyan cube.", ["next_to(blue,cyan)", "next_to(cyan,red)"]),
+    ("Bring both purple cubes next to the cyan cube.", ["next_to(cyan,purple)", "next_to(cyan,purple)"]),
+    ("Put the red and blue cubes behind the yellow cube.", ["behind(blue,yellow)", "behind(red,yellow)"]),
+])
+def test_a_relation_said_of_two_cubes_at_once(text, expected):
+    """"the red cube and the blue cube next to the cyan cube": the relation holds for each (refused before: one cube had no
+    place, or "both purple cubes" was read as one); two cubes put "on" one cube stay refused (which is on top?)."""
+    schema = parse(text)
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []
+    with pytest.raises((ParseError, Inexpressible)):
+        parse("Put the red cube and the blue cube on the cyan cube.")

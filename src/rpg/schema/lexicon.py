@@ -4114,9 +4114,20 @@ EDGE_AND_EACH_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 rf"(?=(?:the\s+)?(?:{COLOR_RE})\s+(?:cube|block)\s+(?:on|onto)\s+the\s+(?P<p1>{COLOR_RE})\s+(?:goal\s+)?patch\s*(?:,|and)\s*"
                 rf"(?:and\s+)?(?:the\s+)?(?:{COLOR_RE})\s+(?:cube|block)\s+(?:on|onto)\s+the\s+(?P<p2>{COLOR_RE})\s+(?:goal\s+)?patch\s*[.!]?\s*$)"),
      lambda m: m.group(0) if m.group("p1") == m.group("p2") else "put the "),
+    # "put the red cube and the blue cube next to the cyan cube", "bring both purple cubes next to the cyan cube": the
+    # relation said of each cube (refused before: one of them had no place, or one purple cube was read)
+    (re.compile(rf"\b(put|place|move|set|bring|position|get)\s+(?:(?:both\s+)?(?:the\s+)?(?P<a>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+and\s+"
+                rf"(?:the\s+)?(?P<b>{COLOR_RE})\s+(?:cubes?|blocks?|ones?)|(?:both\s+(?:the\s+)?|the\s+(?:2|two)\s+|(?:2|two)\s+)(?P<c>{COLOR_RE})\s+(?:cubes|blocks))"
+                r"\s+(?P<rel>next\s+to|beside|(?:to\s+the\s+)?(?:left|right)\s+of|behind|in\s+front\s+of|far\s+(?:away\s+)?from|near)\s+"
+                rf"(?:the\s+)?(?P<o>{COLOR_RE})(?:\s+(?:cube|block|one))?(?=\s*(?:[.!;]|$))"),
+     lambda m: (f"{m.group(1)} the {m.group('a')} cube {m.group('rel')} the {m.group('o')} cube and the {m.group('b')} cube "
+                f"{m.group('rel')} the {m.group('o')} cube") if m.group("a") else
+               (f"{m.group(1)} a {m.group('c')} cube {m.group('rel')} the {m.group('o')} cube and another {m.group('c')} cube "
+                f"{m.group('rel')} the {m.group('o')} cube")),
 )
-""""along the back edge" (at that edge), "each three high" (the height reaches each tower) and "a green cube on each of
-the red and blue patches" (one on each patch named)."""
+""""along the back edge" (at that edge), "each three high" (the height reaches each tower), "a green cube on each of
+the red and blue patches" (one on each patch named) and "the red and the blue cube next to the cyan cube" (each next to
+it)."""
 
 PATCH_CENTRE_AND_START_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "into the middle of the black patch": on it (a cube on a patch is on it wherever it stands there)
