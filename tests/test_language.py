@@ -6534,3 +6534,19 @@ def test_a_relation_said_of_two_cubes_at_once(text, expected):
     assert uncited(schema, text) == []
     with pytest.raises((ParseError, Inexpressible)):
         parse("Put the red cube and the blue cube on the cyan cube.")
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Orange cube put behind green cube, cyan cube put in front green cube.", ["behind(orange,green)", "in_front_of(cyan,green)"]),
+    ("Brown cube go next to white cube, and red cube go to back.", ["in_region(red,back)", "next_to(brown,white)"]),
+    ("The brown cube is next to the white cube, and the red cube is at the back.", ["in_region(red,back)", "next_to(brown,white)"]),
+])
+def test_terse_places_with_a_word_dropped_or_a_verb_said(text, expected):
+    """"in front green cube" (an 'of' dropped), "go to back" (an article dropped) and a last clause's side said with a verb
+    ("and the red cube is at the back"): refused before as a cube with no place; a side after a tower's clause, which may
+    be the tower's, stays refused."""
+    schema = parse(text)
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []
+    with pytest.raises((ParseError, Inexpressible)):
+        parse("Put the blue cube on the green cube, and the red cube goes in front.")

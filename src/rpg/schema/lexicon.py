@@ -4401,6 +4401,12 @@ LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\bas\s+the\s+(left|right)(?:\s+(?:one|cube|block|end))?(?=\s*(?:[,.;!]|$|and\b))"), r"on the far \1"),
     (re.compile(r"\bon\s+top\s+(?=the\b)"),
      "on top of "),
+    # "red cube go to back": to the back of the table (an article dropped)
+    (re.compile(r"\b(go|goes|move|moves|moved|put|placed|set)\s+to\s+(back|front)(?=\s*(?:[.,;!]|$))"),
+     r"\1 to the \2"),
+    # "cyan cube put in front green cube", "in front the green cube": in front of it (an 'of' dropped)
+    (re.compile(rf"\bin\s+front\s+(?=(?:the\s+)?(?:{COLOR_RE})\s+(?:cube|block|one)\b)"),
+     "in front of "),
     # "stack of pink cubes, three pink, on the right": the count said after the cubes, with their colour again
     (re.compile(rf"\b(?P<c>{COLOR_RE})\s+(?P<n>cubes|blocks)\s*,\s*(?P<k>\d+|{COUNT_WORD_RE})\s+(?P=c)(?:\s+(?:cubes|blocks|ones))?"
                 r"(?=\s*(?:[,.;!?]|$))"),

@@ -2466,7 +2466,8 @@ _COLOUR_LIST_COMMA_RE = re.compile(rf"\b(?<![\w-])((?:{COLOR_RE}))\s*,\s*(?=(?:t
 
 
 _CLAUSE_SIDE_BEFORE = re.compile(rf"(?:^|[.;:]\s*|\b(?:and|then)\s+)(?:(?:put|place|set|move|leave|keep)\s+)?(?:the\s+|a\s+|an\s+)?"
-                                 rf"(?:{COLOR_RE})\s+(?:block|cube|box|one)\s*$")
+                                 rf"(?:{COLOR_RE})\s+(?:block|cube|box|one)(?:\s+(?:goes|go|is|sits|stands|moves|ends\s+up|(?:must|should)"
+                                 r"\s+(?:be|go|end\s+up)))?\s*$")  # ("and the red cube goes to the back")
 _CLAUSE_SIDE_AFTER = re.compile(rf"\s*,?\s+(?:and|then)\s+(?:(?:put|place|set|move)\s+)?(?:the\s+|a\s+|an\s+)(?:{COLOR_RE})\s+"
                                 r"(?:block|cube|box|one)\b(?!\s+(?:is\s+|goes\s+)?(?:on|to|at|in)\s+the\s+(?:far\s+|very\s+)?"
                                 r"(?:left|right|front|back|rear|middle|center|centre)\b(?!\s+of\b))")
