@@ -6462,6 +6462,8 @@ def test_the_towers_middle_said_before_its_ends():
      ["on_patch(green,patch:blue)", "on_patch(green,patch:red)"]),
     ("Put a green cube on each of the red and blue patches, and a red cube on the yellow patch.",
      ["on_patch(green,patch:blue)", "on_patch(green,patch:red)", "on_patch(red,patch:yellow)"]),
+    ("Put a pink cube on each of the red, green, blue and yellow patches.",
+     ["on_patch(pink,patch:blue)", "on_patch(pink,patch:green)", "on_patch(pink,patch:red)", "on_patch(pink,patch:yellow)"]),
 ])
 def test_a_cube_on_each_of_two_patches_named(text, expected):
     """"a green cube on each of the red and blue patches": one green cube on each patch named (refused before: how many

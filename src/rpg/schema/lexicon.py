@@ -4101,6 +4101,14 @@ EDGE_AND_EACH_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b(?:a|one)\s+({COLOR_RE})\s+(tower|stack|column)\s+and\s+(?:a|one|another)\s+({COLOR_RE})\s+(?:tower|stack|column)"
                 r",?\s+(?:each|both)\s+(\d+|two|three|four|five|six)\s+(?:(?:blocks?|cubes?|levels?|stor(?:y|ey|ies|eys))\s+)?(?:high|tall)\b"),
      r"a \2 of \4 \1 blocks and a \2 of \4 \3 blocks"),
+    # "one cube on each of the red, green and blue patches": a cube on each patch listed (three to six)
+    (re.compile(rf"\b(?:a|one|1)\s+(?:({COLOR_RE})\s+)?(block|cube)\s+(?:on|onto)\s+each\s+(?:of\s+)?(?:the\s+)?"
+                rf"((?:{COLOR_RE})(?:\s+patch)?(?:\s*,\s*(?:the\s+)?(?:{COLOR_RE})(?:\s+patch)?){{1,4}}\s*,?\s+and\s+(?:the\s+)?(?:{COLOR_RE})"
+                rf"\s+(?:goal\s+)?patch(?:es)?)\b(?!\s*,?\s*(?:and\s+)?(?:the\s+)?(?:{COLOR_RE})(?:\s+patch|\s*[.,]|\s+and))"),
+     lambda m: (lambda c, ps: "a " + f" and another ".join([", another ".join(f"{c}{m.group(2)} on the {p} patch" for p in ps[:-1]),
+                                                             f"{c}{m.group(2)} on the {ps[-1]} patch"]))(
+         f"{m.group(1)} " if m.group(1) else "", re.findall(rf"\b(?:{COLOR_RE})\b", m.group(3)))
+     if len(set(re.findall(rf"\b(?:{COLOR_RE})\b", m.group(3)))) == len(re.findall(rf"\b(?:{COLOR_RE})\b", m.group(3))) else m.group(0)),
     # "a green cube on each of the two patches, the red patch and the blue patch", "... on each of the red and blue
     # patches": the two patches named, a cube of that colour on each (refused before: how many patches, or each said twice)
     (re.compile(rf"\b(?:a|one|1)\s+(?:({COLOR_RE})\s+)?(block|cube)\s+(?:on|onto)\s+(?:each|both)\s+(?:of\s+)?(?:the\s+)?"
