@@ -6552,3 +6552,16 @@ def test_terse_places_with_a_word_dropped_or_a_verb_said(text, expected):
     assert uncited(schema, text) == []
     with pytest.raises((ParseError, Inexpressible)):
         parse("Put the blue cube on the green cube, and the red cube goes in front.")
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("start: green on brown. goal: green on table", ["on_table(green)", "start:stack(brown,green)"]),
+    ("1. Start: orange cube sitting on top of the pink cube. 2. Goal: both cubes on the table.",
+     ["on_table(orange)", "on_table(pink)", "start:stack(pink,orange)"]),
+])
+def test_a_start_and_goal_said_tersely(text, expected):
+    """"goal: green on table" (the table's article dropped: read as the start's tower) and a start and goal numbered as
+    steps ("1. Start: ... 2. Goal: ...": the goal had been read alone)."""
+    schema = parse(text)
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []

@@ -905,6 +905,20 @@ dropped by :func:`start_stack_source` (it had been refused as a cube picked by w
 it, it stays refused)."""
 
 
+TABLE_NO_ARTICLE_RE = re.compile(r"(?i)\b(on|onto|to|off|from|across)\s+table\b")
+"""A terse "green on table", "put it to table": the table (an article dropped; the start and goal readers look for "the
+table")."""
+
+NUMBERED_START_GOAL_RE = re.compile(r"(?i)(?:^|(?<=[.;]\s))\s*\d\s*[.)]\s+(?=(?:start|goal|initial(?:ly)?|final|end|target)\b)")
+"""A start and a goal numbered as steps ("1. Start: ... 2. Goal: ..."): the numbers dropped, the labels read."""
+
+
+def start_and_goal_said_tersely(text: str) -> str:
+    """``text`` with the table's article said (:data:`TABLE_NO_ARTICLE_RE`) and a numbered start and goal unnumbered
+    (:data:`NUMBERED_START_GOAL_RE`)."""
+    return NUMBERED_START_GOAL_RE.sub("", TABLE_NO_ARTICLE_RE.sub(r"\1 the table", text)).strip()
+
+
 def start_stack_source(text: str) -> str:
     """``text`` without "from the stack" where it is the start said in its first sentence (:data:`FROM_START_STACK_RE`)."""
     return FROM_START_STACK_RE.sub(r"\g<before>", text, count=1)

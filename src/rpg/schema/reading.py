@@ -1126,6 +1126,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
                          "cubes; say which cube goes where (e.g. \"put a green cube on top\"), or use --model")
     original = lexicon.taken_down_as_unstack(original)  # "Take down the tower.": an undoing (a tower had been built)
     original = lexicon.start_stack_source(original)  # "There is a stack of blue on red. Move blue from the stack onto ..."
+    original = lexicon.start_and_goal_said_tersely(original)  # "1. Start: green on brown. 2. Goal: green on table"
     original = lexicon.FILLER_RE.sub("", original).strip()
     original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", original)  # texting's "2" for "to"
     original = lexicon.TEXTED_YOU_RE.sub("you", original)  # "can u build ...": texting's "u"
