@@ -4539,12 +4539,21 @@ and "last" name the list's ends."""
 
 _ROW_ROLE_BE = r"(?:\s+(?:one|cube|block))?\s*(?:[:=]|\s(?:is|should\s+be|must\s+be)\s)?\s*"
 ROW_ROLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "red cube at leftmost, blue cube at rightmost, yellow cube in middle" (articles dropped): at the row's ends, in its middle
+    (re.compile(r"\b(at|on|in)\s+(left|right|middle)(?=\s*(?:[,.;!]|$)|\s+and\b)"), r"\1 the \2"),
     # "row-3: leftmost=cyan, middle=pink, rightmost=brown", "the left one is red, the middle blue and the right one green":
     # the row's order from that side ("left" had been read as a cube picked by where it stands now)
     (re.compile(rf"\b(?:the\s+)?(?P<a>left|right)(?:most)?{_ROW_ROLE_BE}(?P<c1>{COLOR_RE})\s*[,;]\s*(?:the\s+)?(?:middle|center|centre)"
                 rf"{_ROW_ROLE_BE}(?P<c2>{COLOR_RE})\s*[,;]?\s*(?:and\s+)?(?:the\s+)?(?P<b>left|right)(?:most)?{_ROW_ROLE_BE}(?P<c3>{COLOR_RE})\b"),
      lambda m: m.group(0) if m.group("a") == m.group("b") else
      f"from {m.group('a')} to {m.group('b')}: {m.group('c1')}, {m.group('c2')}, {m.group('c3')}"),
+    # "the leftmost cube should be purple, then orange, with the rightmost being cyan", "leftmost purple, then orange,
+    # rightmost cyan": the row's order from that side, the cubes after "then" between its ends
+    (re.compile(rf"\b(?:the\s+)?(?P<a>left|right)(?:most)?{_ROW_ROLE_BE}(?P<c1>{COLOR_RE})(?P<mid>(?:\s*[,;]?\s*(?:and\s+)?then\s+(?:{COLOR_RE}))+)"
+                rf"\s*[,;]?\s*(?:and\s+|with\s+)?(?:the\s+)?(?P<b>left|right)(?:most)?(?:\s+(?:one|cube|block))?\s*(?:[:=]|\s(?:is|should\s+be"
+                rf"|must\s+be|being)\s)?\s*(?P<cn>{COLOR_RE})\b"),
+     lambda m: m.group(0) if m.group("a") == m.group("b") else
+     f"from {m.group('a')} to {m.group('b')}: " + ", ".join([m.group("c1"), *re.findall(rf"\b(?:{COLOR_RE})\b", m.group("mid")), m.group("cn")])),
     # "row of 3 going left to right: red first, green middle, blue last": the list in its said order (where a direction is
     # said: with none, "first" and "last" name no end, and the words are left to be refused)
     # ("green first, then white, then black last": any number between)
