@@ -6565,3 +6565,22 @@ def test_a_start_and_goal_said_tersely(text, expected):
     schema = parse(text)
     assert sorted(meaning(schema)) == expected
     assert uncited(schema, text) == []
+
+
+@pytest.mark.parametrize("text", [
+    "Put a green cube on each of the red and red patches",  # (two cubes on one patch)
+    "Put a green cube on each of the red and blue patches and put the red cube on it.",  # (on which green cube?)
+    "There is a red cube on the green patch. Move the blue cube from the stack onto the yellow patch.",  # (no stack said)
+    "There is a stack of blue on red. Move the green cube from the stack onto the yellow patch.",  # (green not in it)
+    "The middle of the tower should be the green cube; blue goes on the bottom.",  # (two cubes have no middle)
+    "The middle of the tower should be the wooden cube; blue goes on the bottom and red goes on top.",
+    "The middle of the tower should be the green cube; green goes on the bottom and red goes on top.",
+    "The middle of the tower should be the green cube; blue goes on the bottom and red goes on top. The tower has five cubes.",
+    "The bottom of the tower should be the green cube; blue goes on the bottom and red goes on top.",
+    "This undo task asks the agent to stack the red cube on the blue cube.",  # (the framing word changes the task)
+    "The previous task asks the agent to stack the red cube on the blue cube.",
+])
+def test_this_sessions_readings_refuse_what_they_cannot_place(text):
+    """Attacks on this session's readings (a stranger's, 2026-11-26): each compiled something the words did not say."""
+    with pytest.raises((ParseError, Inexpressible)):
+        check_feasibility(parse(text))

@@ -1971,3 +1971,19 @@ def test_the_letters_stacked_instead(tmp_path):
     """"stack the letters instead, C at the bottom" of a spelled word was refused as changing nothing."""
     assert _steered(tmp_path, "Spell CAT with letter cubes from left to right", "stack the letters instead, C at the bottom") == [
         ("pivot", ["stack(C,A,T)"])]
+
+
+@pytest.mark.parametrize("base, edit", [
+    ("Put three cubes in a row from left to right: red, green, blue", "add a yellow and an orange at the right end, then reverse"),
+    ("Put three cubes in a row from left to right: red, green, blue", "add a yellow and an orange at the right end, in reverse order"),
+    ("Stack the red cube on the green cube and the blue cube on the red cube", "same five but build a tower of pink, white and cyan"),
+    ("Stack the red cube on the green cube and the blue cube on the red cube", "same letters but reversed"),
+    ("Spell CAT with letter cubes from left to right", "stack the digits instead, C at the bottom"),
+    ("Build a pyramid with three orange cubes on the bottom, two yellow cubes in the middle and a red cube on top", "reversed"),
+])
+def test_edits_that_say_what_the_version_lacks_are_refused(tmp_path, base, edit):
+    """Attacks on this session's edits (a stranger's): each had applied a change the words did not say (a reversal
+    dropped, a count or the task's letters the version does not have, a pyramid's layers mixed)."""
+    fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
+    with pytest.raises(SteerError):
+        steer(fam.path, edit)

@@ -920,8 +920,17 @@ def start_and_goal_said_tersely(text: str) -> str:
 
 
 def start_stack_source(text: str) -> str:
-    """``text`` without "from the stack" where it is the start said in its first sentence (:data:`FROM_START_STACK_RE`)."""
-    return FROM_START_STACK_RE.sub(r"\g<before>", text, count=1)
+    """``text`` without "from the stack" where it is the start said in its first sentence (:data:`FROM_START_STACK_RE`):
+    only where that sentence says a stack of two named cubes (no patch) and names the cube moved ("it" is its top)."""
+    def dropped(m: re.Match) -> str:
+        first = re.split(r"[.;]", m.group("before"), maxsplit=1)[0].lower()
+        said = re.findall(rf"\b(?:{COLOR_RE})\b", first)
+        moved = re.search(rf"\b({COLOR_RE})\s+(?:cube|block)$|\bit$", m.group("before").lower())
+        stack = re.search(r"\b(?:stack|tower|on\s+top\s+of|atop|on)\b", first) and not re.search(r"\bpatch|table\b", first)
+        if len(said) != 2 or len(set(said)) != 2 or not stack or not moved or (moved.group(1) and moved.group(1) not in said):
+            return m.group(0)
+        return m.group("before")
+    return FROM_START_STACK_RE.sub(dropped, text, count=1)
 
 
 NEEDS_MORE_RE = re.compile(r"(?i)(?:^|(?<=[.!?;]\s))(?:it\s+|this\s+|the\s+(?:tower|stack|row|line|pyramid|wall)\s+)?(?:needs|must\s+have"
@@ -1928,7 +1937,8 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
                r"|eval(?:uation)?|variant|level)\s*,\s*"),
     # "This tutorial task asks the agent to build ...", "The benchmark requires the robot to ...": what it asks is the task
     # (its own words before "task" are no colour and no number)
-    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:this|the|our|each)\s+(?:(?!(?:" + COLOR_RE + r"|\d+|one|two|three|four|five|six)\b)[a-z]+\s+){0,2}?"
+    re.compile(r"(?:^|(?<=[.!?;:]\s))(?:this|the|our|each)\s+(?:(?:tutorial|simple|easy|basic|new|main|standard|evaluation|eval"
+               r"|benchmark|training|test|demo|example|sample|toy|pilot|warm-up|warmup|introductory|practice|baseline)\s+){0,2}?"
                r"(?:task|benchmark|environment|episode|challenge|exercise|test|experiment|scenario)\s+(?:asks|requires|tells|instructs"
                r"|wants|expects|challenges)\s+(?:the\s+)?(?:agent|robot|policy|arm|learner|controller)\s+to\s+"),
     # "In this task(,) the agent must ...", "The policy must ...": the task follows
@@ -2945,8 +2955,8 @@ EDIT_OPENING = r"^\s*(?:(?i:nah|no|ok(?:ay)?|so|and|then|hmm|actually|now)[\s,]+
 "actually, left to right: ..."): they change nothing."""
 
 EDIT_SAME_COUNT_RE = re.compile(
-    rf"(?i)^\s*(?:(?:now|ok(?:ay)?|then)\s*,?\s*)*(?:the\s+)?same\s+(?P<n>\d+|{COUNT_WORD_RE})\s*(?:cubes|blocks|ones|letters|digits)?\s*,?\s*"
-    r"(?:but\s+)?(?=\S)")
+    rf"(?i)^\s*(?:(?:now|ok(?:ay)?|then)\s*,?\s*)*(?:the\s+)?same\s+(?P<n>\d+|{COUNT_WORD_RE})\s*(?:cubes|blocks|ones)?\s*,?\s*"
+    r"(?:but\s+)?(?=\S)(?!(?:letters?|digits?|numbers?|colou?rs?|labels?)\b)")
 """An edit that opens by saying the count of the version it builds on again ("same five but reversed", "same 4, but
 pink on top"): checked, not applied (the steering refuses when the version has another count); the rest is the change."""
 
@@ -2975,7 +2985,7 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "four, and the top one orange": that count, and the change after it
     (re.compile(rf"(?i)^\s*(?:(?:now|ok(?:ay)?|then)\s*,?\s*)*(\d+|{COUNT_WORD_RE})\s*,\s*(?=and\s+)"), r"make it \1, "),
     # "reversed", "but backwards", "same cubes but in reverse order": the task reversed
-    (re.compile(r"(?i)^\s*(?:(?:now|ok(?:ay)?|then|but|and)\s*,?\s*)*(?:(?:the\s+)?same\s+(?:cubes|blocks|ones|letters|digits|thing)\s*,?\s*(?:but\s+)?)?"
+    (re.compile(r"(?i)^\s*(?:(?:now|ok(?:ay)?|then|but|and)\s*,?\s*)*(?:(?:the\s+)?same\s+(?:cubes|blocks|ones|thing|letters|digits|numbers)\s*,?\s*(?:but\s+)?)?"
                 r"(?:reversed|in\s+reverse(?:\s+order)?|backwards|the\s+other\s+way\s+(?:round|around))\s*[.!]?\s*$"), "reverse it"),
     # "five cubes, add a yellow and an orange at the right end": the count the additions reach (checked), then the additions
     (re.compile(rf"(?i)^\s*(?:(?:now|ok(?:ay)?|then)\s*,?\s*)*(\d+|{COUNT_WORD_RE})\s+(cubes|blocks)\s*,\s*(?=(?:and\s+)?add\s)"),
@@ -2988,7 +2998,9 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"(?i)\badd\s+({COLOR_RE})\s+(?:also\s+)?(?=(?:close\s+to|next\s+to|near|beside|behind|in\s+front\s+of|on\s+top\s+of|on|to\s+the)\b)"),
      r"add a \1 cube "),
     # "add a yellow and an orange at the right end", "add yellow and orange on top": a cube of each colour added there
-    (re.compile(rf"(?i)\badd\s+(?:(?:a|an|one)\s+)?({COLOR_RE})\s+and\s+(?:(?:a|an|one)\s+)?({COLOR_RE})\b(?!\s+(?:ones?|cubes?|blocks?)\b)"),
+    (re.compile(rf"(?i)\badd\s+(?:(?:a|an|one)\s+)?({COLOR_RE})\s+and\s+(?:(?:a|an|one)\s+)?({COLOR_RE})"
+                r"(?=\s+(?:at\s+the\s+(?:(?:left|right|front|back)\s+end|top|bottom|start|end|beginning)|on\s+top)\s*(?:,\s*in\s+that\s+order)?"
+                r"\s*[.!]?\s*$)"),
      lambda m: "add " + " and ".join(("an " if c[0] in "aeiou" else "a ") + f"{c} cube" for c in m.group(1, 2))),
     # "cyan take out": that cube removed
     (re.compile(rf"(?i)^\s*(?:the\s+)?({COLOR_RE})(?:\s+(?:one|cube|block))?\s+(?:take\s+out|take\s+away|take\s+off|remove|out|away)\s*"
@@ -4106,6 +4118,15 @@ RELATION_SIDE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 )
 """A relation said by a cube's side ("to its left", "on the blue block's left", "on either side of", "one on the other")."""
 
+def _refers_back(m: re.Match) -> bool:
+    """Whether the words after a cube said for each of several patches refer back to one of those cubes ("... and put the
+    red cube on it", "... the pink cube next to the green cube"): which one is not said, so the words are left as they are
+    (to be refused)."""
+    after = m.string[m.end():]
+    return bool(re.search(r"\b(?:it|its|them|they|those|these|one\s+of\s+them)\b", after) or (
+        m.group(1) and re.search(rf"\b{re.escape(m.group(1))}\s+(?:cube|block|one)s?\b", after)))
+
+
 EDGE_AND_EACH_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "in a row along the back edge[, ...]": at that edge of the table ("along" is otherwise no word of ours)
     (re.compile(r"\balong\s+(?=the\s+(?:(?:far|very)\s+)?(?:front|back|rear|left|right)(?:\s+(?:hand\s+)?(?:side|edge|end))?"
@@ -4119,16 +4140,18 @@ EDGE_AND_EACH_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b(?:a|one|1)\s+(?:({COLOR_RE})\s+)?(block|cube)\s+(?:on|onto)\s+each\s+(?:of\s+)?(?:the\s+)?"
                 rf"((?:{COLOR_RE})(?:\s+patch)?(?:\s*,\s*(?:the\s+)?(?:{COLOR_RE})(?:\s+patch)?){{1,4}}\s*,?\s+and\s+(?:the\s+)?(?:{COLOR_RE})"
                 rf"\s+(?:goal\s+)?patch(?:es)?)\b(?!\s*,?\s*(?:and\s+)?(?:the\s+)?(?:{COLOR_RE})(?:\s+patch|\s*[.,]|\s+and))"),
-     lambda m: (lambda c, ps: "a " + f" and another ".join([", another ".join(f"{c}{m.group(2)} on the {p} patch" for p in ps[:-1]),
+     lambda m: (lambda c, ps: "a " + " and another ".join([", another ".join(f"{c}{m.group(2)} on the {p} patch" for p in ps[:-1]),
                                                              f"{c}{m.group(2)} on the {ps[-1]} patch"]))(
          f"{m.group(1)} " if m.group(1) else "", re.findall(rf"\b(?:{COLOR_RE})\b", m.group(3)))
-     if len(set(re.findall(rf"\b(?:{COLOR_RE})\b", m.group(3)))) == len(re.findall(rf"\b(?:{COLOR_RE})\b", m.group(3))) else m.group(0)),
+     if len(set(re.findall(rf"\b(?:{COLOR_RE})\b", m.group(3)))) == len(re.findall(rf"\b(?:{COLOR_RE})\b", m.group(3)))
+     and not _refers_back(m) else m.group(0)),
     # "a green cube on each of the two patches, the red patch and the blue patch", "... on each of the red and blue
     # patches": the two patches named, a cube of that colour on each (refused before: how many patches, or each said twice)
     (re.compile(rf"\b(?:a|one|1)\s+(?:({COLOR_RE})\s+)?(block|cube)\s+(?:on|onto)\s+(?:each|both)\s+(?:of\s+)?(?:the\s+)?"
                 rf"(?:(?:2|two)\s+(?:goal\s+)?patches\s*(?:[,:]|\s-|\u2014)\s*(?:the\s+)?({COLOR_RE})(?:\s+patch)?\s+and\s+(?:the\s+)?({COLOR_RE})\s+patch"
                 rf"|({COLOR_RE})\s+(?:patch\s+)?and\s+(?:the\s+)?({COLOR_RE})\s+(?:goal\s+)?patch(?:es)?)\b(?!\s*,?\s*(?:and\s+)?(?:the\s+)?(?:{COLOR_RE})(?:\s+patch|\s*[.,]|\s+and))"),
-     lambda m: (lambda c, p1, p2: f"a {c}{m.group(2)} on the {p1} patch and another {c}{m.group(2)} on the {p2} patch")(
+     lambda m: (lambda c, p1, p2: m.group(0) if p1 == p2 or _refers_back(m) else
+                f"a {c}{m.group(2)} on the {p1} patch and another {c}{m.group(2)} on the {p2} patch")(
          f"{m.group(1)} " if m.group(1) else "", m.group(3) or m.group(5), m.group(4) or m.group(6))),
     # "place one cube on each patch: red cube on the blue patch, blue cube on the red patch": the heading said again by
     # the assignments after it, each to another patch (refused before as each said twice)
@@ -4635,13 +4658,35 @@ LABEL_ARTICLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 )
 """A label between an article and a cube's noun ("the A block", "the 3 cube"): a letter or digit cube."""
 
+_TOWER_PART = {"middle": "middle", "top": "top", "highest": "top", "bottom": "bottom", "base": "bottom", "lowest": "bottom"}
+
+
+def _tower_parts_said(m: re.Match) -> bool:
+    """Whether a text that opens with one place of a tower ("The middle cube of the tower is pink; gray is at the base and
+    white at the top") goes on to say the tower's other places, and nothing else: each place once, each a colour of its own,
+    the middle between both ends (a tower of three). Otherwise it is left as it is, to be refused."""
+    rest = m.string[m.end():].lower()
+    first = re.match(rf"\s*(?:is|should\s+be|must\s+be)\s+(?:the\s+)?({COLOR_RE})(?:\s+(?:cube|block|one))?\s*[;,.]\s*", rest)
+    if not first:
+        return False
+    ends = re.fullmatch(rf"(?:and\s+)?(?:the\s+)?({COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:is\s+|goes\s+|sits\s+)?(?:at|on)\s+(?:the\s+)?"
+                        rf"(base|bottom|top)(?:\s*(?:,|;|and)\s*(?:and\s+)?(?:the\s+)?({COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:is\s+|goes\s+"
+                        rf"|sits\s+)?(?:at|on)\s+(?:the\s+)?(base|bottom|top))?\s*[.!]?\s*", rest[first.end():])
+    if not ends:
+        return False
+    colours = [first.group(1), ends.group(1)] + ([ends.group(3)] if ends.group(3) else [])
+    places = [_TOWER_PART[m.group(1).lower()], _TOWER_PART[ends.group(2)]] + ([_TOWER_PART[ends.group(4)]] if ends.group(4) else [])
+    return len(set(colours)) == len(colours) and len(set(places)) == len(places) and (
+        places[0] != "middle" or {"top", "bottom"} <= set(places))
+
+
 TOWER_BETWEEN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "The middle cube of the tower is pink; gray is at the base and white at the top": the tower the text goes on to
     # describe, said as "the tower's middle cube" (it had been refused as a tower nobody described); only where the text
     # gives a second place of the tower to another cube
     (re.compile(r"(?i)^\s*the\s+(middle|top|bottom|base|lowest|highest)\s+(cube|block|one)?\s*of\s+the\s+(tower|stack)\s+(?=(?:is|should\s+be|must\s+be)\s+"
                 r"(?:the\s+)?[a-z]+(?:\s+(?:cube|block|one))?\s*[;,.]\s*(?:and\s+)?[a-z]+\s+(?:is\s+|goes\s+|sits\s+)?(?:at|on)\s+(?:the\s+)?(?:base|bottom|top)\b)"),
-     lambda m: f"the {m.group(3)}'s {m.group(1)} {m.group(2) or 'cube'} "),
+     lambda m: f"the {m.group(3)}'s {m.group(1)} {m.group(2) or 'cube'} " if _tower_parts_said(m) else m.group(0)),
     # "the cyan cube is sandwiched between them", "with the blue one squeezed in the middle": the middle said plainly
     (re.compile(r"\b(?:wedged|squeezed|sandwiched|tucked|nestled)\s+(?=(?:in\s+)?between\s+(?:them|those\s+two|the\s+two)\b"
                 r"|in\s+the\s+middle\b)"), ""),
@@ -4672,7 +4717,9 @@ TOWER_MORE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # described, not one the speaker sees (it had been refused as a reference); only where the text begins so
     (re.compile(r"^(?:the\s+)?(top|bottom|base)(?:\s+(?:block|cube|one))?\s+of\s+the\s+(tower|stack)\s+(?=(?:(?:should|must|has\s+to|needs\s+to|will)"
                 r"\s+be|is)\b)"),
-     r"in a \2, the \1 block "),
+     lambda m: m.group(0) if re.search(r"\b(?:top|highest)\b" if m.group(1) == "top" else r"\b(?:bottom|base|lowest)\b",
+                                       m.string[m.end():]) else f"in a {m.group(2)}, the {m.group(1)} block "),  # (that end said
+    # again of another cube: refused, not read as a middle)
     # "a tower with the red cube at the bottom and two more cubes (of any colour) on it": a tower of three, red at the
     # bottom, the others free (the two had been read as more red cubes)
     (re.compile(rf"\b(?P<s>tower|stack)\s*(?::\s*|\s+with\s+)(?:the\s+|a\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on|as)\s+"

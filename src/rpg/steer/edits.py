@@ -42,8 +42,8 @@ from rpg.schema.lexicon import (
     EDIT_OPENING,
     EDIT_REFERS_RE,
     EDIT_REST_STAYS_RE,
-    EDIT_SAME_COUNT_RE,
     EDIT_REWRITES,
+    EDIT_SAME_COUNT_RE,
     EDIT_SHOULD_BE_RE,
     EDIT_SWAP_BOTH_RE,
     EDIT_VAGUE_RE,
@@ -60,6 +60,7 @@ from rpg.schema.lexicon import (
     is_dictionary_word,
     said,
 )
+from rpg.schema.model import TaskSchema
 from rpg.schema.readers.common import item_sequence
 from rpg.schema.reading import canon_color, region_name
 from rpg.schema.structures import (
@@ -91,7 +92,7 @@ OP_INTENT = {
     "material": "modify", "ordering": "modify", "reverse": "modify", "outliers": "modify",
     "relabel": "tweak", "swap": "modify", "word": "modify", "colors": "tweak", "structure": "pivot",
     "move": "modify", "pattern": "tweak", "direction": "modify", "keep": "tweak", "region": "modify", "add_layer": "extend",
-    "arrange": "modify", "rest": "tweak", "same": "tweak",
+    "arrange": "modify", "rest": "tweak",
 }
 """The intent each operation implies; an edit's intent is the strongest of its operations."""
 
@@ -138,6 +139,8 @@ class EditPlan:
     standalone: bool = False
     fresh: bool = False
     adds: bool = False  # a clause added to a version named by the cue ("revert that and add ..."), read as an addition
+    checks: tuple[tuple[str, object], ...] = ()  # what the edit says the version built on has, checked, not applied:
+    # ("count", 5) for "same five but ...", ("material", "letters") for "same letters but ..." (see :func:`check_said`)
 
     def parameters(self) -> dict:
         cue = {k: v for k, v in asdict(self.cue).items() if v not in (None, (), False, "") and not (k == "steps" and v == 1)}
@@ -806,20 +809,64 @@ def interpret(edit: str) -> EditPlan:
     A closing clause saying the other cubes keep their colour ("make both ends orange, the ones in
     between stay blue": :data:`EDIT_REST_STAYS_RE`) becomes a ``rest`` operation that checks it; an
     opening that says the count again ("same five but reversed": :data:`EDIT_SAME_COUNT_RE`) a ``same``
-    operation that checks the version's count.
+    operation that checks the version's count; the task's letters or digits named ("same letters but reversed",
+    "stack the letters instead, ...") a ``same`` operation that checks its cubes are those.
 
     Raises:
         SteerError: empty edit; such a clause beside no recolour.
     """
+    kept = re.search(r"(?i)\bsame\s+(?P<m>letter|digit|number)s?\b", edit or "")
+    plan = _interpret_counted(edit)
+    if kept:  # "same letters but reversed": the task's cubes are letters, checked
+        return replace(plan, checks=(*plan.checks, ("material", _MATERIAL_WORDS[kept.group("m").lower()])))
+    return plan
+
+
+_MATERIAL_WORDS = {"letter": "letters", "digit": "digits", "number": "digits"}
+"""The word an edit names the task's labelled cubes by -> their material."""
+
+
+def check_said(plan: EditPlan, schema: TaskSchema) -> None:
+    """Check what the edit says the version it builds on has (:attr:`EditPlan.checks`): its count of cubes, its letters or
+    digits.
+
+    Raises:
+        SteerError: the version has another count or other cubes.
+    """
+    cubes = [a for a in schema.assets if a.kind != "goal_patch"]
+    labels = [a.label or "" for a in cubes]
+    material = "letters" if labels and all(x.isalpha() for x in labels) else "digits" if labels and all(x.isdigit() for x in labels) \
+        else "colors"
+    for kind, value in plan.checks:
+        if kind == "count" and value != len(cubes):
+            raise SteerError(f"the edit says the same {value} cubes, but the version it builds on has {len(cubes)}; name the "
+                             "version to build on, or say the change without the count")
+        if kind == "material" and value != material:
+            raise SteerError(f"the edit names the task's {value}, but the version it builds on has {material}; name the cubes "
+                             "the task has")
+
+
+def _interpret_counted(edit: str) -> EditPlan:
+    """:func:`interpret` past the material check: a stack of the task's letters said, the count said again, a closing
+    clause that keeps the other cubes' colour."""
+    said = re.match(r"(?i)\s*(?:stack|pile)\s+(?:all\s+)?the\s+(?P<m>letter|digit|number)s?(?:\s+cubes)?\b", edit or "")
+    if said:  # "stack the letters instead, C at the bottom": the task's cubes are letters, checked
+        plan = interpret(edit[:said.start()] + "stack them" + edit[said.end():])
+        return replace(plan, checks=(*plan.checks, ("material", _MATERIAL_WORDS[said.group("m").lower()])))
     same = EDIT_SAME_COUNT_RE.match(edit or "")
     if same:  # "same five but reversed": the count checked against the version built on, the rest read as the change
+        count = ("count", int(NUMBER_WORDS.get(same.group("n").lower(), same.group("n"))))
         try:
             plan = interpret(edit[same.end():])
         except BadInput:
             plan = None
-        if plan is not None and not plan.standalone and plan.ops:  # (otherwise the whole edit is read: "now the same three
-            # in a tower" restates the task's cubes)
-            return replace(plan, ops=[Op("same", {"n": int(NUMBER_WORDS.get(same.group("n").lower(), same.group("n")))}), *plan.ops])
+        if plan is None or plan.standalone or not plan.ops:  # the whole edit read ("now the same three in a tower"
+            plan = _interpret_rested(edit)  # restates the task's cubes), the count checked all the same
+        return replace(plan, checks=(*plan.checks, count))
+    return _interpret_rested(edit)
+
+
+def _interpret_rested(edit: str) -> EditPlan:
     rest = EDIT_REST_STAYS_RE.search(edit or "")
     if rest is None:
         return _interpret(edit)
@@ -1289,7 +1336,7 @@ def _fit_structure(spec: TaskSpec, target: str) -> TaskSpec:
         raise SteerError(f"cannot turn a {spec.structure} into a {target}: {exc}") from None
 
 
-APPLY_ORDER = ("same", "keep", "region", "structure", "add_layer", "material", "word", "dims", "count", "colors", "remove", "recolor", "relabel", "pattern", "add",
+APPLY_ORDER = ("keep", "region", "structure", "add_layer", "material", "word", "dims", "count", "colors", "remove", "recolor", "relabel", "pattern", "add",
                "move", "swap", "reverse", "ordering", "arrange", "direction", "outliers", "rest")
 """Order in which an edit's operations are applied to the spec."""
 
@@ -1342,11 +1389,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
     touched: set[int] = set()  # the cubes recoloured, for a "rest" op ("the rest stay blue")
     for o in sorted(ops, key=lambda o: APPLY_ORDER.index(o.op)):
         p = o.params
-        if o.op == "same":
-            if len(spec.items) != p["n"]:
-                raise SteerError(f"the edit says the same {p['n']} cubes, but the version it builds on has {len(spec.items)}; "
-                                 "name the version to build on, or say the change without the count")
-        elif o.op == "rest":
+        if o.op == "rest":
             other = [it for i, it in enumerate(spec.items) if i not in touched]
             if not other or any(it.color != p["color"] for it in other):
                 raise SteerError(f"the edit says the other cubes stay {p['color']}, but the {spec.structure}'s other cubes are "
@@ -1406,6 +1449,9 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             spec = replace(spec, ordering=key, descending=p.get("descending", False), word=None, layer_colors=False,
                            direction=spec.direction or "left_to_right")
         elif o.op == "reverse":
+            if spec.kind.layered:
+                raise SteerError(f"a {spec.structure}'s cubes stand in layers, which have no one order to reverse; say each "
+                                 "layer's colours")
             if spec.kind.spells and not _orders_cubes(spec):
                 raise SteerError(f"the {spec.structure}'s goal gives its cubes no order (any order holds), so there is none to "
                                  "reverse; say the order it should have (e.g. \"from left to right: red, green, blue\")")

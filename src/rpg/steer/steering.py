@@ -63,6 +63,7 @@ from rpg.steer.edits import (
     addition_clause,
     apply_ops,
     carried_after,
+    check_said,
     intent_of_ops,
     intent_of_standalone,
     interpret,
@@ -314,6 +315,8 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         ParseError / InfeasibleTask: the resulting task cannot be read or realised.
     """
     ref_schema = None if plan.fresh or reference is None else fam.schema(reference)  # read once
+    if ref_schema is not None:
+        check_said(plan, ref_schema)  # "same five but ...", "same letters but ...": what the version has, checked
     patches = sorted({a.color or "gray" for a in ref_schema.assets if a.kind == "goal_patch"}) if ref_schema else []
     if len(patches) == 1:  # "also a blue cube on the same patch": the task's one patch
         plan = replace(plan, text=SAME_PATCH_RE.sub(f"the {patches[0]} patch", plan.text))
