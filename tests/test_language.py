@@ -6579,6 +6579,8 @@ def test_a_start_and_goal_said_tersely(text, expected):
     "The bottom of the tower should be the green cube; blue goes on the bottom and red goes on top.",
     "This undo task asks the agent to stack the red cube on the blue cube.",  # (the framing word changes the task)
     "The previous task asks the agent to stack the red cube on the blue cube.",
+    "Put the green cube on the red patch; the cube on the red patch should be big",  # (old: 'big' dropped, a cube made up)
+    "Put the green cube on the red patch. The cube should be big.",  # (old: the sentence dropped)
 ])
 def test_this_sessions_readings_refuse_what_they_cannot_place(text):
     """Attacks on this session's readings (a stranger's, 2026-11-26): each compiled something the words did not say."""

@@ -482,7 +482,12 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
              r"|heaviest|wider|narrow|thin|thick)\s+(?:(?!(?:number|digit|letter|label)\b)[a-z]+\s+)?(?:blocks?|cubes?|boxes|box|ones?"
              r"|objects?|items?|pieces?|things?)\b"
              r"|\b(?:by|of|in\s+order\s+of)\s+(?:their\s+)?(?:size|weight)\b|\b(?:medium|[a-z]+-)sized\b"
-             rf"|\b(?:{COLOR_RE})\s+(?:big|large|small|little|tiny|huge|giant)\b",  # "blue_large" of a config
+             rf"|\b(?:{COLOR_RE})\s+(?:big|large|small|little|tiny|huge|giant)\b"  # "blue_large" of a config
+             # "the cube on the red patch should be big", "it must be heavy": a size said after the cube (it had been dropped)
+             r"|\b(?:blocks?|cubes?|boxes|box|ones?|it|they|them|each|both)(?:\s+on\s+the\s+[a-z]+\s+patch)?\s+(?:should|must|has\s+to|have\s+to"
+             r"|needs?\s+to|will|is|are|'s)\s+(?:be\s+)?(?:very\s+|really\s+|quite\s+|extra\s+|a\s+bit\s+)?(?:big|bigger|biggest|large|larger"
+             r"|largest|small|smaller|smallest|little|tiny|huge|giant|heavy|heavier|light|lighter|wide|wider|narrow|thin|thick)\b"
+             rf"(?!\s+(?:{COLOR_RE}|grey|gr[ae]y)\b)",  # ("it is light blue": a colour)
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
     ("reference", r"\bthe\s+(?:very\s+)?(?:first|second|third|fourth|fifth|sixth|last|next|previous|former|latter)"
                   r"\s+(?:(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?))\b"
