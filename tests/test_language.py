@@ -6586,3 +6586,20 @@ def test_this_sessions_readings_refuse_what_they_cannot_place(text):
     """Attacks on this session's readings (a stranger's, 2026-11-26): each compiled something the words did not say."""
     with pytest.raises((ParseError, Inexpressible)):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Build upward from red block through green block to blue block.", ["stack(red,green,blue)"]),
+    ("Create a three-level stack with blue block supported by green block, which is supported by red block.",
+     ["stack(red,green,blue)"]),
+    ("Position red block, green block, and blue block from left to right in the specified sequence.",
+     ["line[left_to_right](red,green,blue)"]),
+    ("Place red block to the left, green block in the middle, and blue block on the right in a linear fashion.",
+     ["line[left_to_right](red,green,blue)"]),
+])
+def test_a_templates_words_for_towers_and_rows(text, expected):
+    """A benchmark template's words ("build upward from ... through ... to ...", "supported by", "in the specified
+    sequence", "in a linear fashion") had been refused (development split)."""
+    schema = parse(text)
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []

@@ -3533,6 +3533,15 @@ GOAL_FRAME_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 r"|arrang|build|mak|mov|pil)ing\b)"),
      lambda m: "" if not m.group(1) else {"stack": "stack", "plac": "place", "putt": "put", "lin": "line", "arrang": "arrange",
                                           "build": "build", "mak": "make", "mov": "move", "pil": "pile"}[m.group(1)]),
+    # "Build upward from red block through green block to blue block": a tower from the first cube up (refused before)
+    (re.compile(rf"\b(build|stack)\s+(?:it\s+)?(?:upward|upwards|up)\s+from\s+(?:the\s+)?((?:{COLOR_RE})(?:\s+(?:block|cube))?"
+                rf"(?:\s*,?\s+(?:to|through|then|and\s+then)\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:block|cube))?)+)\b"),
+     lambda m: "build a tower from bottom to top: " + ", ".join(re.findall(rf"\b(?:{COLOR_RE})\b", m.group(2)))),
+    # "blue block supported by green block, which is supported by red block": each on the one after it
+    (re.compile(r"\b(?:is\s+|are\s+)?(?:supported|held\s+up|carried)\s+by\b"), "on top of"),
+    # "from left to right in the specified sequence", "in a linear fashion": in that order, in a row
+    (re.compile(r"\bin\s+the\s+(?:specified|given|listed|stated|said|mentioned)\s+(?:sequence|order)\b"), "in that order"),
+    (re.compile(r"\bin\s+a\s+(?:linear|straight)\s+(?:fashion|manner|arrangement|formation)\b"), "in a row"),
     # "arranging ... in a row, then stacking them": a later step said as a gerund is a step (it had been dropped)
     (re.compile(r"\b(then|and\s+then|after\s+that|afterwards)\s+(stack|plac|putt|lin|arrang|build|mak|mov|pil)ing\b"),
      lambda m: f"{m.group(1)} " + {"stack": "stack", "plac": "place", "putt": "put", "lin": "line", "arrang": "arrange", "build": "build",
