@@ -807,10 +807,10 @@ def interpret(edit: str) -> EditPlan:
     """Read an edit into a plan (reference cue, operations or a whole new task).
 
     A closing clause saying the other cubes keep their colour ("make both ends orange, the ones in
-    between stay blue": :data:`EDIT_REST_STAYS_RE`) becomes a ``rest`` operation that checks it; an
-    opening that says the count again ("same five but reversed": :data:`EDIT_SAME_COUNT_RE`) a ``same``
-    operation that checks the version's count; the task's letters or digits named ("same letters but reversed",
-    "stack the letters instead, ...") a ``same`` operation that checks its cubes are those.
+    between stay blue": :data:`EDIT_REST_STAYS_RE`) becomes a ``rest`` operation that checks it. An
+    opening that says the count again ("same five but reversed": :data:`EDIT_SAME_COUNT_RE`) and the task's
+    letters or digits named ("same letters but reversed", "stack the letters instead, ...") become
+    :attr:`EditPlan.checks`, which :func:`check_said` verifies against the version built on.
 
     Raises:
         SteerError: empty edit; such a clause beside no recolour.
