@@ -1987,3 +1987,12 @@ def test_edits_that_say_what_the_version_lacks_are_refused(tmp_path, base, edit)
     fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
     with pytest.raises(SteerError):
         steer(fam.path, edit)
+
+
+@pytest.mark.parametrize("edit", ["go back to round 3", "revert to level 7"])
+def test_a_version_numbered_by_the_writers_own_count_is_refused(tmp_path, edit):
+    """"go back to round 3" of a family with two versions had been read as one step back (silently another version)."""
+    fam = Family(create_family(compile_instruction("Stack the red cube on the blue cube", tmp_path, name="fam").path).path)
+    steer(fam.path, "add a green cube on top")
+    with pytest.raises(SteerError, match="count of its own"):
+        steer(fam.path, edit)

@@ -261,6 +261,12 @@ def find_reference(t: str) -> RefCue:
     m = re.search(r"\b(?:version|v)\s*#?(\d+)\b", t)
     if m:
         return RefCue("version", version=int(m.group(1)), phrase=m.group(0))
+    own = re.search(r"\b(?:back|revert\w*|return\w*|go\s+to|restore\w*|like|as\s+in|compared?\s+(?:with|to))\b(?:\s+\w+){0,3}?\s+"
+                    r"((?:round|level|iteration|draft|attempt|try|step|stage|variant|rev|revision|take)\s*#?\d+)\b", t)
+    if own:  # "go back to round 3": a version numbered by the writer's own count, which the family does not keep (it had
+        # been read as one step back)
+        raise SteerError(f"'{own.group(1)}' names a version by a count of its own, which rpg does not keep; name it as rpg "
+                         "numbers versions (e.g. \"go back to v1\"; `rpg log` lists them)")
     m = re.search(r"\b(?:the original|first version|base (?:task|version)|very first|initial version)\b"
                   r"|\b(?:like|as in|as|back to|compared? (?:with|to)|go back to|revert to|return to)\s+the\s+first\s+(?:one|task|variant|try)\b"
                   r"|\b(?:back|revert|return|restart|from|like|as)\b(?:\s+\w+){0,5}?\s+(?:the beginning|the start)\b", t)
