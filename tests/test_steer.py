@@ -1996,3 +1996,9 @@ def test_a_version_numbered_by_the_writers_own_count_is_refused(tmp_path, edit):
     steer(fam.path, "add a green cube on top")
     with pytest.raises(SteerError, match="count of its own"):
         steer(fam.path, edit)
+
+
+def test_a_rounds_label_with_words_after_its_number_is_dropped(tmp_path):
+    """"Round 2 rule change: put a pink cube on top": the label of the variant being made (its '2' had been refused)."""
+    assert _steered(tmp_path, "Build a tower of the red, green and blue cubes from bottom to top",
+                    "Round 2 rule change: put a pink cube on top.") == [("extend", ["stack(red,green,blue,pink)"])]

@@ -3403,8 +3403,9 @@ SAME_CUBES_RE = re.compile(r"\b(?:the\s+)?(?:same|these|those|the)\s+(?:\d+\s+)?
 SAME_PATCH_RE = re.compile(r"(?i)\b(?:(?:the|that|this)\s+)?same\s+(?:goal\s+)?(?:patch|pad|mat|area|spot)\b|\b(?:that|this)\s+(?:goal\s+)?patch\b")
 """An edit's "the same patch": the task's one patch."""
 
-VARIANT_LABEL_RE = re.compile(r"(?i)^\s*(?:v|version|level|lvl|variant|step|stage|round)\s*#?(?P<n>\d+)(?:\s+of\s+this)?\s*"
-                              r"(?::|->|\u2192|=>|-|\u2014|\))\s*")
+VARIANT_LABEL_RE = re.compile(r"(?i)^\s*(?:v|version|level|lvl|variant|step|stage|round)\s*#?(?P<n>\d+)(?:\s+of\s+this)?"
+                              rf"(?:\s+(?!(?:{COLOR_RE}|grey|\d+)\b)(?:rule|rules|change|changes|update|tweak|variant|version|edit|idea"
+                              r"|task|setup|spec|plan|twist)){0,2}\s*(?::|->|\u2192|=>|-|\u2014|\))\s*")  # ("Round 2 rule change:")
 """A curriculum's label of the variant an edit makes ("v2: add a green cube", "level 3 -> descending now"): when its
 number names no version the family has yet, it names the one being made, not one to build on
 (:func:`rpg.steer.steering.steer` drops it)."""
