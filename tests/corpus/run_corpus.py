@@ -76,7 +76,7 @@ STRANGER_SETS = {
     "stranger39": ("stranger39.yaml", "STRANGER set 39 (stranger39.yaml, transfer measure of the twenty-eighth session; development material from the twenty-ninth)"),
     "stranger40": ("stranger40.yaml", "STRANGER set 40 (stranger40.yaml, transfer measure of the twenty-ninth session; development material from the thirtieth)"),
     "stranger41": ("stranger41.yaml", "STRANGER set 41 (stranger41.yaml, transfer measure of the thirtieth session; development material from the thirty-first)"),
-    "stranger42": ("stranger42.yaml", "STRANGER set 42 (stranger42.yaml, transfer measure of the thirty-first session: aggregates only)"),
+    "stranger42": ("stranger42.yaml", "STRANGER set 42 (stranger42.yaml, transfer measure of the thirty-first session: aggregates only; the same at its start and end)"),
 }
 SPLITS = HERE / "splits.yaml"
 
