@@ -2002,3 +2002,10 @@ def test_a_rounds_label_with_words_after_its_number_is_dropped(tmp_path):
     """"Round 2 rule change: put a pink cube on top": the label of the variant being made (its '2' had been refused)."""
     assert _steered(tmp_path, "Build a tower of the red, green and blue cubes from bottom to top",
                     "Round 2 rule change: put a pink cube on top.") == [("extend", ["stack(red,green,blue,pink)"])]
+
+
+@pytest.mark.parametrize("edit", ["switch pink and gray", "swap pink n gray", "swap the pink cube & the gray cube"])
+def test_two_cubes_switched_tersely(tmp_path, edit):
+    """"switch pink and gray" (read as an action) and texting's "n"/"&" for "and" had been refused."""
+    assert _steered(tmp_path, "Build a tower of the pink, gray and white cubes from bottom to top", edit) == [
+        ("modify", ["stack(gray,pink,white)"])]

@@ -3007,6 +3007,11 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
                 r"(?=\s+(?:at\s+the\s+(?:(?:left|right|front|back)\s+end|top|bottom|start|end|beginning)|on\s+top)\s*(?:,\s*in\s+that\s+order)?"
                 r"\s*[.!]?\s*$)"),
      lambda m: "add " + " and ".join(("an " if c[0] in "aeiou" else "a ") + f"{c} cube" for c in m.group(1, 2))),
+    # "switch pink and gray", "swap pink n gray", "swap pink & gray": the two exchanged (texting's "n" and "&" are "and";
+    # "switch" had been read as an action)
+    (re.compile(rf"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|and|then)\s*,?\s*)*(?:swap|switch|exchange)\s+(?:the\s+)?({COLOR_RE})"
+                rf"(?:\s+(?:one|cube|block))?\s+(?:and|n|&|\+|with)\s+(?:the\s+)?({COLOR_RE})(?:\s+(?:ones?|cubes?|blocks?))?\s*[.!]?\s*$"),
+     r"swap \1 and \2"),
     # "cyan take out": that cube removed
     (re.compile(rf"(?i)^\s*(?:the\s+)?({COLOR_RE})(?:\s+(?:one|cube|block))?\s+(?:take\s+out|take\s+away|take\s+off|remove|out|away)\s*"
                 r"(?:please|pls)?\s*[.!]?\s*$"), r"remove the \1 one"),
