@@ -931,7 +931,7 @@ def start_stack_source(text: str) -> str:
         first = re.split(r"[.;]", m.group("before"), maxsplit=1)[0].lower()
         said = re.findall(rf"\b(?:{COLOR_RE})\b", first)
         moved = re.search(rf"\b({COLOR_RE})\s+(?:cube|block)$|\bit$", m.group("before").lower())
-        stack = re.search(r"\b(?:stack|tower|on\s+top\s+of|atop|on)\b", first) and not re.search(r"\bpatch|table\b", first)
+        stack = re.search(r"\b(?:stack|tower|on\s+top\s+of|atop|on)\b", first) and not re.search(r"\b(?:patch|table)", first)
         if len(said) != 2 or len(set(said)) != 2 or not stack or not moved or (moved.group(1) and moved.group(1) not in said):
             return m.group(0)
         return m.group("before")
@@ -3508,6 +3508,13 @@ OUTCOME_VERB_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 """A motion said by its outcome ("cover the green patch with the red block", "slide it until it touches ..."): the relation it ends in."""
 
 _REQUIRER = r"(?:^|(?<=[.!?;:]\s))(?:success|completion|(?:the\s+)?(?:\w+\s+)?(?:task|goal|test|episode)(?:\s+[a-z]*\d[\w-]*)?)\s+(?:requires|needs|demands)\s+"
+_GERUND_STEMS: dict[str, str] = {"stack": "stack", "plac": "place", "putt": "put", "lin": "line", "arrang": "arrange",
+                                  "build": "build", "mak": "make", "mov": "move", "pil": "pile"}
+"""A placing verb's stem before "-ing" -> the verb ("placing" -> "place"); its keys are the alternatives of
+:data:`_GERUND_RE`."""
+_GERUND_RE = "(" + "|".join(_GERUND_STEMS) + r")ing\b"
+
+
 GOAL_FRAME_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "Success requires the pink cube to be placed on the table", "Task T3 requires arranging ...", "success requires that
     # ...": what success requires is the goal (its words had been unknown: refused)
@@ -3535,10 +3542,8 @@ GOAL_FRAME_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\bright\s+(?:(now)|away)\b"), lambda m: m.group(1) or ""),
     # "The policy is evaluated on placing the blue cube between ...": the act it is judged on is the task
     (re.compile(r"(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:agent|robot|policy|arm|learner|controller)\s+is\s+(?:evaluated|tested|scored|judged"
-                r"|assessed|graded|rewarded)\s+(?:on|for)\s+(?:(?:its\s+ability\s+to|how\s+well\s+it\s+can)\s+(?=[a-z]+\s)|(stack|plac|putt|lin"
-                r"|arrang|build|mak|mov|pil)ing\b)"),
-     lambda m: "" if not m.group(1) else {"stack": "stack", "plac": "place", "putt": "put", "lin": "line", "arrang": "arrange",
-                                          "build": "build", "mak": "make", "mov": "move", "pil": "pile"}[m.group(1)]),
+                r"|assessed|graded|rewarded)\s+(?:on|for)\s+(?:(?:its\s+ability\s+to|how\s+well\s+it\s+can)\s+(?=[a-z]+\s)|" + _GERUND_RE + ")"),
+     lambda m: _GERUND_STEMS[m.group(1)] if m.group(1) else ""),
     # "Build upward from red block through green block to blue block": a tower from the first cube up (refused before)
     (re.compile(rf"\b(build|stack)\s+(?:it\s+)?(?:upward|upwards|up)\s+from\s+(?:the\s+)?((?:{COLOR_RE})(?:\s+(?:block|cube))?"
                 rf"(?:\s*,?\s+(?:to|through|then|and\s+then)\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:block|cube))?)+)\b"),
@@ -3549,9 +3554,8 @@ GOAL_FRAME_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\bin\s+the\s+(?:specified|given|listed|stated|said|mentioned)\s+(?:sequence|order)\b"), "in that order"),
     (re.compile(r"\bin\s+a\s+(?:linear|straight)\s+(?:fashion|manner|arrangement|formation)\b"), "in a row"),
     # "arranging ... in a row, then stacking them": a later step said as a gerund is a step (it had been dropped)
-    (re.compile(r"\b(then|and\s+then|after\s+that|afterwards)\s+(stack|plac|putt|lin|arrang|build|mak|mov|pil)ing\b"),
-     lambda m: f"{m.group(1)} " + {"stack": "stack", "plac": "place", "putt": "put", "lin": "line", "arrang": "arrange", "build": "build",
-                                   "mak": "make", "mov": "move", "pil": "pile"}[m.group(2)]),
+    (re.compile(r"\b(then|and\s+then|after\s+that|afterwards)\s+" + _GERUND_RE),
+     lambda m: f"{m.group(1)} {_GERUND_STEMS[m.group(2)]}"),
     # "in front to the left of the blue cube": both relations to that cube (in front had been dropped)
     (re.compile(rf"\b(in\s+front|behind)\s+(?:and\s+)?(to\s+the\s+(?:left|right)\s+of)\s+(the\s+(?:{COLOR_RE})(?:\s+(?:cube|block))?)"),
      lambda m: f"{m.group(1)}{'' if m.group(1) == 'behind' else ' of'} {m.group(3)} and {m.group(2)} {m.group(3)}"),
@@ -4138,6 +4142,18 @@ RELATION_SIDE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 )
 """A relation said by a cube's side ("to its left", "on the blue block's left", "on either side of", "one on the other")."""
 
+def _each_patch_listed(m: re.Match) -> str:
+    """"a pink cube on each of the red, green and blue patches" said cube by cube ("a pink cube on the red patch, another pink
+    cube on the green patch and another pink cube on the blue patch"); as written when a patch is listed twice or a cube is
+    referred back to (:func:`_refers_back`)."""
+    patches = re.findall(rf"\b(?:{COLOR_RE})\b", m.group(3))
+    if len(set(patches)) != len(patches) or _refers_back(m):
+        return m.group(0)
+    cube = f"{m.group(1) + ' ' if m.group(1) else ''}{m.group(2)}"
+    each = [f"{cube} on the {p} patch" for p in patches]
+    return "a " + ", another ".join(each[:-1]) + " and another " + each[-1]
+
+
 def _refers_back(m: re.Match) -> bool:
     """Whether the words after a cube said for each of several patches refer back to one of those cubes ("... and put the
     red cube on it", "... the pink cube next to the green cube"): which one is not said, so the words are left as they are
@@ -4160,11 +4176,7 @@ EDGE_AND_EACH_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b(?:a|one|1)\s+(?:({COLOR_RE})\s+)?(block|cube)\s+(?:on|onto)\s+each\s+(?:of\s+)?(?:the\s+)?"
                 rf"((?:{COLOR_RE})(?:\s+patch)?(?:\s*,\s*(?:the\s+)?(?:{COLOR_RE})(?:\s+patch)?){{1,4}}\s*,?\s+and\s+(?:the\s+)?(?:{COLOR_RE})"
                 rf"\s+(?:goal\s+)?patch(?:es)?)\b(?!\s*,?\s*(?:and\s+)?(?:the\s+)?(?:{COLOR_RE})(?:\s+patch|\s*[.,]|\s+and))"),
-     lambda m: (lambda c, ps: "a " + " and another ".join([", another ".join(f"{c}{m.group(2)} on the {p} patch" for p in ps[:-1]),
-                                                             f"{c}{m.group(2)} on the {ps[-1]} patch"]))(
-         f"{m.group(1)} " if m.group(1) else "", re.findall(rf"\b(?:{COLOR_RE})\b", m.group(3)))
-     if len(set(re.findall(rf"\b(?:{COLOR_RE})\b", m.group(3)))) == len(re.findall(rf"\b(?:{COLOR_RE})\b", m.group(3)))
-     and not _refers_back(m) else m.group(0)),
+     lambda m: _each_patch_listed(m)),
     # "a green cube on each of the two patches, the red patch and the blue patch", "... on each of the red and blue
     # patches": the two patches named, a cube of that colour on each (refused before: how many patches, or each said twice)
     (re.compile(rf"\b(?:a|one|1)\s+(?:({COLOR_RE})\s+)?(block|cube)\s+(?:on|onto)\s+(?:each|both)\s+(?:of\s+)?(?:the\s+)?"
