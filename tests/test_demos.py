@@ -126,17 +126,31 @@ def _committed(out: Path) -> list[dict]:
     return _lines(out / "meta" / "episodes.jsonl")
 
 
+def _uncommit_last(out: Path) -> None:
+    """Take back the last episode's commit (its row), leaving its files and its attempt line: what a
+    kill between the attempt line and the commit leaves."""
+    if (out / "meta" / "episodes").is_dir():  # LeRobot v3.0
+        f = sorted((out / "meta" / "episodes").rglob("*.parquet"))[-1]
+        t = pq.read_table(f)
+        pq.write_table(t.slice(0, t.num_rows - 1), f)
+    else:
+        f = out / "meta" / "episodes.jsonl"
+        f.write_text("".join(f.read_text().splitlines(keepends=True)[:-1]))
+
+
 @pytest.mark.parametrize("fmt", ["lerobot", "lerobot-v2.1", "hdf5"])
-def test_a_kill_between_the_commit_and_the_attempt_line_does_not_record_a_seed_twice(tmp_path, fmt):
-    out = tmp_path / "ds"
-    args = ["demos", STACK, "--embodiment", "floating_gripper", "--out", out, "--cameras", "", "--format", fmt]
-    assert _rpg(*args, "-n", "2").returncode == 0
-    attempts = out / "meta" / "rpg_attempts.jsonl"
-    lines = attempts.read_text().splitlines(keepends=True)
-    attempts.write_text("".join(lines[:-1]))  # what a kill right after the last commit leaves
-    r = _rpg(*args, "-n", "3")
+def test_a_kill_between_the_attempt_line_and_the_commit_records_the_episode_as_an_unkilled_run(tmp_path, fmt):
+    ref, out = tmp_path / "ref", tmp_path / "ds"
+    args = ["demos", STACK, "--embodiment", "floating_gripper", "--cameras", "", "--format", fmt]
+    assert _rpg(*args, "--out", ref, "-n", "3").returncode == 0
+    assert _rpg(*args, "--out", out, "-n", "3").returncode == 0
+    _uncommit_last(out)
+    assert sorted(e["seed"] for e in _committed(out)) == [0, 1]
+    assert len(_lines(out / "meta" / "rpg_attempts.jsonl")) == 3  # the lost episode's attempt, marked kept
+    r = _rpg(*args, "--out", out, "-n", "3")
     assert r.returncode == 0, r.stderr
     assert sorted(e["seed"] for e in _committed(out)) == [0, 1, 2]
+    assert (out / "meta" / "rpg_attempts.jsonl").read_text() == (ref / "meta" / "rpg_attempts.jsonl").read_text()
 
 
 @pytest.mark.parametrize("fmt", ["lerobot", "lerobot-v2.1"])

@@ -40,7 +40,7 @@ import pyarrow as pa
 import pyarrow.parquet as pq
 
 from rpg.demos.layout import Layout, check_existing, video_key
-from rpg.demos.log import discard_failed, log_attempt
+from rpg.demos.log import attempted, discard_failed, log_attempt, settle_attempts
 from rpg.demos.record import ACTION_NAMES, Episode
 from rpg.errors import PeerError
 from rpg.jsonl import append_jsonl, read_jsonl, rewrite_jsonl
@@ -101,7 +101,7 @@ class LeRobotWriter:
         self.meta.mkdir(parents=True, exist_ok=True)
         self.episodes = read_jsonl(self.meta / "episodes.jsonl")
         self.tasks = [t["task"] for t in read_jsonl(self.meta / "tasks.jsonl")]
-        self.attempts = read_jsonl(self.meta / "rpg_attempts.jsonl")
+        self.attempts = settle_attempts(self.meta, self.episodes)
         n = len(self.episodes)
         for rel in ("data", "videos"):
             for f in sorted((self.root / rel).rglob("episode_*")):
@@ -113,9 +113,7 @@ class LeRobotWriter:
         rewrite_jsonl(self.meta / "episodes_stats.jsonl", stats)
         rewrite_jsonl(self.meta / "episodes.jsonl", self.episodes)
         self._write_info()
-        done = {(a["task_hash"], a["seed"], a["instruction"]) for a in self.attempts}
-        done |= {(e["task_hash"], e["seed"], e["instruction"]) for e in self.episodes}
-        return done
+        return attempted(self.attempts, self.episodes)
 
     def _path(self, template: str, index: int, **kw) -> Path:
         return self.root / template.format(episode_chunk=index // CHUNK_SIZE, episode_index=index, **kw)
@@ -147,9 +145,9 @@ class LeRobotWriter:
         stats = self.layout.stats(ep, index, start, task_index)
         append_jsonl(self.meta / "episodes_stats.jsonl", {"episode_index": index, "stats": stats})
         line = {"episode_index": index, "tasks": [ep.instruction], "length": ep.length, **provenance(ep)}
+        log_attempt(self.meta, self.attempts, ep)  # before the commit (rpg.demos.log)
         append_jsonl(self.meta / "episodes.jsonl", line)  # the commit
         self.episodes.append(line)
-        log_attempt(self.meta, self.attempts, ep)
         self._write_info()
         return index
 

@@ -59,7 +59,7 @@ from rpg.demos.layout import (
     video_key,
 )
 from rpg.demos.lerobot import _write_json, provenance
-from rpg.demos.log import discard_failed, log_attempt
+from rpg.demos.log import attempted, discard_failed, log_attempt, settle_attempts
 from rpg.demos.record import ACTION_NAMES, Episode
 from rpg.errors import BadInput, PeerError
 
@@ -198,7 +198,6 @@ class LeRobotV3Writer:
             BadInput: the directory holds another kind of dataset, another LeRobot version, or
                 one of another embodiment, cameras, image size, columns or keyframe interval.
         """
-        from rpg.jsonl import read_jsonl, rewrite_jsonl
 
         old = check_existing(self.root, self.layout, CODEBASE_VERSION, "lerobot-v2.1")
         if old is not None:
@@ -227,11 +226,8 @@ class LeRobotV3Writer:
                 self.tasks.append(row["tasks"][0])
         self._write_tasks()
         self._write_info()
-        self.attempts = read_jsonl(self.meta / "rpg_attempts.jsonl")
-        rewrite_jsonl(self.meta / "rpg_attempts.jsonl", self.attempts)
-        done = {(a["task_hash"], a["seed"], a["instruction"]) for a in self.attempts}
-        done |= {(e["task_hash"], e["seed"], e["instruction"]) for e in self.rows}
-        return done
+        self.attempts = settle_attempts(self.meta, self.rows)
+        return attempted(self.attempts, self.rows)
 
     def _cut_back(self) -> None:
         """Make the data and video files hold exactly the committed episodes' frames."""
@@ -301,9 +297,9 @@ class LeRobotV3Writer:
         rows = [r for r in self.rows if r["episode_index"] // EPISODES_PER_META_FILE == meta_number] + [row]
         tmp = _tmp(path)
         pq.write_table(self._episodes_table(rows), tmp)
+        log_attempt(self.meta, self.attempts, ep)  # before the commit (rpg.demos.log)
         _replace(tmp, path)  # the commit
         self.rows.append(row)
-        log_attempt(self.meta, self.attempts, ep)
         self._write_info()
         return index
 

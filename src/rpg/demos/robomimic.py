@@ -64,7 +64,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from rpg.demos.log import discard_failed, log_attempt
+from rpg.demos.log import discard_failed, log_attempt, settle_attempts
 from rpg.demos.record import Episode
 from rpg.errors import BadInput, PeerError
 from rpg.jsonl import append_jsonl, read_jsonl, rewrite_jsonl
@@ -201,7 +201,6 @@ class RobomimicWriter:
         self.parts.mkdir(exist_ok=True)
         settings.write_text(json.dumps(self._settings(), indent=2, sort_keys=True) + "\n")
         self.episodes = read_jsonl(self.meta / "episodes.jsonl")
-        self.attempts = read_jsonl(self.meta / "rpg_attempts.jsonl")
         n = len(self.episodes)
         for f in sorted(self.parts.glob("demo_*.hdf5")):
             if int(f.stem.split("_")[1]) >= n:  # written, never committed
@@ -209,7 +208,7 @@ class RobomimicWriter:
         for f in sorted(self.root.rglob(".*tmp*")):
             f.unlink()
         rewrite_jsonl(self.meta / "episodes.jsonl", self.episodes)
-        rewrite_jsonl(self.meta / "rpg_attempts.jsonl", self.attempts)
+        self.attempts = settle_attempts(self.meta, self.episodes)
 
     def add(self, ep: Episode) -> int | None:
         """Commit an episode as a part file; record any attempt.
@@ -234,9 +233,9 @@ class RobomimicWriter:
             tmp.unlink(missing_ok=True)
         for v in ep.videos.values():
             Path(v).unlink(missing_ok=True)
+        log_attempt(self.meta, self.attempts, ep)  # before the commit (rpg.demos.log)
         append_jsonl(self.meta / "episodes.jsonl", line)  # the commit
         self.episodes.append(line)
-        log_attempt(self.meta, self.attempts, ep)
         return index
 
     def finalize(self) -> Path:
