@@ -76,7 +76,8 @@ STRANGER_SETS = {
     "stranger39": ("stranger39.yaml", "STRANGER set 39 (stranger39.yaml, transfer measure of the twenty-eighth session; development material from the twenty-ninth)"),
     "stranger40": ("stranger40.yaml", "STRANGER set 40 (stranger40.yaml, transfer measure of the twenty-ninth session; development material from the thirtieth)"),
     "stranger41": ("stranger41.yaml", "STRANGER set 41 (stranger41.yaml, transfer measure of the thirtieth session; development material from the thirty-first)"),
-    "stranger42": ("stranger42.yaml", "STRANGER set 42 (stranger42.yaml, transfer measure of the thirty-first session: aggregates only; the same at its start and end)"),
+    "stranger42": ("stranger42.yaml", "STRANGER set 42 (stranger42.yaml, transfer measure of the thirty-first session; development material from the thirty-second)"),
+    "stranger43": ("stranger43.yaml", "STRANGER set 43 (stranger43.yaml, transfer measure of the thirty-second session: aggregates only)"),
 }
 SPLITS = HERE / "splits.yaml"
 
