@@ -6604,3 +6604,56 @@ def test_a_templates_words_for_towers_and_rows(text, expected):
     schema = parse(text)
     assert sorted(meaning(schema)) == expected
     assert uncited(schema, text) == []
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a voice's label before its task and a simile or aside at a sentence's end (each had been refused for its words)
+    ("Pottery class, week nine: stack the yellow cube on the black cube, like a glaze over clay.", ["stack(black,yellow)"]),
+    ("Harbour master's bulletin: the green cube goes behind the red cube, as per the mooring chart.", ["behind(green,red)"]),
+    ("Put the white cube next to the pink cube, snug as two oars in a boat.", ["next_to(pink,white)"]),
+    ("Line up the cyan, brown and gray cubes in a row like ducklings following their mother.", ["line(brown,cyan,gray)"]),
+    ("Bakery notice: put the orange cube on the purple patch - the ovens are warm today.", ["on_patch(orange,patch:purple)"]),
+    ("Docket 48. Place the blue cube in the front left corner of the table, where the kettle would be.",
+     ["in_region(blue,front_left)"]),
+    ("Place the pink cube between the red cube and the blue cube, the way a filling sits between two slices of bread.",
+     ["between(pink;blue,red)"]),
+])
+def test_a_voices_label_and_sentence_tails_are_dropped(text, expected):
+    schema = check_feasibility(parse(text))
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []
+
+
+@pytest.mark.parametrize("text", [
+    "Stack red on blue, like last time.",  # a reference
+    "Put the red cube in front of the blue cube, like in the picture.",
+    "Stack the red cube on the blue cube, like a tall chimney.",  # a size in the simile (the chimney stays, refused)
+    "Put the red cube next to the blue cube, in the bowl.",  # a place that is an object
+    "Put the red cube on the blue cube, using the tongs.",  # a tool
+    "Put the red cube next to the blue cube, upside down.",
+    "Put the red cube next to the blue cube, then knock it over.",
+    "Without help: put the red cube on the blue cube.",  # a negation in a label
+    "Put the red cube on the blue cube, if the light is on.",  # a condition
+    "Stack red on blue - the way you did it before.",
+    "Put the red cube left of the blue cube, as far as possible.",
+    "Stack the red cube on the blue cube, like the green tower.",  # a colour and a structure in the simile
+    "Put the red cube on the blue cube, spiral shape please.",  # a shape
+    "Put the red cube on the blue cube, textbook!",  # a word alone may carry meaning
+])
+def test_a_chunk_that_may_bear_on_the_goal_is_no_voice(text):
+    """A chunk at a task's edge that says anything the goal may hang on stays, to be read or refused."""
+    from rpg.schema.feasibility import InfeasibleTask
+
+    with pytest.raises((ParseError, Inexpressible, InfeasibleTask)):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Stack the letter cubes so that, reading from bottom to top, they go T, O, P.", ["stack(T,O,P)"]),
+    ("Move the orange block to the far side of the table, away from the robot.", ["in_region(orange,back)"]),
+    ("Put the red and the blue cubes onto the yellow and green patches, respectively.",
+     ["on_patch(blue,patch:green)", "on_patch(red,patch:yellow)"]),
+])
+def test_a_chunk_of_the_task_at_a_sentences_end_is_kept(text, expected):
+    """A label cube's letter, "away from the robot" and "respectively" end sentences too: they are the task's."""
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected

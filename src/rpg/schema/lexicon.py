@@ -300,6 +300,59 @@ COMMENTARY_BLOCKING_KINDS: frozenset[str] = frozenset({"negation", "time", "quan
 commentary: each may bear on the goal ("Never twice.", "Under a golden sky."); an object, an action on no cube, a
 condition on a person or a question to one ("Serve with a smile.", "What do you do?") bears on none."""
 
+VOICE_LABEL_RE = re.compile(r"^\s*(?P<c>[^.!?:;()\"]{2,70}?)\s*:\s+(?=\S)")
+"""A voice's label before a task, up to the text's first colon ("Site diary, day six: ...", "Runway-ready look: ...",
+"Swarm-season tip from the apiary: ..."): dropped by :func:`rpg.schema.reading.drop_voice_chunks` when
+:func:`rpg.schema.reading._voice_chunk` finds it inert."""
+
+VOICE_TAIL_RES: tuple[re.Pattern[str], ...] = (
+    re.compile(r"(?P<sep>\s*,\s*|\s+[-\u2013\u2014]+\s+|\s+(?=(?:just\s+)?like\s))"
+               r"(?P<c>(?:just\s+)?like\s+[^,;:.!?()]{2,80}|as\s+per\s+[^,;:.!?()]{2,60}|the\s+way\s+[^,;:.!?()]{2,80}"
+               r"|(?:as\s+)?[a-z]+\s+as\s+(?:a|an|the|two|three|four|five|six|[a-z]+s)\b[^,;:.!?()]{0,60})(?P<end>[.!?]*)\s*$"),
+    re.compile(r"(?P<sep>\s*,\s*|\s+[-\u2013\u2014]+\s+)(?P<c>[^,;:.!?()]{2,60})(?P<end>[.!?]*)\s*$"),
+)
+"""A chunk at a sentence's end in a voice, tried in turn: a simile ("..., like a bee's stripes.", "... in a row like
+climbers on a fixed rope.", "..., steady as a belay.", "..., as per the site plan."), then any chunk set off by a comma
+or a dash ("... - monochrome is so in right now.", "..., our high camp."): dropped by
+:func:`rpg.schema.reading.drop_voice_chunks` when :func:`rpg.schema.reading._voice_chunk` finds it inert."""
+
+VOICE_SIMILE_OPENING_RE = re.compile(r"^(?:just\s+)?like\s+(?!(?:in|at|on|onto|to|near|next|behind|beside|under|over|above|below|right|left"
+                                     r"|just|really|so|this|that|here|there|before|last|always|usual|normal|i|we|you)\b)|^as\s+per\b|^the\s+way\b|^(?:as\s+)?[a-z]+\s+as\b")
+"""How a simile chunk of :data:`VOICE_TAIL_RES` opens (its words describe the thing compared: its places and
+counts are that thing's)."""
+
+VOICE_PLACE_HAZARD_RE = re.compile(r"\b(?:up|down|over|off|out|upon|atop|underneath|beneath|their|its)\b")
+"""Words of place and possession that keep a chunk that is no simile from being dropped as a voice's ("..., up high",
+"..., its top free"); a simile's are the compared thing's ("like a glaze over clay", "like ducklings following their
+mother")."""
+
+VOICE_CHUNK_HAZARD_RE = re.compile(
+    r"\b(?:not|no|never|none|nothing|nowhere|neither|nor|without|except|unless|[a-z]+n't|cannot|if|when|whenever|case|provided"
+    r"|before|after|then|next|later|finally|first|second|third|last|again|once|twice|previous\w*|earlier|usual|same|shown|show"
+    r"|picture|image|photo|diagram|sketch|drawing|figure|this|that|these|those|it|them|they|one|ones|each|every|all|both"
+    r"|some|any|few|several|many|more|less|fewer|most|least|only|other|another|else|rest|remaining|extra|big|bigger|biggest"
+    r"|small|smaller|smallest|large|larger|tall|taller|tallest|short|shorter|high|higher|low|lower|wide|tiny|huge|size|height"
+    r"|order\w*|sort\w*|revers\w*|backwards?|alphabetic\w*|ascending|descending|quick\w*|fast|slow\w*|seconds?|minutes?|within"
+    r"|until|hurry|upside|sideways|diagonal\w*|apart|together|touch\w*|spaced|evenly|straight|tilt\w*|rotat\w*|turn\w*|flip\w*"
+    r"|swap\w*|instead|rather|must|should|need|needs|required?|make\s+sure|keep|stay\w*|remain\w*|leave|still|colou?r\w*|mirror\w*|opposite|alternat\w*|exactly|precisely|away|robot\w*|gripper|arm|camera"
+    r"|you|your|me|shape\w*|form|formation|pattern\w*|style|design|layout|arrangement\w*|configuration|spiral|triangle\w*"
+    r"|cross|zigzag|diamond|star|heart|arrow|letter|word|spell\w*|read\w*|says?|respectively|apiece|resp)\b")
+"""Words that keep a chunk at a task's edge from being dropped as a voice's (:func:`rpg.schema.reading._voice_chunk`):
+a negation, a condition, a step or repetition, a reference to something earlier or shown, a quantifier or pronoun that
+may stand for cubes, a size, an order, time, a pose or spacing, a requirement, a direction of its own, a colour word.
+Such a chunk may change what the task asks ("..., if the red one is free", "..., like last time", "..., all of them",
+"Upside down: ...", "..., up high"), so it stays, to be read or refused."""
+
+VOICE_SIMILE_BLOCKER_RE = re.compile(
+    rf"\b(?:{COLOR_RE}|grey|blocks?|cubes?|bricks?|box|tower|stack|pil|line|row|column|pyramid|wall|grid|circle|ring|patch|pad"
+    r"|mat\b|tile|letter|digit|label|table|robot|gripper|goal|task|before|previous|last|earlier|usual|shown|picture|image|photo)")
+"""Words a simile chunk may not hold: a cube, colour, structure, patch, label or the table is not a compared thing but
+the task's own (so "..., like the red tower" stays)."""
+
+VOICE_NAME_NUMBER_RE = re.compile(r"\b[a-z][a-z\-]+\s+(?:no\.?\s*|#)?(?:\d+[a-z]?|one|two|three|four|five|six|seven|eight|nine|ten)\b")
+"""A number naming a thing of a voice's label ("day six", "trench 4", "camp two", "Context 17"): dropped with the
+label (a number anywhere else in a chunk keeps it)."""
+
 EVALUATION_WORD_RE = re.compile(
     r"\b(?:episodes?|seeds?|trials?|rollouts?|success(?:\s+(?:rates?|checks?|criteri(?:on|a)|conditions?|detectors?))?"
     r"|scores?|scored|scoring|leaderboards?|entr(?:y|ies)|baselines?|polic(?:y|ies)|metrics?|benchmarks?|accuracy|percent"
@@ -319,6 +372,10 @@ _GOAL_THINGS = (r"(?:" + "|".join(COLORS) + r"|grey|blocks?|cubes?|bricks?|box(?
 :data:`_TASK_THINGS` adds the counts and "on"."""
 
 GOAL_THING_RE = re.compile(rf"\b{_GOAL_THINGS}\b")
+
+GOAL_THING_PREFIX_RE = re.compile(rf"\b{_GOAL_THINGS}")
+"""A word that begins like a goal's word ("towered", "stacking", "bluish", and harmlessly "topic"): keeps a chunk of a voice
+(:func:`rpg.schema.reading._voice_chunk`), which may be a goal said in a form of its own."""
 
 _TURNED_OR_REPEATED = (r"revers\w*|backwards?|opposite|invers\w*|invert\w*|mirror\w*|swap\w*|flip\w*|upside|sideways|rotat\w*"
                        r"|turn\w*|twice|thrice|times|repeat\w*|again|alternat\w*")

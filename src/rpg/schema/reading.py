@@ -312,6 +312,81 @@ def _without_address(sentence: str) -> str:
     return sentence
 
 
+_PLACE_OR_TOOL_RE = re.compile(r"\b(?:in|into|inside|onto|on|at|to|toward|towards|near|by|with|using|use|via|under|behind|beside"
+                               r"|from\s+the\s+(?:left|right|front|back))\b")
+"""Prepositions that keep a chunk that is no simile from being dropped as a voice's: such a chunk may place a cube
+or name a tool ("..., into the bin", "..., using the tongs"); a label's "from" names its writer ("tip from the apiary")."""
+
+
+def _voice_chunk(chunk: str, label: bool = False) -> bool:
+    """Whether a chunk at a task's edge (:data:`lexicon.VOICE_LABEL_RE`, :data:`lexicon.VOICE_TAIL_RES`) is a voice's
+    and says nothing of the task: no hazard (:data:`lexicon.VOICE_CHUNK_HAZARD_RE`: a negation, condition, reference,
+    quantifier, size, order, time, pose, shape, the robot or a listener), no take-back (:data:`lexicon.RETRACTION_RE`),
+    no label cube's letter or digit, no domain refusal that may bear on a goal (:data:`lexicon.COMMENTARY_BLOCKING_KINDS`,
+    a condition).  A simile ("like bees around the queen", "steady as a belay") may hold places, counts and verbs of the
+    thing it compares, but no word that begins like a cube, colour, structure, patch or label
+    (:data:`lexicon.VOICE_SIMILE_BLOCKER_RE`: "like a towering stack" stays); any other chunk ("Site diary, day six",
+    "..., where the hive entrance would be") has a word beyond fillers, no word that begins like a goal's word
+    ("towered"), no count, no verb that changes a scene, no preposition that may place a cube or name a tool, and no number
+    but a label's name of a thing ("day six", :data:`lexicon.VOICE_NAME_NUMBER_RE`)."""
+    if re.search(r"\b[A-HJ-Z]\b|\b[0-9]\b(?!\s*[a-z]{2})|_", chunk) and not (label and not re.search(r"\b[A-Z]\b|_", chunk)):
+        return False  # "..., they go T, O, P": a label cube, not a voice ("day 6" names a day)
+    low = chunk.lower().strip()
+    words = re.findall(r"[a-z][a-z'\-]*", low)
+    if len(words) < 2 or re.search(r"[^\w\s'\-.,#\u2022]", low):
+        return False  # "..., textbook!", "..., respectively", "Obj:", "cc @kowalski": a word alone, or a handle, is the other
+        # readers' to weigh
+    if lexicon.VOICE_CHUNK_HAZARD_RE.search(low) or lexicon.RETRACTION_RE.search(re.sub(r"^the\s+way\b", " ", low)):
+        return False
+    if any(k in lexicon.COMMENTARY_BLOCKING_KINDS or k == "condition" for k, _, _ in _inexpressible(low)):
+        return False
+    if lexicon.VOICE_SIMILE_OPENING_RE.match(low) and not label:
+        return not lexicon.VOICE_SIMILE_BLOCKER_RE.search(low)
+    if lexicon.VOICE_PLACE_HAZARD_RE.search(low):
+        return False
+    if all(w in lexicon.IDLE_WORDS or w in lexicon.CHAT_WORDS or w in lexicon.INTERJECTIONS for w in words):
+        return False  # "..., please?": a filler the readers know (it may matter to how the rest is read)
+    named = lexicon.VOICE_NAME_NUMBER_RE.sub(lambda m: m.group(0).split()[0], low) if label else low
+    if re.search(r"\d", named) or lexicon.TASK_CONTENT_RE.search(named) or lexicon.GOAL_THING_PREFIX_RE.search(named) \
+            or _PLACE_OR_TOOL_RE.search(re.sub(r"\bfrom\b", " ", named) if label else named):
+        return False
+    for w in words:
+        for part in w.split("-"):
+            base = part.removesuffix("'s")
+            if base in COLORS or base in lexicon.colour_names() or base in lexicon.SCENE_CHANGING_VERBS or any(
+                    x in lexicon.SCENE_CHANGING_VERBS for x in lexicon.lemmas(base)):
+                return False
+    return True
+
+
+def drop_voice_chunks(text: str) -> tuple[str, list[str]]:
+    """``text`` without a voice's label before its task ("Site diary, day six: ...", :data:`lexicon.VOICE_LABEL_RE`; or a
+    first sentence of up to four words such as "Context 17.") and without the chunks that end its sentences in a voice
+    ("..., like a bee's stripes.", "..., steady as a belay.", "... - monochrome is so in right now.",
+    (:data:`lexicon.VOICE_TAIL_RES`), each inert (:func:`_voice_chunk`), when what is left of the sentence still names a
+    thing of a goal; and the chunks dropped.  A voice's words are its own: a chunk that names a cube, a structure, a
+    place, a count or anything that may change the goal stays, to be read or refused."""
+    dropped: list[str] = []
+    label = lexicon.VOICE_LABEL_RE.match(text)
+    first = re.match(r"\s*(?P<c>[^.!?:;]{2,40})\.\s+(?=\S)", text)
+    for m in (label, first):
+        if m and len(m.group("c").split()) <= (10 if m is label else 4) and _voice_chunk(m.group("c"), label=True) \
+                and lexicon.GOAL_THING_RE.search(text[m.end():].lower()):
+            dropped.append(m.group(0).strip())
+            text = text[m.end():]
+            break
+    sentences = []
+    for sentence in re.split(r"(?<=[.!?])\s+", text):
+        for _ in range(2):  # "..., like climbers on a rope, our high camp."
+            tail = next((t for t in (p.search(sentence) for p in lexicon.VOICE_TAIL_RES) if t and _voice_chunk(t.group("c"))), None)
+            if not tail or not lexicon.GOAL_THING_RE.search(sentence[:tail.start()].lower()):
+                break
+            dropped.append(tail.group("c").strip())
+            sentence = sentence[:tail.start()] + (tail.group("end") or "")
+        sentences.append(sentence)
+    return " ".join(sentences), dropped
+
+
 def drop_asides(text: str) -> tuple[str, list[str]]:
     """``text`` without its asides, and the asides dropped: exclaimed sentences (:data:`lexicon.EXCLAIMED_SENTENCE_RE`:
     "Put the green block on the purple block. What a tower!") that name nothing of a goal
@@ -365,7 +440,8 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
     if framing and len(framing) < len(sentences):
         kept = " ".join(s for s in sentences if s not in framing)
         dropped += framing
-    return kept, dropped
+    kept, voiced = drop_voice_chunks(kept)
+    return kept, dropped + voiced
 
 
 def _refuse_unresolved_pronoun(text: str, original: str) -> None:
