@@ -243,6 +243,12 @@ ROBOT_VIEWPOINT_RE = re.compile(r"(?:^|(?<=[.;:!?]\s))(?:(?:as\s+)?(?:seen|viewe
 """A viewpoint that is the robot's ("From the robot's point of view, ...", "Seen from the robot, ..."): rpg's own
 frame, dropped before viewpoints are refused."""
 
+FRONT_GLOSS_RE = re.compile(r"\b(?P<r>(?:at|on|in|to|toward|towards)\s+the\s+(?:front|near\s+(?:side|edge))(?:\s+(?:side|edge|half|part))?"
+                            r"(?:\s+of\s+the\s+(?:table|workspace))?)\s*,?\s+(?:(?:right\s+)?(?:near|nearest|close\s+to|closest\s+to|by)"
+                            r"|(?:(?:the\s+)?(?:side|part|half|edge)\s+)?(?:nearest|closest)(?:\s+to)?)\s+(?:the\s+|our\s+|your\s+)?robot\b")
+"""The front said again as the robot's side ("at the front of the table, near the robot", "..., the side nearest the
+robot"): one region, its gloss dropped (it had been read as the front twice, refused as a cube repeated)."""
+
 FRAMING_SENTENCE_HAZARD_RE = re.compile(
     r"\b(?:not|no|never|none|nothing|nobody|nowhere|neither|nor|without|except|unless|avoid\w*|[a-z]+n't|cannot"
     r"|should|must|shall|need|needs|needed|has\s+to|have\s+to|had\s+to|ought|require\w*|want\w*|expect\w*|make\s+sure"
@@ -336,10 +342,13 @@ VOICE_CHUNK_HAZARD_RE = re.compile(
     r"|until|hurry|upside|sideways|diagonal\w*|apart|together|touch\w*|spaced|evenly|straight|tilt\w*|rotat\w*|turn\w*|flip\w*"
     r"|swap\w*|instead|rather|must|should|need|needs|required?|make\s+sure|keep|stay\w*|remain\w*|leave|still|colou?r\w*|mirror\w*|opposite|alternat\w*|exactly|precisely|away|robot\w*|gripper|arm|camera"
     r"|you|your|me|shape\w*|form|formation|pattern\w*|style|design|layout|arrangement\w*|configuration|spiral|triangle\w*"
-    r"|cross|zigzag|diamond|star|heart|arrow|letter|word|spell\w*|read\w*|says?|respectively|apiece|resp)\b")
+    r"|cross|zigzag|diamond|star|heart|arrow|letter|word|spell\w*|read\w*|says?|respectively|apiece|resp"
+    r"|initial\w*|init|start\w*|begin\w*|setup|set-up|end|ends|ending|final\w*|goal|target|result|outcome|desired|scene|state"
+    r"|config\w*|current\w*|success\w*|episode|done|complete\w*)\b")
 """Words that keep a chunk at a task's edge from being dropped as a voice's (:func:`rpg.schema.reading._voice_chunk`):
 a negation, a condition, a step or repetition, a reference to something earlier or shown, a quantifier or pronoun that
-may stand for cubes, a size, an order, time, a pose or spacing, a requirement, a direction of its own, a colour word.
+may stand for cubes, a size, an order, time, a pose or spacing, a requirement, a direction of its own, a colour word, a
+shape, the robot or a listener, and a heading's word for the start or the goal ("Initial scene:", "End state:").
 Such a chunk may change what the task asks ("..., if the red one is free", "..., like last time", "..., all of them",
 "Upside down: ...", "..., up high"), so it stays, to be read or refused."""
 
@@ -515,7 +524,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                  r"|\bno\s+(?:\w+\s+){0,2}?(?:blocks?|cubes?|boxes|one|other|longer)\b",
      "is a negation: a task's goal says what must hold at the end, and rpg does not check that something is absent; "
      "say what should be true instead"),
-    ("condition", r"\b(?:if|unless|whenever|otherwise|provided)\b|\bonly\s+(?:after|once|when|before)\b"
+    ("condition", r"\b(?:if|unless|whenever|otherwise|provided)\b|\bonly\s+(?:after|once|when|before)\b|\bin\s+case\b(?!\s+of\b)"
                   r"|\b(?:after|once|before)\s+(?:the|it|they|you)\b[^.;]*?\b(?:has|have|had)\s+been\b"
                   r"|(?:^|[.;!]\s*)(?P<w>(?:should|were|had)\s+(?:there\s+be|the|a|an|it|they)\b)[^,.;?]*,",  # "Should there be a letter cube A, ..."
      "makes the goal conditional: a task has one goal, checked at the end of the episode; say the goal for one scene"),
@@ -1518,8 +1527,11 @@ DISTRIBUTED_RELATIONS: tuple[tuple[re.Pattern, str], ...] = (
                 rf"(?P<rel2>{_PAIRWISE_WORDS})\s+the\s+(?P<d>{_COLOR_WORD})\s+(?:block|cube)\b"),
      r"the \g<a> \g<n> \g<rel> the \g<c> \g<n> and the \g<a> \g<n> \g<rel2> the \g<d> \g<n> and "
      r"the \g<b> \g<n> \g<rel> the \g<c> \g<n> and the \g<b> \g<n> \g<rel2> the \g<d> \g<n>"),
-    # "the red and green blocks next to the blue block": each of them
-    (re.compile(rf"(?<!stack\s)(?<!pile\s)\bthe\s+(?P<a>{_COLOR_WORD})\s+and\s+(?:the\s+)?(?P<b>{_COLOR_WORD})\s+(?P<n>block|cube)s\s+"
+    # "the red and green blocks next to the blue block", "both the red and the orange cube should be next to the white
+    # cube": each of them (the red one had been dropped after a verb)
+    (re.compile(rf"(?<!stack\s)(?<!pile\s)\b(?:both\s+)?the\s+(?P<a>{_COLOR_WORD})\s+and\s+(?:the\s+)?(?P<b>{_COLOR_WORD})\s+"
+                r"(?P<n>block|cube)(?:s\s+|\s+(?=(?:should|must|will|are|go|sit|stand|end)\b))"
+                r"(?:(?:should|must|will)\s+(?:be|go|end\s+up|sit|stand)\s+|(?:are|go|sit|stand|end\s+up)\s+)?"
                 rf"(?P<rel>{_PAIRWISE_WORDS})\s+the\s+(?P<c>{_COLOR_WORD})\s+(?:block|cube)\b"),
      r"the \g<a> \g<n> \g<rel> the \g<c> \g<n> and the \g<b> \g<n> \g<rel> the \g<c> \g<n>"),
     # "the red block to the left of the blue and green blocks", "... of the blue block and the green block."
@@ -3684,12 +3696,13 @@ START_WORD_RE = re.compile(r"\b(?:start(?:s|ing)?|initial(?:ly)?|beginning|begin
 (dropping it had made the start the goal)."""
 
 ENDS_IN_PARENTHESES_RE = re.compile(
-    rf"(?i)\b(?P<first>{COLOR_RE})(?:\s+(?:cube|block))?\s*\((?:at\s+the\s+|on\s+the\s+)?(?P<end>bottom|base|top)\)\s*[,/]\s*"
-    rf"(?P<mid>(?:(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:\s*\((?:in\s+the\s+)?middle\))?\s*[,/]\s*(?:and\s+)?)*)(?:and\s+|then\s+)?"
+    rf"(?i)\b(?P<first>{COLOR_RE})(?:\s+(?:cube|block))?\s*\((?:at\s+the\s+|on\s+the\s+)?(?P<end>bottom|base|top)\)(?:\s*[,/]\s*|\s+(?=(?:and|then)\s))"
+    rf"(?P<mid>(?:(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:\s*\((?:in\s+the\s+)?middle\))?(?:\s*[,/]\s*(?:and\s+)?|\s+(?=and\s)))*)(?:and\s+|then\s+)?"
     rf"(?P<last>{COLOR_RE})(?:\s+(?:cube|block))?\s*"
     r"\((?:at\s+the\s+|on\s+)?(?:the\s+)?(?P<end2>top|bottom|base)\)")
 """A tower listed with its ends in parentheses ("a tower of red (bottom), blue, yellow (top)"): said as the list and its
-direction, "red, blue, yellow (bottom to top)", which the tower and start readers read (it had been refused)."""
+direction, "red, blue, yellow (bottom to top)", which the tower and start readers read (it had been refused); two joined
+by "and" ("brown (bottom) and yellow (top)") too."""
 
 
 ONE_END_IN_PARENTHESES_RE = re.compile(
@@ -4482,6 +4495,14 @@ LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      "next to"),
     (re.compile(r"\bfollowed\s+by\b|\b(?:topped|crowned|capped)\s+(?:off\s+)?(?:with|by)\b"),
      "then"),
+    # "... green sits on blue and white crowns the tower": that cube on top (the verb had left white out)
+    (re.compile(r"\b(?:crowns|caps|tops(?:\s+off)?)\s+(?:it|them|the\s+(?:pyramid|tower|stack|structure|pile|whole\s+thing))(?:\s+off)?\b"),
+     "goes on top"),
+    # "... green sits on blue and white goes on top": on the chain's top cube (it had gone on the base)
+    (re.compile(rf"\b(?P<c1>{COLOR_RE})(?:\s+(?:cube|block))?\s+(?P<v>(?:sits|goes|is|stands|rests|lies)\s+)?on\s+(?:top\s+of\s+)?(?:the\s+)?"
+                rf"(?P<c2>{COLOR_RE})(?:\s+(?:cube|block))?\s*,?\s+and\s+(?:the\s+)?(?P<c3>{COLOR_RE})(?:\s+(?:cube|block))?\s+"
+                r"(?:(?:goes|sits|is|stands|rests|lies|comes)\s+)?(?:on|at)\s+(?:the\s+)?top\b(?!\s+of)"),
+     lambda m: f"{m['c1']} {m['v'] or ''}on {m['c2']} and {m['c3']} {m['v'] or ''}on {m['c1']}"),
     # "and a white one topping it", "a white cube crowning the pyramid": that cube on top
     (re.compile(r"\b(?:topping|crowning|capping)\s+(?:it|them|the\s+(?:pyramid|tower|stack|structure|pile|whole\s+thing))(?:\s+off)?\b"),
      "on top"),

@@ -1354,6 +1354,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     spelled = ({w.lower() for w in re.findall(r"\b[A-Z]{2,}\b", original)} - lexicon.CAPS_NEVER_SPELLED) | {  # "spell BOOK": a word
         w.lower() for w in re.findall(r"(?i:\b(?:spell(?:s|ing)?|reads?|word)\s+(?:the\s+word\s+)?)([A-Z]{2,})\b", original)}
     text = lexicon.ROBOT_VIEWPOINT_RE.sub("", text)  # "From the robot's point of view, ...": rpg's own frame
+    text = lexicon.FRONT_GLOSS_RE.sub(r"\g<r>", text)  # "at the front of the table, near the robot": the front once
     text = ordinal_roles(text)  # "the first cube is white, the second black, ...": listed (before "the first cube" is refused)
     refused = [(kind, ws, why) for kind, ws, why in _inexpressible(text)
                if not all(w in spelled for w in ws)]  # refused below, with what the unknown words say as well
@@ -2220,9 +2221,10 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
                 r"in\s+the\s+(?:middle|center|centre)\s+of\s+a\s+(?P<s>row|line)\s+of\s+3\s*,?\s+(?:with\s+)?(?:an?|1|one)\s+"
                 rf"(?P<e>{COLOR_RE})\s+(?:cube|block)\s+(?:at|on)\s+(?:each|both|either)\s+(?:ends?|sides?)(?:\s+of\s+(?:it|them))?\b"),
      r"make a \g<s> from left to right: \g<e>, \g<m>, \g<e>"),
-    # "build a stack of two blue cubes and put the green cube on top", "stack 2 blue cubes with a green one on top":
-    # the counted cubes, then the one on top (the count had reached only one of them)
-    (re.compile(rf"\b(?:(?:build|make|create|form)\s+a\s+(?:{TOWER_NOUNS})\s+of|stack)\s+(?:the\s+)?(\d+)\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)"
+    # "build a stack of two blue cubes and put the green cube on top", "stack 2 blue cubes with a green one on top", "I'd
+    # like a tower of two green cubes with an orange cube on top": the counted cubes, then the one on top (the count had
+    # reached only one of them)
+    (re.compile(rf"\b(?:(?:(?:build|make|create|form)\s+)?a\s+(?:{TOWER_NOUNS})\s+of|stack)\s+(?:the\s+)?(\d+)\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)"
                 r"\s*,?\s+(?:and|with|then)\s+(?:then\s+)?(?:(?:put|place|add|stack|set)\s+)?(?:a|an|the|1)\s+"
                 rf"({COLOR_RE})\s+(?:block|cube|brick|one)\s+(?:on\s+top|at\s+the\s+top)(?:\s+of\s+(?:it|them|the\s+(?:stack|tower)))?\b"
                 r"(?!\s+of\s+(?:each\s+other|one\s+another))"),  # "... and the pink block on top of each other": no order said

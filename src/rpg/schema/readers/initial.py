@@ -145,8 +145,8 @@ START_STRUCTURE_RE = re.compile(r"(?i)^\s*(?:the\s+)?(?:initial|starting|start|o
 the bottom up. The goal is ..."): read as "Initially: a tower of ..." (its tower had been read as
 the goal, and the goal's cube lost)."""
 
-_UNDONE = r"(?:(?:it|them)(?:\s+all)?|all\s+of\s+(?:it|them)|everything|the\s+(?:tower|stack))"
-"""What an undoing verb undoes ("unstack it", "take them all apart", "dismantle everything", "unstack the tower")."""
+_UNDONE = r"(?:(?:it|them)(?:\s+all)?|all\s+of\s+(?:it|them)|everything|the\s+(?:whole\s+|entire\s+)?(?:tower|stack))"
+"""What an undoing verb undoes ("unstack it", "take them all apart", "dismantle everything", "unstack the (whole) tower")."""
 
 GOAL_OPENER_RE = re.compile(r"(?i)^\s*(?:(?:the\s+)?(?:goal|target|task|objective)\s*(?:is\s*(?:to\s+)?|:|-|\u2014)"
                             r"|then\s*,?|now\s*,?|your\s+task\s*(?:is\s+to|:)|(?:at|in)\s+the\s+end\s*[,:]?|finally\s*,?"
@@ -245,10 +245,17 @@ _ROLE_FACT_RE = re.compile(rf"(?i)(?:^|(?<=[,;]))\s*(?:and\s+)?(?:the\s+)?(?P<c>
 against the stacks said, not a stack of its own."""
 
 
+_WHICH_ON_RE = re.compile(r"(?i)\s*,?\s*(?:which|that)\s+(?:in\s+turn\s+)?(?:is|sits|rests|stands|lies)\s+(?:itself\s+)?(?:stacked\s+)?"
+                          r"(?=(?:on\s+top\s+of|on|atop|upon)\s)")
+"""A start's chain said with a relative clause ("the white cube sits on the black cube, which sits on the gray cube"):
+its link, read as one chain with the clause before it."""
+
+
 def _facts(content: str) -> list[tuple[str, ...]] | None:
     """The stacks (bottom to top) a statement of the start says, or None when one of its facts
     is not a form this module reads."""
     stacks: list[tuple[str, ...]] = []
+    content = _WHICH_ON_RE.sub(" ", content)  # "white sits on black, which sits on gray": one chain
     content = _COUNTED_TOWER_RE.sub(_counted_tower, content)
     content = _WITH_ON_TOP_RE.sub(r"\g<top> on \g<bottom>", content)
     roles = [(m.group("c"), m.group("end")) for m in _ROLE_FACT_RE.finditer(content)]
@@ -421,6 +428,14 @@ of the green block", "... on it").  Said after "Currently" or "Right now" (the s
 :data:`lexicon.SCENE_NOW_OPENING_RE`) it is the same start; the citations read the goal's words without that opening."""
 
 
+_NOW_THEN_UNDONE_RE = re.compile(r"(?i)^\s*(?P<fact>[^.;!?]+)[.;]\s+(?=(?:then\s+|now\s+|please\s+)?(?:unstack|dismantle|disassemble"
+                                 r"|take\s+(?:it|them|the\s+(?:whole\s+|entire\s+)?(?:tower|stack))\s+apart|take\s+apart|reverse|flip)\b)")
+"""The scene said now, in one sentence, before a command that undoes or reverses it ("Currently the white cube sits on the
+black cube, which sits on the gray cube. Unstack the whole tower ..."): a start when every word of that sentence is a
+fact of stacks (:func:`_facts`).  Before another command the scene now stays refused (is "red is on blue" kept in the
+goal?)."""
+
+
 def _there_is_start(m: re.Match) -> str:
     top = m.group("top") or m.group("top2")
     onto_top = m.group("moved") and re.match(rf"(?i)\s+(?:cube|block)\s+(?:on\s+top\s+of|onto|on)\s+(?:it|the\s+{re.escape(top)})"
@@ -452,8 +467,11 @@ def split(instruction: str) -> InitialScene | None:
     # "Currently the pink cube is on the orange cube. Add ...": the scene now said before a command that moves or tops its
     # top cube is the start (elsewhere "currently" stays refused: which words are the goal's?)
     now = lexicon.SCENE_NOW_OPENING_RE.sub("", instruction.strip(), count=1)
+    said_now = _NOW_THEN_UNDONE_RE.match(now) if now != instruction.strip() else None
     started = THERE_IS_START_RE.sub(_there_is_start, now)
     instruction = started if started != now else THERE_IS_START_RE.sub(_there_is_start, instruction.strip())
+    if started == now and said_now and _facts(said_now.group("fact")):  # "Currently white sits on black, which sits on
+        instruction = f"Initially {now}"  # gray. Unstack the whole tower ...": stacks said now, every word a fact, then undone
     instruction = FROM_START_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     instruction = FROM_STRUCTURE_RE.sub(_from_structure, instruction.strip())
     undone = UNSTACK_SAID_RE.match(instruction.strip())
@@ -523,9 +541,7 @@ def split(instruction: str) -> InitialScene | None:
         if len(goal) > 1 and not ALL_ON_TABLE_GOAL_RE.match(" ".join(goal[1:])):
             return None  # "Unstack the tower. Put red on green.": blue's end is not said (read as written, refused)
         goal = goal[1:] or ["put all the cubes on the table."]  # "Unstack the tower.": every cube off the others
-    stacks = _facts(" , ".join(start))
-    if stacks is None:  # a start the whole front end reads as stacks ("red stacked on white stacked on black")
-        stacks = _stacks_read(" ".join(f.strip().rstrip(".;,") + "." for f in start))
+    stacks = _start_stacks(start)
     if stacks is None:  # a start this module cannot build: refused, never read as part of the goal
         raise Inexpressible("time", [start[0].strip()[:60]], "states a starting scene rpg does not build: rho_0 starts only "
                             "stacks of named cubes, each cube once, the rest scattered (e.g. \"Initially the red cube is on the "
@@ -557,13 +573,23 @@ _START_END_RE = re.compile(r"(?i)\bthe\s+(?:(?P<top>top|topmost|uppermost|highes
 """The goal's words for an end of the start's one stack ("Take the top one off", "the cube at the bottom")."""
 
 
+def _start_stacks(start: list[str]) -> list[tuple[str, ...]] | None:
+    """The stacks (bottom to top) the start's statements say: read as facts (:func:`_facts`), else by the whole front end
+    (:func:`_stacks_read`: "red stacked on white stacked on black", "a stack with orange at the bottom and pink on top");
+    None when neither reads them."""
+    stacks = _facts(" , ".join(start))
+    if stacks is None:
+        stacks = _stacks_read(" ".join(f.strip().rstrip(".;,") + "." for f in start))
+    return stacks
+
+
 def _start_ends_named(sentences: list[str]) -> list[str]:
     """``sentences`` with the goal's words for an end of the start's stack (:data:`_START_END_RE`) naming its cube, when
     the start says exactly one stack ("Initially red is on blue. Take the top cube off and put it on the table.": the
     red cube; "take it off" of the cube the start is about, :data:`_IT_TAKEN_RE`; "put gray on top", the tower topped,
     :data:`_ON_TOP_RE`); otherwise as they are (which stack's top would be a guess)."""
     start = [s[m.end():] for s in sentences if (m := START_SENTENCE_RE.match(s))] + [s for s in sentences if STARTS_FACT_RE.match(s)]
-    stacks = _facts(" , ".join(start)) if start else None
+    stacks = _start_stacks(start) if start else None
     if not stacks or len(stacks) != 1 or len(stacks[0]) < 2:
         return sentences
 
