@@ -6696,3 +6696,32 @@ def test_in_case_and_a_scene_now_that_is_no_start_are_refused(text):
 
     with pytest.raises((ParseError, Inexpressible, InfeasibleTask)):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # cubes named after the colon that "them" stands for; the far end said again of a row said from one side; a goal said
+    # by its means (thirty-second session, development sets)
+    ("Line them up from the left: the gray cube first, then the cyan cube, then the brown cube at the right end.",
+     ["line[left_to_right](gray,cyan,brown)"]),
+    ("Line up the cubes from the right: the gray cube first, then the cyan cube, then the brown cube at the left end.",
+     ["line[right_to_left](gray,cyan,brown)"]),
+    ("Initially the pink block is on the yellow block; clear the yellow block by putting the pink block on the table.",
+     ["on_table(pink)", "start:stack(yellow,pink)"]),
+    ("Free the blue cube by moving the red cube onto the green patch.", ["on_patch(red,patch:green)"]),
+])
+def test_them_before_a_colons_list_a_rows_far_end_and_a_goal_said_by_its_means(text, expected):
+    schema = check_feasibility(parse(text))
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []
+
+
+@pytest.mark.parametrize("text", [
+    "Line up the cubes from the right: the gray cube first, then the cyan cube, then the brown cube at the right end.",
+    "Put them in a row: the gray cube.",  # one cube after the colon: "them" still names nothing
+    "Clear the blue cube by knocking the red cube over.",
+])
+def test_a_far_end_that_contradicts_them_with_one_cube_and_a_means_outside_the_domain_are_refused(text):
+    from rpg.schema.feasibility import InfeasibleTask
+
+    with pytest.raises((ParseError, Inexpressible, InfeasibleTask)):
+        check_feasibility(parse(text))

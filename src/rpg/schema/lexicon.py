@@ -249,6 +249,21 @@ FRONT_GLOSS_RE = re.compile(r"\b(?P<r>(?:at|on|in|to|toward|towards)\s+the\s+(?:
 """The front said again as the robot's side ("at the front of the table, near the robot", "..., the side nearest the
 robot"): one region, its gloss dropped (it had been read as the front twice, refused as a cube repeated)."""
 
+MEANS_CLAUSE_RE = re.compile(r"(?i)\b(?:clear|free|uncover|expose|unblock)\s+(?:the\s+|a\s+)?(?:[a-z]+\s+)?(?:block|cube)\s*,?\s+by\s+"
+                             r"(?P<v>putting|placing|moving|setting|taking|lifting|stacking)\b")
+"""A goal said with its means ("clear the white block by putting the green block on the table"): the means is the end
+state said, read as the command ("put the green block on the table"); the end it serves is what the means makes."""
+
+MEANS_VERBS: dict[str, str] = {"putting": "put", "placing": "place", "moving": "move", "setting": "set", "taking": "take",
+                               "lifting": "lift", "stacking": "stack"}
+"""The gerund of a means clause (:data:`MEANS_CLAUSE_RE`) -> its imperative."""
+
+
+def means_said(text: str) -> str:
+    """``text`` with a goal said by its means read as the means (:data:`MEANS_CLAUSE_RE`); used on the goal and in the
+    start reader alike."""
+    return MEANS_CLAUSE_RE.sub(lambda m: MEANS_VERBS[m.group("v").lower()], text)
+
 FRAMING_SENTENCE_HAZARD_RE = re.compile(
     r"\b(?:not|no|never|none|nothing|nobody|nowhere|neither|nor|without|except|unless|avoid\w*|[a-z]+n't|cannot"
     r"|should|must|shall|need|needs|needed|has\s+to|have\s+to|had\s+to|ought|require\w*|want\w*|expect\w*|make\s+sure"
@@ -1388,9 +1403,11 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      lambda m: m.group(0) if m.group("a") == m.group("b") or not re.search(r"\b(?:3|three)\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b", m.string)
      else f"from {m.group('a')} to {m.group('b')}: {m.group('c1')}, then {m.group('c2')}, then {m.group('c3')}"),
     # "... yellow, then green, then pink on the far right": the last cube at the far end of the order said (said again)
-    (re.compile(rf"\b(from\s+(left|right|front|back)\s+to\s+(left|right|front|back):\s+[^.;]*?\bthen\s+(?:the\s+)?(?:{COLOR_RE})"
+    # ("from the right: the black cube first, then ..., then the cyan cube at the left end": the same, the start side said)
+    (re.compile(rf"\b(from\s+(?:(left|right|front|back)\s+to\s+(left|right|front|back)|the\s+(?P<s>left|right|front|back)(?:\s+(?:side|end))?)"
+                rf":\s+[^.;]*?\bthen\s+(?:the\s+)?(?:{COLOR_RE})"
                 r"(?:\s+(?:cube|block|one))?)\s+(?:on|at)\s+the\s+(?:far\s+|very\s+)?(left|right|front|back)(?:\s+end)?\b(?=\s*(?:[.;!]|$))"),
-     lambda m: m.group(1) if m.group(4) == m.group(3) else m.group(0)),
+     lambda m: m.group(1) if m.group(5) == (m.group(3) or END_SIDE_DIRECTION[m.group("s") or "left"].split()[-1]) else m.group(0)),
     # "the leftmost block in the row should be red, then blue, then the rightmost is green": the far end said as the last
     (re.compile(rf"(\bfrom\s+(?:left|right|front|back)\s+to\s+(?P<b>left|right|front|back):\s+[^.;:]*?),?\s+(?:and\s+)?then\s+"
                 rf"the\s+(?P=b)(?:most)?(?:\s+(?:one|block|cube))?\s+(?:is|should\s+be|must\s+be)\s+(?P<c>{COLOR_RE})\b"),

@@ -444,6 +444,14 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
     return kept, dropped + voiced
 
 
+_LISTED_CUBE = rf"(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:\s+first)?"
+_LISTED_AFTER_RE = re.compile(rf"[^.;:!?]*:\s*{_LISTED_CUBE}(?:\s*,\s*(?:and\s+)?(?:then\s+)?{_LISTED_CUBE}|\s+(?:and|then)\s+{_LISTED_CUBE})+"
+                              r"(?:\s+(?:at|on)\s+the\s+(?:far\s+)?(?:left|right|front|back)(?:\s+end)?)?\s*(?:[.!]|$)")
+"""What follows a pronoun for cubes when it stands for the cubes a colon then lists ("line them up from the right: the black
+cube first, then the pink cube, then the cyan cube"): a list of cubes and nothing else (a relation after it, "..., and put
+the blue cube next to them", leaves "them" unresolved)."""
+
+
 def _refuse_unresolved_pronoun(text: str, original: str) -> None:
     """Raise :class:`Inexpressible` (``reference``) when a pronoun standing for cubes ("stack
     them", "unstack that.") has nothing named before it to refer to
@@ -451,6 +459,9 @@ def _refuse_unresolved_pronoun(text: str, original: str) -> None:
     has no cube set apart before it (:data:`lexicon.OTHER_RE`)."""
     for m in lexicon.REFERENCE_PRONOUN_RE.finditer(text):
         before = text[:m.start()]
+        listed_after = _LISTED_AFTER_RE.match(text[m.end():])  # "line them up from the right: the black cube first, then ...":
+        if m.group(0) in ("them", "they") and listed_after:  # the cubes the colon lists, a list and nothing else
+            continue
         plural = m.group(0) in ("them", "they") and not re.search(r"\b(?:cubes|blocks|bricks|ones|tower|stack|pile|row|line|digits|letters|numbers|labels|both|all)\b", before)
         if not lexicon.ANTECEDENT_RE.search(before) or (  # "put the yellow block on them": one cube named, "them" no others
                 plural and len(re.findall(rf"\b(?:{COLOR_RE})\b(?!\s+(?:goal\s+)?patch)|\b[a-z]\s+(?:block|cube)\b|\b\d\s+(?:block|cube)\b",
@@ -1355,6 +1366,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
         w.lower() for w in re.findall(r"(?i:\b(?:spell(?:s|ing)?|reads?|word)\s+(?:the\s+word\s+)?)([A-Z]{2,})\b", original)}
     text = lexicon.ROBOT_VIEWPOINT_RE.sub("", text)  # "From the robot's point of view, ...": rpg's own frame
     text = lexicon.FRONT_GLOSS_RE.sub(r"\g<r>", text)  # "at the front of the table, near the robot": the front once
+    text = lexicon.means_said(text)  # "clear X by putting Y ...": put Y
     text = ordinal_roles(text)  # "the first cube is white, the second black, ...": listed (before "the first cube" is refused)
     refused = [(kind, ws, why) for kind, ws, why in _inexpressible(text)
                if not all(w in spelled for w in ws)]  # refused below, with what the unknown words say as well

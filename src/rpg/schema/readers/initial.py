@@ -463,6 +463,7 @@ def split(instruction: str) -> InitialScene | None:
     instruction = lexicon.taken_down_as_unstack(instruction)  # "take (down) the stack of blue on yellow (down) so ..."
     instruction = lexicon.start_stack_source(instruction)  # "There is a stack of ... . Move the blue cube from the stack ..."
     instruction = lexicon.start_and_goal_said_tersely(instruction)  # "1. Start: green on brown. 2. Goal: green on table"
+    instruction = lexicon.means_said(instruction)  # "...; clear the white block by putting the green block on the table"
     instruction = ROBOT_STARTS_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     # "Currently the pink cube is on the orange cube. Add ...": the scene now said before a command that moves or tops its
     # top cube is the start (elsewhere "currently" stays refused: which words are the goal's?)
