@@ -2009,3 +2009,30 @@ def test_two_cubes_switched_tersely(tmp_path, edit):
     """"switch pink and gray" (read as an action) and texting's "n"/"&" for "and" had been refused."""
     assert _steered(tmp_path, "Build a tower of the pink, gray and white cubes from bottom to top", edit) == [
         ("modify", ["stack(gray,pink,white)"])]
+
+
+@pytest.mark.parametrize("edit", [
+    "The class keeps mixing up pink and white, so make the white cube cyan instead.",  # a reason before "so"
+    "For the poster session: make the white cube cyan.",  # a label saying what for
+])
+def test_a_reason_or_a_label_before_the_change_is_dropped(tmp_path, edit):
+    """The reason's colours ("mixing up pink and white") had been read as part of the change (refused), and the label's
+    words as an action."""
+    assert _steered(tmp_path, "Put the pink cube, the white cube and the gray cube in a row from left to right", edit) == [
+        ("tweak", ["line[left_to_right](pink,cyan,gray)"])]
+
+
+@pytest.mark.parametrize("edit", [
+    "Start over: put the black block on the gray patch",  # a fresh start, not a label
+    "Put red on top, so make the white cube cyan.",  # a command before "so" is no reason
+])
+def test_a_label_or_reason_that_may_change_the_edit_is_kept(tmp_path, edit):
+    fam = Family(create_family(compile_instruction("Put the pink cube, the white cube and the gray cube in a row from left to "
+                                                   "right", tmp_path, name="fam").path).path)
+    try:
+        r = steer(fam.path, edit)
+    except SteerError:
+        return
+    from rpg.schema.meaning import meaning
+
+    assert r.intent == "fresh" or meaning(fam.schema(r.version)) != ["line[left_to_right](pink,cyan,gray)"]

@@ -3058,7 +3058,39 @@ EDIT_REST_STAYS_RE = re.compile(
 """A recolour's closing clause that says the other cubes keep their colour ("make both ends orange, the ones in between
 stay blue", "bottom layer cyan, rest stay orange"): checked, not applied (the steering refuses when they are not)."""
 
+_EDIT_LABEL_HAZARD_RE = re.compile(
+    rf"\b(?:{COLOR_RE}|grey|\d+|one|two|three|four|five|six|same|again|back|undo|revert\w*|previous|last|first|original|version"
+    r"|round|step|not|no|never|don't|only|instead|rather|reverse\w*|swap\w*|opposite|more|fewer|less|each|every|all|both|this|that"
+    r"|these|those|them|if|unless|when|wait|actually|sorry|oops|cancel|forget|ignore|different|new|fresh|start\w*|over|scratch"
+    r"|another|task|afresh|anew|clean|reset|begin\w*|separate|other|else|entirely|completely|whole)\b|\bv\d")
+"""What keeps a label before an edit's colon (:data:`EDIT_LABEL_RE`): a colour, a count, a version or a step of the
+session, a negation, a restriction, a reversal, a pronoun for cubes, a condition, a take-back or a fresh start ("Start
+over:", "Completely different task now:") may change the edit."""
+
+EDIT_LABEL_RE = re.compile(r"^\s*(?P<l>[^:.;!?]{3,60}):\s+(?=(?:please\s+)?(?:make|put|add|swap|switch|remove|take|move|change|use|turn"
+                           r"|replace|place|stack|set|drop|delete|build|reverse|flip|the\s+[a-z]+\s+(?:cube|block)|the\s+[a-z]+\s+one)\b)")
+"""A label before an edit that says why or for whom ("Simplify it for the worksheet: make both rows green", "For the
+demo: add a red cube on top"): dropped when it names no cube, structure, place or count and holds nothing that may
+change the edit (:data:`_EDIT_LABEL_HAZARD_RE`)."""
+
+
+def edit_label_dropped(m: re.Match) -> str:
+    """The edit without its label (:data:`EDIT_LABEL_RE`) when the label is inert, else as it is."""
+    label = m.group("l").lower()
+    if _EDIT_LABEL_HAZARD_RE.search(label) or GOAL_THING_PREFIX_RE.search(label):
+        return m.group(0)
+    return ""
+
+
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
+    # "Simplify it for the worksheet: make both rows green": a label saying why, before the change
+    (EDIT_LABEL_RE, edit_label_dropped),
+    # "He has trouble telling red from green, so make the green cube yellow instead": the reason said before the change
+    # (its colours had been read as the change's); only a statement, never a command, before "so"
+    (re.compile(r"(?i)^\s*(?!(?:please\s+)?(?:make|put|add|swap|switch|remove|take|move|change|use|turn|replace|place|stack|set|drop"
+                r"|delete|build|reverse|flip|keep|leave|go|do|try|let)\b)(?:i|we|he|she|they|it|that|this|the\s+[a-z]+|[A-Z][a-z]+|[a-z]+)"
+                r"(?:'s|'re|'m)?\s+[^.;:!?]*?,\s*so\s+(?=(?:please\s+)?(?:make|put|add|swap|switch|remove|take|move|change|use|turn|replace"
+                r"|place|stack|set|drop|delete|build|reverse|flip)\b)"), ""),
     # "collapse it into one long row", "squash them into a tower": the task's cubes made into that structure
     (re.compile(r"(?i)\b(?:collapse|squash|condense|fold|merge|combine|consolidate)\s+(it|them|everything|the\s+(?:whole\s+)?(?:grid|tower|stack"
                 r"|row|line|pyramid|wall|circle|ring|cubes|blocks|towers|stacks|rows|lines))\s+(?:down\s+|up\s+)?into\b"),
