@@ -2036,3 +2036,13 @@ def test_a_label_or_reason_that_may_change_the_edit_is_kept(tmp_path, edit):
     from rpg.schema.meaning import meaning
 
     assert r.intent == "fresh" or meaning(fam.schema(r.version)) != ["line[left_to_right](pink,cyan,gray)"]
+
+
+@pytest.mark.parametrize("edit, expected", [
+    ("um, okay, put a red one on top, no wait, a green one", [("extend", ["stack(blue,red,green)"])]),
+    ("make it three, no wait, four", [("tweak", ["stack(blue,blue,blue,blue)"])]),
+])
+def test_a_spoken_self_correction_in_an_edit_wins(tmp_path, edit, expected):
+    """"..., no wait, a green one" had been refused (the first value and the correction both read as the change)."""
+    base = "Stack the red cube on the blue cube" if "top" in edit else "Build a tower of two blue cubes"
+    assert _steered(tmp_path, base, edit) == expected

@@ -62,7 +62,7 @@ from rpg.schema.lexicon import (
 )
 from rpg.schema.model import TaskSchema
 from rpg.schema.readers.common import item_sequence
-from rpg.schema.reading import canon_color, region_name
+from rpg.schema.reading import apply_corrections, canon_color, region_name
 from rpg.schema.structures import (
     STRUCTURE_KINDS,
     STRUCTURE_RE,
@@ -890,6 +890,7 @@ def _interpret(edit: str) -> EditPlan:
     edit = INTENSIFIER_RIGHT_RE.sub("", EDIT_INTERJECTION_RE.sub("", edit)) or edit  # "no wait, put it right next to ..."
     edit = TYPO_RE.sub(lambda m: TYPOS[m.group(0).lower()], edit)  # "put a yelow one ontop": the words meant
     edit = POLITE_CONDITION_RE.sub(" ", edit).strip() or edit  # "make the outer two white, if you would": no condition
+    edit = apply_corrections(edit)  # "put a red one on top, no wait, a green one": the correction wins, as in a task
     # "mkae it shorter, 3": two swapped letters corrected before the rewrites, which look for "make"
     edit = " ".join(_corrected(w, _known_words(), fuzzy=False) if w.islower() else w for w in edit.split())
     for pattern, replacement in EDIT_REWRITES:
