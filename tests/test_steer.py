@@ -2046,3 +2046,14 @@ def test_a_spoken_self_correction_in_an_edit_wins(tmp_path, edit, expected):
     """"..., no wait, a green one" had been refused (the first value and the correction both read as the change)."""
     base = "Stack the red cube on the blue cube" if "top" in edit else "Build a tower of two blue cubes"
     assert _steered(tmp_path, base, edit) == expected
+
+
+def test_a_change_said_with_the_ends_it_makes_is_applied(tmp_path):
+    """"build it upside down, yellow at the bottom and red on top": the reversal's ends said again (they had been refused
+    as values no change read); ends that the change does not make stay refused."""
+    base = "Stack three cubes: red at the bottom, then green, then yellow on top."
+    assert _steered(tmp_path / "a", base, "Make it harder: build it upside down, yellow at the bottom and red on top.") == [
+        ("modify", ["stack(yellow,green,red)"])]
+    fam = Family(create_family(compile_instruction(base, tmp_path / "b", name="fam").path).path)
+    with pytest.raises(SteerError, match="no place"):
+        steer(fam.path, "build it upside down, red at the bottom")

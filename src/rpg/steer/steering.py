@@ -67,6 +67,7 @@ from rpg.steer.edits import (
     intent_of_ops,
     intent_of_standalone,
     interpret,
+    normalize_edit,
     strip_edit_words,
     unread_colors,
     unread_numbers,
@@ -445,8 +446,13 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         return roled  # "turn it into a single tower, same cubes: the reds at the bottom, ...", "row instead, reading BAT": the
         # roles read with the cubes (the word had been dropped)
     if unread:
-        raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": {', '.join(repr(c) for c in unread)} has no place in the "
-                         f"change read ({', '.join(o.op for o in plan.ops)}); say it in a separate edit, or use --model")
+        try:
+            made = apply_ops(ref_spec, plan.ops, keep_layers=carried.layers, anchors=carried.ends)
+        except SteerError:
+            made = None
+        if made is None or not _restated(plan.text, made, unread):
+            raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": {', '.join(repr(c) for c in unread)} has no place "
+                             f"in the change read ({', '.join(o.op for o in plan.ops)}); say it in a separate edit, or use --model")
     try:
         spec = apply_ops(ref_spec, plan.ops, keep_layers=carried.layers, anchors=carried.ends)
     except SteerError:
@@ -465,6 +471,35 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     except BadInput as exc:
         raise SteerError(str(exc).splitlines()[0]) from None
     return schema, instruction, intent_of_ops(plan.ops, ref_spec)
+
+
+_END_INDEX = {"bottom": 0, "base": 0, "top": -1}
+_LINE_END_INDEX = {("left_to_right", "left"): 0, ("left_to_right", "right"): -1, ("right_to_left", "right"): 0,
+                   ("right_to_left", "left"): -1, ("front_to_back", "front"): 0, ("front_to_back", "back"): -1,
+                   ("back_to_front", "back"): 0, ("back_to_front", "front"): -1}
+
+
+def _restated(text: str, spec: TaskSpec, unread: list[str]) -> bool:
+    """Whether each value an edit names that no operation read (``unread``: colours, counts) is said again of the edited
+    structure ``spec`` and holds there: a tower's end ("build it upside down, yellow at the bottom and red on top" of a
+    reversal), a line's end ("... from left to right, 1 at the left end"), the whole order listed ("put them in order:
+    1, 2, 3 from left to right"), or the count of its cubes ("make the tower five cubes ...")."""
+    names = [i.color or i.label for i in spec.items]
+    low = normalize_edit(text)
+    held: set[str] = set()
+    if re.search(rf"\b{len(names)}\s+(?:blocks?|cubes?|high|tall|long|wide)\b", low):
+        held.add(str(len(names)))
+    value = rf"(?:(?:letter|digit)\s+'?)?(?P<v>{COLOR_RE}|[a-z0-9])'?(?:\s+(?:cube|block|one))?"
+    for m in re.finditer(rf"\b{value}\s+(?:is\s+|goes\s+|sits\s+|ends\s+up\s+|should\s+be\s+)?(?:(?:at|on)\s+(?:the\s+)?(?:very\s+)?"
+                         r"(?P<e>bottom|base|top|left|right|front|back)(?:\s+end)?|on\s+(?P<t>top))\b", low):
+        v, end = canon_color(m.group("v")) if re.fullmatch(COLOR_RE, m.group("v")) else m.group("v").upper(), m.group("e") or m.group("t")
+        at = _END_INDEX.get(end) if spec.structure == "tower" else _LINE_END_INDEX.get((spec.direction, end))
+        if at is not None and names and str(names[at]).lower() == str(v).lower():
+            held.add(str(v).lower())
+    listed = [canon_color(x) if re.fullmatch(COLOR_RE, x) else x for x in re.findall(rf"\b(?:{COLOR_RE}|\d)\b", low.rsplit(":", 1)[-1])]
+    if len(listed) == len(names) > 1 and [str(x).lower() for x in listed] == [str(n).lower() for n in names]:
+        held |= {str(x).lower() for x in listed}
+    return all(str(u).lower() in held for u in unread)
 
 
 _ROW_OF_RELATION = {"left_of": ("left to right", False), "right_of": ("left to right", True),
