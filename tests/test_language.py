@@ -6725,3 +6725,34 @@ def test_a_far_end_that_contradicts_them_with_one_cube_and_a_means_outside_the_d
 
     with pytest.raises((ParseError, Inexpressible, InfeasibleTask)):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # classes a helper reported from a held-out set (thirty-second session), in words of the tests' own
+    ("Set a cyan cube on top of two stacked red cubes.", ["stack(red,red,cyan)"]),  # (it had been silently stack(red,cyan))
+    ("Put the white block onto three blue blocks stacked together.", ["stack(blue,blue,blue,white)"]),
+])
+def test_a_cube_on_top_of_counted_stacked_cubes(text, expected):
+    schema = check_feasibility(parse(text))
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []
+
+
+@pytest.mark.parametrize("text", [
+    "Stack the cyan cube and the pink cube. Which one goes on top is up to you.",  # (it had been ordered, cyan at the bottom)
+    "Stack the cyan cube and the pink cube; it is up to you which one goes on top.",
+    "Stack the pink and gray blocks, either way round.",
+])
+def test_which_cube_goes_on_top_left_to_the_reader_is_no_order(text):
+    assert [type(p).__name__ for p in parse(text).goal_predicate().walk()] == ["UnorderedStack"]
+
+
+def test_somewhere_other_than_a_place_is_a_negation():
+    with pytest.raises(Inexpressible, match="negation"):
+        parse("Place the pink cube somewhere other than the left half of the table.")
+
+
+def test_an_unordered_line_or_circle_matches_its_cubes_in_any_order():
+    assert matches("circle(gray,cyan,pink)", ["circle(cyan,gray,pink)"])
+    assert matches("line(gray,cyan,pink)@back", ["line(cyan,gray,pink)@back"])
+    assert not matches("line[left_to_right](gray,cyan,pink)", ["line[left_to_right](cyan,gray,pink)"])

@@ -531,6 +531,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("action", TURNED_OVER_RE,
      MOTION_WHY),
     ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none|nowhere)\b|n't\b"
+                 r"|\b(?:somewhere|anywhere|everywhere)\s+(?:other|else)\s+than\b|\banywhere\s+but\b"  # "somewhere other than the left half"
                  r"|\b(?:rather\s+than|instead\s+of)\s+(?=(?:(?:to\s+the\s+)?(?:left|right)|in\s+front|behind|next|beside|near|on(?:\s+top)?|onto"
                  r"|under|in|at|far(?:\s+away)?|above|below)(?:\s+(?:of|to|from))?\s+the\s+[a-z\-]+(?:\s+[a-z\-]+)?\s+(?:cube|block|one|patch"
                  r"|corner|side|half|edge|region)\b)"
@@ -1662,7 +1663,12 @@ ANY_ORDER_RE = re.compile(
     r"|(?:the\s+)?order\s+(?:thereof\s+)?(?:being\s+)?at\s+(?:the\s+robot's|your|its)\s+discretion"
     r"|how(?:ever)?\s+you\s+(?:prefer|like|want|wish|please)"
     r"|(?:either|any|whichever)\s+(?:one\s+|1\s+|cube\s+|block\s+)?(?:on\s+top|at\s+the\s+(?:top|bottom))(?:\s+(?:is\s+)?(?:fine|ok(?:ay)?))?"
-    r"|whichever\s+way(?:\s+(?:is\s+)?(?:fine|round|around))?"
+    r"|whichever\s+way(?:\s+(?:is\s+)?(?:fine|round|around))?|either\s+way\s+(?:round|around|up)"
+    # "Which one goes on top is up to you.", "It is up to you which one goes on top."
+    r"|which(?:\s+(?:one|cube|block|colou?r))?(?:'s|\s+is|\s+goes|\s+ends\s+up|\s+sits)\s+(?:at\s+the\s+(?:bottom|top|base)|on\s+(?:the\s+)?(?:top|bottom))"
+    r"\s+(?:is\s+)?(?:up\s+to\s+you|your\s+(?:choice|call)|free|open)"
+    r"|(?:it'?s|it\s+is)\s+(?:up\s+to\s+you|your\s+(?:choice|call))\s+which(?:\s+(?:one|cube|block))?(?:'s|\s+is|\s+goes|\s+ends\s+up|\s+sits)"
+    r"\s+(?:at\s+the\s+(?:bottom|top|base)|on\s+(?:the\s+)?(?:top|bottom))"
     r"|(?:it\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter\s+(?:in\s+)?(?:which|what)\s+order"
     r"|(?:(?:it\s+)?(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter|(?:i\s+|we\s+)?(?:do\s*n[o']?t|don't|do\s+not)\s+(?:care|mind))"
     r"\s+which(?:\s+(?:one|cube|block|colou?r))?(?:'s|\s+is|\s+goes|\s+ends\s+up|\s+sits)"

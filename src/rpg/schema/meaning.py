@@ -222,11 +222,15 @@ def _wild(atom: str) -> bool:
 
 def _unordered(atom: str) -> str:
     """An atom whose objects have no order (``piles(red,blue,red;by=color)``, ``pile(...)``, the two cubes
-    of ``next_to``/``far_from``) with its objects sorted, so an expected meaning may list them in any order."""
+    of ``next_to``/``far_from``, a line with no direction, a circle) with its objects sorted, so an expected meaning may
+    list them in any order."""
     pair = _SYMMETRIC_ATOM_RE.fullmatch(atom)
     if pair and "?" not in atom:  # symmetric: "next_to(pink,Z)" is "next_to(Z,pink)" (a wildcard's pattern takes both)
         return f"{pair.group(1)}({','.join(sorted(pair.group(2, 3)))})"
-    m = re.fullmatch(r"(piles?)\(([^;()]*)(;[^()]*)?\)(@\w+)?", atom)
+    m = re.fullmatch(r"(piles?)\(([^;()]*)(;[^()]*)?\)(@\w+)?", atom) or (
+        # a line said with no order (no direction) and a circle: their cubes in no order (meaning() writes them sorted; an
+        # annotation had listed them as said, a right reading counted wrong)
+        None if re.search(r"[?*]", atom) else re.fullmatch(r"(line|circle)\(([^;()|\[\]]*)()\)(@\w+)?", atom))
     if m is None:
         return atom
     return f"{m.group(1)}({','.join(sorted(m.group(2).split(',')))}{m.group(3) or ''}){m.group(4) or ''}"

@@ -2241,6 +2241,12 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
                 rf"({COLOR_RE})\s+(?:block|cube|brick|one)\s+(?:on\s+top|at\s+the\s+top)(?:\s+of\s+(?:it|them|the\s+(?:stack|tower)))?\b"
                 r"(?!\s+of\s+(?:each\s+other|one\s+another))"),  # "... and the pink block on top of each other": no order said
      lambda m: "build a tower from bottom to top: " + ", ".join([m.group(2)] * int(m.group(1)) + [m.group(3)]), True),
+    # "set a cyan cube on top of two stacked red cubes", "... of two red cubes stacked together": the counted cubes a tower
+    # under it (one of them had been dropped: silently a tower of two)
+    (re.compile(rf"\b(?:set|put|place|stack|add)\s+(?:a|an|the|1)\s+({COLOR_RE})\s+(?:block|cube|brick)\s+(?:on\s+top\s+of|onto|on|atop)\s+"
+                rf"(?:the\s+)?(\d+)\s+(?:stacked\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)|({COLOR_RE})\s+(?:blocks|cubes|bricks)\s+stacked"
+                r"(?:\s+(?:together|up|on\s+(?:top\s+of\s+)?each\s+other|one\s+on\s+(?:top\s+of\s+)?the\s+other))?)\b"),
+     lambda m: "build a tower from bottom to top: " + ", ".join([m.group(3) or m.group(4)] * int(m.group(2)) + [m.group(1)]), True),
     # "six cubes in one tower: two red at the bottom, two green in the middle, two blue at the top": three counted groups
     (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|ones))?\s+(?:at|on|in)\s+the\s+(?:bottom|base)"
                 rf"\s*,?\s+(?:and\s+)?(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|ones))?\s+in\s+the\s+(?:middle|center|centre)\s*,?\s+(?:and\s+)?"
