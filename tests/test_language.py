@@ -6756,3 +6756,21 @@ def test_an_unordered_line_or_circle_matches_its_cubes_in_any_order():
     assert matches("circle(gray,cyan,pink)", ["circle(cyan,gray,pink)"])
     assert matches("line(gray,cyan,pink)@back", ["line(cyan,gray,pink)@back"])
     assert not matches("line[left_to_right](gray,cyan,pink)", ["line[left_to_right](cyan,gray,pink)"])
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("When you're ready, put the red cube on the blue cube.", ["stack(blue,red)"]),  # a condition on the listener
+    ("Put the red cube on the blue cube, whenever you're ready.", ["stack(blue,red)"]),
+    ("Today's exercise is a tower of red and blue.", ["stack(red,blue)"]),
+    ("A cyan cube is already on a pink cube. Add an orange cube on top of the cyan one.",
+     ["stack(pink,cyan,orange)", "start:stack(pink,cyan)"]),
+])
+def test_a_listeners_readiness_a_days_task_and_a_stack_there_already(text, expected):
+    schema = check_feasibility(parse(text))
+    assert sorted(meaning(schema)) == expected
+    assert uncited(schema, text) == []
+
+
+def test_a_condition_on_a_cube_being_ready_stays_refused():
+    with pytest.raises(Inexpressible, match="conditional"):
+        parse("If the red cube is ready, put it on the blue cube.")

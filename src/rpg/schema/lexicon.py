@@ -264,6 +264,10 @@ def means_said(text: str) -> str:
     start reader alike."""
     return MEANS_CLAUSE_RE.sub(lambda m: MEANS_VERBS[m.group("v").lower()], text)
 
+DAYS_TASK_RE = re.compile(r"(?i)\b(?:today|tonight|this\s+(?:morning|afternoon|evening|week)|tomorrow)'s\s+"
+                          r"(?=(?:exercise|task|challenge|goal|job|assignment|activity|drill|puzzle|lesson|warm-up)\b)")
+"""A task named by its day ("Today's exercise is a tower of ..."): "the exercise" (the day says nothing of the goal)."""
+
 FRAMING_SENTENCE_HAZARD_RE = re.compile(
     r"\b(?:not|no|never|none|nothing|nobody|nowhere|neither|nor|without|except|unless|avoid\w*|[a-z]+n't|cannot"
     r"|should|must|shall|need|needs|needed|has\s+to|have\s+to|had\s+to|ought|require\w*|want\w*|expect\w*|make\s+sure"
@@ -1745,6 +1749,9 @@ sentence (or a sentence of its own), where it cannot pick cubes ("put any colour
 
 POLITE_CONDITION_RE = re.compile(
     r"\b(?:i|we)(?:'d|\s+would)\s+(?:love|like|appreciate)\s+it\s+if\s+you\s+(?:could|would|can)\s+"
+    # "When you're ready, put ...": a condition on the listener, not on the goal
+    r"|^\s*(?:when(?:ever)?|once|if)\s+(?:you(?:'re|\s+are)|you're|everyone(?:'s|\s+is))\s+ready\s*,\s*"
+    r"|\s*,\s*(?:when(?:ever)?|once)\s+(?:you(?:'re|\s+are)|you're)\s+ready(?=\s*[.!]?\s*$)"
     r"|[,;]?\s*\bif\s+you\s+(?:could|would|can|please)\b(?=\s+(?:please\s+)?(?:put|place|move|set|stack|make|build|arrange|"
     r"take|line|get|bring|slide|push|spell|sort|lay|form|create|pile)\b)"
     r"|[,;(]?\s*\bif\s+(?:at\s+all\s+)?possible\b\)?|[,;]?\s*\bif\s+you\s+(?:could|would|can|please)\s*(?=[.!,;]|$)"

@@ -428,6 +428,10 @@ of the green block", "... on it").  Said after "Currently" or "Right now" (the s
 :data:`lexicon.SCENE_NOW_OPENING_RE`) it is the same start; the citations read the goal's words without that opening."""
 
 
+_ALREADY_START_RE = re.compile(rf"(?i)^\s*(?P<fact>(?:the|a|an)\s+{_NAME}\s+(?:cube|block)\s+(?:is|sits|rests|stands)\s+)already\s+"
+                               rf"(?P<rel>(?:stacked\s+)?(?:on\s+top\s+of|on|atop)\s+(?:the|a|an)\s+{_NAME}\s+(?:cube|block))\s*[.;]\s+")
+"""A first sentence that says a stack is there "already" ("A cyan cube is already on a pink cube. Add ..."): the start."""
+
 _NOW_THEN_UNDONE_RE = re.compile(r"(?i)^\s*(?P<fact>[^.;!?]+)[.;]\s+(?=(?:then\s+|now\s+|please\s+)?(?:unstack|dismantle|disassemble"
                                  r"|take\s+(?:it|them|the\s+(?:whole\s+|entire\s+)?(?:tower|stack))\s+apart|take\s+apart|reverse|flip)\b)")
 """The scene said now, in one sentence, before a command that undoes or reverses it ("Currently the white cube sits on the
@@ -464,6 +468,7 @@ def split(instruction: str) -> InitialScene | None:
     instruction = lexicon.start_stack_source(instruction)  # "There is a stack of ... . Move the blue cube from the stack ..."
     instruction = lexicon.start_and_goal_said_tersely(instruction)  # "1. Start: green on brown. 2. Goal: green on table"
     instruction = lexicon.means_said(instruction)  # "...; clear the white block by putting the green block on the table"
+    instruction = _ALREADY_START_RE.sub(r"Initially \g<fact>\g<rel>. ", instruction.strip())  # "A cyan cube is already on ..."
     instruction = ROBOT_STARTS_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     # "Currently the pink cube is on the orange cube. Add ...": the scene now said before a command that moves or tops its
     # top cube is the start (elsewhere "currently" stays refused: which words are the goal's?)
