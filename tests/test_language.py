@@ -6610,14 +6610,14 @@ def test_a_templates_words_for_towers_and_rows(text, expected):
 
 @pytest.mark.parametrize("text, expected", [
     # a voice's label before its task and a simile or aside at a sentence's end (each had been refused for its words)
-    ("Pottery class, week nine: stack the yellow cube on the black cube, like a glaze over clay.", ["stack(black,yellow)"]),
+    ("Pottery class, week nine: stack the yellow cube on the black cube, like a fresh glaze.", ["stack(black,yellow)"]),
     ("Harbour master's bulletin: the green cube goes behind the red cube, as per the mooring chart.", ["behind(green,red)"]),
-    ("Put the white cube next to the pink cube, snug as two oars in a boat.", ["next_to(pink,white)"]),
+    ("Put the white cube next to the pink cube, calm as two oars in a boat.", ["next_to(pink,white)"]),
     ("Line up the cyan, brown and gray cubes in a row like ducklings following their mother.", ["line(brown,cyan,gray)"]),
     ("Bakery notice: put the orange cube on the purple patch - the ovens are warm today.", ["on_patch(orange,patch:purple)"]),
     ("Docket 48. Place the blue cube in the front left corner of the table, where the kettle would be.",
      ["in_region(blue,front_left)"]),
-    ("Place the pink cube between the red cube and the blue cube, the way a filling sits between two slices of bread.",
+    ("Place the pink cube between the red cube and the blue cube, the way a good host greets guests.",
      ["between(pink;blue,red)"]),
 ])
 def test_a_voices_label_and_sentence_tails_are_dropped(text, expected):
@@ -6641,6 +6641,16 @@ def test_a_voices_label_and_sentence_tails_are_dropped(text, expected):
     "Stack the red cube on the blue cube, like the green tower.",  # a colour and a structure in the simile
     "Put the red cube on the blue cube, spiral shape please.",  # a shape
     "Put the red cube on the blue cube, textbook!",  # a word alone may carry meaning
+    # a hostile helper's probes: a simile or label that carries a relation, an order, a shape, a judgement or a viewpoint
+    "Put the red cube next to the blue cube, like a hat on a head.",
+    "Stack the red cube on the blue cube, like a traffic light.",
+    "Stack the red cube on the blue cube, like stairs.",
+    "Bad example: put the red cube on the blue cube.",
+    "Inverse version: put the red cube on the blue cube.",
+    "Time permitting: put the red cube on the blue cube.",
+    "Put the red cube left of the blue cube, looking from the door.",
+    "Put the red cube next to the blue cube, slightly offset.",
+    "Stack the red cube on the blue cube, like we practised.",
 ])
 def test_a_chunk_that_may_bear_on_the_goal_is_no_voice(text):
     """A chunk at a task's edge that says anything the goal may hang on stays, to be read or refused."""
@@ -6671,6 +6681,7 @@ def test_a_chunk_of_the_task_at_a_sentences_end_is_kept(text, expected):
     ("Build a tower of gray (bottom), cyan and pink (top).", ["stack(gray,cyan,pink)"]),
     ("Stack three cubes so that red is the base, blue sits on red and green crowns the tower.", ["stack(red,blue,green)"]),
     ("Put blue on red and white on top.", ["stack(red,blue,white)"]),
+    # (two cubes on one, or two chains, leave "on top" unplaced: refused, test below)
     # a start said in other words than the start reader's own
     ("Initial setup: a stack with green at the bottom and white on top. Add a black cube on top of the white one.",
      ["stack(green,white,black)", "start:stack(green,white)"]),  # (black had gone on white alone: green free to leave)
@@ -6774,3 +6785,19 @@ def test_a_listeners_readiness_a_days_task_and_a_stack_there_already(text, expec
 def test_a_condition_on_a_cube_being_ready_stays_refused():
     with pytest.raises(Inexpressible, match="conditional"):
         parse("If the red cube is ready, put it on the blue cube.")
+
+
+@pytest.mark.parametrize("text", [
+    # a hostile helper's silent errors against this session's readings, each refused now
+    "Build a tower: brown (bottom) and yellow (top) and red (middle).",  # (red had gone on top)
+    "Green and red sit on blue and white goes on top.",  # (a red on green had been made up)
+    "Green sits on blue and red sits on yellow and white goes on top.",  # (which tower's top?)
+    "Both the red and the orange cube should be next to the white cube and the black cube.",  # (red-black had been lost)
+    "I'd like a tower of two green cubes with an orange cube on top of the table.",
+    "Clear the white block by putting the green block on the white block.",
+])
+def test_this_sessions_readings_attacked_are_refused(text):
+    from rpg.schema.feasibility import InfeasibleTask
+
+    with pytest.raises((ParseError, Inexpressible, InfeasibleTask)):
+        check_feasibility(parse(text))

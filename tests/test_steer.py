@@ -2057,3 +2057,24 @@ def test_a_change_said_with_the_ends_it_makes_is_applied(tmp_path):
     fam = Family(create_family(compile_instruction(base, tmp_path / "b", name="fam").path).path)
     with pytest.raises(SteerError, match="no place"):
         steer(fam.path, "build it upside down, red at the bottom")
+
+
+@pytest.mark.parametrize("edit", [
+    "It should be upside down, so make the green cube yellow.",  # the "reason" is itself a change
+    "The red one must go, so make the green cube yellow.",
+    "Flip it: make the green cube yellow.",  # the label is itself a change
+    "Mirror version: make the green cube yellow.",
+    "Bad example for the worksheet: make the green cube yellow.",
+])
+def test_a_reason_or_label_that_is_itself_a_change_is_not_dropped(tmp_path, edit):
+    """A hostile helper's silent errors against this session's steering (the change in the reason or label had been
+    dropped and the recolour alone applied)."""
+    fam = Family(create_family(compile_instruction("Put the red cube, the green cube and the blue cube in a row from left to "
+                                                   "right", tmp_path, name="fam").path).path)
+    try:
+        r = steer(fam.path, edit)
+    except SteerError:
+        return
+    from rpg.schema.meaning import meaning
+
+    assert meaning(fam.schema(r.version)) != ["line[left_to_right](red,yellow,blue)"]

@@ -261,12 +261,28 @@ MEANS_VERBS: dict[str, str] = {"putting": "put", "placing": "place", "moving": "
 
 def means_said(text: str) -> str:
     """``text`` with a goal said by its means read as the means (:data:`MEANS_CLAUSE_RE`); used on the goal and in the
-    start reader alike."""
-    return MEANS_CLAUSE_RE.sub(lambda m: MEANS_VERBS[m.group("v").lower()], text)
+    start reader alike.  A means that puts a cube on the cube it clears ("clear the white block by putting the green block
+    on the white block") is left as written (refused)."""
+    def means(m: re.Match) -> str:
+        cleared = re.search(rf"(?i)\b({COLOR_RE})\s+(?:block|cube)\s*,?\s+by\b", m.group(0))
+        rest = re.match(r"[^.;!?]*", text[m.end():]).group(0)
+        if cleared and re.search(rf"(?i)\b(?:on|onto|atop)\s+(?:top\s+of\s+)?(?:the\s+)?{cleared.group(1)}\b", rest):
+            return m.group(0)
+        return MEANS_VERBS[m.group("v").lower()]
+    return MEANS_CLAUSE_RE.sub(means, text)
 
 DAYS_TASK_RE = re.compile(r"(?i)\b(?:today|tonight|this\s+(?:morning|afternoon|evening|week)|tomorrow)'s\s+"
                           r"(?=(?:exercise|task|challenge|goal|job|assignment|activity|drill|puzzle|lesson|warm-up)\b)")
 """A task named by its day ("Today's exercise is a tower of ..."): "the exercise" (the day says nothing of the goal)."""
+
+TURNING_LABEL_RE = re.compile(
+    r"(?i)\b(?:(?:bad|wrong|incorrect|counter|anti|non|negative|failed|failing)[\s-]*(?:examples?|demos?|cases?|goals?|answers?|approach\w*)"
+    r"|counter-?examples?|non-?goals?|forbid\w*|prohibit\w*|banned|off\s+limits|trap|bait|myth|fake|false|danger\w*|pitfall|mistakes?"
+    r"|invers\w*|bizarro|inside[\s-]out|opposite|mirror\w*|revers\w*|backwards?|upside|permitting|allowing|optional|maybe|perhaps"
+    r"|jumbo|mini|mega|giant|triple|double|decker|views?|perspective|looking|seen\s+from)\b")
+"""A label before a colon that judges, turns, conditions or sizes what follows ("Bad example:", "Inverse version:", "Time
+permitting:", "Mega version:", "Audience view:"): it is never dropped as a label (it had been, and the task compiled as if
+unsaid); the words then refuse."""
 
 FRAMING_SENTENCE_HAZARD_RE = re.compile(
     r"\b(?:not|no|never|none|nothing|nobody|nowhere|neither|nor|without|except|unless|avoid\w*|[a-z]+n't|cannot"
@@ -363,7 +379,16 @@ VOICE_CHUNK_HAZARD_RE = re.compile(
     r"|you|your|me|shape\w*|form|formation|pattern\w*|style|design|layout|arrangement\w*|configuration|spiral|triangle\w*"
     r"|cross|zigzag|diamond|star|heart|arrow|letter|word|spell\w*|read\w*|says?|respectively|apiece|resp"
     r"|initial\w*|init|start\w*|begin\w*|setup|set-up|end|ends|ending|final\w*|goal|target|result|outcome|desired|scene|state"
-    r"|config\w*|current\w*|success\w*|episode|done|complete\w*)\b")
+    r"|config\w*|current\w*|success\w*|episode|done|complete\w*"
+    # (a hostile helper's probes, thirty-second session) a label or tail that judges the task, turns it, conditions it,
+    # sizes it, takes a viewpoint, a direction, a pose or a spacing, or points at an earlier day
+    r"|example\w*|counter\w*|anti|non|incorrect|wrong|bad|forbid\w*|prohibit\w*|ban\w*|limits?|trap|bait|myth|fake|false"
+    r"|danger\w*|pitfall|mistake\w*|error\w*|invers\w*|bizarro|inside|opposite|mirror\w*|permit\w*|allow\w*|option\w*|willing"
+    r"|maybe|perhaps|weekday\w*|weekend\w*|morning\w*|daily|jumbo|mini\w*|mega|giant|triple|double|decker|view\w*"
+    r"|perspective|looking|seen|facing|face|north\w*|south\w*|east\w*|west\w*|upstage|downstage|clockwise|anticlockwise"
+    r"|counterclockwise|offset|askew|crooked|overhang\w*|lean\w*|perched|precarious\w*|teeter\w*|kiss\w*|nestl\w*|snug\w*"
+    r"|wedged|room|budget|practi[sc]\w*|drill|monday\w*|tuesday\w*|wednesday\w*|thursday\w*|friday\w*|saturday\w*|sunday\w*"
+    r"|yesterday|cares?|either|direction|dozen|about|approximately|roughly|around|plan\s+b|version|edition|variant)\b")
 """Words that keep a chunk at a task's edge from being dropped as a voice's (:func:`rpg.schema.reading._voice_chunk`):
 a negation, a condition, a step or repetition, a reference to something earlier or shown, a quantifier or pronoun that
 may stand for cubes, a size, an order, time, a pose or spacing, a requirement, a direction of its own, a colour word, a
@@ -373,7 +398,14 @@ Such a chunk may change what the task asks ("..., if the red one is free", "...,
 
 VOICE_SIMILE_BLOCKER_RE = re.compile(
     rf"\b(?:{COLOR_RE}|grey|blocks?|cubes?|bricks?|box|tower|stack|pil|line|row|column|pyramid|wall|grid|circle|ring|patch|pad"
-    r"|mat\b|tile|letter|digit|label|table|robot|gripper|goal|task|before|previous|last|earlier|usual|shown|picture|image|photo)")
+    r"|mat\b|tile|letter|digit|label|table|robot|gripper|goal|task|before|previous|last|earlier|usual|shown|picture|image|photo"
+    # a place or relation of its own ("like a hat on a head" of a task that says "next to"), or a thing known by its
+    # order, pattern, shape, pose or size ("like a traffic light", "like stairs", "like a toppled domino")
+    r"|on\b|onto|atop|upon|over\b|under|beneath|below|above|top\b|bottom|between|beside|behind|next\b|left\b|right\b|front"
+    r"|back\b|inside|across|along|near\b|far\b|side\b|edge|traffic|rainbow|flag|chess|checker|stripe|gradient|stair|step|ladder"
+    r"|snowman|totem|cake|bridge|arch|podium|plus\b|sign\b|u-turn|domino|topple|sphere|cylinder|pancake|flat\b|tall|short"
+    r"|big|small|tiny|huge|giant|mouse|elephant|shadow|roof|hat\b|lid\b|crown|pair\b|twins?\b|dice\b|sandwich"
+    r"|filling|slice|layer|pyramid|spiral|cross|triangle|square\b)")
 """Words a simile chunk may not hold: a cube, colour, structure, patch, label or the table is not a compared thing but
 the task's own (so "..., like the red tower" stays)."""
 
@@ -1554,7 +1586,8 @@ DISTRIBUTED_RELATIONS: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(rf"(?<!stack\s)(?<!pile\s)\b(?:both\s+)?the\s+(?P<a>{_COLOR_WORD})\s+and\s+(?:the\s+)?(?P<b>{_COLOR_WORD})\s+"
                 r"(?P<n>block|cube)(?:s\s+|\s+(?=(?:should|must|will|are|go|sit|stand|end)\b))"
                 r"(?:(?:should|must|will)\s+(?:be|go|end\s+up|sit|stand)\s+|(?:are|go|sit|stand|end\s+up)\s+)?"
-                rf"(?P<rel>{_PAIRWISE_WORDS})\s+the\s+(?P<c>{_COLOR_WORD})\s+(?:block|cube)\b"),
+                rf"(?P<rel>{_PAIRWISE_WORDS})\s+the\s+(?P<c>{_COLOR_WORD})\s+(?:block|cube)\b"
+                rf"(?!\s*,?\s*(?:and|or)\s+(?:the\s+)?{_COLOR_WORD})"),  # ("... next to the white cube and the black cube": both)
      r"the \g<a> \g<n> \g<rel> the \g<c> \g<n> and the \g<b> \g<n> \g<rel> the \g<c> \g<n>"),
     # "the red block to the left of the blue and green blocks", "... of the blue block and the green block."
     (re.compile(rf"\bthe\s+(?P<a>{_COLOR_WORD})\s+(?P<n>block|cube)\s+(?P<rel>{_PAIRWISE_WORDS})\s+the\s+(?P<b>{_COLOR_WORD})"
@@ -3075,7 +3108,9 @@ _EDIT_LABEL_HAZARD_RE = re.compile(
     rf"\b(?:{COLOR_RE}|grey|\d+|one|two|three|four|five|six|same|again|back|undo|revert\w*|previous|last|first|original|version"
     r"|round|step|not|no|never|don't|only|instead|rather|reverse\w*|swap\w*|opposite|more|fewer|less|each|every|all|both|this|that"
     r"|these|those|them|if|unless|when|wait|actually|sorry|oops|cancel|forget|ignore|different|new|fresh|start\w*|over|scratch"
-    r"|another|task|afresh|anew|clean|reset|begin\w*|separate|other|else|entirely|completely|whole)\b|\bv\d")
+    r"|another|task|afresh|anew|clean|reset|begin\w*|separate|other|else|entirely|completely|whole|flip\w*|mirror\w*|invers\w*"
+    r"|upside|backwards?|bad|wrong|example|counter\w*|non|trap|tall\w*|short\w*|big\w*|small\w*|wide\w*|narrow\w*|high\w*"
+    r"|low\w*|harder|easier|bigger|smaller)\b|\bv\d")
 """What keeps a label before an edit's colon (:data:`EDIT_LABEL_RE`): a colour, a count, a version or a step of the
 session, a negation, a restriction, a reversal, a pronoun for cubes, a condition, a take-back or a fresh start ("Start
 over:", "Completely different task now:") may change the edit."""
@@ -3101,8 +3136,13 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "He has trouble telling red from green, so make the green cube yellow instead": the reason said before the change
     # (its colours had been read as the change's); only a statement, never a command, before "so"
     (re.compile(r"(?i)^\s*(?!(?:please\s+)?(?:make|put|add|swap|switch|remove|take|move|change|use|turn|replace|place|stack|set|drop"
-                r"|delete|build|reverse|flip|keep|leave|go|do|try|let)\b)(?:i|we|he|she|they|it|that|this|the\s+[a-z]+|[A-Z][a-z]+|[a-z]+)"
-                r"(?:'s|'re|'m)?\s+[^.;:!?]*?,\s*so\s+(?=(?:please\s+)?(?:make|put|add|swap|switch|remove|take|move|change|use|turn|replace"
+                r"|delete|build|reverse|flip|keep|leave|go|do|try|let|give|get|bring|shift|slide)\b)"
+                r"(?:i|we|he|she|they|(?-i:[A-Z][a-z]+)|the\s+(?:class|kids|students|children|team|group|reviewer|client|boss"
+                r"|users?|learners?|pupils?))(?:'s|'re|'m|'ve)?\s+"
+                r"(?![^.;:!?]*?\b(?:should|must|need\w*|want\w*|like|prefer\w*|wish\w*|if|when|unless|upside|swap\w*|revers\w*|flip\w*"
+                r"|mirror\w*|turn\w*|go|gone|goes|remov\w*|mov\w*|instead|not|no|n't|never|without|same|chang\w*|different|it|them"
+                r"|that|this|those|these)\b[^.;:!?]*?,\s*so\b)"
+                r"[^.;:!?]*?,\s*so\s+(?=(?:please\s+)?(?:make|put|add|swap|switch|remove|take|move|change|use|turn|replace"
                 r"|place|stack|set|drop|delete|build|reverse|flip)\b)"), ""),
     # "collapse it into one long row", "squash them into a tower": the task's cubes made into that structure
     (re.compile(r"(?i)\b(?:collapse|squash|condense|fold|merge|combine|consolidate)\s+(it|them|everything|the\s+(?:whole\s+)?(?:grid|tower|stack"
@@ -3761,7 +3801,7 @@ ENDS_IN_PARENTHESES_RE = re.compile(
     rf"(?i)\b(?P<first>{COLOR_RE})(?:\s+(?:cube|block))?\s*\((?:at\s+the\s+|on\s+the\s+)?(?P<end>bottom|base|top)\)(?:\s*[,/]\s*|\s+(?=(?:and|then)\s))"
     rf"(?P<mid>(?:(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:\s*\((?:in\s+the\s+)?middle\))?(?:\s*[,/]\s*(?:and\s+)?|\s+(?=and\s)))*)(?:and\s+|then\s+)?"
     rf"(?P<last>{COLOR_RE})(?:\s+(?:cube|block))?\s*"
-    r"\((?:at\s+the\s+|on\s+)?(?:the\s+)?(?P<end2>top|bottom|base)\)")
+    r"\((?:at\s+the\s+|on\s+)?(?:the\s+)?(?P<end2>top|bottom|base)\)(?!\s*(?:,|and|then|\+)\s*(?:the\s+)?(?:[a-z]+))")
 """A tower listed with its ends in parentheses ("a tower of red (bottom), blue, yellow (top)"): said as the list and its
 direction, "red, blue, yellow (bottom to top)", which the tower and start readers read (it had been refused); two joined
 by "and" ("brown (bottom) and yellow (top)") too."""
@@ -3789,7 +3829,10 @@ def one_end_in_parentheses(m: re.Match) -> str:
 def tower_ends_said(text: str) -> str:
     """``text`` with a tower's ends said in parentheses written as its list and direction (:data:`ENDS_IN_PARENTHESES_RE`
     for both ends, then :data:`ONE_END_IN_PARENTHESES_RE` for one); used on the goal and on a stated start alike."""
-    return ONE_END_IN_PARENTHESES_RE.sub(one_end_in_parentheses, ENDS_IN_PARENTHESES_RE.sub(ends_in_parentheses, text))
+    text = ENDS_IN_PARENTHESES_RE.sub(ends_in_parentheses, text)
+    if len(re.findall(r"(?i)\((?:at\s+the\s+|on\s+)?(?:the\s+)?(?:bottom|base|top)\)", text)) > 1:
+        return text  # ends said that no list placed ("brown (bottom) and yellow (top) and red"): left for the refusal
+    return ONE_END_IN_PARENTHESES_RE.sub(one_end_in_parentheses, text)
 
 
 END_LEFT_IN_PARENTHESES_RE = re.compile(rf"(?i)\b(?:{COLOR_RE})(?:\s+(?:cube|block))?\s*\((?:at\s+the\s+|on\s+)?(?:the\s+)?"
@@ -4503,6 +4546,20 @@ def _axis_ends(m: re.Match) -> str:
     return f"from {start} to {end}: {listed.group('first')}{listed.group('mid')}, {listed.group('last')}"
 
 
+
+def _one_chain(m: re.Match) -> bool:
+    """Whether the placements said in the text of ``m`` (a chain ending "... and white goes on top") make one tower whose
+    top is the cube ``c1`` (two cubes on one, or two chains, leave "on top" unplaced: "green and red sit on blue and white
+    goes on top")."""
+    pairs = re.findall(rf"\b({COLOR_RE})(?:\s+(?:cube|block))?\s+(?:(?:sits|goes|is|stands|rests|lies)\s+)?on\s+(?:top\s+of\s+)?(?:the\s+)?"
+                       rf"({COLOR_RE})\b", m.string[:m.start("c3")])
+    if re.search(rf"(?<!on\s)(?<!onto\s)(?<!of\s)\b(?:{COLOR_RE})\s+and\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?))?\s+"
+                 r"(?:(?:sit|stand|rest|go|are|both)\s+)?on\b",
+                 m.string):
+        return False
+    under, over = [b for _, b in pairs], [a for a, _ in pairs]
+    return len(set(under)) == len(under) and m["c1"] not in under and len(set(under) - set(over)) == 1
+
 LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "to the back edge of the table, far from the robot": the robot's words say that side again (the side had been
     # read twice, refused)
@@ -4563,8 +4620,8 @@ LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "... green sits on blue and white goes on top": on the chain's top cube (it had gone on the base)
     (re.compile(rf"\b(?P<c1>{COLOR_RE})(?:\s+(?:cube|block))?\s+(?P<v>(?:sits|goes|is|stands|rests|lies)\s+)?on\s+(?:top\s+of\s+)?(?:the\s+)?"
                 rf"(?P<c2>{COLOR_RE})(?:\s+(?:cube|block))?\s*,?\s+and\s+(?:the\s+)?(?P<c3>{COLOR_RE})(?:\s+(?:cube|block))?\s+"
-                r"(?:(?:goes|sits|is|stands|rests|lies|comes)\s+)?(?:on|at)\s+(?:the\s+)?top\b(?!\s+of)"),
-     lambda m: f"{m['c1']} {m['v'] or ''}on {m['c2']} and {m['c3']} {m['v'] or ''}on {m['c1']}"),
+                r"(?:(?:goes|sits|is|stands|rests|lies|comes)\s+)?(?:on|at)\s+(?:the\s+)?top\b(?!\s+(?:of|in|on|at)\b)"),
+     lambda m: f"{m['c1']} {m['v'] or ''}on {m['c2']} and {m['c3']} {m['v'] or ''}on {m['c1']}" if _one_chain(m) else m.group(0)),
     # "and a white one topping it", "a white cube crowning the pyramid": that cube on top
     (re.compile(r"\b(?:topping|crowning|capping)\s+(?:it|them|the\s+(?:pyramid|tower|stack|structure|pile|whole\s+thing))(?:\s+off)?\b"),
      "on top"),

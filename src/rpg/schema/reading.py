@@ -1334,7 +1334,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
               and not lexicon.TASK_CONTENT_RE.search(re.sub(r"(?<=[a-z])\s+#?\d+(?=\s|$)|\b(?:just\s+|only\s+)?one\s+(?:task|relation|goal|"
                                                             r"thing|check|condition|episode|run|trial)\b", "",
                                                             m.group("label")))  # "item 2", "just one task"
-              and not _inexpressible(m.group("label"))
+              and not _inexpressible(m.group("label")) and not lexicon.TURNING_LABEL_RE.search(m.group("label"))
               and not re.fullmatch(r"\s*(?:next|then|second|third|fourth|fifth|2nd|3rd|4th|5th|after\s+that|afterwards|middle|mid"
                                    r"|upper|lower)\s*", m.group("label"))  # "Base: red. Next: white. Top: green.": a role
               and not lexicon.START_WORD_RE.search(m.group("label"))]  # "Let me describe the start: ...": the start, not a label
@@ -2240,7 +2240,7 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     (re.compile(rf"\b(?:(?:(?:build|make|create|form)\s+)?a\s+(?:{TOWER_NOUNS})\s+of|stack)\s+(?:the\s+)?(\d+)\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)"
                 r"\s*,?\s+(?:and|with|then)\s+(?:then\s+)?(?:(?:put|place|add|stack|set)\s+)?(?:a|an|the|1)\s+"
                 rf"({COLOR_RE})\s+(?:block|cube|brick|one)\s+(?:on\s+top|at\s+the\s+top)(?:\s+of\s+(?:it|them|the\s+(?:stack|tower)))?\b"
-                r"(?!\s+of\s+(?:each\s+other|one\s+another))"),  # "... and the pink block on top of each other": no order said
+                r"(?!\s+of\b)"),  # "... and the pink block on top of each other": no order said; "... on top of the table": elsewhere
      lambda m: "build a tower from bottom to top: " + ", ".join([m.group(2)] * int(m.group(1)) + [m.group(3)]), True),
     # "set a cyan cube on top of two stacked red cubes", "... of two red cubes stacked together": the counted cubes a tower
     # under it (one of them had been dropped: silently a tower of two)

@@ -55,6 +55,7 @@ from rpg.schema.lexicon import (
     NUMBER_WORDS,
     POLITE_CONDITION_RE,
     REF_CHANGE_RE,
+    TURNING_LABEL_RE,
     TYPOS,
     VOCAB,
     is_dictionary_word,
@@ -895,6 +896,10 @@ def _interpret(edit: str) -> EditPlan:
     edit = " ".join(_corrected(w, _known_words(), fuzzy=False) if w.islower() else w for w in edit.split())
     for pattern, replacement in EDIT_REWRITES:
         edit = pattern.sub(replacement, edit)
+    label = re.match(r"\s*([^:.;!?]{2,60}):\s", edit)
+    if label and TURNING_LABEL_RE.search(label.group(1)):  # "Mirror version: make ...", "Bad example: ...": the label may be
+        raise SteerError(f"the label '{label.group(1).strip()}' may change the edit (a judgement, a turn, a condition or a size) "
+                         "that the builtin steering does not read; say the change without it, or use --model")  # the change
     count = EDIT_COUNT_ALONE_RE.fullmatch(edit)
     more = EDIT_MORE_ALONE_RE.fullmatch(edit)
     if count:  # "three", "let's go with 7 instead": the structure's count
