@@ -77,7 +77,8 @@ STRANGER_SETS = {
     "stranger40": ("stranger40.yaml", "STRANGER set 40 (stranger40.yaml, transfer measure of the twenty-ninth session; development material from the thirtieth)"),
     "stranger41": ("stranger41.yaml", "STRANGER set 41 (stranger41.yaml, transfer measure of the thirtieth session; development material from the thirty-first)"),
     "stranger42": ("stranger42.yaml", "STRANGER set 42 (stranger42.yaml, transfer measure of the thirty-first session; development material from the thirty-second)"),
-    "stranger43": ("stranger43.yaml", "STRANGER set 43 (stranger43.yaml, transfer measure of the thirty-second session: aggregates only)"),
+    "stranger43": ("stranger43.yaml", "STRANGER set 43 (stranger43.yaml, transfer measure of the thirty-second session: aggregates only; abstract classes reported by a helper mid-session)"),
+    "stranger44": ("stranger44.yaml", "STRANGER set 44 (stranger44.yaml, written during the thirty-second session, measured at its end: aggregates only)"),
 }
 SPLITS = HERE / "splits.yaml"
 
