@@ -2027,15 +2027,16 @@ def test_a_reason_or_a_label_before_the_change_is_dropped(tmp_path, edit):
     "Put red on top, so make the white cube cyan.",  # a command before "so" is no reason
 ])
 def test_a_label_or_reason_that_may_change_the_edit_is_kept(tmp_path, edit):
-    fam = Family(create_family(compile_instruction("Put the pink cube, the white cube and the gray cube in a row from left to "
-                                                   "right", tmp_path, name="fam").path).path)
-    try:
-        r = steer(fam.path, edit)
-    except SteerError:
-        return
-    from rpg.schema.meaning import meaning
+    got = _steered_or_refused(tmp_path, "Put the pink cube, the white cube and the gray cube in a row from left to right", edit)
+    assert got is None or got[0] == "fresh" or got[1] != ["line[left_to_right](pink,cyan,gray)"]
 
-    assert r.intent == "fresh" or meaning(fam.schema(r.version)) != ["line[left_to_right](pink,cyan,gray)"]
+
+def _steered_or_refused(tmp_path, base: str, edit: str):
+    """(intent, meaning) of ``edit`` applied to a compiled base, or None where it is refused."""
+    try:
+        return _steered(tmp_path, base, edit)[0]
+    except SteerError:
+        return None
 
 
 @pytest.mark.parametrize("edit, expected", [
@@ -2069,12 +2070,5 @@ def test_a_change_said_with_the_ends_it_makes_is_applied(tmp_path):
 def test_a_reason_or_label_that_is_itself_a_change_is_not_dropped(tmp_path, edit):
     """A hostile helper's silent errors against this session's steering (the change in the reason or label had been
     dropped and the recolour alone applied)."""
-    fam = Family(create_family(compile_instruction("Put the red cube, the green cube and the blue cube in a row from left to "
-                                                   "right", tmp_path, name="fam").path).path)
-    try:
-        r = steer(fam.path, edit)
-    except SteerError:
-        return
-    from rpg.schema.meaning import meaning
-
-    assert meaning(fam.schema(r.version)) != ["line[left_to_right](red,yellow,blue)"]
+    got = _steered_or_refused(tmp_path, "Put the red cube, the green cube and the blue cube in a row from left to right", edit)
+    assert got is None or got[1] != ["line[left_to_right](red,yellow,blue)"]
