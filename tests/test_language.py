@@ -6742,6 +6742,7 @@ def test_a_far_end_that_contradicts_them_with_one_cube_and_a_means_outside_the_d
     # classes a helper reported from a held-out set (thirty-second session), in words of the tests' own
     ("Set a cyan cube on top of two stacked red cubes.", ["stack(red,red,cyan)"]),  # (it had been silently stack(red,cyan))
     ("Put the white block onto three blue blocks stacked together.", ["stack(blue,blue,blue,white)"]),
+    ("Set a cyan cube under two stacked red cubes.", ["stack(cyan,red,red)"]),  # (a hostile helper's: a red had been dropped)
 ])
 def test_a_cube_on_top_of_counted_stacked_cubes(text, expected):
     schema = check_feasibility(parse(text))

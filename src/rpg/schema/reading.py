@@ -2248,6 +2248,11 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
                 rf"(?:the\s+)?(\d+)\s+(?:stacked\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)|({COLOR_RE})\s+(?:blocks|cubes|bricks)\s+stacked"
                 r"(?:\s+(?:together|up|on\s+(?:top\s+of\s+)?each\s+other|one\s+on\s+(?:top\s+of\s+)?the\s+other))?)\b"),
      lambda m: "build a tower from bottom to top: " + ", ".join([m.group(3) or m.group(4)] * int(m.group(2)) + [m.group(1)]), True),
+    # "set a cyan cube under two stacked red cubes": the cube at the bottom of that tower (a red had been dropped, silently)
+    (re.compile(rf"\b(?:set|put|place|slide)\s+(?:a|an|the|1)\s+({COLOR_RE})\s+(?:block|cube|brick)\s+(?:under(?:neath)?|beneath|below)\s+"
+                rf"(?:the\s+)?(\d+)\s+(?:stacked\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)|({COLOR_RE})\s+(?:blocks|cubes|bricks)\s+stacked"
+                r"(?:\s+(?:together|up|on\s+(?:top\s+of\s+)?each\s+other|one\s+on\s+(?:top\s+of\s+)?the\s+other))?)\b"),
+     lambda m: "build a tower from bottom to top: " + ", ".join([m.group(1)] + [m.group(3) or m.group(4)] * int(m.group(2))), True),
     # "six cubes in one tower: two red at the bottom, two green in the middle, two blue at the top": three counted groups
     (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|ones))?\s+(?:at|on|in)\s+the\s+(?:bottom|base)"
                 rf"\s*,?\s+(?:and\s+)?(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|ones))?\s+in\s+the\s+(?:middle|center|centre)\s*,?\s+(?:and\s+)?"
