@@ -359,13 +359,15 @@ or a dash ("... - monochrome is so in right now.", "..., our high camp."): dropp
 
 VOICE_SIMILE_OPENING_RE = re.compile(r"^(?:just\s+)?like\s+(?!(?:in|at|on|onto|to|near|next|behind|beside|under|over|above|below|right|left"
                                      r"|just|really|so|this|that|here|there|before|last|always|usual|normal|i|we|you)\b)|^as\s+per\b|^the\s+way\b|^(?:as\s+)?[a-z]+\s+as\b")
-"""How a simile chunk of :data:`VOICE_TAIL_RES` opens (its words describe the thing compared: its places and
-counts are that thing's)."""
+"""How a simile chunk of :data:`VOICE_TAIL_RES` opens (its words describe the thing compared: its counts are that
+thing's; a place of its own keeps it, :data:`VOICE_SIMILE_BLOCKER_RE`)."""
 
-VOICE_PLACE_HAZARD_RE = re.compile(r"\b(?:up|down|over|off|out|upon|atop|underneath|beneath|their|its)\b")
-"""Words of place and possession that keep a chunk that is no simile from being dropped as a voice's ("..., up high",
-"..., its top free"); a simile's are the compared thing's ("like a glaze over clay", "like ducklings following their
-mother")."""
+VOICE_PLACE_HAZARD_RE = re.compile(r"\b(?:up|down|over|off|out|upon|atop|underneath|beneath|their|its|in|into|inside|onto|on|at|to"
+                                   r"|toward|towards|near|by|with|using|use|via|under|behind|beside)\b")
+"""Words of place, possession or means that keep a label or a chunk that is no simile from being dropped as a voice's:
+it may place a cube or name a tool ("..., up high", "..., its top free", "..., into the bin", "..., using the tongs").
+A simile's possessives are the compared thing's ("like ducklings following their mother"); its places are refused by
+:data:`VOICE_SIMILE_BLOCKER_RE`."""
 
 VOICE_CHUNK_HAZARD_RE = re.compile(
     r"\b(?:not|no|never|none|nothing|nowhere|neither|nor|without|except|unless|[a-z]+n't|cannot|if|when|whenever|case|provided"

@@ -312,23 +312,18 @@ def _without_address(sentence: str) -> str:
     return sentence
 
 
-_PLACE_OR_TOOL_RE = re.compile(r"\b(?:in|into|inside|onto|on|at|to|toward|towards|near|by|with|using|use|via|under|behind|beside"
-                               r"|from\s+the\s+(?:left|right|front|back))\b")
-"""Prepositions that keep a chunk that is no simile from being dropped as a voice's: such a chunk may place a cube
-or name a tool ("..., into the bin", "..., using the tongs"); a label's "from" names its writer ("tip from the apiary")."""
-
-
 def _voice_chunk(chunk: str, label: bool = False) -> bool:
     """Whether a chunk at a task's edge (:data:`lexicon.VOICE_LABEL_RE`, :data:`lexicon.VOICE_TAIL_RES`) is a voice's
     and says nothing of the task: no hazard (:data:`lexicon.VOICE_CHUNK_HAZARD_RE`: a negation, condition, reference,
     quantifier, size, order, time, pose, shape, the robot or a listener), no take-back (:data:`lexicon.RETRACTION_RE`),
     no label cube's letter or digit, no domain refusal that may bear on a goal (:data:`lexicon.COMMENTARY_BLOCKING_KINDS`,
-    a condition).  A simile ("like bees around the queen", "steady as a belay") may hold places, counts and verbs of the
-    thing it compares, but no word that begins like a cube, colour, structure, patch or label
-    (:data:`lexicon.VOICE_SIMILE_BLOCKER_RE`: "like a towering stack" stays); any other chunk ("Site diary, day six",
-    "..., where the hive entrance would be") has a word beyond fillers, no word that begins like a goal's word
-    ("towered"), no count, no verb that changes a scene, no preposition that may place a cube or name a tool, and no number
-    but a label's name of a thing ("day six", :data:`lexicon.VOICE_NAME_NUMBER_RE`)."""
+    a condition).  A simile ("like the foundation stones we uncovered", "steady as a belay") may hold counts and verbs of
+    the thing it compares, but no word that begins like a cube, colour, structure, patch or label, no place or relation of
+    its own and no thing known by its order, shape, pose or size (:data:`lexicon.VOICE_SIMILE_BLOCKER_RE`: "like a towering
+    stack", "like a hat on a head", "like a traffic light" stay); any other chunk ("Site diary, day six", "..., where the
+    hive entrance would be") has a word beyond fillers, no word that begins like a goal's word ("towered"), no count, no
+    verb that changes a scene, no preposition that may place a cube or name a tool (:data:`lexicon.VOICE_PLACE_HAZARD_RE`),
+    and no number but a label's name of a thing ("day six", :data:`lexicon.VOICE_NAME_NUMBER_RE`)."""
     if re.search(r"\b[A-HJ-Z]\b|\b[0-9]\b(?!\s*[a-z]{2})|_", chunk) and not (label and not re.search(r"\b[A-Z]\b|_", chunk)):
         return False  # "..., they go T, O, P": a label cube, not a voice ("day 6" names a day)
     low = chunk.lower().strip()
@@ -343,12 +338,11 @@ def _voice_chunk(chunk: str, label: bool = False) -> bool:
     if lexicon.VOICE_SIMILE_OPENING_RE.match(low) and not label:
         return not lexicon.VOICE_SIMILE_BLOCKER_RE.search(low)
     if lexicon.VOICE_PLACE_HAZARD_RE.search(low):
-        return False
+        return False  # "..., into the bin", "..., using the tongs": it may place a cube or name a tool
     if all(w in lexicon.IDLE_WORDS or w in lexicon.CHAT_WORDS or w in lexicon.INTERJECTIONS for w in words):
         return False  # "..., please?": a filler the readers know (it may matter to how the rest is read)
     named = lexicon.VOICE_NAME_NUMBER_RE.sub(lambda m: m.group(0).split()[0], low) if label else low
-    if re.search(r"\d", named) or lexicon.TASK_CONTENT_RE.search(named) or lexicon.GOAL_THING_PREFIX_RE.search(named) \
-            or _PLACE_OR_TOOL_RE.search(re.sub(r"\bfrom\b", " ", named) if label else named):
+    if re.search(r"\d", named) or lexicon.TASK_CONTENT_RE.search(named) or lexicon.GOAL_THING_PREFIX_RE.search(named):
         return False
     for w in words:
         for part in w.split("-"):
@@ -2242,17 +2236,16 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
                 rf"({COLOR_RE})\s+(?:block|cube|brick|one)\s+(?:on\s+top|at\s+the\s+top)(?:\s+of\s+(?:it|them|the\s+(?:stack|tower)))?\b"
                 r"(?!\s+of\b)"),  # "... and the pink block on top of each other": no order said; "... on top of the table": elsewhere
      lambda m: "build a tower from bottom to top: " + ", ".join([m.group(2)] * int(m.group(1)) + [m.group(3)]), True),
-    # "set a cyan cube on top of two stacked red cubes", "... of two red cubes stacked together": the counted cubes a tower
-    # under it (one of them had been dropped: silently a tower of two)
-    (re.compile(rf"\b(?:set|put|place|stack|add)\s+(?:a|an|the|1)\s+({COLOR_RE})\s+(?:block|cube|brick)\s+(?:on\s+top\s+of|onto|on|atop)\s+"
+    # "set a cyan cube on top of two stacked red cubes", "... of two red cubes stacked together", "... under two stacked red
+    # cubes": the counted cubes a tower with that cube on top of it or under it (one of them had been dropped: silently a
+    # tower of two)
+    (re.compile(rf"\b(?:set|put|place|stack|add|slide)\s+(?:a|an|the|1)\s+({COLOR_RE})\s+(?:block|cube|brick)\s+"
+                r"(?:(?P<on>on\s+top\s+of|onto|on|atop)|under(?:neath)?|beneath|below)\s+"
                 rf"(?:the\s+)?(\d+)\s+(?:stacked\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)|({COLOR_RE})\s+(?:blocks|cubes|bricks)\s+stacked"
                 r"(?:\s+(?:together|up|on\s+(?:top\s+of\s+)?each\s+other|one\s+on\s+(?:top\s+of\s+)?the\s+other))?)\b"),
-     lambda m: "build a tower from bottom to top: " + ", ".join([m.group(3) or m.group(4)] * int(m.group(2)) + [m.group(1)]), True),
-    # "set a cyan cube under two stacked red cubes": the cube at the bottom of that tower (a red had been dropped, silently)
-    (re.compile(rf"\b(?:set|put|place|slide)\s+(?:a|an|the|1)\s+({COLOR_RE})\s+(?:block|cube|brick)\s+(?:under(?:neath)?|beneath|below)\s+"
-                rf"(?:the\s+)?(\d+)\s+(?:stacked\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)|({COLOR_RE})\s+(?:blocks|cubes|bricks)\s+stacked"
-                r"(?:\s+(?:together|up|on\s+(?:top\s+of\s+)?each\s+other|one\s+on\s+(?:top\s+of\s+)?the\s+other))?)\b"),
-     lambda m: "build a tower from bottom to top: " + ", ".join([m.group(1)] + [m.group(3) or m.group(4)] * int(m.group(2))), True),
+     lambda m: "build a tower from bottom to top: " + ", ".join(
+         [m.group(4) or m.group(5)] * int(m.group(3)) + [m.group(1)] if m.group("on") else [m.group(1)] + [m.group(4) or m.group(5)] * int(m.group(3))),
+     True),
     # "six cubes in one tower: two red at the bottom, two green in the middle, two blue at the top": three counted groups
     (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|ones))?\s+(?:at|on|in)\s+the\s+(?:bottom|base)"
                 rf"\s*,?\s+(?:and\s+)?(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|ones))?\s+in\s+the\s+(?:middle|center|centre)\s*,?\s+(?:and\s+)?"
