@@ -445,16 +445,17 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
             (roled := _pivot_with_roles(plan, ref_schema)) is not None:
         return roled  # "turn it into a single tower, same cubes: the reds at the bottom, ...", "row instead, reading BAT": the
         # roles read with the cubes (the word had been dropped)
+    made = None
     if unread:
         try:
             made = apply_ops(ref_spec, plan.ops, keep_layers=carried.layers, anchors=carried.ends)
         except SteerError:
-            made = None
+            pass
         if made is None or not _restated(plan.text, made, unread):
             raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": {', '.join(repr(c) for c in unread)} has no place "
                              f"in the change read ({', '.join(o.op for o in plan.ops)}); say it in a separate edit, or use --model")
     try:
-        spec = apply_ops(ref_spec, plan.ops, keep_layers=carried.layers, anchors=carried.ends)
+        spec = made or apply_ops(ref_spec, plan.ops, keep_layers=carried.layers, anchors=carried.ends)  # (made once)
     except SteerError:
         if not all(o.op == "add" for o in plan.ops):
             raise
@@ -482,8 +483,8 @@ _LINE_END_INDEX = {("left_to_right", "left"): 0, ("left_to_right", "right"): -1,
 def _restated(text: str, spec: TaskSpec, unread: list[str]) -> bool:
     """Whether each value an edit names that no operation read (``unread``: colours, counts) is said again of the edited
     structure ``spec`` and holds there: a tower's end ("build it upside down, yellow at the bottom and red on top" of a
-    reversal), a line's end ("... from left to right, 1 at the left end"), the whole order listed ("put them in order:
-    1, 2, 3 from left to right"), or the count of its cubes ("make the tower five cubes ...")."""
+    reversal), a line's end ("..., 1 at the left end"), the whole order listed after the edit's last colon, or the count of
+    its cubes ("make the tower five cubes ...")."""
     names = [i.color or i.label for i in spec.items]
     low = normalize_edit(text)
     held: set[str] = set()
