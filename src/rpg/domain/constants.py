@@ -144,7 +144,8 @@ SOLVABLE_SEEDS: int = 5
 issue "oracle ... and a solvable gate")."""
 
 SOLVABLE_MIN_SUCCESS: int = 3
-"""Of SOLVABLE_SEEDS oracle episodes, at least this many must succeed (project)."""
+"""Of SOLVABLE_SEEDS oracle episodes, at least this many must succeed (project); the gate stops
+once this many did, or once so many failed that this many cannot."""
 
 SOLVABLE_EMBODIMENT: str = "floating_gripper"
 """The embodiment the ``solvable`` gate's oracle drives (project: the gate asks whether a

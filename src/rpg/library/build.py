@@ -15,6 +15,7 @@ local one; ``pip install rpg[ray]``).
 
 from __future__ import annotations
 
+import json
 import os
 import tempfile
 import time
@@ -166,9 +167,24 @@ def _start_worker() -> None:
     import rpg.steer.session  # noqa: F401
 
 
-def _longest_first(entries: list[dict]) -> list[dict]:
-    """Families (several compiles each) before single tasks, so no long entry starts last."""
-    return sorted(entries, key=lambda e: e.get("session") is None)
+def _recorded_seconds(entry_dir: Path) -> float:
+    """Seconds the gates of an entry's last build took, from its ``validation.json`` files
+    (each version's, for a family); 0.0 where none is readable."""
+    total = 0.0
+    for f in sorted(entry_dir.glob("**/validation.json")):
+        try:
+            gates = json.loads(f.read_text()).get("gates", [])
+            total += sum(float(g.get("duration_s", 0.0)) for g in gates if isinstance(g, dict))
+        except (OSError, ValueError, AttributeError, TypeError):
+            continue
+    return total
+
+
+def _longest_first(entries: list[dict], base: Path) -> list[dict]:
+    """The entries longest first, so that no long entry starts last and holds the build up
+    alone: by the seconds their last build recorded, then families (several compiles each)
+    before single tasks, then the manifest's order."""
+    return sorted(entries, key=lambda e: (-_recorded_seconds(base / e["name"]), e.get("session") is None))
 
 
 def _built(entries: list[dict], out_dir: str, base_dir: str, jobs: int, backend: str,
@@ -183,7 +199,8 @@ def _built(entries: list[dict], out_dir: str, base_dir: str, jobs: int, backend:
         import rpg.compiler  # noqa: F401 - imported once here, inherited by the forked workers
         import rpg.steer.session  # noqa: F401
     with open_backend(backend, jobs, address, initializer=_start_worker, mp_context=None) as runner:
-        yield from runner.imap(partial(build_entry, out_dir=out_dir, base_dir=base_dir), _longest_first(entries))
+        order = _longest_first(entries, Path(base_dir))
+        yield from runner.imap(partial(build_entry, out_dir=out_dir, base_dir=base_dir), order)
 
 
 STALE_TEMPORARY_S = 6 * 3600.0

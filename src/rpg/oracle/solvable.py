@@ -50,23 +50,33 @@ def oracle_episode(env, oracle, seed: int) -> OracleEpisode:
 
 
 def solvability(task, seed: int = 0, episodes: int = C.SOLVABLE_SEEDS,
-                embodiment: str = C.SOLVABLE_EMBODIMENT) -> dict:
+                embodiment: str = C.SOLVABLE_EMBODIMENT, needed: int | None = None) -> dict:
     """The oracle's success on ``episodes`` seeds from ``seed``: the ``solvable`` gate's details.
 
     Args:
         task: what :class:`rpg.env.BlockTaskEnv` loads (a directory or a
             :class:`rpg.env.loading.TaskCode`).
+        needed: stop once this many episodes succeeded, or once so many failed that this many
+            can no longer succeed (the gate passes ``SOLVABLE_MIN_SUCCESS``: its verdict is then
+            known, and the seeds left would only cost time, most on a pyramid's long episodes);
+            None runs every seed (a measurement of the rate, as ``benchmarks/bench_oracle.py``).
 
     Returns:
-        ``{"embodiment", "episodes", "successes", "rate", "failures": [{"seed", "reason"}]}``.
+        ``{"embodiment", "episodes", "successes", "rate", "failures": [{"seed", "reason"}]}``:
+        ``episodes`` counts the episodes run, ``rate`` is successes per episode run.
     """
     from rpg.env import BlockTaskEnv
     from rpg.oracle.planner import Oracle
 
     env = BlockTaskEnv(task, embodiment=embodiment, cameras=())
+    runs: list[OracleEpisode] = []
     try:
         oracle = Oracle(env)
-        runs = [oracle_episode(env, oracle, seed + k) for k in range(episodes)]
+        for k in range(episodes):
+            ok = sum(r.success for r in runs)
+            if needed is not None and (ok >= needed or ok + episodes - k < needed):
+                break
+            runs.append(oracle_episode(env, oracle, seed + k))
     finally:
         env.close()
     ok = sum(r.success for r in runs)

@@ -250,7 +250,7 @@ def run_gates(sources: dict[str, str], seed: int = 0, disabled=frozenset(), enab
         from rpg.env.loading import PreparedTask
         from rpg.oracle.solvable import solvability
 
-        details = solvability(PreparedTask(task.data, name=name), seed)
+        details = solvability(PreparedTask(task.data, name=name), seed, needed=C.SOLVABLE_MIN_SUCCESS)
         if details["successes"] < C.SOLVABLE_MIN_SUCCESS:
             first = details["failures"][0]
             raise GateFailure("solvability", f"the oracle solved {details['successes']} of {details['episodes']} "
