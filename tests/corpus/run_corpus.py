@@ -79,6 +79,7 @@ STRANGER_SETS = {
     "stranger42": ("stranger42.yaml", "STRANGER set 42 (stranger42.yaml, transfer measure of the thirty-first session; development material from the thirty-second)"),
     "stranger43": ("stranger43.yaml", "STRANGER set 43 (stranger43.yaml, transfer measure of the thirty-second session: aggregates only; abstract classes reported by a helper mid-session)"),
     "stranger44": ("stranger44.yaml", "STRANGER set 44 (stranger44.yaml, written during the thirty-second session, measured at its end: aggregates only)"),
+    "stranger45": ("stranger45.yaml", "STRANGER set 45 (stranger45.yaml, written at the start of the thirty-third session: aggregates only)"),
 }
 SPLITS = HERE / "splits.yaml"
 
@@ -116,7 +117,7 @@ def load_split(name: str) -> list[dict]:
         return yaml.safe_load(CORPUS.read_text())["instructions"]
     if name in STRANGER_SETS:
         path = HERE / STRANGER_SETS[name][0]
-        return [{"source": name, **e} for e in yaml.safe_load(path.read_text())["instructions"]]
+        return [{**e, "source": name} for e in yaml.safe_load(path.read_text())["instructions"]]
     splits = yaml.safe_load(SPLITS.read_text())
     want, got = splits["unseen"]["sha256"], sha256(UNSEEN)
     if want != got:
