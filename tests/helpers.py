@@ -44,3 +44,36 @@ def alive(pid: int) -> bool:
         return False
     return state != "Z"
 
+
+
+_COMPILED: dict[tuple[str, str | None], object] = {}
+
+
+def compiled(instruction: str, out_dir, name: str | None = None):
+    """``rpg.compiler.compile_instruction(instruction, out_dir, name=name)`` for tests that
+    compile one base task many times (the steering tests): the first call of a test process
+    compiles it, later calls copy that valid task directory into ``out_dir``.  A compiled task
+    is the same wherever it is written but for its gates' timings (test_steer's
+    ``test_a_copied_base_is_the_base_compiled_there`` checks it); an invalid result is never
+    reused."""
+    import atexit
+    import dataclasses
+    import shutil
+    import tempfile
+
+    from rpg.compiler import compile_instruction
+
+    key = (instruction, name)
+    if key not in _COMPILED:
+        if not _COMPILED:
+            cache = Path(tempfile.mkdtemp(prefix="rpg-test-compiled-"))
+            atexit.register(shutil.rmtree, cache, True)
+            _COMPILED[("", "")] = cache
+        r = compile_instruction(instruction, _COMPILED[("", "")] / str(len(_COMPILED)), name=name)
+        if not r.valid:
+            return compile_instruction(instruction, out_dir, name=name)
+        _COMPILED[key] = r
+    r = _COMPILED[key]
+    dest = Path(out_dir) / r.path.name
+    shutil.copytree(r.path, dest)
+    return dataclasses.replace(r, path=dest)

@@ -10,12 +10,12 @@ from pathlib import Path
 import pytest
 import yaml
 
-from rpg.compiler import compile_instruction
 from rpg.schema.builtin import parse
 from rpg.steer import Family, SteerError, create_family, steer
 from rpg.steer.edits import apply_ops, interpret
-from rpg.steer.session import goal_tower, run_session
+from rpg.steer.session import goal_tower
 from rpg.steer.spec import Item, TaskSpec, extract, render
+from tests.helpers import compiled
 
 ROOT = Path(__file__).resolve().parents[1]
 SEEDS = ROOT.parent / "shared" / "seed-cases.yaml"
@@ -35,17 +35,23 @@ def sessions():
 # -- the paper's ten benchmark sessions --------------------------------------------
 
 
-@pytest.mark.slow
 @pytest.mark.parametrize("session", sessions(), ids=lambda s: s["name"])
-def test_benchmark_session_runs_with_expected_intents_and_references(session, tmp_path):
-    f = tmp_path / "s.yaml"
-    f.write_text(yaml.safe_dump(session))
-    fam, steps = run_session(f, tmp_path / "out")
-    assert len(steps) == len(session["steps"])
-    for step, want in zip(steps, session["steps"], strict=True):
-        assert step.ok, (step.text, step.problems)
+def test_benchmark_session_in_the_library_has_expected_intents_and_references(session):
+    """Each benchmark session's family in the task library has one version per step, each
+    with the step's words, intent and reference (``current``: the version before it).  The
+    library is what the sessions regenerate to: examples/ holds these sessions (the test
+    below) and CI's ``rpg build library/manifest.yaml --check`` reruns every one of them
+    and fails on any byte that differs, so the sessions are not run a second time here."""
+    fam = ROOT / "library" / session["name"]
+    versions = Family(fam).load().versions
+    assert len(versions) == len(session["steps"])
+    for k, (v, want) in enumerate(zip(versions, session["steps"], strict=True)):
+        assert v.version_id == k and v.description == want.get("edit", want.get("instruction"))
         if "expected_intent" in want:
-            assert step.intent == want["expected_intent"]
+            assert v.intent == want["expected_intent"], (session["name"], k)
+        ref = want.get("expected_reference")
+        if ref is not None:
+            assert v.reference == (k - 1 if ref == "current" else int(ref.removeprefix("v"))), (session["name"], k)
     assert all(r["ok"] for r in Family(fam).verify())
 
 
@@ -61,7 +67,7 @@ def test_examples_hold_the_ten_benchmark_sessions():
 @pytest.fixture()
 def evolution(tmp_path):
     """evolution_revert_and_extend, steered through the API."""
-    r = compile_instruction("Make a simple 2-block tower with a red block on bottom and blue on top", tmp_path, name="fam")
+    r = compiled("Make a simple 2-block tower with a red block on bottom and blue on top", tmp_path, name="fam")
     fam = create_family(r.path)
     return fam
 
@@ -115,7 +121,7 @@ def test_loop_back_reuses_the_earlier_version(evolution):
 
 
 def test_asset_incompatible_edit_finds_compatible_earlier_version(tmp_path):
-    r = compile_instruction("Arrange 4 letter cubes in alphabetical order from left to right", tmp_path, name="fam")
+    r = compiled("Arrange 4 letter cubes in alphabetical order from left to right", tmp_path, name="fam")
     fam = create_family(r.path)
     blue = steer(fam.path, "Arrange the blocks in order red, yellow, green, blue from left to right")
     assert blue.valid and blue.version == 1
@@ -232,7 +238,7 @@ def test_cli_steer_log_show_and_session(tmp_path):
 
 
 def test_edits_beyond_the_paper_on_a_tower(tmp_path):
-    r = compile_instruction("Stack the red block on top of the yellow block", tmp_path, name="fam")
+    r = compiled("Stack the red block on top of the yellow block", tmp_path, name="fam")
     fam = create_family(r.path)
     steps = [
         ("Make the tower taller", "tweak", ["yellow", "red", "blue"]),
@@ -249,21 +255,21 @@ def test_edits_beyond_the_paper_on_a_tower(tmp_path):
 
 
 def test_colour_tweak_on_a_relational_task_and_growing_a_pyramid(tmp_path):
-    r = compile_instruction("Place the red block behind the yellow block", tmp_path, name="rel")
+    r = compiled("Place the red block behind the yellow block", tmp_path, name="rel")
     fam = create_family(r.path)
     s = steer(fam.path, "Change red to blue")
     assert (s.intent, s.valid) == ("tweak", True)
     schema = fam.schema(s.version)
     assert sorted(a.color for a in schema.assets) == ["blue", "yellow"]
     assert schema.goal_predicate().describe() == "blue behind yellow"
-    p = compile_instruction("Build a pyramid with a base of 3", tmp_path, name="pyr")
+    p = compiled("Build a pyramid with a base of 3", tmp_path, name="pyr")
     pyr = create_family(p.path)
     g = steer(pyr.path, "Make it bigger")
     assert g.intent == "tweak" and extract(pyr.schema(g.version)).dims == (4, 2)
 
 
 def test_steering_a_plain_artifact_makes_it_v0_of_a_family(tmp_path):
-    r = compile_instruction("Place a blue cube on top of a red cube on the table", tmp_path)
+    r = compiled("Place a blue cube on top of a red cube on the table", tmp_path)
     proc = rpg("steer", str(r.path), "Add a green cube on top", "--json")
     assert proc.returncode == 0, proc.stderr
     doc = json.loads(proc.stdout)
@@ -304,7 +310,7 @@ def test_edit_phrasings_render_the_expected_task(base, edit, expected):
 
 
 def test_a_version_named_by_its_content(tmp_path):
-    r = compile_instruction("Build a pyramid of letter blocks alphabetically with a base of 3", tmp_path, name="fam")
+    r = compiled("Build a pyramid of letter blocks alphabetically with a base of 3", tmp_path, name="fam")
     fam = create_family(r.path)
     assert steer(fam.path, "Build a pyramid of blue blocks with a base of 3").version == 1
     s = steer(fam.path, "Take the letter version and make the base 4")
@@ -325,7 +331,7 @@ def test_paraphrased_benchmark_edits():
 def test_edits_of_a_relation_task_change_the_relation(tmp_path):
     """A pairwise-relation task steered in its own terms: "it", "instead", "the other side",
     "swap them"; a relation change of the same cubes is a Modify."""
-    fam = compile_instruction("Place the red block behind the yellow block", tmp_path).path
+    fam = compiled("Place the red block behind the yellow block", tmp_path).path
     steps = [("Put it in front instead", "red in front of yellow"),
              ("Move it to the left", "red left of yellow"),
              ("Swap them", "yellow left of red"),
@@ -340,7 +346,7 @@ def test_edits_of_a_relation_task_change_the_relation(tmp_path):
     r = steer(fam, "Add a green block behind it")  # brings in a cube: an Extend
     assert (r.intent, r.valid) == ("extend", True)
     assert r.compile.schema.goal_summary == "yellow next to red; green behind yellow"
-    fam2 = compile_instruction("Stack the red block on top of the yellow block", tmp_path / "stack").path
+    fam2 = compiled("Stack the red block on top of the yellow block", tmp_path / "stack").path
     r = steer(fam2, "Add a blue block to the left of them")
     assert (r.intent, r.valid) == ("extend", True), r.notes
     assert r.compile.schema.goal_summary == "tower bottom to top: yellow, red; blue left of yellow"
@@ -357,7 +363,7 @@ def _steer_through(fam, steps):
 def test_edits_of_a_patch_task(tmp_path):
     """Cubes on one goal patch, steered in its own terms: the patch's colour and shape, the
     number of cubes (Tweak), a named cube added (Extend); the cubes keep their colours."""
-    fam = compile_instruction("Place both blocks onto the goal patch", tmp_path).path
+    fam = compiled("Place both blocks onto the goal patch", tmp_path).path
     steps = [("Make the patch green", "tweak", "red on green_patch; blue on green_patch"),
              ("Use three blocks", "tweak", "red on green_patch; blue on green_patch; green on green_patch"),
              ("Make the patch long", "tweak", "red on green_long_patch; blue on green_long_patch; green on green_long_patch"),
@@ -369,7 +375,7 @@ def test_edits_of_a_patch_task(tmp_path):
 def test_edits_of_a_region_task(tmp_path):
     """Cubes placed in regions of the table, steered in their own terms: another region or
     "swap them" (Modify), a colour (Tweak), a cube added by a region or a cube (Extend)."""
-    fam = compile_instruction("Place the red cube in the middle of the table", tmp_path).path
+    fam = compiled("Place the red cube in the middle of the table", tmp_path).path
     steps = [("Make it green", "tweak", "green in the center of the workspace"),
              ("Move it to the back left corner instead", "modify", "green in the back left corner of the workspace"),
              ("Add a blue block on the right side of the table", "extend",
@@ -378,13 +384,13 @@ def test_edits_of_a_region_task(tmp_path):
              ("Add a yellow block next to the blue one", "extend",
               "green on the right side of the workspace; blue in the back left corner of the workspace; yellow next to blue")]
     _steer_through(fam, steps)
-    fam2 = compile_instruction("Move the yellow cube onto the blue target", tmp_path / "patch").path
+    fam2 = compiled("Move the yellow cube onto the blue target", tmp_path / "patch").path
     r = steer(fam2, "Make the target green")
     assert (r.intent, r.valid, r.compile.schema.goal_summary) == ("tweak", True, "yellow on green_patch")
 
 
 def test_a_spelled_word_reversed_by_an_edit(tmp_path):
-    fam = compile_instruction("Spell CAT with letter cubes", tmp_path).path
+    fam = compiled("Spell CAT with letter cubes", tmp_path).path
     r = steer(fam, "Spell it backwards")
     assert (r.intent, r.valid) == ("modify", True)
     assert r.compile.schema.goal_summary == "the cubes spell 'TAC' left to right in a line"
@@ -393,11 +399,11 @@ def test_a_spelled_word_reversed_by_an_edit(tmp_path):
 def test_moving_a_cube_alternating_colours_and_removing_cubes(tmp_path):
     """'Put the blue one at the bottom' moves the cube the tower has (it adds none);
     'alternating' repaints in a pattern; 'remove one block' shrinks by one."""
-    fam = compile_instruction("Build a tower from bottom to top: red, green, blue", tmp_path / "t").path
+    fam = compiled("Build a tower from bottom to top: red, green, blue", tmp_path / "t").path
     s = steer(fam, "Put the blue one at the bottom")
     assert (s.intent, s.valid) == ("modify", True)
     assert s.compile.schema.goal_summary == "tower bottom to top: blue, red, green"
-    line = compile_instruction("Align 4 cubic blocks in a single straight horizontal line.", tmp_path / "l").path
+    line = compiled("Align 4 cubic blocks in a single straight horizontal line.", tmp_path / "l").path
     s = steer(line, "Use red and blue alternating")
     assert (s.intent, s.valid) == ("tweak", True)
     assert s.compile.schema.goal_summary == "cubes in a line left to right: red_1, blue_1, red_2, blue_2"
@@ -410,7 +416,7 @@ def test_moving_a_cube_alternating_colours_and_removing_cubes(tmp_path):
 
 
 def test_reading_direction_tower_of_a_word_and_back_to_a_named_word(tmp_path):
-    fam = compile_instruction("Spell the word 'DOG' using semantic cubes arranged in a line", tmp_path).path
+    fam = compiled("Spell the word 'DOG' using semantic cubes arranged in a line", tmp_path).path
     steer(fam, "Change the word to 'CAT'")
     s = steer(fam, "Make it read right to left")
     assert (s.intent, s.valid) == ("modify", True)
@@ -525,11 +531,35 @@ def test_keep_names_the_structure_the_edit_builds_on():
 
 # -- issue 30, item 6: edits written by others (additions, counts, colours, labels, places, refusals) --
 
+def test_a_copied_base_is_the_base_compiled_there(tmp_path):
+    """The steering tests' bases come from :func:`tests.helpers.compiled`, which copies a task
+    compiled once per test process: the copy is the task compiled in its place, file for file
+    but for the gates' timings, and steers to the same version."""
+    from rpg.compiler import compile_instruction
+
+    base = "Stack the red block on top of the yellow block"
+    here = compile_instruction(base, tmp_path / "here", name="fam")
+    compiled(base, tmp_path / "warm", name="fam")
+    copy = compiled(base, tmp_path / "copy", name="fam")
+    assert copy.path == tmp_path / "copy" / "fam" and copy.valid and copy.content_hash == here.content_hash
+    timing = re.compile(r"duration_s|gate \w+ +PASS|\"created\"|validation\.(json|log):")
+    for f in sorted(p.name for p in here.path.iterdir()):
+        a, b = (here.path / f).read_bytes(), (copy.path / f).read_bytes()
+        if f.endswith(".png") or f == "code.py" or f == "goal_state_code.py":
+            assert a == b, f
+        else:
+            strip = [ln for ln in a.decode().splitlines() if not timing.search(ln)]
+            assert strip == [ln for ln in b.decode().splitlines() if not timing.search(ln)], f
+    r1, r2 = steer(here.path, "add a green block on top"), steer(copy.path, "add a green block on top")
+    assert (r1.intent, r1.valid) == (r2.intent, r2.valid) == ("extend", True)
+    assert Family(here.path).schema(r1.version) == Family(copy.path).schema(r2.version)
+
+
 def _meaning_after(tmp_path, base, edits):
     """Steer ``base`` through ``edits``; the last version's meaning and intent."""
     from rpg.schema.meaning import meaning
 
-    fam = compile_instruction(base, tmp_path, name="fam").path
+    fam = compiled(base, tmp_path, name="fam").path
     r = None
     for e in edits:
         r = steer(fam, e)
@@ -588,7 +618,7 @@ def test_edits_written_by_others(tmp_path, base, edits, expected, intent):
     ("Stack a red block on a blue block on a green block", "both should be white", "'both' names two cubes"),
 ])
 def test_edits_that_cannot_be_applied_exactly_are_refused(tmp_path, base, edit, needle):
-    fam = compile_instruction(base, tmp_path, name="fam").path
+    fam = compiled(base, tmp_path, name="fam").path
     before = (fam / "family.yaml").read_bytes() if (fam / "family.yaml").exists() else None
     with pytest.raises(SteerError, match=needle):
         steer(fam, edit)
@@ -728,7 +758,7 @@ def test_an_addition_to_a_relation_names_its_cube_by_one(tmp_path):
 
 def test_an_edit_that_changes_nothing_is_refused(tmp_path):
     """An edit of the current version whose goal comes out as it was was not read as meant."""
-    fam = compile_instruction("Build a tower of 3 red blocks", tmp_path, name="fam").path
+    fam = compiled("Build a tower of 3 red blocks", tmp_path, name="fam").path
     before = (fam / "family.yaml").read_bytes() if (fam / "family.yaml").exists() else None
     with pytest.raises(SteerError, match="changes nothing"):
         steer(fam, "make it red")
@@ -761,7 +791,7 @@ def _steered(tmp_path, base: str, *edits: str):
     """(intent, meaning) of each edit applied in turn to a compiled base."""
     from rpg.schema.meaning import meaning
 
-    fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     out = []
     for e in edits:
         r = steer(fam.path, e)
@@ -796,7 +826,7 @@ def test_the_same_blocks_keep_their_colour_in_a_new_structure(tmp_path):
 ])
 def test_a_structure_turned_into_another_has_no_order_nobody_said(tmp_path, base, edit, kind):
     """"put them in a row" of a stack gave a left-to-right line in the stack's order."""
-    fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     r = steer(fam.path, edit)
     goal = fam.schema(r.version).goal_predicate()
     assert r.intent == "pivot" and type(goal).__name__ == kind and getattr(goal, "order", None) is None
@@ -931,7 +961,7 @@ def test_removals_and_additions_of_cubes_among_relations(tmp_path, base, edit, w
     ("Put two pink cubes in a row", "make that 3 green cubes", "has no place in the change"),
 ])
 def test_edits_refused_for_their_reason(tmp_path, base, edit, match):
-    fam = compile_instruction(base, tmp_path, name="fam").path
+    fam = compiled(base, tmp_path, name="fam").path
     with pytest.raises(SteerError, match=match):
         steer(fam, edit)
 
@@ -939,7 +969,7 @@ def test_edits_refused_for_their_reason(tmp_path, base, edit, match):
 def test_a_patch_recoloured_with_another_colour_said_is_not_read_as_the_patch_alone(tmp_path):
     from rpg.errors import BadInput
 
-    fam = compile_instruction("put the red cube on the yellow patch", tmp_path, name="fam").path
+    fam = compiled("put the red cube on the yellow patch", tmp_path, name="fam").path
     with pytest.raises(BadInput):  # the cube's new colour had been dropped silently
         steer(fam, "the patch should be blue and the cube green")
 
@@ -952,7 +982,7 @@ def test_a_patch_recoloured_with_another_colour_said_is_not_read_as_the_patch_al
     ("Stack blue on red", "swap the red for the yellow one we used before", "earlier turn"),  # no such cube
 ])
 def test_steering_refuses_what_it_would_apply_wrong(tmp_path, base, edit, match):
-    r = compile_instruction(base, tmp_path, name="fam")
+    r = compiled(base, tmp_path, name="fam")
     fam = create_family(r.path)
     before = (Path(fam.path) / "family.yaml").read_bytes()
     with pytest.raises(SteerError, match=match):
@@ -1060,7 +1090,7 @@ def test_edits_of_a_stranger_set_said_loosely(tmp_path, base, edits, want):
 ])
 def test_loose_edits_that_stay_refused(tmp_path, base, edit, match):
     """"The other end" of a cube in the middle; "it" of two related cubes (which one moves?); a cube of an unordered tower."""
-    fam = compile_instruction(base, tmp_path, name="fam").path
+    fam = compiled(base, tmp_path, name="fam").path
     with pytest.raises(SteerError, match=match):
         steer(fam, edit)
 
@@ -1078,7 +1108,7 @@ def test_roles_of_a_between_and_a_colour_said_with_an_arrow(tmp_path, base, edit
 
 
 def test_the_outer_two_of_ends_of_two_colours_is_refused(tmp_path):
-    fam = compile_instruction("Put the yellow block between the red block and the green block", tmp_path, name="fam").path
+    fam = compiled("Put the yellow block between the red block and the green block", tmp_path, name="fam").path
     with pytest.raises(SteerError, match="at once"):
         steer(fam, "make the outer two white")
 
@@ -1106,7 +1136,7 @@ def test_a_whole_task_reading_that_drops_cubes_nobody_said_to_drop_is_refused(tm
     cubes it names are several, the reading has one)."""
     from rpg.errors import BadInput
 
-    fam = compile_instruction("Make a line of six cubes, three black and three white, in any order", tmp_path, name="fam").path
+    fam = compiled("Make a line of six cubes, three black and three white, in any order", tmp_path, name="fam").path
     with pytest.raises(BadInput, match=r"new task of \d cubes|names several black cubes"):
         steer(fam, "blacks on the left, whites on the right")
 
@@ -1221,7 +1251,7 @@ def test_review_comments_and_casual_edits(tmp_path, base, edits, expected):
     ("Place a blue cube on top of a red cube", "redo", "nothing to redo"),
 ])
 def test_edits_that_stay_refused(tmp_path, base, edit, match):
-    fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     with pytest.raises(SteerError, match=match):
         steer(fam.path, edit)
 
@@ -1246,7 +1276,7 @@ def test_steer_stranger8_silent_errors_are_read_as_meant(tmp_path, base, edits, 
 
 
 def test_a_cube_made_bigger_stays_a_size(tmp_path):
-    fam = Family(create_family(compile_instruction("Stack four yellow cubes", tmp_path, name="fam").path).path)
+    fam = Family(create_family(compiled("Stack four yellow cubes", tmp_path, name="fam").path).path)
     with pytest.raises(SteerError, match="size"):
         steer(fam.path, "can you make the bottom one 2x bigger so the tower is more stable")  # it had made the tower taller
 
@@ -1292,13 +1322,13 @@ def test_steer_stranger10_voices(tmp_path, base, edits, expected):
 
 
 def test_two_cubes_named_by_place_in_one_recolour_are_refused(tmp_path):  # the bottom one had been dropped: silently wrong
-    fam = Family(create_family(compile_instruction("Stack red, green and blue, bottom to top", tmp_path, name="fam").path).path)
+    fam = Family(create_family(compiled("Stack red, green and blue, bottom to top", tmp_path, name="fam").path).path)
     with pytest.raises(SteerError, match="several cubes"):
         steer(fam.path, "make the top one and the bottom one blue")
 
 
 def test_a_version_reference_with_an_unread_change_is_refused(tmp_path):
-    fam = Family(create_family(compile_instruction("Stack a cyan cube on an orange cube", tmp_path, name="fam").path).path)
+    fam = Family(create_family(compiled("Stack a cyan cube on an orange cube", tmp_path, name="fam").path).path)
     steer(fam.path, "make the top one white")
     with pytest.raises(SteerError, match="did not read"):
         steer(fam.path, "like v0 but blue on top")  # on top as well, or the top one blue? it had returned to v0 alone
@@ -1347,7 +1377,7 @@ def test_the_two_leftmost_of_a_left_to_right_row(tmp_path):
 
 
 def test_the_leftmost_of_a_row_that_runs_no_way_is_refused(tmp_path):
-    fam = Family(create_family(compile_instruction("Put three green cubes in a row", tmp_path, name="fam").path).path)
+    fam = Family(create_family(compiled("Put three green cubes in a row", tmp_path, name="fam").path).path)
     with pytest.raises(SteerError, match="runs no way left to right"):
         steer(fam.path, "make the two leftmost ones red")
 
@@ -1415,7 +1445,7 @@ def test_steer_stranger12_voices(tmp_path, base, edits, expected):
     ("bottom to top: red, green, blue", "not how a line runs"),
 ])
 def test_an_order_that_is_not_the_tasks_cubes_along_its_axis_is_refused(tmp_path, edit, match):
-    fam = Family(create_family(compile_instruction("Put the red, green and blue cubes in a row", tmp_path, name="fam").path).path)
+    fam = Family(create_family(compiled("Put the red, green and blue cubes in a row", tmp_path, name="fam").path).path)
     with pytest.raises(SteerError, match=match):
         steer(fam.path, edit)
 
@@ -1503,7 +1533,7 @@ def test_a_swap_of_a_colour_two_cubes_share_is_refused(tmp_path):
     """Which red cube takes the blue cube's place is not said: no swap is guessed."""
     from rpg.errors import BadInput
 
-    fam = Family(create_family(compile_instruction("Put two red cubes next to each other and the blue cube on the green patch",
+    fam = Family(create_family(compiled("Put two red cubes next to each other and the blue cube on the green patch",
                                                    tmp_path, name="fam").path).path)
     with pytest.raises(BadInput):
         steer(fam.path, "swap red and blue")
@@ -1522,7 +1552,7 @@ def test_a_tower_on_a_patch_and_counts_alone(tmp_path, base, edits, expected):
 
 
 def test_a_tower_on_a_patch_in_any_order_stays_in_any_order(tmp_path):
-    fam = Family(create_family(compile_instruction("Build a tower of three cubes on the purple patch.", tmp_path, name="fam").path).path)
+    fam = Family(create_family(compiled("Build a tower of three cubes on the purple patch.", tmp_path, name="fam").path).path)
     r = steer(fam.path, "make it four")
     assert fam.schema(r.version).goal_summary.startswith("a stack of red, blue, green, yellow in any order")
 
@@ -1575,7 +1605,7 @@ def test_steer_stranger16_undo_twice(tmp_path, base, edits, expected):
 def test_steer_stranger16_made_up_cubes_are_refused(tmp_path, base, edit):
     from rpg.errors import BadInput
 
-    fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     with pytest.raises(BadInput):
         steer(fam.path, edit)
 
@@ -1615,7 +1645,7 @@ def test_the_cube_of_a_task_with_several_cubes_is_refused(tmp_path):
     """"make the cube yellow" of a two-cube tower had made both cubes yellow."""
     from rpg.errors import BadInput
 
-    fam = Family(create_family(compile_instruction("Stack the pink cube on the brown cube", tmp_path, name="fam").path).path)
+    fam = Family(create_family(compiled("Stack the pink cube on the brown cube", tmp_path, name="fam").path).path)
     with pytest.raises(BadInput, match="names one cube"):
         steer(fam.path, "make the cube yellow")
 
@@ -1640,7 +1670,7 @@ def test_chain_to_tower_keeps_the_said_end(tmp_path, base, edits, expected):
 def test_steering_that_would_invent_is_refused(tmp_path, base, edits, words):
     from rpg.errors import BadInput
 
-    fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     for e in edits[:-1]:
         steer(fam.path, e)
     with pytest.raises(BadInput, match=re.escape(words)):
@@ -1683,7 +1713,7 @@ def test_second_steering_attack(tmp_path, base, edits, expected):
 def test_second_steering_attack_refusals(tmp_path, base, edit, words):
     from rpg.errors import BadInput
 
-    fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     with pytest.raises(BadInput, match=re.escape(words)):
         steer(fam.path, edit)
 
@@ -1730,7 +1760,7 @@ def test_steer_stranger18_classes(tmp_path, base, edits, expected):
 def test_steer_stranger18_refusals(tmp_path, base, edits, words):
     from rpg.errors import BadInput
 
-    fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     for e in edits[:-1]:
         assert steer(fam.path, e).valid
     with pytest.raises(BadInput, match=re.escape(words)):
@@ -1739,7 +1769,7 @@ def test_steer_stranger18_refusals(tmp_path, base, edits, words):
 
 def test_a_variant_label_keeps_the_edit_as_said(tmp_path):
     """The label is dropped for reading, and the version records the edit as it was said."""
-    fam = Family(create_family(compile_instruction("Stack a blue cube on a red cube", tmp_path, name="fam").path).path)
+    fam = Family(create_family(compiled("Stack a blue cube on a red cube", tmp_path, name="fam").path).path)
     r = steer(fam.path, "v2: add a green cube on top")
     assert r.valid and fam.load().get(r.version).description == "v2: add a green cube on top"
 
@@ -1768,7 +1798,7 @@ def test_an_addition_that_says_the_count_it_makes(tmp_path):
     got = _steered(tmp_path, "Stack a blue cube on a red cube", "add a green cube on top",
                    "same but four cubes, put a yellow one on the very top")
     assert got[-1] == ("extend", ["stack(red,blue,green,yellow)"])
-    fam = Family(create_family(compile_instruction("Stack a blue cube on a red cube", tmp_path, name="fam2").path).path)
+    fam = Family(create_family(compiled("Stack a blue cube on a red cube", tmp_path, name="fam2").path).path)
     with pytest.raises(BadInput):
         steer(fam.path, "same but five cubes, put a yellow one on the very top")
 
@@ -1961,7 +1991,7 @@ def test_bare_colours_added_and_the_count_said_again(tmp_path):
                     "same five but reversed") == [
         ("extend", ["line[left_to_right](red,green,blue,yellow,orange)"]),
         ("modify", ["line[left_to_right](orange,yellow,blue,green,red)"])]
-    fam = Family(create_family(compile_instruction(base, tmp_path / "b", name="fam").path).path)
+    fam = Family(create_family(compiled(base, tmp_path / "b", name="fam").path).path)
     for edit in ("same four but reversed", "six cubes, add a yellow and an orange at the right end"):
         with pytest.raises(SteerError):
             steer(fam.path, edit)
@@ -1984,7 +2014,7 @@ def test_the_letters_stacked_instead(tmp_path):
 def test_edits_that_say_what_the_version_lacks_are_refused(tmp_path, base, edit):
     """Attacks on this session's edits (a stranger's): each had applied a change the words did not say (a reversal
     dropped, a count or the task's letters the version does not have, a pyramid's layers mixed)."""
-    fam = Family(create_family(compile_instruction(base, tmp_path, name="fam").path).path)
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     with pytest.raises(SteerError):
         steer(fam.path, edit)
 
@@ -1992,7 +2022,7 @@ def test_edits_that_say_what_the_version_lacks_are_refused(tmp_path, base, edit)
 @pytest.mark.parametrize("edit", ["go back to round 3", "revert to level 7"])
 def test_a_version_numbered_by_the_writers_own_count_is_refused(tmp_path, edit):
     """"go back to round 3" of a family with two versions had been read as one step back (silently another version)."""
-    fam = Family(create_family(compile_instruction("Stack the red cube on the blue cube", tmp_path, name="fam").path).path)
+    fam = Family(create_family(compiled("Stack the red cube on the blue cube", tmp_path, name="fam").path).path)
     steer(fam.path, "add a green cube on top")
     with pytest.raises(SteerError, match="count of its own"):
         steer(fam.path, edit)
@@ -2055,7 +2085,7 @@ def test_a_change_said_with_the_ends_it_makes_is_applied(tmp_path):
     base = "Stack three cubes: red at the bottom, then green, then yellow on top."
     assert _steered(tmp_path / "a", base, "Make it harder: build it upside down, yellow at the bottom and red on top.") == [
         ("modify", ["stack(yellow,green,red)"])]
-    fam = Family(create_family(compile_instruction(base, tmp_path / "b", name="fam").path).path)
+    fam = Family(create_family(compiled(base, tmp_path / "b", name="fam").path).path)
     with pytest.raises(SteerError, match="no place"):
         steer(fam.path, "build it upside down, red at the bottom")
 
