@@ -110,6 +110,20 @@ def test_corpus_no_silent_errors_and_85_percent_correct(capsys):
     ("line[left_to_right](red,red,blue)", ["line[right_to_left](red,red,blue)"], False),
     ("line[front_to_back](red,green)", ["line[back_to_front](green,red)"], True),
     ("line[front_to_back](red,green)", ["line[left_to_right](red,green)"], False),
+    # a relation written with its converse is the same goal (stranger45's annotator wrote "A behind B" as in_front_of(B,A))
+    ("in_front_of(blue,red)", ["behind(red,blue)"], True),
+    ("behind(red,blue)", ["in_front_of(blue,red)"], True),
+    ("right_of(red,blue)", ["left_of(blue,red)"], True),
+    ("in_front_of(red,blue)", ["behind(red,blue)"], False),
+    ("left_of(red,blue)", ["left_of(blue,red)"], False),
+    ("right_of(red,blue); in_front_of(red,blue)", ["left_of(blue,red)", "behind(blue,red)"], True),
+    # the two a cube stands between in either order; the one between them is not one of the two
+    ("between(white;red,blue)", ["between(white;blue,red)"], True),
+    ("between(white;red,blue)", ["between(red;blue,white)"], False),
+    # cubes on one patch said at once are one atom per cube
+    ("on_patch(red,patch:green); on_patch(blue,patch:green)", ["on_patch(blue,red,patch:green)"], True),
+    ("on_patch(red,patch:green)", ["on_patch(blue,red,patch:green)"], False),
+    ("on_patch(red,patch:green); on_patch(blue,patch:red)", ["on_patch(blue,red,patch:green)"], False),
 ])
 def test_meaning_matcher(expected, actual, ok):
     assert matches(expected, actual) is ok

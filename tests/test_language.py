@@ -6802,3 +6802,22 @@ def test_this_sessions_readings_attacked_are_refused(text):
 
     with pytest.raises((ParseError, Inexpressible, InfeasibleTask)):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Put the red cube on the blue cube, then the green one at the top.", ["stack(blue,red,green)"]),
+    ("Red on blue, and green at the very top.", ["stack(blue,red,green)"]),
+    ("Red sits on blue and green goes on the very top.", ["stack(blue,red,green)"]),
+    # the top of the table is its back; a corner is a corner
+    ("Put the red cube on the blue cube, and the green cube at the very top of the table.",
+     ["in_region(green,back)", "stack(blue,red)"]),
+])
+def test_a_cube_at_the_very_top_after_a_chain_tops_its_tower(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected
+
+
+def test_a_cube_at_the_top_with_a_corner_is_not_put_on_the_tower():
+    from rpg.schema.feasibility import InfeasibleTask
+
+    with pytest.raises((ParseError, InfeasibleTask)):
+        check_feasibility(parse("Put red on blue, and green at the top left corner."))

@@ -4619,6 +4619,12 @@ LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "... green sits on blue and white crowns the tower": that cube on top (the verb had left white out)
     (re.compile(r"\b(?:crowns|caps|tops(?:\s+off)?)\s+(?:it|them|the\s+(?:pyramid|tower|stack|structure|pile|whole\s+thing))(?:\s+off)?\b"),
      "goes on top"),
+    # "... and green goes on the very top", "then the green one at the very top": the top of the tower the chain built
+    # ("at the top" of the table, a side, or a layer keeps its words)
+    (re.compile(rf"\b(?:(?<=\bthen\s)|(?<=\band\s)|(?<=,\s))(?P<c>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:one|cube|block))?)\s+"
+                r"(?P<v>(?:goes|sits|is|stands|rests|lies|comes)\s+)?(?:on|at)\s+the\s+(?:very\s+)?top\b"
+                r"(?!\s*(?:of|left|right|edge|side|corner|row|layer|level|half|end|part|shelf|-)\b)"),
+     lambda m: f"{m['c']} {m['v'] or ''}on top"),
     # "... green sits on blue and white goes on top": on the chain's top cube (it had gone on the base)
     (re.compile(rf"\b(?P<c1>{COLOR_RE})(?:\s+(?:cube|block))?\s+(?P<v>(?:sits|goes|is|stands|rests|lies)\s+)?on\s+(?:top\s+of\s+)?(?:the\s+)?"
                 rf"(?P<c2>{COLOR_RE})(?:\s+(?:cube|block))?\s*,?\s+and\s+(?:the\s+)?(?P<c3>{COLOR_RE})(?:\s+(?:cube|block))?\s+"

@@ -220,10 +220,29 @@ def _wild(atom: str) -> bool:
     return "|" in body and head in ("pyramid", "wall") and len(tokens) == 1 and "*" not in next(iter(tokens))
 
 
+_CONVERSES = {k.name: k.converse for k in vars(P).values()
+              if isinstance(k, type) and issubclass(k, P.Predicate) and isinstance(getattr(k, "converse", None), str)}
+"""Relation name -> its converse's (``behind`` -> ``in_front_of``): ``behind(a,b)`` is ``in_front_of(b,a)``."""
+
+
+def _converse_written_once(atom: str) -> str:
+    """A relation of a pair written with the name of a converse pair that sorts first:
+    ``in_front_of(blue,red)`` as ``behind(red,blue)``, ``right_of(a,b)`` as ``left_of(b,a)`` (one goal,
+    two spellings; an annotation had written "A behind B" as ``in_front_of(B,A)``)."""
+    m = re.fullmatch(r"(\w+)\(([^(),;|]+),([^(),;|]+)\)", atom)
+    if m is None or m.group(1) not in _CONVERSES or _CONVERSES[m.group(1)] > m.group(1):
+        return atom
+    return f"{_CONVERSES[m.group(1)]}({m.group(3)},{m.group(2)})"
+
+
 def _unordered(atom: str) -> str:
     """An atom whose objects have no order (``piles(red,blue,red;by=color)``, ``pile(...)``, the two cubes
     of ``next_to``/``far_from``, a line with no direction, a circle) with its objects sorted, so an expected meaning may
     list them in any order."""
+    atom = _converse_written_once(atom)
+    flanks = re.fullmatch(r"between\(([^;()]+);([^;(),]+),([^;(),]+)\)", atom)
+    if flanks and not re.search(r"[?*]", atom):  # "between(white;red,blue)": the two it stands between in either order
+        return f"between({flanks.group(1)};{','.join(sorted(flanks.group(2, 3)))})"
     pair = _SYMMETRIC_ATOM_RE.fullmatch(atom)
     if pair and "?" not in atom:  # symmetric: "next_to(pink,Z)" is "next_to(Z,pink)" (a wildcard's pattern takes both)
         return f"{pair.group(1)}({','.join(sorted(pair.group(2, 3)))})"
@@ -237,12 +256,13 @@ def _unordered(atom: str) -> str:
 
 
 def _per_cube(atom: str) -> list[str]:
-    """A place said of several cubes at once (``in_region(red,red,back)``) as one atom per cube,
-    the way :func:`meaning` writes it; any other atom as it is."""
-    m = re.fullmatch(r"in_region\(([^()]+),(\w+)\)", atom)
-    if m is None or "," not in m.group(1):
+    """A place said of several cubes at once (``in_region(red,red,back)``, ``on_patch(red,blue,patch:green)``) as
+    one atom per cube (:func:`meaning` writes a region's that way; an annotation had written a patch's so); any other
+    atom as it is."""
+    m = re.fullmatch(r"(in_region|on_patch)\(([^()]+),([\w:]+)\)", atom)
+    if m is None or "," not in m.group(2):
         return [atom]
-    return [f"in_region({c},{m.group(2)})" for c in m.group(1).split(",")]
+    return [f"{m.group(1)}({c},{m.group(3)})" for c in m.group(2).split(",")]
 
 
 def _by_colour(atoms: list[str]) -> list[str]:
