@@ -474,7 +474,11 @@ def _refuse_unresolved_pronoun(text: str, original: str) -> None:
                                 "tower of the red and green blocks, then put the blue block on top of it\")", original)
     for m in lexicon.PLACE_PICKED_RE.finditer(text):
         before = re.sub(r"\b(?:stack|pile|line|row)\s*$", "", text[:m.start()])  # "stack the top block": a verb
-        if not lexicon.PLACED_PART_INTRO_RE.search(before):
+        # "stack the cube closest the robot on ...": nearest to something named after it is where a cube stands now, in
+        # any structure (the verb "stack" had passed for a structure described, and "closest" had then become "close")
+        measured = re.search(r"\b(?:closest|nearest|farthest|furthest)$", m.group(0)) and re.match(
+            r"\s+(?:to\s+|from\s+)?(?:the|a|an|your|my|our|you|me|us|him|her|them|it)\b", text[m.end():])
+        if measured or not lexicon.PLACED_PART_INTRO_RE.search(before):
             raise Inexpressible("reference", [m.group(0)], "picks a cube by its place in the current scene, which the "
                                 "instruction has not described (where the speaker sees it): name the cube by colour or label, or describe "
                                 "the structure it stands in first (e.g. \"build a tower of three blocks and make the "
@@ -1880,14 +1884,20 @@ _CHAIN_ITEM_RE = re.compile(
     rf"(?:(?:then|and|also|next|finally|lastly|after\s+that,?|afterwards,?)\s+)*(?:(?:put|place|set|stack|add|leave|lay)\s+)?(?:(?:a|an|the|another|1|(?:the\s+)?(?P<n>\d+|two|three|four|five|six|both))\s+)?"
     rf"(?P<c>{COLOR_RE})(?:\s+(?:blocks?|cubes?|bricks?|ones?))?\s+(?:(?:is|goes|sits|should\s+be|must\s+be|comes|stands)\s+)?"
     r"(?P<role>" + "|".join(f"(?P<{k}>{r})" for k, r in _CHAIN_ROLES) + r")")
-_CHAIN_SEP_RE = re.compile(r"\s*(?:,\s*(?:and\s+)?(?:then\s+)?|;\s*|\s+and\s+(?:then\s+)?|\s+then\s+)")
+_CHAIN_SEP_RE = re.compile(r"\s*(?:,\s*(?:and\s+)?(?:then\s+)?|;\s*|\s+and\s+(?:then\s+)?|\s+then\s+|\s+with\s+)")
 _CHAIN_HEAD_RE = re.compile(
     rf"(?:(?:please|now|puzzle\s*:)\s+)*(?:(?:make|build|create|form|construct|stack|assemble|(?:i|we)\s+(?:want|need)"
     rf"|(?:i|we)\s+would\s+like)\s+(?:a|an|1)\s+(?P<noun>{TOWER_NOUNS})"
     rf"(?:\s+(?:of|from|with|out\s+of|using)\s+(?:(?P<count>\d+|{lexicon.COUNT_WORD_RE})(?:\s+(?:blocks|cubes|bricks))?"
     rf"|(?:the\s+)?(?P<set>(?:{COLOR_RE})(?:\s*,\s*(?:{COLOR_RE}))*\s*,?\s+and\s+(?:{COLOR_RE}))\s+(?:cubes|blocks|bricks)"
     rf"(?P<where>\s+on\s+the\s+(?:{COLOR_RE})\s+(?:goal\s+)?patch)?))?"
-    r"|(?:stack|arrange|order)\s+(?:the|these|all\s+the)\s+(?:cubes|blocks))\s*(?:with|so\s+that|such\s+that|where|:|,|-)\s*")
+    r"|(?:stack|arrange|order)\s+(?:the|these|all\s+the)\s+(?:cubes|blocks)"
+    # a tower declared: "the tower should be: red at the bottom, blue above it, ..." (another reader had put every cube
+    # "above it"/"above that" above the first one, and ordered the rest at will, silently)
+    rf"|(?:a|an|one)\s+(?:{TOWER_NOUNS})(?=\s*:)"  # "a tower: red at the bottom, ..." (a goal's frame dropped before it)
+    rf"|the\s+(?:final\s+|finished\s+|goal\s+|target\s+)?(?:{TOWER_NOUNS})\s+(?:should|must|will|has\s+to|needs\s+to)\s+(?:be|look\s+like)"
+    rf"|(?:it|this|the\s+(?:goal|result|final\s+state|end\s+state|target))\s+(?:should\s+be|must\s+be|is)\s+(?:a|an|one)\s+(?:{TOWER_NOUNS}))"
+    r"\s*(?:with|so\s+that|such\s+that|where|:|,|-|(?<=\bbe)(?=\s))\s*")
 _CHAIN_RELATIVE = {"on": +1, "under": -1, "higher": +1, "lower": -1}
 """A role by a cube named -> the side of it the cube stands (+1 above)."""
 
