@@ -6846,3 +6846,27 @@ def test_a_cube_picked_by_what_it_stands_nearest_is_refused_after_stack(text):
 def test_a_tower_declared_cube_by_cube_reads_each_cube_above_the_one_before(text, expected):
     """Without a verb before the tower, "above that" had been read above the first cube and the rest ordered at will."""
     assert sorted(meaning(check_feasibility(parse(text)))) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    # either cube on top: the order left free
+    ("Stack the red and blue cubes; either can be on top.", "UnorderedStack"),
+    ("Stack the red and blue cubes, either of them may sit on top.", "UnorderedStack"),
+    # a person other than the robot doing the task
+    ("The student should stack the red cube on the blue cube.", "Stack"),
+    ("The participant has to put the red cube left of the blue cube.", "LeftOf"),
+])
+def test_either_on_top_and_a_student_doing_the_task_are_read(text, expected):
+    assert expected in {type(p).__name__ for p in parse(text).goal_predicate().walk()}
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Put the red cube at the back of the table, far from the robot.", ["in_region(red,back)"]),
+    ("Put the red cube at the back of the table (far from the robot).", ["in_region(red,back)"]),
+    ("Stack red on blue at the back of the table, away from the robot.", ["stack(blue,red)@back"]),
+    # the corner said, then its side from the robot: the goal holds both, the corner (meaning() had written the side)
+    ("Put the red cube at the back right corner, far from the robot.", ["in_region(red,back_right)"]),
+    ("Put the red cube in the back right corner, at the back of the table.", ["in_region(red,back_right)"]),
+])
+def test_a_side_said_again_from_the_robot_is_the_same_place(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected

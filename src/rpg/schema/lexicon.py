@@ -1701,7 +1701,8 @@ ANY_ORDER_RE = re.compile(
     r"|you\s+(?:can|may)\s+(?:choose|pick|decide)\s+the\s+order"
     r"|(?:the\s+)?order\s+(?:thereof\s+)?(?:being\s+)?at\s+(?:the\s+robot's|your|its)\s+discretion"
     r"|how(?:ever)?\s+you\s+(?:prefer|like|want|wish|please)"
-    r"|(?:either|any|whichever)\s+(?:one\s+|1\s+|cube\s+|block\s+)?(?:on\s+top|at\s+the\s+(?:top|bottom))(?:\s+(?:is\s+)?(?:fine|ok(?:ay)?))?"
+    r"|(?:either|any|whichever)\s+(?:one\s+|1\s+|cube\s+|block\s+|of\s+them\s+)?(?:(?:can|may|could)\s+(?:go|be|sit|stand|end\s+up|come)\s+)?"
+    r"(?:on\s+top|at\s+the\s+(?:top|bottom))(?:\s+(?:is\s+)?(?:fine|ok(?:ay)?))?"
     r"|whichever\s+way(?:\s+(?:is\s+)?(?:fine|round|around))?|either\s+way\s+(?:round|around|up)"
     # "Which one goes on top is up to you.", "It is up to you which one goes on top."
     r"|which(?:\s+(?:one|cube|block|colou?r))?(?:'s|\s+is|\s+goes|\s+ends\s+up|\s+sits)\s+(?:at\s+the\s+(?:bottom|top|base)|on\s+(?:the\s+)?(?:top|bottom))"
@@ -2082,7 +2083,8 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
                r"|wants|expects|challenges)\s+(?:the\s+)?(?:agent|robot|policy|arm|learner|controller)\s+to\s+"),
     # "In this task(,) the agent must ...", "The policy must ...": the task follows
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:in\s+this\s+(?:task|episode|environment|setting)\s*,?\s*)?(?:the\s+)?"
-               r"(?:agents?|robots?|polic(?:y|ies)|controllers?|learners?)\s+(?:must|should|has\s+to|have\s+to|needs?\s+to"
+               r"(?:agents?|robots?|polic(?:y|ies)|controllers?|learners?|students?|trainees?|participants?|operators?"
+               r"|teleoperators?|demonstrators?|players?|models?)\s+(?:must|should|has\s+to|have\s+to|needs?\s+to"
                r"|(?:is|are)\s+(?:required|asked)\s+to)\s+"),
     # "The episode is successful if ...", "the task succeeds when ...", "Success when ...", "Episode ends when ...": the goal
     # follows (an episode ends on success)
@@ -4565,10 +4567,11 @@ def _one_chain(m: re.Match) -> bool:
 LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "to the back edge of the table, far from the robot": the robot's words say that side again (the side had been
     # read twice, refused)
-    (re.compile(r"\b((?:the\s+)?back\s+(?:edge|side|half|end|part|row)(?:\s+of\s+the\s+(?:table|workspace))?)\s*,\s*(?:far(?:thest)?\s+(?:away\s+)?"
-                r"|away\s+)from\s+(?:the\s+|your\s+)?robot\b"
-                r"|\b((?:the\s+)?front\s+(?:edge|side|half|end|part|row)(?:\s+of\s+the\s+(?:table|workspace))?)\s*,\s*(?:near(?:est)?|clos(?:e|est))"
-                r"(?:\s+to)?\s+(?:the\s+|your\s+)?robot\b"),
+    # ("at the back of the table, away from the robot", "at the back (far from the robot)": the same)
+    (re.compile(r"\b((?:the\s+)?back(?:\s+(?:edge|side|half|end|part|row))?(?:\s+of\s+the\s+(?:table|workspace))?)\s*(?:,|\()\s*"
+                r"(?:far(?:thest)?\s+(?:away\s+)?|away\s+)from\s+(?:the\s+|your\s+)?robot\b\)?"
+                r"|\b((?:the\s+)?front(?:\s+(?:edge|side|half|end|part|row))?(?:\s+of\s+the\s+(?:table|workspace))?)\s*(?:,|\()\s*"
+                r"(?:near(?:est)?|clos(?:e|est))(?:\s+to)?\s+(?:the\s+|your\s+)?robot\b\)?"),
      lambda m: m.group(1) or m.group(2)),
     # "near the robot, at the front edge of the table": the same, the robot's words first
     (re.compile(r"\b(?:(?:near(?:est)?|clos(?:e|est))(?:\s+to)?|next\s+to)\s+(?:the\s+|your\s+)?robot\s*,\s*(?=(?:at|on|along|to|in)\s+(?:the\s+)?"

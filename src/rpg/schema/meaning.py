@@ -53,6 +53,15 @@ def descriptor(asset) -> str:
     return str(asset.color)
 
 
+def _inner(a: str, b: str) -> str | None:
+    """Of two regions one of which lies within the other (``back_right`` in ``back``), the inner one, which says
+    both; None when neither holds the other."""
+    def within(x: str, y: str) -> bool:
+        return all(any(ox[0] >= oy[0] - 1e-9 and ox[1] <= oy[1] + 1e-9 and px[0] >= py[0] - 1e-9 and px[1] <= py[1] + 1e-9
+                       for oy, py in P.region_boxes(y)) for ox, px in P.region_boxes(x))
+    return a if within(a, b) else b if within(b, a) else None
+
+
 def _conjuncts(p: P.Predicate) -> list[P.Predicate]:
     if isinstance(p, (P.And, P.InOrder)):
         return [q for c in p.children() for q in _conjuncts(c)]
@@ -113,7 +122,14 @@ def meaning(schema: TaskSchema) -> list[str]:
         elif isinstance(p, P.On):
             on_edges.append((p.b, p.a))
         elif isinstance(p, P.InRegion):
-            regions[p.a] = p.region
+            if p.a in regions and regions[p.a] != p.region:  # two places of one cube: the goal is both
+                inner = _inner(regions[p.a], p.region)
+                if inner is None:
+                    atoms.append(f"in_region({names([p.a])},{p.region})")
+                    continue
+                regions[p.a] = inner  # "the back right corner, at the back of the table": the corner (the wider had won)
+            else:
+                regions[p.a] = p.region
             used.add(p.a)
         elif isinstance(p, P.CentredIn):  # a structure standing with its middle in a region: "circle(...)@center" too
             regions.update(dict.fromkeys(p.objects, p.region))
