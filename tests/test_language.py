@@ -6870,3 +6870,13 @@ def test_either_on_top_and_a_student_doing_the_task_are_read(text, expected):
 ])
 def test_a_side_said_again_from_the_robot_is_the_same_place(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Righto, pop the red cube on top of the blue one.", ["stack(blue,red)"]),
+    ("Righto put the red cube on the blue cube.", ["stack(blue,red)"]),
+    ("put the bluee cube on the red cube", ["stack(red,blue)"]),  # a typo still corrected
+])
+def test_a_word_that_begins_with_a_place_word_is_not_corrected_into_it(text, expected):
+    """"Righto" had been corrected to "right", a place the task then lacked (refused) or, elsewhere, took."""
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected

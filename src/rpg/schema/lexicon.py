@@ -1842,6 +1842,7 @@ inside a sentence)."""
 INTERJECTIONS: frozenset[str] = frozenset("""
 hey hi hello hiya howdy yo oi ahoy arr arrr aye ahem psst hmm hm um uh er erm oh ah aha alas wow whoa welp yep yup nope
 gee golly gosh heck jeez sheesh ugh yikes oops whew phew huzzah hurrah hooray yay woohoo ooh alrighty okey dokey lo behold
+righto rightio righty-ho righto-ho
 hark prithee pray forsooth verily yea nay egad zounds matey mateys landlubber landlubbers ye thee thou y'all yall ya
 bro dude fam buddy folks partner sir maam ma'am madam miss mister captain cap'n chief boss team crew gang guys savvy
 recruit recruits cadet cadets private soldier soldiers maggot maggots trooper troopers sergeant

@@ -86,6 +86,10 @@ def canon_color(word: str) -> str:
     return COLOR_ALIASES.get(word, word)
 
 
+_PLACE_WORDS = frozenset({"left", "right", "front", "back", "top", "bottom", "middle", "center", "centre", "side", "corner", "edge"})
+"""Words of a place, which a typo correction may not reach by cutting a longer word short (:func:`_normalize_words`)."""
+
+
 def _transposition(word: str) -> tuple[str] | None:
     """The one known word that ``word`` (a short typo) becomes by swapping two adjacent
     letters ("teh" -> "the", "rde" -> "red"), as a 1-tuple; None if none or several."""
@@ -1585,6 +1589,8 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
                                            if len(w) >= 4 else None)  # "purpel", "rigth": two letters swapped
         if match and lexicon.is_dictionary_word(w) and not w.startswith(match[0]):
             match = None  # a real word is never "corrected" into another ("bring" is not "ring"); "vertically" -> "vertical"
+        if match and match[0] in _PLACE_WORDS and w.startswith(match[0]) and w[len(match[0]):] not in ("", "s", "es", "ly", "ed", "d", "ing"):
+            match = None  # nor a word that only begins with a place word ("righto" is not "right": a place had been read)
         if match and w.endswith(match[0]) and w[:len(w) - len(match[0])] in ("un", "dis", "non", "re", "de", "mis"):
             match = None  # nor stripped of a prefix that changes it ("unstacking" is not "stacking", "restack" not "stack")
         if match:
