@@ -6880,3 +6880,27 @@ def test_a_side_said_again_from_the_robot_is_the_same_place(text, expected):
 def test_a_word_that_begins_with_a_place_word_is_not_corrected_into_it(text, expected):
     """"Righto" had been corrected to "right", a place the task then lacked (refused) or, elsewhere, took."""
     assert sorted(meaning(check_feasibility(parse(text)))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    # "at the very top" without a chain before it is a place of the table, not the top of a tower
+    "Put the red cube in the bottom left corner and the blue cube at the very top",
+    "Put red in the middle, then the blue one at the top",
+    # a cube on top and a place after it: of the cube or of the tower? (the top had been dropped, silently)
+    "Put red on blue, then the green one at the very top, next to yellow",
+    "Put red on blue, then green on top, in the back left corner",
+    "Stack red on blue with green on top, on the yellow patch",
+    # cubes said in turn on the one before with more around them (another reader had ordered them at will, silently)
+    "The tower: red at the bottom, blue above it, green above that.",
+    "Build a tower. Red at the bottom, blue above it, green above that.",
+    "The tower should be red at the bottom, blue above it, green above that, on the green patch",
+    "Put red on the green patch, blue above it, green above that",
+    # "either can be on top of green": green's place is said (the order had been freed for all three)
+    "Stack red and blue; either can be on top of green",
+])
+def test_the_session_s_attack_on_new_readings_is_refused(text):
+    """A hostile helper's probes of the thirty-third session's readings that had compiled to what the words do not say."""
+    from rpg.schema.feasibility import InfeasibleTask
+
+    with pytest.raises((ParseError, InfeasibleTask)):
+        check_feasibility(parse(text))

@@ -1702,7 +1702,7 @@ ANY_ORDER_RE = re.compile(
     r"|(?:the\s+)?order\s+(?:thereof\s+)?(?:being\s+)?at\s+(?:the\s+robot's|your|its)\s+discretion"
     r"|how(?:ever)?\s+you\s+(?:prefer|like|want|wish|please)"
     r"|(?:either|any|whichever)\s+(?:one\s+|1\s+|cube\s+|block\s+|of\s+them\s+)?(?:(?:can|may|could)\s+(?:go|be|sit|stand|end\s+up|come)\s+)?"
-    r"(?:on\s+top|at\s+the\s+(?:top|bottom))(?:\s+(?:is\s+)?(?:fine|ok(?:ay)?))?"
+    r"(?:on\s+top|at\s+the\s+(?:top|bottom))(?!\s+of\b)(?:\s+(?:is\s+)?(?:fine|ok(?:ay)?))?"
     r"|whichever\s+way(?:\s+(?:is\s+)?(?:fine|round|around))?|either\s+way\s+(?:round|around|up)"
     # "Which one goes on top is up to you.", "It is up to you which one goes on top."
     r"|which(?:\s+(?:one|cube|block|colou?r))?(?:'s|\s+is|\s+goes|\s+ends\s+up|\s+sits)\s+(?:at\s+the\s+(?:bottom|top|base)|on\s+(?:the\s+)?(?:top|bottom))"
@@ -4552,6 +4552,16 @@ def _axis_ends(m: re.Match) -> str:
 
 
 
+def _chain_before(m: re.Match) -> bool:
+    """Whether the sentence before ``m`` stacks one named cube on another ("put red on blue, then the green one at the very
+    top"): "at the top" then tops that tower (without one it is a place of the table: "red in the corner and blue at the
+    very top" had made a tower)."""
+    start = max((x.end() for x in re.finditer(r"[.!?;]\s", m.string[:m.start()])), default=0)
+    return bool(re.search(rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:(?:sits|goes|is|stands|rests|lies)\s+)?"
+                          rf"(?:on|onto|upon|atop|on\s+top\s+of)\s+(?:the\s+)?(?:{COLOR_RE})\b(?!\s+(?:goal\s+)?patch)",
+                          m.string[start:m.start()]))
+
+
 def _one_chain(m: re.Match) -> bool:
     """Whether the placements said in the text of ``m`` (a chain ending "... and white goes on top") make one tower whose
     top is the cube ``c1`` (two cubes on one, or two chains, leave "on top" unplaced: "green and red sit on blue and white
@@ -4627,8 +4637,11 @@ LANDMARK_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # ("at the top" of the table, a side, or a layer keeps its words)
     (re.compile(rf"\b(?:(?<=\bthen\s)|(?<=\band\s)|(?<=,\s))(?P<c>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:one|cube|block))?)\s+"
                 r"(?P<v>(?:goes|sits|is|stands|rests|lies|comes)\s+)?(?:on|at)\s+the\s+(?:very\s+)?top\b"
-                r"(?!\s*(?:of|left|right|edge|side|corner|row|layer|level|half|end|part|shelf|-)\b)"),
-     lambda m: f"{m['c']} {m['v'] or ''}on top"),
+                r"(?!\s*(?:of|left|right|edge|side|corner|row|layer|level|half|end|part|shelf|-)\b)"
+                # (not with another place after it: "..., then green at the very top, next to yellow")
+                r"(?!\s*,?\s*(?:and\s+)?(?:next|left|right|behind|in|on|at|near|far|close|beside|between|under|by|away|toward|towards"
+                r"|along|inside|outside|opposite|against|touching)\b)"),
+     lambda m: f"{m['c']} {m['v'] or ''}on top" if _chain_before(m) else m.group(0)),
     # "... green sits on blue and white goes on top": on the chain's top cube (it had gone on the base)
     (re.compile(rf"\b(?P<c1>{COLOR_RE})(?:\s+(?:cube|block))?\s+(?P<v>(?:sits|goes|is|stands|rests|lies)\s+)?on\s+(?:top\s+of\s+)?(?:the\s+)?"
                 rf"(?P<c2>{COLOR_RE})(?:\s+(?:cube|block))?\s*,?\s+and\s+(?:the\s+)?(?P<c3>{COLOR_RE})(?:\s+(?:cube|block))?\s+"

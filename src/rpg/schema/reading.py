@@ -1435,7 +1435,25 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
                 raise ParseError(f"'{said_first.group(1)} first' in \"{original[:80]}\" puts first a cube the list does not "
                                  "start with; say the order once, or use --model")
             text = text[:said_first.start()] + text[said_first.end():]  # said again: the list's first (it had been a 4th cube)
-    text = tower_chain(text)
+    chained = tower_chain(text)
+    after_re = r"\b(?:above|over|on|onto|atop|upon|on\s+top\s+of|below|under|beneath|underneath)\s+(?:it|that|this)\b"
+    said_after = max((re.findall(after_re, sentence) for sentence in re.split(r"[.!?;]", text)), key=len)
+    if chained == text and len(said_after) >= 2:  # (two in one sentence)  # "the tower: red at the bottom, blue above it, green above that, on the
+        # patch": cubes placed in turn on the one said before, with more around them (another reader had put each above
+        # the first cube and ordered them at will, silently)
+        raise ParseError(f"\"{original[:80]}\" places cubes in turn on the one said before "
+                         f"({', '.join(repr(w) for w in said_after[:2])}) with more said around them; say the tower from bottom to top in a sentence of "
+                         "its own (e.g. \"build a tower from bottom to top: red, blue, green\"), or use --model")
+    topped = re.search(rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:(?:goes|sits|is|stands|comes)\s+)?(?:on|at)\s+(?:the\s+)?(?:very\s+)?"
+                       r"top\s*,\s*(?:and\s+)?(?:next|left|right|behind|in|on|at|near|far|close|beside|between|by|away|toward|towards"
+                       r"|along|opposite|touching)\b", text)
+    if topped and re.search(rf"\b(?:on|onto|upon|atop)\s+(?:the\s+)?(?:{COLOR_RE})\b", text[:topped.start()]):
+        # "put red on blue, then green on top, next to yellow": the tower's top, and a place said after it of the cube or
+        # of the tower? (the top had been dropped, silently, and the place given to the cube alone)
+        raise ParseError(f"\"{original[:80]}\" puts a cube on top and says a place after it ('{topped.group(0)}'): of that "
+                         "cube or of the whole tower? Say the place in a sentence of its own (e.g. \"... Put the tower next to "
+                         "the yellow block.\"), or use --model")
+    text = chained
     text = lexicon.rewrite(lexicon.TOP_DOWN_REWRITES, text)
     # "Make a tower. Top: red. Middle: green. Bottom: blue.": each role's cube, whatever order the roles are said in (the
     # colours had been read as a list from the bottom, red at the bottom)
