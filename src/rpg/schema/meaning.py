@@ -272,13 +272,26 @@ def _unordered(atom: str) -> str:
 
 
 def _per_cube(atom: str) -> list[str]:
-    """A place said of several cubes at once (``in_region(red,red,back)``, ``on_patch(red,blue,patch:green)``) as
-    one atom per cube (:func:`meaning` writes a region's that way; an annotation had written a patch's so); any other
-    atom as it is."""
-    m = re.fullmatch(r"(in_region|on_patch)\(([^()]+),([\w:]+)\)", atom)
-    if m is None or "," not in m.group(2):
+    """A place said of several cubes at once (``in_region(red,red,back)``) as one atom per cube,
+    the way :func:`meaning` writes it; any other atom as it is."""
+    m = re.fullmatch(r"in_region\(([^()]+),(\w+)\)", atom)
+    if m is None or "," not in m.group(1):
         return [atom]
-    return [f"{m.group(1)}({c},{m.group(3)})" for c in m.group(2).split(",")]
+    return [f"in_region({c},{m.group(2)})" for c in m.group(1).split(",")]
+
+
+def _one_atom_a_patch(atoms: list[str]) -> list[str]:
+    """Cubes put on one patch in atoms of their own (``on_patch(red,patch:green); on_patch(blue,patch:green)``) as the
+    one atom :func:`meaning` writes for that patch (``on_patch(blue,red,patch:green)``); atoms with a wildcard as they are."""
+    said: dict[str, list[str]] = {}
+    rest = []
+    for a in atoms:
+        m = re.fullmatch(r"on_patch\(([^()?*]+),(patch:\w+)\)", a)
+        if m:
+            said.setdefault(m.group(2), []).extend(m.group(1).split(","))
+        else:
+            rest.append(a)
+    return rest + [f"on_patch({','.join(sorted(cubes))},{patch})" for patch, cubes in sorted(said.items())]
 
 
 def _by_colour(atoms: list[str]) -> list[str]:
@@ -319,11 +332,13 @@ def matches(expected: str, actual: list[str]) -> bool:
                   for a in actual]
     expected, actual = _forward(expected), [_forward(a) for a in actual]
     wanted = _by_colour([w for a in re.split(r";\s+(?![^()]*\))", expected) if a.strip() for w in _per_cube(_unordered(a.strip()))])
+    wanted = _one_atom_a_patch(wanted)  # (an annotation had written a patch's cubes one atom each)
     actual = _by_colour([w for a in actual for w in _per_cube(_unordered(a))])
     for w in [w for w in wanted if re.fullmatch(r"reads\([A-Za-z0-9]+\)", w)]:  # "reads(DOG)": the word read, shortly
         word = w[6:-1]
         actual = [f"reads({word})" if re.fullmatch(rf"reads\([^()]*\btext={re.escape(word)}\b[^()]*\)", a) else a for a in actual]
-    for w in [w for w in wanted if re.match(r"^\w+\((\w+)\*,[^,*]+\)$", w)]:
+    for w in [w for w in wanted if re.match(r"^\w+\((?:(\w+)\*,[^,*]+|[^,*]+,(\w+)\*)\)$", w)]:  # (its second cube too:
+        # "in_front_of(red*,blue)" is written "behind(blue,red*)")
         each = w.replace("*", "", 1)
         if each in actual:  # one atom per cube of that colour (a single atom of the star form may match too)
             wanted.remove(w)
