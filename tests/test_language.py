@@ -6904,3 +6904,15 @@ def test_the_session_s_attack_on_new_readings_is_refused(text):
 
     with pytest.raises((ParseError, InfeasibleTask)):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Put red on blue, then put green in the back left corner", ["in_region(green,back_left)", "stack(blue,red)"]),
+    ("Put red on blue, then green in the front left corner.", ["in_region(green,front_left)", "stack(blue,red)"]),
+    ("Put red on blue, then the green one in the center", ["in_region(green,center)", "stack(blue,red)"]),
+    # the tower put there is the tower's place
+    ("Stack red on blue, then put the tower in the back left corner.", ["stack(blue,red)@back_left"]),
+])
+def test_a_bare_colour_placed_after_a_chain_goes_there_alone(text, expected):
+    """"then put green in the back left corner" had added green to the tower and sent the whole tower to the corner."""
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected

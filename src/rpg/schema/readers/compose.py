@@ -232,7 +232,13 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
         part = re.sub(r"\b[a-z]{2,}\b", lambda w: w.group(0).upper() if w.group(0).upper() in caps else w.group(0), part)
     if part and re.search(r"(?:[.;!]|,?\s+then|,?\s*\band)\s+(?:then\s+)?(?:put|place|move|set|add|bring)\s+(?:a|an|one|another|the)\s+"
                           r"(?:[a-z]+\s+)?(?:cube|block)\b(?!\s+(?:on|onto|atop|over|above)\b)"
-                          rf"|,?\s+then\s+(?:the\s+|a\s+)?(?:{COLOR_RE})\s+(?:cube|block)\s*$", part):
+                          # "..., then put green in the back left corner", "..., then the green one": a bare colour too (the
+                          # tower had taken green and gone to the corner whole, silently)
+                          rf"|(?:[.;!]|,?\s+then|,?\s*\band)\s+(?:then\s+)?(?:put|place|move|set|add|bring)\s+(?:the\s+)?(?:{COLOR_RE})"
+                          r"(?:\s+one)?\s*$"
+                          rf"|,?\s+then\s+(?:the\s+|a\s+)?(?:{COLOR_RE})\s+(?:cube|block|one)\s*$", part) or (
+            part and len(re.findall(r"\bthen\b", part)) == 1 and re.search(rf",?\s+then\s+(?:the\s+)?(?:{COLOR_RE})\s*$", part)
+            and re.search(rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:on|onto|atop|upon)\s+(?:the\s+)?(?:{COLOR_RE})\b", part)):
         return False  # "a tower of ... then put a brown cube in the back left corner": the place is the last cube's (it had
         # joined the tower; "stack four blue cubes into one tower and put a white cube in the front left corner" too)
     heads = _read_parts([part]) if m else None
