@@ -56,6 +56,7 @@ from rpg.schema.readers import (  # noqa: F401 (they register)
     temporal,
 )
 from rpg.schema.reading import (
+    COLOR_RE,
     MAX_INSTRUCTION_CHARS,
     MAX_RAW_CHARS,
     Features,
@@ -402,6 +403,30 @@ def parse(instruction: str, _framed: bool = False) -> TaskSchema:
     return schema
 
 
+_STACK_COMMAND_RE = re.compile(r"(?:^|[.;!?]\s*|,\s*|\band\s+|\bthen\s+)(?:(?:then|also|now|next)\s+)?stack\b(?!\s+(?:of|on)\b)")
+
+
+def _stacks_merged(f: Features, schema: TaskSchema) -> ParseError | None:
+    """A reading that makes one tower of the cubes of two stacking commands, each naming two cubes or more of its own
+    and placing none on another ("Stack red and blue. Stack green and yellow.": a tower of four had been read, its
+    order freed, silently): refused, since which cubes form which tower is said but not read."""
+    starts = [m.end() for m in _STACK_COMMAND_RE.finditer(f.text)]
+    if len(starts) < 2:
+        return None
+    parts = [f.text[a:b] for a, b in itertools.pairwise([*starts, len(f.text)])]
+    own = [set(re.findall(rf"\b(?:{COLOR_RE})\b", p)) for p in parts]
+    if sum(len(o) >= 2 and not re.search(r"\b(?:on|onto|atop|upon|above|under|below|it|that|them|top|bottom)\b", p)
+           for o, p in zip(own, parts, strict=True)) < 2:
+        return None
+    towers = [p for p in schema.goal_predicate().walk() if isinstance(p, Stack)]
+    colour = {a.name: a.color for a in schema.assets}
+    if any(sum(bool(o & {colour.get(n) for n in t.objects}) for o in own if len(o) >= 2) >= 2 for t in towers):
+        return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but each 'stack' there names its own "
+                          "cubes; say each tower in a sentence of its own with the word tower (e.g. \"Build a tower of red "
+                          "and blue. Build another tower of green and yellow.\"), or use --model")
+    return None
+
+
 def _read(instruction: str) -> TaskSchema:
     """``instruction`` read by the registered readers, the first whose reading accounts for every
     mention winning (see :func:`parse`, which reads frames and a stated start first)."""
@@ -432,7 +457,10 @@ def _read(instruction: str) -> TaskSchema:
                 except citations.UncitedConstraint as exc:
                     gap = ParseError(f"\"{f.original[:80]}\": {exc}; or use --model")
                 else:
-                    if not (re.search(r"\bin any order\b", f.text) and any(type(p) is Stack for p in read.goal_predicate().walk())):
+                    merged = _stacks_merged(f, read)
+                    if merged:
+                        gap = merged
+                    elif not (re.search(r"\bin any order\b", f.text) and any(type(p) is Stack for p in read.goal_predicate().walk())):
                         return read
                     # "a tower of red, green and blue, doesn't matter which order, and put yellow to the left of it": the
                     # order said free and the tower read in order (the clause relating it had kept its list's order)
