@@ -6927,3 +6927,21 @@ def test_two_stacking_commands_each_naming_its_cubes_make_two_towers(text):
     """One tower of all four had been read (its order freed), silently (found by this session's attack)."""
     towers = sorted(sorted(p.objects) for p in parse(text).goal_predicate().walk() if type(p).__name__ == "UnorderedStack")
     assert towers == [["blue", "red"], ["green", "yellow"]]
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Initially red is on blue with green on top. Put yellow on orange.", ["stack(orange,yellow)", "start:stack(blue,red,green)"]),
+    ("Initially the red cube sits on the blue cube with a green cube on top. Move the green cube onto the yellow patch.",
+     ["on_patch(green,patch:yellow)", "start:stack(blue,red,green)"]),
+    ("Start: a blue cube with the white cube on top of it. Put the white cube on the table.",
+     ["on_table(white)", "start:stack(blue,white)"]),
+])
+def test_a_start_chain_with_a_cube_on_top_puts_it_on_the_chain_s_top(text, expected):
+    """"red is on blue with green on top" had started blue, green, red (green on blue, the chain's bottom)."""
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected
+
+
+def test_a_start_chain_with_a_cube_on_top_of_it_is_refused():
+    """"it" may be either cube of the chain (it had been read as the bottom one, silently)."""
+    with pytest.raises(ParseError):
+        parse("Initially red is on blue with green on top of it. Put yellow on orange.")

@@ -235,7 +235,14 @@ def _counted_tower(m: re.Match) -> str:
     return f"a tower of {', '.join(colors)} from the {'top' if m.group('end') == 'top' else 'bottom'} up"
 
 
-_WITH_ON_TOP_RE = re.compile(rf"(?i)\b(?:an?\s+|the\s+)?(?P<bottom>{COLOR_RE})(?:\s+(?:cube|block))?\s+with\s+(?:the\s+|an?\s+)?"
+_CHAIN_WITH_TOP_RE = re.compile(
+    rf"(?i)\b(?P<a>{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:(?:is|sits|rests|stands|lies)\s+)?(?:stacked\s+)?(?:on\s+top\s+of|on|atop|upon)\s+"
+    rf"(?:the\s+|an?\s+)?(?P<b>{COLOR_RE})(?:\s+(?:cube|block))?\s+with\s+(?:the\s+|an?\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block))?\s+"
+    r"on\s+top\b(?!\s+of\b)")
+"""A start's chain with a cube on its top ("red is on blue with green on top"): green on red, the chain's top (the cube
+with another "on top" had been taken for blue, the chain's bottom: blue, green, red)."""
+
+_WITH_ON_TOP_RE = re.compile(rf"(?i)(?<!\bon\s)(?<!\bon\sthe\s)(?<!\bon\sa\s)(?<!\batop\s)(?<!\bof\s)(?<!\bof\sthe\s)\b(?:an?\s+|the\s+)?(?P<bottom>{COLOR_RE})(?:\s+(?:cube|block))?\s+with\s+(?:the\s+|an?\s+)?"
                              rf"(?P<top>{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:on\s+top(?:\s+of\s+it)?|on\s+it)\b")
 """A start's stack said as a cube with another on top ("blue cube with the white cube on top of it")."""
 
@@ -257,6 +264,7 @@ def _facts(content: str) -> list[tuple[str, ...]] | None:
     stacks: list[tuple[str, ...]] = []
     content = _WHICH_ON_RE.sub(" ", content)  # "white sits on black, which sits on gray": one chain
     content = _COUNTED_TOWER_RE.sub(_counted_tower, content)
+    content = _CHAIN_WITH_TOP_RE.sub(r"\g<a> on \g<b> and \g<c> on \g<a>", content)
     content = _WITH_ON_TOP_RE.sub(r"\g<top> on \g<bottom>", content)
     roles = [(m.group("c"), m.group("end")) for m in _ROLE_FACT_RE.finditer(content)]
     content = _ROLE_FACT_RE.sub(" , ", content)
