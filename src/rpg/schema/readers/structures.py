@@ -383,6 +383,13 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
     if base < 2:
         raise ParseError("a pyramid needs a base of at least 2")
     n = sum((base - k) ** (dims - 1) for k in range(base))
+    if not dims_m and not m and not listed and not from_total and named >= 3 and n > named and from_named is None \
+            and not re.search(rf"\b(?:{COLOR_RE})\s+(?:and\s+(?:{COLOR_RE})\s+)?(?:blocks|cubes|bricks|ones)\b", f.text):
+        # "a pyramid of red, blue and green with yellow on top": four cubes said one by one, which no pyramid has (a base
+        # of 3 had been built, its middle layer of colours nobody named)
+        raise ParseError(f"\"{f.original[:80]}\" names {named} cubes for a pyramid, and a pyramid of cubes, each layer "
+                         "one shorter, has 3, 6, 10 or 15; say its base (e.g. \"a pyramid with a base of 3\") and which cubes go "
+                         "where, or use --model")
     if n > C.MAX_OBJECTS:
         raise ParseError(f"a pyramid with base {base} needs {n} cubes; the most a task holds is {C.MAX_OBJECTS}")
     material = material_of(f)
