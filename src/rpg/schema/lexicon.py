@@ -1627,6 +1627,11 @@ before another relation ("right next to it", "right behind") only stresses that 
 REF_PREP = r"\b(of|on|onto|to|beside|behind|near|under|below|beneath|above|atop|by|from|alongside|against)\s+"
 
 
+PLACE_WORDS: frozenset[str] = frozenset({"left", "right", "front", "back", "top", "bottom", "middle", "center", "centre",
+                                        "side", "corner", "edge"})
+"""Words of a place, which a typo correction may not reach by cutting a longer word short ("righto" is not "right":
+:func:`rpg.schema.reading._normalize_words`)."""
+
 REGION_WORDS = {"rear": "back", "far": "back", "near": "front", "middle": "center", "centre": "center"}
 """Words for a place on the table -> the words of :data:`constants.REGION_NAMES`."""
 

@@ -86,10 +86,6 @@ def canon_color(word: str) -> str:
     return COLOR_ALIASES.get(word, word)
 
 
-_PLACE_WORDS = frozenset({"left", "right", "front", "back", "top", "bottom", "middle", "center", "centre", "side", "corner", "edge"})
-"""Words of a place, which a typo correction may not reach by cutting a longer word short (:func:`_normalize_words`)."""
-
-
 def _transposition(word: str) -> tuple[str] | None:
     """The one known word that ``word`` (a short typo) becomes by swapping two adjacent
     letters ("teh" -> "the", "rde" -> "red"), as a 1-tuple; None if none or several."""
@@ -1436,23 +1432,8 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
                                  "start with; say the order once, or use --model")
             text = text[:said_first.start()] + text[said_first.end():]  # said again: the list's first (it had been a 4th cube)
     chained = tower_chain(text)
-    after_re = r"\b(?:above|over|on|onto|atop|upon|on\s+top\s+of|below|under|beneath|underneath)\s+(?:it|that|this)\b"
-    said_after = max((re.findall(after_re, sentence) for sentence in re.split(r"[.!?;]", text)), key=len)
-    if chained == text and len(said_after) >= 2:  # (two in one sentence)  # "the tower: red at the bottom, blue above it, green above that, on the
-        # patch": cubes placed in turn on the one said before, with more around them (another reader had put each above
-        # the first cube and ordered them at will, silently)
-        raise ParseError(f"\"{original[:80]}\" places cubes in turn on the one said before "
-                         f"({', '.join(repr(w) for w in said_after[:2])}) with more said around them; say the tower from bottom to top in a sentence of "
-                         "its own (e.g. \"build a tower from bottom to top: red, blue, green\"), or use --model")
-    topped = re.search(rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:(?:goes|sits|is|stands|comes)\s+)?(?:on|at)\s+(?:the\s+)?(?:very\s+)?"
-                       r"top\s*,\s*(?:and\s+)?(?:next|left|right|behind|in|on|at|near|far|close|beside|between|by|away|toward|towards"
-                       r"|along|opposite|touching)\b", text)
-    if topped and re.search(rf"\b(?:on|onto|upon|atop)\s+(?:the\s+)?(?:{COLOR_RE})\b", text[:topped.start()]):
-        # "put red on blue, then green on top, next to yellow": the tower's top, and a place said after it of the cube or
-        # of the tower? (the top had been dropped, silently, and the place given to the cube alone)
-        raise ParseError(f"\"{original[:80]}\" puts a cube on top and says a place after it ('{topped.group(0)}'): of that "
-                         "cube or of the whole tower? Say the place in a sentence of its own (e.g. \"... Put the tower next to "
-                         "the yellow block.\"), or use --model")
+    if chained == text:
+        _refuse_unclear_chain(text, original)
     text = chained
     text = lexicon.rewrite(lexicon.TOP_DOWN_REWRITES, text)
     # "Make a tower. Top: red. Middle: green. Bottom: blue.": each role's cube, whatever order the roles are said in (the
@@ -1607,7 +1588,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
                                            if len(w) >= 4 else None)  # "purpel", "rigth": two letters swapped
         if match and lexicon.is_dictionary_word(w) and not w.startswith(match[0]):
             match = None  # a real word is never "corrected" into another ("bring" is not "ring"); "vertically" -> "vertical"
-        if match and match[0] in _PLACE_WORDS and w.startswith(match[0]) and w[len(match[0]):] not in ("", "s", "es", "ly", "ed", "d", "ing"):
+        if match and match[0] in lexicon.PLACE_WORDS and w.startswith(match[0]) and w[len(match[0]):] not in ("", "s", "es", "ly", "ed", "d", "ing"):
             match = None  # nor a word that only begins with a place word ("righto" is not "right": a place had been read)
         if match and w.endswith(match[0]) and w[:len(w) - len(match[0])] in ("un", "dis", "non", "re", "de", "mis"):
             match = None  # nor stripped of a prefix that changes it ("unstacking" is not "stacking", "restack" not "stack")
@@ -1929,6 +1910,35 @@ _CHAIN_RELATIVE = {"on": +1, "under": -1, "higher": +1, "lower": -1}
 def _count(word: str) -> int:
     """A count said in digits or a number word ("3", "three", "both")."""
     return int(word) if word.isdigit() else lexicon.NUMBER_WORDS[word]
+
+
+_AFTER_IT_RE = re.compile(r"\b(?:above|over|on|onto|atop|upon|on\s+top\s+of|below|under|beneath|underneath)\s+(?:it|that|this)\b")
+_TOPPED_THEN_PLACED_RE = re.compile(
+    rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:(?:goes|sits|is|stands|comes)\s+)?(?:on|at)\s+(?:the\s+)?(?:very\s+)?top\s*,\s*"
+    r"(?:and\s+)?(?:next|left|right|behind|in|on|at|near|far|close|beside|between|by|away|toward|towards|along|opposite"
+    r"|touching)\b")
+
+
+def _refuse_unclear_chain(text: str, original: str) -> None:
+    """Refuse a chain :func:`tower_chain` did not take whole that other readers would read silently wrong.
+
+    Raises:
+        ParseError: two cubes placed in turn on "it"/"that" in one sentence with more said around them ("the tower: red
+            at the bottom, blue above it, green above that, on the patch": another reader had put each above the first
+            cube and ordered them at will); a cube on top of a chain with a place said after it ("put red on blue, then
+            green on top, next to yellow": of the cube or the tower? the top had been dropped, the place given to the cube).
+    """
+    said_after = max((_AFTER_IT_RE.findall(sentence) for sentence in re.split(r"[.!?;]", text)), key=len)
+    if len(said_after) >= 2:
+        raise ParseError(f"\"{original[:80]}\" places cubes in turn on the one said before "
+                         f"({', '.join(repr(w) for w in said_after[:2])}) with more said around them; say the tower from "
+                         "bottom to top in a sentence of its own (e.g. \"build a tower from bottom to top: red, blue, green\"), "
+                         "or use --model")
+    topped = _TOPPED_THEN_PLACED_RE.search(text)
+    if topped and re.search(rf"\b(?:on|onto|upon|atop)\s+(?:the\s+)?(?:{COLOR_RE})\b", text[:topped.start()]):
+        raise ParseError(f"\"{original[:80]}\" puts a cube on top and says a place after it ('{topped.group(0)}'): of that "
+                         "cube or of the whole tower? Say the place in a sentence of its own (e.g. \"... Put the tower next to "
+                         "the yellow block.\"), or use --model")
 
 
 def tower_chain(text: str) -> str:
