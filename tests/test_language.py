@@ -5715,6 +5715,38 @@ def test_sentences_that_may_bear_on_the_goal_are_not_commentary(text):
 
 
 @pytest.mark.parametrize("text, expected", [
+    # a voice's sentence of its own world, with a verb of its own and nothing that may refer to the task (read sets'
+    # refusals, thirty-fourth session): its negation is that world's
+    ("Whistle! Everybody out of the pool and listen up: stack the red cube on the blue cube, nice and steady. "
+     "No running on deck!", ["stack(blue,red)"]),
+    ("Returns desk: please put the brown cube on the orange patch. No late fees today.", ["on_patch(brown,patch:orange)"]),
+    ("Stack the red block on the blue block. Stay safe out there.", ["stack(blue,red)"]),
+    ("Stack the red block on the blue block. Now bow out.", ["stack(blue,red)"]),
+])
+def test_a_voices_sentence_of_its_own_world_is_dropped(text, expected):
+    from rpg.schema.reading import normalize_words
+
+    assert sorted(meaning(parse(text))) == expected
+    assert normalize_words(text)[2]  # what was dropped is listed, not silently gone
+
+
+@pytest.mark.parametrize("text", [
+    "Stack the red block on the blue block. If there is room.",  # a condition
+    "Stack the red block on the blue block. Do not move.",  # a verb that changes a scene
+    "Stack the red block on the blue block. No touching.",  # contact between cubes
+    "Stack the red block on the blue block. No wobbling.",  # the tower's standing
+    "Stack the red block on the blue block. Don't hurry.",  # speed
+    "Stack the red block on the blue block. Never again.",  # a repetition
+    "Stack the red block on the blue block. Don't drop anything.",  # a pronoun for cubes
+    "Stack the red block on the blue block. Then go and dry off.",  # a further step
+    "Stack the red block on the blue block. Must be neighbours.",  # a requirement
+])
+def test_a_sentence_that_may_refer_to_the_task_is_no_voices_world(text):
+    with pytest.raises(BadInput):
+        parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
     # read development sets' refusals, twenty-seventh session
     ("The pink cube starts stacked on the black one. Unstack it and place it on the cyan patch.",
      ["on_patch(pink,patch:cyan)", "start:stack(black,pink)"]),

@@ -341,6 +341,40 @@ COMMENTARY_BLOCKING_KINDS: frozenset[str] = frozenset({"negation", "time", "quan
 commentary: each may bear on the goal ("Never twice.", "Under a golden sky."); an object, an action on no cube, a
 condition on a person or a question to one ("Serve with a smile.", "What do you do?") bears on none."""
 
+VOICE_SENTENCE_HAZARD_RE = re.compile(
+    r"\b(?:it|its|itself|they|them|their|theirs|those|these|this|that|everything|something|anything|nothing|each|every|all"
+    r"|both|either|neither|one|ones|rest|remaining|else|other|others|another|same|different|whole|entire|any|some|none"
+    r"|robot\w*|gripper|arm|camera|table|scene|task|goal|episode|state|result|outcome|done|complete\w*|finish\w*|end|ends"
+    r"|quick\w*|fast\w*|slow\w*|hurr\w*|rush\w*|seconds?|minutes?|hours?|within|timer|time|soon|immediately|until|till"
+    r"|again|once|twice|thrice|times|repeat\w*|more|less|fewer|most|least|many|much|several|few|only|dozen|extra|exactly"
+    r"|upside|sideways|diagonal\w*|flip\w*|rotat\w*|turn\w*|tilt\w*|fac(?:e|es|ed|ing)|vertical\w*|horizontal\w*|lean\w*"
+    r"|lying|lie|lay|flat|order\w*|sort\w*|revers\w*|backwards?|opposite|mirror\w*|invers\w*|alternat\w*|ascending"
+    r"|descending|alphabetic\w*|rainbow|gradient|first|second|third|last|next|previous\w*|earlier|usual|follow\w*|below"
+    r"|size|big\w*|small\w*|large\w*|tall\w*|tiny|huge|giant|height|colou?r\w*|shade\w*|hue\w*|shape\w*|form|pattern\w*"
+    r"|spiral|triangle\w*|cross|zigzag|diamond|star|heart|arrow|letter|word|spell\w*|example\w*|counter\w*|wrong|incorrect"
+    r"|bad|mistake\w*|error\w*|view\w*|perspective|north\w*|south\w*|east\w*|west\w*|clockwise|anticlockwise"
+    r"|counterclockwise|instead|rather|mean|meant|actually|oops|wait|correction|typo|undo|redo|reset|revert|return\w*"
+    r"|restor\w*|swap\w*|switch\w*|exchange\w*|then|after|afterwards?|later|finally|before|must|should|shall|need\w*"
+    r"|require\w*|ensure\w*|sure|want\w*|expect\w*|avoid\w*|prevent\w*|without|careful\w*|gentl\w*|neighbo\w*|adjacent"
+    r"|touch\w*|contact\w*|collisions?|collid\w*|gaps?|spac\w*|distance\w*|apart|together|away|close\w*|evenly|straight"
+    r"|align\w*|offset|askew|crooked|overhang\w*|stagger\w*|perched|precarious\w*|teeter\w*|kiss\w*|nestl\w*|snug\w*"
+    r"|wedged|level\w*|neat\w*|tight\w*|centred|centered|roof|lid|cap|crown|topped|fall\w*|fell|wobbl\w*|steady|stabl\w*"
+    r"|balanc\w*)\b")
+"""What keeps a sentence that names nothing of a goal from being dropped as a voice's own world
+(:func:`rpg.schema.reading._voice_sentence`: "No running on deck!", "Stay safe out there.") though it has a verb of its
+own: a pronoun or quantifier that may stand for the cubes or the task, the robot, the table, the task's end, time or
+speed, a repetition or quantity, a pose, spacing or contact, an order, a size, a colour, a shape, a judgement of an
+example, a viewpoint, a take-back, a change of the scene, a further step ("Then celebrate."), a requirement, a care or
+the structure's standing ("Must be neighbours.", "Avoid collisions.", "Needs a roof.", "No wobbling.").  Such a sentence may bear on the task ("Do it twice.",
+"Faster!", "Nothing else.", "Then reset."), so it stays, to be read or refused.  Negations, places and persistence
+("stay", "keep") are not listed: without one of these words they can only be of the voice's own world ("No running on
+deck!", "Stay safe out there.")."""
+
+VOICE_WORLD_VERBS_EXEMPT: frozenset[str] = frozenset({"stay", "remain", "keep"})
+"""Verbs of :data:`SCENE_CHANGING_VERBS` that a sentence of a voice's own world may hold ("Stay safe out there.", "Keep
+calm."): with nothing in the sentence they could act on (:data:`VOICE_SENTENCE_HAZARD_RE`) they persist a person, not a
+scene."""
+
 VOICE_LABEL_RE = re.compile(r"^\s*(?P<c>[^.!?:;()\"]{2,70}?)\s*:\s+(?=\S)")
 """A voice's label before a task, up to the text's first colon ("Site diary, day six: ...", "Runway-ready look: ...",
 "Swarm-season tip from the apiary: ..."): dropped by :func:`rpg.schema.reading.drop_voice_chunks` when

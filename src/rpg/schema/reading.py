@@ -219,6 +219,40 @@ def _commentary_sentence(sentence: str) -> bool:
     return not any(k in lexicon.COMMENTARY_BLOCKING_KINDS for k, _, _ in _inexpressible(low))
 
 
+_VOICE_WORLD_ASIDE_RE = re.compile(r"\b(?:not|no|never)\b")
+_AUXILIARY_LEMMAS = frozenset({"be", "have", "do", "can", "will", "shall", "may", "might", "must", "would", "could", "should"})
+
+
+def _voice_sentence(sentence: str) -> bool:
+    """Whether a sentence of a text that says its task elsewhere speaks of a voice's own world ("No running on deck!",
+    "Stay safe out there.", "Now bow out.", "Enjoy your stay."), dropped by :func:`drop_asides` like commentary
+    (:func:`_commentary_sentence`): a verb of its own, no word of a goal, count, colour, digit or place
+    (:data:`lexicon.TASK_CONTENT_RE`, :data:`lexicon.ASIDE_CONTENT_RE` but for a negation or condition, which is then of
+    that world), no verb that changes a scene (:data:`lexicon.SCENE_CHANGING_VERBS` but a person's persisting,
+    :data:`lexicon.VOICE_WORLD_VERBS_EXEMPT`), no take-back (:data:`lexicon.RETRACTION_RE`) and nothing that may refer to
+    the task or bear on how it is done (:data:`lexicon.VOICE_SENTENCE_HAZARD_RE`); a domain refusal of it may only be a
+    negation, an object, an action or a question (those of that world)."""
+    low = sentence.lower()
+    words = re.findall(r"[a-z][a-z'\-]*", low)
+    if not words or re.search(r"\d", low) or lexicon.TASK_CONTENT_RE.search(re.sub(r"\bon\b", " ", low)) \
+            or lexicon.GOAL_THING_PREFIX_RE.search(low) \
+            or lexicon.ASIDE_CONTENT_RE.search(_VOICE_WORLD_ASIDE_RE.sub(" ", low)) or lexicon.VOICE_SENTENCE_HAZARD_RE.search(low) \
+            or lexicon.RETRACTION_RE.search(low):
+        return False
+    verb = False
+    for w in words:
+        for part in w.split("-"):
+            base = part.removesuffix("'s")
+            lemmas = {base, *lexicon.lemmas(base)}
+            if lemmas & lexicon.SCENE_CHANGING_VERBS and not lemmas & lexicon.VOICE_WORLD_VERBS_EXEMPT:
+                return False
+            if base in COLORS or base in lexicon.colour_names():
+                return False
+            verb = verb or ("VERB" in lexicon.parts_of_speech(base) and base not in lexicon.IDLE_WORDS
+                            and not lemmas & _AUXILIARY_LEMMAS)
+    return verb and all(k in ("negation", "object", "action", "question") for k, _, _ in _inexpressible(low))
+
+
 def _frame_prefix(words: str) -> bool:
     """Whether the words before a task's imperative frame it for a person (:data:`lexicon.FRAME_PREFIX_RE`): words that
     name the task, address a person or say it is needed (:data:`lexicon.FRAME_NOUN_RE`), nothing of a goal, no hazard
@@ -428,7 +462,7 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
     sentences = re.split(r"(?<=[.!?])\s+", kept)
     framing = [s for i, s in enumerate(sentences) if not s.endswith("!") and (
         _framing_sentence(s) or _evaluation_report(s) or _title_heading(s, " ".join(sentences[i + 1:])))]
-    task = [s for s in sentences if s not in framing and not _commentary_sentence(s)]
+    task = [s for s in sentences if s not in framing and not _commentary_sentence(s) and not _voice_sentence(s)]
     if task and any(lexicon.GOAL_THING_RE.search(s.lower()) for s in task):  # a voice's commentary around a task said
         framing = [s for s in sentences if s not in task]
     if framing and len(framing) < len(sentences):
