@@ -5722,6 +5722,7 @@ def test_sentences_that_may_bear_on_the_goal_are_not_commentary(text):
     ("Returns desk: please put the brown cube on the orange patch. No late fees today.", ["on_patch(brown,patch:orange)"]),
     ("Stack the red block on the blue block. Stay safe out there.", ["stack(blue,red)"]),
     ("Stack the red block on the blue block. Now bow out.", ["stack(blue,red)"]),
+    ("Stack the red block on the blue block. Enjoy your stay.", ["stack(blue,red)"]),  # the listener's own thing
 ])
 def test_a_voices_sentence_of_its_own_world_is_dropped(text, expected):
     from rpg.schema.reading import normalize_words
@@ -5740,6 +5741,7 @@ def test_a_voices_sentence_of_its_own_world_is_dropped(text, expected):
     "Stack the red block on the blue block. Don't drop anything.",  # a pronoun for cubes
     "Stack the red block on the blue block. Then go and dry off.",  # a further step
     "Stack the red block on the blue block. Must be neighbours.",  # a requirement
+    "Stack the red block on the blue block. Pick up a towel.",  # an imperative with a thing of the scene
 ])
 def test_a_sentence_that_may_refer_to_the_task_is_no_voices_world(text):
     with pytest.raises(BadInput):
