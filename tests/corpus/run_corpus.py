@@ -80,6 +80,7 @@ STRANGER_SETS = {
     "stranger43": ("stranger43.yaml", "STRANGER set 43 (stranger43.yaml, transfer measure of the thirty-second session: aggregates only; abstract classes reported by a helper mid-session)"),
     "stranger44": ("stranger44.yaml", "STRANGER set 44 (stranger44.yaml, written during the thirty-second session, measured at its end: aggregates only)"),
     "stranger45": ("stranger45.yaml", "STRANGER set 45 (stranger45.yaml, written at the start of the thirty-third session: aggregates only)"),
+    "stranger46": ("stranger46.yaml", "STRANGER set 46 (stranger46.yaml, written at the start of the thirty-fourth session: aggregates only)"),
 }
 SPLITS = HERE / "splits.yaml"
 
