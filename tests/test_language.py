@@ -5723,6 +5723,8 @@ def test_sentences_that_may_bear_on_the_goal_are_not_commentary(text):
     ("Stack the red block on the blue block. Stay safe out there.", ["stack(blue,red)"]),
     ("Stack the red block on the blue block. Now bow out.", ["stack(blue,red)"]),
     ("Stack the red block on the blue block. Enjoy your stay.", ["stack(blue,red)"]),  # the listener's own thing
+    ("Stack the red block on the blue block. Mind the gap.", ["stack(blue,red)"]),  # a verb of regard
+    ("Stack the red block on the blue block. Leave no trace.", ["stack(blue,red)"]),
 ])
 def test_a_voices_sentence_of_its_own_world_is_dropped(text, expected):
     from rpg.schema.reading import normalize_words
@@ -5742,6 +5744,7 @@ def test_a_voices_sentence_of_its_own_world_is_dropped(text, expected):
     "Stack the red block on the blue block. Then go and dry off.",  # a further step
     "Stack the red block on the blue block. Must be neighbours.",  # a requirement
     "Stack the red block on the blue block. Pick up a towel.",  # an imperative with a thing of the scene
+    "Stack the red block on the blue block. Now leave the room.",
 ])
 def test_a_sentence_that_may_refer_to_the_task_is_no_voices_world(text):
     with pytest.raises(BadInput):

@@ -370,10 +370,18 @@ the structure's standing ("Must be neighbours.", "Avoid collisions.", "Needs a r
 ("stay", "keep") are not listed: without one of these words they can only be of the voice's own world ("No running on
 deck!", "Stay safe out there.")."""
 
-VOICE_WORLD_VERBS_EXEMPT: frozenset[str] = frozenset({"stay", "remain", "keep"})
+VOICE_WORLD_VERBS_EXEMPT: frozenset[str] = frozenset({"stay", "remain", "keep", "leave"})
 """Verbs of :data:`SCENE_CHANGING_VERBS` that a sentence of a voice's own world may hold ("Stay safe out there.", "Keep
-calm."): with nothing in the sentence they could act on (:data:`VOICE_SENTENCE_HAZARD_RE`) they persist a person, not a
-scene."""
+calm.", "Leave no trace."): with nothing in the sentence they could act on (:data:`VOICE_SENTENCE_HAZARD_RE`) they persist
+a person, not a scene."""
+
+REGARD_VERBS: frozenset[str] = frozenset("""
+enjoy mind heed watch love like bless thank thanks remember consider imagine respect trust welcome excuse pardon forgive
+believe know hope wish mark note
+""".split())
+"""Verbs of attention, feeling or courtesy, which act on no thing: an imperative of a voice's own world with one of them
+and a thing ("Mind the gap.", "Enjoy the park!") asks nothing of the scene (:func:`rpg.schema.reading._voice_sentence`),
+unlike an imperative on a thing ("Wipe the whiteboard.")."""
 
 VOICE_LABEL_RE = re.compile(r"^\s*(?P<c>[^.!?:;()\"]{2,70}?)\s*:\s+(?=\S)")
 """A voice's label before a task, up to the text's first colon ("Site diary, day six: ...", "Runway-ready look: ...",

@@ -222,6 +222,7 @@ def _commentary_sentence(sentence: str) -> bool:
 _VOICE_WORLD_ASIDE_RE = re.compile(r"\b(?:not|no|never)\b")
 _DEMAND_DETERMINERS = frozenset({"the", "a", "an", "this", "that", "these", "those", "some", "any", "every", "each", "its",
                                   "their"})
+_OPENING_FILLERS = frozenset({"and", "so", "now", "please", "just", "oh", "well", "then", "go", "come"})
 _PARTICLES = frozenset({"up", "down", "out", "off", "in", "on", "over", "away", "back"})
 _AUXILIARY_LEMMAS = frozenset({"be", "have", "do", "can", "will", "shall", "may", "might", "must", "would", "could", "should"})
 
@@ -235,8 +236,8 @@ def _voice_sentence(sentence: str) -> bool:
     :data:`lexicon.VOICE_WORLD_VERBS_EXEMPT`), no take-back (:data:`lexicon.RETRACTION_RE`) and nothing that may refer to
     the task or bear on how it is done (:data:`lexicon.VOICE_SENTENCE_HAZARD_RE`); a domain refusal of it may only be a
     negation, an object, an action or a question (those of that world).  An imperative with a thing of its own ("Wipe the
-    whiteboard.", "Pick up a towel.") demands something of the scene and stays; a person's own ("Enjoy your stay.") is
-    that world's."""
+    whiteboard.", "Pick up a towel.") demands something of the scene and stays; a person's own thing ("Enjoy your stay.")
+    or a verb of regard (:data:`lexicon.REGARD_VERBS`: "Mind the gap.") is that world's."""
     low = sentence.lower()
     words = re.findall(r"[a-z][a-z'\-]*", low)
     if not words or re.search(r"\d", low) or lexicon.TASK_CONTENT_RE.search(re.sub(r"\bon\b", " ", low)) \
@@ -244,8 +245,9 @@ def _voice_sentence(sentence: str) -> bool:
             or lexicon.ASIDE_CONTENT_RE.search(_VOICE_WORLD_ASIDE_RE.sub(" ", low)) or lexicon.VOICE_SENTENCE_HAZARD_RE.search(low) \
             or lexicon.RETRACTION_RE.search(low):
         return False
-    opening = [w for w in words if w not in lexicon.IDLE_WORDS and w not in ("and", "so")][:3]
-    if len(opening) >= 2 and "VERB" in lexicon.parts_of_speech(opening[0]) and not low.rstrip().endswith("?") and (
+    opening = list(itertools.dropwhile(lambda w: w in _OPENING_FILLERS, words))[:3]
+    if len(opening) >= 2 and "VERB" in lexicon.parts_of_speech(opening[0]) and not low.rstrip().endswith("?") \
+            and not {opening[0], *lexicon.lemmas(opening[0])} & lexicon.REGARD_VERBS and (
             opening[1] in _DEMAND_DETERMINERS or (opening[1] in _PARTICLES and opening[2:] and opening[2] in _DEMAND_DETERMINERS)):
         return False  # "Wipe the whiteboard.", "Pick up a towel.": a demand on something of the scene, not a person's world
     verb = False
