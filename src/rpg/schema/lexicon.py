@@ -840,7 +840,10 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "red\")"),
     # "now red is on blue. put ...", "red is currently on blue": the scene now (it had become part of the goal)
     ("reference", rf"\b(?:right\s+)?now\s*,?\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:is|sits|stands|lies|rests)\b"
-                  r"|\b(?:is|are|sits|stands|lies|rests)\s+(?:currently|presently|at\s+the\s+moment)\b|\bcurrently\b",
+                  r"|\b(?:is|are|sits|stands|lies|rests)\s+(?:currently|presently|at\s+the\s+moment)\b|\bcurrently\b"
+                  # "Right now there is red on blue. Stack ...": a start no reader took (it had become part of the goal)
+                  r"|^\s*(?:(?:right\s+)?now|at\s+the\s+moment|at\s+present)\s*,?\s+there(?:'s|\s+is|\s+are)\b"
+                  r"|^\s*there(?:'s|\s+is|\s+are)\s+(?:now|currently|at\s+the\s+moment|at\s+present)\b",
      "describes the scene now (currently, now ... is), which refers to where cubes stand, not where they must end up; "
      "say the start as \"Initially the red cube is on the blue cube.\" and then the goal"),
     # "a 0-block tower of red on yellow": a structure of no cubes (the count had been dropped)

@@ -448,6 +448,10 @@ fact of stacks (:func:`_facts`).  Before another command the scene now stays ref
 goal?)."""
 
 
+_THERE_IS_RE = re.compile(r"(?i)^\s*there(?:'s|\s+is|\s+are|\s+stands)\s+")
+"""What says a fact is there now ("there is a tower of ..."), taken off the fact the scene-now reader reads."""
+
+
 def _there_is_start(m: re.Match) -> str:
     top = m.group("top") or m.group("top2")
     onto_top = m.group("moved") and re.match(rf"(?i)\s+(?:cube|block)\s+(?:on\s+top\s+of|onto|on)\s+(?:it|the\s+{re.escape(top)})"
@@ -484,8 +488,10 @@ def split(instruction: str) -> InitialScene | None:
     said_now = _NOW_THEN_UNDONE_RE.match(now) if now != instruction.strip() else None
     started = THERE_IS_START_RE.sub(_there_is_start, now)
     instruction = started if started != now else THERE_IS_START_RE.sub(_there_is_start, instruction.strip())
-    if started == now and said_now and _facts(said_now.group("fact")):  # "Currently white sits on black, which sits on
-        instruction = f"Initially {now}"  # gray. Unstack the whole tower ...": stacks said now, every word a fact, then undone
+    there = _THERE_IS_RE.sub("", said_now.group("fact")) if said_now else ""  # "Currently there is a tower of ...": the
+    if started == now and said_now and _facts(there):  # tower "Currently white sits on black, which sits on gray. Unstack
+        instruction = f"Initially {there}{now[said_now.end('fact'):]}"  # the whole tower ...": stacks said now, every word a
+        # fact, then undone
     instruction = FROM_START_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     instruction = FROM_STRUCTURE_RE.sub(_from_structure, instruction.strip())
     undone = UNSTACK_SAID_RE.match(instruction.strip())
