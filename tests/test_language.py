@@ -323,6 +323,9 @@ def test_plural_groups_that_are_read(text, expected):
 @pytest.mark.parametrize("text,expected", [
     # counted colour groups said together keep each group's count (issue 30 item 4)
     ("Put 2 red blocks and 2 blue blocks in a row.", ["line(blue,blue,red,red)"]),
+    # with "the" before each group (it had been refused: the second group's count was lost)
+    ("Put the two yellow cubes and the two black cubes in a row, any order.", ["line(black,black,yellow,yellow)"]),
+    ("Put the two yellow cubes and the black cube in a row.", ["line(black,yellow,yellow)"]),
     ("Make a line of 3 red and 2 blue blocks", ["line(blue,blue,red,red,red)"]),
     ("Put 3 red and 3 blue blocks in a circle.", ["circle(blue,blue,blue,red,red,red)"]),
     ("Make a 2 by 2 grid of 2 red and 2 blue blocks", ["grid(2x2:blue,blue,red,red)"]),

@@ -29,10 +29,11 @@ from rpg.schema.model import RepairRecord
 from rpg.schema.reading import Features, ParseError, canon_color
 
 COUNTED_GROUPS_RE = re.compile(
-    rf"\b(\d+)\s+({COLOR_RE})(?:\s+(?:blocks?|cubes?))?((?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:\d+|an?)\s+(?:{COLOR_RE})"
+    rf"\b(\d+)\s+({COLOR_RE})(?:\s+(?:blocks?|cubes?))?((?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:(?:the\s+)?(?:\d+|an?)|the(?=\s+(?:{COLOR_RE})\s+(?:block|cube)\b))\s+(?:{COLOR_RE})"
     rf"(?:\s+(?:blocks?|cubes?))?)+(?!\s+(?:goal\s+)?patch)")
 """Counted colour groups said together: "2 red blocks and 2 blue blocks", "3 red, 3 green and 3 blue cubes",
-"2 cyan cubes and a purple cube" (a later group's "a" is one)."""
+"2 cyan cubes and a purple cube" (a later group's "a" is one), "the 2 yellow cubes and the 2 black cubes", "the 2 yellow cubes and the black cube" (a later group's "the ... cube"
+is one)."""
 
 
 def counted_groups(f: Features) -> list[tuple[int, str]]:
@@ -41,7 +42,7 @@ def counted_groups(f: Features) -> list[tuple[int, str]]:
     m = COUNTED_GROUPS_RE.search(f.text)
     if m is None:
         return []
-    return [(int(n) if n.isdigit() else 1, canon_color(c)) for n, c in re.findall(rf"\b(\d+|an?)\s+({COLOR_RE})\b", m.group(0))]
+    return [(int(n) if n.isdigit() else 1, canon_color(c)) for n, c in re.findall(rf"\b(\d+|an?|the)\s+({COLOR_RE})\b", m.group(0))]
 
 
 def stated_count(f: Features, nouns: str = "block|cube|box|piece|object", default: int | None = None) -> int | None:
