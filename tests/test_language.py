@@ -3125,6 +3125,10 @@ def test_must_refuse_texts_are_refused_for_their_reason(text, why):
     # label cubes given their places in a tower (the bare labels had been dropped and the tower built of coloured cubes)
     ("Build a two-cube tower: 9 at the bottom, 0 on top.", ["stack(9,0)"]),
     ("Stack the digits so that 1 is at the bottom and 3 is on top, with 2 in between.", ["stack(1,2,3)"]),
+    # said in turn from the base (had been refused: the labels were lost and two coloured cubes built)
+    ("Build a tower of number blocks: 7 at the bottom, then 2, then 9.", ["stack(7,2,9)"]),
+    ("Build a tower of number blocks: 1 at the bottom, then 2, then 3.", ["stack(1,2,3)"]),  # (a fourth digit had been added)
+    ("Build a tower of letter cubes: A at the bottom, then B, then C.", ["stack(A,B,C)"]),
     ("Stack the number cubes with 1 at the bottom, 2 in the middle and 3 on top.", ["stack(1,2,3)"]),
     ("Stack the letters with A on top and C at the bottom, B in the middle.", ["stack(C,B,A)"]),  # had been @center
     ("Stack the digit cubes 1, 2, 3 and 4 into one tower, 4 at the bottom and 1 on top.", ["stack(4,3,2,1)"]),
@@ -5145,8 +5149,8 @@ def test_layers_shared_by_a_colour_starts_taken_off_or_topped_and_episode_ends(t
     ("Build the same tower you built last time.", "earlier"),
     ("Make the same row we made yesterday.", "earlier"),
     ("Initially red is stacked on yellow. Swap them so yellow is on blue.", None),
-    # a fourth digit had been added to the tower ('1 at the bottom, then 2, then 3' read as a sorted tower of the default 4)
-    ("Build a tower of number blocks: 1 at the bottom, then 2, then 3.", None),
+    # a made-up red cube under the digit 1 cube ('1 block' said of a tower of digit blocks: the tower's cubes are those listed)
+    ("build a tower of digit blocks from bottom to top: the digit 1 block, the digit 2 block.", None),
 ])
 def test_counts_exactly_said_one_cube_in_two_places_and_earlier_structures_are_refused(text, why):
     with pytest.raises(ParseError) as err:

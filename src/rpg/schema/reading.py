@@ -1152,6 +1152,31 @@ LABEL_ROLE_RE = re.compile(r"(?<![\w.'\-])(?:(?:the\s+)?(?:digit|number|letter)\
 _ROLE_RANK = {"bottom": 0, "base": 0, "middle": 1, "between": 1, "top": 2}
 
 
+_LABEL_ITEM = r"(?:(?:the\s+)?(?:digit|number|letter)\s+[a-z0-9]|\d|[A-Z])(?:\s+(?:cube|block))?"
+LABEL_TOWER_STEPS_RE = re.compile(
+    rf"(?<![\w.'\-])(?P<first>{_LABEL_ITEM}|[a-z])\s+(?:is\s+|goes\s+)?(?:at|on)\s+the\s+(?:very\s+)?(?:bottom|base)\s*,?\s*"
+    rf"(?P<rest>(?:and\s+)?then\s+(?:the\s+)?{_LABEL_ITEM}(?:\s*,?\s*(?:and\s+)?then\s+(?:the\s+)?{_LABEL_ITEM})*)"
+    r"(?:\s+(?:on\s+top|at\s+the\s+(?:very\s+)?top))?(?![\w'])")
+"""A tower's label cubes said in turn from its base ("7 at the bottom, then 2, then 9", "A at the bottom, then B, then C
+on top"; a first letter may be lower-cased there, "a at the bottom, then the letter b block"): the order from the bottom
+(the first label had been lost, or the tower built of coloured cubes)."""
+
+
+def _label_tower_steps(text: str) -> str:
+    """``text`` with a tower's label cubes said in turn from its base (:data:`LABEL_TOWER_STEPS_RE`) written as the order
+    from the bottom ("... from bottom to top: digit 7, digit 2, digit 9"), for :func:`_label_tower_roles`'s readers."""
+    m = LABEL_TOWER_STEPS_RE.search(text)
+    if m is None or not re.search(r"\b(?:stack\w*|towers?|columns?)\b", text[:m.start()]):
+        return text
+    items = [m.group("first")] + re.split(r"\s*,?\s*(?:and\s+)?then\s+", m.group("rest"))[1:]
+    labels = [re.sub(r"^(?:the\s+)?(?:(?:digit|number|letter)\s+)?|\s+(?:cube|block)$", "", it.strip()) for it in items]
+    if re.fullmatch(r"[a-z]", m.group("first")) and not all(lab.isalpha() for lab in labels[1:]):
+        return text  # a lower-case letter first (the text is lower-cased but for labels): a letter only among letters
+    order = ", ".join(("digit " if lab.isdigit() else "letter ") + lab.lower() for lab in labels)
+    head = re.sub(r"\s*[:,]\s*$", "", text[:m.start()])
+    return f"{head} from bottom to top: {order}{text[m.end():]}"
+
+
 def _label_tower_roles(text: str) -> str:
     """A tower's label cubes said by their places ("a two-cube tower: 9 at the bottom, 0 on top",
     "stack the digits so that 1 is at the bottom and 3 is on top, with 2 in between") written as
@@ -1440,7 +1465,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
         text = lexicon.rewrite(lexicon.WALL_ROW_REWRITES, text)
         text = lexicon.WALL_LAYER_ROLE_RE.sub(lambda m: f"{m.group('where')} layer {m.group('c')}", text)
         text = lexicon.PER_LAYER_RE.sub(_per_layer, text)
-    text = _label_tower_roles(text)
+    text = _label_tower_roles(_label_tower_steps(text))
     text = lexicon.rewrite(lexicon.WORD_ORDER_REWRITES, text)
     unread = re.search(rf"\bso\s+(?:that\s+)?the\s+(?:tower|stack)\s+(?:is|reads|has|becomes|looks|goes|ends)\b[^.;]*\b(?:{COLOR_RE})\b[^.;]*", text)
     if unread and not lexicon.RESTATED_TOWER_RE.search(text):

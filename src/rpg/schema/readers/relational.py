@@ -399,9 +399,9 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         f = Features(said, f.original, features_colors(said), f.quoted)
         ms = [m for m in mentions_in(said) if not m.patch and not m.ref and (m.color, m.label) not in r.subjects]
         if any(m.color or m.label for m in ms) and not re.search(r"\b(?:but|except|besides|other\s+than|apart\s+from)\b", said):
-            # "stack the cubes from bottom to top: digit 1, digit 2, digit 3": "the cubes" are those listed (a red cube had
-            # been made up for it); not "all cubes but the white ones"
-            ms = [m for m in ms if m.color or m.label or not re.search(r"\bthe\s+(?:(?:digit|number|letter)\s+)?(?:cubes|blocks)$",
+            # "stack the cubes from bottom to top: digit 1, digit 2, digit 3", "a tower of digit blocks ...: the digit 1
+            # block, ...": "the cubes" are those listed (a red cube had been made up for it); not "all cubes but the white ones"
+            ms = [m for m in ms if m.color or m.label or not re.search(r"\b(?:the|of)\s+(?:(?:digit|number|letter)\s+)?(?:cubes|blocks)$",
                                                                              said[:m.end])]
         n = stated_count(f, default=None) or (max(m.count for m in ms) if ms else 2)
         n = max(n, 2)
