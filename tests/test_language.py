@@ -4421,6 +4421,11 @@ def test_three_piles_of_one_colour_take_any_split():
      ["line[left_to_right](white,white,black,white,white)"]),
     ("the leftmost cube in the row should be yellow, then green, then pink on the far right",
      ["line[left_to_right](yellow,green,pink)"]),
+    # the third cube said beside the end cube said before it (no task had been found)
+    ("Put the orange block at the right, the pink block left of it and the gray block at the far left, all in one row.",
+     ["line[left_to_right](gray,pink,orange)"]),
+    ("Put the red cube at the right end of a row, the yellow cube to its left, and the green cube at the left end.",
+     ["line[left_to_right](green,yellow,red)"]),
     # a cube named by no colour takes one its clause gives no other cube (it had been a second red cube)
     ("Put a block between the red block and the green block.", ["between(blue;green,red)"]),
 ])
@@ -4432,6 +4437,7 @@ def test_a_row_said_by_its_ends_and_middle_and_an_unnamed_cube_beside_named_ones
     "make a row of five blocks: purple on the far left, cyan on the far right, and two gray blocks in between",  # 4 said
     "the leftmost cube in the row should be yellow, then green, then pink on the far left",  # pink at both ends
     "a row of four cubes with the black cube in the middle and the others white",  # an even row has no middle cube
+    "Put the red cube at the left end of a row, the yellow cube to its left, and the green cube at the right end.",  # no place
 ])
 def test_a_row_whose_roles_do_not_add_up_is_refused(text):
     with pytest.raises(ParseError):

@@ -803,6 +803,37 @@ _START_END_RE = re.compile(rf"\b(?P<w>start(?:s|ing)?|begin(?:s|ning)?|end(?:s|i
 ends, when the words say which way the line runs."""
 
 
+_BESIDE_END_RE = re.compile(rf"\b(?P<c>{COLOR_RE})(?:\s+(?:block|cube|one))?\s+(?:(?:is|goes|sits|stands)\s+)?"
+                            r"(?:(?:to\s+the\s+|on\s+the\s+)?(?P<side>left|right)\s+of\s+it|to\s+its\s+(?P<side2>left|right)"
+                            r"|(?:next\s+to|beside)\s+it)\b")
+"""The third cube of a three-cube line said beside the end cube said just before it ("the orange block at the right, the
+pink block left of it and the gray block at the far left"): the middle, when the other two hold the ends."""
+
+
+def _beside_an_end(f: Features, place: dict[str, str], colors: list[str]) -> dict[str, str]:
+    """``place`` with the middle of a three-cube line given to the cube said beside an end cube (:data:`_BESIDE_END_RE`),
+    when the other two hold both ends and the side said points into the line from the cube "it" stands for.
+
+    Raises:
+        ParseError: the side said points out of the line ("the red cube at the left end, the blue cube left of it")."""
+    beside = _BESIDE_END_RE.search(f.text)
+    if not beside or len(colors) != 3 or {"left", "right"} - set(place) or "middle" in place:
+        return place
+    c = canon_color(beside.group("c"))
+    before = [m for m in _END_ROLE_RE.finditer(f.text[:beside.start()])]
+    if c in place.values() or not before:
+        return place
+    it = canon_color(before[-1].group("c"))
+    end = next((side for side, col in place.items() if col == it), None)
+    side = beside.group("side") or beside.group("side2")
+    if end is None:
+        return place
+    if side and side == end:
+        raise ParseError(f"\"{f.original[:80]}\" puts the {c} cube {side} of the {it} cube at the {end} end of the line: "
+                         "no place is there; say each cube's place once, or use --model")
+    return {**place, "middle": c}
+
+
 def _order_by_end_roles(f: Features) -> list[str] | None:
     """The colours of a line of distinct colours from left to right, when its words put cubes at
     its ends and middle so that every place is fixed ("a row of red, green and blue with red on
@@ -826,6 +857,7 @@ def _order_by_end_roles(f: Features) -> list[str] | None:
                              "(say each cube's place once: \"red on the left, green in the middle, blue on the right\"), "
                              "or use --model")
         place[side] = c
+    place = _beside_an_end(f, place, colors)
     if not ({"left", "right"} & set(place)) or (len(colors) == 2 and "middle" in place):
         return None
     if not listed and set(place.values()) != set(colors):
@@ -916,7 +948,10 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
     shape = re.search(r"\b(?:in|into|as)\s+(?:a|an|the)\s+([a-z]+)\s+(?:shape|pattern|formation)\b", f.text)
     if shape and shape.group(1) not in ("line", "row", "straight", "linear", "horizontal", "single"):
         return False  # "in a plus shape": a shape the parser does not build
-    if not order and not labels and len(f.colors) >= 2 and re.search(r"\b(?:left|right) of\b|\bin front of\b|\bbehind\b", f.text):
+    pairwise = re.search(r"\b(?:left|right) of\b(?!\s+it\b)|\bin front of\b|\bbehind\b", f.text)
+    beside_end = re.search(r"\b(?:left|right) of\s+it\b", f.text)  # "..., the pink block left of it and ...": a line's
+    # middle only beside an end cube of a line said by its ends (_beside_an_end)
+    if not order and not labels and len(f.colors) >= 2 and (pairwise or (beside_end and not _order_by_end_roles(f))):
         return False  # "so that red is left of green": pairwise relations (recognize_relational)
     if not is_line or f.has("stack", "stacks", "tower", "towers", "on top"):
         return False
