@@ -6799,11 +6799,22 @@ def test_a_far_end_that_contradicts_them_with_one_cube_and_a_means_outside_the_d
     ("Set a cyan cube on top of two stacked red cubes.", ["stack(red,red,cyan)"]),  # (it had been silently stack(red,cyan))
     ("Put the white block onto three blue blocks stacked together.", ["stack(blue,blue,blue,white)"]),
     ("Set a cyan cube under two stacked red cubes.", ["stack(cyan,red,red)"]),  # (a hostile helper's: a red had been dropped)
+    # said as the goal, with no verb, or of a tower (thirty-fourth session: a held-out set's silent error, a red dropped)
+    ("Goal: the cyan cube on top of two stacked red cubes.", ["stack(red,red,cyan)"]),
+    ("The cyan cube should end up on top of two stacked red cubes.", ["stack(red,red,cyan)"]),
+    ("Build a tower with the cyan cube on top of two stacked red cubes.", ["stack(red,red,cyan)"]),
+    ("Make a tower: cyan block on top of two stacked red blocks.", ["stack(red,red,cyan)"]),
 ])
 def test_a_cube_on_top_of_counted_stacked_cubes(text, expected):
     schema = check_feasibility(parse(text))
     assert sorted(meaning(schema)) == expected
     assert uncited(schema, text) == []
+
+
+def test_counted_stacked_cubes_the_reading_does_not_count_are_refused():
+    """'two stacked red cubes' counts red cubes: a reading with one red is refused, not compiled (it had been)."""
+    with pytest.raises(ParseError, match="2 stacked"):
+        parse("Put the blue cube next to the pink cube on top of two stacked red cubes.")
 
 
 @pytest.mark.parametrize("text", [

@@ -209,7 +209,7 @@ class UnaccountedMention(BadInput):
 def _count_re(colors: str) -> re.Pattern:
     return re.compile(
         rf"(?<![a-z'@])(?<!letter )(?<!digit )(?<!number )(?<!labeled )(?<!labelled )(?<!label )"
-        rf"(?P<n>\d+)\s+(?:(?:more|additional|extra|other|separate|of\s+the|of|identical|same)\s+)*"
+        rf"(?P<n>\d+)\s+(?:(?:more|additional|extra|other|separate|of\s+the|of|identical|same|stacked|piled|loose|spare)\s+)*"
         rf"(?P<colors>(?:(?:{colors})(?:\s*,\s*|\s+and\s+|\s+or\s+))*(?:{colors})\s+)?"
         rf"(?:(?!(?:with|of|on|in|to|for|from|and|or|by|at|the|a|an|than)\b)[a-z\-]+\s+){{0,2}}?{CUBE_NOUNS}\b"
         rf"|(?<![a-z'@])(?P<n3>\d+)\s+(?P<color3>{colors})\b(?!\s+(?:goal\s+)?patch)"

@@ -2351,9 +2351,11 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
                 r"(?!\s+of\b)"),  # "... and the pink block on top of each other": no order said; "... on top of the table": elsewhere
      lambda m: "build a tower from bottom to top: " + ", ".join([m.group(2)] * int(m.group(1)) + [m.group(3)]), True),
     # "set a cyan cube on top of two stacked red cubes", "... of two red cubes stacked together", "... under two stacked red
-    # cubes": the counted cubes a tower with that cube on top of it or under it (one of them had been dropped: silently a
-    # tower of two)
-    (re.compile(rf"\b(?:set|put|place|stack|add|slide)\s+(?:a|an|the|1)\s+({COLOR_RE})\s+(?:block|cube|brick)\s+"
+    # cubes", "Goal: the cyan cube on top of two stacked red cubes", "a tower with ...": the counted cubes a tower with that
+    # cube on top of it or under it (one of them had been dropped: silently a tower of two)
+    (re.compile(rf"(?:\b(?:build|make|create|form)\s+a\s+(?:{TOWER_NOUNS})(?:\s+with\s+|\s*:\s*)|\b(?:set|put|place|stack|add|slide)\s+|(?<![\w\s])\s*|^)"
+                rf"(?:(?:a|an|the|1)\s+)?({COLOR_RE})(?:\s+(?:block|cube|brick))?\s+"
+                r"(?:(?:is|goes|sits|stands|rests|(?:should|must|will)\s+(?:be|sit|stand|end\s+up)|ends\s+up)\s+)?"
                 r"(?:(?P<on>on\s+top\s+of|onto|on|atop)|under(?:neath)?|beneath|below)\s+"
                 rf"(?:the\s+)?(\d+)\s+(?:stacked\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)|({COLOR_RE})\s+(?:blocks|cubes|bricks)\s+stacked"
                 r"(?:\s+(?:together|up|on\s+(?:top\s+of\s+)?each\s+other|one\s+on\s+(?:top\s+of\s+)?the\s+other))?)\b"),
