@@ -5738,6 +5738,9 @@ def test_sentences_that_may_bear_on_the_goal_are_not_commentary(text):
     ("Stack the red block on the blue block. Enjoy your stay.", ["stack(blue,red)"]),  # the listener's own thing
     ("Stack the red block on the blue block. Mind the gap.", ["stack(blue,red)"]),  # a verb of regard
     ("Stack the red block on the blue block. Leave no trace.", ["stack(blue,red)"]),
+    # told by the speaker of themselves: its time is the speaker's
+    ("Stack the red block on the blue block. I'll see you later.", ["stack(blue,red)"]),
+    ("Stack the red block on the blue block. My train leaves soon.", ["stack(blue,red)"]),
 ])
 def test_a_voices_sentence_of_its_own_world_is_dropped(text, expected):
     from rpg.schema.reading import normalize_words
@@ -5758,6 +5761,9 @@ def test_a_voices_sentence_of_its_own_world_is_dropped(text, expected):
     "Stack the red block on the blue block. Must be neighbours.",  # a requirement
     "Stack the red block on the blue block. Pick up a towel.",  # an imperative with a thing of the scene
     "Stack the red block on the blue block. Now leave the room.",
+    "Stack the red block on the blue block. I need it done quickly.",  # the speaker's wish of the task ("it")
+    "Stack the red block on the blue block. I'll check after ten seconds.",  # a time said in a number
+    "Stack the red block on the blue block. You have until noon.",  # the listener's time, not the speaker's
 ])
 def test_a_sentence_that_may_refer_to_the_task_is_no_voices_world(text):
     with pytest.raises(BadInput):

@@ -375,6 +375,17 @@ VOICE_WORLD_VERBS_EXEMPT: frozenset[str] = frozenset({"stay", "remain", "keep", 
 calm.", "Leave no trace."): with nothing in the sentence they could act on (:data:`VOICE_SENTENCE_HAZARD_RE`) they persist
 a person, not a scene."""
 
+NARRATOR_OPENING_RE = re.compile(r"^\W*(?:(?:well|oh|so|and|but|now|meanwhile|anyway|honestly|personally)\s*,?\s+)*"
+                                 r"(?:i|we|i'm|i'll|i've|i'd|we're|we'll|we've|we'd|(?:my|our)\s+[a-z'\-]+)\b")
+"""A sentence told by the speaker of a voice ("I'll be back later.", "We close when the tide turns.", "My shift ends
+soon."): its subject is not the one who does the task, so its time, sequence, wish or condition is the speaker's
+(:data:`NARRATION_FREE_RE`), when it names nothing of the task (:func:`rpg.schema.reading._voice_sentence`)."""
+
+NARRATION_FREE_RE = re.compile(r"\b(?:then|after|afterwards?|later|finally|before|meanwhile|soon|time|minutes?|hours?|until|till"
+                               r"|while|need\w*|want\w*|must|should|shall|if|when|whenever)\b")
+"""Words of :data:`VOICE_SENTENCE_HAZARD_RE` (and conditions) that a sentence the speaker tells of themselves
+(:data:`NARRATOR_OPENING_RE`) may hold: they bear on the speaker, not on the task."""
+
 REGARD_VERBS: frozenset[str] = frozenset("""
 enjoy mind heed watch love like bless thank thanks remember consider imagine respect trust welcome excuse pardon forgive
 believe know hope wish mark note

@@ -231,19 +231,23 @@ def _voice_sentence(sentence: str) -> bool:
     """Whether a sentence of a text that says its task elsewhere speaks of a voice's own world ("No running on deck!",
     "Stay safe out there.", "Now bow out.", "Enjoy your stay."), dropped by :func:`drop_asides` like commentary
     (:func:`_commentary_sentence`): a verb of its own, no word of a goal, count, colour, digit or place
-    (:data:`lexicon.TASK_CONTENT_RE`, :data:`lexicon.ASIDE_CONTENT_RE` but for a negation or condition, which is then of
-    that world), no verb that changes a scene (:data:`lexicon.SCENE_CHANGING_VERBS` but a person's persisting,
-    :data:`lexicon.VOICE_WORLD_VERBS_EXEMPT`), no take-back (:data:`lexicon.RETRACTION_RE`) and nothing that may refer to
+    (:data:`lexicon.TASK_CONTENT_RE` but for "on": "on deck"; :data:`lexicon.ASIDE_CONTENT_RE` but for a negation, which is
+    then of that world; a condition stays: "If there is room."), no verb that changes a scene
+    (:data:`lexicon.SCENE_CHANGING_VERBS` but a person's persisting, :data:`lexicon.VOICE_WORLD_VERBS_EXEMPT`), no take-back (:data:`lexicon.RETRACTION_RE`) and nothing that may refer to
     the task or bear on how it is done (:data:`lexicon.VOICE_SENTENCE_HAZARD_RE`); a domain refusal of it may only be a
-    negation, an object, an action or a question (those of that world).  An imperative with a thing of its own ("Wipe the
+    negation, an object, an action or a question (those of that world).  A sentence the speaker tells of themselves
+    (:data:`lexicon.NARRATOR_OPENING_RE`: "I'll be back later.") may also hold a time, a sequence, a wish or a condition
+    (:data:`lexicon.NARRATION_FREE_RE`): the speaker's, not the task's.  An imperative with a thing of its own ("Wipe the
     whiteboard.", "Pick up a towel.") demands something of the scene and stays; a person's own thing ("Enjoy your stay.")
     or a verb of regard (:data:`lexicon.REGARD_VERBS`: "Mind the gap.") is that world's."""
     low = sentence.lower()
     words = re.findall(r"[a-z][a-z'\-]*", low)
+    narrated = lexicon.NARRATOR_OPENING_RE.match(low)  # "I'll be back later.": the speaker's time, not the task's
+    weighed = lexicon.NARRATION_FREE_RE.sub(" ", low) if narrated else low
     if not words or re.search(r"\d", low) or lexicon.TASK_CONTENT_RE.search(re.sub(r"\bon\b", " ", low)) \
             or lexicon.GOAL_THING_PREFIX_RE.search(low) \
-            or lexicon.ASIDE_CONTENT_RE.search(_VOICE_WORLD_ASIDE_RE.sub(" ", low)) or lexicon.VOICE_SENTENCE_HAZARD_RE.search(low) \
-            or lexicon.RETRACTION_RE.search(low):
+            or lexicon.ASIDE_CONTENT_RE.search(_VOICE_WORLD_ASIDE_RE.sub(" ", weighed)) \
+            or lexicon.VOICE_SENTENCE_HAZARD_RE.search(weighed) or lexicon.RETRACTION_RE.search(low):
         return False
     opening = list(itertools.dropwhile(lambda w: w in _OPENING_FILLERS, words))[:3]
     if len(opening) >= 2 and "VERB" in lexicon.parts_of_speech(opening[0]) and not low.rstrip().endswith("?") \
@@ -261,7 +265,8 @@ def _voice_sentence(sentence: str) -> bool:
                 return False
             verb = verb or ("VERB" in lexicon.parts_of_speech(base) and base not in lexicon.IDLE_WORDS
                             and not lemmas & _AUXILIARY_LEMMAS)
-    return verb and all(k in ("negation", "object", "action", "question") for k, _, _ in _inexpressible(low))
+    kinds = ("negation", "object", "action", "question") + (("time", "condition") if narrated else ())
+    return verb and all(k in kinds for k, _, _ in _inexpressible(low))
 
 
 def _frame_prefix(words: str) -> bool:
