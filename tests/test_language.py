@@ -5733,11 +5733,9 @@ def test_sentences_that_may_bear_on_the_goal_are_not_commentary(text):
     ("Whistle! Everybody out of the pool and listen up: stack the red cube on the blue cube, nice and steady. "
      "No running on deck!", ["stack(blue,red)"]),
     ("Returns desk: please put the brown cube on the orange patch. No late fees today.", ["on_patch(brown,patch:orange)"]),
-    ("Stack the red block on the blue block. Stay safe out there.", ["stack(blue,red)"]),
-    ("Stack the red block on the blue block. Now bow out.", ["stack(blue,red)"]),
-    ("Stack the red block on the blue block. Enjoy your stay.", ["stack(blue,red)"]),  # the listener's own thing
-    ("Stack the red block on the blue block. Mind the gap.", ["stack(blue,red)"]),  # a verb of regard
-    ("Stack the red block on the blue block. Leave no trace.", ["stack(blue,red)"]),
+    ("Stack the red block on the blue block. Headquarters is counting on you.", ["stack(blue,red)"]),
+    ("Stack the red block on the blue block. Enjoy your stay.", ["stack(blue,red)"]),  # an imperative of regard
+    ("Stack the red block on the blue block. Mind the gap.", ["stack(blue,red)"]),
     # told by the speaker of themselves: its time is the speaker's
     ("Stack the red block on the blue block. I'll see you later.", ["stack(blue,red)"]),
     ("Stack the red block on the blue block. My train leaves soon.", ["stack(blue,red)"]),
@@ -5764,6 +5762,21 @@ def test_a_voices_sentence_of_its_own_world_is_dropped(text, expected):
     "Stack the red block on the blue block. I need it done quickly.",  # the speaker's wish of the task ("it")
     "Stack the red block on the blue block. I'll check after ten seconds.",  # a time said in a number
     "Stack the red block on the blue block. You have until noon.",  # the listener's time, not the speaker's
+    # a hostile helper's (thirty-fourth session), each had been dropped: said to the one who does the task, a short
+    # negation, the speaker's clock time, wish or condition
+    "Stack the red block on the blue block. Stay safe out there.",
+    "Stack the red block on the blue block. Don't proceed.",
+    "Stack the red block on the blue block. Pinch lightly.",
+    "Stack the red block on the blue block. Await my signal.",
+    "Stack the red block on the blue block. Keep going.",
+    "Stack the red block on the blue block. Power down.",
+    "Stack the red block on the blue block. No tools!",
+    "Stack the red block on the blue block. No dawdling!",
+    "Stack the red block on the blue block. Nobody budges.",
+    "Stack the red block on the blue block. I need results by noon.",
+    "Stack the red block on the blue block. I want no scratches.",
+    "Stack the red block on the blue block. I'll pay double if you're early.",
+    "Stack the red block on the blue block. Logos up.",
 ])
 def test_a_sentence_that_may_refer_to_the_task_is_no_voices_world(text):
     with pytest.raises(BadInput):

@@ -352,6 +352,7 @@ VOICE_SENTENCE_HAZARD_RE = re.compile(
     r"|descending|alphabetic\w*|rainbow|gradient|first|second|third|last|next|previous\w*|earlier|usual|follow\w*|below"
     r"|size|big\w*|small\w*|large\w*|tall\w*|tiny|huge|giant|height|colou?r\w*|shade\w*|hue\w*|shape\w*|form|pattern\w*"
     r"|spiral|triangle\w*|cross|zigzag|diamond|star|heart|arrow|letter|word|spell\w*|example\w*|counter\w*|wrong|incorrect"
+    r"|nobody|no-one|anybody|anyone|score\w*|grad(?:e|es|ed|ing)|judg\w*|mark(?:s|ed)?|points?|signal\w*|wait\w*|await\w*"
     r"|bad|mistake\w*|error\w*|view\w*|perspective|north\w*|south\w*|east\w*|west\w*|clockwise|anticlockwise"
     r"|counterclockwise|instead|rather|mean|meant|actually|oops|wait|correction|typo|undo|redo|reset|revert|return\w*"
     r"|restor\w*|swap\w*|switch\w*|exchange\w*|then|after|afterwards?|later|finally|before|must|should|shall|need\w*"
@@ -381,10 +382,10 @@ NARRATOR_OPENING_RE = re.compile(r"^\W*(?:(?:well|oh|so|and|but|now|meanwhile|an
 soon."): its subject is not the one who does the task, so its time, sequence, wish or condition is the speaker's
 (:data:`NARRATION_FREE_RE`), when it names nothing of the task (:func:`rpg.schema.reading._voice_sentence`)."""
 
-NARRATION_FREE_RE = re.compile(r"\b(?:then|after|afterwards?|later|finally|before|meanwhile|soon|time|minutes?|hours?|until|till"
-                               r"|while|need\w*|want\w*|must|should|shall|if|when|whenever)\b")
-"""Words of :data:`VOICE_SENTENCE_HAZARD_RE` (and conditions) that a sentence the speaker tells of themselves
-(:data:`NARRATOR_OPENING_RE`) may hold: they bear on the speaker, not on the task."""
+NARRATION_FREE_RE = re.compile(r"\b(?:then|after|afterwards?|later|finally|before|meanwhile|soon|while)\b")
+"""Words of a sequence in :data:`VOICE_SENTENCE_HAZARD_RE` that a sentence the speaker tells of themselves
+(:data:`NARRATOR_OPENING_RE`) may hold: they order the speaker's day, not the task.  A clock time, a wish or a condition
+stays ("I need results by noon.", "I want no scratches.", "I'll pay double if you're early.": a hostile helper's)."""
 
 REGARD_VERBS: frozenset[str] = frozenset("""
 enjoy mind heed watch love like bless thank thanks remember consider imagine respect trust welcome excuse pardon forgive

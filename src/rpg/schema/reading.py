@@ -223,7 +223,8 @@ _VOICE_WORLD_ASIDE_RE = re.compile(r"\b(?:not|no|never)\b")
 _DEMAND_DETERMINERS = frozenset({"the", "a", "an", "this", "that", "these", "those", "some", "any", "every", "each", "its",
                                   "their"})
 _OPENING_FILLERS = frozenset({"and", "so", "now", "please", "just", "oh", "well", "then", "go", "come"})
-_PARTICLES = frozenset({"up", "down", "out", "off", "in", "on", "over", "away", "back"})
+_NOT_VERBS = frozenset({"up", "down", "out", "off", "in", "on", "over", "away", "back", "well", "low", "high"})
+"""Words the dictionary also knows as verbs that a voice's sentence holds as particles or adverbs ("Logos up."): no verb."""
 _AUXILIARY_LEMMAS = frozenset({"be", "have", "do", "can", "will", "shall", "may", "might", "must", "would", "could", "should"})
 
 
@@ -235,11 +236,12 @@ def _voice_sentence(sentence: str) -> bool:
     then of that world; a condition stays: "If there is room."), no verb that changes a scene
     (:data:`lexicon.SCENE_CHANGING_VERBS` but a person's persisting, :data:`lexicon.VOICE_WORLD_VERBS_EXEMPT`), no take-back (:data:`lexicon.RETRACTION_RE`) and nothing that may refer to
     the task or bear on how it is done (:data:`lexicon.VOICE_SENTENCE_HAZARD_RE`); a domain refusal of it may only be a
-    negation, an object, an action or a question (those of that world).  A sentence the speaker tells of themselves
-    (:data:`lexicon.NARRATOR_OPENING_RE`: "I'll be back later.") may also hold a time, a sequence, a wish or a condition
-    (:data:`lexicon.NARRATION_FREE_RE`): the speaker's, not the task's.  An imperative with a thing of its own ("Wipe the
-    whiteboard.", "Pick up a towel.") demands something of the scene and stays; a person's own thing ("Enjoy your stay.")
-    or a verb of regard (:data:`lexicon.REGARD_VERBS`: "Mind the gap.") is that world's."""
+    negation, an object, an action or a question (those of that world), and a negation needs four words or more (a short
+    one, "No tools!", has no world of its own but the task's).  A sentence the speaker tells of themselves
+    (:data:`lexicon.NARRATOR_OPENING_RE`: "I'll see you later.") may also hold a step of a sequence
+    (:data:`lexicon.NARRATION_FREE_RE`): the speaker's day, not the task's.  An imperative (:func:`_imperative`) is said to
+    the one who does the task ("Wipe the whiteboard.", "Pinch lightly.", "Don't proceed.") and stays, unless its verb is
+    one of regard (:data:`lexicon.REGARD_VERBS`: "Mind the gap.", "Enjoy your stay.")."""
     low = sentence.lower()
     words = re.findall(r"[a-z][a-z'\-]*", low)
     narrated = lexicon.NARRATOR_OPENING_RE.match(low)  # "I'll be back later.": the speaker's time, not the task's
@@ -250,10 +252,10 @@ def _voice_sentence(sentence: str) -> bool:
             or lexicon.VOICE_SENTENCE_HAZARD_RE.search(weighed) or lexicon.RETRACTION_RE.search(low):
         return False
     opening = list(itertools.dropwhile(lambda w: w in _OPENING_FILLERS, words))[:3]
-    if len(opening) >= 2 and "VERB" in lexicon.parts_of_speech(opening[0]) and not low.rstrip().endswith("?") \
-            and not {opening[0], *lexicon.lemmas(opening[0])} & lexicon.REGARD_VERBS and (
-            opening[1] in _DEMAND_DETERMINERS or (opening[1] in _PARTICLES and opening[2:] and opening[2] in _DEMAND_DETERMINERS)):
-        return False  # "Wipe the whiteboard.", "Pick up a towel.": a demand on something of the scene, not a person's world
+    if opening and _imperative(opening) and not {opening[0], *lexicon.lemmas(opening[0])} & lexicon.REGARD_VERBS:
+        return False  # "Wipe the whiteboard.", "Pinch lightly.", "Don't proceed.": said to the one who does the task
+    if _VOICE_WORLD_ASIDE_RE.search(low) and len(words) < 4:
+        return False  # "No tools!", "No dragging!": a short negation has no world of its own to belong to: the task's
     verb = False
     for w in words:
         for part in w.split("-"):
@@ -264,9 +266,23 @@ def _voice_sentence(sentence: str) -> bool:
             if base in COLORS or base in lexicon.colour_names():
                 return False
             verb = verb or ("VERB" in lexicon.parts_of_speech(base) and base not in lexicon.IDLE_WORDS
-                            and not lemmas & _AUXILIARY_LEMMAS)
-    kinds = ("negation", "object", "action", "question") + (("time", "condition") if narrated else ())
-    return verb and all(k in kinds for k, _, _ in _inexpressible(low))
+                            and not lemmas & _AUXILIARY_LEMMAS and base not in _NOT_VERBS)
+    return verb and all(k in ("negation", "object", "action", "question") for k, _, _ in _inexpressible(weighed))
+
+
+def _imperative(opening: list[str]) -> bool:
+    """Whether a sentence opening with ``opening`` (its first words, lower case, fillers dropped) is said to the one who
+    does the task: a verb in its base form not followed by a verb of its own ("Pinch lightly.", "Wipe the whiteboard.";
+    not "Breakfast is served"), or "don't", "do not", "never", "please" before one."""
+    if opening[0] in ("don't", "dont", "never", "please") or opening[:2] == ["do", "not"]:
+        return True
+    first = opening[0]
+    if "VERB" not in lexicon.parts_of_speech(first) or first not in lexicon.lemmas(first):
+        return False
+    after = opening[1] if len(opening) > 1 else ""
+    finite = after in ("is", "are", "was", "were", "will", "has", "have", "had", "can", "must", "should", "may", "might") or (
+        "VERB" in lexicon.parts_of_speech(after) and after.endswith(("s", "ed")) and after not in lexicon.lemmas(after))
+    return not (finite and "NOUN" in lexicon.parts_of_speech(first))  # "Pool closes at five.": a noun and its verb
 
 
 def _frame_prefix(words: str) -> bool:
