@@ -6830,10 +6830,22 @@ def test_a_cube_on_top_of_counted_stacked_cubes(text, expected):
     assert uncited(schema, text) == []
 
 
-def test_counted_stacked_cubes_the_reading_does_not_count_are_refused():
+@pytest.mark.parametrize("text", [
+    "Put the blue cube next to the pink cube on top of two stacked red cubes.",
+    # a hostile helper's (thirty-fourth session): more cubes after the stacked ones (blue had gone on top of cyan), two
+    # such towers in one sentence (each had one red), a tower's labels said in turn with a place after the last (a
+    # contradiction had been reversed, or coloured cubes made up), labelled cubes given a colour (a blue cube added)
+    "Goal: the cyan cube on top of two stacked red cubes and a blue cube.",
+    "Goal: the cyan cube on top of two stacked red cubes, the green cube on top of two stacked blue cubes.",
+    "Build a tower of letter blocks: A at the bottom, then B, then C at the bottom.",
+    "Build a tower of number blocks: 7 at the bottom, then 2, then 9 at the bottom.",
+    "Build a tower of number blocks: 7 at the bottom, then 2, then 9 in the corner.",
+    "Build a tower of blue number blocks: 7 at the bottom, then 2, then 9.",
+])
+def test_counted_stacked_cubes_or_label_steps_the_reading_does_not_take_are_refused(text):
     """'two stacked red cubes' counts red cubes: a reading with one red is refused, not compiled (it had been)."""
-    with pytest.raises(ParseError, match="2 stacked"):
-        parse("Put the blue cube next to the pink cube on top of two stacked red cubes.")
+    with pytest.raises(ParseError):
+        check_feasibility(parse(text))
 
 
 @pytest.mark.parametrize("text", [

@@ -1177,18 +1177,20 @@ _LABEL_ITEM = r"(?:(?:the\s+)?(?:digit|number|letter)\s+[a-z0-9]|\d|[A-Z])(?:\s+
 LABEL_TOWER_STEPS_RE = re.compile(
     rf"(?<![\w.'\-])(?P<first>{_LABEL_ITEM}|[a-z])\s+(?:is\s+|goes\s+)?(?:at|on)\s+the\s+(?:very\s+)?(?:bottom|base)\s*,?\s*"
     rf"(?P<rest>(?:and\s+)?then\s+(?:the\s+)?{_LABEL_ITEM}(?:\s*,?\s*(?:and\s+)?then\s+(?:the\s+)?{_LABEL_ITEM})*)"
-    r"(?:\s+(?:on\s+top|at\s+the\s+(?:very\s+)?top))?(?![\w'])")
+    r"(?:\s+(?:on\s+top|at\s+the\s+(?:very\s+)?top))?(?=\s*(?:[.;!]|$))")
 """A tower's label cubes said in turn from its base ("7 at the bottom, then 2, then 9", "A at the bottom, then B, then C
-on top"; a first letter may be lower-cased there, "a at the bottom, then the letter b block"): the order from the bottom
-(the first label had been lost, or the tower built of coloured cubes)."""
+on top"; a first letter may be lower-cased there, "a at the bottom, then the letter b block"), to the clause's end (a
+place after the last, "then 9 at the bottom", "then 9 in the corner", is not read so): the order from the bottom (the
+first label had been lost, or the tower built of coloured cubes)."""
 
 
 def _label_tower_steps(text: str) -> str:
     """``text`` with a tower's label cubes said in turn from its base (:data:`LABEL_TOWER_STEPS_RE`) written as the order
     from the bottom ("... from bottom to top: digit 7, digit 2, digit 9"), for :func:`_label_tower_roles`'s readers."""
     m = LABEL_TOWER_STEPS_RE.search(text)
-    if m is None or not re.search(r"\b(?:stack\w*|towers?|columns?)\b", text[:m.start()]):
-        return text
+    if m is None or not re.search(r"\b(?:stack\w*|towers?|columns?)\b", text[:m.start()]) \
+            or re.search(rf"\b(?:{COLOR_RE})\b", text[:m.start()]):
+        return text  # ("a tower of blue number blocks: ...": a colour of labelled cubes, read as written)
     items = [m.group("first")] + re.split(r"\s*,?\s*(?:and\s+)?then\s+", m.group("rest"))[1:]
     labels = [re.sub(r"^(?:the\s+)?(?:(?:digit|number|letter)\s+)?|\s+(?:cube|block)$", "", it.strip()) for it in items]
     if re.fullmatch(r"[a-z]", m.group("first")) and not all(lab.isalpha() for lab in labels[1:]):
@@ -2379,9 +2381,12 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
                 r"(?:(?:is|goes|sits|stands|rests|(?:should|must|will)\s+(?:be|sit|stand|end\s+up)|ends\s+up)\s+)?"
                 r"(?:(?P<on>on\s+top\s+of|onto|on|atop)|under(?:neath)?|beneath|below)\s+"
                 rf"(?:the\s+)?(\d+)\s+(?:stacked\s+({COLOR_RE})\s+(?:blocks|cubes|bricks)|({COLOR_RE})\s+(?:blocks|cubes|bricks)\s+stacked"
-                r"(?:\s+(?:together|up|on\s+(?:top\s+of\s+)?each\s+other|one\s+on\s+(?:top\s+of\s+)?the\s+other))?)\b"),
-     lambda m: "build a tower from bottom to top: " + ", ".join(
-         [m.group(4) or m.group(5)] * int(m.group(3)) + [m.group(1)] if m.group("on") else [m.group(1)] + [m.group(4) or m.group(5)] * int(m.group(3))),
+                r"(?:\s+(?:together|up|on\s+(?:top\s+of\s+)?each\s+other|one\s+on\s+(?:top\s+of\s+)?the\s+other))?)\b"
+                r"(?!\s*,?\s*(?:and|plus|with|as\s+well\s+as)\b)"  # "... and a blue cube": more cubes, of which tower unsaid
+                r"(?P<next>\s*[,;]\s*(?=(?:the|an?)\s))?"),  # "..., the green cube on top of two stacked blue cubes": another
+     lambda m: "build a tower from bottom to top: " + ", ".join(  # tower, in a sentence of its own
+         [m.group(4) or m.group(5)] * int(m.group(3)) + [m.group(1)] if m.group("on") else [m.group(1)] + [m.group(4) or m.group(5)] * int(m.group(3)))
+     + (". " if m.group("next") else ""),
      True),
     # "six cubes in one tower: two red at the bottom, two green in the middle, two blue at the top": three counted groups
     (re.compile(rf"(?:\s*[:,]\s*|\s+with\s+)(\d+)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|ones))?\s+(?:at|on|in)\s+the\s+(?:bottom|base)"
