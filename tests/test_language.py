@@ -6761,6 +6761,10 @@ def test_a_chunk_of_the_task_at_a_sentences_end_is_kept(text, expected):
      ["on_table(blue)", "on_table(green)", "on_table(red)", "start:stack(green,blue,red)"]),
     ("Currently there is a tower of black, white, pink from bottom to top. Unstack it so every cube is on the table.",
      ["on_table(black)", "on_table(pink)", "on_table(white)", "start:stack(black,white,pink)"]),  # "there is" said now
+    # a text that is only a tower's roles (no task had been found)
+    ("Top: red. Middle: green. Bottom: blue.", ["stack(blue,green,red)"]),
+    ("Bottom: blue, top: red.", ["stack(blue,red)"]),
+    ("Upper cube: red. Lower cube: blue.", ["stack(blue,red)"]),
 ])
 def test_compound_subjects_counted_towers_glosses_and_starts_in_other_words(text, expected):
     schema = check_feasibility(parse(text))
@@ -6775,6 +6779,8 @@ def test_compound_subjects_counted_towers_glosses_and_starts_in_other_words(text
     # the scene now said with "there is" before a goal of other cubes: red on blue had become part of the goal
     "Right now there is a red cube on the blue cube. Stack the green cube on the yellow cube.",
     "There is now a red cube on the blue cube. Stack the green cube on the yellow cube.",
+    "Top: red. Middle: blue.",  # no bottom
+    "Top: red. Top: blue.",
     "Currently there is a red cube on the blue cube. Stack the green cube on the yellow cube.",
 ])
 def test_in_case_and_a_scene_now_that_is_no_start_are_refused(text):

@@ -4486,6 +4486,28 @@ def _row_roles(m: re.Match) -> str:
     return "a row from left to right: " + ", ".join(said[k] for k in (0, 1, 2))
 
 
+_TOWER_ROLE_RANK = {"top": 2, "upper": 2, "middle": 1, "centre": 1, "center": 1, "bottom": 0, "lower": 0, "base": 0}
+_TOWER_ROLE = (r"(?:the\s+)?(?P<r{i}>top|upper|middle|cent(?:er|re)|bottom|lower|base)(?:\s+(?:one|cube|block|layer|level))?"
+               r"\s*[:=]\s*(?:the\s+|a\s+)?(?P<c{i}>" + COLOR_RE + r")(?:\s+(?:one|cube|block))?")
+BARE_TOWER_ROLES_RE = re.compile(r"(?i)^\s*" + _TOWER_ROLE.format(i=1) + r"\s*[,;.]\s*(?:and\s+)?" + _TOWER_ROLE.format(i=2)
+                                 + r"(?:\s*[,;.]\s*(?:and\s+)?" + _TOWER_ROLE.format(i=3) + r")?\s*[.!]?\s*$")
+"""A whole text that gives two or three cubes the top, middle and bottom of something and says nothing else ("Top: red.
+Middle: green. Bottom: blue.", "Bottom: blue, top: red"): a tower (:func:`bare_tower_roles`; no task had been found)."""
+
+
+def bare_tower_roles(text: str) -> str:
+    """``text`` said as a tower from its bottom when it is only a tower's roles (:data:`BARE_TOWER_ROLES_RE`): each role
+    once, a top and a bottom among them (a middle only with both); as it is otherwise."""
+    m = BARE_TOWER_ROLES_RE.match(text)
+    if m is None:
+        return text
+    said = [(_TOWER_ROLE_RANK[m.group(f"r{i}").lower()], m.group(f"c{i}")) for i in (1, 2, 3) if m.group(f"r{i}")]
+    ranks = sorted(r for r, _ in said)
+    if ranks not in ([0, 2], [0, 1, 2]):
+        return text  # a role said twice, or no top or bottom: left as written (refused)
+    return "build a tower from bottom to top: " + ", ".join(c for _, c in sorted(said)) + "."
+
+
 def _two_corners(m: re.Match) -> str:
     """"put one blue cube in each of the two back corners" -> "put a blue cube in the back left corner and a blue cube in
     the back right corner"."""

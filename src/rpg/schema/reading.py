@@ -1292,6 +1292,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
         original = lexicon.LETTER_GREETING_RE.sub("", lexicon.LETTER_SIGNATURE_RE.sub("", original)).strip() or original
     original = _unshouted(original)
     original = lexicon.rewrite(lexicon.ROW_SAID_BY_ORDER_REWRITES, original)  # "Left to right: red, green, blue."
+    original = lexicon.bare_tower_roles(original)  # "Top: red. Middle: green. Bottom: blue."
     for pattern, written in lexicon.LEGAL_RES:  # "the aforementioned green cube", "(hereinafter 'the Cube')"
         original = pattern.sub(written, original)
     for pattern in lexicon.GRADING_FRAME_RES:  # "Q3. (4 points) ...", "full marks if ...; zero otherwise"
