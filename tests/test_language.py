@@ -6765,6 +6765,10 @@ def test_a_chunk_of_the_task_at_a_sentences_end_is_kept(text, expected):
     ("Top: red. Middle: green. Bottom: blue.", ["stack(blue,green,red)"]),
     ("Bottom: blue, top: red.", ["stack(blue,red)"]),
     ("Upper cube: red. Lower cube: blue.", ["stack(blue,red)"]),
+    # a text that is the tower said without a verb, its cubes in turn (no task found, or "above it" put green on top)
+    ("A tower with blue at the bottom, green above it and red on top.", ["stack(blue,green,red)"]),
+    ("A tower, blue at the base and red on it.", ["stack(blue,red)"]),
+    ("The final scene shows a tower, blue at the base and red on it.", ["stack(blue,red)"]),  # ("shows" had left an "s")
 ])
 def test_compound_subjects_counted_towers_glosses_and_starts_in_other_words(text, expected):
     schema = check_feasibility(parse(text))

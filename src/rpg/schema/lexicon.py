@@ -2103,7 +2103,7 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
     # "The final scene should have ...", "The end state you are looking for is ...": the goal follows
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:final|end|desired|goal|target|resulting)\s+(?:state|scene|configuration|layout"
                r"|arrangement|setup)(?:\s+(?:you\s+are|you're|we\s+are|we're|i\s+am|i'm)\s+looking\s+for)?\s+(?:should\s+|must\s+|will\s+)?"
-               r"(?:have|has|show|shows|contain|contains|be|is)\s*:?\s*"),
+               r"(?:have|has|shows|show|contains|contain|be|is)\b\s*:?\s*"),  # ("shows" had left its "s" behind)
     # "I would like the table to look like this at the end: ...", "To complete this task, ...": the goal follows
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:when\s+the\s+robot\s+is\s+(?:finished|done)\s*,\s*)?(?:(?:i|we)\s+(?:would\s+like|want|need)\s+)?"
                r"the\s+(?:table|scene|workspace)\s+(?:should\s+|to\s+|must\s+|will\s+)?look\s+like\s+this(?:\s+at\s+the\s+end)?\s*[:.]\s*"),

@@ -1994,6 +1994,8 @@ _CHAIN_HEAD_RE = re.compile(
     # a tower declared: "the tower should be: red at the bottom, blue above it, ..." (another reader had put every cube
     # "above it"/"above that" above the first one, and ordered the rest at will, silently)
     rf"|(?:a|an|one)\s+(?:{TOWER_NOUNS})(?=\s*:)"  # "a tower: red at the bottom, ..." (a goal's frame dropped before it)
+    rf"|^\s*(?:a|an|one)\s+(?:{TOWER_NOUNS})(?=\s+with\b|\s*,\s*(?:{COLOR_RE})\b)"  # "A tower with blue at the bottom, green
+    # above it, ...", "A tower, blue at the base and ...": a text that is the tower
     rf"|the\s+(?:final\s+|finished\s+|goal\s+|target\s+)?(?:{TOWER_NOUNS})\s+(?:should|must|will|has\s+to|needs\s+to)\s+(?:be|look\s+like)"
     rf"|(?:it|this|the\s+(?:goal|result|final\s+state|end\s+state|target))\s+(?:should\s+be|must\s+be|is)\s+(?:a|an|one)\s+(?:{TOWER_NOUNS}))"
     r"\s*(?:with|so\s+that|such\s+that|where|:|,|-|(?<=\bbe)(?=\s))\s*")
