@@ -6767,6 +6767,11 @@ def test_a_chunk_of_the_task_at_a_sentences_end_is_kept(text, expected):
     ("Upper cube: red. Lower cube: blue.", ["stack(blue,red)"]),
     # a text that is the tower said without a verb, its cubes in turn (no task found, or "above it" put green on top)
     ("A tower with blue at the bottom, green above it and red on top.", ["stack(blue,green,red)"]),
+    # a start tower, its top cube taken off and set beside it (the start had been read as the goal: a contradiction)
+    ("A tower of red on blue stands on the table. Take the red cube off and put it to the right of the blue cube.",
+     ["right_of(red,blue)", "start:stack(blue,red)"]),
+    ("The red block sits on top of the blue block. Move the red block off and set it to the left of the blue block.",
+     ["left_of(red,blue)", "start:stack(blue,red)"]),
     ("A tower, blue at the base and red on it.", ["stack(blue,red)"]),
     ("The final scene shows a tower, blue at the base and red on it.", ["stack(blue,red)"]),  # ("shows" had left an "s")
 ])

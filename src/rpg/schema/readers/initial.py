@@ -440,6 +440,16 @@ _ALREADY_START_RE = re.compile(rf"(?i)^\s*(?P<fact>(?:the|a|an)\s+{_NAME}\s+(?:c
                                rf"(?P<rel>(?:stacked\s+)?(?:on\s+top\s+of|on|atop)\s+(?:the|a|an)\s+{_NAME}\s+(?:cube|block))\s*[.;]\s+")
 """A first sentence that says a stack is there "already" ("A cyan cube is already on a pink cube. Add ..."): the start."""
 
+_TOWER_ON_TABLE_START_RE = re.compile(
+    rf"(?i)^\s*(?:there(?:'s|\s+is)\s+)?an?\s+(?:tower|stack)\s+of\s+(?:the\s+)?(?P<top>{_NAME})(?:\s+(?:cube|block))?\s+"
+    rf"(?:on\s+top\s+of|on)\s+(?:the\s+)?(?P<bottom>{_NAME})(?:\s+(?:cube|block))?\s+(?:stands|is|sits|rests)\s+on\s+the\s+table"
+    r"\s*[.;]\s+(?=(?:then\s+)?(?:(?:take|lift|remove|move|pick|get|slide|put|place|set)\s+(?:up\s+)?(?:it|the\s+(?P=top))\b"
+    r"|unstack\b))")
+"""A first sentence that says a two-cube tower stands on the table before a command that moves its top cube or undoes it
+("A tower of red on blue stands on the table. Take the red cube off and ..."): the start (the tower had been read as the
+goal and contradicted what follows; before another command, whether the tower stays is unsaid: read as written)."""
+
+
 _NOW_THEN_UNDONE_RE = re.compile(r"(?i)^\s*(?P<fact>[^.;!?]+)[.;]\s+(?=(?:then\s+|now\s+|please\s+)?(?:unstack|dismantle|disassemble"
                                  r"|take\s+(?:it|them|the\s+(?:whole\s+|entire\s+)?(?:tower|stack))\s+apart|take\s+apart|reverse|flip)\b)")
 """The scene said now, in one sentence, before a command that undoes or reverses it ("Currently the white cube sits on the
@@ -481,6 +491,7 @@ def split(instruction: str) -> InitialScene | None:
     instruction = lexicon.start_and_goal_said_tersely(instruction)  # "1. Start: green on brown. 2. Goal: green on table"
     instruction = lexicon.means_said(instruction)  # "...; clear the white block by putting the green block on the table"
     instruction = _ALREADY_START_RE.sub(r"Initially \g<fact>\g<rel>. ", instruction.strip())  # "A cyan cube is already on ..."
+    instruction = _TOWER_ON_TABLE_START_RE.sub(r"Initially the \g<top> cube is on the \g<bottom> cube. ", instruction.strip())
     instruction = ROBOT_STARTS_RE.sub(r"Initially \g<fact>. \g<goal>", instruction.strip())
     # "Currently the pink cube is on the orange cube. Add ...": the scene now said before a command that moves or tops its
     # top cube is the start (elsewhere "currently" stays refused: which words are the goal's?)
@@ -673,7 +684,7 @@ def _start_ends_named(sentences: list[str]) -> list[str]:
 
 
 _TAKEN_THEN_PUT_RE = re.compile(
-    rf"(?i)^\s*(?:then\s+)?(?:take|lift|remove|pick)\s+(?:up\s+)?the\s+(?P<c>{_NAME})(?:\s+(?:cube|block|one))?\s+off"
+    rf"(?i)^\s*(?:then\s+)?(?:take|lift|remove|pick|move|get|slide)\s+(?:up\s+)?the\s+(?P<c>{_NAME})(?:\s+(?:cube|block|one))?\s+off"
     rf"(?:\s+(?:of\s+)?(?:it|the\s+(?:tower|stack)|the\s+{_NAME}(?:\s+(?:cube|block|one))?))?\s*,?\s*(?:and\s+)?(?:then\s+)?"
     r"(?P<verb>put|place|set|move|lay)\s+it\b")
 """A goal that takes the start's top cube off and puts it somewhere ("take the purple cube off and put it on the red
