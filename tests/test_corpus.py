@@ -266,3 +266,17 @@ def test_steering_unseen_split_is_frozen_and_reported_in_aggregate_only(tmp_path
     assert run_steer.main(["--split", "unseen"]) == 2
     with pytest.raises(SystemExit):
         run_steer.main(["--split", "unseen", "--show", "wrong"])
+
+
+def test_a_spelled_words_reading_need_not_be_written_by_the_annotation():
+    """A text that spells a word with its cubes is right compiled with the word's reading (``reads``) though its
+    annotation writes the line alone (annotators the notation was not shown to); the reading must be of the compiled
+    line's cubes, and a text that spells nothing gets no such leeway."""
+    spelled = {"text": "Spell DOG from left to right with the letter cubes.", "meaning": "line[left_to_right](D,O,G)"}
+    assert run_corpus.classify(spelled)[0] == "correct"
+    line = ["line[left_to_right](D,O,G)", "reads(D,O,G;direction=left_to_right,face=up,text=DOG)"]
+    assert run_corpus._spelled_reading_unwritten(spelled, line)
+    assert not run_corpus._spelled_reading_unwritten({**spelled, "text": "Put D, O and G in a row."}, line)
+    assert not run_corpus._spelled_reading_unwritten(spelled, ["line[left_to_right](D,O,G)",
+                                                               "reads(G,O,D,A;direction=left_to_right,face=up,text=GODA)"])
+    assert not run_corpus._spelled_reading_unwritten({**spelled, "meaning": "line[left_to_right](D,O,G); reads(DOG)"}, line)

@@ -142,8 +142,9 @@ def classify(entry: dict) -> tuple[str, str]:
         return "wrong", f"crash: {type(exc).__name__}: {exc}"[:160]
     got = meaning(schema)
     free = entry.get("order") == "any" and "?" not in str(entry["meaning"])  # no end named: the cubes as a set
-    if not any(matches(_unordered(m), [_unordered(a) for a in got]) if free else matches(m, got)
-               for m in alternatives(entry)):
+    readings = [got] + ([_without_spelled_reading(got)] if _spelled_reading_unwritten(entry, got) else [])
+    if not any(matches(_unordered(m), [_unordered(a) for a in g]) if free else matches(m, g)
+               for m in alternatives(entry) for g in readings):
         return "wrong", "; ".join(got)
     if entry.get("order") == "any" and any(type(p).__name__ == "Stack" for p in schema.goal_predicate().walk()):
         return "wrong", "demands what no word says: an order of a stack the words leave free"
@@ -153,6 +154,27 @@ def classify(entry: dict) -> tuple[str, str]:
     if unsaid:  # the meaning notation cannot show it (an order of a stack, a line's axis): G demands it unsaid
         return "wrong", "demands what no word says: " + "; ".join(unsaid)
     return "correct", "; ".join(got)
+
+
+_SPELL_WORD_RE = re.compile(r"\b(?:spell\w*|reads?|reading)\b", re.IGNORECASE)
+_READS_ATOM_RE = re.compile(r"reads\(([^;()]+);")
+
+
+def _spelled_reading_unwritten(entry: dict, got: list[str]) -> bool:
+    """Whether an entry's text spells a word with its cubes ("Spell DOG from left to right with the letter cubes") while
+    none of its meanings writes the reading (``reads(...)``: annotators the notation was not shown to wrote the line or
+    tower alone), and each reading compiled reads the cubes of a line or tower compiled, in its order or reversed: the
+    word's reading is what "spell" says, not a demand beyond the words."""
+    if not _SPELL_WORD_RE.search(entry["text"]) or any("reads(" in m for m in alternatives(entry)):
+        return False
+    structures = [re.sub(r"^\w+(?:\[\w+\])?\(([^()]*)\)(?:@\w+)?$", r"\1", a) for a in got if re.match(r"(?:line|stack)\b", a)]
+    reads = [m.group(1) for a in got if (m := _READS_ATOM_RE.match(a))]
+    return bool(reads) and all(r in structures or ",".join(reversed(r.split(","))) in structures for r in reads)
+
+
+def _without_spelled_reading(got: list[str]) -> list[str]:
+    """``got`` without its reading atoms (:func:`_spelled_reading_unwritten`)."""
+    return [a for a in got if not a.startswith("reads(")]
 
 
 def _unordered(meaning_text: str) -> str:
