@@ -362,19 +362,19 @@ VOICE_SENTENCE_HAZARD_RE = re.compile(
     r"|wedged|level\w*|neat\w*|tight\w*|centred|centered|roof|lid|cap|crown|topped|fall\w*|fell|wobbl\w*|steady|stabl\w*"
     r"|balanc\w*)\b")
 """What keeps a sentence that names nothing of a goal from being dropped as a voice's own world
-(:func:`rpg.schema.reading._voice_sentence`: "No running on deck!", "Stay safe out there.") though it has a verb of its
+(:func:`rpg.schema.reading._voice_sentence`: "No running on deck!", "No late fees today.") though it has a verb of its
 own: a pronoun or quantifier that may stand for the cubes or the task, the robot, the table, the task's end, time or
 speed, a repetition or quantity, a pose, spacing or contact, an order, a size, a colour, a shape, a judgement of an
 example, a viewpoint, a take-back, a change of the scene, a further step ("Then celebrate."), a requirement, a care or
-the structure's standing ("Must be neighbours.", "Avoid collisions.", "Needs a roof.", "No wobbling.").  Such a sentence may bear on the task ("Do it twice.",
-"Faster!", "Nothing else.", "Then reset."), so it stays, to be read or refused.  Negations, places and persistence
+the structure's standing ("Must be neighbours.", "Avoid collisions.", "Needs a roof.", "No wobbling.").  Such a sentence
+may bear on the task ("Do it twice.", "Faster!", "Nothing else.", "Then reset."), so it stays, to be read or refused.  Negations, places and persistence
 ("stay", "keep") are not listed: without one of these words they can only be of the voice's own world ("No running on
-deck!", "Stay safe out there.")."""
+deck!", "The lifeguard stays on duty.")."""
 
 VOICE_WORLD_VERBS_EXEMPT: frozenset[str] = frozenset({"stay", "remain", "keep", "leave"})
-"""Verbs of :data:`SCENE_CHANGING_VERBS` that a sentence of a voice's own world may hold ("Stay safe out there.", "Keep
-calm.", "Leave no trace."): with nothing in the sentence they could act on (:data:`VOICE_SENTENCE_HAZARD_RE`) they persist
-a person, not a scene."""
+"""Verbs of :data:`SCENE_CHANGING_VERBS` that a sentence of a voice's own world may hold ("The lifeguard stays on duty.",
+"The crowd remains seated."): with nothing in the sentence they could act on (:data:`VOICE_SENTENCE_HAZARD_RE`)
+they persist a person or a place, not a scene (said to the one who does the task, "Stay low.", they stay refused)."""
 
 NARRATOR_OPENING_RE = re.compile(r"^\W*(?:(?:well|oh|so|and|but|now|meanwhile|anyway|honestly|personally)\s*,?\s+)*"
                                  r"(?:i|we|i'm|i'll|i've|i'd|we're|we'll|we've|we'd|(?:my|our)\s+[a-z'\-]+)\b")

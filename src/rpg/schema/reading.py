@@ -220,8 +220,6 @@ def _commentary_sentence(sentence: str) -> bool:
 
 
 _VOICE_WORLD_ASIDE_RE = re.compile(r"\b(?:not|no|never)\b")
-_DEMAND_DETERMINERS = frozenset({"the", "a", "an", "this", "that", "these", "those", "some", "any", "every", "each", "its",
-                                  "their"})
 _OPENING_FILLERS = frozenset({"and", "so", "now", "please", "just", "oh", "well", "then", "go", "come"})
 _NOT_VERBS = frozenset({"up", "down", "out", "off", "in", "on", "over", "away", "back", "well", "low", "high"})
 """Words the dictionary also knows as verbs that a voice's sentence holds as particles or adverbs ("Logos up."): no verb."""
@@ -230,12 +228,13 @@ _AUXILIARY_LEMMAS = frozenset({"be", "have", "do", "can", "will", "shall", "may"
 
 def _voice_sentence(sentence: str) -> bool:
     """Whether a sentence of a text that says its task elsewhere speaks of a voice's own world ("No running on deck!",
-    "Stay safe out there.", "Now bow out.", "Enjoy your stay."), dropped by :func:`drop_asides` like commentary
-    (:func:`_commentary_sentence`): a verb of its own, no word of a goal, count, colour, digit or place
+    "Headquarters is counting on you.", "Enjoy your stay.", "I'll see you later."), dropped by :func:`drop_asides` like
+    commentary (:func:`_commentary_sentence`): a verb of its own, no word of a goal, count, colour, digit or place
     (:data:`lexicon.TASK_CONTENT_RE` but for "on": "on deck"; :data:`lexicon.ASIDE_CONTENT_RE` but for a negation, which is
     then of that world; a condition stays: "If there is room."), no verb that changes a scene
-    (:data:`lexicon.SCENE_CHANGING_VERBS` but a person's persisting, :data:`lexicon.VOICE_WORLD_VERBS_EXEMPT`), no take-back (:data:`lexicon.RETRACTION_RE`) and nothing that may refer to
-    the task or bear on how it is done (:data:`lexicon.VOICE_SENTENCE_HAZARD_RE`); a domain refusal of it may only be a
+    (:data:`lexicon.SCENE_CHANGING_VERBS` but a person's persisting, :data:`lexicon.VOICE_WORLD_VERBS_EXEMPT`), no
+    take-back (:data:`lexicon.RETRACTION_RE`) and nothing that may refer to the task or bear on how it is done
+    (:data:`lexicon.VOICE_SENTENCE_HAZARD_RE`); a domain refusal of it may only be a
     negation, an object, an action or a question (those of that world), and a negation needs four words or more (a short
     one, "No tools!", has no world of its own but the task's).  A sentence the speaker tells of themselves
     (:data:`lexicon.NARRATOR_OPENING_RE`: "I'll see you later.") may also hold a step of a sequence
