@@ -254,8 +254,12 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
         before = text[:m.start()]
         if re.search(r"\bfac\w*\s+(?:\w+\s+){0,2}$", before):
             continue
-        if not names_a_role(before, text):
+        row_end = m.group("side") in SIDE_RELATIONS and re.match(r"\s+end\s+of\s+(?:a|the)\s+(?:row|line)\b", text[m.end():])
+        if not names_a_role(before, text) and not row_end:
             out.append(Mention(m.group(0), "bare place", region=BARE_PLACES[m.group("side")]))
+        elif row_end:  # "the red cube at the right end of a row": the row's end, by its own words
+            role = re.findall(rf"\b({colors})\b", before)
+            out.append(Mention(m.group(0) + " end", "end role", color=canon(role[-1]) if role else None, region=m.group("side")))
         elif m.group("side") in SIDE_RELATIONS:  # "a line of red, green and blue with blue on the right": an end
             said = before[before.rfind("with"):]
             # the cube said last before the side ("..., and blue on the right"; "with 3 on the far left": a label)
@@ -610,8 +614,7 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                                          "that end free (say the whole order, e.g. 'from left to right: red, green, blue')")
             record.append({"mention": m.words, "kind": "place", "consumed_by": ", ".join(ends)})
         elif m.kind == "bare place":  # a side of the table, or the sides of a relation ("red on the left, blue on the right")
-            paired = any(o.kind in ("bare place", "end role") and o.region in _OPPOSITE.get(m.region, ()) for o in named)
-            # ("the red cube at the right end of a row, ..., the green cube at the left end": the other end a role)
+            paired = any(o.kind == "bare place" and o.region in _OPPOSITE.get(m.region, ()) for o in named)
             sides = {r for r in regions if m.region in r.split("_")} | {
                 name for p in goal for name in SIDE_RELATIONS.get(m.region, ()) if p.name == name and paired} | (
                 _ordered_lines(goal, m.region) if paired else set())  # "gray at the far left, ..., green at the far right"
