@@ -5736,6 +5736,9 @@ def test_sentences_that_may_bear_on_the_goal_are_not_commentary(text):
     ("Stack the red block on the blue block. Headquarters is counting on you.", ["stack(blue,red)"]),
     ("Stack the red block on the blue block. Enjoy your stay.", ["stack(blue,red)"]),  # an imperative of regard
     ("Stack the red block on the blue block. Mind the gap.", ["stack(blue,red)"]),
+    # a concession of the task's effort before it (held-out class: "while" had been refused as a time)
+    ("It may take a while, but put the red cube on the blue cube.", ["stack(blue,red)"]),
+    ("This is a bit tricky, but stack the green cube on the yellow cube.", ["stack(yellow,green)"]),
     # told by the speaker of themselves: its time is the speaker's
     ("Stack the red block on the blue block. I'll see you later.", ["stack(blue,red)"]),
     ("Stack the red block on the blue block. My train leaves soon.", ["stack(blue,red)"]),
@@ -5777,6 +5780,7 @@ def test_a_voices_sentence_of_its_own_world_is_dropped(text, expected):
     "Stack the red block on the blue block. I want no scratches.",
     "Stack the red block on the blue block. I'll pay double if you're early.",
     "Stack the red block on the blue block. Logos up.",
+    "It should take under a minute, but put the red cube on the blue cube.",  # a time, no concession
 ])
 def test_a_sentence_that_may_refer_to_the_task_is_no_voices_world(text):
     with pytest.raises(BadInput):

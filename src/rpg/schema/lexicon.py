@@ -275,6 +275,15 @@ DAYS_TASK_RE = re.compile(r"(?i)\b(?:today|tonight|this\s+(?:morning|afternoon|e
                           r"(?=(?:exercise|task|challenge|goal|job|assignment|activity|drill|puzzle|lesson|warm-up)\b)")
 """A task named by its day ("Today's exercise is a tower of ..."): "the exercise" (the day says nothing of the goal)."""
 
+CONCESSION_OPENING_RE = re.compile(
+    r"(?i)(?:^|(?<=[.!?]\s))(?:it|this|that)\s*(?:(?:'s|is|may|might|could|can|will|would)\s+)?(?:be\s+)?"
+    r"(?:take\s+(?:a\s+(?:little\s+)?while|a\s+bit|patience|practice|a\s+few\s+tries)"
+    r"|(?:a\s+bit\s+|a\s+little\s+|quite\s+|pretty\s+|rather\s+|very\s+)?(?:tricky|hard|difficult|fiddly|tough|challenging|awkward))"
+    r"\s*,?\s+but\s+")
+"""A concession of the task's effort before it ("It may take a while, but put ...", "This is a bit tricky, but ..."): no
+constraint of the goal ("while" had been refused as a time; "it" as a reference); a time said ("It should take under a
+minute, but ...") is no concession and stays."""
+
 TURNING_LABEL_RE = re.compile(
     r"(?i)\b(?:(?:bad|wrong|incorrect|counter|anti|non|negative|failed|failing)[\s-]*(?:examples?|demos?|cases?|goals?|answers?|approach\w*)"
     r"|counter-?examples?|non-?goals?|forbid\w*|prohibit\w*|banned|off\s+limits|trap|bait|myth|fake|false|danger\w*|pitfall|mistakes?"

@@ -467,6 +467,10 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
         # "Arr matey, put ..., savvy?": the call to a listener (kept where no task is left: "Thanks, that's all for today.")
         dropped.append(text)
         text = addressed
+    def conceded(m: re.Match) -> str:  # "It may take a while, but put ...": the task's effort, no constraint of its goal
+        dropped.append(m.group(0).strip())
+        return ""
+    text = lexicon.CONCESSION_OPENING_RE.sub(conceded, text)
     for _ in range(2):  # "In this experiment, the robot was instructed to place ...": two frames, one after the other
         frame = lexicon.FRAME_PREFIX_RE.match(text)
         if frame is None or not _frame_prefix(frame.group("p")):
