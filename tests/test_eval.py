@@ -61,8 +61,9 @@ def _without_timing(path: Path) -> dict:
 
 def test_oracle_is_the_upper_bound_noop_scores_zero_and_seeds_give_distinct_initial_states(tmp_path):
     runs = {}
-    for policy in ("oracle", "noop", "random"):
-        runs[policy] = run_eval(EvalConfig("split=train", policy, tuple(range(2)), embodiment=FLOAT,
+    for policy in ("oracle", "noop", "random"):  # (random runs every episode to the horizon: one seed is enough to bound)
+        seeds = (0,) if policy == "random" else tuple(range(2))
+        runs[policy] = run_eval(EvalConfig("split=train", policy, seeds, embodiment=FLOAT,
                                            library=str(LIBRARY / "manifest.yaml")), tmp_path / policy)
     tasks = runs["oracle"]["tasks"]
     assert len(tasks) == 10 and set(runs["oracle"]["splits"]) == {"train"}
