@@ -363,7 +363,7 @@ VOICE_SENTENCE_HAZARD_RE = re.compile(
     r"|spiral|triangle\w*|cross|zigzag|diamond|star|heart|arrow|letter|word|spell\w*|example\w*|counter\w*|wrong|incorrect"
     r"|nobody|no-one|anybody|anyone|score\w*|grad(?:e|es|ed|ing)|judg\w*|mark(?:s|ed)?|points?|signal\w*|wait\w*|await\w*"
     r"|bad|mistake\w*|error\w*|view\w*|perspective|north\w*|south\w*|east\w*|west\w*|clockwise|anticlockwise"
-    r"|counterclockwise|instead|rather|mean|meant|actually|oops|wait|correction|typo|undo|redo|reset|revert|return\w*"
+    r"|counterclockwise|instead|rather|mean|meant|actually|oops|correction|typo|undo|redo|reset|revert|return\w*"
     r"|restor\w*|swap\w*|switch\w*|exchange\w*|then|after|afterwards?|later|finally|before|must|should|shall|need\w*"
     r"|require\w*|ensure\w*|sure|want\w*|expect\w*|avoid\w*|prevent\w*|without|careful\w*|gentl\w*|neighbo\w*|adjacent"
     r"|touch\w*|contact\w*|collisions?|collid\w*|gaps?|spac\w*|distance\w*|apart|together|away|close\w*|evenly|straight"
@@ -376,9 +376,9 @@ own: a pronoun or quantifier that may stand for the cubes or the task, the robot
 speed, a repetition or quantity, a pose, spacing or contact, an order, a size, a colour, a shape, a judgement of an
 example, a viewpoint, a take-back, a change of the scene, a further step ("Then celebrate."), a requirement, a care or
 the structure's standing ("Must be neighbours.", "Avoid collisions.", "Needs a roof.", "No wobbling.").  Such a sentence
-may bear on the task ("Do it twice.", "Faster!", "Nothing else.", "Then reset."), so it stays, to be read or refused.  Negations, places and persistence
-("stay", "keep") are not listed: without one of these words they can only be of the voice's own world ("No running on
-deck!", "The lifeguard stays on duty.")."""
+may bear on the task ("Do it twice.", "Faster!", "Nothing else.", "Then reset."), so it stays, to be read or refused.
+Negations, places and persistence ("stay", "keep") are not listed: without one of these words they can only be of the
+voice's own world ("No running on deck!", "The lifeguard stays on duty.")."""
 
 VOICE_WORLD_VERBS_EXEMPT: frozenset[str] = frozenset({"stay", "remain", "keep", "leave"})
 """Verbs of :data:`SCENE_CHANGING_VERBS` that a sentence of a voice's own world may hold ("The lifeguard stays on duty.",
@@ -387,9 +387,9 @@ they persist a person or a place, not a scene (said to the one who does the task
 
 NARRATOR_OPENING_RE = re.compile(r"^\W*(?:(?:well|oh|so|and|but|now|meanwhile|anyway|honestly|personally)\s*,?\s+)*"
                                  r"(?:i|we|i'm|i'll|i've|i'd|we're|we'll|we've|we'd|(?:my|our)\s+[a-z'\-]+)\b")
-"""A sentence told by the speaker of a voice ("I'll be back later.", "We close when the tide turns.", "My shift ends
-soon."): its subject is not the one who does the task, so its time, sequence, wish or condition is the speaker's
-(:data:`NARRATION_FREE_RE`), when it names nothing of the task (:func:`rpg.schema.reading._voice_sentence`)."""
+"""A sentence told by the speaker of a voice ("I'll see you later.", "My train leaves soon."): its subject is not the
+one who does the task, so a step of a sequence in it orders the speaker's day (:data:`NARRATION_FREE_RE`), when it names
+nothing of the task (:func:`rpg.schema.reading._voice_sentence`)."""
 
 NARRATION_FREE_RE = re.compile(r"\b(?:then|after|afterwards?|later|finally|before|meanwhile|soon|while)\b")
 """Words of a sequence in :data:`VOICE_SENTENCE_HAZARD_RE` that a sentence the speaker tells of themselves

@@ -32,8 +32,8 @@ COUNTED_GROUPS_RE = re.compile(
     rf"\b(\d+)\s+({COLOR_RE})(?:\s+(?:blocks?|cubes?))?((?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:(?:the\s+)?(?:\d+|an?)|the(?=\s+(?:{COLOR_RE})\s+(?:block|cube)\b))\s+(?:{COLOR_RE})"
     rf"(?:\s+(?:blocks?|cubes?))?)+(?!\s+(?:goal\s+)?patch)")
 """Counted colour groups said together: "2 red blocks and 2 blue blocks", "3 red, 3 green and 3 blue cubes",
-"2 cyan cubes and a purple cube" (a later group's "a" is one), "the 2 yellow cubes and the 2 black cubes", "the 2 yellow cubes and the black cube" (a later group's "the ... cube"
-is one)."""
+"2 cyan cubes and a purple cube" (a later group's "a" is one), "the 2 yellow cubes and the 2 black cubes", "the 2 yellow
+cubes and the black cube" (a later group's "the ... cube" is one)."""
 
 
 def counted_groups(f: Features) -> list[tuple[int, str]]:

@@ -820,7 +820,7 @@ def _beside_an_end(f: Features, place: dict[str, str], colors: list[str]) -> dic
     if not beside or len(colors) != 3 or {"left", "right"} - set(place) or "middle" in place:
         return place
     c = canon_color(beside.group("c"))
-    before = [m for m in _END_ROLE_RE.finditer(f.text[:beside.start()])]
+    before = list(_END_ROLE_RE.finditer(f.text[:beside.start()]))
     if c in place.values() or not before:
         return place
     it = canon_color(before[-1].group("c"))
