@@ -212,6 +212,28 @@ def test_cli_exit_codes_and_messages(tmp_path):
     assert rpg("validate", str(tmp_path / "nope")).returncode == 2
 
 
+def test_sentences_set_aside_are_printed_and_recorded_with_the_text_as_written(tmp_path):
+    """A voice's sentences that name nothing of the task are set aside, never silently: ``rpg compile`` prints each
+    with why, ``--json`` lists them, and task.yaml records the text as written (``provenance.said``) and each set-aside
+    sentence in its accounting; a text with nothing set aside records no ``said`` (the library keeps its hashes)."""
+    text = "Calm seas. Put the red cube on the blue cube. Serve with a smile."
+    r = rpg("compile", text, "-o", str(tmp_path / "a"))
+    assert r.returncode == 0, r.stderr
+    lines = [line for line in r.stdout.splitlines() if line.startswith("set aside:")]
+    assert lines == ["set aside: 'Calm seas.' (a sentence that names nothing of the task)",
+                     "set aside: 'Serve with a smile.' (a sentence that names nothing of the task)"], r.stdout
+    r = rpg("compile", text, "-o", str(tmp_path / "b"), "--json")
+    doc = json.loads(r.stdout)
+    assert [a["said"] for a in doc["set_aside"]] == ["Calm seas.", "Serve with a smile."]
+    task = yaml.safe_load((Path(doc["path"]) / "task.yaml").read_text())
+    assert task["provenance"]["said"] == text and task["provenance"]["instruction"] == "Put the red cube on the blue cube."
+    assert [a["mention"] for a in task["accounting"] if a["kind"] == "ignored"] == ["Calm seas.", "Serve with a smile."]
+    plain = rpg("compile", "Put the red cube on the blue cube.", "-o", str(tmp_path / "c"), "--json")
+    doc = json.loads(plain.stdout)
+    assert doc["set_aside"] == [] and "said" not in yaml.safe_load((Path(doc["path"]) / "task.yaml").read_text())["provenance"]
+    assert "set aside" not in rpg("compile", "Put the red cube on the blue cube.", "-o", str(tmp_path / "d")).stdout
+
+
 def test_same_instruction_same_artifact_across_processes(tmp_path):
     code = ("import sys; from rpg.compiler import compile_instruction; "
             "print(compile_instruction('Align 4 cubic blocks in a single straight horizontal line.', sys.argv[1]).content_hash)")

@@ -24,6 +24,7 @@ import contextlib
 import hashlib
 import json
 import os
+import re
 import shutil
 import stat
 import tempfile
@@ -302,19 +303,38 @@ def content_hash(task_doc: dict, code: str, goal_code: str, record: bytes | None
     return h.hexdigest()
 
 
-def mention_accounting(schema: TaskSchema) -> list[dict]:
+def mention_accounting(schema: TaskSchema, said: str | None = None) -> list[dict]:
     """Which words of the instruction produced which part of the task: one
     ``{"mention", "kind", "consumed_by"}`` per colour, label, count, patch, place, structure
-    and relation the instruction names (:func:`rpg.schema.builtin.check_mentions`).  A
-    mention the task has no part for (possible only for a schema edited by hand) is
-    recorded with kind ``unaccounted``."""
+    and relation the instruction names (:func:`rpg.schema.builtin.check_mentions`), and one of
+    kind ``ignored`` per word or sentence set aside as naming nothing of the task.  ``said`` is
+    the text as the user wrote it, when the task's instruction is what was left of it once
+    such sentences were set aside ("Calm seas. Put the red cube on the blue cube."): they are
+    accounted for from it.  A mention the task has no part for (possible only for a schema
+    edited by hand) is recorded with kind ``unaccounted``."""
     from rpg.schema.accounting import UnaccountedMention
-    from rpg.schema.builtin import check_mentions
+    from rpg.schema.builtin import ParseError, check_mentions
 
-    try:
-        return check_mentions(schema.instruction, schema)
-    except UnaccountedMention as exc:
-        return [{"mention": schema.instruction[:200], "kind": "unaccounted", "consumed_by": str(exc)}]
+    for text in dict.fromkeys(t for t in (said, schema.instruction) if t):
+        try:
+            return check_mentions(text, schema)
+        except UnaccountedMention as exc:
+            failure = exc
+        except ParseError:  # the user's text reads otherwise than it did when compiled (cannot happen): the instruction's
+            continue
+    return [{"mention": schema.instruction[:200], "kind": "unaccounted", "consumed_by": str(failure)}]
+
+
+def set_aside(doc: dict) -> list[tuple[str, str]]:
+    """(what, why) for each word or sentence of the user's text that a task document's accounting records as set
+    aside (kind ``ignored``: "Calm seas.", "a sentence that names nothing of the task"), in the order said."""
+    def why(consumed_by: str) -> str:  # "nothing: no meaning for the goal (reads like 'please')"
+        like = re.fullmatch(r"nothing: no meaning for the goal \(reads like '(.*)'\)", consumed_by, re.S)
+        if like is None:
+            return consumed_by.removeprefix("nothing: ")
+        return like.group(1) if " " in like.group(1) else f"reads like '{like.group(1)}'"
+
+    return [(a["mention"], why(a["consumed_by"])) for a in doc.get("accounting", []) if a.get("kind") == "ignored"]
 
 
 def constraint_citations(schema: TaskSchema) -> list[dict]:
@@ -326,14 +346,17 @@ def constraint_citations(schema: TaskSchema) -> list[dict]:
 
 
 def task_document(schema: TaskSchema, seed: int, backend: str, model: str | None, gates: list[dict],
-                  author: str | None = None) -> dict:
+                  author: str | None = None, said: str | None = None) -> dict:
     """The content of ``task.yaml`` (without its hash): the schema, retrieval tags, the
     mention accounting (:func:`mention_accounting`), the constraints of G with the mentions
-    that demand them (:func:`constraint_citations`) and provenance."""
+    that demand them (:func:`constraint_citations`) and provenance.  ``said``, the text as the
+    user wrote it, is recorded (``provenance.said``) where the task's instruction is not all of
+    it (sentences set aside as naming nothing of the task), and accounted for."""
+    said = said.strip() if said else None
     doc = {
         "schema": json.loads(schema.model_dump_json()),
         "tags": schema.tags(),
-        "accounting": mention_accounting(schema),
+        "accounting": mention_accounting(schema, said),
         "citations": constraint_citations(schema),
         "provenance": {
             "instruction": schema.instruction,
@@ -347,12 +370,14 @@ def task_document(schema: TaskSchema, seed: int, backend: str, model: str | None
     }
     if author:  # recorded only when known, so a library built without authors keeps its hashes
         doc["provenance"]["author"] = author
+    if said and said != schema.instruction:  # recorded only when it differs, so the library keeps its hashes
+        doc["provenance"]["said"] = said
     return doc
 
 
 def write_artifact_files(directory: Path, schema: TaskSchema, seed: int, backend: str, model: str | None,
                          gates: list[dict], log: list[str], author: str | None = None,
-                         extra_files: dict[str, str] | None = None) -> str:
+                         extra_files: dict[str, str] | None = None, said: str | None = None) -> str:
     """Write the ``extra_files`` (name -> text: the model record ``llm_log.jsonl``),
     validation.log and validation.json beside the code, then task.yaml with the manifest of
     every file (written last); return the content hash (it covers the model record)."""
@@ -363,7 +388,7 @@ def write_artifact_files(directory: Path, schema: TaskSchema, seed: int, backend
         write_file(directory / fname, text)
     _write_logs(directory, log, gates)
     sources = task_sources(directory)
-    doc = task_document(schema, seed, backend, model, gates, author)
+    doc = task_document(schema, seed, backend, model, gates, author, said)
     digest = content_hash(doc, sources["code.py"], sources["goal_state_code.py"], model_record(directory))
     doc[MANIFEST_KEY] = file_manifest(directory)
     doc["content_hash"] = digest

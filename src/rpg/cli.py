@@ -156,6 +156,8 @@ def _print_compile(result) -> None:
         out.print(f"  {g['gate']:<11} {mark} {esc(g.get('message', ''))}", highlight=False)
     for r in result.schema.repairs:
         out.print(f"  repair {r.operator}: {esc(r.reason)}", highlight=False)
+    for what, why in result.set_aside:  # what the task does not hold, said where the user looks
+        out.print(f"set aside: {esc(repr(what))} ({esc(why)})", highlight=False)
     out.print(f"artifact:  {result.path}")
     for k in ("initial", "goal"):
         if (result.path / f"{k}.png").exists():

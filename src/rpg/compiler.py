@@ -27,6 +27,7 @@ from rpg.artifact import (
     gates_passed,
     load_artifact,  # noqa: F401
     rehash,
+    set_aside,
     staging_dir,
     task_document,  # noqa: F401
     task_sources,
@@ -60,10 +61,14 @@ class CompileResult:
     gates: list[dict]
     log: list[str] = field(default_factory=list)
     content_hash: str = ""
+    set_aside: list[tuple[str, str]] = field(default_factory=list)
+    """(what, why) for each word or sentence of the user's text set aside as naming nothing of the task
+    (:func:`rpg.artifact.set_aside`): recorded in task.yaml's accounting and printed by ``rpg compile``."""
 
     def to_json(self) -> dict:
         return {"valid": self.valid, "path": str(self.path), "name": self.schema.name,
                 "content_hash": self.content_hash, "repairs": [r.model_dump() for r in self.schema.repairs],
+                "set_aside": [{"said": what, "why": why} for what, why in self.set_aside],
                 "gates": [{"gate": g["gate"], "status": g["status"], **({"message": g["message"]} if "message" in g else {})}
                           for g in self.gates],
                 "snapshots": {k: str(self.path / f"{k}.png") for k in ("initial", "goal") if (self.path / f"{k}.png").exists()}}
@@ -130,7 +135,7 @@ def _log_line(g: dict) -> str:
 def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[str] = frozenset(),
           backend: str = "builtin", model: str | None = None, name: str | None = None,
           extra_files=None, coder=None, author: str | None = None,
-          enabled: frozenset[str] = frozenset()) -> CompileResult:
+          enabled: frozenset[str] = frozenset(), written: str | None = None) -> CompileResult:
     """Passes 2-4 on a schema: generate, validate, repair; write the artifact atomically.
 
     ``extra_files`` (name -> text, or a callable returning that once the code exists, e.g.
@@ -139,7 +144,8 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
     :class:`rpg.codegen.llm.LLMCoder`) writes the code instead of the builtin emitter, and
     its fix agents repair it.  ``author`` (who wrote the task) is recorded in the provenance
     when given.  ``enabled`` names optional gates to run
-    (:data:`rpg.validate.gates.OPTIONAL_GATES`).
+    (:data:`rpg.validate.gates.OPTIONAL_GATES`).  ``written`` is the text as the user wrote it
+    (recorded and accounted for where sentences of it were set aside: :func:`rpg.artifact.task_document`).
     """
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
@@ -198,11 +204,12 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
         valid = gates_passed(gates)
         log.append("result: VALID" if valid else "result: REJECTED")
         extras = extra_files() if callable(extra_files) else extra_files
-        digest = write_artifact_files(tmp, schema, seed, backend, model, gates, log, author, extras)
+        digest = write_artifact_files(tmp, schema, seed, backend, model, gates, log, author, extras, written)
+        aside = set_aside(load_artifact(tmp)[1])
         slug = name or schema.name
         target = out_dir / slug if valid else out_dir / ".rejected" / slug
         atomic_replace(tmp, target)
-        return CompileResult(valid, target, schema, gates, log, digest)
+        return CompileResult(valid, target, schema, gates, log, digest, aside)
     finally:
         if tmp.exists():
             shutil.rmtree(tmp, ignore_errors=True)
@@ -313,7 +320,7 @@ def compile_instruction(instruction: str, out_dir: str | Path = "out", seed: int
 
     return build(schema, Path(out_dir), seed, frozenset(disabled), backend=backend,
                  model=llm.model if llm is not None else None, name=name, extra_files=extra, coder=coder,
-                 author=author, enabled=enabled)
+                 author=author, enabled=enabled, written=instruction)
 
 
 def revalidate(directory: str | Path, disabled: frozenset[str] = frozenset(),
