@@ -7070,3 +7070,63 @@ def test_a_pyramid_of_cubes_said_one_by_one_that_no_pyramid_has_is_refused():
     with pytest.raises(ParseError, match="3, 6, 10 or 15"):
         parse("Make a pyramid of red, blue and green with yellow on top")
     assert meaning(check_feasibility(parse("Make a pyramid of red, blue and green"))) == ["pyramid(blue,green,red)"]
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Tower A: orange, purple. Tower B: cyan, brown, red.", ["stack(cyan,brown,red)", "stack(orange,purple)"]),
+    ("Tower 1: red, green. Tower 2: blue, yellow.", ["stack(blue,yellow)", "stack(red,green)"]),
+    ("Stack 1: red, green. Stack 2: blue, yellow.", ["stack(blue,yellow)", "stack(red,green)"]),
+    ("Two towers. Tower one, bottom to top: orange, purple. Tower two, bottom to top: cyan, brown, red.",
+     ["stack(cyan,brown,red)", "stack(orange,purple)"]),
+    ("Tower 1 (top to bottom): orange, purple. Tower 2 (top to bottom): cyan, brown, red.",
+     ["stack(purple,orange)", "stack(red,brown,cyan)"]),
+    ("Build two towers. Build a tower of red and green. Build another tower of blue and yellow.",
+     ["stack(blue,yellow)", "stack(red,green)"]),
+])
+def test_towers_named_and_listed_are_each_a_tower(text, expected):
+    """Two named towers' lists had been one tower of all their cubes, silently ("Tower A: orange, purple. Tower B: ...");
+    a list without its direction leaves that tower's order free."""
+    schema = check_feasibility(parse(text))
+    assert sorted(meaning(schema)) == expected
+    if "bottom" not in text and "top" not in text:
+        assert all(type(p).__name__ != "Stack" for p in schema.goal_predicate().walk())
+
+
+@pytest.mark.parametrize("text", [
+    "Build two towers. Build a tower of red and green.",
+    "Build three towers. Tower A: orange, purple. Tower B: cyan, brown, red.",
+])
+def test_a_count_of_towers_said_before_fewer_towers_is_refused(text):
+    """The towers the count had beyond those described were made up of blue cubes nobody named, silently."""
+    with pytest.raises(ParseError, match="counts"):
+        parse(text)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("The grey block should end up underneath the red block, with the red one resting on it.", ["stack(gray,red)"]),
+    ("First put the white block down, then stack the black block on it, and finally the red block on the black one.",
+     ["stack(white,black,red)"]),
+    ("Lab note: the target is a two-high tower, white cube under the brown cube.", ["stack(white,brown)"]),
+    ("Currently the pink cube is on the purple cube. Add the cyan cube on top of the pink one.",
+     ["stack(purple,pink,cyan)", "start:stack(purple,pink)"]),
+    ("Stack red, then green, then blue, each one on the previous.", ["stack(red,green,blue)"]),
+    ("Lay the blocks out left to right as orange, orange, blue.", ["line[left_to_right](orange,orange,blue)"]),
+    ("send the purple block to the back of the table", ["in_region(purple,back)"]),
+    ("Put the red cube on the blue target.", ["on_patch(red,patch:blue)"]),
+])
+def test_phrasings_of_a_read_set_compile_to_what_they_say(text, expected):
+    """Each had been refused: "it" was the cube just named (red on red), "First" kept the chain from being read, "the
+    target is" had made a patch, "the pink one" kept the start from being read, "the previous" had no order, "lay out"
+    and "send" were no verbs of a row or a move."""
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "Put red on blue, then green on the previous one.",
+    "Stack red, then green, then blue, each one left of the previous.",
+    "The scene we want at the end has a single blue cube in the middle of the table and two orange cubes on either side of "
+    "it, one to its left and one to its right.",
+])
+def test_a_previous_cube_or_its_side_not_said_by_a_list_stays_refused(text):
+    with pytest.raises(ParseError):
+        check_feasibility(parse(text))

@@ -1254,7 +1254,7 @@ PLACEMENT_VERBS: dict[str, str] = {
     "chuck": "place", "bung": "place", "realise": "build", "realize": "build",
     "hoist": "place", "heave": "place", "ease": "place", "nudge": "place", "scoot": "place", "shove": "place", "haul": "place",
     "carry": "place", "lug": "place", "deposit": "place", "park": "place", "plant": "place", "station": "place",
-    "seat": "place", "perch": "place", "deliver": "place", "dump": "place", "tuck": "place",
+    "seat": "place", "perch": "place", "deliver": "place", "dump": "place", "tuck": "place", "send": "place",
     # a cube's own travel to where it ends ("the black cube glides to the left of the white cube", "the red cube travels
     # onto the green patch"): a voice that makes the cubes dancers or travellers (a spin, a roll or a toss stays refused)
     "glide": "place", "travel": "place", "drift": "place", "wander": "place", "stroll": "place", "waltz": "place",
@@ -1711,6 +1711,10 @@ FREE_PAIR_RE = re.compile(r"\b(?:the\s+)?colou?rs?\s+(?:and|or|,)\s+(?:the\s+)?o
 phrases :data:`FREE_CHOICE_RE` and :data:`ANY_ORDER_RE` read ("colours do not matter, in any order")."""
 
 FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "Stack red, then green, then blue, each one on the previous.": the stack said in order again, cube on cube (had been
+    # refused: "previous" picks a cube by an order nobody defined; here the list says it)
+    (re.compile(r"(\bstack\b[^.;:!?]*\bthen\b[^.;:!?]*?)\s*,?\s*(?:with\s+)?each\s+(?:one\s+|cube\s+|block\s+)?(?:on(?:\s+top\s+of)?|onto|above"
+                r"|resting\s+on)\s+the\s+(?:previous|last|one\s+before(?:\s+it)?)(?:\s+(?:one|cube|block))?(?=\s*[.!]?\s*$)"), r"\1"),
     # colours left free in other words ("Colours of the cubes are not specified.", "colours are not constrained",
     # "colours of your choosing", "The colours are entirely up to you"): said as the phrase FREE_CHOICE_RE reads, whose
     # check refuses them beside cubes named by colour
@@ -2461,6 +2465,40 @@ MEASURE_WORD_RE = re.compile(rf"(?i)\b(\d+|{'|'.join(w for w in ('two', 'three',
                              rf"\s+(?:piece|pieces|pcs?|units?|nos?\.?)\s+(?:of\s+)?(?:(?P<c>{COLOR_RE})\s+)?(?P<n>cubes?|blocks?)\b")
 """A count with a measure word (a literal translation of Chinese "3 ge" or a parts list's "pcs": "3 piece green cube",
 "4 pcs of red blocks"): that many cubes, read as "3 green cubes" (the count had reached one cube)."""
+
+_NAMED_TOWER_CUBE = rf"(?:the\s+)?(?:{COLOR_RE}|grey)(?:\s+(?:cube|block))?"
+NAMED_TOWER_LIST_RE = re.compile(
+    r"(?i)\b(?:(?:tower|stack|column)\s+(?:[A-H]|[1-9]|one|two|three|four)|(?:the\s+)?(?:first|second|third|fourth|1st|2nd|3rd|4th"
+    r"|other|next|last)\s+(?:tower|stack|column))\b\s*,?\s*(?:\(\s*)?(?P<dir>(?:listed\s+)?(?:from\s+)?(?:bottom\s+to\s+top|top\s+to\s+bottom"
+    r"|bottom\s+up|top\s+down))?\s*\)?\s*[:=]\s*"
+    rf"(?P<list>{_NAMED_TOWER_CUBE}(?:\s*(?:,\s*(?:and\s+|then\s+)?|\s+and\s+|\s+then\s+)\s*{_NAMED_TOWER_CUBE})+)\s*(?=[.;]|$)")
+"""A tower named by a letter, a digit or an ordinal with its cubes listed ("Tower A: orange, purple.", "Tower two, bottom
+to top: cyan, brown, red.", "Second tower: ..."): two or more in a text are each a tower of their own
+(:func:`named_towers_listed`)."""
+
+
+def named_towers_listed(text: str) -> str:
+    """Two or more towers each named and listed (:data:`NAMED_TOWER_LIST_RE`: "Tower A: orange, purple. Tower B: cyan, brown,
+    red.") -> one sentence per tower ("Build a tower of orange and purple. Build another tower of cyan, brown and red."; with
+    its direction said, "Build a tower: purple on orange."): the lists had been read as one tower of all the cubes,
+    silently.  A list without its direction leaves the tower's order free, as it is said; one named tower stays as written."""
+    found = list(NAMED_TOWER_LIST_RE.finditer(text))
+    if len(found) < 2:
+        return text
+
+    def tower(i: int, m: re.Match) -> str:
+        cubes = [re.sub(r"(?i)^the\s+|\s+(?:cube|block)$", "", c.strip()) for c in
+                 re.split(r"(?i)\s*,\s*(?:and\s+|then\s+)?|\s+and\s+|\s+then\s+", m.group("list")) if c.strip()]
+        head = "Build a tower" if i == 0 else "Build another tower"
+        if not m.group("dir"):
+            return f"{head} of {', '.join(cubes[:-1])} and {cubes[-1]}"
+        bottom_up = re.search(r"(?i)bottom\s+(?:to\s+top|up)", m.group("dir"))
+        return f"{head}: " + " on ".join(cubes[::-1] if bottom_up else cubes)
+
+    for i, m in reversed(list(enumerate(found))):
+        text = text[:m.start()] + tower(i, m) + text[m.end():]
+    return text
+
 
 STRUCTURE_NAME_RE = re.compile(r"\b((?:[Tt]ower|[Ss]tack|[Rr]ow|[Pp]ile|[Ll]ine|[Cc]olumn|[Ww]all|[Ss]cenario|[Ss]etup)s?)\s+"
                                r"(?:[A-H]|[1-9])\b(?!['\-])(?=\s*(?::|=|\(|\s-\s|\s+is\b|\s+has\b|\s+should\b))")
@@ -4846,8 +4884,8 @@ STRUCTURE_NOUN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "onto the yellow square": a square a cube is put on is a patch ("build a red square" stays a structure)
     (re.compile(rf"\b(on|onto|into|in|to)\s+the\s+({COLOR_RE})\s+square\b"),
      r"\1 the \2 patch"),
-    # "onto the blue target"
-    (re.compile(r"\btarget(s?)\b(?!\s+(?:goal\s+)?patch)"),
+    # "onto the blue target" ("the target is a two-high tower": what the goal is, no patch)
+    (re.compile(r"\btarget(s?)\b(?!\s+(?:goal\s+)?patch)(?!\s+(?:is|should\s+be|will\s+be)\s+(?:an?|one|\d+)\s)"),
      r"patch\1"),
     # "pick and place a block on ..."
     (re.compile(r"\bpick(?:\s+up)?\s+and\s+(place|put|set|drop)\b"),
@@ -4857,8 +4895,11 @@ STRUCTURE_NOUN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      r"\2 \1"),
     (re.compile(r"\bside by side\b"),
      "next to each other"),
+    # "Lay the blocks out left to right as orange, orange, blue": a row said by its direction
+    (re.compile(r"\blay\s+(?:(the\s+(?:blocks|cubes))\s+out|out\s+(the\s+(?:blocks|cubes)))(?=\s+(?:from\s+)?(?:left\s+to\s+right|right\s+to\s+left)\b)"),
+     lambda m: f"line up {m.group(1) or m.group(2)}"),
 )
-"""Structure and patch nouns said otherwise ("a column", "the target", "pick and place")."""
+"""Structure and patch nouns said otherwise ("a column", "the target", "pick and place", "lay out ... left to right")."""
 
 MAP_WORD_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\b(the\s+)?(?:top|upper)[\s-]+(left|right)\b(?!\s+of\b)(?=\s+(?:corner|edge|side)\b|\s*(?:[.,;!]|$))"),

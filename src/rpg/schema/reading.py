@@ -1287,6 +1287,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     original = lexicon.LINE_UP_DIRECTION_RE.sub(lexicon.line_up_direction, original)  # "line up ... going away from the robot"
     original = lexicon.hyphened_chains(original)  # "a red-on-yellow tower", "a 1-on-2 tower", "a three-block ..."
     original = lexicon.ARROW_DIRECTION_RE.sub(lexicon.arrow_direction, original)  # "l->r", "bottom -> top"
+    original = lexicon.named_towers_listed(original)  # "Tower A: orange, purple. Tower B: cyan, brown, red."
     original = lexicon.STRUCTURE_NAME_RE.sub(r"\1", original)  # "Tower A: ...", "tower B is pink on gray"
     original = lexicon.MEASURE_WORD_RE.sub(lambda m: f"{m.group(1)} {(m.group('c') or '') + ' ' if m.group('c') else ''}"
                                            f"{'cubes' if m.group('n').lower().startswith('c') else 'blocks'}", original)
@@ -1983,7 +1984,7 @@ _CHAIN_ROLES = (
 cube said: "it"), on or under a cube named ("directly above the blue one"), anywhere above or below one ("above blue"),
 at an end, or in the middle."""
 _CHAIN_ITEM_RE = re.compile(
-    rf"(?:(?:then|and|also|next|finally|lastly|after\s+that,?|afterwards,?)\s+)*(?:(?:put|place|set|stack|add|leave|lay)\s+)?(?:(?:a|an|the|another|1|(?:the\s+)?(?P<n>\d+|two|three|four|five|six|both))\s+)?"
+    rf"(?:(?:first(?:ly)?,?|then|and|also|next|finally|lastly|after\s+that,?|afterwards,?)\s+)*(?:(?:put|place|set|stack|add|leave|lay)\s+)?(?:(?:a|an|the|another|1|(?:the\s+)?(?P<n>\d+|two|three|four|five|six|both))\s+)?"
     rf"(?P<c>{COLOR_RE})(?:\s+(?:blocks?|cubes?|bricks?|ones?))?\s+(?:(?:is|goes|sits|should\s+be|must\s+be|comes|stands)\s+)?"
     r"(?P<role>" + "|".join(f"(?P<{k}>{r})" for k, r in _CHAIN_ROLES) + r")")
 _CHAIN_SEP_RE = re.compile(r"\s*(?:,\s*(?:and\s+)?(?:then\s+)?|;\s*|\s+and\s+(?:then\s+)?|\s+then\s+|\s+with\s+)")

@@ -340,6 +340,12 @@ def _identifier_label(instruction: str) -> tuple[str, str] | None:
     return m.group("label"), body
 
 
+_TOWERS_HEADING_RE = re.compile(r"(?i)^\s*(?:(?:please\s+)?(?:build|make|stack|create|construct)\s+)?(?P<n>two|three|four|five|[2-9])\s+"
+                                r"(?:towers|stacks)\s*[.:;]\s*(?=(?:please\s+)?(?:build|make|stack|create|construct)\s+(?:a|an|one|the\s+first)\s+(?:tower|stack)\b)")
+"""A first sentence that only counts towers before sentences that say each ("Build two towers. Build a tower of red and
+green. Build another tower of ..."): a heading (the count had been read as towers of its own, their cubes made up)."""
+
+
 def parse(instruction: str, _framed: bool = False) -> TaskSchema:
     """Read an instruction into a TaskSchema.
 
@@ -356,6 +362,19 @@ def parse(instruction: str, _framed: bool = False) -> TaskSchema:
     spaced = re.sub(r"[ \t]{2,}", " ", re.sub(r"\n[ \t\n]*\n", "\n", instruction))  # runs of blanks say nothing, and
     if spaced != instruction:  # patterns that begin with optional blanks had taken minutes over thousands of them
         schema = parse(spaced, _framed=_framed)
+        return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})
+    listed = lexicon.named_towers_listed(instruction)
+    heading = _TOWERS_HEADING_RE.match(listed)
+    if heading:  # "Build two towers. Build a tower of red and green. ...": a heading that counts the towers said after it
+        said = len(re.findall(r"(?i)\b(?:tower|stack)\b", listed[heading.end():]))
+        counted = int(heading.group("n")) if heading.group("n").isdigit() else lexicon.NUMBER_WORDS[heading.group("n").lower()]
+        if said != counted:
+            raise ParseError(f"\"{instruction[:80]}\" counts {counted} towers and then says {said}: the towers it does not "
+                             "describe would be made up; say each tower (e.g. \"Build a tower of red and green. Build another "
+                             "tower of blue and yellow.\"), or use --model")
+        listed = listed[heading.end():]
+    if listed != instruction:  # "Tower 1: red, green. Tower 2: ...": a tower each (the first name had been read as a label)
+        schema = parse(listed, _framed=_framed)
         return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})
     written = None if _framed else config.sentence(instruction)
     if written is not None:  # "structure=line; n=5; colour=green; region=back": the sentence it stands for

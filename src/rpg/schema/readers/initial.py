@@ -426,7 +426,7 @@ THERE_IS_START_RE = re.compile(
     r"(?:(?P<verb>(?:then\s+)?(?:put|place|move|take|set|bring|slide|push|lift|remove|unstack))\s+(?P<obj>it\b|the\s+(?P<moved>\w+)"
     r"|(?<=unstack\s)(?:them|both)(?:\s+(?:cubes|blocks))?(?=\s*[.!]?\s*$))"
     rf"|(?=(?:then\s+)?(?:put|place|set|stack|add)\s+(?:a|an|the)\s+{_NAME}\s+(?:cube|block)\s+(?:on\s+top\b(?!\s+of)"
-    r"|(?:on\s+top\s+of|onto|on)\s+(?:it\b|the\s+(?:(?P=top)|(?P=top2))(?:\s+(?:cube|block))?)\s*[.!]?\s*$)))")
+    r"|(?:on\s+top\s+of|onto|on)\s+(?:it\b|the\s+(?:(?P=top)|(?P=top2))(?:\s+(?:cube|block|one))?)\s*[.!]?\s*$)))")
 """A start said as what is there now, one cube on another, before a command that moves the top one ("There is a red cube on
 top of the blue cube. Put it on the green patch.", "The red cube is stacked on the blue cube. Take it off ..."): read
 as "Initially ..." (the stack had been read as the goal, and "it" as the stack: silently wrong).  Only where the command
@@ -465,7 +465,7 @@ _THERE_IS_RE = re.compile(r"(?i)^\s*there(?:'s|\s+is|\s+are|\s+stands)\s+")
 def _there_is_start(m: re.Match) -> str:
     top = m.group("top") or m.group("top2")
     onto_top = m.group("moved") and re.match(rf"(?i)\s+(?:cube|block)\s+(?:on\s+top\s+of|onto|on)\s+(?:it|the\s+{re.escape(top)})"
-                                             r"(?:\s+(?:cube|block))?\s*[.!]?\s*$", m.string[m.end():])  # the text's last words
+                                             r"(?:\s+(?:cube|block|one))?\s*[.!]?\s*$", m.string[m.end():])  # the text's last words
     if m.group("moved") and m.group("moved").lower() != top.lower() and not m.group("top") and not onto_top:
         return m.group(0)  # another cube moved: "the red cube is stacked on the blue cube" may be the goal's ("there is"
         # says what is there now, whichever cube moves); put on the top cube, the start's tower topped

@@ -271,6 +271,8 @@ class RelationalReading:
                 covered = kind == "on" and any(p == self.previous[1] and a in ("*", self.previous[0]) for a, p in self.onpatch)
                 referent = self.previous[0] if covered else self.previous[1]
                 a = self.obj(a_m)
+                if referent == a and self.previous[0] != a and kind in ("on", "under"):  # "gray underneath red, with the red one resting on it":
+                    referent = self.previous[0]  # no cube is related to itself: "it" is the other one of the pair said
                 self.subjects.add((a_m.color, a_m.label))
                 if referent in self.patch_names.values():  # "red next to the green patch and yellow on it": the patch or red?
                     raise ParseError(f"'{kind.replace('_', ' ')} it' may mean the cube {self.previous[0]} or the patch named "
