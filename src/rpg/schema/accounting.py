@@ -279,8 +279,11 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
     towers += len(re.findall(r"\b(?:tower|stack|column|pillar)\s+of\s+\w+\s+and\s+(?:1|another)\b(?!\s+(?:[a-z]+\s+)?"
                              r"(?:block|cube|tower|stack|column|pillar))", text))  # "one tower of red and one of green"
     if re.search(r"\b(?:on|onto|above|atop|over|under|below|beneath|underneath)\b"
-                 r"(?!\s+the\s+(?:far\s+|very\s+)?(?:left|right|front|back|middle|center|centre|table)\b|\s+@region)", text):
-        towers = 0  # a stack put on a stack is one tower: leave counting them to the structure's reader
+                 r"(?!\s+the\s+(?:far\s+|very\s+)?(?:left|right|front|back|middle|center|centre|table)\b|\s+@region"
+                 rf"|\s+top\b(?!\s+of)|\s+(?:the\s+|a\s+)?(?:{colors}|goal)\s+(?:goal\s+)?patch)", text):
+        towers = 0  # a stack put on a stack is one tower: leave counting them to the structure's reader (a cube put on a
+        # patch, or "on top" of no cube named, puts no stack on a stack: "Build a tower of red and green. Build another
+        # tower of blue and yellow. Put the white cube on the white patch." had made one tower of four, silently)
     towers += sum(int(n) for n in re.findall(r"\b(\d+)\s+(?:[a-z\-]+\s+){0,2}?(?:towers|stacks|columns|pillars)\b", text))
     if towers > 1:
         out.append(Mention(f"{towers} towers", "towers", count=towers))

@@ -474,9 +474,11 @@ VOICE_SIMILE_BLOCKER_RE = re.compile(
 """Words a simile chunk may not hold: a cube, colour, structure, patch, label or the table is not a compared thing but
 the task's own (so "..., like the red tower" stays)."""
 
-VOICE_NAME_NUMBER_RE = re.compile(r"\b[a-z][a-z\-]+\s+(?:no\.?\s*|#)?(?:\d+[a-z]?|one|two|three|four|five|six|seven|eight|nine|ten)\b")
-"""A number naming a thing of a voice's label ("day six", "trench 4", "camp two", "Context 17"): dropped with the
-label (a number anywhere else in a chunk keeps it)."""
+VOICE_NAME_NUMBER_RE = re.compile(r"\b[a-z][a-z\-]+\s+(?:(?:number|no\.?)\s*|#)?(?:\d+[a-z]?|one|two|three|four|five|six|seven|eight|nine"
+                                  r"|ten)\b(?!\s+[a-z])")
+"""A number naming a thing of a voice's label ("day six", "trench 4", "camp two", "Context 17", "sheet number four"):
+dropped with the label, "number" too (a number anywhere else in a chunk keeps it, and so does one a noun follows: "two
+cubes" counts)."""
 
 EVALUATION_WORD_RE = re.compile(
     r"\b(?:episodes?|seeds?|trials?|rollouts?|success(?:\s+(?:rates?|checks?|criteri(?:on|a)|conditions?|detectors?))?"
@@ -674,6 +676,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
     ("reference", r"\bthe\s+(?:very\s+)?(?:first|second|third|fourth|fifth|sixth|last|next|previous|former|latter)"
                   r"\s+(?:(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?))\b"
+                  r"|\beach\s+(?:one\s+|cube\s+|block\s+)?(?:on(?:\s+top\s+of)?|onto|above|atop|under|below|beneath)\s+the\s+"
+                  r"(?:first|last|next|following|previous)\b"  # "..., each one on the next" ("on the previous" after a list: dropped)
                   r"|\b(?:you|we|i|it|they|the\s+(?:robot|arm|gripper))\s+(?:just|already|have|had|has)\s+(?:just\s+|already\s+)?"
                   r"(?:moved|placed|picked|grabbed|used|put|touched|held|dropped|took|lifted|released|knocked|pushed)\b"
                   r"|\b(?:that|which)\s+(?:was|were|has\s+been|had\s+been)\s+(?:just\s+|already\s+|last\s+)?(?:moved|placed|picked|put"
@@ -1714,7 +1718,7 @@ FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "Stack red, then green, then blue, each one on the previous.": the stack said in order again, cube on cube (had been
     # refused: "previous" picks a cube by an order nobody defined; here the list says it)
     (re.compile(r"(\bstack\b[^.;:!?]*\bthen\b[^.;:!?]*?)\s*,?\s*(?:with\s+)?each\s+(?:one\s+|cube\s+|block\s+)?(?:on(?:\s+top\s+of)?|onto|above"
-                r"|resting\s+on)\s+the\s+(?:previous|last|one\s+before(?:\s+it)?)(?:\s+(?:one|cube|block))?(?=\s*[.!]?\s*$)"), r"\1"),
+                r"|resting\s+on)\s+the\s+(?:previous|one\s+before(?:\s+it)?)(?:\s+(?:one|cube|block))?(?=\s*[.!]?\s*$)"), r"\1"),
     # colours left free in other words ("Colours of the cubes are not specified.", "colours are not constrained",
     # "colours of your choosing", "The colours are entirely up to you"): said as the phrase FREE_CHOICE_RE reads, whose
     # check refuses them beside cubes named by colour
@@ -2471,7 +2475,8 @@ NAMED_TOWER_LIST_RE = re.compile(
     r"(?i)\b(?:(?:tower|stack|column)\s+(?:[A-H]|[1-9]|one|two|three|four)|(?:the\s+)?(?:first|second|third|fourth|1st|2nd|3rd|4th"
     r"|other|next|last)\s+(?:tower|stack|column))\b\s*,?\s*(?:\(\s*)?(?P<dir>(?:listed\s+)?(?:from\s+)?(?:bottom\s+to\s+top|top\s+to\s+bottom"
     r"|bottom\s+up|top\s+down))?\s*\)?\s*[:=]\s*"
-    rf"(?P<list>{_NAMED_TOWER_CUBE}(?:\s*(?:,\s*(?:and\s+|then\s+)?|\s+and\s+|\s+then\s+)\s*{_NAMED_TOWER_CUBE})+)\s*(?=[.;]|$)")
+    rf"(?P<list>{_NAMED_TOWER_CUBE}(?:\s*(?:,\s*(?:and\s+|then\s+)?|\s+and\s+|\s+then\s+)\s*{_NAMED_TOWER_CUBE})+)"
+    r"(?:\s*\(\s*(?P<dir2>(?:listed\s+)?(?:from\s+)?(?:bottom\s+to\s+top|top\s+to\s+bottom|bottom\s+up|top\s+down))\s*\))?\s*(?=[.;]|$)")
 """A tower named by a letter, a digit or an ordinal with its cubes listed ("Tower A: orange, purple.", "Tower two, bottom
 to top: cyan, brown, red.", "Second tower: ..."): two or more in a text are each a tower of their own
 (:func:`named_towers_listed`)."""
@@ -2490,9 +2495,10 @@ def named_towers_listed(text: str) -> str:
         cubes = [re.sub(r"(?i)^the\s+|\s+(?:cube|block)$", "", c.strip()) for c in
                  re.split(r"(?i)\s*,\s*(?:and\s+|then\s+)?|\s+and\s+|\s+then\s+", m.group("list")) if c.strip()]
         head = "Build a tower" if i == 0 else "Build another tower"
-        if not m.group("dir"):
+        said = m.group("dir") or m.group("dir2")
+        if not said:
             return f"{head} of {', '.join(cubes[:-1])} and {cubes[-1]}"
-        bottom_up = re.search(r"(?i)bottom\s+(?:to\s+top|up)", m.group("dir"))
+        bottom_up = re.search(r"(?i)bottom\s+(?:to\s+top|up)", said)
         return f"{head}: " + " on ".join(cubes[::-1] if bottom_up else cubes)
 
     for i, m in reversed(list(enumerate(found))):

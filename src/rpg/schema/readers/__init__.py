@@ -340,10 +340,47 @@ def _identifier_label(instruction: str) -> tuple[str, str] | None:
     return m.group("label"), body
 
 
-_TOWERS_HEADING_RE = re.compile(r"(?i)^\s*(?:(?:please\s+)?(?:build|make|stack|create|construct)\s+)?(?P<n>two|three|four|five|[2-9])\s+"
-                                r"(?:towers|stacks)\s*[.:;]\s*(?=(?:please\s+)?(?:build|make|stack|create|construct)\s+(?:a|an|one|the\s+first)\s+(?:tower|stack)\b)")
-"""A first sentence that only counts towers before sentences that say each ("Build two towers. Build a tower of red and
-green. Build another tower of ..."): a heading (the count had been read as towers of its own, their cubes made up)."""
+_TOWERS_COUNT_SENTENCE_RE = re.compile(
+    r"(?i)(?:^|(?<=[.;:!?])\s+)(?:(?:please\s+)?(?:build|make|stack|create|construct)\s+)?(?P<n>one|two|three|four|five|\d+)\s+"
+    r"(?:[a-z]+\s+)?(?:towers?|stacks?)(?:\s+of\s+(?:\d+|two|three|four|five)(?:\s+(?:cubes|blocks))?)?\s*(?:[.:;!]|$)")
+"""A sentence that only counts towers ("Build two towers.", "Two towers.", "Build 3 towers of two:"): beside sentences that
+say towers one by one, a heading of theirs (:func:`_towers_counted`)."""
+_TOWER_SAID_RE = re.compile(r"(?i)(?:\b(?:build|make|stack|create|construct|form)\s+|(?:^\s*|(?<=[.;:!?])\s+)(?:and\s+)?)(?:a|an|another"
+                            r"|one|1|the\s+(?:first|second|third|fourth|other|last))\s+(?:[a-z]+\s+)?(?:tower|stack)\b")
+"""A tower said on its own ("Build a tower of ...", "Build another tower of ...")."""
+_TOWER_NAMED_RE = re.compile(r"(?i)\b(?:(?:tower|stack|column)\s+(?:[A-Z]|[IVX]+|#?\d+|one|two|three|four)|(?:first|second|third|fourth"
+                             r"|1st|2nd|3rd|4th|other|next|last)\s+(?:tower|stack|column))\b(?=\s*(?:\([^)]*\)\s*)?,?[^.;:]{0,30}?"
+                             r"(?:[:=]|\s[-\u2013\u2014]\s))")
+"""A tower named before what it holds ("Tower A: ...", "Tower 2 (top to bottom): ...", "Second tower - ...")."""
+
+
+def _towers_counted(instruction: str) -> str:
+    """``instruction`` with its towers named and listed written one sentence each (:func:`lexicon.named_towers_listed`) and
+    a sentence that only counts towers beside towers said one by one dropped when it counts them.
+
+    Raises:
+        ParseError: towers named one by one that are not each a list of cubes ("Tower 1: red. Tower 2: blue.", "Tower I -
+            red, green"), or a count of towers other than the towers said one by one ("Build two towers. Build a tower of
+            red and green."): the towers had been merged into one, or those not said made up of cubes nobody named."""
+    heads = list(_TOWER_NAMED_RE.finditer(instruction))
+    named = sum(not re.search(r"\b(?:on|onto|atop|under|over|above|below)\b", instruction[h.end():nxt])  # "tower A = pink on
+                for h, nxt in zip(heads, [h.start() for h in heads[1:]] + [len(instruction)], strict=False))  # white": a chain
+    listed = lexicon.named_towers_listed(instruction)
+    if named >= 2 and len(lexicon.NAMED_TOWER_LIST_RE.findall(instruction)) < named:
+        raise ParseError(f"\"{instruction[:80]}\" names {named} towers and lists their cubes in a way not read for each: say "
+                         "each tower in a sentence of its own (e.g. \"Build a tower of red and green. Build another tower of "
+                         "blue and yellow.\"), or use --model")
+    counts = list(_TOWERS_COUNT_SENTENCE_RE.finditer(listed))
+    said = len(_TOWER_SAID_RE.findall(_TOWERS_COUNT_SENTENCE_RE.sub(" ", listed)))
+    if said and counts:  # "Build two towers. Build a tower of red and green. ...": a heading that counts the towers said
+        count = counts[0].group("n").lower()
+        counted = int(count) if count.isdigit() else lexicon.NUMBER_WORDS[count]
+        if len(counts) > 1 or said != counted:
+            raise ParseError(f"\"{instruction[:80]}\" counts {counted} towers and says {said} one by one: a tower it does "
+                             "not describe would be made up; say each tower (e.g. \"Build a tower of red and green. Build "
+                             "another tower of blue and yellow.\"), or use --model")
+        listed = (listed[:counts[0].start()] + " " + listed[counts[0].end():]).strip()
+    return listed
 
 
 def parse(instruction: str, _framed: bool = False) -> TaskSchema:
@@ -363,16 +400,7 @@ def parse(instruction: str, _framed: bool = False) -> TaskSchema:
     if spaced != instruction:  # patterns that begin with optional blanks had taken minutes over thousands of them
         schema = parse(spaced, _framed=_framed)
         return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})
-    listed = lexicon.named_towers_listed(instruction)
-    heading = _TOWERS_HEADING_RE.match(listed)
-    if heading:  # "Build two towers. Build a tower of red and green. ...": a heading that counts the towers said after it
-        said = len(re.findall(r"(?i)\b(?:tower|stack)\b", listed[heading.end():]))
-        counted = int(heading.group("n")) if heading.group("n").isdigit() else lexicon.NUMBER_WORDS[heading.group("n").lower()]
-        if said != counted:
-            raise ParseError(f"\"{instruction[:80]}\" counts {counted} towers and then says {said}: the towers it does not "
-                             "describe would be made up; say each tower (e.g. \"Build a tower of red and green. Build another "
-                             "tower of blue and yellow.\"), or use --model")
-        listed = listed[heading.end():]
+    listed = _towers_counted(instruction)
     if listed != instruction:  # "Tower 1: red, green. Tower 2: ...": a tower each (the first name had been read as a label)
         schema = parse(listed, _framed=_framed)
         return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})

@@ -841,7 +841,14 @@ _TOWER_CHAIN_RE = re.compile(rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:\s+(?P<
 """A tower's cubes said as a chain ("red on yellow", "blue under green under red"), in a text that asks for several towers."""
 
 
+MAX_TOWERS = C.MAX_OBJECTS // 2
+"""The most towers one task may ask for: two cubes each, :data:`rpg.domain.constants.MAX_OBJECTS` cubes in all."""
+
+
 def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
+    if not 2 <= k <= MAX_TOWERS:  # "Build 0 towers.", "Build 100 towers." (each had crashed with a traceback)
+        raise ParseError(f"\"{f.original[:80]}\" asks for {k} towers: a task here has from 2 to {MAX_TOWERS} towers "
+                         f"({C.MAX_OBJECTS} cubes at most); say how many towers and their cubes")
     if re.search(r"\b(?:1|one)\s+of\s+(?:them|which|those)\b", f.text):  # "two towers of four cubes, one of them purple":
         raise ParseError(f"\"{f.original[:80]}\" picks 'one of them' among several towers: which tower or cube is not "  # (every
                          "said; say each tower (e.g. \"one tower of purple cubes and one of red cubes\"), or use --model")  # cube purple)
@@ -889,6 +896,8 @@ def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
                                  "of green on yellow\"), or use --model")
             stack_colors = [list(up) for _ in range(k)]
     centers = b.unit_centers(k, 0.16)
+    if len(centers) < k or len(stack_colors) != k:  # more towers than the grid or the palette holds ("Build 20 towers.": it had crashed)
+        raise ParseError(f"\"{f.original[:80]}\" asks for {k} towers: more than fit the workspace; use fewer towers")
     for cols, xy in zip(stack_colors, centers, strict=True):
         names = [b.cube(c) for c in cols]
         b.place(stack_layout(names, xy))

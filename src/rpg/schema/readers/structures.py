@@ -1263,6 +1263,11 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         if hint:
             hints[len(items)] = hint.group(1)
         items.append(item)
+    if re.search(r"\bthen\b", f.text) and any(h == "top" and i < len(items) - 1 and i not in about_listed for i, h in hints.items()):
+        # "Stack white, then black on top, then brown": a step said to be the top before more steps (black had been put on
+        # brown, silently)
+        raise ParseError(f"\"{f.original[:80]}\" puts a cube on top and then more cubes after it: which one is the top is "
+                         "not clear; list the tower from the bottom (e.g. \"white, then black, then brown on top\"), or use --model")
     first_hint = min(hints) if hints else None
     if first_hint == 0 and not re.search(r"\bthen\b", f.text) and items.count(items[0]) == 2 and not grouped \
             and re.search(rf"\b(?:{TOWER_NOUNS})\s+of\b", text[mentions[0].end():]):
