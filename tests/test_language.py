@@ -7177,3 +7177,45 @@ def test_towers_merged_made_up_or_topped_out_of_order_are_refused(text):
 def test_towers_said_one_by_one_beside_a_patch_or_a_count_that_agrees_stay_apart(text, expected):
     """A cube put on a patch after two towers had joined them into one tower of four, silently."""
     assert sorted(meaning(check_feasibility(parse(text)))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "Make a circle of four and another circle of four",
+    "Make one pile of red and green and one of blue and yellow",
+    "Put red on green. Put white on green.",
+    "Stack red on green and blue on green",
+    "Stack red on green and blue on yellow, both on the blue patch",
+    "Stack red on green and white on black. All on the blue patch.",
+    "Stack red on green and blue on yellow and put them on the white patch",
+    "Build two towers of three cubes, both on the white patch",
+])
+def test_structures_merged_dropped_or_left_off_their_patch_are_refused(text):
+    """Each had compiled silently wrong (found by this session's second attack): two circles or piles said and one made,
+    a second cube put on a cube another was on slid between them, 'both on the blue patch' put one tower there, a patch
+    nobody named made up for the other tower."""
+    with pytest.raises(ParseError):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Make a row of three and another row of three", 2),
+    ("Pile red and green. Pile blue and yellow.", 2),
+    ("Build a pyramid of three. Build another pyramid of three.", 2),
+])
+def test_structures_said_one_by_one_are_each_made(text, expected):
+    """One row, one pile and one pyramid had been made of two said, silently."""
+    schema = check_feasibility(parse(text))
+    kinds = [type(p).__name__ for p in schema.goal_predicate().walk() if type(p).__name__ in ("InLine", "Piles", "Pyramid")]
+    groups = sum(len(p.groups) or 1 for p in schema.goal_predicate().walk() if type(p).__name__ == "Piles")
+    assert (groups if "Piles" in kinds else len(kinds)) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("heap the cyan and black blocks into one pile", ["pile(black,cyan)"]),
+    ("Let's make a rainbow row! Put red, orange, yellow, green and blue in a line from left to right.",
+     ["line[left_to_right](red,orange,yellow,green,blue)"]),
+    ("place a green block on the red block. place two more green blocks on the green block", ["stack(red,green,green,green)"]),
+    ("Put the red and blue cubes both on the blue patch", ["on_patch(blue,red,patch:blue)"]),
+])
+def test_one_structure_said_twice_or_one_group_on_a_patch_stays_one(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected

@@ -287,6 +287,21 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
     towers += sum(int(n) for n in re.findall(r"\b(\d+)\s+(?:[a-z\-]+\s+){0,2}?(?:towers|stacks|columns|pillars)\b", text))
     if towers > 1:
         out.append(Mention(f"{towers} towers", "towers", count=towers))
+    for m in ALL_ON_ONE_PATCH_RE.finditer(text):  # "stack red on green and blue on yellow, both on the blue patch"
+        out.append(Mention(m.group(0), "all on patch", color=canon(m.group("c")) if m.group("c") else None))
+    for kind, (one, many) in STRUCTURES_COUNTED.items():
+        # one more for each said to be another ("a row of 3 and another row of 3", "a second circle", "one pile of red and
+        # one of blue"), or the number said ("2 circles"), or a verb of its own each ("Pile red and green. Pile blue.")
+        more = len(re.findall(rf"\b(?:another|a\s+second|a\s+third|the\s+second|the\s+other)\s+(?:[a-z0-9\-]+\s+){{0,2}}?(?:{one})\b"
+                              rf"|\b(?:{one})\s+of\s+[^.;]*?\band\s+(?:1|another)\s+of\b", text))
+        numbered = [int(n) for n in re.findall(rf"\b(\d+)\s+(?:[a-z\-]+\s+){{0,2}}?(?:{many})\b", text)]
+        verbs = len(re.findall(r"(?:^|[.;:!]\s*|\band\s+)(?:pile|heap)(?:\s+up)?\s+(?!up\b)(?=\S)", text)) if kind == "pile" else 0
+        said_of = len(re.findall(rf"\b(?:a|an|1)\s+(?:[a-z0-9\-]+\s+){{0,2}}?(?:{one})\s+(?:of|with|from)\b", text))  # "a row of 3
+        # and a row of 3" (normalizing had written "another" as "a"); a structure said again ("a rainbow row! ... in a line")
+        # names no cubes of its own
+        said = max(1 + more if more else 0, max(numbered, default=0), verbs, said_of)
+        if said > 1:
+            out.append(Mention(f"{said} {kind}s", "structures", count=said, predicates=(kind,)))
     for words, kinds in RELATION_WORDS:
         m = re.search(words, text)
         if m:
@@ -366,6 +381,37 @@ def _carries_place_word(word: str, goal: list[P.Predicate], regions: set[str]) -
         return sorted(f"in_region {r}" for r in regions if r.count("_") == 1 or r.startswith("corner"))
     return sorted({f"in_region {r}" for r in regions} | orders & (AXIS_ORDERS["left"] | AXIS_ORDERS["front"])
                   | {p.name for p in goal if p.name in ("between", "in_line")})
+
+
+ALL_ON_ONE_PATCH_RE = re.compile(
+    r"\b(?:(?:both|all|each|2)(?:\s+(?:of\s+)?(?:them|the\s+(?:towers|stacks)|towers|stacks|tower|stack))?|them(?:\s+(?:both|all))?)"
+    r"\s+(?:(?:goes|go|is|are|sits?|stands?|should\s+be|must\s+be)\s+)?(?:on|onto)\s+(?:the\s+)?(?:(?P<c>[a-z]+)\s+)?(?:goal\s+)?patch\b")
+"""Several towers put on one patch at once ("..., both on the blue patch", "all on the pink patch", "put them on the white
+patch"): every tower of the task read must stand on a patch (only the last tower had been put there, silently)."""
+
+
+STRUCTURES_COUNTED: dict[str, tuple[str, str]] = {
+    "row": ("row|line", "rows|lines"), "circle": ("circle|ring", "circles|rings"), "pyramid": ("pyramid", "pyramids"),
+    "pile": ("pile|heap", "piles|heaps"),
+}
+"""Structures whose number a text says ("a row of 3 and another row of 3", "2 circles", "Pile red. Pile blue."): the
+task read must have as many (:func:`_count_structures`; towers are counted apart: :func:`_count_towers`).  Kind -> (the
+noun said of one, of several)."""
+
+
+def _count_structures(goal: list[P.Predicate], kind: str) -> float:
+    """How many structures of ``kind`` (a key of :data:`STRUCTURES_COUNTED`) the goal holds; unbounded where a layered
+    structure or a grouping may hold them (a wall's or pyramid's rows, piles by colour)."""
+    if kind == "row":
+        if any(isinstance(p, P.Grid | P.Pyramid | P.InLayers) for p in goal):
+            return float("inf")  # "the first row is red, the second blue": a wall's rows
+        return sum(isinstance(p, P.InLine) for p in goal)
+    if kind == "circle":
+        return sum(isinstance(p, P.InCircle) for p in goal)
+    if kind == "pyramid":
+        return sum(isinstance(p, P.Pyramid) for p in goal)
+    piles = [p for p in goal if isinstance(p, P.Piles)]
+    return float("inf") if any(p.by for p in piles) else sum(len(p.groups) or 1 for p in piles)
 
 
 def _count_towers(goal: list[P.Predicate]) -> int:
@@ -584,6 +630,20 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                 # ("build two towers. Tower A: ... Tower B: ...": two more had been made up of cubes nobody named)
                 raise UnaccountedMention(f"it names {m.count} towers but the task read has {have}")
             record.append({"mention": m.words, "kind": "towers", "consumed_by": f"{have} stacks"})
+        elif m.kind == "all on patch":
+            stacks = [p for p in goal if isinstance(p, P.Stack)]
+            colour = {a.name: a.color for a in schema.assets}
+            placed = {n for p in goal if isinstance(p, P.OnPatch) and m.color in (None, colour.get(p.patch))
+                      for n in ((p.a,) + tuple(getattr(p, "among", ())))}  # on that patch ("both on the white patch")
+            if len(stacks) > 1 and not all(set(p.objects) & placed for p in stacks):
+                raise UnaccountedMention(f"'{m.words}' puts every tower on a patch but the task read puts "
+                                         f"{sum(bool(set(p.objects) & placed) for p in stacks)} of {len(stacks)} there")
+            record.append({"mention": m.words, "kind": "all on patch", "consumed_by": "every tower on a patch"})
+        elif m.kind == "structures":
+            have = _count_structures(goal, m.predicates[0])
+            if have < m.count:  # "Make a row of 3 and another row of 3": one row had been made, silently
+                raise UnaccountedMention(f"it names {m.count} {m.predicates[0]}s but the task read has {have}")
+            record.append({"mention": m.words, "kind": "structures", "consumed_by": f"{have} {m.predicates[0]}s"})
         elif m.kind == "direction":
             along = sorted(_orders(goal) & AXIS_ORDERS[m.region])
             if not along:

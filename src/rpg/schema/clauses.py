@@ -228,6 +228,11 @@ def read(text: str, colors: str, canon) -> Plan | None:
                 if len({t for t, _ in hits}) > 1:
                     return None  # which tower is meant is not said
                 anchor = max(hits, key=lambda h: h[1]) if cl.rel == "above" else min(hits, key=lambda h: h[1])
+                t0, i0 = anchor
+                if (cl.rel == "above" and i0 + 1 < len(towers[t0]) and len(set(towers[t0])) == len(towers[t0])) or (
+                        cl.rel == "below" and i0 > 0):
+                    return None  # "red on green. white on green": green has a cube on it already (white had been put
+                    # between them, so red was no longer on green: silently against the first clause)
         t, i = anchor
         if cl.region and regions[t] not in (None, cl.region):
             return None

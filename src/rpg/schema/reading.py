@@ -223,6 +223,8 @@ _VOICE_WORLD_ASIDE_RE = re.compile(r"\b(?:not|no|never)\b")
 _OPENING_FILLERS = frozenset({"and", "so", "now", "please", "just", "oh", "well", "then", "go", "come"})
 _NOT_VERBS = frozenset({"up", "down", "out", "off", "in", "on", "over", "away", "back", "well", "low", "high"})
 """Words the dictionary also knows as verbs that a voice's sentence holds as particles or adverbs ("Logos up."): no verb."""
+_PERSONS_OWN = frozenset({"your", "yer", "ya", "his", "her", "their", "my", "our"})
+"""Possessives that make a thing a person's own ("your air gauge", "her mouse")."""
 _AUXILIARY_LEMMAS = frozenset({"be", "have", "do", "can", "will", "shall", "may", "might", "must", "would", "could", "should"})
 
 
@@ -251,8 +253,10 @@ def _voice_sentence(sentence: str) -> bool:
             or lexicon.VOICE_SENTENCE_HAZARD_RE.search(weighed) or lexicon.RETRACTION_RE.search(low):
         return False
     opening = list(itertools.dropwhile(lambda w: w in _OPENING_FILLERS, words))[:3]
-    if opening and _imperative(opening) and not {opening[0], *lexicon.lemmas(opening[0])} & lexicon.REGARD_VERBS:
-        return False  # "Wipe the whiteboard.", "Pinch lightly.", "Don't proceed.": said to the one who does the task
+    if opening and _imperative(opening) and not {opening[0], *lexicon.lemmas(opening[0])} & lexicon.REGARD_VERBS \
+            and not (len(opening) > 1 and opening[1] in _PERSONS_OWN):
+        return False  # "Wipe the whiteboard.", "Pinch lightly.", "Don't proceed.": said to the one who does the task (a thing
+        # of a person's own, "Check your air gauge.", is that person's world: no cube is anyone's)
     if _VOICE_WORLD_ASIDE_RE.search(low) and len(words) < 4:
         return False  # "No tools!", "No dragging!": a short negation has no world of its own to belong to: the task's
     verb = False
