@@ -7219,3 +7219,31 @@ def test_structures_said_one_by_one_are_each_made(text, expected):
 ])
 def test_one_structure_said_twice_or_one_group_on_a_patch_stays_one(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "Put the tower of red and green left of the tower of blue and yellow",
+    "Build one tower of red, green and one of blue, yellow",
+    "Build a tower using red and green, and another using blue and yellow",
+    "Goal: a row of red and green, and blue on yellow",
+])
+def test_two_towers_read_as_one_or_a_relation_dropped_beside_a_row_are_refused(text):
+    """Each had compiled silently wrong (second attack): the towers merged into one, "blue on yellow" made two more cubes
+    of the row."""
+    with pytest.raises(ParseError):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Stack red, green, blue bottom to top. Stack white, black bottom to top.", ["stack(red,green,blue)", "stack(white,black)"]),
+    ("Make a row of red and green, and put blue on yellow", ["line(green,red)", "stack(yellow,blue)"]),
+    ("put the yellow block on the red and green blocks", ["pyramid(green,red|yellow)"]),
+])
+def test_towers_commanded_one_by_one_and_a_pair_beside_a_row_are_read_apart(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected
+
+
+def test_a_step_s_then_leaves_its_tower_s_order_free():
+    """"Then stack blue and yellow." had ordered blue under yellow (the step's "then" read as the list's order)."""
+    schema = check_feasibility(parse("Stack red and green. Then stack blue and yellow."))
+    assert sorted(type(p).__name__ for p in schema.goal_predicate().walk()) == ["And", "UnorderedStack", "UnorderedStack"]

@@ -276,8 +276,13 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
                          text):  # "red cubes on the left, blue cubes on the right": a group said without "the"
         out.append(Mention(m.group("w"), "plural", color=canon(m.group("c"))))
     towers = len(re.findall(r"\b(?:a|an|1|another)\s+(?:[a-z0-9\-]+\s+){0,2}?(?:tower|stack|column|pillar)\b", text))
-    towers += len(re.findall(r"\b(?:tower|stack|column|pillar)\s+of\s+\w+\s+and\s+(?:1|another)\b(?!\s+(?:[a-z]+\s+)?"
-                             r"(?:block|cube|tower|stack|column|pillar))", text))  # "one tower of red and one of green"
+    towers += len(re.findall(r"\b(?:tower|stack|column|pillar)\s+(?:of|using|with|from)\s+[^.;]*?\band\s+(?:1|another)\b"
+                             r"(?!\s+(?:[a-z]+\s+)?(?:block|cube|tower|stack|column|pillar))", text))  # "one tower of red and one of
+    # green", "a tower of red, green and one of blue, yellow"
+    towers += len(re.findall(r"(?:^|[.;]\s+)(?:tower|stack)\s+(?:from\s+)?(?:bottom|top)\b", text))  # "Tower bottom to top: red,
+    # green. Tower bottom to top: ...": a tower each
+    described = re.findall(rf"\bthe\s+(?:tower|stack)\s+(?:of|with)\s+(?:the\s+)?({colors})\b", text)
+    towers += len(set(described)) if len(set(described)) > 1 else 0  # "the tower of red and green left of the tower of blue"
     if re.search(r"\b(?:on|onto|above|atop|over|under|below|beneath|underneath)\b"
                  r"(?!\s+the\s+(?:far\s+|very\s+)?(?:left|right|front|back|middle|center|centre|table)\b|\s+@region"
                  rf"|\s+top\b(?!\s+of)|\s+(?:the\s+|a\s+)?(?:{colors}|goal)\s+(?:goal\s+)?patch)", text):
@@ -285,6 +290,11 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
         # patch, or "on top" of no cube named, puts no stack on a stack: "Build a tower of red and green. Build another
         # tower of blue and yellow. Put the white cube on the white patch." had made one tower of four, silently)
     towers += sum(int(n) for n in re.findall(r"\b(\d+)\s+(?:[a-z\-]+\s+){0,2}?(?:towers|stacks|columns|pillars)\b", text))
+    commands = [c for c in re.split(r"(?<=[.;!?])\s+|,?\s+and\s+then\s+|;\s*then\s+", text)
+                if re.match(r"\s*(?:please\s+)?(?:then\s+)?stack\s+", c) and len(re.findall(rf"\b(?:{colors})\b", c)) >= 2
+                and not re.search(r"\b(?:on|onto|atop|under|over|above|below|beneath)\b", c)]
+    if len(commands) > 1:  # "Stack red, green, blue. Stack white, black.": a tower each (one of five had been read, silently)
+        towers = max(towers, len(commands))
     if towers > 1:
         out.append(Mention(f"{towers} towers", "towers", count=towers))
     for m in ALL_ON_ONE_PATCH_RE.finditer(text):  # "stack red on green and blue on yellow, both on the blue patch"
@@ -833,7 +843,8 @@ def _pair_relation_dropped(f: Features, schema: TaskSchema, cubes: list) -> Pars
     parts = list(schema.goal_predicate().conjuncts())
     if schema.initial_state.structures:
         return None  # "Initially the red cube is on the blue cube": how the cubes start, not the goal
-    for m in lexicon.PAIR_RELATION_RE.finditer(f.text):
+    bare = [] if re.search(r"\b(?:start\w*|initial\w*|begin\w*)\b", f.text) else lexicon.PAIR_RELATION_BARE_RE.finditer(f.text)
+    for m in itertools.chain(lexicon.PAIR_RELATION_RE.finditer(f.text), bare):  # (a start is refused for what it is)
         a, b = canon_color(m.group("a")), canon_color(m.group("b"))
         named = {c: [x.name for x in cubes if x.color == c] for c in (a, b)}
         if a == b or any(len(v) != 1 for v in named.values()):

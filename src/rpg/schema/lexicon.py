@@ -5165,3 +5165,9 @@ PAIR_RELATION_RE = re.compile(
     rf"|(?:to\s+the\s+)?left\s+of|(?:to\s+the\s+)?right\s+of|under|far\s+from)\s+the\s+(?P<b>{COLOR_RE})\s+(?:block|cube|one)\b")
 """A relation said between two cubes named by colour ("... and put the yellow cube on the blue cube",
 "the red cube should be next to the blue cube"): :func:`_pair_relation_dropped` checks the goal relates the two."""
+PAIR_RELATION_BARE_RE = re.compile(
+    rf"(?:\b(?:put|place|set|stack|move)|,\s*and)\s+(?:the\s+)?(?P<a>{COLOR_RE})(?:\s+(?:block|cube|one))?\s+(?P<rel>on\s+top\s+of|onto|on|next\s+to"
+    rf"|beside|behind|in\s+front\s+of|(?:to\s+the\s+)?left\s+of|(?:to\s+the\s+)?right\s+of|under|far\s+from)\s+(?:the\s+)?"
+    rf"(?P<b>{COLOR_RE})\b(?!\s+(?:goal\s+)?(?:patch|pad|mat|tile|square|area|region|zone)|\s*(?:,|and\b|or\b|&|\+))")
+"""The same relation said with bare colours after a verb ("... and put blue on yellow"): a row of four had been made and
+the relation dropped, silently."""

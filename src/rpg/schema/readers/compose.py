@@ -526,7 +526,8 @@ def recognize_independent_parts(f: Features, b: Builder) -> bool:
     its layout, and a part that names no place is moved clear of the others.  Tried last: a
     text any other reader takes is not split.  Parts that name a colour in common, refer to
     one another ("next to it") or cannot be laid out apart are not read here."""
-    texts = [t.strip(" ,.;!") for t in PART_SPLIT_RE.split(f.text)]
+    texts = [re.sub(r"^(?:then|next|after\s+that|afterwards)\s*,?\s+", "", t.strip(" ,.;!"))  # "Then stack blue and yellow.":
+             for t in PART_SPLIT_RE.split(f.text)]  # the step's "then" orders the parts, not the part's cubes (it had ordered them)
     texts = [t for t in texts if t]
     verb = re.match(r"(?:please\s+)?((?:put|place|move|set|bring|pile|stack|line\s+up|arrange|gather|group|heap|cluster)\s+)"
                     r"(?=(?:the|all|every|each|both)\b)", texts[0]) if texts else None

@@ -1231,6 +1231,10 @@ def recognize_tower_sequence(f: Features, b: Builder) -> bool:
         return False
     if "@" in mark_references(f.text) or len(DESCRIBED_TOWER_RE.findall(f.text)) >= 2:  # relations, or several towers
         return False
+    listing = [c for c in re.split(r"(?<=[.;!?])\s+", f.text) if re.search(r"\b(?:stack|tower)\b", c)
+               and len(re.findall(rf"\b(?:{COLOR_RE})\b", c)) >= 2]
+    if len(listing) >= 2:  # "Stack red, green, blue bottom to top. Stack white, black bottom to top.": a tower each (one
+        return False  # tower of five had been read, silently)
     text = BARE_END_RE.sub(lambda m: f"{m.group('c')} at the {BARE_END_WORD.get(m.group('end'), m.group('end'))}",
                            f.text)  # "red top, blue bottom", "..., red first"
     text = SEQ_HINT_RE.sub(lambda m: f" <{m.group(1)}> ", text)
