@@ -7247,3 +7247,28 @@ def test_a_step_s_then_leaves_its_tower_s_order_free():
     """"Then stack blue and yellow." had ordered blue under yellow (the step's "then" read as the list's order)."""
     schema = check_feasibility(parse("Stack red and green. Then stack blue and yellow."))
     assert sorted(type(p).__name__ for p in schema.goal_predicate().walk()) == ["And", "UnorderedStack", "UnorderedStack"]
+
+
+@pytest.mark.parametrize("text", [
+    "Spell CAT. Spell DOG.",
+    "Make two rows of three: red green blue, yellow white black",
+    "Make two rows of three, the first red, green, blue and the second white, black, pink",
+    "Stack red on green and blue on yellow, both left of white",
+    "Stack red on green and blue on yellow, both left of the white patch",
+    "Stack red on green and blue on yellow. Put the second tower on the white patch.",
+    "Stack red on green and blue on yellow, then put it on the white patch",
+])
+def test_a_word_a_row_or_a_tower_lost_among_several_is_refused(text):
+    """Each had compiled silently wrong (second attack): "Spell CAT." dropped as a title, rows said cube by cube made a
+    grid that judges only its shape, "both left of white" related one tower, "the second tower" and "it" moved the first."""
+    with pytest.raises(ParseError):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("CHALLENGE 2 - Tower Rush. Build a tower of red and blue.", ["stack(red,blue)"]),
+    ("Make a 2x3 grid of red, green, blue, white, black and pink cubes", ["grid(2x3:black,blue,green,pink,red,white)"]),
+    ("Put red on blue and put it on the green patch", ["on_patch(blue,patch:green)", "stack(blue,red)"]),
+])
+def test_a_title_a_grid_of_named_cubes_and_it_of_one_tower_stay_read(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected

@@ -297,6 +297,8 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
         towers = max(towers, len(commands))
     if towers > 1:
         out.append(Mention(f"{towers} towers", "towers", count=towers))
+    for m in ALL_RELATED_RE.finditer(text):  # "stack red on green and blue on yellow, both left of white"
+        out.append(Mention(m.group(0), "all related", color=canon(m.group("c"))))
     for m in ALL_ON_ONE_PATCH_RE.finditer(text):  # "stack red on green and blue on yellow, both on the blue patch"
         out.append(Mention(m.group(0), "all on patch", color=canon(m.group("c")) if m.group("c") else None))
     for kind, (one, many) in STRUCTURES_COUNTED.items():
@@ -392,6 +394,13 @@ def _carries_place_word(word: str, goal: list[P.Predicate], regions: set[str]) -
     return sorted({f"in_region {r}" for r in regions} | orders & (AXIS_ORDERS["left"] | AXIS_ORDERS["front"])
                   | {p.name for p in goal if p.name in ("between", "in_line")})
 
+
+ALL_RELATED_RE = re.compile(
+    r"\b(?:(?:both|all|each|2)(?:\s+(?:of\s+)?(?:them|the\s+(?:towers|stacks)|towers|stacks|tower|stack))?|them(?:\s+(?:both|all))?)"
+    r"\s+(?:(?:goes|go|is|are|sits?|stands?|should\s+be|must\s+be)\s+)?(?:(?:to\s+the\s+)?(?:left|right)\s+of|in\s+front\s+of|behind"
+    rf"|next\s+to|beside|far\s+from)\s+(?:the\s+)?(?P<c>{COLOR_RE})\b")
+"""Several towers related at once to one cube ("..., both left of white"): every tower of the task read must be (only the
+last had been, silently)."""
 
 ALL_ON_ONE_PATCH_RE = re.compile(
     r"\b(?:(?:both|all|each|2)(?:\s+(?:of\s+)?(?:them|the\s+(?:towers|stacks)|towers|stacks|tower|stack))?|them(?:\s+(?:both|all))?)"
@@ -640,6 +649,15 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                 # ("build two towers. Tower A: ... Tower B: ...": two more had been made up of cubes nobody named)
                 raise UnaccountedMention(f"it names {m.count} towers but the task read has {have}")
             record.append({"mention": m.words, "kind": "towers", "consumed_by": f"{have} stacks"})
+        elif m.kind == "all related":
+            stacks = [p for p in goal if isinstance(p, P.Stack)]
+            ref = {a.name for a in schema.assets if a.color == m.color}  # the cube or patch of that colour
+            related = {n for p in goal if not isinstance(p, P.Stack | P.OnPatch | P.And | P.Not) and set(p.object_names()) & ref
+                       for n in p.object_names()}
+            if len(stacks) > 1 and not all(set(p.objects) & related for p in stacks):
+                raise UnaccountedMention(f"'{m.words}' relates every tower to the {m.color} cube but the task read relates "
+                                         f"{sum(bool(set(p.objects) & related) for p in stacks)} of {len(stacks)}")
+            record.append({"mention": m.words, "kind": "all related", "consumed_by": "every tower related"})
         elif m.kind == "all on patch":
             stacks = [p for p in goal if isinstance(p, P.Stack)]
             colour = {a.name: a.color for a in schema.assets}
@@ -713,6 +731,18 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                 place = m.region.replace("_", " ")
                 raise UnaccountedMention(f"the place '{place}' has no part in the task read")
             record.append({"mention": m.region.replace("_", " "), "kind": "place", "consumed_by": f"in_region {m.region}"})
+    if sum(isinstance(p, P.Stack) for p in goal) > 1 and re.search(r"\b(?:put|place|move|set|slide|push|bring|shift)\s+(?:it|that)\b"
+                                                                 r"(?!\s+(?:cube|block))", text):
+        # "Stack red on green and blue on yellow, then put it on the white patch": which tower (the first had been moved)
+        raise UnaccountedMention("'it' may be either tower; say which (e.g. \"put the tower with the red cube on top on the "
+                                 "white patch\")")
+    grids = [p for p in goal if isinstance(p, P.Grid) and p.rows > 1 and p.layers == 1]
+    if grids and not any(isinstance(p, P.InLine | P.InLayers) for p in goal) and re.search(r"\b(?:rows|lines)\b", text) \
+            and len(re.findall(rf"\b(?:{colors})\b", text)) >= grids[0].rows * grids[0].cols \
+            and re.search(r"\bfirst\b[^.]*\bsecond\b|:\s*\S", text):
+        # "two rows of three: red green blue, yellow white black": which cubes share a row is said, and a grid judges only
+        # its shape (any cube in any site): the rows had been lost, silently
+        raise UnaccountedMention("it says which cubes make each row but the task read is a grid that judges only its shape")
     return record
 
 

@@ -676,6 +676,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
     ("reference", r"\bthe\s+(?:very\s+)?(?:first|second|third|fourth|fifth|sixth|last|next|previous|former|latter)"
                   r"\s+(?:(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?))\b"
+                  r"|\b(?:put|place|move|set|slide|push|bring|shift)\s+the\s+(?:first|second|third|fourth|last|other)\s+(?:tower|stack"
+                  r"|pile|row|line)\b"  # "Put the second tower on the white patch": which tower (the first had been moved)
                   r"|\beach\s+(?:one\s+|cube\s+|block\s+)?(?:on(?:\s+top\s+of)?|onto|above|atop|under|below|beneath)\s+the\s+"
                   r"(?:first|last|next|following|previous)\b"  # "..., each one on the next" ("on the previous" after a list: dropped)
                   r"|\b(?:you|we|i|it|they|the\s+(?:robot|arm|gripper))\s+(?:just|already|have|had|has)\s+(?:just\s+|already\s+)?"

@@ -340,7 +340,10 @@ def _title_heading(sentence: str, rest: str) -> bool:
     content = {m.group(0) for m in lexicon.TASK_CONTENT_RE.finditer(low)}
     hazards = {m.group(0) for m in lexicon.FRAMING_SENTENCE_HAZARD_RE.finditer(low)} - content
     rest_words = set(re.findall(r"[a-z]+", rest.lower()))
-    return not hazards and all(c in rest_words or c.rstrip("s") in rest_words or f"{c}s" in rest_words for c in content)
+    spelled = {w.lower() for w in words if len(w) > 1 and w.isupper()} if re.search(  # "Spell CAT. Spell DOG.": a word
+        r"(?i)\b(?:spell\w*|reads?|word)\b", sentence) else set()  # to spell, no title
+    return not hazards and spelled <= rest_words and all(c in rest_words or c.rstrip("s") in rest_words or f"{c}s" in rest_words
+                                                         for c in content)
 
 
 def _address_chunk(chunk: str) -> bool:
