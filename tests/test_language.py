@@ -7272,3 +7272,39 @@ def test_a_word_a_row_or_a_tower_lost_among_several_is_refused(text):
 ])
 def test_a_title_a_grid_of_named_cubes_and_it_of_one_tower_stay_read(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "two of the three green cubes on the blue patch",
+    "Of the three green cubes, two go on the blue patch.",
+    "put all but one of the three red cubes on the blue patch",
+    "put all the red cubes but one on the blue patch",
+    "put 2-3 red cubes on the blue patch",
+    "put two to three red cubes on the patch",
+    "put 3 or so red cubes on the blue patch",
+    "put red cube * 2 on the blue patch",
+    "put -2 red cubes on the blue patch",
+    "put the red cube on the blue patch and all other cubes on the green patch",
+    "stack 2 cubes: red, blue, green",
+    "make a line of 3 cubes: red, blue",
+    "put two A blocks on the blue patch",
+    "put 3 3 cubes on the blue patch",
+])
+def test_partitives_ranges_counts_against_lists_and_shared_labels_are_refused(text):
+    """Each had compiled silently wrong (third attack): the whole group placed for "two of the three", one number taken
+    from a range, every other cube made up, a list padded to its count or cut, a label's cubes made cubes of colours."""
+    with pytest.raises(ParseError):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Build two towers: one of three red blocks and one of two blue blocks.", ["stack(blue,blue)", "stack(red,red,red)"]),
+    ("Sir, please make a circle of cubes - 3 green and 3 yellow - in the middle of the table.",
+     ["circle(green,green,green,yellow,yellow,yellow)@center"]),
+    ("Make a tower of 3 cubes: red, blue, green.", ["stack(red,blue,green)"]),
+    ("Put the B, the A and the T blocks in a row from left to right.", ["line[left_to_right](B,A,T)"]),
+    ("Stack the 3 blocks: red, green, blue.", ["stack(red,green,blue)"]),
+])
+def test_one_of_each_structure_a_list_that_fits_its_count_and_labels_listed_stay_read(text, expected):
+    """"the T blocks" after "the B, the A" had dropped the T cube, silently."""
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected

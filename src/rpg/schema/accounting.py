@@ -736,6 +736,11 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
         # "Stack red on green and blue on yellow, then put it on the white patch": which tower (the first had been moved)
         raise UnaccountedMention("'it' may be either tower; say which (e.g. \"put the tower with the red cube on top on the "
                                  "white patch\")")
+    for m in re.finditer(rf"\b(\d+)\s+(?:cubes|blocks)\b[^.:;]{{0,25}}:\s*((?:{colors})(?:\s*,\s*(?:and\s+)?(?:{colors})|\s+and\s+(?:{colors}))+)"
+                         r"\s*(?:[.;]|$)", text):  # "stack 2 cubes: red, blue, green": more or fewer listed than counted (the
+        listed = re.findall(rf"\b(?:{colors})\b", m.group(2))  # rest had been made up, or the list padded, silently)
+        if len(listed) != int(m.group(1)):
+            raise UnaccountedMention(f"'{m.group(0).strip()}' counts {m.group(1)} cubes and lists {len(listed)}")
     grids = [p for p in goal if isinstance(p, P.Grid) and p.rows > 1 and p.layers == 1]
     if grids and not any(isinstance(p, P.InLine | P.InLayers) for p in goal) and re.search(r"\b(?:rows|lines)\b", text) \
             and len(re.findall(rf"\b(?:{colors})\b", text)) >= grids[0].rows * grids[0].cols \

@@ -841,6 +841,24 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                  # own colour: ...", "on the patch of the same color": each cube's own patch)
      "asks for every cube of the scene, whose count and colours the instruction does not say: name the cubes (e.g. \"put "
      "the red and the green cube on the blue patch\")"),
+    # some of a group ("two of the three green cubes", "2 out of 4", "all but one", "every red cube but one"): which cubes
+    # is not said (the whole group had been placed, silently)
+    ("quantity", r"(?<!\bone\s)(?<!\b1\s)\b(?:[2-9]|two|three|four|five|six|some|most|half)\s+(?:of|out\s+of)\s+(?:the\s+|these\s+|those\s+)?(?:\d+|two|three"
+                 r"|four|five|six|seven|eight|nine|ten)\s+(?:[a-z]+\s+)?(?:cubes|blocks|ones)\b|\bof\s+the\s+(?:\d+|two|three|four|five|six)"
+                 r"\s+(?:[a-z]+\s+)?(?:cubes|blocks)\s*,\s*(?:\d+|one|two|three|four|five)\b|\ball\s+but\b"
+                 r"|\b(?:cubes?|blocks?)\s+but\s+(?:\d+|one|two|three|four|five)\b",
+     "picks some cubes of a group (\"two of the three\", \"all but one\"): which of them is not said; name the cubes and "
+     "their count (e.g. \"put two green cubes on the blue patch and one green cube on the table\")"),
+    # a range or an approximate count ("2-3 red cubes", "two to three", "2+", "3 or so", "3 and up", "2/3", "cube * 2"):
+    # one number had been taken, silently ("at least" and "up to" were refused already)
+    ("quantity", r"\b\d+\s*(?:-|\u2013|to|/)\s*\d+\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b|\b(?:one|two|three|four|five|six)\s*(?:-|to)\s*"
+                 r"(?:two|three|four|five|six|seven|eight)\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b|\b\d+\s*\+\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b"
+                 r"|\b\d+\s+(?:or\s+so|and\s+up|or\s+more|or\s+fewer|or\s+less|ish)\b|\b(?:cube|block)s?\s*[*\u00d7]\s*\d+\b"
+                 r"|(?:^|(?<=\s))-\d+\s+(?:[a-z]+\s+)?(?:cubes?|blocks?)\b",
+     "gives a range or an approximate count (\"2-3 cubes\", \"3 or so\"): a task has an exact number of cubes; say it"),
+    # "put the red cube on the blue patch and all other cubes on the green patch": cubes nobody named (made up)
+    ("quantity", r"\b(?:all|every|each)\s+(?:the\s+)?other\s+(?:cubes?|blocks?)\b",
+     "asks for every other cube of the scene, whose count and colours the instruction does not say: name the cubes"),
     ("quantity", r"\b(?:minus|negative)\s+(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b|\bzero\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b",
      "is a quantity the domain cannot hold (a count below one): a task places whole cubes, one or more; say how many cubes"),
     ("contradiction", r"\b(?:on|onto|on\s+top\s+of|atop|under|below|beneath|next\s+to|beside|left\s+of|right\s+of|behind|in\s+front\s+of)"

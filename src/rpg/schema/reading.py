@@ -1280,6 +1280,11 @@ def _normalized(instruction: str, strict: bool) -> tuple[str, str, tuple[tuple[s
     return text, original, tuple(dropped)
 
 
+LABEL_LIST_PLURAL_RE = re.compile(r"(\bthe\s+[A-Z]\b(?:\s*,\s*the\s+[A-Z]\b)*\s*,?\s*(?:and|or)\s+the\s+[A-Z])\s+(block|cube|brick)s\b")
+"""Label cubes listed each with "the" and one plural noun after the last ("the B, the A and the T blocks"): the noun is
+the last cube's, singular (the plural had hidden its label, and the cube was dropped, silently)."""
+
+
 def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tuple[str, str]]]:
     original = instruction.strip()
     if len(original) > MAX_RAW_CHARS:
@@ -1287,6 +1292,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     for pattern, written in lexicon.MARKUP_RES:  # "the **blue** patch", "## Goal", "`red`"
         original = pattern.sub(written, original).strip()
     original = lexicon.EMOJI_RE.sub(" ", original).strip()
+    original = LABEL_LIST_PLURAL_RE.sub(r"\1 \2", original)  # "the B, the A and the T blocks": T is one cube (it had been dropped)
     original = lexicon.SAYS_RE.sub(r"\1reads", original)  # "the tower says H, A, T"
     original = lexicon.HYPHENED_DIRECTION_RE.sub(r"\1 to \2", original)
     original = lexicon.DIAGONAL_PLACE_RE.sub(lexicon.diagonal_place, original)  # "to the front-right of the red cube"

@@ -401,6 +401,10 @@ def parse(instruction: str, _framed: bool = False) -> TaskSchema:
         schema = parse(spaced, _framed=_framed)
         return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})
     listed = _towers_counted(instruction)
+    shared = re.search(r"\b(?:\d+|two|three|four|five|six|both)\s+(?:[A-Z]|\d)\s+(?:blocks|cubes|bricks)\b", instruction)
+    if shared:  # "put two A blocks on the patch", "the 3 3 cubes": a label is one cube's (they had become cubes of colours)
+        raise ParseError(f"'{shared.group(0)}' names several cubes with one label: each letter or digit is on one cube; "
+                         "name each cube (e.g. \"the A block and the B block\"), or use --model")
     if listed != instruction:  # "Tower 1: red, green. Tower 2: ...": a tower each (the first name had been read as a label)
         schema = parse(listed, _framed=_framed)
         return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})
