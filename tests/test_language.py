@@ -7308,3 +7308,26 @@ def test_partitives_ranges_counts_against_lists_and_shared_labels_are_refused(te
 def test_one_of_each_structure_a_list_that_fits_its_count_and_labels_listed_stay_read(text, expected):
     """"the T blocks" after "the B, the A" had dropped the T cube, silently."""
     assert sorted(meaning(check_feasibility(parse(text)))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "put each of the red cubes on a different patch",
+    "put two cubes of each colour on the patch",
+    "put one cube of each colour on the blue patch",
+    "make a line of red and blue cubes, three of each",
+])
+def test_own_patches_and_counts_of_each_the_task_cannot_say_are_refused(text):
+    """Each had compiled silently wrong (third attack): every cube on one gray patch, one red cube for 'one cube of each
+    colour', one of each for 'three of each'."""
+    with pytest.raises(ParseError):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Put each cube on its own patch of the same colour.", ["on_patch(blue,patch:blue)", "on_patch(red,patch:red)"]),
+    ("Make two separate piles, one of the orange blocks and one of the cyan blocks. There are two of each.",
+     ["piles(cyan,cyan,orange,orange;by=color)"]),
+    ("Build two towers of each three cubes: one only red, one only blue.", ["stack(blue,blue,blue)", "stack(red,red,red)"]),
+])
+def test_a_patch_of_its_colour_and_counts_of_each_said_stay_read(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected

@@ -741,6 +741,13 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
         listed = re.findall(rf"\b(?:{colors})\b", m.group(2))  # rest had been made up, or the list padded, silently)
         if len(listed) != int(m.group(1)):
             raise UnaccountedMention(f"'{m.group(0).strip()}' counts {m.group(1)} cubes and lists {len(listed)}")
+    each = re.search(r"\b(\d+)\s+(?:(?:cubes?|blocks?)\s+)?of\s+each\b(?!\s+(?:tower|stack|pile|row|line|structure))", text)
+    if each:  # "a line of red and blue cubes, three of each": each colour said has that many (one of each had been made)
+        named = {canon(c) for c in re.findall(rf"\b({colors})\b(?!\s+(?:goal\s+)?patch)", text)}
+        short = sorted(c for c in named if by_color.get(c, 0) != int(each.group(1)))
+        if named and short:
+            raise UnaccountedMention(f"'{each.group(0)}' asks for {each.group(1)} cubes of each colour and the task read has "
+                                     f"{by_color.get(short[0], 0)} {short[0]}")
     grids = [p for p in goal if isinstance(p, P.Grid) and p.rows > 1 and p.layers == 1]
     if grids and not any(isinstance(p, P.InLine | P.InLayers) for p in goal) and re.search(r"\b(?:rows|lines)\b", text) \
             and len(re.findall(rf"\b(?:{colors})\b", text)) >= grids[0].rows * grids[0].cols \

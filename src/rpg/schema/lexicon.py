@@ -735,7 +735,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "only by colour and label; name the cube (e.g. \"the red block\"), or say the structure it is part of "
      "(\"the top block of the tower\")"),
     ("reference", r"\b(?:on|onto|to|in|into)\s+(?:(?:two|three|2|3|their|own|different|separate|distinct|individual)\s+)+(?:goal\s+)?patches\b"
-                  r"(?!\s*(?:[:,(]|of\s+(?:the\s+)?(?:same|their|its|matching)))",
+                  r"(?!\s*(?:[:,(]|of\s+(?:the\s+)?(?:same|their|its|matching)))"
+                  r"|\b(?:on|onto|to|in|into)\s+a\s+(?:different|separate|distinct)\s+(?:goal\s+)?patch\b",  # "each on a different patch"
      "does not say which patch each cube goes on (patches are known by colour): name each one (e.g. \"the red cube on "
      "the red patch and the blue cube on the green patch\")"),
     ("reference", r"\b(?:as\s+)?(?:shown|displayed|depicted|pictured|illustrated|demonstrated)\b"
@@ -856,6 +857,11 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                  r"|\b\d+\s+(?:or\s+so|and\s+up|or\s+more|or\s+fewer|or\s+less|ish)\b|\b(?:cube|block)s?\s*[*\u00d7]\s*\d+\b"
                  r"|(?:^|(?<=\s))-\d+\s+(?:[a-z]+\s+)?(?:cubes?|blocks?)\b",
      "gives a range or an approximate count (\"2-3 cubes\", \"3 or so\"): a task has an exact number of cubes; say it"),
+    # "one cube of each colour", "two cubes of each colour": cubes of colours nobody named, so how many is not said (one
+    # red cube had been made, silently)
+    ("quantity", r"\b(?:cubes?|blocks?)\s+(?:of|in)\s+(?:each|every)\s+colou?r\b(?!\s*:)",
+     "asks for cubes of every colour without naming the colours: say each colour and its count (e.g. \"one red, one blue "
+     "and one green cube on the blue patch\")"),
     # "put the red cube on the blue patch and all other cubes on the green patch": cubes nobody named (made up)
     ("quantity", r"\b(?:all|every|each)\s+(?:the\s+)?other\s+(?:cubes?|blocks?)\b",
      "asks for every other cube of the scene, whose count and colours the instruction does not say: name the cubes"),
