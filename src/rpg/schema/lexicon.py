@@ -846,7 +846,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     # is not said (the whole group had been placed, silently)
     ("quantity", r"(?<!\bone\s)(?<!\b1\s)\b(?:[2-9]|two|three|four|five|six|some|most|half)\s+(?:of|out\s+of)\s+(?:the\s+|these\s+|those\s+)?(?:\d+|two|three"
                  r"|four|five|six|seven|eight|nine|ten)\s+(?:[a-z]+\s+)?(?:cubes|blocks|ones)\b|\bof\s+the\s+(?:\d+|two|three|four|five|six)"
-                 r"\s+(?:[a-z]+\s+)?(?:cubes|blocks)\s*,\s*(?:\d+|one|two|three|four|five)\b|\ball\s+but\b"
+                 r"\s+(?:[a-z]+\s+)?(?:cubes|blocks)\s*,\s*(?:\d+|one|two|three|four|five)\b|\ball\s+but\s+(?:\d+|one|two|three|four|five)\b"
                  r"|\b(?:cubes?|blocks?)\s+but\s+(?:\d+|one|two|three|four|five)\b",
      "picks some cubes of a group (\"two of the three\", \"all but one\"): which of them is not said; name the cubes and "
      "their count (e.g. \"put two green cubes on the blue patch and one green cube on the table\")"),
