@@ -52,7 +52,8 @@ def stated_count(f: Features, nouns: str = "block|cube|box|piece|object", defaul
     if groups:
         return sum(n for n, _ in groups)
     # (the words between are the noun's modifiers: "3 blue cubes into piles" counts cubes, not piles)
-    m = re.search(rf"\b(\d+)\s+(?:(?!(?:into|in|on|onto|cubes?|blocks?)\b)[a-z\-]+\s+){{0,3}}?(?:{nouns})s?\b", f.text)
+    m = re.search(rf"(?<!digit\s)(?<!number\s)(?<!numeral\s)\b(\d+)\s+(?:(?!(?:into|in|on|onto|cubes?|blocks?)\b)[a-z\-]+\s+){{0,3}}?"
+                  rf"(?:{nouns})s?\b", f.text)  # ("the digit 4 cube" is a label, not four cubes: two had been made up, silently)
     if m:
         return int(m.group(1))
     return default
