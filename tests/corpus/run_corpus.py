@@ -81,8 +81,8 @@ STRANGER_SETS = {
     "stranger44": ("stranger44.yaml", "STRANGER set 44 (stranger44.yaml, written during the thirty-second session, measured at its end: aggregates only)"),
     "stranger45": ("stranger45.yaml", "STRANGER set 45 (stranger45.yaml, written at the start of the thirty-third session: aggregates only)"),
     "stranger46": ("stranger46.yaml", "STRANGER set 46 (stranger46.yaml, written at the start of the thirty-fourth session: aggregates only)"),
-    "stranger47": ("stranger47.yaml", "STRANGER set 47 (stranger47.yaml, written during the thirty-fourth session, measured at its end: aggregates only)"),
-    "stranger48": ("stranger48.yaml", "STRANGER set 48 (stranger48.yaml, written at the start of the thirty-fifth session: aggregates only)"),
+    "stranger47": ("stranger47.yaml", "STRANGER set 47 (stranger47.yaml, written during the thirty-fourth session; development material from the thirty-fifth)"),
+    "stranger48": ("stranger48.yaml", "STRANGER set 48 (stranger48.yaml, written at the start of the thirty-fifth session; its classes reported at that session's end: not clean)"),
 }
 SPLITS = HERE / "splits.yaml"
 
