@@ -7341,3 +7341,20 @@ def test_a_digit_cube_s_label_is_no_count_of_the_tower(text, expected):
     """The bottom cube's digit had been read as the tower's height too, and the tower filled with cubes nobody named
     (stack(4,2,red,blue)), silently: the class of stranger48's silent error, reported by a helper with its own example."""
     assert sorted(meaning(check_feasibility(parse(text)))) == expected
+
+
+@pytest.mark.parametrize("text, dropped", [
+    ("Put the red cube on the blue cube. Check your air gauge.", True),
+    ("Put the red cube on the blue cube. Wash your hands.", True),
+    ("Put the red cube on the blue cube. Check your tower.", False),
+    ("Put the red cube on the blue cube. Move your arm back.", False),
+    ("Put the red cube on the blue cube. Don't touch your face.", False),
+])
+def test_an_imperative_on_a_person_s_own_thing_is_their_world(text, dropped):
+    """A voice's imperative on a thing of a person's own ("Check your air gauge.") is set aside, listed as such; one on a
+    thing of the task or the robot stays and is refused."""
+    if dropped:
+        assert meaning(check_feasibility(parse(text))) == ["stack(blue,red)"]
+    else:
+        with pytest.raises(ParseError):
+            check_feasibility(parse(text))

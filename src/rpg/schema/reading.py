@@ -252,11 +252,8 @@ def _voice_sentence(sentence: str) -> bool:
             or lexicon.ASIDE_CONTENT_RE.search(_VOICE_WORLD_ASIDE_RE.sub(" ", weighed)) \
             or lexicon.VOICE_SENTENCE_HAZARD_RE.search(weighed) or lexicon.RETRACTION_RE.search(low):
         return False
-    opening = list(itertools.dropwhile(lambda w: w in _OPENING_FILLERS, words))[:3]
-    if opening and _imperative(opening) and not {opening[0], *lexicon.lemmas(opening[0])} & lexicon.REGARD_VERBS \
-            and not (len(opening) > 1 and opening[1] in _PERSONS_OWN):
-        return False  # "Wipe the whiteboard.", "Pinch lightly.", "Don't proceed.": said to the one who does the task (a thing
-        # of a person's own, "Check your air gauge.", is that person's world: no cube is anyone's)
+    if _said_to_the_doer(words):
+        return False  # "Wipe the whiteboard.", "Pinch lightly.", "Don't proceed.": said to the one who does the task
     if _VOICE_WORLD_ASIDE_RE.search(low) and len(words) < 4:
         return False  # "No tools!", "No dragging!": a short negation has no world of its own to belong to: the task's
     verb = False
@@ -271,6 +268,15 @@ def _voice_sentence(sentence: str) -> bool:
             verb = verb or ("VERB" in lexicon.parts_of_speech(base) and base not in lexicon.IDLE_WORDS
                             and not lemmas & _AUXILIARY_LEMMAS and base not in _NOT_VERBS)
     return verb and all(k in ("negation", "object", "action", "question") for k, _, _ in _inexpressible(weighed))
+
+
+def _said_to_the_doer(words: list[str]) -> bool:
+    """Whether a sentence of ``words`` (lower case) is an imperative said to the one who does the task (:func:`_imperative`;
+    "Wipe the whiteboard.", "Use the tongs.", "Don't proceed."), not one of regard (:data:`lexicon.REGARD_VERBS`: "Mind
+    the gap.") nor one on a thing of a person's own ("Check your air gauge.": that person's world; no cube is anyone's)."""
+    opening = list(itertools.dropwhile(lambda w: w in _OPENING_FILLERS, words))[:3]
+    return bool(opening) and _imperative(opening) and not {opening[0], *lexicon.lemmas(opening[0])} & lexicon.REGARD_VERBS \
+        and not (len(opening) > 1 and opening[1] in _PERSONS_OWN)
 
 
 def _imperative(opening: list[str]) -> bool:
