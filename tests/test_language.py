@@ -7358,3 +7358,14 @@ def test_an_imperative_on_a_person_s_own_thing_is_their_world(text, dropped):
     else:
         with pytest.raises(ParseError):
             check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text", [
+    "Make a tower red green and a tower blue yellow, bottom to top",
+    "Make a tower of red and green and a tower of blue and yellow, both from bottom to top.",
+])
+def test_a_direction_said_once_after_two_towers_orders_both(text):
+    """The first tower had been left unordered, silently (the second attack)."""
+    schema = check_feasibility(parse(text))
+    assert sorted(meaning(schema)) == ["stack(blue,yellow)", "stack(red,green)"]
+    assert [type(p).__name__ for p in schema.goal_predicate().walk()][1:] == ["Stack", "Stack"]

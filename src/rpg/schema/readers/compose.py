@@ -529,6 +529,12 @@ def recognize_independent_parts(f: Features, b: Builder) -> bool:
     texts = [re.sub(r"^(?:then|next|after\s+that|afterwards)\s*,?\s+", "", t.strip(" ,.;!"))  # "Then stack blue and yellow.":
              for t in PART_SPLIT_RE.split(f.text)]  # the step's "then" orders the parts, not the part's cubes (it had ordered them)
     texts = [t for t in texts if t]
+    shared = re.search(r"\s*,?\s*(?:both\s+|each\s+|all\s+)?(?:listed\s+)?(?:from\s+)?(?P<d>bottom\s+to\s+top|top\s+to\s+bottom)$",
+                       texts[-1]) if len(texts) > 1 else None
+    if shared and sum(bool(re.search(r"\b(?:tower|stack)\b", t)) for t in texts) > 1:  # "a tower of red and green and a
+        # tower of blue and yellow, both from bottom to top": every tower's order (the first had been left free, silently)
+        texts = [t[:shared.start()] if i == len(texts) - 1 else t for i, t in enumerate(texts)]
+        texts = [f"{t}, {shared.group('d')}" if re.search(r"\b(?:tower|stack)\b", t) else t for t in texts]
     verb = re.match(r"(?:please\s+)?((?:put|place|move|set|bring|pile|stack|line\s+up|arrange|gather|group|heap|cluster)\s+)"
                     r"(?=(?:the|all|every|each|both)\b)", texts[0]) if texts else None
     bare = [bool(i and re.match(r"(?:the|all|every|each)\b", t)) for i, t in enumerate(texts)]  # a later part with no verb
