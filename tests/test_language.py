@@ -7369,3 +7369,15 @@ def test_a_direction_said_once_after_two_towers_orders_both(text):
     schema = check_feasibility(parse(text))
     assert sorted(meaning(schema)) == ["stack(blue,yellow)", "stack(red,green)"]
     assert [type(p).__name__ for p in schema.goal_predicate().walk()][1:] == ["Stack", "Stack"]
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Build two towers of two cubes, one on the white patch and one on the black patch",
+     ["on_patch(red,patch:black)", "on_patch(red,patch:white)", "stack(red,red)", "stack(red,red)"]),
+    ("Stack the red blocks on the red patch and the blue blocks on the blue patch",
+     ["on_patch(blue,patch:blue)", "on_patch(red,patch:red)", "stack(blue,blue)", "stack(red,red)"]),
+])
+def test_towers_on_patches_named_by_colour_keep_their_cubes_colours_free(text, expected):
+    """The towers' cubes had been made white and black, like their patches, a colour no word gave them (an attack's
+    class); cubes named by colour keep theirs."""
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected

@@ -315,14 +315,13 @@ def mention_accounting(schema: TaskSchema, said: str | None = None) -> list[dict
     from rpg.schema.accounting import UnaccountedMention
     from rpg.schema.builtin import ParseError, check_mentions
 
+    failure: Exception | None = None
     for text in dict.fromkeys(t for t in (said, schema.instruction) if t):
         try:
             return check_mentions(text, schema)
-        except UnaccountedMention as exc:
-            failure = exc
-        except ParseError:  # the user's text reads otherwise than it did when compiled (cannot happen): the instruction's
-            continue
-    return [{"mention": schema.instruction[:200], "kind": "unaccounted", "consumed_by": str(failure)}]
+        except (UnaccountedMention, ParseError) as exc:  # a start said before the goal ("Initially red is on yellow.
+            failure = failure or exc  # Swap them ...") is read by the parser, not by this accounting: recorded, no crash
+    return [{"mention": schema.instruction[:200], "kind": "unaccounted", "consumed_by": str(failure).splitlines()[0][:300]}]
 
 
 def set_aside(doc: dict) -> list[tuple[str, str]]:

@@ -864,7 +864,21 @@ def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
         height = height // k
     height = height if height and height >= 2 else 2
     per_tower = None if with_patches or matching else _per_tower_colors(f.text, k, height)
-    if per_tower:
+    patch_said = [canon_color(c) for m in re.finditer(rf"\b((?:{COLOR_RE})(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+)(?:{COLOR_RE}))*)\s+"
+                                                       r"(?:goal\s+)?patch(?:es)?\b", f.text)
+                  for c in re.findall(rf"\b(?:{COLOR_RE})\b", m.group(1))]
+    patch_colors: list[str] | None = None
+    if with_patches and not matching and patch_said and set(colors) <= set(patch_said) \
+            and not re.search(r"\b(?:its|their|own|same|matching)\s+colou?r", f.text) \
+            and not re.search(rf"\b(?:{COLOR_RE})\s+(?:cubes?|blocks?|ones?|bricks?)\b", f.text):  # no cube named by colour
+        # "two towers of two cubes, one on the white patch and one on the black patch": the patches' colours, not the
+        # cubes' (the cubes had been made white and black, a colour no word gave them)
+        if len(patch_said) != k:
+            raise ParseError(f"\"{f.original[:80]}\" puts {k} towers on {len(patch_said)} patches named; say which tower goes "
+                             "on which patch, or use --model")
+        patch_colors = patch_said
+        stack_colors = [[next(c for c in DEFAULT_COLORS if c not in patch_said)] * height for _ in range(k)]
+    elif per_tower:
         stack_colors = per_tower
     elif len(colors) == 1 and not with_patches:
         stack_colors = [[colors[0]] * height for _ in range(k)]
@@ -898,12 +912,12 @@ def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
     centers = b.unit_centers(k, 0.16)
     if len(centers) < k or len(stack_colors) != k:  # more towers than the grid or the palette holds ("Build 20 towers.": it had crashed)
         raise ParseError(f"\"{f.original[:80]}\" asks for {k} towers: more than fit the workspace; use fewer towers")
-    for cols, xy in zip(stack_colors, centers, strict=True):
+    for i, (cols, xy) in enumerate(zip(stack_colors, centers, strict=True)):
         names = [b.cube(c) for c in cols]
         b.place(stack_layout(names, xy))
         b.preds.append(Stack(tuple(names)))
         if with_patches:
-            p = b.patch(cols[0])
+            p = b.patch(patch_colors[i] if patch_colors else cols[0])
             b.place_patch(p, xy)
             b.preds.append(OnPatch(names[0], p))
     b.primitives += ["stack"]
