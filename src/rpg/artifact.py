@@ -310,8 +310,10 @@ def mention_accounting(schema: TaskSchema, said: str | None = None) -> list[dict
     kind ``ignored`` per word or sentence set aside as naming nothing of the task.  ``said`` is
     the text as the user wrote it, when the task's instruction is what was left of it once
     such sentences were set aside ("Calm seas. Put the red cube on the blue cube."): they are
-    accounted for from it.  A mention the task has no part for (possible only for a schema
-    edited by hand) is recorded with kind ``unaccounted``."""
+    accounted for from it.  A mention the task has no part for (a schema edited by hand), or a
+    text this accounting cannot read whole though the parser did (a start said before its goal:
+    "Initially red is on yellow. Swap them ..."), is recorded with kind ``unaccounted``; it never
+    raises."""
     from rpg.schema.accounting import UnaccountedMention
     from rpg.schema.builtin import ParseError, check_mentions
 
