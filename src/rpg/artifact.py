@@ -378,10 +378,11 @@ def task_document(schema: TaskSchema, seed: int, backend: str, model: str | None
 
 def write_artifact_files(directory: Path, schema: TaskSchema, seed: int, backend: str, model: str | None,
                          gates: list[dict], log: list[str], author: str | None = None,
-                         extra_files: dict[str, str] | None = None, said: str | None = None) -> str:
+                         extra_files: dict[str, str] | None = None, said: str | None = None) -> tuple[str, dict]:
     """Write the ``extra_files`` (name -> text: the model record ``llm_log.jsonl``),
     validation.log and validation.json beside the code, then task.yaml with the manifest of
-    every file (written last); return the content hash (it covers the model record)."""
+    every file (written last); return the content hash (it covers the model record) and the
+    task document written."""
     directory = Path(directory)
     for fname, text in sorted((extra_files or {}).items()):
         if fname == TASK_FILE or Path(fname).name != fname:
@@ -394,7 +395,7 @@ def write_artifact_files(directory: Path, schema: TaskSchema, seed: int, backend
     doc[MANIFEST_KEY] = file_manifest(directory)
     doc["content_hash"] = digest
     write_file(directory / TASK_FILE, yamlio.dump(doc))
-    return digest
+    return digest, doc
 
 
 def write_logs(directory: Path, log: list[str], gates: list[dict]) -> None:

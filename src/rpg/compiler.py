@@ -204,8 +204,8 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
         valid = gates_passed(gates)
         log.append("result: VALID" if valid else "result: REJECTED")
         extras = extra_files() if callable(extra_files) else extra_files
-        digest = write_artifact_files(tmp, schema, seed, backend, model, gates, log, author, extras, written)
-        aside = set_aside(load_artifact(tmp)[1])
+        digest, doc = write_artifact_files(tmp, schema, seed, backend, model, gates, log, author, extras, written)
+        aside = set_aside(doc)
         slug = name or schema.name
         target = out_dir / slug if valid else out_dir / ".rejected" / slug
         atomic_replace(tmp, target)

@@ -395,16 +395,18 @@ def _carries_place_word(word: str, goal: list[P.Predicate], regions: set[str]) -
                   | {p.name for p in goal if p.name in ("between", "in_line")})
 
 
+_ALL_OF_THEM = (r"\b(?:(?:both|all|each|2)(?:\s+(?:of\s+)?(?:them|the\s+(?:towers|stacks)|towers|stacks|tower|stack))?"
+                r"|them(?:\s+(?:both|all))?)\s+(?:(?:goes|go|is|are|sits?|stands?|should\s+be|must\s+be)\s+)?")
+"""Several towers said at once ("both", "all of them", "each tower goes"; "both" is written "2" by normalizing)."""
+
 ALL_RELATED_RE = re.compile(
-    r"\b(?:(?:both|all|each|2)(?:\s+(?:of\s+)?(?:them|the\s+(?:towers|stacks)|towers|stacks|tower|stack))?|them(?:\s+(?:both|all))?)"
-    r"\s+(?:(?:goes|go|is|are|sits?|stands?|should\s+be|must\s+be)\s+)?(?:(?:to\s+the\s+)?(?:left|right)\s+of|in\s+front\s+of|behind"
+    _ALL_OF_THEM + r"(?:(?:to\s+the\s+)?(?:left|right)\s+of|in\s+front\s+of|behind"
     rf"|next\s+to|beside|far\s+from)\s+(?:the\s+)?(?P<c>{COLOR_RE})\b")
 """Several towers related at once to one cube ("..., both left of white"): every tower of the task read must be (only the
 last had been, silently)."""
 
 ALL_ON_ONE_PATCH_RE = re.compile(
-    r"\b(?:(?:both|all|each|2)(?:\s+(?:of\s+)?(?:them|the\s+(?:towers|stacks)|towers|stacks|tower|stack))?|them(?:\s+(?:both|all))?)"
-    r"\s+(?:(?:goes|go|is|are|sits?|stands?|should\s+be|must\s+be)\s+)?(?:on|onto)\s+(?:the\s+)?(?:(?P<c>[a-z]+)\s+)?(?:goal\s+)?patch\b")
+    _ALL_OF_THEM + r"(?:on|onto)\s+(?:the\s+)?(?:(?P<c>[a-z]+)\s+)?(?:goal\s+)?patch\b")
 """Several towers put on one patch at once ("..., both on the blue patch", "all on the pink patch", "put them on the white
 patch"): every tower of the task read must stand on a patch (only the last tower had been put there, silently)."""
 
