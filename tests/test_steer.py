@@ -2102,3 +2102,74 @@ def test_a_reason_or_label_that_is_itself_a_change_is_not_dropped(tmp_path, edit
     dropped and the recolour alone applied)."""
     got = _steered_or_refused(tmp_path, "Put the red cube, the green cube and the blue cube in a row from left to right", edit)
     assert got is None or got[1] != ["line[left_to_right](red,yellow,blue)"]
+
+
+@pytest.mark.parametrize("base, edits, expected", [
+    # spoken edits: hesitations, fillers between pauses, a count corrected after "no"
+    ("Make a tower of three pink cubes.", ["uh, make it five, no, four"], ("tweak", ["stack(pink,pink,pink,pink)"])),
+    ("Put four cubes in a row from left to right: red, orange, yellow, green.", ["okay so, reverse that, like, green first"],
+     ("modify", ["line[left_to_right](green,yellow,orange,red)"])),
+    ("Stack a yellow cube on a blue cube.", ["and uh make the bottom one purple"], ("tweak", ["stack(purple,yellow)"])),
+    # a name the edit gives the version it makes ("Round 3:", "Height ablation:"), and a count with the one it replaces
+    ("Arrange four yellow cubes in a row.", ["Round two rule change: six cubes in the row instead of four."],
+     ("tweak", ["line(yellow,yellow,yellow,yellow,yellow,yellow)"])),
+    ("Make a row of three red cubes.", ["6 not 3"], ("tweak", ["line(red,red,red,red,red,red)"])),
+    ("Build a tower of four gray cubes.", ["Height ablation: two cubes."], ("tweak", ["stack(gray,gray)"])),
+    # a reason said in a sentence of its own, set aside
+    ("Stack three cubes: red at the bottom, yellow in the middle, blue on top.",
+     ["That's too much for today. Leave out the yellow cube."], ("tweak", ["stack(red,blue)"])),
+    # the structure said again with every cube; the same six cubes kept in another structure
+    ("Stack two red cubes and put a blue cube on top.",
+     ["She's good at this now. Make the tower five cubes: three red and then two blue on top."],
+     ("tweak", ["stack(red,red,red,blue,blue)"])),
+    ("Arrange six yellow cubes in a row.", ["Round four: same six cubes, but stacked in one tower in the centre of the table."],
+     ("pivot", ["stack(yellow,yellow,yellow,yellow,yellow,yellow)@center"])),
+    # the cube said first, then "put it"; the structure said to go to a side; a place alone; a digit by its word
+    ("Put the blue cube on top of the green cube, and the red cube to the left of the green cube.",
+     ["uh, the red cube, put it to the right of the green one instead"], ("modify", ["right_of(red,green)", "stack(green,blue)"])),
+    ("Put the cyan cube in the left half and the orange cube in the right half of the table.",
+     ["put them in a tower instead, cyan on the bottom", "and, uh, the tower goes on the right side"],
+     ("modify", ["stack(cyan,orange)@right"])),
+    ("Put a row of three blue cubes at the back of the table.", ["Let's try the row at the front instead."],
+     ("modify", ["line(blue,blue,blue)@front"])),
+    ("Put the red cube in the back half of the table.", ["actually in front"], ("modify", ["in_region(red,front)"])),
+    ("Build a tower of the digit cubes 2, 4 and 6 with 2 at the bottom.", ["add, um, an eight on top"],
+     ("extend", ["stack(2,4,6,8)"])),
+])
+def test_spoken_labelled_and_reasoned_edits_of_steer_stranger19(tmp_path, base, edits, expected):
+    """Edits of steer_stranger19 (development material since its classes were reported) that had been refused: a
+    hesitation or filler read as a word of the change, a version's own name ("Round 3:") as a count, a reason sentence as
+    a quantity, "the red cube, put it ..." as no change, "instead" of one of several relations as one more."""
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+@pytest.mark.parametrize("base, edits, needle", [
+    # "scrap that" and a version named by the session's own count: no fresh task of made-up cubes
+    ("Stack the digit cubes 1, 2, 3 and 4 with 1 at the bottom.",
+     ["Round two: put them in descending order, 4 at the bottom.", "Scrap that, go back to the round one tower."], "goes back"),
+    # a colour the palette lacks (a green cube had been added)
+    ("Stack the red cube on the blue cube.", ["Put a gold cube on top as a reward."], "palette"),
+    # the count the edit says the task had is checked
+    ("Arrange four yellow cubes in a row.", ["six instead of three"], "has 4"),
+    # a reason that is a fresh start is no reason
+    ("Make a row of four white blocks", ["It's time to start over. Put the cyan block on the red patch."], None),
+])
+def test_steer_stranger19_edits_that_must_not_compile_silently(tmp_path, base, edits, needle):
+    """Silent errors this session's changes exposed or risked: each is refused, or (a fresh start) not read as a reason."""
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
+    for e in edits[:-1]:
+        steer(fam.path, e)
+    if needle is None:
+        r = steer(fam.path, edits[-1])
+        assert r.intent == "fresh" and not any("set aside" in n for n in r.notes)
+        return
+    with pytest.raises(SteerError, match=needle):
+        steer(fam.path, edits[-1])
+
+
+def test_a_reason_sentence_set_aside_is_reported(tmp_path):
+    """The set-aside reason is said in the steer's notes (never silently dropped)."""
+    fam = Family(create_family(compiled("Stack three cubes: red at the bottom, yellow in the middle, blue on top.", tmp_path,
+                                        name="fam").path).path)
+    r = steer(fam.path, "That's too much for today. Leave out the yellow cube.")
+    assert any("set aside: \"That's too much for today.\"" in n for n in r.notes)

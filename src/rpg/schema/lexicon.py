@@ -833,6 +833,10 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "names a piece of a shape the domain does not have (a triangle, prism or wedge): it has only 5 cm cubes "
      "(coloured, optionally labelled) and flat coloured patches; a pyramid is built of cubes (e.g. \"a pyramid of 3 "
      "cubes\")"),
+    # "Build a round tower.", "a cylindrical stack": a rounded structure of cubes (the word had been dropped, a tower built)
+    ("shape", r"\b(?:round(?:ed)?|cylindrical|curved|spherical|conical)\s+(?:towers?|stacks?|piles?|columns?|walls?|pyramids?|blocks?|cubes?)\b",
+     "is a shape the domain does not have: its structures are towers, lines, circles, grids, pyramids, walls and piles "
+     "of cubes (a circle of cubes is \"cubes in a circle\")"),
     # "Put every cube to the left of the white cube.", "Put every cube on the blue patch.": all the scene's cubes, of a
     # count and colours nobody said (one red cube had been made up)
     ("quantity", rf"\b(?:put|place|move|set|bring|slide)\s+(?:every|each|all(?:\s+(?:of\s+)?the)?|all\s+other)\s+(?:other\s+|remaining\s+)?"
@@ -1970,6 +1974,8 @@ SELF_CORRECTION_RE = re.compile(
     r"(?i)(?:[,.;:!?]|\s[-\u2013\u2014])\s*(?:(?:(?:er+m?|uh+|um+)\s*,?\s+)?(?:sorry|i\s+mean|no\s*,?\s+wait|wait\s*,?\s+no"
     r"|(?:er+m?|uh+|um+)\s*,?\s+no|no\s*,?\s+i\s+mean|oops|correction|or\s+rather|make\s+that|scratch\s+that"
     r"|no\s*,?\s+sorry|no(?=\s*,?\s+(?:the|a|an|on|onto|in|into|next|behind|to|at)\b)"
+    r"|no(?=\s*,\s*(?:one|two|three|four|five|six|seven|eight|nine"
+    r"|ten|\d+)\b)"
     r"|wait(?=\s*,\s*(?:the|a|an|on|onto|in|into|next|behind|under|to|at|\d+|one|two|three|four|five|six)\b))\b[,:!.]*\s+)+(?=\S)")
 """A writer correcting themselves mid-instruction ("..., sorry, the pink patch", "Stack red on
 blue, I mean blue on red.", "to the left, er no, to the front", "the red, no, the orange one", "to the left of the,
@@ -2306,10 +2312,14 @@ one before ("Separately, put ...", "In addition, ..."; every sentence of a goal 
 ("Take your time.": a task's goal is judged at the episode's end) and who the task is for ("Corner task for the new
 policy."): dropped."""
 
-DISFLUENCY_RE = re.compile(r"(?i)(?P<lead>\s*,)?\s*\b(?:uh+m?|um+|erm*|uhm+)\b(?!\s*,?\s*no\b)\s*(?P<trail>,)?(?=\s|$)")
+DISFLUENCY_RE = re.compile(r"(?i)(?P<lead>\s*,)?\s*\b(?:uh+m?|um+|erm*|uhm+|mm+|hmm+)\b(?!\s*,?\s*no\b)\s*(?P<trail>,)?(?=\s|$)")
 """A speaker's hesitation in a transcript ("put the uh orange cube"): dropped.  A hesitation between
 two commas is a pause, dropped with them ("the top one, er, pink": the top one pink), unless a
 list item comes before it ("red, um, blue": the list's comma stays; "the top one" is no list item)."""
+
+PAUSE_FILLER_RE = re.compile(r"(?i)\s*,\s*(?:like|you\s+know|i\s+guess|basically|kinda|sort\s+of)\s*,")
+"""A filler between two pauses ("reverse that, like, green first", "the top one, you know, red"): the pauses
+are one comma.  Only between commas: "a tower like the first one" compares."""
 
 HYPHENED_DIRECTION_RE = re.compile(r"(?i)\b(left|right|front|back|bottom|top)-to-(left|right|front|back|bottom|top)\b")
 """A direction written with hyphens ("right-to-left", "bottom-to-top"): its words apart, as the readers read it
@@ -3268,6 +3278,51 @@ demo: add a red cube on top"): dropped when it names no cube, structure, place o
 change the edit (:data:`_EDIT_LABEL_HAZARD_RE`)."""
 
 
+EDIT_REASON_SENTENCE_RE = re.compile(
+    r"(?i)^\s*(?:(?:oh|well|ok(?:ay)?|so|hmm+|right|alright|honestly|yeah)\s*,?\s+)*"
+    r"(?:that'?s|that\s+(?:is|was)|this\s+(?:is|was)|it'?s|it\s+(?:is|was)|(?:she|he|they|we|i|you)(?:'s|'re|'m|'ve|'d|\s+(?:is|are|was|were|am"
+    r"|has|have|had|found|finds|find|got|gets|did|does|do|can|could|liked|likes|loved|loves|hated|hates|struggled|struggles|thinks|thought|think"
+    r"|said|says|nailed|aced|breezed|finished|felt|feels|seems|seemed))|(?-i:(?!Let\b)[A-Z][a-z]+)(?:'s|\s+(?:is|was|found|finds|got|gets|did|does"
+    r"|can|could|liked|likes|loved|hated|struggled|struggles|thinks|thought|said|says|has|had|nailed|aced|breezed|finished|felt|feels|seems"
+    r"|seemed)))\b[^.!?;:]*[.!]\s*$")
+"""A sentence of a steering edit that says why the change is made, of a person or of the version before ("That's too
+much for today.", "She's good at this now.", "Maya found that too easy."): a statement, not a request; set aside when
+another sentence of the edit says the change and it holds nothing of a task (:data:`EDIT_REASON_HAZARD_RE`)."""
+
+EDIT_REASON_HAZARD_RE = re.compile(
+    rf"\b(?:{COLOR_RE}|grey|\d+|one|two|three|four|five|six|seven|eight|nine|ten|left|right|front|back|top|bottom|middle|centre|center"
+    r"|corner|patch\w*|edge|side|half|under\w*|below|above|over|next|beside|between|behind|near|far|tower\w*|stack\w*|rows?|lines?|pyramid\w*"
+    r"|walls?|piles?|grids?|circles?|layers?|letters?|digits?|numbers?|labels?|make|put|add|remove|swap|move|change|reverse|flip|replace|take"
+    r"|leave|keep|drop|not|no|never|n't|instead|only|should|must|need\w*|want\w*|wish\w*|rather|same|different|again|back|undo|revert\w*"
+    r"|version|v\d|if|unless|when|until|before|after|then|previous|original|each|every|all|both|wrong|mistake|error|bug|sorry"
+    r"|actually|start\w*|scratch|fresh|new|over|redo|restart|reset|clear|empty)\b")
+"""What keeps a sentence before or after a steering edit's change from being a reason said for it
+(:data:`EDIT_REASON_SENTENCE_RE`): a colour, a count, a place, a structure, a label, a change verb, a negation, a
+restriction, a wish, a version, a condition or time, an order, a quantifier, a take-back: it may change the edit."""
+
+EDIT_STEP_NAME_RE = re.compile(
+    r"(?i)^\s*(?:(?:the\s+)?(?:next|new|final|another)\s+)?(?:(?!(?:undo|revert|back|same|previous|last|first|original)\b)[a-z]+\s+)?"
+    r"(?:round|ablation|condition|variant|trial|level|stage|attempt|iteration|phase|scenario|exercise|challenge|puzzle|setting)"
+    r"(?:\s+(?:#?\d+|[a-z]|one|two|three|four|five|six|seven|eight|nine|ten))?(?:\s+(?:rule\s+)?change)?\s*(?::|,(?=\s+(?:please\s+)?"
+    r"(?:make|put|add|swap|switch|remove|take|move|change|use|turn|replace|place|stack|set|drop|delete|build|reverse|flip)\b))\s+(?=\S)")
+"""A name the edit gives the version it makes, before its change ("Round 3: ...", "Ablation 1: ...", "Condition C: ...",
+"Height ablation: ...", "Next round, add ...", "Round two rule change: ..."): a session's own count of its steps, which
+names the version made, never the one built on (that one is named in the change: "back to the round one tower" is
+read, or refused, there); dropped."""
+
+
+def every_cube_said(m: re.Match) -> bool:
+    """Whether the structure said again (group 2, its count) has each of its cubes given a colour in ``rest``: the counts
+    of colours there add up to it ("five cubes: three red and then two blue"), or as many colours are listed."""
+    n = int(NUMBER_WORDS.get(m.group(2).lower(), m.group(2)))
+    rest = m.group("rest").lower()
+    counted = re.findall(rf"\b(\d+|{COUNT_WORD_RE})\s+(?:{COLOR_RE})\b", rest)
+    if counted:
+        return sum(int(NUMBER_WORDS.get(c, c)) for c in counted) == n and not re.search(
+            rf"(?<!\d\s)(?<![a-z]\s)\b(?:{COLOR_RE})\b(?<!\d)", re.sub(rf"\b(?:\d+|{COUNT_WORD_RE})\s+(?:{COLOR_RE})\b", " ", rest))
+    return len(re.findall(rf"\b(?:{COLOR_RE})\b", rest)) == n and not re.search(rf"\b(?:\d+|{COUNT_WORD_RE})\b", rest)
+
+
 def edit_label_dropped(m: re.Match) -> str:
     """The edit without its label (:data:`EDIT_LABEL_RE`) when the label is inert, else as it is."""
     label = m.group("l").lower()
@@ -3277,6 +3332,8 @@ def edit_label_dropped(m: re.Match) -> str:
 
 
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
+    # "Round 3: ...", "Condition C: ...", "Next round, add ...": the name of the version made
+    (EDIT_STEP_NAME_RE, ""),
     # "Simplify it for the worksheet: make both rows green": a label saying why, before the change
     (EDIT_LABEL_RE, edit_label_dropped),
     # "He has trouble telling red from green, so make the green cube yellow instead": the reason said before the change
@@ -3316,8 +3373,50 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(r"(?i)^\s*(?:move\s+|put\s+)?all\s+(row|tower|stack|line|pyramid|wall|grid|circle)\s+(?:to|in|on)\s+(?:the\s+)?"
                 r"(back|front|left|right)(?:\s+(side|half|edge))?\s*[.!]?\s*$"),
      lambda m: f"move the whole {m.group(1)} to the {m.group(2)} {m.group(3) or 'side'}"),
+    # "let's try the row at the front instead", "the tower on the left instead": the whole structure moved to that side
+    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|so|now|actually|hmm+)\s*,?\s*)*(?:let'?s\s+)?(?:try|have|put|do|see)\s+(?:the\s+)?"
+                r"(row|tower|stack|line|pyramid|wall|grid|circle|pile)\s+(?:at|in|on)\s+the\s+(back|front|left|right)"
+                r"(?:\s+(side|half|edge))?(?:\s+of\s+the\s+table)?\s+instead\s*[.!]?\s*$"),
+     lambda m: f"move the whole {m.group(1)} to the {m.group(2)} {m.group(3) or 'side'}"),
+    # "make the tower five cubes: three red and then two blue on top": the whole structure said again, every cube of it
+    (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|so|now|then)\s*,?\s*)*make\s+the\s+(tower|stack|row|line|wall|pyramid)\s+(\d+|{COUNT_WORD_RE})"
+                r"\s+(cubes|blocks)(?:\s+(?:tall|high|long|wide))?\s*[:,]\s*(?P<rest>[^.;!?]+)[.!]?\s*$"),
+     lambda m: f"build a {m.group(1)} of {m.group(2)} {m.group(3)}: {m.group('rest')}" if every_cube_said(m) else m.group(0)),
+    # "the red cube, put it to the right of the green one instead": the cube said first, then the change to it
+    (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|so|now|and|actually)\s*,?\s*)*(the\s+(?:(?:{COLOR_RE})|letter\s+[a-z]|digit\s+\d|[a-z]+)\s+"
+                r"(?:cube|block|one)),\s+(?:please\s+)?(put|move|place|set|make|turn|take|slide|shift|paint|colou?r)\s+it\b"),
+     r"\2 \1"),
+    # "the tower goes on the right side", "the row should be at the back": the whole structure moved to that side
+    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|so|now|and|then)\s*,?\s*)*the\s+(?:whole\s+)?(row|tower|stack|line|pyramid|wall|grid|circle|pile)\s+"
+                r"(?:goes|should\s+go|should\s+be|must\s+be|has\s+to\s+be|is\s+to\s+be|sits|moves)\s+(?:on|in|at|to)\s+the\s+"
+                r"(back|front|left|right)(?:\s+(side|half|edge))?(?:\s+of\s+the\s+table)?(?:\s+instead|\s+now)?\s*[.!]?\s*$"),
+     lambda m: f"move the whole {m.group(1)} to the {m.group(2)} {m.group(3) or 'side'}"),
+    # "patch green instead", "the patch blue": the patch made that colour
+    (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|so|now|and|actually)\s*,?\s*)*(?:the\s+)?patch\s+(?:->\s*)?({COLOR_RE})(?:\s+instead|\s+now)?\s*[.!]?\s*$"),
+     r"make the patch \1"),
+    # "the word is now DOGS", "word should be 'CAT'": that word spelled instead
+    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|so|now|and)\s*,?\s*)*(?:the\s+)?word\s+(?:is\s+now|should\s+be|becomes|is\s+to\s+be|will\s+be)\s+"
+                r"(?:now\s+)?'?([A-Za-z]{2,})'?\s*[.!]?\s*$"), r"spell \1 instead"),
+    # "teams also have to put the green cube on the blue patch": what is to be done, said of whoever does it
+    (re.compile(r"(?i)^\s*(?:(?:the\s+)?(?:teams?|players?|students?|robots?|kids|pupils|learners|they|you|we)\s+)(also\s+)?(?:have|has|need|needs"
+                r"|must|should)\s+(?:to\s+)?(?=(?:also\s+)?(?:put|place|add|stack|move|set|build|make)\b)"), r"\1"),
+    # "I want the same three in a tower instead: ...": the task's cubes made into that structure, the roles after it read
+    (re.compile(rf"(?i)^\s*(?:i\s+(?:want|need|'d\s+like)|let'?s\s+(?:have|try|do)|how\s+about|try)\s+(?:the\s+)?same\s+(?:\d+|{COUNT_WORD_RE})?"
+                r"\s*(?:cubes\s+|blocks\s+|ones\s+)?(?:in|as)\s+a\s+(tower|stack|row|line|pyramid|circle)\s+instead\b"), r"make it a \1 instead"),
+    # "add a row of black cubes on top, three of them": the count said after the row
+    (re.compile(rf"(?i)\b(add\s+(?:a|another|one\s+more)\s+(?:row|layer|course|level)\s+of)\s+((?:{COLOR_RE})\s+(?:cubes|blocks)\s+on\s+top)"
+                rf"\s*,\s*((?:\d+|{COUNT_WORD_RE}))\s+of\s+them\s*[.!]?\s*$"), r"\1 \3 \2"),
+    # "add, um, an eight on top": a digit cube by its number word
+    (re.compile(r"(?i)\b(a|an|the)\s+(zero|two|three|four|five|six|seven|eight|nine)\b(?=\s+(?:on\s+top|at\s+the\s+(?:top|bottom|end|start)"
+                r"|to\s+the\s+(?:left|right)|instead)\b)"),
+     lambda m: f"{m.group(1)} digit {DIGIT_WORDS.index(m.group(2).lower())}"),
+    # "actually in front", "at the back instead": a place alone, where the task's cubes are to be
+    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|so|now|actually|hmm+|no|nah)\s*,?\s*)*(?:in|at|to)\s+(?:the\s+)?(back|front)"
+                r"(?:\s+(side|half|edge))?(?:\s+of\s+the\s+table)?(?:\s+instead)?\s*[.!]?\s*$"),
+     lambda m: f"move it to the {m.group(1)} {m.group(2) or 'side'}"),
     # "add brown also close to green": a cube of that colour added there
-    (re.compile(rf"(?i)\badd\s+({COLOR_RE})\s+(?:also\s+)?(?=(?:close\s+to|next\s+to|near|beside|behind|in\s+front\s+of|on\s+top\s+of|on|to\s+the)\b)"),
+    (re.compile(rf"(?i)\badd\s+({COLOR_RE})\s+(?:also\s+)?(?=(?:close\s+to|next\s+to|near|beside|behind|in\s+front\s+of|on\s+top\s+of|on|to\s+the"
+                r"|(?:left|right)\s+of|under|below|between)\b)"),
      r"add a \1 cube "),
     # "add a yellow and an orange at the right end", "add yellow and orange on top": a cube of each colour added there
     (re.compile(rf"(?i)\badd\s+(?:(?:a|an|one)\s+)?({COLOR_RE})\s+and\s+(?:(?:a|an|one)\s+)?({COLOR_RE})"
@@ -3707,7 +3806,8 @@ EDIT_COUNT_ALONE_RE = re.compile(
     r"(?i)\s*(?:(?:actually|ok(?:ay)?|fine|right|hmm+|so|too\s+(?:many|few)|undo\s+that|nah)\s*[,.!]?\s*)*(?:let'?s\s+)?"
     r"(?:go\s+with|try|use|make\s+(?:it|that)|how\s+about|maybe|only|just)?\s*"
     rf"(\d+|{COUNT_WORD_RE})"
-    rf"(?:\s+(?P<color>{COLOR_RE}))?(?:\s+(?:blocks|cubes|bricks|high|tall))?(?:\s+instead(?:\s+of\s+(?:\d+|{COUNT_WORD_RE}))?)?"
+    rf"(?:\s+(?P<color>{COLOR_RE}))?(?:\s+(?:blocks|cubes|bricks|high|tall))?(?:\s+in\s+the\s+(?:row|line|tower|stack|pile|wall|column))?"
+    rf"(?:\s+instead(?:\s+of\s+(?P<was>\d+|{COUNT_WORD_RE}))?|\s*,?\s+(?:not|rather\s+than)\s+(?P<was2>\d+|{COUNT_WORD_RE}))?"
     r"(?:\s+(?:please|pls|plz))?\s*[.!]?\s*")
 """An edit that is a count alone ("three", "let's go with 7 instead", "actually, three", "make that
 seven pink cubes pls", "only two", "just two high"): the structure's count (a colour said with it must be the
@@ -3718,7 +3818,7 @@ EDIT_MORE_ALONE_RE = re.compile(
     r"\s+more(?:\s+(?:blocks|cubes|bricks))?(?:\s+(?:please|pls|plz))?\s*[.!]?\s*")
 """An edit that is a count of cubes to add alone ("three more"): that many more of the structure's cubes."""
 
-SAME_CUBES_RE = re.compile(r"\b(?:the\s+)?(?:same|these|those|the)\s+(?:\d+\s+)?(?:blocks|cubes|bricks)\b"
+SAME_CUBES_RE = re.compile(rf"\b(?:the\s+)?(?:same|these|those|the)\s+(?:(?:\d+|{COUNT_WORD_RE})\s+)?(?:blocks|cubes|bricks)\b"
                            r"|\b(?:them|all\s+of\s+them)\b", re.IGNORECASE)
 """Words of a whole-task edit that keep the task's cubes ("same blocks, but make two towers of four")."""
 

@@ -1159,6 +1159,23 @@ def repeated_indefinites(text: str) -> str:
     return "".join(out) + text[last:]
 
 
+def spoken(text: str) -> str:
+    """``text`` without what speech adds to a request and says nothing of it: interjections and openings
+    (:data:`lexicon.FILLER_RE`: "okay so, ..."), hesitations (:data:`lexicon.DISFLUENCY_RE`: "uh", "um", "mm"; a colour
+    said again after one, :data:`lexicon.HESITANT_COLOUR_RE`), a filler between pauses (:data:`lexicon.PAUSE_FILLER_RE`:
+    ", like,", ", you know,"), words said twice in a row (:data:`lexicon.STUTTER_RE`; a run with a colour or a number
+    stays unless it opens with an article: "blue blue" may be two cubes), and a comma put before a correction spoken
+    without a pause (:data:`lexicon.SPOKEN_CORRECTION_RE`), for :func:`apply_corrections`.  Used by the parser and by
+    steering, whose edits are said the same way ("um, make it five, no, four")."""
+    text = lexicon.FILLER_RE.sub("", text).strip()
+    text = lexicon.HESITANT_COLOUR_RE.sub(r"\g<det> \g<c>\g<noun>", text)  # "the red, er, orange cube": orange
+    text = lexicon.DISFLUENCY_RE.sub(lexicon.dropped_hesitation, text)  # a transcript's "uh", "um"
+    text = lexicon.PAUSE_FILLER_RE.sub(",", text)  # "reverse that, like, green first"
+    text = lexicon.STUTTER_RE.sub(lambda m: m.group(0) if re.search(rf"\b(?:{COLOR_RE}|{lexicon.COUNT_WORD_RE})\b|\d", m.group("run"), re.I)
+                                  and not re.match(r"(?i)(?:the|a|an)\s", m.group("run")) else m.group("run"), text)
+    return lexicon.SPOKEN_CORRECTION_RE.sub(", ", text)  # "... purple patch no I mean the pink patch"
+
+
 def apply_corrections(text: str) -> str:
     """``text`` with each self-correction applied ("put the green cube on the yellow patch, sorry,
     the pink patch" -> "... on the pink patch"; :data:`lexicon.SELF_CORRECTION_RE`): the words
@@ -1330,14 +1347,8 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     original = lexicon.taken_down_as_unstack(original)  # "Take down the tower.": an undoing (a tower had been built)
     original = lexicon.start_stack_source(original)  # "There is a stack of blue on red. Move blue from the stack onto ..."
     original = lexicon.start_and_goal_said_tersely(original)  # "1. Start: green on brown. 2. Goal: green on table"
-    original = lexicon.FILLER_RE.sub("", original).strip()
-    original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", original)  # texting's "2" for "to"
+    original = lexicon.TEXTED_TO_RE.sub(lambda m: f"{m.group(1) or m.group(2)} to ", spoken(original))  # texting's "2" for "to"
     original = lexicon.TEXTED_YOU_RE.sub("you", original)  # "can u build ...": texting's "u"
-    original = lexicon.HESITANT_COLOUR_RE.sub(r"\g<det> \g<c>\g<noun>", original)  # "the red, er, orange cube": orange
-    original = lexicon.DISFLUENCY_RE.sub(lexicon.dropped_hesitation, original)  # a transcript's "uh", "um"
-    original = lexicon.STUTTER_RE.sub(lambda m: m.group(0) if re.search(rf"\b(?:{COLOR_RE}|{lexicon.COUNT_WORD_RE})\b|\d", m.group("run"), re.I)
-                                      and not re.match(r"(?i)(?:the|a|an)\s", m.group("run")) else m.group("run"), original)
-    original = lexicon.SPOKEN_CORRECTION_RE.sub(", ", original)  # "... purple patch no I mean the pink patch"
     original = lexicon.SPELLED_ALOUD_RE.sub(lambda m: m.group("letters") if m.group("word").upper() == "".join(
         m.group("letters").split()) else m.group(0), original)  # "D O G dog"
     original = lexicon.SAY_LETTERS_RE.sub("to spell ", original)  # "the letter cubes to say D O G"

@@ -40,6 +40,8 @@ from rpg.schema.lexicon import (
     EDIT_LEADING_RE,
     EDIT_MORE_ALONE_RE,
     EDIT_OPENING,
+    EDIT_REASON_HAZARD_RE,
+    EDIT_REASON_SENTENCE_RE,
     EDIT_REFERS_RE,
     EDIT_REST_STAYS_RE,
     EDIT_REWRITES,
@@ -57,13 +59,15 @@ from rpg.schema.lexicon import (
     REF_CHANGE_RE,
     TURNING_LABEL_RE,
     TYPOS,
+    UNKNOWN_COLOUR,
     VOCAB,
+    colour_names,
     is_dictionary_word,
     said,
 )
 from rpg.schema.model import TaskSchema
 from rpg.schema.readers.common import item_sequence
-from rpg.schema.reading import apply_corrections, canon_color, region_name
+from rpg.schema.reading import apply_corrections, canon_color, region_name, spoken
 from rpg.schema.structures import (
     STRUCTURE_KINDS,
     STRUCTURE_RE,
@@ -142,6 +146,7 @@ class EditPlan:
     adds: bool = False  # a clause added to a version named by the cue ("revert that and add ..."), read as an addition
     checks: tuple[tuple[str, object], ...] = ()  # what the edit says the version built on has, checked, not applied:
     # ("count", 5) for "same five but ...", ("material", "letters") for "same letters but ..." (see :func:`check_said`)
+    set_aside: tuple[str, ...] = ()  # sentences said as the reason for the change ("That's too much for today."), not read
 
     def parameters(self) -> dict:
         cue = {k: v for k, v in asdict(self.cue).items() if v not in (None, (), False, "") and not (k == "steps" and v == 1)}
@@ -235,6 +240,10 @@ def refuse_inexpressible(edit: str, t: str) -> None:
     if vague and not EDIT_COUNT_RE.search(t):  # "make it a bit taller" (a number said, "like 3 blocks", is a count)
         raise SteerError(f"cannot apply the edit \"{edit.strip()[:80]}\": '{vague.group(0)}' is a vague quantity: rpg's counts are "
                          "exact and its relations qualitative; say how many blocks (e.g. \"make it 5 blocks tall\")")
+    for m in re.finditer(r"\b([a-z]+)\b(?=\s+(?:cubes?|blocks?|ones?|patch(?:es)?|bricks?)\b)", t):
+        word = m.group(1)  # "put a gold cube on top": a colour the palette lacks (it had been dropped, a green cube added)
+        if word in colour_names() and not re.fullmatch(COLOR_RE, word) and word not in _known_words():
+            raise SteerError(f"cannot apply the edit \"{edit.strip()[:80]}\": '{word}' {UNKNOWN_COLOUR[1]}")
     inherited = (c for c in INEXPRESSIBLE if c[0] != "reference" and c[1] not in INSTRUCTION_ONLY)
     classes = (*EDIT_INEXPRESSIBLE, *inherited)
     # a question first ("which of the two patches is closer to the robot right now?": a question, whatever it asks about)
@@ -460,7 +469,7 @@ def read_ops(t: str) -> list[Op]:
         m = re.search(r"\b(\d+)\s+outliers?\b", t)
         ops.append(Op("outliers", {"per_pile": int(m.group(1)) if m else 1}))
     reverse = re.search(r"\b(?:flip|reverse|invert|mirror|swap)\b[^.;]*\border\b|\bupside down\b|\breverse(?:d)? order\b|\bother\s+way\s+up\b|"
-                        r"\b(?:flip|reverse|invert)\s+(?:it|them|the\s+(?:whole\s+|entire\s+)?(?:tower|stack|line|row|gradient|sequence|colou?rs|word|letters|digits"
+                        r"\b(?:flip|reverse|invert)\s+(?:it|them|that|this|everything|the\s+(?:whole\s+|entire\s+)?(?:tower|stack|line|row|gradient|sequence|colou?rs|word|letters|digits"
                         r"|numbers|labels|cubes|blocks))\b"
                         r"|\b(?:spell|write|read|arrange|put|place)\s+(?:it|them|the\s+word)\s+backwards?\b", t)
     if reverse:
@@ -822,11 +831,27 @@ def interpret(edit: str) -> EditPlan:
     Raises:
         SteerError: empty edit; such a clause beside no recolour.
     """
+    edit, aside = reasons_set_aside(edit)
+    if aside:  # "That's too much for today. Leave out the yellow cube.": the change read without its reason
+        return replace(interpret(edit), set_aside=aside)
     kept = re.search(r"(?i)\bsame\s+(?P<m>letter|digit|number)s?\b", edit or "")
     plan = _interpret_counted(edit)
     if kept:  # "same letters but reversed": the task's cubes are letters, checked
         return replace(plan, checks=(*plan.checks, ("material", _MATERIAL_WORDS[kept.group("m").lower()])))
     return plan
+
+
+def reasons_set_aside(edit: str) -> tuple[str, tuple[str, ...]]:
+    """``edit`` without the sentences that say why the change is made (:data:`EDIT_REASON_SENTENCE_RE`: "That's too much
+    for today.", "She's good at this now."), and those sentences; the edit as it is when no other sentence is left or
+    when such a sentence holds anything that may change the edit (:data:`EDIT_REASON_HAZARD_RE`)."""
+    sentences = [x for x in re.split(r"(?<=[.!?])\s+", (edit or "").strip()) if x]
+    if len(sentences) < 2:
+        return edit, ()
+    reasons = tuple(x for x in sentences if EDIT_REASON_SENTENCE_RE.match(x) and not EDIT_REASON_HAZARD_RE.search(x.lower()))
+    if not reasons or len(reasons) == len(sentences):
+        return edit, ()
+    return " ".join(x for x in sentences if x not in reasons), reasons
 
 
 _MATERIAL_WORDS = {"letter": "letters", "digit": "digits", "number": "digits"}
@@ -846,7 +871,7 @@ def check_said(plan: EditPlan, schema: TaskSchema) -> None:
         else "colors"
     for kind, value in plan.checks:
         if kind == "count" and value != len(cubes):
-            raise SteerError(f"the edit says the same {value} cubes, but the version it builds on has {len(cubes)}; name the "
+            raise SteerError(f"the edit says the version it builds on has {value} cubes, but it has {len(cubes)}; name the "
                              "version to build on, or say the change without the count")
         if kind == "material" and value != material:
             raise SteerError(f"the edit names the task's {value}, but the version it builds on has {material}; name the cubes "
@@ -870,6 +895,11 @@ def _interpret_counted(edit: str) -> EditPlan:
         if plan is None or plan.standalone or not plan.ops:  # the whole edit read ("now the same three in a tower"
             plan = _interpret_rested(edit)  # restates the task's cubes), the count checked all the same
         return replace(plan, checks=(*plan.checks, count))
+    alone = EDIT_COUNT_ALONE_RE.fullmatch(edit or "")
+    was = alone and (alone.group("was") or alone.group("was2"))
+    if was:  # "six cubes in the row instead of four", "6 not 3": the count before checked, the new one applied
+        plan = _interpret_rested(edit)
+        return replace(plan, checks=(*plan.checks, ("count", int(NUMBER_WORDS.get(was.lower(), was)))))
     return _interpret_rested(edit)
 
 
@@ -888,6 +918,7 @@ def _interpret(edit: str) -> EditPlan:
     if not edit or not edit.strip():
         raise SteerError("the edit is empty; say what to change, e.g. \"add a green block on top\"")
     edit = " ".join(edit.split())  # runs of blanks say nothing, and patterns with optional blanks had taken minutes on them
+    edit = spoken(edit) or edit  # "and uh make the bottom one purple", "reverse that, like, green first"
     edit = INTENSIFIER_RIGHT_RE.sub("", EDIT_INTERJECTION_RE.sub("", edit)) or edit  # "no wait, put it right next to ..."
     edit = TYPO_RE.sub(lambda m: TYPOS[m.group(0).lower()], edit)  # "put a yelow one ontop": the words meant
     edit = POLITE_CONDITION_RE.sub(" ", edit).strip() or edit  # "make the outer two white, if you would": no condition
@@ -909,6 +940,13 @@ def _interpret(edit: str) -> EditPlan:
     t = normalize_edit(edit)
     cue = find_reference(t)
     fresh = FRESH_RE.search(t) if cue.kind != "redo" else None  # "never mind, redo": the undone change, no new task
+    back = re.search(r"\b(?:(?:go|going|come|get|take\s+(?:it|me|us))\s+back\s+to|return\s+to|revert\s+to|restore)\s+(?P<what>[^,.;!?]+)", t)
+    if fresh and back and cue.kind in ("original", "version", "previous"):
+        fresh = None  # "scrap that, go back to the original tower": that version, no new task
+    if fresh and back:  # "scrap that, go back to the round one tower": a version named by what rpg does not keep
+        raise SteerError(f"'{back.group(0).strip()}' goes back to a version the builtin steering does not find by "
+                         f"'{back.group('what').strip()}'; name it as rpg numbers versions (e.g. \"go back to v0\"; `rpg log` lists "
+                         "them), or use --model")
     if fresh:
         return EditPlan(edit, RefCue("none", phrase=fresh.group(0)), standalone=True, fresh=True)
     refuse_inexpressible(edit, t)

@@ -527,3 +527,66 @@ def remove_cubes(edit: str, schema: TaskSchema, colors: list[str], parse) -> tup
     if sorted(meaning(new)) != want:
         return None
     return text, new
+
+
+def _conjunct_clause(schema: TaskSchema, p: Predicate) -> str | None:
+    """A conjunct as a clause the parser reads back (:func:`_clause`), a two-cube stack among them ("place the blue
+    block on top of the green block"); None for any other."""
+    if isinstance(p, Stack) and len(p.objects) == 2:
+        return f"place {_phrase(schema, p.objects[1])} on top of {_phrase(schema, p.objects[0])}"
+    return _clause(schema, p)
+
+
+def replaced_placement(clause: str, schema: TaskSchema, parse) -> tuple[str, TaskSchema] | None:
+    """A relational task with the placement of one cube said again "instead" (``clause``, "put the red cube to the right of
+    the green cube" of "... and the red cube to the left of the green cube"): the task's instruction written anew, clause by
+    clause, with that cube's one old placement (the atom relating the same two things, or else its one placement of the
+    same kind: its patch, its region) replaced by the new one, and the schema it reads as; None unless the clause reads as
+    one placement, exactly one old atom is replaced, every other conjunct has a clause, and the new task's meaning is the
+    old one with that one atom exchanged (checked, so nothing else is lost or added)."""
+    from collections import Counter
+
+    from rpg.schema.meaning import meaning
+
+    try:
+        said = meaning(parse(clause))
+    except (BadInput, ValueError):
+        return None
+    old = meaning(schema)
+    if len(said) != 1 or said[0] in old:
+        return None
+    new = said[0]
+    pair = re.fullmatch(r"[a-z_]+(?:\[[^\]]*\])?\(([^(),;|]+),([^(),;|]+)\)", new)
+    if pair is None:
+        return None
+    kind = new.split("(")[0]
+    same_pair = [a for a in old if (m := re.fullmatch(r"[a-z_]+(?:\[[^\]]*\])?\(([^(),;|]+),([^(),;|]+)\)(?:@\w+)?", a))
+                 and {m.group(1), m.group(2)} == {pair.group(1), pair.group(2)}]
+    same_kind = [a for a in old if a.startswith(f"{kind}({pair.group(1)},")] if kind in ("on_patch", "in_region") else []
+    replaced = same_pair or same_kind
+    if len(replaced) != 1:
+        return None
+    goal = schema.goal_predicate().conjuncts()
+    clauses = [_conjunct_clause(schema, p) for p in goal]
+    if any(c is None for c in clauses) or len(clauses) != len(old):
+        return None
+    kept = []
+    for c in clauses:
+        try:
+            alone = meaning(parse(c))
+        except (BadInput, ValueError):
+            return None
+        if alone != [replaced[0]]:
+            kept.append(c)
+    if len(kept) != len(clauses) - 1:
+        return None
+    text = ", then ".join([*kept, clause])
+    text = text[0].upper() + text[1:]
+    try:
+        made = parse(text)
+    except (BadInput, ValueError):
+        return None
+    if Counter(meaning(made)) != Counter(old) - Counter(replaced) + Counter([new]):
+        return None
+    return text, made
+

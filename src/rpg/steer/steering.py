@@ -39,6 +39,7 @@ from rpg.schema.lexicon import (
     ADDED_CUBE_RE,
     BETWEEN_THEM_RE,
     COLOR_RE,
+    COUNT_WORD_RE,
     EDIT_ADDITIVE_RE,
     EDIT_CONTINUES_RE,
     EDIT_KEEP_THEN_ADD_RE,
@@ -85,6 +86,7 @@ from rpg.steer.relations import (
     between_roles,
     relation_of,
     remove_cubes,
+    replaced_placement,
     rewrite_moved,
     rewrite_patch,
     rewrite_region,
@@ -497,6 +499,11 @@ def _restated(text: str, spec: TaskSpec, unread: list[str]) -> bool:
         at = _END_INDEX.get(end) if spec.structure == "tower" else _LINE_END_INDEX.get((spec.direction, end))
         if at is not None and names and str(names[at]).lower() == str(v).lower():
             held.add(str(v).lower())
+    if spec.structure == "line":  # "reverse that, green first": the line's first or last cube in its own order
+        for m in re.finditer(rf"\b{value}\s+(?:is\s+|goes\s+|comes\s+)?(?P<e>first|last)\b", low):
+            v = canon_color(m.group("v")) if re.fullmatch(COLOR_RE, m.group("v")) else m.group("v").upper()
+            if names and str(names[0 if m.group("e") == "first" else -1]).lower() == str(v).lower():
+                held.add(str(v).lower())
     listed = [canon_color(x) if re.fullmatch(COLOR_RE, x) else x for x in re.findall(rf"\b(?:{COLOR_RE}|\d)\b", low.rsplit(":", 1)[-1])]
     if len(listed) == len(names) > 1 and [str(x).lower() for x in listed] == [str(n).lower() for n in names]:
         held |= {str(x).lower() for x in listed}
@@ -714,7 +721,7 @@ def _same_cubes(edit: str, ref: TaskSchema, schema: TaskSchema) -> TaskSchema:
         return schema
     old = [a for a in ref.assets if a.kind != "goal_patch"]
     new = [a for a in schema.assets if a.kind != "goal_patch"]
-    if len(old) != len(new) and re.search(r"\bsame\s+(?:\d+\s+)?(?:blocks|cubes|bricks)\b", edit, re.IGNORECASE):
+    if len(old) != len(new) and re.search(rf"\bsame\s+(?:(?:\d+|{COUNT_WORD_RE})\s+)?(?:blocks|cubes|bricks)\b", edit, re.IGNORECASE):
         raise SteerError(f"the edit keeps the task's {len(old)} cubes, but the task it states has {len(new)}; say how many "
                          "cubes each part has, or use --model")
     if len(old) != len(new) or any(a.kind != "colored_cube" for a in old + new):
@@ -860,6 +867,10 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
                          "change the builtin steering reads (add, remove, recolour, resize, reorder, move it, another "
                          "structure); say what to change, e.g. \"make the top block red\", or use --model")
     instead = re.search(r"(?i)\binstead\b(?!\s+of\b)", plan.text)
+    replaced = replaced_placement(re.sub(r"(?i)\s*\binstead\b(?!\s+of\b)", "", clause), ref_schema, parse) if instead else None
+    if replaced is not None:  # "put the red cube to the right of the green one instead": that one placement exchanged
+        text, schema = replaced
+        return schema, text, "modify"
     if instead:  # "put the pink one on the red patch instead": its old place goes, which an addition would keep
         raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\" to {where}: 'instead' replaces what the task "
                          "says of that cube, and the builtin steering reads it only as one more placement; say the whole "
@@ -1062,6 +1073,7 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
         if llm is None:
             plan = interpret(edit)
             reference, notes = resolve_reference(plan, hist, fam)
+            notes += [f"set aside: {x!r} (a reason said for the change)" for x in plan.set_aside]
             schema, instruction, intent = plan_schema(plan, fam, reference)
             parameters = plan.parameters()
             _refuse_no_change(plan, fam, reference if reference == hist.head else None, schema)
