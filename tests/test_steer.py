@@ -1750,9 +1750,8 @@ def test_steer_stranger18_classes(tmp_path, base, edits, expected):
 
 
 @pytest.mark.parametrize("base,edits,words", [
-    # silent errors of steer_stranger18's first run, refused now
-    ("Put a green cube on a yellow cube and a pink cube next to the yellow cube", ["put the pink one on the red patch instead"],
-     "'instead' replaces"),  # (the old relation had been kept)
+    # silent errors of steer_stranger18's first run, refused now ("put the pink one on the red patch instead", whose old
+    # relation had been kept, is read now: test_instead_exchanges_one_placement_of_a_relational_task)
     ("Place a cyan cube on the yellow patch", ["add a green cube on top of the cyan one",
                                                "the cube you added before that should be brown"], "before the last"),
     ("Place a cyan cube on the yellow patch", ["the cube you added should be brown"], "is the base task"),
@@ -2173,3 +2172,51 @@ def test_a_reason_sentence_set_aside_is_reported(tmp_path):
                                         name="fam").path).path)
     r = steer(fam.path, "That's too much for today. Leave out the yellow cube.")
     assert any("set aside: \"That's too much for today.\"" in n for n in r.notes)
+
+
+@pytest.mark.parametrize("base, edits", [
+    # a hostile helper's silent errors against this session's spoken, labelled and reasoned edits (each had compiled)
+    ("Build a tower of three red cubes on the blue patch.", ["Make the tower four cubes: two red and two blue."]),  # patch lost
+    ("Put three red cubes in a row from left to right.", ["Make the row four cubes: red, blue, green, yellow."]),  # order lost
+    ("Stack two red cubes and put a blue cube on top.", ["Make the tower five cubes: red, red, blue, blue, and red in the middle."]),
+    ("Put three red cubes in a row.", ["make it 2 mm"]),  # millimetres, no hesitation
+    ("Spell CAT with letter cubes in a row from left to right.", ["the word is now longer"]),
+    ("Stack the red cube on the blue cube.", ["Put a gold coloured cube on top."]),
+    ("Stack the red cube on the blue cube.", ["Put a cube of gold on top."]),
+    ("Build a tower of three red cubes.", ["Make the top one green. Add one."]),  # the second sentence had been dropped
+    ("Build a tower of three red cubes.", ["Make the top one green. The tower goes on the right side."]),
+    ("Build a tower of three red cubes.", ["the row goes on the right side"]),  # the tower had been moved
+    ("Arrange four yellow cubes in a row.", ["six cubes in the tower instead of four"]),
+    ("Stack the red cube on the blue cube.", ["I want the same three in a row instead"]),  # the count said is checked
+    ("Put the red cube to the left of the blue cube and the green cube in front of the blue cube.",
+     ["put the two on top of the green cube"]),  # "the two" is no digit cube
+    ("Spell the word DOG with letter cubes in a row from left to right.",
+     ["the word is now DOGS", "same letters as a tower, D at the bottom and S on top."]),  # O and G had been lost
+])
+def test_attack_on_spoken_and_restated_edits_is_refused(tmp_path, base, edits):
+    from rpg.errors import BadInput
+
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
+    for e in edits[:-1]:
+        steer(fam.path, e)
+    with pytest.raises(BadInput):
+        steer(fam.path, edits[-1])
+
+
+@pytest.mark.parametrize("base, edit, expected", [
+    ("Spell CAT with letter cubes in a row from left to right.", "spell L O O K instead",
+     ["line[left_to_right](L,O,O,K)", "reads(L,O,O,K;direction=left_to_right,face=up,text=LOOK)"]),  # a double letter kept
+    ("Spell CAT with letter cubes in a row from left to right.", "the word is now HMM",
+     ["line[left_to_right](H,M,M)", "reads(H,M,M;direction=left_to_right,face=up,text=HMM)"]),  # a word, no hesitation
+    ("Stack the red cube on the blue cube.", "actually in front", ["stack(blue,red)@front"]),  # the tower moved, not undone
+    ("Put the pink cube to the right of the blue cube.", "add orange left of blue", ["left_of(orange,blue)", "right_of(pink,blue)"]),
+])
+def test_attack_on_spoken_edits_reads_what_was_said(tmp_path, base, edit, expected):
+    assert _steered(tmp_path, base, edit)[0][1] == expected
+
+
+def test_instead_exchanges_one_placement_of_a_relational_task(tmp_path):
+    """"put the pink one on the red patch instead" of a task where pink's one placement is next to the yellow cube: that
+    placement exchanged, the rest kept (it had been refused, and before that the old relation kept beside the new one)."""
+    assert _steered(tmp_path, "Put a green cube on a yellow cube and a pink cube next to the yellow cube",
+                    "put the pink one on the red patch instead") == [("modify", ["on_patch(pink,patch:red)", "stack(yellow,green)"])]

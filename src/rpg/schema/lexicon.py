@@ -71,7 +71,7 @@ of that colour when the word is a colour (:func:`rpg.schema.reading.normalize`).
 TYPOS: dict[str, str] = {
     "blu": "blue", "gren": "green", "yelow": "yellow", "purpel": "purple", "cirlce": "circle", "cricle": "circle",
     "towr": "tower", "pyramd": "pyramid", "rite": "right", "da": "the", "teh": "the", "ontop": "on top",
-    "insted": "instead", "instaed": "instead", "isntead": "instead", "mak": "make", "midle": "middle", "middel": "middle",
+    "insted": "instead", "instaed": "instead", "isntead": "instead", "mak": "make", "midle": "middle", "middel": "middle", "mid": "middle",
     "nxt": "next", "mor": "more", "swtich": "switch", "swich": "switch", "swithc": "switch", "revese": "reverse", "reverce": "reverse",
     "blok": "block", "bloks": "blocks", "rigth": "right", "rihgt": "right", "lefft": "left", "cubs": "cubes",
     "seprate": "separate", "seperate": "separate", "seperately": "separately", "seprately": "separately",
@@ -111,7 +111,7 @@ edit that names one and no change was read is refused, not taken back to that ve
 
 STACK_SIDE_MOVE_RE = re.compile(
     r"\s*(?:(?:now|ok(?:ay)?|and|then|also)[\s,]+)*(?:move|put|shift|slide|place|push|bring|set)\s+(?:it|this|that)\s+(?:over\s+)?"
-    r"(?:to|on|at|in|towards?)\s+the\s+(?:far\s+)?(?P<side>left|right)(?:\s+side)?(?:\s+(?:instead|please|now|a\s+bit))*\s*")
+    r"(?:to|on|at|in|towards?)\s+the\s+(?:far\s+)?(?P<side>left|right|front|back)(?:\s+(?:side|half))?(?:\s+(?:instead|please|now|a\s+bit))*\s*")
 """An edit that moves "it" to a side with no cube to be the side of ("move it to the left"): of
 a two-cube stack, "it" is the stack (its top cube to the left would be a relation "of" a cube)."""
 
@@ -2312,7 +2312,7 @@ one before ("Separately, put ...", "In addition, ..."; every sentence of a goal 
 ("Take your time.": a task's goal is judged at the episode's end) and who the task is for ("Corner task for the new
 policy."): dropped."""
 
-DISFLUENCY_RE = re.compile(r"(?i)(?P<lead>\s*,)?\s*\b(?:uh+m?|um+|erm*|uhm+|mm+|hmm+)\b(?!\s*,?\s*no\b)\s*(?P<trail>,)?(?=\s|$)")
+DISFLUENCY_RE = re.compile(r"(?i)(?P<lead>\s*,)?\s*\b(?!(?-i:[A-Z]{2,})\b)(?:uh+m?|um+|erm*|uhm+|hmm+|mmm+)\b(?!\s*,?\s*no\b)\s*(?P<trail>,)?(?=\s|$)")
 """A speaker's hesitation in a transcript ("put the uh orange cube"): dropped.  A hesitation between
 two commas is a pause, dropped with them ("the top one, er, pink": the top one pink), unless a
 list item comes before it ("red, um, blue": the list's comma stays; "the top one" is no list item)."""
@@ -2569,9 +2569,9 @@ def dropped_hesitation(m: re.Match) -> str:
                                      or len(before.group(1)) == 1)
     return "," if listed else ""
 
-STUTTER_RE = re.compile(r"(?i)\b(?P<run>(?:[a-z']+\s+){0,2}[a-z']+)\s+(?P=run)\b")
-"""Words said twice in a row in a transcript ("the the", "on the on the", "and then and then",
-"stack stack"): said once.  :func:`rpg.schema.reading.normalize_words` leaves a run with a colour or
+STUTTER_RE = re.compile(r"(?i)\b(?P<run>(?:[a-z']{2,}\s+){0,2}[a-z']{2,})\s+(?P=run)\b")
+"""Words of two letters or more said twice in a row in a transcript ("the the", "on the on the", "and then and then",
+"stack stack"): said once ("B O O K" spells a word).  :func:`rpg.schema.reading.normalize_words` leaves a run with a colour or
 a number alone unless it opens with an article ("the blue the blue cube": a stutter; "blue blue" may
 be two cubes)."""
 
@@ -3207,8 +3207,10 @@ EDIT_CHANGE_VERB_RE = re.compile(r"\b(?:change|replace|swap|substitute|remove|de
 EDIT_SWAP_BOTH_RE = re.compile(r"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|actually|and|then|just|hmm|nah)\s*,?\s+)*"
                                r"(?:(?:the\s+two(?:\s+(?:cubes|blocks))?|they|both(?:\s+(?:cubes|blocks))?)\s+(?:should\s+|must\s+|need\s+to\s+)?)?"
                                r"(?:swap|switch|exchange|interchange|trade)\s+(?:them|the\s+two(?:\s+(?:cubes|blocks))?|both(?:\s+of\s+(?:them|their\s+(?:places"
-                               r"|sides|positions|spots|patches)))?|(?:their|the)\s+(?:places|sides|positions|spots|patches)|places|sides|positions|patches)"
-                               r"(?:\s+(?:around|over|please))*\s*[.!]?\s*$")
+                               r"|sides|positions|spots|patches)))?|(?:their|the)\s+(?:places|sides|positions|spots|patches)|places|sides|positions|patches"
+                               r"|the\s+(?:cubes|blocks)(?:\s+(?:between|on|across)\s+the\s+(?:two\s+)?patches)?"
+                               r"|which\s+(?:cube|block)\s+goes\s+(?:on|where|to)\s+(?:which\s+patch)?)"
+                               r"(?:\s+(?:around|over|please))*\s*(?:,\s*nothing\s+else)?\s*[.!]?\s*$")
 """An edit that swaps the task's two cubes without naming them ("switch them", "please interchange both
 of their sides", "swap the patches", "the two cubes should trade patches")."""
 
@@ -3233,7 +3235,7 @@ EDIT_LEADING_RE = re.compile(r"^\s*(?:now|ok(?:ay)?|actually|instead|then|next|a
 """Words that open an edit and say nothing of the task ("ok now ...", "also ...")."""
 
 EDIT_INTERJECTION_RE = re.compile(
-    r"^\s*(?:(?:(?:no(?=\s*[,.!;]|\s+(?:wait|sorry|actually|hold\s+on|scratch))|nope\b|nah\b)|wait|hold\s+on|sorry|oops|hmm+|um+|uh+)"
+    r"^\s*(?:(?:(?:no(?=\s*[,.!;]|\s+(?:wait|sorry|actually|hold\s+on|scratch))|nope\b|nah\b)|wait|hold\s+on|sorry|oops|hmm+|um+|uh+|mm+(?=\s*,))"
     r"\s*[,.!;]*\s*)+(?=\S)")
 """Words that open an edit as a correction and say nothing of the task ("no wait, put it next
 to the blue block", "sorry, make it red", "nah put it on the patch"): not a negation, nor a time
@@ -3295,14 +3297,36 @@ EDIT_REASON_HAZARD_RE = re.compile(
     r"|walls?|piles?|grids?|circles?|layers?|letters?|digits?|numbers?|labels?|make|put|add|remove|swap|move|change|reverse|flip|replace|take"
     r"|leave|keep|drop|not|no|never|n't|instead|only|should|must|need\w*|want\w*|wish\w*|rather|same|different|again|back|undo|revert\w*"
     r"|version|v\d|if|unless|when|until|before|after|then|previous|original|each|every|all|both|wrong|mistake|error|bug|sorry"
-    r"|actually|start\w*|scratch|fresh|new|over|redo|restart|reset|clear|empty)\b")
+    r"|actually|start\w*|scratch|fresh|new|over|redo|restart|reset|clear|empty|double|twice|triple|half|tall\w*|short\w*|high\w*|low\w*"
+    r"|long\w*|wide\w*|narrow\w*|big\w*|small\w*|large\w*|size|more|fewer|less|extra|missing|revers\w*|invert\w*|upside|flip\w*"
+    r"|mirror\w*|supposed|meant|has\s+to|have\s+to|had\s+to|like\s+(?:it|them|the|that|this)|likes\s+(?:it|them|the)|says?|said|ask\w*"
+    r"|wants?|would|'d|prefer\w*|better|worse|rather|could\s+use|fine\s+with|ok\s+with|okay\s+with|without|lacks?|needs?)\b")
+EDIT_SENTENCE_CHANGE_RE = re.compile(
+    rf"(?i)\b(?:add|put|place|stack|set|move|remove|take|drop|make|build|turn|swap|switch|change|another|more|fewer|less|extra|one"
+    rf"|two|three|four|five|six|seven|eight|\d+|towers?|rows?|lines?|pyramids?|walls?|grids?|circles?|piles?|patch\w*|left|right|front"
+    rf"|back|top|bottom|middle|corners?|sides?|{COLOR_RE})\b")
+"""A word of a change in one sentence of a steering edit of several ("Add one.", "The tower goes on the right side."): a
+sentence with one that the edit's reading does not account for makes it refused (chat, "cool.", "thanks", has none)."""
+
+EDIT_REASON_JUDGEMENT_RE = re.compile(
+    r"(?i)\b(?:too|easy|easier|hard|difficult|simple|boring|bored|good|great|ready|struggl\w*|tricky|confus\w*|fun|nice|tired|busy"
+    r"|practi[cs]e\w*|progress\w*|improv\w*|mastered|nailed|aced|breezed|finished|done|enjoy\w*|loved|hated|keen|excited|happy|pleased"
+    r"|impressive|impressed|works?|worked|working|nervous|confident|patient|impatient|quick|fast|slow|today|now|yesterday)\b")
+"""The judgement a reason sentence (:data:`EDIT_REASON_SENTENCE_RE`) makes of a person or of the version before ("too
+easy", "good at this now", "struggled"): one is needed, so that only a sentence that says why is set aside."""
 """What keeps a sentence before or after a steering edit's change from being a reason said for it
 (:data:`EDIT_REASON_SENTENCE_RE`): a colour, a count, a place, a structure, a label, a change verb, a negation, a
 restriction, a wish, a version, a condition or time, an order, a quantifier, a take-back: it may change the edit."""
 
+PATCH_RECOLOUR_RE = re.compile(rf"(?i)(?:(?:ok(?:ay)?|so|now|and|actually)\s*,?\s*)*(?:make|turn|change|paint|colou?r)\s+(?:the\s+)?"
+                               rf"(?:goal\s+|target\s+)?(?:patch|pad|mat)\s+(?:to\s+|into\s+)?({COLOR_RE})(?:\s+instead|\s+now)?\s*[.!]?")
+"""A steering edit that makes the task's one patch another colour ("make the patch cyan"), after the rewrites of
+:data:`EDIT_REWRITES` ("patch should be cyan", "patch -> cyan")."""
+
 EDIT_STEP_NAME_RE = re.compile(
-    r"(?i)^\s*(?:(?:the\s+)?(?:next|new|final|another)\s+)?(?:(?!(?:undo|revert|back|same|previous|last|first|original)\b)[a-z]+\s+)?"
-    r"(?:round|ablation|condition|variant|trial|level|stage|attempt|iteration|phase|scenario|exercise|challenge|puzzle|setting)"
+    r"(?i)^\s*(?:(?:the\s+)?(?:next|new|final|another)\s+)?(?:(?:height|colou?r|region|place|position|count|number|label|letter|relation"
+    r"|size|order|structure|layout|shape|baseline|control|test|first|second|third|fourth|fifth|bonus|practice|warm-?up)\s+)?"
+    r"(?:round|ablation|condition|variant|trial|attempt|iteration|phase|scenario|exercise|challenge|puzzle|setting)"
     r"(?:\s+(?:#?\d+|[a-z]|one|two|three|four|five|six|seven|eight|nine|ten))?(?:\s+(?:rule\s+)?change)?\s*(?::|,(?=\s+(?:please\s+)?"
     r"(?:make|put|add|swap|switch|remove|take|move|change|use|turn|replace|place|stack|set|drop|delete|build|reverse|flip)\b))\s+(?=\S)")
 """A name the edit gives the version it makes, before its change ("Round 3: ...", "Ablation 1: ...", "Condition C: ...",
@@ -3311,16 +3335,10 @@ names the version made, never the one built on (that one is named in the change:
 read, or refused, there); dropped."""
 
 
-def every_cube_said(m: re.Match) -> bool:
-    """Whether the structure said again (group 2, its count) has each of its cubes given a colour in ``rest``: the counts
-    of colours there add up to it ("five cubes: three red and then two blue"), or as many colours are listed."""
-    n = int(NUMBER_WORDS.get(m.group(2).lower(), m.group(2)))
-    rest = m.group("rest").lower()
-    counted = re.findall(rf"\b(\d+|{COUNT_WORD_RE})\s+(?:{COLOR_RE})\b", rest)
-    if counted:
-        return sum(int(NUMBER_WORDS.get(c, c)) for c in counted) == n and not re.search(
-            rf"(?<!\d\s)(?<![a-z]\s)\b(?:{COLOR_RE})\b(?<!\d)", re.sub(rf"\b(?:\d+|{COUNT_WORD_RE})\s+(?:{COLOR_RE})\b", " ", rest))
-    return len(re.findall(rf"\b(?:{COLOR_RE})\b", rest)) == n and not re.search(rf"\b(?:\d+|{COUNT_WORD_RE})\b", rest)
+TOWER_RESTATED_RE = re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|so|now|then)\s*,?\s*)*make\s+the\s+(?:tower|stack)\s+(?P<n>\d+|{COUNT_WORD_RE})"
+                               r"\s+(?:cubes|blocks)(?:\s+(?:tall|high))?\s*[:,]\s*(?P<rest>[^.;!?]+)[.!]?\s*$")
+"""A steering edit that says a tower again, its count and every cube's colour by counts ("make the tower five cubes:
+three red and then two blue on top"), read by the steering as the whole tower (:func:`rpg.steer.steering.plan_schema`)."""
 
 
 def edit_label_dropped(m: re.Match) -> str:
@@ -3378,10 +3396,6 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
                 r"(row|tower|stack|line|pyramid|wall|grid|circle|pile)\s+(?:at|in|on)\s+the\s+(back|front|left|right)"
                 r"(?:\s+(side|half|edge))?(?:\s+of\s+the\s+table)?\s+instead\s*[.!]?\s*$"),
      lambda m: f"move the whole {m.group(1)} to the {m.group(2)} {m.group(3) or 'side'}"),
-    # "make the tower five cubes: three red and then two blue on top": the whole structure said again, every cube of it
-    (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|so|now|then)\s*,?\s*)*make\s+the\s+(tower|stack|row|line|wall|pyramid)\s+(\d+|{COUNT_WORD_RE})"
-                r"\s+(cubes|blocks)(?:\s+(?:tall|high|long|wide))?\s*[:,]\s*(?P<rest>[^.;!?]+)[.!]?\s*$"),
-     lambda m: f"build a {m.group(1)} of {m.group(2)} {m.group(3)}: {m.group('rest')}" if every_cube_said(m) else m.group(0)),
     # "the red cube, put it to the right of the green one instead": the cube said first, then the change to it
     (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|so|now|and|actually)\s*,?\s*)*(the\s+(?:(?:{COLOR_RE})|letter\s+[a-z]|digit\s+\d|[a-z]+)\s+"
                 r"(?:cube|block|one)),\s+(?:please\s+)?(put|move|place|set|make|turn|take|slide|shift|paint|colou?r)\s+it\b"),
@@ -3392,22 +3406,35 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
                 r"(back|front|left|right)(?:\s+(side|half|edge))?(?:\s+of\s+the\s+table)?(?:\s+instead|\s+now)?\s*[.!]?\s*$"),
      lambda m: f"move the whole {m.group(1)} to the {m.group(2)} {m.group(3) or 'side'}"),
     # "patch green instead", "the patch blue": the patch made that colour
-    (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|so|now|and|actually)\s*,?\s*)*(?:the\s+)?patch\s+(?:->\s*)?({COLOR_RE})(?:\s+instead|\s+now)?\s*[.!]?\s*$"),
+    (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|so|now|and|actually)\s*,?\s*)*(?:the\s+)?patch\s+(?:->\s*|(?:should|must|needs\s+to|has\s+to)\s+be\s+|is\s+now\s+|becomes\s+)?({COLOR_RE})"
+                r"(?:\s+instead|\s+now)?\s*[.!]?\s*$"),
      r"make the patch \1"),
+    # "use the yellow patch", "same but on the cyan patch": the task's one patch in that colour (checked by the steering)
+    (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|so|now|and|actually)\s*,?\s*)*(?:(?:use|try)\s+(?:a|the)|(?:same\s+(?:but|thing)\s+)?on\s+(?:a|the))\s+"
+                rf"({COLOR_RE})\s+(?:goal\s+)?patch(?:\s+instead)?\s*[.!]?\s*$"), r"make the patch \1"),
+    # "the back two should be blue", "top row in yellow", "put the green layer in pink": those cubes made that colour
+    (re.compile(rf"(?i)^\s*(?:(?:oh|and|ok(?:ay)?|so|now|then)\s*,?\s*)*(?:put\s+)?((?:the\s+)?(?:top|bottom|middle|left|right|front|back|first"
+                rf"|last|second|third|fourth|end|outer|inner|base|{COLOR_RE})(?:\s+[a-z0-9]+){{0,3}}?)\s+(?:should\s+be|must\s+be|needs\s+to\s+be"
+                rf"|has\s+to\s+be|in|->)\s+({COLOR_RE})(?:\s+instead|\s+now)?\s*[.!]?\s*$"), r"make \1 \2"),
+    # "move to front left": the task's cubes to that corner
+    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|so|now|and|actually)\s*,?\s*)*(?:move|put|shift|slide)\s+(?:it\s+|them\s+|everything\s+)?(?:to|in|into)"
+                r"\s+(?:the\s+)?(front|back)[\s-](left|right)(?:\s+corner)?\s*[.!]?\s*$"), r"move it to the \1 \2 corner"),
     # "the word is now DOGS", "word should be 'CAT'": that word spelled instead
     (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|so|now|and)\s*,?\s*)*(?:the\s+)?word\s+(?:is\s+now|should\s+be|becomes|is\s+to\s+be|will\s+be)\s+"
-                r"(?:now\s+)?'?([A-Za-z]{2,})'?\s*[.!]?\s*$"), r"spell \1 instead"),
+                r"(?:now\s+)?(?:(?-i:([A-Z]{2,}))|['\"\u2018\u201c]([A-Za-z]{2,})['\"\u2019\u201d])\s*[.!]?\s*$"),
+     lambda m: f"spell {(m.group(1) or m.group(2)).upper()} instead"),  # (a word in capitals or quoted: "now longer" is none)
     # "teams also have to put the green cube on the blue patch": what is to be done, said of whoever does it
     (re.compile(r"(?i)^\s*(?:(?:the\s+)?(?:teams?|players?|students?|robots?|kids|pupils|learners|they|you|we)\s+)(also\s+)?(?:have|has|need|needs"
                 r"|must|should)\s+(?:to\s+)?(?=(?:also\s+)?(?:put|place|add|stack|move|set|build|make)\b)"), r"\1"),
     # "I want the same three in a tower instead: ...": the task's cubes made into that structure, the roles after it read
-    (re.compile(rf"(?i)^\s*(?:i\s+(?:want|need|'d\s+like)|let'?s\s+(?:have|try|do)|how\s+about|try)\s+(?:the\s+)?same\s+(?:\d+|{COUNT_WORD_RE})?"
-                r"\s*(?:cubes\s+|blocks\s+|ones\s+)?(?:in|as)\s+a\s+(tower|stack|row|line|pyramid|circle)\s+instead\b"), r"make it a \1 instead"),
+    (re.compile(rf"(?i)^\s*(?:i\s+(?:want|need|'d\s+like)|let'?s\s+(?:have|try|do)|how\s+about|try)\s+(?:the\s+)?same\s+(?P<n>\d+|{COUNT_WORD_RE})?"
+                r"\s*(?:cubes\s+|blocks\s+|ones\s+)?(?:in|as)\s+a\s+(?P<s>tower|stack|row|line|pyramid|circle)\s+instead\b"),
+     lambda m: (f"same {m.group('n')} but " if m.group("n") else "") + f"make it a {m.group('s')} instead"),
     # "add a row of black cubes on top, three of them": the count said after the row
     (re.compile(rf"(?i)\b(add\s+(?:a|another|one\s+more)\s+(?:row|layer|course|level)\s+of)\s+((?:{COLOR_RE})\s+(?:cubes|blocks)\s+on\s+top)"
                 rf"\s*,\s*((?:\d+|{COUNT_WORD_RE}))\s+of\s+them\s*[.!]?\s*$"), r"\1 \3 \2"),
     # "add, um, an eight on top": a digit cube by its number word
-    (re.compile(r"(?i)\b(a|an|the)\s+(zero|two|three|four|five|six|seven|eight|nine)\b(?=\s+(?:on\s+top|at\s+the\s+(?:top|bottom|end|start)"
+    (re.compile(r"(?i)\b(a|an)\s+(zero|two|three|four|five|six|seven|eight|nine)\b(?=\s+(?:on\s+top|at\s+the\s+(?:top|bottom|end|start)"
                 r"|to\s+the\s+(?:left|right)|instead)\b)"),
      lambda m: f"{m.group(1)} digit {DIGIT_WORDS.index(m.group(2).lower())}"),
     # "actually in front", "at the back instead": a place alone, where the task's cubes are to be
@@ -3418,6 +3445,9 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"(?i)\badd\s+({COLOR_RE})\s+(?:also\s+)?(?=(?:close\s+to|next\s+to|near|beside|behind|in\s+front\s+of|on\s+top\s+of|on|to\s+the"
                 r"|(?:left|right)\s+of|under|below|between)\b)"),
      r"add a \1 cube "),
+    # "add a brown cube next to blue": the cube it goes by, named by its colour alone (the task's other cube had been read)
+    (re.compile(rf"(?i)^(\s*add\s+an?\s+(?:{COLOR_RE})\s+cube\s+(?:close\s+to|next\s+to|near|beside|behind|in\s+front\s+of|on\s+top\s+of|on"
+                rf"|(?:to\s+the\s+)?(?:left|right)\s+of|under|below))\s+({COLOR_RE})\s*(?=[.!,;]|$)"), r"\1 the \2 cube"),
     # "add a yellow and an orange at the right end", "add yellow and orange on top": a cube of each colour added there
     (re.compile(rf"(?i)\badd\s+(?:(?:a|an|one)\s+)?({COLOR_RE})\s+and\s+(?:(?:a|an|one)\s+)?({COLOR_RE})"
                 r"(?=\s+(?:at\s+the\s+(?:(?:left|right|front|back)\s+end|top|bottom|start|end|beginning)|on\s+top)\s*(?:,\s*in\s+that\s+order)?"

@@ -41,11 +41,13 @@ from rpg.schema.lexicon import (
     EDIT_MORE_ALONE_RE,
     EDIT_OPENING,
     EDIT_REASON_HAZARD_RE,
+    EDIT_REASON_JUDGEMENT_RE,
     EDIT_REASON_SENTENCE_RE,
     EDIT_REFERS_RE,
     EDIT_REST_STAYS_RE,
     EDIT_REWRITES,
     EDIT_SAME_COUNT_RE,
+    EDIT_SENTENCE_CHANGE_RE,
     EDIT_SHOULD_BE_RE,
     EDIT_SWAP_BOTH_RE,
     EDIT_VAGUE_RE,
@@ -75,7 +77,7 @@ from rpg.schema.structures import (
     sort_labels,
     structure_of_word,
 )
-from rpg.steer.spec import Item, TaskSpec
+from rpg.steer.spec import Item, TaskSpec, extract
 
 INTENTS = ("tweak", "extend", "modify", "pivot", "fresh")
 """Steering categories, weakest to strongest change."""
@@ -240,8 +242,9 @@ def refuse_inexpressible(edit: str, t: str) -> None:
     if vague and not EDIT_COUNT_RE.search(t):  # "make it a bit taller" (a number said, "like 3 blocks", is a count)
         raise SteerError(f"cannot apply the edit \"{edit.strip()[:80]}\": '{vague.group(0)}' is a vague quantity: rpg's counts are "
                          "exact and its relations qualitative; say how many blocks (e.g. \"make it 5 blocks tall\")")
-    for m in re.finditer(r"\b([a-z]+)\b(?=\s+(?:cubes?|blocks?|ones?|patch(?:es)?|bricks?)\b)", t):
-        word = m.group(1)  # "put a gold cube on top": a colour the palette lacks (it had been dropped, a green cube added)
+    for m in re.finditer(r"\b([a-z]+)\b(?=(?:[\s-]+colou?red)?\s+(?:cubes?|blocks?|ones?|patch(?:es)?|bricks?)\b)"
+                         r"|\b(?:cubes?|blocks?|ones?|bricks?)\s+(?:of|in)\s+([a-z]+)\b", t):
+        word = m.group(1) or m.group(2)  # "put a gold cube on top": a colour the palette lacks (it had been dropped, a green cube added)
         if word in colour_names() and not re.fullmatch(COLOR_RE, word) and word not in _known_words():
             raise SteerError(f"cannot apply the edit \"{edit.strip()[:80]}\": '{word}' {UNKNOWN_COLOUR[1]}")
     inherited = (c for c in INEXPRESSIBLE if c[0] != "reference" and c[1] not in INSTRUCTION_ONLY)
@@ -834,10 +837,49 @@ def interpret(edit: str) -> EditPlan:
     edit, aside = reasons_set_aside(edit)
     if aside:  # "That's too much for today. Leave out the yellow cube.": the change read without its reason
         return replace(interpret(edit), set_aside=aside)
+    plan = _interpret_material(edit)
+    _refuse_a_sentence_unread(edit, plan)
+    return plan
+
+
+def _refuse_a_sentence_unread(edit: str, plan: EditPlan) -> None:
+    """Refuse an edit of several sentences when one of them, read alone, asks for a change that the whole edit's reading
+    lacks ("Make the top one green. Add one.": the addition had been dropped, the recolour alone applied).
+
+    Raises:
+        SteerError: a sentence's change is not among those read.
+    """
+    sentences = [x for x in re.split(r"(?<=[.!?])\s+", (edit or "").strip()) if x.strip(" .!?")]
+    if len(sentences) < 2 or plan.standalone or plan.fresh:
+        return
+    read = {o.op for o in plan.ops}
+    for sentence in sentences:
+        if len(re.findall(r"[A-Za-z0-9]+", sentence)) < 2 or not EDIT_SENTENCE_CHANGE_RE.search(sentence):
+            continue  # "bigger. 4 by 4", "cool. put ...", "thanks": a word alone or chat asks no change of its own
+        try:
+            alone = _interpret_material(sentence)
+        except BadInput as exc:  # "Make the top one green. Add one.": a sentence not read alone is no part of the change read
+            raise SteerError(f"the edit \"{edit.strip()[:80]}\" has a sentence that is not read as a change: '{sentence.strip()}' "
+                             f"({str(exc).splitlines()[0][:120]}); say one change per edit, or use --model") from None
+        missing = {o.op for o in alone.ops} - read
+        unread = not alone.ops and not alone.standalone and not alone.fresh and alone.cue.kind == "current" and bool(read)
+        if missing or unread or (alone.standalone and not alone.fresh and read):
+            raise SteerError(f"the edit \"{edit.strip()[:80]}\" asks for a change in '{sentence.strip()}' that its reading as one "
+                             f"edit lacks ({', '.join(sorted(missing)) or 'a change of its own'}); say one change per edit, or use "
+                             "--model")
+
+
+def _interpret_material(edit: str) -> EditPlan:
+    """:func:`interpret` past the reasons set aside: the task's letters or digits named ("same letters but ...")."""
     kept = re.search(r"(?i)\bsame\s+(?P<m>letter|digit|number)s?\b", edit or "")
     plan = _interpret_counted(edit)
     if kept:  # "same letters but reversed": the task's cubes are letters, checked
-        return replace(plan, checks=(*plan.checks, ("material", _MATERIAL_WORDS[kept.group("m").lower()])))
+        plan = replace(plan, checks=(*plan.checks, ("material", _MATERIAL_WORDS[kept.group("m").lower()])))
+    if not plan.standalone and not plan.fresh and not any(o.op in ("structure", "keep") for o in plan.ops):
+        named = re.findall(r"(?i)\bthe\s+(?:whole\s+|entire\s+)?(tower|stack|row|line|pyramid|wall|grid|circle|ring|pile)\b(?!\s+of\b)", edit or "")
+        kinds = sorted({structure_of_word(w) for w in named})
+        if len(kinds) == 1:  # "the row goes on the right side": the task's structure is a row (checked; a tower had been moved)
+            plan = replace(plan, checks=(*plan.checks, ("structure", kinds[0])))
     return plan
 
 
@@ -848,7 +890,8 @@ def reasons_set_aside(edit: str) -> tuple[str, tuple[str, ...]]:
     sentences = [x for x in re.split(r"(?<=[.!?])\s+", (edit or "").strip()) if x]
     if len(sentences) < 2:
         return edit, ()
-    reasons = tuple(x for x in sentences if EDIT_REASON_SENTENCE_RE.match(x) and not EDIT_REASON_HAZARD_RE.search(x.lower()))
+    reasons = tuple(x for x in sentences if EDIT_REASON_SENTENCE_RE.match(x) and EDIT_REASON_JUDGEMENT_RE.search(x)
+                    and not EDIT_REASON_HAZARD_RE.search(x.lower()))
     if not reasons or len(reasons) == len(sentences):
         return edit, ()
     return " ".join(x for x in sentences if x not in reasons), reasons
@@ -873,6 +916,9 @@ def check_said(plan: EditPlan, schema: TaskSchema) -> None:
         if kind == "count" and value != len(cubes):
             raise SteerError(f"the edit says the version it builds on has {value} cubes, but it has {len(cubes)}; name the "
                              "version to build on, or say the change without the count")
+        if kind == "structure" and (spec := extract(schema)) is not None and spec.structure != value:
+            raise SteerError(f"the edit names the task's {value}, but the version it builds on is a {spec.structure}; name "
+                             "the structure the task has, or say the change another way")
         if kind == "material" and value != material:
             raise SteerError(f"the edit names the task's {value}, but the version it builds on has {material}; name the cubes "
                              "the task has")

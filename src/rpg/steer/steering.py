@@ -48,8 +48,10 @@ from rpg.schema.lexicon import (
     NO_GOAL_RE,
     NUMBER_WORDS,
     PAIRWISE_RELATIONS,
+    PATCH_RECOLOUR_RE,
     SAME_CUBES_RE,
     SAME_PATCH_RE,
+    TOWER_RESTATED_RE,
     VARIANT_LABEL_RE,
 )
 from rpg.schema.model import TaskSchema
@@ -326,6 +328,12 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     elif ref_schema is not None and not patches and SAME_PATCH_RE.search(plan.text):  # (a gray patch had been made up)
         raise SteerError(f"'{SAME_PATCH_RE.search(plan.text).group(0)}' names a patch, but v{reference} has none; say which patch "
                          "(e.g. \"on a red patch\"), or use --model")
+    restated = _tower_restated(plan.text, ref_schema) if ref_schema is not None else None
+    if restated is not None:  # "make the tower five cubes: three red and then two blue on top": the whole tower again
+        return restated
+    recoloured = _patch_recoloured(plan.text, ref_schema, patches) if len(patches) == 1 else None
+    if recoloured is not None:  # "patch should be cyan" of a tower on a patch: the one patch in that colour, the rest kept
+        return recoloured
     if ref_schema is not None and (roles := between_roles(plan.text, ref_schema)) != plan.text:  # "the middle one"
         plan = replace(interpret(roles), cue=plan.cue)
     if ref_schema is not None:
@@ -348,6 +356,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     if plan.standalone:
         _refuse_invented_patch(plan.text, ref_schema, schema)
         schema = _same_cubes(plan.text, ref_schema, schema)
+        _refuse_same_cubes_lost(plan.text, ref_schema, schema)
         if relation_of(schema) and relation_of(ref_schema) and same_assets(schema, ref_schema):
             return schema, text, "modify"  # the same cubes in another relation
         if _stacks_a_new_cube_on_the_task(schema, ref_schema):  # "now put the green cube on the red cube": on top of it
@@ -678,9 +687,10 @@ def _refuse_pivot_that_loses_cubes(edit: str, ref: TaskSchema, schema: TaskSchem
     """
     old = [a for a in ref.assets if a.kind != "goal_patch"]
     new = [a for a in schema.assets if a.kind != "goal_patch"]
-    if intent != "pivot" or len(new) >= len(old) or re.search(
-            rf"\b(?:\d+|{'|'.join(NUMBER_WORDS)})\b|{STRUCTURE_RE}", edit, re.IGNORECASE):
-        return
+    as_structure = re.search(rf"(?i)\b(?:as|into|to)\s+(?:a|one)\s+{STRUCTURE_RE}|\bmake\s+(?:it|them)\s+(?:a|one)\s+{STRUCTURE_RE}", edit)
+    if intent != "pivot" or len(new) >= len(old) or re.search(rf"\b(?:\d+|{'|'.join(NUMBER_WORDS)})\b", edit, re.IGNORECASE) or (
+            re.search(STRUCTURE_RE, edit, re.IGNORECASE) and not as_structure):
+        return  # ("now as a tower, orange bottom pink top" of three cubes: the task's cubes as a tower, none dropped)
     raise SteerError(f"the edit reads as a new task of {len(new)} cube{'s' if len(new) != 1 else ''} ({schema.goal_summary}), but "
                      f"v{reference} has {len(old)} and the edit says neither how many nor to start a new task; say what "
                      f"changes in v{reference} (e.g. \"make the middle one gray\"), or \"new task: ...\"")
@@ -736,6 +746,26 @@ def _same_cubes(edit: str, ref: TaskSchema, schema: TaskSchema) -> TaskSchema:
     for c in sorted({a.color for a in new} - {color}):
         schema = recolor(schema, c, color, merge=True)
     return schema
+
+
+def _refuse_same_cubes_lost(edit: str, ref: TaskSchema, schema: TaskSchema) -> None:
+    """Refuse a whole-task reading of an edit that keeps the task's cubes ("same letters as a tower, D at the bottom and S on
+    top") whose cubes are not the task's (the tower had been built of D and S alone).
+
+    Raises:
+        SteerError: the reading has other cubes than the version built on.
+    """
+    from collections import Counter
+
+    from rpg.schema.meaning import descriptor
+
+    if not re.search(r"(?i)\b(?:the\s+)?same\s+(?:\d+\s+|[a-z]+\s+)?(?:letters?|digits?|numbers?|cubes|blocks|ones)\b", edit):
+        return
+    had = Counter(descriptor(a) for a in ref.assets if a.kind != "goal_patch")
+    now = Counter(descriptor(a) for a in schema.assets if a.kind != "goal_patch")
+    if had != now:
+        raise SteerError(f"the edit keeps the task's cubes, but reads as a task of other cubes ({schema.goal_summary}); name "
+                         "every cube's place, or use --model")
 
 
 def _refuse_one_of_several(plan, ref_schema) -> None:
@@ -804,6 +834,60 @@ def _refuse_as_parser_would(edit: str) -> None:
         pass
 
 
+def _tower_restated(text: str, ref: TaskSchema) -> tuple[TaskSchema, str, str] | None:
+    """A task that is one tower and nothing else (no place, patch or other cube), said again with its count and each cube's
+    colour by counts that add up to it (:data:`TOWER_RESTATED_RE`: "make the tower five cubes: three red and then two blue on
+    top"): the tower read from those words, checked to be one tower of exactly the colours counted; None for any other edit
+    or task, or where the words do not read so."""
+    from collections import Counter
+
+    from rpg.schema.meaning import meaning
+
+    m = TOWER_RESTATED_RE.match(text)
+    if m is None or not re.fullmatch(r"stack\([^()@;|]*\)", " ".join(meaning(ref))):
+        return None
+    n = int(NUMBER_WORDS.get(m.group("n").lower(), m.group("n")))
+    rest = m.group("rest").lower()
+    counted = re.findall(rf"\b(\d+|{COUNT_WORD_RE})\s+({COLOR_RE})\b", rest)
+    colours = Counter({canon_color(c): 0 for _, c in counted})
+    for k, c in counted:
+        colours[canon_color(c)] += int(NUMBER_WORDS.get(k, k))
+    if not counted or sum(colours.values()) != n or len(re.findall(rf"\b(?:{COLOR_RE})\b", rest)) != len(counted):
+        return None  # a colour without its count, or counts that do not make the tower: not every cube said
+    instruction = f"Build a tower of {n} cubes: {m.group('rest').strip()}"
+    try:
+        schema = parse(instruction)
+    except (BadInput, ValueError):
+        return None
+    atoms = meaning(schema)
+    got = re.fullmatch(r"stack\(([^()@;|]*)\)", " ".join(atoms))
+    if got is None or Counter(got.group(1).split(",")) != colours:
+        return None
+    return schema, instruction, intent_of_standalone(extract(schema), extract(ref))
+
+
+def _patch_recoloured(text: str, ref: TaskSchema, patches: list[str]) -> tuple[TaskSchema, str, str] | None:
+    """The task's one patch made another colour ("make the patch cyan", "patch should be cyan": :data:`PATCH_RECOLOUR_RE`)
+    with the rest of its goal kept: its instruction with that patch's colour word changed, read back and checked to mean
+    the task with only the patch's colour changed; None for any other edit, or where the instruction does not read so."""
+    from rpg.schema.meaning import meaning
+
+    m = PATCH_RECOLOUR_RE.fullmatch(text.strip())
+    new = canon_color(m.group(1)) if m else None
+    if new is None or new == patches[0] or any(a.color == new for a in ref.assets if a.kind == "goal_patch"):
+        return None
+    said = re.compile(rf"(?i)\b{re.escape(patches[0])}(?=\s+(?:goal\s+|target\s+)?(?:patch|pad|mat)\b)")
+    if len(said.findall(ref.instruction)) < 1:
+        return None
+    instruction = said.sub(new, ref.instruction)
+    try:
+        schema = parse(instruction)
+    except (BadInput, ValueError):
+        return None
+    want = sorted(a.replace(f"patch:{patches[0]}", f"patch:{new}") for a in meaning(ref))
+    return (schema, instruction, "tweak") if sorted(meaning(schema)) == want else None
+
+
 def _pair(atom: str) -> frozenset[str] | None:
     """The two cubes a relation atom of :func:`rpg.schema.meaning.meaning` relates (``left_of(red,blue)``,
     ``stack(blue,red)``), or None for an atom over more or fewer."""
@@ -851,6 +935,10 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
     cubes = [a for a in ref_schema.assets if a.kind != "goal_patch"]
     if clause is None and len(cubes) == 1 and re.search(r"(?i)\b(?:next\s+to|beside|behind|in\s+front\s+of|on(?:to)?|under|"
                                                           r"(?:left|right)\s+of|near|on\s+top\s+of|atop|above|below)\s+it\b", plan.text):
+        if any(a.kind == "goal_patch" for a in ref_schema.assets) and re.search(r"(?i)\bon(?:to)?\s+it\b", plan.text):
+            raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\" to {where}: 'on it' may be the cube or the patch "
+                             "it stands on; name which (e.g. \"on the orange cube\" or \"on the patch\")")  # ("+ a brown cube on
+            # it too" of a cube on a patch had been stacked on the cube; "too" says the patch)
         one = f"the {cubes[0].color} block" if cubes[0].color else f"the {cubes[0].label} block"  # the task's one cube
         clause = addition_clause(re.sub(r"(?i)\bit\b", one, plan.text))
     named = [f"the {a.color} block" if a.color else f"the {a.label} block" for a in cubes]
