@@ -241,7 +241,7 @@ def test_edits_beyond_the_paper_on_a_tower(tmp_path):
     r = compiled("Stack the red block on top of the yellow block", tmp_path, name="fam")
     fam = create_family(r.path)
     steps = [
-        ("Make the tower taller", "tweak", ["yellow", "red", "blue"]),
+        ("Put a blue block on top", "extend", ["yellow", "red", "blue"]),  # ("make it taller" makes up the colour: refused)
         ("Use green instead of yellow", "tweak", ["green", "red", "blue"]),
         ("Swap the top and bottom blocks", "modify", ["blue", "red", "green"]),
         ("Put a letter B cube at the bottom", "extend", ["letter B", "blue", "red", "green"]),
@@ -298,7 +298,6 @@ def test_word_and_gradient_edits_apply_to_lines():
 
 
 @pytest.mark.parametrize("base,edit,expected", [
-    ("Stack the red block on top of the yellow block", "Double the number of blocks", "Build a tower from bottom to top: yellow, red, blue, green"),
     ("Stack the red block on top of the yellow block", "Change the colors to a rainbow", "Build a tower from bottom to top: red, orange"),
     ("Stack the red block on top of the yellow block", "Add another red block to the bottom", "Build a tower from bottom to top: red, yellow, red"),
     ("Build a pyramid with a base of 3", "Make the pyramid 3D", "Build a pyramid of red blocks with a 3x3 base"),
@@ -410,7 +409,7 @@ def test_moving_a_cube_alternating_colours_and_removing_cubes(tmp_path):
     s = steer(line, "Remove one block")
     assert (s.intent, s.valid) == ("tweak", True)
     assert s.compile.schema.goal_summary == "cubes in a line left to right: red_1, blue, red_2"
-    s = steer(fam, "Make it 5 blocks tall")
+    s = steer(fam, "Add a yellow block and an orange block on top")
     s = steer(fam, "Remove the top two blocks")  # back to the 3-block tower of v1: reused
     assert s.reused and s.version == 1
 
@@ -1404,9 +1403,18 @@ def test_steer_stranger11_silent_errors_are_read_as_meant(tmp_path, base, edits,
     assert _steered(tmp_path, base, *edits)[-1] == expected
 
 
-def test_a_count_of_cubes_that_repeat_no_pattern_adds_a_new_colour(tmp_path):
-    assert _steered(tmp_path, "Stack a red cube, then a blue cube, then a green cube", "make it four")[-1] \
-        == ("tweak", ["stack(red,blue,green,yellow)"])
+@pytest.mark.parametrize("base, edit", [
+    ("Stack a red cube, then a blue cube, then a green cube", "make it four"),
+    ("Stack the red block on top of the yellow block", "Double the number of blocks"),
+    ("Stack the red block on top of the yellow block", "Make the tower taller"),
+    ("Build a tower of red, yellow and blue cubes from bottom to top.", "5 not 3"),
+])
+def test_a_count_of_cubes_of_several_colours_that_repeat_no_pattern_is_refused(tmp_path, base, edit):
+    """The new cubes' colours are unsaid (a colour the task did not use had been made up: a goal stricter than the words;
+    issue 30). One colour, a repeating pattern, or a stack in any order of cubes nobody named still grow."""
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
+    with pytest.raises(SteerError, match="not the new cubes' colours"):
+        steer(fam.path, edit)
 
 
 @pytest.mark.parametrize("base,edits,expected", [
@@ -2220,3 +2228,26 @@ def test_instead_exchanges_one_placement_of_a_relational_task(tmp_path):
     placement exchanged, the rest kept (it had been refused, and before that the old relation kept beside the new one)."""
     assert _steered(tmp_path, "Put a green cube on a yellow cube and a pink cube next to the yellow cube",
                     "put the pink one on the red patch instead") == [("modify", ["on_patch(pink,patch:red)", "stack(yellow,green)"])]
+
+
+@pytest.mark.parametrize("base, edit", [
+    # a second hostile helper's findings against this session's steering (each had compiled silently wrong or crashed)
+    ("Build a tower from bottom to top: red, blue, green.", "the wall goes on the right side"),  # KeyError 'wal'
+    ("Build a tower from bottom to top: red, blue, green.", "Remove the top one. Remove the bottom one."),  # one removed
+    ("Build a tower from bottom to top: red, blue, green.", "Add a pink cube on top. Add a pink cube at the bottom."),
+    ("Build a tower from bottom to top: red, blue, green.", "Make the red one green. She's nervous, so far apart."),
+    ("Put the red cube on the green patch.", "the row goes at the back"),  # the patch had been dropped, no row there
+    ("Stack the letter B cube on the letter A cube.", "make the tower 3 cubes: two red and one blue on top"),  # letters lost
+    ("Build a tower of three red cubes.", "make the tower 4 cubes: two red and two blue, in any order"),  # an order made up
+])
+def test_second_attack_on_this_sessions_steering_is_refused(tmp_path, base, edit):
+    from rpg.errors import BadInput
+
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
+    with pytest.raises(BadInput):
+        steer(fam.path, edit)
+
+
+def test_a_wall_named_by_an_edit_of_a_wall_is_moved(tmp_path):
+    assert _steered(tmp_path, "Build a wall two cubes high: three green on the bottom and three white on top.",
+                    "the wall goes on the right side") == [("modify", ["wall(green,green,green|white,white,white)@right"])]

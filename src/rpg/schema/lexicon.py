@@ -3300,11 +3300,13 @@ EDIT_REASON_HAZARD_RE = re.compile(
     r"|actually|start\w*|scratch|fresh|new|over|redo|restart|reset|clear|empty|double|twice|triple|half|tall\w*|short\w*|high\w*|low\w*"
     r"|long\w*|wide\w*|narrow\w*|big\w*|small\w*|large\w*|size|more|fewer|less|extra|missing|revers\w*|invert\w*|upside|flip\w*"
     r"|mirror\w*|supposed|meant|has\s+to|have\s+to|had\s+to|like\s+(?:it|them|the|that|this)|likes\s+(?:it|them|the)|says?|said|ask\w*"
-    r"|wants?|would|'d|prefer\w*|better|worse|rather|could\s+use|fine\s+with|ok\s+with|okay\s+with|without|lacks?|needs?)\b")
+    r"|wants?|would|'d|prefer\w*|better|worse|rather|could\s+use|fine\s+with|ok\s+with|okay\s+with|without|lacks?|needs?|so|apart"
+    r"|together|spread\w*|diagonal\w*|around|round|away|close\w*|far|keep|stay\w*)\b")
 EDIT_SENTENCE_CHANGE_RE = re.compile(
     rf"(?i)\b(?:add|put|place|stack|set|move|remove|take|drop|make|build|turn|swap|switch|change|another|more|fewer|less|extra|one"
     rf"|two|three|four|five|six|seven|eight|\d+|towers?|rows?|lines?|pyramids?|walls?|grids?|circles?|piles?|patch\w*|left|right|front"
-    rf"|back|top|bottom|middle|corners?|sides?|{COLOR_RE})\b")
+    rf"|back|top|bottom|middle|corners?|sides?|far|apart|together|close\w*|next|near|beside|behind|between|around|spread\w*"
+    rf"|diagonal\w*|under\w*|above|below|over|again|undo|revert\w*|swap\w*|revers\w*|flip\w*|{COLOR_RE})\b")
 """A word of a change in one sentence of a steering edit of several ("Add one.", "The tower goes on the right side."): a
 sentence with one that the edit's reading does not account for makes it refused (chat, "cool.", "thanks", has none)."""
 

@@ -77,7 +77,7 @@ from rpg.schema.structures import (
     sort_labels,
     structure_of_word,
 )
-from rpg.steer.spec import Item, TaskSpec, extract
+from rpg.steer.spec import Item, TaskSpec
 
 INTENTS = ("tweak", "extend", "modify", "pivot", "fresh")
 """Steering categories, weakest to strongest change."""
@@ -853,6 +853,7 @@ def _refuse_a_sentence_unread(edit: str, plan: EditPlan) -> None:
     if len(sentences) < 2 or plan.standalone or plan.fresh:
         return
     read = {o.op for o in plan.ops}
+    said = 0  # the changes the sentences ask for one by one ("Remove the top one. Remove the bottom one." asks two)
     for sentence in sentences:
         if len(re.findall(r"[A-Za-z0-9]+", sentence)) < 2 or not EDIT_SENTENCE_CHANGE_RE.search(sentence):
             continue  # "bigger. 4 by 4", "cool. put ...", "thanks": a word alone or chat asks no change of its own
@@ -861,12 +862,16 @@ def _refuse_a_sentence_unread(edit: str, plan: EditPlan) -> None:
         except BadInput as exc:  # "Make the top one green. Add one.": a sentence not read alone is no part of the change read
             raise SteerError(f"the edit \"{edit.strip()[:80]}\" has a sentence that is not read as a change: '{sentence.strip()}' "
                              f"({str(exc).splitlines()[0][:120]}); say one change per edit, or use --model") from None
+        said += len(alone.ops)
         missing = {o.op for o in alone.ops} - read
         unread = not alone.ops and not alone.standalone and not alone.fresh and alone.cue.kind == "current" and bool(read)
         if missing or unread or (alone.standalone and not alone.fresh and read):
             raise SteerError(f"the edit \"{edit.strip()[:80]}\" asks for a change in '{sentence.strip()}' that its reading as one "
                              f"edit lacks ({', '.join(sorted(missing)) or 'a change of its own'}); say one change per edit, or use "
                              "--model")
+    if said > len(plan.ops):
+        raise SteerError(f"the edit \"{edit.strip()[:80]}\" asks for {said} changes in its sentences, and its reading as one edit "
+                         f"makes {len(plan.ops)}; say one change per edit, or use --model")
 
 
 def _interpret_material(edit: str) -> EditPlan:
@@ -877,10 +882,20 @@ def _interpret_material(edit: str) -> EditPlan:
         plan = replace(plan, checks=(*plan.checks, ("material", _MATERIAL_WORDS[kept.group("m").lower()])))
     if not plan.standalone and not plan.fresh and not any(o.op in ("structure", "keep") for o in plan.ops):
         named = re.findall(r"(?i)\bthe\s+(?:whole\s+|entire\s+)?(tower|stack|row|line|pyramid|wall|grid|circle|ring|pile)\b(?!\s+of\b)", edit or "")
-        kinds = sorted({structure_of_word(w) for w in named})
+        kinds = sorted({k for w in named if (k := _structure_named(w))})
         if len(kinds) == 1:  # "the row goes on the right side": the task's structure is a row (checked; a tower had been moved)
             plan = replace(plan, checks=(*plan.checks, ("structure", kinds[0])))
     return plan
+
+
+def _structure_named(word: str) -> str | None:
+    """The structure kind a word names ("row" -> "line", "wall" -> "block"), or None for a word of no registered kind."""
+    if re.fullmatch(r"(?i)walls?", word):
+        return "block"  # a wall is read back as a block of cubes (rpg.schema.structures)
+    try:
+        return structure_of_word(word)
+    except KeyError:
+        return None
 
 
 def reasons_set_aside(edit: str) -> tuple[str, tuple[str, ...]]:
@@ -916,9 +931,18 @@ def check_said(plan: EditPlan, schema: TaskSchema) -> None:
         if kind == "count" and value != len(cubes):
             raise SteerError(f"the edit says the version it builds on has {value} cubes, but it has {len(cubes)}; name the "
                              "version to build on, or say the change without the count")
-        if kind == "structure" and (spec := extract(schema)) is not None and spec.structure != value:
+        if kind == "structure":
+            from rpg.steer.carried import split
+
+            spec = split(schema)[0]
+        if kind == "structure" and spec is not None and spec.structure != value:
+            value = "wall" if value == "block" else value
             raise SteerError(f"the edit names the task's {value}, but the version it builds on is a {spec.structure}; name "
                              "the structure the task has, or say the change another way")
+        if kind == "structure" and value != "block" and spec is None and not (value == "tower" and any(
+                type(p).__name__ == "Stack" for p in schema.goal_predicate().conjuncts())):
+            raise SteerError(f"the edit names the task's {value}, but the version it builds on has none ({schema.goal_summary}); "
+                             "say the change of its cubes, or state the whole new task")
         if kind == "material" and value != material:
             raise SteerError(f"the edit names the task's {value}, but the version it builds on has {material}; name the cubes "
                              "the task has")
@@ -1757,6 +1781,15 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             if p.get("grow") and (n - len(spec.items)) * p["grow"] <= 0:
                 raise SteerError(f"'{'taller' if p['grow'] > 0 else 'shorter'}' and {n} cubes disagree: the "
                                  f"{spec.structure} has {len(spec.items)}; say the count alone")
+            colours = [it.color for it in spec.items]
+            if n > len(spec.items) and not spec.kind.layered and all(it.label is None for it in spec.items) \
+                    and len(set(colours)) > 1 and _period(list(spec.items)) is None and spec.ordering != "color" \
+                    and _orders_cubes(spec):  # (a stack in any order is of cubes nobody named: one more of them is as free)
+                # "make it 5" of a red, yellow, blue tower: which colours the new cubes have is unsaid (green and orange had
+                # been made up, a goal stricter than the words)
+                raise SteerError(f"the {spec.structure} has cubes of {len(set(colours))} colours ({', '.join(colours)}); '{n}' "
+                                 "says how many but not the new cubes' colours: say them (e.g. \"add a green and an orange cube "
+                                 "on top\"), or use --model")
             spec = _resize(spec, n)
         elif o.op == "word":
             if not spec.kind.spells:

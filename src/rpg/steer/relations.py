@@ -326,10 +326,12 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         # "move it to the left side of the table instead", "take it off the patch and put it in the middle of the table"
         return f"Place the {colors[0]} block {region_phrase(region)}", "modify"
     moved = re.fullmatch(rf"\s*(?:(?:now|ok(?:ay)?|actually|and|then|just|hmm|nah|please)\s*,?\s+)*(?:move|put|place|shift|slide|bring|push)\s+"
-                         rf"(?:it|the\s+(?:(?:{COLOR_RE})\s+)?(?:cube|block|one))\s+(?:over\s+)?(?:to|onto|on|into)\s+(?:the|a)\s+"
+                         rf"(?:it|the\s+(?:(?P<c>{COLOR_RE})\s+)?(?:cube|block|one))\s+(?:over\s+)?(?:to|onto|on|into)\s+(?:the|a)\s+"
                          rf"({COLOR_RE})\s+(?:goal\s+|target\s+)?patch\s*(?:instead|please)?\s*", t)
-    if moved and len(colors) == 1 and canon_color(moved.group(1)) != pcolor:  # "move it to the yellow patch": that patch instead
-        return f"Place the {colors[0]} block on the {canon_color(moved.group(1))} goal patch", "modify"
+    if moved and moved.group("c") and canon_color(moved.group("c")) not in colors:
+        return None  # "put the green cube on the yellow patch" of a red cube: another cube (the red one had been moved)
+    if moved and len(colors) == 1 and canon_color(moved.group(2)) != pcolor:  # "move it to the yellow patch": that patch instead
+        return f"Place the {colors[0]} block on the {canon_color(moved.group(2))} goal patch", "modify"
     intent = None
     t = re.sub(r"\btarget\b(?!\s+patch)", "patch", t)  # "make the target green"
     recolor = re.search(rf"\bpatch\b[^.;]*?\b(?:to|into|be|is)?\s*({COLOR_RE})\b|\b({COLOR_RE})\s+(?:goal\s+|target\s+)?patch\b", t)

@@ -844,8 +844,9 @@ def _tower_restated(text: str, ref: TaskSchema) -> tuple[TaskSchema, str, str] |
     from rpg.schema.meaning import meaning
 
     m = TOWER_RESTATED_RE.match(text)
-    if m is None or not re.fullmatch(r"stack\([^()@;|]*\)", " ".join(meaning(ref))):
-        return None
+    if m is None or not re.fullmatch(r"stack\([^()@;|]*\)", " ".join(meaning(ref))) \
+            or any(a.kind != "colored_cube" for a in ref.assets) or re.search(r"(?i)\b(?:any|random|whatever|no)\s+order\b", text):
+        return None  # (letter cubes recoloured, an order said free: not the tower said again)
     n = int(NUMBER_WORDS.get(m.group("n").lower(), m.group("n")))
     rest = m.group("rest").lower()
     counted = re.findall(rf"\b(\d+|{COUNT_WORD_RE})\s+({COLOR_RE})\b", rest)
@@ -935,7 +936,14 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
     cubes = [a for a in ref_schema.assets if a.kind != "goal_patch"]
     if clause is None and len(cubes) == 1 and re.search(r"(?i)\b(?:next\s+to|beside|behind|in\s+front\s+of|on(?:to)?|under|"
                                                           r"(?:left|right)\s+of|near|on\s+top\s+of|atop|above|below)\s+it\b", plan.text):
-        if any(a.kind == "goal_patch" for a in ref_schema.assets) and re.search(r"(?i)\bon(?:to)?\s+it\b", plan.text):
+        if any(a.kind == "goal_patch" for a in ref_schema.assets) and re.search(
+                r"(?i)\bon(?:to)?\s+it\s*,?\s*(?:too|as\s+well)\b|\balso\b[^.;]*\bon(?:to)?\s+it\b", plan.text):
+            try:  # ("the block that's closest to the robot": refused for that first)
+                parse(re.sub(r"(?i)\bit\b", "the patch", plan.text))
+            except BadInput as exc:
+                raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": {str(exc).splitlines()[0]}") from None
+            except ValueError:
+                pass
             raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\" to {where}: 'on it' may be the cube or the patch "
                              "it stands on; name which (e.g. \"on the orange cube\" or \"on the patch\")")  # ("+ a brown cube on
             # it too" of a cube on a patch had been stacked on the cube; "too" says the patch)
