@@ -3320,7 +3320,10 @@ easy", "good at this now", "struggled"): one is needed, so that only a sentence 
 (:data:`EDIT_REASON_SENTENCE_RE`): a colour, a count, a place, a structure, a label, a change verb, a negation, a
 restriction, a wish, a version, a condition or time, an order, a quantifier, a take-back: it may change the edit."""
 
-PATCH_RECOLOUR_RE = re.compile(rf"(?i)(?:(?:ok(?:ay)?|so|now|and|actually)\s*,?\s*)*(?:make|turn|change|paint|colou?r)\s+(?:the\s+)?"
+_SAID_FIRST = r"\s*(?:(?:oh|ok(?:ay)?|so|now|and|then|actually|hmm+|no|nah)\s*,?\s*)*"
+"""Words a terse steering edit may open with that change nothing ("ok so", "actually", "nah"), for the rewrites below."""
+
+PATCH_RECOLOUR_RE = re.compile(r"(?i)" + _SAID_FIRST + rf"(?:make|turn|change|paint|colou?r)\s+(?:the\s+)?"
                                rf"(?:goal\s+|target\s+)?(?:patch|pad|mat)\s+(?:to\s+|into\s+)?({COLOR_RE})(?:\s+instead|\s+now)?\s*[.!]?")
 """A steering edit that makes the task's one patch another colour ("make the patch cyan"), after the rewrites of
 :data:`EDIT_REWRITES` ("patch should be cyan", "patch -> cyan")."""
@@ -3394,35 +3397,35 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
                 r"(back|front|left|right)(?:\s+(side|half|edge))?\s*[.!]?\s*$"),
      lambda m: f"move the whole {m.group(1)} to the {m.group(2)} {m.group(3) or 'side'}"),
     # "let's try the row at the front instead", "the tower on the left instead": the whole structure moved to that side
-    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|so|now|actually|hmm+)\s*,?\s*)*(?:let'?s\s+)?(?:try|have|put|do|see)\s+(?:the\s+)?"
+    (re.compile(r"(?i)^" + _SAID_FIRST + r"(?:let'?s\s+)?(?:try|have|put|do|see)\s+(?:the\s+)?"
                 r"(row|tower|stack|line|pyramid|wall|grid|circle|pile)\s+(?:at|in|on)\s+the\s+(back|front|left|right)"
                 r"(?:\s+(side|half|edge))?(?:\s+of\s+the\s+table)?\s+instead\s*[.!]?\s*$"),
      lambda m: f"move the whole {m.group(1)} to the {m.group(2)} {m.group(3) or 'side'}"),
     # "the red cube, put it to the right of the green one instead": the cube said first, then the change to it
-    (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|so|now|and|actually)\s*,?\s*)*(the\s+(?:(?:{COLOR_RE})|letter\s+[a-z]|digit\s+\d|[a-z]+)\s+"
+    (re.compile(r"(?i)^" + _SAID_FIRST + rf"(the\s+(?:(?:{COLOR_RE})|letter\s+[a-z]|digit\s+\d|[a-z]+)\s+"
                 r"(?:cube|block|one)),\s+(?:please\s+)?(put|move|place|set|make|turn|take|slide|shift|paint|colou?r)\s+it\b"),
      r"\2 \1"),
     # "the tower goes on the right side", "the row should be at the back": the whole structure moved to that side
-    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|so|now|and|then)\s*,?\s*)*the\s+(?:whole\s+)?(row|tower|stack|line|pyramid|wall|grid|circle|pile)\s+"
+    (re.compile(r"(?i)^" + _SAID_FIRST + r"the\s+(?:whole\s+)?(row|tower|stack|line|pyramid|wall|grid|circle|pile)\s+"
                 r"(?:goes|should\s+go|should\s+be|must\s+be|has\s+to\s+be|is\s+to\s+be|sits|moves)\s+(?:on|in|at|to)\s+the\s+"
                 r"(back|front|left|right)(?:\s+(side|half|edge))?(?:\s+of\s+the\s+table)?(?:\s+instead|\s+now)?\s*[.!]?\s*$"),
      lambda m: f"move the whole {m.group(1)} to the {m.group(2)} {m.group(3) or 'side'}"),
     # "patch green instead", "the patch blue": the patch made that colour
-    (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|so|now|and|actually)\s*,?\s*)*(?:the\s+)?patch\s+(?:->\s*|(?:should|must|needs\s+to|has\s+to)\s+be\s+|is\s+now\s+|becomes\s+)?({COLOR_RE})"
+    (re.compile(r"(?i)^" + _SAID_FIRST + rf"(?:the\s+)?patch\s+(?:->\s*|(?:should|must|needs\s+to|has\s+to)\s+be\s+|is\s+now\s+|becomes\s+)?({COLOR_RE})"
                 r"(?:\s+instead|\s+now)?\s*[.!]?\s*$"),
      r"make the patch \1"),
     # "use the yellow patch", "same but on the cyan patch": the task's one patch in that colour (checked by the steering)
-    (re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|so|now|and|actually)\s*,?\s*)*(?:(?:use|try)\s+(?:a|the)|(?:same\s+(?:but|thing)\s+)?on\s+(?:a|the))\s+"
+    (re.compile(r"(?i)^" + _SAID_FIRST + rf"(?:(?:use|try)\s+(?:a|the)|(?:same\s+(?:but|thing)\s+)?on\s+(?:a|the))\s+"
                 rf"({COLOR_RE})\s+(?:goal\s+)?patch(?:\s+instead)?\s*[.!]?\s*$"), r"make the patch \1"),
     # "the back two should be blue", "top row in yellow", "put the green layer in pink": those cubes made that colour
-    (re.compile(rf"(?i)^\s*(?:(?:oh|and|ok(?:ay)?|so|now|then)\s*,?\s*)*(?:put\s+)?((?:the\s+)?(?:top|bottom|middle|left|right|front|back|first"
+    (re.compile(r"(?i)^" + _SAID_FIRST + rf"(?:put\s+)?((?:the\s+)?(?:top|bottom|middle|left|right|front|back|first"
                 rf"|last|second|third|fourth|end|outer|inner|base|{COLOR_RE})(?:\s+[a-z0-9]+){{0,3}}?)\s+(?:should\s+be|must\s+be|needs\s+to\s+be"
                 rf"|has\s+to\s+be|in|->)\s+({COLOR_RE})(?:\s+instead|\s+now)?\s*[.!]?\s*$"), r"make \1 \2"),
     # "move to front left": the task's cubes to that corner
-    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|so|now|and|actually)\s*,?\s*)*(?:move|put|shift|slide)\s+(?:it\s+|them\s+|everything\s+)?(?:to|in|into)"
+    (re.compile(r"(?i)^" + _SAID_FIRST + r"(?:move|put|shift|slide)\s+(?:it\s+|them\s+|everything\s+)?(?:to|in|into)"
                 r"\s+(?:the\s+)?(front|back)[\s-](left|right)(?:\s+corner)?\s*[.!]?\s*$"), r"move it to the \1 \2 corner"),
     # "the word is now DOGS", "word should be 'CAT'": that word spelled instead
-    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|so|now|and)\s*,?\s*)*(?:the\s+)?word\s+(?:is\s+now|should\s+be|becomes|is\s+to\s+be|will\s+be)\s+"
+    (re.compile(r"(?i)^" + _SAID_FIRST + r"(?:the\s+)?word\s+(?:is\s+now|should\s+be|becomes|is\s+to\s+be|will\s+be)\s+"
                 r"(?:now\s+)?(?:(?-i:([A-Z]{2,}))|['\"\u2018\u201c]([A-Za-z]{2,})['\"\u2019\u201d])\s*[.!]?\s*$"),
      lambda m: f"spell {(m.group(1) or m.group(2)).upper()} instead"),  # (a word in capitals or quoted: "now longer" is none)
     # "teams also have to put the green cube on the blue patch": what is to be done, said of whoever does it
@@ -3440,7 +3443,7 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
                 r"|to\s+the\s+(?:left|right)|instead)\b)"),
      lambda m: f"{m.group(1)} digit {DIGIT_WORDS.index(m.group(2).lower())}"),
     # "actually in front", "at the back instead": a place alone, where the task's cubes are to be
-    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|so|now|actually|hmm+|no|nah)\s*,?\s*)*(?:in|at|to)\s+(?:the\s+)?(back|front)"
+    (re.compile(r"(?i)^" + _SAID_FIRST + r"(?:in|at|to)\s+(?:the\s+)?(back|front)"
                 r"(?:\s+(side|half|edge))?(?:\s+of\s+the\s+table)?(?:\s+instead)?\s*[.!]?\s*$"),
      lambda m: f"move it to the {m.group(1)} {m.group(2) or 'side'}"),
     # "add brown also close to green": a cube of that colour added there
