@@ -862,14 +862,14 @@ def _refuse_a_sentence_unread(edit: str, plan: EditPlan) -> None:
         except BadInput as exc:  # "Make the top one green. Add one.": a sentence not read alone is no part of the change read
             raise SteerError(f"the edit \"{edit.strip()[:80]}\" has a sentence that is not read as a change: '{sentence.strip()}' "
                              f"({str(exc).splitlines()[0][:120]}); say one change per edit, or use --model") from None
-        said += len(alone.ops)
+        said += sum(o.op not in ("count", "dims") for o in alone.ops)  # (a count said twice, "shorter? Just two", is one)
         missing = {o.op for o in alone.ops} - read
         unread = not alone.ops and not alone.standalone and not alone.fresh and alone.cue.kind == "current" and bool(read)
         if missing or unread or (alone.standalone and not alone.fresh and read):
             raise SteerError(f"the edit \"{edit.strip()[:80]}\" asks for a change in '{sentence.strip()}' that its reading as one "
                              f"edit lacks ({', '.join(sorted(missing)) or 'a change of its own'}); say one change per edit, or use "
                              "--model")
-    if said > len(plan.ops):
+    if said > sum(o.op not in ("count", "dims") for o in plan.ops):
         raise SteerError(f"the edit \"{edit.strip()[:80]}\" asks for {said} changes in its sentences, and its reading as one edit "
                          f"makes {len(plan.ops)}; say one change per edit, or use --model")
 
@@ -1784,7 +1784,9 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             colours = [it.color for it in spec.items]
             if n > len(spec.items) and not spec.kind.layered and all(it.label is None for it in spec.items) \
                     and len(set(colours)) > 1 and _period(list(spec.items)) is None and spec.ordering != "color" \
-                    and _orders_cubes(spec):  # (a stack in any order is of cubes nobody named: one more of them is as free)
+                    and _orders_cubes(spec) and not any(q.op in ("recolor", "pattern", "colors", "material", "word") for q in ops):
+                # (a stack in any order is of cubes nobody named: one more of them is as free; "make it 4 high all green",
+                # "five tall, alternating red and blue" say the colours)
                 # "make it 5" of a red, yellow, blue tower: which colours the new cubes have is unsaid (green and orange had
                 # been made up, a goal stricter than the words)
                 raise SteerError(f"the {spec.structure} has cubes of {len(set(colours))} colours ({', '.join(colours)}); '{n}' "
