@@ -87,7 +87,7 @@ DEVELOPMENT = {
     "stranger16": ("steer_stranger16.yaml", "STRANGER steering set 16 (steer_stranger16.yaml, development material, first run at the end of the seventeenth session)"),
     "stranger17": ("steer_stranger17.yaml", "STRANGER steering set 17 (steer_stranger17.yaml, development material)"),
     "stranger18": ("steer_stranger18.yaml", "STRANGER steering set 18 (steer_stranger18.yaml, development material)"),
-    "stranger19": ("steer_stranger19.yaml", "STRANGER steering set 19 (steer_stranger19.yaml, transfer measure of the thirty-first session: aggregates only)"),
+    "stranger19": ("steer_stranger19.yaml", "STRANGER steering set 19 (steer_stranger19.yaml, transfer measure of the thirty-first session; development material from the thirty-sixth)"),
     "stranger20": ("steer_stranger20.yaml", "STRANGER steering set 20 (steer_stranger20.yaml, written at the start of the thirty-sixth session: aggregates only)"),
 }
 UNSEEN = HERE / "steer_unseen.yaml"
