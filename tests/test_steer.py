@@ -2251,3 +2251,9 @@ def test_second_attack_on_this_sessions_steering_is_refused(tmp_path, base, edit
 def test_a_wall_named_by_an_edit_of_a_wall_is_moved(tmp_path):
     assert _steered(tmp_path, "Build a wall two cubes high: three green on the bottom and three white on top.",
                     "the wall goes on the right side") == [("modify", ["wall(green,green,green|white,white,white)@right"])]
+
+
+def test_a_colour_said_twice_before_one_cube_is_one_cube(tmp_path):
+    """"add a yellow yellow cube on top": one cube (a stutter before a singular noun; two had been added)."""
+    assert _steered(tmp_path, "Build a tower from bottom to top: red, blue, green.", "add a yellow yellow cube on top") == [
+        ("extend", ["stack(red,blue,green,yellow)"])]

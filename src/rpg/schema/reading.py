@@ -1171,6 +1171,7 @@ def spoken(text: str) -> str:
     text = lexicon.HESITANT_COLOUR_RE.sub(r"\g<det> \g<c>\g<noun>", text)  # "the red, er, orange cube": orange
     text = lexicon.DISFLUENCY_RE.sub(lexicon.dropped_hesitation, text)  # a transcript's "uh", "um"
     text = lexicon.PAUSE_FILLER_RE.sub(",", text)  # "reverse that, like, green first"
+    text = re.sub(rf"(?i)\b(a|an|one)\s+({COLOR_RE})\s+\2\s+(cube|block|brick)\b(?!s)", r"\1 \2 \3", text)  # "a yellow yellow cube": one
     text = lexicon.STUTTER_RE.sub(lambda m: m.group(0) if re.search(rf"\b(?:{COLOR_RE}|{lexicon.COUNT_WORD_RE})\b|\d", m.group("run"), re.I)
                                   and not re.match(r"(?i)(?:the|a|an)\s", m.group("run")) else m.group("run"), text)
     return lexicon.SPOKEN_CORRECTION_RE.sub(", ", text)  # "... purple patch no I mean the pink patch"
