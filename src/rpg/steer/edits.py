@@ -77,6 +77,7 @@ from rpg.schema.structures import (
     sort_labels,
     structure_of_word,
 )
+from rpg.steer.carried import split
 from rpg.steer.spec import Item, TaskSpec
 
 INTENTS = ("tweak", "extend", "modify", "pivot", "fresh")
@@ -875,7 +876,8 @@ def _refuse_a_sentence_unread(edit: str, plan: EditPlan) -> None:
 
 
 def _interpret_material(edit: str) -> EditPlan:
-    """:func:`interpret` past the reasons set aside: the task's letters or digits named ("same letters but ...")."""
+    """:func:`interpret` past the reasons set aside, with what the edit says the task has as checks (:func:`check_said`):
+    its letters or digits ("same letters but ...") and the one structure it names ("the row goes on the right side")."""
     kept = re.search(r"(?i)\bsame\s+(?P<m>letter|digit|number)s?\b", edit or "")
     plan = _interpret_counted(edit)
     if kept:  # "same letters but reversed": the task's cubes are letters, checked
@@ -918,7 +920,7 @@ _MATERIAL_WORDS = {"letter": "letters", "digit": "digits", "number": "digits"}
 
 def check_said(plan: EditPlan, schema: TaskSchema) -> None:
     """Check what the edit says the version it builds on has (:attr:`EditPlan.checks`): its count of cubes, its letters or
-    digits.
+    digits, its structure (a wall is read back as a block; a tower of a relational task is its stack).
 
     Raises:
         SteerError: the version has another count or other cubes.
@@ -932,8 +934,6 @@ def check_said(plan: EditPlan, schema: TaskSchema) -> None:
             raise SteerError(f"the edit says the version it builds on has {value} cubes, but it has {len(cubes)}; name the "
                              "version to build on, or say the change without the count")
         if kind == "structure":
-            from rpg.steer.carried import split
-
             spec = split(schema)[0]
         if kind == "structure" and spec is not None and spec.structure != value:
             value = "wall" if value == "block" else value
