@@ -83,7 +83,8 @@ STRANGER_SETS = {
     "stranger46": ("stranger46.yaml", "STRANGER set 46 (stranger46.yaml, written at the start of the thirty-fourth session: aggregates only)"),
     "stranger47": ("stranger47.yaml", "STRANGER set 47 (stranger47.yaml, written during the thirty-fourth session; development material from the thirty-fifth)"),
     "stranger48": ("stranger48.yaml", "STRANGER set 48 (stranger48.yaml, written at the start of the thirty-fifth session; its classes reported at that session's end: not clean)"),
-    "stranger49": ("stranger49.yaml", "STRANGER set 49 (stranger49.yaml, written at the start of the thirty-sixth session: aggregates only)"),
+    "stranger49": ("stranger49.yaml", "STRANGER set 49 (stranger49.yaml, transfer measure of the thirty-sixth session; development material from the thirty-seventh)"),
+    "stranger50": ("stranger50.yaml", "STRANGER set 50 (stranger50.yaml, written at the start of the thirty-seventh session: aggregates only)"),
 }
 SPLITS = HERE / "splits.yaml"
 
