@@ -7381,3 +7381,56 @@ def test_towers_on_patches_named_by_colour_keep_their_cubes_colours_free(text, e
     """The towers' cubes had been made white and black, like their patches, a colour no word gave them (an attack's
     class); cubes named by colour keep theirs."""
     assert sorted(meaning(check_feasibility(parse(text)))) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    # each tower's cubes said "made only of": the colours had been spread over both towers (stack(red,blue) twice)
+    ("Two towers, two cubes each: one made only of red cubes and one made only of blue cubes.",
+     ["stack(blue,blue)", "stack(red,red)"]),
+    # a heading counting towers, then each tower as a chain with its place (refused: "which cubes make each tower")
+    ("Build two towers of two cubes: yellow on orange in the back left corner, and white on gray in the front right corner.",
+     ["stack(gray,white)@front_right", "stack(orange,yellow)@back_left"]),
+    ("We want two separate towers at the end: pink on purple, and black on white.",
+     ["stack(purple,pink)", "stack(white,black)"]),
+    # label cubes named by the plural noun first (two coloured cubes had been made up, or refused)
+    ("Put digit cubes 3 and 4 next to each other.", ["next_to(3,4)"]),
+    ("Put cubes 3 and 4 next to each other.", ["next_to(3,4)"]),
+    ("Put blocks 3 and 4 on the red patch.", ["on_patch(3,4,patch:red)"]),
+    # the middle said by "above it" between the tower's ends (read X, Z, Y and refused for a made-up cube)
+    ("Stack the letter cubes with X at the bottom, Y above it and Z on top.", ["stack(X,Y,Z)"]),
+    # an identifier of words alone before the colon ("could not parse 'variant'", "'script' is an action")
+    ("Demo-day row: black on the far left, red in the middle, cyan on the far right.", ["line[left_to_right](black,red,cyan)"]),
+    ("Data-collection script, line 12: put the green cube in the front left corner.", ["in_region(green,front_left)"]),
+    ("TOWER 3: base brown, mid orange, top cyan", ["stack(brown,orange,cyan)"]),
+])
+def test_stranger49_towers_label_cubes_and_identifiers_are_read(text, expected):
+    """stranger49's refusals and its one silent error (read after its transfer figure was recorded), each with its
+    meaning; the place of a task after an identifier is cited (it had been reported as demanded by no word)."""
+    schema = check_feasibility(parse(text))
+    assert sorted(meaning(schema)) == expected
+    assert not uncited(schema)
+
+
+@pytest.mark.parametrize("text, anchored", [
+    ("Tower variant B: the gray block must be the bottom one, and the blue and yellow blocks go above it in either order.",
+     "AnchoredStack(objects=['gray', 'blue', 'yellow'], bottom=True)"),
+    # the free cubes said again after the tower's list: two more cubes had been made (a tower of five)
+    ("Build a tower of gray, blue and yellow with gray at the bottom; blue and yellow in any order.",
+     "AnchoredStack(objects=['gray', 'blue', 'yellow'], bottom=True)"),
+    ("Build a tower: red on top, and blue and green below it in any order.",
+     "AnchoredStack(objects=['blue', 'green', 'red'], top=True)"),
+])
+def test_a_tower_s_named_end_and_the_others_in_any_order(text, anchored):
+    """A tower with one end named and the others said free keeps only that end."""
+    parts = [p for p in check_feasibility(parse(text)).goal_predicate().walk() if type(p).__name__ != "And"]
+    assert [repr(p) for p in parts] == [anchored]
+
+
+@pytest.mark.parametrize("text", [
+    "Two towers, two cubes each: one built from red cubes and one built from blue cubes.",
+])
+def test_each_tower_s_cubes_said_in_words_not_read_are_refused(text):
+    """Towers whose cubes are said one tower at a time in words the reader does not take apart are refused (the colours
+    had been spread over every tower)."""
+    with pytest.raises(ParseError, match="each tower"):
+        check_feasibility(parse(text))

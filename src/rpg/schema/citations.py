@@ -440,14 +440,18 @@ def _reading(schema: TaskSchema, text: str) -> _Reading:
 
     if schema.initial_state.structures:  # "Currently red is on blue. Put ...": the start read, the goal's words after it
         text = lexicon.SCENE_NOW_OPENING_RE.sub("", text, count=1)
+    labelled = (m.group("body") for m in (lexicon.ID_LABEL_RE.match(text), lexicon.ID_WORDS_LABEL_RE.match(text)) if m)
+    for said in (text, *labelled):  # "Data-collection script, line 12: put ...": the text after a task's identifier, as the
+        try:                        # parser reads it (its words had been unaccounted, the places left uncited)
+            record = check_mentions(said, schema)
+            break
+        except (UnaccountedMention, BadInput):
+            record = []
+    said = said if record else text
     try:
-        record = check_mentions(text, schema)
-    except (UnaccountedMention, BadInput):
-        record = []
-    try:
-        norm = mark_regions(normalize(text, strict=False)[0])
+        norm = mark_regions(normalize(said, strict=False)[0])
     except BadInput:
-        norm = text.lower()
+        norm = said.lower()
     return _Reading(norm, record, _Scene(schema))
 
 

@@ -2699,9 +2699,15 @@ LABEL_JARGON = frozenset(
     "level stage problem appendix section clause paper generalisation generalization relation relations multi structure "
     "structures spec config benchmark id no v worksheet objective env environment suite setting demo item nov dec jan feb "
     "mar apr may jun jul aug sep oct lab labs part rule rules criterion criteria acceptance requirement req homework "
-    "assignment hw lesson handout seed seeds eval pattern ordered".split())
+    "assignment hw lesson handout seed seeds eval pattern ordered script prompt policy probe ticket teleop rollout scene demo "
+    "day data collection robotics card sheet quiz option version ablation baseline module unit week warm warmup".split())
 """Words of a task's identifier that say nothing of the task (:data:`ID_LABEL_RE`): "ordered" and
 "pattern" are said by the text after it, which gives the order or the pattern."""
+
+ID_WORDS_LABEL_RE = re.compile(r"^\s*(?P<label>[A-Za-z][\w'\-]*(?:,?\s+[\w'\-]+){0,5}?)\s*:\s+(?P<body>\S.*)$", re.S)
+"""A task's identifier of words alone before a colon ("Tower variant B: ...", "Demo-day row: ...", "Data-collection script,
+line 12: ..."): read as :data:`ID_LABEL_RE`'s when one of its words is an identifier word (:data:`LABEL_JARGON`) and every
+word is one, a word of the task's kind, a number or a capital letter (:func:`rpg.schema.readers._identifier_label`)."""
 
 LABEL_PARAMS: dict[str, str] = {"word": "spelling {}", "region": "{place}", "corner": "{place}", "location": "{place}",
                                 "seed": ""}
@@ -4471,6 +4477,25 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 """Word orders of other languages and terse notes ("the cube brown", "the corner back right", "in bottom", "3 reds", separators): English order."""
 
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "the gray block must be the bottom one": at the bottom (it had been refused as a cube picked by where it stands now)
+    (re.compile(r"\b(?:must|should|has\s+to|needs\s+to|will|is\s+to)\s+be\s+the\s+(bottom|lowest|base|top|highest|topmost)\s+(?:one|block|cube)\b"
+                r"(?![^.;]*\bthe\s+(?:bottom|lowest|base|top|highest|topmost)\s+(?:one|block|cube)\b)"),  # not gapped: "..., and X the top one"
+     lambda m: "at the bottom" if m.group(1) in ("bottom", "lowest", "base") else "on top"),
+    # "a tower of gray, blue and yellow, gray at the bottom; blue and yellow above it in either order": the tower's other
+    # cubes, said again (two more cubes had been made, or the order refused)
+    (re.compile(rf"(?:\s*[,;]\s*(?:and\s+)?|\s+and\s+)(?:the\s+)?(?P<l>(?:{COLOR_RE})(?:\s*,\s*(?:{COLOR_RE}))*,?\s+and\s+(?:{COLOR_RE}))"
+                rf"(?:\s+(?:blocks?|cubes?|ones?))?\s+(?:can\s+|may\s+|should\s+)?(?:go\s+|are\s+|stand\s+|sit\s+)?(?:(?:above|on\s+top\s+of|over|on)"
+                rf"\s+(?:it|that|them)\s+)?in\s+(?:any|either)\s+order\b"),
+     lambda m: " and the others in any order" if re.search(r"\b(?:at\s+the\s+bottom|on\s+top|at\s+the\s+top)\b", m.string[:m.start()])
+     and all(re.search(rf"\b{c}\b", m.string[:m.start()]) for c in re.findall(rf"\b(?:{COLOR_RE})\b", m.group("l"))) else m.group(0)),
+    # "the gray block at the bottom, and the blue and yellow blocks go above it in either order": the tower's cubes, its named
+    # end and the others free (the order had been read as listed, then refused)
+    (re.compile(rf"\b(?:the\s+)?(?P<a>{COLOR_RE})(?:\s+(?:block|cube|one))?\s+(?P<r>at\s+the\s+bottom|on\s+top|at\s+the\s+top)\s*,?\s+(?:and\s+)?"
+                rf"(?:the\s+)?(?P<l>(?:{COLOR_RE})(?:\s*,\s*(?:{COLOR_RE}))*,?\s+and\s+(?:{COLOR_RE}))(?:\s+(?:blocks|cubes|ones))?\s+(?:can\s+|may\s+"
+                rf"|should\s+)?(?:go\s+|are\s+|stand\s+|sit\s+)?(?:above|on\s+top\s+of|over|on|below|under|beneath|underneath)\s+(?:it|that|them)\s+"
+                rf"in\s+(?:any|either)\s+order\b"),
+     lambda m: f"{m.group('a')}, {m.group('l')}, with the {m.group('a')} block {m.group('r')} and the others in any order"
+     if m.group("a") not in m.group("l") else m.group(0)),
     # "whip up a tower of the pink cube on the yellow cube": build one
     (re.compile(r"\b(?:whip|rustle|knock|cook|throw)\s+(?:up|together)\s+(?=(?:a|an|one|the)\s+(?:tower|stack|row|line|pyramid|wall|circle|grid"
                 r"|pile)\b)"), "build "),
@@ -4536,9 +4561,16 @@ UP_DOWN_ROLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "a tower of yellow, blue and cyan - yellow down, cyan up -": an end of a listed tower said by "down" and "up"
     (re.compile(rf"(?<=[,;:(\-]\s)(?P<c>{COLOR_RE})\s+(?P<w>down|up)\b(?=\s*(?:[,;.)\-]|\band\b|$))"),
      lambda m: f"{m.group('c')} {'at the bottom' if m.group('w') == 'down' else 'on top'}"),
+    # "with X at the bottom, Y above it and Z on top": the one cube said between the ends by "above it" is the middle (the
+    # tower's order had been read X, Z, Y)
+    (re.compile(r"(\b(?:at|on)\s+the\s+(?:bottom|base)\s*,\s*(?:and\s+)?(?:then\s+)?[^,;.]{1,40}?)\s+(?:directly\s+|right\s+|just\s+)?"
+                r"(?:above|over|on\s+top\s+of|on|upon|atop)\s+(?:it|that(?:\s+one)?)(?=\s*,?\s+(?:and\s+)?(?:then\s+)?[^,;.]{1,40}?\s+"
+                r"(?:on\s+top|at\s+the\s+top|on\s+the\s+top)\b)"),
+     r"\1 in the middle"),
 )
 """A tower's end or a wall's layer said by "down" and "up" (literal translations: "yellow down, cyan up",
-"down row gray gray gray"); read only in a text that builds a tower or a wall."""
+"down row gray gray gray"), and its middle cube by "above it" between its ends; read only in a text that builds a tower or a
+wall."""
 
 TOP_DOWN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "Stack red, green, blue from the top down", "Tower (top first): ...": a list from the top
@@ -5198,11 +5230,15 @@ LABEL_NOUN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\b(?:(?:[Ll]etter|[Dd]igit|[Nn]umber)\s+)?(block|cube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))"
                 r"(?<!\bI(?='[a-z]|\s+(?:[a-z]+ed|[a-z]+ing|am|have|had|want|need|would|will|just|think|said|mean|like|told|see|saw|look|can)\b))"),
      lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1)}"),
+    # "put cubes 3 and 4 next to each other", "blocks A and B on the red patch": two label cubes, as "cube 3" is one (two
+    # coloured cubes had been made up)
+    (re.compile(r"(?<![\w-])(?:[Tt]he\s+)?(?:cubes|blocks)\s+([A-Z]|\d)\s+and\s+([A-Z]|\d)\b(?!\s*(?:cubes|blocks|cm|%))"),
+     lambda m: " and ".join(f"the {'letter' if x.isalpha() else 'digit'} {x} cube" for x in m.groups())),
     # "the letter cubes A and B next to each other": the one next to the other (two coloured cubes had been made)
-    (re.compile(r"\b[Tt]he\s+(letter|digit|number)\s+(?:cubes|blocks)\s+([A-Z]|\d)\s+and\s+([A-Z]|\d)\s+(next\s+to|beside)\s+"
+    (re.compile(r"\b(?:[Tt]he\s+)?([Ll]etter|[Dd]igit|[Nn]umber)\s+(?:cubes|blocks)\s+([A-Z]|\d)\s+and\s+([A-Z]|\d)\s+(next\s+to|beside)\s+"
                 r"(?:each\s+other|one\s+another)\b"),
-     lambda m: f"the {'digit' if m.group(1) == 'number' else m.group(1)} {m.group(2)} cube {m.group(4)} the "
-               f"{'digit' if m.group(1) == 'number' else m.group(1)} {m.group(3)} cube"),
+     lambda m: f"the {'digit' if m.group(1).lower() == 'number' else m.group(1).lower()} {m.group(2)} cube {m.group(4)} the "
+               f"{'digit' if m.group(1).lower() == 'number' else m.group(1).lower()} {m.group(3)} cube"),
 )
 """A label cube named with its noun first ("the cube with the M", "block 4"): "the letter M cube"; two said next to each
 other."""

@@ -320,7 +320,11 @@ def _identifier_label(instruction: str) -> tuple[str, str] | None:
     what the domain cannot: "Time-limited stacking: ...")."""
     m = lexicon.ID_LABEL_RE.match(instruction)
     if m is None:
-        return None
+        m = lexicon.ID_WORDS_LABEL_RE.match(instruction)  # "Tower variant B: ...", "Demo-day row: ...": words alone
+        said = re.findall(r"[A-Za-z]+", m.group("label")) if m else []
+        if not any(w.lower() in lexicon.LABEL_JARGON for w in said) or any(
+                len(w) == 1 and w.islower() for w in said):  # "a: ..." is no letter of a name
+            return None
     words = re.findall(r"[a-z]+", re.sub(r"\"[^\"]*\"", " ", m.group("label")).lower())  # a quoted name says nothing
     if not all(w in lexicon.LABEL_JARGON or w in lexicon.LABEL_TASK_KIND_WORDS or w in lexicon.NUMBER_WORDS or len(w) == 1
                or re.fullmatch(r"v|x|st|nd|rd|th", w)
@@ -329,7 +333,7 @@ def _identifier_label(instruction: str) -> tuple[str, str] | None:
     body = m.group("body")
     if re.search(r"(?i)\b(?:them|they|those|these)\b", body) and len(re.findall(r"\d", m.group("label"))) > 1:
         return None  # "digits 9, 4, 7: put them in a row ...": the cubes the body refers to (no identifier)
-    if m.group("params"):  # "spell-word [word=SUN]: letter cubes in a row": the parameter's words join the text
+    if m.groupdict().get("params"):  # "spell-word [word=SUN]: letter cubes in a row": the parameter's words join the text
         key, _, value = (p.strip() for p in m.group("params").partition("="))
         said = lexicon.LABEL_PARAMS.get(key.lower())
         place = config.place_phrase(value) if said == "{place}" else ""
@@ -383,6 +387,38 @@ def _towers_counted(instruction: str) -> str:
     return listed
 
 
+_TOWERS_HEADING_RE = re.compile(
+    r"(?i)^\s*(?:(?:please\s+)?(?:build|make|stack|create|construct|set\s+up)\s+|(?:we|i)\s+(?:want|need|would\s+like)\s+)?"
+    r"(?P<n>two|three|four|[2-4])\s+(?:separate\s+|distinct\s+|independent\s+)?(?:towers|stacks)"
+    r"(?:\s+of\s+(?P<h>two|three|four|[2-4])(?:\s+(?:cubes|blocks))?|,?\s+(?P<h2>two|three|four|[2-4])\s+(?:cubes|blocks)\s+each)?"
+    r"(?:\s+each)?(?:\s+at\s+the\s+end)?\s*:\s*(?P<body>.+)$")
+"""A heading that counts towers before a colon and the towers said after it as chains ("Build two towers of two cubes: yellow
+on orange in the back left corner, and white on gray in the front right corner.", "We want two separate towers at the end:
+pink on purple, and black on white."): read by :func:`_towers_headed`."""
+
+
+def _towers_headed(instruction: str, framed: bool) -> TaskSchema | None:
+    """The task of a heading that counts ``n`` towers (of ``h`` cubes) and the towers said after its colon
+    (:data:`_TOWERS_HEADING_RE`): the text after the colon read alone, kept only where it is exactly ``n`` towers (each of
+    ``h`` cubes) and nothing else but their places; None where the heading is not one such (the readers read it whole,
+    which had refused "which cubes make each tower is not said" where the chains say it)."""
+    m = _TOWERS_HEADING_RE.match(instruction)
+    if m is None:
+        return None
+    count = lambda w: int(w) if w.isdigit() else lexicon.NUMBER_WORDS[w.lower()]  # noqa: E731
+    n, h = count(m.group("n")), m.group("h") or m.group("h2")
+    try:
+        schema = parse(m.group("body"), _framed=framed)
+    except BadInput:
+        return None
+    parts = [p for p in schema.goal_predicate().walk() if not isinstance(p, And)]
+    stacks = [p for p in parts if isinstance(p, Stack)]
+    if len(stacks) != n or any(not isinstance(p, (Stack, InRegion)) for p in parts) or (
+            h and any(len(p.objects) != count(h) for p in stacks)) or len({o for p in stacks for o in p.objects}) != sum(a.kind != "goal_patch" for a in schema.assets):
+        return None
+    return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})
+
+
 def parse(instruction: str, _framed: bool = False) -> TaskSchema:
     """Read an instruction into a TaskSchema.
 
@@ -415,7 +451,8 @@ def parse(instruction: str, _framed: bool = False) -> TaskSchema:
     labelled = None if _framed else _identifier_label(instruction)
     if labelled is not None:  # "Task 7 (Stacking-3): the agent must build ...": the text after it
         label, body = labelled
-        noun = next((w for w in re.findall(r"[a-z]+", label.lower()) if w in STRUCTURE_WORDS), None)
+        named = re.sub(r"(?<=\S)\s+[a-z]+\s+\d+\b", " ", label.lower())  # "script, line 12": a line's number (not "Tower 3")
+        noun = next((w for w in re.findall(r"[a-z]+", named) if w in STRUCTURE_WORDS), None)
         layered = next((w for w in re.findall(r"[a-z]+", label.lower()) if w in ("wall", "pyramid", "grid")), None)
         if layered and not re.search(STRUCTURE_RE, re.sub(r"(?i)\b(?:rows?|layers?|levels?|tiers?|courses?)\b", " ", body)):
             body = f"{layered}: {body}"  # "build-wall: 2 rows x 3 cubes, all gray": a wall said by its rows (it had been a grid)
@@ -430,6 +467,9 @@ def parse(instruction: str, _framed: bool = False) -> TaskSchema:
                 body = f"{noun}: {body}"
         schema = parse(body, _framed=True)
         return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})  # as written
+    headed = _towers_headed(instruction, _framed)
+    if headed is not None:  # "Build two towers of two cubes: yellow on orange in the back left corner, and white on gray ..."
+        return headed
     scene = initial.split(instruction)  # "Initially red is on blue. Put ...": rho_0's stacks, then the goal
     if scene is not None and not scene.goal.strip(" ."):
         raise ParseError(f"\"{instruction[:80]}\" says how the cubes start but not where they must end up: a task's goal "

@@ -805,7 +805,7 @@ def _layout_relational(b: Builder, chains: list[list[str]], rels: list, onpatch:
 
 _PER_TOWER_RE = re.compile(
     rf"(?:^|[,.;:!\-]|\band\b)\s*(?:and\s+)?(?:1|one|the\s+other(?:\s+1)?|another(?:\s+1)?|the\s+(?:first|second|third|fourth|last)"
-    rf"(?:\s+1)?)(?:\s+(?:tower|stack))?\s+(?:(?:is|of|all|made\s+of|in|has|with|should\s+be|must\s+be|only)\s+)*"
+    rf"(?:\s+1)?)(?:\s+(?:tower|stack))?\s+(?:(?:is|of|all|made|built|consisting|entirely|solely|purely|just|in|has|with|should\s+be|must\s+be|only)\s+)*"
     rf"(?P<run>(?:{COLOR_RE})(?:\s+(?:{COLOR_RE}))*)(?:\s+(?:blocks?|cubes?|ones?))?(?=\s*(?:[,.;]|\band\b|$))")
 """One tower's colour said after the towers are counted ("2 towers: one is red red, the other one
 is blue blue"; "two towers, one red and one blue"): a colour alone colours the whole tower, a
@@ -892,6 +892,11 @@ def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
         # blue tower had been demanded)
         stack_colors = [[colors_for(1, f)[0]] * height for _ in range(k)]
     else:
+        if not (matching or with_patches) and len(colors) > 1 and re.search(
+                r"\b(?:1|the\s+other|another|the\s+(?:first|second|third|last))\b(?!\s+(?:of|on|in|to)\b)",
+                f.text[f.text.find("tower"):]):  # "two towers, two cubes each: one made only of red cubes and one ...": each
+            raise ParseError(f"\"{f.original[:80]}\" says each tower's cubes in words not read for each tower; say "  # tower's
+                             "each tower (e.g. \"one tower of two red cubes and one tower of two blue cubes\"), or use --model")  # own
         palette = colors_for(k, f, prefer=colors)
         stack_colors = [[c] * height for c in palette] if (matching or with_patches or len(colors) <= 1) else [
             colors_for(height, f) for _ in range(k)]
