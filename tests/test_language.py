@@ -7396,6 +7396,8 @@ def test_towers_on_patches_named_by_colour_keep_their_cubes_colours_free(text, e
     ("Put digit cubes 3 and 4 next to each other.", ["next_to(3,4)"]),
     ("Put cubes 3 and 4 next to each other.", ["next_to(3,4)"]),
     ("Put blocks 3 and 4 on the red patch.", ["on_patch(3,4,patch:red)"]),
+    # the label noun before them keeps its own reading (it had become "letter the letter H cube ...": H under I)
+    ("Stack the letter cubes H and I with H on top of I.", ["stack(I,H)"]),
     # the middle said by "above it" between the tower's ends (read X, Z, Y and refused for a made-up cube)
     ("Stack the letter cubes with X at the bottom, Y above it and Z on top.", ["stack(X,Y,Z)"]),
     # an identifier of words alone before the colon ("could not parse 'variant'", "'script' is an action")
@@ -7434,3 +7436,25 @@ def test_each_tower_s_cubes_said_in_words_not_read_are_refused(text):
     had been spread over every tower)."""
     with pytest.raises(ParseError, match="each tower"):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a start under a heading, "take off the X", "a tower with X on Y", "a two-block tower, X under Y"
+    ("Starting scene: blue on top of red. Take off the blue cube and put it on the yellow patch.",
+     ["on_patch(blue,patch:yellow)", "start:stack(red,blue)"]),
+    ("There's a two-block tower, orange under cyan. Add a pink block on top of it.",
+     ["stack(orange,cyan,pink)", "start:stack(orange,cyan)"]),
+    ("Starting from a tower with yellow on blue, take the yellow cube off and put it on the table.",
+     ["on_table(yellow)", "start:stack(blue,yellow)"]),
+    # the direction a list is said in, a line across a part of the table
+    ("A tower of yellow, then green, then blue, counted from the bottom.", ["stack(yellow,green,blue)"]),
+    ("Lay out a row of three that goes blue, gray, pink when you read it from right to left.",
+     ["line[right_to_left](blue,gray,pink)"]),
+    ("Arrange the three white cubes in a line across the middle of the table.", ["line(white,white,white)@center"]),
+])
+def test_stranger49_starts_and_directions_are_read(text, expected):
+    """stranger49's refusals over a start's or a direction's wording ('scene', 'counted', 'across', 'when'); every
+    constraint cited (the tower's order had been reported as demanded by no word)."""
+    schema = check_feasibility(parse(text))
+    assert sorted(meaning(schema)) == expected
+    assert not uncited(schema)

@@ -440,6 +440,8 @@ def _reading(schema: TaskSchema, text: str) -> _Reading:
 
     if schema.initial_state.structures:  # "Currently red is on blue. Put ...": the start read, the goal's words after it
         text = lexicon.SCENE_NOW_OPENING_RE.sub("", text, count=1)
+        pattern, written = lexicon.START_COUNTED_TOWER_REWRITE  # "There's a two-block tower, orange under cyan.": as read
+        text = pattern.sub(written, text)
     labelled = (m.group("body") for m in (lexicon.ID_LABEL_RE.match(text), lexicon.ID_WORDS_LABEL_RE.match(text)) if m)
     for said in (text, *labelled):  # "Data-collection script, line 12: put ...": the text after a task's identifier, as the
         try:                        # parser reads it (its words had been unaccounted, the places left uncited)

@@ -2050,6 +2050,34 @@ CORRECTION_WORD_CLASSES: dict[str, frozenset[str]] = {
 patch"; "to the front" replaces "to the left"): articles for articles, prepositions for
 prepositions; a count for a count; a word in capitals for one; other words for themselves."""
 
+def _counted_tower_chain(m: re.Match) -> str:
+    """"a two-block tower, orange under cyan" -> "a tower of orange under cyan" when the chain has that many cubes (else as
+    said: the count then stays read against it)."""
+    n = m.group("n").lower()
+    count = int(n) if n.isdigit() else NUMBER_WORDS[n]
+    said = len(re.findall(rf"\b(?:{COLOR_RE})\b", m.group("chain")))
+    return f"{m.group('a') or ''}{m.group('kind')} of {m.group('chain')}" if said == count else m.group(0)
+
+
+START_COUNTED_TOWER_REWRITE: tuple[re.Pattern, object] = (
+    re.compile(rf"(?i)\b(?P<a>an?\s+)?(?P<n>two|three|four|[2-4])[\s-](?:block|cube)\s+(?P<kind>tower|stack)\s*,\s*(?P<chain>(?:{COLOR_RE})"
+               rf"(?:\s+(?:on\s+top\s+of|on|under|atop|below|beneath)\s+(?:{COLOR_RE}))+)\b"), _counted_tower_chain)
+"""A start tower's chain with its count said first ("There's a two-block tower, orange under cyan."): "a tower of orange
+under cyan" (:data:`START_SAID_REWRITES`; the citations read it so too)."""
+
+START_SAID_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "Starting scene: blue on top of red. Take off ...": the start said under a heading ('scene' had been refused unread)
+    (re.compile(r"(?i)^\s*(?:the\s+)?(?:starting|start|initial|opening|begin(?:ning)?)\s+(?:scene|state|setup|set-up|configuration|layout"
+                r"|position|arrangement)\s*[:\-\u2014]\s*(?=\S)"),
+     "Initially "),
+    # "take off the blue cube and put it on ...": the cube taken off (read as "take the blue cube off")
+    (re.compile(rf"(?i)\btake\s+off\s+(the\s+(?:{COLOR_RE}|[A-Z]|\d)\s+(?:cube|block)|the\s+top\s+(?:cube|block))\b"), r"take \1 off"),
+    # "Starting from a tower with yellow on blue": the tower's chain
+    (re.compile(rf"(?i)\b(tower|stack)\s+with\s+(?=(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:on|under|atop|on\s+top\s+of)\s)"), r"\1 of "),
+    START_COUNTED_TOWER_REWRITE,
+)
+"""A start said in words the initial-scene reader reads another way (:func:`rpg.schema.readers.initial.split`)."""
+
 MARKUP_RES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"~~[^~]*~~"), " "),  # ~~struck out~~: withdrawn by its writer
     (re.compile(r"(?m)^\s*={2,6}\s*(?P<h>[^=\n]{1,60}?)\s*={2,6}\s*"), r"\g<h>: "),  # a wiki's "== Example task ==": its heading
@@ -3337,13 +3365,21 @@ PATCH_RECOLOUR_RE = re.compile(r"(?i)" + _SAID_FIRST + rf"(?:make|turn|change|pa
 EDIT_STEP_NAME_RE = re.compile(
     r"(?i)^\s*(?:(?:the\s+)?(?:next|new|final|another)\s+)?(?:(?:height|colou?r|region|place|position|count|number|label|letter|relation"
     r"|size|order|structure|layout|shape|baseline|control|test|first|second|third|fourth|fifth|bonus|practice|warm-?up)\s+)?"
-    r"(?:round|ablation|condition|variant|trial|attempt|iteration|phase|scenario|exercise|challenge|puzzle|setting)"
-    r"(?:\s+(?:#?\d+|[a-z]|one|two|three|four|five|six|seven|eight|nine|ten))?(?:\s+(?:rule\s+)?change)?\s*(?::|,(?=\s+(?:please\s+)?"
+    r"(?:round|ablation|condition|variant|trial|attempt|iteration|phase|scenario|exercise|challenge|puzzle|setting|take|draft|revision"
+    r"|cell)(?:\s+(?:#?\d+|[a-z]|one|two|three|four|five|six|seven|eight|nine|ten))?(?:\s+(?:rule\s+)?change)?\s*(?::|,(?=\s+(?:please\s+)?"
     r"(?:make|put|add|swap|switch|remove|take|move|change|use|turn|replace|place|stack|set|drop|delete|build|reverse|flip)\b))\s+(?=\S)")
 """A name the edit gives the version it makes, before its change ("Round 3: ...", "Ablation 1: ...", "Condition C: ...",
-"Height ablation: ...", "Next round, add ...", "Round two rule change: ..."): a session's own count of its steps, which
-names the version made, never the one built on (that one is named in the change: "back to the round one tower" is
-read, or refused, there); dropped."""
+"Height ablation: ...", "Next round, add ...", "Round two rule change: ...", "Take two: ..."): a session's own count of its
+steps, which names the version made, never the one built on (that one is named in the change: "back to the round one tower"
+is read, or refused, there); dropped."""
+
+EDIT_KIND_LABEL_RE = re.compile(
+    r"(?i)^\s*(?:(?:label|annotation|caption|qa|grading|quick|small|one|another|last|final|config|code|review(?:er)?|ta)\s+)?"
+    r"(?:fix|correction|note|nit|update|edit|tweak|request|suggestion|comment|amendment|erratum)\s*:\s+(?=\S)"
+    r"|^\s*re-?(?:annotat|label)\w*\s*:\s+(?=\S)")
+"""What an edit calls itself before its change ("Label fix: ...", "Correction: ...", "Nit: ...", "Re-annotating: ..."): the
+kind of message, not of the change (which the words after the colon say, and are read); dropped like
+:data:`EDIT_STEP_NAME_RE`'s names."""
 
 
 TOWER_RESTATED_RE = re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|so|now|then)\s*,?\s*)*make\s+the\s+(?:tower|stack)\s+(?P<n>\d+|{COUNT_WORD_RE})"
@@ -3363,6 +3399,14 @@ def edit_label_dropped(m: re.Match) -> str:
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
     # "Round 3: ...", "Condition C: ...", "Next round, add ...": the name of the version made
     (EDIT_STEP_NAME_RE, ""),
+    # "Label fix: ...", "Correction: ...": what the message is
+    (EDIT_KIND_LABEL_RE, ""),
+    # "the homework says both cubes go on the green patch", "my TA says the row has to be in the centre", "the video shows the
+    # green cube on top": who asks for the change, or where it was seen, before it (its words had been refused as unknown)
+    (re.compile(r"(?i)^\s*(?:(?:and|wait|sorry|also|actually|oh|ok(?:ay)?|so|but|hmm)\s*,?\s+)*(?:the|my|our|your)\s+(?:[a-z\-]+\s+)?"
+                r"(?:homework|assignment|exercise|worksheet|(?:lab\s+|task\s+|answer\s+)?sheet|handout|ta|teacher|professor|instructor|tutor"
+                r"|reviewer|video|clip|footage|recording|demo|(?:example\s+|model\s+)?solution|spec|brief|rubric|answer\s+key|textbook|book)"
+                r"\s+(?:(?:actually|clearly|really|now)\s+)?(?:says|said|shows|showed)\s+(?:that\s+)?(?=\S)"), ""),
     # "Simplify it for the worksheet: make both rows green": a label saying why, before the change
     (EDIT_LABEL_RE, edit_label_dropped),
     # "He has trouble telling red from green, so make the green cube yellow instead": the reason said before the change
@@ -4477,6 +4521,19 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 """Word orders of other languages and terse notes ("the cube brown", "the corner back right", "in bottom", "3 reds", separators): English order."""
 
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "a tower of yellow, then green, then blue, counted from the bottom": the direction the list is said in
+    (re.compile(r"\bcount(?:ed|ing)\s+(?=from\s+the\s+(?:bottom|top|left|right)\b)"), ""),
+    # "a row of three that goes blue, gray, pink when you read it from right to left": the direction
+    (re.compile(r"\bwhen\s+(?:you\s+|one\s+)?read(?:ing)?\s+(?:it\s+|them\s+)?(?=from\s+(?:the\s+)?(?:right|left|bottom|top)\b)"), "read "),
+    # "in a line across the middle of the table": the line in that part of the table
+    (re.compile(r"\b(line|row)\s+(?:running\s+|going\s+)?across\s+the\s+(middle|center|centre|front|back)\s+of\s+the\s+table\b"),
+     r"\1 in the \2 of the table"),
+    # "(their order is up to the policy)": the order left free
+    (re.compile(r"\(\s*(?:their|the|its)\s+order\s+(?:is\s+)?(?:up\s+to\s+(?:the\s+)?(?:policy|robot|agent|you|them|the\s+policy)|(?:does\s+not"
+                r"|doesn't|does\s+n't)\s+matter|is\s+free|is\s+not\s+important)\s*\)"), "in any order"),
+    # "For the poster photo I need ...": what the task is for, before it ('photo' had been read as a picture to look at)
+    (re.compile(r"^\s*for\s+(?:the|a|our|my)\s+(?:[a-z\-]+\s+)?(?:photo|picture|photograph|shot|poster|video|figure|slide|demo)\s*,?\s+"
+                r"(?=(?:i|we)\s+(?:need|want|would\s+like)\b|(?:please\s+)?(?:put|place|stack|make|build|arrange|set|line)\b)"), ""),
     # "the gray block must be the bottom one": at the bottom (it had been refused as a cube picked by where it stands now)
     (re.compile(r"\b(?:must|should|has\s+to|needs\s+to|will|is\s+to)\s+be\s+the\s+(bottom|lowest|base|top|highest|topmost)\s+(?:one|block|cube)\b"
                 r"(?![^.;]*\bthe\s+(?:bottom|lowest|base|top|highest|topmost)\s+(?:one|block|cube)\b)"),  # not gapped: "..., and X the top one"
@@ -5232,7 +5289,7 @@ LABEL_NOUN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1)}"),
     # "put cubes 3 and 4 next to each other", "blocks A and B on the red patch": two label cubes, as "cube 3" is one (two
     # coloured cubes had been made up)
-    (re.compile(r"(?<![\w-])(?:[Tt]he\s+)?(?:cubes|blocks)\s+([A-Z]|\d)\s+and\s+([A-Z]|\d)\b(?!\s*(?:cubes|blocks|cm|%))"),
+    (re.compile(r"(?<![\w-])(?<![Ll]etter\s)(?<![Dd]igit\s)(?<![Nn]umber\s)(?<![Ll]abel\s)(?:[Tt]he\s+)?(?:cubes|blocks)\s+([A-Z]|\d)\s+and\s+([A-Z]|\d)\b(?!\s*(?:cubes|blocks|cm|%))"),
      lambda m: " and ".join(f"the {'letter' if x.isalpha() else 'digit'} {x} cube" for x in m.groups())),
     # "the letter cubes A and B next to each other": the one next to the other (two coloured cubes had been made)
     (re.compile(r"\b(?:[Tt]he\s+)?([Ll]etter|[Dd]igit|[Nn]umber)\s+(?:cubes|blocks)\s+([A-Z]|\d)\s+and\s+([A-Z]|\d)\s+(next\s+to|beside)\s+"

@@ -1497,6 +1497,16 @@ def _resize_dims(spec: TaskSpec, dims: tuple[int, ...], keep_layers: bool = Fals
     return new.with_items([Item(color=layer[0]) for layer, size in zip(layers, sizes, strict=True) for _ in range(size)])
 
 
+def _no_such_cube(sel, spec: TaskSpec, purpose: str = "") -> SteerError:
+    """The refusal of an edit that names a cube the task does not have (``sel``, a selector: "paint the purple cube red" of a
+    tower of white, blue and orange): what it names, what the task has, and how to say it."""
+    said = sel if not isinstance(sel, dict) else " ".join(
+        str(v) for k, v in sorted(sel.items()) if k in ("color", "label", "at", "index") and v is not None) or str(sel)
+    has = ", ".join(i.phrase() for i in spec.items)
+    return SteerError(f"the task has no {said} cube{' ' + purpose if purpose else ''}: the edit refers to a cube that does not "
+                      f"exist (it has {has}); name one of its cubes, or say to add one")
+
+
 def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors: frozenset[str] = frozenset()) -> TaskSpec:
     """The spec after the edit's operations, in order.
 
@@ -1606,8 +1616,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
                 end = 0 if p.get("at") == "bottom" else len(spec.items) - 1
                 idx = _indices(spec, p["onto"], anchors)
                 if not idx:
-                    raise SteerError(f"the task has no cube matching {p['onto']} to add one {'under' if end == 0 else 'on'}; it has "
-                                     f"{', '.join(i.phrase() for i in spec.items)}")
+                    raise _no_such_cube(p["onto"], spec, f"to add one {'under' if end == 0 else 'on'}")
                 if idx != [end]:
                     raise SteerError(f"the cube {'under' if end == 0 else 'on'} which the edit adds one ({p['onto']}) is not the "
                                      f"{'bottom' if end == 0 else 'top'} of the {spec.structure}; the builtin steering adds cubes at "
@@ -1648,8 +1657,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
                                  f"{'the other end' if p['at'] == 'other' else 'its ' + p['at']} cannot be judged alone; say the order of the whole {spec.structure}")
             idx = _indices(spec, p["select"], anchors)
             if not idx:
-                raise SteerError(f"the task has no cube matching {p['select']} to move; it has "
-                                 f"{', '.join(i.phrase() for i in spec.items)}")
+                raise _no_such_cube(p["select"], spec, "to move")
             items = list(spec.items)
             at = p["at"]
             if at == "other":  # "to the other end": the end the cube does not stand at
@@ -1674,8 +1682,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
         elif o.op in ("recolor", "relabel"):
             idx = _indices(spec, p["select"], anchors)
             if not idx:
-                raise SteerError(f"the task has no cube matching {p['select']}; it has "
-                                 f"{', '.join(i.phrase() for i in spec.items)}")
+                raise _no_such_cube(p["select"], spec)
             items = list(spec.items)
             touched.update(idx)
             colours = p["to"].get("colors")  # a layer's cubes given one colour each, in the order said
@@ -1690,7 +1697,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
         elif o.op == "remove":
             idx = set(_indices(spec, p["select"], anchors))
             if not idx:
-                raise SteerError(f"the task has no cube matching {p['select']}")
+                raise _no_such_cube(p["select"], spec)
             spec = spec.with_items([it for i, it in enumerate(spec.items) if i not in idx])
         elif o.op == "dims" and "pyramid_dims" in p:
             if spec.structure != "pyramid":
@@ -1727,7 +1734,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
         elif o.op == "swap":
             ia, ib = _indices(spec, p["a"], anchors), _indices(spec, p["b"], anchors)
             if not ia or not ib:
-                raise SteerError(f"the task has no cube matching {p['a'] if not ia else p['b']}")
+                raise _no_such_cube(p["a"] if not ia else p["b"], spec)
             one_each = len({spec.items[i] for i in ia}) == len({spec.items[i] for i in ib}) == 1
             if len(ia) != len(ib) and one_each and spec.kind.layered and set(ia).isdisjoint(ib):
                 # "swap the green and the white layers" of a pyramid (3 and 2 cubes): the two layers' colours exchanged

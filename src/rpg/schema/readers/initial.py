@@ -483,6 +483,8 @@ def split(instruction: str) -> InitialScene | None:
     module reads (see the module docstring)."""
     for pattern, written in MARKUP_RES:
         instruction = pattern.sub(written, instruction)
+    for pattern, written in lexicon.START_SAID_REWRITES:
+        instruction = pattern.sub(written, instruction)
     instruction = re.sub(r"^\s*[A-Za-z][\w\-]*(?:\s+[\w\-]+){0,3}?\s*(?:\([^)]{0,30}\))?\s*:\s*(?=\S)(?=.*\b(?:starts?|initial(?:ly)?)\b)", "",
                          instruction.strip())  # "# goal (unstack): the pink cube starts ...": its label
     instruction = lexicon.tower_ends_said(instruction)  # "red (bottom), blue, yellow (top)"
