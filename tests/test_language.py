@@ -7458,3 +7458,28 @@ def test_stranger49_starts_and_directions_are_read(text, expected):
     schema = check_feasibility(parse(text))
     assert sorted(meaning(schema)) == expected
     assert not uncited(schema)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("While the glaze sets, put the blue cube on the red cube and the red cube on the yellow cube.", ["stack(yellow,red,blue)"]),
+    ("The spaniel's vaccinations are done. While I write up the chart, put the brown cube on the gray patch, please.",
+     ["on_patch(brown,patch:gray)"]),
+    ("Before lunch, put red on blue.", ["stack(blue,red)"]),
+])
+def test_a_clause_of_the_speaker_s_time_is_set_aside(text, expected):
+    """A clause of time that names nothing of the task ("While the glaze sets,") times nothing a goal holds (it had been
+    refused as a time); it is listed as set aside."""
+    schema = check_feasibility(parse(text))
+    assert sorted(meaning(schema)) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "While the red cube is on the blue cube, put green on top.",  # the task's cube
+    "Put red on blue while the timer runs.",  # a measure of time
+    "Until the bell rings, put red on blue.",  # a duration
+    "After it falls, put red on blue.",  # a reference
+    "While the robot waits, put red on blue.",  # the robot
+])
+def test_a_clause_of_time_about_the_task_stays_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

@@ -275,6 +275,21 @@ DAYS_TASK_RE = re.compile(r"(?i)\b(?:today|tonight|this\s+(?:morning|afternoon|e
                           r"(?=(?:exercise|task|challenge|goal|job|assignment|activity|drill|puzzle|lesson|warm-up)\b)")
 """A task named by its day ("Today's exercise is a tower of ..."): "the exercise" (the day says nothing of the goal)."""
 
+WORLD_TIME_CLAUSE_RE = re.compile(
+    r"(?i)(?:^|(?<=[.!?]\s)|(?<=[,;:]\s))(?:and\s+)?(?:while|whilst|before|after|once)\s+(?P<c>[^,.;:!?()\"]{2,60}?)\s*(?:[,:;]|\s[-\u2013\u2014])\s+(?=\S)")
+"""A clause of time about the speaker's world before the task ("While the glaze sets, put ...", "Listen, apprentice, while the
+forge heats up: set ...", "While I'm away, please put ..."): dropped by :func:`rpg.schema.reading.drop_asides` where it names
+nothing of the task (:data:`WORLD_TIME_HAZARD_RE`), so it can time or condition nothing a goal holds; one that does ("while
+the red cube stays on blue", "until it is on the patch", "after that") stays, and is refused for its time."""
+
+WORLD_TIME_HAZARD_RE = re.compile(
+    r"\b(?:it|its|itself|they|them|their|this|that|these|those|there|here|one|ones|each|every|all|both|other|others|rest|robot|arm"
+    r"|gripper|hand|hands|policy|agent|episode|task|goal|scene|table|timer|clock|seconds?|minutes?|hours?|steps?|moves?|tries|try"
+    r"|attempts?|done|finish\w*|complet\w*|ready|start\w*|begin\w*|end\w*|stop\w*|fall\w*|fell|drop\w*|slid\w*|slip\w*|tip\w*"
+    r"|topple\w*|collaps\w*|move\w*|moving|stack\w*|plac\w*|put\w*|build\w*|reach\w*|touch\w*|grasp\w*|pick\w*|lift\w*)\b|\d")
+"""Words that keep a clause of time (:data:`WORLD_TIME_CLAUSE_RE`) as part of the task: the task's things, references,
+the robot, the episode, a measure of time, a step of manipulation."""
+
 CONCESSION_OPENING_RE = re.compile(
     r"(?i)(?:^|(?<=[.!?]\s))(?:it|this|that)\s*(?:(?:'s|is|may|might|could|can|will|would)\s+)?(?:be\s+)?"
     r"(?:take\s+(?:a\s+(?:little\s+)?while|a\s+bit|patience|practice|a\s+few\s+tries)"

@@ -484,6 +484,16 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
         dropped.append(m.group(0).strip())
         return ""
     text = lexicon.CONCESSION_OPENING_RE.sub(conceded, text)
+    def world_time(m: re.Match) -> str:  # "While the glaze sets, put ...": the speaker's time, which no goal holds
+        said = m.group("c").lower()
+        if lexicon.GOAL_THING_RE.search(said) or lexicon.TASK_CONTENT_RE.search(said) or lexicon.WORLD_TIME_HAZARD_RE.search(said) \
+                or any(c in said for c in lexicon.colour_names()) or _inexpressible(said):
+            return m.group(0)
+        dropped.append(m.group(0).strip())
+        return ""
+    timed = lexicon.WORLD_TIME_CLAUSE_RE.sub(world_time, text)
+    if timed != text and lexicon.GOAL_THING_RE.search(timed.lower()):
+        text = timed
     for _ in range(2):  # "In this experiment, the robot was instructed to place ...": two frames, one after the other
         frame = lexicon.FRAME_PREFIX_RE.match(text)
         if frame is None or not _frame_prefix(frame.group("p")):
