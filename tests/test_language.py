@@ -7395,7 +7395,6 @@ def test_towers_on_patches_named_by_colour_keep_their_cubes_colours_free(text, e
     # label cubes named by the plural noun first (two coloured cubes had been made up, or refused)
     ("Put digit cubes 3 and 4 next to each other.", ["next_to(3,4)"]),
     ("Put cubes 3 and 4 next to each other.", ["next_to(3,4)"]),
-    ("Put blocks 3 and 4 on the red patch.", ["on_patch(3,4,patch:red)"]),
     # the label noun before them keeps its own reading (it had become "letter the letter H cube ...": H under I)
     ("Stack the letter cubes H and I with H on top of I.", ["stack(I,H)"]),
     # the middle said by "above it" between the tower's ends (read X, Z, Y and refused for a made-up cube)
@@ -7481,5 +7480,29 @@ def test_a_clause_of_the_speaker_s_time_is_set_aside(text, expected):
     "While the robot waits, put red on blue.",  # the robot
 ])
 def test_a_clause_of_time_about_the_task_stays_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a cube listed, then said to be the bottom one, and the top one: the same cubes (two more had been made up)
+    ("Stack red, blue and green. Red must be the bottom one and green should be the top one.", ["stack(red,blue,green)"]),
+])
+def test_a_listed_tower_s_ends_said_again_keep_its_cubes(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    # a hostile helper's attack on this session's readings (each had compiled to another task)
+    "Make a tower: blocks A and B, with A on top.",  # the label cubes' order had been the list's
+    "Stack red cubes A and B.",  # a coloured cube had been made up
+    "Put blocks 3 and 4 on the red patch.",  # two coloured cubes had been made up for the labels
+    "Build a tower of five cubes with red at the bottom, blue above it and then green and yellow and white on top.",
+    "Two-tower variant: red on blue.",  # a count in the label had been dropped (one tower)
+    "Baseline, 3 towers: red on blue.",
+    "Stack red, blue and green with blue second, counted from the top.",  # cubes had been made up
+    "Two towers of different heights: one made only of red cubes and one made only of blue cubes.",
+])
+def test_this_session_s_readings_refuse_what_they_cannot_say(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))

@@ -2265,3 +2265,33 @@ def test_a_colour_said_twice_before_one_cube_is_one_cube(tmp_path):
     """"add a yellow yellow cube on top": one cube (a stutter before a singular noun; two had been added)."""
     assert _steered(tmp_path, "Build a tower from bottom to top: red, blue, green.", "add a yellow yellow cube on top") == [
         ("extend", ["stack(red,blue,green,yellow)"])]
+
+
+@pytest.mark.parametrize("base, edit, expected", [
+    # cubes picked by their role in the task's relations (the task had been "not a structure the steering edits")
+    ("Put the red cube to the left of the green cube, and the green cube to the left of the blue cube.",
+     "make the one on the left yellow", ["left_of(green,blue)", "left_of(yellow,green)"]),
+    ("Put the yellow cube to the right of the red cube.", "the one on the right should be blue", ["right_of(blue,red)"]),
+    ("Put the white cube between the two blue cubes.", "and make the ends gray", ["between(white;gray,gray)"]),
+    ("Put the orange cube between the green cube and the purple cube.", "the cube in the middle should be white",
+     ["between(white;green,purple)"]),
+    # a cube of a patch's colour recoloured alone (the patch had been recoloured with it, silently)
+    ("Put the red cube on the red patch and the blue cube to the right of the red cube.", "make the red cube green",
+     ["on_patch(green,patch:red)", "right_of(blue,green)"]),
+    ("Put the green cube on the green patch.", "make the green cube blue", ["on_patch(blue,patch:green)"]),
+])
+def test_cubes_of_a_relational_task_recoloured_by_their_role(tmp_path, base, edit, expected):
+    """The instruction with the picked cubes' colour words changed, read back and checked to mean only that change."""
+    intent, got = _steered(tmp_path, base, edit)[-1]
+    assert (intent, sorted(got)) == ("tweak", expected)
+
+
+@pytest.mark.parametrize("base, edit", [
+    # the roles pick no one cube: both cubes of a chain's middle are on the left of someone
+    ("Put the red cube to the left of the green cube and the blue cube to the left of the green cube.",
+     "make the one on the left yellow"),
+])
+def test_a_role_that_picks_no_one_cube_is_refused(tmp_path, base, edit):
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
+    with pytest.raises(SteerError):
+        steer(fam.path, edit)

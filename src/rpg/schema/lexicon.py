@@ -4537,7 +4537,8 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "a tower of yellow, then green, then blue, counted from the bottom": the direction the list is said in
-    (re.compile(r"\bcount(?:ed|ing)\s+(?=from\s+the\s+(?:bottom|top|left|right)\b)"), ""),
+    (re.compile(r"\bcount(?:ed|ing)\s+(?=from\s+the\s+(?:bottom|top|left|right)\b)"),
+     lambda m: m.group(0) if re.search(r"\b(?:first|second|third|fourth|fifth|last|\d+(?:st|nd|rd|th))\b", m.string) else ""),
     # "a row of three that goes blue, gray, pink when you read it from right to left": the direction
     (re.compile(r"\bwhen\s+(?:you\s+|one\s+)?read(?:ing)?\s+(?:it\s+|them\s+)?(?=from\s+(?:the\s+)?(?:right|left|bottom|top)\b)"), "read "),
     # "in a line across the middle of the table": the line in that part of the table
@@ -4550,9 +4551,10 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"^\s*for\s+(?:the|a|our|my)\s+(?:[a-z\-]+\s+)?(?:photo|picture|photograph|shot|poster|video|figure|slide|demo)\s*,?\s+"
                 r"(?=(?:i|we)\s+(?:need|want|would\s+like)\b|(?:please\s+)?(?:put|place|stack|make|build|arrange|set|line)\b)"), ""),
     # "the gray block must be the bottom one": at the bottom (it had been refused as a cube picked by where it stands now)
-    (re.compile(r"\b(?:must|should|has\s+to|needs\s+to|will|is\s+to)\s+be\s+the\s+(bottom|lowest|base|top|highest|topmost)\s+(?:one|block|cube)\b"
-                r"(?![^.;]*\bthe\s+(?:bottom|lowest|base|top|highest|topmost)\s+(?:one|block|cube)\b)"),  # not gapped: "..., and X the top one"
-     lambda m: "at the bottom" if m.group(1) in ("bottom", "lowest", "base") else "on top"),
+    (re.compile(r"\b(must|should|has\s+to|needs\s+to|is\s+to)\s+be\s+the\s+(bottom|lowest|base|top|highest|topmost)\s+(?:one|block|cube)\b"
+                r"(?!\s+(?:of|in|on|after|when|once|if)\b)(?![^.;]*\band\s+(?:the\s+)?[a-z0-9]+(?:\s+(?:one|block|cube))?\s+the\s+(?:bottom|lowest|base"
+                r"|top|highest|topmost)\s+(?:one|block|cube)\b)"),  # not gapped: "..., and X the top one" (read as said)
+     lambda m: f"{m.group(1)} be {'at the bottom' if m.group(2) in ('bottom', 'lowest', 'base') else 'on top'}"),
     # "a tower of gray, blue and yellow, gray at the bottom; blue and yellow above it in either order": the tower's other
     # cubes, said again (two more cubes had been made, or the order refused)
     (re.compile(rf"(?:\s*[,;]\s*(?:and\s+)?|\s+and\s+)(?:the\s+)?(?P<l>(?:{COLOR_RE})(?:\s*,\s*(?:{COLOR_RE}))*,?\s+and\s+(?:{COLOR_RE}))"
@@ -4562,7 +4564,8 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      and all(re.search(rf"\b{c}\b", m.string[:m.start()]) for c in re.findall(rf"\b(?:{COLOR_RE})\b", m.group("l"))) else m.group(0)),
     # "the gray block at the bottom, and the blue and yellow blocks go above it in either order": the tower's cubes, its named
     # end and the others free (the order had been read as listed, then refused)
-    (re.compile(rf"\b(?:the\s+)?(?P<a>{COLOR_RE})(?:\s+(?:block|cube|one))?\s+(?P<r>at\s+the\s+bottom|on\s+top|at\s+the\s+top)\s*,?\s+(?:and\s+)?"
+    (re.compile(rf"\b(?:the\s+)?(?P<a>{COLOR_RE})(?:\s+(?:block|cube|one))?(?:\s+(?:must|should|has\s+to|needs\s+to|is\s+to)\s+be)?"
+                rf"\s+(?P<r>at\s+the\s+bottom|on\s+top|at\s+the\s+top)\s*,?\s+(?:and\s+)?"
                 rf"(?:the\s+)?(?P<l>(?:{COLOR_RE})(?:\s*,\s*(?:{COLOR_RE}))*,?\s+and\s+(?:{COLOR_RE}))(?:\s+(?:blocks|cubes|ones))?\s+(?:can\s+|may\s+"
                 rf"|should\s+)?(?:go\s+|are\s+|stand\s+|sit\s+)?(?:above|on\s+top\s+of|over|on|below|under|beneath|underneath)\s+(?:it|that|them)\s+"
                 rf"in\s+(?:any|either)\s+order\b"),
@@ -4636,9 +4639,10 @@ UP_DOWN_ROLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "with X at the bottom, Y above it and Z on top": the one cube said between the ends by "above it" is the middle (the
     # tower's order had been read X, Z, Y)
     (re.compile(r"(\b(?:at|on)\s+the\s+(?:bottom|base)\s*,\s*(?:and\s+)?(?:then\s+)?[^,;.]{1,40}?)\s+(?:directly\s+|right\s+|just\s+)?"
-                r"(?:above|over|on\s+top\s+of|on|upon|atop)\s+(?:it|that(?:\s+one)?)(?=\s*,?\s+(?:and\s+)?(?:then\s+)?[^,;.]{1,40}?\s+"
-                r"(?:on\s+top|at\s+the\s+top|on\s+the\s+top)\b)"),
-     r"\1 in the middle"),
+                r"(?:above|over|on\s+top\s+of|on|upon|atop)\s+(?:it|that(?:\s+one)?)(?=(?P<top>\s*,?\s+(?:and\s+)?(?:then\s+)?[^,;.]{1,40}?\s+"
+                r"(?:on\s+top|at\s+the\s+top|on\s+the\s+top)\b))"),
+     lambda m: f"{m.group(1)} in the middle" if len(re.findall(rf"\b(?:{COLOR_RE}|letter\s+[a-z]|digit\s+\d|[A-Z]|\d)\b", m.group("top"))) == 1
+     else m.group(0)),  # one cube between the middle and the top: four or more cubes leave "above it" as said
 )
 """A tower's end or a wall's layer said by "down" and "up" (literal translations: "yellow down, cyan up",
 "down row gray gray gray"), and its middle cube by "above it" between its ends; read only in a text that builds a tower or a
@@ -5302,10 +5306,12 @@ LABEL_NOUN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\b(?:(?:[Ll]etter|[Dd]igit|[Nn]umber)\s+)?(block|cube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))"
                 r"(?<!\bI(?='[a-z]|\s+(?:[a-z]+ed|[a-z]+ing|am|have|had|want|need|would|will|just|think|said|mean|like|told|see|saw|look|can)\b))"),
      lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1)}"),
-    # "put cubes 3 and 4 next to each other", "blocks A and B on the red patch": two label cubes, as "cube 3" is one (two
-    # coloured cubes had been made up)
-    (re.compile(r"(?<![\w-])(?<![Ll]etter\s)(?<![Dd]igit\s)(?<![Nn]umber\s)(?<![Ll]abel\s)(?:[Tt]he\s+)?(?:cubes|blocks)\s+([A-Z]|\d)\s+and\s+([A-Z]|\d)\b(?!\s*(?:cubes|blocks|cm|%))"),
-     lambda m: " and ".join(f"the {'letter' if x.isalpha() else 'digit'} {x} cube" for x in m.groups())),
+    # "put cubes 3 and 4 next to each other": two label cubes, as "cube 3" is one (two coloured cubes had been made up); a
+    # colour before them ("red cubes A and B") is left as said
+    (re.compile(r"(?<![\w-])(?:[Tt]he\s+)?(?:cubes|blocks)\s+([A-Z]|\d)\s+and\s+([A-Z]|\d)\s+(next\s+to|beside)\s+(?:each\s+other|one\s+another)\b"),
+     lambda m: m.group(0) if re.search(rf"\b(?:{COLOR_RE}|letter|digit|number|label(?:led|ed)?)\s*$", m.string[:m.start()], re.I)
+     else f"the {'letter' if m.group(1).isalpha() else 'digit'} {m.group(1)} cube {m.group(3)} the "
+          f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} cube"),
     # "the letter cubes A and B next to each other": the one next to the other (two coloured cubes had been made)
     (re.compile(r"\b(?:[Tt]he\s+)?([Ll]etter|[Dd]igit|[Nn]umber)\s+(?:cubes|blocks)\s+([A-Z]|\d)\s+and\s+([A-Z]|\d)\s+(next\s+to|beside)\s+"
                 r"(?:each\s+other|one\s+another)\b"),

@@ -395,9 +395,16 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         removed = remove_cubes(plan.text, ref_schema, [o.params["select"]["color"] for o in plan.ops], parse)
         if removed is not None:  # "get rid of the green block" of cubes related to each other: the rest kept
             return removed[1], removed[0], intent_of_ops(plan.ops)
+    recoloured = _cubes_recoloured(plan, ref_schema) if ref_spec is None else None
+    if recoloured is not None:  # "make the one on the left yellow", "make them both green": the cubes of those roles
+        return recoloured
     if ref_spec is None and all(o.op == "recolor" and "color" in o.params["select"] for o in plan.ops):
         schema = ref_schema
         for o in plan.ops:
+            shared = o.params["select"]["color"]
+            if any(a.kind == "goal_patch" and a.color == shared for a in ref_schema.assets):
+                raise SteerError(f"the {shared} cube of v{reference} stands with a {shared} patch, and its instruction does not "
+                                 f"read back with only the cube's colour changed; state the whole new task, or use --model")
             try:
                 schema = recolor(schema, o.params["select"]["color"], o.params["to"]["color"])
             except BadInput as exc:
@@ -887,6 +894,94 @@ def _patch_recoloured(text: str, ref: TaskSchema, patches: list[str]) -> tuple[T
         return None
     want = sorted(a.replace(f"patch:{patches[0]}", f"patch:{new}") for a in meaning(ref))
     return (schema, instruction, "tweak") if sorted(meaning(schema)) == want else None
+
+
+_SIDE_ORDER = {"left": ("left_of", "right_of"), "right": ("right_of", "left_of"), "front": ("in_front_of", "behind"),
+               "back": ("behind", "in_front_of")}
+"""For "the one on the left" (and right, front, back): the relation whose subject stands there, and its mirror, whose object
+does."""
+
+
+def _relation_role(sel: dict, ref: TaskSchema) -> set[str] | None:
+    """The cubes of a relational task (no structure) that a recolour's selector picks by their role in its relations: all
+    of them ("them", "both", "all"), the one on one side of every pair on that axis ("the one on the left": the subject of
+    left_of, the object of right_of; the same one in each relation), the one in the middle of a between, or its two ends;
+    None where the selector picks by something else or the roles do not pick one cube."""
+    cubes = {a.name for a in ref.assets if a.kind == "colored_cube"}
+    if len(cubes) != sum(a.kind != "goal_patch" for a in ref.assets):
+        return None  # a label cube keeps its label, not a colour
+    if set(sel) <= {"all", "both"} and sel.get("all"):
+        return cubes
+    if set(sel) == {"color"}:  # "make the red cube green": every cube of that colour (not a patch of it)
+        return {a.name for a in ref.assets if a.kind == "colored_cube" and a.color == sel["color"]} or None
+    leaves = [p for p in ref.goal_predicate().walk() if not p.children()]
+    if set(sel) == {"end", "n"} and sel["n"] == 1 and sel["end"] in _SIDE_ORDER:
+        own, mirror = _SIDE_ORDER[sel["end"]]
+        picked = {p.a for p in leaves if p.name == own} | {p.b for p in leaves if p.name == mirror}
+        other = {p.b for p in leaves if p.name == own} | {p.a for p in leaves if p.name == mirror}
+        end = picked - other  # a chain's end: on that side of one cube, on the other side of none
+        return end if len(end) == 1 else None
+    betweens = [p for p in leaves if p.name == "between"]
+    if len(betweens) == 1 and set(sel) == {"position"} and sel["position"] == "middle":
+        return {betweens[0].a}
+    if len(betweens) == 1 and set(sel) == {"position"} and sel["position"] in ("bottom", "top"):
+        return {betweens[0].b, betweens[0].c}  # "make the ends gray": both ends, said as two recolours
+    return None
+
+
+_PATCH_NOUN = r"(?:goal\s+|target\s+)?(?:patch|patches|pad|pads|mat|mats)\b"
+
+
+def _recoloured_by_words(ref: TaskSchema, change: dict[str, str], patches: bool) -> tuple[TaskSchema, str, str] | None:
+    """``ref`` with the colours of ``change`` changed in the cubes' words (``patches`` False: every colour word not before a
+    patch's noun) or the patches' (True: only those before one): the instruction rewritten, read back and kept only where
+    it means ``ref`` with exactly those colours changed (cubes' or patches' atoms alone); None otherwise."""
+    from rpg.schema.meaning import meaning
+
+    which = r"(?=\s+" + _PATCH_NOUN + ")" if patches else r"(?!\s+" + _PATCH_NOUN + ")"
+    words = re.compile(rf"(?i)\b({'|'.join(map(re.escape, change))})\b{which}")
+    instruction = words.sub(lambda m: change[m.group(1).lower()], ref.instruction)
+    if instruction == ref.instruction:
+        return None
+    try:
+        schema = parse(instruction)
+    except (BadInput, ValueError):
+        return None
+    token = re.compile(r"(?<=patch:)([a-z]+)" if patches else r"(?<![:\w])([a-z]+)(?=[,;)|]|$)")
+    want = sorted(token.sub(lambda m: change.get(m.group(1), m.group(1)), a) for a in meaning(ref))
+    return (schema, instruction, "tweak") if sorted(meaning(schema)) == want else None
+
+
+def _cubes_recoloured(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str, str] | None:
+    """Cubes of a relational task recoloured, picked by their relations ("make the one on the left yellow", "the cube in the
+    middle should be white", "make them both green", "make the ends gray") or by colour, or a patch named by its colour
+    ("make the red patch purple"): the instruction with each picked colour's words changed (the cubes' or the patches'),
+    read back and kept only where it means the task with those colours changed and nothing else
+    (:func:`_recoloured_by_words`); None for any other edit, or where a picked colour is shared with a cube not picked (its
+    words would name both)."""
+    if not plan.ops or any(o.op != "recolor" or "color" not in o.params["to"] for o in plan.ops):
+        return None
+    said_patch = [o for o in plan.ops if set(o.params["select"]) == {"color"} and re.search(
+        rf"(?i)\b{re.escape(o.params['select']['color'])}\s+{_PATCH_NOUN}", plan.text)]
+    if said_patch:  # "make the red patch purple", "instead of the green patch use the blue one": the patch, not a cube
+        if len(said_patch) != len(plan.ops):
+            return None
+        return _recoloured_by_words(ref, {o.params["select"]["color"]: o.params["to"]["color"] for o in plan.ops}, patches=True)
+    names = {a.name: a.color for a in ref.assets if a.kind == "colored_cube"}
+    change: dict[str, str] = {}
+    picked_all: set[str] = set()
+    for o in plan.ops:
+        picked = _relation_role(o.params["select"], ref)
+        if not picked:
+            return None
+        picked_all |= picked
+        for n in picked:
+            if change.get(names[n], o.params["to"]["color"]) != o.params["to"]["color"]:
+                return None  # one colour made two
+            change[names[n]] = o.params["to"]["color"]
+    if any(c in change and n not in picked_all for n, c in names.items()) or all(old == new for old, new in change.items()):
+        return None
+    return _recoloured_by_words(ref, change, patches=False)
 
 
 def _pair(atom: str) -> frozenset[str] | None:

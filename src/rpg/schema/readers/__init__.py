@@ -322,9 +322,11 @@ def _identifier_label(instruction: str) -> tuple[str, str] | None:
     if m is None:
         m = lexicon.ID_WORDS_LABEL_RE.match(instruction)  # "Tower variant B: ...", "Demo-day row: ...": words alone
         said = re.findall(r"[A-Za-z]+", m.group("label")) if m else []
-        if not any(w.lower() in lexicon.LABEL_JARGON for w in said) or any(
-                len(w) == 1 and w.islower() for w in said):  # "a: ..." is no letter of a name
-            return None
+        if not any(w.lower() in lexicon.LABEL_JARGON for w in said) or any(len(w) == 1 and w.islower() for w in said) \
+                or re.search(r"(?i)\b(?:\d+|one|two|three|four|five|six)[\s-]+(?:[a-z]+[\s-]+)?(?:tower|stack|row|line|pile|wall|pyramid"
+                             r"|circle|grid|block|cube)s?\b|\b(?:towers|stacks|rows|lines|piles|walls|pyramids|circles|grids|height|tall|high"
+                             r"|ordered|order)\b", m.group("label")):
+            return None  # "a: ..." is no letter of a name; "Two-tower variant:", "Baseline, 3 towers:" count (one had been made)
     words = re.findall(r"[a-z]+", re.sub(r"\"[^\"]*\"", " ", m.group("label")).lower())  # a quoted name says nothing
     if not all(w in lexicon.LABEL_JARGON or w in lexicon.LABEL_TASK_KIND_WORDS or w in lexicon.NUMBER_WORDS or len(w) == 1
                or re.fullmatch(r"v|x|st|nd|rd|th", w)
@@ -441,6 +443,12 @@ def parse(instruction: str, _framed: bool = False) -> TaskSchema:
     if shared:  # "put two A blocks on the patch", "the 3 3 cubes": a label is one cube's (they had become cubes of colours)
         raise ParseError(f"'{shared.group(0)}' names several cubes with one label: each letter or digit is on one cube; "
                          "name each cube (e.g. \"the A block and the B block\"), or use --model")
+    bare = next((m for m in re.finditer(r"(?i)\b(?:cubes|blocks)\s+(?:[A-Z]|\d)\s+and\s+(?:[A-Z]|\d)\b(?!\s+(?:next\s+to|beside)\s+"
+                                        r"(?:each\s+other|one\s+another))", instruction)
+                 if not re.search(r"(?i)\b(?:letter|digit|number|label(?:l?ed)?)\s*$", instruction[:m.start()])), None)
+    if bare:  # "put blocks 3 and 4 on the red patch": two coloured cubes had been made up for the labels
+        raise ParseError(f"'{bare.group(0)}' names cubes by labels without saying they are letter or digit cubes; say so "
+                         "(e.g. \"the digit cubes 3 and 4\", \"the letter cubes A and B\"), or use --model")
     if listed != instruction:  # "Tower 1: red, green. Tower 2: ...": a tower each (the first name had been read as a label)
         schema = parse(listed, _framed=_framed)
         return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})

@@ -852,6 +852,9 @@ def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
     if re.search(r"\b(?:1|one)\s+of\s+(?:them|which|those)\b", f.text):  # "two towers of four cubes, one of them purple":
         raise ParseError(f"\"{f.original[:80]}\" picks 'one of them' among several towers: which tower or cube is not "  # (every
                          "said; say each tower (e.g. \"one tower of purple cubes and one of red cubes\"), or use --model")  # cube purple)
+    if re.search(r"\b(?:different|differing|unequal|varying)\s+(?:heights?|sizes?|lengths?)\b|\bheights?\s+(?:differ|vary)", f.text):
+        raise ParseError(f"\"{f.original[:80]}\" asks for towers of different heights without saying each one's; say how many "
+                         "cubes each tower has, or use --model")
     colors = list(dict.fromkeys(f.color_list()))
     each = re.search(r"\b(?:towers|stacks)\s+(?:of|with)\s+(\d+)\b|\b(\d+)\s+(?:blocks?|cubes?)\s+(?:high|tall|each)\b", f.text)
     if each and int(each.group(1) or each.group(2)) < 2:  # "four towers of one cube" (it had been four towers of four)
