@@ -2295,3 +2295,29 @@ def test_a_role_that_picks_no_one_cube_is_refused(tmp_path, base, edit):
     fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     with pytest.raises(SteerError):
         steer(fam.path, edit)
+
+
+@pytest.mark.parametrize("base, edits, expected", [
+    ("Line up the letter cubes to spell STAR", ["rearrange it to spell RATS", "now stack them in that order, R at the bottom"],
+     ("pivot", ["stack(R,A,T,S)"])),
+    ("Put the 1, 2 and 3 digit cubes in a row from left to right", ["reverse it", "stack them in that order, 3 at the bottom"],
+     ("pivot", ["stack(3,2,1)"])),
+    ("Spell BOX with letter cubes", ["stack them, B at the top and X at the bottom"], ("pivot", ["stack(X,O,B)"])),
+    ("Spell BOX with letter cubes", ["stack them in that order, X at the top"], ("pivot", ["stack(B,O,X)"])),
+])
+def test_a_row_stacked_in_its_order_from_a_named_end(tmp_path, base, edits, expected):
+    """A row with an order made a tower in that order (it had been "names no change")."""
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+@pytest.mark.parametrize("base, edit", [
+    # the letters listed after the change had been read as every cube relabelled R: a line of R, R, R, R (silently)
+    ("Spell RATS with letter cubes in a row from left to right.", "make it a tower, from bottom to top: R, A, T, S"),
+    # a middle cube named, or the others' order unsaid
+    ("Spell RATS with letter cubes in a row from left to right.", "stack them in that order, A at the bottom"),
+    ("Spell RATS with letter cubes in a row from left to right.", "stack them, R at the bottom"),
+])
+def test_labels_an_edit_leaves_unread_or_an_order_unsaid_are_refused(tmp_path, base, edit):
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
+    with pytest.raises(SteerError):
+        steer(fam.path, edit)

@@ -1311,6 +1311,28 @@ def unread_numbers(plan: EditPlan) -> list[str]:
     return [n for n in dict.fromkeys(said) if int(n) not in used]
 
 
+def _labels_of(value) -> set[str]:
+    if isinstance(value, dict):
+        return {v for k, v in value.items() if k in ("label", "word") and isinstance(v, str) for v in (v, *v)} | {
+            c for v in value.values() for c in _labels_of(v)}
+    if isinstance(value, (list, tuple)):
+        return {c for v in value for c in _labels_of(v)}
+    return set()
+
+
+def unread_labels(plan: EditPlan) -> list[str]:
+    """Letter labels the edit names that none of its operations (nor its reference cue) uses ("make it a tower, from bottom
+    to top: R, A, T, S" read as every cube relabelled R): a part of the edit that was not read.  "I" and "A" said as words
+    ("I want", "A tower") are no labels."""
+    t = plan.text
+    if plan.cue.phrase:
+        t = re.sub(re.escape(plan.cue.phrase), " ", t, flags=re.IGNORECASE)
+    said = [m.group(0) for m in re.finditer(r"(?<![\w'])[A-Z](?![\w'])", t)
+            if not (m.group(0) in "IA" and re.match(r"\s+[a-z]", t[m.end():]))]
+    used = _labels_of([o.params for o in plan.ops]) | _labels_of(asdict(plan.cue))
+    return [c for c in dict.fromkeys(said) if c not in used]
+
+
 def unread_colors(plan: EditPlan) -> list[str]:
     """Colours the edit names that none of its operations (nor its reference cue) uses: a
     part of the edit that was not read ("make the top layer red and the bottom one blue" read

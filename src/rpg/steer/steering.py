@@ -73,6 +73,7 @@ from rpg.steer.edits import (
     normalize_edit,
     strip_edit_words,
     unread_colors,
+    unread_labels,
     unread_numbers,
 )
 from rpg.steer.family import (
@@ -328,6 +329,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     elif ref_schema is not None and not patches and SAME_PATCH_RE.search(plan.text):  # (a gray patch had been made up)
         raise SteerError(f"'{SAME_PATCH_RE.search(plan.text).group(0)}' names a patch, but v{reference} has none; say which patch "
                          "(e.g. \"on a red patch\"), or use --model")
+    stacked = _stacked_in_row_order(plan.text, ref_schema) if ref_schema is not None else None
+    if stacked is not None:  # "stack them in that order, R at the bottom" of a row spelling RATS
+        return stacked
     restated = _tower_restated(plan.text, ref_schema) if ref_schema is not None else None
     if restated is not None:  # "make the tower five cubes: three red and then two blue on top": the whole tower again
         return restated
@@ -457,7 +461,8 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
             made = None
         numbers = [n for n in numbers if int(n) != made]
     unread = [c for c in unread_colors(plan)  # "make that seven pink cubes" of a pink row: its own colour, not a change
-              if not (set(ref_spec.colors()) == {c} and all(o.op == "count" for o in plan.ops))] + numbers
+              if not (set(ref_spec.colors()) == {c} and all(o.op == "count" for o in plan.ops))] + numbers + (
+        unread_labels(plan) if any(o.op == "relabel" for o in plan.ops) else [])  # (a list read as one relabel)
     if (unread or re.search(r"(?i)\b(?:reading|reads?|spell(?:s|ing)?)\b|\b[A-Z0-9]\s+(?:at|on)\s+(?:the\s+)?(?:bottom|top|base)\b",
                             plan.text)) and \
             (roled := _pivot_with_roles(plan, ref_schema)) is not None:
@@ -927,6 +932,45 @@ def _relation_role(sel: dict, ref: TaskSchema) -> set[str] | None:
     if len(betweens) == 1 and set(sel) == {"position"} and sel["position"] in ("bottom", "top"):
         return {betweens[0].b, betweens[0].c}  # "make the ends gray": both ends, said as two recolours
     return None
+
+
+STACKED_IN_ORDER_RE = re.compile(
+    rf"(?i)^\s*(?:(?:now|then|ok(?:ay)?|so|and|actually)\s*,?\s+)*(?:stack|pile)\s+(?:them|it|all\s+of\s+them|them\s+all|the\s+(?:cubes|blocks"
+    rf"|letters|digits|numbers))(?:\s+up)?(?P<kept>(?:\s+(?:instead|in\s+(?:that|the\s+same|this)\s+order))*)\s*[,:]\s*(?:with\s+)?(?:the\s+)?"
+    rf"(?P<x>(?-i:[A-Z])|\d|{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on)\s+the\s+(?P<end>bottom|base|top)(?:\s*(?:,\s*and|,|and)\s+(?:the\s+)?"
+    rf"(?P<y>(?-i:[A-Z])|\d|{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on)\s+the\s+(?P<end2>bottom|base|top))?\s*[.!]?\s*$")
+"""A row stacked in its own order from one named end ("stack them in that order, R at the bottom", "stack them, N at the
+bottom"): read by :func:`_stacked_in_row_order`."""
+
+
+def _stacked_in_row_order(text: str, ref: TaskSchema) -> tuple[TaskSchema, str, str] | None:
+    """A row with an order made a tower in that order, from the end the edit names (:data:`STACKED_IN_ORDER_RE`): the named
+    cube is one end of the row, and the tower takes the row's cubes from it; None for any other edit, a row with no order,
+    or a named cube at neither end (its order would be a guess)."""
+    m = STACKED_IN_ORDER_RE.match(text)
+    spec = extract(ref) if m else None
+    if spec is None or spec.structure != "line" or spec.direction is None or len(spec.items) < 2:
+        return None
+    def at(said: str) -> list[int]:
+        return [i for i, it in enumerate(spec.items) if (it.label or it.color) == (said if len(said) == 1 else canon_color(said))]
+
+    named, ends = at(m.group("x")), {0, len(spec.items) - 1}
+    if len(named) != 1 or named[0] not in ends:
+        return None
+    if m.group("y") and (at(m.group("y")) != [next(iter(ends - {named[0]}))] or {m.group("end"), m.group("end2")} - {"base"} !=
+                         {"bottom", "top"}):
+        return None  # "B at the top and X at the bottom": the row's other end, at the tower's other end
+    unsaid = len(spec.items) - (2 if m.group("y") else 1)
+    if "order" not in m.group("kept") and unsaid > 1:
+        return None  # "stack them, R at the bottom" of four: the others' order is not said
+    items = list(spec.items) if named[0] == 0 else list(reversed(spec.items))
+    if m.group("end") == "top":
+        items.reverse()
+    try:
+        instruction, schema = render_carried(TaskSpec("tower", tuple(items)), Carried(), parse)
+    except BadInput:
+        return None
+    return schema, instruction, "pivot"
 
 
 _PATCH_NOUN = r"(?:goal\s+|target\s+)?(?:patch|patches|pad|pads|mat|mats)\b"
