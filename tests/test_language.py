@@ -7502,6 +7502,10 @@ def test_a_listed_tower_s_ends_said_again_keep_its_cubes(text, expected):
     "Baseline, 3 towers: red on blue.",
     "Stack red, blue and green with blue second, counted from the top.",  # cubes had been made up
     "Two towers of different heights: one made only of red cubes and one made only of blue cubes.",
+    # older classes the attack found: one tower's colour said of two (the other had been made red too); a listed tower
+    # that refers to another ("white on top of it": red and blue had been made up for "it")
+    "Two towers, two cubes each: one made only of red cubes.",
+    "Build two towers: yellow on orange, and white on top of it.",
 ])
 def test_this_session_s_readings_refuse_what_they_cannot_say(text):
     with pytest.raises(BadInput):

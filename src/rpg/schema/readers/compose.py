@@ -378,8 +378,8 @@ def recognize_listed_towers(f: Features, b: Builder) -> bool:
     if len(texts) != k:
         texts = [t.strip() for t in re.split(r"\s*[;,]\s*(?:and\s+)?|\s+and\s+", m.group("body"))]
     texts = [re.sub(r"^(?:(?:1|the first|the second|the other|the last)\s+(?:of|with|is)\s+)", "", t) for t in texts]
-    if len(texts) != k or not all(texts):
-        return False
+    if len(texts) != k or not all(texts) or any(re.search(r"\b(?:it|its|them|that|this|those|these)\b", t) for t in texts):
+        return False  # "yellow on orange, and white on top of it": a part that refers to another (its "it" had been made up)
     heads = _read_parts([t if re.search(STRUCTURE_RE, t) else f"a {m.group('noun')}: {t}" for t in texts])
     if heads is None or not all(_single_spot(h) and isinstance(h.goal_predicate(), STACK_KINDS) for h in heads):
         return False

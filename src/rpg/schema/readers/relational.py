@@ -867,6 +867,11 @@ def _multi_stacks(f: Features, b: Builder, k: int) -> bool:
         height = height // k
     height = height if height and height >= 2 else 2
     per_tower = None if with_patches or matching else _per_tower_colors(f.text, k, height)
+    counted = re.search(r"\b\d+\s+(?:[a-z\-]+\s+)?(?:towers|stacks)\b", f.text)
+    told = len(list(_PER_TOWER_RE.finditer(f.text[counted.end():]))) if counted and not (with_patches or matching) else 0
+    if per_tower is None and 0 < told < k:  # "two towers, two cubes each: one made only of red cubes": the other's colour unsaid
+        raise ParseError(f"\"{f.original[:80]}\" says the cubes of {told} of its {k} towers; say each tower's (e.g. \"one tower of "
+                         "red cubes and one of blue cubes\"), or use --model")
     patch_said = [canon_color(c) for m in re.finditer(rf"\b((?:{COLOR_RE})(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+)(?:{COLOR_RE}))*)\s+"
                                                        r"(?:goal\s+)?patch(?:es)?\b", f.text)
                   for c in re.findall(rf"\b(?:{COLOR_RE})\b", m.group(1))]
