@@ -2065,11 +2065,18 @@ CORRECTION_WORD_CLASSES: dict[str, frozenset[str]] = {
 patch"; "to the front" replaces "to the left"): articles for articles, prepositions for
 prepositions; a count for a count; a word in capitals for one; other words for themselves."""
 
+def count_word(word: str) -> int:
+    """A count said in digits or a number word ("3", "three", "Two"), as an int.
+
+    Raises:
+        KeyError: ``word`` is neither digits nor one of :data:`NUMBER_WORDS`."""
+    return int(word) if word.isdigit() else NUMBER_WORDS[word.lower()]
+
+
 def _counted_tower_chain(m: re.Match) -> str:
     """"a two-block tower, orange under cyan" -> "a tower of orange under cyan" when the chain has that many cubes (else as
     said: the count then stays read against it)."""
-    n = m.group("n").lower()
-    count = int(n) if n.isdigit() else NUMBER_WORDS[n]
+    count = count_word(m.group("n"))
     said = len(re.findall(rf"\b(?:{COLOR_RE})\b", m.group("chain")))
     return f"{m.group('a') or ''}{m.group('kind')} of {m.group('chain')}" if said == count else m.group(0)
 

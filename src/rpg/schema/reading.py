@@ -2049,8 +2049,8 @@ _CHAIN_RELATIVE = {"on": +1, "under": -1, "higher": +1, "lower": -1}
 
 
 def _count(word: str) -> int:
-    """A count said in digits or a number word ("3", "three", "both")."""
-    return int(word) if word.isdigit() else lexicon.NUMBER_WORDS[word]
+    """A count said in digits or a number word ("3", "three", "both"): :func:`lexicon.count_word`."""
+    return lexicon.count_word(word)
 
 
 _AFTER_IT_RE = re.compile(r"\b(?:above|over|on|onto|atop|upon|on\s+top\s+of|below|under|beneath|underneath)\s+(?:it|that|this)\b")

@@ -1312,9 +1312,10 @@ def unread_numbers(plan: EditPlan) -> list[str]:
 
 
 def _labels_of(value) -> set[str]:
+    """The labels an operation's parameters use: each ``label``, and a ``word`` with each of its letters."""
     if isinstance(value, dict):
-        return {v for k, v in value.items() if k in ("label", "word") and isinstance(v, str) for v in (v, *v)} | {
-            c for v in value.values() for c in _labels_of(v)}
+        said = {x for k, v in value.items() if k in ("label", "word") and isinstance(v, str) for x in (v, *v)}
+        return said | {c for v in value.values() for c in _labels_of(v)}
     if isinstance(value, (list, tuple)):
         return {c for v in value for c in _labels_of(v)}
     return set()

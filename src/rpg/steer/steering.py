@@ -882,23 +882,13 @@ def _tower_restated(text: str, ref: TaskSchema) -> tuple[TaskSchema, str, str] |
 def _patch_recoloured(text: str, ref: TaskSchema, patches: list[str]) -> tuple[TaskSchema, str, str] | None:
     """The task's one patch made another colour ("make the patch cyan", "patch should be cyan": :data:`PATCH_RECOLOUR_RE`)
     with the rest of its goal kept: its instruction with that patch's colour word changed, read back and checked to mean
-    the task with only the patch's colour changed; None for any other edit, or where the instruction does not read so."""
-    from rpg.schema.meaning import meaning
-
+    the task with only the patch's colour changed (:func:`_recoloured_by_words`); None for any other edit, or where the
+    instruction does not read so."""
     m = PATCH_RECOLOUR_RE.fullmatch(text.strip())
     new = canon_color(m.group(1)) if m else None
     if new is None or new == patches[0] or any(a.color == new for a in ref.assets if a.kind == "goal_patch"):
         return None
-    said = re.compile(rf"(?i)\b{re.escape(patches[0])}(?=\s+(?:goal\s+|target\s+)?(?:patch|pad|mat)\b)")
-    if len(said.findall(ref.instruction)) < 1:
-        return None
-    instruction = said.sub(new, ref.instruction)
-    try:
-        schema = parse(instruction)
-    except (BadInput, ValueError):
-        return None
-    want = sorted(a.replace(f"patch:{patches[0]}", f"patch:{new}") for a in meaning(ref))
-    return (schema, instruction, "tweak") if sorted(meaning(schema)) == want else None
+    return _recoloured_by_words(ref, {patches[0]: new}, patches=True)
 
 
 _SIDE_ORDER = {"left": ("left_of", "right_of"), "right": ("right_of", "left_of"), "front": ("in_front_of", "behind"),
@@ -909,7 +899,8 @@ does."""
 
 def _relation_role(sel: dict, ref: TaskSchema) -> set[str] | None:
     """The cubes of a relational task (no structure) that a recolour's selector picks by their role in its relations: all
-    of them ("them", "both", "all"), the one on one side of every pair on that axis ("the one on the left": the subject of
+    of them ("them", "both", "all"), every cube of a colour ("the red cube"; not a patch of it), the one on one side of
+    every pair on that axis ("the one on the left": the subject of
     left_of, the object of right_of; the same one in each relation), the one in the middle of a between, or its two ends;
     None where the selector picks by something else or the roles do not pick one cube."""
     cubes = {a.name for a in ref.assets if a.kind == "colored_cube"}
@@ -939,14 +930,15 @@ STACKED_IN_ORDER_RE = re.compile(
     rf"|letters|digits|numbers))(?:\s+up)?(?P<kept>(?:\s+(?:instead|in\s+(?:that|the\s+same|this)\s+order))*)\s*[,:]\s*(?:with\s+)?(?:the\s+)?"
     rf"(?P<x>(?-i:[A-Z])|\d|{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on)\s+the\s+(?P<end>bottom|base|top)(?:\s*(?:,\s*and|,|and)\s+(?:the\s+)?"
     rf"(?P<y>(?-i:[A-Z])|\d|{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on)\s+the\s+(?P<end2>bottom|base|top))?\s*[.!]?\s*$")
-"""A row stacked in its own order from one named end ("stack them in that order, R at the bottom", "stack them, N at the
-bottom"): read by :func:`_stacked_in_row_order`."""
+"""A row stacked in its own order from a named end ("stack them in that order, R at the bottom", "stack them, B at the top
+and X at the bottom"): read by :func:`_stacked_in_row_order`."""
 
 
 def _stacked_in_row_order(text: str, ref: TaskSchema) -> tuple[TaskSchema, str, str] | None:
     """A row with an order made a tower in that order, from the end the edit names (:data:`STACKED_IN_ORDER_RE`): the named
-    cube is one end of the row, and the tower takes the row's cubes from it; None for any other edit, a row with no order,
-    or a named cube at neither end (its order would be a guess)."""
+    cube is one end of the row, and the tower takes the row's cubes from it (a second cube named must be the row's other
+    end, at the tower's other end); None for any other edit, a row with no order, a named cube at neither end, or more than
+    one cube's place left unsaid without "in that order" (the order would be a guess)."""
     m = STACKED_IN_ORDER_RE.match(text)
     spec = extract(ref) if m else None
     if spec is None or spec.structure != "line" or spec.direction is None or len(spec.items) < 2:

@@ -407,8 +407,7 @@ def _towers_headed(instruction: str, framed: bool) -> TaskSchema | None:
     m = _TOWERS_HEADING_RE.match(instruction)
     if m is None:
         return None
-    count = lambda w: int(w) if w.isdigit() else lexicon.NUMBER_WORDS[w.lower()]  # noqa: E731
-    n, h = count(m.group("n")), m.group("h") or m.group("h2")
+    n, h = lexicon.count_word(m.group("n")), m.group("h") or m.group("h2")
     try:
         schema = parse(m.group("body"), _framed=framed)
     except BadInput:
@@ -416,7 +415,7 @@ def _towers_headed(instruction: str, framed: bool) -> TaskSchema | None:
     parts = [p for p in schema.goal_predicate().walk() if not isinstance(p, And)]
     stacks = [p for p in parts if isinstance(p, Stack)]
     if len(stacks) != n or any(not isinstance(p, (Stack, InRegion)) for p in parts) or (
-            h and any(len(p.objects) != count(h) for p in stacks)) or len({o for p in stacks for o in p.objects}) != sum(a.kind != "goal_patch" for a in schema.assets):
+            h and any(len(p.objects) != lexicon.count_word(h) for p in stacks)) or len({o for p in stacks for o in p.objects}) != sum(a.kind != "goal_patch" for a in schema.assets):
         return None
     return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})
 
