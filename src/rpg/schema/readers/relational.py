@@ -255,7 +255,16 @@ class RelationalReading:
             if b_m.ref == "@them" and not self.on_edges and self.previous:
                 b_m = Mention(b_m.start, b_m.end, None, None, 1, ref="@it")
             elif b_m.ref == "@it" and not self.previous and self.stackish:  # "build a tower ... and put X behind it"
-                b_m = Mention(b_m.start, b_m.end, None, None, 1, ref="@s")
+                before = [m for m in ms if m.end <= a_m.start and not m.patch and not m.ref and (m.color or m.label)]
+                if before and self.bottom_top.get("bottom") == self.obj(before[-1]):
+                    # "cube A at the bottom of a tower, cube M on it, and cube Z on top": on cube A (M had gone on top
+                    # of the whole tower, above Z)
+                    self.previous[:] = [self.bottom_top["bottom"]] * 2
+                elif before and kind == "on" and self.bottom_top.get("top") == self.obj(before[-1]):
+                    raise ParseError(f"'{clause[a_m.start:b_m.end].strip().replace('@', '')}' puts a cube on the one said to be "
+                                     "on top; say the tower's order once (e.g. \"from bottom to top: ...\"), or use --model")
+                else:
+                    b_m = Mention(b_m.start, b_m.end, None, None, 1, ref="@s")
             if b_m.ref in ("@s", "@them"):
                 if kind == "on":
                     self.on_structure.append(self.obj(a_m))
@@ -389,7 +398,10 @@ def recognize_relational(f: Features, b: Builder) -> bool:
     for clause in clauses:
         r.read_clause(clause)
     if "bottom" in r.bottom_top and "top" in r.bottom_top:
-        r.on_edges.append((r.bottom_top["top"], r.bottom_top["bottom"]))
+        below = r.bottom_top["bottom"]  # the top cube goes on the cubes said on the bottom one ("A at the bottom, M on it, Z on top")
+        while (above := [u for u, lo in r.on_edges if lo == below]) and len(above) == 1 and above[0] != r.bottom_top["top"]:
+            below = above[0]
+        r.on_edges.append((r.bottom_top["top"], below))
     if "left" in r.sides and "right" in r.sides and r.sides["left"] != r.sides["right"]:
         r.rels.append(LeftOf(r.sides["left"], r.sides["right"]))
     # a bare "stack N blocks" / "stack blocks on the patch"
