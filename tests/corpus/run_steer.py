@@ -89,7 +89,8 @@ DEVELOPMENT = {
     "stranger18": ("steer_stranger18.yaml", "STRANGER steering set 18 (steer_stranger18.yaml, development material)"),
     "stranger19": ("steer_stranger19.yaml", "STRANGER steering set 19 (steer_stranger19.yaml, transfer measure of the thirty-first session; development material from the thirty-sixth)"),
     "stranger20": ("steer_stranger20.yaml", "STRANGER steering set 20 (steer_stranger20.yaml, transfer measure of the thirty-sixth session; development material from the thirty-seventh)"),
-    "stranger21": ("steer_stranger21.yaml", "STRANGER steering set 21 (steer_stranger21.yaml, written at the start of the thirty-seventh session: aggregates only)"),
+    "stranger21": ("steer_stranger21.yaml", "STRANGER steering set 21 (steer_stranger21.yaml, transfer measure of the thirty-seventh session; development material from the thirty-eighth)"),
+    "stranger22": ("steer_stranger22.yaml", "STRANGER steering set 22 (steer_stranger22.yaml, written at the start of the thirty-eighth session: aggregates only)"),
 }
 UNSEEN = HERE / "steer_unseen.yaml"
 SPLITS = HERE / "splits.yaml"
