@@ -1820,12 +1820,13 @@ ANY_ORDER_RE = re.compile(
     r"|works|goes|will\s+do))?"
     r"|(?:the\s+)?order\s+(?:does\s*n[o']?t|doesn't|is\s*n[o']?t|isn't)\s+(?:matter|important)|regardless\s+of\s+(?:the\s+)?order"
     r"|(?:the\s+)?order\s+is\s+(?:unimportant|irrelevant)"
-    r"|(?:the\s+)?order\s+is\s+(?:up\s+to\s+you|your\s+(?:choice|call)|free|flexible|open)"
+    r"|(?:the\s+)?order\s+is\s+(?:up\s+to\s+you|your\s+(?:choice|call)|free|flexible|open)|order\s+free\b"
     r"|(?:in\s+)?(?:any|whatever|whichever)\s+order\s+you\s+(?:like|want|choose|prefer|wish)"
     r"|you\s+(?:can|may)\s+(?:choose|pick|decide)\s+the\s+order"
     r"|(?:the\s+)?order\s+(?:thereof\s+)?(?:being\s+)?at\s+(?:the\s+robot's|your|its)\s+discretion"
     r"|how(?:ever)?\s+you\s+(?:prefer|like|want|wish|please)"
-    r"|(?:either|any|whichever)\s+(?:one\s+|1\s+|cube\s+|block\s+|of\s+them\s+)?(?:(?:can|may|could)\s+(?:go|be|sit|stand|end\s+up|come)\s+)?"
+    r"|(?:either|any|whichever)\s+(?:one\s+|1\s+|cube\s+|block\s+|of\s+them\s+)?(?:(?:can|may|could)\s+(?:go|be|sit|stand|end\s+up|come)\s+"
+    r"|(?<=whichever\s)(?:(?:one|cube|block)\s+)?(?:ends\s+up|goes|sits|lands|is)\s+)?"
     r"(?:on\s+top|at\s+the\s+(?:top|bottom))(?!\s+of\b)(?:\s+(?:is\s+)?(?:fine|ok(?:ay)?))?"
     r"|whichever\s+way(?:\s+(?:is\s+)?(?:fine|round|around))?|either\s+way\s+(?:round|around|up)"
     # "Which one goes on top is up to you.", "It is up to you which one goes on top."
@@ -4578,6 +4579,12 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 rf"in\s+(?:any|either)\s+order\b"),
      lambda m: f"{m.group('a')}, {m.group('l')}, with the {m.group('a')} block {m.group('r')} and the others in any order"
      if m.group("a") not in m.group("l") else m.group(0)),
+    # "Tower of green, white and red, with red on top. The other two can go either way.": the tower's other cubes free
+    (re.compile(r"\s*[.;,]\s*(?:and\s+)?the\s+other\s+(?:two|2|ones|cubes|blocks)(?:\s+(?:cubes|blocks|ones))?\s+(?:can\s+(?:go|be|stand|sit)\s+"
+                r"|may\s+(?:go|be|stand|sit)\s+|go\s+|are\s+)?(?:in\s+)?(?:either|any)\s+(?:way|order)(?:\s+(?:round|around))?(?=\s*[.!]?\s*$)"),
+     lambda m: " and the others in any order" if re.search(r"\b(?:at\s+the\s+bottom|on\s+top|at\s+the\s+top)\b", m.string[:m.start()])
+     and (not re.search(r"\b(?:two|2)\b", m.group(0)) or len(set(re.findall(rf"\b(?:{COLOR_RE})\b", m.string[:m.start()]))) == 3)
+     else m.group(0)),
     # "whip up a tower of the pink cube on the yellow cube": build one
     (re.compile(r"\b(?:whip|rustle|knock|cook|throw)\s+(?:up|together)\s+(?=(?:a|an|one|the)\s+(?:tower|stack|row|line|pyramid|wall|circle|grid"
                 r"|pile)\b)"), "build "),

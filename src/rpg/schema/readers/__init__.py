@@ -445,7 +445,12 @@ def parse(instruction: str, _framed: bool = False) -> TaskSchema:
     bare = next((m for m in re.finditer(r"(?i)\b(?:cubes|blocks)\s+(?:[A-Z]|\d)\s+and\s+(?:[A-Z]|\d)\b(?!\s+(?:next\s+to|beside)\s+"
                                         r"(?:each\s+other|one\s+another))", instruction)
                  if not re.search(r"(?i)\b(?:letter|digit|number|label(?:l?ed)?)\s*$", instruction[:m.start()])), None)
-    if bare:  # "put blocks 3 and 4 on the red patch": two coloured cubes had been made up for the labels
+    kinds = {"letter" if c.isalpha() else "digit" for c in re.findall(r"\b(?:[A-Z]|\d)\b", bare.group(0))} if bare else set()
+    if len(kinds) == 1:  # "one tower out of cubes A and B": cube A and cube B, as "cube A" alone is (two coloured cubes
+        said = f"{kinds.pop()} {bare.group(0)}"  # had been made up for the labels)
+        schema = parse(instruction[:bare.start()] + said + instruction[bare.end():], _framed=_framed)
+        return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})
+    if bare:  # "put blocks A and 4 on the red patch"
         raise ParseError(f"'{bare.group(0)}' names cubes by labels without saying they are letter or digit cubes; say so "
                          "(e.g. \"the digit cubes 3 and 4\", \"the letter cubes A and B\"), or use --model")
     if listed != instruction:  # "Tower 1: red, green. Tower 2: ...": a tower each (the first name had been read as a label)
