@@ -807,7 +807,7 @@ them in order so they read A B C" does not sort: the reading gives the order).""
 LABEL_CUBES_SAID_RE = re.compile(rf"{lexicon.MATERIAL_SAID_RE.pattern}|\b(?:letter|digit|number)\s+[A-Z0-9]\b", re.IGNORECASE)
 """Words that say the cubes are letter or digit cubes ("the digit cubes", "letter B")."""
 
-_LABEL_REL = (r"(?:on(?:to)?|atop|under|underneath|below|above|beneath|next\s+to|beside|behind|in\s+front\s+of"
+_LABEL_REL = (r"(?:on\s+top\s+of|on(?:to)?|atop|under|underneath|below|above|beneath|next\s+to|beside|behind|in\s+front\s+of"
               r"|(?:to\s+the\s+)?(?:left|right)\s+of)")
 LABEL_TOKEN_RE = re.compile(r"(?:\b(?:letter|digit|number)\s+)?(?<![\w'@.])(?P<l>[A-Z]|\d)(?![\w'%]|\.\d)"
                             r"(?!\s*(?:[x\u00d7+\-=*/]|blocks?\b|cubes?\b|times\b))")
