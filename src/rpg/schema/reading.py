@@ -2010,8 +2010,8 @@ def _role_sentences(text: str) -> str:
 
 _CHAIN_REF = rf"(?:the\s+)?(?P<{{g}}>{COLOR_RE})(?:\s+(?:cube|block|one))?"
 _CHAIN_ROLES = (
-    ("above", r"(?:on|onto|on\s+top\s+of|above|over|atop|upon)\s+(?:it|that|this)(?:\s+one)?"),
-    ("below", r"(?:below|under|underneath|beneath)\s+(?:it|that|this)(?:\s+one)?"),
+    ("above", r"(?:(?:directly|right|just|immediately)\s+)?(?:on|onto|on\s+top\s+of|above|over|atop|upon)\s+(?:it|that|this)(?:\s+one)?"),
+    ("below", r"(?:(?:directly|right|just|immediately)\s+)?(?:below|under|underneath|beneath)\s+(?:it|that|this)(?:\s+one)?"),
     ("on", r"(?:(?:directly|right|just|immediately)\s+)?(?:on|onto|on\s+top\s+of|atop|upon)\s+" + _CHAIN_REF.format(g="on_ref")
      + r"|(?:directly|right|just|immediately)\s+(?:above|over)\s+" + _CHAIN_REF.format(g="on_ref2")),
     ("under", r"(?:directly|right|just|immediately)\s+(?:below|under|underneath|beneath)\s+" + _CHAIN_REF.format(g="under_ref")),
@@ -2026,9 +2026,10 @@ cube said: "it"), on or under a cube named ("directly above the blue one"), anyw
 at an end, or in the middle."""
 _CHAIN_ITEM_RE = re.compile(
     rf"(?:(?:first(?:ly)?,?|then|and|also|next|finally|lastly|after\s+that,?|afterwards,?)\s+)*(?:(?:put|place|set|stack|add|leave|lay)\s+)?(?:(?:a|an|the|another|1|(?:the\s+)?(?P<n>\d+|two|three|four|five|six|both))\s+)?"
-    rf"(?P<c>{COLOR_RE})(?:\s+(?:blocks?|cubes?|bricks?|ones?))?\s+(?:(?:is|goes|sits|should\s+be|must\s+be|comes|stands)\s+)?"
+    rf"(?P<c>{COLOR_RE})(?:\s+(?:blocks?|cubes?|bricks?|ones?))?\s+(?:(?:is|are|goes|go|sits|sit|should\s+be|must\s+be|comes|stands)\s+)?"
+    rf"(?:(?:stacked|placed|resting|sitting|standing)\s+)?"
     r"(?P<role>" + "|".join(f"(?P<{k}>{r})" for k, r in _CHAIN_ROLES) + r")")
-_CHAIN_SEP_RE = re.compile(r"\s*(?:,\s*(?:and\s+)?(?:then\s+)?|;\s*|\s+and\s+(?:then\s+)?|\s+then\s+|\s+with\s+)")
+_CHAIN_SEP_RE = re.compile(r"\s*(?:,\s*(?:and\s+)?(?:then\s+|with\s+)?|;\s*|\s+and\s+(?:then\s+)?|\s+then\s+|\s+with\s+)")
 _CHAIN_HEAD_RE = re.compile(
     rf"(?:(?:please|now|puzzle\s*:)\s+)*(?:(?:make|build|create|form|construct|stack|assemble|(?:i|we)\s+(?:want|need)"
     rf"|(?:i|we)\s+would\s+like)\s+(?:a|an|1)\s+(?P<noun>{TOWER_NOUNS})"
@@ -2043,7 +2044,7 @@ _CHAIN_HEAD_RE = re.compile(
     # above it, ...", "A tower, blue at the base and ...": a text that is the tower
     rf"|the\s+(?:final\s+|finished\s+|goal\s+|target\s+)?(?:{TOWER_NOUNS})\s+(?:should|must|will|has\s+to|needs\s+to)\s+(?:be|look\s+like)"
     rf"|(?:it|this|the\s+(?:goal|result|final\s+state|end\s+state|target))\s+(?:should\s+be|must\s+be|is)\s+(?:a|an|one)\s+(?:{TOWER_NOUNS}))"
-    r"\s*(?:with|so\s+that|such\s+that|where|:|,|-|(?<=\bbe)(?=\s))\s*")
+    r"\s*(?:with|so\s+that|such\s+that|where|in\s+which|:|,|-|(?<=\bbe)(?=\s))\s*")
 _CHAIN_RELATIVE = {"on": +1, "under": -1, "higher": +1, "lower": -1}
 """A role by a cube named -> the side of it the cube stands (+1 above)."""
 
