@@ -4573,12 +4573,13 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "the gray block at the bottom, and the blue and yellow blocks go above it in either order": the tower's cubes, its named
     # end and the others free (the order had been read as listed, then refused)
     (re.compile(rf"\b(?:the\s+)?(?P<a>{COLOR_RE})(?:\s+(?:block|cube|one))?(?:\s+(?:must|should|has\s+to|needs\s+to|is\s+to)\s+be)?"
-                rf"\s+(?P<r>at\s+the\s+bottom|on\s+top|at\s+the\s+top)\s*,?\s+(?:and\s+)?"
-                rf"(?:the\s+)?(?P<l>(?:{COLOR_RE})(?:\s*,\s*(?:{COLOR_RE}))*,?\s+and\s+(?:{COLOR_RE}))(?:\s+(?:blocks|cubes|ones))?\s+(?:can\s+|may\s+"
+                rf"\s+(?P<r>at\s+the\s+bottom|on\s+top|at\s+the\s+top)\s*[,;]?\s+(?:and\s+)?(?:(?:put|place|stack|set)\s+)?"
+                rf"(?:the\s+)?(?P<l>(?:{COLOR_RE})(?:\s*,\s*(?:the\s+)?(?:{COLOR_RE}))*,?\s+and\s+(?:the\s+)?(?:{COLOR_RE}))(?:\s+(?:blocks|cubes|ones))?\s+(?:can\s+|may\s+"
                 rf"|should\s+)?(?:go\s+|are\s+|stand\s+|sit\s+)?(?:above|on\s+top\s+of|over|on|below|under|beneath|underneath)\s+(?:it|that|them)\s+"
                 rf"in\s+(?:any|either)\s+order\b"),
-     lambda m: f"{m.group('a')}, {m.group('l')}, with the {m.group('a')} block {m.group('r')} and the others in any order"
-     if m.group("a") not in m.group("l") else m.group(0)),
+     lambda m: ("" if re.search(r"\b(?:towers?|stacks?|stacked|stack|columns?)\b", m.string[:m.start()]) else "a tower of ")
+     + f"{m.group('a')}, {re.sub(r'(?<![a-z])the ', '', m.group('l'))}, with the {m.group('a')} block {m.group('r')} and the others in "
+     "any order" if m.group("a") not in m.group("l") else m.group(0)),
     # "Tower of green, white and red, with red on top. The other two can go either way.": the tower's other cubes free
     (re.compile(r"\s*[.;,]\s*(?:and\s+)?the\s+other\s+(?:two|2|ones|cubes|blocks)(?:\s+(?:cubes|blocks|ones))?\s+(?:can\s+(?:go|be|stand|sit)\s+"
                 r"|may\s+(?:go|be|stand|sit)\s+|go\s+|are\s+)?(?:in\s+)?(?:either|any)\s+(?:way|order)(?:\s+(?:round|around))?(?=\s*[.!]?\s*$)"),
