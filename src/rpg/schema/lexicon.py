@@ -2083,7 +2083,7 @@ def _counted_tower_chain(m: re.Match) -> str:
 
 
 START_COUNTED_TOWER_REWRITE: tuple[re.Pattern, object] = (
-    re.compile(rf"(?i)\b(?P<a>an?\s+)?(?P<n>two|three|four|[2-4])[\s-](?:block|cube)\s+(?P<kind>tower|stack)\s*,\s*(?P<chain>(?:{COLOR_RE})"
+    re.compile(rf"(?i)\b(?P<a>an?\s+)?(?P<n>two|three|four|[2-4])[\s-](?:block|cube)\s+(?P<kind>tower|stack)(?:\s*,\s*|\s+of\s+)(?P<chain>(?:{COLOR_RE})"
                rf"(?:\s+(?:on\s+top\s+of|on|under|atop|below|beneath)\s+(?:{COLOR_RE}))+)\b"), _counted_tower_chain)
 """A start tower's chain with its count said first ("There's a two-block tower, orange under cyan."): "a tower of orange
 under cyan" (:data:`START_SAID_REWRITES`; the citations read it so too)."""
@@ -2098,6 +2098,11 @@ START_SAID_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "Starting from a tower with yellow on blue": the tower's chain
     (re.compile(rf"(?i)\b(tower|stack)\s+with\s+(?=(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:on|under|atop|on\s+top\s+of)\s)"), r"\1 of "),
     START_COUNTED_TOWER_REWRITE,
+    # "Starting from a tower of orange under gray, ...": its two cubes bottom first, said as the chain the start reads
+    (re.compile(rf"(?i)^(\s*(?:(?:starting|beginning|start|begin)(?:\s+out)?\s+(?:from|with)|from|given)\s*:?\s+(?:an?|the)\s+(?:tower|stack)\s+of\s+)"
+                rf"(?:the\s+)?(?P<lo>{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:under|below|beneath|underneath)\s+(?:the\s+)?(?P<up>{COLOR_RE})"
+                rf"(?:\s+(?:cube|block))?(?=\s*[,;:])"),
+     lambda m: f"{m.group(1)}{m.group('up')} on {m.group('lo')}"),
 )
 """A start said in words the initial-scene reader reads another way (:func:`rpg.schema.readers.initial.split`)."""
 
