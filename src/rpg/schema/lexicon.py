@@ -2093,6 +2093,10 @@ START_SAID_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"(?i)^\s*(?:the\s+)?(?:starting|start|initial|opening|begin(?:ning)?)\s+(?:scene|state|setup|set-up|configuration|layout"
                 r"|position|arrangement)\s*[:\-\u2014]\s*(?=\S)"),
      "Initially "),
+    # "Scene before: purple on brown. Scene after: ...", "Before state: ...": the start and the goal said as before and after
+    (re.compile(r"(?i)(?:(?<=^)|(?<=[.;!]\s))\s*(?:the\s+)?(?:(?:scene|state|setup|configuration|layout)\s+(?P<a>before|after)"
+                r"|(?P<b>before|after)\s+(?:scene|state|setup|configuration|layout))\s*:"),
+     lambda m: f"{(m.group('a') or m.group('b')).capitalize()}:"),
     # "take off the blue cube and put it on ...": the cube taken off (read as "take the blue cube off")
     (re.compile(rf"(?i)\btake\s+off\s+(the\s+(?:{COLOR_RE}|[A-Z]|\d)\s+(?:cube|block)|the\s+top\s+(?:cube|block))\b"), r"take \1 off"),
     # "Starting from a tower with yellow on blue": the tower's chain
