@@ -1299,7 +1299,7 @@ PLACEMENT_VERBS: dict[str, str] = {
     "position": "place", "drop": "place", "lay": "place", "add": "place", "pack": "place",
     "build": "build", "make": "build", "create": "build", "construct": "build", "assemble": "build",
     "form": "build", "erect": "build", "stack": "stack", "pile": "stack", "pull": "place", "drag": "place",
-    "pop": "place", "plonk": "place", "plop": "place", "stick": "place", "gather": "place",
+    "pop": "place", "plonk": "place", "plop": "place", "stick": "place", "gather": "place", "collect": "place",
     "chuck": "place", "bung": "place", "realise": "build", "realize": "build",
     "hoist": "place", "heave": "place", "ease": "place", "nudge": "place", "scoot": "place", "shove": "place", "haul": "place",
     "carry": "place", "lug": "place", "deposit": "place", "park": "place", "plant": "place", "station": "place",
@@ -2760,9 +2760,15 @@ LABEL_JARGON = frozenset(
     "structures spec config benchmark id no v worksheet objective env environment suite setting demo item nov dec jan feb "
     "mar apr may jun jul aug sep oct lab labs part rule rules criterion criteria acceptance requirement req homework "
     "assignment hw lesson handout seed seeds eval pattern ordered script prompt policy probe ticket teleop rollout scene demo "
-    "day data collection robotics card sheet quiz option version ablation baseline module unit week warm warmup".split())
+    "day data collection robotics card sheet quiz option version ablation baseline module unit week warm warmup instruction "
+    "instructions label labels annotation annotations caption buffer replay video clip recording meeting study user sanity "
+    "check reviewer sweep batch dataset sample entry slide figure poster".split())
 """Words of a task's identifier that say nothing of the task (:data:`ID_LABEL_RE`): "ordered" and
 "pattern" are said by the text after it, which gives the order or the pattern."""
+
+LABEL_FILLER_WORDS = frozenset("for the a an of next this that our my your quick new today's tonight's s".split())
+"""Words that join an identifier's words without saying anything of the task ("Instruction for the next rollout: ...",
+"Quick one for the demo video: ..."): allowed in :data:`ID_WORDS_LABEL_RE`'s label beside an identifier word."""
 
 ID_WORDS_LABEL_RE = re.compile(r"^\s*(?P<label>[A-Za-z][\w'\-]*(?:,?\s+[\w'\-]+){0,5}?)\s*:\s+(?P<body>\S.*)$", re.S)
 """A task's identifier of words alone before a colon ("Tower variant B: ...", "Demo-day row: ...", "Data-collection script,

@@ -319,6 +319,7 @@ def _identifier_label(instruction: str) -> tuple[str, str] | None:
     the task's kind); None otherwise (then the label is read with the rest, and refused if it says
     what the domain cannot: "Time-limited stacking: ...")."""
     m = lexicon.ID_LABEL_RE.match(instruction)
+    fillers = frozenset() if m else lexicon.LABEL_FILLER_WORDS  # "Tower of 3. Base: gray.": a count, no identifier
     if m is None:
         m = lexicon.ID_WORDS_LABEL_RE.match(instruction)  # "Tower variant B: ...", "Demo-day row: ...": words alone
         said = re.findall(r"[A-Za-z]+", m.group("label")) if m else []
@@ -329,7 +330,7 @@ def _identifier_label(instruction: str) -> tuple[str, str] | None:
             return None  # "a: ..." is no letter of a name; "Two-tower variant:", "Baseline, 3 towers:" count (one had been made)
     words = re.findall(r"[a-z]+", re.sub(r"\"[^\"]*\"", " ", m.group("label")).lower())  # a quoted name says nothing
     if not all(w in lexicon.LABEL_JARGON or w in lexicon.LABEL_TASK_KIND_WORDS or w in lexicon.NUMBER_WORDS or len(w) == 1
-               or re.fullmatch(r"v|x|st|nd|rd|th", w)
+               or re.fullmatch(r"v|x|st|nd|rd|th", w) or w in fillers
                for w in words):
         return None
     body = m.group("body")
