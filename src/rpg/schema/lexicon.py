@@ -4601,6 +4601,13 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      lambda m: " and the others in any order" if re.search(r"\b(?:at\s+the\s+bottom|on\s+top|at\s+the\s+top)\b", m.string[:m.start()])
      and (not re.search(r"\b(?:two|2)\b", m.group(0)) or len(set(re.findall(rf"\b(?:{COLOR_RE})\b", m.string[:m.start()]))) == 3)
      else m.group(0)),
+    # "Stack all three of them, black, gray and brown.": the cubes "them" stands for, listed after it (as after a colon)
+    (re.compile(rf"\b((?:all\s+)?(?:(?:\d+|two|three|four|five|six)\s+of\s+)?them)\s*,\s+(?=(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?"
+                rf"(?:\s*,\s*(?:and\s+)?(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?|\s+and\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?)+"
+                r"\s*(?:[.;!]|$))"), r"\1: "),
+    # "The black cube should finish near the back edge": end up there ('finish' had been read as an action)
+    (re.compile(r"\b(should|must|will|has\s+to|needs\s+to|to)\s+finish\s+(?:up\s+)?(?=(?:near|at|in|on|onto|next\s+to|beside|behind|between"
+                r"|to\s+the|left|right|in\s+front)\b)"), r"\1 end up "),
     # "whip up a tower of the pink cube on the yellow cube": build one
     (re.compile(r"\b(?:whip|rustle|knock|cook|throw)\s+(?:up|together)\s+(?=(?:a|an|one|the)\s+(?:tower|stack|row|line|pyramid|wall|circle|grid"
                 r"|pile)\b)"), "build "),
