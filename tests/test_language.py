@@ -7494,7 +7494,6 @@ def test_a_listed_tower_s_ends_said_again_keep_its_cubes(text, expected):
 
 @pytest.mark.parametrize("text", [
     # a hostile helper's attack on this session's readings (each had compiled to another task)
-    "Make a tower: blocks A and B, with A on top.",  # the label cubes' order had been the list's
     "Stack red cubes A and B.",  # a coloured cube had been made up
     "Put blocks 3 and 4 on the red patch.",  # two coloured cubes had been made up for the labels
     "Build a tower of five cubes with red at the bottom, blue above it and then green and yellow and white on top.",
@@ -7510,3 +7509,45 @@ def test_a_listed_tower_s_ends_said_again_keep_its_cubes(text, expected):
 def test_this_session_s_readings_refuse_what_they_cannot_say(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # the thirty-eighth session, from stranger50 (read after its figures) and variants of it
+    ("From the glassblower's chair: cube A at the bottom of a tower, cube M on it, and cube Z on top.", ["stack(A,M,Z)"]),  # (A,Z,M)
+    ("the red cube at the bottom of a tower, the blue cube on it, and the green cube on top.", ["stack(red,blue,green)"]),
+    ("Make a tower: blocks A and B, with A on top.", ["stack(B,A)"]),  # blocks A and B: the letter cubes
+    ("Sanity check task: one tower out of cubes A and B, order free.", ["stack(A,B)"]),
+    ("Make a two-cube tower from the orange and purple cubes; whichever ends up on top is fine.", ["stack(orange,purple)"]),
+    ("Tower of green, white and red, with red on top. The other two can go either way.", ["stack(green,white,red)"]),
+    ("Stack the letter cubes so that Q is on top of P and R is on top of Q.", ["stack(P,Q,R)"]),
+    ("Make a stack in which the white cube is on top, the gray cube is just below it and the black cube is at the base.",
+     ["stack(black,gray,white)"]),
+    ("The cyan cube goes on the bottom, with the two brown cubes stacked above it.", ["stack(cyan,brown,brown)"]),
+    ("The yellow cube must be at the bottom; put the cyan and the pink cubes on it in whatever order.", ["stack(yellow,cyan,pink)"]),
+    ("Given a two-cube tower of orange under gray, add the cyan cube on top.", ["stack(orange,gray,cyan)", "start:stack(orange,gray)"]),
+    ("Scene before: purple cube stacked on the brown cube. Scene after: the purple cube sitting to the right of the brown cube.",
+     ["right_of(purple,brown)", "start:stack(brown,purple)"]),
+    ("Instruction for the next rollout: collect the pink and green cubes into one pile.", ["pile(green,pink)"]),
+    ("Replay buffer label: place cube K on the orange patch.", ["on_patch(K,patch:orange)"]),
+    ("Stack all three of them, black, gray and brown. Any order will do as long as they end up in a single tower.",
+     ["stack(black,gray,brown)"]),
+    ("The black cube should finish near the back edge of the table.", ["in_region(black,back)"]),
+])
+def test_thirty_eighth_session_readings(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    "Tower of green, white, blue and red, with red on top. The other two can go either way.",  # two others of three: not said
+    "Put blocks A and 4 on the red patch.",  # a letter and a digit: which cubes is not said
+])
+def test_thirty_eighth_session_refusals(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))
+
+
+def test_a_count_before_a_heading_is_no_identifier_label():
+    # "Tower of 3." ends like an identifier ("Trial 12.") but counts the tower's cubes (the words joining an identifier's,
+    # "for the next", had let it be dropped: a tower of two)
+    atoms = meaning(check_feasibility(parse("Tower of 3. Base: gray. Top: yellow.")))
+    assert len(atoms) == 1 and atoms[0].startswith("stack(gray,") and atoms[0].endswith(",yellow)") and atoms[0].count(",") == 2

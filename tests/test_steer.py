@@ -722,7 +722,7 @@ def test_edit_instructions_state_exactly_what_was_asked(base, edit, expected):
     ("Put the red block next to the blue block", "put it on the left and on the right", "contradicts"),
     ("Build a tower of 3 red blocks", "make it taller and shorter", "contradicts"),
     # a number no operation uses; a cube in front of "both" (no one relation)
-    ("Stack the yellow block on the green block", "make the tower 3 blocks high using a red block", "'3' has no place"),
+    ("Stack the yellow block on the green block", "make the tower 3 blocks high using a red block", "'3' has no place|'a red block' 1 times"),
     ("Put the blue block next to the red block", "put a cyan cube in front of both", "cannot add"),
     # a vague degree is no count; a stack in any order with its bottom said takes no second end
     ("Build a tower of 3 red blocks", "make it a bit taller", "vague quantity"),
@@ -2320,4 +2320,47 @@ def test_a_row_stacked_in_its_order_from_a_named_end(tmp_path, base, edits, expe
 def test_labels_an_edit_leaves_unread_or_an_order_unsaid_are_refused(tmp_path, base, edit):
     fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     with pytest.raises(SteerError):
+        steer(fam.path, edit)
+
+
+_T3 = "Build a tower of red, blue and green from bottom to top"
+_ROW3 = "a row of red, blue, green from left to right"
+_SWAPPED = "Put the red cube on the blue patch and the blue cube on the red patch"
+
+
+@pytest.mark.parametrize("base,edit,expected", [
+    # the thirty-eighth session's steering attack: each had been silently wrong (the neighbour's colour taken for the cube's,
+    # the patch recoloured for the cube on it, every cube recoloured, the stack dropped or its order lost)
+    (_T3, "the cube under the green one becomes cyan", ("tweak", ["stack(red,cyan,green)"])),
+    (_T3, "Correction: the cube on the blue one is orange", ("tweak", ["stack(red,blue,orange)"])),
+    ("Build a tower of red, blue, green and yellow from bottom to top", "the cube between the blue and the yellow one is now pink",
+     ("tweak", ["stack(red,blue,pink,yellow)"])),
+    (_ROW3, "the cube left of the blue one is now yellow", ("tweak", ["line[left_to_right](yellow,blue,green)"])),
+    (_ROW3, "the cube next to the green one becomes cyan", ("tweak", ["line[left_to_right](red,cyan,green)"])),
+    (_ROW3, "the cube in between is brown", ("tweak", ["line[left_to_right](red,brown,green)"])),
+    (_T3, "it should be yellow, not blue", ("tweak", ["stack(red,yellow,green)"])),
+    (_ROW3, "blue, not green, is on the right", ("tweak", ["line[left_to_right](red,blue,blue)"])),
+    (_SWAPPED, "the cube on the red patch becomes green", ("tweak", ["on_patch(green,patch:red)", "on_patch(red,patch:blue)"])),
+    ("Put the red cube on the red patch", "the cube on the red patch is now blue", ("tweak", ["on_patch(blue,patch:red)"])),
+    (_SWAPPED, "paint the patch under the red cube yellow", ("tweak", ["on_patch(blue,patch:red)", "on_patch(red,patch:yellow)"])),
+    ("Build a tower of red, blue and green from bottom to top on the red patch", "change the red patch to orange",
+     ("tweak", ["on_patch(red,patch:orange)", "stack(red,blue,green)"])),
+    (_ROW3, "stack them in reverse order of the row", ("pivot", ["stack(green,blue,red)"])),
+    (_ROW3, "stack them in the order of the row", ("pivot", ["stack(red,blue,green)"])),
+])
+def test_cubes_picked_by_neighbour_patch_or_correction(tmp_path, base, edit, expected):
+    assert _steered(tmp_path, base, edit)[-1] == expected
+
+
+@pytest.mark.parametrize("base,edit,words", [
+    (_T3, "the top one is green, not red", "the cube picked is green, not red"),  # the negated colour is checked, not dropped
+    (_T3, "make the bottom blue cube pink", "the cube picked is red, not blue"),
+    (_T3, "the cube left of the blue one is now yellow", "no cube of a tower stands left of another"),
+    ("Build a tower of red, blue, green and yellow from bottom to top", "the cube between the red and the yellow one is pink",
+     "2 cubes stand between the two named"),
+    (_ROW3, "the cube next to the blue one becomes cyan", "2 cubes stand beside the one named"),
+])
+def test_cube_picks_that_do_not_hold_are_refused(tmp_path, base, edit, words):
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
+    with pytest.raises(SteerError, match=re.escape(words)):
         steer(fam.path, edit)

@@ -3413,7 +3413,7 @@ is read, or refused, there); dropped."""
 
 EDIT_KIND_LABEL_RE = re.compile(
     r"(?i)^\s*(?:(?:label|annotation|caption|qa|grading|quick|small|one|another|last|final|config|code|review(?:er)?|ta)\s+)?"
-    r"(?:fix|correction|note|nit|update|edit|tweak|request|suggestion|comment|amendment|erratum)\s*:\s+(?=\S)"
+    r"(?:fix|correction|note|nit|update|edit|tweak|request|suggestion|comment|amendment|erratum)(?:\s+#?\d+)?\s*:\s+(?=\S)"
     r"|^\s*re-?(?:annotat|label)\w*\s*:\s+(?=\S)")
 """What an edit calls itself before its change ("Label fix: ...", "Correction: ...", "Nit: ...", "Re-annotating: ..."): the
 kind of message, not of the change (which the words after the colon say, and are read); dropped like
@@ -3434,11 +3434,34 @@ def edit_label_dropped(m: re.Match) -> str:
     return ""
 
 
+_NOT_CUBE = r"(?:\s+(?:one|cube|block))?"
+_EDIT_PLACE = (r"(?:at\s+the\s+(?:bottom|top|base)|on\s+(?:the\s+)?top|in\s+the\s+middle|on\s+the\s+(?:far\s+)?(?:left|right)(?:\s+end)?"
+               r"|at\s+the\s+(?:far\s+)?(?:left|right)(?:\s+end)?)")
+_PLACE_WORDS_RE = re.compile(r"^(?:at|on|in)\s+(?:the\s+)?(?:far\s+)?")
+EDIT_NOT_CORRECTIONS: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
+    # "it should be red, not blue", "yellow, not blue": the blue cube is red (every cube had been made red)
+    (re.compile(rf"(?i)^\s*(?:(?:it|that|this)\s+(?:should\s+be|is|'s|was\s+(?:supposed|meant)\s+to\s+be|should\s+have\s+been)\s+)?"
+                rf"(?:an?\s+|the\s+)?(?P<new>{COLOR_RE}){_NOT_CUBE}\s*,?\s+not\s+(?:an?\s+|the\s+)?(?P<old>{COLOR_RE}){_NOT_CUBE}\s*[.!]?\s*$"),
+     lambda m: f"make the {m.group('old')} cube {m.group('new')}"),
+    # "blue, not green, is on the right", "blue, not red, at the bottom": the cube there, which must be green now, is blue
+    (re.compile(rf"(?i)^\s*(?:the\s+)?(?P<new>{COLOR_RE}){_NOT_CUBE}\s*,\s*not\s+(?:the\s+)?(?P<old>{COLOR_RE}){_NOT_CUBE}\s*,?\s+"
+                rf"(?:(?:is|goes|sits|stands|should\s+be|belongs|comes)\s+)?(?P<where>{_EDIT_PLACE})\s*[.!]?\s*$"),
+     lambda m: f"make the {_PLACE_WORDS_RE.sub('', m.group('where'))} {m.group('old')} cube {m.group('new')}"),
+    # "the top one is green, not red": the same, its place said first
+    (re.compile(rf"(?i)^\s*the\s+(?P<where>top|bottom|middle|left|right|leftmost|rightmost|first|last)(?:\s+(?:one|cube|block))?\s+"
+                rf"(?:is|should\s+be)\s+(?:an?\s+)?(?P<new>{COLOR_RE}){_NOT_CUBE}\s*,?\s+not\s+(?:an?\s+)?(?P<old>{COLOR_RE}){_NOT_CUBE}\s*[.!]?\s*$"),
+     lambda m: f"make the {m.group('where')} {m.group('old')} cube {m.group('new')}"),
+)
+"""A correction said as "X, not Y" ("it should be red, not blue", "blue, not green, is on the right"): the cube that is Y
+now (at the place said) made X (:data:`EDIT_REWRITES`); the negated colour is checked to be the cube's before, never
+dropped."""
+
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
     # "Round 3: ...", "Condition C: ...", "Next round, add ...": the name of the version made
     (EDIT_STEP_NAME_RE, ""),
     # "Label fix: ...", "Correction: ...": what the message is
     (EDIT_KIND_LABEL_RE, ""),
+    *EDIT_NOT_CORRECTIONS,
     # "the homework says both cubes go on the green patch", "my TA says the row has to be in the centre", "the video shows the
     # green cube on top": who asks for the change, or where it was seen, before it (its words had been refused as unknown)
     (re.compile(r"(?i)^\s*(?:(?:and|wait|sorry|also|actually|oh|ok(?:ay)?|so|but|hmm)\s*,?\s+)*(?:the|my|our|your)\s+(?:[a-z\-]+\s+)?"
@@ -3649,7 +3672,7 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"(?i)^\s*(the\s+[a-z0-9 ]+?)\s+(?:is|looks)\s+wrong\s*[,;.:]?\s*(?:it|that\s+one|that)\s+(?:should|must|needs\s+to)\s+be\s+"
                 rf"({COLOR_RE})\s*[.!]?\s*$"), r"make \1 \2"),
     # "the one in the middle", "the cube on top": the cube by its place, as "the middle one" says it
-    (re.compile(r"(?i)\bthe\s+(?:one|cube|block)\s+(?:in\s+the\s+(middle|centre|center)|(?:on|at)\s+(?:the\s+)?(top|bottom))\b"),
+    (re.compile(r"(?i)\bthe\s+(?:one|cube|block)\s+(?:in\s+the\s+(middle|centre|center)|(?:on|at)\s+(?:the\s+)?(top|bottom))\b(?!\s+of\b)"),
      lambda m: f"the {(m.group(1) or m.group(2)).replace('centre', 'middle').replace('center', 'middle')} one"),
     # "n=6 pls", "count = 4": the structure's count
     (re.compile(r"(?i)^\s*(?:n|count|num|size|length|height)\s*=\s*(\d+)\s*(?:please|pls|plz)?\s*[.!]?\s*$"), r"make it \1"),

@@ -331,15 +331,90 @@ def find_reference(t: str) -> RefCue:
     return cue
 
 
+_REL_PICK_RE = re.compile(
+    r"(?:the\s+)?(?:cube|block|one)\s+(?:that\s+is\s+|that's\s+|which\s+is\s+|(?:sitting|standing|resting|lying|placed)\s+)?"
+    r"(?:(?:right|directly|just|immediately)\s+)?(?P<rel>on\s+top\s+of|on|onto|atop|above|over|under|underneath|below|beneath"
+    r"|(?:to\s+the\s+|on\s+the\s+)?left\s+of|(?:to\s+the\s+|on\s+the\s+)?right\s+of|next\s+to|beside|in\s+between|between)"
+    r"(?:\s+(?P<of>.+))?")
+"""A cube picked by where it stands beside another ("the cube under the green one", "the cube left of the blue one", "the
+cube on the red patch", "the cube between the blue and the yellow one"): read by :func:`_selector` (the colour of the
+other cube had been taken for the cube's own: silently wrong)."""
+_REL_PICKED = {"on top of": "above", "on": "above", "onto": "above", "atop": "above", "above": "above", "over": "above",
+               "under": "below", "underneath": "below", "below": "below", "beneath": "below", "next to": "beside",
+               "beside": "beside"}
+
+
+def _relation_pick(text: str) -> dict | None:
+    """:func:`_selector` of a cube picked by its neighbour (:data:`_REL_PICK_RE`): ``{"next": side, "of": selector}`` (side
+    above, below, left, right or beside), ``{"between": [selector, selector]}``, ``{"position": "middle"}`` for "the cube in
+    between" said alone, ``{"on_patch": colour}``; None when the phrase is no such pick.
+
+    Raises:
+        SteerError: the neighbour named is not read."""
+    m = _REL_PICK_RE.fullmatch(text)
+    if m is None:
+        return None
+    rel, of = re.sub(r"^(?:to|on)\s+the\s+", "", m.group("rel")), (m.group("of") or "").strip()
+    if not of:
+        if rel in ("between", "in between"):
+            return {"position": "middle"}
+        return None
+    if rel in ("on", "onto", "atop") and re.match(r"(?:the\s+)?(?:far\s+|very\s+)?(?:left|right|front|back|top|bottom|base|end|table)\b", of):
+        return None  # "the one on the left", "the cube on top": a place, not a neighbour
+    patch = re.fullmatch(rf"(?:the\s+|an?\s+)?({COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patch|pad|mat)", of)
+    if patch and rel in ("on", "onto", "atop", "on top of"):
+        return {"on_patch": canon_color(patch.group(1))}
+    if rel in ("between", "in between"):
+        ends = re.fullmatch(r"(?:the\s+)?(?P<a>.+?)\s+and\s+(?:the\s+)?(?P<b>.+)", of)
+        pair = [_selector(ends.group("a")), _selector(ends.group("b"))] if ends else []
+        if len(pair) != 2 or not all(pair):
+            raise SteerError(f"'{text}' picks a cube between two others the builtin steering does not read; name the two by colour "
+                             "(e.g. \"the cube between the red and the green one\"), or use --model")
+        return {"between": pair}
+    inner = None if re.search(r"\b(?:patch|pad|mat)(?:es|s)?\b", of) else _selector(of)
+    if not inner or "patch" in inner or "on_patch" in inner:
+        raise SteerError(f"'{text}' picks a cube by a neighbour the builtin steering does not read ('{of}'); name the cube by colour "
+                         "or by its place, or use --model")
+    return {"next": _REL_PICKED.get(rel, rel.removesuffix(" of")), "of": inner}
+
+
 def _selector(text: str) -> dict | None:
     """Which cubes a phrase names: a position (of a cube, or of a layer: "the bottom layer"),
     a colour, a label, some of them ("two of them"), that many from an end ("the top 2", "the 2 top
-    ones"), both of two, or all of them.
+    ones"), both of two, all of them, a cube by its neighbour (:func:`_relation_pick`) or a patch
+    ("the red patch": ``{"patch": colour}``).  A colour said with a place ("the bottom red cube")
+    is kept as ``"was"``: the cube there must be that colour (:func:`_indices` checks it).
 
     Raises:
         SteerError: the phrase names cubes by the ones they are not ("all but the ends"), or several
             places at once."""
-    text = text.strip()
+    text = re.sub(r"(?:\s+(?:is|are|was|now|should|must|becomes?|turns?|gets?|goes))+$", "", text.strip())  # "the cube in between is brown"
+    patch = re.fullmatch(rf"(?:the\s+)?({COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patch|pad|mat)", text)
+    if patch:
+        return {"patch": canon_color(patch.group(1))}
+    under = re.fullmatch(rf"(?:the\s+)?(?:goal\s+|target\s+)?(?:patch|pad|mat)\s+(?:that\s+is\s+|that's\s+)?(?:under(?:neath)?|beneath|below|of)\s+"
+                         rf"(?:the\s+)?({COLOR_RE})\s+(?:cube|block|one)", text)
+    if under:  # "the patch under the red cube": the patch the red cube stands on (the cube had been recoloured)
+        return {"patch_of": canon_color(under.group(1))}
+    picked = _relation_pick(text)
+    if picked is not None:
+        return picked
+    said = [canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", text)]
+    placed = said and re.search(r"\b(?:left|right|leftmost|rightmost|top|bottom|base|middle|first|last|lowest|highest|second|third"
+                                r"|\d+(?:st|nd|rd|th))\b", text)
+    # "the right green cube": the cube at that place, which must be green ("green" had picked the cube alone)
+    sel = _selector_of(re.sub(rf"\s*\b(?:{COLOR_RE})\b", "", text).strip() if placed else text)
+    if sel and said and not {"color", "label"} & set(sel):
+        if len(set(said)) > 1:
+            raise SteerError(f"'{text}' names one cube by {len(set(said))} colours; say which cube, by its place or its colour")
+        if sel.get("all") and not {"both", "single", "uniform"} & set(sel):
+            return {"color": said[0]}  # "all the red cubes": every red cube (every cube had been taken)
+        return {**sel, "was": said[0]}
+    return sel
+
+
+def _selector_of(text: str) -> dict | None:
+    """:func:`_selector` of a phrase that is no patch and picks no cube by its neighbour."""
     other = re.search(r"\b(?:all|every\w*|each|them)\b.*?\b(?:but|except|other\s+than|apart\s+from|besides)\b|\ball\s+(?:the\s+)?other\b"
                       r"|\bbetween\s+the\s+ends\b", text)
     if other:  # "all but the ends", "every cube but the bottom one": every cube had been taken
@@ -636,7 +711,7 @@ def read_ops(t: str) -> list[Op]:
         re.search(rf"\b(?:change|turn|make|paint|recolou?r|colou?r)\s+(?:the\s+)?(?P<old>.+?)\s+(?:to|into)\s+(?!(?:an?\s+|one\s+)?(?:[a-z]+\s+)?"
                   rf"{STRUCTURE_RE})(?:an?\s+|be\s+)?(?P<new>.+)", t) or \
         re.search(rf"\b(?:make|paint)\s+(?:the\s+)?(?P<old>(?:(?!\band\s+(?:add|put|place|stack|make)\b|\badd\b|\bput\b|\bwith\b"
-                  rf"|\ban?\s+{STRUCTURE_RE})[^,;.])+?)\s+(?P<new>(?:{COLOR_RE}))\b", t)
+                  rf"|\ban?\s+{STRUCTURE_RE})[^,;.])+?)\s+(?P<new>(?:{COLOR_RE}))\b(?!\s+(?:cubes?|blocks?|ones?)\b)", t)
     # (the cubes made a colour are said within one clause: "make it taller, add a yellow one" recolours nothing)
     repl = repl or re.search(rf"(?P<old>\b(?:the|both|all|each|every|it|they|them|\d+\s+of)\b[a-z0-9' ]*?)\s+(?:to\s+)?{EDIT_SHOULD_BE_RE}"
                              rf"\s+(?:an?\s+)?(?P<new>(?:{COLOR_RE})\b|(?:letter|digit)\s+[a-z0-9]\b)", t) or \
@@ -704,7 +779,8 @@ def read_ops(t: str) -> list[Op]:
     shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out|use|do|spell)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+|one\s+|a\s+single\s+)(?:\d+x\d+(?:x\d+)?\s+|(?:long|tall|single|straight|big)\s+)?"
                       rf"{STRUCTURE_RE}", t)
     stack_all = re.search(r"\b(?:stack|pile)\s+(?:them|all|everything|(?:all\s+)?the\s+(?:blocks|cubes))(?:\s+(?:up|instead|together"
-                          r"|on top of each other|on top of one another))*(?:\W*$|\s*[,;]\s*(?=(?:the\s+)?(?:smallest|largest|biggest|lowest|highest)"
+                          r"|on top of each other|on top of one another|in\s+(?:the\s+)?(?:reverse|reversed|opposite)\s+order"
+                          r"(?:\s+(?:of|to|from)\s+the\s+(?:row|line))?))*(?:\W*$|\s*[,;]\s*(?=(?:the\s+)?(?:smallest|largest|biggest|lowest|highest)"
                           r"(?:\s+(?:one|number|digit|letter))?\s+(?:on\s+top|at\s+the\s+(?:top|bottom)|first|last)\W*$))", t) or (
         SAME_ORDER_RE.search(t) and re.search(r"\b(?:stack|pile)\s+(?:them|all|everything)\b", t))  # "stack them, in the same order"
     end_role = rf"(?:\s*,?\s*(?:with\s+)?(?:the\s+)?(?P<end_c>{COLOR_RE})\s+(?:block\s+|cube\s+|one\s+)?(?:at|on)\s+(?:the\s+)?" \
@@ -749,7 +825,8 @@ def read_ops(t: str) -> list[Op]:
     return ops
 
 
-SAME_ORDER_RE = re.compile(r"\b(?:in\s+the\s+same\s+order|keep(?:ing)?\s+the\s+(?:same\s+)?order|same\s+order)\b")
+SAME_ORDER_RE = re.compile(r"\b(?:in\s+the\s+same\s+order|keep(?:ing)?\s+the\s+(?:same\s+)?order|same\s+order"
+                           r"|in\s+the\s+(?:row|line)'s\s+order|in\s+the\s+order\s+of\s+the\s+(?:row|line))\b")
 """A structure turned into another that keeps its cubes' order ("stack them in the same order")."""
 
 
@@ -765,8 +842,8 @@ def _stated_on(t: str) -> dict:
 def _kept_order(t: str) -> dict:
     """``{"keep_order": True}`` and the end a colour is given ("red at the bottom": ``{"end":
     ("red", "bottom")}``) when a structure edit keeps the cubes' order; else ``{}``."""
-    if not SAME_ORDER_RE.search(t):
-        return {}
+    if not SAME_ORDER_RE.search(t) and not re.search(r"\bin\s+(?:the\s+)?(?:reverse|reversed|opposite)\s+order\b", t):
+        return {}  # ("stack them in reverse order" of a row: its order kept, then reversed; the order had been lost)
     role = re.search(rf"\b({COLOR_RE})\s+(?:block\s+|cube\s+|one\s+)?(?:at|on)\s+(?:the\s+)?(bottom|base|top|left|right)\b", t)
     return {"keep_order": True, **({"end": (canon_color(role.group(1)), role.group(2))} if role else {})}
 
@@ -1176,6 +1253,59 @@ def _inserted_between(spec: TaskSpec, p: dict, anchors: frozenset[str]) -> TaskS
 
 
 def _indices(spec: TaskSpec, sel: dict, anchors: frozenset[str] = frozenset()) -> list[int]:
+    """The indices of ``spec``'s items a selector (:func:`_selector`) picks: with ``"was"``, each must be of that colour.
+
+    Raises:
+        SteerError: the selector picks no cube of the structure, or a cube not of the colour said with it."""
+    if "was" in sel:
+        idx = _indices(spec, {k: v for k, v in sel.items() if k != "was"}, anchors)
+        wrong = sorted({spec.items[i].color or spec.items[i].label or "?" for i in idx} - {sel["was"]})
+        if wrong:
+            raise SteerError(f"the cube picked is {', '.join(wrong)}, not {sel['was']}; name the cube as the task has it (by its place "
+                             "or its colour), or state the whole new task")
+        return idx
+    if "next" in sel or "between" in sel:
+        return _neighbour_indices(spec, sel, anchors)
+    if "patch" in sel or "on_patch" in sel or "patch_of" in sel:
+        raise SteerError(f"the {spec.structure}'s cubes are not picked by a patch; name the cube by its colour or its place")
+    return _indices_of(spec, sel, anchors)
+
+
+def _neighbour_indices(spec: TaskSpec, sel: dict, anchors: frozenset[str]) -> list[int]:
+    """The one cube a neighbour pick names (:func:`_relation_pick`): in a tower, the cube directly above or below the one
+    named; in a row with a left-to-right order, the one directly left or right of it; the one beside it where only one is;
+    the one cube between two named.
+
+    Raises:
+        SteerError: the structure gives its cubes no such order, the cube named is not one cube, or no one cube stands there."""
+    n = len(spec.items)
+    tower = spec.structure in ANCHORED_KINDS
+    if spec.kind.layered or not _orders_cubes(spec) or (not tower and spec.direction not in ("left_to_right", "right_to_left")):
+        raise SteerError(f"a {spec.structure} whose goal gives no cube its place beside another picks no cube by its neighbour; "
+                         "name the cube by colour")
+    def one(s: dict) -> int:
+        idx = _indices(spec, s, anchors)
+        if len(idx) != 1:
+            raise SteerError(f"the cube a pick stands by must be one cube, and the {spec.structure} has {len(idx)} such; name the "
+                             "cube by its place")
+        return idx[0]
+    if "between" in sel:
+        lo, hi = sorted(one(s) for s in sel["between"])
+        if hi - lo != 2:
+            raise SteerError(f"{max(hi - lo - 1, 0)} cubes stand between the two named; name the cube by colour or place")
+        return [lo + 1]
+    k, side = one(sel["of"]), sel["next"]
+    if side in ("above", "below") and not tower or side in ("left", "right") and tower:
+        raise SteerError(f"no cube of a {spec.structure} stands {side if side in ('above', 'below') else side + ' of'} another; name "
+                         "the cube by colour or place")
+    step = {"above": [1], "below": [-1], "beside": [-1, 1]}.get(side) or [1 if (side == "right") == (spec.direction == "left_to_right") else -1]
+    picked = [k + d for d in step if 0 <= k + d < n]
+    if len(picked) != 1:
+        raise SteerError(f"{'no' if not picked else len(picked)} cubes stand {side} the one named; name the cube by colour or place")
+    return picked
+
+
+def _indices_of(spec: TaskSpec, sel: dict, anchors: frozenset[str] = frozenset()) -> list[int]:
     n = len(spec.items)
     if sel.get("position") in anchors and sel["position"] in ("bottom", "top"):
         return [0 if sel["position"] == "bottom" else n - 1]  # the end a stack in any order has its cube at
@@ -1270,7 +1400,7 @@ def _indices(spec: TaskSpec, sel: dict, anchors: frozenset[str] = frozenset()) -
 
 def _colors_of(value) -> set[str]:
     if isinstance(value, dict):
-        return {v for k, v in value.items() if k == "color" and v} | {c for v in value.values() for c in _colors_of(v)}
+        return {v for k, v in value.items() if k in ("color", "was", "patch", "on_patch", "patch_of") and v} | {c for v in value.values() for c in _colors_of(v)}
     if isinstance(value, (list, tuple)):
         return {c for v in value for c in _colors_of(v)} | {v for v in value if isinstance(v, str) and v in _PALETTE_NAMES}
     return set()

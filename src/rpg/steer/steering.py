@@ -338,6 +338,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     recoloured = _patch_recoloured(plan.text, ref_schema, patches) if len(patches) == 1 else None
     if recoloured is not None:  # "patch should be cyan" of a tower on a patch: the one patch in that colour, the rest kept
         return recoloured
+    recoloured = _patches_recoloured(plan, ref_schema) if ref_schema is not None else None
+    if recoloured is not None:  # "change the red patch to orange", "paint the patch under the red cube yellow"
+        return recoloured
     if ref_schema is not None and (roles := between_roles(plan.text, ref_schema)) != plan.text:  # "the middle one"
         plan = replace(interpret(roles), cue=plan.cue)
     if ref_schema is not None:
@@ -911,6 +914,9 @@ def _relation_role(sel: dict, ref: TaskSchema) -> set[str] | None:
     if set(sel) == {"color"}:  # "make the red cube green": every cube of that colour (not a patch of it)
         return {a.name for a in ref.assets if a.kind == "colored_cube" and a.color == sel["color"]} or None
     leaves = [p for p in ref.goal_predicate().walk() if not p.children()]
+    if set(sel) == {"on_patch"}:  # "the cube on the red patch": the cubes the goal puts on that colour's patch
+        patches = {a.name for a in ref.assets if a.kind == "goal_patch" and (a.color or "gray") == sel["on_patch"]}
+        return {p.a for p in leaves if p.name == "on_patch" and p.patch in patches} or None
     if set(sel) == {"end", "n"} and sel["n"] == 1 and sel["end"] in _SIDE_ORDER:
         own, mirror = _SIDE_ORDER[sel["end"]]
         picked = {p.a for p in leaves if p.name == own} | {p.b for p in leaves if p.name == mirror}
@@ -988,6 +994,40 @@ def _recoloured_by_words(ref: TaskSchema, change: dict[str, str], patches: bool)
     return (schema, instruction, "tweak") if sorted(meaning(schema)) == want else None
 
 
+def _patch_colour(sel: dict, ref: TaskSchema) -> str | None:
+    """The colour of the patch a selector names: said ("the red patch"), or the one patch the goal puts a cube of a colour on
+    ("the patch under the red cube"); None where no one patch is named so."""
+    if "patch_of" not in sel:
+        return sel.get("patch") or sel.get("color")
+    colour = {a.name: a.color for a in ref.assets}
+    under = {colour[p.patch] or "gray" for p in ref.goal_predicate().walk() if p.name == "on_patch" and colour.get(p.a) == sel["patch_of"]}
+    return under.pop() if len(under) == 1 else None
+
+
+def _patches_recoloured(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str, str] | None:
+    """Patches recoloured, named by colour ("make the red patch purple", "instead of the green patch use the blue one") or
+    by the cube on them ("paint the patch under the red cube yellow"), in any task: the instruction with each patch's colour
+    word changed, read back and kept only where it means the task with those patches' colours changed
+    (:func:`_recoloured_by_words`); None where the edit recolours no patch.
+
+    Raises:
+        SteerError: a patch recoloured beside other changes, or not read back so."""
+    if not plan.ops or any(o.op != "recolor" or "color" not in o.params["to"] for o in plan.ops):
+        return None
+    said = [o for o in plan.ops if {"patch", "patch_of"} & set(o.params["select"]) or set(o.params["select"]) == {"color"} and re.search(
+        rf"(?i)\b{re.escape(o.params['select']['color'])}\s+{_PATCH_NOUN}", plan.text)]
+    if not said:
+        return None
+    olds = [_patch_colour(o.params["select"], ref) for o in plan.ops] if len(said) == len(plan.ops) else [None]
+    done = None if None in olds else _recoloured_by_words(
+        ref, {old: o.params["to"]["color"] for old, o in zip(olds, plan.ops, strict=True)}, patches=True)
+    if done is None:
+        raise SteerError(f"the edit \"{plan.text.strip()[:80]}\" recolours a patch, and the task's instruction does not read back with "
+                         "only that patch's colour changed; change one patch per edit (named by its colour), state the whole new "
+                         "task, or use --model")
+    return done
+
+
 def _cubes_recoloured(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str, str] | None:
     """Cubes of a relational task recoloured, picked by their relations ("make the one on the left yellow", "the cube in the
     middle should be white", "make them both green", "make the ends gray") or by colour, or a patch named by its colour
@@ -997,12 +1037,6 @@ def _cubes_recoloured(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str,
     words would name both)."""
     if not plan.ops or any(o.op != "recolor" or "color" not in o.params["to"] for o in plan.ops):
         return None
-    said_patch = [o for o in plan.ops if set(o.params["select"]) == {"color"} and re.search(
-        rf"(?i)\b{re.escape(o.params['select']['color'])}\s+{_PATCH_NOUN}", plan.text)]
-    if said_patch:  # "make the red patch purple", "instead of the green patch use the blue one": the patch, not a cube
-        if len(said_patch) != len(plan.ops):
-            return None
-        return _recoloured_by_words(ref, {o.params["select"]["color"]: o.params["to"]["color"] for o in plan.ops}, patches=True)
     names = {a.name: a.color for a in ref.assets if a.kind == "colored_cube"}
     change: dict[str, str] = {}
     picked_all: set[str] = set()
