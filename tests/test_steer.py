@@ -975,7 +975,7 @@ def test_a_patch_recoloured_with_another_colour_said_is_not_read_as_the_patch_al
 
 @pytest.mark.parametrize("base,edit,match", [
     # steer_stranger4 (eighth session): each compiled silently wrong before
-    ("Place a red cube in the left half of the table", "and a blue one on the right", "adds none"),  # red moved
+    ("Place a red cube in the left half of the table", "and a blue one on the right", "adds none|have no place"),  # red moved
     ("Make a line of three purple cubes", "add two yellow ones at each end", "two places"),  # one end dropped
     # (one cube at each end is read since the sixteenth session: test_edits_said_in_other_words_read_as_their_operation)
     ("Stack blue on red", "swap the red for the yellow one we used before", "earlier turn"),  # no such cube
@@ -2361,6 +2361,31 @@ def test_cubes_picked_by_neighbour_patch_or_correction(tmp_path, base, edit, exp
     (_ROW3, "the cube next to the blue one becomes cyan", "2 cubes stand beside the one named"),
 ])
 def test_cube_picks_that_do_not_hold_are_refused(tmp_path, base, edit, words):
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
+    with pytest.raises(SteerError, match=re.escape(words)):
+        steer(fam.path, edit)
+
+
+@pytest.mark.parametrize("base,edit,expected", [
+    # steer_stranger21's silent errors (development material from the thirty-eighth session)
+    ("Make a pile of two green cubes and two purple cubes.", "The collection should be sorted: one pile for each colour.",
+     ("modify", ["piles(green,green,purple,purple;by=color)"])),  # (three red cubes had been made up)
+])
+def test_a_sort_of_the_task_s_cubes_keeps_them(tmp_path, base, edit, expected):
+    assert _steered(tmp_path, base, edit)[-1] == expected
+
+
+@pytest.mark.parametrize("base,edit,words", [
+    # each had been read by one relation word or added on top (silently wrong)
+    ("Put the M cube and the O cube next to each other.",
+     "She wants it to spell MOP, so line up the M, the O and the P from left to right.", "not a structure"),  # (M right of O)
+    ("Put the pink cube to the left of the purple cube.", "Line them up with a gray cube: pink, purple, then gray, from left to right.",
+     "not a structure"),  # (gray left of pink)
+    ("Stack a blue cube on an orange cube in the front right corner.",
+     "Add a second piece alongside it: a green cube on a pink cube, in the front left corner.", "adds a second structure"),
+    ("Stack a blue cube on an orange cube", "add a green cube on a pink cube", "adds a second structure (a stack)"),
+])
+def test_edits_that_say_more_than_one_relation_or_cube_are_refused(tmp_path, base, edit, words):
     fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     with pytest.raises(SteerError, match=re.escape(words)):
         steer(fam.path, edit)

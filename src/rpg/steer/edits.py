@@ -646,8 +646,12 @@ def read_ops(t: str) -> list[Op]:
                              "an end; say the whole new order (e.g. \"make it spell GOOD\"), or use --model")
         beside = EDIT_BESIDE_RE.search(what)
         second = re.search(r"\b(?:an?|another|one|\d+|new|second|other)\s+(?:[a-z]+\s+){0,2}?" + STRUCTURE_RE, what)
-        if second:  # "add a pyramid of 3 yellow blocks": a second structure, not cubes of this one
-            raise SteerError(f"'{add.group(0).strip()}' adds a second structure (a {second.group(1)}), which the builtin "
+        piece = re.search(r"\b(?:second|another|separate|new|other)\s+(piece|group|set|pair|unit|station|arrangement)\b", t)
+        # "add a green cube on a pink cube": two new cubes stacked on each other, a stack of their own (both had gone on top)
+        own = re.search(rf"\ban?\s+(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:on|onto|on\s+top\s+of|atop)\s+an?\s+(?:{COLOR_RE})\b", what)
+        kind = second.group(1) if second else piece.group(1) if piece else "stack" if own else None
+        if kind:  # "add a pyramid of 3 yellow blocks": a second structure, not cubes of this one
+            raise SteerError(f"'{add.group(0).strip()}' adds a second structure (a {kind}), which the builtin "
                              "steering cannot compose with the first; state the whole new task in the edit, or use --model")
         m = re.search(r"\b(\d+)\b", re.sub(LABELLED_RE, " ", what))
         n = int(m.group(1)) if m else 1

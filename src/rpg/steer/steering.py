@@ -346,6 +346,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     if ref_schema is not None:
         relational = (rewrite_relation(plan.text, ref_schema) or rewrite_patch(plan.text, ref_schema)
                       or rewrite_region(plan.text, ref_schema) or rewrite_moved(plan.text, ref_schema))
+        if relational is not None and not _relation_rewrite_says_all(plan.text, relational[0], ref_schema,
+                                                                     any(o.op == "structure" for o in plan.ops)):
+            relational = None  # "line up the M, the O and the P from left to right": a row of three, not M right of O
         if relational is not None:  # "put it in front instead", "swap them": the reference's relation, changed
             instruction, intent = relational
             if any(o.op == "structure" for o in plan.ops):  # "make it a row, green on the left": another structure
@@ -362,6 +365,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     ref_spec, carried = split(ref_schema)
     if plan.standalone:
         _refuse_invented_patch(plan.text, ref_schema, schema)
+        sorted_piles = _task_cubes_sorted(plan.text, ref_schema, schema)
+        if sorted_piles is not None:  # "The collection should be sorted: one pile for each colour.": the task's cubes
+            return sorted_piles
         schema = _same_cubes(plan.text, ref_schema, schema)
         _refuse_same_cubes_lost(plan.text, ref_schema, schema)
         if relation_of(schema) and relation_of(ref_schema) and same_assets(schema, ref_schema):
@@ -733,6 +739,51 @@ def _refuse_made_up_cubes(edit: str, ref: TaskSchema, schema: TaskSchema, refere
         raise SteerError(f"the edit reads as a new task ({schema.goal_summary}) with cubes of colours v{reference} does not "
                          f"have ({', '.join(new)}) and the edit names none; say what changes in "
                          f"v{reference} (e.g. \"move the tower to the back\"), or state the whole new task with its cubes")
+
+
+_NOT_A_RELATION_RE = re.compile(r"(?i)\b(?:line\s+(?:them\s+|it\s+|\w+\s+)?up|spell\w*|reads?|words?|pyramids?|walls?|circles?|rings?"
+                                r"|piles?|grids?)\b")
+"""Words of a structure that no relation between two cubes is ("line them up", "spell MOP"): an edit that says one, and no
+structure the steering reads, is not read as a relation of the task's cubes changed."""
+
+
+def _relation_rewrite_says_all(edit: str, instruction: str, ref: TaskSchema, structure: bool = False) -> bool:
+    """Whether the relation task an edit was rewritten to (:func:`rpg.steer.relations.rewrite` and its kin) keeps every
+    colour and label the edit names that the reference lacks ("instead of the blue patch" names one it had), and the edit
+    names no structure beyond a relation (:data:`_NOT_A_RELATION_RE`) unless it names one the steering reads: a
+    long edit had been read by its one relation word ("She wants it to spell MOP, so line up the M, the O and the P from
+    left to right" as M right of O; "Line them up with a gray cube: pink, purple, then gray" with gray on the wrong side)."""
+    if _NOT_A_RELATION_RE.search(edit) and not structure:
+        return False
+    said = {canon_color(c) for c in re.findall(rf"(?i)\b(?:{COLOR_RE})\b", edit)}
+    kept = {canon_color(c) for c in re.findall(rf"(?i)\b(?:{COLOR_RE})\b", instruction)} | {a.color for a in ref.assets if a.color}
+    labels = set(re.findall(r"\b([A-Z])\b(?!')", edit)) - {"I", "A"} - {a.label for a in ref.assets if a.label}
+    return said <= kept and all(re.search(rf"\b(?:letter\s+)?{lab}\b", instruction) for lab in labels)
+
+
+def _task_cubes_sorted(edit: str, ref: TaskSchema, schema: TaskSchema) -> tuple[TaskSchema, str, str] | None:
+    """A sort into piles by colour said of the task's cubes, naming none ("The collection should be sorted: one pile for
+    each colour."): the reference's coloured cubes, each colour's own pile (the whole-task reading's cubes, the default
+    colours, had been made up); None for any other edit or task."""
+    from rpg.schema.meaning import meaning
+
+    atoms = meaning(schema)
+    if len(atoms) != 1 or not re.fullmatch(r"piles\([^()]*;by=color\)", atoms[0]) \
+            or re.search(rf"(?i)\b(?:{COLOR_RE})\b|\b\d+\b|\b(?:letters?|digits?|numbers?)\b", edit):
+        return None
+    cubes = [a for a in ref.assets if a.kind != "goal_patch"]
+    counts = Counter(a.color for a in cubes)
+    if any(a.kind != "colored_cube" for a in cubes) or len(counts) < 2:
+        return None
+    listed = [f"{n} {c}" for c, n in sorted(counts.items())]
+    instruction = f"Sort {', '.join(listed[:-1])} and {listed[-1]} cubes into piles by colour"
+    try:
+        new = parse(instruction)
+    except BadInput:
+        return None
+    if sorted(a.color for a in new.assets if a.kind != "goal_patch") != sorted(a.color for a in cubes):
+        return None
+    return new, instruction, "modify"
 
 
 def _same_cubes(edit: str, ref: TaskSchema, schema: TaskSchema) -> TaskSchema:

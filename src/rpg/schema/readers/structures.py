@@ -698,7 +698,8 @@ def recognize_piles(f: Features, b: Builder) -> bool:
             b.primitives += ["arrange"]
             b.min_separation = 0.06
             return True
-        colors = list(dict.fromkeys(f.color_list())) or colors_for(k or 3, f, prefer=[])
+        # ("1 pile for each colour": the count is per colour, not the piles' number; one red pile had been made)
+        colors = list(dict.fromkeys(f.color_list())) or colors_for((None if per_color else k) or 3, f, prefer=[])
         if k is not None and not per_color and f.color_list() and k != len(colors):
             # "put red, blue, green, yellow into two piles": which cubes go together is not said (it had made a pile of
             # three cubes for each colour: twelve cubes, four piles)
