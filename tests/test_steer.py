@@ -2389,3 +2389,19 @@ def test_edits_that_say_more_than_one_relation_or_cube_are_refused(tmp_path, bas
     fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     with pytest.raises(SteerError, match=re.escape(words)):
         steer(fam.path, edit)
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # a change reported as someone's want or words (its words had been refused as unknown, or the want read as an action)
+    ("Build a tower with a yellow cube on the bottom, then a red one, then a blue one",
+     ["Maya says it needs a purple one on the very top too.", "Now she wants the red one taken out, but everything else can stay."],
+     ("tweak", ["stack(yellow,blue,purple)"])),
+    ("Arrange a red, an orange and a yellow cube in a row from left to right.", ["He'd like a green cube added at the right end."],
+     ("extend", ["line[left_to_right](red,orange,yellow,green)"])),
+    ("Put the yellow cube between the red patch and the blue patch.",
+     ["The curator asks for the yellow cube to be replaced with a cyan one."], ("tweak", ["between(cyan;patch:blue,patch:red)"])),
+    ("Build a tower of red, blue and green from bottom to top", ["the homework says it should be yellow, not blue"],
+     ("tweak", ["stack(red,yellow,green)"])),
+])
+def test_a_change_reported_as_someone_s_want(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected

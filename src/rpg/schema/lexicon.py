@@ -3437,6 +3437,15 @@ def edit_label_dropped(m: re.Match) -> str:
 _NOT_CUBE = r"(?:\s+(?:one|cube|block))?"
 _EDIT_PLACE = (r"(?:at\s+the\s+(?:bottom|top|base)|on\s+(?:the\s+)?top|in\s+the\s+middle|on\s+the\s+(?:far\s+)?(?:left|right)(?:\s+end)?"
                r"|at\s+the\s+(?:far\s+)?(?:left|right)(?:\s+end)?)")
+_ASKER = (r"(?-i:[A-Z][a-z]+)(?<!The)(?<!This)(?<!That)(?<!Then)(?<!Now)(?<!Make)(?<!Put)|(?i:he|she|they|we)"
+          r"|(?i:the|my|our|your)\s+(?i:curator|bride|groom|client|customer|boss|kid|son|daughter|child|coach|judge|judges|panel|team"
+          r"|manager|supervisor|director|owner|lead|artist|mum|mom|dad|grandma|grandpa|wife|husband|partner|friend|neighbour|neighbor)")
+"""Who asks for a steering edit, said before it ("Maya says ...", "He'd like ...", "The curator asks for ...")."""
+_IMPERATIVE_OF = {"replaced": "replace", "moved": "move", "swapped": "swap", "removed": "remove", "painted": "paint",
+                  "recoloured": "recolour", "recolored": "recolor", "put": "put", "placed": "place", "stacked": "stack",
+                  "taken out": "remove", "taken off": "remove", "taken away": "remove"}
+"""A past participle of a reported want ("the yellow cube to be replaced") -> the imperative of the edit it asks for."""
+
 _PLACE_WORDS_RE = re.compile(r"^(?:at|on|in)\s+(?:the\s+)?(?:far\s+)?")
 EDIT_NOT_CORRECTIONS: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
     # "it should be red, not blue", "yellow, not blue": the blue cube is red (every cube had been made red)
@@ -3461,13 +3470,31 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (EDIT_STEP_NAME_RE, ""),
     # "Label fix: ...", "Correction: ...": what the message is
     (EDIT_KIND_LABEL_RE, ""),
-    *EDIT_NOT_CORRECTIONS,
     # "the homework says both cubes go on the green patch", "my TA says the row has to be in the centre", "the video shows the
     # green cube on top": who asks for the change, or where it was seen, before it (its words had been refused as unknown)
     (re.compile(r"(?i)^\s*(?:(?:and|wait|sorry|also|actually|oh|ok(?:ay)?|so|but|hmm)\s*,?\s+)*(?:the|my|our|your)\s+(?:[a-z\-]+\s+)?"
                 r"(?:homework|assignment|exercise|worksheet|(?:lab\s+|task\s+|answer\s+)?sheet|handout|ta|teacher|professor|instructor|tutor"
                 r"|reviewer|video|clip|footage|recording|demo|(?:example\s+|model\s+)?solution|spec|brief|rubric|answer\s+key|textbook|book)"
                 r"\s+(?:(?:actually|clearly|really|now)\s+)?(?:says|said|shows|showed)\s+(?:that\s+)?(?=\S)"), ""),
+    # "Maya says it needs a purple one on top too", "The curator says ...": who asks for the change, a person named or said
+    (re.compile(rf"^\s*(?:(?i:now|and|so|ok|okay|then|also|actually|oh|but)\s*,?\s+)*(?:{_ASKER})\s+(?:(?:actually|really|now|also)\s+)?(?:says|said|thinks|insists|reckons|decided|decides)\s+(?:that\s+)?"
+                r"(?=\S)"), ""),
+    # "He'd like a green cube added at the right end", "The bride wants a white cube put on top": that cube added there
+    (re.compile(rf"^\s*(?:(?i:now|and|so|ok|okay|then|also|actually|oh|but)\s*,?\s+)*(?:{_ASKER})(?:'d\s+like|\s+(?:wants|would\s+like|asks\s+for|asked\s+for))\s+(?P<what>(?:an?|one\s+more|another)\s+[^,.;:!?]+?)\s+"
+                r"(?:added|put|placed|set)\s+(?P<where>(?:at|on|onto|to|in|next\s+to|beside|behind|between|under|below|above)\b[^.;!?]*)[.!]?\s*$"),
+     r"add \g<what> \g<where>"),
+    # "The curator asks for the yellow cube to be replaced with a cyan one", "She wants the red cube moved to the back"
+    (re.compile(rf"^\s*(?:(?i:now|and|so|ok|okay|then|also|actually|oh|but)\s*,?\s+)*(?:{_ASKER})(?:'d\s+like|\s+(?:wants|would\s+like|asks\s+for|asked\s+for|needs))\s+(?P<what>the\s+[^,.;:!?]+?)\s+(?:to\s+be\s+)?"
+                r"(?P<verb>replaced|moved|swapped|removed|painted|recolou?red|put|placed|stacked|taken\s+(?:out|off|away))\b\s*(?P<rest>[^.;!?]*)[.!]?\s*$"),
+     lambda m: f"{_IMPERATIVE_OF[' '.join(m.group('verb').split())]} {m.group('what')} {m.group('rest')}".strip()),
+    # "it needs a purple one on the very top too": that cube added there
+    (re.compile(r"(?i)^\s*(?:it|this|that|the\s+(?:tower|stack|row|line|pile))\s+(?:still\s+)?needs\s+(?P<what>(?:an?|one\s+more|another)\s+[^,.;:!?]+?)\s+"
+                r"(?P<where>(?:on|at|to|in|next\s+to|beside|under|below)\b[^.;!?]*?)(?:\s*,?\s+(?:too|as\s+well))?\s*[.!]?\s*$"),
+     r"add \g<what> \g<where>"),
+    # "The bride wants the yellow and white cubes to trade places": those two swapped
+    (re.compile(rf"^\s*(?:(?i:now|and|so|ok|okay|then|also|actually|oh|but)\s*,?\s+)*(?:{_ASKER})(?:'d\s+like|\s+(?:wants|would\s+like|asks\s+for|asked\s+for))\s+(?P<what>the\s+[^,.;:!?]+?)\s+to\s+"
+                r"(?:trade|swap|switch|exchange)\s+(?:places|spots|positions)\s*[.!]?\s*$"), r"swap \g<what>"),
+    *EDIT_NOT_CORRECTIONS,
     # "Simplify it for the worksheet: make both rows green": a label saying why, before the change
     (EDIT_LABEL_RE, edit_label_dropped),
     # "He has trouble telling red from green, so make the green cube yellow instead": the reason said before the change
