@@ -7532,6 +7532,11 @@ def test_this_session_s_readings_refuse_what_they_cannot_say(text):
     ("Stack all three of them, black, gray and brown. Any order will do as long as they end up in a single tower.",
      ["stack(black,gray,brown)"]),
     ("The black cube should finish near the back edge of the table.", ["in_region(black,back)"]),
+    ("Lay out the orange, white and pink cubes side by side, orange on the left end and pink on the right end.",
+     ["line[left_to_right](orange,white,pink)"]),
+    ("Episode succeeds when the black cube is touching the white cube, side by side.", ["next_to(black,white)"]),
+    ("Starting from a stack of blue, yellow, pink (bottom to top), unstack everything onto the table.",
+     ["on_table(blue)", "on_table(pink)", "on_table(yellow)", "start:stack(blue,yellow,pink)"]),
 ])
 def test_thirty_eighth_session_readings(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)

@@ -2102,6 +2102,12 @@ START_SAID_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "Starting from a tower with yellow on blue": the tower's chain
     (re.compile(rf"(?i)\b(tower|stack)\s+with\s+(?=(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:on|under|atop|on\s+top\s+of)\s)"), r"\1 of "),
     START_COUNTED_TOWER_REWRITE,
+    # "Starting from a stack of blue, yellow, pink (bottom to top), unstack everything onto the table": each of its cubes on
+    # the table ('everything' had been refused unread)
+    (re.compile(r"(?i)\b(?:unstack|dismantle|take\s+apart|disassemble)\s+(?:everything|it\s+all|all\s+of\s+it|it|them|the\s+(?:whole\s+)?(?:tower|stack))"
+                r"(?:\s+completely)?\s*,?\s+(?:onto|on|to)\s+the\s+table\b"),
+     lambda m: "put every cube on the table" if re.search(r"(?i)\b(?:starting|start|begin(?:ning)?|initially|given|from)\b", m.string[:m.start()])
+     else m.group(0)),
     # "Starting from a tower of orange under gray, ...": its two cubes bottom first, said as the chain the start reads
     (re.compile(rf"(?i)^(\s*(?:(?:starting|beginning|start|begin)(?:\s+out)?\s+(?:from|with)|from|given)\s*:?\s+(?:an?|the)\s+(?:tower|stack)\s+of\s+)"
                 rf"(?:the\s+)?(?P<lo>{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:under|below|beneath|underneath)\s+(?:the\s+)?(?P<up>{COLOR_RE})"
@@ -4658,6 +4664,12 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "The black cube should finish near the back edge": end up there ('finish' had been read as an action)
     (re.compile(r"\b(should|must|will|has\s+to|needs\s+to|to)\s+finish\s+(?:up\s+)?(?=(?:near|at|in|on|onto|next\s+to|beside|behind|between"
                 r"|to\s+the|left|right|in\s+front)\b)"), r"\1 end up "),
+    # "Lay out the orange, white and pink cubes side by side, orange on the left end and pink on the right end": a row, its
+    # ends said ('next to each other' of three had been refused: which in the middle?)
+    (re.compile(rf"\bside\s+by\s+side\b(?=\s*,\s*(?:with\s+)?(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:on|at)\s+the\s+(?:far\s+)?"
+                r"(?:left|right)(?:\s+end)?\b)"), "in a row"),
+    # "the black cube is touching the white cube, side by side": next to it, said twice
+    (re.compile(rf"\b((?:touching|next\s+to|beside|against)\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?)\s*,?\s*side\s+by\s+side\b"), r"\1"),
     # "whip up a tower of the pink cube on the yellow cube": build one
     (re.compile(r"\b(?:whip|rustle|knock|cook|throw)\s+(?:up|together)\s+(?=(?:a|an|one|the)\s+(?:tower|stack|row|line|pyramid|wall|circle|grid"
                 r"|pile)\b)"), "build "),
