@@ -7537,6 +7537,9 @@ def test_this_session_s_readings_refuse_what_they_cannot_say(text):
     ("Episode succeeds when the black cube is touching the white cube, side by side.", ["next_to(black,white)"]),
     ("Starting from a stack of blue, yellow, pink (bottom to top), unstack everything onto the table.",
      ["on_table(blue)", "on_table(pink)", "on_table(yellow)", "start:stack(blue,yellow,pink)"]),
+    ("Build two towers, one in the front right corner with cyan on top of brown, and one in the back left corner with gray on "
+     "top of red.", ["stack(brown,cyan)@front_right", "stack(red,gray)@back_left"]),
+    ("The red cube should end up diagonally behind the yellow cube, off to its right.", ["behind(red,yellow)", "right_of(red,yellow)"]),
 ])
 def test_thirty_eighth_session_readings(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
@@ -7545,6 +7548,7 @@ def test_thirty_eighth_session_readings(text, expected):
 @pytest.mark.parametrize("text", [
     "Tower of green, white, blue and red, with red on top. The other two can go either way.",  # two others of three: not said
     "Put blocks A and 4 on the red patch.",  # a letter and a digit: which cubes is not said
+    "Put the red cube diagonally behind the blue cube.",  # on which side: not said
 ])
 def test_thirty_eighth_session_refusals(text):
     with pytest.raises(BadInput):

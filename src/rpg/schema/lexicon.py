@@ -2405,6 +2405,17 @@ cube"): written as the two relations, which hold together as a diagonal pair (:c
 stays refused (above, or behind?); "diagonally" alone ("diagonally behind the red cube": on which side?) too."""
 
 
+DIAGONAL_SIDE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "diagonally behind the yellow cube, off to its right": behind it and to its right
+    (re.compile(r"(?i)\bdiagonally\s+(?=(?:behind|in\s+front\s+of)\s+(?:the\s+)?[a-z]+(?:\s+(?:cube|block|one))?\s*,?\s+(?:and\s+)?(?:off\s+)?"
+                r"to\s+(?:its|the)\s+(?:left|right)\b)"), ""),
+    (re.compile(r"(?i)(\b(?:behind|in\s+front\s+of)\s+(?:the\s+)?[a-z]+(?:\s+(?:cube|block|one))?)\s*,\s*off\s+(to\s+its\s+(?:left|right))\b"),
+     r"\1 and \2"),
+)
+"""A diagonal placement said by its depth and then its side ("diagonally behind the yellow cube, off to its right"): the
+two relations of one pair, as :data:`DIAGONAL_PLACE_RE` writes them ('diagonally' had been refused as a pose)."""
+
+
 def diagonal_place(m: re.Match) -> str:
     """The two relations of :data:`DIAGONAL_PLACE_RE`'s match; as written after a cube said by no colour or label ("move
     the cube to the front-right of the blue cube onto ...": a cube picked by its place, refused)."""
@@ -4613,6 +4624,19 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      + {"bottom": "on the bottom", "lowest": "on the bottom", "top": "on top"}.get(m.group(1), "in the middle")),
 )
 """Word orders of other languages and terse notes ("the cube brown", "the corner back right", "in bottom", "3 reds", separators): English order."""
+
+TOWERS_BY_PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "Build two towers, one in the front right corner with cyan on top of brown, and one in the back left corner with gray
+    # on top of red": each tower's chain, then its place (which cubes make each tower had been read as not said)
+    (re.compile(rf"(?i)\bone\s+(?P<where>in\s+the\s+(?:[a-z]+\s+){{0,2}}?(?:corner|half|side|end|middle|centre|center))\s*,?\s+with\s+(?:the\s+)?"
+                rf"(?P<a>{COLOR_RE})(?:\s+(?:cube|block))?\s+(?:on\s+top\s+of|on|atop)\s+(?:the\s+)?(?P<b>{COLOR_RE})(?:\s+(?:cube|block))?\b"),
+     lambda m: f"{m.group('a')} on {m.group('b')} {m.group('where')}" if re.search(r"(?i)\b(?:two|three|2|3)\s+(?:towers|stacks)\b",
+                                                                                m.string[:m.start()]) else m.group(0)),
+    (re.compile(rf"(?i)\b((?:two|three|2|3)\s+(?:towers|stacks))\s*,\s+(?=(?:{COLOR_RE})\s+on\s+(?:{COLOR_RE})\s+in\s+the\b)"), r"\1: "),
+)
+"""Towers counted, then each said by its place and its chain ("Build two towers, one in the front right corner with cyan on
+top of brown, and one in the back left corner with gray on top of red"): written as the heading
+:func:`rpg.schema.readers._towers_headed` reads ("two towers: cyan on brown in the front right corner, and ...")."""
 
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "a tower of yellow, then green, then blue, counted from the bottom": the direction the list is said in

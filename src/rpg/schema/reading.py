@@ -1329,6 +1329,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     original = LABEL_LIST_PLURAL_RE.sub(r"\1 \2", original)  # "the B, the A and the T blocks": T is one cube (it had been dropped)
     original = lexicon.SAYS_RE.sub(r"\1reads", original)  # "the tower says H, A, T"
     original = lexicon.HYPHENED_DIRECTION_RE.sub(r"\1 to \2", original)
+    original = lexicon.rewrite(lexicon.DIAGONAL_SIDE_REWRITES, original)  # "diagonally behind X, off to its right"
     original = lexicon.DIAGONAL_PLACE_RE.sub(lexicon.diagonal_place, original)  # "to the front-right of the red cube"
     original = lexicon.ROBOT_DIRECTION_RE.sub(lexicon.robot_direction, original)  # "a column ... away from the robot"
     original = lexicon.LINE_UP_DIRECTION_RE.sub(lexicon.line_up_direction, original)  # "line up ... going away from the robot"

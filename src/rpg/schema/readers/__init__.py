@@ -405,7 +405,7 @@ def _towers_headed(instruction: str, framed: bool) -> TaskSchema | None:
     (:data:`_TOWERS_HEADING_RE`): the text after the colon read alone, kept only where it is exactly ``n`` towers (each of
     ``h`` cubes) and nothing else but their places; None where the heading is not one such (the readers read it whole,
     which had refused "which cubes make each tower is not said" where the chains say it)."""
-    m = _TOWERS_HEADING_RE.match(instruction)
+    m = _TOWERS_HEADING_RE.match(lexicon.rewrite(lexicon.TOWERS_BY_PLACE_REWRITES, instruction))
     if m is None:
         return None
     n, h = lexicon.count_word(m.group("n")), m.group("h") or m.group("h2")
