@@ -7540,6 +7540,9 @@ def test_this_session_s_readings_refuse_what_they_cannot_say(text):
     ("Build two towers, one in the front right corner with cyan on top of brown, and one in the back left corner with gray on "
      "top of red.", ["stack(brown,cyan)@front_right", "stack(red,gray)@back_left"]),
     ("The red cube should end up diagonally behind the yellow cube, off to its right.", ["behind(red,yellow)", "right_of(red,yellow)"]),
+    ("A good rind takes patience, and so does this: stack the brown, cyan and orange cubes into one tower in whatever order suits "
+     "you.", ["stack(brown,cyan,orange)"]),
+    ("The spec asks for the red cube to be placed on the blue patch.", ["on_patch(red,patch:blue)"]),
 ])
 def test_thirty_eighth_session_readings(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)

@@ -547,6 +547,16 @@ the robot's job is to put ...", "The task consists in to place ..."): dropped an
 :data:`FRAME_PREFIX_HAZARD_RE` and every word is a dictionary word or a name (their unknown words had refused the
 task)."""
 
+REPORTED_REQUEST_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "Trial 12 of the user study asks for the brown cube to be moved to the center of the table": the request itself,
+    # its frame before it (read as a frame, :data:`FRAME_PREFIX_RE`, or refused with the task)
+    (re.compile(r"^(?P<who>[^.;:!?\"]{2,80}?)\s+(?:asks|asked|calls|called)\s+for\s+(?P<what>the\s+[^.;:!?]+?)\s+to\s+be\s+"
+                r"(?P<verb>moved|placed|put|set|stacked|lined\s+up)\b"),
+     lambda m: f"{m.group('who')}, {dict(moved='move', placed='place', put='put', set='set', stacked='stack').get(m.group('verb'), 'line up')} "
+               f"{m.group('what')}"),
+)
+"""A task reported as what something asks for (:func:`rpg.schema.reading.normalize_words`, before the frames are dropped)."""
+
 FRAME_NOUN_RE = re.compile(
     r"\b(?:jobs?|tasks?|goals?|objectives?|assignments?|homework|lessons?|exercises?|experiments?|trials?|study|studies|pilot"
     r"|sets?|variants?|ablations?|evals?|evaluations?|benchmarks?|challenges?|levels?|rounds?|episodes?|sessions?|projects?"
@@ -1817,11 +1827,11 @@ NOT_IMPORTANT_RE = re.compile(r"\b(is|are)\s+(?:not\s+(?:important|relevant)|of\
 
 ANY_ORDER_RE = re.compile(
     r"(?:\s*[,;(\u2013\u2014-]\s*|\s+)(?:(?:in\s+)?(?:any|whatever|no\s+particular|either)\s+order(?:\s+(?:(?:is|are)\s+(?:fine|ok(?:ay)?|good|allowed)"
-    r"|works|goes|will\s+do))?"
+    r"|works(?:\s+for\s+you)?|goes|will\s+do|suits\s+you|you\s+see\s+fit))?"
     r"|(?:the\s+)?order\s+(?:does\s*n[o']?t|doesn't|is\s*n[o']?t|isn't)\s+(?:matter|important)|regardless\s+of\s+(?:the\s+)?order"
     r"|(?:the\s+)?order\s+is\s+(?:unimportant|irrelevant)"
     r"|(?:the\s+)?order\s+is\s+(?:up\s+to\s+you|your\s+(?:choice|call)|free|flexible|open)|order\s+free\b"
-    r"|(?:in\s+)?(?:any|whatever|whichever)\s+order\s+you\s+(?:like|want|choose|prefer|wish)"
+    r"|(?:in\s+)?(?:any|whatever|whichever)\s+order\s+(?:you\s+(?:like|want|choose|prefer|wish|see\s+fit)|suits\s+you|works\s+for\s+you)"
     r"|you\s+(?:can|may)\s+(?:choose|pick|decide)\s+the\s+order"
     r"|(?:the\s+)?order\s+(?:thereof\s+)?(?:being\s+)?at\s+(?:the\s+robot's|your|its)\s+discretion"
     r"|how(?:ever)?\s+you\s+(?:prefer|like|want|wish|please)"

@@ -1349,6 +1349,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
         original = pattern.sub(written, original)
     for pattern in lexicon.GRADING_FRAME_RES:  # "Q3. (4 points) ...", "full marks if ...; zero otherwise"
         original = pattern.sub("", original).strip()
+    original = lexicon.rewrite(lexicon.REPORTED_REQUEST_REWRITES, original)  # "Trial 12 asks for the cube to be moved to ..."
     original, asides = drop_asides(original)  # "Put the green block on the purple block. What a tower!"
     original = lexicon.DAYS_TASK_RE.sub("the ", original)  # "Today's exercise is a tower of ...": the exercise
     original = lexicon.SWAP_HEADING_RE.sub("", original)  # "Swap places: the yellow cube goes on the cyan patch and ..."
