@@ -757,7 +757,8 @@ def _relation_rewrite_says_all(edit: str, instruction: str, ref: TaskSchema, str
         return False
     said = {canon_color(c) for c in re.findall(rf"(?i)\b(?:{COLOR_RE})\b", edit)}
     kept = {canon_color(c) for c in re.findall(rf"(?i)\b(?:{COLOR_RE})\b", instruction)} | {a.color for a in ref.assets if a.color}
-    labels = set(re.findall(r"\b([A-Z])\b(?!')", edit)) - {"I", "A"} - {a.label for a in ref.assets if a.label}
+    labels = {a or b for a, b in re.findall(r"\b(?:the|letter|cube|block)\s+([A-Z])\b(?!')|\b([A-Z])\s+(?:cube|block)s?\b", edit)} \
+        - {a.label for a in ref.assets if a.label}  # a letter said as a cube ("the P"), not a name ("Variant B")
     return said <= kept and all(re.search(rf"\b(?:letter\s+)?{lab}\b", instruction) for lab in labels)
 
 
