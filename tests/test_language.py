@@ -7543,6 +7543,7 @@ def test_this_session_s_readings_refuse_what_they_cannot_say(text):
     ("A good rind takes patience, and so does this: stack the brown, cyan and orange cubes into one tower in whatever order suits "
      "you.", ["stack(brown,cyan,orange)"]),
     ("The spec asks for the red cube to be placed on the blue patch.", ["on_patch(red,patch:blue)"]),
+    ("Make a loose heap of the red, yellow and cyan cubes.", ["pile(cyan,red,yellow)"]),
 ])
 def test_thirty_eighth_session_readings(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)

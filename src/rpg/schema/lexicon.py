@@ -4704,6 +4704,8 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 r"(?:left|right)(?:\s+end)?\b)"), "in a row"),
     # "the black cube is touching the white cube, side by side": next to it, said twice
     (re.compile(rf"\b((?:touching|next\s+to|beside|against)\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?)\s*,?\s*side\s+by\s+side\b"), r"\1"),
+    # "a loose heap of the red, yellow and cyan cubes": a pile (every pile is loose: its predicate judges the cubes' spread)
+    (re.compile(r"\b(?:loose|messy|untidy|rough|jumbled)\s+(?=(?:pile|heap|bunch|cluster)s?\b)"), ""),
     # "whip up a tower of the pink cube on the yellow cube": build one
     (re.compile(r"\b(?:whip|rustle|knock|cook|throw)\s+(?:up|together)\s+(?=(?:a|an|one|the)\s+(?:tower|stack|row|line|pyramid|wall|circle|grid"
                 r"|pile)\b)"), "build "),
