@@ -7553,6 +7553,11 @@ def test_thirty_eighth_session_readings(text, expected):
     "Tower of green, white, blue and red, with red on top. The other two can go either way.",  # two others of three: not said
     "Put blocks A and 4 on the red patch.",  # a letter and a digit: which cubes is not said
     "Put the red cube diagonally behind the blue cube.",  # on which side: not said
+    # "one more" of a colour: of none said before (a whole edit read as a task had become green under red), or one more
+    # than the one said (dropped: a tower of two)
+    "one more green under the red",
+    "stack the green cube on the red cube, then one more green on top",
+    "Stack a blue cube on a red cube, then one more blue cube on top.",
 ])
 def test_thirty_eighth_session_refusals(text):
     with pytest.raises(BadInput):

@@ -238,7 +238,8 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
                   or [c for c in [m.group("color2"), m.group("color3"), m.group("color4")] if c])
         named = tuple(sorted({canon(c) for c in listed}))
         if re.search(r"\b(?:more|additional|extra)\b", m.group(0)):  # "three blue cubes ... three more blue cubes": six
-            n += said.get(named, 0)
+            # ("the green cube ..., then one more green cube": two, the one said before it uncounted; it had been dropped)
+            n += said.get(named, 0) or int(bool(listed) and any(re.search(rf"\b{re.escape(c)}\b", text[:m.start()]) for c in listed))
         said[named] = n
         exact = bool(re.search(r"\b(?:only|exactly|just)\s+$", text[:m.start()]))  # "using only two green cubes"
         out.append(Mention(m.group(0).strip(), "count", count=n, color=",".join(named) or None, exact=exact))

@@ -833,6 +833,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("reference", rf"\b(?:\d+|one|two|three|four|five|six|a\s+few|some|several|a\s+couple)\s+more\b(?!\s+(?:(?:{'|'.join(COLORS)}|grey)\b"
                   r"|(?:[a-z]+\s+)?(?:cubes?|blocks?|bricks?)\b|than\b))|\b(?:add|stack|put|place|pile|set|build|make|create|do)\s+another(?:\s+one)?\s*(?=on\b|onto\b|next\b|behind\b|beside\b|[.!;,]|$)"
                   r"|\b(?:make|build|do|add)\s+(?:\d+|one|two|three|four|five|another)\s+(?:more\s+)?(?:of\s+)?(?:these|those|this|that|them)\b"
+                  # "one more green under the red": more of a colour no cube of which was said before (in its sentence)
+                  rf"|^(?:(?!\b(?:{'|'.join(COLORS)}|grey)\b).)*?\b(?:\d+|one|two|three|four|five|a\s+couple|a\s+few|some)\s+more\s+"
+                  rf"(?:{'|'.join(COLORS)}|grey)\b"
                   # "Make another tower just like it.", "an identical pyramid next to it": a copy of a structure said
                   r"|\b(?:another|a\s+second|an\s+identical|a\s+matching|a\s+copy\s+of\s+the)\s+(?:(?:identical|matching|similar|same)\s+)?"
                   r"(?:one|tower|stack|pyramid|row|line|wall|grid|circle|pile|structure)s?\b(?=\s+(?:just\s+|exactly\s+)?(?:like|as|identical"
@@ -4706,6 +4709,9 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b((?:touching|next\s+to|beside|against)\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?)\s*,?\s*side\s+by\s+side\b"), r"\1"),
     # "a loose heap of the red, yellow and cyan cubes": a pile (every pile is loose: its predicate judges the cubes' spread)
     (re.compile(r"\b(?:loose|messy|untidy|rough|jumbled)\s+(?=(?:pile|heap|bunch|cluster)s?\b)"), ""),
+    # "..., then one more green on top": one more green cube, counted against the cubes read (it had been dropped)
+    (re.compile(rf"\b(\d+|one|two|three|four|five)\s+more\s+({COLOR_RE})\b(?!\s+(?:cubes?|blocks?|ones?|bricks?|patch))"),
+     lambda m: f"{m.group(1)} more {m.group(2)} {'cube' if m.group(1) in ('1', 'one') else 'cubes'}"),
     # "whip up a tower of the pink cube on the yellow cube": build one
     (re.compile(r"\b(?:whip|rustle|knock|cook|throw)\s+(?:up|together)\s+(?=(?:a|an|one|the)\s+(?:tower|stack|row|line|pyramid|wall|circle|grid"
                 r"|pile)\b)"), "build "),
