@@ -2347,6 +2347,10 @@ _SWAPPED = "Put the red cube on the blue patch and the blue cube on the red patc
      ("tweak", ["on_patch(red,patch:orange)", "stack(red,blue,green)"])),
     (_ROW3, "stack them in reverse order of the row", ("pivot", ["stack(green,blue,red)"])),
     (_ROW3, "stack them in the order of the row", ("pivot", ["stack(red,blue,green)"])),
+    # steer_stranger20's silent error: the pair stacked in the order said (K had gone on M)
+    ("Put the letter cube K to the left of the letter cube M.", "The exercise wants them stacked, M on top of K.",
+     ("modify", ["stack(K,M)"])),
+    ("Put the red cube left of the blue cube", "stack them, blue on top of red", ("modify", ["stack(red,blue)"])),
 ])
 def test_cubes_picked_by_neighbour_patch_or_correction(tmp_path, base, edit, expected):
     assert _steered(tmp_path, base, edit)[-1] == expected

@@ -156,6 +156,16 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         kind = _edit_relation(t)
         named = [w for w in re.findall(r"\bthe (\w+) (?:block|cube|one)\b", t)  # "put the blue one on the left": blue moves
                  if w not in _STACK_ROLES]  # ("the top one": a cube by its role, read below)
+        cube_of = {(a.color or a.label or "").lower(): a.name for a in schema.assets if a.kind != "goal_patch"}
+        stacked = re.search(r"\b(?:the\s+)?(?:letter\s+|digit\s+)?([a-z0-9]+)\s+(?:cube\s+|block\s+|one\s+)?(?:is\s+|goes\s+|sits\s+)?"
+                            r"(?:on\s+top\s+of|on|onto|atop|above|over)\s+(?:the\s+)?(?:letter\s+|digit\s+)?([a-z0-9]+)\b", t) \
+            if kind == "on" else None
+        if stacked and cube_of.get(stacked.group(1)) and {cube_of.get(stacked.group(1)), cube_of.get(stacked.group(2))} == {subject, obj}:
+            # "The exercise wants them stacked, M on top of K." of K left of M: M on K (K had gone on M: the pair's order)
+            subject, obj = cube_of[stacked.group(1)], cube_of[stacked.group(2)]
+            if (subject, kind) == (rel.subject, rel.kind):
+                return None
+            return f"Stack {_phrase(schema, subject)} on {_phrase(schema, obj)}", "modify"
         if re.search(r"\b(?:stack|pile)\s+(?:them|all|everything|the\s+(?:blocks|cubes))\b", t) and not named:
             return None  # "stack them": which on which is not said (the structure edit reads it)
         by_color = {a.color: a.name for a in schema.assets if a.kind == "colored_cube"}
@@ -165,6 +175,7 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
             named = []
         if kind is None or len(named) > 1 or (named and named[0] not in by_color):
             return None  # no relation, or cubes of its own: a whole task, not an edit of this one
+
         side = re.search(rf"\b({COLOR_RE})\s+(?:one\s+|block\s+|cube\s+)?(?:on|to|at|in)\s+(?:the\s+)?(?:left|right|front|back)\b", t)
         role = re.search(rf"\b({'|'.join(_STACK_ROLES)})\s+(?:one|block|cube)\s+(?:goes\s+|is\s+)?"
                          r"(?:on|to|at|in)\s+(?:the\s+)?(?:left|right|front|back)\b", t) if rel.kind == "on" and not named else None
