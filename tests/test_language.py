@@ -7556,6 +7556,9 @@ def test_thirty_eighth_session_readings(text, expected):
     # "one more" of a colour: of none said before (a whole edit read as a task had become green under red), or one more
     # than the one said (dropped: a tower of two)
     "one more green under the red",
+    "Stack all four of them, black, gray and brown.",  # the count and the list differ (a tower of three had been read)
+    "Stack all three of them: black, gray, brown and white.",  # (a tower of four)
+    "The yellow cube must be on top; put the cyan and the pink cubes on it in whatever order.",  # on the top cube?
     "stack the green cube on the red cube, then one more green on top",
     "Stack a blue cube on a red cube, then one more blue cube on top.",
 ])

@@ -2409,3 +2409,33 @@ def test_edits_that_say_more_than_one_relation_or_cube_are_refused(tmp_path, bas
 ])
 def test_a_change_reported_as_someone_s_want(tmp_path, base, edits, expected):
     assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+
+_FRONT = "Put the red cube in front of the blue cube and the green cube behind the blue cube."
+
+
+@pytest.mark.parametrize("base,edit,expected", [
+    # a second attack on this session's steering: "behind"/"in front of" had been dropped (the anchor recoloured), and a
+    # row stacked with a place had stayed a row or lost its corner
+    (_FRONT, "The cube behind the red cube becomes yellow", ("tweak", ["behind(green,yellow)", "in_front_of(red,yellow)"])),
+    (_FRONT, "The cube behind the blue cube becomes yellow", ("tweak", ["behind(yellow,blue)", "in_front_of(red,blue)"])),
+    (_ROW3, "Stack them in reverse order of the row, in the back left corner.", ("pivot", ["stack(green,blue,red)@back_left"])),
+    (_ROW3, "stack them in the back left corner", ("pivot", ["stack(red,blue,green)@back_left"])),
+    (_T3, "Put them in a row in the order of the tower.", ("pivot", ["line[left_to_right](red,blue,green)"])),
+])
+def test_second_attack_on_neighbour_picks_and_kept_orders(tmp_path, base, edit, expected):
+    assert _steered(tmp_path, base, edit)[-1] == expected
+
+
+@pytest.mark.parametrize("base,edit,words", [
+    (_FRONT, "The cube in front of the red cube becomes yellow", "not a structure"),  # no cube stands there
+    (_T3, "The cube in front of the blue cube becomes yellow", "picks no cube of a tower by what stands front"),
+    (_ROW3, "The cube far from the red cube becomes yellow", "picks no cube of a line by what stands far"),
+    ("Put the red, blue and green cubes in a row.", "Stack them in the order of the row.", "no order, so there is none to keep"),
+    (_T3, "Stack them in reverse order of the row.", "the version it builds on is a tower"),
+])
+def test_second_attack_refusals(tmp_path, base, edit, words):
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
+    with pytest.raises(SteerError, match=re.escape(words)):
+        steer(fam.path, edit)

@@ -835,7 +835,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|\b(?:make|build|do|add)\s+(?:\d+|one|two|three|four|five|another)\s+(?:more\s+)?(?:of\s+)?(?:these|those|this|that|them)\b"
                   # "one more green under the red": more of a colour no cube of which was said before (in its sentence)
                   rf"|^(?:(?!\b(?:{'|'.join(COLORS)}|grey)\b).)*?\b(?:\d+|one|two|three|four|five|a\s+couple|a\s+few|some)\s+more\s+"
-                  rf"(?:{'|'.join(COLORS)}|grey)\b"
+                  rf"(?:{'|'.join(COLORS)}|grey)\b(?!\s+(?:cubes?|blocks?|bricks?|ones?)\b)"
                   # "Make another tower just like it.", "an identical pyramid next to it": a copy of a structure said
                   r"|\b(?:another|a\s+second|an\s+identical|a\s+matching|a\s+copy\s+of\s+the)\s+(?:(?:identical|matching|similar|same)\s+)?"
                   r"(?:one|tower|stack|pyramid|row|line|wall|grid|circle|pile|structure)s?\b(?=\s+(?:just\s+|exactly\s+)?(?:like|as|identical"
@@ -3320,7 +3320,7 @@ EDIT_OF_THE_TASK_RE = re.compile(r"(?i)\b(?:instead|like\s+(?:that|this|it|befor
 """Words that make an edit stated as a whole task about the task's own cubes ("tower in the back instead",
 "3 towers like that")."""
 
-EDIT_ADDITIVE_RE = re.compile(r"\b(?:also|too|as well|add|additionally|another|in addition|plus)\b")
+EDIT_ADDITIVE_RE = re.compile(r"\b(?:also|too|as well|add|additionally|another|in addition|plus|(?:\d+|one|two|three|a\s+few|some)\s+more)\b")
 """Words that make an edit an addition: what it states joins the task, the rest is kept."""
 
 EDIT_CONTINUES_RE = re.compile(r"^\s*(?:and\s+|,\s*)?(?:then|next|after\s+that|afterwards|after\s+this)\b")
@@ -4651,6 +4651,14 @@ TOWERS_BY_PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 top of brown, and one in the back left corner with gray on top of red"): written as the heading
 :func:`rpg.schema.readers._towers_headed` reads ("two towers: cyan on brown in the front right corner, and ...")."""
 
+def _them_counted_as_listed(m: re.Match) -> bool:
+    """Whether "N of them" counts as many cubes as the list after it names ("all three of them, black, gray and brown";
+    "all four of them" before three colours stays as said, refused)."""
+    counted = re.search(r"\b(\d+|two|three|four|five|six)\s+of\b", m.group(1))
+    listed = re.match(rf"[^.;!]*", m.string[m.end():])
+    return not counted or count_word(counted.group(1)) == len(re.findall(rf"\b(?:{COLOR_RE})\b", listed.group(0)))
+
+
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "a tower of yellow, then green, then blue, counted from the bottom": the direction the list is said in
     (re.compile(r"\bcount(?:ed|ing)\s+(?=from\s+the\s+(?:bottom|top|left|right)\b)"),
@@ -4685,7 +4693,9 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 rf"(?:the\s+)?(?P<l>(?:{COLOR_RE})(?:\s*,\s*(?:the\s+)?(?:{COLOR_RE}))*,?\s+and\s+(?:the\s+)?(?:{COLOR_RE}))(?:\s+(?:blocks|cubes|ones))?\s+(?:can\s+|may\s+"
                 rf"|should\s+)?(?:go\s+|are\s+|stand\s+|sit\s+)?(?:above|on\s+top\s+of|over|on|below|under|beneath|underneath)\s+(?:it|that|them)\s+"
                 rf"in\s+(?:any|either)\s+order\b"),
-     lambda m: ("" if re.search(r"\b(?:towers?|stacks?|stacked|stack|columns?)\b", m.string[:m.start()]) else "a tower of ")
+     lambda m: m.group(0) if "bottom" not in m.group("r") and re.search(r"\b(?:above|on|over)\s+(?:it|that|them)\b", m.group(0))
+     or "bottom" in m.group("r") and re.search(r"\b(?:below|under|beneath|underneath)\s+(?:it|that|them)\b", m.group(0)) else
+     ("" if re.search(r"\b(?:towers?|stacks?|stacked|stack|columns?)\b", m.string[:m.start()]) else "a tower of ")
      + f"{m.group('a')}, {re.sub(r'(?<![a-z])the ', '', m.group('l'))}, with the {m.group('a')} block {m.group('r')} and the others in "
      "any order" if m.group("a") not in m.group("l") else m.group(0)),
     # "Tower of green, white and red, with red on top. The other two can go either way.": the tower's other cubes free
@@ -4695,9 +4705,11 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      and (not re.search(r"\b(?:two|2)\b", m.group(0)) or len(set(re.findall(rf"\b(?:{COLOR_RE})\b", m.string[:m.start()]))) == 3)
      else m.group(0)),
     # "Stack all three of them, black, gray and brown.": the cubes "them" stands for, listed after it (as after a colon)
-    (re.compile(rf"\b((?:all\s+)?(?:(?:\d+|two|three|four|five|six)\s+of\s+)?them)\s*,\s+(?=(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?"
+    (re.compile(rf"\b((?:all\s+)?(?:(?:\d+|two|three|four|five|six)\s+of\s+)?them)\s*[,:]\s+(?=(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?"
                 rf"(?:\s*,\s*(?:and\s+)?(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?|\s+and\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?)+"
-                r"\s*(?:[.;!]|$))"), r"\1: "),
+                r"\s*(?:[.;!]|$))"),
+     lambda m: f"{m.group(1)}: " if _them_counted_as_listed(m) else f"{m.group(1)}, "),  # (a count the list does not
+    # match: the comma's 'them', refused; "all three of them: black, gray, brown and white" had been a tower of four)
     # "The black cube should finish near the back edge": end up there ('finish' had been read as an action)
     (re.compile(r"\b(should|must|will|has\s+to|needs\s+to|to)\s+finish\s+(?:up\s+)?(?=(?:near|at|in|on|onto|next\s+to|beside|behind|between"
                 r"|to\s+the|left|right|in\s+front)\b)"), r"\1 end up "),

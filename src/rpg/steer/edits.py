@@ -334,14 +334,16 @@ def find_reference(t: str) -> RefCue:
 _REL_PICK_RE = re.compile(
     r"(?:the\s+)?(?:cube|block|one)\s+(?:that\s+is\s+|that's\s+|which\s+is\s+|(?:sitting|standing|resting|lying|placed)\s+)?"
     r"(?:(?:right|directly|just|immediately)\s+)?(?P<rel>on\s+top\s+of|on|onto|atop|above|over|under|underneath|below|beneath"
-    r"|(?:to\s+the\s+|on\s+the\s+)?left\s+of|(?:to\s+the\s+|on\s+the\s+)?right\s+of|next\s+to|beside|in\s+between|between)"
+    r"|(?:to\s+the\s+|on\s+the\s+)?left\s+of|(?:to\s+the\s+|on\s+the\s+)?right\s+of|next\s+to|beside|in\s+between|between"
+    r"|behind|in\s+front\s+of|far\s+(?:away\s+)?from|near|close\s+to|opposite|across\s+from)"
     r"(?:\s+(?P<of>.+))?")
 """A cube picked by where it stands beside another ("the cube under the green one", "the cube left of the blue one", "the
 cube on the red patch", "the cube between the blue and the yellow one"): read by :func:`_selector` (the colour of the
 other cube had been taken for the cube's own: silently wrong)."""
 _REL_PICKED = {"on top of": "above", "on": "above", "onto": "above", "atop": "above", "above": "above", "over": "above",
                "under": "below", "underneath": "below", "below": "below", "beneath": "below", "next to": "beside",
-               "beside": "beside"}
+               "beside": "beside", "in front of": "front", "far from": "far", "far away from": "far", "near": "near",
+               "close to": "near", "opposite": "far", "across from": "far"}
 
 
 def _relation_pick(text: str) -> dict | None:
@@ -413,6 +415,12 @@ def _selector(text: str) -> dict | None:
     return sel
 
 
+_UNREAD_PICK_RE = re.compile(r"\b(?:behind|front|far|near|close|beside|next\s+to|left\s+of|right\s+of|under|underneath|below|beneath"
+                             r"|above|over|atop|on\s+top\s+of|between|opposite|across|against|touching)\b")
+"""Relation words in a phrase that picks a cube: a phrase :func:`_relation_pick` did not read is not read by its first
+colour (the neighbour's colour had been taken for the cube's)."""
+
+
 def _selector_of(text: str) -> dict | None:
     """:func:`_selector` of a phrase that is no patch and picks no cube by its neighbour."""
     other = re.search(r"\b(?:all|every\w*|each|them)\b.*?\b(?:but|except|other\s+than|apart\s+from|besides)\b|\ball\s+(?:the\s+)?other\b"
@@ -467,6 +475,9 @@ def _selector_of(text: str) -> dict | None:
         k = counted.group(1)
         return {"color": canon_color(counted.group(2)), "count": int(k) if k.isdigit() else 1}
     items = item_sequence(text)
+    if items and _UNREAD_PICK_RE.search(text):
+        raise SteerError(f"'{text}' picks a cube by where it stands, in words the builtin steering does not read; name the cube "
+                         "by its colour or its place, or use --model")
     if items:
         color, label = items[0]
         return {"color": color} if color else {"label": label}
@@ -486,7 +497,7 @@ def _region_of(t: str) -> str | None:
     back of the table", "put the whole thing in the back left corner"), or None."""
     from rpg.steer.relations import _edit_region
 
-    m = re.search(r"\b(?:move|put|place|shift|bring|slide|build|set|push|have|make|keep)\s+(?:it|them|everything|the\s+whole\s+thing"
+    m = re.search(r"\b(?:move|put|place|shift|bring|slide|build|set|push|have|make|keep|stack|pile)\s+(?:it|them|everything|the\s+whole\s+thing"
                   r"|(?:both|all)\s+of\s+them|them\s+(?:both|all)"
                   r"|(?:the\s+)?(?:whole\s+|entire\s+)?(?:" + STRUCTURE_RE + r"|wall|blocks|cubes))\s+(?P<where>.*)", t)
     if not m:
@@ -782,9 +793,10 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("count", {"delta": -1}))
     shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out|use|do|spell)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+|one\s+|a\s+single\s+)(?:\d+x\d+(?:x\d+)?\s+|(?:long|tall|single|straight|big)\s+)?"
                       rf"{STRUCTURE_RE}", t)
-    stack_all = re.search(r"\b(?:stack|pile)\s+(?:them|all|everything|(?:all\s+)?the\s+(?:blocks|cubes))(?:\s+(?:up|instead|together"
+    stack_all = re.search(r"\b(?:stack|pile)\s+(?:them|all|everything|(?:all\s+)?the\s+(?:blocks|cubes))(?:(?:\s+|\s*,\s*)(?:up|instead|together"
                           r"|on top of each other|on top of one another|in\s+(?:the\s+)?(?:reverse|reversed|opposite)\s+order"
-                          r"(?:\s+(?:of|to|from)\s+the\s+(?:row|line))?))*(?:\W*$|\s*[,;]\s*(?=(?:the\s+)?(?:smallest|largest|biggest|lowest|highest)"
+                          r"(?:\s+(?:of|to|from)\s+the\s+(?:row|line))?|in\s+the\s+order\s+of\s+the\s+(?:row|line)"
+                          r"|(?:in|at|on)\s+the\s+(?:[a-z]+\s+){0,2}?(?:corner|half|side|cent(?:er|re)|middle)))*(?:\W*$|\s*[,;]\s*(?=(?:the\s+)?(?:smallest|largest|biggest|lowest|highest)"
                           r"(?:\s+(?:one|number|digit|letter))?\s+(?:on\s+top|at\s+the\s+(?:top|bottom)|first|last)\W*$))", t) or (
         SAME_ORDER_RE.search(t) and re.search(r"\b(?:stack|pile)\s+(?:them|all|everything)\b", t))  # "stack them, in the same order"
     end_role = rf"(?:\s*,?\s*(?:with\s+)?(?:the\s+)?(?P<end_c>{COLOR_RE})\s+(?:block\s+|cube\s+|one\s+)?(?:at|on)\s+(?:the\s+)?" \
@@ -830,7 +842,7 @@ def read_ops(t: str) -> list[Op]:
 
 
 SAME_ORDER_RE = re.compile(r"\b(?:in\s+the\s+same\s+order|keep(?:ing)?\s+the\s+(?:same\s+)?order|same\s+order"
-                           r"|in\s+the\s+(?:row|line)'s\s+order|in\s+the\s+order\s+of\s+the\s+(?:row|line))\b")
+                           r"|in\s+the\s+(?:row|line|tower|stack)'s\s+order|in\s+the\s+order\s+of\s+the\s+(?:row|line|tower|stack))\b")
 """A structure turned into another that keeps its cubes' order ("stack them in the same order")."""
 
 
@@ -963,6 +975,11 @@ def _interpret_material(edit: str) -> EditPlan:
     plan = _interpret_counted(edit)
     if kept:  # "same letters but reversed": the task's cubes are letters, checked
         plan = replace(plan, checks=(*plan.checks, ("material", _MATERIAL_WORDS[kept.group("m").lower()])))
+    of_order = re.search(r"(?i)\border\s+(?:of|as)\s+the\s+(row|line|tower|stack)\b|\bthe\s+(row|line|tower|stack)'s\s+order\b", edit or "")
+    if of_order and not plan.standalone and not plan.fresh:  # "stack them in reverse order of the row": the task is that row
+        kind = _structure_named(of_order.group(1) or of_order.group(2))  # (of a tower, the tower had been reversed)
+        if kind:
+            plan = replace(plan, checks=(*plan.checks, ("structure", kind)))
     if not plan.standalone and not plan.fresh and not any(o.op in ("structure", "keep") for o in plan.ops):
         named = re.findall(r"(?i)\bthe\s+(?:whole\s+|entire\s+)?(tower|stack|row|line|pyramid|wall|grid|circle|ring|pile)\b(?!\s+of\b)", edit or "")
         kinds = sorted({k for w in named if (k := _structure_named(w))})
@@ -1298,7 +1315,11 @@ def _neighbour_indices(spec: TaskSpec, sel: dict, anchors: frozenset[str]) -> li
         if hi - lo != 2:
             raise SteerError(f"{max(hi - lo - 1, 0)} cubes stand between the two named; name the cube by colour or place")
         return [lo + 1]
-    k, side = one(sel["of"]), sel["next"]
+    side = sel["next"]
+    if side not in ("above", "below", "left", "right", "beside"):  # "the cube behind the blue one" of a tower or a row
+        raise SteerError(f"the builtin steering picks no cube of a {spec.structure} by what stands {side} of another; name the "
+                         "cube by colour or place")
+    k = one(sel["of"])
     if side in ("above", "below") and not tower or side in ("left", "right") and tower:
         raise SteerError(f"no cube of a {spec.structure} stands {side if side in ('above', 'below') else side + ' of'} another; name "
                          "the cube by colour or place")
@@ -1691,6 +1712,9 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
         elif o.op == "structure":
             if p["to"] != spec.structure:
                 before = len(spec.items)
+                if p.get("keep_order") and not _orders_cubes(spec):  # "stack them in the order of the row" of a row in any
+                    raise SteerError(f"the {spec.structure}'s goal gives its cubes no order, so there is none to keep; say the "
+                                     "order (e.g. \"from bottom to top: red, green, blue\")")  # order (one had been made up)
                 spec = _fit_structure(spec, p["to"])
                 if len(spec.items) != before and not any(q.op in ("count", "dims") for q in ops):
                     raise SteerError(f"a {p['to']} is not made of {before} cubes (the nearest has {len(spec.items)}); say its size "

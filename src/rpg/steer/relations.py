@@ -159,7 +159,7 @@ def rewrite(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         cube_of = {(a.color or a.label or "").lower(): a.name for a in schema.assets if a.kind != "goal_patch"}
         stacked = re.search(r"\b(?:the\s+)?(?:letter\s+|digit\s+)?([a-z0-9]+)\s+(?:cube\s+|block\s+|one\s+)?(?:is\s+|goes\s+|sits\s+)?"
                             r"(?:on\s+top\s+of|on|onto|atop|above|over)\s+(?:the\s+)?(?:letter\s+|digit\s+)?([a-z0-9]+)\b", t) \
-            if kind == "on" else None
+            if kind == "on" and not re.search(r"\b(?:too|also|as\s+well)\b", t) else None
         if stacked and cube_of.get(stacked.group(1)) and {cube_of.get(stacked.group(1)), cube_of.get(stacked.group(2))} == {subject, obj}:
             # "The exercise wants them stacked, M on top of K." of K left of M: M on K (K had gone on M: the pair's order)
             subject, obj = cube_of[stacked.group(1)], cube_of[stacked.group(2)]

@@ -966,6 +966,8 @@ def _relation_role(sel: dict, ref: TaskSchema) -> set[str] | None:
     if set(sel) == {"color"}:  # "make the red cube green": every cube of that colour (not a patch of it)
         return {a.name for a in ref.assets if a.kind == "colored_cube" and a.color == sel["color"]} or None
     leaves = [p for p in ref.goal_predicate().walk() if not p.children()]
+    if set(sel) == {"next", "of"} and set(sel["of"]) == {"color"}:  # "the cube behind the red one": the cube the goal relates so
+        return _neighbour_in_relations(sel["next"], sel["of"]["color"], ref, leaves)
     if set(sel) == {"on_patch"}:  # "the cube on the red patch": the cubes the goal puts on that colour's patch
         patches = {a.name for a in ref.assets if a.kind == "goal_patch" and (a.color or "gray") == sel["on_patch"]}
         return {p.a for p in leaves if p.name == "on_patch" and p.patch in patches} or None
@@ -1044,6 +1046,30 @@ def _recoloured_by_words(ref: TaskSchema, change: dict[str, str], patches: bool)
     token = re.compile(r"(?<=patch:)([a-z]+)" if patches else r"(?<![:\w])([a-z]+)(?=[,;)|]|$)")
     want = sorted(token.sub(lambda m: change.get(m.group(1), m.group(1)), a) for a in meaning(ref))
     return (schema, instruction, "tweak") if sorted(meaning(schema)) == want else None
+
+
+_NEIGHBOUR_RELATIONS = {"behind": ("behind", "in_front_of"), "front": ("in_front_of", "behind"), "left": ("left_of", "right_of"),
+                        "right": ("right_of", "left_of"), "beside": ("next_to", "next_to"), "far": ("far_from", "far_from"),
+                        "above": ("stack", None), "below": (None, "stack")}
+"""A neighbour pick's side -> (the relation whose subject is the cube picked, the one whose object is)."""
+
+
+def _neighbour_in_relations(side: str, colour: str, ref: TaskSchema, leaves: list) -> set[str] | None:
+    """The one cube a task of relations puts on ``side`` of the cube of ``colour`` ("the cube behind the red one": X of
+    behind(X, red) or in_front_of(red, X)); None where no one cube stands so (then the edit is refused)."""
+    anchors = {a.name for a in ref.assets if a.kind == "colored_cube" and a.color == colour}
+    own, mirror = _NEIGHBOUR_RELATIONS.get(side, (None, None))
+    if len(anchors) != 1:
+        return None
+    (anchor,) = anchors
+    picked = set()
+    for p in leaves:
+        a, b = getattr(p, "a", None), getattr(p, "b", None)
+        if p.name == own and b == anchor and a is not None:
+            picked.add(a)
+        if p.name == mirror and a == anchor and b is not None:
+            picked.add(b)
+    return picked if len(picked) == 1 else None
 
 
 def _patch_colour(sel: dict, ref: TaskSchema) -> str | None:
