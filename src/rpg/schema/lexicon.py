@@ -4655,7 +4655,7 @@ def _them_counted_as_listed(m: re.Match) -> bool:
     """Whether "N of them" counts as many cubes as the list after it names ("all three of them, black, gray and brown";
     "all four of them" before three colours stays as said, refused)."""
     counted = re.search(r"\b(\d+|two|three|four|five|six)\s+of\b", m.group(1))
-    listed = re.match(rf"[^.;!]*", m.string[m.end():])
+    listed = re.match(r"[^.;!]*", m.string[m.end():])
     return not counted or count_word(counted.group(1)) == len(re.findall(rf"\b(?:{COLOR_RE})\b", listed.group(0)))
 
 
