@@ -2423,6 +2423,9 @@ _FRONT = "Put the red cube in front of the blue cube and the green cube behind t
     (_ROW3, "Stack them in reverse order of the row, in the back left corner.", ("pivot", ["stack(green,blue,red)@back_left"])),
     (_ROW3, "stack them in the back left corner", ("pivot", ["stack(red,blue,green)@back_left"])),
     (_T3, "Put them in a row in the order of the tower.", ("pivot", ["line[left_to_right](red,blue,green)"])),
+    # steer_stranger16's x031: a place said without "the" (the corner had been dropped with the change)
+    ("Put red cube on top of yellow cube, and yellow cube on top of blue cube.",
+     "Now remove the red one and put tower in back left corner.", ("modify", ["stack(blue,yellow)@back_left"])),
 ])
 def test_second_attack_on_neighbour_picks_and_kept_orders(tmp_path, base, edit, expected):
     assert _steered(tmp_path, base, edit)[-1] == expected
@@ -2434,6 +2437,9 @@ def test_second_attack_on_neighbour_picks_and_kept_orders(tmp_path, base, edit, 
     (_ROW3, "The cube far from the red cube becomes yellow", "picks no cube of a line by what stands far"),
     ("Put the red, blue and green cubes in a row.", "Stack them in the order of the row.", "no order, so there is none to keep"),
     (_T3, "Stack them in reverse order of the row.", "the version it builds on is a tower"),
+    # steer_stranger16's x044: both put in the centre, the stack said with it lost (silently)
+    ("Put a green cube in the left half and a red cube in the right half.", "stack them both in the centre, green on top",
+     "names no change"),
 ])
 def test_second_attack_refusals(tmp_path, base, edit, words):
     fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)

@@ -3525,6 +3525,9 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"^\s*(?:(?i:now|and|so|ok|okay|then|also|actually|oh|but)\s*,?\s+)*(?:{_ASKER})(?:'d\s+like|\s+(?:wants|would\s+like|asks\s+for|asked\s+for))\s+(?P<what>the\s+[^,.;:!?]+?)\s+to\s+"
                 r"(?:trade|swap|switch|exchange)\s+(?:places|spots|positions)\s*[.!]?\s*$"), r"swap \g<what>"),
     *EDIT_NOT_CORRECTIONS,
+    # "put tower in back left corner": a place said without its article (it had been dropped with the change)
+    (re.compile(r"(?i)\b(in|to|into|at)\s+((?:back|front|rear)(?:\s+(?:left|right))?|left|right)\s+(corner|half|side|edge)\b"),
+     r"\1 the \2 \3"),
     # "Simplify it for the worksheet: make both rows green": a label saying why, before the change
     (EDIT_LABEL_RE, edit_label_dropped),
     # "He has trouble telling red from green, so make the green cube yellow instead": the reason said before the change

@@ -755,6 +755,10 @@ def _relation_rewrite_says_all(edit: str, instruction: str, ref: TaskSchema, str
     left to right" as M right of O; "Line them up with a gray cube: pink, purple, then gray" with gray on the wrong side)."""
     if _NOT_A_RELATION_RE.search(edit) and not structure:
         return False
+    kept = re.sub(r"(?i)\b(?:instead\s+of|rather\s+than|in\s+place\s+of|not)\b[^,;.]*", " ", edit)  # ("instead of on top": the old)
+    if re.search(r"(?i)\b(?:stack\w*|towers?|on\s+top)\b", kept) and not re.search(
+            r"(?i)\bstack\b|\bon\s+(?:top\s+of\s+)?the\s+[\w ]+?(?:block|cube)\b", instruction):
+        return False  # "stack them both in the centre, green on top": a stack the rewrite (both in the centre) had lost
     said = {canon_color(c) for c in re.findall(rf"(?i)\b(?:{COLOR_RE})\b", edit)}
     kept = {canon_color(c) for c in re.findall(rf"(?i)\b(?:{COLOR_RE})\b", instruction)} | {a.color for a in ref.assets if a.color}
     labels = {a or b for a, b in re.findall(r"\b(?:the|letter|cube|block)\s+([A-Z])\b(?!')|\b([A-Z])\s+(?:cube|block)s?\b", edit)} \
