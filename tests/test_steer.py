@@ -2423,6 +2423,9 @@ _FRONT = "Put the red cube in front of the blue cube and the green cube behind t
     (_ROW3, "Stack them in reverse order of the row, in the back left corner.", ("pivot", ["stack(green,blue,red)@back_left"])),
     (_ROW3, "stack them in the back left corner", ("pivot", ["stack(red,blue,green)@back_left"])),
     (_T3, "Put them in a row in the order of the tower.", ("pivot", ["line[left_to_right](red,blue,green)"])),
+    # steer_stranger16's x030: "add:" before a relation is an addition (the old relation had been dropped)
+    ("Place the blue cube behind the green cube.", "add: the red cube is left of the green cube",
+     ("extend", ["behind(blue,green)", "left_of(red,green)"])),
     # steer_stranger16's x031: a place said without "the" (the corner had been dropped with the change)
     ("Put red cube on top of yellow cube, and yellow cube on top of blue cube.",
      "Now remove the red one and put tower in back left corner.", ("modify", ["stack(blue,yellow)@back_left"])),

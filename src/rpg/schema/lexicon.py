@@ -3461,6 +3461,8 @@ def edit_label_dropped(m: re.Match) -> str:
     label = m.group("l").lower()
     if _EDIT_LABEL_HAZARD_RE.search(label) or GOAL_THING_PREFIX_RE.search(label):
         return m.group(0)
+    if re.fullmatch(r"\s*(?:add|also|plus|addition|and|extra|in\s+addition)\s*", label):
+        return "also "  # "add: the red cube is left of the green cube": an addition (it had been read as the whole new task)
     return ""
 
 
