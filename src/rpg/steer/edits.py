@@ -331,6 +331,11 @@ def find_reference(t: str) -> RefCue:
     return cue
 
 
+_PATCH_PHRASE_RE = re.compile(rf"(?:the\s+|an?\s+)?({COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patch|pad|mat)")
+"""A patch named by its colour ("the red patch"): fullmatched by :func:`_selector` and :func:`_relation_pick`."""
+_REVERSE_ORDER = r"in\s+(?:the\s+)?(?:reverse|reversed|opposite)\s+order"
+"""An order said reversed ("in reverse order", "in the opposite order"): read by ``stack_all`` and :func:`_kept_order`."""
+
 _REL_PICK_RE = re.compile(
     r"(?:the\s+)?(?:cube|block|one)\s+(?:that\s+is\s+|that's\s+|which\s+is\s+|(?:sitting|standing|resting|lying|placed)\s+)?"
     r"(?:(?:right|directly|just|immediately)\s+)?(?P<rel>on\s+top\s+of|on|onto|atop|above|over|under|underneath|below|beneath"
@@ -348,7 +353,7 @@ _REL_PICKED = {"on top of": "above", "on": "above", "onto": "above", "atop": "ab
 
 def _relation_pick(text: str) -> dict | None:
     """:func:`_selector` of a cube picked by its neighbour (:data:`_REL_PICK_RE`): ``{"next": side, "of": selector}`` (side
-    above, below, left, right or beside), ``{"between": [selector, selector]}``, ``{"position": "middle"}`` for "the cube in
+    above, below, left, right, beside, front, behind, far or near: :data:`_REL_PICKED`), ``{"between": [selector, selector]}``, ``{"position": "middle"}`` for "the cube in
     between" said alone, ``{"on_patch": colour}``; None when the phrase is no such pick.
 
     Raises:
@@ -363,7 +368,7 @@ def _relation_pick(text: str) -> dict | None:
         return None
     if rel in ("on", "onto", "atop") and re.match(r"(?:the\s+)?(?:far\s+|very\s+)?(?:left|right|front|back|top|bottom|base|end|table)\b", of):
         return None  # "the one on the left", "the cube on top": a place, not a neighbour
-    patch = re.fullmatch(rf"(?:the\s+|an?\s+)?({COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patch|pad|mat)", of)
+    patch = _PATCH_PHRASE_RE.fullmatch(of)
     if patch and rel in ("on", "onto", "atop", "on top of"):
         return {"on_patch": canon_color(patch.group(1))}
     if rel in ("between", "in between"):
@@ -391,7 +396,7 @@ def _selector(text: str) -> dict | None:
         SteerError: the phrase names cubes by the ones they are not ("all but the ends"), or several
             places at once."""
     text = re.sub(r"(?:\s+(?:is|are|was|now|should|must|becomes?|turns?|gets?|goes))+$", "", text.strip())  # "the cube in between is brown"
-    patch = re.fullmatch(rf"(?:the\s+)?({COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patch|pad|mat)", text)
+    patch = _PATCH_PHRASE_RE.fullmatch(text)
     if patch:
         return {"patch": canon_color(patch.group(1))}
     under = re.fullmatch(rf"(?:the\s+)?(?:goal\s+|target\s+)?(?:patch|pad|mat)\s+(?:that\s+is\s+|that's\s+)?(?:under(?:neath)?|beneath|below|of)\s+"
@@ -794,7 +799,7 @@ def read_ops(t: str) -> list[Op]:
     shape = re.search(r"\b(?:make|turn|arrange|rearrange|build|form|put|change|reshape|stack|place|line up|lay out|use|do|spell)\b[^.;]*?\b(?:into|as|in|to be|to)?\s*(?:an?\s+|one\s+|a\s+single\s+)(?:\d+x\d+(?:x\d+)?\s+|(?:long|tall|single|straight|big)\s+)?"
                       rf"{STRUCTURE_RE}", t)
     stack_all = re.search(r"\b(?:stack|pile)\s+(?:them|all|everything|(?:all\s+)?the\s+(?:blocks|cubes))(?:(?:\s+|\s*,\s*)(?:up|instead|together"
-                          r"|on top of each other|on top of one another|in\s+(?:the\s+)?(?:reverse|reversed|opposite)\s+order"
+                          r"|on top of each other|on top of one another|" + _REVERSE_ORDER +
                           r"(?:\s+(?:of|to|from)\s+the\s+(?:row|line))?|in\s+the\s+order\s+of\s+the\s+(?:row|line)"
                           r"|(?:in|at|on)\s+the\s+(?:[a-z]+\s+){0,2}?(?:corner|half|side|cent(?:er|re)|middle)))*(?:\W*$|\s*[,;]\s*(?=(?:the\s+)?(?:smallest|largest|biggest|lowest|highest)"
                           r"(?:\s+(?:one|number|digit|letter))?\s+(?:on\s+top|at\s+the\s+(?:top|bottom)|first|last)\W*$))", t) or (
@@ -858,7 +863,7 @@ def _stated_on(t: str) -> dict:
 def _kept_order(t: str) -> dict:
     """``{"keep_order": True}`` and the end a colour is given ("red at the bottom": ``{"end":
     ("red", "bottom")}``) when a structure edit keeps the cubes' order; else ``{}``."""
-    if not SAME_ORDER_RE.search(t) and not re.search(r"\bin\s+(?:the\s+)?(?:reverse|reversed|opposite)\s+order\b", t):
+    if not SAME_ORDER_RE.search(t) and not re.search(rf"\b{_REVERSE_ORDER}\b", t):
         return {}  # ("stack them in reverse order" of a row: its order kept, then reversed; the order had been lost)
     role = re.search(rf"\b({COLOR_RE})\s+(?:block\s+|cube\s+|one\s+)?(?:at|on)\s+(?:the\s+)?(bottom|base|top|left|right)\b", t)
     return {"keep_order": True, **({"end": (canon_color(role.group(1)), role.group(2))} if role else {})}
