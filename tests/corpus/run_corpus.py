@@ -85,7 +85,8 @@ STRANGER_SETS = {
     "stranger48": ("stranger48.yaml", "STRANGER set 48 (stranger48.yaml, written at the start of the thirty-fifth session; its classes reported at that session's end: not clean)"),
     "stranger49": ("stranger49.yaml", "STRANGER set 49 (stranger49.yaml, transfer measure of the thirty-sixth session; development material from the thirty-seventh)"),
     "stranger50": ("stranger50.yaml", "STRANGER set 50 (stranger50.yaml, transfer measure of the thirty-seventh session; development material from the thirty-eighth)"),
-    "stranger51": ("stranger51.yaml", "STRANGER set 51 (stranger51.yaml, written at the start of the thirty-eighth session: aggregates only)"),
+    "stranger51": ("stranger51.yaml", "STRANGER set 51 (stranger51.yaml, transfer measure of the thirty-eighth session; development material from the thirty-ninth)"),
+    "stranger52": ("stranger52.yaml", "STRANGER set 52 (stranger52.yaml, written at the start of the thirty-ninth session: aggregates only)"),
 }
 SPLITS = HERE / "splits.yaml"
 

@@ -90,7 +90,8 @@ DEVELOPMENT = {
     "stranger19": ("steer_stranger19.yaml", "STRANGER steering set 19 (steer_stranger19.yaml, transfer measure of the thirty-first session; development material from the thirty-sixth)"),
     "stranger20": ("steer_stranger20.yaml", "STRANGER steering set 20 (steer_stranger20.yaml, transfer measure of the thirty-sixth session; development material from the thirty-seventh)"),
     "stranger21": ("steer_stranger21.yaml", "STRANGER steering set 21 (steer_stranger21.yaml, transfer measure of the thirty-seventh session; development material from the thirty-eighth)"),
-    "stranger22": ("steer_stranger22.yaml", "STRANGER steering set 22 (steer_stranger22.yaml, written at the start of the thirty-eighth session: aggregates only)"),
+    "stranger22": ("steer_stranger22.yaml", "STRANGER steering set 22 (steer_stranger22.yaml, transfer measure of the thirty-eighth session; development material from the thirty-ninth)"),
+    "stranger23": ("steer_stranger23.yaml", "STRANGER steering set 23 (steer_stranger23.yaml, written at the start of the thirty-ninth session: aggregates only)"),
 }
 UNSEEN = HERE / "steer_unseen.yaml"
 SPLITS = HERE / "splits.yaml"
