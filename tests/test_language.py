@@ -7572,3 +7572,35 @@ def test_a_count_before_a_heading_is_no_identifier_label():
     # "for the next", had let it be dropped: a tower of two)
     atoms = meaning(check_feasibility(parse("Tower of 3. Base: gray. Top: yellow.")))
     assert len(atoms) == 1 and atoms[0].startswith("stack(gray,") and atoms[0].endswith(",yellow)") and atoms[0].count(",") == 2
+
+
+@pytest.mark.parametrize("text, expected", [
+    # stranger51 (read at the thirty-ninth session's start): words said to someone else before a turn to the robot or the
+    # cubes (they had been refused as actions, counts or times)
+    ("Take one capsule twice daily with food. And for the robot: put both red cubes on the white patch.",
+     ["on_patch(red,red,patch:white)"]),
+    ("One more pint for the regular at the end - and for the robot, the red cube on the black cube.", ["stack(black,red)"]),
+    ("Nurse, keep the field sterile. Robot, place the red cube in the front left corner.", ["in_region(red,front_left)"]),
+    ("Dosage double-checked, 500 milligrams, all good. Now the cubes: the blue one to the left of the orange one.",
+     ["left_of(blue,orange)"]),
+    # a placement said with its place first (no task had been found)
+    ("Between the two black cubes goes the orange cube.", ["between(orange;black,black)"]),
+    ("On top of the blue cube goes the red cube.", ["stack(blue,red)"]),
+    # cubes listed as the subject of one bare side: the table's side (it had been read as relative to the first cube)
+    ("The white cube and the black cube both go to the right side.", ["in_region(black,right)", "in_region(white,right)"]),
+    ("Build a tower from two orange cubes and one purple cube. Order is up to the policy.", ["stack(orange,orange,purple)"]),
+])
+def test_thirty_ninth_session_readings(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    "Make it quick. Robot, put the red cube on the blue cube.",  # a manner that may be the robot's: not dropped
+    "Stack twice. And for the robot: put both red cubes on the white patch.",  # a goal word before the turn
+    "Ignore the rest. Robot, place the red cube in the front left corner.",  # a take-back
+    "Don't touch anything. Robot, put the red cube on the blue cube.",  # a negation
+    "Put the red cube on the blue cube and the green cube on the left.",  # the green cube's own clause: relative
+])
+def test_thirty_ninth_session_refusals(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

@@ -2448,3 +2448,40 @@ def test_second_attack_refusals(tmp_path, base, edit, words):
     fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     with pytest.raises(SteerError, match=re.escape(words)):
         steer(fam.path, edit)
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # steer_stranger22 (read at the thirty-ninth session's start): the added cube's colour said after it ("make it cyan"
+    # had recoloured the whole tower: silently wrong)
+    ("Put the yellow cube to the right of the purple cube.",
+     ["Move the yellow one on top of the purple one.", "And a third cube on top, make it cyan."], ("extend", ["stack(purple,yellow,cyan)"])),
+    # "scratch that last change": the change taken back (the verb had been refused as an action)
+    (_T3, ["Add a yellow cube on top.", "Scratch that last change."], ("tweak", ["stack(red,blue,green)"])),
+    # "same three, but as a tower" said by its ends: the cube left over stands between them (a tower of two had been read)
+    ("Put the yellow cube to the left of the pink cube, and the pink cube to the left of the cyan cube.",
+     ["Variant B: same three, but as a tower, yellow on the bottom and cyan on top."], ("pivot", ["stack(yellow,pink,cyan)"])),
+    # "all three in a row instead, brown, green, yellow from left to right": a row (the direction alone had been read, of the
+    # chain of relations)
+    ("Put the brown cube in front of the green cube and the yellow cube behind the green cube.",
+     ["Next setup: all three in a row instead, brown, green, yellow from left to right."],
+     ("pivot", ["line[left_to_right](brown,green,yellow)"])),
+    # "Next shot: same stack, but in the back left corner": the task's stack moved (a default stack of two had been made)
+    ("Stack a red cube on a white cube.", ["Next shot: same stack, but in the back left corner."],
+     ("modify", ["stack(white,red)@back_left"])),
+])
+def test_steer_stranger22_edits_read_as_said(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+@pytest.mark.parametrize("base,edit,words", [
+    # steer_stranger22: one cube in two corners (it had been moved to the first), the task's cubes said kept but others read
+    ("Put the orange cube in the front left corner and the blue cube in the back right corner.",
+     "The blue cube should also be in the front left corner, and stay in the back right one.", "stay"),
+    ("Stack a red cube on a white cube.", "Same stack in the back left corner.", "keeps the task's cubes"),
+    (_FRONT, "All three in a row, blue, yellow, green from left to right.", "keeps the task's cubes"),
+    (_T3, "Now all three in a row.", "keeps the task's cubes"),  # (a row of four default cubes had been made)
+])
+def test_steer_stranger22_refusals(tmp_path, base, edit, words):
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
+    with pytest.raises(SteerError, match=re.escape(words)):
+        steer(fam.path, edit)

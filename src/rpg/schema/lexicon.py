@@ -275,6 +275,26 @@ DAYS_TASK_RE = re.compile(r"(?i)\b(?:today|tonight|this\s+(?:morning|afternoon|e
                           r"(?=(?:exercise|task|challenge|goal|job|assignment|activity|drill|puzzle|lesson|warm-up)\b)")
 """A task named by its day ("Today's exercise is a tower of ..."): "the exercise" (the day says nothing of the goal)."""
 
+ROBOT_TURN_RE = re.compile(
+    r"(?i)(?:(?<=[.!?;]\s)|(?<=\s-\s)|(?<=\s[\u2013\u2014]\s)|(?<=,\s))(?:(?:and|but|so|then)\s+)?(?:(?:now|ok(?:ay)?|right|alright)\s*,?\s+)?"
+    r"(?:(?:and\s+)?(?:as\s+)?for\s+(?:(?:the|our|my)\s+|you,?\s+(?:the\s+)?)robot|(?:hey\s+|ok(?:ay)?\s+|now\s+)?robot"
+    r"|(?<=now\s)(?:for\s+)?the\s+(?:cubes|blocks)|(?:on\s*to|back\s+to|as\s+for)\s+the\s+(?:cubes|blocks))\s*[:,\u2013\u2014]\s*(?=\S)")
+"""A turn from a voice's own world to the robot or the cubes in the middle of a text ("Take one capsule twice daily with
+food. And for the robot: put ...", "Nurse, keep the field sterile. Robot, place ...", "Dosage double-checked. Now the
+cubes: ..."): what comes before it is said to someone else or of the speaker's world, and is dropped by
+:func:`rpg.schema.reading.drop_asides` when it names nothing of a goal and takes nothing back
+(:data:`ROBOT_TURN_HAZARD_RE`)."""
+
+ROBOT_TURN_HAZARD_RE = re.compile(
+    r"\b(?:robot\w*|arm|gripper|task|goal|instructions?|following|below|after\w*|then|next|later|first|before|instead|except|unless"
+    r"|opposite|revers\w*|mirror\w*|backwards?|same|other|others|rest|again|also|too|both|them|they|their|these|those|everything"
+    r"|anything|nothing|it|its|quick\w*|fast\w*|hurr\w*|rush\w*|slow\w*|careful\w*|gentl\w*|soft\w*|seconds?|minutes?|hours?|time"
+    r"|within|timer|soon|immediately|don't|do\s+not|never|no|not)\b")
+"""What keeps the words before a turn to the robot (:data:`ROBOT_TURN_RE`) from being dropped: the robot or the task
+named, a sequence or a pointer to what follows, a reversal, a comparison, a pronoun that may stand for cubes, a manner,
+time or negation that may be the robot's ("Make it quick. Robot, ...") (besides the take-backs of :data:`RETRACTION_RE`
+and any word of a goal)."""
+
 WORLD_TIME_CLAUSE_RE = re.compile(
     r"(?i)(?:^|(?<=[.!?]\s)|(?<=[,;:]\s))(?:and\s+)?(?:while|whilst|before|after|once)\s+(?P<c>[^,.;:!?()\"]{2,60}?)\s*(?:[,:;]|\s[-\u2013\u2014])\s+(?=\S)")
 """A clause of time about the speaker's world before the task ("While the glaze sets, put ...", "Listen, apprentice, while the
@@ -554,8 +574,17 @@ REPORTED_REQUEST_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 r"(?P<verb>moved|placed|put|set|stacked|lined\s+up)\b"),
      lambda m: f"{m.group('who')}, {dict(moved='move', placed='place', put='put', set='set', stacked='stack').get(m.group('verb'), 'line up')} "
                f"{m.group('what')}"),
+    # "Between the two black cubes goes the orange cube.", "On top of the blue cube goes the red one": a placement said with
+    # its place first (no task had been found); a verb of where a cube is now ("On the patch sits the red cube.") may
+    # describe the start, and stays
+    (re.compile(r"(?i)(?:^|(?<=[.;:!?]\s))(?P<where>(?:between|on\s+top\s+of|on(?:to)?|behind|in\s+front\s+of|(?:to\s+the\s+|on\s+the\s+)?"
+                r"(?:left|right)\s+of|next\s+to|beside|under(?:neath)?|below|beneath|above|atop)\s+the\s+[^.;:!?,]{3,60}?)\s+"
+                r"(?:goes|go|belongs|comes|(?:should|must|will|has\s+to)\s+(?:go|be|sit|stand|end\s+up))\s+"
+                rf"(?P<what>the\s+(?:{COLOR_RE})\s+(?:cube|block|one))\s*(?P<end>[.!]?)(?=\s|$)"),
+     lambda m: f"Put {m.group('what')} {m.group('where')}{m.group('end')}"),
 )
-"""A task reported as what something asks for (:func:`rpg.schema.reading.normalize_words`, before the frames are dropped)."""
+"""A task reported as what something asks for, or said with its place first (:func:`rpg.schema.reading.normalize_words`,
+before the frames are dropped)."""
 
 FRAME_NOUN_RE = re.compile(
     r"\b(?:jobs?|tasks?|goals?|objectives?|assignments?|homework|lessons?|exercises?|experiments?|trials?|study|studies|pilot"
@@ -1833,7 +1862,8 @@ ANY_ORDER_RE = re.compile(
     r"|works(?:\s+for\s+you)?|goes|will\s+do|suits\s+you|you\s+see\s+fit))?"
     r"|(?:the\s+)?order\s+(?:does\s*n[o']?t|doesn't|is\s*n[o']?t|isn't)\s+(?:matter|important)|regardless\s+of\s+(?:the\s+)?order"
     r"|(?:the\s+)?order\s+is\s+(?:unimportant|irrelevant)"
-    r"|(?:the\s+)?order\s+is\s+(?:up\s+to\s+you|your\s+(?:choice|call)|free|flexible|open)|order\s+free\b"
+    r"|(?:the\s+)?order\s+is\s+(?:up\s+to\s+(?:you|the\s+(?:policy|robot|agent|model))|your\s+(?:choice|call)|free|flexible|open)|order\s+free\b"
+    r"|(?:the\s+)?order\s+(?:is\s+)?(?:not|n't|never)\s+(?:annotated|specified|given|stated|labell?ed|recorded|constrained)"
     r"|(?:in\s+)?(?:any|whatever|whichever)\s+order\s+(?:you\s+(?:like|want|choose|prefer|wish|see\s+fit)|suits\s+you|works\s+for\s+you)"
     r"|you\s+(?:can|may)\s+(?:choose|pick|decide)\s+the\s+order"
     r"|(?:the\s+)?order\s+(?:thereof\s+)?(?:being\s+)?at\s+(?:the\s+robot's|your|its)\s+discretion"
@@ -3434,10 +3464,11 @@ EDIT_STEP_NAME_RE = re.compile(
     r"(?i)^\s*(?:(?:the\s+)?(?:next|new|final|another)\s+)?(?:(?:height|colou?r|region|place|position|count|number|label|letter|relation"
     r"|size|order|structure|layout|shape|baseline|control|test|first|second|third|fourth|fifth|bonus|practice|warm-?up)\s+)?"
     r"(?:round|ablation|condition|variant|trial|attempt|iteration|phase|scenario|exercise|challenge|puzzle|setting|take|draft|revision"
-    r"|cell)(?:\s+(?:#?\d+|[a-z]|one|two|three|four|five|six|seven|eight|nine|ten))?(?:\s+(?:rule\s+)?change)?\s*(?::|,(?=\s+(?:please\s+)?"
+    r"|cell|set-?up|shot|playtest|play-test|scene|run|pass|option|mock-?up)(?:\s+(?:#?\d+|[a-z]|one|two|three|four|five|six|seven|eight|nine|ten))?(?:\s+(?:rule\s+)?change)?\s*(?::|,(?=\s+(?:please\s+)?"
     r"(?:make|put|add|swap|switch|remove|take|move|change|use|turn|replace|place|stack|set|drop|delete|build|reverse|flip)\b))\s+(?=\S)")
 """A name the edit gives the version it makes, before its change ("Round 3: ...", "Ablation 1: ...", "Condition C: ...",
-"Height ablation: ...", "Next round, add ...", "Round two rule change: ...", "Take two: ..."): a session's own count of its
+"Height ablation: ...", "Next round, add ...", "Round two rule change: ...", "Take two: ...", "Next setup: ...", "Playtest 2:
+..."): a session's own count of its
 steps, which names the version made, never the one built on (that one is named in the change: "back to the round one tower"
 is read, or refused, there); dropped."""
 
@@ -3649,6 +3680,11 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "undo the swap", "revert that change": the last change taken back (a version had been searched for "swap")
     (re.compile(r"(?i)\b(undo|revert)\s+(?:the|that|this|my|your)\s+(?:last\s+)?(?:swap|change|edit|recolou?r\w*|move|addition|reversal|flip|step"
                 r"|rotation|pivot|tweak)\b"), r"\1"),
+    # "Scratch that last change.", "Scrap the last edit.", "Scratch that.": the whole edit takes the last change back (the
+    # verb had been refused as an action); said with more ("scratch that, make it blue") it corrects the edit, not read here
+    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|no|nah|hmm+|actually|wait|sorry|oops)\s*[,.!]?\s*)*(?:scratch|scrap|ditch|cancel|forget)"
+                r"\s+(?:that|this|(?:that|the|this|my)\s+(?:last\s+|latest\s+|previous\s+)?(?:change|edit|step))"
+                r"(?:\s+(?:last\s+)?(?:change|edit|step))?(?:\s*,?\s*(?:please|pls))?\s*[.!]?\s*$"), "undo"),
     # "row", "one long row", "a single tower instead": the task's cubes in that structure (a default task of made-up cubes
     # had been read)
     (re.compile(r"(?i)^\s*(?:(?:now|ok(?:ay)?|then|so|actually)\s*,?\s*)*(?:as\s+|into\s+)?(?:one|a|an|the|single|a\s+single)?\s*"
@@ -3862,15 +3898,22 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(r"(?i)^\s*(?:(?:add|and)\s+)?(?:one|1|another)\s+more\s+pair\b"), "add 2 more blocks"),
     # "C -> B", "3 => 5": a label cube replaced by another
     (re.compile(r"^\s*([A-Z0-9])\s*(?:->|\u2192|=>)\s*([A-Z0-9])\s*$"), r"replace the \1 with a \2"),
-    # "same thing but on the left", "same thing but front to back": the task moved, or run the other way
-    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before)\s*,?\s*but\s+(?:on|to|at|in)\s+the\s+"
+    # "all three in a row instead, brown, green, yellow from left to right": those cubes as a row in that order (the row had
+    # been lost: the direction alone was read, of a chain of relations)
+    (re.compile(rf"(?i)^\s*(?:(?:now|ok(?:ay)?|so|then|and)\s*,?\s*)*(?:all|the|those|these)\s+(?P<n>\d+|{COUNT_WORD_RE})\s+"
+                rf"(?:in|as|into)\s+an?\s+(?:row|line)(?:\s+instead)?\s*[,:;]\s*(?P<list>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE}))+)\s+"
+                r"(?P<dir>(?:from\s+)?(?:left\s+to\s+right|right\s+to\s+left|front\s+to\s+back|back\s+to\s+front))\s*[.!]?\s*$"),
+     r"line up all \g<n> cubes \g<dir>: \g<list>"),
+    # "same thing but on the left", "same thing but front to back", "same stack, but in the back left corner": the task moved,
+    # or run the other way (a stack of two default cubes had been made for "same stack, but ...")
+    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before|tower|stack|row|line|pyramid|wall|pile|set-?up|arrangement|layout|structure)\s*,?\s*but\s+(?:on|to|at|in)\s+the\s+"
                 r"(left|right|front|back)(?:\s+side)?(?:\s+of\s+the\s+table)?\s*[.!]?\s*$"), r"move it to the \1 of the table"),
-    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before)\s*,?\s*but\s+(?:going\s+|running\s+|from\s+)?"
+    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before|tower|stack|row|line|pyramid|wall|pile|set-?up|arrangement|layout|structure)\s*,?\s*but\s+(?:going\s+|running\s+|from\s+)?"
                 r"(left\s+to\s+right|right\s+to\s+left|front\s+to\s+back|back\s+to\s+front)\s*[.!]?\s*$"), r"make it \1"),
     # "same thing but DOG": the word changed
-    (re.compile(r"^\s*(?:(?:the\s+)?same\s+(?:thing|task|again|as\s+before)\s*,?\s*)?but\s+(?:with\s+)?([A-Z]{2,})\s*[.!]?\s*$"),
+    (re.compile(r"^\s*(?:(?:the\s+)?same\s+(?:thing|task|again|as\s+before|tower|stack|row|line|pyramid|wall|pile|set-?up|arrangement|layout|structure)\s*,?\s*)?but\s+(?:with\s+)?([A-Z]{2,})\s*[.!]?\s*$"),
      r"spell \1 instead"),
-    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before)\s*,?\s*but\s+"), ""),
+    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before|tower|stack|row|line|pyramid|wall|pile|set-?up|arrangement|layout|structure)\s*,?\s*but\s+"), ""),
     # notebook edits: "n_cubes=3", "region=back", "rel=left_of", "red -> gray", "+green top", "@center"
     (re.compile(r"(?i)^\s*(?:n_?cubes|num_?cubes|n_?blocks|count|n)\s*[=:]\s*(\d+)\s*$"), r"use \1 blocks instead"),
     (re.compile(r"(?i)^\s*(?:rel|relation|predicate)\s*[=:]\s*(left_of|right_of|in_front_of|behind|next_to|far_from|on|on_top_of|under)\s*$"),
@@ -3948,7 +3991,7 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(r"(?i)^\s*(?:a\s+)?(?:fresh|new|different|brand\s+new)\s+task(?:\s+(?:please|pls))?\s*[:,.!\-\u2013\u2014]+\s*"),
      "start over: "),
     # "same thing without the yellow cube": that cube removed
-    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before)\s*,?\s+(?:but\s+)?without\s+(?=the\s)"), "remove "),
+    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before|tower|stack|row|line|pyramid|wall|pile|set-?up|arrangement|layout|structure)\s*,?\s+(?:but\s+)?without\s+(?=the\s)"), "remove "),
     # "take one of the black ones off so it's a bit shorter": the purpose said after the change
     (re.compile(r"(?i)\s*,?\s+so\s+(?:that\s+)?it(?:'s|\s+is)\s+(?:a\s+(?:bit|little)\s+|slightly\s+)?(?:shorter|smaller|taller|lower|"
                 r"higher|bigger|longer)\b\s*(?=[.!?]?\s*$)"), ""),

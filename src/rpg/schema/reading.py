@@ -474,6 +474,14 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
         if reported and lexicon.GOAL_THING_RE.search(quoted[0].group("q").lower()):
             return quoted[0].group("q").strip(), [rest.strip()]
     dropped: list[str] = []
+    turn = lexicon.ROBOT_TURN_RE.search(text)
+    before = text[:turn.start()] if turn else ""
+    if turn and lexicon.GOAL_THING_RE.search(text[turn.end():].lower()) and not (  # "Nurse, keep the field sterile. Robot,
+            lexicon.GOAL_THING_RE.search(before.lower()) or lexicon.RETRACTION_RE.search(before.lower())  # place ...": said to
+            or lexicon.ROBOT_TURN_HAZARD_RE.search(before.lower()) or lexicon.colour_names() & set(re.findall(r"[a-z]+", before.lower()))
+            or lexicon.QUOTED_TASK_RE.search(before)):  # someone else, dropped
+        dropped.append(text[:turn.end()].strip())
+        text = text[turn.end():]
     pieces = re.split(r"((?<=[.!?])\s+)", text)  # sentences and the spaces between them, kept as they are
     addressed = "".join(piece if i % 2 else _without_address(piece) for i, piece in enumerate(pieces))
     if addressed != text and lexicon.GOAL_THING_RE.search(addressed.lower()):
@@ -2764,6 +2772,24 @@ _CLAUSE_SIDE_AFTER = re.compile(rf"\s*,?\s+(?:and|then)\s+(?:(?:put|place|set|mo
 right" are the two sides of one relation)"""
 
 
+_CUBE_SAID = rf"(?:the\s+|a\s+|an\s+)?(?:{COLOR_RE})\s+(?:block|cube|box|one)"
+_CUBES_SIDE_BEFORE = re.compile(rf"(?:^|[.;:!?]\s*)(?:(?:put|place|set|move|leave|keep)\s+)?(?:(?:both|2|all)\s+)?{_CUBE_SAID}(?:\s*,\s*{_CUBE_SAID})*"
+                                rf"\s*,?\s+and\s+{_CUBE_SAID}(?:\s+(?:both|all|2))?(?:\s+(?:go|goes|are|sit|stand|end\s+up|belong"
+                                r"|(?:must|should|can)\s+(?:be|go|end\s+up)))?(?:\s+(?:both|all|2))?\s*$")
+"""Cubes listed as the subject of one place ("the white cube and the black cube both go", "put the red cube and the blue
+cube"; "both" normalised to "2"), said from the start of a sentence: a bare side after them that ends the text is the table's (it had been read as
+relative to the first cube, and the text refused)."""
+
+
+def _cubes_side(m: re.Match) -> bool:
+    """Whether a bare side ends a text after cubes listed as the subject of one place ("The white cube and the black cube
+    both go to the right side."): the side has no cube of its own clause to be relative to, so it is the table's."""
+    return (_side_part_ok(m) and m.group(0).split()[0] in ("on", "to", "at", "in")
+            and (m.group("lr") or m.group("lr2")) not in ("middle", "center", "centre")
+            and re.fullmatch(r"\s*[.!]?\s*", m.string[m.end():]) is not None
+            and _CUBES_SIDE_BEFORE.search(m.string[:m.start()]) is not None)
+
+
 def _clause_side(m: re.Match) -> bool:
     """Whether a bare side ends a clause that places one cube, another cube's clause following
     ("put the red cube in the back and the green cube in front of it"), or a front or back ends
@@ -2855,7 +2881,7 @@ def mark_regions(text: str) -> str:
                                 and lexicon.BOTTOM_ROLE_SAID_RE.search(m.string)))  # middle, blue on the bottom": the tower's
         two_sides = bool(m.group("fb")) and m.group("lr") in ("left", "right")  # "at the front right": a corner of the table
         if not (m.group("tail") or corner or edge or bare_center or two_sides or _table_side(m) or _heading_side(m)
-                or _structure_side(m) or _group_side(m) or _clause_side(m)):
+                or _structure_side(m) or _group_side(m) or _clause_side(m) or _cubes_side(m)):
             return m.group(0)
         fb = m.group("fb") or ("far" if m.group("far") == "far" and corner else None)  # "the far left corner"
         if corner and not (fb and word in ("left", "right")):  # "the right corner": back right or front right?

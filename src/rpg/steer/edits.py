@@ -738,6 +738,13 @@ def read_ops(t: str) -> list[Op]:
         re.fullmatch(rf"(?:and\s+|also\s+|now\s+)*(?P<old>(?:the|both)\b[a-z0-9' ]*?)\s+(?P<new>{COLOR_RE})[.!]?", t) or \
         re.search(rf"\b(?:like|want|need|have|make|do|redo|build)\s+(?P<old>it|them|the\s+(?:whole\s+)?\w+)\s+(?:all\s+)?in\s+(?P<new>{COLOR_RE})"
                   r"(?:\s+(?:blocks|cubes|instead|please))*\W*$", t)
+    blank = next((o for o in ops if o.op == "add" and not o.params.get("items") and o.params.get("count")), None)
+    if repl and not reverse and blank is not None and add is not None and repl.start() > add.start() \
+            and re.fullmatch(r"\s*(?:it|them|they|that\s+one|this\s+one|the\s+new\s+(?:one|cube|block)s?)\s*", repl.group("old")):
+        colour = re.match(rf"(?:{COLOR_RE})\b", repl.group("new"))  # "add a third cube on top, make it cyan": the added cube's
+        if colour:  # colour (the whole task had been recoloured)
+            blank.params.update(items=[{"color": canon_color(colour.group(0))}] * blank.params["count"], count=None)
+            repl = None
     if repl and not reverse:
         sel, new = _selector(repl.group("old")), _new_item(repl.group("new"))
         bare = re.fullmatch(r"\s*'?([a-z0-9])'?\s*[.!]?", repl.group("new"))

@@ -390,15 +390,21 @@ EDIT_REGION_RE = re.compile(
 
 
 def _edit_region(t: str) -> str | None:
-    """The workspace region an edit names ("to the back left corner", "to the left side")."""
+    """The workspace region an edit names first ("to the back left corner", "to the left side")."""
+    return next(iter(_edit_regions(t)), None)
+
+
+def _edit_regions(t: str) -> list[str]:
+    """The workspace regions an edit names, in the order said."""
+    found = []
     for m in EDIT_REGION_RE.finditer(t):
         fb, lr = m.group("fb"), m.group("lr")
         if not (fb or lr) or (fb and not lr and not m.group("part") and not re.match(r"\s*of the (?:table|workspace)", t[m.end():])):
             continue
         if lr and not fb and not m.group("part") and re.match(r"\s*of\s+(?:it|them|that|this|the\s+(?!table\b|workspace\b)\w+)", t[m.end():]):
             continue  # "to the left of it": a relation to a cube, no side of the table
-        return region_name(fb, lr)
-    return None
+        found.append(region_name(fb, lr))
+    return found
 
 
 def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
@@ -466,8 +472,8 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         if not named and len(placed) > 1 and re.search(r"\b(?:both|them|all|everything|each\s+of\s+them)\b", t) \
                 and any(r != region for _, r in placed):  # "move both to the left side": every cube of the task there
             return ", then ".join(f"place the {c} block {region_phrase(region)}" for c, _ in placed).capitalize(), "modify"
-        if len(which) != 1 or placed[which[0]][1] == region:
-            return None
+        if len(which) != 1 or placed[which[0]][1] == region or len(set(_edit_regions(t))) > 1:
+            return None  # (one cube "also in the front left corner, and stay in the back right one" had been moved)
         placed[which[0]] = (placed[which[0]][0], region)
         intent = "modify"
     else:

@@ -369,7 +369,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         if sorted_piles is not None:  # "The collection should be sorted: one pile for each colour.": the task's cubes
             return sorted_piles
         schema = _same_cubes(plan.text, ref_schema, schema)
-        _refuse_same_cubes_lost(plan.text, ref_schema, schema)
+        schema = _same_cubes_kept(plan.text, ref_schema, schema)
         if relation_of(schema) and relation_of(ref_schema) and same_assets(schema, ref_schema):
             return schema, text, "modify"  # the same cubes in another relation
         if _stacks_a_new_cube_on_the_task(schema, ref_schema):  # "now put the green cube on the red cube": on top of it
@@ -819,9 +819,11 @@ def _same_cubes(edit: str, ref: TaskSchema, schema: TaskSchema) -> TaskSchema:
     return schema
 
 
-def _refuse_same_cubes_lost(edit: str, ref: TaskSchema, schema: TaskSchema) -> None:
-    """Refuse a whole-task reading of an edit that keeps the task's cubes ("same letters as a tower, D at the bottom and S on
-    top") whose cubes are not the task's (the tower had been built of D and S alone).
+def _same_cubes_kept(edit: str, ref: TaskSchema, schema: TaskSchema) -> TaskSchema:
+    """A whole-task reading of an edit that keeps the task's cubes ("same letters as a tower, D at the bottom and S on top",
+    "same three, but as a tower, yellow on the bottom and cyan on top", "all three in a row"): the reading when its cubes
+    are the task's; a tower said by its ends with the one cube left between them (:func:`_tower_middle_filled`); else
+    refused (the tower had been built of D and S alone).
 
     Raises:
         SteerError: the reading has other cubes than the version built on.
@@ -830,13 +832,39 @@ def _refuse_same_cubes_lost(edit: str, ref: TaskSchema, schema: TaskSchema) -> N
 
     from rpg.schema.meaning import descriptor
 
-    if not re.search(r"(?i)\b(?:the\s+)?same\s+(?:\d+\s+|[a-z]+\s+)?(?:letters?|digits?|numbers?|cubes|blocks|ones)\b", edit):
-        return
+    if not re.search(r"(?i)\b(?:the\s+)?same\s+(?:\d+\s+|[a-z]+\s+)?(?:letters?|digits?|numbers?|cubes|blocks|ones|tower|stack|row|line"
+                     r"|pyramid|wall|pile|structure)\b", edit) \
+            and not re.search(rf"(?i)\b(?:(?:the\s+)?same|all)\s+(?:\d+|{COUNT_WORD_RE})\b(?!\s*(?:more|of|x)\b|\s+(?:{COLOR_RE})\b)",
+                              edit):  # "same three, but as a tower", "all three in a row instead": the task's cubes
+        return schema
     had = Counter(descriptor(a) for a in ref.assets if a.kind != "goal_patch")
     now = Counter(descriptor(a) for a in schema.assets if a.kind != "goal_patch")
-    if had != now:
-        raise SteerError(f"the edit keeps the task's cubes, but reads as a task of other cubes ({schema.goal_summary}); name "
-                         "every cube's place, or use --model")
+    if had != now and (filled := _tower_middle_filled(ref, schema)) is not None:
+        return filled
+    if had == now:
+        return schema
+    raise SteerError(f"the edit keeps the task's cubes, but reads as a task of other cubes ({schema.goal_summary}); name "
+                     "every cube's place, or use --model")
+
+
+def _tower_middle_filled(ref: TaskSchema, schema: TaskSchema) -> TaskSchema | None:
+    """A tower said by its two ends of a task that keeps its cubes ("same three, but as a tower, yellow on the bottom and
+    cyan on top"): the one cube of the reference left over stands between them; ``None`` unless the reading is a tower of
+    two cubes, both the reference's, with exactly one of the reference's cubes left (coloured cubes alone)."""
+    from rpg.schema.meaning import descriptor
+
+    stacks = [q for q in schema.goal_predicate().walk() if q.name == "stack"]
+    if len(stacks) != 1 or any(a.kind != "colored_cube" for a in schema.assets + ref.assets):
+        return None
+    names = stacks[0].object_names()
+    by_name = {a.name: a for a in schema.assets}
+    left = Counter(descriptor(a) for a in ref.assets) - Counter(descriptor(a) for a in schema.assets)
+    if len(names) != 2 or len(schema.assets) != 2 or sum(left.values()) != 1 or \
+            Counter(descriptor(by_name[n]) for n in names) - Counter(descriptor(a) for a in ref.assets):
+        return None
+    (middle,) = left
+    words = [descriptor(by_name[names[0]]), middle, descriptor(by_name[names[1]])]
+    return parse("Build a tower from bottom to top: " + ", ".join(words) + ".")
 
 
 def _refuse_one_of_several(plan, ref_schema) -> None:
