@@ -7589,6 +7589,13 @@ def test_a_count_before_a_heading_is_no_identifier_label():
     # cubes listed as the subject of one bare side: the table's side (it had been read as relative to the first cube)
     ("The white cube and the black cube both go to the right side.", ["in_region(black,right)", "in_region(white,right)"]),
     ("Build a tower from two orange cubes and one purple cube. Order is up to the policy.", ["stack(orange,orange,purple)"]),
+    # digit labels said again with a place: those cubes (the digit had been read as a count: a tower of four cubes of
+    # default colours, or a cube made up in the middle; silently wrong)
+    ("Stack the cubes labelled 4 and 2 with 4 at the bottom.", ["stack(4,2)"]),
+    ("Stack the cubes labelled 4, 7 and 2 with 4 at the bottom and 2 on top.", ["stack(4,7,2)"]),
+    ("Stack the cubes numbered 4 and 2 with 4 at the bottom.", ["stack(4,2)"]),
+    ("Put the cubes numbered 4 and 2 on the red patch.", ["on_patch(2,4,patch:red)"]),
+    ("Put the red cube between the cubes labelled 4 and 6.", ["between(red;4,6)"]),
 ])
 def test_thirty_ninth_session_readings(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)

@@ -2468,6 +2468,26 @@ def test_second_attack_refusals(tmp_path, base, edit, words):
     # "Next shot: same stack, but in the back left corner": the task's stack moved (a default stack of two had been made)
     ("Stack a red cube on a white cube.", ["Next shot: same stack, but in the back left corner."],
      ("modify", ["stack(white,red)@back_left"])),
+    # people's judgement before the change set aside; a cube judged by its colour is the change's "it"
+    ("Put the white cube next to the black cube.", ["Also put a gray cube next to the white one.",
+                                                     "Testers say three is clutter. Get rid of the black cube."],
+     ("tweak", ["next_to(gray,white)"])),
+    ("Put the orange cube between the green cube and the purple cube.", ["The orange's too loud. Replace it with a gray one."],
+     ("tweak", ["between(gray;green,purple)"])),
+    ("Put four black cubes in a row at the front of the table.",
+     ["Too dark for the living room. Make all of them white.", "Client changed her mind again. Go back to the black ones."],
+     ("tweak", ["line(black,black,black,black)@front"])),
+    # a count with the cubes kept listed ("make it two cubes, yellow and green": the count had been taken for a cube)
+    ("Build a tower: yellow on the bottom, then green, then blue.", ["Players keep knocking it over. Make it two cubes, yellow and green."],
+     ("tweak", ["stack(yellow,green)"])),
+    # the middle of a row of one colour in no order: read left to right
+    ("Put a row of three white cubes along the back of the table.", ["The homeowner thinks it's too plain. Make the middle one gray."],
+     ("tweak", ["line[left_to_right](white,gray,white)@back"])),
+    # "between them" of a task of two cubes; "same spot" of cubes in a region; "lose one"
+    ("Put the black cube to the right of the white cube.", ["And stick a gray cube in between them."],
+     ("extend", ["between(gray;black,white)", "right_of(black,white)"])),
+    ("Line up three cyan cubes in a row on the right side of the table.", ["Stack them into a tower instead, same spot.", "Lose one."],
+     ("tweak", ["stack(cyan,cyan)@right"])),
 ])
 def test_steer_stranger22_edits_read_as_said(tmp_path, base, edits, expected):
     assert _steered(tmp_path, base, *edits)[-1] == expected

@@ -3500,10 +3500,43 @@ def edit_label_dropped(m: re.Match) -> str:
 _NOT_CUBE = r"(?:\s+(?:one|cube|block))?"
 _EDIT_PLACE = (r"(?:at\s+the\s+(?:bottom|top|base)|on\s+(?:the\s+)?top|in\s+the\s+middle|on\s+the\s+(?:far\s+)?(?:left|right)(?:\s+end)?"
                r"|at\s+the\s+(?:far\s+)?(?:left|right)(?:\s+end)?)")
+PERSON_NOUNS = (r"curators?|brides?|grooms?|clients?|customers?|boss(?:es)?|kids?|sons?|daughters?|child(?:ren)?|coach(?:es)?|judges?"
+                r"|panel|team|managers?|supervisors?|directors?|owners?|homeowners?|leads?|artists?|mum|mom|dad|grandma|grandpa|wife"
+                r"|husband|partners?|friends?|neighbou?rs?|(?:play)?testers?|players?|buyers?|viewers?|users?|audience|crew|people|folks"
+                r"|students?|reviewers?|designers?|producers?|actors?|visitors?|guests?|shoppers?|readers?|parents?|family|everyone"
+                r"|everybody")
+"""People who ask for, or judge, a steering edit's change ("the curator", "playtesters", "the homeowner"): read by
+:data:`_ASKER` and :data:`EDIT_PERSON_REASON_RE`."""
 _ASKER = (r"(?-i:[A-Z][a-z]+)(?<!The)(?<!This)(?<!That)(?<!Then)(?<!Now)(?<!Make)(?<!Put)|(?i:he|she|they|we)"
-          r"|(?i:the|my|our|your)\s+(?i:curator|bride|groom|client|customer|boss|kid|son|daughter|child|coach|judge|judges|panel|team"
-          r"|manager|supervisor|director|owner|lead|artist|mum|mom|dad|grandma|grandpa|wife|husband|partner|friend|neighbour|neighbor)")
+          rf"|(?i:the|my|our|your)\s+(?i:{PERSON_NOUNS})")
 """Who asks for a steering edit, said before it ("Maya says ...", "He'd like ...", "The curator asks for ...")."""
+
+EDIT_PERSON_REASON_RE = re.compile(
+    r"(?i)^\s*(?:(?:oh|well|ok(?:ay)?|so|hmm+|right|alright|honestly|yeah|nah|fine|ugh)\s*,?\s+)*(?:(?:the|my|our|your|his|her|their|some|a\s+few"
+    rf"|all\s+the)\s+)?(?:{PERSON_NOUNS}|she|he|they|we|i)\s+(?:(?:all|still|just|really|also|totally)\s+)*"
+    r"(?:say|says|said|think|thinks|thought|find|finds|found|feel|feels|felt|changed\s+(?:her|his|their|my|our)\s+minds?"
+    r"|complain\w*|hated?|hates|loved?|loves|liked?|likes|reckons?|noticed|got\s+bored|(?:keep|keeps|kept)\s+(?:knocking|bumping|tipping)"
+    r"|(?:did|do|does)(?:n't|\s+not)\s+(?:get|like|love|understand|see|notice|care\s+for))\b[^.!?;:]*[.!]\s*$")
+"""A sentence of a steering edit in which people judge the version before ("Testers say three is clutter.", "The homeowner
+thinks it's too plain.", "Nah, players didn't get it.", "Players keep knocking it over.", "Client changed her mind
+again."): what they think or did, not a change; set aside by :func:`rpg.steer.edits.reasons_set_aside` when another
+sentence of the edit says the change and it holds no word of a change, a want or a version
+(:data:`EDIT_PERSON_REASON_HAZARD_RE`)."""
+
+EDIT_PERSON_REASON_HAZARD_RE = re.compile(
+    r"\b(?:should|must|need\w*|want\w*|wish\w*|would|'d|rather|prefer\w*|instead|make|put|add|remove|swap|move|change|take"
+    r"|replace|reverse|flip|turn|stack|build|back|undo|revert\w*|first|original|before|previous|earlier|version|v\d|if|unless"
+    r"|when|until|then|next|only|same|different|like\s+(?:it|them|that|this|the)|better|worse|best|more|fewer|less|extra)\b")
+"""What keeps a person's judgement (:data:`EDIT_PERSON_REASON_RE`) in a steering edit: a change, a want, a version named,
+a condition, a comparison: it may say the change itself ("Testers say it should be four.", "They liked the first one
+better.")."""
+
+EDIT_CUBE_REASON_RE = re.compile(
+    rf"(?i)^\s*(?:(?:oh|well|ok(?:ay)?|so|hmm+|honestly|yeah|nah|ugh)\s*,?\s+)*the\s+(?P<c>{COLOR_RE})(?:\s+(?:one|cube|block))?"
+    r"(?:'s|\s+is|\s+looks|\s+seems|\s+feels)\s+(?:a\s+bit\s+|a\s+little\s+|way\s+|far\s+|much\s+|just\s+)?too\s+[a-z]+"
+    r"(?:\s+for\s+(?:the|this|that|our|my)\s+[a-z]+)?\s*[.!]\s*$")
+"""A sentence of a steering edit that judges one cube by its colour ("The orange's too loud."): the "it" of the change
+after it is that cube (:func:`rpg.steer.edits.reasons_set_aside`: "Replace it with a gray one" had been refused)."""
 _IMPERATIVE_OF = {"replaced": "replace", "moved": "move", "swapped": "swap", "removed": "remove", "painted": "paint",
                   "recoloured": "recolour", "recolored": "recolor", "put": "put", "placed": "place", "stacked": "stack",
                   "taken out": "remove", "taken off": "remove", "taken away": "remove"}
@@ -3680,6 +3713,8 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "undo the swap", "revert that change": the last change taken back (a version had been searched for "swap")
     (re.compile(r"(?i)\b(undo|revert)\s+(?:the|that|this|my|your)\s+(?:last\s+)?(?:swap|change|edit|recolou?r\w*|move|addition|reversal|flip|step"
                 r"|rotation|pivot|tweak)\b"), r"\1"),
+    # "Lose the purple cube", "and lose one", "ditch the top one": those removed (the verb had been unread)
+    (re.compile(rf"(?i)\b(?:lose|ditch|nix|yank)\s+(?=(?:the|one|1|a|an|\d|{COLOR_RE})\b)"), "remove "),
     # "Scratch that last change.", "Scrap the last edit.", "Scratch that.": the whole edit takes the last change back (the
     # verb had been refused as an action); said with more ("scratch that, make it blue") it corrects the edit, not read here
     (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|no|nah|hmm+|actually|wait|sorry|oops)\s*[,.!]?\s*)*(?:scratch|scrap|ditch|cancel|forget)"
@@ -4573,6 +4608,20 @@ def _sides_in_a_row(m: re.Match) -> str:
     return f"a row from left to right: {left}, {b}, {right}"
 
 
+def _labelled_listed(m: re.Match) -> str:
+    """"the cubes labelled 4, 7 and 2" -> each label its own cube ("the cube labelled 4 and the cube labelled 7 and ...");
+    digits said again later with a place ("with 4 at the bottom"), outside a "between" -> "the digit cubes 4, 7 and 2", whose
+    readers take that digit as its cube (it had been read as a count: four cubes of default colours, silently wrong)."""
+    labels = re.findall(r"[a-z0-9]", re.sub(r"\band\b", " ", m.group("l")))
+    again = "|".join(labels)
+    if all(x.isdigit() for x in labels) and not re.search(r"\bbetween\s*$", m.string[:m.start()]) and re.search(
+            rf"(?<![\w.])(?:{again})\s+(?:(?:is|goes|sits|should\s+be)\s+)?(?:at|on|in)\s+(?:the\s+)?(?:very\s+)?(?:bottom|top|base|middle"
+            r"|left|right|front|back)\b", m.string[m.end():]):
+        return f"the digit {m.group('n')}s " + ", ".join(labels[:-1]) + " and " + labels[-1]
+    said = "labelled" if m.group("w") == "numbered" else m.group("w")
+    return " and ".join(f"the {m.group('n')} {said} {x}" for x in labels)
+
+
 WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (SIDES_IN_A_ROW_RE, _sides_in_a_row),
     (COUNTED_ROW_GROUPS_RE, _counted_row_groups),
@@ -4658,9 +4707,11 @@ WORD_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "..., green cube on the red patch too": a clause said as well as the others, as every clause of a goal is
     (re.compile(r"(?<=\w)\s*,?\s+(?:too|as\s+well)\s*(?=[.;!]|$)"),
      ""),
-    # "between the cubes labelled 4 and 6": each label its own cube
-    (re.compile(r"\bthe\s+(cube|block)s\s+(labell?ed|marked|with)\s+([a-z0-9])\s*(?:,\s*|\s+and\s+)([a-z0-9])\b"),
-     r"the \1 \2 \3 and the \1 \2 \4"),
+    # "between the cubes labelled 4 and 6", "the cubes labelled 4, 7 and 2": each label its own cube (the last of a list of
+    # three had been left bare, and a cube of a default colour made up for it: silently wrong)
+    (re.compile(r"\bthe\s+(?P<n>cube|block)s\s+(?P<w>labell?ed|marked|numbered|with)\s+(?P<l>[a-z0-9](?:\s*,\s*[a-z0-9])*\s*(?:,\s*|\s+)(?:and\s+)?"
+                r"[a-z0-9])\b(?![\w'-])"),
+     lambda m: _labelled_listed(m)),
     # "the green in bottom", "with gray between.": a role said without its article or its "in" (non-native habits)
     (re.compile(r"\b(?:in|at|on)\s+bottom\b"),
      "at the bottom"),

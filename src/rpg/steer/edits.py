@@ -40,6 +40,9 @@ from rpg.schema.lexicon import (
     EDIT_LEADING_RE,
     EDIT_MORE_ALONE_RE,
     EDIT_OPENING,
+    EDIT_CUBE_REASON_RE,
+    EDIT_PERSON_REASON_HAZARD_RE,
+    EDIT_PERSON_REASON_RE,
     EDIT_REASON_HAZARD_RE,
     EDIT_REASON_JUDGEMENT_RE,
     EDIT_REASON_SENTENCE_RE,
@@ -318,7 +321,8 @@ def find_reference(t: str) -> RefCue:
     s = re.search(STRUCTURE_RE, region)
     n = re.search(r"\b(\d+)[- ](?:blocks?|cubes?)\b", region)
     words = [w.strip("'") for w in re.findall(r"'?\b[a-z]{2,}\b'?", region)]
-    spelled = [w for w in words if w not in VOCAB and w not in NON_WORDS and not re.fullmatch(COLOR_RE, w)]
+    spelled = [w for w in words if w not in VOCAB and w not in NON_WORDS and not re.fullmatch(COLOR_RE, w)
+               and w not in ("one", "ones")]  # "go back to the black ones": cubes, no word spelled
     cue = RefCue("search", colors=colors, exact=bool(re.search(r"\b(?:just|only)\b", region)),
                  material=mats[0] if len(mats) == 1 else None,
                  structure=structure_of_word(s.group(1)) if s else None,
@@ -613,6 +617,7 @@ def read_ops(t: str) -> list[Op]:
     if len(dict.fromkeys(pattern_colors)) >= 2:
         ops.append(Op("pattern", {"colors": list(dict.fromkeys(pattern_colors))}))
     fewer = re.search(r"\b(?:remove|delete|take away|take off|drop|get rid of)\s+(\d+|an?|one)\s+(?:more\s+)?(?:of the\s+)?(?:blocks?|cubes?)\b"
+                      r"|\b(?:remove|delete|take away|take off|drop|get rid of)\s+(1|one)\s*(?=[.!,;]|$)"  # "lose one": one cube
                       r"|\b(\d+|one)\s+(?:fewer|less)\s+(?:blocks?|cubes?)\b", t)
     more_n = re.search(r"\b(?:use|using|with|have|want|need)\s+(\d+)\s+(?:more|extra|additional)\s+(?:blocks?|cubes?)\b"
                        r"|\bmake\s+(?:[a-z]+\s+){0,3}?(\d+)\s+(?:more|extra|additional)(?:\s+(?:blocks?|cubes?))?(?:\s+(?:high|tall|long))?"
@@ -1012,13 +1017,23 @@ def _structure_named(word: str) -> str | None:
 
 def reasons_set_aside(edit: str) -> tuple[str, tuple[str, ...]]:
     """``edit`` without the sentences that say why the change is made (:data:`EDIT_REASON_SENTENCE_RE`: "That's too much
-    for today.", "She's good at this now."), and those sentences; the edit as it is when no other sentence is left or
-    when such a sentence holds anything that may change the edit (:data:`EDIT_REASON_HAZARD_RE`)."""
+    for today.", "She's good at this now."; :data:`EDIT_PERSON_REASON_RE`: "Testers say three is clutter."), and those
+    sentences; the edit as it is when no other sentence is left or when such a sentence holds anything that may change the
+    edit (:data:`EDIT_REASON_HAZARD_RE`, :data:`EDIT_PERSON_REASON_HAZARD_RE`).  A first sentence that judges one cube by
+    its colour (:data:`EDIT_CUBE_REASON_RE`: "The orange's too loud.") before a change that says "it" once: "it" is that
+    cube."""
     sentences = [x for x in re.split(r"(?<=[.!?])\s+", (edit or "").strip()) if x]
     if len(sentences) < 2:
         return edit, ()
-    reasons = tuple(x for x in sentences if EDIT_REASON_SENTENCE_RE.match(x) and EDIT_REASON_JUDGEMENT_RE.search(x)
-                    and not EDIT_REASON_HAZARD_RE.search(x.lower()))
+    cube = EDIT_CUBE_REASON_RE.match(sentences[0])
+    later = " ".join(sentences[1:])
+    if cube and len(sentences) == 2 and len(re.findall(r"(?i)\bit\b", later)) == 1 and not re.search(
+            rf"(?i)\b(?:{COLOR_RE})\s+(?:one|cube|block)\b(?!\s*$)|\bthe\s+(?:{COLOR_RE})\b", later.split(" it ")[0]):
+        # "The orange's too loud. Replace it with a gray one.": "it" is the cube judged
+        return re.sub(r"(?i)\bit\b", f"the {cube.group('c').lower()} one", later, count=1), (sentences[0],)
+    reasons = tuple(x for x in sentences if (EDIT_REASON_SENTENCE_RE.match(x) and EDIT_REASON_JUDGEMENT_RE.search(x)
+                                             and not EDIT_REASON_HAZARD_RE.search(x.lower()))
+                    or (EDIT_PERSON_REASON_RE.match(x) and not EDIT_PERSON_REASON_HAZARD_RE.search(x.lower())))
     if not reasons or len(reasons) == len(sentences):
         return edit, ()
     return " ".join(x for x in sentences if x not in reasons), reasons
@@ -1873,6 +1888,11 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             if spec.structure == "line" and spec.direction is None:
                 spec = replace(spec, direction="left_to_right")
         elif o.op in ("recolor", "relabel"):
+            if p["select"] == {"position": "middle"} and spec.structure == "line" and spec.direction is None \
+                    and len(spec.items) % 2 and len(set(spec.items)) == 1:
+                # "make the middle one gray" of a row of three white cubes, in no order: its middle place is one from
+                # either end, so the row is read left to right (white, gray, white reads the same from its other end)
+                spec = replace(spec, direction="left_to_right")
             idx = _indices(spec, p["select"], anchors)
             if not idx:
                 raise _no_such_cube(p["select"], spec)

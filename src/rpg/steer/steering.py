@@ -326,7 +326,12 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     patches = sorted({a.color or "gray" for a in ref_schema.assets if a.kind == "goal_patch"}) if ref_schema else []
     if len(patches) == 1:  # "also a blue cube on the same patch": the task's one patch
         plan = replace(plan, text=SAME_PATCH_RE.sub(f"the {patches[0]} patch", plan.text))
-    elif ref_schema is not None and not patches and SAME_PATCH_RE.search(plan.text):  # (a gray patch had been made up)
+    elif ref_schema is not None and not patches and (same := re.search(
+            r"(?i)(?:\s*,\s*|\s+)(?:(?:in|on|at)\s+)?(?:the\s+)?same\s+(?:spot|area|place)\b", plan.text)) \
+            and any(q.name == "in_region" for q in ref_schema.goal_predicate().walk()):
+        # "stack them into a tower instead, same spot" of cubes in a region of the table: that region, kept as it is
+        plan = replace(plan, text=plan.text[:same.start()] + plan.text[same.end():])
+    if ref_schema is not None and not patches and SAME_PATCH_RE.search(plan.text):  # (a gray patch had been made up)
         raise SteerError(f"'{SAME_PATCH_RE.search(plan.text).group(0)}' names a patch, but v{reference} has none; say which patch "
                          "(e.g. \"on a red patch\"), or use --model")
     stacked = _stacked_in_row_order(plan.text, ref_schema) if ref_schema is not None else None
@@ -534,7 +539,9 @@ def _restated(text: str, spec: TaskSpec, unread: list[str]) -> bool:
             v = canon_color(m.group("v")) if re.fullmatch(COLOR_RE, m.group("v")) else m.group("v").upper()
             if names and str(names[0 if m.group("e") == "first" else -1]).lower() == str(v).lower():
                 held.add(str(v).lower())
-    listed = [canon_color(x) if re.fullmatch(COLOR_RE, x) else x for x in re.findall(rf"\b(?:{COLOR_RE}|\d)\b", low.rsplit(":", 1)[-1])]
+    counted = re.sub(r"\b\d+\s+(?:blocks?|cubes?|high|tall|long|wide)\b", " ", low.rsplit(":", 1)[-1])  # "make it two cubes,
+    listed = [canon_color(x) if re.fullmatch(COLOR_RE, x) else x for x in re.findall(rf"\b(?:{COLOR_RE}|\d)\b", counted)]  # yellow
+    # and green": the count is no cube of the list
     if len(listed) == len(names) > 1 and [str(x).lower() for x in listed] == [str(n).lower() for n in names]:
         held |= {str(x).lower() for x in listed}
     return all(str(u).lower() in held for u in unread)
@@ -1327,6 +1334,23 @@ def _added_cube_named(edit: str, hist: FamilyHistory, fam: Family) -> str:
     return edit[:m.start()] + cube + edit[m.end():]
 
 
+_BETWEEN_THEM_RE = re.compile(r"(?i)\b(?:in\s+)?between\s+(?:them|the\s+two(?:\s+(?:cubes|blocks|of\s+them))?|those\s+two)\b")
+"""A place between the two cubes of the task, said by a pronoun ("stick a gray cube in between them")."""
+
+
+def _between_them_named(edit: str, hist: FamilyHistory, fam: Family) -> str:
+    """``edit`` with "between them" written as between the head version's two cubes ("between the black cube and the white
+    cube") when it has exactly two, of two colours, and nothing else but patches; else ``edit`` as it is (refused later: which
+    two?)."""
+    m = _BETWEEN_THEM_RE.search(edit)
+    if m is None:
+        return edit
+    cubes = [a for a in fam.schema(hist.head).assets if a.kind != "goal_patch"]
+    if len(cubes) != 2 or any(a.kind != "colored_cube" for a in cubes) or cubes[0].color == cubes[1].color:
+        return edit
+    return f"{edit[:m.start()]}between the {cubes[0].color} cube and the {cubes[1].color} cube{edit[m.end():]}"
+
+
 class RouteAnswer(BaseModel):
     """The model's reading of an edit: intent, reference version, extracted parameters."""
 
@@ -1442,6 +1466,7 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
             edit = edit[label.end():]  # "v2: add a green cube" of a family of v0 only: the label of the variant made
         edit = _added_cube_named(edit, hist, fam)
         if llm is None:
+            edit = _between_them_named(edit, hist, fam)  # "stick a gray cube in between them" of a task of two cubes
             plan = interpret(edit)
             reference, notes = resolve_reference(plan, hist, fam)
             notes += [f"set aside: {x!r} (a reason said for the change)" for x in plan.set_aside]
