@@ -7611,3 +7611,31 @@ def test_thirty_ninth_session_readings(text, expected):
 def test_thirty_ninth_session_refusals(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("pre", [
+    # a hostile helper's preambles before a turn to the robot (the first version of the rule had dropped them all)
+    "Upside down.", "Swap.", "Twice.", "Three of each.", "Four in total. Okay", "Spell CAT.", "Make the word DOG.", "Centered.",
+    "On the shelf.", "Like yesterday.", "As shown earlier.", "Oops.", "Make a tawer.", "Inverted.", "Vice versa.",
+    "Alphabetical order.", "Evenly spaced.", "Make the whole thing three times bigger for the big display.",
+    "Put everything on the shelf first, nurse.",
+])
+def test_words_before_a_turn_to_the_robot_that_may_change_the_task_are_not_dropped(pre):
+    text = f"{pre} Robot, put the red cube on the blue cube."
+    try:
+        atoms = meaning(check_feasibility(parse(text)))
+    except BadInput:
+        return
+    assert atoms != ["stack(blue,red)"], text  # read as if the words before had not been said
+
+
+@pytest.mark.parametrize("text", [
+    # a relation after the cube of a placement said place first belongs to that cube: not read that way, refused
+    "Left of the red cube goes the blue cube on the green cube.",
+    "Behind the red cube goes the blue cube in front of the green cube.",
+    # cubes listed before a bare side after another sentence: the side may be the tower's
+    "Make a tower of the red cube and the blue cube. The green cube and the yellow cube go on the right.",
+])
+def test_thirty_ninth_session_attack_refusals(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 import yaml
 
+from rpg.errors import BadInput
 from rpg.schema.builtin import parse
 from rpg.steer import Family, SteerError, create_family, steer
 from rpg.steer.edits import apply_ops, interpret
@@ -2497,7 +2498,6 @@ def test_steer_stranger22_edits_read_as_said(tmp_path, base, edits, expected):
     # steer_stranger22: one cube in two corners (it had been moved to the first), the task's cubes said kept but others read
     ("Put the orange cube in the front left corner and the blue cube in the back right corner.",
      "The blue cube should also be in the front left corner, and stay in the back right one.", "stay"),
-    ("Stack a red cube on a white cube.", "Same stack in the back left corner.", "keeps the task's cubes"),
     (_FRONT, "All three in a row, blue, yellow, green from left to right.", "keeps the task's cubes"),
     (_T3, "Now all three in a row.", "keeps the task's cubes"),  # (a row of four default cubes had been made)
 ])
@@ -2505,3 +2505,39 @@ def test_steer_stranger22_refusals(tmp_path, base, edit, words):
     fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     with pytest.raises(SteerError, match=re.escape(words)):
         steer(fam.path, edit)
+
+
+_LINE_YGC = "Line up the yellow cube, the green cube and the cyan cube from left to right."
+_CORNERS = "Put the red cube in the back right corner and the blue cube in the front left corner."
+
+
+@pytest.mark.parametrize("base,edit", [
+    # a hostile helper's attack on this session's steering: each had compiled silently wrong
+    ("Stack the red cube on the blue cube.", "add a red cube on top, make it cyan"),  # which cube is cyan?
+    (_LINE_YGC, "same three, but as a tower, cyan on top of yellow"),  # cyan right on yellow: no middle to fill
+    (_LINE_YGC, "same three, but as a tower, yellow first and cyan second"),
+    (_LINE_YGC, "same three, but as a tower, cyan second from the bottom and yellow on top"),
+    (_LINE_YGC, "same three as a tower with yellow directly under cyan"),  # (the green cube had been dropped)
+    ("Build a tower from bottom to top: red, green, blue, in the back left corner.",
+     "all three in a row instead, blue, green, red from left to right"),  # (the corner had been dropped)
+    ("Stack a red cube on a white cube.", "Same row but on the left."),  # a structure the task does not have
+    ("Stack a red cube on a white cube.", "same pyramid but on the left"),
+    (_CORNERS, "move the red cube to the back left corner and the front left corner"),  # one cube, two places
+    ("Build a tower of red, blue and green in the back right corner.", "move it to the front left corner and the back left corner"),
+])
+def test_thirty_ninth_session_steering_attack_is_refused(tmp_path, base, edit):
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
+    with pytest.raises(BadInput):
+        steer(fam.path, edit)
+
+
+@pytest.mark.parametrize("base,edit,expected", [
+    ("Stack the red cube on the blue cube.", "add a cube on top, make them cyan", ("extend", ["stack(cyan,cyan,cyan)"])),
+    ("Stack the red cube on the blue cube.", "add two cubes on top, make them cyan", ("extend", ["stack(blue,red,cyan,cyan)"])),
+    (_LINE_YGC, "same three as a tower, yellow on the bottom and cyan on top", ("pivot", ["stack(yellow,green,cyan)"])),
+    ("Stack a red cube on a white cube.", "Same stack in the back left corner.", ("modify", ["stack(white,red)@back_left"])),
+    (_CORNERS, "Move the red cube from the back right corner to the front right corner.",
+     ("modify", ["in_region(blue,front_left)", "in_region(red,front_right)"])),
+])
+def test_thirty_ninth_session_steering_read_as_said(tmp_path, base, edit, expected):
+    assert _steered(tmp_path, base, edit)[-1] == expected

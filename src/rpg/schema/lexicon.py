@@ -289,7 +289,10 @@ ROBOT_TURN_HAZARD_RE = re.compile(
     r"\b(?:robot\w*|arm|gripper|task|goal|instructions?|following|below|after\w*|then|next|later|first|before|instead|except|unless"
     r"|opposite|revers\w*|mirror\w*|backwards?|same|other|others|rest|again|also|too|both|them|they|their|these|those|everything"
     r"|anything|nothing|it|its|quick\w*|fast\w*|hurr\w*|rush\w*|slow\w*|careful\w*|gentl\w*|soft\w*|seconds?|minutes?|hours?|time"
-    r"|within|timer|soon|immediately|don't|do\s+not|never|no|not)\b")
+    r"|within|timer|soon|immediately|don't|do\s+not|never|no|not|words?|spell\w*|reads?|make|makes|made|build\w*|built|invert\w*"
+    r"|vice|versa|like|as|shown|setup|set-up|version|copy|copies|total|high|tall|levels?|half|bigger|smaller|larger|times"
+    r"|centred|centered|cent(?:er|re)|spaced|diagonal\w*|vertical\w*|horizontal\w*|sort\w*|shuffl\w*|hue|rainbow|alphabet\w*"
+    r"|ascend\w*|descend\w*|upside|sideways|flip\w*|swap\w*|rotat\w*|turn\w*|oops|correction)\b")
 """What keeps the words before a turn to the robot (:data:`ROBOT_TURN_RE`) from being dropped: the robot or the task
 named, a sequence or a pointer to what follows, a reversal, a comparison, a pronoun that may stand for cubes, a manner,
 time or negation that may be the robot's ("Make it quick. Robot, ...") (besides the take-backs of :data:`RETRACTION_RE`
@@ -333,7 +336,7 @@ FRAMING_SENTENCE_HAZARD_RE = re.compile(
     r"|should|must|shall|need|needs|needed|has\s+to|have\s+to|had\s+to|ought|require\w*|want\w*|expect\w*|make\s+sure"
     r"|then|after|afterwards?|next|finally|later|before|first|second|third|last|again|once|twice|thrice|times|repeat\w*"
     r"|more|less|fewer|most|least|many|much|several|few|only|same|other|another|else|different|instead|rather|vice|versa"
-    r"|revers\w*|backwards?|opposite|undo|redo|reset|revert|keep|keeps|kept|stay\w*|remain\w*|leave|leaves|left|alone|still|already"
+    r"|revers\w*|invert\w*|backwards?|opposite|undo|redo|reset|revert|keep|keeps|kept|stay\w*|remain\w*|leave|leaves|left|alone|still|already"
     r"|upside|sideways|diagonal\w*|mirror\w*|flip\w*|rotat\w*|turn\w*|swap\w*|switch\w*|shuffl\w*|scatter\w*|spread\w*"
     r"|tid(?:y|ied|ies)|clean\w*|clear\w*|knock\w*|toppl\w*|tilt\w*|fac(?:e|es|ed|ing)|vertical\w*|horizontal\w*|straight\w*"
     r"|neat\w*|tight\w*|touch\w*|close|closer|away|apart|together|align\w*|square|round|around|up|down|over|inside|outside"
@@ -468,7 +471,7 @@ A simile's possessives are the compared thing's ("like ducklings following their
 :data:`VOICE_SIMILE_BLOCKER_RE`."""
 
 VOICE_CHUNK_HAZARD_RE = re.compile(
-    r"\b(?:not|no|never|none|nothing|nowhere|neither|nor|without|except|unless|[a-z]+n't|cannot|if|when|whenever|case|provided"
+    r"\b(?:vice|versa|invert\w*|not|no|never|none|nothing|nowhere|neither|nor|without|except|unless|[a-z]+n't|cannot|if|when|whenever|case|provided"
     r"|before|after|then|next|later|finally|first|second|third|last|again|once|twice|previous\w*|earlier|usual|same|shown|show"
     r"|picture|image|photo|diagram|sketch|drawing|figure|this|that|these|those|it|them|they|one|ones|each|every|all|both"
     r"|some|any|few|several|many|more|less|fewer|most|least|only|other|another|else|rest|remaining|extra|big|bigger|biggest"
@@ -535,6 +538,14 @@ _GOAL_THINGS = (r"(?:" + "|".join(COLORS) + r"|grey|blocks?|cubes?|bricks?|box(?
 
 GOAL_THING_RE = re.compile(rf"\b{_GOAL_THINGS}\b")
 
+WORLD_COUNT_RE = re.compile(
+    rf"\b(?:\d+|{COUNT_WORD_RE}|a\s+few|another)\s+(?:more\s+)?(?!(?:{_GOAL_THINGS}|more|times?|of|other|others)\b)"
+    r"[a-z]+s?\b|\b(?:once|twice|thrice|\d+\s+times)\s+(?:a\s+|per\s+|every\s+)?(?:day|daily|week|weekly|month|monthly|year|night"
+    r"|nightly|hour|hourly)\b|\ball\s+(?:good|set|fine)\b")
+"""A count or a frequency of a thing of the speaker's own world ("one capsule", "500 milligrams", "one more pint", "twice
+daily", "all good"): set apart before the words before a turn to the robot are weighed
+(:func:`rpg.schema.reading._said_to_someone_else`); a count of a cube, block or anything of a goal is none."""
+
 GOAL_THING_PREFIX_RE = re.compile(rf"\b{_GOAL_THINGS}")
 """A word that begins like a goal's word ("towered", "stacking", "bluish", and harmlessly "topic"): keeps a chunk of a voice
 (:func:`rpg.schema.reading._voice_chunk`), which may be a goal said in a form of its own."""
@@ -580,7 +591,8 @@ REPORTED_REQUEST_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"(?i)(?:^|(?<=[.;:!?]\s))(?P<where>(?:between|on\s+top\s+of|on(?:to)?|behind|in\s+front\s+of|(?:to\s+the\s+|on\s+the\s+)?"
                 r"(?:left|right)\s+of|next\s+to|beside|under(?:neath)?|below|beneath|above|atop)\s+the\s+[^.;:!?,]{3,60}?)\s+"
                 r"(?:goes|go|belongs|comes|(?:should|must|will|has\s+to)\s+(?:go|be|sit|stand|end\s+up))\s+"
-                rf"(?P<what>the\s+(?:{COLOR_RE})\s+(?:cube|block|one))\s*(?P<end>[.!]?)(?=\s|$)"),
+                rf"(?P<what>the\s+(?:{COLOR_RE})\s+(?:cube|block|one))\s*(?P<end>[.!]|$)"),  # (the sentence ends there: a
+     # relation after it, "... goes the blue cube on the green cube", had been read of the other cube)
      lambda m: f"Put {m.group('what')} {m.group('where')}{m.group('end')}"),
 )
 """A task reported as what something asks for, or said with its place first (:func:`rpg.schema.reading.normalize_words`,
@@ -3939,16 +3951,19 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
                 rf"(?:in|as|into)\s+an?\s+(?:row|line)(?:\s+instead)?\s*[,:;]\s*(?P<list>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE}))+)\s+"
                 r"(?P<dir>(?:from\s+)?(?:left\s+to\s+right|right\s+to\s+left|front\s+to\s+back|back\s+to\s+front))\s*[.!]?\s*$"),
      r"line up all \g<n> cubes \g<dir>: \g<list>"),
-    # "same thing but on the left", "same thing but front to back", "same stack, but in the back left corner": the task moved,
-    # or run the other way (a stack of two default cubes had been made for "same stack, but ...")
-    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before|tower|stack|row|line|pyramid|wall|pile|set-?up|arrangement|layout|structure)\s*,?\s*but\s+(?:on|to|at|in)\s+the\s+"
+    # "same stack, but in the back left corner": that structure put there (checked to be the task's: "same row but on the
+    # left" of a tower is refused; a stack of two default cubes had been made)
+    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(tower|stack|row|line|pyramid|wall|pile)\s*,?\s*(?:but\s+)?(?=(?:in|on|at|to|into)\s+the\s+"
+                r"(?:far\s+|very\s+)?(?:left|right|front|back|rear|middle|cent(?:er|re))\b)"), r"put the \1 "),
+    # "same thing but on the left", "same thing but front to back": the task moved, or run the other way
+    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before|set-?up|arrangement|layout)\s*,?\s*but\s+(?:on|to|at|in)\s+the\s+"
                 r"(left|right|front|back)(?:\s+side)?(?:\s+of\s+the\s+table)?\s*[.!]?\s*$"), r"move it to the \1 of the table"),
-    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before|tower|stack|row|line|pyramid|wall|pile|set-?up|arrangement|layout|structure)\s*,?\s*but\s+(?:going\s+|running\s+|from\s+)?"
+    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before|set-?up|arrangement|layout)\s*,?\s*but\s+(?:going\s+|running\s+|from\s+)?"
                 r"(left\s+to\s+right|right\s+to\s+left|front\s+to\s+back|back\s+to\s+front)\s*[.!]?\s*$"), r"make it \1"),
     # "same thing but DOG": the word changed
-    (re.compile(r"^\s*(?:(?:the\s+)?same\s+(?:thing|task|again|as\s+before|tower|stack|row|line|pyramid|wall|pile|set-?up|arrangement|layout|structure)\s*,?\s*)?but\s+(?:with\s+)?([A-Z]{2,})\s*[.!]?\s*$"),
+    (re.compile(r"^\s*(?:(?:the\s+)?same\s+(?:thing|task|again|as\s+before|set-?up|arrangement|layout)\s*,?\s*)?but\s+(?:with\s+)?([A-Z]{2,})\s*[.!]?\s*$"),
      r"spell \1 instead"),
-    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before|tower|stack|row|line|pyramid|wall|pile|set-?up|arrangement|layout|structure)\s*,?\s*but\s+"), ""),
+    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before|set-?up|arrangement|layout)\s*,?\s*but\s+"), ""),
     # notebook edits: "n_cubes=3", "region=back", "rel=left_of", "red -> gray", "+green top", "@center"
     (re.compile(r"(?i)^\s*(?:n_?cubes|num_?cubes|n_?blocks|count|n)\s*[=:]\s*(\d+)\s*$"), r"use \1 blocks instead"),
     (re.compile(r"(?i)^\s*(?:rel|relation|predicate)\s*[=:]\s*(left_of|right_of|in_front_of|behind|next_to|far_from|on|on_top_of|under)\s*$"),
@@ -4026,7 +4041,7 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(r"(?i)^\s*(?:a\s+)?(?:fresh|new|different|brand\s+new)\s+task(?:\s+(?:please|pls))?\s*[:,.!\-\u2013\u2014]+\s*"),
      "start over: "),
     # "same thing without the yellow cube": that cube removed
-    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before|tower|stack|row|line|pyramid|wall|pile|set-?up|arrangement|layout|structure)\s*,?\s+(?:but\s+)?without\s+(?=the\s)"), "remove "),
+    (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before|set-?up|arrangement|layout)\s*,?\s+(?:but\s+)?without\s+(?=the\s)"), "remove "),
     # "take one of the black ones off so it's a bit shorter": the purpose said after the change
     (re.compile(r"(?i)\s*,?\s+so\s+(?:that\s+)?it(?:'s|\s+is)\s+(?:a\s+(?:bit|little)\s+|slightly\s+)?(?:shorter|smaller|taller|lower|"
                 r"higher|bigger|longer)\b\s*(?=[.!?]?\s*$)"), ""),

@@ -459,6 +459,26 @@ def drop_voice_chunks(text: str) -> tuple[str, list[str]]:
     return " ".join(sentences), dropped
 
 
+def _said_to_someone_else(before: str) -> bool:
+    """Whether the words ``before`` a turn to the robot (:data:`lexicon.ROBOT_TURN_RE`) are of the speaker's own world
+    ("Take one capsule twice daily with food.", "Nurse, keep the field sterile."): four words or more with a thing of that
+    world (a word the parser does not read), nothing of a goal or a colour, no take-back, nothing that may turn, count,
+    order, place or time the task (:data:`lexicon.ROBOT_TURN_HAZARD_RE`, :data:`lexicon.FRAMING_SENTENCE_HAZARD_RE`) once
+    the counts and times of that world's own things are set apart (:data:`lexicon.WORLD_COUNT_RE`: "one capsule", "500
+    milligrams", "twice daily"), and no "keep" or "leave" but one said to a person called by name ("Nurse, keep ...")."""
+    low = before.lower()
+    words = re.findall(r"[a-z][a-z'\-]*", low)
+    if len(words) < 4 or lexicon.GOAL_THING_RE.search(low) or lexicon.RETRACTION_RE.search(low) \
+            or lexicon.ROBOT_TURN_HAZARD_RE.search(low) or lexicon.QUOTED_TASK_RE.search(before) \
+            or lexicon.colour_names() & set(words) or not any(w not in VOCAB and not lexicon.is_dictionary_word(w) or (
+                w not in VOCAB and "NOUN" in lexicon.parts_of_speech(w)) for w in words):
+        return False
+    weighed = lexicon.WORLD_COUNT_RE.sub(" ", low)
+    if re.match(r"\s*[a-z]+\s*,", weighed) and re.match(r"\s*[A-Z][a-z]+\s*,", before):  # "Nurse, keep the field sterile."
+        weighed = re.sub(r"\b(?:keep|keeps|leave|leaves)\b", " ", weighed)
+    return not lexicon.FRAMING_SENTENCE_HAZARD_RE.search(weighed)
+
+
 def drop_asides(text: str) -> tuple[str, list[str]]:
     """``text`` without its asides, and the asides dropped: exclaimed sentences (:data:`lexicon.EXCLAIMED_SENTENCE_RE`:
     "Put the green block on the purple block. What a tower!") that name nothing of a goal
@@ -475,12 +495,8 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
             return quoted[0].group("q").strip(), [rest.strip()]
     dropped: list[str] = []
     turn = lexicon.ROBOT_TURN_RE.search(text)
-    before = text[:turn.start()] if turn else ""
-    if turn and lexicon.GOAL_THING_RE.search(text[turn.end():].lower()) and not (  # "Nurse, keep the field sterile. Robot,
-            lexicon.GOAL_THING_RE.search(before.lower()) or lexicon.RETRACTION_RE.search(before.lower())  # place ...": said to
-            or lexicon.ROBOT_TURN_HAZARD_RE.search(before.lower()) or lexicon.colour_names() & set(re.findall(r"[a-z]+", before.lower()))
-            or lexicon.QUOTED_TASK_RE.search(before)):  # someone else, dropped
-        dropped.append(text[:turn.end()].strip())
+    if turn and lexicon.GOAL_THING_RE.search(text[turn.end():].lower()) and _said_to_someone_else(text[:turn.start()]):
+        dropped.append(text[:turn.end()].strip())  # "Nurse, keep the field sterile. Robot, place ...": said to someone else
         text = text[turn.end():]
     pieces = re.split(r"((?<=[.!?])\s+)", text)  # sentences and the spaces between them, kept as they are
     addressed = "".join(piece if i % 2 else _without_address(piece) for i, piece in enumerate(pieces))
@@ -2773,12 +2789,13 @@ right" are the two sides of one relation)"""
 
 
 _CUBE_SAID = rf"(?:the\s+|a\s+|an\s+)?(?:{COLOR_RE})\s+(?:block|cube|box|one)"
-_CUBES_SIDE_BEFORE = re.compile(rf"(?:^|[.;:!?]\s*)(?:(?:put|place|set|move|leave|keep)\s+)?(?:(?:both|2|all)\s+)?{_CUBE_SAID}(?:\s*,\s*{_CUBE_SAID})*"
+_CUBES_SIDE_BEFORE = re.compile(rf"^\s*(?:(?:put|place|set|move|leave|keep)\s+)?(?:(?:both|2|all)\s+)?{_CUBE_SAID}(?:\s*,\s*{_CUBE_SAID})*"
                                 rf"\s*,?\s+and\s+{_CUBE_SAID}(?:\s+(?:both|all|2))?(?:\s+(?:go|goes|are|sit|stand|end\s+up|belong"
                                 r"|(?:must|should|can)\s+(?:be|go|end\s+up)))?(?:\s+(?:both|all|2))?\s*$")
 """Cubes listed as the subject of one place ("the white cube and the black cube both go", "put the red cube and the blue
-cube"; "both" normalised to "2"), said from the start of a sentence: a bare side after them that ends the text is the table's (it had been read as
-relative to the first cube, and the text refused)."""
+cube"; "both" normalised to "2"), the whole text before a bare side that ends it: the side is the table's (it had been read
+as relative to the first cube, and the text refused; after another sentence, "Make a tower of red and blue. The green cube and
+the yellow cube go on the right.", the side may be the tower's, and stays relative)."""
 
 
 def _cubes_side(m: re.Match) -> bool:

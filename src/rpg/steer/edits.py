@@ -608,6 +608,11 @@ def read_ops(t: str) -> list[Op]:
         move = other
     region = _region_of(t)
     if region:
+        from rpg.steer.relations import places_said
+
+        if len(places_said(t) | {region}) > 1:  # "move it to the front left corner and the back left corner": the first
+            raise SteerError(f"the edit puts the task in {len(places_said(t) | {region})} places of the table at once "  # had won
+                             f"({', '.join(sorted(places_said(t) | {region}))}); say one place, or use --model")
         ops.append(Op("region", {"region": region}))
     if move and _selector(move.group("sel")) and not region:
         at = "other" if move is other else "bottom" if move.group("where") in ("bottom", "base", "start", "beginning") else "top"
@@ -744,12 +749,19 @@ def read_ops(t: str) -> list[Op]:
         re.search(rf"\b(?:like|want|need|have|make|do|redo|build)\s+(?P<old>it|them|the\s+(?:whole\s+)?\w+)\s+(?:all\s+)?in\s+(?P<new>{COLOR_RE})"
                   r"(?:\s+(?:blocks|cubes|instead|please))*\W*$", t)
     blank = next((o for o in ops if o.op == "add" and not o.params.get("items") and o.params.get("count")), None)
-    if repl and not reverse and blank is not None and add is not None and repl.start() > add.start() \
-            and re.fullmatch(r"\s*(?:it|them|they|that\s+one|this\s+one|the\s+new\s+(?:one|cube|block)s?)\s*", repl.group("old")):
+    one_said = r"it|that\s+one|this\s+one|the\s+new\s+(?:one|cube|block)"  # (a pronoun in the added cubes' number)
+    if repl and not reverse and blank is not None and add is not None and repl.start() > add.start() and re.fullmatch(
+            rf"\s*(?:{one_said})\s*" if blank.params["count"] == 1 else r"\s*(?:them|they|those|these|the\s+new\s+(?:ones|cubes|blocks))\s*",
+            repl.group("old")):
         colour = re.match(rf"(?:{COLOR_RE})\b", repl.group("new"))  # "add a third cube on top, make it cyan": the added cube's
         if colour:  # colour (the whole task had been recoloured)
             blank.params.update(items=[{"color": canon_color(colour.group(0))}] * blank.params["count"], count=None)
             repl = None
+    coloured = next((o for o in ops if o.op == "add" and o.params.get("items")), None)
+    if repl and coloured is not None and add is not None and repl.start() > add.start() \
+            and re.fullmatch(rf"\s*(?:{one_said})\s*", repl.group("old")):
+        raise SteerError(f"'{repl.group(0).strip()}' after '{add.group(0).strip()}' may recolour the cube added, which the edit "
+                         "names by colour already, or the whole task; say the added cube's colour once, or use --model")
     if repl and not reverse:
         sel, new = _selector(repl.group("old")), _new_item(repl.group("new"))
         bare = re.fullmatch(r"\s*'?([a-z0-9])'?\s*[.!]?", repl.group("new"))
@@ -998,7 +1010,8 @@ def _interpret_material(edit: str) -> EditPlan:
         if kind:
             plan = replace(plan, checks=(*plan.checks, ("structure", kind)))
     if not plan.standalone and not plan.fresh and not any(o.op in ("structure", "keep") for o in plan.ops):
-        named = re.findall(r"(?i)\bthe\s+(?:whole\s+|entire\s+)?(tower|stack|row|line|pyramid|wall|grid|circle|ring|pile)\b(?!\s+of\b)", edit or "")
+        named = re.findall(r"(?i)\bthe\s+(?:whole\s+|entire\s+)?(tower|stack|row|line|pyramid|wall|grid|circle|ring|pile)\b(?!\s+of\b)",
+                           f"{edit or ''} {plan.text}")  # (as said and as rewritten: "same row but on the left")
         kinds = sorted({k for w in named if (k := _structure_named(w))})
         if len(kinds) == 1:  # "the row goes on the right side": the task's structure is a row (checked; a tower had been moved)
             plan = replace(plan, checks=(*plan.checks, ("structure", kinds[0])))
@@ -1089,7 +1102,8 @@ def _interpret_counted(edit: str) -> EditPlan:
             plan = None
         if plan is None or plan.standalone or not plan.ops:  # the whole edit read ("now the same three in a tower"
             plan = _interpret_rested(edit)  # restates the task's cubes), the count checked all the same
-        return replace(plan, checks=(*plan.checks, count))
+        return replace(plan, checks=(*plan.checks, count, ("same", True)))  # (the task's cubes kept: checked of a whole
+        # task read, :func:`rpg.steer.steering._same_cubes_kept`)
     alone = EDIT_COUNT_ALONE_RE.fullmatch(edit or "")
     was = alone and (alone.group("was") or alone.group("was2"))
     if was:  # "six cubes in the row instead of four", "6 not 3": the count before checked, the new one applied

@@ -394,6 +394,18 @@ def _edit_region(t: str) -> str | None:
     return next(iter(_edit_regions(t)), None)
 
 
+_PLACE_SAID_RE = re.compile(r"(?<!from )(?<!of )\bthe\s+(?:far\s+)?(?P<fb>front|back|rear)(?:[\s-]+(?P<lr>left|right))?(?:\s+(?:corner|side|half|edge)"
+                            r"|\s+(?=one\b))|(?<!from )(?<!of )\bthe\s+(?P<lr2>left|right)\s+(?:side|half|edge)\b")
+"""A place of the table said in an edit ("the back left corner", "the left side", "the back right one"), not one it leaves
+("from the back left corner"): :func:`places_said`."""
+
+
+def places_said(t: str) -> set[str]:
+    """The places of the table an edit names as where something goes (:data:`_PLACE_SAID_RE`): more than one for one cube or
+    one structure is two places at once ("move the red cube to the back left corner and the front left corner")."""
+    return {region_name(m.group("fb"), m.group("lr") or m.group("lr2")) for m in _PLACE_SAID_RE.finditer(t.lower())}
+
+
 def _edit_regions(t: str) -> list[str]:
     """The workspace regions an edit names, in the order said."""
     found = []
@@ -472,7 +484,7 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         if not named and len(placed) > 1 and re.search(r"\b(?:both|them|all|everything|each\s+of\s+them)\b", t) \
                 and any(r != region for _, r in placed):  # "move both to the left side": every cube of the task there
             return ", then ".join(f"place the {c} block {region_phrase(region)}" for c, _ in placed).capitalize(), "modify"
-        if len(which) != 1 or placed[which[0]][1] == region or len(set(_edit_regions(t))) > 1:
+        if len(which) != 1 or placed[which[0]][1] == region or len(set(_edit_regions(t)) | places_said(t)) > 1:
             return None  # (one cube "also in the front left corner, and stay in the back right one" had been moved)
         placed[which[0]] = (placed[which[0]][0], region)
         intent = "modify"

@@ -374,7 +374,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         if sorted_piles is not None:  # "The collection should be sorted: one pile for each colour.": the task's cubes
             return sorted_piles
         schema = _same_cubes(plan.text, ref_schema, schema)
-        schema = _same_cubes_kept(plan.text, ref_schema, schema)
+        schema = _same_cubes_kept(plan.text, ref_schema, schema, ("same", True) in plan.checks)
         if relation_of(schema) and relation_of(ref_schema) and same_assets(schema, ref_schema):
             return schema, text, "modify"  # the same cubes in another relation
         if _stacks_a_new_cube_on_the_task(schema, ref_schema):  # "now put the green cube on the red cube": on top of it
@@ -826,7 +826,7 @@ def _same_cubes(edit: str, ref: TaskSchema, schema: TaskSchema) -> TaskSchema:
     return schema
 
 
-def _same_cubes_kept(edit: str, ref: TaskSchema, schema: TaskSchema) -> TaskSchema:
+def _same_cubes_kept(edit: str, ref: TaskSchema, schema: TaskSchema, kept: bool = False) -> TaskSchema:
     """A whole-task reading of an edit that keeps the task's cubes ("same letters as a tower, D at the bottom and S on top",
     "same three, but as a tower, yellow on the bottom and cyan on top", "all three in a row"): the reading when its cubes
     are the task's; a tower said by its ends with the one cube left between them (:func:`_tower_middle_filled`); else
@@ -842,23 +842,39 @@ def _same_cubes_kept(edit: str, ref: TaskSchema, schema: TaskSchema) -> TaskSche
     if not re.search(r"(?i)\b(?:the\s+)?same\s+(?:\d+\s+|[a-z]+\s+)?(?:letters?|digits?|numbers?|cubes|blocks|ones|tower|stack|row|line"
                      r"|pyramid|wall|pile|structure)\b", edit) \
             and not re.search(rf"(?i)\b(?:(?:the\s+)?same|all)\s+(?:\d+|{COUNT_WORD_RE})\b(?!\s*(?:more|of|x)\b|\s+(?:{COLOR_RE})\b)",
-                              edit):  # "same three, but as a tower", "all three in a row instead": the task's cubes
-        return schema
+                              edit) and not kept:  # "same three, but as a tower", "all three in a row instead": the task's
+        return schema  # cubes (``kept``: said so before the edit was rewritten, "same three as a tower, ...")
     had = Counter(descriptor(a) for a in ref.assets if a.kind != "goal_patch")
     now = Counter(descriptor(a) for a in schema.assets if a.kind != "goal_patch")
-    if had != now and (filled := _tower_middle_filled(ref, schema)) is not None:
-        return filled
+    if had != now and (filled := _tower_middle_filled(edit, ref, schema)) is not None:
+        schema, now = filled, had
+    placed = {q.name for q in ref.goal_predicate().walk() if q.name in ("in_region", "on_patch")}
+    if had == now and placed - {q.name for q in schema.goal_predicate().walk()}:
+        # "all three in a row instead, ..." of a tower in the back left corner: the corner had been dropped
+        raise SteerError(f"the edit keeps the task's cubes but says nothing of where they stand ({ref.goal_summary}); "
+                         "say the place again (e.g. \"..., in the back left corner\"), or use --model")
     if had == now:
         return schema
     raise SteerError(f"the edit keeps the task's cubes, but reads as a task of other cubes ({schema.goal_summary}); name "
                      "every cube's place, or use --model")
 
 
-def _tower_middle_filled(ref: TaskSchema, schema: TaskSchema) -> TaskSchema | None:
+def _tower_middle_filled(edit: str, ref: TaskSchema, schema: TaskSchema) -> TaskSchema | None:
     """A tower said by its two ends of a task that keeps its cubes ("same three, but as a tower, yellow on the bottom and
     cyan on top"): the one cube of the reference left over stands between them; ``None`` unless the reading is a tower of
-    two cubes, both the reference's, with exactly one of the reference's cubes left (coloured cubes alone)."""
+    two cubes, both the reference's, with exactly one of the reference's cubes left (coloured cubes alone), and the edit
+    says the one at the bottom and the other at the top and no other place ("cyan on top of yellow" puts cyan right on
+    yellow, "yellow first and cyan second" makes cyan second: neither is filled)."""
     from rpg.schema.meaning import descriptor
+
+    low = edit.lower()
+    ends = [m.group(1) for m in re.finditer(rf"\b({COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:is\s+|goes\s+|sits\s+)?(?:(?:at|on)\s+the\s+"
+                                            r"(?:very\s+)?(?:bottom|base)|at\s+the\s+(?:very\s+)?top|on\s+(?:the\s+very\s+)?top)\b(?!\s+of\b)",
+                                            low)]
+    if len(ends) != 2 or re.search(r"\b(?:of|under\w*|below|beneath|above|over|atop|onto|directly|just|right|first|second|third"
+                                   r"|next|then|middle|after|before|between|from)\b", re.sub(r"\bfrom\s+the\s+bottom\s+up\b", " ", low)
+                                   .split("tower", 1)[-1]):
+        return None
 
     stacks = [q for q in schema.goal_predicate().walk() if q.name == "stack"]
     if len(stacks) != 1 or any(a.kind != "colored_cube" for a in schema.assets + ref.assets):
@@ -871,6 +887,8 @@ def _tower_middle_filled(ref: TaskSchema, schema: TaskSchema) -> TaskSchema | No
         return None
     (middle,) = left
     words = [descriptor(by_name[names[0]]), middle, descriptor(by_name[names[1]])]
+    if [canon_color(c) for c in ends] not in ([words[0], words[2]], [words[2], words[0]]):
+        return None
     return parse("Build a tower from bottom to top: " + ", ".join(words) + ".")
 
 
