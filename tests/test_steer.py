@@ -2541,3 +2541,41 @@ def test_thirty_ninth_session_steering_attack_is_refused(tmp_path, base, edit):
 ])
 def test_thirty_ninth_session_steering_read_as_said(tmp_path, base, edit, expected):
     assert _steered(tmp_path, base, edit)[-1] == expected
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # steer_stranger22's other classes (read at the thirty-ninth session): new task markers of a trade, a word spelled though
+    # it is a known word, a wall's width said "across", "stretch it to five", "the other way round", a patch used instead,
+    # the middle cube said again, the original said as "the way it was at the start", the word moved
+    ("Build a row of cubes from left to right: red, orange, yellow, green.",
+     ["New idea for the back counter, nothing to do with the row: just a tower of three white cubes."],
+     ("fresh", ["stack(white,white,white)"])),
+    ("Stack three red cubes on the green patch.",
+     ["New room, new puzzle: the brown cube in the back right corner and the purple cube in the front left corner."],
+     ("fresh", ["in_region(brown,back_right)", "in_region(purple,front_left)"])),
+    ("Spell TOY with letter cubes, left to right.", ["Now make it say TOYS."],
+     ("extend", ["line[left_to_right](T,O,Y,S)", "reads(T,O,Y,S;direction=left_to_right,face=up,text=TOYS)"])),
+    ("Make a wall of blue cubes, three across and two high.", ["Make it four across."],
+     ("tweak", ["wall(blue,blue,blue,blue,blue,blue,blue,blue)"])),
+    ("Put three pink cubes in a row.", ["Playtest 2: stretch it to five."], ("tweak", ["line(pink,pink,pink,pink,pink)"])),
+    ("Put the blue cube on the left side of the table and the green cube on the right side of the table.",
+     ["The buyers would rather have them the other way round."], ("modify", ["in_region(blue,right)", "in_region(green,left)"])),
+    ("Put the white cube on top of the gray cube, and the gray cube on the blue patch.", ["Use a red patch instead of the blue one."],
+     ("tweak", ["on_patch(gray,patch:red)", "stack(gray,white)"])),
+    ("Put the gray cube between the red cube and the yellow cube.", ["Fine, a brown cube in the middle then."],
+     ("tweak", ["between(brown;red,yellow)"])),
+    ("Build a tower of three cubes: blue on the bottom, then yellow, then red on top.",
+     ["Swap the yellow one for a green one.", "Put it back the way it was at the start."], ("tweak", ["stack(blue,yellow,red)"])),
+    ("Spell HOME with letter cubes from left to right.", ["Put the word along the back of the table."],
+     ("modify", ["line[left_to_right](H,O,M,E)@back", "reads(H,O,M,E;direction=left_to_right,face=up,text=HOME)"])),
+])
+def test_steer_stranger22_trade_edits(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+def test_both_moved_with_a_relation_is_not_read_as_a_move_alone(tmp_path):
+    # "next to each other" had been dropped (both put in the centre, silently wrong)
+    fam = Family(create_family(compiled("Put the blue cube on the left side of the table and the green cube on the right side of "
+                                        "the table.", tmp_path, name="fam").path).path)
+    with pytest.raises(BadInput):
+        steer(fam.path, "Put them both in the center instead, next to each other.")

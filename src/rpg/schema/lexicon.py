@@ -278,10 +278,11 @@ DAYS_TASK_RE = re.compile(r"(?i)\b(?:today|tonight|this\s+(?:morning|afternoon|e
 ROBOT_TURN_RE = re.compile(
     r"(?i)(?:(?<=[.!?;]\s)|(?<=\s-\s)|(?<=\s[\u2013\u2014]\s)|(?<=,\s))(?:(?:and|but|so|then)\s+)?(?:(?:now|ok(?:ay)?|right|alright)\s*,?\s+)?"
     r"(?:(?:and\s+)?(?:as\s+)?for\s+(?:(?:the|our|my)\s+|you,?\s+(?:the\s+)?)robot|(?:hey\s+|ok(?:ay)?\s+|now\s+)?robot"
-    r"|(?<=now\s)(?:for\s+)?the\s+(?:cubes|blocks)|(?:on\s*to|back\s+to|as\s+for)\s+the\s+(?:cubes|blocks))\s*[:,\u2013\u2014]\s*(?=\S)")
+    r"|(?<=now\s)(?:for\s+)?the\s+(?:cubes|blocks)|(?:on\s*to|back\s+to|as\s+for)\s+the\s+(?:cubes|blocks))\s*[:,\u2013\u2014]\s*(?=\S)"
+    r"|(?:(?<=[.!?;]\s)|(?<=,\s))(?:(?:and|but|so)\s+)?(?:meanwhile|in\s+the\s+meantime)\s*[:,\u2013\u2014]?\s+(?=\S)")
 """A turn from a voice's own world to the robot or the cubes in the middle of a text ("Take one capsule twice daily with
 food. And for the robot: put ...", "Nurse, keep the field sterile. Robot, place ...", "Dosage double-checked. Now the
-cubes: ..."): what comes before it is said to someone else or of the speaker's world, and is dropped by
+cubes: ...", "Closing the incision, three sutures. Meanwhile the yellow cube goes ..."): what comes before it is said to someone else or of the speaker's world, and is dropped by
 :func:`rpg.schema.reading.drop_asides` when it names nothing of a goal and takes nothing back
 (:data:`ROBOT_TURN_HAZARD_RE`)."""
 
@@ -3318,9 +3319,13 @@ EDIT_FRESH_RE = re.compile(
     r"|(?:a\s+)?(?:completely|totally|entirely)\s+(?:different|new|other)\s+(?:task|one|thing)|different task"
     r"|forget (?:it|that|this|everything|about it|all (?:of )?that)|scr(?:atch|ap) (?:all (?:of )?that|that|this|it|everything)"
     r"(?:\s+and\s+start\s+(?:again|over))?|(?:a\s+)?new\s+(?:thing|one)(?=\s*[:,.!\-])|diff(?:erent)?\s+task|(?:a\s+)?brand\s+new\s+one"
-    r"|(?:let'?s\s+)?start (?:again|anew)|never\s*mind|let'?s do something else)\b[:,.!]?")
+    r"|(?:let'?s\s+)?start (?:again|anew)|never\s*mind|let'?s do something else"
+    r"|(?:a\s+)?(?:completely|totally|entirely)\s+(?:different|new|other)\s+(?:set|set-?up|scene|game|puzzle|job|room|project|level)"
+    r"|(?:a\s+)?(?:different|new|another)\s+(?:set-?up|scene|game|puzzle|job|room|project|house|idea)(?=\s*[:,.!\-])"
+    r"|nothing\s+to\s+do\s+with\s+(?:the|this|that|our|my)\s+(?:row|line|tower|stack|pyramid|wall|pile|task|one|last\s+one|"
+    r"(?:first|previous|old)\s+one))\b[:,.!]?")
 """Words that make an edit a new, unrelated task (Fresh): "start over: ...", "completely
-different task now: ..."."""
+different task now: ...", "New room, new puzzle: ...", "New idea for the back counter, nothing to do with the row: ..."."""
 
 EDIT_ANAPHORA_RE = re.compile(
     r"\b(?:it|them|they|its|their|those|these|instead|back|again|now|also|too|more|rather|both|whole)\b"
@@ -3576,6 +3581,22 @@ dropped."""
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
     # "Round 3: ...", "Condition C: ...", "Next round, add ...": the name of the version made
     (EDIT_STEP_NAME_RE, ""),
+    # "Fine, let's not risk it.": a reason said as a person's caution, before the change
+    (re.compile(r"(?i)^\s*(?:(?:fine|ok(?:ay)?|alright|right|yeah)\s*[,.!]?\s*)?let'?s\s+not\s+risk\s+it\s*[.!]\s+(?=\S)"), ""),
+    # "Make it four across" of a wall: four wide
+    (re.compile(r"(?i)\b(\d+|" + COUNT_WORD_RE + r")\s+across\b"), r"\1 wide"),
+    # "stretch it to five", "shrink it to three": that count
+    (re.compile(r"(?i)\b(?:stretch|extend|lengthen|grow|shrink|cut|trim)\s+(it|the\s+(?:row|line|tower|stack))\s+(?:down\s+|out\s+)?to\s+"
+                r"(?=(?:\d+|" + COUNT_WORD_RE + r")\b)"), r"make \1 "),
+    # "the buyers would rather have them the other way round": the two exchanged
+    (re.compile(r"(?i)^.*?\b(?:would\s+rather\s+have|(?:want|wants|prefer|prefers|'d\s+like)|have|put|make)\s+(?:them|the\s+two)\s+"
+                r"(?:the\s+)?other\s+way\s+(?:a)?round\s*[.!]?\s*$"), "swap them"),
+    # "Shoot it again with the order reversed", "do it again with the order reversed": the order reversed
+    (re.compile(r"(?i)^\s*(?:shoot|do|try|build|make|take|run)\s+it\s+again\s*,?\s+(?:but\s+)?with\s+the\s+order\s+reversed\s*[.!]?\s*$"),
+     "reverse the order"),
+    # "Use a red patch instead of the blue one": that patch recoloured
+    (re.compile(rf"(?i)^\s*(?:(?:now|ok(?:ay)?|and|so)\s*,?\s*)*(?:use|try|put\s+it\s+on)\s+an?\s+({COLOR_RE})\s+patch\s+instead\s+of\s+the\s+"
+                rf"({COLOR_RE})(?:\s+(?:one|patch))?\s*[.!]?\s*$"), r"change the \2 patch to \1"),
     # "Label fix: ...", "Correction: ...": what the message is
     (EDIT_KIND_LABEL_RE, ""),
     # "the homework says both cubes go on the green patch", "my TA says the row has to be in the centre", "the video shows the
@@ -3715,6 +3736,9 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "cyan take out": that cube removed
     (re.compile(rf"(?i)^\s*(?:the\s+)?({COLOR_RE})(?:\s+(?:one|cube|block))?\s+(?:take\s+out|take\s+away|take\s+off|remove|out|away)\s*"
                 r"(?:please|pls)?\s*[.!]?\s*$"), r"remove the \1 one"),
+    # "Put it back the way it was at the start.": the original (the "was at" had been refused as another time)
+    (re.compile(r"(?i)\b(?:put|set|change|turn)\s+it\s+back\s+(?:the\s+way|to\s+(?:how|what))\s+it\s+was\s+(?:at\s+the\s+(?:start|beginning)"
+                r"|in\s+the\s+beginning|originally|at\s+first)\b"), "go back to the original"),
     # "jk put it back, and add an S at the end": the change before undone (then the rest applied to it)
     (re.compile(r"(?i)^\s*(?:(?:jk|j/k|just\s+kidding|kidding|no|nah|oops|hmm+|actually|wait)\s*[,.!]?\s*)*(?:please\s+)?(?:put|change|set|turn|switch)\s+"
                 r"it\s+back(?:\s+(?:the\s+way\s+it\s+was|to\s+(?:how|what)\s+it\s+was|again))?(?=\s*(?:[,;.!]|$|\band\b))"), "undo"),

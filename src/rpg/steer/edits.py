@@ -194,7 +194,9 @@ def normalize_edit(text: str) -> str:
     t = re.sub(r"\b(a|an|the)\s+(\d)\b(?![x\d\-])(?!\s*(?:blocks?|cubes?|tall|high|wide|long|deep|layers?|levels?|rows?|"
                r"more|of|colou?rs?|stor\w*|outliers?|times)\b)", r"\1 digit \2", t)
     known = _known_words()
-    t = re.sub(r"\b[A-Z]{2,}\b", lambda m: m.group(0) if m.group(0).lower() in known else f"'{m.group(0)}'", t)
+    t = re.sub(r"\b((?i:say|says|spell|spells|spelling|read|reads|reading)\s+)([A-Z]{2,})\b", r"\1'\2'", t)  # "make it say
+    # TOYS": a word spelled, though "toys" is a known word (it had been refused as an object)
+    t = re.sub(r"(?<!')\b[A-Z]{2,}\b(?!')", lambda m: m.group(0) if m.group(0).lower() in known else f"'{m.group(0)}'", t)
     t = t.lower()
     t = re.sub(r"[\u2018\u2019\u201c\u201d`\"]", "'", t)
     t = re.sub(r"''+", "'", t)
@@ -242,6 +244,7 @@ def refuse_inexpressible(edit: str, t: str) -> None:
     Raises:
         SteerError: the edit says one.
     """
+    t = re.sub(r"'[a-z0-9]{2,}'", " ", t)  # a quoted word is one spelled ("make it say 'toys'"), no object or action
     vague = EDIT_VAGUE_RE.search(t)
     if vague and not EDIT_COUNT_RE.search(t):  # "make it a bit taller" (a number said, "like 3 blocks", is a count)
         raise SteerError(f"cannot apply the edit \"{edit.strip()[:80]}\": '{vague.group(0)}' is a vague quantity: rpg's counts are "
@@ -508,7 +511,7 @@ def _region_of(t: str) -> str | None:
 
     m = re.search(r"\b(?:move|put|place|shift|bring|slide|build|set|push|have|make|keep|stack|pile)\s+(?:it|them|everything|the\s+whole\s+thing"
                   r"|(?:both|all)\s+of\s+them|them\s+(?:both|all)"
-                  r"|(?:the\s+)?(?:whole\s+|entire\s+)?(?:" + STRUCTURE_RE + r"|wall|blocks|cubes))\s+(?P<where>.*)", t)
+                  r"|(?:the\s+)?(?:whole\s+|entire\s+)?(?:" + STRUCTURE_RE + r"|wall|blocks|cubes|word|letters|digits|numbers))\s+(?P<where>.*)", t)
     if not m:
         return None
     where = m.group("where")

@@ -230,9 +230,9 @@ def between_roles(edit: str, schema: TaskSchema) -> str:
     if None in (color.get(p.a), color.get(p.b), color.get(p.c)):
         return edit
     edit = re.sub(r"(?i)\bthe\s+(?:middle|central|center|centre|inner)\s+(?:one|block|cube)\b", f"the {color[p.a]} one", edit)
-    edit = re.sub(rf"(?i)^\s*(?:(?:now|ok|okay|actually|rather)\s+)*(?:use|put|place|have)\s+an?\s+({COLOR_RE})\s+(?:one|block|cube)\s+"
-                  r"(?:in\s+the\s+middle|in\s+between|between\s+them)(?:\s+instead)?\s*[.!]?\s*$",
-                  lambda m: f"make the {color[p.a]} one {m.group(1)}", edit)  # "use a gray one in the middle instead"
+    edit = re.sub(rf"(?i)^\s*(?:(?:now|ok|okay|actually|rather|fine|then)\s*,?\s+)*(?:(?:use|put|place|have)\s+)?an?\s+({COLOR_RE})\s+(?:one|block|cube)\s+"
+                  r"(?:in\s+the\s+middle|in\s+between|between\s+them)(?:\s+(?:instead|then))?\s*[.!]?\s*$",
+                  lambda m: f"make the {color[p.a]} one {m.group(1)}", edit)  # "use a gray one in the middle instead", "Fine, a brown cube in the middle then."
     ends = re.search(r"(?i)\bthe\s+(?:(?:two\s+|2\s+)?(?:outer|outside|end)\s+(?:two|2|ones|blocks|cubes)|(?:two\s+)?ends|end\s+ones)\b"
                      r"|\bboth\s+ends\b", edit)
     if ends:
@@ -480,6 +480,9 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     elif region is not None:
         if re.search(rf"\b(?:an?|another|one\s+more)\s+(?:(?:{COLOR_RE})\s+)?(?:block|cube)\b", t):
             return None  # "also a red block in the front right corner": one more cube, not this one moved
+        if re.search(r"\b(?:next\s+to|beside|each\s+other|one\s+another|apart|touching|together|left\s+of|right\s+of|behind"
+                     r"|in\s+front\s+of|on\s+top|under\w*|below|above|between|stack\w*|row|line|tower)\b", t):
+            return None  # "put them both in the center, next to each other": a relation too (it had been dropped)
         which = [i for i, (c, _) in enumerate(placed) if c in named] or ([0] if len(placed) == 1 else [])
         if not named and len(placed) > 1 and re.search(r"\b(?:both|them|all|everything|each\s+of\s+them)\b", t) \
                 and any(r != region for _, r in placed):  # "move both to the left side": every cube of the task there

@@ -542,6 +542,8 @@ def _restated(text: str, spec: TaskSpec, unread: list[str]) -> bool:
     counted = re.sub(r"\b\d+\s+(?:blocks?|cubes?|high|tall|long|wide)\b", " ", low.rsplit(":", 1)[-1])  # "make it two cubes,
     listed = [canon_color(x) if re.fullmatch(COLOR_RE, x) else x for x in re.findall(rf"\b(?:{COLOR_RE}|\d)\b", counted)]  # yellow
     # and green": the count is no cube of the list
+    if not any(str(n).isdigit() for n in names):  # "make it five, purple white purple white purple": no digit cube either
+        listed = [x for x in listed if not str(x).isdigit()]
     if len(listed) == len(names) > 1 and [str(x).lower() for x in listed] == [str(n).lower() for n in names]:
         held |= {str(x).lower() for x in listed}
     return all(str(u).lower() in held for u in unread)
