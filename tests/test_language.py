@@ -7639,3 +7639,29 @@ def test_words_before_a_turn_to_the_robot_that_may_change_the_task_are_not_dropp
 def test_thirty_ninth_session_attack_refusals(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text", [
+    # a second hostile helper's preambles (conditions, a distance, copies, a size, a repetition, a time before the turn)
+    "If the toddler wakes, meanwhile, put the red cube on the blue cube.",
+    "Until the kettle boils, in the meantime, put the red cube on the blue cube.",
+    "Allow 10 cm spacing, folks. Robot, put the red cube left of the blue cube.",
+    "Three duplicates please, folks. Robot, put the red cube on the blue cube.",
+    "Use the jumbo pieces, folks. Robot, put the red cube on the blue cube.",
+    "Perform the routine twice daily. Robot, put the red cube on the blue cube.",
+    "Pause ten mins beforehand, folks. Meanwhile, put the red cube on the blue cube.",
+    "Stack red on blue, then red again.",  # "again" with one "then": not a list (stays refused)
+])
+def test_thirty_ninth_session_second_attack_refusals(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("A tower: cyan at the bottom, then red, then cyan again.", ["stack(cyan,red,cyan)"]),
+    ("Reward fires when the pink cube is resting on top of the brown cube.", ["stack(brown,pink)"]),
+    ("Your new frames come in on Thursday. In the meantime, stack the three yellow cubes.", ["stack(yellow,yellow,yellow)"]),
+    ("Closing the incision, three sutures. Meanwhile the yellow cube goes on the blue patch.", ["on_patch(yellow,patch:blue)"]),
+])
+def test_thirty_ninth_session_later_readings(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)

@@ -2579,3 +2579,36 @@ def test_both_moved_with_a_relation_is_not_read_as_a_move_alone(tmp_path):
                                         "the table.", tmp_path, name="fam").path).path)
     with pytest.raises(BadInput):
         steer(fam.path, "Put them both in the center instead, next to each other.")
+
+
+@pytest.mark.parametrize("base,edit", [
+    # a second hostile helper's attack on this session's steering: each had compiled silently wrong
+    ("a row of red, green, blue from left to right", "Same row but in the front, reversed."),  # (moved only)
+    ("Stack the red cube on the blue cube.", "I don't want them the other way round."),  # (swapped)
+    ("Stack the green cube on the yellow cube.", "New idea: same cubes, but side by side."),  # (cubes made up)
+    ("Make a wall of gray cubes, three across and two high.", "Make the cube two across on the top row red."),  # (2 wide)
+    ("Put the red cube and the blue cube in the back left corner.", "Stack them into a tower instead, same spot."),  # (corner lost)
+    ("Put the red cube and the blue cube in the back left corner.", "Stack them into a tower instead."),
+    ("Put the red cube to the left of the blue cube.", "Add a green and a yellow cube far apart and a gray cube between the two."),
+    (_T3, "Take off one, from the bottom."),  # (the top had gone)
+    (_T3, "Mum says blue at the bottom. Add a yellow cube on top."),  # (her want dropped)
+    (_T3, "Testers said no green. Add a yellow cube on top."),
+    ("Build a tower of red, green and blue from bottom to top", "The green's too dull for the tower. Replace the top with it."),
+    ("Put three white cubes in a row.", "Make the middle one gray and the first one black."),  # (a direction made up)
+    ("Put the blue cube on the left side of the table and the green cube on the right side of the table.",
+     "Put them both in the center, side by side."),
+    (_CORNERS, "Move it to the back left corner, and the blue cube to the front."),
+    ("Build a tower of three cubes: blue on the bottom, then yellow, then red on top.",
+     "The yellow one: change it back to what it was at first."),  # (the whole task had gone back)
+    ("Spell CAT with letter cubes from left to right.", "Have the letters on the left side swap."),
+    ("Spell CAT with letter cubes from left to right.", "Put the word along the back edge, reading right to left."),
+])
+def test_thirty_ninth_session_second_attack_is_refused(tmp_path, base, edit):
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
+    with pytest.raises(BadInput):
+        steer(fam.path, edit)
+
+
+def test_read_right_to_left_is_a_direction_not_a_word(tmp_path):
+    assert _steered(tmp_path, "Spell CAT with letter cubes from left to right.", "Make it read RIGHT TO LEFT.")[-1] == (
+        "modify", ["line[right_to_left](C,A,T)", "reads(C,A,T;direction=right_to_left,face=up,text=CAT)"])

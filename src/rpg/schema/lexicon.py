@@ -293,7 +293,10 @@ ROBOT_TURN_HAZARD_RE = re.compile(
     r"|within|timer|soon|immediately|don't|do\s+not|never|no|not|words?|spell\w*|reads?|make|makes|made|build\w*|built|invert\w*"
     r"|vice|versa|like|as|shown|setup|set-up|version|copy|copies|total|high|tall|levels?|half|bigger|smaller|larger|times"
     r"|centred|centered|cent(?:er|re)|spaced|diagonal\w*|vertical\w*|horizontal\w*|sort\w*|shuffl\w*|hue|rainbow|alphabet\w*"
-    r"|ascend\w*|descend\w*|upside|sideways|flip\w*|swap\w*|rotat\w*|turn\w*|oops|correction)\b")
+    r"|ascend\w*|descend\w*|upside|sideways|flip\w*|swap\w*|rotat\w*|turn\w*|oops|correction|if|when|whenever|until|till|unless"
+    r"|provided|providing|case|long|pause\w*|wait\w*|beforehand|max\w*|min|mins|minimum|limit\w*|spac\w*|cm|mm|inch\w*|secs?"
+    r"|routine|procedure|drill|exercise|process|sequence|steps?|pieces?|items?|objects?|things?|stuff|duplicates?|replicas?|jumbo"
+    r"|size\w*|north\w*|south\w*|east\w*|west\w*|lean\w*|tilt\w*|style|pattern\w*)\b")
 """What keeps the words before a turn to the robot (:data:`ROBOT_TURN_RE`) from being dropped: the robot or the task
 named, a sequence or a pointer to what follows, a reversal, a comparison, a pronoun that may stand for cubes, a manner,
 time or negation that may be the robot's ("Make it quick. Robot, ...") (besides the take-backs of :data:`RETRACTION_RE`
@@ -344,7 +347,7 @@ FRAMING_SENTENCE_HAZARD_RE = re.compile(
     r"|second|seconds|minutes?|hours?|fast|faster|quick\w*|slow\w*|within|timer|time|hurry|soon"
     r"|it|its|itself|they|them|their|those|these|everything|something|each|all|both|either|one|ones|everyone"
     r"|same|every|alternat\w*|rainbow|gradient|sort\w*|ascending|descending|increasing|decreasing|alphabetic\w*|order\w*"
-    r"|colou?r\w*|shade\w*|size|big|bigger|small|smaller|large|tall|high|low|wide|long|short"
+    r"|colou?r\w*|shade\w*|size|big|bigger|small|smaller|large|tall|high|low|wide|long|short|jumbo|giant|huge|tiny|mini|oversized"
     r"|beneath|underneath|atop|upon|against|adjacent|across|along|beyond|past|toward|towards|via|through|off|out|flat|lying|lie|lay"
     r"|offset|centred|centered|spaced|evenly|equal\w*|distance|far|near|nearby|by|beside|opposite|corner\w*|edge\w*|diagonal\w*"
     r"|mean|meant|correction|actually|oops|scratch|wait|instead|typo|rather|i\s+mean|return\w*|restor\w*|put|place|move|skip\w*|declin\w*)\b"
@@ -1815,6 +1818,11 @@ FREE_PAIR_RE = re.compile(r"\b(?:the\s+)?colou?rs?\s+(?:and|or|,)\s+(?:the\s+)?o
 phrases :data:`FREE_CHOICE_RE` and :data:`ANY_ORDER_RE` read ("colours do not matter, in any order")."""
 
 FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "A tower: cyan at the bottom, then red, then cyan again.": a colour said again in a list is one more cube of it ("again"
+    # had been refused as picking a cube by what happened earlier)
+    (re.compile(rf"(\bthen\s+(?:an?\s+|another\s+)?(?:{COLOR_RE})\b[^.;:!?]*?\bthen\s+(?:an?\s+|another\s+)?(?:{COLOR_RE})(?:\s+(?:one|cube|block))?)"
+                r"\s+again\b(?=\s*(?:[.,;!]|$|on\s+top\b|at\s+the\s+top\b))"), r"\1"),  # (a list of two "then"s at least:
+    # "stack red on blue, then red again" stays refused)
     # "Stack red, then green, then blue, each one on the previous.": the stack said in order again, cube on cube (had been
     # refused: "previous" picks a cube by an order nobody defined; here the list says it)
     (re.compile(r"(\bstack\b[^.;:!?]*\bthen\b[^.;:!?]*?)\s*,?\s*(?:with\s+)?each\s+(?:one\s+|cube\s+|block\s+)?(?:on(?:\s+top\s+of)?|onto|above"
@@ -2334,6 +2342,8 @@ TASK_FRAME_RES: tuple[re.Pattern, ...] = (
     re.compile(r"(?:^|(?<=[.!?;:]\s))(?:(?:it's|it\s+is|we're|we\s+are|task\s+is|episode\s+is)\s+)?(?:done|finished|complete|solved)"
                r"\s+(?:when|if|once|iff)\s+"
                r"|(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:reward|score|r)\s*(?:=|is|==)\s*(?:1(?:\.0)?|one|\+1)\s+(?:iff|if|when|once)\s+"
+               r"|(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:success\s+)?reward\s+(?:fires|triggers|is\s+(?:given|granted|paid)|pays\s+out)\s+(?:only\s+)?"
+               r"(?:iff|if|when|once)\s+"
                r"|(?:^|(?<=[.!?;:]\s))(?:(?:it|the\s+check|the\s+predicate|is_success(?:\(\))?)\s+)?returns?\s+true\s+(?:iff|if|when)\s+"),
     # "Success is judged on the final configuration only.": every goal is
     re.compile(r"(?:^|(?<=[.!?;:]\s))success\s+is\s+(?:judged|checked|measured|evaluated|determined|assessed)\s+(?:on|by|at|from)\s+"
@@ -3543,7 +3553,8 @@ sentence of the edit says the change and it holds no word of a change, a want or
 EDIT_PERSON_REASON_HAZARD_RE = re.compile(
     r"\b(?:should|must|need\w*|want\w*|wish\w*|would|'d|rather|prefer\w*|instead|make|put|add|remove|swap|move|change|take"
     r"|replace|reverse|flip|turn|stack|build|back|undo|revert\w*|first|original|before|previous|earlier|version|v\d|if|unless"
-    r"|when|until|then|next|only|same|different|like\s+(?:it|them|that|this|the)|better|worse|best|more|fewer|less|extra)\b")
+    r"|when|until|then|next|only|same|different|like\s+(?:it|them|that|this|the)|better|worse|best|more|fewer|less|extra|no|none"
+    rf"|without|{_GOAL_THINGS}|(?:{COLOR_RE})s)\b")
 """What keeps a person's judgement (:data:`EDIT_PERSON_REASON_RE`) in a steering edit: a change, a want, a version named,
 a condition, a comparison: it may say the change itself ("Testers say it should be four.", "They liked the first one
 better.")."""
@@ -3584,13 +3595,15 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "Fine, let's not risk it.": a reason said as a person's caution, before the change
     (re.compile(r"(?i)^\s*(?:(?:fine|ok(?:ay)?|alright|right|yeah)\s*[,.!]?\s*)?let'?s\s+not\s+risk\s+it\s*[.!]\s+(?=\S)"), ""),
     # "Make it four across" of a wall: four wide
-    (re.compile(r"(?i)\b(\d+|" + COUNT_WORD_RE + r")\s+across\b"), r"\1 wide"),
+    (re.compile(r"(?i)^\s*(?:(?:now|ok(?:ay)?|and|so)\s*,?\s*)*(make|build)\s+(it|the\s+wall)\s+(\d+|" + COUNT_WORD_RE
+                + r")\s+across\b(?=\s*(?:[.!]|$|and\s+(?:\d+|" + COUNT_WORD_RE + r")\s+(?:high|tall)\b))"), r"\1 \2 \3 wide"),
     # "stretch it to five", "shrink it to three": that count
     (re.compile(r"(?i)\b(?:stretch|extend|lengthen|grow|shrink|cut|trim)\s+(it|the\s+(?:row|line|tower|stack))\s+(?:down\s+|out\s+)?to\s+"
                 r"(?=(?:\d+|" + COUNT_WORD_RE + r")\b)"), r"make \1 "),
     # "the buyers would rather have them the other way round": the two exchanged
-    (re.compile(r"(?i)^.*?\b(?:would\s+rather\s+have|(?:want|wants|prefer|prefers|'d\s+like)|have|put|make)\s+(?:them|the\s+two)\s+"
-                r"(?:the\s+)?other\s+way\s+(?:a)?round\s*[.!]?\s*$"), "swap them"),
+    (re.compile(r"(?i)^\s*(?:(?:the|my|our)\s+[a-z]+\s+|she\s+|he\s+|they\s+|we\s+)?(?:would|'d)\s+rather\s+have\s+(?:them|the\s+two)\s+"
+                r"(?:the\s+)?other\s+way\s+(?:a)?round\s*[.!]?\s*$"), "swap them"),  # (nothing else in the edit: "I don't want them
+    # the other way round", "add a green cube on top and put them the other way round" are not this)
     # "Shoot it again with the order reversed", "do it again with the order reversed": the order reversed
     (re.compile(r"(?i)^\s*(?:shoot|do|try|build|make|take|run)\s+it\s+again\s*,?\s+(?:but\s+)?with\s+the\s+order\s+reversed\s*[.!]?\s*$"),
      "reverse the order"),
@@ -3737,8 +3750,8 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"(?i)^\s*(?:the\s+)?({COLOR_RE})(?:\s+(?:one|cube|block))?\s+(?:take\s+out|take\s+away|take\s+off|remove|out|away)\s*"
                 r"(?:please|pls)?\s*[.!]?\s*$"), r"remove the \1 one"),
     # "Put it back the way it was at the start.": the original (the "was at" had been refused as another time)
-    (re.compile(r"(?i)\b(?:put|set|change|turn)\s+it\s+back\s+(?:the\s+way|to\s+(?:how|what))\s+it\s+was\s+(?:at\s+the\s+(?:start|beginning)"
-                r"|in\s+the\s+beginning|originally|at\s+first)\b"), "go back to the original"),
+    (re.compile(r"(?i)(?:^|(?<=[.!?]\s))(?:(?:ok(?:ay)?|fine|so|now|please)\s*,?\s*)*(?:put|set|change|turn)\s+it\s+back\s+(?:the\s+way|to\s+(?:how|what))\s+it"
+                r"\s+was\s+(?:at\s+the\s+(?:start|beginning)|in\s+the\s+beginning|originally|at\s+first)\s*[.!]?\s*$"), "go back to the original"),
     # "jk put it back, and add an S at the end": the change before undone (then the rest applied to it)
     (re.compile(r"(?i)^\s*(?:(?:jk|j/k|just\s+kidding|kidding|no|nah|oops|hmm+|actually|wait)\s*[,.!]?\s*)*(?:please\s+)?(?:put|change|set|turn|switch)\s+"
                 r"it\s+back(?:\s+(?:the\s+way\s+it\s+was|to\s+(?:how|what)\s+it\s+was|again))?(?=\s*(?:[,;.!]|$|\band\b))"), "undo"),
@@ -3978,7 +3991,9 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "same stack, but in the back left corner": that structure put there (checked to be the task's: "same row but on the
     # left" of a tower is refused; a stack of two default cubes had been made)
     (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(tower|stack|row|line|pyramid|wall|pile)\s*,?\s*(?:but\s+)?(?=(?:in|on|at|to|into)\s+the\s+"
-                r"(?:far\s+|very\s+)?(?:left|right|front|back|rear|middle|cent(?:er|re))\b)"), r"put the \1 "),
+                r"(?:far\s+|very\s+)?(?:left|right|front|back|rear|middle|cent(?:er|re))(?:[\s-]+(?:left|right))?(?:\s+(?:side|corner|half|edge|end"
+                r"|part))?(?:\s+of\s+the\s+(?:table|workspace))?\s*[.!]?\s*$)"), r"put the \1 "),  # (a place and nothing else: "same
+    # row but in the front, reversed" had been moved only)
     # "same thing but on the left", "same thing but front to back": the task moved, or run the other way
     (re.compile(r"(?i)^\s*(?:the\s+)?same\s+(?:thing|task|again|as\s+before|set-?up|arrangement|layout)\s*,?\s*but\s+(?:on|to|at|in)\s+the\s+"
                 r"(left|right|front|back)(?:\s+side)?(?:\s+of\s+the\s+table)?\s*[.!]?\s*$"), r"move it to the \1 of the table"),

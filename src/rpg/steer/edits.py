@@ -194,7 +194,7 @@ def normalize_edit(text: str) -> str:
     t = re.sub(r"\b(a|an|the)\s+(\d)\b(?![x\d\-])(?!\s*(?:blocks?|cubes?|tall|high|wide|long|deep|layers?|levels?|rows?|"
                r"more|of|colou?rs?|stor\w*|outliers?|times)\b)", r"\1 digit \2", t)
     known = _known_words()
-    t = re.sub(r"\b((?i:say|says|spell|spells|spelling|read|reads|reading)\s+)([A-Z]{2,})\b", r"\1'\2'", t)  # "make it say
+    t = re.sub(r"\b((?i:say|says|spell|spells|spelling|read|reads|reading)\s+)([A-Z]{2,})\b(?!\s+(?i:to)\b)", r"\1'\2'", t)  # "make it say
     # TOYS": a word spelled, though "toys" is a known word (it had been refused as an object)
     t = re.sub(r"(?<!')\b[A-Z]{2,}\b(?!')", lambda m: m.group(0) if m.group(0).lower() in known else f"'{m.group(0)}'", t)
     t = t.lower()
@@ -515,6 +515,10 @@ def _region_of(t: str) -> str | None:
     if not m:
         return None
     where = m.group("where")
+    if re.search(r"\b(?:word|letters|digits|numbers)\s+$", t[:m.start("where")]) and not re.fullmatch(
+            r"(?:on|to|at|in|into|along)\s+the\s+(?:far\s+|very\s+)?(?:front|back|rear|left|right|middle|cent(?:er|re))(?:[\s-]+(?:left|right))?"
+            r"(?:\s+(?:side|edge|half|corner|end|part))?(?:\s+of\s+the\s+(?:table|workspace))?\s*[.!]?\s*", where):
+        return None  # "put the word along the back of the table": the word moved there, and nothing else said of it
     structure = not re.match(r"(?:it|them)\b", m.group(0).split(None, 1)[1])
     pivot = re.match(r"(?:into\s+)?(?:a|an)\s+(?:[a-z0-9-]+\s+){0,2}?" + STRUCTURE_RE + r"\s+", where)
     if pivot:  # "make it a line along the front": the new structure's place
@@ -625,7 +629,7 @@ def read_ops(t: str) -> list[Op]:
     if len(dict.fromkeys(pattern_colors)) >= 2:
         ops.append(Op("pattern", {"colors": list(dict.fromkeys(pattern_colors))}))
     fewer = re.search(r"\b(?:remove|delete|take away|take off|drop|get rid of)\s+(\d+|an?|one)\s+(?:more\s+)?(?:of the\s+)?(?:blocks?|cubes?)\b"
-                      r"|\b(?:remove|delete|take away|take off|drop|get rid of)\s+(1|one)\s*(?=[.!,;]|$)"  # "lose one": one cube
+                      r"|\b(?:remove|delete|take away|take off|drop|get rid of)\s+(1|one)(?=(?:\s*,?\s*please)?\s*[.!]?\s*$)"  # "lose one": one
                       r"|\b(\d+|one)\s+(?:fewer|less)\s+(?:blocks?|cubes?)\b", t)
     more_n = re.search(r"\b(?:use|using|with|have|want|need)\s+(\d+)\s+(?:more|extra|additional)\s+(?:blocks?|cubes?)\b"
                        r"|\bmake\s+(?:[a-z]+\s+){0,3}?(\d+)\s+(?:more|extra|additional)(?:\s+(?:blocks?|cubes?))?(?:\s+(?:high|tall|long))?"
@@ -1044,6 +1048,7 @@ def reasons_set_aside(edit: str) -> tuple[str, tuple[str, ...]]:
     cube = EDIT_CUBE_REASON_RE.match(sentences[0])
     later = " ".join(sentences[1:])
     if cube and len(sentences) == 2 and len(re.findall(r"(?i)\bit\b", later)) == 1 and not re.search(
+            r"(?i)\b(?:with|for|by|to|into|as|on|onto|under|beside|next\s+to)\s+it\b", later) and not re.search(
             rf"(?i)\b(?:{COLOR_RE})\s+(?:one|cube|block)\b(?!\s*$)|\bthe\s+(?:{COLOR_RE})\b", later.split(" it ")[0]):
         # "The orange's too loud. Replace it with a gray one.": "it" is the cube judged
         return re.sub(r"(?i)\bit\b", f"the {cube.group('c').lower()} one", later, count=1), (sentences[0],)
@@ -1152,6 +1157,8 @@ def _interpret(edit: str) -> EditPlan:
     t = normalize_edit(edit)
     cue = find_reference(t)
     fresh = FRESH_RE.search(t) if cue.kind != "redo" else None  # "never mind, redo": the undone change, no new task
+    if fresh and re.search(r"\bsame\b", t[fresh.end():]):  # "New idea: same cubes, but side by side": the task's cubes, no new
+        fresh = None  # task (cubes of their own had been made up)
     back = re.search(r"\b(?:(?:go|going|come|get|take\s+(?:it|me|us))\s+back\s+to|return\s+to|revert\s+to|restore)\s+(?P<what>[^,.;!?]+)", t)
     if fresh and back and cue.kind in ("original", "version", "previous"):
         fresh = None  # "scrap that, go back to the original tower": that version, no new task
@@ -1905,7 +1912,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             if spec.structure == "line" and spec.direction is None:
                 spec = replace(spec, direction="left_to_right")
         elif o.op in ("recolor", "relabel"):
-            if p["select"] == {"position": "middle"} and spec.structure == "line" and spec.direction is None \
+            if p["select"] == {"position": "middle"} and spec.structure == "line" and spec.direction is None and len(ops) == 1 \
                     and len(spec.items) % 2 and len(set(spec.items)) == 1:
                 # "make the middle one gray" of a row of three white cubes, in no order: its middle place is one from
                 # either end, so the row is read left to right (white, gray, white reads the same from its other end)

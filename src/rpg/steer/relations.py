@@ -395,7 +395,8 @@ def _edit_region(t: str) -> str | None:
 
 
 _PLACE_SAID_RE = re.compile(r"(?<!from )(?<!of )\bthe\s+(?:far\s+)?(?P<fb>front|back|rear)(?:[\s-]+(?P<lr>left|right))?(?:\s+(?:corner|side|half|edge)"
-                            r"|\s+(?=one\b))|(?<!from )(?<!of )\bthe\s+(?P<lr2>left|right)\s+(?:side|half|edge)\b")
+                            r"|\s+(?=one\b)|(?=\s*(?:[.,;!]|$|and\b)))|(?<!from )(?<!of )\bthe\s+(?P<lr2>left|right)(?:\s+(?:side|half|edge)\b"
+                            r"|(?=\s*(?:[.,;!]|$|and\b)))")
 """A place of the table said in an edit ("the back left corner", "the left side", "the back right one"), not one it leaves
 ("from the back left corner"): :func:`places_said`."""
 
@@ -480,8 +481,9 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
     elif region is not None:
         if re.search(rf"\b(?:an?|another|one\s+more)\s+(?:(?:{COLOR_RE})\s+)?(?:block|cube)\b", t):
             return None  # "also a red block in the front right corner": one more cube, not this one moved
-        if re.search(r"\b(?:next\s+to|beside|each\s+other|one\s+another|apart|touching|together|left\s+of|right\s+of|behind"
-                     r"|in\s+front\s+of|on\s+top|under\w*|below|above|between|stack\w*|row|line|tower)\b", t):
+        if re.search(r"\b(?:next\s+to|beside|each\s+other|one\s+another|apart|touch\w*|together|left\s+of|right\s+of|behind"
+                     r"|in\s+front|on\s+top|under\w*|below|above|between|stack\w*|row|line|tower|side\s+by\s+side|adjacent|contact"
+                     r"|first|last|order\w*|close|near\w*|far)\b", t) and re.search(r"\b(?:both|them|all|they)\b", t):
             return None  # "put them both in the center, next to each other": a relation too (it had been dropped)
         which = [i for i, (c, _) in enumerate(placed) if c in named] or ([0] if len(placed) == 1 else [])
         if not named and len(placed) > 1 and re.search(r"\b(?:both|them|all|everything|each\s+of\s+them)\b", t) \

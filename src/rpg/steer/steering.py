@@ -57,7 +57,7 @@ from rpg.schema.lexicon import (
 from rpg.schema.model import TaskSchema
 from rpg.schema.reading import canon_color
 from rpg.schema.structures import STRUCTURE_RE
-from rpg.steer.carried import Carried, split
+from rpg.steer.carried import Carried, region_phrase, split
 from rpg.steer.carried import render as render_carried
 from rpg.steer.edits import (
     PRESERVATION,
@@ -328,9 +328,10 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         plan = replace(plan, text=SAME_PATCH_RE.sub(f"the {patches[0]} patch", plan.text))
     elif ref_schema is not None and not patches and (same := re.search(
             r"(?i)(?:\s*,\s*|\s+)(?:(?:in|on|at)\s+)?(?:the\s+)?same\s+(?:spot|area|place)\b", plan.text)) \
-            and any(q.name == "in_region" for q in ref_schema.goal_predicate().walk()):
-        # "stack them into a tower instead, same spot" of cubes in a region of the table: that region, kept as it is
-        plan = replace(plan, text=plan.text[:same.start()] + plan.text[same.end():])
+            and len(regions := {q.region for q in ref_schema.goal_predicate().walk() if q.name == "in_region"}) == 1 \
+            and not re.search(r"(?i)\b(?:other|not|n't|different|away|except|than)\b", plan.text):
+        # "stack them into a tower instead, same spot" of cubes in one region of the table: that region, said
+        plan = replace(plan, text=plan.text[:same.start()] + ", " + region_phrase(regions.pop()) + plan.text[same.end():])
     if ref_schema is not None and not patches and SAME_PATCH_RE.search(plan.text):  # (a gray patch had been made up)
         raise SteerError(f"'{SAME_PATCH_RE.search(plan.text).group(0)}' names a patch, but v{reference} has none; say which patch "
                          "(e.g. \"on a red patch\"), or use --model")
@@ -439,6 +440,10 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
                              "in the change read (the task's cubes as the structure named, in no order); say the order "
                              "(e.g. \"from bottom to top: red, green, blue\"), or use --model")
         walk = list(ref_schema.goal_predicate().walk())
+        if any(q.name == "in_region" for q in walk):  # "stack them into a tower instead" of cubes each in a corner: the
+            # corner had been dropped (silently)
+            raise SteerError(f"v{reference} puts its cubes in places of the table ({ref_schema.goal_summary}); the builtin steering "
+                             "would drop them in the new structure: state the whole new task with its place, or use --model")
         structured = {n for q in walk if q.name in ("stack", "unordered_stack", "anchored_stack", "in_line") for n in q.object_names()}
         if structured and any(q.name == "on_patch" and q.a not in structured for q in walk):
             # "make the tower a row" of a tower and another cube on a patch
@@ -1363,8 +1368,9 @@ def _between_them_named(edit: str, hist: FamilyHistory, fam: Family) -> str:
     cube") when it has exactly two, of two colours, and nothing else but patches; else ``edit`` as it is (refused later: which
     two?)."""
     m = _BETWEEN_THEM_RE.search(edit)
-    if m is None:
-        return edit
+    if m is None or len(re.findall(rf"(?i)\b(?:{COLOR_RE})\b", edit)) != 1:
+        return edit  # (only the cube put between named: "add a green and a yellow cube ... and a gray one between the two" is
+        # of the cubes the edit adds)
     cubes = [a for a in fam.schema(hist.head).assets if a.kind != "goal_patch"]
     if len(cubes) != 2 or any(a.kind != "colored_cube" for a in cubes) or cubes[0].color == cubes[1].color:
         return edit
