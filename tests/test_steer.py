@@ -2612,3 +2612,27 @@ def test_thirty_ninth_session_second_attack_is_refused(tmp_path, base, edit):
 def test_read_right_to_left_is_a_direction_not_a_word(tmp_path):
     assert _steered(tmp_path, "Spell CAT with letter cubes from left to right.", "Make it read RIGHT TO LEFT.")[-1] == (
         "modify", ["line[right_to_left](C,A,T)", "reads(C,A,T;direction=right_to_left,face=up,text=CAT)"])
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # steer_stranger22's last classes read this session: the ends of a row of one colour, people who cracked it, the
+    # original said as a reset, a want said with "also" and a place, one cube kept
+    ("Put four gray cubes in a row.", ["Make the two at the ends red."], ("tweak", ["line[left_to_right](red,gray,gray,red)"])),
+    ("Build a tower of red, green, blue and yellow from bottom to top", ["Make both ends white."],
+     ("tweak", ["stack(white,green,blue,white)"])),
+    ("Stack the cubes labelled 4, 7 and 2 with 4 at the bottom and 2 on top.",
+     ["Players cracked it in two minutes. Add a 9 at the bottom.", "Too hard now. Reset the puzzle to the original code."],
+     ("tweak", ["stack(4,7,2)"])),
+    ("Put the red cube on the blue patch.", ["She'd also like a black cube in front of the red one."],
+     ("extend", ["in_front_of(black,red)", "on_patch(red,patch:blue)"])),
+    ("Put the red cube on the yellow patch and the blue cube on the yellow patch too.", ["Only the blue cube this time."],
+     ("tweak", ["on_patch(blue,patch:yellow)"])),
+])
+def test_steer_stranger22_last_classes(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+def test_the_ends_of_a_row_of_several_colours_in_no_order_are_refused(tmp_path):
+    fam = Family(create_family(compiled("Put the red, blue, green and yellow cubes in a row.", tmp_path, name="fam").path).path)
+    with pytest.raises(SteerError, match="the ends"):
+        steer(fam.path, "Make the two at the ends white.")

@@ -3543,6 +3543,7 @@ EDIT_PERSON_REASON_RE = re.compile(
     rf"|all\s+the)\s+)?(?:{PERSON_NOUNS}|she|he|they|we|i)\s+(?:(?:all|still|just|really|also|totally)\s+)*"
     r"(?:say|says|said|think|thinks|thought|find|finds|found|feel|feels|felt|changed\s+(?:her|his|their|my|our)\s+minds?"
     r"|complain\w*|hated?|hates|loved?|loves|liked?|likes|reckons?|noticed|got\s+bored|(?:keep|keeps|kept)\s+(?:knocking|bumping|tipping)"
+    r"|cracked|solved|beat|breezed\s+through|struggled\s+with|got\s+stuck"
     r"|(?:did|do|does)(?:n't|\s+not)\s+(?:get|like|love|understand|see|notice|care\s+for))\b[^.!?;:]*[.!]\s*$")
 """A sentence of a steering edit in which people judge the version before ("Testers say three is clutter.", "The homeowner
 thinks it's too plain.", "Nah, players didn't get it.", "Players keep knocking it over.", "Client changed her mind
@@ -3592,6 +3593,8 @@ dropped."""
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
     # "Round 3: ...", "Condition C: ...", "Next round, add ...": the name of the version made
     (EDIT_STEP_NAME_RE, ""),
+    # "make the two at the ends red": the ends (the count had been left unread)
+    (re.compile(r"(?i)\bthe\s+(?:two|2)\s+(?:ones\s+|cubes\s+|blocks\s+)?(?:at|on)\s+(?:the|both|either)\s+ends\b"), "the ends"),
     # "Fine, let's not risk it.": a reason said as a person's caution, before the change
     (re.compile(r"(?i)^\s*(?:(?:fine|ok(?:ay)?|alright|right|yeah)\s*[,.!]?\s*)?let'?s\s+not\s+risk\s+it\s*[.!]\s+(?=\S)"), ""),
     # "Make it four across" of a wall: four wide
@@ -3625,6 +3628,12 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"^\s*(?:(?i:now|and|so|ok|okay|then|also|actually|oh|but)\s*,?\s+)*(?:{_ASKER})(?:'d\s+like|\s+(?:wants|would\s+like|asks\s+for|asked\s+for))\s+(?P<what>(?:an?|one\s+more|another)\s+[^,.;:!?]+?)\s+"
                 r"(?:added|put|placed|set)\s+(?P<where>(?:at|on|onto|to|in|next\s+to|beside|behind|between|under|below|above)\b[^.;!?]*)[.!]?\s*$"),
      r"add \g<what> \g<where>"),
+    # "She'd also like a black cube in front of the gray one": that cube added there (a cube and its place, nothing else)
+    (re.compile(rf"^\s*(?:(?i:now|and|so|ok|okay|then|actually|oh|but)\s*,?\s+)*(?:{_ASKER})(?:'d\s+(?:also\s+)?like|\s+(?:also\s+)?(?:wants|would\s+like)"
+                rf"|\s+would\s+also\s+like)\s+(?P<what>(?:an?|one\s+more|another)\s+(?:{COLOR_RE})\s+(?:cube|block|one))\s+"
+                rf"(?P<where>(?:in\s+front\s+of|behind|next\s+to|beside|on\s+top\s+of|on|under|to\s+the\s+(?:left|right)\s+of)\s+the\s+"
+                rf"(?:{COLOR_RE})\s+(?:cube|block|one))(?:\s+(?:too|as\s+well))?\s*[.!]?\s*$"),
+     r"also add \g<what> \g<where>"),
     # "The curator asks for the yellow cube to be replaced with a cyan one", "She wants the red cube moved to the back"
     (re.compile(rf"^\s*(?:(?i:now|and|so|ok|okay|then|also|actually|oh|but)\s*,?\s+)*(?:{_ASKER})(?:'d\s+like|\s+(?:wants|would\s+like|asks\s+for|asked\s+for|needs))\s+(?P<what>the\s+[^,.;:!?]+?)\s+(?:to\s+be\s+)?"
                 r"(?P<verb>replaced|moved|swapped|removed|painted|recolou?red|put|placed|stacked|taken\s+(?:out|off|away))\b\s*(?P<rest>[^.;!?]*)[.!]?\s*$"),
@@ -3749,6 +3758,11 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "cyan take out": that cube removed
     (re.compile(rf"(?i)^\s*(?:the\s+)?({COLOR_RE})(?:\s+(?:one|cube|block))?\s+(?:take\s+out|take\s+away|take\s+off|remove|out|away)\s*"
                 r"(?:please|pls)?\s*[.!]?\s*$"), r"remove the \1 one"),
+    # "Reset the puzzle to the original code.", "restore it to the original": the original version
+    (re.compile(r"(?i)(?:^|(?<=[.!?]\s))(?:(?:ok(?:ay)?|fine|so|now|please)\s*,?\s*)*(?:reset|restore|revert|return|change)\s+(?:it|the\s+(?:puzzle"
+                r"|task|tower|stack|row|line|pyramid|wall|scene|setup|set-up|layout|thing|whole\s+thing))\s+(?:back\s+)?to\s+(?:the\s+|its\s+)?"
+                r"(?:original|first|starting)(?:\s+(?:code|one|version|setup|set-up|layout|state|design|task|puzzle))?\s*[.!]?\s*$"),
+     "go back to the original"),
     # "Put it back the way it was at the start.": the original (the "was at" had been refused as another time)
     (re.compile(r"(?i)(?:^|(?<=[.!?]\s))(?:(?:ok(?:ay)?|fine|so|now|please)\s*,?\s*)*(?:put|set|change|turn)\s+it\s+back\s+(?:the\s+way|to\s+(?:how|what))\s+it"
                 r"\s+was\s+(?:at\s+the\s+(?:start|beginning)|in\s+the\s+beginning|originally|at\s+first)\s*[.!]?\s*$"), "go back to the original"),
@@ -3791,13 +3805,14 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|and|then)\s*,?\s*)*(?:the\s+)?(top|bottom|base|middle|first|last)"
                 rf"(\s+(?:layer|row|level|tier|one|cube|block))?\s+({COLOR_RE})(?:\s+(?:now|instead|please))*\s*[.!]?\s*$"),
      r"make the \1\2 \3"),
-    # "make both ends orange", "the ends should be yellow": the first and the last cube that colour
+    # "make both ends orange", "the ends should be yellow": the first and the last cube that colour (the ends of a row of one
+    # colour in no order, too: :func:`rpg.steer.edits.apply_ops`)
     (re.compile(rf"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|and|then)\s*,?\s*)*(?:make|paint|turn|colou?r)\s+(?:both\s+(?:the\s+)?|the\s+(?:two\s+)?)ends\s+"
                 rf"(?:of\s+(?:it|the\s+(?:tower|stack|row|line))\s+)?({COLOR_RE})\s*[.!]?\s*$"),
-     r"make the first one \1 and the last one \1"),
+     r"make the ends \1"),
     (re.compile(rf"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|and|then)\s*,?\s*)*(?:both\s+(?:the\s+)?|the\s+(?:two\s+)?)ends\s+(?:should\s+be|must\s+be|become|are)\s+"
                 rf"({COLOR_RE})\s*[.!]?\s*$"),
-     r"make the first one \1 and the last one \1"),
+     r"make the ends \1"),
     # "all of them orange", "all pink now": every cube that colour
     (re.compile(rf"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|and|then)\s*,?\s*)*(?:all\s+of\s+them|them\s+all|all(?:\s+the)?\s+(?:cubes|blocks))\s+"
                 rf"(?:in\s+)?({COLOR_RE})(?:\s+(?:now|instead|please))*\s*[.!]?\s*$"),

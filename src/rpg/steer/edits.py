@@ -468,6 +468,9 @@ def _selector_of(text: str) -> dict | None:
     some = re.search(r"\b(\d+)\s+of\s+(?:them|the\s+(?:[a-z]+\s+)?(?:blocks|cubes|ones))\b", text)
     if some:
         return {"some": int(some.group(1))}
+    if re.fullmatch(r"(?:the\s+)?(?:(?:two|2)\s+)?(?:ones?\s+|cubes\s+|blocks\s+)?(?:at|on)\s+(?:the|both|either)\s+ends|(?:the\s+)?both\s+ends"
+                    r"|(?:the\s+)?(?:two\s+|2\s+)?ends|the\s+end\s+(?:ones|cubes|blocks)|the\s+(?:two\s+|2\s+)?end\s+(?:ones|cubes|blocks)", text):
+        return {"ends": True}  # "the two at the ends", "both ends"
     if re.fullmatch(r"(?:the\s+)?both(?:\s+(?:of\s+)?(?:them|the\s+(?:blocks|cubes)|blocks|cubes))?", text):
         return {"all": True, "both": True}
     if re.fullmatch(r"(?:the\s+)?(?:cube|block)", text):
@@ -1393,6 +1396,11 @@ def _indices_of(spec: TaskSpec, sel: dict, anchors: frozenset[str] = frozenset()
         raise SteerError(f"the {spec.structure} has cubes of {len(set(spec.colors()))} colours; say which to change")
     if sel.get("all"):
         return list(range(n))
+    if sel.get("ends"):  # "make the two at the ends red": the first and the last of a tower or a line (the same either way)
+        if spec.kind.layered or not spec.kind.spells or n < 2 or (not _orders_cubes(spec) and len(set(spec.items)) > 1):
+            raise SteerError(f"'the ends' of a {spec.structure} of {n} cubes whose goal gives no cube an end is not a pair the "
+                             "builtin steering can name; name the cubes by colour, or say the whole order")
+        return [0, n - 1]
     if "pair" in sel:  # one of two neighbouring cubes named by where the pair stands ("the top two", "the middle two")
         if not _orders_cubes(spec) or n < 3:
             raise SteerError(f"the {sel['pair']} two of a {spec.structure} of {n} cubes"
@@ -1912,8 +1920,8 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             if spec.structure == "line" and spec.direction is None:
                 spec = replace(spec, direction="left_to_right")
         elif o.op in ("recolor", "relabel"):
-            if p["select"] == {"position": "middle"} and spec.structure == "line" and spec.direction is None and len(ops) == 1 \
-                    and len(spec.items) % 2 and len(set(spec.items)) == 1:
+            if p["select"] in ({"position": "middle"}, {"ends": True}) and spec.structure == "line" and spec.direction is None and len(ops) == 1 \
+                    and (len(spec.items) % 2 or "ends" in p["select"]) and len(set(spec.items)) == 1:
                 # "make the middle one gray" of a row of three white cubes, in no order: its middle place is one from
                 # either end, so the row is read left to right (white, gray, white reads the same from its other end)
                 spec = replace(spec, direction="left_to_right")

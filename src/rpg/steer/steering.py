@@ -1377,6 +1377,25 @@ def _between_them_named(edit: str, hist: FamilyHistory, fam: Family) -> str:
     return f"{edit[:m.start()]}between the {cubes[0].color} cube and the {cubes[1].color} cube{edit[m.end():]}"
 
 
+_ONLY_CUBE_RE = re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|now|so|actually|hmm+)\s*,?\s*)*(?:just|only)\s+the\s+(?P<c>{COLOR_RE})\s+(?:cube|block|one)"
+                           r"(?:\s+(?:this\s+time|now|then|please|instead))*\s*[.!]?\s*$")
+"""An edit that keeps one cube of the task ("Only the blue cube this time.")."""
+
+
+def _only_cube_named(edit: str, hist: FamilyHistory, fam: Family) -> str:
+    """``edit`` as the removal of the head version's other cube when it keeps one cube by its colour ("Only the blue cube
+    this time." of a red and a blue cube on a patch: "remove the red cube"): the head has exactly two cubes, of two colours,
+    one of them the one named; else ``edit`` as it is."""
+    m = _ONLY_CUBE_RE.match(edit)
+    if m is None:
+        return edit
+    cubes = [a for a in fam.schema(hist.head).assets if a.kind != "goal_patch"]
+    kept = canon_color(m.group("c").lower())
+    if len(cubes) != 2 or any(a.kind != "colored_cube" for a in cubes) or sorted(a.color == kept for a in cubes) != [False, True]:
+        return edit
+    return f"remove the {next(a.color for a in cubes if a.color != kept)} cube"
+
+
 class RouteAnswer(BaseModel):
     """The model's reading of an edit: intent, reference version, extracted parameters."""
 
@@ -1493,6 +1512,7 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
         edit = _added_cube_named(edit, hist, fam)
         if llm is None:
             edit = _between_them_named(edit, hist, fam)  # "stick a gray cube in between them" of a task of two cubes
+            edit = _only_cube_named(edit, hist, fam)  # "Only the blue cube this time." of a task of two cubes
             plan = interpret(edit)
             reference, notes = resolve_reference(plan, hist, fam)
             notes += [f"set aside: {x!r} (a reason said for the change)" for x in plan.set_aside]
