@@ -2636,3 +2636,26 @@ def test_the_ends_of_a_row_of_several_colours_in_no_order_are_refused(tmp_path):
     fam = Family(create_family(compiled("Put the red, blue, green and yellow cubes in a row.", tmp_path, name="fam").path).path)
     with pytest.raises(SteerError, match="the ends"):
         steer(fam.path, "Make the two at the ends white.")
+
+
+@pytest.mark.parametrize("base,edit", [
+    # a third attack: the ends of a layer or row of a structure (the whole layer had been recoloured, or a removal dropped)
+    ("Build a pyramid with three red cubes on the bottom, two green in the middle and a blue on top.",
+     "make the two at the ends of the bottom row white"),
+    ("Build a wall of white cubes three wide and two high.", "make the two at the ends of the top row red"),
+    ("Build a wall of white cubes three wide and two high.", "remove the ends of the top row"),
+])
+def test_the_ends_of_a_part_of_a_structure_are_refused(tmp_path, base, edit):
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
+    with pytest.raises(SteerError, match="ends of a part"):
+        steer(fam.path, edit)
+
+
+@pytest.mark.parametrize("base,edit,expected", [
+    # "swap X with Y" exchanges the two colours (it had replaced one by the other: every cube white); "swap X for Y" replaces
+    ("Put a red, a white, a white and a red cube in a row, in that order.", "swap the red cubes with the white cubes",
+     ("modify", ["line[sequence](white,red,red,white)"])),
+    (_T3, "swap red for yellow", ("tweak", ["stack(yellow,blue,green)"])),
+])
+def test_swap_with_exchanges_and_swap_for_replaces(tmp_path, base, edit, expected):
+    assert _steered(tmp_path, base, edit)[-1] == expected

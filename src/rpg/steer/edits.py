@@ -471,6 +471,9 @@ def _selector_of(text: str) -> dict | None:
     if re.fullmatch(r"(?:the\s+)?(?:(?:two|2)\s+)?(?:ones?\s+|cubes\s+|blocks\s+)?(?:at|on)\s+(?:the|both|either)\s+ends|(?:the\s+)?both\s+ends"
                     r"|(?:the\s+)?(?:two\s+|2\s+)?ends|the\s+end\s+(?:ones|cubes|blocks)|the\s+(?:two\s+|2\s+)?end\s+(?:ones|cubes|blocks)", text):
         return {"ends": True}  # "the two at the ends", "both ends"
+    if re.search(r"\bends?\b", text) and re.search(r"\b(?:of|in|on)\s+the\s+(?:\w+\s+)?(?:row|layer|level|tier|line|column)\b", text):
+        raise SteerError(f"'{text}' names the ends of a part of the structure, which the builtin steering does not pick; name the "
+                         "cubes by colour or place, one per edit, or use --model")  # (the whole layer had been recoloured)
     if re.fullmatch(r"(?:the\s+)?both(?:\s+(?:of\s+)?(?:them|the\s+(?:blocks|cubes)|blocks|cubes))?", text):
         return {"all": True, "both": True}
     if re.fullmatch(r"(?:the\s+)?(?:cube|block)", text):
