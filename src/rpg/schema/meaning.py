@@ -11,6 +11,7 @@ letter/digit cube by its label, a goal patch as ``patch:<colour>``).  Examples::
     on_patch(red,red,patch:green)         left_of(red,blue)    next_to(blue,red)
     right_of(red,blue); in_front_of(red,blue)   two relations of one pair along both axes: diagonally
     line(green,green,green)               line[left_to_right](red,green,blue)
+    line[sequence](red,green,red)         a row in that order from either end, along no said axis ("red, green, red in a row")
     wall(red,red,red|blue,blue,blue)      layers bottom to top (rows, walls, 3D blocks)
     pyramid(blue,green,red|yellow)        layers bottom to top, each layer sorted
     pyramid(blue,green,red)               a pyramid whose cubes may stand in any layer
