@@ -3763,12 +3763,12 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"(?i)^\s*(?:the\s+)?({COLOR_RE})(?:\s+(?:one|cube|block))?\s+(?:take\s+out|take\s+away|take\s+off|remove|out|away)\s*"
                 r"(?:please|pls)?\s*[.!]?\s*$"), r"remove the \1 one"),
     # "Reset the puzzle to the original code.", "restore it to the original": the original version
-    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|fine|so|now|please)\s*,?\s*)*(?:reset|restore|revert|return|change)\s+(?:it|the\s+(?:puzzle"
+    (re.compile(r"(?i)(?:^|(?<=[.!?]\s))(?:(?:ok(?:ay)?|fine|so|now|please)\s*,?\s*)*(?:reset|restore|revert|return|change)\s+(?:it|the\s+(?:puzzle"
                 r"|task|tower|stack|row|line|pyramid|wall|scene|setup|set-up|layout|thing|whole\s+thing))\s+(?:back\s+)?to\s+(?:the\s+|its\s+)?"
                 r"(?:original|first|starting)(?:\s+(?:code|one|version|setup|set-up|layout|state|design|task|puzzle))?\s*[.!]?\s*$"),
      "go back to the original"),
     # "Put it back the way it was at the start.": the original (the "was at" had been refused as another time)
-    (re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|fine|so|now|please)\s*,?\s*)*(?:put|set|change|turn)\s+it\s+back\s+(?:the\s+way|to\s+(?:how|what))\s+it"
+    (re.compile(r"(?i)(?:^|(?<=[.!?]\s))(?:(?:ok(?:ay)?|fine|so|now|please)\s*,?\s*)*(?:put|set|change|turn)\s+it\s+back\s+(?:the\s+way|to\s+(?:how|what))\s+it"
                 r"\s+was\s+(?:at\s+the\s+(?:start|beginning)|in\s+the\s+beginning|originally|at\s+first)\s*[.!]?\s*$"), "go back to the original"),
     # "jk put it back, and add an S at the end": the change before undone (then the rest applied to it)
     (re.compile(r"(?i)^\s*(?:(?:jk|j/k|just\s+kidding|kidding|no|nah|oops|hmm+|actually|wait)\s*[,.!]?\s*)*(?:please\s+)?(?:put|change|set|turn|switch)\s+"
