@@ -2483,7 +2483,7 @@ def test_second_attack_refusals(tmp_path, base, edit, words):
      ("tweak", ["stack(yellow,green)"])),
     # the middle of a row of one colour in no order: read left to right
     ("Put a row of three white cubes along the back of the table.", ["The homeowner thinks it's too plain. Make the middle one gray."],
-     ("tweak", ["line[sequence](white,gray,white)@back"])),
+     ("tweak", ["line[left_to_right](white,gray,white)@back"])),
     # "between them" of a task of two cubes; "same spot" of cubes in a region; "lose one"
     ("Put the black cube to the right of the white cube.", ["And stick a gray cube in between them."],
      ("extend", ["between(gray;black,white)", "right_of(black,white)"])),
@@ -2617,7 +2617,7 @@ def test_read_right_to_left_is_a_direction_not_a_word(tmp_path):
 @pytest.mark.parametrize("base,edits,expected", [
     # steer_stranger22's last classes read this session: the ends of a row of one colour, people who cracked it, the
     # original said as a reset, a want said with "also" and a place, one cube kept
-    ("Put four gray cubes in a row.", ["Make the two at the ends red."], ("tweak", ["line[sequence](red,gray,gray,red)"])),
+    ("Put four gray cubes in a row.", ["Make the two at the ends red."], ("tweak", ["line[left_to_right](red,gray,gray,red)"])),
     ("Build a tower of red, green, blue and yellow from bottom to top", ["Make both ends white."],
      ("tweak", ["stack(white,green,blue,white)"])),
     ("Stack the cubes labelled 4, 7 and 2 with 4 at the bottom and 2 on top.",

@@ -1926,12 +1926,12 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             if p["select"] in ({"position": "middle"}, {"ends": True}) and spec.structure == "line" and spec.direction is None and len(ops) == 1 \
                     and (len(spec.items) % 2 or "ends" in p["select"]) and len(set(spec.items)) == 1:
                 # "make the middle one gray" of a row of three white cubes, in no order: its middle place is one from
-                # either end, so the row keeps that order from either end (white, gray, white: the parser's reading of
-                # "white, gray, white in a row"; no axis is said, so none is made up)
-                idx = _indices(replace(spec, direction="left_to_right"), p["select"], anchors)
-                spec = replace(spec, direction="sequence")
-            else:
-                idx = _indices(spec, p["select"], anchors)
+                # either end, read left to right (white, gray, white reads the same from its other end).  A row read in
+                # that order from either end (line[sequence], the parser's reading of "white, gray, white in a row") says
+                # no axis; six of seven steering annotators wrote left to right for this edit, and e2a59f6's sequence
+                # reading was counted wrong by five of them, so the row keeps the convention they share
+                spec = replace(spec, direction="left_to_right")
+            idx = _indices(spec, p["select"], anchors)
             if not idx:
                 raise _no_such_cube(p["select"], spec)
             items = list(spec.items)
