@@ -470,8 +470,8 @@ def _said_to_someone_else(before: str) -> bool:
     words = re.findall(r"[a-z][a-z'\-]*", low)
     if len(words) < 4 or lexicon.GOAL_THING_RE.search(low) or lexicon.RETRACTION_RE.search(low) \
             or lexicon.ROBOT_TURN_HAZARD_RE.search(low) or lexicon.QUOTED_TASK_RE.search(before) \
-            or lexicon.colour_names() & set(words) or not any(w not in VOCAB and not lexicon.is_dictionary_word(w) or (
-                w not in VOCAB and "NOUN" in lexicon.parts_of_speech(w)) for w in words):
+            or lexicon.colour_names() & set(words) or not any(
+                w not in VOCAB and (not lexicon.is_dictionary_word(w) or "NOUN" in lexicon.parts_of_speech(w)) for w in words):
         return False
     weighed = lexicon.WORLD_COUNT_RE.sub(" ", low)
     if re.match(r"\s*[a-z]+\s*,", weighed) and re.match(r"\s*[A-Z][a-z]+\s*,", before):  # "Nurse, keep the field sterile."
@@ -2762,14 +2762,20 @@ def _side_part_ok(m: re.Match) -> bool:
                           and re.search(rf"\b(?:{COLOR_RE})\b", m.string[:m.start()]) is not None)
 
 
+def _side_ends_text(m: re.Match) -> bool:
+    """Whether a place match is a bare side said or put to ("on the left", "to the right side") that ends the text (a role
+    or the centre is read elsewhere): what :func:`_table_side` and :func:`_cubes_side` both ask."""
+    return (_side_part_ok(m) and m.group(0).split()[0] in ("on", "to", "at", "in")
+            and (m.group("lr") or m.group("lr2")) not in ("middle", "center", "centre")
+            and re.fullmatch(r"\s*[.!]?\s*", m.string[m.end():]) is not None)
+
+
 def _table_side(m: re.Match) -> bool:
     """Whether a bare side ("on the left") ends a text that names nothing else it could be the
     side of ("put two green cubes on the left", "stack the red block on the blue block on the
     right"): then it is the table's side.  Anything else that could anchor it (another
     relation, a second clause, a pronoun) leaves it relative (and the text refused)."""
-    return (_side_part_ok(m) and m.group(0).split()[0] in ("on", "to", "at", "in")
-            and (m.group("lr") or m.group("lr2")) not in ("middle", "center", "centre")  # a role or the centre: above
-            and re.fullmatch(r"\s*[.!]?\s*", m.string[m.end():]) is not None
+    return (_side_ends_text(m)
             and _RELATIVE_RE.search(_COLOUR_LIST_COMMA_RE.sub(r"\1 ", m.string[:m.start()])) is None  # (a list's commas: no clause)
             and not names_a_role(m.string[:m.start()], m.string))  # "line up yellow and blue with blue on the left"
 
@@ -2801,10 +2807,7 @@ the yellow cube go on the right.", the side may be the tower's, and stays relati
 def _cubes_side(m: re.Match) -> bool:
     """Whether a bare side ends a text after cubes listed as the subject of one place ("The white cube and the black cube
     both go to the right side."): the side has no cube of its own clause to be relative to, so it is the table's."""
-    return (_side_part_ok(m) and m.group(0).split()[0] in ("on", "to", "at", "in")
-            and (m.group("lr") or m.group("lr2")) not in ("middle", "center", "centre")
-            and re.fullmatch(r"\s*[.!]?\s*", m.string[m.end():]) is not None
-            and _CUBES_SIDE_BEFORE.search(m.string[:m.start()]) is not None)
+    return _side_ends_text(m) and _CUBES_SIDE_BEFORE.search(m.string[:m.start()]) is not None
 
 
 def _clause_side(m: re.Match) -> bool:

@@ -469,7 +469,7 @@ def _selector_of(text: str) -> dict | None:
     if some:
         return {"some": int(some.group(1))}
     if re.fullmatch(r"(?:the\s+)?(?:(?:two|2)\s+)?(?:ones?\s+|cubes\s+|blocks\s+)?(?:at|on)\s+(?:the|both|either)\s+ends|(?:the\s+)?both\s+ends"
-                    r"|(?:the\s+)?(?:two\s+|2\s+)?ends|the\s+end\s+(?:ones|cubes|blocks)|the\s+(?:two\s+|2\s+)?end\s+(?:ones|cubes|blocks)", text):
+                    r"|(?:the\s+)?(?:two\s+|2\s+)?ends|the\s+(?:two\s+|2\s+)?end\s+(?:ones|cubes|blocks)", text):
         return {"ends": True}  # "the two at the ends", "both ends"
     if re.search(r"\bends?\b", text) and re.search(r"\b(?:of|in|on)\s+the\s+(?:\w+\s+)?(?:row|layer|level|tier|line|column)\b", text):
         raise SteerError(f"'{text}' names the ends of a part of the structure, which the builtin steering does not pick; name the "
@@ -1926,10 +1926,8 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             if p["select"] in ({"position": "middle"}, {"ends": True}) and spec.structure == "line" and spec.direction is None and len(ops) == 1 \
                     and (len(spec.items) % 2 or "ends" in p["select"]) and len(set(spec.items)) == 1:
                 # "make the middle one gray" of a row of three white cubes, in no order: its middle place is one from
-                # either end, read left to right (white, gray, white reads the same from its other end).  A row read in
-                # that order from either end (line[sequence], the parser's reading of "white, gray, white in a row") says
-                # no axis; six of seven steering annotators wrote left to right for this edit, and e2a59f6's sequence
-                # reading was counted wrong by five of them, so the row keeps the convention they share
+                # either end, read left to right (white, gray, white reads the same from its other end), the convention
+                # six of seven steering annotators wrote (line[sequence] would say no axis; the README tells why not)
                 spec = replace(spec, direction="left_to_right")
             idx = _indices(spec, p["select"], anchors)
             if not idx:

@@ -389,16 +389,11 @@ EDIT_REGION_RE = re.compile(
     r"(?P<lr>left|right|middle|center|centre)?(?:[\s-]*(?:hand\s+)?(?P<part>side|corner|half|edge|end|part))?\b")
 
 
-def _edit_region(t: str) -> str | None:
-    """The workspace region an edit names first ("to the back left corner", "to the left side")."""
-    return next(iter(_edit_regions(t)), None)
-
-
 _PLACE_SAID_RE = re.compile(r"(?<!from )(?<!of )\bthe\s+(?:far\s+)?(?P<fb>front|back|rear)(?:[\s-]+(?P<lr>left|right))?(?:\s+(?:corner|side|half|edge)"
-                            r"|\s+(?=one\b)|(?=\s*(?:[.,;!]|$|and\b)))|(?<!from )(?<!of )\bthe\s+(?P<lr2>left|right)(?:\s+(?:side|half|edge)\b"
-                            r"|(?=\s*(?:[.,;!]|$|and\b)))")
-"""A place of the table said in an edit ("the back left corner", "the left side", "the back right one"), not one it leaves
-("from the back left corner"): :func:`places_said`."""
+                            r"|\s+(?=one\b)|(?=\s*(?:[.,;!]|$|and\b|of\s+the\s+(?:table|workspace)\b)))|(?<!from )(?<!of )\bthe\s+(?P<lr2>left|right)"
+                            r"(?:\s+(?:side|half|edge)\b|(?=\s*(?:[.,;!]|$|and\b|of\s+the\s+(?:table|workspace)\b)))")
+"""A place of the table said in an edit ("the back left corner", "the left side", "the back right one", "the back of the
+table"), not one it leaves ("from the back left corner"): :func:`places_said`."""
 
 
 def places_said(t: str) -> set[str]:
@@ -407,17 +402,16 @@ def places_said(t: str) -> set[str]:
     return {region_name(m.group("fb"), m.group("lr") or m.group("lr2")) for m in _PLACE_SAID_RE.finditer(t.lower())}
 
 
-def _edit_regions(t: str) -> list[str]:
-    """The workspace regions an edit names, in the order said."""
-    found = []
+def _edit_region(t: str) -> str | None:
+    """The workspace region an edit names ("to the back left corner", "to the left side")."""
     for m in EDIT_REGION_RE.finditer(t):
         fb, lr = m.group("fb"), m.group("lr")
         if not (fb or lr) or (fb and not lr and not m.group("part") and not re.match(r"\s*of the (?:table|workspace)", t[m.end():])):
             continue
         if lr and not fb and not m.group("part") and re.match(r"\s*of\s+(?:it|them|that|this|the\s+(?!table\b|workspace\b)\w+)", t[m.end():]):
             continue  # "to the left of it": a relation to a cube, no side of the table
-        found.append(region_name(fb, lr))
-    return found
+        return region_name(fb, lr)
+    return None
 
 
 def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
@@ -489,7 +483,7 @@ def rewrite_region(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         if not named and len(placed) > 1 and re.search(r"\b(?:both|them|all|everything|each\s+of\s+them)\b", t) \
                 and any(r != region for _, r in placed):  # "move both to the left side": every cube of the task there
             return ", then ".join(f"place the {c} block {region_phrase(region)}" for c, _ in placed).capitalize(), "modify"
-        if len(which) != 1 or placed[which[0]][1] == region or len(set(_edit_regions(t)) | places_said(t)) > 1:
+        if len(which) != 1 or placed[which[0]][1] == region or len(places_said(t) | {region}) > 1:
             return None  # (one cube "also in the front left corner, and stay in the back right one" had been moved)
         placed[which[0]] = (placed[which[0]][0], region)
         intent = "modify"

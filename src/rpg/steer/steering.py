@@ -842,8 +842,6 @@ def _same_cubes_kept(edit: str, ref: TaskSchema, schema: TaskSchema, kept: bool 
     Raises:
         SteerError: the reading has other cubes than the version built on.
     """
-    from collections import Counter
-
     from rpg.schema.meaning import descriptor
 
     if not re.search(r"(?i)\b(?:the\s+)?same\s+(?:\d+\s+|[a-z]+\s+)?(?:letters?|digits?|numbers?|cubes|blocks|ones|tower|stack|row|line"
@@ -853,17 +851,18 @@ def _same_cubes_kept(edit: str, ref: TaskSchema, schema: TaskSchema, kept: bool 
         return schema  # cubes (``kept``: said so before the edit was rewritten, "same three as a tower, ...")
     had = Counter(descriptor(a) for a in ref.assets if a.kind != "goal_patch")
     now = Counter(descriptor(a) for a in schema.assets if a.kind != "goal_patch")
-    if had != now and (filled := _tower_middle_filled(edit, ref, schema)) is not None:
-        schema, now = filled, had
+    if had != now:
+        filled = _tower_middle_filled(edit, ref, schema)
+        if filled is None:
+            raise SteerError(f"the edit keeps the task's cubes, but reads as a task of other cubes ({schema.goal_summary}); name "
+                             "every cube's place, or use --model")
+        schema = filled
     placed = {q.name for q in ref.goal_predicate().walk() if q.name in ("in_region", "on_patch")}
-    if had == now and placed - {q.name for q in schema.goal_predicate().walk()}:
+    if placed - {q.name for q in schema.goal_predicate().walk()}:
         # "all three in a row instead, ..." of a tower in the back left corner: the corner had been dropped
         raise SteerError(f"the edit keeps the task's cubes but says nothing of where they stand ({ref.goal_summary}); "
                          "say the place again (e.g. \"..., in the back left corner\"), or use --model")
-    if had == now:
-        return schema
-    raise SteerError(f"the edit keeps the task's cubes, but reads as a task of other cubes ({schema.goal_summary}); name "
-                     "every cube's place, or use --model")
+    return schema
 
 
 def _tower_middle_filled(edit: str, ref: TaskSchema, schema: TaskSchema) -> TaskSchema | None:
@@ -1359,20 +1358,28 @@ def _added_cube_named(edit: str, hist: FamilyHistory, fam: Family) -> str:
     return edit[:m.start()] + cube + edit[m.end():]
 
 
+def _two_cubes(hist: FamilyHistory, fam: Family) -> list | None:
+    """The head version's two cubes when it has exactly two, both coloured and of two colours, and nothing else but patches
+    (the task "them", "the two" and "only the blue one" name); else ``None``."""
+    cubes = [a for a in fam.schema(hist.head).assets if a.kind != "goal_patch"]
+    if len(cubes) != 2 or any(a.kind != "colored_cube" for a in cubes) or cubes[0].color == cubes[1].color:
+        return None
+    return cubes
+
+
 _BETWEEN_THEM_RE = re.compile(r"(?i)\b(?:in\s+)?between\s+(?:them|the\s+two(?:\s+(?:cubes|blocks|of\s+them))?|those\s+two)\b")
 """A place between the two cubes of the task, said by a pronoun ("stick a gray cube in between them")."""
 
 
 def _between_them_named(edit: str, hist: FamilyHistory, fam: Family) -> str:
-    """``edit`` with "between them" written as between the head version's two cubes ("between the black cube and the white
-    cube") when it has exactly two, of two colours, and nothing else but patches; else ``edit`` as it is (refused later: which
-    two?)."""
+    """``edit`` with "between them" written as between the head version's two cubes (:func:`_two_cubes`: "between the black
+    cube and the white cube"); else ``edit`` as it is (refused later: which two?)."""
     m = _BETWEEN_THEM_RE.search(edit)
     if m is None or len(re.findall(rf"(?i)\b(?:{COLOR_RE})\b", edit)) != 1:
         return edit  # (only the cube put between named: "add a green and a yellow cube ... and a gray one between the two" is
         # of the cubes the edit adds)
-    cubes = [a for a in fam.schema(hist.head).assets if a.kind != "goal_patch"]
-    if len(cubes) != 2 or any(a.kind != "colored_cube" for a in cubes) or cubes[0].color == cubes[1].color:
+    cubes = _two_cubes(hist, fam)
+    if cubes is None:
         return edit
     return f"{edit[:m.start()]}between the {cubes[0].color} cube and the {cubes[1].color} cube{edit[m.end():]}"
 
@@ -1384,14 +1391,14 @@ _ONLY_CUBE_RE = re.compile(rf"(?i)^\s*(?:(?:ok(?:ay)?|now|so|actually|hmm+)\s*,?
 
 def _only_cube_named(edit: str, hist: FamilyHistory, fam: Family) -> str:
     """``edit`` as the removal of the head version's other cube when it keeps one cube by its colour ("Only the blue cube
-    this time." of a red and a blue cube on a patch: "remove the red cube"): the head has exactly two cubes, of two colours,
-    one of them the one named; else ``edit`` as it is."""
+    this time." of a red and a blue cube on a patch: "remove the red cube"): the head's two cubes (:func:`_two_cubes`), one of
+    them the one named; else ``edit`` as it is."""
     m = _ONLY_CUBE_RE.match(edit)
     if m is None:
         return edit
-    cubes = [a for a in fam.schema(hist.head).assets if a.kind != "goal_patch"]
+    cubes = _two_cubes(hist, fam)
     kept = canon_color(m.group("c").lower())
-    if len(cubes) != 2 or any(a.kind != "colored_cube" for a in cubes) or sorted(a.color == kept for a in cubes) != [False, True]:
+    if cubes is None or kept not in {a.color for a in cubes}:
         return edit
     return f"remove the {next(a.color for a in cubes if a.color != kept)} cube"
 
