@@ -86,7 +86,8 @@ STRANGER_SETS = {
     "stranger49": ("stranger49.yaml", "STRANGER set 49 (stranger49.yaml, transfer measure of the thirty-sixth session; development material from the thirty-seventh)"),
     "stranger50": ("stranger50.yaml", "STRANGER set 50 (stranger50.yaml, transfer measure of the thirty-seventh session; development material from the thirty-eighth)"),
     "stranger51": ("stranger51.yaml", "STRANGER set 51 (stranger51.yaml, transfer measure of the thirty-eighth session; development material from the thirty-ninth)"),
-    "stranger52": ("stranger52.yaml", "STRANGER set 52 (stranger52.yaml, written at the start of the thirty-ninth session: aggregates only)"),
+    "stranger52": ("stranger52.yaml", "STRANGER set 52 (stranger52.yaml, transfer measure of the thirty-ninth session; development material from the fortieth)"),
+    "stranger53": ("stranger53.yaml", "STRANGER set 53 (stranger53.yaml, written at the start of the fortieth session: aggregates only)"),
 }
 SPLITS = HERE / "splits.yaml"
 
