@@ -7665,3 +7665,58 @@ def test_thirty_ninth_session_second_attack_refusals(text):
 ])
 def test_thirty_ninth_session_later_readings(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text, expected", [
+    # the fortieth session's readings (stranger52, read): a fronted place, a relative clause of colour, a side "along"
+    # the table, a colour list given a direction, a tower said from its bottom cube by cube, "next to both", a report
+    ("Between the brown cube and the pink cube, put the white cube.", ["between(white;brown,pink)"]),
+    ("On top of the blue cube, place the red one.", ["stack(blue,red)"]),
+    ("The cube that is red should be placed in front of the cube that is black.", ["in_front_of(red,black)"]),
+    ("Arrange four cubes in a line along the front of the table: red, red, blue, blue, left to right.",
+     ["line[left_to_right](red,red,blue,blue)@front"]),
+    ("Lay the cubes out red, orange, yellow, green from left to right along the back of the table.",
+     ["line[left_to_right](red,orange,yellow,green)@back"]),
+    ("Lay out red, orange and yellow, left to right.", ["line[left_to_right](red,orange,yellow)"]),
+    ("The bottom cube should be grey, the second one black, the third one white and the top one red.",
+     ["stack(gray,black,white,red)"]),
+    ("Build a tower. The bottom cube should be grey, the second one black and the top one red.", ["stack(gray,black,red)"]),
+    ("Build a tower of four cubes. The bottom one is black and the top one is yellow; the two in between are both blue.",
+     ["stack(black,blue,blue,yellow)"]),
+    ("Put the pink cube next to both the orange cube and the purple cube.", ["next_to(orange,pink)", "next_to(pink,purple)"]),
+    ("He told me the A cube goes to the left of the B cube.", ["left_of(A,B)"]),
+    ("My supervisor said the white cube should go on top of the black cube.", ["stack(black,white)"]),
+    ("The professor told us to put the white cube on the black cube.", ["stack(black,white)"]),
+])
+def test_fortieth_session_readings(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    "A tower of the X and Y blocks, either one on top.",
+    "Build a tower of the X block and the Y block in any order.",
+])
+def test_a_tower_of_two_label_cubes_in_any_order_demands_no_order(text):
+    from rpg.domain.predicates import UnorderedStack
+
+    goal = check_feasibility(parse(text)).goal_predicate()
+    assert any(type(p) is UnorderedStack for p in goal.walk()), text
+
+
+@pytest.mark.parametrize("text", [
+    # a report taken back or weighed after it, and a correction with "but actually": refused, not read as both
+    "He said the red cube should go on the blue cube, but actually put it on the green one.",
+    "Put the red cube on the blue cube, but actually put it on the green one.",
+    "Stack red on blue, but actually I want it next to the green one.",
+    "She told me not to put the red cube on the blue cube.",
+    "He said the red cube is on the blue cube.",
+    # a tower said from its bottom with a gap in its ordinals, or beside another structure
+    "The bottom cube should be grey, the third one black and the top one red.",
+    "Build two towers. The bottom cube should be grey, the second one black and the top one red.",
+    "Make a row of three. The bottom cube should be grey, the second one black and the top one red.",
+    "Build a tower of four cubes. The bottom cube is grey, the second one black and the top one red.",
+    "Between the brown cube and the pink cube, don't put the white cube.",
+])
+def test_fortieth_session_refusals(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

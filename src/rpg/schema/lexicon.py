@@ -182,9 +182,9 @@ START_TIME_RE = (r"^(?!.*\b(?:line|row|sequence|word|spell\w*|order\w*|tower|sta
 an end of a line.  Not read in a steering edit, whose "at the start" is an end of the task's line."""
 
 BUT_CORRECTION_RE = (r"\bbut\s+(?:(?:i|we|you|they|he|she)\s+(?:would\s+|'d\s+)?(?:want|need|prefer|like|wish)|"
-                     r"(?:put|place|move|set|stack|have)\s+(?:it|them)\b)")
-""""..., but put it on the green cube" after a placement: a correction or an addition, which one
-is not said.  Not read in a steering edit, where "but put them in a row" is the change itself."""
+                     r"(?:put|place|move|set|stack|have)\s+(?:it|them)\b|(?:actually|instead|rather|on\s+second\s+thoughts?|then\s+again)\b)")
+""""..., but put it on the green cube", "..., but actually I want it next to the green one" after a placement: a
+correction or an addition, which one is not said ("but actually" had kept both).  Not read in a steering edit, where "but put them in a row" is the change itself."""
 
 ROBOT_ONLY_RE = (r"\b(?:move|bring|return|send|park|put|position|raise|lower|open|close|hover|lift|rotate|extend|retract|reset)\s+"
                  r"(?:the\s+|your\s+|its\s+|the\s+robot's\s+)?(?:robot(?:ic)?\s+)?(?:grippers?|arms?|end[\s-]?effectors?|hands?|wrists?"
@@ -598,6 +598,13 @@ REPORTED_REQUEST_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 rf"(?P<what>the\s+(?:{COLOR_RE})\s+(?:cube|block|one))\s*(?P<end>[.!]|$)"),  # (the sentence ends there: a
      # relation after it, "... goes the blue cube on the green cube", had been read of the other cube)
      lambda m: f"Put {m.group('what')} {m.group('where')}{m.group('end')}"),
+    # "Between the brown cube and the pink cube, put the white cube.": the place fronted before the verb (the sentence
+    # ends with the cube: "..., put the white cube on top" says more and stays as said)
+    (re.compile(r"(?i)(?:^|(?<=[.;:!?]\s))(?P<where>(?:between|on\s+top\s+of|on(?:to)?|behind|in\s+front\s+of|(?:to\s+the\s+|on\s+the\s+)?"
+                r"(?:left|right)\s+of|next\s+to|beside|under(?:neath)?|below|beneath|above|atop)\s+the\s+[^.;:!?,]{3,60}?)\s*,\s*"
+                r"(?:please\s+)?(?P<verb>put|place|set|stand|stack)\s+"
+                rf"(?P<what>the\s+(?:{COLOR_RE})\s+(?:cube|block|one))\s*(?P<end>[.!]|$)"),
+     lambda m: f"{m.group('verb').capitalize()} {m.group('what')} {m.group('where')}{m.group('end')}"),
 )
 """A task reported as what something asks for, or said with its place first (:func:`rpg.schema.reading.normalize_words`,
 before the frames are dropped)."""
@@ -3538,6 +3545,19 @@ _ASKER = (r"(?-i:[A-Z][a-z]+)(?<!The)(?<!This)(?<!That)(?<!Then)(?<!Now)(?<!Make
           rf"|(?i:the|my|our|your)\s+(?i:{PERSON_NOUNS})")
 """Who asks for a steering edit, said before it ("Maya says ...", "He'd like ...", "The curator asks for ...")."""
 
+SOMEONE_SAID_RE = re.compile(
+    r"(?:^|(?<=[.;:!?]\s))(?:(?:my|our|the)\s+(?P<who>supervisor|advisor|adviser|professor|prof|pi|colleague|labmate|teacher|mentor|tutor"
+    rf"|lecturer|{PERSON_NOUNS})|(?P<pronoun>he|she|they))\s+(?:said|says|told\s+(?:me|us)|tells\s+(?:me|us)|mentioned)\s*,?\s*(?:that\s+)?"
+    # (nothing after it that may take the report back or weigh it: "..., but actually put it on the green one")
+    r"(?![\s\S]*\b(?:but|however|actually|instead|rather|though|although|yet|ignore\w*|wrong|disagree\w*|correct\w*|no|not|never|[a-z]+n't"
+    r"|said|says|told|think|thinks|unless|if|except|else|other|otherwise|wants?|prefers?|would|'d|maybe|perhaps)\b)"
+    r"(?=(?:the|a|an)\s+[^.;:!?]*?\b(?:goes|go|should|must|needs\s+to|has\s+to|is\s+to|are\s+to|belongs?)\b|to\s+(?:put|place|stack|build"
+    r"|make|line|set|arrange|move)\b)(?:to\s+)?")
+"""Who said the task, reported ("My supervisor said the white cube should go on top of the black cube.", "He told me the
+A cube goes to the left of the B cube.", "She told us to stack ..."): the report's own words are the task, read as if
+said (a report of what is, "he said the red cube is on ...", or of what not to do, "told me not to ...", stays and is
+refused; :func:`rpg.schema.reading.normalize_words` lists ``who`` as dropped)."""
+
 EDIT_PERSON_REASON_RE = re.compile(
     r"(?i)^\s*(?:(?:oh|well|ok(?:ay)?|so|hmm+|right|alright|honestly|yeah|nah|fine|ugh)\s*,?\s+)*(?:(?:the|my|our|your|his|her|their|some|a\s+few"
     rf"|all\s+the)\s+)?(?:{PERSON_NOUNS}|she|he|they|we|i)\s+(?:(?:all|still|just|really|also|totally)\s+)*"
@@ -4831,7 +4851,33 @@ def _them_counted_as_listed(m: re.Match) -> bool:
     return not counted or count_word(counted.group(1)) == len(re.findall(rf"\b(?:{COLOR_RE})\b", listed.group(0)))
 
 
+BOTTOM_UP_ROLES_RE = re.compile(
+    rf"\bthe\s+(?:bottom|lowest|base)\s+(?:cube|block|one)\s+(?:should\s+be|must\s+be|has\s+to\s+be|is|will\s+be)\s+"
+    rf"(?P<c1>{COLOR_RE})(?P<mid>(?:\s*,\s*(?:and\s+)?(?:then\s+|the\s+(?:second|third|fourth|fifth|sixth|next)\s+(?:one|cube|block)\s+"
+    rf"(?:(?:should|must)\s+be\s+|is\s+)?)(?:{COLOR_RE}))*)\s*,?\s*(?:and\s+)?(?:then\s+)?the\s+(?:top|highest|topmost|last)\s+"
+    rf"(?:one|cube|block)\s+(?:(?:should|must|has\s+to|will)\s+be\s+|is\s+)?(?P<cn>{COLOR_RE})(?=\s*(?:[.;!]|$))")
+"""A tower said cube by cube from its bottom, up to its top ("The bottom cube should be grey, the second one black, the
+third one white and the top one red"; :func:`rpg.schema.reading.bottom_up_roles`)."""
+
+
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "the cube that is red", "the block which is black": the red cube (the relative clause had lost its colour)
+    (re.compile(rf"\bthe\s+(cube|block)\s+(?:that|which)\s+is\s+(?P<c>{COLOR_RE})\b(?!\s+(?:and|or|,|-|with)\b)"),
+     lambda m: f"the {m.group('c')} {m.group(1)}"),
+    # "Lay the cubes out red, orange, yellow, green from left to right": a list given a direction across the table is a row
+    # (no structure said anywhere else; it had found no task)
+    (re.compile(rf"\b(?P<v>lay|put|place|set|arrange)\s+(?:(?:the\s+|all\s+|the\s+\d+\s+)?(?:cubes|blocks)\s+|them\s+)?(?:out\s+)?"
+                rf"(?P<l>(?:{COLOR_RE})(?:\s*,\s*(?:{COLOR_RE}))+,?\s+(?:and\s+)?(?:{COLOR_RE}))\s*,?\s+(?P<d>(?:from\s+)?(?:left\s+to\s+right"
+                rf"|right\s+to\s+left))\b"),
+     lambda m: m.group(0) if re.search(r"\b(?:row|line|tower|stack|pile|pyramid|wall|circle|ring|grid|column|rows|lines|towers|on|onto"
+                                       r"|spell\w*|reads?)\b", m.string)
+     else f"{m.group('v')} {m.group('l')} in a row {m.group('d')}"),
+    # "next to both the orange cube and the purple cube": next to each of them ("both" had been read as the cubes before it)
+    (re.compile(rf"\b(next\s+to|beside|far\s+from|away\s+from|touching)\s+both\s+(?=(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+and\s+"
+                rf"(?:the\s+)?(?:{COLOR_RE})\b)"), r"\1 "),
+    # "in a line along the front of the table", "... from left to right along the back edge": the line at that side
+    (re.compile(r"\balong\s+the\s+(front|back|rear|left|right)(?:\s+(?:edge|side))?(?:\s+of\s+the\s+(?:table|workspace))?\b"),
+     r"at the \1 of the table"),
     # "a tower of yellow, then green, then blue, counted from the bottom": the direction the list is said in
     (re.compile(r"\bcount(?:ed|ing)\s+(?=from\s+the\s+(?:bottom|top|left|right)\b)"),
      lambda m: m.group(0) if re.search(r"\b(?:first|second|third|fourth|fifth|last|\d+(?:st|nd|rd|th))\b", m.string) else ""),

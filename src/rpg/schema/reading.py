@@ -1509,6 +1509,8 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
                     if not set(re.findall(r"[a-z']+", s.lower())) <= lexicon.CHAT_WORDS) or text
     asked_by = effectors + [(m.group("who"), "who asks for the task") for m in lexicon.SOMEONE_WANTS_RE.finditer(text)]
     text = lexicon.SOMEONE_WANTS_RE.sub("i want", text)
+    asked_by += [(m.group("who") or m.group("pronoun"), "who said the task") for m in lexicon.SOMEONE_SAID_RE.finditer(text)]
+    text = lexicon.SOMEONE_SAID_RE.sub("", text)
     text = lexicon.rewrite(lexicon.GOAL_FRAME_REWRITES, text)
     text = lexicon.rewrite(lexicon.HEADING_SENTENCE_REWRITES, text)
     if re.search(r"\bpyramids?\b", text):  # "pyramid: an orange and a pink cube side by side, and a white cube resting on both"
@@ -1531,7 +1533,8 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     text = lexicon.ROBOT_VIEWPOINT_RE.sub("", text)  # "From the robot's point of view, ...": rpg's own frame
     text = lexicon.FRONT_GLOSS_RE.sub(r"\g<r>", text)  # "at the front of the table, near the robot": the front once
     text = lexicon.means_said(text)  # "clear X by putting Y ...": put Y
-    text = ordinal_roles(text)  # "the first cube is white, the second black, ...": listed (before "the first cube" is refused)
+    text = bottom_up_roles(ordinal_roles(text))  # "the first cube is white, the second black, ...": listed (before "the
+    # first cube" is refused)
     refused = [(kind, ws, why) for kind, ws, why in _inexpressible(text)
                if not all(w in spelled for w in ws)]  # refused below, with what the unknown words say as well
     text = lexicon.FRAMING_RE.sub("", text)
@@ -1969,6 +1972,25 @@ _ORDINAL_ITEM_RE = re.compile(
     r"(?:\s+(?:is|should\s+be|must\s+be|will\s+be))?\s+(?:the\s+|a\s+)?(?P<c>" + COLOR_RE + r")(?:\s+(?:cube|block|one))?(?:\s+again)?\b")
 _ORDINAL_SEP_RE = re.compile(r"\s*(?:,\s*(?:and\s+)?|;\s*|\s+and\s+)")
 _COUNTING_FROM_RE = re.compile(r"\s*,?\s*(?:counting|counted|going)\s+from\s+the\s+(bottom|top|left|right)(?:\s+up|\s+down)?\b")
+
+
+def bottom_up_roles(text: str) -> str:
+    """A tower said cube by cube from its bottom (:data:`lexicon.BOTTOM_UP_ROLES_RE`: "the bottom cube should be grey, the
+    second one black, the third one white and the top one red") -> "build a tower from bottom to top: gray, black, white,
+    red" ("from bottom to top: ..." where a tower was said before).  Left as written unless the ordinals count on from
+    "second" without a gap (then "the third one" is refused as a cube picked by an order nobody defined)."""
+    m = lexicon.BOTTOM_UP_ROLES_RE.search(text)
+    if m is None or re.search(r"\b(?:towers|stacks|columns|piles?|rows?|lines?|pyramids?|walls?|circles?|rings?|grids?)\b", text):
+        return text  # another structure, or several towers: which one "the bottom cube" is of is not said
+    ordinals = re.findall(r"\b(second|third|fourth|fifth|sixth|next)\b", m.group("mid"))
+    if not m.group("mid") or re.search(r"\b(?:between|middle|rest|others?|remaining|second|third|fourth|next|\d+|tower|stack)\b",
+                                       text[m.end():]):
+        return text  # no cube between its ends said (other rules read the two ends), or more said after it
+    if any(o not in (w, "next") for o, w in zip(ordinals, _ORDINALS[1:], strict=False)):
+        return text
+    colours = [m.group("c1"), *re.findall(rf"\b(?:{COLOR_RE})\b", m.group("mid")), m.group("cn")]
+    said = re.search(r"\b(?:tower|stack|column|pile)\b", text[:m.start()])
+    return f"{text[:m.start()]}{'' if said else 'build a tower '}from bottom to top: {', '.join(colours)}{text[m.end():]}"
 
 
 def ordinal_roles(text: str) -> str:

@@ -240,7 +240,9 @@ def free_listed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
     colors = {a.name: a.color if a.kind == "colored_cube" else a.label for a in schema.assets
               if a.kind == "colored_cube" or (a.kind == "semantic_cube" and a.label)}
     named = {c for _, c in color_mentions(f.text)} | set(explicit_labels(f)) | {
-        m.upper() for m in re.findall(r"\b(?:letter|number|digit)\s+'?([A-Za-z0-9])'?(?![A-Za-z0-9'])", f.original, re.IGNORECASE)}
+        m.upper() for m in re.findall(r"\b(?:letter|number|digit)\s+'?([A-Za-z0-9])'?(?![A-Za-z0-9'])", f.original, re.IGNORECASE)} | {
+        # "a tower of the X block and the Y block", "the X and Y blocks": a capital said as a cube's label
+        m for m in re.findall(r"(?<![\w'-])([A-Z0-9])(?=(?:\s+and\s+(?:the\s+)?[A-Z0-9])*\s+(?:block|cube)s?\b)", f.original)}
     goal = schema.goal_predicate()
     parts = goal.children() if isinstance(goal, And) else [goal]
     out = list(parts)
