@@ -7720,3 +7720,54 @@ def test_a_tower_of_two_label_cubes_in_any_order_demands_no_order(text):
 def test_fortieth_session_refusals(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a hostile helper's silent classes (fortieth session), now read as said
+    ("Put red on blue and make a row of green and yellow.", ["line(green,yellow)", "stack(blue,red)"]),
+    ("Put red on blue and line up green and yellow.", ["line(green,yellow)", "stack(blue,red)"]),
+    ("Put red next to blue and make a row of green and yellow.", ["line(green,yellow)", "next_to(blue,red)"]),
+    ("Put red left of blue and make a tower of green and yellow.", ["left_of(red,blue)", "stack(green,yellow)"]),
+    ("Put red between blue and green and between yellow and pink.", ["between(red;blue,green)", "between(red;pink,yellow)"]),
+    ("Put the black cube between the red cube and the yellow patch.", ["between(black;patch:yellow,red)"]),
+    ("Put red to the left of blue, correction, to the right.", ["right_of(red,blue)"]),
+    ("Stack three, I mean four, red cubes.", ["stack(red,red,red,red)"]),
+    ("Put two — I mean three — red cubes on the green patch.", ["on_patch(red,red,red,patch:green)"]),
+    ("Put the red cube left of the blue cube, both in the front left corner.",
+     ["in_region(blue,front_left)", "in_region(red,front_left)", "left_of(red,blue)"]),
+    ("Put a red cube on the blue patch and another red cube on the green patch.",
+     ["on_patch(red,patch:blue)", "on_patch(red,patch:green)"]),
+])
+def test_fortieth_session_attack_readings(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    # a hostile helper's silent classes (fortieth session), refused: a second structure that took the first's cubes, a
+    # place said of "both"/"all" held of one, one colour at both ends of a tower, "another red" dropped, a between lost
+    # in a row, a contrast ("instead of on green"), a list corrected in its middle
+    "Put red on blue and make a row of red and yellow.",
+    "Put red on blue and then make a row of green and yellow next to it.",
+    "Put red on blue and make a row of them.",
+    "Put red on the left and blue on the right, both at the back.",
+    "Put red on the green patch and blue on the yellow patch, both at the front.",
+    "Put red and green on the white patch, both next to blue.",
+    "Put red between blue and green, all at the back.",
+    "Put red in front of blue and green behind blue, all in the center.",
+    "Make a tower of three cubes, red at the top and bottom and blue in the middle.",
+    "Make a tower of three cubes with red at the top and the bottom.",
+    "Make a tower of three cubes with red at the bottom and on top.",
+    "Stack red on blue, and another red on top.",
+    "Stack red on blue and a second red on top.",
+    "Put red on blue and another red next to blue.",
+    "Make a row with red between blue and green.",
+    "Put red between blue and green, in a row.",
+    "Put red on blue instead of on green.",
+    "Put red next to blue rather than next to green.",
+    "Put red left of blue, instead of right of green.",
+    "Put red between blue and green, instead of between yellow and pink.",
+    "Line up red, blue, sorry, green, and yellow from left to right.",
+])
+def test_fortieth_session_attack_refusals(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

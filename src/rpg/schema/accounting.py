@@ -1232,9 +1232,97 @@ def _with_relation(f: Features, schema: TaskSchema, cubes: list, walk: list) -> 
     return None
 
 
+_ANOTHER_SAID_RE = re.compile(rf"\b(?:another|a\s+second|a\s+2nd|1\s+more|one\s+more|an\s+extra|an\s+additional)\s+(?P<c>{COLOR_RE})\b"
+                              r"(?!\s+(?:goal\s+)?(?:patch|pad|mat|tile|square|area|zone|towers?|stacks?|rows?|lines?|piles?))")
+"""A second cube of a colour said before ("stack red on blue, and another red on top"): :func:`_another_said`."""
+
+
+def _another_said(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
+    """"another red", "a second red", "one more red": the task must have more cubes of that colour than the one said
+    before ("stack red on blue, and another red on top" had read one red cube, the second dropped, silently)."""
+    for m in _ANOTHER_SAID_RE.finditer(f.text):
+        colour = canon_color(m.group("c"))
+        before = len(re.findall(rf"\b{colour}\b(?!\s+(?:goal\s+)?(?:patch|pad|mat|tile|square|area|zone))", f.text[:m.start()]))
+        if sum(x.color == colour for x in cubes) < max(before, 1) + 1:
+            return _unread(f, schema, m.group(0), f"adds a {colour} cube to the one said before and the task read has "
+                           f"{sum(x.color == colour for x in cubes)}; say each cube's place (e.g. \"a tower of blue, red, red from "
+                           "the bottom\"), or use --model")
+    return None
+
+
+_BETWEEN_SAID_RE = re.compile(rf"\b(?P<a>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:(?:is|goes|sits|stands|should\s+be|must\s+be)\s+)?"
+                              rf"(?:(?:right|exactly|directly)\s+)?(?:in\s+)?between\s+(?:the\s+)?(?P<b>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+"
+                              rf"and\s+(?:the\s+)?(?P<c>{COLOR_RE})\b(?!\s+(?:goal\s+)?(?:patch|pad|mat|tile|square|area|zone))")
+"""One cube said between two others by colour ("a row with red between blue and green"): :func:`_between_held`."""
+
+
+def _between_held(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
+    """"red between blue and green" must hold in the goal: a between of those cubes, or a tower or ordered row in which a
+    red cube stands next to a blue one on one side and a green one on the other ("make a row with red between blue and
+    green" had become a row of the three in any order, silently)."""
+    for m in _BETWEEN_SAID_RE.finditer(f.text):
+        a, b, c = (canon_color(m.group(k)) for k in "abc")
+        if len({a, b, c}) < 3:
+            continue  # one colour twice: which cube is which is the readers' (refused there when not said)
+        colour = {x.name: x.color for x in cubes}
+        held = any(isinstance(p, P.Between) and colour.get(p.a) == a and {colour.get(p.b), colour.get(p.c)} == {b, c}
+                   for p in walk)
+        for p in walk:
+            if (type(p) is P.Stack or (isinstance(p, P.InLine) and p.order is not None)):
+                seq = [colour.get(n) for n in p.objects]
+                held = held or any(seq[i] == a and {seq[i - 1], seq[i + 1]} == {b, c} for i in range(1, len(seq) - 1))
+        if not held:
+            return _unread(f, schema, m.group(0), "puts a cube between two others and the task read does not; say it "
+                           "in a sentence of its own (e.g. \"put the red cube between the blue and green cubes\"), or use --model")
+    return None
+
+
+_GROUP_SAID_RE = re.compile(
+    r"(?:,\s*|\band\s+)(?:with\s+)?(?P<q>2|all(?:\s+\d)?|\d\s+of\s+them)(?:\s+of\s+them)?(?:\s+(?:cubes|blocks))?\s+"
+    r"(?:(?:are|go|should\s+be|must\s+be|end\s+up|sit|stand)\s+)?(?:(?P<prep>at|in|on|near|towards?|along)\s+the\s+(?:far\s+|very\s+)?"
+    r"(?P<side>front|back|rear|left|right|center|centre|middle)(?:\s+(?P<side2>left|right))?(?:\s+corner)?\b"
+    rf"|(?P<rel>next\s+to|beside|behind|in\s+front\s+of|(?:to\s+the\s+)?left\s+of|(?:to\s+the\s+)?right\s+of|far\s+from|near)\s+(?:the\s+)?"
+    rf"(?P<c>{COLOR_RE})\b)")
+"""A place or a relation said of a group after the cubes it is of ("..., both at the back", "..., all in the center",
+"..., both next to blue"; "both" is "2" once numbers are normalized): :func:`_group_place`."""
+
+
+def _group_place(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
+    """A place or relation said of "both" or "all" of the cubes before it must hold of that many cubes: "put red on the
+    left and blue on the right, both at the back" had put blue alone at the back, "put red between blue and green, all at
+    the back" green alone, silently.  Counted: the cubes the goal puts in that part of the table (or relates so to that
+    cube); "both" needs two, "all" as many cubes as the sentence names before it."""
+    for m in _GROUP_SAID_RE.finditer(f.text):
+        sentence = re.split(r"[.;!?]", f.text[:m.start()])[-1]
+        named = len(set(re.findall(rf"\b(?:{COLOR_RE})\b", sentence)))
+        q = m.group("q")
+        if q == "2" and not re.search(r"\bboth\b", f.original, re.IGNORECASE):
+            continue  # "three on the bottom, two in the middle": a count of a layer, not the cubes said before
+        need = 2 if q == "2" else int(re.search(r"\d", q).group(0)) if re.search(r"\d", q) else max(named, 2)
+        if m.group("rel"):
+            colour = canon_color(m.group("c"))
+            anchor = {x.name for x in cubes if x.color == colour}
+            held = {n for p in walk if p.name in PAIRWISE_RELATIONS and set(p.object_names()) & anchor
+                    for n in p.object_names() if n not in anchor}
+        else:
+            side = {"centre": "center", "middle": "center", "rear": "back"}.get(m.group("side"), m.group("side"))
+            region = f"{side}_{m.group('side2')}" if m.group("side2") else side
+            names = {x.name for x in cubes}
+            held = {p.a for p in walk if isinstance(p, P.InRegion) and p.a in names and (p.region == region or region in p.region.split("_"))}
+            held |= {n for p in walk if isinstance(p, P.InRegion) and p.a not in names
+                     and (p.region == region or region in p.region.split("_")) for st in walk
+                     if isinstance(st, (P.Stack, P.UnorderedStack, P.InLine)) and p.a in st.object_names()
+                     for n in st.object_names()}
+        if len(held) < need:
+            return _unread(f, schema, m.group(0).strip(" ,"), f"says it of {need} cubes and the task read holds it of "
+                           f"{len(held)}. Say it of each cube by name (e.g. \"... and the red and blue cubes at the back\"), or use --model")
+    return None
+
+
 WORD_CHECKS = (_follow_up_relation, _unread_reversal, _counted_others, _label_end, _moved_pronoun, _piles_said,
                _scene_count, _line_roles, _left_over_alternative, _idle_sentence, _raised_on_table, _undone_kept,
-               _ordered_line_roles, _unnamed_merged, _some_of_them, _others_colour, _with_relation)
+               _ordered_line_roles, _unnamed_merged, _some_of_them, _others_colour, _with_relation, _group_place,
+               _another_said, _between_held)
 """Checks that words of the instruction a reading leaves unread do not change what it asks, in order: each takes
 (features, schema, its cubes, its goal's predicates) and returns the ParseError to raise, or None
 (:func:`unaccounted` runs them; a new check is one function added here)."""

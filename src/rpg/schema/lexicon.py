@@ -712,9 +712,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      MOTION_WHY),
     ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none|nowhere)\b|n't\b"
                  r"|\b(?:somewhere|anywhere|everywhere)\s+(?:other|else)\s+than\b|\banywhere\s+but\b"  # "somewhere other than the left half"
-                 r"|\b(?:rather\s+than|instead\s+of)\s+(?=(?:(?:to\s+the\s+)?(?:left|right)|in\s+front|behind|next|beside|near|on(?:\s+top)?|onto"
-                 r"|under|in|at|far(?:\s+away)?|above|below)(?:\s+(?:of|to|from))?\s+the\s+[a-z\-]+(?:\s+[a-z\-]+)?\s+(?:cube|block|one|patch"
-                 r"|corner|side|half|edge|region)\b)"
+                 r"|\b(?:rather\s+than|instead\s+of)\s+(?=(?:(?:to\s+the\s+)?(?:left|right)|in\s+front|behind|next|beside|near|on(?:\s+top)?|onto|between"
+                 r"|under|in|at|far(?:\s+away)?|above|below)(?:\s+(?:of|to|from))?\s+(?:the\s+[a-z\-]+(?:\s+[a-z\-]+)?\s+(?:cube|block|one|patch"
+                 rf"|corner|side|half|edge|region)\b|(?:the\s+)?(?:{COLOR_RE})\b))"  # (bare colours: "instead of on green")
                  r"|\b(?:anywhere|everywhere|anything|any\s+place)\s+but\b"
                  r"|\b(?:don|doesn|didn|isn|aren|shouldn|mustn|won|wouldn)\s*'?\s*t\b"
                  r"|\bno\s+(?:\w+\s+){0,2}?(?:blocks?|cubes?|boxes|one|other|longer)\b",
@@ -4860,6 +4860,24 @@ BOTTOM_UP_ROLES_RE = re.compile(
 third one white and the top one red"; :func:`rpg.schema.reading.bottom_up_roles`)."""
 
 
+def _relation_then_structure(m: re.Match) -> bool:
+    """Whether the clause before ``m`` (its sentence) relates two cubes by colour ("put red on blue") and names no structure,
+    and the clause after it builds one of cubes named by colour alone, none of them the first clause's, with nothing that
+    refers back ("them", "it", "the rest", "another", "both"): :data:`LOOSE_PHRASE_REWRITES` then makes them two sentences."""
+    before = re.split(r"[.;!?]", m.string[:m.start()])[-1]
+    after = re.split(r"[.;!?]", m.string[m.end():])[0]
+    if not re.search(r"\b(?:on|onto|on\s+top\s+of|next\s+to|beside|left\s+of|right\s+of|behind|in\s+front\s+of|between|under|below|above"
+                     r"|far\s+from|away\s+from)\b", before) or re.search(
+            r"\b(?:rows?|lines?|towers?|stacks?|piles?|pyramids?|walls?|circles?|rings?|columns?|grids?)\b", before):
+        return False
+    if re.search(r"\b(?:it|its|them|they|those|these|that|this|both|all|each|every|rest|remaining|others?|another|same|more|too|also|again"
+                 r"|with|next\s+to|beside|left|right|behind|front|between|near|around|on\s+top|under|below|above)\b", after):
+        return False
+    first = set(re.findall(rf"\b(?:{COLOR_RE})\b", before))
+    second = set(re.findall(rf"\b(?:{COLOR_RE})\b", after))
+    return bool(first) and bool(second) and not first & second
+
+
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "the cube that is red", "the block which is black": the red cube (the relative clause had lost its colour)
     (re.compile(rf"\bthe\s+(cube|block)\s+(?:that|which)\s+is\s+(?P<c>{COLOR_RE})\b(?!\s+(?:and|or|,|-|with)\b)"),
@@ -4872,6 +4890,22 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      lambda m: m.group(0) if re.search(r"\b(?:row|line|tower|stack|pile|pyramid|wall|circle|ring|grid|column|rows|lines|towers|on|onto"
                                        r"|spell\w*|reads?)\b", m.string)
      else f"{m.group('v')} {m.group('l')} in a row {m.group('d')}"),
+    # "Put red on blue and make a row of green and yellow": a relation, then a structure of other cubes, two clauses of their
+    # own (the row had taken red and blue too, the stack dropped, silently); not when the structure's clause refers back
+    # ("and make a tower of them")
+    (re.compile(r"(?<=[a-z])\s*,?\s+and\s+(?:then\s+|also\s+)?(?=(?:make|build|form|create|put|place|arrange|line\s+up|stack|set|lay)\b"
+                r"[^.;!?]*?\b(?:rows?|lines?|towers?|stacks?|piles?|pyramids?|walls?|circles?|rings?|columns?|in\s+a\s+row|up)\b)"),
+     lambda m: ". " if _relation_then_structure(m) else m.group(0)),
+    # "red at the top and bottom", "red at the bottom and on top": one colour at both ends, said once for two cubes (a colour
+    # nobody said had been made up for one end, silently): each end said with its cube
+    (re.compile(rf"\b(?P<c>{COLOR_RE})(?:\s+(?:cubes?|blocks?|ones?))?\s+(?:at|on)\s+(?:the\s+(?:very\s+)?)?(?P<e1>top|bottom|base)\s+and\s+"
+                r"(?:(?:at|on)\s+)?(?:the\s+(?:very\s+)?)?(?P<e2>top|bottom|base)\b"),
+     lambda m: m.group(0) if {m.group("e1"), m.group("e2")} <= {"bottom", "base"} or m.group("e1") == m.group("e2")
+     else f"{m.group('c')} at the {m.group('e1')} and {m.group('c')} at the {m.group('e2')}"),
+    # "put red between blue and green and between yellow and pink": the second between is the same cube's (it had been read
+    # of green, silently)
+    (re.compile(rf"\b(?P<c>{COLOR_RE})(?P<mid>(?:\s+(?:cube|block|one))?\s+(?:in\s+)?between\s+[^.;!?]*?)\s*,?\s+and\s+(?:also\s+)?(?=between\b)"),
+     lambda m: f"{m.group('c')}{m.group('mid')} and {m.group('c')} "),
     # "next to both the orange cube and the purple cube": next to each of them ("both" had been read as the cubes before it)
     (re.compile(rf"\b(next\s+to|beside|far\s+from|away\s+from|touching)\s+both\s+(?=(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+and\s+"
                 rf"(?:the\s+)?(?:{COLOR_RE})\b)"), r"\1 "),
@@ -5814,6 +5848,8 @@ PAIR_RELATION_RE = re.compile(
 PAIR_RELATION_BARE_RE = re.compile(
     rf"(?:\b(?:put|place|set|stack|move)|,\s*and)\s+(?:the\s+)?(?P<a>{COLOR_RE})(?:\s+(?:block|cube|one))?\s+(?P<rel>on\s+top\s+of|onto|on|next\s+to"
     rf"|beside|behind|in\s+front\s+of|(?:to\s+the\s+)?left\s+of|(?:to\s+the\s+)?right\s+of|under|far\s+from)\s+(?:the\s+)?"
-    rf"(?P<b>{COLOR_RE})\b(?!\s+(?:goal\s+)?(?:patch|pad|mat|tile|square|area|region|zone)|\s*(?:,|and\b|or\b|&|\+))")
-"""The same relation said with bare colours after a verb ("... and put blue on yellow"): a row of four had been made and
-the relation dropped, silently."""
+    rf"(?P<b>{COLOR_RE})\b(?!\s+(?:goal\s+)?(?:patch|pad|mat|tile|square|area|region|zone)"
+    rf"|\s*(?:,\s*(?:and\s+|or\s+)?|(?:and|or|&|\+)\s+)(?:the\s+)?(?:{COLOR_RE})\b)")
+"""The same relation said with bare colours after a verb ("... and put blue on yellow", "put red on blue and line up
+green and yellow"): a row of four had been made and the relation dropped, silently.  Not when another colour is listed
+after the second ("red on blue and green": which cubes the relation has is the list's)."""

@@ -1221,16 +1221,30 @@ def apply_corrections(text: str) -> str:
     as written (its words are then refused)."""
     colour_list = rf"(?:{COLOR_RE})(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+)(?:{COLOR_RE}))+\b"
     for m in reversed(list(lexicon.SELF_CORRECTION_RE.finditer(text))):
-        fix = re.match(r"[^,.;!?]+", text[m.end():])
+        fix = re.match(r"[^,.;!?\u2013\u2014]+?(?=\s*(?:[,.;!?\u2013\u2014]|\s-\s|$))", text[m.end():])  # (to the next pause or dash)
         before = text[:m.start()].rstrip(" ,;:-\u2013\u2014")
         listed = re.match(rf"(?i)(?:of\s+)?{colour_list}", text[m.end():])
         said = re.search(rf"(?i)(?:\bof\s+)?{colour_list}$", before)
         if listed and said:  # "a row: red, green, blue, no wait, red, blue, green": the list said again (two had been kept)
+            if sorted(re.findall(rf"(?i)\b(?:{COLOR_RE})\b", listed.group(0))) != sorted(re.findall(rf"(?i)\b(?:{COLOR_RE})\b", said.group(0))):
+                continue  # "red, blue, sorry, green, and yellow": not the same cubes again, so which of the list is
+                # corrected is not said (the whole list had been replaced, red dropped, silently): left as written, refused
             text = before[:said.start()] + listed.group(0) + text[m.end() + listed.end():]
+            continue
+        side = re.fullmatch(r"(?:to|on|at)\s+the\s+(left|right|front|back)", fix.group(0).strip()) if fix else None
+        related = re.search(r"\b(left|right)(\s+of\s+[^,;.]+)$", before) if side else None
+        if related:  # "to the left of blue, correction, to the right": the side of the same relation ("to the right" had
+            # become a place of the table, the relation dropped)
+            text = (before[:related.start()] + side.group(1) + related.group(2) + text[m.end() + fix.end():]
+                    if side.group(1) in ("left", "right") else text)
             continue
         new = _corrected(before, fix.group(0).strip()) if fix and before.strip() else None
         if new is not None:
-            text = new + text[m.end() + fix.end():]
+            rest = text[m.end() + fix.end():]
+            if re.fullmatch(r"\d+", fix.group(0).strip()) or fix.group(0).strip().lower() in lexicon.NUMBER_WORDS:  # "stack
+                # three, I mean four, red cubes": the count's own noun follows (the comma had cut it off)
+                rest = re.sub(r"^\s*(?:,|-|\u2013|\u2014)\s*(?=[a-zA-Z])", " ", rest)
+            text = new + rest
     return text
 
 
