@@ -7771,3 +7771,34 @@ def test_fortieth_session_attack_readings(text, expected):
 def test_fortieth_session_attack_refusals(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Place the orange cube on the purple-coloured patch.", ["on_patch(orange,patch:purple)"]),
+    ("Put the orange cube on the purple colored patch.", ["on_patch(orange,patch:purple)"]),
+    ("Make a row of red, green and blue from left to right: blue is third from the left.",
+     ["line[left_to_right](red,green,blue)"]),
+    ("Make a tower from bottom to top of red, green, blue, with blue on top.", ["stack(red,green,blue)"]),
+])
+def test_fortieth_session_second_attack_readings(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    # an approximate or added count, a rank the reading dropped or a cube it made for it, a list against its own end, a
+    # spelled word dropped beside a relation (a hostile helper's silent classes, fortieth session)
+    "Make a tower of three or so red cubes.",
+    "Stack three red cubes, plus one.",
+    "Make a row of red, green and blue: red is third from the left.",
+    "Make a row of red, green and blue, red is second.",
+    "Build a tower of red, blue and green in which red is higher than blue.",
+    "Stack red, blue and green, red over blue.",
+    "Build a tower of red, blue, green: red is second from the bottom.",
+    "Build a tower of red, blue, green, yellow: red at the bottom, yellow second.",
+    "Make a tower from bottom to top of red, green, blue, with green on top.",
+    "Spell GO, then put the red cube next to the G.",
+    "Spell UP, then put the red cube on the P.",
+])
+def test_fortieth_session_second_attack_refusals(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

@@ -1277,6 +1277,92 @@ def _between_held(f: Features, schema: TaskSchema, cubes: list, walk: list) -> P
     return None
 
 
+_COLOUR_LIST_RE = re.compile(rf"(?:\bof|:|\bstack|\bline\s+up|\barrange|\bput)\s+(?:the\s+)?(?P<l>(?:{COLOR_RE})(?:\s*,\s*(?:the\s+)?(?:{COLOR_RE}))*"
+                             rf"\s*,?\s*(?:and|then)\s+(?:the\s+)?(?:{COLOR_RE})|(?:{COLOR_RE})(?:\s*,\s*(?:the\s+)?(?:{COLOR_RE})){{2,}})\b"
+                             r"(?!\s+(?:goal\s+)?(?:patch|pad|mat))")
+"""The colours a structure is said of, listed ("a tower of red, blue and green", "bottom to top: red, green, blue")."""
+
+
+def _listed_once(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
+    """A text that says its cubes as one list of colours, and no count, says how many of each colour there are: "build a
+    tower of red, blue and green: red is second from the bottom" had made a fourth, red cube, "stack red, blue and green,
+    red over blue" five, silently.  The task read may not have more cubes of a listed colour than the list names (a
+    colour said with a count or "another" elsewhere is the other checks'); a list said from its ends against a role of
+    its own ("from bottom to top: red, green, blue, with green on top") is a contradiction."""
+    lists = list(_COLOUR_LIST_RE.finditer(f.text))
+    if len(lists) != 1 or re.search(r"\b(?:\d+|another|more|extra|each|every|both|all|pairs?|again|too|also|copies|"
+                                    r"patch\w*|pads?|mats?|rows|lines|towers|stacks|piles|walls|pyramids|layers?|tiers?|levels?)\b",
+                                    f.text.replace(lists[0].group(0), " ")):
+        return None
+    listed = Counter(canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", lists[0].group("l")))
+    have = Counter(x.color for x in cubes)
+    over = sorted(c for c in listed if have[c] > listed[c])
+    if over:
+        return _unread(f, schema, lists[0].group(0).lstrip(":").strip(), f"lists {listed[over[0]]} {over[0]} cube(s) and the "
+                       f"task read has {have[over[0]]}; say each cube once, in one order (e.g. \"from bottom to top: ...\"), "
+                       "or use --model")
+    direction = re.search(r"\b(?:from\s+(?:the\s+)?(bottom|top)\s+(?:to|on)|(bottom|top)\s+to)\s+(?:the\s+)?(?:top|bottom)\b", f.text)
+    if direction:  # ("from bottom to top of ..." is normalized to "from bottom on top of ...")
+        seq = [canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", lists[0].group("l"))]
+        if (direction.group(1) or direction.group(2)) == "top":
+            seq.reverse()
+        for m in lexicon.STACK_ROLE_RE.finditer(f.text):
+            end = "top" if (m.group("end") or m.group("end2")) == "top" else "bottom"
+            if m.group("c") in COLORS and canon_color(m.group("c")) != (seq[-1] if end == "top" else seq[0]):
+                return ParseError(f"\"{f.original[:80]}\" contradicts itself: the list puts {seq[-1] if end == 'top' else seq[0]} "
+                                  f"at the {end} and '{m.group(0).strip(' ,;.')}' puts {canon_color(m.group('c'))} there; say the "
+                                  "order once, or use --model")
+    return None
+
+
+_RANK_SAID_RE = re.compile(
+    rf"\b(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:is|goes|comes|sits|stands|should\s+be|must\s+be|will\s+be)\s+(?:the\s+)?"
+    r"(?P<n>first|second|third|fourth|fifth|sixth|1st|2nd|3rd|4th|5th|6th)(?:\s+(?:one|cube|block|in\s+line))?"
+    r"(?:\s+from\s+(?:the\s+)?(?P<end>left|right|bottom|top|front|back)(?:\s+to\s+(?:the\s+)?(?:left|right|top|bottom|front|back))?)?\b")
+# ("from the left" is normalized to "from left to right")
+"""A cube given its rank in a row or tower ("red is third from the left", "red is second from the bottom"): :func:`_rank_held`."""
+_RANKS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6, "1st": 1, "2nd": 2, "3rd": 3, "4th": 4,
+          "5th": 5, "6th": 6}
+_FROM_END = {"left": "left_to_right", "right": "right_to_left", "front": "front_to_back", "back": "back_to_front"}
+_REVERSED = {"left_to_right": "right_to_left", "right_to_left": "left_to_right", "front_to_back": "back_to_front",
+             "back_to_front": "front_to_back"}
+
+
+def _rank_held(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
+    """"red is third from the left" must hold: an ordered row or a tower of the goal with a cube of that colour at that
+    rank counted from that end (a tower from its bottom when no end is said); "make a row of red, green and blue: red is
+    third from the left" had put red first, silently."""
+    colour = {x.name: x.color for x in cubes}
+    for m in _RANK_SAID_RE.finditer(f.text):
+        c, n, end = canon_color(m.group("c")), _RANKS[m.group("n")], m.group("end")
+        held = False
+        for p in walk:
+            seq = [colour.get(x) for x in getattr(p, "objects", ())]
+            if type(p) is P.Stack and end in (None, "bottom", "top"):
+                seq = seq[::-1] if end == "top" else seq
+            elif isinstance(p, P.InLine) and end in _FROM_END and p.order in (_FROM_END[end], _REVERSED[_FROM_END[end]]):
+                seq = seq if p.order == _FROM_END[end] else seq[::-1]
+            else:
+                continue
+            held = held or (len(seq) >= n and seq[n - 1] == c)
+        if not held:
+            return _unread(f, schema, m.group(0), "gives a cube a rank the task read does not give it; say the whole order "
+                           "(e.g. \"from left to right: blue, green, red\"), or use --model")
+    return None
+
+
+def _spelled_word_read(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
+    """A word the instruction spells ("Spell GO, then put the red cube next to the G") must be read as one structure of
+    its letter cubes (a row or tower holding every letter); the spelling had been dropped and only the relation kept."""
+    label = {x.name: x.label for x in cubes}
+    for m in re.finditer(r"\b(?i:spell(?:s|ed|ing)?)\s+(?:(?i:the\s+word)\s+|(?i:out)\s+)?([A-Z]{2,})\b", f.original):
+        word = Counter(m.group(1))
+        if not any(not word - Counter(label.get(n) for n in getattr(p, "objects", ())) for p in walk):
+            return _unread(f, schema, m.group(0), "spells a word and the task read lays out no row or tower of its letters; "
+                           "say the word in a sentence of its own, or use --model")
+    return None
+
+
 _GROUP_SAID_RE = re.compile(
     r"(?:,\s*|\band\s+)(?:with\s+)?(?P<q>2|all(?:\s+\d)?|\d\s+of\s+them)(?:\s+of\s+them)?(?:\s+(?:cubes|blocks))?\s+"
     r"(?:(?:are|go|should\s+be|must\s+be|end\s+up|sit|stand)\s+)?(?:(?P<prep>at|in|on|near|towards?|along)\s+the\s+(?:far\s+|very\s+)?"
@@ -1322,7 +1408,8 @@ def _group_place(f: Features, schema: TaskSchema, cubes: list, walk: list) -> Pa
 WORD_CHECKS = (_follow_up_relation, _unread_reversal, _counted_others, _label_end, _moved_pronoun, _piles_said,
                _scene_count, _line_roles, _left_over_alternative, _idle_sentence, _raised_on_table, _undone_kept,
                _ordered_line_roles, _unnamed_merged, _some_of_them, _others_colour, _with_relation, _group_place,
-               _another_said, _between_held)
+               _another_said, _between_held, _listed_once, _rank_held,
+               _spelled_word_read)
 """Checks that words of the instruction a reading leaves unread do not change what it asks, in order: each takes
 (features, schema, its cubes, its goal's predicates) and returns the ParseError to raise, or None
 (:func:`unaccounted` runs them; a new check is one function added here)."""

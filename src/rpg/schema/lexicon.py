@@ -938,7 +938,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     # one number had been taken, silently ("at least" and "up to" were refused already)
     ("quantity", r"\b\d+\s*(?:-|\u2013|to|/)\s*\d+\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b|\b(?:one|two|three|four|five|six)\s*(?:-|to)\s*"
                  r"(?:two|three|four|five|six|seven|eight)\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b|\b\d+\s*\+\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b"
-                 r"|\b\d+\s+(?:or\s+so|and\s+up|or\s+more|or\s+fewer|or\s+less|ish)\b|\b(?:cube|block)s?\s*[*\u00d7]\s*\d+\b"
+                 r"|\b(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:or\s+so|and\s+up|or\s+more|or\s+fewer|or\s+less|ish)\b"
+                 r"|\b(?:cube|block)s?\s*[*\u00d7]\s*\d+\b|,?\s*\bplus\s+(?:one|1|two|2|another|a\s+few|some)\b"  # ("3 red cubes, plus one")
                  r"|(?:^|(?<=\s))-\d+\s+(?:[a-z]+\s+)?(?:cubes?|blocks?)\b",
      "gives a range or an approximate count (\"2-3 cubes\", \"3 or so\"): a task has an exact number of cubes; say it"),
     # "one cube of each colour", "two cubes of each colour": cubes of colours nobody named, so how many is not said (one
@@ -4906,6 +4907,8 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # of green, silently)
     (re.compile(rf"\b(?P<c>{COLOR_RE})(?P<mid>(?:\s+(?:cube|block|one))?\s+(?:in\s+)?between\s+[^.;!?]*?)\s*,?\s+and\s+(?:also\s+)?(?=between\b)"),
      lambda m: f"{m.group('c')}{m.group('mid')} and {m.group('c')} "),
+    # "the purple-coloured patch", "the red coloured cube": the colour (a purple cube had been made up, the patch dropped)
+    (re.compile(rf"\b({COLOR_RE})(?:\s*-\s*|\s+)colou?red\b"), r"\1"),
     # "next to both the orange cube and the purple cube": next to each of them ("both" had been read as the cubes before it)
     (re.compile(rf"\b(next\s+to|beside|far\s+from|away\s+from|touching)\s+both\s+(?=(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+and\s+"
                 rf"(?:the\s+)?(?:{COLOR_RE})\b)"), r"\1 "),
