@@ -7802,3 +7802,37 @@ def test_fortieth_session_second_attack_readings(text, expected):
 def test_fortieth_session_second_attack_refusals(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Put red to the right of blue and green to the right of yellow, sorry, to the left.",
+     ["left_of(green,yellow)", "right_of(red,blue)"]),
+    ("Put the red cube on the blue cube. Put the green and yellow cubes in a row on the left.",
+     ["line(green,yellow)@left", "stack(blue,red)"]),
+    ("Put red on blue and put green and yellow in a row to the left.", ["line(green,yellow)@left", "stack(blue,red)"]),
+    ("Build a tower of red, then blue, then red, bottom to top", ["stack(red,blue,red)"]),
+    ("Goal: one tower. Gray goes first, then brown on the gray, then cyan on the brown.", ["stack(gray,brown,cyan)"]),
+])
+def test_fortieth_session_third_attack_readings(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    # a second hostile helper's attack on this session's own rules: each had compiled silently wrong
+    "Put red next to both blue and green on the yellow patch.",
+    "Put red next to both blue and green, in a row.",
+    "Build a tower of red, blue and green; green is third.",
+    "Build a tower of red, blue and green; red is first.",
+    "Put the cube that is orange red on the blue cube.",
+    "Put the red and blue coloured cube on the green cube.",
+    "Put the red coloured blue cube on the green cube.",
+    "Put red to the left of blue and green in front of yellow, sorry, to the right.",
+    "The bottom cube is red, the second one blue, the top one green. Put the yellow cube on top.",
+    "Make a row with red at the top and bottom.",
+    "Put red at the top and bottom of the table.",
+    "Move along the back of the table and put red on blue.",
+    "Put red, blue and green from left to right, two of them at the back.",
+])
+def test_fortieth_session_third_attack_refusals(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

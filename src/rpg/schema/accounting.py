@@ -1277,9 +1277,8 @@ def _between_held(f: Features, schema: TaskSchema, cubes: list, walk: list) -> P
     return None
 
 
-_COLOUR_LIST_RE = re.compile(rf"(?:\bof|:|\bstack|\bline\s+up|\barrange|\bput)\s+(?:the\s+)?(?P<l>(?:{COLOR_RE})(?:\s*,\s*(?:the\s+)?(?:{COLOR_RE}))*"
-                             rf"\s*,?\s*(?:and|then)\s+(?:the\s+)?(?:{COLOR_RE})|(?:{COLOR_RE})(?:\s*,\s*(?:the\s+)?(?:{COLOR_RE})){{2,}})\b"
-                             r"(?!\s+(?:goal\s+)?(?:patch|pad|mat))")
+_COLOUR_LIST_RE = re.compile(rf"(?:\bof|:|\bstack|\bline\s+up|\barrange|\bput)\s+(?:the\s+)?(?P<l>(?:{COLOR_RE})(?:(?:\s*,\s*(?:and\s+|then\s+)?"
+                             rf"|\s+(?:and|then)\s+)(?:the\s+)?(?:{COLOR_RE}))+)\b(?!\s+(?:goal\s+)?(?:patch|pad|mat))")
 """The colours a structure is said of, listed ("a tower of red, blue and green", "bottom to top: red, green, blue")."""
 
 
@@ -1318,7 +1317,8 @@ def _listed_once(f: Features, schema: TaskSchema, cubes: list, walk: list) -> Pa
 _RANK_SAID_RE = re.compile(
     rf"\b(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:is|goes|comes|sits|stands|should\s+be|must\s+be|will\s+be)\s+(?:the\s+)?"
     r"(?P<n>first|second|third|fourth|fifth|sixth|1st|2nd|3rd|4th|5th|6th)(?:\s+(?:one|cube|block|in\s+line))?"
-    r"(?:\s+from\s+(?:the\s+)?(?P<end>left|right|bottom|top|front|back)(?:\s+to\s+(?:the\s+)?(?:left|right|top|bottom|front|back))?)?\b")
+    r"(?:\s+from\s+(?:the\s+)?(?P<end>left|right|bottom|top|front|back)(?:\s+to\s+(?:the\s+)?(?:left|right|top|bottom|front|back))?)?\b"
+    r"(?!\s*,?\s*(?:and\s+)?then\b)")  # ("gray goes first, then brown on the gray": a sequence, read by the readers)
 # ("from the left" is normalized to "from left to right")
 """A cube given its rank in a row or tower ("red is third from the left", "red is second from the bottom"): :func:`_rank_held`."""
 _RANKS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6, "1st": 1, "2nd": 2, "3rd": 3, "4th": 4,
@@ -1333,7 +1333,13 @@ def _rank_held(f: Features, schema: TaskSchema, cubes: list, walk: list) -> Pars
     rank counted from that end (a tower from its bottom when no end is said); "make a row of red, green and blue: red is
     third from the left" had put red first, silently."""
     colour = {x.name: x.color for x in cubes}
+    directed = re.search(r"\b(?:left|right|front|back|bottom|top)\s+to\s+(?:the\s+)?(?:left|right|front|back|bottom|top)\b",
+                         _RANK_SAID_RE.sub(" ", f.text))
     for m in _RANK_SAID_RE.finditer(f.text):
+        if not directed:  # "a tower of red, blue and green; green is third": the rank alone orders one cube, and which order
+            # the rest have is not said (free_listed_orders had freed the whole tower, the rank lost, silently)
+            return _unread(f, schema, m.group(0), "gives a cube a rank, and the order of the others is not said; say the "
+                           "whole order (e.g. \"from bottom to top: red, blue, green\"), or use --model")
         c, n, end = canon_color(m.group("c")), _RANKS[m.group("n")], m.group("end")
         held = False
         for p in walk:
@@ -1382,6 +1388,9 @@ def _group_place(f: Features, schema: TaskSchema, cubes: list, walk: list) -> Pa
         sentence = re.split(r"[.;!?]", f.text[:m.start()])[-1]
         named = len(set(re.findall(rf"\b(?:{COLOR_RE})\b", sentence)))
         q = m.group("q")
+        if q == "2" and re.search(r"\b(?:two|2)\s+of\s+them\b", f.original, re.IGNORECASE):
+            return _unread(f, schema, m.group(0).strip(" ,"), "picks two of the cubes said before without saying which; "
+                           "name them (e.g. \"the red and blue cubes at the back\"), or use --model")
         if q == "2" and not re.search(r"\bboth\b", f.original, re.IGNORECASE):
             continue  # "three on the bottom, two in the middle": a count of a layer, not the cubes said before
         need = 2 if q == "2" else int(re.search(r"\d", q).group(0)) if re.search(r"\d", q) else max(named, 2)

@@ -4881,7 +4881,7 @@ def _relation_then_structure(m: re.Match) -> bool:
 
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "the cube that is red", "the block which is black": the red cube (the relative clause had lost its colour)
-    (re.compile(rf"\bthe\s+(cube|block)\s+(?:that|which)\s+is\s+(?P<c>{COLOR_RE})\b(?!\s+(?:and|or|,|-|with)\b)"),
+    (re.compile(rf"\bthe\s+(cube|block)\s+(?:that|which)\s+is\s+(?P<c>{COLOR_RE})\b(?!\s*(?:and|or|,|-|with|{COLOR_RE})\b)"),
      lambda m: f"the {m.group('c')} {m.group(1)}"),
     # "Lay the cubes out red, orange, yellow, green from left to right": a list given a direction across the table is a row
     # (no structure said anywhere else; it had found no task)
@@ -4902,19 +4902,25 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b(?P<c>{COLOR_RE})(?:\s+(?:cubes?|blocks?|ones?))?\s+(?:at|on)\s+(?:the\s+(?:very\s+)?)?(?P<e1>top|bottom|base)\s+and\s+"
                 r"(?:(?:at|on)\s+)?(?:the\s+(?:very\s+)?)?(?P<e2>top|bottom|base)\b"),
      lambda m: m.group(0) if {m.group("e1"), m.group("e2")} <= {"bottom", "base"} or m.group("e1") == m.group("e2")
+     or not re.search(r"\b(?:towers?|stack\w*|columns?)\b", m.string) or re.search(r"\b(?:rows?|lines?|table)\b", m.string)
      else f"{m.group('c')} at the {m.group('e1')} and {m.group('c')} at the {m.group('e2')}"),
     # "put red between blue and green and between yellow and pink": the second between is the same cube's (it had been read
     # of green, silently)
     (re.compile(rf"\b(?P<c>{COLOR_RE})(?P<mid>(?:\s+(?:cube|block|one))?\s+(?:in\s+)?between\s+[^.;!?]*?)\s*,?\s+and\s+(?:also\s+)?(?=between\b)"),
      lambda m: f"{m.group('c')}{m.group('mid')} and {m.group('c')} "),
     # "the purple-coloured patch", "the red coloured cube": the colour (a purple cube had been made up, the patch dropped)
-    (re.compile(rf"\b({COLOR_RE})(?:\s*-\s*|\s+)colou?red\b"), r"\1"),
+    (re.compile(rf"(?<!\band\s)(?<!,\s)(?<!\bor\s)\b({COLOR_RE})(?:\s*-\s*|\s+)colou?red\s+(?=(?:goal\s+)?(?:patch|pad|mat|tile|square|area|zone)\b)"),
+     r"\1 "),  # (of one colour and a patch only: "the red and blue coloured cube" is one cube of two colours, refused)
     # "next to both the orange cube and the purple cube": next to each of them ("both" had been read as the cubes before it)
     (re.compile(rf"\b(next\s+to|beside|far\s+from|away\s+from|touching)\s+both\s+(?=(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+and\s+"
-                rf"(?:the\s+)?(?:{COLOR_RE})\b)"), r"\1 "),
+                rf"(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?|ones?))?\s*(?:[.;!]|$))"), r"\1 "),  # (the sentence ends there: a
+    # place or row after it, "... on the yellow patch", "..., in a row", had been read of the last cube alone)
     # "in a line along the front of the table", "... from left to right along the back edge": the line at that side
-    (re.compile(r"\balong\s+the\s+(front|back|rear|left|right)(?:\s+(?:edge|side))?(?:\s+of\s+the\s+(?:table|workspace))?\b"),
-     r"at the \1 of the table"),
+    (re.compile(r"\balong\s+the\s+(front|back|rear)(?:\s+(?:edge|side))?(?:\s+of\s+the\s+(?:table|workspace))?\b"),
+     lambda m: m.group(0) if not re.search(r"\b(?:rows?|lines?|line\s+up|lay|laid|arrange\w*|left\s+to\s+right|right\s+to\s+left)\b", m.string)
+     or re.search(r"\b(?:move|moving|slide|sliding|push|pushing|drag|dragging|roll|rolling|go|travel\w*|sweep\w*)\b", m.string)
+     else f"at the {m.group(1)} of the table"),  # (a row along the front or back runs left to right, as a row does when no
+    # axis is said; along the left side it would run front to back, and a path along an edge is no place: left as written)
     # "a tower of yellow, then green, then blue, counted from the bottom": the direction the list is said in
     (re.compile(r"\bcount(?:ed|ing)\s+(?=from\s+the\s+(?:bottom|top|left|right)\b)"),
      lambda m: m.group(0) if re.search(r"\b(?:first|second|third|fourth|fifth|last|\d+(?:st|nd|rd|th))\b", m.string) else ""),

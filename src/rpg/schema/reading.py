@@ -1232,11 +1232,13 @@ def apply_corrections(text: str) -> str:
             text = before[:said.start()] + listed.group(0) + text[m.end() + listed.end():]
             continue
         side = re.fullmatch(r"(?:to|on|at)\s+the\s+(left|right|front|back)", fix.group(0).strip()) if fix else None
-        related = re.search(r"\b(left|right)(\s+of\s+[^,;.]+)$", before) if side else None
+        related = re.search(r"(?s:.*)\b(left|right)(\s+of\s+[^,;.]+)$", before) if side else None
+        if related and (side.group(1) not in ("left", "right") or re.search(
+                r"\b(?:and|in\s+front|behind|on|onto|next|beside|between|under|above|below|near|far)\b", related.group(2))):
+            continue  # a relation of another kind, or another cube's, after the side said: which is corrected is not said
         if related:  # "to the left of blue, correction, to the right": the side of the same relation ("to the right" had
             # become a place of the table, the relation dropped)
-            text = (before[:related.start()] + side.group(1) + related.group(2) + text[m.end() + fix.end():]
-                    if side.group(1) in ("left", "right") else text)
+            text = before[:related.start(1)] + side.group(1) + related.group(2) + text[m.end() + fix.end():]
             continue
         new = _corrected(before, fix.group(0).strip()) if fix and before.strip() else None
         if new is not None:
@@ -1997,7 +1999,8 @@ def bottom_up_roles(text: str) -> str:
     if m is None or re.search(r"\b(?:towers|stacks|columns|piles?|rows?|lines?|pyramids?|walls?|circles?|rings?|grids?)\b", text):
         return text  # another structure, or several towers: which one "the bottom cube" is of is not said
     ordinals = re.findall(r"\b(second|third|fourth|fifth|sixth|next)\b", m.group("mid"))
-    if not m.group("mid") or re.search(r"\b(?:between|middle|rest|others?|remaining|second|third|fourth|next|\d+|tower|stack)\b",
+    if not m.group("mid") or re.search(r"\b(?:between|middle|rest|others?|remaining|second|third|fourth|next|\d+|tower|stack|top|above|over|upon|onto"
+                                       r"|on|under|below|beneath|bottom|add\w*)\b",
                                        text[m.end():]):
         return text  # no cube between its ends said (other rules read the two ends), or more said after it
     if any(o not in (w, "next") for o, w in zip(ordinals, _ORDINALS[1:], strict=False)):

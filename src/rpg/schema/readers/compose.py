@@ -213,6 +213,21 @@ def _region_part(m: re.Match) -> tuple[str, str]:
     return m.group("head") or m.group("head2"), m.group("r") or m.group("r2")
 
 
+def _place_of_last_clause(text: str) -> bool:
+    """Whether ``text``'s last clause (after a sentence break or "and put/make/..."), where a place is said, names cubes of
+    its own, none of them an earlier clause's, and nothing that refers to all of them ("all", "both", "it", "whole"): the
+    place is then that clause's structure's alone."""
+    clauses = re.split(r"[.;!?]\s+|,?\s\band\s+(?:then\s+)?(?=(?:put|place|make|build|stack|line|arrange|set|lay|form|create)\b)",
+                       text.strip())
+    if len(clauses) < 2:
+        return False
+    last, earlier = clauses[-1], " ".join(clauses[:-1])
+    own = set(re.findall(rf"\b(?:{COLOR_RE})\b", last))
+    before = set(re.findall(rf"\b(?:{COLOR_RE})\b", earlier))
+    return bool(own and before and not own & before) and not re.search(
+        r"\b(?:all|both|everything|whole|them|it|its|together|each)\b", last)
+
+
 @reader(order=187)
 def recognize_structure_in_region(f: Features, b: Builder) -> bool:
     """A structure wider than one spot (a line, a pyramid, a grid, a circle) standing in one
@@ -241,6 +256,9 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
             and re.search(rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:on|onto|atop|upon)\s+(?:the\s+)?(?:{COLOR_RE})\b", part)):
         return False  # "a tower of ... then put a brown cube in the back left corner": the place is the last cube's (it had
         # joined the tower; "stack four blue cubes into one tower and put a white cube in the front left corner" too)
+    if part and _place_of_last_clause(f.text):
+        return False  # "Put the red cube on the blue cube. Put the green and yellow cubes in a row on the left.": the place is
+        # the last clause's (both had gone to the left, silently)
     heads = _read_parts([part]) if m else None
     if heads is None:
         return False
