@@ -7836,3 +7836,11 @@ def test_fortieth_session_third_attack_readings(text, expected):
 def test_fortieth_session_third_attack_refusals(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text", ["Put red and yellow on blue.", "Stack red and green on top of blue."])
+def test_two_bare_colours_on_a_third_leave_the_top_two_free(text):
+    from rpg.domain.predicates import AnchoredStack
+
+    goal = check_feasibility(parse(text)).goal_predicate()
+    assert any(type(p) is AnchoredStack and p.bottom and not p.top for p in goal.walk()), text

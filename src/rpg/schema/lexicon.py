@@ -4911,6 +4911,11 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "the purple-coloured patch", "the red coloured cube": the colour (a purple cube had been made up, the patch dropped)
     (re.compile(rf"(?<!\band\s)(?<!,\s)(?<!\bor\s)\b({COLOR_RE})(?:\s*-\s*|\s+)colou?red\s+(?=(?:goal\s+)?(?:patch|pad|mat|tile|square|area|zone)\b)"),
      r"\1 "),  # (of one colour and a patch only: "the red and blue coloured cube" is one cube of two colours, refused)
+    # "Put red and yellow on blue": the two cubes named by bare colours on the third, as "the red and yellow cubes on the
+    # blue cube" is read (blue at the bottom, the others' order free; it had been ordered as listed, unsaid)
+    (re.compile(rf"\b(?P<v>put|place|stack|set)\s+(?P<a>{COLOR_RE})\s+and\s+(?P<b>{COLOR_RE})\s+on(?:\s+top\s+of)?\s+(?P<c>{COLOR_RE})"
+                r"(?=\s*(?:[.;!]|$))"),
+     lambda m: f"{m.group('v')} the {m.group('a')} and {m.group('b')} cubes on the {m.group('c')} cube"),
     # "next to both the orange cube and the purple cube": next to each of them ("both" had been read as the cubes before it)
     (re.compile(rf"\b(next\s+to|beside|far\s+from|away\s+from|touching)\s+both\s+(?=(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+and\s+"
                 rf"(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?|ones?))?\s*(?:[.;!]|$))"), r"\1 "),  # (the sentence ends there: a
