@@ -1243,7 +1243,8 @@ def _another_said(f: Features, schema: TaskSchema, cubes: list, walk: list) -> P
     for m in _ANOTHER_SAID_RE.finditer(f.text):
         colour = canon_color(m.group("c"))
         before = len(re.findall(rf"\b{colour}\b(?!\s+(?:goal\s+)?(?:patch|pad|mat|tile|square|area|zone))", f.text[:m.start()]))
-        if sum(x.color == colour for x in cubes) < max(before, 1) + 1:
+        if before and sum(x.color == colour for x in cubes) < before + 1:  # (none said before: "one more blue block next
+            # to the red block" is one blue cube, read so)
             return _unread(f, schema, m.group(0), f"adds a {colour} cube to the one said before and the task read has "
                            f"{sum(x.color == colour for x in cubes)}; say each cube's place (e.g. \"a tower of blue, red, red from "
                            "the bottom\"), or use --model")

@@ -1226,9 +1226,10 @@ def apply_corrections(text: str) -> str:
         listed = re.match(rf"(?i)(?:of\s+)?{colour_list}", text[m.end():])
         said = re.search(rf"(?i)(?:\bof\s+)?{colour_list}$", before)
         if listed and said:  # "a row: red, green, blue, no wait, red, blue, green": the list said again (two had been kept)
-            if sorted(re.findall(rf"(?i)\b(?:{COLOR_RE})\b", listed.group(0))) != sorted(re.findall(rf"(?i)\b(?:{COLOR_RE})\b", said.group(0))):
-                continue  # "red, blue, sorry, green, and yellow": not the same cubes again, so which of the list is
-                # corrected is not said (the whole list had been replaced, red dropped, silently): left as written, refused
+            again, then = (re.findall(rf"(?i)\b(?:{COLOR_RE})\b", x.group(0)) for x in (listed, said))
+            if sorted(again) != sorted(then) and not (listed.group(0).lower().startswith("of") or (len(again) == len(then) >= 3)):
+                continue  # "red, blue, sorry, green, and yellow": not the whole list again (its cubes, "of ...", or as
+                # many of three or more), so which of the list is corrected is not said (the whole list had been replaced, red dropped, silently): left as written, refused
             text = before[:said.start()] + listed.group(0) + text[m.end() + listed.end():]
             continue
         side = re.fullmatch(r"(?:to|on|at)\s+the\s+(left|right|front|back)", fix.group(0).strip()) if fix else None
