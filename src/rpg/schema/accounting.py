@@ -1232,6 +1232,9 @@ def _with_relation(f: Features, schema: TaskSchema, cubes: list, walk: list) -> 
     return None
 
 
+_NOT_A_PATCH = r"(?!\s+(?:goal\s+)?(?:patch|pad|mat|tile|square|area|zone))"
+"""After a colour: it is not a goal patch's ("the green patch"), so the colour names a cube."""
+
 _ANOTHER_SAID_RE = re.compile(rf"\b(?:another|a\s+second|a\s+2nd|1\s+more|one\s+more|an\s+extra|an\s+additional)\s+(?P<c>{COLOR_RE})\b"
                               r"(?!\s+(?:goal\s+)?(?:patch|pad|mat|tile|square|area|zone|towers?|stacks?|rows?|lines?|piles?))")
 """A second cube of a colour said before ("stack red on blue, and another red on top"): :func:`_another_said`."""
@@ -1242,7 +1245,7 @@ def _another_said(f: Features, schema: TaskSchema, cubes: list, walk: list) -> P
     before ("stack red on blue, and another red on top" had read one red cube, the second dropped, silently)."""
     for m in _ANOTHER_SAID_RE.finditer(f.text):
         colour = canon_color(m.group("c"))
-        before = len(re.findall(rf"\b{colour}\b(?!\s+(?:goal\s+)?(?:patch|pad|mat|tile|square|area|zone))", f.text[:m.start()]))
+        before = len(re.findall(rf"\b{colour}\b" + _NOT_A_PATCH, f.text[:m.start()]))
         if before and sum(x.color == colour for x in cubes) < before + 1:  # (none said before: "one more blue block next
             # to the red block" is one blue cube, read so)
             return _unread(f, schema, m.group(0), f"adds a {colour} cube to the one said before and the task read has "
@@ -1253,7 +1256,7 @@ def _another_said(f: Features, schema: TaskSchema, cubes: list, walk: list) -> P
 
 _BETWEEN_SAID_RE = re.compile(rf"\b(?P<a>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:(?:is|goes|sits|stands|should\s+be|must\s+be)\s+)?"
                               rf"(?:(?:right|exactly|directly)\s+)?(?:in\s+)?between\s+(?:the\s+)?(?P<b>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+"
-                              rf"and\s+(?:the\s+)?(?P<c>{COLOR_RE})\b(?!\s+(?:goal\s+)?(?:patch|pad|mat|tile|square|area|zone))")
+                              rf"and\s+(?:the\s+)?(?P<c>{COLOR_RE})\b" + _NOT_A_PATCH)
 """One cube said between two others by colour ("a row with red between blue and green"): :func:`_between_held`."""
 
 
