@@ -7844,3 +7844,23 @@ def test_two_bare_colours_on_a_third_leave_the_top_two_free(text):
 
     goal = check_feasibility(parse(text)).goal_predicate()
     assert any(type(p) is AnchoredStack and p.bottom and not p.top for p in goal.walk()), text
+
+
+@pytest.mark.parametrize("text, expected", [
+    # the forty-first session (stranger53, read): "stacked" is a tower as "a stack" is (a reading of the letters as a row
+    # had dropped the word, silently)
+    ("I'd like the letters P and T stacked; I don't mind which one ends up on top.", ["stack(P,T)"]),
+    ("I'd like the letters P and T stacked in any order.", ["stack(P,T)"]),
+    ("The red cube is stacked on the blue cube.", ["stack(blue,red)"]),
+    ("Use the stacking blocks red and blue to make a row.", ["line(blue,red)"]),
+])
+def test_forty_first_session_stacked_is_a_tower(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+def test_a_line_of_three_from_either_end_matches_its_middle_between_the_other_two():
+    said = meaning(check_feasibility(parse("Put red, white and blue in a row with white in the middle.")))
+    assert matches("line[sequence](red,white,blue)", said) and matches("line[sequence](blue,white,red)", said)
+    assert matches("between(white;red,blue); line(red,white,blue)", said)
+    assert not matches("line[sequence](white,red,blue)", said)  # red in the middle: another goal
+    assert not matches("line[sequence](red,white,blue)@back", said)  # a place the goal does not have

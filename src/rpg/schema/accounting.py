@@ -74,6 +74,9 @@ RELATION_WORDS: tuple[tuple[str, str], ...] = tuple(
 
 
 TOGETHER_RE = re.compile(r"\btogether\b")
+STACKED_RE = re.compile(r"(?<!\bun)(?<!\bre)\b(?:stacked|stacking)\b(?!\s+(?:blocks?|cubes?|toys?|game|set)\b)")
+"""A cube said to be stacked ("I'd like P and T stacked", "stacking the red cube on the blue one"): a tower, or one cube on
+another, as the noun "stack" says (a reading as a row had dropped the word); not "stacking blocks", a kind of toy."""
 """Cubes said to go together: some goal predicate must put them side by side, on each other or in one place."""
 
 THE_PATCHES_RE = re.compile(r"(?:\b(?:the|both|all)\s+(?:(?P<n>\d+)\s+)?|\b(?P<n2>\d+)\s+)(?:goal\s+|target\s+)?patches\b")
@@ -328,6 +331,8 @@ def mentions(text: str, colors: str, canon) -> list[Mention]:
         if re.search(r"\b(?:the|that|this|its|their)\s+(?:[a-z]+\s+)?$", text[:m.start()]):
             continue  # "push the pile of red blocks": a reference to cubes, not a structure to build
         out.append(Mention(m.group(0), "structure", predicates=STRUCTURE_KINDS[structure_of_word(m.group(1))].carriers))
+    for m in STACKED_RE.finditer(text):  # "I'd like the letters P and T stacked": a tower as surely as "a stack" says one
+        out.append(Mention(m.group(0), "structure", predicates=STRUCTURE_KINDS["tower"].carriers))
     for m in WALL_RE.finditer(text):  # a wall is a grid of layers (no structure kind of its own)
         if not re.search(r"\b(?:the|that|this|its|their)\s+(?:[a-z]+\s+)?$", text[:m.start()]):
             out.append(Mention(m.group(0), "structure", predicates=("grid",)))

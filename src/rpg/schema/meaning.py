@@ -317,6 +317,16 @@ def _forward(text: str) -> str:
                              if m.group(1) in _REVERSED_DIRECTIONS else m.group(0)), text)
 
 
+def _middle_of_three(text: str) -> str:
+    """``text`` with each line of three cubes in an order from either end (``line[sequence](red,white,blue)``) written as
+    the cube between the other two in a line of no order (``between(white;blue,red); line(blue,red,white)``): one goal,
+    two spellings ("a row of red, white and blue with white in the middle")."""
+    def split(m: re.Match) -> str:
+        x, y, z = m.group(1).split(",")
+        return f"between({y};{','.join(sorted((x, z)))}); line({','.join(sorted((x, y, z)))}){m.group(2) or ''}"
+    return re.sub(r"\bline\[sequence\]\(([^()?*,;|]+,[^()?*,;|]+,[^()?*,;|]+)\)(@\w+)?", split, text)
+
+
 def matches(expected: str, actual: list[str]) -> bool:
     """Whether a corpus meaning (atoms separated by ``; `` outside brackets) equals ``actual``.
 
@@ -325,13 +335,15 @@ def matches(expected: str, actual: list[str]) -> bool:
     matches one or more actual atoms, one per red cube (``in_region(red,back)`` twice), and
     ``in_region(red,red,back)`` stands for one atom per cube; ``reads(DOG)`` matches the reads atom whose text is DOG, whatever its cubes and face; a pile's
     or piles' cubes match in any order, and one-colour piles of distinct colours match piles sorted by colour; a grid written without its size (``grid(gray,gray|gray,gray)``) matches a
-    grid of those cubes, whatever its rows; a line in a reversed direction matches the same line written forward.
+    grid of those cubes, whatever its rows; a line in a reversed direction matches the same line written forward; a line of three in an order from either
+    end matches its middle cube between the other two in a line of no order.
     """
     if re.search(r"\bgrid\((?!\d+x\d+:)", expected):  # "grid(gray,gray|gray,gray)": a grid's size and rows left unsaid
         expected = re.sub(r"\bgrid\(([^()]*)\)", lambda m: "grid(" + ",".join(sorted(re.split(r"[,|]", m.group(1)))) + ")", expected)
         actual = [re.sub(r"^grid\((?:\d+x\d+:)?([^()]*)\)(?=@|$)", lambda m: "grid(" + ",".join(sorted(re.split(r"[,|]", m.group(1)))) + ")", a)
                   for a in actual]
     expected, actual = _forward(expected), [_forward(a) for a in actual]
+    expected, actual = _middle_of_three(expected), [b for a in actual for b in re.split(r"; ", _middle_of_three(a))]
     wanted = _by_colour([w for a in re.split(r";\s+(?![^()]*\))", expected) if a.strip() for w in _per_cube(_unordered(a.strip()))])
     wanted = _one_atom_a_patch(wanted)  # (an annotation had written a patch's cubes one atom each)
     actual = _by_colour([w for a in actual for w in _per_cube(_unordered(a))])
