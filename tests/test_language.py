@@ -7864,3 +7864,69 @@ def test_a_line_of_three_from_either_end_matches_its_middle_between_the_other_tw
     assert matches("between(white;red,blue); line(red,white,blue)", said)
     assert not matches("line[sequence](white,red,blue)", said)  # red in the middle: another goal
     assert not matches("line[sequence](red,white,blue)@back", said)  # a place the goal does not have
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a wall's rows counted each with its width said (the first row's count had been read as the wall's), and a layer
+    # said by its place from the table (it had been dropped: the layers above the bottom were free)
+    ("Build a wall 3 wide and 3 high: three red cubes in the bottom row, three yellow cubes in the second row and three blue "
+     "cubes in the top row.", ["wall(red,red,red|yellow,yellow,yellow|blue,blue,blue)"]),
+    ("Make a 1x3x3 cube of red, yellow and blue blocks with 3 red blocks at the bottom, 3 yellow blocks second from the bottom "
+     "and 3 blue blocks third from the bottom.", ["wall(red,red,red|yellow,yellow,yellow|blue,blue,blue)"]),
+])
+def test_forty_first_session_layers_read_as_said(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text, expected", [
+    # counted runs of one colour said in order (each run had been read as one cube), cubes counted then listed in brackets,
+    # a second structure said "a separate pile of" (steer_stranger24's bases, read at the forty-first session)
+    ("Put six cubes in a row, three blue and then three white, from left to right.",
+     ["line[left_to_right](blue,blue,blue,white,white,white)"]),
+    ("Make a row of three blue cubes followed by three white cubes, from left to right.",
+     ["line[left_to_right](blue,blue,blue,white,white,white)"]),
+    ("Build a pyramid with a bottom row of three cubes (red, green and blue), two yellow cubes on them and a white cube on top.",
+     ["pyramid(blue,green,red|yellow,yellow|white)"]),
+    ("make a pile of two red cubes and a separate pile of two yellow cubes", ["pile(red,red)", "pile(yellow,yellow)"]),
+])
+def test_forty_first_session_counted_runs_and_lists(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    "Make a row of four cubes (red, green and blue).",  # a fourth cube had been made up
+    "Build a tower of three blue cubes and then three white cubes on top.",
+])
+def test_forty_first_session_counts_that_do_not_fit_are_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # stranger53 (read at the forty-first session): the episode's end said ("when you're done"), leave asked ("if that's ok"),
+    # "objective"/"aim" for the goal, "one on the other", a counted alternation without "cubes"
+    ("Every pink cube should be in the front left corner when you're done.", ["in_region(pink,front_left)"]),
+    ("I need a three-block tower with white at the base, black in the middle and gray on top, if that's ok.",
+     ["stack(white,black,gray)"]),
+    ("The objective is a tower of orange, then white, then green (bottom to top), standing in the centre of the table.",
+     ["stack(orange,white,green)@center"]),
+    ("put the yellow and orange cubes one on the other, whichever way round", ["stack(yellow,orange)"]),
+    ("tower of 5 alternating yellow and green, starting with yellow on the table", ["stack(yellow,green,yellow,green,yellow)"]),
+])
+def test_forty_first_session_stranger53_readings(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    "When you're done, put red on blue.",  # done with what: a condition on something else
+    "Put red on blue if that's ok with the blue cube.",
+])
+def test_forty_first_session_conditions_still_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))
+
+
+def test_a_row_under_a_cube_is_refused():
+    """"put a row of green cubes under the red cube" had been a row of the two cubes (the relation and the plural dropped)."""
+    with pytest.raises(BadInput):
+        check_feasibility(parse("put a row of green cubes under the red cube"))

@@ -2659,3 +2659,96 @@ def test_the_ends_of_a_part_of_a_structure_are_refused(tmp_path, base, edit):
 ])
 def test_swap_with_exchanges_and_swap_for_replaces(tmp_path, base, edit, expected):
     assert _steered(tmp_path, base, edit)[-1] == expected
+
+
+_TOWER_RBG = "Stack three cubes: red on the bottom, blue in the middle and green on top."
+
+
+@pytest.mark.parametrize("base,edit,expected", [
+    # steer_stranger24 (read at the forty-first session): labels and chatter of a voice around the change, a new task said
+    # by a voice's words, a change said passively or without its verb, a reversal said by the word it gives, a row of a wall
+    ("Put the red cube in the left half of the table.",
+     "Beautiful. A new piece now, nothing from before: a pyramid of three cubes, two green on the bottom and a yellow one on top.",
+     ("fresh", ["pyramid(green,green|yellow)"])),
+    ("Place a black cube far from a white cube.",
+     "The study is closed. New protocol, unrelated to the old one: two towers, one of two red cubes and one of two green cubes.",
+     ("fresh", ["stack(green,green)", "stack(red,red)"])),
+    ("Stack a blue cube on top of a yellow cube.", "Protocol change requested by the sponsor: a red cube is added on top of the blue cube.",
+     ("extend", ["stack(yellow,blue,red)"])),
+    ("Stack a blue cube on top of a yellow cube.", "feat: also put a purple cube on top", ("extend", ["stack(yellow,blue,purple)"])),
+    ("Make a pyramid of six cubes: three red cubes on the bottom, two green cubes in the middle and one blue cube on top.",
+     "Per the sponsor, the blue top cube is replaced with a yellow one.", ("tweak", ["pyramid(red,red,red|green,green|yellow)"])),
+    ("Put the green cube to the left of the blue cube.", "chat wants a red cube in between them",
+     ("extend", ["between(red;blue,green)", "left_of(green,blue)"])),
+    (_TOWER_RBG, "Again from the top, but the middle one becomes purple.", ("tweak", ["stack(red,purple,green)"])),
+    (_TOWER_RBG, "Cut. The top cube reads wrong on camera, make it black.", ("tweak", ["stack(red,blue,black)"])),
+    ("Put four purple cubes in a row.", "Two more purple cubes in the row, please.",
+     ("extend", ["line(purple,purple,purple,purple,purple,purple)"])),
+    ("Stack three yellow cubes in the front left corner.", "Raise the tower by two more yellow cubes.",
+     ("extend", ["stack(yellow,yellow,yellow,yellow,yellow)@front_left"])),
+    ("Spell DOG with letter cubes from left to right.", "Reverse it so it reads GOD.",
+     ("modify", ["line[left_to_right](G,O,D)", "reads(G,O,D;direction=left_to_right,face=up,text=GOD)"])),
+    ("Build a wall two rows high: three red cubes in the bottom row and three yellow cubes in the top row.",
+     "feat: add a third row of three blue cubes on top of the wall", ("extend", ["wall(red,red,red|yellow,yellow,yellow|blue,blue,blue)"])),
+])
+def test_forty_first_session_steering_read_as_said(tmp_path, base, edit, expected):
+    assert _steered(tmp_path, base, edit)[-1] == expected
+
+
+@pytest.mark.parametrize("base,edit", [
+    # silent classes found at the forty-first session: "it" after a clause that says more of a cube had recoloured every
+    # cube; a change clause after another dropped; a cube picked by its place beside a resize applied after it; a reversal
+    # whose word is not the old one reversed; a row of another width added to a wall
+    (_TOWER_RBG, "The top cube goes on the left, make it black."),
+    (_TOWER_RBG, "make the top cube black and add one"),
+    (_TOWER_RBG, "Make the top cube black, then make it bigger"),
+    ("Spell DOG with letter cubes from left to right.", "Reverse it so it reads CAT."),
+    ("Build a wall two rows high: three red cubes in the bottom row and three yellow cubes in the top row.",
+     "add a row of two blue cubes on top"),
+])
+def test_forty_first_session_steering_attack_is_refused(tmp_path, base, edit):
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
+    with pytest.raises(BadInput):
+        steer(fam.path, edit)
+
+
+@pytest.mark.parametrize("base,edits,expected", [
+    # silent classes of steer_stranger24 (read at the forty-first session): "a 6 cube" is the digit cube 6 (six cubes had
+    # been added); a sorted row of named digits keeps them (1, 2, 3 had been made up)
+    ("stack the 4 cube on top of the 2 cube", ("ok put a 6 cube on top",), ("extend", ["stack(2,4,6)"])),
+    ("stack the 6 cube on the 4 cube on the 2 cube", ("now make them a row instead, smallest number on the left",),
+     ("pivot", ["line[left_to_right](2,4,6)"])),
+    ("Build a tower of three red cubes.", ("make it taller and add a yellow one on top",), ("extend", ["stack(red,red,red,yellow)"])),
+])
+def test_forty_first_session_steering_keeps_the_cubes_said(tmp_path, base, edits, expected):
+    assert _steered(tmp_path, base, *edits)[-1] == expected
+
+
+def test_a_pivot_that_cannot_state_the_task_s_labels_is_refused(tmp_path):
+    """A circle of the digit cubes 2, 4 and 6 is said as "3 digit blocks", read back as 1, 2 and 3: refused (it had been
+    made of 1, 2, 3, silently)."""
+    fam = Family(create_family(compiled("stack the 6 cube on the 4 cube on the 2 cube", tmp_path, name="fam").path).path)
+    with pytest.raises(BadInput):
+        steer(fam.path, "make them a circle instead")
+
+
+@pytest.mark.parametrize("base,edit", [
+    # a hostile helper's silent classes (forty-first session): a passive change after another dropped, "it"/"them" after
+    # a part of the task recolouring every cube, a place picked after an addition read before it, counted runs merged, a
+    # digit said of several cubes, a plural added as one cube, a row added under a wall put on top
+    ("Line up red, blue and green from left to right.", "the leftmost cube gets replaced with a white one and the rightmost gets removed"),
+    ("Line up red, blue and green from left to right.", "make the left cube white and the right cube gets removed"),
+    (_TOWER_RBG, "the top is too dark, make it white"),
+    ("Line up red, blue and green from left to right.", "the ends are too dark, make them white"),
+    (_TOWER_RBG, "add a black cube on top then make the top cube white"),
+    (_TOWER_RBG, "add two yellow then one white on top"),
+    ("Stack the 2 cube on the 1 cube.", "put two 5 cubes on top"),
+    (_TOWER_RBG, "Step 2: add white cubes on top"),
+    (_TOWER_RBG, "Raise the tower by two cubes"),
+    ("Build a wall two rows high: three red cubes in the bottom row and three blue cubes in the top row.",
+     "add a row of green cubes underneath"),
+])
+def test_forty_first_session_steering_helper_attack_is_refused(tmp_path, base, edit):
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
+    with pytest.raises(BadInput):
+        steer(fam.path, edit)

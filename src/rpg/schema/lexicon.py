@@ -140,7 +140,7 @@ SYNONYMS: dict[str, str] = {
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
     "uppermost": "top", "lowermost": "bottom", "topmost": "top", "bottommost": "bottom", "upon": "on", "right-hand": "right", "left-hand": "left",
     "stays": "is", "remains": "is", "bot": "robot", "midpoint": "center", "tower's": "tower", "within": "in", "inside": "in", "quadrant": "corner",
-    "summit": "top", "apex": "top", "belongs": "goes", "belong": "go", **TYPOS, **ABBREVIATIONS,
+    "summit": "top", "apex": "top", "belongs": "goes", "belong": "go", "objective": "goal", "aim": "goal", **TYPOS, **ABBREVIATIONS,
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
@@ -1991,11 +1991,18 @@ POLITE_CONDITION_RE = re.compile(
     r"|(?i:[,;]?\s*\bif\s+(?:it|that)\s+(?:is\s+not|isn'?t|is\s+no|'?s\s+not)\s+too\s+much\s+(?:trouble|work|bother)\b\s*,?)"
     r"|(?i:\b(?:it\s+)?(?:is|would\s+be|'?d\s+be)\s+better\s+if\s+you\b)"
     r"|(?i:[,;]?\s*\b(?:when(?:ever)?|once)\s+you\s+(?:get|have|find)\s+(?:a|the)\s+(?:sec|second|minute|min|moment|chance"
-    r"|mo)\b\s*[.!,]?)")
+    r"|mo)\b\s*[.!,]?)"
+    # ", if that's ok", ", if that is alright": asking leave, no condition of the goal
+    r"|(?i:[,;]?\s*\bif\s+(?:that|it|this)(?:'s|\s+is|\s+would\s+be|'d\s+be)\s+(?:ok(?:ay)?|alright|all\s+right|fine|possible)"
+    r"(?:\s+with\s+you)?(?=\s*[.!]?\s*$))"
+    # "... when you're done", "... once you are finished": the episode's end, when every goal is checked
+    r"|(?i:[,;]?\s*\b(?:when|once|by\s+the\s+time)\s+(?:you(?:'re|\s+are|\s+have|'ve)|you're|the\s+robot\s+is|it\s+is|it's)\s+"
+    r"(?:done|finished|through)(?=\s*[.!]?\s*$))")
 """A condition that is only politeness ("I'd love it if you could take the yellow cube ...", ",
 if you could", "if possible"): dropped before conditions are refused, so the request is read
 (:func:`rpg.schema.reading.normalize`).  "If the green cube is on the left ..." stays a condition;
-"when you get a sec" is only the request's timing, not a condition of the goal."""
+"when you get a sec" is only the request's timing, not a condition of the goal; "when you're done" at the end is the
+episode's end, when the goal is checked anyway; ", if that's ok" asks leave."""
 
 SMALL_TALK_RE = re.compile(
     r"\b(?:i\s+)?hope\s+(?:you(?:'re|\s+are)|you\s+have\s+been|all\s+is|it(?:'s|\s+is))\s+(?:doing\s+|going\s+)?"
@@ -2549,8 +2556,8 @@ def line_up_direction(m: re.Match) -> str:
 
 
 _STRUCTURE_NOUN = r"(?:tower|stack|row|line|pile|column|circle|ring|grid|wall|pyramid)"
-ANOTHER_STRUCTURE_RE = re.compile(rf"\banother\s+(?:one|(?P<noun>{_STRUCTURE_NOUN}))\s+(?=of\b)")
-"""A second structure said as "another one of ..." or "another tower of ..." after a first ("build a tower of red, blue
+ANOTHER_STRUCTURE_RE = re.compile(rf"\b(?:another|an?\s+(?:separate|second|distinct|different|other))\s+(?:one|(?P<noun>{_STRUCTURE_NOUN}))\s+(?=of\b)")
+"""A second structure said as "another one of ...", "another tower of ..." or "a separate pile of ..." after a first ("build a tower of red, blue
 and green and another one of yellow, pink and white"): written "a tower of ..." as the first is (the two towers had
 been read as one tower of six cubes); see :func:`another_structure`."""
 
@@ -3242,6 +3249,47 @@ layer word, ``cs`` the colours (:func:`rpg.schema.readers.structures.listed_laye
 LISTED_ROW_LAYER = {"bottom": 0, "base": 0, "lower": 0, "first": 0, "second": 1, "middle": 1, "third": 2}
 """A layer word of :data:`LISTED_ROW_RE` -> its layer from the table ("top" and "upper": the last)."""
 
+_RUN = rf"(?:\d+|one|two|three|four|five|six)\s+(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?|ones?))?"
+COUNTED_RUNS_RE = re.compile(rf"\b{_RUN}(?:\s*,?\s*(?:and\s+)?(?:then|followed\s+by|and\s+after\s+(?:that|them))\s+{_RUN})+\b"
+                             r"(?!\s+(?:each|apiece)\b)")
+"""Runs of cubes of one colour counted and said in order ("3 blue cubes and then 3 white cubes", "2 red followed by 1 green"):
+each cube listed (:func:`counted_runs_listed`), so an ordered structure reads them in that order (each run had been read as
+one cube, and refused)."""
+
+
+COUNT_THEN_LIST_RE = re.compile(rf"\b(?P<n>\d+|two|three|four|five|six)\s+(?:cubes|blocks)\s*\(\s*(?P<l>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?"
+                                rf"(?:{COLOR_RE})|\s+and\s+(?:{COLOR_RE}))+)\s*\)")
+"""Cubes counted and then listed in brackets ("a bottom row of three cubes (red, green and blue)"): the list alone, where it
+holds as many cubes as counted (:func:`count_then_list`); the count had been read beside the list, as cubes of its own."""
+
+
+def count_then_list(m: re.Match) -> str:
+    """The list of :data:`COUNT_THEN_LIST_RE`'s match where its length is the count; else the count and the list after a
+    colon, as the readers' count checks refuse it."""
+    listed = re.findall(rf"\b(?:{COLOR_RE})\b", m.group("l"))
+    if len(listed) == count_word(m.group("n")):
+        return m.group("l")
+    return f"{m.group('n')} cubes: {m.group('l')}"  # another count: said as "4 cubes: red, green and blue", which is refused
+    # (a fourth cube had been made up)
+
+
+def counted_runs_listed(m: re.Match) -> str:
+    """``"blue, blue, blue, then white, white, white"`` for :data:`COUNTED_RUNS_RE`'s match; as written where a run counts
+    more cubes than a task may hold."""
+    runs = [(count_word(n), c) for n, c in re.findall(rf"(\d+|one|two|three|four|five|six)\s+({COLOR_RE})\b", m.group(0))]
+    if sum(n for n, _ in runs) > 12 or any(n < 1 for n, _ in runs) or re.match(
+            r"\s+(?:on\s+top|at\s+the\s+(?:top|bottom|base)|on\s+the\s+bottom|above|below|under|beneath|on\s+(?:it|them))\b",
+            m.string[m.end():]):  # "two white ones, then three black ones on top": the last run's place (read as said)
+        return m.group(0)
+    return ", then ".join(", ".join([c] * n) for n, c in runs)
+
+
+LAYER_FROM_BOTTOM_RE = re.compile(rf"(?P<cubes>\b(?:\d+|the|a|an|one)\s+(?:{COLOR_RE})\s+(?:blocks?|cubes?))\s+(?:(?:is|are|go|goes)\s+)?"
+                                  r"(?:in\s+the\s+|on\s+the\s+)?(?P<k>second|third|fourth|fifth|2nd|3rd|4th|5th)\s+(?:(?:layer|row|level|tier)\s+)?"
+                                  r"from\s+the\s+bottom\b")
+"""Cubes given a layer counted from the table ("3 yellow blocks second from the bottom") of a layered structure: said as
+"in the second layer", which :data:`LAYER_ROLE_RE` reads."""
+
 LAYER_ORDINALS = {"second": 1, "2nd": 1, "third": 2, "3rd": 2, "fourth": 3, "4th": 3, "fifth": 4, "5th": 4}
 """A layer named by its place counted from the table ("the second row": layer 1, the bottom one
 being 0)."""
@@ -3340,10 +3388,14 @@ EDIT_FRESH_RE = re.compile(
     r"|(?:let'?s\s+)?start (?:again|anew)|never\s*mind|let'?s do something else"
     r"|(?:a\s+)?(?:completely|totally|entirely)\s+(?:different|new|other)\s+(?:set|set-?up|scene|game|puzzle|job|room|project|level)"
     r"|(?:a\s+)?(?:different|new|another)\s+(?:set-?up|scene|game|puzzle|job|room|project|house|idea)(?=\s*[:,.!\-])"
+    r"|nothing\s+(?:carried\s+over|(?:kept\s+)?from\s+(?:before|earlier|the\s+(?:old|last|previous|first)\s+one))"
+    r"|(?:a\s+)?(?:completely|totally|entirely|brand)\s+new\s+(?:build|piece|protocol|study|round|session|exercise|challenge|layout"
+    r"|arrangement|design|setup|set-up)|(?:a\s+)?new\s+(?:piece|build|protocol|study|round|session|exercise|challenge)(?=\s*(?:now\s*)?[:,.!\-])"
     r"|nothing\s+to\s+do\s+with\s+(?:the|this|that|our|my)\s+(?:row|line|tower|stack|pyramid|wall|pile|task|one|last\s+one|"
     r"(?:first|previous|old)\s+one))\b[:,.!]?")
 """Words that make an edit a new, unrelated task (Fresh): "start over: ...", "completely
-different task now: ...", "New room, new puzzle: ...", "New idea for the back counter, nothing to do with the row: ..."."""
+different task now: ...", "New room, new puzzle: ...", "New idea for the back counter, nothing to do with the row: ...", "A new
+piece now, nothing from before: ...", "totally new build: ..."."""
 
 EDIT_ANAPHORA_RE = re.compile(
     r"\b(?:it|them|they|its|their|those|these|instead|back|again|now|also|too|more|rather|both|whole)\b"
@@ -3441,9 +3493,11 @@ session, a negation, a restriction, a reversal, a pronoun for cubes, a condition
 over:", "Completely different task now:") may change the edit."""
 
 EDIT_LABEL_RE = re.compile(r"^\s*(?P<l>[^:.;!?]{3,60}):\s+(?=(?:please\s+)?(?:make|put|add|swap|switch|remove|take|move|change|use|turn"
-                           r"|replace|place|stack|set|drop|delete|build|reverse|flip|the\s+[a-z]+\s+(?:cube|block)|the\s+[a-z]+\s+one)\b)")
+                           r"|replace|place|stack|set|drop|delete|build|reverse|flip|the\s+[a-z]+\s+(?:cube|block)|the\s+[a-z]+\s+one|also"
+                           r"|an?\s+(?:[a-z]+\s+)?(?:cube|block|one)|the\s+(?:tower|stack|row|line|pyramid|wall|pile|circle|grid)"
+                           r"|(?:the\s+)?(?:[a-z]+\s+)?(?:cubes|blocks))\b)")
 """A label before an edit that says why or for whom ("Simplify it for the worksheet: make both rows green", "For the
-demo: add a red cube on top"): dropped when it names no cube, structure, place or count and holds nothing that may
+demo: add a red cube on top", "feat: also put ...", "Protocol change: a C cube is added on top"): dropped when it names no cube, structure, place or count and holds nothing that may
 change the edit (:data:`_EDIT_LABEL_HAZARD_RE`)."""
 
 
@@ -3469,6 +3523,19 @@ EDIT_REASON_HAZARD_RE = re.compile(
     r"|mirror\w*|supposed|meant|has\s+to|have\s+to|had\s+to|like\s+(?:it|them|the|that|this)|likes\s+(?:it|them|the)|says?|said|ask\w*"
     r"|wants?|would|'d|prefer\w*|better|worse|rather|could\s+use|fine\s+with|ok\s+with|okay\s+with|without|lacks?|needs?|so|apart"
     r"|together|spread\w*|diagonal\w*|around|round|away|close\w*|far|keep|stay\w*)\b")
+EDIT_EXCLAMATION_RE = re.compile(r"(?i)^\s*[a-z']+(?:\s+[a-z']+){0,2}\s*[.!]+\s*$")
+"""A sentence of one to three words before or after a steering edit's change ("Cut!", "Beautiful.", "Nice work!"): an
+exclamation, set aside by :func:`rpg.steer.edits.reasons_set_aside` when it holds no word of a change or of a task
+(:data:`EDIT_REASON_HAZARD_RE`, :data:`EDIT_SENTENCE_CHANGE_RE`, :data:`EDIT_EXCLAMATION_HAZARD_RE`)."""
+
+EDIT_EXCLAMATION_HAZARD_RE = re.compile(
+    r"(?i)\b(?:cent\w*|middle|corner\w*|edge\w*|end\w*|outer|inner|first|last|alternat\w*|sort\w*|spell\w*|rotat\w*|turn\w*"
+    r"|upright|sideways|face\w*|aligned|straight\w*|rainbow|mixed|random\w*|shuffl\w*|colou?r\w*|letter\w*|digit\w*|fast\w*|slow\w*"
+    r"|quick\w*|careful\w*|gentl\w*|higher|lower|closer|further|farther|nearer|tighter|looser|denser|sparser|even\w*|symmetr\w*"
+    r"|square\w*|round\w*|flat\w*|vertical\w*|horizontal\w*|stop|done|finish\w*|end|enough|that|this|it|them|those|these|same|others?)\b")
+"""Words that keep a short sentence (:data:`EDIT_EXCLAMATION_RE`) in a steering edit: a place, a role, a manner, an order
+or a reference that may be the change itself ("Centered.", "Alternate them!", "Same again.")."""
+
 EDIT_SENTENCE_CHANGE_RE = re.compile(
     rf"(?i)\b(?:add|put|place|stack|set|move|remove|take|drop|make|build|turn|swap|switch|change|another|more|fewer|less|extra|one"
     rf"|two|three|four|five|six|seven|eight|\d+|towers?|rows?|lines?|pyramids?|walls?|grids?|circles?|piles?|patch\w*|left|right|front"
@@ -3539,10 +3606,11 @@ PERSON_NOUNS = (r"curators?|brides?|grooms?|clients?|customers?|boss(?:es)?|kids
                 r"|panel|team|managers?|supervisors?|directors?|owners?|homeowners?|leads?|artists?|mum|mom|dad|grandma|grandpa|wife"
                 r"|husband|partners?|friends?|neighbou?rs?|(?:play)?testers?|players?|buyers?|viewers?|users?|audience|crew|people|folks"
                 r"|students?|reviewers?|designers?|producers?|actors?|visitors?|guests?|shoppers?|readers?|parents?|family|everyone"
-                r"|everybody")
+                r"|everybody|sponsors?|donors?|funders?|investigators?|committee|board|captain|commanders?|stakeholders?|teachers?"
+                r"|professors?|advisors?|moderators?|mods|subscribers?|fans|followers|editors?|officers?|participants?|chat")
 """People who ask for, or judge, a steering edit's change ("the curator", "playtesters", "the homeowner"): read by
 :data:`_ASKER` and :data:`EDIT_PERSON_REASON_RE`."""
-_ASKER = (r"(?-i:[A-Z][a-z]+)(?<!The)(?<!This)(?<!That)(?<!Then)(?<!Now)(?<!Make)(?<!Put)|(?i:he|she|they|we)"
+_ASKER = (r"(?-i:[A-Z][a-z]+)(?<!The)(?<!This)(?<!That)(?<!Then)(?<!Now)(?<!Make)(?<!Put)|(?i:he|she|they|we|chat)"
           rf"|(?i:the|my|our|your)\s+(?i:{PERSON_NOUNS})")
 """Who asks for a steering edit, said before it ("Maya says ...", "He'd like ...", "The curator asks for ...")."""
 
@@ -3670,6 +3738,47 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "The bride wants the yellow and white cubes to trade places": those two swapped
     (re.compile(rf"^\s*(?:(?i:now|and|so|ok|okay|then|also|actually|oh|but)\s*,?\s+)*(?:{_ASKER})(?:'d\s+like|\s+(?:wants|would\s+like|asks\s+for|asked\s+for))\s+(?P<what>the\s+[^,.;:!?]+?)\s+to\s+"
                 r"(?:trade|swap|switch|exchange)\s+(?:places|spots|positions)\s*[.!]?\s*$"), r"swap \g<what>"),
+    # "chat wants a red cube in between them", "the sponsor would like another tower": a cube or structure wanted, added
+    (re.compile(rf"^\s*(?:(?i:now|and|so|ok|okay|then|also|actually|oh|but)\s*,?\s+)*(?:{_ASKER})(?:'d\s+(?:also\s+)?like|\s+(?:also\s+)?"
+                r"(?:wants|want|would\s+(?:also\s+)?like|asks\s+for|asked\s+for))\s+(?=(?:an?|one\s+more|another)\s)"), "add "),
+    # "they want the pyramid in the back right corner": the cube or structure wanted there, put there
+    (re.compile(rf"^\s*(?:(?i:now|and|so|ok|okay|then|also|actually|oh|but)\s*,?\s+)*(?:{_ASKER})(?:'d\s+like|\s+(?:wants|want"
+                r"|would\s+like))\s+(?=the\s+[^,.;:!?]+?\s+(?:in|at|on|onto|next\s+to|beside|behind|in\s+front\s+of|under)\s)(?![^.;!?]*\bto\s+be\b)"),
+     "put "),
+    # "For the next take, make the two end cubes purple", "This time round, ...": when, of the session, before the change
+    (re.compile(r"(?i)^\s*(?:for|in|on)\s+(?:the\s+)?(?:next|this|the\s+following)\s+(?:take|shot|run|round|trial|attempt|go|iteration"
+                r"|pass|scene|session)\s*,\s*(?=\S)"), ""),
+    # "Let's go again, but this time a yellow cube goes on top", "Again from the top, but the white cube becomes purple"
+    (re.compile(r"(?i)^\s*(?:(?:let'?s\s+)?(?:go|do\s+it|run\s+it|take\s+it)\s+)?again(?:\s+from\s+the\s+top)?\s*,?\s+but\s+"
+                r"(?:this\s+time\s*,?\s+)?(?=\S)"), ""),
+    # "The top cube reads wrong on camera, make it black": "it" is the cube the first clause judges (every cube had been
+    # recoloured, silently)
+    (re.compile(r"(?i)^\s*(?P<np>the\s+(?:[a-z]+\s+){0,2}(?:cube|block|one))\s+(?!(?:and|or|with|next|on|under|beside|behind)\b)"
+                r"(?P<said>[^,.;:!?]*?)\s*[,;]\s*(?:so\s+|just\s+|please\s+)*(?P<verb>make|paint|turn|colou?r|change|swap|replace|remove"
+                r"|move|recolou?r)\s+it\b"),
+     lambda m: m.group(0) if EDIT_SENTENCE_CHANGE_RE.search(m.group("said")) else f"{m.group('verb')} {m.group('np')}"),
+    # "Two more purple cubes in the row, please.": cubes added, said without the verb
+    (re.compile(r"(?i)^\s*(?P<n>\d+|one|two|three|four|five|six|a\s+couple(?:\s+of)?)\s+more\s+(?=(?:[a-z]+\s+)?(?:cubes?|blocks?|ones?)\b)"),
+     r"add \g<n> more "),
+    # "Raise the tower by two more yellow cubes", "Extend the row by one green cube": those cubes added to it (their colour
+    # said: "by two cubes" would make colours up)
+    (re.compile(r"(?i)^\s*(?:raise|extend|grow|lengthen|heighten|build\s+up)\s+(?P<s>the\s+(?:tower|stack|row|line|column))\s+by\s+"
+                rf"(?P<what>(?:\d+|one|two|three|four|five|six|an?)\s+(?:more\s+)?(?:{COLOR_RE})\s+(?:cubes?|blocks?))\s*(?P<rest>[.!]?)\s*$"),
+     r"add \g<what> to \g<s>\g<rest>"),
+    # "switch the red cubes to magenta": a recolour; "Strike the blue cube", "ditch the yellow one": a removal
+    (re.compile(rf"(?i)\bswitch\s+(?P<what>the\s+(?:{COLOR_RE})\s+(?:cubes?|blocks?|ones?))\s+(?:to|into)\s+(?=[a-z]+\b)"),
+     r"change \g<what> to "),
+    (re.compile(rf"(?i)\b(?:strike|ditch|nix|axe)\s+(?=the\s+(?:{COLOR_RE}|top|bottom|middle|last|first)\s+(?:cubes?|blocks?|ones?)\b)"),
+     "remove "),
+    # "remove the blue cube, we don't need it in frame": the removal's reason after it
+    (re.compile(r"(?i)^(?P<rm>\s*(?:remove|drop|lose|delete)\s+[^,;.!?]+?)\s*[,;]\s*(?:we|i)\s+(?:don'?t|do\s+not)\s+need\s+"
+                r"(?:it|them|that\s+one|those)(?:\s+(?:any\s*more|in\s+(?:the\s+)?(?:frame|shot|scene|picture)))?\s*[.!]?\s*$"), r"\g<rm>"),
+    # "Per the sponsor, ...", "At the request of the client, ...": who asks, before the change
+    (re.compile(rf"^\s*(?i:per|according\s+to|as\s+requested\s+by|at\s+the\s+request\s+of|on\s+behalf\s+of)\s+(?:{_ASKER})\s*,\s*(?=\S)"), ""),
+    # "the blue top cube is replaced with a yellow one", "the yellow cube gets moved to the back": the change said passively
+    (re.compile(r"(?i)^\s*(?P<what>the\s+[^,.;:!?]+?)\s+(?:is|are|gets|get|should\s+be|must\s+be|will\s+be|has\s+to\s+be)\s+"
+                r"(?P<verb>replaced|moved|swapped|removed|painted|recolou?red|taken\s+(?:out|off|away))\b\s*(?P<rest>[^.;!?]*)[.!]?\s*$"),
+     lambda m: f"{_IMPERATIVE_OF[' '.join(m.group('verb').lower().split())]} {m.group('what')} {m.group('rest')}".strip()),
     *EDIT_NOT_CORRECTIONS,
     # "put tower in back left corner": a place said without its article (it had been dropped with the change)
     (re.compile(r"(?i)\b(in|to|into|at)\s+((?:back|front|rear)(?:\s+(?:left|right))?|left|right)\s+(corner|half|side|edge)\b"),
@@ -4880,6 +4989,10 @@ def _relation_then_structure(m: re.Match) -> bool:
 
 
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "a tower of 5 alternating yellow and green": a count of cubes (the alternation had been read without it)
+    (re.compile(r"\b(tower|stack|column|row|line)\s+of\s+(\d+|two|three|four|five|six|seven|eight)\s+(?=alternating\b)"), r"\1 of \2 cubes "),
+    # "put the yellow and orange cubes one on the other": on top of each other
+    (re.compile(r"\bone\s+(?:on\s+top\s+of|on|onto|atop|above)\s+the\s+other\b"), "on top of each other"),
     # "the cube that is red", "the block which is black": the red cube (the relative clause had lost its colour)
     (re.compile(rf"\bthe\s+(cube|block)\s+(?:that|which)\s+is\s+(?P<c>{COLOR_RE})\b(?!\s*(?:and|or|,|-|with|{COLOR_RE})\b)"),
      lambda m: f"the {m.group('c')} {m.group(1)}"),

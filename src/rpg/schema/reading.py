@@ -1599,6 +1599,10 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
         raise ParseError(f"'{two_colours.group(0)}' in \"{original[:80]}\" names one cube by two colours; say which colour it "
                          "is, or list the cubes (\"the blue and the green cube\"), or use --model")
     text = lexicon.rewrite(lexicon.LOOSE_PHRASE_REWRITES, text)
+    text = lexicon.COUNT_THEN_LIST_RE.sub(lexicon.count_then_list, text)  # "three cubes (red, green and blue)": those three
+    text = lexicon.COUNTED_RUNS_RE.sub(lexicon.counted_runs_listed, text)  # "3 blue cubes and then 3 white cubes": each cube
+    if re.search(r"\b(?:walls?|pyramids?|layers?|\d+x\d+x\d+)\b", text):  # "3 yellow blocks second from the bottom" of a wall:
+        text = lexicon.LAYER_FROM_BOTTOM_RE.sub(r"\g<cubes> in the \g<k> layer", text)  # that layer (it had been dropped)
     # "... on the green patch and the blue block on the same patch": the one patch named before
     for m in reversed(list(re.finditer(r"\bthe\s+same\s+(?:goal\s+)?(?:patch|pad|mat|tile|area)\b", text))):
         before = {c for c in re.findall(rf"\b({COLOR_RE})\s+(?:goal\s+)?(?:patch|pad|mat|tile|area)\b", text[:m.start()])}

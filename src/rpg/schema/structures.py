@@ -331,6 +331,12 @@ class Line(StructureKind):
             return f"Put the {what} cubes {', '.join(labels[:-1])} and {labels[-1]} in a row {d}"
         if spec.ordering:
             what = {"label": "letter cubes in alphabetical", "number": "digit cubes in increasing numerical"}[spec.ordering]
+            labels = sorted((i.label or "" for i in spec.items), key=lambda x: (x.isdigit() and int(x), x))
+            default = [str(k + 1) for k in range(n)] if spec.ordering == "number" else [chr(ord("A") + k) for k in range(n)]
+            if all(labels) and labels != default:  # the cubes named ("the digit
+                noun, order = what.split(" in ")  # cubes 2, 4 and 6"): a default count had made up 1, 2, 3
+                return f"Arrange the {noun} {', '.join(labels[:-1])} and {labels[-1]} in {order} order {d}" + (
+                    " in reverse" if spec.descending else "")
             return f"Arrange {n} {what} order {d}" + (" in reverse" if spec.descending else "")
         if spec.material in ("letters", "digits") and n >= 3:
             return f"Arrange cubes so that their up-faces read {', '.join(i.label or '' for i in spec.items)} {d}"

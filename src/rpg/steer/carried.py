@@ -181,6 +181,10 @@ def _variants(spec: TaskSpec, carried: Carried) -> list[str]:
         texts.insert(0, re.sub(r"\s+from (?:bottom to top|top to bottom|left to right|right to left|front to back|back to front)\b",
                             "", texts[0]))
     texts += [c for c in (_counted(spec, t) for t in list(texts)) if c]
+    labels = [i.label for i in spec.items]
+    if spec.material in ("letters", "digits") and len(labels) >= 2 and all(labels):  # "3 digit blocks" makes up 1, 2, 3: the
+        named = f"the {spec.material[:-1]} cubes {', '.join(labels[:-1])} and {labels[-1]}"  # task's own named
+        texts += [re.sub(r"\b(?:\d+\s+)?(?:letter|digit)\s+(?:blocks|cubes)\b", named, t, count=1) for t in list(texts)]
     return list(dict.fromkeys(v for text in texts for v in _phrasings(spec, carried, text)))
 
 
@@ -189,6 +193,10 @@ def _phrasings(spec: TaskSpec, carried: Carried, text: str) -> list[str]:
         if spec.material != "colors":
             raise BadInput("the builtin steering states a layer's cubes by colour only")
         text = text + _layer_clause(spec)
+        if f" {LAYER_NAMES['middle']}" in text:  # "3 yellow blocks in the middle" of a wall: said as a layer too (it had
+            second = text.replace(f" {LAYER_NAMES['middle']}", " in the second layer")  # been read as the table's centre)
+            return list(dict.fromkeys(_phrasings(spec, replace(carried, layers=False), text)
+                                      + _phrasings(spec, replace(carried, layers=False), second)))
     bare = re.sub(r"\b(letter|digit) '([A-Z0-9])'", r"\1 \2", text)  # "letter 'D'": the parser reads 'd as "would"
     if not carried.region and not carried.patch:
         return list(dict.fromkeys([text, bare]))
@@ -226,8 +234,10 @@ def _layers_exact(spec: TaskSpec, schema: TaskSchema) -> bool:
 def _same_statement(got: TaskSpec, spec: TaskSpec) -> bool:
     """Whether the spec read back states the same task: its canonical instruction is the
     spec's (a field the statement does not show, such as a stale word, may differ)."""
-    try:
-        return (got.direction is None) == (spec.direction is None) and render_spec(got) == render_spec(spec)
+    try:  # the labels too, which a statement by count alone does not show ("a circle of 3 digit blocks": 1, 2, 3, where the
+        # task's were 2, 4, 6)
+        return (got.direction is None) == (spec.direction is None) and render_spec(got) == render_spec(spec) and \
+            sorted(i.label or "" for i in got.items) == sorted(i.label or "" for i in spec.items)
     except (BadInput, ValueError):
         return False
 

@@ -21,12 +21,14 @@ from dataclasses import asdict, dataclass, field, replace
 from functools import lru_cache
 
 from rpg.domain.palette import GRADIENT_ORDER
+from rpg.domain.predicates import Reads
 from rpg.errors import BadInput
 from rpg.schema.builder import DEFAULT_COLORS
 from rpg.schema.lexicon import (
     BARE_ORDER_RE,
     COLOR_RE,
     COUNT_WORD_RE,
+    COUNTED_RUNS_RE,
     EDIT_ADDITIVE_RE,
     EDIT_ANAPHORA_RE,
     EDIT_BESIDE_RE,
@@ -35,6 +37,8 @@ from rpg.schema.lexicon import (
     EDIT_COUNT_ALONE_RE,
     EDIT_COUNT_RE,
     EDIT_CUBE_REASON_RE,
+    EDIT_EXCLAMATION_HAZARD_RE,
+    EDIT_EXCLAMATION_RE,
     EDIT_FRESH_RE,
     EDIT_INEXPRESSIBLE,
     EDIT_INTERJECTION_RE,
@@ -191,6 +195,9 @@ def normalize_edit(text: str) -> str:
     t = re.sub(r"(?<![\w'])(?<!letter )([B-HJ-Z])\b(?!['\-])|(?<![\w'])(?<!letter )(A)\b(?=\s*(?:$|[,.;!?]|and\b|or\b|with\b|for\b"
                r"|to\b|on\b|at\b|in\b|instead\b|is\b|should\b|goes\b))",
                lambda m: f"letter {m.group(1) or m.group(2)}", t)
+    t = re.sub(r"\b(a|an|the)\s+(\d)\s+(cube|block)\b(?!\s*(?:-|towers?|stacks?|rows?|lines?|pyramids?|walls?|piles?|circles?|grids?"
+               r"|columns?|high|tall|wide|long)\b)", r"\1 digit \2 \3", t)  # "put a 6 cube on top": the digit cube 6 (six had been
+    # added, silently); "a 3 cube tower" is a count
     t = re.sub(r"\b(a|an|the)\s+(\d)\b(?![x\d\-])(?!\s*(?:blocks?|cubes?|tall|high|wide|long|deep|layers?|levels?|rows?|"
                r"more|of|colou?rs?|stor\w*|outliers?|times)\b)", r"\1 digit \2", t)
     known = _known_words()
@@ -653,13 +660,15 @@ def read_ops(t: str) -> list[Op]:
         re.match(r"\s*(?:and\s+|now\s+|plus\s+)?(?:1\s+more|one\s+more|another|an\s+extra|1\s+extra)\s+(?:row|layer|level|tier)\b"
                  r"(?P<rest>.*)", t)  # "one more row"
     if layer and region is None and not re.search(r"\b(?:blocks?|cubes?)\b", re.sub(  # "put the row on the right side": a move
-            rf"^\s*of\s+(?:(?:{COLOR_RE})\s+)?(?:blocks|cubes)\b", " ", layer.group("rest"))):  # "a third row of red cubes"
+            rf"^\s*of\s+(?:\d+\s+)?(?:(?:{COLOR_RE})\s+)?(?:blocks|cubes)\b", " ", layer.group("rest"))):  # "a third row of (3) red cubes"
         rest = layer.group("rest")
-        if re.search(r"\b(?:bottom|under|below|beneath|base|left|right|front|back|beside|next)\b", rest):
+        counted = re.match(r"\s*of\s+(\d+)\s", rest)
+        if re.search(r"\b(?:bottom|under|underneath|below|beneath|base|left|right|front|back|beside|next)\b", rest):
             raise SteerError(f"'{layer.group(0).strip()}': the builtin steering adds a row or layer on top only; "
                              "state the whole new task")
         color = re.search(rf"\b({COLOR_RE})\b", rest)
-        ops.append(Op("add_layer", {"color": canon_color(color.group(1)) if color else None}))
+        ops.append(Op("add_layer", {"color": canon_color(color.group(1)) if color else None,
+                                    **({"n": int(counted.group(1))} if counted else {})}))
     adds = [] if layer or (substitution and mats) or any(o.op in ("move", "pattern") for o in ops) else re.finditer(
         r"\b(?P<verb>add|append|include|put|place|stack|set)\b(?P<what>.*?)(?P<where>\bon top\b|\b(?:at|to|on) (?:the )?(?:very |far )?(?:(?:left|right|front|back) end|top|bottom|base|end|start|beginning)\b|"
         r"\b(?:under|underneath|beneath|below)\b|\bto the (?:left|right|end|start)\b|\bon the (?:left|right)\b"
@@ -975,7 +984,73 @@ def interpret(edit: str) -> EditPlan:
         return replace(interpret(edit), set_aside=aside)
     plan = _interpret_material(edit)
     _refuse_a_sentence_unread(edit, plan)
+    _refuse_a_place_before_or_after_resizing(edit, plan)
     return plan
+
+
+_UNREAD_EDIT_SHAPES: tuple[tuple[re.Pattern, str], ...] = (
+    (re.compile(r"(?i)(?:\band|\bthen|,)\s+the\s+[^,.;!?]{1,40}?\s+(?:is|are|gets?|should\s+be|must\s+be)\s+(?:removed|replaced|moved"
+                r"|swapped|taken\s+(?:away|off|out)|deleted|added|painted|recolou?red)\b"),
+     "a change said passively after another (\"... and the rightmost gets removed\") is not read beside it"),
+    (re.compile(r"(?i)\bthe\s+(?!(?:tower|stack|row|line|pyramid|wall|pile|circle|grid|whole|entire|structure|task|thing|same)\b)"
+                r"[a-z ]{1,30}?\s+(?:is|are|looks?|seems?|reads?)\b[^.;!?]*?[,;.]\s*(?:so\s+|just\s+|please\s+)*(?:make|paint|turn"
+                r"|colou?r|change|recolou?r)\s+(?:it|them)\b"),
+     "'it'/'them' after a clause that names part of the task may be that part or the whole task"),
+    (COUNTED_RUNS_RE, "runs of counted cubes in one change (\"two yellow then one white\") are not read one by one"),
+    (re.compile(r"(?i)\b(?:\d+|two|three|four|five|six|a\s+couple\s+of)\s+\d\s+(?:cubes|blocks)\b"),
+     "one digit is on one cube: several cubes with one label cannot be made"),
+    (re.compile(rf"(?i)\b(?:add|put|place|stack)\s+(?:some\s+|more\s+)?(?:{COLOR_RE})\s+(?:cubes|blocks)\b"),
+     "cubes of a colour added without their count: how many is not said"),
+)
+"""Edit shapes the builtin steering does not read whole, each with why: refused rather than applied in part (each had been
+read silently wrong: the passive change dropped, every cube recoloured, the runs' counts merged, a run of digits made up,
+one cube added for a plural)."""
+
+
+def _refuse_unread_shapes(edit: str) -> None:
+    """Refuse an edit of a shape in :data:`_UNREAD_EDIT_SHAPES`.
+
+    Raises:
+        SteerError: naming the shape and the words."""
+    for pattern, why in _UNREAD_EDIT_SHAPES:
+        m = pattern.search(edit)
+        if m:
+            raise SteerError(f"in \"{edit.strip()[:80]}\": {why} ('{m.group(0).strip()}'); say each change in an edit of its "
+                             "own, naming the cubes, or use --model")
+
+
+def _refuse_a_place_before_or_after_resizing(edit: str, plan: EditPlan) -> None:
+    """Refuse an edit that resizes the structure and picks a cube by its place in it ("Make the top cube black, then make it
+    bigger"): the top before the change or after it is not said (the cube added had been recoloured, the old top kept).
+
+    Raises:
+        SteerError: a count or size change beside a cube picked by its place."""
+    placed = [o for o in plan.ops if isinstance(o.params.get("select"), dict) and o.params["select"].get("position")]
+    if not placed or not any(o.op in ("count", "dims", "add") for o in plan.ops):
+        return
+    clauses = [x for x in re.split(r"(?<=[.!?])\s+|" + _CHANGE_CLAUSE_SPLIT + r"|,\s*(?:and\s+)?(?:then\s+)?", (edit or "").strip())
+               if x and x.strip(" .!?")]
+    kinds = []
+    for clause in clauses:
+        try:
+            kinds.append({o.op if o.op != "dims" else "count" for o in _interpret_material(clause).ops})
+        except BadInput:
+            kinds.append(set())
+    first = {op: next((k for k, ops in enumerate(kinds) if op in ops), None) for op in ("count", "add")}
+    at = min((k for k, ops in enumerate(kinds) if ops & {o.op for o in placed}), default=None)
+    # the ops apply resize first, then recolour and the like, then additions: a place said before a resize, or after an
+    # addition, would be read against the other structure ("Make the top cube black, then make it bigger"; "add a black
+    # cube on top then make the top cube white")
+    resized = at is not None and ((first["count"] is not None and at < first["count"]) or (first["add"] is not None and first["add"] < at))
+    if resized:
+        raise SteerError(f"the edit \"{edit.strip()[:80]}\" resizes the structure and picks the {placed[0].params['select']['position']} "
+                         "cube: before or after the change is not said; say each change in an edit of its own, or use --model")
+
+
+_CHANGE_CLAUSE_SPLIT = (r"\s*(?:,\s*and\s+(?:then\s+)?|,\s*then\s+|;\s*|\s+and\s+(?:then\s+)?|\s+then\s+)(?=(?:also\s+|please\s+)?(?:add|make"
+                        r"|remove|swap|change|paint|replace|insert|append|delete|flip|reverse|recolou?r)\s)")
+"""Where an edit's clauses each begin with a change verb ("make the top cube black and add one"): each is read alone too
+(:func:`_refuse_a_sentence_unread`), so that no change said is dropped (the addition had been, silently)."""
 
 
 def _refuse_a_sentence_unread(edit: str, plan: EditPlan) -> None:
@@ -985,7 +1060,7 @@ def _refuse_a_sentence_unread(edit: str, plan: EditPlan) -> None:
     Raises:
         SteerError: a sentence's change is not among those read.
     """
-    sentences = [x for x in re.split(r"(?<=[.!?])\s+", (edit or "").strip()) if x.strip(" .!?")]
+    sentences = [x for x in re.split(r"(?<=[.!?])\s+|" + _CHANGE_CLAUSE_SPLIT, (edit or "").strip()) if x and x.strip(" .!?")]
     if len(sentences) < 2 or plan.standalone or plan.fresh:
         return
     read = {o.op for o in plan.ops}
@@ -1000,6 +1075,8 @@ def _refuse_a_sentence_unread(edit: str, plan: EditPlan) -> None:
                              f"({str(exc).splitlines()[0][:120]}); say one change per edit, or use --model") from None
         said += sum(o.op not in ("count", "dims") for o in alone.ops)  # (a count said twice, "shorter? Just two", is one)
         missing = {o.op for o in alone.ops} - read
+        if read & {"add", "remove"}:  # "make it taller and add a yellow one on top": the count the addition changes
+            missing -= {"count"}
         unread = not alone.ops and not alone.standalone and not alone.fresh and alone.cue.kind == "current" and bool(read)
         if missing or unread or (alone.standalone and not alone.fresh and read):
             raise SteerError(f"the edit \"{edit.strip()[:80]}\" asks for a change in '{sentence.strip()}' that its reading as one "
@@ -1015,6 +1092,10 @@ def _interpret_material(edit: str) -> EditPlan:
     its letters or digits ("same letters but ...") and the one structure it names ("the row goes on the right side")."""
     kept = re.search(r"(?i)\bsame\s+(?P<m>letter|digit|number)s?\b", edit or "")
     plan = _interpret_counted(edit)
+    word = next((o for o in plan.ops if o.op == "word"), None)
+    if word is not None and any(o.op == "reverse" for o in plan.ops):  # "Reverse it so it reads GOD": the word said is the
+        # reversal's result (reversing it too had given the word back, "no change"); the old word reversed is checked
+        plan = replace(plan, ops=[o for o in plan.ops if o.op != "reverse"], checks=(*plan.checks, ("reversed", word.params["word"])))
     if kept:  # "same letters but reversed": the task's cubes are letters, checked
         plan = replace(plan, checks=(*plan.checks, ("material", _MATERIAL_WORDS[kept.group("m").lower()])))
     of_order = re.search(r"(?i)\border\s+(?:of|as)\s+the\s+(row|line|tower|stack)\b|\bthe\s+(row|line|tower|stack)'s\s+order\b", edit or "")
@@ -1060,6 +1141,8 @@ def reasons_set_aside(edit: str) -> tuple[str, tuple[str, ...]]:
         return re.sub(r"(?i)\bit\b", f"the {cube.group('c').lower()} one", later, count=1), (sentences[0],)
     reasons = tuple(x for x in sentences if (EDIT_REASON_SENTENCE_RE.match(x) and EDIT_REASON_JUDGEMENT_RE.search(x)
                                              and not EDIT_REASON_HAZARD_RE.search(x.lower()))
+                    or (EDIT_EXCLAMATION_RE.match(x) and not EDIT_REASON_HAZARD_RE.search(x.lower())  # "Cut!", "Beautiful."
+                        and not EDIT_SENTENCE_CHANGE_RE.search(x) and not EDIT_EXCLAMATION_HAZARD_RE.search(x))
                     or (EDIT_PERSON_REASON_RE.match(x) and not EDIT_PERSON_REASON_HAZARD_RE.search(x.lower())))
     if not reasons or len(reasons) == len(sentences):
         return edit, ()
@@ -1095,6 +1178,12 @@ def check_said(plan: EditPlan, schema: TaskSchema) -> None:
                 type(p).__name__ == "Stack" for p in schema.goal_predicate().conjuncts())):
             raise SteerError(f"the edit names the task's {value}, but the version it builds on has none ({schema.goal_summary}); "
                              "say the change of its cubes, or state the whole new task")
+        if kind == "reversed":
+            words = [p.text for p in schema.goal_predicate().walk() if isinstance(p, Reads)]
+            if len(words) != 1 or words[0][::-1] != value:
+                raise SteerError(f"the edit reverses the word so it reads '{value}', but the version it builds on reads "
+                                 f"{' and '.join(repr(w) for w in words) or 'no word'}; say the new word alone (e.g. \"make "
+                                 f"it spell {value}\"), or use --model")
         if kind == "material" and value != material:
             raise SteerError(f"the edit names the task's {value}, but the version it builds on has {material}; name the cubes "
                              "the task has")
@@ -1150,6 +1239,13 @@ def _interpret(edit: str) -> EditPlan:
     edit = " ".join(_corrected(w, _known_words(), fuzzy=False) if w.islower() else w for w in edit.split())
     for pattern, replacement in EDIT_REWRITES:
         edit = pattern.sub(replacement, edit)
+    _refuse_unread_shapes(edit)
+    judged = re.match(r"(?i)\s*(?P<np>the\s+(?:[a-z]+\s+){0,2}(?:cube|block|one))\b[^.;:!?]*?[,;]\s*(?:so\s+|just\s+|please\s+)*"
+                      r"(?:make|paint|turn|colou?r|change|recolou?r|swap|replace|remove|move)\s+it\b", edit)
+    if judged:  # "The top cube goes on the left, make it black": "it" the top cube or the task (every cube had turned black)
+        raise SteerError(f"in \"{edit.strip()[:80]}\" 'it' may be {judged.group('np')} or the whole task, and the clause before "
+                         "it says more than which cube; say each change in an edit of its own (e.g. \"make the top cube black\"), "
+                         "or use --model")
     label = re.match(r"\s*([^:.;!?]{2,60}):\s", edit)
     if label and TURNING_LABEL_RE.search(label.group(1)):  # "Mirror version: make ...", "Bad example: ...": the label may be
         raise SteerError(f"the label '{label.group(1).strip()}' may change the edit (a judgement, a turn, a condition or a size) "
@@ -1242,6 +1338,9 @@ def strip_edit_words(edit: str) -> str:
     t = edit
     if marks:
         after = edit[marks[-1].end():].strip(" :,.;-")
+        lead = re.match(r"[^:.;!?]{0,40}:\s*(?=\S)", after)  # "unrelated to the old one: two towers ...": the task after its colon
+        if lead and not re.search(rf"(?i)\b(?:{COLOR_RE})\b|\d", lead.group(0)):
+            after = after[lead.end():]
         t = after if len(after.split()) >= 2 else FRESH_RE.sub(" ", edit)
     for _ in range(3):
         t = EDIT_LEADING_RE.sub("", t.strip())
@@ -2024,6 +2123,9 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
                 raise SteerError(f"a {spec.structure}'s goal does not say which row a cube stands in, so a row of another "
                                  "colour cannot be judged; state the whole new task")
             dims = list(spec.dims)
+            if p.get("n") is not None and p["n"] != len(spec.items) // spec.dims[axis]:
+                raise SteerError(f"a new row of {p['n']} cubes does not fit a {spec.structure} whose rows hold "
+                                 f"{len(spec.items) // spec.dims[axis]}; state the whole new task, or use --model")
             dims[axis] += 1
             grown = replace(spec, dims=tuple(dims))
             spec = grown.with_items(list(spec.items) + [Item(color=color)] * (len(spec.items) // spec.dims[axis]))

@@ -482,10 +482,11 @@ def recognize_wall(f: Features, b: Builder) -> bool:
     if rows and count and rows.start() <= count.start() < rows.end():
         count = None  # "2 rows of 4 blocks": the 4 is a row's, not the wall's
     total = int(count.group(1)) if count else None
-    if width is None and material_of(f) == "colors":  # "bottom row 3 gray blocks, top row 3 brown blocks"
-        rows_said = _counted_layers(f, height or WALL_DIMS[1])
-        if rows_said:
-            width, height, total = rows_said[0], height or len(rows_said), sum(rows_said)
+    rows_said = _counted_layers(f, height or WALL_DIMS[1]) if material_of(f) == "colors" else None
+    if width is None and rows_said:  # "bottom row 3 gray blocks, top row 3 brown blocks"
+        width, height, total = rows_said[0], height or len(rows_said), sum(rows_said)
+    elif rows_said and len(rows_said) > 1:  # "3 wide and 3 high: three red cubes in the bottom row, ...": the rows' counts
+        total = sum(rows_said)  # together (the first had been read as the wall's)
     if width is None and height is None:
         height = WALL_DIMS[1]
         width = max(2, total // height) if total else WALL_DIMS[0]
@@ -956,6 +957,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
         return False  # "so that red is left of green": pairwise relations (recognize_relational)
     if not is_line or f.has("stack", "stacks", "tower", "towers", "on top"):
         return False
+    if re.search(r"\b(?:under|underneath|beneath|below)\s+(?:the|a|an|it|them)\b", f.text):
+        return False  # "a row of green cubes under the red cube": a row lies flat, nothing stands on it (it had been a row of the two)
     if re.search(r"\b(?:bottom[\s-]+(?:to|up\s+to)[\s-]+top|top[\s-]+(?:to|down\s+to)[\s-]+bottom)\b", f.text):
         return False  # "bottom-to-top order blue, yellow, red": a tower's order, never a line's
     direction = direction_of(f)
