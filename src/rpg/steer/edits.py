@@ -988,6 +988,12 @@ def interpret(edit: str) -> EditPlan:
     return plan
 
 
+_CHANGE_CLAUSE_SPLIT = (r"\s*(?:,\s*and\s+(?:then\s+)?|,\s*then\s+|;\s*|\s+and\s+(?:then\s+)?|\s+then\s+)(?=(?:also\s+|please\s+)?(?:add|make"
+                        r"|remove|swap|change|paint|replace|insert|append|delete|flip|reverse|recolou?r)\s)")
+"""Where an edit's clauses each begin with a change verb ("make the top cube black and add one"): each is read alone too
+(:func:`_refuse_a_sentence_unread`), so that no change said is dropped (the addition had been, silently)."""
+
+
 _UNREAD_EDIT_SHAPES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"(?i)(?:\band|\bthen|,)\s+the\s+[^,.;!?]{1,40}?\s+(?:is|are|gets?|should\s+be|must\s+be)\s+(?:removed|replaced|moved"
                 r"|swapped|taken\s+(?:away|off|out)|deleted|added|painted|recolou?red)\b"),
@@ -996,6 +1002,9 @@ _UNREAD_EDIT_SHAPES: tuple[tuple[re.Pattern, str], ...] = (
                 r"[a-z ]{1,30}?\s+(?:is|are|looks?|seems?|reads?)\b[^.;!?]*?[,;.]\s*(?:so\s+|just\s+|please\s+)*(?:make|paint|turn"
                 r"|colou?r|change|recolou?r)\s+(?:it|them)\b"),
      "'it'/'them' after a clause that names part of the task may be that part or the whole task"),
+    (re.compile(r"(?i)^\s*the\s+(?:[a-z]+\s+){0,2}(?:cube|block|one)\b[^.;:!?]*?[,;]\s*(?:so\s+|just\s+|please\s+)*"
+                r"(?:make|paint|turn|colou?r|change|recolou?r|swap|replace|remove|move)\s+it\b"),
+     "'it' may be the cube the clause before it names or the whole task, and that clause says more than which cube"),
     (COUNTED_RUNS_RE, "runs of counted cubes in one change (\"two yellow then one white\") are not read one by one"),
     (re.compile(r"(?i)\b(?:\d+|two|three|four|five|six|a\s+couple\s+of)\s+\d\s+(?:cubes|blocks)\b"),
      "one digit is on one cube: several cubes with one label cannot be made"),
@@ -1045,12 +1054,6 @@ def _refuse_a_place_before_or_after_resizing(edit: str, plan: EditPlan) -> None:
     if resized:
         raise SteerError(f"the edit \"{edit.strip()[:80]}\" resizes the structure and picks the {placed[0].params['select']['position']} "
                          "cube: before or after the change is not said; say each change in an edit of its own, or use --model")
-
-
-_CHANGE_CLAUSE_SPLIT = (r"\s*(?:,\s*and\s+(?:then\s+)?|,\s*then\s+|;\s*|\s+and\s+(?:then\s+)?|\s+then\s+)(?=(?:also\s+|please\s+)?(?:add|make"
-                        r"|remove|swap|change|paint|replace|insert|append|delete|flip|reverse|recolou?r)\s)")
-"""Where an edit's clauses each begin with a change verb ("make the top cube black and add one"): each is read alone too
-(:func:`_refuse_a_sentence_unread`), so that no change said is dropped (the addition had been, silently)."""
 
 
 def _refuse_a_sentence_unread(edit: str, plan: EditPlan) -> None:
@@ -1240,12 +1243,6 @@ def _interpret(edit: str) -> EditPlan:
     for pattern, replacement in EDIT_REWRITES:
         edit = pattern.sub(replacement, edit)
     _refuse_unread_shapes(edit)
-    judged = re.match(r"(?i)\s*(?P<np>the\s+(?:[a-z]+\s+){0,2}(?:cube|block|one))\b[^.;:!?]*?[,;]\s*(?:so\s+|just\s+|please\s+)*"
-                      r"(?:make|paint|turn|colou?r|change|recolou?r|swap|replace|remove|move)\s+it\b", edit)
-    if judged:  # "The top cube goes on the left, make it black": "it" the top cube or the task (every cube had turned black)
-        raise SteerError(f"in \"{edit.strip()[:80]}\" 'it' may be {judged.group('np')} or the whole task, and the clause before "
-                         "it says more than which cube; say each change in an edit of its own (e.g. \"make the top cube black\"), "
-                         "or use --model")
     label = re.match(r"\s*([^:.;!?]{2,60}):\s", edit)
     if label and TURNING_LABEL_RE.search(label.group(1)):  # "Mirror version: make ...", "Bad example: ...": the label may be
         raise SteerError(f"the label '{label.group(1).strip()}' may change the edit (a judgement, a turn, a condition or a size) "
