@@ -236,8 +236,10 @@ def _same_statement(got: TaskSpec, spec: TaskSpec) -> bool:
     spec's (a field the statement does not show, such as a stale word, may differ)."""
     try:  # the labels too, which a statement by count alone does not show ("a circle of 3 digit blocks": 1, 2, 3, where the
         # task's were 2, 4, 6)
-        return (got.direction is None) == (spec.direction is None) and render_spec(got) == render_spec(spec) and \
-            sorted(i.label or "" for i in got.items) == sorted(i.label or "" for i in spec.items)
+        labels = [i.label for i in spec.items if i.label]
+        named = len(labels) >= 2 and len(set(labels)) == len(labels)  # cubes each with a label of its own (made up by
+        return (got.direction is None) == (spec.direction is None) and render_spec(got) == render_spec(spec) and (  # count
+            not named or sorted(i.label or "" for i in got.items) == sorted(i.label or "" for i in spec.items))  # when repeated)
     except (BadInput, ValueError):
         return False
 
