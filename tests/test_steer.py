@@ -2752,3 +2752,31 @@ def test_forty_first_session_steering_helper_attack_is_refused(tmp_path, base, e
     fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     with pytest.raises(BadInput):
         steer(fam.path, edit)
+
+
+@pytest.mark.parametrize("base,edit", [
+    # the session's own rules, attacked by the read steering sets: a label that says an addition ("Add a clue:") had been
+    # dropped and the rest read as the whole new task, losing the earlier cubes
+    ("Put the black cube on the white patch.", "Add a clue: a red cube to the left of the white patch."),
+    ("Stack the blue cube on the orange cube in the front right corner.",
+     "Add a second piece alongside it: a green cube on a pink cube, in the front left corner."),
+])
+def test_a_label_saying_an_addition_never_becomes_a_new_task(tmp_path, base, edit):
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
+    try:
+        r = steer(fam.path, edit)
+    except BadInput:
+        return
+    from rpg.schema.meaning import meaning
+
+    assert r.intent == "extend" and any("patch:white" in a or "orange" in a for a in meaning(fam.schema(r.version)))
+
+
+def test_back_to_take_one_is_the_first_version(tmp_path):
+    from rpg.schema.meaning import meaning
+
+    fam = Family(create_family(compiled("Stack the red cube on the yellow cube.", tmp_path, name="fam").path).path)
+    steer(fam.path, "add a blue cube on top")
+    steer(fam.path, "make the top one green")
+    r = steer(fam.path, "Let's go back to take one.")
+    assert meaning(fam.schema(r.version)) == ["stack(yellow,red)"]

@@ -3487,7 +3487,7 @@ _EDIT_LABEL_HAZARD_RE = re.compile(
     r"|these|those|them|if|unless|when|wait|actually|sorry|oops|cancel|forget|ignore|different|new|fresh|start\w*|over|scratch"
     r"|another|task|afresh|anew|clean|reset|begin\w*|separate|other|else|entirely|completely|whole|flip\w*|mirror\w*|invers\w*"
     r"|upside|backwards?|bad|wrong|example|counter\w*|non|trap|tall\w*|short\w*|big\w*|small\w*|wide\w*|narrow\w*|high\w*"
-    r"|low\w*|harder|easier|bigger|smaller)\b|\bv\d")
+    r"|low\w*|harder|easier|bigger|smaller|add\w*|also|plus|extra|second|third|alongside|beside|it|its|piece|clue)\b|\bv\d")
 """What keeps a label before an edit's colon (:data:`EDIT_LABEL_RE`): a colour, a count, a version or a step of the
 session, a negation, a restriction, a reversal, a pronoun for cubes, a condition, a take-back or a fresh start ("Start
 over:", "Completely different task now:") may change the edit."""
@@ -3592,10 +3592,10 @@ three red and then two blue on top"), read by the steering as the whole tower (:
 def edit_label_dropped(m: re.Match) -> str:
     """The edit without its label (:data:`EDIT_LABEL_RE`) when the label is inert, else as it is."""
     label = m.group("l").lower()
-    if _EDIT_LABEL_HAZARD_RE.search(label) or GOAL_THING_PREFIX_RE.search(label):
-        return m.group(0)
     if re.fullmatch(r"\s*(?:add|also|plus|addition|and|extra|in\s+addition)\s*", label):
         return "also "  # "add: the red cube is left of the green cube": an addition (it had been read as the whole new task)
+    if _EDIT_LABEL_HAZARD_RE.search(label) or GOAL_THING_PREFIX_RE.search(label):  # ("Add a clue: a red cube ...": an
+        return m.group(0)  # addition, kept: dropped, the rest had become the whole new task)
     return ""
 
 
@@ -3773,6 +3773,9 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "remove the blue cube, we don't need it in frame": the removal's reason after it
     (re.compile(r"(?i)^(?P<rm>\s*(?:remove|drop|lose|delete)\s+[^,;.!?]+?)\s*[,;]\s*(?:we|i)\s+(?:don'?t|do\s+not)\s+need\s+"
                 r"(?:it|them|that\s+one|those)(?:\s+(?:any\s*more|in\s+(?:the\s+)?(?:frame|shot|scene|picture)))?\s*[.!]?\s*$"), r"\g<rm>"),
+    # "Let's go back to take one", "back to round 1": the first version (it had gone back one step, silently)
+    (re.compile(r"(?i)\b(back\s+to|return\s+to|revert\s+to|restore)\s+(?:the\s+)?(?:take|round|attempt|try|draft|iteration|pass|shot|setup|set-up)"
+                r"\s+(?:one|1)\b"), r"\1 the original"),
     # "Per the sponsor, ...", "At the request of the client, ...": who asks, before the change
     (re.compile(rf"^\s*(?i:per|according\s+to|as\s+requested\s+by|at\s+the\s+request\s+of|on\s+behalf\s+of)\s+(?:{_ASKER})\s*,\s*(?=\S)"), ""),
     # "the blue top cube is replaced with a yellow one", "the yellow cube gets moved to the back": the change said passively
