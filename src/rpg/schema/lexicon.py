@@ -2556,7 +2556,7 @@ def line_up_direction(m: re.Match) -> str:
 
 
 _STRUCTURE_NOUN = r"(?:tower|stack|row|line|pile|column|circle|ring|grid|wall|pyramid)"
-ANOTHER_STRUCTURE_RE = re.compile(rf"\b(?:another|an?\s+(?:separate|second|distinct|different|other))\s+(?:one|(?P<noun>{_STRUCTURE_NOUN}))\s+(?=of\b)")
+ANOTHER_STRUCTURE_RE = re.compile(rf"\b(?:another|an?\s+(?:separate|distinct|different|other))\s+(?:one|(?P<noun>{_STRUCTURE_NOUN}))\s+(?=of\b)")
 """A second structure said as "another one of ...", "another tower of ..." or "a separate pile of ..." after a first ("build a tower of red, blue
 and green and another one of yellow, pink and white"): written "a tower of ..." as the first is (the two towers had
 been read as one tower of six cubes); see :func:`another_structure`."""
@@ -3267,8 +3267,10 @@ def count_then_list(m: re.Match) -> str:
     """The list of :data:`COUNT_THEN_LIST_RE`'s match where its length is the count; else the count and the list after a
     colon, as the readers' count checks refuse it."""
     listed = re.findall(rf"\b(?:{COLOR_RE})\b", m.group("l"))
-    if len(listed) == count_word(m.group("n")):
-        return m.group("l")
+    if len(listed) == count_word(m.group("n")):  # a layer's cubes ("a bottom row of three cubes (red, green and blue)"): the
+        # list; elsewhere as written, which other rules read ("a row of three cubes (red, green, blue) running ...")
+        return m.group("l") if re.search(r"\b(?:bottom|top|middle|first|second)\s+(?:row|layer|level|tier)\s+of\s+$",
+                                         m.string[:m.start()]) else m.group(0)
     return f"{m.group('n')} cubes: {m.group('l')}"  # another count: said as "4 cubes: red, green and blue", which is refused
     # (a fourth cube had been made up)
 
@@ -3775,7 +3777,7 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
                 r"(?:it|them|that\s+one|those)(?:\s+(?:any\s*more|in\s+(?:the\s+)?(?:frame|shot|scene|picture)))?\s*[.!]?\s*$"), r"\g<rm>"),
     # "Let's go back to take one", "back to round 1": the first version (it had gone back one step, silently)
     (re.compile(r"(?i)\b(back\s+to|return\s+to|revert\s+to|restore)\s+(?:the\s+)?(?:take|round|attempt|try|draft|iteration|pass|shot|setup|set-up)"
-                r"\s+(?:one|1)\b"), r"\1 the original"),
+                r"\s+(?:one|1)\b(?=\s*(?:[.,;!?]|$))"), r"\1 the original"),  # ("the round one tower": a version named by a shape)
     # "Per the sponsor, ...", "At the request of the client, ...": who asks, before the change
     (re.compile(rf"^\s*(?i:per|according\s+to|as\s+requested\s+by|at\s+the\s+request\s+of|on\s+behalf\s+of)\s+(?:{_ASKER})\s*,\s*(?=\S)"), ""),
     # "the blue top cube is replaced with a yellow one", "the yellow cube gets moved to the back": the change said passively

@@ -1005,7 +1005,7 @@ _UNREAD_EDIT_SHAPES: tuple[tuple[re.Pattern, str], ...] = (
     (re.compile(r"(?i)^\s*the\s+(?:[a-z]+\s+){0,2}(?:cube|block|one)\b[^.;:!?]*?[,;]\s*(?:so\s+|just\s+|please\s+)*"
                 r"(?:make|paint|turn|colou?r|change|recolou?r|swap|replace|remove|move)\s+it\b"),
      "'it' may be the cube the clause before it names or the whole task, and that clause says more than which cube"),
-    (COUNTED_RUNS_RE, "runs of counted cubes in one change (\"two yellow then one white\") are not read one by one"),
+    (re.compile(r"(?i)\b(?:add|put|place|append)\s+(?:" + COUNTED_RUNS_RE.pattern + ")"), "runs of counted cubes in one change (\"two yellow then one white\") are not read one by one"),
     (re.compile(r"(?i)\b(?:\d+|two|three|four|five|six|a\s+couple\s+of)\s+\d\s+(?:cubes|blocks)\b"),
      "one digit is on one cube: several cubes with one label cannot be made"),
     (re.compile(rf"(?i)\b(?:add|put|place|stack)\s+(?:some\s+|more\s+)?(?:{COLOR_RE})\s+(?:cubes|blocks)\b"),
