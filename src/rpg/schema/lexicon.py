@@ -3259,13 +3259,15 @@ one cube, and refused)."""
 
 COUNT_THEN_LIST_RE = re.compile(rf"\b(?P<n>\d+|two|three|four|five|six)\s+(?:cubes|blocks)\s*\(\s*(?P<l>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?"
                                 rf"(?:{COLOR_RE})|\s+and\s+(?:{COLOR_RE}))+)\s*\)")
-"""Cubes counted and then listed in brackets ("a bottom row of three cubes (red, green and blue)"): the list alone, where it
-holds as many cubes as counted (:func:`count_then_list`); the count had been read beside the list, as cubes of its own."""
+"""Cubes counted and then listed in brackets ("a bottom row of three cubes (red, green and blue)"): the list alone where it
+holds as many cubes as counted and names a layer's cubes; with another count, refused (:func:`count_then_list`); the count
+had been read beside the list, as cubes of its own."""
 
 
 def count_then_list(m: re.Match) -> str:
-    """The list of :data:`COUNT_THEN_LIST_RE`'s match where its length is the count; else the count and the list after a
-    colon, as the readers' count checks refuse it."""
+    """The list of :data:`COUNT_THEN_LIST_RE`'s match where its length is the count and it follows a layer ("bottom row of");
+    as written where the count fits elsewhere (other rules read "a row of three cubes (red, green, blue) running ..."); else
+    the count and the list after a colon, which the readers' count checks refuse."""
     listed = re.findall(rf"\b(?:{COLOR_RE})\b", m.group("l"))
     if len(listed) == count_word(m.group("n")):  # a layer's cubes ("a bottom row of three cubes (red, green and blue)"): the
         # list; elsewhere as written, which other rules read ("a row of three cubes (red, green, blue) running ...")
