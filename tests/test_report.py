@@ -32,11 +32,12 @@ def test_gallery_has_every_card_and_image(chromium, tmp_path):
     assert m, dom[:500]
     assert int(m.group(1)) == int(m.group(2)) == 2 * len(expected)
     assert dom.count("class=\"pass\"") >= 8 * len(expected)
-    # every card says what the oracle did: its success rate, or why the solvable gate was waived
-    rates = re.findall(r"oracle \(solvable gate\): (\d)/5 episodes with the floating gripper", dom)
+    # every card says what the oracle did: its successes over the episodes run (the gate stops once
+    # SOLVABLE_MIN_SUCCESS succeeded, so 3/3 as well as 5/5), or why the solvable gate was waived
+    rates = re.findall(r"oracle \(solvable gate\): (\d)/([3-5]) episodes with the floating gripper", dom)
     waived = dom.count("solvable gate waived: the oracle cannot build the 3x3x3 cube")  # stack_and_modify v0, v1
     assert len(rates) + waived == len(expected) and waived == 2
-    assert all(int(k) >= 3 for k in rates)
+    assert all(3 <= int(k) <= int(n) for k, n in rates)
     # the evaluation run: its page is linked, and each evaluated task's card shows its rate
     train = [e["name"] for e in yaml.safe_load((lib / "manifest.yaml").read_text())["entries"] if e.get("split") == "train"]
     evals = {}
