@@ -326,6 +326,11 @@ CONCESSION_OPENING_RE = re.compile(
 constraint of the goal ("while" had been refused as a time; "it" as a reference); a time said ("It should take under a
 minute, but ...") is no concession and stays."""
 
+DISCOURSE_OPENING_RE = re.compile(r"(?i)^\s*(?:(?:so|ok(?:ay)?|well|right)\s*,?\s+)?(?:anyway|anyways|anyhow)\s*,\s+(?=\S)")
+"""A text's opening "Anyway," ("Anyway, pop the yellow cube on the green patch."): it turns the talk to the task and says
+nothing of its goal (its word had been refused as unknown).  Only at the text's start: inside it, "anyway" may set
+aside what was said before, and stays (:data:`RETRACTION_RE`)."""
+
 TURNING_LABEL_RE = re.compile(
     r"(?i)\b(?:(?:bad|wrong|incorrect|counter|anti|non|negative|failed|failing)[\s-]*(?:examples?|demos?|cases?|goals?|answers?|approach\w*)"
     r"|counter-?examples?|non-?goals?|forbid\w*|prohibit\w*|banned|off\s+limits|trap|bait|myth|fake|false|danger\w*|pitfall|mistakes?"
@@ -865,9 +870,12 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
              r"placed|lying|sitting|standing|resting))\b|\b(?:originally|beforehand|to\s+begin\s+with|at\s+first"
              r"|in\s+the\s+beginning|in\s+the\s+(?:morning|afternoon|evening)|at\s+(?:night|noon|midnight)|tomorrow|yesterday)\b"
              r"|\b(?:run|episode|trial|attempt)s?\s+after\s+(?:that|this|it)\b|\b(?:second|every|each|other)\s+(?:run|episode|trial)s?\b"
+             r"|\b(?:every|each)\s+(?:single\s+)?(?:morning|afternoon|evening|night|day|week|month|hour|session|shift|monday|tuesday"
+             r"|wednesday|thursday|friday|saturday|sunday|weekday|weekend)s?\b|\b(?:daily|nightly|hourly|weekly|monthly)\b"
              r"|\b(?:from|starting\s+(?:from|with)|beginning\s+(?:from|with))\s+(?:a|the)\s+(?:start|scene|setup|state|configuration)"
              r"\s+(?:where|in\s+which|with)\b",
-     "is about another time than the end of this episode (a past or starting state, a time of day, another run): a "
+     "is about another time than the end of this episode (a past or starting state, a time of day, a schedule, another "
+     "run): a "
      "task's goal is checked once, at the end of one episode; say only where the cubes must end up"),
     ("time", START_TIME_RE, "is about another time than the end of this episode (a starting state): a task's goal is checked "
                             "once, at the end of one episode; say only where the cubes must end up"),
@@ -1562,6 +1570,13 @@ INNER_POSITION_RE = re.compile(rf"\b(?:with|where|and)\s+(?:the\s+)?(?P<c>{COLOR
 refused, naming it (it had been read as one more cube of that colour); a structure said role by
 role ("the bottom one is green, the second from the bottom is yellow, ...") is read elsewhere."""
 
+LONE_ORDINAL_ROLE_RE = re.compile(rf"\bthe\s+(?P<o>first|second|third|fourth|fifth|sixth)\s+(?:one\s+)?(?:is|should\s+be"
+                                  rf"|must\s+be|will\s+be|=|:)\s*(?:the\s+)?(?:{COLOR_RE})\b")
+"""A cube given a colour by its rank alone, the rest of the structure not said so ("stack three cubes; the third is red"):
+from which end it counts is not said, and the rank had been dropped (the red cube anywhere in the tower); refused by
+:func:`rpg.schema.reading.normalize_words` where :func:`rpg.schema.reading.ordinal_roles` did not read it as part of a
+whole order."""
+
 def _rest_of_tower(m: re.Match) -> bool:
     """Whether the cubes said below (or above) 'it' in ``m`` are counted and, with the end cube, make the whole tower: no
     tower size said, or one more than their count ("a 3-block tower, green on top, two orange under it")."""
@@ -1575,6 +1590,10 @@ def _rest_of_tower(m: re.Match) -> bool:
 
 
 PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "a line of five white cubes across the back of the table": along that side ('across' had been refused)
+    (re.compile(r"\bacross\s+(?=the\s+(?:very\s+)?(?:back|front|rear|far|near)(?:\s+(?:edge|side))?(?:\s+of\s+the\s+(?:table|workspace)\b"
+                r"|\s*(?:[.,;!]|$)))"),
+     "along "),
     # "put the blue cube on the same coloured patch", "... on the patch that matches it", "... on its own patch": the
     # patch of that cube's colour (a red and a gray patch had been made up)
     (re.compile(rf"\b(the\s+({COLOR_RE})\s+(?:cube|block))\s+(on|onto|to|in|into)\s+(?:the\s+same[\s-]+colou?red|its\s+own"
@@ -2705,6 +2724,13 @@ STRUCTURE_NAME_RE = re.compile(r"\b((?:[Tt]ower|[Ss]tack|[Rr]ow|[Pp]ile|[Ll]ine|
 """A structure or scenario named by a letter or a digit ("Tower A: yellow, brown", "tower B is pink on gray", "scenario C:"):
 the name dropped (the letter had been read as a letter cube, the digit as a count)."""
 
+ORDINAL_ABBREVIATIONS: dict[str, str] = {"1st": "first", "2nd": "second", "3rd": "third", "4th": "fourth", "5th": "fifth",
+                                         "6th": "sixth", "7th": "seventh", "8th": "eighth", "9th": "ninth", "10th": "tenth"}
+ORDINAL_ABBREVIATION_RE = re.compile(r"(?i)(?<![\w.])(" + "|".join(ORDINAL_ABBREVIATIONS) + r")(?![\w'])")
+"""An ordinal written with its digit ("2nd=gray", "the 3rd cube"), read as its word ("second", "third"): the word's
+readers read it (the tokenizer had split "2nd" into a count and an unknown "nd"; "tower: bottom=pink, 2nd=gray,
+3rd=cyan, top=red" had become a tower of pink and red, its middle dropped silently)."""
+
 GLUED_COUNT_RE = re.compile(r"(?i)\b(stacks?|towers?|piles?|rows?|lines?|walls?|grids?|pyramids?|circles?)((?:-[a-z]+)*)-(\d+)\b")
 """A structure's identifier with a count glued on ("stack-any-4", "pile-5"): the words and the count
 written apart, so the count is read, or refused, as a count (a stack of two had been made up)."""
@@ -2944,11 +2970,35 @@ evaluator after the arm returns home: ...", "here is what I would like to see at
 was 4 until stranger23 (seventeenth session)."""
 
 
+PERSON_NOUNS = (r"curators?|brides?|grooms?|clients?|customers?|boss(?:es)?|kids?|sons?|daughters?|child(?:ren)?|coach(?:es)?|judges?"
+                r"|panel|team|managers?|supervisors?|directors?|owners?|homeowners?|leads?|artists?|mum|mom|dad|grandma|grandpa|wife"
+                r"|husband|partners?|friends?|neighbou?rs?|(?:play)?testers?|players?|buyers?|viewers?|users?|audience|crew|people|folks"
+                r"|students?|reviewers?|designers?|producers?|actors?|visitors?|guests?|shoppers?|readers?|parents?|family|everyone"
+                r"|everybody|sponsors?|donors?|funders?|investigators?|committee|board|captain|commanders?|stakeholders?|teachers?"
+                r"|professors?|advisors?|moderators?|mods|subscribers?|fans|followers|editors?|officers?|participants?|chat")
+"""People who ask for, or judge, a steering edit's change ("the curator", "playtesters", "the homeowner"): read by
+:data:`_ASKER` and :data:`EDIT_PERSON_REASON_RE`."""
+INSTITUTION_NOUNS = (r"court|tribunal|council|authorit(?:y|ies)|inspectors?|department|office|agency|management|headquarters|hq"
+                     r"|ministry|administration|jury|referee|umpire|chair|chairperson|governor|mayor|king|queen|general|sergeant")
+"""Bodies and offices that order a task as a person asks for one ("The court orders ...", "Headquarters requires ..."):
+read by :data:`SOMEONE_WANTS_RE`."""
+
+FINDING_IS_TAKING_RE = re.compile(
+    r"\b(?:find|locate|fetch|retrieve|get\s+hold\s+of)\s+(?=(?:the|all|both|a|an|\d+)\b[^.;!?]{1,80}?(?:,?\s*and|,?\s*then|,)"
+    r"\s+(?:then\s+)?(?:put|place|set|stack|move|spell|build|make|line|arrange|lay|drop|pile|sort|align|order|stand)\b)")
+"""Finding cubes on the way to a placing verb ("Find the letter blocks C, A and T and spell CAT", "locate the red cube,
+then put it ..."): read as taking them ('find' had been refused as an action the domain lacks); alone ("Find the red
+cube.") it stays refused."""
+
 SOMEONE_WANTS_RE = re.compile(
-    r"\b(?:my|our|the)\s+(?P<who>supervisor|boss|advisor|adviser|professor|prof|pi|manager|lab|team|colleague|labmate|teacher|"
-    r"client|group|mentor|tutor|lecturer)\s+(?:wants|needs|would\s+like|asked\s+for|asks\s+for|requested)\b")
-"""Who asks for the task ("my supervisor wants the white cube ..."): read as "i want" (the goal is
-the same whoever asks; :func:`rpg.schema.reading.normalize_words` lists ``who`` as dropped)."""
+    r"\b(?:my|our|the|this|your)\s+(?P<who>supervisor|boss|advisor|adviser|professor|prof|pi|manager|lab|team|colleague|labmate|teacher|"
+    rf"client|group|mentor|tutor|lecturer|{PERSON_NOUNS}|{INSTITUTION_NOUNS})\s+(?:wants|needs|would\s+like|asked\s+for|asks\s+for"
+    r"|requested|requests|orders|ordered|demands|demanded|directs|directed|instructs|instructed|decrees|decreed|rules|ruled"
+    r"|requires|required)(?:\s+that)?\b(?!\s+(?:it|them|this|that|those|these|to\s+be\s+told)\b)")
+"""Who asks for the task ("my supervisor wants the white cube ...", "The court orders that the blue cube be placed on
+...", "The client requests a row of ..."): read as "i want" (the goal is the same whoever asks: a person of
+:data:`PERSON_NOUNS` or an institution of :data:`INSTITUTION_NOUNS`; :func:`rpg.schema.reading.normalize_words` lists
+``who`` as dropped).  A pronoun after the verb ("the client wants it ...") points at something unsaid and stays."""
 
 _PURPOSE = (r"(?:the|my|our|this|a|tomorrow's|today's|tonight's|friday's|monday's)\s+(?:next\s+|first\s+|upcoming\s+)?(?P<what>run|demo|trial|experiment|test|eval(?:uation)?"
             r"|episode|paper|video|benchmark|session)")
@@ -3294,6 +3344,49 @@ LAYER_FROM_BOTTOM_RE = re.compile(rf"(?P<cubes>\b(?:\d+|the|a|an|one)\s+(?:{COLO
 """Cubes given a layer counted from the table ("3 yellow blocks second from the bottom") of a layered structure: said as
 "in the second layer", which :data:`LAYER_ROLE_RE` reads."""
 
+_LAYER_CUBES = rf"(?P<cubes>\b(?:\d+|the|a|an|{COUNT_WORD_RE})\s+(?:{COLOR_RE})\s+(?:blocks?|cubes?))"
+LAYER_ABOVE_RE = re.compile(_LAYER_CUBES + r"\s+(?:(?:is|are|go|goes|sit|sits|sitting|rest|rests|resting|placed)\s+)?(?:directly\s+|right\s+)?"
+                            r"(?:above|over|on\s+top\s+of|on)\s+(?:them|those|these|that(?:\s+(?:row|layer|level|tier))?)\b")
+"""Cubes of a layered structure said to go above the layer said before them ("three white cubes on the bottom row, two
+white cubes above them and one white cube at the peak"): that layer's next one (:func:`layers_said_relatively`)."""
+
+_LAYER_SAID_RE = re.compile(r"\b(?P<bottom>bottom|base|foundation|lowest|first)\s+(?:row|layer|level|tier)\b|\bon\s+the\s+(?P<bottom2>bottom|base)\b"
+                            r"|\b(?P<k>second|third|fourth|fifth)\s+(?:row|layer|level|tier)\b")
+LAYER_BELOW_ABOVE_RE = re.compile(_LAYER_CUBES.replace("cubes>", "low>") + r"\s+(?:(?:go|goes|are|is)\s+)?(?:below|underneath|beneath|under)"
+                                  r"\s*,\s*(?:and\s+|with\s+)?" + _LAYER_CUBES.replace("cubes>", "high>")
+                                  + r"\s+(?:(?:go|goes|are|is)\s+)?(?:above|over|on\s+top)(?=\s*(?:[.;!]|$))")
+"""The two layers of a structure two layers high said as the cubes below and the cubes above ("a two-row wall: three blue
+cubes below, three green cubes above"): its bottom and top rows (:func:`layers_said_relatively`)."""
+
+_LAYER_WORDS = ("first", "second", "third", "fourth", "fifth")
+
+
+def layers_said_relatively(text: str) -> str:
+    """``text`` (a layered structure's, lower case) with each layer said relative to another written as its place from the
+    table: "above them" after the bottom row is the second layer, after the second the third (:data:`LAYER_ABOVE_RE`; left
+    as it is where no layer was said before it); "N X cubes below, M Y cubes above" of a structure said two layers high
+    (:data:`LAYER_BELOW_ABOVE_RE`) its bottom and top rows.  (The cubes above had been read on top of one cube, and the
+    count of the cubes below taken for the wall's width.)"""
+    def above(m: re.Match) -> str:
+        said = list(_LAYER_SAID_RE.finditer(m.string[:m.start()]))
+        if not said:
+            return m.group(0)
+        last = said[-1]
+        if re.search(rf"\b(?:{COLOR_RE})\b", m.string[last.end():m.start()]):
+            return m.group(0)  # cubes said between that layer and these, with no layer read: above which is unsaid
+        k = 0 if (last.group("bottom") or last.group("bottom2")) else _LAYER_WORDS.index(last.group("k"))
+        return m.group(0) if k + 1 >= len(_LAYER_WORDS) else f"{m.group('cubes')} in the {_LAYER_WORDS[k + 1]} layer"
+
+    for _ in range(len(_LAYER_WORDS)):  # each in turn: the one after reads the layer this one became
+        new = LAYER_ABOVE_RE.sub(above, text, count=1)
+        if new == text:
+            break
+        text = new
+    if re.search(r"\b(?:two|2)[\s-]+(?:rows?|layers?|levels?|tiers?|high|tall)\b", text):
+        text = LAYER_BELOW_ABOVE_RE.sub(lambda m: f"{m.group('low')} in the bottom row, {m.group('high')} in the top row", text)
+    return text
+
+
 LAYER_ORDINALS = {"second": 1, "2nd": 1, "third": 2, "3rd": 2, "fourth": 3, "4th": 3, "fifth": 4, "5th": 4}
 """A layer named by its place counted from the table ("the second row": layer 1, the bottom one
 being 0)."""
@@ -3606,14 +3699,6 @@ def edit_label_dropped(m: re.Match) -> str:
 _NOT_CUBE = r"(?:\s+(?:one|cube|block))?"
 _EDIT_PLACE = (r"(?:at\s+the\s+(?:bottom|top|base)|on\s+(?:the\s+)?top|in\s+the\s+middle|on\s+the\s+(?:far\s+)?(?:left|right)(?:\s+end)?"
                r"|at\s+the\s+(?:far\s+)?(?:left|right)(?:\s+end)?)")
-PERSON_NOUNS = (r"curators?|brides?|grooms?|clients?|customers?|boss(?:es)?|kids?|sons?|daughters?|child(?:ren)?|coach(?:es)?|judges?"
-                r"|panel|team|managers?|supervisors?|directors?|owners?|homeowners?|leads?|artists?|mum|mom|dad|grandma|grandpa|wife"
-                r"|husband|partners?|friends?|neighbou?rs?|(?:play)?testers?|players?|buyers?|viewers?|users?|audience|crew|people|folks"
-                r"|students?|reviewers?|designers?|producers?|actors?|visitors?|guests?|shoppers?|readers?|parents?|family|everyone"
-                r"|everybody|sponsors?|donors?|funders?|investigators?|committee|board|captain|commanders?|stakeholders?|teachers?"
-                r"|professors?|advisors?|moderators?|mods|subscribers?|fans|followers|editors?|officers?|participants?|chat")
-"""People who ask for, or judge, a steering edit's change ("the curator", "playtesters", "the homeowner"): read by
-:data:`_ASKER` and :data:`EDIT_PERSON_REASON_RE`."""
 _ASKER = (r"(?-i:[A-Z][a-z]+)(?<!The)(?<!This)(?<!That)(?<!Then)(?<!Now)(?<!Make)(?<!Put)|(?i:he|she|they|we|chat)"
           rf"|(?i:the|my|our|your)\s+(?i:{PERSON_NOUNS})")
 """Who asks for a steering edit, said before it ("Maya says ...", "He'd like ...", "The curator asks for ...")."""

@@ -1367,6 +1367,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     for pattern, written in lexicon.MARKUP_RES:  # "the **blue** patch", "## Goal", "`red`"
         original = pattern.sub(written, original).strip()
     original = lexicon.EMOJI_RE.sub(" ", original).strip()
+    original = lexicon.ORDINAL_ABBREVIATION_RE.sub(lambda m: lexicon.ORDINAL_ABBREVIATIONS[m.group(1).lower()], original)
     original = LABEL_LIST_PLURAL_RE.sub(r"\1 \2", original)  # "the B, the A and the T blocks": T is one cube (it had been dropped)
     original = lexicon.SAYS_RE.sub(r"\1reads", original)  # "the tower says H, A, T"
     original = lexicon.HYPHENED_DIRECTION_RE.sub(r"\1 to \2", original)
@@ -1391,6 +1392,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     for pattern in lexicon.GRADING_FRAME_RES:  # "Q3. (4 points) ...", "full marks if ...; zero otherwise"
         original = pattern.sub("", original).strip()
     original = lexicon.rewrite(lexicon.REPORTED_REQUEST_REWRITES, original)  # "Trial 12 asks for the cube to be moved to ..."
+    original = lexicon.DISCOURSE_OPENING_RE.sub("", original)  # "Anyway, pop the yellow cube on ..."
     original, asides = drop_asides(original)  # "Put the green block on the purple block. What a tower!"
     original = lexicon.DAYS_TASK_RE.sub("the ", original)  # "Today's exercise is a tower of ...": the exercise
     original = lexicon.SWAP_HEADING_RE.sub("", original)  # "Swap places: the yellow cube goes on the cyan patch and ..."
@@ -1550,6 +1552,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     text = lexicon.ROBOT_VIEWPOINT_RE.sub("", text)  # "From the robot's point of view, ...": rpg's own frame
     text = lexicon.FRONT_GLOSS_RE.sub(r"\g<r>", text)  # "at the front of the table, near the robot": the front once
     text = lexicon.means_said(text)  # "clear X by putting Y ...": put Y
+    text = lexicon.FINDING_IS_TAKING_RE.sub("take ", text)  # "find the A, B and T blocks and spell ...": taking them
     text = bottom_up_roles(ordinal_roles(text))  # "the first cube is white, the second black, ...": listed (before "the
     # first cube" is refused)
     refused = [(kind, ws, why) for kind, ws, why in _inexpressible(text)
@@ -1603,6 +1606,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     text = lexicon.COUNTED_RUNS_RE.sub(lexicon.counted_runs_listed, text)  # "3 blue cubes and then 3 white cubes": each cube
     if re.search(r"\b(?:walls?|pyramids?|layers?|\d+x\d+x\d+)\b", text):  # "3 yellow blocks second from the bottom" of a wall:
         text = lexicon.LAYER_FROM_BOTTOM_RE.sub(r"\g<cubes> in the \g<k> layer", text)  # that layer (it had been dropped)
+        text = lexicon.layers_said_relatively(text)  # "two white cubes above them", "three blue below, three green above"
     # "... on the green patch and the blue block on the same patch": the one patch named before
     for m in reversed(list(re.finditer(r"\bthe\s+same\s+(?:goal\s+)?(?:patch|pad|mat|tile|area)\b", text))):
         before = {c for c in re.findall(rf"\b({COLOR_RE})\s+(?:goal\s+)?(?:patch|pad|mat|tile|area)\b", text[:m.start()])}
@@ -1657,7 +1661,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
             text = text[:said[0].start()] + "from bottom to top: " + ", ".join([roles["bottom"], *middle, roles["top"]]) + text[said[-1].end():]
         else:
             at = {m.start() for m in said}
-            stray = next((m for m in re.finditer(rf"\b([a-z]+)\s*[:=]\s*(?:{COLOR_RE})\b", text[said[0].start():said[-1].end()])
+            stray = next((m for m in re.finditer(rf"\b([a-z0-9]+)\s*[:=]\s*(?:{COLOR_RE})\b", text[said[0].start():said[-1].end()])
                           if m.start() + said[0].start() not in at), None)
             if stray is None:  # "Next: any": no colour read
                 stray = re.search(r"\b(?:then|next)\b[^.;]*", text[said[0].end():said[-1].start()])
@@ -1690,6 +1694,12 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
         text = _ROLE_CLAUSES_RE.sub(lambda m: _role_clauses(m) if re.search(r"\b(?:first|last)\b", m.group(0)) else m.group(0), text)
     text = lexicon.END_ROLE_WORD_RE.sub(lambda m: f" with the {m.group('c')} cube "
                                         + ("at the bottom" if m.group("w") in ("lowest", "bottommost") else "on top"), text)
+    lone = lexicon.LONE_ORDINAL_ROLE_RE.search(text)
+    if lone and strict and not re.search(r"\b(?:last|final|middle)\b", text):  # "stack three cubes; the third is red": counted
+        # from which end? (the rank had been dropped; with a last or a middle said, the role readers refuse, naming it)
+        raise ParseError(f"'{lone.group(0)}' in \"{original[:80]}\" gives a cube a place by its rank, and the rest of the structure "
+                         "is not said in that order; say the whole order (e.g. \"from bottom to top: blue, green, red\") or the "
+                         "end it stands at (\"with red on top\"), or use --model")
     inner = lexicon.INNER_POSITION_RE.search(text)
     if inner:
         raise ParseError(f"'{inner.group('c')} {inner.group('w')}' in \"{original[:80]}\" places a cube inside the structure by its "

@@ -28,6 +28,7 @@ from rpg.domain.predicates import (
     Behind,
     FarFrom,
     InFrontOf,
+    InLine,
     InRegion,
     LeftOf,
     OnPatch,
@@ -393,19 +394,24 @@ def _towers_counted(instruction: str) -> str:
 
 
 _TOWERS_HEADING_RE = re.compile(
-    r"(?i)^\s*(?:(?:please\s+)?(?:build|make|stack|create|construct|set\s+up)\s+|(?:we|i)\s+(?:want|need|would\s+like)\s+)?"
-    r"(?P<n>two|three|four|[2-4])\s+(?:separate\s+|distinct\s+|independent\s+)?(?:towers|stacks)"
+    r"(?i)^\s*(?:(?:please\s+)?(?:let's\s+)?(?:build|make|stack|create|construct|set\s+up|lay\s+out|line\s+up)\s+"
+    r"|(?:we|i)\s+(?:want|need|would\s+like)\s+)?"
+    r"(?P<n>two|three|four|[2-4])\s+(?:separate\s+|distinct\s+|independent\s+)?(?P<kind>towers|stacks|rows|lines)"
     r"(?:\s+of\s+(?P<h>two|three|four|[2-4])(?:\s+(?:cubes|blocks))?|,?\s+(?P<h2>two|three|four|[2-4])\s+(?:cubes|blocks)\s+each)?"
-    r"(?:\s+each)?(?:\s+at\s+the\s+end)?\s*:\s*(?P<body>.+)$")
-"""A heading that counts towers before a colon and the towers said after it as chains ("Build two towers of two cubes: yellow
-on orange in the back left corner, and white on gray in the front right corner.", "We want two separate towers at the end:
-pink on purple, and black on white."): read by :func:`_towers_headed`."""
+    r"(?:\s+each)?(?:\s+at\s+the\s+end)?(?:\s*,\s*(?:friends|folks|everyone|team|please))?\s*:\s*(?P<body>.+)$")
+"""A heading that counts towers or rows before a colon and the structures said after it ("Build two towers of two cubes:
+yellow on orange in the back left corner, and white on gray in the front right corner.", "We want two separate towers at
+the end: pink on purple, and black on white.", "Make two rows: a row of three red blocks and a row of three blue
+blocks."): read by :func:`_towers_headed`."""
+
+_HEADED_KINDS: dict[str, type] = {"towers": Stack, "stacks": Stack, "rows": InLine, "lines": InLine}
+"""The goal predicate each structure noun of :data:`_TOWERS_HEADING_RE` counts."""
 
 
 def _towers_headed(instruction: str, framed: bool) -> TaskSchema | None:
-    """The task of a heading that counts ``n`` towers (of ``h`` cubes) and the towers said after its colon
-    (:data:`_TOWERS_HEADING_RE`): the text after the colon read alone, kept only where it is exactly ``n`` towers (each of
-    ``h`` cubes) and nothing else but their places; None where the heading is not one such (the readers read it whole,
+    """The task of a heading that counts ``n`` towers or rows (of ``h`` cubes) and the structures said after its colon
+    (:data:`_TOWERS_HEADING_RE`): the text after the colon read alone, kept only where it is exactly ``n`` structures of
+    that kind (each of ``h`` cubes) and nothing else but their places; None where the heading is not one such (the readers read it whole,
     which had refused "which cubes make each tower is not said" where the chains say it)."""
     m = _TOWERS_HEADING_RE.match(lexicon.rewrite(lexicon.TOWERS_BY_PLACE_REWRITES, instruction))
     if m is None:
@@ -416,8 +422,9 @@ def _towers_headed(instruction: str, framed: bool) -> TaskSchema | None:
     except BadInput:
         return None
     parts = [p for p in schema.goal_predicate().walk() if not isinstance(p, And)]
-    stacks = [p for p in parts if isinstance(p, Stack)]
-    if len(stacks) != n or any(not isinstance(p, (Stack, InRegion)) for p in parts) or (
+    kind = _HEADED_KINDS[m.group("kind").lower()]
+    stacks = [p for p in parts if isinstance(p, kind)]
+    if len(stacks) != n or any(not isinstance(p, (kind, InRegion)) for p in parts) or (
             h and any(len(p.objects) != lexicon.count_word(h) for p in stacks)) or len({o for p in stacks for o in p.objects}) != sum(a.kind != "goal_patch" for a in schema.assets):
         return None
     return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})
