@@ -7959,6 +7959,16 @@ def test_a_row_under_a_cube_is_refused():
      ["pyramid(red,red,red|blue,blue|green)"]),
     ("Build a two-row wall along the front: three blue cubes below, three green cubes above.",
      ["wall(blue,blue,blue|green,green,green)@front"]),
+    # a cube "with" another on top of it (no verb had been found), and a heading naming in a voice what its colon's text
+    # builds (its nouns had been refused as objects the domain lacks)
+    ("A purple cube with a pink cube on top of it.", ["stack(purple,pink)"]),
+    ("The purple cube with the pink cube under it.", ["stack(pink,purple)"]),
+    ("Build it like a layer cake: a brown cube on the bottom, a white cube on that, and a pink cube on top.",
+     ["stack(brown,white,pink)"]),
+    ("Plate it: put the red cube on the blue patch and the yellow cube on the green patch.",
+     ["on_patch(red,patch:blue)", "on_patch(yellow,patch:green)"]),
+    ("Let's make a little train: four blocks in a row, red, blue, red, blue, from left to right.",
+     ["line[left_to_right](red,blue,red,blue)"]),
 ])
 def test_forty_second_session_readings(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
@@ -7971,6 +7981,10 @@ def test_forty_second_session_readings(text, expected):
     "Find the red cube.",  # finding alone places nothing
     "Make two rows: a row of three red blocks.",  # the heading counts a row nobody described
     "tower: bottom=pink, c2=gray, top=red",  # a cube between the roles with no place among them
+    "Scatter it: put the red cube on the blue patch.",  # a heading whose verb changes the scene stays, refused
+    "Build it like a pyramid: red on blue, green on red.",  # a heading naming another structure than its text's
+    "Build it twice: red on blue.",  # a heading that repeats
+    "Make a row of red and blue, with a green cube on top.",  # "with ... on top" of no single cube
     "Stack three cubes; the 3rd is red.",  # a rank alone: from which end? (it had been dropped, red anywhere in the tower)
     "Stack three cubes; the first is red.",
     "Put the red cube on the blue patch. Anyway, put it on the green patch.",  # 'anyway' inside the text stays unread

@@ -2990,6 +2990,21 @@ FINDING_IS_TAKING_RE = re.compile(
 then put it ..."): read as taking them ('find' had been refused as an action the domain lacks); alone ("Find the red
 cube.") it stays refused."""
 
+NAMING_HEADING_RE = re.compile(
+    r"(?i)^\s*(?:(?:let's|let\s+us|please|now|ok(?:ay)?|so|right)\s*,?\s+)*(?P<verb>[a-z]+)\s+"
+    r"(?P<what>it|this|(?:a|an|the|our|my|your)\s+(?:[a-z'\-]+\s+){0,2}?[a-z'\-]+)"
+    r"(?P<like>\s+like\s+(?:a|an|the)\s+(?:[a-z'\-]+\s+){0,2}?[a-z'\-]+)?\s*:\s*(?P<body>\S.*)$", re.DOTALL)
+"""A heading that names what the text after its colon builds, in a voice ("Build it like a layer cake: a brown cube on the
+bottom, ...", "Plate it: put the red cube on ...", "Stack a survey cairn: a gray cube, ..."): a verb and what it makes,
+perhaps a simile; read by :func:`rpg.schema.readers._named_heading` only where the text after the colon is a whole task
+by itself and the heading says nothing of a goal (its nouns, 'cake' or 'cairn', then name that task: they had been
+refused as objects and shapes the domain lacks)."""
+
+NAMING_HEADING_VERBS_EXEMPT: frozenset[str] = frozenset(
+    "build make stack set arrange assemble construct form create pile line put place lay do".split())
+""":data:`SCENE_CHANGING_VERBS` a naming heading (:data:`NAMING_HEADING_RE`) may open with: those that make what the text
+after it says; any other of them ("Scatter it:", "Hide it:", "Remove it:") may change the task, and the heading stays."""
+
 SOMEONE_WANTS_RE = re.compile(
     r"\b(?:my|our|the|this|your)\s+(?P<who>supervisor|boss|advisor|adviser|professor|prof|pi|manager|lab|team|colleague|labmate|teacher|"
     rf"client|group|mentor|tutor|lecturer|{PERSON_NOUNS}|{INSTITUTION_NOUNS})\s+(?:wants|needs|would\s+like|asked\s+for|asks\s+for"
@@ -5081,6 +5096,13 @@ def _relation_then_structure(m: re.Match) -> bool:
 
 
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "a purple cube with a pink cube on top of it": the pink cube on the purple one (no verb had been found); a cube
+    # "with" another under it, the other way; only a single cube each (a row "with a green cube on top" stays as said)
+    (re.compile(rf"(?P<pre>^|[:;.]\s+|\b(?:put|place|set|stack|build|make)\s+)(?:a|an|the|one|1)\s+(?P<a>{COLOR_RE})\s+(?:cube|block)"
+                rf"\s+with\s+(?:a|an|the|one|1)\s+(?P<b>{COLOR_RE})\s+(?:cube|block)\s+(?:(?:resting|sitting|standing|placed|stacked)\s+)?"
+                r"(?P<rel>on\s+top(?:\s+of\s+it)?|on\s+it|atop\s+it|under(?:neath)?\s+it|beneath\s+it|below\s+it)(?=\s*(?:[.;!]|$))"),
+     lambda m: m.group("pre") + (f"the {m.group('b')} cube on top of the {m.group('a')} cube"
+                                 if not re.match(r"under|beneath|below", m.group("rel")) else f"the {m.group('a')} cube on top of the {m.group('b')} cube")),
     # "a tower of 5 alternating yellow and green": a count of cubes (the alternation had been read without it)
     (re.compile(r"\b(tower|stack|column|row|line)\s+of\s+(\d+|two|three|four|five|six|seven|eight)\s+(?=alternating\b)"), r"\1 of \2 cubes "),
     # "put the yellow and orange cubes one on the other": on top of each other

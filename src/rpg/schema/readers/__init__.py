@@ -430,6 +430,33 @@ def _towers_headed(instruction: str, framed: bool) -> TaskSchema | None:
     return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})
 
 
+def _named_heading(instruction: str, framed: bool) -> TaskSchema | None:
+    """The task of a heading that names what its colon's text builds (:data:`lexicon.NAMING_HEADING_RE`: "Build it like a
+    layer cake: a brown cube on the bottom, ..."): the text after the colon read alone, kept only where the heading holds
+    no colour, label, count, structure, place, hazard (:data:`lexicon.VOICE_CHUNK_HAZARD_RE` but its "it"/"this", a
+    take-back) and no verb that changes the scene but one that makes (:data:`lexicon.NAMING_HEADING_VERBS_EXEMPT`); None
+    otherwise (the readers read the text whole, and refuse the heading's words for what they are)."""
+    m = lexicon.NAMING_HEADING_RE.match(instruction)
+    if m is None or framed:
+        return None
+    heading = instruction[:m.start("body")].lower()
+    weighed = re.sub(r"\b(?:it|this)\b", " ", heading)
+    verb = m.group("verb").lower()
+    if "VERB" not in lexicon.parts_of_speech(verb) or ({verb, *lexicon.lemmas(verb)} & lexicon.SCENE_CHANGING_VERBS
+                                                      and not {verb, *lexicon.lemmas(verb)} & lexicon.NAMING_HEADING_VERBS_EXEMPT):
+        return None
+    if re.search(r"\d|\b[A-Z]\b", instruction[:m.start("body")]) or re.search(STRUCTURE_RE, heading, re.IGNORECASE) \
+            or lexicon.VOICE_CHUNK_HAZARD_RE.search(weighed) or lexicon.RETRACTION_RE.search(weighed) \
+            or lexicon.VOICE_PLACE_HAZARD_RE.search(weighed) or re.search(rf"\b(?:{lexicon.COUNT_WORD_RE})\b", heading) \
+            or any(c in heading.split() for c in lexicon.colour_names()) or lexicon.GOAL_THING_RE.search(weighed):
+        return None
+    try:
+        schema = parse(m.group("body"), _framed=True)
+    except BadInput:
+        return None
+    return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})
+
+
 def parse(instruction: str, _framed: bool = False) -> TaskSchema:
     """Read an instruction into a TaskSchema.
 
@@ -489,6 +516,9 @@ def parse(instruction: str, _framed: bool = False) -> TaskSchema:
                 body = f"{noun}: {body}"
         schema = parse(body, _framed=True)
         return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})  # as written
+    named = _named_heading(instruction, _framed)
+    if named is not None:  # "Build it like a layer cake: a brown cube on the bottom, a white cube on that, ...": the body
+        return named
     headed = _towers_headed(instruction, _framed)
     if headed is not None:  # "Build two towers of two cubes: yellow on orange in the back left corner, and white on gray ..."
         return headed
