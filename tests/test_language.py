@@ -7969,6 +7969,7 @@ def test_a_row_under_a_cube_is_refused():
      ["on_patch(red,patch:blue)", "on_patch(yellow,patch:green)"]),
     ("Let's make a little train: four blocks in a row, red, blue, red, blue, from left to right.",
      ["line[left_to_right](red,blue,red,blue)"]),
+    ("Yellow cube, proceed to the back right corner.", ["in_region(yellow,back_right)"]),  # 'proceed' is 'go'
 ])
 def test_forty_second_session_readings(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)

@@ -140,7 +140,7 @@ SYNONYMS: dict[str, str] = {
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
     "uppermost": "top", "lowermost": "bottom", "topmost": "top", "bottommost": "bottom", "upon": "on", "right-hand": "right", "left-hand": "left",
     "stays": "is", "remains": "is", "bot": "robot", "midpoint": "center", "tower's": "tower", "within": "in", "inside": "in", "quadrant": "corner",
-    "summit": "top", "apex": "top", "belongs": "goes", "belong": "go", "objective": "goal", "aim": "goal", **TYPOS, **ABBREVIATIONS,
+    "summit": "top", "apex": "top", "belongs": "goes", "belong": "go", "proceed": "go", "proceeds": "goes", "objective": "goal", "aim": "goal", **TYPOS, **ABBREVIATIONS,
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
