@@ -7970,6 +7970,10 @@ def test_a_row_under_a_cube_is_refused():
     ("Let's make a little train: four blocks in a row, red, blue, red, blue, from left to right.",
      ["line[left_to_right](red,blue,red,blue)"]),
     ("Yellow cube, proceed to the back right corner.", ["in_region(yellow,back_right)"]),  # 'proceed' is 'go'
+    # a test's name is no schedule (only "every"/"each" with a time of day, day or session is one)
+    ("Nightly regression #41: the cyan cube ends in the front right corner.", ["in_region(cyan,front_right)"]),
+    ("Build a tower where the first (lowest) cube is green, the second is orange and the third is purple.",
+     ["stack(green,orange,purple)"]),
 ])
 def test_forty_second_session_readings(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
@@ -7988,6 +7992,7 @@ def test_forty_second_session_readings(text, expected):
     "Make a row of red and blue, with a green cube on top.",  # "with ... on top" of no single cube
     "Stack three cubes; the 3rd is red.",  # a rank alone: from which end? (it had been dropped, red anywhere in the tower)
     "Stack three cubes; the first is red.",
+    "Stack three cubes; the second is red and the third is blue.",  # ranks with no first: the tower had been any order
     "Put the red cube on the blue patch. Anyway, put it on the green patch.",  # 'anyway' inside the text stays unread
 ])
 def test_forty_second_session_refusals(text):

@@ -870,13 +870,15 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
              r"placed|lying|sitting|standing|resting))\b|\b(?:originally|beforehand|to\s+begin\s+with|at\s+first"
              r"|in\s+the\s+beginning|in\s+the\s+(?:morning|afternoon|evening)|at\s+(?:night|noon|midnight)|tomorrow|yesterday)\b"
              r"|\b(?:run|episode|trial|attempt)s?\s+after\s+(?:that|this|it)\b|\b(?:second|every|each|other)\s+(?:run|episode|trial)s?\b"
-             r"|\b(?:every|each)\s+(?:single\s+)?(?:morning|afternoon|evening|night|day|week|month|hour|session|shift|monday|tuesday"
-             r"|wednesday|thursday|friday|saturday|sunday|weekday|weekend)s?\b|\b(?:daily|nightly|hourly|weekly|monthly)\b"
              r"|\b(?:from|starting\s+(?:from|with)|beginning\s+(?:from|with))\s+(?:a|the)\s+(?:start|scene|setup|state|configuration)"
              r"\s+(?:where|in\s+which|with)\b",
-     "is about another time than the end of this episode (a past or starting state, a time of day, a schedule, another "
-     "run): a "
+     "is about another time than the end of this episode (a past or starting state, a time of day, another run): a "
      "task's goal is checked once, at the end of one episode; say only where the cubes must end up"),
+    # "Every morning, line up three yellow cubes.": a schedule ('morning' had been dropped as a filler)
+    ("condition", r"\b(?:every|each)\s+(?:single\s+)?(?:morning|afternoon|evening|night|day|week|month|hour|session|shift|monday"
+                  r"|tuesday|wednesday|thursday|friday|saturday|sunday|weekday|weekend)s?\b",
+     "sets a schedule, a condition on when the task is done again: a task's goal is checked once, at the end of one "
+     "episode; say only where the cubes must end up"),
     ("time", START_TIME_RE, "is about another time than the end of this episode (a starting state): a task's goal is checked "
                             "once, at the end of one episode; say only where the cubes must end up"),
     ("time", INITIALLY_RE, "is about the episode's starting state, which rpg builds only as one cube stacked on another "

@@ -1695,8 +1695,10 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     text = lexicon.END_ROLE_WORD_RE.sub(lambda m: f" with the {m.group('c')} cube "
                                         + ("at the bottom" if m.group("w") in ("lowest", "bottommost") else "on top"), text)
     lone = lexicon.LONE_ORDINAL_ROLE_RE.search(text)
-    if lone and strict and not re.search(r"\b(?:last|final|middle)\b", text):  # "stack three cubes; the third is red": counted
-        # from which end? (the rank had been dropped; with a last or a middle said, the role readers refuse, naming it)
+    if lone and strict and not re.search(r"\b(?:last|final|middle)\b", text) \
+            and (len(re.findall(r"\b(?:first|second|third|fourth|fifth|sixth)\b", text)) == 1 or not re.search(r"\bfirst\b", text)):  # "stack three cubes; the third is red": counted
+        # from which end? (the rank had been dropped; with a last, a middle or other ranks said, the role readers read or refuse
+        # it, naming it)
         raise ParseError(f"'{lone.group(0)}' in \"{original[:80]}\" gives a cube a place by its rank, and the rest of the structure "
                          "is not said in that order; say the whole order (e.g. \"from bottom to top: blue, green, red\") or the "
                          "end it stands at (\"with red on top\"), or use --model")
