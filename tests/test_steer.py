@@ -2780,3 +2780,41 @@ def test_back_to_take_one_is_the_first_version(tmp_path):
     steer(fam.path, "make the top one green")
     r = steer(fam.path, "Let's go back to take one.")
     assert meaning(fam.schema(r.version)) == ["stack(yellow,red)"]
+
+
+_ROW_GCB = "Arrange the blocks in order green, cyan, blue from left to right."
+_TOWER_BWY = "Build a tower: brown on the bottom, white in the middle, yellow on top."
+
+
+@pytest.mark.parametrize("base,edit,expected", [
+    # steer_stranger25 (read at the forty-second session): a new order said with a reorder verb and a direction (the list
+    # had had no place in the change read), 'convert' and 'relocate', a passive replacement, "Further,", a tier said by its
+    # cube, "top up the tower with ..."
+    (_ROW_GCB, "Rearrange them from left to right: blue, green, cyan.", ("modify", ["line[left_to_right](blue,green,cyan)"])),
+    (_ROW_GCB, "Now let's put them in traffic-light order from left to right: blue, green, cyan.",
+     ("modify", ["line[left_to_right](blue,green,cyan)"])),
+    (_ROW_GCB, "Now the order is blue, green, cyan from left to right.", ("modify", ["line[left_to_right](blue,green,cyan)"])),
+    (_ROW_GCB, "Convert the line to a tower, green at the bottom and blue at the top.", ("pivot", ["stack(green,cyan,blue)"])),
+    (_ROW_GCB, "Further, the green cube shall be replaced by a black cube.", ("tweak", ["line[left_to_right](black,cyan,blue)"])),
+    (_TOWER_BWY, "And add one more tier, a red cube right on top, like a cherry.", ("extend", ["stack(brown,white,yellow,red)"])),
+    (_TOWER_BWY, "Relocate the stack to the front right corner.", ("modify", ["stack(brown,white,yellow)@front_right"])),
+    (_TOWER_BWY, "Top up the tower with one more red cube.", ("extend", ["stack(brown,white,yellow,red)"])),
+])
+def test_forty_second_session_steering_read_as_said(tmp_path, base, edit, expected):
+    assert _steered(tmp_path, base, edit)[-1] == expected
+
+
+@pytest.mark.parametrize("base,edit", [
+    # steer_stranger25's two silent edits: a second structure made had replaced the task's ("Make a second heap of three
+    # brown cubes" of a pile of four orange cubes); an edit read as the same wall again had been recorded as a change
+    ("Pile the four orange cubes up in the middle of the table.",
+     "Make a second heap of three brown cubes on the right side of the table."),
+    ("Pile the four orange cubes up in the middle of the table.", "Build a second tower of three brown cubes on the right."),
+    ("Build a two-row wall along the front: three blue cubes below, three green cubes above.",
+     "Extend the wall: a fourth cube in each row, same colours."),
+    (_ROW_GCB, "Put them from left to right: blue, red, cyan."),  # a list that is not the row's cubes
+])
+def test_forty_second_session_steering_silent_classes_refused(tmp_path, base, edit):
+    fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
+    with pytest.raises(BadInput):
+        steer(fam.path, edit)

@@ -140,7 +140,7 @@ SYNONYMS: dict[str, str] = {
     "organised": "arranged", "invert": "reverse", "inverted": "reversed", "upper": "top", "lower": "bottom",
     "uppermost": "top", "lowermost": "bottom", "topmost": "top", "bottommost": "bottom", "upon": "on", "right-hand": "right", "left-hand": "left",
     "stays": "is", "remains": "is", "bot": "robot", "midpoint": "center", "tower's": "tower", "within": "in", "inside": "in", "quadrant": "corner",
-    "summit": "top", "apex": "top", "belongs": "goes", "belong": "go", "proceed": "go", "proceeds": "goes", "objective": "goal", "aim": "goal", **TYPOS, **ABBREVIATIONS,
+    "summit": "top", "apex": "top", "belongs": "goes", "belong": "go", "proceed": "go", "proceeds": "goes", "relocate": "move", "relocated": "moved", "reposition": "move", "repositioned": "moved", "objective": "goal", "aim": "goal", **TYPOS, **ABBREVIATIONS,
 }
 """Words read as a word of the vocabulary (curated: a synonym, never a guess). "the ground" is
 the table the cubes stand on; "the rightmost corner" is a corner on the right."""
@@ -3551,8 +3551,11 @@ EDIT_OF_THE_TASK_RE = re.compile(r"(?i)\b(?:instead|like\s+(?:that|this|it|befor
 """Words that make an edit stated as a whole task about the task's own cubes ("tower in the back instead",
 "3 towers like that")."""
 
-EDIT_ADDITIVE_RE = re.compile(r"\b(?:also|too|as well|add|additionally|another|in addition|plus|(?:\d+|one|two|three|a\s+few|some)\s+more)\b")
-"""Words that make an edit an addition: what it states joins the task, the rest is kept."""
+EDIT_ADDITIVE_RE = re.compile(r"\b(?:also|too|as well|add|additionally|another|in addition|plus|(?:\d+|one|two|three|a\s+few|some)\s+more"
+                              r"|an?\s+(?:second|third|fourth|separate|further)\s+(?:(?:[a-z]+\s+){0,2}?)(?:towers?|stacks?|piles?|heaps?|rows?"
+                              r"|lines?|walls?|pyramids?|grids?|circles?|rings?|columns?))\b")
+"""Words that make an edit an addition: what it states joins the task, the rest is kept ("a second heap of three brown
+cubes" had replaced the task's pile)."""
 
 EDIT_CONTINUES_RE = re.compile(r"^\s*(?:and\s+|,\s*)?(?:then|next|after\s+that|afterwards|after\s+this)\b")
 """An edit that goes on from the task ("then put C on A", "next, the green cube on the red one"):
@@ -3788,6 +3791,32 @@ dropped."""
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
     # "Round 3: ...", "Condition C: ...", "Next round, add ...": the name of the version made
     (EDIT_STEP_NAME_RE, ""),
+    # "Rearrange them from left to right: blue, green, cyan.", "Put them in traffic-light order from left to right: red,
+    # yellow, green", "Now the order is blue, green, cyan from left to right.": a new order of the row's cubes, said as that
+    # order alone (:data:`AXIS_ORDER_ALONE_RE`; the list had had no place in the change read)
+    (re.compile(rf"(?i)^\s*(?:(?:now|ok(?:ay)?|and|so|then|please)\s*,?\s+)*(?:let'?s\s+)?(?:(?:re-?arrange|re-?order|re-?sort|sort|order|put|set"
+                rf"|arrange|line\s+up)\s+(?:them|the\s+(?:cubes|blocks|row|line))(?:\s+in\s+(?:this|the\s+following|a\s+new|[a-z\-]+)\s+order)?"
+                rf"|re-?order|re-?arrange|now\s+the\s+order\s+is|the\s+(?:new\s+)?order\s+(?:is|should\s+be))\s*,?\s*"
+                rf"(?:(?:from\s+)?(?P<d>left\s+to\s+right|right\s+to\s+left)\s*:?\s*(?P<l>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+|then\s+)?(?:{COLOR_RE}))+)"
+                rf"|:?\s*(?P<l2>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+|then\s+)?(?:{COLOR_RE}))+)\s*,?\s+(?:from\s+)?(?P<d2>left\s+to\s+right"
+                rf"|right\s+to\s+left))\s*(?P<end>[.!]?)\s*$"),
+     lambda m: f"From {m.group('d') or m.group('d2')}: {m.group('l') or m.group('l2')}{m.group('end')}"),
+    # "add one more tier, a red cube on top": the cube the tier is ('one more' had been refused as naming no cube)
+    (re.compile(rf"(?i)\b(?:one\s+more|another|an\s+extra|a\s+further)\s+(?:tier|layer|level|stor(?:e?y)|piece|block|cube)\s*,\s*"
+                rf"(?=(?:a|an|one)\s+(?:{COLOR_RE}|[A-Z0-9])\s+(?:cube|block|one)\b)"), ""),
+    # "Relocate the stack to the front right corner.": move it ('relocate' had been read as an addition of a place)
+    (re.compile(r"(?i)\b(?:relocate|reposition)\b"), "move"),
+    # "Top up the green tower with one more green cube.": add it to that tower
+    (re.compile(r"(?i)\btop\s+up\s+(the\s+(?:[a-z]+\s+){0,2}?(?:tower|stack|row|line|pile|wall|column))\s+with\s+([^.;!]+?)(?=\s*(?:[.;!]|$))"),
+     r"add \2 to \1"),
+    # "Further, ...", "Furthermore, ...": a next change said as going on (not a distance)
+    (re.compile(r"(?i)^\s*(?:further(?:more)?|moreover)\s*,\s*(?=\S)"), ""),
+    # "Convert the line to a tower, ...": turn it into one ('convert' had been refused as an action)
+    (re.compile(r"(?i)\bconvert\s+((?:it|them|(?:the|this|that)\s+(?:[a-z\-]+\s+){0,2}?[a-z\-]+))\s+(?:in)?to\s+"), r"turn \1 into "),
+    # "the white cube shall be replaced by a black cube": replace it with that one (a passive replacement had been unread)
+    (re.compile(rf"(?i)\b(the\s+(?:{COLOR_RE}|[A-Z0-9])\s+(?:cube|block|one))\s+(?:shall|should|must|will|is\s+to|has\s+to|can)\s+be\s+"
+                rf"(?:replaced|swapped\s+out|substituted)\s+(?:by|with|for)\s+(an?\s+(?:{COLOR_RE}|[A-Z0-9])\s+(?:cube|block|one))\b"),
+     r"replace \1 with \2"),
     # "swap the red cubes with the white cubes": the two colours exchanged (it had read as "replace": every cube white)
     (re.compile(rf"(?i)\b(swap|switch|exchange|trade)\s+(?:the\s+|all\s+the\s+)?({COLOR_RE})(?:\s+(?:cubes|blocks|ones|cube|block|one))?\s+"
                 rf"with\s+(?:the\s+|all\s+the\s+)?({COLOR_RE})(?:\s+(?:cubes|blocks|ones|cube|block|one))?\b"), r"\1 \2 and \3"),  # ("swap

@@ -1313,8 +1313,8 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
 
 
 def _refuse_no_change(plan: EditPlan, fam: Family, reference: int | None, schema: TaskSchema) -> None:
-    """Refuse an edit of the current version that leaves its goal as it was (same meaning and
-    summary): the edit was not read as what it asks (a back-reference, or an edit built on an
+    """Refuse an edit of the current version that leaves its goal as it was (same meaning, and the
+    same summary or the same goal predicates): the edit was not read as what it asks (a back-reference, or an edit built on an
     earlier version for its cubes, that returns to a version is not one; ``reference`` None).
 
     Raises:
@@ -1325,7 +1325,9 @@ def _refuse_no_change(plan: EditPlan, fam: Family, reference: int | None, schema
     if plan.fresh or plan.cue.kind != "current" or reference is None:
         return
     ref = fam.schema(reference)
-    if meaning(schema) == meaning(ref) and schema.goal_summary == ref.goal_summary:
+    same_goal = schema.goal_summary == ref.goal_summary or schema.goal.to_dict() == ref.goal.to_dict()
+    if meaning(schema) == meaning(ref) and same_goal:  # (a summary worded otherwise of the same predicates is no change:
+        # "Extend the wall: a fourth cube in each row" had rebuilt the same wall, summarised as a 1x3x2 block)
         raise SteerError(f"the edit \"{plan.text.strip()[:80]}\" changes nothing v{reference}'s goal judges ({ref.goal_summary}); "
                          "say what should be different, or use --model")
 
