@@ -2799,6 +2799,10 @@ _TOWER_BWY = "Build a tower: brown on the bottom, white in the middle, yellow on
     (_TOWER_BWY, "And add one more tier, a red cube right on top, like a cherry.", ("extend", ["stack(brown,white,yellow,red)"])),
     (_TOWER_BWY, "Relocate the stack to the front right corner.", ("modify", ["stack(brown,white,yellow)@front_right"])),
     (_TOWER_BWY, "Top up the tower with one more red cube.", ("extend", ["stack(brown,white,yellow,red)"])),
+    ("Stack three pink cubes into a little tower.", "Then just make it a tower of five pink cubes.",
+     ("tweak", ["stack(pink,pink,pink,pink,pink)"])),  # its own colour restated with the count
+    ("Build a wall: a bottom row of three brown cubes and a top row of three gray cubes.",
+     "Swap the rows: gray on the bottom, brown on top.", ("modify", ["wall(gray,gray,gray|brown,brown,brown)"])),
 ])
 def test_forty_second_session_steering_read_as_said(tmp_path, base, edit, expected):
     assert _steered(tmp_path, base, edit)[-1] == expected
@@ -2813,6 +2817,9 @@ def test_forty_second_session_steering_read_as_said(tmp_path, base, edit, expect
     ("Build a two-row wall along the front: three blue cubes below, three green cubes above.",
      "Extend the wall: a fourth cube in each row, same colours."),
     (_ROW_GCB, "Put them from left to right: blue, red, cyan."),  # a list that is not the row's cubes
+    ("Build a wall: a bottom row of three brown cubes and a top row of three gray cubes.",
+     "Swap the rows: brown on the bottom, gray on top."),  # a swap restated as the rows it had
+    ("Stack a pink cube on a blue cube.", "Make it a tower of five pink cubes."),  # pink is not the tower's one colour
 ])
 def test_forty_second_session_steering_silent_classes_refused(tmp_path, base, edit):
     fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)

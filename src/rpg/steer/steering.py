@@ -30,7 +30,7 @@ from pydantic import BaseModel, ConfigDict, Field
 from rpg.artifact import ArtifactError, load_artifact
 from rpg.compiler import CompileResult, build
 from rpg.domain.palette import PALETTE
-from rpg.domain.predicates import PREDICATES, describe_region
+from rpg.domain.predicates import PREDICATES, InLayers, describe_region
 from rpg.errors import BadInput
 from rpg.schema.builtin import parse
 from rpg.schema.edits import recolor
@@ -479,8 +479,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         except SteerError:
             made = None
         numbers = [n for n in numbers if int(n) != made]
-    unread = [c for c in unread_colors(plan)  # "make that seven pink cubes" of a pink row: its own colour, not a change
-              if not (set(ref_spec.colors()) == {c} and all(o.op == "count" for o in plan.ops))] + numbers + (
+    unread = [c for c in unread_colors(plan)  # "make that seven pink cubes" of a pink row, "make it a tower of five pink
+              # cubes" of a pink tower: its own colour, not a change
+              if not (set(ref_spec.colors()) == {c} and all(o.op in ("count", "structure") for o in plan.ops))] + numbers + (
         unread_labels(plan) if any(o.op == "relabel" for o in plan.ops) else [])  # (a list read as one relabel)
     if (unread or re.search(r"(?i)\b(?:reading|reads?|spell(?:s|ing)?)\b|\b[A-Z0-9]\s+(?:at|on)\s+(?:the\s+)?(?:bottom|top|base)\b",
                             plan.text)) and \
@@ -1405,6 +1406,40 @@ def _only_cube_named(edit: str, hist: FamilyHistory, fam: Family) -> str:
     return f"remove the {next(a.color for a in cubes if a.color != kept)} cube"
 
 
+_ROWS_SWAPPED_RE = re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|now|so|and|then)\s*,?\s*)*(?:swap|switch|exchange|flip|trade)\s+(?:the\s+)?(?:two\s+)?"
+                              r"(?:rows|layers|levels|tiers|courses)(?:\s+(?:around|round|over))?\s*(?:[:,\u2013\u2014-]\s*(?P<rest>[^.!]+?))?\s*[.!]?\s*$")
+"""An edit that swaps a layered structure's rows ("Swap the rows: gray on the bottom, brown on top."): read by
+:func:`_rows_swapped_named`."""
+
+
+def _rows_swapped_named(edit: str, hist: FamilyHistory, fam: Family) -> str:
+    """``edit`` as the exchange of the two colours of the head version's two layers when it swaps its rows (:data:`_ROWS_SWAPPED_RE`)
+    and each layer is of one colour of its own ("Swap the rows" of a wall of brown under gray: "swap brown and gray"); a
+    restatement after it ("...: gray on the bottom, brown on top") must say that result, or the edit stays as said (and is
+    refused).  Else ``edit`` as it is (a swap of rows had been refused as a reference)."""
+    m = _ROWS_SWAPPED_RE.match(edit)
+    if m is None:
+        return edit
+    head = fam.schema(hist.head)
+    colour = {a.name: a.color for a in head.assets if a.kind == "colored_cube"}
+    layered = [p for p in head.goal_predicate().walk() if isinstance(p, InLayers)]
+    if len(layered) != 1 or any(o not in colour for o in layered[0].objects):
+        return edit
+    by_level: dict[int, set[str]] = {}
+    for o, level in zip(layered[0].objects, layered[0].levels, strict=True):
+        by_level.setdefault(level, set()).add(colour[o])
+    if sorted(by_level) != [0, 1] or any(len(c) != 1 for c in by_level.values()) or by_level[0] == by_level[1]:
+        return edit
+    low, high = next(iter(by_level[0])), next(iter(by_level[1]))
+    if m.group("rest"):
+        said = re.fullmatch(rf"(?i)\s*(?:the\s+)?(?P<b>{COLOR_RE})(?:\s+(?:row|layer|ones?|cubes?))?\s+(?:on|at)\s+the\s+(?:bottom|base)\s*"
+                            rf"(?:,|and|;)\s*(?:and\s+)?(?:the\s+)?(?P<t>{COLOR_RE})(?:\s+(?:row|layer|ones?|cubes?))?\s+(?:on\s+top|at\s+the\s+top)\s*",
+                            m.group("rest"))
+        if said is None or (canon_color(said.group("b").lower()), canon_color(said.group("t").lower())) != (high, low):
+            return edit
+    return f"swap {low} and {high}"
+
+
 class RouteAnswer(BaseModel):
     """The model's reading of an edit: intent, reference version, extracted parameters."""
 
@@ -1522,6 +1557,7 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
         if llm is None:
             edit = _between_them_named(edit, hist, fam)  # "stick a gray cube in between them" of a task of two cubes
             edit = _only_cube_named(edit, hist, fam)  # "Only the blue cube this time." of a task of two cubes
+            edit = _rows_swapped_named(edit, hist, fam)  # "Swap the rows." of a wall of two one-coloured rows
             plan = interpret(edit)
             reference, notes = resolve_reference(plan, hist, fam)
             notes += [f"set aside: {x!r} (a reason said for the change)" for x in plan.set_aside]
