@@ -7970,6 +7970,10 @@ def test_a_row_under_a_cube_is_refused():
     ("Let's make a little train: four blocks in a row, red, blue, red, blue, from left to right.",
      ["line[left_to_right](red,blue,red,blue)"]),
     ("Yellow cube, proceed to the back right corner.", ["in_region(yellow,back_right)"]),  # 'proceed' is 'go'
+    # a verb the lexicon lacks in the caused-motion construction, verb + cube + where it goes, moves the cube there
+    ("Ground to robot: taxi the yellow cube to the back left corner of the table.", ["in_region(yellow,back_left)"]),
+    ("Post the red cube to the front right corner of the table.", ["in_region(red,front_right)"]),
+    ("Park the brown cube behind the gray cube.", ["behind(brown,gray)"]),
     # a test's name is no schedule (only "every"/"each" with a time of day, day or session is one)
     ("Nightly regression #41: the cyan cube ends in the front right corner.", ["in_region(cyan,front_right)"]),
     ("Build a tower where the first (lowest) cube is green, the second is orange and the third is purple.",
@@ -7986,6 +7990,9 @@ def test_forty_second_session_readings(text, expected):
     "Find the red cube.",  # finding alone places nothing
     "Make two rows: a row of three red blocks.",  # the heading counts a row nobody described
     "tower: bottom=pink, c2=gray, top=red",  # a cube between the roles with no place among them
+    "Melt the red cube on the blue patch.",  # a change of the cube, not only where it ends
+    "Hurl the red cube onto the blue patch.",  # a throw
+    "Glue the red cube to the blue cube.",
     "Scatter it: put the red cube on the blue patch.",  # a heading whose verb changes the scene stays, refused
     "Build it like a pyramid: red on blue, green on red.",  # a heading naming another structure than its text's
     "Build it twice: red on blue.",  # a heading that repeats

@@ -1085,6 +1085,28 @@ UNKNOWN_ACTION = ("action", "is an action the domain does not have: a task's goa
 """How an unknown verb is refused when it stands where a command's verb does (first word of a
 clause: "throw the red block", "then shake it")."""
 
+CAUSED_MOTION_RE = re.compile(
+    r"(?P<pre>(?:^|[.;:!?]\s+|,\s+(?:and\s+)?(?:then\s+)?|\band\s+(?:then\s+)?|\bthen\s+|\bplease\s+|\blet's\s+)\s*)(?P<v>[a-z]+)\s+"
+    r"(?=(?:the|a|an|both|all\s+the|\d+|one|two|three|four)\s+(?:[a-z0-9]+\s+){0,2}?(?:cubes?|blocks?)\s+"
+    r"(?:(?:all\s+the\s+way|right|straight|over|gently|carefully)\s+)?"
+    r"(?:onto|on\s+top\s+of|on|into|in\s+the\s+(?:(?:far|back|front)\s+)?(?:left|right|front|back|center|centre|middle)|next\s+to|beside"
+    r"|behind|in\s+front\s+of|between|under|underneath|atop|to\s+the\s+(?:left|right)\s+of"
+    r"|to\s+the\s+(?:(?:far|back|front|near)\s+)?(?:left|right|front|back|center|centre|middle)\b|to\s+the\s+[a-z]+\s+(?:patch|corner)"
+    r"|at\s+the\s+(?:(?:far|back|front)\s+)?(?:left|right|front|back|center|centre|middle))\b)")
+"""A verb the lexicon lacks in the caused-motion construction, verb + cube + where it goes ("taxi the yellow cube to the back
+left corner", "post the red cube to the front right corner", "hang the red cube on the blue patch"): the construction
+says the cube is moved there, whatever the verb's manner, so it reads as "put" (:func:`rpg.schema.reading.normalize_words`;
+it had been refused as an action).  Not a verb of :data:`UNKNOWN_KIND_EXEMPLARS`' actions (a turn, a throw, a spill:
+what they do to the cube is more than where it ends), nor one of :data:`SCENE_CHANGING_VERBS` (read as themselves)."""
+
+MOTION_VERB_EXEMPLARS: tuple[str, ...] = tuple(
+    "move carry slide push drag bring deliver transport shift place drop set put take lay lift send".split())
+CHANGE_VERB_EXEMPLARS: tuple[str, ...] = tuple(
+    "melt paint burn crush break cut glue wash freeze bend rotate spin flip throw toss hurl shake twist destroy dissolve colour "
+    "juggle bounce".split())
+"""Verbs that move a thing to a place, and verbs that change, turn or throw it: an unknown verb of a caused-motion clause
+(:data:`CAUSED_MOTION_RE`) is read as "put" only when it is nearer the first (:func:`rpg.schema.senses.moves_a_thing`)."""
+
 UNKNOWN_KIND_EXEMPLARS: dict[str, tuple[str, ...]] = {
     "size": tuple("big small large tiny huge giant heavy thin thick wide narrow size sized massive miniature".split()),
     "quantity": tuple("few many several half most dozen plenty amount distance centimeter inch meter degrees maximum "

@@ -631,6 +631,22 @@ _RECOLOUR_BEFORE = re.compile(r"\b(?:make|paint|colou?r|turn|change|recolou?r|dy
 top one mauve")."""
 
 
+def _caused_motion(m: re.Match, dropped: list[tuple[str, str]]) -> str:
+    """The verb of a caused-motion clause (:data:`lexicon.CAUSED_MOTION_RE`) as "put" when the lexicon lacks it, the dictionary
+    knows it as a verb that moves a thing (:func:`senses.moves_a_thing`) and it is no action the domain refuses nor a verb
+    the readers read as itself; recorded in ``dropped``
+    (for the accounting).  The clause as it is otherwise."""
+    verb = m.group("v")
+    lemmas = {verb, *lexicon.lemmas(verb)}
+    if verb in VOCAB or verb in lexicon.IDLE_WORDS or "VERB" not in lexicon.parts_of_speech(verb) \
+            or lemmas & set(lexicon.UNKNOWN_KIND_EXEMPLARS["action"]) or lemmas & lexicon.SCENE_CHANGING_VERBS \
+            or lexicon.RETRACTION_RE.search(verb) or lexicon.VOICE_CHUNK_HAZARD_RE.search(verb) or _inexpressible(verb) \
+            or not senses.moves_a_thing(verb):
+        return m.group(0)  # ("melt the red cube on the patch", "hurl it onto ...": more than where it ends)
+    dropped.append((verb, "a verb of moving a cube to a place, read as 'put'"))
+    return f"{m.group('pre')}put "
+
+
 def _unknown_word_classes(text: str, unknown: list[str]) -> list[tuple[str, str, str]]:
     """(word, class, why) for each unknown word that stands where an object does (a noun
     heading a phrase after a determiner: "insert the peg") and, failing that for a word, where a
@@ -1553,6 +1569,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     text = lexicon.FRONT_GLOSS_RE.sub(r"\g<r>", text)  # "at the front of the table, near the robot": the front once
     text = lexicon.means_said(text)  # "clear X by putting Y ...": put Y
     text = lexicon.FINDING_IS_TAKING_RE.sub("take ", text)  # "find the A, B and T blocks and spell ...": taking them
+    text = lexicon.CAUSED_MOTION_RE.sub(lambda m: _caused_motion(m, asked_by), text)  # "taxi the yellow cube to the back ..."
     text = bottom_up_roles(ordinal_roles(text))  # "the first cube is white, the second black, ...": listed (before "the
     # first cube" is refused)
     refused = [(kind, ws, why) for kind, ws, why in _inexpressible(text)

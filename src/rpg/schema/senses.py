@@ -94,3 +94,18 @@ def sense(word: str) -> Sense:
             and s_ign.max() - s_mean >= lexicon.IGNORABLE_MARGIN):
         return Sense(word, "ignorable", ign_words[int(s_ign.argmax())], float(s_ign.max()))
     return Sense(word, "unknown")
+
+
+@lru_cache(maxsize=1)
+def _motion_tables() -> tuple[np.ndarray, np.ndarray]:
+    return _embed(list(lexicon.MOTION_VERB_EXEMPLARS)), _embed(list(lexicon.CHANGE_VERB_EXEMPLARS))
+
+
+@lru_cache(maxsize=4096)
+def moves_a_thing(verb: str) -> bool:
+    """Whether unknown ``verb`` reads nearer a verb that moves a thing to a place than one that changes, turns or throws it
+    (:data:`rpg.schema.lexicon.MOTION_VERB_EXEMPLARS`, :data:`rpg.schema.lexicon.CHANGE_VERB_EXEMPLARS`; cosine of the
+    wordllama embeddings, the nearest exemplar of each): "taxi", "post", "ferry" move; "melt", "glue", "shove" do more."""
+    motion, change = _motion_tables()
+    e = _embed([verb])[0]
+    return float((motion @ e).max()) > float((change @ e).max())
