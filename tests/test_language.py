@@ -7974,6 +7974,12 @@ def test_a_row_under_a_cube_is_refused():
     ("Ground to robot: taxi the yellow cube to the back left corner of the table.", ["in_region(yellow,back_left)"]),
     ("Post the red cube to the front right corner of the table.", ["in_region(red,front_right)"]),
     ("Park the brown cube behind the gray cube.", ["behind(brown,gray)"]),
+    # stranger54's rows (read): three places said without colons, a row of two with a side relation of its cubes, one cube
+    # at an end and the other four
+    ("row: far left brown, middle gray, far right green", ["line[left_to_right](brown,gray,green)"]),
+    ("Please to arrange red and blue cubes in a row, red at left of blue.", ["line[left_to_right](red,blue)"]),
+    ("Arrange the red and blue cubes in a row with blue to the right of red.", ["line[left_to_right](red,blue)"]),
+    ("Make a row of five cubes: a pink one at the far left, the other four gray.", ["line[left_to_right](pink,gray,gray,gray,gray)"]),
     # a test's name is no schedule (only "every"/"each" with a time of day, day or session is one)
     ("Nightly regression #41: the cyan cube ends in the front right corner.", ["in_region(cyan,front_right)"]),
     ("Build a tower where the first (lowest) cube is green, the second is orange and the third is purple.",
@@ -7990,6 +7996,8 @@ def test_forty_second_session_readings(text, expected):
     "Find the red cube.",  # finding alone places nothing
     "Make two rows: a row of three red blocks.",  # the heading counts a row nobody described
     "tower: bottom=pink, c2=gray, top=red",  # a cube between the roles with no place among them
+    "Make a row of five cubes: a pink one at the far left, the other three gray.",  # the counts do not add up
+    "row: far left brown, middle gray",  # two of three places
     "Melt the red cube on the blue patch.",  # a change of the cube, not only where it ends
     "Hurl the red cube onto the blue patch.",  # a throw
     "Glue the red cube to the blue cube.",

@@ -5573,7 +5573,8 @@ def _towers_listed(m: re.Match) -> str:
     return f"{verb} ".lstrip() + ", ".join(towers[:-1]) + " and " + towers[-1]
 
 
-_ROW_ROLE = r"(?:the\s+)?(?P<r{i}>left(?:most)?|middle|cent(?:er|re)|right(?:most)?)(?:\s+(?:one|cube|block))?\s*[:=]\s*(?P<c{i}>" + COLOR_RE + r")"
+_ROW_ROLE = (r"(?:the\s+)?(?:far\s+|very\s+)?(?P<r{i}>left(?:most)?|middle|cent(?:er|re)|right(?:most)?)(?:\s+(?:one|cube|block))?"
+             r"(?:\s*[:=]\s*|\s+)(?P<c{i}>" + COLOR_RE + r")")
 
 ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "Left to right: red, green, blue.", "Place the cubes from front to back: cyan, brown, purple.": an order along an
@@ -5581,8 +5582,9 @@ ROW_SAID_BY_ORDER_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (BARE_ORDER_RE,
      lambda m: m.group(0) if re.search(rf"\b(?:{STRUCTURE_NOUN}|rows?|lines?|piles?|walls?|spell\w*|sort\w*|patch\w*)\b", m.string)
      else f"a row from {m.group('d')}: "),
-    # "leftmost: orange, middle: gray, rightmost: pink": a row by its three places
-    (re.compile(r"(?i)^" + _ROW_ROLE.format(i=1) + r"\s*[,;.]\s*" + _ROW_ROLE.format(i=2) + r"\s*[,;.]\s*" + _ROW_ROLE.format(i=3)
+    # "leftmost: orange, middle: gray, rightmost: pink", "row: far left brown, middle gray, far right green": a row by its
+    # three places
+    (re.compile(r"(?i)^(?:(?:a\s+)?(?:row|line)\s*:\s*)?" + _ROW_ROLE.format(i=1) + r"\s*[,;.]\s*" + _ROW_ROLE.format(i=2) + r"\s*[,;.]\s*" + _ROW_ROLE.format(i=3)
                 + r"(?=\s*[.!]?\s*$)"),
      _row_roles),
     # "put one blue cube in each of the two back corners": one in each of those two corners
@@ -5923,7 +5925,42 @@ DIRECTION_SAID_RE = re.compile(r"\b(?:left\s+to\s+right|right\s+to\s+left|front\
 and "last" name the list's ends."""
 
 _ROW_ROLE_BE = r"(?:\s+(?:one|cube|block))?\s*(?:[:=]|\s(?:is|should\s+be|must\s+be)\s)?\s*"
+def _pair_row_side(m: re.Match) -> str:
+    """"with X on the left/right" for a side relation of the two cubes of a row of two (:data:`ROW_ROLE_REWRITES`); the
+    relation as said where the text names other colours than those two, or either more than once."""
+    said = [c.lower() for c in re.findall(rf"(?i)\b(?:{COLOR_RE})\b", m.string)]
+    if sorted(set(said)) != sorted({m.group("a").lower(), m.group("b").lower()}) or len(said) != 4 or m.group("a") == m.group("b"):
+        return m.group(0)
+    return f"{m.group('pre')}with the {m.group('a')} cube on the {m.group('s')}"
+
+
+def _end_and_the_rest(m: re.Match) -> str:
+    """A row of ``n`` cubes said as one cube at an end and the other ``n - 1`` of one colour (:data:`ROW_ROLE_REWRITES`: "a
+    row of five cubes: a pink one at the far left, the other four gray") as its order from left to right; as said where
+    the counts do not add up."""
+    n = count_word(m.group("n"))
+    k = count_word(m.group("k")) if m.group("k") else n - 1
+    if k != n - 1 or not 2 <= n <= 10:
+        return m.group(0)
+    rest = [m.group("y") or m.group("y2")] * k
+    order = [m.group("x"), *rest] if m.group("s").lower() == "left" else [*rest, m.group("x")]
+    return f"{m.group('head')}from left to right: {', '.join(order)}"
+
+
 ROW_ROLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "Make a row of five cubes: a pink one at the far left, the other four gray.": that cube at its end and the rest (four
+    # gray had been read as one)
+    (re.compile(rf"(?i)(?P<head>\b(?:row|line)\s+of\s+(?P<n>\d+|{COUNT_WORD_RE})\s+(?:cubes|blocks)\s*:\s*)(?:a|an|the|one)\s+(?P<x>{COLOR_RE})"
+                rf"\s+(?:one|cube|block)\s+(?:(?:is|goes|sits)\s+)?(?:at|on)\s+the\s+(?:far\s+|very\s+)?(?P<s>left|right)(?:\s+end)?\s*(?:,|;|and)\s*(?:and\s+)?"
+                rf"(?:(?:the\s+)?(?:other|remaining)\s+(?P<k>\d+|{COUNT_WORD_RE})|the\s+rest(?:\s+of\s+them)?)\s+(?:(?:ones|cubes|blocks)\s+)?"
+                rf"(?:(?:are|all)\s+)*(?:(?P<y>{COLOR_RE})|(?P<y2>{COLOR_RE}))(?:\s+(?:ones|cubes|blocks))?(?=\s*(?:[.;!]|$))"),
+     _end_and_the_rest),
+    # "arrange red and blue cubes in a row, red at left of blue": the row of the two, red on its left (the row had no part
+    # in the relation read); only a row of those two cubes, each said twice (as a cube of the row and in the relation)
+    (re.compile(rf"(?i)(?P<pre>,\s*|\s)(?:with\s+)?(?:the\s+)?(?P<a>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:(?:is|goes|sits|stands)\s+)?"
+                rf"(?:at\s+|to\s+the\s+|on\s+the\s+)?(?P<s>left|right)\s+of\s+(?:the\s+)?(?P<b>{COLOR_RE})(?:\s+(?:cube|block|one))?"
+                r"(?=\s*(?:[.;!]|$))"),
+     _pair_row_side),
     # "red cube at leftmost, blue cube at rightmost, yellow cube in middle" (articles dropped): at the row's ends, in its middle
     (re.compile(r"\b(at|on|in)\s+(left|right|middle)(?=\s*(?:[,.;!]|$)|\s+and\b)"), r"\1 the \2"),
     # "row-3: leftmost=cyan, middle=pink, rightmost=brown", "the left one is red, the middle blue and the right one green":
