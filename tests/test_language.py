@@ -7980,6 +7980,28 @@ def test_a_row_under_a_cube_is_refused():
     ("Please to arrange red and blue cubes in a row, red at left of blue.", ["line[left_to_right](red,blue)"]),
     ("Arrange the red and blue cubes in a row with blue to the right of red.", ["line[left_to_right](red,blue)"]),
     ("Make a row of five cubes: a pink one at the far left, the other four gray.", ["line[left_to_right](pink,gray,gray,gray,gray)"]),
+])
+def test_forty_second_session_more_readings(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text, end, fixed, free", [
+    # one end of a tower of three fixed, the other two "in either order" (read as a contradiction before): a stack anchored
+    # at that end, the two others free
+    ("Tower of three: blue on top; the other two, red and white, can go in either order.", "top", "blue", {"red", "white"}),
+    ("Tower of three: blue at the bottom, the other two red and green in any order.", "bottom", "blue", {"red", "green"}),
+])
+def test_forty_second_session_tower_with_one_end_fixed(text, end, fixed, free):
+    from rpg.domain.predicates import AnchoredStack
+
+    goal = check_feasibility(parse(text)).goal_predicate()
+    assert isinstance(goal, AnchoredStack) and getattr(goal, end) and not getattr(goal, {"top": "bottom", "bottom": "top"}[end])
+    ends = goal.objects[-1] if end == "top" else goal.objects[0]
+    assert ends == fixed and set(goal.objects) - {fixed} == free
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Build a tower of red, white and blue with blue on top.", ["stack(red,white,blue)"]),
     # a test's name is no schedule (only "every"/"each" with a time of day, day or session is one)
     ("Nightly regression #41: the cyan cube ends in the front right corner.", ["in_region(cyan,front_right)"]),
     ("Build a tower where the first (lowest) cube is green, the second is orange and the third is purple.",

@@ -5149,6 +5149,15 @@ def _relation_then_structure(m: re.Match) -> bool:
 
 
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "Tower of three: blue on top; the other two, red and white, can go in either order.": one end fixed, the rest free (it
+    # had been read as a contradiction)
+    (re.compile(rf"(?i)\b(?:tower|stack)\s+of\s+(?:three|3)(?:\s+(?:cubes|blocks))?\s*:\s*(?:the\s+)?(?P<x>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+"
+                r"(?:(?:goes|is|sits)\s+)?(?P<end>on\s+top|at\s+the\s+top|at\s+the\s+bottom|on\s+the\s+bottom)\s*[;,.]\s*(?:and\s+)?"
+                rf"the\s+other\s+(?:two|2)(?:\s+(?:cubes|blocks|ones))?\s*,?\s*(?:the\s+)?(?P<y>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+and\s+"
+                rf"(?:the\s+)?(?P<z>{COLOR_RE})(?:\s+(?:cube|block|one))?\s*,?\s*(?:(?:can|may)\s+)?(?:(?:go|be|are)\s+)?(?:(?:placed|stacked)\s+)?"
+                r"in\s+(?:either|any)\s+order(?=\s*(?:[.;!]|$))"),
+     lambda m: f"a tower of {m.group('y')}, {m.group('z')} and {m.group('x')} with {m.group('x')} "
+               + ("on top" if "top" in m.group("end").lower() else "at the bottom")),
     # "a purple cube with a pink cube on top of it": the pink cube on the purple one (no verb had been found); a cube
     # "with" another under it, the other way; only a single cube each (a row "with a green cube on top" stays as said)
     (re.compile(rf"(?P<pre>^|[:;.]\s+|\b(?:put|place|set|stack|build|make)\s+)(?:a|an|the|one|1)\s+(?P<a>{COLOR_RE})\s+(?:cube|block)"
