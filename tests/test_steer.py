@@ -2803,6 +2803,13 @@ _TOWER_BWY = "Build a tower: brown on the bottom, white in the middle, yellow on
      ("tweak", ["stack(pink,pink,pink,pink,pink)"])),  # its own colour restated with the count
     ("Build a wall: a bottom row of three brown cubes and a top row of three gray cubes.",
      "Swap the rows: gray on the bottom, brown on top.", ("modify", ["wall(gray,gray,gray|brown,brown,brown)"])),
+    ("Put the cyan cube next to the orange cube.", "Add one gray cube next to the cyan cube.",
+     ("extend", ["next_to(cyan,gray)", "next_to(cyan,orange)"])),
+    ("Put the cyan cube next to the orange cube.", "Change the orange cube for a red one.", ("tweak", ["next_to(cyan,red)"])),
+    ("Put the red cube on the orange patch.", "Amended: the orange patch is replaced by a purple patch.",
+     ("tweak", ["on_patch(red,patch:purple)"])),
+    ("The court orders a row of the letter cubes spelling LAW, read left to right.", "Amended: the row shall spell JAW.",
+     ("modify", ["line[left_to_right](J,A,W)", "reads(J,A,W;direction=left_to_right,face=up,text=JAW)"])),
 ])
 def test_forty_second_session_steering_read_as_said(tmp_path, base, edit, expected):
     assert _steered(tmp_path, base, edit)[-1] == expected

@@ -3831,13 +3831,22 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "Top up the green tower with one more green cube.": add it to that tower
     (re.compile(r"(?i)\btop\s+up\s+(the\s+(?:[a-z]+\s+){0,2}?(?:tower|stack|row|line|pile|wall|column))\s+with\s+([^.;!]+?)(?=\s*(?:[.;!]|$))"),
      r"add \2 to \1"),
+    # "Add one gray cube next to the cyan cube.": one cube is a cube ("one" had left the addition unread)
+    (re.compile(rf"(?i)\b(add|put|place|set)\s+one\s+(?=(?:{COLOR_RE})\s+(?:cube|block)\b(?!s))"), r"\1 a "),
+    # "Change the orange cube for a red one.": replace it with that one ('change ... for' had been read as an action)
+    (re.compile(rf"(?i)\b(?:change|swap|exchange|trade)\s+(the\s+(?:{COLOR_RE}|[A-Z0-9])\s+(?:cube|block|one|patch))\s+for\s+"
+                rf"(an?\s+(?:{COLOR_RE}|[A-Z0-9])\s+(?:cube|block|one|patch))\b"),
+     r"replace \1 with \2"),
+    # "Amended: the row shall spell JAW.": make it spell that word
+    (re.compile(r"(?i)(?:^|(?<=:\s))(?:the\s+(?:row|line|word|tower|stack|cubes|blocks)|it)\s+(?:shall|should|must|will|is\s+to)\s+(?:now\s+)?"
+                r"(spell|read)\s+(?=[A-Z]{2,}\b)"), r"make it \1 "),
     # "Further, ...", "Furthermore, ...": a next change said as going on (not a distance)
     (re.compile(r"(?i)^\s*(?:further(?:more)?|moreover)\s*,\s*(?=\S)"), ""),
     # "Convert the line to a tower, ...": turn it into one ('convert' had been refused as an action)
     (re.compile(r"(?i)\bconvert\s+((?:it|them|(?:the|this|that)\s+(?:[a-z\-]+\s+){0,2}?[a-z\-]+))\s+(?:in)?to\s+"), r"turn \1 into "),
     # "the white cube shall be replaced by a black cube": replace it with that one (a passive replacement had been unread)
-    (re.compile(rf"(?i)\b(the\s+(?:{COLOR_RE}|[A-Z0-9])\s+(?:cube|block|one))\s+(?:shall|should|must|will|is\s+to|has\s+to|can)\s+be\s+"
-                rf"(?:replaced|swapped\s+out|substituted)\s+(?:by|with|for)\s+(an?\s+(?:{COLOR_RE}|[A-Z0-9])\s+(?:cube|block|one))\b"),
+    (re.compile(rf"(?i)\b(the\s+(?:{COLOR_RE}|[A-Z0-9])\s+(?:cube|block|one|patch))\s+(?:(?:shall|should|must|will|is\s+to|has\s+to|can)\s+be|is|gets)\s+"
+                rf"(?:replaced|swapped\s+out|substituted)\s+(?:by|with|for)\s+(an?\s+(?:{COLOR_RE}|[A-Z0-9])\s+(?:cube|block|one|patch))\b"),
      r"replace \1 with \2"),
     # "swap the red cubes with the white cubes": the two colours exchanged (it had read as "replace": every cube white)
     (re.compile(rf"(?i)\b(swap|switch|exchange|trade)\s+(?:the\s+|all\s+the\s+)?({COLOR_RE})(?:\s+(?:cubes|blocks|ones|cube|block|one))?\s+"
