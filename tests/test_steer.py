@@ -2806,6 +2806,10 @@ _TOWER_BWY = "Build a tower: brown on the bottom, white in the middle, yellow on
     ("Put the cyan cube next to the orange cube.", "Add one gray cube next to the cyan cube.",
      ("extend", ["next_to(cyan,gray)", "next_to(cyan,orange)"])),
     ("Put the cyan cube next to the orange cube.", "Change the orange cube for a red one.", ("tweak", ["next_to(cyan,red)"])),
+    # a verb the lexicon lacks in the caused-motion construction: a move of what the task has, an addition of a new cube
+    ("Stack the red cube on the blue cube.", "Now ferry the tower to the back of the table.", ("modify", ["stack(blue,red)@back"])),
+    ("Stack the red cube on the blue cube.", "Also park a green cube next to the blue cube.",
+     ("extend", ["next_to(blue,green)", "stack(blue,red)"])),
     ("Put the red cube on the orange patch.", "Amended: the orange patch is replaced by a purple patch.",
      ("tweak", ["on_patch(red,patch:purple)"])),
     ("The court orders a row of the letter cubes spelling LAW, read left to right.", "Amended: the row shall spell JAW.",
@@ -2827,6 +2831,7 @@ def test_forty_second_session_steering_read_as_said(tmp_path, base, edit, expect
     ("Build a wall: a bottom row of three brown cubes and a top row of three gray cubes.",
      "Swap the rows: brown on the bottom, gray on top."),  # a swap restated as the rows it had
     ("Stack a pink cube on a blue cube.", "Make it a tower of five pink cubes."),  # pink is not the tower's one colour
+    ("Stack the red cube on the blue cube.", "Melt the tower onto the green patch."),  # a change of the cubes, not a move
 ])
 def test_forty_second_session_steering_silent_classes_refused(tmp_path, base, edit):
     fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)

@@ -1086,8 +1086,9 @@ UNKNOWN_ACTION = ("action", "is an action the domain does not have: a task's goa
 clause: "throw the red block", "then shake it")."""
 
 CAUSED_MOTION_RE = re.compile(
-    r"(?P<pre>(?:^|[.;:!?]\s+|,\s+(?:and\s+)?(?:then\s+)?|\band\s+(?:then\s+)?|\bthen\s+|\bplease\s+|\blet's\s+)\s*)(?P<v>[a-z]+)\s+"
-    r"(?=(?:the|a|an|both|all\s+the|\d+|one|two|three|four)\s+(?:[a-z0-9]+\s+){0,2}?(?:cubes?|blocks?)\s+"
+    r"(?i)(?P<pre>(?:^|[.;:!?]\s+|,\s+(?:and\s+)?(?:then\s+)?|\band\s+(?:then\s+)?|\bthen\s+|\bplease\s+|\blet's\s+|\bnow\s+|\bjust\s+"
+    r"|\balso\s+)\s*)(?P<v>[a-z]+)\s+"
+    r"(?=(?:the|a|an|both|all\s+the|\d+|one|two|three|four)\s+(?:[a-z0-9]+\s+){0,2}?(?:cubes?|blocks?|tower|stack|row|line|pile|wall|pyramid)\s+"
     r"(?:(?:all\s+the\s+way|right|straight|over|gently|carefully)\s+)?"
     r"(?:onto|on\s+top\s+of|on|into|in\s+the\s+(?:(?:far|back|front)\s+)?(?:left|right|front|back|center|centre|middle)|next\s+to|beside"
     r"|behind|in\s+front\s+of|between|under|underneath|atop|to\s+the\s+(?:left|right)\s+of"
@@ -3556,8 +3557,13 @@ EDIT_REFERS_RE = re.compile(
 """Words of an edit that stand for what the task has ("it", "the orange one", "the tower"):
 with them and no change read, the edit is no whole new task (it is refused)."""
 
-EDIT_CHANGE_VERB_RE = re.compile(r"\b(?:change|replace|swap|substitute|remove|delete|flip|reverse|invert|undo|revert|paint|recolou?r)\b")
+EDIT_CHANGE_VERBS = r"change|replace|swap|substitute|remove|delete|flip|reverse|invert|undo|revert|paint|recolou?r"
+EDIT_CHANGE_VERB_RE = re.compile(rf"\b(?:{EDIT_CHANGE_VERBS})\b")
 """Verbs that change a task and state no task: an edit with one and no change read is refused."""
+
+EDIT_CLAUSE_VERBS = rf"add|make|insert|append|{EDIT_CHANGE_VERBS}"
+"""The verbs that open a change clause of an edit: :data:`EDIT_CHANGE_VERBS` and those that add or restate
+(:data:`rpg.steer.edits._CHANGE_CLAUSE_SPLIT` reads each such clause alone)."""
 
 EDIT_SWAP_BOTH_RE = re.compile(r"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|actually|and|then|just|hmm|nah)\s*,?\s+)*"
                                r"(?:(?:the\s+two(?:\s+(?:cubes|blocks))?|they|both(?:\s+(?:cubes|blocks))?)\s+(?:should\s+|must\s+|need\s+to\s+)?)?"

@@ -632,19 +632,25 @@ top one mauve")."""
 
 
 def _caused_motion(m: re.Match, dropped: list[tuple[str, str]]) -> str:
-    """The verb of a caused-motion clause (:data:`lexicon.CAUSED_MOTION_RE`) as "put" when the lexicon lacks it, the dictionary
-    knows it as a verb that moves a thing (:func:`senses.moves_a_thing`) and it is no action the domain refuses nor a verb
-    the readers read as itself; recorded in ``dropped``
-    (for the accounting).  The clause as it is otherwise."""
-    verb = m.group("v")
-    lemmas = {verb, *lexicon.lemmas(verb)}
-    if verb in VOCAB or verb in lexicon.IDLE_WORDS or "VERB" not in lexicon.parts_of_speech(verb) \
-            or lemmas & set(lexicon.UNKNOWN_KIND_EXEMPLARS["action"]) or lemmas & lexicon.SCENE_CHANGING_VERBS \
-            or lexicon.RETRACTION_RE.search(verb) or lexicon.VOICE_CHUNK_HAZARD_RE.search(verb) or _inexpressible(verb) \
-            or not senses.moves_a_thing(verb):
-        return m.group(0)  # ("melt the red cube on the patch", "hurl it onto ...": more than where it ends)
-    dropped.append((verb, "a verb of moving a cube to a place, read as 'put'"))
+    """The verb of a caused-motion clause (:data:`lexicon.CAUSED_MOTION_RE`) as "put" when :func:`moving_verb` holds,
+    recorded in ``dropped`` (for the accounting).  The clause as it is otherwise."""
+    if not moving_verb(m.group("v")):
+        return m.group(0)
+    dropped.append((m.group("v"), "a verb of moving a cube to a place, read as 'put'"))
     return f"{m.group('pre')}put "
+
+
+def moving_verb(verb: str) -> bool:
+    """Whether ``verb`` of a caused-motion clause (:data:`lexicon.CAUSED_MOTION_RE`) moves the cube, as "put" would: the
+    lexicon lacks it, the dictionary knows it as a verb that moves a thing (:func:`senses.moves_a_thing`), and it is no
+    action the domain refuses nor a verb the readers read as itself ("melt the red cube on the patch", "hurl it onto ...":
+    more than where it ends)."""
+    verb = verb.lower()
+    lemmas = {verb, *lexicon.lemmas(verb)}
+    return not (verb in VOCAB or verb in lexicon.IDLE_WORDS or "VERB" not in lexicon.parts_of_speech(verb)
+                or lemmas & set(lexicon.UNKNOWN_KIND_EXEMPLARS["action"]) or lemmas & lexicon.SCENE_CHANGING_VERBS
+                or lexicon.RETRACTION_RE.search(verb) or lexicon.VOICE_CHUNK_HAZARD_RE.search(verb) or _inexpressible(verb)
+                or not senses.moves_a_thing(verb))
 
 
 def _unknown_word_classes(text: str, unknown: list[str]) -> list[tuple[str, str, str]]:

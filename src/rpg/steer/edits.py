@@ -30,6 +30,8 @@ from rpg.schema.lexicon import (
     COUNT_WORD_RE,
     COUNTED_RUNS_RE,
     EDIT_ADDITIVE_RE,
+    CAUSED_MOTION_RE,
+    EDIT_CLAUSE_VERBS,
     EDIT_ANAPHORA_RE,
     EDIT_BESIDE_RE,
     EDIT_CHANGE_VERB_RE,
@@ -76,7 +78,7 @@ from rpg.schema.lexicon import (
 )
 from rpg.schema.model import TaskSchema
 from rpg.schema.readers.common import item_sequence
-from rpg.schema.reading import apply_corrections, canon_color, region_name, spoken
+from rpg.schema.reading import apply_corrections, canon_color, moving_verb, region_name, spoken
 from rpg.schema.structures import (
     STRUCTURE_KINDS,
     STRUCTURE_RE,
@@ -967,6 +969,16 @@ def intent_of_standalone(new: TaskSpec | None, ref: TaskSpec | None) -> str:
     return "tweak"
 
 
+def _caused_motion_in_edit(m: re.Match) -> str:
+    """The verb of a caused-motion clause of an edit (:data:`~rpg.schema.lexicon.CAUSED_MOTION_RE`: "ferry the tower to the
+    back", "park a green cube next to ...") as "move" of what the task has ("the ...") and "put" of a cube it adds, when
+    :func:`~rpg.schema.reading.moving_verb` holds; as said otherwise."""
+    if not moving_verb(m.group("v")):
+        return m.group(0)
+    verb = "move" if re.match(r"(?i)(?:the|both|all)\b", m.string[m.end():]) else "put"
+    return f"{m.group('pre')}{verb} "
+
+
 def interpret(edit: str) -> EditPlan:
     """Read an edit into a plan (reference cue, operations or a whole new task).
 
@@ -988,8 +1000,8 @@ def interpret(edit: str) -> EditPlan:
     return plan
 
 
-_CHANGE_CLAUSE_SPLIT = (r"\s*(?:,\s*and\s+(?:then\s+)?|,\s*then\s+|;\s*|\s+and\s+(?:then\s+)?|\s+then\s+)(?=(?:also\s+|please\s+)?(?:add|make"
-                        r"|remove|swap|change|paint|replace|insert|append|delete|flip|reverse|recolou?r)\s)")
+_CHANGE_CLAUSE_SPLIT = (r"\s*(?:,\s*and\s+(?:then\s+)?|,\s*then\s+|;\s*|\s+and\s+(?:then\s+)?|\s+then\s+)(?=(?:also\s+|please\s+)?"
+                        rf"(?:{EDIT_CLAUSE_VERBS})\s)")
 """Where an edit's clauses each begin with a change verb ("make the top cube black and add one"): each is read alone too
 (:func:`_refuse_a_sentence_unread`), so that no change said is dropped (the addition had been, silently)."""
 
@@ -1242,6 +1254,7 @@ def _interpret(edit: str) -> EditPlan:
     edit = " ".join(_corrected(w, _known_words(), fuzzy=False) if w.islower() else w for w in edit.split())
     for pattern, replacement in EDIT_REWRITES:
         edit = pattern.sub(replacement, edit)
+    edit = CAUSED_MOTION_RE.sub(_caused_motion_in_edit, edit)  # "now ferry the tower to the back": move it there
     _refuse_unread_shapes(edit)
     label = re.match(r"\s*([^:.;!?]{2,60}):\s", edit)
     if label and TURNING_LABEL_RE.search(label.group(1)):  # "Mirror version: make ...", "Bad example: ...": the label may be
