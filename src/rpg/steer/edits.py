@@ -26,15 +26,15 @@ from rpg.errors import BadInput
 from rpg.schema.builder import DEFAULT_COLORS
 from rpg.schema.lexicon import (
     BARE_ORDER_RE,
+    CAUSED_MOTION_RE,
     COLOR_RE,
     COUNT_WORD_RE,
     COUNTED_RUNS_RE,
     EDIT_ADDITIVE_RE,
-    CAUSED_MOTION_RE,
-    EDIT_CLAUSE_VERBS,
     EDIT_ANAPHORA_RE,
     EDIT_BESIDE_RE,
     EDIT_CHANGE_VERB_RE,
+    EDIT_CLAUSE_VERBS,
     EDIT_CONTINUES_RE,
     EDIT_COUNT_ALONE_RE,
     EDIT_COUNT_RE,
