@@ -7935,7 +7935,6 @@ def test_a_row_under_a_cube_is_refused():
     # stranger54's one silent text (read at the forty-second session): ordinals written with digits ("2nd=gray") had been
     # split into a count and an unknown word, and the tower's middle dropped
     ("tower pls: bottom=pink, 2nd=gray, 3rd=cyan, top=red", ["stack(pink,gray,cyan,red)"]),
-    ("tower: bottom pink, 2nd gray, 3rd cyan, top red", ["stack(pink,gray,cyan,red)"]),
     # steer_stranger25's bases (read at the forty-second session): who orders the task, finding cubes on the way to placing
     # them, a row "across" a side of the table, "Anyway," before the task, a heading that counts rows
     ("The court orders that the blue cube be placed on top of the green cube.", ["stack(green,blue)"]),
@@ -7963,8 +7962,6 @@ def test_a_row_under_a_cube_is_refused():
     # builds (its nouns had been refused as objects the domain lacks)
     ("A purple cube with a pink cube on top of it.", ["stack(purple,pink)"]),
     ("The purple cube with the pink cube under it.", ["stack(pink,purple)"]),
-    ("Build it like a layer cake: a brown cube on the bottom, a white cube on that, and a pink cube on top.",
-     ["stack(brown,white,pink)"]),
     ("Plate it: put the red cube on the blue patch and the yellow cube on the green patch.",
      ["on_patch(red,patch:blue)", "on_patch(yellow,patch:green)"]),
     ("Let's make a little train: four blocks in a row, red, blue, red, blue, from left to right.",
@@ -8023,6 +8020,14 @@ def test_forty_second_session_readings(text, expected):
     "Melt the red cube on the blue patch.",  # a change of the cube, not only where it ends
     "Hurl the red cube onto the blue patch.",  # a throw
     "Glue the red cube to the blue cube.",
+    # headings a hostile helper found dropped: a thing known by its order or shape, someone's own, digit ordinals outside a
+    # role ("1st blue, 3rd red, 2nd green" had been read in the order said)
+    "Build it like a staircase: red on blue.",
+    "Make a traffic light: red, yellow, green in a tower.",
+    "Build it like the referee's: red on blue.",
+    "Build it like a layer cake: a brown cube on the bottom, a white cube on that, and a pink cube on top.",
+    "Stack: 1st blue, 3rd red, 2nd green.",
+    "tower: bottom pink, 2nd gray, 3rd cyan, top red",  # a digit ordinal outside a role's "=" or ":" stays unread
     "Scatter it: put the red cube on the blue patch.",  # a heading whose verb changes the scene stays, refused
     "Build it like a pyramid: red on blue, green on red.",  # a heading naming another structure than its text's
     "Build it twice: red on blue.",  # a heading that repeats

@@ -2751,10 +2751,12 @@ the name dropped (the letter had been read as a letter cube, the digit as a coun
 
 ORDINAL_ABBREVIATIONS: dict[str, str] = {"1st": "first", "2nd": "second", "3rd": "third", "4th": "fourth", "5th": "fifth",
                                          "6th": "sixth", "7th": "seventh", "8th": "eighth", "9th": "ninth", "10th": "tenth"}
-ORDINAL_ABBREVIATION_RE = re.compile(r"(?i)(?<![\w.])(" + "|".join(ORDINAL_ABBREVIATIONS) + r")(?![\w'])")
-"""An ordinal written with its digit ("2nd=gray", "the 3rd cube"), read as its word ("second", "third"): the word's
-readers read it (the tokenizer had split "2nd" into a count and an unknown "nd"; "tower: bottom=pink, 2nd=gray,
-3rd=cyan, top=red" had become a tower of pink and red, its middle dropped silently)."""
+ORDINAL_ABBREVIATION_RE = re.compile(r"(?i)(?<![\w.])(" + "|".join(ORDINAL_ABBREVIATIONS) + r")(?=\s*[=:])")
+"""An ordinal written with its digit as a role before "=" or ":" ("bottom=pink, 2nd=gray"), read as its word
+("second"), which the role readers read (the tokenizer had split "2nd" into a count and an unknown "nd"; "tower:
+bottom=pink, 2nd=gray, 3rd=cyan, top=red" had become a tower of pink and red, its middle dropped silently).  Elsewhere
+("Stack: 1st blue, 3rd red, 2nd green", "the 2nd patch") it stays unread and refused: a hostile helper found the
+ordinal words' readers there read ranks out of order or a patch by rank, silently."""
 
 GLUED_COUNT_RE = re.compile(r"(?i)\b(stacks?|towers?|piles?|rows?|lines?|walls?|grids?|pyramids?|circles?)((?:-[a-z]+)*)-(\d+)\b")
 """A structure's identifier with a count glued on ("stack-any-4", "pile-5"): the words and the count

@@ -431,10 +431,11 @@ def _towers_headed(instruction: str, framed: bool) -> TaskSchema | None:
 
 
 def _named_heading(instruction: str, framed: bool) -> TaskSchema | None:
-    """The task of a heading that names what its colon's text builds (:data:`lexicon.NAMING_HEADING_RE`: "Build it like a
-    layer cake: a brown cube on the bottom, ..."): the text after the colon read alone, kept only where the heading holds
-    no colour, label, count, structure, place, hazard (:data:`lexicon.VOICE_CHUNK_HAZARD_RE` but its "it"/"this", a
-    take-back) and no verb that changes the scene but one that makes (:data:`lexicon.NAMING_HEADING_VERBS_EXEMPT`); None
+    """The task of a heading that names what its colon's text builds (:data:`lexicon.NAMING_HEADING_RE`: "Let's make a
+    little train: four blocks in a row, ...", "Plate it: put ..."): the text after the colon read alone, kept only where
+    the heading holds no colour, label, count, structure, place, hazard (:data:`lexicon.VOICE_CHUNK_HAZARD_RE` but its
+    "it"/"this", a take-back), no thing known by its order, shape or pose (:data:`lexicon.VOICE_SIMILE_BLOCKER_RE`), no
+    one's own thing, and no verb that changes the scene but one that makes (:data:`lexicon.NAMING_HEADING_VERBS_EXEMPT`); None
     otherwise (the readers read the text whole, and refuse the heading's words for what they are)."""
     m = lexicon.NAMING_HEADING_RE.match(instruction)
     if m is None or framed:
@@ -448,8 +449,10 @@ def _named_heading(instruction: str, framed: bool) -> TaskSchema | None:
     if re.search(r"\d|\b[A-Z]\b", instruction[:m.start("body")]) or re.search(STRUCTURE_RE, heading, re.IGNORECASE) \
             or lexicon.VOICE_CHUNK_HAZARD_RE.search(weighed) or lexicon.RETRACTION_RE.search(weighed) \
             or lexicon.VOICE_PLACE_HAZARD_RE.search(weighed) or re.search(rf"\b(?:{lexicon.COUNT_WORD_RE})\b", heading) \
-            or any(c in heading.split() for c in lexicon.colour_names()) or lexicon.GOAL_THING_RE.search(weighed):
-        return None
+            or any(c in heading.split() for c in lexicon.colour_names()) or lexicon.GOAL_THING_RE.search(weighed) \
+            or lexicon.VOICE_SIMILE_BLOCKER_RE.search(weighed) or re.search(r"\b(?!let's|it's|that's)[a-z]+'s\b", heading):
+        return None  # (a thing known by its order, shape or pose, "like a staircase", "a traffic light", "like a snowman", or
+        # someone's, "like the referee's", may say more than the text after the colon: a hostile helper's)
     try:
         schema = parse(m.group("body"), _framed=True)
     except BadInput:
