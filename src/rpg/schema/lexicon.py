@@ -3567,6 +3567,18 @@ EDIT_CLAUSE_VERBS = rf"add|make|insert|append|{EDIT_CHANGE_VERBS}"
 """The verbs that open a change clause of an edit: :data:`EDIT_CHANGE_VERBS` and those that add or restate
 (:data:`rpg.steer.edits._CHANGE_CLAUSE_SPLIT` reads each such clause alone)."""
 
+EDIT_OWN_VERB_RE = re.compile(rf"(?i)(?:{EDIT_CLAUSE_VERBS}|extend|raise|lower|shift|move|put|place|set|stack|drop|slide|push|bring"
+                               r"|return|restore|keep|leave|turn|use|grow|shrink|widen|lengthen|shorten|top|attach|get|take|go)")
+"""Verbs the steering reads as its own operations: never rewritten by :func:`rpg.steer.edits._caused_motion_in_edit`."""
+
+
+ROWS_SWAPPED_RE = re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|now|so|and|then)\s*,?\s*)*(?:swap|switch|exchange|flip|trade)\s+(?:the\s+)?(?:two\s+)?"
+                              r"(?:rows|layers|levels|tiers|courses)(?:\s+(?:around|round|over))?\s*(?:[:,\u2013\u2014-]\s*(?P<rest>[^.!]+?))?\s*[.!]?\s*$")
+"""An edit that swaps a layered structure's rows ("Swap the rows: gray on the bottom, brown on top."): read by
+:func:`rpg.steer.steering._rows_swapped_named`."""
+
+
+
 EDIT_SWAP_BOTH_RE = re.compile(r"(?i)^\s*(?:(?:please|pls|now|ok(?:ay)?|actually|and|then|just|hmm|nah)\s*,?\s+)*"
                                r"(?:(?:the\s+two(?:\s+(?:cubes|blocks))?|they|both(?:\s+(?:cubes|blocks))?)\s+(?:should\s+|must\s+|need\s+to\s+)?)?"
                                r"(?:swap|switch|exchange|interchange|trade)\s+(?:them|the\s+two(?:\s+(?:cubes|blocks))?|both(?:\s+of\s+(?:them|their\s+(?:places"

@@ -47,6 +47,7 @@ from rpg.schema.lexicon import (
     EDIT_LEADING_RE,
     EDIT_MORE_ALONE_RE,
     EDIT_OPENING,
+    EDIT_OWN_VERB_RE,
     EDIT_PERSON_REASON_HAZARD_RE,
     EDIT_PERSON_REASON_RE,
     EDIT_REASON_HAZARD_RE,
@@ -969,16 +970,11 @@ def intent_of_standalone(new: TaskSpec | None, ref: TaskSpec | None) -> str:
     return "tweak"
 
 
-_EDIT_OWN_VERB_RE = re.compile(rf"(?i)(?:{EDIT_CLAUSE_VERBS}|extend|raise|lower|shift|move|put|place|set|stack|drop|slide|push|bring"
-                               r"|return|restore|keep|leave|turn|use|grow|shrink|widen|lengthen|shorten|top|attach|get|take|go)")
-"""Verbs the steering reads as its own operations: never rewritten by :func:`_caused_motion_in_edit`."""
-
-
 def _caused_motion_in_edit(m: re.Match) -> str:
     """The verb of a caused-motion clause of an edit (:data:`~rpg.schema.lexicon.CAUSED_MOTION_RE`: "ferry the tower to the
     back", "park a green cube next to ...") as "move" of what the task has ("the ...") and "put" of a cube it adds, when
     :func:`~rpg.schema.reading.moving_verb` holds; as said otherwise."""
-    if _EDIT_OWN_VERB_RE.fullmatch(m.group("v")) or not moving_verb(m.group("v")):
+    if EDIT_OWN_VERB_RE.fullmatch(m.group("v")) or not moving_verb(m.group("v")):
         return m.group(0)  # ("add a yellow block to the left": the steering's own verb, read as itself)
     verb = "move" if re.match(r"(?i)(?:the|both|all)\b", m.string[m.end():]) else "put"
     return f"{m.group('pre')}{verb} "

@@ -49,6 +49,7 @@ from rpg.schema.lexicon import (
     NUMBER_WORDS,
     PAIRWISE_RELATIONS,
     PATCH_RECOLOUR_RE,
+    ROWS_SWAPPED_RE,
     SAME_CUBES_RE,
     SAME_PATCH_RE,
     TOWER_RESTATED_RE,
@@ -1406,18 +1407,12 @@ def _only_cube_named(edit: str, hist: FamilyHistory, fam: Family) -> str:
     return f"remove the {next(a.color for a in cubes if a.color != kept)} cube"
 
 
-_ROWS_SWAPPED_RE = re.compile(r"(?i)^\s*(?:(?:ok(?:ay)?|now|so|and|then)\s*,?\s*)*(?:swap|switch|exchange|flip|trade)\s+(?:the\s+)?(?:two\s+)?"
-                              r"(?:rows|layers|levels|tiers|courses)(?:\s+(?:around|round|over))?\s*(?:[:,\u2013\u2014-]\s*(?P<rest>[^.!]+?))?\s*[.!]?\s*$")
-"""An edit that swaps a layered structure's rows ("Swap the rows: gray on the bottom, brown on top."): read by
-:func:`_rows_swapped_named`."""
-
-
 def _rows_swapped_named(edit: str, hist: FamilyHistory, fam: Family) -> str:
-    """``edit`` as the exchange of the two colours of the head version's two layers when it swaps its rows (:data:`_ROWS_SWAPPED_RE`)
+    """``edit`` as the exchange of the two colours of the head version's two layers when it swaps its rows (:data:`~rpg.schema.lexicon.ROWS_SWAPPED_RE`)
     and each layer is of one colour of its own ("Swap the rows" of a wall of brown under gray: "swap brown and gray"); a
     restatement after it ("...: gray on the bottom, brown on top") must say that result, or the edit stays as said (and is
     refused).  Else ``edit`` as it is (a swap of rows had been refused as a reference)."""
-    m = _ROWS_SWAPPED_RE.match(edit)
+    m = ROWS_SWAPPED_RE.match(edit)
     if m is None:
         return edit
     head = fam.schema(hist.head)
