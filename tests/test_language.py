@@ -8040,3 +8040,25 @@ def test_forty_second_session_readings(text, expected):
 def test_forty_second_session_refusals(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a label after its noun said first in the sentence ("Block 4" had lost its label: a red cube went on the patch)
+    ("Block 4 on the red patch.", ["on_patch(4,patch:red)"]),
+    ("Cube B in the front right corner.", ["in_region(B,front_right)"]),
+    # labels listed before the noun they share, three or more ("the A, B and C cubes" had lost A)
+    ("Line up the A, B, C and D blocks from left to right.", ["line[left_to_right](A,B,C,D)"]),
+    ("Put the 1 and 2 cubes side by side.", ["next_to(1,2)"]),
+])
+def test_forty_third_session_label_readings(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    # layers of a pyramid of label cubes: no reader judges them (the layers had been dropped, any cube at the apex passed)
+    "Pyramid of three: the letter cubes B and A on the bottom, the letter C cube at the apex.",
+    "Build a pyramid of the digit cubes 1, 2 and 3 with 3 on top.",
+])
+def test_forty_third_session_refusals(text):
+    with pytest.raises(ParseError):
+        check_feasibility(parse(text))

@@ -89,8 +89,9 @@ ABBREVIATIONS: dict[str, str] = {
 requirement), each read as its word (curated: an abbreviation with two readings, "blk" for
 black or block, is read by :data:`BLK_RE` from the word after it)."""
 
-LABELS_AND_NOUN_RE = re.compile(r"\b([Tt]he)\s+([A-Z]|\d)\s*(?:,\s*|\s+and\s+|\s*&\s*)([A-Z]|\d)\s+(cube|block)s\b")
-""""the 1 & 9 cubes", "the A and B blocks": two labelled cubes sharing one noun, read as "the 1
+LABELS_AND_NOUN_RE = re.compile(r"\b(?P<the>[Tt]he)\s+(?P<labels>(?:[A-Z]|\d)(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+|\s*&\s*)(?:[A-Z]|\d))+)"
+                                r"\s+(?P<noun>cube|block)s\b")
+""""the 1 & 9 cubes", "the A and B blocks", "the A, B and C cubes": labelled cubes sharing one noun, read as "the 1
 cube and the 9 cube" (:func:`rpg.schema.reading.normalize_words`)."""
 
 BLK_RE = re.compile(r"\bblk(?P<black>s?)\b(?=\s+(?:cubes?|blocks?)\b|\s*(?:->|\u2192|=>|/))|(?<=>)(?P<arrowed>\s?)blk\b"
@@ -6077,9 +6078,9 @@ LABEL_NOUN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 r"(?:(?:letter|digit|number)\s+)?'?([A-Z]|\d)'?(?:\s+on\s+it)?\b(?!'|\s*(?:[x\u00d7+\-=*]|\w+\s+(?:blocks?|cubes?)\b))"),
      lambda m: f"{m.group(1)} {'letter' if m.group(3).isalpha() else 'digit'} {m.group(3)} {m.group(2)}"),
     # "block 4", "cube labelled B", "digit cube 3": a label after its cube's noun ("I" as a pronoun stays)
-    (re.compile(r"\b(?:(?:[Ll]etter|[Dd]igit|[Nn]umber)\s+)?(block|cube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))"
+    (re.compile(r"\b(?:(?:[Ll]etter|[Dd]igit|[Nn]umber)\s+)?([Bb]lock|[Cc]ube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))"
                 r"(?<!\bI(?='[a-z]|\s+(?:[a-z]+ed|[a-z]+ing|am|have|had|want|need|would|will|just|think|said|mean|like|told|see|saw|look|can)\b))"),
-     lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1)}"),
+     lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1).lower()}"),  # ("Block 4 on ...")
     # "put cubes 3 and 4 next to each other": two label cubes, as "cube 3" is one (two coloured cubes had been made up); a
     # colour before them ("red cubes A and B") is left as said
     (re.compile(r"(?<![\w-])(?:[Tt]he\s+)?(?:cubes|blocks)\s+([A-Z]|\d)\s+and\s+([A-Z]|\d)\s+(next\s+to|beside)\s+(?:each\s+other|one\s+another)\b"),

@@ -805,6 +805,19 @@ def _counted_list_nouns(text: str) -> str:
     return _COUNTED_LIST_RE.sub(each, text)
 
 
+def _labels_each_a_cube(m: re.Match) -> str:
+    """A match of :data:`lexicon.LABELS_AND_NOUN_RE` said with the labels' kind: two cubes one at a time ("the 1 & 9
+    cubes" -> "the 1 cube and the 9 cube"), more as the kind's list ("the A, B and C cubes" -> "the letter cubes A, B and
+    C", which the list readers read; each said as a cube, a tower's roles had been read against its first cubes alone)."""
+    labels = re.findall(r"[A-Z0-9]", m.group("labels"))
+    if len(labels) > 2 and (all(x.isalpha() for x in labels) or all(x.isdigit() for x in labels)):
+        kind = "letter" if labels[0].isalpha() else "digit"
+        return f"{m.group('the')} {kind} {m.group('noun')}s {', '.join(labels[:-1])} and {labels[-1]}"
+    cubes = [f"the {label} {m.group('noun')}" for label in labels]
+    cubes[0] = m.group("the") + cubes[0][3:]
+    return ", ".join(cubes[:-1]) + " and " + cubes[-1]
+
+
 BARE_LABEL_RE = re.compile(r"(\bthe|(?:\bwith|\bthen|\band|,)(?=\s+[A-Z]\b))\s+([A-Z]|\d)\b(?![-'])"
                            r"(?!\s+(?:on\s+top\s+of\s+|next\s+to\s+|beside\s+)?(?:each\s+other|one\s+another|together)\b)(?=\s*(?:[,.;:!?()]|$|\s+(?:on|onto|atop|next|to|left|right|in|at|"
                            r"behind|beside|near|under|underneath|below|above|and|then|between|far|is|goes|should|must|from|into|onto|as|with)\b))")
@@ -1448,7 +1461,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
         # "stack the digits 1 to 3, 1 at the bottom": the run listed, so the role reads against every cube (the middle
         # digit had been dropped)
         original = LABEL_RANGE_RE.sub(_listed_range, original)
-    original = lexicon.LABELS_AND_NOUN_RE.sub(r"\1 \2 \4 and the \3 \4", original)  # "the 1 & 9 cubes"
+    original = lexicon.LABELS_AND_NOUN_RE.sub(_labels_each_a_cube, original)  # "the 1 & 9 cubes", "the A, B and C cubes"
     original = lexicon.DIGIT_WORDS_RE.sub(lambda m: m.group("noun") + lexicon.DIGIT_WORD_RE.sub(
         lambda w: str(lexicon.DIGIT_WORDS.index(w.group(0).lower())), m.group("list")), original)
     if not original:
