@@ -8062,3 +8062,29 @@ def test_forty_third_session_label_readings(text, expected):
 def test_forty_third_session_refusals(text):
     with pytest.raises(ParseError):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a verb phrase coordinated after the task that acts on a thing of the speaker's world only: dropped
+    ("Field note from the hide: build a tower with orange at the bottom and pink on top, then log the sighting.",
+     ["stack(orange,pink)"]),
+    ("Spotter, watch my form: put the pink cube on the green patch and squeeze those glutes.", ["on_patch(pink,patch:green)"]),
+    ("Line up three green cubes and call the foreman.", ["line(green,green,green)"]),
+])
+def test_forty_third_session_world_actions_dropped(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    "Put the red cube on the blue cube and log it.",  # a pronoun: it may be the cubes
+    "Put the red cube on the blue cube and squeeze those.",
+    "Put the red cube on the blue cube, then wave.",  # an action with no thing of its own: it may be the robot's
+    "Put the red cube on the blue cube and hammer down.",
+    "Put the red cube on the blue cube, then hide the evidence.",  # a verb that changes a scene
+    "Put the red cube on the blue cube and cover the green patch.",  # a thing of the task
+    "Put the red cube on the blue cube and then enjoy your coffee.",  # 'coffee' is a colour's name
+    "Stack red on blue and count the seconds.",  # time
+])
+def test_forty_third_session_actions_kept_and_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

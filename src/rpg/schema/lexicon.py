@@ -468,6 +468,16 @@ climbers on a fixed rope.", "..., steady as a belay.", "..., as per the site pla
 or a dash ("... - monochrome is so in right now.", "..., our high camp."): dropped by
 :func:`rpg.schema.reading.drop_voice_chunks` when :func:`rpg.schema.reading._voice_chunk` finds it inert."""
 
+VOICE_ACTION_TAIL_RE = re.compile(r"(?P<sep>\s*,?\s+(?:and\s+then|and|then)\s+|\s*,\s*then\s+)(?P<c>[a-z]+(?:\s+[^,;:.!?()\"]{2,50})?)"
+                                  r"(?P<end>[.!?]*)\s*$")
+"""A verb phrase coordinated at a sentence's end ("..., then log the sighting.", "... and squeeze those glutes."): dropped
+by :func:`rpg.schema.reading.drop_voice_chunks` when it only acts on a thing of the speaker's world
+(:func:`rpg.schema.reading._world_action`)."""
+
+WORLD_ACTION_DETERMINERS: frozenset[str] = frozenset("a an the my our your his her their those these that this some".split())
+"""Determiners a verb phrase of the speaker's world may put before its own thing ("squeeze those glutes", "log the
+sighting"): a determiner there picks that thing, no cube (a pronoun alone, "squeeze those", keeps the phrase)."""
+
 VOICE_SIMILE_OPENING_RE = re.compile(r"^(?:just\s+)?like\s+(?!(?:in|at|on|onto|to|near|next|behind|beside|under|over|above|below|right|left"
                                      r"|just|really|so|this|that|here|there|before|last|always|usual|normal|i|we|you)\b)|^as\s+per\b|^the\s+way\b|^(?:as\s+)?[a-z]+\s+as\b")
 """How a simile chunk of :data:`VOICE_TAIL_RES` opens (its words describe the thing compared: its counts are that

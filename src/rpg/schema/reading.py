@@ -431,6 +431,34 @@ def _voice_chunk(chunk: str, label: bool = False) -> bool:
     return True
 
 
+def _world_action(chunk: str) -> bool:
+    """Whether a verb phrase coordinated after a task (:data:`lexicon.VOICE_ACTION_TAIL_RE`: "then log the sighting", "and
+    squeeze those glutes") acts only on a thing of the speaker's world: a verb first that is no word the readers know and
+    changes no scene (:data:`lexicon.SCENE_CHANGING_VERBS`, by lemma), then only a determiner and the thing acted on
+    (:data:`lexicon.WORLD_ACTION_DETERMINERS`; at least one noun the readers do not know), with nothing of a goal, no
+    hazard a voice's chunk may not hold (:func:`_voice_chunk`, the determiners set apart), no place and nothing the domain
+    refuses that may bear on a goal.  An action with no thing of its own ("then wave", "and hammer down") stays, to be
+    refused: it may be the robot's."""
+    words = re.findall(r"[a-z][a-z'\-]*", chunk.lower())
+    if len(words) < 2 or re.search(r"[^a-z\s'\-]", chunk.lower()):
+        return False
+    verb, rest = words[0], words[1:]
+    if "VERB" not in lexicon.parts_of_speech(verb) or verb in VOCAB or verb in lexicon.SCENE_CHANGING_VERBS or any(
+            x in lexicon.SCENE_CHANGING_VERBS for x in lexicon.lemmas(verb)):
+        return False
+    things = [w for w in rest if w not in lexicon.WORLD_ACTION_DETERMINERS]
+    if not things or (rest[0] in lexicon.WORLD_ACTION_DETERMINERS) == (len(things) == len(rest)) and len(rest) > 1:
+        return False  # only a determiner ("squeeze those"): a pronoun that may stand for cubes
+    if not all(w not in VOCAB and ("NOUN" in lexicon.parts_of_speech(w.removesuffix("'s")) or not lexicon.is_dictionary_word(w))
+               or w in lexicon.IDLE_WORDS for w in things):
+        return False  # a word the readers know, or one that is no noun ("log it carefully"): not a thing of the world alone
+    low = " ".join(things)
+    if lexicon.VOICE_CHUNK_HAZARD_RE.search(low) or lexicon.GOAL_THING_PREFIX_RE.search(low) or lexicon.TASK_CONTENT_RE.search(low) \
+            or lexicon.VOICE_PLACE_HAZARD_RE.search(low) or lexicon.colour_names() & set(things):
+        return False
+    return not any(k in lexicon.COMMENTARY_BLOCKING_KINDS or k == "condition" for k, _, _ in _inexpressible(chunk.lower()))
+
+
 def drop_voice_chunks(text: str) -> tuple[str, list[str]]:
     """``text`` without a voice's label before its task ("Site diary, day six: ...", :data:`lexicon.VOICE_LABEL_RE`; or a
     first sentence of up to four words such as "Context 17.") and without the chunks that end its sentences in a voice
@@ -450,7 +478,8 @@ def drop_voice_chunks(text: str) -> tuple[str, list[str]]:
     sentences = []
     for sentence in re.split(r"(?<=[.!?])\s+", text):
         for _ in range(2):  # "..., like climbers on a rope, our high camp."
-            tail = next((t for t in (p.search(sentence) for p in lexicon.VOICE_TAIL_RES) if t and _voice_chunk(t.group("c"))), None)
+            tail = next((t for t in (p.search(sentence) for p in lexicon.VOICE_TAIL_RES) if t and _voice_chunk(t.group("c"))), None) \
+                or next((t for t in [lexicon.VOICE_ACTION_TAIL_RE.search(sentence)] if t and _world_action(t.group("c"))), None)
             if not tail or not lexicon.GOAL_THING_RE.search(sentence[:tail.start()].lower()):
                 break
             dropped.append(tail.group("c").strip())
