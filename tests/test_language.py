@@ -8088,3 +8088,26 @@ def test_forty_third_session_world_actions_dropped(text, expected):
 def test_forty_third_session_actions_kept_and_refused(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a purpose or a manner of the speaker's world before the task's first comma; a clause of time about that world
+    ("For my lineage chart, line up the digit cubes 1, 2 and 3 from left to right.", ["line[left_to_right](1,2,3)"]),
+    ("In honour of grandpa, stack the red cube on the blue cube.", ["stack(blue,red)"]),
+    ("As the matcha is whisked, put the cyan cube on top of the brown cube.", ["stack(brown,cyan)"]),
+    # a colour's name inside a word is none ("offered" had held "red", and the clause of time stayed)
+    ("Before the chawan is offered to the guest, put the gray cube on the red patch.", ["on_patch(gray,patch:red)"]),
+])
+def test_forty_third_session_world_openings_dropped(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    "With the tongs, stack the red cube on the blue cube.",  # a tool
+    "For five seconds, stack the red cube on the blue cube.",  # time
+    "For the demonstration, stack red on blue; for the evaluation, stack green on yellow.",  # two purposes, two tasks
+    "As the red cube is lighter, put it on the blue cube.",
+])
+def test_forty_third_session_openings_kept_and_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

@@ -304,8 +304,9 @@ time or negation that may be the robot's ("Make it quick. Robot, ...") (besides 
 and any word of a goal)."""
 
 WORLD_TIME_CLAUSE_RE = re.compile(
-    r"(?i)(?:^|(?<=[.!?]\s)|(?<=[,;:]\s))(?:and\s+)?(?:while|whilst|before|after|once)\s+(?P<c>[^,.;:!?()\"]{2,60}?)\s*(?:[,:;]|\s[-\u2013\u2014])\s+(?=\S)")
-"""A clause of time about the speaker's world before the task ("While the glaze sets, put ...", "Listen, apprentice, while the
+    r"(?i)(?:^|(?<=[.!?]\s)|(?<=[,;:]\s))(?:and\s+)?(?:while|whilst|before|after|once|as(?=\s+(?:the|my|our|his|her|their)\s+[a-z]+(?:\s+[a-z]+)?\s+(?:is|are|gets|get|starts|begins)\s))\s+(?P<c>[^,.;:!?()\"]{2,60}?)\s*(?:[,:;]|\s[-\u2013\u2014])\s+(?=\S)")
+"""A clause of time about the speaker's world before the task ("While the glaze sets, put ...", "As the matcha is whisked,
+...", "Listen, apprentice, while the
 forge heats up: set ...", "While I'm away, please put ..."): dropped by :func:`rpg.schema.reading.drop_asides` where it names
 nothing of the task (:data:`WORLD_TIME_HAZARD_RE`), so it can time or condition nothing a goal holds; one that does ("while
 the red cube stays on blue", "until it is on the patch", "after that") stays, and is refused for its time."""
@@ -473,6 +474,17 @@ VOICE_ACTION_TAIL_RE = re.compile(r"(?P<sep>\s*,?\s+(?:and\s+then|and|then)\s+|\
 """A verb phrase coordinated at a sentence's end ("..., then log the sighting.", "... and squeeze those glutes."): dropped
 by :func:`rpg.schema.reading.drop_voice_chunks` when it only acts on a thing of the speaker's world
 (:func:`rpg.schema.reading._world_action`)."""
+
+MANNER_NOUNS: frozenset[str] = frozenset("spirit honour honor memory name tradition calm grace patience dignity calmness "
+                                        "serenity elegance".split())
+"""Nouns of manner or dedication that head a phrase opening a task in a voice ("In the spirit of ...", "In honour of ...",
+"With the calm of ..."): with them "in" and "with" place nothing and name no tool (:data:`WORLD_OPENING_RE`)."""
+
+WORLD_OPENING_RE = re.compile(r"(?P<prep>for|in|with)\s+(?:(?:the|a|an)\s+(?P<manner>" + "|".join(sorted(MANNER_NOUNS)) + r")\s+of\s+"
+                              r"|(?P<manner2>" + "|".join(sorted(MANNER_NOUNS)) + r")\s+of\s+|)(?P<thing>.+)")
+"""A phrase that may open a task in a voice before its first comma: a purpose ("For my lineage chart") or a manner ("In
+the spirit of the tatami room", "With the calm of the tea ceremony"), judged by
+:func:`rpg.schema.reading._world_opening`."""
 
 WORLD_ACTION_DETERMINERS: frozenset[str] = frozenset("a an the my our your his her their those these that this some".split())
 """Determiners a verb phrase of the speaker's world may put before its own thing ("squeeze those glutes", "log the

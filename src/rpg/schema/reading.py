@@ -446,17 +446,40 @@ def _world_action(chunk: str) -> bool:
     if "VERB" not in lexicon.parts_of_speech(verb) or verb in VOCAB or verb in lexicon.SCENE_CHANGING_VERBS or any(
             x in lexicon.SCENE_CHANGING_VERBS for x in lexicon.lemmas(verb)):
         return False
-    things = [w for w in rest if w not in lexicon.WORLD_ACTION_DETERMINERS]
-    if not things or (rest[0] in lexicon.WORLD_ACTION_DETERMINERS) == (len(things) == len(rest)) and len(rest) > 1:
-        return False  # only a determiner ("squeeze those"): a pronoun that may stand for cubes
+    return _world_things(rest) and not any(k in lexicon.COMMENTARY_BLOCKING_KINDS or k == "condition"
+                                           for k, _, _ in _inexpressible(chunk.lower()))
+
+
+def _world_things(words: list[str]) -> bool:
+    """Whether ``words`` (lower case) name only things of the speaker's world: a determiner first at most
+    (:data:`lexicon.WORLD_ACTION_DETERMINERS`), then nouns the readers do not know (or words no dictionary knows: "glutes"),
+    with nothing of a goal, no colour's name, no hazard a voice's chunk may not hold and no place.  A determiner alone
+    ("those") is a pronoun that may stand for cubes."""
+    things = [w for w in words if w not in lexicon.WORLD_ACTION_DETERMINERS]
+    if not things or any(w in lexicon.WORLD_ACTION_DETERMINERS for w in words[1:]):
+        return False
     if not all(w not in VOCAB and ("NOUN" in lexicon.parts_of_speech(w.removesuffix("'s")) or not lexicon.is_dictionary_word(w))
                or w in lexicon.IDLE_WORDS for w in things):
         return False  # a word the readers know, or one that is no noun ("log it carefully"): not a thing of the world alone
     low = " ".join(things)
-    if lexicon.VOICE_CHUNK_HAZARD_RE.search(low) or lexicon.GOAL_THING_PREFIX_RE.search(low) or lexicon.TASK_CONTENT_RE.search(low) \
-            or lexicon.VOICE_PLACE_HAZARD_RE.search(low) or lexicon.colour_names() & set(things):
+    return not (lexicon.VOICE_CHUNK_HAZARD_RE.search(low) or any(  # a goal's word in a form of its own ("stacking")
+        lexicon.GOAL_THING_RE.search(x) for w in things for x in (w, *lexicon.lemmas(w)))
+                or lexicon.TASK_CONTENT_RE.search(low) or lexicon.VOICE_PLACE_HAZARD_RE.search(low)
+                or lexicon.colour_names() & set(things))
+
+
+def _world_opening(chunk: str) -> bool:
+    """Whether a phrase before a task's first comma (:data:`lexicon.WORLD_OPENING_RE`) is of the speaker's world: a purpose
+    ("For my lineage chart, ...") or a manner said by a noun of manner ("In the spirit of the tatami room, ...", "With the
+    calm of the tea ceremony, ...", :data:`lexicon.MANNER_NOUNS`) whose thing is the world's alone (:func:`_world_things`).
+    Other openings with "in" or "with" may name a container or a tool ("In the box, ...", "With the tongs, ..."), so stay."""
+    m = lexicon.WORLD_OPENING_RE.fullmatch(chunk.lower().strip())
+    if not m or _inexpressible(chunk.lower()):
         return False
-    return not any(k in lexicon.COMMENTARY_BLOCKING_KINDS or k == "condition" for k, _, _ in _inexpressible(chunk.lower()))
+    said = re.findall(r"[a-z][a-z'\-]*", m.group("thing"))
+    if m.group("prep") == "for":
+        return _world_things(said)
+    return bool(m.group("manner") or m.group("manner2")) and _world_things(said)
 
 
 def drop_voice_chunks(text: str) -> tuple[str, list[str]]:
@@ -467,6 +490,12 @@ def drop_voice_chunks(text: str) -> tuple[str, list[str]]:
     thing of a goal; and the chunks dropped.  A voice's words are its own: a chunk that names a cube, a structure, a
     place, a count or anything that may change the goal stays, to be read or refused."""
     dropped: list[str] = []
+    opening = re.match(r"\s*(?P<c>[^,;:.!?()]{4,60}?)\s*,\s+(?=\S)", text)
+    if opening and _world_opening(opening.group("c")) and lexicon.GOAL_THING_RE.search(text[opening.end():].lower()) \
+            and not re.search(rf"(?i)[.;:,]\s+(?:and\s+)?{opening.group('c').split()[0]}\s", text[opening.end():]):
+        # (one purpose said again for another part, "For the demo, ...; for the evaluation, ...", is two tasks: it stays)
+        dropped.append(opening.group(0).strip())  # "For my lineage chart, line up ...": the speaker's purpose
+        text = text[opening.end():]
     label = lexicon.VOICE_LABEL_RE.match(text)
     first = re.match(r"\s*(?P<c>[^.!?:;]{2,40})\.\s+(?=\S)", text)
     for m in (label, first):
@@ -540,7 +569,8 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
     def world_time(m: re.Match) -> str:  # "While the glaze sets, put ...": the speaker's time, which no goal holds
         said = m.group("c").lower()
         if lexicon.GOAL_THING_RE.search(said) or lexicon.TASK_CONTENT_RE.search(said) or lexicon.WORLD_TIME_HAZARD_RE.search(said) \
-                or any(c in said for c in lexicon.colour_names()) or _inexpressible(said):
+                or any(re.search(rf"\b{re.escape(c)}\b", said) for c in lexicon.colour_names()) or _inexpressible(said):
+            # (a colour's name as a word: "offered" holds no red)
             return m.group(0)
         dropped.append(m.group(0).strip())
         return ""
