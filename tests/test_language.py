@@ -8111,3 +8111,27 @@ def test_forty_third_session_world_openings_dropped(text, expected):
 def test_forty_third_session_openings_kept_and_refused(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a label or purpose naming a thing of the speaker's world with a noun the task also knows ("table", "set") or a setup
+    # of that world's: dropped (each had been refused)
+    ("Prop table note: the green cube sits between the red cube and the blue cube.", ["between(green;blue,red)"]),
+    ("Reception setup: line up two red cubes and one white cube in a row, any order is fine.", ["line(red,red,white)"]),
+    ("Set play: the pink cube on the blue patch, the purple cube on the orange patch.",
+     ["on_patch(pink,patch:blue)", "on_patch(purple,patch:orange)"]),
+    ("Wedding planner here! For the gift table, place the orange cube between the two gray cubes.",
+     ["between(orange;gray,gray)"]),
+])
+def test_forty_third_session_world_labels_dropped(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    "Kitchen setup: red on blue. Then put red on the green patch.",  # a setup with a goal after it: a start, not dropped
+    "Table setup: red on blue.",  # a setup of the task's own table
+    "Tower setup: red on blue.",
+])
+def test_forty_third_session_setups_kept(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

@@ -486,6 +486,19 @@ WORLD_OPENING_RE = re.compile(r"(?P<prep>for|in|with)\s+(?:(?:the|a|an)\s+(?P<ma
 the spirit of the tatami room", "With the calm of the tea ceremony"), judged by
 :func:`rpg.schema.reading._world_opening`."""
 
+WORLD_COMPOUND_MODIFIERS: frozenset[str] = frozenset({"table", "set"})
+"""Nouns the task knows that, before a noun of the speaker's world, only name a thing of that world ("the gift table",
+"prop table note", "set play"): a label or purpose of the speaker's world may hold them (:func:`rpg.schema.reading._world_things`)."""
+
+WORLD_SETUP_NOUNS: frozenset[str] = frozenset({"setup", "set-up", "preset"})
+"""Nouns of an arrangement that, after a noun of the speaker's world, say what the arrangement is for ("Reception setup:",
+"boss fight setup:"): the task's goal, where the rest of the text has no start of its own (:data:`START_OR_GOAL_SPLIT_RE`)."""
+
+START_OR_GOAL_SPLIT_RE = re.compile(r"(?i)\b(?:start\w*|initial\w*|begin\w*|before|currently|goal|target|final\w*|end\s+state|then"
+                                    r"|now|afterwards?|after)\b")
+"""Words that split a text into a start and a goal: a label of the speaker's world naming a setup
+(:data:`WORLD_SETUP_NOUNS`) is dropped only where the rest has none of them."""
+
 WORLD_ACTION_DETERMINERS: frozenset[str] = frozenset("a an the my our your his her their those these that this some".split())
 """Determiners a verb phrase of the speaker's world may put before its own thing ("squeeze those glutes", "log the
 sighting"): a determiner there picks that thing, no cube (a pronoun alone, "squeeze those", keeps the phrase)."""

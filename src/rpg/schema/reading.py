@@ -454,8 +454,15 @@ def _world_things(words: list[str]) -> bool:
     """Whether ``words`` (lower case) name only things of the speaker's world: a determiner first at most
     (:data:`lexicon.WORLD_ACTION_DETERMINERS`), then nouns the readers do not know (or words no dictionary knows: "glutes"),
     with nothing of a goal, no colour's name, no hazard a voice's chunk may not hold and no place.  A determiner alone
-    ("those") is a pronoun that may stand for cubes."""
-    things = [w for w in words if w not in lexicon.WORLD_ACTION_DETERMINERS]
+    ("those") is a pronoun that may stand for cubes.  A compound with a noun of that world may hold nouns the task also
+    knows (:data:`lexicon.WORLD_COMPOUND_MODIFIERS`: "the gift table", "prop table note") and end in a setup of that
+    world's ("reception setup": the arrangement for it, no start of the task)."""
+    bare = [w for w in words if w not in lexicon.WORLD_ACTION_DETERMINERS]
+    if len(bare) >= 2 and (set(bare) & lexicon.WORLD_COMPOUND_MODIFIERS or bare[-1] in lexicon.WORLD_SETUP_NOUNS):
+        kept = [w for w in bare if w not in lexicon.WORLD_COMPOUND_MODIFIERS and w not in lexicon.WORLD_SETUP_NOUNS]
+        # "reception setup", "the gift table": the reception's, a table of the world
+        return bool(kept) and _world_things(kept)
+    things = bare
     if not things or any(w in lexicon.WORLD_ACTION_DETERMINERS for w in words[1:]):
         return False
     if not all(w not in VOCAB and ("NOUN" in lexicon.parts_of_speech(w.removesuffix("'s")) or not lexicon.is_dictionary_word(w))
@@ -499,7 +506,9 @@ def drop_voice_chunks(text: str) -> tuple[str, list[str]]:
     label = lexicon.VOICE_LABEL_RE.match(text)
     first = re.match(r"\s*(?P<c>[^.!?:;]{2,40})\.\s+(?=\S)", text)
     for m in (label, first):
-        if m and len(m.group("c").split()) <= (10 if m is label else 4) and _voice_chunk(m.group("c"), label=True) \
+        if m and len(m.group("c").split()) <= (10 if m is label else 4) and (_voice_chunk(m.group("c"), label=True) or (
+                m is label and 2 <= len(m.group("c").split()) <= 5 and _world_things(re.findall(r"[a-z][a-z'\-]*", m.group("c").lower()))
+                and not lexicon.START_OR_GOAL_SPLIT_RE.search(text[m.end():]))) \
                 and lexicon.GOAL_THING_RE.search(text[m.end():].lower()):
             dropped.append(m.group(0).strip())
             text = text[m.end():]
