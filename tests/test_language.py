@@ -8135,3 +8135,13 @@ def test_forty_third_session_world_labels_dropped(text, expected):
 def test_forty_third_session_setups_kept(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # someone of the speaker's world, named by a noun no reader knows, asks for the task (each had been refused)
+    ("chat wants a row of three red cubes.", ["line(red,red,red)"]),
+    ("Grandma would like the green cube next to the pink cube.", ["next_to(green,pink)"]),
+    ("Bob needs the red cube on the blue patch.", ["on_patch(red,patch:blue)"]),
+])
+def test_forty_third_session_world_askers(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)

@@ -3078,6 +3078,14 @@ SOMEONE_WANTS_RE = re.compile(
 :data:`PERSON_NOUNS` or an institution of :data:`INSTITUTION_NOUNS`; :func:`rpg.schema.reading.normalize_words` lists
 ``who`` as dropped).  A pronoun after the verb ("the client wants it ...") points at something unsaid and stays."""
 
+WORLD_ASKER_RE = re.compile(
+    r"(?P<lead>^\s*|[.!?:;,]\s+)(?:(?i:my|our|the|this|your)\s+)?(?P<who>[A-Za-z][a-z]+(?:\s+[a-z]+)?)\s+(?:wants|want|needs|need|would\s+like"
+    r"|asks\s+for|ask\s+for|asked\s+for|requests|request|requested)(?:\s+that)?\b(?!\s+(?:it|them|this|that|those|these|to)\b)")
+"""Someone of the speaker's world who asks for the task at a clause's start, named by a noun no reader knows ("subs want
+the bottom layer orange", "the bride wants ...", "chat wants a tower"): read as "i want" by
+:func:`rpg.schema.reading.normalize_words` when every word of ``who`` is such a noun (a cube, a colour, a hazard or a word
+the readers know stays: "the tower needs a red cube on top").  The nouns :data:`SOMEONE_WANTS_RE` lists are read first."""
+
 _PURPOSE = (r"(?:the|my|our|this|a|tomorrow's|today's|tonight's|friday's|monday's)\s+(?:next\s+|first\s+|upcoming\s+)?(?P<what>run|demo|trial|experiment|test|eval(?:uation)?"
             r"|episode|paper|video|benchmark|session)")
 """What a task is for ("the next run", "my demo"): :data:`PREAMBLE_RE` (said first) and :data:`PURPOSE_RE` (said last)."""
@@ -3967,6 +3975,10 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"^\s*(?:(?i:now|and|so|ok|okay|then|also|actually|oh|but)\s*,?\s+)*(?:{_ASKER})(?:'d\s+like|\s+(?:wants|want"
                 r"|would\s+like))\s+(?=the\s+[^,.;:!?]+?\s+(?:in|at|on|onto|next\s+to|beside|behind|in\s+front\s+of|under)\s)(?![^.;!?]*\bto\s+be\b)"),
      "put "),
+    # "subs want the bottom layer orange", "they'd like the top cube white": the cubes wanted in that colour, made so
+    (re.compile(rf"^\s*(?:(?i:now|and|so|ok|okay|then|also|actually|oh|but)\s*,?\s+)*(?:{_ASKER})(?:'d\s+like|\s+(?:wants|want"
+                rf"|would\s+like))\s+(?=the\s+[^,.;:!?]+?\s+(?:{COLOR_RE})\s*(?:[,.;!]|$))"),
+     "make "),
     # "For the next take, make the two end cubes purple", "This time round, ...": when, of the session, before the change
     (re.compile(r"(?i)^\s*(?:for|in|on)\s+(?:the\s+)?(?:next|this|the\s+following)\s+(?:take|shot|run|round|trial|attempt|go|iteration"
                 r"|pass|scene|session)\s*,\s*(?=\S)"), ""),

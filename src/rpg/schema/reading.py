@@ -431,6 +431,24 @@ def _voice_chunk(chunk: str, label: bool = False) -> bool:
     return True
 
 
+def world_askers(text: str, said_as: str) -> tuple[str, list[str]]:
+    """``text`` with each asker of the speaker's world at a clause's start (:data:`lexicon.WORLD_ASKER_RE`: "subs want ...",
+    "the bride wants ...") and the verb of asking said as ``said_as`` ("i want", "Someone wants"), and the askers: every
+    word of the asker a noun no reader knows (or no dictionary word), no cube, colour, goal's word or hazard
+    (:data:`lexicon.VOICE_CHUNK_HAZARD_RE`: "the robot", "the tower" stay)."""
+    askers: list[str] = []
+
+    def asked(m: re.Match) -> str:
+        who = m.group("who").lower().split()
+        if not all(w not in VOCAB and w not in lexicon.IDLE_WORDS and ("NOUN" in lexicon.parts_of_speech(w) or not lexicon.is_dictionary_word(w))
+                   and not lexicon.GOAL_THING_PREFIX_RE.match(w) and w not in lexicon.colour_names() for w in who) \
+                or lexicon.VOICE_CHUNK_HAZARD_RE.search(" ".join(who)):
+            return m.group(0)
+        askers.append(m.group("who"))
+        return m.group("lead") + said_as
+    return lexicon.WORLD_ASKER_RE.sub(asked, text), askers
+
+
 def _world_action(chunk: str) -> bool:
     """Whether a verb phrase coordinated after a task (:data:`lexicon.VOICE_ACTION_TAIL_RE`: "then log the sighting", "and
     squeeze those glutes") acts only on a thing of the speaker's world: a verb first that is no word the readers know and
@@ -1631,6 +1649,8 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
                     if not set(re.findall(r"[a-z']+", s.lower())) <= lexicon.CHAT_WORDS) or text
     asked_by = effectors + [(m.group("who"), "who asks for the task") for m in lexicon.SOMEONE_WANTS_RE.finditer(text)]
     text = lexicon.SOMEONE_WANTS_RE.sub("i want", text)
+    text, askers = world_askers(text, "i want")  # "subs want the bottom layer orange", "the bride wants ...": one of that world
+    asked_by += [(who, "who asks for the task") for who in askers]
     asked_by += [(m.group("who") or m.group("pronoun"), "who said the task") for m in lexicon.SOMEONE_SAID_RE.finditer(text)]
     text = lexicon.SOMEONE_SAID_RE.sub("", text)
     text = lexicon.rewrite(lexicon.GOAL_FRAME_REWRITES, text)
