@@ -2837,14 +2837,3 @@ def test_forty_second_session_steering_silent_classes_refused(tmp_path, base, ed
     fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     with pytest.raises(BadInput):
         steer(fam.path, edit)
-
-
-@pytest.mark.parametrize("edit, expected", [
-    # someone of the speaker's world wants cubes in a colour: made so (the asker had been read as an action)
-    ("subs want the bottom layer orange, you got it", ["pyramid(orange,orange,orange|purple,purple|purple)"]),
-    ("The bride wants the top layer white.", ["pyramid(purple,purple,purple|purple,purple|white)"]),
-])
-def test_forty_third_session_world_asker_edits(tmp_path, edit, expected):
-    got, _ = _meaning_after(tmp_path, "Build a pyramid with three purple cubes on the bottom, two purple cubes in the middle "
-                            "and one purple cube on top.", [edit])
-    assert got == sorted(expected)

@@ -304,9 +304,8 @@ time or negation that may be the robot's ("Make it quick. Robot, ...") (besides 
 and any word of a goal)."""
 
 WORLD_TIME_CLAUSE_RE = re.compile(
-    r"(?i)(?:^|(?<=[.!?]\s)|(?<=[,;:]\s))(?:and\s+)?(?:while|whilst|before|after|once|as(?=\s+(?:the|my|our|his|her|their)\s+[a-z]+(?:\s+[a-z]+)?\s+(?:is|are|gets|get|starts|begins)\s))\s+(?P<c>[^,.;:!?()\"]{2,60}?)\s*(?:[,:;]|\s[-\u2013\u2014])\s+(?=\S)")
-"""A clause of time about the speaker's world before the task ("While the glaze sets, put ...", "As the matcha is whisked,
-...", "Listen, apprentice, while the
+    r"(?i)(?:^|(?<=[.!?]\s)|(?<=[,;:]\s))(?:and\s+)?(?:while|whilst|before|after|once)\s+(?P<c>[^,.;:!?()\"]{2,60}?)\s*(?:[,:;]|\s[-\u2013\u2014])\s+(?=\S)")
+"""A clause of time about the speaker's world before the task ("While the glaze sets, put ...", "Listen, apprentice, while the
 forge heats up: set ...", "While I'm away, please put ..."): dropped by :func:`rpg.schema.reading.drop_asides` where it names
 nothing of the task (:data:`WORLD_TIME_HAZARD_RE`), so it can time or condition nothing a goal holds; one that does ("while
 the red cube stays on blue", "until it is on the patch", "after that") stays, and is refused for its time."""
@@ -468,40 +467,6 @@ VOICE_TAIL_RES: tuple[re.Pattern[str], ...] = (
 climbers on a fixed rope.", "..., steady as a belay.", "..., as per the site plan."), then any chunk set off by a comma
 or a dash ("... - monochrome is so in right now.", "..., our high camp."): dropped by
 :func:`rpg.schema.reading.drop_voice_chunks` when :func:`rpg.schema.reading._voice_chunk` finds it inert."""
-
-VOICE_ACTION_TAIL_RE = re.compile(r"(?P<sep>\s*,?\s+(?:and\s+then|and|then)\s+|\s*,\s*then\s+)(?P<c>[a-z]+(?:\s+[^,;:.!?()\"]{2,50})?)"
-                                  r"(?P<end>[.!?]*)\s*$")
-"""A verb phrase coordinated at a sentence's end ("..., then log the sighting.", "... and squeeze those glutes."): dropped
-by :func:`rpg.schema.reading.drop_voice_chunks` when it only acts on a thing of the speaker's world
-(:func:`rpg.schema.reading._world_action`)."""
-
-MANNER_NOUNS: frozenset[str] = frozenset("spirit honour honor memory name tradition calm grace patience dignity calmness "
-                                        "serenity elegance".split())
-"""Nouns of manner or dedication that head a phrase opening a task in a voice ("In the spirit of ...", "In honour of ...",
-"With the calm of ..."): with them "in" and "with" place nothing and name no tool (:data:`WORLD_OPENING_RE`)."""
-
-WORLD_OPENING_RE = re.compile(r"(?P<prep>for|in|with)\s+(?:(?:the|a|an)\s+(?P<manner>" + "|".join(sorted(MANNER_NOUNS)) + r")\s+of\s+"
-                              r"|(?P<manner2>" + "|".join(sorted(MANNER_NOUNS)) + r")\s+of\s+|)(?P<thing>.+)")
-"""A phrase that may open a task in a voice before its first comma: a purpose ("For my lineage chart") or a manner ("In
-the spirit of the tatami room", "With the calm of the tea ceremony"), judged by
-:func:`rpg.schema.reading._world_opening`."""
-
-WORLD_COMPOUND_MODIFIERS: frozenset[str] = frozenset({"table", "set"})
-"""Nouns the task knows that, before a noun of the speaker's world, only name a thing of that world ("the gift table",
-"prop table note", "set play"): a label or purpose of the speaker's world may hold them (:func:`rpg.schema.reading._world_things`)."""
-
-WORLD_SETUP_NOUNS: frozenset[str] = frozenset({"setup", "set-up", "preset"})
-"""Nouns of an arrangement that, after a noun of the speaker's world, say what the arrangement is for ("Reception setup:",
-"boss fight setup:"): the task's goal, where the rest of the text has no start of its own (:data:`START_OR_GOAL_SPLIT_RE`)."""
-
-START_OR_GOAL_SPLIT_RE = re.compile(r"(?i)\b(?:start\w*|initial\w*|begin\w*|before|currently|goal|target|final\w*|end\s+state|then"
-                                    r"|now|afterwards?|after)\b")
-"""Words that split a text into a start and a goal: a label of the speaker's world naming a setup
-(:data:`WORLD_SETUP_NOUNS`) is dropped only where the rest has none of them."""
-
-WORLD_ACTION_DETERMINERS: frozenset[str] = frozenset("a an the my our your his her their those these that this some".split())
-"""Determiners a verb phrase of the speaker's world may put before its own thing ("squeeze those glutes", "log the
-sighting"): a determiner there picks that thing, no cube (a pronoun alone, "squeeze those", keeps the phrase)."""
 
 VOICE_SIMILE_OPENING_RE = re.compile(r"^(?:just\s+)?like\s+(?!(?:in|at|on|onto|to|near|next|behind|beside|under|over|above|below|right|left"
                                      r"|just|really|so|this|that|here|there|before|last|always|usual|normal|i|we|you)\b)|^as\s+per\b|^the\s+way\b|^(?:as\s+)?[a-z]+\s+as\b")
@@ -3078,14 +3043,6 @@ SOMEONE_WANTS_RE = re.compile(
 :data:`PERSON_NOUNS` or an institution of :data:`INSTITUTION_NOUNS`; :func:`rpg.schema.reading.normalize_words` lists
 ``who`` as dropped).  A pronoun after the verb ("the client wants it ...") points at something unsaid and stays."""
 
-WORLD_ASKER_RE = re.compile(
-    r"(?P<lead>^\s*|[.!?:;,]\s+)(?:(?i:my|our|the|this|your)\s+)?(?P<who>[A-Za-z][a-z]+(?:\s+[a-z]+)?)\s+(?:wants|want|needs|need|would\s+like"
-    r"|asks\s+for|ask\s+for|asked\s+for|requests|request|requested)(?:\s+that)?\b(?!\s+(?:it|them|this|that|those|these|to)\b)")
-"""Someone of the speaker's world who asks for the task at a clause's start, named by a noun no reader knows ("subs want
-the bottom layer orange", "the bride wants ...", "chat wants a tower"): read as "i want" by
-:func:`rpg.schema.reading.normalize_words` when every word of ``who`` is such a noun (a cube, a colour, a hazard or a word
-the readers know stays: "the tower needs a red cube on top").  The nouns :data:`SOMEONE_WANTS_RE` lists are read first."""
-
 _PURPOSE = (r"(?:the|my|our|this|a|tomorrow's|today's|tonight's|friday's|monday's)\s+(?:next\s+|first\s+|upcoming\s+)?(?P<what>run|demo|trial|experiment|test|eval(?:uation)?"
             r"|episode|paper|video|benchmark|session)")
 """What a task is for ("the next run", "my demo"): :data:`PREAMBLE_RE` (said first) and :data:`PURPOSE_RE` (said last)."""
@@ -3975,10 +3932,6 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(rf"^\s*(?:(?i:now|and|so|ok|okay|then|also|actually|oh|but)\s*,?\s+)*(?:{_ASKER})(?:'d\s+like|\s+(?:wants|want"
                 r"|would\s+like))\s+(?=the\s+[^,.;:!?]+?\s+(?:in|at|on|onto|next\s+to|beside|behind|in\s+front\s+of|under)\s)(?![^.;!?]*\bto\s+be\b)"),
      "put "),
-    # "subs want the bottom layer orange", "they'd like the top cube white": the cubes wanted in that colour, made so
-    (re.compile(rf"^\s*(?:(?i:now|and|so|ok|okay|then|also|actually|oh|but)\s*,?\s+)*(?:{_ASKER})(?:'d\s+like|\s+(?:wants|want"
-                rf"|would\s+like))\s+(?=the\s+[^,.;:!?]+?\s+(?:{COLOR_RE})\s*(?:[,.;!]|$))"),
-     "make "),
     # "For the next take, make the two end cubes purple", "This time round, ...": when, of the session, before the change
     (re.compile(r"(?i)^\s*(?:for|in|on)\s+(?:the\s+)?(?:next|this|the\s+following)\s+(?:take|shot|run|round|trial|attempt|go|iteration"
                 r"|pass|scene|session)\s*,\s*(?=\S)"), ""),

@@ -431,82 +431,6 @@ def _voice_chunk(chunk: str, label: bool = False) -> bool:
     return True
 
 
-def world_askers(text: str, said_as: str) -> tuple[str, list[str]]:
-    """``text`` with each asker of the speaker's world at a clause's start (:data:`lexicon.WORLD_ASKER_RE`: "subs want ...",
-    "the bride wants ...") and the verb of asking said as ``said_as`` ("i want", "Someone wants"), and the askers: every
-    word of the asker a noun no reader knows (or no dictionary word), no cube, colour, goal's word or hazard
-    (:data:`lexicon.VOICE_CHUNK_HAZARD_RE`: "the robot", "the tower" stay)."""
-    askers: list[str] = []
-
-    def asked(m: re.Match) -> str:
-        who = m.group("who").lower().split()
-        if not all(w not in VOCAB and w not in lexicon.IDLE_WORDS and ("NOUN" in lexicon.parts_of_speech(w) or not lexicon.is_dictionary_word(w))
-                   and not lexicon.GOAL_THING_PREFIX_RE.match(w) and w not in lexicon.colour_names() for w in who) \
-                or lexicon.VOICE_CHUNK_HAZARD_RE.search(" ".join(who)):
-            return m.group(0)
-        askers.append(m.group("who"))
-        return m.group("lead") + said_as
-    return lexicon.WORLD_ASKER_RE.sub(asked, text), askers
-
-
-def _world_action(chunk: str) -> bool:
-    """Whether a verb phrase coordinated after a task (:data:`lexicon.VOICE_ACTION_TAIL_RE`: "then log the sighting", "and
-    squeeze those glutes") acts only on a thing of the speaker's world: a verb first that is no word the readers know and
-    changes no scene (:data:`lexicon.SCENE_CHANGING_VERBS`, by lemma), then only a determiner and the thing acted on
-    (:data:`lexicon.WORLD_ACTION_DETERMINERS`; at least one noun the readers do not know), with nothing of a goal, no
-    hazard a voice's chunk may not hold (:func:`_voice_chunk`, the determiners set apart), no place and nothing the domain
-    refuses that may bear on a goal.  An action with no thing of its own ("then wave", "and hammer down") stays, to be
-    refused: it may be the robot's."""
-    words = re.findall(r"[a-z][a-z'\-]*", chunk.lower())
-    if len(words) < 2 or re.search(r"[^a-z\s'\-]", chunk.lower()):
-        return False
-    verb, rest = words[0], words[1:]
-    if "VERB" not in lexicon.parts_of_speech(verb) or verb in VOCAB or verb in lexicon.SCENE_CHANGING_VERBS or any(
-            x in lexicon.SCENE_CHANGING_VERBS for x in lexicon.lemmas(verb)):
-        return False
-    return _world_things(rest) and not any(k in lexicon.COMMENTARY_BLOCKING_KINDS or k == "condition"
-                                           for k, _, _ in _inexpressible(chunk.lower()))
-
-
-def _world_things(words: list[str]) -> bool:
-    """Whether ``words`` (lower case) name only things of the speaker's world: a determiner first at most
-    (:data:`lexicon.WORLD_ACTION_DETERMINERS`), then nouns the readers do not know (or words no dictionary knows: "glutes"),
-    with nothing of a goal, no colour's name, no hazard a voice's chunk may not hold and no place.  A determiner alone
-    ("those") is a pronoun that may stand for cubes.  A compound with a noun of that world may hold nouns the task also
-    knows (:data:`lexicon.WORLD_COMPOUND_MODIFIERS`: "the gift table", "prop table note") and end in a setup of that
-    world's ("reception setup": the arrangement for it, no start of the task)."""
-    bare = [w for w in words if w not in lexicon.WORLD_ACTION_DETERMINERS]
-    if len(bare) >= 2 and (set(bare) & lexicon.WORLD_COMPOUND_MODIFIERS or bare[-1] in lexicon.WORLD_SETUP_NOUNS):
-        kept = [w for w in bare if w not in lexicon.WORLD_COMPOUND_MODIFIERS and w not in lexicon.WORLD_SETUP_NOUNS]
-        # "reception setup", "the gift table": the reception's, a table of the world
-        return bool(kept) and _world_things(kept)
-    things = bare
-    if not things or any(w in lexicon.WORLD_ACTION_DETERMINERS for w in words[1:]):
-        return False
-    if not all(w not in VOCAB and ("NOUN" in lexicon.parts_of_speech(w.removesuffix("'s")) or not lexicon.is_dictionary_word(w))
-               or w in lexicon.IDLE_WORDS for w in things):
-        return False  # a word the readers know, or one that is no noun ("log it carefully"): not a thing of the world alone
-    low = " ".join(things)
-    return not (lexicon.VOICE_CHUNK_HAZARD_RE.search(low) or any(  # a goal's word in a form of its own ("stacking")
-        lexicon.GOAL_THING_RE.search(x) for w in things for x in (w, *lexicon.lemmas(w)))
-                or lexicon.TASK_CONTENT_RE.search(low) or lexicon.VOICE_PLACE_HAZARD_RE.search(low)
-                or lexicon.colour_names() & set(things))
-
-
-def _world_opening(chunk: str) -> bool:
-    """Whether a phrase before a task's first comma (:data:`lexicon.WORLD_OPENING_RE`) is of the speaker's world: a purpose
-    ("For my lineage chart, ...") or a manner said by a noun of manner ("In the spirit of the tatami room, ...", "With the
-    calm of the tea ceremony, ...", :data:`lexicon.MANNER_NOUNS`) whose thing is the world's alone (:func:`_world_things`).
-    Other openings with "in" or "with" may name a container or a tool ("In the box, ...", "With the tongs, ..."), so stay."""
-    m = lexicon.WORLD_OPENING_RE.fullmatch(chunk.lower().strip())
-    if not m or _inexpressible(chunk.lower()):
-        return False
-    said = re.findall(r"[a-z][a-z'\-]*", m.group("thing"))
-    if m.group("prep") == "for":
-        return _world_things(said)
-    return bool(m.group("manner") or m.group("manner2")) and _world_things(said)
-
-
 def drop_voice_chunks(text: str) -> tuple[str, list[str]]:
     """``text`` without a voice's label before its task ("Site diary, day six: ...", :data:`lexicon.VOICE_LABEL_RE`; or a
     first sentence of up to four words such as "Context 17.") and without the chunks that end its sentences in a voice
@@ -515,18 +439,10 @@ def drop_voice_chunks(text: str) -> tuple[str, list[str]]:
     thing of a goal; and the chunks dropped.  A voice's words are its own: a chunk that names a cube, a structure, a
     place, a count or anything that may change the goal stays, to be read or refused."""
     dropped: list[str] = []
-    opening = re.match(r"\s*(?P<c>[^,;:.!?()]{4,60}?)\s*,\s+(?=\S)", text)
-    if opening and _world_opening(opening.group("c")) and lexicon.GOAL_THING_RE.search(text[opening.end():].lower()) \
-            and not re.search(rf"(?i)[.;:,]\s+(?:and\s+)?{opening.group('c').split()[0]}\s", text[opening.end():]):
-        # (one purpose said again for another part, "For the demo, ...; for the evaluation, ...", is two tasks: it stays)
-        dropped.append(opening.group(0).strip())  # "For my lineage chart, line up ...": the speaker's purpose
-        text = text[opening.end():]
     label = lexicon.VOICE_LABEL_RE.match(text)
     first = re.match(r"\s*(?P<c>[^.!?:;]{2,40})\.\s+(?=\S)", text)
     for m in (label, first):
-        if m and len(m.group("c").split()) <= (10 if m is label else 4) and (_voice_chunk(m.group("c"), label=True) or (
-                m is label and 2 <= len(m.group("c").split()) <= 5 and _world_things(re.findall(r"[a-z][a-z'\-]*", m.group("c").lower()))
-                and not lexicon.START_OR_GOAL_SPLIT_RE.search(text[m.end():]))) \
+        if m and len(m.group("c").split()) <= (10 if m is label else 4) and _voice_chunk(m.group("c"), label=True) \
                 and lexicon.GOAL_THING_RE.search(text[m.end():].lower()):
             dropped.append(m.group(0).strip())
             text = text[m.end():]
@@ -534,8 +450,7 @@ def drop_voice_chunks(text: str) -> tuple[str, list[str]]:
     sentences = []
     for sentence in re.split(r"(?<=[.!?])\s+", text):
         for _ in range(2):  # "..., like climbers on a rope, our high camp."
-            tail = next((t for t in (p.search(sentence) for p in lexicon.VOICE_TAIL_RES) if t and _voice_chunk(t.group("c"))), None) \
-                or next((t for t in [lexicon.VOICE_ACTION_TAIL_RE.search(sentence)] if t and _world_action(t.group("c"))), None)
+            tail = next((t for t in (p.search(sentence) for p in lexicon.VOICE_TAIL_RES) if t and _voice_chunk(t.group("c"))), None)
             if not tail or not lexicon.GOAL_THING_RE.search(sentence[:tail.start()].lower()):
                 break
             dropped.append(tail.group("c").strip())
@@ -596,8 +511,7 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
     def world_time(m: re.Match) -> str:  # "While the glaze sets, put ...": the speaker's time, which no goal holds
         said = m.group("c").lower()
         if lexicon.GOAL_THING_RE.search(said) or lexicon.TASK_CONTENT_RE.search(said) or lexicon.WORLD_TIME_HAZARD_RE.search(said) \
-                or any(re.search(rf"\b{re.escape(c)}\b", said) for c in lexicon.colour_names()) or _inexpressible(said):
-            # (a colour's name as a word: "offered" holds no red)
+                or any(c in said for c in lexicon.colour_names()) or _inexpressible(said):
             return m.group(0)
         dropped.append(m.group(0).strip())
         return ""
@@ -1649,8 +1563,6 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
                     if not set(re.findall(r"[a-z']+", s.lower())) <= lexicon.CHAT_WORDS) or text
     asked_by = effectors + [(m.group("who"), "who asks for the task") for m in lexicon.SOMEONE_WANTS_RE.finditer(text)]
     text = lexicon.SOMEONE_WANTS_RE.sub("i want", text)
-    text, askers = world_askers(text, "i want")  # "subs want the bottom layer orange", "the bride wants ...": one of that world
-    asked_by += [(who, "who asks for the task") for who in askers]
     asked_by += [(m.group("who") or m.group("pronoun"), "who said the task") for m in lexicon.SOMEONE_SAID_RE.finditer(text)]
     text = lexicon.SOMEONE_SAID_RE.sub("", text)
     text = lexicon.rewrite(lexicon.GOAL_FRAME_REWRITES, text)

@@ -79,7 +79,7 @@ from rpg.schema.lexicon import (
 )
 from rpg.schema.model import TaskSchema
 from rpg.schema.readers.common import item_sequence
-from rpg.schema.reading import apply_corrections, canon_color, moving_verb, region_name, spoken, world_askers
+from rpg.schema.reading import apply_corrections, canon_color, moving_verb, region_name, spoken
 from rpg.schema.structures import (
     STRUCTURE_KINDS,
     STRUCTURE_RE,
@@ -1253,7 +1253,6 @@ def _interpret(edit: str) -> EditPlan:
     edit = apply_corrections(edit)  # "put a red one on top, no wait, a green one": the correction wins, as in a task
     # "mkae it shorter, 3": two swapped letters corrected before the rewrites, which look for "make"
     edit = " ".join(_corrected(w, _known_words(), fuzzy=False) if w.islower() else w for w in edit.split())
-    edit = world_askers(edit, "Someone wants")[0]  # "subs want the bottom layer orange": one of the speaker's world asks
     for pattern, replacement in EDIT_REWRITES:
         edit = pattern.sub(replacement, edit)
     edit = CAUSED_MOTION_RE.sub(_caused_motion_in_edit, edit)  # "now ferry the tower to the back": move it there
