@@ -8062,3 +8062,24 @@ def test_forty_third_session_label_readings(text, expected):
 def test_forty_third_session_refusals(text):
     with pytest.raises(ParseError):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a wall's or pyramid's two layers said as one set of cubes under or on another: its bottom and top rows (the layers
+    # had been dropped, and "on top of" read upside down; "under two" had been refused as a quantity)
+    ("wall at the back of the table: two orange cubes under two pink cubes", ["wall(orange,orange|pink,pink)@back"]),
+    ("Build a wall: two orange cubes below two pink cubes.", ["wall(orange,orange|pink,pink)"]),
+    ("Build a wall: two pink cubes on top of two orange cubes.", ["wall(orange,orange|pink,pink)"]),
+    ("Build a pyramid: one green cube on top of two red cubes.", ["pyramid(red,red|green)"]),
+])
+def test_forty_third_session_layers_said_as_a_pair(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    "Use under five cubes.",  # a quantity still
+    "No one wants the red cube on the blue cube.",  # a negation ('no one')
+])
+def test_forty_third_session_quantity_and_negation_kept(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

@@ -2837,3 +2837,12 @@ def test_forty_second_session_steering_silent_classes_refused(tmp_path, base, ed
     fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     with pytest.raises(BadInput):
         steer(fam.path, edit)
+
+
+@pytest.mark.parametrize("edit", ["Nobody wants a green cube on top.", "Nobody wants the red cube moved to the back.",
+                                  "No one wants a green cube on top."])
+def test_forty_third_session_a_negated_asker_is_refused(tmp_path, edit):
+    """'Nobody' had been read as a person's name asking for the change (a green cube had been added)."""
+    fam = compiled("Stack the red cube on the blue cube.", tmp_path, name="fam").path
+    with pytest.raises(BadInput, match="negation"):
+        steer(fam, edit)

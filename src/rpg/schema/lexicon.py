@@ -716,7 +716,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      MOTION_WHY),
     ("action", TURNED_OVER_RE,
      MOTION_WHY),
-    ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none|nowhere)\b|n't\b"
+    ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none|nowhere|nobody|no-one|noone|no\s+one)\b|n't\b"
                  r"|\b(?:somewhere|anywhere|everywhere)\s+(?:other|else)\s+than\b|\banywhere\s+but\b"  # "somewhere other than the left half"
                  r"|\b(?:rather\s+than|instead\s+of)\s+(?=(?:(?:to\s+the\s+)?(?:left|right)|in\s+front|behind|next|beside|near|on(?:\s+top)?|onto|between"
                  r"|under|in|at|far(?:\s+away)?|above|below)(?:\s+(?:of|to|from))?\s+(?:the\s+[a-z\-]+(?:\s+[a-z\-]+)?\s+(?:cube|block|one|patch"
@@ -742,7 +742,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                  r"|as\s+(?:high|tall|many|much|far|close|long)\s+as\s+(?:you|it|possible|can)"
                  r"|as\s+far\s+(?:[a-z]+\s+){1,4}?as\s+(?:you|it|possible|can)"
                  r"|(?:hand|finger|thumb|palm)(?:'s|s)?\s+(?:widths?|breadths?|lengths?)|\bgap\s+of\b"
-                 r"|(?:over|more\s+than|at\s+least|at\s+most|fewer\s+than|less\s+than|up\s+to|under)\s+"
+                 r"|(?:over|more\s+than|at\s+least|at\s+most|fewer\s+than|less\s+than|up\s+to"
+                 r"|(?<!cubes\s)(?<!cube\s)(?<!blocks\s)(?<!block\s)(?<!bricks\s)(?<!ones\s)under)\s+"  # ("two orange cubes under
+                 # two pink cubes": a place, not fewer)
                  r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?=\s+(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|high|tall|levels?)\b))\b",
      "is a measured or vague quantity: rpg's relations are qualitative (next to, left of, far from) and "
      "its counts exact"),
@@ -3403,6 +3405,15 @@ cubes below, three green cubes above"): its bottom and top rows (:func:`layers_s
 
 _LAYER_WORDS = ("first", "second", "third", "fourth", "fifth")
 
+LAYER_PAIR_RE = re.compile(_LAYER_CUBES.replace("cubes>", "a>") + r"\s+(?:(?:go|goes|are|is|sit|sits|sitting|stand|stands|placed|set)\s+)?"
+                           r"(?:(?P<below>below|under|underneath|beneath)|(?P<above>above|over|on\s+top\s+of|atop|on))\s+"
+                           + _LAYER_CUBES.replace("cubes>", "b>") + r"(?!\s+(?:(?:go|goes|are|is|sit|sits)\s+)?(?:below|under|underneath|beneath"
+                           r"|above|over|on|atop)\b)")
+"""A structure's two layers said as one set of cubes under or on another ("a wall: two orange cubes under two pink cubes",
+"two pink cubes on top of two orange cubes"): its bottom and top rows (:func:`layers_said_relatively`; the layers had been
+dropped, or, said "on top of", read upside down)."""
+_LAYER_MORE_RE = re.compile(r"\b(?:middle|third|fourth|peak|apex|summit|(?:three|four|five|3|4|5)[\s-]+(?:rows?|layers?|levels?|tiers?|high|tall))\b")
+
 
 def layers_said_relatively(text: str) -> str:
     """``text`` (a layered structure's, lower case) with each layer said relative to another written as its place from the
@@ -3427,6 +3438,12 @@ def layers_said_relatively(text: str) -> str:
         text = new
     if re.search(r"\b(?:two|2)[\s-]+(?:rows?|layers?|levels?|tiers?|high|tall)\b", text):
         text = LAYER_BELOW_ABOVE_RE.sub(lambda m: f"{m.group('low')} in the bottom row, {m.group('high')} in the top row", text)
+    pairs = list(LAYER_PAIR_RE.finditer(text))
+    if len(pairs) == 1 and not _LAYER_SAID_RE.search(text) and not _LAYER_MORE_RE.search(text) \
+            and re.search(r"\b(?:walls?|pyramids?)\b", text):
+        m = pairs[0]
+        low, high = (m.group("a"), m.group("b")) if m.group("below") else (m.group("b"), m.group("a"))
+        text = text[:m.start()] + f"{low} in the bottom row, {high} in the top row" + text[m.end():]
     return text
 
 
@@ -3762,9 +3779,11 @@ def edit_label_dropped(m: re.Match) -> str:
 _NOT_CUBE = r"(?:\s+(?:one|cube|block))?"
 _EDIT_PLACE = (r"(?:at\s+the\s+(?:bottom|top|base)|on\s+(?:the\s+)?top|in\s+the\s+middle|on\s+the\s+(?:far\s+)?(?:left|right)(?:\s+end)?"
                r"|at\s+the\s+(?:far\s+)?(?:left|right)(?:\s+end)?)")
-_ASKER = (r"(?-i:[A-Z][a-z]+)(?<!The)(?<!This)(?<!That)(?<!Then)(?<!Now)(?<!Make)(?<!Put)|(?i:he|she|they|we|chat)"
+_ASKER = (r"(?-i:[A-Z][a-z]+)(?<!The)(?<!This)(?<!That)(?<!Then)(?<!Now)(?<!Make)(?<!Put)(?<!Nobody)(?<!Noone)(?<!Nothing)"
+          r"(?<!Neither)(?<!Never)(?<!None)|(?i:he|she|they|we|chat)"
           rf"|(?i:the|my|our|your)\s+(?i:{PERSON_NOUNS})")
-"""Who asks for a steering edit, said before it ("Maya says ...", "He'd like ...", "The curator asks for ...")."""
+"""Who asks for a steering edit, said before it ("Maya says ...", "He'd like ...", "The curator asks for ..."); never a
+word of negation ("Nobody wants a green cube on top" had added one)."""
 
 SOMEONE_SAID_RE = re.compile(
     r"(?:^|(?<=[.;:!?]\s))(?:(?:my|our|the)\s+(?P<who>supervisor|advisor|adviser|professor|prof|pi|colleague|labmate|teacher|mentor|tutor"
