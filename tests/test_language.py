@@ -8083,3 +8083,18 @@ def test_forty_third_session_layers_said_as_a_pair(text, expected):
 def test_forty_third_session_quantity_and_negation_kept(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text", [
+    # silent readings a hostile helper found (pre-existing): each now refused
+    "Put all but the A, B and C cubes in a row.",  # an exclusion (the three had been lined up)
+    "Put the A, B and C cubes in a row: C, A, B.",  # two orders (the second had been dropped)
+    "Build a pyramid of letter cubes; A goes up top.",  # a label pyramid's layer (dropped)
+    "Build a pyramid of the digit cubes 1 to 6, smallest up top.",
+    "Ban list: the red cube on the blue cube.",  # a label that negates (read as the goal)
+    "Veto note: the red cube on the blue cube.",
+    "Cancellation note: red on blue.",
+])
+def test_forty_third_session_silent_readings_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

@@ -633,7 +633,7 @@ would should must shall will can could may might has have had let lets going gon
 to", "the task consists in to"); another verb may say what was done or seen ("Do what you did: ...")."""
 
 FRAME_PREFIX_HAZARD_RE = re.compile(
-    r"\b(?:" + _TURNED_OR_REPEATED + "|" + _HANDLED + r"|not|no|never|none|nothing|without|except|unless|[a-z]+n't|cannot|if|when"
+    r"\b(?:" + _TURNED_OR_REPEATED + "|" + _HANDLED + r"|revers\w*|mirror\w*|opposite|invert\w*|flip\w*|not|no|never|none|nothing|without|except|unless|[a-z]+n't|cannot|if|when"
     r"|whenever|once|until|till|while|after|before|then|first|second|third|next|finally|last|tilt\w*|it|its|itself|them|they"
     r"|their|those|these|each|every|all|both|only|other|another|same|different|more|less|fewer|most|least|many|much|several"
     r"|few|like|unlike|as|instead|rather|else|order\w*|colou?r\w*|size|big|small|large|tall|high|low|wide|long|short"
@@ -716,7 +716,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      MOTION_WHY),
     ("action", TURNED_OVER_RE,
      MOTION_WHY),
-    ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none|nowhere|nobody|no-one|noone|no\s+one)\b|n't\b"
+    ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none|nowhere|nobody|no-one|noone|no\s+one"
+                 r"|ban|bans|banned|blacklist\w*|veto\w*|forbid\w*|prohibit\w*|taboo|cancel\w*|(?:all|everything|every\s+[a-z]+)\s+but)\b|n't\b"
                  r"|\b(?:somewhere|anywhere|everywhere)\s+(?:other|else)\s+than\b|\banywhere\s+but\b"  # "somewhere other than the left half"
                  r"|\b(?:rather\s+than|instead\s+of)\s+(?=(?:(?:to\s+the\s+)?(?:left|right)|in\s+front|behind|next|beside|near|on(?:\s+top)?|onto|between"
                  r"|under|in|at|far(?:\s+away)?|above|below)(?:\s+(?:of|to|from))?\s+(?:the\s+[a-z\-]+(?:\s+[a-z\-]+)?\s+(?:cube|block|one|patch"

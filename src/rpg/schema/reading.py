@@ -2783,7 +2783,14 @@ def explicit_labels(f: Features) -> list[str]:
         m = re.search(r"(?<![\w-])([A-Z])((?:\s+[A-Z]){2,})(?![\w-])", f.original)  # "line up A B C": capitals are letters
         # (bare digits stay unread: "line 1 2 3" may be a count as well as the digit cubes)
     if m:
-        return [m.group(1)] + re.findall(r"[A-Z0-9]", m.group(2))
+        labels = [m.group(1)] + re.findall(r"[A-Z0-9]", m.group(2))
+        for other in re.finditer(r"(?<![\w'-])([A-Z0-9])((?:\s*,\s*(?:and\s+)?[A-Z0-9]|\s+and\s+[A-Z0-9]){1,})(?![\w'-])", f.original):
+            again = [other.group(1)] + re.findall(r"[A-Z0-9]", other.group(2))
+            if sorted(again) == sorted(labels) and again != labels:  # "the A, B and C cubes in a row: C, A, B" (the second
+                # order had been dropped)
+                raise ParseError(f"\"{f.original[:80]}\" lists the cubes in two different orders ({', '.join(labels)}; "
+                                 f"{', '.join(again)}); say the order once (e.g. \"from left to right: {', '.join(again)}\"), or use --model")
+        return labels
     r = re.search(r"\b([A-Z]|\d)\s+(?:down\s+|up\s+)?(?:to|through|thru)\s+([A-Z]|\d)\b", f.original)
     if not r and f.has("letter", "letters", "number", "numbers", "digit", "digits", "label", "labels"):
         r = re.search(r"(?<![\w-])([A-Z]|\d)\s*[-\u2013]\s*([A-Z]|\d)\b(?!\s*[-\u2013])", f.original)  # "the digit cubes 0-4"

@@ -233,9 +233,9 @@ base is three cubes (pink, orange, cyan)", "bottom layer pink, orange, cyan"), n
 that size, whose layers a reader knows)."""
 
 
-_LAYER_ROLE_SAID_RE = re.compile(r"\b(?:on|at|in|as)\s+(?:the\s+)?(?:very\s+)?(?:bottom|base|top|apex|peak|summit|tip|middle|foundation)\b"
-                                 r"|\b(?:bottom|top|base|middle|upper|lower|first|second|third)\s+(?:layer|row|level|tier)s?\b")
-"""A layer of a pyramid given a cube ("B and A on the bottom", "C at the apex", "the top layer")."""
+_LAYER_ROLE_SAID_RE = re.compile(r"\b(?:bottom|base|top|apex|peak|summit|tip|middle|foundation|upper|lower|layers?|rows?|levels?|tiers?"
+                                 r"|highest|lowest)\b")
+"""A layer of a pyramid given a cube ("B and A on the bottom", "C at the apex", "the top layer", "A goes up top")."""
 
 
 def _skipped_layers(f: Features, base: int, dims: int, roles: dict) -> bool:
