@@ -8094,6 +8094,10 @@ def test_forty_third_session_quantity_and_negation_kept(text):
     "Ban list: the red cube on the blue cube.",  # a label that negates (read as the goal)
     "Veto note: the red cube on the blue cube.",
     "Cancellation note: red on blue.",
+    "Place the first, second and third cubes in a row.",  # cubes by ranks nobody defined (four had been made up)
+    "Put cube one on cube two.",  # cubes numbered in words (two coloured cubes had been made up)
+    "Block four on the red patch.",
+    "Block 10 on the red patch.",
 ])
 def test_forty_third_session_silent_readings_refused(text):
     with pytest.raises(BadInput):

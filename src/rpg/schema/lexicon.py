@@ -761,7 +761,13 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
              rf"(?!\s+(?:{COLOR_RE}|grey|gr[ae]y)\b)",  # ("it is light blue": a colour)
      "asks for a size: every cube is the same size (5 cm), so no cube is bigger or smaller than another"),
     ("reference", r"\bthe\s+(?:very\s+)?(?:first|second|third|fourth|fifth|sixth|last|next|previous|former|latter)"
+                  r"(?:(?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:first|second|third|fourth|fifth|sixth|last))*"  # ("the first, second
+                  # and third cubes": four cubes had been made up)
                   r"\s+(?:(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?))\b"
+                  # "cube one", "block four": a cube numbered in words (the digit cube, or an order nobody defined; a coloured cube
+                  # had been made up)
+                  r"|\b(?:cube|block)\s+(?:one|two|three|four|five|six|seven|eight|nine|ten|\d{2,})\b(?!\s*(?:[-x\u00d7]|cubes?|blocks?"
+                  r"|high|tall|wide|long|deep|layers?|levels?|rows?|more|of)\b)"
                   r"|\b(?:put|place|move|set|slide|push|bring|shift)\s+the\s+(?:first|second|third|fourth|last|other)\s+(?:tower|stack"
                   r"|pile|row|line)\b"  # "Put the second tower on the white patch": which tower (the first had been moved)
                   r"|\beach\s+(?:one\s+|cube\s+|block\s+)?(?:on(?:\s+top\s+of)?|onto|above|atop|under|below|beneath)\s+the\s+"
