@@ -8102,3 +8102,22 @@ def test_forty_third_session_quantity_and_negation_kept(text):
 def test_forty_third_session_silent_readings_refused(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, end, fixed", [
+    # a tower's order said free with an end given to one of its cubes: that end fixed, the rest free (each had been refused)
+    ("Stack A, B and C into one tower. Any order is fine, but A must be at the bottom.", "bottom", "letter_a"),
+    ("Tower: purple base, then the yellow and the white cubes above it in any order.", "bottom", "purple"),
+    ("Stack red, blue and green into one tower in any order, with green on top.", "top", "green"),
+])
+def test_forty_third_session_any_order_with_an_end(text, end, fixed):
+    from rpg.domain.predicates import AnchoredStack
+
+    goal = check_feasibility(parse(text)).goal_predicate()
+    assert isinstance(goal, AnchoredStack) and getattr(goal, end)
+    assert (goal.objects[0] if end == "bottom" else goal.objects[-1]) == fixed
+
+
+def test_forty_third_session_whichever_goes_where_frees_the_order():
+    goal = check_feasibility(parse("Stack the red and blue cubes, whichever goes where.")).goal_predicate()
+    assert type(goal).__name__ == "UnorderedStack"

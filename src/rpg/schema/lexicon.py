@@ -1945,6 +1945,7 @@ ANY_ORDER_RE = re.compile(
     r"|works(?:\s+for\s+you)?|goes|will\s+do|suits\s+you|you\s+see\s+fit))?"
     r"|(?:the\s+)?order\s+(?:does\s*n[o']?t|doesn't|is\s*n[o']?t|isn't)\s+(?:matter|important)|regardless\s+of\s+(?:the\s+)?order"
     r"|(?:the\s+)?order\s+is\s+(?:unimportant|irrelevant)"
+    r"|whichever(?:\s+(?:one|cube|block))?\s+goes\s+where|in\s+whichever\s+order"  # "..., whichever goes where"
     r"|(?:the\s+)?order\s+is\s+(?:up\s+to\s+(?:you|the\s+(?:policy|robot|agent|model))|your\s+(?:choice|call)|free|flexible|open)|order\s+free\b"
     r"|(?:the\s+)?order\s+(?:is\s+)?(?:not|n't|never)\s+(?:annotated|specified|given|stated|labell?ed|recorded|constrained)"
     r"|(?:in\s+)?(?:any|whatever|whichever)\s+order\s+(?:you\s+(?:like|want|choose|prefer|wish|see\s+fit)|suits\s+you|works\s+for\s+you)"
@@ -3276,6 +3277,14 @@ ORDER_WORDS = re.compile(r"\b(rainbow|alternat\w*|(?<!any\s)order\w*|sequence|gr
 """Words that give a stack's cubes places (an order, a role): a stack read with any of them
 keeps its order."""
 
+
+TOWER_END_SAID_RE = re.compile(
+    rf"(?<![\w'-])(?P<c>(?i:{COLOR_RE})|[A-Z]|\d)(?:\s+(?i:block|cube|one))?\s+(?i:(?:(?:must|should|has\s+to|needs\s+to|is\s+to|will)\s+"
+    r"(?:be|go|sit|stand)\s+|is\s+|goes\s+|sits\s+|stands\s+|stays\s+)?(?:(?:at|on)\s+(?:the\s+)?(?:very\s+)?(?P<end>bottom|base|top)"
+    r"|(?P<end2>base|bottom))\b(?!\s+of\b))")
+"""One cube given an end of a tower whose order the text leaves free ("Any order is fine, but A must be at the bottom",
+"Tower: purple base, then the yellow and the white cubes above it in any order"): read by
+:func:`rpg.schema.readers.any_order_with_ends`."""
 
 STACK_ROLE_RE = re.compile(
     r"(?:\bwith|[,;.]|\b(?:so|such)\s+that|\bwhere)\s+(?:the\s+|a\s+|an\s+)?(?P<c>[a-z]+)\s+(?:(?:block|cube|one)\s+)?"

@@ -62,6 +62,7 @@ from rpg.schema.reading import (
     MAX_RAW_CHARS,
     Features,
     Inexpressible,
+    canon_color,
     ParseError,
     color_mentions,
     explicit_labels,
@@ -276,6 +277,41 @@ def free_listed_orders(f: Features, schema: TaskSchema) -> TaskSchema:
             if type(q) is OnPatch and q.a == objs[0] and q in others:
                 out[j] = StackOnPatch(q.a, q.patch, tuple(sorted(objs)))
     return _with_parts(schema, goal, parts, out)
+
+
+def any_order_with_ends(f: Features, schema: TaskSchema) -> TaskSchema | None:
+    """A reading of a text that leaves a tower's order free ("in any order") and gives an end to one of its cubes, or to
+    one each ("Stack A, B and C into one tower. Any order is fine, but A must be at the bottom.", "Tower: purple base,
+    then the yellow and the white cubes above it in any order"): its one :class:`~rpg.schema.Stack` made an
+    :class:`~rpg.domain.predicates.AnchoredStack` with those ends fixed and the rest free; None where the reading has
+    another stack, a cube named for an end is not one of its own or its colour is shared, an end is said twice, or a
+    cube of it is related to something else by itself (the order read would be judged)."""
+    goal = schema.goal_predicate()
+    parts = goal.children() if isinstance(goal, And) else [goal]
+    stacks = [p for p in parts if type(p) is Stack]
+    if len(stacks) != 1 or any(isinstance(p, (Stack, AnchoredStack, UnorderedStack)) and p is not stacks[0]
+                               for q in parts for p in q.walk()):
+        return None
+    stack = stacks[0]
+    names = {a.name: a.color if a.kind == "colored_cube" else a.label for a in schema.assets
+             if a.kind == "colored_cube" or (a.kind == "semantic_cube" and a.label)}
+    ends: dict[str, str] = {}
+    for m in lexicon.TOWER_END_SAID_RE.finditer(f.original):
+        said = canon_color(m.group("c").lower()) if m.group("c").lower() in lexicon.COLORS or len(m.group("c")) > 1 else m.group("c")
+        owners = [n for n in stack.objects if names.get(n) == said]
+        end = "top" if (m.group("end") or "").lower() == "top" else "bottom"
+        if len(owners) != 1 or ends.get(end, owners[0]) != owners[0]:
+            return None
+        ends[end] = owners[0]
+    if not ends or len(set(ends.values())) != len(ends):
+        return None
+    others = [q for q in parts if q is not stack and set(q.object_names()) & set(stack.objects)]
+    if not all(isinstance(q, InRegion) for q in others):
+        return None
+    objs = [n for n in stack.objects if n not in ends.values()]
+    objs = ([ends["bottom"]] if "bottom" in ends else []) + objs + ([ends["top"]] if "top" in ends else [])
+    anchored = AnchoredStack(objects=tuple(objs), bottom="bottom" in ends, top="top" in ends)
+    return _with_parts(schema, goal, parts, [anchored if q is stack else q for q in parts])
 
 
 def disjoint_regions(f: Features, schema: TaskSchema) -> ParseError | None:
@@ -608,6 +644,8 @@ def _read(instruction: str) -> TaskSchema:
                         gap = merged
                     elif not (re.search(r"\bin any order\b", f.text) and any(type(p) is Stack for p in read.goal_predicate().walk())):
                         return read
+                    elif (anchored := any_order_with_ends(f, read)) is not None:
+                        return anchored  # "any order is fine, but A must be at the bottom": that end fixed, the rest free
                     # "a tower of red, green and blue, doesn't matter which order, and put yellow to the left of it": the
                     # order said free and the tower read in order (the clause relating it had kept its list's order)
                     gap = ParseError(f"read \"{f.original[:80]}\" as: {read.goal_summary}; but 'in any order' leaves the order "
