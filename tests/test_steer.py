@@ -2846,3 +2846,19 @@ def test_forty_third_session_a_negated_asker_is_refused(tmp_path, edit):
     fam = compiled("Stack the red cube on the blue cube.", tmp_path, name="fam").path
     with pytest.raises(BadInput, match="negation"):
         steer(fam, edit)
+
+
+def test_forty_third_session_a_relation_said_again_instead_keeps_the_rest(tmp_path):
+    """steer_stranger26 t016: a standalone edit giving two cubes of the task another relation "instead" exchanges that one
+    relation (the orange cube's patch had been lost as a pivot)."""
+    got, intent = _meaning_after(tmp_path, "Put the orange cube on the purple patch, and the cyan cube directly behind the "
+                                 "orange cube.", ["Revised brief: the cyan cube stands in front of the orange cube instead."])
+    assert got == ["in_front_of(cyan,orange)", "on_patch(orange,patch:purple)"] and intent == "modify"
+
+
+def test_forty_third_session_a_cube_stacked_instead_does_not_replace_the_base_cubes_place(tmp_path):
+    """'Put a brown cube on the gray cube instead' of a gray cube in a corner had replaced the corner (the stack's atom names
+    its bottom first); the brown cube has no placement to replace, so the edit is refused."""
+    fam = compiled("Put the gray cube in the back left corner.", tmp_path, name="fam").path
+    with pytest.raises(BadInput):
+        steer(fam, "Put a brown cube on the gray cube instead.")

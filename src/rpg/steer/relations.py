@@ -593,8 +593,10 @@ def replaced_placement(clause: str, schema: TaskSchema, parse) -> tuple[str, Tas
     same_pair = [a for a in old if (m := re.fullmatch(r"[a-z_]+(?:\[[^\]]*\])?\(([^(),;|]+),([^(),;|]+)\)(?:@\w+)?", a))
                  and {m.group(1), m.group(2)} == {pair.group(1), pair.group(2)}]
     same_kind = [a for a in old if a.startswith(f"{kind}({pair.group(1)},")] if kind in ("on_patch", "in_region") else []
+    mover = pair.group(2) if kind == "stack" else pair.group(1)  # a stack's atom names its bottom first: the cube put on
+    # it is the one placed ("a brown cube on the gray cube instead" had replaced the gray cube's corner)
     subject = [a for a in old if (m := re.fullmatch(r"(?:left_of|right_of|in_front_of|behind|next_to|far_from|near|on_patch|in_region)"
-                                                r"\(([^(),;|]+),[^();|]+\)(?:@\w+)?", a)) and m.group(1) == pair.group(1)]
+                                                r"\(([^(),;|]+),[^();|]+\)(?:@\w+)?", a)) and m.group(1) == mover]
     replaced = same_pair or same_kind or subject  # else the one placement the cube has of its own: "the black one on a blue
     # patch instead" of "black far from white"
     if len(replaced) != 1:

@@ -377,6 +377,12 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
             return sorted_piles
         schema = _same_cubes(plan.text, ref_schema, schema)
         schema = _same_cubes_kept(plan.text, ref_schema, schema, ("same", True) in plan.checks)
+        instead = re.search(r"(?i)\binstead\b(?!\s+of\b)", plan.text)
+        replaced = replaced_placement(re.sub(r"(?i)\s*\binstead\b(?!\s+of\b)", "", text), ref_schema, parse) \
+            if instead and _relates_a_related_pair(schema, ref_schema) else None
+        if replaced is not None:  # "the cyan cube stands in front of the orange cube instead" of a task that also puts the
+            # orange cube on a patch: that one placement exchanged, the rest kept (the patch had been lost as a pivot)
+            return replaced[1], replaced[0], "modify"
         if relation_of(schema) and relation_of(ref_schema) and same_assets(schema, ref_schema):
             return schema, text, "modify"  # the same cubes in another relation
         if _stacks_a_new_cube_on_the_task(schema, ref_schema):  # "now put the green cube on the red cube": on top of it
@@ -1048,6 +1054,19 @@ def _relation_role(sel: dict, ref: TaskSchema) -> set[str] | None:
     if len(betweens) == 1 and set(sel) == {"position"} and sel["position"] in ("bottom", "top"):
         return {betweens[0].b, betweens[0].c}  # "make the ends gray": both ends, said as two recolours
     return None
+
+
+def _relates_a_related_pair(schema: TaskSchema, ref: TaskSchema) -> bool:
+    """Whether ``schema`` (a standalone edit read) is one relation between two cubes of ``ref`` that ``ref`` also relates to
+    each other ("the cyan cube in front of the orange cube" of a task with the cyan cube behind it): no cube of its own."""
+    from rpg.schema.meaning import descriptor, meaning
+
+    said = meaning(schema)
+    pair = re.fullmatch(r"[a-z_]+(?:\[[^\]]*\])?\(([^(),;|]+),([^(),;|]+)\)", said[0]) if len(said) == 1 else None
+    if pair is None or not {descriptor(a) for a in schema.assets} <= {descriptor(a) for a in ref.assets}:
+        return False
+    return any((m := re.fullmatch(r"[a-z_]+(?:\[[^\]]*\])?\(([^(),;|]+),([^(),;|]+)\)(?:@\w+)?", a))
+               and {m.group(1), m.group(2)} == {pair.group(1), pair.group(2)} for a in meaning(ref))
 
 
 STACKED_IN_ORDER_RE = re.compile(
