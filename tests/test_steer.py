@@ -2862,3 +2862,10 @@ def test_forty_third_session_a_cube_stacked_instead_does_not_replace_the_base_cu
     fam = compiled("Put the gray cube in the back left corner.", tmp_path, name="fam").path
     with pytest.raises(BadInput):
         steer(fam, "Put a brown cube on the gray cube instead.")
+
+
+def test_forty_third_session_same_colours_with_a_recolour_is_refused(tmp_path):
+    """steer_stranger26 t041: "same colours left to right, red first" had been read as every cube made red."""
+    fam = compiled("Stack red, green and blue, bottom to top.", tmp_path, name="fam").path
+    with pytest.raises(BadInput, match="keeps the colours"):
+        steer(fam, "make it a row instead, same colours left to right, red first")
