@@ -233,9 +233,11 @@ base is three cubes (pink, orange, cyan)", "bottom layer pink, orange, cyan"), n
 that size, whose layers a reader knows)."""
 
 
-_LAYER_ROLE_SAID_RE = re.compile(r"\b(?:bottom|base|top|apex|peak|summit|tip|middle|foundation|upper|lower|layers?|rows?|levels?|tiers?"
-                                 r"|highest|lowest)\b")
-"""A layer of a pyramid given a cube ("B and A on the bottom", "C at the apex", "the top layer", "A goes up top")."""
+_LAYER_ROLE_SAID_RE = re.compile(r"\b(?:bottom|top|apex|peak|summit|tip|middle|foundation|upper|lower|highest|lowest)\b"
+                                 r"|\b(?:on|at|in|as)\s+(?:the\s+)?base\b|\bbase\s+(?:layer|row|level|tier)s?\b"
+                                 r"|\b(?:first|second|third|fourth|next|last|each|every|other)\s+(?:layer|row|level|tier)s?\b")
+"""A layer of a pyramid given a cube ("B and A on the bottom", "C at the apex", "the top layer", "A goes up top"); a base
+said by its size ("with a 3x3 base", "a base of 3") or a count of layers is none."""
 
 
 def _skipped_layers(f: Features, base: int, dims: int, roles: dict) -> bool:
