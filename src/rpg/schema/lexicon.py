@@ -3284,6 +3284,19 @@ TOWER_END_SAID_RE = re.compile(
 "Tower: purple base, then the yellow and the white cubes above it in any order"): read by
 :func:`rpg.schema.readers.any_order_with_ends`."""
 
+ORDER_BEYOND_ENDS_RE = re.compile(r"(?i)\b(?:then|next|followed|after|second|middle|third|fourth|2nd|3rd|above|below|under|over)\b")
+"""Words that say more of a tower's order than its ends (:func:`rpg.schema.readers.any_order_with_ends`: "A at the bottom,
+then B")."""
+
+FREE_ORDER_PART_RE = re.compile(r"(?i)\b(?:any|either|whatever|whichever|no\s+particular)\s+(?:order|goes)\b")
+"""A part of a text that says the rest of a tower's order is free ("then the yellow and the white cubes above it in any
+order"): its words say no more of the order (:func:`rpg.schema.readers.any_order_with_ends`)."""
+
+COLOURS_KEPT_RE = re.compile(r"(?i)\b(?:same|the\s+old|original|unchanged)\s+colou?rs?\b|\bcolou?rs?\s+(?:stay|remain|unchanged"
+                             r"|as\s+(?:they\s+are|before))")
+"""Words of a steering edit that keep the cubes' colours ("same colours left to right"): with a recolour read as well, the
+edit is refused (:func:`rpg.steer.edits.interpret`)."""
+
 STACK_ROLE_RE = re.compile(
     r"(?:\bwith|[,;.]|\b(?:so|such)\s+that|\bwhere)\s+(?:the\s+|a\s+|an\s+)?(?P<c>[a-z]+)\s+(?:(?:block|cube|one)\s+)?"
     r"(?:(?:is|goes|sits|stands|(?:should|must|will)\s+be|ends\s+up)\s+)?"

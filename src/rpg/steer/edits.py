@@ -28,6 +28,7 @@ from rpg.schema.lexicon import (
     BARE_ORDER_RE,
     CAUSED_MOTION_RE,
     COLOR_RE,
+    COLOURS_KEPT_RE,
     COUNT_WORD_RE,
     COUNTED_RUNS_RE,
     EDIT_ADDITIVE_RE,
@@ -998,8 +999,7 @@ def interpret(edit: str) -> EditPlan:
     plan = _interpret_material(edit)
     _refuse_a_sentence_unread(edit, plan)
     _refuse_a_place_before_or_after_resizing(edit, plan)
-    kept = re.search(r"(?i)\b(?:same|the\s+old|original|unchanged)\s+colou?rs?\b|\bcolou?rs?\s+(?:stay|remain|unchanged|as\s+(?:they\s+are|before))",
-                     edit)
+    kept = COLOURS_KEPT_RE.search(edit)
     if kept and any(o.op == "recolor" for o in plan.ops):  # "make it a row instead, same colours left to right, red first":
         # 'red first' had been read as every cube made red
         raise SteerError(f"'{kept.group(0)}' in the edit \"{edit.strip()[:80]}\" keeps the colours, and the edit reads as a "

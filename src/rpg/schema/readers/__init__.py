@@ -297,8 +297,8 @@ def any_order_with_ends(f: Features, schema: TaskSchema) -> TaskSchema | None:
              if a.kind == "colored_cube" or (a.kind == "semantic_cube" and a.label)}
     ends: dict[str, str] = {}
     rest = " ".join(part for part in re.split(r"[,;.:!?]", lexicon.TOWER_END_SAID_RE.sub(" ", f.original))
-                    if not re.search(r"(?i)\b(?:any|either|whatever|whichever|no\s+particular)\s+(?:order|goes)\b", part))
-    if re.search(r"(?i)\b(?:then|next|followed|after|second|middle|third|fourth|2nd|3rd|above|below|under|over)\b", rest):
+                    if not lexicon.FREE_ORDER_PART_RE.search(part))
+    if lexicon.ORDER_BEYOND_ENDS_RE.search(rest):
         return None  # "A at the bottom, then B": more of the order said than its ends (it had been dropped); a part that
         # says the rest is free ("then the yellow and the white cubes above it in any order") says no more
     for m in lexicon.TOWER_END_SAID_RE.finditer(f.original):
