@@ -2870,3 +2870,23 @@ def test_forty_third_session_same_colours_with_a_recolour_is_refused(tmp_path):
     fam = compiled("Stack red, green and blue, bottom to top.", tmp_path, name="fam").path
     with pytest.raises(BadInput, match="keeps the colours"):
         steer(fam, "make it a row instead, same colours left to right, red first")
+
+
+def test_forty_third_session_keep_everything_but_is_no_exclusion(tmp_path):
+    """'keep everything but make it a tower' turns the task ('everything but' before a verb is no 'all but' exclusion, which
+    had refused it as a negation)."""
+    assert _steered(tmp_path, "Place four yellow cubes in a row", "keep everything but make it a tower") == [
+        ("pivot", ["stack(yellow,yellow,yellow,yellow)"])]
+
+
+def test_forty_third_session_an_additional_cube_never_replaces_the_task(tmp_path):
+    """steer_stranger23 y002: "Additional traffic: a pink cube onto the orange patch." had become a new task without the
+    green cube (a pivot); an edit that says it adds keeps the task or is refused."""
+    fam = compiled("Put the green cube on the orange patch.", tmp_path, name="fam").path
+    try:
+        r = steer(fam, "Additional traffic: a pink cube onto the orange patch.")
+    except BadInput:
+        return
+    from rpg.schema.meaning import meaning
+
+    assert "green" in " ".join(meaning(Family(fam).schema(r.version)))

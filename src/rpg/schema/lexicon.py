@@ -717,7 +717,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("action", TURNED_OVER_RE,
      MOTION_WHY),
     ("negation", r"\b(?:not|never|without|except|excluding|avoid(?:s|ing)?|neither|nor|none|nowhere|nobody|no-one|noone|no\s+one"
-                 r"|ban|bans|banned|blacklist\w*|veto\w*|forbid\w*|prohibit\w*|taboo|cancel\w*|(?:all|everything|every\s+[a-z]+)\s+but)\b|n't\b"
+                 r"|ban|bans|banned|blacklist\w*|veto\w*|forbid\w*|prohibit\w*|taboo|cancell?ations?"
+                 rf"|(?:all|everything|every\s+[a-z]+)\s+but(?=\s+(?:the|a|an|one|two|three|four|five|{COLOR_RE}|(?-i:[A-Z])\b)))\b|n't\b"
+                 # ("keep everything but make it a tower": a turn, no exclusion; "cancel that" takes a change back)
                  r"|\b(?:somewhere|anywhere|everywhere)\s+(?:other|else)\s+than\b|\banywhere\s+but\b"  # "somewhere other than the left half"
                  r"|\b(?:rather\s+than|instead\s+of)\s+(?=(?:(?:to\s+the\s+)?(?:left|right)|in\s+front|behind|next|beside|near|on(?:\s+top)?|onto|between"
                  r"|under|in|at|far(?:\s+away)?|above|below)(?:\s+(?:of|to|from))?\s+(?:the\s+[a-z\-]+(?:\s+[a-z\-]+)?\s+(?:cube|block|one|patch"
@@ -3639,7 +3641,7 @@ EDIT_OF_THE_TASK_RE = re.compile(r"(?i)\b(?:instead|like\s+(?:that|this|it|befor
 """Words that make an edit stated as a whole task about the task's own cubes ("tower in the back instead",
 "3 towers like that")."""
 
-EDIT_ADDITIVE_RE = re.compile(r"\b(?:also|too|as well|add|additionally|another|in addition|plus|(?:\d+|one|two|three|a\s+few|some)\s+more"
+EDIT_ADDITIVE_RE = re.compile(r"\b(?:also|too|as well|add|additionally|additional|another|in addition|plus|(?:\d+|one|two|three|a\s+few|some)\s+more"
                               r"|an?\s+(?:second|third|fourth|separate|further)\s+(?:(?:[a-z]+\s+){0,2}?)(?:towers?|stacks?|piles?|heaps?|rows?"
                               r"|lines?|walls?|pyramids?|grids?|circles?|rings?|columns?))\b")
 """Words that make an edit an addition: what it states joins the task, the rest is kept ("a second heap of three brown

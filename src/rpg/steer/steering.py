@@ -728,8 +728,16 @@ def _refuse_pivot_that_loses_cubes(edit: str, ref: TaskSchema, schema: TaskSchem
     Raises:
         SteerError: the reading drops cubes the edit does not say to drop.
     """
+    from rpg.schema.meaning import descriptor
+
     old = [a for a in ref.assets if a.kind != "goal_patch"]
     new = [a for a in schema.assets if a.kind != "goal_patch"]
+    lost = {descriptor(a) for a in old} - {descriptor(a) for a in new}
+    if intent == "pivot" and lost and EDIT_ADDITIVE_RE.search(edit.lower()):  # "Additional traffic: a pink cube onto the orange
+        # patch." (the green cube had been lost: the label dropped, the rest read as a new task)
+        raise SteerError(f"the edit says it adds ('{EDIT_ADDITIVE_RE.search(edit.lower()).group(0)}') but reads as a new task "
+                         f"without the cubes of v{reference} ({', '.join(sorted(lost))}); say the addition with a verb (e.g. \"also put "
+                         "...\"), or use --model")
     as_structure = re.search(rf"(?i)\b(?:as|into|to)\s+(?:a|one)\s+{STRUCTURE_RE}|\bmake\s+(?:it|them)\s+(?:a|one)\s+{STRUCTURE_RE}", edit)
     if intent != "pivot" or len(new) >= len(old) or re.search(rf"\b(?:\d+|{'|'.join(NUMBER_WORDS)})\b", edit, re.IGNORECASE) or (
             re.search(STRUCTURE_RE, edit, re.IGNORECASE) and not as_structure):
