@@ -237,7 +237,9 @@ _LAYER_ROLE_SAID_RE = re.compile(r"\b(?:bottom|top|apex|peak|summit|tip|middle|f
                                  r"|\b(?:on|at|in|as)\s+(?:the\s+)?base\b|\bbase\s+(?:layer|row|level|tier)s?\b"
                                  r"|\b(?:first|second|third|fourth|next|last|each|every|other)\s+(?:layer|row|level|tier)s?\b")
 """A layer of a pyramid given a cube ("B and A on the bottom", "C at the apex", "the top layer", "A goes up top"); a base
-said by its size ("with a 3x3 base", "a base of 3") or a count of layers is none."""
+said by its size ("with a 3x3 base", "a base of 3") or a count of layers is none.  Refused only with a label, a rank or
+an order said as well (layers said by their counts alone, "base is 3 horizontal blocks, two blocks as middle layers and
+one block on top", a paper session's, are sizes)."""
 
 
 def _skipped_layers(f: Features, base: int, dims: int, roles: dict) -> bool:
@@ -403,7 +405,9 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
     order = ordering_of(f)
     sizes = [(base - k) ** (dims - 1) for k in range(base)]
     roles = layer_roles(f, base) if material == "colors" else {}
-    if material != "colors" and _LAYER_ROLE_SAID_RE.search(f.text):
+    if material != "colors" and _LAYER_ROLE_SAID_RE.search(f.text) and re.search(
+            r"(?<![\w'])(?-i:[A-Z])(?![\w'])|(?<![\w.])\d(?![\w.])(?!\s+(?:[a-z]+\s+)?(?:blocks?|cubes?|layers?|levels?|rows?|tiers?|high|wide)\b)"
+            r"|\b(?:smallest|largest|biggest|highest|lowest|first|last)\b", f.original):
         # "Pyramid of three: the letter cubes B and A on the bottom, the letter C cube at the apex": layers of label cubes,
         # which no reader judges (their layers had been dropped: any cube at the apex passed)
         raise ParseError(f"\"{f.original[:80]}\" puts label cubes in a pyramid's layers, which the builtin parser does not read; "
