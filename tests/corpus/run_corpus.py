@@ -90,7 +90,7 @@ STRANGER_SETS = {
     "stranger53": ("stranger53.yaml", "STRANGER set 53 (stranger53.yaml, transfer measure of the fortieth session; development material from the forty-first)"),
     "stranger54": ("stranger54.yaml", "STRANGER set 54 (stranger54.yaml, transfer measure of the forty-first session; development material from the forty-second)"),
     "stranger55": ("stranger55.yaml", "STRANGER set 55 (stranger55.yaml, transfer measure of the forty-second session; development material from the forty-third)"),
-    "stranger56": ("stranger56.yaml", "STRANGER set 56 (stranger56.yaml, written at the start of the forty-third session: aggregates only)"),
+    "stranger56": ("stranger56.yaml", "STRANGER set 56 (stranger56.yaml, transfer measure of the forty-third session; development material from the forty-fourth)"),
 }
 SPLITS = HERE / "splits.yaml"
 

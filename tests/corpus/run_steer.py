@@ -95,7 +95,7 @@ DEVELOPMENT = {
     "stranger24": ("steer_stranger24.yaml", "STRANGER steering set 24 (steer_stranger24.yaml, transfer measure of the fortieth session; development material from the forty-first)"),
     "stranger25": ("steer_stranger25.yaml", "STRANGER steering set 25 (steer_stranger25.yaml, transfer measure of the forty-first session; development material from the forty-second)"),
     "stranger26": ("steer_stranger26.yaml", "STRANGER steering set 26 (steer_stranger26.yaml, transfer measure of the forty-second session; development material from the forty-third)"),
-    "stranger27": ("steer_stranger27.yaml", "STRANGER steering set 27 (steer_stranger27.yaml, written at the start of the forty-third session: aggregates only)"),
+    "stranger27": ("steer_stranger27.yaml", "STRANGER steering set 27 (steer_stranger27.yaml, transfer measure of the forty-third session; development material from the forty-fourth)"),
 }
 UNSEEN = HERE / "steer_unseen.yaml"
 SPLITS = HERE / "splits.yaml"
