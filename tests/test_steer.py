@@ -2890,3 +2890,19 @@ def test_forty_third_session_an_additional_cube_never_replaces_the_task(tmp_path
     from rpg.schema.meaning import meaning
 
     assert "green" in " ".join(meaning(Family(fam).schema(r.version)))
+
+
+@pytest.mark.parametrize("edit", ["It's too tall for the aquarium lid, take one blue off.", "Take off one of the blues.",
+                                  "Remove a blue cube."])
+def test_forty_fourth_session_one_of_a_run_of_identical_cubes_is_removed(tmp_path, edit):
+    """steer_stranger27 r047: "take one blue off" a tower green, green, blue, blue had removed both blue cubes ('one blue'
+    without a noun was no count); one of two blue cubes standing together leaves the same tower whichever goes."""
+    assert _meaning_after(tmp_path, "Make a tower of four cubes: green, green, blue, blue from the bottom.", [edit]) == (
+        ["stack(green,green,blue)"], "tweak")
+
+
+def test_forty_fourth_session_one_of_identical_cubes_apart_is_not_guessed(tmp_path):
+    """Blue cubes that do not stand together: which one goes changes the tower, so the edit is refused."""
+    fam = compiled("Make a tower of four cubes: green, blue, green, blue from the bottom.", tmp_path, name="fam").path
+    with pytest.raises(BadInput, match="does not say which"):
+        steer(fam, "Take one blue off.")

@@ -499,8 +499,10 @@ def _selector_of(text: str) -> dict | None:
         if re.search(r"\b(?:layers?|levels?|rows?|tiers?|storey|story|floor)\b", text):
             return {"layer": where}
         return {"position": where}
-    counted = re.match(rf"(?:(\d+|one|a|an|single)\s+(?:of\s+the\s+)?)({COLOR_RE})\s+(?:blocks?|cubes?|ones?)\b", text)
-    if counted:  # "one red block", "2 of the blue cubes": that many of that colour, not all of them
+    counted = re.match(rf"(?:(\d+|one|a|an|single)\s+(?:of\s+the\s+)?)({COLOR_RE})(?:\s+(?:blocks?|cubes?|ones?)\b|s?(?=\s*(?:"
+                       r"off|away|out|from|$|[,.;!])))", text)
+    if counted:  # "one red block", "2 of the blue cubes", "take one blue off", "one of the blues": that many of that
+        # colour, not all of them
         k = counted.group(1)
         return {"color": canon_color(counted.group(2)), "count": int(k) if k.isdigit() else 1}
     items = item_sequence(text)
@@ -1465,6 +1467,19 @@ def _indices(spec: TaskSpec, sel: dict, anchors: frozenset[str] = frozenset()) -
     return _indices_of(spec, sel, anchors)
 
 
+def _removed_indices(spec: TaskSpec, sel: dict, anchors: frozenset[str]) -> list[int]:
+    """The indices of the cubes a removal takes: as :func:`_indices`, but ``k`` of a run of identical cubes that stand
+    together in a one-line structure ("take one blue off" a tower green, green, blue, blue) are the run's last ``k``, since
+    whichever ``k`` go the structure left is the same; cubes of that colour apart (blue, green, blue) stay unnamed."""
+    if set(sel) == {"color", "count"} and not spec.kind.layered and _orders_cubes(spec):
+        idx = [i for i, it in enumerate(spec.items) if it.color == sel["color"]]
+        k = sel["count"]
+        if 0 < k < len(idx) and idx == list(range(idx[0], idx[0] + len(idx))) and all(
+                spec.items[i] == spec.items[idx[0]] for i in idx):
+            return idx[-k:]
+    return _indices(spec, sel, anchors)
+
+
 def _neighbour_indices(spec: TaskSpec, sel: dict, anchors: frozenset[str]) -> list[int]:
     """The one cube a neighbour pick names (:func:`_relation_pick`): in a tower, the cube directly above or below the one
     named; in a row with a left-to-right order, the one directly left or right of it; the one beside it where only one is;
@@ -2060,7 +2075,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             if spec.word:  # "change the B to a C": the word spelled is the cubes' now
                 spec = replace(spec, word="".join(i.label or "?" for i in spec.items))
         elif o.op == "remove":
-            idx = set(_indices(spec, p["select"], anchors))
+            idx = set(_removed_indices(spec, p["select"], anchors))
             if not idx:
                 raise _no_such_cube(p["select"], spec)
             spec = spec.with_items([it for i, it in enumerate(spec.items) if i not in idx])
