@@ -2906,3 +2906,24 @@ def test_forty_fourth_session_one_of_identical_cubes_apart_is_not_guessed(tmp_pa
     fam = compiled("Make a tower of four cubes: green, blue, green, blue from the bottom.", tmp_path, name="fam").path
     with pytest.raises(BadInput, match="does not say which"):
         steer(fam, "Take one blue off.")
+
+
+@pytest.mark.parametrize("base,edit,expected", [
+    ("Put the purple cube on the orange patch and the pink cube on the orange patch too.", "Move the pink one onto a new green patch.",
+     ["on_patch(pink,patch:green)", "on_patch(purple,patch:orange)"]),
+    ("Put the red cube left of the blue cube and the green cube on the yellow patch.", "Move the red cube onto the yellow patch.",
+     ["on_patch(green,red,patch:yellow)"]),
+    ("Put the red cube left of the blue cube and the green cube on the yellow patch.", "Move the green cube onto a new red patch.",
+     ["left_of(red,blue)", "on_patch(green,patch:red)"]),
+])
+def test_forty_fourth_session_a_moved_cube_leaves_its_old_place(tmp_path, base, edit, expected):
+    """steer_stranger27 r049: "move the pink one onto a new green patch" of two cubes on one patch had been refused (read as
+    one more placement, 'new' unread); moving a cube of the task replaces its one placement, like "instead"."""
+    assert _meaning_after(tmp_path, base, [edit]) == (expected, "modify")
+
+
+def test_forty_fourth_session_the_cube_already_on_the_patch_is_not_added_again(tmp_path):
+    """"Put the pink cube on the orange patch" of a task whose pink cube stands there had added a second pink cube."""
+    fam = compiled("Put the purple cube on the orange patch and the pink cube on the orange patch too.", tmp_path, name="fam").path
+    with pytest.raises(BadInput):
+        steer(fam, "Put the pink cube on the orange patch.")

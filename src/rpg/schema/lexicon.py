@@ -3647,6 +3647,15 @@ EDIT_ADDITIVE_RE = re.compile(r"\b(?:also|too|as well|add|additionally|additiona
 """Words that make an edit an addition: what it states joins the task, the rest is kept ("a second heap of three brown
 cubes" had replaced the task's pile)."""
 
+EDIT_MOVES_A_TASK_CUBE_RE = re.compile(r"^\s*(?:(?:now|ok(?:ay)?|so|and|then|actually)[\s,]+)*(?:move|shift|relocate|slide|transfer)"
+                                       r"\s+(?:the|that)\s+(?!.*\b(?:too|also|as\s+well)\b)", re.IGNORECASE)
+"""An edit that moves a cube the task has to a new place ("Move the pink one onto a new green patch"): like "instead", it
+replaces that cube's one placement (:func:`rpg.steer.relations.replaced_placement`); kept as well only when it says so
+("... too")."""
+
+NEW_PATCH_RE = re.compile(r"\b(an?)\s+(?:new|fresh|second|separate|different|other)\s+(?=(?:[a-z]+\s+)?patch\b)", re.IGNORECASE)
+"""A patch said as new ("onto a new green patch"): a patch of that colour, which the task then has."""
+
 EDIT_CONTINUES_RE = re.compile(r"^\s*(?:and\s+|,\s*)?(?:then|next|after\s+that|afterwards|after\s+this)\b")
 """An edit that goes on from the task ("then put C on A", "next, the green cube on the red one"):
 an addition, never a whole new task (it had replaced the task, dropping the cubes below)."""

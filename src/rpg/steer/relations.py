@@ -378,7 +378,10 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
         spare = [colors[0]] * n if len(set(colors)) == 1 else [c for c in DEFAULT_COLORS if c not in colors]
         colors, intent = (colors + spare)[:n] if n > len(colors) else colors[:n], "tweak"
     elif added:
-        colors, intent = colors + [canon_color(next(g for g in added.groups() if g))], "extend"
+        said = next(g for g in added.groups() if g)
+        if canon_color(said) in colors and re.search(rf"\bthe\s+{re.escape(said)}\b", t) and not EDIT_ADDITIVE_RE.search(t):
+            return None  # "put the pink cube on the orange patch" of a task whose pink cube stands there: that cube, not one more
+        colors, intent = colors + [canon_color(said)], "extend"
     if intent is None:
         return None
     return f"Place {cube_list(colors)} onto the {pcolor}{' long' if shape == 'long' else ''} goal patch", intent
@@ -559,6 +562,17 @@ def remove_cubes(edit: str, schema: TaskSchema, colors: list[str], parse) -> tup
     return text, new
 
 
+def per_cube(atoms: list[str]) -> list[str]:
+    """Meaning atoms with the cubes of one patch split apart (``on_patch(blue,red,patch:green)``
+    is ``on_patch(blue,patch:green)`` and ``on_patch(red,patch:green)``), so that a cube added
+    to a task's patch keeps the atom of the cube already there."""
+    out = []
+    for a in atoms:
+        m = re.fullmatch(r"on_patch\(([^()]*),(patch:[^(),]+)\)(@\w+)?", a)
+        out += ([f"on_patch({c},{m.group(2)}){m.group(3) or ''}" for c in m.group(1).split(",")] if m else [a])
+    return out
+
+
 def _conjunct_clause(schema: TaskSchema, p: Predicate) -> str | None:
     """A conjunct as a clause the parser reads back (:func:`_clause`), a two-cube stack among them ("place the blue
     block on top of the green block"); None for any other."""
@@ -582,7 +596,7 @@ def replaced_placement(clause: str, schema: TaskSchema, parse) -> tuple[str, Tas
         said = meaning(parse(clause))
     except (BadInput, ValueError):
         return None
-    old = meaning(schema)
+    old = per_cube(meaning(schema))  # cubes on one patch one atom each, so one of them can move
     if len(said) != 1 or said[0] in old:
         return None
     new = said[0]
@@ -611,7 +625,7 @@ def replaced_placement(clause: str, schema: TaskSchema, parse) -> tuple[str, Tas
             alone = meaning(parse(c))
         except (BadInput, ValueError):
             return None
-        if alone != [replaced[0]]:
+        if per_cube(alone) != [replaced[0]]:
             kept.append(c)
     if len(kept) != len(clauses) - 1:
         return None
@@ -621,7 +635,7 @@ def replaced_placement(clause: str, schema: TaskSchema, parse) -> tuple[str, Tas
         made = parse(text)
     except (BadInput, ValueError):
         return None
-    if Counter(meaning(made)) != Counter(old) - Counter(replaced) + Counter([new]):
+    if Counter(per_cube(meaning(made))) != Counter(old) - Counter(replaced) + Counter([new]):
         return None
     return text, made
 

@@ -36,6 +36,8 @@ from rpg.schema.builtin import parse
 from rpg.schema.edits import recolor
 from rpg.schema.feasibility import check_feasibility
 from rpg.schema.lexicon import (
+    EDIT_MOVES_A_TASK_CUBE_RE,
+    NEW_PATCH_RE,
     ADDED_CUBE_RE,
     BETWEEN_THEM_RE,
     COLOR_RE,
@@ -90,6 +92,7 @@ from rpg.steer.relations import (
     between_roles,
     relation_of,
     remove_cubes,
+    per_cube,
     replaced_placement,
     rewrite_moved,
     rewrite_patch,
@@ -363,7 +366,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
                 instruction = _as_row(instruction, plan.ops)
             return parse(instruction), instruction, intent
     if plan.standalone:
-        text = strip_edit_words(plan.text)
+        text = NEW_PATCH_RE.sub(r"\1 ", strip_edit_words(plan.text))  # "onto a new red patch": a red patch, new to the task
         schema = parse(text)
         if plan.fresh:
             return schema, text, "fresh"
@@ -378,8 +381,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         schema = _same_cubes(plan.text, ref_schema, schema)
         schema = _same_cubes_kept(plan.text, ref_schema, schema, ("same", True) in plan.checks)
         instead = re.search(r"(?i)\binstead\b(?!\s+of\b)", plan.text)
-        replaced = replaced_placement(re.sub(r"(?i)\s*\binstead\b(?!\s+of\b)", "", text), ref_schema, parse) \
-            if instead and _relates_a_related_pair(schema, ref_schema) else None
+        moved = EDIT_MOVES_A_TASK_CUBE_RE.match(plan.text)  # "move the red cube onto the yellow patch": its old place goes
+        replaced = replaced_placement(re.sub(r"(?i)\s*\binstead\b(?!\s+of\b)", "", text), ref_schema,
+                                      parse) if (instead and _relates_a_related_pair(schema, ref_schema)) or moved else None
         if replaced is not None:  # "the cyan cube stands in front of the orange cube instead" of a task that also puts the
             # orange cube on a patch: that one placement exchanged, the rest kept (the patch had been lost as a pivot)
             return replaced[1], replaced[0], "modify"
@@ -1243,17 +1247,6 @@ def _extends(old: str, new: str) -> bool:
     return len(now) > len(was) and any(now[i:i + len(was)] == was for i in range(len(now) - len(was) + 1))
 
 
-def _per_cube(atoms: list[str]) -> list[str]:
-    """Meaning atoms with the cubes of one patch split apart (``on_patch(blue,red,patch:green)``
-    is ``on_patch(blue,patch:green)`` and ``on_patch(red,patch:green)``), so that a cube added
-    to a task's patch keeps the atom of the cube already there."""
-    out = []
-    for a in atoms:
-        m = re.fullmatch(r"on_patch\(([^()]*),(patch:[^(),]+)\)(@\w+)?", a)
-        out += ([f"on_patch({c},{m.group(2)}){m.group(3) or ''}" for c in m.group(1).split(",")] if m else [a])
-    return out
-
-
 def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[TaskSchema, str, str]:
     """An edit that adds to the task in a clause of its own ("also stack a white block on the
     cyan one"): the reference's instruction, then the clause.  Kept only when every atom of
@@ -1298,7 +1291,9 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
                          "change the builtin steering reads (add, remove, recolour, resize, reorder, move it, another "
                          "structure); say what to change, e.g. \"make the top block red\", or use --model")
     instead = re.search(r"(?i)\binstead\b(?!\s+of\b)", plan.text)
-    replaced = replaced_placement(re.sub(r"(?i)\s*\binstead\b(?!\s+of\b)", "", clause), ref_schema, parse) if instead else None
+    moved = EDIT_MOVES_A_TASK_CUBE_RE.match(plan.text)  # "move the pink one onto a new green patch": its old place goes too
+    replaced = replaced_placement(NEW_PATCH_RE.sub(r"\1 ", re.sub(r"(?i)\s*\binstead\b(?!\s+of\b)", "", clause)), ref_schema,
+                                  parse) if instead or moved else None
     if replaced is not None:  # "put the red cube to the right of the green one instead": that one placement exchanged
         text, schema = replaced
         return schema, text, "modify"
@@ -1311,7 +1306,7 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
         schema = parse(text)
     except (BadInput, ValueError) as exc:
         raise SteerError(f"cannot add \"{clause}\" to {where}: {str(exc).splitlines()[0]}") from None
-    before, now = Counter(_per_cube(meaning(ref_schema))), Counter(_per_cube(meaning(schema)))
+    before, now = Counter(per_cube(meaning(ref_schema))), Counter(per_cube(meaning(schema)))
     had = Counter(descriptor(a) for a in ref_schema.assets)
     opened = (re.match(r"\s*(?:and|also|plus)\b", plan.text, re.IGNORECASE)  # "and the blue block in the corner": one more
               or EDIT_CONTINUES_RE.match(plan.text.lower())  # "then put the green cube on the red cube"
