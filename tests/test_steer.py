@@ -2927,3 +2927,24 @@ def test_forty_fourth_session_the_cube_already_on_the_patch_is_not_added_again(t
     fam = compiled("Put the purple cube on the orange patch and the pink cube on the orange patch too.", tmp_path, name="fam").path
     with pytest.raises(BadInput):
         steer(fam, "Put the pink cube on the orange patch.")
+
+
+@pytest.mark.parametrize("base,edit,expected", [
+    ("Tonight's running session: a row of two orange cubes and one white cube, order doesn't matter.",
+     "Put the white one in the middle.", ["line[sequence](orange,white,orange)"]),
+    ("Put red, green and blue in a row from left to right.", "Put the red one in the middle.", ["line[left_to_right](green,red,blue)"]),
+    ("Put red, green and blue in a row from left to right.", "Move the blue cube to the left end.",
+     ["line[left_to_right](blue,red,green)"]),
+    ("Stack red, green and blue from the bottom.", "Put the red one in the middle.", ["stack(green,red,blue)"]),
+])
+def test_forty_fourth_session_a_cube_moved_within_its_row_or_tower(tmp_path, base, edit, expected):
+    """steer_stranger27 r058: "put the white one in the middle" of a row had been read as the table's centre and refused; one
+    cube of a row or tower moved to its middle or to an end said by side."""
+    assert _meaning_after(tmp_path, base, [edit]) == (expected, "modify")
+
+
+def test_forty_fourth_session_a_middle_that_leaves_the_rest_unsaid_is_refused(tmp_path):
+    """A row of three different cubes in no order: the middle said for one leaves the two ends' places unsaid."""
+    fam = compiled("Make a row of a red, a green and a blue cube.", tmp_path, name="fam").path
+    with pytest.raises(BadInput, match="others' places"):
+        steer(fam, "Put the red one in the middle.")

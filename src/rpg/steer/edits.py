@@ -942,6 +942,27 @@ def names_cubes(t: str) -> bool:
     return bool(re.search(rf"\b(?:{COLOR_RE}|{COUNT_WORD_RE}|\d+(?:x\d+)*|colou?r(?:s|ed)?|letters?|digits?|numbers?|word|spell\w*)\b|'[a-z]+'", t))
 
 
+IN_PLACE_MOVE_RE = re.compile(
+    r"^\s*(?:(?:now|ok(?:ay)?|so|and|then|actually|just)[\s,]+)*(?:put|move|place|bring|shift|slide)\s+the\s+"
+    r"(?P<sel>(?:[a-z0-9']+\s+){0,2}?[a-z0-9']+)\s+(?:one|block|cube)?\s*(?:at|to|on|in|into)\s+the\s+(?:very\s+)?"
+    r"(?P<where>middle|centre|center|left\s+end|right\s+end|far\s+left|far\s+right)(?:\s+of\s+the\s+(?:row|line|tower|stack))?"
+    r"\s*(?:instead|now|please)?\s*[.!]?\s*$")
+"""An edit that moves one cube of a row or tower to its middle or to an end said by side ("put the white one in the
+middle", "move the blue cube to the left end"): read by :func:`in_place_move` for a structure task only (of cubes related
+one by one, "the middle" is the table's)."""
+
+_IN_PLACE = {"middle": "middle", "centre": "middle", "center": "middle", "left end": "left", "far left": "left",
+             "right end": "right", "far right": "right"}
+
+
+def in_place_move(edit: str) -> Op | None:
+    """The ``move`` operation of an edit that puts one cube of the structure in its middle or at its left or right end
+    (:data:`IN_PLACE_MOVE_RE`), or None."""
+    m = IN_PLACE_MOVE_RE.match(normalize_edit(edit))
+    sel = _selector(m.group("sel")) if m else None
+    return Op("move", {"select": sel, "at": _IN_PLACE[re.sub(r"\s+", " ", m.group("where"))]}) if sel else None
+
+
 def intent_of_ops(ops: list[Op], spec: TaskSpec | None = None) -> str:
     """The strongest intent of the operations (a structure op to the reference's own
     structure changes nothing and does not count)."""
@@ -2026,7 +2047,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
                 raise SteerError(f"a reading direction applies to a line; this task has a {spec.structure}")
             spec = replace(spec, direction=p["to"], axis=None)
         elif o.op == "move":
-            if spec.kind.spells and not _orders_cubes(spec):
+            if spec.kind.spells and not _orders_cubes(spec) and p["at"] != "middle":
                 raise SteerError(f"the {spec.structure}'s goal gives its cubes no places (any order holds), so one moved to "
                                  f"{'the other end' if p['at'] == 'other' else 'its ' + p['at']} cannot be judged alone; say the order of the whole {spec.structure}")
             idx = _indices(spec, p["select"], anchors)
@@ -2039,8 +2060,25 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
                     raise SteerError(f"'the other end': {spec.items[idx[0]].phrase()} stands at no one end of the {spec.structure}; "
                                      "say which end it goes to (\"move it to the top\", \"... to the right end\")")
                 at = "top" if idx[0] == 0 else "bottom"
+            if at in ("left", "right"):  # "to the left end" of a row read left to right (or right to left)
+                if spec.structure in ANCHORED_KINDS or spec.direction not in ("left_to_right", "right_to_left"):
+                    raise SteerError(f"the {at} end of a {spec.structure} whose goal runs no way left to right is no place of "
+                                     "its own; say the whole order from left to right")
+                at = "bottom" if (at == "left") == (spec.direction == "left_to_right") else "top"
+            if len(idx) > 1:
+                raise SteerError(f"the edit moves one cube, but {len(idx)} cubes of the {spec.structure} are picked; name one")
             moved = items.pop(idx[0])
-            spec = spec.with_items([moved] + items if at == "bottom" else items + [moved])
+            if at == "middle":  # "put the white one in the middle": the one middle place of an odd row or tower
+                if len(spec.items) % 2 == 0:
+                    raise SteerError(f"a {spec.structure} of {len(spec.items)} cubes has no one middle place; say the whole order")
+                if not _orders_cubes(spec) and len(set(items)) > 1:
+                    raise SteerError(f"the {spec.structure}'s goal orders none of its cubes: with {moved.phrase()} in the middle "
+                                     "the others' places stay unsaid, which its goal cannot state; say the whole order")
+                spec = spec.with_items(items[:len(items) // 2] + [moved] + items[len(items) // 2:])
+                if spec.direction is None:  # identical cubes either side: an order that holds from either end
+                    spec = replace(spec, direction="sequence")
+            else:
+                spec = spec.with_items([moved] + items if at == "bottom" else items + [moved])
             if spec.ordering:
                 spec = replace(spec, ordering=None)
         elif o.op == "arrange":

@@ -70,6 +70,7 @@ from rpg.steer.edits import (
     apply_ops,
     carried_after,
     check_said,
+    in_place_move,
     intent_of_ops,
     intent_of_standalone,
     interpret,
@@ -365,6 +366,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
                 intent = "pivot"
                 instruction = _as_row(instruction, plan.ops)
             return parse(instruction), instruction, intent
+    moved = in_place_move(plan.text) if ref_schema is not None and not plan.ops else None
+    if moved is not None and (spec := split(ref_schema)[0]) is not None and spec.kind.spells:
+        plan = replace(plan, ops=[moved], standalone=False)  # "put the white one in the middle" of a row: its middle
     if plan.standalone:
         text = NEW_PATCH_RE.sub(r"\1 ", strip_edit_words(plan.text))  # "onto a new red patch": a red patch, new to the task
         schema = parse(text)
