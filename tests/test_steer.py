@@ -2948,3 +2948,10 @@ def test_forty_fourth_session_a_middle_that_leaves_the_rest_unsaid_is_refused(tm
     fam = compiled("Make a row of a red, a green and a blue cube.", tmp_path, name="fam").path
     with pytest.raises(BadInput, match="others' places"):
         steer(fam, "Put the red one in the middle.")
+
+
+def test_forty_fourth_session_a_letter_swapped_in_a_named_row(tmp_path):
+    """steer_stranger27 r011: "swap the C for a B" of the letter cubes C, A and T in a row had been refused (the row was stated
+    as up-faces that read a word, which demands more than the task said)."""
+    assert _meaning_after(tmp_path, "Put the letter cubes C, A and T in a row from left to right.", ["Swap the C for a B."]) == (
+        ["line[left_to_right](B,A,T)"], "tweak")

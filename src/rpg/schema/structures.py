@@ -338,6 +338,11 @@ class Line(StructureKind):
                 return f"Arrange the {noun} {', '.join(labels[:-1])} and {labels[-1]} in {order} order {d}" + (
                     " in reverse" if spec.descending else "")
             return f"Arrange {n} {what} order {d}" + (" in reverse" if spec.descending else "")
+        if spec.named and spec.material in ("letters", "digits") and n >= 3 and all(i.label for i in spec.items) \
+                and not spec.ordering:  # cubes named one by one in an order ("the letter cubes C, A and T in a row from
+            what = "letter" if spec.material == "letters" else "digit"  # left to right"), no word spelled: so again
+            labels = [i.label for i in spec.items]
+            return f"Put the {what} cubes {', '.join(labels[:-1])} and {labels[-1]} in a row {d}"
         if spec.material in ("letters", "digits") and n >= 3:
             return f"Arrange cubes so that their up-faces read {', '.join(i.label or '' for i in spec.items)} {d}"
         return f"Arrange the blocks in order {', '.join(i.phrase() for i in spec.items)} {d}"
