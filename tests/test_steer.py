@@ -2955,3 +2955,11 @@ def test_forty_fourth_session_a_letter_swapped_in_a_named_row(tmp_path):
     as up-faces that read a word, which demands more than the task said)."""
     assert _meaning_after(tmp_path, "Put the letter cubes C, A and T in a row from left to right.", ["Swap the C for a B."]) == (
         ["line[left_to_right](B,A,T)"], "tweak")
+
+
+@pytest.mark.parametrize("edit", ["Gain staging: swap the bottom colour and the top colour.", "Swap the top and the bottom."])
+def test_forty_fourth_session_a_pyramids_bottom_and_top_swapped(tmp_path, edit):
+    """steer_stranger27 r029: "swap the bottom colour and the top colour" of a pyramid with one colour per layer had been
+    refused ('the bottom' read as one cube of a layer of three); of a layered structure they are its layers."""
+    assert _meaning_after(tmp_path, "Build a pyramid of six cubes: three red on the bottom row, two orange in the middle row, "
+                          "one yellow on top.", [edit]) == (["pyramid(yellow,yellow,yellow|orange,orange|red)"], "modify")

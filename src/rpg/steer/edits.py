@@ -2150,6 +2150,8 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             other = {cols[0]: cols[1], cols[1]: cols[0]}
             spec = spec.with_items([Item(color=other[it.color]) for it in spec.items])
         elif o.op == "swap":
+            if spec.kind.layered:  # "swap the bottom colour and the top colour" of a pyramid: its bottom and top layers
+                p = {k: ({"layer": v["position"]} if isinstance(v, dict) and set(v) == {"position"} else v) for k, v in p.items()}
             ia, ib = _indices(spec, p["a"], anchors), _indices(spec, p["b"], anchors)
             if not ia or not ib:
                 raise _no_such_cube(p["a"] if not ia else p["b"], spec)
