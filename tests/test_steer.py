@@ -2963,3 +2963,22 @@ def test_forty_fourth_session_a_pyramids_bottom_and_top_swapped(tmp_path, edit):
     refused ('the bottom' read as one cube of a layer of three); of a layered structure they are its layers."""
     assert _meaning_after(tmp_path, "Build a pyramid of six cubes: three red on the bottom row, two orange in the middle row, "
                           "one yellow on top.", [edit]) == (["pyramid(yellow,yellow,yellow|orange,orange|red)"], "modify")
+
+
+@pytest.mark.parametrize("base,edit,expected", [
+    ("Build a pyramid of three cubes: two black on the bottom and one yellow on top.",
+     "Make it a tunnel mouth: add a bottom row of three gray cubes under it.", ["pyramid(gray,gray,gray|black,black|yellow)"]),
+    ("Build a pyramid of six red cubes.", "Add a layer of gray cubes at the bottom.", ["pyramid(gray,gray,gray,gray|red,red,red|red,red|red)"]),
+    ("Build a wall two layers high, three blue cubes on the bottom layer and three green cubes on top.",
+     "Add a layer of red cubes at the bottom.", ["wall(red,red,red|blue,blue,blue|green,green,green)"]),
+])
+def test_forty_fourth_session_a_layer_added_at_the_bottom(tmp_path, base, edit, expected):
+    """steer_stranger27 r059: "add a bottom row of three gray cubes under it" of a pyramid had been refused (rows were added on
+    top only); a pyramid's base grows by one under its layers, a wall gains a layer under its others."""
+    assert _meaning_after(tmp_path, base, [edit]) == (expected, "extend")
+
+
+def test_forty_fourth_session_a_bottom_layer_that_does_not_fit_is_refused(tmp_path):
+    fam = compiled("Build a pyramid of three cubes: two black on the bottom and one yellow on top.", tmp_path, name="fam").path
+    with pytest.raises(BadInput, match="does not fit"):
+        steer(fam, "Add a layer of four gray cubes at the bottom.")

@@ -662,19 +662,20 @@ def read_ops(t: str) -> list[Op]:
     elif by:  # "make it 2 blocks shorter"
         ops.append(Op("count", {"delta": int(by.group(1)) * (1 if by.group(2) in ("taller", "higher", "longer", "bigger") else -1)}))
     layer = re.search(r"\b(?:add|put|build|stack)\s+(?:an?\s+|another\s+|one more\s+|the\s+)?(?:\d+(?:st|nd|rd|th)\s+|second\s+|third\s+"
-                      r"|fourth\s+|new\s+|extra\s+)?(?:row|layer|level|tier)\b(?P<rest>.*)", t) or \
+                      r"|fourth\s+|new\s+|extra\s+)?(?:bottom\s+|lower\s+)?(?:row|layer|level|tier)\b(?P<rest>.*)", t) or \
         re.match(r"\s*(?:and\s+|now\s+|plus\s+)?(?:1\s+more|one\s+more|another|an\s+extra|1\s+extra)\s+(?:row|layer|level|tier)\b"
                  r"(?P<rest>.*)", t)  # "one more row"
     if layer and region is None and not re.search(r"\b(?:blocks?|cubes?)\b", re.sub(  # "put the row on the right side": a move
             rf"^\s*of\s+(?:\d+\s+)?(?:(?:{COLOR_RE})\s+)?(?:blocks|cubes)\b", " ", layer.group("rest"))):  # "a third row of (3) red cubes"
         rest = layer.group("rest")
         counted = re.match(r"\s*of\s+(\d+)\s", rest)
-        if re.search(r"\b(?:bottom|under|underneath|below|beneath|base|left|right|front|back|beside|next)\b", rest):
-            raise SteerError(f"'{layer.group(0).strip()}': the builtin steering adds a row or layer on top only; "
+        below = re.search(r"\b(?:bottom|under|underneath|below|beneath)\b", layer.group(0))
+        if re.search(r"\b(?:base|left|right|front|back|beside|next)\b", rest) or (below and re.search(r"\btop\b", rest)):
+            raise SteerError(f"'{layer.group(0).strip()}': the builtin steering adds a row or layer on top or at the bottom only; "
                              "state the whole new task")
         color = re.search(rf"\b({COLOR_RE})\b", rest)
         ops.append(Op("add_layer", {"color": canon_color(color.group(1)) if color else None,
-                                    **({"n": int(counted.group(1))} if counted else {})}))
+                                    **({"n": int(counted.group(1))} if counted else {}), **({"at": "bottom"} if below else {})}))
     adds = [] if layer or (substitution and mats) or any(o.op in ("move", "pattern") for o in ops) else re.finditer(
         r"\b(?P<verb>add|append|include|put|place|stack|set)\b(?P<what>.*?)(?P<where>\bon top\b|\b(?:at|to|on) (?:the )?(?:very |far )?(?:(?:left|right|front|back) end|top|bottom|base|end|start|beginning)\b|"
         r"\b(?:under|underneath|beneath|below)\b|\bto the (?:left|right|end|start)\b|\bon the (?:left|right)\b"
@@ -1867,6 +1868,29 @@ LAYER_AXES: dict[str, int] = {"block": 2, "grid": 0}
 """The dimension another row or layer grows ("add a third row on top")."""
 
 
+def _layer_added_below(spec: TaskSpec, p: dict) -> TaskSpec:
+    """A pyramid or wall with a new bottom layer of one colour under it ("add a bottom row of three gray cubes under it"): a
+    pyramid's base grows by one (its new bottom layer one cube wider, or one wider each way in 3D), a wall gains a layer as
+    wide as its others; the layers above keep their cubes.
+
+    Raises:
+        SteerError: another structure, no colour said, or a count that does not fit the new layer."""
+    if spec.structure not in ("pyramid", "block"):
+        raise SteerError(f"a {spec.structure} takes no layer below its cubes; state the whole new task")
+    if p.get("color") is None:
+        raise SteerError("say the colour of the new bottom layer (e.g. \"add a row of gray cubes at the bottom\")")
+    if spec.structure == "pyramid":
+        base, d = spec.dims
+        dims, size = (base + 1, d), (base + 1) ** (d - 1)
+    else:
+        dims = tuple(spec.dims[:2]) + (spec.dims[2] + 1,)
+        size = spec.dims[0] * spec.dims[1]
+    if p.get("n") is not None and p["n"] != size:
+        raise SteerError(f"a new bottom layer of {p['n']} cubes does not fit under the {spec.structure}, whose new bottom layer "
+                         f"holds {size}; state the whole new task, or use --model")
+    return replace(spec, dims=dims).with_items([Item(color=p["color"])] * size + list(spec.items))
+
+
 def _layers_of(spec: TaskSpec) -> list[list[str | None]]:
     out, i = [], 0
     for size in _layer_sizes(spec):
@@ -2183,6 +2207,8 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             dims = list(spec.dims)
             dims[axis] = p["count"]
             spec = _resize_dims(spec, tuple(dims), keep_layers)
+        elif o.op == "add_layer" and p.get("at") == "bottom":
+            spec = _layer_added_below(spec, p)
         elif o.op == "add_layer":
             axis = LAYER_AXES.get(spec.structure)
             if axis is None:
