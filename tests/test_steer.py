@@ -2982,3 +2982,17 @@ def test_forty_fourth_session_a_bottom_layer_that_does_not_fit_is_refused(tmp_pa
     fam = compiled("Build a pyramid of three cubes: two black on the bottom and one yellow on top.", tmp_path, name="fam").path
     with pytest.raises(BadInput, match="does not fit"):
         steer(fam, "Add a layer of four gray cubes at the bottom.")
+
+
+@pytest.mark.parametrize("edit", ["Stack those six cubes into one tower.", "Scrap the pyramid and stack the cubes into a tower.",
+                                  "Stack them into a tower."])
+def test_forty_fourth_session_a_pyramid_with_coloured_layers_stacked(tmp_path, edit):
+    """steer_stranger27 r005: "stack those six cubes into one tower" had been read as a second structure added, and a pyramid
+    whose layers' colours are judged could not be made a tower (its layers were kept); the tower holds its cubes in any order."""
+    fam = compiled("Build a pyramid: three brown cubes on the bottom, two gray cubes on them, one white cube on top.", tmp_path,
+                   name="fam").path
+    r = steer(fam, edit)
+    assert r.intent == "pivot"
+    goal = Family(fam).schema(r.version).goal_predicate()
+    assert type(goal).__name__ == "UnorderedStack" and sorted(o.split("_")[0] for o in goal.objects) == [
+        "brown", "brown", "brown", "gray", "gray", "white"]

@@ -3890,6 +3890,12 @@ now (at the place said) made X (:data:`EDIT_REWRITES`); the negated colour is ch
 dropped."""
 
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
+    # "stack those six cubes into one tower", "put all the cubes in a single row": the task's cubes, said as "them" (a tower
+    # into "one" had been read as a second structure added)
+    (re.compile(r"(?i)\b(?P<v>stack|put|arrange|pile|line\s+up|place|set|build)\s+(?:all\s+)?(?:those|these|the)\s+(?:(?:\d+|two|three|four"
+                r"|five|six|seven|eight|nine|ten)\s+)?(?:cubes|blocks)\s+(?P<p>into|in|as)\s+(?:one|a|a\s+single|just\s+one)\s+"
+                r"(?P<s>tower|stack|row|line|pile|heap|column)\b"),
+     lambda m: f"{m.group('v')} them {m.group('p')} a {m.group('s')}"),
     # "Round 3: ...", "Condition C: ...", "Next round, add ...": the name of the version made
     (EDIT_STEP_NAME_RE, ""),
     # "Rearrange them from left to right: blue, green, cyan.", "Put them in traffic-light order from left to right: red,

@@ -1731,6 +1731,8 @@ def carried_after(spec: TaskSpec, carried, ops: list[Op]):
         sel = o.params.get("select") or {}
         if o.op in ("recolor", "relabel") and spec.kind.layered and ("layer" in sel or "position" in sel):
             carried = replace(carried, layers=True)
+        if o.op == "structure" and o.params.get("to") in STRUCTURE_KINDS and not STRUCTURE_KINDS[o.params["to"]].layered:
+            carried = replace(carried, layers=False)  # "stack them into a tower" of a pyramid with judged layers: none left
     return replace(carried, ends=frozenset(ends))
 
 
