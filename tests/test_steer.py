@@ -2996,3 +2996,10 @@ def test_forty_fourth_session_a_pyramid_with_coloured_layers_stacked(tmp_path, e
     goal = Family(fam).schema(r.version).goal_predicate()
     assert type(goal).__name__ == "UnorderedStack" and sorted(o.split("_")[0] for o in goal.objects) == [
         "brown", "brown", "brown", "gray", "gray", "white"]
+
+
+def test_forty_fourth_session_it_stood_on_a_patch_is_the_structure(tmp_path):
+    """steer_stranger27 r028: "stand it on the blue patch" of a tower had been refused ('it' named no cube); of a structure
+    task, 'it' is the structure, as "put the tower on a blue patch" reads."""
+    assert _meaning_after(tmp_path, "Stack white, gray, black from the bottom up.", ["Stand it on the blue patch."]) == (
+        ["on_patch(white,patch:blue)", "stack(white,gray,black)"], "extend")

@@ -3656,6 +3656,10 @@ replaces that cube's one placement (:func:`rpg.steer.relations.replaced_placemen
 NEW_PATCH_RE = re.compile(r"\b(an?)\s+(?:new|fresh|second|separate|different|other)\s+(?=(?:[a-z]+\s+)?patch\b)", re.IGNORECASE)
 """A patch said as new ("onto a new green patch"): a patch of that colour, which the task then has."""
 
+IT_ON_A_PATCH_RE = re.compile(rf"(?i)^\s*(?:(?:now|ok(?:ay)?|so|and|then|just)[\s,]+)*(?P<v>put|stand|set|place|sit|move|rest)\s+it\s+"
+                              rf"(?P<p>(?:on|onto|on\s+top\s+of)\s+(?:the|a)\s+(?:{COLOR_RE})\s+(?:goal\s+)?patch)\b")
+"""An edit that puts "it" on a patch ("Stand it on the blue patch."): of a structure task, "it" is the structure."""
+
 EDIT_CONTINUES_RE = re.compile(r"^\s*(?:and\s+|,\s*)?(?:then|next|after\s+that|afterwards|after\s+this)\b")
 """An edit that goes on from the task ("then put C on A", "next, the green cube on the red one"):
 an addition, never a whole new task (it had replaced the task, dropping the cubes below)."""

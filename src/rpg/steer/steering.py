@@ -37,6 +37,7 @@ from rpg.schema.edits import recolor
 from rpg.schema.feasibility import check_feasibility
 from rpg.schema.lexicon import (
     EDIT_MOVES_A_TASK_CUBE_RE,
+    IT_ON_A_PATCH_RE,
     NEW_PATCH_RE,
     ADDED_CUBE_RE,
     BETWEEN_THEM_RE,
@@ -59,7 +60,7 @@ from rpg.schema.lexicon import (
 )
 from rpg.schema.model import TaskSchema
 from rpg.schema.reading import canon_color
-from rpg.schema.structures import STRUCTURE_RE
+from rpg.schema.structures import STRUCTURE_KINDS, STRUCTURE_RE
 from rpg.steer.carried import Carried, region_phrase, split
 from rpg.steer.carried import render as render_carried
 from rpg.steer.edits import (
@@ -1281,6 +1282,10 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
             # it too" of a cube on a patch had been stacked on the cube; "too" says the patch)
         one = f"the {cubes[0].color} block" if cubes[0].color else f"the {cubes[0].label} block"  # the task's one cube
         clause = addition_clause(re.sub(r"(?i)\bit\b", one, plan.text))
+    spec = split(ref_schema)[0] if clause is None and len(cubes) > 1 else None
+    if spec is not None and IT_ON_A_PATCH_RE.match(plan.text):  # "stand it on the blue patch" of a tower: the tower
+        clause = addition_clause(IT_ON_A_PATCH_RE.sub(lambda m: f"{m.group('v')} the {STRUCTURE_KINDS[spec.structure].words[0]} "
+                                                                f"{m.group('p')}", plan.text, count=1))
     named = [f"the {a.color} block" if a.color else f"the {a.label} block" for a in cubes]
     if clause is None and len(cubes) == 2 and len(set(named)) == 2 and BETWEEN_THEM_RE.search(plan.text.lower()):
         # "put a green cube between them": between the task's two cubes
