@@ -3003,3 +3003,11 @@ def test_forty_fourth_session_it_stood_on_a_patch_is_the_structure(tmp_path):
     task, 'it' is the structure, as "put the tower on a blue patch" reads."""
     assert _meaning_after(tmp_path, "Stack white, gray, black from the bottom up.", ["Stand it on the blue patch."]) == (
         ["on_patch(white,patch:blue)", "stack(white,gray,black)"], "extend")
+
+
+def test_forty_fourth_session_a_swap_announced_then_said_in_full(tmp_path):
+    """steer_stranger27 r009: "Swap them over like switching kegs: white on the green patch, black on the red patch." had been
+    refused (the announcement named no change read); the statement after the colon is the edit, a Modify of the same cubes."""
+    assert _meaning_after(tmp_path, "Place the white cube on the red patch and the black cube on the green patch.",
+                          ["Swap them over like switching kegs: white on the green patch, black on the red patch."]) == (
+        ["on_patch(black,patch:red)", "on_patch(white,patch:green)"], "modify")

@@ -25,6 +25,7 @@ from rpg.domain.predicates import Reads
 from rpg.errors import BadInput
 from rpg.schema.builder import DEFAULT_COLORS
 from rpg.schema.lexicon import (
+    SWAPPED_THEN_SAID_RE,
     BARE_ORDER_RE,
     CAUSED_MOTION_RE,
     COLOR_RE,
@@ -1020,6 +1021,10 @@ def interpret(edit: str) -> EditPlan:
     edit, aside = reasons_set_aside(edit)
     if aside:  # "That's too much for today. Leave out the yellow cube.": the change read without its reason
         return replace(interpret(edit), set_aside=aside)
+    swapped = SWAPPED_THEN_SAID_RE.match(edit)
+    if swapped and (said := interpret(edit[swapped.end():])).standalone and not said.fresh:
+        # "Swap them over like switching kegs: white on the green patch, black on the red patch.": the exchange said in full
+        return replace(said, checks=(*said.checks, ("swapped", True)))
     plan = _interpret_material(edit)
     _refuse_a_sentence_unread(edit, plan)
     _refuse_a_place_before_or_after_resizing(edit, plan)

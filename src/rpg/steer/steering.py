@@ -392,8 +392,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         if replaced is not None:  # "the cyan cube stands in front of the orange cube instead" of a task that also puts the
             # orange cube on a patch: that one placement exchanged, the rest kept (the patch had been lost as a pivot)
             return replaced[1], replaced[0], "modify"
-        if relation_of(schema) and relation_of(ref_schema) and same_assets(schema, ref_schema):
-            return schema, text, "modify"  # the same cubes in another relation
+        if same_assets(schema, ref_schema) and (relation_of(schema) and relation_of(ref_schema) or (
+                ref_spec is None and split(schema)[0] is None and ("swapped", True) in plan.checks)):
+            return schema, text, "modify"  # the same cubes in another relation, or on each other's patches
         if _stacks_a_new_cube_on_the_task(schema, ref_schema):  # "now put the green cube on the red cube": on top of it
             return _addition(replace(plan, text=f"then {text}"), reference, ref_schema)
         intent = intent_of_standalone(extract(schema), ref_spec)
