@@ -3011,3 +3011,17 @@ def test_forty_fourth_session_a_swap_announced_then_said_in_full(tmp_path):
     assert _meaning_after(tmp_path, "Place the white cube on the red patch and the black cube on the green patch.",
                           ["Swap them over like switching kegs: white on the green patch, black on the red patch."]) == (
         ["on_patch(black,patch:red)", "on_patch(white,patch:green)"], "modify")
+
+
+@pytest.mark.parametrize("edit", ["Add a second pair: a green cube on a brown cube.", "Also stack a green cube on a brown cube."])
+def test_forty_fourth_session_a_second_stack_added_beside_the_task(tmp_path, edit):
+    """steer_stranger27 r033: a second two-cube stack added to a task had been refused as a structure steering cannot compose;
+    the task's instruction with the clause after it reads both, checked to keep the task and add to it."""
+    assert _meaning_after(tmp_path, "Put a pink cube on top of a white cube.", [edit]) == (
+        ["stack(brown,green)", "stack(white,pink)"], "extend")
+
+
+def test_forty_fourth_session_a_second_structure_that_does_not_compose_is_refused(tmp_path):
+    fam = compiled("Put a pink cube on top of a white cube.", tmp_path, name="fam").path
+    with pytest.raises(BadInput):
+        steer(fam, "Add a pyramid of three yellow cubes.")

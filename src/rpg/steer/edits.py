@@ -124,6 +124,12 @@ class SteerError(BadInput):
     """An edit that cannot be interpreted or applied; the message says why and what works."""
 
 
+class SecondStructure(SteerError):
+    """An edit that adds a structure of its own ("add a second pair: a green cube on a brown cube"), which no operation on
+    the task's structure states: read as a clause added to the task (its instruction, then the clause), kept only when the
+    two read together keep the task and add to it."""
+
+
 @dataclass
 class Op:
     """One edit operation with its parameters (recorded in the version history)."""
@@ -707,7 +713,7 @@ def read_ops(t: str) -> list[Op]:
         own = re.search(rf"\ban?\s+(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:on|onto|on\s+top\s+of|atop)\s+an?\s+(?:{COLOR_RE})\b", what)
         kind = second.group(1) if second else piece.group(1) if piece else "stack" if own else None
         if kind:  # "add a pyramid of 3 yellow blocks": a second structure, not cubes of this one
-            raise SteerError(f"'{add.group(0).strip()}' adds a second structure (a {kind}), which the builtin "
+            raise SecondStructure(f"'{add.group(0).strip()}' adds a second structure (a {kind}), which the builtin "
                              "steering cannot compose with the first; state the whole new task in the edit, or use --model")
         m = re.search(r"\b(\d+)\b", re.sub(LABELLED_RE, " ", what))
         n = int(m.group(1)) if m else 1
@@ -1334,7 +1340,12 @@ def _interpret(edit: str) -> EditPlan:
             return EditPlan(edit, cue, standalone=True)
         except (ParseError, ValueError):
             pass  # not a whole task after all: read it as a change
-    ops = read_ops(t)
+    try:
+        ops = read_ops(t)
+    except SecondStructure:
+        if cue.kind != "current":
+            raise
+        return EditPlan(edit, cue)  # "add a second pair: a green cube on a brown cube": a clause added to the task
     if not ops and cue.kind != "current" and cue.phrase and (change := REF_CHANGE_RE.search(t, t.find(cue.phrase) + len(cue.phrase))):
         then = _change_after_reference(change.group(0))
         if then is not None:  # "revert that and add a blue cube on the same patch": that version, then the change
