@@ -8125,3 +8125,25 @@ def test_forty_third_session_any_order_with_an_end(text, end, fixed):
 def test_forty_third_session_whichever_goes_where_frees_the_order():
     goal = check_feasibility(parse("Stack the red and blue cubes, whichever goes where.")).goal_predicate()
     assert type(goal).__name__ == "UnorderedStack"
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a simile that pictures the relation the task already says (it had been refused over its unknown nouns)
+    ("Put the black cube behind the white cube, like the monitor behind the singer.", ["behind(black,white)"]),
+    ("Lay a row of five gray cubes along the back of the table, like a line of rocks.", ["line(gray,gray,gray,gray,gray)@back"]),
+    ("Put the red cube on the blue cube, like a cherry on top.", ["stack(blue,red)"]),
+])
+def test_forty_fourth_session_a_simile_that_restates_the_relation(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    # a simile with a relation of its own stays, to be read or refused
+    "Put the red cube next to the blue cube, like a hat on a head.",
+    # a comparison with cubes arranged otherwise: it had been read as a second stack the goal demanded
+    "Put the red cube on the blue cube, like the green cube on the yellow cube.",
+    "Put the red cube on the blue cube like the green cube is on the yellow cube.",
+])
+def test_forty_fourth_session_similes_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

@@ -522,6 +522,16 @@ VOICE_SIMILE_BLOCKER_RE = re.compile(
 """Words a simile chunk may not hold: a cube, colour, structure, patch, label or the table is not a compared thing but
 the task's own (so "..., like the red tower" stays)."""
 
+SIMILE_RELATION_WORDS: dict[str, str] = {
+    "on": "on", "onto": "on", "atop": "on", "upon": "on", "over": "on", "top": "on", "above": "on", "stack": "on",
+    "under": "under", "beneath": "under", "below": "under", "bottom": "under",
+    "beside": "beside", "next": "beside", "behind": "behind", "front": "front", "left": "left", "right": "right",
+    "between": "between", "line": "line", "row": "line",
+}
+"""Relation and structure words of :data:`VOICE_SIMILE_BLOCKER_RE`, each with the relation it pictures: a simile whose
+blocked words all picture relations the task's words already say restates them and is dropped as the voice's
+(:func:`rpg.schema.reading._restates_relations`); any other blocked word (a colour, a count, a cube, a size) keeps it."""
+
 VOICE_NAME_NUMBER_RE = re.compile(r"\b[a-z][a-z\-]+\s+(?:(?:number|no\.?)\s*|#)?(?:\d+[a-z]?|one|two|three|four|five|six|seven|eight|nine"
                                   r"|ten)\b(?!\s+[a-z])")
 """A number naming a thing of a voice's label ("day six", "trench 4", "camp two", "Context 17", "sheet number four"):
@@ -841,6 +851,11 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|demonstration|sample|template|reference|model)\b",
      "refers to something shown or seen (a picture, the scene, an arrangement) that a task cannot see: say the "
      "arrangement in words (e.g. \"stack the red block on the blue block\")"),
+    ("reference", rf"(?:(?<=,)\s*|(?<=\bcube)\s+|(?<=\bblock)\s+|(?<=\bcubes)\s+|(?<=\bblocks)\s+|\b(?:just|exactly)\s+)(?:like|as)\s+(?:the|a|an)\s+(?:(?:{COLOR_RE})\s+(?:cube|block|one)s?|(?:cube|block)s?\s+"
+                  rf"(?:[A-Z0-9]|{COLOR_RE}))\s+(?:is\s+|are\s+|sits\s+|stands\s+)?(?:on|onto|atop|under|beneath|below|above|next\s+to|beside"
+                  r"|behind|in\s+front\s+of|left\s+of|right\s+of|to\s+the\s+(?:left|right)\s+of|between|near)\b",
+     "compares to cubes arranged as the instruction does not ask (\"like the green cube on the yellow cube\"): whether that "
+     "arrangement is part of the goal is not said; say each placement the goal needs"),
     ("reference", r"\b(?:swap|swapping|swapped|interchange|exchange)\b|\bswitch(?:es|ed|ing)?\s+(?:the\s+)?(?:places|positions|spots)\b",
      "refers to something the instruction has not described: the places the cubes stand in now (the current "
      "scene), which a task's goal cannot see; say where each cube should end (e.g. \"put the red block "

@@ -390,7 +390,17 @@ def _without_address(sentence: str) -> str:
     return sentence
 
 
-def _voice_chunk(chunk: str, label: bool = False) -> bool:
+def _restates_relations(low: str, rest: str) -> bool:
+    """Whether every word of a simile ``low`` that :data:`lexicon.VOICE_SIMILE_BLOCKER_RE` blocks is a relation the words
+    before it (``rest``) already say, by :data:`lexicon.SIMILE_RELATION_WORDS` ("..., like the monitor behind the singer"
+    of "put the black cube behind the white cube"; "..., like moss on driftwood" of "stack a green cube on it"): the simile
+    pictures that relation and says nothing of its own."""
+    said = {lexicon.SIMILE_RELATION_WORDS[w] for w in re.findall(r"[a-z]+", rest.lower()) if w in lexicon.SIMILE_RELATION_WORDS}
+    blockers = [m.group(0) for m in lexicon.VOICE_SIMILE_BLOCKER_RE.finditer(low)]
+    return bool(blockers) and all(lexicon.SIMILE_RELATION_WORDS.get(w) in said for w in blockers)
+
+
+def _voice_chunk(chunk: str, label: bool = False, rest: str = "") -> bool:
     """Whether a chunk at a task's edge (:data:`lexicon.VOICE_LABEL_RE`, :data:`lexicon.VOICE_TAIL_RES`) is a voice's
     and says nothing of the task: no hazard (:data:`lexicon.VOICE_CHUNK_HAZARD_RE`: a negation, condition, reference,
     quantifier, size, order, time, pose, shape, the robot or a listener), no take-back (:data:`lexicon.RETRACTION_RE`),
@@ -414,7 +424,7 @@ def _voice_chunk(chunk: str, label: bool = False) -> bool:
     if any(k in lexicon.COMMENTARY_BLOCKING_KINDS or k == "condition" for k, _, _ in _inexpressible(low)):
         return False
     if lexicon.VOICE_SIMILE_OPENING_RE.match(low) and not label:
-        return not lexicon.VOICE_SIMILE_BLOCKER_RE.search(low)
+        return not lexicon.VOICE_SIMILE_BLOCKER_RE.search(low) or _restates_relations(low, rest)
     if lexicon.VOICE_PLACE_HAZARD_RE.search(low):
         return False  # "..., into the bin", "..., using the tongs": it may place a cube or name a tool
     if all(w in lexicon.IDLE_WORDS or w in lexicon.CHAT_WORDS or w in lexicon.INTERJECTIONS for w in words):
@@ -450,7 +460,8 @@ def drop_voice_chunks(text: str) -> tuple[str, list[str]]:
     sentences = []
     for sentence in re.split(r"(?<=[.!?])\s+", text):
         for _ in range(2):  # "..., like climbers on a rope, our high camp."
-            tail = next((t for t in (p.search(sentence) for p in lexicon.VOICE_TAIL_RES) if t and _voice_chunk(t.group("c"))), None)
+            tail = next((t for t in (p.search(sentence) for p in lexicon.VOICE_TAIL_RES)
+                         if t and _voice_chunk(t.group("c"), rest=sentence[:t.start()])), None)
             if not tail or not lexicon.GOAL_THING_RE.search(sentence[:tail.start()].lower()):
                 break
             dropped.append(tail.group("c").strip())
