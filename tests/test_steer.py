@@ -3025,3 +3025,13 @@ def test_forty_fourth_session_a_second_structure_that_does_not_compose_is_refuse
     fam = compiled("Put a pink cube on top of a white cube.", tmp_path, name="fam").path
     with pytest.raises(BadInput):
         steer(fam, "Add a pyramid of three yellow cubes.")
+
+
+def test_forty_fourth_session_a_cube_added_after_a_named_end(tmp_path):
+    """steer_stranger27 r011: "Set an S after the T, at the right end." had added an S and a second T (silently wrong); the T
+    named is the row's own end cube, and a cube 'after' one inside the row is refused."""
+    assert _meaning_after(tmp_path, "Put the letter cubes B, A and T in a row from left to right.",
+                          ["Set an S after the T, at the right end."]) == (["line[left_to_right](B,A,T,S)"], "extend")
+    fam = compiled("Put the letter cubes B, A and T in a row from left to right.", tmp_path / "inside", name="fam").path
+    with pytest.raises(BadInput, match="ends only"):
+        steer(fam, "Add an S after the A.")

@@ -715,15 +715,22 @@ def read_ops(t: str) -> list[Op]:
         if kind:  # "add a pyramid of 3 yellow blocks": a second structure, not cubes of this one
             raise SecondStructure(f"'{add.group(0).strip()}' adds a second structure (a {kind}), which the builtin "
                              "steering cannot compose with the first; state the whole new task in the edit, or use --model")
+        after = re.search(rf"\s*\b(?:right\s+|just\s+|directly\s+|immediately\s+)?(?P<r>after|following|before)\s+(?P<sel>the\s+"
+                          rf"(?:(?:letter|digit)\s+)?(?:[a-z0-9]|{COLOR_RE})(?:\s+(?:one|block|cube))?)(?![\w'])", what)
+        if after:  # "set an S after the T, at the right end": the T is a cube of the task, not one more
+            what = what[:after.start()] + " " + what[after.end():]
         m = re.search(r"\b(\d+)\b", re.sub(LABELLED_RE, " ", what))
         n = int(m.group(1)) if m else 1
         items = [{"color": c} if c else {"label": lab} for c, lab in item_sequence(what)]
         where = add.group("where")
         at = "bottom" if re.search(r"bottom|base|under|beneath|below|start|beginning|left", where) else "top"
+        if after:  # next in reading order: at the end the cube said stands at (checked when applied)
+            at = "bottom" if after.group("r") == "before" else "top"
         side = beside or re.search(r"\b(left|right)\b", where)
         target = re.match(r"\s*(?:of\s+)?(?P<sel>the\s+[a-z0-9' ]+?(?:one|block|cube)s?\b|the\s+(?:top|bottom)\b|(?:the\s+)?(?:[a-z]+\s+)?letter\s+[a-z]\b"
                           rf"|the\s+(?:[a-z]+\s+)?digit\s+\d\b|the\s+(?:{COLOR_RE})\b)", t[add.end():])
-        onto = _selector(target.group("sel")) if target and re.search(r"[a-z]", where) else None
+        onto = _selector(after.group("sel")) if after else _selector(target.group("sel")) if target and re.search(r"[a-z]", where) \
+            else None
         if re.match(r"(?:on(?:to)?|over|above|atop)$", where.strip()) and onto is None:
             onto = {"all": True} if re.match(r"\s*(?:it|them|that|the\s+(?:tower|stack|top))\b", t[add.end():]) else None
             if onto is None:
