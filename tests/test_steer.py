@@ -3035,3 +3035,12 @@ def test_forty_fourth_session_a_cube_added_after_a_named_end(tmp_path):
     fam = compiled("Put the letter cubes B, A and T in a row from left to right.", tmp_path / "inside", name="fam").path
     with pytest.raises(BadInput, match="ends only"):
         steer(fam, "Add an S after the A.")
+
+
+@pytest.mark.parametrize("edit", ["Time permitting: add a blue cube on top.", "Optional: add a blue cube on top."])
+def test_forty_fourth_session_an_edit_label_that_conditions_is_not_dropped(tmp_path, edit):
+    """"Time permitting: add a blue cube on top." had been applied as if the label were unsaid (the label list that refuses a
+    task's conditioning labels was not consulted for an edit's)."""
+    fam = compiled("Stack the yellow cube on the green cube.", tmp_path, name="fam").path
+    with pytest.raises(BadInput):
+        steer(fam, edit)

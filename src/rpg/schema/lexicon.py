@@ -3733,7 +3733,7 @@ _EDIT_LABEL_HAZARD_RE = re.compile(
 session, a negation, a restriction, a reversal, a pronoun for cubes, a condition, a take-back or a fresh start ("Start
 over:", "Completely different task now:") may change the edit."""
 
-EDIT_LABEL_RE = re.compile(r"^\s*(?P<l>[^:.;!?]{3,60}):\s+(?=(?:please\s+)?(?:make|put|add|swap|switch|remove|take|move|change|use|turn"
+EDIT_LABEL_RE = re.compile(r"^\s*(?P<l>[^:.;!?]{3,60}):\s+(?=(?:please\s+)?(?:make|put|add|insert|swap|switch|remove|take|move|change|use|turn"
                            r"|replace|place|stack|set|drop|delete|build|reverse|flip|the\s+[a-z]+\s+(?:cube|block)|the\s+[a-z]+\s+one|also"
                            r"|an?\s+(?:[a-z]+\s+)?(?:cube|block|one)|the\s+(?:tower|stack|row|line|pyramid|wall|pile|circle|grid)"
                            r"|(?:the\s+)?(?:[a-z]+\s+)?(?:cubes|blocks))\b)")
@@ -3835,8 +3835,9 @@ def edit_label_dropped(m: re.Match) -> str:
     label = m.group("l").lower()
     if re.fullmatch(r"\s*(?:add|also|plus|addition|and|extra|in\s+addition)\s*", label):
         return "also "  # "add: the red cube is left of the green cube": an addition (it had been read as the whole new task)
-    if _EDIT_LABEL_HAZARD_RE.search(label) or GOAL_THING_PREFIX_RE.search(label):  # ("Add a clue: a red cube ...": an
-        return m.group(0)  # addition, kept: dropped, the rest had become the whole new task)
+    if _EDIT_LABEL_HAZARD_RE.search(label) or GOAL_THING_PREFIX_RE.search(label) or TURNING_LABEL_RE.search(label):
+        return m.group(0)  # ("Add a clue: a red cube ...": an addition, kept: dropped, the rest had become the whole new task;
+        # "Time permitting: ...": a condition, kept to be refused: it had been dropped)
     return ""
 
 
