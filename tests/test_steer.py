@@ -513,11 +513,13 @@ def test_a_cube_added_to_the_left_of_a_line_starts_it():
     assert [i.color for i in more.items] == ["yellow", "red", "blue", "green"]
 
 
-def test_an_added_structure_is_refused_not_merged_into_the_first():
-    """"add a pyramid of 3 yellow blocks" used to add three cubes to the tower (silently wrong)."""
-    spec = extract(parse("Build a tower of red, blue and green blocks"))
-    with pytest.raises(SteerError, match="second structure"):
-        apply_ops(spec, interpret("keep the tower, and also add a pyramid of 3 yellow blocks").ops)
+def test_an_added_structure_is_refused_not_merged_into_the_first(tmp_path):
+    """"add a pyramid of 3 yellow blocks" used to add three cubes to the tower (silently wrong): a structure of its own is no
+    operation on the tower (a clause added to the task, which here does not read as the tower and a pyramid)."""
+    assert not any(o.op == "add" for o in interpret("also add a pyramid of 3 yellow blocks").ops)
+    fam = compiled("Build a tower of red, blue and green blocks", tmp_path, name="fam").path
+    with pytest.raises(SteerError):
+        steer(fam, "keep the tower, and also add a pyramid of 3 yellow blocks")
 
 
 def test_keep_names_the_structure_the_edit_builds_on():
@@ -2388,8 +2390,7 @@ def test_a_sort_of_the_task_s_cubes_keeps_them(tmp_path, base, edit, expected):
     ("Put the pink cube to the left of the purple cube.", "Line them up with a gray cube: pink, purple, then gray, from left to right.",
      "not a structure"),  # (gray left of pink)
     ("Stack a blue cube on an orange cube in the front right corner.",
-     "Add a second piece alongside it: a green cube on a pink cube, in the front left corner.", "adds a second structure"),
-    ("Stack a blue cube on an orange cube", "add a green cube on a pink cube", "adds a second structure (a stack)"),
+     "Add a second piece alongside it: a green cube on a pink cube, in the front left corner.", "names no change"),
 ])
 def test_edits_that_say_more_than_one_relation_or_cube_are_refused(tmp_path, base, edit, words):
     fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
@@ -2746,8 +2747,6 @@ def test_a_pivot_that_cannot_state_the_task_s_labels_is_refused(tmp_path):
     ("Stack the 2 cube on the 1 cube.", "put two 5 cubes on top"),
     (_TOWER_RBG, "Step 2: add white cubes on top"),
     (_TOWER_RBG, "Raise the tower by two cubes"),
-    ("Build a wall two rows high: three red cubes in the bottom row and three blue cubes in the top row.",
-     "add a row of green cubes underneath"),
 ])
 def test_forty_first_session_steering_helper_attack_is_refused(tmp_path, base, edit):
     fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
@@ -2971,6 +2970,9 @@ def test_forty_fourth_session_a_pyramids_bottom_and_top_swapped(tmp_path, edit):
     ("Build a pyramid of six red cubes.", "Add a layer of gray cubes at the bottom.", ["pyramid(gray,gray,gray,gray|red,red,red|red,red|red)"]),
     ("Build a wall two layers high, three blue cubes on the bottom layer and three green cubes on top.",
      "Add a layer of red cubes at the bottom.", ["wall(red,red,red|blue,blue,blue|green,green,green)"]),
+    # (a forty-first session attack, refused then: the row had gone on top)
+    ("Build a wall two rows high: three red cubes in the bottom row and three blue cubes in the top row.",
+     "add a row of green cubes underneath", ["wall(green,green,green|red,red,red|blue,blue,blue)"]),
 ])
 def test_forty_fourth_session_a_layer_added_at_the_bottom(tmp_path, base, edit, expected):
     """steer_stranger27 r059: "add a bottom row of three gray cubes under it" of a pyramid had been refused (rows were added on
@@ -3013,12 +3015,17 @@ def test_forty_fourth_session_a_swap_announced_then_said_in_full(tmp_path):
         ["on_patch(black,patch:red)", "on_patch(white,patch:green)"], "modify")
 
 
-@pytest.mark.parametrize("edit", ["Add a second pair: a green cube on a brown cube.", "Also stack a green cube on a brown cube."])
-def test_forty_fourth_session_a_second_stack_added_beside_the_task(tmp_path, edit):
+@pytest.mark.parametrize("base,edit,expected", [
+    ("Put a pink cube on top of a white cube.", "Add a second pair: a green cube on a brown cube.",
+     ["stack(brown,green)", "stack(white,pink)"]),
+    ("Put a pink cube on top of a white cube.", "Also stack a green cube on a brown cube.", ["stack(brown,green)", "stack(white,pink)"]),
+    # (refused until the forty-fourth session; both cubes had once gone on top of the tower)
+    ("Stack a blue cube on an orange cube", "add a green cube on a pink cube", ["stack(orange,blue)", "stack(pink,green)"]),
+])
+def test_forty_fourth_session_a_second_stack_added_beside_the_task(tmp_path, base, edit, expected):
     """steer_stranger27 r033: a second two-cube stack added to a task had been refused as a structure steering cannot compose;
     the task's instruction with the clause after it reads both, checked to keep the task and add to it."""
-    assert _meaning_after(tmp_path, "Put a pink cube on top of a white cube.", [edit]) == (
-        ["stack(brown,green)", "stack(white,pink)"], "extend")
+    assert _meaning_after(tmp_path, base, [edit]) == (expected, "extend")
 
 
 def test_forty_fourth_session_a_second_structure_that_does_not_compose_is_refused(tmp_path):
