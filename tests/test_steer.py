@@ -3051,3 +3051,12 @@ def test_forty_fourth_session_an_edit_label_that_conditions_is_not_dropped(tmp_p
     fam = compiled("Stack the yellow cube on the green cube.", tmp_path, name="fam").path
     with pytest.raises(BadInput):
         steer(fam, edit)
+
+
+@pytest.mark.parametrize("edit", ["Interleave the samples: purple, yellow, purple, yellow, left to right.",
+                                  "Purple, yellow, purple, yellow, from left to right."])
+def test_forty_fourth_session_a_new_order_listed_before_its_direction(tmp_path, edit):
+    """steer_stranger26 t034: the task's cubes listed in a new order with the direction after the list (and a label before
+    it) had been read as no task."""
+    assert _meaning_after(tmp_path, "A row of four cubes, purple, purple, yellow, yellow, from left to right.", [edit]) == (
+        ["line[left_to_right](purple,yellow,purple,yellow)"], "modify")

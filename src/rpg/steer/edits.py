@@ -833,9 +833,9 @@ def read_ops(t: str) -> list[Op]:
     arranged = ARRANGED_RE.search(t)
     if arranged and not any(o.op in ("ordering", "reverse", "pattern", "add", "remove", "recolor") for o in ops):
         # "left to right: blue, red, green": the task's cubes in that order
-        listed = re.findall(rf"\b(?:{COLOR_RE})\b|\b\d\b", arranged.group("list"))
+        listed = re.findall(rf"\b(?:{COLOR_RE})\b|\b\d\b", arranged.group("list") or arranged.group("list2"))
         ops.append(Op("arrange", {"items": [{"label": x} if x.isdigit() else {"color": canon_color(x)} for x in listed],
-                                  "way": arranged.group("way").replace(" ", "_")}))
+                                  "way": (arranged.group("way") or arranged.group("way2")).replace(" ", "_")}))
     direction = re.search(r"\b(?:read|reads|go|goes|run|runs|order|arrange\w*|spell\w*|from|it)\s+(?:from\s+)?"
                           r"(left to right|right to left|front to back|back to front)\b", t)
     if direction and not any(o.op in ("ordering", "reverse", "arrange") for o in ops):
@@ -1759,12 +1759,15 @@ def carried_after(spec: TaskSpec, carried, ops: list[Op]):
     return replace(carried, ends=frozenset(ends))
 
 
-ARRANGED_RE = re.compile(EDIT_OPENING + rf"(?:(?:put|arrange|order|reorder|line|set)\s+"
-                         rf"(?:them|it|the\s+(?:cubes|blocks))\s+(?:up\s+)?)?(?:from\s+)?(?P<way>left to right|right to left|"
-                         rf"front to back|back to front|bottom to top|top to bottom)\s*[:,]?\s*(?P<list>(?:{COLOR_RE}|\d)"
-                         rf"(?:(?:\s*,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+|\s+then\s+|\s+)(?:{COLOR_RE}|\d))+)\s*[.!]?\s*$")
-"""An edit that lists the task's cubes in a new order ("left to right: blue, red, green",
-"from bottom to top: 3, 1, 2"); the list is the whole order."""
+_ARRANGED_WAY = r"left to right|right to left|front to back|back to front|bottom to top|top to bottom"
+_ARRANGED_LIST = rf"(?:{COLOR_RE}|\d)(?:(?:\s*,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+|\s+then\s+|\s+)(?:{COLOR_RE}|\d))+"
+ARRANGED_RE = re.compile(EDIT_OPENING + rf"(?:[a-z][a-z' \-]{{0,40}}:\s*)?(?:(?:put|arrange|order|reorder|line|set)\s+"
+                         rf"(?:them|it|the\s+(?:cubes|blocks))\s+(?:up\s+)?)?(?:(?:from\s+)?(?P<way>{_ARRANGED_WAY})\s*[:,]?\s*"
+                         rf"(?P<list>{_ARRANGED_LIST})|(?P<list2>{_ARRANGED_LIST})\s*,?\s*(?:from\s+)?(?P<way2>{_ARRANGED_WAY}))"
+                         r"\s*[.!]?\s*$")
+"""An edit that lists the task's cubes in a new order ("left to right: blue, red, green", "from bottom to top: 3, 1, 2",
+"Interleave the samples: purple, yellow, purple, yellow, left to right"); the list is the whole order (a label before it
+that turns or judges the edit is refused before)."""
 
 
 def _arranged(spec: TaskSpec, items: list[Item], way: str) -> TaskSpec:
