@@ -3060,3 +3060,14 @@ def test_forty_fourth_session_a_new_order_listed_before_its_direction(tmp_path, 
     it) had been read as no task."""
     assert _meaning_after(tmp_path, "A row of four cubes, purple, purple, yellow, yellow, from left to right.", [edit]) == (
         ["line[left_to_right](purple,yellow,purple,yellow)"], "modify")
+
+
+def test_forty_fourth_session_a_swap_then_said_after_a_comma_and_a_label(tmp_path):
+    """steer_stranger26 t023: "Seating chart changed: swap them, yellow on the red patch and blue on the green patch." had been
+    refused; a label that conditions the edit still refuses it."""
+    base = "Put the blue cube on the red patch and the yellow cube on the green patch."
+    assert _meaning_after(tmp_path, base, ["Seating chart changed: swap them, yellow on the red patch and blue on the green "
+                                           "patch."]) == (["on_patch(blue,patch:green)", "on_patch(yellow,patch:red)"], "modify")
+    fam = compiled(base, tmp_path / "cond", name="fam").path
+    with pytest.raises(BadInput, match="Time permitting"):
+        steer(fam, "Time permitting: swap them, yellow on the red patch and blue on the green patch.")

@@ -3675,11 +3675,12 @@ IT_ON_A_PATCH_RE = re.compile(rf"(?i)^\s*(?:(?:now|ok(?:ay)?|so|and|then|just)[\
                               rf"(?P<p>(?:on|onto|on\s+top\s+of)\s+(?:the|a)\s+(?:{COLOR_RE})\s+(?:goal\s+)?patch)\b")
 """An edit that puts "it" on a patch ("Stand it on the blue patch."): of a structure task, "it" is the structure."""
 
-SWAPPED_THEN_SAID_RE = re.compile(r"(?i)^\s*(?:(?:now|ok(?:ay)?|so|and|then|right)[\s,]+)*(?:swap|switch|exchange|trade|flip)\s+"
+SWAPPED_THEN_SAID_RE = re.compile(r"(?i)^\s*(?:(?P<label>[^:;,.!?]{2,40}):\s+)?(?:(?:now|ok(?:ay)?|so|and|then|right)[\s,]+)*(?:swap|switch|exchange|trade|flip)\s+"
                                   r"(?:them|the\s+two|those|these|both|places|sides|patches|spots|it)(?:\s+(?:over|around|round))?"
-                                  r"[^:;.!?]{0,60}:\s*(?=\S)")
+                                  r"(?:[^:;,.!?]{0,60}:|\s*[,:])\s*(?=\S)")
 """An exchange announced, then said in full ("Swap them over like switching kegs: white on the green patch, black on the
-red patch."): the statement after the colon is the edit (the announcement had named no change read)."""
+red patch.", "swap them, yellow on the red patch and blue on the green patch"): the statement after it is the edit when it
+reads as a whole task (the announcement had named no change read)."""
 
 EDIT_CONTINUES_RE = re.compile(r"^\s*(?:and\s+|,\s*)?(?:then|next|after\s+that|afterwards|after\s+this)\b")
 """An edit that goes on from the task ("then put C on A", "next, the green cube on the red one"):

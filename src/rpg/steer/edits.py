@@ -26,6 +26,8 @@ from rpg.errors import BadInput
 from rpg.schema.builder import DEFAULT_COLORS
 from rpg.schema.lexicon import (
     SWAPPED_THEN_SAID_RE,
+    EDIT_LABEL_RE,
+    edit_label_dropped,
     BARE_ORDER_RE,
     CAUSED_MOTION_RE,
     COLOR_RE,
@@ -1035,7 +1037,13 @@ def interpret(edit: str) -> EditPlan:
     if aside:  # "That's too much for today. Leave out the yellow cube.": the change read without its reason
         return replace(interpret(edit), set_aside=aside)
     swapped = SWAPPED_THEN_SAID_RE.match(edit)
-    if swapped and (said := interpret(edit[swapped.end():])).standalone and not said.fresh:
+    if swapped and swapped.group("label") and EDIT_LABEL_RE.sub(edit_label_dropped, f"{swapped.group('label')}: swap") != "swap":
+        swapped = None  # a label that may change the edit ("Time permitting: swap them, ..."): read, or refused, below
+    try:
+        said = interpret(edit[swapped.end():]) if swapped else None
+    except BadInput:  # "swap them, please": no statement after it
+        said = None
+    if said is not None and said.standalone and not said.fresh and names_cubes(normalize_edit(said.text)):
         # "Swap them over like switching kegs: white on the green patch, black on the red patch.": the exchange said in full
         return replace(said, checks=(*said.checks, ("swapped", True)))
     plan = _interpret_material(edit)
