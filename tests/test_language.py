@@ -8147,3 +8147,15 @@ def test_forty_fourth_session_a_simile_that_restates_the_relation(text, expected
 def test_forty_fourth_session_similes_refused(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # label cubes listed by their kind, then placed (steer_stranger27 r019's base; the list had been read as two unlabelled
+    # cubes and refused)
+    ("Put the digit cubes 7 and 8 on the white patch.", ["on_patch(7,8,patch:white)"]),
+    ("Put the letter cubes A and B on the white patch.", ["on_patch(A,B,patch:white)"]),
+    ("Put the digit cubes 1, 2 and 3 on the red patch.", ["on_patch(1,2,3,patch:red)"]),
+    ("Put the letter cubes A and B in the front left corner.", ["in_region(A,front_left)", "in_region(B,front_left)"]),
+])
+def test_forty_fourth_session_label_lists_placed(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)

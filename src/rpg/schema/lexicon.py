@@ -89,6 +89,14 @@ ABBREVIATIONS: dict[str, str] = {
 requirement), each read as its word (curated: an abbreviation with two readings, "blk" for
 black or block, is read by :data:`BLK_RE` from the word after it)."""
 
+LABEL_LIST_PLACED_RE = re.compile(
+    r"\b(?P<the>[Tt]he)\s+(?P<kind>letter|digit|number)\s+(?:cubes|blocks)\s+(?P<labels>(?:[A-Z]|\d)(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+)"
+    r"(?:[A-Z]|\d))+)(?=\s+(?:all\s+|both\s+)?(?:on|onto|in|into|to)\s+(?:the|a)\s+(?:[a-z]+\s+){0,2}(?:patch|corner|side|half|edge"
+    r"|middle|cent(?:er|re))\b)")
+"""Label cubes listed by their kind and then placed on a patch or in a place of the table ("the letter cubes A and B on the
+white patch", "the digit cubes 7 and 8 in the front left corner"): said one cube at a time ("the letter A block and the
+letter B block"), as the placement readers read them (the list had been read as two unlabelled cubes and refused)."""
+
 LABELS_AND_NOUN_RE = re.compile(r"\b(?P<the>[Tt]he)\s+(?P<labels>(?:[A-Z]|\d)(?:\s*(?:,\s*(?:and\s+)?|\s+and\s+|\s*&\s*)(?:[A-Z]|\d))+)"
                                 r"\s+(?P<noun>cube|block)s\b")
 """"the 1 & 9 cubes", "the A and B blocks", "the A, B and C cubes": labelled cubes sharing one noun, read as "the 1

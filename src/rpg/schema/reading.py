@@ -829,6 +829,18 @@ def _labels_each_a_cube(m: re.Match) -> str:
     return ", ".join(cubes[:-1]) + " and " + cubes[-1]
 
 
+def _placed_labels_one_by_one(m: re.Match) -> str:
+    """A match of :data:`lexicon.LABEL_LIST_PLACED_RE` said one cube at a time ("the letter A block and the letter B
+    block"); digits said as "number" are digit cubes."""
+    labels = re.findall(r"[A-Z0-9]", m.group("labels"))
+    kind = "letter" if all(x.isalpha() for x in labels) else "digit" if all(x.isdigit() for x in labels) else None
+    if kind is None or (kind == "letter") != (m.group("kind") == "letter"):
+        return m.group(0)  # (letters and digits mixed, or said as the other kind: left to the readers, which refuse)
+    cubes = [f"the {kind} {x} block" for x in labels]
+    cubes[0] = m.group("the") + cubes[0][3:]
+    return ", ".join(cubes[:-1]) + " and " + cubes[-1]
+
+
 BARE_LABEL_RE = re.compile(r"(\bthe|(?:\bwith|\bthen|\band|,)(?=\s+[A-Z]\b))\s+([A-Z]|\d)\b(?![-'])"
                            r"(?!\s+(?:on\s+top\s+of\s+|next\s+to\s+|beside\s+)?(?:each\s+other|one\s+another|together)\b)(?=\s*(?:[,.;:!?()]|$|\s+(?:on|onto|atop|next|to|left|right|in|at|"
                            r"behind|beside|near|under|underneath|below|above|and|then|between|far|is|goes|should|must|from|into|onto|as|with)\b))")
@@ -1473,6 +1485,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
         # digit had been dropped)
         original = LABEL_RANGE_RE.sub(_listed_range, original)
     original = lexicon.LABELS_AND_NOUN_RE.sub(_labels_each_a_cube, original)  # "the 1 & 9 cubes", "the A, B and C cubes"
+    original = lexicon.LABEL_LIST_PLACED_RE.sub(_placed_labels_one_by_one, original)  # "the letter cubes A and B on the white patch"
     original = lexicon.DIGIT_WORDS_RE.sub(lambda m: m.group("noun") + lexicon.DIGIT_WORD_RE.sub(
         lambda w: str(lexicon.DIGIT_WORDS.index(w.group(0).lower())), m.group("list")), original)
     if not original:
