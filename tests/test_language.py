@@ -8159,3 +8159,14 @@ def test_forty_fourth_session_similes_refused(text):
 ])
 def test_forty_fourth_session_label_lists_placed(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a label between "The" and its noun at a sentence's start: "The A block" had lost its label (read as an article: a red
+    # cube went on B, silently), "The K block" had been refused
+    ("The A block goes on top of the B block.", ["stack(B,A)"]),
+    ("The K block goes on top of the M block.", ["stack(M,K)"]),
+    ("The 3 cube goes in front of the 8 cube.", ["in_front_of(3,8)"]),
+])
+def test_forty_fourth_session_a_label_after_a_capital_the(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)

@@ -6197,8 +6197,9 @@ LABEL_NOUN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 other."""
 
 LABEL_ARTICLE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
-    (re.compile(r"\b(the|a|an)\s+([A-Z])\s+(block|cube)\b"), r"\1 letter \2 \3"),  # "the A block"
-    (re.compile(r"\b(the)\s+(\d)\s+(block|cube)\b(?!s)"), r"\1 digit \2 \3"),  # "the 3 cube"
+    # "the A block", "The K block goes ..." (at a sentence's start, "The A block" had lost its label: 'A' read as an article)
+    (re.compile(r"\b([Tt]he|a|an|An)\s+([A-Z])\s+([Bb]lock|[Cc]ube)\b"), r"\1 letter \2 \3"),
+    (re.compile(r"\b([Tt]he)\s+(\d)\s+([Bb]lock|[Cc]ube)\b(?!s)"), r"\1 digit \2 \3"),  # "the 3 cube"
 )
 """A label between an article and a cube's noun ("the A block", "the 3 cube"): a letter or digit cube."""
 
