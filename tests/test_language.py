@@ -8170,3 +8170,13 @@ def test_forty_fourth_session_label_lists_placed(text, expected):
 ])
 def test_forty_fourth_session_a_label_after_a_capital_the(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a row's places said before the row word, the first at the text's start (stranger56; 'left' had been read as the
+    # table's and refused)
+    ("Orange on the far left, yellow in the middle, blue on the far right, all in one row.", ["line[left_to_right](orange,yellow,blue)"]),
+    ("Orange on the left, yellow in the middle, blue on the right, all in one row.", ["line[left_to_right](orange,yellow,blue)"]),
+])
+def test_forty_fourth_session_row_places_said_first(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)

@@ -3539,10 +3539,10 @@ def names_a_role(before: str, text: str) -> bool:
                     and not re.search(r"\b(?:towers?|stacks?|stacked|columns?|piles?)\b", text)))
 
 
-COMMA_ROLE_BEFORE = re.compile(rf"(?:,\s*(?:the\s+)?(?:{COLOR_RE}|\d)|\band\s+(?:the\s+)?\d)(?:\s+(?:block|cube|one))?(?:\s+(?:is|goes|sits))?\s*$")
+COMMA_ROLE_BEFORE = re.compile(rf"(?:(?:^|,)\s*(?:the\s+)?(?:{COLOR_RE}|\d)|\band\s+(?:the\s+)?\d)(?:\s+(?:block|cube|one))?(?:\s+(?:is|goes|sits))?\s*$")
 """Text before a bare side that makes it the place of a cube said after a comma in a row ("two blue and one orange in a
-row, orange in the centre", "5 and 8 in a row, 8 on the left and 5 on the right"): its place in the row, not the
-table's."""
+row, orange in the centre", "5 and 8 in a row, 8 on the left and 5 on the right", the text's first words "Orange on the
+left, yellow in the middle, blue on the right, all in one row"): its place in the row, not the table's."""
 
 
 MIDDLE_GROUP_BEFORE = re.compile(r"(?:^|[;,.]\s*|\band\s+)the\s+(?:other\s+)?\d+(?:\s+(?:cubes|blocks|ones))?\s*$")
