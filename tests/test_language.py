@@ -8180,3 +8180,12 @@ def test_forty_fourth_session_a_label_after_a_capital_the(text, expected):
 ])
 def test_forty_fourth_session_row_places_said_first(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+def test_forty_fourth_session_a_swap_whose_end_is_said_in_full():
+    """stranger56: the end of an exchange said in full after "so" is that end (the swap had been refused as a reference to
+    the current scene); a swap with no end said stays refused."""
+    text = "Swap things around so the black cube is on the white patch and the white cube is on the black patch."
+    assert sorted(meaning(check_feasibility(parse(text)))) == ["on_patch(black,patch:white)", "on_patch(white,patch:black)"]
+    with pytest.raises(BadInput):
+        check_feasibility(parse("Swap the red cube and the blue cube."))
