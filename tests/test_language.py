@@ -8189,3 +8189,12 @@ def test_forty_fourth_session_a_swap_whose_end_is_said_in_full():
     assert sorted(meaning(check_feasibility(parse(text)))) == ["on_patch(black,patch:white)", "on_patch(white,patch:black)"]
     with pytest.raises(BadInput):
         check_feasibility(parse("Swap the red cube and the blue cube."))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a label alone after a capitalised "The" (stranger56: "The 3 goes in front of the 8." had been read as no task)
+    ("The 3 goes in front of the 8.", ["in_front_of(3,8)"]),
+    ("The A goes on the B.", ["stack(B,A)"]),
+])
+def test_forty_fourth_session_a_bare_label_after_a_capital_the(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)

@@ -841,7 +841,7 @@ def _placed_labels_one_by_one(m: re.Match) -> str:
     return ", ".join(cubes[:-1]) + " and " + cubes[-1]
 
 
-BARE_LABEL_RE = re.compile(r"(\bthe|(?:\bwith|\bthen|\band|,)(?=\s+[A-Z]\b))\s+([A-Z]|\d)\b(?![-'])"
+BARE_LABEL_RE = re.compile(r"(\b[Tt]he|(?:\bwith|\bthen|\band|,)(?=\s+[A-Z]\b))\s+([A-Z]|\d)\b(?![-'])"
                            r"(?!\s+(?:on\s+top\s+of\s+|next\s+to\s+|beside\s+)?(?:each\s+other|one\s+another|together)\b)(?=\s*(?:[,.;:!?()]|$|\s+(?:on|onto|atop|next|to|left|right|in|at|"
                            r"behind|beside|near|under|underneath|below|above|and|then|between|far|is|goes|should|must|from|into|onto|as|with)\b))")
 """A label cube named by its label alone after "the" (a letter after "with", "then", "and" or a comma), before a
@@ -1501,8 +1501,8 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     # "the cube with the M", "the block with the 4 on it": the cube labelled so
     labelled = lexicon.rewrite(lexicon.LABEL_NOUN_REWRITES, original)
     listed = re.search(r"\b[A-Z0-9](?:\s*,\s*(?:and\s+)?[A-Z0-9]\b|\s+and\s+[A-Z0-9]\b)", original)  # "T, O, P": a list
-    labelled = BARE_LABEL_RE.sub(lambda m: m.group(0) if listed and m.group(1) != "the" else
-                                 f"{m.group(1)} {'' if m.group(1) == 'the' else 'the '}{m.group(2)} block",
+    labelled = BARE_LABEL_RE.sub(lambda m: m.group(0) if listed and m.group(1).lower() != "the" else
+                                 f"{m.group(1)} {'' if m.group(1).lower() == 'the' else 'the '}{m.group(2)} block",
                                  labelled)  # "stack the A on the B", "with A at the bottom, then B": label cubes
     # "stack B on A, C on B", "STACK 2 on 1, 3 on 2 (digit cubes)", "stack letter B on letter A"
     labelled = labels_in_relations(labelled, digits=bool(LABEL_CUBES_SAID_RE.search(original)) or (
