@@ -8198,3 +8198,11 @@ def test_forty_fourth_session_a_swap_whose_end_is_said_in_full():
 ])
 def test_forty_fourth_session_a_bare_label_after_a_capital_the(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+def test_forty_fourth_session_that_order_after_listed_letters():
+    """stranger56: "in that order" after "the letters Q, R and S" refers to the letters listed (it had been refused as an
+    order the speaker shows); with nothing listed it stays refused."""
+    assert meaning(check_feasibility(parse("Put the letters Q, R and S in a row, in that order."))) == ["line[sequence](Q,R,S)"]
+    with pytest.raises(BadInput):
+        check_feasibility(parse("Stack the letters in that order."))

@@ -616,7 +616,9 @@ def _refuse_unresolved_pronoun(text: str, original: str) -> None:
         raise ParseError(f"'{order.group(0)}' in \"{original[:80]}\" orders the cubes of a {unordered.group(0)}, which the "
                          "builtin parser reads with no order of its cubes; say the places another way (e.g. a row from left "
                          "to right), or use --model")
-    listed = len(color_mentions(text)) + len(re.findall(r"\b(?:letter|digit)\s+\w\b|'\w'|\b\d\b", text))
+    listed = len(color_mentions(text)) + len(re.findall(r"\b(?:letter|digit)\s+\w\b|'\w'|\b\d\b", text)) + sum(
+        len(re.findall(r"[A-Z]", m.group(1))) for m in re.finditer(  # "the letters Q, R and S ..., in that order"
+            r"\b(?:letters|letter\s+(?:cubes|blocks))\s+([A-Z](?:\s*,\s*(?:and\s+)?[A-Z]|\s+and\s+[A-Z])+)\b", original))
     if order and listed < 2 and not re.search(r"\b[A-Z]{2,}\b|['\"][A-Za-z0-9]{2,}['\"]", original):  # "spell ABC in that order"
         raise Inexpressible("reference", [order.group(0)], "refers to an order the instruction does not list (one the "
                             "speaker shows): list it (e.g. \"stack the red, green and blue blocks in that order\")", original)
