@@ -3071,3 +3071,18 @@ def test_forty_fourth_session_a_swap_then_said_after_a_comma_and_a_label(tmp_pat
     fam = compiled(base, tmp_path / "cond", name="fam").path
     with pytest.raises(BadInput, match="Time permitting"):
         steer(fam, "Time permitting: swap them, yellow on the red patch and blue on the green patch.")
+
+
+@pytest.mark.parametrize("base,edit,expected", [
+    # steer_stranger27 r043: a voice's chunk after the change, and "two more" cubes of a colour on the task's one patch
+    ("Place the yellow cube on the blue patch.", "Add two more yellow cubes to the blue patch, a school of guppies.",
+     ["on_patch(yellow,yellow,yellow,patch:blue)"]),
+    # r041: a cube put on a cube in a place of the table: the tower stands there
+    ("Put the brown cube in the back right corner of the table.", "Hardscape tweak: stack a green cube on it, like moss on driftwood.",
+     ["stack(brown,green)@back_right"]),
+    # r029: "one more layer" of a pyramid, its cubes said after a comma
+    ("Build a pyramid of three cubes: two black on the bottom and one yellow on top.", "Add one more layer underneath, three green cubes.",
+     ["pyramid(green,green,green|black,black|yellow)"]),
+])
+def test_forty_fourth_session_additions_said_in_a_voice(tmp_path, base, edit, expected):
+    assert _meaning_after(tmp_path, base, [edit]) == (expected, "extend")

@@ -3925,6 +3925,9 @@ now (at the place said) made X (:data:`EDIT_REWRITES`); the negated colour is ch
 dropped."""
 
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
+    # "add one more layer underneath, three green cubes": another layer of the task's structure (a count "more" of nothing
+    # named had refused it)
+    (re.compile(r"(?i)\b(?:one|1)\s+more\s+(?=(?:row|layer|level|tier)\b)"), "another "),
     # "stack those six cubes into one tower", "put all the cubes in a single row": the task's cubes, said as "them" (a tower
     # into "one" had been read as a second structure added)
     (re.compile(r"(?i)\b(?P<v>stack|put|arrange|pile|line\s+up|place|set|build)\s+(?:all\s+)?(?:those|these|the)\s+(?:(?:\d+|two|three|four"

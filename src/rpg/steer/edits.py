@@ -83,7 +83,7 @@ from rpg.schema.lexicon import (
 )
 from rpg.schema.model import TaskSchema
 from rpg.schema.readers.common import item_sequence
-from rpg.schema.reading import apply_corrections, canon_color, moving_verb, region_name, spoken
+from rpg.schema.reading import apply_corrections, canon_color, drop_voice_chunks, moving_verb, region_name, spoken
 from rpg.schema.structures import (
     STRUCTURE_KINDS,
     STRUCTURE_RE,
@@ -675,9 +675,10 @@ def read_ops(t: str) -> list[Op]:
         re.match(r"\s*(?:and\s+|now\s+|plus\s+)?(?:1\s+more|one\s+more|another|an\s+extra|1\s+extra)\s+(?:row|layer|level|tier)\b"
                  r"(?P<rest>.*)", t)  # "one more row"
     if layer and region is None and not re.search(r"\b(?:blocks?|cubes?)\b", re.sub(  # "put the row on the right side": a move
-            rf"^\s*of\s+(?:\d+\s+)?(?:(?:{COLOR_RE})\s+)?(?:blocks|cubes)\b", " ", layer.group("rest"))):  # "a third row of (3) red cubes"
+            rf"(?:^\s*of|,)\s+(?:\d+\s+)?(?:(?:{COLOR_RE})\s+)?(?:blocks|cubes)\b", " ", layer.group("rest"))):  # "a third row of (3) red
+        # cubes", "another layer underneath, 3 green cubes"
         rest = layer.group("rest")
-        counted = re.match(r"\s*of\s+(\d+)\s", rest)
+        counted = re.match(r"\s*of\s+(\d+)\s", rest) or re.search(r",\s+(\d+)\s+(?:[a-z]+\s+)?(?:blocks|cubes)\b", rest)
         below = re.search(r"\b(?:bottom|under|underneath|below|beneath)\b", layer.group(0))
         if re.search(r"\b(?:base|left|right|front|back|beside|next)\b", rest) or (below and re.search(r"\btop\b", rest)):
             raise SteerError(f"'{layer.group(0).strip()}': the builtin steering adds a row or layer on top or at the bottom only; "
@@ -1036,6 +1037,9 @@ def interpret(edit: str) -> EditPlan:
     edit, aside = reasons_set_aside(edit)
     if aside:  # "That's too much for today. Leave out the yellow cube.": the change read without its reason
         return replace(interpret(edit), set_aside=aside)
+    edit, voice = drop_voice_chunks(edit)  # "Add two more yellow cubes to the blue patch, a school of guppies.": the voice's
+    if voice:  # chunk, inert by the test a task's is held to
+        return replace(interpret(edit), set_aside=tuple(voice))
     swapped = SWAPPED_THEN_SAID_RE.match(edit)
     if swapped and swapped.group("label") and EDIT_LABEL_RE.sub(edit_label_dropped, f"{swapped.group('label')}: swap") != "swap":
         swapped = None  # a label that may change the edit ("Time permitting: swap them, ..."): read, or refused, below

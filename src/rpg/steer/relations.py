@@ -370,6 +370,11 @@ def rewrite_patch(edit: str, schema: TaskSchema) -> tuple[str, str] | None:
                      rf"(?:(?:on|onto|in)\s+(?:the\s+(?:{COLOR_RE}\s+)?(?:goal\s+)?patch|it)\s+)?(?:too|as well)\s*", t) or \
         re.fullmatch(rf"\s*(?:and\s+|now\s+)*(?:also\s+)?(?:put|place|move|bring|slide|push)\s+(?:the|a|an)\s+({COLOR_RE})\s+(?:block|cube|one)\s+"
                      rf"(?:on|onto|in)\s+(?:the\s+(?:{pcolor}\s+)?(?:goal\s+)?patch|it)\s*(?:too|as well)?\s*", t)
+    more = re.fullmatch(rf"\s*(?:and\s+|now\s+|also\s+)*(?:add|put|place|bring)\s+(\d+|{COUNT_WORD_RE})\s+more\s+({COLOR_RE})\s+(?:blocks|cubes)"
+                        rf"(?:\s+(?:on|onto|to|in)\s+(?:the\s+(?:{pcolor}\s+)?(?:goal\s+)?patch|it))?\s*(?:too|as\s+well)?\s*", t)
+    if more:  # "add two more yellow cubes to the blue patch": that many more of the colour on the task's one patch
+        k = NUMBER_WORDS.get(more.group(1)) or int(more.group(1))
+        return f"Place {cube_list(colors + [canon_color(more.group(2))] * k)} onto the {pcolor}{' long' if shape == 'long' else ''} goal patch", "extend"
     if count:
         n = NUMBER_WORDS.get(count.group(1)) or int(count.group(1))
         if not 1 <= n <= 6:

@@ -1244,9 +1244,14 @@ def _pair(atom: str) -> frozenset[str] | None:
 def _extends(old: str, new: str) -> bool:
     """Whether meaning atom ``new`` is tower ``old`` built higher or lower (``stack(blue,red)`` ->
     ``stack(blue,red,green)`` or ``stack(green,blue,red)``, the same place): the old tower's
-    order kept, whole, with cubes only above or below it (none between its cubes)."""
+    order kept, whole, with cubes only above or below it (none between its cubes); or a cube in a place of the table
+    (``in_region(brown,back_right)``) the base of a tower there (``stack(brown,green)@back_right``)."""
     a = re.fullmatch(r"stack\(([^()|;]*)\)(@\w+)?", old)
     b = re.fullmatch(r"stack\(([^()|;]*)\)(@\w+)?", new)
+    placed = re.fullmatch(r"in_region\(([^(),|;]+),(\w+)\)", old)
+    if placed and b and b.group(2) == f"@{placed.group(2)}" and b.group(1).split(",")[0] == placed.group(1):
+        return True  # a cube in a place of the table made a tower's base there ("stack a green cube on it" of the brown cube
+        # in the back right corner): its place kept, as the tower's
     if not (a and b) or a.group(2) != b.group(2):
         return False
     was, now = a.group(1).split(","), b.group(1).split(",")
