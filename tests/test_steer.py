@@ -3086,3 +3086,11 @@ def test_forty_fourth_session_a_swap_then_said_after_a_comma_and_a_label(tmp_pat
 ])
 def test_forty_fourth_session_additions_said_in_a_voice(tmp_path, base, edit, expected):
     assert _meaning_after(tmp_path, base, [edit]) == (expected, "extend")
+
+
+def test_forty_fourth_session_two_more_cubes_one_at_each_end(tmp_path):
+    """steer_stranger27 r058: "Lengthen the row with two more orange cubes, one at each end." had been refused ('lengthen',
+    then two cubes at two places)."""
+    assert _meaning_after(tmp_path, "A row of two orange cubes and one white cube, order doesn't matter.", [
+        "Put the white one in the middle.", "Lengthen the row with two more orange cubes, one at each end."]) == (
+        ["line[sequence](orange,orange,white,orange,orange)"], "extend")

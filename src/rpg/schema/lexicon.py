@@ -3925,6 +3925,9 @@ now (at the place said) made X (:data:`EDIT_REWRITES`); the negated colour is ch
 dropped."""
 
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
+    # "Lengthen the row with two more orange cubes", "extend the tower with a red cube": those cubes added
+    (re.compile(r"(?i)\b(?:lengthen|extend|grow|widen|raise)\s+(?:the\s+(?:row|line|tower|stack|wall)|it)\s+(?:with|by\s+adding)\s+(?=(?:an?|one|two|three"
+                r"|four|\d+|another)\b)"), "add "),
     # "add one more layer underneath, three green cubes": another layer of the task's structure (a count "more" of nothing
     # named had refused it)
     (re.compile(r"(?i)\b(?:one|1)\s+more\s+(?=(?:row|layer|level|tier)\b)"), "another "),

@@ -695,7 +695,10 @@ def read_ops(t: str) -> list[Op]:
     add = next((a for a in adds if _adds_a_cube(a, t)), None)
     each_end = re.search(r"\b(?:at|on|to)\s+(?:each|both|either)\s+(?:ends?|sides?)\b", t) if add else None
     one = item_sequence(add.group("what")) if each_end else []
-    if each_end and len(one) == 1 and not re.search(r"\b(?:\d+|two|three|four|pairs?)\b", add.group("what")):
+    one_each = each_end and re.search(r"\b(?:one|1)\s+(?:at|on|to)\s+(?:each|both|either)\s+(?:ends?|sides?)\b", t) and re.search(
+        r"\b(?:2|two)\s+(?:more\s+)?(?:[a-z]+\s+)?(?:cubes|blocks|ones)\b", add.group("what"))  # "two more orange cubes, one at
+    # each end": one at each end
+    if each_end and len(one) == 1 and (one_each or not re.search(r"\b(?:\d+|two|three|four|pairs?)\b", add.group("what"))):
         # "add a red at each end": that cube at both ends (one of them had been dropped, then the edit refused)
         item = {"color": one[0][0]} if one[0][0] else {"label": one[0][1]}
         ops += [Op("add", {"items": [item], "count": None, "at": end}) for end in ("bottom", "top")]
