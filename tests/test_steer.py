@@ -3094,3 +3094,14 @@ def test_forty_fourth_session_two_more_cubes_one_at_each_end(tmp_path):
     assert _meaning_after(tmp_path, "A row of two orange cubes and one white cube, order doesn't matter.", [
         "Put the white one in the middle.", "Lengthen the row with two more orange cubes, one at each end."]) == (
         ["line[sequence](orange,orange,white,orange,orange)"], "extend")
+
+
+def test_forty_fourth_session_a_matching_tower_in_another_place(tmp_path):
+    """steer_stranger27 r037: "Build a matching tower on the right side, same colours in the same order." had been read as no
+    change; the tower is copied there, checked to read back as the tower and its copy (else refused)."""
+    assert _meaning_after(tmp_path, "Stack three cubes: blue on the bottom, then yellow, then red.", [
+        "Put it on the left side of the table.", "Build a matching tower on the right side, same colours in the same order."]) == (
+        ["stack(blue,yellow,red)@left", "stack(blue,yellow,red)@right"], "extend")
+    fam = compiled("Stack the red cube on the blue cube in the back left corner.", tmp_path / "same", name="fam").path
+    with pytest.raises(BadInput, match="another place"):
+        steer(fam, "Build an identical tower in the back left corner.")

@@ -3690,6 +3690,15 @@ SWAPPED_THEN_SAID_RE = re.compile(r"(?i)^\s*(?:(?P<label>[^:;,.!?]{2,40}):\s+)?(
 red patch.", "swap them, yellow on the red patch and blue on the green patch"): the statement after it is the edit when it
 reads as a whole task (the announcement had named no change read)."""
 
+STRUCTURE_COPIED_RE = re.compile(
+    r"(?i)^\s*(?:(?:now|and|also|then|next)\s*,?\s+)*(?:build|make|add|put|stack|create|set\s+up)\s+(?:a\s+matching|an\s+identical"
+    r"|a\s+second\s+identical|another\s+identical|a\s+copy\s+of\s+the|a\s+duplicate\s+of\s+the|an\s+exact\s+copy\s+of\s+the)\s+"
+    r"(?P<s>tower|stack)(?:\s+of\s+it)?\s+(?P<place>(?:on|at|to)\s+the\s+(?:left|right|front|back)(?:\s+side)?(?:\s+of\s+the\s+table)?"
+    r"|in\s+the\s+(?:back|front)\s+(?:left|right)\s+corner(?:\s+of\s+the\s+table)?)"
+    r"(?:\s*,\s*(?:with\s+)?(?:the\s+)?same\s+colou?rs(?:\s+in\s+the\s+same\s+order)?)?\s*[.!]?\s*$")
+"""An edit that adds a copy of the task's one tower in another place of the table ("Build a matching tower on the right
+side, same colours in the same order."): read by :func:`rpg.steer.steering._copied_tower`."""
+
 EDIT_CONTINUES_RE = re.compile(r"^\s*(?:and\s+|,\s*)?(?:then|next|after\s+that|afterwards|after\s+this)\b")
 """An edit that goes on from the task ("then put C on A", "next, the green cube on the red one"):
 an addition, never a whole new task (it had replaced the task, dropping the cubes below)."""

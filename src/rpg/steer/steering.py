@@ -38,6 +38,7 @@ from rpg.schema.feasibility import check_feasibility
 from rpg.schema.lexicon import (
     EDIT_MOVES_A_TASK_CUBE_RE,
     IT_ON_A_PATCH_RE,
+    STRUCTURE_COPIED_RE,
     NEW_PATCH_RE,
     ADDED_CUBE_RE,
     BETWEEN_THEM_RE,
@@ -95,6 +96,7 @@ from rpg.steer.relations import (
     relation_of,
     remove_cubes,
     per_cube,
+    places_said,
     replaced_placement,
     rewrite_moved,
     rewrite_patch,
@@ -344,6 +346,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     stacked = _stacked_in_row_order(plan.text, ref_schema) if ref_schema is not None else None
     if stacked is not None:  # "stack them in that order, R at the bottom" of a row spelling RATS
         return stacked
+    copied = _copied_tower(plan.text, ref_schema) if ref_schema is not None else None
+    if copied is not None:  # "build a matching tower on the right side": the tower again, there
+        return copied
     restated = _tower_restated(plan.text, ref_schema) if ref_schema is not None else None
     if restated is not None:  # "make the tower five cubes: three red and then two blue on top": the whole tower again
         return restated
@@ -1239,6 +1244,43 @@ def _pair(atom: str) -> frozenset[str] | None:
     ``stack(blue,red)``), or None for an atom over more or fewer."""
     m = re.fullmatch(r"[a-z_]+(?:\[[^\]]*\])?\(([^(),;|]+),([^(),;|]+)\)(?:@\w+)?", atom)
     return frozenset(m.groups()) if m and m.group(1) != m.group(2) else None
+
+
+def _copied_tower(text: str, ref: TaskSchema) -> tuple[TaskSchema, str, str] | None:
+    """A copy of the task's one tower, its cubes in the same order, in a place of the table the edit names
+    (:data:`STRUCTURE_COPIED_RE`): the tower stated again where it stands, then its copy there; None for any other edit.
+
+    Raises:
+        SteerError: the task is no single tower in order, the copy's place is the tower's own, or the two do not read back
+            as the task's tower and its copy (checked, so nothing else is lost or added)."""
+    from collections import Counter
+
+    from rpg.schema.meaning import meaning
+
+    m = STRUCTURE_COPIED_RE.match(text)
+    if m is None:
+        return None
+    spec, carried = split(ref)
+    places = places_said(f" {m.group('place')} ")
+    where = next(iter(places)) if len(places) == 1 else None
+    if spec is None or spec.structure != "tower" or spec.direction is None or any(i.label for i in spec.items) or where is None \
+            or carried.region == where or carried.patch or carried.layers or carried.ends:
+        raise SteerError(f"'{m.group(0).strip()}' copies the task's tower to {m.group('place')}; the builtin steering copies one tower "
+                         "of coloured cubes in an order to another place of the table; state the whole new task, or use --model")
+    colours = [i.color for i in spec.items]
+    listed = f"{', '.join(colours[:-1])} and {colours[-1]} from the bottom"
+    made = f"Stack {listed}{' ' + region_phrase(carried.region) if carried.region else ''}. Stack another {listed} " \
+           f"{region_phrase(where)}."  # (the task stated anew, a sentence each: its own words had not read back beside the copy)
+    try:
+        schema = parse(made)
+    except (BadInput, ValueError) as exc:
+        raise SteerError(f"the task's tower and its copy {m.group('place')} do not read back together ({str(exc).splitlines()[0]}); "
+                         "state the whole new task, or use --model") from None
+    copy = f"stack({','.join(colours)})@{where}"
+    if Counter(meaning(schema)) != Counter(meaning(ref)) + Counter([copy]):
+        raise SteerError(f"the task's tower and its copy {m.group('place')} read back as {schema.goal_summary!r}, not the tower and "
+                         "its copy; state the whole new task, or use --model")
+    return schema, made, "extend"
 
 
 def _extends(old: str, new: str) -> bool:
