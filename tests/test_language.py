@@ -8206,3 +8206,12 @@ def test_forty_fourth_session_that_order_after_listed_letters():
     assert meaning(check_feasibility(parse("Put the letters Q, R and S in a row, in that order."))) == ["line[sequence](Q,R,S)"]
     with pytest.raises(BadInput):
         check_feasibility(parse("Stack the letters in that order."))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a structure of label cubes placed in a region (its labels had been re-read in lower case and the place refused)
+    ("Stack the letter cubes A, B and C from bottom to top at the front of the table.", ["stack(A,B,C)@front"]),
+    ("Put the letter cubes A, B and C in a row from left to right at the back of the table.", ["line[left_to_right](A,B,C)@back"]),
+])
+def test_forty_fourth_session_label_structures_placed(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)

@@ -245,6 +245,10 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
     caps = set(re.findall(r"\b[A-Z]{2,}\b", f.original))
     if part and caps:  # "spell HAT ... at the back of the table": the word in its capitals again (it had read as 'hat')
         part = re.sub(r"\b[a-z]{2,}\b", lambda w: w.group(0).upper() if w.group(0).upper() in caps else w.group(0), part)
+    if part:  # "stack the letter cubes A, B and C ... at the front": the labels in their capitals again (they had read as
+        # an article and two words, and the place had been refused)
+        part = re.sub(r"\b(letters?(?:\s+(?:cubes|blocks))?|letter\s+)\s*([a-z](?:(?:\s*,\s*(?:and\s+)?|\s+and\s+)[a-z])*)\b(?!')",
+                      lambda m: f"{m.group(1).rstrip()} " + re.sub(r"\b[a-z]\b", lambda w: w.group(0).upper(), m.group(2)), part)
     if part and re.search(r"(?:[.;!]|,?\s+then|,?\s*\band)\s+(?:then\s+)?(?:put|place|move|set|add|bring)\s+(?:a|an|one|another|the)\s+"
                           r"(?:[a-z]+\s+)?(?:cube|block)\b(?!\s+(?:on|onto|atop|over|above)\b)"
                           # "..., then put green in the back left corner", "..., then the green one": a bare colour too (the
