@@ -3105,3 +3105,20 @@ def test_forty_fourth_session_a_matching_tower_in_another_place(tmp_path):
     fam = compiled("Stack the red cube on the blue cube in the back left corner.", tmp_path / "same", name="fam").path
     with pytest.raises(BadInput, match="another place"):
         steer(fam, "Build an identical tower in the back left corner.")
+
+
+def test_forty_fourth_session_an_edits_label_is_not_dropped_as_a_voices(tmp_path):
+    """A steering edit's label is its own readers' (the voice chunks dropped from an edit are its closing ones): "Different
+    house, different job:" says a fresh start (it had been read as a pivot), "Add a clue:" an addition (the patch's cube had
+    been lost, silently)."""
+    r = steer(compiled("Put the cyan cube behind the white cube.", tmp_path, name="fam").path,
+              "Different house, different job: spell HOME with letter cubes from left to right.")
+    assert r.intent == "fresh"
+    fam = compiled("Put the black cube on the white patch.", tmp_path / "clue", name="fam").path
+    try:
+        r = steer(fam, "Add a clue: a red cube to the left of the white patch.")
+    except BadInput:
+        return
+    from rpg.schema.meaning import meaning
+
+    assert "on_patch(black,patch:white)" in meaning(Family(fam).schema(r.version))

@@ -441,16 +441,18 @@ def _voice_chunk(chunk: str, label: bool = False, rest: str = "") -> bool:
     return True
 
 
-def drop_voice_chunks(text: str) -> tuple[str, list[str]]:
+def drop_voice_chunks(text: str, labels: bool = True) -> tuple[str, list[str]]:
     """``text`` without a voice's label before its task ("Site diary, day six: ...", :data:`lexicon.VOICE_LABEL_RE`; or a
     first sentence of up to four words such as "Context 17.") and without the chunks that end its sentences in a voice
     ("..., like a bee's stripes.", "..., steady as a belay.", "... - monochrome is so in right now.",
     (:data:`lexicon.VOICE_TAIL_RES`), each inert (:func:`_voice_chunk`), when what is left of the sentence still names a
     thing of a goal; and the chunks dropped.  A voice's words are its own: a chunk that names a cube, a structure, a
-    place, a count or anything that may change the goal stays, to be read or refused."""
+    place, a count or anything that may change the goal stays, to be read or refused.  Without ``labels`` only the
+    sentences' closing chunks are weighed (a steering edit's label is its own readers', which may find a fresh start in
+    it: "Different house, different job: ...")."""
     dropped: list[str] = []
-    label = lexicon.VOICE_LABEL_RE.match(text)
-    first = re.match(r"\s*(?P<c>[^.!?:;]{2,40})\.\s+(?=\S)", text)
+    label = lexicon.VOICE_LABEL_RE.match(text) if labels else None
+    first = re.match(r"\s*(?P<c>[^.!?:;]{2,40})\.\s+(?=\S)", text) if labels else None
     for m in (label, first):
         if m and len(m.group("c").split()) <= (10 if m is label else 4) and _voice_chunk(m.group("c"), label=True) \
                 and lexicon.GOAL_THING_RE.search(text[m.end():].lower()):

@@ -1040,7 +1040,7 @@ def interpret(edit: str) -> EditPlan:
     edit, aside = reasons_set_aside(edit)
     if aside:  # "That's too much for today. Leave out the yellow cube.": the change read without its reason
         return replace(interpret(edit), set_aside=aside)
-    edit, voice = drop_voice_chunks(edit)  # "Add two more yellow cubes to the blue patch, a school of guppies.": the voice's
+    edit, voice = drop_voice_chunks(edit, labels=False)  # "Add two more yellow cubes to the blue patch, a school of guppies.": the voice's
     if voice:  # chunk, inert by the test a task's is held to
         return replace(interpret(edit), set_aside=tuple(voice))
     swapped = SWAPPED_THEN_SAID_RE.match(edit)
