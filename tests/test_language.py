@@ -8215,3 +8215,12 @@ def test_forty_fourth_session_that_order_after_listed_letters():
 ])
 def test_forty_fourth_session_label_structures_placed(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text, expected", [
+    # an arrow to a patch (stranger55, stranger56: read as no task)
+    ("Two orange cubes -> the white patch.", ["on_patch(orange,orange,patch:white)"]),
+    ("cube 5 -> red patch", ["on_patch(5,patch:red)"]),
+])
+def test_forty_fourth_session_an_arrow_to_a_patch(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)

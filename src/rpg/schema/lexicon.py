@@ -6183,13 +6183,15 @@ to right"): the end order alone (:func:`rpg.schema.reading.rearranged`; the star
 
 READ_FROM_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"(?i)\b(?:when|as|if)\s+(read|viewed|seen)\s+(?=from\b|left|right|top|bottom)"), r"\1 "),
+    # "Two orange cubes -> the white patch.", "cube 5 -> red patch": an arrow to a patch, said as "on"
+    (re.compile(rf"(?i)\s*(?:->|=>|\u2192)\s*(?=(?:the\s+|a\s+)?(?:{COLOR_RE})\s+(?:goal\s+)?patch\b)"), " on "),
     # "Swap things around so the black cube is on the white patch and the white cube is on the black patch": the end said
     # in full after "so" (the swap had been refused as a reference to the current scene)
     (re.compile(r"(?i)^\s*(?:please\s+)?(?:swap|switch|exchange|trade)\s+(?:things|them|the\s+(?:two\s+)?(?:cubes|blocks)|everything|stuff)"
                 r"(?:\s+(?:around|round|over))?\s*,?\s+so\s+(?:that\s+)?(?=the\s)"), ""),
 )
-""""when read from left", "as seen from the top": the reading direction, said without its clause; an exchange whose end is
-said in full after "so": that end."""
+""""when read from left", "as seen from the top": the reading direction, said without its clause; an arrow to a patch;
+an exchange whose end is said in full after "so": that end."""
 
 LABEL_NOUN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "the cube with the M", "the block with the 4 on it": the cube labelled so
