@@ -8177,6 +8177,10 @@ def test_forty_fourth_session_a_label_after_a_capital_the(text, expected):
     # table's and refused)
     ("Orange on the far left, yellow in the middle, blue on the far right, all in one row.", ["line[left_to_right](orange,yellow,blue)"]),
     ("Orange on the left, yellow in the middle, blue on the right, all in one row.", ["line[left_to_right](orange,yellow,blue)"]),
+    # (one end read as the row's by its words, the other as a side of the table: the two still pair)
+    ("the red brick goes on the left, blue brick in the middle, green brick on the right – a row.",
+     ["line[left_to_right](red,blue,green)"]),
+    ("Cube red at leftmost, cube blue at rightmost, cube yellow in middle, make row.", ["line[left_to_right](red,yellow,blue)"]),
 ])
 def test_forty_fourth_session_row_places_said_first(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)

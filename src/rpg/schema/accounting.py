@@ -713,7 +713,7 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                                          "that end free (say the whole order, e.g. 'from left to right: red, green, blue')")
             record.append({"mention": m.words, "kind": "place", "consumed_by": ", ".join(ends)})
         elif m.kind == "bare place":  # a side of the table, or the sides of a relation ("red on the left, blue on the right")
-            paired = any(o.kind == "bare place" and o.region in _OPPOSITE.get(m.region, ()) for o in named)
+            paired = any(o.kind in ("bare place", "end role") and o.region in _OPPOSITE.get(m.region, ()) for o in named)
             sides = {r for r in regions if m.region in r.split("_")} | {
                 name for p in goal for name in SIDE_RELATIONS.get(m.region, ()) if p.name == name and paired} | (
                 _ordered_lines(goal, m.region) if paired else set())  # "gray at the far left, ..., green at the far right"
@@ -729,7 +729,7 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
         else:
             middles = set()
             if m.region == "center":  # the middle of a row whose two ends are said as sides
-                ends_said = {o.region for o in named if o.kind == "bare place"}
+                ends_said = {o.region for o in named if o.kind in ("bare place", "end role")}
                 middles = set().union(*(_ordered_lines(goal, side, odd=True) for side in ("left", "front")
                                         if {side, _OPPOSITE[side][0]} <= ends_said))
             if middles:  # "the pink cube in the center" between the ends said: the middle of a row of an odd count
