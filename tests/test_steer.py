@@ -2956,12 +2956,18 @@ def test_forty_fourth_session_a_letter_swapped_in_a_named_row(tmp_path):
         ["line[left_to_right](B,A,T)"], "tweak")
 
 
-@pytest.mark.parametrize("edit", ["Gain staging: swap the bottom colour and the top colour.", "Swap the top and the bottom."])
+@pytest.mark.parametrize("edit", ["Gain staging: swap the bottom colour and the top colour.",
+                                  "Swap the colours of the bottom and top layers."])
 def test_forty_fourth_session_a_pyramids_bottom_and_top_swapped(tmp_path, edit):
     """steer_stranger27 r029: "swap the bottom colour and the top colour" of a pyramid with one colour per layer had been
-    refused ('the bottom' read as one cube of a layer of three); of a layered structure they are its layers."""
-    assert _meaning_after(tmp_path, "Build a pyramid of six cubes: three red on the bottom row, two orange in the middle row, "
-                          "one yellow on top.", [edit]) == (["pyramid(yellow,yellow,yellow|orange,orange|red)"], "modify")
+    refused ('the bottom' read as one cube of a layer of three); said as colours or layers, they are its layers. "Swap the
+    bottom cube and the top cube" names one cube of a layer of three, and stays refused (a helper's attack: it had swapped
+    the layers)."""
+    base = "Build a pyramid of six cubes: three red on the bottom row, two orange in the middle row, one yellow on top."
+    assert _meaning_after(tmp_path, base, [edit]) == (["pyramid(yellow,yellow,yellow|orange,orange|red)"], "modify")
+    fam = compiled(base, tmp_path / "cube", name="fam").path
+    with pytest.raises(BadInput):
+        steer(fam, "swap the bottom cube and the top cube")
 
 
 @pytest.mark.parametrize("base,edit,expected", [
@@ -3122,3 +3128,44 @@ def test_forty_fourth_session_an_edits_label_is_not_dropped_as_a_voices(tmp_path
     from rpg.schema.meaning import meaning
 
     assert "on_patch(black,patch:white)" in meaning(Family(fam).schema(r.version))
+
+
+@pytest.mark.parametrize("base,edit", [
+    # a hostile helper's probes of this session's steering (each had compiled silently wrong)
+    ("Stack red, blue, blue and green from the bottom.", "take three blues off"),  # more than there are
+    ("Put the red cube on the blue patch and the pink cube on the yellow patch.", "Move the red one onto a new yellow patch"),
+    ("Put the letter cubes C, A and T in a row from left to right.", "swap the A for the C"),  # two C cubes
+    ("Build a pyramid of six cubes: three red on the bottom, two blue in the middle, one green on top.",
+     "swap the bottom cube and the top cube"),  # one cube of a layer of three
+    ("Build a wall two rows high: three red cubes in the bottom row and three blue cubes in the top row.",
+     "add a row of gray cubes above the bottom row"),  # between the rows, not under them
+    ("Build a pyramid of six cubes: three red on the bottom, two blue in the middle, one green on top.",
+     "stack those three cubes into one tower"),  # three of six
+    ("Build a pyramid of six cubes: three red on the bottom, two blue in the middle, one green on top.",
+     "stack them into a tower, red at the bottom"),  # the role had been dropped
+    ("Stack red, blue, blue and green from the bottom.", "Swap them over: green at the bottom and red on top."),  # cubes lost
+    ("Put the letter cubes C, A and T in a row from left to right.", "add an S after the T, at the left end"),
+    ("Put the letter cubes C, A and T in a row from left to right.", "add an S after the T and a B before the C"),
+    ("Make a row of a red, a white and a blue cube.", "add a yellow cube after the blue one"),  # a row in no order
+    ("Put red, white, blue and green in a row from left to right.", "Wrong order: green, blue, white, red, left to right"),
+    ("Put red, white, blue and green in a row from left to right.", "Optionally: add a yellow cube at the right end"),
+])
+def test_forty_fourth_session_hostile_probes_are_refused(tmp_path, base, edit):
+    fam = compiled(base, tmp_path, name="fam").path
+    with pytest.raises(BadInput):
+        steer(fam, edit)
+
+
+@pytest.mark.parametrize("edit", ["swap the C for a B and the A for an O", "swap the C for a B, keeping the order"])
+def test_forty_fourth_session_two_letters_replaced_in_a_named_row(tmp_path, edit):
+    """Two replacements in one edit had been read as the C and the A exchanged; 'keeping the order' as a reversal."""
+    got, _ = _meaning_after(tmp_path, "Put the letter cubes C, A and T in a row from left to right.", [edit])
+    assert got == (["line[left_to_right](B,O,T)"] if "O" in edit else ["line[left_to_right](B,A,T)"])
+
+
+def test_forty_fourth_session_a_pyramid_or_wall_is_not_stood_on_a_patch(tmp_path):
+    """'put it on the blue patch' of a pyramid had crashed (a helper's probe); it is refused."""
+    fam = compiled("Build a pyramid of six cubes: three red on the bottom, two blue in the middle, one green on top.", tmp_path,
+                   name="fam").path
+    with pytest.raises(BadInput):
+        steer(fam, "put it on the blue patch")

@@ -344,7 +344,10 @@ TURNING_LABEL_RE = re.compile(
     r"(?i)\b(?:(?:bad|wrong|incorrect|counter|anti|non|negative|failed|failing)[\s-]*(?:examples?|demos?|cases?|goals?|answers?|approach\w*)"
     r"|counter-?examples?|non-?goals?|forbid\w*|prohibit\w*|banned|off\s+limits|trap|bait|myth|fake|false|danger\w*|pitfall|mistakes?"
     r"|invers\w*|bizarro|inside[\s-]out|opposite|mirror\w*|revers\w*|backwards?|upside|permitting|allowing|optional|maybe|perhaps"
-    r"|jumbo|mini|mega|giant|triple|double|decker|views?|perspective|looking|seen\s+from)\b")
+    r"|jumbo|mini|mega|giant|triple|double|decker|views?|perspective|looking|seen\s+from"
+    # (a hostile helper's probes, forty-fourth session: labels that make the edit optional, hypothetical, old or rejected)
+    r"|optionally|possibl[ey]|ideal(?:ly)?|bonus|stretch|extra\s+credit|hypothetic\w*|reject\w*|old|alternativ\w*|preferabl[ey]"
+    r"|nice\s+to\s+have|priority|ignore\w*|avoid\w*|wrong|later|scrap\w*|conditional\w*|cancel\w*|obsolete|deprecated|discard\w*)\b")
 """A label before a colon that judges, turns, conditions or sizes what follows ("Bad example:", "Inverse version:", "Time
 permitting:", "Mega version:", "Audience view:"): it is never dropped as a label (it had been, and the task compiled as if
 unsaid); the words then refuse."""
@@ -3942,10 +3945,10 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     (re.compile(r"(?i)\b(?:one|1)\s+more\s+(?=(?:row|layer|level|tier)\b)"), "another "),
     # "stack those six cubes into one tower", "put all the cubes in a single row": the task's cubes, said as "them" (a tower
     # into "one" had been read as a second structure added)
-    (re.compile(r"(?i)\b(?P<v>stack|put|arrange|pile|line\s+up|place|set|build)\s+(?:all\s+)?(?:those|these|the)\s+(?:(?:\d+|two|three|four"
-                r"|five|six|seven|eight|nine|ten)\s+)?(?:cubes|blocks)\s+(?P<p>into|in|as)\s+(?:one|a|a\s+single|just\s+one)\s+"
-                r"(?P<s>tower|stack|row|line|pile|heap|column)\b"),
-     lambda m: f"{m.group('v')} them {m.group('p')} a {m.group('s')}"),
+    (re.compile(r"(?i)\b(?P<v>stack|put|arrange|pile|line\s+up|place|set|build)\s+(?:all\s+)?(?:those|the)\s+(?:cubes|blocks)\s+"
+                r"(?P<p>into|in|as)\s+(?:one|a|a\s+single|just\s+one)\s+(?P<s>tower|stack|row|line|pile|heap|column)(?=\s*(?:instead\s*)?[.!]?\s*$)"),
+     lambda m: f"{m.group('v')} them {m.group('p')} a {m.group('s')}"),  # (a count said, or words after it, are read as said:
+    # "stack those three cubes into one tower" of six, "..., red at the bottom" had been dropped)
     # "Round 3: ...", "Condition C: ...", "Next round, add ...": the name of the version made
     (EDIT_STEP_NAME_RE, ""),
     # "Rearrange them from left to right: blue, green, cyan.", "Put them in traffic-light order from left to right: red,

@@ -602,7 +602,7 @@ def read_ops(t: str) -> list[Op]:
     if re.search(r"\boutliers?\b", t):
         m = re.search(r"\b(\d+)\s+outliers?\b", t)
         ops.append(Op("outliers", {"per_pile": int(m.group(1)) if m else 1}))
-    reverse = re.search(r"\b(?:flip|reverse|invert|mirror|swap)\b[^.;]*\border\b|\bupside down\b|\breverse(?:d)? order\b|\bother\s+way\s+up\b|"
+    reverse = re.search(r"\b(?:flip|reverse|invert|mirror|swap)\b(?![^.;]*\b(?:keep\w*|same|kept|unchanged)\s+(?:the\s+)?order\b)[^.;]*\border\b|\bupside down\b|\breverse(?:d)? order\b|\bother\s+way\s+up\b|"
                         r"\b(?:flip|reverse|invert)\s+(?:it|them|that|this|everything|the\s+(?:whole\s+|entire\s+)?(?:tower|stack|line|row|gradient|sequence|colou?rs|word|letters|digits"
                         r"|numbers|labels|cubes|blocks))\b"
                         r"|\b(?:spell|write|read|arrange|put|place)\s+(?:it|them|the\s+word)\s+backwards?\b", t)
@@ -680,7 +680,9 @@ def read_ops(t: str) -> list[Op]:
         rest = layer.group("rest")
         counted = re.match(r"\s*of\s+(\d+)\s", rest) or re.search(r",\s+(\d+)\s+(?:[a-z]+\s+)?(?:blocks|cubes)\b", rest)
         below = re.search(r"\b(?:bottom|under|underneath|below|beneath)\b", layer.group(0))
-        if re.search(r"\b(?:base|left|right|front|back|beside|next)\b", rest) or (below and re.search(r"\btop\b", rest)):
+        if re.search(r"\b(?:base|left|right|front|back|beside|next)\b", rest) or (below and re.search(r"\btop\b", rest)) or (
+                below and re.search(r"\b(?:above|over|atop|between)\b|\b(?:row|layer|level|tier|course)s?\b", rest)):
+            # ("a row of gray cubes beneath the second row", "... above the bottom row": a place among the others)
             raise SteerError(f"'{layer.group(0).strip()}': the builtin steering adds a row or layer on top or at the bottom only; "
                              "state the whole new task")
         color = re.search(rf"\b({COLOR_RE})\b", rest)
@@ -723,6 +725,7 @@ def read_ops(t: str) -> list[Op]:
                              "steering cannot compose with the first; state the whole new task in the edit, or use --model")
         after = re.search(rf"\s*\b(?:right\s+|just\s+|directly\s+|immediately\s+)?(?P<r>after|following|before)\s+(?P<sel>the\s+"
                           rf"(?:(?:letter|digit)\s+)?(?:[a-z0-9]|{COLOR_RE})(?:\s+(?:one|block|cube))?)(?![\w'])", what)
+        beyond = (what[after.end():] + " " + t[add.end():]) if after else ""  # what the edit says past the cube named
         if after:  # "set an S after the T, at the right end": the T is a cube of the task, not one more
             what = what[:after.start()] + " " + what[after.end():]
         m = re.search(r"\b(\d+)\b", re.sub(LABELLED_RE, " ", what))
@@ -731,7 +734,14 @@ def read_ops(t: str) -> list[Op]:
         where = add.group("where")
         at = "bottom" if re.search(r"bottom|base|under|beneath|below|start|beginning|left", where) else "top"
         if after:  # next in reading order: at the end the cube said stands at (checked when applied)
+            end_said = re.search(r"\b(left|right)\s+end\b|\b(bottom|base|top)\b", where + " " + beyond)
+            said_at = None if end_said is None else "bottom" if (end_said.group(1) or end_said.group(2)) in ("left", "bottom", "base") \
+                else "top"
             at = "bottom" if after.group("r") == "before" else "top"
+            if (said_at and said_at != at) or re.search(r"\b(?:after|before|following)\b|\band\s+(?:an?|one|another|the)\b|,\s*(?:an?|one)\s",
+                                                         beyond):
+                raise SteerError(f"'{add.group(0).strip()} ...' puts the cube next to one end and says another place or a second "
+                                 "cube too; say one cube and one end per edit, or use --model")
         side = beside or re.search(r"\b(left|right)\b", where)
         target = re.match(r"\s*(?:of\s+)?(?P<sel>the\s+[a-z0-9' ]+?(?:one|block|cube)s?\b|the\s+(?:top|bottom)\b|(?:the\s+)?(?:[a-z]+\s+)?letter\s+[a-z]\b"
                           rf"|the\s+(?:[a-z]+\s+)?digit\s+\d\b|the\s+(?:{COLOR_RE})\b)", t[add.end():])
@@ -768,7 +778,9 @@ def read_ops(t: str) -> list[Op]:
     kept = re.search(rf"\bkeep(?:ing)?\s+(?:the|this|that|my|your|our)\s+(?:same\s+|existing\s+|current\s+)?{STRUCTURE_RE}", t)
     if kept:  # "keep the tower, and ...": the reference must be that structure
         ops.append(Op("keep", {"structure": structure_of_word(kept.group(1))}))
-    swap = re.search(r"\bswap\s+(?:the\s+)?(?P<a>[a-z0-9' ]+?)\s+(?:block\s+|cube\s+)?and\s+(?:the\s+)?(?P<b>[a-z0-9' ]+?)(?:\s+(?:blocks?|cubes?))?(?:\s*$|[;,.])", t)
+    swap = re.search(r"\bswap\s+(?:the\s+)?(?P<a>(?:(?!\b(?:for|with|by)\b)[a-z0-9' ])+?)\s+(?:block\s+|cube\s+)?and\s+(?:the\s+)?"
+                     r"(?P<b>(?:(?!\b(?:for|with|by)\b)[a-z0-9' ])+?)(?:\s+(?:blocks?|cubes?))?(?:\s*$|[;,.])", t)  # ("swap the c for a b and
+    # the a for an o": two replacements, not c and a exchanged)
     pair = re.search(r"\b(?:swap|switch|exchange|flip|trade)\s+(?:the\s+)?(?:places\s+of\s+the\s+)?(first|bottom|lowest|top|last|highest|middle"
                      r"|left|leftmost|right|rightmost)\s+(?:two|2)(?:\s+(?:ones|cubes|blocks|letters|digits))?\b", t)
     if pair and not reverse:  # "swap the first two", "swap the top two", "swap the middle two": a pair by its place
@@ -776,7 +788,10 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("swap", {"a": {"pair": where, "at": 0, "n": 2}, "b": {"pair": where, "at": 1, "n": 2}}))
         swap = None
     if swap and _selector(swap.group("a")) and _selector(swap.group("b")) and not reverse:
-        ops.append(Op("swap", {"a": _selector(swap.group("a")), "b": _selector(swap.group("b"))}))
+        ops.append(Op("swap", {"a": _selector(swap.group("a")), "b": _selector(swap.group("b")),
+                               **({"layers": True} if re.search(r"\bcolou?rs?\b", swap.group(0)) and not re.search(
+                                   r"\b(?:cube|block|one)s?\b", swap.group(0)) else {})}))  # ("the bottom colour and the top
+        # colour": layers; "the bottom cube and the top cube" names one cube each)
     elif re.search(r"\b(?:swap|switch|exchange|flip)\s+(?:the|their|its)\s+(?:2\s+)?colou?rs\b", t) and not reverse:
         ops.append(Op("swap", {"colors": True}))  # "swap the colours": the structure's two colours exchanged
     recolor_all = re.fullmatch(rf"(?:(?:ok|okay|actually|now|maybe|hmm)\s+)*(?:use\s+|try\s+|with\s+|make\s+it\s+)?(?:an?\s+)?(?P<new>{COLOR_RE})"
@@ -901,6 +916,16 @@ def read_ops(t: str) -> list[Op]:
         ops.append(Op("structure", {"to": "tower", **_kept_order(t), **_stated_on(t), **ended_order}))  # "stack them": the task's cubes
     elif bare_shape and not any(o.op in ("add", "recolor", "relabel", "remove") for o in ops):
         ops.append(Op("structure", {"to": structure_of_word(bare_shape.group(1)), **ended_order}))  # "now a line instead"
+    role = re.search(rf"\b(?:{COLOR_RE}|[a-z0-9])(?:\s+(?:cube|block|one)s?)?\s+(?:is\s+|goes\s+)?(?:at|on|in)\s+(?:the\s+)?(?:very\s+)?"
+                     r"(?:bottom|top|base|middle|(?:left|right)(?:\s+end)?)\b(?!\s+of\s+the\s+table)", t)
+    if role and any(o.op == "structure" and not o.params.get("end") for o in ops) and re.search(
+            r"\b(?:the|those|these)\s+(?:[a-z0-9]+\s+)?(?:cubes|blocks)\b", t):  # (of "make it a tower, blue at the bottom"
+        # the steering reads the role with the cubes, :func:`rpg.steer.steering._pivot_with_roles`)
+        # "stack the cubes into one tower, red at the bottom": a role the structure read leaves out (the tower had been in
+        # any order, silently)
+        raise SteerError(f"'{role.group(0)}' gives a cube a place in the new structure, which the change read (the task's cubes "
+                         "in a structure, in no order) leaves out; say the whole order (e.g. \"from bottom to top: red, green, "
+                         "blue\"), or use --model")
     trail = re.search(rf"(?:,|;|\band\b)\s+(?:make\s+)?(?P<old>the\s+(?:top|bottom|first|last|middle|base|lowest|highest)"
                       rf"(?:\s+(?:one|cube|block|layer|row|level))?)\s+(?:is\s+|should\s+be\s+|to\s+)?(?P<new>{COLOR_RE})\s*[.!]?\s*$", t)
     trailed = _selector(trail.group("old")) if trail and not any(o.op in ("recolor", "relabel", "reverse") for o in ops) else None
@@ -1268,6 +1293,14 @@ def check_said(plan: EditPlan, schema: TaskSchema) -> None:
                              "the task has")
 
 
+_TASK_CUBES_COUNTED_RE = re.compile(
+    r"(?i)\b(?P<v>stack|put|arrange|pile|line\s+up|place|set|build)\s+(?:all\s+)?(?:those|these|the)\s+(?P<n>\d+|two|three|four|five"
+    r"|six|seven|eight|nine|ten)\s+(?:cubes|blocks)\s+(?P<p>into|in|as)\s+(?:one|a|a\s+single|just\s+one)\s+"
+    r"(?P<s>tower|stack|row|line|pile|heap|column)(?=\s*(?:instead\s*)?[.!]?\s*$)")
+"""The task's cubes counted and put in one structure ("stack those six cubes into one tower"): read as "stack them into a
+tower", the count checked (three of six had been read as all six)."""
+
+
 def _interpret_counted(edit: str) -> EditPlan:
     """:func:`interpret` past the material check: a stack of the task's letters said, the count said again, a closing
     clause that keeps the other cubes' colour."""
@@ -1275,6 +1308,11 @@ def _interpret_counted(edit: str) -> EditPlan:
     if said:  # "stack the letters instead, C at the bottom": the task's cubes are letters, checked
         plan = interpret(edit[:said.start()] + "stack them" + edit[said.end():])
         return replace(plan, checks=(*plan.checks, ("material", _MATERIAL_WORDS[said.group("m").lower()])))
+    counted = _TASK_CUBES_COUNTED_RE.search(edit or "")
+    if counted:  # "stack those six cubes into one tower": the task's cubes, their count checked against the version built on
+        plan = interpret(edit[:counted.start()] + f"{counted.group('v')} them {counted.group('p')} a {counted.group('s')}"
+                         + edit[counted.end():])
+        return replace(plan, checks=(*plan.checks, ("count", int(NUMBER_WORDS.get(counted.group("n").lower(), counted.group("n"))))))
     same = EDIT_SAME_COUNT_RE.match(edit or "")
     if same:  # "same five but reversed": the count checked against the version built on, the rest read as the change
         count = ("count", int(NUMBER_WORDS.get(same.group("n").lower(), same.group("n"))))
@@ -1667,6 +1705,9 @@ def _indices_of(spec: TaskSpec, sel: dict, anchors: frozenset[str] = frozenset()
     if "color" in sel:
         idx = [i for i, it in enumerate(spec.items) if it.color == sel["color"]]
         k = sel.get("count")
+        if k is not None and k > len(idx):  # "take three blues off" of two blue cubes: more than there are
+            raise SteerError(f"'{k} {sel['color']}' asks for {k} {sel['color']} cubes, but the {spec.structure} has {len(idx)}; "
+                             "say how many there are, or name them by place")
         if k is not None and k < len(idx):
             if _orders_cubes(spec):
                 raise SteerError(f"'{k} {sel['color']}' does not say which of the {spec.structure}'s {len(idx)} {sel['color']} cubes, "
@@ -2074,6 +2115,9 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             if p.get("end") and spec.kind.spells and not _orders_cubes(spec) and not anchorable:
                 raise SteerError(f"'{p['end']}': the {spec.structure}'s goal gives no cube a place (any order holds), so a cube "
                                  "added there cannot be judged; say the order of the whole line, or state the whole new task")
+            if p.get("onto") and spec.kind.spells and not _orders_cubes(spec) and spec.structure not in ANCHORED_KINDS:
+                raise SteerError(f"the {spec.structure}'s goal gives its cubes no places (any order holds), so a cube added next to "
+                                 "one of them cannot be judged; say the whole order, or state the whole new task")
             if p.get("onto"):
                 end = 0 if p.get("at") == "bottom" else len(spec.items) - 1
                 idx = _indices(spec, p["onto"], anchors)
@@ -2174,6 +2218,9 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             if colours is not None and len(colours) != len(idx):
                 raise SteerError(f"{len(colours)} colours are said for {len(idx)} cubes; say one colour per cube")
             made = [Item(color=c) for c in colours] if colours is not None else [Item(**p["to"])] * len(idx)
+            if o.op == "relabel" and spec.named and p["to"].get("label") in {it.label for i, it in enumerate(spec.items) if i not in idx}:
+                raise SteerError(f"the {spec.structure} already has a {p['to']['label']} cube: '{p['to']['label']}' for another of its "
+                                 "cubes makes two; to exchange two cubes say \"swap the A and the C\", or name a label it lacks")
             for i, item in zip(idx, made, strict=True):
                 items[i] = item
             spec = replace(spec.with_items(items), layer_colors=False if spec.layer_colors and len(idx) < len(items) else spec.layer_colors)
@@ -2217,7 +2264,7 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             other = {cols[0]: cols[1], cols[1]: cols[0]}
             spec = spec.with_items([Item(color=other[it.color]) for it in spec.items])
         elif o.op == "swap":
-            if spec.kind.layered:  # "swap the bottom colour and the top colour" of a pyramid: its bottom and top layers
+            if spec.kind.layered and p.get("layers"):  # "swap the bottom colour and the top colour" of a pyramid: its layers
                 p = {k: ({"layer": v["position"]} if isinstance(v, dict) and set(v) == {"position"} else v) for k, v in p.items()}
             ia, ib = _indices(spec, p["a"], anchors), _indices(spec, p["b"], anchors)
             if not ia or not ib:

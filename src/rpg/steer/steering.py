@@ -376,7 +376,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     if moved is not None and (spec := split(ref_schema)[0]) is not None and spec.kind.spells:
         plan = replace(plan, ops=[moved], standalone=False)  # "put the white one in the middle" of a row: its middle
     if plan.standalone:
-        text = NEW_PATCH_RE.sub(r"\1 ", strip_edit_words(plan.text))  # "onto a new red patch": a red patch, new to the task
+        text = _new_patch_said(strip_edit_words(plan.text), ref_schema)  # "onto a new red patch": a red patch, new to the task
         schema = parse(text)
         if plan.fresh:
             return schema, text, "fresh"
@@ -397,6 +397,9 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         if replaced is not None:  # "the cyan cube stands in front of the orange cube instead" of a task that also puts the
             # orange cube on a patch: that one placement exchanged, the rest kept (the patch had been lost as a pivot)
             return replaced[1], replaced[0], "modify"
+        if ("swapped", True) in plan.checks and not same_assets(schema, ref_schema):
+            raise SteerError(f"the edit announces an exchange, and what it then says ({schema.goal_summary}) is not the task's own "
+                             f"cubes and patches ({ref_schema.goal_summary}); say where each of them ends, or use --model")
         if same_assets(schema, ref_schema) and (relation_of(schema) and relation_of(ref_schema) or (
                 ref_spec is None and split(schema)[0] is None and ("swapped", True) in plan.checks)):
             return schema, text, "modify"  # the same cubes in another relation, or on each other's patches
@@ -516,7 +519,10 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
             made = apply_ops(ref_spec, plan.ops, keep_layers=carried.layers, anchors=carried.ends)
         except SteerError:
             pass
-        if made is None or not _restated(plan.text, made, unread):
+        roled_unread = [c for c in unread if re.search(rf"(?i)\b{c}s?(?:\s+(?:cube|block|one)s?)?\s+(?:is\s+|goes\s+)?(?:at|on|in)\s+(?:the\s+)?"
+                                                      r"(?:very\s+)?(?:bottom|top|base|middle|left|right)\b", plan.text)]
+        if made is None or not _restated(plan.text, made, unread) or roled_unread:  # ("stack them into a tower, red at the
+            # bottom" of a pyramid: the role is no restatement; the tower had been in any order, silently)
             raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": {', '.join(repr(c) for c in unread)} has no place "
                              f"in the change read ({', '.join(o.op for o in plan.ops)}); say it in a separate edit, or use --model")
     try:
@@ -1246,6 +1252,18 @@ def _pair(atom: str) -> frozenset[str] | None:
     return frozenset(m.groups()) if m and m.group(1) != m.group(2) else None
 
 
+def _new_patch_said(text: str, ref: TaskSchema | None) -> str:
+    """``text`` with a patch said as new (:data:`NEW_PATCH_RE`, "onto a new green patch") said as a patch of its colour,
+    when the task has no patch of that colour; else as it is (a new patch of a colour the task has is a second one, which
+    the builtin steering does not make: it is refused, never merged into the task's)."""
+    have = {a.color for a in ref.assets if a.kind == "goal_patch"} if ref is not None else set()
+
+    def sub(m: re.Match) -> str:
+        colour = re.match(rf"\s*({COLOR_RE})\b", text[m.end():], re.IGNORECASE)
+        return m.group(0) if colour is None or canon_color(colour.group(1)) in have else f"{m.group(1)} "
+    return NEW_PATCH_RE.sub(sub, text)
+
+
 def _copied_tower(text: str, ref: TaskSchema) -> tuple[TaskSchema, str, str] | None:
     """A copy of the task's one tower, its cubes in the same order, in a place of the table the edit names
     (:data:`STRUCTURE_COPIED_RE`): the tower stated again where it stands, then its copy there; None for any other edit.
@@ -1331,7 +1349,8 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
         one = f"the {cubes[0].color} block" if cubes[0].color else f"the {cubes[0].label} block"  # the task's one cube
         clause = addition_clause(re.sub(r"(?i)\bit\b", one, plan.text))
     spec = split(ref_schema)[0] if clause is None and len(cubes) > 1 else None
-    if spec is not None and IT_ON_A_PATCH_RE.match(plan.text):  # "stand it on the blue patch" of a tower: the tower
+    if spec is not None and spec.structure == "tower" and IT_ON_A_PATCH_RE.match(plan.text):  # "stand it on the blue patch" of
+        # a tower: the tower (a wider structure is no patch's: a pyramid or wall there had crashed)
         clause = addition_clause(IT_ON_A_PATCH_RE.sub(lambda m: f"{m.group('v')} the {STRUCTURE_KINDS[spec.structure].words[0]} "
                                                                 f"{m.group('p')}", plan.text, count=1))
     named = [f"the {a.color} block" if a.color else f"the {a.label} block" for a in cubes]
@@ -1349,7 +1368,7 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
                          "structure); say what to change, e.g. \"make the top block red\", or use --model")
     instead = re.search(r"(?i)\binstead\b(?!\s+of\b)", plan.text)
     moved = EDIT_MOVES_A_TASK_CUBE_RE.match(plan.text)  # "move the pink one onto a new green patch": its old place goes too
-    replaced = replaced_placement(NEW_PATCH_RE.sub(r"\1 ", re.sub(r"(?i)\s*\binstead\b(?!\s+of\b)", "", clause)), ref_schema,
+    replaced = replaced_placement(_new_patch_said(re.sub(r"(?i)\s*\binstead\b(?!\s+of\b)", "", clause), ref_schema), ref_schema,
                                   parse) if instead or moved else None
     if replaced is not None:  # "put the red cube to the right of the green one instead": that one placement exchanged
         text, schema = replaced
