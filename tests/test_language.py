@@ -8228,3 +8228,13 @@ def test_forty_fourth_session_label_structures_placed(text, expected):
 ])
 def test_forty_fourth_session_an_arrow_to_a_patch(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    # comparisons with cubes arranged otherwise (a hostile helper's probes: each had added the compared relation to the goal)
+    "Stack the red cube on the blue cube, like on top of the green one.",
+    "Put the red cube on the blue cube, the way the green cube is behind the yellow cube.",
+])
+def test_forty_fourth_session_comparisons_with_cubes_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

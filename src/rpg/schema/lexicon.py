@@ -346,7 +346,7 @@ TURNING_LABEL_RE = re.compile(
     r"|invers\w*|bizarro|inside[\s-]out|opposite|mirror\w*|revers\w*|backwards?|upside|permitting|allowing|optional|maybe|perhaps"
     r"|jumbo|mini|mega|giant|triple|double|decker|views?|perspective|looking|seen\s+from"
     # (a hostile helper's probes, forty-fourth session: labels that make the edit optional, hypothetical, old or rejected)
-    r"|optionally|possibl[ey]|ideal(?:ly)?|bonus|stretch|extra\s+credit|hypothetic\w*|reject\w*|old|alternativ\w*|preferabl[ey]"
+    r"|optionally|possibl[ey]|ideal(?:ly)?|extra\s+credit|hypothetic\w*|reject\w*|old|alternativ\w*|preferabl[ey]"
     r"|nice\s+to\s+have|priority|ignore\w*|avoid\w*|wrong|later|scrap\w*|conditional\w*|cancel\w*|obsolete|deprecated|discard\w*)\b")
 """A label before a colon that judges, turns, conditions or sizes what follows ("Bad example:", "Inverse version:", "Time
 permitting:", "Mega version:", "Audience view:"): it is never dropped as a label (it had been, and the task compiled as if
@@ -862,9 +862,11 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|demonstration|sample|template|reference|model)\b",
      "refers to something shown or seen (a picture, the scene, an arrangement) that a task cannot see: say the "
      "arrangement in words (e.g. \"stack the red block on the blue block\")"),
-    ("reference", rf"(?:(?<=,)\s*|(?<=\bcube)\s+|(?<=\bblock)\s+|(?<=\bcubes)\s+|(?<=\bblocks)\s+|\b(?:just|exactly)\s+)(?:like|as)\s+(?:the|a|an)\s+(?:(?:{COLOR_RE})\s+(?:cube|block|one)s?|(?:cube|block)s?\s+"
-                  rf"(?:[A-Z0-9]|{COLOR_RE}))\s+(?:is\s+|are\s+|sits\s+|stands\s+)?(?:on|onto|atop|under|beneath|below|above|next\s+to|beside"
-                  r"|behind|in\s+front\s+of|left\s+of|right\s+of|to\s+the\s+(?:left|right)\s+of|between|near)\b",
+    ("reference", r"(?:(?<=,)\s*(?:like|the\s+way|as\s+if|as\s+though)|(?:(?<=\bcube)|(?<=\bblock)|(?<=\bcubes)|(?<=\bblocks))\s+like"
+                  r"|\b(?:just|exactly)\s+(?:like|as))\s(?!\s*(?:this|so|that|follows|such|well|usual)\b)"
+                  rf"(?=[^.;!?]*\b(?:{COLOR_RE}|cubes?|blocks?|ones?|it|them|\d)\b)"
+                  r"(?=[^.;!?]*\b(?:on|onto|atop|upon|under|beneath|below|above|behind|front|next|beside|left|right|between|near|top"
+                  r"|bottom)\b)",
      "compares to cubes arranged as the instruction does not ask (\"like the green cube on the yellow cube\"): whether that "
      "arrangement is part of the goal is not said; say each placement the goal needs"),
     ("reference", r"\b(?:swap|swapping|swapped|interchange|exchange)\b|\bswitch(?:es|ed|ing)?\s+(?:the\s+)?(?:places|positions|spots)\b",
