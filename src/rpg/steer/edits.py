@@ -25,9 +25,6 @@ from rpg.domain.predicates import Reads
 from rpg.errors import BadInput
 from rpg.schema.builder import DEFAULT_COLORS
 from rpg.schema.lexicon import (
-    SWAPPED_THEN_SAID_RE,
-    EDIT_LABEL_RE,
-    edit_label_dropped,
     BARE_ORDER_RE,
     CAUSED_MOTION_RE,
     COLOR_RE,
@@ -48,6 +45,7 @@ from rpg.schema.lexicon import (
     EDIT_FRESH_RE,
     EDIT_INEXPRESSIBLE,
     EDIT_INTERJECTION_RE,
+    EDIT_LABEL_RE,
     EDIT_LEADING_RE,
     EDIT_MORE_ALONE_RE,
     EDIT_OPENING,
@@ -73,17 +71,26 @@ from rpg.schema.lexicon import (
     NUMBER_WORDS,
     POLITE_CONDITION_RE,
     REF_CHANGE_RE,
+    SWAPPED_THEN_SAID_RE,
     TURNING_LABEL_RE,
     TYPOS,
     UNKNOWN_COLOUR,
     VOCAB,
     colour_names,
+    edit_label_dropped,
     is_dictionary_word,
     said,
 )
 from rpg.schema.model import TaskSchema
 from rpg.schema.readers.common import item_sequence
-from rpg.schema.reading import apply_corrections, canon_color, drop_voice_chunks, moving_verb, region_name, spoken
+from rpg.schema.reading import (
+    apply_corrections,
+    canon_color,
+    drop_voice_chunks,
+    moving_verb,
+    region_name,
+    spoken,
+)
 from rpg.schema.structures import (
     STRUCTURE_KINDS,
     STRUCTURE_RE,

@@ -36,10 +36,6 @@ from rpg.schema.builtin import parse
 from rpg.schema.edits import recolor
 from rpg.schema.feasibility import check_feasibility
 from rpg.schema.lexicon import (
-    EDIT_MOVES_A_TASK_CUBE_RE,
-    IT_ON_A_PATCH_RE,
-    STRUCTURE_COPIED_RE,
-    NEW_PATCH_RE,
     ADDED_CUBE_RE,
     BETWEEN_THEM_RE,
     COLOR_RE,
@@ -47,8 +43,11 @@ from rpg.schema.lexicon import (
     EDIT_ADDITIVE_RE,
     EDIT_CONTINUES_RE,
     EDIT_KEEP_THEN_ADD_RE,
+    EDIT_MOVES_A_TASK_CUBE_RE,
     EDIT_OF_THE_TASK_RE,
     EDIT_SWAP_BOTH_RE,
+    IT_ON_A_PATCH_RE,
+    NEW_PATCH_RE,
     NO_GOAL_RE,
     NUMBER_WORDS,
     PAIRWISE_RELATIONS,
@@ -56,6 +55,7 @@ from rpg.schema.lexicon import (
     ROWS_SWAPPED_RE,
     SAME_CUBES_RE,
     SAME_PATCH_RE,
+    STRUCTURE_COPIED_RE,
     TOWER_RESTATED_RE,
     VARIANT_LABEL_RE,
 )
@@ -93,10 +93,10 @@ from rpg.steer.family import (
 )
 from rpg.steer.relations import (
     between_roles,
-    relation_of,
-    remove_cubes,
     per_cube,
     places_said,
+    relation_of,
+    remove_cubes,
     replaced_placement,
     rewrite_moved,
     rewrite_patch,
