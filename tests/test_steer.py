@@ -3169,3 +3169,12 @@ def test_forty_fourth_session_a_pyramid_or_wall_is_not_stood_on_a_patch(tmp_path
                    name="fam").path
     with pytest.raises(BadInput):
         steer(fam, "put it on the blue patch")
+
+
+def test_forty_fourth_session_both_ends_of_a_new_tower_said(tmp_path):
+    """"Convert the line to a tower, green at the bottom and blue at the top." had made a tower in any order (its roles
+    dropped, the meaning notation hiding it); both ends of three cubes leave one order. One end of six stays refused."""
+    fam = compiled("Arrange the blocks in order green, cyan, blue from left to right.", tmp_path, name="fam").path
+    r = steer(fam, "Convert the line to a tower, green at the bottom and blue at the top.")
+    goal = Family(fam).schema(r.version).goal_predicate()
+    assert type(goal).__name__ == "Stack" and list(goal.objects) == ["green", "cyan", "blue"]

@@ -346,8 +346,8 @@ TURNING_LABEL_RE = re.compile(
     r"|invers\w*|bizarro|inside[\s-]out|opposite|mirror\w*|revers\w*|backwards?|upside|permitting|allowing|optional|maybe|perhaps"
     r"|jumbo|mini|mega|giant|triple|double|decker|views?|perspective|looking|seen\s+from"
     # (a hostile helper's probes, forty-fourth session: labels that make the edit optional, hypothetical, old or rejected)
-    r"|optionally|possibl[ey]|ideal(?:ly)?|extra\s+credit|hypothetic\w*|reject\w*|old|alternativ\w*|preferabl[ey]"
-    r"|nice\s+to\s+have|priority|ignore\w*|avoid\w*|wrong|later|scrap\w*|conditional\w*|cancel\w*|obsolete|deprecated|discard\w*)\b")
+    r"|optionally|possibl[ey]|ideal(?:ly)?|extra\s+credit|hypothetic\w*|reject\w*|alternativ\w*|preferabl[ey]"
+    r"|nice\s+to\s+have|priority|ignore\w*|avoid\w*|wrong|later|scrapped|conditional\w*|obsolete|deprecated)\b")
 """A label before a colon that judges, turns, conditions or sizes what follows ("Bad example:", "Inverse version:", "Time
 permitting:", "Mega version:", "Audience view:"): it is never dropped as a label (it had been, and the task compiled as if
 unsaid); the words then refuse."""

@@ -521,8 +521,16 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
             pass
         roled_unread = [c for c in unread if re.search(rf"(?i)\b{c}s?(?:\s+(?:cube|block|one)s?)?\s+(?:is\s+|goes\s+)?(?:at|on|in)\s+(?:the\s+)?"
                                                       r"(?:very\s+)?(?:bottom|top|base|middle|left|right)\b", plan.text)]
-        if made is None or not _restated(plan.text, made, unread) or roled_unread:  # ("stack them into a tower, red at the
-            # bottom" of a pyramid: the role is no restatement; the tower had been in any order, silently)
+        ends_said = {m.group(1).lower() for m in re.finditer(r"(?i)\b(?:at|on)\s+(?:the\s+)?(?:very\s+)?(bottom|top|base)\b|\bon\s+(top)\b",
+                                                            plan.text)} if roled_unread else set()
+        if made is not None and roled_unread and made.direction is None and made.structure == "tower" and _restated(
+                plan.text, made, unread) and ends_said >= {"top"} and ends_said & {"bottom", "base"} and (
+                len(made.items) <= 3 or len(set(made.items[1:-1])) == 1):
+            made = replace(made, direction="left_to_right")  # "convert the line to a tower, green at the bottom and blue at
+            # the top": both ends said leave one order (the roles had been dropped: a tower in any order, silently)
+        if made is None or not _restated(plan.text, made, unread) or (roled_unread and made.direction is None):  # ("stack
+            # them into a tower, red at the bottom" of a pyramid: a role of a structure in no order is no restatement; the
+            # tower had been in any order, silently)
             raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": {', '.join(repr(c) for c in unread)} has no place "
                              f"in the change read ({', '.join(o.op for o in plan.ops)}); say it in a separate edit, or use --model")
     try:
