@@ -61,7 +61,7 @@ from rpg.schema.lexicon import (
 )
 from rpg.schema.model import TaskSchema
 from rpg.schema.reading import canon_color
-from rpg.schema.structures import STRUCTURE_KINDS, STRUCTURE_RE
+from rpg.schema.structures import STRUCTURE_RE
 from rpg.steer.carried import Carried, region_phrase, split
 from rpg.steer.carried import render as render_carried
 from rpg.steer.edits import (
@@ -392,8 +392,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         schema = _same_cubes_kept(plan.text, ref_schema, schema, ("same", True) in plan.checks)
         instead = re.search(r"(?i)\binstead\b(?!\s+of\b)", plan.text)
         moved = EDIT_MOVES_A_TASK_CUBE_RE.match(plan.text)  # "move the red cube onto the yellow patch": its old place goes
-        replaced = replaced_placement(re.sub(r"(?i)\s*\binstead\b(?!\s+of\b)", "", text), ref_schema,
-                                      parse) if (instead and _relates_a_related_pair(schema, ref_schema)) or moved else None
+        replaced = replaced_placement(_without_instead(text), ref_schema, parse) if (instead and _relates_a_related_pair(schema, ref_schema)) or moved else None
         if replaced is not None:  # "the cyan cube stands in front of the orange cube instead" of a task that also puts the
             # orange cube on a patch: that one placement exchanged, the rest kept (the patch had been lost as a pivot)
             return replaced[1], replaced[0], "modify"
@@ -1260,6 +1259,11 @@ def _pair(atom: str) -> frozenset[str] | None:
     return frozenset(m.groups()) if m and m.group(1) != m.group(2) else None
 
 
+def _without_instead(text: str) -> str:
+    """``text`` without its "instead" (not "instead of"): a placement said again, read as one placement."""
+    return re.sub(r"(?i)\s*\binstead\b(?!\s+of\b)", "", text)
+
+
 def _new_patch_said(text: str, ref: TaskSchema | None) -> str:
     """``text`` with a patch said as new (:data:`NEW_PATCH_RE`, "onto a new green patch") said as a patch of its colour,
     when the task has no patch of that colour; else as it is (a new patch of a colour the task has is a second one, which
@@ -1359,8 +1363,7 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
     spec = split(ref_schema)[0] if clause is None and len(cubes) > 1 else None
     if spec is not None and spec.structure == "tower" and IT_ON_A_PATCH_RE.match(plan.text):  # "stand it on the blue patch" of
         # a tower: the tower (a wider structure is no patch's: a pyramid or wall there had crashed)
-        clause = addition_clause(IT_ON_A_PATCH_RE.sub(lambda m: f"{m.group('v')} the {STRUCTURE_KINDS[spec.structure].words[0]} "
-                                                                f"{m.group('p')}", plan.text, count=1))
+        clause = addition_clause(IT_ON_A_PATCH_RE.sub(r"\g<v> the tower \g<p>", plan.text, count=1))
     named = [f"the {a.color} block" if a.color else f"the {a.label} block" for a in cubes]
     if clause is None and len(cubes) == 2 and len(set(named)) == 2 and BETWEEN_THEM_RE.search(plan.text.lower()):
         # "put a green cube between them": between the task's two cubes
@@ -1376,8 +1379,8 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
                          "structure); say what to change, e.g. \"make the top block red\", or use --model")
     instead = re.search(r"(?i)\binstead\b(?!\s+of\b)", plan.text)
     moved = EDIT_MOVES_A_TASK_CUBE_RE.match(plan.text)  # "move the pink one onto a new green patch": its old place goes too
-    replaced = replaced_placement(_new_patch_said(re.sub(r"(?i)\s*\binstead\b(?!\s+of\b)", "", clause), ref_schema), ref_schema,
-                                  parse) if instead or moved else None
+    replaced = replaced_placement(_new_patch_said(_without_instead(clause), ref_schema), ref_schema, parse) \
+        if instead or moved else None
     if replaced is not None:  # "put the red cube to the right of the green one instead": that one placement exchanged
         text, schema = replaced
         return schema, text, "modify"
