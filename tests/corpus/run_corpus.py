@@ -91,7 +91,7 @@ STRANGER_SETS = {
     "stranger54": ("stranger54.yaml", "STRANGER set 54 (stranger54.yaml, transfer measure of the forty-first session; development material from the forty-second)"),
     "stranger55": ("stranger55.yaml", "STRANGER set 55 (stranger55.yaml, transfer measure of the forty-second session; development material from the forty-third)"),
     "stranger56": ("stranger56.yaml", "STRANGER set 56 (stranger56.yaml, transfer measure of the forty-third session; development material from the forty-fourth)"),
-    "stranger57": ("stranger57.yaml", "STRANGER set 57 (stranger57.yaml, written at the start of the forty-fourth session: aggregates only)"),
+    "stranger57": ("stranger57.yaml", "STRANGER set 57 (stranger57.yaml, transfer measure of the forty-fourth session; development material from the forty-fifth)"),
 }
 SPLITS = HERE / "splits.yaml"
 
