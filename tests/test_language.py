@@ -8238,3 +8238,40 @@ def test_forty_fourth_session_an_arrow_to_a_patch(text, expected):
 def test_forty_fourth_session_comparisons_with_cubes_refused(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a demonstrative structure is the definite one (stranger57: "that tower" had made a tower of two made-up cubes)
+    ("Initially the orange cube is stacked on the purple cube. Put a cyan cube on top of that tower.",
+     ["stack(purple,orange,cyan)", "start:stack(purple,orange)"]),
+    ("Stack red on blue and move that stack to the left.", ["stack(blue,red)@left"]),
+])
+def test_forty_fifth_session_a_demonstrative_structure(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    # a demonstrative structure nobody described: one the speaker sees (each had invented a red and blue tower, silently)
+    "Put a cyan cube on top of that tower.",
+    "Move that stack to the left side of the table.",
+])
+def test_forty_fifth_session_an_undescribed_demonstrative_structure_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # two counted groups, each in a structure of its own, joined by "and" or a comma (steer_stranger28: the second group's
+    # count had been read against the first row and the text refused)
+    ("Three white cubes in a row at the back of the table, and three black cubes in a row at the front of the table.",
+     ["line(black,black,black)@front", "line(white,white,white)@back"]),
+    ("Two pink cubes in a row at the front of the table, two purple cubes in a row at the back of the table.",
+     ["line(pink,pink)@front", "line(purple,purple)@back"]),
+])
+def test_forty_fifth_session_two_counted_groups_in_structures_of_their_own(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+def test_forty_fifth_session_a_second_group_that_refers_back_is_not_split():
+    with pytest.raises(BadInput):
+        check_feasibility(parse("Two white cubes in a row, and two black cubes in a row behind them."))

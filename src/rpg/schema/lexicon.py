@@ -1215,6 +1215,12 @@ OTHER_PLACE_RE = re.compile(r"\bthe\s+other\s+(?:[a-z]+\s+)?(?P<noun>patch|pad|m
 place said before it ("put red on the green patch and blue on the other patch"), otherwise it
 contrasts with one the speaker sees (where a cube stands now)."""
 
+DEMONSTRATIVE_STRUCTURE_RE = re.compile(r"(?i)\b(?P<p>on|onto|upon|to|into|beside|behind|near|of|from|off|put|place|move|set|slide|push|shift"
+                                        r"|bring|carry|relocate|transfer|position)\s+(?:this|that)\s+"
+                                        r"(?P<n>tower|stack|pile|structure|pyramid|wall|row|line|column)\b(?!\s+of\b)")
+"""A structure named by a demonstrative after a preposition ("put a cyan cube on top of that tower"): the definite one,
+written "the tower" (it had missed :data:`DEFINITE_STRUCTURE_RE`'s check and made a tower of two made-up cubes, silently)."""
+
 DEFINITE_STRUCTURE_RE = re.compile(
     r"\b(?:on|onto|upon|to|into|next\s+to|beside|behind|in\s+front\s+of|near|left\s+of|right\s+of|top\s+of|from|off|of"
     r"|put|place|move|set|slide|push|shift|bring|carry|relocate|transfer|position)"
@@ -5335,6 +5341,15 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"(?<=[a-z])\s*,?\s+and\s+(?:then\s+|also\s+)?(?=(?:make|build|form|create|put|place|arrange|line\s+up|stack|set|lay)\b"
                 r"[^.;!?]*?\b(?:rows?|lines?|towers?|stacks?|piles?|pyramids?|walls?|circles?|rings?|columns?|in\s+a\s+row|up)\b)"),
      lambda m: ". " if _relation_then_structure(m) else m.group(0)),
+    # "three white cubes in a row at the back, and three black cubes in a row at the front": two counted groups, each in a
+    # structure of its own, two clauses (the second group's count had been read as one cube of the first row); not when
+    # the second clause refers back ("... in a row behind them")
+    (re.compile(rf"(?<=[a-z])\s*(?:,\s*and|,|\s+and)\s+(?=(?:{COUNT_WORD_RE}|\d+)\s+(?:(?:{COLOR_RE})\s+)?(?:cubes|blocks)\s+in\s+(?:a|one)\s+"
+                r"(?:row|line|tower|stack|column|pile)\b(?![^.;!?]*\b(?:it|its|them|they|those|these|both|rest|others?|same)\b))",
+                re.IGNORECASE),
+     lambda m: "; " if re.search(rf"(?i)(?:^|[:;.!?]\s*|\b(?:put|place|set|arrange|make|build|lay)\s+)(?:{COUNT_WORD_RE}|\d+)\s+(?:(?:{COLOR_RE})\s+)?"
+                                 r"(?:cubes|blocks)\s+in\s+(?:a|one)\s+(?:row|line|tower|stack|column|pile)\b[^.;!?,]*$", m.string[:m.start()])
+     else m.group(0)),
     # "red at the top and bottom", "red at the bottom and on top": one colour at both ends, said once for two cubes (a colour
     # nobody said had been made up for one end, silently): each end said with its cube
     (re.compile(rf"\b(?P<c>{COLOR_RE})(?:\s+(?:cubes?|blocks?|ones?))?\s+(?:at|on)\s+(?:the\s+(?:very\s+)?)?(?P<e1>top|bottom|base)\s+and\s+"

@@ -1432,6 +1432,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     original = lexicon.ORDINAL_ABBREVIATION_RE.sub(lambda m: lexicon.ORDINAL_ABBREVIATIONS[m.group(1).lower()], original)
     original = LABEL_LIST_PLURAL_RE.sub(r"\1 \2", original)  # "the B, the A and the T blocks": T is one cube (it had been dropped)
     original = lexicon.SAYS_RE.sub(r"\1reads", original)  # "the tower says H, A, T"
+    original = lexicon.DEMONSTRATIVE_STRUCTURE_RE.sub(r"\g<p> the \g<n>", original)  # "on top of that tower"
     original = lexicon.HYPHENED_DIRECTION_RE.sub(r"\1 to \2", original)
     original = lexicon.rewrite(lexicon.DIAGONAL_SIDE_REWRITES, original)  # "diagonally behind X, off to its right"
     original = lexicon.DIAGONAL_PLACE_RE.sub(lexicon.diagonal_place, original)  # "to the front-right of the red cube"
