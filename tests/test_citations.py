@@ -437,3 +437,24 @@ def test_structures_of_unnamed_cubes_take_any_cubes(text):
     for _ in range(5):
         shuffled = dict(zip(cubes, [schema.goal_layout[n] for n in rng.permutation(cubes)], strict=True))
         assert evaluate_goal(schema.goal_predicate(), goal_world(schema, shuffled)).satisfied, shuffled
+
+
+@pytest.mark.parametrize("text, anchors", [
+    ("Make a row of red, green and blue with red at the left end.", {"left": "red"}),
+    ("Make a row of the orange, pink and gray cubes; the gray one must be at the right end.", {"right": "gray"}),
+])
+def test_a_row_with_one_end_said_holds_for_any_order_of_the_rest_and_fails_with_another_end(text, anchors):
+    """Issue 30: G holds under every change the words do not distinguish (the free cubes of the row traded) and fails
+    under changes they do (the said end's cube traded with another)."""
+    schema = check_feasibility(parse(text))
+    goal = schema.goal_predicate()
+    assert evaluate_goal(goal, goal_world(schema)).satisfied  # the goal configuration laid out to match its ends
+    line = next(p for p in goal.walk() if p.name == "anchored_line")
+    ends = set(anchors.values())
+    colours = {a.name: a.color for a in schema.assets}
+    free = [n for n in line.objects if colours[n] not in ends]
+    traded = {free[0]: schema.goal_layout[free[1]], free[1]: schema.goal_layout[free[0]]}
+    assert evaluate_goal(goal, goal_world(schema, traded)).satisfied
+    end = line.objects[0] if "left" in anchors else line.objects[-1]
+    swapped = {end: schema.goal_layout[free[0]], free[0]: schema.goal_layout[end]}
+    assert not evaluate_goal(goal, goal_world(schema, swapped)).satisfied

@@ -7,6 +7,7 @@ import pytest
 
 from rpg.domain import constants as C
 from rpg.domain.predicates import (
+    AnchoredLine,
     And,
     Behind,
     Between,
@@ -452,3 +453,23 @@ def test_a_diagonal_relation_leaves_the_other_axis_free():
     assert not LeftOf("a", "b", diagonal=True).evaluate(off)  # the side itself still judged
     assert from_dict(RightOf("a", "b", diagonal=True).to_dict()) == RightOf("a", "b", diagonal=True)
     assert RightOf("a", "b").to_dict() == {"predicate": "right_of", "a": "a", "b": "b"}
+
+
+def test_a_line_with_its_ends_said_and_the_rest_free():
+    """AnchoredLine (issue 30, "goals no stricter than words"): "a row of red, green and blue with red at the left end"
+    holds for either order of green and blue, and fails when another cube stands at the left end or the row runs front
+    to back."""
+    def row(*colors):  # left to right (+y is the robot's left)
+        return state(*(cube(c, 0.55, y, color=c) for c, y in zip(colors, (0.1, 0.0, -0.1, -0.2), strict=False)))
+
+    left = AnchoredLine(("red", "green", "blue"), left=True)
+    assert left.evaluate(row("red", "green", "blue")) and left.evaluate(row("red", "blue", "green"))
+    r = left.evaluate(row("green", "red", "blue"))
+    assert not r and "green is at the left end" in r.reason
+    deep = state(*(cube(c, x, 0.0, color=c) for c, x in (("red", 0.45), ("green", 0.55), ("blue", 0.65))))
+    assert not left.evaluate(deep)  # a left-right row is asked
+    both = AnchoredLine(("red", "green", "yellow", "blue"), left=True, right=True)
+    assert both.evaluate(row("red", "yellow", "green", "blue")) and not both.evaluate(row("red", "green", "blue", "yellow"))
+    assert not left.relax("order").order and type(left.relax("order")) is InLine
+    assert from_dict(both.to_dict()) == both
+    assert ("order", {"relation": "left_end", "pairs": (("red", "left"),)}) in left.constraints()

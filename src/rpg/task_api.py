@@ -16,6 +16,7 @@ from rpg.domain.layouts import (
     stack_layout,
 )
 from rpg.domain.predicates import (
+    AnchoredLine,
     AnchoredStack,
     And,
     Behind,
@@ -55,7 +56,7 @@ from rpg.domain.state import Pose, quat_mul, yaw_quat
 from rpg.domain.task_code import BlockTask
 
 __all__ = [
-    "AnchoredStack", "And", "Behind", "Between", "BlockTask", "Bridge", "CentredIn", "ColoredCube", "Equation", "FarFrom", "GoalPatch", "Grid",
+    "AnchoredLine", "AnchoredStack", "And", "Behind", "Between", "BlockTask", "Bridge", "CentredIn", "ColoredCube", "Equation", "FarFrom", "GoalPatch", "Grid",
     "InCircle", "InFrontOf", "InLayers", "InLine", "InOrder", "InRegion", "LabelFacing", "LayersUniform", "LeftOf",
     "NextTo", "Not", "On", "OnPatch", "OnTable", "Piles", "Pose", "Pyramid", "Reads",
     "RightOf", "SemanticCube", "SortedBy", "Stack", "StackOnPatch", "TemporalMonitor", "UnorderedStack", "Upright",

@@ -143,7 +143,7 @@ def classify(entry: dict) -> tuple[str, str]:
     """(outcome, detail) for one corpus entry: outcome is correct, refused or wrong."""
     from rpg.schema.builtin import ParseError, parse
     from rpg.schema.feasibility import InfeasibleTask, check_feasibility
-    from rpg.schema.meaning import matches, meaning
+    from rpg.schema.meaning import completions, matches, matches_alternatives, meaning
 
     try:
         schema = check_feasibility(parse(entry["text"]))
@@ -154,8 +154,11 @@ def classify(entry: dict) -> tuple[str, str]:
     got = meaning(schema)
     free = entry.get("order") == "any" and "?" not in str(entry["meaning"])  # no end named: the cubes as a set
     readings = [got] + ([_without_spelled_reading(got)] if _spelled_reading_unwritten(entry, got) else [])
-    if not any(matches(_unordered(m), [_unordered(a) for a in g]) if free else matches(m, g)
-               for m in alternatives(entry) for g in readings):
+    if len(completions(got)) > 1:  # a line free but for an end: right only where the alternatives are its completions
+        if not matches_alternatives(list(alternatives(entry)), got):
+            return "wrong", "; ".join(got)
+    elif not any(matches(_unordered(m), [_unordered(a) for a in g]) if free else matches(m, g)
+                 for m in alternatives(entry) for g in readings):
         return "wrong", "; ".join(got)
     if entry.get("order") == "any" and any(type(p).__name__ == "Stack" for p in schema.goal_predicate().walk()):
         return "wrong", "demands what no word says: an order of a stack the words leave free"

@@ -1107,6 +1107,50 @@ class InLine(Predicate):
 
 
 @dataclass(frozen=True, repr=False)
+class AnchoredLine(InLine):
+    """A left-right line of ``objects`` (axis ``"y"``) in any order but at its ends: with
+    ``left`` the first object (or one interchangeable with it) stands at the left end, with
+    ``right`` the last stands at the right end, left and right as the robot faces the table.
+
+    What "a row of red, green and blue with red at the left end" asks: red's place is said, the
+    others' is not (a goal may not demand what the words do not; issue 30, "goals no stricter than
+    words").  ``objects`` lists one order that satisfies it (the goal configuration's, left to
+    right), used to plan; only the line and its said ends are judged.
+    """
+
+    left: bool = False
+    right: bool = False
+    name: ClassVar[str] = "anchored_line"
+
+    def _evaluate(self, state):
+        whole = super()._evaluate(state)
+        if not whole.satisfied:
+            return whole
+        got = order_objects([state[n] for n in self.objects], "left_to_right")
+        for flag, end, index in ((self.left, "left", 0), (self.right, "right", -1)):
+            want = state[self.objects[index]]
+            if flag and _signature(got[index]) != _signature(want):
+                return self._result(False, f"{got[index].name} is at the {end} end, expected {want.name}",
+                                    {**whole.measured, end: got[index].name}, whole.tolerance)
+        return self._result(True, f"{self.describe()} holds", whole.measured, whole.tolerance)
+
+    def constraints(self):
+        out = super().constraints()
+        if self.left:
+            out.append(("order", {"relation": "left_end", "pairs": ((self.objects[0], "left"),)}))
+        if self.right:
+            out.append(("order", {"relation": "right_end", "pairs": ((self.objects[-1], "right"),)}))
+        return out
+
+    def relax(self, kind, goal=None):
+        return InLine(objects=self.objects, axis=self.axis) if kind == "order" else None
+
+    def describe(self):
+        ends = [f"{self.objects[0]} at the left end"] * self.left + [f"{self.objects[-1]} at the right end"] * self.right
+        return "line of " + ", ".join(self.objects) + " with " + " and ".join(ends) + ", the rest in any order"
+
+
+@dataclass(frozen=True, repr=False)
 class InCircle(Predicate):
     """``objects`` (3 or more) stand on the table evenly around a circle."""
 

@@ -398,7 +398,9 @@ def _carries_place_word(word: str, goal: list[P.Predicate], regions: set[str]) -
     if word == "corner":
         return sorted(f"in_region {r}" for r in regions if r.count("_") == 1 or r.startswith("corner"))
     return sorted({f"in_region {r}" for r in regions} | orders & (AXIS_ORDERS["left"] | AXIS_ORDERS["front"])
-                  | {p.name for p in goal if p.name in ("between", "in_line")})
+                  | {p.name for p in goal if p.name in ("between", "in_line")}
+                  | {f"{p.name} {side} end" for p in goal if isinstance(p, P.AnchoredLine)  # "red at the left end of a row"
+                     for side in ("left", "right") if getattr(p, side) and word == "end"})
 
 
 _ALL_OF_THEM = (r"\b(?:(?:both|all|each|2)(?:\s+(?:of\s+)?(?:them|the\s+(?:towers|stacks)|towers|stacks|tower|stack))?"
@@ -467,6 +469,10 @@ def _ends_at(goal: list[P.Predicate], side: str, color_of: dict[str, str | None]
             end = p.objects[0] if way == first else p.objects[-1]
             if color is None or color_of.get(end) == color:
                 out.append(f"{p.name} {way}")
+        elif isinstance(p, P.AnchoredLine) and side in ("left", "right") and getattr(p, side):  # "with red at the left end"
+            end = p.objects[0] if side == "left" else p.objects[-1]
+            if color is None or color_of.get(end) == color:
+                out.append(f"{p.name} {side} end")
     return out
 
 
@@ -681,7 +687,11 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                 raise UnaccountedMention(f"it names {m.count} {m.predicates[0]}s but the task read has {have}")
             record.append({"mention": m.words, "kind": "structures", "consumed_by": f"{have} {m.predicates[0]}s"})
         elif m.kind == "direction":
-            along = sorted(_orders(goal) & AXIS_ORDERS[m.region])
+            said_by = {a.name: a.color or a.label for a in schema.assets}
+            along = sorted(_orders(goal) & AXIS_ORDERS[m.region]) or [  # a row that reads the same from either end, its
+                # direction written by a rewrite ("a white cube on each side": readers.symmetric_rows freed it of the axis)
+                "in_line sequence" for p in goal if isinstance(p, P.InLine) and p.order == "sequence"
+                and [said_by.get(n) for n in p.objects] == [said_by.get(n) for n in reversed(p.objects)]][:1]
             if not along:
                 raise UnaccountedMention(f"'{m.words}' says which way the cubes run and the task read orders none "
                                          "that way")
@@ -716,7 +726,9 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
             paired = any(o.kind in ("bare place", "end role") and o.region in _OPPOSITE.get(m.region, ()) for o in named)
             sides = {r for r in regions if m.region in r.split("_")} | {
                 name for p in goal for name in SIDE_RELATIONS.get(m.region, ()) if p.name == name and paired} | (
-                _ordered_lines(goal, m.region) if paired else set())  # "gray at the far left, ..., green at the far right"
+                _ordered_lines(goal, m.region) if paired else set()) | {  # "gray at the far left, ..., green at the far right"
+                f"{p.name} {m.region} end" for p in goal if isinstance(p, P.AnchoredLine) and m.region in ("left", "right")
+                and getattr(p, m.region) and re.search(rf"\b{m.region}\s+end\b|\bfar\s+{m.region}\b|\b{m.region}most\b", text)}
             if not sides:
                 raise UnaccountedMention(f"the place '{m.region}' has no part in the task read")
             record.append({"mention": m.words, "kind": "place", "consumed_by": ", ".join(sorted(sides))})
@@ -1030,7 +1042,7 @@ def _scene_count(f: Features, schema: TaskSchema, cubes: list, walk: list) -> Pa
 def _line_roles(f: Features, schema: TaskSchema, cubes: list, walk: list) -> ParseError | None:
     """A cube's place in a line of three or more that the task does not order ("Line up the red, blue and yellow cubes
     with blue at one end."; of two cubes each is an end; :data:`lexicon.LINE_ROLE_RE`)."""
-    loose = [p for p in walk if isinstance(p, P.InLine) and not p.order and len(p.objects) > 2]
+    loose = [p for p in walk if type(p) is P.InLine and not p.order and len(p.objects) > 2]  # (an AnchoredLine's ends are read)
     if not loose or any(isinstance(p, P.Between) for p in walk):
         return None
     role = lexicon.LINE_ROLE_RE.search(lexicon.FREEDOM_SENTENCE_RE.sub(" ", re.sub(r"\bin\s+any\s+order\b", " ", f.text)))

@@ -65,6 +65,12 @@ ROLE_CUES = {
 }
 """Words that put a cube at an end of a stack (:class:`~rpg.domain.predicates.AnchoredStack`)."""
 
+LINE_END_CUES = {
+    "left_end": re.compile(r"\b(?:left(?:[\s-]+hand)?\s+end|far\s+left|leftmost)\b"),
+    "right_end": re.compile(r"\b(?:right(?:[\s-]+hand)?\s+end|far\s+right|rightmost)\b"),
+}
+"""Words that put a cube at an end of a left-right line (:class:`~rpg.domain.predicates.AnchoredLine`)."""
+
 TEMPORAL_CUE = re.compile(r"\b(?:then|first|after|afterwards|before|finally|next|once|later|second|last)\b")
 
 TABLE_CUE = re.compile(r"\b(?:table|unstack\w*|off|remov\w*|down|ground|floor)\b")
@@ -224,6 +230,10 @@ def _order(leaf, fields, scene) -> list[Constraint]:
             out.append(Constraint("order", ("order", "layer", (dx, k)), f"{dx} {where} in the structure",
                                   f"Put {_phrase(dx)} {where} in the structure.", leaf, (name,)))
         return out
+    if rel in LINE_END_CUES:  # an end of a left-right line
+        dx, where = scene.d(fields["pairs"][0][0]), rel.replace("_", " ")
+        return [Constraint("order", ("order", rel, (dx,)), f"{dx} at the {where} of the line",
+                           f"Put {_phrase(dx)} at the {where} of the line.", leaf, (fields["pairs"][0][0],))]
     if rel in ROLE_CUES:  # an end of a stack
         dx = scene.d(fields["pairs"][0][0])
         where = "at the bottom" if rel == "bottom" else "on top"
@@ -390,8 +400,8 @@ def _cite_identity(c: Constraint, r: _Reading) -> list[str]:
 
 def _cite_order(c: Constraint, r: _Reading) -> list[str]:
     rel = c.key[1]
-    if rel in ROLE_CUES:
-        who, word = r.determined(c.key[2][0]), r.cue(ROLE_CUES[rel])
+    if rel in ROLE_CUES or rel in LINE_END_CUES:
+        who, word = r.determined(c.key[2][0]), r.cue({**ROLE_CUES, **LINE_END_CUES}[rel])
         return [who, word] if who and word else []
     if rel == "layer":
         who, word = r.determined(c.key[2][0]), r.cue(ORDER_CUE)

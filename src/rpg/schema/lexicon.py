@@ -569,6 +569,28 @@ _GOAL_THINGS = (r"(?:" + "|".join(COLORS) + r"|grey|blocks?|cubes?|bricks?|box(?
 
 GOAL_THING_RE = re.compile(rf"\b{_GOAL_THINGS}\b")
 
+COUNTING_WORDS = frozenset({"just", "only", "pick", "choose", "select", "take", "use", "need", "want", "get", "keep", "make", "build",
+                            "stack", "add", "remove", "put", "place", "exactly", "about", "around", "roughly", "nearly", "almost",
+                            "least", "most", "any", "some", "all", "every", "each", "another", "other", "per", "times", "top",
+                            "bottom", "number", "no", "step", "steps", "phase", "part", "option", "plan", "variant", "version"})
+"""Words before a number that count or pick (or number a step of a plan) rather than name a thing of a voice's world ("just
+one", "pick one", "step two"): the number stays in a voice's label, to be weighed (:func:`rpg.schema.reading._voice_chunk`)."""
+
+VOICE_LABEL_TASK_ONE_RE = re.compile(r"\b(?:(?:this|that|a|the|another|my|our)\s+(?:(?:last|final|quick|harder|easier|easy|simple|short|fun"
+                                     r"|tricky|new|hard|tough|little|big|nice)\s+)?|(?:last|final|quick|harder|easier|easy|simple|short|fun"
+                                     r"|tricky|new|hard|tough|little|big|nice)\s+)one\b(?=\s*(?:$|,|for\b|before\b|today\b|tonight\b|now\b"
+                                     r"|then\b))")
+""""One" in a voice's label that stands for the task itself ("Lads, quick one: ...", "Alright, last one for today: ...",
+"Investors love this one: ..."): set apart before the label is weighed (:func:`rpg.schema.reading._voice_chunk`); "one
+cube", "one of them" and "one more" are none."""
+
+VOICE_LABEL_WORLD_COUNT_RE = re.compile(
+    rf"\b(?:the\s+|our\s+|my\s+)?(?:\d+|{COUNT_WORD_RE})\s+(?!(?:{_GOAL_THINGS}|more|times?|of|other|others|ones?|each|apiece|in|on|at)\b)"
+    r"[a-z][a-z\-]*\b(?!\s+(?:blocks?|cubes?|bricks?|of)\b)")
+"""A count of a thing of the speaker's own world in a voice's label ("Two pots: ...", "Blocking for the two leads: ...",
+"Eight seat drill: ..."): set apart before the label is weighed; a count of cubes, a structure or a place, "times" and
+"more" are none."""
+
 WORLD_COUNT_RE = re.compile(
     rf"\b(?:\d+|{COUNT_WORD_RE}|a\s+few|another)\s+(?:more\s+)?(?!(?:{_GOAL_THINGS}|more|times?|of|other|others)\b)"
     r"[a-z]+s?\b|\b(?:once|twice|thrice|\d+\s+times)\s+(?:a\s+|per\s+|every\s+)?(?:day|daily|week|weekly|month|monthly|year|night"
@@ -1215,6 +1237,11 @@ OTHER_PLACE_RE = re.compile(r"\bthe\s+other\s+(?:[a-z]+\s+)?(?P<noun>patch|pad|m
 place said before it ("put red on the green patch and blue on the other patch"), otherwise it
 contrasts with one the speaker sees (where a cube stands now)."""
 
+REST_ANY_ORDER_RE = re.compile(r"(?i)\bthe\s+rest(?:\s+of\s+(?:them|the\s+(?:cubes|blocks)))?\s+(?:(?:can|may|could)\s+)?"
+                               r"(?:(?:go|be|are|stand|sit)\s+)?in\s+(?:any|whatever|whichever|either)\s+order\b")
+"""The cubes given no place, left in any order ("with the black cube on top; the rest in whatever order"): written "the
+others in any order" (it had been refused as a reference to cubes nobody named)."""
+
 DEMONSTRATIVE_STRUCTURE_RE = re.compile(r"(?i)\b(?P<p>on|onto|upon|to|into|beside|behind|near|of|from|off|put|place|move|set|slide|push|shift"
                                         r"|bring|carry|relocate|transfer|position)\s+(?:this|that)\s+"
                                         r"(?P<n>tower|stack|pile|structure|pyramid|wall|row|line|column)\b(?!\s+of\b)")
@@ -1724,6 +1751,15 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b(left)\s+(?:beside|next\s+to|alongside)\s+(?=the\s+(?:{COLOR_RE})\b)"), r"to the \1 of "),
     # "well away from", "well behind": the degree adds nothing a qualitative relation could judge
     (re.compile(r"\bwell\s+(?=(?:away|apart|clear|behind|beyond|in\s+front|to\s+the\s+(?:left|right))\b)"), ""),
+    # "the orange, black and pink cubes on the cyan, purple and blue patches respectively": pair by pair, as many cubes as
+    # patches (three and more had been read as a stack; other counts stay, refused)
+    (re.compile(rf"\bthe\s+(?P<l1>(?:{COLOR_RE})(?:\s*,\s*(?:the\s+)?(?:{COLOR_RE}))+\s*,?\s*and\s+(?:the\s+)?(?:{COLOR_RE}))\s+(?P<n>block|cube)s\s+"
+                rf"(?P<rel>on|onto|to|next\s+to)\s+the\s+(?P<l2>(?:{COLOR_RE})(?:\s*,\s*(?:the\s+)?(?:{COLOR_RE}))*\s*,?\s*and\s+(?:the\s+)?(?:{COLOR_RE}))"
+                r"\s+(?:goal\s+)?patch(?:es)?\s*,?\s+respectively\b"),
+     lambda m: (lambda a, b: m.group(0) if len(a) != len(b) else ", ".join(
+         f"the {x} {m.group('n')} {m.group('rel')} the {y} patch" for x, y in zip(a[:-1], b[:-1], strict=True))
+         + f" and the {a[-1]} {m.group('n')} {m.group('rel')} the {b[-1]} patch")(
+         re.findall(rf"\b(?:{COLOR_RE})\b", m.group("l1")), re.findall(rf"\b(?:{COLOR_RE})\b", m.group("l2")))),
     # "between the yellow and (the) pink patches": each colour names a patch (yellow had been read as a cube)
     (re.compile(rf"\b({COLOR_RE})\s+and\s+(?:the\s+)?({COLOR_RE})\s+(?:goal\s+|target\s+)?(?:patches|pads|mats|tiles)\b"),
      r"\1 patch and the \2 patch"),
@@ -2257,6 +2293,23 @@ START_COUNTED_TOWER_REWRITE: tuple[re.Pattern, object] = (
 under cyan" (:data:`START_SAID_REWRITES`; the citations read it so too)."""
 
 START_SAID_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "Starting from a tower of green (bottom), yellow, white (top), ...": the ends marked in brackets, the list bottom to
+    # top (it had been refused as ends the list's places do not have)
+    (re.compile(rf"(?i)\b(?P<n>tower|stack)\s+of\s+(?P<a>(?:{COLOR_RE}))\s*\((?:bottom|base)\)\s*,\s*(?P<mid>(?:(?:{COLOR_RE})\s*,\s*)*)"
+                rf"(?:and\s+)?(?P<z>(?:{COLOR_RE}))\s*\(top\)"),
+     lambda m: f"{m.group('n')} of {m.group('a')}, {m.group('mid')}{m.group('z')} (bottom to top)"),
+    # "Given a stack with black at the bottom and gray on top, move ...": the start said as what is given
+    (re.compile(rf"(?i)^\s*(?:given|starting\s+(?:from|with)|start(?:ing)?\s+with)\s+a\s+(?:tower|stack)\s+with\s+(?:the\s+)?(?P<b>{COLOR_RE})"
+                rf"(?:\s+(?:cube|block|one))?\s+(?:at|on)\s+the\s+(?:bottom|base)\s+and\s+(?:the\s+)?(?P<t>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+"
+                r"(?:on\s+top|at\s+the\s+top)\s*,\s*"),
+     lambda m: f"Initially the {m.group('t')} cube is on the {m.group('b')} cube. "),
+    # "There's a two-cube tower, red on top of white. Add a black cube to the top of it.": the tower said with its chain after
+    # a comma, then topped (the chain had been read as the goal with the black cube on white too: a contradiction)
+    (re.compile(rf"(?i)^\s*there(?:'s|\s+is)\s+a\s+(?:(?:two|2)[\s-]+(?:cube|block)\s+)?(?:tower|stack)\s*[,:\-\u2014]\s*(?:with\s+)?(?:the\s+)?"
+                rf"(?P<top>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:on\s+top\s+of|on|atop)\s+(?:the\s+)?(?P<bottom>{COLOR_RE})(?:\s+(?:cube|block|one))?"
+                rf"\s*\.\s+(?P<v>put|place|set|stack|add)\s+(?P<c>(?:a|an|the)\s+(?:{COLOR_RE})\s+(?:cube|block))\s+(?:(?:to|on|onto)\s+the\s+top|on\s+top)"
+                r"(?:\s+of\s+(?:it|the\s+(?:tower|stack)))?(?=\s*[.!]?\s*$)"),
+     lambda m: f"There is a {m.group('top')} cube on the {m.group('bottom')} cube. {m.group('v')} {m.group('c')} on top of it"),
     # "Starting scene: blue on top of red. Take off ...": the start said under a heading ('scene' had been refused unread)
     (re.compile(r"(?i)^\s*(?:the\s+)?(?:starting|start|initial|opening|begin(?:ning)?)\s+(?:scene|state|setup|set-up|configuration|layout"
                 r"|position|arrangement)\s*[:\-\u2014]\s*(?=\S)"),
@@ -3280,6 +3333,17 @@ LINE_ROLE_RE = re.compile(rf"\b(?:between\s+(?:the\s+)?(?:(?:{COLOR_RE})\s+(?:an
 """Words that give a cube a place in a line ("with blue at one end", "the red cube between the other two", "in reverse
 order"): where the task's line has no order, nobody read them (refused: :func:`rpg.schema.accounting.unaccounted`)."""
 
+LINE_END_SAID_RE = re.compile(
+    rf"(?i)(?<![\w'-])(?:the\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:(?:must|should|has\s+to|needs\s+to|is\s+to|will)\s+"
+    r"(?:be|go|sit|stand)\s+|is\s+|goes\s+|sits\s+|stands\s+)?(?:(?:at|on)\s+(?:the\s+)?(?:very\s+|far\s+)?(?P<side>left|right)"
+    r"(?:[\s-]+hand)?\s+end|(?:at|on)\s+the\s+far\s+(?P<side2>left|right)|(?:is\s+)?(?P<most>left|right)most)\b"
+    r"(?:\s+of\s+(?:the|a|that)\s+(?:row|line))?"
+    rf"|(?<![\w'-])(?:the\s+)?(?P<most2>left|right)most\s+(?:cube|block|one)\s+(?:(?:must|should|has\s+to|will)\s+be|is)\s+"
+    rf"(?:the\s+)?(?P<c2>{COLOR_RE})\b")
+"""One cube given the left or right end of a row whose order the text leaves free ("a row of red, green and blue with
+red at the left end", "the gray one must be at the right end", "the leftmost cube is red"): read by
+:func:`rpg.schema.readers.line_with_ends` (an :class:`~rpg.domain.predicates.AnchoredLine`)."""
+
 LABEL_END_SAID_RE = re.compile(r"\b(?:letter|digit|number)\s+(?P<l>[a-z0-9])\s+(?:block|cube)\s+(?:is\s+|goes\s+)?(?:at|on)\s+the\s+"
                                r"(?P<end>bottom|base|top)\b(?!\s+of\b)")
 """A letter or digit cube given an end of a tower ("spell GO in a tower, with G at the bottom"): the tower must have it
@@ -3694,6 +3758,13 @@ IT_ON_A_PATCH_RE = re.compile(rf"(?i)^\s*(?:(?:now|ok(?:ay)?|so|and|then|just)[\
                               rf"(?P<p>(?:on|onto|on\s+top\s+of)\s+(?:the|a)\s+(?:{COLOR_RE})\s+(?:goal\s+)?patch)\b")
 """An edit that puts "it" on a patch ("Stand it on the blue patch."): of a structure task, "it" is the structure."""
 
+TOWER_TO_PATCH_RE = re.compile(rf"(?i)^\s*(?:(?:now|ok(?:ay)?|so|and|then|just|actually)[\s,]+)*(?:move|put|stand|set|place|shift|slide|transfer)\s+"
+                               r"(?:the\s+(?:whole\s+|entire\s+)?(?:tower|stack)|it)\s+(?:over\s+)?(?P<p>(?:on|onto|to)\s+(?:the|a)\s+(?:new\s+)?"
+                               rf"(?:{COLOR_RE})\s+(?:goal\s+)?patch)(?:\s+instead)?\s*[.!]?\s*$")
+"""An edit that moves a tower standing on a patch to another patch ("Move the stack to the yellow patch."): its bottom cube
+moved, which replaces that cube's patch (:func:`rpg.steer.relations.replaced_placement`); read as an addition it had made a
+second tower."""
+
 SWAPPED_THEN_SAID_RE = re.compile(r"(?i)^\s*(?:(?P<label>[^:;,.!?]{2,40}):\s+)?(?:(?:now|ok(?:ay)?|so|and|then|right)[\s,]+)*(?:swap|switch|exchange|trade|flip)\s+"
                                   r"(?:them|the\s+two|those|these|both|places|sides|patches|spots|it)(?:\s+(?:over|around|round))?"
                                   r"(?:[^:;,.!?]{0,60}:|\s*[,:])\s*(?=\S)")
@@ -3945,6 +4016,15 @@ now (at the place said) made X (:data:`EDIT_REWRITES`); the negated colour is ch
 dropped."""
 
 EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = (
+    # "Change the patch to the yellow patch.", "switch the patch to a yellow one": the task's one patch recoloured ('change'
+    # had been read as an action)
+    (re.compile(rf"(?i)\b(?:change|switch|swap|turn)\s+the\s+patch\s+(?:to|for|into)\s+(?:the\s+|a\s+)?(?P<c>{COLOR_RE})(?:\s+(?:one|patch))?\b"),
+     lambda m: f"make the patch {m.group('c')}"),
+    # "Discard the white one", "bin the red cube": removed from the task
+    (re.compile(r"(?i)\b(?:discard|ditch|bin|scrap|dump|lose)\s+(?=the\s+(?:[a-z]+\s+)?(?:one|cube|block)\b)"), "remove "),
+    # "Throw a third purple into the heap": one more cube of that colour added ('a third' had been read as a place)
+    (re.compile(rf"(?i)\b(?:add|put|throw|toss|drop|place|set|stack)\s+an?\s+(?:second|third|fourth|fifth|sixth)\s+(?=(?:{COLOR_RE})\b)"),
+     "add another "),
     # "Lengthen the row with two more orange cubes", "extend the tower with a red cube": those cubes added
     (re.compile(r"(?i)\b(?:lengthen|extend|grow|widen|raise)\s+(?:the\s+(?:row|line|tower|stack|wall)|it)\s+(?:with|by\s+adding)\s+(?=(?:an?|one|two|three"
                 r"|four|\d+|another)\b)"), "add "),
@@ -5304,6 +5384,11 @@ def _relation_then_structure(m: re.Match) -> bool:
 
 
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "From left to right, place red, white, red.": the direction said before the verb and its list (no task had been found)
+    (re.compile(rf"^(?P<d>(?:from\s+)?(?:left\s+to\s+right|right\s+to\s+left))\s*,\s*(?P<v>place|put|set|lay\s+out|line\s+up|arrange)\s+"
+                rf"(?P<l>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:\s*,\s*(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?)+"
+                rf"(?:\s*,?\s*and\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?)?)\s*(?P<e>[.!]?)\s*$"),
+     lambda m: f"{m.group('v')} {m.group('l')} {m.group('d')}{m.group('e')}"),
     # "Tower of three: blue on top; the other two, red and white, can go in either order.": one end fixed, the rest free (it
     # had been read as a contradiction)
     (re.compile(rf"(?i)\b(?:tower|stack)\s+of\s+(?:three|3)(?:\s+(?:cubes|blocks))?\s*:\s*(?:the\s+)?(?P<x>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+"
@@ -5341,6 +5426,37 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"(?<=[a-z])\s*,?\s+and\s+(?:then\s+|also\s+)?(?=(?:make|build|form|create|put|place|arrange|line\s+up|stack|set|lay)\b"
                 r"[^.;!?]*?\b(?:rows?|lines?|towers?|stacks?|piles?|pyramids?|walls?|circles?|rings?|columns?|in\s+a\s+row|up)\b)"),
      lambda m: ". " if _relation_then_structure(m) else m.group(0)),
+    # "a row of the pink cube and the two cyan cubes": one cube and a counted group listed together, the single cube counted
+    # one (the article had hidden the second group's count: a row of two, refused)
+    (re.compile(rf"\b(?:a|an|the)\s+(?P<a>{COLOR_RE})\s+(?P<n1>cube|block)\s+and\s+(?:the\s+)?(?P<k>{COUNT_WORD_RE}|\d+)\s+(?P<b>{COLOR_RE})\s+"
+                r"(?P<n2>cubes|blocks)\b"),
+     lambda m: f"one {m.group('a')} {m.group('n1')} and {m.group('k')} {m.group('b')} {m.group('n2')}"),
+    (re.compile(rf"\bthe\s+(?P<k>{COUNT_WORD_RE}|\d+)\s+(?P<b>{COLOR_RE})\s+(?P<n2>cubes|blocks)\s+and\s+(?:a|an|the)\s+(?P<a>{COLOR_RE})\s+"
+                r"(?P<n1>cube|block)\b"),
+     lambda m: f"{m.group('k')} {m.group('b')} {m.group('n2')} and one {m.group('a')} {m.group('n1')}"),
+    # "Row of three: yellow in the middle, red and blue on either side of it": after a middle said, the two cubes beside it are
+    # the row's ends ("either" had been an unknown word)
+    (re.compile(rf"\b(?P<a>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+and\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?)\s+"
+                rf"(?:(?:go|are|sit|stand)\s+)?on\s+(?:either|each|both)\s+sides?(?:\s+of\s+(?:it|the\s+(?:{COLOR_RE})(?:\s+(?:cube|block|one))?))?"
+                r"(?=\s*(?:[.;!]|$))"),
+     lambda m: f"{m.group('a')} at the ends" if re.search(r"\bin\s+the\s+(?:middle|center|centre)\b", re.split(r"[.;!?]", m.string[:m.start()])[-1])
+     else m.group(0)),
+    # "Put red and blue on either side of the yellow cube": the yellow cube between them ("either" had been an unknown word)
+    (re.compile(rf"\b(?P<v>put|place|set)\s+(?:the\s+)?(?P<a>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+and\s+(?:the\s+)?(?P<b>{COLOR_RE})"
+                rf"(?:\s+(?:cubes?|blocks?|ones?))?\s+on\s+(?:either|each|both)\s+sides?\s+of\s+the\s+(?P<x>{COLOR_RE})(?:\s+(?:cube|block|one))?"
+                r"(?=\s*(?:[.;!]|$))"),
+     lambda m: f"{m.group('v')} the {m.group('x')} cube between the {m.group('a')} cube and the {m.group('b')} cube"),
+    # "green is on the far left, blue comes next, then black": the next in the order said ("comes" had been an unknown word)
+    (re.compile(rf",\s*(?:the\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:comes|is|goes|sits|stands)\s+next\b(?!\s+to\b)"),
+     lambda m: f", then {m.group('c')}"),
+    # "with the two white cubes at the ends": one of them at each end of the row (the count had been read against one cube)
+    (re.compile(rf"\b(?:the\s+)?(?:two|2|both)\s+(?P<c>{COLOR_RE})\s+(?P<n>cube|block)s\s+(?:go\s+|are\s+|sit\s+)?(?:at|on)\s+(?:the\s+)?"
+                r"(?:two\s+|both\s+)?ends\b(?!\s+of\s+(?:the|a)\s+(?:table|workspace))"), lambda m: f"a {m.group('c')} {m.group('n')} at each end"),
+    # "Put the green cube in the middle of a row, with a white cube at each end": the row made, its middle said (the middle
+    # had been read as a place on the table)
+    (re.compile(rf"(?:^|(?<=[.;:!]\s))(?:put|place|set)\s+the\s+(?P<c>{COLOR_RE})\s+(?P<n>cube|block)\s+in\s+the\s+(?:middle|center|centre)\s+of\s+"
+                r"(?:a|the)\s+(?P<s>row|line)\s*,?\s+with\s+(?P<rest>(?:a|an|one)\s+[a-z]+\s+(?:cube|block)\s+at\s+each\s+end)(?=\s*(?:[.;!]|$))"),
+     lambda m: f"make a {m.group('s')} with the {m.group('c')} {m.group('n')} in the middle and {m.group('rest')}"),
     # "three white cubes in a row at the back, and three black cubes in a row at the front": two counted groups, each in a
     # structure of its own, two clauses (the second group's count had been read as one cube of the first row); not when
     # the second clause refers back ("... in a row behind them")

@@ -12,6 +12,7 @@ letter/digit cube by its label, a goal patch as ``patch:<colour>``).  Examples::
     right_of(red,blue); in_front_of(red,blue)   two relations of one pair along both axes: diagonally
     line(green,green,green)               line[left_to_right](red,green,blue)
     line[sequence](red,green,red)         a row in that order from either end, along no said axis ("red, green, red in a row")
+    line[left_end](red,blue,green)        a row with red at its left end, the rest in any order (sorted; right_end: the last)
     wall(red,red,red|blue,blue,blue)      layers bottom to top (rows, walls, 3D blocks)
     pyramid(blue,green,red|yellow)        layers bottom to top, each layer sorted
     pyramid(blue,green,red)               a pyramid whose cubes may stand in any layer
@@ -33,6 +34,7 @@ for one or more red cubes.  :func:`matches` compares an expected meaning with a 
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections import Counter
 
@@ -141,6 +143,13 @@ def meaning(schema: TaskSchema) -> list[str]:
             atoms.append(f"{p.name}({sorted_names([p.a, p.b])})")
         elif isinstance(p, P.Between):
             atoms.append(f"between({names([p.a])};{sorted_names([p.b, p.c])})")
+        elif isinstance(p, P.AnchoredLine):  # "line[left_end](red,blue,green)": red at the left end, the rest sorted
+            rest = p.objects[p.left:len(p.objects) - p.right]
+            ends = ",".join(["left_end"] * p.left + ["right_end"] * p.right)
+            body = ",".join(filter(None, [names(p.objects[:1]) if p.left else "", sorted_names(rest),
+                                          names(p.objects[-1:]) if p.right else ""]))
+            atoms.append(f"line[{ends}]({body})")
+            placed.append((len(atoms) - 1, p.objects))
         elif isinstance(p, P.InLine):
             ordered = p.order and len(set(names(p.objects).split(","))) > 1  # cubes of one colour: no order to say,
             directed = p.order and p.order != "sequence"  # but a direction still says the line's axis
@@ -325,6 +334,39 @@ def _middle_of_three(text: str) -> str:
         x, y, z = m.group(1).split(",")
         return f"between({y};{','.join(sorted((x, z)))}); line({','.join(sorted((x, y, z)))}){m.group(2) or ''}"
     return re.sub(r"\bline\[sequence\]\(([^()?*,;|]+,[^()?*,;|]+,[^()?*,;|]+)\)(@\w+)?", split, text)
+
+
+_ANCHORED_LINE_RE = re.compile(r"\bline\[(left_end|right_end|left_end,right_end)\]\(([^()]*)\)")
+
+
+def completions(actual: list[str]) -> list[list[str]]:
+    """The meanings a line with its ends said and the rest free (``line[left_end](red,blue,green)``) accepts, each with
+    that line written in one full order from left to right (``line[left_to_right](red,blue,green)``,
+    ``line[left_to_right](red,green,blue)``); ``[actual]`` when it has none.  An expected meaning given as alternatives
+    equals such a line when the alternatives are exactly its completions (:func:`matches_alternatives`)."""
+    out = [list(actual)]
+    for i, atom in enumerate(actual):
+        m = _ANCHORED_LINE_RE.search(atom)
+        if m is None:
+            continue
+        cubes = m.group(2).split(",")
+        left, right = "left_end" in m.group(1), "right_end" in m.group(1)
+        head, rest, tail = cubes[:left], cubes[left:len(cubes) - right], cubes[len(cubes) - right:]
+        orders = sorted({tuple(head + list(q) + tail) for q in itertools.permutations(rest)})
+        out = [c[:i] + [atom[:m.start()] + f"line[left_to_right]({','.join(o)})" + atom[m.end():]] + c[i + 1:]
+               for c in out for o in orders]
+    return out
+
+
+def matches_alternatives(alternatives: list[str], actual: list[str]) -> bool:
+    """Whether ``actual`` means what the expected ``alternatives`` (any one of them right) say together: one of them
+    matches it, or, where ``actual`` leaves a line's order free but at its ends, its completions and the alternatives
+    match one to one (a line free but for one end is right only where every order it accepts was expected)."""
+    done = completions(actual)
+    if len(done) == 1:
+        return any(matches(m, actual) for m in alternatives)
+    return all(any(matches(m, c) for m in alternatives) for c in done) and all(
+        any(matches(m, c) for c in done) for m in alternatives)
 
 
 def matches(expected: str, actual: list[str]) -> bool:

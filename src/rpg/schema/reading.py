@@ -414,9 +414,17 @@ def _voice_chunk(chunk: str, label: bool = False, rest: str = "") -> bool:
     and no number but a label's name of a thing ("day six", :data:`lexicon.VOICE_NAME_NUMBER_RE`)."""
     if re.search(r"\b[A-HJ-Z]\b|\b[0-9]\b(?!\s*[a-z]{2})|_", chunk) and not (label and not re.search(r"\b[A-Z]\b|_", chunk)):
         return False  # "..., they go T, O, P": a label cube, not a voice ("day 6" names a day)
-    low = chunk.lower().strip()
+    said = low = chunk.lower().strip()
+    if label:  # "Lads, quick one", "Snooker lesson one", "Two pots": the task itself, a name, a count of the voice's own things
+        def name(m: re.Match) -> str:  # "lesson one", "scene two": a name; "just one", "pick one": a count kept
+            word = m.group(0).split()[0]
+            return word if "NOUN" in lexicon.parts_of_speech(word) and not lexicon.VOICE_CHUNK_HAZARD_RE.search(word) \
+                and word not in lexicon.COUNTING_WORDS else m.group(0)
+        low = lexicon.VOICE_LABEL_WORLD_COUNT_RE.sub(lambda m: m.group(0).split()[-1],
+                                                     lexicon.VOICE_NAME_NUMBER_RE.sub(name, lexicon.VOICE_LABEL_TASK_ONE_RE.sub("task", low)))
+    masked = low != said  # (a label so weighed may be one word, or fillers and the task: "Two pots", "Alright, last one")
     words = re.findall(r"[a-z][a-z'\-]*", low)
-    if len(words) < 2 or re.search(r"[^\w\s'\-.,#\u2022]", low):
+    if (len(words) < 2 and not masked) or re.search(r"[^\w\s'\-.,#\u2022]", low):
         return False  # "..., textbook!", "..., respectively", "Obj:", "cc @kowalski": a word alone, or a handle, is the other
         # readers' to weigh
     if lexicon.VOICE_CHUNK_HAZARD_RE.search(low) or lexicon.RETRACTION_RE.search(re.sub(r"^the\s+way\b", " ", low)):
@@ -427,7 +435,7 @@ def _voice_chunk(chunk: str, label: bool = False, rest: str = "") -> bool:
         return not lexicon.VOICE_SIMILE_BLOCKER_RE.search(low) or _restates_relations(low, rest)
     if lexicon.VOICE_PLACE_HAZARD_RE.search(low):
         return False  # "..., into the bin", "..., using the tongs": it may place a cube or name a tool
-    if all(w in lexicon.IDLE_WORDS or w in lexicon.CHAT_WORDS or w in lexicon.INTERJECTIONS for w in words):
+    if all(w in lexicon.IDLE_WORDS or w in lexicon.CHAT_WORDS or w in lexicon.INTERJECTIONS for w in words) and not masked:
         return False  # "..., please?": a filler the readers know (it may matter to how the rest is read)
     named = lexicon.VOICE_NAME_NUMBER_RE.sub(lambda m: m.group(0).split()[0], low) if label else low
     if re.search(r"\d", named) or lexicon.TASK_CONTENT_RE.search(named) or lexicon.GOAL_THING_PREFIX_RE.search(named):
@@ -1433,6 +1441,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     original = LABEL_LIST_PLURAL_RE.sub(r"\1 \2", original)  # "the B, the A and the T blocks": T is one cube (it had been dropped)
     original = lexicon.SAYS_RE.sub(r"\1reads", original)  # "the tower says H, A, T"
     original = lexicon.DEMONSTRATIVE_STRUCTURE_RE.sub(r"\g<p> the \g<n>", original)  # "on top of that tower"
+    original = lexicon.REST_ANY_ORDER_RE.sub("the others in any order", original)  # "the rest in whatever order"
     original = lexicon.HYPHENED_DIRECTION_RE.sub(r"\1 to \2", original)
     original = lexicon.rewrite(lexicon.DIAGONAL_SIDE_REWRITES, original)  # "diagonally behind X, off to its right"
     original = lexicon.DIAGONAL_PLACE_RE.sub(lexicon.diagonal_place, original)  # "to the front-right of the red cube"

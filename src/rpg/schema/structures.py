@@ -15,6 +15,7 @@ reads as separate cubes.
 from __future__ import annotations
 
 import math
+from collections import Counter
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 from typing import ClassVar
@@ -73,7 +74,7 @@ class TaskSpec:
             without an order.
         axis: ``y`` (left-right) or ``x`` (front-back) for a line without an order.
         layer_colors: each layer of a pyramid or block is one colour, layers differ.
-        piles_by: ``color`` or ``type`` for piles.
+        piles_by: ``color`` or ``type`` for piles sorted by an attribute; ``one`` for one pile of cubes of several colours.
         outliers: per-pile outliers (piles).
         word: the word a line spells, if any.
         named: a line whose labelled cubes the words name one by one, in order (no sort judged
@@ -480,6 +481,10 @@ class PilesKind(StructureKind):
             return TaskSpec("piles", seq(m.objects), piles_by=m.by or "color")
         groups = [seq(g) for g in m.groups]
         by = "type" if len({i.material for g in groups for i in g}) > 1 else "color"
+        if len(groups) == 1 and by == "color" and all(i.color for i in groups[0]) and len({i.color for i in groups[0]}) > 1:
+            return TaskSpec("piles", groups[0], piles_by="one")  # one pile of cubes of several colours ("heap the gray cube
+            # and two purple cubes into one pile"): one pile still after an edit (it had been read as piles by colour with an
+            # outlier each, and a cube added made two piles, silently)
 
         def key(i: Item) -> str | None:
             return i.material if by == "type" else i.color
@@ -488,6 +493,9 @@ class PilesKind(StructureKind):
         return TaskSpec("piles", tuple(i for g in groups for i in g), piles_by=by, outliers=outliers)
 
     def render(self, spec):
+        if spec.piles_by == "one" and len({i.color for i in spec.items}) > 1:  # "Put one gray cube and three purple cubes into one pile"
+            counts = Counter(i.color for i in spec.items)
+            return "Put " + join_words([f"{n} {c} cube{'s' if n > 1 else ''}" for c, n in counts.items()]) + " into one pile"
         tail = f" so that each pile has {spec.outliers} outlier{'s' if spec.outliers > 1 else ''}" if spec.outliers else ""
         if spec.piles_by == "type" or spec.material == "mixed":
             return "Sort letters, numbers and colors mixed into respective piles" + tail
@@ -497,7 +505,7 @@ class PilesKind(StructureKind):
         return f"Sort {len(spec.items)} {join_words(colors)} blocks into piles by color" + tail
 
     def fit(self, spec, resize):
-        return TaskSpec("piles", spec.items, piles_by="type" if spec.material == "mixed" else "color")
+        return TaskSpec("piles", spec.items, piles_by="type" if spec.material == "mixed" else "one" if spec.piles_by == "one" else "color")
 
 
 STRUCTURE_KINDS: dict[str, StructureKind] = {k.name: k for k in

@@ -91,7 +91,7 @@ def _split(schema: TaskSchema) -> tuple[TaskSpec | None, Carried]:
     spec = extract(bare)
     if spec is None:
         return None, Carried()
-    members = {n for p in rest for n in p.objects} if all(hasattr(p, "objects") for p in rest) else set()
+    members = {n for p in rest for n in p.object_names()}  # (a pile's cubes are its groups': "one pile ... at the back")
     if any(p.a not in members for p in regions):
         return None, Carried()  # a region of a cube outside the structure: not a modifier of it
     if layers and not spec.kind.layered:

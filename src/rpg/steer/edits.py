@@ -218,6 +218,8 @@ def normalize_edit(text: str) -> str:
     t = re.sub(r"\b(a|an|the)\s+(\d)\s+(cube|block)\b(?!\s*(?:-|towers?|stacks?|rows?|lines?|pyramids?|walls?|piles?|circles?|grids?"
                r"|columns?|high|tall|wide|long)\b)", r"\1 digit \2 \3", t)  # "put a 6 cube on top": the digit cube 6 (six had been
     # added, silently); "a 3 cube tower" is a count
+    t = re.sub(r"\b(cube|block)\s+(\d)\b(?![x\d\-.,]\d)(?!\s*(?:blocks?|cubes?|tall|high|wide|long|deep|layers?|levels?|rows?|more|of"
+               r"|colou?rs?|times)\b)", r"digit \2 \1", t)  # "put cube 6 on top": the digit cube 6 (six had been added, silently)
     t = re.sub(r"\b(a|an|the)\s+(\d)\b(?![x\d\-])(?!\s*(?:blocks?|cubes?|tall|high|wide|long|deep|layers?|levels?|rows?|"
                r"more|of|colou?rs?|stor\w*|outliers?|times)\b)", r"\1 digit \2", t)
     known = _known_words()

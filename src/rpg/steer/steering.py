@@ -30,7 +30,7 @@ from pydantic import BaseModel, ConfigDict, Field
 from rpg.artifact import ArtifactError, load_artifact
 from rpg.compiler import CompileResult, build
 from rpg.domain.palette import PALETTE
-from rpg.domain.predicates import PREDICATES, InLayers, describe_region
+from rpg.domain.predicates import PREDICATES, InLayers, OnPatch, Stack, describe_region
 from rpg.errors import BadInput
 from rpg.schema.builtin import parse
 from rpg.schema.edits import recolor
@@ -57,6 +57,7 @@ from rpg.schema.lexicon import (
     SAME_PATCH_RE,
     STRUCTURE_COPIED_RE,
     TOWER_RESTATED_RE,
+    TOWER_TO_PATCH_RE,
     VARIANT_LABEL_RE,
 )
 from rpg.schema.model import TaskSchema
@@ -391,7 +392,7 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         schema = _same_cubes(plan.text, ref_schema, schema)
         schema = _same_cubes_kept(plan.text, ref_schema, schema, ("same", True) in plan.checks)
         instead = re.search(r"(?i)\binstead\b(?!\s+of\b)", plan.text)
-        moved = EDIT_MOVES_A_TASK_CUBE_RE.match(plan.text)  # "move the red cube onto the yellow patch": its old place goes
+        moved = _moves_a_task_cube(plan.text, ref_schema)  # "move the red cube onto the yellow patch": its old place goes
         replaced = replaced_placement(_without_instead(text), ref_schema, parse) if (instead and _relates_a_related_pair(schema, ref_schema)) or moved else None
         if replaced is not None:  # "the cyan cube stands in front of the orange cube instead" of a task that also puts the
             # orange cube on a patch: that one placement exchanged, the rest kept (the patch had been lost as a pivot)
@@ -402,13 +403,14 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         if same_assets(schema, ref_schema) and (relation_of(schema) and relation_of(ref_schema) or (
                 ref_spec is None and split(schema)[0] is None and ("swapped", True) in plan.checks)):
             return schema, text, "modify"  # the same cubes in another relation, or on each other's patches
-        if _stacks_a_new_cube_on_the_task(schema, ref_schema):  # "now put the green cube on the red cube": on top of it
+        if _stacks_a_new_cube_on_the_task(schema, ref_schema) or _relates_a_new_cube_to_the_task(plan.text, schema, ref_schema):
+            # "now put the green cube on the red cube": on top of it; "land the green cube next to the cyan": beside it
             return _addition(replace(plan, text=f"then {text}"), reference, ref_schema)
         intent = intent_of_standalone(extract(schema), ref_spec)
         _refuse_pivot_that_loses_cubes(plan.text, ref_schema, schema, intent, reference)
         _refuse_made_up_cubes(plan.text, ref_schema, schema, reference)
         return schema, text, intent
-    swapped = _swapped(plan, ref_schema) if ref_spec is None else None
+    swapped = (_swapped(plan, ref_schema) or _labels_exchanged(plan, ref_schema)) if ref_spec is None else None
     if swapped is not None:  # "swap yellow and red" of cubes in several relations: each takes the other's place
         return swapped
     chained = _chain_edit(plan, ref_schema) if ref_spec is None else None
@@ -639,6 +641,43 @@ def _swapped(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str, str] | N
     return schema, instruction, "modify"
 
 
+def _labels_exchanged(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str, str] | None:
+    """A task of label cubes related to each other with a label replaced ("Wrong letter, swap the K out for an L" of "cube K
+    in front of cube J") or two labels exchanged ("Swap E and R" of "E between A and R"): its instruction said again with
+    the labels changed where they stand alone, read again, and kept only when its meaning is the old one with exactly those
+    labels changed (an article "A" or a count read as a label fails that check).  None when the edit is no such change, a
+    label named is not one cube of the task, or a new label is one it has already."""
+    from rpg.schema.meaning import meaning
+
+    labels = [a.label for a in ref.assets if a.kind != "goal_patch" and a.label]
+    material = "letters" if labels and all(x.isalpha() for x in labels) else "digits" if labels and all(x.isdigit() for x in labels) else None
+    ops = [o for o in plan.ops if not (o.op == "material" and o.params == {"to": material})]  # "Wrong letter, ...": what it has
+    if ops and all(o.op == "relabel" and set(o.params.get("select", {})) == {"label"} and set(o.params.get("to", {})) == {"label"}
+                   for o in ops):
+        mapping, intent = {o.params["select"]["label"]: o.params["to"]["label"] for o in ops}, "tweak"
+        if set(mapping.values()) & set(labels):
+            return None
+    elif len(ops) == 1 and ops[0].op == "swap" and set(ops[0].params) == {"a", "b"} \
+            and set(ops[0].params["a"]) == {"label"} == set(ops[0].params["b"]):
+        a, b = ops[0].params["a"]["label"], ops[0].params["b"]["label"]
+        mapping, intent = {a: b, b: a}, "modify"
+    else:
+        return None
+    if any(labels.count(k) != 1 for k in mapping) or any(a.kind == "colored_cube" for a in ref.assets):
+        return None
+
+    def changed(text: str) -> str:
+        return re.sub(r"(?<![\w'])([A-Z0-9])(?![\w'])", lambda m: mapping.get(m.group(1), m.group(1)), text)
+
+    instruction = changed(ref.instruction)
+    try:
+        schema = parse(instruction)
+    except BadInput:
+        return None
+    want = sorted(re.sub(r"(?<=[(,;|])([A-Z0-9])(?=[),;|@])", lambda m: mapping.get(m.group(1), m.group(1)), atom) for atom in meaning(ref))
+    return (schema, instruction, intent) if sorted(meaning(schema)) == want else None
+
+
 _CHAIN_WORDS = {"left_of": ("left_to_right", False), "right_of": ("left_to_right", True),
                 "in_front_of": ("front_to_back", False), "behind": ("front_to_back", True)}
 """A side relation -> (the direction its chain is read in, whether the relation's object comes first)."""
@@ -726,6 +765,37 @@ def _change_from_head(fam: Family, schema: TaskSchema) -> str:
         return sorted({a.split("(")[0] for a in meaning(s)})
 
     return "tweak" if kinds(schema) == kinds(head) else "modify"
+
+
+def _moves_a_task_cube(text: str, ref: TaskSchema) -> re.Match | None:
+    """The move of a cube the task has (:data:`~rpg.schema.lexicon.EDIT_MOVES_A_TASK_CUBE_RE`), or None: a cube named by
+    colour or label that the task lacks is added, not moved ("Land the green cube right next to the cyan" of a task with
+    only a cyan cube had replaced the cyan cube's place, silently)."""
+    m = EDIT_MOVES_A_TASK_CUBE_RE.match(text)
+    named = re.match(rf"(?i)(?:(?P<c>{COLOR_RE})|(?:letter|digit|number)\s+'?(?P<l>[a-z0-9])'?)\b", text[m.end():]) if m else None
+    if named is None:
+        return m
+    said = canon_color(named.group("c").lower()) if named.group("c") else named.group("l").upper()
+    return m if any(said in (a.color, (a.label or "").upper()) for a in ref.assets if a.kind != "goal_patch") else None
+
+
+def _relates_a_new_cube_to_the_task(edit: str, schema: TaskSchema, ref: TaskSchema) -> bool:
+    """Whether a whole-task reading of an edit keeps every cube of the task, adds cubes of colours (or labels) the task lacks,
+    and says nothing of the task's own cubes but how the new ones stand to them ("Land the green cube right next to the
+    cyan" of a cyan cube in the middle of the table), with no word that replaces ("instead", "rather", "only"): an addition
+    (read as a whole task it had dropped the cyan cube's place, silently; :func:`_addition` keeps it only when the task's own
+    goal is kept whole)."""
+    from rpg.schema.meaning import descriptor, meaning
+
+    if re.search(r"(?i)\b(?:instead|rather|only|just|anymore|no\s+longer|replace\w*|scrap\w*|new\s+task|start\s+over|afresh)\b", edit):
+        return False
+    had = {descriptor(a) for a in ref.assets}
+    now = {descriptor(a) for a in schema.assets}
+    new = now - had
+    if not new or had - now or any(a.kind == "goal_patch" for a in ref.assets):
+        return False
+    atoms = [set(re.findall(r"[\w:]+", a.split("(", 1)[1])) for a in meaning(schema) if "(" in a]
+    return bool(atoms) and all(a & new for a in atoms) and any(a & had for a in atoms)
 
 
 def _stacks_a_new_cube_on_the_task(schema: TaskSchema, ref: TaskSchema) -> bool:
@@ -1364,6 +1434,12 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
     if spec is not None and spec.structure == "tower" and IT_ON_A_PATCH_RE.match(plan.text):  # "stand it on the blue patch" of
         # a tower: the tower (a wider structure is no patch's: a pyramid or wall there had crashed)
         clause = addition_clause(IT_ON_A_PATCH_RE.sub(r"\g<v> the tower \g<p>", plan.text, count=1))
+    towered = TOWER_TO_PATCH_RE.match(plan.text)
+    bottoms = [p.objects[0] for p in ref_schema.goal_predicate().conjuncts() if isinstance(p, Stack)] if towered else []
+    tower_moved = len(bottoms) == 1 and bottoms[0] in {p.a for p in ref_schema.goal_predicate().conjuncts() if type(p) is OnPatch}
+    if tower_moved:  # "move the stack to the yellow patch" of a tower on a patch: its bottom cube moved there, from its patch
+        cube = next(a for a in ref_schema.assets if a.name == bottoms[0])
+        clause = addition_clause(f"move the {cube.color or cube.label} block {towered.group('p')}")
     named = [f"the {a.color} block" if a.color else f"the {a.label} block" for a in cubes]
     if clause is None and len(cubes) == 2 and len(set(named)) == 2 and BETWEEN_THEM_RE.search(plan.text.lower()):
         # "put a green cube between them": between the task's two cubes
@@ -1378,7 +1454,8 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
                          "change the builtin steering reads (add, remove, recolour, resize, reorder, move it, another "
                          "structure); say what to change, e.g. \"make the top block red\", or use --model")
     instead = re.search(r"(?i)\binstead\b(?!\s+of\b)", plan.text)
-    moved = EDIT_MOVES_A_TASK_CUBE_RE.match(plan.text)  # "move the pink one onto a new green patch": its old place goes too
+    moved = _moves_a_task_cube(plan.text, ref_schema) or tower_moved  # "move the pink one onto a new green patch": its old
+    # place goes too
     replaced = replaced_placement(_new_patch_said(_without_instead(clause), ref_schema), ref_schema, parse) \
         if instead or moved else None
     if replaced is not None:  # "put the red cube to the right of the green one instead": that one placement exchanged

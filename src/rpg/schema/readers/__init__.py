@@ -18,14 +18,17 @@ import itertools
 import json
 import math
 import re
+from dataclasses import replace
 
 from pydantic import ValidationError
 
 from rpg.domain.predicates import (
     MAX_ASSIGNMENTS,
+    AnchoredLine,
     AnchoredStack,
     And,
     Behind,
+    CentredIn,
     FarFrom,
     InFrontOf,
     InLine,
@@ -319,6 +322,65 @@ def any_order_with_ends(f: Features, schema: TaskSchema) -> TaskSchema | None:
     objs = ([ends["bottom"]] if "bottom" in ends else []) + objs + ([ends["top"]] if "top" in ends else [])
     anchored = AnchoredStack(objects=tuple(objs), bottom="bottom" in ends, top="top" in ends)
     return _with_parts(schema, goal, parts, [anchored if q is stack else q for q in parts])
+
+
+def symmetric_rows(f: Features, schema: TaskSchema) -> TaskSchema:
+    """A row read in a direction whose cubes read the same both ways ("a row with the green cube in the middle and a white
+    cube at each end") where the text names no side or direction: the order from either end along no said axis
+    (``order="sequence"``, ``axis=None``).  Left to right had demanded a left-right row that no word asked for."""
+    if re.search(r"\b(?:left|right|front|back|rear|near|far|away|towards?|horizontal\w*|vertical\w*|across|along|depth)\b", f.original.lower()):
+        return schema
+    colours = {a.name: a.color if a.kind == "colored_cube" else a.label for a in schema.assets}
+    goal = schema.goal_predicate()
+    parts = goal.children() if isinstance(goal, And) else [goal]
+    out = [replace(p, order="sequence", axis=None)
+           if type(p) is InLine and p.order in ("left_to_right", "right_to_left") and len(p.objects) > 2
+           and [colours.get(n) for n in p.objects] == [colours.get(n) for n in reversed(p.objects)] else p for p in parts]
+    return _with_parts(schema, goal, parts, out)
+
+
+def line_with_ends(f: Features, schema: TaskSchema) -> TaskSchema | None:
+    """A reading of a text that gives a row of three or more cubes, read in no order, a cube at its left or right end and
+    says nothing more of its order ("a row of red, green and blue with red at the left end", "Make a row of the orange,
+    pink and gray cubes; the gray one must be at the right end"): its one :class:`~rpg.domain.predicates.InLine` made an
+    :class:`~rpg.domain.predicates.AnchoredLine` with those ends fixed and the rest free, its goal configuration laid out
+    to match; None where the reading has another line, the line runs front to back, any other word gives a cube a place
+    in it (:data:`lexicon.LINE_ROLE_RE`) or says more of its order (:data:`lexicon.ORDER_BEYOND_ENDS_RE`), an end is said
+    twice, a colour named for an end is not one of its cubes, or a cube of it is related to something else by itself."""
+    goal = schema.goal_predicate()
+    parts = goal.children() if isinstance(goal, And) else [goal]
+    lines = [p for p in parts if isinstance(p, InLine)]
+    if len(lines) != 1 or type(lines[0]) is not InLine or lines[0].order or len(lines[0].objects) < 3 \
+            or lines[0].axis not in (None, "y"):
+        return None
+    line = lines[0]
+    text = lexicon.FREEDOM_SENTENCE_RE.sub(" ", re.sub(r"\bin\s+any\s+order\b", " ", f.text))
+    said = list(lexicon.LINE_END_SAID_RE.finditer(text))
+    if not said or any(not any(m.start() <= r.start() and r.end() <= m.end() for m in said)
+                       for r in lexicon.LINE_ROLE_RE.finditer(text)):
+        return None  # no end said, or another place in the line ("with blue in the middle", "at one end")
+    rest = " ".join(part for part in re.split(r"[,;.:!?]", lexicon.LINE_END_SAID_RE.sub(" ", f.text))
+                    if not lexicon.FREE_ORDER_PART_RE.search(part))
+    if lexicon.ORDER_BEYOND_ENDS_RE.search(rest) or re.search(r"\b(?:left|right)\b", rest):
+        return None  # "red at the left end, then blue": more of the order said; another side said elsewhere
+    colours = {a.name: a.color for a in schema.assets if a.kind == "colored_cube"}
+    ends: dict[str, str] = {}
+    for m in said:
+        side = (m.group("side") or m.group("side2") or m.group("most") or m.group("most2")).lower()
+        owners = [n for n in line.objects if colours.get(n) == canon_color((m.group("c") or m.group("c2")).lower())]
+        if not owners or ends.get(side, owners[0]) != owners[0] or owners[0] in [v for k, v in ends.items() if k != side]:
+            return None
+        ends[side] = owners[0]
+    others = [q for q in parts if q is not line and set(q.object_names()) & set(line.objects)]
+    if not all(isinstance(q, (InRegion, CentredIn)) for q in others):
+        return None
+    objs = ([ends["left"]] if "left" in ends else []) + [n for n in line.objects if n not in ends.values()] + (
+        [ends["right"]] if "right" in ends else [])
+    anchored = AnchoredLine(objects=tuple(objs), axis="y", left="left" in ends, right="right" in ends)
+    slots = sorted((schema.goal_layout[n] for n in line.objects), key=lambda pose: -pose.position[1])  # left to right
+    layout = {**schema.goal_layout, **dict(zip(objs, slots, strict=True))}
+    read = _with_parts(schema, goal, parts, [anchored if q is line else q for q in parts])
+    return read.model_copy(update={"goal_layout": layout})
 
 
 def disjoint_regions(f: Features, schema: TaskSchema) -> ParseError | None:
@@ -634,6 +696,8 @@ def _read(instruction: str) -> TaskSchema:
                 continue
             schema.repairs = b.repairs
             gap = unaccounted(f, schema) or disjoint_regions(f, schema)
+            if gap is not None and (ended := line_with_ends(f, schema)) is not None and unaccounted(f, ended) is None:
+                schema, gap = ended, None  # "a row of red, green and blue with red at the left end": that end, the rest free
             if gap is None:
                 # reverse accounting: a part of G nobody stated is dropped where a weaker goal
                 # exists (a tower's named end kept, the rest free); the rest is recorded as
@@ -641,8 +705,8 @@ def _read(instruction: str) -> TaskSchema:
                 # parameter a reader sets, such as a default count). A structure filled up with
                 # cubes nobody named makes this reading fail (the next reader may do better)
                 try:
-                    read = one_colour_for_unnamed(f, citations.enforce(free_listed_orders(f, free_unnamed_orders(f, schema)),
-                                                                       refuse=False))
+                    read = symmetric_rows(f, one_colour_for_unnamed(f, citations.enforce(
+                        free_listed_orders(f, free_unnamed_orders(f, schema)), refuse=False)))
                 except citations.UncitedConstraint as exc:
                     gap = ParseError(f"\"{f.original[:80]}\": {exc}; or use --model")
                 else:
