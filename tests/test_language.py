@@ -8382,3 +8382,44 @@ def test_forty_fifth_session_voice_labels_with_their_own_counts(text, expected):
 def test_forty_fifth_session_voice_labels_that_count_the_task_stay(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text", [
+    # a hostile helper's probes of this session's readings (forty-fifth session), each compiled silently wrong before its mend:
+    # two cubes for one end, a cube beyond the row's list, cubes of a colour nobody said, a wish
+    "Make a row of red, green and blue with red and green at the left end",
+    "Make a row of red, green and blue. The gray one must be at the right end",
+    "Make a row of three cubes with yellow at the left end",
+    "Make a row with red at the left end",
+    "Make a row of red, green and blue with red at the left end if possible",
+    # "on either side of" a cube that is not the middle one
+    "Put the green cube in the middle of a row, with red and blue on either side of the white cube",
+    "Row of three: yellow in the middle, red and blue on either side of the green cube",
+    # "them" with no cubes named, a demonstrative cube nobody named (cubes had been made up)
+    "Make a row of them.",
+    "Make a tower of them.",
+    "Stack red on blue. Put green on top of that cube.",
+    "Put green on top of that cube.",
+    # a voice label's count of copies, levels or pairs (the count had been dropped)
+    "Two copies: red on blue.",
+    "Three levels: red on blue.",
+    "Four stories: stack red, green and blue",
+    "Two pairs: red on blue.",
+    # "comes next" with no end said first: no order
+    "Make a tower of red and blue, white comes next",
+])
+def test_forty_fifth_session_hostile_probes_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Make a row of three cubes: green in the middle, with the two white cubes at the ends", ["line[sequence](white,green,white)"]),
+    ("Make a row of three cubes: green in the middle, white at the ends", ["line[sequence](white,green,white)"]),
+    ("Row of three: yellow in the middle, red and blue on either side of the yellow cube.",
+     ["between(yellow;blue,red)", "line(blue,red,yellow)"]),
+    ("Put a pink cube on top of the red cube, and a brown one on top of that one.", ["stack(red,pink,brown)"]),
+    ("Take the red, green and blue cubes and make a tower of them.", ["stack(red,green,blue)"]),
+])
+def test_forty_fifth_session_hostile_probes_read(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)

@@ -3267,3 +3267,24 @@ def test_forty_fifth_session_a_new_label_the_task_has_is_not_exchanged(tmp_path)
     fam = compiled("Close-up: cube K in front of cube J.", tmp_path, name="fam").path
     with pytest.raises(BadInput):
         steer(fam, "Swap the K for a J.")
+
+
+@pytest.mark.parametrize("base,edit", [
+    # a hostile helper's probes (forty-fifth session), each applied silently wrong before its mend
+    ("Put the K cube to the left of the E cube and the R cube behind the E cube.", "Swap the K for an L cube on the red patch."),
+    ("Put the K cube to the left of the E cube and the R cube behind the E cube.", "Swap E and R, then put K on the red patch."),
+    ("Put the K cube to the left of the E cube and the R cube behind the E cube.", "Swap the K for 2 L cubes."),
+    ("Heap the gray cube and a red cube into one pile.", "Throw a third red into the heap."),
+    ("Build a tower from bottom to top: red, green, blue.", "Put a white cube on the table."),
+    ("Stack cube 3, cube 2 and cube 1 from bottom to top.", "Put cube 3 on top."),
+])
+def test_forty_fifth_session_hostile_edits_refused(tmp_path, base, edit):
+    fam = compiled(base, tmp_path, name="fam").path
+    with pytest.raises(BadInput):
+        steer(fam, edit)
+
+
+def test_forty_fifth_session_a_cube_far_from_the_tower_is_no_cube_on_top(tmp_path):
+    """"Put a white cube far from the tower" had stacked it on the tower's top, silently."""
+    assert _meaning_after(tmp_path, "Build a tower from bottom to top: red, green, blue.", ["Put a white cube far from the tower."])[0] == [
+        "far_from(red,white)", "stack(red,green,blue)"]

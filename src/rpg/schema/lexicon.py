@@ -589,7 +589,18 @@ VOICE_LABEL_WORLD_COUNT_RE = re.compile(
     r"[a-z][a-z\-]*\b(?!\s+(?:blocks?|cubes?|bricks?|of)\b)")
 """A count of a thing of the speaker's own world in a voice's label ("Two pots: ...", "Blocking for the two leads: ...",
 "Eight seat drill: ..."): set apart before the label is weighed; a count of cubes, a structure or a place, "times" and
-"more" are none."""
+"more" are none, nor one of :data:`QUANTITY_NOUN_RE`."""
+
+QUANTITY_NOUN_RE = re.compile(
+    r"(?:cop(?:y|ies)|duplicates?|replicas?|clones?|pairs?|sets?|groups?|pieces?|parts?|levels?|layers?|stor(?:e?ys?|ies)|floors?"
+    r"|tiers?|courses?|colou?rs?|shades?|letters?|digits?|numbers?|units?|items?|objects?|things?|mats?|pads?|tiles?|squares?"
+    r"|spots?|places?|positions?|slots?|heights?|rounds?|steps?|moves?|tries|attempts?|versions?|instances?|repeats?"
+    r"|repetitions?|turns?|goes|bricks?|boxes|blocks?|cubes?|pillars?|heaps?|piles?|stacks?|towers?|rows?|lines?|columns?"
+    r"|walls?|pyramids?|circles?|rings?|grids?|ones?|each|reds?|blues?|greens?|yellows?|whites?|blacks?|pinks?|purples?"
+    r"|oranges?|grays?|greys?|browns?|cyans?|dice|die|bits?|chunks?|elements?|members?|pieces?)")
+"""Nouns a count before them may hand on to the task (copies, levels, pairs, colours, the cubes under other names): a
+voice label's count of one of them stays in the label, to be read or refused (a hostile helper's probes, forty-fifth
+session: "Three levels: red on blue." had been read as a tower of two)."""
 
 WORLD_COUNT_RE = re.compile(
     rf"\b(?:\d+|{COUNT_WORD_RE}|a\s+few|another)\s+(?:more\s+)?(?!(?:{_GOAL_THINGS}|more|times?|of|other|others)\b)"
@@ -1247,6 +1258,12 @@ DEMONSTRATIVE_STRUCTURE_RE = re.compile(r"(?i)\b(?P<p>on|onto|upon|to|into|besid
                                         r"(?P<n>tower|stack|pile|structure|pyramid|wall|row|line|column)\b(?!\s+of\b)")
 """A structure named by a demonstrative after a preposition ("put a cyan cube on top of that tower"): the definite one,
 written "the tower" (it had missed :data:`DEFINITE_STRUCTURE_RE`'s check and made a tower of two made-up cubes, silently)."""
+
+DEMONSTRATIVE_CUBE_RE = re.compile(r"\b(?:on|onto|upon|atop|top\s+of|next\s+to|beside|behind|in\s+front\s+of|left\s+of|right\s+of|under"
+                                   r"|underneath|below|beneath|above|over|near|by|of|to|from|off"
+                                   r")\s+(?P<w>(?:this|that)\s+(?:cube|block|one))\b(?!\s*(?:'s|,?\s+(?:which|that|the)\b))")
+"""A cube named by a demonstrative alone ("put green on top of that cube"): the scene's cube, or one said before without
+saying which (a hostile helper's probe: a red cube had been made up for it, silently); refused as a reference."""
 
 DEFINITE_STRUCTURE_RE = re.compile(
     r"\b(?:on|onto|upon|to|into|next\s+to|beside|behind|in\s+front\s+of|near|left\s+of|right\s+of|top\s+of|from|off|of"
@@ -5437,10 +5454,11 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "Row of three: yellow in the middle, red and blue on either side of it": after a middle said, the two cubes beside it are
     # the row's ends ("either" had been an unknown word)
     (re.compile(rf"\b(?P<a>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+and\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?)\s+"
-                rf"(?:(?:go|are|sit|stand)\s+)?on\s+(?:either|each|both)\s+sides?(?:\s+of\s+(?:it|the\s+(?:{COLOR_RE})(?:\s+(?:cube|block|one))?))?"
+                rf"(?:(?:go|are|sit|stand)\s+)?on\s+(?:either|each|both)\s+sides?(?:\s+of\s+(?:it|the\s+(?P<x>{COLOR_RE})(?:\s+(?:cube|block|one))?))?"
                 r"(?=\s*(?:[.;!]|$))"),
-     lambda m: f"{m.group('a')} at the ends" if re.search(r"\bin\s+the\s+(?:middle|center|centre)\b", re.split(r"[.;!?]", m.string[:m.start()])[-1])
-     else m.group(0)),
+     lambda m: f"{m.group('a')} at the ends" if (middle := re.search(
+         rf"\b(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:(?:is|goes|sits|stands)\s+)?in\s+the\s+(?:middle|center|centre)\b(?!\s+of\s+the\s+table)",
+         re.split(r"[.;!?]", m.string[:m.start()])[-1])) and m.group("x") in (None, middle.group("c")) else m.group(0)),
     # "Put red and blue on either side of the yellow cube": the yellow cube between them ("either" had been an unknown word)
     (re.compile(rf"\b(?P<v>put|place|set)\s+(?:the\s+)?(?P<a>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+and\s+(?:the\s+)?(?P<b>{COLOR_RE})"
                 rf"(?:\s+(?:cubes?|blocks?|ones?))?\s+on\s+(?:either|each|both)\s+sides?\s+of\s+the\s+(?P<x>{COLOR_RE})(?:\s+(?:cube|block|one))?"
@@ -5448,10 +5466,20 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      lambda m: f"{m.group('v')} the {m.group('x')} cube between the {m.group('a')} cube and the {m.group('b')} cube"),
     # "green is on the far left, blue comes next, then black": the next in the order said ("comes" had been an unknown word)
     (re.compile(rf",\s*(?:the\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:comes|is|goes|sits|stands)\s+next\b(?!\s+to\b)"),
-     lambda m: f", then {m.group('c')}"),
+     lambda m: f", then {m.group('c')}" if re.search(r"\b(?:far\s+(?:left|right)|leftmost|rightmost|first|at\s+the\s+(?:left|right|bottom|top)"
+                                                    r"|on\s+the\s+(?:left|right|bottom)|(?:left|right)\s+end)\b[^.;!?]*$",
+                                                    m.string[:m.start()]) else m.group(0)),  # (only after an end said: an order)
     # "with the two white cubes at the ends": one of them at each end of the row (the count had been read against one cube)
     (re.compile(rf"\b(?:the\s+)?(?:two|2|both)\s+(?P<c>{COLOR_RE})\s+(?P<n>cube|block)s\s+(?:go\s+|are\s+|sit\s+)?(?:at|on)\s+(?:the\s+)?"
                 r"(?:two\s+|both\s+)?ends\b(?!\s+of\s+(?:the|a)\s+(?:table|workspace))"), lambda m: f"a {m.group('c')} {m.group('n')} at each end"),
+    # "green in the middle, white at the ends": a white cube at each end (one white cube had been read, a red one made up)
+    (re.compile(rf"\b(?P<mid>in\s+the\s+middle)(?P<sep>\s*,\s*(?:with\s+|and\s+)?|\s+and\s+)(?P<c>{COLOR_RE})(?:\s+(?:cubes|blocks|ones))?\s+"
+                r"(?:go\s+|are\s+|sit\s+)?(?:at|on)\s+(?:the|both)\s+(?:two\s+)?ends\b(?!\s+of\b)"),
+     lambda m: f"{m.group('mid')} and a {m.group('c')} cube at each end"),
+    # "green in the middle, with a white cube at each end": one clause with the middle (after the comma a white cube had been
+    # read once and a red one made up, silently)
+    (re.compile(r"\b(in\s+the\s+(?:middle|center|centre))\s*,\s*(?:with\s+|and\s+)?(?=(?:a|an|one)\s+[a-z]+\s+(?:cube|block)\s+at\s+each\s+end\b)"),
+     r"\1 and "),
     # "Put the green cube in the middle of a row, with a white cube at each end": the row made, its middle said (the middle
     # had been read as a place on the table)
     (re.compile(rf"(?:^|(?<=[.;:!]\s))(?:put|place|set)\s+the\s+(?P<c>{COLOR_RE})\s+(?P<n>cube|block)\s+in\s+the\s+(?:middle|center|centre)\s+of\s+"

@@ -420,8 +420,11 @@ def _voice_chunk(chunk: str, label: bool = False, rest: str = "") -> bool:
             word = m.group(0).split()[0]
             return word if "NOUN" in lexicon.parts_of_speech(word) and not lexicon.VOICE_CHUNK_HAZARD_RE.search(word) \
                 and word not in lexicon.COUNTING_WORDS else m.group(0)
-        low = lexicon.VOICE_LABEL_WORLD_COUNT_RE.sub(lambda m: m.group(0).split()[-1],
-                                                     lexicon.VOICE_NAME_NUMBER_RE.sub(name, lexicon.VOICE_LABEL_TASK_ONE_RE.sub("task", low)))
+        def world(m: re.Match) -> str:  # "two pots": the voice's own things; "two copies", "three levels": kept
+            noun = m.group(0).split()[-1]
+            own = not lexicon.QUANTITY_NOUN_RE.fullmatch(noun) and noun not in VOCAB and noun.removesuffix("s") not in VOCAB
+            return noun if own else m.group(0)
+        low = lexicon.VOICE_LABEL_WORLD_COUNT_RE.sub(world, lexicon.VOICE_NAME_NUMBER_RE.sub(name, lexicon.VOICE_LABEL_TASK_ONE_RE.sub("task", low)))
     masked = low != said  # (a label so weighed may be one word, or fillers and the task: "Two pots", "Alright, last one")
     words = re.findall(r"[a-z][a-z'\-]*", low)
     if (len(words) < 2 and not masked) or re.search(r"[^\w\s'\-.,#\u2022]", low):
@@ -609,6 +612,13 @@ def _refuse_unresolved_pronoun(text: str, original: str) -> None:
             raise Inexpressible("reference", [m.group(0)], f"refers to a {m.group('noun')} the instruction has not "
                                 "described (one the speaker sees, or from an earlier turn): describe it (e.g. \"build a "
                                 "tower of the red and green blocks, then put the blue block on top of it\")", original)
+    demonstrative = lexicon.DEMONSTRATIVE_CUBE_RE.search(text)
+    if demonstrative and re.search(rf"\b(?:a|an|one)\s+(?:{COLOR_RE})\s+(?:cube|block|one)\s+on\s+top\b[^.;!?]*$", text[:demonstrative.start()]):
+        demonstrative = None  # "add a pink one on top, and a brown one on top of that one": the cube just put on top
+    if demonstrative:  # "put green on top of that cube": a cube nobody named by colour or label (a red one had been made up)
+        raise Inexpressible("reference", [demonstrative.group("w")], "refers to a cube the instruction names by neither colour "
+                            "nor label (one the speaker sees, or one said before without saying which): name it (e.g. \"put "
+                            "the green block on top of the blue block\")", original)
     for m in lexicon.PLACE_PICKED_RE.finditer(text):
         before = re.sub(r"\b(?:stack|pile|line|row)\s*$", "", text[:m.start()])  # "stack the top block": a verb
         # "stack the cube closest the robot on ...": nearest to something named after it is where a cube stands now, in

@@ -582,6 +582,10 @@ def _adds_a_cube(add: re.Match, t: str) -> bool:
         return False
     if re.search(r"\bpatch", add.group("what") + t[add.end():]):
         return False  # a patch: not a cube of the structure
+    if re.search(r"\b(?:on(?:to)?\s+the\s+(?:table|floor|ground)\s*(?:[.;!,]|$)|far\b|away\b|apart\b|corner|(?:side|edge|middle|cent(?:er|re)|half)\s+of\s+"
+                 r"the\s+(?:table|workspace)|at\s+the\s+(?:front|back|rear)\b|on\s+its\s+own|by\s+itself|separate\w*)", t[add.start("what"):]):
+        return False  # "put a white cube on the table", "... far from the tower": a place of its own, not the structure's top
+        # (it had gone on top of the tower, silently)
     if re.match(rf"\s*(?:it|them|that|this|the\s+(?:(?:{COLOR_RE})\s+)?(?:block|cube|one|tower|stack))\s+(?:on(?:to)?|on\s+top\s+of|under|"
                 r"underneath|below|beneath|next\s+to|beside|behind|in\s+front\s+of)\s", add.group("what")):
         return False  # "put it on a yellow one": the cube named is moved onto the new one, which is no cube added on top
@@ -1211,6 +1215,10 @@ def _interpret_material(edit: str) -> EditPlan:
         plan = replace(plan, ops=[o for o in plan.ops if o.op != "reverse"], checks=(*plan.checks, ("reversed", word.params["word"])))
     if kept:  # "same letters but reversed": the task's cubes are letters, checked
         plan = replace(plan, checks=(*plan.checks, ("material", _MATERIAL_WORDS[kept.group("m").lower()])))
+    nth = re.search(rf"(?i)\ban?\s+(?P<k>second|third|fourth|fifth|sixth)\s+(?P<c>{COLOR_RE})\b", edit or "")
+    if nth:  # "throw a third purple into the heap": the task has two purple cubes (checked; of one, two had been made)
+        had = {"second": 1, "third": 2, "fourth": 3, "fifth": 4, "sixth": 5}[nth.group("k").lower()]
+        plan = replace(plan, checks=(*plan.checks, ("colour count", (canon_color(nth.group("c").lower()), had))))
     of_order = re.search(r"(?i)\border\s+(?:of|as)\s+the\s+(row|line|tower|stack)\b|\bthe\s+(row|line|tower|stack)'s\s+order\b", edit or "")
     if of_order and not plan.standalone and not plan.fresh:  # "stack them in reverse order of the row": the task is that row
         kind = _structure_named(of_order.group(1) or of_order.group(2))  # (of a tower, the tower had been reversed)
@@ -1297,6 +1305,10 @@ def check_said(plan: EditPlan, schema: TaskSchema) -> None:
                 raise SteerError(f"the edit reverses the word so it reads '{value}', but the version it builds on reads "
                                  f"{' and '.join(repr(w) for w in words) or 'no word'}; say the new word alone (e.g. \"make "
                                  f"it spell {value}\"), or use --model")
+        if kind == "colour count" and sum(a.color == value[0] for a in cubes) != value[1]:
+            nth = {1: "second", 2: "third", 3: "fourth", 4: "fifth", 5: "sixth"}[value[1]]
+            raise SteerError(f"the edit adds a {nth} {value[0]} cube, but the version it builds on has "
+                             f"{sum(a.color == value[0] for a in cubes)}; say how many to add (e.g. \"add another {value[0]} cube\")")
         if kind == "material" and value != material:
             raise SteerError(f"the edit names the task's {value}, but the version it builds on has {material}; name the cubes "
                              "the task has")
@@ -2106,6 +2118,10 @@ def apply_ops(spec: TaskSpec, ops: list[Op], keep_layers: bool = False, anchors:
             if spec.ordering:
                 spec = replace(spec, descending=not spec.descending)
         elif o.op == "add":
+            repeated = sorted({it["label"] for it in p.get("items") or [] if it.get("label")} & {i.label for i in spec.items if i.label})
+            if repeated:  # "put cube 3 on top" of a tower 1, 2, 3: a second cube labelled 3 (it had been added, silently)
+                raise SteerError(f"the task already has a cube labelled {', '.join(repeated)}, and the edit adds another; to move "
+                                 f"it, say so (e.g. \"move the {repeated[0]} to the top\"), or name a new label")
             if not spec.kind.sized_by_count:
                 raise SteerError(f"cubes cannot be added one by one to a {spec.structure}; change its size instead "
                                  "(e.g. \"make the base 4\")")

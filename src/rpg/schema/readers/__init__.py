@@ -18,6 +18,7 @@ import itertools
 import json
 import math
 import re
+from collections import Counter
 from dataclasses import replace
 
 from pydantic import ValidationError
@@ -324,6 +325,26 @@ def any_order_with_ends(f: Features, schema: TaskSchema) -> TaskSchema | None:
     return _with_parts(schema, goal, parts, [anchored if q is stack else q for q in parts])
 
 
+_PRONOUN_CUBES_RE = re.compile(r"\b(?:of|stack|line\s+up|arrange|put|place|pile|group|gather|sort|use|with)\s+(?:all\s+(?:of\s+)?|both\s+(?:of\s+)?)?"
+                               r"(?P<w>them|those|these)\b")
+
+
+def pronoun_cubes_made_up(f: Features, schema: TaskSchema) -> ParseError | None:
+    """A reading whose cubes of some colour nobody said stand for "them" ("Make a row of them.", "Initially red is on blue.
+    Make a row of them."): the pronoun's cubes made up (a row of red, blue, green and yellow, silently), refused; None where
+    the text counts or names cubes without a colour ("three cubes ... stack them") or every colour of the task is said."""
+    m = _PRONOUN_CUBES_RE.search(f.text)
+    if m is None or re.search(rf"\b(?:\d+|{lexicon.COUNT_WORD_RE}|a|an|another|one|some|the|all)\s+(?:more\s+)?(?:cubes?|blocks?)\b", f.text):
+        return None
+    said = {c for _, c in color_mentions(f.text)}
+    made_up = sorted({a.color for a in schema.assets if a.kind == "colored_cube"} - said)
+    if not made_up:
+        return None
+    return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but '{m.group('w')}' names no cubes of the task "
+                      f"(its {', '.join(made_up)} cubes are made up); name them (e.g. \"make a row of the red and blue blocks\"), "
+                      "or use --model")
+
+
 def symmetric_rows(f: Features, schema: TaskSchema) -> TaskSchema:
     """A row read in a direction whose cubes read the same both ways ("a row with the green cube in the middle and a white
     cube at each end") where the text names no side or direction: the order from either end along no said axis
@@ -363,7 +384,22 @@ def line_with_ends(f: Features, schema: TaskSchema) -> TaskSchema | None:
                     if not lexicon.FREE_ORDER_PART_RE.search(part))
     if lexicon.ORDER_BEYOND_ENDS_RE.search(rest) or re.search(r"\b(?:left|right)\b", rest):
         return None  # "red at the left end, then blue": more of the order said; another side said elsewhere
+    if re.search(r"\b(?:if\s+(?:possible|you\s+can)|ideally|preferably|optionally|maybe|perhaps)\b", f.original.lower()):
+        return None  # "with red at the left end if possible": a wish, not read as a constraint
     colours = {a.name: a.color for a in schema.assets if a.kind == "colored_cube"}
+    if any(re.search(rf"(?:\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s*,?\s+and\s+(?:the\s+)?|\band\s+the\s+)$", text[:m.start()])
+           for m in said):
+        return None  # "red and green at the left end": two cubes for one end
+    listed = re.search(rf"\b(?:row|line)\s+(?:out\s+)?of\s+(?:the\s+)?(?P<l>(?:{COLOR_RE})(?:\s*,\s*(?:the\s+)?(?:{COLOR_RE}))*\s*,?\s*(?:and|&)\s+"
+                       rf"(?:the\s+)?(?:{COLOR_RE}))\b", text)
+    named = Counter(canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", listed.group("l"))) if listed else None
+    said_colours: Counter = Counter()
+    for m in re.finditer(rf"\b(?:(?P<n>\d+|{lexicon.COUNT_WORD_RE})\s+)?(?P<c>{COLOR_RE})\b", text):
+        said_colours[canon_color(m.group("c"))] += lexicon.count_word(m.group("n")) if m.group("n") else 1
+    if any(Counter(colours[n] for n in line.objects)[c] > said_colours[c] for c in {colours.get(n) for n in line.objects}) or (
+            named is not None and Counter(colours[n] for n in line.objects) != named):
+        return None  # cubes of a colour nobody said ("a row of three cubes with yellow at the left end": three yellow), or
+        # a cube beyond the row's list ("a row of red, green and blue. The gray one must be at the right end")
     ends: dict[str, str] = {}
     for m in said:
         side = (m.group("side") or m.group("side2") or m.group("most") or m.group("most2")).lower()
@@ -695,7 +731,7 @@ def _read(instruction: str) -> TaskSchema:
                                                     "Rephrase (e.g. \"two red blocks\"), or use --model")
                 continue
             schema.repairs = b.repairs
-            gap = unaccounted(f, schema) or disjoint_regions(f, schema)
+            gap = unaccounted(f, schema) or disjoint_regions(f, schema) or pronoun_cubes_made_up(f, schema)
             if gap is not None and (ended := line_with_ends(f, schema)) is not None and unaccounted(f, ended) is None:
                 schema, gap = ended, None  # "a row of red, green and blue with red at the left end": that end, the rest free
             if gap is None:
