@@ -870,7 +870,7 @@ def test_a_question_about_a_cube_is_refused_as_a_question():
     ("Make a row of alternating colours: red, white, red, white from left to right.",
      ["line[left_to_right](red,white,red,white)"]),  # six cubes had been made of the four listed
     ("Put a red cube at each end of a row of three, with a blue cube in between.",
-     ["line[sequence](red,blue,red)"]),  # the ends had been dropped and a green cube made up
+     ["line[left_to_right](red,blue,red)"]),  # the ends had been dropped and a green cube made up
     ("Goal: letters B, E, D stacked to read BED from top to bottom.",
      ["reads(B,E,D;direction=top_to_bottom,face=front,text=BED)", "stack(D,E,B)"]),  # a line had been built
     ("From a start where blue sits on yellow, move the blue cube onto the red patch.",
@@ -2954,7 +2954,7 @@ def test_piles_match_in_any_listed_order():
     ("Row of four cubes: the leftmost is red, the rightmost is blue, and the two in between are yellow.",
      ["line[left_to_right](red,yellow,yellow,blue)"]),
     ("a row of five: a red cube at each end and three white cubes between them",
-     ["line[sequence](red,white,white,white,red)"]),
+     ["line[left_to_right](red,white,white,white,red)"]),
     ("stack the blue cube onto the red cube, not the other way round", ["stack(red,blue)"]),
     ("the blue patch should have the red cube on it", ["on_patch(red,patch:blue)"]),
 ])
@@ -3224,10 +3224,10 @@ def test_a_symmetric_relation_matches_in_either_order(expected, actual, ok):
     ("Episode goal (from the dataset card): three pink cubes placed on the orange patch.", ["on_patch(pink,pink,pink,patch:orange)"]),
     ("Task T3 (Year 2 milestone): three-block tower, order blue-yellow-red from base to top.", ["stack(blue,yellow,red)"]),
     ("Acceptance criteria: the blue cube ends next to the purple cube. Ship it.", ["next_to(blue,purple)"]),
-    ("A row of three cubes, red in the middle, green on both ends.", ["line[sequence](green,red,green)"]),
+    ("A row of three cubes, red in the middle, green on both ends.", ["line[left_to_right](green,red,green)"]),
     # these two had compiled silently wrong: a made-up blue cube in a row of any order
-    ("A row of three cubes with green on both ends and red in the middle.", ["line[sequence](green,red,green)"]),
-    ("A row of three: green at each end and red in the middle.", ["line[sequence](green,red,green)"]),
+    ("A row of three cubes with green on both ends and red in the middle.", ["line[left_to_right](green,red,green)"]),
+    ("A row of three: green at each end and red in the middle.", ["line[left_to_right](green,red,green)"]),
     # a count said of one colour is that colour's, not the tower's
     ("Stack both white cubes and the gray cube into one tower with gray on top.", ["stack(white,white,gray)"]),
     ("Stack 3 yellow cubes and put the 4 cube on top.", ["stack(yellow,yellow,yellow,4)"]),
@@ -4415,7 +4415,7 @@ def test_three_piles_of_one_colour_take_any_split():
     ("make a line of blocks: purple on the far left, cyan on the far right, and two gray blocks in between",
      ["line[left_to_right](purple,gray,gray,cyan)"]),
     ("The goal is a row of five cubes with the black cube exactly in the middle and the others white.",
-     ["line[sequence](white,white,black,white,white)"]),
+     ["line[left_to_right](white,white,black,white,white)"]),
     ("the leftmost cube in the row should be yellow, then green, then pink on the far right",
      ["line[left_to_right](yellow,green,pink)"]),
     # the third cube said beside the end cube said before it (no task had been found)
@@ -4654,8 +4654,8 @@ def test_a_grid_whose_rows_are_given_colours_is_refused_not_weakened():
     ("i want a line of blocks with black on the far left, pink on the far right, and gray between them",
      ["line[left_to_right](black,gray,pink)"]),
     ("the black cube goes in the middle of a row of three, with a white block on each side of it",
-     ["line[sequence](white,black,white)"]),
-    ("a row of three with the black cube in the middle and a white block on each side", ["line[sequence](white,black,white)"]),
+     ["line[left_to_right](white,black,white)"]),
+    ("a row of three with the black cube in the middle and a white block on each side", ["line[left_to_right](white,black,white)"]),
     ("Make a row of cubes: first the orange, after the purple, last the pink, from the left.",
      ["line[left_to_right](orange,purple,pink)"]),
     ("the leftmost block in the row should be red, then blue, then the rightmost is green", ["line[left_to_right](red,blue,green)"]),
@@ -6101,8 +6101,8 @@ def test_another_structure_and_named_extra_cubes_are_read(text, expected):
     ("a row of three white cubes running away from the robot", ["line[front_to_back](white,white,white)"]),
     ("stack three red cubes in a column", ["stack(red,red,red)"]),
     ("Make a row of three with the white cube in the middle and one black cube on each side.",
-     ["line[sequence](black,white,black)"]),  # a red cube had been made up
-    ("Make a row of three cubes, one blue on each side of the red one.", ["line[sequence](blue,red,blue)"]),  # (green)
+     ["line[left_to_right](black,white,black)"]),  # a red cube had been made up
+    ("Make a row of three cubes, one blue on each side of the red one.", ["line[left_to_right](blue,red,blue)"]),  # (green)
     ("Build a row of three red cubes toward the robot.", ["line(red,red,red)@front"]),  # "toward the robot" had been dropped
     ("a pyramid with 3 blue cubes at the bottom, then 2 green cubes, then 1 red cube on top", ["pyramid(blue,blue,blue|green,green|red)"]),
 ])
@@ -6145,7 +6145,7 @@ def test_a_pyramid_of_a_base_under_one_cube_with_its_cubes_unsaid_is_refused(tex
     # a helper's abstract classes of stranger39's refusals, with its own examples
     ("In a single line, put the gray cube at the far left, the pink cube in the center and the green cube at the far right.",
      ["line[left_to_right](gray,pink,green)"]),  # the ends and the middle are the ordered row's, not regions
-    ("a line of five: an orange cube in the middle, two brown cubes on each side", ["line[sequence](brown,brown,orange,brown,brown)"]),
+    ("a line of five: an orange cube in the middle, two brown cubes on each side", ["line[left_to_right](brown,brown,orange,brown,brown)"]),
     # a start said as what is there now, then a cube put on its top cube
     ("The green cube sits on the blue cube. Put the white cube on top of the green cube.",
      ["stack(blue,green,white)", "start:stack(blue,green)"]),
@@ -6218,7 +6218,7 @@ def test_columns_kept_upright_and_starts_read_only_when_the_topping_ends_the_tex
      ["stack(cyan,brown,gray)"]),
     ("stack the blocks so that white is on top, purple is at the bottom and green is between them", ["stack(purple,green,white)"]),
     ("Make a row of five cubes with a black cube in the middle and two white cubes on each side of it.",
-     ["line[sequence](white,white,black,white,white)"]),
+     ["line[left_to_right](white,white,black,white,white)"]),
     ("Swap places: the yellow cube goes on the cyan patch and the cyan cube goes on the yellow patch.",
      ["on_patch(cyan,patch:yellow)", "on_patch(yellow,patch:cyan)"]),
 ])
@@ -8245,6 +8245,7 @@ def test_forty_fourth_session_comparisons_with_cubes_refused(text):
     ("Initially the orange cube is stacked on the purple cube. Put a cyan cube on top of that tower.",
      ["stack(purple,orange,cyan)", "start:stack(purple,orange)"]),
     ("Stack red on blue and move that stack to the left.", ["stack(blue,red)@left"]),
+    ("black on white and put that stack in the back right", ["stack(white,black)@back_right"]),  # (stranger25: a chain said)
 ])
 def test_forty_fifth_session_a_demonstrative_structure(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
@@ -8327,7 +8328,7 @@ def test_forty_fifth_session_a_row_free_but_an_end_matches_only_all_its_completi
     ("Build a tower of blue, green and black with the black cube on top; the rest in whatever order.", ["stack(blue,green,black)"]),
     ("Make a row out of the pink cube and the two cyan cubes.", ["line(cyan,cyan,pink)"]),
     ("Make a row of the two cyan cubes and the pink cube.", ["line(cyan,cyan,pink)"]),
-    ("Put the green cube in the middle of a row, with the two white cubes at the ends.", ["line[sequence](white,green,white)"]),
+    ("Put the green cube in the middle of a row, with the two white cubes at the ends.", ["line[left_to_right](white,green,white)"]),
     ("Place the orange, black and pink cubes on the cyan, purple and blue patches respectively.",
      ["on_patch(black,patch:purple)", "on_patch(orange,patch:cyan)", "on_patch(pink,patch:blue)"]),
     ("From left to right, place red, white, red.", ["line[left_to_right](red,white,red)"]),
@@ -8414,8 +8415,8 @@ def test_forty_fifth_session_hostile_probes_refused(text):
 
 
 @pytest.mark.parametrize("text, expected", [
-    ("Make a row of three cubes: green in the middle, with the two white cubes at the ends", ["line[sequence](white,green,white)"]),
-    ("Make a row of three cubes: green in the middle, white at the ends", ["line[sequence](white,green,white)"]),
+    ("Make a row of three cubes: green in the middle, with the two white cubes at the ends", ["line[left_to_right](white,green,white)"]),
+    ("Make a row of three cubes: green in the middle, white at the ends", ["line[left_to_right](white,green,white)"]),
     ("Row of three: yellow in the middle, red and blue on either side of the yellow cube.",
      ["between(yellow;blue,red)", "line(blue,red,yellow)"]),
     ("Put a pink cube on top of the red cube, and a brown one on top of that one.", ["stack(red,pink,brown)"]),

@@ -687,11 +687,7 @@ def account(text: str, schema: TaskSchema, colors: str, canon) -> list[dict]:
                 raise UnaccountedMention(f"it names {m.count} {m.predicates[0]}s but the task read has {have}")
             record.append({"mention": m.words, "kind": "structures", "consumed_by": f"{have} {m.predicates[0]}s"})
         elif m.kind == "direction":
-            said_by = {a.name: a.color or a.label for a in schema.assets}
-            along = sorted(_orders(goal) & AXIS_ORDERS[m.region]) or [  # a row that reads the same from either end, its
-                # direction written by a rewrite ("a white cube on each side": readers.symmetric_rows freed it of the axis)
-                "in_line sequence" for p in goal if isinstance(p, P.InLine) and p.order == "sequence"
-                and [said_by.get(n) for n in p.objects] == [said_by.get(n) for n in reversed(p.objects)]][:1]
+            along = sorted(_orders(goal) & AXIS_ORDERS[m.region])
             if not along:
                 raise UnaccountedMention(f"'{m.words}' says which way the cubes run and the task read orders none "
                                          "that way")

@@ -1279,9 +1279,10 @@ STRUCTURE_INTRO_RE = re.compile(
     r"|columns?|circles?|rings?|grids?)\s+(?:of|with|from|using|made)\b|\b(?:a|an|one|\d+)\s+(?:[a-z0-9\-]+\s+){0,3}"
     r"(?:towers?|stacks?|piles?|structures?|pyramids?|walls?|rows?|lines?|columns?|circles?|rings?|grids?)\b"
     r"|\b(?:stack|build|make|pile|form|create|construct|arrange|line\s+up)\b"
-    r"|\b(?:on|onto|atop|on\s+top\s+of)\s+(?:the|a|an)\s+(?:[a-z]+\s+)?(?:block|cube)\b")
+    r"|\b(?:on|onto|atop|on\s+top\s+of)\s+(?:the|a|an)\s+(?:[a-z]+\s+)?(?:block|cube)\b"
+    rf"|\b(?:{COLOR_RE})\s+(?:on|onto|atop|on\s+top\s+of)\s+(?:the\s+)?(?:{COLOR_RE})\b")
 """What describes a structure before "the stack" refers to it (:data:`DEFINITE_STRUCTURE_RE`):
-one introduced ("a tower of three blocks", "build ...") or a cube put on another."""
+one introduced ("a tower of three blocks", "build ...") or a cube put on another ("black on white")."""
 
 PLACE_PICKED_RE = re.compile(
     r"\bthe\s+(?:top|bottom|topmost|uppermost|highest|lowest|bottommost|middle|center|centre|left|right|front|back"

@@ -345,21 +345,6 @@ def pronoun_cubes_made_up(f: Features, schema: TaskSchema) -> ParseError | None:
                       "or use --model")
 
 
-def symmetric_rows(f: Features, schema: TaskSchema) -> TaskSchema:
-    """A row read in a direction whose cubes read the same both ways ("a row with the green cube in the middle and a white
-    cube at each end") where the text names no side or direction: the order from either end along no said axis
-    (``order="sequence"``, ``axis=None``).  Left to right had demanded a left-right row that no word asked for."""
-    if re.search(r"\b(?:left|right|front|back|rear|near|far|away|towards?|horizontal\w*|vertical\w*|across|along|depth)\b", f.original.lower()):
-        return schema
-    colours = {a.name: a.color if a.kind == "colored_cube" else a.label for a in schema.assets}
-    goal = schema.goal_predicate()
-    parts = goal.children() if isinstance(goal, And) else [goal]
-    out = [replace(p, order="sequence", axis=None)
-           if type(p) is InLine and p.order in ("left_to_right", "right_to_left") and len(p.objects) > 2
-           and [colours.get(n) for n in p.objects] == [colours.get(n) for n in reversed(p.objects)] else p for p in parts]
-    return _with_parts(schema, goal, parts, out)
-
-
 def line_with_ends(f: Features, schema: TaskSchema) -> TaskSchema | None:
     """A reading of a text that gives a row of three or more cubes, read in no order, a cube at its left or right end and
     says nothing more of its order ("a row of red, green and blue with red at the left end", "Make a row of the orange,
@@ -741,8 +726,8 @@ def _read(instruction: str) -> TaskSchema:
                 # parameter a reader sets, such as a default count). A structure filled up with
                 # cubes nobody named makes this reading fail (the next reader may do better)
                 try:
-                    read = symmetric_rows(f, one_colour_for_unnamed(f, citations.enforce(
-                        free_listed_orders(f, free_unnamed_orders(f, schema)), refuse=False)))
+                    read = one_colour_for_unnamed(f, citations.enforce(free_listed_orders(f, free_unnamed_orders(f, schema)),
+                                                                       refuse=False))
                 except citations.UncitedConstraint as exc:
                     gap = ParseError(f"\"{f.original[:80]}\": {exc}; or use --model")
                 else:
