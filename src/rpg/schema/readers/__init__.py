@@ -19,7 +19,6 @@ import json
 import math
 import re
 from collections import Counter
-from dataclasses import replace
 
 from pydantic import ValidationError
 
