@@ -3776,6 +3776,19 @@ IT_ON_A_PATCH_RE = re.compile(rf"(?i)^\s*(?:(?:now|ok(?:ay)?|so|and|then|just)[\
                               rf"(?P<p>(?:on|onto|on\s+top\s+of)\s+(?:the|a)\s+(?:{COLOR_RE})\s+(?:goal\s+)?patch)\b")
 """An edit that puts "it" on a patch ("Stand it on the blue patch."): of a structure task, "it" is the structure."""
 
+LABEL_EXCHANGE_RE = re.compile(
+    r"^\s*(?:[^,:;.!?0-9]{1,40}[,:]\s*)?(?i:(?:(?:now|ok(?:ay)?|please|just|so|then)[\s,]+)*(?:swap|switch|replace|change|exchange|trade"
+    r"|substitute)\s+(?:the\s+)?(?:(?:letter|digit|number|cube|block)\s+)?)'?[A-Z0-9]'?(?i:(?:\s+(?:cube|block|one))?\s+(?:(?:out\s+)?(?:for"
+    r"|with|to|into)|and)\s+(?:an?\s+|the\s+)?(?:(?:letter|digit|number|cube|block)\s+)?)'?[A-Z0-9]'?(?i:(?:\s+(?:cube|block|one))?"
+    r"(?:\s+instead)?)\s*[.!]?\s*$")
+"""An edit that only replaces one label cube by another or exchanges two ("Wrong letter, swap the K out for an L.", "Swap E
+and R."): the whole edit, with at most a short label before it (:func:`rpg.steer.steering._labels_exchanged`)."""
+
+PRONOUN_CUBES_RE = re.compile(r"\b(?:of|stack|line\s+up|arrange|put|place|pile|group|gather|sort|use|with)\s+(?:all\s+(?:of\s+)?|both\s+(?:of\s+)?)?"
+                               r"(?P<w>them|those|these)\b")
+"""The pronoun "them" (or "those", "these") as the cubes of a structure or a placement ("make a row of them"): the cubes it
+stands for must be named (:func:`rpg.schema.readers.pronoun_cubes_made_up`)."""
+
 TOWER_TO_PATCH_RE = re.compile(rf"(?i)^\s*(?:(?:now|ok(?:ay)?|so|and|then|just|actually)[\s,]+)*(?:move|put|stand|set|place|shift|slide|transfer)\s+"
                                r"(?:the\s+(?:whole\s+|entire\s+)?(?:tower|stack)|it)\s+(?:over\s+)?(?P<p>(?:on|onto|to)\s+(?:the|a)\s+(?:new\s+)?"
                                rf"(?:{COLOR_RE})\s+(?:goal\s+)?patch)(?:\s+instead)?\s*[.!]?\s*$")

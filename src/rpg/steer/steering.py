@@ -47,6 +47,7 @@ from rpg.schema.lexicon import (
     EDIT_OF_THE_TASK_RE,
     EDIT_SWAP_BOTH_RE,
     IT_ON_A_PATCH_RE,
+    LABEL_EXCHANGE_RE,
     NEW_PATCH_RE,
     NO_GOAL_RE,
     NUMBER_WORDS,
@@ -641,15 +642,6 @@ def _swapped(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str, str] | N
     return schema, instruction, "modify"
 
 
-_LABEL_EXCHANGE_RE = re.compile(
-    r"^\s*(?:[^,:;.!?0-9]{1,40}[,:]\s*)?(?i:(?:(?:now|ok(?:ay)?|please|just|so|then)[\s,]+)*(?:swap|switch|replace|change|exchange|trade"
-    r"|substitute)\s+(?:the\s+)?(?:(?:letter|digit|number|cube|block)\s+)?)'?[A-Z0-9]'?(?i:(?:\s+(?:cube|block|one))?\s+(?:(?:out\s+)?(?:for"
-    r"|with|to|into)|and)\s+(?:an?\s+|the\s+)?(?:(?:letter|digit|number|cube|block)\s+)?)'?[A-Z0-9]'?(?i:(?:\s+(?:cube|block|one))?"
-    r"(?:\s+instead)?)\s*[.!]?\s*$")
-"""An edit that only replaces one label cube by another or exchanges two ("Wrong letter, swap the K out for an L.", "Swap E
-and R."): the whole edit, with at most a short label before it (:func:`_labels_exchanged`)."""
-
-
 def _labels_exchanged(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str, str] | None:
     """A task of label cubes related to each other with a label replaced ("Wrong letter, swap the K out for an L" of "cube K
     in front of cube J") or two labels exchanged ("Swap E and R" of "E between A and R"): its instruction said again with
@@ -658,7 +650,7 @@ def _labels_exchanged(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str,
     label named is not one cube of the task, or a new label is one it has already."""
     from rpg.schema.meaning import meaning
 
-    if not _LABEL_EXCHANGE_RE.match(plan.text):
+    if not LABEL_EXCHANGE_RE.match(plan.text):
         return None  # the exchange and nothing else ("swap the K for an L on the red patch": the patch had been dropped)
     labels = [a.label for a in ref.assets if a.kind != "goal_patch" and a.label]
     material = "letters" if labels and all(x.isalpha() for x in labels) else "digits" if labels and all(x.isdigit() for x in labels) else None

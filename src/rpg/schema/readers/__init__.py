@@ -324,15 +324,11 @@ def any_order_with_ends(f: Features, schema: TaskSchema) -> TaskSchema | None:
     return _with_parts(schema, goal, parts, [anchored if q is stack else q for q in parts])
 
 
-_PRONOUN_CUBES_RE = re.compile(r"\b(?:of|stack|line\s+up|arrange|put|place|pile|group|gather|sort|use|with)\s+(?:all\s+(?:of\s+)?|both\s+(?:of\s+)?)?"
-                               r"(?P<w>them|those|these)\b")
-
-
 def pronoun_cubes_made_up(f: Features, schema: TaskSchema) -> ParseError | None:
     """A reading whose cubes of some colour nobody said stand for "them" ("Make a row of them.", "Initially red is on blue.
     Make a row of them."): the pronoun's cubes made up (a row of red, blue, green and yellow, silently), refused; None where
     the text counts or names cubes without a colour ("three cubes ... stack them") or every colour of the task is said."""
-    m = _PRONOUN_CUBES_RE.search(f.text)
+    m = lexicon.PRONOUN_CUBES_RE.search(f.text)
     if m is None or re.search(rf"\b(?:\d+|{lexicon.COUNT_WORD_RE}|a|an|another|one|some|the|all)\s+(?:more\s+)?(?:cubes?|blocks?)\b", f.text):
         return None
     said = {c for _, c in color_mentions(f.text)}
