@@ -582,8 +582,8 @@ def _adds_a_cube(add: re.Match, t: str) -> bool:
         return False
     if re.search(r"\bpatch", add.group("what") + t[add.end():]):
         return False  # a patch: not a cube of the structure
-    if re.search(r"\b(?:on(?:to)?\s+the\s+(?:table|floor|ground)\s*(?:[.;!,]|$)|far\b|away\b|apart\b|corner|(?:side|edge|middle|cent(?:er|re)|half)\s+of\s+"
-                 r"the\s+(?:table|workspace)|at\s+the\s+(?:front|back|rear)\b|on\s+its\s+own|by\s+itself|separate\w*)", t[add.start("what"):]):
+    if re.search(r"\b(?:on(?:to)?\s+the\s+(?:table|floor|ground)\s*(?:[.;!,]|$)|far\s+(?:from|away)\b|away\s+from\b|apart\b|corner|(?:side|edge|middle|cent(?:er|re)|half)\s+of\s+"
+                 r"the\s+(?:table|workspace)|at\s+the\s+(?:front|back|rear)\b(?!\s+end)|on\s+its\s+own|by\s+itself|separate\w*)", t[add.start("what"):]):
         return False  # "put a white cube on the table", "... far from the tower": a place of its own, not the structure's top
         # (it had gone on top of the tower, silently)
     if re.match(rf"\s*(?:it|them|that|this|the\s+(?:(?:{COLOR_RE})\s+)?(?:block|cube|one|tower|stack))\s+(?:on(?:to)?|on\s+top\s+of|under|"
