@@ -797,7 +797,11 @@ def _relates_a_new_cube_to_the_task(edit: str, schema: TaskSchema, ref: TaskSche
     new = now - had
     if not new or had - now or any(a.kind == "goal_patch" for a in ref.assets):
         return False
-    atoms = [set(re.findall(r"[\w:]+", a.split("(", 1)[1])) for a in meaning(schema) if "(" in a]
+    said = meaning(schema)
+    if any(not re.match(r"(?:next_to|left_of|right_of|in_front_of|behind|far_from|between|on_patch|in_region|stack\([^(),]+,[^(),]+\))", a)
+           for a in said):
+        return False  # a structure of its own ("a 3x3x3 cube of assorted colours" of a 3x3 grid): a pivot, as before
+    atoms = [set(re.findall(r"[\w:]+", a.split("(", 1)[1])) for a in said if "(" in a]
     return bool(atoms) and all(a & new for a in atoms) and any(a & had for a in atoms)
 
 
