@@ -92,7 +92,7 @@ STRANGER_SETS = {
     "stranger55": ("stranger55.yaml", "STRANGER set 55 (stranger55.yaml, transfer measure of the forty-second session; development material from the forty-third)"),
     "stranger56": ("stranger56.yaml", "STRANGER set 56 (stranger56.yaml, transfer measure of the forty-third session; development material from the forty-fourth)"),
     "stranger57": ("stranger57.yaml", "STRANGER set 57 (stranger57.yaml, transfer measure of the forty-fourth session; development material from the forty-fifth)"),
-    "stranger58": ("stranger58.yaml", "STRANGER set 58 (stranger58.yaml, written at the start of the forty-fifth session: aggregates only)"),
+    "stranger58": ("stranger58.yaml", "STRANGER set 58 (stranger58.yaml, transfer measure of the forty-fifth session; development material from the forty-sixth)"),
 }
 SPLITS = HERE / "splits.yaml"
 

@@ -97,7 +97,7 @@ DEVELOPMENT = {
     "stranger26": ("steer_stranger26.yaml", "STRANGER steering set 26 (steer_stranger26.yaml, transfer measure of the forty-second session; development material from the forty-third)"),
     "stranger27": ("steer_stranger27.yaml", "STRANGER steering set 27 (steer_stranger27.yaml, transfer measure of the forty-third session; development material from the forty-fourth)"),
     "stranger28": ("steer_stranger28.yaml", "STRANGER steering set 28 (steer_stranger28.yaml, transfer measure of the forty-fourth session; development material from the forty-fifth)"),
-    "stranger29": ("steer_stranger29.yaml", "STRANGER steering set 29 (steer_stranger29.yaml, written at the start of the forty-fifth session: aggregates only)"),
+    "stranger29": ("steer_stranger29.yaml", "STRANGER steering set 29 (steer_stranger29.yaml, transfer measure of the forty-fifth session; development material from the forty-sixth)"),
 }
 UNSEEN = HERE / "steer_unseen.yaml"
 SPLITS = HERE / "splits.yaml"
