@@ -1788,8 +1788,11 @@ def test_two_towers_of_unnamed_cubes_said_in_one_sentence_are_two_unordered_towe
     # label cubes listed each with its article (a fourth letter had been invented, or the order dropped)
     ("line up the A, the B and the C from left to right", ["line[left_to_right](A,B,C)"]),
     ("line up the 1, the 2 and the 3 from left to right", ["line[left_to_right](1,2,3)"]),
-    # a line of labels with no direction said keeps the listed order from either end, no reading direction
-    ("put the A and the B in a line", ["line[sequence](A,B)"]),
+    # a line of labels with no direction or order said: which cubes, not where (the listed order had been kept from
+    # either end until the forty-sixth session: a goal stricter than its words, as no list of colours is)
+    ("put the A and the B in a line", ["line(A,B)"]),
+    ("Place the 7, 8 and 9 cubes side by side in a row along the back of the table.", ["line(7,8,9)@back"]),
+    ("Put the digits 1, 2 and 3 in a row in order.", ["line[sequence](1,2,3)"]),
 ])
 def test_label_cubes_listed_one_by_one(text, expected):
     assert meaning(parse(text)) == expected
@@ -3316,7 +3319,7 @@ def test_counted_cubes_of_any_colour_on_a_cube_are_a_tower_on_it():
     ("Put one cube on the red patch and another on the blue patch; which cubes does not matter.",
      ["on_patch(blue,patch:blue)", "on_patch(red,patch:red)"]),
     ("stack number four on number two, and number two on number seven.", ["stack(7,2,4)"]),  # two coloured cubes before
-    ("line up the digits one, two and three", ["line[sequence](1,2,3)"]),  # a line of four before
+    ("line up the digits one, two and three", ["line(1,2,3)"]),  # a line of four before
     ("Put the cyan cube left of the pink cube and the pink cube left of the white cube, all three in the front half of "
      "the table.", ["in_region(cyan,front)", "in_region(pink,front)", "in_region(white,front)", "left_of(cyan,pink)",
                     "left_of(pink,white)"]),  # the cyan cube had been left out of the region
@@ -8054,14 +8057,16 @@ def test_forty_third_session_label_readings(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
 
 
-@pytest.mark.parametrize("text", [
-    # layers of a pyramid of label cubes: no reader judges them (the layers had been dropped, any cube at the apex passed)
-    "Pyramid of three: the letter cubes B and A on the bottom, the letter C cube at the apex.",
-    "Build a pyramid of the digit cubes 1, 2 and 3 with 3 on top.",
+@pytest.mark.parametrize("text, expected", [
+    # layers of a pyramid of label cubes: refused in the forty-third session (no reader judged them, any cube at the apex
+    # passed), read and judged by an InLayers since the forty-sixth
+    ("Pyramid of three: the letter cubes B and A on the bottom, the letter C cube at the apex.", ["pyramid(A,B|C)"]),
+    ("Build a pyramid of the digit cubes 1, 2 and 3 with 3 on top.", ["pyramid(1,2|3)"]),
 ])
-def test_forty_third_session_refusals(text):
-    with pytest.raises(ParseError):
-        check_feasibility(parse(text))
+def test_forty_third_session_label_pyramid_layers(text, expected):
+    schema = check_feasibility(parse(text))
+    assert sorted(meaning(schema)) == sorted(expected)
+    assert any(type(p).__name__ == "InLayers" for p in schema.goal_predicate().walk())
 
 
 @pytest.mark.parametrize("text, expected", [
@@ -8424,3 +8429,78 @@ def test_forty_fifth_session_hostile_probes_refused(text):
 ])
 def test_forty_fifth_session_hostile_probes_read(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a pyramid of label cubes (stranger55-58: each had been refused, "label cubes in a pyramid's layers")
+    ("Arrange the 5, 6 and 7 cubes into a pyramid with 7 at the top.", ["pyramid(5,6|7)"]),
+    ("Build a pyramid with the digit cubes 2, 4 and 6 at the base and 8 at the top.", ["pyramid(2,4,6|8)"]),
+    ("Build a small pyramid from the letter cubes X, Y and Z, with Y on top.", ["pyramid(X,Z|Y)"]),
+    ("Make a little pyramid with letter cubes: A and B at the bottom, C on top.", ["pyramid(A,B|C)"]),
+    ("Build a pyramid from the letter cubes A, B and C.", ["pyramid(A,B,C)"]),
+    ("Build a pyramid of the digit cubes 1 to 6 with 1, 2 and 3 on the bottom and 6 on top.", ["pyramid(1,2,3|4,5|6)"]),
+])
+def test_forty_sixth_session_a_pyramid_of_label_cubes(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+def test_forty_sixth_session_a_label_pyramid_judges_the_layers_said():
+    schema = check_feasibility(parse("Arrange the 5, 6 and 7 cubes into a pyramid with 7 at the top."))
+    layers = [p for p in schema.goal_predicate().walk() if type(p).__name__ == "InLayers"]
+    assert len(layers) == 1
+    by_label = {a.name: a.label for a in schema.assets}
+    assert {by_label[n]: k for n, k in zip(layers[0].objects, layers[0].levels)} == {"5": 0, "6": 0, "7": 1}
+
+
+@pytest.mark.parametrize("text", [
+    "Build a pyramid of the letter cubes A, B and C with D on top.",  # four labels: no pyramid
+    "Build a pyramid of the digit cubes 1, 2 and 3 sorted ascending.",  # an order beyond the layers (had been dropped)
+    "Build a pyramid of the digit cubes 1, 2 and 3 with 3 on top of 1.",  # a relation beyond the layers (had been dropped)
+    "Make a pyramid of letter cubes A, B and C with A and B on top.",  # a layer given more than it holds
+    "A pyramid of the letter cubes A, B, C, D, E and F with F on top.",  # five labels whose layers are unsaid
+    "Build a pyramid of six cubes from the letter cubes A, B and C.",  # a count the labels do not make
+])
+def test_forty_sixth_session_a_label_pyramid_said_beyond_its_layers_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a pyramid's layers said by counts with "in the middle" (stranger24/27/28/29: read as the table's centre, refused)
+    ("make a pyramid three on the bottom two in the middle one on top any cubes", ["pyramid(red,red,red,red,red,red)"]),
+    ("Build a pyramid of six red cubes, three on the bottom layer, two in the middle, one on top.",
+     ["pyramid(red,red,red,red,red,red)"]),
+    # a base said "along the bottom" or "below ... and ... on top" (stranger51/53/56/58: refused or a base of three)
+    ("A four-cube pyramid: brown, black and gray along the bottom, red on top.", ["pyramid(black,brown,gray|red)"]),
+    ("a pyramid with the two purple cubes below and the pink cube on top.", ["pyramid(purple,purple|pink)"]),
+    # "the base is blue, blue, green": a layer, not a tower listed from its base (it had been refused)
+    ("Make a 3-2-1 pyramid: the base is blue, blue, green; the middle is yellow, yellow; the top is red.",
+     ["pyramid(blue,blue,green|yellow,yellow|red)"]),
+])
+def test_forty_sixth_session_pyramid_layers_said_in_other_words(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a voice's label whose structure noun is the task's own kind, or qualifies a thing of the voice's world
+    # (steer_stranger29: each base had been refused)
+    ("Tungsten tower: stack a gray cube on a black cube.", ["stack(black,gray)"]),
+    ("Tower captain speaking: stack the red cube on the yellow cube.", ["stack(yellow,red)"]),
+    ("Grid reference: the digit cubes 4, 0, 2 in a row, left to right.", ["line[left_to_right](4,0,2)"]),
+    # the label that names the task's structure stays the task's ("Pyramid task: ...")
+    ("Pyramid task: bottom layer purple, purple, brown; top layer blue.", ["pyramid(brown,purple,purple|blue)"]),
+    # a label with a count or a spec stays whole, to be read
+    ("pile-5 [region=back]: pile red cubes", ["pile(red,red,red,red,red)@back"]),
+])
+def test_forty_sixth_session_a_voice_label_with_a_structure_noun(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text", [
+    # a label's structure that is not the task's ("contour lines" over a wall) or that says more (a colour)
+    "Contour lines: build a wall with four green cubes on the bottom layer and four yellow cubes on top.",
+    "Red tower: stack the blue cube on the green cube.",
+])
+def test_forty_sixth_session_a_voice_label_that_may_say_the_task_stays(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

@@ -1500,6 +1500,9 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
                                                   f.original, re.IGNORECASE)}
     if f.has("letter", "letters", "number", "numbers", "digit", "digits"):
         named_labels |= set(explicit_labels(f))  # "the numbers 1 to 3 in a row, then ..."
+    if named_labels:  # a label said with its layer only where others are named as well ("A and B at the bottom, C on top")
+        named_labels |= {lab for pattern in lexicon.LABEL_LAYER_ROLE_RES for m in pattern.finditer(f.original)
+                         for lab in re.findall(lexicon.LABEL_TOKEN, m.group("l"))}  # "A and B at the bottom, C on top"
     if named_labels - set(labels):
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the cube labelled "
                           f"{sorted(named_labels - set(labels))[0]!r} has no place in that task. Rephrase, or use --model")

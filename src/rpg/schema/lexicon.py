@@ -1238,6 +1238,10 @@ THIS_ORDER_RE = re.compile(r"\b(?:this|that|the\s+following|the\s+given)\s+(?:or
 """"In this order", "in that order": an order the instruction must list (two or more colours or
 labels, before or after); with none it is one the speaker shows, which a task cannot know."""
 
+LISTED_ORDER_SAID_RE = re.compile(r"\b(?:in\s+order|in\s+sequence|one\s+after\s+(?:the\s+)?(?:other|another)|consecutive(?:ly)?|in\s+turn)\b")
+"""Words that keep a listed row's order with no direction said ("the digits 1, 2 and 3 in a row, in order"), as
+:data:`THIS_ORDER_RE` does."""
+
 OTHER_RE = re.compile(r"\bthe\s+other\s+(?:[a-z]+\s+)?(?:blocks?|cubes?|ones?|bricks?|boxes|box)\b")
 """"The other block": it picks a cube by contrast with one the instruction set apart before it
 ("put one red block on the patch and the other one next to it", :data:`OTHER_SET_RE`); without
@@ -1858,6 +1862,13 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\bin\s+back\b(?!\s+of\b)"), "at the back"),  # "a tower of 2 red blocks in back"
     # "at the back of the green cube": behind it (a cube's back, not the table's)
     (re.compile(rf"\b(?:at|to)\s+the\s+back\s+of\s+(?=(?:the\s+)?(?:(?:{COLOR_RE})\s+(?:block|cube|one|patch)|it\b|them\b))"), "behind "),
+    # "a pyramid with two cyan cubes along the base", "brown, black and gray along the bottom": a pyramid's or wall's
+    # bottom layer (not the table's edge: "along the bottom edge")
+    (re.compile(r"\b(pyramids?|walls?)\b([^.;]*?)\balong\s+the\s+(bottom|base)\b(?!\s+(?:edge|side|of)\b)"), r"\1\2on the \3"),
+    # "a pyramid with the two purple cubes below and the pink cube on top": the cubes below are its base
+    (re.compile(r"\b(pyramids?\b[^.;]*?\b(?:\d+|two|three|four)\s+(?:[a-z]+\s+)?(?:cubes|blocks))\s+(?:below|underneath|beneath)"
+                r"(?=\s+and\s+(?:the\s+|a\s+|an\s+|1\s+|one\s+)?[a-z]+\s+(?:cube|block|one)\s+(?:on\s+top|at\s+the\s+top)\b(?!\s+of))"),
+     r"\1 on the bottom"),
     # "a pyramid whose base is red": the whole bottom layer of a layered structure (a tower's base is its one bottom cube)
     (re.compile(rf"\b(pyramids?|walls?)\s+whose\s+(?:base|bottom)\s+(?:layer\s+|row\s+)?is\s+({COLOR_RE})\b(?!\s*(?:,|and)\s*(?:{COLOR_RE})\b)"),
      r"\1 with a \2 base"),
@@ -3205,6 +3216,18 @@ ARROW_PATCH_RE = re.compile(rf"\b({COLOR_RE})(?:\s+(?:block|cube|brick))?\s*(?:-
 
 
 
+LABEL_STRUCTURE_KINDS: dict[str, str] = {w: k.name for k in STRUCTURE_KINDS.values() for w in (*k.words, *k.described_by)
+                                         if not (k.name == "piles" and w in STRUCTURE_KINDS["tower"].described_by)}
+"""A structure's noun in a voice's label before its task ("Tungsten tower: stack ...") -> the kind it names; the label's
+noun is the voice's own where its task names that kind too, or where it only qualifies a thing of the voice's world
+("Grid reference: ...", "Tower captain speaking: ...")."""
+
+STRUCTURE_KIND_SAID_RES: dict[str, re.Pattern] = {
+    name: re.compile(r"\b(?:" + "|".join(f"{w}(?:s|ed|ing)?" for w in (*k.words, *k.described_by)) + r")\b")
+    for name, k in STRUCTURE_KINDS.items() if k.words}
+"""A structure kind's name -> its words as a task says them ("stack", "stacked", "rows")."""
+
+
 STRUCTURE_NOUN = "(?:" + "|".join(sorted({w for k in STRUCTURE_KINDS.values() for w in (*k.words, *k.described_by)}
                                            - {"square", "pile"} | {"wall"})) + ")"
 """A noun that names a structure being described ("a line of ...", "a wall: ..."), from the
@@ -3601,6 +3624,34 @@ LAYER_WORDS = {"top": "top", "peak": "top", "apex": "top", "tip": "top", "bottom
                "foundation": "bottom", "middle": "middle"}
 """A layer word of :data:`LAYER_ROLE_RE` -> the layer it names."""
 
+LABEL_TOKEN = r"(?<![\w'\-])(?:[A-Z]|\d)(?![\w'\-])"
+"""One label cube's name as the normalised, case-kept text writes it: a capital letter or a digit standing alone."""
+
+_LABEL_ITEM = rf"(?:the\s+)?(?:(?:digit|letter|number)\s+)?{LABEL_TOKEN}(?:\s+(?:cube|block))?"
+_LABEL_ITEMS = rf"(?P<l>{_LABEL_ITEM}(?:(?:\s*,\s*(?:and\s+)?|\s+and\s+){_LABEL_ITEM})*)"
+_PYRAMID_LAYER = r"(?P<r>bottom|base|foundation|top|apex|peak|tip|middle)(?:\s+(?:layer|row|level|tier))?"
+
+LABEL_LAYER_ROLE_RES: tuple[re.Pattern, ...] = (
+    re.compile(_LABEL_ITEMS + r"\s+(?:(?:cubes|blocks)\s+)?(?:(?:is|are|goes|go|sits?|stands?|should\s+be|must\s+be)\s+)?"
+               r"(?:on|at|in|as|for|forming|form)\s+(?:the\s+)?(?:very\s+)?" + _PYRAMID_LAYER + r"\b(?!\s+of\b)"),
+    re.compile(r"\b(?:the\s+)?" + _PYRAMID_LAYER + r"\s*(?:is|are|:|=|has|holds)\s+(?:made\s+of\s+)?(?:the\s+)?"
+               r"(?:(?:digit|letter|number)\s+)?(?:(?:cubes|blocks)\s+)?" + _LABEL_ITEMS),
+)
+"""Label cubes given a layer of a pyramid ("the digit cubes 2, 4 and 6 at the base", "with Y on top", "A and B on the
+bottom, C at the apex", "the base is 5 and 6"): ``l`` the labels, ``r`` the layer word (:data:`LAYER_WORDS`)."""
+
+LABEL_RELATED_RE = re.compile(r"\b(?:on(?:\s+top\s+of)?|onto|atop|above|over|under|below|beneath|underneath|next\s+to|beside|"
+                              r"(?:to\s+the\s+)?(?:left|right)\s+of|in\s+front\s+of|behind|between|by|near)\s+(?:the\s+)?"
+                              r"(?:(?:digit|letter|number)\s+)?" + LABEL_TOKEN)
+"""A label cube related to another ("3 on top of 1", "A next to B"): what no layer role says."""
+
+LABEL_COUNT_AFTER_RE = re.compile(r"\s*(?:-|\s+(?:[a-z]+\s+){0,2}(?:blocks|cubes|ones|layers|levels|tiers|rows|stor(?:ey|y|ie)s?|high|wide|tall)\b)")
+"""Words after a digit that make it a count ("3 blocks", "2 layers", "3-2-1"), not a digit cube's name."""
+
+LABEL_ARTICLE_AFTER_RE = re.compile(r"\s+(?!(?:and|on|at|in|is|are|goes|sits|cube|block)\b)[a-z]")
+"""Words after a capital "A" that make it an article ("A four-cube pyramid", "A pyramid"), not the letter cube A."""
+
+
 ROLE_BEFORE = re.compile(r"\bwith\s+(?:the\s+|a\s+|an\s+|1\s+)?[a-z0-9]+(?:\s+(?:block|cube|one|digit|letter))?\s*$")
 """Text before "in the middle" that makes it a cube's role in a structure ("with blue in the
 middle"), not a place on the table."""
@@ -3613,10 +3664,11 @@ ROLE_LIST_BEFORE = re.compile(r"\b(?:with|so\s+that|such\s+that|where)\s+(?:[^.;
 green in the middle, and blue on the right"; "so that orange is leftmost, purple is in the
 middle"), not a place on the table."""
 
-LAYER_LIST_BEFORE = re.compile(r"(?:,|\band|\bthen)\s+(?:the\s+|a\s+|an\s+)?(?:\d+\s+)?[a-z]+(?:\s+(?:blocks?|cubes?|ones?))?\s*$")
+LAYER_LIST_BEFORE = re.compile(r"(?:(?:,|\band|\bthen)\s+(?:the\s+|a\s+|an\s+)?|\b(?:bottom|base)(?:\s+(?:layer|row|level|tier))?\s+)"
+                               r"(?:(?:\d+\s+)?[a-z]+|\d+)(?:\s+(?:blocks?|cubes?|ones?))?\s*$")
 LAYERED_TEXT = re.compile(r"\b(?:pyramid|wall|tower|stack)s?\b.*\b(?:base|bottom|top)\b|\b(?:base|bottom|top)\b.*\b(?:pyramid|wall|tower|stack)s?\b")
-"""A colour in a list of layers before "in the middle" ("3 red at the base, 2 green in the
-middle") in a text about a layered structure: "the middle" is then its middle layer, not the
+"""A colour or a count in a list of layers before "in the middle" ("3 red at the base, 2 green in the
+middle", "three on the bottom, two in the middle", "3 on the bottom 2 in the middle") in a text about a layered structure: "the middle" is then its middle layer, not the
 centre of the table."""
 
 

@@ -452,6 +452,31 @@ def _voice_chunk(chunk: str, label: bool = False, rest: str = "") -> bool:
     return True
 
 
+def _label_structure_masked(chunk: str, task: str) -> str:
+    """A voice's label ``chunk`` with each structure noun that is the voice's own (:data:`lexicon.LABEL_STRUCTURE_KINDS`)
+    written as "thing", for :func:`_voice_chunk` to weigh the rest: one its ``task`` names the same kind of ("Tungsten
+    tower: stack a gray cube on a black cube"), or one that qualifies a noun of the voice's world that the parser does
+    not read ("Grid reference: ...", "Tower captain speaking: ...") and that names no task ("Pyramid task: ..." names
+    its structure).  Any other stays ("Contour lines: build a wall": the label's lines are no wall), and a label with a
+    count or a spec ("pile-5 [region=back]: ...") is left whole."""
+    if re.search(rf"\d|\b(?:{lexicon.COUNT_WORD_RE})\b|[\[\]=]", chunk.lower()):
+        return chunk  # "pile-5 [region=back]": a count or a spec of the task's own, to be read
+    words = re.findall(r"[A-Za-z][A-Za-z'\-]*", chunk)
+    out = chunk
+    for i, w in enumerate(words):
+        kind = lexicon.LABEL_STRUCTURE_KINDS.get(w.lower().removesuffix("s"))
+        if kind is None:
+            continue
+        after = words[i + 1].lower() if i + 1 < len(words) else ""
+        qualifies = bool(after) and after.removesuffix("s") not in VOCAB and "NOUN" in lexicon.parts_of_speech(after) \
+            and not lexicon.VOICE_CHUNK_HAZARD_RE.search(after) and not lexicon.FRAME_NOUN_RE.fullmatch(after)  # "Pyramid
+        # task: bottom layer ...": the label names the task's structure
+        said = lexicon.STRUCTURE_KIND_SAID_RES.get(kind)
+        if qualifies or (said is not None and said.search(task.lower())):
+            out = re.sub(rf"\b{re.escape(w)}\b", "thing", out, count=1)
+    return out
+
+
 def drop_voice_chunks(text: str, labels: bool = True) -> tuple[str, list[str]]:
     """``text`` without a voice's label before its task ("Site diary, day six: ...", :data:`lexicon.VOICE_LABEL_RE`; or a
     first sentence of up to four words such as "Context 17.") and without the chunks that end its sentences in a voice
@@ -465,7 +490,8 @@ def drop_voice_chunks(text: str, labels: bool = True) -> tuple[str, list[str]]:
     label = lexicon.VOICE_LABEL_RE.match(text) if labels else None
     first = re.match(r"\s*(?P<c>[^.!?:;]{2,40})\.\s+(?=\S)", text) if labels else None
     for m in (label, first):
-        if m and len(m.group("c").split()) <= (10 if m is label else 4) and _voice_chunk(m.group("c"), label=True) \
+        chunk = _label_structure_masked(m.group("c"), text[m.end():]) if m and m is label else m.group("c") if m else ""
+        if m and len(m.group("c").split()) <= (10 if m is label else 4) and _voice_chunk(chunk, label=True) \
                 and lexicon.GOAL_THING_RE.search(text[m.end():].lower()):
             dropped.append(m.group(0).strip())
             text = text[m.end():]
@@ -1771,7 +1797,8 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
                 text = text[:said[0].start()] + f"with {roles['bottom']} at the bottom and {roles['top']} on top" + rest
             else:
                 text = text[:said[0].start()] + "from bottom to top: " + ", ".join(roles[r] for r in order) + rest
-    text = lexicon.rewrite(lexicon.TOP_LIST_REWRITES, text)
+    if not re.search(r"\b(?:pyramids?|walls?)\b", text):  # a pyramid's "the base is blue, blue, green" is its bottom layer
+        text = lexicon.rewrite(lexicon.TOP_LIST_REWRITES, text)
     if re.search(r"\b(?:rows?|lines?|line\s+up)\b", text):
         text = lexicon.rewrite(lexicon.ROW_ROLE_REWRITES, text)
         # "the first is white, the last is black, and the two in the middle are gray": read before "last" is refused

@@ -356,6 +356,95 @@ def _refuse_made_up_layer_cubes(f: Features, b: Builder) -> None:
                              "\"... two white cubes in the middle and a yellow cube on top\"), or use --model")
 
 
+def _label_pyramid(f: Features, b: Builder) -> bool:
+    """Read a 2D pyramid of label cubes (:data:`lexicon.LABEL_TOKEN`), none coloured: "a pyramid of the letter cubes A, B
+    and C" (any cube in any site), "the 5, 6 and 7 cubes into a pyramid with 7 at the top", "A and B on the bottom, C at
+    the apex", "the digit cubes 2, 4 and 6 at the base and 8 at the top" (a base of three and one cube on top, the layers
+    :func:`_skipped_layers` reads for colours).  The layers said (:data:`lexicon.LABEL_LAYER_ROLE_RES`) are judged by an
+    :class:`InLayers`; labels said for no layer fill the one layer that has sites left.  Returns False where the text
+    names no label cube or a colour as well (left to the other readers).
+
+    Raises:
+        ParseError: letters and digits mixed, a label given two layers, a count said that the labels do not make, the
+            labels said for no layer spread over several layers, a layer given more labels than it holds, or a number of
+            labels no pyramid has (3, 6 or 10; or a base and one cube on top)."""
+    text = f.original
+    if re.search(rf"\b(?:{COLOR_RE})\b", f.text) or re.search(r"\b\d+x\d+\b", f.text):
+        return False
+    tokens = [m for m in re.finditer(lexicon.LABEL_TOKEN, text)
+              if not (m.group(0).isdigit() and lexicon.LABEL_COUNT_AFTER_RE.match(text[m.end():]))
+              and not (m.group(0) in ("A", "I") and lexicon.LABEL_ARTICLE_AFTER_RE.match(text[m.end():]))]
+    labels = list(dict.fromkeys(m.group(0) for m in tokens))
+    if len(labels) < 3:
+        return False
+    if len({lab.isdigit() for lab in labels}) > 1:
+        raise ParseError(f"\"{f.original[:80]}\" mixes letter and digit cubes in a pyramid; say which cubes, or use --model")
+    roles: dict[str, str] = {}
+    for pattern in lexicon.LABEL_LAYER_ROLE_RES:
+        for m in pattern.finditer(text):
+            layer = lexicon.LAYER_WORDS[m.group("r")]
+            for lab in re.findall(lexicon.LABEL_TOKEN, m.group("l")):
+                if roles.get(lab, layer) != layer:
+                    raise ParseError(f"the cube {lab} is given two layers in \"{f.original[:80]}\"; say each cube's layer "
+                                     "once, or use --model")
+                roles[lab] = layer
+    rest = text
+    for pattern in lexicon.LABEL_LAYER_ROLE_RES:
+        rest = pattern.sub(" ", rest)
+    related = lexicon.LABEL_RELATED_RE.search(rest)
+    if related or ordering_of(f) or re.search(rf"\b(?:{lexicon.SORT_END_WORD}|ascending|descending|increasing|decreasing|sorted|"
+                                              r"order\w*|alphabetical\w*|revers\w*|numerical\w*)\b", f.text):  # "with 3 on top of 1", "sorted ascending": more than the layers (it had been dropped)
+        raise ParseError(f"\"{f.original[:80]}\" says more of a pyramid's label cubes than the layers they stand in "
+                         f"({related.group(0) if related else 'an order'}), which the builtin parser does not read; say each "
+                         "layer's cubes, or use --model")
+    n = len(labels)
+    said = stated_count(f, default=None)
+    free = [lab for lab in labels if lab not in roles]
+    bottom = [lab for lab in labels if roles.get(lab) == "bottom"]
+    top = [lab for lab in labels if roles.get(lab) == "top"]
+    base = next((k for k in range(2, 5) if k * (k + 1) // 2 == n), None)
+    if base is None and not free and len(top) == 1 and len(bottom) == n - 1 >= 3:
+        sizes = [n - 1, 1]  # "2, 4 and 6 at the base and 8 at the top": those two layers
+    elif base is not None:
+        sizes = [base - k for k in range(base)]
+    else:
+        raise ParseError(f"\"{f.original[:80]}\" names {n} label cubes for a pyramid, and a pyramid of cubes, each layer "
+                         "one shorter, has 3, 6 or 10; say its layers (e.g. \"A and B on the bottom, C on top\"), or use --model")
+    if said is not None and said != n:
+        raise ParseError(f"\"{f.original[:80]}\" says {said} cubes and names {n} label cubes for its pyramid; say each "
+                         "cube once, or use --model")
+    index = {"bottom": 0, "top": len(sizes) - 1, "middle": 1 if len(sizes) == 3 else None}
+    layers: list[list[str]] = [[] for _ in sizes]
+    for lab in labels:
+        if lab in roles:
+            k = index[roles[lab]]
+            if k is None:
+                raise ParseError(f"the cube {lab} is put in the middle of a pyramid {len(sizes)} layers high, which has no "
+                                 "one middle layer; say which layer, or use --model")
+            layers[k].append(lab)
+    if any(len(layer) > size for layer, size in zip(layers, sizes, strict=True)):
+        raise ParseError(f"\"{f.original[:80]}\" gives a pyramid's layer more label cubes than it holds; say each layer's "
+                         "cubes, or use --model")
+    open_layers = [k for k, size in enumerate(sizes) if len(layers[k]) < size]
+    if roles and free and len(open_layers) > 1:
+        raise ParseError(f"\"{f.original[:80]}\" says the layers of some of a pyramid's cubes but not of {', '.join(free)}, "
+                         "which could stand in more than one layer; say each layer's cubes, or use --model")
+    if roles and free:
+        layers[open_layers[0]].extend(free)
+    ordered = [lab for layer in layers for lab in layer] if roles else labels
+    names = [b.semantic(lab) for lab in ordered]
+    skipped = tuple(sizes) if len(sizes) == 2 and sizes[0] > 2 else ()
+    b.place(pyramid_layout(names, sizes[0], 2, layers=skipped))
+    if roles:
+        b.preds.append(InLayers(tuple(names), tuple(k for k, layer in enumerate(layers) for _ in layer)))
+        b.summary.append(b.preds[-1].describe())
+    b.preds.insert(0, Pyramid(tuple(names), base=sizes[0], dims=2, layers=skipped) if skipped
+                   else Pyramid(tuple(names), base=sizes[0], dims=2))
+    b.primitives += ["stack"]
+    b.summary.insert(0, f"a 2D pyramid of the label cubes {', '.join(ordered)} ({' under '.join(map(str, sizes))})")
+    return True
+
+
 @reader(order=100)
 def recognize_pyramid(f: Features, b: Builder) -> bool:
     if not f.has("pyramid", "pyramids", "triangle", "triangular"):
@@ -368,6 +457,8 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
                  "base", "bottom", "top", "on top", "tier", "tiers", "vertical", "upright"):
         raise ParseError(f"'triangle' in \"{f.original[:80]}\" names no one shape: a pyramid (a layer of cubes on a wider "
                          "one) or cubes at the corners of a triangle on the table, which rpg does not build; say which (e.g. \"a pyramid of 3 blocks\"), or use --model")
+    if _label_pyramid(f, b):
+        return True
     dims_m = re.search(r"\b(\d+)x(\d+)\b", f.text)
     if dims_m:
         base, dims = int(dims_m.group(1)), 3
@@ -1048,8 +1139,12 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
             b.preds.append(InLine(tuple(names), axis=line_axis(direction), order=direction))
         elif re.search(r"\bin any order\b", f.text):  # "the letter cubes B, A and T in a row, any order": which cubes, not where
             b.preds.append(InLine(tuple(names), axis=None, order=None))
-        else:  # "put the A and the B in a line": the listed order from either end, no reading direction said
+        elif lexicon.THIS_ORDER_RE.search(f.text) or lexicon.LISTED_ORDER_SAID_RE.search(f.text):
+            # "the letters Q, R and S in a row, in that order": the listed order from either end, no reading direction said
             b.preds.append(InLine(tuple(names), axis=None, order="sequence"))
+        else:  # "put the A and the B in a line", "the 7, 8 and 9 cubes side by side in a row": which cubes, not where (the
+            # listed order had been demanded, as no list of colours is: a goal stricter than its words)
+            b.preds.append(InLine(tuple(names), axis=None, order=None))
         if said_as_word:  # the labels read as a word: their faces up (not said otherwise)
             b.preds.append(Reads(tuple(names), "".join(labels), direction))
         if order and said_as_word:  # "... so their up-faces read A, B, C, D in alphabetical order": the faces judged;
