@@ -8439,6 +8439,8 @@ def test_forty_fifth_session_hostile_probes_read(text, expected):
     ("Make a little pyramid with letter cubes: A and B at the bottom, C on top.", ["pyramid(A,B|C)"]),
     ("Build a pyramid from the letter cubes A, B and C.", ["pyramid(A,B,C)"]),
     ("Build a pyramid of the digit cubes 1 to 6 with 1, 2 and 3 on the bottom and 6 on top.", ["pyramid(1,2,3|4,5|6)"]),
+    # layer sizes written as digits are no digit cubes (stranger24: "3/2/1" had been read as the cubes 1, 2 and 3)
+    ("need a pyramid 3/2/1, colors dont matter", ["pyramid(red,red,red,red,red,red)"]),
 ])
 def test_forty_sixth_session_a_pyramid_of_label_cubes(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
@@ -8504,3 +8506,14 @@ def test_forty_sixth_session_a_voice_label_with_a_structure_noun(text, expected)
 def test_forty_sixth_session_a_voice_label_that_may_say_the_task_stays(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a structure's place said between its listed cubes and its ends (stranger58: the list had been cut from its ends)
+    ("Build a tower of the cyan, orange and white cubes on the right side, cyan at the bottom and white at the top.",
+     ["stack(cyan,orange,white)@right"]),
+    ("Make a row of the red, green and blue cubes at the front, red on the left and blue on the right.",
+     ["line[left_to_right](red,green,blue)@front"]),
+])
+def test_forty_sixth_session_a_place_between_a_list_and_its_ends(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)

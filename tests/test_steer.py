@@ -3288,3 +3288,31 @@ def test_forty_fifth_session_a_cube_far_from_the_tower_is_no_cube_on_top(tmp_pat
     """"Put a white cube far from the tower" had stacked it on the tower's top, silently."""
     assert _meaning_after(tmp_path, "Build a tower from bottom to top: red, green, blue.", ["Put a white cube far from the tower."])[0] == [
         "far_from(red,white)", "stack(red,green,blue)"]
+
+
+def test_forty_sixth_session_that_little_tower_is_the_tasks_own(tmp_path):
+    """steer_stranger29 p046: "Move that little tower to the back right corner" had been read as a fresh task, a tower of a
+    red and a blue cube nobody named (silently wrong); a structure an edit points at is the task's."""
+    assert _meaning_after(tmp_path, "Stack the yellow cube on the red cube in the front left corner.",
+                          ["Move that little tower to the back right corner."]) == (["stack(red,yellow)@back_right"], "modify")
+
+
+@pytest.mark.parametrize("edit,expected", [
+    # steer_stranger29 p007: "the digit cube 7" had been normalised "the digit digit 7 cube", the material op (digits, the
+    # task's own) read as a change: Modify
+    ("Add the digit cube 7 on top.", (["stack(1,8,0,7)"], "extend")),
+])
+def test_forty_sixth_session_a_label_cube_named_after_its_noun_is_added(tmp_path, edit, expected):
+    assert _meaning_after(tmp_path, "Stack the digit cubes 1, 8 and 0, 1 at the bottom, then 8, and 0 at the top.",
+                          [edit]) == expected
+
+
+def test_forty_sixth_session_numbers_that_go_up_sort_the_row(tmp_path):
+    """steer_stranger29 p034: "Sort them so the numbers go up from left to right" had changed nothing."""
+    assert _meaning_after(tmp_path, "Put the digit cubes 7, 5 and 3 in a row from left to right.",
+                          ["Sort them so the numbers go up from left to right."]) == (["line[left_to_right](3,5,7)"], "modify")
+
+
+def test_forty_sixth_session_a_letter_cube_named_after_its_noun_is_added(tmp_path):
+    assert _meaning_after(tmp_path, "Put the letter cubes A, K and Q in a row from left to right.",
+                          ["Add the letter cube T at the right end."]) == (["line[left_to_right](A,K,Q,T)"], "extend")

@@ -1257,8 +1257,16 @@ REST_ANY_ORDER_RE = re.compile(r"(?i)\bthe\s+rest(?:\s+of\s+(?:them|the\s+(?:cub
 """The cubes given no place, left in any order ("with the black cube on top; the rest in whatever order"): written "the
 others in any order" (it had been refused as a reference to cubes nobody named)."""
 
+STRUCTURE_ADJECTIVES = r"little|small|tiny|short|tall|big|large|new|finished|completed|neat|lone|single"
+"""Words that may stand between "the"/"that" and a structure one sees ("that little tower", "the small stack")."""
+
+POINTED_STRUCTURE_RE = re.compile(r"\b(?:this|that|the)\s+(?:" + STRUCTURE_ADJECTIVES + r")?\s*"
+                                  r"(?P<n>tower|stack|pile|structure|pyramid|wall|row|line|column|circle|ring|grid)\b")
+"""A structure an edit points at ("move that little tower", "the small stack"): the task's own, written "the tower" by
+:func:`rpg.steer.edits.normalize_edit` (the words had been read as a fresh task, a tower of two made-up cubes)."""
+
 DEMONSTRATIVE_STRUCTURE_RE = re.compile(r"(?i)\b(?P<p>on|onto|upon|to|into|beside|behind|near|of|from|off|put|place|move|set|slide|push|shift"
-                                        r"|bring|carry|relocate|transfer|position)\s+(?:this|that)\s+"
+                                        r"|bring|carry|relocate|transfer|position)\s+(?:this|that)\s+(?:(?:" + STRUCTURE_ADJECTIVES + r")\s+)?"
                                         r"(?P<n>tower|stack|pile|structure|pyramid|wall|row|line|column)\b(?!\s+of\b)")
 """A structure named by a demonstrative after a preposition ("put a cyan cube on top of that tower"): the definite one,
 written "the tower" (it had missed :data:`DEFINITE_STRUCTURE_RE`'s check and made a tower of two made-up cubes, silently)."""
@@ -1272,7 +1280,7 @@ saying which (a hostile helper's probe: a red cube had been made up for it, sile
 DEFINITE_STRUCTURE_RE = re.compile(
     r"\b(?:on|onto|upon|to|into|next\s+to|beside|behind|in\s+front\s+of|near|left\s+of|right\s+of|top\s+of|from|off|of"
     r"|put|place|move|set|slide|push|shift|bring|carry|relocate|transfer|position)"
-    r"\s+the\s+(?:existing\s+|current\s+|whole\s+|entire\s+)?"
+    r"\s+the\s+(?:(?:existing|current|whole|entire|" + STRUCTURE_ADJECTIVES + r")\s+)?"
     r"(?P<noun>tower|stack|pile|structure|pyramid|wall|row|line|column|circle|ring|grid)\b(?!\s+of\b)")
 """A structure an instruction places something in relation to ("put the blue block on top of
 the stack") or moves ("put the tower centrally"): it must have been described before it
@@ -3624,7 +3632,7 @@ LAYER_WORDS = {"top": "top", "peak": "top", "apex": "top", "tip": "top", "bottom
                "foundation": "bottom", "middle": "middle"}
 """A layer word of :data:`LAYER_ROLE_RE` -> the layer it names."""
 
-LABEL_TOKEN = r"(?<![\w'\-])(?:[A-Z]|\d)(?![\w'\-])"
+LABEL_TOKEN = r"(?<![\w'\-/])(?:[A-Z]|\d)(?![\w'\-/])"
 """One label cube's name as the normalised, case-kept text writes it: a capital letter or a digit standing alone."""
 
 _LABEL_ITEM = rf"(?:the\s+)?(?:(?:digit|letter|number)\s+)?{LABEL_TOKEN}(?:\s+(?:cube|block))?"
@@ -5467,6 +5475,14 @@ def _relation_then_structure(m: re.Match) -> bool:
 
 
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "a tower of the cyan, orange and white cubes on the right side, cyan at the bottom and white at the top": the place
+    # said after the ends (the place between the list and its ends had cut the list from them: the orange cube refused)
+    (re.compile(rf"(?P<head>\b(?:tower|stack|column|row|line)\s+of\s+(?:the\s+)?(?:{COLOR_RE})(?:\s*,\s*(?:{COLOR_RE}))*\s*,?\s+and\s+"
+                rf"(?:{COLOR_RE})\s+(?:cubes|blocks))\s+(?P<place>(?:on|at|in)\s+the\s+(?:far\s+)?(?:left|right|front|back|middle|center|centre)"
+                r"(?:\s+(?:left|right))?(?:\s+(?:side|edge|corner|half|end)(?:\s+of\s+the\s+table)?)?)\s*,\s*"
+                rf"(?P<roles>(?:with\s+)?(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:at|on)\s+(?:the\s+)?(?:very\s+)?"
+                r"(?:bottom|base|top|left|right)\b[^.;!?,]*)(?=\s*(?:[.;!?]|$))"),
+     lambda m: f"{m.group('head')}, {m.group('roles').rstrip()}, {m.group('place')}"),
     # "From left to right, place red, white, red.": the direction said before the verb and its list (no task had been found)
     (re.compile(rf"^(?P<d>(?:from\s+)?(?:left\s+to\s+right|right\s+to\s+left))\s*,\s*(?P<v>place|put|set|lay\s+out|line\s+up|arrange)\s+"
                 rf"(?P<l>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?(?:\s*,\s*(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block))?)+"

@@ -43,6 +43,7 @@ from rpg.schema.lexicon import (
     EDIT_EXCLAMATION_HAZARD_RE,
     EDIT_EXCLAMATION_RE,
     EDIT_FRESH_RE,
+    POINTED_STRUCTURE_RE,
     EDIT_INEXPRESSIBLE,
     EDIT_INTERJECTION_RE,
     EDIT_LABEL_RE,
@@ -210,6 +211,8 @@ def normalize_edit(text: str) -> str:
     an article read as a labelled cube ("put a D on top", "swap the 3 for a 7"), a word in
     capitals quoted ("change it to DOG"), and typos of known words corrected ("shoud")."""
     t = text.strip()
+    t = re.sub(r"\b(letter)\s+(cube|block)\s+([A-Za-z])\b(?!['\-])", lambda m: f"{m.group(1)} {m.group(3).upper()} {m.group(2)}", t)
+    # "the letter cube T": the letter T cube (the letter had been read twice, "letter cube letter t")
     t = re.sub(r"\b(a|an|the)\s+([A-Z])\b(?!['\-])", r"\1 letter \2", t)
     # a lone capital is a letter cube ("swap A and D"); "A" only where no noun follows it
     t = re.sub(r"(?<![\w'])(?<!letter )([B-HJ-Z])\b(?!['\-])|(?<![\w'])(?<!letter )(A)\b(?=\s*(?:$|[,.;!?]|and\b|or\b|with\b|for\b"
@@ -218,7 +221,8 @@ def normalize_edit(text: str) -> str:
     t = re.sub(r"\b(a|an|the)\s+(\d)\s+(cube|block)\b(?!\s*(?:-|towers?|stacks?|rows?|lines?|pyramids?|walls?|piles?|circles?|grids?"
                r"|columns?|high|tall|wide|long)\b)", r"\1 digit \2 \3", t)  # "put a 6 cube on top": the digit cube 6 (six had been
     # added, silently); "a 3 cube tower" is a count
-    t = re.sub(r"\b(cube|block)\s+(\d)\b(?![x\d\-.,]\d)(?!\s*(?:blocks?|cubes?|tall|high|wide|long|deep|layers?|levels?|rows?|more|of"
+    t = re.sub(r"\b(?:digit|number)\s+(cube|block)\s+(\d)\b(?![x\d\-.,]\d)", r"digit \2 \1", t)  # "the digit cube 7"
+    t = re.sub(r"(?<!digit )(?<!\d )\b(cube|block)\s+(\d)\b(?![x\d\-.,]\d)(?!\s*(?:blocks?|cubes?|tall|high|wide|long|deep|layers?|levels?|rows?|more|of"
                r"|colou?rs?|times)\b)", r"digit \2 \1", t)  # "put cube 6 on top": the digit cube 6 (six had been added, silently)
     t = re.sub(r"\b(a|an|the)\s+(\d)\b(?![x\d\-])(?!\s*(?:blocks?|cubes?|tall|high|wide|long|deep|layers?|levels?|rows?|"
                r"more|of|colou?rs?|stor\w*|outliers?|times)\b)", r"\1 digit \2", t)
@@ -227,6 +231,7 @@ def normalize_edit(text: str) -> str:
     # TOYS": a word spelled, though "toys" is a known word (it had been refused as an object)
     t = re.sub(r"(?<!')\b[A-Z]{2,}\b(?!')", lambda m: m.group(0) if m.group(0).lower() in known else f"'{m.group(0)}'", t)
     t = t.lower()
+    t = POINTED_STRUCTURE_RE.sub(lambda m: f"the {m.group('n')}", t)  # "that little tower": the task's own
     t = re.sub(r"[\u2018\u2019\u201c\u201d`\"]", "'", t)
     t = re.sub(r"''+", "'", t)
     t = re.sub(r"\b(\d+)\s*(?:by|\u00d7)\s*(\d+)\b", r"\1x\2", t)
@@ -636,12 +641,13 @@ def read_ops(t: str) -> list[Op]:
         # "smallest on top", "largest at the bottom": the order of the task's labels, by the end where one of them stands
         low_first = (ends.group("v") == "smallest") == bool(re.search(r"bottom|base|left", ends.group("at")))
         ops.append(Op("ordering", {"key": "auto", "descending": not low_first}))
-    elif re.search(r"\b(?:ascending|descending|increasing|decreasing)\b|\b(?:largest|biggest|highest|smallest|lowest)\s+(?:one\s+)?first\b"
+    elif re.search(r"\b(?:ascending|descending|increasing|decreasing|increases?|decreases?)\b|\b(?:largest|biggest|highest|smallest|lowest)\s+(?:one\s+)?first\b"
+                   r"|\b(?:numbers?|digits?|labels?|values?)\s+(?:go|goes|going|run|runs|count|counts)\s+(?:up|down)\b"  # "so the numbers go up"
                    r"|\b(?:high|low)(?:est)?\s+to\s+(?:low|high)(?:est)?\b"
                    r"|\b(?:largest|biggest|greatest|smallest)\s+to\s+(?:the\s+)?(?:smallest|largest|biggest|greatest)\b", t):
         # "descending now", "largest first", "largest to smallest instead": the order of the task's own labels
         ops.append(Op("ordering", {"key": "auto", "descending": bool(re.search(
-            r"\b(?:decreasing|descending|largest|biggest|highest|greatest|high(?:est)?\s+to\s+low)\b"
+            r"\b(?:decreasing|descending|decreases?|largest|biggest|highest|greatest|high(?:est)?\s+to\s+low|(?:go|goes|going|run|runs|count|counts)\s+down)\b"
             r"(?!\s+(?:one\s+)?last\b)", re.sub(r"\b(?:smallest|lowest)\s+to\s+(?:the\s+)?(?:largest|biggest|greatest|highest)\b",
                                                    "ascending", t)))}))
     elif re.search(r"\b(?:sort|order|arrange|group)\w*\s+(?:them\s+|it\s+)?by\s+(?:different\s+|their\s+)?colou?rs?\b|\bcolou?r gradient\b|\brainbow\b|\b(?:each|every)\s+(?:row|layer|level)\b[^.;]*\bdifferent colou?r", t):
@@ -1026,6 +1032,8 @@ def intent_of_ops(ops: list[Op], spec: TaskSpec | None = None) -> str:
     """The strongest intent of the operations (a structure op to the reference's own
     structure changes nothing and does not count)."""
     ops = [o for o in ops if not (spec is not None and o.op == "structure" and o.params["to"] == spec.structure)]
+    ops = [o for o in ops if not (spec is not None and o.op == "material" and o.params["to"] == spec.material)]  # "add the
+    # digit cube 7" to digit cubes: their material kept
     if spec is not None:  # "add a 5 and keep it largest first": the order it has, kept
         kept = {"auto": "label" if spec.material == "letters" else "number"}
         ops = [o for o in ops if not (o.op == "ordering" and spec.ordering == kept.get(o.params["key"], o.params["key"])

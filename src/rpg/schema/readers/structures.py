@@ -377,6 +377,8 @@ def _label_pyramid(f: Features, b: Builder) -> bool:
     labels = list(dict.fromkeys(m.group(0) for m in tokens))
     if len(labels) < 3:
         return False
+    if labels[0].isdigit() and not (explicit_labels(f) or f.has("digit", "digits", "number", "numbers", "label", "labels")):
+        return False  # "a pyramid 3 2 1": counts, not digit cubes named
     if len({lab.isdigit() for lab in labels}) > 1:
         raise ParseError(f"\"{f.original[:80]}\" mixes letter and digit cubes in a pyramid; say which cubes, or use --model")
     roles: dict[str, str] = {}
