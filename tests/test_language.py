@@ -8517,3 +8517,14 @@ def test_forty_sixth_session_a_voice_label_that_may_say_the_task_stays(text):
 ])
 def test_forty_sixth_session_a_place_between_a_list_and_its_ends(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text, expected", [
+    # the side of a structure being described, its cubes named by no colour (stranger58: the side had been left unread)
+    ("Build a row of three cubes on the left side.", ["line(blue,green,red)@left"]),
+    ("Make a pile of four cubes on the right side.", ["pile(blue,green,red,yellow)@right"]),
+    # "the two red ones at the ends" (stranger58: "ones" had kept the count against one cube)
+    ("Row of three cubes with the brown one in the middle and the two red ones at the ends.", ["line[left_to_right](red,brown,red)"]),
+])
+def test_forty_sixth_session_sides_and_ends_of_a_structure(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)

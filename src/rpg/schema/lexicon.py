@@ -5552,8 +5552,9 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                                                     r"|on\s+the\s+(?:left|right|bottom)|(?:left|right)\s+end)\b[^.;!?]*$",
                                                     m.string[:m.start()]) else m.group(0)),  # (only after an end said: an order)
     # "with the two white cubes at the ends": one of them at each end of the row (the count had been read against one cube)
-    (re.compile(rf"\b(?:the\s+)?(?:two|2|both)\s+(?P<c>{COLOR_RE})\s+(?P<n>cube|block)s\s+(?:go\s+|are\s+|sit\s+)?(?:at|on)\s+(?:the\s+)?"
-                r"(?:two\s+|both\s+)?ends\b(?!\s+of\s+(?:the|a)\s+(?:table|workspace))"), lambda m: f"a {m.group('c')} {m.group('n')} at each end"),
+    (re.compile(rf"\b(?:the\s+)?(?:two|2|both)\s+(?P<c>{COLOR_RE})\s+(?P<n>cube|block|one)s\s+(?:go\s+|are\s+|sit\s+)?(?:at|on)\s+(?:the\s+)?"
+                r"(?:two\s+|both\s+)?ends\b(?!\s+of\s+(?:the|a)\s+(?:table|workspace))"),
+     lambda m: f"a {m.group('c')} {'cube' if m.group('n') == 'one' else m.group('n')} at each end"),  # ("the two red ones")
     # "green in the middle, white at the ends": a white cube at each end (one white cube had been read, a red one made up)
     (re.compile(rf"\b(?P<mid>in\s+the\s+middle)(?P<sep>\s*,\s*(?:with\s+|and\s+)?|\s+and\s+)(?P<c>{COLOR_RE})(?:\s+(?:cubes|blocks|ones))?\s+"
                 r"(?:go\s+|are\s+|sit\s+)?(?:at|on)\s+(?:the|both)\s+(?:two\s+)?ends\b(?!\s+of\b)"),

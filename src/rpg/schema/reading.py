@@ -3017,17 +3017,26 @@ NEW_STRUCTURE_BEFORE_RE = re.compile(
 """A structure being described just before a bare side ("a line of 4 gray cubes at the front")."""
 
 
+_NEW_PILE_BEFORE_RE = re.compile(r"\b(?:a|an|1|one)\s+(?:[\w-]+\s+)?(?:pile|heap)\s+of\s+(?:\d+|[a-z]+)\s+(?:[a-z]+\s+)?(?:cubes|blocks)\s*$")
+"""A pile being described just before a bare side ("make a pile of four cubes on the right side"); :data:`NEW_STRUCTURE_BEFORE_RE`
+leaves piles out (a pile may be one the speaker sees)."""
+
+
 def _structure_side(m: re.Match) -> bool:
     """Whether a bare side ("at the front", "on the left") says where a structure the text is
     describing stands ("set up a line of 4 gray cubes at the front and a circle of 5 orange cubes
     at the back"): a new structure has no sides of its own to be relative to."""
-    if not (_side_part_ok(m) and m.group(0).split()[0] in ("on", "at", "in", "to")
+    described = NEW_STRUCTURE_BEFORE_RE.search(m.string[:m.start()]) is not None or _NEW_PILE_BEFORE_RE.search(
+        m.string[:m.start()]) is not None  # "a row of three cubes on the left side", "a pile of four cubes on the right side":
+    # the side of a structure being described is the table's, its cubes named by colour or not
+    part_ok = _side_part_ok(m) or (described and re.sub(r"[\s-]+", " ", m.group("part")).strip() in ("side", "hand side", "half"))
+    if not (part_ok and m.group(0).split()[0] in ("on", "at", "in", "to")
             and (m.group("fb") or m.group("lr2")) in ("front", "back", "rear", "left", "right") and not m.group("lr")
             and not names_a_role(m.string[:m.start()], m.string)):
         return False
     before = m.string[:m.start()]
     # "a line of 4 gray cubes at the front"; "a wall: 3 red on the bottom, 3 blue on top, at the back" (its last words)
-    return NEW_STRUCTURE_BEFORE_RE.search(before) is not None or (
+    return described or (
         re.search(r",\s*$", before) is not None and re.fullmatch(r"\s*[.!]?\s*", m.string[m.end():]) is not None
         and re.match(r"\s*(?:(?:build|make|create|set\s+up|form)\s+)?(?:a|an|1)\s+(?:[\w-]+\s+){0,2}?"
                      rf"{lexicon.STRUCTURE_NOUN}\b", before) is not None
