@@ -3316,3 +3316,11 @@ def test_forty_sixth_session_numbers_that_go_up_sort_the_row(tmp_path):
 def test_forty_sixth_session_a_letter_cube_named_after_its_noun_is_added(tmp_path):
     assert _meaning_after(tmp_path, "Put the letter cubes A, K and Q in a row from left to right.",
                           ["Add the letter cube T at the right end."]) == (["line[left_to_right](A,K,Q,T)"], "extend")
+
+
+@pytest.mark.parametrize("edit", ["Take the two cubes off the ends of the row.", "Remove the two cubes at the ends of the row."])
+def test_forty_sixth_session_the_cubes_at_both_ends_removed(tmp_path, edit):
+    """steer_stranger29 p040: "take ... off the ends" had been refused as an action, "remove the two cubes at the ends" as a
+    part of the structure."""
+    assert _meaning_after(tmp_path, "Put the purple, blue, green, yellow, orange and red cubes in a row from left to right.",
+                          [edit]) == (["line[left_to_right](blue,green,yellow,orange)"], "tweak")

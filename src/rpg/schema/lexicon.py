@@ -4111,6 +4111,9 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # had been read as an action)
     (re.compile(rf"(?i)\b(?:change|switch|swap|turn)\s+the\s+patch\s+(?:to|for|into)\s+(?:the\s+|a\s+)?(?P<c>{COLOR_RE})(?:\s+(?:one|patch))?\b"),
      lambda m: f"make the patch {m.group('c')}"),
+    # "Take the two cubes off the ends of the row", "remove the two cubes at the ends": the cube at each end removed
+    (re.compile(r"(?i)\b(?:take|remove|pull|lift)\s+(?:the\s+)?(?:(?:two|2|both)\s+)?(?:cubes|blocks|ones)\s+(?:off|from|at)\s+"
+                r"(?:the\s+|both\s+)?(?:two\s+|2\s+)?ends(?:\s+of\s+the\s+(?:row|line))?\b"), "remove the cubes at both ends"),
     # "Discard the white one", "bin the red cube": removed from the task
     (re.compile(r"(?i)\b(?:discard|ditch|bin|scrap|dump|lose)\s+(?=the\s+(?:[a-z]+\s+)?(?:one|cube|block)\b)"), "remove "),
     # "Throw a third purple into the heap": one more cube of that colour added ('a third' had been read as a place)
