@@ -3324,3 +3324,12 @@ def test_forty_sixth_session_the_cubes_at_both_ends_removed(tmp_path, edit):
     part of the structure."""
     assert _meaning_after(tmp_path, "Put the purple, blue, green, yellow, orange and red cubes in a row from left to right.",
                           [edit]) == (["line[left_to_right](blue,green,yellow,orange)"], "tweak")
+
+
+@pytest.mark.parametrize("edit,expected", [
+    # steer_stranger29 p015: "the pile goes to the centre instead" had been read as one more placement of a cube, refused
+    ("The pile goes to the centre of the table instead.", (["pile(purple,purple,purple,purple,purple)@center"], "modify")),
+    ("Now the pile goes in the front left corner.", (["pile(purple,purple,purple,purple,purple)@front_left"], "modify")),
+])
+def test_forty_sixth_session_the_structure_goes_somewhere_else(tmp_path, edit, expected):
+    assert _meaning_after(tmp_path, "Pile five purple cubes in the back right corner.", [edit]) == expected

@@ -4114,6 +4114,12 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
     # "Take the two cubes off the ends of the row", "remove the two cubes at the ends": the cube at each end removed
     (re.compile(r"(?i)\b(?:take|remove|pull|lift)\s+(?:the\s+)?(?:(?:two|2|both)\s+)?(?:cubes|blocks|ones)\s+(?:off|from|at)\s+"
                 r"(?:the\s+|both\s+)?(?:two\s+|2\s+)?ends(?:\s+of\s+the\s+(?:row|line))?\b"), "remove the cubes at both ends"),
+    # "the pile goes to the centre of the table instead", "now the tower should go in the front left corner": the task's
+    # structure moved there (read as one more placement of a cube, it had been refused)
+    (re.compile(r"(?i)(?:^|(?<=[,;:]\s)|(?<=\bnow\s)|(?<=\bso\s))(?:the|that|this)\s+(?P<s>pile|tower|stack|row|line|pyramid|wall|grid|circle)\s+"
+                r"(?:goes|should\s+go|must\s+go|needs\s+to\s+go|moves|should\s+move|belongs|should\s+be|is\s+to\s+go)\s+(?:to|in|into|at|on)\s+"
+                r"(?=the\s+(?:(?:far|very)\s+)?(?:front|back|rear|left|right|middle|centre|center)\b)"),
+     lambda m: f"move the {m.group('s')} to "),
     # "Discard the white one", "bin the red cube": removed from the task
     (re.compile(r"(?i)\b(?:discard|ditch|bin|scrap|dump|lose)\s+(?=the\s+(?:[a-z]+\s+)?(?:one|cube|block)\b)"), "remove "),
     # "Throw a third purple into the heap": one more cube of that colour added ('a third' had been read as a place)
