@@ -3333,3 +3333,19 @@ def test_forty_sixth_session_the_cubes_at_both_ends_removed(tmp_path, edit):
 ])
 def test_forty_sixth_session_the_structure_goes_somewhere_else(tmp_path, edit, expected):
     assert _meaning_after(tmp_path, "Pile five purple cubes in the back right corner.", [edit]) == expected
+
+
+@pytest.mark.parametrize("edit,expected", [
+    # steer_stranger29 p039: the task's structure named before the new one ("turn the pyramid into a tower of the same four
+    # cubes, white on top"): the roles had had no place (refused)
+    ("Turn the pyramid into a tower of the same four cubes, white on top.", (["stack(green,green,green,white)"], "pivot")),
+])
+def test_forty_sixth_session_a_structure_turned_into_another_with_a_role(tmp_path, edit, expected):
+    assert _meaning_after(tmp_path, "Build a pyramid with three green cubes on the bottom and a white cube on top.", [edit]) == expected
+
+
+def test_forty_sixth_session_a_role_of_a_pivot_leaves_the_rest_free(tmp_path):
+    fam = compiled("Build a pyramid of the red, green and blue cubes.", tmp_path, name="fam").path
+    r = steer(fam, "Turn the pyramid into a tower of the same three cubes, red on top.")
+    goal = Family(fam).schema(r.version).goal_predicate()
+    assert type(goal).__name__ == "AnchoredStack" and goal.top and not goal.bottom

@@ -288,10 +288,15 @@ def _pivot_with_roles(plan: EditPlan, ref: TaskSchema) -> tuple[TaskSchema, str,
     cubes = [a for a in ref.assets if a.kind != "goal_patch"]
     text = re.sub(r"^\s*#\s*", "", plan.text)
     nouns = list(re.finditer(rf"(?i)\b{STRUCTURE_RE}", text))
+    if len(nouns) == 2 and re.match(r"(?i)\s*(?:into|to)\s+(?:a|an|one)\s+(?:[a-z]+\s+)?$", text[nouns[0].end():nouns[1].start()]) \
+            and re.search(r"(?i)\b(?:the|that|this|your|our)\s+(?:[a-z]+\s+)?$", text[:nouns[0].start()]):
+        nouns = nouns[1:]  # "turn the pyramid into a tower of the same four cubes, white on top": the task's own, made another
     if len(nouns) != 1 or not cubes:
         return None  # ("turn the red row into a pyramid": which structure's cubes is the edit's own choice)
     noun = nouns[0]
     roles = text[noun.end():]
+    roles = re.sub(rf"(?i)^\s*(?:of|with|from)\s+(?:the\s+|all\s+)?same\s+(?:(?:\d+|{COUNT_WORD_RE})\s+)?(?:cubes|blocks|ones)\b\s*,?",
+                   "", roles)  # "... a tower of the same four cubes, white on top": the cubes the task has
     roles = roles[roles.index(":") + 1:] if ":" in roles else re.sub(r"(?i)^\s*(?:instead|now|please|then)\b", "", roles)
     roles = roles.strip(" ,;.!")
     if not (re.search(rf"(?i)\b(?:{COLOR_RE})\b|\breading\b|\bspell", roles) or re.search(r"\b[A-Z0-9]\b", roles)) \
