@@ -3349,3 +3349,14 @@ def test_forty_sixth_session_a_role_of_a_pivot_leaves_the_rest_free(tmp_path):
     r = steer(fam, "Turn the pyramid into a tower of the same three cubes, red on top.")
     goal = Family(fam).schema(r.version).goal_predicate()
     assert type(goal).__name__ == "AnchoredStack" and goal.top and not goal.bottom
+
+
+def test_forty_sixth_session_the_other_side_said_by_a_between(tmp_path):
+    """steer_stranger29 p026: "on the other side of the pink one, so the pink cube is between the cyan and the yellow": the
+    between places the new cube ('the other side' alone stays refused)."""
+    assert _meaning_after(tmp_path, "Place the cyan cube next to the pink cube.",
+                          ["Add a yellow cube on the other side of the pink one, so the pink cube is between the cyan and the "
+                           "yellow."]) == (["between(pink;cyan,yellow)", "next_to(cyan,pink)"], "extend")
+    fam = compiled("Place the cyan cube next to the pink cube.", tmp_path / "b", name="fam").path
+    with pytest.raises(BadInput):
+        steer(fam, "Add a yellow cube on the other side of the pink one.")

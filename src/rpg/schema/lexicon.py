@@ -4120,6 +4120,14 @@ EDIT_REWRITES: tuple[tuple[re.Pattern, str | Callable[[re.Match], str]], ...] = 
                 r"(?:goes|should\s+go|must\s+go|needs\s+to\s+go|moves|should\s+move|belongs|should\s+be|is\s+to\s+go)\s+(?:to|in|into|at|on)\s+"
                 r"(?=the\s+(?:(?:far|very)\s+)?(?:front|back|rear|left|right|middle|centre|center)\b)"),
      lambda m: f"move the {m.group('s')} to "),
+    # "Add a yellow cube on the other side of the pink one, so the pink cube is between the cyan and the yellow": the
+    # between said after it places the new cube ('the other side' had been refused as a contrast)
+    (re.compile(rf"(?i)\s+on\s+the\s+other\s+side\s+of\s+the\s+(?P<c>{COLOR_RE})\s+(?:one|cube|block)\s*,?\s*so\s+(?:that\s+)?"
+                rf"(?=the\s+(?P=c)\s+(?:one|cube|block)\s+(?:is|sits|stands|ends\s+up)\s+between\s+the\s+(?:{COLOR_RE})\b)"),
+     " so "),
+    # "... between the cyan and the yellow": each cube said with its noun (the second bare colour had not been read)
+    (re.compile(rf"(?i)\bbetween\s+the\s+(?P<a>{COLOR_RE})\s+and\s+the\s+(?P<b>{COLOR_RE})(?=\s*(?:[.!;]|$))"),
+     lambda m: f"between the {m.group('a')} cube and the {m.group('b')} cube"),
     # "Discard the white one", "bin the red cube": removed from the task
     (re.compile(r"(?i)\b(?:discard|ditch|bin|scrap|dump|lose)\s+(?=the\s+(?:[a-z]+\s+)?(?:one|cube|block)\b)"), "remove "),
     # "Throw a third purple into the heap": one more cube of that colour added ('a third' had been read as a place)
