@@ -8528,3 +8528,22 @@ def test_forty_sixth_session_a_place_between_a_list_and_its_ends(text, expected)
 ])
 def test_forty_sixth_session_sides_and_ends_of_a_structure(text, expected):
     assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+@pytest.mark.parametrize("text, end", [
+    # a tower said by one end and "the other N (...) in any order above/under it" (stranger51/54/58: no task had been found)
+    ("Tower of four: yellow on the bottom, and the other three (red, pink, brown) in any order above it.", "bottom"),
+    ("Tower of three: blue on top; the other two, red and white, can go in either order under it.", "top"),
+])
+def test_forty_sixth_session_a_tower_of_one_end_and_the_others_in_any_order(text, end):
+    goal = check_feasibility(parse(text)).goal_predicate()
+    assert type(goal).__name__ == "AnchoredStack" and getattr(goal, end) and not getattr(goal, {"top": "bottom", "bottom": "top"}[end])
+
+
+@pytest.mark.parametrize("text", [
+    "Tower of four cubes: the gray one at the base, the other three (red, pink) in any order above it.",  # two listed of three
+    "Tower of three: blue on top; the other two, red and white, can go in either order above it.",  # above the top
+])
+def test_forty_sixth_session_a_tower_of_one_end_that_does_not_agree_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

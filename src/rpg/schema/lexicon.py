@@ -5491,7 +5491,30 @@ def _relation_then_structure(m: re.Match) -> bool:
     return bool(first) and bool(second) and not first & second
 
 
+def _other_cubes_in_any_order(m: re.Match) -> str:
+    """"Tower of four: yellow on the bottom, and the other three (red, pink, brown) in any order above it" -> "build a
+    tower of the yellow, red, pink and brown cubes with the yellow cube at the bottom"; as said where the count, the end and
+    the side the others stand on do not agree (the other three above a top cube)."""
+    listed = re.findall(rf"\b(?:{COLOR_RE})\b", m.group("l"))
+    n, k = (int(NUMBER_WORDS.get(x, x)) for x in (m.group("n"), m.group("k")))
+    above = m.group("w") in ("above", "over") or m.group("w").startswith("on")
+    if n != k + 1 or len(listed) != k or above != (m.group("end") in ("bottom", "base")) or m.group("e") in listed:
+        return m.group(0)
+    where = "at the bottom" if above else "on top"
+    return f"build a tower of the {', '.join([m.group('e'), *listed[:-1]])} and {listed[-1]} cubes with the {m.group('e')} cube {where}" \
+        + (m.group("stop") or ".")
+
+
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "Tower of four: yellow on the bottom, and the other three (red, pink, brown) in any order above it": the tower of
+    # those cubes with its one end said (no task had been found)
+    (re.compile(rf"^(?:(?:build|make|stack)\s+)?(?:a\s+)?(?:tower|stack)\s+of\s+(?P<n>\d+|{COUNT_WORD_RE})(?:\s+(?:cubes|blocks))?\s*[:,]\s*"
+                rf"(?:the\s+)?(?P<e>{COLOR_RE})(?:\s+(?:one|cube|block))?\s+(?:is\s+|goes\s+)?(?:on|at)\s+(?:the\s+)?(?:very\s+)?(?P<end>bottom|base|top)"
+                rf"\s*[,;]\s*(?:and\s+)?the\s+other\s+(?P<k>\d+|{COUNT_WORD_RE})\s*(?:\(\s*|,\s*)"
+                rf"(?P<l>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})|\s+and\s+(?:{COLOR_RE}))*)\s*\)?\s*,?\s*"
+                r"(?:can\s+go\s+|go\s+|are\s+|stand\s+|sit\s+)?in\s+(?:any|either)\s+order\s+"
+                r"(?P<w>above|over|on\s+top\s+of|under|below|beneath|underneath)\s+(?:it|them)\s*(?P<stop>[.!]?)\s*$"),
+     lambda m: _other_cubes_in_any_order(m)),
     # "a tower of the cyan, orange and white cubes on the right side, cyan at the bottom and white at the top": the place
     # said after the ends (the place between the list and its ends had cut the list from them: the orange cube refused)
     (re.compile(rf"(?P<head>\b(?:tower|stack|column|row|line)\s+of\s+(?:the\s+)?(?:{COLOR_RE})(?:\s*,\s*(?:{COLOR_RE}))*\s*,?\s+and\s+"
