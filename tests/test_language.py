@@ -8547,3 +8547,9 @@ def test_forty_sixth_session_a_tower_of_one_end_and_the_others_in_any_order(text
 def test_forty_sixth_session_a_tower_of_one_end_that_does_not_agree_refused(text):
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
+
+
+def test_forty_sixth_session_a_row_of_one_end_and_the_others_in_any_order():
+    # stranger58: "the other two, orange and cyan, in any order" after the row's left end had been refused
+    assert meaning(check_feasibility(parse("Row of three: white on the far left, then the other two, orange and cyan, in any "
+                                           "order."))) == ["line[left_end](white,cyan,orange)"]

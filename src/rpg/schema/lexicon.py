@@ -5493,21 +5493,33 @@ def _relation_then_structure(m: re.Match) -> bool:
 
 def _other_cubes_in_any_order(m: re.Match) -> str:
     """"Tower of four: yellow on the bottom, and the other three (red, pink, brown) in any order above it" -> "build a
-    tower of the yellow, red, pink and brown cubes with the yellow cube at the bottom"; as said where the count, the end and
+    tower of the yellow, red, pink and brown cubes with the yellow cube at the bottom" ("Row of three: white on the far
+    left, then the other two, ...": a row with that end); as said where the count, the end and
     the side the others stand on do not agree (the other three above a top cube)."""
     listed = re.findall(rf"\b(?:{COLOR_RE})\b", m.group("l"))
     n, k = (int(NUMBER_WORDS.get(x, x)) for x in (m.group("n"), m.group("k")))
+    cubes = f"the {', '.join([m.group('e'), *listed[:-1]])} and {listed[-1]} cubes"
+    if n != k + 1 or len(listed) != k or m.group("e") in listed:
+        return m.group(0)
+    if m.group("end") in ("left", "right"):  # a row: that end said
+        return f"make a row of {cubes} with the {m.group('e')} cube at the {m.group('end')} end" + (m.group("stop") or ".")
     above = m.group("w") in ("above", "over") or m.group("w").startswith("on")
-    if n != k + 1 or len(listed) != k or above != (m.group("end") in ("bottom", "base")) or m.group("e") in listed:
+    if above != (m.group("end") in ("bottom", "base")):
         return m.group(0)
     where = "at the bottom" if above else "on top"
-    return f"build a tower of the {', '.join([m.group('e'), *listed[:-1]])} and {listed[-1]} cubes with the {m.group('e')} cube {where}" \
-        + (m.group("stop") or ".")
+    return f"build a tower of {cubes} with the {m.group('e')} cube {where}" + (m.group("stop") or ".")
 
 
 LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "Tower of four: yellow on the bottom, and the other three (red, pink, brown) in any order above it": the tower of
     # those cubes with its one end said (no task had been found)
+    # "Row of three: white on the far left, then the other two, orange and cyan, in any order": a row with that end said
+    (re.compile(rf"^(?:(?:build|make|lay\s+out)\s+)?(?:a\s+)?(?:row|line)\s+of\s+(?P<n>\d+|{COUNT_WORD_RE})(?:\s+(?:cubes|blocks))?\s*[:,]\s*"
+                rf"(?:the\s+)?(?P<e>{COLOR_RE})(?:\s+(?:one|cube|block))?\s+(?:is\s+|goes\s+)?(?:on|at)\s+the\s+(?:far\s+|very\s+)?"
+                r"(?P<end>left|right)(?:\s+end)?\s*[,;]\s*(?:and\s+)?(?:then\s+)?the\s+other\s+"
+                rf"(?P<k>\d+|{COUNT_WORD_RE})\s*(?:\(\s*|,\s*)(?P<l>(?:{COLOR_RE})(?:\s*,\s*(?:and\s+)?(?:{COLOR_RE})|\s+and\s+(?:{COLOR_RE}))*)"
+                r"\s*\)?\s*,?\s*(?:can\s+go\s+|go\s+|are\s+|stand\s+|sit\s+)?in\s+(?:any|either)\s+order\s*(?P<stop>[.!]?)\s*$"),
+     lambda m: _other_cubes_in_any_order(m)),
     (re.compile(rf"^(?:(?:build|make|stack)\s+)?(?:a\s+)?(?:tower|stack)\s+of\s+(?P<n>\d+|{COUNT_WORD_RE})(?:\s+(?:cubes|blocks))?\s*[:,]\s*"
                 rf"(?:the\s+)?(?P<e>{COLOR_RE})(?:\s+(?:one|cube|block))?\s+(?:is\s+|goes\s+)?(?:on|at)\s+(?:the\s+)?(?:very\s+)?(?P<end>bottom|base|top)"
                 rf"\s*[,;]\s*(?:and\s+)?the\s+other\s+(?P<k>\d+|{COUNT_WORD_RE})\s*(?:\(\s*|,\s*)"
