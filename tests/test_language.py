@@ -8553,3 +8553,10 @@ def test_forty_sixth_session_a_row_of_one_end_and_the_others_in_any_order():
     # stranger58: "the other two, orange and cyan, in any order" after the row's left end had been refused
     assert meaning(check_feasibility(parse("Row of three: white on the far left, then the other two, orange and cyan, in any "
                                            "order."))) == ["line[left_end](white,cyan,orange)"]
+
+
+@pytest.mark.parametrize("text", ["Make two rows: one of three red cubes and one of three blue cubes.",
+                                  "Make two rows: one of three red cubes, one of three blue cubes."])
+def test_forty_sixth_session_two_rows_each_said_after_a_colon(text):
+    # stranger58: "two rows: one of ..." had found no task
+    assert sorted(meaning(check_feasibility(parse(text)))) == ["line(blue,blue,blue)", "line(red,red,red)"]

@@ -6289,9 +6289,9 @@ STRUCTURE_NOUN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      r"\1 "),
     # "two rows: three red cubes at the front and three blue cubes at the back", "build two rows, one of three red cubes
     # and one of three blue cubes": a row of each (refused before: no structure read); two rows, two groups said
-    (re.compile(rf"^\s*(?:(?:make|build|form|create)\s+)?(2|two)\s+(rows|lines)\s*(?::|,\s*one\s+of)\s*"
+    (re.compile(rf"^\s*(?:(?:make|build|form|create)\s+)?(2|two)\s+(rows|lines)\s*(?::\s*(?:one\s+of\s+)?|,\s*one\s+of)\s*"
                 rf"(?P<a>\d+|{COUNT_WORD_RE})\s+(?P<ca>{COLOR_RE})\s+(?:cubes|blocks)(?P<pa>\s+(?:at|in|along)\s+the\s+(?:front|back|left|right)(?:\s+(?:side|edge))?)?"
-                rf"\s*,?\s+and\s+(?:one\s+of\s+)?(?P<b>\d+|{COUNT_WORD_RE})\s+(?P<cb>{COLOR_RE})\s+(?:cubes|blocks)"
+                rf"(?:\s*,?\s+and\s+|\s*[,;]\s*)(?:one\s+of\s+)?(?P<b>\d+|{COUNT_WORD_RE})\s+(?P<cb>{COLOR_RE})\s+(?:cubes|blocks)"
                 rf"(?P<pb>\s+(?:at|in|along)\s+the\s+(?:front|back|left|right)(?:\s+(?:side|edge))?)?(?=\s*[.!]?\s*$)"),
      lambda m: f"make a {m.group(2)[:-1]} of {m.group('a')} {m.group('ca')} cubes{m.group('pa') or ''} and a {m.group(2)[:-1]} of "
                f"{m.group('b')} {m.group('cb')} cubes{m.group('pb') or ''}"),
