@@ -8560,3 +8560,14 @@ def test_forty_sixth_session_a_row_of_one_end_and_the_others_in_any_order():
 def test_forty_sixth_session_two_rows_each_said_after_a_colon(text):
     # stranger58: "two rows: one of ..." had found no task
     assert sorted(meaning(check_feasibility(parse(text)))) == ["line(blue,blue,blue)", "line(red,red,red)"]
+
+
+def test_forty_sixth_session_a_person_named_after_a_thing_is_no_such_thing():
+    """"archers" are close to "arch" in the embedding (a shape the domain does not build): a person named after a thing is
+    not refused as that thing; "arches" still are."""
+    from rpg.schema import senses
+
+    assert senses.sense("archers").kind == "unknown"
+    assert senses.sense("arches").kind == "shape"
+    with pytest.raises(BadInput):
+        check_feasibility(parse("Build an arch of five cubes."))

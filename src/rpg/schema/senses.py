@@ -86,7 +86,10 @@ def sense(word: str) -> Sense:
     e = _embed([word])[0]
     s_mean = float((mean @ e).max())
     best = max(((float((x @ e).max()), k, ws[int((x @ e).argmax())]) for k, (ws, x) in kinds.items()))
-    if best[0] >= lexicon.SENSE_MIN_SIMILARITY and best[0] >= s_mean:
+    agent = any(lemma != best[2] and lemma.startswith(best[2]) and lemma[len(best[2]):] in ("er", "ers", "ist", "ists")
+                for lemma in {word, *lexicon.lemmas(word)}) and lexicon.is_dictionary_word(word)
+    if best[0] >= lexicon.SENSE_MIN_SIMILARITY and best[0] >= s_mean and not agent:  # ("archers" are no arch: a person
+        # named after the thing, whose embedding is close to it)
         return Sense(word, best[1], best[2], best[0])
     s_ign = ign @ e
     pos = lexicon.parts_of_speech(word)
