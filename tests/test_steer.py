@@ -3360,3 +3360,24 @@ def test_forty_sixth_session_the_other_side_said_by_a_between(tmp_path):
     fam = compiled("Place the cyan cube next to the pink cube.", tmp_path / "b", name="fam").path
     with pytest.raises(BadInput):
         steer(fam, "Add a yellow cube on the other side of the pink one.")
+
+
+@pytest.mark.parametrize("base,edit,expected", [
+    # steer_stranger29: "lay", "refactor", "redraw" name a new structure of the task's cubes (each had been refused: no
+    # change read, or an action); "the same three letters": the task's own count, said again
+    ("Stack the letter cubes B, I and D from bottom to top.", "Rebid: lay the same three letters in a row, left to right, spelling BID.",
+     "line[left_to_right](B,I,D)"),
+    ("Build a pyramid with three gray cubes on the bottom and a black cube on top.", "Refactor it into a row of the same four cubes.",
+     "line(black,gray,gray,gray)"),
+    ("Put the letter cubes P, A and M in a row from left to right.", "Redraw it as a tower: P at the bottom, then A, then M on top.",
+     "stack(P,A,M)"),
+])
+def test_forty_sixth_session_other_verbs_of_a_new_structure(tmp_path, base, edit, expected):
+    atoms, intent = _meaning_after(tmp_path, base, [edit])
+    assert expected in atoms and intent == "pivot"
+
+
+def test_forty_sixth_session_the_same_count_that_is_not_the_tasks_refused(tmp_path):
+    fam = compiled("Stack the letter cubes B, I and D from bottom to top.", tmp_path, name="fam").path
+    with pytest.raises(BadInput):
+        steer(fam, "Lay the same four letters in a row, left to right, spelling BID.")

@@ -504,6 +504,10 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
         raise SteerError(f"v{reference} ({ref_schema.goal_summary}) is not a structure the builtin steering edits in place; "
                          "state the whole new task in the edit, or use --model")
     numbers = unread_numbers(plan)
+    same = {int(NUMBER_WORDS.get(m.group(1).lower(), m.group(1))) for m in re.finditer(
+        rf"(?i)\bsame\s+(\d+|{COUNT_WORD_RE})\s+(?:letters|digits|numbers|cubes|blocks|ones)\b", plan.text)}
+    numbers = [n for n in numbers if not (int(n) in same and int(n) == len(ref_spec.items))]  # "lay the same three letters in
+    # a row" of three: the task's own count, said again
     if numbers and all(o.op == "add" for o in plan.ops):  # "same but four cubes, put a yellow one on the very top" of a
         # tower of three: the count the addition makes, said again
         try:
