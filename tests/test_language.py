@@ -1793,6 +1793,10 @@ def test_two_towers_of_unnamed_cubes_said_in_one_sentence_are_two_unordered_towe
     ("put the A and the B in a line", ["line(A,B)"]),
     ("Place the 7, 8 and 9 cubes side by side in a row along the back of the table.", ["line(7,8,9)@back"]),
     ("Put the digits 1, 2 and 3 in a row in order.", ["line[sequence](1,2,3)"]),
+    # a word that may place a listed label in its row keeps the listed order (a hostile probe: the roles had been dropped)
+    ("Put the letter cubes X, Y and Z in a row with Y at the centre", ["line[sequence](X,Y,Z)"]),
+    ("Put the digit cubes 3, 1 and 2 in a row: 3, then 1, then 2", ["line[sequence](3,1,2)"]),
+    ("Put the digit cubes 3, 1 and 2 in a row, in this exact sequence", ["line[sequence](3,1,2)"]),
 ])
 def test_label_cubes_listed_one_by_one(text, expected):
     assert meaning(parse(text)) == expected
@@ -8461,6 +8465,15 @@ def test_forty_sixth_session_a_label_pyramid_judges_the_layers_said():
     "Make a pyramid of letter cubes A, B and C with A and B on top.",  # a layer given more than it holds
     "A pyramid of the letter cubes A, B, C, D, E and F with F on top.",  # five labels whose layers are unsaid
     "Build a pyramid of six cubes from the letter cubes A, B and C.",  # a count the labels do not make
+    # words of layers or orders no layer role reads (a hostile probe: each had been dropped, any cube in any site)
+    "Build a pyramid of the letter cubes A, B and C with A resting upon B and C",
+    "Build a pyramid of the letter cubes A, B and C; the top cube is A",
+    "Build a pyramid: first layer A, B and C; second layer D and E; third layer F",
+    "Lay the letter cubes A, B and C flat on the table in a triangle, A at the top",
+    "Build a 3D pyramid: the letter cubes A, B, C and D on the bottom and E on top",
+    "Build a pyramid of the letter cubes A, B, C, D, E and F, but use only A, B and C",
+    "Build a pyramid of the letters A, B and C so it reads CAB",
+    "Build a pyramid of the letter cubes A, B and C on top of each other",
 ])
 def test_forty_sixth_session_a_label_pyramid_said_beyond_its_layers_refused(text):
     with pytest.raises(BadInput):
@@ -8502,8 +8515,12 @@ def test_forty_sixth_session_a_voice_label_with_a_structure_noun(text, expected)
     # a label's structure that is not the task's ("contour lines" over a wall) or that says more (a colour)
     "Contour lines: build a wall with four green cubes on the bottom layer and four yellow cubes on top.",
     "Red tower: stack the blue cube on the green cube.",
+    "Twin towers: stack a red cube on a blue cube.",  # a hostile probe: one tower had been built, the label dropped
+    "Parallel rows: put three red cubes in a row.",
+    "Countdown row: put the digit cubes 3, 1 and 2 in a row.",
 ])
 def test_forty_sixth_session_a_voice_label_that_may_say_the_task_stays(text):
+    # (also "Twin towers", "Parallel rows", "Countdown row": a label that may count or order; see the parametrize list)
     with pytest.raises(BadInput):
         check_feasibility(parse(text))
 
@@ -8571,3 +8588,12 @@ def test_forty_sixth_session_a_person_named_after_a_thing_is_no_such_thing():
     assert senses.sense("arches").kind == "shape"
     with pytest.raises(BadInput):
         check_feasibility(parse("Build an arch of five cubes."))
+
+
+def test_forty_sixth_session_layer_words_that_are_no_layers_keep_their_reading():
+    # a hostile probe: a tower "by the wall" listed from its top had been read from the bottom; a pyramid's base "placed
+    # in the middle" had lost the table's centre
+    assert meaning(check_feasibility(parse("Stack three cubes into a tower by the wall: the top is red, then blue, then "
+                                           "green."))) == ["stack(green,blue,red)"]
+    assert meaning(check_feasibility(parse("Build a pyramid of six blue cubes, its base placed in the middle"))) == [
+        "pyramid(blue,blue,blue,blue,blue,blue)@center"]

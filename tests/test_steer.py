@@ -3307,12 +3307,6 @@ def test_forty_sixth_session_a_label_cube_named_after_its_noun_is_added(tmp_path
                           [edit]) == expected
 
 
-def test_forty_sixth_session_numbers_that_go_up_sort_the_row(tmp_path):
-    """steer_stranger29 p034: "Sort them so the numbers go up from left to right" had changed nothing."""
-    assert _meaning_after(tmp_path, "Put the digit cubes 7, 5 and 3 in a row from left to right.",
-                          ["Sort them so the numbers go up from left to right."]) == (["line[left_to_right](3,5,7)"], "modify")
-
-
 def test_forty_sixth_session_a_letter_cube_named_after_its_noun_is_added(tmp_path):
     assert _meaning_after(tmp_path, "Put the letter cubes A, K and Q in a row from left to right.",
                           ["Add the letter cube T at the right end."]) == (["line[left_to_right](A,K,Q,T)"], "extend")

@@ -1238,9 +1238,15 @@ THIS_ORDER_RE = re.compile(r"\b(?:this|that|the\s+following|the\s+given)\s+(?:or
 """"In this order", "in that order": an order the instruction must list (two or more colours or
 labels, before or after); with none it is one the speaker shows, which a task cannot know."""
 
-LISTED_ORDER_SAID_RE = re.compile(r"\b(?:in\s+order|in\s+sequence|one\s+after\s+(?:the\s+)?(?:other|another)|consecutive(?:ly)?|in\s+turn)\b")
+LISTED_ORDER_SAID_RE = re.compile(r"\b(?:in\s+order|in\s+(?:a\s+|this\s+|that\s+|the\s+)?(?:exact\s+)?sequence|sequential\w*|successive\w*"
+                                  r"|one\s+after\s+(?:the\s+)?(?:other|another)|consecutive(?:ly)?|in\s+turn|respectively)\b")
 """Words that keep a listed row's order with no direction said ("the digits 1, 2 and 3 in a row, in order"), as
 :data:`THIS_ORDER_RE` does."""
+
+ROW_PLACE_WORD_RE = re.compile(r"\b(?:then|first|last|next(?!\s+to\b)|number\s+line|middle|cent(?:er|re)|between|order\w*|exact\w*|left\w*|right\w*|ends?"
+                               r"|before|after|follow\w*|precede\w*)\b")
+"""Words that may place a listed label cube in its row ("3, then 1, then 2", "with 1 in the middle", "Y at the centre"):
+a row of listed labels that says any keeps the listed order (its roles are no reader's; an unordered row had dropped them)."""
 
 OTHER_RE = re.compile(r"\bthe\s+other\s+(?:[a-z]+\s+)?(?:blocks?|cubes?|ones?|bricks?|boxes|box)\b")
 """"The other block": it picks a cube by contrast with one the instruction set apart before it
@@ -3230,6 +3236,12 @@ LABEL_STRUCTURE_KINDS: dict[str, str] = {w: k.name for k in STRUCTURE_KINDS.valu
 noun is the voice's own where its task names that kind too, or where it only qualifies a thing of the voice's world
 ("Grid reference: ...", "Tower captain speaking: ...")."""
 
+LABEL_STRUCTURE_HAZARD_RE = re.compile(r"twins?|double|pairs?|duo|trio|parallel|nested|stacked|count\w*|ordered|sorted|revers\w*"
+                                       r"|alphabet\w*|rainbow|numbers?|numbered|words?|upper|lower|bottom|top|left|right|front|back"
+                                       r"|middle|first|second|third|last|tall|short|long|big|small|little|tiny|wide|high|low|main|other")
+"""Words of a voice's label beside a structure noun that may count, order, size or place the structure ("Twin towers",
+"Rainbow row", "Countdown row", "Upper tower"): such a label is left whole (:func:`rpg.schema.reading._label_structure_masked`)."""
+
 STRUCTURE_KIND_SAID_RES: dict[str, re.Pattern] = {
     name: re.compile(r"\b(?:" + "|".join(f"{w}(?:s|ed|ing)?" for w in (*k.words, *k.described_by)) + r")\b")
     for name, k in STRUCTURE_KINDS.items() if k.words}
@@ -3653,6 +3665,14 @@ LABEL_RELATED_RE = re.compile(r"\b(?:on(?:\s+top\s+of)?|onto|atop|above|over|und
                               r"(?:(?:digit|letter|number)\s+)?" + LABEL_TOKEN)
 """A label cube related to another ("3 on top of 1", "A next to B"): what no layer role says."""
 
+LABEL_PYRAMID_UNREAD_RE = re.compile(
+    r"\b(?:upon|crown\w*|tops?|topped|summit|capstone|peak|apex|upper\w*|lower\w*|highest|lowest|levels?|layers?|rows?|tiers?|base"
+    r"|bottom|first|second|third|reads?|reading|spell\w*|order\w*|sequence|flat|triangle\w*|3d|3-d|three-dimensional|only|then"
+    r"|move\w*|away|each\s+other|higher|above|below|under\w*|over|beneath|left|right|front|back|middle|cent(?:er|re)|between|next"
+    r"|beside|near|far|except|but|instead|actually|made|not|no|without)\b")
+"""Words of a label pyramid's text that no layer role it reads (:data:`LABEL_LAYER_ROLE_RES`) holds ("with A resting upon B
+and C", "the top cube is A", "first layer A, B and C", "so it reads CAB", "flat in a triangle"): refused, never dropped."""
+
 LABEL_COUNT_AFTER_RE = re.compile(r"\s*(?:-|\s+(?:[a-z]+\s+){0,2}(?:blocks|cubes|ones|layers|levels|tiers|rows|stor(?:ey|y|ie)s?|high|wide|tall)\b)")
 """Words after a digit that make it a count ("3 blocks", "2 layers", "3-2-1"), not a digit cube's name."""
 
@@ -3672,8 +3692,8 @@ ROLE_LIST_BEFORE = re.compile(r"\b(?:with|so\s+that|such\s+that|where)\s+(?:[^.;
 green in the middle, and blue on the right"; "so that orange is leftmost, purple is in the
 middle"), not a place on the table."""
 
-LAYER_LIST_BEFORE = re.compile(r"(?:(?:,|\band|\bthen)\s+(?:the\s+|a\s+|an\s+)?|\b(?:bottom|base)(?:\s+(?:layer|row|level|tier))?\s+)"
-                               r"(?:(?:\d+\s+)?[a-z]+|\d+)(?:\s+(?:blocks?|cubes?|ones?))?\s*$")
+LAYER_LIST_BEFORE = re.compile(r"(?:(?:,|\band|\bthen)\s+(?:the\s+|a\s+|an\s+)?(?:(?:\d+\s+)?[a-z]+|\d+)"
+                               r"|\b(?:bottom|base)(?:\s+(?:layer|row|level|tier))?\s+\d+)(?:\s+(?:blocks?|cubes?|ones?))?\s*$")
 LAYERED_TEXT = re.compile(r"\b(?:pyramid|wall|tower|stack)s?\b.*\b(?:base|bottom|top)\b|\b(?:base|bottom|top)\b.*\b(?:pyramid|wall|tower|stack)s?\b")
 """A colour or a count in a list of layers before "in the middle" ("3 red at the base, 2 green in the
 middle", "three on the bottom, two in the middle", "3 on the bottom 2 in the middle") in a text about a layered structure: "the middle" is then its middle layer, not the

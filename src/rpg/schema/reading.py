@@ -462,11 +462,14 @@ def _label_structure_masked(chunk: str, task: str) -> str:
     if re.search(rf"\d|\b(?:{lexicon.COUNT_WORD_RE})\b|[\[\]=]", chunk.lower()):
         return chunk  # "pile-5 [region=back]": a count or a spec of the task's own, to be read
     words = re.findall(r"[A-Za-z][A-Za-z'\-]*", chunk)
+    if any(w.lower() in VOCAB or lexicon.LABEL_STRUCTURE_HAZARD_RE.fullmatch(w.lower()) for w in words
+           if w.lower().removesuffix("s") not in lexicon.LABEL_STRUCTURE_KINDS):
+        return chunk  # "Rainbow row", "Twin towers", "Bottom row", "Countdown row": a word that may order, count or place
     out = chunk
     for i, w in enumerate(words):
-        kind = lexicon.LABEL_STRUCTURE_KINDS.get(w.lower().removesuffix("s"))
+        kind = lexicon.LABEL_STRUCTURE_KINDS.get(w.lower())
         if kind is None:
-            continue
+            continue  # (a plural, "Twin towers", "Parallel rows", says how many: the label stays)
         after = words[i + 1].lower() if i + 1 < len(words) else ""
         qualifies = bool(after) and after.removesuffix("s") not in VOCAB and "NOUN" in lexicon.parts_of_speech(after) \
             and not lexicon.VOICE_CHUNK_HAZARD_RE.search(after) and not lexicon.FRAME_NOUN_RE.fullmatch(after)  # "Pyramid
@@ -1797,7 +1800,8 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
                 text = text[:said[0].start()] + f"with {roles['bottom']} at the bottom and {roles['top']} on top" + rest
             else:
                 text = text[:said[0].start()] + "from bottom to top: " + ", ".join(roles[r] for r in order) + rest
-    if not re.search(r"\b(?:pyramids?|walls?)\b", text):  # a pyramid's "the base is blue, blue, green" is its bottom layer
+    if not re.search(r"\b(?:pyramids?|walls?)\b", text) or re.search(r"\b(?:towers?|stack\w*|columns?)\b", text):  # a pyramid's
+        # "the base is blue, blue, green" is its bottom layer (a tower "by the wall" keeps its list from the top)
         text = lexicon.rewrite(lexicon.TOP_LIST_REWRITES, text)
     if re.search(r"\b(?:rows?|lines?|line\s+up)\b", text):
         text = lexicon.rewrite(lexicon.ROW_ROLE_REWRITES, text)

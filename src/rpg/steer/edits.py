@@ -641,13 +641,12 @@ def read_ops(t: str) -> list[Op]:
         # "smallest on top", "largest at the bottom": the order of the task's labels, by the end where one of them stands
         low_first = (ends.group("v") == "smallest") == bool(re.search(r"bottom|base|left", ends.group("at")))
         ops.append(Op("ordering", {"key": "auto", "descending": not low_first}))
-    elif re.search(r"\b(?:ascending|descending|increasing|decreasing|increases?|decreases?)\b|\b(?:largest|biggest|highest|smallest|lowest)\s+(?:one\s+)?first\b"
-                   r"|\b(?:numbers?|digits?|labels?|values?)\s+(?:go|goes|going|run|runs|count|counts)\s+(?:up|down)\b"  # "so the numbers go up"
+    elif re.search(r"\b(?:ascending|descending|increasing|decreasing)\b|\b(?:largest|biggest|highest|smallest|lowest)\s+(?:one\s+)?first\b"
                    r"|\b(?:high|low)(?:est)?\s+to\s+(?:low|high)(?:est)?\b"
                    r"|\b(?:largest|biggest|greatest|smallest)\s+to\s+(?:the\s+)?(?:smallest|largest|biggest|greatest)\b", t):
         # "descending now", "largest first", "largest to smallest instead": the order of the task's own labels
         ops.append(Op("ordering", {"key": "auto", "descending": bool(re.search(
-            r"\b(?:decreasing|descending|decreases?|largest|biggest|highest|greatest|high(?:est)?\s+to\s+low|(?:go|goes|going|run|runs|count|counts)\s+down)\b"
+            r"\b(?:decreasing|descending|largest|biggest|highest|greatest|high(?:est)?\s+to\s+low)\b"
             r"(?!\s+(?:one\s+)?last\b)", re.sub(r"\b(?:smallest|lowest)\s+to\s+(?:the\s+)?(?:largest|biggest|greatest|highest)\b",
                                                    "ascending", t)))}))
     elif re.search(r"\b(?:sort|order|arrange|group)\w*\s+(?:them\s+|it\s+)?by\s+(?:different\s+|their\s+)?colou?rs?\b|\bcolou?r gradient\b|\brainbow\b|\b(?:each|every)\s+(?:row|layer|level)\b[^.;]*\bdifferent colou?r", t):

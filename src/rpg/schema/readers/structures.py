@@ -393,7 +393,8 @@ def _label_pyramid(f: Features, b: Builder) -> bool:
     rest = text
     for pattern in lexicon.LABEL_LAYER_ROLE_RES:
         rest = pattern.sub(" ", rest)
-    related = lexicon.LABEL_RELATED_RE.search(rest)
+    related = lexicon.LABEL_RELATED_RE.search(rest) or lexicon.LABEL_PYRAMID_UNREAD_RE.search(
+        re.sub(r"@region_\w+", " ", mark_regions(rest.lower())))
     if related or ordering_of(f) or re.search(rf"\b(?:{lexicon.SORT_END_WORD}|ascending|descending|increasing|decreasing|sorted|"
                                               r"order\w*|alphabetical\w*|revers\w*|numerical\w*)\b", f.text):  # "with 3 on top of 1", "sorted ascending": more than the layers (it had been dropped)
         raise ParseError(f"\"{f.original[:80]}\" says more of a pyramid's label cubes than the layers they stand in "
@@ -1141,7 +1142,8 @@ def recognize_ordered_line(f: Features, b: Builder) -> bool:
             b.preds.append(InLine(tuple(names), axis=line_axis(direction), order=direction))
         elif re.search(r"\bin any order\b", f.text):  # "the letter cubes B, A and T in a row, any order": which cubes, not where
             b.preds.append(InLine(tuple(names), axis=None, order=None))
-        elif lexicon.THIS_ORDER_RE.search(f.text) or lexicon.LISTED_ORDER_SAID_RE.search(f.text):
+        elif lexicon.THIS_ORDER_RE.search(f.text) or lexicon.LISTED_ORDER_SAID_RE.search(f.text) \
+                or lexicon.ROW_PLACE_WORD_RE.search(f.text):
             # "the letters Q, R and S in a row, in that order": the listed order from either end, no reading direction said
             b.preds.append(InLine(tuple(names), axis=None, order="sequence"))
         else:  # "put the A and the B in a line", "the 7, 8 and 9 cubes side by side in a row": which cubes, not where (the
