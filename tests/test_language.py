@@ -8455,7 +8455,7 @@ def test_forty_sixth_session_a_label_pyramid_judges_the_layers_said():
     layers = [p for p in schema.goal_predicate().walk() if type(p).__name__ == "InLayers"]
     assert len(layers) == 1
     by_label = {a.name: a.label for a in schema.assets}
-    assert {by_label[n]: k for n, k in zip(layers[0].objects, layers[0].levels)} == {"5": 0, "6": 0, "7": 1}
+    assert {by_label[n]: k for n, k in zip(layers[0].objects, layers[0].levels, strict=True)} == {"5": 0, "6": 0, "7": 1}
 
 
 @pytest.mark.parametrize("text", [
