@@ -3735,6 +3735,10 @@ two, "the larger number")."""
 SORT_END_NOUN = r"(?:\s+(?:number|digit|value|label|letter|one|cube|block))?"
 """The noun that may follow :data:`SORT_END_WORD` ("largest number", "smallest one")."""
 
+LABEL_PYRAMID_ORDER_RE = re.compile(rf"\b(?:{SORT_END_WORD}|ascending|descending|increasing|decreasing|sorted|order\w*"
+                                    r"|alphabetical\w*|revers\w*|numerical\w*)\b")
+"""An order said of a label pyramid's cubes ("sorted ascending", "smallest up top"): none its layers read (refused)."""
+
 SORT_END_BEFORE = re.compile(r"\b(?:the\s+)?" + SORT_END_WORD + SORT_END_NOUN + r"(?:\s+(?:is|goes|sits))?\s*$")
 """Text before a bare side that makes it the end of a sorted line ("digits 4, 2 and 7 in a row,
 largest on the left"): the sort's largest or smallest label, not a place on the table."""

@@ -457,8 +457,10 @@ def _label_structure_masked(chunk: str, task: str) -> str:
     written as "thing", for :func:`_voice_chunk` to weigh the rest: one its ``task`` names the same kind of ("Tungsten
     tower: stack a gray cube on a black cube"), or one that qualifies a noun of the voice's world that the parser does
     not read ("Grid reference: ...", "Tower captain speaking: ...") and that names no task ("Pyramid task: ..." names
-    its structure).  Any other stays ("Contour lines: build a wall": the label's lines are no wall), and a label with a
-    count or a spec ("pile-5 [region=back]: ...") is left whole."""
+    its structure).  Any other stays ("Contour lines: build a wall": the label's lines are no wall), and so does a plural
+    ("Twin towers": how many).  A label with a count or a spec ("pile-5 [region=back]: ..."), or with another word the
+    parser reads or one that may count, order, size or place (:data:`lexicon.LABEL_STRUCTURE_HAZARD_RE`: "Rainbow row",
+    "Upper tower"), is left whole."""
     if re.search(rf"\d|\b(?:{lexicon.COUNT_WORD_RE})\b|[\[\]=]", chunk.lower()):
         return chunk  # "pile-5 [region=back]": a count or a spec of the task's own, to be read
     words = re.findall(r"[A-Za-z][A-Za-z'\-]*", chunk)
@@ -493,8 +495,10 @@ def drop_voice_chunks(text: str, labels: bool = True) -> tuple[str, list[str]]:
     label = lexicon.VOICE_LABEL_RE.match(text) if labels else None
     first = re.match(r"\s*(?P<c>[^.!?:;]{2,40})\.\s+(?=\S)", text) if labels else None
     for m in (label, first):
-        chunk = _label_structure_masked(m.group("c"), text[m.end():]) if m and m is label else m.group("c") if m else ""
-        if m and len(m.group("c").split()) <= (10 if m is label else 4) and _voice_chunk(chunk, label=True) \
+        if m is None:
+            continue
+        chunk = _label_structure_masked(m.group("c"), text[m.end():]) if m is label else m.group("c")
+        if len(m.group("c").split()) <= (10 if m is label else 4) and _voice_chunk(chunk, label=True) \
                 and lexicon.GOAL_THING_RE.search(text[m.end():].lower()):
             dropped.append(m.group(0).strip())
             text = text[m.end():]

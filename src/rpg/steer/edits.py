@@ -211,8 +211,10 @@ def normalize_edit(text: str) -> str:
     an article read as a labelled cube ("put a D on top", "swap the 3 for a 7"), a word in
     capitals quoted ("change it to DOG"), and typos of known words corrected ("shoud")."""
     t = text.strip()
-    t = re.sub(r"\b(letter)\s+(cube|block)\s+([A-Za-z])\b(?!['\-])", lambda m: f"{m.group(1)} {m.group(3).upper()} {m.group(2)}", t)
-    # "the letter cube T": the letter T cube (the letter had been read twice, "letter cube letter t")
+    t = re.sub(r"\b(?:(letter)\s+(cube|block)\s+([A-Za-z])|(?:digit|number)\s+(cube|block)\s+(\d))\b(?!['\-])(?![x\d\-.,]\d)",
+               lambda m: f"letter {m.group(3).upper()} {m.group(2)}" if m.group(1) else f"digit {m.group(5)} {m.group(4)}", t)
+    # "the letter cube T", "the digit cube 7": the letter T cube, the digit 7 cube (the label had been read twice, "letter
+    # cube letter t", "digit digit 7 cube")
     t = re.sub(r"\b(a|an|the)\s+([A-Z])\b(?!['\-])", r"\1 letter \2", t)
     # a lone capital is a letter cube ("swap A and D"); "A" only where no noun follows it
     t = re.sub(r"(?<![\w'])(?<!letter )([B-HJ-Z])\b(?!['\-])|(?<![\w'])(?<!letter )(A)\b(?=\s*(?:$|[,.;!?]|and\b|or\b|with\b|for\b"
@@ -221,7 +223,6 @@ def normalize_edit(text: str) -> str:
     t = re.sub(r"\b(a|an|the)\s+(\d)\s+(cube|block)\b(?!\s*(?:-|towers?|stacks?|rows?|lines?|pyramids?|walls?|piles?|circles?|grids?"
                r"|columns?|high|tall|wide|long)\b)", r"\1 digit \2 \3", t)  # "put a 6 cube on top": the digit cube 6 (six had been
     # added, silently); "a 3 cube tower" is a count
-    t = re.sub(r"\b(?:digit|number)\s+(cube|block)\s+(\d)\b(?![x\d\-.,]\d)", r"digit \2 \1", t)  # "the digit cube 7"
     t = re.sub(r"(?<!digit )(?<!\d )\b(cube|block)\s+(\d)\b(?![x\d\-.,]\d)(?!\s*(?:blocks?|cubes?|tall|high|wide|long|deep|layers?|levels?|rows?|more|of"
                r"|colou?rs?|times)\b)", r"digit \2 \1", t)  # "put cube 6 on top": the digit cube 6 (six had been added, silently)
     t = re.sub(r"\b(a|an|the)\s+(\d)\b(?![x\d\-])(?!\s*(?:blocks?|cubes?|tall|high|wide|long|deep|layers?|levels?|rows?|"
@@ -1030,7 +1031,7 @@ def in_place_move(edit: str) -> Op | None:
 
 def intent_of_ops(ops: list[Op], spec: TaskSpec | None = None) -> str:
     """The strongest intent of the operations (a structure op to the reference's own
-    structure changes nothing and does not count)."""
+    structure, or a material op to its own material, changes nothing and does not count)."""
     ops = [o for o in ops if not (spec is not None and o.op == "structure" and o.params["to"] == spec.structure)]
     ops = [o for o in ops if not (spec is not None and o.op == "material" and o.params["to"] == spec.material)]  # "add the
     # digit cube 7" to digit cubes: their material kept

@@ -522,9 +522,10 @@ def plan_schema(plan: EditPlan, fam: Family, reference: int | None) -> tuple[Tas
     if (unread or re.search(r"(?i)\b(?:reading|reads?|spell(?:s|ing)?)\b|\b[A-Z0-9]\s+(?:at|on)\s+(?:the\s+)?(?:bottom|top|base)\b",
                             plan.text)) and \
             (roled := _pivot_with_roles(plan, ref_schema)) is not None:
-        if [n for n in numbers if int(n) != len(ref_spec.items)]:  # "lay the same four letters in a row, spelling BID" of
-            # three: a count the roles' reading drops ("make it a tower of 3, pink on top" of three: the task's own)
-            raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": {', '.join(repr(n) for n in numbers)} has no "
+        dropped = [n for n in numbers if int(n) != len(ref_spec.items)]  # "lay the same four letters in a row, spelling BID"
+        # of three: a count the roles' reading drops ("make it a tower of 3, pink on top" of three: the task's own)
+        if dropped:
+            raise SteerError(f"cannot apply the edit \"{plan.text.strip()[:80]}\": {', '.join(repr(n) for n in dropped)} has no "
                              f"place in the change read (the task's {len(ref_spec.items)} cubes in a new structure); say the "
                              "count in a separate edit, or use --model")
         return roled  # "turn it into a single tower, same cubes: the reds at the bottom, ...", "row instead, reading BAT": the

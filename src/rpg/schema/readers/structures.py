@@ -382,6 +382,7 @@ def _label_pyramid(f: Features, b: Builder) -> bool:
     if len({lab.isdigit() for lab in labels}) > 1:
         raise ParseError(f"\"{f.original[:80]}\" mixes letter and digit cubes in a pyramid; say which cubes, or use --model")
     roles: dict[str, str] = {}
+    rest = text  # the text but for the layer roles read: whatever else it says of the cubes is no reader's
     for pattern in lexicon.LABEL_LAYER_ROLE_RES:
         for m in pattern.finditer(text):
             layer = lexicon.LAYER_WORDS[m.group("r")]
@@ -390,13 +391,11 @@ def _label_pyramid(f: Features, b: Builder) -> bool:
                     raise ParseError(f"the cube {lab} is given two layers in \"{f.original[:80]}\"; say each cube's layer "
                                      "once, or use --model")
                 roles[lab] = layer
-    rest = text
-    for pattern in lexicon.LABEL_LAYER_ROLE_RES:
         rest = pattern.sub(" ", rest)
     related = lexicon.LABEL_RELATED_RE.search(rest) or lexicon.LABEL_PYRAMID_UNREAD_RE.search(
         re.sub(r"@region_\w+", " ", mark_regions(rest.lower())))
-    if related or ordering_of(f) or re.search(rf"\b(?:{lexicon.SORT_END_WORD}|ascending|descending|increasing|decreasing|sorted|"
-                                              r"order\w*|alphabetical\w*|revers\w*|numerical\w*)\b", f.text):  # "with 3 on top of 1", "sorted ascending": more than the layers (it had been dropped)
+    if related or ordering_of(f) or lexicon.LABEL_PYRAMID_ORDER_RE.search(f.text):
+        # "with 3 on top of 1", "sorted ascending": more than the layers (it had been dropped)
         raise ParseError(f"\"{f.original[:80]}\" says more of a pyramid's label cubes than the layers they stand in "
                          f"({related.group(0) if related else 'an order'}), which the builtin parser does not read; say each "
                          "layer's cubes, or use --model")
