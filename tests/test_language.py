@@ -3498,7 +3498,6 @@ def test_lists_from_the_top_and_colon_roles(text, expected):
 
 @pytest.mark.parametrize("text,words", [
     ("Build a tower with green between red and blue.", "stacked on each other"),  # (red on blue, green beside: before)
-    ("Red on top, green in the middle, blue on the bottom.", "green cube(s) it names have no"),  # (green at the table's centre)
 ])
 def test_between_or_middle_of_a_tower_said_loosely_is_refused(text, words):
     with pytest.raises(ParseError, match=re.escape(words)):
@@ -4772,8 +4771,7 @@ def test_must_refuse_texts_name_their_real_reason(text, reason):
 
 
 def test_more_cubes_than_a_task_holds_is_refused_as_a_quantity():
-    from rpg.schema.feasibility import InfeasibleTask
-    with pytest.raises(InfeasibleTask, match="quantity"):
+    with pytest.raises(BadInput, match="quantity"):
         check_feasibility(parse("build a tower of 300 red blocks"))
 
 
@@ -7434,7 +7432,7 @@ def test_a_tower_s_named_end_and_the_others_in_any_order(text, anchored):
 
 
 @pytest.mark.parametrize("text", [
-    "Two towers, two cubes each: one built from red cubes and one built from blue cubes.",
+    "Two towers of two cubes: the red cubes in one, the blue cubes in the other.",
 ])
 def test_each_tower_s_cubes_said_in_words_not_read_are_refused(text):
     """Towers whose cubes are said one tower at a time in words the reader does not take apart are refused (the colours
@@ -8597,3 +8595,102 @@ def test_forty_sixth_session_layer_words_that_are_no_layers_keep_their_reading()
                                            "green."))) == ["stack(green,blue,red)"]
     assert meaning(check_feasibility(parse("Build a pyramid of six blue cubes, its base placed in the middle"))) == [
         "pyramid(blue,blue,blue,blue,blue,blue)@center"]
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a tower said cube by cube with label cubes (stranger59: "the block marked 5 on it" had been dropped, silently)
+    ("Put the block marked 9 at the bottom, the block marked 5 on it, and the block marked 1 on top.", ["stack(9,5,1)"]),
+    ("Put the 9 block at the bottom, then the 5 block on it, then the 1 block on top.", ["stack(9,5,1)"]),
+    # a bottom, a middle and a top said: a tower's, whatever names it ("in the middle" had been the table's centre)
+    ("Put block 9 at the bottom, block 5 in the middle and block 1 on top.", ["stack(9,5,1)"]),
+    ("Put the A block at the bottom, the B block in the middle and the C block on top.", ["stack(A,B,C)"]),
+    ("Put the red block at the bottom, the blue block in the middle and the green block on top.", ["stack(red,blue,green)"]),
+    ("Red on top, green in the middle, blue on the bottom.", ["stack(blue,green,red)"]),
+])
+def test_forty_seventh_session_a_tower_said_cube_by_cube_with_labels_and_roles(text, expected):
+    # (a second hostile tester's "Red on top, green in the middle, blue on the bottom." had put green at the table's centre
+    # and was refused since; a top, a middle and a bottom said are a tower's: read so now, below)
+    assert meaning(check_feasibility(parse(text))) == expected
+
+
+def test_forty_seventh_session_a_label_said_by_how_it_is_marked_must_have_a_place():
+    # the accounting weighs the text as read too: "the block marked 5" is the digit 5 cube, which the task must hold
+    from rpg.schema.accounting import unaccounted
+    from rpg.schema.reading import features
+
+    f = features("Put the block marked 9 on the block marked 5.")
+    schema = check_feasibility(parse("Put the block marked 9 on the block marked 1."))
+    assert unaccounted(f, schema) is not None
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a statement about a third party of a voice's world, before the task (stranger59: each had been refused)
+    ("Roofing's a slow trade. Put the yellow cube to the right of the cyan cube.", ["right_of(yellow,cyan)"]),
+    ("Varnish dries at its own pace. Put the red cube between the yellow cube and the green cube.",
+     ["between(red;green,yellow)"]),
+    ("A good bookbinder never rushes the press. Build a tower: blue at the base, gray in the middle, red on top.",
+     ["stack(blue,gray,red)"]),
+    ("Deep in the cavern the stalagmites grow slowly. Build a tower: gray at the base, then brown, then cyan on top.",
+     ["stack(gray,brown,cyan)"]),
+    ("Sewing can wait; put the yellow cube on the orange patch, as neat as fresh endpaper.", ["on_patch(yellow,patch:orange)"]),
+    ("A luthier chooses tonewood slowly; your job is simpler: put the orange cube on the blue cube.", ["stack(blue,orange)"]),
+    # a simile before the task
+    ("Like laying shingles from the eaves to the ridge, build a tower: orange, then yellow, then white, bottom to top.",
+     ["stack(orange,yellow,white)"]),
+])
+def test_forty_seventh_session_a_voice_speaks_of_its_own_world(text, expected):
+    assert meaning(check_feasibility(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "Never rush. Put the red cube on the blue cube.",  # said to the one who does the task: a manner, refused
+    "Time is short. Put the red cube on the blue cube.",  # a demand on the task, not a third party's
+    "Order is key. Put the red cube on the blue cube.",
+    "The gondolier stacks oars twice. Put the red cube on the blue cube.",  # a scene-changing verb, a repetition
+    "Never rush; put the red cube on the blue cube.",
+    "It dries slowly. Put the red cube on the blue cube.",  # "it" may be the task's
+    "Stack the red cube on the blue cube a hundred times.",  # a repetition (it had compiled: "hundred" was no count)
+    "Make a tower of one thousand cubes.",  # a quantity no task holds (it had been an unknown word)
+])
+def test_forty_seventh_session_what_may_bear_on_the_task_is_not_a_world_statement(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))
+
+
+def test_forty_seventh_session_a_count_beyond_any_task_is_refused_as_a_quantity():
+    from rpg.schema.reading import Inexpressible
+
+    with pytest.raises(Inexpressible) as exc:
+        parse("Make a tower of one thousand cubes.")
+    assert exc.value.kind == "quantity" and "1000 cubes" in str(exc.value)
+
+
+@pytest.mark.parametrize("text, expected", [
+    # free order said in other words (stranger59: refused)
+    ("From the luthier's workshop: build a tower of the gray, cyan and white cubes in whichever order sounds best to you.",
+     ["stack(gray,cyan,white)"]),
+    ("Given the blue, cyan and white cubes, put them all in one stack; the order is up to you.", ["stack(blue,cyan,white)"]),
+    ("Row of the yellow, green, purple and orange cubes; the orange one goes on the far right, the rest however you like.",
+     ["line[right_end](green,purple,yellow,orange)"]),
+    # a pyramid's top said after a comma, its base said "a base of" (stranger59: a pyramid of six, or refused)
+    ("Make a pyramid from two white cubes and a black cube, the black cube at the peak.", ["pyramid(white,white|black)"]),
+    ("Pyramid with a base of the letter blocks D, G and T and the letter block X on top.", ["pyramid(D,G,T|X)"]),
+    ("Make a pyramid with yellow along the base", ["pyramid(yellow,yellow,yellow|blue,red|green)"]),
+    # several structures counted off after a heading (stranger59: refused)
+    ("Two towers, each three tall: the first red-blue-green bottom to top, the second all gray.",
+     ["stack(gray,gray,gray)", "stack(red,blue,green)"]),
+    ("Make two rows: one of three red cubes at the front of the table and one of three green cubes at the back.",
+     ["line(green,green,green)@back", "line(red,red,red)@front"]),
+    ("Two towers, three cubes each: one built from red cubes and one built from blue cubes.",
+     ["stack(blue,blue,blue)", "stack(red,red,red)"]),
+])
+def test_forty_seventh_session_said_in_other_words(text, expected):
+    assert sorted(meaning(check_feasibility(parse(text)))) == sorted(expected)
+
+
+def test_forty_seventh_session_free_orders_stay_free():
+    # "the rest however you like", "in whichever order sounds best": the order is left free in the goal, not demanded
+    tower = check_feasibility(parse("Build a tower of the gray, cyan and white cubes in whichever order sounds best to you."))
+    assert [type(p).__name__ for p in tower.goal_predicate().walk()] == ["UnorderedStack"]
+    anchored = check_feasibility(parse("Tower of red, blue and green with red at the bottom, the rest wherever you like."))
+    assert repr(anchored.goal_predicate()) == "AnchoredStack(objects=['red', 'blue', 'green'], bottom=True)"

@@ -93,7 +93,8 @@ STRANGER_SETS = {
     "stranger56": ("stranger56.yaml", "STRANGER set 56 (stranger56.yaml, transfer measure of the forty-third session; development material from the forty-fourth)"),
     "stranger57": ("stranger57.yaml", "STRANGER set 57 (stranger57.yaml, transfer measure of the forty-fourth session; development material from the forty-fifth)"),
     "stranger58": ("stranger58.yaml", "STRANGER set 58 (stranger58.yaml, transfer measure of the forty-fifth session; development material from the forty-sixth)"),
-    "stranger59": ("stranger59.yaml", "STRANGER set 59 (stranger59.yaml, written at the start of the forty-sixth session: aggregates only)"),
+    "stranger59": ("stranger59.yaml", "STRANGER set 59 (stranger59.yaml, transfer measure of the forty-sixth session; development material from the forty-seventh)"),
+    "stranger60": ("stranger60.yaml", "STRANGER set 60 (stranger60.yaml, written at the start of the forty-seventh session: aggregates only)"),
 }
 SPLITS = HERE / "splits.yaml"
 

@@ -1498,14 +1498,16 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
                           "place in that task. Rephrase (e.g. \"the letter C block\"), or use --model")
     named_labels = {m.upper() for m in re.findall(r"\b(?:letter|number|digit)\s+'?([A-Za-z0-9])'?(?![A-Za-z0-9'])",
                                                   f.original, re.IGNORECASE)}
+    marked = {m.group("l") for pattern in lexicon.LABEL_CUBE_SAID_RES for m in pattern.finditer(f.original)}  # "the block
+    # marked 5", "the 9 block", "block 5": each must have a place (which labels others name is the named ones' to say)
     if f.has("letter", "letters", "number", "numbers", "digit", "digits"):
         named_labels |= set(explicit_labels(f))  # "the numbers 1 to 3 in a row, then ..."
     if named_labels:  # a label said with its layer only where others are named as well ("A and B at the bottom, C on top")
         named_labels |= {lab for pattern in lexicon.LABEL_LAYER_ROLE_RES for m in pattern.finditer(f.original)
                          for lab in re.findall(lexicon.LABEL_TOKEN, m.group("l"))}  # "A and B at the bottom, C on top"
-    if named_labels - set(labels):
+    if (named_labels | marked) - set(labels):
         return ParseError(f"read \"{f.original[:80]}\" as: {schema.goal_summary}; but the cube labelled "
-                          f"{sorted(named_labels - set(labels))[0]!r} has no place in that task. Rephrase, or use --model")
+                          f"{sorted((named_labels | marked) - set(labels))[0]!r} has no place in that task. Rephrase, or use --model")
     spelled = set("".join(re.findall(r"\b[A-Z]{2,}\b|(?<=')[A-Za-z0-9]{2,}(?=')", f.original)).upper())
     sizes = {len(cubes)} | {n for n in have.values() if n > 1} | {
         n for p in schema.goal_predicate().walk() for n in p.counts()} | {len(st) for st in schema.initial_state.structures}

@@ -159,9 +159,12 @@ NUMBER_WORDS = {
     "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "both": 2, "pair": 2, "couple": 2,
     "single": 1, "thirteen": 13, "fourteen": 14, "fifteen": 15, "sixteen": 16, "seventeen": 17, "eighteen": 18,
     "nineteen": 19, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80,
-    "hundred": 100,
+    "hundred": 100, "thousand": 1000, "million": 1000000,
 }
 """Number words -> their value (written as digits by the parser's and the steering's normalisers)."""
+
+LARGE_NUMBER_RE = re.compile(r"\b(?:a|an|one|1)\s+(?=(?:hundred|thousand|million)\b)")
+""""a hundred", "one thousand": the number alone (each word had been written as a number of its own, "1 1000")."""
 
 DIGIT_WORDS = ("zero", *sorted((w for w, v in NUMBER_WORDS.items() if 1 <= v <= 9 and w not in ("single", "pair", "couple", "both")),
                                 key=NUMBER_WORDS.get))
@@ -439,6 +442,39 @@ may bear on the task ("Do it twice.", "Faster!", "Nothing else.", "Then reset.")
 Negations, places and persistence ("stay", "keep") are not listed: without one of these words they can only be of the
 voice's own world ("No running on deck!", "The lifeguard stays on duty.")."""
 
+WORLD_STATEMENT_OWN_RE = re.compile(r"\b(?:slow\w*|quick\w*|fast\w*|hurr\w*|rush\w*|pace\w*|patien\w*|careful\w*|gentl\w*"
+                                    r"|time|soon|wait\w*|never|not|no|always|its\s+own)\b")
+"""Words of time, manner and negation that a statement about a third party of a voice's world holds as that party's own
+("Varnish dries at its own pace.", "A good bookbinder never rushes the press.", "A luthier chooses tonewood slowly."):
+weighed out before :data:`VOICE_SENTENCE_HAZARD_RE` in :func:`rpg.schema.reading._world_statement` (said to the one who
+does the task, "Go slowly.", "Never rush.", they stay, to be refused)."""
+
+WORLD_SUBJECT_DETERMINERS: frozenset[str] = frozenset({"a", "an", "the", "my", "our", "his", "her", "their"})
+"""Determiners that may open the subject of a statement about a voice's world ("A luthier chooses ...", "The canal is
+calm.")."""
+
+WORLD_SUBJECT_HAZARD_WORDS: frozenset[str] = frozenset("""
+task tasks job jobs goal goals work result results outcome outcomes policy policies episode episodes trial trials run runs
+robot robots arm arms gripper grippers hand hands camera cameras table tables scene scenes setup layout workspace structure
+order sequence arrangement spacing symmetry alignment position positions placement orientation size height number count
+speed time timing accuracy precision neatness quality everything nothing anything something rest point answer instruction
+instructions rule rules step steps plan way trick secret key idea patience care gentleness caution haste hurry slowness
+quickness steadiness balance stability tidiness cleanliness safety
+""".split())
+"""Subjects that may be the task or a demand on it ("Speed matters.", "Order is key.", "The rule is simple."): a sentence
+about one of them, or about a manner the task may be asked to have ("Patience is key."), is no statement of a voice's own world (:func:`rpg.schema.reading._world_statement`)."""
+
+WORLD_FINITE_WORDS: frozenset[str] = frozenset("""
+is are was were can will may might would could has have had does do did never always often rarely seldom usually
+sometimes
+""".split())
+"""Words that may follow the subject of a statement and make it one ("Sewing can wait.", "A bookbinder never rushes ...")."""
+
+WORLD_OPENING_PLACE_RE = re.compile(r"^(?:[a-z]+\s+)?(?:in|at|on|inside|under|beneath|across|along|through|out\s+on|out\s+in"
+                                    r"|up\s+on|down\s+in)\s+(?:the|a|an|my|our|this)\s+(?P<n>[a-z'\-]+)\s*,?\s+")
+"""A place of a voice's world before a statement's subject ("Deep in the cavern the stalagmites grow slowly."): read past
+when its noun is none of the domain's."""
+
 VOICE_WORLD_VERBS_EXEMPT: frozenset[str] = frozenset({"stay", "remain", "keep", "leave"})
 """Verbs of :data:`SCENE_CHANGING_VERBS` that a sentence of a voice's own world may hold ("The lifeguard stays on duty.",
 "The crowd remains seated."): with nothing in the sentence they could act on (:data:`VOICE_SENTENCE_HAZARD_RE`)
@@ -478,6 +514,11 @@ VOICE_TAIL_RES: tuple[re.Pattern[str], ...] = (
 climbers on a fixed rope.", "..., steady as a belay.", "..., as per the site plan."), then any chunk set off by a comma
 or a dash ("... - monochrome is so in right now.", "..., our high camp."): dropped by
 :func:`rpg.schema.reading.drop_voice_chunks` when :func:`rpg.schema.reading._voice_chunk` finds it inert."""
+
+VOICE_OPENING_SIMILE_RE = re.compile(r"^\s*(?P<c>(?:just\s+)?like\s+[^,;:.!?()]{2,80}?)\s*,\s+(?=\S)", re.IGNORECASE)
+"""A simile before a task ("Like laying shingles from the eaves to the ridge, build a tower: ..."): dropped by
+:func:`rpg.schema.reading.drop_voice_chunks` when :func:`rpg.schema.reading._voice_chunk` finds it inert, as one at a
+sentence's end (:data:`VOICE_TAIL_RES`)."""
 
 VOICE_SIMILE_OPENING_RE = re.compile(r"^(?:just\s+)?like\s+(?!(?:in|at|on|onto|to|near|next|behind|beside|under|over|above|below|right|left"
                                      r"|just|really|so|this|that|here|there|before|last|always|usual|normal|i|we|you)\b)|^as\s+per\b|^the\s+way\b|^(?:as\s+)?[a-z]+\s+as\b")
@@ -980,7 +1021,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("condition", r"\b(?:maybe|perhaps|possibly|ideally|preferably|or\s+else)\s+(?:even\s+)?(?:on|onto|in|into|at|next|near|behind|under"
                   r"|beside|to|left|right|in\s+front|far|stacked)\b",
      "hedges between two goals ('maybe on it'): a task has one goal, checked at the end; say the one end state"),
-    ("quantity", r"\b(?:times\s+(?:\d+|two|three|four|five)|(?:\d+|two|three|four|five|several|many)\s+times|twice|thrice)\b",
+    ("quantity", r"\b(?:times\s+(?:\d+|two|three|four|five)|(?:\d+|two|three|four|five|six|seven|eight|nine|ten|dozen|hundred|thousand"
+                 r"|several|many|multiple)\s+times|twice|thrice)\b",
      "says how many times: a task is one end state, checked once; say how many cubes or structures it has (e.g. \"two "
      "towers of three gray cubes\")"),
     ("contradiction", r"\bboth\s+(?:at|on)\s+(?:the\s+)?(?:bottom|base|top)\s+and\s+(?:at|on)\s+(?:the\s+)?(?:top|bottom|base)\b",
@@ -1258,10 +1300,16 @@ OTHER_PLACE_RE = re.compile(r"\bthe\s+other\s+(?:[a-z]+\s+)?(?P<noun>patch|pad|m
 place said before it ("put red on the green patch and blue on the other patch"), otherwise it
 contrasts with one the speaker sees (where a cube stands now)."""
 
+ENUMERATED_PART_RE = re.compile(r"(?i)(?:^|\s*[,;]\s*(?:and\s+)?|\s+and\s+)(?:the\s+(?:first|second|third|fourth)(?:\s+one)?|one|the\s+other"
+                                r"(?:\s+one)?|another)\s*(?:(?:is|of|has|:|-)\s+)?(?=\S)")
+"""A word that counts off one structure of several a heading announces ("Two towers, each three tall: the first ..., the
+second ..."; "one ..., the other ..."): split on by :func:`rpg.schema.readers._enumerated_parts`."""
+
 REST_ANY_ORDER_RE = re.compile(r"(?i)\bthe\s+rest(?:\s+of\s+(?:them|the\s+(?:cubes|blocks)))?\s+(?:(?:can|may|could)\s+)?"
-                               r"(?:(?:go|be|are|stand|sit)\s+)?in\s+(?:any|whatever|whichever|either)\s+order\b")
-"""The cubes given no place, left in any order ("with the black cube on top; the rest in whatever order"): written "the
-others in any order" (it had been refused as a reference to cubes nobody named)."""
+                               r"(?:(?:go|be|are|stand|sit)\s+)?(?:in\s+(?:any|whatever|whichever|either)\s+order\b"
+                               r"|(?:however|wherever|as)\s+you\s+(?:like|want|wish|please|prefer)\b)")
+"""The cubes given no place, left in any order ("with the black cube on top; the rest in whatever order", "the rest however
+you like"): written "the others in any order" (it had been refused as a reference to cubes nobody named)."""
 
 STRUCTURE_ADJECTIVES = r"little|small|tiny|short|tall|big|large|new|finished|completed|neat|lone|single"
 """Words that may stand between "the"/"that" and a structure one sees ("that little tower", "the small stack")."""
@@ -1878,6 +1926,20 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b(?:at|to)\s+the\s+back\s+of\s+(?=(?:the\s+)?(?:(?:{COLOR_RE})\s+(?:block|cube|one|patch)|it\b|them\b))"), "behind "),
     # "a pyramid with two cyan cubes along the base", "brown, black and gray along the bottom": a pyramid's or wall's
     # bottom layer (not the table's edge: "along the bottom edge")
+    # "Pyramid with a base of the letter blocks D, G and T and the letter block X on top": the base's cubes said "at the
+    # base" (a label pyramid's base list had been refused as words no layer role holds)
+    (re.compile(rf"\b(pyramids?\s+with\s+)a\s+(?:base|bottom(?:\s+layer)?)\s+of\s+(?P<l>(?:the\s+)?(?:(?:letter|digit|number)\s+"
+                rf"(?:blocks|cubes)\s+)?(?:{COLOR_RE}|[a-z0-9])(?:\s*,\s*(?:{COLOR_RE}|[a-z0-9]))*\s*,?\s+and\s+(?:{COLOR_RE}|[a-z0-9])"
+                rf"(?:\s+(?:cubes|blocks))?)\s+and\s+(?=(?:the\s+|a\s+|an\s+)?(?:(?:letter|digit|number)\s+)?(?:{COLOR_RE}|[a-z0-9])"
+                r"(?:\s+(?:block|cube))?\s+(?:on\s+top|at\s+the\s+top)\b(?!\s+of\b))"), r"\1\g<l> at the base and "),
+    # "a pyramid from two white cubes and a black cube, the black cube at the peak": the one cube said on top, after a
+    # comma without "with" (it had been a third black cube of a pyramid of six)
+    (re.compile(rf"\b(pyramids?\b[^.;]*?),\s+(?:and\s+)?(?:the\s+)?((?:{COLOR_RE})\s+(?:cube|block|one))\s+(?:at\s+the\s+(?:very\s+)?"
+                rf"(?:top|peak|apex|summit|tip)|on\s+(?:the\s+)?top)(?!\s+of\b)(?=\s*[.!]?\s*$)"), r"\1, with the \2 on top"),
+    # "a pyramid with yellow along the base": one colour alone along it, no count, is the whole bottom layer's ("whose base
+    # is yellow"; it had been one yellow cube in the base beside cubes of colours nobody said)
+    (re.compile(rf"\b(pyramids?)\s+with\s+(?:the\s+)?({COLOR_RE})\s+along\s+the\s+(?:bottom|base)\b(?!\s+(?:edge|side|of)\b)"
+                rf"(?!\s*(?:,|and)\s*(?:the\s+)?(?:{COLOR_RE})\b)"), r"\1 whose base is \2"),
     (re.compile(r"\b(pyramids?|walls?)\b([^.;]*?)\balong\s+the\s+(bottom|base)\b(?!\s+(?:edge|side|of)\b)"), r"\1\2on the \3"),
     # "a pyramid with the two purple cubes below and the pink cube on top": the cubes below are its base
     (re.compile(r"\b(pyramids?\b[^.;]*?\b(?:\d+|two|three|four)\s+(?:[a-z]+\s+)?(?:cubes|blocks))\s+(?:below|underneath|beneath)"
@@ -2055,13 +2117,16 @@ NOT_IMPORTANT_RE = re.compile(r"\b(is|are)\s+(?:not\s+(?:important|relevant)|of\
 
 ANY_ORDER_RE = re.compile(
     r"(?:\s*[,;(\u2013\u2014-]\s*|\s+)(?:(?:in\s+)?(?:any|whatever|no\s+particular|either)\s+order(?:\s+(?:(?:is|are)\s+(?:fine|ok(?:ay)?|good|allowed)"
-    r"|works(?:\s+for\s+you)?|goes|will\s+do|suits\s+you|you\s+see\s+fit))?"
+    r"|works(?:\s+for\s+you)?|goes|will\s+do|suits\s+you|you\s+see\s+fit"
+    r"|(?:(?:that|which)\s+)?(?:sounds|looks|seems|feels)\s+(?:best|right|good|nicest)(?:\s+to\s+you)?))?"
     r"|(?:the\s+)?order\s+(?:does\s*n[o']?t|doesn't|is\s*n[o']?t|isn't)\s+(?:matter|important)|regardless\s+of\s+(?:the\s+)?order"
     r"|(?:the\s+)?order\s+is\s+(?:unimportant|irrelevant)"
-    r"|whichever(?:\s+(?:one|cube|block))?\s+goes\s+where|in\s+whichever\s+order"  # "..., whichever goes where"
+    r"|whichever(?:\s+(?:one|cube|block))?\s+goes\s+where|in\s+whichever\s+order(?:\s+(?:(?:that|which)\s+)?(?:sounds|looks|seems|feels)\s+(?:best|right|good|nicest)(?:\s+to\s+you)?)?"  # "..., whichever
+    # goes where", "in whichever order sounds best to you"
     r"|(?:the\s+)?order\s+is\s+(?:up\s+to\s+(?:you|the\s+(?:policy|robot|agent|model))|your\s+(?:choice|call)|free|flexible|open)|order\s+free\b"
     r"|(?:the\s+)?order\s+(?:is\s+)?(?:not|n't|never)\s+(?:annotated|specified|given|stated|labell?ed|recorded|constrained)"
-    r"|(?:in\s+)?(?:any|whatever|whichever)\s+order\s+(?:you\s+(?:like|want|choose|prefer|wish|see\s+fit)|suits\s+you|works\s+for\s+you)"
+    r"|(?:in\s+)?(?:any|whatever|whichever)\s+order\s+(?:you\s+(?:like|want|choose|prefer|wish|see\s+fit)|suits\s+you|works\s+for\s+you"
+    r"|(?:(?:that|which)\s+)?(?:sounds|looks|seems|feels)\s+(?:best|right|good|nicest)(?:\s+to\s+you)?)"
     r"|you\s+(?:can|may)\s+(?:choose|pick|decide)\s+the\s+order"
     r"|(?:the\s+)?order\s+(?:thereof\s+)?(?:being\s+)?at\s+(?:the\s+robot's|your|its)\s+discretion"
     r"|how(?:ever)?\s+you\s+(?:prefer|like|want|wish|please)"
@@ -3656,9 +3721,22 @@ LABEL_LAYER_ROLE_RES: tuple[re.Pattern, ...] = (
                r"(?:on|at|in|as|for|forming|form)\s+(?:the\s+)?(?:very\s+)?" + _PYRAMID_LAYER + r"\b(?!\s+of\b)"),
     re.compile(r"\b(?:the\s+)?" + _PYRAMID_LAYER + r"\s*(?:is|are|:|=|has|holds)\s+(?:made\s+of\s+)?(?:the\s+)?"
                r"(?:(?:digit|letter|number)\s+)?(?:(?:cubes|blocks)\s+)?" + _LABEL_ITEMS),
+    re.compile(r"\ba\s+" + _PYRAMID_LAYER + r"\s+(?:made\s+)?of\s+(?:the\s+)?(?:(?:digit|letter|number)\s+)?(?:(?:cubes|blocks)\s+)?"
+               + _LABEL_ITEMS),
 )
 """Label cubes given a layer of a pyramid ("the digit cubes 2, 4 and 6 at the base", "with Y on top", "A and B on the
-bottom, C at the apex", "the base is 5 and 6"): ``l`` the labels, ``r`` the layer word (:data:`LAYER_WORDS`)."""
+bottom, C at the apex", "the base is 5 and 6", "with a base of the letter blocks D, G and T"): ``l`` the labels, ``r`` the
+layer word (:data:`LAYER_WORDS`)."""
+
+LABEL_CUBE_SAID_RES: tuple[re.Pattern, ...] = (
+    re.compile(r"\b(?:block|cube)s?\s+(?:marked|labell?ed|showing)\s+(?:an?\s+|the\s+)?(?:(?:letter|digit|number)\s+)?"
+               r"'?(?P<l>[A-Z0-9])'?(?![A-Za-z0-9'])(?!\s+(?:[a-z]+\s+)?(?:blocks|cubes)\b)"),
+    re.compile(r"\b(?i:the)\s+'?(?P<l>[A-Z0-9])'?\s+(?i:block|cube)\b"),
+    re.compile(r"\b(?i:block|cube)[ \t]+'?(?P<l>[A-Z0-9])'?(?![A-Za-z0-9'])"),
+)
+"""A label cube said by its mark ("the block marked 5", "the 9 block", "block C"; a digit on the next line, "cube\n2. put
+...", is a list's number): each such label must have a place in the task read (:func:`rpg.schema.accounting.unaccounted`;
+"the block marked 5 on it" had been dropped, silently)."""
 
 LABEL_RELATED_RE = re.compile(r"\b(?:on(?:\s+top\s+of)?|onto|atop|above|over|under|below|beneath|underneath|next\s+to|beside|"
                               r"(?:to\s+the\s+)?(?:left|right)\s+of|in\s+front\s+of|behind|between|by|near)\s+(?:the\s+)?"
@@ -4949,6 +5027,10 @@ _GERUND_RE = "(" + "|".join(_GERUND_STEMS) + r")ing\b"
 
 
 GOAL_FRAME_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "Given the blue, cyan and white cubes, put them all in one stack": the cubes the task uses, said as "using" ("given"
+    # had been refused as an action)
+    (re.compile(rf"(?:^|(?<=[.;!?]\s))given\s+(?=(?:the|these|those)\s+(?:(?:{COLOR_RE}|and|or)[\s,]+)+(?:cubes|blocks)\s*,\s*[a-z]+\s+them\b)"),
+     "using "),
     # "Success requires the pink cube to be placed on the table", "Task T3 requires arranging ...", "success requires that
     # ...": what success requires is the goal (its words had been unknown: refused)
     (re.compile(_REQUIRER + r"(?=\w+ing\b)"), "the task is "),

@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 
 from rapidfuzz import fuzz, process
 
+from rpg.domain import constants as C
 from rpg.domain.palette import COLOR_ALIASES
 from rpg.errors import BadInput
 from rpg.schema import lexicon, senses
@@ -206,7 +207,8 @@ def _commentary_sentence(sentence: str) -> bool:
     low = sentence.lower()
     words = re.findall(r"[a-z][a-z'\-]*", low)
     if len(words) < 2 or re.search(r"\d", low) or lexicon.TASK_CONTENT_RE.search(low) or lexicon.ASIDE_CONTENT_RE.search(low) \
-            or lexicon.FRAMING_SENTENCE_HAZARD_RE.search(low) or lexicon.RETRACTION_RE.search(low):
+            or lexicon.FRAMING_SENTENCE_HAZARD_RE.search(low) or lexicon.RETRACTION_RE.search(low) \
+           :
         return False
     for w in words:
         for part in w.split("-"):
@@ -250,7 +252,8 @@ def _voice_sentence(sentence: str) -> bool:
     if not words or re.search(r"\d", low) or lexicon.TASK_CONTENT_RE.search(re.sub(r"\bon\b", " ", low)) \
             or lexicon.GOAL_THING_PREFIX_RE.search(low) \
             or lexicon.ASIDE_CONTENT_RE.search(_VOICE_WORLD_ASIDE_RE.sub(" ", weighed)) \
-            or lexicon.VOICE_SENTENCE_HAZARD_RE.search(weighed) or lexicon.RETRACTION_RE.search(low):
+            or lexicon.VOICE_SENTENCE_HAZARD_RE.search(weighed) or lexicon.RETRACTION_RE.search(low) \
+           :
         return False
     if _said_to_the_doer(words):
         return False  # "Wipe the whiteboard.", "Pinch lightly.", "Don't proceed.": said to the one who does the task
@@ -268,6 +271,69 @@ def _voice_sentence(sentence: str) -> bool:
             verb = verb or ("VERB" in lexicon.parts_of_speech(base) and base not in lexicon.IDLE_WORDS
                             and not lemmas & _AUXILIARY_LEMMAS and base not in _NOT_VERBS)
     return verb and all(k in ("negation", "object", "action", "question") for k, _, _ in _inexpressible(weighed))
+
+
+def _world_statement(sentence: str) -> bool:
+    """Whether a sentence (or a clause before ";") of a text that says its task elsewhere is a statement about a third
+    party of a voice's world ("Varnish dries at its own pace.", "A good bookbinder never rushes the press.", "Roofing's a
+    slow trade.", "Sewing can wait"), dropped by :func:`drop_asides`: a subject of the voice's own (a noun phrase of words
+    the parser does not read, none of :data:`lexicon.WORLD_SUBJECT_HAZARD_WORDS`, after a place of that world,
+    :data:`lexicon.WORLD_OPENING_PLACE_RE`) followed by a verb said of it, no question, no digit, and once the party's own
+    time, manner and negation are set apart (:data:`lexicon.WORLD_STATEMENT_OWN_RE`) nothing that may bear on the task
+    (:data:`lexicon.TASK_CONTENT_RE`, :data:`lexicon.VOICE_SENTENCE_HAZARD_RE`, :data:`lexicon.ASIDE_CONTENT_RE`, a take-back,
+    a colour, a verb that changes a scene) and no domain refusal but an object, an action, a negation or a time.  Said to
+    the one who does the task ("Never rush.", "Go slowly.") a sentence has no subject of its own and stays."""
+    low = sentence.lower().strip()
+    if low.endswith("?") or re.search(r"\d", low):
+        return False
+    opening = lexicon.WORLD_OPENING_PLACE_RE.match(low)
+    if opening and opening.group("n") not in VOCAB:
+        low = low[opening.end():]
+    words = re.findall(r"[a-z][a-z'\-]*", low)
+    if len(words) < 2 or not _world_subject(words):
+        return False
+    weighed = lexicon.WORLD_STATEMENT_OWN_RE.sub(" ", low)
+    if lexicon.TASK_CONTENT_RE.search(weighed) or lexicon.GOAL_THING_PREFIX_RE.search(weighed) \
+            or lexicon.VOICE_SENTENCE_HAZARD_RE.search(weighed) or lexicon.ASIDE_CONTENT_RE.search(weighed) \
+            or lexicon.RETRACTION_RE.search(low):
+        return False
+    for w in words:
+        base = w.removesuffix("'s")
+        lemmas = {base, *lexicon.lemmas(base)}
+        if base in COLORS or base in lexicon.colour_names() or (
+                lemmas & lexicon.SCENE_CHANGING_VERBS and not lemmas & lexicon.VOICE_WORLD_VERBS_EXEMPT):
+            return False
+    return all(k in ("negation", "object", "action", "time") for k, _, _ in _inexpressible(low))
+
+
+def _world_subject(words: list[str]) -> bool:
+    """Whether ``words`` (lower case) open with a subject of a voice's world and a verb said of it: determiners
+    (:data:`lexicon.WORLD_SUBJECT_DETERMINERS`), one to three nouns or adjectives none of which the parser reads, the
+    last a noun of none of :data:`lexicon.WORLD_SUBJECT_HAZARD_WORDS`, then "'s" on it, a word of
+    :data:`lexicon.WORLD_FINITE_WORDS`, or a verb that agrees with it ("Varnish dries", "stalagmites grow")."""
+    i = 0
+    while i < len(words) and words[i] in lexicon.WORLD_SUBJECT_DETERMINERS:
+        i += 1
+    for j in range(i, min(i + 3, len(words))):
+        w = words[j]
+        head = w.removesuffix("'s")
+        pos = lexicon.parts_of_speech(head)
+        noun = not pos or bool(pos & {"NOUN", "PROPN"}) or (head.endswith("ing") and "VERB" in pos)  # "luthier", "Sewing"
+        if head in VOCAB or head in lexicon.WORLD_SUBJECT_HAZARD_WORDS or not (noun or "ADJ" in pos):
+            return False
+        if w.endswith("'s") and noun:
+            return True  # "Roofing's a slow trade."
+        nxt = words[j + 1] if j + 1 < len(words) else ""
+        if not noun or not nxt:
+            continue
+        if nxt in lexicon.WORLD_FINITE_WORDS:
+            return True
+        verb, forms = lexicon.parts_of_speech(nxt), lexicon.lemmas(nxt)
+        plural = head.endswith("s") and head not in lexicon.lemmas(head)
+        if "VERB" in verb and nxt not in VOCAB and ((nxt.endswith("s") and nxt not in forms and not plural)
+                                                   or (plural and nxt in forms)):
+            return True  # "Varnish dries", "the stalagmites grow"
+    return False
 
 
 def _said_to_the_doer(words: list[str]) -> bool:
@@ -503,6 +569,11 @@ def drop_voice_chunks(text: str, labels: bool = True) -> tuple[str, list[str]]:
             dropped.append(m.group(0).strip())
             text = text[m.end():]
             break
+    opening = lexicon.VOICE_OPENING_SIMILE_RE.match(text)
+    if opening and _voice_chunk(opening.group("c"), rest=text[opening.end():]) \
+            and lexicon.GOAL_THING_RE.search(re.split(r"(?<=[.!?])\s+", text[opening.end():])[0].lower()):
+        dropped.append(opening.group(0).strip())  # "Like laying shingles from the eaves to the ridge, build a tower: ..."
+        text = text[opening.end():]
     sentences = []
     for sentence in re.split(r"(?<=[.!?])\s+", text):
         for _ in range(2):  # "..., like climbers on a rope, our high camp."
@@ -601,12 +672,19 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
     sentences = re.split(r"(?<=[.!?])\s+", kept)
     framing = [s for i, s in enumerate(sentences) if not s.endswith("!") and (
         _framing_sentence(s) or _evaluation_report(s) or _title_heading(s, " ".join(sentences[i + 1:])))]
-    task = [s for s in sentences if s not in framing and not _commentary_sentence(s) and not _voice_sentence(s)]
+    task = [s for s in sentences if s not in framing and not _commentary_sentence(s) and not _voice_sentence(s)
+            and not _world_statement(s)]
     if task and any(lexicon.GOAL_THING_RE.search(s.lower()) for s in task):  # a voice's commentary around a task said
         framing = [s for s in sentences if s not in task]
     if framing and len(framing) < len(sentences):
         kept = " ".join(s for s in sentences if s not in framing)
         dropped += framing
+    def world_clause(m: re.Match) -> str:  # "Sewing can wait; put ...": a statement of the voice's world before the task
+        if not _world_statement(m.group("c")) or not lexicon.GOAL_THING_RE.search(m.string[m.end():].lower()):
+            return m.group(0)
+        dropped.append(m.group(0).strip())
+        return ""
+    kept = re.sub(r"(?:^|(?<=[.!?]\s))\s*(?P<c>[^.!?;:]{3,80});\s+", world_clause, kept)
     kept, voiced = drop_voice_chunks(kept)
     return kept, dropped + voiced
 
@@ -2039,8 +2117,13 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     for pattern, written_out in lexicon.DISTRIBUTED_RELATIONS:
         text = pattern.sub(written_out, text)
     text = lexicon.COLOUR_GROUP_NOUN_RE.sub(r"the 2 \g<c> blocks", text)  # "the orange pair": the 2 orange blocks
+    text = lexicon.LARGE_NUMBER_RE.sub("", text)
     for w, n in NUMBER_WORDS.items():
         text = re.sub(rf"\b{w}\b", str(n), text)
+    many = re.search(r"\b(\d+)\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b", text)
+    if many and int(many.group(1)) > C.MAX_OBJECTS:  # "a tower of one thousand cubes"
+        raise Inexpressible("quantity", [many.group(0)], f"asks for {many.group(1)} cubes, a quantity no task holds (at most "
+                            f"{C.MAX_OBJECTS} cubes); use fewer cubes", original)
     bare = lexicon.BARE_NUMBERS_RE.search(text)
     if bare and not LABEL_CUBES_SAID_RE.search(original) and not re.search(r"(?i)\b(?:label\w*|numbered|digits?|numbers?)\b", original):  # "put 5 and 8 in a row": four coloured cubes had been made
         raise ParseError(f"'{bare.group('nums')}' in \"{original[:80]}\" may count cubes or name digit cubes; say which "
@@ -2209,7 +2292,10 @@ def _role_sentences(text: str) -> str:
     return text if re.search(others, out) else out
 
 
-_CHAIN_REF = rf"(?:the\s+)?(?P<{{g}}>{COLOR_RE})(?:\s+(?:cube|block|one))?"
+_CHAIN_CUBE = rf"(?:{COLOR_RE}|(?:letter\s+[a-z]|digit\s+\d)(?=\s+(?:cube|block)\b))"
+"""One cube of a tower said cube by cube (:func:`tower_chain`): a colour, or a label cube as the text is read ("the digit 5
+block": the block marked 5)."""
+_CHAIN_REF = rf"(?:the\s+)?(?P<{{g}}>{_CHAIN_CUBE})(?:\s+(?:cube|block|one))?"
 _CHAIN_ROLES = (
     ("above", r"(?:(?:directly|right|just|immediately)\s+)?(?:on|onto|on\s+top\s+of|above|over|atop|upon)\s+(?:it|that|this)(?:\s+one)?"),
     ("below", r"(?:(?:directly|right|just|immediately)\s+)?(?:below|under|underneath|beneath)\s+(?:it|that|this)(?:\s+one)?"),
@@ -2227,7 +2313,7 @@ cube said: "it"), on or under a cube named ("directly above the blue one"), anyw
 at an end, or in the middle."""
 _CHAIN_ITEM_RE = re.compile(
     rf"(?:(?:first(?:ly)?,?|then|and|also|next|finally|lastly|after\s+that,?|afterwards,?)\s+)*(?:(?:put|place|set|stack|add|leave|lay)\s+)?(?:(?:a|an|the|another|1|(?:the\s+)?(?P<n>\d+|two|three|four|five|six|both))\s+)?"
-    rf"(?P<c>{COLOR_RE})(?:\s+(?:blocks?|cubes?|bricks?|ones?))?\s+(?:(?:is|are|goes|go|sits|sit|should\s+be|must\s+be|comes|stands)\s+)?"
+    rf"(?P<c>{_CHAIN_CUBE})(?:\s+(?:blocks?|cubes?|bricks?|ones?))?\s+(?:(?:is|are|goes|go|sits|sit|should\s+be|must\s+be|comes|stands)\s+)?"
     rf"(?:(?:stacked|placed|resting|sitting|standing)\s+)?"
     r"(?P<role>" + "|".join(f"(?P<{k}>{r})" for k, r in _CHAIN_ROLES) + r")")
 _CHAIN_SEP_RE = re.compile(r"\s*(?:,\s*(?:and\s+)?(?:then\s+|with\s+)?|;\s*|\s+and\s+(?:then\s+)?|\s+then\s+|\s+with\s+)")
@@ -2314,7 +2400,9 @@ def tower_chain(text: str) -> str:
         if pos < len(rest) and sep is None:
             return text
         pos = sep.end() if sep else pos
-    if not items or not (head or any(r in ("above", "below") for _, _, r, _ in items)) or (len(items) < 2 and not (head and head.group("set"))):
+    roles = {r for _, _, r, _ in items}  # a bottom, a middle and a top said: a tower's, whatever names it
+    if not items or not (head or roles & {"above", "below"} or roles >= {"bottom", "middle", "top"}) \
+            or (len(items) < 2 and not (head and head.group("set"))):
         return text
     if any(n > 1 and role not in ("above", "bottom") for _, n, role, _ in items):
         return text

@@ -1729,6 +1729,7 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
     from rpg.validate.gates import check_gate_names, check_optional_gates
 
     check_text(edit, "the edit")
+    edit = re.sub(r"[ \t]{2,}", " ", edit)  # a run of blanks is one (the readers' patterns had taken minutes over 7000)
     disabled = check_gate_names(disabled)
     enabled = check_optional_gates(enabled)
     path = Path(family)

@@ -518,7 +518,8 @@ _TOWERS_HEADING_RE = re.compile(
     r"(?i)^\s*(?:(?:please\s+)?(?:let's\s+)?(?:build|make|stack|create|construct|set\s+up|lay\s+out|line\s+up)\s+"
     r"|(?:we|i)\s+(?:want|need|would\s+like)\s+)?"
     r"(?P<n>two|three|four|[2-4])\s+(?:separate\s+|distinct\s+|independent\s+)?(?P<kind>towers|stacks|rows|lines)"
-    r"(?:\s+of\s+(?P<h>two|three|four|[2-4])(?:\s+(?:cubes|blocks))?|,?\s+(?P<h2>two|three|four|[2-4])\s+(?:cubes|blocks)\s+each)?"
+    r"(?:\s+of\s+(?P<h>two|three|four|[2-4])(?:\s+(?:cubes|blocks))?|,?\s+(?P<h2>two|three|four|[2-4])\s+(?:cubes|blocks)\s+each"
+    r"|,?\s+each\s+(?P<h3>two|three|four|[2-4])\s+(?:(?:cubes|blocks)\s+)?(?:tall|high|long))?"
     r"(?:\s+each)?(?:\s+at\s+the\s+end)?(?:\s*,\s*(?:friends|folks|everyone|team|please))?\s*:\s*(?P<body>.+)$")
 """A heading that counts towers or rows before a colon and the structures said after it ("Build two towers of two cubes:
 yellow on orange in the back left corner, and white on gray in the front right corner.", "We want two separate towers at
@@ -537,11 +538,17 @@ def _towers_headed(instruction: str, framed: bool) -> TaskSchema | None:
     m = _TOWERS_HEADING_RE.match(lexicon.rewrite(lexicon.TOWERS_BY_PLACE_REWRITES, instruction))
     if m is None:
         return None
-    n, h = lexicon.count_word(m.group("n")), m.group("h") or m.group("h2")
+    n, h = lexicon.count_word(m.group("n")), m.group("h") or m.group("h2") or m.group("h3")
     try:
         schema = parse(m.group("body"), _framed=framed)
     except BadInput:
-        return None
+        body = _enumerated_parts(m.group("body"), m.group("kind").lower(), h)
+        if body is None:
+            return None
+        try:  # "Two towers, each three tall: the first red-blue-green bottom to top, the second all gray"
+            schema = parse(body, _framed=framed)
+        except BadInput:
+            return None
     parts = [p for p in schema.goal_predicate().walk() if not isinstance(p, And)]
     kind = _HEADED_KINDS[m.group("kind").lower()]
     stacks = [p for p in parts if isinstance(p, kind)]
@@ -549,6 +556,28 @@ def _towers_headed(instruction: str, framed: bool) -> TaskSchema | None:
             h and any(len(p.objects) != lexicon.count_word(h) for p in stacks)) or len({o for p in stacks for o in p.objects}) != sum(a.kind != "goal_patch" for a in schema.assets):
         return None
     return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})
+
+
+def _enumerated_parts(body: str, kind: str, h: str | None) -> str | None:
+    """A heading's colon text that counts off its structures (:data:`lexicon.ENUMERATED_PART_RE`: "the first red-blue-green
+    bottom to top, the second all gray") said as one sentence per structure of ``kind`` ("A tower of red-blue-green bottom
+    to top. A tower of 3 gray cubes."; "all gray", "built from gray cubes" are ``h`` gray cubes where the heading says how
+    many each has); None
+    where it does not open with such a word or counts off fewer than two."""
+    parts = lexicon.ENUMERATED_PART_RE.split(body.strip().rstrip(".!"))
+    if len(parts) < 3 or parts[0].strip():
+        return None
+    noun = kind.removesuffix("s")
+    said = []
+    for part in (p.strip(" ,;") for p in parts[1:]):
+        part = re.sub(r"^(?:(?:built|made)\s+(?:from|of|out\s+of)|of)\s+", "", part)  # "one built from red cubes"
+        uniform = re.fullmatch(rf"(?:all|only)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|ones))?|({COLOR_RE})\s+(?:cubes|blocks|ones)", part)
+        if uniform:
+            if h is None:
+                return None  # "the second all gray": how many is not said
+            part = f"{lexicon.count_word(h)} {uniform.group(1) or uniform.group(2)} cubes"
+        said.append(f"A {noun} of {part}.")
+    return " ".join(said)
 
 
 def _named_heading(instruction: str, framed: bool) -> TaskSchema | None:
