@@ -8694,3 +8694,35 @@ def test_forty_seventh_session_free_orders_stay_free():
     assert [type(p).__name__ for p in tower.goal_predicate().walk()] == ["UnorderedStack"]
     anchored = check_feasibility(parse("Tower of red, blue and green with red at the bottom, the rest wherever you like."))
     assert repr(anchored.goal_predicate()) == "AnchoredStack(objects=['red', 'blue', 'green'], bottom=True)"
+
+
+@pytest.mark.parametrize("text, expected", [
+    # read material (stranger58): a pile said by its verb and a side, a radio's acknowledgement, a voice's absolute phrases,
+    # the end state "the robot needs to end with" (each had been refused)
+    ("Pile four cubes, any colours, on the right side.", ["pile(blue,green,red,yellow)@right"]),
+    ("Copy that. Put the red cube on the blue cube.", ["stack(blue,red)"]),
+    ("Dispatch to robot unit, be advised: stack the purple cube on top of the yellow cube, copy?", ["stack(yellow,purple)"]),
+    ("Helmet on, arc struck: pile the pink, purple and gray cubes together in the center.", ["pile(gray,pink,purple)@center"]),
+    ("Flux is on, joint is prepped: put the cyan cube next to the black cube.", ["next_to(black,cyan)"]),
+    ("For this episode the robot needs to end with the blue cube resting on the white patch.", ["on_patch(blue,patch:white)"]),
+])
+def test_forty_seventh_session_read_material_said_in_other_words(text, expected):
+    assert meaning(check_feasibility(parse(text))) == expected
+
+
+@pytest.mark.parametrize("label", [
+    "Red on, blue off",  # colours are the task's, not a voice's things
+    "Table cleared, cubes scattered",  # the domain's things, a scene-changing state
+    "Gripper open",  # the robot's part: may bear on the task
+    "Helmet on, stack placed",
+])
+def test_forty_seventh_session_absolute_phrases_that_may_bear_on_the_task_are_no_voice_label(label):
+    from rpg.schema.reading import _absolute_phrases
+
+    assert not _absolute_phrases(label)
+    assert _absolute_phrases("Helmet on, arc struck") and _absolute_phrases("Mask down, torch lit")
+
+
+def test_forty_seventh_session_a_copy_of_a_structure_stays_refused():
+    with pytest.raises(BadInput):
+        check_feasibility(parse("Copy that tower with the red cubes."))

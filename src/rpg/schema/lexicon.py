@@ -504,6 +504,10 @@ VOICE_LABEL_RE = re.compile(r"^\s*(?P<c>[^.!?:;()\"]{2,70}?)\s*:\s+(?=\S)")
 "Swarm-season tip from the apiary: ..."): dropped by :func:`rpg.schema.reading.drop_voice_chunks` when
 :func:`rpg.schema.reading._voice_chunk` finds it inert."""
 
+ABSOLUTE_STATE_WORDS: frozenset[str] = frozenset("on off up down in out ready set lit".split())
+"""States a voice's absolute phrase gives a thing of its world ("Helmet on, arc struck:", "Mask down, torch lit:"), besides
+a past participle: :func:`rpg.schema.reading._absolute_phrases`."""
+
 VOICE_TAIL_RES: tuple[re.Pattern[str], ...] = (
     re.compile(r"(?P<sep>\s*,\s*|\s+[-\u2013\u2014]+\s+|\s+(?=(?:just\s+)?like\s))"
                r"(?P<c>(?:just\s+)?like\s+[^,;:.!?()]{2,80}|as\s+per\s+[^,;:.!?()]{2,60}|the\s+way\s+[^,;:.!?()]{2,80}"
@@ -2103,6 +2107,8 @@ FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      lambda m: "" if not m.group("side") or re.search(rf"\b{m.group('side')}\b", m.string[:m.start()]) else m.group(0)),
     # thanks before the answer ("ty in advance"), a chat's "outta" ("make a circle outta 6 cubes")
     (re.compile(r"\s*[,.;]?\s*\b(?:ty|thx|thanks|thank\s+you)\s+in\s+advance\b"), ""),
+    # a radio's acknowledgement ("Copy that.", "..., copy?", "Over."): no copy of anything (it had been refused as an action)
+    (re.compile(r"(?:^|(?<=[.!?]\s))\s*copy\s+that\s*[.!]\s*|\s*,\s*copy\s*\?\s*$"), lambda m: "" if m.group(0).strip().startswith("copy") else "."),
     (re.compile(r"\boutta\b"), "out of"),
     # the task said to be complete, mid-text ("That is the whole task; there are ...", "thats it.", "(b) thats it")
     (re.compile(r"\s*[,.;:]?\s*(?:\([a-z]\)\s*)?\b(?:that\s+is|thats|that's)\s+(?:it|the\s+whole\s+task|all)\s*(?=[.;!,]|$)"), ""),
@@ -5027,6 +5033,10 @@ _GERUND_RE = "(" + "|".join(_GERUND_STEMS) + r")ing\b"
 
 
 GOAL_FRAME_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "the robot needs to end with the blue cube resting on the white patch": the end state said (its "end with the blue"
+    # had been read as a sequence's end)
+    (re.compile(rf"\b(?:the\s+(?:robot|agent|policy|arm)|you|it|we)\s+(?:needs?|has|have|must|should)\s+to\s+end\s+(?:up\s+)?with\s+"
+                rf"(?=(?:the|a|an)\s+(?:{COLOR_RE})\s+(?:cube|block)\s+(?:resting|sitting|standing|lying|placed|stacked|on|in|at)\b)"), ""),
     # "Given the blue, cyan and white cubes, put them all in one stack": the cubes the task uses, said as "using" ("given"
     # had been refused as an action)
     (re.compile(rf"(?:^|(?<=[.;!?]\s))given\s+(?=(?:the|these|those)\s+(?:(?:{COLOR_RE}|and|or)[\s,]+)+(?:cubes|blocks)\s*,\s*[a-z]+\s+them\b)"),

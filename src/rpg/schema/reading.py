@@ -518,6 +518,31 @@ def _voice_chunk(chunk: str, label: bool = False, rest: str = "") -> bool:
     return True
 
 
+def _absolute_phrases(chunk: str) -> bool:
+    """Whether a voice's label or first sentence is made of absolute phrases only ("Helmet on, arc struck", "Mask down,
+    torch lit", "Flux is on, joint is prepped"): each a thing of the voice's world (a noun the parser does not read, none of
+    :data:`lexicon.WORLD_SUBJECT_HAZARD_WORDS`) and its state, a word of :data:`lexicon.ABSOLUTE_STATE_WORDS` or a past
+    participle of a verb that changes no scene (:data:`lexicon.SCENE_CHANGING_VERBS`).  Such a label sets the voice's
+    scene and says nothing of the task (:func:`drop_voice_chunks`)."""
+    pieces = re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", chunk.lower().strip(" ."))
+    for piece in pieces:
+        m = re.fullmatch(r"(?:(?:the|my|your|our|his|her|their)\s+)?([a-z][a-z'\-]*)\s+(?:(?:is|are)\s+)?([a-z]+)", piece)
+        if m is None:
+            return False
+        noun, state = m.groups()
+        pos = lexicon.parts_of_speech(noun)
+        if noun in VOCAB or noun in COLORS or noun in lexicon.colour_names() or noun in lexicon.WORLD_SUBJECT_HAZARD_WORDS \
+                or (pos and not pos & {"NOUN", "PROPN"}):
+            return False
+        if state in lexicon.ABSOLUTE_STATE_WORDS:
+            continue
+        said = lexicon.parts_of_speech(state)
+        participle = state.endswith(("ed", "t", "ck", "n")) and state not in VOCAB and (not said or "VERB" in said)
+        if not participle or {state, *lexicon.lemmas(state)} & lexicon.SCENE_CHANGING_VERBS:
+            return False
+    return True
+
+
 def _label_structure_masked(chunk: str, task: str) -> str:
     """A voice's label ``chunk`` with each structure noun that is the voice's own (:data:`lexicon.LABEL_STRUCTURE_KINDS`)
     written as "thing", for :func:`_voice_chunk` to weigh the rest: one its ``task`` names the same kind of ("Tungsten
@@ -564,8 +589,8 @@ def drop_voice_chunks(text: str, labels: bool = True) -> tuple[str, list[str]]:
         if m is None:
             continue
         chunk = _label_structure_masked(m.group("c"), text[m.end():]) if m is label else m.group("c")
-        if len(m.group("c").split()) <= (10 if m is label else 4) and _voice_chunk(chunk, label=True) \
-                and lexicon.GOAL_THING_RE.search(text[m.end():].lower()):
+        if (len(m.group("c").split()) <= (10 if m is label else 4) and _voice_chunk(chunk, label=True)
+                or _absolute_phrases(m.group("c"))) and lexicon.GOAL_THING_RE.search(text[m.end():].lower()):
             dropped.append(m.group(0).strip())
             text = text[m.end():]
             break
@@ -3113,9 +3138,10 @@ NEW_STRUCTURE_BEFORE_RE = re.compile(
 """A structure being described just before a bare side ("a line of 4 gray cubes at the front")."""
 
 
-_NEW_PILE_BEFORE_RE = re.compile(r"\b(?:a|an|1|one)\s+(?:[\w-]+\s+)?(?:pile|heap)\s+of\s+(?:\d+|[a-z]+)\s+(?:[a-z]+\s+)?(?:cubes|blocks)\s*$")
-"""A pile being described just before a bare side ("make a pile of four cubes on the right side"); :data:`NEW_STRUCTURE_BEFORE_RE`
-leaves piles out (a pile may be one the speaker sees)."""
+_NEW_PILE_BEFORE_RE = re.compile(r"\b(?:a|an|1|one)\s+(?:[\w-]+\s+)?(?:pile|heap)\s+of\s+(?:\d+|[a-z]+)\s+(?:[a-z]+\s+)?(?:cubes|blocks)\s*$"
+                                 r"|^\s*(?:pile|heap)\s+(?:up\s+)?\d+\s+(?:[a-z]+\s+)?(?:cubes|blocks)\s*(?:,\s*any\s+colou?rs?\s*,\s*)?$")
+"""A pile being described just before a bare side ("make a pile of four cubes on the right side", "Pile four cubes, any
+colours, on the right side"); :data:`NEW_STRUCTURE_BEFORE_RE` leaves piles out (a pile may be one the speaker sees)."""
 
 
 def _structure_side(m: re.Match) -> bool:
