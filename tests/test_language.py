@@ -8726,3 +8726,42 @@ def test_forty_seventh_session_absolute_phrases_that_may_bear_on_the_task_are_no
 def test_forty_seventh_session_a_copy_of_a_structure_stays_refused():
     with pytest.raises(BadInput):
         check_feasibility(parse("Copy that tower with the red cubes."))
+
+
+@pytest.mark.parametrize("text", [
+    # a hostile probe of this session's changes: each had compiled, silently dropping what its words said
+    "Make two towers: the first of three red cubes, the second of three green cubes, the green one taller.",
+    "Make two rows: one of three red cubes and one of three green cubes, left to right.",
+    "Make two rows: one of three red cubes and one of three green cubes, touching.",
+    "The clock never waits; put the red cube on the blue cube.",  # a time limit said of a third party
+    "The buzzer will not wait. Put the red cube on the blue cube.",
+    "The deadline is soon; put the red cube on the blue cube.",
+    "The bot never rushes. Put the red cube on the blue cube.",  # the robot under another name
+    "The machine never hurries. Put the red cube on the blue cube.",
+    "Like laying shingles from the ridge to the eaves, build a tower: orange, then yellow, then white.",  # a simile's way
+    "Like an island in the middle, put the red cube on the blue cube.",  # a simile's place
+    "Put the red cubes at the bottom, the green cube in the middle and the blue cube on top.",  # how many red: unsaid
+    # older silent errors it found
+    "Put block b in the middle.",  # a lower-case label dropped, a red cube centred
+    "Put block a at the bottom, block b in the middle and block c on top.",
+    "Make a tower of sixty-five cubes.",  # had been a tower of five
+    "Put five hundred cubes in a pile.",
+    "Stack the red cube on the blue cube twenty times.",  # a repetition
+    "Stack the red cube on the blue cube eleven times.",
+])
+def test_forty_seventh_session_hostile_probe_silent_errors_are_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Use block 9 and block 5 only: stack 9 on 5.", ["stack(5,9)"]),  # had been reversed: 9 under 5
+    ("Build the 3 cube tower from the red, blue and green cubes.", ["stack(red,blue,green)"]),  # a digit-3 cube made up
+    ("Make a pyramid with yellow along the base and blue in the middle.", ["pyramid(yellow,yellow,yellow|blue,blue|red)"]),
+    ("Make a pyramid of six cubes with yellow along the base.", ["pyramid(yellow,yellow,yellow|blue,red|green)"]),
+    ("Make a pyramid of 6 cubes whose base is yellow.", ["pyramid(yellow,yellow,yellow|blue,red|green)"]),
+    ("Build a pyramid from two gray cubes, the black cube at the tip.", ["pyramid(gray,gray|black)"]),
+    ("Sewing can wait; put the yellow cube on the orange patch.", ["on_patch(yellow,patch:orange)"]),
+])
+def test_forty_seventh_session_hostile_probe_readings(text, expected):
+    assert meaning(check_feasibility(parse(text))) == expected

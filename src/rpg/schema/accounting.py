@@ -1498,7 +1498,7 @@ def unaccounted(f: Features, schema: TaskSchema) -> ParseError | None:
                           "place in that task. Rephrase (e.g. \"the letter C block\"), or use --model")
     named_labels = {m.upper() for m in re.findall(r"\b(?:letter|number|digit)\s+'?([A-Za-z0-9])'?(?![A-Za-z0-9'])",
                                                   f.original, re.IGNORECASE)}
-    marked = {m.group("l") for pattern in lexicon.LABEL_CUBE_SAID_RES for m in pattern.finditer(f.original)}  # "the block
+    marked = {m.group("l").upper() for pattern in lexicon.LABEL_CUBE_SAID_RES for m in pattern.finditer(f.original)}  # "the block
     # marked 5", "the 9 block", "block 5": each must have a place (which labels others name is the named ones' to say)
     if f.has("letter", "letters", "number", "numbers", "digit", "digits"):
         named_labels |= set(explicit_labels(f))  # "the numbers 1 to 3 in a row, then ..."

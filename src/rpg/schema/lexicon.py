@@ -158,13 +158,25 @@ NUMBER_WORDS = {
     "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
     "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "both": 2, "pair": 2, "couple": 2,
     "single": 1, "thirteen": 13, "fourteen": 14, "fifteen": 15, "sixteen": 16, "seventeen": 17, "eighteen": 18,
-    "nineteen": 19, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80,
+    "nineteen": 19, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90,
     "hundred": 100, "thousand": 1000, "million": 1000000,
 }
 """Number words -> their value (written as digits by the parser's and the steering's normalisers)."""
 
 LARGE_NUMBER_RE = re.compile(r"\b(?:a|an|one|1)\s+(?=(?:hundred|thousand|million)\b)")
 """"a hundred", "one thousand": the number alone (each word had been written as a number of its own, "1 1000")."""
+
+COMPOUND_NUMBER_RE = re.compile(r"\b(?P<tens>twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety)[\s-](?P<ones>one|two|three|four|five|six"
+                                r"|seven|eight|nine)\b|\b(?P<n>two|three|four|five|six|seven|eight|nine|ten|\d+)\s+(?P<big>hundred|thousand)\b")
+""""sixty-five", "five hundred": one number (they had been read as two, "60 5": a tower of five)."""
+
+
+def compound_number(m: re.Match) -> str:
+    """The value of a :data:`COMPOUND_NUMBER_RE` match, in digits."""
+    if m.group("tens"):
+        return str(NUMBER_WORDS[m.group("tens")] + NUMBER_WORDS[m.group("ones")])
+    n = m.group("n")
+    return str((int(n) if n.isdigit() else NUMBER_WORDS[n]) * NUMBER_WORDS[m.group("big")])
 
 DIGIT_WORDS = ("zero", *sorted((w for w, v in NUMBER_WORDS.items() if 1 <= v <= 9 and w not in ("single", "pair", "couple", "both")),
                                 key=NUMBER_WORDS.get))
@@ -443,9 +455,10 @@ Negations, places and persistence ("stay", "keep") are not listed: without one o
 voice's own world ("No running on deck!", "The lifeguard stays on duty.")."""
 
 WORLD_STATEMENT_OWN_RE = re.compile(r"\b(?:slow\w*|quick\w*|fast\w*|hurr\w*|rush\w*|pace\w*|patien\w*|careful\w*|gentl\w*"
-                                    r"|time|soon|wait\w*|never|not|no|always|its\s+own)\b")
-"""Words of time, manner and negation that a statement about a third party of a voice's world holds as that party's own
-("Varnish dries at its own pace.", "A good bookbinder never rushes the press.", "A luthier chooses tonewood slowly."):
+                                    r"|never|not|no|always|its\s+own|can\s+wait)\b")
+"""Words of manner and negation that a statement about a third party of a voice's world holds as that party's own
+("Varnish dries at its own pace.", "A good bookbinder never rushes the press.", "A luthier chooses tonewood slowly.",
+"Sewing can wait"; a party that will not wait, or comes soon, may set the task a time: "The clock never waits."):
 weighed out before :data:`VOICE_SENTENCE_HAZARD_RE` in :func:`rpg.schema.reading._world_statement` (said to the one who
 does the task, "Go slowly.", "Never rush.", they stay, to be refused)."""
 
@@ -459,9 +472,13 @@ robot robots arm arms gripper grippers hand hands camera cameras table tables sc
 order sequence arrangement spacing symmetry alignment position positions placement orientation size height number count
 speed time timing accuracy precision neatness quality everything nothing anything something rest point answer instruction
 instructions rule rules step steps plan way trick secret key idea patience care gentleness caution haste hurry slowness
-quickness steadiness balance stability tidiness cleanliness safety
+quickness steadiness balance stability tidiness cleanliness safety bot bots machine machines agent agents controller
+controllers claw claws model models android androids cobot cobots manipulator manipulators picker pickers grabber grabbers
+team teams player players operator operators clock clocks timer timers buzzer buzzers deadline deadlines stopwatch
+stopwatches whistle whistles bell bells alarm alarms
 """.split())
-"""Subjects that may be the task or a demand on it ("Speed matters.", "Order is key.", "The rule is simple."): a sentence
+"""Subjects that may be the task, the one who does it, its time or a demand on it ("Speed matters.", "Order is key.", "The
+bot never rushes.", "The clock never waits."): a sentence
 about one of them, or about a manner the task may be asked to have ("Patience is key."), is no statement of a voice's own world (:func:`rpg.schema.reading._world_statement`)."""
 
 WORLD_FINITE_WORDS: frozenset[str] = frozenset("""
@@ -522,7 +539,16 @@ or a dash ("... - monochrome is so in right now.", "..., our high camp."): dropp
 VOICE_OPENING_SIMILE_RE = re.compile(r"^\s*(?P<c>(?:just\s+)?like\s+[^,;:.!?()]{2,80}?)\s*,\s+(?=\S)", re.IGNORECASE)
 """A simile before a task ("Like laying shingles from the eaves to the ridge, build a tower: ..."): dropped by
 :func:`rpg.schema.reading.drop_voice_chunks` when :func:`rpg.schema.reading._voice_chunk` finds it inert, as one at a
-sentence's end (:data:`VOICE_TAIL_RES`)."""
+sentence's end (:data:`VOICE_TAIL_RES`), it names no place or side (:data:`OPENING_SIMILE_PLACE_RE`), and a way it runs
+("from the ridge to the eaves") is said again by the task itself (:data:`DIRECTION_SAID_RE`)."""
+
+OPENING_SIMILE_PLACE_RE = re.compile(r"\b(?:middle|cent(?:er|re)|left|right|front|back|corner|edge|side|top|bottom|above|below|under"
+                                     r"|over|behind|beside|near|next|between|around)\b")
+"""Places and sides that keep an opening simile ("Like an island in the middle, ..."): they may place the task."""
+
+DIRECTION_SAID_RE = re.compile(r"\b(?:bottom\s+(?:to\s+(?:the\s+)?top|up)|top\s+(?:to\s+(?:the\s+)?bottom|down)|left\s+to\s+right|right\s+to\s+left"
+                               r"|from\s+the\s+(?:bottom|top|left|right))\b")
+"""A way a structure runs said in so many words ("bottom to top", "from the left")."""
 
 VOICE_SIMILE_OPENING_RE = re.compile(r"^(?:just\s+)?like\s+(?!(?:in|at|on|onto|to|near|next|behind|beside|under|over|above|below|right|left"
                                      r"|just|really|so|this|that|here|there|before|last|always|usual|normal|i|we|you)\b)|^as\s+per\b|^the\s+way\b|^(?:as\s+)?[a-z]+\s+as\b")
@@ -1025,8 +1051,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     ("condition", r"\b(?:maybe|perhaps|possibly|ideally|preferably|or\s+else)\s+(?:even\s+)?(?:on|onto|in|into|at|next|near|behind|under"
                   r"|beside|to|left|right|in\s+front|far|stacked)\b",
      "hedges between two goals ('maybe on it'): a task has one goal, checked at the end; say the one end state"),
-    ("quantity", r"\b(?:times\s+(?:\d+|two|three|four|five)|(?:\d+|two|three|four|five|six|seven|eight|nine|ten|dozen|hundred|thousand"
-                 r"|several|many|multiple)\s+times|twice|thrice)\b",
+    ("quantity", r"\b(?:times\s+(?:\d+|two|three|four|five)|(?:\d+|" + "|".join(w for w in NUMBER_WORDS if w not in ("single", "pair"))
+                 + r"|dozen|several|many|multiple)\s+times|twice|thrice)\b",
      "says how many times: a task is one end state, checked once; say how many cubes or structures it has (e.g. \"two "
      "towers of three gray cubes\")"),
     ("contradiction", r"\bboth\s+(?:at|on)\s+(?:the\s+)?(?:bottom|base|top)\s+and\s+(?:at|on)\s+(?:the\s+)?(?:top|bottom|base)\b",
@@ -1308,6 +1334,16 @@ ENUMERATED_PART_RE = re.compile(r"(?i)(?:^|\s*[,;]\s*(?:and\s+)?|\s+and\s+)(?:th
                                 r"(?:\s+one)?|another)\s*(?:(?:is|of|has|:|-)\s+)?(?=\S)")
 """A word that counts off one structure of several a heading announces ("Two towers, each three tall: the first ..., the
 second ..."; "one ..., the other ..."): split on by :func:`rpg.schema.readers._enumerated_parts`."""
+
+_PART_CUBE = rf"(?:{COLOR_RE}|grey|[a-z0-9])"
+ENUMERATED_PART_SPEC_RE = re.compile(
+    rf"(?:(?:\d+|{COUNT_WORD_RE})\s+)?(?:(?:all|only)\s+)?{_PART_CUBE}(?:(?:\s*[,\-]\s*|\s+and\s+|\s+then\s+|\s+)(?:then\s+)?{_PART_CUBE})*"
+    r"(?:\s+(?:cubes|blocks|ones))?(?:\s+(?:from\s+)?(?:(?:the\s+)?bottom\s+(?:to\s+(?:the\s+)?top|up)|(?:the\s+)?top\s+(?:to\s+(?:the\s+)?bottom|down)"
+    r"|left\s+to\s+right|right\s+to\s+left))?(?:\s+(?:at|on|in)\s+the\s+(?:front|back|left|right|center|centre|middle)"
+    r"(?:\s+(?:of\s+the\s+table|side))?)?", re.IGNORECASE)
+"""What one structure counted off after a heading may say (:data:`ENUMERATED_PART_RE`): its cubes (a count, colours or
+labels), an order said without a comma, and a place of the table; anything else ("..., the green one taller", "...,
+touching", "..., left to right" after a comma, which may be every structure's) leaves the text to the other readers."""
 
 REST_ANY_ORDER_RE = re.compile(r"(?i)\bthe\s+rest(?:\s+of\s+(?:them|the\s+(?:cubes|blocks)))?\s+(?:(?:can|may|could)\s+)?"
                                r"(?:(?:go|be|are|stand|sit)\s+)?(?:in\s+(?:any|whatever|whichever|either)\s+order\b"
@@ -1939,18 +1975,23 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "a pyramid from two white cubes and a black cube, the black cube at the peak": the one cube said on top, after a
     # comma without "with" (it had been a third black cube of a pyramid of six)
     (re.compile(rf"\b(pyramids?\b[^.;]*?),\s+(?:and\s+)?(?:the\s+)?((?:{COLOR_RE})\s+(?:cube|block|one))\s+(?:at\s+the\s+(?:very\s+)?"
-                rf"(?:top|peak|apex|summit|tip)|on\s+(?:the\s+)?top)(?!\s+of\b)(?=\s*[.!]?\s*$)"), r"\1, with the \2 on top"),
-    # "a pyramid with yellow along the base": one colour alone along it, no count, is the whole bottom layer's ("whose base
-    # is yellow"; it had been one yellow cube in the base beside cubes of colours nobody said)
-    (re.compile(rf"\b(pyramids?)\s+with\s+(?:the\s+)?({COLOR_RE})\s+along\s+the\s+(?:bottom|base)\b(?!\s+(?:edge|side|of)\b)"
-                rf"(?!\s*(?:,|and)\s*(?:the\s+)?(?:{COLOR_RE})\b)"), r"\1 whose base is \2"),
+                rf"(?:top|peak|apex|summit|tip)|on\s+(?:the\s+)?top)(?!\s+of\b)(?=\s*[.!]?\s*$)"),
+     lambda m: f"{m.group(1)}, with the {m.group(2)} on top" if re.search(rf"\b{m.group(2).split()[0]}\b", m.group(1)) else m.group(0)),
+    # (only a cube the pyramid's list holds: "from two gray cubes, the black cube at the tip" adds one, read elsewhere)
+    # "a pyramid with yellow along the base": one colour alone along it, no count, is the whole bottom layer's ("with a
+    # yellow base"; it had been one yellow cube in the base beside cubes of colours nobody said)
+    (re.compile(rf"\b(pyramids?(?:\s+of\s+(?:\d+|[a-z]+)\s+(?:cubes|blocks))?)\s+with\s+(?:the\s+)?({COLOR_RE})\s+along\s+the\s+"
+                rf"(?:bottom|base)\b(?!\s+(?:edge|side|of)\b)(?!\s*(?:,|and)\s*(?:the\s+)?(?:{COLOR_RE})\b(?!\s+(?:(?:cubes?|blocks?)\s+)?"
+                r"(?:in\s+the\s+middle|on\s+(?:the\s+)?top|at\s+the\s+top|above)))"), r"\1 with a \2 base"),
     (re.compile(r"\b(pyramids?|walls?)\b([^.;]*?)\balong\s+the\s+(bottom|base)\b(?!\s+(?:edge|side|of)\b)"), r"\1\2on the \3"),
     # "a pyramid with the two purple cubes below and the pink cube on top": the cubes below are its base
     (re.compile(r"\b(pyramids?\b[^.;]*?\b(?:\d+|two|three|four)\s+(?:[a-z]+\s+)?(?:cubes|blocks))\s+(?:below|underneath|beneath)"
                 r"(?=\s+and\s+(?:the\s+|a\s+|an\s+|1\s+|one\s+)?[a-z]+\s+(?:cube|block|one)\s+(?:on\s+top|at\s+the\s+top)\b(?!\s+of))"),
      r"\1 on the bottom"),
     # "a pyramid whose base is red": the whole bottom layer of a layered structure (a tower's base is its one bottom cube)
-    (re.compile(rf"\b(pyramids?|walls?)\s+whose\s+(?:base|bottom)\s+(?:layer\s+|row\s+)?is\s+({COLOR_RE})\b(?!\s*(?:,|and)\s*(?:{COLOR_RE})\b)"),
+    (re.compile(rf"\b((?:pyramids?|walls?)(?:\s+of\s+(?:\d+|[a-z]+)\s+(?:cubes|blocks))?)\s+whose\s+(?:base|bottom)\s+(?:layer\s+|row\s+)?is\s+"
+                rf"({COLOR_RE})\b(?!\s*(?:,|and)\s*(?:{COLOR_RE})\b(?!\s+(?:(?:cubes?|blocks?)\s+)?(?:in\s+the\s+middle|on\s+(?:the\s+)?top"
+                r"|at\s+the\s+top|above)))"),
      r"\1 with a \2 base"),
     # "a tower whose base is blue and whose top is yellow": the ends said as the tower's own
     (re.compile(rf"\bwhose\s+(?:base|bottom)\s+(?:block\s+|cube\s+)?is\s+({COLOR_RE})\b"), r"with \1 at the bottom"),
@@ -3739,6 +3780,9 @@ LABEL_CUBE_SAID_RES: tuple[re.Pattern, ...] = (
                r"'?(?P<l>[A-Z0-9])'?(?![A-Za-z0-9'])(?!\s+(?:[a-z]+\s+)?(?:blocks|cubes)\b)"),
     re.compile(r"\b(?i:the)\s+'?(?P<l>[A-Z0-9])'?\s+(?i:block|cube)\b"),
     re.compile(r"\b(?i:block|cube)[ \t]+'?(?P<l>[A-Z0-9])'?(?![A-Za-z0-9'])"),
+    # "block b in the middle": a letter in lower case where a label stands (it had been dropped, a red cube centred)
+    re.compile(r"\b(?i:block|cube)[ \t]+(?P<l>[a-z])\b(?=\s*(?:[,.;:!?)]|$|\s+(?:at|on|onto|in|into|next|to|between|and|or|under"
+               r"|behind|beside|above|below|near|left|right|goes|go|is|should|must|sits)\b))"),
 )
 """A label cube said by its mark ("the block marked 5", "the 9 block", "block C"; a digit on the next line, "cube\n2. put
 ...", is a list's number): each such label must have a place in the task read (:func:`rpg.schema.accounting.unaccounted`;
@@ -5210,6 +5254,10 @@ INDEFINITE_CUBE_RE = re.compile(rf"(?P<pre>^|[,;:.!]\s|\band\s|\bthen\s|\b(?:put
 patch and a grey cube on the red patch"): each such mention is one more cube of that colour, as mention accounting
 counts it (:func:`rpg.schema.reading.repeated_indefinites`; the second had been read as the first, put on two
 patches). Not after a preposition ("... on a red cube" may be the one already said)."""
+
+COUNTED_STRUCTURE_RE = re.compile(r"(?i)\b(\d+)\s+(cube|block)\s+(?=(?:tall\s+|high\s+)?(?:towers?|stacks?|rows?|lines?|pyramids?|walls?"
+                                  r"|piles?|circles?|rings?|grids?)\b)")
+""""the 3 cube tower": a three-cube tower, written "3-cube" before labels are read (a digit-3 cube had been made up)."""
 
 NOTATION_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"(\d)\s*[x\u00d7]\s*(?=\d)"),

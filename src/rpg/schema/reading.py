@@ -25,6 +25,7 @@ from rpg.domain.palette import COLOR_ALIASES
 from rpg.errors import BadInput
 from rpg.schema import lexicon, senses
 from rpg.schema.builder import DEFAULT_COLORS
+from rpg.schema.structures import STRUCTURE_RE
 from rpg.schema.lexicon import (
     COLOR_RE,
     COLORS,
@@ -524,7 +525,11 @@ def _absolute_phrases(chunk: str) -> bool:
     :data:`lexicon.WORLD_SUBJECT_HAZARD_WORDS`) and its state, a word of :data:`lexicon.ABSOLUTE_STATE_WORDS` or a past
     participle of a verb that changes no scene (:data:`lexicon.SCENE_CHANGING_VERBS`).  Such a label sets the voice's
     scene and says nothing of the task (:func:`drop_voice_chunks`)."""
-    pieces = re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", chunk.lower().strip(" ."))
+    low = chunk.lower().strip(" .")
+    if lexicon.VOICE_CHUNK_HAZARD_RE.search(low) or lexicon.RETRACTION_RE.search(low) or any(
+            k not in ("object", "action") for k, _, _ in _inexpressible(low)):
+        return False  # "Upside down.", "Inverse version:": a pose or a turn of the task
+    pieces = re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", low)
     for piece in pieces:
         m = re.fullmatch(r"(?:(?:the|my|your|our|his|her|their)\s+)?([a-z][a-z'\-]*)\s+(?:(?:is|are)\s+)?([a-z]+)", piece)
         if m is None:
@@ -537,7 +542,8 @@ def _absolute_phrases(chunk: str) -> bool:
         if state in lexicon.ABSOLUTE_STATE_WORDS:
             continue
         said = lexicon.parts_of_speech(state)
-        participle = state.endswith(("ed", "t", "ck", "n")) and state not in VOCAB and (not said or "VERB" in said)
+        participle = state not in VOCAB and (("VERB" in said and state not in lexicon.lemmas(state))  # "struck", "lit"
+                                             or (not said and state.endswith("ed")))  # "prepped"
         if not participle or {state, *lexicon.lemmas(state)} & lexicon.SCENE_CHANGING_VERBS:
             return False
     return True
@@ -573,6 +579,22 @@ def _label_structure_masked(chunk: str, task: str) -> str:
     return out
 
 
+def _label_names_structure(chunk: str, task: str) -> str | None:
+    """The structure noun that ends a voice's label and names its task's structure ("Method ringers' pyramid: six white
+    cubes, three on the bottom layer, ..."): a singular noun of :data:`lexicon.LABEL_STRUCTURE_KINDS` at the label's end,
+    the words before it the voice's own (the label with the noun as "thing" inert by :func:`_voice_chunk`, none of
+    :data:`lexicon.LABEL_STRUCTURE_HAZARD_RE`, no word the parser reads), and a task that names no structure itself (one
+    that does names its own; :func:`_label_structure_masked`).  None otherwise."""
+    words = re.findall(r"[A-Za-z][A-Za-z'\-]*", chunk)
+    if len(words) < 2 or words[-1].lower() not in lexicon.LABEL_STRUCTURE_KINDS or re.search(STRUCTURE_RE, task.lower()):
+        return None
+    if re.search(rf"\d|\b(?:{lexicon.COUNT_WORD_RE})\b", chunk.lower()) or any(
+            w.lower().rstrip("'") in VOCAB or lexicon.LABEL_STRUCTURE_HAZARD_RE.fullmatch(w.lower()) for w in words[:-1]):
+        return None
+    masked = re.sub(rf"\b{re.escape(words[-1])}\s*$", "thing", chunk.strip())
+    return words[-1].lower() if _voice_chunk(masked, label=True) else None
+
+
 def drop_voice_chunks(text: str, labels: bool = True) -> tuple[str, list[str]]:
     """``text`` without a voice's label before its task ("Site diary, day six: ...", :data:`lexicon.VOICE_LABEL_RE`; or a
     first sentence of up to four words such as "Context 17.") and without the chunks that end its sentences in a voice
@@ -594,8 +616,16 @@ def drop_voice_chunks(text: str, labels: bool = True) -> tuple[str, list[str]]:
             dropped.append(m.group(0).strip())
             text = text[m.end():]
             break
+        noun = _label_names_structure(m.group("c"), text[m.end():]) if m is label else None
+        if noun and lexicon.GOAL_THING_RE.search(text[m.end():].lower()):  # "Method ringers' pyramid: six white cubes, ...":
+            dropped.append(re.sub(rf"\s*{noun}\s*$", "", m.group("c"), flags=re.IGNORECASE).strip())  # the task's structure kept
+            text = f"{noun}: {text[m.end():]}"
+            break
     opening = lexicon.VOICE_OPENING_SIMILE_RE.match(text)
-    if opening and _voice_chunk(opening.group("c"), rest=text[opening.end():]) \
+    simile = opening.group("c").lower() if opening else ""
+    runs = re.search(r"\bfrom\b[^,]*\bto\b", simile) and not lexicon.DIRECTION_SAID_RE.search(text[opening.end():].lower())
+    if opening and not runs and not lexicon.OPENING_SIMILE_PLACE_RE.search(simile) \
+            and _voice_chunk(opening.group("c"), rest=text[opening.end():]) \
             and lexicon.GOAL_THING_RE.search(re.split(r"(?<=[.!?])\s+", text[opening.end():])[0].lower()):
         dropped.append(opening.group(0).strip())  # "Like laying shingles from the eaves to the ridge, build a tower: ..."
         text = text[opening.end():]
@@ -1653,6 +1683,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     if len(original) > MAX_INSTRUCTION_CHARS:
         raise ParseError(f"the instruction has {len(original)} characters; the limit is {MAX_INSTRUCTION_CHARS}")
     original = lexicon.rewrite(lexicon.READ_FROM_REWRITES, original)
+    original = lexicon.COUNTED_STRUCTURE_RE.sub(r"\1-\2 ", original)  # "the 3 cube tower"
     original = lexicon.REARRANGED_RE.sub(rearranged, original)  # "5, 2, 8 rearranged so they go 2, 5, 8"
     # "so that they read 1 2 3", "reads A, B, C": the labels read as one word ("read 123")
     if not SORT_WORD_RE.search(original):  # "... read A, B, C, D in alphabetical order": a sort, read as one
@@ -1665,7 +1696,9 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
                                  f"{m.group(1)} {'' if m.group(1).lower() == 'the' else 'the '}{m.group(2)} block",
                                  labelled)  # "stack the A on the B", "with A at the bottom, then B": label cubes
     # "stack B on A, C on B", "STACK 2 on 1, 3 on 2 (digit cubes)", "stack letter B on letter A"
-    labelled = labels_in_relations(labelled, digits=bool(LABEL_CUBES_SAID_RE.search(original)) or (
+    labelled = labels_in_relations(labelled, digits=bool(LABEL_CUBES_SAID_RE.search(original)) or any(
+        p.search(original) and p.search(original).group("l").isdigit() for p in lexicon.LABEL_CUBE_SAID_RES) or (
+        # ("Use block 9 and block 5 only: stack 9 on 5": digit cubes said by their mark; 9 had gone under 5)
         # "Stack 2 on 1 and 4 on 3.": digits on both sides of two relations, with no cube counted anywhere, name digit
         # cubes ("stack 2 on 1" alone stays refused: two cubes on one?)
         len(re.findall(r"\b\d\s+(?:on|onto|on\s+top\s+of)\s+\d\b", original)) >= 2
@@ -2142,7 +2175,7 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     for pattern, written_out in lexicon.DISTRIBUTED_RELATIONS:
         text = pattern.sub(written_out, text)
     text = lexicon.COLOUR_GROUP_NOUN_RE.sub(r"the 2 \g<c> blocks", text)  # "the orange pair": the 2 orange blocks
-    text = lexicon.LARGE_NUMBER_RE.sub("", text)
+    text = lexicon.COMPOUND_NUMBER_RE.sub(lexicon.compound_number, lexicon.LARGE_NUMBER_RE.sub("", text))
     for w, n in NUMBER_WORDS.items():
         text = re.sub(rf"\b{w}\b", str(n), text)
     many = re.search(r"\b(\d+)\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b", text)
@@ -2411,6 +2444,8 @@ def tower_chain(text: str) -> str:
         m = _CHAIN_ITEM_RE.match(rest, pos)
         if m is None:
             return text
+        if not m.group("n") and re.search(r"\b(?:blocks|cubes|bricks|ones)\b", m.group(0)):
+            return text  # "the red cubes at the bottom": how many is not said (one had been taken)
         role = next(k for k, _ in _CHAIN_ROLES if m.group(k))
         ref = next((m.group(g) for g in ("on_ref", "on_ref2", "under_ref", "higher_ref", "lower_ref") if m.group(g)), None)
         if any(c == m.group("c") for c, _, _, _ in items) and not re.match(r"(?:(?:then|and|also|next|finally|lastly|after\s+that,?"

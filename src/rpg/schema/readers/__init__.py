@@ -571,6 +571,8 @@ def _enumerated_parts(body: str, kind: str, h: str | None) -> str | None:
     said = []
     for part in (p.strip(" ,;") for p in parts[1:]):
         part = re.sub(r"^(?:(?:built|made)\s+(?:from|of|out\s+of)|of)\s+", "", part)  # "one built from red cubes"
+        if not lexicon.ENUMERATED_PART_SPEC_RE.fullmatch(part):
+            return None  # anything but cubes, an order and a place ("..., the green one taller", "..., touching"): not read
         uniform = re.fullmatch(rf"(?:all|only)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|ones))?|({COLOR_RE})\s+(?:cubes|blocks|ones)", part)
         if uniform:
             if h is None:
