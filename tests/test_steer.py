@@ -3375,3 +3375,14 @@ def test_forty_sixth_session_the_same_count_that_is_not_the_tasks_refused(tmp_pa
     fam = compiled("Stack the letter cubes B, I and D from bottom to top.", tmp_path, name="fam").path
     with pytest.raises(BadInput):
         steer(fam, "Lay the same four letters in a row, left to right, spelling BID.")
+
+
+def test_forty_seventh_session_a_sort_said_by_the_numbers_way_along_the_row(tmp_path):
+    # steer_stranger29 (read material): "Sort them so the numbers go up from left to right." had changed nothing; the way
+    # must be said with it ("make the numbers go up" alone stays refused: up along which way?)
+    assert _steered(tmp_path / "a", "Put the digit cubes 7, 5 and 3 in a row, left to right.",
+                    "Sort them so the numbers go up from left to right.") == [("modify", ["line[left_to_right](3,5,7)"])]
+    fam = Family(create_family(compiled("Put the digit cubes 7, 5 and 3 in a row, left to right.", tmp_path / "b",
+                                        name="fam").path).path)
+    with pytest.raises(SteerError):
+        steer(fam.path, "Make the numbers go up.")

@@ -23,6 +23,7 @@ from functools import lru_cache
 from rpg.domain.palette import GRADIENT_ORDER
 from rpg.domain.predicates import Reads
 from rpg.errors import BadInput
+from rpg.schema import lexicon
 from rpg.schema.builder import DEFAULT_COLORS
 from rpg.schema.lexicon import (
     BARE_ORDER_RE,
@@ -233,6 +234,11 @@ def normalize_edit(text: str) -> str:
     t = re.sub(r"(?<!')\b[A-Z]{2,}\b(?!')", lambda m: m.group(0) if m.group(0).lower() in known else f"'{m.group(0)}'", t)
     t = t.lower()
     t = POINTED_STRUCTURE_RE.sub(lambda m: f"the {m.group('n')}", t)  # "that little tower": the task's own
+    for pattern, sort in lexicon.ORDER_RANGE_RES[:2]:  # "sort them so the numbers go up from left to right": a sort by the
+        # numbers' way, where the way along the structure is said with it (the edit had changed nothing)
+        t = pattern.sub(lambda m, sort=sort: sort if lexicon.DIRECTION_SAID_RE.match(
+                            re.sub(r"^\s*(?:from\s+(?=left|right))?", "", m.string[m.end():])) else m.group(0),
+                        re.sub(r"\bso\s+(?=(?:the\s+)?(?:numbers|digits|values|labels)\s)", "so that ", t))
     t = re.sub(r"[\u2018\u2019\u201c\u201d`\"]", "'", t)
     t = re.sub(r"''+", "'", t)
     t = re.sub(r"\b(\d+)\s*(?:by|\u00d7)\s*(\d+)\b", r"\1x\2", t)
