@@ -8765,3 +8765,20 @@ def test_forty_seventh_session_hostile_probe_silent_errors_are_refused(text):
 ])
 def test_forty_seventh_session_hostile_probe_readings(text, expected):
     assert meaning(check_feasibility(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    # read material (steer_stranger29's bases): labels listed after "between the letter cubes", and an alternation
+    # written out after its pair (each had been refused)
+    ("Captain's call: put the letter cube W between the letter cubes A and B.", ["between(W;A,B)"]),
+    ("Put the digit cube 5 between the digit cubes 1 and 2.", ["between(5;1,2)"]),
+    ("Scale bar: four cubes in a row, alternating black and white, left to right black, white, black, white.",
+     ["line[left_to_right](black,white,black,white)"]),
+])
+def test_forty_seventh_session_steering_bases_read(text, expected):
+    assert meaning(check_feasibility(parse(text))) == expected
+
+
+def test_forty_seventh_session_an_alternation_written_out_otherwise_is_two_orders():
+    with pytest.raises(BadInput):  # the pair says black first, the list white first: which order is not one
+        check_feasibility(parse("Four cubes in a row, alternating black and white, left to right white, black, white, black."))

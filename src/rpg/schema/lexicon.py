@@ -5255,6 +5255,11 @@ patch and a grey cube on the red patch"): each such mention is one more cube of 
 counts it (:func:`rpg.schema.reading.repeated_indefinites`; the second had been read as the first, put on two
 patches). Not after a preposition ("... on a red cube" may be the one already said)."""
 
+LABELS_BETWEEN_RE = re.compile(r"(?i)\bbetween\s+(?:the\s+)?(?P<kind>letter|digit|number)\s+(?:cubes|blocks)\s+(?P<a>[A-Z0-9])\s+and\s+"
+                               r"(?P<b>[A-Z0-9])\b(?![\w'])")
+""""between the letter cubes A and B": each a cube of its own ("between the letter A cube and the letter B cube"; the
+labels had been dropped, two coloured cubes made up)."""
+
 COUNTED_STRUCTURE_RE = re.compile(r"(?i)\b(\d+)\s+(cube|block)\s+(?=(?:tall\s+|high\s+)?(?:towers?|stacks?|rows?|lines?|pyramids?|walls?"
                                   r"|piles?|circles?|rings?|grids?)\b)")
 """"the 3 cube tower": a three-cube tower, written "3-cube" before labels are read (a digit-3 cube had been made up)."""

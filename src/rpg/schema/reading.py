@@ -1684,6 +1684,8 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
         raise ParseError(f"the instruction has {len(original)} characters; the limit is {MAX_INSTRUCTION_CHARS}")
     original = lexicon.rewrite(lexicon.READ_FROM_REWRITES, original)
     original = lexicon.COUNTED_STRUCTURE_RE.sub(r"\1-\2 ", original)  # "the 3 cube tower"
+    original = lexicon.LABELS_BETWEEN_RE.sub(lambda m: f"between the {m.group('kind').lower()} {m.group('a').upper()} cube and "
+                                             f"the {m.group('kind').lower()} {m.group('b').upper()} cube", original)
     original = lexicon.REARRANGED_RE.sub(rearranged, original)  # "5, 2, 8 rearranged so they go 2, 5, 8"
     # "so that they read 1 2 3", "reads A, B, C": the labels read as one word ("read 123")
     if not SORT_WORD_RE.search(original):  # "... read A, B, C, D in alphabetical order": a sort, read as one

@@ -998,6 +998,10 @@ def _list_the_direction_orders(f: Features, lists: list[re.Match]) -> re.Match |
     seqs = [tuple(canon_color(c) for c in re.findall(rf"\b(?:{COLOR_RE})\b", m.group(1))) for m in lists]
     if len(set(seqs)) == 1:
         return lists[0]
+    longest = max(seqs, key=len)
+    if all(longest == tuple(q[i % len(q)] for i in range(len(longest))) for q in seqs):
+        return lists[seqs.index(longest)]  # "alternating black and white, left to right black, white, black, white": the
+        # pair's alternation written out, one order
     after_colon = [m for m in lists if re.search(rf"{_DIRECTION_WORDS}\s*:\s*(?:the\s+)?$", f.text[:m.start()])]
     near = after_colon or [m for m in lists if re.search(rf"{_DIRECTION_WORDS}\s*[:,]?\s*(?:the\s+)?$", f.text[:m.start()])
                            or re.match(rf"\s*,?\s*{_DIRECTION_WORDS}\b", f.text[m.end():])]
