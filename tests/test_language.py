@@ -8782,3 +8782,13 @@ def test_forty_seventh_session_steering_bases_read(text, expected):
 def test_forty_seventh_session_an_alternation_written_out_otherwise_is_two_orders():
     with pytest.raises(BadInput):  # the pair says black first, the list white first: which order is not one
         check_feasibility(parse("Four cubes in a row, alternating black and white, left to right white, black, white, black."))
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a radio's sign-off after the task (stranger54, read material: refused as an unknown word or an action)
+    ("Approach control: bring the brown cube in behind the gray cube. Wilco?", ["behind(brown,gray)"]),
+    ("Traffic advisory: build a stack of three, green at the bottom, white in the middle, orange on top. Acknowledge.",
+     ["stack(green,white,orange)"]),
+])
+def test_forty_seventh_session_a_radio_sign_off(text, expected):
+    assert meaning(check_feasibility(parse(text))) == expected

@@ -462,9 +462,10 @@ WORLD_STATEMENT_OWN_RE = re.compile(r"\b(?:slow\w*|quick\w*|fast\w*|hurr\w*|rush
 weighed out before :data:`VOICE_SENTENCE_HAZARD_RE` in :func:`rpg.schema.reading._world_statement` (said to the one who
 does the task, "Go slowly.", "Never rush.", they stay, to be refused)."""
 
-WORLD_SUBJECT_DETERMINERS: frozenset[str] = frozenset({"a", "an", "the", "my", "our", "his", "her", "their"})
+WORLD_SUBJECT_DETERMINERS: frozenset[str] = frozenset({"a", "an", "the", "my", "our", "his", "her", "their", "every", "each",
+                                                      "any"})
 """Determiners that may open the subject of a statement about a voice's world ("A luthier chooses ...", "The canal is
-calm.")."""
+calm.", "Every stonemason starts with the footing."; a quantifier there counts the world's things, not the cubes)."""
 
 WORLD_SUBJECT_HAZARD_WORDS: frozenset[str] = frozenset("""
 task tasks job jobs goal goals work result results outcome outcomes policy policies episode episodes trial trials run runs
@@ -2150,6 +2151,8 @@ FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\s*[,.;]?\s*\b(?:ty|thx|thanks|thank\s+you)\s+in\s+advance\b"), ""),
     # a radio's acknowledgement ("Copy that.", "..., copy?", "Over."): no copy of anything (it had been refused as an action)
     (re.compile(r"(?:^|(?<=[.!?]\s))\s*copy\s+that\s*[.!]\s*|\s*,\s*copy\s*\?\s*$"), lambda m: "" if m.group(0).strip().startswith("copy") else "."),
+    # a radio's sign-off after the task ("... Wilco?", "... Acknowledge.", "... Over.")
+    (re.compile(r"(?<=[.!?])\s+(?:wilco|roger(?:\s+that)?|acknowledge(?:d)?|over|out|over\s+and\s+out)\s*[.!?]?\s*$"), ""),
     (re.compile(r"\boutta\b"), "out of"),
     # the task said to be complete, mid-text ("That is the whole task; there are ...", "thats it.", "(b) thats it")
     (re.compile(r"\s*[,.;:]?\s*(?:\([a-z]\)\s*)?\b(?:that\s+is|thats|that's)\s+(?:it|the\s+whole\s+task|all)\s*(?=[.;!,]|$)"), ""),

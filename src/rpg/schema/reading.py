@@ -293,7 +293,7 @@ def _world_statement(sentence: str) -> bool:
     words = re.findall(r"[a-z][a-z'\-]*", low)
     if len(words) < 2 or not _world_subject(words):
         return False
-    weighed = lexicon.WORLD_STATEMENT_OWN_RE.sub(" ", low)
+    weighed = lexicon.WORLD_STATEMENT_OWN_RE.sub(" ", re.sub(r"^(?:every|each|any)\s+", "the ", low))  # the subject's quantifier
     if lexicon.TASK_CONTENT_RE.search(weighed) or lexicon.GOAL_THING_PREFIX_RE.search(weighed) \
             or lexicon.VOICE_SENTENCE_HAZARD_RE.search(weighed) or lexicon.ASIDE_CONTENT_RE.search(weighed) \
             or lexicon.RETRACTION_RE.search(low):
