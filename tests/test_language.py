@@ -8792,3 +8792,11 @@ def test_forty_seventh_session_an_alternation_written_out_otherwise_is_two_order
 ])
 def test_forty_seventh_session_a_radio_sign_off(text, expected):
     assert meaning(check_feasibility(parse(text))) == expected
+
+
+def test_forty_seventh_session_last_after_the_lists_last_then():
+    # "then green last" says again that green ends the list ("last" had been an unknown word); "last" before another
+    # "then" is not read
+    assert meaning(check_feasibility(parse("Stack red first, then blue, then green last."))) == ["stack(red,blue,green)"]
+    with pytest.raises(BadInput):
+        check_feasibility(parse("Stack red first, then blue last, then green."))

@@ -2151,6 +2151,9 @@ FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\s*[,.;]?\s*\b(?:ty|thx|thanks|thank\s+you)\s+in\s+advance\b"), ""),
     # a radio's acknowledgement ("Copy that.", "..., copy?", "Over."): no copy of anything (it had been refused as an action)
     (re.compile(r"(?:^|(?<=[.!?]\s))\s*copy\s+that\s*[.!]\s*|\s*,\s*copy\s*\?\s*$"), lambda m: "" if m.group(0).strip().startswith("copy") else "."),
+    # "then white last on top", "Stack red first, then blue, then green last": "last" after the list's last "then" says
+    # again that it ends the list (it had been an unknown word)
+    (re.compile(rf"\b(then\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?)\s+last\b(?![^.;]*\bthen\b)"), r"\1"),
     # a radio's sign-off after the task ("... Wilco?", "... Acknowledge.", "... Over.")
     (re.compile(r"(?<=[.!?])\s+(?:wilco|roger(?:\s+that)?|acknowledge(?:d)?|over|out|over\s+and\s+out)\s*[.!?]?\s*$"), ""),
     (re.compile(r"\boutta\b"), "out of"),
