@@ -46,7 +46,7 @@ def alive(pid: int) -> bool:
 
 
 
-_COMPILED: dict[tuple[str, str | None], object] = {}
+_COMPILED: dict[tuple, object] = {}
 
 
 def compiled(instruction: str, out_dir, name: str | None = None):
@@ -58,18 +58,19 @@ def compiled(instruction: str, out_dir, name: str | None = None):
     reused."""
     import atexit
     import dataclasses
+    import os
     import shutil
     import tempfile
 
     from rpg.compiler import compile_instruction
 
-    key = (instruction, name)
+    key = (instruction, name, os.environ.get("RPG_SNAPSHOTS", ""))  # (with its pictures or without)
     if key not in _COMPILED:
         if not _COMPILED:
             cache = Path(tempfile.mkdtemp(prefix="rpg-test-compiled-"))
             atexit.register(shutil.rmtree, cache, True)
-            _COMPILED[("", "")] = cache
-        r = compile_instruction(instruction, _COMPILED[("", "")] / str(len(_COMPILED)), name=name)
+            _COMPILED[("", "", "")] = cache
+        r = compile_instruction(instruction, _COMPILED[("", "", "")] / str(len(_COMPILED)), name=name)
         if not r.valid:
             return compile_instruction(instruction, out_dir, name=name)
         _COMPILED[key] = r

@@ -36,6 +36,13 @@ ROOT = Path(__file__).resolve().parents[1]
 SEED = ROOT.parent / "shared" / "seed-cases.yaml"
 
 
+@pytest.fixture(autouse=True)
+def _no_snapshots(monkeypatch):
+    """These tests judge goals and their citations, not pictures: tasks are built without initial.png and goal.png
+    (``RPG_SNAPSHOTS=0``; test_compile checks both ways)."""
+    monkeypatch.setenv("RPG_SNAPSHOTS", "0")
+
+
 def _texts() -> list[str]:
     entries = yaml.safe_load((ROOT / "tests" / "corpus" / "instructions.yaml").read_text())
     entries = entries["instructions"] if isinstance(entries, dict) else entries

@@ -510,3 +510,20 @@ def test_a_start_said_before_its_goal_compiles_to_the_end(tmp_path):
     doc = yaml.safe_load((result.path / "task.yaml").read_text())
     assert [a["kind"] for a in doc["accounting"]] == ["unaccounted"]
     assert doc["schema"]["initial_state"]["structures"]
+
+
+def test_snapshots_can_be_left_out_and_the_task_is_the_same(tmp_path, monkeypatch):
+    """``RPG_SNAPSHOTS=0`` builds the task without initial.png and goal.png (a batch job that looks at no pictures): the
+    same valid task, the same content hash, its file manifest without the pictures; ``rpg render`` draws them later."""
+    drawn = compile_instruction("Stack the red block on the blue block", tmp_path / "drawn", name="t")
+    monkeypatch.setenv("RPG_SNAPSHOTS", "0")
+    bare = compile_instruction("Stack the red block on the blue block", tmp_path / "bare", name="t")
+    assert drawn.valid and bare.valid and bare.content_hash == drawn.content_hash
+    assert (drawn.path / "initial.png").is_file() and (drawn.path / "goal.png").is_file()
+    assert not (bare.path / "initial.png").exists() and not (bare.path / "goal.png").exists()
+    files = yaml.safe_load((bare.path / "task.yaml").read_text())["files"]
+    assert not any(name.endswith(".png") for name in files)
+    monkeypatch.setenv("RPG_SNAPSHOTS", "1")
+    out = subprocess.run([sys.executable, "-m", "rpg.cli", "render", str(bare.path)], capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    assert (bare.path / "initial.png").is_file() and (bare.path / "goal.png").is_file()

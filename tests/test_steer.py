@@ -18,6 +18,13 @@ from rpg.steer.session import goal_tower
 from rpg.steer.spec import Item, TaskSpec, extract, render
 from tests.helpers import compiled
 
+
+@pytest.fixture(autouse=True)
+def _no_snapshots(monkeypatch):
+    """The steering tests judge edits, not pictures: their versions are built without initial.png and goal.png
+    (``RPG_SNAPSHOTS=0``, a fifth of a second of software rendering each; test_compile checks both ways)."""
+    monkeypatch.setenv("RPG_SNAPSHOTS", "0")
+
 ROOT = Path(__file__).resolve().parents[1]
 SEEDS = ROOT.parent / "shared" / "seed-cases.yaml"
 RPG = [sys.executable, "-m", "rpg.cli"]

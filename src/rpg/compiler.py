@@ -13,6 +13,7 @@ or not at all: it is written to a temporary directory and renamed into place.
 
 from __future__ import annotations
 
+import os
 import shutil
 import time
 from dataclasses import dataclass, field
@@ -132,6 +133,14 @@ def _log_line(g: dict) -> str:
     return f"gate {g['gate']:<11} {g['status'].upper():<7} {g.get('duration_s', 0.0) * 1000:7.1f} ms{msg}"
 
 
+def snapshots_wanted() -> bool:
+    """Whether a build renders ``initial.png`` and ``goal.png``: yes, unless the environment variable ``RPG_SNAPSHOTS`` is
+    ``0``, ``off``, ``no`` or ``false`` (a batch job or a test run that looks at no pictures: each costs about a fifth of a
+    second of software rendering).  A task without them is whole, as one built on a machine without OpenGL is; ``rpg
+    render`` draws them later."""
+    return os.environ.get("RPG_SNAPSHOTS", "1").strip().lower() not in ("0", "off", "no", "false")
+
+
 def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[str] = frozenset(),
           backend: str = "builtin", model: str | None = None, name: str | None = None,
           extra_files=None, coder=None, author: str | None = None,
@@ -162,7 +171,7 @@ def build(schema: TaskSchema, out_dir: Path, seed: int = 0, disabled: frozenset[
             code = generate(schema) if coder is None else coder(schema, failure)
             (tmp / "code.py").write_text(code.code)
             (tmp / "goal_state_code.py").write_text(code.goal_state_code)
-            gates = validate_files(tmp, seed, disabled, snapshots=True, tolerances=schema.tolerances.model_dump(),
+            gates = validate_files(tmp, seed, disabled, snapshots=snapshots_wanted(), tolerances=schema.tolerances.model_dump(),
                                    enabled=enabled, name=schema.name)
             log.append(f"cycle {cycle}:")
             log += ["  " + _log_line(g) for g in gates]
