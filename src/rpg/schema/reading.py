@@ -25,7 +25,6 @@ from rpg.domain.palette import COLOR_ALIASES
 from rpg.errors import BadInput
 from rpg.schema import lexicon, senses
 from rpg.schema.builder import DEFAULT_COLORS
-from rpg.schema.structures import STRUCTURE_RE
 from rpg.schema.lexicon import (
     COLOR_RE,
     COLORS,
@@ -39,6 +38,7 @@ from rpg.schema.lexicon import (
     VOCAB,
     names_a_role,
 )
+from rpg.schema.structures import STRUCTURE_RE
 
 
 class ParseError(BadInput):
