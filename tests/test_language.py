@@ -8800,3 +8800,12 @@ def test_forty_seventh_session_last_after_the_lists_last_then():
     assert meaning(check_feasibility(parse("Stack red first, then blue, then green last."))) == ["stack(red,blue,green)"]
     with pytest.raises(BadInput):
         check_feasibility(parse("Stack red first, then blue last, then green."))
+
+
+def test_forty_seventh_session_a_pyramid_top_of_several_after_the_base_list():
+    # a hostile probe: "... and yellow and pink on top" had put yellow in the base, silently; a pyramid with two on top and
+    # no layer between is refused; one on top is read
+    with pytest.raises(BadInput):
+        check_feasibility(parse("Pyramid with a base of red, blue and green and yellow and pink on top."))
+    assert meaning(check_feasibility(parse("Pyramid with a base of red, blue and green and yellow on top."))) == [
+        "pyramid(blue,green,red|yellow)"]

@@ -1972,7 +1972,10 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(rf"\b(pyramids?\s+with\s+)a\s+(?:base|bottom(?:\s+layer)?)\s+of\s+(?P<l>(?:the\s+)?(?:(?:letter|digit|number)\s+"
                 rf"(?:blocks|cubes)\s+)?(?:{COLOR_RE}|[a-z0-9])(?:\s*,\s*(?:{COLOR_RE}|[a-z0-9]))*\s*,?\s+and\s+(?:{COLOR_RE}|[a-z0-9])"
                 rf"(?:\s+(?:cubes|blocks))?)\s+and\s+(?=(?:the\s+|a\s+|an\s+)?(?:(?:letter|digit|number)\s+)?(?:{COLOR_RE}|[a-z0-9])"
-                r"(?:\s+(?:block|cube))?\s+(?:on\s+top|at\s+the\s+top)\b(?!\s+of\b))"), r"\1\g<l> at the base and "),
+                rf"(?:\s+(?:block|cube))?(?:(?:\s*,\s*|\s+and\s+)(?:the\s+|a\s+|an\s+)?(?:{COLOR_RE}|[a-z0-9])(?:\s+(?:block|cube))?)*"
+                r"\s+(?:(?:cubes|blocks)\s+)?(?:on\s+top|at\s+the\s+top)\b(?!\s+of\b))"), r"\1\g<l> at the base and "),
+    # (a top of several said after the base list, "... and yellow and pink on top", is the top's: yellow had gone into the
+    # base, silently; a pyramid with several on top and no layer between is refused)
     # "a pyramid from two white cubes and a black cube, the black cube at the peak": the one cube said on top, after a
     # comma without "with" (it had been a third black cube of a pyramid of six)
     (re.compile(rf"\b(pyramids?\b[^.;]*?),\s+(?:and\s+)?(?:the\s+)?((?:{COLOR_RE})\s+(?:cube|block|one))\s+(?:at\s+the\s+(?:very\s+)?"
