@@ -8809,3 +8809,14 @@ def test_forty_seventh_session_a_pyramid_top_of_several_after_the_base_list():
         check_feasibility(parse("Pyramid with a base of red, blue and green and yellow and pink on top."))
     assert meaning(check_feasibility(parse("Pyramid with a base of red, blue and green and yellow on top."))) == [
         "pyramid(blue,green,red|yellow)"]
+
+
+@pytest.mark.parametrize("text", ["After 5 pm, move the pink cube to the left side.",  # stranger55/56 (read): had compiled
+                                  "By 10:30, stack the red cube on the blue cube.",
+                                  "At 3 o'clock, put the red cube on the blue cube."])
+def test_forty_seventh_session_a_time_of_day_is_refused_as_time(text):
+    from rpg.schema.reading import Inexpressible
+
+    with pytest.raises(Inexpressible) as exc:
+        check_feasibility(parse(text))
+    assert "about time" in str(exc.value)

@@ -863,7 +863,10 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "is a rotation, an action the domain does not have: a task's goal says where cubes end up and which face is up, "
      "not a motion or an angle"),
     ("time", r"\b(?:\d+(?:\.\d+)?\s*(?:seconds?|secs?|s|minutes?|mins?|hours?|hrs?|ms|milliseconds?)(?![\w'])|seconds|minutes?|hours?"
-             r"|meanwhile|forever|while|whilst|during)\b",
+             r"|meanwhile|forever|while|whilst|during)\b"
+             # a time of day ("After 5 pm, move ...", "By 10:30, stack ...", "at 3 o'clock": it had compiled, the time dropped)
+             r"|\b\d{1,2}(?::\d{2})?\s*(?:a\.?m\.?|p\.?m\.?|o'?\s?clock)(?![\w])|\b(?:at|after|before|by|until|till)\s+\d{1,2}:\d{2}\b"
+             r"|\b(?:at|after|before|by|until|till)\s+(?:noon|midnight|midday)\b",
      "is about time (a duration or a time limit, a measured quantity): a task's goal is checked once, at the end of "
      "the episode, with no clock or duration"),
     ("quantity", r"\b(?:\d+(?:\.\d+)?\s*(?:cm|mm)\b|(?:centi|milli)?(?:meters?|metres?)|inch(?:es)?|feet|foot"
