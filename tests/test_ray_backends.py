@@ -309,3 +309,15 @@ def test_eval_on_a_ray_head_started_separately_gives_the_pools_summary(ray_head,
     assert summary == _without_timing(tmp_path / "ray" / "summary.json")
     assert summary["overall"]["n"] == 2 and set(summary["tasks"]) == {"stack_blocks"}
     assert _episodes(tmp_path / "pool") == _episodes(tmp_path / "ray")
+
+
+def test_a_local_ray_instance_joins_no_other_cluster(manifest, tmp_path, monkeypatch):
+    """Without --address rpg starts a Ray instance of its own: Ray's default had joined the cluster RAY_ADDRESS (or the
+    machine's last started one) names, whose workers may run other code (two test runs side by side had written different
+    videos). Here RAY_ADDRESS names a port nobody listens on; the run must not try it."""
+    monkeypatch.setenv("RAY_ADDRESS", f"127.0.0.1:{_free_port()}")
+    out = tmp_path / "out"
+    r = _rpg("eval", manifest.parent / "stack_blocks", "--embodiment", FLOAT, "-n", "1", "-o", out, "--backend", "ray",
+             "--jobs", "1")
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert (out / "summary.json").is_file()

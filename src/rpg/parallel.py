@@ -216,7 +216,10 @@ def _ray(jobs: int, address: str | None = None, **_) -> Iterator[Backend]:
                     raise BackendError("a local Ray instance needs RAY_AUTH_MODE=token (Ray's token "
                                        "authentication); unset RAY_AUTH_MODE or pass --address to use a "
                                        "cluster you secured yourself")
-                ray.init(num_cpus=jobs, _node_ip_address="127.0.0.1", **quiet)
+                # address "local": a new instance of its own, even where the machine runs another (without it Ray
+                # joins RAY_ADDRESS's or the last one started there, whose workers may run other code: two runs of the
+                # test suite side by side had written different videos, a user's job could land on someone else's cluster)
+                ray.init(address="local", num_cpus=jobs, _node_ip_address="127.0.0.1", **quiet)
         except BackendError:
             raise
         except Exception as exc:  # noqa: BLE001 - Ray's many start-up failures, as one line
