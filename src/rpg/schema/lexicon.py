@@ -462,8 +462,10 @@ WORLD_STATEMENT_OWN_RE = re.compile(r"\b(?:slow\w*|quick\w*|fast\w*|hurr\w*|rush
 weighed out before :data:`VOICE_SENTENCE_HAZARD_RE` in :func:`rpg.schema.reading._world_statement` (said to the one who
 does the task, "Go slowly.", "Never rush.", they stay, to be refused)."""
 
-WORLD_SUBJECT_DETERMINERS: frozenset[str] = frozenset({"a", "an", "the", "my", "our", "his", "her", "their", "every", "each",
-                                                      "any"})
+WORLD_SUBJECT_QUANTIFIERS: frozenset[str] = frozenset({"every", "each", "any"})
+"""Quantifiers that may open a world statement's subject: they count the world's things, not the cubes."""
+
+WORLD_SUBJECT_DETERMINERS: frozenset[str] = frozenset({"a", "an", "the", "my", "our", "his", "her", "their"}) | WORLD_SUBJECT_QUANTIFIERS
 """Determiners that may open the subject of a statement about a voice's world ("A luthier chooses ...", "The canal is
 calm.", "Every stonemason starts with the footing."; a quantifier there counts the world's things, not the cubes)."""
 

@@ -293,7 +293,9 @@ def _world_statement(sentence: str) -> bool:
     words = re.findall(r"[a-z][a-z'\-]*", low)
     if len(words) < 2 or not _world_subject(words):
         return False
-    weighed = lexicon.WORLD_STATEMENT_OWN_RE.sub(" ", re.sub(r"^(?:every|each|any)\s+", "the ", low))  # the subject's quantifier
+    words = low.split()
+    subject = "the " + " ".join(words[1:]) if words and words[0] in lexicon.WORLD_SUBJECT_QUANTIFIERS else low  # its quantifier
+    weighed = lexicon.WORLD_STATEMENT_OWN_RE.sub(" ", subject)
     if lexicon.TASK_CONTENT_RE.search(weighed) or lexicon.GOAL_THING_PREFIX_RE.search(weighed) \
             or lexicon.VOICE_SENTENCE_HAZARD_RE.search(weighed) or lexicon.ASIDE_CONTENT_RE.search(weighed) \
             or lexicon.RETRACTION_RE.search(low):
@@ -531,7 +533,10 @@ def _absolute_phrases(chunk: str) -> bool:
         return False  # "Upside down.", "Inverse version:": a pose or a turn of the task
     pieces = re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", low)
     for piece in pieces:
-        m = re.fullmatch(r"(?:(?:the|my|your|our|his|her|their)\s+)?([a-z][a-z'\-]*)\s+(?:(?:is|are)\s+)?([a-z]+)", piece)
+        tokens = piece.split()
+        if tokens and tokens[0] in lexicon.WORLD_SUBJECT_DETERMINERS - lexicon.WORLD_SUBJECT_QUANTIFIERS:
+            tokens = tokens[1:]  # "the flux is on"
+        m = re.fullmatch(r"([a-z][a-z'\-]*)\s+(?:(?:is|are)\s+)?([a-z]+)", " ".join(tokens))
         if m is None:
             return False
         noun, state = m.groups()
