@@ -293,8 +293,8 @@ def _world_statement(sentence: str) -> bool:
     words = re.findall(r"[a-z][a-z'\-]*", low)
     if len(words) < 2 or not _world_subject(words):
         return False
-    words = low.split()
-    subject = "the " + " ".join(words[1:]) if words and words[0] in lexicon.WORLD_SUBJECT_QUANTIFIERS else low  # its quantifier
+    quantified = words[0] in lexicon.WORLD_SUBJECT_QUANTIFIERS  # "Every hull ...": the subject's quantifier set apart
+    subject = "the " + low.split(None, 1)[1] if quantified and len(low.split(None, 1)) > 1 else low
     weighed = lexicon.WORLD_STATEMENT_OWN_RE.sub(" ", subject)
     if lexicon.TASK_CONTENT_RE.search(weighed) or lexicon.GOAL_THING_PREFIX_RE.search(weighed) \
             or lexicon.VOICE_SENTENCE_HAZARD_RE.search(weighed) or lexicon.ASIDE_CONTENT_RE.search(weighed) \
