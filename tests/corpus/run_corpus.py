@@ -94,7 +94,7 @@ STRANGER_SETS = {
     "stranger57": ("stranger57.yaml", "STRANGER set 57 (stranger57.yaml, transfer measure of the forty-fourth session; development material from the forty-fifth)"),
     "stranger58": ("stranger58.yaml", "STRANGER set 58 (stranger58.yaml, transfer measure of the forty-fifth session; development material from the forty-sixth)"),
     "stranger59": ("stranger59.yaml", "STRANGER set 59 (stranger59.yaml, transfer measure of the forty-sixth session; development material from the forty-seventh)"),
-    "stranger60": ("stranger60.yaml", "STRANGER set 60 (stranger60.yaml, written at the start of the forty-seventh session: aggregates only)"),
+    "stranger60": ("stranger60.yaml", "STRANGER set 60 (stranger60.yaml, transfer measure of the forty-seventh session; development material from the forty-eighth)"),
 }
 SPLITS = HERE / "splits.yaml"
 

@@ -98,7 +98,7 @@ DEVELOPMENT = {
     "stranger27": ("steer_stranger27.yaml", "STRANGER steering set 27 (steer_stranger27.yaml, transfer measure of the forty-third session; development material from the forty-fourth)"),
     "stranger28": ("steer_stranger28.yaml", "STRANGER steering set 28 (steer_stranger28.yaml, transfer measure of the forty-fourth session; development material from the forty-fifth)"),
     "stranger29": ("steer_stranger29.yaml", "STRANGER steering set 29 (steer_stranger29.yaml, transfer measure of the forty-fifth session; development material from the forty-sixth)"),
-    "stranger30": ("steer_stranger30.yaml", "STRANGER steering set 30 (steer_stranger30.yaml, written during the forty-sixth session, delivered after its end, measured first at the forty-seventh's start: aggregates only)"),
+    "stranger30": ("steer_stranger30.yaml", "STRANGER steering set 30 (steer_stranger30.yaml, transfer measure of the forty-seventh session; development material from the forty-eighth)"),
     "stranger31": ("steer_stranger31.yaml", "STRANGER steering set 31 (steer_stranger31.yaml, written at the start of the forty-seventh session: aggregates only)"),
 }
 UNSEEN = HERE / "steer_unseen.yaml"
