@@ -350,6 +350,38 @@ CONCESSION_OPENING_RE = re.compile(
 constraint of the goal ("while" had been refused as a time; "it" as a reference); a time said ("It should take under a
 minute, but ...") is no concession and stays."""
 
+OPENING_ADJUNCT_RE = re.compile(
+    r"(?i)(?:^|(?<=[.!?]\s))(?P<a>(?P<prep>for|per|between|as\s+for|according\s+to|in)\s+(?P<np>[a-z][a-z'\-]*(?:\s+[a-z][a-z'\-]*){0,3}?)"
+    r"|(?P<np2>[a-z][a-z'\-]*(?:\s+[a-z][a-z'\-]*){0,2}?)\s+aside)"
+    r"(?:\s*,\s*|\s+(?=(?:i|we)\s+(?:need|want|would\s+like|require)\b|(?:i|we)'d\s+like\b"
+    r"|(?:the\s+(?:robot|agent|policy|arm)|you)\s+(?:must|should|will|needs?\s+to|has\s+to|have\s+to)\b))(?=\S)")
+"""A sentence's opening adjunct of purpose, source or occasion in a voice's world ("For the keyframes I need a row of
+...", "For this mosaic panel I want ...", "Per the thesaurus, ...", "Between juggling sets, ...", "Etymology aside,
+...", "In this trial the agent must ..."): dropped by :func:`rpg.schema.reading.drop_asides` where its noun phrase
+says nothing of the task (:func:`rpg.schema.reading._opening_adjunct`).  Its unknown words had refused the task."""
+
+OPENING_CLAUSE_RE = re.compile(r"^\s*(?P<c>[^.!?;:\u2013\u2014]{3,80}?)\s+(?:--|\u2014|\u2013|-)\s+(?=\S)")
+"""A text's opening clause set off by a dash ("we're evaluating placement accuracy -- put the cyan cube ..."): dropped by
+:func:`rpg.schema.reading.drop_asides` where, said as a sentence of its own, it would be (framing, commentary, a voice's
+sentence or a statement of its world)."""
+
+OPENING_ADJUNCT_DETERMINERS = frozenset({"the", "this", "that", "these", "those", "my", "our", "your", "his", "her", "their",
+                                         "a", "an", "today's"})
+"""Determiners an opening adjunct's noun phrase (:data:`OPENING_ADJUNCT_RE`) may begin with."""
+
+OPENING_ADJUNCT_PLACED_PREPS = frozenset({"in", "between"})
+"""Prepositions of :data:`OPENING_ADJUNCT_RE` that may also place a cube ("In this drawer, put ...", "Between the mugs,
+..."): dropped only before a noun phrase of a demonstrative or possessive determiner ("in") that names no object."""
+
+OPENING_ADJUNCT_HAZARD_RE = re.compile(
+    r"\b(?:it|its|they|them|one|ones|each|every|all|both|either|neither|other|others|rest|remainder|remaining|same|former"
+    r"|latter|last|next|previous|first|second|third|final|no|not|none|nothing|never|without|except|case|instead|change|time"
+    r"|times|while|moment|now|once|twice|long|later|soon|ever|good|sake|order|way|ways|side|sides|end|ends|middle|top|bottom"
+    r"|start|finish|goal|task|episode|table|robot|agent|policy|arm|gripper|hand|hands)\b")
+"""Words that keep an opening adjunct (:data:`OPENING_ADJUNCT_RE`) as part of the task: a reference or quantifier ("For each
+of them", "For the last one"), a negation, a condition ("In that case"), a time ("For a while", "For now"), an order,
+side or end ("For the other side"), the task's own things."""
+
 DISCOURSE_OPENING_RE = re.compile(r"(?i)^\s*(?:(?:so|ok(?:ay)?|well|right)\s*,?\s+)?(?:anyway|anyways|anyhow)\s*,\s+(?=\S)")
 """A text's opening "Anyway," ("Anyway, pop the yellow cube on the green patch."): it turns the talk to the task and says
 nothing of its goal (its word had been refused as unknown).  Only at the text's start: inside it, "anyway" may set
@@ -1353,9 +1385,14 @@ touching", "..., left to right" after a comma, which may be every structure's) l
 
 REST_ANY_ORDER_RE = re.compile(r"(?i)\bthe\s+rest(?:\s+of\s+(?:them|the\s+(?:cubes|blocks)))?\s+(?:(?:can|may|could)\s+)?"
                                r"(?:(?:go|be|are|stand|sit)\s+)?(?:in\s+(?:any|whatever|whichever|either)\s+order\b"
-                               r"|(?:however|wherever|as)\s+you\s+(?:like|want|wish|please|prefer)\b)")
+                               r"|(?:however|wherever|as)\s+you\s+(?:like|want|wish|please|prefer)\b)"
+                               r"|\b(?:the\s+)?order\s+of\s+the\s+(?:others|rest|other\s+(?:two|three|four|five|[2-5]|ones|cubes|blocks)"
+                               r"|remaining\s+(?:two|three|four|five|[2-5]|ones|cubes|blocks))(?:\s+(?:cubes|blocks|ones))?\s+"
+                               r"(?:is\s+(?:free|open|unimportant|irrelevant|up\s+to\s+you|your\s+(?:choice|call)|not\s+important)"
+                               r"|(?:does\s*n[o']?t|doesn't|does\s+not)\s+matter|is\s*n[o']?t\s+important)\b")
 """The cubes given no place, left in any order ("with the black cube on top; the rest in whatever order", "the rest however
-you like"): written "the others in any order" (it had been refused as a reference to cubes nobody named)."""
+you like", "The order of the other two is free."): written "the others in any order" (it had been refused as a reference to
+cubes nobody named, or over "free")."""
 
 STRUCTURE_ADJECTIVES = r"little|small|tiny|short|tall|big|large|new|finished|completed|neat|lone|single"
 """Words that may stand between "the"/"that" and a structure one sees ("that little tower", "the small stack")."""
@@ -1861,6 +1898,15 @@ PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 r"\s+(?:is\s+)?(?:the\s+)?(?:(?:at|on)\s+the\s+)?(?:far\s+)?(?P<b>left|right)(?:\s+(?:end|one))?(?=\s*(?:[.;!]|$))"),
      lambda m: m.group(0) if m.group("a") == m.group("b") else
      f"from {m.group('a')} to {m.group('b')}: {m.group('c')}, " + re.sub(r"\bthe\s+", "", m.group("mid")) + f", then {m.group('z')}"),
+    # "Row of three cubes, purple at the far left, then cyan, then yellow at the far right": the order from that end, its
+    # far end's cube the last (the end said had been left unread, and the row refused)
+    (re.compile(rf"(?<![\w-])(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:(?:is|goes|sits)\s+)?(?:at|on)\s+the\s+(?:far\s+|very\s+)?"
+                rf"(?P<a>left|right)(?:\s+end)?\s*,\s*(?:and\s+)?(?P<mid>then\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?"
+                rf"(?:\s*,\s*(?:and\s+)?then\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?)*)"
+                r"(?:\s+(?:(?:is|goes|sits)\s+)?(?:at|on)\s+the\s+(?:far\s+|very\s+)?(?P<b>left|right)(?:\s+end)?)?(?=\s*(?:[.;!]|$))"),
+     lambda m: m.group(0) if m.group("a") == m.group("b") or not re.search(r"\b(?:rows?|lines?)\b", m.string)
+     else f"from {m.group('a')} to {'right' if m.group('a') == 'left' else 'left'}: {m.group('c')}, "
+     + re.sub(r"\b(?:the|cube|block|one)\b\s*", "", m.group("mid")).strip(" ,")),
     # "the rightmost is pink, next to it is orange, and the leftmost is gray" of a row of three: from that end
     (re.compile(rf"\b(?:the\s+)?(?P<a>left|right)(?:\s+(?:one|cube|block))?\s+(?:is|should\s+be|must\s+be)\s+(?P<c1>{COLOR_RE})\s*,\s*(?:and\s+)?"
                 rf"next\s+to\s+it\s+(?:is|should\s+be|must\s+be|comes)\s+(?P<c2>{COLOR_RE})\s*,?\s+(?:and\s+)?(?:then\s+)?(?:the\s+)?"
@@ -2150,6 +2196,13 @@ FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"\s*[,.;]\s*(?:and\s+)?nothing\s+else\s*[.!]?\s*$"), ""),
     # Indian English "one time" at the close ("Put the purple cube on the white patch one time."): a request, no count
     (re.compile(r"\s+one\s+time\s*(?=[.!]?\s*$)"), ""),
+    # "Gather every pink cube into one pile", "Put each red cube into a tower": all the cubes of that colour in the one
+    # structure (read like "all the pink cubes"; the one pile had been refused as naming no cubes)
+    (re.compile(rf"\b(?:every|each)\s+(?:single\s+)?({COLOR_RE})\s+(?:cube|block)\b(?=\s+(?:in|into|to|onto)\s+(?:a|one|1|the|a\s+single)\s+"
+                r"(?:piles?|heaps?|towers?|stacks?)\b)"), r"all the \1 cubes"),
+    # "Two stacks please - one with ..., the other with ...": the heading of structures counted off, its dash a colon
+    (re.compile(rf"\b((?:two|three|four|[2-4])\s+(?:stacks|towers|rows|lines|piles))\s+please\s*(?:-|\u2013|\u2014)\s+(?=(?:one|1)\b)"),
+     r"\1 please: "),
     # Singapore English "any order also can": any order
     (re.compile(r"\s*[,;]?\s*\bany\s+order\s+also\s+(?:can|ok|okay|fine)\b"), " in any order"),
     # "(right as seen from the robot)": rpg's own frame, said in passing
@@ -2181,7 +2234,7 @@ ANY_ORDER_RE = re.compile(
     r"|works(?:\s+for\s+you)?|goes|will\s+do|suits\s+you|you\s+see\s+fit"
     r"|(?:(?:that|which)\s+)?(?:sounds|looks|seems|feels)\s+(?:best|right|good|nicest)(?:\s+to\s+you)?))?"
     r"|(?:the\s+)?order\s+(?:does\s*n[o']?t|doesn't|is\s*n[o']?t|isn't)\s+(?:matter|important)|regardless\s+of\s+(?:the\s+)?order"
-    r"|(?:the\s+)?order\s+is\s+(?:unimportant|irrelevant)"
+    r"|(?:the\s+)?order\s+(?:is\s+)?(?:unimportant|irrelevant|immaterial)"
     r"|whichever(?:\s+(?:one|cube|block))?\s+goes\s+where|in\s+whichever\s+order(?:\s+(?:(?:that|which)\s+)?(?:sounds|looks|seems|feels)\s+(?:best|right|good|nicest)(?:\s+to\s+you)?)?"  # "..., whichever
     # goes where", "in whichever order sounds best to you"
     r"|(?:the\s+)?order\s+is\s+(?:up\s+to\s+(?:you|the\s+(?:policy|robot|agent|model))|your\s+(?:choice|call)|free|flexible|open)|order\s+free\b"
@@ -3712,8 +3765,9 @@ white cubes above them and one white cube at the peak"): that layer's next one (
 _LAYER_SAID_RE = re.compile(r"\b(?P<bottom>bottom|base|foundation|lowest|first)\s+(?:row|layer|level|tier)\b|\bon\s+the\s+(?P<bottom2>bottom|base)\b"
                             r"|\b(?P<k>second|third|fourth|fifth)\s+(?:row|layer|level|tier)\b")
 LAYER_BELOW_ABOVE_RE = re.compile(_LAYER_CUBES.replace("cubes>", "low>") + r"\s+(?:(?:go|goes|are|is)\s+)?(?:below|underneath|beneath|under)"
-                                  r"\s*,\s*(?:and\s+|with\s+)?" + _LAYER_CUBES.replace("cubes>", "high>")
-                                  + r"\s+(?:(?:go|goes|are|is)\s+)?(?:above|over|on\s+top)(?=\s*(?:[.;!]|$))")
+                                  r"(?:\s*,\s*(?:and\s+|with\s+)?|\s+(?:and|with)\s+)" + _LAYER_CUBES.replace("cubes>", "high>")
+                                  + r"\s+(?:(?:go|goes|are|is)\s+)?(?:above|over|on\s+top)(?:\s+(?:of\s+)?(?:them|those|these))?"
+                                  r"(?=\s*(?:[.;!]|$))")
 """The two layers of a structure two layers high said as the cubes below and the cubes above ("a two-row wall: three blue
 cubes below, three green cubes above"): its bottom and top rows (:func:`layers_said_relatively`)."""
 
@@ -3733,8 +3787,8 @@ _LAYER_MORE_RE = re.compile(r"\b(?:middle|third|fourth|peak|apex|summit|(?:three
 def layers_said_relatively(text: str) -> str:
     """``text`` (a layered structure's, lower case) with each layer said relative to another written as its place from the
     table: "above them" after the bottom row is the second layer, after the second the third (:data:`LAYER_ABOVE_RE`; left
-    as it is where no layer was said before it); "N X cubes below, M Y cubes above" of a structure said two layers high
-    (:data:`LAYER_BELOW_ABOVE_RE`) its bottom and top rows.  (The cubes above had been read on top of one cube, and the
+    as it is where no layer was said before it); "N X cubes below, M Y cubes above" of a structure said two layers high, or of a wall
+    with no other layer said (:data:`LAYER_BELOW_ABOVE_RE`), its bottom and top rows.  (The cubes above had been read on top of one cube, and the
     count of the cubes below taken for the wall's width.)"""
     def above(m: re.Match) -> str:
         said = list(_LAYER_SAID_RE.finditer(m.string[:m.start()]))
@@ -3751,7 +3805,8 @@ def layers_said_relatively(text: str) -> str:
         if new == text:
             break
         text = new
-    if re.search(r"\b(?:two|2)[\s-]+(?:rows?|layers?|levels?|tiers?|high|tall)\b", text):
+    if re.search(r"\b(?:two|2)[\s-]+(?:rows?|layers?|levels?|tiers?|high|tall)\b", text) \
+            or (re.search(r"\bwalls?\b", text) and not _LAYER_SAID_RE.search(text) and not _LAYER_MORE_RE.search(text)):
         text = LAYER_BELOW_ABOVE_RE.sub(lambda m: f"{m.group('low')} in the bottom row, {m.group('high')} in the top row", text)
     pairs = list(LAYER_PAIR_RE.finditer(text))
     if len(pairs) == 1 and not _LAYER_SAID_RE.search(text) and not _LAYER_MORE_RE.search(text) \

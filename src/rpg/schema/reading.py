@@ -647,6 +647,42 @@ def drop_voice_chunks(text: str, labels: bool = True) -> tuple[str, list[str]]:
     return " ".join(sentences), dropped
 
 
+def _opening_adjunct(prep: str | None, np: str, text: str) -> bool:
+    """Whether an opening adjunct (:data:`lexicon.OPENING_ADJUNCT_RE`: ``prep`` and its noun phrase ``np``, or ``np``
+    "aside" where ``prep`` is None) is a voice's occasion that says nothing of the task: one to four words, no digit or
+    count, no colour, nothing of a goal (:data:`lexicon.TASK_CONTENT_RE`, :data:`lexicon.GOAL_THING_PREFIX_RE`), no
+    reference, quantifier, negation, condition, time, order, side or end (:data:`lexicon.OPENING_ADJUNCT_HAZARD_RE`,
+    :data:`lexicon.FRAMING_SENTENCE_HAZARD_RE`), no word the domain refuses but an object or an action of that world; and
+    after a preposition that may place a cube (:data:`lexicon.OPENING_ADJUNCT_PLACED_PREPS`) no object but a frame's noun
+    (:data:`lexicon.FRAME_NOUN_RE`), and for "in" a demonstrative or possessive determiner ("In this trial", not "In the
+    bowl")."""
+    low = np.lower().strip()
+    words = low.split()
+    prep = (prep or "").lower()
+    if not words or len(words) > 4 or re.search(rf"\d|\b(?:{lexicon.COUNT_WORD_RE})\b", low):
+        return False
+    if lexicon.TASK_CONTENT_RE.search(low) or lexicon.GOAL_THING_PREFIX_RE.search(low) or lexicon.OPENING_ADJUNCT_HAZARD_RE.search(low) \
+            or lexicon.FRAMING_SENTENCE_HAZARD_RE.search(low):
+        return False
+    nouns = words[1:] if words[0] in lexicon.OPENING_ADJUNCT_DETERMINERS else words
+    if not nouns or lexicon.RETRACTION_RE.search(" ".join(nouns)) or any(w in COLORS or w in lexicon.colour_names() or w in VOCAB or len(w) == 1 for w in nouns):
+        return False
+    placed = prep.split()[0] in lexicon.OPENING_ADJUNCT_PLACED_PREPS if prep else False
+    if prep == "in" and words[0] not in ("this", "that", "my", "our", "today's"):
+        return False
+    allowed = () if placed else ("object", "action")
+    if any(k not in allowed for k, _, _ in _inexpressible(low)):
+        return False
+    for w in nouns:
+        kind = senses.sense(w).kind
+        if kind in _KIND_WHY and kind not in allowed:
+            return False
+    if placed and not lexicon.FRAME_NOUN_RE.fullmatch(nouns[-1]) and (
+            _unknown_word_classes(f"{prep} {low}", nouns) or any(senses.sense(w).kind == "object" for w in nouns)):
+        return False  # "In this drawer, ...": an object that may hold a cube ("In this trial": a frame's noun, no object)
+    return True
+
+
 def _said_to_someone_else(before: str) -> bool:
     """Whether the words ``before`` a turn to the robot (:data:`lexicon.ROBOT_TURN_RE`) are of the speaker's own world
     ("Take one capsule twice daily with food.", "Nurse, keep the field sterile."): four words or more with a thing of that
@@ -713,6 +749,19 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
         dropped.append(frame.group(0).strip())
         text = text[frame.end():]
 
+    n_before = len(dropped)
+
+    def adjunct(m: re.Match) -> str:  # "For the keyframes I need ...", "Etymology aside, put ...": the voice's occasion
+        if not _opening_adjunct(m.group("prep"), m.group("np") or m.group("np2"), m.string):
+            return m.group(0)
+        dropped.append(m.group("a").strip())
+        return ""
+    adjoined = lexicon.OPENING_ADJUNCT_RE.sub(adjunct, text)
+    if adjoined != text and lexicon.GOAL_THING_RE.search(adjoined.lower()):
+        text = adjoined
+    else:
+        del dropped[n_before:]
+
     def aside(m: re.Match) -> str:
         said = m.group(0)
         if (lexicon.ASIDE_CONTENT_RE.search(said) or _inexpressible(said.lower())) and not _commentary_sentence(said.strip()):
@@ -739,6 +788,14 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
     if framing and len(framing) < len(sentences):
         kept = " ".join(s for s in sentences if s not in framing)
         dropped += framing
+    def opening_clause(m: re.Match) -> str:  # "we're evaluating placement accuracy -- put ...": a sentence of its own
+        said = m.group("c").strip()
+        if not (_framing_sentence(said) or _commentary_sentence(said) or _voice_sentence(said) or _world_statement(said)) \
+                or not lexicon.GOAL_THING_RE.search(m.string[m.end():].lower()):
+            return m.group(0)
+        dropped.append(said)
+        return ""
+    kept = lexicon.OPENING_CLAUSE_RE.sub(opening_clause, kept, count=1)
     def world_clause(m: re.Match) -> str:  # "Sewing can wait; put ...": a statement of the voice's world before the task
         if not _world_statement(m.group("c")) or not lexicon.GOAL_THING_RE.search(m.string[m.end():].lower()):
             return m.group(0)
@@ -1034,10 +1091,11 @@ def _placed_labels_one_by_one(m: re.Match) -> str:
     return ", ".join(cubes[:-1]) + " and " + cubes[-1]
 
 
-BARE_LABEL_RE = re.compile(r"(\b[Tt]he|(?:\bwith|\bthen|\band|,)(?=\s+[A-Z]\b))\s+([A-Z]|\d)\b(?![-'])"
+BARE_LABEL_RE = re.compile(r"(\b[Tt]he|(?:\bwith|\bthen|\band|\bthat|[,:])(?=\s+[A-Z]\b))\s+([A-Z]|\d)\b(?![-'])"
                            r"(?!\s+(?:on\s+top\s+of\s+|next\s+to\s+|beside\s+)?(?:each\s+other|one\s+another|together)\b)(?=\s*(?:[,.;:!?()]|$|\s+(?:on|onto|atop|next|to|left|right|in|at|"
                            r"behind|beside|near|under|underneath|below|above|and|then|between|far|is|goes|should|must|from|into|onto|as|with)\b))")
-"""A label cube named by its label alone after "the" (a letter after "with", "then", "and" or a comma), before a
+"""A label cube named by its label alone after "the" (a letter after "with", "then", "and", "that", a comma or a colon:
+"so that A is at the bottom"), before a
 relation word or punctuation ("stack the A on the B", "the 1 on the 2", "with A at the bottom,
 then B"): read as "the A block" (a letter or digit cube), never as a count or an article."""
 
@@ -3180,10 +3238,10 @@ NEW_STRUCTURE_BEFORE_RE = re.compile(
 """A structure being described just before a bare side ("a line of 4 gray cubes at the front")."""
 
 
-_NEW_PILE_BEFORE_RE = re.compile(r"\b(?:a|an|1|one)\s+(?:[\w-]+\s+)?(?:pile|heap)\s+of\s+(?:\d+|[a-z]+)\s+(?:[a-z]+\s+)?(?:cubes|blocks)\s*$"
-                                 r"|^\s*(?:pile|heap)\s+(?:up\s+)?\d+\s+(?:[a-z]+\s+)?(?:cubes|blocks)\s*(?:,\s*any\s+colou?rs?\s*,\s*)?$")
+_NEW_PILE_BEFORE_RE = re.compile(r"\b(?:a|an|1|one)\s+(?:[\w-]+\s+)?(?:pile|heap)\s+of\s+(?:any\s+)?(?:\d+|[a-z]+)\s+(?:[a-z]+\s+)?(?:cubes|blocks)\s*$"
+                                 r"|^\s*(?:pile|heap)\s+(?:up\s+)?(?:any\s+)?\d+\s+(?:[a-z]+\s+)?(?:cubes|blocks)\s*(?:,\s*any\s+colou?rs?\s*,\s*)?$")
 """A pile being described just before a bare side ("make a pile of four cubes on the right side", "Pile four cubes, any
-colours, on the right side"); :data:`NEW_STRUCTURE_BEFORE_RE` leaves piles out (a pile may be one the speaker sees)."""
+colours, on the right side", "a pile of any four cubes on the right side"); :data:`NEW_STRUCTURE_BEFORE_RE` leaves piles out (a pile may be one the speaker sees)."""
 
 
 def _structure_side(m: re.Match) -> bool:
