@@ -8820,3 +8820,65 @@ def test_forty_seventh_session_a_time_of_day_is_refused_as_time(text):
     with pytest.raises(Inexpressible) as exc:
         check_feasibility(parse(text))
     assert "about time" in str(exc.value)
+
+
+@pytest.mark.parametrize("text, expected", [
+    # an opening adjunct of a voice's occasion (stranger60: each had been refused over its unknown words)
+    ("Etymology aside, put the black cube in front of the cyan cube.", ["in_front_of(black,cyan)"]),
+    ("Between juggling sets, I'd like the orange cube placed behind the pink cube.", ["behind(orange,pink)"]),
+    ("For the keyframes I need a row of the red, orange and pink cubes, reading left to right in that order.",
+     ["line[left_to_right](red,orange,pink)"]),
+    ("For this mosaic panel I want the pink cube set between the cyan cube and the brown cube.", ["between(pink;brown,cyan)"]),
+    ("In this trial the agent must arrange the red and yellow cubes in a row, from left to right in that order.",
+     ["line[left_to_right](red,yellow)"]),
+    ("Per the manual, put the red cube left of the blue cube.", ["left_of(red,blue)"]),
+    # an opening sentence set off by a dash
+    ("we're evaluating placement accuracy -- put the cyan cube on the orange patch", ["on_patch(cyan,patch:orange)"]),
+    # a wall's two layers said below and above them (the layers had been lost: one course of four, silently)
+    ("Build a wall in the center with two black cubes below and two gray cubes above them.",
+     ["wall(black,black|gray,gray)@center"]),
+    ("Sailors stow their gear low and heavy: build a wall with two brown cubes below and two black cubes above them.",
+     ["wall(brown,brown|black,black)"]),
+    # the others' order left free in other words
+    ("A single tower of the pink, brown and gray cubes, with pink at the very top. The order of the other two is free.",
+     ["stack(brown,gray,pink)"]),
+    ("Put the red, blue and green cubes in a row, order unimportant.", ["line(blue,green,red)"]),
+    # labels after "that" or a colon
+    ("Stack the letter blocks so that C is at the bottom, B above it and A on top.", ["stack(C,B,A)"]),
+    ("Stack the blocks: A at the bottom, B in the middle and C on top.", ["stack(A,B,C)"]),
+    # a row from a said end, then the next ones
+    ("Row of three cubes, purple at the far left, then cyan, then yellow at the far right.",
+     ["line[left_to_right](purple,cyan,yellow)"]),
+    ("A row: purple on the right, then cyan, then yellow.", ["line[right_to_left](purple,cyan,yellow)"]),
+    ("Make a pile of any four cubes on the right side.", ["pile(blue,green,red,yellow)@right"]),
+    ("Gather every pink cube into one pile.", ["pile(pink,pink,pink)"]),
+    ("Two stacks please - one with black under white, the other with purple under cyan.",
+     ["stack(black,white)", "stack(purple,cyan)"]),
+    # a pyramid of two layers, each said by its count, and nothing above (its peak had been made up, or refused)
+    ("Build a pyramid with three red cubes on the bottom layer and two white cubes on the layer above them.",
+     ["pyramid(red,red,red|white,white)"]),
+    ("Build a pyramid: three red cubes on the bottom layer and two white cubes on top.", ["pyramid(red,red,red|white,white)"]),
+    ("Build a pyramid of five cubes: three red on the bottom and two white on top.", ["pyramid(red,red,red|white,white)"]),
+])
+def test_forty_eighth_session_what_a_voice_frames_and_what_it_orders(text, expected):
+    assert meaning(check_feasibility(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "For a moment, put the red cube on the blue cube.",  # a time
+    "For ten seconds, put the red cube on the blue cube.",
+    "For each of them, put the red cube on the blue cube.",  # a reference
+    "For the other one, put the red cube on the blue cube.",
+    "In this drawer, put the red cube on the blue cube.",  # an object that may hold a cube
+    "In the bowl, put the red cube.",
+    "Between the mugs, put the red cube.",
+    "In this picture, the red cube is on the blue cube.",  # something seen
+    "Not the red one -- put the cyan cube on the orange patch",  # a negation before the dash
+    # a pyramid said by two layers and more: a middle layer, a total of six, a height of three
+    "Build a pyramid with three red cubes on the bottom layer and two white cubes in the middle.",
+    "Build a pyramid of six cubes: three red on the bottom and two white on top.",
+    "Build a pyramid with three red cubes on the bottom and two white cubes on top, three layers high.",
+])
+def test_forty_eighth_session_an_adjunct_or_layer_that_bears_on_the_task_is_not_dropped(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))

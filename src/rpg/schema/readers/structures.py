@@ -242,6 +242,37 @@ an order said as well (layers said by their counts alone, "base is 3 horizontal 
 one block on top", a paper session's, are sizes)."""
 
 
+def _truncated_layers(f: Features, base: int, dims: int, roles: dict) -> int | None:
+    """The number of layers of a pyramid said as its bottom layer and the one above it, each by its count of cubes of each
+    colour, and nothing above ("three red cubes on the bottom layer and two white cubes on the layer above them", "three
+    red on the bottom and two white on top"): 2, the pyramid those layers make (its peak had been made up in a colour
+    nobody said, or the second layer's cubes refused as more than the peak holds).  None where the text says a layer
+    between or above them, a peak, a total or a height, or names a colour neither layer holds."""
+    if dims != 2 or base < 3 or not roles or any(n is None for n in roles.values()):
+        return None
+    total = stated_count(f, default=None)  # (a count of one layer's cubes may be read as the total: "three red cubes")
+    if total not in (None, base, 2 * base - 1) or _TRUNCATED_BLOCKER_RE.search(f.text):
+        return None
+    levels = {level for _, level in roles}
+    upper = levels - {0}
+    if 0 not in levels or len(upper) != 1 or next(iter(upper)) not in (1, base - 1):
+        return None
+    per_level = Counter()
+    for (_, level), n in roles.items():
+        per_level[0 if level == 0 else 1] += n
+    if per_level[0] != base or per_level[1] != base - 1:
+        return None
+    if set(f.color_list()) - {c for c, _ in roles}:
+        return None
+    return 2
+
+
+_TRUNCATED_BLOCKER_RE = re.compile(r"\b(?:middle|third|fourth|peak|apex|summit|tip|crown|capstone|point"
+                                   r"|(?:three|four|five|3|4|5)[\s-]+(?:rows?|layers?|levels?|tiers?|high|tall|stor(?:y|ey|ies|eys)))\b")
+"""What keeps a pyramid said by two layers from being read as those two alone (:func:`_truncated_layers`): a layer between
+or above them, a peak, or a height of more than two."""
+
+
 def _skipped_layers(f: Features, base: int, dims: int, roles: dict) -> bool:
     """Whether a pyramid is said as a base of three or more (its colours or its count) and one cube on top with nothing
     of the layers between ("a pyramid whose base is pink, orange and cyan with a white cube at the apex", "three cubes on
@@ -505,6 +536,16 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
         # which no reader judges (their layers had been dropped: any cube at the apex passed)
         raise ParseError(f"\"{f.original[:80]}\" puts label cubes in a pyramid's layers, which the builtin parser does not read; "
                          "say the pyramid with coloured cubes, or use --model")
+    kept = _truncated_layers(f, base, dims, roles) if material == "colors" else None
+    if kept:  # "three red cubes on the bottom layer and two white cubes on the layer above": those two layers, no peak
+        sizes = sizes[:kept]
+        said = {(c, kept - 1 if level == base - 1 else level): n for (c, level), n in roles.items()}
+        names = fill_layers(f, b, sizes, said)
+        b.place(pyramid_layout(names, base, dims, layers=tuple(sizes)))
+        b.preds.insert(0, Pyramid(tuple(names), base=base, dims=dims, layers=tuple(sizes)))
+        b.primitives += ["stack"]
+        b.summary.insert(0, f"a 2D pyramid of {' under '.join(map(str, sizes))} cubes, no layer above ({sum(sizes)} cubes)")
+        return True
     if material == "colors" and _skipped_layers(f, base, dims, roles):
         # "three cubes on the bottom (red, green, blue) and a yellow cube on top": those two layers, the top cube
         # centred over the base
