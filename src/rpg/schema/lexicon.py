@@ -3415,6 +3415,11 @@ LABEL_STRUCTURE_KINDS: dict[str, str] = {w: k.name for k in STRUCTURE_KINDS.valu
 noun is the voice's own where its task names that kind too, or where it only qualifies a thing of the voice's world
 ("Grid reference: ...", "Tower captain speaking: ...")."""
 
+LABEL_FILLER_WORDS = frozenset({"the", "a", "an", "for", "of", "my", "our", "your", "this", "that"})
+"""Words the parser reads that a voice's label may hold around a structure noun or its own things without saying anything
+of the task ("Chip stack for the showdown", "Line of sight check"): no place, count or order (:func:`rpg.schema.reading.\
+_label_structure_masked`)."""
+
 LABEL_STRUCTURE_HAZARD_RE = re.compile(r"twins?|double|pairs?|duo|trio|parallel|nested|stacked|count\w*|ordered|sorted|revers\w*"
                                        r"|alphabet\w*|rainbow|numbers?|numbered|words?|upper|lower|bottom|top|left|right|front|back"
                                        r"|middle|first|second|third|last|tall|short|long|big|small|little|tiny|wide|high|low|main|other")

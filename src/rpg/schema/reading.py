@@ -566,15 +566,23 @@ def _label_structure_masked(chunk: str, task: str) -> str:
     if re.search(rf"\d|\b(?:{lexicon.COUNT_WORD_RE})\b|[\[\]=]", chunk.lower()):
         return chunk  # "pile-5 [region=back]": a count or a spec of the task's own, to be read
     words = re.findall(r"[A-Za-z][A-Za-z'\-]*", chunk)
-    if any(w.lower() in VOCAB or lexicon.LABEL_STRUCTURE_HAZARD_RE.fullmatch(w.lower()) for w in words
-           if w.lower().removesuffix("s") not in lexicon.LABEL_STRUCTURE_KINDS):
+    if any((w.lower() in VOCAB and w.lower() not in lexicon.LABEL_FILLER_WORDS) or lexicon.LABEL_STRUCTURE_HAZARD_RE.fullmatch(w.lower())
+           for w in words if w.lower().removesuffix("s") not in lexicon.LABEL_STRUCTURE_KINDS and w.lower() != "table"):
         return chunk  # "Rainbow row", "Twin towers", "Bottom row", "Countdown row": a word that may order, count or place
     out = chunk
     for i, w in enumerate(words):
         kind = lexicon.LABEL_STRUCTURE_KINDS.get(w.lower())
+        if w.lower() == "table":  # "Tournament table: ...", "Pause table: ...": the voice's table (no side of it said)
+            out = re.sub(r"\btable\b", "thing", out, count=1, flags=re.IGNORECASE)
+            continue
         if kind is None:
             continue  # (a plural, "Twin towers", "Parallel rows", says how many: the label stays)
         after = words[i + 1].lower() if i + 1 < len(words) else ""
+        idiom = after == "of" and i + 2 < len(words) and not re.fullmatch(  # "Line of sight check": no line of cubes
+            rf"(?:{COLOR_RE}|cubes?|blocks?|bricks?|one|two|three|four|five|six|seven|eight|nine|ten)", words[i + 2].lower())
+        if idiom:
+            out = re.sub(rf"\b{re.escape(w)}\b", "thing", out, count=1)
+            continue
         qualifies = bool(after) and after.removesuffix("s") not in VOCAB and "NOUN" in lexicon.parts_of_speech(after) \
             and not lexicon.VOICE_CHUNK_HAZARD_RE.search(after) and not lexicon.FRAME_NOUN_RE.fullmatch(after)  # "Pyramid
         # task: bottom layer ...": the label names the task's structure
