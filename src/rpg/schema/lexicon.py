@@ -1373,6 +1373,11 @@ ENUMERATED_PART_RE = re.compile(r"(?i)(?:^|\s*[,;]\s*(?:and\s+)?|\s+and\s+)(?:th
 """A word that counts off one structure of several a heading announces ("Two towers, each three tall: the first ..., the
 second ..."; "one ..., the other ..."): split on by :func:`rpg.schema.readers._enumerated_parts`."""
 
+ENUMERATED_PART_PLACE_RE = re.compile(r"(?i)(?:at|on|in)\s+the\s+(?:front|back|left|right|center|centre|middle)(?:\s+side)?"
+                                      r"(?:\s+of\s+the\s+table)?")
+"""One structure counted off after a heading by its place alone ("two gray towers, each three cubes tall: one on the left
+side of the table and one in the centre"): the heading's cubes there (:func:`rpg.schema.readers._enumerated_parts`)."""
+
 _PART_CUBE = rf"(?:{COLOR_RE}|grey|[a-z0-9])"
 ENUMERATED_PART_SPEC_RE = re.compile(
     rf"(?:(?:\d+|{COUNT_WORD_RE})\s+)?(?:(?:all|only)\s+)?{_PART_CUBE}(?:(?:\s*[,\-]\s*|\s+and\s+|\s+then\s+|\s+)(?:then\s+)?{_PART_CUBE})*"
@@ -5694,6 +5699,11 @@ TOWERS_BY_PLACE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      lambda m: f"{m.group('a')} on {m.group('b')} {m.group('where')}" if re.search(r"(?i)\b(?:two|three|2|3)\s+(?:towers|stacks)\b",
                                                                                 m.string[:m.start()]) else m.group(0)),
     (re.compile(rf"(?i)\b((?:two|three|2|3)\s+(?:towers|stacks))\s*,\s+(?=(?:{COLOR_RE})\s+on\s+(?:{COLOR_RE})\s+in\s+the\b)"), r"\1: "),
+    # "Stack a white cube on a red cube, and stack a white cube on a blue cube, two separate towers.": the count said last,
+    # written as the heading (its "two separate towers" had been read as more cubes)
+    (re.compile(r"(?i)^\s*(?P<body>[^:;]+?)\s*[,;\u2013\u2014-]\s*(?:as\s+|in\s+|making\s+|forming\s+|so\s+)?(?P<n>two|three|2|3)\s+"
+                r"(?P<kind>(?:separate\s+|distinct\s+|different\s+|independent\s+)?(?:towers|stacks|rows|lines))\s*[.!]?\s*$"),
+     lambda m: f"{m.group('n')} {m.group('kind')}: {m.group('body')}."),
 )
 """Towers counted, then each said by its place and its chain ("Build two towers, one in the front right corner with cyan on
 top of brown, and one in the back left corner with gray on top of red"): written as the heading

@@ -517,11 +517,13 @@ def _towers_counted(instruction: str) -> str:
 _TOWERS_HEADING_RE = re.compile(
     r"(?i)^\s*(?:(?:please\s+)?(?:let's\s+)?(?:build|make|stack|create|construct|set\s+up|lay\s+out|line\s+up)\s+"
     r"|(?:we|i)\s+(?:want|need|would\s+like)\s+)?"
-    r"(?P<n>two|three|four|[2-4])\s+(?:separate\s+|distinct\s+|independent\s+)?(?P<kind>towers|stacks|rows|lines)"
+    r"(?P<n>two|three|four|[2-4])\s+(?:separate\s+|distinct\s+|independent\s+)?(?:(?P<c>" + COLOR_RE + r")\s+)?(?P<kind>towers|stacks|rows|lines)"
     r"(?:\s+of\s+(?P<h>two|three|four|[2-4])(?:\s+(?:cubes|blocks))?|,?\s+(?P<h2>two|three|four|[2-4])\s+(?:cubes|blocks)\s+each"
     r"|,?\s+each\s+(?P<h3>two|three|four|[2-4])\s+(?:(?:cubes|blocks)\s+)?(?:tall|high|long))?"
-    r"(?:\s+each)?(?:\s+at\s+the\s+end)?(?:\s*,\s*(?:friends|folks|everyone|team|please))?\s*:\s*(?P<body>.+)$")
-"""A heading that counts towers or rows before a colon and the structures said after it ("Build two towers of two cubes:
+    r"(?:\s+each)?(?:\s+at\s+the\s+end)?(?:\s*,\s*(?:friends|folks|everyone|team|please))?"
+    r"(?:\s*:\s*|\s*,\s*(?=(?:one|the\s+first|a\s+(?:row|line|tower|stack))\b))(?P<body>.+)$")
+"""A heading that counts towers or rows (of one colour: "two gray towers") before a colon, or a comma before the first of
+them, and the structures said after it ("Build two towers of two cubes:
 yellow on orange in the back left corner, and white on gray in the front right corner.", "We want two separate towers at
 the end: pink on purple, and black on white.", "Make two rows: a row of three red blocks and a row of three blue
 blocks."): read by :func:`_towers_headed`."""
@@ -542,7 +544,7 @@ def _towers_headed(instruction: str, framed: bool) -> TaskSchema | None:
     try:
         schema = parse(m.group("body"), _framed=framed)
     except BadInput:
-        body = _enumerated_parts(m.group("body"), m.group("kind").lower(), h)
+        body = _enumerated_parts(m.group("body"), m.group("kind").lower(), h, m.group("c"))
         if body is None:
             return None
         try:  # "Two towers, each three tall: the first red-blue-green bottom to top, the second all gray"
@@ -558,11 +560,11 @@ def _towers_headed(instruction: str, framed: bool) -> TaskSchema | None:
     return schema.model_copy(update={"instruction": instruction, "name": task_slug(instruction)})
 
 
-def _enumerated_parts(body: str, kind: str, h: str | None) -> str | None:
+def _enumerated_parts(body: str, kind: str, h: str | None, colour: str | None = None) -> str | None:
     """A heading's colon text that counts off its structures (:data:`lexicon.ENUMERATED_PART_RE`: "the first red-blue-green
     bottom to top, the second all gray") said as one sentence per structure of ``kind`` ("A tower of red-blue-green bottom
     to top. A tower of 3 gray cubes."; "all gray", "built from gray cubes" are ``h`` gray cubes where the heading says how
-    many each has); None
+    many each has; a part that says only its place, "one on the left", is ``h`` cubes of the heading's ``colour``); None
     where it does not open with such a word or counts off fewer than two."""
     parts = lexicon.ENUMERATED_PART_RE.split(body.strip().rstrip(".!"))
     if len(parts) < 3 or parts[0].strip():
@@ -571,6 +573,11 @@ def _enumerated_parts(body: str, kind: str, h: str | None) -> str | None:
     said = []
     for part in (p.strip(" ,;") for p in parts[1:]):
         part = re.sub(r"^(?:(?:built|made)\s+(?:from|of|out\s+of)|of)\s+", "", part)  # "one built from red cubes"
+        if lexicon.ENUMERATED_PART_PLACE_RE.fullmatch(part):  # "Two gray towers, each three cubes tall: one on the left ..."
+            if h is None or colour is None:
+                return None
+            said.append(f"A {noun} of {lexicon.count_word(h)} {colour} cubes {part}.")
+            continue
         if not lexicon.ENUMERATED_PART_SPEC_RE.fullmatch(part):
             return None  # anything but cubes, an order and a place ("..., the green one taller", "..., touching"): not read
         uniform = re.fullmatch(rf"(?:all|only)\s+({COLOR_RE})(?:\s+(?:cubes|blocks|ones))?|({COLOR_RE})\s+(?:cubes|blocks|ones)", part)
