@@ -571,6 +571,11 @@ climbers on a fixed rope.", "..., steady as a belay.", "..., as per the site pla
 or a dash ("... - monochrome is so in right now.", "..., our high camp."): dropped by
 :func:`rpg.schema.reading.drop_voice_chunks` when :func:`rpg.schema.reading._voice_chunk` finds it inert."""
 
+NAMING_TAIL_RE = re.compile(r"(?i)(?:that's|that\s+is|which\s+is|this\s+is)\s+(?:the|my|our|your|his|her|their)\s+"
+                            r"(?P<n>[a-z][a-z'\-]*(?:\s+[a-z][a-z'\-]*){0,2})")
+"""A chunk at a sentence's end that names what the sentence did ("..., that's the pot"): weighed by
+:func:`rpg.schema.reading._naming_tail`."""
+
 VOICE_OPENING_SIMILE_RE = re.compile(r"^\s*(?P<c>(?:just\s+)?like\s+[^,;:.!?()]{2,80}?)\s*,\s+(?=\S)", re.IGNORECASE)
 """A simile before a task ("Like laying shingles from the eaves to the ridge, build a tower: ..."): dropped by
 :func:`rpg.schema.reading.drop_voice_chunks` when :func:`rpg.schema.reading._voice_chunk` finds it inert, as one at a

@@ -608,6 +608,14 @@ def _label_names_structure(chunk: str, task: str) -> str | None:
     return words[-1].lower() if _voice_chunk(masked, label=True) else None
 
 
+def _naming_tail(chunk: str) -> bool:
+    """Whether a chunk at a sentence's end only names, in a voice's words, what the sentence just did ("..., that's the
+    pot", "..., which is my bullpen"): "that's" and a thing of the voice's own that :func:`_voice_chunk` finds inert (no
+    goal, place, order, reference, count or colour: "..., that's the goal", "..., that's the red one" stay)."""
+    m = lexicon.NAMING_TAIL_RE.fullmatch(chunk.strip())
+    return bool(m) and _voice_chunk(f"the {m.group('n')}")
+
+
 def drop_voice_chunks(text: str, labels: bool = True) -> tuple[str, list[str]]:
     """``text`` without a voice's label before its task ("Site diary, day six: ...", :data:`lexicon.VOICE_LABEL_RE`; or a
     first sentence of up to four words such as "Context 17.") and without the chunks that end its sentences in a voice
@@ -646,7 +654,7 @@ def drop_voice_chunks(text: str, labels: bool = True) -> tuple[str, list[str]]:
     for sentence in re.split(r"(?<=[.!?])\s+", text):
         for _ in range(2):  # "..., like climbers on a rope, our high camp."
             tail = next((t for t in (p.search(sentence) for p in lexicon.VOICE_TAIL_RES)
-                         if t and _voice_chunk(t.group("c"), rest=sentence[:t.start()])), None)
+                         if t and (_voice_chunk(t.group("c"), rest=sentence[:t.start()]) or _naming_tail(t.group("c")))), None)
             if not tail or not lexicon.GOAL_THING_RE.search(sentence[:tail.start()].lower()):
                 break
             dropped.append(tail.group("c").strip())
