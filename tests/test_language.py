@@ -8825,15 +8825,15 @@ def test_forty_seventh_session_a_time_of_day_is_refused_as_time(text):
 @pytest.mark.parametrize("text, expected", [
     # an opening adjunct of a voice's occasion (stranger60: each had been refused over its unknown words)
     ("Etymology aside, put the black cube in front of the cyan cube.", ["in_front_of(black,cyan)"]),
-    ("Between juggling sets, I'd like the orange cube placed behind the pink cube.", ["behind(orange,pink)"]),
     ("For the keyframes I need a row of the red, orange and pink cubes, reading left to right in that order.",
      ["line[left_to_right](red,orange,pink)"]),
     ("For this mosaic panel I want the pink cube set between the cyan cube and the brown cube.", ["between(pink;brown,cyan)"]),
     ("In this trial the agent must arrange the red and yellow cubes in a row, from left to right in that order.",
      ["line[left_to_right](red,yellow)"]),
-    ("Per the manual, put the red cube left of the blue cube.", ["left_of(red,blue)"]),
-    # an opening sentence set off by a dash
-    ("we're evaluating placement accuracy -- put the cyan cube on the orange patch", ["on_patch(cyan,patch:orange)"]),
+    ("Per the thesaurus, put the orange cube beside the purple cube.", ["next_to(orange,purple)"]),
+    ("Spell HI so that H is on the left.", ["line[left_to_right](H,I)", "reads(H,I;direction=left_to_right,face=up,text=HI)"]),
+    ("Put the red cube on the green patch and the blue cube on the same patch.", ["on_patch(blue,red,patch:green)"]),
+    ("Gather each red cube into a pile on the left.", ["pile(red,red,red)@left"]),
     # a wall's two layers said below and above them (the layers had been lost: one course of four, silently)
     ("Build a wall in the center with two black cubes below and two gray cubes above them.",
      ["wall(black,black|gray,gray)@center"]),
@@ -8873,7 +8873,36 @@ def test_forty_eighth_session_what_a_voice_frames_and_what_it_orders(text, expec
     "In the bowl, put the red cube.",
     "Between the mugs, put the red cube.",
     "In this picture, the red cube is on the blue cube.",  # something seen
-    "Not the red one -- put the cyan cube on the orange patch",  # a negation before the dash
+    # a hostile helper's: an adjunct of a viewpoint, a document, a start state, an unwanted or turned state, copies
+    "For the viewer, put the red cube left of the blue cube.",
+    "Per guest, put a red cube on a blue cube.",
+    "For the setup I need the red cube on the blue cube.",
+    "Direction aside, put the red cube left of the blue cube.",
+    "Per the schematic, build a wall of six cubes.",
+    "In this reflected setup, put the red cube left of the blue cube.",
+    "For the counterexample, put the red cube on the blue cube.",
+    "Between the bookends, put the red cube on the blue cube.",
+    "in the bowl -- put the red cube on the blue cube.",  # a dash clause is not dropped
+    "this is the starting state -- put the red cube on the blue cube",
+    # a cube said beyond two layers, or a whole pyramid: no two-layer reading
+    "Build a pyramid with three red cubes on the bottom layer and two white cubes on top, and one cube at the very top.",
+    "Build a pyramid with three red cubes on the bottom layer and two white cubes on top. Then put a cube on top.",
+    "Build a 3D pyramid with three red cubes on the bottom and two white on top.",
+    "Build a pyramid with three red cubes on the bottom layer and two white cubes on top; the highest cube is up to you.",
+    # each cube into a structure of its own, or some of them
+    "Put each red cube into a tower of its own.",
+    "Put each red cube into a pile, two per pile.",
+    "Put each red cube into a pile but one.",
+    # a letter after "that" where no label cube is named
+    "Stack the red, green and blue cubes so that A is on top.",
+    # a word's or a rainbow's order is not free
+    "Spell CAB in a row, order unimportant.",
+    "Make a rainbow row, in any order.",
+    # a copy of a structure said, or a patch never named ("the same"): its cubes or colour had been made up
+    "Two stacks please - one with red on blue, the other one the same.",
+    "Build two stacks: one with red on blue, the other the same.",
+    "Build two stacks: one with red on blue, the other with the same colours.",
+    "Put the red cube on the blue cube and the green cube on the same patch.",
     # a pyramid said by two layers and more: a middle layer, a total of six, a height of three
     "Build a pyramid with three red cubes on the bottom layer and two white cubes in the middle.",
     "Build a pyramid of six cubes: three red on the bottom and two white on top.",

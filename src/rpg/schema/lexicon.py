@@ -351,36 +351,50 @@ constraint of the goal ("while" had been refused as a time; "it" as a reference)
 minute, but ...") is no concession and stays."""
 
 OPENING_ADJUNCT_RE = re.compile(
-    r"(?i)(?:^|(?<=[.!?]\s))(?P<a>(?P<prep>for|per|between|as\s+for|according\s+to|in)\s+(?P<np>[a-z][a-z'\-]*(?:\s+[a-z][a-z'\-]*){0,3}?)"
-    r"|(?P<np2>[a-z][a-z'\-]*(?:\s+[a-z][a-z'\-]*){0,2}?)\s+aside)"
+    r"(?i)(?:^|(?<=[.!?]\s))(?P<a>(?P<prep>for|per|in)\s+(?P<np>[a-z][a-z'\-]*(?:\s+[a-z][a-z'\-]*){0,3}?)"
+    r"|(?P<np2>[a-z][a-z'\-]*)\s+aside)"
     r"(?:\s*,\s*|\s+(?=(?:i|we)\s+(?:need|want|would\s+like|require)\b|(?:i|we)'d\s+like\b"
     r"|(?:the\s+(?:robot|agent|policy|arm)|you)\s+(?:must|should|will|needs?\s+to|has\s+to|have\s+to)\b))(?=\S)")
 """A sentence's opening adjunct of purpose, source or occasion in a voice's world ("For the keyframes I need a row of
-...", "For this mosaic panel I want ...", "Per the thesaurus, ...", "Between juggling sets, ...", "Etymology aside,
-...", "In this trial the agent must ..."): dropped by :func:`rpg.schema.reading.drop_asides` where its noun phrase
-says nothing of the task (:func:`rpg.schema.reading._opening_adjunct`).  Its unknown words had refused the task."""
-
-OPENING_CLAUSE_RE = re.compile(r"^\s*(?P<c>[^.!?;:\u2013\u2014]{3,80}?)\s+(?:--|\u2014|\u2013|-)\s+(?=\S)")
-"""A text's opening clause set off by a dash ("we're evaluating placement accuracy -- put the cyan cube ..."): dropped by
-:func:`rpg.schema.reading.drop_asides` where, said as a sentence of its own, it would be (framing, commentary, a voice's
-sentence or a statement of its world)."""
+...", "For this mosaic panel I want ...", "Per the thesaurus, ...", "Etymology aside, ...", "In this trial the agent must
+..."): dropped by :func:`rpg.schema.reading.drop_asides` where its noun phrase says nothing of the task
+(:func:`rpg.schema.reading._opening_adjunct`).  Its unknown words had refused the task."""
 
 OPENING_ADJUNCT_DETERMINERS = frozenset({"the", "this", "that", "these", "those", "my", "our", "your", "his", "her", "their",
                                          "a", "an", "today's"})
 """Determiners an opening adjunct's noun phrase (:data:`OPENING_ADJUNCT_RE`) may begin with."""
 
-OPENING_ADJUNCT_PLACED_PREPS = frozenset({"in", "between"})
-"""Prepositions of :data:`OPENING_ADJUNCT_RE` that may also place a cube ("In this drawer, put ...", "Between the mugs,
-..."): dropped only before a noun phrase of a demonstrative or possessive determiner ("in") that names no object."""
-
 OPENING_ADJUNCT_HAZARD_RE = re.compile(
     r"\b(?:it|its|they|them|one|ones|each|every|all|both|either|neither|other|others|rest|remainder|remaining|same|former"
     r"|latter|last|next|previous|first|second|third|final|no|not|none|nothing|never|without|except|case|instead|change|time"
     r"|times|while|moment|now|once|twice|long|later|soon|ever|good|sake|order|way|ways|side|sides|end|ends|middle|top|bottom"
-    r"|start|finish|goal|task|episode|table|robot|agent|policy|arm|gripper|hand|hands)\b")
+    r"|start|finish|goal|task|episode|table|robot|agent|policy|arm|gripper|hand|hands"
+    # a person or a viewpoint whose frame "left" or "in front" may be ("For the viewer, put ... left of ...")
+    r"|me|you|us|him|her|everyone|everybody|anyone|someone|people|person|persons|human|humans|man|men|woman|women|child"
+    r"|children|kids?|family|guests?|audience|crowd|public|class|team|client|friends?|mom|dad|boss|viewpoint|perspective"
+    r"|view|eyes?|camera|cameraman|frame|direction|handedness|chirality|orientation|angle"
+    # a picture or document the text leans on ("Per the schematic, build a wall of six cubes")
+    r"|schematics?|examples?|templates?|models?|references?|samples?|specs?|specifications?|demonstrations?|demos?"
+    r"|diagrams?|drawings?|pictures?|photos?|images?|sketch\w*|plans?|blueprints?|notes?|instructions?|manuals?|guides?"
+    r"|charts?|maps?|layouts?|designs?|patterns?|figures?|videos?|recordings?|screenshots?|illustrations?|schemes?|sheets?"
+    # a start state ("For the setup I need ...")
+    r"|setups?|set-up|precondition\w*|prerequisite\w*|opening|prior|source|starting|initial\w*|beginning|before|current"
+    r"|present|state|states|scene|scenes|configuration\w*|arrangement\w*"
+    # what is not wanted, or turned ("For the counterexample, ...", "In this reflected setup, ...")
+    r"|negation|negative|counter\w*|incorrect|wrong|converse|contrary|antithesis|decoy|trap|mistakes?|errors?|problems?"
+    r"|issues?|bugs?|failures?|risks?|danger|fears?|nightmares?|opposite|inverse|reverse\w*|anti\w*|reflect\w*|mirror\w*"
+    r"|transpos\w*|flip\w*|invert\w*|rotat\w*|southpaw|antipodal|upside"
+    # several of the task ("In this duplicated trial, ...")
+    r"|multiple|several|many|twins?|triplets?|quadruplets?|duplicat\w*|double\w*|paired|pairs?|cop(?:y|ies)|replicas?)\b")
 """Words that keep an opening adjunct (:data:`OPENING_ADJUNCT_RE`) as part of the task: a reference or quantifier ("For each
 of them", "For the last one"), a negation, a condition ("In that case"), a time ("For a while", "For now"), an order,
-side or end ("For the other side"), the task's own things."""
+side or end ("For the other side"), the task's own things; a person or viewpoint whose frame a relation may be in ("For
+the viewer"), a picture or document the task leans on ("Per the schematic"), a start state ("For the setup"), a state
+not wanted or turned ("For the counterexample", "In this reflected setup"), copies of the task (a hostile helper's)."""
+
+OPENING_ADJUNCT_PERSON_RE = re.compile(r"[a-z]{3,}(?:er|or|ist|ian|ess|ant|ent)s?")
+"""A noun that may name a person ("viewer", "spectator", "mosaicist", "photographer"): an opening adjunct with one is kept
+(a relation may be in that person's frame)."""
 
 DISCOURSE_OPENING_RE = re.compile(r"(?i)^\s*(?:(?:so|ok(?:ay)?|well|right)\s*,?\s+)?(?:anyway|anyways|anyhow)\s*,\s+(?=\S)")
 """A text's opening "Anyway," ("Anyway, pop the yellow cube on the green patch."): it turns the talk to the task and says
@@ -958,6 +972,9 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|(?<!leave\s)(?<!keep\s)\bthe\s+rest\b(?!\s+(?:as\s+(?:it\s+is|is|they\s+are)|where\s+they\s+are|in\s+place|alone|untouched)"
                   r"\s*[.!;]?\s*$)|\bwhere\s+(?:it|they|the\s+(?:[a-z]+\s+){0,2}?(?:blocks?|cubes?|ones?))\s+(?:was|were|used\s+to\s+be|started|began)\b"
                   r"|\bthe\s+same\s+(?:order|sequence|positions?|places?|spots?)\b"
+                  # "Two stacks: one with red on blue, the other the same": a copy of one said (its cubes had been made up)
+                  r"|\b(?:the\s+other|the\s+second|another)(?:\s+one)?\s+(?:(?:is|with|has|gets|in|of|just)\s+)?(?:exactly\s+)?the\s+same\b"
+                  r"|\bwith\s+the\s+same\s+colou?rs?\b|\b(?:stack|tower|row|line|pile)s?\s+(?:of|with|in)\s+the\s+same\s+colou?rs\b"
                   r"|\b(?:blocks?|cubes?|ones?|place|position|spot|patch)\s+(?:that\s+|which\s+)?(?:it|they)\s+(?:was|were|had\s+been|started)\s+(?:on|in|at)\b"
                   r"|\b(?:closest|nearest|farthest|furthest)\s+to\s+(?:you|me|us|the\s+(?:robot|camera|gripper|viewer))\b"
                   r"|\bthe\s+same\s+(?:blocks?|cubes?|ones?|boxes|box|objects?|pieces?)\b"
@@ -2209,7 +2226,9 @@ FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "Gather every pink cube into one pile", "Put each red cube into a tower": all the cubes of that colour in the one
     # structure (read like "all the pink cubes"; the one pile had been refused as naming no cubes)
     (re.compile(rf"\b(?:every|each)\s+(?:single\s+)?({COLOR_RE})\s+(?:cube|block)\b(?=\s+(?:in|into|to|onto)\s+(?:a|one|1|the|a\s+single)\s+"
-                r"(?:piles?|heaps?|towers?|stacks?)\b)"), r"all the \1 cubes"),
+                r"(?:pile|heap|tower|stack)(?:\s+(?:on|at|in)\s+the\s+(?:left|right|front|back|cent(?:er|re)|middle)(?:\s+side)?"
+                r"(?:\s+of\s+the\s+table)?)?\s*(?:[.!]\s*)?$)"), r"all the \1 cubes"),  # (not "into a pile of its own", "..., two
+    # per pile", "... but one", "... Then take one out": a hostile helper's)
     # "Two stacks please - one with ..., the other with ...": the heading of structures counted off, its dash a colon
     (re.compile(rf"\b((?:two|three|four|[2-4])\s+(?:stacks|towers|rows|lines|piles))\s+please\s*(?:-|\u2013|\u2014)\s+(?=(?:one|1)\b)"),
      r"\1 please: "),

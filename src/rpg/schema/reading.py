@@ -664,14 +664,14 @@ def drop_voice_chunks(text: str, labels: bool = True) -> tuple[str, list[str]]:
 
 
 def _opening_adjunct(prep: str | None, np: str, text: str) -> bool:
-    """Whether an opening adjunct (:data:`lexicon.OPENING_ADJUNCT_RE`: ``prep`` and its noun phrase ``np``, or ``np``
+    """Whether an opening adjunct (:data:`lexicon.OPENING_ADJUNCT_RE`: ``prep`` and its noun phrase ``np``, or a noun
     "aside" where ``prep`` is None) is a voice's occasion that says nothing of the task: one to four words, no digit or
-    count, no colour, nothing of a goal (:data:`lexicon.TASK_CONTENT_RE`, :data:`lexicon.GOAL_THING_PREFIX_RE`), no
-    reference, quantifier, negation, condition, time, order, side or end (:data:`lexicon.OPENING_ADJUNCT_HAZARD_RE`,
-    :data:`lexicon.FRAMING_SENTENCE_HAZARD_RE`), no word the domain refuses but an object or an action of that world; and
-    after a preposition that may place a cube (:data:`lexicon.OPENING_ADJUNCT_PLACED_PREPS`) no object but a frame's noun
-    (:data:`lexicon.FRAME_NOUN_RE`), and for "in" a demonstrative or possessive determiner ("In this trial", not "In the
-    bowl")."""
+    count, no colour, nothing of a goal (:data:`lexicon.TASK_CONTENT_RE`, :data:`lexicon.GOAL_THING_PREFIX_RE`), no word
+    of :data:`lexicon.OPENING_ADJUNCT_HAZARD_RE` (a reference, quantifier, negation, condition, time, order, side, person or
+    viewpoint, picture, start state, unwanted or turned state, copies) nor a noun that may name a person
+    (:data:`lexicon.OPENING_ADJUNCT_PERSON_RE`), no word the domain refuses but an object or an action of that world.
+    "Per" needs a determiner ("Per the manual"; "per guest" is one task for each); "in" a demonstrative or possessive one
+    before a frame's noun alone ("In this trial"; "In the bowl" places a cube)."""
     low = np.lower().strip()
     words = low.split()
     prep = (prep or "").lower()
@@ -680,23 +680,20 @@ def _opening_adjunct(prep: str | None, np: str, text: str) -> bool:
     if lexicon.TASK_CONTENT_RE.search(low) or lexicon.GOAL_THING_PREFIX_RE.search(low) or lexicon.OPENING_ADJUNCT_HAZARD_RE.search(low) \
             or lexicon.FRAMING_SENTENCE_HAZARD_RE.search(low):
         return False
-    nouns = words[1:] if words[0] in lexicon.OPENING_ADJUNCT_DETERMINERS else words
-    if not nouns or lexicon.RETRACTION_RE.search(" ".join(nouns)) or any(w in COLORS or w in lexicon.colour_names() or w in VOCAB or len(w) == 1 for w in nouns):
+    determined = words[0] in lexicon.OPENING_ADJUNCT_DETERMINERS
+    nouns = words[1:] if determined else words
+    if not nouns or lexicon.RETRACTION_RE.search(" ".join(nouns)) or any(
+            w in COLORS or w in lexicon.colour_names() or w in VOCAB or len(w) == 1 or lexicon.OPENING_ADJUNCT_PERSON_RE.fullmatch(w)
+            for w in nouns):
         return False
-    placed = prep.split()[0] in lexicon.OPENING_ADJUNCT_PLACED_PREPS if prep else False
-    if prep == "in" and words[0] not in ("this", "that", "my", "our", "today's"):
+    if prep == "per" and not determined:
+        return False  # "Per guest, ...": a task for each
+    if prep == "in" and not (words[0] in ("this", "that", "my", "our") and len(nouns) == 1
+                             and lexicon.FRAME_NOUN_RE.fullmatch(nouns[0])):
+        return False  # "In the bowl", "In this drawer": a place; "In this reflected setup": a turn of the task
+    if any(k not in ("object", "action") for k, _, _ in _inexpressible(low)):
         return False
-    allowed = () if placed else ("object", "action")
-    if any(k not in allowed for k, _, _ in _inexpressible(low)):
-        return False
-    for w in nouns:
-        kind = senses.sense(w).kind
-        if kind in _KIND_WHY and kind not in allowed:
-            return False
-    if placed and not lexicon.FRAME_NOUN_RE.fullmatch(nouns[-1]) and (
-            _unknown_word_classes(f"{prep} {low}", nouns) or any(senses.sense(w).kind == "object" for w in nouns)):
-        return False  # "In this drawer, ...": an object that may hold a cube ("In this trial": a frame's noun, no object)
-    return True
+    return all(senses.sense(w).kind not in _KIND_WHY or senses.sense(w).kind in ("object", "action") for w in nouns)
 
 
 def _said_to_someone_else(before: str) -> bool:
@@ -804,14 +801,6 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
     if framing and len(framing) < len(sentences):
         kept = " ".join(s for s in sentences if s not in framing)
         dropped += framing
-    def opening_clause(m: re.Match) -> str:  # "we're evaluating placement accuracy -- put ...": a sentence of its own
-        said = m.group("c").strip()
-        if not (_framing_sentence(said) or _commentary_sentence(said) or _voice_sentence(said) or _world_statement(said)) \
-                or not lexicon.GOAL_THING_RE.search(m.string[m.end():].lower()):
-            return m.group(0)
-        dropped.append(said)
-        return ""
-    kept = lexicon.OPENING_CLAUSE_RE.sub(opening_clause, kept, count=1)
     def world_clause(m: re.Match) -> str:  # "Sewing can wait; put ...": a statement of the voice's world before the task
         if not _world_statement(m.group("c")) or not lexicon.GOAL_THING_RE.search(m.string[m.end():].lower()):
             return m.group(0)
@@ -1107,11 +1096,11 @@ def _placed_labels_one_by_one(m: re.Match) -> str:
     return ", ".join(cubes[:-1]) + " and " + cubes[-1]
 
 
-BARE_LABEL_RE = re.compile(r"(\b[Tt]he|(?:\bwith|\bthen|\band|\bthat|[,:])(?=\s+[A-Z]\b))\s+([A-Z]|\d)\b(?![-'])"
+BARE_LABEL_RE = re.compile(r"(\b[Tt]he|(?:\bwith|\bthen|\band|,|(?<=[a-z] )that|:)(?=\s+[A-Z]\b))\s+([A-Z]|\d)\b(?![-'])"
                            r"(?!\s+(?:on\s+top\s+of\s+|next\s+to\s+|beside\s+)?(?:each\s+other|one\s+another|together)\b)(?=\s*(?:[,.;:!?()]|$|\s+(?:on|onto|atop|next|to|left|right|in|at|"
                            r"behind|beside|near|under|underneath|below|above|and|then|between|far|is|goes|should|must|from|into|onto|as|with)\b))")
-"""A label cube named by its label alone after "the" (a letter after "with", "then", "and", "that", a comma or a colon:
-"so that A is at the bottom"), before a
+"""A label cube named by its label alone after "the" (a letter after "with", "then", "and", a comma, or "that" or a colon
+where the text names label cubes: "so that A is at the bottom, B ..."), before a
 relation word or punctuation ("stack the A on the B", "the 1 on the 2", "with A at the bottom,
 then B"): read as "the A block" (a letter or digit cube), never as a count or an article."""
 
@@ -1773,9 +1762,14 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
     # "the cube with the M", "the block with the 4 on it": the cube labelled so
     labelled = lexicon.rewrite(lexicon.LABEL_NOUN_REWRITES, original)
     listed = re.search(r"\b[A-Z0-9](?:\s*,\s*(?:and\s+)?[A-Z0-9]\b|\s+and\s+[A-Z0-9]\b)", original)  # "T, O, P": a list
-    labelled = BARE_LABEL_RE.sub(lambda m: m.group(0) if listed and m.group(1).lower() != "the" else
+    labels_named = len(set(re.findall(r"(?<![\w'])[A-Z](?![\w'])", original))) >= 2 or re.search(
+        r"(?i)\b(?:letter|digit|number|label)(?:ed|s)?\b", original)  # ("so that A is on top" of coloured cubes: no label)
+    spelled_word = re.search(r"(?i)\b(?:spell\w*|reads?|word)\b", original)  # ("Spell HI so that H is on the left": a letter)
+    labelled = BARE_LABEL_RE.sub(lambda m: m.group(0) if (listed and m.group(1).lower() != "the") or (
+                                     m.group(1).lower() in ("that", ":") and (not labels_named or spelled_word)) else
                                  f"{m.group(1)} {'' if m.group(1).lower() == 'the' else 'the '}{m.group(2)} block",
-                                 labelled)  # "stack the A on the B", "with A at the bottom, then B": label cubes
+                                 labelled)  # "stack the A on the B", "with A at the bottom, then B": label cubes; after "that" or
+    # a colon only where the text names label cubes ("so that A is at the bottom, B in the middle and C on top")
     # "stack B on A, C on B", "STACK 2 on 1, 3 on 2 (digit cubes)", "stack letter B on letter A"
     labelled = labels_in_relations(labelled, digits=bool(LABEL_CUBES_SAID_RE.search(original)) or any(
         p.search(original) and p.search(original).group("l").isdigit() for p in lexicon.LABEL_CUBE_SAID_RES) or (
@@ -2185,6 +2179,11 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
             "Rephrase, or use --model to let a language model read it"
         )
     _refuse_unresolved_pronoun(text, original)
+    same = re.search(r"\bthe\s+same\s+(?:goal\s+)?patch\b", text)
+    if same and not re.search(rf"\b(?:{COLOR_RE})\s+(?:goal\s+)?patch\b", text[:same.start()]):
+        # "... and the green cube on the same patch": the same as which? (a patch of a colour nobody said had been made up)
+        raise ParseError(f"'{same.group(0)}' in \"{original[:80]}\" refers to a patch the instruction has not named before it; "
+                         "name the patch's colour (e.g. \"on the blue patch\"), or use --model")
     run_on = _CHAIN_RUN_ON_RE.search(text)
     if run_on:  # "orange over yellow over blue purple over red": blue over purple, or a bluish purple?
         raise ParseError(f"'{run_on.group('pair')}' in \"{original[:80]}\" names two colours with nothing between them "

@@ -35,6 +35,7 @@ from rpg.domain.predicates import (
     InRegion,
     LeftOf,
     OnPatch,
+    Reads,
     RightOf,
     Stack,
     StackOnPatch,
@@ -767,14 +768,16 @@ def _read(instruction: str) -> TaskSchema:
                     merged = _stacks_merged(f, read)
                     if merged:
                         gap = merged
-                    elif not (re.search(r"\bin any order\b", f.text) and any(type(p) is Stack for p in read.goal_predicate().walk())):
-                        return read
+                    elif not (re.search(r"\bin any order\b", f.text) and any(type(p) is Stack or (isinstance(p, InLine) and p.order)
+                                                                              or isinstance(p, Reads) for p in read.goal_predicate().walk())):
+                        return read  # ("Spell CAB in a row, in any order", "a rainbow row, in any order": a word's or a
+                        # rainbow's order is no free one; they had been read in order, the freedom dropped: a hostile helper's)
                     elif (anchored := any_order_with_ends(f, read)) is not None:
                         return anchored  # "any order is fine, but A must be at the bottom": that end fixed, the rest free
                     # "a tower of red, green and blue, doesn't matter which order, and put yellow to the left of it": the
                     # order said free and the tower read in order (the clause relating it had kept its list's order)
                     gap = ParseError(f"read \"{f.original[:80]}\" as: {read.goal_summary}; but 'in any order' leaves the order "
-                                     "free and that task orders the tower; say the tower in a sentence of its own, or use --model")
+                                     "free and that task orders its cubes; say the ordered structure in a sentence of its own, or use --model")
             first_gap = first_gap or gap  # a reading that drops a mention: try the next reader
     if first_gap is not None:
         raise first_gap

@@ -253,6 +253,10 @@ def _truncated_layers(f: Features, base: int, dims: int, roles: dict) -> int | N
     total = stated_count(f, default=None)  # (a count of one layer's cubes may be read as the total: "three red cubes")
     if total not in (None, base, 2 * base - 1) or _TRUNCATED_BLOCKER_RE.search(f.text):
         return None
+    roled = sum(len(_CUBE_NOUN_RE.findall(m.group(0))) for m in LAYER_ROLE_RE.finditer(f.text))
+    counted = re.sub(r"\bpyramid\s+(?:of|with)\s+\d+\s+(?:cubes|blocks)\b", " ", f.text)  # "a pyramid of five cubes: ..."
+    if len(_CUBE_NOUN_RE.findall(counted)) > roled:
+        return None  # "..., and one cube at the very top", "then a single cube": a cube said beyond the two layers
     levels = {level for _, level in roles}
     upper = levels - {0}
     if 0 not in levels or len(upper) != 1 or next(iter(upper)) not in (1, base - 1):
@@ -267,10 +271,13 @@ def _truncated_layers(f: Features, base: int, dims: int, roles: dict) -> int | N
     return 2
 
 
-_TRUNCATED_BLOCKER_RE = re.compile(r"\b(?:middle|third|fourth|peak|apex|summit|tip|crown|capstone|point"
-                                   r"|(?:three|four|five|3|4|5)[\s-]+(?:rows?|layers?|levels?|tiers?|high|tall|stor(?:y|ey|ies|eys)))\b")
+_TRUNCATED_BLOCKER_RE = re.compile(r"\b(?:middle|third|fourth|peak|apex|summit|tip|crown\w*|capstone|point|topp\w*"
+                                   r"|highest|height|tall|high|tier\w*|stor(?:y|ey|ies|eys)|3d|three-d\w*|proper|full|complete|whole"
+                                   r"|single|more|another|add\w*|then|finish\w*|ending|ends?|up\s+to\s+you|any|rest|remaining|others?)\b")
+_CUBE_NOUN_RE = re.compile(r"\b(?:cubes?|blocks?|bricks?|ones?)\b")
 """What keeps a pyramid said by two layers from being read as those two alone (:func:`_truncated_layers`): a layer between
-or above them, a peak, or a height of more than two."""
+or above them, a peak or a topper, a height, a whole pyramid ("proper", "3D"), a cube
+added after them ("then", "one more", "the highest is up to you") (a hostile helper's)."""
 
 
 def _skipped_layers(f: Features, base: int, dims: int, roles: dict) -> bool:
