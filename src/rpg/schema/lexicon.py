@@ -600,10 +600,6 @@ OPENING_SIMILE_PLACE_RE = re.compile(r"\b(?:middle|cent(?:er|re)|left|right|fron
                                      r"|over|behind|beside|near|next|between|around)\b")
 """Places and sides that keep an opening simile ("Like an island in the middle, ..."): they may place the task."""
 
-DIRECTION_SAID_RE = re.compile(r"\b(?:bottom\s+(?:to\s+(?:the\s+)?top|up)|top\s+(?:to\s+(?:the\s+)?bottom|down)|left\s+to\s+right|right\s+to\s+left"
-                               r"|from\s+the\s+(?:bottom|top|left|right))\b")
-"""A way a structure runs said in so many words ("bottom to top", "from the left")."""
-
 VOICE_SIMILE_OPENING_RE = re.compile(r"^(?:just\s+)?like\s+(?!(?:in|at|on|onto|to|near|next|behind|beside|under|over|above|below|right|left"
                                      r"|just|really|so|this|that|here|there|before|last|always|usual|normal|i|we|you)\b)|^as\s+per\b|^the\s+way\b|^(?:as\s+)?[a-z]+\s+as\b")
 """How a simile chunk of :data:`VOICE_TAIL_RES` opens (its words describe the thing compared: its counts are that
@@ -3444,7 +3440,7 @@ LABEL_STRUCTURE_KINDS: dict[str, str] = {w: k.name for k in STRUCTURE_KINDS.valu
 noun is the voice's own where its task names that kind too, or where it only qualifies a thing of the voice's world
 ("Grid reference: ...", "Tower captain speaking: ...")."""
 
-LABEL_FILLER_WORDS = frozenset({"the", "a", "an", "for", "of", "my", "our", "your", "this", "that"})
+VOICE_LABEL_FILLER_WORDS = frozenset({"the", "a", "an", "for", "of", "my", "our", "your", "this", "that"})
 """Words the parser reads that a voice's label may hold around a structure noun or its own things without saying anything
 of the task ("Chip stack for the showdown", "Line of sight check"): no place, count or order (:func:`rpg.schema.reading.\
 _label_structure_masked`)."""

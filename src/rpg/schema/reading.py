@@ -566,7 +566,7 @@ def _label_structure_masked(chunk: str, task: str) -> str:
     if re.search(rf"\d|\b(?:{lexicon.COUNT_WORD_RE})\b|[\[\]=]", chunk.lower()):
         return chunk  # "pile-5 [region=back]": a count or a spec of the task's own, to be read
     words = re.findall(r"[A-Za-z][A-Za-z'\-]*", chunk)
-    if any((w.lower() in VOCAB and w.lower() not in lexicon.LABEL_FILLER_WORDS) or lexicon.LABEL_STRUCTURE_HAZARD_RE.fullmatch(w.lower())
+    if any((w.lower() in VOCAB and w.lower() not in lexicon.VOICE_LABEL_FILLER_WORDS) or lexicon.LABEL_STRUCTURE_HAZARD_RE.fullmatch(w.lower())
            for w in words if w.lower().removesuffix("s") not in lexicon.LABEL_STRUCTURE_KINDS and w.lower() != "table"):
         return chunk  # "Rainbow row", "Twin towers", "Bottom row", "Countdown row": a word that may order, count or place
     out = chunk
