@@ -3393,3 +3393,20 @@ def test_forty_seventh_session_a_sort_said_by_the_numbers_way_along_the_row(tmp_
                                         name="fam").path).path)
     with pytest.raises(SteerError):
         steer(fam.path, "Make the numbers go up.")
+
+
+def test_forty_eighth_session_a_swap_with_the_other_cube_exchanges_them(tmp_path):
+    # steer_stranger30 (read material): "swap the red cube at the bottom with the yellow cube at the top" had recoloured red
+    # yellow (two yellow cubes, red lost, silently); "swap ... with the ..." exchanges, "swap ... with a ..." replaces
+    base = "Stack a red cube, then blue, then green, then yellow on top, bottom to top."
+    assert _steered(tmp_path / "a", base, "swap the red cube at the bottom with the yellow cube at the top.") == [
+        ("modify", ["stack(yellow,blue,green,red)"])]
+    assert _steered(tmp_path / "b", base, "swap the red cube with a white one.") == [("tweak", ["stack(white,blue,green,yellow)"])]
+
+
+def test_forty_eighth_session_a_patch_colour_in_an_edit_recolours_no_cube(tmp_path):
+    # steer_stranger30: "make it four green cubes on the white patch" had made the cubes white (and lost two): the colour is
+    # the patch's; the edit is refused now, not read as a recolouring
+    fam = Family(create_family(compiled("Put two green cubes on the white patch.", tmp_path / "a", name="fam").path).path)
+    with pytest.raises(SteerError):
+        steer(fam.path, "make it four green cubes on the white patch.")

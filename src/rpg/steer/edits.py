@@ -806,6 +806,10 @@ def read_ops(t: str) -> list[Op]:
     swap = re.search(r"\bswap\s+(?:the\s+)?(?P<a>(?:(?!\b(?:for|with|by)\b)[a-z0-9' ])+?)\s+(?:block\s+|cube\s+)?and\s+(?:the\s+)?"
                      r"(?P<b>(?:(?!\b(?:for|with|by)\b)[a-z0-9' ])+?)(?:\s+(?:blocks?|cubes?))?(?:\s*$|[;,.])", t)  # ("swap the c for a b and
     # the a for an o": two replacements, not c and a exchanged)
+    swap = swap or re.search(r"\b(?:swap|switch|exchange|trade)\s+(?:the\s+)?(?P<a>(?:(?!\b(?:for|with|by|and)\b)[a-z0-9' ])+?)\s+with\s+"
+                             r"the\s+(?P<b>(?:(?!\b(?:for|with|by|and)\b)[a-z0-9' ])+?)(?:\s*$|[;,.])", t)  # "swap the red cube at
+    # the bottom with the yellow cube at the top": the two exchanged (read as a replacement, the red had become yellow, silently);
+    # "swap the red cube with a yellow one" stays a replacement
     pair = re.search(r"\b(?:swap|switch|exchange|flip|trade)\s+(?:the\s+)?(?:places\s+of\s+the\s+)?(first|bottom|lowest|top|last|highest|middle"
                      r"|left|leftmost|right|rightmost)\s+(?:two|2)(?:\s+(?:ones|cubes|blocks|letters|digits))?\b", t)
     if pair and not reverse:  # "swap the first two", "swap the top two", "swap the middle two": a pair by its place
@@ -830,7 +834,8 @@ def read_ops(t: str) -> list[Op]:
         re.search(rf"\b(?:change|turn|make|paint|recolou?r|colou?r)\s+(?:the\s+)?(?P<old>.+?)\s+(?:to|into)\s+(?!(?:an?\s+|one\s+)?(?:[a-z]+\s+)?"
                   rf"{STRUCTURE_RE})(?:an?\s+|be\s+)?(?P<new>.+)", t) or \
         re.search(rf"\b(?:make|paint)\s+(?:the\s+)?(?P<old>(?:(?!\band\s+(?:add|put|place|stack|make)\b|\badd\b|\bput\b|\bwith\b"
-                  rf"|\ban?\s+{STRUCTURE_RE})[^,;.])+?)\s+(?P<new>(?:{COLOR_RE}))\b(?!\s+(?:cubes?|blocks?|ones?)\b)", t)
+                  rf"|\ban?\s+{STRUCTURE_RE})[^,;.])+?)\s+(?P<new>(?:{COLOR_RE}))\b(?!\s+(?:cubes?|blocks?|ones?|(?:goal\s+)?patch(?:es)?"
+                  r"|pads?|mats?)\b)", t)  # ("make it four green cubes on the white patch": the patch's colour, no recolouring)
     # (the cubes made a colour are said within one clause: "make it taller, add a yellow one" recolours nothing)
     repl = repl or re.search(rf"(?P<old>\b(?:the|both|all|each|every|it|they|them|\d+\s+of)\b[a-z0-9' ]*?)\s+(?:to\s+)?{EDIT_SHOULD_BE_RE}"
                              rf"\s+(?:an?\s+)?(?P<new>(?:{COLOR_RE})\b|(?:letter|digit)\s+[a-z0-9]\b)", t) or \
