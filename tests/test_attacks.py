@@ -37,7 +37,9 @@ def one_line_error(r, code=2):
 
 @pytest.fixture(scope="module")
 def artifact(tmp_path_factory):
-    return compile_instruction("Stack the red block on top of the blue block.", tmp_path_factory.mktemp("a")).path
+    with pytest.MonkeyPatch.context() as mp:  # with its pictures: the attacks below go through them
+        mp.setenv("RPG_SNAPSHOTS", "1")
+        return compile_instruction("Stack the red block on top of the blue block.", tmp_path_factory.mktemp("a")).path
 
 
 @pytest.fixture()
@@ -151,7 +153,7 @@ def test_verify_expect_catches_a_recomputed_forgery(task):
     assert not verify_target(task, trusted)["ok"]
 
 
-def test_verify_covers_every_file_of_a_version(task):
+def test_verify_covers_every_file_of_a_version(task, snapshots_on):
     from rpg.steer.steering import steer
 
     steer(task, "make the top block green")
@@ -400,7 +402,7 @@ def test_bad_arguments_exit_2_with_one_line_and_write_nothing(args, junk, artifa
     assert sorted(p.name for p in tmp_path.iterdir()) == ["task"]
 
 
-def test_disk_full_exits_4_with_one_line(tmp_path):
+def test_disk_full_exits_4_with_one_line(tmp_path, snapshots_on):  # (without its pictures a task fits in 24 KB)
     """A compile onto a full file system (a 24 KB tmpfs in a private mount namespace) ends
     with one line and exit 4, and no half-written artifact."""
     probe = subprocess.run(["unshare", "--mount", "true"], capture_output=True)

@@ -192,7 +192,7 @@ def test_builtin_parser_refuses_clearly(text, needle):
         parse(text)
 
 
-def test_cli_exit_codes_and_messages(tmp_path):
+def test_cli_exit_codes_and_messages(tmp_path, snapshots_on):
     assert rpg("--version").stdout.startswith("rpg ")
     assert "Exit codes" in rpg("--help").stdout
     bad = rpg("compile", "florp the wizzle", "-o", str(tmp_path))
@@ -515,6 +515,7 @@ def test_a_start_said_before_its_goal_compiles_to_the_end(tmp_path):
 def test_snapshots_can_be_left_out_and_the_task_is_the_same(tmp_path, monkeypatch):
     """``RPG_SNAPSHOTS=0`` builds the task without initial.png and goal.png (a batch job that looks at no pictures): the
     same valid task, the same content hash, its file manifest without the pictures; ``rpg render`` draws them later."""
+    monkeypatch.setenv("RPG_SNAPSHOTS", "1")
     drawn = compile_instruction("Stack the red block on the blue block", tmp_path / "drawn", name="t")
     monkeypatch.setenv("RPG_SNAPSHOTS", "0")
     bare = compile_instruction("Stack the red block on the blue block", tmp_path / "bare", name="t")

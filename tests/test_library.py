@@ -44,7 +44,7 @@ def mini(tmp_path):
     return tmp_path / "manifest.yaml"
 
 
-def test_build_records_hashes_and_check_catches_a_change(mini, tmp_path):
+def test_build_records_hashes_and_check_catches_a_change(mini, tmp_path, snapshots_on):
     r = rpg("build", str(mini), "--jobs", "2", "--json", str(tmp_path / "report.json"))
     assert r.returncode == 0, r.stdout + r.stderr
     m = load_manifest(mini)
