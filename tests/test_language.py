@@ -8834,6 +8834,20 @@ def test_forty_seventh_session_a_time_of_day_is_refused_as_time(text):
     ("Spell HI so that H is on the left.", ["line[left_to_right](H,I)", "reads(H,I;direction=left_to_right,face=up,text=HI)"]),
     ("Put the red cube on the green patch and the blue cube on the same patch.", ["on_patch(blue,red,patch:green)"]),
     ("Gather each red cube into a pile on the left.", ["pile(red,red,red)@left"]),
+    # a voice's label with its own table, an idiom of a structure noun, fillers; towers counted by a coloured heading and
+    # said by their places; a closing "that's the ..." naming what was done
+    ("Pause table: put the brown cube on the green patch.", ["on_patch(brown,patch:green)"]),
+    ("Line of sight check: put the black cube in front of the gray cube.", ["in_front_of(black,gray)"]),
+    ("Chip stack for the showdown: a tower of two blue cubes in the front left corner of the table.",
+     ["stack(blue,blue)@front_left"]),
+    ("Two gray towers, each three cubes tall, one on the left side of the table and one in the centre.",
+     ["stack(gray,gray,gray)@center", "stack(gray,gray,gray)@left"]),
+    ("Two rows, a row of three red cubes at the front of the table and a row of three blue cubes at the back.",
+     ["line(blue,blue,blue)@back", "line(red,red,red)@front"]),
+    ("Stack a white cube on a red cube, and stack a white cube on a blue cube, two separate towers.",
+     ["stack(blue,white)", "stack(red,white)"]),
+    ("Put a yellow cube on the green patch and a purple cube on the green patch too, that's the pot.",
+     ["on_patch(purple,yellow,patch:green)"]),
     # a wall's two layers said below and above them (the layers had been lost: one course of four, silently)
     ("Build a wall in the center with two black cubes below and two gray cubes above them.",
      ["wall(black,black|gray,gray)@center"]),
@@ -8903,6 +8917,14 @@ def test_forty_eighth_session_what_a_voice_frames_and_what_it_orders(text, expec
     "Build two stacks: one with red on blue, the other the same.",
     "Build two stacks: one with red on blue, the other with the same colours.",
     "Put the red cube on the blue cube and the green cube on the same patch.",
+    # a second hostile helper's: a heading's colour the parts contradict, a person's or a copy's label, a naming tail that
+    # calls the goal unwanted
+    "Two gray towers: red on blue, and green on yellow.",
+    "Two gray towers, each three tall: the first red-blue-green, the second on the left.",
+    "Opponent's table: put the red cube left of the blue cube.",
+    "Duplicate table: stack a red cube on a blue cube.",
+    "Line of dozens: stack a red cube on a blue cube.",
+    "Put the red cube left of the blue cube, that's the decoy.",
     # a pyramid said by two layers and more: a middle layer, a total of six, a height of three
     "Build a pyramid with three red cubes on the bottom layer and two white cubes in the middle.",
     "Build a pyramid of six cubes: three red on the bottom and two white on top.",

@@ -3410,3 +3410,16 @@ def test_forty_eighth_session_a_patch_colour_in_an_edit_recolours_no_cube(tmp_pa
     fam = Family(create_family(compiled("Put two green cubes on the white patch.", tmp_path / "a", name="fam").path).path)
     with pytest.raises(SteerError):
         steer(fam.path, "make it four green cubes on the white patch.")
+
+
+def test_forty_eighth_session_swaps_and_recolourings_a_hostile_helper_tried(tmp_path):
+    # "swap X with the one in the middle of the table" had exchanged X with the tower's middle; "make the cubes on the white
+    # patch green" had recoloured the patch; "swap X with the new green cube" stays a replacement
+    base = "Stack a yellow cube, then blue, then red on top, bottom to top."
+    fam = Family(create_family(compiled(base, tmp_path / "a", name="fam").path).path)
+    with pytest.raises(SteerError):
+        steer(fam.path, "swap the red cube with the one in the middle of the table")
+    assert _steered(tmp_path / "b", base, "swap the red cube with the new green cube") == [("tweak", ["stack(yellow,blue,green)"])]
+    fam = Family(create_family(compiled("Put three red cubes on the white patch.", tmp_path / "c", name="fam").path).path)
+    with pytest.raises(SteerError):
+        steer(fam.path, "make the cubes on the white patch green")

@@ -590,6 +590,12 @@ NAMING_TAIL_RE = re.compile(r"(?i)(?:that's|that\s+is|which\s+is|this\s+is)\s+(?
 """A chunk at a sentence's end that names what the sentence did ("..., that's the pot"): weighed by
 :func:`rpg.schema.reading._naming_tail`."""
 
+NAMING_TAIL_HAZARD_RE = re.compile(r"\b(?:test|tests|control|draft|rehearsal|practice|trial|axis|horizon|diagonal|footing|plinth"
+                                   r"|foundation|base|basement|ground|floor|starboard|port|bow|stern|north|south|east|west|maximum|minimum"
+                                   r"|limit|max|min|start|finish|end|before|after|target|answer|solution|key)\b")
+"""Nouns a closing "that's the ..." may not name without bearing on the task (:func:`rpg.schema.reading._naming_tail`): a
+trial or an unfinished state, an axis or a side, a part of something more, a limit, the answer (a hostile helper's)."""
+
 VOICE_OPENING_SIMILE_RE = re.compile(r"^\s*(?P<c>(?:just\s+)?like\s+[^,;:.!?()]{2,80}?)\s*,\s+(?=\S)", re.IGNORECASE)
 """A simile before a task ("Like laying shingles from the eaves to the ridge, build a tower: ..."): dropped by
 :func:`rpg.schema.reading.drop_voice_chunks` when :func:`rpg.schema.reading._voice_chunk` finds it inert, as one at a

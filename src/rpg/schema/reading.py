@@ -570,6 +570,9 @@ def _label_structure_masked(chunk: str, task: str) -> str:
            for w in words if w.lower().removesuffix("s") not in lexicon.LABEL_STRUCTURE_KINDS and w.lower() != "table"):
         return chunk  # "Rainbow row", "Twin towers", "Bottom row", "Countdown row": a word that may order, count or place
     out = chunk
+    if re.search(r"'s\b|s'(?!\w)", chunk) or lexicon.OPENING_ADJUNCT_HAZARD_RE.search(chunk.lower().replace("table", " ")) or any(
+            lexicon.OPENING_ADJUNCT_PERSON_RE.fullmatch(w.lower()) for w in words):
+        return chunk  # "Opponent's table", "Guest table", "Duplicate table", "Line of others": someone's view, copies, others
     for i, w in enumerate(words):
         kind = lexicon.LABEL_STRUCTURE_KINDS.get(w.lower())
         if w.lower() == "table":  # "Tournament table: ...", "Pause table: ...": the voice's table (no side of it said)
@@ -578,8 +581,9 @@ def _label_structure_masked(chunk: str, task: str) -> str:
         if kind is None:
             continue  # (a plural, "Twin towers", "Parallel rows", says how many: the label stays)
         after = words[i + 1].lower() if i + 1 < len(words) else ""
-        idiom = after == "of" and i + 2 < len(words) and not re.fullmatch(  # "Line of sight check": no line of cubes
+        idiom = after == "of" and i + 2 < len(words) and not words[i + 2].lower().endswith("s") and not re.fullmatch(
             rf"(?:{COLOR_RE}|cubes?|blocks?|bricks?|one|two|three|four|five|six|seven|eight|nine|ten)", words[i + 2].lower())
+        # ("Line of sight check": no line of cubes; "Line of dozens", "Line of reds": how many, which)
         if idiom:
             out = re.sub(rf"\b{re.escape(w)}\b", "thing", out, count=1)
             continue
@@ -610,10 +614,13 @@ def _label_names_structure(chunk: str, task: str) -> str | None:
 
 def _naming_tail(chunk: str) -> bool:
     """Whether a chunk at a sentence's end only names, in a voice's words, what the sentence just did ("..., that's the
-    pot", "..., which is my bullpen"): "that's" and a thing of the voice's own that :func:`_voice_chunk` finds inert (no
-    goal, place, order, reference, count or colour: "..., that's the goal", "..., that's the red one" stay)."""
+    pot", "..., which is my bullpen"): "that's" and one noun of the voice's own that :func:`_voice_chunk` finds inert (no
+    goal, place, order, reference, count or colour: "..., that's the goal", "..., that's the red one" stay), and none that
+    may call the goal unwanted, a trial, an axis or a part of more (:data:`lexicon.OPENING_ADJUNCT_HAZARD_RE`,
+    :data:`lexicon.NAMING_TAIL_HAZARD_RE`: "..., that's the decoy", "..., that's the foundation")."""
     m = lexicon.NAMING_TAIL_RE.fullmatch(chunk.strip())
-    return bool(m) and _voice_chunk(f"the {m.group('n')}")
+    return bool(m) and " " not in m.group("n").strip() and not lexicon.OPENING_ADJUNCT_HAZARD_RE.search(m.group("n")) \
+        and not lexicon.NAMING_TAIL_HAZARD_RE.search(m.group("n")) and _voice_chunk(f"the {m.group('n')}")
 
 
 def drop_voice_chunks(text: str, labels: bool = True) -> tuple[str, list[str]]:

@@ -806,8 +806,9 @@ def read_ops(t: str) -> list[Op]:
     swap = re.search(r"\bswap\s+(?:the\s+)?(?P<a>(?:(?!\b(?:for|with|by)\b)[a-z0-9' ])+?)\s+(?:block\s+|cube\s+)?and\s+(?:the\s+)?"
                      r"(?P<b>(?:(?!\b(?:for|with|by)\b)[a-z0-9' ])+?)(?:\s+(?:blocks?|cubes?))?(?:\s*$|[;,.])", t)  # ("swap the c for a b and
     # the a for an o": two replacements, not c and a exchanged)
-    swap = swap or re.search(r"\b(?:swap|switch|exchange|trade)\s+(?:the\s+)?(?P<a>(?:(?!\b(?:for|with|by|and)\b)[a-z0-9' ])+?)\s+with\s+"
-                             r"the\s+(?P<b>(?:(?!\b(?:for|with|by|and)\b)[a-z0-9' ])+?)(?:\s*$|[;,.])", t)  # "swap the red cube at
+    swap = swap or re.search(r"\b(?:swap|switch|exchange|trade)\s+(?!out\b)(?:the\s+)?(?P<a>(?:(?!\b(?:for|with|by|and|table|patch"
+                             r"|of|new|spare|other|another)\b)[a-z0-9 ])+?)\s+with\s+the\s+(?!new\b|spare\b|other\b|extra\b)"
+                             r"(?P<b>(?:(?!\b(?:for|with|by|and|table|patch|of|back)\b)[a-z0-9 ])+?)(?:\s*$|[;,.])", t)  # "swap the red cube at
     # the bottom with the yellow cube at the top": the two exchanged (read as a replacement, the red had become yellow, silently);
     # "swap the red cube with a yellow one" stays a replacement
     pair = re.search(r"\b(?:swap|switch|exchange|flip|trade)\s+(?:the\s+)?(?:places\s+of\s+the\s+)?(first|bottom|lowest|top|last|highest|middle"
@@ -856,6 +857,10 @@ def read_ops(t: str) -> list[Op]:
             and re.fullmatch(rf"\s*(?:{one_said})\s*", repl.group("old")):
         raise SteerError(f"'{repl.group(0).strip()}' after '{add.group(0).strip()}' may recolour the cube added, which the edit "
                          "names by colour already, or the whole task; say the added cube's colour once, or use --model")
+    if repl and not reverse and re.search(r"\b(?:cubes?|blocks?|ones?|them)\b", repl.group("old")) and re.search(
+            r"\bpatch", repl.group("old")):
+        raise SteerError(f"'{repl.group('old').strip()}' names cubes by the patch they stand on, which the builtin steering does "
+                         "not read for a recolouring; name the cubes by colour (e.g. \"make the red cubes green\"), or use --model")
     if repl and not reverse:
         sel, new = _selector(repl.group("old")), _new_item(repl.group("new"))
         bare = re.fullmatch(r"\s*'?([a-z0-9])'?\s*[.!]?", repl.group("new"))

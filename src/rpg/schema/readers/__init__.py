@@ -555,6 +555,10 @@ def _towers_headed(instruction: str, framed: bool) -> TaskSchema | None:
     parts = [p for p in schema.goal_predicate().walk() if not isinstance(p, And)]
     kind = _HEADED_KINDS[m.group("kind").lower()]
     stacks = [p for p in parts if isinstance(p, kind)]
+    colour = canon_color(m.group("c")) if m.group("c") else None
+    if colour and any(a.color != colour for a in schema.assets if a.kind != "goal_patch"):
+        return None  # "Two gray towers: red on blue, and green on yellow": the heading's colour is every cube's, or the
+        # text is read whole (the heading's colour had been dropped: a hostile helper's)
     if len(stacks) != n or any(not isinstance(p, (kind, InRegion)) for p in parts) or (
             h and any(len(p.objects) != lexicon.count_word(h) for p in stacks)) or len({o for p in stacks for o in p.objects}) != sum(a.kind != "goal_patch" for a in schema.assets):
         return None
@@ -571,6 +575,9 @@ def _enumerated_parts(body: str, kind: str, h: str | None, colour: str | None = 
     if len(parts) < 3 or parts[0].strip():
         return None
     noun = kind.removesuffix("s")
+    if colour is not None and not all(lexicon.ENUMERATED_PART_PLACE_RE.fullmatch(p.strip(" ,;")) for p in parts[1:]):
+        return None  # a heading's colour beside a part with cubes of its own ("Two gray towers: the first red-blue-green, the
+        # second on the left"): which colour is whose is not read
     said = []
     for part in (p.strip(" ,;") for p in parts[1:]):
         part = re.sub(r"^(?:(?:built|made)\s+(?:from|of|out\s+of)|of)\s+", "", part)  # "one built from red cubes"
