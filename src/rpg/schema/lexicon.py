@@ -2232,7 +2232,7 @@ FREE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 r"(?:\s+of\s+the\s+table)?)?\s*(?:[.!]\s*)?$)"), r"all the \1 cubes"),  # (not "into a pile of its own", "..., two
     # per pile", "... but one", "... Then take one out": a hostile helper's)
     # "Two stacks please - one with ..., the other with ...": the heading of structures counted off, its dash a colon
-    (re.compile(rf"\b((?:two|three|four|[2-4])\s+(?:stacks|towers|rows|lines|piles))\s+please\s*(?:-|\u2013|\u2014)\s+(?=(?:one|1)\b)"),
+    (re.compile(r"\b((?:two|three|four|[2-4])\s+(?:stacks|towers|rows|lines|piles))\s+please\s*(?:-|\u2013|\u2014)\s+(?=(?:one|1)\b)"),
      r"\1 please: "),
     # Singapore English "any order also can": any order
     (re.compile(r"\s*[,;]?\s*\bany\s+order\s+also\s+(?:can|ok|okay|fine)\b"), " in any order"),
