@@ -670,7 +670,7 @@ def drop_voice_chunks(text: str, labels: bool = True) -> tuple[str, list[str]]:
     return " ".join(sentences), dropped
 
 
-def _opening_adjunct(prep: str | None, np: str, text: str) -> bool:
+def _opening_adjunct(prep: str | None, np: str) -> bool:
     """Whether an opening adjunct (:data:`lexicon.OPENING_ADJUNCT_RE`: ``prep`` and its noun phrase ``np``, or a noun
     "aside" where ``prep`` is None) is a voice's occasion that says nothing of the task: one to four words, no digit or
     count, no colour, nothing of a goal (:data:`lexicon.TASK_CONTENT_RE`, :data:`lexicon.GOAL_THING_PREFIX_RE`), no word
@@ -772,7 +772,7 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
     n_before = len(dropped)
 
     def adjunct(m: re.Match) -> str:  # "For the keyframes I need ...", "Etymology aside, put ...": the voice's occasion
-        if not _opening_adjunct(m.group("prep"), m.group("np") or m.group("np2"), m.string):
+        if not _opening_adjunct(m.group("prep"), m.group("np") or m.group("np2")):
             return m.group(0)
         dropped.append(m.group("a").strip())
         return ""
