@@ -8925,6 +8925,7 @@ def test_forty_eighth_session_what_a_voice_frames_and_what_it_orders(text, expec
     "Duplicate table: stack a red cube on a blue cube.",
     "Line of dozens: stack a red cube on a blue cube.",
     "Put the red cube left of the blue cube, that's the decoy.",
+    "Stack 1 on 2.",  # digit cubes or counts? (it had been two cubes in any order, silently)
     # a pyramid said by two layers and more: a middle layer, a total of six, a height of three
     "Build a pyramid with three red cubes on the bottom layer and two white cubes in the middle.",
     "Build a pyramid of six cubes: three red on the bottom and two white on top.",

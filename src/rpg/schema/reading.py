@@ -1785,6 +1785,12 @@ def _normalize_words(instruction: str, strict: bool) -> tuple[str, str, list[tup
         # cubes ("stack 2 on 1" alone stays refused: two cubes on one?)
         len(re.findall(r"\b\d\s+(?:on|onto|on\s+top\s+of)\s+\d\b", original)) >= 2
         and not re.search(r"(?i)\b(?:blocks?|cubes?|bricks?|boxes|towers?|stacks?\s+of|high|tall|levels?|rows?|layers?)\b", original)))
+    lone = re.findall(r"\b\d\s+(?:on|onto|on\s+top\s+of)\s+\d\b", labelled)
+    if len(lone) == 1 and strict and not re.search(r"(?i)\b(?:blocks?|cubes?|bricks?|boxes|digits?|numbers?|numbered|labell?ed)\b",
+                                                   original):
+        # "Stack 1 on 2.": the digit cubes 1 and 2, or one cube on two? (it had been read as two cubes in any order)
+        raise ParseError(f"'{lone[0]}' in \"{original[:80]}\" may name digit cubes or count cubes; say which (e.g. \"stack the "
+                         "digit cube 1 on the digit cube 2\" or \"stack one cube on two cubes\"), or use --model")
     labelled = lexicon.rewrite(lexicon.LABEL_ARTICLE_REWRITES, labelled)
     text = labelled.lower()
     text = re.sub(r"[\u2018\u2019\u201c\u201d`]", "'", text)
