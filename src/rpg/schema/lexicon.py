@@ -3451,6 +3451,16 @@ VOICE_LABEL_FILLER_WORDS = frozenset({"the", "a", "an", "for", "of", "my", "our"
 of the task ("Chip stack for the showdown", "Line of sight check"): no place, count or order (:func:`rpg.schema.reading.\
 _label_structure_masked`)."""
 
+LABEL_MASK_HAZARD_RE = re.compile(
+    r"\b(?:others?|rest|each|every|all|both|cop(?:y|ies)|duplicat\w*|replica\w*|double\w*|pairs?|paired|twins?|multiple|several"
+    r"|view|viewpoint|perspective|eyes?|mirror\w*|reflect\w*|revers\w*|invert\w*|flip\w*|rotat\w*|turned|opposite|inverse"
+    r"|negative|counter\w*|wrong|incorrect|decoy|trap|mistakes?|errors?|start\w*|initial\w*|before|setups?|set-up|prior"
+    r"|me|you|us|everyone|everybody|guests?|kids?|children|child|family|audience|crowd|public|team|client|friends?|boss|people"
+    r"|person|humans?|man|men|woman|women)\b")
+"""Words that keep a voice's label whole where it holds a table, an idiom or fillers (:func:`rpg.schema.reading.\
+_label_structure_masked`): others or copies ("Line of others:", "Duplicate table:"), someone's view ("Guest table:"), a
+turned, unwanted or start state ("Mirror table:", "Setup table:") (a hostile helper's)."""
+
 LABEL_STRUCTURE_HAZARD_RE = re.compile(r"twins?|double|pairs?|duo|trio|parallel|nested|stacked|count\w*|ordered|sorted|revers\w*"
                                        r"|alphabet\w*|rainbow|numbers?|numbered|words?|upper|lower|bottom|top|left|right|front|back"
                                        r"|middle|first|second|third|last|tall|short|long|big|small|little|tiny|wide|high|low|main|other")

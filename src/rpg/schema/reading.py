@@ -570,8 +570,9 @@ def _label_structure_masked(chunk: str, task: str) -> str:
            for w in words if w.lower().removesuffix("s") not in lexicon.LABEL_STRUCTURE_KINDS and w.lower() != "table"):
         return chunk  # "Rainbow row", "Twin towers", "Bottom row", "Countdown row": a word that may order, count or place
     out = chunk
-    if re.search(r"'s\b|s'(?!\w)", chunk) or lexicon.OPENING_ADJUNCT_HAZARD_RE.search(chunk.lower().replace("table", " ")) or any(
-            lexicon.OPENING_ADJUNCT_PERSON_RE.fullmatch(w.lower()) for w in words):
+    if re.search(r"'s\b|s'(?!\w)", chunk) or lexicon.LABEL_MASK_HAZARD_RE.search(chunk.lower()) or any(
+            lexicon.OPENING_ADJUNCT_PERSON_RE.fullmatch(w.lower()) for w in words
+            if w.lower() not in VOCAB and w.lower().removesuffix("s") not in lexicon.LABEL_STRUCTURE_KINDS):
         return chunk  # "Opponent's table", "Guest table", "Duplicate table", "Line of others": someone's view, copies, others
     for i, w in enumerate(words):
         kind = lexicon.LABEL_STRUCTURE_KINDS.get(w.lower())
