@@ -33,7 +33,7 @@ demo: install
 	$(RPG) compile "$(DEMO_INSTRUCTION)" -o out
 
 test: install
-	$(PY) -m pytest -n auto --dist worksteal -q
+	$(PY) -m pytest -n auto -q
 
 bench: install
 	$(PY) benchmarks/bench_domain.py

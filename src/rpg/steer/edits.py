@@ -857,8 +857,8 @@ def read_ops(t: str) -> list[Op]:
             and re.fullmatch(rf"\s*(?:{one_said})\s*", repl.group("old")):
         raise SteerError(f"'{repl.group(0).strip()}' after '{add.group(0).strip()}' may recolour the cube added, which the edit "
                          "names by colour already, or the whole task; say the added cube's colour once, or use --model")
-    if repl and not reverse and re.search(r"\b(?:cubes?|blocks?|ones?|them)\b", repl.group("old")) and re.search(
-            r"\bpatch", repl.group("old")):
+    if repl and not reverse and re.search(r"\b(?:cubes|blocks|ones|them)\b", repl.group("old")) and re.search(
+            r"\b(?:on|in|at)\s+(?:the\s+)?(?:[a-z]+\s+)?patch", repl.group("old")):  # ("the cube on the red patch" is read)
         raise SteerError(f"'{repl.group('old').strip()}' names cubes by the patch they stand on, which the builtin steering does "
                          "not read for a recolouring; name the cubes by colour (e.g. \"make the red cubes green\"), or use --model")
     if repl and not reverse:
