@@ -271,13 +271,24 @@ def _truncated_layers(f: Features, base: int, dims: int, roles: dict) -> int | N
     return 2
 
 
+def _place_layered_pyramid(b: Builder, names: list[str], base: int, layers: tuple[int, ...], summary: str) -> None:
+    """Place a 2D pyramid of the given ``layers`` (cubes per layer, bottom first; ``names`` in site order) and record its
+    goal and summary: the readings of a pyramid said by some of its layers (:func:`_skipped_layers`,
+    :func:`_truncated_layers`)."""
+    b.place(pyramid_layout(names, base, 2, layers=layers))
+    b.preds.insert(0, Pyramid(tuple(names), base=base, dims=2, layers=layers))
+    b.primitives += ["stack"]
+    b.summary.insert(0, summary)
+
+
 _TRUNCATED_BLOCKER_RE = re.compile(r"\b(?:middle|third|fourth|peak|apex|summit|tip|crown\w*|capstone|point|topp\w*"
                                    r"|highest|height|tall|high|tier\w*|stor(?:y|ey|ies|eys)|3d|three-d\w*|proper|full|complete|whole"
                                    r"|single|more|another|add\w*|then|finish\w*|ending|ends?|up\s+to\s+you|any|rest|remaining|others?)\b")
-_CUBE_NOUN_RE = re.compile(r"\b(?:cubes?|blocks?|bricks?|ones?)\b")
 """What keeps a pyramid said by two layers from being read as those two alone (:func:`_truncated_layers`): a layer between
 or above them, a peak or a topper, a height, a whole pyramid ("proper", "3D"), a cube
 added after them ("then", "one more", "the highest is up to you") (a hostile helper's)."""
+_CUBE_NOUN_RE = re.compile(r"\b(?:cubes?|blocks?|bricks?|ones?)\b")
+"""A noun for cubes, counted by :func:`_truncated_layers` inside and outside the layers said."""
 
 
 def _skipped_layers(f: Features, base: int, dims: int, roles: dict) -> bool:
@@ -547,20 +558,14 @@ def recognize_pyramid(f: Features, b: Builder) -> bool:
     if kept:  # "three red cubes on the bottom layer and two white cubes on the layer above": those two layers, no peak
         sizes = sizes[:kept]
         said = {(c, kept - 1 if level == base - 1 else level): n for (c, level), n in roles.items()}
-        names = fill_layers(f, b, sizes, said)
-        b.place(pyramid_layout(names, base, dims, layers=tuple(sizes)))
-        b.preds.insert(0, Pyramid(tuple(names), base=base, dims=dims, layers=tuple(sizes)))
-        b.primitives += ["stack"]
-        b.summary.insert(0, f"a 2D pyramid of {' under '.join(map(str, sizes))} cubes, no layer above ({sum(sizes)} cubes)")
+        _place_layered_pyramid(b, fill_layers(f, b, sizes, said), base, tuple(sizes),
+                               f"a 2D pyramid of {' under '.join(map(str, sizes))} cubes, no layer above ({sum(sizes)} cubes)")
         return True
     if material == "colors" and _skipped_layers(f, base, dims, roles):
         # "three cubes on the bottom (red, green, blue) and a yellow cube on top": those two layers, the top cube
         # centred over the base
-        names = _layered_pyramid(f, b, base, counted=bool(dims_m or m))
-        b.place(pyramid_layout(names, base, dims, layers=(base, 1)))
-        b.preds.insert(0, Pyramid(tuple(names), base=base, dims=dims, layers=(base, 1)))
-        b.primitives += ["stack"]
-        b.summary.insert(0, f"a 2D pyramid of {base} cubes under 1 on top ({base + 1} cubes)")
+        _place_layered_pyramid(b, _layered_pyramid(f, b, base, counted=bool(dims_m or m)), base, (base, 1),
+                               f"a 2D pyramid of {base} cubes under 1 on top ({base + 1} cubes)")
         return True
     if roles:
         names = fill_layers(f, b, sizes, roles)
