@@ -62,7 +62,7 @@ def test_every_library_schema_validates_against_the_exported_json_schema():
 
 @pytest.mark.slow
 @pytest.mark.parametrize("instruction", seed_instructions())
-def test_paper_instruction_compiles_and_goal_holds(instruction, tmp_path):
+def test_paper_instruction_compiles_and_goal_holds(instruction, tmp_path, snapshots_on):
     result = compile_instruction(instruction, tmp_path)
     assert result.valid, result.log
     assert {g["gate"] for g in result.gates if g["status"] == "pass"} == {
