@@ -730,7 +730,9 @@ def drop_asides(text: str) -> tuple[str, list[str]]:
     (:data:`lexicon.ASIDE_CONTENT_RE`) and nothing the domain cannot express ("Quickly!" stays, to be refused), and
     other sentences that are framing (:func:`_framing_sentence`: "Code is linked in the description."), when a sentence
     of the task is left; the text as it is when nothing else is left.  A task quoted in a report of it
-    (:data:`lexicon.QUOTED_TASK_RE`) is the quote alone when the report says nothing of cubes or places."""
+    (:data:`lexicon.QUOTED_TASK_RE`) is the quote alone when the report says nothing of cubes or places.  A sentence's
+    opening adjunct of a voice's occasion ("For the keyframes I need ...", "Etymology aside, ...") is dropped where
+    :func:`_opening_adjunct` finds it inert."""
     quoted = list(lexicon.QUOTED_TASK_RE.finditer(text))
     if len(quoted) == 1:  # 'give the task "put the cyan cube behind the red cube"': the quote, its report dropped
         rest = text[:quoted[0].start("q")] + text[quoted[0].end("q"):]
