@@ -12,7 +12,7 @@ import yaml
 
 from rpg.errors import BadInput
 from rpg.schema.builtin import parse
-from rpg.steer import Family, SteerError, create_family, steer
+from rpg.steer import Family, SteerError, create_family, is_family, steer
 from rpg.steer.edits import apply_ops, interpret
 from rpg.steer.session import goal_tower
 from rpg.steer.spec import Item, TaskSpec, extract, render
@@ -796,14 +796,20 @@ def test_a_line_has_no_end_across_its_direction():
                   interpret("add a red block at the front end").ops)
 
 
-def _steered(tmp_path, base: str, *edits: str):
-    """(intent, meaning) of each edit applied in turn to a compiled base."""
+def _steered(tmp_path, base: str, *edits: str, build_last: bool = False):
+    """(intent, meaning) of each edit applied in turn to a compiled base: each but the last built and recorded, the last
+    read and checked as ``rpg steer --dry-run`` does (what these tests ask of it; ``build_last`` builds it too, and the
+    tests of building, recording and reusing versions build every one)."""
     from rpg.schema.meaning import meaning
 
     fam = Family(create_family(compiled(base, tmp_path, name="fam").path).path)
     out = []
-    for e in edits:
-        r = steer(fam.path, e)
+    for i, e in enumerate(edits):
+        preview = i == len(edits) - 1 and not build_last
+        r = steer(fam.path, e, dry_run=preview)
+        if preview:
+            out.append((r.intent, meaning(r.schema)))
+            continue
         assert r.valid, (e, r.notes)
         out.append((r.intent, meaning(fam.schema(r.version))))
     return out
@@ -1601,7 +1607,8 @@ def test_second_attack_steering(tmp_path, base, edits, expected):
 def test_a_structure_with_a_role_is_not_read_as_a_recolour(tmp_path):
     """"make it a tower with red on top" of a tower in any order had turned every cube red (then it
     was refused); it is the same cubes with red on top, the rest in any order: a Modify."""
-    assert _steered(tmp_path, "Make a tower of red, green and blue in any order", "make it a tower with red on top") == [
+    assert _steered(tmp_path, "Make a tower of red, green and blue in any order", "make it a tower with red on top",
+                    build_last=True) == [
         ("modify", ["stack(green,blue,red)"])]
     fam = Family(tmp_path / "fam")
     assert "red on top, the rest in any order" in fam.schema(1).goal_summary
@@ -3423,3 +3430,44 @@ def test_forty_eighth_session_swaps_and_recolourings_a_hostile_helper_tried(tmp_
     fam = Family(create_family(compiled("Put three red cubes on the white patch.", tmp_path / "c", name="fam").path).path)
     with pytest.raises(SteerError):
         steer(fam.path, "make the cubes on the white patch green")
+
+
+def _tree(path: Path) -> dict:
+    """Every file under ``path`` and its bytes, but the (empty) lock files a reader takes."""
+    return {str(p.relative_to(path)): p.read_bytes() for p in sorted(path.rglob("*")) if p.is_file() and not p.name.endswith(".lock")}
+
+
+@pytest.mark.parametrize("base, edits", [
+    ("Stack the red cube on the blue cube.", ["add a green cube on top", "make the top cube yellow"]),
+    ("Put the red block next to the blue block and the green block behind the blue block", ["get rid of the green block"]),
+    ("Build a tower of red, blue and green.", ["now put it on the left side", "swap the red and green cubes"]),
+])
+def test_a_dry_run_reads_each_edit_as_steer_does_and_writes_nothing(tmp_path, base, edits):
+    """``steer(..., dry_run=True)`` (``rpg steer --dry-run``) gives the intent, reference and task that steering records,
+    and leaves the family, or the task that is not yet one, byte for byte as it was."""
+    from rpg.schema.meaning import meaning
+
+    task = compiled(base, tmp_path, name="fam").path
+    before = _tree(tmp_path)
+    first = steer(task, edits[0], dry_run=True)
+    assert first.version is None and not first.valid and _tree(tmp_path) == before and not is_family(task)
+    fam = Family(create_family(task).path)
+    for e in edits:
+        before = _tree(tmp_path)
+        dry = steer(fam.path, e, dry_run=True)
+        assert _tree(tmp_path) == before
+        r = steer(fam.path, e)
+        assert r.valid and (dry.intent, dry.reference, dry.instruction) == (r.intent, r.reference, r.instruction)
+        assert meaning(dry.schema) == meaning(fam.schema(r.version))
+
+
+def test_cli_steer_dry_run_prints_the_version_it_would_record(tmp_path):
+    task = compiled("Stack the red cube on the blue cube.", tmp_path, name="fam").path
+    before = _tree(tmp_path)
+    r = rpg("steer", str(task), "add a green cube on top", "--dry-run", "--json")
+    assert r.returncode == 0, r.stderr
+    doc = json.loads(r.stdout)
+    assert doc["intent"] == "extend" and doc["version"] is None and doc["meaning"] == ["stack(blue,red,green)"]
+    assert _tree(tmp_path) == before
+    bad = rpg("steer", str(task), "turn it into a spaceship", "--dry-run")
+    assert bad.returncode == 2 and "Traceback" not in bad.stderr and _tree(tmp_path) == before

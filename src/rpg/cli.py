@@ -175,6 +175,8 @@ def steer_cmd(
     gate: Annotated[list[str], typer.Option("--gate", help=GATE_HELP)] = [],  # noqa: B006
     as_json: Annotated[bool, typer.Option("--json", help="Print one JSON document.")] = False,
     author: Annotated[str | None, typer.Option("--author", help=AUTHOR_HELP)] = None,
+    dry_run: Annotated[bool, typer.Option("--dry-run", help="Read and classify the edit and check its task; "
+                                          "build and record nothing.")] = False,
 ) -> None:
     """Classify EDIT, pick the version it builds on, recompile and record a new version."""
     from rpg.steer import steer
@@ -182,7 +184,21 @@ def steer_cmd(
     model = model or os.environ.get("RPG_MODEL") or None
     with _reported_errors():
         r = steer(family, edit, seed, frozenset(disable), llm=make_llm_client(model) if replay is None else None,
-                  replay=replay, author=default_author(author), enabled=frozenset(gate))
+                  replay=replay, author=default_author(author), enabled=frozenset(gate), dry_run=dry_run)
+    if dry_run:
+        from rpg.schema.meaning import meaning
+
+        doc = {**r.to_json(), "goal": r.schema.goal_summary, "meaning": meaning(r.schema)}
+        if as_json:
+            print(json.dumps(doc, indent=2))
+        else:
+            ref = "none" if r.reference is None else f"v{r.reference}"
+            out.print(f"intent [bold]{r.intent}[/], reference {ref} (dry run: nothing built or recorded)", highlight=False)
+            for note in r.notes:
+                out.print(f"  {esc(note)}", highlight=False)
+            out.print(f"  instruction: {esc(r.instruction)}", highlight=False)
+            out.print(f"  goal: {esc(r.schema.goal_summary)}", highlight=False)
+        raise typer.Exit(EXIT_OK)
     if as_json:
         print(json.dumps(r.to_json(), indent=2))
     else:

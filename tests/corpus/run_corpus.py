@@ -95,7 +95,8 @@ STRANGER_SETS = {
     "stranger58": ("stranger58.yaml", "STRANGER set 58 (stranger58.yaml, transfer measure of the forty-fifth session; development material from the forty-sixth)"),
     "stranger59": ("stranger59.yaml", "STRANGER set 59 (stranger59.yaml, transfer measure of the forty-sixth session; development material from the forty-seventh)"),
     "stranger60": ("stranger60.yaml", "STRANGER set 60 (stranger60.yaml, transfer measure of the forty-seventh session; development material from the forty-eighth)"),
-    "stranger61": ("stranger61.yaml", "STRANGER set 61 (stranger61.yaml, written at the start of the forty-eighth session: aggregates only)"),
+    "stranger61": ("stranger61.yaml", "STRANGER set 61 (stranger61.yaml, transfer measure of the forty-eighth session; development material from the forty-ninth)"),
+    "stranger62": ("stranger62.yaml", "STRANGER set 62 (stranger62.yaml, written at the start of the forty-ninth session: aggregates only)"),
 }
 SPLITS = HERE / "splits.yaml"
 

@@ -100,7 +100,8 @@ DEVELOPMENT = {
     "stranger29": ("steer_stranger29.yaml", "STRANGER steering set 29 (steer_stranger29.yaml, transfer measure of the forty-fifth session; development material from the forty-sixth)"),
     "stranger30": ("steer_stranger30.yaml", "STRANGER steering set 30 (steer_stranger30.yaml, transfer measure of the forty-seventh session; development material from the forty-eighth)"),
     "stranger31": ("steer_stranger31.yaml", "STRANGER steering set 31 (steer_stranger31.yaml, written at the start of the forty-seventh session: aggregates only)"),
-    "stranger32": ("steer_stranger32.yaml", "STRANGER steering set 32 (steer_stranger32.yaml, written at the start of the forty-eighth session: aggregates only)"),
+    "stranger32": ("steer_stranger32.yaml", "STRANGER steering set 32 (steer_stranger32.yaml, transfer measure of the forty-eighth session; development material from the forty-ninth)"),
+    "stranger33": ("steer_stranger33.yaml", "STRANGER steering set 33 (steer_stranger33.yaml, written at the start of the forty-ninth session: aggregates only)"),
 }
 UNSEEN = HERE / "steer_unseen.yaml"
 SPLITS = HERE / "splits.yaml"

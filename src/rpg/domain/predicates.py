@@ -835,7 +835,7 @@ class Between(Predicate):
     phrases: ClassVar[str] = r"between"
     carried_by: ClassVar[tuple[str, ...]] = ("in_line",)
     phrase: ClassVar[str] = "between"
-    cue: ClassVar[str] = r"\b(?:between|middle)\b"
+    cue: ClassVar[str] = r"\b(?:between|middle)\b|\b(?:in|at)\s+the\s+cent(?:re|er)\b(?!\s+of\b)"  # "black in the centre" of a line
     object_fields: ClassVar[tuple[str, ...]] = ("a", "b", "c")
 
     def _evaluate(self, state):

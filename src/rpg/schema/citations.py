@@ -443,6 +443,20 @@ CITERS: dict[str, Callable[[Constraint, _Reading], list[str]]] = {
 """Constraint kind -> the mentions that demand it (empty: none does)."""
 
 
+def _goal_after_idle_start(schema: TaskSchema, text: str) -> list[str]:
+    """The goal's words of a text that says a start rho_0 already is ("Initially all cubes are scattered on the table.
+    Goal: ...": the initial-scene reader reads no stack there and the goal after it); empty otherwise."""
+    from rpg.schema.readers.initial import split
+
+    if schema.initial_state.structures:
+        return []
+    try:
+        scene = split(text)
+    except BadInput:
+        return []
+    return [scene.goal] if scene is not None and not scene.stacks and scene.goal else []
+
+
 def _reading(schema: TaskSchema, text: str) -> _Reading:
     from rpg.schema import lexicon
     from rpg.schema.accounting import UnaccountedMention, check_mentions
@@ -453,7 +467,7 @@ def _reading(schema: TaskSchema, text: str) -> _Reading:
         pattern, written = lexicon.START_COUNTED_TOWER_REWRITE  # "There's a two-block tower, orange under cyan.": as read
         text = pattern.sub(written, text)
     labelled = (m.group("body") for m in (lexicon.ID_LABEL_RE.match(text), lexicon.ID_WORDS_LABEL_RE.match(text)) if m)
-    for said in (text, *labelled):  # "Data-collection script, line 12: put ...": the text after a task's identifier, as the
+    for said in (text, *labelled, *_goal_after_idle_start(schema, text)):  # "Data-collection script, line 12: put ...": the text after a task's identifier, as the
         try:                        # parser reads it (its words had been unaccounted, the places left uncited)
             record = check_mentions(said, schema)
             break

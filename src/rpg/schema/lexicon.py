@@ -195,10 +195,19 @@ COUNT_WORD_RE = "|".join(w for w in NUMBER_WORDS if w not in ("single", "pair", 
 COLORS = sorted(set(PALETTE) | set(COLOR_ALIASES), key=len, reverse=True)
 COLOR_RE = "|".join(COLORS)
 
-INITIALLY_RE = (rf"\binitially\b(?!\s+(?:(?:the\s+)?(?:{COLOR_RE})\s+(?:block\s+|cube\s+)?(?:is\s+)?)?(?:stacked\s+)?"
+INITIALLY_RE = (rf"\binitially\b(?!\s+(?:(?:the\s+)?(?:{COLOR_RE})\s+(?:block\s+|cube\s+)?(?:is\s+|sits\s+|rests\s+|stands\s+|lies\s+)?)?(?:stacked\s+)?"
                 rf"(?:on\s+top\s+of|on)\s+(?:the\s+)?(?:{COLOR_RE})\b(?!\s+(?:goal\s+|target\s+)?patch))")
 """"Initially" of any starting state but one cube stacked on another ("yellow is initially on red",
 "initially yellow is stacked on red": the initial states the readers build)."""
+
+CUBE_STARTS_BESIDE_RE = (
+    rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:starts?|begins?|started|began)(?:\s+(?:out|off))?\s+(?:directly\s+|right\s+|just\s+)?"
+    r"(?:behind|in\s+front\s+of|next\s+to|beside|left\s+of|right\s+of|to\s+the\s+(?:left|right)\s+of|between|under|underneath|beneath"
+    r"|below|above|near|far\s+from|inside|in\s+the\s+(?:[a-z]+\s+)?(?:corner|region|half|area|zone|middle|cent(?:er|re))"
+    r"|on\s+the\s+(?:[a-z]+\s+)?(?:patch|side|edge|half))\b")
+"""A cube said to start beside, behind or under another, or somewhere on the table ("the white cube starts behind the brown
+cube"): a starting state rpg does not build (only one cube stacked on another); it had been read as the goal, silently,
+and a goal said after it dropped."""
 
 START_TIME_RE = (r"^(?!.*\b(?:line|row|sequence|word|spell\w*|order\w*|tower|stack|column|list)\b).*?"
                  r"\b(?P<w>at\s+the\s+(?:beginning|start))\b")
@@ -1087,6 +1096,58 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                             "once, at the end of one episode; say only where the cubes must end up"),
     ("time", INITIALLY_RE, "is about the episode's starting state, which rpg builds only as one cube stacked on another "
                            "(\"yellow starts stacked on red\"); say only where the cubes must end up"),
+    ("time", CUBE_STARTS_BESIDE_RE, "is about the episode's starting state, which rpg builds only as one cube stacked on "
+                                    "another (\"yellow starts stacked on red\"); say only where the cubes must end up"),
+    # a hostile helper's (forty-ninth session): a start, a past, a later motion or a stay said around the goal's words,
+    # which had been dropped (the goal read alone, or the start read as the goal, or the wrong cube sent to a patch)
+    ("time", rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:starts?|begins?|started|began|spawns?|originates?)(?:\s+(?:out|off))?\s+"
+             r"(?:(?:right|just|directly|exactly)\s+on|at\s+the\s+(?!(?:bottom|top|base|end|(?:left|right|front|back)\s+end)\b))"
+             rf"|\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:spawns?|originates?)\b"
+             r"|'s\s+(?:starting|initial|start|original)\s+(?:place|position|spot|location)|\b(?:starting|initial|start|original)\s+"
+             r"(?:place|position|spot|location)\s+of\b|\bin\s+(?:the|its|their)\s+(?:starting|initial|start|original)\s+(?:place|position"
+             r"|spot|location)s?\b|\bset\s*-?\s*up\s+with\b|\bbefore\s+(?:the\s+(?:episode|start|task|run|trial)|we\s+(?:start|begin)|starting|beginning)\b"
+             r"|\b(?:cube|block|one)\s*,?\s+(?:starting|beginning)\s+(?:on|behind|next\s+to|beside|under|underneath|beneath|below|above"
+             r"|in\s+front\s+of|to\s+the\s+(?:left|right)\s+of|left\s+of|right\s+of)\b"
+             r"|\b(?:move|take|bring|carry|slide|push|lift|shift|get)\s+the\s+[a-z]+\s+(?:cube|block|one)\s*,?\s+(?:which\s+|that\s+)?"
+             r"(?:is\s+|sits\s+|rests\s+|lies\s+|stands\s+|sitting\s+|resting\s+|lying\s+|standing\s+)(?:currently\s+|now\s+|already\s+)?"
+             r"(?:on|behind|next\s+to|beside|under|underneath|beneath|below|above|in\s+front\s+of|to\s+the\s+(?:left|right)\s+of|left\s+of"
+             r"|right\s+of)\b"
+             r"|\bfrom\s+(?:behind|beside|next\s+to|under(?:neath)?|beneath|below|in\s+front\s+of)\b"
+             r"|\bfor\s+now\b|\bas\s+(?:it|they)\s+(?:is|are)\s+now\b"
+             r"|\b(?:is|sits|lies|rests|stands)\s+(?:on|behind|next\s+to|beside|under|in\s+front\s+of|to\s+the\s+\w+\s+of)\b[^.;]{0,60}?"
+             r"(?:\bbut|\band|,)\s+(?:it\s+)?(?:should|must|needs?\s+to|has\s+to|belongs|ought)\b"
+             r"|\b(?:before|after)\s+(?:going|sitting|being|moving|resting|lying|standing)\b"
+             r"|\b(?:used\s+to|(?:is|are|was|were)\s+used\s+to|had\s+to|(?:was|were)\s+going\s+to|would\s+have|could\s+have)\b"
+             r"|\bthen\s+(?:move|lift|pick|take|carry|remove|raise|hold|knock|push)\s+(?:it|them|that|this)(?:\s+(?:up|away|off|out|on))?"
+             r"\s*(?:[.!;,]|$)|\bthen\s+(?:moves?|carr(?:y|ies)|go(?:es)?|carry)\s+on\b"
+             r"|\bfor\s+(?:a|one|just\s+a|only\s+a)\s+(?:second|sec|spell|bit|while|minute|min|jiffy|tick|instant|moment|beat)\b",
+     "is about another time than the end of this episode (where a cube starts, was, or goes after): a task's goal is "
+     "checked once, at the end of one episode, from a scattered start (rpg builds a start only as one cube stacked on "
+     "another); say only where the cubes must end up"),
+    ("action", r"\b(?:likes?|loves?|prefers?|enjoys?|hates?|dislikes?|wants?|wanted|wishes|wished|hopes?|longs?|yearns?)\s+(?:to\s+)?"
+               r"(?:be|sit|sitting|rest|resting|stand|standing|lie|lying|stay|staying|go|going)\b",
+     "gives a cube a liking or a wish, which a goal does not have: say where the cube must end up"),
+    ("quantity", rf"[\u00bc-\u00be\u2150-\u215e]|(?<![\w.])\.\d|\b\d+\.(?=\s+(?:(?:{COLOR_RE})\s+)?(?:cubes?|blocks?)\b)|\d\s*[+*]\s*\d"
+                 r"|\b[a-z0-9]+-plus\b|[~\u2248\u2265\u2264<>]\s*\d|\b(?:one|two|three|four|five|six|\d+)\s*/\s*(?:one|two|three|four|five|six"
+                 r"|\d+)\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b|\d\s*[\u2012-\u2015]\s*\d|\bx\d+\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b|\b\d+e\d+\b|\b0[bx][0-9a-f]+\b"
+                 r"|\b(?:cube|block|one|it|them)\s+(?:one|two|three|four|five|\d+)\s+(?:cubes?|blocks?)\s+(?:to\s+the\s+)?(?:left|right|above"
+                 r"|below|behind|in\s+front|away|apart|over|further|farther)\b"
+                 r"|\b(?:a|one|two|three|four|five|\d+)\s+(?:cube\s+|block\s+)?(?:widths?|lengths?|spaces?)\b"
+                 r"|\b(?:far|high|way|well)\s+(?:above|below|over|under)\b",
+     "is a count or a distance in a notation rpg does not read (a fraction, a sum, a bound, a number of cube widths): a "
+     "task places whole cubes, and its relations are qualitative; say how many cubes and where, in words"),
+    ("quantity", rf"\ball\s+(?:{COLOR_RE}|the\s+same(?:\s+colou?r)?)\s+(?:but|except(?:\s+for)?)\s+(?:one|two|three|\d+)\b"
+                 r"|\b(?:of|in)\s+(?:two|three|four|five|\d+)\s+colou?rs\b|\bmatching\s+(?:cubes|blocks)\b",
+     "says how many colours a group has, or that all but some share one, without saying which cube has which: name each "
+     "cube's colour (e.g. \"four red cubes and one blue cube\")"),
+    ("contradiction", r"\bactually\b[^.;]{0,15}?\b(?:one|two|three|four|five|six|seven|eight|nine|ten|\d+)(?:\s+(?:cubes?|blocks?))?\s*(?:[.!;,]|$)|\b(?:one|two|three|four"
+                      r"|five|six|seven|eight|nine|ten|\d+)\s*,?\s+actually\b|(?:^|[.;!]\s*)make\s+it\s+(?:one|two|three|four|five|six"
+                      r"|seven|eight|nine|ten|\d+)\s*[.!]?\s*$",
+     "corrects a count said before it: say the one count the task should have"),
+    ("shape", r"\bvertical(?:ly)?\s+(?:row|line)\b(?![^.;]*\b(?:front|back)\b)|\b(?:row|line|between|either\s+side|each\s+side)\b[^.;]*\bvertical(?:ly)?\b"
+              r"|\babove\s+and\s+below\b",
+     "puts a row or a between upright, which rpg does not build: a row lies on the table; cubes one above another are a "
+     "tower (say its order from the bottom)"),
     ("contradiction", BUT_CORRECTION_RE,
      "may correct what was said before it or add to it: one of the two end states; say the one the task should have"),
     ("reference", VIEWPOINT_RE, VIEWPOINT_WHY),
@@ -1165,6 +1226,11 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
     # "put the red cube on the blue patch and all other cubes on the green patch": cubes nobody named (made up)
     ("quantity", r"\b(?:all|every|each)\s+(?:the\s+)?other\s+(?:cubes?|blocks?)\b",
      "asks for every other cube of the scene, whose count and colours the instruction does not say: name the cubes"),
+    # "Stack 2.5 orange cubes", "one and a half blocks", "half a cube": a count that is not whole (5 cubes had been made of
+    # "2.5", silently)
+    ("quantity", r"(?<![\d.])\d+[.,]\d+\s*-?\s*(?:[a-z]+\s+){0,2}(?:cubes?|blocks?)\b|\b(?:one|two|three|four|five|\d+)\s+and\s+an?\s+"
+                 r"half\s+(?:[a-z]+\s+)?(?:cubes?|blocks?)\b|\b(?:half|a\s+third|a\s+quarter)\s+(?:of\s+)?an?\s+(?:[a-z]+\s+)?(?:cube|block)\b",
+     "is a count that is not a whole number (\"2.5 cubes\", \"half a cube\"): a task places whole cubes; say how many"),
     ("quantity", r"\b(?:minus|negative)\s+(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b|\bzero\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b",
      "is a quantity the domain cannot hold (a count below one): a task places whole cubes, one or more; say how many cubes"),
     ("contradiction", r"\b(?:on|onto|on\s+top\s+of|atop|under|below|beneath|next\s+to|beside|left\s+of|right\s+of|behind|in\s+front\s+of)"
@@ -1617,12 +1683,15 @@ both hands", "with the Franka arm", "using the UR5 robot"): a task's goal says w
 up, whichever arm, hand or robot takes them there, so the words are dropped (and listed as
 dropped: :func:`rpg.schema.reading.normalize_words`)."""
 
-POSTURE_RE = re.compile(r"\b(?:sitting|resting|lying|laying|sits|rests|lies|sit|rest|lie|located|positioned|seated|perched)\s+"
+POSTURE_RE = re.compile(r"\b(?:sitting|resting|lying|laying|sits|rests|lies|sit|rest|lie|located|positioned|seated|perched"
+                        r"|lands|landed|settles|settled|balances|balanced|balancing|touch(?:es|ed)?\s+down|comes\s+down"
+                        r"|came\s+down|comes\s+to\s+rest|came\s+to\s+rest)\s+"
                         r"(?=(?:on|onto|upon|atop|in|inside|within|at|next|beside|behind|under|below|beneath|underneath|above|"
                         r"between|near|by|to|directly|right|just|exactly)\b)")
 """A posture verb before a place ("the green cube sitting on top of the yellow cube", "so it
-is resting on the patch"): every cube rests on a face, so only the place says anything; the
-verb is dropped (:func:`rpg.schema.reading.normalize`)."""
+is resting on the patch"), or one of coming to rest there ("the red cube touches down on top of
+the blue cube", "lands on", "settles on", "balances on"): every cube rests on a face, so only
+the place says anything; the verb is dropped (:func:`rpg.schema.reading.normalize`)."""
 
 PILE_ON_RE = re.compile(r"\b(?:pile|heap)(?:\s+up)?\s+(?=[^.;!?]*?\b(?:on|onto|upon|atop)\s+(?:top\s+of\s+)?"
                         r"(?:each\s+other|one\s+another|(?:the|a|an)\s+(?:[a-z]+\s+)?(?:block|cube|one)\b))")
@@ -2261,7 +2330,7 @@ NOT_IMPORTANT_RE = re.compile(r"\b(is|are)\s+(?:not\s+(?:important|relevant)|of\
 :data:`FREE_CHOICE_RE` read (the "not" had been refused as a negation)."""
 
 ANY_ORDER_RE = re.compile(
-    r"(?:\s*[,;(\u2013\u2014-]\s*|\s+)(?:(?:in\s+)?(?:any|whatever|no\s+particular|either)\s+order(?:\s+(?:(?:is|are)\s+(?:fine|ok(?:ay)?|good|allowed)"
+    r"(?:\s*[,;(\u2013\u2014-]\s*|\s+)(?:(?:in\s+)?(?:any|whatever|whichever|no\s+particular|either|random|some)\s+(?:order|sequence)(?:\s+(?:(?:is|are)\s+(?:fine|ok(?:ay)?|good|allowed)"
     r"|works(?:\s+for\s+you)?|goes|will\s+do|suits\s+you|you\s+see\s+fit"
     r"|(?:(?:that|which)\s+)?(?:sounds|looks|seems|feels)\s+(?:best|right|good|nicest)(?:\s+to\s+you)?))?"
     r"|(?:the\s+)?order\s+(?:does\s*n[o']?t|doesn't|is\s*n[o']?t|isn't)\s+(?:matter|important)|regardless\s+of\s+(?:the\s+)?order"
@@ -3615,9 +3684,16 @@ LINE_ROLE_RE = re.compile(rf"\b(?:between\s+(?:the\s+)?(?:(?:{COLOR_RE})\s+(?:an
                           rf"|ends?(?!\s+up\b)|revers\w*|(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:is\s+|goes\s+|sits\s+)?in\s+the\s+middle"
                           r"|leftmost|rightmost|frontmost|backmost|ordered"
                           rf"|(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:first|last)|(?:the\s+)?(?:first|last)\s+(?:is|should|must|one|cube|block)"
-                          r"|(?:in|that|this|the\s+same|the\s+listed|the\s+given)\s+order(?!\s+to\b))\b")
+                          r"|(?:in|that|this|the\s+same|the\s+listed|the\s+given)\s+order(?!\s+to\b)"
+                          rf"|(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:starts?|begins?|opens?|leads?|heads?|closes?|finishes?)\s+"
+                          rf"(?:off\s+)?(?:the\s+)?(?:row|line|sequence)|,\s*(?:and\s+)?then\s+(?:the\s+)?(?:{COLOR_RE})"
+                          rf"|(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s*,?\s+(?:and\s+)?then\s+(?:the\s+)?(?:{COLOR_RE})"
+                          r"|followed\s+by|sequential\w*|in\s+sequence|respectively|as\s+(?:written|listed|given|said|named)"
+                          rf"|(?:{COLOR_RE})\s*(?:->|>|\u2192)|beginning\s+with|at\s+the\s+start|(?:second|third|fourth|fifth)\s+(?:place|spot|position)"
+                          rf"|in\s+(?:colou?r|alphabetical|numerical|rainbow|size)\s+order|from\s+(?:{COLOR_RE})\s+to\s+(?:{COLOR_RE})"
+                          rf"|(?:{COLOR_RE})-(?:{COLOR_RE})|sorted)\b")
 """Words that give a cube a place in a line ("with blue at one end", "the red cube between the other two", "in reverse
-order"): where the task's line has no order, nobody read them (refused: :func:`rpg.schema.accounting.unaccounted`)."""
+order", "red starts the row, then blue"): where the task's line has no order, nobody read them (refused: :func:`rpg.schema.accounting.unaccounted`)."""
 
 LINE_END_SAID_RE = re.compile(
     rf"(?i)(?<![\w'-])(?:the\s+)?(?P<c>{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:(?:must|should|has\s+to|needs\s+to|is\s+to|will)\s+"
@@ -5876,7 +5952,7 @@ LOOSE_PHRASE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
      lambda m: f"{m.group('k')} {m.group('b')} {m.group('n2')} and one {m.group('a')} {m.group('n1')}"),
     # "Row of three: yellow in the middle, red and blue on either side of it": after a middle said, the two cubes beside it are
     # the row's ends ("either" had been an unknown word)
-    (re.compile(rf"\b(?P<a>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+and\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?)\s+"
+    (re.compile(rf"\b(?P<a>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+and\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?|ones?))?)\s+"
                 rf"(?:(?:go|are|sit|stand)\s+)?on\s+(?:either|each|both)\s+sides?(?:\s+of\s+(?:it|the\s+(?P<x>{COLOR_RE})(?:\s+(?:cube|block|one))?))?"
                 r"(?=\s*(?:[.;!]|$))"),
      lambda m: f"{m.group('a')} at the ends" if (middle := re.search(
@@ -6124,6 +6200,11 @@ FAR_APART_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
 as the reader's "... each other", and hyphenated sizes ("3-block")."""
 
 RELATION_SIDE_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
+    # "the red cube to the left and the blue cube to the right of the green cube": both sides of the cube said last (the
+    # first had been read as the table's left region, silently)
+    (re.compile(rf"\bto\s+the\s+(?P<a>left|right)\s+and\s+(?P<b>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+to\s+the\s+(?:left|right)"
+                rf"\s+of\s+(?P<c>(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?))"),
+     lambda m: f"to the {m.group('a')} of {m.group('c')} and {m.group('b')}"),
     # "at top of" ("to the top of the table" is its far side, read below)
     (re.compile(r"\b(?:to|onto)\s+the\s+top\s+of\b(?!\s+the\s+(?:table|workspace|board)\b)|\b(?:at|to|on)\s+top\s+of\b"),
      "on top of"),

@@ -2969,8 +2969,8 @@ STRUCTURE_PHRASES: tuple[Rewrite, ...] = tuple(Rewrite(*r) for r in (
     # "a 4-high tower of yellow blocks", "a tower of height 4 made only of green cubes": the colour
     # after the noun is the whole tower's too
     (re.compile(rf"\b({TOWER_NOUNS})\s+of\s+(\d+)\s+(?:blocks|cubes)\s+(?:(?:made|built)\s+)?(?:(?:only|entirely|solely|just|all|purely)\s+)?"
-                rf"(?:out\s+)?of\s+({COLOR_RE})(?:\s+(?:blocks|cubes|bricks))?\b"),
-     r"\1 of \2 \3 blocks"),
+                rf"(?:out\s+)?of\s+({COLOR_RE})(?:\s+(?:blocks|cubes|bricks))?\b(?!\s*(?:,|and\b|&|then\b)\s*(?:the\s+)?(?:{COLOR_RE})\b)"),
+     r"\1 of \2 \3 blocks"),  # (not before a list: "a 3-cube tower of red, green and blue" is one cube of each)
     # "a tower with 5 cubes", "tall tower, six cubes, all of them red", "a tower out of 4 cubes": a tower of that many
     (re.compile(rf"\b({TOWER_NOUNS})\s*(?:,|with|using|from|out\s+of|made\s+(?:of|from|with|out\s+of)|having|containing|consisting\s+of)"
                 r"\s+(\d+)\s+(blocks|cubes|bricks)\b"), r"\1 of \2 \3"),

@@ -20,6 +20,8 @@ from __future__ import annotations
 
 import itertools
 import re
+import shutil
+import tempfile
 from collections import Counter
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -124,6 +126,7 @@ class SteerResult:
     notes: list[str] = field(default_factory=list)
     compile: CompileResult | None = None
     parameters: dict = field(default_factory=dict)
+    schema: TaskSchema | None = None  # the task of the version made (or, in a dry run, that would be made)
 
     def to_json(self) -> dict:
         doc = {"family": str(self.family), "edit": self.edit, "intent": self.intent,
@@ -1703,10 +1706,14 @@ def llm_edit_schema(edit: str, intent: str, reference: TaskSchema, client) -> Ta
 
 def steer(family: str | Path, edit: str | None, seed: int | None = None, disabled: frozenset[str] = frozenset(),
           llm=None, replay: str | Path | None = None, author: str | None = None,
-          enabled: frozenset[str] = frozenset()) -> SteerResult:
+          enabled: frozenset[str] = frozenset(), dry_run: bool = False) -> SteerResult:
     """Apply an edit to a family (a compiled task becomes v0 of a new family first).
 
     ``enabled`` names optional gates the new version must pass too (e.g. ``{"solvable"}``).
+
+    With ``dry_run`` the edit is read, classified and its task checked for feasibility as it would be, and nothing
+    is built or written: the result has the intent, reference, instruction and ``schema`` of the version it would
+    record, ``version`` None and ``valid`` False (a compiled task that is not yet a family is previewed on a copy).
 
     With ``llm`` (an :class:`rpg.schema.llm.LLMClient`) the model classifies the edit and
     writes the new schema; its exchanges are recorded in the version's ``llm_log.jsonl``,
@@ -1725,6 +1732,10 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
         edit, llm = header["instruction"], LLMClient(header["model"], replay=exchanges)
     if not edit or not edit.strip():
         raise SteerError("the edit is empty; say what to change, e.g. \"add a green block on top\"")
+    if not dry_run:
+        from rpg.validate.sandbox import prepare
+
+        prepare()  # the new version's validation child starts up while the edit is read
     from rpg.compiler import check_text
     from rpg.validate.gates import check_gate_names, check_optional_gates
 
@@ -1733,6 +1744,15 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
     disabled = check_gate_names(disabled)
     enabled = check_optional_gates(enabled)
     path = Path(family)
+    if dry_run and not is_family(path):
+        load_artifact(path)  # (not a task: refused as steer refuses it)
+        with tempfile.TemporaryDirectory(prefix="rpg-preview-") as tmp:
+            copy = Path(tmp) / path.name
+            shutil.copytree(path, copy)
+            create_family(copy)
+            result = steer(copy, edit, seed, disabled, llm=llm, author=author, enabled=enabled, dry_run=True)
+        result.family = path
+        return result
     if not is_family(path):
         from filelock import FileLock
 
@@ -1752,7 +1772,8 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
     fam = Family(path)
     with fam.lock():
         hist = fam.load()
-        fam.remove_orphans(hist)
+        if not dry_run:
+            fam.remove_orphans(hist)
         extra, backend = None, "builtin"
         said, label = edit, VARIANT_LABEL_RE.match(edit)  # the edit as said is what the version records
         if label and int(label.group("n")) >= len(hist.versions) and edit[label.end():].strip():
@@ -1784,7 +1805,9 @@ def steer(family: str | Path, edit: str | None, seed: int | None = None, disable
         if seed is None:
             seed = int(load_artifact(fam.version_dir(hist.head))[1].get("provenance", {}).get("seed", 0))
         result = SteerResult(path, said, intent, reference, None, False, instruction=instruction, notes=notes,
-                             parameters=parameters)
+                             parameters=parameters, schema=schema)
+        if dry_run:
+            return result
         digest = task_hash(schema)
         same = next((v for v in hist.versions if (v.task_hash or v.code_hash) == digest), None)
         if same is not None:

@@ -12,7 +12,6 @@ cubes stacked 100/100.
 from __future__ import annotations
 
 import daqp
-import mink
 import mujoco
 import numpy as np
 
@@ -69,6 +68,8 @@ class Panda(Embodiment):
     INTERPOLATION_POINTS = C.JOINT_INTERPOLATION_POINTS
 
     def __init__(self, visual: str = "decimated") -> None:
+        import mink  # (here: the state-only and floating-gripper paths never pay its import, a quarter of a second)
+
         super().__init__(visual)
         self.ik_model = _ik_model()
         self.configuration = mink.Configuration(self.ik_model)
@@ -132,6 +133,8 @@ class Panda(Embodiment):
         joint limits as bounds (``mink.solve_ik`` spent half its time re-checking limits and in
         qpsolvers' conversions).
         """
+        import mink
+
         q = np.clip(self.data.qpos[self.arm_qpos], self.joint_low + 1e-6, self.joint_high - 1e-6)
         self.configuration.update(q)
         self.tcp_task.set_target(mink.SE3.from_rotation_and_translation(mink.SO3(target.quat), target.pos))

@@ -181,7 +181,7 @@ ON_TABLE_GOAL_RE = re.compile(
     rf"(?:(?:put|place|move|set|lay|take|bring|get|lower|return)\s+)?{_CUBE.format(g='c')}\s+(?:(?:must|should|has\s+to|"
     r"needs\s+to|will|to)\s+)?(?:(?:be|end\s+up|ends\s+up|finish(?:es)?|stay|stays|go|goes|sit|sits|sitting|lie|lies|lying|rest|rests"
     r"|resting|standing|placed|is|back|down"
-    rf"|(?:off|from)\s+(?:of\s+)?(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?(?:\s+and)?)\s+)*(?:on|onto)\s+the\s+table\s*[.!]?$")
+    rf"|(?:off|from)\s+(?:of\s+)?(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cube|block|one))?(?:\s+and)?)\s+)*(?:on|onto|to)\s+the\s+table\s*[.!]?$")
 """A goal that only sends a cube to the table ("the pink cube must end up on the table", "put
 red on the table"): read here, where the start stacks that cube (alone it asks nothing)."""
 
@@ -189,7 +189,7 @@ _LISTED = rf"(?:the\s+)?(?:(?:letter|digit|number)\s+)?(?:block\s+|cube\s+)?{_NA
 ON_TABLE_LIST_GOAL_RE = re.compile(
     rf"(?i)^\s*(?:(?:put|place|move|set|lay|take|bring|get|lower|return)\s+)?(?:both\s+)?(?P<list>{_LISTED}(?:\s*,\s*{_LISTED})*"
     rf"\s*,?\s+(?:and|&)\s+{_LISTED})(?:\s+(?:cubes|blocks|ones))?\s+(?:(?:must|should|have\s+to|need\s+to|will)\s+)?"
-    r"(?:(?:be|end\s+up|finish|stay|go|sit|lie|rest|placed|are|back|down|both|all)\s+)*(?:on|onto)\s+the\s+table\s*[.!]?$")
+    r"(?:(?:be|end\s+up|finish|stay|go|sit|lie|rest|placed|are|back|down|both|all)\s+)*(?:on|onto|to)\s+the\s+table\s*[.!]?$")
 """A goal that sends several cubes the start stacks to the table, listed ("put the yellow and the cyan blocks down on the
 table", "red and blue must end up on the table"): each listed cube on the table."""
 
