@@ -9066,3 +9066,27 @@ def test_forty_ninth_session_both_sides_of_a_cube_said_last(text, expected):
                                   "stack red, green and blue in some order"])
 def test_forty_ninth_session_a_random_order_is_no_order(text):
     assert [type(p).__name__ for p in check_feasibility(parse(text)).goal_predicate().walk()] == ["UnorderedStack"]
+
+
+@pytest.mark.parametrize("text", [
+    # a second hostile helper's (forty-ninth session): a relation after a listed structure (its last cube had taken it)
+    "Build a tower of red and blue behind green.", "Stack red and blue behind green.",
+    "Make a row of red, blue and yellow next to green.",
+    # structures nobody built (made up)
+    "Put red on the blue circle.", "Put red in the circle.", "Make a tower as tall as the blue tower.",
+    # an exclusion, a colour only or another colour, both cubes on one, a distance
+    "Put a cube other than red on blue.", "Build a tower of three cubes. Red and blue only.",
+    "Put both red and green on blue.", "Stack two red cubes and a cube of another colour.",
+    "Put red two cubes left of blue.", "Put red left of blue by two cubes.",
+])
+def test_forty_ninth_session_what_a_second_hostile_helper_found_is_refused(text):
+    with pytest.raises(BadInput):
+        check_feasibility(parse(text))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Put the red cube on the blue one and a green one next to it", ["next_to(blue,green)", "stack(blue,red)"]),
+    ("Build a 2x2 grid of red cubes", ["grid(2x2:red,red,red,red)"]),
+])
+def test_forty_ninth_session_a_cube_called_one_and_a_counted_grid_still_read(text, expected):
+    assert meaning(check_feasibility(parse(text))) == expected

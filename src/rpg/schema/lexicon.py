@@ -1124,10 +1124,34 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "is about another time than the end of this episode (where a cube starts, was, or goes after): a task's goal is "
      "checked once, at the end of one episode, from a scattered start (rpg builds a start only as one cube stacked on "
      "another); say only where the cubes must end up"),
+    # a second hostile helper's (forty-ninth session): a relation after a listed structure (its last cube had taken it),
+    # a structure "like" another said by "one", a structure nobody built, an exclusion, a colour nobody named, a digit
+    # after a colour, a superlative of distance
+    ("reference", rf"\b(?:tower|stack|column|row|line|pile)\s+of\s+(?:the\s+)?(?:{COLOR_RE})(?:\s*,\s*(?:the\s+)?(?:{COLOR_RE}))*\s*,?\s+(?:and|&)\s+"
+                  rf"(?:the\s+)?(?:{COLOR_RE})\s+(?:behind|in\s+front\s+of|left\s+of|right\s+of|to\s+the\s+(?:left|right)\s+of"
+                  rf"|next\s+to|beside|near|between)\s+(?:the\s+)?(?:{COLOR_RE})\b"
+                  rf"|\bstack\s+(?:the\s+)?(?:{COLOR_RE})(?:\s*,\s*(?:the\s+)?(?:{COLOR_RE}))*\s*,?\s+(?:and|&)\s+(?:the\s+)?(?:{COLOR_RE})"
+                  rf"\s+(?:behind|in\s+front\s+of|left\s+of|right\s+of|to\s+the\s+(?:left|right)\s+of|next\s+to|beside"
+                  rf"|near|between)\s+(?:the\s+)?(?:{COLOR_RE})\b",
+     "relates a listed structure to a cube, which could be said of its last cube or of the whole structure: say it of the "
+     "structure (e.g. \"build a tower of red and blue, and put the tower behind the green cube\")"),
+    ("reference", rf"\b(?:on|onto|in|into|next\s+to|beside|behind|near|at\s+the\s+end\s+of)\s+(?:the\s+)?(?:{COLOR_RE})\s+(?:circle|pyramid|wall|grid)\b"
+                  r"|\b(?:on|onto|in|into)\s+the\s+(?:circle|pyramid|wall|grid)\s*(?:[.!;,]|$)|\bas\s+(?:tall|high|wide|big)\s+as\b",
+     "refers to a structure nobody described (\"the blue circle\", \"as tall as the tower\"): describe each structure with "
+     "its cubes (e.g. \"a circle of six blue cubes\")"),
+    ("negation", r"\bother\s+than\b|(?<!\bfar\s)\bapart\s+from\b|\banything\s+but\b",
+     "excludes something (\"other than\", \"apart from\"): a task's goal says which cubes go where; name them"),
+    ("quantity", rf"(?<!\bbe\s)\b(?:{COLOR_RE})\s+and\s+(?:{COLOR_RE})\s+only\b|\b(?:of|in)\s+(?:another|some\s+other|any\s+other)\s+colou?r\b"
+                 rf"|\bboth\s+(?:the\s+)?(?:{COLOR_RE})\s+and\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:cubes?|blocks?))?\s+(?:on|onto|atop|on\s+top\s+of)\b"
+                 r"|\bby\s+(?:one|two|three|four|\d+)\s+(?:cubes?|blocks?)\b"
+                 rf"|\b(?:{COLOR_RE})\s+(?:one|two|three|four|five)\s+(?:cubes?|blocks?)\s+(?:to\s+the\s+)?(?:left|right|above|below|behind|in\s+front"
+                 r"|away|apart)\b",
+     "says a colour only, another colour, both cubes on one, or a distance rpg does not read: name each cube and where it "
+     "goes"),
     ("action", r"\b(?:likes?|loves?|prefers?|enjoys?|hates?|dislikes?|wants?|wanted|wishes|wished|hopes?|longs?|yearns?)\s+(?:to\s+)?"
                r"(?:be|sit|sitting|rest|resting|stand|standing|lie|lying|stay|staying|go|going)\b",
      "gives a cube a liking or a wish, which a goal does not have: say where the cube must end up"),
-    ("quantity", rf"[\u00bc-\u00be\u2150-\u215e]|(?<![\w.])\.\d|\b\d+\.(?=\s+(?:(?:{COLOR_RE})\s+)?(?:cubes?|blocks?)\b)|\d\s*[+*]\s*\d"
+    ("quantity", rf"[\u00bc-\u00be\u2150-\u215e]|(?<![\w.])\.\d|\b\d+\.(?=\s+(?:(?:{COLOR_RE})\s+)?(?:cubes?|blocks?)\b)|\d\s*[+*]\s*\d+\s+(?:[a-z]+\s+)?(?:cubes?|blocks?)\b"
                  r"|\b[a-z0-9]+-plus\b|[~\u2248\u2265\u2264<>]\s*\d|\b(?:one|two|three|four|five|six|\d+)\s*/\s*(?:one|two|three|four|five|six"
                  r"|\d+)\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b|\d\s*[\u2012-\u2015]\s*\d|\bx\d+\s+(?:[a-z]+\s+)?(?:cubes|blocks)\b|\b\d+e\d+\b|\b0[bx][0-9a-f]+\b"
                  r"|\b(?:cube|block|one|it|them)\s+(?:one|two|three|four|five|\d+)\s+(?:cubes?|blocks?)\s+(?:to\s+the\s+)?(?:left|right|above"
