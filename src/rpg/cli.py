@@ -185,32 +185,28 @@ def steer_cmd(
     with _reported_errors():
         r = steer(family, edit, seed, frozenset(disable), llm=make_llm_client(model) if replay is None else None,
                   replay=replay, author=default_author(author), enabled=frozenset(gate), dry_run=dry_run)
+    doc = r.to_json()
     if dry_run:
         from rpg.schema.meaning import meaning
 
-        doc = {**r.to_json(), "goal": r.schema.goal_summary, "meaning": meaning(r.schema)}
-        if as_json:
-            print(json.dumps(doc, indent=2))
-        else:
-            ref = "none" if r.reference is None else f"v{r.reference}"
-            out.print(f"intent [bold]{r.intent}[/], reference {ref} (dry run: nothing built or recorded)", highlight=False)
-            for note in r.notes:
-                out.print(f"  {esc(note)}", highlight=False)
-            out.print(f"  instruction: {esc(r.instruction)}", highlight=False)
-            out.print(f"  goal: {esc(r.schema.goal_summary)}", highlight=False)
-        raise typer.Exit(EXIT_OK)
+        doc.update(goal=r.schema.goal_summary, meaning=meaning(r.schema))
     if as_json:
-        print(json.dumps(r.to_json(), indent=2))
+        print(json.dumps(doc, indent=2))
     else:
         ref = "none" if r.reference is None else f"v{r.reference}"
-        out.print(f"intent [bold]{r.intent}[/], reference {ref}", highlight=False)
+        dry = " (dry run: nothing built or recorded)" if dry_run else ""
+        out.print(f"intent [bold]{r.intent}[/], reference {ref}{dry}", highlight=False)
         for note in r.notes:
             out.print(f"  {esc(note)}", highlight=False)
         out.print(f"  instruction: {esc(r.instruction)}", highlight=False)
+        if dry_run:
+            out.print(f"  goal: {esc(r.schema.goal_summary)}", highlight=False)
         if r.compile is not None:
             _print_compile(r.compile)
         if r.valid:
             out.print(f"[green]{'reused' if r.reused else 'recorded'}[/] v{r.version} in {r.family}", highlight=False)
+    if dry_run:
+        raise typer.Exit(EXIT_OK)
     raise typer.Exit(EXIT_OK if r.valid else EXIT_INVALID)
 
 
