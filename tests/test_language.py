@@ -9090,3 +9090,15 @@ def test_forty_ninth_session_what_a_second_hostile_helper_found_is_refused(text)
 ])
 def test_forty_ninth_session_a_cube_called_one_and_a_counted_grid_still_read(text, expected):
     assert meaning(check_feasibility(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a row in one sentence and a cube on a patch in the next: the patch is the cube's (the row had been put on it, and
+    # refused as too wide for the patch)
+    ("Line up the red and green cubes. Put the yellow cube on the blue patch.", ["line(green,red)", "on_patch(yellow,patch:blue)"]),
+    ("Line up the red and green cubes, and put the yellow cube on the blue patch.",
+     ["line(green,red)", "on_patch(yellow,patch:blue)"]),
+    ("line up two blue cubes on the red patch", ["line(blue,blue)", "on_patch(blue,blue,patch:red)"]),  # one clause: its row's
+])
+def test_forty_ninth_session_a_patch_said_after_a_row_is_the_next_clause_cube_s(text, expected):
+    assert meaning(check_feasibility(parse(text))) == expected

@@ -301,10 +301,11 @@ def recognize_structure_in_region(f: Features, b: Builder) -> bool:
     return True
 
 
-ON_PATCH_PART_RE = re.compile(rf"^(?P<head>[^@]+?)\s+(?:on|onto|on\s+top\s+of|atop)\s+the\s+(?P<c>{COLOR_RE})\s+(?:goal\s+|target\s+)?patch"
-                              r"[\s.!]*$")
+ON_PATCH_PART_RE = re.compile(rf"^(?!.*\b(?:and|then)\s+(?:then\s+)?(?:put|place|set|move|slide|push|bring|lay)\b)(?P<head>[^@.;!?]+?)\s+"
+                              rf"(?:on|onto|on\s+top\s+of|atop)\s+the\s+(?P<c>{COLOR_RE})\s+(?:goal\s+|target\s+)?patch[\s.!]*$")
 """A structure, then the goal patch it all stands on ("make a heap of the three red cubes on the
-yellow patch", "line up two blue cubes on the red patch")."""
+yellow patch", "line up two blue cubes on the red patch"), in one clause (not "Line up red and green. Put the yellow cube
+on the blue patch.", whose patch is the yellow cube's: the row had been put on it)."""
 
 
 @reader(order=188)
