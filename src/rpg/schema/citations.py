@@ -466,9 +466,11 @@ def _reading(schema: TaskSchema, text: str) -> _Reading:
         text = lexicon.SCENE_NOW_OPENING_RE.sub("", text, count=1)
         pattern, written = lexicon.START_COUNTED_TOWER_REWRITE  # "There's a two-block tower, orange under cyan.": as read
         text = pattern.sub(written, text)
+    # "Data-collection script, line 12: put ...": the text after a task's identifier, as the parser reads it (its words had
+    # been unaccounted, the places left uncited); "Initially all cubes are scattered. Goal: ...": the goal's words
     labelled = (m.group("body") for m in (lexicon.ID_LABEL_RE.match(text), lexicon.ID_WORDS_LABEL_RE.match(text)) if m)
-    for said in (text, *labelled, *_goal_after_idle_start(schema, text)):  # "Data-collection script, line 12: put ...": the text after a task's identifier, as the
-        try:                        # parser reads it (its words had been unaccounted, the places left uncited)
+    for said in (text, *labelled, *_goal_after_idle_start(schema, text)):
+        try:
             record = check_mentions(said, schema)
             break
         except (UnaccountedMention, BadInput):

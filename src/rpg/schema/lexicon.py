@@ -201,12 +201,14 @@ INITIALLY_RE = (rf"\binitially\b(?!\s+(?:(?:the\s+)?(?:{COLOR_RE})\s+(?:block\s+
 "initially yellow is stacked on red": the initial states the readers build)."""
 
 CUBE_STARTS_BESIDE_RE = (
-    rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:starts?|begins?|started|began)(?:\s+(?:out|off))?\s+(?:directly\s+|right\s+|just\s+)?"
-    r"(?:behind|in\s+front\s+of|next\s+to|beside|left\s+of|right\s+of|to\s+the\s+(?:left|right)\s+of|between|under|underneath|beneath"
-    r"|below|above|near|far\s+from|inside|in\s+the\s+(?:[a-z]+\s+)?(?:corner|region|half|area|zone|middle|cent(?:er|re))"
-    r"|on\s+the\s+(?:[a-z]+\s+)?(?:patch|side|edge|half))\b")
-"""A cube said to start beside, behind or under another, or somewhere on the table ("the white cube starts behind the brown
-cube"): a starting state rpg does not build (only one cube stacked on another); it had been read as the goal, silently,
+    rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:starts?|begins?|started|began|spawns?|originates?)(?:\s+(?:out|off))?\s+"
+    r"(?:(?:directly|right|just|exactly)\s+on|at\s+the\s+(?!(?:bottom|top|base|end|(?:left|right|front|back)\s+end)\b)"
+    r"|(?:directly\s+|right\s+|just\s+)?(?:behind|in\s+front\s+of|next\s+to|beside|left\s+of|right\s+of|to\s+the\s+(?:left|right)\s+of|between"
+    r"|under|underneath|beneath|below|above|near|far\s+from|inside|in\s+the\s+(?:[a-z]+\s+)?(?:corner|region|half|area|zone|middle"
+    r"|cent(?:er|re))|on\s+the\s+(?:[a-z]+\s+)?(?:patch|side|edge|half)))"
+    rf"|\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:spawns?|originates?)\b")
+"""A cube said to start (or spawn) beside, behind or under another, at or in a place of the table, or right on another
+("the white cube starts behind the brown cube"): a starting state rpg does not build (only one cube stacked on another); it had been read as the goal, silently,
 and a goal said after it dropped."""
 
 START_TIME_RE = (r"^(?!.*\b(?:line|row|sequence|word|spell\w*|order\w*|tower|stack|column|list)\b).*?"
@@ -1100,10 +1102,7 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                                     "another (\"yellow starts stacked on red\"); say only where the cubes must end up"),
     # a hostile helper's (forty-ninth session): a start, a past, a later motion or a stay said around the goal's words,
     # which had been dropped (the goal read alone, or the start read as the goal, or the wrong cube sent to a patch)
-    ("time", rf"\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:starts?|begins?|started|began|spawns?|originates?)(?:\s+(?:out|off))?\s+"
-             r"(?:(?:right|just|directly|exactly)\s+on|at\s+the\s+(?!(?:bottom|top|base|end|(?:left|right|front|back)\s+end)\b))"
-             rf"|\b(?:{COLOR_RE})(?:\s+(?:cube|block|one))?\s+(?:spawns?|originates?)\b"
-             r"|'s\s+(?:starting|initial|start|original)\s+(?:place|position|spot|location)|\b(?:starting|initial|start|original)\s+"
+    ("time", r"'s\s+(?:starting|initial|start|original)\s+(?:place|position|spot|location)|\b(?:starting|initial|start|original)\s+"
              r"(?:place|position|spot|location)\s+of\b|\bin\s+(?:the|its|their)\s+(?:starting|initial|start|original)\s+(?:place|position"
              r"|spot|location)s?\b|\bset\s*-?\s*up\s+with\b|\bbefore\s+(?:the\s+(?:episode|start|task|run|trial)|we\s+(?:start|begin)|starting|beginning)\b"
              r"|\b(?:cube|block|one)\s*,?\s+(?:starting|beginning)\s+(?:on|behind|next\s+to|beside|under|underneath|beneath|below|above"
