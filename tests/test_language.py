@@ -9102,3 +9102,14 @@ def test_forty_ninth_session_a_cube_called_one_and_a_counted_grid_still_read(tex
 ])
 def test_forty_ninth_session_a_patch_said_after_a_row_is_the_next_clause_cube_s(text, expected):
     assert meaning(check_feasibility(parse(text))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    # a start said with a stack, then a goal that relates its cubes: the goal's words are cited past the start's (the
+    # order "black left of white" had been uncited, the compile refused as demanding what no word says)
+    "Initially, the black cube is stacked on the white cube. Put the black cube to the left of the white cube.",
+    "Initially the red cube is on the blue cube. Put the red cube in front of the blue cube.",
+])
+def test_fiftieth_session_a_goal_after_a_start_stack_cites_its_words(text):
+    schema = check_feasibility(parse(text))
+    assert schema.initial_state.structures and uncited(schema) == []

@@ -144,7 +144,7 @@ def task_data(sources: dict[str, str], where: str = "task") -> TaskData:
         TaskInvalid: the text gate refuses the code, or the sandbox run fails or returns
             data that does not check (its goal configuration too).
     """
-    from rpg.validate.data import fetch_task_data
+    from rpg.validate.data import PREFETCH_SEEDS, fetch_task_data
     from rpg.validate.static import StaticViolation, check_source
 
     try:
@@ -152,7 +152,7 @@ def task_data(sources: dict[str, str], where: str = "task") -> TaskData:
             check_source(text, fname)
     except StaticViolation as exc:
         raise TaskInvalid(f"{where}: task code rejected: {exc}") from None
-    data = fetch_task_data(sources)
+    data = fetch_task_data(sources, range(PREFETCH_SEEDS))  # the first episodes' rho_0 in the same sandboxed run
     if data.goal_poses is None:
         raise TaskInvalid(f"{where}: {data.goal_error}")
     return data

@@ -443,18 +443,17 @@ CITERS: dict[str, Callable[[Constraint, _Reading], list[str]]] = {
 """Constraint kind -> the mentions that demand it (empty: none does)."""
 
 
-def _goal_after_idle_start(schema: TaskSchema, text: str) -> list[str]:
-    """The goal's words of a text that says a start rho_0 already is ("Initially all cubes are scattered on the table.
-    Goal: ...": the initial-scene reader reads no stack there and the goal after it); empty otherwise."""
+def _goal_after_start(text: str) -> list[str]:
+    """The goal's words of a text that says a start ("Initially all cubes are scattered on the table. Goal: ...";
+    "Initially, the black cube is stacked on the white cube. Put the black cube to the left of ...": the start's
+    mentions are the initial-scene reader's, the goal's words after them); empty where it says none."""
     from rpg.schema.readers.initial import split
 
-    if schema.initial_state.structures:
-        return []
     try:
         scene = split(text)
     except BadInput:
         return []
-    return [scene.goal] if scene is not None and not scene.stacks and scene.goal else []
+    return [scene.goal] if scene is not None and scene.goal else []
 
 
 def _reading(schema: TaskSchema, text: str) -> _Reading:
@@ -469,7 +468,7 @@ def _reading(schema: TaskSchema, text: str) -> _Reading:
     # "Data-collection script, line 12: put ...": the text after a task's identifier, as the parser reads it (its words had
     # been unaccounted, the places left uncited); "Initially all cubes are scattered. Goal: ...": the goal's words
     labelled = (m.group("body") for m in (lexicon.ID_LABEL_RE.match(text), lexicon.ID_WORDS_LABEL_RE.match(text)) if m)
-    for said in (text, *labelled, *_goal_after_idle_start(schema, text)):
+    for said in (text, *labelled, *_goal_after_start(text)):
         try:
             record = check_mentions(said, schema)
             break

@@ -2655,9 +2655,10 @@ START_SAID_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                 rf"\s*\.\s+(?P<v>put|place|set|stack|add)\s+(?P<c>(?:a|an|the)\s+(?:{COLOR_RE})\s+(?:cube|block))\s+(?:(?:to|on|onto)\s+the\s+top|on\s+top)"
                 r"(?:\s+of\s+(?:it|the\s+(?:tower|stack)))?(?=\s*[.!]?\s*$)"),
      lambda m: f"There is a {m.group('top')} cube on the {m.group('bottom')} cube. {m.group('v')} {m.group('c')} on top of it"),
-    # "Starting scene: blue on top of red. Take off ...": the start said under a heading ('scene' had been refused unread)
-    (re.compile(r"(?i)^\s*(?:the\s+)?(?:starting|start|initial|opening|begin(?:ning)?)\s+(?:scene|state|setup|set-up|configuration|layout"
-                r"|position|arrangement)\s*[:\-\u2014]\s*(?=\S)"),
+    # "Starting scene: blue on top of red. Take off ...", "Given: ...": the start said under a heading ('scene' had been
+    # refused unread; "Given:" refused as a start not read)
+    (re.compile(r"(?i)^\s*(?:(?:the\s+)?(?:starting|start|initial|opening|begin(?:ning)?)\s+(?:scene|state|setup|set-up|configuration"
+                r"|layout|position|arrangement)|given)\s*[:\-\u2014]\s*(?=\S)"),
      "Initially "),
     # "Scene before: purple on brown. Scene after: ...", "Before state: ...": the start and the goal said as before and after
     (re.compile(r"(?i)(?:(?<=^)|(?<=[.;!]\s))\s*(?:the\s+)?(?:(?:scene|state|setup|configuration|layout)\s+(?P<a>before|after)"

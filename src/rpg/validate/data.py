@@ -37,7 +37,8 @@ the number of objects)."""
 
 PREFETCH_SEEDS = 20
 """Seeds fetched in one sandboxed run when an environment asks for one it has not seen
-(``rpg eval``'s default is 20 seeds per task)."""
+(``rpg eval``'s default is 20 seeds per task); an environment fetches seeds 0 to 19 with
+the task's data (:func:`rpg.env.loading.task_data`: one sandboxed run, not two)."""
 
 CACHE_ENTRIES = 4096
 """(code, seed) entries of rho_0 samples kept per process."""
