@@ -102,6 +102,7 @@ DEVELOPMENT = {
     "stranger31": ("steer_stranger31.yaml", "STRANGER steering set 31 (steer_stranger31.yaml, written at the start of the forty-seventh session: aggregates only)"),
     "stranger32": ("steer_stranger32.yaml", "STRANGER steering set 32 (steer_stranger32.yaml, transfer measure of the forty-eighth session; development material from the forty-ninth)"),
     "stranger33": ("steer_stranger33.yaml", "STRANGER steering set 33 (steer_stranger33.yaml, written at the start of the forty-ninth session: aggregates only)"),
+    "stranger34": ("steer_stranger34.yaml", "STRANGER steering set 34 (steer_stranger34.yaml, written at the start of the fiftieth session: aggregates only)"),
 }
 UNSEEN = HERE / "steer_unseen.yaml"
 SPLITS = HERE / "splits.yaml"
