@@ -362,3 +362,16 @@ def test_a_video_interrupted_by_an_error_leaves_no_file(tmp_path):
     with pytest.raises(ValueError, match="even"), VideoWriter(path, 20) as writer:
         writer.write(np.zeros((31, 32, 3), np.uint8))
     assert list(tmp_path.iterdir()) == []
+
+
+def test_an_environment_loads_its_task_and_first_episodes_in_one_sandboxed_run(monkeypatch):
+    """The task's data and rho_0 of seeds 0-19 come from one sandboxed child (a reset had started a second one)."""
+    import rpg.validate.data as data
+
+    seeds_asked, start = [], data._start
+    monkeypatch.setattr(data, "_start", lambda sources, seeds, *a, **k: seeds_asked.append(list(seeds)) or start(sources, seeds, *a, **k))
+    env = BlockTaskEnv(LIBRARY / "three_block_stack", embodiment="floating_gripper", cameras=(), privileged=True)
+    starts = {env.reset(seed=s)[0]["object_poses"].tobytes() for s in range(3)}
+    assert seeds_asked == [list(range(data.PREFETCH_SEEDS))] and len(starts) == 3
+    env.reset(seed=data.PREFETCH_SEEDS)  # a seed past them: the next block in one more run
+    assert seeds_asked[1:] == [list(range(data.PREFETCH_SEEDS, 2 * data.PREFETCH_SEEDS))]

@@ -9113,3 +9113,9 @@ def test_forty_ninth_session_a_patch_said_after_a_row_is_the_next_clause_cube_s(
 def test_fiftieth_session_a_goal_after_a_start_stack_cites_its_words(text):
     schema = check_feasibility(parse(text))
     assert schema.initial_state.structures and uncited(schema) == []
+
+
+def test_fiftieth_session_a_start_under_a_given_heading_is_read():
+    """"Given: X is on Y. Task: ..." had been refused as a start not read."""
+    assert meaning(check_feasibility(parse("Given: the green cube is on the brown cube. Task: move the green cube onto the cyan patch."))) == [
+        "on_patch(green,patch:cyan)", "start:stack(brown,green)"]
