@@ -9119,3 +9119,15 @@ def test_fiftieth_session_a_start_under_a_given_heading_is_read():
     """"Given: X is on Y. Task: ..." had been refused as a start not read."""
     assert meaning(check_feasibility(parse("Given: the green cube is on the brown cube. Task: move the green cube onto the cyan patch."))) == [
         "on_patch(green,patch:cyan)", "start:stack(brown,green)"]
+
+
+@pytest.mark.parametrize("text, expected", [
+    # the start read under a misspelt "initially" (it had been read as the goal, and refused)
+    ("initialy the green cube is on top of the red cube. take the green cube off and put it on the table",
+     ["on_table(green)", "start:stack(red,green)"]),
+    ("Intially the red cube is on the blue cube. Put the red cube on the green patch.",
+     ["on_patch(red,patch:green)", "start:stack(blue,red)"]),
+])
+def test_fiftieth_session_a_misspelt_initially_still_says_the_start(text, expected):
+    schema = check_feasibility(parse(text))
+    assert meaning(schema) == expected and uncited(schema) == []

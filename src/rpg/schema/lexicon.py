@@ -195,6 +195,11 @@ COUNT_WORD_RE = "|".join(w for w in NUMBER_WORDS if w not in ("single", "pair", 
 COLORS = sorted(set(PALETTE) | set(COLOR_ALIASES), key=len, reverse=True)
 COLOR_RE = "|".join(COLORS)
 
+INITIALLY_MISSPELT_RE = re.compile(r"(?i)\b(?:initialy|intially|initally)\b")
+"""Misspellings of "initially" (curated): the parser's words are corrected, but the initial-scene reader
+(:func:`rpg.schema.readers.initial.split`) reads the text as written ("initialy the green cube is on top of the red cube.
+take the green cube off ..." had been refused: the start read as the goal)."""
+
 INITIALLY_RE = (rf"\binitially\b(?!\s+(?:(?:the\s+)?(?:{COLOR_RE})\s+(?:block\s+|cube\s+)?(?:is\s+|sits\s+|rests\s+|stands\s+|lies\s+)?)?(?:stacked\s+)?"
                 rf"(?:on\s+top\s+of|on)\s+(?:the\s+)?(?:{COLOR_RE})\b(?!\s+(?:goal\s+|target\s+)?patch))")
 """"Initially" of any starting state but one cube stacked on another ("yellow is initially on red",

@@ -481,6 +481,7 @@ def _there_is_start(m: re.Match) -> str:
 def split(instruction: str) -> InitialScene | None:
     """The initial scene and the goal of ``instruction``, or None when it states no start this
     module reads (see the module docstring)."""
+    instruction = lexicon.INITIALLY_MISSPELT_RE.sub("initially", instruction)
     instruction = lexicon.DEMONSTRATIVE_STRUCTURE_RE.sub(r"\g<p> the \g<n>", instruction)  # "on top of that tower"
     for pattern, written in MARKUP_RES:
         instruction = pattern.sub(written, instruction)
