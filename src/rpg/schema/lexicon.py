@@ -75,6 +75,7 @@ TYPOS: dict[str, str] = {
     "nxt": "next", "mor": "more", "swtich": "switch", "swich": "switch", "swithc": "switch", "revese": "reverse", "reverce": "reverse",
     "blok": "block", "bloks": "blocks", "rigth": "right", "rihgt": "right", "lefft": "left", "cubs": "cubes",
     "seprate": "separate", "seperate": "separate", "seperately": "separately", "seprately": "separately",
+    "initialy": "initially", "intially": "initially", "initally": "initially",
 }
 """Misspellings of a word of the vocabulary, each read as that word (curated, never a guess; the
 steering corrects an edit's words with this table before reading it)."""
@@ -195,8 +196,8 @@ COUNT_WORD_RE = "|".join(w for w in NUMBER_WORDS if w not in ("single", "pair", 
 COLORS = sorted(set(PALETTE) | set(COLOR_ALIASES), key=len, reverse=True)
 COLOR_RE = "|".join(COLORS)
 
-INITIALLY_MISSPELT_RE = re.compile(r"(?i)\b(?:initialy|intially|initally)\b")
-"""Misspellings of "initially" (curated): the parser's words are corrected, but the initial-scene reader
+INITIALLY_MISSPELT_RE = re.compile(r"(?i)\b(?:" + "|".join(sorted(w for w, right in TYPOS.items() if right == "initially")) + r")\b")
+""":data:`TYPOS`' misspellings of "initially": the parser's words are corrected, but the initial-scene reader
 (:func:`rpg.schema.readers.initial.split`) reads the text as written ("initialy the green cube is on top of the red cube.
 take the green cube off ..." had been refused: the start read as the goal)."""
 

@@ -37,8 +37,9 @@ the number of objects)."""
 
 PREFETCH_SEEDS = 20
 """Seeds fetched in one sandboxed run when an environment asks for one it has not seen
-(``rpg eval``'s default is 20 seeds per task); an environment fetches seeds 0 to 19 with
-the task's data (:func:`rpg.env.loading.task_data`: one sandboxed run, not two)."""
+(``rpg eval``'s default is 20 seeds per task); an environment fetches the first block (seeds 0
+to PREFETCH_SEEDS - 1) with the task's data (:func:`rpg.env.loading.task_data`: one sandboxed
+run, not two)."""
 
 CACHE_ENTRIES = 4096
 """(code, seed) entries of rho_0 samples kept per process."""
