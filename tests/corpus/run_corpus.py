@@ -97,7 +97,8 @@ STRANGER_SETS = {
     "stranger60": ("stranger60.yaml", "STRANGER set 60 (stranger60.yaml, transfer measure of the forty-seventh session; development material from the forty-eighth)"),
     "stranger61": ("stranger61.yaml", "STRANGER set 61 (stranger61.yaml, transfer measure of the forty-eighth session; development material from the forty-ninth)"),
     "stranger62": ("stranger62.yaml", "STRANGER set 62 (stranger62.yaml, transfer measure of the forty-ninth session; development material from the fiftieth)"),
-    "stranger63": ("stranger63.yaml", "STRANGER set 63 (stranger63.yaml, written at the start of the fiftieth session: aggregates only)"),
+    "stranger63": ("stranger63.yaml", "STRANGER set 63 (stranger63.yaml, transfer measure of the fiftieth session; development material from the fifty-first)"),
+    "stranger64": ("stranger64.yaml", "STRANGER set 64 (stranger64.yaml, written at the start of the fifty-first session: aggregates only)"),
 }
 SPLITS = HERE / "splits.yaml"
 

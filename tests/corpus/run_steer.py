@@ -103,6 +103,7 @@ DEVELOPMENT = {
     "stranger32": ("steer_stranger32.yaml", "STRANGER steering set 32 (steer_stranger32.yaml, transfer measure of the forty-eighth session; development material from the forty-ninth)"),
     "stranger33": ("steer_stranger33.yaml", "STRANGER steering set 33 (steer_stranger33.yaml, written at the start of the forty-ninth session: aggregates only)"),
     "stranger34": ("steer_stranger34.yaml", "STRANGER steering set 34 (steer_stranger34.yaml, written at the start of the fiftieth session: aggregates only)"),
+    "stranger35": ("steer_stranger35.yaml", "STRANGER steering set 35 (steer_stranger35.yaml, written at the start of the fifty-first session: aggregates only)"),
 }
 UNSEEN = HERE / "steer_unseen.yaml"
 SPLITS = HERE / "splits.yaml"
