@@ -11,7 +11,8 @@ from rpg.domain.assets import ColoredCube, GoalPatch, SemanticCube
 from rpg.domain.layouts import grid_layout, line_layout, pyramid_layout, stack_layout
 from rpg.domain.sampling import InfeasibleLayout, sample_scattered
 from rpg.domain.scene import Scene, SceneError, drift_report
-from rpg.domain.visibility import face_visibility
+from rpg.domain.glyphs import FACES
+from rpg.domain.visibility import face_visibility, visible_faces
 from tests.helpers import scene_with
 
 
@@ -158,3 +159,15 @@ def test_visibility_in_a_3x3_pyramid():
     for n in front_row:
         assert face_visibility(s, n, "-x").visible
     assert not face_visibility(s, "p4", "-x").visible  # behind the front row
+
+
+def test_all_faces_cast_together_see_what_each_face_cast_alone_sees():
+    """visible_faces casts the rays of every face turned to the camera in one call: the same verdicts, face by
+    face, as casting each face alone, in a 14-cube pyramid where faces hide one another."""
+    names = [f"p{i}" for i in range(14)]
+    s = scene_with(pyramid_layout(names, base=3, dims=3), {n: "A" for n in names})
+    together = visible_faces(s)
+    alone = {(n, f): face_visibility(s, n, f).visible for n in names for f in FACES}
+    assert together == alone
+    assert 0 < sum(together.values()) < len(together) / 2  # some faces seen, most hidden or turned away
+    assert together[("p13", "+z")] and not together[("p4", "+z")]

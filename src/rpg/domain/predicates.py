@@ -1188,19 +1188,23 @@ class InCircle(Predicate):
 
 def _match_sites(objs: list[ObjectState], sites: np.ndarray) -> tuple[bool, float, list[str]]:
     """Match each site to a distinct object within GRID_TOL; return (ok, worst error, unmatched)."""
-    remaining = {o.name: np.asarray(o.pos, float) for o in objs}
+    names = [o.name for o in objs]
+    pos = np.array([o.pos for o in objs], dtype=float).reshape(len(objs), 3)
+    free = np.ones(len(objs), dtype=bool)
     worst = 0.0
     missing = []
     for site in sites:
-        if not remaining:
+        if not free.any():
             missing.append(str(np.round(site, 3).tolist()))
             continue
-        name, d = min(((n, float(np.linalg.norm(p - site))) for n, p in remaining.items()), key=lambda t: t[1])
-        if d <= C.GRID_TOL:
-            worst = max(worst, d)
-            del remaining[name]
+        d = np.where(free, np.linalg.norm(pos - site, axis=1), np.inf)
+        k = int(np.argmin(d))  # the nearest unmatched object; a tie goes to the first, as objs are ordered
+        if d[k] <= C.GRID_TOL:
+            worst = max(worst, float(d[k]))
+            free[k] = False
         else:
             missing.append(str(np.round(site, 3).tolist()))
+    remaining = [n for n, f in zip(names, free) if f]
     ok = not missing and not remaining
     return ok, worst, missing + sorted(remaining)
 

@@ -132,6 +132,11 @@ class ObjectState:
 
         return None if self.label is None else label_type(self.label)
 
+    @cached_property
+    def face_normals(self) -> np.ndarray:
+        """World-frame outward normals of the local faces, shape (3, 6), columns in ``FACES`` order."""
+        return self.rotation @ np.array([FACE_NORMALS[f] for f in FACES], dtype=float).T
+
     def face_normal(self, face: str) -> np.ndarray:
         """World-frame outward normal of a local face."""
         return self.rotation @ np.asarray(FACE_NORMALS[face])
@@ -142,10 +147,9 @@ class ObjectState:
 
     def face_toward(self, direction: str) -> tuple[str, float]:
         """Local face whose normal is closest to a named world direction, and that cosine."""
-        d = np.asarray(DIRECTIONS[direction])
-        cos = {f: float(self.face_normal(f) @ d) for f in FACES}
-        face = max(FACES, key=lambda f: cos[f])
-        return face, cos[face]
+        cos = np.asarray(DIRECTIONS[direction]) @ self.face_normals
+        k = int(np.argmax(cos))  # the first of equal cosines, in FACES order
+        return FACES[k], float(cos[k])
 
     def label_toward(self, direction: str, min_cos: float = C.READABLE_NORMAL_COS) -> str | None:
         """Label on the face turned toward ``direction`` (None if no face is turned that way)."""
