@@ -375,3 +375,18 @@ def test_an_environment_loads_its_task_and_first_episodes_in_one_sandboxed_run(m
     assert seeds_asked == [list(range(data.PREFETCH_SEEDS))] and len(starts) == 3
     env.reset(seed=data.PREFETCH_SEEDS)  # a seed past them: the next block in one more run
     assert seeds_asked[1:] == [list(range(data.PREFETCH_SEEDS, 2 * data.PREFETCH_SEEDS))]
+
+
+def test_an_environment_loads_and_runs_without_the_language_front_end():
+    """Loading a task and stepping it reads the task's files and G, never the instruction's words: no module of the
+    parser is imported (its lexicon compiles ~1,400 regular expressions, a second in every process that loads an
+    environment), and the canonical instruction is still there, made from G alone."""
+    code = ("import sys\nfrom rpg.env import BlockTaskEnv\n"
+            f"env = BlockTaskEnv({str(LIBRARY / 'arrange_numbers')!r}, instruction='canonical', cameras=())\n"
+            "obs, info = env.reset(seed=0)\nenv.step(env.action_space.sample())\n"
+            "print(obs['instruction'])\n"
+            "print(sorted(m for m in sys.modules if m.startswith('rpg.schema.') and m not in "
+            "('rpg.schema.model', 'rpg.schema.meaning', 'rpg.schema.citations')))\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.splitlines()
+    assert out[-1] == "[]"
+    assert out[0].strip() and out[0] != BlockTaskEnv(LIBRARY / "arrange_numbers").instruction

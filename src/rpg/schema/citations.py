@@ -486,12 +486,16 @@ def cite(schema: TaskSchema, text: str | None = None) -> list[tuple[Constraint, 
     """Each constraint of G with the mentions of ``text`` (default: the task's instruction)
     that demand it; distinct constraints only, in goal order."""
     r = _reading(schema, schema.instruction if text is None else text)
+    return [(c, CITERS[c.kind](c, r)) for c in _distinct_constraints(schema)]
+
+
+def _distinct_constraints(schema: TaskSchema) -> list[Constraint]:
+    """The distinct constraints of G (by key and vacuity), in goal order."""
     out, seen = [], set()
     for c in goal_constraints(schema):
-        if (c.key, c.vacuous) in seen:
-            continue
-        seen.add((c.key, c.vacuous))
-        out.append((c, CITERS[c.kind](c, r)))
+        if (c.key, c.vacuous) not in seen:
+            seen.add((c.key, c.vacuous))
+            out.append(c)
     return out
 
 
@@ -649,7 +653,7 @@ def canonical_instruction(schema: TaskSchema) -> str:
     """A text generated from G that states exactly its constraints: one sentence per
     constraint that is not vacuous (a structure always), in goal order."""
     out = []
-    for c, _ in cite(schema, ""):
+    for c in _distinct_constraints(schema):  # G alone: no text is read (an environment loads no lexicon)
         if c.vacuous and c.kind != "structure":
             continue
         if c.sentence not in out:
