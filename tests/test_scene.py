@@ -8,10 +8,10 @@ import pytest
 
 from rpg.domain import constants as C
 from rpg.domain.assets import ColoredCube, GoalPatch, SemanticCube
+from rpg.domain.glyphs import FACES
 from rpg.domain.layouts import grid_layout, line_layout, pyramid_layout, stack_layout
 from rpg.domain.sampling import InfeasibleLayout, sample_scattered
 from rpg.domain.scene import Scene, SceneError, drift_report
-from rpg.domain.glyphs import FACES
 from rpg.domain.visibility import face_visibility, visible_faces
 from tests.helpers import scene_with
 

@@ -1204,7 +1204,7 @@ def _match_sites(objs: list[ObjectState], sites: np.ndarray) -> tuple[bool, floa
             free[k] = False
         else:
             missing.append(str(np.round(site, 3).tolist()))
-    remaining = [n for n, f in zip(names, free) if f]
+    remaining = [n for n, f in zip(names, free, strict=True) if f]
     ok = not missing and not remaining
     return ok, worst, missing + sorted(remaining)
 

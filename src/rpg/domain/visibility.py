@@ -89,9 +89,8 @@ def _cast(scene: Scene, faces: list[tuple[str, str]], camera: str) -> list[FaceV
     are not visible; the five rays of every other face are cast in one ``mj_multiRay`` call."""
     cam = camera_position(scene, camera)
     geometry = {name: _cube_faces(scene, name) for name in sorted({name for name, _ in faces})}
-    index = [_FACE_INDEX[face] for _, face in faces]
-    pts = np.array([geometry[name][0][i] for (name, _), i in zip(faces, index)]).reshape(len(faces), 5, 3)
-    normals = np.array([geometry[name][1][i] for (name, _), i in zip(faces, index)]).reshape(len(faces), 3)
+    pts = np.array([geometry[name][0][_FACE_INDEX[face]] for name, face in faces]).reshape(len(faces), 5, 3)
+    normals = np.array([geometry[name][1][_FACE_INDEX[face]] for name, face in faces]).reshape(len(faces), 3)
     to_cam = cam - pts[:, 0]
     cos = np.einsum("ij,ij->i", normals, to_cam) / np.linalg.norm(to_cam, axis=1)
     out: list[FaceVisibility | None] = []
