@@ -9131,3 +9131,43 @@ def test_fiftieth_session_a_start_under_a_given_heading_is_read():
 def test_fiftieth_session_a_misspelt_initially_still_says_the_start(text, expected):
     schema = check_feasibility(parse(text))
     assert meaning(schema) == expected and uncited(schema) == []
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a polite request ('mind' had been refused as an action the domain lacks)
+    ("Would you mind putting the pink cube behind the cyan one?", ["behind(pink,cyan)"]),
+    ("Do you mind stacking the red cube on the blue cube?", ["stack(blue,red)"]),
+    # "in that order" after label cubes listed by "labelled" (refused as an order nobody listed)
+    ("Line up the cubes labelled M, N and E in that order.", ["line[sequence](M,N,E)"]),
+    # "from top" without its article: the list from the top (A had been put at the bottom)
+    ("Stack the letter cubes A, B and C alphabetically from top.", ["stack(C,B,A)"]),
+])
+def test_fifty_first_session_requests_and_orders_said_plainly_are_read(text, expected):
+    schema = check_feasibility(parse(text))
+    assert meaning(schema) == expected and uncited(schema) == []
+
+
+@pytest.mark.parametrize("text, word", [
+    # piles nobody sorted: which cubes share a pile is not said (piles by colour, of colours nobody named, had been demanded)
+    ("Make two piles.", "2 piles"),
+    ("Sort the cubes into two piles.", "2 piles"),
+    ("Put the cubes in piles.", "several piles"),
+    # a patch of its own for each cube: which patch is not said (a red cube on a grey patch had been made up)
+    ("Put each cube on its own patch.", "its own patch"),
+    ("Put each red cube on its own patch.", "its own patch"),
+    # a cube picked by an ordinal and a colour (the parenthesis had been dropped)
+    ("Stack the blue cube on the red cube (the second blue).", "the second blue"),
+])
+def test_fifty_first_session_what_the_words_leave_open_is_refused(text, word):
+    with pytest.raises((ParseError, Inexpressible)) as exc:
+        check_feasibility(parse(text))
+    assert word in str(exc.value)
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("Sort the cubes into piles by colour.", "piles(blue,blue,blue,green,green,green,red,red,red;by=color)"),
+    ("Make two piles of three cubes.", "pile(red,red,red); pile(red,red,red)"),
+    ("Put the red cube on the red patch.", "on_patch(red,patch:red)"),
+])
+def test_fifty_first_session_piles_and_patches_said_whole_still_read(text, expected):
+    assert "; ".join(meaning(check_feasibility(parse(text)))) == expected

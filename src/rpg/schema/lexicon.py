@@ -965,6 +965,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"(?:(?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:first|second|third|fourth|fifth|sixth|last))*"  # ("the first, second
                   # and third cubes": four cubes had been made up)
                   r"\s+(?:(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?))\b"
+                  # "(the second blue)": a colour said as the cube, picked by an order nobody defined (it had been dropped)
+                  rf"|\bthe\s+(?:first|second|third|fourth|fifth|sixth)\s+(?:{COLOR_RE})\b(?=\s*(?:[).,;:!?]|$))"
                   # "cube one", "block four": a cube numbered in words (the digit cube, or an order nobody defined; a coloured cube
                   # had been made up)
                   r"|\b(?:cube|block)\s+(?:one|two|three|four|five|six|seven|eight|nine|ten|\d{2,})\b(?!\s*(?:[-x\u00d7]|cubes?|blocks?"
@@ -1032,7 +1034,11 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
      "(\"the top block of the tower\")"),
     ("reference", r"\b(?:on|onto|to|in|into)\s+(?:(?:two|three|2|3|their|own|different|separate|distinct|individual)\s+)+(?:goal\s+)?patches\b"
                   r"(?!\s*(?:[:,(]|of\s+(?:the\s+)?(?:same|their|its|matching)))"
-                  r"|\b(?:on|onto|to|in|into)\s+a\s+(?:different|separate|distinct)\s+(?:goal\s+)?patch\b",  # "each on a different patch"
+                  r"|\b(?:on|onto|to|in|into)\s+a\s+(?:different|separate|distinct)\s+(?:goal\s+)?patch\b"  # "each on a different patch"
+                  # "Put each cube on its own patch.": cubes nobody named, each on a patch nobody named (a red cube on a grey
+                  # patch had been made up; "the green cube on its own patch" is its colour's)
+                  rf"|\b(?:each|every)\s+(?:(?:{COLOR_RE})\s+)?(?:cube|block)\s+(?:on|onto|to|in|into)\s+its\s+own\s+(?:goal\s+)?patch\b"
+                  r"(?!\s+(?:of|in|with)\s+(?:the\s+)?(?:same|matching|its)\b)",
      "does not say which patch each cube goes on (patches are known by colour): name each one (e.g. \"the red cube on "
      "the red patch and the blue cube on the green patch\")"),
     ("reference", r"\b(?:as\s+)?(?:shown|displayed|depicted|pictured|illustrated|demonstrated)\b"
@@ -5334,6 +5340,9 @@ GOAL_FRAME_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     (re.compile(r"(?:^|(?<=[.!?;:]\s))(?:the\s+)?(?:agent|robot|policy|arm|learner|controller)\s+is\s+(?:evaluated|tested|scored|judged"
                 r"|assessed|graded|rewarded)\s+(?:on|for)\s+(?:(?:its\s+ability\s+to|how\s+well\s+it\s+can)\s+(?=[a-z]+\s)|" + _GERUND_RE + ")"),
      lambda m: _GERUND_STEMS[m.group(1)] if m.group(1) else ""),
+    # "Would you mind putting the pink cube behind the cyan one?": a polite request of the act ('mind' had been refused as
+    # an action the domain lacks)
+    (re.compile(r"\b(?:would|do)\s+you\s+mind\s+(?:please\s+)?" + _GERUND_RE), lambda m: _GERUND_STEMS[m.group(1)]),
     # "Build upward from red block through green block to blue block": a tower from the first cube up (refused before)
     (re.compile(rf"\b(build|stack)\s+(?:it\s+)?(?:upward|upwards|up)\s+from\s+(?:the\s+)?((?:{COLOR_RE})(?:\s+(?:block|cube))?"
                 rf"(?:\s*,?\s+(?:to|through|then|and\s+then)\s+(?:the\s+)?(?:{COLOR_RE})(?:\s+(?:block|cube))?)+)\b"),
@@ -6196,12 +6205,12 @@ wall."""
 
 TOP_DOWN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "Stack red, green, blue from the top down", "Tower (top first): ...": a list from the top
-    (re.compile(r"\b(?:from\s+the\s+top(?:\s+down(?:wards?)?)?|from\s+top\s+down|top[\s-]+down|top\s+first|starting\s+(?:from|at|with)"
+    (re.compile(r"\b(?:from\s+the\s+top(?:\s+down(?:wards?)?)?|from\s+top(?:\s+down(?:wards?)?)?(?!\s+to\b)|top[\s-]+down|top\s+first|starting\s+(?:from|at|with)"
                 r"\s+the\s+top)\b(?!\s+(?:of|left|right)\b)"),
      lambda m: m.group(0) if re.search(r"\b(?:second|third|fourth|fifth|\d(?:st|nd|rd|th))\s*(?:one\s+)?$",
                                        m.string[:m.start()]) else "from top to bottom"),
 )
-""""from the top down", "top first": a list from the top ("second from the top" stays a rank)."""
+""""from the top down", "top first", "alphabetically from top": a list from the top ("second from the top" stays a rank)."""
 
 TOP_LIST_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "Build a tower: the top is red, then blue, then green": listed from that end (it had been read bottom first)

@@ -861,6 +861,13 @@ def recognize_piles(f: Features, b: Builder) -> bool:
             b.primitives += ["arrange"]
             b.min_separation = 0.06
             return True
+        if not f.color_list() and not per_color and not re.search(r"\bcolou?r(?:s|ed)?\b|\bhues?\b|\bmatching\b|\blike\s+with\s+like\b",
+                                                                    f.text):
+            # "Make two piles.", "Sort the cubes into two piles.": which cubes share a pile is not said (piles by colour,
+            # of colours nobody named, had been demanded)
+            raise ParseError(f"\"{f.original[:80]}\" asks for {k or 'several'} piles but says neither which cubes go in each "
+                             "nor how the cubes are sorted; say it (e.g. \"sort the cubes into piles by colour\", \"a pile of "
+                             "red and a pile of blue\"), or use --model")
         # ("1 pile for each colour": the count is per colour, not the piles' number; one red pile had been made)
         colors = list(dict.fromkeys(f.color_list())) or colors_for((None if per_color else k) or 3, f, prefer=[])
         if k is not None and not per_color and f.color_list() and k != len(colors):
