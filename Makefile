@@ -26,7 +26,10 @@ $(VENV)/.installed: pyproject.toml
 	  echo "note: chromium is not installed; the page tests skip." \
 	       "Install Debian's 'chromium' package (sudo apt-get install chromium) to run them."
 	test -x $(PY) || python3 -m venv $(VENV)
-	$(PY) -m pip install -q -e '.[dev,ray,baseline]'
+	@# Bytecode is written by compileall on every core, not by pip one file at a time (where PYTHONDONTWRITEBYTECODE
+	@# is set no process writes it later; a few packages ship files that are not Python 3, as pip ignores them here).
+	$(PY) -m pip install -q --no-compile -e '.[dev,ray,baseline]'
+	$(PY) -m compileall -q -j 0 $(VENV)/lib >/dev/null || true
 	touch $@
 
 demo: install
