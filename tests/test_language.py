@@ -9171,3 +9171,32 @@ def test_fifty_first_session_what_the_words_leave_open_is_refused(text, word):
 ])
 def test_fifty_first_session_piles_and_patches_said_whole_still_read(text, expected):
     assert "; ".join(meaning(check_feasibility(parse(text)))) == expected
+
+
+@pytest.mark.parametrize("text, expected", [
+    # a clause after ", and put" is its own: its cubes are not the stack's (white had been stacked; a hostile helper's)
+    ("Stack the red and blue cubes, and put the yellow cube next to the white cube", "next_to(white,yellow); stack(red,blue)"),
+    ("Stack green and blue, and put the red cube in the front right", "in_region(red,front_right); stack(green,blue)"),
+    # a stack of cubes nobody named takes no colour another clause names (the red cube put beside blue had been stacked)
+    ("Stack two cubes. Put the red cube next to the blue cube.", "next_to(blue,red); stack(green,yellow)"),
+    # piles: "three each" counts every pile said by colour (a cube each had been made); two piles one per colour are two
+    ("Make a pile of red cubes and a pile of blue cubes, three each.", "pile(blue,blue,blue); pile(red,red,red)"),
+    ("Sort the cubes into two piles, one for each colour.", "piles(blue,blue,blue,red,red,red;by=color)"),
+])
+def test_fifty_first_session_a_hostile_helper_s_silent_cases_read_as_said(text, expected):
+    assert "; ".join(meaning(check_feasibility(parse(text)))) == expected
+
+
+@pytest.mark.parametrize("text", [
+    "Each cube goes on its own patch.",
+    "Put each of the red cubes on its own patch.",
+    "Put all cubes on their own patch.",
+    "Put the first blue and the second blue on the red patch.",
+    "Put the second-blue cube on the red cube",
+    # "in that order" with more said after it: the label list is not read as the order (the red cube had been stacked in
+    # E's place)
+    "Stack the cubes labelled M, N and E in that order next to the red cube",
+])
+def test_fifty_first_session_a_hostile_helper_s_silent_cases_refused(text):
+    with pytest.raises((ParseError, Inexpressible)):
+        check_feasibility(parse(text))

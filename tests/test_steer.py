@@ -3471,3 +3471,17 @@ def test_cli_steer_dry_run_prints_the_version_it_would_record(tmp_path):
     assert _tree(tmp_path) == before
     bad = rpg("steer", str(task), "turn it into a spaceship", "--dry-run")
     assert bad.returncode == 2 and "Traceback" not in bad.stderr and _tree(tmp_path) == before
+
+
+@pytest.mark.parametrize("edit", [
+    # a move said with two placements: the region replaces the cube's old one and the relation joins (it had been read as an
+    # addition: the cube in two corners, refused as a contradiction)
+    "Move the cyan cube to the front left corner, next to the brown one.",
+    # "as well" there is the other cube's corner: the cube cannot keep its old one too
+    "Move the cyan cube to the front left corner as well, right next to the brown one.",
+])
+def test_fifty_first_session_a_move_to_a_place_and_beside_a_cube_replaces_its_old_place(tmp_path, edit):
+    base = "Place the cyan cube in the back right corner and the brown cube in the front left corner."
+    assert _meaning_after(tmp_path, base, [edit]) == (
+        ["in_region(brown,front_left)", "in_region(cyan,front_left)", "next_to(brown,cyan)"], "modify")
+

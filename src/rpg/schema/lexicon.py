@@ -966,7 +966,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   # and third cubes": four cubes had been made up)
                   r"\s+(?:(?:[a-z]+\s+)?(?:blocks?|cubes?|bricks?|boxes|box|ones?))\b"
                   # "(the second blue)": a colour said as the cube, picked by an order nobody defined (it had been dropped)
-                  rf"|\bthe\s+(?:first|second|third|fourth|fifth|sixth)\s+(?:{COLOR_RE})\b(?=\s*(?:[).,;:!?]|$))"
+                  rf"|\bthe\s+(?:first|second|third|fourth|fifth|sixth)[\s-]+(?:{COLOR_RE})\b(?=\s*(?:[).,;:!?'\"\u00bb]|$)"
+                  r"|[\s-]+(?:and|on|onto|in|into|to|next|beside|behind|under|cube|block)\b)"
                   # "cube one", "block four": a cube numbered in words (the digit cube, or an order nobody defined; a coloured cube
                   # had been made up)
                   r"|\b(?:cube|block)\s+(?:one|two|three|four|five|six|seven|eight|nine|ten|\d{2,})\b(?!\s*(?:[-x\u00d7]|cubes?|blocks?"
@@ -1037,8 +1038,8 @@ INEXPRESSIBLE: tuple[tuple[str, str, str], ...] = (
                   r"|\b(?:on|onto|to|in|into)\s+a\s+(?:different|separate|distinct)\s+(?:goal\s+)?patch\b"  # "each on a different patch"
                   # "Put each cube on its own patch.": cubes nobody named, each on a patch nobody named (a red cube on a grey
                   # patch had been made up; "the green cube on its own patch" is its colour's)
-                  rf"|\b(?:each|every)\s+(?:(?:{COLOR_RE})\s+)?(?:cube|block)\s+(?:on|onto|to|in|into)\s+its\s+own\s+(?:goal\s+)?patch\b"
-                  r"(?!\s+(?:of|in|with)\s+(?:the\s+)?(?:same|matching|its)\b)",
+                  r"|\b(?:each|every|all|(?:cubes|blocks))\b[^.;!?]{0,60}?\b(?:on|onto|to|in|into)\s+(?:its|their)\s+own\s+(?:goal\s+)?patch\b"
+                  r"(?!\s+(?:of|in|with)\s+(?:the\s+)?(?:same|matching|its|their)\b)",
      "does not say which patch each cube goes on (patches are known by colour): name each one (e.g. \"the red cube on "
      "the red patch and the blue cube on the green patch\")"),
     ("reference", r"\b(?:as\s+)?(?:shown|displayed|depicted|pictured|illustrated|demonstrated)\b"

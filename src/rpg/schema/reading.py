@@ -881,8 +881,10 @@ def _refuse_unresolved_pronoun(text: str, original: str) -> None:
                          "to right), or use --model")
     listed = len(color_mentions(text)) + len(re.findall(r"\b(?:letter|digit)\s+\w\b|'\w'|\b\d\b", text)) + sum(
         len(re.findall(r"[A-Z]", m.group(1))) for m in re.finditer(  # "the letters Q, R and S ..., in that order"
-            r"\b(?:letters|letter\s+(?:cubes|blocks)|(?:cubes|blocks)\s+(?:labell?ed|marked|lettered|showing))\s+"
-            r"([A-Z](?:\s*,\s*(?:and\s+)?[A-Z]|\s+and\s+[A-Z])+)\b", original))  # "the cubes labelled M, N and E"
+            r"\b(?:letters|letter\s+(?:cubes|blocks)|(?:cubes|blocks)\s+(?:labell?ed|marked|lettered|showing)(?=[^.;!?]*\bin\s+that\s+order"
+            r"\s*(?:[.;!?]|$)))\s+([A-Z](?:\s*,\s*(?:and\s+)?[A-Z]|\s+and\s+[A-Z])+)\b", original))  # "the cubes labelled M, N
+    # and E in that order." (where more follows the order, "... in that order next to the red cube", the red cube had been
+    # stacked in E's place)
     if order and listed < 2 and not re.search(r"\b[A-Z]{2,}\b|['\"][A-Za-z0-9]{2,}['\"]", original):  # "spell ABC in that order"
         raise Inexpressible("reference", [order.group(0)], "refers to an order the instruction does not list (one the "
                             "speaker shows): list it (e.g. \"stack the red, green and blue blocks in that order\")", original)

@@ -602,24 +602,39 @@ def replaced_placement(clause: str, schema: TaskSchema, parse) -> tuple[str, Tas
     except (BadInput, ValueError):
         return None
     old = per_cube(meaning(schema))  # cubes on one patch one atom each, so one of them can move
-    if len(said) != 1 or said[0] in old:
+    said = per_cube(said)
+    if not said or any(a in old for a in said):
         return None
-    new = said[0]
-    pair = re.fullmatch(r"[a-z_]+(?:\[[^\]]*\])?\(([^(),;|]+),([^(),;|]+)\)", new)
-    if pair is None:
-        return None
-    kind = new.split("(")[0]
-    same_pair = [a for a in old if (m := re.fullmatch(r"[a-z_]+(?:\[[^\]]*\])?\(([^(),;|]+),([^(),;|]+)\)(?:@\w+)?", a))
-                 and {m.group(1), m.group(2)} == {pair.group(1), pair.group(2)}]
-    same_kind = [a for a in old if a.startswith(f"{kind}({pair.group(1)},")] if kind in ("on_patch", "in_region") else []
-    mover = pair.group(2) if kind == "stack" else pair.group(1)  # a stack's atom names its bottom first: the cube put on
-    # it is the one placed ("a brown cube on the gray cube instead" had replaced the gray cube's corner)
-    subject = [a for a in old if (m := re.fullmatch(r"(?:left_of|right_of|in_front_of|behind|next_to|far_from|near|on_patch|in_region)"
-                                                r"\(([^(),;|]+),[^();|]+\)(?:@\w+)?", a)) and m.group(1) == mover]
-    replaced = same_pair or same_kind or subject  # else the one placement the cube has of its own: "the black one on a blue
-    # patch instead" of "black far from white"
+    replaced: list[str] = []
+    for new in said:
+        pair = re.fullmatch(r"[a-z_]+(?:\[[^\]]*\])?\(([^(),;|]+),([^(),;|]+)\)", new)
+        if pair is None:
+            return None
+        kind = new.split("(")[0]
+        same_pair = [a for a in old if (m := re.fullmatch(r"[a-z_]+(?:\[[^\]]*\])?\(([^(),;|]+),([^(),;|]+)\)(?:@\w+)?", a))
+                     and {m.group(1), m.group(2)} == {pair.group(1), pair.group(2)}]
+        same_kind = [a for a in old if a.startswith(f"{kind}({pair.group(1)},")] if kind in ("on_patch", "in_region") else []
+        mover = pair.group(2) if kind == "stack" else pair.group(1)  # a stack's atom names its bottom first: the cube put on
+        # it is the one placed ("a brown cube on the gray cube instead" had replaced the gray cube's corner)
+        subject = [a for a in old if (m := re.fullmatch(r"(?:left_of|right_of|in_front_of|behind|next_to|far_from|near|on_patch"
+                                                        r"|in_region)\(([^(),;|]+),[^();|]+\)(?:@\w+)?", a)) and m.group(1) == mover]
+        # else the one placement the cube has of its own ("the black one on a blue patch instead" of "black far from white");
+        # a clause of several placements ("move the cyan cube to the front left corner, next to the brown one") replaces
+        # only an atom of the same pair or the same kind, and adds the others
+        found = same_pair or same_kind or (subject if len(said) == 1 else [])
+        if len(found) > 1:
+            return None
+        replaced += found
     if len(replaced) != 1:
         return None
+    if len(said) > 1:  # one cube moved: its one place replaced, every other atom a relation of that cube to another (two
+        # cubes moved in one clause had kept the second cube's old place beside its new one)
+        place = re.fullmatch(r"(?:on_patch|in_region)\(([^(),;|]+),[^();|]+\)(?:@\w+)?", replaced[0])
+        mover = place.group(1) if place else None
+        if mover is None or any(not a.startswith(("on_patch(", "in_region(")) and mover not in re.findall(r"[^(),;|]+", a.split("(", 1)[1])
+                                or a.startswith(("on_patch(", "in_region(")) and not a.startswith((f"on_patch({mover},", f"in_region({mover},"))
+                                for a in said):
+            return None
     goal = schema.goal_predicate().conjuncts()
     clauses = [_conjunct_clause(schema, p) for p in goal]
     if any(c is None for c in clauses) or len(clauses) != len(old):
@@ -640,7 +655,7 @@ def replaced_placement(clause: str, schema: TaskSchema, parse) -> tuple[str, Tas
         made = parse(text)
     except (BadInput, ValueError):
         return None
-    if Counter(per_cube(meaning(made))) != Counter(old) - Counter(replaced) + Counter([new]):
+    if Counter(per_cube(meaning(made))) != Counter(old) - Counter(replaced) + Counter(said):
         return None
     return text, made
 

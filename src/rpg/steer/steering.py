@@ -788,6 +788,10 @@ def _change_from_head(fam: Family, schema: TaskSchema) -> str:
     return "tweak" if kinds(schema) == kinds(head) else "modify"
 
 
+TOO_RE = re.compile(r"(?i)\s*,?\s*\b(?:too|as\s+well)\b")
+"""The words that keep a moved cube's old place as well ("move the cyan cube to the left too")."""
+
+
 def _moves_a_task_cube(text: str, ref: TaskSchema) -> re.Match | None:
     """The move of a cube the task has (:data:`~rpg.schema.lexicon.EDIT_MOVES_A_TASK_CUBE_RE`), or None: a cube named by
     colour or label that the task lacks is added, not moved ("Land the green cube right next to the cyan" of a task with
@@ -1494,6 +1498,12 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
     try:
         schema = parse(text)
     except (BadInput, ValueError) as exc:
+        kept_too = TOO_RE.sub("", clause)  # "Move the cyan cube to the front left corner as well, right next to the brown one":
+        # its old place kept too is a contradiction (one cube in two corners), so "as well" is the other cube's; a move
+        if "contradiction" in str(exc) and TOO_RE.search(plan.text) and _moves_a_task_cube(TOO_RE.sub("", plan.text), ref_schema):
+            replaced = replaced_placement(_new_patch_said(kept_too, ref_schema), ref_schema, parse)
+            if replaced is not None:
+                return replaced[1], replaced[0], "modify"
         raise SteerError(f"cannot add \"{clause}\" to {where}: {str(exc).splitlines()[0]}") from None
     before, now = Counter(per_cube(meaning(ref_schema))), Counter(per_cube(meaning(schema)))
     had = Counter(descriptor(a) for a in ref_schema.assets)

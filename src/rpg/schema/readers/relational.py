@@ -407,7 +407,11 @@ def recognize_relational(f: Features, b: Builder) -> bool:
     # a bare "stack N blocks" / "stack blocks on the patch"
     if stackish and not r.on_edges:
         # the cubes of the clauses that say the stack ("move cyan to the corner. stack 2 brown cubes ...": not cyan)
-        said = " . ".join(c for c in clauses if STACK_WORD_RE.search(c)) or text
+        # ("stack red and blue, and put yellow next to white": the clause after ", and put" is its own, not the stack's: white
+        # had been stacked)
+        parts = [p for c in clauses for p in re.split(r",\s*and\s+(?=(?:please\s+)?(?:put|place|set|move|slide|push|bring|position"
+                                                     r"|lay|stand)\b)", c)]
+        said = " . ".join(c for c in parts if STACK_WORD_RE.search(c)) or text
         if sum(m.count for m in mentions_in(said) if not m.patch and not m.ref) < 2:
             said = text  # "place red and green together, then stack green on top": the clause names one of them
         f = Features(said, f.original, features_colors(said), f.quoted)
@@ -443,8 +447,11 @@ def recognize_relational(f: Features, b: Builder) -> bool:
             cube_colors = {m.color for m in mentions_in(said) if not m.patch}  # a patch's colour names no cube of the stack
             named = [c for c in dict.fromkeys(f.color_list()) if (c, None) not in r.subjects and c in cube_colors]
             # not the colours of cubes placed beside it
-            cols = [c for c in colors_for(n, f, prefer=named) if (c, None) not in r.beside]
-            cols += [c for c in DEFAULT_COLORS if c not in cols and (c, None) not in r.subjects][: n - len(cols)]
+            # nor of cubes another clause names ("Stack two cubes. Put the red cube next to the blue cube.": that red cube had
+            # been stacked too)
+            elsewhere = {m.color for m in mentions_in(text) if not m.patch and m.color} - cube_colors
+            cols = [c for c in colors_for(n, f, prefer=named) if (c, None) not in r.beside and c not in elsewhere]
+            cols += [c for c in DEFAULT_COLORS if c not in cols and (c, None) not in r.subjects and c not in elsewhere][: n - len(cols)]
             if named and any(c not in named for c in cols[:n]):
                 return False  # colours nobody named made up for a stack of cubes whose colours are said
             names = [r.obj(Mention(0, 0, c, None, 1)) for c in cols[:n]]

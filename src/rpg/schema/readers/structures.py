@@ -822,7 +822,11 @@ def recognize_piles(f: Features, b: Builder) -> bool:
     groups: list[list[str]] = []
     each_said = list(_PILE_OF_RE.finditer(f.text))
     if len(each_said) >= 2:  # "a pile of red and blue and a pile of green": each pile's cubes said (they had merged into one)
-        groups = [[b.cube(c) for c in _pile_cubes(m.group("list"))] for m in each_said]
+        each = re.search(r"\b(\d+)\s+(?:of\s+)?each\b|\beach\s+(?:with\s+|of\s+)?(\d+)\b", f.text)
+        lists = [_pile_cubes(m.group("list")) for m in each_said]
+        if each and all(len(cs) == 1 for cs in lists):  # "a pile of red cubes and a pile of blue cubes, three each" (one cube
+            lists = [cs * int(each.group(1) or each.group(2)) for cs in lists]  # a pile had been made, the count dropped)
+        groups = [[b.cube(c) for c in cs] for cs in lists]
         centers = b.unit_centers(len(groups), 0.16)
         b.place(cluster_layout(groups, centers))
         b.preds.append(Piles(groups=tuple(tuple(g) for g in groups)))
@@ -868,8 +872,9 @@ def recognize_piles(f: Features, b: Builder) -> bool:
             raise ParseError(f"\"{f.original[:80]}\" asks for {k or 'several'} piles but says neither which cubes go in each "
                              "nor how the cubes are sorted; say it (e.g. \"sort the cubes into piles by colour\", \"a pile of "
                              "red and a pile of blue\"), or use --model")
-        # ("1 pile for each colour": the count is per colour, not the piles' number; one red pile had been made)
-        colors = list(dict.fromkeys(f.color_list())) or colors_for((None if per_color else k) or 3, f, prefer=[])
+        # ("1 pile for each colour": the count is per colour, not the piles' number; one red pile had been made; "two piles,
+        # one for each colour": two colours, not three)
+        colors = list(dict.fromkeys(f.color_list())) or colors_for(((k if k and k > 1 else None) if per_color else k) or 3, f, prefer=[])
         if k is not None and not per_color and f.color_list() and k != len(colors):
             # "put red, blue, green, yellow into two piles": which cubes go together is not said (it had made a pile of
             # three cubes for each colour: twelve cubes, four piles)
