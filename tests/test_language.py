@@ -9200,3 +9200,9 @@ def test_fifty_first_session_a_hostile_helper_s_silent_cases_read_as_said(text, 
 def test_fifty_first_session_a_hostile_helper_s_silent_cases_refused(text):
     with pytest.raises((ParseError, Inexpressible)):
         check_feasibility(parse(text))
+
+
+def test_fifty_first_session_a_stack_listed_from_the_top_beside_another_clause_keeps_its_order():
+    # the stack's clause read apart from ", and put ..." still lists from the top (green had been put at the bottom)
+    assert meaning(check_feasibility(parse("Stack green and blue from top to bottom and put the red cube in the front right"))) == [
+        "in_region(red,front_right)", "stack(blue,green)"]
