@@ -138,8 +138,8 @@ class ObjectState:
         return self.rotation @ np.array([FACE_NORMALS[f] for f in FACES], dtype=float).T
 
     def face_normal(self, face: str) -> np.ndarray:
-        """World-frame outward normal of a local face."""
-        return self.rotation @ np.asarray(FACE_NORMALS[face])
+        """World-frame outward normal of a local face (a column of :attr:`face_normals`)."""
+        return self.face_normals[:, FACES.index(face)]
 
     def glyph_up(self, face: str) -> np.ndarray:
         """World-frame up vector of the glyph on a local face."""

@@ -68,13 +68,6 @@ _FACE_INDEX = {face: i for i, face in enumerate(FACES)}
 _NORMALS_LOCAL = np.array([FACE_NORMALS[face] for face in FACES], dtype=float)
 
 
-def face_sample_points(scene: Scene, name: str, face: str) -> tuple[np.ndarray, np.ndarray]:
-    """Five sample points (5, 3) on a cube face, world frame, m, and the face's world normal (3,)."""
-    pts, normals = _cube_faces(scene, name)
-    i = _FACE_INDEX[face]
-    return pts[i], normals[i]
-
-
 def _cube_faces(scene: Scene, name: str) -> tuple[np.ndarray, np.ndarray]:
     """Every face's five sample points (6, 5, 3) and outward normal (6, 3) of cube ``name``, world
     frame, in :data:`FACES` order."""

@@ -4209,6 +4209,10 @@ EDIT_MOVES_A_TASK_CUBE_RE = re.compile(r"^\s*(?:(?:now|ok(?:ay)?|so|and|then|act
 replaces that cube's one placement (:func:`rpg.steer.relations.replaced_placement`); kept as well only when it says so
 ("... too")."""
 
+EDIT_KEEP_TOO_RE = re.compile(r"(?i)\s*,?\s*\b(?:too|as\s+well)\b")
+"""The words that keep a moved cube's old place as well ("move the cyan cube to the left too"; see
+:data:`EDIT_MOVES_A_TASK_CUBE_RE`), unless that would put the cube in two places (then the words are the other cube's)."""
+
 NEW_PATCH_RE = re.compile(r"\b(an?)\s+(?:new|fresh|second|separate|different|other)\s+(?=(?:[a-z]+\s+)?patch\b)", re.IGNORECASE)
 """A patch said as new ("onto a new green patch"): a patch of that colour, which the task then has."""
 
@@ -6212,6 +6216,13 @@ TOP_DOWN_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
                                        m.string[:m.start()]) else "from top to bottom"),
 )
 """"from the top down", "top first", "alphabetically from top": a list from the top ("second from the top" stays a rank)."""
+
+TOP_FIRST_RE = re.compile(r"\btop\s+(?:to|down\s+to)\s+(?:the\s+)?bottom\b|\bfrom\s+the\s+top\s+down\b")
+"""A stack's cubes listed from the top ("from top to bottom: digit 1, digit 2, digit 3"), as :data:`TOP_DOWN_REWRITES` writes it."""
+
+AND_PLACING_CLAUSE_RE = re.compile(r"(?:,\s*|\s+)and\s+(?=(?:please\s+)?(?:put|place|set|move|slide|push|bring|position|lay|stand)\b)")
+"""Where ", and put ..." starts a clause of its own ("stack red and blue, and put yellow next to white": white is not the
+stack's; :func:`rpg.schema.readers.relational.recognize_relational`)."""
 
 TOP_LIST_REWRITES: tuple[tuple[re.Pattern, object], ...] = (
     # "Build a tower: the top is red, then blue, then green": listed from that end (it had been read bottom first)

@@ -630,11 +630,15 @@ def replaced_placement(clause: str, schema: TaskSchema, parse) -> tuple[str, Tas
     if len(said) > 1:  # one cube moved: its one place replaced, every other atom a relation of that cube to another (two
         # cubes moved in one clause had kept the second cube's old place beside its new one)
         place = re.fullmatch(r"(?:on_patch|in_region)\(([^(),;|]+),[^();|]+\)(?:@\w+)?", replaced[0])
-        mover = place.group(1) if place else None
-        if mover is None or any(not a.startswith(("on_patch(", "in_region(")) and mover not in re.findall(r"[^(),;|]+", a.split("(", 1)[1])
-                                or a.startswith(("on_patch(", "in_region(")) and not a.startswith((f"on_patch({mover},", f"in_region({mover},"))
-                                for a in said):
+        if place is None:
             return None
+        mover = place.group(1)
+        for a in said:
+            kind, args = a.split("(", 1)
+            if kind in ("on_patch", "in_region") and not args.startswith(f"{mover},"):
+                return None  # another cube's place
+            if mover not in re.findall(r"[^(),;|]+", args):
+                return None  # a relation of two other cubes
     goal = schema.goal_predicate().conjuncts()
     clauses = [_conjunct_clause(schema, p) for p in goal]
     if any(c is None for c in clauses) or len(clauses) != len(old):

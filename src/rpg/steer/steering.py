@@ -45,6 +45,7 @@ from rpg.schema.lexicon import (
     EDIT_ADDITIVE_RE,
     EDIT_CONTINUES_RE,
     EDIT_KEEP_THEN_ADD_RE,
+    EDIT_KEEP_TOO_RE,
     EDIT_MOVES_A_TASK_CUBE_RE,
     EDIT_OF_THE_TASK_RE,
     EDIT_SWAP_BOTH_RE,
@@ -788,10 +789,6 @@ def _change_from_head(fam: Family, schema: TaskSchema) -> str:
     return "tweak" if kinds(schema) == kinds(head) else "modify"
 
 
-TOO_RE = re.compile(r"(?i)\s*,?\s*\b(?:too|as\s+well)\b")
-"""The words that keep a moved cube's old place as well ("move the cyan cube to the left too")."""
-
-
 def _moves_a_task_cube(text: str, ref: TaskSchema) -> re.Match | None:
     """The move of a cube the task has (:data:`~rpg.schema.lexicon.EDIT_MOVES_A_TASK_CUBE_RE`), or None: a cube named by
     colour or label that the task lacks is added, not moved ("Land the green cube right next to the cyan" of a task with
@@ -1498,9 +1495,9 @@ def _addition(plan: EditPlan, reference: int, ref_schema: TaskSchema) -> tuple[T
     try:
         schema = parse(text)
     except (BadInput, ValueError) as exc:
-        kept_too = TOO_RE.sub("", clause)  # "Move the cyan cube to the front left corner as well, right next to the brown one":
+        kept_too = EDIT_KEEP_TOO_RE.sub("", clause)  # "Move the cyan cube to the front left corner as well, right next to the brown one":
         # its old place kept too is a contradiction (one cube in two corners), so "as well" is the other cube's; a move
-        if "contradiction" in str(exc) and TOO_RE.search(plan.text) and _moves_a_task_cube(TOO_RE.sub("", plan.text), ref_schema):
+        if "contradiction" in str(exc) and EDIT_KEEP_TOO_RE.search(plan.text) and _moves_a_task_cube(EDIT_KEEP_TOO_RE.sub("", plan.text), ref_schema):
             replaced = replaced_placement(_new_patch_said(kept_too, ref_schema), ref_schema, parse)
             if replaced is not None:
                 return replaced[1], replaced[0], "modify"

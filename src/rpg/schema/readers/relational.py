@@ -369,10 +369,6 @@ STACK_WORD_RE = re.compile(r"\b(?:stack|stacks|stacked|tower|towers|pile up)\b")
 """Words that make a relational text a stacking one."""
 
 
-TOP_FIRST_RE = re.compile(r"\btop\s+(?:to|down\s+to)\s+(?:the\s+)?bottom\b|\bfrom\s+the\s+top\s+down\b")
-"""A stack's cubes listed from the top ("from top to bottom: digit 1, digit 2, digit 3")."""
-
-
 @reader(order=200)
 def recognize_relational(f: Features, b: Builder) -> bool:
     initial = initial_clause(f.text)
@@ -413,8 +409,7 @@ def recognize_relational(f: Features, b: Builder) -> bool:
         # the cubes of the clauses that say the stack ("move cyan to the corner. stack 2 brown cubes ...": not cyan)
         # ("stack red and blue, and put yellow next to white": the clause after ", and put" is its own, not the stack's: white
         # had been stacked)
-        parts = [p for c in clauses for p in re.split(r"(?:,\s*|\s+)and\s+(?=(?:please\s+)?(?:put|place|set|move|slide|push|bring|position"
-                                                     r"|lay|stand)\b)", c)]
+        parts = [p for c in clauses for p in lexicon.AND_PLACING_CLAUSE_RE.split(c)]
         said = " . ".join(c for c in parts if STACK_WORD_RE.search(c)) or text
         if sum(m.count for m in mentions_in(said) if not m.patch and not m.ref) < 2:
             said = text  # "place red and green together, then stack green on top": the clause names one of them
@@ -435,7 +430,7 @@ def recognize_relational(f: Features, b: Builder) -> bool:
             names = [r.obj(ms[0], i) for i in range(n)]
         elif len(ms) > n and len({(m.color, m.label) for m in ms}) == len(ms):  # "a tower of red, green and blue"
             names = [r.obj(m) for m in ms]
-            if TOP_FIRST_RE.search(said):
+            if lexicon.TOP_FIRST_RE.search(said):
                 names = names[::-1]  # "from top to bottom: digit 1, digit 2, digit 3": listed from the top (read upward, silently)
         elif stated_count(f, default=None) is None and len(ms) > 2 and all(m.count == 1 for m in ms) and all(
                 lexicon.LIST_GAP_RE.fullmatch(said[a.end:b.start]) for a, b in itertools.pairwise(ms)) and not any(
@@ -459,7 +454,7 @@ def recognize_relational(f: Features, b: Builder) -> bool:
             if named and any(c not in named for c in cols[:n]):
                 return False  # colours nobody named made up for a stack of cubes whose colours are said
             names = [r.obj(Mention(0, 0, c, None, 1)) for c in cols[:n]]
-            if named and TOP_FIRST_RE.search(said):  # "stack green and blue from top to bottom and put red ...": green on top
+            if named and lexicon.TOP_FIRST_RE.search(said):  # "stack green and blue from top to bottom and put red ...": green on top
                 names = names[::-1]  # (it had been put at the bottom)
         r.on_edges += [(u, lo) for lo, u in zip(names, names[1:], strict=False)]
     raised = [a for a in r.on_patch_as_stack if a in {x for x, _ in r.on_edges}]
